@@ -1,0 +1,55 @@
+#pragma once
+// A convex window given by strict linear constraints a*x + b*y + c < 0 (Green and Sibson, section 1.2).
+// Redundant constraints are identified and ignored; an empty or unbounded window is an InputError.
+
+#include "geometry.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace tessera
+{
+
+/// The open half-plane a*x + b*y + c < 0.
+struct HalfPlane
+{
+  double a = 0.0;
+  double b = 0.0;
+  double c = 0.0;
+};
+
+class Window
+{
+public:
+  /// Throws InputError for a constraint with a NaN/Inf coefficient or a == b == 0 (naming its
+  /// index), and for an empty or unbounded intersection.
+  explicit Window(const std::vector<HalfPlane>& constraints);
+
+  /// xmin < x < xmax, ymin < y < ymax. Throws InputError unless xmin < xmax and ymin < ymax.
+  static Window Rectangle(double xmin, double xmax, double ymin, double ymax);
+
+  /// The effective (non-redundant) constraints, ordered so that their edges run anticlockwise
+  /// around the window: edge k lies on constraint k and runs from vertex k to vertex k+1.
+  const std::vector<HalfPlane>& EffectiveConstraints() const { return this->Effective; }
+  /// For each effective constraint, its index in the constructor's input.
+  const std::vector<std::size_t>& EffectiveIds() const { return this->EffectiveInputIds; }
+  /// Indices (in the constructor's input) of the constraints found redundant.
+  const std::vector<std::size_t>& RedundantIds() const { return this->RedundantInputIds; }
+  /// Window corners, anticlockwise; vertex k is where constraint k-1 meets constraint k.
+  const std::vector<Point2>& Vertices() const { return this->Corners; }
+
+  /// Whether p satisfies every effective constraint strictly (exactly evaluated).
+  bool Contains(const Point2& p) const;
+  /// Reflection of p in the line of effective constraint k (the "virtual point" of section 1.2).
+  Point2 Reflect(const Point2& p, std::size_t k) const;
+  double Area() const;
+  bool IsAxisAlignedRectangle() const;
+
+private:
+  std::vector<HalfPlane> Effective;
+  std::vector<std::size_t> EffectiveInputIds;
+  std::vector<std::size_t> RedundantInputIds;
+  std::vector<Point2> Corners;
+};
+
+} // namespace tessera
