@@ -1,0 +1,494 @@
+#include "geo.h"
+
+#include "errors.h"
+
+#include <GeographicLib/AlbersEqualArea.hpp>
+#include <GeographicLib/AzimuthalEquidistant.hpp>
+#include <GeographicLib/Constants.hpp>
+#include <GeographicLib/Geodesic.hpp>
+#include <GeographicLib/LambertConformalConic.hpp>
+#include <GeographicLib/PolygonArea.hpp>
+#include <GeographicLib/TransverseMercator.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+
+namespace tessera
+{
+namespace
+{
+
+// Transverse Mercator (GeographicLib's series, 5 nm accurate within 3900 km of the central
+// meridian) degrades far from it: beyond this many degrees of longitude a point is refused.
+constexpr double TransverseMercatorMaxLongitudeOffset = 45.0;
+// UTM eastings are valid in [0, 1000 km] (GeographicLib's UTMUPS range).
+constexpr double UTMFalseEasting = 500000.0;
+constexpr double UTMMaxEastingOffset = 500000.0;
+constexpr double UTMSouthFalseNorthing = 10000000.0;
+constexpr double UTMScale = 0.9996;
+// A projected coordinate beyond 2.5 Earth circumferences means the point sits at (or next to) a
+// singularity of the projection, such as the far pole of a Lambert cone: refused, not returned.
+constexpr double MaxProjectedMagnitude = 1.0e8;
+
+std::string FormatNumber(double value)
+{
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.17g", value);
+  return buffer;
+}
+
+std::string DescribePoint(const char* what, long long id, const Point2& p)
+{
+  std::ostringstream out;
+  out.precision(17);
+  out << what;
+  if (id >= 0)
+  {
+    out << ' ' << id;
+  }
+  out << " (" << p.x << ", " << p.y << ")";
+  return out.str();
+}
+
+/// Signed difference b - a of two longitudes, in [-180, 180).
+double LongitudeDifference(double a, double b)
+{
+  double d = std::remainder(b - a, 360.0);
+  if (d >= 180.0)
+  {
+    d -= 360.0;
+  }
+  return d;
+}
+
+bool IsValidLatitude(double lat)
+{
+  return std::isfinite(lat) && std::abs(lat) <= 90.0;
+}
+
+} // namespace
+
+const char* ProjectionKindName(ProjectionKind kind)
+{
+  switch (kind)
+  {
+    case ProjectionKind::AlbersEqualArea:
+      return "AlbersEqualArea";
+    case ProjectionKind::LambertConformalConic:
+      return "LambertConformalConic";
+    case ProjectionKind::TransverseMercator:
+      return "TransverseMercator";
+    case ProjectionKind::UTM:
+      return "UTM";
+    case ProjectionKind::AzimuthalEquidistant:
+      return "AzimuthalEquidistant";
+  }
+  return "Unknown";
+}
+
+std::string ProjectionParameters::ToString() const
+{
+  return std::string("projection=") + ProjectionKindName(this->Kind) +
+    " lon0=" + FormatNumber(this->CentralLongitude) +
+    " lat0=" + FormatNumber(this->CentralLatitude) +
+    " lat1=" + FormatNumber(this->StandardParallel1) +
+    " lat2=" + FormatNumber(this->StandardParallel2) + " zone=" + std::to_string(this->UTMZone) +
+    " north=" + (this->UTMNorth ? "1" : "0");
+}
+
+ProjectionParameters ProjectionParameters::FromString(const std::string& text)
+{
+  ProjectionParameters result;
+  std::istringstream in(text);
+  std::string item;
+  bool sawKind = false;
+  while (in >> item)
+  {
+    const auto equals = item.find('=');
+    if (equals == std::string::npos)
+    {
+      throw InputError("projection record: '" + item + "' is not key=value");
+    }
+    const std::string key = item.substr(0, equals);
+    const std::string value = item.substr(equals + 1);
+    auto number = [&]()
+    {
+      char* end = nullptr;
+      const double v = std::strtod(value.c_str(), &end);
+      if (value.empty() || *end != '\0')
+      {
+        throw InputError("projection record: " + key + "='" + value + "' is not a number");
+      }
+      return v;
+    };
+    if (key == "projection")
+    {
+      bool known = false;
+      for (auto kind : { ProjectionKind::AlbersEqualArea,
+             ProjectionKind::LambertConformalConic,
+             ProjectionKind::TransverseMercator,
+             ProjectionKind::UTM,
+             ProjectionKind::AzimuthalEquidistant })
+      {
+        if (value == ProjectionKindName(kind))
+        {
+          result.Kind = kind;
+          known = true;
+        }
+      }
+      if (!known)
+      {
+        throw InputError("projection record: unknown projection '" + value + "'");
+      }
+      sawKind = true;
+    }
+    else if (key == "lon0")
+      result.CentralLongitude = number();
+    else if (key == "lat0")
+      result.CentralLatitude = number();
+    else if (key == "lat1")
+      result.StandardParallel1 = number();
+    else if (key == "lat2")
+      result.StandardParallel2 = number();
+    else if (key == "zone")
+      result.UTMZone = static_cast<int>(number());
+    else if (key == "north")
+      result.UTMNorth = number() != 0.0;
+    else
+      throw InputError("projection record: unknown key '" + key + "'");
+  }
+  if (!sawKind)
+  {
+    throw InputError("projection record '" + text + "' names no projection");
+  }
+  return result;
+}
+
+void ValidateLonLat(const std::vector<Point2>& lonlat)
+{
+  for (std::size_t i = 0; i < lonlat.size(); ++i)
+  {
+    const Point2& p = lonlat[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+    {
+      throw InputError(
+        DescribePoint("point", static_cast<long long>(i), p) + " has a NaN or infinite coordinate");
+    }
+    if (std::abs(p.y) > 90.0)
+    {
+      throw InputError(
+        DescribePoint("point", static_cast<long long>(i), p) + " has a latitude beyond 90 degrees");
+    }
+  }
+}
+
+GeographicExtent ComputeExtent(const std::vector<Point2>& lonlat)
+{
+  ValidateLonLat(lonlat);
+  if (lonlat.empty())
+  {
+    throw InputError("no points to compute a geographic extent from");
+  }
+  GeographicExtent extent;
+  extent.SouthLatitude = extent.NorthLatitude = lonlat[0].y;
+  std::vector<double> longitudes;
+  longitudes.reserve(lonlat.size());
+  for (const Point2& p : lonlat)
+  {
+    extent.SouthLatitude = std::min(extent.SouthLatitude, p.y);
+    extent.NorthLatitude = std::max(extent.NorthLatitude, p.y);
+    double lon = std::fmod(p.x, 360.0);
+    longitudes.push_back(lon < 0.0 ? lon + 360.0 : lon);
+  }
+  std::sort(longitudes.begin(), longitudes.end());
+  // The extent is the circle minus its largest empty gap between consecutive longitudes.
+  std::size_t gapEnd = 0; // the longitude after the largest gap starts the arc
+  double largestGap = longitudes.front() + 360.0 - longitudes.back();
+  for (std::size_t i = 1; i < longitudes.size(); ++i)
+  {
+    const double gap = longitudes[i] - longitudes[i - 1];
+    if (gap > largestGap)
+    {
+      largestGap = gap;
+      gapEnd = i;
+    }
+  }
+  double west = longitudes[gapEnd];
+  if (west >= 180.0)
+  {
+    west -= 360.0;
+  }
+  extent.WestLongitude = west;
+  extent.LongitudeSpan = std::max(0.0, 360.0 - largestGap);
+  return extent;
+}
+
+int UTMZoneOfLongitude(double longitude)
+{
+  double lon = std::fmod(longitude + 180.0, 360.0);
+  if (lon < 0.0)
+  {
+    lon += 360.0;
+  }
+  return std::min(60, static_cast<int>(std::floor(lon / 6.0)) + 1);
+}
+
+ProjectionParameters ParametersFromExtent(ProjectionKind kind, const GeographicExtent& extent)
+{
+  ProjectionParameters p;
+  p.Kind = kind;
+  p.CentralLongitude = extent.CentralLongitude();
+  p.CentralLatitude = extent.CentralLatitude();
+  const double span = extent.NorthLatitude - extent.SouthLatitude;
+  p.StandardParallel1 = extent.SouthLatitude + span / 6.0;
+  p.StandardParallel2 = extent.SouthLatitude + 5.0 * span / 6.0;
+  p.UTMZone = UTMZoneOfLongitude(p.CentralLongitude);
+  p.UTMNorth = p.CentralLatitude >= 0.0;
+  return p;
+}
+
+ProjectionParameters AutomaticParameters(const std::vector<Point2>& lonlat)
+{
+  return ParametersFromExtent(ProjectionKind::AlbersEqualArea, ComputeExtent(lonlat));
+}
+
+struct GeographicProjection::Engines
+{
+  std::unique_ptr<GeographicLib::AlbersEqualArea> Albers;
+  std::unique_ptr<GeographicLib::LambertConformalConic> Lambert;
+  std::unique_ptr<GeographicLib::TransverseMercator> Mercator;
+  std::unique_ptr<GeographicLib::AzimuthalEquidistant> Azimuthal;
+  double CentralMeridian = 0.0; // for UTM: the zone's
+  // GeographicLib 2.1's AlbersEqualArea given two southern standard parallels builds the
+  // northern cone and flips y, which mirrors the map and puts the true-scale parallels in the
+  // wrong hemisphere. A southern Albers is therefore computed as the northern one of the data
+  // mirrored across the equator, mirrored back: (lon, lat) -> (lon, -lat) -> cone -> (x, -y).
+  // Two reflections: orientation and areas are kept.
+  bool MirrorAcrossEquator = false;
+};
+
+GeographicProjection::GeographicProjection(const ProjectionParameters& parameters)
+  : Params(parameters)
+  , Impl(new Engines)
+{
+  const auto& p = parameters;
+  const double a = GeographicLib::Constants::WGS84_a();
+  const double f = GeographicLib::Constants::WGS84_f();
+  auto requireLatitude = [](double lat, const char* name)
+  {
+    if (!IsValidLatitude(lat))
+    {
+      throw InputError(std::string("projection parameter ") + name + " = " + FormatNumber(lat) +
+        " is not a latitude in [-90, 90]");
+    }
+  };
+  if (!std::isfinite(p.CentralLongitude))
+  {
+    throw InputError("projection parameter lon0 = " + FormatNumber(p.CentralLongitude) +
+      " is not a finite longitude");
+  }
+  Impl->CentralMeridian = p.CentralLongitude;
+  try
+  {
+    switch (p.Kind)
+    {
+      case ProjectionKind::AlbersEqualArea:
+      case ProjectionKind::LambertConformalConic:
+        requireLatitude(p.StandardParallel1, "lat1");
+        requireLatitude(p.StandardParallel2, "lat2");
+        if (p.Kind == ProjectionKind::AlbersEqualArea)
+        {
+          Impl->MirrorAcrossEquator = p.StandardParallel1 + p.StandardParallel2 < 0.0;
+          const double sign = Impl->MirrorAcrossEquator ? -1.0 : 1.0;
+          Impl->Albers.reset(new GeographicLib::AlbersEqualArea(
+            a, f, sign * p.StandardParallel1, sign * p.StandardParallel2, 1.0));
+        }
+        else
+        {
+          Impl->Lambert.reset(new GeographicLib::LambertConformalConic(
+            a, f, p.StandardParallel1, p.StandardParallel2, 1.0));
+        }
+        break;
+      case ProjectionKind::TransverseMercator:
+        Impl->Mercator.reset(new GeographicLib::TransverseMercator(a, f, 1.0));
+        break;
+      case ProjectionKind::UTM:
+        if (p.UTMZone < 1 || p.UTMZone > 60)
+        {
+          throw InputError("UTM zone " + std::to_string(p.UTMZone) + " is not in 1..60");
+        }
+        Impl->Mercator.reset(new GeographicLib::TransverseMercator(a, f, UTMScale));
+        Impl->CentralMeridian = 6.0 * p.UTMZone - 183.0;
+        break;
+      case ProjectionKind::AzimuthalEquidistant:
+        requireLatitude(p.CentralLatitude, "lat0");
+        Impl->Azimuthal.reset(
+          new GeographicLib::AzimuthalEquidistant(GeographicLib::Geodesic::WGS84()));
+        break;
+    }
+  }
+  catch (const GeographicLib::GeographicErr& e)
+  {
+    delete Impl;
+    throw InputError(std::string("projection ") + ProjectionKindName(p.Kind) +
+      " cannot be built from '" + p.ToString() + "': " + e.what());
+  }
+  catch (...)
+  {
+    delete Impl;
+    throw;
+  }
+}
+
+GeographicProjection::~GeographicProjection()
+{
+  delete Impl;
+}
+
+Point2 GeographicProjection::Forward(const Point2& lonlat, long long id) const
+{
+  if (!std::isfinite(lonlat.x) || !std::isfinite(lonlat.y))
+  {
+    throw InputError(DescribePoint("point", id, lonlat) + " has a NaN or infinite coordinate");
+  }
+  if (std::abs(lonlat.y) > 90.0)
+  {
+    throw InputError(DescribePoint("point", id, lonlat) + " has a latitude beyond 90 degrees");
+  }
+  const double lon0 = Impl->CentralMeridian;
+  // Reduce first so that a longitude of 181.6 and one of -178.4 project to the same place.
+  const double lon = lon0 + LongitudeDifference(lon0, lonlat.x);
+  Point2 xy;
+  switch (Params.Kind)
+  {
+    case ProjectionKind::AlbersEqualArea:
+      if (Impl->MirrorAcrossEquator)
+      {
+        Impl->Albers->Forward(lon0, -lonlat.y, lon, xy.x, xy.y);
+        xy.y = -xy.y;
+      }
+      else
+      {
+        Impl->Albers->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
+      }
+      break;
+    case ProjectionKind::LambertConformalConic:
+      Impl->Lambert->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
+      break;
+    case ProjectionKind::TransverseMercator:
+    case ProjectionKind::UTM:
+      if (std::abs(lon - lon0) > TransverseMercatorMaxLongitudeOffset)
+      {
+        throw InputError(DescribePoint("point", id, lonlat) + " is " +
+          FormatNumber(std::abs(lon - lon0)) + " degrees of longitude from the central meridian " +
+          FormatNumber(lon0) + "; " + ProjectionKindName(Params.Kind) +
+          " represents at most 45 degrees");
+      }
+      Impl->Mercator->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
+      if (Params.Kind == ProjectionKind::UTM)
+      {
+        if (std::abs(xy.x) > UTMMaxEastingOffset)
+        {
+          throw InputError(DescribePoint("point", id, lonlat) + " lies " +
+            FormatNumber(std::abs(xy.x) / 1000.0) + " km from the central meridian of UTM zone " +
+            std::to_string(Params.UTMZone) + "; UTM eastings stop at 500 km");
+        }
+        xy.x += UTMFalseEasting;
+        xy.y += Params.UTMNorth ? 0.0 : UTMSouthFalseNorthing;
+      }
+      break;
+    case ProjectionKind::AzimuthalEquidistant:
+      Impl->Azimuthal->Forward(Params.CentralLatitude, lon0, lonlat.y, lon, xy.x, xy.y);
+      break;
+  }
+  if (!(std::abs(xy.x) <= MaxProjectedMagnitude) || !(std::abs(xy.y) <= MaxProjectedMagnitude))
+  {
+    throw InputError(DescribePoint("point", id, lonlat) + " cannot be represented by the " +
+      ProjectionKindName(Params.Kind) + " projection (" + Params.ToString() + ")");
+  }
+  return xy;
+}
+
+Point2 GeographicProjection::Inverse(const Point2& xy, long long id) const
+{
+  if (!std::isfinite(xy.x) || !std::isfinite(xy.y))
+  {
+    throw InputError(DescribePoint("point", id, xy) + " has a NaN or infinite coordinate");
+  }
+  const double lon0 = Impl->CentralMeridian;
+  Point2 lonlat;
+  switch (Params.Kind)
+  {
+    case ProjectionKind::AlbersEqualArea:
+      if (Impl->MirrorAcrossEquator)
+      {
+        Impl->Albers->Reverse(lon0, xy.x, -xy.y, lonlat.y, lonlat.x);
+        lonlat.y = -lonlat.y;
+      }
+      else
+      {
+        Impl->Albers->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
+      }
+      break;
+    case ProjectionKind::LambertConformalConic:
+      Impl->Lambert->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
+      break;
+    case ProjectionKind::TransverseMercator:
+      Impl->Mercator->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
+      break;
+    case ProjectionKind::UTM:
+      Impl->Mercator->Reverse(lon0,
+        xy.x - UTMFalseEasting,
+        xy.y - (Params.UTMNorth ? 0.0 : UTMSouthFalseNorthing),
+        lonlat.y,
+        lonlat.x);
+      break;
+    case ProjectionKind::AzimuthalEquidistant:
+      Impl->Azimuthal->Reverse(Params.CentralLatitude, lon0, xy.x, xy.y, lonlat.y, lonlat.x);
+      break;
+  }
+  if (!std::isfinite(lonlat.x) || !std::isfinite(lonlat.y))
+  {
+    throw InputError(DescribePoint("point", id, xy) + " has no inverse under the " +
+      ProjectionKindName(Params.Kind) + " projection");
+  }
+  lonlat.x = lon0 + LongitudeDifference(lon0, lonlat.x);
+  return lonlat;
+}
+
+int DensifiedPieceCount(const Point2& a, const Point2& b, double maxStep)
+{
+  if (!(maxStep > 0.0) || !std::isfinite(maxStep))
+  {
+    return 1;
+  }
+  const double dx = LongitudeDifference(a.x, b.x);
+  const double dy = b.y - a.y;
+  const double pieces = std::ceil(std::hypot(dx, dy) / maxStep);
+  // An absurdly fine step is capped rather than allowed to exhaust memory.
+  return static_cast<int>(std::min(std::max(pieces, 1.0), 1.0e6));
+}
+
+Point2 InterpolateLonLat(const Point2& a, const Point2& b, double t)
+{
+  return { a.x + t * LongitudeDifference(a.x, b.x), a.y + t * (b.y - a.y) };
+}
+
+double EllipsoidalRingArea(const std::vector<Point2>& lonlat)
+{
+  GeographicLib::PolygonArea polygon(GeographicLib::Geodesic::WGS84());
+  for (const Point2& p : lonlat)
+  {
+    polygon.AddPoint(p.y, p.x);
+  }
+  double perimeter = 0.0;
+  double area = 0.0;
+  // reverse = false: anticlockwise rings are positive; sign = true: keep the sign.
+  polygon.Compute(false, true, perimeter, area);
+  return area;
+}
+
+} // namespace tessera

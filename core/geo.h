@@ -1,0 +1,114 @@
+#pragma once
+// Geographic coordinates (longitude, latitude in degrees on WGS84) to a plane and back, with
+// GeographicLib; the projection chosen from the data's extent; densification of edges that are
+// straight in lon/lat (RFC 7946); ellipsoidal polygon areas.
+//
+// Longitudes are never assumed to lie in [-180, 180]: the data's longitudes are treated as angles,
+// the extent is the shortest arc that holds them all (so a set crossing the antimeridian, such as
+// 177..181.6, has a 4.6 degree extent, not 358), and Inverse returns longitudes within 180 degrees
+// of the central meridian, so data that crossed the antimeridian comes back continuous.
+
+#include "geometry.h"
+
+#include <string>
+#include <vector>
+
+namespace tessera
+{
+
+enum class ProjectionKind
+{
+  AlbersEqualArea,
+  LambertConformalConic,
+  TransverseMercator,
+  UTM,
+  AzimuthalEquidistant
+};
+
+const char* ProjectionKindName(ProjectionKind kind);
+
+/// Everything needed to repeat a projection. Unused fields are ignored by a kind
+/// (e.g. StandardParallel1/2 only matter to the two conics).
+struct ProjectionParameters
+{
+  ProjectionKind Kind = ProjectionKind::AlbersEqualArea;
+  double CentralLongitude = 0.0;  ///< central meridian (conics, transverse Mercator, azimuthal)
+  double CentralLatitude = 0.0;   ///< centre latitude of the azimuthal projection
+  double StandardParallel1 = 0.0; ///< conics
+  double StandardParallel2 = 0.0; ///< conics
+  int UTMZone = 0;                ///< 1..60 for UTM
+  bool UTMNorth = true;           ///< UTM hemisphere (false northing 0 in the north, 1e7 m south)
+
+  /// A one-line "key=value" record, exact to the last bit (%.17g), e.g.
+  /// "projection=AlbersEqualArea lon0=-105.5 lat0=39 lat1=37.33 lat2=40.67 zone=0 north=1".
+  std::string ToString() const;
+  /// Parses ToString's format; throws InputError naming the bad key or value.
+  static ProjectionParameters FromString(const std::string& text);
+};
+
+/// The shortest longitude arc holding every longitude, and the latitude range.
+struct GeographicExtent
+{
+  double WestLongitude = 0.0; ///< start of the arc; East = West + LongitudeSpan
+  double LongitudeSpan = 0.0; ///< in [0, 360)
+  double SouthLatitude = 0.0;
+  double NorthLatitude = 0.0;
+  double CentralLongitude() const { return this->WestLongitude + 0.5 * this->LongitudeSpan; }
+  double CentralLatitude() const { return 0.5 * (this->SouthLatitude + this->NorthLatitude); }
+};
+
+/// Throws InputError naming the first point with a NaN/Inf coordinate or |latitude| > 90.
+void ValidateLonLat(const std::vector<Point2>& lonlat);
+/// Extent of valid lon/lat points (validated first). Throws InputError if there are none.
+GeographicExtent ComputeExtent(const std::vector<Point2>& lonlat);
+
+/// Centre and standard parallels from the data: the central meridian at the middle of the
+/// longitude arc, the centre latitude at the middle of the latitude range, standard parallels at
+/// 1/6 and 5/6 of the latitude span, the UTM zone of the central meridian and the hemisphere of
+/// the centre latitude.
+ProjectionParameters ParametersFromExtent(ProjectionKind kind, const GeographicExtent& extent);
+/// The automatic choice: an Albers equal-area conic with ParametersFromExtent.
+ProjectionParameters AutomaticParameters(const std::vector<Point2>& lonlat);
+
+/// UTM zone (1..60) whose central meridian is nearest to a longitude.
+int UTMZoneOfLongitude(double longitude);
+
+class GeographicProjection
+{
+public:
+  /// Throws InputError for parameters out of range (a NaN, a latitude beyond 90, a UTM zone
+  /// outside 1..60, conic standard parallels at opposite poles).
+  explicit GeographicProjection(const ProjectionParameters& parameters);
+  ~GeographicProjection();
+  GeographicProjection(const GeographicProjection&) = delete;
+  GeographicProjection& operator=(const GeographicProjection&) = delete;
+
+  const ProjectionParameters& Parameters() const { return this->Params; }
+
+  /// lon/lat (degrees) to x/y (metres). Throws InputError naming `id` and the value when the
+  /// point is invalid or the projection cannot represent it (e.g. a transverse Mercator point
+  /// more than 60 degrees of longitude from the central meridian, or the conic's far pole).
+  Point2 Forward(const Point2& lonlat, long long id = -1) const;
+  /// x/y (metres) to lon/lat; longitude within 180 degrees of the central meridian.
+  Point2 Inverse(const Point2& xy, long long id = -1) const;
+
+private:
+  struct Engines;
+  ProjectionParameters Params;
+  Engines* Impl = nullptr;
+};
+
+/// Number of equal pieces an edge from a to b (lon/lat, the shorter way round in longitude) is cut
+/// into so that no piece is longer than maxStep degrees (in the lon/lat plane). maxStep <= 0 or
+/// non-finite means no densification (1 piece).
+int DensifiedPieceCount(const Point2& a, const Point2& b, double maxStep);
+/// The point a fraction t along the lon/lat-straight edge from a to b (longitude taken the shorter
+/// way round, continuing from a's longitude, so it may leave [-180, 180]).
+Point2 InterpolateLonLat(const Point2& a, const Point2& b, double t);
+
+/// Area in square metres of a ring of lon/lat vertices on WGS84, joined by geodesics (GeographicLib
+/// PolygonArea); densify edges first where they should follow parallels. Positive for
+/// anticlockwise rings, negative for clockwise.
+double EllipsoidalRingArea(const std::vector<Point2>& lonlat);
+
+} // namespace tessera

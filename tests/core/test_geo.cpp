@@ -1,0 +1,245 @@
+// core/geo: projections against GeographicLib's published examples, round trips, the equal-area
+// property against GeographicLib::PolygonArea, antimeridian handling and bad input.
+#include "errors.h"
+#include "geo.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace tessera;
+
+namespace
+{
+
+double ShoelaceArea(const std::vector<Point2>& ring)
+{
+  double twice = 0.0;
+  for (std::size_t i = 0; i < ring.size(); ++i)
+  {
+    const Point2& a = ring[i];
+    const Point2& b = ring[(i + 1) % ring.size()];
+    twice += a.x * b.y - b.x * a.y;
+  }
+  return 0.5 * twice;
+}
+
+/// A lon/lat rectangle as a ring with every edge cut into `pieces` parts (edges along parallels
+/// must follow them, not the geodesic).
+std::vector<Point2> DensifiedCell(double west, double south, double size, int pieces)
+{
+  const Point2 corners[4] = {
+    { west, south }, { west + size, south }, { west + size, south + size }, { west, south + size }
+  };
+  std::vector<Point2> ring;
+  for (int edge = 0; edge < 4; ++edge)
+  {
+    for (int k = 0; k < pieces; ++k)
+    {
+      ring.push_back(InterpolateLonLat(corners[edge], corners[(edge + 1) % 4], double(k) / pieces));
+    }
+  }
+  return ring;
+}
+
+double AngularDistance(double a, double b)
+{
+  return std::abs(std::remainder(a - b, 360.0));
+}
+
+} // namespace
+
+TEST(Geo, UTMMatchesGeoConvertPublishedExample)
+{
+  // GeoConvert(1) lists "33.3 44.4" and "38n 444140.54 3684706.36" as the same place.
+  ProjectionParameters p;
+  p.Kind = ProjectionKind::UTM;
+  p.UTMZone = 38;
+  p.UTMNorth = true;
+  GeographicProjection utm(p);
+  const Point2 xy = utm.Forward({ 44.4, 33.3 });
+  EXPECT_NEAR(xy.x, 444140.54, 0.01);
+  EXPECT_NEAR(xy.y, 3684706.36, 0.01);
+  EXPECT_EQ(UTMZoneOfLongitude(44.4), 38);
+}
+
+TEST(Geo, RoundTripsToANanodegreeForEveryProjection)
+{
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> lon(-109.5, -101.0), lat(36.5, 41.5);
+  std::vector<Point2> points(500);
+  for (auto& p : points)
+  {
+    p = { lon(random), lat(random) };
+  }
+  const GeographicExtent extent = ComputeExtent(points);
+  for (auto kind : { ProjectionKind::AlbersEqualArea,
+         ProjectionKind::LambertConformalConic,
+         ProjectionKind::TransverseMercator,
+         ProjectionKind::UTM,
+         ProjectionKind::AzimuthalEquidistant })
+  {
+    GeographicProjection projection(ParametersFromExtent(kind, extent));
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      const Point2 back = projection.Inverse(projection.Forward(points[i], i), i);
+      EXPECT_LT(AngularDistance(back.x, points[i].x), 1e-9) << ProjectionKindName(kind) << " " << i;
+      EXPECT_NEAR(back.y, points[i].y, 1e-9) << ProjectionKindName(kind) << " " << i;
+    }
+  }
+}
+
+TEST(Geo, AutomaticPlacesStandardParallelsAtOneAndFiveSixths)
+{
+  const std::vector<Point2> points = { { -109.5, 36.5 }, { -101.0, 41.5 }, { -105.0, 38.0 } };
+  const ProjectionParameters p = AutomaticParameters(points);
+  EXPECT_EQ(p.Kind, ProjectionKind::AlbersEqualArea);
+  EXPECT_DOUBLE_EQ(p.CentralLongitude, -105.25);
+  EXPECT_DOUBLE_EQ(p.StandardParallel1, 36.5 + 5.0 / 6.0);
+  EXPECT_DOUBLE_EQ(p.StandardParallel2, 36.5 + 25.0 / 6.0);
+}
+
+TEST(Geo, EqualAreaKeepsAOneDegreeCellAreaToOnePartInAMillion)
+{
+  // The planar area of the projected (densified) cell against GeographicLib's ellipsoidal area.
+  const std::vector<Point2> cell = DensifiedCell(-105.0, 39.0, 1.0, 400);
+  const double ellipsoidal = EllipsoidalRingArea(cell);
+  for (double lat1 : { 20.0, 37.3, 60.0 })
+  {
+    ProjectionParameters p;
+    p.Kind = ProjectionKind::AlbersEqualArea;
+    p.CentralLongitude = -100.0;
+    p.StandardParallel1 = lat1;
+    p.StandardParallel2 = lat1 + 5.0;
+    GeographicProjection albers(p);
+    std::vector<Point2> projected;
+    for (const Point2& q : cell)
+    {
+      projected.push_back(albers.Forward(q));
+    }
+    EXPECT_NEAR(ShoelaceArea(projected) / ellipsoidal, 1.0, 1e-6) << "lat1 " << lat1;
+  }
+}
+
+TEST(Geo, SouthernEqualAreaKeepsAreaOrientationAndTrueScaleParallels)
+{
+  // Fiji-like: an anticlockwise cell at 20 S stays anticlockwise with its ellipsoidal area, and
+  // along the standard parallel the scale is true (x distance = parallel arc length).
+  const std::vector<Point2> cell = DensifiedCell(178.0, -21.0, 1.0, 400);
+  const double ellipsoidal = EllipsoidalRingArea(cell);
+  ASSERT_GT(ellipsoidal, 0.0);
+  ProjectionParameters p;
+  p.Kind = ProjectionKind::AlbersEqualArea;
+  p.CentralLongitude = 178.5;
+  p.StandardParallel1 = -23.0;
+  p.StandardParallel2 = -17.0;
+  GeographicProjection albers(p);
+  std::vector<Point2> projected;
+  for (const Point2& q : cell)
+  {
+    projected.push_back(albers.Forward(q));
+  }
+  EXPECT_NEAR(ShoelaceArea(projected) / ellipsoidal, 1.0, 1e-6);
+  // North is up: a point further south has a smaller y.
+  EXPECT_LT(albers.Forward({ 178.5, -22.0 }).y, albers.Forward({ 178.5, -18.0 }).y);
+  // True scale on the standard parallel -23: 0.01 degree of longitude spans the parallel's arc.
+  const double a = 6378137.0, e2 = 0.00669437999014;
+  const double phi = -23.0 * M_PI / 180.0;
+  const double parallelRadius =
+    a * std::cos(phi) / std::sqrt(1.0 - e2 * std::sin(phi) * std::sin(phi));
+  const Point2 west = albers.Forward({ 178.495, -23.0 }), east = albers.Forward({ 178.505, -23.0 });
+  EXPECT_NEAR(std::hypot(east.x - west.x, east.y - west.y) / (parallelRadius * 0.01 * M_PI / 180.0),
+    1.0,
+    1e-6);
+}
+
+TEST(Geo, ExtentCrossingTheAntimeridianIsTheShortArc)
+{
+  const std::vector<Point2> fiji = {
+    { 165.67, -20.0 }, { 181.62, -15.0 }, { 179.0, -25.0 }, { -179.5, -30.0 }
+  };
+  const GeographicExtent extent = ComputeExtent(fiji);
+  EXPECT_NEAR(extent.LongitudeSpan, 181.62 - 165.67, 1e-9);
+  EXPECT_NEAR(extent.WestLongitude, 165.67, 1e-9);
+  GeographicProjection projection(AutomaticParameters(fiji));
+  // 181.62 and -178.38 are one meridian: they project to one point, and the inverse returns a
+  // longitude continuous with the data (within 180 degrees of the central meridian).
+  const Point2 a = projection.Forward({ 181.62, -15.0 });
+  const Point2 b = projection.Forward({ -178.38, -15.0 });
+  EXPECT_NEAR(a.x, b.x, 1e-6);
+  EXPECT_NEAR(a.y, b.y, 1e-6);
+  EXPECT_NEAR(projection.Inverse(a).x, 181.62, 1e-9);
+  // Densification takes the short way across the antimeridian.
+  EXPECT_EQ(DensifiedPieceCount({ 179.5, 0.0 }, { -179.5, 0.0 }, 0.25), 4);
+  EXPECT_NEAR(InterpolateLonLat({ 179.5, 0.0 }, { -179.5, 0.0 }, 0.5).x, 180.0, 1e-12);
+}
+
+TEST(Geo, BadPointsAreNamedById)
+{
+  GeographicProjection albers(AutomaticParameters({ { 0.0, 0.0 }, { 1.0, 1.0 } }));
+  try
+  {
+    albers.Forward({ 0.0, 95.0 }, 17);
+    FAIL() << "latitude 95 accepted";
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("point 17"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("95"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(albers.Forward({ std::nan(""), 0.0 }, 3), InputError);
+  EXPECT_THROW(ValidateLonLat({ { 0.0, 0.0 }, { INFINITY, 0.0 } }), InputError);
+  try
+  {
+    ValidateLonLat({ { 0.0, 0.0 }, { 1.0, 2.0 }, { 3.0, -90.5 } });
+    FAIL() << "latitude -90.5 accepted";
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("point 2"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Geo, PointsAProjectionCannotRepresentAreRefused)
+{
+  ProjectionParameters p;
+  p.Kind = ProjectionKind::UTM;
+  p.UTMZone = 13;
+  GeographicProjection utm(p);
+  EXPECT_NO_THROW(utm.Forward({ -105.0, 40.0 }));
+  EXPECT_THROW(utm.Forward({ -60.0, 40.0 }, 5), InputError); // 45 degrees away
+  EXPECT_THROW(utm.Forward({ -95.0, 40.0 }, 5), InputError); // 850 km east: beyond UTM eastings
+  ProjectionParameters lcc;
+  lcc.Kind = ProjectionKind::LambertConformalConic;
+  lcc.StandardParallel1 = 30.0;
+  lcc.StandardParallel2 = 60.0;
+  GeographicProjection lambert(lcc);
+  EXPECT_THROW(lambert.Forward({ 0.0, -90.0 }, 9), InputError); // the cone's far pole
+  ProjectionParameters badZone;
+  badZone.Kind = ProjectionKind::UTM;
+  badZone.UTMZone = 61;
+  EXPECT_THROW(GeographicProjection{ badZone }, InputError);
+}
+
+TEST(Geo, ParameterRecordRoundTripsExactly)
+{
+  ProjectionParameters p;
+  p.Kind = ProjectionKind::LambertConformalConic;
+  p.CentralLongitude = -105.123456789012345;
+  p.CentralLatitude = 0.1 + 0.2;
+  p.StandardParallel1 = 1.0 / 3.0;
+  p.StandardParallel2 = 45.0;
+  p.UTMZone = 13;
+  p.UTMNorth = false;
+  const ProjectionParameters q = ProjectionParameters::FromString(p.ToString());
+  EXPECT_EQ(q.Kind, p.Kind);
+  EXPECT_EQ(q.CentralLongitude, p.CentralLongitude);
+  EXPECT_EQ(q.CentralLatitude, p.CentralLatitude);
+  EXPECT_EQ(q.StandardParallel1, p.StandardParallel1);
+  EXPECT_EQ(q.StandardParallel2, p.StandardParallel2);
+  EXPECT_EQ(q.UTMZone, p.UTMZone);
+  EXPECT_EQ(q.UTMNorth, p.UTMNorth);
+  EXPECT_THROW(ProjectionParameters::FromString("projection=Mollweide"), InputError);
+  EXPECT_THROW(ProjectionParameters::FromString("projection=UTM zone=x"), InputError);
+}

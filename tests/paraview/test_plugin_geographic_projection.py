@@ -1,0 +1,47 @@
+"""pvbatch: load the Tessera plugin from the build tree, apply Filters > Tessera > Geographic
+Projection by its menu name to the Colorado gauges, and check the fetched data."""
+
+import csv
+import os
+import sys
+
+from paraview import servermanager
+from paraview.simple import CSVReader, LoadPlugin, TableToPoints
+
+plugin = os.environ["TESSERA_PLUGIN"]
+source_dir = os.environ["TESSERA_SOURCE_DIR"]
+LoadPlugin(plugin, remote=False, ns=globals())
+
+if "GeographicProjection" not in globals():
+    print("FAIL: the plugin did not define GeographicProjection")
+    sys.exit(1)
+
+stations = os.path.join(source_dir, "examples", "data", "colorado_stations.csv")
+reader = CSVReader(FileName=[stations])
+points = TableToPoints(Input=reader, XColumn="lon", YColumn="lat", ZColumn="elev_m")
+projected = GeographicProjection(Input=points)  # noqa: F821 (defined by LoadPlugin)
+projected.Projection = "UTM"
+projected.UpdatePipeline()
+data = servermanager.Fetch(projected)
+
+failures = []
+if data.GetNumberOfPoints() != 376:
+    failures.append(f"expected 376 points, got {data.GetNumberOfPoints()}")
+record = data.GetFieldData().GetAbstractArray("TesseraProjection")
+if record is None or "projection=UTM" not in record.GetValue(0) or "zone=13" not in record.GetValue(0):
+    failures.append(f"bad TesseraProjection record: {record.GetValue(0) if record else None}")
+# UTM zone 13 eastings of the gauges stay inside the zone's 0..1000 km and their northings
+# follow the latitudes (about 111 km a degree).
+with open(stations) as f:
+    lats = [float(row["lat"]) for row in csv.DictReader(f)]
+for i in range(data.GetNumberOfPoints()):
+    x, y, _ = data.GetPoint(i)
+    if not 0.0 < x < 1.0e6:
+        failures.append(f"point {i}: easting {x} outside the zone")
+    if abs(y / 1000.0 - lats[i] * 110.9) > 60.0:
+        failures.append(f"point {i}: northing {y} far from latitude {lats[i]}")
+
+if failures:
+    print("FAIL:\n" + "\n".join(failures[:20]))
+    sys.exit(1)
+print("1 passed, 0 failed")

@@ -1,0 +1,32 @@
+"""Small helpers shared by the Python tests: a failing check raises AssertionError with a message,
+and the process exits non-zero, so ctest sees the failure."""
+
+import os
+import sys
+
+SOURCE_DIR = os.environ.get("TESSERA_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+EXAMPLE_DATA = os.path.join(SOURCE_DIR, "examples", "data")
+
+
+def check(condition, message):
+    if not condition:
+        raise AssertionError(message)
+
+
+def check_close(actual, expected, tolerance, what):
+    if not abs(actual - expected) <= tolerance:
+        raise AssertionError(f"{what}: {actual!r} differs from {expected!r} by more than {tolerance}")
+
+
+def run(tests):
+    """Runs every test function, prints a summary line ctest users can read, exits 1 on failure."""
+    failed = 0
+    for test in tests:
+        try:
+            test()
+            print(f"PASS {test.__name__}")
+        except Exception as error:  # report every failing test, not only the first
+            failed += 1
+            print(f"FAIL {test.__name__}: {error!r}")
+    print(f"{len(tests) - failed} passed, {failed} failed")
+    sys.exit(1 if failed else 0)

@@ -1,0 +1,103 @@
+"""vtkGeographicProjection from Debian's /usr/bin/python3: the real Colorado gauges round-trip,
+projected distances agree with geodesic distances, and bad input is reported."""
+
+import csv
+import math
+import os
+
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+from tessera import vtkGeographicProjection
+from tessera_testing import EXAMPLE_DATA, check, check_close, run
+
+
+def colorado_gauges():
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    with open(os.path.join(EXAMPLE_DATA, "colorado_stations.csv")) as f:
+        for row in csv.DictReader(f):
+            points.InsertNextPoint(float(row["lon"]), float(row["lat"]), float(row["elev_m"]))
+    data = vtkPolyData()
+    data.SetPoints(points)
+    return data
+
+
+def test_round_trip_of_the_colorado_gauges():
+    gauges = colorado_gauges()
+    forward = vtkGeographicProjection()
+    forward.SetInputData(gauges)
+    forward.Update()
+    projected = forward.GetOutput()
+    check(projected.GetNumberOfPoints() == 376, "all 376 gauges projected")
+    record = projected.GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
+    check(record.startswith("projection=AlbersEqualArea"), record)
+    inverse = vtkGeographicProjection()
+    inverse.SetInputConnection(forward.GetOutputPort())
+    inverse.InverseOn()
+    inverse.Update()
+    back = inverse.GetOutput()
+    for i in range(gauges.GetNumberOfPoints()):
+        a, b = gauges.GetPoint(i), back.GetPoint(i)
+        check_close(b[0], a[0], 1e-9, f"longitude of gauge {i}")
+        check_close(b[1], a[1], 1e-9, f"latitude of gauge {i}")
+        check(b[2] == a[2], f"elevation of gauge {i} kept")
+
+
+def spherical_distance(lon1, lat1, lon2, lat2, radius=6371008.8):
+    p1, p2 = math.radians(lat1), math.radians(lat2)
+    dl = math.radians(lon2 - lon1)
+    h = math.sin((p2 - p1) / 2) ** 2 + math.cos(p1) * math.cos(p2) * math.sin(dl / 2) ** 2
+    return 2 * radius * math.asin(math.sqrt(h))
+
+
+def test_azimuthal_equidistant_keeps_distances_from_the_centre():
+    # Distances from the centre are true geodesic distances; a sphere agrees to ~0.5%.
+    points = vtkPoints()
+    for lon, lat in [(-105.0, 39.0), (-104.0, 39.5), (-108.0, 37.0), (-102.5, 41.2)]:
+        points.InsertNextPoint(lon, lat, 0.0)
+    data = vtkPolyData()
+    data.SetPoints(points)
+    f = vtkGeographicProjection()
+    f.SetInputData(data)
+    f.SetProjectionToAzimuthalEquidistant()
+    f.ParametersFromDataOff()
+    f.SetCentralLongitude(-105.0)
+    f.SetCentralLatitude(39.0)
+    f.Update()
+    out = f.GetOutput()
+    x0, y0, _ = out.GetPoint(0)
+    check(abs(x0) < 1e-6 and abs(y0) < 1e-6, "the centre maps to the origin")
+    for i in range(1, 4):
+        x, y, _ = out.GetPoint(i)
+        lon, lat, _ = data.GetPoint(i)
+        expected = spherical_distance(-105.0, 39.0, lon, lat)
+        check_close(math.hypot(x, y) / expected, 1.0, 0.006, f"distance ratio of point {i}")
+
+
+def test_nan_point_is_named_and_output_is_empty():
+    points = vtkPoints()
+    points.InsertNextPoint(-105.0, 39.0, 0.0)
+    points.InsertNextPoint(float("nan"), 39.0, 0.0)
+    data = vtkPolyData()
+    data.SetPoints(points)
+    f = vtkGeographicProjection()
+    messages = []
+
+    @calldata_type(VTK_STRING)
+    def on_error(caller, event, message):
+        messages.append(message)
+
+    f.AddObserver(vtkCommand.ErrorEvent, on_error)
+    f.SetInputData(data)
+    f.Update()
+    check(f.GetOutput().GetNumberOfPoints() == 0, "empty output after a NaN point")
+    check(len(messages) == 1, f"one error reported, got {messages}")
+    check("point 1" in messages[0], f"the error names point 1: {messages[0]}")
+
+
+if __name__ == "__main__":
+    run([test_round_trip_of_the_colorado_gauges,
+         test_azimuthal_equidistant_keeps_distances_from_the_centre,
+         test_nan_point_is_named_and_output_is_empty])

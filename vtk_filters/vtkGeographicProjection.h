@@ -1,0 +1,168 @@
+/**
+ * @class   vtkGeographicProjection
+ * @brief   project longitude/latitude points, lines and polygons to a plane (and back)
+ *
+ * vtkGeographicProjection maps the x, y coordinates of any vtkPointSet, read as longitude and
+ * latitude in degrees on the WGS84 ellipsoid, to projected x, y in metres with GeographicLib
+ * (z is kept). Thiessen polygons and Dirichlet tiles are only meaningful in a plane, so gauges
+ * given in lon/lat pass through this filter first.
+ *
+ * Projections (SetProjectionTo...):
+ * - Automatic (default): an Albers equal-area conic whose standard parallels sit at 1/6 and 5/6
+ *   of the data's latitude span and whose central meridian is the middle of the data's longitude
+ *   extent. Equal-area, so tile areas in the plane are areas on the ellipsoid.
+ * - AlbersEqualArea, LambertConformalConic: conics with two standard parallels.
+ * - TransverseMercator (scale 1 on the central meridian) and UTM (zone from SetUTMZone, 0 = the
+ *   zone of the data's central longitude; false easting 500 km, false northing 10000 km south).
+ * - AzimuthalEquidistant about (CentralLongitude, CentralLatitude).
+ * With ParametersFromData on (default) the centre and standard parallels come from the data as
+ * for Automatic; off, the values set with SetCentralLongitude, SetCentralLatitude and
+ * SetStandardParallels are used.
+ *
+ * Longitudes are angles: the data's extent is the shortest longitude arc that holds it, so a set
+ * crossing the antimeridian (e.g. 165..181.6) is handled, and the inverse returns longitudes
+ * within 180 degrees of the central meridian.
+ *
+ * For vtkPolyData input, line and polygon edges are straight in lon/lat (RFC 7946): before
+ * projecting, every edge longer than MaximumEdgeLength degrees is cut into equal pieces (point
+ * data interpolated linearly; an edge shared by two cells is cut once), so a boundary along a
+ * parallel stays on it. MaximumEdgeLength <= 0 turns this off. Other point sets are projected
+ * point by point.
+ *
+ * Field data written (array names are API):
+ * - `TesseraProjection` (vtkStringArray, one value): the projection and its parameters as
+ *   "projection=AlbersEqualArea lon0=... lat0=... lat1=... lat2=... zone=... north=...",
+ *   exact to the last bit. With Inverse on, the filter reads it from its input (so nobody retypes
+ *   parameters) and removes it from the output; later Tessera filters read it too.
+ *
+ * Bad input (NaN/Inf, |latitude| > 90, a point the projection cannot represent such as a UTM
+ * point beyond 500 km from the zone's meridian, a transverse Mercator point beyond 45 degrees
+ * from the central meridian or a coordinate beyond 1e8 m, i.e. at a singularity) gives an error
+ * naming the point id and value, and an empty output.
+ */
+
+#ifndef vtkGeographicProjection_h
+#define vtkGeographicProjection_h
+
+#include "tesseraFiltersModule.h" // For export macro
+#include "vtkPointSetAlgorithm.h"
+
+class TESSERAFILTERS_EXPORT vtkGeographicProjection : public vtkPointSetAlgorithm
+{
+public:
+  static vtkGeographicProjection* New();
+  vtkTypeMacro(vtkGeographicProjection, vtkPointSetAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum ProjectionTypes
+  {
+    AUTOMATIC = 0,
+    ALBERS_EQUAL_AREA = 1,
+    LAMBERT_CONFORMAL_CONIC = 2,
+    TRANSVERSE_MERCATOR = 3,
+    UTM = 4,
+    AZIMUTHAL_EQUIDISTANT = 5
+  };
+
+  ///@{
+  /**
+   * The projection (default AUTOMATIC: Albers equal-area from the data's extent).
+   */
+  vtkSetClampMacro(Projection, int, AUTOMATIC, AZIMUTHAL_EQUIDISTANT);
+  vtkGetMacro(Projection, int);
+  void SetProjectionToAutomatic() { this->SetProjection(AUTOMATIC); }
+  void SetProjectionToAlbersEqualArea() { this->SetProjection(ALBERS_EQUAL_AREA); }
+  void SetProjectionToLambertConformalConic() { this->SetProjection(LAMBERT_CONFORMAL_CONIC); }
+  void SetProjectionToTransverseMercator() { this->SetProjection(TRANSVERSE_MERCATOR); }
+  void SetProjectionToUTM() { this->SetProjection(UTM); }
+  void SetProjectionToAzimuthalEquidistant() { this->SetProjection(AZIMUTHAL_EQUIDISTANT); }
+  ///@}
+
+  ///@{
+  /**
+   * UTM zone 1..60; 0 (default) takes the zone of the data's central longitude.
+   */
+  vtkSetClampMacro(UTMZone, int, 0, 60);
+  vtkGetMacro(UTMZone, int);
+  ///@}
+
+  ///@{
+  /**
+   * UTM hemisphere when the zone is set by hand (default on: north). With UTMZone 0 the
+   * hemisphere of the data's centre is used.
+   */
+  vtkSetMacro(UTMNorth, bool);
+  vtkGetMacro(UTMNorth, bool);
+  vtkBooleanMacro(UTMNorth, bool);
+  ///@}
+
+  ///@{
+  /**
+   * On (default): centre and standard parallels come from the data's extent. Off: the values
+   * below are used.
+   */
+  vtkSetMacro(ParametersFromData, bool);
+  vtkGetMacro(ParametersFromData, bool);
+  vtkBooleanMacro(ParametersFromData, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Central meridian and centre latitude in degrees (used when ParametersFromData is off).
+   */
+  vtkSetMacro(CentralLongitude, double);
+  vtkGetMacro(CentralLongitude, double);
+  vtkSetMacro(CentralLatitude, double);
+  vtkGetMacro(CentralLatitude, double);
+  ///@}
+
+  ///@{
+  /**
+   * The conics' standard parallels in degrees (used when ParametersFromData is off).
+   */
+  vtkSetVector2Macro(StandardParallels, double);
+  vtkGetVector2Macro(StandardParallels, double);
+  ///@}
+
+  ///@{
+  /**
+   * Longest edge, in degrees of the lon/lat plane, left uncut before projecting (default 0.1).
+   * 0 or less: no densification.
+   */
+  vtkSetMacro(MaximumEdgeLength, double);
+  vtkGetMacro(MaximumEdgeLength, double);
+  ///@}
+
+  ///@{
+  /**
+   * Off (default): lon/lat to x/y. On: x/y back to lon/lat, with the parameters read from the
+   * input's `TesseraProjection` field data when present, else from this filter's settings
+   * (ParametersFromData must then be off).
+   */
+  vtkSetMacro(Inverse, bool);
+  vtkGetMacro(Inverse, bool);
+  vtkBooleanMacro(Inverse, bool);
+  ///@}
+
+protected:
+  vtkGeographicProjection();
+  ~vtkGeographicProjection() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Projection = AUTOMATIC;
+  int UTMZone = 0;
+  bool UTMNorth = true;
+  bool ParametersFromData = true;
+  double CentralLongitude = 0.0;
+  double CentralLatitude = 0.0;
+  double StandardParallels[2] = { 30.0, 60.0 };
+  double MaximumEdgeLength = 0.1;
+  bool Inverse = false;
+
+private:
+  vtkGeographicProjection(const vtkGeographicProjection&) = delete;
+  void operator=(const vtkGeographicProjection&) = delete;
+};
+
+#endif
