@@ -87,7 +87,9 @@ public:
 
   /// lon/lat (degrees) to x/y (metres). Throws InputError naming `id` and the value when the
   /// point is invalid or the projection cannot represent it (e.g. a transverse Mercator point
-  /// more than 60 degrees of longitude from the central meridian, or the conic's far pole).
+  /// more than 45 degrees of longitude from the central meridian, a UTM point more than 500 km from
+  /// its zone's meridian, or any point whose projected coordinate exceeds 1e8 m: a singularity
+  /// such as the Lambert cone's far pole).
   Point2 Forward(const Point2& lonlat, long long id = -1) const;
   /// x/y (metres) to lon/lat; longitude within 180 degrees of the central meridian.
   Point2 Inverse(const Point2& xy, long long id = -1) const;

@@ -64,6 +64,21 @@ TEST(Geo, UTMMatchesGeoConvertPublishedExample)
   EXPECT_EQ(UTMZoneOfLongitude(44.4), 38);
 }
 
+TEST(Geo, LambertMatchesConicProjPublishedExample)
+{
+  // ConicProj(1): "echo 39.95N 75.17W | ConicProj -c 40d58 39d56 -l 77d45W" prints
+  // "220445 -52372 1.67 1.0" (Philadelphia in the Pennsylvania South conic).
+  ProjectionParameters p;
+  p.Kind = ProjectionKind::LambertConformalConic;
+  p.StandardParallel1 = 40.0 + 58.0 / 60.0;
+  p.StandardParallel2 = 39.0 + 56.0 / 60.0;
+  p.CentralLongitude = -(77.0 + 45.0 / 60.0);
+  GeographicProjection lambert(p);
+  const Point2 xy = lambert.Forward({ -75.17, 39.95 });
+  EXPECT_NEAR(xy.x, 220445.0, 0.5);
+  EXPECT_NEAR(xy.y, -52372.0, 0.5);
+}
+
 TEST(Geo, RoundTripsToANanodegreeForEveryProjection)
 {
   std::mt19937_64 random(7);
