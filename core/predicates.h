@@ -8,7 +8,9 @@
 //   incircle(a, b, c, d) > 0 when d lies strictly inside the circle through a, b, c given
 //                        anticlockwise; < 0 outside; 0 co-circular. (Sign flips if a, b, c are
 //                        clockwise.)
-// Both return -1, 0 or +1 and are exact for every finite double input.
+// All return -1, 0 or +1 and are exact for every finite double input (any magnitudes, subnormals
+// included); a NaN or infinite input gives an unspecified sign but no crash.
+// core/predicates_inline.h has the same predicates with the floating-point filter inlined.
 
 #include "geometry.h"
 
@@ -17,5 +19,25 @@ namespace tessera
 
 int orient2d(const Point2& a, const Point2& b, const Point2& c);
 int incircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d);
+
+/// Which of a, b is nearer to p: the sign of |p - a|^2 - |p - b|^2, exactly. Negative when a is
+/// strictly nearer, positive when b is, 0 when p is equidistant (on the bisector of a and b).
+int compare_distance(const Point2& p, const Point2& a, const Point2& b);
+
+/// The sign of a * p.x + b * p.y + c, exactly (no rounding of the products or the sum).
+int affine_sign(double a, double b, double c, const Point2& p);
+
+/// The sign of the 3x3 determinant with rows (a1, b1, c1), (a2, b2, c2), (a3, b3, c3), exactly.
+/// For lines a*x + b*y + c = 0 it tells on which side of line 3 the crossing of lines 1 and 2
+/// lies: sign(a3*x + b3*y + c3) at that crossing is this sign times sign(a1*b2 - a2*b1).
+int determinant3_sign(double a1,
+  double b1,
+  double c1,
+  double a2,
+  double b2,
+  double c2,
+  double a3,
+  double b3,
+  double c3);
 
 } // namespace tessera

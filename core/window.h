@@ -1,6 +1,7 @@
 #pragma once
-// A convex window given by strict linear constraints a*x + b*y + c < 0 (Green and Sibson, section 1.2).
-// Redundant constraints are identified and ignored; an empty or unbounded window is an InputError.
+// A convex window given by strict linear constraints a*x + b*y + c < 0 (Green and Sibson,
+// section 1.2). Redundant constraints are identified and ignored; an empty or unbounded window is
+// an InputError.
 
 #include "geometry.h"
 

@@ -1,0 +1,154 @@
+// Benchmark of the Green-Sibson engine (programs, never timed tests): Delaunay construction,
+// tiles with areas, and bytes of structure per point, for 1e4 .. 1e7 uniform points and a
+// 1000 x 1000 lattice (every face degenerate). When built with TESSERA_HAVE_CGAL, CGAL's
+// Delaunay_triangulation_2 (Exact_predicates_inexact_constructions_kernel, range insert) runs in
+// the same program on the same points, as the peer.
+//
+// Columns: ns/pt = wall time per input point; B/pt = bytes held by the structure per point
+// (coordinates included); each benchmark's counters are printed in Google Benchmark's table.
+
+#include "dirichlet_tessellation.h"
+#include "tiles.h"
+
+#include <benchmark/benchmark.h>
+
+#include <random>
+#include <vector>
+
+#ifdef TESSERA_HAVE_CGAL
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#endif
+
+namespace
+{
+
+using tessera::Point2;
+
+const std::vector<Point2>& UniformPoints(std::size_t n)
+{
+  static std::vector<Point2> points;
+  if (points.size() != n)
+  {
+    std::mt19937_64 rng(12345);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    points.resize(n);
+    for (Point2& p : points)
+    {
+      p = { u(rng), u(rng) };
+    }
+  }
+  return points;
+}
+
+const std::vector<Point2>& LatticePoints()
+{
+  static std::vector<Point2> points;
+  if (points.empty())
+  {
+    for (int j = 0; j < 1000; ++j)
+    {
+      for (int i = 0; i < 1000; ++i)
+      {
+        points.push_back({ i + 0.5, j + 0.5 });
+      }
+    }
+  }
+  return points;
+}
+
+tessera::Window WindowFor(bool lattice)
+{
+  return lattice ? tessera::Window::Rectangle(0.0, 1000.0, 0.0, 1000.0)
+                 : tessera::Window::Rectangle(-0.1, 1.1, -0.1, 1.1);
+}
+
+void SetPerPoint(benchmark::State& state, std::size_t n)
+{
+  state.counters["ns/pt"] = benchmark::Counter(double(state.iterations()) * 1e9 / double(n),
+    benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(n));
+}
+
+// Argument 0 = the lattice, otherwise the number of uniform points.
+const std::vector<Point2>& Input(std::int64_t arg)
+{
+  return arg == 0 ? LatticePoints() : UniformPoints(std::size_t(arg));
+}
+
+void TesseraDelaunay(benchmark::State& state)
+{
+  const std::vector<Point2>& points = Input(state.range(0));
+  std::size_t bytes = 0;
+  for (auto _ : state)
+  {
+    tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+    benchmark::DoNotOptimize(t.Origin().data());
+    bytes = t.StructureBytes();
+  }
+  SetPerPoint(state, points.size());
+  state.counters["B/pt"] = double(bytes) / double(points.size());
+}
+
+void TesseraDelaunayFaces(benchmark::State& state)
+{
+  const std::vector<Point2>& points = Input(state.range(0));
+  for (auto _ : state)
+  {
+    tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+    const tessera::DelaunayFaces faces = tessera::ComputeDelaunayFaces(t, false);
+    benchmark::DoNotOptimize(faces.PointIds.data());
+  }
+  SetPerPoint(state, points.size());
+}
+
+void TesseraTilesAndAreas(benchmark::State& state)
+{
+  const std::vector<Point2>& points = Input(state.range(0));
+  const tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+  for (auto _ : state)
+  {
+    const tessera::TileSet tiles = tessera::ComputeTiles(t);
+    benchmark::DoNotOptimize(tiles.Areas.data());
+  }
+  SetPerPoint(state, points.size());
+}
+
+#ifdef TESSERA_HAVE_CGAL
+void CgalDelaunay(benchmark::State& state)
+{
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const std::vector<Point2>& points = Input(state.range(0));
+  std::vector<Kernel::Point_2> input;
+  input.reserve(points.size());
+  for (const Point2& p : points)
+  {
+    input.emplace_back(p.x, p.y);
+  }
+  for (auto _ : state)
+  {
+    CGAL::Delaunay_triangulation_2<Kernel> dt;
+    dt.insert(input.begin(), input.end());
+    benchmark::DoNotOptimize(dt.number_of_faces());
+  }
+  SetPerPoint(state, points.size());
+}
+#endif
+
+void Sizes(benchmark::internal::Benchmark* b)
+{
+  b->Unit(benchmark::kMillisecond)->UseRealTime();
+  b->Arg(10000)->Arg(100000)->Arg(1000000)->Arg(0);
+  b->Args({ 10000000 })->Iterations(1);
+}
+
+} // namespace
+
+BENCHMARK(TesseraDelaunay)->Apply(Sizes);
+BENCHMARK(TesseraDelaunayFaces)->Apply(Sizes);
+BENCHMARK(TesseraTilesAndAreas)->Apply(Sizes);
+#ifdef TESSERA_HAVE_CGAL
+BENCHMARK(CgalDelaunay)->Apply(Sizes);
+#endif
+
+BENCHMARK_MAIN();

@@ -1,0 +1,799 @@
+#include "clip.h"
+
+#include "errors.h"
+#include "polygon_validation.h"
+#include "predicates_inline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+
+namespace tessera
+{
+namespace
+{
+
+// Neumaier-style running sum: the rounding error of every addition is kept and added back at the
+// end, so a sum of many terms of mixed sign loses no more than one rounding.
+struct CompensatedSum
+{
+  double Sum = 0.0;
+  double Error = 0.0;
+  void Add(double value)
+  {
+    const double sum = this->Sum + value;
+    const double virtualValue = sum - this->Sum;
+    this->Error += (this->Sum - (sum - virtualValue)) + (value - virtualValue);
+    this->Sum = sum;
+  }
+  // a * b with its rounding error recovered exactly by fma (Ogita, Rump and Oishi's Dot2).
+  void AddProduct(double a, double b)
+  {
+    const double product = a * b;
+    this->Error += std::fma(a, b, -product);
+    this->Add(product);
+  }
+  double Value() const { return this->Sum + this->Error; }
+};
+
+// Shoelace over the ring's own coordinates (no shift, which would round them): the products are
+// exact through fma, so only the final sum is rounded.
+double SignedArea(const Point2* ring, std::size_t count)
+{
+  CompensatedSum twice;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const Point2& a = ring[i];
+    const Point2& b = ring[i + 1 == count ? 0 : i + 1];
+    twice.AddProduct(a.x, b.y);
+    twice.AddProduct(-b.x, a.y);
+  }
+  return 0.5 * twice.Value();
+}
+
+// Winding-number contribution of segment a->b at p, by the signed crossings of the ray from p
+// towards +x. Half-open in y so a vertex on the ray counts once; exact through orient2d.
+int RayCrossing(const Point2& a, const Point2& b, const Point2& p)
+{
+  if (a.y <= p.y)
+  {
+    if (b.y > p.y && orient2d_fast(a, b, p) > 0)
+    {
+      return 1;
+    }
+  }
+  else if (b.y <= p.y && orient2d_fast(a, b, p) < 0)
+  {
+    return -1;
+  }
+  return 0;
+}
+
+int RingWinding(const std::vector<Point2>& ring, const Point2& p)
+{
+  int winding = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i)
+  {
+    winding += RayCrossing(ring[i], ring[i + 1 == ring.size() ? 0 : i + 1], p);
+  }
+  return winding;
+}
+
+// Where segment p-q meets the line a->b, interpolated from the endpoint nearer the line, so that
+// the same segment gives the same point in either direction (neighbouring tiles then agree).
+Point2 LineCrossing(const Point2& p, const Point2& q, const Point2& a, const Point2& b)
+{
+  const double ex = b.x - a.x;
+  const double ey = b.y - a.y;
+  const double dp = ex * (p.y - a.y) - ey * (p.x - a.x);
+  const double dq = ex * (q.y - a.y) - ey * (q.x - a.x);
+  const bool fromP = std::fabs(dp) < std::fabs(dq) ||
+    (std::fabs(dp) == std::fabs(dq) && (p.x < q.x || (p.x == q.x && p.y <= q.y)));
+  const Point2& s = fromP ? p : q;
+  const Point2& t = fromP ? q : p;
+  const double ds = fromP ? dp : dq;
+  const double dt = fromP ? dq : dp;
+  double f = ds / (ds - dt);
+  // The exact signs decided that the segment crosses; rounded distances may disagree slightly.
+  if (!(f >= 0.0))
+  {
+    f = 0.0;
+  }
+  f = std::min(f, 1.0);
+  Point2 x{ s.x + f * (t.x - s.x), s.y + f * (t.y - s.y) };
+  x.x = std::min(std::max(x.x, std::min(p.x, q.x)), std::max(p.x, q.x));
+  x.y = std::min(std::max(x.y, std::min(p.y, q.y)), std::max(p.y, q.y));
+  return x;
+}
+
+// One Sutherland-Hodgman stage: keeps the part of the closed ring on the closed left side of
+// a->b. Outside excursions become stretches along the line, which keeps every winding number on
+// the left side.
+void ClipByEdge(const std::vector<Point2>& in,
+  const Point2& a,
+  const Point2& b,
+  std::vector<Point2>& out)
+{
+  out.clear();
+  if (in.empty())
+  {
+    return;
+  }
+  const Point2* previous = &in.back();
+  int previousSide = orient2d_fast(a, b, *previous);
+  for (const Point2& q : in)
+  {
+    const int side = orient2d_fast(a, b, q);
+    if (side >= 0)
+    {
+      if (previousSide < 0 && side > 0)
+      {
+        out.push_back(LineCrossing(*previous, q, a, b));
+      }
+      out.push_back(q);
+    }
+    else if (previousSide > 0)
+    {
+      out.push_back(LineCrossing(*previous, q, a, b));
+    }
+    previous = &q;
+    previousSide = side;
+  }
+}
+
+void DropRepeatedVertices(std::vector<Point2>& ring)
+{
+  ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+  while (ring.size() > 1 && ring.front() == ring.back())
+  {
+    ring.pop_back();
+  }
+}
+
+void AppendRing(ClippedRings& rings, const Point2* begin, std::size_t count, bool reversed)
+{
+  if (reversed)
+  {
+    for (std::size_t i = count; i-- > 0;)
+    {
+      rings.Vertices.push_back(begin[i]);
+    }
+  }
+  else
+  {
+    rings.Vertices.insert(rings.Vertices.end(), begin, begin + count);
+  }
+  rings.RingOffsets.push_back(rings.Vertices.size());
+}
+
+// Sides and corners of a box, anticlockwise: side k runs from corner k to corner k+1.
+// 0 bottom, 1 right, 2 top, 3 left.
+Point2 Corner(const Box2& box, int k)
+{
+  switch (k & 3)
+  {
+    case 0:
+      return { box.XMin, box.YMin };
+    case 1:
+      return { box.XMax, box.YMin };
+    case 2:
+      return { box.XMax, box.YMax };
+    default:
+      return { box.XMin, box.YMax };
+  }
+}
+
+// For a point outside the closed box: a side that its nearest box point lies on.
+int SideFacing(const Box2& box, const Point2& u)
+{
+  if (u.y < box.YMin)
+  {
+    return 0;
+  }
+  if (u.x > box.XMax)
+  {
+    return 1;
+  }
+  if (u.y > box.YMax)
+  {
+    return 2;
+  }
+  return 3;
+}
+
+Point2 NearestInBox(const Box2& box, const Point2& u)
+{
+  return { std::min(std::max(u.x, box.XMin), box.XMax),
+    std::min(std::max(u.y, box.YMin), box.YMax) };
+}
+
+Box2 BoundsOf(const Point2* points, std::size_t count)
+{
+  Box2 box{ points[0].x, points[0].x, points[0].y, points[0].y };
+  for (std::size_t i = 1; i < count; ++i)
+  {
+    box.XMin = std::min(box.XMin, points[i].x);
+    box.XMax = std::max(box.XMax, points[i].x);
+    box.YMin = std::min(box.YMin, points[i].y);
+    box.YMax = std::max(box.YMax, points[i].y);
+  }
+  return box;
+}
+
+void CheckTile(const Point2* tile, std::size_t count, std::size_t tileId)
+{
+  if (count < 3)
+  {
+    throw InputError("tile " + std::to_string(tileId) + " has " + std::to_string(count) +
+      " vertices; a tile needs at least 3");
+  }
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    if (!std::isfinite(tile[i].x) || !std::isfinite(tile[i].y))
+    {
+      const bool nan = std::isnan(tile[i].x) || std::isnan(tile[i].y);
+      throw InputError("tile " + std::to_string(tileId) + " vertex " + std::to_string(i) + " has " +
+        (nan ? "a NaN coordinate" : "an infinite coordinate"));
+    }
+  }
+}
+
+void CheckTileOffsets(const std::vector<std::size_t>& offsets, std::size_t vertexCount)
+{
+  if (offsets.empty() || offsets.front() != 0)
+  {
+    throw InputError("tile offsets must start with 0");
+  }
+  for (std::size_t t = 1; t < offsets.size(); ++t)
+  {
+    if (offsets[t] < offsets[t - 1])
+    {
+      throw InputError("tile offset " + std::to_string(t) + " is smaller than the one before it");
+    }
+  }
+  if (offsets.back() != vertexCount)
+  {
+    throw InputError("last tile offset is " + std::to_string(offsets.back()) +
+      ", expected the vertex count " + std::to_string(vertexCount));
+  }
+}
+
+// Exact orientation of a simple ring: at its lexicographically smallest vertex the ring turns
+// convexly, and the neighbours cannot be collinear with it (validation rejects such overlaps).
+int RingOrientation(const Point2* ring, std::size_t count)
+{
+  std::size_t lowest = 0;
+  for (std::size_t i = 1; i < count; ++i)
+  {
+    if (ring[i].x < ring[lowest].x || (ring[i].x == ring[lowest].x && ring[i].y < ring[lowest].y))
+    {
+      lowest = i;
+    }
+  }
+  const Point2& before = ring[lowest == 0 ? count - 1 : lowest - 1];
+  const Point2& after = ring[lowest + 1 == count ? 0 : lowest + 1];
+  return orient2d_fast(before, ring[lowest], after);
+}
+
+// Sorts (ring, crossing) pairs by ring and sums each ring's crossings in place.
+void SumByRing(std::vector<std::pair<std::uint32_t, int>>& crossings)
+{
+  std::sort(crossings.begin(), crossings.end());
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < crossings.size(); ++i)
+  {
+    if (kept > 0 && crossings[kept - 1].first == crossings[i].first)
+    {
+      crossings[kept - 1].second += crossings[i].second;
+    }
+    else
+    {
+      crossings[kept++] = crossings[i];
+    }
+  }
+  crossings.resize(kept);
+}
+
+int WindingOf(const std::vector<std::pair<std::uint32_t, int>>& summed, std::uint32_t ring)
+{
+  const auto found = std::lower_bound(
+    summed.begin(), summed.end(), std::make_pair(ring, std::numeric_limits<int>::min()));
+  return found != summed.end() && found->first == ring ? found->second : 0;
+}
+
+} // namespace
+
+Catchment::Catchment(const std::vector<std::size_t>& ringOffsets,
+  const std::vector<Point2>& vertices)
+{
+  CleanRings clean = ValidateRings(ringOffsets, vertices);
+  this->Offsets = std::move(clean.RingOffsets);
+  this->Points = std::move(clean.Vertices);
+  this->EdgeRing.resize(this->Points.size());
+  for (std::size_t r = 0; r < this->RingCount(); ++r)
+  {
+    std::fill(this->EdgeRing.begin() + static_cast<std::ptrdiff_t>(this->Offsets[r]),
+      this->EdgeRing.begin() + static_cast<std::ptrdiff_t>(this->Offsets[r + 1]),
+      static_cast<std::uint32_t>(r));
+  }
+  this->Box = BoundsOf(this->Points.data(), this->Points.size());
+  this->BuildGrid();
+  this->FindDepths();
+  this->OrientRings();
+  this->ClassifyEmptyCells();
+  CompensatedSum area;
+  for (std::size_t r = 0; r < this->RingCount(); ++r)
+  {
+    area.Add(SignedArea(&this->Points[this->Offsets[r]], this->Offsets[r + 1] - this->Offsets[r]));
+  }
+  this->TotalArea = area.Value();
+}
+
+std::size_t Catchment::CellX(double x) const
+{
+  const double cell = (x - this->Box.XMin) * this->CellScaleX;
+  if (!(cell > 0.0))
+  {
+    return 0;
+  }
+  return cell >= static_cast<double>(this->GridX) ? this->GridX - 1
+                                                  : static_cast<std::size_t>(cell);
+}
+
+std::size_t Catchment::CellY(double y) const
+{
+  const double cell = (y - this->Box.YMin) * this->CellScaleY;
+  if (!(cell > 0.0))
+  {
+    return 0;
+  }
+  return cell >= static_cast<double>(this->GridY) ? this->GridY - 1
+                                                  : static_cast<std::size_t>(cell);
+}
+
+std::size_t Catchment::NextVertex(std::size_t v) const
+{
+  const std::uint32_t ring = this->EdgeRing[v];
+  return v + 1 == this->Offsets[ring + 1] ? this->Offsets[ring] : v + 1;
+}
+
+// About two cells per segment, shaped like the catchment's box. Cell indices come from one
+// monotone function of the coordinate, so a segment whose box meets a query box always shares a
+// cell with it, whatever the rounding.
+void Catchment::BuildGrid()
+{
+  const double width = this->Box.XMax - this->Box.XMin;
+  const double height = this->Box.YMax - this->Box.YMin;
+  const double cells = 2.0 * static_cast<double>(this->Points.size());
+  const auto side = [](double count) {
+    return static_cast<std::size_t>(std::min(4096.0, std::max(1.0, std::ceil(std::sqrt(count)))));
+  };
+  this->GridX = side(cells * width / height);
+  this->GridY = side(cells * height / width);
+  this->CellScaleX = static_cast<double>(this->GridX) / width;
+  this->CellScaleY = static_cast<double>(this->GridY) / height;
+  const std::size_t cellCount = this->GridX * this->GridY;
+  std::vector<std::uint32_t> count(cellCount + 1, 0);
+  const auto forEachCell = [this](std::size_t v, auto&& visit)
+  {
+    const Point2& a = this->Points[v];
+    const Point2& b = this->Points[this->NextVertex(v)];
+    const std::size_t x0 = this->CellX(std::min(a.x, b.x));
+    const std::size_t x1 = this->CellX(std::max(a.x, b.x));
+    const std::size_t y0 = this->CellY(std::min(a.y, b.y));
+    const std::size_t y1 = this->CellY(std::max(a.y, b.y));
+    for (std::size_t j = y0; j <= y1; ++j)
+    {
+      for (std::size_t i = x0; i <= x1; ++i)
+      {
+        visit(i + j * this->GridX);
+      }
+    }
+  };
+  for (std::size_t v = 0; v < this->Points.size(); ++v)
+  {
+    forEachCell(v, [&count](std::size_t cell) { ++count[cell + 1]; });
+  }
+  for (std::size_t c = 0; c < cellCount; ++c)
+  {
+    count[c + 1] += count[c];
+  }
+  this->CellStart = count;
+  this->CellEdges.assign(count[cellCount], 0);
+  for (std::size_t v = 0; v < this->Points.size(); ++v)
+  {
+    forEachCell(v,
+      [this, &count, v](std::size_t cell)
+      { this->CellEdges[count[cell]++] = static_cast<std::uint32_t>(v); });
+  }
+}
+
+// Only segments that cross the ray's line can count, and they are all listed in the ray's row; a
+// segment is taken in the first cell of the row (from the ray's start on) that lists it.
+void Catchment::RayCrossings(const Point2& p, std::vector<std::pair<std::uint32_t, int>>& out) const
+{
+  out.clear();
+  if (p.y < this->Box.YMin || p.y >= this->Box.YMax || p.x > this->Box.XMax)
+  {
+    return;
+  }
+  const std::size_t row = this->CellY(p.y);
+  const std::size_t first = this->CellX(p.x);
+  for (std::size_t i = first; i < this->GridX; ++i)
+  {
+    const std::size_t cell = i + row * this->GridX;
+    for (std::uint32_t k = this->CellStart[cell]; k < this->CellStart[cell + 1]; ++k)
+    {
+      const std::uint32_t v = this->CellEdges[k];
+      const Point2& a = this->Points[v];
+      const Point2& b = this->Points[this->NextVertex(v)];
+      if (std::max(this->CellX(std::min(a.x, b.x)), first) != i)
+      {
+        continue;
+      }
+      const int crossing = RayCrossing(a, b, p);
+      if (crossing != 0)
+      {
+        out.emplace_back(this->EdgeRing[v], crossing);
+      }
+    }
+  }
+}
+
+// Rings do not touch, so a ring's first vertex is strictly inside or outside every other ring.
+void Catchment::FindDepths()
+{
+  this->Depths.assign(this->RingCount(), 0);
+  std::vector<std::pair<std::uint32_t, int>> crossings;
+  for (std::size_t r = 0; r < this->RingCount(); ++r)
+  {
+    this->RayCrossings(this->Points[this->Offsets[r]], crossings);
+    SumByRing(crossings);
+    for (const auto& ringWinding : crossings)
+    {
+      if (ringWinding.first != r && ringWinding.second != 0)
+      {
+        ++this->Depths[r];
+      }
+    }
+  }
+}
+
+// With every ring oriented so that the catchment is on its left, the catchment's indicator is the
+// sum of the rings' winding numbers (0 or 1 off the boundary).
+void Catchment::OrientRings()
+{
+  this->Reversed.assign(this->RingCount(), false);
+  bool anyReversed = false;
+  for (std::size_t r = 0; r < this->RingCount(); ++r)
+  {
+    const std::size_t begin = this->Offsets[r];
+    const std::size_t count = this->Offsets[r + 1] - begin;
+    const int wanted = this->Depths[r] % 2 == 0 ? 1 : -1;
+    if (RingOrientation(&this->Points[begin], count) != wanted)
+    {
+      std::reverse(this->Points.begin() + static_cast<std::ptrdiff_t>(begin),
+        this->Points.begin() + static_cast<std::ptrdiff_t>(begin + count));
+      this->Reversed[r] = true;
+      anyReversed = true;
+    }
+  }
+  if (anyReversed)
+  {
+    this->BuildGrid(); // segment ids changed
+  }
+}
+
+// A cell that no segment meets is wholly inside or outside. Along its row, segments that cross the
+// centre line lie entirely left or right of such a cell, so its winding is the sum of the
+// crossings of the segments starting right of it.
+void Catchment::ClassifyEmptyCells()
+{
+  this->EmptyCellInside.assign(this->GridX * this->GridY, -1);
+  std::vector<int> crossingsFrom(this->GridX + 1);
+  for (std::size_t j = 0; j < this->GridY; ++j)
+  {
+    const double y = this->Box.YMin + (static_cast<double>(j) + 0.5) / this->CellScaleY;
+    if (this->CellY(y) != j)
+    {
+      continue; // rounding moved the centre line out of the row: leave the row to exact queries
+    }
+    std::fill(crossingsFrom.begin(), crossingsFrom.end(), 0);
+    for (std::size_t i = 0; i < this->GridX; ++i)
+    {
+      const std::size_t cell = i + j * this->GridX;
+      for (std::uint32_t k = this->CellStart[cell]; k < this->CellStart[cell + 1]; ++k)
+      {
+        const std::uint32_t v = this->CellEdges[k];
+        const Point2& a = this->Points[v];
+        const Point2& b = this->Points[this->NextVertex(v)];
+        const std::size_t firstColumn = this->CellX(std::min(a.x, b.x));
+        if (firstColumn == i)
+        {
+          crossingsFrom[i] += (a.y <= y && b.y > y) ? 1 : (b.y <= y && a.y > y) ? -1 : 0;
+        }
+      }
+    }
+    int right = 0;
+    for (std::size_t i = this->GridX; i-- > 0;)
+    {
+      const std::size_t cell = i + j * this->GridX;
+      const double x = this->Box.XMin + (static_cast<double>(i) + 0.5) / this->CellScaleX;
+      if (this->CellStart[cell] == this->CellStart[cell + 1] && this->CellX(x) == i)
+      {
+        this->EmptyCellInside[cell] = right != 0 ? 1 : 0;
+      }
+      right += crossingsFrom[i];
+    }
+  }
+}
+
+bool Catchment::Contains(const Point2& p) const
+{
+  std::vector<std::pair<std::uint32_t, int>> crossings;
+  this->RayCrossings(p, crossings);
+  int winding = 0;
+  for (const auto& crossing : crossings)
+  {
+    winding += crossing.second;
+  }
+  return winding != 0;
+}
+
+double Catchment::ClipArea(const std::vector<Point2>& tile) const
+{
+  Workspace work;
+  return this->ClipInto(tile.data(), tile.size(), 0, work, nullptr);
+}
+
+ClippedTile Catchment::Clip(const std::vector<Point2>& tile) const
+{
+  Workspace work;
+  ClippedTile clipped;
+  clipped.Area = this->ClipInto(tile.data(), tile.size(), 0, work, &clipped.Rings);
+  return clipped;
+}
+
+ClippedTiles Catchment::ClipAll(const std::vector<std::size_t>& tileOffsets,
+  const std::vector<Point2>& tileVertices,
+  bool withRings) const
+{
+  CheckTileOffsets(tileOffsets, tileVertices.size());
+  ClippedTiles clipped;
+  clipped.CatchmentArea = this->TotalArea;
+  const std::size_t tileCount = tileOffsets.size() - 1;
+  clipped.Areas.resize(tileCount);
+  clipped.TileRingOffsets.assign(1, 0);
+  Workspace work;
+  for (std::size_t t = 0; t < tileCount; ++t)
+  {
+    clipped.Areas[t] = this->ClipInto(tileVertices.data() + tileOffsets[t],
+      tileOffsets[t + 1] - tileOffsets[t],
+      t,
+      work,
+      withRings ? &clipped.Rings : nullptr);
+    clipped.TileRingOffsets.push_back(clipped.Rings.RingOffsets.size() - 1);
+  }
+  return clipped;
+}
+
+double Catchment::ClipInto(const Point2* tile,
+  std::size_t count,
+  std::size_t tileId,
+  Workspace& work,
+  ClippedRings* rings) const
+{
+  CheckTile(tile, count, tileId);
+  const double tileArea = SignedArea(tile, count);
+  if (tileArea < 0.0)
+  {
+    throw InputError("tile " + std::to_string(tileId) + " has clockwise vertices (signed area " +
+      std::to_string(tileArea) + "); tiles must be convex and anticlockwise");
+  }
+  const Box2 box = BoundsOf(tile, count);
+  if (tileArea == 0.0 || box.XMax < this->Box.XMin || box.XMin > this->Box.XMax ||
+    box.YMax < this->Box.YMin || box.YMin > this->Box.YMax)
+  {
+    return 0.0;
+  }
+  const std::size_t x0 = this->CellX(box.XMin);
+  const std::size_t x1 = this->CellX(box.XMax);
+  const std::size_t y0 = this->CellY(box.YMin);
+  const std::size_t y1 = this->CellY(box.YMax);
+
+  // Candidate segments: those listed in a cell of the tile's box, each taken once (in its first
+  // such cell).
+  work.Candidates.clear();
+  for (std::size_t j = y0; j <= y1; ++j)
+  {
+    for (std::size_t i = x0; i <= x1; ++i)
+    {
+      const std::size_t cell = i + j * this->GridX;
+      for (std::uint32_t k = this->CellStart[cell]; k < this->CellStart[cell + 1]; ++k)
+      {
+        const std::uint32_t v = this->CellEdges[k];
+        const Point2& a = this->Points[v];
+        const Point2& b = this->Points[this->NextVertex(v)];
+        if (std::max(this->CellX(std::min(a.x, b.x)), x0) == i &&
+          std::max(this->CellY(std::min(a.y, b.y)), y0) == j)
+        {
+          work.Candidates.push_back(v);
+        }
+      }
+    }
+  }
+
+  const Point2 centre{ box.XMin + 0.5 * (box.XMax - box.XMin),
+    box.YMin + 0.5 * (box.YMax - box.YMin) };
+  if (work.Candidates.empty())
+  {
+    // No segment meets the box: the catchment's indicator is constant over it.
+    const bool boxInside = box.XMin >= this->Box.XMin && box.XMax <= this->Box.XMax &&
+      box.YMin >= this->Box.YMin && box.YMax <= this->Box.YMax;
+    const signed char cellInside = this->EmptyCellInside[x0 + y0 * this->GridX];
+    const bool inside = boxInside && (cellInside >= 0 ? cellInside == 1 : this->Contains(centre));
+    if (!inside)
+    {
+      return 0.0;
+    }
+    if (rings)
+    {
+      AppendRing(*rings, tile, count, false);
+    }
+    return tileArea;
+  }
+
+  std::sort(work.Candidates.begin(), work.Candidates.end());
+  this->RayCrossings(centre, work.Crossings);
+  SumByRing(work.Crossings);
+  int farWinding = 0; // winding inside the box of the rings with no candidate segment
+  for (const auto& crossing : work.Crossings)
+  {
+    farWinding += crossing.second;
+  }
+
+  // Pieces are clipped and measured relative to the tile's first vertex: rounded intersection
+  // points then err by ulps of the tile's size, not of the coordinates' magnitude.
+  const Point2 origin = tile[0];
+  work.Tile.resize(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    work.Tile[i] = { tile[i].x - origin.x, tile[i].y - origin.y };
+  }
+  CompensatedSum area;
+  for (std::size_t first = 0; first < work.Candidates.size();)
+  {
+    const std::uint32_t ring = this->EdgeRing[work.Candidates[first]];
+    std::size_t last = first;
+    while (last < work.Candidates.size() && this->EdgeRing[work.Candidates[last]] == ring)
+    {
+      ++last;
+    }
+    const int winding = WindingOf(work.Crossings, ring);
+    farWinding -= winding;
+    this->BuildLocalRing(
+      ring, &work.Candidates[first], last - first, box, centre, winding, work.Local);
+    first = last;
+
+    work.ClipA.clear();
+    for (const Point2& p : work.Local)
+    {
+      work.ClipA.push_back({ p.x - origin.x, p.y - origin.y });
+    }
+    for (std::size_t e = 0; e < count && !work.ClipA.empty(); ++e)
+    {
+      ClipByEdge(work.ClipA, work.Tile[e], work.Tile[e + 1 == count ? 0 : e + 1], work.ClipB);
+      std::swap(work.ClipA, work.ClipB);
+    }
+    DropRepeatedVertices(work.ClipA);
+    if (work.ClipA.size() < 3)
+    {
+      continue;
+    }
+    const double pieceArea = SignedArea(work.ClipA.data(), work.ClipA.size());
+    area.Add(pieceArea);
+    if (rings && pieceArea != 0.0)
+    {
+      for (Point2& p : work.ClipA)
+      {
+        p = { p.x + origin.x, p.y + origin.y };
+      }
+      AppendRing(*rings, work.ClipA.data(), work.ClipA.size(), false);
+    }
+  }
+  for (int k = 0; k < std::abs(farWinding); ++k)
+  {
+    area.Add(farWinding > 0 ? tileArea : -tileArea);
+    if (rings)
+    {
+      AppendRing(*rings, tile, count, farWinding < 0);
+    }
+  }
+  return std::min(std::max(area.Value(), 0.0), tileArea);
+}
+
+// The ring's candidate segments in ring order, with each run of other segments (all outside the
+// box) replaced by a path from its start around the box's boundary to its end. The replaced ring
+// has the same winding numbers inside the box up to a whole number of turns, which is measured at
+// the box's centre against the true ring and repaid with loops around the box.
+void Catchment::BuildLocalRing(std::uint32_t ring,
+  const std::uint32_t* ids,
+  std::size_t count,
+  const Box2& box,
+  const Point2& centre,
+  int winding,
+  std::vector<Point2>& local) const
+{
+  const std::size_t begin = this->Offsets[ring];
+  const std::size_t end = this->Offsets[ring + 1];
+  local.clear();
+  if (count == end - begin)
+  {
+    local.assign(this->Points.begin() + static_cast<std::ptrdiff_t>(begin),
+      this->Points.begin() + static_cast<std::ptrdiff_t>(end));
+    return;
+  }
+  const auto startsChain = [&](std::size_t k)
+  {
+    const std::size_t previous = ids[k] == begin ? end - 1 : ids[k] - 1;
+    const std::size_t before = ids[k == 0 ? count - 1 : k - 1];
+    return before != previous;
+  };
+  std::size_t start = 0;
+  while (!startsChain(start))
+  {
+    ++start;
+  }
+  std::size_t loopAt = 0;
+  int loopSide = 0;
+  for (std::size_t step = 0; step < count;)
+  {
+    // One chain of consecutive candidates, then the path to the next chain.
+    std::size_t k = (start + step) % count;
+    std::size_t v = ids[k];
+    local.push_back(this->Points[v]);
+    ++step;
+    while (step < count && !startsChain((start + step) % count))
+    {
+      v = ids[(start + step) % count];
+      local.push_back(this->Points[v]);
+      ++step;
+    }
+    const Point2& from = this->Points[this->NextVertex(v)];
+    const Point2& to = this->Points[ids[(start + step) % count]];
+    local.push_back(from);
+    const int fromSide = SideFacing(box, from);
+    const int toSide = SideFacing(box, to);
+    if (loopAt == 0)
+    {
+      loopAt = local.size();
+      loopSide = fromSide;
+    }
+    local.push_back(NearestInBox(box, from));
+    for (int side = fromSide; side != toSide; side = (side + 1) & 3)
+    {
+      local.push_back(Corner(box, side + 1));
+    }
+    local.push_back(NearestInBox(box, to));
+  }
+  const int turns = winding - RingWinding(local, centre);
+  if (turns == 0)
+  {
+    return;
+  }
+  const Point2 anchor = local[loopAt];
+  std::vector<Point2> loops;
+  for (int t = 0; t < std::abs(turns); ++t)
+  {
+    for (int c = 1; c <= 4; ++c)
+    {
+      loops.push_back(Corner(box, turns > 0 ? loopSide + c : loopSide + 1 - c));
+    }
+    loops.push_back(anchor);
+  }
+  local.insert(local.begin() + static_cast<std::ptrdiff_t>(loopAt + 1), loops.begin(), loops.end());
+}
+
+} // namespace tessera

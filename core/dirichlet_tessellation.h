@@ -1,0 +1,156 @@
+#pragma once
+// Green and Sibson's incremental Dirichlet tessellation (The Computer Journal 21(2), 1978), kept as
+// its dual, the Delaunay triangulation, in flat half-edge arrays.
+//
+// Objects and rings. The paper's objects are the accepted points and the effective window
+// constraints, each with an anticlockwise contiguity ring. Here the ring of a point is the
+// anticlockwise sequence of half-edges leaving it (see RingNext): it is derived from two int32
+// arrays, not stored as a list, so inserting a point "splices its neighbours' rings" simply by
+// rewriting the few triangles around it. Constraints are not stored at all: a constraint takes
+// part only as the reflection of a point (its virtual point), and the only place where that
+// matters is the clipping of each tile by the window, which tiles.h does when deriving results.
+// That is equivalent to the paper's construction because an accepted point's tile is the
+// unwindowed tile intersected with the (convex) window (section 1.2).
+//
+// Storage (Delaunator style). Half-edge e belongs to triangle e / 3; Origin()[e] is the vertex it
+// leaves, Twin()[e] the opposite half-edge. Triangles are anticlockwise. The convex hull is closed
+// by "ghost" triangles that have the vertex Ghost (-1) in place of a third point, so every
+// half-edge has a twin and every ring is a closed cycle. Per accepted point this costs 2
+// triangles * 3 half-edges * 2 int32 = 48 bytes, plus 16 bytes of coordinates.
+//
+// Insertion. The triangle containing the new point is found by a visibility walk from the last
+// triangle created (the paper's walk from the previous point); the point splits it (or the edge it
+// lies on) and Lawson flips with an explicit stack restore the empty-circle property. Every
+// decision uses the exact predicates, and an edge is flipped only when the circle test is strictly
+// positive, so where 4 or more points are exactly co-circular the stored diagonal is arbitrary:
+// derived results merge such triangles into one degenerate face and record neither diagonal as a
+// contiguity (section 2.2), which makes them identical for every insertion order.
+//
+// Degenerate input. Until three non-collinear points are accepted the structure is "collinear":
+// the accepted points are kept sorted along their line (CollinearPoints) and there are no
+// triangles.
+
+#include "geometry.h"
+#include "window.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace tessera
+{
+
+enum class PointStatus : std::uint8_t
+{
+  Accepted,      ///< a vertex of the tessellation
+  OutsideWindow, ///< rejected: not strictly inside the window
+  Duplicate,     ///< exact copy of an accepted point with a smaller id (DuplicateOf)
+  Removed,       ///< removed by Remove()
+};
+
+class DirichletTessellation
+{
+public:
+  static constexpr std::int32_t Ghost = -1; ///< the vertex "at infinity" of the ghost triangles
+  static constexpr std::int32_t Free = -2;  ///< Origin() of the half-edges of a recycled triangle
+
+  /// An empty tessellation in the window; add points with Insert().
+  explicit DirichletTessellation(Window window);
+  /// Batch construction: point ids are the indices into points; they are inserted in a BRIO +
+  /// Hilbert order (spatial_order.h). Throws InputError naming the first point with a NaN or
+  /// infinite coordinate (nothing is inserted then).
+  DirichletTessellation(Window window, std::vector<Point2> points);
+
+  /// Streaming: appends p with the next id and inserts it. Returns its id; its status tells
+  /// whether it was accepted. Throws InputError (naming that id) for a NaN/Inf coordinate.
+  std::int32_t Insert(const Point2& p);
+  /// Removes an accepted point (the result equals the tessellation built without it; if it had
+  /// exact duplicates, the smallest of them takes its place). A duplicate or rejected point is
+  /// only marked removed. Throws InputError for an unknown or already removed id.
+  void Remove(std::int32_t id);
+
+  const Window& GetWindow() const { return this->TheWindow; }
+  /// Every point ever given, by id (removed and rejected ones included).
+  const std::vector<Point2>& Points() const { return this->Coordinates; }
+  std::size_t PointCount() const { return this->Coordinates.size(); }
+  std::size_t AcceptedCount() const { return this->Accepted; }
+
+  /// O(number of rejected/duplicate/removed points) for those, O(1) expected otherwise.
+  PointStatus Status(std::int32_t id) const;
+  /// For a Duplicate, the accepted id it copies; -1 otherwise.
+  std::int32_t DuplicateOf(std::int32_t id) const;
+  /// Rejected (outside the window) ids, ascending.
+  std::vector<std::int32_t> RejectedIds() const;
+  /// (duplicate id, accepted id it copies) pairs, ascending by duplicate id.
+  std::vector<std::pair<std::int32_t, std::int32_t>> Duplicates() const;
+  /// Removed ids, ascending.
+  std::vector<std::int32_t> RemovedIds() const;
+
+  /// True once three accepted points are not collinear; then the arrays below are the
+  /// triangulation. Otherwise CollinearPoints() lists the accepted points in order along their
+  /// line (lexicographic (x, y) order).
+  bool IsTwoDimensional() const { return !this->Origins.empty(); }
+  const std::vector<std::int32_t>& CollinearPoints() const { return this->Collinear; }
+
+  const std::vector<std::int32_t>& Origin() const { return this->Origins; }
+  const std::vector<std::int32_t>& Twin() const { return this->Twins; }
+  static std::int32_t Next(std::int32_t e) { return e % 3 == 2 ? e - 2 : e + 1; }
+  static std::int32_t Prev(std::int32_t e) { return e % 3 == 0 ? e + 2 : e - 1; }
+  /// The half-edge after e anticlockwise around Origin()[e] (one step along its ring).
+  std::int32_t RingNext(std::int32_t e) const { return this->Twins[Prev(e)]; }
+  bool IsGhostTriangle(std::int32_t t) const;
+  bool IsFreeTriangle(std::int32_t t) const { return this->Origins[3 * t] == Free; }
+
+  /// Bytes held by the structure (capacities of all arrays, coordinates included).
+  std::size_t StructureBytes() const;
+
+private:
+  enum class Location
+  {
+    Inside,
+    OnEdge,
+    OnVertex,
+    InGhost
+  };
+
+  void Validate(const Point2& p, std::size_t id) const;
+  void InsertAcceptedPoint(std::int32_t id);
+  void InsertCollinear(std::int32_t id);
+  void LeaveCollinearPhase(std::int32_t id);
+  void InsertIntoTriangulation(std::int32_t id);
+  Location Locate(const Point2& p, std::int32_t& edge) const;
+  void SplitTriangle(std::int32_t t, std::int32_t p);
+  void SplitEdge(std::int32_t e, std::int32_t p);
+  void RestoreDelaunay();
+  bool InConflict(std::int32_t e, std::int32_t p) const;
+  void Flip(std::int32_t t);
+  std::int32_t NewTriangle();
+  void SetTriangle(std::int32_t t,
+    std::int32_t a,
+    std::int32_t b,
+    std::int32_t c,
+    std::int32_t ta,
+    std::int32_t tb,
+    std::int32_t tc);
+  void RecordDuplicate(std::int32_t id, std::int32_t kept, std::int32_t keptEdge);
+  void Relabel(std::int32_t edge, std::int32_t newId);
+  std::int32_t FindVertexEdge(std::int32_t id) const;
+  bool RemoveInteriorVertex(std::int32_t edge);
+  void RebuildWithout(std::int32_t id);
+
+  Window TheWindow;
+  std::vector<Point2> Coordinates;
+  std::vector<std::int32_t> Origins;
+  std::vector<std::int32_t> Twins;
+  std::vector<std::int32_t> FreeTriangles;
+  std::vector<std::int32_t> Collinear;
+  std::vector<std::int32_t> Rejected;
+  std::vector<std::pair<std::int32_t, std::int32_t>> DuplicatePairs;
+  std::vector<std::int32_t> RemovedPoints;
+  std::vector<std::int32_t> FlipStack;
+  std::int32_t LastTriangle = 0;
+  std::size_t Accepted = 0;
+};
+
+} // namespace tessera

@@ -1,0 +1,864 @@
+// Exact geometric predicates.
+//
+// Sign conventions (y axis up):
+//   orient2d(a, b, c)         +1 when a, b, c turn anticlockwise (c left of the directed line a->b),
+//                             -1 clockwise, 0 collinear.
+//   incircle(a, b, c, d)      +1 when d is strictly inside the circle through a, b, c given
+//                             anticlockwise, -1 outside, 0 co-circular. Flips if a, b, c clockwise.
+//                             (Also 0 whenever a, b, c are collinear and d on their line.)
+//   compare_distance(p, a, b) sign of |p - a|^2 - |p - b|^2: -1 when a is strictly nearer to p.
+//   affine_sign(a, b, c, p)   sign of a * p.x + b * p.y + c.
+//   determinant3_sign(...)    sign of the 3x3 determinant of its three rows.
+//
+// Three tiers, each exact wherever it answers:
+//  1. Floating-point filter (predicates_inline.h): the determinant in doubles, accepted when its
+//     magnitude exceeds a bound proportional to the permanent (Shewchuk 1997, bounds "A") plus an
+//     absolute term covering gradual underflow. Overflow produces Inf/NaN, which never passes.
+//  2. Expansion arithmetic: each difference of coordinates is an exact two-term expansion
+//     (two_diff), and the determinant is evaluated exactly as a sum of nonoverlapping doubles
+//     (two_product, scale_expansion, merge-based expansion sum with zero elimination), its sign
+//     being the sign of the largest component. This is exact as long as no product underflows
+//     below 2^-1074 and nothing overflows. The inputs are first scaled by a power of two (which
+//     changes neither the exactness nor the sign: the predicates are homogeneous) to bring them
+//     into a window where that is guaranteed; see exponent_window(). Every input's bits must fit
+//     in about 518 (incircle) or 1037 (orient2d, compare_distance) binary orders of magnitude.
+//     (affine_sign uses this tier only when its inputs already fit, unscaled; determinant3_sign,
+//     evaluated a few times per window, goes from the filter straight to tier 3.)
+//  3. Big-integer arithmetic, for inputs whose magnitudes span more than that (say 1e150 next to
+//     1e-300): every double is an integer times a power of two, so after shifting to the smallest
+//     such power the determinant is an integer polynomial. Slow, and only ever reached for such
+//     inputs, so the predicates have no limits on finite inputs.
+//
+// Contraction (fusing a*b+c into an fma) would change the roundings the filter's bounds and the
+// Dekker product rely on, so it is switched off for this file.
+
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#elif defined(__GNUC__)
+#pragma GCC optimize("fp-contract=off")
+#endif
+
+#include "predicates.h"
+#include "predicates_inline.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace tessera
+{
+namespace
+{
+
+// ---------------------------------------------------------------------------------------------
+// Error-free transformations.
+
+inline void two_sum(double a, double b, double& x, double& y)
+{
+  x = a + b;
+  const double bv = x - a;
+  const double av = x - bv;
+  y = (a - av) + (b - bv);
+}
+
+inline void fast_two_sum(double a, double b, double& x, double& y) // requires |a| >= |b| or a == 0
+{
+  x = a + b;
+  y = b - (x - a);
+}
+
+inline void two_diff(double a, double b, double& x, double& y)
+{
+  x = a - b;
+  const double bv = a - x;
+  const double av = x + bv;
+  y = (a - av) + (bv - b);
+}
+
+#if defined(__FMA__) || defined(__ARM_FEATURE_FMA) || defined(__FP_FAST_FMA) || defined(FP_FAST_FMA)
+inline void two_product(double a, double b, double& x, double& y)
+{
+  x = a * b;
+  y = std::fma(a, b, -x);
+}
+#else
+// Veltkamp's split: a == hi + lo with both halves of at most 26 significant bits.
+inline void split(double a, double& hi, double& lo)
+{
+  const double c = 134217729.0 * a; // 2^27 + 1
+  const double big = c - a;
+  hi = c - big;
+  lo = a - hi;
+}
+
+// Dekker's product: x + y == a * b exactly (without hardware fma, where std::fma is emulated).
+inline void two_product(double a, double b, double& x, double& y)
+{
+  x = a * b;
+  double ahi, alo, bhi, blo;
+  split(a, ahi, alo);
+  split(b, bhi, blo);
+  const double err1 = x - ahi * bhi;
+  const double err2 = err1 - alo * bhi;
+  const double err3 = err2 - ahi * blo;
+  y = alo * blo - err3;
+}
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Expansions: arrays of nonoverlapping doubles in increasing order of magnitude, no zero
+// components; length 0 is the number 0. The value is the exact sum of the components, and its
+// sign is the sign of the last (largest) component.
+
+inline int expansion_sign(const double* e, int n)
+{
+  return n == 0 ? 0 : (e[n - 1] > 0.0 ? 1 : -1);
+}
+
+// a - b as an expansion of length <= 2.
+inline int diff_expansion(double a, double b, double* h)
+{
+  double x, y;
+  two_diff(a, b, x, y);
+  int n = 0;
+  if (y != 0.0)
+  {
+    h[n++] = y;
+  }
+  if (x != 0.0)
+  {
+    h[n++] = x;
+  }
+  return n;
+}
+
+// h = e + f (h has room for elen + flen, and must not alias e or f). Shewchuk's fast expansion
+// sum: merge the components by magnitude, then carry a running approximation Q through them with
+// two_sum, emitting each roundoff. Correct for strongly nonoverlapping inputs with
+// round-to-nearest-even, which all expansions built here are.
+int expansion_sum(const double* e, int elen, const double* f, int flen, double* h)
+{
+  if (elen == 0)
+  {
+    std::copy(f, f + flen, h);
+    return flen;
+  }
+  if (flen == 0)
+  {
+    std::copy(e, e + elen, h);
+    return elen;
+  }
+  int ei = 0;
+  int fi = 0;
+  auto next = [&]() -> double {
+    if (fi >= flen || (ei < elen && std::fabs(e[ei]) < std::fabs(f[fi])))
+    {
+      return e[ei++];
+    }
+    return f[fi++];
+  };
+  double q = next();
+  int n = 0;
+  const int total = elen + flen;
+  for (int k = 1; k < total; ++k)
+  {
+    const double g = next();
+    double qnew, hh;
+    two_sum(q, g, qnew, hh);
+    q = qnew;
+    if (hh != 0.0)
+    {
+      h[n++] = hh;
+    }
+  }
+  if (q != 0.0)
+  {
+    h[n++] = q;
+  }
+  return n;
+}
+
+// h = b * e (h has room for 2 * elen).
+int scale_expansion(const double* e, int elen, double b, double* h)
+{
+  if (elen == 0 || b == 0.0)
+  {
+    return 0;
+  }
+  int n = 0;
+  double q, hh;
+  two_product(e[0], b, q, hh);
+  if (hh != 0.0)
+  {
+    h[n++] = hh;
+  }
+  for (int i = 1; i < elen; ++i)
+  {
+    double p1, p0, sum;
+    two_product(e[i], b, p1, p0);
+    two_sum(q, p0, sum, hh);
+    if (hh != 0.0)
+    {
+      h[n++] = hh;
+    }
+    fast_two_sum(p1, sum, q, hh);
+    if (hh != 0.0)
+    {
+      h[n++] = hh;
+    }
+  }
+  if (q != 0.0)
+  {
+    h[n++] = q;
+  }
+  return n;
+}
+
+constexpr int kMaxProduct = 512; // 2 * 16 * 16: the largest product formed below
+
+// h = e * f (h has room for 2 * elen * flen <= kMaxProduct).
+int expansion_product(const double* e, int elen, const double* f, int flen, double* h)
+{
+  if (elen < flen)
+  {
+    std::swap(e, f);
+    std::swap(elen, flen);
+  }
+  // Scale the longer expansion by each component of the shorter one and accumulate, ping-ponging
+  // between h and a local buffer so that the result ends in h.
+  double term[2 * 16 * 2];
+  double other[kMaxProduct];
+  double* acc = (flen % 2 == 1) ? h : other;
+  double* spare = (flen % 2 == 1) ? other : h;
+  int n = 0;
+  for (int j = 0; j < flen; ++j)
+  {
+    const int tn = scale_expansion(e, elen, f[j], term);
+    if (j == 0)
+    {
+      std::copy(term, term + tn, acc);
+      n = tn;
+    }
+    else
+    {
+      n = expansion_sum(acc, n, term, tn, spare);
+      std::swap(acc, spare);
+    }
+  }
+  // After flen steps (the first a copy, each later one a swap) acc is h again.
+  return n;
+}
+
+inline void negate(double* e, int n)
+{
+  for (int i = 0; i < n; ++i)
+  {
+    e[i] = -e[i];
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Exponent windows and scaling.
+
+// The binary exponents of the highest and lowest set bits of a finite nonzero double.
+inline void bit_span(double x, int& high, int& low)
+{
+  std::uint64_t bits;
+  std::memcpy(&bits, &x, sizeof bits);
+  const int biased = static_cast<int>((bits >> 52) & 0x7ff);
+  std::uint64_t mantissa = bits & ((std::uint64_t(1) << 52) - 1);
+  int exponent; // of the mantissa's last bit
+  if (biased == 0)
+  {
+    exponent = -1074; // subnormal
+  }
+  else
+  {
+    mantissa |= std::uint64_t(1) << 52;
+    exponent = biased - 1075;
+  }
+  // mantissa != 0 because x != 0.
+#if defined(__GNUC__)
+  const int top = 63 - __builtin_clzll(mantissa);
+  const int bottom = __builtin_ctzll(mantissa);
+#else
+  int top = 63;
+  while (!((mantissa >> top) & 1))
+  {
+    --top;
+  }
+  int bottom = 0;
+  while (!((mantissa >> bottom) & 1))
+  {
+    ++bottom;
+  }
+#endif
+  high = exponent + top;
+  low = exponent + bottom;
+}
+
+struct BitRange
+{
+  int high = INT_MIN;
+  int low = INT_MAX;
+  bool finite = true;
+
+  void add(double x)
+  {
+    if (!std::isfinite(x))
+    {
+      this->finite = false;
+      return;
+    }
+    if (x == 0.0)
+    {
+      return;
+    }
+    int h, l;
+    bit_span(x, h, l);
+    this->high = std::max(this->high, h);
+    this->low = std::min(this->low, l);
+  }
+  bool allZero() const { return this->high == INT_MIN; }
+};
+
+// Finds a power-of-two scale 2^k that brings every set bit of the inputs inside [2^lowMin,
+// 2^highMax], preferring k == 0. Returns false when the inputs span too many binary orders.
+bool exponent_window(const BitRange& range, int highMax, int lowMin, int& k)
+{
+  const int kLow = lowMin - range.low;    // k must be >= this
+  const int kHigh = highMax - range.high; // and <= this
+  if (kLow > kHigh)
+  {
+    return false;
+  }
+  k = std::clamp(0, kLow, kHigh);
+  return true;
+}
+
+// Bounds for the expansion tier. A difference of two inputs is below 2^(high+2); degree-2
+// determinants (orient2d, compare_distance) then stay below 2^(2 high + 8) and degree-4 ones
+// (incircle, up to 1536 terms) below 2^(4 high + 19), both under 2^1023. The smallest bit of a
+// degree-d product is at least 2^(d low), which must not fall below 2^-1074 (the subnormal grid),
+// and every number fed to split() is then normal.
+constexpr int kDegree2HighMax = 500;
+constexpr int kDegree2LowMin = -537;
+constexpr int kDegree4HighMax = 250;
+constexpr int kDegree4LowMin = -268;
+
+inline Point2 scaled(const Point2& p, int k)
+{
+  return k == 0 ? p : Point2{ std::ldexp(p.x, k), std::ldexp(p.y, k) };
+}
+
+// ---------------------------------------------------------------------------------------------
+// Big integers (sign and magnitude, 32-bit limbs, least significant first) for the last tier.
+
+class BigInt
+{
+public:
+  BigInt() = default;
+
+  /// The integer x / 2^base, where base is at most the exponent of x's lowest set bit.
+  static BigInt FromDouble(double x, int base)
+  {
+    BigInt r;
+    if (x == 0.0)
+    {
+      return r;
+    }
+    int high, low;
+    bit_span(x, high, low);
+    // |x| = m * 2^low with m odd, m < 2^53.
+    const std::uint64_t m =
+      static_cast<std::uint64_t>(std::ldexp(std::fabs(x), -low)); // exact: m fits in 53 bits
+    const int shift = low - base;
+    const int limbShift = shift / 32;
+    const int bitShift = shift % 32;
+    r.Magnitude.assign(static_cast<std::size_t>(limbShift), 0u);
+    // m << bitShift spans at most 53 + 31 bits: three limbs.
+    const std::uint64_t low64 = (m & 0xffffffffu) << bitShift;      // below 2^63
+    const std::uint64_t high64 = (m >> 32) << bitShift;             // below 2^52
+    const std::uint64_t middle = (low64 >> 32) + (high64 & 0xffffffffu);
+    r.Magnitude.push_back(static_cast<std::uint32_t>(low64));
+    r.Magnitude.push_back(static_cast<std::uint32_t>(middle));
+    r.Magnitude.push_back(static_cast<std::uint32_t>((high64 >> 32) + (middle >> 32)));
+    r.Trim();
+    r.Negative = x < 0.0;
+    return r;
+  }
+
+  int Sign() const { return this->Magnitude.empty() ? 0 : (this->Negative ? -1 : 1); }
+
+  friend BigInt operator+(const BigInt& a, const BigInt& b) { return Add(a, b, b.Negative); }
+  friend BigInt operator-(const BigInt& a, const BigInt& b) { return Add(a, b, !b.Negative); }
+  friend BigInt operator*(const BigInt& a, const BigInt& b)
+  {
+    BigInt r;
+    if (a.Magnitude.empty() || b.Magnitude.empty())
+    {
+      return r;
+    }
+    r.Magnitude.assign(a.Magnitude.size() + b.Magnitude.size(), 0u);
+    for (std::size_t i = 0; i < a.Magnitude.size(); ++i)
+    {
+      std::uint64_t carry = 0;
+      for (std::size_t j = 0; j < b.Magnitude.size(); ++j)
+      {
+        const std::uint64_t t = static_cast<std::uint64_t>(a.Magnitude[i]) * b.Magnitude[j] +
+          r.Magnitude[i + j] + carry;
+        r.Magnitude[i + j] = static_cast<std::uint32_t>(t);
+        carry = t >> 32;
+      }
+      r.Magnitude[i + b.Magnitude.size()] = static_cast<std::uint32_t>(carry);
+    }
+    r.Trim();
+    r.Negative = a.Negative != b.Negative;
+    return r;
+  }
+
+private:
+  void Trim()
+  {
+    while (!this->Magnitude.empty() && this->Magnitude.back() == 0u)
+    {
+      this->Magnitude.pop_back();
+    }
+    if (this->Magnitude.empty())
+    {
+      this->Negative = false;
+    }
+  }
+
+  static int CompareMagnitude(const BigInt& a, const BigInt& b)
+  {
+    if (a.Magnitude.size() != b.Magnitude.size())
+    {
+      return a.Magnitude.size() < b.Magnitude.size() ? -1 : 1;
+    }
+    for (std::size_t i = a.Magnitude.size(); i-- > 0;)
+    {
+      if (a.Magnitude[i] != b.Magnitude[i])
+      {
+        return a.Magnitude[i] < b.Magnitude[i] ? -1 : 1;
+      }
+    }
+    return 0;
+  }
+
+  // a + (bNegative ? -|b| : |b|)
+  static BigInt Add(const BigInt& a, const BigInt& b, bool bNegative)
+  {
+    BigInt r;
+    if (a.Negative == bNegative)
+    {
+      const std::size_t n = std::max(a.Magnitude.size(), b.Magnitude.size());
+      r.Magnitude.resize(n + 1);
+      std::uint64_t carry = 0;
+      for (std::size_t i = 0; i < n; ++i)
+      {
+        const std::uint64_t t = carry + (i < a.Magnitude.size() ? a.Magnitude[i] : 0u) +
+          (i < b.Magnitude.size() ? b.Magnitude[i] : 0u);
+        r.Magnitude[i] = static_cast<std::uint32_t>(t);
+        carry = t >> 32;
+      }
+      r.Magnitude[n] = static_cast<std::uint32_t>(carry);
+      r.Negative = a.Negative;
+      r.Trim();
+      return r;
+    }
+    const int cmp = CompareMagnitude(a, b);
+    if (cmp == 0)
+    {
+      return r;
+    }
+    const BigInt& big = cmp > 0 ? a : b;
+    const BigInt& small = cmp > 0 ? b : a;
+    r.Magnitude.resize(big.Magnitude.size());
+    std::int64_t borrow = 0;
+    for (std::size_t i = 0; i < big.Magnitude.size(); ++i)
+    {
+      std::int64_t t = static_cast<std::int64_t>(big.Magnitude[i]) - borrow -
+        (i < small.Magnitude.size() ? static_cast<std::int64_t>(small.Magnitude[i]) : 0);
+      borrow = t < 0 ? 1 : 0;
+      if (t < 0)
+      {
+        t += std::int64_t(1) << 32;
+      }
+      r.Magnitude[i] = static_cast<std::uint32_t>(t);
+    }
+    r.Negative = cmp > 0 ? a.Negative : bNegative;
+    r.Trim();
+    return r;
+  }
+
+  bool Negative = false;
+  std::vector<std::uint32_t> Magnitude;
+};
+
+// ---------------------------------------------------------------------------------------------
+// The determinants in the expansion tier (inputs already scaled into the exponent window).
+
+int orient2d_expansion(const Point2& a, const Point2& b, const Point2& c)
+{
+  double acx[2], acy[2], bcx[2], bcy[2];
+  const int acxn = diff_expansion(a.x, c.x, acx);
+  const int acyn = diff_expansion(a.y, c.y, acy);
+  const int bcxn = diff_expansion(b.x, c.x, bcx);
+  const int bcyn = diff_expansion(b.y, c.y, bcy);
+  double left[8], right[8], det[16];
+  const int ln = expansion_product(acx, acxn, bcy, bcyn, left);
+  const int rn = expansion_product(acy, acyn, bcx, bcxn, right);
+  negate(right, rn);
+  const int n = expansion_sum(left, ln, right, rn, det);
+  return expansion_sign(det, n);
+}
+
+// (u * v - w * z) for expansions of length <= 2: length <= 16.
+int cross_expansion(const double* u, int un, const double* v, int vn, const double* w, int wn,
+  const double* z, int zn, double* h)
+{
+  double p[8], q[8];
+  const int pn = expansion_product(u, un, v, vn, p);
+  const int qn = expansion_product(w, wn, z, zn, q);
+  negate(q, qn);
+  return expansion_sum(p, pn, q, qn, h);
+}
+
+// u^2 + v^2 for expansions of length <= 2: length <= 16.
+int lift_expansion(const double* u, int un, const double* v, int vn, double* h)
+{
+  double p[8], q[8];
+  const int pn = expansion_product(u, un, u, un, p);
+  const int qn = expansion_product(v, vn, v, vn, q);
+  return expansion_sum(p, pn, q, qn, h);
+}
+
+int incircle_expansion(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
+{
+  double adx[2], ady[2], bdx[2], bdy[2], cdx[2], cdy[2];
+  const int adxn = diff_expansion(a.x, d.x, adx);
+  const int adyn = diff_expansion(a.y, d.y, ady);
+  const int bdxn = diff_expansion(b.x, d.x, bdx);
+  const int bdyn = diff_expansion(b.y, d.y, bdy);
+  const int cdxn = diff_expansion(c.x, d.x, cdx);
+  const int cdyn = diff_expansion(c.y, d.y, cdy);
+
+  double minor[16], lift[16];
+  double aterm[kMaxProduct], bterm[kMaxProduct], cterm[kMaxProduct];
+  int mn = cross_expansion(bdx, bdxn, cdy, cdyn, cdx, cdxn, bdy, bdyn, minor);
+  int ln = lift_expansion(adx, adxn, ady, adyn, lift);
+  const int an = expansion_product(minor, mn, lift, ln, aterm);
+  mn = cross_expansion(cdx, cdxn, ady, adyn, adx, adxn, cdy, cdyn, minor);
+  ln = lift_expansion(bdx, bdxn, bdy, bdyn, lift);
+  const int bn = expansion_product(minor, mn, lift, ln, bterm);
+  mn = cross_expansion(adx, adxn, bdy, bdyn, bdx, bdxn, ady, adyn, minor);
+  ln = lift_expansion(cdx, cdxn, cdy, cdyn, lift);
+  const int cn = expansion_product(minor, mn, lift, ln, cterm);
+
+  double ab[2 * kMaxProduct], det[3 * kMaxProduct];
+  const int abn = expansion_sum(aterm, an, bterm, bn, ab);
+  const int n = expansion_sum(ab, abn, cterm, cn, det);
+  return expansion_sign(det, n);
+}
+
+int compare_distance_expansion(const Point2& p, const Point2& a, const Point2& b)
+{
+  double dax[2], day[2], dbx[2], dby[2];
+  const int daxn = diff_expansion(a.x, p.x, dax);
+  const int dayn = diff_expansion(a.y, p.y, day);
+  const int dbxn = diff_expansion(b.x, p.x, dbx);
+  const int dbyn = diff_expansion(b.y, p.y, dby);
+  double la[16], lb[16], det[32];
+  const int lan = lift_expansion(dax, daxn, day, dayn, la);
+  const int lbn = lift_expansion(dbx, dbxn, dby, dbyn, lb);
+  negate(lb, lbn);
+  const int n = expansion_sum(la, lan, lb, lbn, det);
+  return expansion_sign(det, n);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The same determinants over the integers.
+
+struct BigPoint
+{
+  BigInt x;
+  BigInt y;
+};
+
+BigPoint to_big(const Point2& p, int base)
+{
+  return BigPoint{ BigInt::FromDouble(p.x, base), BigInt::FromDouble(p.y, base) };
+}
+
+int orient2d_big(const Point2& a0, const Point2& b0, const Point2& c0, int base)
+{
+  const BigPoint a = to_big(a0, base), b = to_big(b0, base), c = to_big(c0, base);
+  const BigInt det = (a.x - c.x) * (b.y - c.y) - (a.y - c.y) * (b.x - c.x);
+  return det.Sign();
+}
+
+int incircle_big(const Point2& a0, const Point2& b0, const Point2& c0, const Point2& d0, int base)
+{
+  const BigPoint a = to_big(a0, base), b = to_big(b0, base), c = to_big(c0, base),
+                 d = to_big(d0, base);
+  const BigInt adx = a.x - d.x, ady = a.y - d.y;
+  const BigInt bdx = b.x - d.x, bdy = b.y - d.y;
+  const BigInt cdx = c.x - d.x, cdy = c.y - d.y;
+  const BigInt det = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
+    (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+    (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+  return det.Sign();
+}
+
+int compare_distance_big(const Point2& p0, const Point2& a0, const Point2& b0, int base)
+{
+  const BigPoint p = to_big(p0, base), a = to_big(a0, base), b = to_big(b0, base);
+  const BigInt dax = a.x - p.x, day = a.y - p.y, dbx = b.x - p.x, dby = b.y - p.y;
+  const BigInt det = (dax * dax + day * day) - (dbx * dbx + dby * dby);
+  return det.Sign();
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Tiers 2 and 3.
+
+namespace detail
+{
+
+int orient2d_exact(const Point2& a, const Point2& b, const Point2& c)
+{
+  BitRange range;
+  for (const Point2* p : { &a, &b, &c })
+  {
+    range.add(p->x);
+    range.add(p->y);
+  }
+  if (!range.finite || range.allZero())
+  {
+    return 0;
+  }
+  int k = 0;
+  if (exponent_window(range, kDegree2HighMax, kDegree2LowMin, k))
+  {
+    return orient2d_expansion(scaled(a, k), scaled(b, k), scaled(c, k));
+  }
+  return orient2d_big(a, b, c, range.low);
+}
+
+int incircle_exact(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
+{
+  BitRange range;
+  for (const Point2* p : { &a, &b, &c, &d })
+  {
+    range.add(p->x);
+    range.add(p->y);
+  }
+  if (!range.finite || range.allZero())
+  {
+    return 0;
+  }
+  int k = 0;
+  if (exponent_window(range, kDegree4HighMax, kDegree4LowMin, k))
+  {
+    return incircle_expansion(scaled(a, k), scaled(b, k), scaled(c, k), scaled(d, k));
+  }
+  return incircle_big(a, b, c, d, range.low);
+}
+
+int compare_distance_exact(const Point2& p, const Point2& a, const Point2& b)
+{
+  BitRange range;
+  for (const Point2* q : { &p, &a, &b })
+  {
+    range.add(q->x);
+    range.add(q->y);
+  }
+  if (!range.finite || range.allZero())
+  {
+    return 0;
+  }
+  int k = 0;
+  if (exponent_window(range, kDegree2HighMax, kDegree2LowMin, k))
+  {
+    return compare_distance_expansion(scaled(p, k), scaled(a, k), scaled(b, k));
+  }
+  return compare_distance_big(p, a, b, range.low);
+}
+
+} // namespace detail
+
+// ---------------------------------------------------------------------------------------------
+// Public entry points: the filter (compiled here without contraction), then the exact tiers.
+
+int orient2d(const Point2& a, const Point2& b, const Point2& c)
+{
+  return detail::orient2d_filter(a, b, c);
+}
+
+int incircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
+{
+  return detail::incircle_filter(a, b, c, d);
+}
+
+int compare_distance(const Point2& p, const Point2& a, const Point2& b)
+{
+  return detail::compare_distance_filter(p, a, b);
+}
+
+int affine_sign(double a, double b, double c, const Point2& p)
+{
+  // Filter: the value's rounding error is below 2 eps (|a x| + |b y|) (1 + eps); 4 eps is safe.
+  const double ax = a * p.x;
+  const double by = b * p.y;
+  const double value = (ax + by) + c;
+  const double errbound =
+    4.0 * detail::kEpsilon * ((std::fabs(ax) + std::fabs(by)) + std::fabs(c)) +
+    detail::kUnderflowTerm;
+  if (value > errbound)
+  {
+    return 1;
+  }
+  if (-value > errbound)
+  {
+    return -1;
+  }
+
+  const double factors[4] = { a, p.x, b, p.y };
+  bool finite = std::isfinite(c);
+  BitRange factorRange;
+  for (double f : factors)
+  {
+    factorRange.add(f);
+    finite = finite && std::isfinite(f);
+  }
+  if (!finite)
+  {
+    return 0;
+  }
+  BitRange cRange;
+  cRange.add(c);
+  // Expansion tier without scaling (the coefficients and the point scale independently): every
+  // nonzero factor within [2^-537, 2^500] keeps the products exact and normal enough for split(),
+  // and |c| < 2^1001 keeps the sum finite.
+  const bool factorsFit = factorRange.allZero() ||
+    (factorRange.high <= kDegree2HighMax && factorRange.low >= kDegree2LowMin);
+  if (factorsFit && (cRange.allZero() || cRange.high <= 1000))
+  {
+    double px[2], py[2], sum[4], total[5];
+    int pxn = 0, pyn = 0;
+    double hi, lo;
+    two_product(a, p.x, hi, lo);
+    if (lo != 0.0)
+    {
+      px[pxn++] = lo;
+    }
+    if (hi != 0.0)
+    {
+      px[pxn++] = hi;
+    }
+    two_product(b, p.y, hi, lo);
+    if (lo != 0.0)
+    {
+      py[pyn++] = lo;
+    }
+    if (hi != 0.0)
+    {
+      py[pyn++] = hi;
+    }
+    const int sn = expansion_sum(px, pxn, py, pyn, sum);
+    const int cn = c != 0.0 ? 1 : 0;
+    const int n = expansion_sum(sum, sn, &c, cn, total);
+    return expansion_sign(total, n);
+  }
+
+  // Integers: every term is an integer times 2^base, base the smallest exponent in play.
+  int base = INT_MAX;
+  int lowA = 0, lowX = 0, lowB = 0, lowY = 0, lowC = 0, high = 0;
+  if (a != 0.0 && p.x != 0.0)
+  {
+    bit_span(a, high, lowA);
+    bit_span(p.x, high, lowX);
+    base = std::min(base, lowA + lowX);
+  }
+  if (b != 0.0 && p.y != 0.0)
+  {
+    bit_span(b, high, lowB);
+    bit_span(p.y, high, lowY);
+    base = std::min(base, lowB + lowY);
+  }
+  if (c != 0.0)
+  {
+    bit_span(c, high, lowC);
+    base = std::min(base, lowC);
+  }
+  if (base == INT_MAX)
+  {
+    return 0;
+  }
+  BigInt total;
+  if (a != 0.0 && p.x != 0.0)
+  {
+    // a * x = (a / 2^lowA) (x / 2^lowX) 2^(lowA + lowX); shift the first factor to the base.
+    total = total + BigInt::FromDouble(a, base - lowX) * BigInt::FromDouble(p.x, lowX);
+  }
+  if (b != 0.0 && p.y != 0.0)
+  {
+    total = total + BigInt::FromDouble(b, base - lowY) * BigInt::FromDouble(p.y, lowY);
+  }
+  if (c != 0.0)
+  {
+    total = total + BigInt::FromDouble(c, base);
+  }
+  return total.Sign();
+}
+
+int determinant3_sign(
+  double a1, double b1, double c1, double a2, double b2, double c2, double a3, double b3, double c3)
+{
+  // Filter. Each minor's error is below 2 eps (1 + eps) of its permanent, each term's below 3 eps
+  // of its permanent, the first sum adds eps of its operands: below 4 eps of the whole permanent
+  // (the last rounding keeps the sign). 8 eps leaves room for the rounding of the bound itself.
+  const double b2c3 = b2 * c3, b3c2 = b3 * c2;
+  const double a2c3 = a2 * c3, a3c2 = a3 * c2;
+  const double a2b3 = a2 * b3, a3b2 = a3 * b2;
+  const double det = (a1 * (b2c3 - b3c2) - b1 * (a2c3 - a3c2)) + c1 * (a2b3 - a3b2);
+  const double permanent = std::fabs(a1) * (std::fabs(b2c3) + std::fabs(b3c2)) +
+    std::fabs(b1) * (std::fabs(a2c3) + std::fabs(a3c2)) +
+    std::fabs(c1) * (std::fabs(a2b3) + std::fabs(a3b2));
+  const double errbound = 8.0 * detail::kEpsilon * permanent +
+    detail::kUnderflowTerm * (((std::fabs(a1) + std::fabs(b1)) + std::fabs(c1)) + 1.0);
+  if (det > errbound)
+  {
+    return 1;
+  }
+  if (-det > errbound)
+  {
+    return -1;
+  }
+
+  const double entries[9] = { a1, b1, c1, a2, b2, c2, a3, b3, c3 };
+  BitRange range;
+  for (double e : entries)
+  {
+    range.add(e);
+  }
+  if (!range.finite || range.allZero())
+  {
+    return 0;
+  }
+  BigInt m[9];
+  for (int i = 0; i < 9; ++i)
+  {
+    m[i] = BigInt::FromDouble(entries[i], range.low);
+  }
+  const BigInt value = m[0] * (m[4] * m[8] - m[7] * m[5]) - m[1] * (m[3] * m[8] - m[6] * m[5]) +
+    m[2] * (m[3] * m[7] - m[6] * m[4]);
+  return value.Sign();
+}
+
+} // namespace tessera

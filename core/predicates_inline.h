@@ -1,0 +1,156 @@
+#pragma once
+// Inline fast paths of the exact predicates of predicates.h, for hot loops (an engine that calls
+// incircle tens of millions of times). Each one evaluates the determinant in floating point,
+// compares it with an error bound proportional to its permanent (Shewchuk's "A" bounds, plus an
+// absolute term that covers underflow), and only when that cannot decide calls the exact
+// evaluation in predicates.cpp. The results are identical to orient2d / incircle /
+// compare_distance: same sign conventions, exact for every finite double input.
+//
+// Floating-point contraction (a*b+c fused into one fma) would change the rounding the error bounds
+// were derived for. When the translation unit is compiled for a target with fma instructions the
+// compiler may contract, so there these functions call the out-of-line versions instead, which are
+// compiled with contraction switched off.
+
+#include "geometry.h"
+
+#include <cmath>
+
+namespace tessera
+{
+
+int orient2d(const Point2& a, const Point2& b, const Point2& c);
+int incircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d);
+int compare_distance(const Point2& p, const Point2& a, const Point2& b);
+
+namespace detail
+{
+// Exact evaluations used once the floating-point filter has failed (predicates.cpp).
+int orient2d_exact(const Point2& a, const Point2& b, const Point2& c);
+int incircle_exact(const Point2& a, const Point2& b, const Point2& c, const Point2& d);
+int compare_distance_exact(const Point2& p, const Point2& a, const Point2& b);
+
+constexpr double kEpsilon = 0x1p-53; // half an ulp of 1: the unit roundoff of round-to-nearest
+// Shewchuk's first-stage bounds ("Adaptive precision floating-point arithmetic and fast robust
+// geometric predicates", 1997), relative to the permanent of the determinant.
+constexpr double kOrientBound = (3.0 + 16.0 * kEpsilon) * kEpsilon;
+constexpr double kIncircleBound = (10.0 + 96.0 * kEpsilon) * kEpsilon;
+// Squared distances: two squares of rounded differences (3 roundings each) and one sum per side.
+constexpr double kDistanceBound = (4.0 + 64.0 * kEpsilon) * kEpsilon;
+// Gradual underflow makes a product's error absolute (at most 2^-1075) rather than relative; this
+// term, far above the few such errors a determinant can collect, keeps the bounds valid there.
+constexpr double kUnderflowTerm = 0x1p-1020;
+
+inline int orient2d_filter(const Point2& a, const Point2& b, const Point2& c)
+{
+  const double detleft = (a.x - c.x) * (b.y - c.y);
+  const double detright = (a.y - c.y) * (b.x - c.x);
+  const double det = detleft - detright;
+  const double errbound =
+    kOrientBound * (std::fabs(detleft) + std::fabs(detright)) + kUnderflowTerm;
+  // NaN or infinity (overflow) anywhere makes both comparisons false: the exact path decides.
+  if (det > errbound)
+  {
+    return 1;
+  }
+  if (-det > errbound)
+  {
+    return -1;
+  }
+  return orient2d_exact(a, b, c);
+}
+
+inline int incircle_filter(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
+{
+  const double adx = a.x - d.x;
+  const double bdx = b.x - d.x;
+  const double cdx = c.x - d.x;
+  const double ady = a.y - d.y;
+  const double bdy = b.y - d.y;
+  const double cdy = c.y - d.y;
+
+  const double bdxcdy = bdx * cdy;
+  const double cdxbdy = cdx * bdy;
+  const double alift = adx * adx + ady * ady;
+
+  const double cdxady = cdx * ady;
+  const double adxcdy = adx * cdy;
+  const double blift = bdx * bdx + bdy * bdy;
+
+  const double adxbdy = adx * bdy;
+  const double bdxady = bdx * ady;
+  const double clift = cdx * cdx + cdy * cdy;
+
+  const double det =
+    alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
+    (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
+    (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
+  // An underflowed product is multiplied by a lift afterwards, so the absolute term scales with
+  // the lifts.
+  const double errbound =
+    kIncircleBound * permanent + kUnderflowTerm * ((alift + blift + clift) + 1.0);
+  if (det > errbound)
+  {
+    return 1;
+  }
+  if (-det > errbound)
+  {
+    return -1;
+  }
+  return incircle_exact(a, b, c, d);
+}
+
+inline int compare_distance_filter(const Point2& p, const Point2& a, const Point2& b)
+{
+  const double dax = a.x - p.x;
+  const double day = a.y - p.y;
+  const double dbx = b.x - p.x;
+  const double dby = b.y - p.y;
+  const double la = dax * dax + day * day;
+  const double lb = dbx * dbx + dby * dby;
+  const double det = la - lb;
+  const double errbound = kDistanceBound * (la + lb) + kUnderflowTerm;
+  if (det > errbound)
+  {
+    return 1;
+  }
+  if (-det > errbound)
+  {
+    return -1;
+  }
+  return compare_distance_exact(p, a, b);
+}
+} // namespace detail
+
+#if defined(__FMA__) || defined(__ARM_FEATURE_FMA) || defined(__FP_FAST_FMA) || defined(FP_FAST_FMA)
+inline int orient2d_fast(const Point2& a, const Point2& b, const Point2& c)
+{
+  return orient2d(a, b, c);
+}
+inline int incircle_fast(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
+{
+  return incircle(a, b, c, d);
+}
+inline int compare_distance_fast(const Point2& p, const Point2& a, const Point2& b)
+{
+  return compare_distance(p, a, b);
+}
+#else
+/// orient2d, with the floating-point filter inlined.
+inline int orient2d_fast(const Point2& a, const Point2& b, const Point2& c)
+{
+  return detail::orient2d_filter(a, b, c);
+}
+/// incircle, with the floating-point filter inlined.
+inline int incircle_fast(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
+{
+  return detail::incircle_filter(a, b, c, d);
+}
+/// compare_distance, with the floating-point filter inlined.
+inline int compare_distance_fast(const Point2& p, const Point2& a, const Point2& b)
+{
+  return detail::compare_distance_filter(p, a, b);
+}
+#endif
+
+} // namespace tessera

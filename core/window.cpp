@@ -1,0 +1,317 @@
+// The convex window as an intersection of open half-planes a*x + b*y + c < 0.
+//
+// Every combinatorial decision is exact (predicates.h): which constraints are parallel, which way
+// a boundary line crosses another, where along a line the crossings lie, and so which constraints
+// contribute an edge of positive length. Only the corners, the reflections and the area, which are
+// numbers rather than decisions, are computed in floating point.
+//
+// Constraint i's boundary line L_i is walked in the direction t_i = (-b_i, a_i), which keeps the
+// window on the left, i.e. runs anticlockwise around it. Along t_i the value of constraint j grows
+// at the rate cross(n_i, n_j) = a_i*b_j - a_j*b_i, so a non-parallel j is *entered* (becomes
+// satisfied) where L_j crosses L_i if that rate is negative and *left* if it is positive:
+//
+//            entry of j           exit of k
+//     L_i  ------+====================+------>  t_i
+//                 open edge of i, if the latest entry comes strictly before the earliest exit
+//
+// and whether the crossing P_ik satisfies j is sign(det(rows i, k, j)) * sign(cross(n_i, n_k)).
+
+#include "window.h"
+
+#include "errors.h"
+#include "predicates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace tessera
+{
+namespace
+{
+
+// sign(x1 * y2 - y1 * x2), exactly.
+int cross_sign(double x1, double y1, double x2, double y2)
+{
+  return orient2d(Point2{ x1, y1 }, Point2{ x2, y2 }, Point2{ 0.0, 0.0 });
+}
+
+int sign_of(double v)
+{
+  return (v > 0.0) - (v < 0.0);
+}
+
+// The sign of constraint j's value at the crossing of the lines of i and k (not parallel).
+int value_at_crossing(const HalfPlane& i, const HalfPlane& k, const HalfPlane& j)
+{
+  return determinant3_sign(i.a, i.b, i.c, k.a, k.b, k.c, j.a, j.b, j.c) *
+    cross_sign(i.a, i.b, k.a, k.b);
+}
+
+// For parallel normals n_j = lambda n_i (lambda != 0): the sign of constraint j's value on the
+// line of i. Negative: the line of i lies strictly inside j.
+int parallel_offset_sign(const HalfPlane& i, const HalfPlane& j)
+{
+  // On L_i, a_i x + b_i y = -c_i, so j's value is c_j - lambda c_i with lambda = a_j / a_i, i.e.
+  // (a_i c_j - a_j c_i) / a_i (or the same with b when a_i == 0).
+  if (i.a != 0.0)
+  {
+    return cross_sign(i.a, i.c, j.a, j.c) * sign_of(i.a);
+  }
+  return cross_sign(i.b, i.c, j.b, j.c) * sign_of(i.b);
+}
+
+// Whether parallel normals point the same way.
+bool same_direction(const HalfPlane& i, const HalfPlane& j)
+{
+  return i.a != 0.0 ? sign_of(i.a) == sign_of(j.a) : sign_of(i.b) == sign_of(j.b);
+}
+
+std::string describe(const HalfPlane& h)
+{
+  std::ostringstream s;
+  s.precision(17);
+  s << "(a = " << h.a << ", b = " << h.b << ", c = " << h.c << ")";
+  return s.str();
+}
+
+// a*b - c*d with one rounding error less than the naive formula (Kahan's algorithm).
+double difference_of_products(double a, double b, double c, double d)
+{
+  const double cd = c * d;
+  const double error = std::fma(-c, d, cd);
+  const double ab = std::fma(a, b, -cd);
+  return ab + error;
+}
+
+// The constraint scaled by a power of two so that max(|a|, |b|) lies in [1, 2): the same open
+// half-plane, with coefficients that cannot overflow in the products below.
+HalfPlane normalized(const HalfPlane& h)
+{
+  const int e = std::ilogb(std::max(std::fabs(h.a), std::fabs(h.b)));
+  return HalfPlane{ std::ldexp(h.a, -e), std::ldexp(h.b, -e), std::ldexp(h.c, -e) };
+}
+
+Point2 crossing(const HalfPlane& p, const HalfPlane& q)
+{
+  const HalfPlane u = normalized(p);
+  const HalfPlane v = normalized(q);
+  const double d = difference_of_products(u.a, v.b, v.a, u.b);
+  return Point2{ difference_of_products(u.b, v.c, v.b, u.c) / d,
+    difference_of_products(u.c, v.a, v.c, u.a) / d };
+}
+
+} // namespace
+
+Window::Window(const std::vector<HalfPlane>& constraints)
+{
+  const std::size_t n = constraints.size();
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const HalfPlane& h = constraints[i];
+    if (!std::isfinite(h.a) || !std::isfinite(h.b) || !std::isfinite(h.c))
+    {
+      throw InputError("window constraint " + std::to_string(i) + " has a " +
+        (std::isnan(h.a) || std::isnan(h.b) || std::isnan(h.c) ? "NaN" : "infinite") +
+        " coefficient " + describe(h));
+    }
+    if (h.a == 0.0 && h.b == 0.0)
+    {
+      throw InputError("window constraint " + std::to_string(i) +
+        " has a == b == 0: it is no half-plane " + describe(h));
+    }
+  }
+  if (n == 0)
+  {
+    throw InputError("window is unbounded: no constraints given");
+  }
+
+  std::vector<bool> effective(n, false);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const HalfPlane& hi = constraints[i];
+    bool dominated = false;
+    bool hasEntry = false, hasExit = false;
+    std::size_t entry = 0, exit = 0;
+    for (std::size_t j = 0; j < n && !dominated; ++j)
+    {
+      if (j == i)
+      {
+        continue;
+      }
+      const HalfPlane& hj = constraints[j];
+      const int rate = cross_sign(hi.a, hi.b, hj.a, hj.b);
+      if (rate == 0)
+      {
+        const int offset = parallel_offset_sign(hi, hj);
+        if (same_direction(hi, hj))
+        {
+          // j lies further in (its line is the tighter one), or it is the same half-plane and the
+          // first of the copies keeps the edge.
+          dominated = offset > 0 || (offset == 0 && j < i);
+        }
+        else if (offset >= 0)
+        {
+          throw InputError("window is empty: constraints " + std::to_string(i) + " " +
+            describe(hi) + " and " + std::to_string(j) + " " + describe(hj) +
+            " are parallel and leave no room between them");
+        }
+      }
+      else if (rate < 0)
+      {
+        // Entering j. Keep the latest entry: j is later if its crossing satisfies the current one.
+        if (!hasEntry || value_at_crossing(hi, hj, constraints[entry]) < 0)
+        {
+          entry = j;
+        }
+        hasEntry = true;
+      }
+      else
+      {
+        // Leaving j. Keep the earliest exit: j is earlier if its crossing satisfies the current.
+        if (!hasExit || value_at_crossing(hi, hj, constraints[exit]) < 0)
+        {
+          exit = j;
+        }
+        hasExit = true;
+      }
+    }
+    if (dominated)
+    {
+      continue;
+    }
+    if (!hasEntry || !hasExit)
+    {
+      // A ray (or the whole line) of L_i satisfies every other constraint strictly; points just
+      // inside it are in the window, whose closure then contains a ray.
+      throw InputError("window is unbounded: the boundary line of constraint " + std::to_string(i) +
+        " " + describe(hi) + " is not closed off by the other constraints" +
+        (hasEntry || hasExit ? " at one end" : " at either end"));
+    }
+    effective[i] = value_at_crossing(hi, constraints[entry], constraints[exit]) < 0;
+  }
+
+  std::vector<std::size_t> ids;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    (effective[i] ? ids : this->RedundantInputIds).push_back(i);
+  }
+  if (ids.size() < 3)
+  {
+    // A nonempty open intersection has a boundary of positive length on some constraint.
+    throw InputError("window is empty: the " + std::to_string(n) +
+      " constraints have no interior point in common");
+  }
+
+  // Anticlockwise order around a convex polygon is the angular order of the outward normals,
+  // starting from the first effective constraint given. No two effective normals are parallel
+  // and point the same way.
+  const HalfPlane& ref = constraints[ids.front()];
+  auto half = [&](const HalfPlane& h) {
+    const int c = cross_sign(ref.a, ref.b, h.a, h.b);
+    return (c > 0 || (c == 0 && same_direction(ref, h))) ? 0 : 1;
+  };
+  std::sort(ids.begin() + 1, ids.end(), [&](std::size_t p, std::size_t q) {
+    const HalfPlane& hp = constraints[p];
+    const HalfPlane& hq = constraints[q];
+    const int halfP = half(hp), halfQ = half(hq);
+    if (halfP != halfQ)
+    {
+      return halfP < halfQ;
+    }
+    return cross_sign(hp.a, hp.b, hq.a, hq.b) > 0;
+  });
+
+  this->EffectiveInputIds = ids;
+  for (std::size_t id : ids)
+  {
+    this->Effective.push_back(constraints[id]);
+  }
+  const std::size_t m = ids.size();
+  for (std::size_t k = 0; k < m; ++k)
+  {
+    this->Corners.push_back(crossing(this->Effective[(k + m - 1) % m], this->Effective[k]));
+  }
+}
+
+Window Window::Rectangle(double xmin, double xmax, double ymin, double ymax)
+{
+  const double bounds[4] = { xmin, xmax, ymin, ymax };
+  const char* names[4] = { "xmin", "xmax", "ymin", "ymax" };
+  for (int i = 0; i < 4; ++i)
+  {
+    if (!std::isfinite(bounds[i]))
+    {
+      std::ostringstream s;
+      s << "rectangle window: " << names[i] << " = " << bounds[i] << " is not finite";
+      throw InputError(s.str());
+    }
+  }
+  if (!(xmin < xmax) || !(ymin < ymax))
+  {
+    std::ostringstream s;
+    s.precision(17);
+    s << "rectangle window is empty: need xmin < xmax and ymin < ymax, got x in (" << xmin << ", "
+      << xmax << "), y in (" << ymin << ", " << ymax << ")";
+    throw InputError(s.str());
+  }
+  // Bottom, right, top, left: vertex 0 is the lower-left corner.
+  return Window({ HalfPlane{ 0.0, -1.0, ymin }, HalfPlane{ 1.0, 0.0, -xmax },
+    HalfPlane{ 0.0, 1.0, -ymax }, HalfPlane{ -1.0, 0.0, xmin } });
+}
+
+bool Window::Contains(const Point2& p) const
+{
+  for (const HalfPlane& h : this->Effective)
+  {
+    if (affine_sign(h.a, h.b, h.c, p) >= 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+Point2 Window::Reflect(const Point2& p, std::size_t k) const
+{
+  const HalfPlane h = normalized(this->Effective.at(k));
+  const double value = std::fma(h.a, p.x, std::fma(h.b, p.y, h.c));
+  const double scale = 2.0 * value / (h.a * h.a + h.b * h.b);
+  return Point2{ p.x - scale * h.a, p.y - scale * h.b };
+}
+
+double Window::Area() const
+{
+  // Shoelace relative to vertex 0, with Neumaier's compensated summation.
+  const Point2& o = this->Corners.front();
+  double sum = 0.0, compensation = 0.0;
+  for (std::size_t k = 1; k + 1 < this->Corners.size(); ++k)
+  {
+    const double ux = this->Corners[k].x - o.x, uy = this->Corners[k].y - o.y;
+    const double vx = this->Corners[k + 1].x - o.x, vy = this->Corners[k + 1].y - o.y;
+    const double term = difference_of_products(ux, vy, uy, vx);
+    const double t = sum + term;
+    compensation += std::fabs(sum) >= std::fabs(term) ? (sum - t) + term : (term - t) + sum;
+    sum = t;
+  }
+  return 0.5 * (sum + compensation);
+}
+
+bool Window::IsAxisAlignedRectangle() const
+{
+  if (this->Effective.size() != 4)
+  {
+    return false;
+  }
+  for (const HalfPlane& h : this->Effective)
+  {
+    if (h.a != 0.0 && h.b != 0.0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+} // namespace tessera

@@ -1,0 +1,818 @@
+// Catchment clipping, checked against independent computations: rectangle overlaps by hand, an
+// exact rational (GMP) Sutherland-Hodgman over whole rings with nesting found by a rational
+// even-odd test, exact rational catchment areas, and tilings whose pieces must add up.
+
+#include "clip.h"
+#include "errors.h"
+#include "polygon_validation.h"
+
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+using tessera::Catchment;
+using tessera::InputError;
+using tessera::Point2;
+
+namespace
+{
+
+// ---- Exact rational reference ------------------------------------------------------------------
+
+struct QPoint
+{
+  mpq_class x, y;
+};
+
+QPoint ToExact(const Point2& p)
+{
+  return { mpq_class(p.x), mpq_class(p.y) };
+}
+
+std::vector<QPoint> ToExact(const std::vector<Point2>& points)
+{
+  std::vector<QPoint> exact;
+  for (const Point2& p : points)
+  {
+    exact.push_back(ToExact(p));
+  }
+  return exact;
+}
+
+mpq_class Cross(const QPoint& a, const QPoint& b, const QPoint& c)
+{
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+mpq_class ExactArea(const std::vector<QPoint>& ring)
+{
+  mpq_class twice = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i)
+  {
+    const QPoint& a = ring[i];
+    const QPoint& b = ring[(i + 1) % ring.size()];
+    twice += a.x * b.y - b.x * a.y;
+  }
+  return twice / 2;
+}
+
+// Textbook Sutherland-Hodgman in exact arithmetic, inside = closed left side of each edge.
+std::vector<QPoint> ExactClip(std::vector<QPoint> subject, const std::vector<QPoint>& window)
+{
+  for (std::size_t e = 0; e < window.size() && !subject.empty(); ++e)
+  {
+    const QPoint& a = window[e];
+    const QPoint& b = window[(e + 1) % window.size()];
+    std::vector<QPoint> out;
+    for (std::size_t i = 0; i < subject.size(); ++i)
+    {
+      const QPoint& p = subject[(i + subject.size() - 1) % subject.size()];
+      const QPoint& q = subject[i];
+      const mpq_class dp = Cross(a, b, p);
+      const mpq_class dq = Cross(a, b, q);
+      const bool pIn = sgn(dp) >= 0;
+      const bool qIn = sgn(dq) >= 0;
+      if (pIn != qIn)
+      {
+        const mpq_class t = dp / (dp - dq);
+        out.push_back({ p.x + t * (q.x - p.x), p.y + t * (q.y - p.y) });
+      }
+      if (qIn)
+      {
+        out.push_back(q);
+      }
+    }
+    subject = std::move(out);
+  }
+  return subject;
+}
+
+// Even-odd membership by the crossing x of each straddling edge, in rationals.
+bool ExactInsideRing(const QPoint& p, const std::vector<QPoint>& ring)
+{
+  bool inside = false;
+  for (std::size_t i = 0; i < ring.size(); ++i)
+  {
+    const QPoint& a = ring[i];
+    const QPoint& b = ring[(i + 1) % ring.size()];
+    if ((a.y > p.y) != (b.y > p.y))
+    {
+      const mpq_class x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
+      if (p.x < x)
+      {
+        inside = !inside;
+      }
+    }
+  }
+  return inside;
+}
+
+struct Rings
+{
+  std::vector<std::size_t> Offsets{ 0 };
+  std::vector<Point2> Vertices;
+  void Add(const std::vector<Point2>& ring)
+  {
+    this->Vertices.insert(this->Vertices.end(), ring.begin(), ring.end());
+    this->Offsets.push_back(this->Vertices.size());
+  }
+  std::vector<Point2> Ring(std::size_t r) const
+  {
+    return { this->Vertices.begin() + static_cast<std::ptrdiff_t>(this->Offsets[r]),
+      this->Vertices.begin() + static_cast<std::ptrdiff_t>(this->Offsets[r + 1]) };
+  }
+  std::size_t Count() const { return this->Offsets.size() - 1; }
+};
+
+bool ExactInsideRegion(const QPoint& p, const Rings& rings)
+{
+  bool inside = false;
+  for (std::size_t r = 0; r < rings.Count(); ++r)
+  {
+    inside ^= ExactInsideRing(p, ToExact(rings.Ring(r)));
+  }
+  return inside;
+}
+
+// Area of (even-odd region of the rings) & tile: each ring made anticlockwise and clipped whole,
+// with the sign given by how many other rings enclose it.
+mpq_class ExactClippedArea(const Rings& rings, const std::vector<Point2>& tile)
+{
+  const std::vector<QPoint> window = ToExact(tile);
+  mpq_class total = 0;
+  for (std::size_t r = 0; r < rings.Count(); ++r)
+  {
+    std::vector<QPoint> ring = ToExact(rings.Ring(r));
+    if (sgn(ExactArea(ring)) < 0)
+    {
+      std::reverse(ring.begin(), ring.end());
+    }
+    int depth = 0;
+    for (std::size_t s = 0; s < rings.Count(); ++s)
+    {
+      depth += s != r && ExactInsideRing(ring[0], ToExact(rings.Ring(s)));
+    }
+    const mpq_class piece = ExactArea(ExactClip(ring, window));
+    total += depth % 2 == 0 ? piece : mpq_class(-piece);
+  }
+  return total;
+}
+
+mpq_class ExactRegionArea(const Rings& rings)
+{
+  mpq_class total = 0;
+  for (std::size_t r = 0; r < rings.Count(); ++r)
+  {
+    const std::vector<QPoint> ring = ToExact(rings.Ring(r));
+    int depth = 0;
+    for (std::size_t s = 0; s < rings.Count(); ++s)
+    {
+      depth += s != r && ExactInsideRing(ring[0], ToExact(rings.Ring(s)));
+    }
+    const mpq_class area = abs(ExactArea(ring));
+    total += depth % 2 == 0 ? area : mpq_class(-area);
+  }
+  return total;
+}
+
+// ---- Shapes ------------------------------------------------------------------------------------
+
+std::vector<Point2> Rectangle(double x0, double y0, double x1, double y1)
+{
+  return { { x0, y0 }, { x1, y0 }, { x1, y1 }, { x0, y1 } };
+}
+
+double Overlap1D(double a0, double a1, double b0, double b1)
+{
+  return std::max(0.0, std::min(a1, b1) - std::max(a0, b0));
+}
+
+// Star-shaped about a centre: vertices in angular order, radii in [rMin, rMax], coordinates
+// rounded to multiples of `step` (dyadic, so exact in binary).
+std::vector<Point2> Star(std::mt19937& random,
+  Point2 centre,
+  int count,
+  double rMin,
+  double rMax,
+  double step)
+{
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<double> angles;
+  for (int i = 0; i < count; ++i)
+  {
+    angles.push_back(2.0 * M_PI * (i + 0.1 + 0.8 * unit(random)) / count);
+  }
+  std::vector<Point2> star;
+  for (double angle : angles)
+  {
+    const double radius = rMin + (rMax - rMin) * unit(random);
+    star.push_back({ centre.x + std::round(radius * std::cos(angle) / step) * step,
+      centre.y + std::round(radius * std::sin(angle) / step) * step });
+  }
+  return star;
+}
+
+// Anticlockwise convex hull (monotone chain, exact turns), collinear points dropped.
+std::vector<Point2> ConvexHull(std::vector<Point2> points)
+{
+  std::sort(points.begin(),
+    points.end(),
+    [](const Point2& a, const Point2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  std::vector<Point2> hull(2 * points.size());
+  std::size_t k = 0;
+  const auto turnsLeft = [&](const Point2& a, const Point2& b, const Point2& c)
+  { return sgn(Cross(ToExact(a), ToExact(b), ToExact(c))) > 0; };
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    while (k >= 2 && !turnsLeft(hull[k - 2], hull[k - 1], points[i]))
+    {
+      --k;
+    }
+    hull[k++] = points[i];
+  }
+  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;)
+  {
+    while (k >= lower && !turnsLeft(hull[k - 2], hull[k - 1], points[i]))
+    {
+      --k;
+    }
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+std::vector<Point2> RandomConvex(std::mt19937& random,
+  double x0,
+  double x1,
+  double y0,
+  double y1,
+  int count,
+  double step)
+{
+  std::uniform_real_distribution<double> x(x0, x1);
+  std::uniform_real_distribution<double> y(y0, y1);
+  for (;;)
+  {
+    std::vector<Point2> points;
+    for (int i = 0; i < count; ++i)
+    {
+      points.push_back(
+        { std::round(x(random) / step) * step, std::round(y(random) / step) * step });
+    }
+    std::vector<Point2> hull = ConvexHull(points);
+    if (hull.size() >= 3)
+    {
+      return hull;
+    }
+  }
+}
+
+// An outer star, a hole in it, an island in the hole, and a second outer star beside it; rings
+// in a mixed order and orientation.
+Rings NestedStars(std::mt19937& random, double step, double offset)
+{
+  Rings rings;
+  const Point2 c{ offset, offset };
+  std::vector<Point2> island = Star(random, c, 9, 3.0, 8.0, step);
+  rings.Add(island);
+  std::vector<Point2> outer = Star(random, c, 40, 30.0, 50.0, step);
+  std::reverse(outer.begin(), outer.end());
+  rings.Add(outer);
+  rings.Add(Star(random, { offset + 120.0, offset + 10.0 }, 25, 10.0, 60.0, step));
+  std::vector<Point2> hole = Star(random, c, 20, 12.0, 25.0, step);
+  rings.Add(hole);
+  return rings;
+}
+
+double Tolerance(const mpq_class& exact, double tileArea)
+{
+  return 1e-12 * std::max(std::fabs(exact.get_d()), 1e-3 * tileArea);
+}
+
+double PlainArea(const std::vector<Point2>& ring)
+{
+  double twice = 0.0;
+  for (std::size_t i = 0; i < ring.size(); ++i)
+  {
+    const Point2& a = ring[i];
+    const Point2& b = ring[(i + 1) % ring.size()];
+    twice += a.x * b.y - b.x * a.y;
+  }
+  return 0.5 * twice;
+}
+
+template<typename Function>
+std::string ErrorOf(Function&& function)
+{
+  try
+  {
+    function();
+  }
+  catch (const InputError& error)
+  {
+    return error.what();
+  }
+  return "";
+}
+
+// Checks the returned rings against the region they claim: their signed areas add up to the
+// area, and the even-odd rule over them matches exact membership at random points.
+void CheckRings(const tessera::ClippedRings& out,
+  double area,
+  const Rings& catchment,
+  const std::vector<Point2>& tile,
+  std::mt19937& random)
+{
+  Rings pieces;
+  double signedSum = 0.0;
+  for (std::size_t r = 0; r + 1 < out.RingOffsets.size(); ++r)
+  {
+    pieces.Add({ out.Vertices.begin() + static_cast<std::ptrdiff_t>(out.RingOffsets[r]),
+      out.Vertices.begin() + static_cast<std::ptrdiff_t>(out.RingOffsets[r + 1]) });
+    signedSum += PlainArea(pieces.Ring(r));
+  }
+  EXPECT_NEAR(signedSum, area, 1e-9 * std::max(1.0, area));
+  double x0 = tile[0].x, x1 = tile[0].x, y0 = tile[0].y, y1 = tile[0].y;
+  for (const Point2& p : tile)
+  {
+    x0 = std::min(x0, p.x);
+    x1 = std::max(x1, p.x);
+    y0 = std::min(y0, p.y);
+    y1 = std::max(y1, p.y);
+  }
+  std::uniform_real_distribution<double> x(x0, x1);
+  std::uniform_real_distribution<double> y(y0, y1);
+  const std::vector<QPoint> window = ToExact(tile);
+  for (int i = 0; i < 50; ++i)
+  {
+    const QPoint p = ToExact(Point2{ x(random), y(random) });
+    bool inTile = true;
+    for (std::size_t e = 0; e < window.size(); ++e)
+    {
+      inTile = inTile && sgn(Cross(window[e], window[(e + 1) % window.size()], p)) > 0;
+    }
+    const bool expected = inTile && ExactInsideRegion(p, catchment);
+    EXPECT_EQ(ExactInsideRegion(p, pieces), expected)
+      << "at (" << p.x.get_d() << ", " << p.y.get_d() << ")";
+  }
+}
+
+} // namespace
+
+// ---- Known pieces
+// --------------------------------------------------------------------------------
+
+TEST(Clip, SquareCatchmentGivesRectangleOverlaps)
+{
+  Rings square;
+  square.Add(Rectangle(0, 0, 4, 4));
+  const Catchment catchment(square.Offsets, square.Vertices);
+  EXPECT_EQ(catchment.Area(), 16.0);
+  std::mt19937 random(1);
+  std::uniform_int_distribution<int> coordinate(-3, 7);
+  for (int i = 0; i < 300; ++i)
+  {
+    int x0 = coordinate(random), x1 = coordinate(random), y0 = coordinate(random),
+        y1 = coordinate(random);
+    if (x0 == x1 || y0 == y1)
+    {
+      continue;
+    }
+    const std::vector<Point2> tile =
+      Rectangle(std::min(x0, x1), std::min(y0, y1), std::max(x0, x1), std::max(y0, y1));
+    const double expected = Overlap1D(std::min(x0, x1), std::max(x0, x1), 0, 4) *
+      Overlap1D(std::min(y0, y1), std::max(y0, y1), 0, 4);
+    const tessera::ClippedTile clipped = catchment.Clip(tile);
+    EXPECT_EQ(clipped.Area, expected) << "tile " << x0 << " " << x1 << " " << y0 << " " << y1;
+    EXPECT_EQ(catchment.ClipArea(tile), clipped.Area);
+    CheckRings(clipped.Rings, clipped.Area, square, tile, random);
+  }
+}
+
+TEST(Clip, HoleWithIslandFollowsEvenOdd)
+{
+  // Island first, hole clockwise, outer anticlockwise: order and orientation must not matter.
+  Rings rings;
+  rings.Add(Rectangle(4, 4, 6, 6));
+  std::vector<Point2> hole = Rectangle(2, 2, 8, 8);
+  std::reverse(hole.begin(), hole.end());
+  rings.Add(hole);
+  rings.Add(Rectangle(0, 0, 10, 10));
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  EXPECT_EQ(catchment.Area(), 100.0 - 36.0 + 4.0);
+  EXPECT_EQ(catchment.RingDepths(), (std::vector<int>{ 2, 1, 0 }));
+  EXPECT_TRUE(catchment.Contains({ 1, 1 }));
+  EXPECT_FALSE(catchment.Contains({ 3, 3 }));
+  EXPECT_TRUE(catchment.Contains({ 5, 5 }));
+  EXPECT_FALSE(catchment.Contains({ 11, 5 }));
+  std::mt19937 random(2);
+  std::uniform_real_distribution<double> coordinate(-2.0, 12.0);
+  for (int i = 0; i < 300; ++i)
+  {
+    const double ax = std::round(4 * coordinate(random)) / 4,
+                 bx = std::round(4 * coordinate(random)) / 4;
+    const double ay = std::round(4 * coordinate(random)) / 4,
+                 by = std::round(4 * coordinate(random)) / 4;
+    if (ax == bx || ay == by)
+    {
+      continue;
+    }
+    const double x0 = std::min(ax, bx), x1 = std::max(ax, bx), y0 = std::min(ay, by),
+                 y1 = std::max(ay, by);
+    const double expected = Overlap1D(x0, x1, 0, 10) * Overlap1D(y0, y1, 0, 10) -
+      Overlap1D(x0, x1, 2, 8) * Overlap1D(y0, y1, 2, 8) +
+      Overlap1D(x0, x1, 4, 6) * Overlap1D(y0, y1, 4, 6);
+    const std::vector<Point2> tile = Rectangle(x0, y0, x1, y1);
+    const tessera::ClippedTile clipped = catchment.Clip(tile);
+    EXPECT_EQ(clipped.Area, expected) << x0 << " " << x1 << " " << y0 << " " << y1;
+    CheckRings(clipped.Rings, clipped.Area, rings, tile, random);
+  }
+}
+
+TEST(Clip, TilesInsideOutsideAndStraddling)
+{
+  std::mt19937 random(3);
+  Rings rings;
+  rings.Add(Star(random, { 0, 0 }, 400, 80.0, 100.0, 1.0 / 64));
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  const std::vector<Point2> inside = RandomConvex(random, -30, 30, -30, 30, 12, 1.0 / 8);
+  const std::vector<Point2> outside = RandomConvex(random, 150, 200, -30, 30, 12, 1.0 / 8);
+  const std::vector<Point2> around = RandomConvex(random, 70, 110, -20, 20, 12, 1.0 / 8);
+  const std::vector<Point2> covering = Rectangle(-200, -200, 200, 200);
+
+  const tessera::ClippedTile in = catchment.Clip(inside);
+  EXPECT_EQ(in.Area, PlainArea(inside));
+  ASSERT_EQ(in.Rings.RingOffsets.size(), 2u);
+  EXPECT_EQ(in.Rings.Vertices, inside);
+
+  const tessera::ClippedTile out = catchment.Clip(outside);
+  EXPECT_EQ(out.Area, 0.0);
+  EXPECT_EQ(out.Rings.Vertices.size(), 0u);
+
+  for (const auto& tile : { around, covering })
+  {
+    const tessera::ClippedTile clipped = catchment.Clip(tile);
+    const mpq_class exact = ExactClippedArea(rings, tile);
+    EXPECT_GT(exact, 0);
+    EXPECT_NEAR(clipped.Area, exact.get_d(), Tolerance(exact, PlainArea(tile)));
+    CheckRings(clipped.Rings, clipped.Area, rings, tile, random);
+  }
+  EXPECT_NEAR(catchment.ClipArea(covering), catchment.Area(), 1e-12 * catchment.Area());
+}
+
+// ---- Against the exact reference ---------------------------------------------------------------
+
+void CompareRandomTiles(const Rings& rings, double offset, unsigned seed, int tiles)
+{
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  const mpq_class exactArea = ExactRegionArea(rings);
+  EXPECT_NEAR(catchment.Area(), exactArea.get_d(), 1e-14 * exactArea.get_d());
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> size(1.0, 60.0);
+  int partial = 0;
+  for (int i = 0; i < tiles; ++i)
+  {
+    std::uniform_real_distribution<double> corner(offset - 80.0, offset + 180.0);
+    const double x = corner(random), y = corner(random) - 50.0, s = size(random);
+    const std::vector<Point2> tile = RandomConvex(random, x, x + s, y, y + s, 8, 1.0 / 16);
+    const mpq_class exact = ExactClippedArea(rings, tile);
+    const double tileArea = PlainArea(tile);
+    const tessera::ClippedTile clipped = catchment.Clip(tile);
+    EXPECT_NEAR(clipped.Area, exact.get_d(), Tolerance(exact, tileArea)) << "tile " << i;
+    partial += exact > 0 && exact.get_d() < tileArea;
+    if (i % 10 == 0)
+    {
+      CheckRings(clipped.Rings, clipped.Area, rings, tile, random);
+    }
+  }
+  EXPECT_GT(partial, tiles / 10); // the comparison must exercise real clipping
+}
+
+TEST(Clip, RandomConvexTilesMatchExactRationalClipping)
+{
+  for (unsigned seed = 10; seed < 16; ++seed)
+  {
+    std::mt19937 random(seed);
+    CompareRandomTiles(NestedStars(random, 1.0, 0.0), 0.0, seed, 150);
+  }
+}
+
+TEST(Clip, DyadicCoordinatesAwayFromOriginMatchExactClipping)
+{
+  for (unsigned seed = 20; seed < 24; ++seed)
+  {
+    std::mt19937 random(seed);
+    CompareRandomTiles(NestedStars(random, 1.0 / 64, 1024.0), 1024.0, seed, 150);
+  }
+}
+
+// ---- Tilings -----------------------------------------------------------------------------------
+
+// A jittered grid over (and beyond) the catchment's box, each quad split into two triangles.
+void TilingOf(const tessera::Box2& box,
+  int cells,
+  std::mt19937& random,
+  std::vector<std::size_t>& offsets,
+  std::vector<Point2>& vertices)
+{
+  const double x0 = box.XMin - 7.3, y0 = box.YMin - 5.1;
+  const double dx = (box.XMax - box.XMin + 14.0) / cells, dy = (box.YMax - box.YMin + 11.0) / cells;
+  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
+  std::vector<Point2> nodes;
+  for (int j = 0; j <= cells; ++j)
+  {
+    for (int i = 0; i <= cells; ++i)
+    {
+      const bool border = i == 0 || j == 0 || i == cells || j == cells;
+      nodes.push_back({ x0 + (i + (border ? 0.0 : jitter(random))) * dx,
+        y0 + (j + (border ? 0.0 : jitter(random))) * dy });
+    }
+  }
+  offsets.assign(1, 0);
+  vertices.clear();
+  const auto node = [&](int i, int j)
+  { return nodes[static_cast<std::size_t>(i + j * (cells + 1))]; };
+  for (int j = 0; j < cells; ++j)
+  {
+    for (int i = 0; i < cells; ++i)
+    {
+      vertices.insert(vertices.end(), { node(i, j), node(i + 1, j), node(i + 1, j + 1) });
+      offsets.push_back(vertices.size());
+      vertices.insert(vertices.end(), { node(i, j), node(i + 1, j + 1), node(i, j + 1) });
+      offsets.push_back(vertices.size());
+    }
+  }
+}
+
+TEST(Clip, TilingAreasSumToCatchmentArea)
+{
+  for (unsigned seed = 30; seed < 34; ++seed)
+  {
+    std::mt19937 random(seed);
+    Rings rings;
+    const Point2 c{ 3.25, -1.5 };
+    rings.Add(Star(random, c, 2000, 30.0, 50.0, 1e-9));
+    rings.Add(Star(random, c, 300, 12.0, 25.0, 1e-9));
+    rings.Add(Star(random, c, 50, 3.0, 8.0, 1e-9));
+    const Catchment catchment(rings.Offsets, rings.Vertices);
+    const mpq_class exactArea = ExactRegionArea(rings);
+    EXPECT_NEAR(catchment.Area(), exactArea.get_d(), 1e-14 * exactArea.get_d());
+
+    std::vector<std::size_t> offsets;
+    std::vector<Point2> vertices;
+    TilingOf(catchment.Bounds(), 37, random, offsets, vertices);
+    const tessera::ClippedTiles clipped = catchment.ClipAll(offsets, vertices);
+    ASSERT_EQ(clipped.Areas.size(), offsets.size() - 1);
+    ASSERT_EQ(clipped.TileRingOffsets.size(), offsets.size());
+    double sum = 0.0;
+    int partial = 0;
+    for (std::size_t t = 0; t < clipped.Areas.size(); ++t)
+    {
+      sum += clipped.Areas[t];
+      const std::vector<Point2> tile(vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t]),
+        vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t + 1]));
+      partial += clipped.Areas[t] > 0 && clipped.Areas[t] < PlainArea(tile);
+      // The rings of each tile add up to its area.
+      double ringSum = 0.0;
+      for (std::size_t r = clipped.TileRingOffsets[t]; r < clipped.TileRingOffsets[t + 1]; ++r)
+      {
+        ringSum += PlainArea({ clipped.Rings.Vertices.begin() +
+            static_cast<std::ptrdiff_t>(clipped.Rings.RingOffsets[r]),
+          clipped.Rings.Vertices.begin() +
+            static_cast<std::ptrdiff_t>(clipped.Rings.RingOffsets[r + 1]) });
+      }
+      EXPECT_NEAR(ringSum, clipped.Areas[t], 1e-9 * PlainArea(tile));
+    }
+    EXPECT_GT(partial, 100);
+    EXPECT_EQ(clipped.CatchmentArea, catchment.Area());
+    EXPECT_NEAR(sum, exactArea.get_d(), 1e-12 * exactArea.get_d());
+    const tessera::ClippedTiles areasOnly = catchment.ClipAll(offsets, vertices, false);
+    EXPECT_EQ(areasOnly.Areas, clipped.Areas);
+    EXPECT_TRUE(areasOnly.Rings.Vertices.empty());
+  }
+}
+
+// Exactly degenerate tilings: an integer grid whose lines run along the catchment's edges and
+// through its vertices.
+TEST(Clip, GridAlignedWithCatchmentEdgesSumsExactly)
+{
+  Rings rings;
+  rings.Add({ { 0, 0 }, { 6, 0 }, { 6, 2 }, { 3, 2 }, { 3, 4 }, { 6, 4 }, { 6, 6 }, { 0, 6 } });
+  rings.Add({ { 1, 1 }, { 2, 3 }, { 1, 5 } });
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  std::vector<std::size_t> offsets{ 0 };
+  std::vector<Point2> vertices;
+  for (int j = -1; j < 7; ++j)
+  {
+    for (int i = -1; i < 7; ++i)
+    {
+      const std::vector<Point2> cell = Rectangle(i, j, i + 1, j + 1);
+      vertices.insert(vertices.end(), cell.begin(), cell.end());
+      offsets.push_back(vertices.size());
+    }
+  }
+  const tessera::ClippedTiles clipped = catchment.ClipAll(offsets, vertices);
+  double sum = 0.0;
+  std::mt19937 random(5);
+  for (std::size_t t = 0; t < clipped.Areas.size(); ++t)
+  {
+    const std::vector<Point2> tile(vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t]),
+      vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t + 1]));
+    EXPECT_EQ(clipped.Areas[t], ExactClippedArea(rings, tile).get_d()) << "cell " << t;
+    sum += clipped.Areas[t];
+  }
+  EXPECT_EQ(sum, ExactRegionArea(rings).get_d());
+  EXPECT_EQ(catchment.Area(), 36.0 - 6.0 - 2.0);
+}
+
+// ---- Bad input ---------------------------------------------------------------------------------
+
+TEST(Clip, RejectsBadCatchmentsNamingRingsAndSegments)
+{
+  const auto build = [](const Rings& rings)
+  { return ErrorOf([&] { Catchment catchment(rings.Offsets, rings.Vertices); }); };
+  Rings bowTie;
+  bowTie.Add({ { 0, 0 }, { 2, 0 }, { 0, 2 }, { 2, 2 } });
+  EXPECT_EQ(build(bowTie), "ring 0 is self-intersecting: segment 1 and segment 3 touch or cross");
+
+  Rings crossing;
+  crossing.Add(Rectangle(0, 0, 4, 4));
+  crossing.Add(Rectangle(3, 1, 5, 2));
+  const std::string crossed = build(crossing);
+  EXPECT_NE(crossed.find("ring 0 segment 1 and ring 1 segment"), std::string::npos) << crossed;
+
+  Rings touching;
+  touching.Add(Rectangle(0, 0, 4, 4));
+  touching.Add({ { 4, 4 }, { 6, 4 }, { 6, 6 } });
+  EXPECT_NE(build(touching).find("ring 0"), std::string::npos);
+  EXPECT_NE(build(touching).find("ring 1"), std::string::npos);
+
+  Rings spike; // goes out and back along the same line
+  spike.Add({ { 0, 0 }, { 4, 0 }, { 4, 4 }, { 4, 6 }, { 4, 5 }, { 0, 4 } });
+  EXPECT_NE(build(spike).find("ring 0 is self-intersecting"), std::string::npos) << build(spike);
+
+  Rings nan;
+  nan.Add(Rectangle(0, 0, 1, 1));
+  nan.Add({ { 5, 5 }, { 6, 5 }, { std::nan(""), 6 } });
+  EXPECT_EQ(build(nan), "ring 1 vertex 2 has a NaN coordinate");
+
+  Rings infinite;
+  infinite.Add({ { 0, 0 }, { HUGE_VAL, 0 }, { 0, 1 } });
+  EXPECT_EQ(build(infinite), "ring 0 vertex 1 has an infinite coordinate");
+
+  Rings flat;
+  flat.Add({ { 0, 0 }, { 1, 1 }, { 1, 1 }, { 0, 0 } });
+  EXPECT_NE(build(flat).find("ring 0 has fewer than 3 distinct vertices"), std::string::npos);
+
+  Rings collinear;
+  collinear.Add({ { 0, 0 }, { 1, 1 }, { 2, 2 } });
+  EXPECT_NE(build(collinear).find("ring 0 is self-intersecting"), std::string::npos);
+
+  // A closing vertex equal to the first, and repeated vertices, are accepted.
+  Rings closed;
+  closed.Add({ { 0, 0 }, { 2, 0 }, { 2, 0 }, { 2, 2 }, { 0, 2 }, { 0, 0 } });
+  EXPECT_EQ(build(closed), "");
+  const Catchment catchment(closed.Offsets, closed.Vertices);
+  EXPECT_EQ(catchment.Area(), 4.0);
+  EXPECT_EQ(catchment.Vertices().size(), 4u);
+}
+
+TEST(Clip, RejectsBadTilesNamingThem)
+{
+  Rings square;
+  square.Add(Rectangle(0, 0, 4, 4));
+  const Catchment catchment(square.Offsets, square.Vertices);
+  std::vector<Point2> clockwise = Rectangle(1, 1, 2, 2);
+  std::reverse(clockwise.begin(), clockwise.end());
+  EXPECT_NE(ErrorOf([&] { catchment.ClipArea(clockwise); }).find("tile 0 has clockwise"),
+    std::string::npos);
+  EXPECT_EQ(ErrorOf(
+              [&] {
+                catchment.ClipArea({ { 0, 0 }, { 1, 0 } });
+              }),
+    "tile 0 has 2 vertices; a tile needs at least 3");
+  std::vector<Point2> vertices = Rectangle(1, 1, 2, 2);
+  const std::vector<Point2> second = { { 0, 0 }, { 1, std::nan("") }, { 0, 1 } };
+  vertices.insert(vertices.end(), second.begin(), second.end());
+  EXPECT_EQ(ErrorOf(
+              [&] {
+                catchment.ClipAll({ 0, 4, 7 }, vertices);
+              }),
+    "tile 1 vertex 1 has a NaN coordinate");
+  EXPECT_NE(ErrorOf(
+              [&] {
+                catchment.ClipAll({ 0, 4, 6 }, vertices);
+              })
+              .find("last tile offset"),
+    std::string::npos);
+  // A degenerate tile (zero area) is not an error.
+  EXPECT_EQ(catchment.ClipArea({ { 1, 1 }, { 2, 2 }, { 3, 3 } }), 0.0);
+}
+
+TEST(Clip, SegmentsIntersectIsExact)
+{
+  // Near-degenerate: c is on segment ab only in exact arithmetic.
+  const Point2 a{ 0.1, 0.1 }, b{ 0.7, 0.7 };
+  EXPECT_TRUE(tessera::SegmentsIntersect(a, b, { 0.5, 0.5 }, { 1, 0 }));
+  EXPECT_FALSE(tessera::SegmentsIntersect(a, b, { std::nextafter(0.5, 1.0), 0.5 }, { 1, 0 }));
+  EXPECT_TRUE(tessera::SegmentsIntersect(a, b, { 0.7, 0.7 }, { 1, 0 }));
+  EXPECT_FALSE(tessera::SegmentsIntersect(a, b, { 0.8, 0.8 }, { 1, 1 }));
+  EXPECT_TRUE(tessera::SegmentsIntersect(a, b, { 0.6, 0.6 }, { 1, 1 }));
+}
+
+TEST(Clip, RejectsTheBowTieOfTheColoradoOutline)
+{
+  // Four consecutive vertices of the R maps Colorado outline (its vertices 19 to 22, at the
+  // north-west corner), closed by a point to the south-east: segment 19->20 crosses 21->22.
+  Rings corner;
+  corner.Add({ { -107.922333, 41.018047 },
+    { -109.056786, 40.989399 },
+    { -109.051064, 40.995129 },
+    { -109.056786, 40.657085 },
+    { -107.9, 40.6 } });
+  EXPECT_EQ(ErrorOf([&] { Catchment catchment(corner.Offsets, corner.Vertices); }),
+    "ring 0 is self-intersecting: segment 0 and segment 2 touch or cross");
+  // Without vertex 21 (here 2) the ring is simple.
+  Rings fixed;
+  fixed.Add({ { -107.922333, 41.018047 },
+    { -109.056786, 40.989399 },
+    { -109.056786, 40.657085 },
+    { -107.9, 40.6 } });
+  EXPECT_EQ(ErrorOf([&] { Catchment catchment(fixed.Offsets, fixed.Vertices); }), "");
+}
+
+TEST(Clip, ContainsMatchesExactEvenOdd)
+{
+  std::mt19937 random(40);
+  const Rings rings = NestedStars(random, 1.0 / 64, 0.0);
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  std::uniform_real_distribution<double> x(-70.0, 200.0);
+  std::uniform_real_distribution<double> y(-80.0, 80.0);
+  int inside = 0;
+  for (int i = 0; i < 3000; ++i)
+  {
+    const Point2 p{ x(random), y(random) };
+    const bool expected = ExactInsideRegion(ToExact(p), rings);
+    EXPECT_EQ(catchment.Contains(p), expected) << p.x << " " << p.y;
+    inside += expected;
+  }
+  EXPECT_GT(inside, 300);
+  EXPECT_LT(inside, 2700);
+}
+
+// Densified edges (many collinear vertices, as a densified outline has) and tiles whose edges pass
+// through those vertices.
+TEST(Clip, DensifiedOutlineWithTilesThroughItsVertices)
+{
+  std::vector<Point2> outer;
+  for (int k = 0; k < 16; ++k)
+  {
+    outer.push_back({ k * 0.5, 0.0 });
+  }
+  for (int k = 0; k < 16; ++k)
+  {
+    outer.push_back({ 8.0, k * 0.5 });
+  }
+  for (int k = 0; k < 16; ++k)
+  {
+    outer.push_back({ 8.0 - k * 0.5, 8.0 });
+  }
+  for (int k = 0; k < 16; ++k)
+  {
+    outer.push_back({ 0.0, 8.0 - k * 0.5 });
+  }
+  Rings rings;
+  rings.Add(outer);
+  rings.Add({ { 2, 2 }, { 2, 6 }, { 6, 6 }, { 6, 2 } });
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  EXPECT_EQ(catchment.Area(), 64.0 - 16.0);
+  std::mt19937 random(41);
+  std::uniform_int_distribution<int> coordinate(-2, 20);
+  for (int i = 0; i < 200; ++i)
+  {
+    // Triangles with half-integer vertices: their edges often run along or through ring vertices.
+    std::vector<Point2> tile = { { coordinate(random) * 0.5, coordinate(random) * 0.5 },
+      { coordinate(random) * 0.5, coordinate(random) * 0.5 },
+      { coordinate(random) * 0.5, coordinate(random) * 0.5 } };
+    const double area = PlainArea(tile);
+    if (area == 0.0)
+    {
+      continue;
+    }
+    if (area < 0.0)
+    {
+      std::swap(tile[1], tile[2]);
+    }
+    const mpq_class exact = ExactClippedArea(rings, tile);
+    const tessera::ClippedTile clipped = catchment.Clip(tile);
+    EXPECT_NEAR(clipped.Area, exact.get_d(), Tolerance(exact, std::fabs(area)));
+    CheckRings(clipped.Rings, clipped.Area, rings, tile, random);
+  }
+}

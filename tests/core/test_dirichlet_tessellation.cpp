@@ -1,0 +1,530 @@
+// Properties of the Green-Sibson engine: structure invariants, empty circles (exact incircle,
+// brute force), triangle counts, symmetric rings, degenerate inputs, duplicates and rejected
+// points, removal, insertion-order independence and invariance under translation and scaling.
+
+#include "dirichlet_tessellation.h"
+#include "errors.h"
+#include "predicates.h"
+#include "tiles.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+using namespace tessera;
+using Tess = DirichletTessellation;
+
+namespace
+{
+
+std::vector<Point2> UniformPoints(std::size_t n, unsigned seed, double lo = 0.0, double hi = 1.0)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(lo, hi);
+  std::vector<Point2> points(n);
+  for (Point2& p : points)
+  {
+    p = { u(rng), u(rng) };
+  }
+  return points;
+}
+
+Window UnitWindow()
+{
+  return Window::Rectangle(-0.5, 1.5, -0.5, 1.5);
+}
+
+// Structural invariants of the half-edge arrays; returns the number of real triangles.
+std::size_t CheckStructure(const Tess& t)
+{
+  const auto& org = t.Origin();
+  const auto& twin = t.Twin();
+  const auto& pts = t.Points();
+  std::size_t real = 0;
+  for (std::int32_t tri = 0; tri < std::int32_t(org.size() / 3); ++tri)
+  {
+    if (t.IsFreeTriangle(tri))
+    {
+      continue;
+    }
+    for (std::int32_t k = 0; k < 3; ++k)
+    {
+      const std::int32_t e = 3 * tri + k;
+      EXPECT_EQ(twin[twin[e]], e);
+      EXPECT_EQ(org[twin[e]], org[Tess::Next(e)]);
+    }
+    if (!t.IsGhostTriangle(tri))
+    {
+      ++real;
+      EXPECT_GT(orient2d(pts[org[3 * tri]], pts[org[3 * tri + 1]], pts[org[3 * tri + 2]]), 0);
+    }
+  }
+  return real;
+}
+
+std::vector<std::int32_t> AcceptedIds(const Tess& t)
+{
+  std::vector<std::int32_t> ids;
+  for (std::int32_t id = 0; id < std::int32_t(t.PointCount()); ++id)
+  {
+    if (t.Status(id) == PointStatus::Accepted)
+    {
+      ids.push_back(id);
+    }
+  }
+  return ids;
+}
+
+// Every real triangle's circumcircle has no accepted point strictly inside (exact incircle).
+void CheckEmptyCircles(const Tess& t)
+{
+  const auto& org = t.Origin();
+  const auto& pts = t.Points();
+  const std::vector<std::int32_t> ids = AcceptedIds(t);
+  for (std::int32_t tri = 0; tri < std::int32_t(org.size() / 3); ++tri)
+  {
+    if (t.IsFreeTriangle(tri) || t.IsGhostTriangle(tri))
+    {
+      continue;
+    }
+    const Point2& a = pts[org[3 * tri]];
+    const Point2& b = pts[org[3 * tri + 1]];
+    const Point2& c = pts[org[3 * tri + 2]];
+    for (const std::int32_t id : ids)
+    {
+      ASSERT_LE(incircle(a, b, c, pts[id]), 0) << "triangle " << tri << " point " << id;
+    }
+  }
+}
+
+std::size_t HullSize(const Tess& t)
+{
+  std::size_t ghosts = 0;
+  for (std::int32_t tri = 0; tri < std::int32_t(t.Origin().size() / 3); ++tri)
+  {
+    ghosts += !t.IsFreeTriangle(tri) && t.IsGhostTriangle(tri);
+  }
+  return ghosts;
+}
+
+// Canonical combinatorics and geometry, comparable across insertion orders after mapping ids.
+struct Canonical
+{
+  std::vector<std::tuple<std::int32_t, std::int32_t, int>> Graph;
+  std::vector<std::vector<std::int32_t>> Faces;
+  std::vector<std::vector<std::pair<double, double>>> Tiles;
+  std::vector<std::int32_t> TileIds;
+  bool operator==(const Canonical& o) const
+  {
+    return Graph == o.Graph && Faces == o.Faces && Tiles == o.Tiles && TileIds == o.TileIds;
+  }
+};
+
+// idMap maps the tessellation's ids to common ids (identity when empty).
+Canonical MakeCanonical(const Tess& t, const std::vector<std::int32_t>& idMap = {}, bool tiles = true)
+{
+  const auto map = [&](std::int32_t id) { return idMap.empty() ? id : idMap[id]; };
+  TessellationDual dual(t);
+  Canonical c;
+  const ContiguityGraph graph = dual.Contiguities();
+  for (std::size_t k = 0; k < graph.Kinds.size(); ++k)
+  {
+    std::int32_t i = map(graph.Pairs[2 * k]), j = map(graph.Pairs[2 * k + 1]);
+    c.Graph.emplace_back(std::min(i, j), std::max(i, j), graph.Kinds[k]);
+  }
+  std::sort(c.Graph.begin(), c.Graph.end());
+  const DelaunayFaces faces = dual.Faces(false);
+  for (std::size_t f = 0; f + 1 < faces.Offsets.size(); ++f)
+  {
+    std::vector<std::int32_t> face;
+    for (std::int64_t k = faces.Offsets[f]; k < faces.Offsets[f + 1]; ++k)
+    {
+      face.push_back(map(faces.PointIds[k]));
+    }
+    std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
+    c.Faces.push_back(face);
+  }
+  std::sort(c.Faces.begin(), c.Faces.end());
+  if (tiles)
+  {
+    const TileSet set = dual.Tiles();
+    std::vector<std::pair<std::int32_t, std::vector<std::pair<double, double>>>> byId;
+    for (std::size_t k = 0; k < set.PointIds.size(); ++k)
+    {
+      std::vector<std::pair<double, double>> polygon;
+      for (std::int64_t v = set.Offsets[k]; v < set.Offsets[k + 1]; ++v)
+      {
+        polygon.emplace_back(set.Vertices[v].x, set.Vertices[v].y);
+      }
+      // Compare as a cycle: rotate to the smallest vertex.
+      std::rotate(polygon.begin(), std::min_element(polygon.begin(), polygon.end()), polygon.end());
+      byId.emplace_back(map(set.PointIds[k]), polygon);
+    }
+    std::sort(byId.begin(), byId.end());
+    for (auto& [id, polygon] : byId)
+    {
+      c.TileIds.push_back(id);
+      c.Tiles.push_back(polygon);
+    }
+  }
+  return c;
+}
+
+} // namespace
+
+TEST(DirichletTessellation, RandomPointsSatisfyDelaunayInvariants)
+{
+  for (const std::size_t n : { 3u, 4u, 10u, 50u, 300u })
+  {
+    for (unsigned seed = 1; seed <= 4; ++seed)
+    {
+      const std::vector<Point2> points = UniformPoints(n, seed * 31 + unsigned(n));
+      Tess t(UnitWindow(), points);
+      ASSERT_TRUE(t.IsTwoDimensional());
+      EXPECT_EQ(t.AcceptedCount(), n);
+      const std::size_t real = CheckStructure(t);
+      const std::size_t hull = HullSize(t);
+      EXPECT_EQ(real, 2 * n - 2 - hull) << "n=" << n;
+      CheckEmptyCircles(t);
+    }
+  }
+}
+
+TEST(DirichletTessellation, RingsAreSymmetricAndAnticlockwise)
+{
+  const std::vector<Point2> points = UniformPoints(200, 7);
+  Tess t(UnitWindow(), points);
+  const auto& org = t.Origin();
+  std::vector<std::set<std::int32_t>> rings(points.size());
+  std::vector<std::int32_t> someEdge(points.size(), -1);
+  for (std::size_t e = 0; e < org.size(); ++e)
+  {
+    if (org[e] >= 0)
+    {
+      someEdge[org[e]] = std::int32_t(e);
+    }
+  }
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    ASSERT_GE(someEdge[i], 0);
+    std::vector<std::int32_t> ring;
+    std::int32_t e = someEdge[i];
+    do
+    {
+      ring.push_back(org[Tess::Next(e)]);
+      e = t.RingNext(e);
+    } while (e != someEdge[i]);
+    EXPECT_GE(ring.size(), 3u);
+    for (std::size_t k = 0; k < ring.size(); ++k)
+    {
+      const std::int32_t a = ring[k], b = ring[(k + 1) % ring.size()];
+      if (a >= 0 && b >= 0)
+      {
+        // Consecutive neighbours turn anticlockwise around i (each pair spans a triangle).
+        EXPECT_GT(orient2d(points[i], points[a], points[b]), 0);
+      }
+      if (a >= 0)
+      {
+        rings[i].insert(a);
+      }
+    }
+  }
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    for (const std::int32_t j : rings[i])
+    {
+      EXPECT_TRUE(rings[j].count(std::int32_t(i))) << i << " " << j;
+    }
+  }
+}
+
+TEST(DirichletTessellation, NanAndInfinityAreRejectedWithTheirId)
+{
+  std::vector<Point2> points = UniformPoints(10, 3);
+  points[7].y = std::numeric_limits<double>::quiet_NaN();
+  try
+  {
+    Tess t(UnitWindow(), points);
+    FAIL() << "no InputError";
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_NE(std::string(error.what()).find("point 7"), std::string::npos) << error.what();
+  }
+  Tess streaming(UnitWindow());
+  streaming.Insert({ 0.1, 0.2 });
+  streaming.Insert({ 0.3, 0.2 });
+  try
+  {
+    streaming.Insert({ std::numeric_limits<double>::infinity(), 0.0 });
+    FAIL() << "no InputError";
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_NE(std::string(error.what()).find("point 2"), std::string::npos) << error.what();
+  }
+}
+
+TEST(DirichletTessellation, DuplicatesAndOutsidePointsAreReported)
+{
+  std::vector<Point2> points = UniformPoints(40, 5);
+  points.push_back(points[3]);    // 40 duplicates 3
+  points.push_back({ 5.0, 0.5 }); // 41 outside
+  points.push_back(points[40]);   // 42 duplicates 3
+  points.push_back({ 1.5, 0.5 }); // 43 on the window's edge: outside (the window is open)
+  points.insert(points.begin(), points[10]); // shift: now 0 and 11 coincide; 0 is kept
+  Tess t(UnitWindow(), points);
+  EXPECT_EQ(t.AcceptedCount(), 40u);
+  EXPECT_EQ(t.RejectedIds(), (std::vector<std::int32_t>{ 42, 44 }));
+  const auto duplicates = t.Duplicates();
+  const std::vector<std::pair<std::int32_t, std::int32_t>> expected{ { 11, 0 }, { 41, 4 },
+    { 43, 4 } };
+  EXPECT_EQ(duplicates, expected);
+  EXPECT_EQ(t.Status(11), PointStatus::Duplicate);
+  EXPECT_EQ(t.DuplicateOf(41), 4);
+  EXPECT_EQ(t.Status(42), PointStatus::OutsideWindow);
+  EXPECT_EQ(t.Status(0), PointStatus::Accepted);
+  CheckStructure(t);
+  CheckEmptyCircles(t);
+}
+
+TEST(DirichletTessellation, FewAndCollinearPointsGiveValidOutput)
+{
+  const Window window = UnitWindow();
+  {
+    Tess t(window, {});
+    EXPECT_EQ(ComputeTiles(t).PointIds.size(), 0u);
+    EXPECT_EQ(ComputeDelaunayFaces(t, false).Offsets.size(), 1u);
+  }
+  {
+    Tess t(window, { { 0.2, 0.3 } });
+    const TileSet tiles = ComputeTiles(t);
+    ASSERT_EQ(tiles.PointIds.size(), 1u);
+    EXPECT_NEAR(tiles.Areas[0], window.Area(), 1e-12);
+    EXPECT_EQ(tiles.NeighborCounts[0], 4);
+  }
+  {
+    // Exactly collinear (binary fractions), unsorted, with a duplicate: strips between parallel
+    // bisectors.
+    std::vector<Point2> line;
+    for (const double s : { 0.5, 0.125, 0.875, 0.25, 0.125, 0.75 })
+    {
+      line.push_back({ s, 0.25 + 0.5 * s });
+    }
+    Tess t(window, line);
+    EXPECT_FALSE(t.IsTwoDimensional());
+    EXPECT_EQ(t.AcceptedCount(), 5u);
+    EXPECT_EQ(t.DuplicateOf(4), 1);
+    const TileSet tiles = ComputeTiles(t);
+    ASSERT_EQ(tiles.PointIds.size(), 5u);
+    double total = 0.0;
+    for (double a : tiles.Areas)
+    {
+      EXPECT_GT(a, 0.0);
+      total += a;
+    }
+    EXPECT_NEAR(total, window.Area(), 1e-12 * window.Area());
+    EXPECT_EQ(ComputeDelaunayFaces(t, true).Offsets.size(), 1u);
+    const ContiguityGraph graph = ComputeContiguityGraph(t);
+    // Consecutive along the line: 1-3, 3-0, 0-5, 5-2.
+    std::set<std::pair<std::int32_t, std::int32_t>> pairs;
+    for (std::size_t k = 0; k < graph.Kinds.size(); ++k)
+    {
+      pairs.insert({ graph.Pairs[2 * k], graph.Pairs[2 * k + 1] });
+      EXPECT_EQ(graph.Kinds[k], 0);
+    }
+    EXPECT_EQ(pairs, (std::set<std::pair<std::int32_t, std::int32_t>>{
+                       { 1, 3 }, { 0, 3 }, { 0, 5 }, { 2, 5 } }));
+    // A point off the line makes it two-dimensional; the structure is then a valid triangulation.
+    Tess grown(window, line);
+    grown.Insert({ 0.5, 0.9 });
+    EXPECT_TRUE(grown.IsTwoDimensional());
+    EXPECT_EQ(CheckStructure(grown), 4u);
+    CheckEmptyCircles(grown);
+  }
+}
+
+TEST(DirichletTessellation, StreamingEqualsBatch)
+{
+  const std::vector<Point2> points = UniformPoints(150, 11);
+  Tess batch(UnitWindow(), points);
+  Tess streaming(UnitWindow());
+  for (const Point2& p : points)
+  {
+    streaming.Insert(p);
+  }
+  CheckStructure(streaming);
+  EXPECT_TRUE(MakeCanonical(batch) == MakeCanonical(streaming));
+}
+
+TEST(DirichletTessellation, TenInsertionOrdersGiveIdenticalResults)
+{
+  // A lattice with jitter-free co-circular squares plus random points: degenerate faces included.
+  std::vector<Point2> points;
+  for (int i = 0; i < 6; ++i)
+  {
+    for (int j = 0; j < 6; ++j)
+    {
+      points.push_back({ 0.1 + 0.15 * i, 0.1 + 0.15 * j });
+    }
+  }
+  const std::vector<Point2> extra = UniformPoints(40, 13);
+  points.insert(points.end(), extra.begin(), extra.end());
+  points.push_back(points[5]); // a duplicate, kept id must not depend on the order
+  const Canonical reference = MakeCanonical(Tess(UnitWindow(), points));
+  std::mt19937 rng(99);
+  for (int round = 0; round < 10; ++round)
+  {
+    std::vector<std::int32_t> permutation(points.size());
+    std::iota(permutation.begin(), permutation.end(), 0);
+    std::shuffle(permutation.begin(), permutation.end(), rng);
+    // Streaming insertion in this order; ids are positions in the shuffled order.
+    Tess t(UnitWindow());
+    for (const std::int32_t original : permutation)
+    {
+      t.Insert(points[original]);
+    }
+    CheckStructure(t);
+    // Which copy of the duplicate is kept depends on the ids: name both 5.
+    std::vector<std::int32_t> idMap = permutation;
+    for (std::int32_t& id : idMap)
+    {
+      id = id == std::int32_t(points.size() - 1) ? 5 : id;
+    }
+    const Canonical c = MakeCanonical(t, idMap, false);
+    EXPECT_EQ(c.Faces, reference.Faces) << "round " << round;
+    EXPECT_EQ(c.Graph, reference.Graph) << "round " << round;
+  }
+  // Same ids, different insertion order (batch with its BRIO order vs sequential streaming):
+  // identical tiles to the last bit.
+  Tess streaming(UnitWindow());
+  for (const Point2& p : points)
+  {
+    streaming.Insert(p);
+  }
+  EXPECT_TRUE(MakeCanonical(streaming) == reference);
+}
+
+TEST(DirichletTessellation, InsertThenRemoveEqualsNeverInserted)
+{
+  std::vector<Point2> points = UniformPoints(120, 17);
+  // Co-circular quadruple so removal meets a degenerate star too.
+  points.push_back({ 0.45, 0.45 });
+  points.push_back({ 0.55, 0.45 });
+  points.push_back({ 0.55, 0.55 });
+  points.push_back({ 0.45, 0.55 });
+  points.push_back({ 0.5, 0.5 });
+  std::mt19937 rng(5);
+  for (int round = 0; round < 12; ++round)
+  {
+    // Remove a random set of points (interior and hull), one at a time.
+    std::vector<std::int32_t> ids(points.size());
+    std::iota(ids.begin(), ids.end(), 0);
+    std::shuffle(ids.begin(), ids.end(), rng);
+    ids.resize(round < 2 ? 1 : 10);
+    if (round == 0)
+    {
+      ids = { std::int32_t(points.size() - 1) }; // the centre of the co-circular square
+    }
+    Tess t(UnitWindow(), points);
+    for (const std::int32_t id : ids)
+    {
+      t.Remove(id);
+      CheckStructure(t);
+      EXPECT_EQ(t.Status(id), PointStatus::Removed);
+    }
+    CheckEmptyCircles(t);
+    // The same tessellation built without those points, with the same ids (removed ones moved
+    // outside the window so they are rejected instead).
+    std::vector<Point2> without = points;
+    for (const std::int32_t id : ids)
+    {
+      without[id] = { 10.0, 10.0 };
+    }
+    const Canonical expected = MakeCanonical(Tess(UnitWindow(), without));
+    EXPECT_TRUE(MakeCanonical(t) == expected) << "round " << round;
+  }
+}
+
+TEST(DirichletTessellation, RemovingAPointWithDuplicatesKeepsTheCopy)
+{
+  std::vector<Point2> points = UniformPoints(30, 19);
+  points.push_back(points[4]); // 30
+  points.push_back(points[4]); // 31
+  Tess t(UnitWindow(), points);
+  const Canonical before = MakeCanonical(t, {}, false);
+  t.Remove(4);
+  EXPECT_EQ(t.Status(30), PointStatus::Accepted);
+  EXPECT_EQ(t.DuplicateOf(31), 30);
+  EXPECT_EQ(t.AcceptedCount(), 30u);
+  std::vector<std::int32_t> rename(points.size());
+  std::iota(rename.begin(), rename.end(), 0);
+  rename[30] = 4;
+  EXPECT_EQ(MakeCanonical(t, rename, false).Faces, before.Faces);
+  EXPECT_THROW(t.Remove(4), InputError);
+  EXPECT_THROW(t.Remove(1000), InputError);
+}
+
+TEST(DirichletTessellation, RemovingDownToCollinearAndEmpty)
+{
+  std::vector<Point2> points{ { 0.1, 0.1 }, { 0.5, 0.1 }, { 0.9, 0.1 }, { 0.5, 0.8 } };
+  Tess t(UnitWindow(), points);
+  EXPECT_TRUE(t.IsTwoDimensional());
+  t.Remove(3);
+  EXPECT_FALSE(t.IsTwoDimensional());
+  EXPECT_EQ(t.CollinearPoints(), (std::vector<std::int32_t>{ 0, 1, 2 }));
+  t.Remove(1);
+  t.Remove(0);
+  t.Remove(2);
+  EXPECT_EQ(t.AcceptedCount(), 0u);
+  EXPECT_EQ(ComputeTiles(t).PointIds.size(), 0u);
+}
+
+TEST(DirichletTessellation, TranslationAndScalingKeepTheCombinatorics)
+{
+  // Random points on a 2^-20 grid (so that a shift by 2^30 is exact) below a lattice of exact
+  // binary fractions (co-circular squares).
+  std::vector<Point2> random = UniformPoints(200, 23);
+  for (Point2& p : random)
+  {
+    p = { std::round(p.x * 1048576.0) / 1048576.0, std::round(p.y * 0.3 * 1048576.0) / 1048576.0 };
+  }
+  std::vector<Point2> points = random;
+  for (int i = 0; i < 5; ++i)
+  {
+    for (int j = 0; j < 5; ++j)
+    {
+      points.push_back({ 0.25 + 0.125 * i, 0.375 + 0.125 * j });
+    }
+  }
+  const auto transformed = [](const std::vector<Point2>& original, double scale, double shift) {
+    std::vector<Point2> moved;
+    for (const Point2& p : original)
+    {
+      moved.push_back({ p.x * scale + shift, p.y * scale + shift });
+    }
+    const double lo = -0.5 * scale + shift, hi = 1.5 * scale + shift;
+    return MakeCanonical(Tess(Window::Rectangle(lo, hi, lo, hi), moved), {}, false);
+  };
+  const Canonical reference = transformed(points, 1.0, 0.0);
+  EXPECT_GT(std::count_if(reference.Graph.begin(), reference.Graph.end(),
+              [](const auto& pair) { return std::get<2>(pair) == 1; }),
+    0);
+  EXPECT_TRUE(transformed(points, 1.0, 1073741824.0) == reference);
+  EXPECT_TRUE(transformed(points, 1.0, -1073741824.0) == reference);
+  EXPECT_TRUE(transformed(points, std::ldexp(1.0, -30), 0.0) == reference);
+  EXPECT_TRUE(transformed(points, std::ldexp(1.0, 30), 0.0) == reference);
+  // 1e9 maps the lattice to exact integers; the random points are rounded, which cannot change
+  // generic combinatorics.
+  EXPECT_TRUE(transformed(points, 1e9, 0.0) == reference);
+  // 1e-9 rounds the lattice too (its co-circularity is lost), so compare the generic part.
+  EXPECT_TRUE(transformed(random, 1e-9, 0.0) == transformed(random, 1.0, 0.0));
+}

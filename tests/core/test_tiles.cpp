@@ -1,0 +1,311 @@
+// Properties of the derived results: tiles against an independent O(N^2) half-plane
+// intersection, areas summing to the window area, the Euler count of section 2.3, the square
+// lattice (square tiles, diagonals as half-neighbours, degenerate faces), Delaunay faces.
+
+#include "dirichlet_tessellation.h"
+#include "predicates.h"
+#include "tiles.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+#include <vector>
+
+using namespace tessera;
+
+namespace
+{
+
+std::vector<Point2> UniformPoints(std::size_t n, unsigned seed, double lo, double hi)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(lo, hi);
+  std::vector<Point2> points(n);
+  for (Point2& p : points)
+  {
+    p = { u(rng), u(rng) };
+  }
+  return points;
+}
+
+Window Hexagon()
+{
+  std::vector<HalfPlane> constraints;
+  for (int k = 0; k < 6; ++k)
+  {
+    const double angle = 1.0471975511965976 * k + 0.2;
+    const double a = std::cos(angle), b = std::sin(angle);
+    constraints.push_back({ a, b, -(0.8 + 0.5 * a + 0.5 * b) });
+  }
+  return Window(constraints);
+}
+
+double NeumaierSum(const std::vector<double>& values)
+{
+  double sum = 0.0, compensation = 0.0;
+  for (const double v : values)
+  {
+    const double t = sum + v;
+    compensation += std::fabs(sum) >= std::fabs(v) ? (sum - t) + v : (v - t) + sum;
+    sum = t;
+  }
+  return sum + compensation;
+}
+
+// Independent tile: the window polygon clipped by every bisector half-plane, one at a time.
+std::vector<Point2> BruteForceTile(
+  const Window& window, const std::vector<Point2>& points, std::size_t i)
+{
+  std::vector<Point2> polygon = window.Vertices();
+  for (std::size_t j = 0; j < points.size(); ++j)
+  {
+    if (j == i)
+    {
+      continue;
+    }
+    // Keep x with |x - pi|^2 <= |x - pj|^2, i.e. g(x) = (pj - pi).x - (|pj|^2 - |pi|^2)/2 <= 0.
+    const double nx = points[j].x - points[i].x, ny = points[j].y - points[i].y;
+    const double mx = 0.5 * (points[i].x + points[j].x), my = 0.5 * (points[i].y + points[j].y);
+    const auto g = [&](const Point2& p) { return nx * (p.x - mx) + ny * (p.y - my); };
+    std::vector<Point2> clipped;
+    for (std::size_t k = 0; k < polygon.size(); ++k)
+    {
+      const Point2& a = polygon[k];
+      const Point2& b = polygon[(k + 1) % polygon.size()];
+      const double ga = g(a), gb = g(b);
+      if (ga <= 0)
+      {
+        clipped.push_back(a);
+      }
+      if ((ga < 0 && gb > 0) || (ga > 0 && gb < 0))
+      {
+        const double s = ga / (ga - gb);
+        clipped.push_back({ a.x + s * (b.x - a.x), a.y + s * (b.y - a.y) });
+      }
+    }
+    polygon = clipped;
+  }
+  return polygon;
+}
+
+double ShoelaceArea(const std::vector<Point2>& polygon)
+{
+  double sum = 0.0;
+  for (std::size_t k = 0; k < polygon.size(); ++k)
+  {
+    const Point2& a = polygon[k];
+    const Point2& b = polygon[(k + 1) % polygon.size()];
+    sum += (a.x - polygon[0].x) * (b.y - polygon[0].y) - (a.y - polygon[0].y) * (b.x - polygon[0].x);
+  }
+  return 0.5 * sum;
+}
+
+bool Near(const Point2& a, const Point2& b, double tolerance)
+{
+  return std::fabs(a.x - b.x) <= tolerance && std::fabs(a.y - b.y) <= tolerance;
+}
+
+std::size_t KindCount(const ContiguityGraph& graph, int kind)
+{
+  return std::size_t(std::count(graph.Kinds.begin(), graph.Kinds.end(), std::uint8_t(kind)));
+}
+
+} // namespace
+
+TEST(Tiles, AgreeWithBruteForceHalfPlaneIntersection)
+{
+  for (const bool hexagon : { false, true })
+  {
+    for (unsigned seed = 1; seed <= 6; ++seed)
+    {
+      const Window window = hexagon ? Hexagon() : Window::Rectangle(-0.1, 1.1, -0.2, 1.05);
+      // Some points outside the window too: they must be ignored.
+      const std::vector<Point2> points = UniformPoints(5 + 15 * seed, seed, -0.15, 1.15);
+      DirichletTessellation t(window, points);
+      std::vector<Point2> accepted;
+      std::vector<std::int32_t> acceptedIds;
+      for (std::int32_t id = 0; id < std::int32_t(points.size()); ++id)
+      {
+        if (t.Status(id) == PointStatus::Accepted)
+        {
+          accepted.push_back(points[id]);
+          acceptedIds.push_back(id);
+        }
+      }
+      const TileSet tiles = ComputeTiles(t);
+      ASSERT_EQ(tiles.PointIds, acceptedIds);
+      for (std::size_t k = 0; k < accepted.size(); ++k)
+      {
+        const std::vector<Point2> expected = BruteForceTile(window, accepted, k);
+        const std::vector<Point2> ours(
+          tiles.Vertices.begin() + tiles.Offsets[k], tiles.Vertices.begin() + tiles.Offsets[k + 1]);
+        EXPECT_NEAR(tiles.Areas[k], ShoelaceArea(expected), 1e-10) << "tile " << k;
+        for (const Point2& v : ours)
+        {
+          EXPECT_TRUE(std::any_of(expected.begin(), expected.end(),
+            [&](const Point2& w) { return Near(v, w, 1e-9); }))
+            << "tile " << k << " vertex " << v.x << " " << v.y;
+        }
+        for (const Point2& w : expected)
+        {
+          EXPECT_TRUE(
+            std::any_of(ours.begin(), ours.end(), [&](const Point2& v) { return Near(v, w, 1e-9); }))
+            << "tile " << k << " misses " << w.x << " " << w.y;
+        }
+        // Anticlockwise.
+        EXPECT_GT(tiles.Areas[k], 0.0);
+      }
+    }
+  }
+}
+
+TEST(Tiles, AreasSumToTheWindowAreaAndEulerCountHolds)
+{
+  for (const bool hexagon : { false, true })
+  {
+    for (const std::size_t n : { 2u, 3u, 17u, 400u, 5000u })
+    {
+      const Window window = hexagon ? Hexagon() : Window::Rectangle(0.0, 1.0, 0.0, 1.0);
+      const std::vector<Point2> points = UniformPoints(n, unsigned(n) + hexagon, 0.05, 0.95);
+      DirichletTessellation t(window, points);
+      TessellationDual dual(t);
+      const TileSet tiles = dual.Tiles();
+      const double total = NeumaierSum(tiles.Areas);
+      EXPECT_NEAR(total, window.Area(), 1e-12 * window.Area()) << "n=" << n;
+      ASSERT_EQ(dual.DegenerateFaceCount(), 0u);
+      const ContiguityGraph graph = dual.Contiguities();
+      EXPECT_EQ(KindCount(graph, 1), 0u);
+      // Section 2.3: every contiguity counted from both sides; a point's NeighborCount counts its
+      // point neighbours and its window sides, each constraint has two constraint neighbours.
+      long sumNeighbors = 0;
+      for (const std::int32_t c : tiles.NeighborCounts)
+      {
+        sumNeighbors += c;
+      }
+      const long pointPairs = long(KindCount(graph, 0));
+      const long constraintSides = sumNeighbors - 2 * pointPairs;
+      const long constraints = long(window.EffectiveConstraints().size());
+      const long counted = 2 * pointPairs + 2 * constraintSides + 2 * constraints;
+      EXPECT_EQ(counted, 4 * constraints + 6 * long(t.AcceptedCount()) - 6) << "n=" << n;
+    }
+  }
+}
+
+TEST(Tiles, SquareLatticeHasSquareTilesAndDiagonalHalfNeighbours)
+{
+  const int side = 10;
+  std::vector<Point2> points;
+  for (int j = 0; j < side; ++j)
+  {
+    for (int i = 0; i < side; ++i)
+    {
+      points.push_back({ i + 0.5, j + 0.5 });
+    }
+  }
+  DirichletTessellation t(Window::Rectangle(0.0, side, 0.0, side), points);
+  TessellationDual dual(t);
+  EXPECT_EQ(dual.DegenerateFaceCount(), std::size_t((side - 1) * (side - 1)));
+  const TileSet tiles = dual.Tiles();
+  ASSERT_EQ(tiles.PointIds.size(), points.size());
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    EXPECT_EQ(tiles.Offsets[k + 1] - tiles.Offsets[k], 4) << k;
+    EXPECT_NEAR(tiles.Areas[k], 1.0, 1e-14);
+    EXPECT_EQ(tiles.NeighborCounts[k], 4); // interior: 4 points; border: points + window sides
+    for (std::int64_t v = tiles.Offsets[k]; v < tiles.Offsets[k + 1]; ++v)
+    {
+      EXPECT_NEAR(std::fabs(tiles.Vertices[v].x - points[k].x), 0.5, 1e-14);
+      EXPECT_NEAR(std::fabs(tiles.Vertices[v].y - points[k].y), 0.5, 1e-14);
+    }
+  }
+  const ContiguityGraph graph = dual.Contiguities();
+  std::set<std::pair<int, int>> edges, diagonals;
+  for (std::size_t k = 0; k < graph.Kinds.size(); ++k)
+  {
+    const int a = graph.Pairs[2 * k], b = graph.Pairs[2 * k + 1];
+    const int dx = std::abs(a % side - b % side), dy = std::abs(a / side - b / side);
+    if (graph.Kinds[k] == 0)
+    {
+      EXPECT_EQ(dx + dy, 1) << a << " " << b;
+      edges.insert({ a, b });
+    }
+    else
+    {
+      EXPECT_EQ(dx, 1);
+      EXPECT_EQ(dy, 1);
+      diagonals.insert({ a, b });
+    }
+  }
+  EXPECT_EQ(edges.size(), std::size_t(2 * side * (side - 1)));
+  EXPECT_EQ(diagonals.size(), std::size_t(2 * (side - 1) * (side - 1)));
+
+  const DelaunayFaces faces = dual.Faces(false);
+  ASSERT_EQ(faces.Offsets.size(), std::size_t((side - 1) * (side - 1) + 1));
+  for (std::size_t f = 0; f + 1 < faces.Offsets.size(); ++f)
+  {
+    EXPECT_EQ(faces.Offsets[f + 1] - faces.Offsets[f], 4);
+    const std::int32_t first = faces.PointIds[faces.Offsets[f]];
+    for (std::int64_t k = faces.Offsets[f]; k < faces.Offsets[f + 1]; ++k)
+    {
+      EXPECT_GE(faces.PointIds[k], first);
+    }
+  }
+  const DelaunayFaces split = dual.Faces(true);
+  ASSERT_EQ(split.Offsets.size(), std::size_t(2 * (side - 1) * (side - 1) + 1));
+  for (std::size_t f = 0; f + 1 < split.Offsets.size(); ++f)
+  {
+    const std::int32_t* v = split.PointIds.data() + split.Offsets[f];
+    EXPECT_GT(orient2d(points[v[0]], points[v[1]], points[v[2]]), 0);
+  }
+}
+
+TEST(Tiles, DelaunayFacesAreEmptyCircleTriangles)
+{
+  for (unsigned seed = 1; seed <= 5; ++seed)
+  {
+    const std::vector<Point2> points = UniformPoints(60 * seed, seed, 0.0, 1.0);
+    DirichletTessellation t(Window::Rectangle(-1, 2, -1, 2), points);
+    const DelaunayFaces faces = ComputeDelaunayFaces(t, false);
+    std::size_t hull = 0;
+    for (std::int32_t tri = 0; tri < std::int32_t(t.Origin().size() / 3); ++tri)
+    {
+      hull += t.IsGhostTriangle(tri);
+    }
+    ASSERT_EQ(faces.Offsets.size() - 1, 2 * points.size() - 2 - hull);
+    std::set<std::vector<std::int32_t>> seen;
+    for (std::size_t f = 0; f + 1 < faces.Offsets.size(); ++f)
+    {
+      ASSERT_EQ(faces.Offsets[f + 1] - faces.Offsets[f], 3);
+      const std::int32_t* v = faces.PointIds.data() + faces.Offsets[f];
+      EXPECT_LT(v[0], v[1]);
+      EXPECT_LT(v[0], v[2]);
+      EXPECT_TRUE(seen.insert({ v[0], v[1], v[2] }).second);
+      for (std::size_t q = 0; q < points.size(); ++q)
+      {
+        EXPECT_LE(incircle(points[v[0]], points[v[1]], points[v[2]], points[q]), 0);
+      }
+    }
+  }
+}
+
+TEST(Tiles, EdgesOutsideTheWindowAreNotContiguities)
+{
+  // Two points near the bottom of a wide, flat window and one far above: the bisector of the two
+  // bottom points crosses the window, but an obtuse configuration's edge can lie outside.
+  const std::vector<Point2> points{ { 0.0, 0.0 }, { 2.0, 0.0 }, { 1.0, 0.05 } };
+  DirichletTessellation t(Window::Rectangle(-1.0, 3.0, -0.1, 0.2), points);
+  const ContiguityGraph graph = ComputeContiguityGraph(t);
+  // The Voronoi edge between 0 and 1 runs from the circumcentre (1, about -9.975) downwards:
+  // entirely below the window.
+  std::set<std::pair<int, int>> pairs;
+  for (std::size_t k = 0; k < graph.Kinds.size(); ++k)
+  {
+    pairs.insert({ graph.Pairs[2 * k], graph.Pairs[2 * k + 1] });
+  }
+  EXPECT_EQ(pairs, (std::set<std::pair<int, int>>{ { 0, 2 }, { 1, 2 } }));
+  const TileSet tiles = ComputeTiles(t);
+  EXPECT_NEAR(NeumaierSum(tiles.Areas), 4.0 * 0.3, 1e-14);
+}

@@ -1,0 +1,509 @@
+// The convex window: shapes, redundancy (checked against an exact rational reference), order,
+// errors, exact containment and the area.
+#include "errors.h"
+#include "predicates.h"
+#include "window.h"
+
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+using tessera::HalfPlane;
+using tessera::InputError;
+using tessera::Point2;
+using tessera::Window;
+
+namespace
+{
+
+mpq_class Q(double x)
+{
+  return mpq_class(x);
+}
+
+bool inside_exact(const HalfPlane& h, const Point2& p)
+{
+  return Q(h.a) * Q(p.x) + Q(h.b) * Q(p.y) + Q(h.c) < 0;
+}
+
+// Throws, and the message contains `part`.
+template <class F>
+void expect_input_error(F f, const std::string& part)
+{
+  try
+  {
+    f();
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+    return;
+  }
+  ADD_FAILURE() << "no InputError (expected one mentioning \"" << part << "\")";
+}
+
+struct QPoint
+{
+  mpq_class x, y;
+};
+
+// Exact reference: the corners of the closed window are the pairwise crossings satisfying every
+// constraint non-strictly; when the window has positive area, a constraint is effective iff two
+// distinct corners lie on its line.
+std::vector<QPoint> corners_reference(const std::vector<HalfPlane>& hs)
+{
+  std::vector<QPoint> corners;
+  for (std::size_t i = 0; i < hs.size(); ++i)
+  {
+    for (std::size_t j = i + 1; j < hs.size(); ++j)
+    {
+      const mpq_class d = Q(hs[i].a) * Q(hs[j].b) - Q(hs[j].a) * Q(hs[i].b);
+      if (d == 0)
+      {
+        continue;
+      }
+      QPoint p{ (Q(hs[i].b) * Q(hs[j].c) - Q(hs[j].b) * Q(hs[i].c)) / d,
+        (Q(hs[i].c) * Q(hs[j].a) - Q(hs[j].c) * Q(hs[i].a)) / d };
+      bool ok = true;
+      for (const HalfPlane& h : hs)
+      {
+        ok = ok && Q(h.a) * p.x + Q(h.b) * p.y + Q(h.c) <= 0;
+      }
+      if (ok)
+      {
+        corners.push_back(p);
+      }
+    }
+  }
+  return corners;
+}
+
+std::set<std::size_t> effective_reference(const std::vector<HalfPlane>& hs)
+{
+  const std::vector<QPoint> corners = corners_reference(hs);
+  std::set<std::size_t> result;
+  for (std::size_t i = 0; i < hs.size(); ++i)
+  {
+    std::vector<QPoint> on;
+    for (const QPoint& p : corners)
+    {
+      if (Q(hs[i].a) * p.x + Q(hs[i].b) * p.y + Q(hs[i].c) == 0)
+      {
+        bool seen = false;
+        for (const QPoint& o : on)
+        {
+          seen = seen || (o.x == p.x && o.y == p.y);
+        }
+        if (!seen)
+        {
+          on.push_back(p);
+        }
+      }
+    }
+    // Of several copies of one half-plane (positive multiples), the first is the effective one.
+    bool copy = false;
+    for (std::size_t j = 0; j < i; ++j)
+    {
+      const HalfPlane& p = hs[i];
+      const HalfPlane& q = hs[j];
+      copy = copy ||
+        (Q(p.a) * Q(q.b) == Q(q.a) * Q(p.b) && Q(p.a) * Q(q.c) == Q(q.a) * Q(p.c) &&
+          Q(p.b) * Q(q.c) == Q(q.b) * Q(p.c) && Q(p.a) * Q(q.a) + Q(p.b) * Q(q.b) > 0);
+    }
+    if (on.size() >= 2 && !copy)
+    {
+      result.insert(i);
+    }
+  }
+  return result;
+}
+
+// Independent area: all pairwise crossings inside the closed window (tolerance), sorted by angle
+// about their mean, shoelace in long double.
+double area_reference(const std::vector<HalfPlane>& hs)
+{
+  std::vector<Point2> pts;
+  for (std::size_t i = 0; i < hs.size(); ++i)
+  {
+    for (std::size_t j = i + 1; j < hs.size(); ++j)
+    {
+      const long double d = (long double)hs[i].a * hs[j].b - (long double)hs[j].a * hs[i].b;
+      if (std::fabs((double)d) < 1e-14)
+      {
+        continue;
+      }
+      const Point2 p{ double(((long double)hs[i].b * hs[j].c - (long double)hs[j].b * hs[i].c) / d),
+        double(((long double)hs[i].c * hs[j].a - (long double)hs[j].c * hs[i].a) / d) };
+      bool ok = true;
+      for (const HalfPlane& h : hs)
+      {
+        const double scale = std::hypot(h.a, h.b);
+        ok = ok && (h.a * p.x + h.b * p.y + h.c) / scale < 1e-9;
+      }
+      if (ok)
+      {
+        pts.push_back(p);
+      }
+    }
+  }
+  double mx = 0, my = 0;
+  for (const Point2& p : pts)
+  {
+    mx += p.x / pts.size();
+    my += p.y / pts.size();
+  }
+  std::sort(pts.begin(), pts.end(), [&](const Point2& p, const Point2& q) {
+    return std::atan2(p.y - my, p.x - mx) < std::atan2(q.y - my, q.x - mx);
+  });
+  long double s = 0;
+  for (std::size_t k = 0; k < pts.size(); ++k)
+  {
+    const Point2& p = pts[k];
+    const Point2& q = pts[(k + 1) % pts.size()];
+    s += (long double)p.x * q.y - (long double)q.x * p.y;
+  }
+  return double(s / 2);
+}
+
+// Structural checks every window must pass.
+void check_structure(const Window& w, const std::vector<HalfPlane>& input)
+{
+  const auto& eff = w.EffectiveConstraints();
+  const auto& ids = w.EffectiveIds();
+  const auto& red = w.RedundantIds();
+  const auto& v = w.Vertices();
+  ASSERT_EQ(eff.size(), ids.size());
+  ASSERT_EQ(v.size(), eff.size());
+  ASSERT_GE(v.size(), 3u);
+  EXPECT_EQ(ids.size() + red.size(), input.size());
+  std::set<std::size_t> all(ids.begin(), ids.end());
+  all.insert(red.begin(), red.end());
+  EXPECT_EQ(all.size(), input.size());
+  for (std::size_t k = 0; k < eff.size(); ++k)
+  {
+    EXPECT_EQ(eff[k].a, input[ids[k]].a);
+    EXPECT_EQ(eff[k].b, input[ids[k]].b);
+    EXPECT_EQ(eff[k].c, input[ids[k]].c);
+    // Anticlockwise and convex.
+    const Point2& p = v[k];
+    const Point2& q = v[(k + 1) % v.size()];
+    const Point2& r = v[(k + 2) % v.size()];
+    EXPECT_EQ(tessera::orient2d(p, q, r), 1);
+    // Edge k runs from vertex k to vertex k + 1 on constraint k: nearly zero there.
+    const double scale = std::hypot(eff[k].a, eff[k].b);
+    const double extent = 1.0 + std::max(std::fabs(p.x) + std::fabs(p.y), std::fabs(q.x) + std::fabs(q.y));
+    EXPECT_LT(std::fabs(eff[k].a * p.x + eff[k].b * p.y + eff[k].c) / scale, 1e-12 * extent);
+    EXPECT_LT(std::fabs(eff[k].a * q.x + eff[k].b * q.y + eff[k].c) / scale, 1e-12 * extent);
+    // The edge's direction (-b, a) runs from vertex k to vertex k + 1.
+    EXPECT_GT((q.x - p.x) * -eff[k].b + (q.y - p.y) * eff[k].a, 0.0);
+  }
+}
+
+std::vector<HalfPlane> unit_square_constraints()
+{
+  return { { -1, 0, 0 }, { 1, 0, -1 }, { 0, -1, 0 }, { 0, 1, -1 } };
+}
+
+} // namespace
+
+TEST(Window, Rectangle)
+{
+  const Window w = Window::Rectangle(-2, 3, 1, 5);
+  ASSERT_EQ(w.Vertices().size(), 4u);
+  const Point2 expected[4] = { { -2, 1 }, { 3, 1 }, { 3, 5 }, { -2, 5 } };
+  for (int k = 0; k < 4; ++k)
+  {
+    EXPECT_EQ(w.Vertices()[k], expected[k]) << k;
+  }
+  EXPECT_TRUE(w.RedundantIds().empty());
+  EXPECT_TRUE(w.IsAxisAlignedRectangle());
+  EXPECT_DOUBLE_EQ(w.Area(), 20.0);
+  EXPECT_TRUE(w.Contains({ 0, 2 }));
+  EXPECT_FALSE(w.Contains({ -2, 2 })); // on the boundary: not strictly inside
+  EXPECT_FALSE(w.Contains({ 3, 5 }));
+  EXPECT_FALSE(w.Contains({ 4, 2 }));
+  EXPECT_TRUE(w.Contains({ std::nextafter(-2.0, 0.0), std::nextafter(5.0, 0.0) }));
+  // Reflections in the four sides.
+  const Point2 p{ 0, 2 };
+  EXPECT_EQ(w.Reflect(p, 0), (Point2{ 0, 0 }));
+  EXPECT_EQ(w.Reflect(p, 1), (Point2{ 6, 2 }));
+  EXPECT_EQ(w.Reflect(p, 2), (Point2{ 0, 8 }));
+  EXPECT_EQ(w.Reflect(p, 3), (Point2{ -4, 2 }));
+  check_structure(w, w.EffectiveConstraints());
+}
+
+TEST(Window, RectangleRejectsBadBounds)
+{
+  expect_input_error([] { Window::Rectangle(1, 1, 0, 1); }, "empty");
+  expect_input_error([] { Window::Rectangle(0, 1, 2, 1); }, "empty");
+  expect_input_error([] { Window::Rectangle(std::nan(""), 1, 0, 1); }, "xmin");
+  expect_input_error(
+    [] { Window::Rectangle(0, 1, 0, std::numeric_limits<double>::infinity()); }, "ymax");
+}
+
+TEST(Window, TriangleInAnyOrder)
+{
+  // x > 0, y > 0, x + y < 1, given clockwise.
+  const std::vector<HalfPlane> hs = { { 0, -1, 0 }, { -1, 0, 0 }, { 1, 1, -1 } };
+  const Window w(hs);
+  check_structure(w, hs);
+  EXPECT_EQ(w.EffectiveIds(), (std::vector<std::size_t>{ 0, 2, 1 }));
+  EXPECT_EQ(w.Vertices()[0], (Point2{ 0, 0 }));
+  EXPECT_EQ(w.Vertices()[1], (Point2{ 1, 0 }));
+  EXPECT_EQ(w.Vertices()[2], (Point2{ 0, 1 }));
+  EXPECT_DOUBLE_EQ(w.Area(), 0.5);
+  EXPECT_FALSE(w.IsAxisAlignedRectangle());
+  EXPECT_TRUE(w.Contains({ 0.25, 0.25 }));
+  EXPECT_FALSE(w.Contains({ 0.5, 0.5 }));
+  EXPECT_TRUE(w.Contains({ 0.5, std::nextafter(0.5, 0.0) }));
+}
+
+TEST(Window, RedundantConstraintsAreReported)
+{
+  std::vector<HalfPlane> hs = unit_square_constraints();
+  hs.push_back({ 1, 1, -2 });   // 4: touches the corner (1, 1) only
+  hs.push_back({ 1, 0, -5 });   // 5: x < 5, far outside
+  hs.push_back({ -1, -1, -3 }); // 6: x + y > -3
+  hs.push_back({ 1, -1, -1 });  // 7: x - y < 1: touches the corner (1, 0)
+  hs.push_back({ 1, 1, -1.5 }); // 8: x + y < 1.5: cuts the corner (1, 1) off
+  const Window w(hs);
+  check_structure(w, hs);
+  EXPECT_EQ(w.RedundantIds(), (std::vector<std::size_t>{ 4, 5, 6, 7 }));
+  EXPECT_EQ(w.EffectiveIds(), (std::vector<std::size_t>{ 0, 2, 1, 8, 3 }));
+  EXPECT_DOUBLE_EQ(w.Area(), 1.0 - 0.125);
+}
+
+TEST(Window, DuplicatedConstraintsKeepTheFirst)
+{
+  std::vector<HalfPlane> hs = unit_square_constraints();
+  hs.push_back({ 1, 0, -1 }); // 4: copy of 1
+  hs.push_back({ 2, 0, -2 }); // 5: scaled copy of 1
+  hs.insert(hs.begin(), HalfPlane{ 0.5, 0, -0.5 }); // 0: scaled copy of (now) 2, given first
+  const Window w(hs);
+  check_structure(w, hs);
+  EXPECT_EQ(w.RedundantIds(), (std::vector<std::size_t>{ 2, 5, 6 }));
+  EXPECT_EQ(w.EffectiveIds(), (std::vector<std::size_t>{ 0, 4, 1, 3 }));
+  EXPECT_DOUBLE_EQ(w.Area(), 1.0);
+}
+
+TEST(Window, EmptyWindows)
+{
+  std::vector<HalfPlane> hs = unit_square_constraints();
+  hs.push_back({ 1, 1, 3 }); // x + y < -3: misses the square
+  expect_input_error([&] { Window w(hs); }, "empty");
+  // Parallel sides with no room between them (zero width) or crossed.
+  expect_input_error(
+    [] { Window w({ { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, -1 }, { 0, -1, 0 } }); }, "empty");
+  expect_input_error(
+    [] { Window w({ { 1, 0, 1 }, { -1, 0, 0 }, { 0, 1, -1 }, { 0, -1, 0 } }); }, "empty");
+  // A triangle pointing the wrong way: x < 0, y < 0, x + y > 1.
+  expect_input_error([] { Window w({ { 1, 0, 0 }, { 0, 1, 0 }, { -1, -1, 1 } }); }, "empty");
+  // Three lines through one point: zero area.
+  expect_input_error([] { Window w({ { 1, 0, 0 }, { 0, 1, 0 }, { -1, -1, 0 } }); }, "empty");
+}
+
+TEST(Window, UnboundedWindows)
+{
+  expect_input_error([] { Window w(std::vector<HalfPlane>{}); }, "unbounded");
+  expect_input_error([] { Window w({ { 1, 0, 0 } }); }, "unbounded");
+  expect_input_error([] { Window w({ { 1, 0, 0 }, { 0, 1, 0 } }); }, "unbounded");
+  // A strip.
+  expect_input_error([] { Window w({ { 1, 0, -1 }, { -1, 0, 0 } }); }, "unbounded");
+  // All normals in a half-plane.
+  expect_input_error(
+    [] { Window w({ { 1, 0, -1 }, { 0, 1, -1 }, { 1, 1, -5 }, { 1, -0.5, -2 } }); }, "unbounded");
+  // Three sides of a square.
+  expect_input_error([] { Window w({ { -1, 0, 0 }, { 1, 0, -1 }, { 0, -1, 0 } }); }, "unbounded");
+}
+
+TEST(Window, BadConstraintsNameTheirIndex)
+{
+  std::vector<HalfPlane> hs = unit_square_constraints();
+  hs.push_back({ 1, std::nan(""), 0 });
+  expect_input_error([&] { Window w(hs); }, "constraint 4 has a NaN");
+  hs.back() = { 1, 0, std::numeric_limits<double>::infinity() };
+  expect_input_error([&] { Window w(hs); }, "constraint 4 has a");
+  hs.back() = { 0, 0, -1 };
+  expect_input_error([&] { Window w(hs); }, "constraint 4 has a == b == 0");
+}
+
+TEST(Window, RedundancyMatchesExactReference)
+{
+  // Small-integer coefficients: many lines through common corners, parallels and duplicates.
+  std::mt19937_64 rng(21);
+  std::uniform_int_distribution<int> coef(-3, 3);
+  int windows = 0, redundant = 0;
+  for (int trial = 0; trial < 1500; ++trial)
+  {
+    std::vector<HalfPlane> hs = unit_square_constraints();
+    // Scale the square to [0, 4]^2 so that corners stay integer-ish.
+    for (HalfPlane& h : hs)
+    {
+      h.c *= 4;
+    }
+    const int extra = 1 + trial % 8;
+    for (int k = 0; k < extra; ++k)
+    {
+      HalfPlane h{ double(coef(rng)), double(coef(rng)), 0.0 };
+      if (h.a == 0 && h.b == 0)
+      {
+        h.a = 1;
+      }
+      // Mostly lines near the square's centre (2, 2), which keep it on their inner side.
+      h.c = -(2 * h.a + 2 * h.b) - double(std::uniform_int_distribution<int>(-1, 8)(rng));
+      hs.push_back(h);
+    }
+    std::shuffle(hs.begin(), hs.end(), rng);
+    std::set<std::size_t> expected;
+    bool threw = false;
+    try
+    {
+      const Window w(hs);
+      check_structure(w, hs);
+      expected = effective_reference(hs);
+      EXPECT_EQ(std::set<std::size_t>(w.EffectiveIds().begin(), w.EffectiveIds().end()), expected);
+      EXPECT_NEAR(w.Area(), area_reference(hs), 1e-12 * 16);
+      ++windows;
+      redundant += int(w.RedundantIds().size());
+    }
+    catch (const InputError& e)
+    {
+      threw = true;
+      // Then the exact closed intersection is empty or has zero area: its corners are collinear.
+      const std::vector<QPoint> corners = corners_reference(hs);
+      bool flat = true;
+      for (std::size_t i = 0; i < corners.size() && flat; ++i)
+      {
+        for (std::size_t j = 0; j < corners.size() && flat; ++j)
+        {
+          for (std::size_t k = 0; k < corners.size() && flat; ++k)
+          {
+            flat = (corners[j].x - corners[i].x) * (corners[k].y - corners[i].y) -
+                (corners[j].y - corners[i].y) * (corners[k].x - corners[i].x) ==
+              0;
+          }
+        }
+      }
+      EXPECT_TRUE(flat) << e.what();
+    }
+    if (HasFailure())
+    {
+      ADD_FAILURE() << "trial " << trial << (threw ? " (threw)" : "");
+      return;
+    }
+  }
+  EXPECT_GT(windows, 1000);
+  EXPECT_GT(redundant, 2000);
+  std::printf("%d windows, %d redundant constraints\n", windows, redundant);
+}
+
+TEST(Window, ContainsIsExact)
+{
+  // Random convex polygons from tangents of a circle, with redundant extra constraints; points
+  // on and next to the edges. Contains must equal the exact conjunction of *all* constraints.
+  std::mt19937_64 rng(22);
+  std::uniform_real_distribution<double> u(0, 1);
+  int checked = 0, inside = 0;
+  for (int trial = 0; trial < 300; ++trial)
+  {
+    std::vector<HalfPlane> hs;
+    const int sides = 3 + trial % 10;
+    const double cx = u(rng) * 100 - 50, cy = u(rng) * 100 - 50, r = 0.1 + u(rng) * 10;
+    for (int k = 0; k < sides; ++k)
+    {
+      const double t = 2 * M_PI * (k + 0.3 * u(rng)) / sides;
+      const double a = std::cos(t), b = std::sin(t);
+      const double dist = r * (k % 3 == 2 ? 3.0 : 1.0); // some far (redundant) tangents
+      hs.push_back({ a, b, -(a * cx + b * cy) - dist });
+    }
+    // Guarantee boundedness with a far square.
+    for (const HalfPlane& h : unit_square_constraints())
+    {
+      hs.push_back({ h.a, h.b, h.c * 1000 - 500 });
+    }
+    const Window w(hs);
+    check_structure(w, hs);
+    EXPECT_NEAR(w.Area(), area_reference(hs), 1e-10 * w.Area());
+    for (int s = 0; s < 300; ++s)
+    {
+      Point2 p;
+      if (s % 3 == 0)
+      {
+        p = { cx + (u(rng) - 0.5) * 8 * r, cy + (u(rng) - 0.5) * 8 * r };
+      }
+      else
+      {
+        // On (up to rounding) an edge between two corners, possibly nudged by an ulp.
+        const std::size_t k = std::size_t(u(rng) * w.Vertices().size());
+        const Point2& a = w.Vertices()[k];
+        const Point2& b = w.Vertices()[(k + 1) % w.Vertices().size()];
+        const double t = u(rng);
+        p = { a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) };
+        if (s % 3 == 2)
+        {
+          p.x = std::nextafter(p.x, u(rng) < 0.5 ? -1e300 : 1e300);
+        }
+      }
+      bool expected = true;
+      for (const HalfPlane& h : hs)
+      {
+        expected = expected && inside_exact(h, p);
+      }
+      ASSERT_EQ(w.Contains(p), expected) << "trial " << trial << " sample " << s;
+      ++checked;
+      inside += expected;
+    }
+  }
+  EXPECT_GT(inside, checked / 10);
+  EXPECT_LT(inside, checked - checked / 10);
+}
+
+TEST(Window, ExtremeCoefficients)
+{
+  // Constraints scaled by huge or tiny factors describe (nearly) the same window; with powers of
+  // two exactly the same one.
+  for (double s : { 0x1p-1000, 0x1p-498, 0x1p498, 0x1p1000, 3e-300, 1e-150, 1e150, 7e300 })
+  {
+    std::vector<HalfPlane> hs = unit_square_constraints();
+    for (HalfPlane& h : hs)
+    {
+      h = { h.a * s, h.b * s, h.c * s };
+    }
+    hs.push_back({ s, s, -1.5 * s });
+    const Window w(hs);
+    check_structure(w, hs);
+    EXPECT_EQ(w.RedundantIds().size(), 0u);
+    EXPECT_NEAR(w.Area(), 0.875, 1e-15);
+    const Point2 probes[] = { { 0.5, 0.5 }, { 0.75, 0.75 }, { 0.75, std::nextafter(0.75, 0.0) },
+      { std::nextafter(0.75, 1.0), 0.75 }, { 1, 0.25 }, { 0.25, 0 } };
+    for (const Point2& p : probes)
+    {
+      bool expected = true;
+      for (const HalfPlane& h : hs)
+      {
+        expected = expected && inside_exact(h, p);
+      }
+      EXPECT_EQ(w.Contains(p), expected) << s << " " << p.x << " " << p.y;
+    }
+    if (std::ilogb(s) == std::log2(s))
+    {
+      EXPECT_TRUE(w.Contains({ 0.5, 0.5 }));
+      EXPECT_FALSE(w.Contains({ 0.75, 0.75 }));
+      EXPECT_TRUE(w.Contains({ 0.75, std::nextafter(0.75, 0.0) }));
+    }
+    // Reflection in the bottom side y > 0 (input 2).
+    const std::size_t bottom =
+      std::find(w.EffectiveIds().begin(), w.EffectiveIds().end(), 2u) - w.EffectiveIds().begin();
+    const Point2 r = w.Reflect({ 0.5, 0.5 }, bottom);
+    EXPECT_NEAR(r.x, 0.5, 1e-14);
+    EXPECT_NEAR(r.y, -0.5, 1e-14);
+  }
+}

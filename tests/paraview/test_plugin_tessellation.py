@@ -1,0 +1,59 @@
+"""pvbatch: Filters > Tessera > Dirichlet Tessellation and Delaunay Triangulation on projected
+Colorado gauges; the fetched tiles cover the window and each tile's point is the nearest gauge."""
+
+import csv
+import os
+import sys
+
+from paraview import servermanager
+from paraview.simple import CSVReader, LoadPlugin, TableToPoints
+
+LoadPlugin(os.environ["TESSERA_PLUGIN"], remote=False, ns=globals())
+stations = os.path.join(os.environ["TESSERA_SOURCE_DIR"], "examples", "data", "colorado_stations.csv")
+reader = CSVReader(FileName=[stations])
+points = TableToPoints(Input=reader, XColumn="lon", YColumn="lat", ZColumn="elev_m")
+projected = GeographicProjection(Input=points)  # noqa: F821 (from LoadPlugin)
+tess = DirichletTessellation(Input=projected)  # noqa: F821
+tess.Padding = 0.05
+tess.UpdatePipeline()
+tiles = servermanager.Fetch(tess)
+failures = []
+
+gauges = servermanager.Fetch(projected)
+n = gauges.GetNumberOfPoints()
+fd = tiles.GetFieldData()
+dups = fd.GetArray("DuplicatePointIds").GetNumberOfTuples()
+if tiles.GetNumberOfCells() + dups != n:
+    failures.append(f"{tiles.GetNumberOfCells()} tiles + {dups} duplicates != {n} gauges")
+b = gauges.GetBounds()
+side = max(b[1] - b[0], b[3] - b[2])
+window_area = (b[1] - b[0] + 0.1 * side) * (b[3] - b[2] + 0.1 * side)
+areas = tiles.GetCellData().GetArray("Area")
+total = sum(areas.GetValue(c) for c in range(tiles.GetNumberOfCells()))
+if abs(total - window_area) > 1e-9 * window_area:
+    failures.append(f"tile areas {total} != window area {window_area}")
+ids = tiles.GetCellData().GetArray("PointId")
+station = tiles.GetCellData().GetAbstractArray("station_id")
+if station is None:
+    failures.append("the gauges' point data did not follow their tiles")
+# brute force: each tile's centroid is nearest to its own gauge
+coords = [gauges.GetPoint(i)[:2] for i in range(n)]
+for c in range(0, tiles.GetNumberOfCells(), 7):
+    cell = tiles.GetCell(c).GetPointIds()
+    m = cell.GetNumberOfIds()
+    cx = sum(tiles.GetPoint(cell.GetId(k))[0] for k in range(m)) / m
+    cy = sum(tiles.GetPoint(cell.GetId(k))[1] for k in range(m)) / m
+    d = [(x - cx) ** 2 + (y - cy) ** 2 for x, y in coords]
+    if d[ids.GetValue(c)] > min(d) * (1 + 1e-9):
+        failures.append(f"tile {c}: centroid not nearest to its gauge {ids.GetValue(c)}")
+
+tri = DelaunayTriangulation(Input=projected)  # noqa: F821
+tri.UpdatePipeline()
+faces = servermanager.Fetch(tri)
+if faces.GetNumberOfPoints() != n or faces.GetNumberOfCells() < n:
+    failures.append(f"Delaunay: {faces.GetNumberOfPoints()} points, {faces.GetNumberOfCells()} faces")
+
+if failures:
+    print("FAIL:\n" + "\n".join(failures[:20]))
+    sys.exit(1)
+print("1 passed, 0 failed")

@@ -1,0 +1,241 @@
+"""vtkDirichletTessellation and vtkDelaunayTriangulation from Python, checked against independent
+computations: brute-force nearest points, VTK's own vtkDelaunay2D, and hand-known lattices."""
+
+import math
+import random
+from fractions import Fraction
+
+import numpy as np
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkDoubleArray, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkFiltersCore import vtkDelaunay2D
+
+from tessera import vtkDelaunayTriangulation, vtkDirichletTessellation
+from tessera_testing import check, check_close, run
+
+
+def make_points(coords, values=None):
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    for x, y in coords:
+        points.InsertNextPoint(x, y, 0.0)
+    data = vtkPolyData()
+    data.SetPoints(points)
+    if values is not None:
+        array = vtkDoubleArray()
+        array.SetName("precip")
+        for v in values:
+            array.InsertNextValue(v)
+        data.GetPointData().AddArray(array)
+    return data
+
+
+def tessellate(data, bounds=None, algorithm="GreenSibson"):
+    f = vtkDirichletTessellation()
+    f.SetInputData(data)
+    if bounds:
+        f.SetWindowBounds(*bounds)
+    getattr(f, f"SetAlgorithmTo{algorithm}")()
+    f.Update()
+    return f
+
+
+def tile_polygons(tiles):
+    polys = []
+    for c in range(tiles.GetNumberOfCells()):
+        ids = tiles.GetCell(c).GetPointIds()
+        polys.append(np.array([tiles.GetPoint(ids.GetId(k))[:2] for k in range(ids.GetNumberOfIds())]))
+    return polys
+
+
+def shoelace(poly):
+    x, y = poly[:, 0], poly[:, 1]
+    return 0.5 * float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y))
+
+
+def test_tiles_are_nearest_point_regions():
+    rng = random.Random(1)
+    coords = [(rng.uniform(0, 10), rng.uniform(0, 10)) for _ in range(300)]
+    values = [rng.uniform(0, 50) for _ in coords]
+    f = tessellate(make_points(coords, values), bounds=(-1, 11, -1, 11))
+    tiles = f.GetOutput(0)
+    check(tiles.GetNumberOfCells() == 300, "one tile per point")
+    pts = np.array(coords)
+    ids = tiles.GetCellData().GetArray("PointId")
+    areas = tiles.GetCellData().GetArray("Area")
+    precip = tiles.GetCellData().GetArray("precip")
+    total = 0.0
+    for c, poly in enumerate(tile_polygons(tiles)):
+        pid = ids.GetValue(c)
+        area = shoelace(poly)
+        check(area > 0, f"tile {c} is anticlockwise")
+        check_close(areas.GetValue(c), area, 1e-9 * 144, f"Area of tile {c}")
+        total += areas.GetValue(c)
+        check(precip.GetValue(c) == values[pid], f"point data follows tile {c}")
+        # Brute force: sample points inside the tile (convex combinations of its corners) are
+        # nearest to the tile's point, and every corner is equidistant to it and its nearest.
+        rng2 = np.random.default_rng(c)
+        for _ in range(5):
+            w = rng2.dirichlet(np.ones(len(poly)))
+            q = w @ poly
+            d = np.hypot(*(pts - q).T)
+            check(d[pid] <= d.min() * (1 + 1e-9) + 1e-12, f"sample in tile {c} nearest to point {pid}")
+        for corner in poly:
+            d = np.hypot(*(pts - corner).T)
+            check(abs(d[pid] - d.min()) <= 1e-9 * 12, f"corner of tile {c} equidistant")
+    check_close(total, 144.0, 144.0 * 1e-12, "tile areas sum to the window area")
+
+
+def delaunay2d_triangles(coords):
+    d = vtkDelaunay2D()
+    d.SetInputData(make_points(coords))
+    d.Update()
+    out = d.GetOutput()
+    tris = set()
+    for c in range(out.GetNumberOfCells()):
+        ids = out.GetCell(c).GetPointIds()
+        tris.add(tuple(sorted(ids.GetId(k) for k in range(3))))
+    return tris
+
+
+def test_delaunay_faces_match_vtk_delaunay2d_and_count():
+    rng = random.Random(2)
+    coords = [(rng.uniform(0, 1), rng.uniform(0, 1)) for _ in range(400)]
+    t = vtkDelaunayTriangulation()
+    t.SetInputData(make_points(coords))
+    t.Update()
+    out = t.GetOutput()
+    check(out.GetNumberOfPoints() == 400, "all input points kept in order")
+    ours = set()
+    for c in range(out.GetNumberOfCells()):
+        ids = out.GetCell(c).GetPointIds()
+        check(ids.GetNumberOfIds() == 3, "random points give triangles")
+        ours.add(tuple(sorted(ids.GetId(k) for k in range(3))))
+    # vtkDelaunay2D (inexact) is known to miss thin triangles along the hull: every triangle it
+    # finds must be ours, and each one only we find must pass the exact empty-circle test.
+    theirs = delaunay2d_triangles(coords)
+    check(theirs <= ours, f"{len(theirs - ours)} vtkDelaunay2D triangles are missing")
+    for tri in sorted(ours - theirs) + sorted(ours)[:40]:
+        check(exactly_empty_circle(tri, coords), f"triangle {tri} has a point in its circumcircle")
+    # 2n - 2 - h triangles, h from the convex hull (monotone chain, computed here)
+    hull = convex_hull(coords)
+    check(len(ours) == 2 * 400 - 2 - len(hull), f"{len(ours)} triangles for h = {len(hull)}")
+
+
+def exactly_empty_circle(tri, coords):
+    """Brute force in exact rational arithmetic: no point strictly inside the circumcircle."""
+    a, b, c = [tuple(Fraction(v) for v in coords[i]) for i in tri]
+    orientation = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+    for j, p in enumerate(coords):
+        if j in tri:
+            continue
+        d = (Fraction(p[0]), Fraction(p[1]))
+        rows = [(q[0] - d[0], q[1] - d[1]) for q in (a, b, c)]
+        rows = [(x, y, x * x + y * y) for x, y in rows]
+        det = (rows[0][0] * (rows[1][1] * rows[2][2] - rows[1][2] * rows[2][1])
+               - rows[0][1] * (rows[1][0] * rows[2][2] - rows[1][2] * rows[2][0])
+               + rows[0][2] * (rows[1][0] * rows[2][1] - rows[1][1] * rows[2][0]))
+        if det * (1 if orientation > 0 else -1) > 0:
+            return False
+    return True
+
+
+def convex_hull(coords):
+    pts = sorted(set(coords))
+
+    def cross(o, a, b):
+        return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+    lower, upper = [], []
+    for p in pts:
+        while len(lower) >= 2 and cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    for p in reversed(pts):
+        while len(upper) >= 2 and cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    return lower[:-1] + upper[:-1]
+
+
+def test_square_lattice_has_square_tiles_and_diagonal_half_neighbours():
+    coords = [(i, j) for i in range(5) for j in range(5)]
+    f = tessellate(make_points(coords), bounds=(-0.5, 4.5, -0.5, 4.5))
+    tiles, graph = f.GetOutput(0), f.GetOutput(1)
+    areas = tiles.GetCellData().GetArray("Area")
+    counts = tiles.GetCellData().GetArray("NeighborCount")
+    for c in range(tiles.GetNumberOfCells()):
+        check_close(areas.GetValue(c), 1.0, 1e-15, f"tile {c} is a unit square")
+        check(counts.GetValue(c) == 4, f"tile {c} has 4 sides (neighbours + window edges)")
+    kinds = graph.GetCellData().GetArray("Kind")
+    edges, halves = set(), set()
+    for c in range(graph.GetNumberOfCells()):
+        ids = graph.GetCell(c).GetPointIds()
+        a, b = coords[ids.GetId(0)], coords[ids.GetId(1)]
+        (halves if kinds.GetValue(c) == 1 else edges).add((a, b))
+    for (a, b) in edges:
+        check(abs(a[0] - b[0]) + abs(a[1] - b[1]) == 1, f"edge neighbours {a} {b} are adjacent")
+    for (a, b) in halves:
+        check(abs(a[0] - b[0]) == 1 and abs(a[1] - b[1]) == 1, f"half-neighbours {a} {b} are diagonal")
+    check(len(edges) == 2 * 5 * 4, f"{len(edges)} edge contiguities")
+    check(len(halves) == 2 * 4 * 4, f"{len(halves)} half-neighbour pairs (both diagonals of 16 squares)")
+    t = vtkDelaunayTriangulation()
+    t.SetInputData(make_points(coords))
+    t.Update()
+    check(t.GetOutput().GetNumberOfCells() == 16, "16 degenerate square faces")
+    t.SplitDegenerateFacesOn()
+    t.Update()
+    check(t.GetOutput().GetNumberOfCells() == 32, "split into 32 triangles")
+
+
+def test_unused_points_are_reported_with_ids():
+    coords = [(0.2, 0.2), (0.8, 0.3), (5.0, 5.0), (0.2, 0.2), (0.5, 0.9), (0.8, 0.3)]
+    f = tessellate(make_points(coords), bounds=(0, 1, 0, 1))
+    fd = f.GetOutput(0).GetFieldData()
+    rejected = [fd.GetArray("RejectedPointIds").GetValue(i) for i in range(fd.GetArray("RejectedPointIds").GetNumberOfTuples())]
+    dups = fd.GetArray("DuplicatePointIds")
+    of = fd.GetArray("DuplicateOfPointIds")
+    pairs = sorted((dups.GetValue(i), of.GetValue(i)) for i in range(dups.GetNumberOfTuples()))
+    check(rejected == [2], f"point 2 outside the window: {rejected}")
+    check(pairs == [(3, 0), (5, 1)], f"duplicates reported with their originals: {pairs}")
+    check(f.GetOutput(0).GetNumberOfCells() == 3, "three distinct points inside")
+
+
+def test_degenerate_inputs_give_valid_output():
+    for coords, cells in [([], 0), ([(0.5, 0.5)], 1), ([(0.2, 0.5), (0.7, 0.5)], 2),
+                          ([(0.1, 0.1), (0.3, 0.3), (0.5, 0.5), (0.9, 0.9)], 4)]:
+        f = tessellate(make_points(coords), bounds=(0, 1, 0, 1))
+        tiles = f.GetOutput(0)
+        check(tiles.GetNumberOfCells() == cells, f"{len(coords)} points give {cells} tiles")
+        total = sum(tiles.GetCellData().GetArray("Area").GetValue(c) for c in range(cells))
+        if cells:
+            check_close(total, 1.0, 1e-12, f"{len(coords)} points: tiles fill the window")
+        t = vtkDelaunayTriangulation()
+        t.SetInputData(make_points(coords))
+        t.Update()
+        check(t.GetOutput().GetNumberOfCells() == 0, f"{len(coords)} collinear/few points: no face")
+
+
+def test_nan_point_is_named():
+    f = vtkDirichletTessellation()
+    messages = []
+
+    @calldata_type(VTK_STRING)
+    def on_error(caller, event, message):
+        messages.append(message)
+
+    f.AddObserver(vtkCommand.ErrorEvent, on_error)
+    f.SetInputData(make_points([(0, 0), (1, 1), (math.nan, 2)]))
+    f.Update()
+    check(len(messages) == 1 and "point 2" in messages[0], f"error names point 2: {messages}")
+    check(f.GetOutput(0).GetNumberOfCells() == 0, "empty output")
+
+
+if __name__ == "__main__":
+    run([test_tiles_are_nearest_point_regions,
+         test_delaunay_faces_match_vtk_delaunay2d_and_count,
+         test_square_lattice_has_square_tiles_and_diagonal_half_neighbours,
+         test_unused_points_are_reported_with_ids,
+         test_degenerate_inputs_give_valid_output,
+         test_nan_point_is_named])

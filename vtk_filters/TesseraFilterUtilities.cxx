@@ -1,0 +1,145 @@
+#include "TesseraFilterUtilities.h"
+
+#include "vtkDataArray.h"
+#include "vtkDataObject.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+
+#include "errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace tessera_vtk
+{
+namespace
+{
+template<typename Real>
+void CopyXY(const Real* xyz, vtkIdType n, std::vector<tessera::Point2>& out)
+{
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    out[i] = { static_cast<double>(xyz[3 * i]), static_cast<double>(xyz[3 * i + 1]) };
+  }
+}
+} // namespace
+
+std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points)
+{
+  const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
+  std::vector<tessera::Point2> xy(static_cast<std::size_t>(n));
+  if (n == 0)
+  {
+    return xy;
+  }
+  vtkDataArray* data = points->GetData();
+  // Direct reads for the two common layouts: a virtual call per point costs more than the
+  // tessellation's own work per point at a million points.
+  if (auto* d = vtkDoubleArray::SafeDownCast(data))
+  {
+    CopyXY(d->GetPointer(0), n, xy);
+  }
+  else if (auto* f = vtkFloatArray::SafeDownCast(data))
+  {
+    CopyXY(f->GetPointer(0), n, xy);
+  }
+  else
+  {
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double p[3];
+      points->GetPoint(i, p);
+      xy[i] = { p[0], p[1] };
+    }
+  }
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    if (!std::isfinite(xy[i].x) || !std::isfinite(xy[i].y))
+    {
+      std::ostringstream message;
+      message << "point " << i << " has a NaN or infinite coordinate (" << xy[i].x << ", "
+              << xy[i].y << ")";
+      throw tessera::InputError(message.str());
+    }
+  }
+  return xy;
+}
+
+tessera::Window ChooseWindow(const double bounds[4],
+  const std::vector<double>& constraints,
+  double padding,
+  const std::vector<tessera::Point2>& points)
+{
+  std::vector<tessera::HalfPlane> halfPlanes;
+  const bool haveBounds = bounds[0] < bounds[1] && bounds[2] < bounds[3];
+  if (haveBounds)
+  {
+    halfPlanes.push_back({ -1.0, 0.0, bounds[0] }); // x > xmin
+    halfPlanes.push_back({ 1.0, 0.0, -bounds[1] }); // x < xmax
+    halfPlanes.push_back({ 0.0, -1.0, bounds[2] }); // y > ymin
+    halfPlanes.push_back({ 0.0, 1.0, -bounds[3] }); // y < ymax
+  }
+  for (std::size_t k = 0; k + 2 < constraints.size(); k += 3)
+  {
+    halfPlanes.push_back({ constraints[k], constraints[k + 1], constraints[k + 2] });
+  }
+  if (!halfPlanes.empty())
+  {
+    if (haveBounds && halfPlanes.size() == 4)
+    {
+      return tessera::Window::Rectangle(bounds[0], bounds[1], bounds[2], bounds[3]);
+    }
+    return tessera::Window(halfPlanes);
+  }
+  if (!(padding >= 0.0) || !std::isfinite(padding))
+  {
+    std::ostringstream message;
+    message << "Padding " << padding << " is not a finite number >= 0";
+    throw tessera::InputError(message.str());
+  }
+  if (points.empty())
+  {
+    return tessera::Window::Rectangle(-1.0, 1.0, -1.0, 1.0);
+  }
+  double xmin = points[0].x, xmax = xmin, ymin = points[0].y, ymax = ymin;
+  for (const auto& p : points)
+  {
+    xmin = std::min(xmin, p.x);
+    xmax = std::max(xmax, p.x);
+    ymin = std::min(ymin, p.y);
+    ymax = std::max(ymax, p.y);
+  }
+  const double side = std::max(xmax - xmin, ymax - ymin);
+  // Identical points: a unit square around them (a padding of a zero side would be empty).
+  const double pad = side > 0.0 ? padding * side : 0.5;
+  const double margin = side > 0.0 && pad == 0.0 ? side * 1e-9 : 0.0; // keep points strictly inside
+  return tessera::Window::Rectangle(
+    xmin - pad - margin, xmax + pad + margin, ymin - pad - margin, ymax + pad + margin);
+}
+
+void AddIdFieldArray(vtkDataObject* data, const char* name, const std::vector<std::int32_t>& ids)
+{
+  vtkNew<vtkIdTypeArray> array;
+  array->SetName(name);
+  array->SetNumberOfValues(static_cast<vtkIdType>(ids.size()));
+  for (std::size_t k = 0; k < ids.size(); ++k)
+  {
+    array->SetValue(static_cast<vtkIdType>(k), ids[k]);
+  }
+  data->GetFieldData()->AddArray(array);
+}
+
+vtkSmartPointer<vtkIdTypeArray> MakeIdArray(const std::vector<std::int64_t>& values)
+{
+  auto array = vtkSmartPointer<vtkIdTypeArray>::New();
+  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  std::copy(values.begin(), values.end(), array->GetPointer(0));
+  return array;
+}
+
+} // namespace tessera_vtk

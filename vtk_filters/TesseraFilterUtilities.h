@@ -1,0 +1,45 @@
+// Conversions shared by the Tessera filters: VTK data to core types and back. Private to the
+// module (not wrapped, not installed): core types may appear here, never in a filter's header.
+#ifndef TesseraFilterUtilities_h
+#define TesseraFilterUtilities_h
+
+#include "vtkSmartPointer.h"
+#include "vtkType.h"
+
+#include "geometry.h"
+#include "window.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+class vtkDataObject;
+class vtkPoints;
+class vtkPointSet;
+class vtkIdTypeArray;
+
+namespace tessera_vtk
+{
+
+/// x, y of every point (z ignored). Throws tessera::InputError naming the first point with a NaN
+/// or infinite x or y.
+std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points);
+
+/// The window a filter works in: the rectangle `bounds` (xmin, xmax, ymin, ymax) when it is not
+/// empty, intersected with `constraints` (a, b, c triples: a*x + b*y + c < 0); with neither, the
+/// bounding box of the points padded on every side by `padding` times its larger side (a unit
+/// square around a single point or a cloud of identical points; [-1, 1]^2 with no point).
+tessera::Window ChooseWindow(const double bounds[4],
+  const std::vector<double>& constraints,
+  double padding,
+  const std::vector<tessera::Point2>& points);
+
+/// Adds an id array (vtkIdTypeArray, one component) named `name` to the data object's field data.
+void AddIdFieldArray(vtkDataObject* data, const char* name, const std::vector<std::int32_t>& ids);
+
+/// A vtkIdTypeArray holding `values`.
+vtkSmartPointer<vtkIdTypeArray> MakeIdArray(const std::vector<std::int64_t>& values);
+
+} // namespace tessera_vtk
+
+#endif

@@ -1,0 +1,110 @@
+#include "vtkDelaunayTriangulation.h"
+
+#include "vtkCellArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include "TesseraFilterUtilities.h"
+#include "dirichlet_tessellation.h"
+#include "tiles.h"
+
+#include <exception>
+#include <utility>
+
+vtkStandardNewMacro(vtkDelaunayTriangulation);
+
+//------------------------------------------------------------------------------
+void vtkDelaunayTriangulation::AddWindowConstraint(double a, double b, double c)
+{
+  this->WindowConstraints.insert(this->WindowConstraints.end(), { a, b, c });
+  this->Modified();
+}
+
+void vtkDelaunayTriangulation::RemoveAllWindowConstraints()
+{
+  if (!this->WindowConstraints.empty())
+  {
+    this->WindowConstraints.clear();
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkDelaunayTriangulation::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkDelaunayTriangulation::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  try
+  {
+    std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
+    tessera::Window window =
+      tessera_vtk::ChooseWindow(this->WindowBounds, this->WindowConstraints, this->Padding, points);
+    const tessera::DirichletTessellation tessellation(std::move(window), std::move(points));
+    this->UpdateProgress(0.7);
+    const tessera::DelaunayFaces faces =
+      tessera::ComputeDelaunayFaces(tessellation, this->SplitDegenerateFaces);
+
+    if (input->GetPoints())
+    {
+      output->SetPoints(input->GetPoints());
+    }
+    output->GetPointData()->PassData(input->GetPointData());
+    vtkNew<vtkIdTypeArray> connectivity;
+    connectivity->SetNumberOfValues(static_cast<vtkIdType>(faces.PointIds.size()));
+    std::copy(faces.PointIds.begin(), faces.PointIds.end(), connectivity->GetPointer(0));
+    vtkNew<vtkCellArray> polys;
+    polys->SetData(tessera_vtk::MakeIdArray(faces.Offsets), connectivity);
+    output->SetPolys(polys);
+
+    std::vector<std::int32_t> duplicates, originals;
+    for (const auto& pair : tessellation.Duplicates())
+    {
+      duplicates.push_back(pair.first);
+      originals.push_back(pair.second);
+    }
+    const std::vector<std::int32_t> rejected = tessellation.RejectedIds();
+    tessera_vtk::AddIdFieldArray(output, "RejectedPointIds", rejected);
+    tessera_vtk::AddIdFieldArray(output, "DuplicatePointIds", duplicates);
+    tessera_vtk::AddIdFieldArray(output, "DuplicateOfPointIds", originals);
+    if (!rejected.empty() || !duplicates.empty())
+    {
+      vtkWarningMacro(
+        << rejected.size() << " point(s) outside the window and " << duplicates.size()
+        << " exact duplicate(s) were not triangulated; their ids are in the field "
+           "data arrays RejectedPointIds, DuplicatePointIds and DuplicateOfPointIds.");
+    }
+    return 1;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+    output->Initialize();
+    return 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDelaunayTriangulation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SplitDegenerateFaces: " << this->SplitDegenerateFaces << "\n";
+  os << indent << "WindowBounds: " << this->WindowBounds[0] << ", " << this->WindowBounds[1] << ", "
+     << this->WindowBounds[2] << ", " << this->WindowBounds[3] << "\n";
+  os << indent << "WindowConstraints: " << this->WindowConstraints.size() / 3 << "\n";
+  os << indent << "Padding: " << this->Padding << "\n";
+}

@@ -1,0 +1,85 @@
+/**
+ * @class   vtkDelaunayTriangulation
+ * @brief   exact Delaunay triangulation of 2D points, degenerate faces kept whole
+ *
+ * vtkDelaunayTriangulation computes the Delaunay faces of the input points (x, y used), the dual
+ * of vtkDirichletTessellation's tiles, with exact predicates. The output keeps every input point
+ * in input order (point data passed), with one polygon per Delaunay face of the accepted,
+ * distinct points: a face whose 4 or more points are exactly co-circular is one polygon, unless
+ * SplitDegenerateFaces is on, when it becomes a fan of triangles from its smallest point id. The
+ * result does not depend on the order of the points.
+ *
+ * Only points strictly inside the window take part (see vtkDirichletTessellation for the window:
+ * WindowBounds, constraints, Padding); the rest are listed, never dropped silently. Field data:
+ * `RejectedPointIds`, `DuplicatePointIds`, `DuplicateOfPointIds` (vtkIdType), as in
+ * vtkDirichletTessellation. Fewer than 3 points or collinear points give no face.
+ *
+ * @sa vtkDirichletTessellation vtkDelaunay2D
+ */
+
+#ifndef vtkDelaunayTriangulation_h
+#define vtkDelaunayTriangulation_h
+
+#include "tesseraFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <vector> // For the constraint list
+
+class TESSERAFILTERS_EXPORT vtkDelaunayTriangulation : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkDelaunayTriangulation* New();
+  vtkTypeMacro(vtkDelaunayTriangulation, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Off (default): a degenerate (co-circular) face is one polygon. On: a fan of triangles.
+   */
+  vtkSetMacro(SplitDegenerateFaces, bool);
+  vtkGetMacro(SplitDegenerateFaces, bool);
+  vtkBooleanMacro(SplitDegenerateFaces, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The window rectangle (xmin, xmax, ymin, ymax); ignored while empty (the default).
+   */
+  vtkSetVector4Macro(WindowBounds, double);
+  vtkGetVector4Macro(WindowBounds, double);
+  ///@}
+
+  ///@{
+  /**
+   * Strict linear window constraints a*x + b*y + c < 0, combined with WindowBounds.
+   */
+  void AddWindowConstraint(double a, double b, double c);
+  void RemoveAllWindowConstraints();
+  ///@}
+
+  ///@{
+  /**
+   * Padding of the automatic window (default 0.1 of the larger bounding-box side).
+   */
+  vtkSetClampMacro(Padding, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Padding, double);
+  ///@}
+
+protected:
+  vtkDelaunayTriangulation() = default;
+  ~vtkDelaunayTriangulation() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  bool SplitDegenerateFaces = false;
+  double WindowBounds[4] = { 0.0, 0.0, 0.0, 0.0 };
+  std::vector<double> WindowConstraints;
+  double Padding = 0.1;
+
+private:
+  vtkDelaunayTriangulation(const vtkDelaunayTriangulation&) = delete;
+  void operator=(const vtkDelaunayTriangulation&) = delete;
+};
+
+#endif

@@ -1,0 +1,238 @@
+#include "vtkDirichletTessellation.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "TesseraFilterUtilities.h"
+#include "dirichlet_tessellation.h"
+#include "errors.h"
+#include "tiles.h"
+
+#include <exception>
+#include <utility>
+
+vtkStandardNewMacro(vtkDirichletTessellation);
+
+namespace
+{
+
+/// What either engine produces, in the core's flat arrays.
+struct TessellationResult
+{
+  tessera::TileSet Tiles;
+  tessera::ContiguityGraph Graph;
+  std::vector<std::int32_t> Rejected;
+  std::vector<std::pair<std::int32_t, std::int32_t>> Duplicates;
+};
+
+TessellationResult RunGreenSibson(tessera::Window window, std::vector<tessera::Point2> points)
+{
+  const tessera::DirichletTessellation tessellation(std::move(window), std::move(points));
+  const tessera::TessellationDual dual(tessellation);
+  return {
+    dual.Tiles(), dual.Contiguities(), tessellation.RejectedIds(), tessellation.Duplicates()
+  };
+}
+
+TessellationResult RunBrasselReif(const tessera::Window&, std::vector<tessera::Point2>)
+{
+  throw tessera::InputError("the BrasselReif engine is not built into this version yet");
+}
+
+/// Output 0: the tiles, their arrays and the input's point data on them.
+void WriteTiles(const tessera::TileSet& tiles, vtkPointSet* input, vtkPolyData* output)
+{
+  const vtkIdType tileCount = static_cast<vtkIdType>(tiles.PointIds.size());
+  const vtkIdType vertexCount = static_cast<vtkIdType>(tiles.Vertices.size());
+  vtkNew<vtkDoubleArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetNumberOfTuples(vertexCount);
+  double* xyz = coordinates->GetPointer(0);
+  for (vtkIdType v = 0; v < vertexCount; ++v)
+  {
+    xyz[3 * v] = tiles.Vertices[v].x;
+    xyz[3 * v + 1] = tiles.Vertices[v].y;
+    xyz[3 * v + 2] = 0.0;
+  }
+  vtkNew<vtkPoints> points;
+  points->SetData(coordinates);
+  output->SetPoints(points);
+
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfValues(vertexCount);
+  for (vtkIdType v = 0; v < vertexCount; ++v)
+  {
+    connectivity->SetValue(v, v);
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(tessera_vtk::MakeIdArray(tiles.Offsets), connectivity);
+  output->SetPolys(polys);
+
+  vtkCellData* cellData = output->GetCellData();
+  vtkPointData* inputData = input->GetPointData();
+  cellData->CopyAllocate(inputData, tileCount);
+  for (vtkIdType k = 0; k < tileCount; ++k)
+  {
+    cellData->CopyData(inputData, tiles.PointIds[k], k);
+  }
+  vtkNew<vtkIdTypeArray> pointIds;
+  pointIds->SetName("PointId");
+  vtkNew<vtkDoubleArray> areas;
+  areas->SetName("Area");
+  vtkNew<vtkIntArray> neighborCounts;
+  neighborCounts->SetName("NeighborCount");
+  pointIds->SetNumberOfValues(tileCount);
+  areas->SetNumberOfValues(tileCount);
+  neighborCounts->SetNumberOfValues(tileCount);
+  for (vtkIdType k = 0; k < tileCount; ++k)
+  {
+    pointIds->SetValue(k, tiles.PointIds[k]);
+    areas->SetValue(k, tiles.Areas[k]);
+    neighborCounts->SetValue(k, tiles.NeighborCounts[k]);
+  }
+  cellData->AddArray(pointIds);
+  cellData->AddArray(areas);
+  cellData->AddArray(neighborCounts);
+}
+
+/// Output 1: the input points with one line per contiguous pair and its Kind.
+void WriteGraph(const tessera::ContiguityGraph& graph, vtkPointSet* input, vtkPolyData* output)
+{
+  if (input->GetPoints())
+  {
+    output->SetPoints(input->GetPoints());
+  }
+  output->GetPointData()->PassData(input->GetPointData());
+  const vtkIdType pairCount = static_cast<vtkIdType>(graph.Kinds.size());
+  vtkNew<vtkIdTypeArray> offsets;
+  offsets->SetNumberOfValues(pairCount + 1);
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfValues(2 * pairCount);
+  vtkNew<vtkUnsignedCharArray> kinds;
+  kinds->SetName("Kind");
+  kinds->SetNumberOfValues(pairCount);
+  for (vtkIdType k = 0; k < pairCount; ++k)
+  {
+    offsets->SetValue(k, 2 * k);
+    connectivity->SetValue(2 * k, graph.Pairs[2 * k]);
+    connectivity->SetValue(2 * k + 1, graph.Pairs[2 * k + 1]);
+    kinds->SetValue(k, graph.Kinds[k]);
+  }
+  offsets->SetValue(pairCount, 2 * pairCount);
+  vtkNew<vtkCellArray> lines;
+  lines->SetData(offsets, connectivity);
+  output->SetLines(lines);
+  output->GetCellData()->AddArray(kinds);
+}
+
+void WriteUnusedPoints(const TessellationResult& result, vtkPolyData* output)
+{
+  std::vector<std::int32_t> duplicates, originals;
+  for (const auto& pair : result.Duplicates)
+  {
+    duplicates.push_back(pair.first);
+    originals.push_back(pair.second);
+  }
+  tessera_vtk::AddIdFieldArray(output, "RejectedPointIds", result.Rejected);
+  tessera_vtk::AddIdFieldArray(output, "DuplicatePointIds", duplicates);
+  tessera_vtk::AddIdFieldArray(output, "DuplicateOfPointIds", originals);
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkDirichletTessellation::vtkDirichletTessellation()
+{
+  this->SetNumberOfOutputPorts(2);
+}
+
+//------------------------------------------------------------------------------
+void vtkDirichletTessellation::AddWindowConstraint(double a, double b, double c)
+{
+  this->WindowConstraints.insert(this->WindowConstraints.end(), { a, b, c });
+  this->Modified();
+}
+
+void vtkDirichletTessellation::RemoveAllWindowConstraints()
+{
+  if (!this->WindowConstraints.empty())
+  {
+    this->WindowConstraints.clear();
+    this->Modified();
+  }
+}
+
+int vtkDirichletTessellation::GetNumberOfWindowConstraints() const
+{
+  return static_cast<int>(this->WindowConstraints.size() / 3);
+}
+
+//------------------------------------------------------------------------------
+int vtkDirichletTessellation::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkDirichletTessellation::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkPolyData* tilesOutput = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* graphOutput = vtkPolyData::GetData(outputVector, 1);
+  try
+  {
+    std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
+    tessera::Window window =
+      tessera_vtk::ChooseWindow(this->WindowBounds, this->WindowConstraints, this->Padding, points);
+    this->UpdateProgress(0.1);
+    const TessellationResult result = this->Algorithm == BRASSEL_REIF
+      ? RunBrasselReif(window, std::move(points))
+      : RunGreenSibson(std::move(window), std::move(points));
+    this->UpdateProgress(0.8);
+    WriteTiles(result.Tiles, input, tilesOutput);
+    WriteGraph(result.Graph, input, graphOutput);
+    WriteUnusedPoints(result, tilesOutput);
+    WriteUnusedPoints(result, graphOutput);
+    if (!result.Rejected.empty() || !result.Duplicates.empty())
+    {
+      vtkWarningMacro(<< result.Rejected.size() << " point(s) outside the window and "
+                      << result.Duplicates.size()
+                      << " exact duplicate(s) were not used; their ids are in the field data "
+                         "arrays RejectedPointIds, DuplicatePointIds and DuplicateOfPointIds.");
+    }
+    return 1;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+    tilesOutput->Initialize();
+    graphOutput->Initialize();
+    return 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkDirichletTessellation::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Algorithm: " << (this->Algorithm == BRASSEL_REIF ? "BrasselReif" : "GreenSibson")
+     << "\n";
+  os << indent << "WindowBounds: " << this->WindowBounds[0] << ", " << this->WindowBounds[1] << ", "
+     << this->WindowBounds[2] << ", " << this->WindowBounds[3] << "\n";
+  os << indent << "WindowConstraints: " << this->GetNumberOfWindowConstraints() << "\n";
+  os << indent << "Padding: " << this->Padding << "\n";
+}

@@ -1,0 +1,118 @@
+/**
+ * @class   vtkDirichletTessellation
+ * @brief   exact Dirichlet (Voronoi / Thiessen) tiles of 2D points within a convex window
+ *
+ * vtkDirichletTessellation computes the tile of every point: the part of a convex window nearer
+ * to that point than to any other (Green and Sibson 1978). Only x and y of the input points are
+ * used. Every topological decision uses exact predicates, so the result is the same for every
+ * insertion order and exactly co-circular points are handled consistently: at a vertex shared by
+ * 4 or more tiles, neither diagonal is recorded as a contiguity; the pairs that meet only there
+ * are half-neighbours.
+ *
+ * The window is the intersection of the rectangle SetWindowBounds(xmin, xmax, ymin, ymax) (when
+ * xmin < xmax and ymin < ymax) and the strict constraints a*x + b*y + c < 0 added with
+ * AddWindowConstraint. With neither, it is the points' bounding box padded on every side by
+ * Padding (default 0.1) times its larger side. Redundant constraints are ignored; an empty or
+ * unbounded window is an error.
+ *
+ * Algorithms: GreenSibson (default), the incremental engine; BrasselReif, the Thiessen sweep of
+ * Brassel and Reif (1979), which needs a rectangular window. Both give the same outputs.
+ *
+ * Output 0 (vtkPolyData): one polygon per accepted point (anticlockwise; vertices are tile
+ * corners: circumcentres and window-edge points), in ascending point id. Cell data:
+ * - `PointId` (vtkIdType): the index of the point in the input;
+ * - `Area` (double): the tile's area, by compensated summation;
+ * - `NeighborCount` (int): contiguities of the tile, window edges included (its polygon sides);
+ * - every input point-data array, copied to the tile of its point (a gauge's values follow it).
+ * Field data (on both outputs):
+ * - `RejectedPointIds` (vtkIdType): points not strictly inside the window;
+ * - `DuplicatePointIds` and `DuplicateOfPointIds` (vtkIdType, same length): exact copies of an
+ *   earlier point, and the accepted point each one copies (the first is kept).
+ *
+ * Output 1 (vtkPolyData): the contiguity graph. Its points are the input points (same ids, point
+ * data passed), with one line per contiguous pair (i < j) and cell data `Kind` (unsigned char):
+ * 0 = neighbours sharing an edge of positive length, 1 = half-neighbours (sharing only a
+ * degenerate vertex).
+ *
+ * 0, 1 or 2 points and collinear points give valid output: the tiles are the whole window,
+ * strips or half-planes within it. A NaN or infinite coordinate is an error naming the point.
+ *
+ * @sa vtkDelaunayTriangulation vtkVoronoi2D
+ */
+
+#ifndef vtkDirichletTessellation_h
+#define vtkDirichletTessellation_h
+
+#include "tesseraFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <vector> // For the constraint list
+
+class TESSERAFILTERS_EXPORT vtkDirichletTessellation : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkDirichletTessellation* New();
+  vtkTypeMacro(vtkDirichletTessellation, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum AlgorithmTypes
+  {
+    GREEN_SIBSON = 0,
+    BRASSEL_REIF = 1
+  };
+
+  ///@{
+  /**
+   * The engine: GREEN_SIBSON (default) or BRASSEL_REIF (rectangular windows only).
+   */
+  vtkSetClampMacro(Algorithm, int, GREEN_SIBSON, BRASSEL_REIF);
+  vtkGetMacro(Algorithm, int);
+  void SetAlgorithmToGreenSibson() { this->SetAlgorithm(GREEN_SIBSON); }
+  void SetAlgorithmToBrasselReif() { this->SetAlgorithm(BRASSEL_REIF); }
+  ///@}
+
+  ///@{
+  /**
+   * The window rectangle (xmin, xmax, ymin, ymax). Ignored while empty (xmin >= xmax or
+   * ymin >= ymax; the default is 0, 0, 0, 0).
+   */
+  vtkSetVector4Macro(WindowBounds, double);
+  vtkGetVector4Macro(WindowBounds, double);
+  ///@}
+
+  ///@{
+  /**
+   * Strict linear window constraints a*x + b*y + c < 0, combined with WindowBounds.
+   */
+  void AddWindowConstraint(double a, double b, double c);
+  void RemoveAllWindowConstraints();
+  int GetNumberOfWindowConstraints() const;
+  ///@}
+
+  ///@{
+  /**
+   * Padding of the automatic window, as a fraction of the points' larger bounding-box side
+   * (default 0.1). Used only when there is no window rectangle and no constraint.
+   */
+  vtkSetClampMacro(Padding, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Padding, double);
+  ///@}
+
+protected:
+  vtkDirichletTessellation();
+  ~vtkDirichletTessellation() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  int Algorithm = GREEN_SIBSON;
+  double WindowBounds[4] = { 0.0, 0.0, 0.0, 0.0 };
+  std::vector<double> WindowConstraints; // a, b, c triples
+  double Padding = 0.1;
+
+private:
+  vtkDirichletTessellation(const vtkDirichletTessellation&) = delete;
+  void operator=(const vtkDirichletTessellation&) = delete;
+};
+
+#endif
