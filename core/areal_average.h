@@ -1,0 +1,122 @@
+#pragma once
+// Thiessen (1911) areal averages of gauge time series over a catchment, from lon/lat gauges.
+//
+// Per Green and Sibson section 1.2 the tessellation is built in a convex window holding every
+// gauge and the catchment (a padded rectangle in the projected plane), and the catchment is
+// imposed afterwards: a gauge outside the catchment still owns the part of it nearest to it.
+// At each time step only the gauges that reported take part: a gauge without a value is removed
+// and its neighbours take its area.
+//
+// Reuse between steps. The reporting set changes a little from one step to the next (in the
+// Colorado record, 1236 months have 1071 distinct sets, so caching by set is useless), so the
+// tessellation is updated, not rebuilt: gauges that stopped reporting are removed and those that
+// started are inserted (Green-Sibson removal and insertion). A tile is re-clipped against the
+// catchment only when its polygon changed (compared bit for bit with the previous step's).
+//
+// Areas on the ellipsoid. The weight of a gauge is the ellipsoidal area of its tile inside the
+// catchment over the catchment's ellipsoidal area. Two ways, chosen by AreaMethod:
+// - EqualAreaPlane (default when the projection is Albers equal-area, as the automatic choice
+//   is): the projection's area scale is exactly 1, so the planar area of a clipped tile IS the
+//   ellipsoidal area of its preimage. Exact, additive (weights sum to 1 to round-off), fast.
+// - GeodesicPolygon (any projection): the clipped rings are densified in the plane, unprojected
+//   and measured with GeographicLib::PolygonArea (edges become geodesic chords: the sum over the
+//   pieces matches the catchment to about 1e-9 at the default 1 km spacing).
+
+#include "clip.h"
+#include "geo.h"
+#include "geometry.h"
+
+#include <cstdint>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace tessera
+{
+
+enum class AreaMethod
+{
+  Automatic,       ///< EqualAreaPlane for Albers equal-area, GeodesicPolygon otherwise
+  EqualAreaPlane,  ///< planar areas in an equal-area projection
+  GeodesicPolygon, ///< unprojected, densified rings measured with GeographicLib::PolygonArea
+};
+
+struct ArealAverageSettings
+{
+  /// Projection of gauges and catchment; without one, AutomaticParameters of gauges + catchment.
+  bool HaveProjection = false;
+  ProjectionParameters Projection;
+  AreaMethod Areas = AreaMethod::Automatic;
+  /// The window: the projected bounding box of gauges and catchment, padded on every side by this
+  /// fraction of its larger side.
+  double Padding = 0.1;
+  /// Catchment edges are straight in lon/lat: cut into pieces of at most this many degrees before
+  /// projecting.
+  double CatchmentEdgeDegrees = 0.01;
+  /// GeodesicPolygon only: spacing, in projected metres, of the points added along clipped ring
+  /// edges before unprojecting.
+  double GeodesicStepMetres = 1000.0;
+  /// false: rebuild the tessellation at every step (for comparison in benchmarks).
+  bool Incremental = true;
+};
+
+/// One time step's result.
+struct ArealStep
+{
+  double Mean = 0.0;        ///< sum of weight * value over weighted gauges / sum of weights; NaN
+                            ///< when no gauge reported
+  int StationsUsed = 0;     ///< gauges that reported (co-located repeats counted once)
+  int StationsWeighted = 0; ///< of those, gauges whose tile reaches into the catchment
+  double CoveredFraction = 0.0;     ///< sum of weights (1 when any gauge reported)
+  std::vector<std::int32_t> Gauges; ///< weighted gauges, ascending
+  std::vector<double> Weights;      ///< per weighted gauge
+  std::vector<double> AreasM2;      ///< per weighted gauge: clipped ellipsoidal area, m^2
+};
+
+/// The clipped tiles of the current step, for display: rings in lon/lat.
+struct ClippedTilesLonLat
+{
+  std::vector<std::int32_t> Gauges;              ///< one entry per tile with a non-empty clip
+  std::vector<std::size_t> TileRingOffsets{ 0 }; ///< rings of tile k: [k], [k+1]
+  ClippedRings Rings;                            ///< vertices in lon/lat degrees
+};
+
+class ThiessenArealAverage
+{
+public:
+  /// gaugesLonLat: one point per gauge (id = index). Throws InputError naming the gauge for a
+  /// NaN/Inf coordinate or |latitude| > 90. The catchment: rings in lon/lat (flat offsets, even-odd
+  /// rule); throws InputError naming ring, vertex or segments when a ring is degenerate or
+  /// self-intersecting or two rings cross. Gauges at one place are grouped: at each step the
+  /// first of a group that reported is used (see DuplicateGauges).
+  ThiessenArealAverage(const std::vector<Point2>& gaugesLonLat,
+    const std::vector<std::size_t>& catchmentRingOffsets,
+    const std::vector<Point2>& catchmentLonLat,
+    const ArealAverageSettings& settings = {});
+  ~ThiessenArealAverage();
+  ThiessenArealAverage(const ThiessenArealAverage&) = delete;
+  ThiessenArealAverage& operator=(const ThiessenArealAverage&) = delete;
+
+  const ProjectionParameters& Projection() const;
+  AreaMethod Method() const;
+  /// (gauge, first gauge at the same place) for every gauge that repeats an earlier one.
+  const std::vector<std::pair<std::int32_t, std::int32_t>>& DuplicateGauges() const;
+  /// The catchment's ellipsoidal area, m^2, measured as the tiles are.
+  double CatchmentAreaM2() const;
+  /// Projected gauge positions (metres).
+  const std::vector<Point2>& ProjectedGauges() const;
+
+  /// Advances to a step: values[g] is gauge g's value, NaN where it did not report. Throws
+  /// InputError if values has the wrong size or an infinite value (naming the gauge).
+  ArealStep Step(const std::vector<double>& values);
+
+  /// The current step's clipped tiles in lon/lat, edges densified every maxStepMetres (projected)
+  /// so that they follow the planar tile edges when drawn in lon/lat.
+  ClippedTilesLonLat CurrentClippedTiles(double maxStepMetres = 2000.0) const;
+
+private:
+  struct State;
+  std::unique_ptr<State> Impl;
+};
+
+} // namespace tessera

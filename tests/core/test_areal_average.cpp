@@ -1,0 +1,185 @@
+// core/areal_average: weights against hand-known symmetric cases, incremental updates against
+// rebuilds, the two area methods against each other, missing values, duplicates and bad input.
+#include "areal_average.h"
+#include "errors.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+#include <random>
+
+using namespace tessera;
+
+namespace
+{
+
+const double NaN = std::nan("");
+
+struct Square
+{
+  std::vector<std::size_t> Offsets{ 0, 4 };
+  std::vector<Point2> Ring;
+  Square(double west, double south, double east, double north)
+    : Ring{ { west, south }, { east, south }, { east, north }, { west, north } }
+  {
+  }
+};
+
+double Sum(const std::vector<double>& v)
+{
+  return std::accumulate(v.begin(), v.end(), 0.0);
+}
+
+} // namespace
+
+TEST(ArealAverage, FourSymmetricGaugesShareASquareEqually)
+{
+  // A square about the equator and the central meridian: the ellipsoid's symmetry makes the
+  // four quadrants equal, so each weight is 1/4 and the mean is the plain mean.
+  const Square catchment(-1.0, -1.0, 1.0, 1.0);
+  const std::vector<Point2> gauges = { { -0.5, -0.5 }, { 0.5, -0.5 }, { 0.5, 0.5 }, { -0.5, 0.5 } };
+  for (AreaMethod method : { AreaMethod::EqualAreaPlane, AreaMethod::GeodesicPolygon })
+  {
+    ArealAverageSettings settings;
+    settings.Areas = method;
+    settings.HaveProjection = true;
+    settings.Projection.Kind = ProjectionKind::AlbersEqualArea;
+    settings.Projection.StandardParallel1 = -0.5;
+    settings.Projection.StandardParallel2 = 0.5;
+    ThiessenArealAverage average(gauges, catchment.Offsets, catchment.Ring, settings);
+    const ArealStep step = average.Step({ 1.0, 2.0, 3.0, 4.0 });
+    ASSERT_EQ(step.StationsWeighted, 4);
+    for (double w : step.Weights)
+    {
+      EXPECT_NEAR(w, 0.25, 1e-9);
+    }
+    EXPECT_NEAR(step.Mean, 2.5, 1e-9);
+    EXPECT_NEAR(Sum(step.Weights), 1.0, method == AreaMethod::EqualAreaPlane ? 1e-12 : 1e-8);
+    // The catchment's area: 2x2 degrees at the equator is about 4.9e10 m^2.
+    EXPECT_NEAR(average.CatchmentAreaM2() / 4.9234e10, 1.0, 1e-3);
+  }
+}
+
+TEST(ArealAverage, AGaugeOutsideTheCatchmentStillOwnsItsNearestPart)
+{
+  const Square catchment(10.0, 40.0, 11.0, 41.0);
+  // Gauge 1 lies outside, east of the square, nearer to its eastern strip than gauge 0 is.
+  const std::vector<Point2> gauges = { { 10.3, 40.5 }, { 11.2, 40.5 } };
+  ThiessenArealAverage average(gauges, catchment.Offsets, catchment.Ring);
+  const ArealStep step = average.Step({ 10.0, 20.0 });
+  ASSERT_EQ(step.StationsWeighted, 2);
+  EXPECT_GT(step.Weights[1], 0.1);
+  EXPECT_NEAR(Sum(step.Weights), 1.0, 1e-12);
+  EXPECT_NEAR(step.Mean, 10.0 * step.Weights[0] + 20.0 * step.Weights[1], 1e-12);
+}
+
+TEST(ArealAverage, IncrementalUpdatesEqualRebuildsAndMissingGaugesHandOverTheirArea)
+{
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> lon(-109.0, -102.0), lat(37.0, 41.0), value(0.0, 10.0);
+  std::vector<Point2> gauges(80);
+  for (auto& g : gauges)
+  {
+    g = { lon(random), lat(random) };
+  }
+  const Square catchment(-108.0, 37.5, -103.0, 40.5);
+  ArealAverageSettings incremental, rebuild;
+  rebuild.Incremental = false;
+  ThiessenArealAverage a(gauges, catchment.Offsets, catchment.Ring, incremental);
+  ThiessenArealAverage b(gauges, catchment.Offsets, catchment.Ring, rebuild);
+  std::vector<double> values(gauges.size());
+  std::bernoulli_distribution missing(0.3);
+  for (int t = 0; t < 40; ++t)
+  {
+    for (auto& v : values)
+    {
+      v = missing(random) ? NaN : value(random);
+    }
+    const ArealStep x = a.Step(values);
+    const ArealStep y = b.Step(values);
+    ASSERT_EQ(x.Gauges, y.Gauges) << "step " << t;
+    for (std::size_t k = 0; k < x.Weights.size(); ++k)
+    {
+      EXPECT_NEAR(x.Weights[k], y.Weights[k], 1e-13) << "step " << t << " gauge " << x.Gauges[k];
+      EXPECT_FALSE(std::isnan(values[x.Gauges[k]])) << "a missing gauge got a weight";
+    }
+    EXPECT_NEAR(Sum(x.Weights), 1.0, 1e-12) << "step " << t;
+    EXPECT_NEAR(x.Mean, y.Mean, 1e-12);
+    EXPECT_EQ(x.StationsUsed,
+      static_cast<int>(
+        std::count_if(values.begin(), values.end(), [](double v) { return !std::isnan(v); })));
+  }
+}
+
+TEST(ArealAverage, EqualAreaPlaneAgreesWithGeodesicPolygons)
+{
+  std::mt19937_64 random(5);
+  std::uniform_real_distribution<double> lon(-109.0, -102.0), lat(37.0, 41.0);
+  std::vector<Point2> gauges(40);
+  for (auto& g : gauges)
+  {
+    g = { lon(random), lat(random) };
+  }
+  const Square catchment(-108.0, 37.5, -103.0, 40.5);
+  ArealAverageSettings plane, geodesic;
+  plane.Areas = AreaMethod::EqualAreaPlane;
+  geodesic.Areas = AreaMethod::GeodesicPolygon;
+  ThiessenArealAverage a(gauges, catchment.Offsets, catchment.Ring, plane);
+  ThiessenArealAverage b(gauges, catchment.Offsets, catchment.Ring, geodesic);
+  EXPECT_NEAR(a.CatchmentAreaM2() / b.CatchmentAreaM2(), 1.0, 1e-7);
+  const std::vector<double> values(gauges.size(), 1.0);
+  const ArealStep x = a.Step(values), y = b.Step(values);
+  ASSERT_EQ(x.Gauges, y.Gauges);
+  for (std::size_t k = 0; k < x.Weights.size(); ++k)
+  {
+    EXPECT_NEAR(x.AreasM2[k], y.AreasM2[k], 1e-6 * a.CatchmentAreaM2() / gauges.size());
+  }
+}
+
+TEST(ArealAverage, NoReportingGaugeGivesNaNAndZeroStations)
+{
+  const Square catchment(0.0, 0.0, 1.0, 1.0);
+  ThiessenArealAverage average({ { 0.2, 0.2 }, { 0.8, 0.8 } }, catchment.Offsets, catchment.Ring);
+  const ArealStep step = average.Step({ NaN, NaN });
+  EXPECT_TRUE(std::isnan(step.Mean));
+  EXPECT_EQ(step.StationsUsed, 0);
+  EXPECT_EQ(step.StationsWeighted, 0);
+  // and it recovers at the next step
+  const ArealStep next = average.Step({ 3.0, NaN });
+  EXPECT_DOUBLE_EQ(next.Mean, 3.0);
+  EXPECT_NEAR(next.Weights.at(0), 1.0, 1e-12);
+}
+
+TEST(ArealAverage, CoLocatedGaugesAreReportedAndTheFirstReportingOneIsUsed)
+{
+  const Square catchment(0.0, 0.0, 1.0, 1.0);
+  ThiessenArealAverage average(
+    { { 0.5, 0.5 }, { 0.2, 0.2 }, { 0.5, 0.5 } }, catchment.Offsets, catchment.Ring);
+  ASSERT_EQ(average.DuplicateGauges().size(), 1u);
+  EXPECT_EQ(average.DuplicateGauges()[0], std::make_pair(2, 0));
+  const ArealStep both = average.Step({ 1.0, NaN, 9.0 });
+  EXPECT_EQ(both.StationsUsed, 1);
+  EXPECT_DOUBLE_EQ(both.Mean, 1.0); // the first one's value
+  const ArealStep second = average.Step({ NaN, NaN, 9.0 });
+  EXPECT_DOUBLE_EQ(second.Mean, 9.0); // the repeat stands in when the first is missing
+}
+
+TEST(ArealAverage, BadInputIsNamed)
+{
+  const Square catchment(0.0, 0.0, 1.0, 1.0);
+  try
+  {
+    ThiessenArealAverage bad({ { 0.2, 0.2 }, { 0.3, 91.0 } }, catchment.Offsets, catchment.Ring);
+    FAIL() << "latitude 91 accepted";
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("gauge 1"), std::string::npos) << e.what();
+  }
+  const std::vector<Point2> bowtie = { { 0, 0 }, { 1, 1 }, { 1, 0 }, { 0, 1 } };
+  EXPECT_THROW(ThiessenArealAverage({ { 0.2, 0.2 } }, { 0, 4 }, bowtie), InputError);
+  ThiessenArealAverage average({ { 0.2, 0.2 } }, catchment.Offsets, catchment.Ring);
+  EXPECT_THROW(average.Step({ 1.0, 2.0 }), InputError);
+  EXPECT_THROW(average.Step({ INFINITY }), InputError);
+}
