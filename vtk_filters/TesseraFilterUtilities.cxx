@@ -1,6 +1,11 @@
 #include "TesseraFilterUtilities.h"
 
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkIdList.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkDataObject.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -132,6 +137,92 @@ void AddIdFieldArray(vtkDataObject* data, const char* name, const std::vector<st
     array->SetValue(static_cast<vtkIdType>(k), ids[k]);
   }
   data->GetFieldData()->AddArray(array);
+}
+
+namespace
+{
+/// vtkGDALVectorReader gives a polygon's rings as closed polylines (last point = first point).
+bool IsClosedLine(vtkPolyData* poly, vtkIdList* ids)
+{
+  const vtkIdType n = ids->GetNumberOfIds();
+  if (n < 4)
+  {
+    return false;
+  }
+  double first[3], last[3];
+  poly->GetPoint(ids->GetId(0), first);
+  poly->GetPoint(ids->GetId(n - 1), last);
+  return ids->GetId(0) == ids->GetId(n - 1) || (first[0] == last[0] && first[1] == last[1]);
+}
+
+void AppendPolygonRings(vtkPolyData* poly, Rings& rings)
+{
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c)
+  {
+    const int type = poly->GetCellType(c);
+    const bool isPolygon = type == VTK_POLYGON || type == VTK_TRIANGLE || type == VTK_QUAD;
+    if (!isPolygon && type != VTK_POLY_LINE)
+    {
+      continue;
+    }
+    poly->GetCellPoints(c, ids);
+    if (!isPolygon && !IsClosedLine(poly, ids))
+    {
+      continue;
+    }
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      double p[3];
+      poly->GetPoint(ids->GetId(k), p);
+      rings.Vertices.push_back({ p[0], p[1] });
+    }
+    rings.Offsets.push_back(rings.Vertices.size());
+  }
+}
+} // namespace
+
+Rings ReadPolygonRings(vtkDataObject* data)
+{
+  Rings rings;
+  if (auto* poly = vtkPolyData::SafeDownCast(data))
+  {
+    AppendPolygonRings(poly, rings);
+  }
+  else if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    auto iter = vtk::TakeSmartPointer(composite->NewIterator());
+    for (iter->InitTraversal(); !iter->IsDoneWithTraversal(); iter->GoToNextItem())
+    {
+      if (auto* block = vtkPolyData::SafeDownCast(iter->GetCurrentDataObject()))
+      {
+        AppendPolygonRings(block, rings);
+      }
+    }
+  }
+  if (rings.Offsets.size() < 2)
+  {
+    throw tessera::InputError(std::string("the window/catchment input (") +
+      (data ? data->GetClassName() : "nothing") + ") holds no polygon");
+  }
+  return rings;
+}
+
+double OrientAnticlockwise(std::vector<tessera::Point2>& polygon)
+{
+  double twice = 0.0;
+  for (std::size_t k = 0; k < polygon.size(); ++k)
+  {
+    const auto& a = polygon[k];
+    const auto& b = polygon[(k + 1) % polygon.size()];
+    twice += a.x * b.y - b.x * a.y;
+  }
+  if (twice < 0.0)
+  {
+    std::reverse(polygon.begin(), polygon.end());
+    twice = -twice;
+  }
+  return 0.5 * twice;
 }
 
 vtkSmartPointer<vtkIdTypeArray> MakeIdArray(const std::vector<std::int64_t>& values)

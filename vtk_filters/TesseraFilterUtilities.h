@@ -37,6 +37,21 @@ tessera::Window ChooseWindow(const double bounds[4],
 /// Adds an id array (vtkIdTypeArray, one component) named `name` to the data object's field data.
 void AddIdFieldArray(vtkDataObject* data, const char* name, const std::vector<std::int32_t>& ids);
 
+/// Polygon rings as flat arrays (ring r is Vertices[Offsets[r] .. Offsets[r+1])).
+struct Rings
+{
+  std::vector<std::size_t> Offsets{ 0 };
+  std::vector<tessera::Point2> Vertices;
+};
+
+/// Every polygon, triangle and quad cell, and every closed polyline (last point = first, as
+/// vtkGDALVectorReader gives polygon rings), of a vtkPolyData or of every vtkPolyData block of a
+/// composite data set, as one ring each (x, y used). Throws tessera::InputError when there is none.
+Rings ReadPolygonRings(vtkDataObject* data);
+
+/// Reverses a clockwise polygon; returns its (now non-negative) shoelace area.
+double OrientAnticlockwise(std::vector<tessera::Point2>& polygon);
+
 /// A vtkIdTypeArray holding `values`.
 vtkSmartPointer<vtkIdTypeArray> MakeIdArray(const std::vector<std::int64_t>& values);
 

@@ -1,0 +1,302 @@
+#!/usr/bin/env python3
+"""Thiessen areal-average precipitation over Colorado, month by month (Thiessen 1911).
+
+The hydrologist's main job with Tessera: 376 rain gauges given in longitude/latitude (many of
+them outside the state), the state outline as the catchment, and 1236 months (1895-1997) of
+monthly totals of which 58% are missing. For each month the gauges that reported are
+tessellated exactly (Green-Sibson), their tiles are clipped to the catchment, each gauge is
+weighted by the ellipsoidal area of its tile inside the catchment, and the areal mean is the
+weighted mean. A gauge outside the state still owns the part of the state nearest to it.
+
+Writes into --out:
+  areal_mean.csv         year,month,stations_used,stations_weighted,areal_mean (one row a month;
+                         stations_used = gauges that reported, stations_weighted = those whose tile
+                         reaches the catchment; areal_mean is empty where no gauge reported)
+  weights_YYYY_MM.csv    station_id,name,lon,lat,weight,area_km2,precip for --month
+  tiles_YYYY_MM.vtp      that month's tiles clipped to the catchment, in lon/lat (cell data
+                         StationId, GaugeId, Weight, Area_m2, Value)
+  map_YYYY_MM.png        the tiles coloured by that month's precipitation, gauges, the outline
+  areal_mean.png         the areal-mean time series
+Units are those of the data (documented as mm; the magnitudes look like cm: see
+examples/data/README.md).
+
+Run with Debian's /usr/bin/python3 and PYTHONPATH=build/python (scripts/demo does both).
+"""
+
+import argparse
+import csv
+import math
+import os
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+DATA = os.path.join(HERE, "data")
+
+
+def decimal_time(year, month):
+    """Month as a time value: year + (month - 1) / 12."""
+    return year + (month - 1) / 12.0
+
+
+def year_month(t):
+    index = int(round(t * 12.0))
+    return index // 12, index % 12 + 1
+
+
+def read_gauges(path):
+    from vtkmodules.vtkCommonCore import vtkPoints, vtkStringArray
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    ids, names = vtkStringArray(), vtkStringArray()
+    ids.SetName("station_id")
+    names.SetName("name")
+    with open(path, newline="") as f:
+        for line, row in enumerate(csv.DictReader(f), start=2):
+            try:
+                lon, lat = float(row["lon"]), float(row["lat"])
+            except (KeyError, ValueError) as error:
+                sys.exit(f"{path}:{line}: station {row.get('station_id')!r}: bad coordinate ({error})")
+            points.InsertNextPoint(lon, lat, 0.0)
+            ids.InsertNextValue(row["station_id"].strip())
+            names.InsertNextValue(row.get("name", "").strip())
+    gauges = vtkPolyData()
+    gauges.SetPoints(points)
+    gauges.GetPointData().AddArray(ids)
+    gauges.GetPointData().AddArray(names)
+    return gauges
+
+
+def read_observations(path):
+    """The long-format monthly table as a vtkTable (station_id, time, precip), and the set of
+    reporting station ids of every (year, month)."""
+    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
+    from vtkmodules.vtkCommonDataModel import vtkTable
+
+    stations, times, values = vtkStringArray(), vtkDoubleArray(), vtkDoubleArray()
+    reporting = {}
+    stations.SetName("station_id")
+    times.SetName("time")
+    values.SetName("precip")
+    with open(path, newline="") as f:
+        for line, row in enumerate(csv.DictReader(f), start=2):
+            try:
+                t = decimal_time(int(row["year"]), int(row["month"]))
+                v = float(row["precip"])
+            except (KeyError, ValueError) as error:
+                sys.exit(f"{path}:{line}: bad observation ({error})")
+            stations.InsertNextValue(row["station_id"].strip())
+            reporting.setdefault(year_month(t), set()).add(row["station_id"].strip())
+            times.InsertNextValue(t)
+            values.InsertNextValue(v)
+    table = vtkTable()
+    for column in (stations, times, values):
+        table.AddColumn(column)
+    return table, reporting
+
+
+class Progress:
+    """Prints the filter's progress over the months on one line."""
+
+    def __init__(self, label):
+        self.label, self.last = label, -1
+
+    def __call__(self, caller, event):
+        percent = int(caller.GetProgress() * 100)
+        if percent != self.last and percent % 5 == 0:
+            self.last = percent
+            print(f"\r{self.label}: {percent:3d}%", end="", file=sys.stderr, flush=True)
+            if percent == 100:
+                print(file=sys.stderr)
+
+
+def write_summary(table, path):
+    rows = []
+    with open(path, "w", newline="") as f:
+        out = csv.writer(f)
+        out.writerow(["year", "month", "stations_used", "stations_weighted", "areal_mean"])
+        for r in range(table.GetNumberOfRows()):
+            year, month = year_month(table.GetValueByName(r, "Time").ToDouble())
+            mean = table.GetValueByName(r, "ArealMean").ToDouble()
+            used = table.GetValueByName(r, "StationsUsed").ToInt()
+            weighted = table.GetValueByName(r, "StationsWeighted").ToInt()
+            out.writerow([year, month, used, weighted, "" if math.isnan(mean) else f"{mean:.6f}"])
+            rows.append((year, month, used, weighted, mean))
+    return rows
+
+
+def tiles_by_gauge(tiles):
+    """Per gauge: weight, area, value and its rings (lists of (lon, lat))."""
+    cd = tiles.GetCellData()
+    gauge_ids, weights = cd.GetArray("GaugeId"), cd.GetArray("Weight")
+    areas, values = cd.GetArray("Area_m2"), cd.GetArray("Value")
+    result = {}
+    for c in range(tiles.GetNumberOfCells()):
+        g = gauge_ids.GetValue(c)
+        entry = result.setdefault(g, {"weight": weights.GetValue(c), "area": areas.GetValue(c),
+                                      "value": values.GetValue(c), "rings": []})
+        ids = tiles.GetCell(c).GetPointIds()
+        entry["rings"].append([tiles.GetPoint(ids.GetId(k))[:2] for k in range(ids.GetNumberOfIds())])
+    return result
+
+
+def write_weights(per_gauge, gauges, path):
+    ids = gauges.GetPointData().GetAbstractArray("station_id")
+    names = gauges.GetPointData().GetAbstractArray("name")
+    with open(path, "w", newline="") as f:
+        out = csv.writer(f)
+        out.writerow(["station_id", "name", "lon", "lat", "weight", "area_km2", "precip"])
+        for g in sorted(per_gauge, key=lambda g: -per_gauge[g]["weight"]):
+            lon, lat, _ = gauges.GetPoint(g)
+            e = per_gauge[g]
+            out.writerow([ids.GetValue(g), names.GetValue(g), lon, lat, f"{e['weight']:.10f}",
+                          f"{e['area'] / 1e6:.4f}", e["value"]])
+
+
+def plot_map(per_gauge, gauges, outline, reporting, title, path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.collections import PolyCollection
+
+    fig, ax = plt.subplots(figsize=(9, 6.5))
+    polys, colours = [], []
+    for e in per_gauge.values():
+        for ring in e["rings"]:
+            polys.append(ring)
+            colours.append(e["value"])
+    collection = PolyCollection(polys, array=colours, cmap="viridis_r", edgecolors="white", linewidths=0.4)
+    ax.add_collection(collection)
+    fig.colorbar(collection, ax=ax, label="monthly precipitation (data units)")
+    xs, ys = zip(*outline)
+    ax.plot(xs + xs[:1], ys + ys[:1], color="black", linewidth=1.2)
+    lon = [gauges.GetPoint(i)[0] for i in range(gauges.GetNumberOfPoints())]
+    lat = [gauges.GetPoint(i)[1] for i in range(gauges.GetNumberOfPoints())]
+    ax.scatter([lon[i] for i in range(len(lon)) if i not in reporting],
+               [lat[i] for i in range(len(lat)) if i not in reporting],
+               s=6, facecolors="none", edgecolors="grey", linewidths=0.5, label="gauge, no report")
+    ax.scatter([lon[i] for i in reporting], [lat[i] for i in reporting], s=9, color="red",
+               label="gauge, reported")
+    ax.set_xlim(-109.6, -100.9)
+    ax.set_ylim(36.4, 41.6)
+    ax.set_aspect(1.0 / math.cos(math.radians(39.0)))
+    ax.set_xlabel("longitude")
+    ax.set_ylabel("latitude")
+    ax.set_title(title)
+    ax.legend(loc="lower left", fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def plot_series(rows, path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    t = [decimal_time(y, m) for y, m, _, _, mean in rows if not math.isnan(mean)]
+    v = [mean for *_, mean in rows if not math.isnan(mean)]
+    used = [u for _, _, u, _, _ in rows]
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(11, 6), sharex=True,
+                                      gridspec_kw={"height_ratios": [3, 1]})
+    top.plot(t, v, linewidth=0.6, color="tab:blue")
+    top.set_ylabel("Thiessen areal mean (data units)")
+    top.set_title("Colorado monthly precipitation, Thiessen areal mean 1895-1997")
+    bottom.plot([decimal_time(y, m) for y, m, *_ in rows], used, linewidth=0.6, color="tab:grey")
+    bottom.set_ylabel("gauges reporting")
+    bottom.set_xlabel("year")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--out", default="out", help="output directory (created if missing)")
+    parser.add_argument("--month", default="1963-08", help="month for the weights, tiles and map, YYYY-MM")
+    parser.add_argument("--stations", default=os.path.join(DATA, "colorado_stations.csv"))
+    parser.add_argument("--observations", default=os.path.join(DATA, "colorado_monthly_precip.csv"))
+    parser.add_argument("--catchment", default=os.path.join(DATA, "colorado_boundary.geojson"),
+                        help="catchment polygon (GeoJSON or shapefile, lon/lat)")
+    parser.add_argument("--no-plots", action="store_true", help="skip the PNG files")
+    args = parser.parse_args(argv)
+    try:
+        year, month = (int(x) for x in args.month.split("-"))
+        if not 1 <= month <= 12:
+            raise ValueError
+    except ValueError:
+        sys.exit(f"--month {args.month!r}: expected YYYY-MM")
+
+    from vtkmodules.vtkCommonCore import vtkCommand
+    from vtkmodules.vtkIOGDAL import vtkGDALVectorReader
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+    from tessera import vtkThiessenArealAverage
+
+    os.makedirs(args.out, exist_ok=True)
+    started = time.time()
+    gauges = read_gauges(args.stations)
+    observations, reporting_ids = read_observations(args.observations)
+    catchment = vtkGDALVectorReader()
+    catchment.SetFileName(args.catchment)
+    catchment.Update()
+    print(f"read {gauges.GetNumberOfPoints()} gauges and {observations.GetNumberOfRows()} "
+          f"observations in {time.time() - started:.1f} s", file=sys.stderr)
+
+    average = vtkThiessenArealAverage()
+    average.SetGaugesData(gauges)
+    average.SetCatchmentConnection(catchment.GetOutputPort())
+    average.SetObservationsData(observations)
+    average.SetValueColumn("precip")
+    average.AddObserver(vtkCommand.ProgressEvent, Progress("Thiessen areal means"))
+    started = time.time()
+    average.Update(1)
+    summary = average.GetOutputDataObject(1)
+    if summary is None or summary.GetNumberOfRows() == 0:
+        sys.exit("the areal average failed (see the error above)")
+    print(f"{summary.GetNumberOfRows()} months in {time.time() - started:.2f} s", file=sys.stderr)
+    rows = write_summary(summary, os.path.join(args.out, "areal_mean.csv"))
+
+    t = decimal_time(year, month)
+    average.UpdateTimeStep(t)
+    tiles = average.GetOutputDataObject(0)
+    chosen = year_month(tiles.GetInformation().Get(tiles.DATA_TIME_STEP()))
+    if chosen != (year, month):
+        print(f"note: {year}-{month:02d} is not in the record; showing {chosen[0]}-{chosen[1]:02d}",
+              file=sys.stderr)
+        year, month = chosen
+    tag = f"{year:04d}_{month:02d}"
+    per_gauge = tiles_by_gauge(tiles)
+    write_weights(per_gauge, gauges, os.path.join(args.out, f"weights_{tag}.csv"))
+    writer = vtkXMLPolyDataWriter()
+    writer.SetFileName(os.path.join(args.out, f"tiles_{tag}.vtp"))
+    writer.SetInputData(tiles)
+    writer.Write()
+
+    row = next(r for r in rows if (r[0], r[1]) == (year, month))
+    if not args.no_plots:
+        block = catchment.GetOutput().GetBlock(0)
+        outline = [block.GetPoint(i)[:2] for i in range(block.GetNumberOfPoints())]
+        ids = gauges.GetPointData().GetAbstractArray("station_id")
+        reported = reporting_ids.get((year, month), set())
+        reporting = {i for i in range(gauges.GetNumberOfPoints()) if ids.GetValue(i) in reported}
+        title = (f"{year}-{month:02d}: Thiessen areal mean {row[4]:.3f} from {row[3]} of {row[2]} "
+                 f"reporting gauges")
+        plot_map(per_gauge, gauges, outline, reporting, title, os.path.join(args.out, f"map_{tag}.png"))
+        plot_series(rows, os.path.join(args.out, "areal_mean.png"))
+
+    valid = [r[4] for r in rows if not math.isnan(r[4])]
+    print(f"{len(rows)} months, {len(valid)} with data; mean of the monthly areal means "
+          f"{sum(valid) / len(valid):.3f}")
+    print(f"{year}-{month:02d}: areal mean {row[4]:.3f}, {row[2]} gauges reported, "
+          f"{row[3]} weighted; weights sum to {sum(e['weight'] for e in per_gauge.values()):.12f}")
+    print(f"wrote {args.out}/areal_mean.csv, weights_{tag}.csv, tiles_{tag}.vtp"
+          + ("" if args.no_plots else f", map_{tag}.png, areal_mean.png"))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,266 @@
+"""vtkThiessenArealAverage and vtkWindowClip from Python: hand-known cases, the real Colorado
+record against a brute-force raster of geodesically nearest gauges, and bad input."""
+
+import csv
+import json
+import math
+import os
+
+import numpy as np
+from matplotlib.path import Path
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.vtkCommonCore import (VTK_STRING, vtkCommand, vtkDoubleArray, vtkPoints,
+                                      vtkStringArray)
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData, vtkTable
+from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
+
+from tessera import (vtkDirichletTessellation, vtkGeographicProjection, vtkThiessenArealAverage,
+                     vtkWindowClip)
+from tessera_testing import EXAMPLE_DATA, check, check_close, run
+
+
+def gauges_polydata(coords, ids, values=None):
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    station = vtkStringArray()
+    station.SetName("station_id")
+    for (lon, lat), sid in zip(coords, ids):
+        points.InsertNextPoint(lon, lat, 0.0)
+        station.InsertNextValue(sid)
+    data = vtkPolyData()
+    data.SetPoints(points)
+    data.GetPointData().AddArray(station)
+    if values is not None:
+        array = vtkDoubleArray()
+        array.SetName("value")
+        for v in values:
+            array.InsertNextValue(v)
+        data.GetPointData().AddArray(array)
+    return data
+
+
+def polygon(rings):
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    polys = vtkCellArray()
+    for ring in rings:
+        polys.InsertNextCell(len(ring))
+        for x, y in ring:
+            polys.InsertCellPoint(points.InsertNextPoint(x, y, 0.0))
+    data = vtkPolyData()
+    data.SetPoints(points)
+    data.SetPolys(polys)
+    return data
+
+
+def summary_column(f, name):
+    table = f.GetOutputDataObject(1)
+    column = table.GetColumnByName(name)
+    return [column.GetValue(r) for r in range(table.GetNumberOfRows())]
+
+
+def weights_by_gauge(tiles):
+    cd = tiles.GetCellData()
+    return {cd.GetArray("GaugeId").GetValue(c): cd.GetArray("Weight").GetValue(c)
+            for c in range(tiles.GetNumberOfCells())}
+
+
+def errors_of(f):
+    messages = []
+
+    @calldata_type(VTK_STRING)
+    def on_error(caller, event, message):
+        messages.append(message)
+
+    f.AddObserver(vtkCommand.ErrorEvent, on_error)
+    return messages
+
+
+def test_four_symmetric_gauges_share_a_square():
+    # Symmetric about the equator and the central meridian: every quadrant is a quarter.
+    f = vtkThiessenArealAverage()
+    f.SetGaugesData(gauges_polydata([(-0.5, -0.5), (0.5, -0.5), (0.5, 0.5), (-0.5, 0.5)],
+                                    ["a", "b", "c", "d"], [1.0, 2.0, 3.0, 4.0]))
+    f.SetCatchmentData(polygon([[(-1, -1), (1, -1), (1, 1), (-1, 1)]]))
+    f.Update(1)
+    check_close(summary_column(f, "ArealMean")[0], 2.5, 1e-9, "areal mean")
+    check(summary_column(f, "StationsUsed")[0] == 4, "4 gauges used")
+    f.Update(0)
+    w = weights_by_gauge(f.GetOutputDataObject(0))
+    for g in range(4):
+        check_close(w[g], 0.25, 1e-9, f"weight of gauge {g}")
+
+
+def read_colorado():
+    coords, ids = [], []
+    with open(os.path.join(EXAMPLE_DATA, "colorado_stations.csv")) as f:
+        for row in csv.DictReader(f):
+            coords.append((float(row["lon"]), float(row["lat"])))
+            ids.append(row["station_id"])
+    with open(os.path.join(EXAMPLE_DATA, "colorado_boundary.geojson")) as f:
+        ring = json.load(f)["features"][0]["geometry"]["coordinates"][0][:-1]
+    months = {}
+    with open(os.path.join(EXAMPLE_DATA, "colorado_monthly_precip.csv")) as f:
+        for row in csv.DictReader(f):
+            key = (int(row["year"]), int(row["month"]))
+            if key in ((1963, 8), (1920, 1), (1990, 7)):
+                months.setdefault(key, {})[row["station_id"]] = float(row["precip"])
+    return coords, ids, ring, months
+
+
+def observations_table(months):
+    table = vtkTable()
+    s, t, v = vtkStringArray(), vtkDoubleArray(), vtkDoubleArray()
+    s.SetName("station_id")
+    t.SetName("time")
+    v.SetName("value")
+    for (year, month), values in sorted(months.items()):
+        for sid, value in values.items():
+            s.InsertNextValue(sid)
+            t.InsertNextValue(year + (month - 1) / 12)
+            v.InsertNextValue(value)
+    for column in (s, t, v):
+        table.AddColumn(column)
+    return table
+
+
+def brute_force_mean(coords, ids, ring, values, step=0.01):
+    """Cell-area-weighted mean over a lon/lat raster of the value of the geodesically nearest
+    reporting gauge (distances on the WGS84 ellipsoid by the local-radii approximation, which
+    ranks gauges correctly at these spacings)."""
+    a, e2 = 6378137.0, 0.00669437999014
+    reporting = [(c, values[i]) for c, i in zip(coords, ids) if i in values]
+    glon = np.radians([c[0] for c, _ in reporting])
+    glat = np.radians([c[1] for c, _ in reporting])
+    gval = np.array([v for _, v in reporting])
+    lon = np.arange(-109.1 + step / 2, -102.0, step)
+    lat = np.arange(36.95 + step / 2, 41.05, step)
+    LON, LAT = np.meshgrid(lon, lat)
+    inside = Path(ring).contains_points(np.column_stack([LON.ravel(), LAT.ravel()])).reshape(LON.shape)
+    phi = np.radians(LAT[inside])
+    lam = np.radians(LON[inside])
+    # cell area on the ellipsoid: M * N * cos(phi) * dphi * dlambda
+    s2 = np.sin(phi) ** 2
+    meridional = a * (1 - e2) / (1 - e2 * s2) ** 1.5
+    normal = a / np.sqrt(1 - e2 * s2)
+    cell = meridional * normal * np.cos(phi)
+    best = np.full(phi.shape, np.inf)
+    nearest = np.zeros(phi.shape, dtype=int)
+    for g in range(len(gval)):
+        mid = 0.5 * (phi + glat[g])
+        s2m = np.sin(mid) ** 2
+        dy = (phi - glat[g]) * a * (1 - e2) / (1 - e2 * s2m) ** 1.5
+        dx = (lam - glon[g]) * a / np.sqrt(1 - e2 * s2m) * np.cos(mid)
+        d = dx * dx + dy * dy
+        closer = d < best
+        best[closer] = d[closer]
+        nearest[closer] = g
+    return float(np.sum(cell * gval[nearest]) / np.sum(cell))
+
+
+def test_colorado_months_match_a_brute_force_raster():
+    coords, ids, ring, months = read_colorado()
+    f = vtkThiessenArealAverage()
+    f.SetGaugesData(gauges_polydata(coords, ids))
+    f.SetCatchmentData(polygon([ring]))
+    f.SetObservationsData(observations_table(months))
+    f.Update(1)
+    means = summary_column(f, "ArealMean")
+    times = summary_column(f, "Time")
+    check(len(means) == 3, "three months")
+    for k, key in enumerate(sorted(months)):
+        expected = brute_force_mean(coords, ids, ring, months[key])
+        print(f"  {key}: Thiessen {means[k]:.6f}, raster of nearest gauges {expected:.6f}")
+        check(abs(means[k] - expected) <= 1e-3 * abs(expected),
+              f"{key}: Thiessen {means[k]:.6f} vs raster {expected:.6f}")
+        f.UpdateTimeStep(times[k])
+        tiles = f.GetOutputDataObject(0)
+        w = weights_by_gauge(tiles)
+        check_close(sum(w.values()), 1.0, 1e-12, f"{key}: weights sum to 1")
+        reported = sum(1 for i in ids if i in months[key])
+        check(summary_column(f, "StationsUsed")[k] == reported, f"{key}: StationsUsed")
+    steps = f.GetOutputInformation(0).Get(vtkStreamingDemandDrivenPipeline.TIME_STEPS())
+    check(steps is not None and len(steps) == 3, f"time steps advertised: {steps}")
+
+
+def test_missing_steps_and_unused_input_are_reported():
+    f = vtkThiessenArealAverage()
+    f.SetGaugesData(gauges_polydata([(0.2, 0.2), (0.8, 0.8), (0.5, 0.5), (0.2, 0.2)],
+                                    ["g1", "g2", "never", "g1copy"]))
+    f.SetCatchmentData(polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]]))
+    table = observations_table({(2000, 1): {"g1": 3.0, "unknown": 5.0}, (2000, 2): {"other": 1.0},
+                                (2000, 3): {"g1copy": 7.0, "g2": 1.0}})
+    f.SetObservationsData(table)
+    f.Update(1)
+    means = summary_column(f, "ArealMean")
+    check(means[0] == 3.0, f"only g1 reported: {means[0]}")
+    check(math.isnan(means[1]), "no gauge: NaN mean")
+    check(summary_column(f, "StationsUsed")[1] == 0, "no gauge: StationsUsed 0")
+    check(summary_column(f, "StationsUsed")[2] == 2, "the repeat stands in for g1")
+    fd = f.GetOutputDataObject(1).GetFieldData()
+    unobserved = fd.GetArray("UnobservedGaugeIds")
+    check([unobserved.GetValue(i) for i in range(unobserved.GetNumberOfTuples())] == [2],
+          "gauge 2 never observed")
+    check(fd.GetArray("DuplicateGaugeIds").GetValue(0) == 3 and fd.GetArray("DuplicateOfGaugeIds").GetValue(0) == 0,
+          "gauge 3 repeats gauge 0")
+
+
+def test_bad_gauge_and_self_intersecting_catchment_are_named():
+    f = vtkThiessenArealAverage()
+    messages = errors_of(f)
+    f.SetGaugesData(gauges_polydata([(0.2, 0.2), (0.8, 95.0)], ["a", "b"], [1.0, 2.0]))
+    f.SetCatchmentData(polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]]))
+    f.Update()
+    check(len(messages) == 1 and "gauge 1" in messages[0], f"gauge 1 named: {messages}")
+    g = vtkThiessenArealAverage()
+    messages = errors_of(g)
+    g.SetGaugesData(gauges_polydata([(0.2, 0.2)], ["a"], [1.0]))
+    g.SetCatchmentData(polygon([[(0, 0), (1, 1), (1, 0), (0, 1)]]))
+    g.Update()
+    check(len(messages) == 1 and "self-intersecting" in messages[0], f"bowtie named: {messages}")
+
+
+def test_window_clip_of_projected_tiles_sums_to_the_catchment():
+    coords, ids, ring, _ = read_colorado()
+    project = vtkGeographicProjection()
+    gauges = gauges_polydata(coords, ids)
+    project.SetInputData(gauges)
+    project.Update()
+    record = project.GetOutput().GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
+    outline = vtkGeographicProjection()
+    outline.ParametersFromDataOff()
+    # the outline in the gauges' projection: read the record's numbers back
+    values = dict(item.split("=") for item in record.split())
+    outline.SetProjectionToAlbersEqualArea()
+    outline.SetCentralLongitude(float(values["lon0"]))
+    outline.SetStandardParallels(float(values["lat1"]), float(values["lat2"]))
+    outline.SetInputData(polygon([ring]))
+    outline.Update()
+    tess = vtkDirichletTessellation()
+    tess.SetInputConnection(project.GetOutputPort())
+    clip = vtkWindowClip()
+    clip.SetInputConnection(tess.GetOutputPort(0))
+    clip.SetWindowConnection(outline.GetOutputPort())
+    clip.Update()
+    out = clip.GetOutput()
+    cd = out.GetCellData()
+    clipped = {cd.GetArray("TileId").GetValue(c): cd.GetArray("ClippedArea").GetValue(c)
+               for c in range(out.GetNumberOfCells())}
+    for c in range(out.GetNumberOfCells()):
+        fraction = cd.GetArray("AreaFraction").GetValue(c)
+        check(0.0 < fraction <= 1.0 + 1e-12, f"AreaFraction {fraction} in (0, 1]")
+    check(cd.GetAbstractArray("station_id") is not None, "tile cell data carried")
+    poly = outline.GetOutput()
+    ids = poly.GetCell(0).GetPointIds()
+    pts = np.array([poly.GetPoint(ids.GetId(k))[:2] for k in range(ids.GetNumberOfIds())])
+    x, y = pts[:, 0], pts[:, 1]
+    area = 0.5 * abs(float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)))
+    check_close(sum(clipped.values()), area, 1e-12 * area, "clipped tiles sum to the catchment")
+
+
+if __name__ == "__main__":
+    run([test_four_symmetric_gauges_share_a_square,
+         test_colorado_months_match_a_brute_force_raster,
+         test_missing_steps_and_unused_input_are_reported,
+         test_bad_gauge_and_self_intersecting_catchment_are_named,
+         test_window_clip_of_projected_tiles_sums_to_the_catchment])

@@ -1,0 +1,500 @@
+#include "vtkThiessenArealAverage.h"
+
+#include "vtkAbstractArray.h"
+#include "vtkAlgorithmOutput.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkTable.h"
+#include "vtkVariant.h"
+
+#include "TesseraFilterUtilities.h"
+#include "areal_average.h"
+#include "errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <unordered_map>
+
+vtkStandardNewMacro(vtkThiessenArealAverage);
+
+namespace
+{
+
+/// Station ids compare as text, trimmed, with leading zeros of integer ids dropped, so that an id
+/// read as text ("050109") matches the same id read as a number (50109).
+std::string StationKey(const vtkVariant& value)
+{
+  std::string text = value.ToString();
+  const auto first = text.find_first_not_of(" \t\"");
+  const auto last = text.find_last_not_of(" \t\"");
+  text = first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+  if (!text.empty() &&
+    std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }))
+  {
+    const auto nonZero = text.find_first_not_of('0');
+    text = nonZero == std::string::npos ? "0" : text.substr(nonZero);
+  }
+  return text;
+}
+
+std::string ListIds(const std::vector<std::string>& ids)
+{
+  std::ostringstream out;
+  for (std::size_t k = 0; k < ids.size() && k < 20; ++k)
+  {
+    out << (k ? ", " : "") << ids[k];
+  }
+  if (ids.size() > 20)
+  {
+    out << ", ... (" << ids.size() << " in all)";
+  }
+  return out.str();
+}
+
+/// Unique sorted times of the observations table's time column.
+std::vector<double> ReadTimes(vtkTable* table, const std::string& column)
+{
+  auto* times = vtkDataArray::SafeDownCast(table->GetColumnByName(column.c_str()));
+  if (!times)
+  {
+    throw tessera::InputError("the observations table has no numeric column '" + column + "'");
+  }
+  std::vector<double> unique(static_cast<std::size_t>(times->GetNumberOfTuples()));
+  for (vtkIdType r = 0; r < times->GetNumberOfTuples(); ++r)
+  {
+    unique[r] = times->GetTuple1(r);
+    if (!std::isfinite(unique[r]))
+    {
+      std::ostringstream message;
+      message << "observation row " << r << " has a non-finite time " << unique[r];
+      throw tessera::InputError(message.str());
+    }
+  }
+  std::sort(unique.begin(), unique.end());
+  unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
+  return unique;
+}
+
+} // namespace
+
+struct vtkThiessenArealAverage::Internals
+{
+  vtkMTimeType BuiltFor = 0;
+  std::vector<double> Times;
+  std::vector<std::vector<double>> Values; // per step, per gauge; NaN = missing
+  std::unique_ptr<tessera::ThiessenArealAverage> Average;
+  vtkNew<vtkTable> Summary;
+  std::vector<std::string> Warnings;
+};
+
+//------------------------------------------------------------------------------
+vtkThiessenArealAverage::vtkThiessenArealAverage()
+  : Internal(new Internals)
+{
+  this->SetNumberOfInputPorts(3);
+  this->SetNumberOfOutputPorts(2);
+}
+
+vtkThiessenArealAverage::~vtkThiessenArealAverage() = default;
+
+int vtkThiessenArealAverage::GetNumberOfTimeSteps()
+{
+  return static_cast<int>(this->Internal->Times.size());
+}
+
+//------------------------------------------------------------------------------
+int vtkThiessenArealAverage::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 0)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  }
+  else if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+  }
+  else
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkTable");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+int vtkThiessenArealAverage::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkPolyData" : "vtkTable");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkThiessenArealAverage::RequestInformation(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  if (this->GetNumberOfInputConnections(2) == 0)
+  {
+    return 1;
+  }
+  // The time steps are the observation table's times: that table is read now, ahead of
+  // RequestData, so that the pipeline (and ParaView's time slider) knows them.
+  vtkAlgorithm* source = this->GetInputAlgorithm(2, 0);
+  source->Update(this->GetInputConnection(2, 0)->GetIndex());
+  auto* table =
+    vtkTable::SafeDownCast(source->GetOutputDataObject(this->GetInputConnection(2, 0)->GetIndex()));
+  if (!table)
+  {
+    return 1;
+  }
+  try
+  {
+    const std::vector<double> times = ReadTimes(table, this->TimeColumn);
+    if (!times.empty())
+    {
+      outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(),
+        times.data(),
+        static_cast<int>(times.size()));
+      const double range[2] = { times.front(), times.back() };
+      outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+    }
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+    return 0;
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkThiessenArealAverage::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkPointSet* gauges = vtkPointSet::GetData(inputVector[0]);
+  vtkDataObject* catchment = vtkDataObject::GetData(inputVector[1]);
+  vtkTable* observations = vtkTable::GetData(inputVector[2]);
+  vtkInformation* tilesInfo = outputVector->GetInformationObject(0);
+  vtkPolyData* tilesOutput = vtkPolyData::GetData(outputVector, 0);
+  vtkTable* summaryOutput = vtkTable::GetData(outputVector, 1);
+  Internals& in = *this->Internal;
+  try
+  {
+    vtkAbstractArray* stationIds =
+      gauges->GetPointData()->GetAbstractArray(this->StationIdArrayName.c_str());
+    if (!stationIds && observations)
+    {
+      throw tessera::InputError("the gauges have no point-data array '" + this->StationIdArrayName +
+        "' of station ids to match the observations with");
+    }
+    vtkMTimeType stamp = std::max(this->GetMTime(), gauges->GetMTime());
+    stamp = std::max(stamp, catchment->GetMTime());
+    if (observations)
+    {
+      stamp = std::max(stamp, observations->GetMTime());
+    }
+    if (!in.Average || stamp > in.BuiltFor)
+    {
+      this->Build(gauges, stationIds, catchment, observations);
+      in.BuiltFor = stamp;
+    }
+    summaryOutput->ShallowCopy(in.Summary);
+
+    // The requested step: the last one at or before the requested time.
+    std::size_t step = 0;
+    if (tilesInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()) && !in.Times.empty())
+    {
+      const double t = tilesInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+      const auto after = std::upper_bound(in.Times.begin(), in.Times.end(), t);
+      step = after == in.Times.begin() ? 0 : static_cast<std::size_t>(after - in.Times.begin() - 1);
+    }
+    this->WriteTiles(step, gauges, stationIds, tilesOutput);
+    if (!in.Times.empty())
+    {
+      tilesOutput->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), in.Times[step]);
+    }
+    return 1;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+    in.Average.reset();
+    tilesOutput->Initialize();
+    summaryOutput->Initialize();
+    return 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
+  vtkAbstractArray* stationIds,
+  vtkDataObject* catchment,
+  vtkTable* observations)
+{
+  Internals& in = *this->Internal;
+  in.Average.reset();
+  in.Warnings.clear();
+  const std::vector<tessera::Point2> lonlat = tessera_vtk::ReadPoints2D(gauges->GetPoints());
+  const tessera_vtk::Rings rings = tessera_vtk::ReadPolygonRings(catchment);
+  tessera::ArealAverageSettings settings;
+  if (!this->ProjectionRecord.empty())
+  {
+    settings.HaveProjection = true;
+    settings.Projection = tessera::ProjectionParameters::FromString(this->ProjectionRecord);
+  }
+  settings.Areas = this->AreaMethod == EQUAL_AREA_PLANE ? tessera::AreaMethod::EqualAreaPlane
+    : this->AreaMethod == GEODESIC_POLYGON              ? tessera::AreaMethod::GeodesicPolygon
+                                                        : tessera::AreaMethod::Automatic;
+  in.Average.reset(
+    new tessera::ThiessenArealAverage(lonlat, rings.Offsets, rings.Vertices, settings));
+  const std::size_t gaugeCount = lonlat.size();
+  const double missing = std::numeric_limits<double>::quiet_NaN();
+
+  in.Times.clear();
+  in.Values.clear();
+  std::vector<std::string> unknownStations;
+  if (observations)
+  {
+    vtkAbstractArray* stations = observations->GetColumnByName(this->StationColumn.c_str());
+    auto* times =
+      vtkDataArray::SafeDownCast(observations->GetColumnByName(this->TimeColumn.c_str()));
+    auto* values =
+      vtkDataArray::SafeDownCast(observations->GetColumnByName(this->ValueColumn.c_str()));
+    if (!stations || !times || !values)
+    {
+      throw tessera::InputError("the observations table needs columns '" + this->StationColumn +
+        "', '" + this->TimeColumn + "' (numeric) and '" + this->ValueColumn + "' (numeric)");
+    }
+    std::unordered_map<std::string, std::size_t> gaugeOf;
+    for (std::size_t g = 0; g < gaugeCount; ++g)
+    {
+      gaugeOf.emplace(StationKey(stationIds->GetVariantValue(static_cast<vtkIdType>(g))), g);
+    }
+    in.Times = ReadTimes(observations, this->TimeColumn);
+    in.Values.assign(in.Times.size(), std::vector<double>(gaugeCount, missing));
+    std::unordered_map<std::string, bool> reportedUnknown;
+    for (vtkIdType r = 0; r < observations->GetNumberOfRows(); ++r)
+    {
+      const std::string key = StationKey(stations->GetVariantValue(r));
+      const auto gauge = gaugeOf.find(key);
+      if (gauge == gaugeOf.end())
+      {
+        if (reportedUnknown.emplace(key, true).second)
+        {
+          unknownStations.push_back(key);
+        }
+        continue;
+      }
+      const double value = values->GetTuple1(r);
+      if (std::isinf(value))
+      {
+        std::ostringstream message;
+        message << "observation row " << r << " (station " << key << ") has an infinite value";
+        throw tessera::InputError(message.str());
+      }
+      const std::size_t step = static_cast<std::size_t>(
+        std::lower_bound(in.Times.begin(), in.Times.end(), times->GetTuple1(r)) - in.Times.begin());
+      double& slot = in.Values[step][gauge->second];
+      if (std::isnan(slot))
+      {
+        slot = value; // a repeated (station, time) row keeps its first value
+      }
+    }
+  }
+  else
+  {
+    auto* values = vtkDataArray::SafeDownCast(
+      gauges->GetPointData()->GetAbstractArray(this->ValueArrayName.c_str()));
+    if (!values)
+    {
+      throw tessera::InputError(
+        "without observations the gauges need a numeric point-data array '" + this->ValueArrayName +
+        "'");
+    }
+    in.Times.push_back(0.0);
+    in.Values.emplace_back(gaugeCount);
+    for (std::size_t g = 0; g < gaugeCount; ++g)
+    {
+      in.Values[0][g] = values->GetTuple1(static_cast<vtkIdType>(g));
+    }
+  }
+
+  // Everything valid but unused is reported by id.
+  auto idOf = [&](std::size_t g)
+  {
+    return stationIds ? stationIds->GetVariantValue(static_cast<vtkIdType>(g)).ToString()
+                      : std::to_string(g);
+  };
+  std::vector<std::int32_t> unobserved;
+  std::vector<std::string> unobservedNames;
+  for (std::size_t g = 0; g < gaugeCount; ++g)
+  {
+    bool any = false;
+    for (const auto& stepValues : in.Values)
+    {
+      any = any || !std::isnan(stepValues[g]);
+    }
+    if (!any)
+    {
+      unobserved.push_back(static_cast<std::int32_t>(g));
+      unobservedNames.push_back(idOf(g));
+    }
+  }
+  std::vector<std::int32_t> duplicates, duplicateOf;
+  std::vector<std::string> duplicateNames;
+  for (const auto& pair : in.Average->DuplicateGauges())
+  {
+    duplicates.push_back(pair.first);
+    duplicateOf.push_back(pair.second);
+    duplicateNames.push_back(idOf(pair.first) + " (same place as " + idOf(pair.second) + ")");
+  }
+  if (!unobserved.empty())
+  {
+    vtkWarningMacro(<< unobserved.size() << " gauge(s) have no observation and are never used: "
+                    << ListIds(unobservedNames));
+  }
+  if (!unknownStations.empty())
+  {
+    vtkWarningMacro(<< "observations of " << unknownStations.size()
+                    << " station id(s) that no gauge has were ignored: "
+                    << ListIds(unknownStations));
+  }
+  if (!duplicates.empty())
+  {
+    vtkWarningMacro(<< duplicates.size()
+                    << " gauge(s) stand where an earlier gauge stands; the first that reports is "
+                       "used: "
+                    << ListIds(duplicateNames));
+  }
+
+  // The summary: every step in order, each one updating the tessellation of the one before.
+  vtkNew<vtkDoubleArray> timeColumn, means, covered;
+  vtkNew<vtkIntArray> used, weighted;
+  timeColumn->SetName("Time");
+  means->SetName("ArealMean");
+  used->SetName("StationsUsed");
+  weighted->SetName("StationsWeighted");
+  covered->SetName("CoveredFraction");
+  for (std::size_t step = 0; step < in.Times.size(); ++step)
+  {
+    if (step % 16 == 0)
+    {
+      this->UpdateProgress(0.9 * static_cast<double>(step) / in.Times.size());
+    }
+    const tessera::ArealStep result = in.Average->Step(in.Values[step]);
+    timeColumn->InsertNextValue(in.Times[step]);
+    means->InsertNextValue(result.Mean);
+    used->InsertNextValue(result.StationsUsed);
+    weighted->InsertNextValue(result.StationsWeighted);
+    covered->InsertNextValue(result.CoveredFraction);
+  }
+  in.Summary->Initialize();
+  in.Summary->AddColumn(timeColumn);
+  in.Summary->AddColumn(means);
+  in.Summary->AddColumn(used);
+  in.Summary->AddColumn(weighted);
+  in.Summary->AddColumn(covered);
+  tessera_vtk::AddIdFieldArray(in.Summary, "UnobservedGaugeIds", unobserved);
+  tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateGaugeIds", duplicates);
+  tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateOfGaugeIds", duplicateOf);
+}
+
+//------------------------------------------------------------------------------
+void vtkThiessenArealAverage::WriteTiles(std::size_t step,
+  vtkPointSet*,
+  vtkAbstractArray* stationIds,
+  vtkPolyData* output)
+{
+  Internals& in = *this->Internal;
+  const tessera::ArealStep result = in.Average->Step(in.Values[step]);
+  const tessera::ClippedTilesLonLat clipped = in.Average->CurrentClippedTiles(2000.0);
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (const auto& p : clipped.Rings.Vertices)
+  {
+    points->InsertNextPoint(p.x, p.y, 0.0);
+  }
+  vtkNew<vtkCellArray> polys;
+  vtkSmartPointer<vtkAbstractArray> station;
+  if (stationIds)
+  {
+    station = vtk::TakeSmartPointer(stationIds->NewInstance());
+    station->SetNumberOfComponents(stationIds->GetNumberOfComponents());
+  }
+  vtkNew<vtkIdTypeArray> gaugeIds;
+  vtkNew<vtkDoubleArray> weights, areas, values;
+  gaugeIds->SetName("GaugeId");
+  weights->SetName("Weight");
+  areas->SetName("Area_m2");
+  values->SetName("Value");
+  for (std::size_t k = 0; k < clipped.Gauges.size(); ++k)
+  {
+    const std::int32_t g = clipped.Gauges[k];
+    const auto found = std::lower_bound(result.Gauges.begin(), result.Gauges.end(), g);
+    const std::size_t index = static_cast<std::size_t>(found - result.Gauges.begin());
+    const bool isWeighted = found != result.Gauges.end() && *found == g;
+    for (std::size_t r = clipped.TileRingOffsets[k]; r < clipped.TileRingOffsets[k + 1]; ++r)
+    {
+      const std::size_t begin = clipped.Rings.RingOffsets[r],
+                        end = clipped.Rings.RingOffsets[r + 1];
+      polys->InsertNextCell(static_cast<vtkIdType>(end - begin));
+      for (std::size_t v = begin; v < end; ++v)
+      {
+        polys->InsertCellPoint(static_cast<vtkIdType>(v));
+      }
+      if (station)
+      {
+        station->InsertNextTuple(g, stationIds);
+      }
+      gaugeIds->InsertNextValue(g);
+      weights->InsertNextValue(isWeighted ? result.Weights[index] : 0.0);
+      areas->InsertNextValue(isWeighted ? result.AreasM2[index] : 0.0);
+      values->InsertNextValue(in.Values[step][g]);
+    }
+  }
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  if (station)
+  {
+    station->SetName("StationId");
+    output->GetCellData()->AddArray(station);
+  }
+  output->GetCellData()->AddArray(gaugeIds);
+  output->GetCellData()->AddArray(weights);
+  output->GetCellData()->AddArray(areas);
+  output->GetCellData()->AddArray(values);
+}
+
+//------------------------------------------------------------------------------
+void vtkThiessenArealAverage::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "StationIdArrayName: " << this->StationIdArrayName << "\n";
+  os << indent << "ValueArrayName: " << this->ValueArrayName << "\n";
+  os << indent << "StationColumn: " << this->StationColumn << "\n";
+  os << indent << "TimeColumn: " << this->TimeColumn << "\n";
+  os << indent << "ValueColumn: " << this->ValueColumn << "\n";
+  os << indent << "ProjectionRecord: " << this->ProjectionRecord << "\n";
+  os << indent << "AreaMethod: " << this->AreaMethod << "\n";
+}

@@ -1,0 +1,173 @@
+/**
+ * @class   vtkThiessenArealAverage
+ * @brief   Thiessen weights and areal means of gauge time series over a catchment
+ *
+ * vtkThiessenArealAverage is the hydrologist's Thiessen (1911) method: for each time step, the
+ * gauges that reported are tessellated (Green-Sibson, exact), their tiles are clipped to the
+ * catchment, and each gauge is weighted by the ellipsoidal area of its tile inside the catchment
+ * over the catchment's ellipsoidal area. The tessellation is built in a window holding every gauge
+ * and the catchment, so a gauge outside the catchment still owns the part of it nearest to it. A
+ * gauge without a value at a step is removed for that step and its neighbours take its area;
+ * consecutive steps update the tessellation instead of rebuilding it.
+ *
+ * Inputs:
+ * - port 0, gauges: a vtkPointSet with x = longitude, y = latitude (degrees, WGS84) and a
+ *   point-data array of station ids (StationIdArrayName, default "station_id");
+ * - port 1, catchment: polygons or closed polylines in lon/lat (vtkPolyData, or a composite data set such as
+ *   vtkGDALVectorReader's output), taken as rings under the even-odd rule;
+ * - port 2 (optional), observations: a vtkTable in long format with a station id column, a time
+ *   column and a value column (StationColumn, TimeColumn, ValueColumn: defaults "station_id",
+ *   "time", "value"). Without it, the gauges' point-data array ValueArrayName is one time step.
+ * Station ids match as text (leading zeros of integer ids are ignored, so "050109" matches 50109).
+ *
+ * The projection is vtkGeographicProjection's automatic equal-area conic fitted to the gauges and
+ * catchment, unless ProjectionRecord holds a `TesseraProjection` record (e.g. "projection=UTM
+ * zone=13 north=1"). With an equal-area projection, planar areas are the ellipsoidal areas;
+ * otherwise rings are unprojected, densified, and measured with GeographicLib::PolygonArea
+ * (AreaMethod selects explicitly).
+ *
+ * Output 0 (vtkPolyData, time-dependent): the tiles of the requested time step clipped to the
+ * catchment, in lon/lat (one polygon per ring), with cell data `StationId` (the gauge's id, its
+ * array type kept), `GaugeId` (index into the gauges), `Weight`, `Area_m2` and `Value` (the
+ * gauge's value at that step). Time steps are advertised, so ParaView's time slider re-weights
+ * the tiles step by step.
+ *
+ * Output 1 (vtkTable): one row per time step: `Time`, `ArealMean` (NaN where no gauge reported),
+ * `StationsUsed` (gauges reporting), `StationsWeighted` (of those, gauges whose tile reaches the
+ * catchment), `CoveredFraction` (sum of weights).
+ *
+ * Unused input is reported, never dropped silently: gauges with no observation, observations of
+ * unknown stations, and co-located gauges (the first is kept and its value used) are listed in a
+ * warning and in output 1's field data (`UnobservedGaugeIds`, `DuplicateGaugeIds`,
+ * `DuplicateOfGaugeIds`). A gauge with a NaN or out-of-range coordinate and a self-intersecting
+ * catchment are errors naming them.
+ */
+
+#ifndef vtkThiessenArealAverage_h
+#define vtkThiessenArealAverage_h
+
+#include "tesseraFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <cstddef> // For size_t
+#include <memory>  // For the internals
+#include <string>  // For the names
+
+class vtkAbstractArray;
+class vtkPointSet;
+class vtkPolyData;
+class vtkTable;
+
+class TESSERAFILTERS_EXPORT vtkThiessenArealAverage : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkThiessenArealAverage* New();
+  vtkTypeMacro(vtkThiessenArealAverage, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum AreaMethods
+  {
+    AUTOMATIC_AREAS = 0,
+    EQUAL_AREA_PLANE = 1,
+    GEODESIC_POLYGON = 2
+  };
+
+  ///@{
+  /**
+   * The three inputs: gauges (port 0), catchment (port 1), observations (port 2, optional).
+   */
+  void SetGaugesConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(0, output); }
+  void SetCatchmentConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void SetObservationsConnection(vtkAlgorithmOutput* output)
+  {
+    this->SetInputConnection(2, output);
+  }
+  void SetGaugesData(vtkDataObject* data) { this->SetInputData(0, data); }
+  void SetCatchmentData(vtkDataObject* data) { this->SetInputData(1, data); }
+  void SetObservationsData(vtkDataObject* data) { this->SetInputData(2, data); }
+  ///@}
+
+  ///@{
+  /**
+   * Names of the gauges' station id array and, without observations, of their value array.
+   */
+  vtkSetStdStringFromCharMacro(StationIdArrayName);
+  vtkGetCharFromStdStringMacro(StationIdArrayName);
+  vtkSetStdStringFromCharMacro(ValueArrayName);
+  vtkGetCharFromStdStringMacro(ValueArrayName);
+  ///@}
+
+  ///@{
+  /**
+   * Column names of the observations table.
+   */
+  vtkSetStdStringFromCharMacro(StationColumn);
+  vtkGetCharFromStdStringMacro(StationColumn);
+  vtkSetStdStringFromCharMacro(TimeColumn);
+  vtkGetCharFromStdStringMacro(TimeColumn);
+  vtkSetStdStringFromCharMacro(ValueColumn);
+  vtkGetCharFromStdStringMacro(ValueColumn);
+  ///@}
+
+  ///@{
+  /**
+   * A `TesseraProjection` record ("projection=... lon0=... ..."); empty (default) = automatic.
+   */
+  vtkSetStdStringFromCharMacro(ProjectionRecord);
+  vtkGetCharFromStdStringMacro(ProjectionRecord);
+  ///@}
+
+  ///@{
+  /**
+   * How ellipsoidal areas are measured (default automatic: planar areas for an equal-area
+   * projection, GeographicLib::PolygonArea of unprojected rings otherwise).
+   */
+  vtkSetClampMacro(AreaMethod, int, AUTOMATIC_AREAS, GEODESIC_POLYGON);
+  vtkGetMacro(AreaMethod, int);
+  void SetAreaMethodToAutomatic() { this->SetAreaMethod(AUTOMATIC_AREAS); }
+  void SetAreaMethodToEqualAreaPlane() { this->SetAreaMethod(EQUAL_AREA_PLANE); }
+  void SetAreaMethodToGeodesicPolygon() { this->SetAreaMethod(GEODESIC_POLYGON); }
+  ///@}
+
+  /**
+   * Number of time steps found in the last update (1 without observations).
+   */
+  int GetNumberOfTimeSteps();
+
+protected:
+  vtkThiessenArealAverage();
+  ~vtkThiessenArealAverage() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  std::string StationIdArrayName = "station_id";
+  std::string ValueArrayName = "value";
+  std::string StationColumn = "station_id";
+  std::string TimeColumn = "time";
+  std::string ValueColumn = "value";
+  std::string ProjectionRecord;
+  int AreaMethod = AUTOMATIC_AREAS;
+
+private:
+  vtkThiessenArealAverage(const vtkThiessenArealAverage&) = delete;
+  void operator=(const vtkThiessenArealAverage&) = delete;
+
+  /// Reads the inputs, builds the engine and computes every step's summary row.
+  void Build(vtkPointSet* gauges,
+    vtkAbstractArray* stationIds,
+    vtkDataObject* catchment,
+    vtkTable* observations);
+  /// Output 0 for one step.
+  void WriteTiles(std::size_t step,
+    vtkPointSet* gauges,
+    vtkAbstractArray* stationIds,
+    vtkPolyData* output);
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

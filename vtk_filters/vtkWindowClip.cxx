@@ -1,0 +1,137 @@
+#include "vtkWindowClip.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "TesseraFilterUtilities.h"
+#include "clip.h"
+
+#include <exception>
+
+vtkStandardNewMacro(vtkWindowClip);
+
+//------------------------------------------------------------------------------
+vtkWindowClip::vtkWindowClip()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+//------------------------------------------------------------------------------
+int vtkWindowClip::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkPolyData" : "vtkDataObject");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkWindowClip::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkPolyData* tiles = vtkPolyData::GetData(inputVector[0]);
+  vtkDataObject* windowData = vtkDataObject::GetData(inputVector[1]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  try
+  {
+    const tessera_vtk::Rings window = tessera_vtk::ReadPolygonRings(windowData);
+    const tessera::Catchment catchment(window.Offsets, window.Vertices);
+
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    vtkNew<vtkCellArray> polys;
+    vtkCellData* outCD = output->GetCellData();
+    vtkCellData* inCD = tiles->GetCellData();
+    outCD->CopyAllocate(inCD);
+    vtkNew<vtkIdTypeArray> tileIds;
+    tileIds->SetName("TileId");
+    vtkNew<vtkDoubleArray> clippedAreas;
+    clippedAreas->SetName("ClippedArea");
+    vtkNew<vtkDoubleArray> fractions;
+    fractions->SetName("AreaFraction");
+    vtkNew<vtkUnsignedCharArray> holes;
+    holes->SetName("Hole");
+
+    tessera::Catchment::Workspace work;
+    std::vector<tessera::Point2> tile;
+    vtkNew<vtkIdList> ids;
+    const vtkIdType cellCount = tiles->GetNumberOfCells();
+    for (vtkIdType c = 0; c < cellCount; ++c)
+    {
+      if (c % 4096 == 0)
+      {
+        this->UpdateProgress(static_cast<double>(c) / std::max<vtkIdType>(cellCount, 1));
+      }
+      const int type = tiles->GetCellType(c);
+      if (type != VTK_POLYGON && type != VTK_TRIANGLE && type != VTK_QUAD)
+      {
+        continue;
+      }
+      tiles->GetCellPoints(c, ids);
+      tile.resize(ids->GetNumberOfIds());
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      {
+        double p[3];
+        tiles->GetPoint(ids->GetId(k), p);
+        tile[k] = { p[0], p[1] };
+      }
+      const double ownArea = tessera_vtk::OrientAnticlockwise(tile);
+      tessera::ClippedRings rings;
+      const double clipped =
+        catchment.ClipInto(tile.data(), tile.size(), static_cast<std::size_t>(c), work, &rings);
+      if (clipped <= 0.0)
+      {
+        continue;
+      }
+      for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
+      {
+        const std::size_t begin = rings.RingOffsets[r], end = rings.RingOffsets[r + 1];
+        if (end - begin < 3)
+        {
+          continue;
+        }
+        polys->InsertNextCell(static_cast<vtkIdType>(end - begin));
+        double twiceArea = 0.0;
+        for (std::size_t k = begin; k < end; ++k)
+        {
+          const auto& a = rings.Vertices[k];
+          const auto& b = rings.Vertices[k + 1 < end ? k + 1 : begin];
+          twiceArea += a.x * b.y - b.x * a.y;
+          polys->InsertCellPoint(points->InsertNextPoint(a.x, a.y, 0.0));
+        }
+        outCD->CopyData(inCD, c, polys->GetNumberOfCells() - 1);
+        tileIds->InsertNextValue(c);
+        clippedAreas->InsertNextValue(clipped);
+        fractions->InsertNextValue(ownArea > 0.0 ? clipped / ownArea : 0.0);
+        holes->InsertNextValue(twiceArea < 0.0 ? 1 : 0);
+      }
+    }
+    output->SetPoints(points);
+    output->SetPolys(polys);
+    outCD->AddArray(tileIds);
+    outCD->AddArray(clippedAreas);
+    outCD->AddArray(fractions);
+    outCD->AddArray(holes);
+    return 1;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+    output->Initialize();
+    return 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkWindowClip::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}

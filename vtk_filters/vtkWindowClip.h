@@ -1,0 +1,54 @@
+/**
+ * @class   vtkWindowClip
+ * @brief   clip convex tiles by a polygon window with holes (even-odd), with exact areas
+ *
+ * vtkWindowClip intersects every polygon of input 0 (convex tiles, such as the output of
+ * vtkDirichletTessellation; a clockwise one is reversed first) with the region of input 1: the
+ * polygons (and closed polylines, as vtkGDALVectorReader gives rings) of input 1 taken as rings under the even-odd rule, so a ring inside another is a hole
+ * and a ring inside a hole an island. Ring orientation and order do not matter. A catchment
+ * boundary that touches or crosses itself, or two rings that touch, is an error naming them.
+ *
+ * The output holds one polygon per ring of each clipped tile (a tile cut into two lobes gives two
+ * polygons; a tile around a hole gives its outer ring and the hole's ring, flagged), with the
+ * tile's cell data and:
+ * - `TileId` (vtkIdType): the input 0 cell the polygon comes from;
+ * - `ClippedArea` (double): the area of the whole tile inside the window (same on all its rings);
+ * - `AreaFraction` (double): ClippedArea over the tile's own area;
+ * - `Hole` (unsigned char): 1 for a ring that bounds a hole (clockwise), 0 otherwise.
+ * Tiles entirely outside the window give no polygon. Areas use exact orientation tests and
+ * compensated sums, so the clipped areas of a tiling sum to the window's area to round-off.
+ * Only x and y are used.
+ */
+
+#ifndef vtkWindowClip_h
+#define vtkWindowClip_h
+
+#include "tesseraFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class TESSERAFILTERS_EXPORT vtkWindowClip : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkWindowClip* New();
+  vtkTypeMacro(vtkWindowClip, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The window polygons (input port 1).
+   */
+  void SetWindowConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+  void SetWindowData(vtkDataObject* data) { this->SetInputData(1, data); }
+
+protected:
+  vtkWindowClip();
+  ~vtkWindowClip() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+private:
+  vtkWindowClip(const vtkWindowClip&) = delete;
+  void operator=(const vtkWindowClip&) = delete;
+};
+
+#endif
