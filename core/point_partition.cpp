@@ -1,0 +1,179 @@
+#include "point_partition.h"
+
+#include "distance_transform.h"
+#include "errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace tessera
+{
+
+namespace
+{
+
+void CheckPoint(const Point2& p, std::size_t index, int width, int height)
+{
+  if (!std::isfinite(p.x) || !std::isfinite(p.y))
+  {
+    throw InputError("point " + std::to_string(index) + " has a NaN or infinite coordinate");
+  }
+  if (p.x < -0.5 || p.y < -0.5 || p.x > width - 0.5 || p.y > height - 0.5)
+  {
+    throw InputError("point " + std::to_string(index) + " lies outside the " +
+      std::to_string(width) + " x " + std::to_string(height) + " image");
+  }
+}
+
+double SquaredDistanceToPixel(const Point2& p, int pixel, int width)
+{
+  const double dx = p.x - pixel % width;
+  const double dy = p.y - pixel / width;
+  return dx * dx + dy * dy;
+}
+
+// The nearest contour pixel to p among the nearest features of p's pixel and its neighbours.
+int NearestContourPixel(const Point2& p, const std::vector<int>& nearest, int width, int height)
+{
+  const int ci = std::clamp(static_cast<int>(std::lround(p.x)), 0, width - 1);
+  const int cj = std::clamp(static_cast<int>(std::lround(p.y)), 0, height - 1);
+  int best = -1;
+  double bestDistance = 0.0;
+  for (int dj = -1; dj <= 1; ++dj)
+  {
+    for (int di = -1; di <= 1; ++di)
+    {
+      const int i = ci + di;
+      const int j = cj + dj;
+      if (i < 0 || j < 0 || i >= width || j >= height)
+      {
+        continue;
+      }
+      const int candidate = nearest[static_cast<std::size_t>(j) * width + i];
+      const double distance = SquaredDistanceToPixel(p, candidate, width);
+      if (best < 0 || distance < bestDistance)
+      {
+        best = candidate;
+        bestDistance = distance;
+      }
+    }
+  }
+  return best;
+}
+
+// How far p lies past the end pixel `position` of an open contour, along the contour's direction
+// at that end (0 if it is not an end pixel, the contour is closed, or p is not past it).
+double DistanceBeyondEnd(const Point2& p,
+  const RidgeContours& contours,
+  int contour,
+  int position,
+  int width)
+{
+  const int first = contours.Offsets[contour];
+  const int last = contours.Offsets[contour + 1] - 1;
+  if (contours.Closed[contour] || last == first || (position != first && position != last))
+  {
+    return 0.0;
+  }
+  // Tangent over up to 5 pixels: one pixel step only gives the 8 chain-code directions.
+  const int reach = std::min(5, last - first);
+  const int inner = contours.Pixels[position == first ? first + reach : last - reach];
+  const int end = contours.Pixels[position];
+  const double tx = end % width - inner % width;
+  const double ty = end / width - inner / width;
+  const double norm = std::hypot(tx, ty);
+  const double along = ((p.x - end % width) * tx + (p.y - end / width) * ty) / norm;
+  return std::max(0.0, along);
+}
+
+} // namespace
+
+std::vector<double> ContourArcLengths(const RidgeContours& contours, int width)
+{
+  std::vector<double> arc(contours.Pixels.size(), 0.0);
+  for (int c = 0; c < contours.Count(); ++c)
+  {
+    for (int k = contours.Offsets[c] + 1; k < contours.Offsets[c + 1]; ++k)
+    {
+      const int a = contours.Pixels[k - 1];
+      const int b = contours.Pixels[k];
+      arc[k] =
+        arc[k - 1] + std::hypot(double(a % width - b % width), double(a / width - b / width));
+    }
+  }
+  return arc;
+}
+
+PointPartition PartitionPoints(const std::vector<Point2>& pixelPoints,
+  const RidgeContours& contours,
+  int width,
+  int height)
+{
+  for (std::size_t k = 0; k < pixelPoints.size(); ++k)
+  {
+    CheckPoint(pixelPoints[k], k, width, height);
+  }
+  PointPartition result;
+  result.GroupId.assign(pixelPoints.size(), -1);
+  result.Node.assign(pixelPoints.size(), 0.0);
+  result.Projection.assign(pixelPoints.size(), -1);
+  result.ArcLength = ContourArcLengths(contours, width);
+  if (contours.Count() == 0)
+  {
+    return result;
+  }
+  // Where contours share a junction pixel the later contour owns it; either is equally near.
+  const std::size_t pixelCount = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  std::vector<std::uint8_t> isContour(pixelCount, 0);
+  std::vector<int> positionOf(pixelCount, -1);
+  std::vector<int> contourOfPosition(contours.Pixels.size(), -1);
+  for (int c = 0; c < contours.Count(); ++c)
+  {
+    for (int k = contours.Offsets[c]; k < contours.Offsets[c + 1]; ++k)
+    {
+      isContour[contours.Pixels[k]] = 1;
+      positionOf[contours.Pixels[k]] = k;
+      contourOfPosition[k] = c;
+    }
+  }
+  const std::vector<int> nearest = NearestFeatureTransform(isContour, width, height);
+  result.Extended.assign(pixelPoints.size(), 0);
+  std::vector<double> extendedArc(pixelPoints.size(), 0.0);
+  std::vector<double> lowest(contours.Count(), 0.0);
+  std::vector<double> highest(contours.Lengths.begin(), contours.Lengths.end());
+  for (std::size_t k = 0; k < pixelPoints.size(); ++k)
+  {
+    const int pixel = NearestContourPixel(pixelPoints[k], nearest, width, height);
+    const int position = positionOf[pixel];
+    const int contour = contourOfPosition[position];
+    result.GroupId[k] = contour;
+    result.Projection[k] = position;
+    extendedArc[k] = result.ArcLength[position];
+    const double beyond = DistanceBeyondEnd(pixelPoints[k], contours, contour, position, width);
+    if (beyond > 0.0)
+    {
+      result.Extended[k] = 1;
+      extendedArc[k] += position == contours.Offsets[contour] ? -beyond : beyond;
+      lowest[contour] = std::min(lowest[contour], extendedArc[k]);
+      highest[contour] = std::max(highest[contour], extendedArc[k]);
+    }
+  }
+  result.NodeOrigin.resize(contours.Count());
+  result.NodePerPixel.resize(contours.Count());
+  for (int c = 0; c < contours.Count(); ++c)
+  {
+    const double span = highest[c] - lowest[c];
+    result.NodePerPixel[c] = span > 0.0 ? 1.0 / span : 0.0;
+    result.NodeOrigin[c] = -lowest[c] * result.NodePerPixel[c];
+  }
+  for (std::size_t k = 0; k < pixelPoints.size(); ++k)
+  {
+    const int c = result.GroupId[k];
+    result.Node[k] =
+      std::clamp(result.NodeOrigin[c] + extendedArc[k] * result.NodePerPixel[c], 0.0, 1.0);
+  }
+  return result;
+}
+
+} // namespace tessera

@@ -1,0 +1,54 @@
+#pragma once
+// Partition and node estimation (Goshtasby 2000, section 6): a point joins the ridge contour
+// holding the pixel nearest to it; that pixel is its projection, and its node is the contour
+// length from the start pixel to the projection divided by the contour length. An open contour
+// starts at its first traced end pixel, a closed one at its first traced pixel.
+//
+// The nearest contour pixel comes from an exact nearest-feature transform of the contour pixels
+// (linear in pixels), refined per point by comparing the true distances to the nearest
+// features of the point's pixel and its eight neighbours (linear in points). This finds the
+// nearest pixel centre except in near-ties, where the one chosen is at most a small fraction of
+// a pixel farther.
+//
+// Addition to the paper: the major-ridge test stops a ridge contour a few pixels before the end
+// of the points along it (the crest near a data end slopes along itself), and every point past
+// the end would then share the end pixel's node, collapsing the end of the fitted curve onto
+// their mean. A point whose projection is an end pixel of an open contour and that lies beyond
+// it along the end tangent (measured over the last few pixels) gets the arc length extended by
+// that tangent distance; the nodes of the contour's points are then the extended arc lengths
+// rescaled to [0, 1]. For contours whose ends are not passed the nodes are the paper's.
+
+#include "geometry.h"
+#include "ridge_contours.h"
+
+#include <vector>
+
+namespace tessera
+{
+
+struct PointPartition
+{
+  std::vector<int> GroupId;    ///< contour id per point, -1 when there is no contour
+  std::vector<double> Node;    ///< in [0, 1] (closed contours: [0, 1)); 0 when unassigned
+  std::vector<int> Projection; ///< position in RidgeContours::Pixels of the projection, or -1
+  /// Whether the node of the point was extended past an end pixel (it then differs from the
+  /// nodes of the other points with the same projection).
+  std::vector<std::uint8_t> Extended;
+  /// Per contour, the node of the arc length 0 (start pixel) and the node length of one pixel.
+  std::vector<double> NodeOrigin;
+  std::vector<double> NodePerPixel;
+  /// Per position in RidgeContours::Pixels: arc length (pixels) from its contour's start.
+  std::vector<double> ArcLength;
+};
+
+/// Arc length from the start of its contour at every position of contours.Pixels.
+std::vector<double> ContourArcLengths(const RidgeContours& contours, int width);
+
+/// pixelPoints are in pixel units (pixel centres at integers) and must lie inside the image;
+/// a point outside or with a NaN coordinate is an InputError naming its index.
+PointPartition PartitionPoints(const std::vector<Point2>& pixelPoints,
+  const RidgeContours& contours,
+  int width,
+  int height);
+
+} // namespace tessera

@@ -1,0 +1,208 @@
+#include "rational_gaussian_curve.h"
+
+#include "errors.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <string>
+
+namespace tessera
+{
+
+namespace
+{
+
+struct ControlPoint
+{
+  double Node;
+  double Weight;
+  Point2 Position;
+};
+
+void CheckInput(const std::vector<double>& nodes,
+  const std::vector<Point2>& controls,
+  const std::vector<double>& weights,
+  double sigma,
+  int sampleCount)
+{
+  if (nodes.size() != controls.size() || weights.size() != controls.size())
+  {
+    throw InputError("RaG curve: " + std::to_string(nodes.size()) + " nodes, " +
+      std::to_string(controls.size()) + " control points and " + std::to_string(weights.size()) +
+      " weights differ in number");
+  }
+  if (controls.empty())
+  {
+    throw InputError("RaG curve has no control point");
+  }
+  if (!(sigma > 0.0) || !std::isfinite(sigma))
+  {
+    throw InputError("RaG curve sigma " + std::to_string(sigma) + " is not a positive number");
+  }
+  if (sampleCount < 2)
+  {
+    throw InputError("RaG curve sample count " + std::to_string(sampleCount) + " is below 2");
+  }
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+  {
+    if (!(nodes[k] >= 0.0 && nodes[k] <= 1.0))
+    {
+      throw InputError(
+        "RaG node " + std::to_string(k) + " (" + std::to_string(nodes[k]) + ") is outside [0, 1]");
+    }
+    if (!(weights[k] > 0.0) || !std::isfinite(weights[k]))
+    {
+      throw InputError("RaG weight " + std::to_string(k) + " (" + std::to_string(weights[k]) +
+        ") is not a positive number");
+    }
+    if (!std::isfinite(controls[k].x) || !std::isfinite(controls[k].y))
+    {
+      throw InputError(
+        "RaG control point " + std::to_string(k) + " has a NaN or infinite coordinate");
+    }
+  }
+}
+
+// Controls sorted by node. A closed curve gets copies shifted by -1 and +1 so that a window of
+// half-width below 1/2 around any u in [0, 1) sees each periodic image at most once.
+std::vector<ControlPoint> SortedControls(const std::vector<double>& nodes,
+  const std::vector<Point2>& controls,
+  const std::vector<double>& weights,
+  bool closed)
+{
+  std::vector<ControlPoint> sorted;
+  const int shifts = closed ? 1 : 0;
+  for (int shift = -shifts; shift <= shifts; ++shift)
+  {
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+    {
+      sorted.push_back({ nodes[k] + shift, weights[k], controls[k] });
+    }
+  }
+  std::sort(sorted.begin(),
+    sorted.end(),
+    [](const ControlPoint& a, const ControlPoint& b) { return a.Node < b.Node; });
+  return sorted;
+}
+
+// Sum of weighted Gaussians relative to exp(-nearest^2 / 2 sigma^2), over the controls within
+// `radius` of u, found by walking outwards from the insertion point of u. Returns false for a
+// closed curve whose window would reach half a period (and so could see a node twice).
+bool WindowedAverage(const std::vector<ControlPoint>& sorted,
+  double u,
+  double sigma,
+  bool closed,
+  Point2& average)
+{
+  const auto at = std::lower_bound(sorted.begin(),
+    sorted.end(),
+    u,
+    [](const ControlPoint& c, double value) { return c.Node < value; });
+  const std::size_t position = static_cast<std::size_t>(at - sorted.begin());
+  double nearest = std::numeric_limits<double>::infinity();
+  if (position < sorted.size())
+  {
+    nearest = std::min(nearest, std::abs(sorted[position].Node - u));
+  }
+  if (position > 0)
+  {
+    nearest = std::min(nearest, std::abs(sorted[position - 1].Node - u));
+  }
+  const double twoSigma2 = 2.0 * sigma * sigma;
+  const double radius2 = nearest * nearest + 64.0 * sigma * sigma;
+  if (closed && radius2 >= 0.25)
+  {
+    return false;
+  }
+  double sumW = 0.0;
+  double sumX = 0.0;
+  double sumY = 0.0;
+  auto accumulate = [&](const ControlPoint& c)
+  {
+    const double d = c.Node - u;
+    const double g = c.Weight * std::exp(-(d * d - nearest * nearest) / twoSigma2);
+    sumW += g;
+    sumX += g * c.Position.x;
+    sumY += g * c.Position.y;
+  };
+  for (std::size_t k = position; k < sorted.size(); ++k)
+  {
+    const double d = sorted[k].Node - u;
+    if (d * d > radius2)
+    {
+      break;
+    }
+    accumulate(sorted[k]);
+  }
+  for (std::size_t k = position; k-- > 0;)
+  {
+    const double d = sorted[k].Node - u;
+    if (d * d > radius2)
+    {
+      break;
+    }
+    accumulate(sorted[k]);
+  }
+  average = { sumX / sumW, sumY / sumW };
+  return true;
+}
+
+// Closed curve whose window reaches half a period: sum every periodic image explicitly.
+Point2 PeriodicFullSum(const std::vector<double>& nodes,
+  const std::vector<Point2>& controls,
+  const std::vector<double>& weights,
+  double u,
+  double sigma)
+{
+  const double twoSigma2 = 2.0 * sigma * sigma;
+  const int images = static_cast<int>(std::ceil(8.0 * sigma)) + 2;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (double node : nodes)
+  {
+    const double d = u - node;
+    nearest = std::min(nearest, std::abs(d - std::round(d)));
+  }
+  double sumW = 0.0;
+  double sumX = 0.0;
+  double sumY = 0.0;
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+  {
+    for (int shift = -images; shift <= images; ++shift)
+    {
+      const double d = u - nodes[k] + shift;
+      const double g = weights[k] * std::exp(-(d * d - nearest * nearest) / twoSigma2);
+      sumW += g;
+      sumX += g * controls[k].x;
+      sumY += g * controls[k].y;
+    }
+  }
+  return { sumX / sumW, sumY / sumW };
+}
+
+} // namespace
+
+std::vector<Point2> SampleRationalGaussianCurve(const std::vector<double>& nodes,
+  const std::vector<Point2>& controls,
+  const std::vector<double>& weights,
+  double sigma,
+  bool closed,
+  int sampleCount)
+{
+  CheckInput(nodes, controls, weights, sigma, sampleCount);
+  const std::vector<ControlPoint> sorted = SortedControls(nodes, controls, weights, closed);
+  std::vector<Point2> samples(static_cast<std::size_t>(sampleCount));
+  const double denominator = closed ? sampleCount : sampleCount - 1;
+  for (int s = 0; s < sampleCount; ++s)
+  {
+    const double u = s / denominator;
+    if (!WindowedAverage(sorted, u, sigma, closed, samples[s]))
+    {
+      samples[s] = PeriodicFullSum(nodes, controls, weights, u, sigma);
+    }
+  }
+  return samples;
+}
+
+} // namespace tessera

@@ -1,0 +1,203 @@
+// The nearest-feature transform against brute force, and the partition against a brute-force
+// nearest contour pixel and an independent arc-length computation.
+#include "distance_transform.h"
+#include "errors.h"
+#include "point_partition.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace
+{
+
+using tessera::Point2;
+
+double SquaredDistance(int a, int b, int width)
+{
+  const double dx = a % width - b % width;
+  const double dy = a / width - b / width;
+  return dx * dx + dy * dy;
+}
+
+TEST(NearestFeatureTransform, MatchesBruteForce)
+{
+  std::mt19937 rng(4);
+  for (int trial = 0; trial < 20; ++trial)
+  {
+    const int width = 5 + trial * 3;
+    const int height = 40 - trial;
+    std::bernoulli_distribution feature(trial % 2 ? 0.02 : 0.2);
+    std::vector<std::uint8_t> mask(width * height, 0);
+    std::vector<int> features;
+    for (int p = 0; p < width * height; ++p)
+    {
+      if (feature(rng))
+      {
+        mask[p] = 1;
+        features.push_back(p);
+      }
+    }
+    const std::vector<int> nearest = tessera::NearestFeatureTransform(mask, width, height);
+    for (int p = 0; p < width * height; ++p)
+    {
+      if (features.empty())
+      {
+        EXPECT_EQ(nearest[p], -1);
+        continue;
+      }
+      double best = 1e300;
+      for (int f : features)
+      {
+        best = std::min(best, SquaredDistance(p, f, width));
+      }
+      ASSERT_GE(nearest[p], 0);
+      ASSERT_TRUE(mask[nearest[p]]) << "pixel " << p << " maps to a non-feature";
+      EXPECT_EQ(SquaredDistance(p, nearest[p], width), best) << "pixel " << p;
+    }
+  }
+}
+
+// Two hand-made contours on a 40 x 30 image: an open L-shaped polyline and a closed square.
+tessera::RidgeContours TwoContours(int width)
+{
+  tessera::RidgeContours contours;
+  auto add = [&](std::vector<std::pair<int, int>> pixels, bool closed)
+  {
+    for (auto [i, j] : pixels)
+    {
+      contours.Pixels.push_back(j * width + i);
+    }
+    contours.Offsets.push_back(static_cast<int>(contours.Pixels.size()));
+    contours.Closed.push_back(closed ? 1 : 0);
+  };
+  std::vector<std::pair<int, int>> open;
+  for (int i = 3; i <= 20; ++i)
+  {
+    open.push_back({ i, 5 });
+  }
+  for (int j = 6; j <= 15; ++j)
+  {
+    open.push_back({ 21, j - 1 + 1 });
+  }
+  add(open, false);
+  std::vector<std::pair<int, int>> square;
+  for (int i = 28; i <= 35; ++i)
+    square.push_back({ i, 18 });
+  for (int j = 19; j <= 25; ++j)
+    square.push_back({ 35, j });
+  for (int i = 34; i >= 28; --i)
+    square.push_back({ i, 25 });
+  for (int j = 24; j >= 19; --j)
+    square.push_back({ 28, j });
+  add(square, true);
+  // Lengths computed independently: sum of steps (+ closing step).
+  for (int c = 0; c < 2; ++c)
+  {
+    double length = 0.0;
+    const int first = contours.Offsets[c];
+    const int last = contours.Offsets[c + 1];
+    for (int k = first + 1; k < last; ++k)
+    {
+      length += std::sqrt(SquaredDistance(contours.Pixels[k - 1], contours.Pixels[k], width));
+    }
+    if (contours.Closed[c])
+    {
+      length +=
+        std::sqrt(SquaredDistance(contours.Pixels[last - 1], contours.Pixels[first], width));
+    }
+    contours.Lengths.push_back(length);
+  }
+  return contours;
+}
+
+TEST(PointPartition, AssignsTheNearestContourPixelAndItsArcLength)
+{
+  const int width = 40;
+  const int height = 30;
+  const tessera::RidgeContours contours = TwoContours(width);
+  std::mt19937 rng(8);
+  std::uniform_real_distribution<double> x(-0.5, width - 0.5);
+  std::uniform_real_distribution<double> y(-0.5, height - 0.5);
+  std::vector<Point2> points(3000);
+  for (Point2& p : points)
+  {
+    p = { x(rng), y(rng) };
+  }
+  const tessera::PointPartition partition =
+    tessera::PartitionPoints(points, contours, width, height);
+  int exact = 0;
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    double best = 1e300;
+    for (int pixel : contours.Pixels)
+    {
+      best = std::min(best, std::hypot(points[k].x - pixel % width, points[k].y - pixel / width));
+    }
+    const int position = partition.Projection[k];
+    ASSERT_GE(position, 0);
+    const int pixel = contours.Pixels[position];
+    const double chosen = std::hypot(points[k].x - pixel % width, points[k].y - pixel / width);
+    // Exact except in near-ties (see point_partition.h): never more than 0.1 pixel worse.
+    EXPECT_LE(chosen, best + 0.1) << "point " << k;
+    exact += chosen <= best + 1e-12;
+    EXPECT_EQ(partition.GroupId[k], position < contours.Offsets[1] ? 0 : 1);
+    EXPECT_GE(partition.Node[k], 0.0);
+    EXPECT_LE(partition.Node[k], 1.0);
+  }
+  EXPECT_GT(exact, 0.99 * points.size());
+  // Points off the ends of the open contour get nodes beyond those of its end pixels; every
+  // other point's node is its projection's arc length over the node span.
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    const int c = partition.GroupId[k];
+    double arc = 0.0;
+    for (int m = contours.Offsets[c] + 1; m <= partition.Projection[k]; ++m)
+    {
+      arc += std::sqrt(SquaredDistance(contours.Pixels[m - 1], contours.Pixels[m], width));
+    }
+    if (!partition.Extended[k])
+    {
+      EXPECT_NEAR(
+        partition.Node[k], partition.NodeOrigin[c] + arc * partition.NodePerPixel[c], 1e-12);
+    }
+    if (c == 1)
+    {
+      // Closed contours are never extended: the paper's node, arc / length.
+      EXPECT_NEAR(partition.Node[k], arc / contours.Lengths[1], 1e-12);
+    }
+  }
+}
+
+TEST(PointPartition, NodesIncreaseAlongAnOpenContourAndBeyondItsEnds)
+{
+  const int width = 40;
+  const tessera::RidgeContours contours = TwoContours(width);
+  // Points walking along row 5 from x = 0 (before the start pixel 3) to the corner.
+  std::vector<Point2> points;
+  for (double x = 0.0; x <= 20.0; x += 0.5)
+  {
+    points.push_back({ x, 5.2 });
+  }
+  const tessera::PointPartition partition = tessera::PartitionPoints(points, contours, width, 30);
+  for (std::size_t k = 1; k < points.size(); ++k)
+  {
+    EXPECT_GE(partition.Node[k], partition.Node[k - 1]) << "x = " << points[k].x;
+  }
+  EXPECT_EQ(partition.Node[0], 0.0);
+  EXPECT_TRUE(partition.Extended[0]);
+}
+
+TEST(PointPartition, NoContourLeavesEveryPointUnassigned)
+{
+  tessera::RidgeContours none;
+  const tessera::PointPartition partition =
+    tessera::PartitionPoints({ { 1, 1 }, { 2, 3 } }, none, 10, 10);
+  EXPECT_EQ(partition.GroupId, (std::vector<int>{ -1, -1 }));
+  EXPECT_THROW(
+    tessera::PartitionPoints({ { 1, 1 }, { 20, 3 } }, none, 10, 10), tessera::InputError);
+}
+
+} // namespace

@@ -1,0 +1,150 @@
+// RaG curves against the formula summed directly over every control point (and, for closed
+// curves, over many periodic images), plus the merging of control points that share a node.
+#include "errors.h"
+#include "rational_gaussian_curve.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace
+{
+
+using tessera::Point2;
+
+// Goshtasby 1995 with unit weights per point, written out directly.
+Point2 DirectRag(const std::vector<double>& nodes,
+  const std::vector<Point2>& points,
+  double u,
+  double sigma,
+  bool closed)
+{
+  long double sw = 0.0L;
+  long double sx = 0.0L;
+  long double sy = 0.0L;
+  const int images = closed ? 6 : 0;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+  {
+    for (int k = -images; k <= images; ++k)
+    {
+      const long double d = u - nodes[i] + k;
+      const long double g = std::exp(-d * d / (2.0L * sigma * sigma));
+      sw += g;
+      sx += g * points[i].x;
+      sy += g * points[i].y;
+    }
+  }
+  return { static_cast<double>(sx / sw), static_cast<double>(sy / sw) };
+}
+
+void RandomControls(int n, unsigned seed, std::vector<double>& nodes, std::vector<Point2>& points)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  nodes.resize(n);
+  points.resize(n);
+  for (int i = 0; i < n; ++i)
+  {
+    nodes[i] = unit(rng);
+    points[i] = { 10 * std::cos(6 * nodes[i]) + unit(rng),
+      10 * std::sin(6 * nodes[i]) + unit(rng) };
+  }
+}
+
+TEST(RationalGaussianCurve, MatchesTheDirectFormula)
+{
+  std::vector<double> nodes;
+  std::vector<Point2> points;
+  RandomControls(200, 3, nodes, points);
+  const std::vector<double> weights(nodes.size(), 1.0);
+  for (bool closed : { false, true })
+  {
+    for (double sigma : { 0.01, 0.04, 0.08, 0.3 })
+    {
+      const int samples = 101;
+      const std::vector<Point2> curve =
+        tessera::SampleRationalGaussianCurve(nodes, points, weights, sigma, closed, samples);
+      ASSERT_EQ(curve.size(), std::size_t(samples));
+      for (int s = 0; s < samples; ++s)
+      {
+        const double u = closed ? s / double(samples) : s / double(samples - 1);
+        const Point2 expected = DirectRag(nodes, points, u, sigma, closed);
+        // Skipped terms are below exp(-32) of the largest: relative 1e-12 of the coordinates.
+        EXPECT_NEAR(curve[s].x, expected.x, 1e-9) << "sigma " << sigma << " u " << u;
+        EXPECT_NEAR(curve[s].y, expected.y, 1e-9) << "sigma " << sigma << " u " << u;
+      }
+    }
+  }
+}
+
+TEST(RationalGaussianCurve, MergingPointsWithTheSameNodeGivesTheSameCurve)
+{
+  std::vector<double> nodes;
+  std::vector<Point2> points;
+  RandomControls(60, 9, nodes, points);
+  // Each node carries three points; merged, their mean with weight 3.
+  std::vector<double> allNodes;
+  std::vector<Point2> allPoints;
+  std::vector<double> mergedWeights(nodes.size(), 3.0);
+  std::vector<Point2> means(nodes.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+  {
+    Point2 sum{ 0, 0 };
+    for (int copy = 0; copy < 3; ++copy)
+    {
+      const Point2 p{ points[i].x + copy * 0.3, points[i].y - copy * 0.2 };
+      allNodes.push_back(nodes[i]);
+      allPoints.push_back(p);
+      sum.x += p.x;
+      sum.y += p.y;
+    }
+    means[i] = { sum.x / 3, sum.y / 3 };
+  }
+  const std::vector<double> unit(allNodes.size(), 1.0);
+  for (bool closed : { false, true })
+  {
+    const auto full =
+      tessera::SampleRationalGaussianCurve(allNodes, allPoints, unit, 0.03, closed, 77);
+    const auto merged =
+      tessera::SampleRationalGaussianCurve(nodes, means, mergedWeights, 0.03, closed, 77);
+    for (std::size_t s = 0; s < full.size(); ++s)
+    {
+      EXPECT_NEAR(full[s].x, merged[s].x, 1e-9);
+      EXPECT_NEAR(full[s].y, merged[s].y, 1e-9);
+    }
+  }
+}
+
+TEST(RationalGaussianCurve, StaysFiniteFarFromAllNodes)
+{
+  // Two clusters of nodes with a wide gap: exp(-d^2 / 2 sigma^2) underflows to 0 for every term
+  // in the middle, where the unnormalised formula would give 0/0.
+  const std::vector<double> nodes = { 0.0, 0.01, 0.99, 1.0 };
+  const std::vector<Point2> points = { { 0, 0 }, { 1, 0 }, { 5, 5 }, { 6, 5 } };
+  const std::vector<double> weights(4, 1.0);
+  const auto curve = tessera::SampleRationalGaussianCurve(nodes, points, weights, 0.001, false, 51);
+  for (const Point2& p : curve)
+  {
+    EXPECT_TRUE(std::isfinite(p.x) && std::isfinite(p.y));
+  }
+  EXPECT_NEAR(curve[20].x, 1.0, 1e-9); // u = 0.4: the nearest node is 0.01
+}
+
+TEST(RationalGaussianCurve, RejectsBadInput)
+{
+  const std::vector<double> nodes = { 0.0, 0.5 };
+  const std::vector<Point2> points = { { 0, 0 }, { 1, 1 } };
+  const std::vector<double> weights = { 1.0, 1.0 };
+  EXPECT_THROW(tessera::SampleRationalGaussianCurve(nodes, points, weights, 0.0, false, 10),
+    tessera::InputError);
+  EXPECT_THROW(tessera::SampleRationalGaussianCurve({ 0.0, 1.5 }, points, weights, 0.1, false, 10),
+    tessera::InputError);
+  EXPECT_THROW(tessera::SampleRationalGaussianCurve(nodes, points, { 1.0, -1.0 }, 0.1, false, 10),
+    tessera::InputError);
+  EXPECT_THROW(tessera::SampleRationalGaussianCurve(nodes, points, weights, 0.1, false, 1),
+    tessera::InputError);
+}
+
+} // namespace

@@ -1,0 +1,283 @@
+// Minor and major ridges against the definitions of Goshtasby 2000 section 2 written out here,
+// on random and analytic images; thinning, segments, removal and joining on drawn skeletons.
+#include "errors.h"
+#include "ridge_contours.h"
+#include "ridge_extraction.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace
+{
+
+const double Pi = std::acos(-1.0);
+
+std::vector<double> RandomImage(int width, int height, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> level(0, 6); // few levels: plenty of ties
+  std::vector<double> image(width * height);
+  for (double& v : image)
+  {
+    v = level(rng);
+  }
+  return image;
+}
+
+// Equations 2-5 verbatim, (i, j) with i the column.
+bool PaperMinor(const std::vector<double>& I, int w, int h, int i, int j)
+{
+  auto at = [&](int a, int b) { return I[b * w + a]; };
+  const double c = at(i, j);
+  bool minor = false;
+  if (i > 0 && i < w - 1)
+    minor |= at(i - 1, j) < c && at(i + 1, j) < c;
+  if (j > 0 && j < h - 1)
+    minor |= at(i, j - 1) < c && at(i, j + 1) < c;
+  if (i > 0 && i < w - 1 && j > 0 && j < h - 1)
+  {
+    minor |= at(i - 1, j - 1) < c && at(i + 1, j + 1) < c;
+    minor |= at(i - 1, j + 1) < c && at(i + 1, j - 1) < c;
+  }
+  return minor;
+}
+
+TEST(RidgeExtraction, MinorRidgesAreEquationsTwoToFive)
+{
+  for (unsigned seed = 1; seed <= 5; ++seed)
+  {
+    const int w = 23;
+    const int h = 17;
+    const std::vector<double> image = RandomImage(w, h, seed);
+    const tessera::RidgeMasks masks = tessera::ExtractRidges(image, w, h);
+    for (int j = 0; j < h; ++j)
+    {
+      for (int i = 0; i < w; ++i)
+      {
+        EXPECT_EQ(masks.Minor[j * w + i] != 0, PaperMinor(image, w, h, i, j)) << i << "," << j;
+        EXPECT_LE(masks.Major[j * w + i], masks.Minor[j * w + i]);
+      }
+    }
+  }
+}
+
+TEST(RidgeExtraction, AStraightRidgeIsMajorAndAPeakIsAStarOfMinorRidges)
+{
+  const int w = 41;
+  const int h = 41;
+  std::vector<double> ridge(w * h);
+  std::vector<double> peak(w * h);
+  for (int j = 0; j < h; ++j)
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      // Crest along row 20 rising slowly to the east: across drop 1, along change 0.01.
+      ridge[j * w + i] = -(j - 20.0) * (j - 20.0) + 0.01 * i;
+      peak[j * w + i] = -std::hypot(i - 20.0, j - 20.0);
+    }
+  }
+  const tessera::RidgeMasks r = tessera::ExtractRidges(ridge, w, h);
+  for (int j = 0; j < h; ++j)
+  {
+    for (int i = 1; i < w - 1; ++i)
+    {
+      EXPECT_EQ(r.Minor[j * w + i], j == 20 ? 1 : 0) << i << "," << j;
+      EXPECT_EQ(r.Major[j * w + i], j == 20 ? 1 : 0) << i << "," << j;
+    }
+  }
+  // A cone: every line through its apex along a test axis is a minor ridge (the 1-D maximum
+  // across it), but the gradient there points along the line, so only the apex is major.
+  const tessera::RidgeMasks p = tessera::ExtractRidges(peak, w, h);
+  for (int j = 1; j < h - 1; ++j)
+  {
+    for (int i = 1; i < w - 1; ++i)
+    {
+      const bool onStar = i == 20 || j == 20 || i - 20 == j - 20 || i - 20 == 20 - j;
+      EXPECT_EQ(p.Minor[j * w + i] != 0, onStar) << i << "," << j;
+      EXPECT_EQ(p.Major[j * w + i] != 0, i == 20 && j == 20) << i << "," << j;
+    }
+  }
+}
+
+TEST(RidgeExtraction, GradientDirectionIsTheSteepestNeighbour)
+{
+  const int w = 5;
+  const int h = 5;
+  std::vector<double> image(w * h, 0.0);
+  image[3 * w + 3] = -2.0; // NE neighbour of (2, 2): change 2 / sqrt(2) = 1.41
+  image[2 * w + 1] = 1.3;  // W neighbour: change 1.3
+  EXPECT_EQ(tessera::GradientDirection(image, w, h, 2, 2), 1);
+  image[2 * w + 1] = 1.5;
+  EXPECT_EQ(tessera::GradientDirection(image, w, h, 2, 2), 4);
+  EXPECT_EQ(tessera::GradientDirection(std::vector<double>(w * h, 1.0), w, h, 2, 2), -1);
+  EXPECT_THROW(tessera::ExtractRidges(image, w + 1, h), tessera::InputError);
+}
+
+using Mask = std::vector<std::uint8_t>;
+
+void Draw(Mask& mask, int w, int i0, int j0, int i1, int j1)
+{
+  const int steps = std::max(std::abs(i1 - i0), std::abs(j1 - j0));
+  for (int s = 0; s <= steps; ++s)
+  {
+    const int i = i0 + static_cast<int>(std::lround(double(s) * (i1 - i0) / std::max(steps, 1)));
+    const int j = j0 + static_cast<int>(std::lround(double(s) * (j1 - j0) / std::max(steps, 1)));
+    mask[j * w + i] = 1;
+  }
+}
+
+int ComponentCount(const Mask& mask, int w, int h)
+{
+  std::vector<int> label(mask.size(), -1);
+  int count = 0;
+  for (int p = 0; p < w * h; ++p)
+  {
+    if (!mask[p] || label[p] >= 0)
+      continue;
+    std::vector<int> stack{ p };
+    label[p] = count;
+    while (!stack.empty())
+    {
+      const int q = stack.back();
+      stack.pop_back();
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di)
+        {
+          const int i = q % w + di;
+          const int j = q / w + dj;
+          if (i < 0 || j < 0 || i >= w || j >= h || !mask[j * w + i] || label[j * w + i] >= 0)
+            continue;
+          label[j * w + i] = count;
+          stack.push_back(j * w + i);
+        }
+    }
+    ++count;
+  }
+  return count;
+}
+
+TEST(RidgeContours, ThinningKeepsComponentsAndLeavesNoRemovablePixel)
+{
+  std::mt19937 rng(2);
+  for (int trial = 0; trial < 10; ++trial)
+  {
+    const int w = 50;
+    const int h = 40;
+    Mask mask(w * h, 0);
+    // Thick random strokes.
+    std::uniform_int_distribution<int> x(3, w - 4);
+    std::uniform_int_distribution<int> y(3, h - 4);
+    for (int stroke = 0; stroke < 4; ++stroke)
+    {
+      const int i0 = x(rng), j0 = y(rng), i1 = x(rng), j1 = y(rng);
+      for (int t = -1; t <= 1; ++t)
+      {
+        Draw(mask, w, i0, j0 + t, i1, j1 + t);
+      }
+    }
+    const int before = ComponentCount(mask, w, h);
+    tessera::ThinToSkeleton(mask, w, h);
+    EXPECT_EQ(ComponentCount(mask, w, h), before);
+    for (int j = 0; j < h; ++j)
+    {
+      for (int i = 0; i < w; ++i)
+      {
+        if (!mask[j * w + i])
+          continue;
+        int neighbours = 0;
+        for (int dj = -1; dj <= 1; ++dj)
+          for (int di = -1; di <= 1; ++di)
+            neighbours += (di || dj) && i + di >= 0 && j + dj >= 0 && i + di < w && j + dj < h &&
+              mask[(j + dj) * w + i + di];
+        if (neighbours >= 2)
+        {
+          EXPECT_NE(tessera::ConnectivityNumber(mask, w, h, i, j), 1) << i << "," << j;
+        }
+      }
+    }
+  }
+}
+
+TEST(RidgeContours, BranchWithoutMajorPixelIsRemovedAndTheLineJoined)
+{
+  const int w = 80;
+  const int h = 40;
+  Mask minor(w * h, 0);
+  Mask major(w * h, 0);
+  Draw(minor, w, 5, 10, 74, 10);  // the ridge
+  Draw(minor, w, 40, 11, 40, 30); // a branch from its middle
+  major[10 * w + 20] = 1;         // one major pixel on each half of the ridge only
+  major[10 * w + 60] = 1;
+  tessera::RidgeContourSettings settings;
+  settings.MinimumLength = 5;
+  const tessera::RidgeContours c = tessera::TraceRidgeContours(minor, major, w, h, settings);
+  EXPECT_EQ(c.SegmentCount, 3);
+  ASSERT_EQ(c.Count(), 1);
+  EXPECT_FALSE(c.Closed[0]);
+  // 69 pixels, plus at most 2 sqrt(2) - 2 where thinning routes the line through the first
+  // pixel of the branch (the T's corner pixels are simple and go first).
+  EXPECT_GE(c.Lengths[0], 69.0 - 1e-9);
+  EXPECT_LE(c.Lengths[0], 69.0 + 2 * std::sqrt(2.0) - 2 + 1e-9);
+  const int first = c.Pixels[c.Offsets[0]];
+  const int last = c.Pixels[c.Offsets[1] - 1];
+  EXPECT_EQ(std::min(first % w, last % w), 5);
+  EXPECT_EQ(std::max(first % w, last % w), 74);
+}
+
+TEST(RidgeContours, JoinRulesAtATJunction)
+{
+  // Horizontal ridge 5..74 on row 10 and a branch rising from x = 40, all major. Longest:
+  // the two halves (34 + 35) beat half + branch (35 + 20). Tangent: the halves are opposite.
+  // A second picture where the branch is the longer arm: Longest joins it, Tangent does not.
+  const int w = 80;
+  const int h = 70;
+  for (int branchLength : { 20, 55 })
+  {
+    Mask minor(w * h, 0);
+    Draw(minor, w, 5, 10, 74, 10);
+    Draw(minor, w, 40, 11, 40, 10 + branchLength);
+    const Mask major = minor;
+    for (auto rule : { tessera::JoinRule::Longest, tessera::JoinRule::ClosestTangent })
+    {
+      tessera::RidgeContourSettings settings;
+      settings.Join = rule;
+      settings.MinimumLength = 0;
+      const tessera::RidgeContours c = tessera::TraceRidgeContours(minor, major, w, h, settings);
+      ASSERT_EQ(c.Count(), 2);
+      double longest = std::max(c.Lengths[0], c.Lengths[1]);
+      const bool straightJoined = rule == tessera::JoinRule::ClosestTangent || branchLength == 20;
+      // Joined halves: 69 pixels. Half + branch: 35 + branchLength (through the junction).
+      EXPECT_NEAR(longest, straightJoined ? 69.0 : 35.0 + branchLength, 1.0)
+        << "rule " << int(rule) << " branch " << branchLength;
+    }
+  }
+}
+
+TEST(RidgeContours, RingIsOneClosedContourAndShortPiecesAreDropped)
+{
+  const int w = 60;
+  const int h = 60;
+  Mask minor(w * h, 0);
+  for (int k = 0; k < 720; ++k)
+  {
+    const double a = k * Pi / 360.0;
+    minor[std::lround(30 + 20 * std::sin(a)) * w + std::lround(30 + 20 * std::cos(a))] = 1;
+  }
+  Draw(minor, w, 2, 2, 6, 2); // a 4-pixel piece
+  const Mask major = minor;
+  tessera::RidgeContourSettings settings;
+  settings.MinimumLength = 10;
+  const tessera::RidgeContours c = tessera::TraceRidgeContours(minor, major, w, h, settings);
+  ASSERT_EQ(c.Count(), 1);
+  EXPECT_TRUE(c.Closed[0]);
+  EXPECT_NEAR(c.Lengths[0], 2 * Pi * 20, 0.1 * 2 * Pi * 20);
+  settings.MinimumLength = 0;
+  EXPECT_EQ(tessera::TraceRidgeContours(minor, major, w, h, settings).Count(), 2);
+  settings.MinimumLength = -1;
+  EXPECT_THROW(tessera::TraceRidgeContours(minor, major, w, h, settings), tessera::InputError);
+}
+
+} // namespace

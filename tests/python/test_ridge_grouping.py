@@ -1,0 +1,148 @@
+"""vtkRidgeGrouping from Python: noisy samples along known curves are grouped (adjusted Rand
+index against the truth, computed here), ordered (Kendall tau of Node against true arc length),
+fitted (distance of the curves to the truth); plus the outputs' arrays and bad input."""
+
+import math
+import random
+
+import numpy as np
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+from tessera import vtkRidgeGrouping
+from tessera_testing import check, run
+
+
+def make_points(coords):
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    for x, y in coords:
+        points.InsertNextPoint(x, y, 0.0)
+    data = vtkPolyData()
+    data.SetPoints(points)
+    return data
+
+
+def adjusted_rand_index(a, b):
+    from collections import Counter
+
+    n = len(a)
+    pairs = lambda k: k * (k - 1) / 2
+    joint = sum(pairs(c) for c in Counter(zip(a, b)).values())
+    sa = sum(pairs(c) for c in Counter(a).values())
+    sb = sum(pairs(c) for c in Counter(b).values())
+    expected = sa * sb / pairs(n)
+    return (joint - expected) / (0.5 * (sa + sb) - expected)
+
+
+def kendall_tau(x, y):
+    concordant = discordant = 0
+    for i in range(len(x)):
+        for j in range(i + 1, len(x)):
+            s = (x[i] - x[j]) * (y[i] - y[j])
+            concordant += s > 0
+            discordant += s < 0
+    return (concordant - discordant) / max(1, concordant + discordant)
+
+
+def two_noisy_curves(sigma=1.0, seed=3):
+    """A straight line and a parabola 60 units apart, 300 points each, noise sigma."""
+    rng = random.Random(seed)
+    coords, truth, arc = [], [], []
+    for k in range(300):
+        t = rng.uniform(0, 200)
+        coords.append((t + rng.gauss(0, sigma), 20 + rng.gauss(0, sigma)))
+        truth.append(0)
+        arc.append(t)
+    for k in range(300):
+        t = rng.uniform(0, 200)
+        coords.append((t + rng.gauss(0, sigma), 80 + 0.002 * (t - 100) ** 2 + rng.gauss(0, sigma)))
+        truth.append(1)
+        arc.append(t)
+    return coords, truth, arc
+
+
+def test_two_noisy_curves_are_grouped_ordered_and_fitted():
+    coords, truth, arc = two_noisy_curves()
+    f = vtkRidgeGrouping()
+    f.SetInputData(make_points(coords))
+    f.SetImageSize(256)
+    f.SetCurveSigma(0.02)
+    f.Update()
+    pts = f.GetOutput(0)
+    groups = [pts.GetPointData().GetArray("GroupId").GetValue(i) for i in range(len(coords))]
+    nodes = [pts.GetPointData().GetArray("Node").GetValue(i) for i in range(len(coords))]
+    ari = adjusted_rand_index(groups, truth)
+    # Two well separated curves (60 units apart, noise 1): anything but a clean split is a bug.
+    check(ari > 0.95, f"adjusted Rand index {ari:.3f}")
+    for curve in (0, 1):
+        members = [i for i in range(len(coords)) if truth[i] == curve]
+        tau = kendall_tau([nodes[i] for i in members[:150]], [arc[i] for i in members[:150]])
+        # Node order may run either way along the curve.
+        check(abs(tau) > 0.95, f"curve {curve}: Kendall tau {tau:.3f}")
+        check(all(0.0 <= nodes[i] <= 1.0 for i in members), "nodes in [0, 1]")
+    contours = f.GetOutputDataObject(1)
+    check(contours.GetCellData().GetArray("ContourId") is not None, "ContourId")
+    check(contours.GetCellData().GetArray("Closed") is not None, "Closed")
+    curves = f.GetOutputDataObject(2)
+    check(curves.GetNumberOfCells() >= 2, f"{curves.GetNumberOfCells()} fitted curves")
+    # Every sample of the fitted curves lies near one of the true curves (within 6 noise sigmas,
+    # the open-end and bend allowance of the core's own tests).
+    for c in range(curves.GetNumberOfCells()):
+        ids = curves.GetCell(c).GetPointIds()
+        for k in range(0, ids.GetNumberOfIds(), 5):
+            x, y, _ = curves.GetPoint(ids.GetId(k))
+            xs = np.linspace(0, 200, 2001)
+            d_line = np.min(np.hypot(xs - x, 20 - y))
+            d_parabola = np.min(np.hypot(xs - x, 80 + 0.002 * (xs - 100) ** 2 - y))
+            check(min(d_line, d_parabola) < 6.0, f"curve {c} sample {k} is {min(d_line, d_parabola):.1f} off")
+    image = f.GetOutputDataObject(3)
+    dims = image.GetDimensions()
+    check(max(dims[0], dims[1]) == 256, f"image {dims}")
+    for name in ("Field", "MinorRidge", "MajorRidge"):
+        check(image.GetPointData().GetArray(name) is not None, f"image array {name}")
+    check(pts.GetFieldData().GetArray("ImageSize").GetValue(0) == 256, "ImageSize recorded")
+
+
+def messages_of(f, event):
+    messages = []
+
+    @calldata_type(VTK_STRING)
+    def on_message(caller, e, message):
+        messages.append(message)
+
+    f.AddObserver(event, on_message)
+    return messages
+
+
+def test_bad_and_degenerate_input():
+    f = vtkRidgeGrouping()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetInputData(make_points([(1.0, 2.0)]))
+    f.Update()
+    check(f.GetOutputDataObject(2).GetNumberOfCells() == 0 and len(warnings) >= 1,
+          f"one point: empty outputs with a warning {warnings}")
+    same = vtkRidgeGrouping()
+    same.SetInputData(make_points([(3.0, 3.0)] * 10))
+    same.Update()
+    g = same.GetOutput(0).GetPointData().GetArray("GroupId")
+    check({g.GetValue(i) for i in range(10)} == {0}, "identical points: one group")
+    check(same.GetOutputDataObject(2).GetNumberOfCells() == 0, "identical points: no curve")
+    big = vtkRidgeGrouping()
+    errors = messages_of(big, vtkCommand.ErrorEvent)
+    big.SetInputData(make_points(two_noisy_curves()[0]))
+    big.SetImageSize(100000)
+    big.Update()
+    check(len(errors) == 1 and "100000" in errors[0] and "memory" in errors[0],
+          f"image size refused, naming it and the memory: {errors}")
+    check(big.GetOutputDataObject(3).GetNumberOfPoints() == 0, "no image allocated")
+    nan = vtkRidgeGrouping()
+    errors = messages_of(nan, vtkCommand.ErrorEvent)
+    nan.SetInputData(make_points([(0, 0), (1, math.nan), (2, 2)]))
+    nan.Update()
+    check(len(errors) == 1 and "point 1" in errors[0], f"NaN point named: {errors}")
+
+
+if __name__ == "__main__":
+    run([test_two_noisy_curves_are_grouped_ordered_and_fitted, test_bad_and_degenerate_input])

@@ -1,0 +1,225 @@
+#include "vtkRidgeGrouping.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "TesseraFilterUtilities.h"
+#include "ridge_grouping.h"
+
+#include <exception>
+
+vtkStandardNewMacro(vtkRidgeGrouping);
+
+namespace
+{
+
+void AddScalar(vtkFieldData* fd, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  fd->AddArray(array);
+}
+
+/// Polylines from the core's flat arrays; a closed line repeats its first point.
+void WritePolylines(const tessera::Polylines& lines,
+  const std::vector<std::uint8_t>& closed,
+  vtkPolyData* output)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (const auto& p : lines.Points)
+  {
+    points->InsertNextPoint(p.x, p.y, 0.0);
+  }
+  vtkNew<vtkCellArray> cells;
+  for (int k = 0; k < lines.Count(); ++k)
+  {
+    const int begin = lines.Offsets[k], end = lines.Offsets[k + 1];
+    const bool isClosed = closed[k] != 0 && end - begin > 2;
+    cells->InsertNextCell(end - begin + (isClosed ? 1 : 0));
+    for (int i = begin; i < end; ++i)
+    {
+      cells->InsertCellPoint(i);
+    }
+    if (isClosed)
+    {
+      cells->InsertCellPoint(begin);
+    }
+  }
+  output->SetPoints(points);
+  output->SetLines(cells);
+}
+
+vtkSmartPointer<vtkUnsignedCharArray> ByteArray(const char* name,
+  const std::vector<std::uint8_t>& v)
+{
+  auto array = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  array->SetName(name);
+  array->SetNumberOfValues(static_cast<vtkIdType>(v.size()));
+  std::copy(v.begin(), v.end(), array->GetPointer(0));
+  return array;
+}
+
+} // namespace
+
+//------------------------------------------------------------------------------
+vtkRidgeGrouping::vtkRidgeGrouping()
+{
+  this->SetNumberOfOutputPorts(4);
+}
+
+int vtkRidgeGrouping::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  return 1;
+}
+
+int vtkRidgeGrouping::FillOutputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 3 ? "vtkImageData" : "vtkPolyData");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkRidgeGrouping::RequestData(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkPolyData* pointsOut = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* contoursOut = vtkPolyData::GetData(outputVector, 1);
+  vtkPolyData* curvesOut = vtkPolyData::GetData(outputVector, 2);
+  vtkImageData* imageOut = vtkImageData::GetData(outputVector, 3);
+  try
+  {
+    const std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
+    tessera::RidgeGroupingSettings settings;
+    settings.Basis = this->Basis == GAUSSIAN ? tessera::RadialBasis::Gaussian
+                                             : tessera::RadialBasis::InverseMultiquadric;
+    settings.Width = this->Width;
+    settings.ImageSize = this->ImageSize;
+    settings.CurveSigma = this->CurveSigma;
+    settings.Join = this->JoinRule == CLOSEST_TANGENT ? tessera::JoinRule::ClosestTangent
+                                                      : tessera::JoinRule::Longest;
+    settings.MinimumContourLength = this->MinimumContourLength;
+    const tessera::RidgeGrouping grouping(settings);
+    this->UpdateProgress(0.05);
+    const tessera::RidgeGroupingResult result = grouping.Run(points);
+    this->UpdateProgress(0.9);
+    for (const std::string& warning : result.Warnings)
+    {
+      vtkWarningMacro(<< warning);
+    }
+
+    // Output 0: the points with GroupId and Node.
+    const vtkIdType n = static_cast<vtkIdType>(points.size());
+    if (input->GetPoints())
+    {
+      pointsOut->SetPoints(input->GetPoints());
+    }
+    vtkNew<vtkCellArray> verts;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      verts->InsertNextCell(1, &i);
+    }
+    pointsOut->SetVerts(verts);
+    pointsOut->GetPointData()->PassData(input->GetPointData());
+    vtkNew<vtkIntArray> groups;
+    groups->SetName("GroupId");
+    vtkNew<vtkDoubleArray> nodes;
+    nodes->SetName("Node");
+    groups->SetNumberOfValues(n);
+    nodes->SetNumberOfValues(n);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      groups->SetValue(i, result.GroupId.empty() ? -1 : result.GroupId[i]);
+      nodes->SetValue(i, result.Node.empty() ? 0.0 : result.Node[i]);
+    }
+    pointsOut->GetPointData()->AddArray(groups);
+    pointsOut->GetPointData()->AddArray(nodes);
+    AddScalar(pointsOut->GetFieldData(), "ImageSize", result.ImageSize);
+    AddScalar(pointsOut->GetFieldData(), "PixelSize", result.PixelSize);
+    AddScalar(pointsOut->GetFieldData(), "FieldErrorBound", result.FieldErrorBound);
+
+    // Output 1: ridge contours.
+    WritePolylines(result.Contours, result.ContourClosed, contoursOut);
+    vtkNew<vtkIntArray> contourIds;
+    contourIds->SetName("ContourId");
+    vtkNew<vtkDoubleArray> lengths;
+    lengths->SetName("Length");
+    for (int k = 0; k < result.Contours.Count(); ++k)
+    {
+      contourIds->InsertNextValue(k);
+      lengths->InsertNextValue(result.ContourLength[k]);
+    }
+    contoursOut->GetCellData()->AddArray(contourIds);
+    contoursOut->GetCellData()->AddArray(ByteArray("Closed", result.ContourClosed));
+    contoursOut->GetCellData()->AddArray(lengths);
+
+    // Output 2: fitted curves.
+    WritePolylines(result.Curves, result.CurveClosed, curvesOut);
+    vtkNew<vtkIntArray> curveGroups;
+    curveGroups->SetName("GroupId");
+    for (int g : result.CurveGroupId)
+    {
+      curveGroups->InsertNextValue(g);
+    }
+    curvesOut->GetCellData()->AddArray(curveGroups);
+    curvesOut->GetCellData()->AddArray(ByteArray("Closed", result.CurveClosed));
+
+    // Output 3: the field image.
+    const tessera::PixelGrid& grid = result.Grid;
+    imageOut->SetDimensions(grid.Width, grid.Height, grid.PixelCount() > 0 ? 1 : 0);
+    imageOut->SetOrigin(grid.OriginX, grid.OriginY, 0.0);
+    imageOut->SetSpacing(grid.Spacing, grid.Spacing, 1.0);
+    if (grid.PixelCount() > 0)
+    {
+      vtkNew<vtkDoubleArray> field;
+      field->SetName("Field");
+      field->SetNumberOfValues(static_cast<vtkIdType>(result.Field.size()));
+      std::copy(result.Field.begin(), result.Field.end(), field->GetPointer(0));
+      imageOut->GetPointData()->AddArray(field);
+      imageOut->GetPointData()->SetActiveScalars("Field");
+      imageOut->GetPointData()->AddArray(ByteArray("MinorRidge", result.MinorRidge));
+      imageOut->GetPointData()->AddArray(ByteArray("MajorRidge", result.MajorRidge));
+    }
+    return 1;
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+    pointsOut->Initialize();
+    contoursOut->Initialize();
+    curvesOut->Initialize();
+    imageOut->Initialize();
+    return 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkRidgeGrouping::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Basis: " << (this->Basis == GAUSSIAN ? "Gaussian" : "InverseMultiquadric")
+     << "\n";
+  os << indent << "Width: " << this->Width << "\n";
+  os << indent << "ImageSize: " << this->ImageSize << "\n";
+  os << indent << "CurveSigma: " << this->CurveSigma << "\n";
+  os << indent << "JoinRule: " << (this->JoinRule == CLOSEST_TANGENT ? "ClosestTangent" : "Longest")
+     << "\n";
+  os << indent << "MinimumContourLength: " << this->MinimumContourLength << "\n";
+}

@@ -1,0 +1,132 @@
+/**
+ * @class   vtkRidgeGrouping
+ * @brief   group noisy scattered points into curves along the ridges of a radial field
+ *
+ * vtkRidgeGrouping follows Goshtasby (2000): a field surface g(x, y) = sum of radial basis
+ * functions centred at the points (inverse multiquadric or Gaussian, width in pixels) is digitised
+ * on an image over the points' bounding box (by FFT convolution, with a stated error bound); its
+ * minor and major ridges are traced into ridge contours, joined at branch pixels by the longest-
+ * contour or the closest-tangent rule; every point goes to the contour with the nearest pixel
+ * and gets a node (arc length from the contour's start over its length); a rational Gaussian
+ * curve with unit weights is fitted to each group (periodic on closed contours). Only x and y
+ * are used.
+ *
+ * Outputs (array names are API):
+ * - 0 (vtkPolyData): the input points (one vertex each, point data passed) with point data
+ *   `GroupId` (int; the contour of the point, -1 = unassigned) and `Node` (double in [0, 1]).
+ *   Field data `ImageSize` (pixels along the longer side, as used), `PixelSize`,
+ *   `FieldErrorBound` (bound of |FFT field - direct sum| at any pixel).
+ * - 1 (vtkPolyData): the ridge contours as polylines through pixel centres (a closed contour
+ *   repeats its first point), cell data `ContourId` (int, = GroupId of its points), `Closed`
+ *   (unsigned char) and `Length` (double).
+ * - 2 (vtkPolyData): the fitted curves, finely sampled polylines, cell data `GroupId` and
+ *   `Closed`.
+ * - 3 (vtkImageData): the field image, point data `Field` (double), `MinorRidge` and
+ *   `MajorRidge` (unsigned char, 1 on ridge pixels).
+ *
+ * Fewer than 2 points give empty outputs and a warning; identical points give one group and no
+ * curve. ImageSize 0 (default) chooses the size as the paper says (most points in pixels of their
+ * own); sizes above 2048 are refused before anything is allocated (the FFT would need more than
+ * 512 MiB). NaN or infinite coordinates are an error naming the point.
+ */
+
+#ifndef vtkRidgeGrouping_h
+#define vtkRidgeGrouping_h
+
+#include "tesseraFiltersModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class TESSERAFILTERS_EXPORT vtkRidgeGrouping : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkRidgeGrouping* New();
+  vtkTypeMacro(vtkRidgeGrouping, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum BasisTypes
+  {
+    INVERSE_MULTIQUADRIC = 0,
+    GAUSSIAN = 1
+  };
+  enum JoinRules
+  {
+    LONGEST = 0,
+    CLOSEST_TANGENT = 1
+  };
+
+  ///@{
+  /**
+   * The radial basis: inverse multiquadric [d^2 + r^2]^(-1/2) (default) or Gaussian
+   * exp(-d^2 / 2 s^2).
+   */
+  vtkSetClampMacro(Basis, int, INVERSE_MULTIQUADRIC, GAUSSIAN);
+  vtkGetMacro(Basis, int);
+  void SetBasisToInverseMultiquadric() { this->SetBasis(INVERSE_MULTIQUADRIC); }
+  void SetBasisToGaussian() { this->SetBasis(GAUSSIAN); }
+  ///@}
+
+  ///@{
+  /**
+   * Width of the basis (r or s) in pixels (default 5).
+   */
+  vtkSetClampMacro(Width, double, 1e-3, VTK_DOUBLE_MAX);
+  vtkGetMacro(Width, double);
+  ///@}
+
+  ///@{
+  /**
+   * Pixels along the longer side of the image, margins included; 0 (default) = automatic.
+   */
+  vtkSetClampMacro(ImageSize, int, 0, VTK_INT_MAX);
+  vtkGetMacro(ImageSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * Smoothness of the fitted rational Gaussian curves, in node units (default 0.04; the paper
+   * uses 0.01 to 0.08).
+   */
+  vtkSetClampMacro(CurveSigma, double, 1e-6, VTK_DOUBLE_MAX);
+  vtkGetMacro(CurveSigma, double);
+  ///@}
+
+  ///@{
+  /**
+   * How ridge segments are joined at branch pixels: longest contour (default, the paper's) or
+   * closest tangent.
+   */
+  vtkSetClampMacro(JoinRule, int, LONGEST, CLOSEST_TANGENT);
+  vtkGetMacro(JoinRule, int);
+  void SetJoinRuleToLongest() { this->SetJoinRule(LONGEST); }
+  void SetJoinRuleToClosestTangent() { this->SetJoinRule(CLOSEST_TANGENT); }
+  ///@}
+
+  ///@{
+  /**
+   * Ridge contours shorter than this many pixels are dropped before partitioning (default 10).
+   */
+  vtkSetClampMacro(MinimumContourLength, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MinimumContourLength, double);
+  ///@}
+
+protected:
+  vtkRidgeGrouping();
+  ~vtkRidgeGrouping() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Basis = INVERSE_MULTIQUADRIC;
+  double Width = 5.0;
+  int ImageSize = 0;
+  double CurveSigma = 0.04;
+  int JoinRule = LONGEST;
+  double MinimumContourLength = 10.0;
+
+private:
+  vtkRidgeGrouping(const vtkRidgeGrouping&) = delete;
+  void operator=(const vtkRidgeGrouping&) = delete;
+};
+
+#endif
