@@ -1,0 +1,195 @@
+// Thiessen areal averages: the Colorado record (1236 months) and a synthetic stream of 100k
+// gauges with 1% toggling per step, incremental updates against rebuilds in the same run.
+//
+//   bench_areal_average [examples/data]      prints two tables
+#include "areal_average.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace tessera;
+using Clock = std::chrono::steady_clock;
+
+namespace
+{
+
+double Seconds(Clock::time_point since)
+{
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+std::vector<std::string> SplitCsv(const std::string& line)
+{
+  std::vector<std::string> fields;
+  std::string field;
+  bool quoted = false;
+  for (char c : line)
+  {
+    if (c == '"')
+      quoted = !quoted;
+    else if (c == ',' && !quoted)
+    {
+      fields.push_back(field);
+      field.clear();
+    }
+    else
+      field += c;
+  }
+  fields.push_back(field);
+  return fields;
+}
+
+struct Colorado
+{
+  std::vector<Point2> Gauges;
+  std::vector<std::size_t> RingOffsets{ 0 };
+  std::vector<Point2> Ring;
+  std::vector<std::vector<double>> Steps;
+};
+
+/// The examples' data: stations, the outline's coordinates (read from the GeoJSON text), and
+/// the monthly values as one vector per month (NaN = missing).
+Colorado ReadColorado(const std::string& dir)
+{
+  Colorado data;
+  std::map<std::string, std::size_t> gaugeOf;
+  std::ifstream stations(dir + "/colorado_stations.csv");
+  std::string line;
+  std::getline(stations, line);
+  while (std::getline(stations, line))
+  {
+    const auto f = SplitCsv(line);
+    gaugeOf[f[0]] = data.Gauges.size();
+    data.Gauges.push_back({ std::stod(f[2]), std::stod(f[3]) });
+  }
+  std::ifstream outline(dir + "/colorado_boundary.geojson");
+  std::stringstream text;
+  text << outline.rdbuf();
+  const std::string json = text.str();
+  std::size_t at = json.find("[[[");
+  const std::size_t end = json.find("]]]", at);
+  for (at += 2; at < end;)
+  {
+    const std::size_t open = json.find('[', at);
+    if (open == std::string::npos || open > end)
+      break;
+    const std::size_t comma = json.find(',', open);
+    const std::size_t close = json.find(']', comma);
+    data.Ring.push_back({ std::stod(json.substr(open + 1, comma - open - 1)),
+      std::stod(json.substr(comma + 1, close - comma - 1)) });
+    at = close + 1;
+  }
+  data.Ring.pop_back(); // GeoJSON repeats the first vertex
+  data.RingOffsets.push_back(data.Ring.size());
+  std::ifstream monthly(dir + "/colorado_monthly_precip.csv");
+  std::getline(monthly, line);
+  std::map<int, std::size_t> stepOf;
+  std::vector<std::tuple<int, std::size_t, double>> rows;
+  while (std::getline(monthly, line))
+  {
+    const auto f = SplitCsv(line);
+    const int month = std::stoi(f[1]) * 12 + std::stoi(f[2]) - 1;
+    stepOf[month] = 0;
+    rows.emplace_back(month, gaugeOf.at(f[0]), std::stod(f[3]));
+  }
+  std::size_t k = 0;
+  for (auto& entry : stepOf)
+    entry.second = k++;
+  data.Steps.assign(stepOf.size(), std::vector<double>(data.Gauges.size(), std::nan("")));
+  for (const auto& [month, gauge, value] : rows)
+    data.Steps[stepOf[month]][gauge] = value;
+  return data;
+}
+
+double RunAll(ThiessenArealAverage& average, const std::vector<std::vector<double>>& steps,
+  double& checksum)
+{
+  const auto start = Clock::now();
+  for (const auto& values : steps)
+  {
+    const ArealStep step = average.Step(values);
+    checksum += std::isnan(step.Mean) ? 0.0 : step.Mean;
+  }
+  return Seconds(start);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const std::string dir = argc > 1 ? argv[1] : "examples/data";
+  const Colorado data = ReadColorado(dir);
+  std::printf("Colorado: %zu gauges, %zu months, outline of %zu vertices\n\n", data.Gauges.size(),
+    data.Steps.size(), data.Ring.size());
+  std::printf("| Colorado, all months        | area method      | seconds | areal-mean checksum |\n");
+  std::printf("|-----------------------------|------------------|---------|---------------------|\n");
+  for (bool incremental : { true, false })
+  {
+    for (AreaMethod method : { AreaMethod::EqualAreaPlane, AreaMethod::GeodesicPolygon })
+    {
+      ArealAverageSettings settings;
+      settings.Incremental = incremental;
+      settings.Areas = method;
+      const auto build = Clock::now();
+      ThiessenArealAverage average(data.Gauges, data.RingOffsets, data.Ring, settings);
+      double checksum = 0.0;
+      const double seconds = RunAll(average, data.Steps, checksum) + Seconds(build);
+      std::printf("| %-27s | %-16s | %7.3f | %19.10f |\n",
+        incremental ? "incremental updates" : "rebuild every month",
+        method == AreaMethod::EqualAreaPlane ? "equal-area plane" : "geodesic polygon", seconds,
+        checksum);
+    }
+  }
+
+  // Synthetic: N gauges in a 10 x 10 degree box, a catchment inside it, 1% toggling per step.
+  std::printf("\n| gauges | steps | toggling per step | update s/step | rebuild s/step | ratio |\n");
+  std::printf("|--------|-------|-------------------|---------------|----------------|-------|\n");
+  for (std::size_t n : { 10000u, 100000u })
+  {
+    std::mt19937_64 random(42);
+    std::uniform_real_distribution<double> lon(-110.0, -100.0), lat(35.0, 45.0), value(0.0, 10.0);
+    std::vector<Point2> gauges(n);
+    for (auto& g : gauges)
+      g = { lon(random), lat(random) };
+    const std::vector<std::size_t> offsets{ 0, 4 };
+    const std::vector<Point2> square{ { -108, 37 }, { -102, 37 }, { -102, 43 }, { -108, 43 } };
+    const int stepCount = n >= 100000 ? 200 : 200;
+    std::vector<std::vector<double>> steps(stepCount, std::vector<double>(n));
+    std::vector<char> on(n, 1);
+    std::uniform_int_distribution<std::size_t> pick(0, n - 1);
+    for (int t = 0; t < stepCount; ++t)
+    {
+      for (std::size_t k = 0; k < n / 100; ++k)
+      {
+        const std::size_t g = pick(random);
+        on[g] = !on[g];
+      }
+      for (std::size_t g = 0; g < n; ++g)
+        steps[t][g] = on[g] ? value(random) : std::nan("");
+    }
+    double perStep[2] = { 0.0, 0.0 };
+    double checksum[2] = { 0.0, 0.0 };
+    for (int mode = 0; mode < 2; ++mode)
+    {
+      ArealAverageSettings settings;
+      settings.Incremental = mode == 0;
+      ThiessenArealAverage average(gauges, offsets, square, settings);
+      average.Step(steps[0]); // the first step builds in both modes: not timed
+      const std::vector<std::vector<double>> rest(steps.begin() + 1, steps.end());
+      perStep[mode] = RunAll(average, rest, checksum[mode]) / rest.size();
+    }
+    std::printf("| %6zu | %5d | %17zu | %13.5f | %14.5f | %5.1f |\n", n, stepCount, n / 100,
+      perStep[0], perStep[1], perStep[1] / perStep[0]);
+    if (std::abs(checksum[0] - checksum[1]) > 1e-9 * std::abs(checksum[1]))
+      std::printf("   (checksums differ: %.12f vs %.12f)\n", checksum[0], checksum[1]);
+  }
+  return 0;
+}
