@@ -1,0 +1,127 @@
+// The tessellation filters measured through Update(), beside their peers in the same run:
+// CGAL's Delaunay_triangulation_2 (exact predicates, inexact constructions, range insert),
+// vtkDelaunay2D and vtkVoronoi2D (where they finish within a minute).
+//
+//   bench_filters [max_points]     (default 1000000) prints a Markdown table
+#include "vtkDelaunay2D.h"
+#include "vtkDelaunayTriangulation.h"
+#include "vtkDirichletTessellation.h"
+#include "vtkDoubleArray.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkVoronoi2D.h"
+
+#ifdef TESSERA_HAVE_CGAL
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#endif
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+double Seconds(Clock::time_point since)
+{
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+vtkNew<vtkPolyData> UniformPoints(vtkIdType n, unsigned seed)
+{
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    points->SetPoint(i, u(random), u(random), 0.0);
+  }
+  vtkNew<vtkPolyData> data;
+  data->SetPoints(points);
+  return data;
+}
+
+template <typename Filter>
+double TimeFilter(vtkPolyData* input, vtkIdType& cells)
+{
+  vtkNew<Filter> filter;
+  filter->SetInputData(input);
+  const auto start = Clock::now();
+  filter->Update();
+  const double seconds = Seconds(start);
+  cells = filter->GetOutput()->GetNumberOfCells();
+  return seconds;
+}
+
+#ifdef TESSERA_HAVE_CGAL
+double TimeCgal(vtkPolyData* input, std::size_t& faces)
+{
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Triangulation = CGAL::Delaunay_triangulation_2<Kernel>;
+  std::vector<Kernel::Point_2> points;
+  points.reserve(input->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    input->GetPoint(i, p);
+    points.emplace_back(p[0], p[1]);
+  }
+  const auto start = Clock::now();
+  Triangulation triangulation(points.begin(), points.end()); // range insert: spatial sort inside
+  const double seconds = Seconds(start);
+  faces = triangulation.number_of_faces();
+  return seconds;
+}
+#endif
+
+std::string Cell(double seconds)
+{
+  char text[32];
+  if (seconds < 0)
+    return "      -";
+  std::snprintf(text, sizeof text, "%7.3f", seconds);
+  return text;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const vtkIdType maxPoints = argc > 1 ? std::atoll(argv[1]) : 1000000;
+  std::printf("| points | Tessera Delaunay | Tessera tiles+areas | CGAL DT2 | vtkDelaunay2D | "
+              "vtkVoronoi2D | Delaunay / CGAL | tiles / CGAL | vtkVoronoi2D / tiles |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  for (vtkIdType n = 10000; n <= maxPoints; n *= 10)
+  {
+    auto input = UniformPoints(n, 7);
+    vtkIdType triangles = 0, tiles = 0, peerCells = 0;
+    const double delaunay = TimeFilter<vtkDelaunayTriangulation>(input, triangles);
+    const double tessellation = TimeFilter<vtkDirichletTessellation>(input, tiles);
+    double cgal = -1.0;
+#ifdef TESSERA_HAVE_CGAL
+    std::size_t cgalFaces = 0;
+    cgal = TimeCgal(input, cgalFaces);
+    if (static_cast<vtkIdType>(cgalFaces) != triangles)
+      std::fprintf(stderr, "warning: %lld points: CGAL has %zu faces, Tessera %lld\n",
+        static_cast<long long>(n), cgalFaces, static_cast<long long>(triangles));
+#endif
+    // vtkDelaunay2D takes ~28 s at 100k points here: run it up to 100k only.
+    const double delaunay2d = n <= 100000 ? TimeFilter<vtkDelaunay2D>(input, peerCells) : -1.0;
+    const double voronoi2d = TimeFilter<vtkVoronoi2D>(input, peerCells);
+    auto ratio = [](double a, double b) { return b > 0 && a > 0 ? a / b : -1.0; };
+    std::printf("| %lld | %s | %s | %s | %s | %s | %s | %s | %s |\n", static_cast<long long>(n),
+      Cell(delaunay).c_str(), Cell(tessellation).c_str(), Cell(cgal).c_str(),
+      Cell(delaunay2d).c_str(), Cell(voronoi2d).c_str(), Cell(ratio(delaunay, cgal)).c_str(),
+      Cell(ratio(tessellation, cgal)).c_str(), Cell(ratio(voronoi2d, tessellation)).c_str());
+    std::fflush(stdout);
+  }
+  return 0;
+}
