@@ -115,6 +115,12 @@ private:
   };
 
   void Validate(const Point2& p, std::size_t id) const;
+  void BuildFrom(std::vector<std::int32_t>& ids);
+  /// The input id of a vertex (differs only during BuildFrom, which numbers vertices locally).
+  std::int32_t InputId(std::int32_t v) const
+  {
+    return this->BuildOrder ? (*this->BuildOrder)[v] : v;
+  }
   void InsertAcceptedPoint(std::int32_t id);
   void InsertCollinear(std::int32_t id);
   void LeaveCollinearPhase(std::int32_t id);
@@ -150,6 +156,7 @@ private:
   std::vector<std::int32_t> RemovedPoints;
   std::vector<std::int32_t> FlipStack;
   std::int32_t LastTriangle = 0;
+  const std::vector<std::int32_t>* BuildOrder = nullptr;
   std::size_t Accepted = 0;
 };
 

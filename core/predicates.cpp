@@ -537,16 +537,11 @@ int lift_expansion(const double* u, int un, const double* v, int vn, double* h)
   return expansion_sum(p, pn, q, qn, h);
 }
 
-int incircle_expansion(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
+// The incircle determinant from the exact offsets (expansions of length <= 2) of a, b, c from d.
+int incircle_from_offsets(const double* adx, int adxn, const double* ady, int adyn,
+  const double* bdx, int bdxn, const double* bdy, int bdyn, const double* cdx, int cdxn,
+  const double* cdy, int cdyn)
 {
-  double adx[2], ady[2], bdx[2], bdy[2], cdx[2], cdy[2];
-  const int adxn = diff_expansion(a.x, d.x, adx);
-  const int adyn = diff_expansion(a.y, d.y, ady);
-  const int bdxn = diff_expansion(b.x, d.x, bdx);
-  const int bdyn = diff_expansion(b.y, d.y, bdy);
-  const int cdxn = diff_expansion(c.x, d.x, cdx);
-  const int cdyn = diff_expansion(c.y, d.y, cdy);
-
   double minor[16], lift[16];
   double aterm[kMaxProduct], bterm[kMaxProduct], cterm[kMaxProduct];
   int mn = cross_expansion(bdx, bdxn, cdy, cdyn, cdx, cdxn, bdy, bdyn, minor);
@@ -563,6 +558,34 @@ int incircle_expansion(const Point2& a, const Point2& b, const Point2& c, const 
   const int abn = expansion_sum(aterm, an, bterm, bn, ab);
   const int n = expansion_sum(ab, abn, cterm, cn, det);
   return expansion_sign(det, n);
+}
+
+int incircle_expansion(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
+{
+  double adx[2], ady[2], bdx[2], bdy[2], cdx[2], cdy[2];
+  const int adxn = diff_expansion(a.x, d.x, adx);
+  const int adyn = diff_expansion(a.y, d.y, ady);
+  const int bdxn = diff_expansion(b.x, d.x, bdx);
+  const int bdyn = diff_expansion(b.y, d.y, bdy);
+  const int cdxn = diff_expansion(c.x, d.x, cdx);
+  const int cdyn = diff_expansion(c.y, d.y, cdy);
+  return incircle_from_offsets(
+    adx, adxn, ady, adyn, bdx, bdxn, bdy, bdyn, cdx, cdxn, cdy, cdyn);
+}
+
+// An offset component x + tail (|tail| <= half an ulp of x) scaled by 2^k, as an expansion.
+inline int offset_expansion(double x, double tail, int k, double* h)
+{
+  int n = 0;
+  if (tail != 0.0)
+  {
+    h[n++] = k == 0 ? tail : std::ldexp(tail, k);
+  }
+  if (x != 0.0)
+  {
+    h[n++] = k == 0 ? x : std::ldexp(x, k);
+  }
+  return n;
 }
 
 int compare_distance_expansion(const Point2& p, const Point2& a, const Point2& b)
@@ -620,6 +643,11 @@ int compare_distance_big(const Point2& p0, const Point2& a0, const Point2& b0, i
   const BigInt dax = a.x - p.x, day = a.y - p.y, dbx = b.x - p.x, dby = b.y - p.y;
   const BigInt det = (dax * dax + day * day) - (dbx * dbx + dby * dby);
   return det.Sign();
+}
+
+BigInt big_offset(double x, double tail, int base)
+{
+  return BigInt::FromDouble(x, base) + BigInt::FromDouble(tail, base);
 }
 
 } // namespace
@@ -815,6 +843,121 @@ int affine_sign(double a, double b, double c, const Point2& p)
     total = total + BigInt::FromDouble(c, base);
   }
   return total.Sign();
+}
+
+Offset2 exact_offset(const Point2& q, const Point2& p)
+{
+  Offset2 o;
+  two_diff(q.x, p.x, o.x, o.xTail);
+  two_diff(q.y, p.y, o.y, o.yTail);
+  return o;
+}
+
+int cross_sign(const Offset2& u, const Offset2& v)
+{
+  // Filter: the rounded offsets carry relative errors below eps, as the differences in orient2d.
+  const double detleft = u.x * v.y;
+  const double detright = u.y * v.x;
+  const double det = detleft - detright;
+  const double errbound = detail::kOrientBound * (std::fabs(detleft) + std::fabs(detright)) +
+    detail::kUnderflowTerm;
+  if (det > errbound)
+  {
+    return 1;
+  }
+  if (-det > errbound)
+  {
+    return -1;
+  }
+  BitRange range;
+  for (double c : { u.x, u.xTail, u.y, u.yTail, v.x, v.xTail, v.y, v.yTail })
+  {
+    range.add(c);
+  }
+  if (!range.finite || range.allZero())
+  {
+    return 0;
+  }
+  int k = 0;
+  if (exponent_window(range, kDegree2HighMax, kDegree2LowMin, k))
+  {
+    double ux[2], uy[2], vx[2], vy[2], left[8], right[8], total[16];
+    const int uxn = offset_expansion(u.x, u.xTail, k, ux);
+    const int uyn = offset_expansion(u.y, u.yTail, k, uy);
+    const int vxn = offset_expansion(v.x, v.xTail, k, vx);
+    const int vyn = offset_expansion(v.y, v.yTail, k, vy);
+    const int ln = expansion_product(ux, uxn, vy, vyn, left);
+    const int rn = expansion_product(uy, uyn, vx, vxn, right);
+    negate(right, rn);
+    return expansion_sign(total, expansion_sum(left, ln, right, rn, total));
+  }
+  const int base = range.low;
+  const BigInt det2 = big_offset(u.x, u.xTail, base) * big_offset(v.y, v.yTail, base) -
+    big_offset(u.y, u.yTail, base) * big_offset(v.x, v.xTail, base);
+  return det2.Sign();
+}
+
+int incircle_offsets(const Offset2& a, const Offset2& b, const Offset2& c)
+{
+  // Filter on the rounded offsets: they carry relative errors below eps, as the differences
+  // incircle computes, which is all Shewchuk's bound assumes about them.
+  {
+    const double adx = a.x, ady = a.y, bdx = b.x, bdy = b.y, cdx = c.x, cdy = c.y;
+    const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
+    const double cdxady = cdx * ady, adxcdy = adx * cdy;
+    const double adxbdy = adx * bdy, bdxady = bdx * ady;
+    const double alift = adx * adx + ady * ady;
+    const double blift = bdx * bdx + bdy * bdy;
+    const double clift = cdx * cdx + cdy * cdy;
+    const double det =
+      alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+    const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
+      (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
+      (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
+    const double errbound = detail::kIncircleBound * permanent +
+      detail::kUnderflowTerm * ((alift + blift + clift) + 1.0);
+    if (det > errbound)
+    {
+      return 1;
+    }
+    if (-det > errbound)
+    {
+      return -1;
+    }
+  }
+  BitRange range;
+  for (const Offset2* o : { &a, &b, &c })
+  {
+    range.add(o->x);
+    range.add(o->xTail);
+    range.add(o->y);
+    range.add(o->yTail);
+  }
+  if (!range.finite || range.allZero())
+  {
+    return 0;
+  }
+  int k = 0;
+  if (exponent_window(range, kDegree4HighMax, kDegree4LowMin, k))
+  {
+    double adx[2], ady[2], bdx[2], bdy[2], cdx[2], cdy[2];
+    const int adxn = offset_expansion(a.x, a.xTail, k, adx);
+    const int adyn = offset_expansion(a.y, a.yTail, k, ady);
+    const int bdxn = offset_expansion(b.x, b.xTail, k, bdx);
+    const int bdyn = offset_expansion(b.y, b.yTail, k, bdy);
+    const int cdxn = offset_expansion(c.x, c.xTail, k, cdx);
+    const int cdyn = offset_expansion(c.y, c.yTail, k, cdy);
+    return incircle_from_offsets(
+      adx, adxn, ady, adyn, bdx, bdxn, bdy, bdyn, cdx, cdxn, cdy, cdyn);
+  }
+  const int base = range.low;
+  const BigInt adx = big_offset(a.x, a.xTail, base), ady = big_offset(a.y, a.yTail, base);
+  const BigInt bdx = big_offset(b.x, b.xTail, base), bdy = big_offset(b.y, b.yTail, base);
+  const BigInt cdx = big_offset(c.x, c.xTail, base), cdy = big_offset(c.y, c.yTail, base);
+  const BigInt det = (adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
+    (bdx * bdx + bdy * bdy) * (cdx * ady - adx * cdy) +
+    (cdx * cdx + cdy * cdy) * (adx * bdy - bdx * ady);
+  return det.Sign();
 }
 
 int determinant3_sign(

@@ -40,4 +40,25 @@ int determinant3_sign(double a1,
   double b3,
   double c3);
 
+/// A vector held exactly as the unevaluated sums x + xTail and y + yTail, where x is the double
+/// nearest to x + xTail (|xTail| at most half an ulp of x), and likewise y: e.g. the exact
+/// difference of two points (exact_offset), or twice it (a reflection in an axis-parallel line).
+struct Offset2
+{
+  double x = 0.0;
+  double xTail = 0.0;
+  double y = 0.0;
+  double yTail = 0.0;
+};
+
+/// q - p, exactly.
+Offset2 exact_offset(const Point2& q, const Point2& p);
+
+/// The sign of u.x * v.y - u.y * v.x, exactly: orient2d(o, o + u, o + v) for any origin o.
+int cross_sign(const Offset2& u, const Offset2& v);
+
+/// incircle(o + a, o + b, o + c, o) for any origin o, exactly: the sign of the incircle
+/// determinant of three points given by their exact offsets from the fourth.
+int incircle_offsets(const Offset2& a, const Offset2& b, const Offset2& c);
+
 } // namespace tessera

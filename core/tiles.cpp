@@ -14,19 +14,37 @@ namespace
 
 using Tess = DirichletTessellation;
 
-// Circumcentre from the points in a fixed (ascending id) order, relative to the first one.
-Point2 Circumcentre(const Point2& a, const Point2& b, const Point2& c)
+// Circumcentre from the points in a fixed (ascending id) order, relative to the
+// first one. `error` receives a bound on the rounding error of each coordinate:
+// a first-order bound on the roundings of the differences, squares, products
+// and quotient, times a safety factor of 4 (the exact circle comparison only
+// uses it to skip pairs of triangles whose centres are certainly different;
+// infinity when the triangle is too flat to say).
+Point2 Circumcentre(const Point2& a, const Point2& b, const Point2& c, double& error)
 {
   const double bx = b.x - a.x, by = b.y - a.y;
   const double cx = c.x - a.x, cy = c.y - a.y;
   const double b2 = bx * bx + by * by;
   const double c2 = cx * cx + cy * cy;
   const double d = 2.0 * (bx * cy - by * cx);
-  return { a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d };
+  const double ux = (cy * b2 - by * c2) / d, uy = (bx * c2 - cx * b2) / d;
+  const double condition = 2.0 * (std::fabs(bx * cy) + std::fabs(by * cx)) / std::fabs(d);
+  const double spread = 2.0 *
+    (std::fabs(cy) * b2 + std::fabs(by) * c2 + std::fabs(bx) * c2 + std::fabs(cx) * b2) /
+    std::fabs(d);
+  constexpr double unit = 0x1p-53;
+  error = 4.0 * 16.0 * unit *
+    (spread + (std::fabs(ux) + std::fabs(uy)) * (condition + 1.0) + std::fabs(a.x) +
+      std::fabs(a.y));
+  if (!std::isfinite(error))
+  {
+    error = std::numeric_limits<double>::infinity();
+  }
+  return { a.x + ux, a.y + uy };
 }
 
-// Neumaier's compensated sum of the shoelace terms, relative to the first vertex so that the
-// terms do not cancel catastrophically far from the origin.
+// Neumaier's compensated sum of the shoelace terms, relative to the first
+// vertex so that the terms do not cancel catastrophically far from the origin.
 double PolygonArea(const Point2* v, std::size_t n)
 {
   double sum = 0.0, compensation = 0.0;
@@ -58,54 +76,115 @@ TessellationDual::TessellationDual(const DirichletTessellation& tessellation)
     {
       this->LinePosition[line[k]] = std::int32_t(k);
     }
+    this->Order = line;
     return;
   }
-  this->VertexEdge.assign(n, -1);
+  // First appearance of each vertex in the half-edge arrays; a bit per point
+  // keeps the "seen" test in cache.
+  std::vector<std::uint64_t> seen((n + 63) / 64, 0);
+  this->Order.reserve(tessellation.AcceptedCount());
+  this->OrderEdge.reserve(tessellation.AcceptedCount());
   const auto& org = tessellation.Origin();
   for (std::size_t e = 0; e < org.size(); ++e)
   {
-    if (org[e] >= 0 && this->VertexEdge[org[e]] < 0)
+    const std::int32_t v = org[e];
+    if (v >= 0 && !(seen[std::size_t(v) >> 6] >> (v & 63) & 1U))
     {
-      this->VertexEdge[org[e]] = std::int32_t(e);
+      seen[std::size_t(v) >> 6] |= std::uint64_t(1) << (v & 63);
+      this->Order.push_back(v);
+      this->OrderEdge.push_back(std::int32_t(e));
     }
   }
+  this->ComputeTriangleCentres();
   this->LabelFaces();
   this->ComputeCentres();
 }
 
 // ---------------------------------------------------------------------------------------------
-// Faces: ghosts get FaceOf = -2 - t (never merged), real triangles the id of the first triangle
-// of their co-circular cluster.
+// Faces: ghosts get Face = -2 - t (never merged), real triangles the id of
+// the first triangle of their co-circular cluster.
+
+// Every real triangle's centre (canonical: from its ids in ascending order) and
+// error bound.
+void TessellationDual::ComputeTriangleCentres()
+{
+  const auto& org = this->Tess.Origin();
+  const std::vector<Point2>& pts = this->Tess.Points();
+  const std::size_t triangles = org.size() / 3;
+  this->Data.resize(triangles);
+  this->CentreError.resize(triangles);
+  for (std::size_t t = 0; t < triangles; ++t)
+  {
+    std::int32_t a = org[3 * t], b = org[3 * t + 1], c = org[3 * t + 2];
+    if (a < 0 || b < 0 || c < 0)
+    {
+      continue;
+    }
+    // Sort the three ids (a rotation and at most one swap).
+    if (b < a && b < c)
+    {
+      std::swap(a, b);
+      std::swap(b, c);
+    }
+    else if (c < a && c < b)
+    {
+      std::swap(a, c);
+      std::swap(b, c);
+    }
+    if (c < b)
+    {
+      std::swap(b, c);
+    }
+    this->Data[t].Centre = Circumcentre(pts[a], pts[b], pts[c], this->CentreError[t]);
+  }
+}
+
+// Whether the triangle across half-edge f has its opposite vertex on the circle
+// of triangle t: exact, but skipped when the computed centres are further apart
+// than their error bounds.
+bool TessellationDual::Cocircular(std::int32_t t, std::int32_t f) const
+{
+  const std::int32_t u = f / 3;
+  const double slack = this->CentreError[t] + this->CentreError[u];
+  if (std::fabs(this->Data[t].Centre.x - this->Data[u].Centre.x) > slack ||
+    std::fabs(this->Data[t].Centre.y - this->Data[u].Centre.y) > slack)
+  {
+    return false;
+  }
+  const auto& org = this->Tess.Origin();
+  const std::vector<Point2>& pts = this->Tess.Points();
+  return incircle_fast(
+           pts[org[3 * t]], pts[org[3 * t + 1]], pts[org[3 * t + 2]], pts[org[Tess::Prev(f)]]) == 0;
+}
 
 void TessellationDual::LabelFaces()
 {
   const auto& org = this->Tess.Origin();
   const auto& twin = this->Tess.Twin();
-  const std::vector<Point2>& pts = this->Tess.Points();
   const std::int32_t triangles = std::int32_t(org.size() / 3);
-  this->FaceOf.assign(std::size_t(triangles), -1);
+  for (TriangleData& data : this->Data)
+  {
+    data.Face = -1;
+  }
   for (std::int32_t t = 0; t < triangles; ++t)
   {
     if (this->Tess.IsFreeTriangle(t) || this->Tess.IsGhostTriangle(t))
     {
-      this->FaceOf[t] = -2 - t;
+      this->Data[t].Face = -2 - t;
     }
   }
   std::vector<std::int32_t> cluster, stack, boundary;
   for (std::int32_t t = 0; t < triangles; ++t)
   {
-    if (this->FaceOf[t] != -1)
+    if (this->Data[t].Face != -1)
     {
       continue;
     }
-    this->FaceOf[t] = t;
-    const Point2& a = pts[org[3 * t]];
-    const Point2& b = pts[org[3 * t + 1]];
-    const Point2& c = pts[org[3 * t + 2]];
+    this->Data[t].Face = t;
     for (std::int32_t k = 0; k < 3; ++k)
     {
       const std::int32_t f = twin[3 * t + k];
-      if (this->FaceOf[f / 3] == -1 && incircle_fast(a, b, c, pts[org[Tess::Prev(f)]]) == 0)
+      if (this->Data[f / 3].Face == -1 && this->Cocircular(t, f))
       {
         this->MergeCocircular(t, cluster, stack, boundary);
         break;
@@ -114,8 +193,9 @@ void TessellationDual::LabelFaces()
   }
 }
 
-// Flood the cluster of triangles sharing root's circle, then chain its boundary half-edges into
-// the face polygon (anticlockwise, rotated to start at its smallest id).
+// Flood the cluster of triangles sharing root's circle, then chain its boundary
+// half-edges into the face polygon (anticlockwise, rotated to start at its
+// smallest id).
 void TessellationDual::MergeCocircular(std::int32_t root,
   std::vector<std::int32_t>& cluster,
   std::vector<std::int32_t>& stack,
@@ -123,10 +203,6 @@ void TessellationDual::MergeCocircular(std::int32_t root,
 {
   const auto& org = this->Tess.Origin();
   const auto& twin = this->Tess.Twin();
-  const std::vector<Point2>& pts = this->Tess.Points();
-  const Point2& a = pts[org[3 * root]];
-  const Point2& b = pts[org[3 * root + 1]];
-  const Point2& c = pts[org[3 * root + 2]];
   cluster.assign(1, root);
   stack.assign(1, root);
   while (!stack.empty())
@@ -137,9 +213,9 @@ void TessellationDual::MergeCocircular(std::int32_t root,
     {
       const std::int32_t f = twin[3 * s + k];
       const std::int32_t u = f / 3;
-      if (this->FaceOf[u] == -1 && incircle_fast(a, b, c, pts[org[Tess::Prev(f)]]) == 0)
+      if (this->Data[u].Face == -1 && this->Cocircular(root, f))
       {
-        this->FaceOf[u] = root;
+        this->Data[u].Face = root;
         cluster.push_back(u);
         stack.push_back(u);
       }
@@ -151,7 +227,7 @@ void TessellationDual::MergeCocircular(std::int32_t root,
     for (std::int32_t k = 0; k < 3; ++k)
     {
       const std::int32_t e = 3 * s + k;
-      if (this->FaceOf[twin[e] / 3] != root)
+      if (this->Data[twin[e] / 3].Face != root)
       {
         boundary.push_back(e);
       }
@@ -168,7 +244,7 @@ void TessellationDual::MergeCocircular(std::int32_t root,
   }
   if (this->DegenerateIndex.empty())
   {
-    this->DegenerateIndex.assign(this->FaceOf.size(), -1);
+    this->DegenerateIndex.assign(this->Data.size(), -1);
     this->DegenerateStarts.push_back(0);
   }
   this->DegenerateIndex[root] = std::int32_t(this->DegenerateReps.size());
@@ -202,75 +278,40 @@ const std::int32_t* TessellationDual::DegeneratePolygon(std::int32_t face, std::
   return this->DegenerateVertices.data() + this->DegenerateStarts[k];
 }
 
+// Degenerate faces take their centre from their three smallest ids; every face
+// gets its inside-the-window flag.
 void TessellationDual::ComputeCentres()
 {
-  const auto& org = this->Tess.Origin();
   const std::vector<Point2>& pts = this->Tess.Points();
   const auto& constraints = this->Tess.GetWindow().EffectiveConstraints();
-  this->Centre.resize(this->FaceOf.size());
-  this->Inside.assign(this->FaceOf.size(), 0);
-  for (std::int32_t t = 0; t < std::int32_t(this->FaceOf.size()); ++t)
+  for (const std::int32_t rep : this->DegenerateReps)
   {
-    if (this->FaceOf[t] != t)
+    std::int32_t size = 0;
+    const std::int32_t* polygon = this->DegeneratePolygon(rep, size);
+    std::int32_t ids[3] = { 0, 0, 0 };
+    std::partial_sort_copy(polygon, polygon + size, ids, ids + 3);
+    double unused = 0.0;
+    this->Data[rep].Centre = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], unused);
+  }
+  for (std::int32_t t = 0; t < std::int32_t(this->Data.size()); ++t)
+  {
+    if (this->Data[t].Face != t)
     {
       continue;
     }
-    std::int32_t ids[3];
-    std::int32_t size = 0;
-    const std::int32_t* polygon = this->DegeneratePolygon(t, size);
-    if (polygon)
-    {
-      std::int32_t sorted[64];
-      if (size <= 64)
-      {
-        std::partial_sort_copy(polygon, polygon + size, sorted, sorted + 3);
-      }
-      else
-      {
-        std::vector<std::int32_t> all(polygon, polygon + size);
-        std::partial_sort(all.begin(), all.begin() + 3, all.end());
-        std::copy(all.begin(), all.begin() + 3, sorted);
-      }
-      std::copy(sorted, sorted + 3, ids);
-    }
-    else
-    {
-      ids[0] = org[3 * t];
-      ids[1] = org[3 * t + 1];
-      ids[2] = org[3 * t + 2];
-      std::sort(ids, ids + 3);
-    }
-    const Point2 c = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]]);
-    this->Centre[t] = c;
+    const Point2 c = this->Data[t].Centre;
     bool inside = std::isfinite(c.x) && std::isfinite(c.y);
     for (const HalfPlane& h : constraints)
     {
       inside = inside && h.a * c.x + h.b * c.y + h.c < 0.0;
     }
-    this->Inside[t] = inside ? 1 : 0;
+    this->Data[t].Inside = inside ? 1 : 0;
   }
+  std::vector<double>().swap(this->CentreError);
 }
 
 // ---------------------------------------------------------------------------------------------
 // Tile edges.
-
-std::int32_t TessellationDual::CanonicalStart(std::int32_t edge) const
-{
-  const auto& org = this->Tess.Origin();
-  std::int32_t best = -1, bestId = std::numeric_limits<std::int32_t>::max();
-  std::int32_t e = edge;
-  do
-  {
-    const std::int32_t j = org[Tess::Next(e)];
-    if (j >= 0 && j < bestId)
-    {
-      bestId = j;
-      best = e;
-    }
-    e = this->Tess.RingNext(e);
-  } while (e != edge);
-  return best;
-}
 
 bool TessellationDual::ClipEdge(std::int32_t from,
   std::int32_t to,
@@ -292,21 +333,22 @@ bool TessellationDual::ClipEdge(std::int32_t from,
   return true;
 }
 
-// The part inside the window of the tile edge of a (lower id) with b: the bisector, parametrised
-// as m + t * d with m the midpoint and d = (b - a) turned anticlockwise, from the centre of loFace
-// (right of a->b; -1 for a ghost: t = -infinity) to the centre of hiFace (left of a->b).
+// The part inside the window of the tile edge of a (lower id) with b: the
+// bisector, parametrised as m + t * d with m the midpoint and d = (b - a)
+// turned anticlockwise, from the centre of loFace (right of a->b; -1 for a
+// ghost: t = -infinity) to the centre of hiFace (left of a->b).
 bool TessellationDual::ClipCanonical(std::int32_t a,
   std::int32_t b,
   std::int32_t loFace,
   std::int32_t hiFace,
   TileEdge& out) const
 {
-  const bool loInside = loFace >= 0 && this->Inside[loFace];
-  const bool hiInside = hiFace >= 0 && this->Inside[hiFace];
+  const bool loInside = loFace >= 0 && this->Data[loFace].Inside;
+  const bool hiInside = hiFace >= 0 && this->Data[hiFace].Inside;
   if (loInside && hiInside)
   {
-    out.Lo = { this->Centre[loFace], -1 };
-    out.Hi = { this->Centre[hiFace], -1 };
+    out.Lo = { this->Data[loFace].Centre, -1 };
+    out.Hi = { this->Data[hiFace].Centre, -1 };
     return true;
   }
   const Point2& pa = this->Tess.Points()[a];
@@ -351,17 +393,17 @@ bool TessellationDual::ClipCanonical(std::int32_t a,
   }
   const double dd = dx * dx + dy * dy;
   const auto parameter = [&](const Point2& c) { return ((c.x - mx) * dx + (c.y - my) * dy) / dd; };
-  if (loFace >= 0 && !loInside && parameter(this->Centre[loFace]) >= upper)
+  if (loFace >= 0 && !loInside && parameter(this->Data[loFace].Centre) >= upper)
   {
     return false; // the whole edge lies beyond the window
   }
-  if (hiFace >= 0 && !hiInside && parameter(this->Centre[hiFace]) <= lower)
+  if (hiFace >= 0 && !hiInside && parameter(this->Data[hiFace].Centre) <= lower)
   {
     return false;
   }
-  out.Lo = loInside ? EdgeEnd{ this->Centre[loFace], -1 }
+  out.Lo = loInside ? EdgeEnd{ this->Data[loFace].Centre, -1 }
                     : EdgeEnd{ { mx + lower * dx, my + lower * dy }, lowerConstraint };
-  out.Hi = hiInside ? EdgeEnd{ this->Centre[hiFace], -1 }
+  out.Hi = hiInside ? EdgeEnd{ this->Data[hiFace].Centre, -1 }
                     : EdgeEnd{ { mx + upper * dx, my + upper * dy }, upperConstraint };
   return true;
 }
@@ -375,13 +417,17 @@ std::int32_t TessellationDual::Neighbors1D(std::int32_t v, std::int32_t& next) c
   return k > 0 ? line[k - 1] : -1;
 }
 
-void TessellationDual::TileEdgesOf(std::int32_t v, std::vector<TileEdge>& edges) const
+void TessellationDual::TileEdgesOf(std::int32_t v,
+  std::int32_t vertexEdge,
+  std::vector<TileEdge>& edges,
+  std::vector<std::int32_t>& ring) const
 {
   edges.clear();
   TileEdge edge;
   if (!this->Tess.IsTwoDimensional())
   {
-    // Two parallel edges; either cyclic order is anticlockwise, start at the smaller id.
+    // Two parallel edges; either cyclic order is anticlockwise, start at the
+    // smaller id.
     std::int32_t next = -1;
     const std::int32_t previous = this->Neighbors1D(v, next);
     std::int32_t order[2] = { next, previous };
@@ -398,22 +444,37 @@ void TessellationDual::TileEdgesOf(std::int32_t v, std::vector<TileEdge>& edges)
     }
     return;
   }
+  // One walk collects the ring; the tile starts at the edge to the smallest neighbour id, so the
+  // polygon does not depend on where the ring happens to start.
   const auto& org = this->Tess.Origin();
   const auto& twin = this->Tess.Twin();
-  const std::int32_t start = this->CanonicalStart(this->VertexEdge[v]);
-  std::int32_t e = start;
+  ring.clear();
+  std::size_t first = 0;
+  std::int32_t smallest = std::numeric_limits<std::int32_t>::max();
+  std::int32_t e = vertexEdge;
   do
   {
     const std::int32_t j = org[Tess::Next(e)];
-    const std::int32_t left = this->FaceOf[e / 3];
-    const std::int32_t right = this->FaceOf[twin[e] / 3];
+    if (j >= 0 && j < smallest)
+    {
+      smallest = j;
+      first = ring.size();
+    }
+    ring.push_back(e);
+    e = this->Tess.RingNext(e);
+  } while (e != vertexEdge);
+  for (std::size_t k = 0; k < ring.size(); ++k)
+  {
+    e = ring[(first + k) % ring.size()];
+    const std::int32_t j = org[Tess::Next(e)];
+    const std::int32_t left = this->Data[e / 3].Face;
+    const std::int32_t right = this->Data[twin[e] / 3].Face;
     if (j >= 0 && left != right &&
       this->ClipEdge(v, j, right < 0 ? -1 : right, left < 0 ? -1 : left, edge))
     {
       edges.push_back(edge);
     }
-    e = this->Tess.RingNext(e);
-  } while (e != start);
+  }
 }
 
 void TessellationDual::AssemblePolygon(const std::vector<TileEdge>& edges,
@@ -436,7 +497,8 @@ void TessellationDual::AssemblePolygon(const std::vector<TileEdge>& edges,
       continue; // a face centre: the next edge starts there
     }
     polygon.push_back(edge.Hi.P);
-    // Leave on constraint a, follow the window boundary through corners a+1 .. b, re-enter on b.
+    // Leave on constraint a, follow the window boundary through corners a+1 ..
+    // b, re-enter on b.
     const int exit = edge.Hi.Constraint;
     const int entry = edges[(s + 1) % edges.size()].Lo.Constraint;
     if (entry < 0)
@@ -449,7 +511,8 @@ void TessellationDual::AssemblePolygon(const std::vector<TileEdge>& edges,
       polygon.push_back(corners[k]);
     }
   }
-  // Sides of zero length (an edge ending exactly at a corner) are not contiguities.
+  // Sides of zero length (an edge ending exactly at a corner) are not
+  // contiguities.
   std::size_t kept = 0;
   for (std::size_t k = 0; k < polygon.size(); ++k)
   {
@@ -471,7 +534,6 @@ void TessellationDual::AssemblePolygon(const std::vector<TileEdge>& edges,
 TileSet TessellationDual::Tiles() const
 {
   TileSet tiles;
-  const std::int32_t n = std::int32_t(this->Tess.PointCount());
   const std::size_t accepted = this->Tess.AcceptedCount();
   tiles.PointIds.reserve(accepted);
   tiles.Offsets.reserve(accepted + 1);
@@ -481,14 +543,12 @@ TileSet TessellationDual::Tiles() const
   tiles.Offsets.push_back(0);
   std::vector<TileEdge> edges;
   std::vector<Point2> polygon;
+  std::vector<std::int32_t> ring;
   const bool planar = this->Tess.IsTwoDimensional();
-  for (std::int32_t v = 0; v < n; ++v)
+  for (std::size_t k = 0; k < this->Order.size(); ++k)
   {
-    if (planar ? this->VertexEdge[v] < 0 : this->LinePosition[v] < 0)
-    {
-      continue;
-    }
-    this->TileEdgesOf(v, edges);
+    const std::int32_t v = this->Order[k];
+    this->TileEdgesOf(v, planar ? this->OrderEdge[k] : -1, edges, ring);
     this->AssemblePolygon(edges, polygon);
     tiles.PointIds.push_back(v);
     tiles.Vertices.insert(tiles.Vertices.end(), polygon.begin(), polygon.end());
@@ -502,11 +562,12 @@ TileSet TessellationDual::Tiles() const
 ContiguityGraph TessellationDual::Contiguities() const
 {
   ContiguityGraph graph;
-  // Half-neighbours: non-adjacent vertices of a degenerate face whose centre is in the window.
+  // Half-neighbours: non-adjacent vertices of a degenerate face whose centre is
+  // in the window.
   std::vector<std::pair<std::int32_t, std::int32_t>> half;
   for (const std::int32_t rep : this->DegenerateReps)
   {
-    if (!this->Inside[rep])
+    if (!this->Data[rep].Inside)
     {
       continue;
     }
@@ -524,9 +585,7 @@ ContiguityGraph TessellationDual::Contiguities() const
     }
   }
   std::sort(half.begin(), half.end());
-  std::size_t nextHalf = 0;
 
-  const std::int32_t n = std::int32_t(this->Tess.PointCount());
   const bool planar = this->Tess.IsTwoDimensional();
   const auto& org = this->Tess.Origin();
   const auto& twin = this->Tess.Twin();
@@ -534,15 +593,12 @@ ContiguityGraph TessellationDual::Contiguities() const
   TileEdge edge;
   graph.Pairs.reserve(6 * this->Tess.AcceptedCount());
   graph.Kinds.reserve(3 * this->Tess.AcceptedCount());
-  for (std::int32_t v = 0; v < n; ++v)
+  for (std::size_t index = 0; index < this->Order.size(); ++index)
   {
+    const std::int32_t v = this->Order[index];
     around.clear();
     if (!planar)
     {
-      if (this->LinePosition[v] < 0)
-      {
-        continue;
-      }
       std::int32_t next = -1;
       const std::int32_t previous = this->Neighbors1D(v, next);
       for (const std::int32_t j : { previous, next })
@@ -553,15 +609,15 @@ ContiguityGraph TessellationDual::Contiguities() const
         }
       }
     }
-    else if (this->VertexEdge[v] >= 0)
+    else
     {
-      const std::int32_t start = this->VertexEdge[v];
+      const std::int32_t start = this->OrderEdge[index];
       std::int32_t e = start;
       do
       {
         const std::int32_t j = org[Tess::Next(e)];
-        const std::int32_t left = this->FaceOf[e / 3];
-        const std::int32_t right = this->FaceOf[twin[e] / 3];
+        const std::int32_t left = this->Data[e / 3].Face;
+        const std::int32_t right = this->Data[twin[e] / 3].Face;
         if (j > v && left != right &&
           this->ClipEdge(v, j, right < 0 ? -1 : right, left < 0 ? -1 : left, edge))
         {
@@ -570,9 +626,11 @@ ContiguityGraph TessellationDual::Contiguities() const
         e = this->Tess.RingNext(e);
       } while (e != start);
     }
-    while (nextHalf < half.size() && half[nextHalf].first == v)
+    for (auto at = std::lower_bound(half.begin(), half.end(), std::make_pair(v, std::int32_t(-1)));
+         at != half.end() && at->first == v;
+         ++at)
     {
-      around.emplace_back(half[nextHalf++].second, 1);
+      around.emplace_back(at->second, 1);
     }
     std::sort(around.begin(), around.end());
     for (const auto& [j, kind] : around)
@@ -594,61 +652,46 @@ DelaunayFaces TessellationDual::Faces(bool splitDegenerate) const
     return faces;
   }
   const auto& org = this->Tess.Origin();
-  const auto& twin = this->Tess.Twin();
-  const std::int32_t n = std::int32_t(this->Tess.PointCount());
   faces.Offsets.reserve(2 * this->Tess.AcceptedCount() + 1);
   faces.PointIds.reserve(6 * this->Tess.AcceptedCount());
-  // Each face is emitted from its smallest vertex v, found there as the face on the left of its
-  // boundary edge v -> j; faces at v go out in ascending j.
-  std::vector<std::pair<std::int32_t, std::int32_t>> around;
-  for (std::int32_t v = 0; v < n; ++v)
+  // In the order of the triangle arrays (a sequential pass: no ring walks). Each face is written
+  // from its representative triangle, starting at its smallest id.
+  for (std::int32_t t = 0; t < std::int32_t(this->Data.size()); ++t)
   {
-    if (this->VertexEdge[v] < 0)
+    if (this->Data[t].Face != t)
     {
       continue;
     }
-    around.clear();
-    const std::int32_t start = this->VertexEdge[v];
-    std::int32_t e = start;
-    do
+    std::int32_t size = 0;
+    const std::int32_t* polygon = this->DegeneratePolygon(t, size);
+    if (!polygon)
     {
-      const std::int32_t face = this->FaceOf[e / 3];
-      if (face >= 0 && face != this->FaceOf[twin[e] / 3])
+      const std::int32_t a = org[3 * t], b = org[3 * t + 1], c = org[3 * t + 2];
+      if (a < b && a < c)
       {
-        std::int32_t size = 0;
-        const std::int32_t* polygon = this->DegeneratePolygon(face, size);
-        const std::int32_t t = e / 3;
-        const std::int32_t smallest =
-          polygon ? polygon[0] : std::min({ org[3 * t], org[3 * t + 1], org[3 * t + 2] });
-        if (smallest == v)
-        {
-          around.emplace_back(org[Tess::Next(e)], e);
-        }
+        faces.PointIds.insert(faces.PointIds.end(), { a, b, c });
       }
-      e = this->Tess.RingNext(e);
-    } while (e != start);
-    std::sort(around.begin(), around.end());
-    for (const auto& [j, edge] : around)
-    {
-      std::int32_t size = 0;
-      const std::int32_t* polygon = this->DegeneratePolygon(this->FaceOf[edge / 3], size);
-      if (!polygon)
+      else if (b < c)
       {
-        faces.PointIds.insert(faces.PointIds.end(), { v, j, org[Tess::Prev(edge)] });
-        faces.Offsets.push_back(std::int64_t(faces.PointIds.size()));
-      }
-      else if (!splitDegenerate)
-      {
-        faces.PointIds.insert(faces.PointIds.end(), polygon, polygon + size);
-        faces.Offsets.push_back(std::int64_t(faces.PointIds.size()));
+        faces.PointIds.insert(faces.PointIds.end(), { b, c, a });
       }
       else
       {
-        for (std::int32_t k = 1; k + 1 < size; ++k)
-        {
-          faces.PointIds.insert(faces.PointIds.end(), { polygon[0], polygon[k], polygon[k + 1] });
-          faces.Offsets.push_back(std::int64_t(faces.PointIds.size()));
-        }
+        faces.PointIds.insert(faces.PointIds.end(), { c, a, b });
+      }
+      faces.Offsets.push_back(std::int64_t(faces.PointIds.size()));
+    }
+    else if (!splitDegenerate)
+    {
+      faces.PointIds.insert(faces.PointIds.end(), polygon, polygon + size);
+      faces.Offsets.push_back(std::int64_t(faces.PointIds.size()));
+    }
+    else
+    {
+      for (std::int32_t k = 1; k + 1 < size; ++k)
+      {
+        faces.PointIds.insert(faces.PointIds.end(), { polygon[0], polygon[k], polygon[k + 1] });
+        faces.Offsets.push_back(std::int64_t(faces.PointIds.size()));
       }
     }
   }

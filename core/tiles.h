@@ -34,7 +34,7 @@
 namespace tessera
 {
 
-/// One polygon per accepted point, in ascending point id.
+/// One polygon per accepted point, in a spatially coherent order (PointIds names the point).
 struct TileSet
 {
   std::vector<std::int32_t> PointIds;
@@ -44,15 +44,16 @@ struct TileSet
   std::vector<std::int32_t> NeighborCounts; ///< contiguities: sides of the polygon
 };
 
-/// Pairs (i < j), sorted by (i, j).
+/// Pairs (i < j), grouped by i (in the tiles' order), ascending j within a group.
 struct ContiguityGraph
 {
   std::vector<std::int32_t> Pairs; ///< 2 ids per contiguity
   std::vector<std::uint8_t> Kinds; ///< 0: share an edge of positive length, 1: half-neighbours
 };
 
-/// Delaunay faces, each anticlockwise and starting at its smallest point id, sorted by (first,
-/// second) id: independent of the insertion order.
+/// Delaunay faces, each anticlockwise and starting at its smallest point id, listed in the order
+/// of the triangle arrays. The set of faces, and each face, do not depend on the insertion order;
+/// the listing order does.
 struct DelaunayFaces
 {
   std::vector<std::int64_t> Offsets;
@@ -85,13 +86,14 @@ private:
     EdgeEnd Lo, Hi;
   };
 
+  void ComputeTriangleCentres();
+  bool Cocircular(std::int32_t t, std::int32_t f) const;
   void LabelFaces();
   void MergeCocircular(std::int32_t root,
     std::vector<std::int32_t>& cluster,
     std::vector<std::int32_t>& stack,
     std::vector<std::int32_t>& boundary);
   void ComputeCentres();
-  std::int32_t CanonicalStart(std::int32_t edge) const;
   bool ClipEdge(std::int32_t from,
     std::int32_t to,
     std::int32_t rightFace,
@@ -102,17 +104,31 @@ private:
     std::int32_t loFace,
     std::int32_t hiFace,
     TileEdge& out) const;
-  void TileEdgesOf(std::int32_t v, std::vector<TileEdge>& edges) const;
+  void TileEdgesOf(std::int32_t v,
+    std::int32_t vertexEdge,
+    std::vector<TileEdge>& edges,
+    std::vector<std::int32_t>& ring) const;
   void AssemblePolygon(const std::vector<TileEdge>& edges, std::vector<Point2>& polygon) const;
   const std::int32_t* DegeneratePolygon(std::int32_t face, std::int32_t& size) const;
   std::int32_t Neighbors1D(std::int32_t v, std::int32_t& next) const;
 
   const DirichletTessellation& Tess;
-  std::vector<std::int32_t> VertexEdge;   ///< per point id: a half-edge leaving it, or -1
   std::vector<std::int32_t> LinePosition; ///< collinear case: per point id, index along the line
-  std::vector<std::int32_t> FaceOf;       ///< per triangle: its face (a representative triangle)
-  std::vector<Point2> Centre;             ///< per representative triangle
-  std::vector<std::uint8_t> Inside;       ///< per representative: centre inside the window
+  /// Accepted points in traversal order: first appearance in the half-edge arrays, which follow
+  /// the spatial insertion order, so walking rings in this order stays in cache.
+  std::vector<std::int32_t> Order;
+  std::vector<std::int32_t> OrderEdge; ///< two-dimensional case: a half-edge leaving Order[k]
+  /// Per triangle, together so that a ring walk touches one cache line per triangle: its face
+  /// (a representative triangle; -2 - t for a ghost), and for a representative the face's centre
+  /// and whether it lies inside the window.
+  struct TriangleData
+  {
+    Point2 Centre;
+    std::int32_t Face = -1;
+    std::uint8_t Inside = 0;
+  };
+  std::vector<TriangleData> Data;
+  std::vector<double> CentreError; ///< per triangle, while labelling faces
   // Degenerate faces: representative -> index k; polygon k is DegenerateVertices[Starts[k] ..
   // Starts[k+1]), anticlockwise, starting at its smallest id.
   std::vector<std::int32_t> DegenerateIndex;

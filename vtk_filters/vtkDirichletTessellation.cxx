@@ -17,6 +17,7 @@
 #include "TesseraFilterUtilities.h"
 #include "dirichlet_tessellation.h"
 #include "errors.h"
+#include "thiessen_sweep.h"
 #include "tiles.h"
 
 #include <exception>
@@ -45,9 +46,16 @@ TessellationResult RunGreenSibson(tessera::Window window, std::vector<tessera::P
   };
 }
 
-TessellationResult RunBrasselReif(const tessera::Window&, std::vector<tessera::Point2>)
+TessellationResult RunBrasselReif(const tessera::Window& window, std::vector<tessera::Point2> points)
 {
-  throw tessera::InputError("the BrasselReif engine is not built into this version yet");
+  if (!window.IsAxisAlignedRectangle())
+  {
+    throw tessera::InputError("the BrasselReif algorithm needs a rectangular window (WindowBounds "
+                              "only); remove the window constraints or use GreenSibson");
+  }
+  tessera::ThiessenSweepResult sweep = tessera::ComputeThiessenSweep(window, points);
+  return { std::move(sweep.Tiles), std::move(sweep.Contiguities), std::move(sweep.RejectedIds),
+    std::move(sweep.Duplicates) };
 }
 
 /// Output 0: the tiles, their arrays and the input's point data on them.

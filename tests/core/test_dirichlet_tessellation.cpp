@@ -129,7 +129,9 @@ struct Canonical
 };
 
 // idMap maps the tessellation's ids to common ids (identity when empty).
-Canonical MakeCanonical(const Tess& t, const std::vector<std::int32_t>& idMap = {}, bool tiles = true)
+Canonical MakeCanonical(const Tess& t,
+  const std::vector<std::int32_t>& idMap = {},
+  bool tiles = true)
 {
   const auto map = [&](std::int32_t id) { return idMap.empty() ? id : idMap[id]; };
   TessellationDual dual(t);
@@ -285,8 +287,9 @@ TEST(DirichletTessellation, DuplicatesAndOutsidePointsAreReported)
   EXPECT_EQ(t.AcceptedCount(), 40u);
   EXPECT_EQ(t.RejectedIds(), (std::vector<std::int32_t>{ 42, 44 }));
   const auto duplicates = t.Duplicates();
-  const std::vector<std::pair<std::int32_t, std::int32_t>> expected{ { 11, 0 }, { 41, 4 },
-    { 43, 4 } };
+  const std::vector<std::pair<std::int32_t, std::int32_t>> expected{
+    { 11, 0 }, { 41, 4 }, { 43, 4 }
+  };
   EXPECT_EQ(duplicates, expected);
   EXPECT_EQ(t.Status(11), PointStatus::Duplicate);
   EXPECT_EQ(t.DuplicateOf(41), 4);
@@ -341,8 +344,8 @@ TEST(DirichletTessellation, FewAndCollinearPointsGiveValidOutput)
       pairs.insert({ graph.Pairs[2 * k], graph.Pairs[2 * k + 1] });
       EXPECT_EQ(graph.Kinds[k], 0);
     }
-    EXPECT_EQ(pairs, (std::set<std::pair<std::int32_t, std::int32_t>>{
-                       { 1, 3 }, { 0, 3 }, { 0, 5 }, { 2, 5 } }));
+    EXPECT_EQ(pairs,
+      (std::set<std::pair<std::int32_t, std::int32_t>>{ { 1, 3 }, { 0, 3 }, { 0, 5 }, { 2, 5 } }));
     // A point off the line makes it two-dimensional; the structure is then a valid triangulation.
     Tess grown(window, line);
     grown.Insert({ 0.5, 0.9 });
@@ -505,7 +508,8 @@ TEST(DirichletTessellation, TranslationAndScalingKeepTheCombinatorics)
       points.push_back({ 0.25 + 0.125 * i, 0.375 + 0.125 * j });
     }
   }
-  const auto transformed = [](const std::vector<Point2>& original, double scale, double shift) {
+  const auto transformed = [](const std::vector<Point2>& original, double scale, double shift)
+  {
     std::vector<Point2> moved;
     for (const Point2& p : original)
     {
@@ -515,7 +519,8 @@ TEST(DirichletTessellation, TranslationAndScalingKeepTheCombinatorics)
     return MakeCanonical(Tess(Window::Rectangle(lo, hi, lo, hi), moved), {}, false);
   };
   const Canonical reference = transformed(points, 1.0, 0.0);
-  EXPECT_GT(std::count_if(reference.Graph.begin(), reference.Graph.end(),
+  EXPECT_GT(std::count_if(reference.Graph.begin(),
+              reference.Graph.end(),
               [](const auto& pair) { return std::get<2>(pair) == 1; }),
     0);
   EXPECT_TRUE(transformed(points, 1.0, 1073741824.0) == reference);

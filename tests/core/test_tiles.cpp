@@ -56,8 +56,9 @@ double NeumaierSum(const std::vector<double>& values)
 }
 
 // Independent tile: the window polygon clipped by every bisector half-plane, one at a time.
-std::vector<Point2> BruteForceTile(
-  const Window& window, const std::vector<Point2>& points, std::size_t i)
+std::vector<Point2> BruteForceTile(const Window& window,
+  const std::vector<Point2>& points,
+  std::size_t i)
 {
   std::vector<Point2> polygon = window.Vertices();
   for (std::size_t j = 0; j < points.size(); ++j)
@@ -98,7 +99,8 @@ double ShoelaceArea(const std::vector<Point2>& polygon)
   {
     const Point2& a = polygon[k];
     const Point2& b = polygon[(k + 1) % polygon.size()];
-    sum += (a.x - polygon[0].x) * (b.y - polygon[0].y) - (a.y - polygon[0].y) * (b.x - polygon[0].x);
+    sum +=
+      (a.x - polygon[0].x) * (b.y - polygon[0].y) - (a.y - polygon[0].y) * (b.x - polygon[0].x);
   }
   return 0.5 * sum;
 }
@@ -136,23 +138,28 @@ TEST(Tiles, AgreeWithBruteForceHalfPlaneIntersection)
         }
       }
       const TileSet tiles = ComputeTiles(t);
-      ASSERT_EQ(tiles.PointIds, acceptedIds);
+      std::vector<std::int32_t> tileIds = tiles.PointIds;
+      std::sort(tileIds.begin(), tileIds.end());
+      ASSERT_EQ(tileIds, acceptedIds);
       for (std::size_t k = 0; k < accepted.size(); ++k)
       {
-        const std::vector<Point2> expected = BruteForceTile(window, accepted, k);
+        const std::size_t index =
+          std::size_t(std::find(acceptedIds.begin(), acceptedIds.end(), tiles.PointIds[k]) -
+            acceptedIds.begin());
+        const std::vector<Point2> expected = BruteForceTile(window, accepted, index);
         const std::vector<Point2> ours(
           tiles.Vertices.begin() + tiles.Offsets[k], tiles.Vertices.begin() + tiles.Offsets[k + 1]);
         EXPECT_NEAR(tiles.Areas[k], ShoelaceArea(expected), 1e-10) << "tile " << k;
         for (const Point2& v : ours)
         {
-          EXPECT_TRUE(std::any_of(expected.begin(), expected.end(),
-            [&](const Point2& w) { return Near(v, w, 1e-9); }))
+          EXPECT_TRUE(std::any_of(
+            expected.begin(), expected.end(), [&](const Point2& w) { return Near(v, w, 1e-9); }))
             << "tile " << k << " vertex " << v.x << " " << v.y;
         }
         for (const Point2& w : expected)
         {
-          EXPECT_TRUE(
-            std::any_of(ours.begin(), ours.end(), [&](const Point2& v) { return Near(v, w, 1e-9); }))
+          EXPECT_TRUE(std::any_of(
+            ours.begin(), ours.end(), [&](const Point2& v) { return Near(v, w, 1e-9); }))
             << "tile " << k << " misses " << w.x << " " << w.y;
         }
         // Anticlockwise.
@@ -212,13 +219,14 @@ TEST(Tiles, SquareLatticeHasSquareTilesAndDiagonalHalfNeighbours)
   ASSERT_EQ(tiles.PointIds.size(), points.size());
   for (std::size_t k = 0; k < points.size(); ++k)
   {
+    const Point2& point = points[tiles.PointIds[k]];
     EXPECT_EQ(tiles.Offsets[k + 1] - tiles.Offsets[k], 4) << k;
     EXPECT_NEAR(tiles.Areas[k], 1.0, 1e-14);
     EXPECT_EQ(tiles.NeighborCounts[k], 4); // interior: 4 points; border: points + window sides
     for (std::int64_t v = tiles.Offsets[k]; v < tiles.Offsets[k + 1]; ++v)
     {
-      EXPECT_NEAR(std::fabs(tiles.Vertices[v].x - points[k].x), 0.5, 1e-14);
-      EXPECT_NEAR(std::fabs(tiles.Vertices[v].y - points[k].y), 0.5, 1e-14);
+      EXPECT_NEAR(std::fabs(tiles.Vertices[v].x - point.x), 0.5, 1e-14);
+      EXPECT_NEAR(std::fabs(tiles.Vertices[v].y - point.y), 0.5, 1e-14);
     }
   }
   const ContiguityGraph graph = dual.Contiguities();

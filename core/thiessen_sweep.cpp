@@ -1,0 +1,1255 @@
+// Brassel and Reif's Thiessen procedure; see thiessen_sweep.h for the outline.
+//
+// Notation. The centroid being processed is A. A "site" is a centroid (its index in the x-sorted
+// order, >= 0) or one of A's four dummy points (kLeft .. kTop, < 0), i.e. A's reflection in that
+// side. Since the bisector of any centroid and its own reflection is the side itself, a record
+// entry that names a dummy means "the side" for every centroid, and vertices found by one centroid
+// can be entered in the records of others.
+//
+// Orientation. Walking clockwise around A, the polygon side shared with neighbour `in` ends at a
+// vertex, where the side shared with neighbour `out` begins. At a vertex whose circle carries the
+// sites c_0 .. c_{m-1} in anticlockwise order around the circle, site c_i has in = c_{i-1} and
+// out = c_{i+1}:
+//
+//              c_{i+1} (out)
+//             /
+//     c_i ---V          walking clockwise around c_i: in the side with c_{i-1}, out along
+//             \         the side with c_{i+1}; any other c_j on the circle meets c_i only at V
+//              c_{i-1} (in)
+//
+// The search from X = in finds every site on the circle in E1 at once (the potential neighbour
+// and its ties), so a vertex is created once, with all its sites, and each unprocessed centroid
+// among them gets its (in, out) entry.
+
+#include "thiessen_sweep.h"
+
+#include "errors.h"
+#include "predicates.h"
+#include "predicates_inline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace tessera
+{
+namespace
+{
+
+constexpr std::int32_t kLeft = -1;
+constexpr std::int32_t kRight = -2;
+constexpr std::int32_t kBottom = -3;
+constexpr std::int32_t kTop = -4;
+constexpr std::int32_t kNone = std::numeric_limits<std::int32_t>::min();
+constexpr double kUnit = 0x1p-53;
+
+struct Box
+{
+  double XLo, XHi, YLo, YHi;
+};
+
+constexpr Box kEverything = { -std::numeric_limits<double>::infinity(),
+  std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+  std::numeric_limits<double>::infinity() };
+
+// A bounding box of the part, on the clockwise side of the chord from A to b, of the circle
+// through A and the offsets b, c from A (each carrying a relative error below kUnit), widened by
+// a bound on every rounding error made here, so that it contains that part of the exact circle. Returns false when no such bound is reliable (nearly collinear
+// points, extreme magnitudes): then the caller scans without a range.
+bool CircleBox(double ax, double ay, double bx, double by, double cx, double cy, Box& box)
+{
+  const double bmax = std::max(std::fabs(bx), std::fabs(by));
+  const double cmax = std::max(std::fabs(cx), std::fabs(cy));
+  if (!(bmax > 1e-70 && bmax < 1e70 && cmax > 1e-70 && cmax < 1e70))
+  {
+    return false;
+  }
+  const double b2 = bx * bx + by * by;
+  const double c2 = cx * cx + cy * cy;
+  const double p1 = bx * cy, p2 = by * cx;
+  const double d = 2.0 * (p1 - p2);
+  const double absD = std::fabs(d);
+  // Error bounds of d and the numerators, inputs' own errors included (generous constants).
+  const double errD = 8.0 * kUnit * 2.0 * (std::fabs(p1) + std::fabs(p2)) + 1e-300;
+  if (!(absD > 4.0 * errD))
+  {
+    return false;
+  }
+  const double nx = cy * b2 - by * c2;
+  const double ny = bx * c2 - cx * b2;
+  const double errNx = 12.0 * kUnit * (std::fabs(cy) * b2 + std::fabs(by) * c2) + 1e-300;
+  const double errNy = 12.0 * kUnit * (std::fabs(bx) * c2 + std::fabs(cx) * b2) + 1e-300;
+  // |n/d - n'/d'| <= (err(n) / |d| + |n / d| rD) / (1 - rD) with rD = err(d) / |d| <= 1/4, plus
+  // the roundings of the reciprocal and the product (2 units of |v|).
+  const double inverse = 1.0 / d;
+  const double vx = nx * inverse;
+  const double vy = ny * inverse;
+  const double absInverse = std::fabs(inverse);
+  const double rD = errD * absInverse;
+  const double grow = 1.0 / (1.0 - rD) + 4.0 * kUnit;
+  const double ex = (errNx * absInverse + std::fabs(vx) * rD) * grow + 2.0 * kUnit * std::fabs(vx);
+  const double ey = (errNy * absInverse + std::fabs(vy) * rD) * grow + 2.0 * kUnit * std::fabs(vy);
+  const double r = std::sqrt(vx * vx + vy * vy);
+  // The exact centre is within ex, ey of (vx, vy) and the exact radius within ex + ey (+ the
+  // rounding of r) of r: every extreme point of the exact circle lies within `slop` of the
+  // corresponding point at distance `half` from (vx, vy).
+  const double half = r * (1.0 + 8.0 * kUnit) + 4.0 * (ex + ey);
+  const double slop = 2.0 * (half - r) + 4.0 * (ex + ey);
+  // Only the part of the disk on the clockwise side E1 of A -> b matters (cross(b, q) < 0): its
+  // bounding box is that of the chord's ends (A, b) and of the circle's extreme points lying on
+  // the E1 arc. An extreme point is left out only when it is clearly on the other side.
+  double xlo = std::min(0.0, bx), xhi = std::max(0.0, bx);
+  double ylo = std::min(0.0, by), yhi = std::max(0.0, by);
+  const double bNorm = std::fabs(bx) + std::fabs(by);
+  const double ext[4][2] = { { vx + half, vy }, { vx - half, vy }, { vx, vy + half },
+    { vx, vy - half } };
+  for (const auto& e : ext)
+  {
+    const double left = bx * e[1], right = by * e[0];
+    const double tolerance =
+      bNorm * (slop + 2.0 * kUnit * (std::fabs(e[0]) + std::fabs(e[1]))) +
+      4.0 * kUnit * (std::fabs(left) + std::fabs(right)) + 1e-300;
+    if (left - right > tolerance)
+    {
+      continue; // the whole neighbourhood of this extreme point is on the E2 side
+    }
+    xlo = std::min(xlo, e[0]);
+    xhi = std::max(xhi, e[0]);
+    ylo = std::min(ylo, e[1]);
+    yhi = std::max(yhi, e[1]);
+  }
+  const double slackX = 4.0 * kUnit * (std::fabs(ax) + std::max(std::fabs(xlo), std::fabs(xhi))) +
+    2.0 * kUnit * bNorm;
+  const double slackY = 4.0 * kUnit * (std::fabs(ay) + std::max(std::fabs(ylo), std::fabs(yhi))) +
+    2.0 * kUnit * bNorm;
+  box = { ax + xlo - slackX, ax + xhi + slackX, ay + ylo - slackY, ay + yhi + slackY };
+  return std::isfinite(box.XLo) && std::isfinite(box.XHi) && std::isfinite(box.YLo) &&
+    std::isfinite(box.YHi);
+}
+
+// Neumaier-compensated shoelace area, relative to the first vertex (as tiles.cpp does).
+double PolygonArea(const Point2* v, std::size_t n)
+{
+  double sum = 0.0, compensation = 0.0;
+  for (std::size_t k = 1; k + 1 < n; ++k)
+  {
+    const double ax = v[k].x - v[0].x, ay = v[k].y - v[0].y;
+    const double bx = v[k + 1].x - v[0].x, by = v[k + 1].y - v[0].y;
+    for (const double term : { ax * by, -(ay * bx) })
+    {
+      const double t = sum + term;
+      compensation += std::fabs(sum) >= std::fabs(term) ? (sum - t) + term : (term - t) + sum;
+      sum = t;
+    }
+  }
+  return 0.5 * (sum + compensation);
+}
+
+// Circumcentre from the points in ascending id order, relative to the first (as tiles.cpp does,
+// so that interior vertices get the same bits from both engines).
+Point2 Circumcentre(const Point2& a, const Point2& b, const Point2& c)
+{
+  const double bx = b.x - a.x, by = b.y - a.y;
+  const double cx = c.x - a.x, cy = c.y - a.y;
+  const double b2 = bx * bx + by * by;
+  const double c2 = cx * cx + cy * cy;
+  const double d = 2.0 * (bx * cy - by * cx);
+  return { a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d };
+}
+
+class Sweep
+{
+public:
+  Sweep(double xmin, double xmax, double ymin, double ymax, std::vector<double> xs,
+    std::vector<double> ys, std::vector<std::int32_t> ids);
+
+  void Run();
+
+  // Results, per x-sorted index.
+  std::vector<Point2> Vertices;
+  // Completed tiles, packed in processing order: each tile's record and its vertices
+  // (anticlockwise) and neighbour ids (the neighbour across the side after each vertex, -1 for
+  // the window) are written once, while they are still in cache; the output then gathers them
+  // in id order.
+  struct TileRecord
+  {
+    std::int64_t Start = 0; ///< into PackedVertexIds and PackedNeighbors
+    double Area = 0.0;
+    std::int32_t Size = 0;
+    SweepSearchCounts Counts;
+  };
+  std::vector<TileRecord> Records; // per x-sorted index
+  std::vector<std::int32_t> PackedVertexIds;
+  std::vector<std::int32_t> PackedNeighbors;
+  std::vector<Point2> Polygon; // scratch
+  std::vector<std::pair<std::int32_t, std::int32_t>> Kind1; // x-sorted indices
+  std::size_t DegenerateVertices = 0;
+
+  const std::vector<double>& X() const { return this->Xs; }
+  const std::vector<double>& Y() const { return this->Ys; }
+  const std::vector<std::int32_t>& Ids() const { return this->IdOf; }
+
+private:
+  struct StripPoint
+  {
+    double Y, X;
+    std::int32_t S; ///< x-sorted index
+  };
+  struct Entry
+  {
+    std::int32_t In, Out, Vertex, Next;
+  };
+
+  void BuildIndex();
+  void ProcessCentroid(std::int32_t a);
+  std::int32_t NearestCentroid(std::int32_t a);
+  Entry SearchAndRecord(std::int32_t cur);
+  void SearchNext(std::int32_t cur);
+  void ScanStrip(std::int32_t strip);
+  void Visit(const StripPoint& point);
+  void ConsiderPoint(std::int32_t q, const Point2& pq);
+  void Consider(std::int32_t q);
+  std::int32_t LowerBound(std::int32_t begin, std::int32_t end, double y) const;
+  static int OrientDummyPoint(std::int32_t dummy, const Point2& a, const Point2& q);
+  void UpdateBox();
+  void AddRecord(std::int32_t c, std::int32_t in, std::int32_t out, std::int32_t vertex);
+  Point2 FaceCentre(const std::vector<std::int32_t>& circle) const;
+
+  // Sites relative to A.
+  void ApproxOffset(std::int32_t s, double& ox, double& oy) const;
+  Offset2 ExactOffset(std::int32_t s) const;
+  int Orient(std::int32_t s1, std::int32_t s2) const; // orient2d(A, s1, s2)
+  int InCircle(std::int32_t q) const;                 // q inside the circle (A, Cur, P)?
+
+  double XMin, XMax, YMin, YMax;
+  std::vector<double> Xs, Ys;
+  std::vector<std::int32_t> IdOf;
+  std::int32_t M;
+
+  // Bucket index: strips of StripSize consecutive x-sorted centroids, each sorted by y.
+  std::int32_t StripSize = 1;
+  std::int32_t StripCount = 0;
+  std::vector<double> StripXLo, StripXHi;
+  std::vector<StripPoint> Strip; // strip by strip, each sorted by y
+  std::vector<std::int32_t> PositionInStrip; // per x-sorted index: its place in its strip
+  // Per x-sorted index: where its ordinate falls in the strips on its left and right (the first
+  // position whose ordinate is not smaller), so that most scans need no binary search.
+  std::vector<std::int32_t> PositionLeft, PositionRight;
+  // Per polygon: where A's ordinate falls in the strips scanned so far (saves binary searches).
+  std::vector<std::pair<std::int32_t, std::int32_t>> StripStarts;
+  std::int32_t StripStart(std::int32_t strip);
+
+  // Neighbour records.
+  std::vector<Entry> Pool;
+  std::int32_t FreeEntry = -1;
+  std::vector<std::int32_t> Head;
+  std::vector<std::uint8_t> Processed;
+
+  // The current polygon and search.
+  std::int32_t A = 0;
+  Point2 PA;
+  std::int32_t Cur = 0;
+  std::int32_t P = kNone;
+  Point2 PCur, PP; // coordinates of Cur and P when they are centroids
+  std::vector<std::int32_t> Ties;
+  Box Range = kEverything;
+  SweepSearchCounts* Count = nullptr;
+  std::vector<Entry> Known, Cycle;
+  std::vector<std::int32_t> Members, Circle;
+};
+
+Sweep::Sweep(double xmin, double xmax, double ymin, double ymax, std::vector<double> xs,
+  std::vector<double> ys, std::vector<std::int32_t> ids)
+  : XMin(xmin)
+  , XMax(xmax)
+  , YMin(ymin)
+  , YMax(ymax)
+  , Xs(std::move(xs))
+  , Ys(std::move(ys))
+  , IdOf(std::move(ids))
+  , M(static_cast<std::int32_t>(this->Xs.size()))
+{
+}
+
+void Sweep::ApproxOffset(std::int32_t s, double& ox, double& oy) const
+{
+  // Each component is the rounded exact offset (relative error below kUnit), as CircleBox needs.
+  switch (s)
+  {
+    case kLeft:
+      ox = 2.0 * (this->XMin - this->PA.x);
+      oy = 0.0;
+      return;
+    case kRight:
+      ox = 2.0 * (this->XMax - this->PA.x);
+      oy = 0.0;
+      return;
+    case kBottom:
+      ox = 0.0;
+      oy = 2.0 * (this->YMin - this->PA.y);
+      return;
+    case kTop:
+      ox = 0.0;
+      oy = 2.0 * (this->YMax - this->PA.y);
+      return;
+    default:
+      ox = this->Xs[s] - this->PA.x;
+      oy = this->Ys[s] - this->PA.y;
+  }
+}
+
+Offset2 Sweep::ExactOffset(std::int32_t s) const
+{
+  if (s >= 0)
+  {
+    return exact_offset(Point2{ this->Xs[s], this->Ys[s] }, this->PA);
+  }
+  // Twice the exact offset of A from the side: the reflection, exactly.
+  Offset2 o;
+  if (s == kLeft || s == kRight)
+  {
+    const Offset2 d = exact_offset(
+      Point2{ s == kLeft ? this->XMin : this->XMax, 0.0 }, Point2{ this->PA.x, 0.0 });
+    o.x = 2.0 * d.x;
+    o.xTail = 2.0 * d.xTail;
+  }
+  else
+  {
+    const Offset2 d = exact_offset(
+      Point2{ 0.0, s == kBottom ? this->YMin : this->YMax }, Point2{ 0.0, this->PA.y });
+    o.y = 2.0 * d.y;
+    o.yTail = 2.0 * d.yTail;
+  }
+  return o;
+}
+
+int Sweep::OrientDummyPoint(std::int32_t dummy, const Point2& a, const Point2& q)
+{
+  // orient2d(a, dummy, q): the dummy's offset from a is axis-parallel, so the sign is a product
+  // of exact comparisons.
+  const int dy = (q.y > a.y) - (q.y < a.y);
+  const int dx = (q.x > a.x) - (q.x < a.x);
+  switch (dummy)
+  {
+    case kLeft:
+      return -dy; // offset (-, 0): cross = ox * (qy - ay)
+    case kRight:
+      return dy;
+    case kBottom:
+      return dx; // offset (0, -): cross = -oy * (qx - ax)
+    default:
+      return -dx;
+  }
+}
+
+std::int32_t Sweep::LowerBound(std::int32_t begin, std::int32_t end, double y) const
+{
+  return static_cast<std::int32_t>(std::lower_bound(this->Strip.begin() + begin,
+                                     this->Strip.begin() + end, y,
+                                     [](const StripPoint& p, double v) { return p.Y < v; }) -
+    this->Strip.begin());
+}
+
+int Sweep::Orient(std::int32_t s1, std::int32_t s2) const
+{
+  if (s1 >= 0 && s2 >= 0)
+  {
+    return orient2d_fast(this->PA, Point2{ this->Xs[s1], this->Ys[s1] },
+      Point2{ this->Xs[s2], this->Ys[s2] });
+  }
+  if (s1 < 0 && s2 >= 0)
+  {
+    return OrientDummyPoint(s1, this->PA, Point2{ this->Xs[s2], this->Ys[s2] });
+  }
+  if (s1 >= 0 && s2 < 0)
+  {
+    return -this->Orient(s2, s1);
+  }
+  return cross_sign(this->ExactOffset(s1), this->ExactOffset(s2));
+}
+
+int Sweep::InCircle(std::int32_t q) const
+{
+  // Inside the circle through A, Cur, P (P clockwise of A->Cur): incircle(A, P, Cur, q) > 0.
+  if (q >= 0 && this->P >= 0 && this->Cur >= 0)
+  {
+    return incircle_fast(this->PA, Point2{ this->Xs[this->P], this->Ys[this->P] },
+      Point2{ this->Xs[this->Cur], this->Ys[this->Cur] }, Point2{ this->Xs[q], this->Ys[q] });
+  }
+  // incircle(A, P, Cur, q) = -incircle(P, Cur, q, A) (a cyclic shift of four is odd).
+  return -incircle_offsets(
+    this->ExactOffset(this->P), this->ExactOffset(this->Cur), this->ExactOffset(q));
+}
+
+void Sweep::BuildIndex()
+{
+  // About sqrt(M) strips of sqrt(M) centroids: a circle spanning a few point spacings then meets
+  // a couple of strips and a few points in each.
+  this->StripSize = std::max<std::int32_t>(4, static_cast<std::int32_t>(std::sqrt(double(this->M))));
+  this->StripCount = (this->M + this->StripSize - 1) / this->StripSize;
+  this->StripXLo.resize(this->StripCount);
+  this->StripXHi.resize(this->StripCount);
+  this->Strip.resize(this->M);
+  this->PositionInStrip.resize(this->M);
+  std::vector<std::int32_t> order;
+  for (std::int32_t s = 0; s < this->StripCount; ++s)
+  {
+    const std::int32_t begin = s * this->StripSize;
+    const std::int32_t end = std::min(this->M, begin + this->StripSize);
+    this->StripXLo[s] = this->Xs[begin];
+    this->StripXHi[s] = this->Xs[end - 1];
+    order.resize(end - begin);
+    for (std::int32_t k = begin; k < end; ++k)
+    {
+      order[k - begin] = k;
+    }
+    std::sort(order.begin(), order.end(), [&](std::int32_t p, std::int32_t q) {
+      return this->Ys[p] < this->Ys[q] || (this->Ys[p] == this->Ys[q] && p < q);
+    });
+    for (std::int32_t k = begin; k < end; ++k)
+    {
+      const std::int32_t c = order[k - begin];
+      this->PositionInStrip[c] = k;
+      this->Strip[k] = { this->Ys[c], this->Xs[c], c };
+    }
+  }
+  // Merge each pair of adjacent strips once (both sorted by y) to place every point in its
+  // neighbours.
+  this->PositionLeft.assign(this->M, 0);
+  this->PositionRight.assign(this->M, 0);
+  for (std::int32_t s = 0; s + 1 < this->StripCount; ++s)
+  {
+    const std::int32_t aBegin = s * this->StripSize, aEnd = aBegin + this->StripSize;
+    const std::int32_t bBegin = aEnd, bEnd = std::min(this->M, bBegin + this->StripSize);
+    std::int32_t j = bBegin;
+    for (std::int32_t i = aBegin; i < aEnd; ++i)
+    {
+      while (j < bEnd && this->Strip[j].Y < this->Strip[i].Y)
+      {
+        ++j;
+      }
+      this->PositionRight[this->Strip[i].S] = j;
+    }
+    j = aBegin;
+    for (std::int32_t i = bBegin; i < bEnd; ++i)
+    {
+      while (j < aEnd && this->Strip[j].Y < this->Strip[i].Y)
+      {
+        ++j;
+      }
+      this->PositionLeft[this->Strip[i].S] = j;
+    }
+  }
+}
+
+void Sweep::AddRecord(std::int32_t c, std::int32_t in, std::int32_t out, std::int32_t vertex)
+{
+  std::int32_t e = this->FreeEntry;
+  if (e >= 0)
+  {
+    this->FreeEntry = this->Pool[e].Next;
+  }
+  else
+  {
+    e = static_cast<std::int32_t>(this->Pool.size());
+    this->Pool.push_back({});
+  }
+  this->Pool[e] = { in, out, vertex, this->Head[c] };
+  this->Head[c] = e;
+}
+
+void Sweep::Run()
+{
+  this->BuildIndex();
+  this->Head.assign(this->M, -1);
+  this->Processed.assign(this->M, 0);
+  this->Records.assign(this->M, TileRecord{});
+  this->PackedVertexIds.reserve(std::size_t(this->M) * 6 + 8);
+  this->PackedNeighbors.reserve(std::size_t(this->M) * 6 + 8);
+  this->Vertices.reserve(std::size_t(this->M) * 2 + 8);
+  if (this->M == 0)
+  {
+    return;
+  }
+
+  // The centroid nearest the lower-left corner V0 goes first; V0 is one of its vertices, between
+  // its sides on the bottom (in) and on the left (out), unless another centroid is as near.
+  const Point2 v0{ this->XMin, this->YMin };
+  std::int32_t first = 0;
+  bool unique = true;
+  for (std::int32_t s = 1; s < this->M; ++s)
+  {
+    const int c = compare_distance_fast(v0, Point2{ this->Xs[s], this->Ys[s] },
+      Point2{ this->Xs[first], this->Ys[first] });
+    if (c < 0)
+    {
+      first = s;
+      unique = true;
+    }
+    else if (c == 0)
+    {
+      unique = false;
+    }
+  }
+  if (unique)
+  {
+    this->Vertices.push_back(v0);
+    this->AddRecord(first, kBottom, kLeft, 0);
+  }
+  this->ProcessCentroid(first);
+  for (std::int32_t s = 0; s < this->M; ++s)
+  {
+    if (s != first)
+    {
+      this->ProcessCentroid(s);
+    }
+  }
+}
+
+std::int32_t Sweep::NearestCentroid(std::int32_t a)
+{
+  // Any nearest centroid N shares a side of positive length with A: the midpoint of AN is nearer
+  // to A and N than to any other centroid, and inside the (convex) window.
+  std::int32_t best = kNone;
+  double reach = std::numeric_limits<double>::infinity();
+  const Point2 pa{ this->Xs[a], this->Ys[a] };
+  auto visit = [&](std::int32_t q) {
+    if (q == a)
+    {
+      return;
+    }
+    const Point2 pq{ this->Xs[q], this->Ys[q] };
+    if (best == kNone ||
+      compare_distance_fast(pa, pq, Point2{ this->Xs[best], this->Ys[best] }) < 0)
+    {
+      best = q;
+      const double dx = pq.x - pa.x, dy = pq.y - pa.y;
+      reach = std::sqrt(dx * dx + dy * dy) * (1.0 + 1e-9) + 1e-300;
+    }
+  };
+  const std::int32_t s0 = a / this->StripSize;
+  auto scan = [&](std::int32_t s) {
+    const std::int32_t begin = s * this->StripSize;
+    const std::int32_t end = std::min(this->M, begin + this->StripSize);
+    std::int32_t up = this->LowerBound(begin, end, pa.y);
+    std::int32_t down = up - 1;
+    while (up < end || down >= begin)
+    {
+      if (up < end)
+      {
+        if (this->Strip[up].Y - pa.y <= reach)
+        {
+          if (std::fabs(this->Strip[up].X - pa.x) <= reach)
+          {
+            visit(this->Strip[up].S);
+          }
+          ++up;
+        }
+        else
+        {
+          up = end;
+        }
+      }
+      if (down >= begin)
+      {
+        if (pa.y - this->Strip[down].Y <= reach)
+        {
+          if (std::fabs(this->Strip[down].X - pa.x) <= reach)
+          {
+            visit(this->Strip[down].S);
+          }
+          --down;
+        }
+        else
+        {
+          down = begin - 1;
+        }
+      }
+    }
+  };
+  scan(s0);
+  std::int32_t lo = s0 - 1, hi = s0 + 1;
+  bool goLeft = true, goRight = true;
+  while (goLeft || goRight)
+  {
+    if (goRight)
+    {
+      if (hi < this->StripCount && this->StripXLo[hi] - pa.x <= reach)
+      {
+        scan(hi++);
+      }
+      else
+      {
+        goRight = false;
+      }
+    }
+    if (goLeft)
+    {
+      if (lo >= 0 && pa.x - this->StripXHi[lo] <= reach)
+      {
+        scan(lo--);
+      }
+      else
+      {
+        goLeft = false;
+      }
+    }
+  }
+  return best;
+}
+
+void Sweep::UpdateBox()
+{
+  // The circle through A, Cur and any point of E1 contains, on the E1 side, the circle of the
+  // final answer: so every such box is a valid range, and so is their intersection.
+  double bx, by, cx, cy;
+  this->ApproxOffset(this->Cur, bx, by);
+  this->ApproxOffset(this->P, cx, cy);
+  Box box;
+  if (CircleBox(this->PA.x, this->PA.y, bx, by, cx, cy, box))
+  {
+    this->Range.XLo = std::max(this->Range.XLo, box.XLo);
+    this->Range.XHi = std::min(this->Range.XHi, box.XHi);
+    this->Range.YLo = std::max(this->Range.YLo, box.YLo);
+    this->Range.YHi = std::min(this->Range.YHi, box.YHi);
+  }
+}
+
+void Sweep::Consider(std::int32_t q)
+{
+  if (this->P == kNone)
+  {
+    this->P = q;
+    this->UpdateBox();
+    return;
+  }
+  const int inside = this->InCircle(q);
+  if (inside > 0)
+  {
+    ++this->Count->InCircle;
+    this->P = q;
+    this->Ties.clear();
+    this->UpdateBox();
+  }
+  else if (inside == 0)
+  {
+    // Fig. 5: on the circle. Keep the less clockwise of the two as the potential neighbour.
+    ++this->Count->InCircle;
+    if (this->Orient(this->P, q) > 0)
+    {
+      this->Ties.push_back(this->P);
+      this->P = q;
+    }
+    else
+    {
+      this->Ties.push_back(q);
+    }
+  }
+}
+
+void Sweep::ConsiderPoint(std::int32_t q, const Point2& pq)
+{
+  if (this->P == kNone)
+  {
+    this->P = q;
+    this->PP = pq;
+    this->UpdateBox();
+    return;
+  }
+  const int inside = this->Cur >= 0 ? incircle_fast(this->PA, this->PP, this->PCur, pq)
+                                    : this->InCircle(q);
+  if (inside > 0)
+  {
+    ++this->Count->InCircle;
+    this->P = q;
+    this->PP = pq;
+    this->Ties.clear();
+    this->UpdateBox();
+  }
+  else if (inside == 0)
+  {
+    // Fig. 5: on the circle. Keep the less clockwise of the two as the potential neighbour.
+    ++this->Count->InCircle;
+    if (orient2d_fast(this->PA, this->PP, pq) > 0)
+    {
+      this->Ties.push_back(this->P);
+      this->P = q;
+      this->PP = pq;
+    }
+    else
+    {
+      this->Ties.push_back(q);
+    }
+  }
+}
+
+inline void Sweep::Visit(const StripPoint& point)
+{
+  const std::int32_t q = point.S;
+  if (q == this->A || q == this->Cur)
+  {
+    return;
+  }
+  ++this->Count->Consulted;
+  // Abscissa range of the circle, then half-plane E1 (strictly clockwise of A -> Cur).
+  if (point.X < this->Range.XLo || point.X > this->Range.XHi)
+  {
+    return;
+  }
+  const Point2 pq{ point.X, point.Y };
+  const int side = this->Cur >= 0 ? orient2d_fast(this->PA, this->PCur, pq)
+                                  : OrientDummyPoint(this->Cur, this->PA, pq);
+  if (side >= 0)
+  {
+    return;
+  }
+  ++this->Count->PassedTests;
+  this->ConsiderPoint(q, pq);
+}
+
+std::int32_t Sweep::StripStart(std::int32_t strip)
+{
+  for (const auto& known : this->StripStarts)
+  {
+    if (known.first == strip)
+    {
+      return known.second;
+    }
+  }
+  const std::int32_t begin = strip * this->StripSize;
+  const std::int32_t end = std::min(this->M, begin + this->StripSize);
+  const std::int32_t position = this->LowerBound(begin, end, this->PA.y);
+  this->StripStarts.emplace_back(strip, position);
+  return position;
+}
+
+void Sweep::ScanStrip(std::int32_t strip)
+{
+  const std::int32_t begin = strip * this->StripSize;
+  const std::int32_t end = std::min(this->M, begin + this->StripSize);
+  std::int32_t up = this->StripStart(strip);
+  std::int32_t down = up - 1;
+  // Outward from A's ordinate, alternately up and down, while inside the (shrinking) range.
+  while (up < end || down >= begin)
+  {
+    if (up < end)
+    {
+      if (this->Strip[up].Y <= this->Range.YHi)
+      {
+        this->Visit(this->Strip[up]);
+        ++up;
+      }
+      else
+      {
+        up = end;
+      }
+    }
+    if (down >= begin)
+    {
+      if (this->Strip[down].Y >= this->Range.YLo)
+      {
+        this->Visit(this->Strip[down]);
+        --down;
+      }
+      else
+      {
+        down = begin - 1;
+      }
+    }
+  }
+}
+
+void Sweep::SearchNext(std::int32_t cur)
+{
+  this->Cur = cur;
+  if (cur >= 0)
+  {
+    this->PCur = Point2{ this->Xs[cur], this->Ys[cur] };
+  }
+  this->P = kNone;
+  this->Ties.clear();
+  this->Range = kEverything;
+  ++this->Count->Searches;
+  // The dummies in E1 (there is always one). The paper starts from one of them as the first
+  // potential neighbour; here their circles first only bound the range (a dummy's circle is
+  // large for a centroid far from the border), the centroids are searched, and the dummies are
+  // tested last, exactly like any point. The result is the same: the least clockwise point of the
+  // smallest circle, whatever the order of the tests.
+  std::int32_t dummies[4];
+  int dummyCount = 0;
+  for (const std::int32_t d : { kLeft, kBottom, kRight, kTop })
+  {
+    if (d == cur)
+    {
+      continue;
+    }
+    ++this->Count->Consulted;
+    if (this->Orient(cur, d) < 0)
+    {
+      ++this->Count->PassedTests;
+      dummies[dummyCount++] = d;
+    }
+  }
+  if (dummyCount == 0)
+  {
+    throw std::logic_error("Brassel-Reif sweep: no dummy point in the clockwise half-plane");
+  }
+  // A's own strip first, without a range until a centroid of E1 is found; only if none is, the
+  // dummies' circles bound the range for the other strips.
+  const std::int32_t s0 = this->A / this->StripSize;
+  this->ScanStrip(s0);
+  if (this->P == kNone)
+  {
+    for (int k = 0; k < dummyCount; ++k)
+    {
+      this->P = dummies[k];
+      this->UpdateBox();
+    }
+    this->P = kNone;
+  }
+  // Then the strips outward, alternately right and left, while they meet the abscissa range.
+  std::int32_t lo = s0 - 1, hi = s0 + 1;
+  bool goLeft = true, goRight = true;
+  while (goLeft || goRight)
+  {
+    if (goRight)
+    {
+      if (hi < this->StripCount && this->StripXLo[hi] <= this->Range.XHi)
+      {
+        this->ScanStrip(hi++);
+      }
+      else
+      {
+        goRight = false;
+      }
+    }
+    if (goLeft)
+    {
+      if (lo >= 0 && this->StripXHi[lo] >= this->Range.XLo)
+      {
+        this->ScanStrip(lo--);
+      }
+      else
+      {
+        goLeft = false;
+      }
+    }
+  }
+  for (int k = 0; k < dummyCount; ++k)
+  {
+    if (this->P != kNone)
+    {
+      // A dummy outside the range is outside the circle: skip the exact test. (Its rounded
+      // position is within an ulp or two of the exact reflection.)
+      double ox, oy;
+      this->ApproxOffset(dummies[k], ox, oy);
+      const double x = this->PA.x + ox, y = this->PA.y + oy;
+      const double margin = 4.0 * kUnit * (std::fabs(x) + std::fabs(y) + std::fabs(ox) + std::fabs(oy));
+      if (x < this->Range.XLo - margin || x > this->Range.XHi + margin ||
+        y < this->Range.YLo - margin || y > this->Range.YHi + margin)
+      {
+        continue;
+      }
+    }
+    this->Consider(dummies[k]);
+  }
+}
+
+Point2 Sweep::FaceCentre(const std::vector<std::int32_t>& circle) const
+{
+  bool vertical = false, horizontal = false;
+  double xSide = 0.0, ySide = 0.0;
+  std::int32_t smallest[3] = { kNone, kNone, kNone }; // centroids with the smallest ids
+  for (const std::int32_t s : circle)
+  {
+    if (s == kLeft || s == kRight)
+    {
+      vertical = true;
+      xSide = s == kLeft ? this->XMin : this->XMax;
+    }
+    else if (s == kBottom || s == kTop)
+    {
+      horizontal = true;
+      ySide = s == kBottom ? this->YMin : this->YMax;
+    }
+    else
+    {
+      std::int32_t c = s;
+      for (std::int32_t& slot : smallest)
+      {
+        if (slot == kNone || this->IdOf[c] < this->IdOf[slot])
+        {
+          std::swap(slot, c);
+          if (c == kNone)
+          {
+            break;
+          }
+        }
+      }
+    }
+  }
+  if (vertical && horizontal)
+  {
+    return { xSide, ySide }; // a window corner
+  }
+  const Point2 p{ this->Xs[smallest[0]], this->Ys[smallest[0]] };
+  if (vertical || horizontal)
+  {
+    // Where the bisector of the two smallest-id centroids crosses the side.
+    const Point2 q{ this->Xs[smallest[1]], this->Ys[smallest[1]] };
+    if (vertical)
+    {
+      const double y = 0.5 * (p.y + q.y) +
+        (q.x - p.x) * ((xSide - p.x) + (xSide - q.x)) / (2.0 * (p.y - q.y));
+      return { xSide, std::min(std::max(y, this->YMin), this->YMax) };
+    }
+    const double x =
+      0.5 * (p.x + q.x) + (q.y - p.y) * ((ySide - p.y) + (ySide - q.y)) / (2.0 * (p.x - q.x));
+    return { std::min(std::max(x, this->XMin), this->XMax), ySide };
+  }
+  return Circumcentre(p, Point2{ this->Xs[smallest[1]], this->Ys[smallest[1]] },
+    Point2{ this->Xs[smallest[2]], this->Ys[smallest[2]] });
+}
+
+Sweep::Entry Sweep::SearchAndRecord(std::int32_t cur)
+{
+  this->SearchNext(cur);
+  // The sites on the circle in E1, clockwise around A from Cur; then the circle anticlockwise:
+  // A, the most clockwise (A's next neighbour), ..., the least clockwise, Cur.
+  this->Members.assign(1, this->P);
+  this->Members.insert(this->Members.end(), this->Ties.begin(), this->Ties.end());
+  if (this->Members.size() > 1)
+  {
+    std::sort(this->Members.begin(), this->Members.end(),
+      [this](std::int32_t s1, std::int32_t s2) { return this->Orient(s1, s2) < 0; });
+  }
+  this->Circle.assign(1, this->A);
+  this->Circle.insert(this->Circle.end(), this->Members.rbegin(), this->Members.rend());
+  this->Circle.push_back(cur);
+
+  const std::int32_t vertex = static_cast<std::int32_t>(this->Vertices.size());
+  this->Vertices.push_back(this->FaceCentre(this->Circle));
+  const std::size_t m = this->Circle.size();
+  bool dummies = false;
+  for (std::size_t i = 1; i < m; ++i)
+  {
+    const std::int32_t c = this->Circle[i];
+    if (c < 0)
+    {
+      dummies = true;
+      continue;
+    }
+    if (this->Processed[c])
+    {
+      // That centroid's own search would have found this vertex and recorded it for A.
+      throw std::logic_error("Brassel-Reif sweep: inconsistent vertex (point " +
+        std::to_string(this->IdOf[c]) + " already completed)");
+    }
+    this->AddRecord(c, this->Circle[i - 1], this->Circle[(i + 1) % m], vertex);
+  }
+  if (m >= 4)
+  {
+    ++this->DegenerateVertices;
+    if (!dummies)
+    {
+      // Sites not adjacent around the circle meet at this vertex only: half-neighbours.
+      for (std::size_t i = 0; i < m; ++i)
+      {
+        for (std::size_t j = i + 2; j < m; ++j)
+        {
+          if (i == 0 && j == m - 1)
+          {
+            continue;
+          }
+          const std::int32_t p = this->Circle[i], q = this->Circle[j];
+          this->Kind1.emplace_back(std::min(p, q), std::max(p, q));
+        }
+      }
+    }
+  }
+  return Entry{ cur, this->Circle[1], vertex, -1 };
+}
+
+void Sweep::ProcessCentroid(std::int32_t a)
+{
+  this->A = a;
+  this->PA = Point2{ this->Xs[a], this->Ys[a] };
+  this->Count = &this->Records[a].Counts;
+  this->Known.clear();
+  for (std::int32_t e = this->Head[a]; e >= 0;)
+  {
+    const std::int32_t next = this->Pool[e].Next;
+    this->Known.push_back(this->Pool[e]);
+    this->Pool[e].Next = this->FreeEntry; // the record is dropped: its entries are recycled
+    this->FreeEntry = e;
+    e = next;
+  }
+  this->Head[a] = -1;
+  {
+    const std::int32_t strip = a / this->StripSize;
+    this->StripStarts.assign(1, { strip, this->PositionInStrip[a] });
+    if (strip > 0)
+    {
+      this->StripStarts.emplace_back(strip - 1, this->PositionLeft[a]);
+    }
+    if (strip + 1 < this->StripCount)
+    {
+      this->StripStarts.emplace_back(strip + 1, this->PositionRight[a]);
+    }
+  }
+
+  this->Cycle.clear();
+  std::int32_t cur;
+  std::int32_t firstVertex = -1;
+  if (!this->Known.empty())
+  {
+    this->Cycle.push_back(this->Known.front());
+    firstVertex = this->Known.front().Vertex;
+    cur = this->Known.front().Out;
+  }
+  else
+  {
+    cur = this->M > 1 ? this->NearestCentroid(a) : kLeft;
+  }
+  const std::size_t limit = 16 + 4 * std::size_t(this->M);
+  while (true)
+  {
+    const Entry* known = nullptr;
+    for (const Entry& e : this->Known)
+    {
+      if (e.In == cur)
+      {
+        known = &e;
+        break;
+      }
+    }
+    if (known != nullptr)
+    {
+      if (known->Vertex == firstVertex)
+      {
+        break;
+      }
+      this->Cycle.push_back(*known);
+      cur = known->Out;
+    }
+    else
+    {
+      const Entry found = this->SearchAndRecord(cur);
+      if (firstVertex < 0)
+      {
+        firstVertex = found.Vertex;
+        this->Known.push_back(found); // so that the walk recognises where it closes
+      }
+      this->Cycle.push_back(found);
+      cur = found.Out;
+    }
+    if (this->Cycle.size() > limit)
+    {
+      throw std::logic_error("Brassel-Reif sweep: the polygon of point " +
+        std::to_string(this->IdOf[a]) + " does not close");
+    }
+  }
+
+  // The walk went clockwise: store anticlockwise. Vertex k is followed (anticlockwise) by the
+  // side shared with the `in` neighbour of its entry.
+  TileRecord& record = this->Records[a];
+  record.Start = static_cast<std::int64_t>(this->PackedVertexIds.size());
+  record.Size = static_cast<std::int32_t>(this->Cycle.size());
+  this->Polygon.clear();
+  for (std::size_t k = this->Cycle.size(); k-- > 0;)
+  {
+    const Entry& e = this->Cycle[k];
+    this->PackedVertexIds.push_back(e.Vertex);
+    this->PackedNeighbors.push_back(e.In >= 0 ? this->IdOf[e.In] : -1);
+    this->Polygon.push_back(this->Vertices[e.Vertex]);
+  }
+  record.Area = PolygonArea(this->Polygon.data(), this->Polygon.size());
+  this->Processed[a] = 1;
+}
+
+} // namespace
+
+ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector<Point2>& points)
+{
+  if (!window.IsAxisAlignedRectangle())
+  {
+    throw InputError("the Brassel-Reif sweep needs an axis-aligned rectangular window; this one "
+                     "has " +
+      std::to_string(window.Vertices().size()) + " sides or slanted ones");
+  }
+  double xmin = std::numeric_limits<double>::infinity(), ymin = xmin;
+  double xmax = -xmin, ymax = -xmin;
+  for (const Point2& v : window.Vertices())
+  {
+    xmin = std::min(xmin, v.x);
+    xmax = std::max(xmax, v.x);
+    ymin = std::min(ymin, v.y);
+    ymax = std::max(ymax, v.y);
+  }
+  if (points.size() >= std::size_t(std::numeric_limits<std::int32_t>::max() / 4))
+  {
+    throw InputError("too many points for the Brassel-Reif sweep: " + std::to_string(points.size()));
+  }
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    const Point2& p = points[i];
+    if (std::isnan(p.x) || std::isnan(p.y))
+    {
+      throw InputError("point " + std::to_string(i) + " has a NaN coordinate");
+    }
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+    {
+      throw InputError("point " + std::to_string(i) + " has an infinite coordinate");
+    }
+  }
+
+  ThiessenSweepResult result;
+  // Inside test exactly as the window's (strict); then sort by (x, y, id).
+  struct Keyed
+  {
+    double X, Y;
+    std::int32_t Id;
+  };
+  std::vector<Keyed> keyed;
+  keyed.reserve(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    const Point2& p = points[i];
+    if (xmin < p.x && p.x < xmax && ymin < p.y && p.y < ymax)
+    {
+      keyed.push_back({ p.x, p.y, static_cast<std::int32_t>(i) });
+    }
+    else
+    {
+      result.RejectedIds.push_back(static_cast<std::int32_t>(i));
+    }
+  }
+  std::sort(keyed.begin(), keyed.end(), [](const Keyed& p, const Keyed& q) {
+    return p.X < q.X || (p.X == q.X && (p.Y < q.Y || (p.Y == q.Y && p.Id < q.Id)));
+  });
+  std::vector<double> xs, ys;
+  std::vector<std::int32_t> ids;
+  xs.reserve(keyed.size());
+  ys.reserve(keyed.size());
+  ids.reserve(keyed.size());
+  for (const Keyed& k : keyed)
+  {
+    if (!ids.empty() && xs.back() == k.X && ys.back() == k.Y)
+    {
+      result.Duplicates.emplace_back(k.Id, ids.back());
+      continue;
+    }
+    xs.push_back(k.X);
+    ys.push_back(k.Y);
+    ids.push_back(k.Id);
+  }
+  keyed = std::vector<Keyed>();
+  std::sort(result.Duplicates.begin(), result.Duplicates.end());
+
+  Sweep sweep(xmin, xmax, ymin, ymax, std::move(xs), std::move(ys), std::move(ids));
+  sweep.Run();
+  result.VertexCount = sweep.Vertices.size();
+  result.DegenerateVertexCount = sweep.DegenerateVertices;
+
+  // Output in ascending id: gather each tile's packed record (prefetched ahead, since the
+  // x-sorted and the id orders are unrelated) and append sequentially.
+  const std::vector<std::int32_t>& idOf = sweep.Ids();
+  const std::size_t accepted = idOf.size();
+  std::vector<std::int32_t> sortedOf(points.size(), -1);
+  for (std::size_t s = 0; s < accepted; ++s)
+  {
+    sortedOf[idOf[s]] = static_cast<std::int32_t>(s);
+  }
+  std::vector<std::pair<std::int32_t, std::int32_t>> half; // (i, j) ids, i < j, sorted
+  half.reserve(sweep.Kind1.size());
+  for (const auto& pair : sweep.Kind1)
+  {
+    const std::int32_t i = idOf[pair.first], j = idOf[pair.second];
+    half.emplace_back(std::min(i, j), std::max(i, j));
+  }
+  std::sort(half.begin(), half.end());
+
+  TileSet& tiles = result.Tiles;
+  ContiguityGraph& graph = result.Contiguities;
+  tiles.PointIds.reserve(accepted);
+  tiles.Offsets.reserve(accepted + 1);
+  tiles.Vertices.reserve(sweep.PackedVertexIds.size());
+  tiles.Areas.reserve(accepted);
+  tiles.NeighborCounts.reserve(accepted);
+  result.Counts.reserve(accepted);
+  graph.Pairs.reserve(sweep.PackedNeighbors.size() + 2 * half.size());
+  graph.Kinds.reserve(sweep.PackedNeighbors.size() / 2 + half.size());
+  tiles.Offsets.push_back(0);
+  std::vector<std::pair<std::int32_t, std::uint8_t>> group;
+  std::size_t nextHalf = 0;
+  std::vector<std::int32_t> acceptedIds;
+  acceptedIds.reserve(accepted);
+  for (std::size_t id = 0; id < points.size(); ++id)
+  {
+    if (sortedOf[id] >= 0)
+    {
+      acceptedIds.push_back(static_cast<std::int32_t>(id));
+    }
+  }
+  // Three stages of prefetching: a tile's record, then its vertex ids and neighbours, then its
+  // vertices' coordinates.
+  constexpr std::size_t kAhead = 4;
+  const std::int32_t* vertexIds = sweep.PackedVertexIds.data();
+  for (std::size_t r = 0; r < accepted; ++r)
+  {
+    if (r + 3 * kAhead < accepted)
+    {
+      __builtin_prefetch(&sweep.Records[sortedOf[acceptedIds[r + 3 * kAhead]]]);
+    }
+    if (r + 2 * kAhead < accepted)
+    {
+      const auto& ahead = sweep.Records[sortedOf[acceptedIds[r + 2 * kAhead]]];
+      __builtin_prefetch(vertexIds + ahead.Start);
+      __builtin_prefetch(sweep.PackedNeighbors.data() + ahead.Start);
+    }
+    if (r + kAhead < accepted)
+    {
+      const auto& ahead = sweep.Records[sortedOf[acceptedIds[r + kAhead]]];
+      for (std::int32_t k = 0; k < ahead.Size; ++k)
+      {
+        __builtin_prefetch(&sweep.Vertices[vertexIds[ahead.Start + k]]);
+      }
+    }
+    const std::int32_t id = acceptedIds[r];
+    const auto& record = sweep.Records[sortedOf[id]];
+    tiles.PointIds.push_back(id);
+    for (std::int32_t k = 0; k < record.Size; ++k)
+    {
+      tiles.Vertices.push_back(sweep.Vertices[vertexIds[record.Start + k]]);
+    }
+    tiles.Offsets.push_back(static_cast<std::int64_t>(tiles.Vertices.size()));
+    tiles.Areas.push_back(record.Area);
+    tiles.NeighborCounts.push_back(record.Size);
+    result.Counts.push_back(record.Counts);
+    group.clear();
+    for (std::int32_t k = 0; k < record.Size; ++k)
+    {
+      const std::int32_t n = sweep.PackedNeighbors[record.Start + k];
+      if (n > id)
+      {
+        group.emplace_back(n, 0);
+      }
+    }
+    while (nextHalf < half.size() && half[nextHalf].first == id)
+    {
+      group.emplace_back(half[nextHalf++].second, 1);
+    }
+    std::sort(group.begin(), group.end());
+    for (const auto& g : group)
+    {
+      graph.Pairs.push_back(id);
+      graph.Pairs.push_back(g.first);
+      graph.Kinds.push_back(g.second);
+    }
+  }
+  return result;
+}
+
+} // namespace tessera

@@ -1,0 +1,74 @@
+#pragma once
+// Brassel and Reif's procedure for Thiessen polygons (Geographical Analysis 11(3), 1979): an
+// engine independent of Green and Sibson's, giving the same results (tiles.h types) for a
+// rectangular window.
+//
+// The paper's procedure, as done here:
+//  - The window is a rectangle (the paper's border). For the centroid being processed, four dummy
+//    points are its reflections in the four sides (Fig. 2), so every bisector with a dummy is a
+//    side and every centroid is "interior". Dummies never enter a predicate as rounded
+//    coordinates: they are exact offsets from their centroid (predicates.h, Offset2).
+//  - Centroids are sorted by x. The one nearest the lower-left corner V0 is processed first, from
+//    V0 with the left dummy as its first known neighbour; the rest follow in x order (ties by y).
+//  - A polygon is completed by repeatedly finding the next clockwise neighbour of its centroid A
+//    after a known neighbour X (Figs. 3, 4): potential neighbour P = a dummy in the half-plane E1
+//    clockwise of AX, then every centroid P' that passes the abscissa-range test against the
+//    circle (V, R) through A, X, P, the half-plane test (P' in E1) and the in-circle test replaces
+//    P, shrinking the circle, until none is left inside. All three tests are exact or
+//    conservative: the range test uses a bounding box of the circle widened by a rigorous bound on
+//    its rounding error; the half-plane and circle tests are the exact predicates.
+//  - Candidates come from a bucket index over the x-sorted centroids: the sorted sequence cut
+//    into strips of consecutive x, each sorted by y. The scan starts at A and moves outward in y
+//    within a strip and outward strip by strip, as the paper's scan moves outward from X along
+//    the sorted sequence, and stops where the shrinking circle's abscissa (and ordinate) range
+//    ends.
+//  - Neighbour records (Fig. 6): every vertex found is stored once and entered in the records of
+//    all its (unprocessed) centroids, so a later polygon uses its known vertices and searches only
+//    the missing ones; a record is dropped when its polygon is completed.
+//  - Degenerate vertices (Fig. 5): points exactly on the circle are ties; the "less clockwise" one
+//    is kept as the potential neighbour and the others are remembered, so a vertex with k >= 4
+//    co-circular centroids is found once, as one vertex, with all its centroids. Its centroids
+//    that are adjacent around the circle share edges; every other pair (the zero-length "neighbour"
+//    the paper records and the pair it drops) is reported as half-neighbours (kind 1), as the
+//    Green-Sibson engine does, when the vertex is inside the window.
+//  - Instrumentation (Fig. 11), per polygon: A = points consulted (given the range and half-plane
+//    tests), B = points passing both, C = points inside (or on) the circle.
+//
+// Points: those not strictly inside the window are rejected, exact duplicates of an earlier
+// point are reported with the id they copy (the smallest id is kept); both are listed, not used.
+
+#include "tiles.h"
+#include "window.h"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace tessera
+{
+
+/// The paper's Fig. 11 counts for one polygon, summed over its neighbour searches.
+struct SweepSearchCounts
+{
+  std::uint32_t Consulted = 0;   ///< A: points subjected to the range and half-plane tests
+  std::uint32_t PassedTests = 0; ///< B: points in the abscissa range and in half-plane E1
+  std::uint32_t InCircle = 0;    ///< C: points inside or on the circle (V, R)
+  std::uint32_t Searches = 0;    ///< next-clockwise-neighbour searches run for the polygon
+};
+
+struct ThiessenSweepResult
+{
+  TileSet Tiles;              ///< same layout as ComputeTiles (one tile per accepted id, ascending)
+  ContiguityGraph Contiguities; ///< same layout as ComputeContiguityGraph
+  std::vector<std::int32_t> RejectedIds;                        ///< ascending
+  std::vector<std::pair<std::int32_t, std::int32_t>> Duplicates; ///< (duplicate, kept), ascending
+  std::vector<SweepSearchCounts> Counts; ///< per tile, in the order of Tiles.PointIds
+  std::size_t VertexCount = 0;           ///< Thiessen vertices stored (each once)
+  std::size_t DegenerateVertexCount = 0; ///< vertices with 4 or more centroids and dummies
+};
+
+/// Runs the procedure on all points (ids are their indices). Throws InputError if the window is
+/// not an axis-aligned rectangle, or naming the first point with a NaN or infinite coordinate.
+ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector<Point2>& points);
+
+} // namespace tessera
