@@ -20,6 +20,7 @@
 #include "thiessen_sweep.h"
 #include "tiles.h"
 
+#include <algorithm>
 #include <exception>
 #include <utility>
 
@@ -46,7 +47,8 @@ TessellationResult RunGreenSibson(tessera::Window window, std::vector<tessera::P
   };
 }
 
-TessellationResult RunBrasselReif(const tessera::Window& window, std::vector<tessera::Point2> points)
+TessellationResult RunBrasselReif(const tessera::Window& window,
+  std::vector<tessera::Point2> points)
 {
   if (!window.IsAxisAlignedRectangle())
   {
@@ -54,46 +56,79 @@ TessellationResult RunBrasselReif(const tessera::Window& window, std::vector<tes
                               "only); remove the window constraints or use GreenSibson");
   }
   tessera::ThiessenSweepResult sweep = tessera::ComputeThiessenSweep(window, points);
-  return { std::move(sweep.Tiles), std::move(sweep.Contiguities), std::move(sweep.RejectedIds),
+  return { std::move(sweep.Tiles),
+    std::move(sweep.Contiguities),
+    std::move(sweep.RejectedIds),
     std::move(sweep.Duplicates) };
 }
 
-/// Output 0: the tiles, their arrays and the input's point data on them.
+/// Positions 0..count-1 ordered by key (keys are distinct point ids below idLimit): a counting
+/// sort, so that both engines' results come out in ascending point id whatever order their cores
+/// list them in.
+std::vector<std::int32_t> OrderByPointId(const std::vector<std::int32_t>& keys, std::size_t idLimit)
+{
+  std::vector<std::int32_t> slot(idLimit, -1);
+  for (std::size_t k = 0; k < keys.size(); ++k)
+  {
+    slot[keys[k]] = static_cast<std::int32_t>(k);
+  }
+  std::vector<std::int32_t> order;
+  order.reserve(keys.size());
+  for (std::int32_t k : slot)
+  {
+    if (k >= 0)
+    {
+      order.push_back(k);
+    }
+  }
+  return order;
+}
+
+/// Output 0: the tiles in ascending point id, their arrays and the input's point data on them.
 void WriteTiles(const tessera::TileSet& tiles, vtkPointSet* input, vtkPolyData* output)
 {
   const vtkIdType tileCount = static_cast<vtkIdType>(tiles.PointIds.size());
   const vtkIdType vertexCount = static_cast<vtkIdType>(tiles.Vertices.size());
+  const std::vector<std::int32_t> order =
+    OrderByPointId(tiles.PointIds, static_cast<std::size_t>(input->GetNumberOfPoints()));
+
   vtkNew<vtkDoubleArray> coordinates;
   coordinates->SetNumberOfComponents(3);
   coordinates->SetNumberOfTuples(vertexCount);
   double* xyz = coordinates->GetPointer(0);
-  for (vtkIdType v = 0; v < vertexCount; ++v)
+  vtkNew<vtkIdTypeArray> offsets;
+  offsets->SetNumberOfValues(tileCount + 1);
+  vtkIdType written = 0;
+  for (vtkIdType k = 0; k < tileCount; ++k)
   {
-    xyz[3 * v] = tiles.Vertices[v].x;
-    xyz[3 * v + 1] = tiles.Vertices[v].y;
-    xyz[3 * v + 2] = 0.0;
+    offsets->SetValue(k, written);
+    const std::int32_t tile = order[k];
+    for (std::int64_t v = tiles.Offsets[tile]; v < tiles.Offsets[tile + 1]; ++v, ++written)
+    {
+      xyz[3 * written] = tiles.Vertices[v].x;
+      xyz[3 * written + 1] = tiles.Vertices[v].y;
+      xyz[3 * written + 2] = 0.0;
+    }
   }
+  offsets->SetValue(tileCount, written);
   vtkNew<vtkPoints> points;
   points->SetData(coordinates);
   output->SetPoints(points);
 
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfValues(vertexCount);
+  vtkIdType* ids = connectivity->GetPointer(0);
   for (vtkIdType v = 0; v < vertexCount; ++v)
   {
-    connectivity->SetValue(v, v);
+    ids[v] = v;
   }
   vtkNew<vtkCellArray> polys;
-  polys->SetData(tessera_vtk::MakeIdArray(tiles.Offsets), connectivity);
+  polys->SetData(offsets, connectivity);
   output->SetPolys(polys);
 
   vtkCellData* cellData = output->GetCellData();
   vtkPointData* inputData = input->GetPointData();
   cellData->CopyAllocate(inputData, tileCount);
-  for (vtkIdType k = 0; k < tileCount; ++k)
-  {
-    cellData->CopyData(inputData, tiles.PointIds[k], k);
-  }
   vtkNew<vtkIdTypeArray> pointIds;
   pointIds->SetName("PointId");
   vtkNew<vtkDoubleArray> areas;
@@ -105,9 +140,11 @@ void WriteTiles(const tessera::TileSet& tiles, vtkPointSet* input, vtkPolyData* 
   neighborCounts->SetNumberOfValues(tileCount);
   for (vtkIdType k = 0; k < tileCount; ++k)
   {
-    pointIds->SetValue(k, tiles.PointIds[k]);
-    areas->SetValue(k, tiles.Areas[k]);
-    neighborCounts->SetValue(k, tiles.NeighborCounts[k]);
+    const std::int32_t tile = order[k];
+    cellData->CopyData(inputData, tiles.PointIds[tile], k);
+    pointIds->SetValue(k, tiles.PointIds[tile]);
+    areas->SetValue(k, tiles.Areas[tile]);
+    neighborCounts->SetValue(k, tiles.NeighborCounts[tile]);
   }
   cellData->AddArray(pointIds);
   cellData->AddArray(areas);
@@ -123,6 +160,20 @@ void WriteGraph(const tessera::ContiguityGraph& graph, vtkPointSet* input, vtkPo
   }
   output->GetPointData()->PassData(input->GetPointData());
   const vtkIdType pairCount = static_cast<vtkIdType>(graph.Kinds.size());
+  // Pairs sorted by (i, j): the cores list them grouped by i in their own tile order.
+  std::vector<std::int32_t> order(static_cast<std::size_t>(pairCount));
+  for (std::size_t k = 0; k < order.size(); ++k)
+  {
+    order[k] = static_cast<std::int32_t>(k);
+  }
+  std::stable_sort(order.begin(),
+    order.end(),
+    [&](std::int32_t a, std::int32_t b)
+    {
+      return graph.Pairs[2 * a] != graph.Pairs[2 * b]
+        ? graph.Pairs[2 * a] < graph.Pairs[2 * b]
+        : graph.Pairs[2 * a + 1] < graph.Pairs[2 * b + 1];
+    });
   vtkNew<vtkIdTypeArray> offsets;
   offsets->SetNumberOfValues(pairCount + 1);
   vtkNew<vtkIdTypeArray> connectivity;
@@ -132,10 +183,11 @@ void WriteGraph(const tessera::ContiguityGraph& graph, vtkPointSet* input, vtkPo
   kinds->SetNumberOfValues(pairCount);
   for (vtkIdType k = 0; k < pairCount; ++k)
   {
+    const std::int32_t pair = order[k];
     offsets->SetValue(k, 2 * k);
-    connectivity->SetValue(2 * k, graph.Pairs[2 * k]);
-    connectivity->SetValue(2 * k + 1, graph.Pairs[2 * k + 1]);
-    kinds->SetValue(k, graph.Kinds[k]);
+    connectivity->SetValue(2 * k, graph.Pairs[2 * pair]);
+    connectivity->SetValue(2 * k + 1, graph.Pairs[2 * pair + 1]);
+    kinds->SetValue(k, graph.Kinds[pair]);
   }
   offsets->SetValue(pairCount, 2 * pairCount);
   vtkNew<vtkCellArray> lines;

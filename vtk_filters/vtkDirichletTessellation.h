@@ -29,10 +29,10 @@
  * - `DuplicatePointIds` and `DuplicateOfPointIds` (vtkIdType, same length): exact copies of an
  *   earlier point, and the accepted point each one copies (the first is kept).
  *
- * Output 1 (vtkPolyData): the contiguity graph. Its points are the input points (same ids, point
- * data passed), with one line per contiguous pair (i < j) and cell data `Kind` (unsigned char):
- * 0 = neighbours sharing an edge of positive length, 1 = half-neighbours (sharing only a
- * degenerate vertex).
+ * Output 1 (vtkPolyData): the contiguity graph, sorted by (i, j). Its points are the input points
+ * (same ids, point data passed), with one line per contiguous pair (i < j) and cell data `Kind`
+ * (unsigned char): 0 = neighbours sharing an edge of positive length, 1 = half-neighbours (sharing
+ * only a degenerate vertex).
  *
  * 0, 1 or 2 points and collinear points give valid output: the tiles are the whole window,
  * strips or half-planes within it. A NaN or infinite coordinate is an error naming the point.

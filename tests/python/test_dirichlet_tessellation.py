@@ -217,6 +217,56 @@ def test_degenerate_inputs_give_valid_output():
         check(t.GetOutput().GetNumberOfCells() == 0, f"{len(coords)} collinear/few points: no face")
 
 
+def graph_pairs(graph):
+    kinds = graph.GetCellData().GetArray("Kind")
+    pairs = {0: set(), 1: set()}
+    for c in range(graph.GetNumberOfCells()):
+        ids = graph.GetCell(c).GetPointIds()
+        pairs[kinds.GetValue(c)].add((ids.GetId(0), ids.GetId(1)))
+    return pairs
+
+
+def test_both_engines_agree():
+    rng = random.Random(4)
+    uniform = [(rng.uniform(0, 1), rng.uniform(0, 1)) for _ in range(2000)]
+    clusters = [(rng.gauss(0.3, 0.05), rng.gauss(0.3, 0.05)) for _ in range(500)] + \
+               [(rng.gauss(0.7, 0.08), rng.gauss(0.6, 0.08)) for _ in range(500)]
+    lattice = [(i / 20, j / 20) for i in range(20) for j in range(20)]
+    for name, coords in (("uniform", uniform), ("clusters", clusters), ("lattice", lattice)):
+        data = make_points(coords)
+        green = tessellate(data, bounds=(-0.5, 1.5, -0.5, 1.5), algorithm="GreenSibson")
+        brassel = tessellate(data, bounds=(-0.5, 1.5, -0.5, 1.5), algorithm="BrasselReif")
+        a, b = graph_pairs(green.GetOutput(1)), graph_pairs(brassel.GetOutput(1))
+        check(a[0] == b[0], f"{name}: Kind 0 pairs differ in {len(a[0] ^ b[0])}")
+        check(a[1] == b[1], f"{name}: Kind 1 pairs differ in {len(a[1] ^ b[1])}")
+        ta, tb = green.GetOutput(0), brassel.GetOutput(0)
+        check(ta.GetNumberOfCells() == tb.GetNumberOfCells(), f"{name}: tile counts")
+        for k in range(ta.GetNumberOfCells()):
+            check(ta.GetCellData().GetArray("PointId").GetValue(k) == tb.GetCellData().GetArray("PointId").GetValue(k),
+                  f"{name}: tile order")
+            check_close(ta.GetCellData().GetArray("Area").GetValue(k), tb.GetCellData().GetArray("Area").GetValue(k),
+                        4.0 * 1e-12, f"{name}: area of tile {k}")
+        if name == "lattice":
+            check(len(a[1]) == 2 * 19 * 19, f"lattice: both diagonals of every square are half-neighbours ({len(a[1])})")
+
+
+def test_brassel_reif_refuses_a_non_rectangular_window():
+    f = vtkDirichletTessellation()
+    messages = []
+
+    @calldata_type(VTK_STRING)
+    def on_error(caller, event, message):
+        messages.append(message)
+
+    f.AddObserver(vtkCommand.ErrorEvent, on_error)
+    f.SetInputData(make_points([(0.2, 0.2), (0.4, 0.5)]))
+    f.SetWindowBounds(0, 1, 0, 1)
+    f.AddWindowConstraint(1, 1, -1.5)  # x + y < 1.5 cuts a corner
+    f.SetAlgorithmToBrasselReif()
+    f.Update()
+    check(len(messages) == 1 and "rectangular" in messages[0], f"clear error: {messages}")
+
+
 def test_nan_point_is_named():
     f = vtkDirichletTessellation()
     messages = []
@@ -238,4 +288,6 @@ if __name__ == "__main__":
          test_square_lattice_has_square_tiles_and_diagonal_half_neighbours,
          test_unused_points_are_reported_with_ids,
          test_degenerate_inputs_give_valid_output,
+         test_both_engines_agree,
+         test_brassel_reif_refuses_a_non_rectangular_window,
          test_nan_point_is_named])
