@@ -18,6 +18,42 @@ def check_close(actual, expected, tolerance, what):
         raise AssertionError(f"{what}: {actual!r} differs from {expected!r} by more than {tolerance}")
 
 
+def messages_of(algorithm, event=None):
+    """Collects the messages a VTK algorithm emits for an event (default: ErrorEvent)."""
+    from vtkmodules.util.misc import calldata_type
+    from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
+
+    messages = []
+
+    @calldata_type(VTK_STRING)
+    def on_message(caller, e, message):
+        messages.append(message)
+
+    algorithm.AddObserver(vtkCommand.ErrorEvent if event is None else event, on_message)
+    return messages
+
+
+def make_points(coords, **arrays):
+    """vtkPolyData of (x, y) points (z = 0, double precision), with one double point-data array
+    per keyword argument (name=list of values)."""
+    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    for x, y in coords:
+        points.InsertNextPoint(x, y, 0.0)
+    data = vtkPolyData()
+    data.SetPoints(points)
+    for name, values in arrays.items():
+        array = vtkDoubleArray()
+        array.SetName(name)
+        for v in values:
+            array.InsertNextValue(v)
+        data.GetPointData().AddArray(array)
+    return data
+
+
 def run(tests):
     """Runs every test function, prints a summary line ctest users can read, exits 1 on failure."""
     failed = 0

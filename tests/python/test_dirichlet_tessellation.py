@@ -6,29 +6,10 @@ import random
 from fractions import Fraction
 
 import numpy as np
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkDoubleArray, vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkDelaunay2D
 
 from tessera import vtkDelaunayTriangulation, vtkDirichletTessellation
-from tessera_testing import check, check_close, run
-
-
-def make_points(coords, values=None):
-    points = vtkPoints()
-    points.SetDataTypeToDouble()
-    for x, y in coords:
-        points.InsertNextPoint(x, y, 0.0)
-    data = vtkPolyData()
-    data.SetPoints(points)
-    if values is not None:
-        array = vtkDoubleArray()
-        array.SetName("precip")
-        for v in values:
-            array.InsertNextValue(v)
-        data.GetPointData().AddArray(array)
-    return data
+from tessera_testing import check, check_close, make_points, messages_of, run
 
 
 def tessellate(data, bounds=None, algorithm="GreenSibson"):
@@ -58,7 +39,7 @@ def test_tiles_are_nearest_point_regions():
     rng = random.Random(1)
     coords = [(rng.uniform(0, 10), rng.uniform(0, 10)) for _ in range(300)]
     values = [rng.uniform(0, 50) for _ in coords]
-    f = tessellate(make_points(coords, values), bounds=(-1, 11, -1, 11))
+    f = tessellate(make_points(coords, precip=values), bounds=(-1, 11, -1, 11))
     tiles = f.GetOutput(0)
     check(tiles.GetNumberOfCells() == 300, "one tile per point")
     pts = np.array(coords)
@@ -252,13 +233,7 @@ def test_both_engines_agree():
 
 def test_brassel_reif_refuses_a_non_rectangular_window():
     f = vtkDirichletTessellation()
-    messages = []
-
-    @calldata_type(VTK_STRING)
-    def on_error(caller, event, message):
-        messages.append(message)
-
-    f.AddObserver(vtkCommand.ErrorEvent, on_error)
+    messages = messages_of(f)
     f.SetInputData(make_points([(0.2, 0.2), (0.4, 0.5)]))
     f.SetWindowBounds(0, 1, 0, 1)
     f.AddWindowConstraint(1, 1, -1.5)  # x + y < 1.5 cuts a corner
@@ -269,13 +244,7 @@ def test_brassel_reif_refuses_a_non_rectangular_window():
 
 def test_nan_point_is_named():
     f = vtkDirichletTessellation()
-    messages = []
-
-    @calldata_type(VTK_STRING)
-    def on_error(caller, event, message):
-        messages.append(message)
-
-    f.AddObserver(vtkCommand.ErrorEvent, on_error)
+    messages = messages_of(f)
     f.SetInputData(make_points([(0, 0), (1, 1), (math.nan, 2)]))
     f.Update()
     check(len(messages) == 1 and "point 2" in messages[0], f"error names point 2: {messages}")

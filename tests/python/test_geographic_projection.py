@@ -5,12 +5,11 @@ import csv
 import math
 import os
 
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkPoints
+from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 
 from tessera import vtkGeographicProjection
-from tessera_testing import EXAMPLE_DATA, check, check_close, run
+from tessera_testing import EXAMPLE_DATA, check, check_close, messages_of, run
 
 
 def colorado_gauges():
@@ -83,13 +82,7 @@ def test_nan_point_is_named_and_output_is_empty():
     data = vtkPolyData()
     data.SetPoints(points)
     f = vtkGeographicProjection()
-    messages = []
-
-    @calldata_type(VTK_STRING)
-    def on_error(caller, event, message):
-        messages.append(message)
-
-    f.AddObserver(vtkCommand.ErrorEvent, on_error)
+    messages = messages_of(f)
     f.SetInputData(data)
     f.Update()
     check(f.GetOutput().GetNumberOfPoints() == 0, "empty output after a NaN point")

@@ -6,22 +6,10 @@ import math
 import random
 
 import numpy as np
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkCommonCore import vtkCommand
 
 from tessera import vtkRidgeGrouping
-from tessera_testing import check, run
-
-
-def make_points(coords):
-    points = vtkPoints()
-    points.SetDataTypeToDouble()
-    for x, y in coords:
-        points.InsertNextPoint(x, y, 0.0)
-    data = vtkPolyData()
-    data.SetPoints(points)
-    return data
+from tessera_testing import check, make_points, messages_of, run
 
 
 def adjusted_rand_index(a, b):
@@ -105,17 +93,6 @@ def test_two_noisy_curves_are_grouped_ordered_and_fitted():
     check(pts.GetFieldData().GetArray("ImageSize").GetValue(0) == 256, "ImageSize recorded")
 
 
-def messages_of(f, event):
-    messages = []
-
-    @calldata_type(VTK_STRING)
-    def on_message(caller, e, message):
-        messages.append(message)
-
-    f.AddObserver(event, on_message)
-    return messages
-
-
 def test_bad_and_degenerate_input():
     f = vtkRidgeGrouping()
     warnings = messages_of(f, vtkCommand.WarningEvent)
@@ -130,7 +107,7 @@ def test_bad_and_degenerate_input():
     check({g.GetValue(i) for i in range(10)} == {0}, "identical points: one group")
     check(same.GetOutputDataObject(2).GetNumberOfCells() == 0, "identical points: no curve")
     big = vtkRidgeGrouping()
-    errors = messages_of(big, vtkCommand.ErrorEvent)
+    errors = messages_of(big)
     big.SetInputData(make_points(two_noisy_curves()[0]))
     big.SetImageSize(100000)
     big.Update()
@@ -138,7 +115,7 @@ def test_bad_and_degenerate_input():
           f"image size refused, naming it and the memory: {errors}")
     check(big.GetOutputDataObject(3).GetNumberOfPoints() == 0, "no image allocated")
     nan = vtkRidgeGrouping()
-    errors = messages_of(nan, vtkCommand.ErrorEvent)
+    errors = messages_of(nan)
     nan.SetInputData(make_points([(0, 0), (1, math.nan), (2, 2)]))
     nan.Update()
     check(len(errors) == 1 and "point 1" in errors[0], f"NaN point named: {errors}")

@@ -8,15 +8,13 @@ import os
 
 import numpy as np
 from matplotlib.path import Path
-from vtkmodules.util.misc import calldata_type
-from vtkmodules.vtkCommonCore import (VTK_STRING, vtkCommand, vtkDoubleArray, vtkPoints,
-                                      vtkStringArray)
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints, vtkStringArray
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData, vtkTable
 from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
 
 from tessera import (vtkDirichletTessellation, vtkGeographicProjection, vtkThiessenArealAverage,
                      vtkWindowClip)
-from tessera_testing import EXAMPLE_DATA, check, check_close, run
+from tessera_testing import EXAMPLE_DATA, check, check_close, messages_of, run
 
 
 def gauges_polydata(coords, ids, values=None):
@@ -63,17 +61,6 @@ def weights_by_gauge(tiles):
     cd = tiles.GetCellData()
     return {cd.GetArray("GaugeId").GetValue(c): cd.GetArray("Weight").GetValue(c)
             for c in range(tiles.GetNumberOfCells())}
-
-
-def errors_of(f):
-    messages = []
-
-    @calldata_type(VTK_STRING)
-    def on_error(caller, event, message):
-        messages.append(message)
-
-    f.AddObserver(vtkCommand.ErrorEvent, on_error)
-    return messages
 
 
 def test_four_symmetric_gauges_share_a_square():
@@ -207,13 +194,13 @@ def test_missing_steps_and_unused_input_are_reported():
 
 def test_bad_gauge_and_self_intersecting_catchment_are_named():
     f = vtkThiessenArealAverage()
-    messages = errors_of(f)
+    messages = messages_of(f)
     f.SetGaugesData(gauges_polydata([(0.2, 0.2), (0.8, 95.0)], ["a", "b"], [1.0, 2.0]))
     f.SetCatchmentData(polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]]))
     f.Update()
     check(len(messages) == 1 and "gauge 1" in messages[0], f"gauge 1 named: {messages}")
     g = vtkThiessenArealAverage()
-    messages = errors_of(g)
+    messages = messages_of(g)
     g.SetGaugesData(gauges_polydata([(0.2, 0.2)], ["a"], [1.0]))
     g.SetCatchmentData(polygon([[(0, 0), (1, 1), (1, 0), (0, 1)]]))
     g.Update()
