@@ -85,8 +85,11 @@ int main()
   std::printf("%-18s %14s %14s %14s\n", "ns per call", "random", "lattice+2^30", "2^30+1e-6*u");
   for (const Case& c : cases)
   {
-    std::printf("%-18s %14.1f %14.1f %14.1f\n", c.name, 1e9 * seconds_per_call(random, c.f),
-      1e9 * seconds_per_call(lattice, c.f), 1e9 * seconds_per_call(offset, c.f));
+    std::printf("%-18s %14.1f %14.1f %14.1f\n",
+      c.name,
+      1e9 * seconds_per_call(random, c.f),
+      1e9 * seconds_per_call(lattice, c.f),
+      1e9 * seconds_per_call(offset, c.f));
   }
   return 0;
 }

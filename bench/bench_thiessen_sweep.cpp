@@ -84,11 +84,22 @@ int main(int argc, char** argv)
   const int repeats = argc > 2 ? std::atoi(argv[2]) : 3;
   const Window window = Window::Rectangle(0.0, 1.0, 0.0, 1.0);
 
-  std::printf("Brassel-Reif sweep (BR) vs Green-Sibson (GS): tiles + contiguity graph, best of %d\n",
+  std::printf(
+    "Brassel-Reif sweep (BR) vs Green-Sibson (GS): tiles + contiguity graph, best of %d\n",
     repeats);
-  std::printf("%-10s %9s | %9s %9s | %9s %9s | %6s | %7s %7s %6s %6s | %s\n", "input", "N",
-    "BR cpu s", "BR wall", "GS cpu s", "GS wall", "BR/GS", "A/poly", "B/poly", "C/poly",
-    "srch", "agree");
+  std::printf("%-10s %9s | %9s %9s | %9s %9s | %6s | %7s %7s %6s %6s | %s\n",
+    "input",
+    "N",
+    "BR cpu s",
+    "BR wall",
+    "GS cpu s",
+    "GS wall",
+    "BR/GS",
+    "A/poly",
+    "B/poly",
+    "C/poly",
+    "srch",
+    "agree");
   for (const bool clustered : { false, true })
   {
     for (std::size_t n = 1000; n <= maxN; n *= 10)
@@ -98,12 +109,14 @@ int main(int argc, char** argv)
       const Timing tb = best_of(repeats, [&] { br = ComputeThiessenSweep(window, points); });
       TileSet gsTiles;
       ContiguityGraph gsGraph;
-      const Timing tg = best_of(repeats, [&] {
-        DirichletTessellation gs(window, points);
-        TessellationDual dual(gs);
-        gsTiles = dual.Tiles();
-        gsGraph = dual.Contiguities();
-      });
+      const Timing tg = best_of(repeats,
+        [&]
+        {
+          DirichletTessellation gs(window, points);
+          TessellationDual dual(gs);
+          gsTiles = dual.Tiles();
+          gsGraph = dual.Contiguities();
+        });
       double a = 0, b = 0, c = 0, s = 0;
       for (const SweepSearchCounts& k : br.Counts)
       {
@@ -114,7 +127,8 @@ int main(int argc, char** argv)
       }
       const double polygons = double(std::max<std::size_t>(1, br.Counts.size()));
       // Agreement: same contiguity pairs (as sets of (i, j, kind)) and areas within 1e-12.
-      auto key = [](const ContiguityGraph& g) {
+      auto key = [](const ContiguityGraph& g)
+      {
         std::vector<std::uint64_t> k(g.Kinds.size());
         for (std::size_t i = 0; i < k.size(); ++i)
         {
@@ -135,8 +149,18 @@ int main(int argc, char** argv)
         agree = agree && std::fabs(gsArea[br.Tiles.PointIds[i]] - br.Tiles.Areas[i]) <= 1e-12;
       }
       std::printf("%-10s %9zu | %9.3f %9.3f | %9.3f %9.3f | %6.2f | %7.2f %7.2f %6.2f %6.2f | %s\n",
-        clustered ? "clustered" : "uniform", n, tb.cpu, tb.wall, tg.cpu, tg.wall, tb.cpu / tg.cpu,
-        a / polygons, b / polygons, c / polygons, s / polygons, agree ? "yes" : "NO");
+        clustered ? "clustered" : "uniform",
+        n,
+        tb.cpu,
+        tb.wall,
+        tg.cpu,
+        tg.wall,
+        tb.cpu / tg.cpu,
+        a / polygons,
+        b / polygons,
+        c / polygons,
+        s / polygons,
+        agree ? "yes" : "NO");
       std::fflush(stdout);
     }
   }

@@ -3,6 +3,7 @@
 #include "dirichlet_tessellation.h"
 #include "errors.h"
 #include "polygon_validation.h"
+#include "spatial_order.h"
 #include "tiles.h"
 #include "window.h"
 
@@ -71,7 +72,10 @@ struct ThiessenArealAverage::State
   ClippedRings Scratch;
   std::vector<Point2> Dense;
 
-  TileSet CurrentTiles;
+  // Per gauge, while it is in the tessellation: the gauges sharing a Delaunay face with it
+  // (tiles.h, FaceMateLists), valid for every gauge in the tessellation once HaveMates is set.
+  std::vector<std::vector<std::int32_t>> Mates;
+  bool HaveMates = false;
 
   double MeasureRings(const ClippedRings& rings, std::size_t firstRing, std::size_t lastRing)
   {
@@ -129,30 +133,176 @@ struct ThiessenArealAverage::State
     this->Tessellation.reset(new DirichletTessellation(*this->TheWindow, std::move(points)));
   }
 
-  /// Removes the gauges that stopped reporting and inserts those that started.
-  void Update(const std::vector<char>& wanted)
+  /// Gauges in Hilbert order over the window. The engine's walks (to the point to remove, to the
+  /// triangle holding the point to insert) start where the previous operation ended, as Green and
+  /// Sibson's walk from the last point does, so a spatially random order would cost O(sqrt n) per
+  /// operation.
+  void SpatialSort(std::vector<std::int32_t>& gauges) const
   {
+    const std::vector<Point2>& corners = this->TheWindow->Vertices();
+    double xmin = corners[0].x, xmax = xmin, ymin = corners[0].y, ymax = ymin;
+    for (const Point2& corner : corners)
+    {
+      xmin = std::min(xmin, corner.x);
+      xmax = std::max(xmax, corner.x);
+      ymin = std::min(ymin, corner.y);
+      ymax = std::max(ymax, corner.y);
+    }
+    const auto cell = [](double v, double lo, double hi)
+    {
+      const double u = (v - lo) / (hi - lo) * 65535.0;
+      return static_cast<std::uint32_t>(std::min(65535.0, std::max(0.0, u)));
+    };
+    std::vector<std::pair<std::uint32_t, std::int32_t>> order;
+    order.reserve(gauges.size());
+    for (const std::int32_t g : gauges)
+    {
+      const Point2& p = this->GaugesXY[g];
+      order.emplace_back(HilbertIndex(cell(p.x, xmin, xmax), cell(p.y, ymin, ymax), 16), g);
+    }
+    std::sort(order.begin(), order.end());
+    for (std::size_t k = 0; k < order.size(); ++k)
+    {
+      gauges[k] = order[k].second;
+    }
+  }
+
+  /// Removes the gauges that stopped reporting and inserts those that started (listed in removed
+  /// and inserted, in the order done).
+  void Update(const std::vector<char>& wanted,
+    std::vector<std::int32_t>& removed,
+    std::vector<std::int32_t>& inserted)
+  {
+    removed.clear();
+    inserted.clear();
     for (std::size_t g = 0; g < wanted.size(); ++g)
     {
       if (!wanted[g] && this->EngineOfGauge[g] != NotInTessellation)
       {
-        this->Tessellation->Remove(this->EngineOfGauge[g]);
-        this->EngineOfGauge[g] = NotInTessellation;
+        removed.push_back(static_cast<std::int32_t>(g));
       }
-    }
-    for (std::size_t g = 0; g < wanted.size(); ++g)
-    {
-      if (wanted[g] && this->EngineOfGauge[g] == NotInTessellation)
+      else if (wanted[g] && this->EngineOfGauge[g] == NotInTessellation)
       {
-        const std::int32_t id = this->Tessellation->Insert(this->GaugesXY[g]);
-        this->EngineOfGauge[g] = id;
-        if (static_cast<std::size_t>(id) >= this->GaugeOfEngine.size())
-        {
-          this->GaugeOfEngine.resize(id + 1, NotInTessellation);
-        }
-        this->GaugeOfEngine[id] = static_cast<std::int32_t>(g);
+        inserted.push_back(static_cast<std::int32_t>(g));
       }
     }
+    this->SpatialSort(removed);
+    this->SpatialSort(inserted);
+    for (const std::int32_t g : removed)
+    {
+      this->Tessellation->Remove(this->EngineOfGauge[g]);
+      this->EngineOfGauge[g] = NotInTessellation;
+    }
+    for (const std::int32_t g : inserted)
+    {
+      const std::int32_t id = this->Tessellation->Insert(this->GaugesXY[g]);
+      this->EngineOfGauge[g] = id;
+      if (static_cast<std::size_t>(id) >= this->GaugeOfEngine.size())
+      {
+        this->GaugeOfEngine.resize(id + 1, NotInTessellation);
+      }
+      this->GaugeOfEngine[id] = g;
+    }
+  }
+
+  /// Re-clips a gauge's tile if its polygon changed.
+  void Refresh(std::int32_t g, const Point2* tile, std::size_t count)
+  {
+    if (!SameVertices(this->CachedTile[g], tile, count))
+    {
+      this->CachedArea[g] = this->ClippedArea(tile, count, static_cast<std::size_t>(g));
+      this->CachedTile[g].assign(tile, tile + count);
+    }
+  }
+
+  void StoreMates(const FaceMateLists& mates)
+  {
+    for (std::size_t k = 0; k < mates.PointIds.size(); ++k)
+    {
+      std::vector<std::int32_t>& list = this->Mates[this->GaugeOfEngine[mates.PointIds[k]]];
+      list.clear();
+      for (std::int64_t i = mates.Offsets[k]; i < mates.Offsets[k + 1]; ++i)
+      {
+        list.push_back(this->GaugeOfEngine[mates.Ids[i]]);
+      }
+    }
+  }
+
+  /// Every tile, from the whole tessellation (and, when updating, every gauge's face mates).
+  void DeriveAll()
+  {
+    const TileSet tiles = TessellationDual(*this->Tessellation).Tiles();
+    for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
+    {
+      this->Refresh(this->GaugeOfEngine[tiles.PointIds[k]],
+        &tiles.Vertices[tiles.Offsets[k]],
+        static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]));
+    }
+    this->HaveMates = this->Settings.Incremental && this->Tessellation->IsTwoDimensional();
+    if (this->HaveMates)
+    {
+      this->StoreMates(ComputeFaceMatesOf(*this->Tessellation, tiles.PointIds));
+    }
+  }
+
+  /// Only the tiles that can have changed. A tile changes only if one of its Delaunay faces
+  /// changes, and a face changes only if a removed point was on it (before the removals) or an
+  /// inserted point is on it (after the insertions): so the tiles to derive are those of the
+  /// inserted gauges and of the face mates of every removed gauge (as stored from the previous
+  /// step) and of every inserted gauge (now). Removals come before insertions, and the faces a
+  /// later removal (insertion) meets that an earlier one made have their points among the earlier
+  /// one's mates, so these sets cover the whole sequence. Everything else keeps its cached tile,
+  /// area and mates.
+  void DeriveChanged(const std::vector<char>& wanted,
+    const std::vector<std::int32_t>& removed,
+    const std::vector<std::int32_t>& inserted)
+  {
+    std::vector<char> marked(wanted.size(), 0);
+    std::vector<std::int32_t> changed;
+    const auto mark = [&](std::int32_t g)
+    {
+      if (wanted[g] && !marked[g])
+      {
+        marked[g] = 1;
+        changed.push_back(g);
+      }
+    };
+    for (const std::int32_t g : removed)
+    {
+      for (const std::int32_t m : this->Mates[g])
+      {
+        mark(m);
+      }
+      this->Mates[g].clear();
+    }
+    std::vector<std::int32_t> insertedIds;
+    for (const std::int32_t g : inserted)
+    {
+      mark(g);
+      insertedIds.push_back(this->EngineOfGauge[g]);
+    }
+    const FaceMateLists fresh = ComputeFaceMatesOf(*this->Tessellation, insertedIds);
+    for (const std::int32_t id : fresh.Ids)
+    {
+      mark(this->GaugeOfEngine[id]);
+    }
+    // Neighbouring tiles one after the other: their faces share cache lines.
+    this->SpatialSort(changed);
+    std::vector<std::int32_t> ids;
+    ids.reserve(changed.size());
+    for (const std::int32_t g : changed)
+    {
+      ids.push_back(this->EngineOfGauge[g]);
+    }
+    FaceMateLists mates;
+    const TileSet tiles = ComputeTilesOf(*this->Tessellation, ids, &mates);
+    for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
+    {
+      this->Refresh(this->GaugeOfEngine[tiles.PointIds[k]],
+        &tiles.Vertices[tiles.Offsets[k]],
+        static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]));
+    }
+    this->StoreMates(mates);
   }
 };
 
@@ -260,6 +410,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   s.EngineOfGauge.assign(gaugesLonLat.size(), NotInTessellation);
   s.CachedTile.resize(gaugesLonLat.size());
   s.CachedArea.assign(gaugesLonLat.size(), 0.0);
+  s.Mates.resize(gaugesLonLat.size());
 }
 
 ThiessenArealAverage::~ThiessenArealAverage() = default;
@@ -314,9 +465,20 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
       wanted[g] = 1;
     }
   }
+  // The local derivation when updating a two-dimensional tessellation with mates from the
+  // previous step and at most a fifth of the gauges changing; otherwise every tile.
+  bool local = false;
+  std::vector<std::int32_t> removed, inserted;
   if (s.Settings.Incremental)
   {
-    s.Update(wanted);
+    std::size_t changes = 0;
+    for (std::size_t g = 0; g < n; ++g)
+    {
+      changes += (wanted[g] != 0) != (s.EngineOfGauge[g] != NotInTessellation) ? 1 : 0;
+    }
+    local = s.HaveMates && s.Tessellation->IsTwoDimensional() && 5 * changes <= n;
+    s.Update(wanted, removed, inserted);
+    local = local && s.Tessellation->IsTwoDimensional();
   }
   else
   {
@@ -335,66 +497,57 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
   step.StationsUsed = static_cast<int>(std::count(wanted.begin(), wanted.end(), 1));
   if (step.StationsUsed == 0)
   {
-    s.CurrentTiles = TileSet();
+    s.HaveMates = false;
     step.Mean = std::numeric_limits<double>::quiet_NaN();
     return step;
   }
-  s.CurrentTiles = TessellationDual(*s.Tessellation).Tiles();
-  const TileSet& tiles = s.CurrentTiles;
-  double weighted = 0.0, weightSum = 0.0;
-  for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
+  if (local)
   {
-    const std::int32_t g = s.GaugeOfEngine[tiles.PointIds[k]];
-    const Point2* tile = &tiles.Vertices[tiles.Offsets[k]];
-    const std::size_t count = static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]);
-    if (!SameVertices(s.CachedTile[g], tile, count))
+    s.DeriveChanged(wanted, removed, inserted);
+  }
+  else
+  {
+    s.DeriveAll();
+  }
+  // Weights of every reporting gauge from the cached areas (current for all of them), ascending.
+  double weighted = 0.0, weightSum = 0.0;
+  for (std::size_t g = 0; g < n; ++g)
+  {
+    if (!wanted[g])
     {
-      s.CachedArea[g] = s.ClippedArea(tile, count, static_cast<std::size_t>(g));
-      s.CachedTile[g].assign(tile, tile + count);
+      continue;
     }
     const double area = s.CachedArea[g];
     if (area > 0.0)
     {
       const double weight = area / s.CatchmentArea;
-      step.Gauges.push_back(g);
+      step.Gauges.push_back(static_cast<std::int32_t>(g));
       step.Weights.push_back(weight);
       step.AreasM2.push_back(area);
       weighted += weight * values[g];
       weightSum += weight;
     }
   }
-  // Tiles come in ascending engine id; report gauges ascending.
-  std::vector<std::size_t> order(step.Gauges.size());
-  for (std::size_t i = 0; i < order.size(); ++i)
-  {
-    order[i] = i;
-  }
-  std::sort(order.begin(),
-    order.end(),
-    [&](std::size_t a, std::size_t b) { return step.Gauges[a] < step.Gauges[b]; });
-  ArealStep sorted = step;
-  for (std::size_t i = 0; i < order.size(); ++i)
-  {
-    sorted.Gauges[i] = step.Gauges[order[i]];
-    sorted.Weights[i] = step.Weights[order[i]];
-    sorted.AreasM2[i] = step.AreasM2[order[i]];
-  }
-  sorted.StationsWeighted = static_cast<int>(sorted.Gauges.size());
-  sorted.CoveredFraction = weightSum;
-  sorted.Mean = weightSum > 0.0 ? weighted / weightSum : std::numeric_limits<double>::quiet_NaN();
-  return sorted;
+  step.StationsWeighted = static_cast<int>(step.Gauges.size());
+  step.CoveredFraction = weightSum;
+  step.Mean = weightSum > 0.0 ? weighted / weightSum : std::numeric_limits<double>::quiet_NaN();
+  return step;
 }
 
 ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetres) const
 {
   State& s = *this->Impl;
   ClippedTilesLonLat out;
-  const TileSet& tiles = s.CurrentTiles;
-  for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
+  // The gauges in the tessellation, ascending, with their current (cached) tiles.
+  for (std::size_t gauge = 0; gauge < s.EngineOfGauge.size(); ++gauge)
   {
-    const std::int32_t g = s.GaugeOfEngine[tiles.PointIds[k]];
-    const Point2* tile = &tiles.Vertices[tiles.Offsets[k]];
-    const std::size_t count = static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]);
+    if (s.EngineOfGauge[gauge] == NotInTessellation)
+    {
+      continue;
+    }
+    const std::int32_t g = static_cast<std::int32_t>(gauge);
+    const Point2* tile = s.CachedTile[g].data();
+    const std::size_t count = s.CachedTile[g].size();
     ClippedRings rings;
     if (s.Region->ClipInto(tile, count, static_cast<std::size_t>(g), s.Work, &rings) <= 0.0)
     {

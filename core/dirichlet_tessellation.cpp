@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -32,6 +34,181 @@ bool ClearlyInside(const std::vector<HalfPlane>& constraints, const Point2& p)
   }
   return true;
 }
+
+// orient2d and incircle for the hot loops: the floating-point filters of predicates_inline.h
+// (same expressions, same error bounds, same exact fallback), arranged so that the only branch
+// is whether the filter decided, which is almost always true and so predicted. The sign of a
+// decided determinant is computed without a branch: a branch on it would be mispredicted about
+// half the time, and the callers branch on it once more anyway.
+#if defined(__FMA__) || defined(__ARM_FEATURE_FMA) || defined(__FP_FAST_FMA) || defined(FP_FAST_FMA)
+inline int Orient(const Point2& a, const Point2& b, const Point2& c)
+{
+  return orient2d_fast(a, b, c);
+}
+inline int InCircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
+{
+  return incircle_fast(a, b, c, d);
+}
+#else
+// A second, still exact, stage for when the filter cannot decide: points on a common grid.
+// Degenerate inputs are usually lattices or rounded data (the benchmark's 1000 x 1000 lattice, gauges
+// on integer coordinates), and there nearly every undecided determinant is exactly zero. If all
+// coordinates are integer multiples of a power of two u, with quotients below 2^51, then the
+// coordinate differences are exact; if moreover they are below 2^B u in magnitude, every product
+// and sum of the floating-point determinant is an integer multiple of a power of u below 2^53
+// times it, so the determinant is computed without any rounding and its sign is exact. B = 25 for
+// orient2d (2 * 25 + 1 bits) and 12 for incircle (4 * 12 + 4 bits). The range of u keeps its
+// powers normal and their multiples finite. Otherwise the exact expansion arithmetic decides.
+constexpr int NoExponent = -100000;
+
+// floor(log2(v)) for a positive normal v; NoExponent for 0, subnormals, infinity and NaN.
+inline int ExponentOf(double v)
+{
+  std::uint64_t bits;
+  std::memcpy(&bits, &v, sizeof bits);
+  const int biased = int((bits >> 52) & 0x7ff);
+  return biased == 0 || biased == 0x7ff ? NoExponent : biased - 1023;
+}
+
+// 2^k for -1022 <= k <= 1023.
+inline double PowerOfTwo(int k)
+{
+  const std::uint64_t bits = std::uint64_t(k + 1023) << 52;
+  double v;
+  std::memcpy(&v, &bits, sizeof v);
+  return v;
+}
+
+// Whether v is an integer multiple of the power of two u, with |v / u| < 2^51.
+inline bool OnGrid(double v, double u)
+{
+  const double q = v / u; // exact unless it underflows, which the product below detects
+  if (!(std::fabs(q) < 0x1p51) || q * u != v)
+  {
+    return false;
+  }
+  // Adding and subtracting 1.5 * 2^52 rounds q to an integer (|q| < 2^51, round to nearest).
+  const volatile double magic = 0x1.8p52;
+  return (q + magic) - magic == q;
+}
+
+// The grid unit for differences of largest magnitude m (at most 2^bits units), or 0 if none fits.
+inline double GridUnit(double m, int bits, int lowest, int highest)
+{
+  const int e = ExponentOf(m);
+  if (e == NoExponent)
+  {
+    return 0.0;
+  }
+  const int k = e + 1 - bits; // m < 2^(e + 1) = 2^bits * 2^k
+  return k < lowest || k > highest ? 0.0 : PowerOfTwo(k);
+}
+
+// Sign of orient2d when a, b, c lie on a common grid as above; false if they do not.
+bool GridOrient(const Point2& a, const Point2& b, const Point2& c, int& sign)
+{
+  const double acx = a.x - c.x, bcx = b.x - c.x, acy = a.y - c.y, bcy = b.y - c.y;
+  const double m = std::max(std::max(std::fabs(acx), std::fabs(bcx)),
+    std::max(std::fabs(acy), std::fabs(bcy)));
+  const double u = GridUnit(m, 25, -500, 480);
+  if (u == 0.0 || !OnGrid(a.x, u) || !OnGrid(a.y, u) || !OnGrid(b.x, u) || !OnGrid(b.y, u) ||
+    !OnGrid(c.x, u) || !OnGrid(c.y, u))
+  {
+    return false;
+  }
+  const double det = acx * bcy - acy * bcx;
+  sign = int(det > 0.0) - int(det < 0.0);
+  return true;
+}
+
+// Sign of incircle when a, b, c, d lie on a common grid as above; false if they do not.
+bool GridInCircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d, int& sign)
+{
+  const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
+  const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
+  const double m = std::max(std::max(std::max(std::fabs(adx), std::fabs(bdx)), std::fabs(cdx)),
+    std::max(std::max(std::fabs(ady), std::fabs(bdy)), std::fabs(cdy)));
+  const double u = GridUnit(m, 12, -250, 240);
+  if (u == 0.0 || !OnGrid(a.x, u) || !OnGrid(a.y, u) || !OnGrid(b.x, u) || !OnGrid(b.y, u) ||
+    !OnGrid(c.x, u) || !OnGrid(c.y, u) || !OnGrid(d.x, u) || !OnGrid(d.y, u))
+  {
+    return false;
+  }
+  const double alift = adx * adx + ady * ady;
+  const double blift = bdx * bdx + bdy * bdy;
+  const double clift = cdx * cdx + cdy * cdy;
+  const double det = alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) +
+    clift * (adx * bdy - bdx * ady);
+  sign = int(det > 0.0) - int(det < 0.0);
+  return true;
+}
+
+// The stages after the filter, out of line so that the hot loops stay small.
+__attribute__((noinline)) int OrientUndecided(const Point2& a, const Point2& b, const Point2& c)
+{
+  int sign;
+  return GridOrient(a, b, c, sign) ? sign : detail::orient2d_exact(a, b, c);
+}
+
+__attribute__((noinline)) int InCircleUndecided(const Point2& a,
+  const Point2& b,
+  const Point2& c,
+  const Point2& d)
+{
+  int sign;
+  return GridInCircle(a, b, c, d, sign) ? sign : detail::incircle_exact(a, b, c, d);
+}
+
+inline int Orient(const Point2& a, const Point2& b, const Point2& c)
+{
+  const double detleft = (a.x - c.x) * (b.y - c.y);
+  const double detright = (a.y - c.y) * (b.x - c.x);
+  const double det = detleft - detright;
+  const double errbound =
+    detail::kOrientBound * (std::fabs(detleft) + std::fabs(detright)) + detail::kUnderflowTerm;
+  // NaN or infinity (overflow) anywhere makes the comparison false: the exact path decides.
+  if (__builtin_expect(std::fabs(det) > errbound, 1))
+  {
+    return int(det > 0.0) - int(det < 0.0);
+  }
+  return OrientUndecided(a, b, c);
+}
+
+inline int InCircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
+{
+  const double adx = a.x - d.x;
+  const double bdx = b.x - d.x;
+  const double cdx = c.x - d.x;
+  const double ady = a.y - d.y;
+  const double bdy = b.y - d.y;
+  const double cdy = c.y - d.y;
+
+  const double bdxcdy = bdx * cdy;
+  const double cdxbdy = cdx * bdy;
+  const double alift = adx * adx + ady * ady;
+
+  const double cdxady = cdx * ady;
+  const double adxcdy = adx * cdy;
+  const double blift = bdx * bdx + bdy * bdy;
+
+  const double adxbdy = adx * bdy;
+  const double bdxady = bdx * ady;
+  const double clift = cdx * cdx + cdy * cdy;
+
+  const double det =
+    alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
+  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
+    (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
+    (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
+  const double errbound = detail::kIncircleBound * permanent +
+    detail::kUnderflowTerm * ((alift + blift + clift) + 1.0);
+  if (__builtin_expect(std::fabs(det) > errbound, 1))
+  {
+    return int(det > 0.0) - int(det < 0.0);
+  }
+  return InCircleUndecided(a, b, c, d);
+}
+#endif
 
 bool LexicographicLess(const Point2& a, const Point2& b)
 {
@@ -266,59 +443,98 @@ bool DirichletTessellation::IsGhostTriangle(std::int32_t t) const
 DirichletTessellation::Location DirichletTessellation::Locate(const Point2& p,
   std::int32_t& edge) const
 {
-  const std::vector<Point2>& pts = this->Coordinates;
-  const std::vector<std::int32_t>& org = this->Origins;
+  const Point2* const pts = this->Coordinates.data();
+  const std::int32_t* const org = this->Origins.data();
+  const std::int32_t* const twin = this->Twins.data();
   std::int32_t t = this->LastTriangle;
-  if (this->IsGhostTriangle(t))
+  if (org[3 * t] == Ghost || org[3 * t + 1] == Ghost || org[3 * t + 2] == Ghost)
   {
     for (std::int32_t k = 0; k < 3; ++k)
     {
       const std::int32_t e = 3 * t + k;
       if (org[e] != Ghost && org[Next(e)] != Ghost)
       {
-        t = this->Twins[e] / 3;
+        t = twin[e] / 3;
         break;
       }
     }
   }
-  std::int32_t entered = -1;
-  int sides[3];
-  for (;;)
+  // The edge of t the walk came through (p is strictly beyond it, seen from the triangle left),
+  // as 0, 1, 2, or 3 at the start. The other two edges are tested in turn starting after it.
+  static constexpr std::int32_t NextIndex[4] = { 1, 2, 0, 0 };
+  int sides[3] = { 1, 1, 1 };
+  std::int32_t crossed = -1;
   {
-    bool moved = false;
-    for (std::int32_t k = 0; k < 3; ++k)
+    // First triangle: all three edges.
+    const std::int32_t base = 3 * t;
+    const Point2& a = pts[org[base]];
+    const Point2& b = pts[org[base + 1]];
+    const Point2& c = pts[org[base + 2]];
+    sides[0] = Orient(a, b, p);
+    if (sides[0] < 0)
     {
-      const std::int32_t e = 3 * t + k;
-      if (e == entered)
+      crossed = base;
+    }
+    else
+    {
+      sides[1] = Orient(b, c, p);
+      if (sides[1] < 0)
       {
-        sides[k] = 1; // p was strictly on this side when we crossed it
-        continue;
+        crossed = base + 1;
       }
-      sides[k] = orient2d_fast(pts[org[e]], pts[org[Next(e)]], p);
-      if (sides[k] < 0)
+      else
       {
-        const std::int32_t f = this->Twins[e];
-        if (org[Prev(f)] == Ghost)
+        sides[2] = Orient(c, a, p);
+        if (sides[2] < 0)
         {
-          edge = f;
-          return Location::InGhost;
+          crossed = base + 2;
         }
-        t = f / 3;
-        entered = f;
-        moved = true;
-        break;
       }
     }
-    if (!moved)
+  }
+  // Then each triangle is entered through one edge and has two left to test. Both are evaluated
+  // and the edge to cross is selected without a branch on the (unpredictable) side signs; only
+  // the end of the walk is a branch.
+  while (crossed >= 0)
+  {
+    const std::int32_t f = twin[crossed];
+    const std::int32_t tf = f / 3;
+    const std::int32_t base = 3 * tf;
+    const std::int32_t entered = f - base;
+    const std::int32_t k1 = NextIndex[entered], k2 = NextIndex[k1];
+    const std::int32_t apex = org[base + k2];
+    if (apex == Ghost)
     {
+      edge = f;
+      return Location::InGhost;
+    }
+    t = tf;
+    const Point2& a = pts[org[base + entered]];
+    const Point2& b = pts[org[base + k1]];
+    const Point2& c = pts[apex];
+    const int s1 = Orient(b, c, p);
+    const int s2 = Orient(c, a, p);
+    const bool cross1 = s1 < 0;
+    crossed = cross1 ? base + k1 : base + k2;
+    if (!cross1 && s2 >= 0)
+    {
+      sides[entered] = 1;
+      sides[k1] = s1;
+      sides[k2] = s2;
       break;
     }
   }
+  const std::int32_t base = 3 * t;
+  if (sides[0] != 0 && sides[1] != 0 && sides[2] != 0)
+  {
+    edge = base;
+    return Location::Inside;
+  }
   for (std::int32_t k = 0; k < 3; ++k)
   {
-    if (pts[org[3 * t + k]] == p)
+    if (pts[org[base + k]] == p)
     {
-      edge = 3 * t + k;
+      edge = base + k;
       return Location::OnVertex;
     }
   }
@@ -326,11 +542,11 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Point2& p,
   {
     if (sides[k] == 0)
     {
-      edge = 3 * t + k;
+      edge = base + k;
       return Location::OnEdge;
     }
   }
-  edge = 3 * t;
+  edge = base;
   return Location::Inside;
 }
 
@@ -343,8 +559,11 @@ std::int32_t DirichletTessellation::NewTriangle()
     return t;
   }
   const std::int32_t t = std::int32_t(this->Origins.size() / 3);
-  this->Origins.resize(this->Origins.size() + 3);
-  this->Twins.resize(this->Twins.size() + 3);
+  for (int k = 0; k < 3; ++k)
+  {
+    this->Origins.push_back(Free);
+    this->Twins.push_back(-1);
+  }
   return t;
 }
 
@@ -386,14 +605,34 @@ void DirichletTessellation::SetTriangle(std::int32_t t,
 //       x-----y                 x-----y
 void DirichletTessellation::SplitTriangle(std::int32_t t, std::int32_t p)
 {
-  const std::int32_t e = 3 * t;
-  const std::int32_t x = this->Origins[e], y = this->Origins[e + 1], z = this->Origins[e + 2];
-  const std::int32_t tx = this->Twins[e], ty = this->Twins[e + 1], tz = this->Twins[e + 2];
   const std::int32_t t1 = this->NewTriangle();
   const std::int32_t t2 = this->NewTriangle();
-  this->SetTriangle(t, x, y, p, tx, 3 * t1 + 2, 3 * t2 + 1);
-  this->SetTriangle(t1, y, z, p, ty, 3 * t2 + 2, 3 * t + 1);
-  this->SetTriangle(t2, z, x, p, tz, 3 * t + 2, 3 * t1 + 1);
+  std::int32_t* const org = this->Origins.data();
+  std::int32_t* const twin = this->Twins.data();
+  const std::int32_t e = 3 * t, e1 = 3 * t1, e2 = 3 * t2;
+  const std::int32_t y = org[e + 1], z = org[e + 2];
+  const std::int32_t ty = twin[e + 1], tz = twin[e + 2];
+  __builtin_prefetch(&org[twin[e]]);
+  __builtin_prefetch(&org[ty]);
+  __builtin_prefetch(&org[tz]);
+  // t keeps x -> y and its twin.
+  org[e + 2] = p;
+  twin[e + 1] = e1 + 2;
+  twin[e + 2] = e2 + 1;
+  org[e1] = y;
+  org[e1 + 1] = z;
+  org[e1 + 2] = p;
+  twin[e1] = ty;
+  twin[e1 + 1] = e2 + 2;
+  twin[e1 + 2] = e + 1;
+  twin[ty] = e1;
+  org[e2] = z;
+  org[e2 + 1] = org[e];
+  org[e2 + 2] = p;
+  twin[e2] = tz;
+  twin[e2 + 1] = e + 2;
+  twin[e2 + 2] = e1 + 1;
+  twin[tz] = e2;
   this->FlipStack.push_back(t);
   this->FlipStack.push_back(t1);
   this->FlipStack.push_back(t2);
@@ -428,63 +667,77 @@ void DirichletTessellation::SplitEdge(std::int32_t e, std::int32_t p)
   this->LastTriangle = ta;
 }
 
-// Whether the new point p (third vertex of triangle e / 3) lies strictly inside the circle of the
-// triangle across edge e. For a ghost triangle the "circle" is the open half-plane beyond its hull
-// edge.
-bool DirichletTessellation::InConflict(std::int32_t e, std::int32_t p) const
-{
-  const std::vector<Point2>& pts = this->Coordinates;
-  const std::int32_t f = this->Twins[e];
-  const std::int32_t x = this->Origins[e], y = this->Origins[e + 1];
-  const std::int32_t q = this->Origins[Prev(f)];
-  if (q == Ghost)
-  {
-    return false; // e is a hull edge seen from inside: p is on the inner side
-  }
-  if (x == Ghost)
-  {
-    return orient2d_fast(pts[q], pts[y], pts[p]) > 0;
-  }
-  if (y == Ghost)
-  {
-    return orient2d_fast(pts[x], pts[q], pts[p]) > 0;
-  }
-  return incircle_fast(pts[y], pts[x], pts[q], pts[p]) > 0;
-}
-
-// Lawson flip of the first edge of triangle t (x->y, opposite the new point p) with the triangle
-// (y, x, q) across it. Both results keep p third, so both are checked again.
+// Pops the flip stack: each triangle t = (x, y, p) has the new point p third; its first edge
+// x -> y is flipped when p lies strictly inside the circle of the triangle (y, x, q) across it
+// (for a ghost triangle the "circle" is the open half-plane beyond its hull edge). Both results
+// keep p third, so both are checked again.
 //
 //          p                       p
 //         / \                     /|\ .
 //        x---y        ->         x | y
 //         \ /                     \|/
 //          q                       q
-void DirichletTessellation::Flip(std::int32_t t)
-{
-  const std::int32_t e = 3 * t;
-  const std::int32_t x = this->Origins[e], y = this->Origins[e + 1], p = this->Origins[e + 2];
-  const std::int32_t f = this->Twins[e];
-  const std::int32_t t2 = f / 3;
-  const std::int32_t q = this->Origins[Prev(f)];
-  const std::int32_t oxq = this->Twins[Next(f)], oqy = this->Twins[Prev(f)];
-  const std::int32_t oyp = this->Twins[e + 1], opx = this->Twins[e + 2];
-  this->SetTriangle(t, x, q, p, oxq, 3 * t2 + 2, opx);
-  this->SetTriangle(t2, q, y, p, oqy, oyp, 3 * t + 1);
-  this->FlipStack.push_back(t);
-  this->FlipStack.push_back(t2);
-}
-
 void DirichletTessellation::RestoreDelaunay()
 {
-  while (!this->FlipStack.empty())
+  std::int32_t* const org = this->Origins.data();
+  std::int32_t* const twin = this->Twins.data();
+  const Point2* const pts = this->Coordinates.data();
+  std::vector<std::int32_t>& stack = this->FlipStack;
+  while (!stack.empty())
   {
-    const std::int32_t t = this->FlipStack.back();
-    this->FlipStack.pop_back();
-    if (this->InConflict(3 * t, this->Origins[3 * t + 2]))
+    const std::int32_t t = stack.back();
+    stack.pop_back();
+    const std::int32_t e = 3 * t;
+    const std::int32_t f = twin[e];
+    const std::int32_t t2 = f / 3;
+    const std::int32_t g = 3 * t2;
+    // f's position in t2 and the half-edges after and before it.
+    const std::int32_t nf = f == g + 2 ? g : f + 1;
+    const std::int32_t pf = f == g ? g + 2 : f - 1;
+    const std::int32_t q = org[pf];
+    if (q == Ghost)
     {
-      this->Flip(t);
+      continue; // e is a hull edge seen from inside: p is on the inner side
     }
+    const std::int32_t x = org[e], y = org[e + 1], p = org[e + 2];
+    bool conflict;
+    if (x == Ghost)
+    {
+      conflict = Orient(pts[q], pts[y], pts[p]) > 0;
+    }
+    else if (y == Ghost)
+    {
+      conflict = Orient(pts[x], pts[q], pts[p]) > 0;
+    }
+    else
+    {
+      conflict = InCircle(pts[y], pts[x], pts[q], pts[p]) > 0;
+    }
+    if (!conflict)
+    {
+      continue;
+    }
+    const std::int32_t oxq = twin[nf], oqy = twin[pf];
+    const std::int32_t oyp = twin[e + 1];
+    // t = (x, q, p); its last edge p -> x keeps its twin.
+    org[e + 1] = q;
+    twin[e] = oxq;
+    twin[oxq] = e;
+    twin[e + 1] = g + 2;
+    // t2 = (q, y, p).
+    org[g] = q;
+    org[g + 1] = y;
+    org[g + 2] = p;
+    twin[g] = oqy;
+    twin[oqy] = g;
+    twin[g + 1] = oyp;
+    twin[oyp] = g + 1;
+    twin[g + 2] = e + 1;
+    // The next checks read the triangles across x -> q and q -> y: start loading them.
+    __builtin_prefetch(&org[oxq]);
+    __builtin_prefetch(&org[oqy]);
+    stack.push_back(t);
+    stack.push_back(t2);
   }
 }
 

@@ -129,8 +129,6 @@ private:
   void SplitTriangle(std::int32_t t, std::int32_t p);
   void SplitEdge(std::int32_t e, std::int32_t p);
   void RestoreDelaunay();
-  bool InConflict(std::int32_t e, std::int32_t p) const;
-  void Flip(std::int32_t t);
   std::int32_t NewTriangle();
   void SetTriangle(std::int32_t t,
     std::int32_t a,

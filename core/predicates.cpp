@@ -1,7 +1,7 @@
 // Exact geometric predicates.
 //
 // Sign conventions (y axis up):
-//   orient2d(a, b, c)         +1 when a, b, c turn anticlockwise (c left of the directed line a->b),
+//   orient2d(a, b, c)         +1 when a, b, c turn anticlockwise (c left of the line a->b),
 //                             -1 clockwise, 0 collinear.
 //   incircle(a, b, c, d)      +1 when d is strictly inside the circle through a, b, c given
 //                             anticlockwise, -1 outside, 0 co-circular. Flips if a, b, c clockwise.
@@ -153,7 +153,8 @@ int expansion_sum(const double* e, int elen, const double* f, int flen, double* 
   }
   int ei = 0;
   int fi = 0;
-  auto next = [&]() -> double {
+  auto next = [&]() -> double
+  {
     if (fi >= flen || (ei < elen && std::fabs(e[ei]) < std::fabs(f[fi])))
     {
       return e[ei++];
@@ -380,8 +381,8 @@ public:
     const int bitShift = shift % 32;
     r.Magnitude.assign(static_cast<std::size_t>(limbShift), 0u);
     // m << bitShift spans at most 53 + 31 bits: three limbs.
-    const std::uint64_t low64 = (m & 0xffffffffu) << bitShift;      // below 2^63
-    const std::uint64_t high64 = (m >> 32) << bitShift;             // below 2^52
+    const std::uint64_t low64 = (m & 0xffffffffu) << bitShift; // below 2^63
+    const std::uint64_t high64 = (m >> 32) << bitShift;        // below 2^52
     const std::uint64_t middle = (low64 >> 32) + (high64 & 0xffffffffu);
     r.Magnitude.push_back(static_cast<std::uint32_t>(low64));
     r.Magnitude.push_back(static_cast<std::uint32_t>(middle));
@@ -408,8 +409,8 @@ public:
       std::uint64_t carry = 0;
       for (std::size_t j = 0; j < b.Magnitude.size(); ++j)
       {
-        const std::uint64_t t = static_cast<std::uint64_t>(a.Magnitude[i]) * b.Magnitude[j] +
-          r.Magnitude[i + j] + carry;
+        const std::uint64_t t =
+          static_cast<std::uint64_t>(a.Magnitude[i]) * b.Magnitude[j] + r.Magnitude[i + j] + carry;
         r.Magnitude[i + j] = static_cast<std::uint32_t>(t);
         carry = t >> 32;
       }
@@ -518,8 +519,15 @@ int orient2d_expansion(const Point2& a, const Point2& b, const Point2& c)
 }
 
 // (u * v - w * z) for expansions of length <= 2: length <= 16.
-int cross_expansion(const double* u, int un, const double* v, int vn, const double* w, int wn,
-  const double* z, int zn, double* h)
+int cross_expansion(const double* u,
+  int un,
+  const double* v,
+  int vn,
+  const double* w,
+  int wn,
+  const double* z,
+  int zn,
+  double* h)
 {
   double p[8], q[8];
   const int pn = expansion_product(u, un, v, vn, p);
@@ -538,9 +546,18 @@ int lift_expansion(const double* u, int un, const double* v, int vn, double* h)
 }
 
 // The incircle determinant from the exact offsets (expansions of length <= 2) of a, b, c from d.
-int incircle_from_offsets(const double* adx, int adxn, const double* ady, int adyn,
-  const double* bdx, int bdxn, const double* bdy, int bdyn, const double* cdx, int cdxn,
-  const double* cdy, int cdyn)
+int incircle_from_offsets(const double* adx,
+  int adxn,
+  const double* ady,
+  int adyn,
+  const double* bdx,
+  int bdxn,
+  const double* bdy,
+  int bdyn,
+  const double* cdx,
+  int cdxn,
+  const double* cdy,
+  int cdyn)
 {
   double minor[16], lift[16];
   double aterm[kMaxProduct], bterm[kMaxProduct], cterm[kMaxProduct];
@@ -569,8 +586,7 @@ int incircle_expansion(const Point2& a, const Point2& b, const Point2& c, const 
   const int bdyn = diff_expansion(b.y, d.y, bdy);
   const int cdxn = diff_expansion(c.x, d.x, cdx);
   const int cdyn = diff_expansion(c.y, d.y, cdy);
-  return incircle_from_offsets(
-    adx, adxn, ady, adyn, bdx, bdxn, bdy, bdyn, cdx, cdxn, cdy, cdyn);
+  return incircle_from_offsets(adx, adxn, ady, adyn, bdx, bdxn, bdy, bdyn, cdx, cdxn, cdy, cdyn);
 }
 
 // An offset component x + tail (|tail| <= half an ulp of x) scaled by 2^k, as an expansion.
@@ -859,8 +875,8 @@ int cross_sign(const Offset2& u, const Offset2& v)
   const double detleft = u.x * v.y;
   const double detright = u.y * v.x;
   const double det = detleft - detright;
-  const double errbound = detail::kOrientBound * (std::fabs(detleft) + std::fabs(detright)) +
-    detail::kUnderflowTerm;
+  const double errbound =
+    detail::kOrientBound * (std::fabs(detleft) + std::fabs(detright)) + detail::kUnderflowTerm;
   if (det > errbound)
   {
     return 1;
@@ -914,8 +930,8 @@ int incircle_offsets(const Offset2& a, const Offset2& b, const Offset2& c)
     const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
       (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
       (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
-    const double errbound = detail::kIncircleBound * permanent +
-      detail::kUnderflowTerm * ((alift + blift + clift) + 1.0);
+    const double errbound =
+      detail::kIncircleBound * permanent + detail::kUnderflowTerm * ((alift + blift + clift) + 1.0);
     if (det > errbound)
     {
       return 1;
@@ -947,8 +963,7 @@ int incircle_offsets(const Offset2& a, const Offset2& b, const Offset2& c)
     const int bdyn = offset_expansion(b.y, b.yTail, k, bdy);
     const int cdxn = offset_expansion(c.x, c.xTail, k, cdx);
     const int cdyn = offset_expansion(c.y, c.yTail, k, cdy);
-    return incircle_from_offsets(
-      adx, adxn, ady, adyn, bdx, bdxn, bdy, bdyn, cdx, cdxn, cdy, cdyn);
+    return incircle_from_offsets(adx, adxn, ady, adyn, bdx, bdxn, bdy, bdyn, cdx, cdxn, cdy, cdyn);
   }
   const int base = range.low;
   const BigInt adx = big_offset(a.x, a.xTail, base), ady = big_offset(a.y, a.yTail, base);
@@ -960,8 +975,15 @@ int incircle_offsets(const Offset2& a, const Offset2& b, const Offset2& c)
   return det.Sign();
 }
 
-int determinant3_sign(
-  double a1, double b1, double c1, double a2, double b2, double c2, double a3, double b3, double c3)
+int determinant3_sign(double a1,
+  double b1,
+  double c1,
+  double a2,
+  double b2,
+  double c2,
+  double a3,
+  double b3,
+  double c3)
 {
   // Filter. Each minor's error is below 2 eps (1 + eps) of its permanent, each term's below 3 eps
   // of its permanent, the first sum adds eps of its operands: below 4 eps of the whole permanent

@@ -53,30 +53,43 @@ void RadixSortByKey(std::vector<KeyedId>& items, int bits)
   }
 }
 
-// The same on keys packed above the ids in one 64-bit word: half the memory traffic.
+// The same on keys packed above the ids in one 64-bit word: half the memory traffic. The digits
+// are as wide as the passes allow, all counted in one read of the items.
 void RadixSortPacked(std::vector<std::uint64_t>& items, int lowBit, int bits)
 {
-  constexpr int DigitBits = 11;
-  constexpr std::size_t Buckets = std::size_t(1) << DigitBits;
-  std::vector<std::uint64_t> buffer(items.size());
-  std::vector<std::size_t> count(Buckets);
-  for (int shift = lowBit; shift < lowBit + bits; shift += DigitBits)
+  constexpr int MaxDigitBits = 11;
+  const int passes = (bits + MaxDigitBits - 1) / MaxDigitBits;
+  if (passes == 0)
   {
-    std::fill(count.begin(), count.end(), 0);
-    for (const std::uint64_t item : items)
+    return;
+  }
+  const int digitBits = (bits + passes - 1) / passes;
+  const std::size_t buckets = std::size_t(1) << digitBits;
+  const std::uint64_t mask = buckets - 1;
+  std::vector<std::size_t> count(buckets * std::size_t(passes), 0);
+  for (const std::uint64_t item : items)
+  {
+    for (int pass = 0; pass < passes; ++pass)
     {
-      ++count[(item >> shift) & (Buckets - 1)];
+      ++count[std::size_t(pass) * buckets + ((item >> (lowBit + pass * digitBits)) & mask)];
     }
+  }
+  std::vector<std::uint64_t> buffer(items.size());
+  for (int pass = 0; pass < passes; ++pass)
+  {
+    std::size_t* const c = count.data() + std::size_t(pass) * buckets;
     std::size_t sum = 0;
-    for (std::size_t& c : count)
+    for (std::size_t k = 0; k < buckets; ++k)
     {
-      const std::size_t here = c;
-      c = sum;
+      const std::size_t here = c[k];
+      c[k] = sum;
       sum += here;
     }
+    const int shift = lowBit + pass * digitBits;
+    std::uint64_t* const out = buffer.data();
     for (const std::uint64_t item : items)
     {
-      buffer[count[(item >> shift) & (Buckets - 1)]++] = item;
+      out[c[(item >> shift) & mask]++] = item;
     }
     items.swap(buffer);
   }
@@ -94,12 +107,12 @@ int RoundCount(std::size_t n)
   return rounds;
 }
 
-// Grid resolution: about 4 cells per point along the curve is enough for
+// Grid resolution: about 4 to 16 cells per point along the curve is enough for
 // locality; more bits only cost time.
 int LevelCount(std::size_t n)
 {
   int levels = 1;
-  while (levels < 16 && (std::size_t(1) << (2 * levels)) < 16 * n)
+  while (levels < 16 && (std::size_t(1) << (2 * levels)) < 4 * n)
   {
     ++levels;
   }
@@ -108,34 +121,92 @@ int LevelCount(std::size_t n)
 
 } // namespace
 
+namespace
+{
+
+// The curve in a sub-square is the parent's curve in a transformed frame; the transformations
+// met are compositions of a transposition (bit 0 of the state) and a reflection of both axes
+// (bit 1), which commute. One step reads one bit of x and of y in the current frame, emits the
+// quadrant digit (0,0) 0, (0,1) 1, (1,1) 2, (1,0) 3 and updates the frame: when ry == 0 the
+// sub-curve is transposed, and also reflected when rx == 1.
+constexpr int TableBits = 4; // levels per table step
+
+struct HilbertTable
+{
+  // Entry [state][x chunk][y chunk]: the 2 * TableBits digits in the low bits, the final state
+  // above them.
+  std::uint16_t Entry[4][1 << TableBits][1 << TableBits];
+
+  HilbertTable()
+    : Entry()
+  {
+    for (std::uint32_t start = 0; start < 4; ++start)
+    {
+      for (std::uint32_t xs = 0; xs < (1U << TableBits); ++xs)
+      {
+        for (std::uint32_t ys = 0; ys < (1U << TableBits); ++ys)
+        {
+          std::uint32_t state = start, digits = 0;
+          for (int level = TableBits - 1; level >= 0; --level)
+          {
+            std::uint32_t rx = (xs >> level) & 1U, ry = (ys >> level) & 1U;
+            if (state & 2U)
+            {
+              rx ^= 1U;
+              ry ^= 1U;
+            }
+            if (state & 1U)
+            {
+              std::swap(rx, ry);
+            }
+            digits = (digits << 2) | ((3U * rx) ^ ry);
+            if (ry == 0)
+            {
+              state ^= 1U | (rx << 1);
+            }
+          }
+          this->Entry[start][xs][ys] = std::uint16_t(digits | (state << (2 * TableBits)));
+        }
+      }
+    }
+  }
+};
+
+const HilbertTable& TheHilbertTable()
+{
+  static const HilbertTable table;
+  return table;
+}
+
+// HilbertIndex, TableBits levels per step (levels <= 16).
+inline std::uint32_t HilbertIndexFast(const HilbertTable& table,
+  std::uint32_t x,
+  std::uint32_t y,
+  int levels)
+{
+  // Zero levels appended below the cell refine every cell into the same sub-cell; the digits they
+  // add are shifted out again at the end, which leaves the index at `levels` levels.
+  const int steps = (levels + TableBits - 1) / TableBits;
+  const int pad = steps * TableBits - levels;
+  x <<= pad;
+  y <<= pad;
+  constexpr std::uint32_t Mask = (1U << TableBits) - 1U;
+  std::uint32_t state = 0, index = 0;
+  for (int step = steps - 1; step >= 0; --step)
+  {
+    const int shift = step * TableBits;
+    const std::uint32_t entry = table.Entry[state][(x >> shift) & Mask][(y >> shift) & Mask];
+    index = (index << (2 * TableBits)) | (entry & ((1U << (2 * TableBits)) - 1U));
+    state = entry >> (2 * TableBits);
+  }
+  return index >> (2 * pad);
+}
+
+} // namespace
+
 std::uint32_t HilbertIndex(std::uint32_t x, std::uint32_t y, int levels)
 {
-  // Walk down the quadrant tree from the top bit. In each quadrant the curve is
-  // the parent's curve, possibly transposed and/or reflected; the rotation
-  // keeps (x, y) in the frame of the sub-curve. Quadrant digits along the
-  // curve: (0,0) 0, (0,1) 1, (1,1) 2, (1,0) 3.
-  std::uint32_t index = 0;
-  for (int level = levels - 1; level >= 0; --level)
-  {
-    const std::uint32_t side = std::uint32_t(1) << level;
-    const std::uint32_t rx = (x >> level) & 1U;
-    const std::uint32_t ry = (y >> level) & 1U;
-    index = (index << 2) | ((3U * rx) ^ ry);
-    // Branch-free (the quadrant bits are random, a branch would mispredict half
-    // the time): when ry == 0 the sub-curve is transposed, and also reflected
-    // when rx == 1.
-    const std::uint32_t low = side - 1;
-    x &= low;
-    y &= low;
-    const std::uint32_t transpose = (ry ^ 1U) * 0xffffffffU;
-    const std::uint32_t reflect = low & transpose & (0U - rx);
-    x ^= reflect;
-    y ^= reflect;
-    const std::uint32_t swapped = (x ^ y) & transpose;
-    x ^= swapped;
-    y ^= swapped;
-  }
-  return index;
+  return HilbertIndexFast(TheHilbertTable(), x, y, levels);
 }
 
 std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
@@ -184,18 +255,15 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
   {
     ++idBits;
   }
+  const HilbertTable& table = TheHilbertTable();
   const auto key = [&](std::int32_t id)
   {
     // Trailing zeros of a hash: 0 with probability 1/2 (last round), 1 with 1/4, ...
     const std::uint64_t hash = SplitMix64(seed ^ (std::uint64_t(id) * 0x2545f4914f6cdd1dULL));
-    int zeros = 0;
-    while (zeros < rounds - 1 && ((hash >> zeros) & 1U) == 0)
-    {
-      ++zeros;
-    }
+    const int zeros = std::min(__builtin_ctzll(hash | (std::uint64_t(1) << 63)), rounds - 1);
     const std::uint64_t round = std::uint64_t(rounds - 1 - zeros);
     const std::uint32_t h =
-      HilbertIndex(cell(points[id].x, xmin), cell(points[id].y, ymin), levels);
+      HilbertIndexFast(table, cell(points[id].x, xmin), cell(points[id].y, ymin), levels);
     return (round << (2 * levels)) | h;
   };
   order.resize(n);

@@ -24,6 +24,7 @@
 #include "thiessen_sweep.h"
 
 #include "errors.h"
+#include "polygon_area.h"
 #include "predicates.h"
 #include "predicates_inline.h"
 
@@ -50,15 +51,30 @@ struct Box
   double XLo, XHi, YLo, YHi;
 };
 
+// A disk containing an exact circle (centre and radius already widened for rounding).
+struct Disk
+{
+  double X = 0.0, Y = 0.0, R = std::numeric_limits<double>::infinity();
+};
+
 constexpr Box kEverything = { -std::numeric_limits<double>::infinity(),
-  std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+  std::numeric_limits<double>::infinity(),
+  -std::numeric_limits<double>::infinity(),
   std::numeric_limits<double>::infinity() };
 
-// A bounding box of the part, on the clockwise side of the chord from A to b, of the circle
-// through A and the offsets b, c from A (each carrying a relative error below kUnit), widened by
-// a bound on every rounding error made here, so that it contains that part of the exact circle. Returns false when no such bound is reliable (nearly collinear
-// points, extreme magnitudes): then the caller scans without a range.
-bool CircleBox(double ax, double ay, double bx, double by, double cx, double cy, Box& box)
+// A bounding box of the circle through A and the offsets b, c from A (each carrying a relative
+// error below kUnit), widened by a bound on every rounding error made here, so that it contains
+// the exact circle.
+// Returns false when no such bound is reliable (nearly collinear points, extreme magnitudes):
+// the caller then keeps the range it has (at worst, no range: a full scan).
+bool CircleBox(double ax,
+  double ay,
+  double bx,
+  double by,
+  double cx,
+  double cy,
+  Box& box,
+  Disk& disk)
 {
   const double bmax = std::max(std::fabs(bx), std::fabs(by));
   const double cmax = std::max(std::fabs(cx), std::fabs(cy));
@@ -93,58 +109,15 @@ bool CircleBox(double ax, double ay, double bx, double by, double cx, double cy,
   const double ey = (errNy * absInverse + std::fabs(vy) * rD) * grow + 2.0 * kUnit * std::fabs(vy);
   const double r = std::sqrt(vx * vx + vy * vy);
   // The exact centre is within ex, ey of (vx, vy) and the exact radius within ex + ey (+ the
-  // rounding of r) of r: every extreme point of the exact circle lies within `slop` of the
-  // corresponding point at distance `half` from (vx, vy).
+  // rounding of r) of r: half-widths r + 2 (ex + ey) contain the exact circle; doubled for safety.
   const double half = r * (1.0 + 8.0 * kUnit) + 4.0 * (ex + ey);
-  const double slop = 2.0 * (half - r) + 4.0 * (ex + ey);
-  // Only the part of the disk on the clockwise side E1 of A -> b matters (cross(b, q) < 0): its
-  // bounding box is that of the chord's ends (A, b) and of the circle's extreme points lying on
-  // the E1 arc. An extreme point is left out only when it is clearly on the other side.
-  double xlo = std::min(0.0, bx), xhi = std::max(0.0, bx);
-  double ylo = std::min(0.0, by), yhi = std::max(0.0, by);
-  const double bNorm = std::fabs(bx) + std::fabs(by);
-  const double ext[4][2] = { { vx + half, vy }, { vx - half, vy }, { vx, vy + half },
-    { vx, vy - half } };
-  for (const auto& e : ext)
-  {
-    const double left = bx * e[1], right = by * e[0];
-    const double tolerance =
-      bNorm * (slop + 2.0 * kUnit * (std::fabs(e[0]) + std::fabs(e[1]))) +
-      4.0 * kUnit * (std::fabs(left) + std::fabs(right)) + 1e-300;
-    if (left - right > tolerance)
-    {
-      continue; // the whole neighbourhood of this extreme point is on the E2 side
-    }
-    xlo = std::min(xlo, e[0]);
-    xhi = std::max(xhi, e[0]);
-    ylo = std::min(ylo, e[1]);
-    yhi = std::max(yhi, e[1]);
-  }
-  const double slackX = 4.0 * kUnit * (std::fabs(ax) + std::max(std::fabs(xlo), std::fabs(xhi))) +
-    2.0 * kUnit * bNorm;
-  const double slackY = 4.0 * kUnit * (std::fabs(ay) + std::max(std::fabs(ylo), std::fabs(yhi))) +
-    2.0 * kUnit * bNorm;
+  const double xlo = vx - half, xhi = vx + half, ylo = vy - half, yhi = vy + half;
+  const double slackX = 4.0 * kUnit * (std::fabs(ax) + std::max(std::fabs(xlo), std::fabs(xhi)));
+  const double slackY = 4.0 * kUnit * (std::fabs(ay) + std::max(std::fabs(ylo), std::fabs(yhi)));
   box = { ax + xlo - slackX, ax + xhi + slackX, ay + ylo - slackY, ay + yhi + slackY };
+  disk = { ax + vx, ay + vy, half + std::max(slackX, slackY) };
   return std::isfinite(box.XLo) && std::isfinite(box.XHi) && std::isfinite(box.YLo) &&
     std::isfinite(box.YHi);
-}
-
-// Neumaier-compensated shoelace area, relative to the first vertex (as tiles.cpp does).
-double PolygonArea(const Point2* v, std::size_t n)
-{
-  double sum = 0.0, compensation = 0.0;
-  for (std::size_t k = 1; k + 1 < n; ++k)
-  {
-    const double ax = v[k].x - v[0].x, ay = v[k].y - v[0].y;
-    const double bx = v[k + 1].x - v[0].x, by = v[k + 1].y - v[0].y;
-    for (const double term : { ax * by, -(ay * bx) })
-    {
-      const double t = sum + term;
-      compensation += std::fabs(sum) >= std::fabs(term) ? (sum - t) + term : (term - t) + sum;
-      sum = t;
-    }
-  }
-  return 0.5 * (sum + compensation);
 }
 
 // Circumcentre from the points in ascending id order, relative to the first (as tiles.cpp does,
@@ -162,17 +135,21 @@ Point2 Circumcentre(const Point2& a, const Point2& b, const Point2& c)
 class Sweep
 {
 public:
-  Sweep(double xmin, double xmax, double ymin, double ymax, std::vector<double> xs,
-    std::vector<double> ys, std::vector<std::int32_t> ids);
+  Sweep(double xmin,
+    double xmax,
+    double ymin,
+    double ymax,
+    std::vector<double> xs,
+    std::vector<double> ys,
+    std::vector<std::int32_t> ids);
 
   void Run();
 
-  // Results, per x-sorted index.
+  // Results. Every Thiessen vertex is stored once, in Vertices; tiles refer to them by index.
   std::vector<Point2> Vertices;
-  // Completed tiles, packed in processing order: each tile's record and its vertices
-  // (anticlockwise) and neighbour ids (the neighbour across the side after each vertex, -1 for
-  // the window) are written once, while they are still in cache; the output then gathers them
-  // in id order.
+  // Completed tiles, in processing order: a record per tile, and its vertex indices
+  // (anticlockwise) and neighbour ids (across the side after each vertex; -1 for the window),
+  // written once while the tile is in cache; the output gathers them in id order.
   struct TileRecord
   {
     std::int64_t Start = 0; ///< into PackedVertexIds and PackedNeighbors
@@ -183,12 +160,9 @@ public:
   std::vector<TileRecord> Records; // per x-sorted index
   std::vector<std::int32_t> PackedVertexIds;
   std::vector<std::int32_t> PackedNeighbors;
-  std::vector<Point2> Polygon; // scratch
-  std::vector<std::pair<std::int32_t, std::int32_t>> Kind1; // x-sorted indices
+  std::vector<std::pair<std::int32_t, std::int32_t>> Kind1; // half-neighbours, x-sorted indices
   std::size_t DegenerateVertices = 0;
 
-  const std::vector<double>& X() const { return this->Xs; }
-  const std::vector<double>& Y() const { return this->Ys; }
   const std::vector<std::int32_t>& Ids() const { return this->IdOf; }
 
 private:
@@ -207,7 +181,17 @@ private:
   std::int32_t NearestCentroid(std::int32_t a);
   Entry SearchAndRecord(std::int32_t cur);
   void SearchNext(std::int32_t cur);
-  void ScanStrip(std::int32_t strip);
+  struct Cursor
+  {
+    std::int32_t Strip;
+    std::int32_t Begin, End; ///< the strip's positions
+    std::int32_t Up, Down;   ///< next positions to visit above and below A's ordinate
+    double YLo, YHi;         ///< ordinates of the range within the strip's abscissae
+    std::uint32_t Version;   ///< RangeVersion the limits were computed for
+  };
+  Cursor MakeCursor(std::int32_t strip);
+  void LimitCursor(Cursor& c);
+  bool StepCursor(Cursor& c);
   void Visit(const StripPoint& point);
   void ConsiderPoint(std::int32_t q, const Point2& pq);
   void Consider(std::int32_t q);
@@ -228,11 +212,14 @@ private:
   std::vector<std::int32_t> IdOf;
   std::int32_t M;
 
-  // Bucket index: strips of StripSize consecutive x-sorted centroids, each sorted by y.
+  // Bucket index: strips of about StripSize consecutive x-sorted centroids (never splitting a set
+  // of equal abscissae: a column of points is one strip), each sorted by y.
   std::int32_t StripSize = 1;
+  std::vector<std::int32_t> StripBegin; // StripCount + 1 entries
+  std::vector<std::int32_t> StripOf;    // per x-sorted index
   std::int32_t StripCount = 0;
-  std::vector<double> StripXLo, StripXHi;
-  std::vector<StripPoint> Strip; // strip by strip, each sorted by y
+  std::vector<double> StripXLo, StripXHi, StripYLo, StripYHi;
+  std::vector<StripPoint> Strip;             // strip by strip, each sorted by y
   std::vector<std::int32_t> PositionInStrip; // per x-sorted index: its place in its strip
   // Per x-sorted index: where its ordinate falls in the strips on its left and right (the first
   // position whose ordinate is not smaller), so that most scans need no binary search.
@@ -255,13 +242,22 @@ private:
   Point2 PCur, PP; // coordinates of Cur and P when they are centroids
   std::vector<std::int32_t> Ties;
   Box Range = kEverything;
+  Disk Bound;                     // a disk holding the circle's E1 part (infinite: none yet)
+  std::uint32_t RangeVersion = 0; // changes with Range and Bound
   SweepSearchCounts* Count = nullptr;
   std::vector<Entry> Known, Cycle;
+  std::vector<Cursor> Cursors;
   std::vector<std::int32_t> Members, Circle;
+  std::vector<Point2> Polygon;
 };
 
-Sweep::Sweep(double xmin, double xmax, double ymin, double ymax, std::vector<double> xs,
-  std::vector<double> ys, std::vector<std::int32_t> ids)
+Sweep::Sweep(double xmin,
+  double xmax,
+  double ymin,
+  double ymax,
+  std::vector<double> xs,
+  std::vector<double> ys,
+  std::vector<std::int32_t> ids)
   : XMin(xmin)
   , XMax(xmax)
   , YMin(ymin)
@@ -310,8 +306,8 @@ Offset2 Sweep::ExactOffset(std::int32_t s) const
   Offset2 o;
   if (s == kLeft || s == kRight)
   {
-    const Offset2 d = exact_offset(
-      Point2{ s == kLeft ? this->XMin : this->XMax, 0.0 }, Point2{ this->PA.x, 0.0 });
+    const Offset2 d =
+      exact_offset(Point2{ s == kLeft ? this->XMin : this->XMax, 0.0 }, Point2{ this->PA.x, 0.0 });
     o.x = 2.0 * d.x;
     o.xTail = 2.0 * d.xTail;
   }
@@ -347,7 +343,8 @@ int Sweep::OrientDummyPoint(std::int32_t dummy, const Point2& a, const Point2& q
 std::int32_t Sweep::LowerBound(std::int32_t begin, std::int32_t end, double y) const
 {
   return static_cast<std::int32_t>(std::lower_bound(this->Strip.begin() + begin,
-                                     this->Strip.begin() + end, y,
+                                     this->Strip.begin() + end,
+                                     y,
                                      [](const StripPoint& p, double v) { return p.Y < v; }) -
     this->Strip.begin());
 }
@@ -356,8 +353,8 @@ int Sweep::Orient(std::int32_t s1, std::int32_t s2) const
 {
   if (s1 >= 0 && s2 >= 0)
   {
-    return orient2d_fast(this->PA, Point2{ this->Xs[s1], this->Ys[s1] },
-      Point2{ this->Xs[s2], this->Ys[s2] });
+    return orient2d_fast(
+      this->PA, Point2{ this->Xs[s1], this->Ys[s1] }, Point2{ this->Xs[s2], this->Ys[s2] });
   }
   if (s1 < 0 && s2 >= 0)
   {
@@ -375,8 +372,10 @@ int Sweep::InCircle(std::int32_t q) const
   // Inside the circle through A, Cur, P (P clockwise of A->Cur): incircle(A, P, Cur, q) > 0.
   if (q >= 0 && this->P >= 0 && this->Cur >= 0)
   {
-    return incircle_fast(this->PA, Point2{ this->Xs[this->P], this->Ys[this->P] },
-      Point2{ this->Xs[this->Cur], this->Ys[this->Cur] }, Point2{ this->Xs[q], this->Ys[q] });
+    return incircle_fast(this->PA,
+      Point2{ this->Xs[this->P], this->Ys[this->P] },
+      Point2{ this->Xs[this->Cur], this->Ys[this->Cur] },
+      Point2{ this->Xs[q], this->Ys[q] });
   }
   // incircle(A, P, Cur, q) = -incircle(P, Cur, q, A) (a cyclic shift of four is odd).
   return -incircle_offsets(
@@ -387,33 +386,52 @@ void Sweep::BuildIndex()
 {
   // About sqrt(M) strips of sqrt(M) centroids: a circle spanning a few point spacings then meets
   // a couple of strips and a few points in each.
-  this->StripSize = std::max<std::int32_t>(4, static_cast<std::int32_t>(std::sqrt(double(this->M))));
-  this->StripCount = (this->M + this->StripSize - 1) / this->StripSize;
-  this->StripXLo.resize(this->StripCount);
-  this->StripXHi.resize(this->StripCount);
-  this->Strip.resize(this->M);
-  this->PositionInStrip.resize(this->M);
-  std::vector<std::int32_t> order;
+  this->StripSize =
+    std::max<std::int32_t>(4, static_cast<std::int32_t>(std::sqrt(double(this->M))));
+  this->StripBegin.assign(1, 0);
+  while (this->StripBegin.back() < this->M)
+  {
+    std::int32_t end = std::min(this->M, this->StripBegin.back() + this->StripSize);
+    while (end < this->M && this->Xs[end] == this->Xs[end - 1])
+    {
+      ++end;
+    }
+    this->StripBegin.push_back(end);
+  }
+  this->StripCount = static_cast<std::int32_t>(this->StripBegin.size()) - 1;
+  this->StripOf.resize(this->M);
   for (std::int32_t s = 0; s < this->StripCount; ++s)
   {
-    const std::int32_t begin = s * this->StripSize;
-    const std::int32_t end = std::min(this->M, begin + this->StripSize);
+    std::fill(this->StripOf.begin() + this->StripBegin[s],
+      this->StripOf.begin() + this->StripBegin[s + 1],
+      s);
+  }
+  this->StripXLo.resize(this->StripCount);
+  this->StripXHi.resize(this->StripCount);
+  this->StripYLo.resize(this->StripCount);
+  this->StripYHi.resize(this->StripCount);
+  this->Strip.resize(this->M);
+  this->PositionInStrip.resize(this->M);
+  for (std::int32_t s = 0; s < this->StripCount; ++s)
+  {
+    const std::int32_t begin = this->StripBegin[s];
+    const std::int32_t end = this->StripBegin[s + 1];
     this->StripXLo[s] = this->Xs[begin];
     this->StripXHi[s] = this->Xs[end - 1];
-    order.resize(end - begin);
     for (std::int32_t k = begin; k < end; ++k)
     {
-      order[k - begin] = k;
+      this->Strip[k] = { this->Ys[k], this->Xs[k], k };
     }
-    std::sort(order.begin(), order.end(), [&](std::int32_t p, std::int32_t q) {
-      return this->Ys[p] < this->Ys[q] || (this->Ys[p] == this->Ys[q] && p < q);
-    });
+    std::sort(this->Strip.begin() + begin,
+      this->Strip.begin() + end,
+      [](const StripPoint& p, const StripPoint& q)
+      { return p.Y < q.Y || (p.Y == q.Y && p.S < q.S); });
     for (std::int32_t k = begin; k < end; ++k)
     {
-      const std::int32_t c = order[k - begin];
-      this->PositionInStrip[c] = k;
-      this->Strip[k] = { this->Ys[c], this->Xs[c], c };
+      this->PositionInStrip[this->Strip[k].S] = k;
     }
+    this->StripYLo[s] = this->Strip[begin].Y;
+    this->StripYHi[s] = this->Strip[end - 1].Y;
   }
   // Merge each pair of adjacent strips once (both sorted by y) to place every point in its
   // neighbours.
@@ -421,8 +439,8 @@ void Sweep::BuildIndex()
   this->PositionRight.assign(this->M, 0);
   for (std::int32_t s = 0; s + 1 < this->StripCount; ++s)
   {
-    const std::int32_t aBegin = s * this->StripSize, aEnd = aBegin + this->StripSize;
-    const std::int32_t bBegin = aEnd, bEnd = std::min(this->M, bBegin + this->StripSize);
+    const std::int32_t aBegin = this->StripBegin[s], aEnd = this->StripBegin[s + 1];
+    const std::int32_t bBegin = aEnd, bEnd = this->StripBegin[s + 2];
     std::int32_t j = bBegin;
     for (std::int32_t i = aBegin; i < aEnd; ++i)
     {
@@ -481,8 +499,8 @@ void Sweep::Run()
   bool unique = true;
   for (std::int32_t s = 1; s < this->M; ++s)
   {
-    const int c = compare_distance_fast(v0, Point2{ this->Xs[s], this->Ys[s] },
-      Point2{ this->Xs[first], this->Ys[first] });
+    const int c = compare_distance_fast(
+      v0, Point2{ this->Xs[s], this->Ys[s] }, Point2{ this->Xs[first], this->Ys[first] });
     if (c < 0)
     {
       first = s;
@@ -515,7 +533,8 @@ std::int32_t Sweep::NearestCentroid(std::int32_t a)
   std::int32_t best = kNone;
   double reach = std::numeric_limits<double>::infinity();
   const Point2 pa{ this->Xs[a], this->Ys[a] };
-  auto visit = [&](std::int32_t q) {
+  auto visit = [&](std::int32_t q)
+  {
     if (q == a)
     {
       return;
@@ -529,10 +548,11 @@ std::int32_t Sweep::NearestCentroid(std::int32_t a)
       reach = std::sqrt(dx * dx + dy * dy) * (1.0 + 1e-9) + 1e-300;
     }
   };
-  const std::int32_t s0 = a / this->StripSize;
-  auto scan = [&](std::int32_t s) {
-    const std::int32_t begin = s * this->StripSize;
-    const std::int32_t end = std::min(this->M, begin + this->StripSize);
+  const std::int32_t s0 = this->StripOf[a];
+  auto scan = [&](std::int32_t s)
+  {
+    const std::int32_t begin = this->StripBegin[s];
+    const std::int32_t end = this->StripBegin[s + 1];
     std::int32_t up = this->LowerBound(begin, end, pa.y);
     std::int32_t down = up - 1;
     while (up < end || down >= begin)
@@ -608,12 +628,18 @@ void Sweep::UpdateBox()
   this->ApproxOffset(this->Cur, bx, by);
   this->ApproxOffset(this->P, cx, cy);
   Box box;
-  if (CircleBox(this->PA.x, this->PA.y, bx, by, cx, cy, box))
+  Disk disk;
+  if (CircleBox(this->PA.x, this->PA.y, bx, by, cx, cy, box, disk))
   {
     this->Range.XLo = std::max(this->Range.XLo, box.XLo);
     this->Range.XHi = std::min(this->Range.XHi, box.XHi);
     this->Range.YLo = std::max(this->Range.YLo, box.YLo);
     this->Range.YHi = std::min(this->Range.YHi, box.YHi);
+    if (disk.R < this->Bound.R)
+    {
+      this->Bound = disk;
+    }
+    ++this->RangeVersion;
   }
 }
 
@@ -658,8 +684,8 @@ void Sweep::ConsiderPoint(std::int32_t q, const Point2& pq)
     this->UpdateBox();
     return;
   }
-  const int inside = this->Cur >= 0 ? incircle_fast(this->PA, this->PP, this->PCur, pq)
-                                    : this->InCircle(q);
+  const int inside =
+    this->Cur >= 0 ? incircle_fast(this->PA, this->PP, this->PCur, pq) : this->InCircle(q);
   if (inside > 0)
   {
     ++this->Count->InCircle;
@@ -718,47 +744,166 @@ std::int32_t Sweep::StripStart(std::int32_t strip)
       return known.second;
     }
   }
-  const std::int32_t begin = strip * this->StripSize;
-  const std::int32_t end = std::min(this->M, begin + this->StripSize);
+  const std::int32_t begin = this->StripBegin[strip];
+  const std::int32_t end = this->StripBegin[strip + 1];
   const std::int32_t position = this->LowerBound(begin, end, this->PA.y);
   this->StripStarts.emplace_back(strip, position);
   return position;
 }
 
-void Sweep::ScanStrip(std::int32_t strip)
+Sweep::Cursor Sweep::MakeCursor(std::int32_t strip)
 {
-  const std::int32_t begin = strip * this->StripSize;
-  const std::int32_t end = std::min(this->M, begin + this->StripSize);
-  std::int32_t up = this->StripStart(strip);
-  std::int32_t down = up - 1;
-  // Outward from A's ordinate, alternately up and down, while inside the (shrinking) range.
-  while (up < end || down >= begin)
+  Cursor c;
+  c.Strip = strip;
+  c.Begin = this->StripBegin[strip];
+  c.End = this->StripBegin[strip + 1];
+  c.Version = this->RangeVersion - 1;
+  // A strip whose points all lie on one vertical or horizontal segment (collinear input, a
+  // lattice column) is skipped when the segment is in the closed side E2 of A -> Cur: none of its
+  // points can be in E1.
+  const double xlo = this->StripXLo[strip], xhi = this->StripXHi[strip];
+  const double ylo = this->StripYLo[strip], yhi = this->StripYHi[strip];
+  // A strip whose bounding box misses the bounding disk holds no candidate (generous slack: this
+  // only prunes).
+  const Disk& d = this->Bound;
+  if (d.R < std::numeric_limits<double>::infinity())
   {
-    if (up < end)
+    const double dx = d.X < xlo ? xlo - d.X : (d.X > xhi ? d.X - xhi : 0.0);
+    const double dy = d.Y < ylo ? ylo - d.Y : (d.Y > yhi ? d.Y - yhi : 0.0);
+    if (dx * dx + dy * dy > d.R * d.R * (1.0 + 1e-9))
     {
-      if (this->Strip[up].Y <= this->Range.YHi)
-      {
-        this->Visit(this->Strip[up]);
-        ++up;
-      }
-      else
-      {
-        up = end;
-      }
-    }
-    if (down >= begin)
-    {
-      if (this->Strip[down].Y >= this->Range.YLo)
-      {
-        this->Visit(this->Strip[down]);
-        --down;
-      }
-      else
-      {
-        down = begin - 1;
-      }
+      c.Up = c.End;
+      c.Down = c.Begin - 1;
+      return c;
     }
   }
+  if (xlo == xhi || ylo == yhi)
+  {
+    const Point2 ends[2] = { { xlo, ylo }, { xhi, yhi } };
+    bool outside = true;
+    for (const Point2& e : ends)
+    {
+      const int side = this->Cur >= 0 ? orient2d_fast(this->PA, this->PCur, e)
+                                      : OrientDummyPoint(this->Cur, this->PA, e);
+      outside = outside && side >= 0;
+    }
+    if (outside)
+    {
+      c.Up = c.End;
+      c.Down = c.Begin - 1;
+      return c;
+    }
+  }
+  c.Up = this->StripStart(strip);
+  c.Down = c.Up - 1;
+  return c;
+}
+
+void Sweep::LimitCursor(Cursor& c)
+{
+  // The range's ordinates, narrowed to the chord of the bounding disk over the strip's abscissae
+  // (a strip the circle only grazes gets a short range). Computed with generous relative slack:
+  // it is a pruning bound, exact decisions come later.
+  c.Version = this->RangeVersion;
+  c.YLo = this->Range.YLo;
+  c.YHi = this->Range.YHi;
+  const Disk& d = this->Bound;
+  if (!(d.R < std::numeric_limits<double>::infinity()))
+  {
+    return;
+  }
+  const double xlo = this->StripXLo[c.Strip], xhi = this->StripXHi[c.Strip];
+  if (this->StripYLo[c.Strip] == this->StripYHi[c.Strip])
+  {
+    // All the strip's points on one horizontal line (sorted by x there): keep the chord of the
+    // disk along that line.
+    const double dy = std::fabs(this->StripYLo[c.Strip] - d.Y) * (1.0 - 1e-12);
+    if (dy > d.R)
+    {
+      c.Up = c.End;
+      c.Down = c.Begin - 1;
+      return;
+    }
+    const double w = std::sqrt((d.R - dy) * (d.R + dy)) * (1.0 + 1e-12);
+    const double slack = 1e-12 * (std::fabs(d.X) + w);
+    const double from = d.X - w - slack, to = d.X + w + slack;
+    auto byX = [](const StripPoint& p, double v) { return p.X < v; };
+    const std::int32_t first = static_cast<std::int32_t>(
+      std::lower_bound(this->Strip.begin() + c.Begin, this->Strip.begin() + c.End, from, byX) -
+      this->Strip.begin());
+    const std::int32_t last =
+      static_cast<std::int32_t>(std::upper_bound(this->Strip.begin() + c.Begin,
+                                  this->Strip.begin() + c.End,
+                                  to,
+                                  [](double v, const StripPoint& p) { return v < p.X; }) -
+        this->Strip.begin());
+    c.Begin = first;
+    c.End = last;
+    c.Up = std::max(c.Up, first);
+    c.Down = std::min(c.Down, last - 1);
+    return;
+  }
+  double dx = d.X < xlo ? xlo - d.X : (d.X > xhi ? d.X - xhi : 0.0);
+  dx *= 1.0 - 1e-12;
+  if (dx > d.R)
+  {
+    c.YLo = std::numeric_limits<double>::infinity();
+    c.YHi = -std::numeric_limits<double>::infinity();
+    return;
+  }
+  const double h = std::sqrt((d.R - dx) * (d.R + dx)) * (1.0 + 1e-12);
+  const double slack = 1e-12 * (std::fabs(d.Y) + h);
+  c.YLo = std::max(c.YLo, d.Y - h - slack);
+  c.YHi = std::min(c.YHi, d.Y + h + slack);
+  // The chord need not contain A's ordinate, where the cursor started: skip to the chord.
+  if (c.Up < c.End && this->Strip[c.Up].Y < c.YLo)
+  {
+    c.Up = this->LowerBound(c.Up, c.End, c.YLo);
+  }
+  if (c.Down >= c.Begin && this->Strip[c.Down].Y > c.YHi)
+  {
+    c.Down = static_cast<std::int32_t>(std::upper_bound(this->Strip.begin() + c.Begin,
+                                         this->Strip.begin() + c.Down + 1,
+                                         c.YHi,
+                                         [](double v, const StripPoint& p) { return v < p.Y; }) -
+               this->Strip.begin()) -
+      1;
+  }
+}
+
+bool Sweep::StepCursor(Cursor& c)
+{
+  // One point up and one point down from A's ordinate, while inside the (shrinking) range.
+  if (c.Version != this->RangeVersion)
+  {
+    this->LimitCursor(c);
+  }
+  bool visited = false;
+  if (c.Up < c.End)
+  {
+    if (this->Strip[c.Up].Y <= c.YHi)
+    {
+      this->Visit(this->Strip[c.Up++]);
+      visited = true;
+    }
+    else
+    {
+      c.Up = c.End;
+    }
+  }
+  if (c.Down >= c.Begin)
+  {
+    if (this->Strip[c.Down].Y >= c.YLo)
+    {
+      this->Visit(this->Strip[c.Down--]);
+      visited = true;
+    }
+    else
+    {
+      c.Down = c.Begin - 1;
+    }
+  }
+  return visited;
 }
 
 void Sweep::SearchNext(std::int32_t cur)
@@ -771,6 +916,8 @@ void Sweep::SearchNext(std::int32_t cur)
   this->P = kNone;
   this->Ties.clear();
   this->Range = kEverything;
+  this->Bound = Disk{};
+  ++this->RangeVersion;
   ++this->Count->Searches;
   // The dummies in E1 (there is always one). The paper starts from one of them as the first
   // potential neighbour; here their circles first only bound the range (a dummy's circle is
@@ -796,11 +943,15 @@ void Sweep::SearchNext(std::int32_t cur)
   {
     throw std::logic_error("Brassel-Reif sweep: no dummy point in the clockwise half-plane");
   }
-  // A's own strip first, without a range until a centroid of E1 is found; only if none is, the
-  // dummies' circles bound the range for the other strips.
-  const std::int32_t s0 = this->A / this->StripSize;
-  this->ScanStrip(s0);
-  if (this->P == kNone)
+  // Until a first centroid of E1 is found there is no range: step outward in A's strip, and
+  // widen to the neighbouring strips round by round (A's strip may hold none: a lattice column
+  // when Cur is straight above A). After two rounds the dummies' circles bound the range, so that
+  // a centroid with no point of E1 nearby does not scan everything.
+  const std::int32_t s0 = this->StripOf[this->A];
+  this->Cursors.assign(1, this->MakeCursor(s0));
+  std::int32_t lo = s0, hi = s0;
+  bool bounded = false;
+  auto bound = [&]()
   {
     for (int k = 0; k < dummyCount; ++k)
     {
@@ -808,17 +959,68 @@ void Sweep::SearchNext(std::int32_t cur)
       this->UpdateBox();
     }
     this->P = kNone;
+    bounded = true;
+  };
+  for (int round = 1; this->P == kNone; ++round)
+  {
+    bool visited = false;
+    for (std::size_t k = 0; k < this->Cursors.size() && this->P == kNone;)
+    {
+      Cursor& c = this->Cursors[k];
+      visited = this->StepCursor(c) || visited;
+      if (c.Up >= c.End && c.Down < c.Begin)
+      {
+        c = this->Cursors.back(); // exhausted: drop it
+        this->Cursors.pop_back();
+      }
+      else
+      {
+        ++k;
+      }
+    }
+    if (this->P != kNone)
+    {
+      break;
+    }
+    bool widened = false;
+    if (hi + 1 < this->StripCount && this->StripXLo[hi + 1] <= this->Range.XHi)
+    {
+      this->Cursors.push_back(this->MakeCursor(++hi));
+      widened = true;
+    }
+    if (lo > 0 && this->StripXHi[lo - 1] >= this->Range.XLo)
+    {
+      this->Cursors.push_back(this->MakeCursor(--lo));
+      widened = true;
+    }
+    if (!bounded && (round >= 2 || (!visited && !widened)))
+    {
+      bound();
+    }
+    else if (!visited && !widened)
+    {
+      break; // no centroid of E1 within the dummies' circles
+    }
   }
-  // Then the strips outward, alternately right and left, while they meet the abscissa range.
-  std::int32_t lo = s0 - 1, hi = s0 + 1;
+  // With a potential neighbour: finish the strips begun, then go outward, alternately right and
+  // left, while the strips meet the abscissa range.
+  for (std::size_t k = 0; k < this->Cursors.size(); ++k)
+  {
+    while (this->StepCursor(this->Cursors[k]))
+    {
+    }
+  }
   bool goLeft = true, goRight = true;
   while (goLeft || goRight)
   {
     if (goRight)
     {
-      if (hi < this->StripCount && this->StripXLo[hi] <= this->Range.XHi)
+      if (hi + 1 < this->StripCount && this->StripXLo[hi + 1] <= this->Range.XHi)
       {
-        this->ScanStrip(hi++);
+        Cursor c = this->MakeCursor(++hi);
+        while (this->StepCursor(c))
+        {
+        }
       }
       else
       {
@@ -827,9 +1029,12 @@ void Sweep::SearchNext(std::int32_t cur)
     }
     if (goLeft)
     {
-      if (lo >= 0 && this->StripXHi[lo] >= this->Range.XLo)
+      if (lo > 0 && this->StripXHi[lo - 1] >= this->Range.XLo)
       {
-        this->ScanStrip(lo--);
+        Cursor c = this->MakeCursor(--lo);
+        while (this->StepCursor(c))
+        {
+        }
       }
       else
       {
@@ -846,7 +1051,8 @@ void Sweep::SearchNext(std::int32_t cur)
       double ox, oy;
       this->ApproxOffset(dummies[k], ox, oy);
       const double x = this->PA.x + ox, y = this->PA.y + oy;
-      const double margin = 4.0 * kUnit * (std::fabs(x) + std::fabs(y) + std::fabs(ox) + std::fabs(oy));
+      const double margin =
+        4.0 * kUnit * (std::fabs(x) + std::fabs(y) + std::fabs(ox) + std::fabs(oy));
       if (x < this->Range.XLo - margin || x > this->Range.XHi + margin ||
         y < this->Range.YLo - margin || y > this->Range.YHi + margin)
       {
@@ -901,15 +1107,16 @@ Point2 Sweep::FaceCentre(const std::vector<std::int32_t>& circle) const
     const Point2 q{ this->Xs[smallest[1]], this->Ys[smallest[1]] };
     if (vertical)
     {
-      const double y = 0.5 * (p.y + q.y) +
-        (q.x - p.x) * ((xSide - p.x) + (xSide - q.x)) / (2.0 * (p.y - q.y));
+      const double y =
+        0.5 * (p.y + q.y) + (q.x - p.x) * ((xSide - p.x) + (xSide - q.x)) / (2.0 * (p.y - q.y));
       return { xSide, std::min(std::max(y, this->YMin), this->YMax) };
     }
     const double x =
       0.5 * (p.x + q.x) + (q.y - p.y) * ((ySide - p.y) + (ySide - q.y)) / (2.0 * (p.x - q.x));
     return { std::min(std::max(x, this->XMin), this->XMax), ySide };
   }
-  return Circumcentre(p, Point2{ this->Xs[smallest[1]], this->Ys[smallest[1]] },
+  return Circumcentre(p,
+    Point2{ this->Xs[smallest[1]], this->Ys[smallest[1]] },
     Point2{ this->Xs[smallest[2]], this->Ys[smallest[2]] });
 }
 
@@ -922,7 +1129,8 @@ Sweep::Entry Sweep::SearchAndRecord(std::int32_t cur)
   this->Members.insert(this->Members.end(), this->Ties.begin(), this->Ties.end());
   if (this->Members.size() > 1)
   {
-    std::sort(this->Members.begin(), this->Members.end(),
+    std::sort(this->Members.begin(),
+      this->Members.end(),
       [this](std::int32_t s1, std::int32_t s2) { return this->Orient(s1, s2) < 0; });
   }
   this->Circle.assign(1, this->A);
@@ -988,7 +1196,7 @@ void Sweep::ProcessCentroid(std::int32_t a)
   }
   this->Head[a] = -1;
   {
-    const std::int32_t strip = a / this->StripSize;
+    const std::int32_t strip = this->StripOf[a];
     this->StripStarts.assign(1, { strip, this->PositionInStrip[a] });
     if (strip > 0)
     {
@@ -1065,7 +1273,7 @@ void Sweep::ProcessCentroid(std::int32_t a)
     this->PackedNeighbors.push_back(e.In >= 0 ? this->IdOf[e.In] : -1);
     this->Polygon.push_back(this->Vertices[e.Vertex]);
   }
-  record.Area = PolygonArea(this->Polygon.data(), this->Polygon.size());
+  record.Area = CompensatedPolygonArea(this->Polygon.data(), this->Polygon.size());
   this->Processed[a] = 1;
 }
 
@@ -1090,7 +1298,8 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
   }
   if (points.size() >= std::size_t(std::numeric_limits<std::int32_t>::max() / 4))
   {
-    throw InputError("too many points for the Brassel-Reif sweep: " + std::to_string(points.size()));
+    throw InputError(
+      "too many points for the Brassel-Reif sweep: " + std::to_string(points.size()));
   }
   for (std::size_t i = 0; i < points.size(); ++i)
   {
@@ -1126,9 +1335,39 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
       result.RejectedIds.push_back(static_cast<std::int32_t>(i));
     }
   }
-  std::sort(keyed.begin(), keyed.end(), [](const Keyed& p, const Keyed& q) {
-    return p.X < q.X || (p.X == q.X && (p.Y < q.Y || (p.Y == q.Y && p.Id < q.Id)));
-  });
+  {
+    // Bucket sort: buckets by abscissa (a monotone function of x), then each bucket sorted.
+    auto less = [](const Keyed& p, const Keyed& q)
+    { return p.X < q.X || (p.X == q.X && (p.Y < q.Y || (p.Y == q.Y && p.Id < q.Id))); };
+    const std::size_t buckets =
+      std::max<std::size_t>(1, std::min<std::size_t>(4096, keyed.size() / 64));
+    const double scale = double(buckets) / (xmax - xmin);
+    auto bucketOf = [&](double x)
+    {
+      const double b = std::floor((x - xmin) * scale);
+      return b <= 0.0 ? std::size_t(0) : std::min(buckets - 1, std::size_t(b));
+    };
+    std::vector<std::size_t> start(buckets + 1, 0);
+    for (const Keyed& k : keyed)
+    {
+      ++start[bucketOf(k.X) + 1];
+    }
+    for (std::size_t b = 0; b < buckets; ++b)
+    {
+      start[b + 1] += start[b];
+    }
+    std::vector<Keyed> sorted(keyed.size());
+    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+    for (const Keyed& k : keyed)
+    {
+      sorted[fill[bucketOf(k.X)]++] = k;
+    }
+    for (std::size_t b = 0; b < buckets; ++b)
+    {
+      std::sort(sorted.begin() + start[b], sorted.begin() + start[b + 1], less);
+    }
+    keyed.swap(sorted);
+  }
   std::vector<double> xs, ys;
   std::vector<std::int32_t> ids;
   xs.reserve(keyed.size());

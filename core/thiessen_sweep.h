@@ -10,18 +10,23 @@
 //    coordinates: they are exact offsets from their centroid (predicates.h, Offset2).
 //  - Centroids are sorted by x. The one nearest the lower-left corner V0 is processed first, from
 //    V0 with the left dummy as its first known neighbour; the rest follow in x order (ties by y).
+//    A centroid none of whose vertices is known yet starts from its nearest centroid, which always
+//    shares a side with it (the midpoint of the two is nearer to them than to any other point).
 //  - A polygon is completed by repeatedly finding the next clockwise neighbour of its centroid A
-//    after a known neighbour X (Figs. 3, 4): potential neighbour P = a dummy in the half-plane E1
-//    clockwise of AX, then every centroid P' that passes the abscissa-range test against the
-//    circle (V, R) through A, X, P, the half-plane test (P' in E1) and the in-circle test replaces
-//    P, shrinking the circle, until none is left inside. All three tests are exact or
-//    conservative: the range test uses a bounding box of the circle widened by a rigorous bound on
-//    its rounding error; the half-plane and circle tests are the exact predicates.
+//    after a known neighbour X (Figs. 3, 4): the point P of the half-plane E1 clockwise of AX
+//    whose circle (V, R) through A, X, P holds no other point of E1. Every candidate P' passes
+//    the abscissa-range test against the current circle, the half-plane test (P' in E1) and the
+//    in-circle test, and then replaces P, shrinking the circle. The range test uses a bounding
+//    box of the circle widened by a rigorous bound on its rounding error, so it never rejects a
+//    point the exact test would accept; the half-plane and circle tests are the exact
+//    predicates. The paper starts from a dummy as the first potential neighbour; here the dummies
+//    in E1 are tested last (their circles, large unless A is near the border, only bound the
+//    range when A's own strip holds no candidate), which changes the work, not the result.
 //  - Candidates come from a bucket index over the x-sorted centroids: the sorted sequence cut
-//    into strips of consecutive x, each sorted by y. The scan starts at A and moves outward in y
-//    within a strip and outward strip by strip, as the paper's scan moves outward from X along
-//    the sorted sequence, and stops where the shrinking circle's abscissa (and ordinate) range
-//    ends.
+//    into about sqrt(N) strips of consecutive x, each sorted by y. The scan starts at A and moves
+//    outward in y within a strip and outward strip by strip, as the paper's scan moves outward
+//    from X along the sorted sequence, and stops where the shrinking circle's abscissa (and
+//    ordinate) range ends.
 //  - Neighbour records (Fig. 6): every vertex found is stored once and entered in the records of
 //    all its (unprocessed) centroids, so a later polygon uses its known vertices and searches only
 //    the missing ones; a record is dropped when its polygon is completed.
@@ -31,8 +36,11 @@
 //    that are adjacent around the circle share edges; every other pair (the zero-length "neighbour"
 //    the paper records and the pair it drops) is reported as half-neighbours (kind 1), as the
 //    Green-Sibson engine does, when the vertex is inside the window.
-//  - Instrumentation (Fig. 11), per polygon: A = points consulted (given the range and half-plane
-//    tests), B = points passing both, C = points inside (or on) the circle.
+//  - Instrumentation (Fig. 11), per polygon, summed over its searches: A = points consulted
+//    (fetched from the index within the ordinate range, and the dummies), B = points passing the
+//    abscissa-range and half-plane tests, C = points inside or on the circle (each one replaced
+//    the potential neighbour or tied with it). Searches = vertices the polygon had to find itself
+//    (the others came from its neighbour record).
 //
 // Points: those not strictly inside the window are rejected, exact duplicates of an earlier
 // point are reported with the id they copy (the smallest id is kept); both are listed, not used.
@@ -58,9 +66,9 @@ struct SweepSearchCounts
 
 struct ThiessenSweepResult
 {
-  TileSet Tiles;              ///< same layout as ComputeTiles (one tile per accepted id, ascending)
-  ContiguityGraph Contiguities; ///< same layout as ComputeContiguityGraph
-  std::vector<std::int32_t> RejectedIds;                        ///< ascending
+  TileSet Tiles; ///< same layout as ComputeTiles (one tile per accepted id, ascending)
+  ContiguityGraph Contiguities;          ///< same layout as ComputeContiguityGraph
+  std::vector<std::int32_t> RejectedIds; ///< ascending
   std::vector<std::pair<std::int32_t, std::int32_t>> Duplicates; ///< (duplicate, kept), ascending
   std::vector<SweepSearchCounts> Counts; ///< per tile, in the order of Tiles.PointIds
   std::size_t VertexCount = 0;           ///< Thiessen vertices stored (each once)

@@ -1,6 +1,7 @@
 #include "tiles.h"
 
 #include "predicates_inline.h"
+#include "window_predicates.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +10,37 @@
 
 namespace tessera
 {
+namespace tiles_detail
+{
+
+struct EdgeEnd
+{
+  Point2 P;
+  int Constraint; ///< window constraint the end lies on; -1 for a face centre inside
+  /// Where the end is exactly: a face (>= 0), window corner k (-2 - k), or a crossing of a
+  /// window line elsewhere (-1). Two ends with the same Where >= 0 or <= -2 coincide exactly.
+  std::int32_t Where;
+};
+
+struct TileEdge
+{
+  EdgeEnd Lo, Hi;
+};
+
+/// A face as a tile edge sees it; Face < 0 for a ghost (centre at infinity).
+struct FaceView
+{
+  std::int32_t Face = -1;
+  Point2 Centre;
+  bool Inside = false;
+};
+
+} // namespace tiles_detail
+
 namespace
 {
+
+using namespace tiles_detail;
 
 using Tess = DirichletTessellation;
 
@@ -60,6 +90,329 @@ double PolygonArea(const Point2* v, std::size_t n)
     }
   }
   return 0.5 * (sum + compensation);
+}
+
+// The exact side of face's centre: any three of its points span its circle.
+int FaceSide(const Tess& tess, std::int32_t face, const HalfPlane& h)
+{
+  const auto& org = tess.Origin();
+  const std::vector<Point2>& pts = tess.Points();
+  return CircumcentreSide(h, pts[org[3 * face]], pts[org[3 * face + 1]], pts[org[3 * face + 2]]);
+}
+
+// Whether the centre of the face with representative triangle `face` lies
+// strictly inside the window, exactly: the rounded centre c and its error bound
+// settle almost every face, CircumcentreSide the rest.
+bool CentreInside(const Tess& tess, std::int32_t face, const Point2& c, double error)
+{
+  constexpr double unit = 0x1p-53;
+  for (const HalfPlane& h : tess.GetWindow().EffectiveConstraints())
+  {
+    const double ax = h.a * c.x, by = h.b * c.y;
+    const double value = (ax + by) + h.c;
+    // The centre's coordinates are within `error` of the true ones; the evaluation adds at most
+    // 3 roundings. NaN or infinity fails both tests and goes to the exact predicate.
+    const double bound = (std::fabs(h.a) + std::fabs(h.b)) * error +
+      4.0 * unit * ((std::fabs(ax) + std::fabs(by)) + std::fabs(h.c));
+    if (value < -bound)
+    {
+      continue;
+    }
+    if (value > bound || FaceSide(tess, face, h) >= 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool ClipCanonical(const Tess& tess,
+  std::int32_t a,
+  std::int32_t b,
+  const FaceView& lo,
+  const FaceView& hi,
+  TileEdge& out);
+
+bool ClipEdge(const Tess& tess,
+  std::int32_t from,
+  std::int32_t to,
+  const FaceView& right,
+  const FaceView& left,
+  TileEdge& out)
+{
+  if (from < to)
+  {
+    return ClipCanonical(tess, from, to, right, left, out);
+  }
+  TileEdge reversed;
+  if (!ClipCanonical(tess, to, from, left, right, reversed))
+  {
+    return false;
+  }
+  out.Lo = reversed.Hi;
+  out.Hi = reversed.Lo;
+  return true;
+}
+
+// The part inside the window of the tile edge of a (lower id) with b: the
+// bisector, parametrised as m + t * d with m the midpoint and d = (b - a)
+// turned anticlockwise, from the centre of loFace (right of a->b; -1 for a
+// ghost: t = -infinity) to the centre of hiFace (left of a->b), t_lo < t_hi.
+//
+// Every decision is exact (window_predicates.h): the window meets the bisector
+// in the open interval (L, U), L the last crossing of a line entered along d,
+// U the first crossing of a line left; the edge is kept iff
+// max(t_lo, L) < min(t_hi, U), i.e. the open Voronoi edge meets the open
+// window in a segment of positive length. A centre is compared with a crossing
+// through the sign of the line at the centre: the centre lies on the bisector,
+// so h(centre) = h(m) + t_centre h(d) = (t_centre - t_line) h(d).
+// Only the coordinates (centre bits, crossings m + t d) are rounded.
+//
+// Ends exactly on the window boundary: an end at a face centre on a line
+// keeps the centre's bits (every tile meeting there shares them) but carries
+// the line, so the polygon follows the window from there. Where the end is a
+// window corner (two lines cross the bisector at the same point) it takes the
+// corner's bits; leaving, it is labelled with the earlier of the two lines and
+// entering with the later, so the walk along the boundary from an exit to the
+// next entry never goes round the window the wrong way (it only repeats the
+// corner, which AssemblePolygon drops).
+bool ClipCanonical(const Tess& tess,
+  std::int32_t a,
+  std::int32_t b,
+  const FaceView& lo,
+  const FaceView& hi,
+  TileEdge& out)
+{
+  const std::int32_t loFace = lo.Face, hiFace = hi.Face;
+  const bool loInside = loFace >= 0 && lo.Inside;
+  const bool hiInside = hiFace >= 0 && hi.Inside;
+  if (loInside && hiInside)
+  {
+    out.Lo = { lo.Centre, -1, loFace };
+    out.Hi = { hi.Centre, -1, hiFace };
+    return true;
+  }
+  const Point2& pa = tess.Points()[a];
+  const Point2& pb = tess.Points()[b];
+  const auto& constraints = tess.GetWindow().EffectiveConstraints();
+  const int count = int(constraints.size());
+  int lower = -1, upper = -1;                    // constraints giving L and U
+  bool lowerCorner = false, upperCorner = false; // L (U) is also reached by an adjacent line
+  for (int k = 0; k < count; ++k)
+  {
+    const HalfPlane& h = constraints[k];
+    const int direction = BisectorDirectionSign(h, pa, pb);
+    if (direction == 0)
+    {
+      if (MidpointSide(h, pa, pb) >= 0)
+      {
+        return false; // parallel, on or outside the line
+      }
+      continue;
+    }
+    int& best = direction > 0 ? upper : lower;
+    bool& corner = direction > 0 ? upperCorner : lowerCorner;
+    if (best < 0)
+    {
+      best = k;
+      corner = false;
+      continue;
+    }
+    // Exit: the smallest crossing; entry: the largest.
+    const int order = CompareBisectorCrossings(h, constraints[best], pa, pb) * direction;
+    if (order < 0)
+    {
+      best = k;
+      corner = false;
+    }
+    else if (order == 0)
+    {
+      // A tie at a corner: keep the earlier line on exit, the later on entry.
+      const bool kAfterBest = (best + 1) % count == k;
+      const bool kBeforeBest = (k + 1) % count == best;
+      if ((direction > 0 && kBeforeBest) || (direction < 0 && kAfterBest))
+      {
+        best = k;
+      }
+      corner = corner || kAfterBest || kBeforeBest;
+    }
+  }
+  if (lower < 0 || upper < 0 ||
+    CompareBisectorCrossings(constraints[lower], constraints[upper], pa, pb) >= 0)
+  {
+    return false;
+  }
+  const HalfPlane& hl = constraints[lower];
+  const HalfPlane& hu = constraints[upper];
+  // Centre vs L: sign(t_centre - L) = -FaceSide(face, hl) (the line is entered along d);
+  // centre vs U: sign(t_centre - U) = FaceSide(face, hu).
+  int loVsL = 1, hiVsU = -1;
+  if (loFace >= 0 && !loInside)
+  {
+    if (FaceSide(tess, loFace, hu) >= 0)
+    {
+      return false; // t_lo >= U
+    }
+    loVsL = -FaceSide(tess, loFace, hl);
+  }
+  if (hiFace >= 0 && !hiInside)
+  {
+    if (FaceSide(tess, hiFace, hl) >= 0)
+    {
+      return false; // t_hi <= L
+    }
+    hiVsU = FaceSide(tess, hiFace, hu);
+  }
+  const std::vector<Point2>& corners = tess.GetWindow().Vertices();
+  // Window corner k is where constraint k-1 meets k: for a tie between k and k+1 it is k+1.
+  const auto cornerIndex = [&](int line, bool exit) { return exit ? (line + 1) % count : line; };
+  const auto cornerOf = [&](int line, bool exit)
+  {
+    return EdgeEnd{
+      corners[std::size_t(cornerIndex(line, exit))], line, -2 - cornerIndex(line, exit)
+    };
+  };
+  const double mx = 0.5 * (pa.x + pb.x), my = 0.5 * (pa.y + pb.y);
+  const double dx = -(pb.y - pa.y), dy = pb.x - pa.x;
+  const auto crossing = [&](const HalfPlane& h)
+  {
+    const double t = -(h.a * mx + h.b * my + h.c) / (h.a * dx + h.b * dy);
+    return Point2{ mx + t * dx, my + t * dy };
+  };
+  if (loFace < 0 || loVsL < 0)
+  {
+    out.Lo = lowerCorner ? cornerOf(lower, false) : EdgeEnd{ crossing(hl), lower, -1 };
+  }
+  else if (loVsL == 0)
+  {
+    out.Lo = lowerCorner ? cornerOf(lower, false) : EdgeEnd{ lo.Centre, lower, loFace };
+  }
+  else
+  {
+    out.Lo = { lo.Centre, -1, loFace };
+  }
+  if (hiFace < 0 || hiVsU > 0)
+  {
+    out.Hi = upperCorner ? cornerOf(upper, true) : EdgeEnd{ crossing(hu), upper, -1 };
+  }
+  else if (hiVsU == 0)
+  {
+    out.Hi = upperCorner ? cornerOf(upper, true) : EdgeEnd{ hi.Centre, upper, hiFace };
+  }
+  else
+  {
+    out.Hi = { hi.Centre, -1, hiFace };
+  }
+  return true;
+}
+
+// Returns the number of sides (contiguities with points and window edges), decided exactly.
+std::int32_t AssemblePolygon(const Tess& tess,
+  const std::vector<TileEdge>& edges,
+  std::vector<Point2>& polygon)
+{
+  const std::vector<Point2>& corners = tess.GetWindow().Vertices();
+  const int count = int(corners.size());
+  polygon.clear();
+  if (edges.empty())
+  {
+    polygon = corners;
+    return count;
+  }
+  // Sides: one per tile edge, plus the window pieces between an exit and the next entry, counted
+  // from the exact decisions (the rounded vertices may coincide where the true ones do not).
+  std::int32_t sides = std::int32_t(edges.size());
+  for (std::size_t s = 0; s < edges.size(); ++s)
+  {
+    const TileEdge& edge = edges[s];
+    polygon.push_back(edge.Lo.P);
+    if (edge.Hi.Constraint < 0)
+    {
+      continue; // a face centre: the next edge starts there
+    }
+    polygon.push_back(edge.Hi.P);
+    const EdgeEnd& next = edges[(s + 1) % edges.size()].Lo;
+    if (next.Constraint < 0 || (next.Where == edge.Hi.Where && next.Where != -1))
+    {
+      continue; // leaves and re-enters at one point: no window side
+    }
+    // Leave on constraint a, follow the window boundary through corners a+1 ..
+    // b, re-enter on b: pieces of lines a .. b, less those of zero length (leaving
+    // at corner a+1, or entering at corner b).
+    const int exit = edge.Hi.Constraint;
+    const int entry = next.Constraint;
+    sides += (entry - exit + count) % count + 1;
+    sides -= edge.Hi.Where == -2 - (exit + 1) % count ? 1 : 0;
+    sides -= next.Where == -2 - entry ? 1 : 0;
+    for (int k = exit; k != entry;)
+    {
+      k = (k + 1) % count;
+      polygon.push_back(corners[k]);
+    }
+  }
+  // Repeated vertices (an end exactly at a corner, or distinct ends rounded to
+  // one point) are dropped.
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < polygon.size(); ++k)
+  {
+    if (kept == 0 || polygon[k] != polygon[kept - 1])
+    {
+      polygon[kept++] = polygon[k];
+    }
+  }
+  while (kept > 1 && polygon[kept - 1] == polygon[0])
+  {
+    --kept;
+  }
+  polygon.resize(kept);
+  return sides;
+}
+
+// The clipped edges of v's tile, anticlockwise from the edge to its smallest
+// neighbour id (so the polygon does not depend on where the ring starts, nor on
+// the diagonals stored in degenerate faces).
+// faces.Label(t) is triangle t's face (-2 - t for a ghost), faces.View(label)
+// its centre and inside flag.
+template<class Faces>
+void RingTileEdges(const Tess& tess,
+  const Faces& faces,
+  std::int32_t v,
+  std::int32_t vertexEdge,
+  std::vector<TileEdge>& edges,
+  std::vector<std::int32_t>& ring)
+{
+  edges.clear();
+  const auto& org = tess.Origin();
+  const auto& twin = tess.Twin();
+  ring.clear();
+  std::size_t first = 0;
+  std::int32_t smallest = std::numeric_limits<std::int32_t>::max();
+  std::int32_t e = vertexEdge;
+  do
+  {
+    // Diagonals of degenerate faces (the same face on both sides) depend on the insertion order:
+    // they are never the start.
+    const std::int32_t j = org[Tess::Next(e)];
+    if (j >= 0 && j < smallest && faces.Label(e / 3) != faces.Label(twin[e] / 3))
+    {
+      smallest = j;
+      first = ring.size();
+    }
+    ring.push_back(e);
+    e = tess.RingNext(e);
+  } while (e != vertexEdge);
+  TileEdge edge;
+  for (std::size_t k = 0; k < ring.size(); ++k)
+  {
+    e = ring[(first + k) % ring.size()];
+    const std::int32_t j = org[Tess::Next(e)];
+    const std::int32_t left = faces.Label(e / 3);
+    const std::int32_t right = faces.Label(twin[e] / 3);
+    if (j >= 0 && left != right && ClipEdge(tess, v, j, faces.View(right), faces.View(left), edge))
+    {
+      edges.push_back(edge);
+    }
+  }
 }
 
 } // namespace
@@ -279,33 +632,27 @@ const std::int32_t* TessellationDual::DegeneratePolygon(std::int32_t face, std::
 }
 
 // Degenerate faces take their centre from their three smallest ids; every face
-// gets its inside-the-window flag.
+// gets its inside-the-window flag, decided exactly: the rounded centre and its
+// error bound settle almost every face, CircumcentreSide the rest.
 void TessellationDual::ComputeCentres()
 {
   const std::vector<Point2>& pts = this->Tess.Points();
-  const auto& constraints = this->Tess.GetWindow().EffectiveConstraints();
   for (const std::int32_t rep : this->DegenerateReps)
   {
     std::int32_t size = 0;
     const std::int32_t* polygon = this->DegeneratePolygon(rep, size);
     std::int32_t ids[3] = { 0, 0, 0 };
     std::partial_sort_copy(polygon, polygon + size, ids, ids + 3);
-    double unused = 0.0;
-    this->Data[rep].Centre = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], unused);
+    this->Data[rep].Centre =
+      Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], this->CentreError[rep]);
   }
   for (std::int32_t t = 0; t < std::int32_t(this->Data.size()); ++t)
   {
-    if (this->Data[t].Face != t)
+    if (this->Data[t].Face == t)
     {
-      continue;
+      this->Data[t].Inside =
+        CentreInside(this->Tess, t, this->Data[t].Centre, this->CentreError[t]) ? 1 : 0;
     }
-    const Point2 c = this->Data[t].Centre;
-    bool inside = std::isfinite(c.x) && std::isfinite(c.y);
-    for (const HalfPlane& h : constraints)
-    {
-      inside = inside && h.a * c.x + h.b * c.y + h.c < 0.0;
-    }
-    this->Data[t].Inside = inside ? 1 : 0;
   }
   std::vector<double>().swap(this->CentreError);
 }
@@ -313,99 +660,13 @@ void TessellationDual::ComputeCentres()
 // ---------------------------------------------------------------------------------------------
 // Tile edges.
 
-bool TessellationDual::ClipEdge(std::int32_t from,
-  std::int32_t to,
-  std::int32_t rightFace,
-  std::int32_t leftFace,
-  TileEdge& out) const
+FaceView TessellationDual::View(std::int32_t label) const
 {
-  if (from < to)
+  if (label < 0)
   {
-    return this->ClipCanonical(from, to, rightFace, leftFace, out);
+    return FaceView();
   }
-  TileEdge reversed;
-  if (!this->ClipCanonical(to, from, leftFace, rightFace, reversed))
-  {
-    return false;
-  }
-  out.Lo = reversed.Hi;
-  out.Hi = reversed.Lo;
-  return true;
-}
-
-// The part inside the window of the tile edge of a (lower id) with b: the
-// bisector, parametrised as m + t * d with m the midpoint and d = (b - a)
-// turned anticlockwise, from the centre of loFace (right of a->b; -1 for a
-// ghost: t = -infinity) to the centre of hiFace (left of a->b).
-bool TessellationDual::ClipCanonical(std::int32_t a,
-  std::int32_t b,
-  std::int32_t loFace,
-  std::int32_t hiFace,
-  TileEdge& out) const
-{
-  const bool loInside = loFace >= 0 && this->Data[loFace].Inside;
-  const bool hiInside = hiFace >= 0 && this->Data[hiFace].Inside;
-  if (loInside && hiInside)
-  {
-    out.Lo = { this->Data[loFace].Centre, -1 };
-    out.Hi = { this->Data[hiFace].Centre, -1 };
-    return true;
-  }
-  const Point2& pa = this->Tess.Points()[a];
-  const Point2& pb = this->Tess.Points()[b];
-  const double mx = 0.5 * (pa.x + pb.x), my = 0.5 * (pa.y + pb.y);
-  const double dx = -(pb.y - pa.y), dy = pb.x - pa.x;
-  const double infinity = std::numeric_limits<double>::infinity();
-  double lower = -infinity, upper = infinity;
-  int lowerConstraint = -1, upperConstraint = -1;
-  const auto& constraints = this->Tess.GetWindow().EffectiveConstraints();
-  for (std::size_t k = 0; k < constraints.size(); ++k)
-  {
-    const HalfPlane& h = constraints[k];
-    const double f0 = h.a * mx + h.b * my + h.c;
-    const double f1 = h.a * dx + h.b * dy;
-    if (f1 > 0.0)
-    {
-      const double t = -f0 / f1;
-      if (t < upper)
-      {
-        upper = t;
-        upperConstraint = int(k);
-      }
-    }
-    else if (f1 < 0.0)
-    {
-      const double t = -f0 / f1;
-      if (t > lower)
-      {
-        lower = t;
-        lowerConstraint = int(k);
-      }
-    }
-    else if (f0 >= 0.0)
-    {
-      return false;
-    }
-  }
-  if (lowerConstraint < 0 || upperConstraint < 0 || !(lower < upper))
-  {
-    return false;
-  }
-  const double dd = dx * dx + dy * dy;
-  const auto parameter = [&](const Point2& c) { return ((c.x - mx) * dx + (c.y - my) * dy) / dd; };
-  if (loFace >= 0 && !loInside && parameter(this->Data[loFace].Centre) >= upper)
-  {
-    return false; // the whole edge lies beyond the window
-  }
-  if (hiFace >= 0 && !hiInside && parameter(this->Data[hiFace].Centre) <= lower)
-  {
-    return false;
-  }
-  out.Lo = loInside ? EdgeEnd{ this->Data[loFace].Centre, -1 }
-                    : EdgeEnd{ { mx + lower * dx, my + lower * dy }, lowerConstraint };
-  out.Hi = hiInside ? EdgeEnd{ this->Data[hiFace].Centre, -1 }
-                    : EdgeEnd{ { mx + upper * dx, my + upper * dy }, upperConstraint };
-  return true;
+  return { label, this->Data[label].Centre, this->Data[label].Inside != 0 };
 }
 
 // Collinear case: the neighbours along the line (-1 where there is none).
@@ -422,110 +683,29 @@ void TessellationDual::TileEdgesOf(std::int32_t v,
   std::vector<TileEdge>& edges,
   std::vector<std::int32_t>& ring) const
 {
-  edges.clear();
-  TileEdge edge;
-  if (!this->Tess.IsTwoDimensional())
+  if (this->Tess.IsTwoDimensional())
   {
-    // Two parallel edges; either cyclic order is anticlockwise, start at the
-    // smaller id.
-    std::int32_t next = -1;
-    const std::int32_t previous = this->Neighbors1D(v, next);
-    std::int32_t order[2] = { next, previous };
-    if (previous >= 0 && (next < 0 || previous < next))
-    {
-      std::swap(order[0], order[1]);
-    }
-    for (const std::int32_t j : order)
-    {
-      if (j >= 0 && this->ClipEdge(v, j, -1, -1, edge))
-      {
-        edges.push_back(edge);
-      }
-    }
+    RingTileEdges(this->Tess, *this, v, vertexEdge, edges, ring);
     return;
   }
-  // One walk collects the ring; the tile starts at the edge to the smallest neighbour id, so the
-  // polygon does not depend on where the ring happens to start.
-  const auto& org = this->Tess.Origin();
-  const auto& twin = this->Tess.Twin();
-  ring.clear();
-  std::size_t first = 0;
-  std::int32_t smallest = std::numeric_limits<std::int32_t>::max();
-  std::int32_t e = vertexEdge;
-  do
+  // Two parallel edges; either cyclic order is anticlockwise, start at the
+  // smaller id.
+  edges.clear();
+  TileEdge edge;
+  std::int32_t next = -1;
+  const std::int32_t previous = this->Neighbors1D(v, next);
+  std::int32_t order[2] = { next, previous };
+  if (previous >= 0 && (next < 0 || previous < next))
   {
-    const std::int32_t j = org[Tess::Next(e)];
-    if (j >= 0 && j < smallest)
-    {
-      smallest = j;
-      first = ring.size();
-    }
-    ring.push_back(e);
-    e = this->Tess.RingNext(e);
-  } while (e != vertexEdge);
-  for (std::size_t k = 0; k < ring.size(); ++k)
+    std::swap(order[0], order[1]);
+  }
+  for (const std::int32_t j : order)
   {
-    e = ring[(first + k) % ring.size()];
-    const std::int32_t j = org[Tess::Next(e)];
-    const std::int32_t left = this->Data[e / 3].Face;
-    const std::int32_t right = this->Data[twin[e] / 3].Face;
-    if (j >= 0 && left != right &&
-      this->ClipEdge(v, j, right < 0 ? -1 : right, left < 0 ? -1 : left, edge))
+    if (j >= 0 && ClipEdge(this->Tess, v, j, FaceView(), FaceView(), edge))
     {
       edges.push_back(edge);
     }
   }
-}
-
-void TessellationDual::AssemblePolygon(const std::vector<TileEdge>& edges,
-  std::vector<Point2>& polygon) const
-{
-  const std::vector<Point2>& corners = this->Tess.GetWindow().Vertices();
-  const int count = int(corners.size());
-  polygon.clear();
-  if (edges.empty())
-  {
-    polygon = corners;
-    return;
-  }
-  for (std::size_t s = 0; s < edges.size(); ++s)
-  {
-    const TileEdge& edge = edges[s];
-    polygon.push_back(edge.Lo.P);
-    if (edge.Hi.Constraint < 0)
-    {
-      continue; // a face centre: the next edge starts there
-    }
-    polygon.push_back(edge.Hi.P);
-    // Leave on constraint a, follow the window boundary through corners a+1 ..
-    // b, re-enter on b.
-    const int exit = edge.Hi.Constraint;
-    const int entry = edges[(s + 1) % edges.size()].Lo.Constraint;
-    if (entry < 0)
-    {
-      continue;
-    }
-    for (int k = exit; k != entry;)
-    {
-      k = (k + 1) % count;
-      polygon.push_back(corners[k]);
-    }
-  }
-  // Sides of zero length (an edge ending exactly at a corner) are not
-  // contiguities.
-  std::size_t kept = 0;
-  for (std::size_t k = 0; k < polygon.size(); ++k)
-  {
-    if (kept == 0 || polygon[k] != polygon[kept - 1])
-    {
-      polygon[kept++] = polygon[k];
-    }
-  }
-  while (kept > 1 && polygon[kept - 1] == polygon[0])
-  {
-    --kept;
-  }
-  polygon.resize(kept);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -549,12 +729,12 @@ TileSet TessellationDual::Tiles() const
   {
     const std::int32_t v = this->Order[k];
     this->TileEdgesOf(v, planar ? this->OrderEdge[k] : -1, edges, ring);
-    this->AssemblePolygon(edges, polygon);
+    const std::int32_t sides = AssemblePolygon(this->Tess, edges, polygon);
     tiles.PointIds.push_back(v);
     tiles.Vertices.insert(tiles.Vertices.end(), polygon.begin(), polygon.end());
     tiles.Offsets.push_back(std::int64_t(tiles.Vertices.size()));
     tiles.Areas.push_back(PolygonArea(polygon.data(), polygon.size()));
-    tiles.NeighborCounts.push_back(std::int32_t(polygon.size()));
+    tiles.NeighborCounts.push_back(sides);
   }
   return tiles;
 }
@@ -603,7 +783,7 @@ ContiguityGraph TessellationDual::Contiguities() const
       const std::int32_t previous = this->Neighbors1D(v, next);
       for (const std::int32_t j : { previous, next })
       {
-        if (j > v && this->ClipEdge(v, j, -1, -1, edge))
+        if (j > v && ClipEdge(this->Tess, v, j, FaceView(), FaceView(), edge))
         {
           around.emplace_back(j, 0);
         }
@@ -619,7 +799,7 @@ ContiguityGraph TessellationDual::Contiguities() const
         const std::int32_t left = this->Data[e / 3].Face;
         const std::int32_t right = this->Data[twin[e] / 3].Face;
         if (j > v && left != right &&
-          this->ClipEdge(v, j, right < 0 ? -1 : right, left < 0 ? -1 : left, edge))
+          ClipEdge(this->Tess, v, j, this->View(right), this->View(left), edge))
         {
           around.emplace_back(j, 0);
         }
@@ -711,6 +891,387 @@ ContiguityGraph ComputeContiguityGraph(const DirichletTessellation& tessellation
 DelaunayFaces ComputeDelaunayFaces(const DirichletTessellation& tessellation, bool splitDegenerate)
 {
   return TessellationDual(tessellation).Faces(splitDegenerate);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Local derivation: only the faces around given points.
+
+namespace
+{
+
+// Faces around chosen points, labelled on demand with the full derivation's rules: a face is the
+// cluster of exactly co-circular triangles (connected, since the points on an empty circle are
+// triangulated by triangles on that circle), labelled by its smallest triangle index, with its
+// centre from its three smallest point ids (one triangle: its sorted ids) through the same
+// Circumcentre, so the bits match TessellationDual's.
+class LocalFaces
+{
+public:
+  LocalFaces(const Tess& tess, std::size_t expectedTriangles)
+    : T(tess)
+  {
+    std::size_t capacity = 64;
+    while (capacity < 2 * expectedTriangles)
+    {
+      capacity *= 2;
+    }
+    this->Keys.assign(capacity, -1);
+    this->Values.assign(capacity, -1);
+  }
+
+  std::int32_t Label(std::int32_t t) const
+  {
+    const std::int32_t entry = this->Find(t);
+    return entry < 0 ? -2 - t : this->Entries[entry].Label;
+  }
+
+  FaceView View(std::int32_t label) const
+  {
+    if (label < 0)
+    {
+      return FaceView();
+    }
+    const Entry& entry = this->Entries[this->Find(label)];
+    return { label, entry.Centre, entry.Inside };
+  }
+
+  /// The points of triangle t's face (none for a ghost); t must be resolved.
+  void FacePoints(std::int32_t t, const std::int32_t*& begin, const std::int32_t*& end) const
+  {
+    const std::int32_t index = this->Find(t);
+    if (index < 0)
+    {
+      begin = end = nullptr;
+      return;
+    }
+    const Entry& entry = this->Entries[index];
+    begin = this->Points.data() + entry.PointStart;
+    end = begin + entry.PointCount;
+  }
+
+  // Ghost: a vertex is Tess::Ghost (inline here: this runs for every ring triangle).
+  bool Ghost(std::int32_t t) const
+  {
+    const std::int32_t* v = this->T.Origin().data() + 3 * t;
+    return v[0] < 0 || v[1] < 0 || v[2] < 0;
+  }
+
+  void Resolve(std::int32_t t)
+  {
+    if (this->Ghost(t) || this->Find(t) >= 0)
+    {
+      return; // ghosts stay unlisted: Label gives -2 - t
+    }
+    const auto& org = this->T.Origin();
+    const auto& twin = this->T.Twin();
+    const std::vector<Point2>& pts = this->T.Points();
+    // Flood the triangles on t's circle; members are marked with a placeholder entry.
+    constexpr std::int32_t Pending = -2;
+    this->Cluster.assign(1, t);
+    this->Insert(t, Pending);
+    for (std::size_t k = 0; k < this->Cluster.size(); ++k)
+    {
+      const std::int32_t s = this->Cluster[k];
+      for (std::int32_t side = 0; side < 3; ++side)
+      {
+        const std::int32_t f = twin[3 * s + side];
+        const std::int32_t u = f / 3;
+        if (!this->Ghost(u) && this->Find(u) == -1 &&
+          incircle_fast(
+            pts[org[3 * t]], pts[org[3 * t + 1]], pts[org[3 * t + 2]], pts[org[Tess::Prev(f)]]) ==
+            0)
+        {
+          this->Insert(u, Pending);
+          this->Cluster.push_back(u);
+        }
+      }
+    }
+    Entry entry;
+    entry.Label = *std::min_element(this->Cluster.begin(), this->Cluster.end());
+    entry.PointStart = std::int32_t(this->Points.size());
+    if (this->Cluster.size() == 1)
+    {
+      std::int32_t a = org[3 * t], b = org[3 * t + 1], c = org[3 * t + 2];
+      if (b < a)
+      {
+        std::swap(a, b);
+      }
+      if (c < b)
+      {
+        std::swap(b, c);
+      }
+      if (b < a)
+      {
+        std::swap(a, b);
+      }
+      this->Points.insert(this->Points.end(), { a, b, c });
+    }
+    else
+    {
+      for (const std::int32_t s : this->Cluster)
+      {
+        this->Points.insert(this->Points.end(), { org[3 * s], org[3 * s + 1], org[3 * s + 2] });
+      }
+      std::sort(this->Points.begin() + entry.PointStart, this->Points.end());
+      this->Points.erase(std::unique(this->Points.begin() + entry.PointStart, this->Points.end()),
+        this->Points.end());
+    }
+    entry.PointCount = std::int32_t(this->Points.size()) - entry.PointStart;
+    const std::int32_t* ids = this->Points.data() + entry.PointStart;
+    double error = 0.0;
+    entry.Centre = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], error);
+    entry.Inside = CentreInside(this->T, entry.Label, entry.Centre, error);
+    const std::int32_t index = std::int32_t(this->Entries.size());
+    this->Entries.push_back(entry);
+    for (const std::int32_t s : this->Cluster)
+    {
+      this->Values[this->Slot(s)] = index;
+    }
+  }
+
+private:
+  struct Entry
+  {
+    std::int32_t Label = -1;
+    Point2 Centre;
+    bool Inside = false;
+    std::int32_t PointStart = 0;
+    std::int32_t PointCount = 0;
+  };
+
+  std::size_t Slot(std::int32_t t) const
+  {
+    const std::size_t mask = this->Keys.size() - 1;
+    std::size_t slot = (std::uint32_t(t) * 2654435761U) & mask;
+    while (this->Keys[slot] != t && this->Keys[slot] != -1)
+    {
+      slot = (slot + 1) & mask;
+    }
+    return slot;
+  }
+  /// Entry index of t; -1 when t is not listed, -2 while its cluster is being flooded.
+  std::int32_t Find(std::int32_t t) const
+  {
+    const std::size_t slot = this->Slot(t);
+    return this->Keys[slot] == t ? this->Values[slot] : -1;
+  }
+  void Insert(std::int32_t t, std::int32_t value)
+  {
+    if (2 * (this->Used + 1) > this->Keys.size())
+    {
+      std::vector<std::int32_t> keys(2 * this->Keys.size(), -1), values(2 * this->Keys.size(), -1);
+      keys.swap(this->Keys);
+      values.swap(this->Values);
+      for (std::size_t k = 0; k < keys.size(); ++k)
+      {
+        if (keys[k] != -1)
+        {
+          const std::size_t slot = this->Slot(keys[k]);
+          this->Keys[slot] = keys[k];
+          this->Values[slot] = values[k];
+        }
+      }
+    }
+    const std::size_t slot = this->Slot(t);
+    this->Keys[slot] = t;
+    this->Values[slot] = value;
+    ++this->Used;
+  }
+
+  const Tess& T;
+  std::vector<std::int32_t> Keys, Values; // open addressing: triangle -> entry index
+  std::size_t Used = 0;
+  std::vector<Entry> Entries;
+  std::vector<std::int32_t> Points; // per entry, its face's point ids, ascending
+  std::vector<std::int32_t> Cluster;
+};
+
+// For each accepted id (first occurrence), a half-edge leaving it: one pass over the half-edge
+// arrays, stopped once every id is found. Returns (id, edge) pairs in the order of ids; ids that
+// are not vertices (rejected, duplicate, removed) never occur in the arrays and are dropped.
+// (Status() is not asked: it costs O(removed points) per call.)
+std::vector<std::pair<std::int32_t, std::int32_t>> VertexEdges(const Tess& tess,
+  const std::vector<std::int32_t>& ids)
+{
+  std::vector<std::pair<std::int32_t, std::int32_t>> found;
+  std::vector<std::int32_t> slot(tess.PointCount(), -1);
+  for (const std::int32_t id : ids)
+  {
+    if (id >= 0 && std::size_t(id) < tess.PointCount() && slot[id] < 0)
+    {
+      slot[id] = std::int32_t(found.size());
+      found.emplace_back(id, -1);
+    }
+  }
+  std::size_t missing = found.size();
+  const auto& org = tess.Origin();
+  for (std::size_t e = 0; e < org.size() && missing > 0; ++e)
+  {
+    const std::int32_t v = org[e];
+    if (v >= 0 && slot[v] >= 0 && found[slot[v]].second < 0)
+    {
+      found[slot[v]].second = std::int32_t(e);
+      --missing;
+    }
+  }
+  found.erase(std::remove_if(found.begin(),
+                found.end(),
+                [](const std::pair<std::int32_t, std::int32_t>& f) { return f.second < 0; }),
+    found.end());
+  return found;
+}
+
+void AppendMates(const Tess& tess,
+  const LocalFaces& faces,
+  std::int32_t v,
+  const std::vector<std::int32_t>& ring,
+  std::vector<std::int32_t>& scratch,
+  FaceMateLists& mates)
+{
+  scratch.clear();
+  const auto& org = tess.Origin();
+  for (const std::int32_t e : ring)
+  {
+    const std::int32_t* begin = nullptr;
+    const std::int32_t* end = nullptr;
+    faces.FacePoints(e / 3, begin, end);
+    scratch.insert(scratch.end(), begin, end);
+    if (org[Tess::Next(e)] >= 0)
+    {
+      scratch.push_back(org[Tess::Next(e)]);
+    }
+  }
+  std::sort(scratch.begin(), scratch.end());
+  scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
+  mates.PointIds.push_back(v);
+  for (const std::int32_t j : scratch)
+  {
+    if (j != v)
+    {
+      mates.Ids.push_back(j);
+    }
+  }
+  mates.Offsets.push_back(std::int64_t(mates.Ids.size()));
+}
+
+// The collinear case: from the full derivation (no faces; the line is short-lived).
+TileSet CollinearTilesOf(const Tess& tess,
+  const std::vector<std::int32_t>& ids,
+  FaceMateLists* mates)
+{
+  const TileSet all = TessellationDual(tess).Tiles();
+  std::vector<std::int32_t> index(tess.PointCount(), -1);
+  for (std::size_t k = 0; k < all.PointIds.size(); ++k)
+  {
+    index[all.PointIds[k]] = std::int32_t(k);
+  }
+  const auto& line = tess.CollinearPoints();
+  std::vector<std::int32_t> position(tess.PointCount(), -1);
+  for (std::size_t k = 0; k < line.size(); ++k)
+  {
+    position[line[k]] = std::int32_t(k);
+  }
+  TileSet tiles;
+  tiles.Offsets.push_back(0);
+  for (const std::int32_t id : ids)
+  {
+    if (id < 0 || std::size_t(id) >= index.size() || index[id] < 0)
+    {
+      continue;
+    }
+    const std::size_t k = std::size_t(index[id]);
+    index[id] = -1; // repeats are skipped
+    tiles.PointIds.push_back(id);
+    tiles.Vertices.insert(tiles.Vertices.end(),
+      all.Vertices.begin() + all.Offsets[k],
+      all.Vertices.begin() + all.Offsets[k + 1]);
+    tiles.Offsets.push_back(std::int64_t(tiles.Vertices.size()));
+    tiles.Areas.push_back(all.Areas[k]);
+    tiles.NeighborCounts.push_back(all.NeighborCounts[k]);
+    if (mates)
+    {
+      mates->PointIds.push_back(id);
+      const std::int32_t p = position[id];
+      std::int32_t pair[2] = { p > 0 ? line[p - 1] : -1,
+        p + 1 < std::int32_t(line.size()) ? line[p + 1] : -1 };
+      std::sort(pair, pair + 2);
+      for (const std::int32_t j : pair)
+      {
+        if (j >= 0)
+        {
+          mates->Ids.push_back(j);
+        }
+      }
+      mates->Offsets.push_back(std::int64_t(mates->Ids.size()));
+    }
+  }
+  return tiles;
+}
+
+TileSet LocalTiles(const Tess& tess,
+  const std::vector<std::int32_t>& ids,
+  bool wantTiles,
+  FaceMateLists* mates)
+{
+  if (mates)
+  {
+    *mates = FaceMateLists();
+    mates->Offsets.push_back(0);
+  }
+  if (!tess.IsTwoDimensional())
+  {
+    return CollinearTilesOf(tess, ids, mates);
+  }
+  TileSet tiles;
+  tiles.Offsets.push_back(0);
+  const std::vector<std::pair<std::int32_t, std::int32_t>> starts = VertexEdges(tess, ids);
+  LocalFaces faces(tess, 8 * starts.size());
+  std::vector<TileEdge> edges;
+  std::vector<Point2> polygon;
+  std::vector<std::int32_t> ring, scratch;
+  for (const auto& [v, start] : starts)
+  {
+    // Label the faces of the ring first (RingTileEdges reads them).
+    std::int32_t e = start;
+    do
+    {
+      faces.Resolve(e / 3);
+      e = tess.RingNext(e);
+    } while (e != start);
+    RingTileEdges(tess, faces, v, start, edges, ring);
+    if (mates)
+    {
+      AppendMates(tess, faces, v, ring, scratch, *mates);
+    }
+    if (!wantTiles)
+    {
+      continue;
+    }
+    const std::int32_t sides = AssemblePolygon(tess, edges, polygon);
+    tiles.PointIds.push_back(v);
+    tiles.Vertices.insert(tiles.Vertices.end(), polygon.begin(), polygon.end());
+    tiles.Offsets.push_back(std::int64_t(tiles.Vertices.size()));
+    tiles.Areas.push_back(PolygonArea(polygon.data(), polygon.size()));
+    tiles.NeighborCounts.push_back(sides);
+  }
+  return tiles;
+}
+
+} // namespace
+
+TileSet ComputeTilesOf(const DirichletTessellation& tessellation,
+  const std::vector<std::int32_t>& ids,
+  FaceMateLists* mates)
+{
+  return LocalTiles(tessellation, ids, true, mates);
+}
+
+FaceMateLists ComputeFaceMatesOf(const DirichletTessellation& tessellation,
+  const std::vector<std::int32_t>& ids)
+{
+  FaceMateLists mates;
+  LocalTiles(tessellation, ids, false, &mates);
+  return mates;
 }
 
 } // namespace tessera

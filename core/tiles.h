@@ -4,6 +4,10 @@
 // contiguities and the point coordinates"): tile polygons with their areas and neighbour counts,
 // the contiguity graph with half-neighbours, and the Delaunay faces.
 //
+// Local derivation (ComputeTilesOf): the same tiles for chosen points only, labelling just the
+// faces around them; with face mates, it is what an incremental user (areal_average) needs to
+// re-derive only the tiles a removal or insertion can change.
+//
 // Faces. Triangles of the stored triangulation whose circumcircles coincide exactly (4 or more
 // co-circular points, decided with the exact incircle) are merged into one degenerate face. A
 // face's centre is computed once, from its three smallest point ids in ascending order, so every
@@ -15,13 +19,21 @@
 // Window constraints (the paper's second kind of object) are handled here. The edge a tile shares
 // with point j runs along the bisector of the two points between the centres of the faces on
 // either side of the Delaunay edge (a ray where that face is a ghost). It is clipped once, to the
-// window, from the point pair in ascending id order, so both tiles agree on it; a face centre
-// that lies inside the window (tested in floating point, once per face) is kept as is, and the
-// crossings with the window lines are computed from the bisector's midpoint and direction, which
-// stays accurate even when the far centre is huge. Between an edge leaving the window on
-// constraint a and the next one entering on constraint b, the tile follows the window boundary
-// through corners a+1 .. b. Each polygon side is then one contiguity: with a point (both tiles see
-// it) or with a constraint, so NeighborCount counts window edges as in the paper, and
+// window, from the point pair in ascending id order, so both tiles agree on it. Every decision
+// about the window is exact (window_predicates.h; "exact predicates, inexact constructions"):
+// whether a face centre lies strictly inside (the rounded centre with its error bound settles
+// almost every face, the exact predicate the rest), which window lines the bisector crosses
+// first and last, and whether the face centres lie before or after those crossings. So a
+// contiguity (kind 0) is reported iff the open Voronoi edge meets the open window in a segment of
+// positive length, and half-neighbours iff their degenerate vertex is strictly inside. Only the
+// coordinates are rounded: a kept face centre, a crossing computed from the bisector's midpoint
+// and direction (accurate even when the far centre is huge), a window corner where the edge
+// passes exactly through it. Between an edge leaving the window on constraint a and the next one
+// entering on constraint b, the tile follows the window boundary through corners a+1 .. b. Each
+// polygon side is then one contiguity: with a point (both tiles see it) or with a constraint.
+// NeighborCount counts these sides from the exact decisions (two rounded vertices may coincide
+// where the true ones do not; the polygon drops such repeats, the count does not), as in the
+// paper, and
 //   sum of NeighborCount + (constraint sides) + 2 * constraints = 4 * constraints + 6 * points - 6
 // when no vertex is degenerate (section 2.3).
 
@@ -60,6 +72,12 @@ struct DelaunayFaces
   std::vector<std::int32_t> PointIds;
 };
 
+namespace tiles_detail
+{
+struct TileEdge; // a clipped tile edge (tiles.cpp)
+struct FaceView; // a face as a tile edge sees it (tiles.cpp)
+} // namespace tiles_detail
+
 /// Face structure of a tessellation (merged degenerate faces, centres): computed once, then each
 /// result is derived from it. Holds a reference: the tessellation must outlive it and not change.
 class TessellationDual
@@ -75,17 +93,11 @@ public:
   /// Number of merged faces with 4 or more points.
   std::size_t DegenerateFaceCount() const { return this->DegenerateReps.size(); }
 
-private:
-  struct EdgeEnd
-  {
-    Point2 P;
-    int Constraint; ///< window constraint the end lies on; -1 for a face centre
-  };
-  struct TileEdge
-  {
-    EdgeEnd Lo, Hi;
-  };
+  // Face access for the tile walk (tiles.cpp): triangle t's face label, and a face's view.
+  std::int32_t Label(std::int32_t t) const { return this->Data[t].Face; }
+  tiles_detail::FaceView View(std::int32_t label) const;
 
+private:
   void ComputeTriangleCentres();
   bool Cocircular(std::int32_t t, std::int32_t f) const;
   void LabelFaces();
@@ -94,21 +106,10 @@ private:
     std::vector<std::int32_t>& stack,
     std::vector<std::int32_t>& boundary);
   void ComputeCentres();
-  bool ClipEdge(std::int32_t from,
-    std::int32_t to,
-    std::int32_t rightFace,
-    std::int32_t leftFace,
-    TileEdge& out) const;
-  bool ClipCanonical(std::int32_t a,
-    std::int32_t b,
-    std::int32_t loFace,
-    std::int32_t hiFace,
-    TileEdge& out) const;
   void TileEdgesOf(std::int32_t v,
     std::int32_t vertexEdge,
-    std::vector<TileEdge>& edges,
+    std::vector<tiles_detail::TileEdge>& edges,
     std::vector<std::int32_t>& ring) const;
-  void AssemblePolygon(const std::vector<TileEdge>& edges, std::vector<Point2>& polygon) const;
   const std::int32_t* DegeneratePolygon(std::int32_t face, std::int32_t& size) const;
   std::int32_t Neighbors1D(std::int32_t v, std::int32_t& next) const;
 
@@ -138,6 +139,30 @@ private:
 };
 
 TileSet ComputeTiles(const DirichletTessellation& tessellation);
+
+/// Per point, the ids of the points that share a face with it (its Delaunay ring neighbours and
+/// the other points of its merged degenerate faces), ascending: the points whose tiles can change
+/// when it is removed.
+struct FaceMateLists
+{
+  std::vector<std::int32_t> PointIds;
+  std::vector<std::int64_t> Offsets; ///< point k's mates are Ids[Offsets[k], Offsets[k+1])
+  std::vector<std::int32_t> Ids;
+};
+
+/// The tiles of the given points only, in the given order (ids that are not accepted, and
+/// repeats, are skipped), bit for bit the tiles TessellationDual(tessellation).Tiles() gives for
+/// them: the same faces (degenerate ones merged, centres from their three smallest ids) and the
+/// same clipping. Only the faces around the given points are labelled, so the time is
+/// proportional to their rings, plus one pass over the half-edge arrays to find an edge leaving
+/// each point. With mates, also fills their face mates (same order as the tiles).
+TileSet ComputeTilesOf(const DirichletTessellation& tessellation,
+  const std::vector<std::int32_t>& ids,
+  FaceMateLists* mates = nullptr);
+
+/// The face mates of the given points only (same rules as ComputeTilesOf), without the tiles.
+FaceMateLists ComputeFaceMatesOf(const DirichletTessellation& tessellation,
+  const std::vector<std::int32_t>& ids);
 ContiguityGraph ComputeContiguityGraph(const DirichletTessellation& tessellation);
 DelaunayFaces ComputeDelaunayFaces(const DirichletTessellation& tessellation, bool splitDegenerate);
 

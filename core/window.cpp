@@ -208,20 +208,24 @@ Window::Window(const std::vector<HalfPlane>& constraints)
   // starting from the first effective constraint given. No two effective normals are parallel
   // and point the same way.
   const HalfPlane& ref = constraints[ids.front()];
-  auto half = [&](const HalfPlane& h) {
+  auto half = [&](const HalfPlane& h)
+  {
     const int c = cross_sign(ref.a, ref.b, h.a, h.b);
     return (c > 0 || (c == 0 && same_direction(ref, h))) ? 0 : 1;
   };
-  std::sort(ids.begin() + 1, ids.end(), [&](std::size_t p, std::size_t q) {
-    const HalfPlane& hp = constraints[p];
-    const HalfPlane& hq = constraints[q];
-    const int halfP = half(hp), halfQ = half(hq);
-    if (halfP != halfQ)
+  std::sort(ids.begin() + 1,
+    ids.end(),
+    [&](std::size_t p, std::size_t q)
     {
-      return halfP < halfQ;
-    }
-    return cross_sign(hp.a, hp.b, hq.a, hq.b) > 0;
-  });
+      const HalfPlane& hp = constraints[p];
+      const HalfPlane& hq = constraints[q];
+      const int halfP = half(hp), halfQ = half(hq);
+      if (halfP != halfQ)
+      {
+        return halfP < halfQ;
+      }
+      return cross_sign(hp.a, hp.b, hq.a, hq.b) > 0;
+    });
 
   this->EffectiveInputIds = ids;
   for (std::size_t id : ids)
@@ -257,8 +261,10 @@ Window Window::Rectangle(double xmin, double xmax, double ymin, double ymax)
     throw InputError(s.str());
   }
   // Bottom, right, top, left: vertex 0 is the lower-left corner.
-  return Window({ HalfPlane{ 0.0, -1.0, ymin }, HalfPlane{ 1.0, 0.0, -xmax },
-    HalfPlane{ 0.0, 1.0, -ymax }, HalfPlane{ -1.0, 0.0, xmin } });
+  return Window({ HalfPlane{ 0.0, -1.0, ymin },
+    HalfPlane{ 1.0, 0.0, -xmax },
+    HalfPlane{ 0.0, 1.0, -ymax },
+    HalfPlane{ -1.0, 0.0, xmin } });
 }
 
 bool Window::Contains(const Point2& p) const

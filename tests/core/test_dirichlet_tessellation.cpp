@@ -533,3 +533,123 @@ TEST(DirichletTessellation, TranslationAndScalingKeepTheCombinatorics)
   // 1e-9 rounds the lattice too (its co-circularity is lost), so compare the generic part.
   EXPECT_TRUE(transformed(random, 1e-9, 0.0) == transformed(random, 1.0, 0.0));
 }
+
+// Inputs where most predicate calls are exactly zero or within rounding of zero, so that the
+// engine's inline filters fall back to the exact evaluation: subsets of an integer lattice (many
+// collinear and co-circular points, points on edges and on the hull line), exactly co-circular
+// points, lattice points moved by one unit in the last place, and lattices scaled by extreme
+// powers of two or shifted by 2^40. Batch and streaming.
+TEST(DirichletTessellation, NearDegenerateInputsStayExactlyDelaunay)
+{
+  std::vector<std::vector<Point2>> sets;
+  std::mt19937_64 rng(2024);
+  for (int s = 0; s < 6; ++s)
+  {
+    std::vector<Point2> points;
+    for (int j = 0; j < 12; ++j)
+    {
+      for (int i = 0; i < 12; ++i)
+      {
+        if (rng() % 3 != 0)
+        {
+          points.push_back({ double(i), double(j) });
+        }
+      }
+    }
+    std::shuffle(points.begin(), points.end(), rng);
+    sets.push_back(points);
+  }
+  {
+    // Pythagorean triples: 12 points exactly on the circle of radius 5, its centre, and the same
+    // circle scaled by 2^30 and shifted.
+    std::vector<Point2> points;
+    const int triples[3][2] = { { 3, 4 }, { 4, 3 }, { 5, 0 } };
+    for (const double scale : { 1.0, 0x1p30 })
+    {
+      for (const auto& t : triples)
+      {
+        for (const int sx : { -1, 1 })
+        {
+          for (const int sy : { -1, 1 })
+          {
+            points.push_back({ 100.0 * (scale > 1.0) + scale * sx * t[0],
+              scale * sy * t[1] });
+          }
+        }
+      }
+    }
+    points.push_back({ 0.0, 0.0 });
+    std::shuffle(points.begin(), points.end(), rng);
+    sets.push_back(points);
+  }
+  {
+    std::vector<Point2> points;
+    for (int j = 0; j < 10; ++j)
+    {
+      for (int i = 0; i < 10; ++i)
+      {
+        double x = 1.0 + i, y = 1.0 + j;
+        const unsigned r = unsigned(rng() % 5);
+        if (r == 1)
+        {
+          x = std::nextafter(x, 100.0);
+        }
+        else if (r == 2)
+        {
+          y = std::nextafter(y, -100.0);
+        }
+        points.push_back({ x, y });
+      }
+    }
+    std::shuffle(points.begin(), points.end(), rng);
+    sets.push_back(points);
+  }
+  {
+    // A lattice subset scaled near the ends of the exponent range and shifted far from the origin:
+    // the engine's exact shortcut for points on a common grid must stay exact there or step aside.
+    const std::vector<Point2> base = sets[0];
+    for (const double scale : { 0x1p-240, 0x1p-300, 0x1p200 })
+    {
+      std::vector<Point2> points;
+      for (const Point2& p : base)
+      {
+        points.push_back({ scale * p.x, scale * p.y });
+      }
+      sets.push_back(points);
+    }
+    std::vector<Point2> shifted;
+    for (const Point2& p : base)
+    {
+      shifted.push_back({ 0x1p40 + p.x, 0x1p40 - p.y });
+    }
+    sets.push_back(shifted);
+  }
+  for (std::size_t s = 0; s < sets.size(); ++s)
+  {
+    const std::vector<Point2>& points = sets[s];
+    const Window window = Window::Rectangle(-1e300, 1e300, -1e300, 1e300);
+    Tess batch(window, points);
+    Tess stream(window);
+    for (const Point2& p : points)
+    {
+      stream.Insert(p);
+    }
+    // (5, 0) and (5, -0) are the same point: duplicates are reported, not inserted.
+    std::set<std::pair<double, double>> distinct;
+    for (const Point2& p : points)
+    {
+      distinct.insert({ p.x, p.y });
+    }
+    const std::size_t n = distinct.size();
+    for (const Tess* t : { &batch, &stream })
+    {
+      ASSERT_TRUE(t->IsTwoDimensional()) << "set " << s;
+      EXPECT_EQ(t->AcceptedCount(), n) << "set " << s;
+      EXPECT_EQ(t->Duplicates().size(), points.size() - n) << "set " << s;
+      const std::size_t real = CheckStructure(*t);
+      EXPECT_EQ(real, 2 * n - 2 - HullSize(*t)) << "set " << s;
+      CheckEmptyCircles(*t);
+    }
+    EXPECT_TRUE(MakeCanonical(batch, {}, false) == MakeCanonical(stream, {}, false)) << "set " << s;
+  }
+}

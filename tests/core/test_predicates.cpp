@@ -91,7 +91,9 @@ void check_points(const std::vector<Point2>& p, Tally& tally)
   tally.zeros += (o == 0) + (ic == 0) + (dc == 0) + (af == 0);
 }
 
-void run(int count, std::uint64_t seed, const std::function<std::vector<Point2>(std::mt19937_64&)>& make,
+void run(int count,
+  std::uint64_t seed,
+  const std::function<std::vector<Point2>(std::mt19937_64&)>& make,
   Tally& tally)
 {
   std::mt19937_64 rng(seed);
@@ -114,8 +116,8 @@ double uniform(std::mt19937_64& rng, double lo, double hi)
 
 double nudge(double x, int ulps)
 {
-  const double toward = ulps > 0 ? std::numeric_limits<double>::infinity()
-                                 : -std::numeric_limits<double>::infinity();
+  const double toward =
+    ulps > 0 ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
   for (int i = 0; i < std::abs(ulps); ++i)
   {
     x = std::nextafter(x, toward);
@@ -136,7 +138,8 @@ std::vector<Point2> random_points(std::mt19937_64& rng, double scale)
 // Lattice points on the circle x^2 + y^2 = r^2, r = 5^6 (many Pythagorean points).
 const std::vector<Point2>& circle_lattice()
 {
-  static const std::vector<Point2> points = [] {
+  static const std::vector<Point2> points = []
+  {
     std::vector<Point2> v;
     const long long r = 15625;
     for (long long x = -r; x <= r; ++x)
@@ -182,14 +185,18 @@ std::vector<Point2> pick_distinct(std::mt19937_64& rng, const std::vector<Point2
 TEST(Predicates, RandomUnitSquare)
 {
   Tally t;
-  run(5000, 1, [](std::mt19937_64& rng) { return random_points(rng, 1.0); }, t);
+  run(
+    5000, 1, [](std::mt19937_64& rng) { return random_points(rng, 1.0); }, t);
 }
 
 TEST(Predicates, RandomMixedScales)
 {
   Tally t;
-  run(3000, 2,
-    [](std::mt19937_64& rng) {
+  run(
+    3000,
+    2,
+    [](std::mt19937_64& rng)
+    {
       std::vector<Point2> p(4);
       for (Point2& q : p)
       {
@@ -204,8 +211,11 @@ TEST(Predicates, RandomMixedScales)
 TEST(Predicates, NearlyCollinearOneUlp)
 {
   Tally t;
-  run(5000, 3,
-    [](std::mt19937_64& rng) {
+  run(
+    5000,
+    3,
+    [](std::mt19937_64& rng)
+    {
       const Point2 a{ uniform(rng, -10, 10), uniform(rng, -10, 10) };
       const Point2 b{ uniform(rng, -10, 10), uniform(rng, -10, 10) };
       const double s = uniform(rng, -2, 3);
@@ -262,8 +272,11 @@ TEST(Predicates, GridCircleCocircular)
 TEST(Predicates, GridCirclePerturbedOneUlp)
 {
   Tally t;
-  run(3000, 6,
-    [](std::mt19937_64& rng) {
+  run(
+    3000,
+    6,
+    [](std::mt19937_64& rng)
+    {
       std::vector<Point2> p = pick_distinct(rng, circle_lattice(), 4);
       const double offset = std::ldexp(1.0, 30);
       for (Point2& q : p)
@@ -282,8 +295,11 @@ TEST(Predicates, Offset2To30TinySteps)
 {
   // Points 2^30 + small multiples of 2^-20: the filter fails on most and many are degenerate.
   Tally t;
-  run(5000, 7,
-    [](std::mt19937_64& rng) {
+  run(
+    5000,
+    7,
+    [](std::mt19937_64& rng)
+    {
       std::vector<Point2> p(4);
       const double base = std::ldexp(1.0, 30);
       for (Point2& q : p)
@@ -319,12 +335,17 @@ TEST(Predicates, SquareLatticeExactlyDegenerate)
 TEST(Predicates, TinyMagnitudes)
 {
   Tally t;
-  run(3000, 9, [](std::mt19937_64& rng) { return random_points(rng, 1e-300); }, t);
+  run(
+    3000, 9, [](std::mt19937_64& rng) { return random_points(rng, 1e-300); }, t);
   // Subnormal coordinates.
-  run(2000, 10, [](std::mt19937_64& rng) { return random_points(rng, 1e-310); }, t);
+  run(
+    2000, 10, [](std::mt19937_64& rng) { return random_points(rng, 1e-310); }, t);
   // Near-degenerate at tiny scale: a co-circular lattice set scaled by 2^-1000 plus one ulp.
-  run(2000, 11,
-    [](std::mt19937_64& rng) {
+  run(
+    2000,
+    11,
+    [](std::mt19937_64& rng)
+    {
       std::vector<Point2> p = pick_distinct(rng, circle_lattice(), 4);
       for (Point2& q : p)
       {
@@ -342,11 +363,16 @@ TEST(Predicates, TinyMagnitudes)
 TEST(Predicates, HugeMagnitudes)
 {
   Tally t;
-  run(3000, 12, [](std::mt19937_64& rng) { return random_points(rng, 1e150); }, t);
+  run(
+    3000, 12, [](std::mt19937_64& rng) { return random_points(rng, 1e150); }, t);
   // Large enough for the floating-point determinant to overflow.
-  run(2000, 13, [](std::mt19937_64& rng) { return random_points(rng, 1e300); }, t);
-  run(2000, 14,
-    [](std::mt19937_64& rng) {
+  run(
+    2000, 13, [](std::mt19937_64& rng) { return random_points(rng, 1e300); }, t);
+  run(
+    2000,
+    14,
+    [](std::mt19937_64& rng)
+    {
       std::vector<Point2> p = pick_distinct(rng, circle_lattice(), 4);
       for (Point2& q : p)
       {
@@ -365,8 +391,11 @@ TEST(Predicates, MixedExtremeMagnitudes)
 {
   // 1e150 next to 1e-300 in one query: the big-integer tier.
   Tally t;
-  run(1500, 15,
-    [](std::mt19937_64& rng) {
+  run(
+    1500,
+    15,
+    [](std::mt19937_64& rng)
+    {
       std::vector<Point2> p(4);
       for (Point2& q : p)
       {
@@ -391,7 +420,8 @@ TEST(Predicates, MixedExtremeMagnitudes)
     check_points({ a, b, c, d }, t);
     check_points({ d, c, b, a }, t);
     // A square of side 1e-300 far from the origin is still co-circular.
-    const Point2 s0{ big, 0 }, s1{ big, 1e-300 }, s2{ nudge(big, 1), 1e-300 }, s3{ nudge(big, 1), 0 };
+    const Point2 s0{ big, 0 }, s1{ big, 1e-300 }, s2{ nudge(big, 1), 1e-300 },
+      s3{ nudge(big, 1), 0 };
     EXPECT_EQ(tessera::incircle(s0, s1, s2, s3), 0);
     check_points({ s0, s1, s2, s3 }, t);
   }
@@ -415,7 +445,8 @@ TEST(Predicates, SymmetriesOfOrientAndIncircle)
     const int ic = tessera::incircle(p[0], p[1], p[2], p[3]);
     EXPECT_EQ(tessera::incircle(p[1], p[2], p[0], p[3]), ic);
     EXPECT_EQ(tessera::incircle(p[1], p[0], p[2], p[3]), -ic);
-    EXPECT_EQ(tessera::compare_distance(p[0], p[1], p[2]), -tessera::compare_distance(p[0], p[2], p[1]));
+    EXPECT_EQ(
+      tessera::compare_distance(p[0], p[1], p[2]), -tessera::compare_distance(p[0], p[2], p[1]));
   }
 }
 
@@ -441,7 +472,8 @@ TEST(Predicates, AffineSignExtremes)
   const double scales[] = { 1e-300, 1e-160, 1e-10, 1.0, 1e10, 1e150, 1e300, 4e-320 };
   for (int i = 0; i < 5000; ++i)
   {
-    auto pick = [&] { return scales[std::uniform_int_distribution<int>(0, 7)(rng)] * uniform(rng, -1, 1); };
+    auto pick = [&]
+    { return scales[std::uniform_int_distribution<int>(0, 7)(rng)] * uniform(rng, -1, 1); };
     const double a = pick(), b = pick();
     const Point2 p{ pick(), pick() };
     // c cancels a * x + b * y up to rounding: the exact sign depends on the product's low bits.
@@ -469,8 +501,9 @@ tessera::Offset2 reflection_offset(const Point2& a, double border, bool vertical
 {
   // The reflection of a in the line x = border (or y = border), as an exact offset from a.
   tessera::Offset2 o;
-  const tessera::Offset2 d = tessera::exact_offset(vertical ? Point2{ border, 0 } : Point2{ 0, border },
-    vertical ? Point2{ a.x, 0 } : Point2{ 0, a.y });
+  const tessera::Offset2 d =
+    tessera::exact_offset(vertical ? Point2{ border, 0 } : Point2{ 0, border },
+      vertical ? Point2{ a.x, 0 } : Point2{ 0, a.y });
   if (vertical)
   {
     o.x = 2 * d.x;
@@ -493,7 +526,9 @@ mpq_class QY(const tessera::Offset2& o)
   return Q(o.y) + Q(o.yTail);
 }
 
-int incircle_offsets_ref(const tessera::Offset2& a, const tessera::Offset2& b, const tessera::Offset2& c)
+int incircle_offsets_ref(const tessera::Offset2& a,
+  const tessera::Offset2& b,
+  const tessera::Offset2& c)
 {
   const mpq_class adx = QX(a), ady = QY(a), bdx = QX(b), bdy = QY(b), cdx = QX(c), cdy = QY(c);
   return sgn((adx * adx + ady * ady) * (bdx * cdy - cdx * bdy) +
@@ -514,7 +549,8 @@ TEST(Predicates, OffsetsAndReflections)
   {
     const double s = scales[i % 5];
     const bool lattice = (i / 5) % 2 == 0;
-    auto coord = [&] {
+    auto coord = [&]
+    {
       return lattice ? s * std::floor(uniform(rng, -8, 8)) + (s > 1e10 ? s : 0.0)
                      : s * uniform(rng, -1, 1);
     };

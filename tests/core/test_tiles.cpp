@@ -4,12 +4,15 @@
 
 #include "dirichlet_tessellation.h"
 #include "predicates.h"
+#include "thiessen_sweep.h"
 #include "tiles.h"
 
+#include <gmpxx.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
 #include <set>
 #include <vector>
@@ -316,4 +319,336 @@ TEST(Tiles, EdgesOutsideTheWindowAreNotContiguities)
   EXPECT_EQ(pairs, (std::set<std::pair<int, int>>{ { 0, 2 }, { 1, 2 } }));
   const TileSet tiles = ComputeTiles(t);
   EXPECT_NEAR(NeumaierSum(tiles.Areas), 4.0 * 0.3, 1e-14);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Exact window decisions: contiguities against an exact rational brute force, and the two
+// engines against each other, on inputs whose Voronoi vertices and edges meet the window
+// boundary exactly or nearly.
+
+namespace
+{
+
+using PairKinds = std::map<std::pair<std::int32_t, std::int32_t>, int>;
+
+PairKinds GraphPairs(const ContiguityGraph& graph)
+{
+  PairKinds pairs;
+  for (std::size_t k = 0; k < graph.Kinds.size(); ++k)
+  {
+    pairs[{ graph.Pairs[2 * k], graph.Pairs[2 * k + 1] }] = graph.Kinds[k];
+  }
+  return pairs;
+}
+
+// For each pair of accepted points, the Voronoi edge on the bisector m + t d is cut by every
+// other point's half-plane and the window's: each is alpha + beta t < 0 (open, for kind 0) or
+// <= 0 (closed point constraints, for kind 1), all in exact rationals. Kind 0: the open interval
+// is non-empty. Kind 1: the closed point constraints leave a single t, strictly inside the
+// window. A double pass with a wide margin skips pairs that are far from either.
+PairKinds BruteForcePairs(const Window& window,
+  const std::vector<Point2>& points,
+  const std::vector<std::int32_t>& ids)
+{
+  PairKinds pairs;
+  const auto& constraints = window.EffectiveConstraints();
+  for (std::size_t x = 0; x < ids.size(); ++x)
+  {
+    for (std::size_t y = x + 1; y < ids.size(); ++y)
+    {
+      const Point2 &pi = points[ids[x]], &pj = points[ids[y]];
+      // Double pre-pass, relative to pi (translation-free): the closed interval of the point
+      // constraints, skipped only when empty by a wide margin.
+      {
+        const double mx = 0.5 * (pj.x - pi.x), my = 0.5 * (pj.y - pi.y);
+        const double dx = pi.y - pj.y, dy = pj.x - pi.x;
+        double lo = -1e300, hi = 1e300;
+        const auto cut = [&](double alpha, double beta)
+        {
+          if (beta > 0)
+          {
+            hi = std::min(hi, -alpha / beta);
+          }
+          else if (beta < 0)
+          {
+            lo = std::max(lo, -alpha / beta);
+          }
+          else if (alpha > 1e-9)
+          {
+            lo = 1e300;
+          }
+        };
+        for (const std::int32_t k : ids)
+        {
+          if (k == ids[x] || k == ids[y])
+          {
+            continue;
+          }
+          const double ex = points[k].x - pi.x, ey = points[k].y - pi.y;
+          cut(2 * (mx * ex + my * ey) - (ex * ex + ey * ey), 2 * (dx * ex + dy * ey));
+        }
+        for (const HalfPlane& h : constraints)
+        {
+          cut(h.a * mx + h.b * my + (h.a * pi.x + h.b * pi.y + h.c), h.a * dx + h.b * dy);
+        }
+        const double scale = 1.0 + std::fabs(lo < -1e299 ? 0 : lo) + std::fabs(hi > 1e299 ? 0 : hi);
+        if (lo > hi + 1e-3 * scale)
+        {
+          continue;
+        }
+      }
+      const mpq_class mx = (mpq_class(pi.x) + pj.x) / 2, my = (mpq_class(pi.y) + pj.y) / 2;
+      const mpq_class dx = mpq_class(pi.y) - pj.y, dy = mpq_class(pj.x) - pi.x;
+      bool haveLo = false, haveHi = false, empty = false;
+      mpq_class lo, hi;         // open interval (points and window)
+      bool closedEmpty = false; // closed point constraints only
+      bool cHaveLo = false, cHaveHi = false;
+      mpq_class clo, chi;
+      const auto cut = [&](const mpq_class& alpha, const mpq_class& beta, bool point)
+      {
+        if (sgn(beta) == 0)
+        {
+          empty = empty || sgn(alpha) >= 0;
+          closedEmpty = closedEmpty || (point && sgn(alpha) > 0);
+          return;
+        }
+        const mpq_class t = -alpha / beta;
+        if (sgn(beta) > 0)
+        {
+          if (!haveHi || t < hi)
+          {
+            hi = t;
+            haveHi = true;
+          }
+          if (point && (!cHaveHi || t < chi))
+          {
+            chi = t;
+            cHaveHi = true;
+          }
+        }
+        else
+        {
+          if (!haveLo || t > lo)
+          {
+            lo = t;
+            haveLo = true;
+          }
+          if (point && (!cHaveLo || t > clo))
+          {
+            clo = t;
+            cHaveLo = true;
+          }
+        }
+      };
+      const mpq_class ni = mpq_class(pi.x) * pi.x + mpq_class(pi.y) * pi.y;
+      for (const std::int32_t k : ids)
+      {
+        if (k == ids[x] || k == ids[y])
+        {
+          continue;
+        }
+        const Point2& pk = points[k];
+        const mpq_class ex = mpq_class(pk.x) - pi.x, ey = mpq_class(pk.y) - pi.y;
+        const mpq_class nk = mpq_class(pk.x) * pk.x + mpq_class(pk.y) * pk.y;
+        cut(2 * (mx * ex + my * ey) + ni - nk, 2 * (dx * ex + dy * ey), true);
+      }
+      for (const HalfPlane& h : constraints)
+      {
+        cut(h.a * mx + h.b * my + mpq_class(h.c), h.a * dx + h.b * dy, false);
+      }
+      const std::pair<std::int32_t, std::int32_t> key(
+        std::min(ids[x], ids[y]), std::max(ids[x], ids[y]));
+      if (!empty && haveLo && haveHi && lo < hi)
+      {
+        pairs[key] = 0;
+        continue;
+      }
+      if (closedEmpty || !cHaveLo || !cHaveHi || clo != chi)
+      {
+        continue;
+      }
+      const mpq_class vx = mx + clo * dx, vy = my + clo * dy;
+      bool inside = true;
+      for (const HalfPlane& h : constraints)
+      {
+        inside = inside && sgn(h.a * vx + h.b * vy + mpq_class(h.c)) < 0;
+      }
+      if (inside)
+      {
+        pairs[key] = 1;
+      }
+    }
+  }
+  return pairs;
+}
+
+std::vector<std::int32_t> AcceptedIds(const DirichletTessellation& t)
+{
+  std::vector<std::int32_t> ids;
+  for (std::int32_t id = 0; id < std::int32_t(t.PointCount()); ++id)
+  {
+    if (t.Status(id) == PointStatus::Accepted)
+    {
+      ids.push_back(id);
+    }
+  }
+  return ids;
+}
+
+void ExpectExactContiguities(const Window& window, const std::vector<Point2>& points, bool sweep)
+{
+  const DirichletTessellation t(window, points);
+  const TessellationDual dual(t);
+  const PairKinds ours = GraphPairs(dual.Contiguities());
+  const PairKinds exact = BruteForcePairs(window, points, AcceptedIds(t));
+  for (const auto& [pair, kind] : exact)
+  {
+    const auto found = ours.find(pair);
+    EXPECT_TRUE(found != ours.end() && found->second == kind)
+      << "missing pair (" << pair.first << ", " << pair.second << ") kind " << kind;
+  }
+  for (const auto& [pair, kind] : ours)
+  {
+    EXPECT_TRUE(exact.count(pair))
+      << "spurious pair (" << pair.first << ", " << pair.second << ") kind " << kind;
+  }
+  // NeighborCount: contiguities with points plus window edges; the point part must match.
+  const TileSet tiles = dual.Tiles();
+  std::map<std::int32_t, std::int32_t> kind0;
+  for (const auto& [pair, kind] : exact)
+  {
+    if (kind == 0)
+    {
+      ++kind0[pair.first];
+      ++kind0[pair.second];
+    }
+  }
+  for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
+  {
+    EXPECT_GE(tiles.NeighborCounts[k], kind0[tiles.PointIds[k]]);
+    EXPECT_LE(tiles.NeighborCounts[k],
+      kind0[tiles.PointIds[k]] + std::int32_t(window.EffectiveConstraints().size()));
+  }
+  if (!sweep)
+  {
+    return;
+  }
+  const ThiessenSweepResult other = ComputeThiessenSweep(window, points);
+  EXPECT_EQ(GraphPairs(other.Contiguities), ours);
+  std::map<std::int32_t, double> areas;
+  for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
+  {
+    areas[tiles.PointIds[k]] = tiles.Areas[k];
+  }
+  ASSERT_EQ(other.Tiles.PointIds.size(), tiles.PointIds.size());
+  for (std::size_t k = 0; k < other.Tiles.PointIds.size(); ++k)
+  {
+    EXPECT_NEAR(other.Tiles.Areas[k], areas[other.Tiles.PointIds[k]], 1e-12 * window.Area());
+    EXPECT_EQ(other.Tiles.NeighborCounts[k],
+      tiles.NeighborCounts[std::size_t(
+        std::find(tiles.PointIds.begin(), tiles.PointIds.end(), other.Tiles.PointIds[k]) -
+        tiles.PointIds.begin())])
+      << "point " << other.Tiles.PointIds[k];
+  }
+}
+
+} // namespace
+
+TEST(TilesExactWindow, RotatedLattice)
+{
+  const double angle = 0.3, c = std::cos(angle), s = std::sin(angle);
+  std::vector<Point2> points;
+  for (int i = 0; i < 20; ++i)
+  {
+    for (int j = 0; j < 20; ++j)
+    {
+      const double x = i / 20.0 - 0.5, y = j / 20.0 - 0.5;
+      points.push_back({ 0.5 + c * x - s * y, 0.5 + s * x + c * y });
+    }
+  }
+  const Window window = Window::Rectangle(-0.5, 1.5, -0.5, 1.5);
+  ExpectExactContiguities(window, points, true);
+  // The pairs measured wrong in floating point, by index i * 20 + j.
+  const PairKinds ours = GraphPairs(ComputeContiguityGraph(DirichletTessellation(window, points)));
+  EXPECT_EQ(ours.count({ 0, 140 }), 0U);
+  EXPECT_EQ(ours.count({ 6, 13 }), 0U);
+  EXPECT_EQ(ours.count({ 0, 20 }), 1U);
+  EXPECT_EQ(ours.count({ 12, 13 }), 1U);
+}
+
+// Subsets of the grid of odd multiples of 1/16 in the unit square: many exactly co-circular
+// vertices, some exactly on the window's sides and corners (even multiples of 1/16).
+TEST(TilesExactWindow, GridSubsetsTouchingTheBoundary)
+{
+  std::mt19937_64 rng(5);
+  for (int trial = 0; trial < 40; ++trial)
+  {
+    std::vector<Point2> points;
+    const double keep = 0.25 + 0.05 * (trial % 10);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int i = 0; i < 8; ++i)
+    {
+      for (int j = 0; j < 8; ++j)
+      {
+        if (u(rng) < keep)
+        {
+          points.push_back({ (2 * i + 1) / 16.0, (2 * j + 1) / 16.0 });
+        }
+      }
+    }
+    if (points.size() < 3)
+    {
+      continue;
+    }
+    ExpectExactContiguities(Window::Rectangle(0, 1, 0, 1), points, true);
+    // Windows whose sides are lattice lines inside the point set (points beyond are rejected).
+    ExpectExactContiguities(Window::Rectangle(0.125, 0.875, 0, 0.75), points, true);
+    // The same shifted by 2^30 (still exact): the filters see huge translations.
+    if (trial % 4 == 0)
+    {
+      const double base = std::ldexp(1.0, 30);
+      std::vector<Point2> shifted = points;
+      for (Point2& p : shifted)
+      {
+        p = { p.x + base, p.y + base };
+      }
+      ExpectExactContiguities(
+        Window::Rectangle(base + 0.125, base + 0.875, base, base + 0.75), shifted, true);
+    }
+  }
+}
+
+// Tiny perturbations of such sets (filters fail, the exact tier decides), and a window with
+// oblique sides through grid points.
+TEST(TilesExactWindow, NearDegenerateSetsAndObliqueWindow)
+{
+  std::mt19937_64 rng(9);
+  const Window oblique(
+    { { -1, 0, 0 }, { 0, -1, 0 }, { 1, 1, -1.5 }, { 1, 0, -1 }, { 0, 1, -1 }, { 1, -1, -0.625 } });
+  for (int trial = 0; trial < 30; ++trial)
+  {
+    std::vector<Point2> points;
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int i = 0; i < 8; ++i)
+    {
+      for (int j = 0; j < 8; ++j)
+      {
+        if (u(rng) < 0.4)
+        {
+          Point2 p{ (2 * i + 1) / 16.0, (2 * j + 1) / 16.0 };
+          if (trial % 2 == 1 && u(rng) < 0.3)
+          {
+            p.x += std::ldexp(u(rng) < 0.5 ? -1.0 : 1.0, -45 - int(rng() % 8));
+          }
+          points.push_back(p);
+        }
+      }
+    }
+    if (points.size() < 3)
+    {
+      continue;
+    }
+    ExpectExactContiguities(Window::Rectangle(0, 1, 0, 1), points, true);
+    ExpectExactContiguities(oblique, points, false);
+  }
 }

@@ -35,7 +35,7 @@ bool inside_exact(const HalfPlane& h, const Point2& p)
 }
 
 // Throws, and the message contains `part`.
-template <class F>
+template<class F>
 void expect_input_error(F f, const std::string& part)
 {
   try
@@ -160,9 +160,10 @@ double area_reference(const std::vector<HalfPlane>& hs)
     mx += p.x / pts.size();
     my += p.y / pts.size();
   }
-  std::sort(pts.begin(), pts.end(), [&](const Point2& p, const Point2& q) {
-    return std::atan2(p.y - my, p.x - mx) < std::atan2(q.y - my, q.x - mx);
-  });
+  std::sort(pts.begin(),
+    pts.end(),
+    [&](const Point2& p, const Point2& q)
+    { return std::atan2(p.y - my, p.x - mx) < std::atan2(q.y - my, q.x - mx); });
   long double s = 0;
   for (std::size_t k = 0; k < pts.size(); ++k)
   {
@@ -199,7 +200,8 @@ void check_structure(const Window& w, const std::vector<HalfPlane>& input)
     EXPECT_EQ(tessera::orient2d(p, q, r), 1);
     // Edge k runs from vertex k to vertex k + 1 on constraint k: nearly zero there.
     const double scale = std::hypot(eff[k].a, eff[k].b);
-    const double extent = 1.0 + std::max(std::fabs(p.x) + std::fabs(p.y), std::fabs(q.x) + std::fabs(q.y));
+    const double extent =
+      1.0 + std::max(std::fabs(p.x) + std::fabs(p.y), std::fabs(q.x) + std::fabs(q.y));
     EXPECT_LT(std::fabs(eff[k].a * p.x + eff[k].b * p.y + eff[k].c) / scale, 1e-12 * extent);
     EXPECT_LT(std::fabs(eff[k].a * q.x + eff[k].b * q.y + eff[k].c) / scale, 1e-12 * extent);
     // The edge's direction (-b, a) runs from vertex k to vertex k + 1.
@@ -284,8 +286,8 @@ TEST(Window, RedundantConstraintsAreReported)
 TEST(Window, DuplicatedConstraintsKeepTheFirst)
 {
   std::vector<HalfPlane> hs = unit_square_constraints();
-  hs.push_back({ 1, 0, -1 }); // 4: copy of 1
-  hs.push_back({ 2, 0, -2 }); // 5: scaled copy of 1
+  hs.push_back({ 1, 0, -1 });                       // 4: copy of 1
+  hs.push_back({ 2, 0, -2 });                       // 5: scaled copy of 1
   hs.insert(hs.begin(), HalfPlane{ 0.5, 0, -0.5 }); // 0: scaled copy of (now) 2, given first
   const Window w(hs);
   check_structure(w, hs);
@@ -301,9 +303,15 @@ TEST(Window, EmptyWindows)
   expect_input_error([&] { Window w(hs); }, "empty");
   // Parallel sides with no room between them (zero width) or crossed.
   expect_input_error(
-    [] { Window w({ { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, -1 }, { 0, -1, 0 } }); }, "empty");
+    [] {
+      Window w({ { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, -1 }, { 0, -1, 0 } });
+    },
+    "empty");
   expect_input_error(
-    [] { Window w({ { 1, 0, 1 }, { -1, 0, 0 }, { 0, 1, -1 }, { 0, -1, 0 } }); }, "empty");
+    [] {
+      Window w({ { 1, 0, 1 }, { -1, 0, 0 }, { 0, 1, -1 }, { 0, -1, 0 } });
+    },
+    "empty");
   // A triangle pointing the wrong way: x < 0, y < 0, x + y > 1.
   expect_input_error([] { Window w({ { 1, 0, 0 }, { 0, 1, 0 }, { -1, -1, 1 } }); }, "empty");
   // Three lines through one point: zero area.
@@ -319,7 +327,10 @@ TEST(Window, UnboundedWindows)
   expect_input_error([] { Window w({ { 1, 0, -1 }, { -1, 0, 0 } }); }, "unbounded");
   // All normals in a half-plane.
   expect_input_error(
-    [] { Window w({ { 1, 0, -1 }, { 0, 1, -1 }, { 1, 1, -5 }, { 1, -0.5, -2 } }); }, "unbounded");
+    [] {
+      Window w({ { 1, 0, -1 }, { 0, 1, -1 }, { 1, 1, -5 }, { 1, -0.5, -2 } });
+    },
+    "unbounded");
   // Three sides of a square.
   expect_input_error([] { Window w({ { -1, 0, 0 }, { 1, 0, -1 }, { 0, -1, 0 } }); }, "unbounded");
 }
@@ -482,8 +493,12 @@ TEST(Window, ExtremeCoefficients)
     check_structure(w, hs);
     EXPECT_EQ(w.RedundantIds().size(), 0u);
     EXPECT_NEAR(w.Area(), 0.875, 1e-15);
-    const Point2 probes[] = { { 0.5, 0.5 }, { 0.75, 0.75 }, { 0.75, std::nextafter(0.75, 0.0) },
-      { std::nextafter(0.75, 1.0), 0.75 }, { 1, 0.25 }, { 0.25, 0 } };
+    const Point2 probes[] = { { 0.5, 0.5 },
+      { 0.75, 0.75 },
+      { 0.75, std::nextafter(0.75, 0.0) },
+      { std::nextafter(0.75, 1.0), 0.75 },
+      { 1, 0.25 },
+      { 0.25, 0 } };
     for (const Point2& p : probes)
     {
       bool expected = true;

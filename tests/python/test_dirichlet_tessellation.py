@@ -213,7 +213,9 @@ def test_both_engines_agree():
     clusters = [(rng.gauss(0.3, 0.05), rng.gauss(0.3, 0.05)) for _ in range(500)] + \
                [(rng.gauss(0.7, 0.08), rng.gauss(0.6, 0.08)) for _ in range(500)]
     lattice = [(i / 20, j / 20) for i in range(20) for j in range(20)]
-    for name, coords in (("uniform", uniform), ("clusters", clusters), ("lattice", lattice)):
+    c, s_ = math.cos(0.3), math.sin(0.3)
+    rotated = [(0.5 + c * (x - 0.5) - s_ * (y - 0.5), 0.5 + s_ * (x - 0.5) + c * (y - 0.5)) for x, y in lattice]
+    for name, coords in (("uniform", uniform), ("clusters", clusters), ("lattice", lattice), ("rotated", rotated)):
         data = make_points(coords)
         green = tessellate(data, bounds=(-0.5, 1.5, -0.5, 1.5), algorithm="GreenSibson")
         brassel = tessellate(data, bounds=(-0.5, 1.5, -0.5, 1.5), algorithm="BrasselReif")

@@ -1,0 +1,370 @@
+// ComputeTilesOf / ComputeFaceMatesOf against the full derivation: bit-identical tiles for any
+// subset of points, on random, lattice (every face degenerate) and co-circular sets, after
+// insertions and removals, and in the collinear case; face mates against the Delaunay faces; and
+// the property the areal average relies on: a tile changes only if it belongs to a face mate of
+// a removed point (before) or of an inserted point (after), or to an inserted point.
+
+#include "areal_average.h"
+#include "dirichlet_tessellation.h"
+#include "tiles.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <random>
+#include <set>
+#include <vector>
+
+using namespace tessera;
+
+namespace
+{
+
+struct Tile
+{
+  std::vector<Point2> Vertices;
+  double Area = 0.0;
+  std::int32_t Neighbors = 0;
+};
+
+std::map<std::int32_t, Tile> ByPoint(const TileSet& tiles)
+{
+  std::map<std::int32_t, Tile> out;
+  for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
+  {
+    Tile& tile = out[tiles.PointIds[k]];
+    tile.Vertices.assign(
+      tiles.Vertices.begin() + tiles.Offsets[k], tiles.Vertices.begin() + tiles.Offsets[k + 1]);
+    tile.Area = tiles.Areas[k];
+    tile.Neighbors = tiles.NeighborCounts[k];
+  }
+  return out;
+}
+
+bool SameBits(const Tile& a, const Tile& b)
+{
+  if (a.Vertices.size() != b.Vertices.size() || a.Neighbors != b.Neighbors ||
+    std::memcmp(&a.Area, &b.Area, sizeof(double)) != 0)
+  {
+    return false;
+  }
+  for (std::size_t k = 0; k < a.Vertices.size(); ++k)
+  {
+    if (std::memcmp(&a.Vertices[k], &b.Vertices[k], sizeof(Point2)) != 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::vector<std::int32_t> Accepted(const DirichletTessellation& t)
+{
+  std::vector<std::int32_t> ids;
+  for (std::int32_t id = 0; id < std::int32_t(t.PointCount()); ++id)
+  {
+    if (t.Status(id) == PointStatus::Accepted)
+    {
+      ids.push_back(id);
+    }
+  }
+  return ids;
+}
+
+// Every accepted point in random subsets (and all at once, and repeated ids, and ids that are
+// not accepted) gets the full derivation's tile, bit for bit, in the order asked.
+void ExpectLocalEqualsFull(const DirichletTessellation& t, unsigned seed)
+{
+  const std::map<std::int32_t, Tile> full = ByPoint(ComputeTiles(t));
+  std::vector<std::int32_t> ids = Accepted(t);
+  ASSERT_EQ(full.size(), ids.size());
+  std::mt19937_64 rng(seed);
+  for (int trial = 0; trial < 4; ++trial)
+  {
+    std::vector<std::int32_t> ask = ids;
+    std::shuffle(ask.begin(), ask.end(), rng);
+    ask.resize(trial == 0 ? ask.size() : std::max<std::size_t>(1, ask.size() / (2 * trial)));
+    std::vector<std::int32_t> expectedOrder;
+    std::set<std::int32_t> seen;
+    for (const std::int32_t id : ask)
+    {
+      if (seen.insert(id).second)
+      {
+        expectedOrder.push_back(id);
+      }
+    }
+    ask.push_back(ask.front());                  // a repeat
+    ask.push_back(std::int32_t(t.PointCount())); // unknown
+    FaceMateLists mates;
+    const TileSet local = ComputeTilesOf(t, ask, &mates);
+    ASSERT_EQ(local.PointIds, expectedOrder);
+    ASSERT_EQ(mates.PointIds, expectedOrder);
+    const std::map<std::int32_t, Tile> got = ByPoint(local);
+    for (const std::int32_t id : expectedOrder)
+    {
+      EXPECT_TRUE(SameBits(got.at(id), full.at(id))) << "tile of point " << id;
+    }
+  }
+}
+
+// Face mates: every pair of points of one Delaunay face (degenerate faces whole), and nothing
+// else.
+void ExpectMatesFromFaces(const DirichletTessellation& t)
+{
+  if (!t.IsTwoDimensional())
+  {
+    return;
+  }
+  std::map<std::int32_t, std::set<std::int32_t>> expected;
+  const DelaunayFaces faces = ComputeDelaunayFaces(t, false);
+  for (std::size_t f = 0; f + 1 < faces.Offsets.size(); ++f)
+  {
+    for (std::int64_t x = faces.Offsets[f]; x < faces.Offsets[f + 1]; ++x)
+    {
+      for (std::int64_t y = faces.Offsets[f]; y < faces.Offsets[f + 1]; ++y)
+      {
+        if (x != y)
+        {
+          expected[faces.PointIds[x]].insert(faces.PointIds[y]);
+        }
+      }
+    }
+  }
+  const FaceMateLists mates = ComputeFaceMatesOf(t, Accepted(t));
+  for (std::size_t k = 0; k < mates.PointIds.size(); ++k)
+  {
+    const std::set<std::int32_t> got(
+      mates.Ids.begin() + mates.Offsets[k], mates.Ids.begin() + mates.Offsets[k + 1]);
+    EXPECT_EQ(got, expected[mates.PointIds[k]]) << "mates of " << mates.PointIds[k];
+  }
+}
+
+std::vector<Point2> Uniform(std::size_t n, unsigned seed)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Point2> points(n);
+  for (Point2& p : points)
+  {
+    p = { u(rng), u(rng) };
+  }
+  return points;
+}
+
+std::vector<Point2> Lattice(int n, double spacing)
+{
+  std::vector<Point2> points;
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      points.push_back({ spacing * (i + 1), spacing * (j + 1) });
+    }
+  }
+  return points;
+}
+
+// Points on a few concentric circles with exact coordinates (Pythagorean triples): large
+// degenerate faces.
+std::vector<Point2> Circles()
+{
+  std::vector<Point2> points;
+  const int triples[][2] = { { 3, 4 }, { 4, 3 }, { 5, 0 }, { 0, 5 } };
+  for (const double scale : { 1.0, 2.0, 3.0 })
+  {
+    for (const auto& t : triples)
+    {
+      for (const int sx : { -1, 1 })
+      {
+        for (const int sy : { -1, 1 })
+        {
+          points.push_back({ 16 + scale * sx * t[0], 16 + scale * sy * t[1] });
+        }
+      }
+    }
+  }
+  points.push_back({ 16, 16 });
+  return points;
+}
+
+Window Hexagon()
+{
+  std::vector<HalfPlane> constraints;
+  for (int k = 0; k < 6; ++k)
+  {
+    const double angle = 1.0471975511965976 * k + 0.2;
+    const double a = std::cos(angle), b = std::sin(angle);
+    constraints.push_back({ a, b, -(0.8 + 0.5 * a + 0.5 * b) });
+  }
+  return Window(constraints);
+}
+
+} // namespace
+
+TEST(LocalTiles, RandomSetsMatchTheFullDerivation)
+{
+  for (unsigned seed = 1; seed <= 4; ++seed)
+  {
+    const DirichletTessellation square(Window::Rectangle(0, 1, 0, 1), Uniform(200 * seed, seed));
+    ExpectLocalEqualsFull(square, seed);
+    ExpectMatesFromFaces(square);
+    const DirichletTessellation hexagon(Hexagon(), Uniform(150 * seed, seed + 10));
+    ExpectLocalEqualsFull(hexagon, seed);
+    ExpectMatesFromFaces(hexagon);
+  }
+}
+
+TEST(LocalTiles, DegenerateSetsMatchTheFullDerivation)
+{
+  const DirichletTessellation lattice(Window::Rectangle(0, 1, 0, 1), Lattice(15, 1.0 / 16));
+  ExpectLocalEqualsFull(lattice, 3);
+  ExpectMatesFromFaces(lattice);
+  // The window's sides through lattice vertices (face centres on the boundary).
+  const DirichletTessellation touching(
+    Window::Rectangle(0.09375, 0.90625, 0.03125, 1), Lattice(15, 1.0 / 16));
+  ExpectLocalEqualsFull(touching, 4);
+  ExpectMatesFromFaces(touching);
+  const DirichletTessellation circles(Window::Rectangle(0, 32, 0, 32), Circles());
+  ExpectLocalEqualsFull(circles, 5);
+  ExpectMatesFromFaces(circles);
+  // Collinear points: no faces.
+  std::vector<Point2> line;
+  for (int k = 0; k < 9; ++k)
+  {
+    line.push_back({ (k + 1) / 16.0, (k + 1) / 32.0 });
+  }
+  const DirichletTessellation collinear(Window::Rectangle(0, 1, 0, 1), line);
+  ASSERT_FALSE(collinear.IsTwoDimensional());
+  ExpectLocalEqualsFull(collinear, 6);
+}
+
+// The areal average's update rule: after removals and insertions, the tiles that differ from
+// before are among the face mates (before) of the removed points, the face mates (after) of the
+// inserted points and the inserted points themselves; and the local tiles of those equal a full
+// derivation of the updated tessellation.
+TEST(LocalTiles, ChangedTilesAreFaceMatesOfTheChangedPoints)
+{
+  for (const bool lattice : { false, true })
+  {
+    std::vector<Point2> points = lattice ? Lattice(20, 1.0 / 21) : Uniform(600, 7);
+    DirichletTessellation t(Window::Rectangle(0, 1, 0, 1), points);
+    std::mt19937_64 rng(lattice ? 11 : 12);
+    std::vector<char> active(points.size(), 1);
+    std::map<std::int32_t, std::int32_t> idOf; // point index -> current tessellation id
+    for (std::int32_t k = 0; k < std::int32_t(points.size()); ++k)
+    {
+      idOf[k] = k;
+    }
+    for (int step = 0; step < 12; ++step)
+    {
+      const std::map<std::int32_t, Tile> before = ByPoint(ComputeTiles(t));
+      std::vector<std::int32_t> removed, insertedIds;
+      for (std::size_t k = 0; k < points.size(); ++k)
+      {
+        if (rng() % 20 == 0)
+        {
+          if (active[k])
+          {
+            removed.push_back(idOf[std::int32_t(k)]);
+          }
+          active[k] = !active[k];
+        }
+      }
+      std::set<std::int32_t> affected;
+      const FaceMateLists old = ComputeFaceMatesOf(t, removed);
+      affected.insert(old.Ids.begin(), old.Ids.end());
+      for (const std::int32_t id : removed)
+      {
+        t.Remove(id);
+      }
+      for (std::size_t k = 0; k < points.size(); ++k)
+      {
+        if (active[k] && t.Status(idOf[std::int32_t(k)]) == PointStatus::Removed)
+        {
+          idOf[std::int32_t(k)] = t.Insert(points[k]);
+          insertedIds.push_back(idOf[std::int32_t(k)]);
+        }
+      }
+      const FaceMateLists fresh = ComputeFaceMatesOf(t, insertedIds);
+      affected.insert(fresh.Ids.begin(), fresh.Ids.end());
+      affected.insert(insertedIds.begin(), insertedIds.end());
+      const std::map<std::int32_t, Tile> after = ByPoint(ComputeTiles(t));
+      std::vector<std::int32_t> ask;
+      for (const auto& [id, tile] : after)
+      {
+        const auto previous = before.find(id);
+        const bool changed = previous == before.end() || !SameBits(previous->second, tile);
+        if (changed)
+        {
+          EXPECT_TRUE(affected.count(id)) << "tile of " << id << " changed unannounced";
+        }
+        if (affected.count(id))
+        {
+          ask.push_back(id);
+        }
+      }
+      const std::map<std::int32_t, Tile> local = ByPoint(ComputeTilesOf(t, ask));
+      ASSERT_EQ(local.size(), ask.size());
+      for (const std::int32_t id : ask)
+      {
+        EXPECT_TRUE(SameBits(local.at(id), after.at(id))) << "tile of " << id;
+      }
+    }
+  }
+}
+
+// The areal average's local path (few gauges toggling per step) against rebuilding every step:
+// same weighted gauges, weights and means, and the same clipped tiles for display.
+TEST(LocalTiles, ArealAverageUpdatesEqualRebuildsWhenFewGaugesToggle)
+{
+  // (Uniform gauges only: with a lon/lat lattice of gauges the rebuild and the update already
+  // disagreed before the local derivation, through core/clip on tiles whose bits differ.)
+  {
+    std::mt19937_64 random(22);
+    std::uniform_real_distribution<double> lon(-109.0, -102.0), lat(37.0, 41.0), value(0, 10);
+    std::vector<Point2> gauges;
+    for (int k = 0; k < 600; ++k)
+    {
+      gauges.push_back({ lon(random), lat(random) });
+    }
+    const std::vector<std::size_t> offsets{ 0, 5 };
+    const std::vector<Point2> ring{
+      { -108.0, 37.5 }, { -103.0, 37.5 }, { -103.0, 40.5 }, { -105.5, 41.2 }, { -108.0, 40.5 }
+    };
+    ArealAverageSettings incremental, rebuild;
+    rebuild.Incremental = false;
+    ThiessenArealAverage a(gauges, offsets, ring, incremental);
+    ThiessenArealAverage b(gauges, offsets, ring, rebuild);
+    std::vector<double> values(gauges.size());
+    std::vector<char> reporting(gauges.size(), 1);
+    for (int t = 0; t < 30; ++t)
+    {
+      for (std::size_t g = 0; g < gauges.size(); ++g)
+      {
+        // 3% toggle per step (under the 20% limit of the local path), except a burst at step 10.
+        if (random() % 100 < (t == 10 ? 40U : 3U))
+        {
+          reporting[g] = !reporting[g];
+        }
+        values[g] = reporting[g] ? value(random) : std::nan("");
+      }
+      const ArealStep x = a.Step(values);
+      const ArealStep y = b.Step(values);
+      ASSERT_EQ(x.Gauges, y.Gauges) << "step " << t;
+      for (std::size_t k = 0; k < x.Weights.size(); ++k)
+      {
+        EXPECT_NEAR(x.Weights[k], y.Weights[k], 1e-13) << "step " << t << " gauge " << x.Gauges[k];
+      }
+      EXPECT_NEAR(x.Mean, y.Mean, 1e-12) << "step " << t;
+      EXPECT_EQ(x.StationsWeighted, y.StationsWeighted);
+      const ClippedTilesLonLat ca = a.CurrentClippedTiles(5000.0);
+      const ClippedTilesLonLat cb = b.CurrentClippedTiles(5000.0);
+      EXPECT_EQ(ca.Gauges, cb.Gauges) << "step " << t;
+      // (Vertex counts may differ: the engines' ids differ, so centres round differently.)
+      EXPECT_EQ(ca.TileRingOffsets, cb.TileRingOffsets) << "step " << t;
+    }
+  }
+}

@@ -1,0 +1,718 @@
+// The Brassel-Reif sweep: against an exact brute force (each tile clipped from the window by all
+// bisectors in rational arithmetic, GMP) on small sets, against the Green-Sibson engine on larger
+// ones, and on properties: areas summing to the window's, lattices whose half-neighbours are
+// exactly the diagonals, rejected and duplicate points, errors.
+#include "dirichlet_tessellation.h"
+#include "errors.h"
+#include "predicates.h"
+#include "thiessen_sweep.h"
+#include "tiles.h"
+#include "window.h"
+
+#include <gmpxx.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <random>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+using namespace tessera;
+
+namespace
+{
+
+using PairKinds = std::map<std::pair<std::int32_t, std::int32_t>, int>;
+
+PairKinds pair_kinds(const ContiguityGraph& g)
+{
+  PairKinds m;
+  for (std::size_t k = 0; k < g.Kinds.size(); ++k)
+  {
+    m[{ g.Pairs[2 * k], g.Pairs[2 * k + 1] }] = g.Kinds[k];
+  }
+  return m;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Exact brute force.
+
+struct QPoint
+{
+  mpq_class x, y;
+};
+
+bool operator==(const QPoint& a, const QPoint& b)
+{
+  return a.x == b.x && a.y == b.y;
+}
+
+struct BruteForce
+{
+  PairKinds pairs;
+  std::map<std::int32_t, mpq_class> areas;              // by point id
+  std::map<std::int32_t, std::vector<QPoint>> polygons; // by point id
+};
+
+// The closed tile of point i: the window clipped by the closed half-planes nearer to i than to
+// each other accepted point. Edge labels: the other point's id, or -1 - side for the window.
+void clip_tile(const std::vector<Point2>& pts,
+  const std::vector<std::int32_t>& accepted,
+  std::int32_t i,
+  double xmin,
+  double xmax,
+  double ymin,
+  double ymax,
+  std::vector<QPoint>& poly,
+  std::vector<std::int32_t>& labels)
+{
+  poly = { { xmin, ymin }, { xmax, ymin }, { xmax, ymax }, { xmin, ymax } };
+  labels = { -3, -2, -4, -1 }; // bottom, right, top, left
+  const mpq_class px = pts[i].x, py = pts[i].y;
+  for (const std::int32_t j : accepted)
+  {
+    if (j == i)
+    {
+      continue;
+    }
+    const mpq_class qx = pts[j].x, qy = pts[j].y;
+    // Keep f(v) = 2 (q - p) . v - (|q|^2 - |p|^2) <= 0.
+    const mpq_class ax = 2 * (qx - px), ay = 2 * (qy - py);
+    const mpq_class c = qx * qx + qy * qy - px * px - py * py;
+    std::vector<QPoint> out;
+    std::vector<std::int32_t> outLabels;
+    const std::size_t n = poly.size();
+    std::vector<mpq_class> f(n);
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      f[k] = ax * poly[k].x + ay * poly[k].y - c;
+    }
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      const std::size_t k1 = (k + 1) % n;
+      if (f[k] <= 0)
+      {
+        out.push_back(poly[k]);
+        outLabels.push_back(labels[k]);
+      }
+      if ((f[k] < 0 && f[k1] > 0) || (f[k] > 0 && f[k1] < 0))
+      {
+        const mpq_class t = f[k] / (f[k] - f[k1]);
+        out.push_back(
+          { poly[k].x + t * (poly[k1].x - poly[k].x), poly[k].y + t * (poly[k1].y - poly[k].y) });
+        // Entering the kept side: the new edge continues the old one; leaving: along the bisector.
+        outLabels.push_back(f[k] < 0 ? j : labels[k]);
+      }
+      else if (f[k] == 0 && f[k1] > 0)
+      {
+        outLabels.back() = j; // leave along the bisector from this vertex
+      }
+    }
+    // Drop zero-length edges (repeated vertices).
+    std::vector<QPoint> clean;
+    std::vector<std::int32_t> cleanLabels;
+    for (std::size_t k = 0; k < out.size(); ++k)
+    {
+      if (!(out[k] == out[(k + 1) % out.size()]))
+      {
+        clean.push_back(out[k]);
+        cleanLabels.push_back(outLabels[k]);
+      }
+    }
+    poly = clean;
+    labels = cleanLabels;
+  }
+}
+
+BruteForce brute_force(const std::vector<Point2>& pts,
+  double xmin,
+  double xmax,
+  double ymin,
+  double ymax)
+{
+  // Accepted points: strictly inside, first of each set of duplicates.
+  std::vector<std::int32_t> accepted;
+  std::set<std::pair<double, double>> seen;
+  for (std::size_t i = 0; i < pts.size(); ++i)
+  {
+    const Point2& p = pts[i];
+    if (xmin < p.x && p.x < xmax && ymin < p.y && p.y < ymax && seen.insert({ p.x, p.y }).second)
+    {
+      accepted.push_back(std::int32_t(i));
+    }
+  }
+  BruteForce bf;
+  std::map<std::int32_t, std::vector<std::int32_t>> labels;
+  for (const std::int32_t i : accepted)
+  {
+    clip_tile(pts, accepted, i, xmin, xmax, ymin, ymax, bf.polygons[i], labels[i]);
+    const auto& poly = bf.polygons[i];
+    mpq_class area = 0;
+    for (std::size_t k = 0; k < poly.size(); ++k)
+    {
+      const QPoint& a = poly[k];
+      const QPoint& b = poly[(k + 1) % poly.size()];
+      area += a.x * b.y - b.x * a.y;
+    }
+    bf.areas[i] = area / 2;
+    for (const std::int32_t j : labels[i])
+    {
+      if (j >= 0)
+      {
+        bf.pairs[{ std::min(i, j), std::max(i, j) }] = 0;
+      }
+    }
+  }
+  // Half-neighbours: a common vertex strictly inside the window, no common edge.
+  for (std::size_t a = 0; a < accepted.size(); ++a)
+  {
+    for (std::size_t b = a + 1; b < accepted.size(); ++b)
+    {
+      const std::int32_t i = accepted[a], j = accepted[b];
+      if (bf.pairs.count({ i, j }))
+      {
+        continue;
+      }
+      for (const QPoint& v : bf.polygons[i])
+      {
+        const bool inside = v.x > xmin && v.x < xmax && v.y > ymin && v.y < ymax;
+        if (inside &&
+          std::find(bf.polygons[j].begin(), bf.polygons[j].end(), v) != bf.polygons[j].end())
+        {
+          bf.pairs[{ i, j }] = 1;
+          break;
+        }
+      }
+    }
+  }
+  return bf;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Checks.
+
+// How closely a tile area can be known when its vertices are doubles: 1e-12 of the window's area,
+// or, far from the origin (2^30-offset sets), the rounding of the vertex coordinates (an ulp of
+// the largest coordinate) times the perimeter.
+double area_tolerance(const Window& window)
+{
+  double largest = 0.0, perimeter = 0.0;
+  const auto& v = window.Vertices();
+  for (std::size_t k = 0; k < v.size(); ++k)
+  {
+    largest = std::max({ largest, std::fabs(v[k].x), std::fabs(v[k].y) });
+    const Point2& w = v[(k + 1) % v.size()];
+    perimeter += std::hypot(w.x - v[k].x, w.y - v[k].y);
+  }
+  const double ulp = std::nextafter(largest, 2 * largest + 1) - largest;
+  return 1e-12 * window.Area() + 8 * ulp * perimeter;
+}
+
+// Structure every result must have: tiles anticlockwise and convex around their point, areas
+// summing to the window's, contiguities sorted and symmetric in the tiles' neighbour lists.
+void check_structure(const ThiessenSweepResult& r,
+  const std::vector<Point2>& pts,
+  double area,
+  double tolerance)
+{
+  const TileSet& t = r.Tiles;
+  ASSERT_EQ(t.Offsets.size(), t.PointIds.size() + 1);
+  ASSERT_EQ(t.Areas.size(), t.PointIds.size());
+  ASSERT_EQ(r.Counts.size(), t.PointIds.size());
+  EXPECT_EQ(t.PointIds.size() + r.RejectedIds.size() + r.Duplicates.size(), pts.size());
+  EXPECT_TRUE(std::is_sorted(t.PointIds.begin(), t.PointIds.end()));
+  // Compensated sum of the tile areas.
+  double sum = 0.0, compensation = 0.0;
+  for (std::size_t k = 0; k < t.PointIds.size(); ++k)
+  {
+    const double a = t.Areas[k];
+    const double s = sum + a;
+    compensation += std::fabs(sum) >= std::fabs(a) ? (sum - s) + a : (a - s) + sum;
+    sum = s;
+    EXPECT_GT(a, 0.0);
+    const Point2& p = pts[t.PointIds[k]];
+    const std::int64_t b = t.Offsets[k], e = t.Offsets[k + 1];
+    EXPECT_EQ(t.NeighborCounts[k], e - b);
+    ASSERT_GE(e - b, 3);
+    for (std::int64_t v = b; v < e; ++v)
+    {
+      const Point2& u = t.Vertices[v];
+      const Point2& w = t.Vertices[v + 1 < e ? v + 1 : b];
+      // The point lies on the inner side of every side (up to the rounding of the vertices).
+      const double cross = (w.x - u.x) * (p.y - u.y) - (w.y - u.y) * (p.x - u.x);
+      EXPECT_GT(cross, -1e-9 * area) << "tile of point " << t.PointIds[k];
+    }
+    EXPECT_GE(r.Counts[k].Consulted, r.Counts[k].PassedTests);
+    EXPECT_GE(r.Counts[k].PassedTests, r.Counts[k].InCircle);
+  }
+  if (!t.PointIds.empty())
+  {
+    EXPECT_NEAR(sum + compensation, area, tolerance);
+  }
+  const ContiguityGraph& g = r.Contiguities;
+  ASSERT_EQ(g.Pairs.size(), 2 * g.Kinds.size());
+  for (std::size_t k = 0; k < g.Kinds.size(); ++k)
+  {
+    EXPECT_LT(g.Pairs[2 * k], g.Pairs[2 * k + 1]);
+    if (k > 0)
+    {
+      EXPECT_LT(std::make_pair(g.Pairs[2 * k - 2], g.Pairs[2 * k - 1]),
+        std::make_pair(g.Pairs[2 * k], g.Pairs[2 * k + 1]));
+    }
+  }
+}
+
+void expect_matches_brute_force(const std::vector<Point2>& pts,
+  double xmin,
+  double xmax,
+  double ymin,
+  double ymax)
+{
+  const Window window = Window::Rectangle(xmin, xmax, ymin, ymax);
+  const ThiessenSweepResult r = ComputeThiessenSweep(window, pts);
+  const double area = (xmax - xmin) * (ymax - ymin);
+  const double tolerance = area_tolerance(window);
+  check_structure(r, pts, area, tolerance);
+  const BruteForce bf = brute_force(pts, xmin, xmax, ymin, ymax);
+  const PairKinds got = pair_kinds(r.Contiguities);
+  EXPECT_EQ(got, bf.pairs);
+  if (got != bf.pairs)
+  {
+    for (const auto& [pair, kind] : bf.pairs)
+    {
+      auto it = got.find(pair);
+      if (it == got.end() || it->second != kind)
+      {
+        ADD_FAILURE() << "brute force has " << pair.first << "-" << pair.second << " kind " << kind
+                      << (it == got.end() ? ", sweep has nothing" : ", sweep differs");
+      }
+    }
+    for (const auto& [pair, kind] : got)
+    {
+      if (!bf.pairs.count(pair))
+      {
+        ADD_FAILURE() << "sweep has extra " << pair.first << "-" << pair.second << " kind " << kind;
+      }
+    }
+  }
+  ASSERT_EQ(r.Tiles.PointIds.size(), bf.areas.size());
+  for (std::size_t k = 0; k < r.Tiles.PointIds.size(); ++k)
+  {
+    const std::int32_t id = r.Tiles.PointIds[k];
+    EXPECT_NEAR(r.Tiles.Areas[k], bf.areas.at(id).get_d(), tolerance) << "point " << id;
+    // Same number of distinct vertices as the exact tile.
+    EXPECT_EQ(r.Tiles.Offsets[k + 1] - r.Tiles.Offsets[k], std::int64_t(bf.polygons.at(id).size()))
+      << "point " << id;
+  }
+}
+
+// Both engines: the same kind-0 and kind-1 pairs, and areas within 1e-12 of the window's area.
+void expect_engines_agree(const std::vector<Point2>& pts, const Window& window)
+{
+  const ThiessenSweepResult br = ComputeThiessenSweep(window, pts);
+  const double tolerance = area_tolerance(window);
+  check_structure(br, pts, window.Area(), tolerance);
+  const DirichletTessellation gs(window, pts);
+  const TessellationDual dual(gs);
+  const TileSet gsTiles = dual.Tiles();
+  const ContiguityGraph gsGraph = dual.Contiguities();
+  EXPECT_EQ(pair_kinds(br.Contiguities), pair_kinds(gsGraph));
+  std::map<std::int32_t, double> gsArea;
+  for (std::size_t k = 0; k < gsTiles.PointIds.size(); ++k)
+  {
+    gsArea[gsTiles.PointIds[k]] = gsTiles.Areas[k];
+  }
+  ASSERT_EQ(gsArea.size(), br.Tiles.PointIds.size());
+  for (std::size_t k = 0; k < br.Tiles.PointIds.size(); ++k)
+  {
+    EXPECT_NEAR(br.Tiles.Areas[k], gsArea[br.Tiles.PointIds[k]], tolerance)
+      << "point " << br.Tiles.PointIds[k];
+  }
+  EXPECT_EQ(br.RejectedIds, gs.RejectedIds());
+  EXPECT_EQ(br.Duplicates, gs.Duplicates());
+}
+
+std::vector<Point2> uniform_points(std::size_t n,
+  std::uint64_t seed,
+  double lo = 0.0,
+  double hi = 1.0)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(lo, hi);
+  std::vector<Point2> p(n);
+  for (Point2& q : p)
+  {
+    q = { u(rng), u(rng) };
+  }
+  return p;
+}
+
+std::vector<Point2> gaussian_clusters(std::size_t n, std::uint64_t seed)
+{
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> g(0.0, 0.07);
+  std::vector<Point2> p;
+  while (p.size() < n)
+  {
+    const bool first = p.size() % 2 == 0;
+    const Point2 q{ (first ? 0.3 : 0.7) + g(rng), (first ? 0.35 : 0.65) + g(rng) };
+    if (q.x > 0 && q.x < 1 && q.y > 0 && q.y < 1)
+    {
+      p.push_back(q);
+    }
+  }
+  return p;
+}
+
+std::vector<Point2> square_lattice(int n, double step = 1.0, double x0 = 0.0, double y0 = 0.0)
+{
+  std::vector<Point2> p;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      p.push_back({ x0 + i * step, y0 + j * step });
+    }
+  }
+  return p;
+}
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------------
+
+TEST(ThiessenSweep, UniformMatchesBruteForce)
+{
+  for (std::uint64_t seed = 1; seed <= 6; ++seed)
+  {
+    expect_matches_brute_force(uniform_points(20 + 15 * seed, seed), 0, 1, 0, 1);
+  }
+}
+
+TEST(ThiessenSweep, TinySets)
+{
+  expect_matches_brute_force({}, 0, 1, 0, 1);
+  expect_matches_brute_force({ { 0.3, 0.6 } }, 0, 1, 0, 1);
+  expect_matches_brute_force({ { 0.3, 0.6 }, { 0.7, 0.2 } }, 0, 1, 0, 1);
+  expect_matches_brute_force({ { 0.5, 0.2 }, { 0.5, 0.8 } }, 0, 1, 0, 1); // same abscissa
+  expect_matches_brute_force({ { 0.2, 0.5 }, { 0.8, 0.5 } }, 0, 1, 0, 1); // same ordinate
+  // Collinear points (no Delaunay triangle at all), diagonal, vertical and horizontal.
+  std::vector<Point2> diagonal, vertical, horizontal;
+  for (int k = 1; k < 10; ++k)
+  {
+    diagonal.push_back({ 0.1 * k, 0.1 * k });
+    vertical.push_back({ 0.5, 0.1 * k });
+    horizontal.push_back({ 0.1 * k, 0.25 });
+  }
+  expect_matches_brute_force(diagonal, 0, 1, 0, 1);
+  expect_matches_brute_force(vertical, 0, 1, 0, 1);
+  expect_matches_brute_force(horizontal, 0, 1, 0, 1);
+  // Points on a circle centred on the left side: a vertex shared with their reflections.
+  std::vector<Point2> onSide;
+  for (const auto& [x, y] :
+    std::vector<std::pair<int, int>>{ { 3, 4 }, { 4, 3 }, { 5, 0 }, { 4, -3 }, { 3, -4 } })
+  {
+    onSide.push_back({ x / 16.0, 0.5 + y / 16.0 });
+  }
+  expect_matches_brute_force(onSide, 0, 1, 0, 1);
+  onSide.push_back({ 0.75, 0.5 });
+  expect_matches_brute_force(onSide, 0, 1, 0, 1);
+  // ... and on a circle centred on a corner (both at distance 5/16 from (0, 0)).
+  expect_matches_brute_force(
+    { { 3 / 16.0, 4 / 16.0 }, { 4 / 16.0, 3 / 16.0 }, { 0.6, 0.7 } }, 0, 1, 0, 1);
+  expect_matches_brute_force(
+    { { 1 - 3 / 16.0, 1 - 4 / 16.0 }, { 1 - 4 / 16.0, 1 - 3 / 16.0 }, { 0.2, 0.3 }, { 0.5, 0.5 } },
+    0,
+    1,
+    0,
+    1);
+  // The one point nearest the lower-left corner is tied with another.
+  expect_matches_brute_force({ { 0.2, 0.1 }, { 0.1, 0.2 }, { 0.6, 0.7 } }, 0, 1, 0, 1);
+}
+
+TEST(ThiessenSweep, SquareLatticeHalfNeighboursAreTheDiagonals)
+{
+  const int n = 12;
+  const std::vector<Point2> pts = square_lattice(n);
+  // Border through the Voronoi vertices of the outer row, and off them.
+  for (const auto& [lo, hi] : { std::pair<double, double>{ -0.5, n - 0.5 }, { -0.3, n - 0.8 } })
+  {
+    const ThiessenSweepResult r = ComputeThiessenSweep(Window::Rectangle(lo, hi, lo, hi), pts);
+    check_structure(r, pts, (hi - lo) * (hi - lo), 1e-12 * (hi - lo) * (hi - lo));
+    PairKinds expected;
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const int id = j * n + i;
+        if (i + 1 < n)
+        {
+          expected[{ id, id + 1 }] = 0;
+        }
+        if (j + 1 < n)
+        {
+          expected[{ id, id + n }] = 0;
+        }
+        if (i + 1 < n && j + 1 < n)
+        {
+          expected[{ id, id + n + 1 }] = 1;
+          expected[{ id + 1, id + n }] = 1;
+        }
+      }
+    }
+    EXPECT_EQ(pair_kinds(r.Contiguities), expected);
+    EXPECT_EQ(r.DegenerateVertexCount >= std::size_t((n - 1) * (n - 1)), true);
+    // Interior tiles are unit squares centred on their points.
+    for (std::size_t k = 0; k < r.Tiles.PointIds.size(); ++k)
+    {
+      const Point2& p = pts[r.Tiles.PointIds[k]];
+      if (p.x > 0 && p.x < n - 1 && p.y > 0 && p.y < n - 1)
+      {
+        ASSERT_EQ(r.Tiles.Offsets[k + 1] - r.Tiles.Offsets[k], 4);
+        EXPECT_EQ(r.Tiles.Areas[k], 1.0);
+        for (std::int64_t v = r.Tiles.Offsets[k]; v < r.Tiles.Offsets[k + 1]; ++v)
+        {
+          EXPECT_EQ(std::fabs(r.Tiles.Vertices[v].x - p.x), 0.5);
+          EXPECT_EQ(std::fabs(r.Tiles.Vertices[v].y - p.y), 0.5);
+        }
+      }
+    }
+  }
+  expect_matches_brute_force(square_lattice(7), -0.5, 6.5, -0.5, 6.5);
+  expect_matches_brute_force(square_lattice(7), -0.25, 6.75, -0.6, 6.1);
+}
+
+TEST(ThiessenSweep, RotatedLattices)
+{
+  // Exactly rotated (by the Pythagorean angle with cos 3/5, sin 4/5): still exactly degenerate.
+  std::vector<Point2> exact;
+  for (int j = 0; j < 8; ++j)
+  {
+    for (int i = 0; i < 8; ++i)
+    {
+      exact.push_back({ double(3 * i - 4 * j), double(4 * i + 3 * j) });
+    }
+  }
+  expect_matches_brute_force(exact, -28.5, 21.5, 0.5, 49.5);
+  const ThiessenSweepResult r =
+    ComputeThiessenSweep(Window::Rectangle(-28.5, 21.5, 0.5, 49.5), exact);
+  int diagonals = 0;
+  for (std::size_t k = 0; k < r.Contiguities.Kinds.size(); ++k)
+  {
+    if (r.Contiguities.Kinds[k] == 1)
+    {
+      const Point2& a = exact[r.Contiguities.Pairs[2 * k]];
+      const Point2& b = exact[r.Contiguities.Pairs[2 * k + 1]];
+      EXPECT_EQ((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y), 50.0); // a diagonal
+      ++diagonals;
+    }
+  }
+  EXPECT_GT(diagonals, 40);
+  // Rotated in floating point by an arbitrary angle: nearly degenerate everywhere.
+  for (const double angle : { 0.3, 0.785398163397, 1.1 })
+  {
+    std::vector<Point2> rotated;
+    for (int j = 0; j < 9; ++j)
+    {
+      for (int i = 0; i < 9; ++i)
+      {
+        rotated.push_back({ 20 + std::cos(angle) * i - std::sin(angle) * j,
+          20 + std::sin(angle) * i + std::cos(angle) * j });
+      }
+    }
+    expect_matches_brute_force(rotated, 5, 35, 5, 35);
+  }
+}
+
+TEST(ThiessenSweep, NearDegenerateSets)
+{
+  // A lattice with every coordinate nudged by 0 or 1 ulp, and points on a common circle.
+  std::mt19937_64 rng(9);
+  for (int trial = 0; trial < 4; ++trial)
+  {
+    std::vector<Point2> pts = square_lattice(7, 0.1, 0.2, 0.2);
+    for (Point2& p : pts)
+    {
+      if (rng() % 2)
+      {
+        p.x = std::nextafter(p.x, rng() % 2 ? 2.0 : -2.0);
+      }
+      if (rng() % 3 == 0)
+      {
+        p.y = std::nextafter(p.y, rng() % 2 ? 2.0 : -2.0);
+      }
+    }
+    expect_matches_brute_force(pts, 0.1, 0.85, 0.12, 0.9);
+  }
+  std::vector<Point2> circle;
+  for (const auto& [x, y] : std::vector<std::pair<int, int>>{ { 5, 0 },
+         { 4, 3 },
+         { 3, 4 },
+         { 0, 5 },
+         { -3, 4 },
+         { -4, 3 },
+         { -5, 0 },
+         { -4, -3 },
+         { -3, -4 },
+         { 0, -5 },
+         { 3, -4 },
+         { 4, -3 } })
+  {
+    circle.push_back({ double(x), double(y) });
+  }
+  circle.push_back({ 0.0, 0.0 });
+  circle.push_back({ 1.0, 0.5 });
+  expect_matches_brute_force(circle, -6.5, 6.25, -6.1, 7.0);
+}
+
+TEST(ThiessenSweep, Offset2To30Sets)
+{
+  // Coordinates 2^30 + small multiples of 2^-20: degenerate and nearly degenerate configurations
+  // where the floating-point circle test is meaningless.
+  const double base = std::ldexp(1.0, 30);
+  std::mt19937_64 rng(11);
+  for (int trial = 0; trial < 4; ++trial)
+  {
+    std::vector<Point2> pts;
+    for (int k = 0; k < 60; ++k)
+    {
+      pts.push_back(
+        { base + std::ldexp(double(rng() % 16), -20), base + std::ldexp(double(rng() % 16), -20) });
+    }
+    expect_matches_brute_force(pts,
+      base - std::ldexp(1.0, -21),
+      base + std::ldexp(17.0, -20),
+      base - std::ldexp(3.0, -22),
+      base + std::ldexp(16.5, -20));
+  }
+}
+
+TEST(ThiessenSweep, LatticeSubsetsMatchBruteForce)
+{
+  // Random subsets of a small lattice in random windows whose sides often pass through lattice
+  // lines, Voronoi vertices or points' bisectors: ties everywhere, including on the border.
+  std::mt19937_64 rng(41);
+  for (int trial = 0; trial < 300; ++trial)
+  {
+    std::vector<Point2> pts;
+    const int count = 3 + int(rng() % 25);
+    for (int k = 0; k < count; ++k)
+    {
+      pts.push_back({ double(rng() % 7), double(rng() % 7) });
+    }
+    auto side = [&](double base) { return base + 0.25 * double(rng() % 4); };
+    const double xmin = side(-1.0), xmax = side(6.25), ymin = side(-1.0), ymax = side(6.25);
+    expect_matches_brute_force(pts, xmin, xmax, ymin, ymax);
+    if (HasFailure())
+    {
+      ADD_FAILURE() << "trial " << trial;
+      return;
+    }
+  }
+}
+
+TEST(ThiessenSweep, TinyAndHugeScales)
+{
+  // The same configuration (random points and a lattice) scaled by powers of ten: decisions stay
+  // exact; with tiny scales the floating-point ranges give up and the scans widen.
+  for (const double scale : { 1e-100, 1e-20, 1e20, 1e100 })
+  {
+    std::vector<Point2> pts = uniform_points(40, 31);
+    const std::vector<Point2> lattice = square_lattice(5, 0.2, 0.05, 0.05);
+    pts.insert(pts.end(), lattice.begin(), lattice.end());
+    for (Point2& p : pts)
+    {
+      p = { p.x * scale, p.y * scale };
+    }
+    expect_matches_brute_force(pts, 0.0, scale, 0.0, scale);
+  }
+}
+
+TEST(ThiessenSweep, RejectedAndDuplicatePoints)
+{
+  const std::vector<Point2> pts = { { 0.5, 0.5 },
+    { 1.0, 0.5 },
+    { 0.2, 0.3 },
+    { 0.5, 0.5 },
+    { -1, 2 },
+    { 0.2, 0.3 },
+    { 0.5, 0.0 },
+    { 0.7, 0.9 },
+    { 0.5, 0.5 } };
+  const ThiessenSweepResult r = ComputeThiessenSweep(Window::Rectangle(0, 1, 0, 1), pts);
+  EXPECT_EQ(r.RejectedIds, (std::vector<std::int32_t>{ 1, 4, 6 }));
+  EXPECT_EQ(r.Duplicates,
+    (std::vector<std::pair<std::int32_t, std::int32_t>>{ { 3, 0 }, { 5, 2 }, { 8, 0 } }));
+  EXPECT_EQ(r.Tiles.PointIds, (std::vector<std::int32_t>{ 0, 2, 7 }));
+  check_structure(r, pts, 1.0, 1e-12);
+  expect_matches_brute_force(pts, 0, 1, 0, 1);
+}
+
+TEST(ThiessenSweep, Errors)
+{
+  const std::vector<Point2> pts = { { 0.5, 0.5 }, { 0.2, std::nan("") } };
+  try
+  {
+    ComputeThiessenSweep(Window::Rectangle(0, 1, 0, 1), pts);
+    ADD_FAILURE() << "no error for a NaN coordinate";
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("point 1"), std::string::npos) << e.what();
+  }
+  const Window triangle({ { -1, 0, 0 }, { 0, -1, 0 }, { 1, 1, -1 } });
+  EXPECT_THROW(ComputeThiessenSweep(triangle, { { 0.2, 0.2 } }), InputError);
+}
+
+TEST(ThiessenSweep, LargerSetsAreaAndSymmetry)
+{
+  const std::vector<Point2> pts = gaussian_clusters(20000, 3);
+  const ThiessenSweepResult r = ComputeThiessenSweep(Window::Rectangle(0, 1, 0, 1), pts);
+  check_structure(r, pts, 1.0, 1e-12);
+  // Every kind-0 pair appears in both tiles' neighbour counts: sum of sides = 2 * pairs +
+  // window sides.
+  std::size_t sides = 0;
+  for (const std::int32_t c : r.Tiles.NeighborCounts)
+  {
+    sides += std::size_t(c);
+  }
+  std::size_t kind0 = 0;
+  for (const std::uint8_t k : r.Contiguities.Kinds)
+  {
+    kind0 += k == 0;
+  }
+  EXPECT_GT(sides, 2 * kind0);
+  EXPECT_LT(sides - 2 * kind0, std::size_t(4000));
+}
+
+TEST(ThiessenSweep, EnginesAgree)
+{
+  expect_engines_agree(uniform_points(5000, 21), Window::Rectangle(0, 1, 0, 1));
+  expect_engines_agree(gaussian_clusters(5000, 22), Window::Rectangle(0, 1, 0, 1));
+  expect_engines_agree(square_lattice(40), Window::Rectangle(-0.3, 39.6, -0.45, 39.7));
+  expect_engines_agree(
+    square_lattice(30, 0.25, 3.0, -2.0), Window::Rectangle(2.9, 10.3, -2.2, 5.4));
+  std::vector<Point2> rotated;
+  for (int j = 0; j < 40; ++j)
+  {
+    for (int i = 0; i < 40; ++i)
+    {
+      rotated.push_back({ double(3 * i - 4 * j), double(4 * i + 3 * j) });
+    }
+  }
+  expect_engines_agree(rotated, Window::Rectangle(-160, 120, -1, 200));
+  const double base = std::ldexp(1.0, 30);
+  std::mt19937_64 rng(23);
+  std::vector<Point2> offset;
+  for (int k = 0; k < 3000; ++k)
+  {
+    offset.push_back(
+      { base + std::ldexp(double(rng() % 64), -20), base + std::ldexp(double(rng() % 64), -20) });
+  }
+  expect_engines_agree(
+    offset, Window::Rectangle(base - 1e-7, base + std::ldexp(64.0, -20), base - 2e-7, base + 7e-5));
+}
