@@ -1,5 +1,6 @@
-// Brassel-Reif sweep against the Green-Sibson engine: time against N (1e3 .. 1e6) for uniform and
-// clustered (two Gaussian clusters, as in the paper's tests) points in the unit square, and the
+// Brassel-Reif sweep against the Green-Sibson engine: time against N (1e3 .. 1e6) for uniform,
+// clustered (two Gaussian clusters, as in the paper's tests) and square-lattice points (all
+// vertices degenerate: the exact predicates' slow tiers) in the unit square, and the
 // paper's Fig. 11 counters per polygon: A (points consulted), B (passing the abscissa-range and
 // half-plane tests), C (inside or on the circle), and searches per polygon.
 //
@@ -30,8 +31,30 @@ using namespace tessera;
 namespace
 {
 
-std::vector<Point2> make_points(std::size_t n, bool clustered, std::uint64_t seed)
+enum class Input
 {
+  Uniform,
+  Clustered,
+  Lattice
+};
+
+std::vector<Point2> make_points(std::size_t n, Input input, std::uint64_t seed)
+{
+  if (input == Input::Lattice)
+  {
+    // A square lattice of about n points: every Delaunay face degenerate (4 co-circular points).
+    const std::size_t side = std::size_t(std::lround(std::sqrt(double(n))));
+    std::vector<Point2> points;
+    for (std::size_t j = 0; j < side; ++j)
+    {
+      for (std::size_t i = 0; i < side; ++i)
+      {
+        points.push_back({ (double(i) + 0.5) / double(side), (double(j) + 0.5) / double(side) });
+      }
+    }
+    return points;
+  }
+  const bool clustered = input == Input::Clustered;
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   std::normal_distribution<double> g(0.0, 0.08);
@@ -100,11 +123,11 @@ int main(int argc, char** argv)
     "C/poly",
     "srch",
     "agree");
-  for (const bool clustered : { false, true })
+  for (const Input input : { Input::Uniform, Input::Clustered, Input::Lattice })
   {
     for (std::size_t n = 1000; n <= maxN; n *= 10)
     {
-      const std::vector<Point2> points = make_points(n, clustered, 42 + n);
+      const std::vector<Point2> points = make_points(n, input, 42 + n);
       ThiessenSweepResult br;
       const Timing tb = best_of(repeats, [&] { br = ComputeThiessenSweep(window, points); });
       TileSet gsTiles;
@@ -149,8 +172,8 @@ int main(int argc, char** argv)
         agree = agree && std::fabs(gsArea[br.Tiles.PointIds[i]] - br.Tiles.Areas[i]) <= 1e-12;
       }
       std::printf("%-10s %9zu | %9.3f %9.3f | %9.3f %9.3f | %6.2f | %7.2f %7.2f %6.2f %6.2f | %s\n",
-        clustered ? "clustered" : "uniform",
-        n,
+        input == Input::Uniform ? "uniform" : (input == Input::Clustered ? "clustered" : "lattice"),
+        points.size(),
         tb.cpu,
         tb.wall,
         tg.cpu,

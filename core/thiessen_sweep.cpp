@@ -1323,12 +1323,32 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
   };
   std::vector<Keyed> keyed;
   keyed.reserve(points.size());
+  // Work at about unit scale: multiplying every coordinate by a power of two changes no exact
+  // decision and no rounding (barring underflow and overflow, checked), and keeps the
+  // floating-point ranges of the search, which give up outside 1e-70 .. 1e70, effective.
+  int scale = 0;
+  {
+    const double extent = std::max(xmax - xmin, ymax - ymin);
+    if (std::isfinite(extent) && extent > 0.0)
+    {
+      const int e = std::ilogb(extent);
+      scale = (e > 64 || e < -64) ? -e : 0;
+    }
+    auto exact = [scale](double v) { return std::ldexp(std::ldexp(v, scale), -scale) == v; };
+    bool ok = exact(xmin) && exact(xmax) && exact(ymin) && exact(ymax);
+    for (std::size_t i = 0; i < points.size() && ok && scale != 0; ++i)
+    {
+      ok = exact(points[i].x) && exact(points[i].y);
+    }
+    scale = ok ? scale : 0;
+  }
   for (std::size_t i = 0; i < points.size(); ++i)
   {
     const Point2& p = points[i];
     if (xmin < p.x && p.x < xmax && ymin < p.y && p.y < ymax)
     {
-      keyed.push_back({ p.x, p.y, static_cast<std::int32_t>(i) });
+      keyed.push_back(
+        { std::ldexp(p.x, scale), std::ldexp(p.y, scale), static_cast<std::int32_t>(i) });
     }
     else
     {
@@ -1387,7 +1407,13 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
   keyed = std::vector<Keyed>();
   std::sort(result.Duplicates.begin(), result.Duplicates.end());
 
-  Sweep sweep(xmin, xmax, ymin, ymax, std::move(xs), std::move(ys), std::move(ids));
+  Sweep sweep(std::ldexp(xmin, scale),
+    std::ldexp(xmax, scale),
+    std::ldexp(ymin, scale),
+    std::ldexp(ymax, scale),
+    std::move(xs),
+    std::move(ys),
+    std::move(ids));
   sweep.Run();
   result.VertexCount = sweep.Vertices.size();
   result.DegenerateVertexCount = sweep.DegenerateVertices;
@@ -1461,10 +1487,12 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
     tiles.PointIds.push_back(id);
     for (std::int32_t k = 0; k < record.Size; ++k)
     {
-      tiles.Vertices.push_back(sweep.Vertices[vertexIds[record.Start + k]]);
+      const Point2& v = sweep.Vertices[vertexIds[record.Start + k]];
+      tiles.Vertices.push_back(
+        scale == 0 ? v : Point2{ std::ldexp(v.x, -scale), std::ldexp(v.y, -scale) });
     }
     tiles.Offsets.push_back(static_cast<std::int64_t>(tiles.Vertices.size()));
-    tiles.Areas.push_back(record.Area);
+    tiles.Areas.push_back(scale == 0 ? record.Area : std::ldexp(record.Area, -2 * scale));
     tiles.NeighborCounts.push_back(record.Size);
     result.Counts.push_back(record.Counts);
     group.clear();

@@ -23,10 +23,21 @@
 //    in E1 are tested last (their circles, large unless A is near the border, only bound the
 //    range when A's own strip holds no candidate), which changes the work, not the result.
 //  - Candidates come from a bucket index over the x-sorted centroids: the sorted sequence cut
-//    into about sqrt(N) strips of consecutive x, each sorted by y. The scan starts at A and moves
-//    outward in y within a strip and outward strip by strip, as the paper's scan moves outward
-//    from X along the sorted sequence, and stops where the shrinking circle's abscissa (and
-//    ordinate) range ends.
+//    into about sqrt(N) strips of consecutive x (a run of equal x, a lattice column, is never
+//    split), each sorted by y. The scan starts at A and moves outward in y within a strip and
+//    outward strip by strip, as the paper's scan moves outward from X along the sorted sequence.
+//    Until a first candidate is found it widens ring by ring over the neighbouring strips; then
+//    it stops where the shrinking circle's abscissa range ends, and within each strip where the
+//    circle's chord over that strip's abscissae ends (so a strip the circle only grazes costs a
+//    binary search, not a scan); strips lying on a vertical or horizontal segment in the closed
+//    far side of A -> X are skipped whole.
+//  - Cost: near-linear for uniform and clustered points and for lattices (about 1 us per point at
+//    1M points here, the Green-Sibson engine's order). Points exactly on one slanted line are
+//    this method's bad case: the circles then graze the line, meet every strip, and the work
+//    grows like N^1.5 to N^2 (64k points on a diagonal take seconds). A transect with some
+//    scatter is fine (40k points within 1e-3 of a line: 0.07 s; within 1e-7: 0.6 s, ten times
+//    the Green-Sibson engine). Any scale works alike: the sweep runs on coordinates rescaled by a
+//    power of two to a unit-sized window, which changes no decision and no rounding.
 //  - Neighbour records (Fig. 6): every vertex found is stored once and entered in the records of
 //    all its (unprocessed) centroids, so a later polygon uses its known vertices and searches only
 //    the missing ones; a record is dropped when its polygon is completed.

@@ -632,6 +632,47 @@ TEST(ThiessenSweep, TinyAndHugeScales)
   }
 }
 
+TEST(ThiessenSweep, PowerOfTwoScalingIsExact)
+{
+  // Scaling everything by a power of two changes no decision and no rounding: the same pairs, and
+  // vertices and areas scaled exactly (2000 points: also checks that tiny and huge windows keep
+  // their search ranges).
+  const std::vector<Point2> pts = gaussian_clusters(2000, 51);
+  const ThiessenSweepResult r = ComputeThiessenSweep(Window::Rectangle(0, 1, 0, 1), pts);
+  for (const int e : { -900, -300, 300, 900 })
+  {
+    std::vector<Point2> scaled = pts;
+    for (Point2& p : scaled)
+    {
+      p = { std::ldexp(p.x, e), std::ldexp(p.y, e) };
+    }
+    const double one = std::ldexp(1.0, e);
+    const ThiessenSweepResult s = ComputeThiessenSweep(Window::Rectangle(0, one, 0, one), scaled);
+    EXPECT_EQ(pair_kinds(s.Contiguities), pair_kinds(r.Contiguities));
+    ASSERT_EQ(s.Tiles.Vertices.size(), r.Tiles.Vertices.size());
+    for (std::size_t k = 0; k < r.Tiles.Vertices.size(); ++k)
+    {
+      ASSERT_EQ(s.Tiles.Vertices[k].x, std::ldexp(r.Tiles.Vertices[k].x, e)) << e;
+      ASSERT_EQ(s.Tiles.Vertices[k].y, std::ldexp(r.Tiles.Vertices[k].y, e)) << e;
+    }
+    if (e > -500)
+    {
+      for (std::size_t k = 0; k < r.Tiles.Areas.size(); ++k)
+      {
+        ASSERT_EQ(s.Tiles.Areas[k], std::ldexp(r.Tiles.Areas[k], 2 * e)) << e;
+      }
+    }
+    // The search stayed local: about as many points consulted as at unit scale.
+    double a = 0, b = 0;
+    for (std::size_t k = 0; k < r.Counts.size(); ++k)
+    {
+      a += r.Counts[k].Consulted;
+      b += s.Counts[k].Consulted;
+    }
+    EXPECT_EQ(a, b);
+  }
+}
+
 TEST(ThiessenSweep, RejectedAndDuplicatePoints)
 {
   const std::vector<Point2> pts = { { 0.5, 0.5 },
