@@ -143,6 +143,36 @@ void ClipByEdge(const std::vector<Point2>& in,
   }
 }
 
+// Replaces points by their convex hull: anticlockwise, strictly convex (no repeated or collinear
+// vertices), by Andrew's monotone chain with exact orientations. Empty or under 3 points when the
+// points are collinear.
+void ConvexHull(std::vector<Point2>& points, std::vector<Point2>& hull)
+{
+  std::sort(points.begin(),
+    points.end(),
+    [](const Point2& a, const Point2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  hull.clear();
+  for (const Point2& p : points)
+  {
+    while (hull.size() >= 2 && orient2d_fast(hull[hull.size() - 2], hull.back(), p) <= 0)
+    {
+      hull.pop_back();
+    }
+    hull.push_back(p);
+  }
+  const std::size_t lower = hull.size();
+  for (std::size_t i = points.size() - 1; i-- > 0;)
+  {
+    while (hull.size() > lower && orient2d_fast(hull[hull.size() - 2], hull.back(), points[i]) <= 0)
+    {
+      hull.pop_back();
+    }
+    hull.push_back(points[i]);
+  }
+  hull.pop_back(); // the first point again
+  std::swap(points, hull);
+}
+
 void DropRepeatedVertices(std::vector<Point2>& ring)
 {
   ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
@@ -662,6 +692,18 @@ double Catchment::ClipInto(const Point2* tile,
   {
     work.Tile[i] = { tile[i].x - origin.x, tile[i].y - origin.y };
   }
+  // Sutherland-Hodgman intersects the half-planes of the tile's edges, which is the tile only if
+  // every turn is strictly convex. Rounded tiles have vertices an ulp apart (and the shift above
+  // can make more): the line through two such vertices has an arbitrary direction, and its
+  // half-plane can cut away most of the tile, or all of it, depending on the start vertex. So the
+  // clipping uses the convex hull, taken in the very coordinates it runs on, which differs from a
+  // nearly convex tile by slivers an ulp wide.
+  ConvexHull(work.Tile, work.ClipB);
+  const std::size_t hullCount = work.Tile.size();
+  if (hullCount < 3)
+  {
+    return 0.0; // thinner than the rounding of the shift
+  }
   CompensatedSum area;
   for (std::size_t first = 0; first < work.Candidates.size();)
   {
@@ -682,9 +724,9 @@ double Catchment::ClipInto(const Point2* tile,
     {
       work.ClipA.push_back({ p.x - origin.x, p.y - origin.y });
     }
-    for (std::size_t e = 0; e < count && !work.ClipA.empty(); ++e)
+    for (std::size_t e = 0; e < hullCount && !work.ClipA.empty(); ++e)
     {
-      ClipByEdge(work.ClipA, work.Tile[e], work.Tile[e + 1 == count ? 0 : e + 1], work.ClipB);
+      ClipByEdge(work.ClipA, work.Tile[e], work.Tile[e + 1 == hullCount ? 0 : e + 1], work.ClipB);
       std::swap(work.ClipA, work.ClipB);
     }
     DropRepeatedVertices(work.ClipA);

@@ -6,13 +6,17 @@
 // boundaries anticlockwise, holes clockwise, islands in holes anticlockwise); then the catchment's
 // indicator is the sum of the rings' winding numbers, and area(tile & catchment) is the sum over
 // rings of the signed area of the ring clipped by the tile (Sutherland-Hodgman against each tile
-// edge keeps winding numbers inside the tile, even for a non-convex ring). Only the ring segments
-// near the tile are visited: a uniform grid over the segments gives those whose cells meet the
-// tile's bounding box B. Each run of the other segments lies outside B and is replaced by a path
-// around B's boundary; that changes the ring's winding number inside B by a whole number of turns,
-// found exactly by counting signed crossings of a horizontal ray from B's centre with the whole
-// ring (the grid's row) and with the replaced ring, and repaid with whole loops around B. Rings
-// with no segment near the tile contribute a constant over B: the tile itself, or nothing.
+// edge keeps winding numbers inside the tile, even for a non-convex ring). The clipping polygon is
+// the convex hull of the tile's vertices: Sutherland-Hodgman intersects the edges' half-planes,
+// which is the tile only when every turn is strictly convex, and rounded tiles have collinear,
+// repeated and ulp-apart vertices; the line through two vertices an ulp apart points anywhere. Only
+// the ring segments near the tile are visited: a uniform grid over the segments gives those whose
+// cells meet the tile's bounding box B. Each run of the other segments lies outside B and is
+// replaced by a path around B's boundary; that changes the ring's winding number inside B by a
+// whole number of turns, found exactly by counting signed crossings of a horizontal ray from B's
+// centre with the whole ring (the grid's row) and with the replaced ring, and repaid with whole
+// loops around B. Rings with no segment near the tile contribute a constant over B: the tile
+// itself, or nothing.
 //
 // Which segments are near, and every winding number, are decided exactly (orient2d) on the input
 // coordinates. The clipping runs on coordinates relative to the tile's first vertex (its
@@ -106,9 +110,11 @@ public:
   /// Even-odd membership, exact for points off the boundary (boundary points get either answer).
   bool Contains(const Point2& p) const;
 
-  /// Area of tile & catchment. The tile is a convex polygon with anticlockwise vertices (a small
-  /// non-convexity from rounding does no harm). Throws InputError for fewer than 3 vertices, a
-  /// NaN or infinite vertex, or clockwise vertices; a tile of zero area gives 0.
+  /// Area of tile & catchment. The tile is a convex polygon with anticlockwise vertices; it is
+  /// clipped as the convex hull of its vertices, so repeated and collinear vertices, and the small
+  /// non-convexity of rounding (vertices an ulp apart, folds), change the area by ulps. Throws
+  /// InputError for fewer than 3 vertices, a NaN or infinite vertex, or clockwise vertices; a tile
+  /// of zero area gives 0.
   double ClipArea(const std::vector<Point2>& tile) const;
   /// Area and rings of tile & catchment (see ClippedTile).
   ClippedTile Clip(const std::vector<Point2>& tile) const;

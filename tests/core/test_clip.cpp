@@ -3,8 +3,12 @@
 // even-odd test, exact rational catchment areas, and tilings whose pieces must add up.
 
 #include "clip.h"
+#include "dirichlet_tessellation.h"
 #include "errors.h"
+#include "geo.h"
 #include "polygon_validation.h"
+#include "tiles.h"
+#include "window.h"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -159,6 +163,28 @@ mpq_class ExactClippedArea(const Rings& rings, const std::vector<Point2>& tile)
     }
     const mpq_class piece = ExactArea(ExactClip(ring, window));
     total += depth % 2 == 0 ? piece : mpq_class(-piece);
+  }
+  return total;
+}
+
+// The same for any polygon tile, not only a convex one: the fan of triangles from vertex 0, each
+// clipped with its vertices made anticlockwise and counted with its orientation's sign, adds up the
+// tile's winding number, so folds and reflex vertices count as the polygon has them.
+mpq_class ExactPolygonClippedArea(const Rings& rings, const std::vector<Point2>& tile)
+{
+  mpq_class total = 0;
+  for (std::size_t i = 1; i + 1 < tile.size(); ++i)
+  {
+    std::vector<Point2> triangle{ tile[0], tile[i], tile[i + 1] };
+    const int sign = sgn(Cross(ToExact(tile[0]), ToExact(tile[i]), ToExact(tile[i + 1])));
+    if (sign < 0)
+    {
+      std::swap(triangle[1], triangle[2]);
+    }
+    if (sign != 0)
+    {
+      total += sign * ExactClippedArea(rings, triangle);
+    }
   }
   return total;
 }
@@ -630,6 +656,175 @@ TEST(Clip, GridAlignedWithCatchmentEdgesSumsExactly)
   }
   EXPECT_EQ(sum, ExactRegionArea(rings).get_d());
   EXPECT_EQ(catchment.Area(), 36.0 - 6.0 - 2.0);
+}
+
+// A lattice cell as a tessellation may deliver it: a collinear vertex, a repeated corner, and a
+// fold on the top side (a vertex a hair to the right of the one before while the side runs left).
+// The polygon is still exactly the cell, but the fold's edge points right, and its half-plane
+// (above the top side) holds nothing of the cell.
+std::vector<Point2> RoughCell(double x0, double y0, double x1, double y1)
+{
+  const double xm = 0.5 * (x0 + x1);
+  return { { x0, y0 },
+    { xm, y0 },
+    { x1, y0 },
+    { x1, y0 },
+    { x1, y1 },
+    { xm, y1 },
+    { std::nextafter(xm, x1), y1 },
+    { x0, y1 } };
+}
+
+// Tiles of a lattice whose lines run through the catchment's vertices (densified sides, a slanted
+// side through lattice points, a hole with lattice-point corners), each tile with collinear,
+// repeated and folded vertices. The tiles cover the catchment, so their clipped areas add up to it;
+// a tile's area does not depend on its start vertex nor on the extra vertices.
+TEST(Clip, RoughLatticeTilesThroughCatchmentVerticesSumToCatchmentArea)
+{
+  const double o = 4096.0; // shifting to the tile's first vertex stays exact for these dyadics
+  std::vector<Point2> outer;
+  const auto side = [&](Point2 a, Point2 b, int pieces)
+  {
+    for (int k = 0; k < pieces; ++k)
+    {
+      const double t = static_cast<double>(k) / pieces;
+      outer.push_back({ o + a.x + t * (b.x - a.x), o + a.y + t * (b.y - a.y) });
+    }
+  };
+  side({ 1, 1 }, { 9, 1 }, 32);
+  side({ 9, 1 }, { 9, 5 }, 16);
+  side({ 9, 5 }, { 5, 7 }, 8); // through (7, 6) and half-lattice points
+  side({ 5, 7 }, { 1, 7 }, 16);
+  side({ 1, 7 }, { 1, 1 }, 24);
+  Rings rings;
+  rings.Add(outer);
+  rings.Add({ { o + 3, o + 2 }, { o + 6, o + 3 }, { o + 3, o + 4 } });
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  const mpq_class exactArea = ExactRegionArea(rings);
+  ASSERT_EQ(exactArea, mpq_class(8 * 4 + 4 * 2 + 4 * 2 / 2 - 3));
+
+  std::vector<std::size_t> offsets{ 0 };
+  std::vector<Point2> vertices;
+  for (int j = 0; j < 8; ++j)
+  {
+    for (int i = 0; i < 10; ++i)
+    {
+      const std::vector<Point2> cell = RoughCell(o + i, o + j, o + i + 1, o + j + 1);
+      vertices.insert(vertices.end(), cell.begin(), cell.end());
+      offsets.push_back(vertices.size());
+    }
+  }
+  const tessera::ClippedTiles clipped = catchment.ClipAll(offsets, vertices);
+  double sum = 0.0;
+  int partial = 0;
+  for (std::size_t t = 0; t + 1 < offsets.size(); ++t)
+  {
+    std::vector<Point2> tile(vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t]),
+      vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t + 1]));
+    const double area = clipped.Areas[t];
+    sum += area;
+    partial += area > 0.0 && area < 1.0;
+    const mpq_class exact = ExactPolygonClippedArea(rings, tile);
+    EXPECT_NEAR(area, exact.get_d(), Tolerance(exact, 1.0)) << "tile " << t;
+    const std::vector<Point2> clean = Rectangle(tile[0].x, tile[0].y, tile[4].x, tile[4].y);
+    EXPECT_NEAR(catchment.ClipArea(clean), area, 1e-14) << "tile " << t;
+    for (std::size_t start = 1; start < tile.size(); ++start)
+    {
+      std::rotate(tile.begin(), tile.begin() + 1, tile.end());
+      EXPECT_NEAR(catchment.ClipArea(tile), area, 1e-14) << "tile " << t << " start " << start;
+    }
+  }
+  EXPECT_GE(partial, 8); // the cells along the slanted sides
+  EXPECT_NEAR(sum, exactArea.get_d(), 1e-12 * exactArea.get_d());
+}
+
+// Thiessen tiles of a lon/lat lattice of gauges, projected by the automatic Albers projection, and
+// a densified, projected catchment: tile sides run through catchment vertices, and the tiles have
+// vertices an ulp apart (rounded face centres that coincide exactly in the lattice), and
+// near-collinear ones. Before the tile was clipped as its convex hull, an edge between two vertices
+// an ulp apart could cut away the whole tile, depending on the start vertex.
+TEST(Clip, ProjectedLatticeThiessenTilesSumToCatchmentArea)
+{
+  std::vector<Point2> gauges;
+  for (int j = 0; j < 12; ++j)
+  {
+    for (int i = 0; i < 14; ++i)
+    {
+      gauges.push_back({ -109.0 + 0.3 * i, 37.0 + 0.16 * j });
+    }
+  }
+  const std::vector<Point2> corners{
+    { -108.0, 37.5 }, { -106.0, 37.5 }, { -106.0, 38.5 }, { -107.0, 38.8 }, { -108.0, 38.5 }
+  };
+  const tessera::GeographicProjection projection(tessera::AutomaticParameters(gauges));
+  std::vector<Point2> sites;
+  for (const Point2& g : gauges)
+  {
+    sites.push_back(projection.Forward(g));
+  }
+  Rings rings;
+  {
+    std::vector<Point2> ring;
+    for (std::size_t k = 0; k < corners.size(); ++k)
+    {
+      const Point2 a = corners[k], b = corners[(k + 1) % corners.size()];
+      const int pieces = tessera::DensifiedPieceCount(a, b, 0.01);
+      for (int i = 0; i < pieces; ++i)
+      {
+        ring.push_back(
+          projection.Forward(tessera::InterpolateLonLat(a, b, static_cast<double>(i) / pieces)));
+      }
+    }
+    rings.Add(ring);
+  }
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  const mpq_class exactArea = ExactRegionArea(rings);
+
+  tessera::Box2 box{ sites[0].x, sites[0].x, sites[0].y, sites[0].y };
+  for (const Point2& p : sites)
+  {
+    box = { std::min(box.XMin, p.x),
+      std::max(box.XMax, p.x),
+      std::min(box.YMin, p.y),
+      std::max(box.YMax, p.y) };
+  }
+  const tessera::DirichletTessellation tessellation(
+    tessera::Window::Rectangle(box.XMin - 2e5, box.XMax + 2e5, box.YMin - 2e5, box.YMax + 2e5),
+    sites);
+  const tessera::TileSet tiles = tessera::ComputeTiles(tessellation);
+  std::vector<std::size_t> offsets(tiles.Offsets.begin(), tiles.Offsets.end());
+  const tessera::ClippedTiles clipped = catchment.ClipAll(offsets, tiles.Vertices, false);
+  double sum = 0.0;
+  int partial = 0, rough = 0;
+  for (std::size_t t = 0; t + 1 < offsets.size(); ++t)
+  {
+    std::vector<Point2> tile(tiles.Vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t]),
+      tiles.Vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t + 1]));
+    const double area = clipped.Areas[t];
+    const double tileArea = PlainArea(tile);
+    sum += area;
+    partial += area > 0.0 && area < 0.999 * tileArea;
+    for (std::size_t i = 0; i < tile.size(); ++i)
+    {
+      const Point2 a = tile[i], b = tile[(i + 1) % tile.size()];
+      rough += std::fabs(a.x - b.x) + std::fabs(a.y - b.y) < 1e-6;
+    }
+    if (area == 0.0 || area == tileArea)
+    {
+      continue; // no clipping happened: the rotations below would not exercise it
+    }
+    const mpq_class exact = ExactPolygonClippedArea(rings, tile);
+    EXPECT_NEAR(area, exact.get_d(), Tolerance(exact, tileArea)) << "tile " << t;
+    for (std::size_t start = 1; start < tile.size(); ++start)
+    {
+      std::rotate(tile.begin(), tile.begin() + 1, tile.end());
+      EXPECT_NEAR(catchment.ClipArea(tile), area, 1e-12 * tileArea)
+        << "tile " << t << " start " << start;
+    }
+  }
+  EXPECT_GT(partial, 20);
+  EXPECT_GT(rough, 10); // the tiles do have vertices a hair apart
+  EXPECT_NEAR(sum, exactArea.get_d(), 1e-12 * exactArea.get_d());
 }
 
 // ---- Bad input ---------------------------------------------------------------------------------
