@@ -888,9 +888,68 @@ ContiguityGraph ComputeContiguityGraph(const DirichletTessellation& tessellation
   return TessellationDual(tessellation).Contiguities();
 }
 
+namespace
+{
+/// Whether two adjacent real triangles are exactly co-circular somewhere (then faces must be
+/// merged and the full dual is needed). One inlined, filtered incircle per interior edge: far
+/// cheaper than the dual's centres when, as for most data, no face is degenerate.
+bool HasCocircularNeighbours(const DirichletTessellation& tessellation)
+{
+  const auto& org = tessellation.Origin();
+  const auto& twin = tessellation.Twin();
+  const std::vector<Point2>& pts = tessellation.Points();
+  for (std::int32_t e = 0; e < std::int32_t(org.size()); ++e)
+  {
+    const std::int32_t f = twin[e];
+    if (f < e)
+    {
+      continue;
+    }
+    const std::int32_t t = e / 3, u = f / 3;
+    if (org[3 * t] == DirichletTessellation::Free || tessellation.IsGhostTriangle(t) ||
+      tessellation.IsGhostTriangle(u))
+    {
+      continue;
+    }
+    const std::int32_t d = org[DirichletTessellation::Prev(f)];
+    if (incircle_fast(pts[org[3 * t]], pts[org[3 * t + 1]], pts[org[3 * t + 2]], pts[d]) == 0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+} // namespace
+
 DelaunayFaces ComputeDelaunayFaces(const DirichletTessellation& tessellation, bool splitDegenerate)
 {
-  return TessellationDual(tessellation).Faces(splitDegenerate);
+  if (!tessellation.IsTwoDimensional() || HasCocircularNeighbours(tessellation))
+  {
+    return TessellationDual(tessellation).Faces(splitDegenerate);
+  }
+  // No degenerate face: the faces are the real triangles, each starting at its smallest id, in
+  // the order of the triangle arrays (as Faces() lists them).
+  const auto& org = tessellation.Origin();
+  DelaunayFaces faces;
+  faces.Offsets.reserve(2 * tessellation.AcceptedCount() + 1);
+  faces.PointIds.reserve(6 * tessellation.AcceptedCount());
+  faces.Offsets.push_back(0);
+  for (std::int32_t t = 0; t < std::int32_t(org.size() / 3); ++t)
+  {
+    const std::int32_t a = org[3 * t], b = org[3 * t + 1], c = org[3 * t + 2];
+    if (a < 0 || b < 0 || c < 0)
+    {
+      continue; // ghost or free
+    }
+    if (a < b && a < c)
+      faces.PointIds.insert(faces.PointIds.end(), { a, b, c });
+    else if (b < c)
+      faces.PointIds.insert(faces.PointIds.end(), { b, c, a });
+    else
+      faces.PointIds.insert(faces.PointIds.end(), { c, a, b });
+    faces.Offsets.push_back(std::int64_t(faces.PointIds.size()));
+  }
+  return faces;
 }
 
 // ---------------------------------------------------------------------------------------------

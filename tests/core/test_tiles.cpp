@@ -652,3 +652,42 @@ TEST(TilesExactWindow, NearDegenerateSetsAndObliqueWindow)
     ExpectExactContiguities(oblique, points, false);
   }
 }
+
+TEST(Tiles, FastDelaunayFacesEqualTheDualsFaces)
+{
+  // ComputeDelaunayFaces skips the dual when no two neighbouring triangles are co-circular: it
+  // must list exactly what TessellationDual::Faces lists, also after removals left free
+  // triangles, and fall back to the dual when a face is degenerate.
+  std::mt19937_64 random(99);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int round = 0; round < 6; ++round)
+  {
+    std::vector<tessera::Point2> points(400);
+    for (auto& p : points)
+    {
+      p = { u(random), u(random) };
+    }
+    if (round % 2 == 1)
+    {
+      for (int k = 0; k < 25; ++k) // a lattice patch: co-circular squares
+      {
+        points[k] = { 0.3 + 0.01 * (k % 5), 0.3 + 0.01 * (k / 5) };
+      }
+    }
+    tessera::DirichletTessellation t(tessera::Window::Rectangle(-0.5, 1.5, -0.5, 1.5), points);
+    if (round >= 2)
+    {
+      for (std::int32_t id = 100; id < 160; ++id)
+      {
+        t.Remove(id);
+      }
+    }
+    for (bool split : { false, true })
+    {
+      const tessera::DelaunayFaces fast = tessera::ComputeDelaunayFaces(t, split);
+      const tessera::DelaunayFaces dual = tessera::TessellationDual(t).Faces(split);
+      EXPECT_EQ(fast.Offsets, dual.Offsets) << "round " << round;
+      EXPECT_EQ(fast.PointIds, dual.PointIds) << "round " << round;
+    }
+  }
+}
