@@ -51,9 +51,9 @@ inline int InCircle(const Point2& a, const Point2& b, const Point2& c, const Poi
 }
 #else
 // A second, still exact, stage for when the filter cannot decide: points on a common grid.
-// Degenerate inputs are usually lattices or rounded data (the benchmark's 1000 x 1000 lattice, gauges
-// on integer coordinates), and there nearly every undecided determinant is exactly zero. If all
-// coordinates are integer multiples of a power of two u, with quotients below 2^51, then the
+// Degenerate inputs are usually lattices or rounded data (the benchmark's 1000 x 1000 lattice,
+// gauges on integer coordinates), and there nearly every undecided determinant is exactly zero. If
+// all coordinates are integer multiples of a power of two u, with quotients below 2^51, then the
 // coordinate differences are exact; if moreover they are below 2^B u in magnitude, every product
 // and sum of the floating-point determinant is an integer multiple of a power of u below 2^53
 // times it, so the determinant is computed without any rounding and its sign is exact. B = 25 for
@@ -108,8 +108,8 @@ inline double GridUnit(double m, int bits, int lowest, int highest)
 bool GridOrient(const Point2& a, const Point2& b, const Point2& c, int& sign)
 {
   const double acx = a.x - c.x, bcx = b.x - c.x, acy = a.y - c.y, bcy = b.y - c.y;
-  const double m = std::max(std::max(std::fabs(acx), std::fabs(bcx)),
-    std::max(std::fabs(acy), std::fabs(bcy)));
+  const double m =
+    std::max(std::max(std::fabs(acx), std::fabs(bcx)), std::max(std::fabs(acy), std::fabs(bcy)));
   const double u = GridUnit(m, 25, -500, 480);
   if (u == 0.0 || !OnGrid(a.x, u) || !OnGrid(a.y, u) || !OnGrid(b.x, u) || !OnGrid(b.y, u) ||
     !OnGrid(c.x, u) || !OnGrid(c.y, u))
@@ -200,8 +200,8 @@ inline int InCircle(const Point2& a, const Point2& b, const Point2& c, const Poi
   const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
     (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
     (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
-  const double errbound = detail::kIncircleBound * permanent +
-    detail::kUnderflowTerm * ((alift + blift + clift) + 1.0);
+  const double errbound =
+    detail::kIncircleBound * permanent + detail::kUnderflowTerm * ((alift + blift + clift) + 1.0);
   if (__builtin_expect(std::fabs(det) > errbound, 1))
   {
     return int(det > 0.0) - int(det < 0.0);
@@ -214,6 +214,12 @@ bool LexicographicLess(const Point2& a, const Point2& b)
 {
   return a.x < b.x || (a.x == b.x && a.y < b.y);
 }
+
+// StatusBytes: the PointStatus in the low bits; HasDuplicates marks an accepted point that some
+// Duplicate may copy, so that Remove looks for an heir only then (the mark may outlive the last
+// copy: it is a hint, never a promise).
+constexpr std::uint8_t StatusMask = 0x7f;
+constexpr std::uint8_t HasDuplicates = 0x80;
 
 } // namespace
 
@@ -295,6 +301,12 @@ void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids)
   }
   this->DuplicatePairs.insert(
     this->DuplicatePairs.end(), earlierDuplicates.begin(), earlierDuplicates.end());
+  // Outside BuildFrom the pairs are kept sorted by duplicate id (binary searches, ordered output).
+  std::sort(this->DuplicatePairs.begin(), this->DuplicatePairs.end());
+  if (!this->StatusBytes.empty())
+  {
+    this->RecomputeStatusBytes();
+  }
 }
 
 void DirichletTessellation::Validate(const Point2& p, std::size_t id) const
@@ -317,10 +329,17 @@ std::int32_t DirichletTessellation::Insert(const Point2& p)
   {
     throw InputError("too many points: " + std::to_string(id + 1));
   }
+  this->EnableStatusBytes();
   this->Coordinates.push_back(p);
+  this->StatusBytes.push_back(std::uint8_t(PointStatus::Accepted));
+  if (!this->VertexEdges.empty())
+  {
+    this->VertexEdges.push_back(-1);
+  }
   if (!this->TheWindow.Contains(p))
   {
-    this->Rejected.push_back(std::int32_t(id));
+    this->Rejected.push_back(std::int32_t(id)); // the largest id so far: Rejected stays sorted
+    this->StatusBytes.back() = std::uint8_t(PointStatus::OutsideWindow);
   }
   else
   {
@@ -582,6 +601,17 @@ void DirichletTessellation::SetTriangle(std::int32_t t,
   this->Twins[e] = ta;
   this->Twins[e + 1] = tb;
   this->Twins[e + 2] = tc;
+  if (!this->VertexEdges.empty())
+  {
+    // Each vertex of the new triangle now has a half-edge known to leave it.
+    for (std::int32_t k = 0; k < 3; ++k)
+    {
+      if (this->Origins[e + k] >= 0)
+      {
+        this->VertexEdges[this->Origins[e + k]] = e + k;
+      }
+    }
+  }
   if (ta >= 0)
   {
     this->Twins[ta] = e;
@@ -633,6 +663,15 @@ void DirichletTessellation::SplitTriangle(std::int32_t t, std::int32_t p)
   twin[e2 + 1] = e + 2;
   twin[e2 + 2] = e1 + 1;
   twin[tz] = e2;
+  if (!this->VertexEdges.empty())
+  {
+    // x and y keep their half-edges e and e + 1; z's may have been e + 2, now p's.
+    if (z >= 0)
+    {
+      this->VertexEdges[z] = e2;
+    }
+    this->VertexEdges[p] = e + 2;
+  }
   this->FlipStack.push_back(t);
   this->FlipStack.push_back(t1);
   this->FlipStack.push_back(t2);
@@ -682,6 +721,8 @@ void DirichletTessellation::RestoreDelaunay()
   std::int32_t* const org = this->Origins.data();
   std::int32_t* const twin = this->Twins.data();
   const Point2* const pts = this->Coordinates.data();
+  // Null in a batch build, which does not keep vertex half-edges.
+  std::int32_t* const vertexEdge = this->VertexEdges.empty() ? nullptr : this->VertexEdges.data();
   std::vector<std::int32_t>& stack = this->FlipStack;
   while (!stack.empty())
   {
@@ -733,6 +774,20 @@ void DirichletTessellation::RestoreDelaunay()
     twin[g + 1] = oyp;
     twin[oyp] = g + 1;
     twin[g + 2] = e + 1;
+    if (vertexEdge)
+    {
+      // The half-edges whose origin changed are e + 1, g, g + 1 and g + 2: x, q and y may have
+      // had theirs among them (p keeps e + 2).
+      if (x >= 0)
+      {
+        vertexEdge[x] = e;
+      }
+      if (y >= 0)
+      {
+        vertexEdge[y] = g + 1;
+      }
+      vertexEdge[q] = e + 1;
+    }
     // The next checks read the triangles across x -> q and q -> y: start loading them.
     __builtin_prefetch(&org[oxq]);
     __builtin_prefetch(&org[oqy]);
@@ -750,7 +805,7 @@ void DirichletTessellation::RecordDuplicate(std::int32_t id,
 {
   if (this->InputId(id) > this->InputId(kept))
   {
-    this->DuplicatePairs.emplace_back(id, kept);
+    this->AddDuplicatePair(id, kept);
     return;
   }
   if (keptEdge >= 0)
@@ -764,11 +819,34 @@ void DirichletTessellation::RecordDuplicate(std::int32_t id,
       pair.second = id;
     }
   }
-  this->DuplicatePairs.emplace_back(kept, id);
+  this->AddDuplicatePair(kept, id);
+}
+
+// During BuildFrom the ids are local and the pairs are sorted at its end; otherwise the pair goes
+// to its sorted place (in streaming the new id is the largest, so that is the end).
+void DirichletTessellation::AddDuplicatePair(std::int32_t duplicate, std::int32_t kept)
+{
+  if (this->BuildOrder)
+  {
+    this->DuplicatePairs.emplace_back(duplicate, kept);
+    return;
+  }
+  const std::pair<std::int32_t, std::int32_t> pair(duplicate, kept);
+  this->DuplicatePairs.insert(
+    std::lower_bound(this->DuplicatePairs.begin(), this->DuplicatePairs.end(), pair), pair);
+  if (!this->StatusBytes.empty())
+  {
+    this->StatusBytes[duplicate] = std::uint8_t(PointStatus::Duplicate);
+    this->StatusBytes[kept] = std::uint8_t(PointStatus::Accepted) | HasDuplicates;
+  }
 }
 
 void DirichletTessellation::Relabel(std::int32_t edge, std::int32_t newId)
 {
+  if (!this->VertexEdges.empty())
+  {
+    this->VertexEdges[newId] = edge;
+  }
   std::int32_t e = edge;
   do
   {
@@ -786,35 +864,92 @@ PointStatus DirichletTessellation::Status(std::int32_t id) const
   {
     throw InputError("point id " + std::to_string(id) + " is out of range");
   }
-  if (std::find(this->Rejected.begin(), this->Rejected.end(), id) != this->Rejected.end())
+  if (this->StatusBytes.size() == this->Coordinates.size())
+  {
+    return PointStatus(this->StatusBytes[id] & StatusMask);
+  }
+  // A batch build only (no Insert or Remove yet): nothing is removed, and Rejected and
+  // DuplicatePairs are sorted.
+  if (std::binary_search(this->Rejected.begin(), this->Rejected.end(), id))
   {
     return PointStatus::OutsideWindow;
   }
-  if (std::find(this->RemovedPoints.begin(), this->RemovedPoints.end(), id) !=
-    this->RemovedPoints.end())
+  if (this->FindDuplicatePair(id) != this->DuplicatePairs.end())
   {
-    return PointStatus::Removed;
-  }
-  for (const auto& pair : this->DuplicatePairs)
-  {
-    if (pair.first == id)
-    {
-      return PointStatus::Duplicate;
-    }
+    return PointStatus::Duplicate;
   }
   return PointStatus::Accepted;
 }
 
 std::int32_t DirichletTessellation::DuplicateOf(std::int32_t id) const
 {
+  if (this->StatusBytes.size() == this->Coordinates.size() && id >= 0 &&
+    std::size_t(id) < this->StatusBytes.size() &&
+    (this->StatusBytes[id] & StatusMask) != std::uint8_t(PointStatus::Duplicate))
+  {
+    return -1;
+  }
+  const auto it = this->FindDuplicatePair(id);
+  return it != this->DuplicatePairs.end() ? it->second : -1;
+}
+
+std::vector<std::pair<std::int32_t, std::int32_t>>::const_iterator
+DirichletTessellation::FindDuplicatePair(std::int32_t id) const
+{
+  const auto it = std::lower_bound(this->DuplicatePairs.begin(),
+    this->DuplicatePairs.end(),
+    id,
+    [](const std::pair<std::int32_t, std::int32_t>& pair, std::int32_t key)
+    { return pair.first < key; });
+  return it != this->DuplicatePairs.end() && it->first == id ? it : this->DuplicatePairs.end();
+}
+
+// The per-id arrays are built on first need from the lists (O(N) once): a batch build that is
+// only queried never holds them, which keeps it at 64 bytes per point.
+void DirichletTessellation::EnableStatusBytes()
+{
+  if (this->StatusBytes.size() != this->Coordinates.size())
+  {
+    this->RecomputeStatusBytes();
+  }
+}
+
+void DirichletTessellation::RecomputeStatusBytes()
+{
+  this->StatusBytes.assign(this->Coordinates.size(), std::uint8_t(PointStatus::Accepted));
+  for (const std::int32_t id : this->Rejected)
+  {
+    this->StatusBytes[id] = std::uint8_t(PointStatus::OutsideWindow);
+  }
+  for (const std::int32_t id : this->RemovedPoints)
+  {
+    this->StatusBytes[id] = std::uint8_t(PointStatus::Removed);
+  }
   for (const auto& pair : this->DuplicatePairs)
   {
-    if (pair.first == id)
+    this->StatusBytes[pair.first] = std::uint8_t(PointStatus::Duplicate);
+    this->StatusBytes[pair.second] = std::uint8_t(PointStatus::Accepted) | HasDuplicates;
+  }
+}
+
+void DirichletTessellation::EnableVertexEdges()
+{
+  if (this->VertexEdges.empty())
+  {
+    this->RecomputeVertexEdges();
+  }
+}
+
+void DirichletTessellation::RecomputeVertexEdges()
+{
+  this->VertexEdges.assign(this->Coordinates.size(), -1);
+  for (std::size_t e = 0; e < this->Origins.size(); ++e)
+  {
+    if (this->Origins[e] >= 0)
     {
-      return pair.second;
+      this->VertexEdges[this->Origins[e]] = std::int32_t(e);
     }
   }
-  return -1;
 }
 
 std::vector<std::int32_t> DirichletTessellation::RejectedIds() const
@@ -843,8 +978,9 @@ std::size_t DirichletTessellation::StructureBytes() const
   return this->Coordinates.capacity() * sizeof(Point2) +
     (this->Origins.capacity() + this->Twins.capacity() + this->FreeTriangles.capacity() +
       this->Collinear.capacity() + this->Rejected.capacity() + this->RemovedPoints.capacity() +
-      this->FlipStack.capacity()) *
+      this->FlipStack.capacity() + this->VertexEdges.capacity()) *
     sizeof(std::int32_t) +
+    this->StatusBytes.capacity() +
     this->DuplicatePairs.capacity() * sizeof(std::pair<std::int32_t, std::int32_t>);
 }
 
@@ -853,6 +989,15 @@ std::size_t DirichletTessellation::StructureBytes() const
 
 std::int32_t DirichletTessellation::FindVertexEdge(std::int32_t id) const
 {
+  // VertexEdges is kept exact; the check costs one load and keeps the walk as a safety net.
+  if (!this->VertexEdges.empty())
+  {
+    const std::int32_t e = this->VertexEdges[id];
+    if (e >= 0 && std::size_t(e) < this->Origins.size() && this->Origins[e] == id)
+    {
+      return e;
+    }
+  }
   std::int32_t edge = -1;
   if (this->Locate(this->Coordinates[id], edge) == Location::OnVertex && this->Origins[edge] == id)
   {
@@ -868,17 +1013,20 @@ void DirichletTessellation::Remove(std::int32_t id)
   {
     throw InputError("point " + std::to_string(id) + " is already removed");
   }
+  this->EnableStatusBytes();
+  this->EnableVertexEdges();
+  const std::uint8_t flags = this->StatusBytes[id];
+  this->StatusBytes[id] = std::uint8_t(PointStatus::Removed);
   if (status == PointStatus::OutsideWindow)
   {
-    this->Rejected.erase(std::find(this->Rejected.begin(), this->Rejected.end(), id));
+    this->Rejected.erase(std::lower_bound(this->Rejected.begin(), this->Rejected.end(), id));
     this->RemovedPoints.push_back(id);
     return;
   }
   if (status == PointStatus::Duplicate)
   {
-    this->DuplicatePairs.erase(std::find_if(this->DuplicatePairs.begin(),
-      this->DuplicatePairs.end(),
-      [id](const auto& pair) { return pair.first == id; }));
+    // The copied point keeps its HasDuplicates mark (a hint; see StatusMask).
+    this->DuplicatePairs.erase(this->FindDuplicatePair(id));
     this->RemovedPoints.push_back(id);
     return;
   }
@@ -897,28 +1045,33 @@ void DirichletTessellation::Remove(std::int32_t id)
     onLine = std::find(this->Collinear.begin(), this->Collinear.end(), id);
   }
   this->RemovedPoints.push_back(id);
+  this->VertexEdges[id] = -1;
 
   // A duplicate takes the removed point's place: the structure does not change.
   std::int32_t heir = -1;
-  for (const auto& pair : this->DuplicatePairs)
+  if (flags & HasDuplicates)
   {
-    if (pair.second == id && (heir < 0 || pair.first < heir))
+    for (const auto& pair : this->DuplicatePairs)
     {
-      heir = pair.first;
+      if (pair.second == id && (heir < 0 || pair.first < heir))
+      {
+        heir = pair.first;
+      }
     }
   }
   if (heir >= 0)
   {
-    this->DuplicatePairs.erase(std::find_if(this->DuplicatePairs.begin(),
-      this->DuplicatePairs.end(),
-      [heir](const auto& pair) { return pair.first == heir; }));
+    this->DuplicatePairs.erase(this->FindDuplicatePair(heir));
+    bool copied = false;
     for (auto& pair : this->DuplicatePairs)
     {
       if (pair.second == id)
       {
         pair.second = heir;
+        copied = true;
       }
     }
+    this->StatusBytes[heir] = std::uint8_t(PointStatus::Accepted) | (copied ? HasDuplicates : 0);
     if (edge >= 0)
     {
       this->Relabel(edge, heir);
@@ -936,48 +1089,32 @@ void DirichletTessellation::Remove(std::int32_t id)
     this->Collinear.erase(onLine);
     return;
   }
-  if (!this->RemoveInteriorVertex(edge))
+  if (!this->RemoveInteriorVertex(edge) && !this->RemoveHullVertex(edge))
   {
     this->RebuildWithout(id);
   }
 }
 
-// Re-triangulates the star of an interior vertex by cutting Delaunay ears (Devillers 1999): an ear
-// (a, b, c) of the link polygon that turns left and whose circle contains no other link vertex is
-// a triangle of the Delaunay triangulation without the vertex. Returns false (nothing changed)
-// for a hull vertex, which the caller handles by rebuilding.
-//
-//        c---b                 c---b
-//       / \ / \               /   / \ .
-//      d---v---a     ->      d   /   a     ear (a, b, c) cut first; then the smaller polygon
-//       \ / \ /               \ /   /
-//        e---f                 e---f
-bool DirichletTessellation::RemoveInteriorVertex(std::int32_t edge)
+// One triangle of a re-triangulated hole: its vertices and the twins of its three half-edges
+// (-1 where a later triangle of the same plan supplies the twin).
+struct DirichletTessellation::Ear
 {
-  std::vector<std::int32_t> ring;  // link vertices, anticlockwise
-  std::vector<std::int32_t> outer; // outer[i]: twin of the link edge ring[i] -> ring[i+1]
-  std::vector<std::int32_t> slots; // the star's triangles, reused
-  std::int32_t e = edge;
-  do
-  {
-    const std::int32_t j = this->Origins[Next(e)];
-    if (j == Ghost)
-    {
-      return false;
-    }
-    ring.push_back(j);
-    outer.push_back(this->Twins[Next(e)]);
-    slots.push_back(e / 3);
-    e = this->RingNext(e);
-  } while (e != edge);
+  std::int32_t A, B, C, TwinA, TwinB, TwinC;
+};
 
-  struct Ear
-  {
-    std::int32_t A, B, C, TwinA, TwinB, TwinC;
-  };
-  std::vector<Ear> plan;
+// Triangulates the anticlockwise polygon ring (outer[i]: twin of the edge ring[i] -> ring[i+1])
+// by cutting Delaunay ears (Devillers 1999): an ear (a, b, c) that turns left and whose circle
+// contains no other polygon vertex is a triangle of the Delaunay triangulation of the points
+// without the removed vertex. The k-th triangle of the plan goes to slots[first + k]. Returns
+// false (plan unusable) only if no ear is found, which cannot happen with exact predicates.
+bool DirichletTessellation::CutDelaunayEars(std::vector<std::int32_t>& ring,
+  std::vector<std::int32_t>& outer,
+  const std::vector<std::int32_t>& slots,
+  std::size_t first,
+  std::vector<Ear>& plan) const
+{
   const std::vector<Point2>& pts = this->Coordinates;
-  std::size_t used = 0;
+  std::size_t used = first;
   while (ring.size() > 3)
   {
     const std::size_t n = ring.size();
@@ -1006,17 +1143,60 @@ bool DirichletTessellation::RemoveInteriorVertex(std::int32_t edge)
       }
       const std::int32_t t = slots[used++];
       plan.push_back({ ring[i], ring[b], ring[c], outer[i], outer[b], -1 });
-      outer[i] = 3 * t + 2; // the new link edge ring[i] -> ring[c] faces this triangle's c -> a
+      outer[i] = 3 * t + 2; // the new edge ring[i] -> ring[c] faces this triangle's c -> a
       ring.erase(ring.begin() + std::ptrdiff_t(b));
       outer.erase(outer.begin() + std::ptrdiff_t(b));
       cut = true;
     }
     if (!cut)
     {
-      return false; // cannot happen with exact predicates; rebuilding is always correct
+      return false;
     }
   }
   plan.push_back({ ring[0], ring[1], ring[2], outer[0], outer[1], outer[2] });
+  return true;
+}
+
+// Re-triangulates the star of an interior vertex with Delaunay ears of its link polygon. Returns
+// false (nothing changed) for a hull vertex.
+//
+//        c---b                 c---b
+//       / \ / \               /   / \ .
+//      d---v---a     ->      d   /   a     ear (a, b, c) cut first; then the smaller polygon
+//       \ / \ /               \ /   /
+//        e---f                 e---f
+bool DirichletTessellation::RemoveInteriorVertex(std::int32_t edge)
+{
+  std::vector<std::int32_t> ring;  // link vertices, anticlockwise
+  std::vector<std::int32_t> outer; // outer[i]: twin of the link edge ring[i] -> ring[i+1]
+  std::vector<std::int32_t> slots; // the star's triangles, reused
+  std::int32_t e = edge;
+  do
+  {
+    const std::int32_t j = this->Origins[Next(e)];
+    if (j == Ghost)
+    {
+      return false;
+    }
+    ring.push_back(j);
+    outer.push_back(this->Twins[Next(e)]);
+    slots.push_back(e / 3);
+    e = this->RingNext(e);
+  } while (e != edge);
+
+  std::vector<Ear> plan;
+  if (!this->CutDelaunayEars(ring, outer, slots, 0, plan))
+  {
+    return false; // rebuilding is always correct
+  }
+  this->ApplyPlan(plan, slots);
+  return true;
+}
+
+// Writes plan[k] into slots[k] and recycles the slots left over.
+void DirichletTessellation::ApplyPlan(const std::vector<Ear>& plan,
+  const std::vector<std::int32_t>& slots)
+{
   for (std::size_t k = 0; k < plan.size(); ++k)
   {
     const Ear& ear = plan[k];
@@ -1030,12 +1210,151 @@ bool DirichletTessellation::RemoveInteriorVertex(std::int32_t edge)
     this->FreeTriangles.push_back(t);
   }
   this->LastTriangle = slots[0];
+}
+
+// Removes a hull vertex v without rebuilding. Its star is the real triangles (v, n_i, n_i+1)
+// over its chain of neighbours a = n_0, ..., n_k = b (anticlockwise around v), plus the two ghost
+// triangles (v, G, a) and (v, b, G). Without v the hull runs from a to b along the convex hull of
+// the chain, seen from v: the chain vertices kept by a stack scan in chain order that pops a
+// vertex where the chain turns left (strictly: collinear chain vertices stay hull vertices, as
+// every point on a hull edge is a vertex here). Each pair of consecutive new hull vertices h, h'
+// gets a ghost triangle (h, h', G); where they are not neighbours on the chain, the pocket between
+// the chain and the new hull edge h -> h' is an anticlockwise polygon cut into Delaunay ears. A
+// pocket's edges are Delaunay edges without v (chain edges stay Delaunay, the closing edge is a
+// hull edge), so its Delaunay triangulation is that of all the points there. Returns false
+// (nothing changed) when the points left are collinear: then some chain edge would become a hull
+// edge on both sides.
+//
+//               v
+//            / /|\ \ .
+//          /  / | \  \                       n1-----------n3
+//        n1--/  |  \--n3          ->        / \           / \ .
+//       /  \    |    /  \                  a   \         /   b
+//      a    \   |   /    b                      \       /
+//              \|/                                \   /
+//               n2                                  n2
+//
+// The chain is a, n1, n2, n3, b; n2 lies beyond n1 -> n3 (seen from v), so the new hull is
+// a -> n1 -> n3 -> b with a ghost triangle outside each of its three edges, and the pocket
+// n1 -> n2 -> n3 (closed by n3 -> n1) becomes one triangle.
+//
+// Slots: the star has k + 2 triangles; the new ones are k (the pockets' k - h triangles and h
+// ghosts, h = number of new hull edges), so two are recycled.
+bool DirichletTessellation::RemoveHullVertex(std::int32_t edge)
+{
+  // Start at the half-edge of the ghost triangle (v, G, a).
+  std::int32_t e0 = edge;
+  while (this->Origins[Next(e0)] != Ghost)
+  {
+    e0 = this->RingNext(e0);
+    if (e0 == edge)
+    {
+      return false; // not a hull vertex (cannot happen: RemoveInteriorVertex handled it)
+    }
+  }
+  std::vector<std::int32_t> chain; // n_0 .. n_k
+  std::vector<std::int32_t> outer; // outer[i]: twin of n_i -> n_i+1 (outside the star)
+  std::vector<std::int32_t> slots{ e0 / 3 };
+  const std::int32_t twinBeforeA = this->Twins[Next(e0)]; // a -> G of the ghost before a
+  std::int32_t twinAfterB = -1;                           // G -> b of the ghost after b
+  for (std::int32_t e = this->RingNext(e0); e != e0; e = this->RingNext(e))
+  {
+    slots.push_back(e / 3);
+    chain.push_back(this->Origins[Next(e)]);
+    if (this->Origins[Prev(e)] == Ghost)
+    {
+      twinAfterB = this->Twins[Next(e)]; // e / 3 is (v, b, G)
+    }
+    else
+    {
+      outer.push_back(this->Twins[Next(e)]);
+    }
+  }
+  const std::size_t k = chain.size() - 1;
+  if (twinAfterB < 0 || k < 1 || outer.size() != k)
+  {
+    return false;
+  }
+
+  // The new hull from a to b, as chain positions.
+  const std::vector<Point2>& pts = this->Coordinates;
+  std::vector<std::size_t> hull;
+  for (std::size_t i = 0; i <= k; ++i)
+  {
+    while (hull.size() >= 2 &&
+      Orient(pts[chain[hull[hull.size() - 2]]], pts[chain[hull.back()]], pts[chain[i]]) > 0)
+    {
+      hull.pop_back();
+    }
+    hull.push_back(i);
+  }
+  const std::size_t h = hull.size() - 1;
+  for (std::size_t s = 0; s < h; ++s)
+  {
+    if (hull[s + 1] == hull[s] + 1 && this->IsGhostTriangle(outer[hull[s]] / 3))
+    {
+      return false; // a hull edge on both sides: the rest is collinear
+    }
+  }
+
+  // Ghost s takes slots[k - h + s]; the pockets' triangles take slots[0 ..].
+  std::vector<Ear> plan;
+  std::vector<Ear> ghosts;
+  for (std::size_t s = 0; s < h; ++s)
+  {
+    const std::size_t i = hull[s], j = hull[s + 1];
+    const std::int32_t ghost = slots[k - h + s];
+    if (j == i + 1)
+    {
+      ghosts.push_back({ chain[i], chain[j], Ghost, outer[i], -1, -1 });
+      continue;
+    }
+    // The closing edge n_j -> n_i faces the ghost's n_i -> n_j; a pocket triangle sets that twin.
+    ghosts.push_back({ chain[i], chain[j], Ghost, -1, -1, -1 });
+    std::vector<std::int32_t> ring(
+      chain.begin() + std::ptrdiff_t(i), chain.begin() + std::ptrdiff_t(j) + 1);
+    std::vector<std::int32_t> ringOuter(
+      outer.begin() + std::ptrdiff_t(i), outer.begin() + std::ptrdiff_t(j));
+    ringOuter.push_back(3 * ghost);
+    if (!this->CutDelaunayEars(ring, ringOuter, slots, plan.size(), plan))
+    {
+      return false; // rebuilding is always correct
+    }
+  }
+  if (plan.size() != k - h)
+  {
+    return false; // cannot happen
+  }
+  // Ghosts first (their mutual twins and those towards the hull beyond a and b), then the
+  // pockets, which set the twins of the ghosts' inner edges.
+  for (std::size_t s = 0; s < h; ++s)
+  {
+    const Ear& g = ghosts[s];
+    const std::int32_t before =
+      s == 0 ? twinBeforeA : 3 * slots[k - h + s - 1] + 1; // p -> G of the previous ghost
+    this->SetTriangle(slots[k - h + s], g.A, g.B, Ghost, g.TwinA, -1, before);
+  }
+  this->Twins[3 * slots[k - 1] + 1] = twinAfterB;
+  this->Twins[twinAfterB] = 3 * slots[k - 1] + 1;
+  for (std::size_t t = 0; t < k - h; ++t)
+  {
+    const Ear& ear = plan[t];
+    this->SetTriangle(slots[t], ear.A, ear.B, ear.C, ear.TwinA, ear.TwinB, ear.TwinC);
+  }
+  for (std::size_t t = k; t < slots.size(); ++t)
+  {
+    const std::int32_t free = slots[t];
+    this->Origins[3 * free] = this->Origins[3 * free + 1] = this->Origins[3 * free + 2] = Free;
+    this->Twins[3 * free] = this->Twins[3 * free + 1] = this->Twins[3 * free + 2] = -1;
+    this->FreeTriangles.push_back(free);
+  }
+  this->LastTriangle = slots[0];
   return true;
 }
 
-// Hull vertices (and the rare case where the rest becomes collinear) are removed by building the
-// structure again from the remaining accepted points: O(N log N), but exactly the tessellation
-// built without the point.
+// When the points left are collinear (or an ear search fails, which exact predicates exclude),
+// the structure is built again from the remaining accepted points: O(N log N), but exactly the
+// tessellation built without the point.
 void DirichletTessellation::RebuildWithout(std::int32_t id)
 {
   std::vector<char> isVertex(this->Coordinates.size(), 0);
@@ -1060,7 +1379,10 @@ void DirichletTessellation::RebuildWithout(std::int32_t id)
   this->Collinear.clear();
   this->LastTriangle = 0;
   this->Accepted = 0;
+  // BuildFrom numbers vertices locally: the vertex half-edges are derived afterwards.
+  this->VertexEdges.clear();
   this->BuildFrom(ids);
+  this->RecomputeVertexEdges();
 }
 
 } // namespace tessera

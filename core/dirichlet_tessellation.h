@@ -67,7 +67,9 @@ public:
   std::int32_t Insert(const Point2& p);
   /// Removes an accepted point (the result equals the tessellation built without it; if it had
   /// exact duplicates, the smallest of them takes its place). A duplicate or rejected point is
-  /// only marked removed. Throws InputError for an unknown or already removed id.
+  /// only marked removed. Throws InputError for an unknown or already removed id. The hole left
+  /// by an interior or hull vertex is re-triangulated in place (O(degree^3), O(1) expected); only
+  /// a removal that leaves the points collinear rebuilds.
   void Remove(std::int32_t id);
 
   const Window& GetWindow() const { return this->TheWindow; }
@@ -76,9 +78,11 @@ public:
   std::size_t PointCount() const { return this->Coordinates.size(); }
   std::size_t AcceptedCount() const { return this->Accepted; }
 
-  /// O(number of rejected/duplicate/removed points) for those, O(1) expected otherwise.
+  /// O(1) once Insert or Remove has been called (a status byte per id); before that (a batch
+  /// build only) a binary search among the rejected and duplicate ids.
   PointStatus Status(std::int32_t id) const;
-  /// For a Duplicate, the accepted id it copies; -1 otherwise.
+  /// For a Duplicate, the accepted id it copies; -1 otherwise. O(1) for a non-duplicate once
+  /// Insert or Remove has been called, else a binary search among the duplicates.
   std::int32_t DuplicateOf(std::int32_t id) const;
   /// Rejected (outside the window) ids, ascending.
   std::vector<std::int32_t> RejectedIds() const;
@@ -102,7 +106,10 @@ public:
   bool IsGhostTriangle(std::int32_t t) const;
   bool IsFreeTriangle(std::int32_t t) const { return this->Origins[3 * t] == Free; }
 
-  /// Bytes held by the structure (capacities of all arrays, coordinates included).
+  /// Bytes held by the structure (capacities of all arrays, coordinates included). A batch build
+  /// holds no per-id arrays besides the coordinates; the first Insert adds a status byte per id
+  /// and the first Remove an incident half-edge per id (4 bytes, so that Remove finds its
+  /// vertex in O(1)): 69 bytes per point in streaming use.
   std::size_t StructureBytes() const;
 
 private:
@@ -140,7 +147,22 @@ private:
   void RecordDuplicate(std::int32_t id, std::int32_t kept, std::int32_t keptEdge);
   void Relabel(std::int32_t edge, std::int32_t newId);
   std::int32_t FindVertexEdge(std::int32_t id) const;
+  void EnableStatusBytes();
+  void EnableVertexEdges();
+  void RecomputeStatusBytes();
+  void RecomputeVertexEdges();
+  void AddDuplicatePair(std::int32_t duplicate, std::int32_t kept);
+  std::vector<std::pair<std::int32_t, std::int32_t>>::const_iterator FindDuplicatePair(
+    std::int32_t id) const;
+  struct Ear;
+  bool CutDelaunayEars(std::vector<std::int32_t>& ring,
+    std::vector<std::int32_t>& outer,
+    const std::vector<std::int32_t>& slots,
+    std::size_t first,
+    std::vector<Ear>& plan) const;
+  void ApplyPlan(const std::vector<Ear>& plan, const std::vector<std::int32_t>& slots);
   bool RemoveInteriorVertex(std::int32_t edge);
+  bool RemoveHullVertex(std::int32_t edge);
   void RebuildWithout(std::int32_t id);
 
   Window TheWindow;
@@ -153,6 +175,12 @@ private:
   std::vector<std::pair<std::int32_t, std::int32_t>> DuplicatePairs;
   std::vector<std::int32_t> RemovedPoints;
   std::vector<std::int32_t> FlipStack;
+  /// Per id, a PointStatus in the low bits plus HasDuplicates for an accepted point that exact
+  /// copies point to; empty until the first Insert or Remove (a batch build does not pay for it).
+  std::vector<std::uint8_t> StatusBytes;
+  /// Per id, one half-edge leaving that vertex (-1 for ids that are not vertices); empty until
+  /// the first Remove, then kept up to date wherever a triangle's vertices are written.
+  std::vector<std::int32_t> VertexEdges;
   std::int32_t LastTriangle = 0;
   const std::vector<std::int32_t>* BuildOrder = nullptr;
   std::size_t Accepted = 0;

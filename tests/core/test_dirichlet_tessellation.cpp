@@ -572,8 +572,7 @@ TEST(DirichletTessellation, NearDegenerateInputsStayExactlyDelaunay)
         {
           for (const int sy : { -1, 1 })
           {
-            points.push_back({ 100.0 * (scale > 1.0) + scale * sx * t[0],
-              scale * sy * t[1] });
+            points.push_back({ 100.0 * (scale > 1.0) + scale * sx * t[0], scale * sy * t[1] });
           }
         }
       }
@@ -651,5 +650,271 @@ TEST(DirichletTessellation, NearDegenerateInputsStayExactlyDelaunay)
       CheckEmptyCircles(*t);
     }
     EXPECT_TRUE(MakeCanonical(batch, {}, false) == MakeCanonical(stream, {}, false)) << "set " << s;
+  }
+}
+
+namespace
+{
+
+// The accepted points on the convex hull: the real vertices of the ghost triangles.
+std::vector<std::int32_t> HullVertices(const Tess& t)
+{
+  std::set<std::int32_t> hull;
+  const auto& org = t.Origin();
+  for (std::int32_t tri = 0; tri < std::int32_t(org.size() / 3); ++tri)
+  {
+    if (!t.IsFreeTriangle(tri) && t.IsGhostTriangle(tri))
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        if (org[3 * tri + k] >= 0)
+        {
+          hull.insert(org[3 * tri + k]);
+        }
+      }
+    }
+  }
+  return { hull.begin(), hull.end() };
+}
+
+// The batch tessellation of points without the removed ids (moved out of the window, so they keep
+// their ids and are rejected).
+Canonical WithoutIds(const std::vector<Point2>& points, const std::vector<std::int32_t>& removed)
+{
+  std::vector<Point2> without = points;
+  for (const std::int32_t id : removed)
+  {
+    without[id] = { 10.0, 10.0 };
+  }
+  return MakeCanonical(Tess(UnitWindow(), without));
+}
+
+// Point sets whose hulls are degenerate in the ways hull removal must handle.
+std::vector<std::vector<Point2>> HullTestSets()
+{
+  std::vector<std::vector<Point2>> sets;
+  sets.push_back(UniformPoints(60, 101));
+  // A 7 x 7 lattice of exact binary fractions: collinear hull runs, co-circular squares.
+  std::vector<Point2> lattice;
+  for (int i = 0; i < 7; ++i)
+  {
+    for (int j = 0; j < 7; ++j)
+    {
+      lattice.push_back({ 0.125 * i, 0.125 * j });
+    }
+  }
+  sets.push_back(lattice);
+  // 12 exactly co-circular points (3-4-5 triples) around a few inner points.
+  std::vector<Point2> circle;
+  for (const auto& [x, y] : std::vector<std::pair<double, double>>{ { 3, 4 },
+         { 4, 3 },
+         { 5, 0 },
+         { 4, -3 },
+         { 3, -4 },
+         { 0, -5 },
+         { -3, -4 },
+         { -4, -3 },
+         { -5, 0 },
+         { -4, 3 },
+         { -3, 4 },
+         { 0, 5 } })
+  {
+    circle.push_back({ 0.5 + x / 16.0, 0.5 + y / 16.0 });
+  }
+  for (const Point2& p : UniformPoints(8, 103, 0.4, 0.6))
+  {
+    circle.push_back(p);
+  }
+  circle.push_back({ 0.5, 0.5 });
+  sets.push_back(circle);
+  // An apex over a convex arc: removing the apex (or an arc end) puts several arc points on the
+  // hull at once; the bottom is a collinear run.
+  std::vector<Point2> arc;
+  for (int i = 0; i <= 8; ++i)
+  {
+    const double x = i / 8.0;
+    arc.push_back({ x, 0.75 - (x - 0.5) * (x - 0.5) });
+    arc.push_back({ x, 0.0 });
+  }
+  arc.push_back({ 0.5, 1.25 });
+  for (const Point2& p : UniformPoints(10, 107, 0.1, 0.4))
+  {
+    arc.push_back(p);
+  }
+  sets.push_back(arc);
+  // Points on the sides of a square (long collinear hull runs) around random inner points.
+  std::vector<Point2> square;
+  for (int i = 0; i < 8; ++i)
+  {
+    square.push_back({ i / 8.0, 0.0 });
+    square.push_back({ 1.0, i / 8.0 });
+    square.push_back({ 1.0 - i / 8.0, 1.0 });
+    square.push_back({ 0.0, 1.0 - i / 8.0 });
+  }
+  for (const Point2& p : UniformPoints(15, 109, 0.05, 0.95))
+  {
+    square.push_back(p);
+  }
+  sets.push_back(square);
+  // Random points on a coarse grid of exact binary fractions: many collinear and co-circular
+  // hull configurations at once.
+  std::vector<Point2> grid;
+  std::mt19937 rng(113);
+  std::set<std::pair<int, int>> cells;
+  while (cells.size() < 40)
+  {
+    cells.insert({ int(rng() % 12), int(rng() % 12) });
+  }
+  for (const auto& [i, j] : cells)
+  {
+    grid.push_back({ i / 16.0, j / 16.0 });
+  }
+  sets.push_back(grid);
+  sets.push_back(UniformPoints(150, 127));
+  return sets;
+}
+
+} // namespace
+
+TEST(DirichletTessellation, RemovingHullVerticesEqualsNeverInserted)
+{
+  const std::vector<std::vector<Point2>> sets = HullTestSets();
+  std::mt19937 rng(11);
+  for (std::size_t s = 0; s < sets.size(); ++s)
+  {
+    const std::vector<Point2>& points = sets[s];
+    for (int sequence = 0; sequence < 12; ++sequence)
+    {
+      Tess t(UnitWindow(), points);
+      std::vector<std::int32_t> removed;
+      while (t.AcceptedCount() > 3)
+      {
+        const std::vector<std::int32_t> hull = HullVertices(t);
+        const std::int32_t id =
+          hull[std::uniform_int_distribution<std::size_t>(0, hull.size() - 1)(rng)];
+        const std::size_t slots = t.Origin().size();
+        t.Remove(id);
+        removed.push_back(id);
+        EXPECT_EQ(t.Status(id), PointStatus::Removed);
+        if (t.IsTwoDimensional())
+        {
+          CheckStructure(t);
+          // Removed in place: a rebuild would have shrunk the arrays to the new triangle count.
+          EXPECT_EQ(t.Origin().size(), slots) << "set " << s << " removing " << id;
+        }
+        ASSERT_TRUE(MakeCanonical(t) == WithoutIds(points, removed))
+          << "set " << s << " sequence " << sequence << " after removing " << removed.size();
+      }
+      std::sort(removed.begin(), removed.end());
+      EXPECT_EQ(t.RemovedIds(), removed);
+    }
+  }
+}
+
+// Streaming: insert every point, then remove random points (hull and interior) while inserting
+// new ones, so that the vertex half-edges are maintained through flips, splits and removals.
+TEST(DirichletTessellation, InsertThenRemoveEqualsNeverInsertedWhileStreaming)
+{
+  const std::vector<std::vector<Point2>> sets = HullTestSets();
+  std::mt19937 rng(13);
+  for (std::size_t s = 0; s < sets.size(); ++s)
+  {
+    const std::vector<Point2>& all = sets[s];
+    const std::size_t initial = all.size() * 2 / 3;
+    for (int sequence = 0; sequence < 6; ++sequence)
+    {
+      Tess t(UnitWindow());
+      std::size_t next = 0;
+      for (; next < initial; ++next)
+      {
+        t.Insert(all[next]);
+      }
+      std::vector<std::int32_t> removed;
+      std::vector<Point2> points(all.begin(), all.begin() + std::ptrdiff_t(initial));
+      while (t.AcceptedCount() > 4)
+      {
+        // Alternate: remove a hull vertex, remove any point, insert the next point.
+        const int action = std::uniform_int_distribution<int>(0, 2)(rng);
+        if (action == 2 && next < all.size())
+        {
+          EXPECT_EQ(t.Insert(all[next]), std::int32_t(points.size()));
+          points.push_back(all[next++]);
+        }
+        else
+        {
+          std::vector<std::int32_t> candidates = HullVertices(t);
+          if (action == 1 || candidates.empty())
+          {
+            candidates.clear();
+            for (std::int32_t id = 0; id < std::int32_t(t.PointCount()); ++id)
+            {
+              if (t.Status(id) == PointStatus::Accepted)
+              {
+                candidates.push_back(id);
+              }
+            }
+          }
+          const std::int32_t id =
+            candidates[std::uniform_int_distribution<std::size_t>(0, candidates.size() - 1)(rng)];
+          t.Remove(id);
+          removed.push_back(id);
+        }
+        if (t.IsTwoDimensional())
+        {
+          CheckStructure(t);
+        }
+        ASSERT_TRUE(MakeCanonical(t) == WithoutIds(points, removed))
+          << "set " << s << " sequence " << sequence << " after removing " << removed.size();
+      }
+    }
+  }
+}
+
+// Status bytes and the sorted lists agree through streaming insertions, rejections, duplicates
+// and removals of each kind.
+TEST(DirichletTessellation, StatusQueriesTrackStreamingChanges)
+{
+  std::vector<Point2> points = UniformPoints(40, 29);
+  points.push_back({ 5.0, 5.0 });  // 40: outside
+  points.push_back(points[7]);     // 41: copy of 7
+  points.push_back(points[7]);     // 42: copy of 7
+  points.push_back({ -5.0, 0.0 }); // 43: outside
+  points.push_back(points[3]);     // 44: copy of 3
+  Tess batch(UnitWindow(), points);
+  Tess streaming(UnitWindow());
+  for (const Point2& p : points)
+  {
+    streaming.Insert(p);
+  }
+  for (Tess* t : { &batch, &streaming })
+  {
+    EXPECT_EQ(t->RejectedIds(), (std::vector<std::int32_t>{ 40, 43 }));
+    EXPECT_EQ(t->Duplicates(),
+      (std::vector<std::pair<std::int32_t, std::int32_t>>{ { 41, 7 }, { 42, 7 }, { 44, 3 } }));
+    EXPECT_EQ(t->Status(43), PointStatus::OutsideWindow);
+    EXPECT_EQ(t->Status(42), PointStatus::Duplicate);
+    EXPECT_EQ(t->DuplicateOf(42), 7);
+    EXPECT_EQ(t->DuplicateOf(7), -1);
+    t->Remove(40); // rejected
+    t->Remove(42); // duplicate
+    t->Remove(7);  // accepted with a copy left: 41 takes its place
+    t->Remove(3);  // accepted: 44 takes its place
+    t->Remove(44); // now accepted, no copies left
+    EXPECT_EQ(t->Status(40), PointStatus::Removed);
+    EXPECT_EQ(t->Status(41), PointStatus::Accepted);
+    EXPECT_EQ(t->DuplicateOf(41), -1);
+    EXPECT_EQ(t->Status(43), PointStatus::OutsideWindow);
+    EXPECT_EQ(t->RejectedIds(), (std::vector<std::int32_t>{ 43 }));
+    EXPECT_TRUE(t->Duplicates().empty());
+    EXPECT_EQ(t->RemovedIds(), (std::vector<std::int32_t>{ 3, 7, 40, 42, 44 }));
+    EXPECT_THROW(t->Remove(42), InputError);
+    const std::int32_t id = t->Insert(points[41]); // a copy of 41 again
+    EXPECT_EQ(t->Status(id), PointStatus::Duplicate);
+    EXPECT_EQ(t->DuplicateOf(id), 41);
+    t->Remove(41);
+    EXPECT_EQ(t->Status(id), PointStatus::Accepted);
+    EXPECT_EQ(t->AcceptedCount(), 39u);
+    CheckStructure(*t);
+    CheckEmptyCircles(*t);
   }
 }
