@@ -1,5 +1,6 @@
 #include "tiles.h"
 
+#include "polygon_area.h"
 #include "predicates_inline.h"
 #include "window_predicates.h"
 
@@ -73,23 +74,22 @@ Point2 Circumcentre(const Point2& a, const Point2& b, const Point2& c, double& e
   return { a.x + ux, a.y + uy };
 }
 
-// Neumaier's compensated sum of the shoelace terms, relative to the first
-// vertex so that the terms do not cancel catastrophically far from the origin.
-double PolygonArea(const Point2* v, std::size_t n)
+/// A triangle a, b, c (anticlockwise) as a face starting at its smallest id.
+void AppendTriangleFace(DelaunayFaces& faces, std::int32_t a, std::int32_t b, std::int32_t c)
 {
-  double sum = 0.0, compensation = 0.0;
-  for (std::size_t k = 1; k + 1 < n; ++k)
+  if (a < b && a < c)
   {
-    const double ax = v[k].x - v[0].x, ay = v[k].y - v[0].y;
-    const double bx = v[k + 1].x - v[0].x, by = v[k + 1].y - v[0].y;
-    for (const double term : { ax * by, -(ay * bx) })
-    {
-      const double t = sum + term;
-      compensation += std::fabs(sum) >= std::fabs(term) ? (sum - t) + term : (term - t) + sum;
-      sum = t;
-    }
+    faces.PointIds.insert(faces.PointIds.end(), { a, b, c });
   }
-  return 0.5 * (sum + compensation);
+  else if (b < c)
+  {
+    faces.PointIds.insert(faces.PointIds.end(), { b, c, a });
+  }
+  else
+  {
+    faces.PointIds.insert(faces.PointIds.end(), { c, a, b });
+  }
+  faces.Offsets.push_back(std::int64_t(faces.PointIds.size()));
 }
 
 // The exact side of face's centre: any three of its points span its circle.
@@ -733,7 +733,7 @@ TileSet TessellationDual::Tiles() const
     tiles.PointIds.push_back(v);
     tiles.Vertices.insert(tiles.Vertices.end(), polygon.begin(), polygon.end());
     tiles.Offsets.push_back(std::int64_t(tiles.Vertices.size()));
-    tiles.Areas.push_back(PolygonArea(polygon.data(), polygon.size()));
+    tiles.Areas.push_back(CompensatedPolygonArea(polygon.data(), polygon.size()));
     tiles.NeighborCounts.push_back(sides);
   }
   return tiles;
@@ -846,20 +846,7 @@ DelaunayFaces TessellationDual::Faces(bool splitDegenerate) const
     const std::int32_t* polygon = this->DegeneratePolygon(t, size);
     if (!polygon)
     {
-      const std::int32_t a = org[3 * t], b = org[3 * t + 1], c = org[3 * t + 2];
-      if (a < b && a < c)
-      {
-        faces.PointIds.insert(faces.PointIds.end(), { a, b, c });
-      }
-      else if (b < c)
-      {
-        faces.PointIds.insert(faces.PointIds.end(), { b, c, a });
-      }
-      else
-      {
-        faces.PointIds.insert(faces.PointIds.end(), { c, a, b });
-      }
-      faces.Offsets.push_back(std::int64_t(faces.PointIds.size()));
+      AppendTriangleFace(faces, org[3 * t], org[3 * t + 1], org[3 * t + 2]);
     }
     else if (!splitDegenerate)
     {
@@ -941,13 +928,7 @@ DelaunayFaces ComputeDelaunayFaces(const DirichletTessellation& tessellation, bo
     {
       continue; // ghost or free
     }
-    if (a < b && a < c)
-      faces.PointIds.insert(faces.PointIds.end(), { a, b, c });
-    else if (b < c)
-      faces.PointIds.insert(faces.PointIds.end(), { b, c, a });
-    else
-      faces.PointIds.insert(faces.PointIds.end(), { c, a, b });
-    faces.Offsets.push_back(std::int64_t(faces.PointIds.size()));
+    AppendTriangleFace(faces, a, b, c);
   }
   return faces;
 }
@@ -1310,7 +1291,7 @@ TileSet LocalTiles(const Tess& tess,
     tiles.PointIds.push_back(v);
     tiles.Vertices.insert(tiles.Vertices.end(), polygon.begin(), polygon.end());
     tiles.Offsets.push_back(std::int64_t(tiles.Vertices.size()));
-    tiles.Areas.push_back(PolygonArea(polygon.data(), polygon.size()));
+    tiles.Areas.push_back(CompensatedPolygonArea(polygon.data(), polygon.size()));
     tiles.NeighborCounts.push_back(sides);
   }
   return tiles;
