@@ -183,3 +183,41 @@ TEST(ArealAverage, BadInputIsNamed)
   EXPECT_THROW(average.Step({ 1.0, 2.0 }), InputError);
   EXPECT_THROW(average.Step({ INFINITY }), InputError);
 }
+
+TEST(ArealAverage, LatticeGaugesUpdateLikeRebuildsThroughCatchmentVertices)
+{
+  // Gauges on a lon/lat lattice: tile sides run exactly through densified catchment vertices and
+  // tiles carry ulp-apart vertices, the case that once made clipped areas depend on history.
+  std::vector<Point2> gauges;
+  for (int k = 0; k < 600; ++k)
+  {
+    gauges.push_back({ -109.0 + 0.3 * (k % 24), 37.0 + 0.16 * (k / 24) });
+  }
+  const std::vector<std::size_t> offsets{ 0, 5 };
+  const std::vector<Point2> ring{
+    { -108.0, 37.5 }, { -103.0, 37.5 }, { -103.0, 40.5 }, { -105.5, 41.2 }, { -108.0, 40.5 }
+  };
+  ArealAverageSettings rebuild;
+  rebuild.Incremental = false;
+  ThiessenArealAverage a(gauges, offsets, ring);
+  ThiessenArealAverage b(gauges, offsets, ring, rebuild);
+  std::mt19937_64 random(21);
+  std::vector<char> reporting(gauges.size(), 1);
+  std::vector<double> values(gauges.size());
+  for (int t = 0; t < 8; ++t)
+  {
+    for (std::size_t g = 0; g < gauges.size(); ++g)
+    {
+      if (random() % 100 < 3)
+        reporting[g] = !reporting[g];
+      values[g] = reporting[g] ? double(g % 7) : NaN;
+    }
+    const ArealStep x = a.Step(values), y = b.Step(values);
+    ASSERT_EQ(x.Gauges, y.Gauges) << "step " << t;
+    for (std::size_t k = 0; k < x.Weights.size(); ++k)
+    {
+      EXPECT_NEAR(x.Weights[k], y.Weights[k], 1e-13) << "step " << t << " gauge " << x.Gauges[k];
+    }
+    EXPECT_NEAR(Sum(x.Weights), 1.0, 1e-12) << "step " << t;
+  }
+}
