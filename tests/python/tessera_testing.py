@@ -8,12 +8,12 @@ SOURCE_DIR = os.environ.get("TESSERA_SOURCE_DIR", os.path.join(os.path.dirname(_
 EXAMPLE_DATA = os.path.join(SOURCE_DIR, "examples", "data")
 
 
-def check(condition, message):
+def assert_that(condition, message):
     if not condition:
         raise AssertionError(message)
 
 
-def check_close(actual, expected, tolerance, what):
+def assert_close(actual, expected, tolerance, what):
     if not abs(actual - expected) <= tolerance:
         raise AssertionError(f"{what}: {actual!r} differs from {expected!r} by more than {tolerance}")
 

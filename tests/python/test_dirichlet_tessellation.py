@@ -9,7 +9,7 @@ import numpy as np
 from vtkmodules.vtkFiltersCore import vtkDelaunay2D
 
 from tessera import vtkDelaunayTriangulation, vtkDirichletTessellation
-from tessera_testing import check, check_close, make_points, messages_of, run
+from tessera_testing import assert_close, assert_that, make_points, messages_of, run
 
 
 def tessellate(data, bounds=None, algorithm="GreenSibson"):
@@ -41,7 +41,7 @@ def test_tiles_are_nearest_point_regions():
     values = [rng.uniform(0, 50) for _ in coords]
     f = tessellate(make_points(coords, precip=values), bounds=(-1, 11, -1, 11))
     tiles = f.GetOutput(0)
-    check(tiles.GetNumberOfCells() == 300, "one tile per point")
+    assert_that(tiles.GetNumberOfCells() == 300, "one tile per point")
     pts = np.array(coords)
     ids = tiles.GetCellData().GetArray("PointId")
     areas = tiles.GetCellData().GetArray("Area")
@@ -50,10 +50,10 @@ def test_tiles_are_nearest_point_regions():
     for c, poly in enumerate(tile_polygons(tiles)):
         pid = ids.GetValue(c)
         area = shoelace(poly)
-        check(area > 0, f"tile {c} is anticlockwise")
-        check_close(areas.GetValue(c), area, 1e-9 * 144, f"Area of tile {c}")
+        assert_that(area > 0, f"tile {c} is anticlockwise")
+        assert_close(areas.GetValue(c), area, 1e-9 * 144, f"Area of tile {c}")
         total += areas.GetValue(c)
-        check(precip.GetValue(c) == values[pid], f"point data follows tile {c}")
+        assert_that(precip.GetValue(c) == values[pid], f"point data follows tile {c}")
         # Brute force: sample points inside the tile (convex combinations of its corners) are
         # nearest to the tile's point, and every corner is equidistant to it and its nearest.
         rng2 = np.random.default_rng(c)
@@ -61,11 +61,11 @@ def test_tiles_are_nearest_point_regions():
             w = rng2.dirichlet(np.ones(len(poly)))
             q = w @ poly
             d = np.hypot(*(pts - q).T)
-            check(d[pid] <= d.min() * (1 + 1e-9) + 1e-12, f"sample in tile {c} nearest to point {pid}")
+            assert_that(d[pid] <= d.min() * (1 + 1e-9) + 1e-12, f"sample in tile {c} nearest to point {pid}")
         for corner in poly:
             d = np.hypot(*(pts - corner).T)
-            check(abs(d[pid] - d.min()) <= 1e-9 * 12, f"corner of tile {c} equidistant")
-    check_close(total, 144.0, 144.0 * 1e-12, "tile areas sum to the window area")
+            assert_that(abs(d[pid] - d.min()) <= 1e-9 * 12, f"corner of tile {c} equidistant")
+    assert_close(total, 144.0, 144.0 * 1e-12, "tile areas sum to the window area")
 
 
 def delaunay2d_triangles(coords):
@@ -87,21 +87,21 @@ def test_delaunay_faces_match_vtk_delaunay2d_and_count():
     t.SetInputData(make_points(coords))
     t.Update()
     out = t.GetOutput()
-    check(out.GetNumberOfPoints() == 400, "all input points kept in order")
+    assert_that(out.GetNumberOfPoints() == 400, "all input points kept in order")
     ours = set()
     for c in range(out.GetNumberOfCells()):
         ids = out.GetCell(c).GetPointIds()
-        check(ids.GetNumberOfIds() == 3, "random points give triangles")
+        assert_that(ids.GetNumberOfIds() == 3, "random points give triangles")
         ours.add(tuple(sorted(ids.GetId(k) for k in range(3))))
     # vtkDelaunay2D (inexact) is known to miss thin triangles along the hull: every triangle it
     # finds must be ours, and each one only we find must pass the exact empty-circle test.
     theirs = delaunay2d_triangles(coords)
-    check(theirs <= ours, f"{len(theirs - ours)} vtkDelaunay2D triangles are missing")
+    assert_that(theirs <= ours, f"{len(theirs - ours)} vtkDelaunay2D triangles are missing")
     for tri in sorted(ours - theirs) + sorted(ours)[:40]:
-        check(exactly_empty_circle(tri, coords), f"triangle {tri} has a point in its circumcircle")
+        assert_that(exactly_empty_circle(tri, coords), f"triangle {tri} has a point in its circumcircle")
     # 2n - 2 - h triangles, h from the convex hull (monotone chain, computed here)
     hull = convex_hull(coords)
-    check(len(ours) == 2 * 400 - 2 - len(hull), f"{len(ours)} triangles for h = {len(hull)}")
+    assert_that(len(ours) == 2 * 400 - 2 - len(hull), f"{len(ours)} triangles for h = {len(hull)}")
 
 
 def exactly_empty_circle(tri, coords):
@@ -147,8 +147,8 @@ def test_square_lattice_has_square_tiles_and_diagonal_half_neighbours():
     areas = tiles.GetCellData().GetArray("Area")
     counts = tiles.GetCellData().GetArray("NeighborCount")
     for c in range(tiles.GetNumberOfCells()):
-        check_close(areas.GetValue(c), 1.0, 1e-15, f"tile {c} is a unit square")
-        check(counts.GetValue(c) == 4, f"tile {c} has 4 sides (neighbours + window edges)")
+        assert_close(areas.GetValue(c), 1.0, 1e-15, f"tile {c} is a unit square")
+        assert_that(counts.GetValue(c) == 4, f"tile {c} has 4 sides (neighbours + window edges)")
     kinds = graph.GetCellData().GetArray("Kind")
     edges, halves = set(), set()
     for c in range(graph.GetNumberOfCells()):
@@ -156,18 +156,18 @@ def test_square_lattice_has_square_tiles_and_diagonal_half_neighbours():
         a, b = coords[ids.GetId(0)], coords[ids.GetId(1)]
         (halves if kinds.GetValue(c) == 1 else edges).add((a, b))
     for (a, b) in edges:
-        check(abs(a[0] - b[0]) + abs(a[1] - b[1]) == 1, f"edge neighbours {a} {b} are adjacent")
+        assert_that(abs(a[0] - b[0]) + abs(a[1] - b[1]) == 1, f"edge neighbours {a} {b} are adjacent")
     for (a, b) in halves:
-        check(abs(a[0] - b[0]) == 1 and abs(a[1] - b[1]) == 1, f"half-neighbours {a} {b} are diagonal")
-    check(len(edges) == 2 * 5 * 4, f"{len(edges)} edge contiguities")
-    check(len(halves) == 2 * 4 * 4, f"{len(halves)} half-neighbour pairs (both diagonals of 16 squares)")
+        assert_that(abs(a[0] - b[0]) == 1 and abs(a[1] - b[1]) == 1, f"half-neighbours {a} {b} are diagonal")
+    assert_that(len(edges) == 2 * 5 * 4, f"{len(edges)} edge contiguities")
+    assert_that(len(halves) == 2 * 4 * 4, f"{len(halves)} half-neighbour pairs (both diagonals of 16 squares)")
     t = vtkDelaunayTriangulation()
     t.SetInputData(make_points(coords))
     t.Update()
-    check(t.GetOutput().GetNumberOfCells() == 16, "16 degenerate square faces")
+    assert_that(t.GetOutput().GetNumberOfCells() == 16, "16 degenerate square faces")
     t.SplitDegenerateFacesOn()
     t.Update()
-    check(t.GetOutput().GetNumberOfCells() == 32, "split into 32 triangles")
+    assert_that(t.GetOutput().GetNumberOfCells() == 32, "split into 32 triangles")
 
 
 def test_unused_points_are_reported_with_ids():
@@ -178,9 +178,9 @@ def test_unused_points_are_reported_with_ids():
     dups = fd.GetArray("DuplicatePointIds")
     of = fd.GetArray("DuplicateOfPointIds")
     pairs = sorted((dups.GetValue(i), of.GetValue(i)) for i in range(dups.GetNumberOfTuples()))
-    check(rejected == [2], f"point 2 outside the window: {rejected}")
-    check(pairs == [(3, 0), (5, 1)], f"duplicates reported with their originals: {pairs}")
-    check(f.GetOutput(0).GetNumberOfCells() == 3, "three distinct points inside")
+    assert_that(rejected == [2], f"point 2 outside the window: {rejected}")
+    assert_that(pairs == [(3, 0), (5, 1)], f"duplicates reported with their originals: {pairs}")
+    assert_that(f.GetOutput(0).GetNumberOfCells() == 3, "three distinct points inside")
 
 
 def test_degenerate_inputs_give_valid_output():
@@ -188,14 +188,14 @@ def test_degenerate_inputs_give_valid_output():
                           ([(0.1, 0.1), (0.3, 0.3), (0.5, 0.5), (0.9, 0.9)], 4)]:
         f = tessellate(make_points(coords), bounds=(0, 1, 0, 1))
         tiles = f.GetOutput(0)
-        check(tiles.GetNumberOfCells() == cells, f"{len(coords)} points give {cells} tiles")
+        assert_that(tiles.GetNumberOfCells() == cells, f"{len(coords)} points give {cells} tiles")
         total = sum(tiles.GetCellData().GetArray("Area").GetValue(c) for c in range(cells))
         if cells:
-            check_close(total, 1.0, 1e-12, f"{len(coords)} points: tiles fill the window")
+            assert_close(total, 1.0, 1e-12, f"{len(coords)} points: tiles fill the window")
         t = vtkDelaunayTriangulation()
         t.SetInputData(make_points(coords))
         t.Update()
-        check(t.GetOutput().GetNumberOfCells() == 0, f"{len(coords)} collinear/few points: no face")
+        assert_that(t.GetOutput().GetNumberOfCells() == 0, f"{len(coords)} collinear/few points: no face")
 
 
 def graph_pairs(graph):
@@ -220,17 +220,17 @@ def test_both_engines_agree():
         green = tessellate(data, bounds=(-0.5, 1.5, -0.5, 1.5), algorithm="GreenSibson")
         brassel = tessellate(data, bounds=(-0.5, 1.5, -0.5, 1.5), algorithm="BrasselReif")
         a, b = graph_pairs(green.GetOutput(1)), graph_pairs(brassel.GetOutput(1))
-        check(a[0] == b[0], f"{name}: Kind 0 pairs differ in {len(a[0] ^ b[0])}")
-        check(a[1] == b[1], f"{name}: Kind 1 pairs differ in {len(a[1] ^ b[1])}")
+        assert_that(a[0] == b[0], f"{name}: Kind 0 pairs differ in {len(a[0] ^ b[0])}")
+        assert_that(a[1] == b[1], f"{name}: Kind 1 pairs differ in {len(a[1] ^ b[1])}")
         ta, tb = green.GetOutput(0), brassel.GetOutput(0)
-        check(ta.GetNumberOfCells() == tb.GetNumberOfCells(), f"{name}: tile counts")
+        assert_that(ta.GetNumberOfCells() == tb.GetNumberOfCells(), f"{name}: tile counts")
         for k in range(ta.GetNumberOfCells()):
-            check(ta.GetCellData().GetArray("PointId").GetValue(k) == tb.GetCellData().GetArray("PointId").GetValue(k),
+            assert_that(ta.GetCellData().GetArray("PointId").GetValue(k) == tb.GetCellData().GetArray("PointId").GetValue(k),
                   f"{name}: tile order")
-            check_close(ta.GetCellData().GetArray("Area").GetValue(k), tb.GetCellData().GetArray("Area").GetValue(k),
+            assert_close(ta.GetCellData().GetArray("Area").GetValue(k), tb.GetCellData().GetArray("Area").GetValue(k),
                         4.0 * 1e-12, f"{name}: area of tile {k}")
         if name == "lattice":
-            check(len(a[1]) == 2 * 19 * 19, f"lattice: both diagonals of every square are half-neighbours ({len(a[1])})")
+            assert_that(len(a[1]) == 2 * 19 * 19, f"lattice: both diagonals of every square are half-neighbours ({len(a[1])})")
 
 
 def test_brassel_reif_refuses_a_non_rectangular_window():
@@ -241,7 +241,7 @@ def test_brassel_reif_refuses_a_non_rectangular_window():
     f.AddWindowConstraint(1, 1, -1.5)  # x + y < 1.5 cuts a corner
     f.SetAlgorithmToBrasselReif()
     f.Update()
-    check(len(messages) == 1 and "rectangular" in messages[0], f"clear error: {messages}")
+    assert_that(len(messages) == 1 and "rectangular" in messages[0], f"clear error: {messages}")
 
 
 def test_nan_point_is_named():
@@ -249,8 +249,8 @@ def test_nan_point_is_named():
     messages = messages_of(f)
     f.SetInputData(make_points([(0, 0), (1, 1), (math.nan, 2)]))
     f.Update()
-    check(len(messages) == 1 and "point 2" in messages[0], f"error names point 2: {messages}")
-    check(f.GetOutput(0).GetNumberOfCells() == 0, "empty output")
+    assert_that(len(messages) == 1 and "point 2" in messages[0], f"error names point 2: {messages}")
+    assert_that(f.GetOutput(0).GetNumberOfCells() == 0, "empty output")
 
 
 if __name__ == "__main__":

@@ -9,7 +9,7 @@ from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 
 from tessera import vtkGeographicProjection
-from tessera_testing import EXAMPLE_DATA, check, check_close, messages_of, run
+from tessera_testing import EXAMPLE_DATA, assert_close, assert_that, messages_of, run
 
 
 def colorado_gauges():
@@ -29,9 +29,9 @@ def test_round_trip_of_the_colorado_gauges():
     forward.SetInputData(gauges)
     forward.Update()
     projected = forward.GetOutput()
-    check(projected.GetNumberOfPoints() == 376, "all 376 gauges projected")
+    assert_that(projected.GetNumberOfPoints() == 376, "all 376 gauges projected")
     record = projected.GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
-    check(record.startswith("projection=AlbersEqualArea"), record)
+    assert_that(record.startswith("projection=AlbersEqualArea"), record)
     inverse = vtkGeographicProjection()
     inverse.SetInputConnection(forward.GetOutputPort())
     inverse.InverseOn()
@@ -39,9 +39,9 @@ def test_round_trip_of_the_colorado_gauges():
     back = inverse.GetOutput()
     for i in range(gauges.GetNumberOfPoints()):
         a, b = gauges.GetPoint(i), back.GetPoint(i)
-        check_close(b[0], a[0], 1e-9, f"longitude of gauge {i}")
-        check_close(b[1], a[1], 1e-9, f"latitude of gauge {i}")
-        check(b[2] == a[2], f"elevation of gauge {i} kept")
+        assert_close(b[0], a[0], 1e-9, f"longitude of gauge {i}")
+        assert_close(b[1], a[1], 1e-9, f"latitude of gauge {i}")
+        assert_that(b[2] == a[2], f"elevation of gauge {i} kept")
 
 
 def spherical_distance(lon1, lat1, lon2, lat2, radius=6371008.8):
@@ -67,12 +67,12 @@ def test_azimuthal_equidistant_keeps_distances_from_the_centre():
     f.Update()
     out = f.GetOutput()
     x0, y0, _ = out.GetPoint(0)
-    check(abs(x0) < 1e-6 and abs(y0) < 1e-6, "the centre maps to the origin")
+    assert_that(abs(x0) < 1e-6 and abs(y0) < 1e-6, "the centre maps to the origin")
     for i in range(1, 4):
         x, y, _ = out.GetPoint(i)
         lon, lat, _ = data.GetPoint(i)
         expected = spherical_distance(-105.0, 39.0, lon, lat)
-        check_close(math.hypot(x, y) / expected, 1.0, 0.006, f"distance ratio of point {i}")
+        assert_close(math.hypot(x, y) / expected, 1.0, 0.006, f"distance ratio of point {i}")
 
 
 def test_nan_point_is_named_and_output_is_empty():
@@ -85,9 +85,9 @@ def test_nan_point_is_named_and_output_is_empty():
     messages = messages_of(f)
     f.SetInputData(data)
     f.Update()
-    check(f.GetOutput().GetNumberOfPoints() == 0, "empty output after a NaN point")
-    check(len(messages) == 1, f"one error reported, got {messages}")
-    check("point 1" in messages[0], f"the error names point 1: {messages[0]}")
+    assert_that(f.GetOutput().GetNumberOfPoints() == 0, "empty output after a NaN point")
+    assert_that(len(messages) == 1, f"one error reported, got {messages}")
+    assert_that("point 1" in messages[0], f"the error names point 1: {messages[0]}")
 
 
 if __name__ == "__main__":

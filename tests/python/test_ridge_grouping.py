@@ -9,7 +9,7 @@ import numpy as np
 from vtkmodules.vtkCommonCore import vtkCommand
 
 from tessera import vtkRidgeGrouping
-from tessera_testing import check, make_points, messages_of, run
+from tessera_testing import assert_that, make_points, messages_of, run
 
 
 def adjusted_rand_index(a, b):
@@ -63,18 +63,18 @@ def test_two_noisy_curves_are_grouped_ordered_and_fitted():
     nodes = [pts.GetPointData().GetArray("Node").GetValue(i) for i in range(len(coords))]
     ari = adjusted_rand_index(groups, truth)
     # Two well separated curves (60 units apart, noise 1): anything but a clean split is a bug.
-    check(ari > 0.95, f"adjusted Rand index {ari:.3f}")
+    assert_that(ari > 0.95, f"adjusted Rand index {ari:.3f}")
     for curve in (0, 1):
         members = [i for i in range(len(coords)) if truth[i] == curve]
         tau = kendall_tau([nodes[i] for i in members[:150]], [arc[i] for i in members[:150]])
         # Node order may run either way along the curve.
-        check(abs(tau) > 0.95, f"curve {curve}: Kendall tau {tau:.3f}")
-        check(all(0.0 <= nodes[i] <= 1.0 for i in members), "nodes in [0, 1]")
+        assert_that(abs(tau) > 0.95, f"curve {curve}: Kendall tau {tau:.3f}")
+        assert_that(all(0.0 <= nodes[i] <= 1.0 for i in members), "nodes in [0, 1]")
     contours = f.GetOutputDataObject(1)
-    check(contours.GetCellData().GetArray("ContourId") is not None, "ContourId")
-    check(contours.GetCellData().GetArray("Closed") is not None, "Closed")
+    assert_that(contours.GetCellData().GetArray("ContourId") is not None, "ContourId")
+    assert_that(contours.GetCellData().GetArray("Closed") is not None, "Closed")
     curves = f.GetOutputDataObject(2)
-    check(curves.GetNumberOfCells() >= 2, f"{curves.GetNumberOfCells()} fitted curves")
+    assert_that(curves.GetNumberOfCells() >= 2, f"{curves.GetNumberOfCells()} fitted curves")
     # Every sample of the fitted curves lies near one of the true curves (within 6 noise sigmas,
     # the open-end and bend allowance of the core's own tests).
     for c in range(curves.GetNumberOfCells()):
@@ -84,13 +84,13 @@ def test_two_noisy_curves_are_grouped_ordered_and_fitted():
             xs = np.linspace(0, 200, 2001)
             d_line = np.min(np.hypot(xs - x, 20 - y))
             d_parabola = np.min(np.hypot(xs - x, 80 + 0.002 * (xs - 100) ** 2 - y))
-            check(min(d_line, d_parabola) < 6.0, f"curve {c} sample {k} is {min(d_line, d_parabola):.1f} off")
+            assert_that(min(d_line, d_parabola) < 6.0, f"curve {c} sample {k} is {min(d_line, d_parabola):.1f} off")
     image = f.GetOutputDataObject(3)
     dims = image.GetDimensions()
-    check(max(dims[0], dims[1]) == 256, f"image {dims}")
+    assert_that(max(dims[0], dims[1]) == 256, f"image {dims}")
     for name in ("Field", "MinorRidge", "MajorRidge"):
-        check(image.GetPointData().GetArray(name) is not None, f"image array {name}")
-    check(pts.GetFieldData().GetArray("ImageSize").GetValue(0) == 256, "ImageSize recorded")
+        assert_that(image.GetPointData().GetArray(name) is not None, f"image array {name}")
+    assert_that(pts.GetFieldData().GetArray("ImageSize").GetValue(0) == 256, "ImageSize recorded")
 
 
 def test_bad_and_degenerate_input():
@@ -98,27 +98,27 @@ def test_bad_and_degenerate_input():
     warnings = messages_of(f, vtkCommand.WarningEvent)
     f.SetInputData(make_points([(1.0, 2.0)]))
     f.Update()
-    check(f.GetOutputDataObject(2).GetNumberOfCells() == 0 and len(warnings) >= 1,
+    assert_that(f.GetOutputDataObject(2).GetNumberOfCells() == 0 and len(warnings) >= 1,
           f"one point: empty outputs with a warning {warnings}")
     same = vtkRidgeGrouping()
     same.SetInputData(make_points([(3.0, 3.0)] * 10))
     same.Update()
     g = same.GetOutput(0).GetPointData().GetArray("GroupId")
-    check({g.GetValue(i) for i in range(10)} == {0}, "identical points: one group")
-    check(same.GetOutputDataObject(2).GetNumberOfCells() == 0, "identical points: no curve")
+    assert_that({g.GetValue(i) for i in range(10)} == {0}, "identical points: one group")
+    assert_that(same.GetOutputDataObject(2).GetNumberOfCells() == 0, "identical points: no curve")
     big = vtkRidgeGrouping()
     errors = messages_of(big)
     big.SetInputData(make_points(two_noisy_curves()[0]))
     big.SetImageSize(100000)
     big.Update()
-    check(len(errors) == 1 and "100000" in errors[0] and "memory" in errors[0],
+    assert_that(len(errors) == 1 and "100000" in errors[0] and "memory" in errors[0],
           f"image size refused, naming it and the memory: {errors}")
-    check(big.GetOutputDataObject(3).GetNumberOfPoints() == 0, "no image allocated")
+    assert_that(big.GetOutputDataObject(3).GetNumberOfPoints() == 0, "no image allocated")
     nan = vtkRidgeGrouping()
     errors = messages_of(nan)
     nan.SetInputData(make_points([(0, 0), (1, math.nan), (2, 2)]))
     nan.Update()
-    check(len(errors) == 1 and "point 1" in errors[0], f"NaN point named: {errors}")
+    assert_that(len(errors) == 1 and "point 1" in errors[0], f"NaN point named: {errors}")
 
 
 if __name__ == "__main__":

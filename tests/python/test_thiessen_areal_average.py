@@ -14,7 +14,7 @@ from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
 
 from tessera import (vtkDirichletTessellation, vtkGeographicProjection, vtkThiessenArealAverage,
                      vtkWindowClip)
-from tessera_testing import EXAMPLE_DATA, check, check_close, messages_of, run
+from tessera_testing import EXAMPLE_DATA, assert_close, assert_that, messages_of, run
 
 
 def gauges_polydata(coords, ids, values=None):
@@ -70,12 +70,12 @@ def test_four_symmetric_gauges_share_a_square():
                                     ["a", "b", "c", "d"], [1.0, 2.0, 3.0, 4.0]))
     f.SetCatchmentData(polygon([[(-1, -1), (1, -1), (1, 1), (-1, 1)]]))
     f.Update(1)
-    check_close(summary_column(f, "ArealMean")[0], 2.5, 1e-9, "areal mean")
-    check(summary_column(f, "StationsUsed")[0] == 4, "4 gauges used")
+    assert_close(summary_column(f, "ArealMean")[0], 2.5, 1e-9, "areal mean")
+    assert_that(summary_column(f, "StationsUsed")[0] == 4, "4 gauges used")
     f.Update(0)
     w = weights_by_gauge(f.GetOutputDataObject(0))
     for g in range(4):
-        check_close(w[g], 0.25, 1e-9, f"weight of gauge {g}")
+        assert_close(w[g], 0.25, 1e-9, f"weight of gauge {g}")
 
 
 def read_colorado():
@@ -154,20 +154,20 @@ def test_colorado_months_match_a_brute_force_raster():
     f.Update(1)
     means = summary_column(f, "ArealMean")
     times = summary_column(f, "Time")
-    check(len(means) == 3, "three months")
+    assert_that(len(means) == 3, "three months")
     for k, key in enumerate(sorted(months)):
         expected = brute_force_mean(coords, ids, ring, months[key])
         print(f"  {key}: Thiessen {means[k]:.6f}, raster of nearest gauges {expected:.6f}")
-        check(abs(means[k] - expected) <= 1e-3 * abs(expected),
+        assert_that(abs(means[k] - expected) <= 1e-3 * abs(expected),
               f"{key}: Thiessen {means[k]:.6f} vs raster {expected:.6f}")
         f.UpdateTimeStep(times[k])
         tiles = f.GetOutputDataObject(0)
         w = weights_by_gauge(tiles)
-        check_close(sum(w.values()), 1.0, 1e-12, f"{key}: weights sum to 1")
+        assert_close(sum(w.values()), 1.0, 1e-12, f"{key}: weights sum to 1")
         reported = sum(1 for i in ids if i in months[key])
-        check(summary_column(f, "StationsUsed")[k] == reported, f"{key}: StationsUsed")
+        assert_that(summary_column(f, "StationsUsed")[k] == reported, f"{key}: StationsUsed")
     steps = f.GetOutputInformation(0).Get(vtkStreamingDemandDrivenPipeline.TIME_STEPS())
-    check(steps is not None and len(steps) == 3, f"time steps advertised: {steps}")
+    assert_that(steps is not None and len(steps) == 3, f"time steps advertised: {steps}")
 
 
 def test_missing_steps_and_unused_input_are_reported():
@@ -180,15 +180,15 @@ def test_missing_steps_and_unused_input_are_reported():
     f.SetObservationsData(table)
     f.Update(1)
     means = summary_column(f, "ArealMean")
-    check(means[0] == 3.0, f"only g1 reported: {means[0]}")
-    check(math.isnan(means[1]), "no gauge: NaN mean")
-    check(summary_column(f, "StationsUsed")[1] == 0, "no gauge: StationsUsed 0")
-    check(summary_column(f, "StationsUsed")[2] == 2, "the repeat stands in for g1")
+    assert_that(means[0] == 3.0, f"only g1 reported: {means[0]}")
+    assert_that(math.isnan(means[1]), "no gauge: NaN mean")
+    assert_that(summary_column(f, "StationsUsed")[1] == 0, "no gauge: StationsUsed 0")
+    assert_that(summary_column(f, "StationsUsed")[2] == 2, "the repeat stands in for g1")
     fd = f.GetOutputDataObject(1).GetFieldData()
     unobserved = fd.GetArray("UnobservedGaugeIds")
-    check([unobserved.GetValue(i) for i in range(unobserved.GetNumberOfTuples())] == [2],
+    assert_that([unobserved.GetValue(i) for i in range(unobserved.GetNumberOfTuples())] == [2],
           "gauge 2 never observed")
-    check(fd.GetArray("DuplicateGaugeIds").GetValue(0) == 3 and fd.GetArray("DuplicateOfGaugeIds").GetValue(0) == 0,
+    assert_that(fd.GetArray("DuplicateGaugeIds").GetValue(0) == 3 and fd.GetArray("DuplicateOfGaugeIds").GetValue(0) == 0,
           "gauge 3 repeats gauge 0")
 
 
@@ -198,13 +198,13 @@ def test_bad_gauge_and_self_intersecting_catchment_are_named():
     f.SetGaugesData(gauges_polydata([(0.2, 0.2), (0.8, 95.0)], ["a", "b"], [1.0, 2.0]))
     f.SetCatchmentData(polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]]))
     f.Update()
-    check(len(messages) == 1 and "gauge 1" in messages[0], f"gauge 1 named: {messages}")
+    assert_that(len(messages) == 1 and "gauge 1" in messages[0], f"gauge 1 named: {messages}")
     g = vtkThiessenArealAverage()
     messages = messages_of(g)
     g.SetGaugesData(gauges_polydata([(0.2, 0.2)], ["a"], [1.0]))
     g.SetCatchmentData(polygon([[(0, 0), (1, 1), (1, 0), (0, 1)]]))
     g.Update()
-    check(len(messages) == 1 and "self-intersecting" in messages[0], f"bowtie named: {messages}")
+    assert_that(len(messages) == 1 and "self-intersecting" in messages[0], f"bowtie named: {messages}")
 
 
 def test_window_clip_of_projected_tiles_sums_to_the_catchment():
@@ -235,14 +235,14 @@ def test_window_clip_of_projected_tiles_sums_to_the_catchment():
                for c in range(out.GetNumberOfCells())}
     for c in range(out.GetNumberOfCells()):
         fraction = cd.GetArray("AreaFraction").GetValue(c)
-        check(0.0 < fraction <= 1.0 + 1e-12, f"AreaFraction {fraction} in (0, 1]")
-    check(cd.GetAbstractArray("station_id") is not None, "tile cell data carried")
+        assert_that(0.0 < fraction <= 1.0 + 1e-12, f"AreaFraction {fraction} in (0, 1]")
+    assert_that(cd.GetAbstractArray("station_id") is not None, "tile cell data carried")
     poly = outline.GetOutput()
     ids = poly.GetCell(0).GetPointIds()
     pts = np.array([poly.GetPoint(ids.GetId(k))[:2] for k in range(ids.GetNumberOfIds())])
     x, y = pts[:, 0], pts[:, 1]
     area = 0.5 * abs(float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)))
-    check_close(sum(clipped.values()), area, 1e-12 * area, "clipped tiles sum to the catchment")
+    assert_close(sum(clipped.values()), area, 1e-12 * area, "clipped tiles sum to the catchment")
 
 
 if __name__ == "__main__":
