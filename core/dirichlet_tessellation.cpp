@@ -35,11 +35,8 @@ bool ClearlyInside(const std::vector<HalfPlane>& constraints, const Point2& p)
   return true;
 }
 
-// orient2d and incircle for the hot loops: the floating-point filters of predicates_inline.h
-// (same expressions, same error bounds, same exact fallback), arranged so that the only branch
-// is whether the filter decided, which is almost always true and so predicted. The sign of a
-// decided determinant is computed without a branch: a branch on it would be mispredicted about
-// half the time, and the callers branch on it once more anyway.
+// orient2d and incircle for the hot loops: the inlined filters of predicates_inline.h, with a
+// grid stage (below) between the filter and the exact arithmetic.
 #if defined(__FMA__) || defined(__ARM_FEATURE_FMA) || defined(__FP_FAST_FMA) || defined(FP_FAST_FMA)
 inline int Orient(const Point2& a, const Point2& b, const Point2& c)
 {
@@ -161,52 +158,12 @@ __attribute__((noinline)) int InCircleUndecided(const Point2& a,
 
 inline int Orient(const Point2& a, const Point2& b, const Point2& c)
 {
-  const double detleft = (a.x - c.x) * (b.y - c.y);
-  const double detright = (a.y - c.y) * (b.x - c.x);
-  const double det = detleft - detright;
-  const double errbound =
-    detail::kOrientBound * (std::fabs(detleft) + std::fabs(detright)) + detail::kUnderflowTerm;
-  // NaN or infinity (overflow) anywhere makes the comparison false: the exact path decides.
-  if (__builtin_expect(std::fabs(det) > errbound, 1))
-  {
-    return int(det > 0.0) - int(det < 0.0);
-  }
-  return OrientUndecided(a, b, c);
+  return detail::orient2d_filter(a, b, c, OrientUndecided);
 }
 
 inline int InCircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
 {
-  const double adx = a.x - d.x;
-  const double bdx = b.x - d.x;
-  const double cdx = c.x - d.x;
-  const double ady = a.y - d.y;
-  const double bdy = b.y - d.y;
-  const double cdy = c.y - d.y;
-
-  const double bdxcdy = bdx * cdy;
-  const double cdxbdy = cdx * bdy;
-  const double alift = adx * adx + ady * ady;
-
-  const double cdxady = cdx * ady;
-  const double adxcdy = adx * cdy;
-  const double blift = bdx * bdx + bdy * bdy;
-
-  const double adxbdy = adx * bdy;
-  const double bdxady = bdx * ady;
-  const double clift = cdx * cdx + cdy * cdy;
-
-  const double det =
-    alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-  const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
-    (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
-    (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
-  const double errbound =
-    detail::kIncircleBound * permanent + detail::kUnderflowTerm * ((alift + blift + clift) + 1.0);
-  if (__builtin_expect(std::fabs(det) > errbound, 1))
-  {
-    return int(det > 0.0) - int(det < 0.0);
-  }
-  return InCircleUndecided(a, b, c, d);
+  return detail::incircle_filter(a, b, c, d, InCircleUndecided);
 }
 #endif
 

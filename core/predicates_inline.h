@@ -40,26 +40,38 @@ constexpr double kDistanceBound = (4.0 + 64.0 * kEpsilon) * kEpsilon;
 // term, far above the few such errors a determinant can collect, keeps the bounds valid there.
 constexpr double kUnderflowTerm = 0x1p-1020;
 
-inline int orient2d_filter(const Point2& a, const Point2& b, const Point2& c)
+/// orient2d's filter; when it cannot decide, `undecided(a, b, c)` does (an exact stage). The
+/// only branch is whether the filter decided, which is almost always true and so predicted; the
+/// sign of a decided determinant is computed without a branch (a branch on it would be
+/// mispredicted half the time, and callers branch on it once more anyway).
+template<typename Undecided>
+inline int orient2d_filter(const Point2& a, const Point2& b, const Point2& c, Undecided undecided)
 {
   const double detleft = (a.x - c.x) * (b.y - c.y);
   const double detright = (a.y - c.y) * (b.x - c.x);
   const double det = detleft - detright;
   const double errbound =
     kOrientBound * (std::fabs(detleft) + std::fabs(detright)) + kUnderflowTerm;
-  // NaN or infinity (overflow) anywhere makes both comparisons false: the exact path decides.
-  if (det > errbound)
+  // NaN or infinity (overflow) anywhere makes the comparison false: the exact path decides.
+  if (__builtin_expect(std::fabs(det) > errbound, 1))
   {
-    return 1;
+    return int(det > 0.0) - int(det < 0.0);
   }
-  if (-det > errbound)
-  {
-    return -1;
-  }
-  return orient2d_exact(a, b, c);
+  return undecided(a, b, c);
 }
 
-inline int incircle_filter(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
+inline int orient2d_filter(const Point2& a, const Point2& b, const Point2& c)
+{
+  return orient2d_filter(a, b, c, orient2d_exact);
+}
+
+/// incircle's filter; when it cannot decide, `undecided(a, b, c, d)` does.
+template<typename Undecided>
+inline int incircle_filter(const Point2& a,
+  const Point2& b,
+  const Point2& c,
+  const Point2& d,
+  Undecided undecided)
 {
   const double adx = a.x - d.x;
   const double bdx = b.x - d.x;
@@ -89,15 +101,16 @@ inline int incircle_filter(const Point2& a, const Point2& b, const Point2& c, co
   // the lifts.
   const double errbound =
     kIncircleBound * permanent + kUnderflowTerm * ((alift + blift + clift) + 1.0);
-  if (det > errbound)
+  if (__builtin_expect(std::fabs(det) > errbound, 1))
   {
-    return 1;
+    return int(det > 0.0) - int(det < 0.0);
   }
-  if (-det > errbound)
-  {
-    return -1;
-  }
-  return incircle_exact(a, b, c, d);
+  return undecided(a, b, c, d);
+}
+
+inline int incircle_filter(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
+{
+  return incircle_filter(a, b, c, d, incircle_exact);
 }
 
 inline int compare_distance_filter(const Point2& p, const Point2& a, const Point2& b)
