@@ -7,6 +7,8 @@
 #include "predicates.h"
 #include "tiles.h"
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -70,25 +72,12 @@ std::size_t CheckStructure(const Tess& t)
   return real;
 }
 
-std::vector<std::int32_t> AcceptedIds(const Tess& t)
-{
-  std::vector<std::int32_t> ids;
-  for (std::int32_t id = 0; id < std::int32_t(t.PointCount()); ++id)
-  {
-    if (t.Status(id) == PointStatus::Accepted)
-    {
-      ids.push_back(id);
-    }
-  }
-  return ids;
-}
-
 // Every real triangle's circumcircle has no accepted point strictly inside (exact incircle).
 void CheckEmptyCircles(const Tess& t)
 {
   const auto& org = t.Origin();
   const auto& pts = t.Points();
-  const std::vector<std::int32_t> ids = AcceptedIds(t);
+  const std::vector<std::int32_t> ids = tessera_test::AcceptedIds(t);
   for (std::int32_t tri = 0; tri < std::int32_t(org.size() / 3); ++tri)
   {
     if (t.IsFreeTriangle(tri) || t.IsGhostTriangle(tri))

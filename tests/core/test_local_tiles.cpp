@@ -8,6 +8,8 @@
 #include "dirichlet_tessellation.h"
 #include "tiles.h"
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -61,25 +63,12 @@ bool SameBits(const Tile& a, const Tile& b)
   return true;
 }
 
-std::vector<std::int32_t> Accepted(const DirichletTessellation& t)
-{
-  std::vector<std::int32_t> ids;
-  for (std::int32_t id = 0; id < std::int32_t(t.PointCount()); ++id)
-  {
-    if (t.Status(id) == PointStatus::Accepted)
-    {
-      ids.push_back(id);
-    }
-  }
-  return ids;
-}
-
 // Every accepted point in random subsets (and all at once, and repeated ids, and ids that are
 // not accepted) gets the full derivation's tile, bit for bit, in the order asked.
 void ExpectLocalEqualsFull(const DirichletTessellation& t, unsigned seed)
 {
   const std::map<std::int32_t, Tile> full = ByPoint(ComputeTiles(t));
-  std::vector<std::int32_t> ids = Accepted(t);
+  std::vector<std::int32_t> ids = tessera_test::AcceptedIds(t);
   ASSERT_EQ(full.size(), ids.size());
   std::mt19937_64 rng(seed);
   for (int trial = 0; trial < 4; ++trial)
@@ -133,7 +122,7 @@ void ExpectMatesFromFaces(const DirichletTessellation& t)
       }
     }
   }
-  const FaceMateLists mates = ComputeFaceMatesOf(t, Accepted(t));
+  const FaceMateLists mates = ComputeFaceMatesOf(t, tessera_test::AcceptedIds(t));
   for (std::size_t k = 0; k < mates.PointIds.size(); ++k)
   {
     const std::set<std::int32_t> got(

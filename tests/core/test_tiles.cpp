@@ -8,6 +8,8 @@
 #include "tiles.h"
 
 #include <gmpxx.h>
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -482,25 +484,12 @@ PairKinds BruteForcePairs(const Window& window,
   return pairs;
 }
 
-std::vector<std::int32_t> AcceptedIds(const DirichletTessellation& t)
-{
-  std::vector<std::int32_t> ids;
-  for (std::int32_t id = 0; id < std::int32_t(t.PointCount()); ++id)
-  {
-    if (t.Status(id) == PointStatus::Accepted)
-    {
-      ids.push_back(id);
-    }
-  }
-  return ids;
-}
-
 void ExpectExactContiguities(const Window& window, const std::vector<Point2>& points, bool sweep)
 {
   const DirichletTessellation t(window, points);
   const TessellationDual dual(t);
   const PairKinds ours = GraphPairs(dual.Contiguities());
-  const PairKinds exact = BruteForcePairs(window, points, AcceptedIds(t));
+  const PairKinds exact = BruteForcePairs(window, points, tessera_test::AcceptedIds(t));
   for (const auto& [pair, kind] : exact)
   {
     const auto found = ours.find(pair);
