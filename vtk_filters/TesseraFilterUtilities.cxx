@@ -15,6 +15,7 @@
 #include "vtkPoints.h"
 
 #include "errors.h"
+#include "polygon_area.h"
 
 #include <algorithm>
 #include <cmath>
@@ -210,19 +211,27 @@ Rings ReadPolygonRings(vtkDataObject* data)
 
 double OrientAnticlockwise(std::vector<tessera::Point2>& polygon)
 {
-  double twice = 0.0;
-  for (std::size_t k = 0; k < polygon.size(); ++k)
-  {
-    const auto& a = polygon[k];
-    const auto& b = polygon[(k + 1) % polygon.size()];
-    twice += a.x * b.y - b.x * a.y;
-  }
-  if (twice < 0.0)
+  const double area = tessera::CompensatedPolygonArea(polygon.data(), polygon.size());
+  if (area < 0.0)
   {
     std::reverse(polygon.begin(), polygon.end());
-    twice = -twice;
   }
-  return 0.5 * twice;
+  return std::abs(area);
+}
+
+void AddUnusedPointIds(vtkDataObject* data,
+  const std::vector<std::int32_t>& rejected,
+  const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates)
+{
+  std::vector<std::int32_t> copies, originals;
+  for (const auto& pair : duplicates)
+  {
+    copies.push_back(pair.first);
+    originals.push_back(pair.second);
+  }
+  AddIdFieldArray(data, "RejectedPointIds", rejected);
+  AddIdFieldArray(data, "DuplicatePointIds", copies);
+  AddIdFieldArray(data, "DuplicateOfPointIds", originals);
 }
 
 vtkSmartPointer<vtkIdTypeArray> MakeIdArray(const std::vector<std::int64_t>& values)

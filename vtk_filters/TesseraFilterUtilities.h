@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 class vtkDataObject;
@@ -51,6 +52,13 @@ Rings ReadPolygonRings(vtkDataObject* data);
 
 /// Reverses a clockwise polygon; returns its (now non-negative) shoelace area.
 double OrientAnticlockwise(std::vector<tessera::Point2>& polygon);
+
+/// The field data arrays every tessellation filter writes for points it did not use:
+/// `RejectedPointIds` (outside the window), `DuplicatePointIds` and `DuplicateOfPointIds`
+/// (exact copies and the accepted point each one copies).
+void AddUnusedPointIds(vtkDataObject* data,
+  const std::vector<std::int32_t>& rejected,
+  const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates);
 
 /// A vtkIdTypeArray holding `values`.
 vtkSmartPointer<vtkIdTypeArray> MakeIdArray(const std::vector<std::int64_t>& values);

@@ -71,16 +71,9 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     polys->SetData(tessera_vtk::MakeIdArray(faces.Offsets), connectivity);
     output->SetPolys(polys);
 
-    std::vector<std::int32_t> duplicates, originals;
-    for (const auto& pair : tessellation.Duplicates())
-    {
-      duplicates.push_back(pair.first);
-      originals.push_back(pair.second);
-    }
     const std::vector<std::int32_t> rejected = tessellation.RejectedIds();
-    tessera_vtk::AddIdFieldArray(output, "RejectedPointIds", rejected);
-    tessera_vtk::AddIdFieldArray(output, "DuplicatePointIds", duplicates);
-    tessera_vtk::AddIdFieldArray(output, "DuplicateOfPointIds", originals);
+    const auto duplicates = tessellation.Duplicates();
+    tessera_vtk::AddUnusedPointIds(output, rejected, duplicates);
     if (!rejected.empty() || !duplicates.empty())
     {
       vtkWarningMacro(

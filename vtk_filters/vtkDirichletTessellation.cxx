@@ -214,19 +214,6 @@ void WriteGraph(const tessera::ContiguityGraph& graph, vtkPointSet* input, vtkPo
   output->GetCellData()->AddArray(kinds);
 }
 
-void WriteUnusedPoints(const TessellationResult& result, vtkPolyData* output)
-{
-  std::vector<std::int32_t> duplicates, originals;
-  for (const auto& pair : result.Duplicates)
-  {
-    duplicates.push_back(pair.first);
-    originals.push_back(pair.second);
-  }
-  tessera_vtk::AddIdFieldArray(output, "RejectedPointIds", result.Rejected);
-  tessera_vtk::AddIdFieldArray(output, "DuplicatePointIds", duplicates);
-  tessera_vtk::AddIdFieldArray(output, "DuplicateOfPointIds", originals);
-}
-
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -283,8 +270,8 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     this->UpdateProgress(0.8);
     WriteTiles(result.Tiles, input, tilesOutput);
     WriteGraph(result.Graph, input, graphOutput);
-    WriteUnusedPoints(result, tilesOutput);
-    WriteUnusedPoints(result, graphOutput);
+    tessera_vtk::AddUnusedPointIds(tilesOutput, result.Rejected, result.Duplicates);
+    tessera_vtk::AddUnusedPointIds(graphOutput, result.Rejected, result.Duplicates);
     if (!result.Rejected.empty() || !result.Duplicates.empty())
     {
       vtkWarningMacro(<< result.Rejected.size() << " point(s) outside the window and "

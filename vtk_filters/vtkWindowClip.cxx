@@ -14,6 +14,7 @@
 
 #include "TesseraFilterUtilities.h"
 #include "clip.h"
+#include "polygon_area.h"
 
 #include <exception>
 
@@ -99,19 +100,19 @@ int vtkWindowClip::RequestData(vtkInformation*,
           continue;
         }
         polys->InsertNextCell(static_cast<vtkIdType>(end - begin));
-        double twiceArea = 0.0;
         for (std::size_t k = begin; k < end; ++k)
         {
           const auto& a = rings.Vertices[k];
-          const auto& b = rings.Vertices[k + 1 < end ? k + 1 : begin];
-          twiceArea += a.x * b.y - b.x * a.y;
           polys->InsertCellPoint(points->InsertNextPoint(a.x, a.y, 0.0));
         }
+        // Rings come with the region on their left: a clockwise ring bounds a hole.
+        const bool hole =
+          tessera::CompensatedPolygonArea(&rings.Vertices[begin], end - begin) < 0.0;
         outCD->CopyData(inCD, c, polys->GetNumberOfCells() - 1);
         tileIds->InsertNextValue(c);
         clippedAreas->InsertNextValue(clipped);
         fractions->InsertNextValue(ownArea > 0.0 ? clipped / ownArea : 0.0);
-        holes->InsertNextValue(twiceArea < 0.0 ? 1 : 0);
+        holes->InsertNextValue(hole ? 1 : 0);
       }
     }
     output->SetPoints(points);

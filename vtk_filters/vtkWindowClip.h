@@ -4,9 +4,10 @@
  *
  * vtkWindowClip intersects every polygon of input 0 (convex tiles, such as the output of
  * vtkDirichletTessellation; a clockwise one is reversed first) with the region of input 1: the
- * polygons (and closed polylines, as vtkGDALVectorReader gives rings) of input 1 taken as rings under the even-odd rule, so a ring inside another is a hole
- * and a ring inside a hole an island. Ring orientation and order do not matter. A catchment
- * boundary that touches or crosses itself, or two rings that touch, is an error naming them.
+ * polygons (and closed polylines, as vtkGDALVectorReader gives rings) of input 1 taken as rings
+ * under the even-odd rule, so a ring inside another is a hole and a ring inside a hole an island.
+ * Ring orientation and order do not matter. A catchment boundary that touches or crosses itself, or
+ * two rings that touch, is an error naming them.
  *
  * The output holds one polygon per ring of each clipped tile (a tile cut into two lobes gives two
  * polygons; a tile around a hole gives its outer ring and the hole's ring, flagged), with the
