@@ -11,6 +11,8 @@
 #include "window.h"
 
 #include <gmpxx.h>
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -322,18 +324,6 @@ double Tolerance(const mpq_class& exact, double tileArea)
   return 1e-12 * std::max(std::fabs(exact.get_d()), 1e-3 * tileArea);
 }
 
-double PlainArea(const std::vector<Point2>& ring)
-{
-  double twice = 0.0;
-  for (std::size_t i = 0; i < ring.size(); ++i)
-  {
-    const Point2& a = ring[i];
-    const Point2& b = ring[(i + 1) % ring.size()];
-    twice += a.x * b.y - b.x * a.y;
-  }
-  return 0.5 * twice;
-}
-
 template<typename Function>
 std::string ErrorOf(Function&& function)
 {
@@ -362,7 +352,7 @@ void CheckRings(const tessera::ClippedRings& out,
   {
     pieces.Add({ out.Vertices.begin() + static_cast<std::ptrdiff_t>(out.RingOffsets[r]),
       out.Vertices.begin() + static_cast<std::ptrdiff_t>(out.RingOffsets[r + 1]) });
-    signedSum += PlainArea(pieces.Ring(r));
+    signedSum += tessera_test::ShoelaceArea(pieces.Ring(r));
   }
   EXPECT_NEAR(signedSum, area, 1e-9 * std::max(1.0, area));
   double x0 = tile[0].x, x1 = tile[0].x, y0 = tile[0].y, y1 = tile[0].y;
@@ -474,7 +464,7 @@ TEST(Clip, TilesInsideOutsideAndStraddling)
   const std::vector<Point2> covering = Rectangle(-200, -200, 200, 200);
 
   const tessera::ClippedTile in = catchment.Clip(inside);
-  EXPECT_EQ(in.Area, PlainArea(inside));
+  EXPECT_EQ(in.Area, tessera_test::ShoelaceArea(inside));
   ASSERT_EQ(in.Rings.RingOffsets.size(), 2u);
   EXPECT_EQ(in.Rings.Vertices, inside);
 
@@ -487,7 +477,7 @@ TEST(Clip, TilesInsideOutsideAndStraddling)
     const tessera::ClippedTile clipped = catchment.Clip(tile);
     const mpq_class exact = ExactClippedArea(rings, tile);
     EXPECT_GT(exact, 0);
-    EXPECT_NEAR(clipped.Area, exact.get_d(), Tolerance(exact, PlainArea(tile)));
+    EXPECT_NEAR(clipped.Area, exact.get_d(), Tolerance(exact, tessera_test::ShoelaceArea(tile)));
     CheckRings(clipped.Rings, clipped.Area, rings, tile, random);
   }
   EXPECT_NEAR(catchment.ClipArea(covering), catchment.Area(), 1e-12 * catchment.Area());
@@ -509,7 +499,7 @@ void CompareRandomTiles(const Rings& rings, double offset, unsigned seed, int ti
     const double x = corner(random), y = corner(random) - 50.0, s = size(random);
     const std::vector<Point2> tile = RandomConvex(random, x, x + s, y, y + s, 8, 1.0 / 16);
     const mpq_class exact = ExactClippedArea(rings, tile);
-    const double tileArea = PlainArea(tile);
+    const double tileArea = tessera_test::ShoelaceArea(tile);
     const tessera::ClippedTile clipped = catchment.Clip(tile);
     EXPECT_NEAR(clipped.Area, exact.get_d(), Tolerance(exact, tileArea)) << "tile " << i;
     partial += exact > 0 && exact.get_d() < tileArea;
@@ -604,17 +594,17 @@ TEST(Clip, TilingAreasSumToCatchmentArea)
       sum += clipped.Areas[t];
       const std::vector<Point2> tile(vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t]),
         vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t + 1]));
-      partial += clipped.Areas[t] > 0 && clipped.Areas[t] < PlainArea(tile);
+      partial += clipped.Areas[t] > 0 && clipped.Areas[t] < tessera_test::ShoelaceArea(tile);
       // The rings of each tile add up to its area.
       double ringSum = 0.0;
       for (std::size_t r = clipped.TileRingOffsets[t]; r < clipped.TileRingOffsets[t + 1]; ++r)
       {
-        ringSum += PlainArea({ clipped.Rings.Vertices.begin() +
+        ringSum += tessera_test::ShoelaceArea({ clipped.Rings.Vertices.begin() +
             static_cast<std::ptrdiff_t>(clipped.Rings.RingOffsets[r]),
           clipped.Rings.Vertices.begin() +
             static_cast<std::ptrdiff_t>(clipped.Rings.RingOffsets[r + 1]) });
       }
-      EXPECT_NEAR(ringSum, clipped.Areas[t], 1e-9 * PlainArea(tile));
+      EXPECT_NEAR(ringSum, clipped.Areas[t], 1e-9 * tessera_test::ShoelaceArea(tile));
     }
     EXPECT_GT(partial, 100);
     EXPECT_EQ(clipped.CatchmentArea, catchment.Area());
@@ -801,7 +791,7 @@ TEST(Clip, ProjectedLatticeThiessenTilesSumToCatchmentArea)
     std::vector<Point2> tile(tiles.Vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t]),
       tiles.Vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t + 1]));
     const double area = clipped.Areas[t];
-    const double tileArea = PlainArea(tile);
+    const double tileArea = tessera_test::ShoelaceArea(tile);
     sum += area;
     partial += area > 0.0 && area < 0.999 * tileArea;
     for (std::size_t i = 0; i < tile.size(); ++i)
@@ -996,7 +986,7 @@ TEST(Clip, DensifiedOutlineWithTilesThroughItsVertices)
     std::vector<Point2> tile = { { coordinate(random) * 0.5, coordinate(random) * 0.5 },
       { coordinate(random) * 0.5, coordinate(random) * 0.5 },
       { coordinate(random) * 0.5, coordinate(random) * 0.5 } };
-    const double area = PlainArea(tile);
+    const double area = tessera_test::ShoelaceArea(tile);
     if (area == 0.0)
     {
       continue;

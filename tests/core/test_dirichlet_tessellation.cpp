@@ -22,22 +22,11 @@
 #include <vector>
 
 using namespace tessera;
+using tessera_test::UniformPoints;
 using Tess = DirichletTessellation;
 
 namespace
 {
-
-std::vector<Point2> UniformPoints(std::size_t n, unsigned seed, double lo = 0.0, double hi = 1.0)
-{
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(lo, hi);
-  std::vector<Point2> points(n);
-  for (Point2& p : points)
-  {
-    p = { u(rng), u(rng) };
-  }
-  return points;
-}
 
 Window UnitWindow()
 {

@@ -3,27 +3,18 @@
 #include "errors.h"
 #include "geo.h"
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
 using namespace tessera;
+using tessera_test::ShoelaceArea;
 
 namespace
 {
-
-double ShoelaceArea(const std::vector<Point2>& ring)
-{
-  double twice = 0.0;
-  for (std::size_t i = 0; i < ring.size(); ++i)
-  {
-    const Point2& a = ring[i];
-    const Point2& b = ring[(i + 1) % ring.size()];
-    twice += a.x * b.y - b.x * a.y;
-  }
-  return 0.5 * twice;
-}
 
 /// A lon/lat rectangle as a ring with every edge cut into `pieces` parts (edges along parallels
 /// must follow them, not the geodesic).

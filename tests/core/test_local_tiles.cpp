@@ -21,6 +21,8 @@
 #include <vector>
 
 using namespace tessera;
+using tessera_test::Hexagon;
+using tessera_test::UniformPoints;
 
 namespace
 {
@@ -131,18 +133,6 @@ void ExpectMatesFromFaces(const DirichletTessellation& t)
   }
 }
 
-std::vector<Point2> Uniform(std::size_t n, unsigned seed)
-{
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(0.0, 1.0);
-  std::vector<Point2> points(n);
-  for (Point2& p : points)
-  {
-    p = { u(rng), u(rng) };
-  }
-  return points;
-}
-
 std::vector<Point2> Lattice(int n, double spacing)
 {
   std::vector<Point2> points;
@@ -179,28 +169,17 @@ std::vector<Point2> Circles()
   return points;
 }
 
-Window Hexagon()
-{
-  std::vector<HalfPlane> constraints;
-  for (int k = 0; k < 6; ++k)
-  {
-    const double angle = 1.0471975511965976 * k + 0.2;
-    const double a = std::cos(angle), b = std::sin(angle);
-    constraints.push_back({ a, b, -(0.8 + 0.5 * a + 0.5 * b) });
-  }
-  return Window(constraints);
-}
-
 } // namespace
 
 TEST(LocalTiles, RandomSetsMatchTheFullDerivation)
 {
   for (unsigned seed = 1; seed <= 4; ++seed)
   {
-    const DirichletTessellation square(Window::Rectangle(0, 1, 0, 1), Uniform(200 * seed, seed));
+    const DirichletTessellation square(
+      Window::Rectangle(0, 1, 0, 1), UniformPoints(200 * seed, seed));
     ExpectLocalEqualsFull(square, seed);
     ExpectMatesFromFaces(square);
-    const DirichletTessellation hexagon(Hexagon(), Uniform(150 * seed, seed + 10));
+    const DirichletTessellation hexagon(Hexagon(), UniformPoints(150 * seed, seed + 10));
     ExpectLocalEqualsFull(hexagon, seed);
     ExpectMatesFromFaces(hexagon);
   }
@@ -238,7 +217,7 @@ TEST(LocalTiles, ChangedTilesAreFaceMatesOfTheChangedPoints)
 {
   for (const bool lattice : { false, true })
   {
-    std::vector<Point2> points = lattice ? Lattice(20, 1.0 / 21) : Uniform(600, 7);
+    std::vector<Point2> points = lattice ? Lattice(20, 1.0 / 21) : UniformPoints(600, 7);
     DirichletTessellation t(Window::Rectangle(0, 1, 0, 1), points);
     std::mt19937_64 rng(lattice ? 11 : 12);
     std::vector<char> active(points.size(), 1);

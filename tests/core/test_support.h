@@ -2,8 +2,14 @@
 // Small helpers shared by the core test programs (not part of the library).
 
 #include "dirichlet_tessellation.h"
+#include "tiles.h"
+#include "window.h"
 
+#include <cmath>
 #include <cstdint>
+#include <map>
+#include <random>
+#include <utility>
 #include <vector>
 
 namespace tessera_test
@@ -21,6 +27,63 @@ inline std::vector<std::int32_t> AcceptedIds(const tessera::DirichletTessellatio
     }
   }
   return ids;
+}
+
+/// n points uniform in [lo, hi)^2, reproducible from the seed.
+inline std::vector<tessera::Point2> UniformPoints(std::size_t n,
+  std::uint64_t seed,
+  double lo = 0.0,
+  double hi = 1.0)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(lo, hi);
+  std::vector<tessera::Point2> points(n);
+  for (tessera::Point2& p : points)
+  {
+    p = { u(rng), u(rng) };
+  }
+  return points;
+}
+
+/// A slanted hexagonal window around (0.5, 0.5): a window that is not a rectangle.
+inline tessera::Window Hexagon()
+{
+  std::vector<tessera::HalfPlane> constraints;
+  for (int k = 0; k < 6; ++k)
+  {
+    const double angle = 1.0471975511965976 * k + 0.2;
+    const double a = std::cos(angle), b = std::sin(angle);
+    constraints.push_back({ a, b, -(0.8 + 0.5 * a + 0.5 * b) });
+  }
+  return tessera::Window(constraints);
+}
+
+/// Contiguity pairs (i < j) and their kinds, as a map for comparisons.
+using PairKinds = std::map<std::pair<std::int32_t, std::int32_t>, int>;
+
+inline PairKinds GraphPairs(const tessera::ContiguityGraph& graph)
+{
+  PairKinds pairs;
+  for (std::size_t k = 0; k < graph.Kinds.size(); ++k)
+  {
+    pairs[{ graph.Pairs[2 * k], graph.Pairs[2 * k + 1] }] = graph.Kinds[k];
+  }
+  return pairs;
+}
+
+/// Plain shoelace area (positive anticlockwise), relative to the first vertex: the tests' own
+/// computation, independent of the core's compensated sum.
+inline double ShoelaceArea(const std::vector<tessera::Point2>& polygon)
+{
+  double sum = 0.0;
+  for (std::size_t k = 0; k < polygon.size(); ++k)
+  {
+    const tessera::Point2& a = polygon[k];
+    const tessera::Point2& b = polygon[(k + 1) % polygon.size()];
+    sum +=
+      (a.x - polygon[0].x) * (b.y - polygon[0].y) - (a.y - polygon[0].y) * (b.x - polygon[0].x);
+  }
+  return 0.5 * sum;
 }
 
 } // namespace tessera_test

@@ -10,6 +10,8 @@
 #include "window.h"
 
 #include <gmpxx.h>
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -22,21 +24,11 @@
 #include <vector>
 
 using namespace tessera;
+using tessera_test::GraphPairs;
+using tessera_test::PairKinds;
 
 namespace
 {
-
-using PairKinds = std::map<std::pair<std::int32_t, std::int32_t>, int>;
-
-PairKinds pair_kinds(const ContiguityGraph& g)
-{
-  PairKinds m;
-  for (std::size_t k = 0; k < g.Kinds.size(); ++k)
-  {
-    m[{ g.Pairs[2 * k], g.Pairs[2 * k + 1] }] = g.Kinds[k];
-  }
-  return m;
-}
 
 // ---------------------------------------------------------------------------------------------
 // Exact brute force.
@@ -278,7 +270,7 @@ void expect_matches_brute_force(const std::vector<Point2>& pts,
   const double tolerance = area_tolerance(window);
   check_structure(r, pts, area, tolerance);
   const BruteForce bf = brute_force(pts, xmin, xmax, ymin, ymax);
-  const PairKinds got = pair_kinds(r.Contiguities);
+  const PairKinds got = GraphPairs(r.Contiguities);
   EXPECT_EQ(got, bf.pairs);
   if (got != bf.pairs)
   {
@@ -320,7 +312,7 @@ void expect_engines_agree(const std::vector<Point2>& pts, const Window& window)
   const TessellationDual dual(gs);
   const TileSet gsTiles = dual.Tiles();
   const ContiguityGraph gsGraph = dual.Contiguities();
-  EXPECT_EQ(pair_kinds(br.Contiguities), pair_kinds(gsGraph));
+  EXPECT_EQ(GraphPairs(br.Contiguities), GraphPairs(gsGraph));
   std::map<std::int32_t, double> gsArea;
   for (std::size_t k = 0; k < gsTiles.PointIds.size(); ++k)
   {
@@ -334,21 +326,6 @@ void expect_engines_agree(const std::vector<Point2>& pts, const Window& window)
   }
   EXPECT_EQ(br.RejectedIds, gs.RejectedIds());
   EXPECT_EQ(br.Duplicates, gs.Duplicates());
-}
-
-std::vector<Point2> uniform_points(std::size_t n,
-  std::uint64_t seed,
-  double lo = 0.0,
-  double hi = 1.0)
-{
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(lo, hi);
-  std::vector<Point2> p(n);
-  for (Point2& q : p)
-  {
-    q = { u(rng), u(rng) };
-  }
-  return p;
 }
 
 std::vector<Point2> gaussian_clusters(std::size_t n, std::uint64_t seed)
@@ -389,7 +366,7 @@ TEST(ThiessenSweep, UniformMatchesBruteForce)
 {
   for (std::uint64_t seed = 1; seed <= 6; ++seed)
   {
-    expect_matches_brute_force(uniform_points(20 + 15 * seed, seed), 0, 1, 0, 1);
+    expect_matches_brute_force(tessera_test::UniformPoints(20 + 15 * seed, seed), 0, 1, 0, 1);
   }
 }
 
@@ -464,7 +441,7 @@ TEST(ThiessenSweep, SquareLatticeHalfNeighboursAreTheDiagonals)
         }
       }
     }
-    EXPECT_EQ(pair_kinds(r.Contiguities), expected);
+    EXPECT_EQ(GraphPairs(r.Contiguities), expected);
     EXPECT_EQ(r.DegenerateVertexCount >= std::size_t((n - 1) * (n - 1)), true);
     // Interior tiles are unit squares centred on their points.
     for (std::size_t k = 0; k < r.Tiles.PointIds.size(); ++k)
@@ -621,7 +598,7 @@ TEST(ThiessenSweep, TinyAndHugeScales)
   // exact; with tiny scales the floating-point ranges give up and the scans widen.
   for (const double scale : { 1e-100, 1e-20, 1e20, 1e100 })
   {
-    std::vector<Point2> pts = uniform_points(40, 31);
+    std::vector<Point2> pts = tessera_test::UniformPoints(40, 31);
     const std::vector<Point2> lattice = square_lattice(5, 0.2, 0.05, 0.05);
     pts.insert(pts.end(), lattice.begin(), lattice.end());
     for (Point2& p : pts)
@@ -648,7 +625,7 @@ TEST(ThiessenSweep, PowerOfTwoScalingIsExact)
     }
     const double one = std::ldexp(1.0, e);
     const ThiessenSweepResult s = ComputeThiessenSweep(Window::Rectangle(0, one, 0, one), scaled);
-    EXPECT_EQ(pair_kinds(s.Contiguities), pair_kinds(r.Contiguities));
+    EXPECT_EQ(GraphPairs(s.Contiguities), GraphPairs(r.Contiguities));
     ASSERT_EQ(s.Tiles.Vertices.size(), r.Tiles.Vertices.size());
     for (std::size_t k = 0; k < r.Tiles.Vertices.size(); ++k)
     {
@@ -732,7 +709,7 @@ TEST(ThiessenSweep, LargerSetsAreaAndSymmetry)
 
 TEST(ThiessenSweep, EnginesAgree)
 {
-  expect_engines_agree(uniform_points(5000, 21), Window::Rectangle(0, 1, 0, 1));
+  expect_engines_agree(tessera_test::UniformPoints(5000, 21), Window::Rectangle(0, 1, 0, 1));
   expect_engines_agree(gaussian_clusters(5000, 22), Window::Rectangle(0, 1, 0, 1));
   expect_engines_agree(square_lattice(40), Window::Rectangle(-0.3, 39.6, -0.45, 39.7));
   expect_engines_agree(

@@ -20,33 +20,14 @@
 #include <vector>
 
 using namespace tessera;
+using tessera_test::GraphPairs;
+using tessera_test::Hexagon;
+using tessera_test::PairKinds;
+using tessera_test::ShoelaceArea;
+using tessera_test::UniformPoints;
 
 namespace
 {
-
-std::vector<Point2> UniformPoints(std::size_t n, unsigned seed, double lo, double hi)
-{
-  std::mt19937_64 rng(seed);
-  std::uniform_real_distribution<double> u(lo, hi);
-  std::vector<Point2> points(n);
-  for (Point2& p : points)
-  {
-    p = { u(rng), u(rng) };
-  }
-  return points;
-}
-
-Window Hexagon()
-{
-  std::vector<HalfPlane> constraints;
-  for (int k = 0; k < 6; ++k)
-  {
-    const double angle = 1.0471975511965976 * k + 0.2;
-    const double a = std::cos(angle), b = std::sin(angle);
-    constraints.push_back({ a, b, -(0.8 + 0.5 * a + 0.5 * b) });
-  }
-  return Window(constraints);
-}
 
 double NeumaierSum(const std::vector<double>& values)
 {
@@ -95,19 +76,6 @@ std::vector<Point2> BruteForceTile(const Window& window,
     polygon = clipped;
   }
   return polygon;
-}
-
-double ShoelaceArea(const std::vector<Point2>& polygon)
-{
-  double sum = 0.0;
-  for (std::size_t k = 0; k < polygon.size(); ++k)
-  {
-    const Point2& a = polygon[k];
-    const Point2& b = polygon[(k + 1) % polygon.size()];
-    sum +=
-      (a.x - polygon[0].x) * (b.y - polygon[0].y) - (a.y - polygon[0].y) * (b.x - polygon[0].x);
-  }
-  return 0.5 * sum;
 }
 
 bool Near(const Point2& a, const Point2& b, double tolerance)
@@ -330,18 +298,6 @@ TEST(Tiles, EdgesOutsideTheWindowAreNotContiguities)
 
 namespace
 {
-
-using PairKinds = std::map<std::pair<std::int32_t, std::int32_t>, int>;
-
-PairKinds GraphPairs(const ContiguityGraph& graph)
-{
-  PairKinds pairs;
-  for (std::size_t k = 0; k < graph.Kinds.size(); ++k)
-  {
-    pairs[{ graph.Pairs[2 * k], graph.Pairs[2 * k + 1] }] = graph.Kinds[k];
-  }
-  return pairs;
-}
 
 // For each pair of accepted points, the Voronoi edge on the bisector m + t d is cut by every
 // other point's half-plane and the window's: each is alpha + beta t < 0 (open, for kind 0) or
