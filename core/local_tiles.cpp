@@ -1,0 +1,395 @@
+// Local derivation (tiles.h: ComputeTilesOf, ComputeFaceMatesOf): the tiles and face mates of
+// chosen points only, labelling just the faces around them, bit for bit as TessellationDual.
+#include "tiles.h"
+
+#include "polygon_area.h"
+#include "predicates_inline.h"
+#include "tile_edges.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace tessera
+{
+
+namespace
+{
+
+using namespace tiles_detail;
+
+// Faces around chosen points, labelled on demand with the full derivation's rules: a face is the
+// cluster of exactly co-circular triangles (connected, since the points on an empty circle are
+// triangulated by triangles on that circle), labelled by its smallest triangle index, with its
+// centre from its three smallest point ids (one triangle: its sorted ids) through the same
+// Circumcentre, so the bits match TessellationDual's.
+class LocalFaces
+{
+public:
+  LocalFaces(const Tess& tess, std::size_t expectedTriangles)
+    : T(tess)
+  {
+    std::size_t capacity = 64;
+    while (capacity < 2 * expectedTriangles)
+    {
+      capacity *= 2;
+    }
+    this->Keys.assign(capacity, -1);
+    this->Values.assign(capacity, -1);
+  }
+
+  std::int32_t Label(std::int32_t t) const
+  {
+    const std::int32_t entry = this->Find(t);
+    return entry < 0 ? -2 - t : this->Entries[entry].Label;
+  }
+
+  FaceView View(std::int32_t label) const
+  {
+    if (label < 0)
+    {
+      return FaceView();
+    }
+    const Entry& entry = this->Entries[this->Find(label)];
+    return { label, entry.Centre, entry.Inside };
+  }
+
+  /// The points of triangle t's face (none for a ghost); t must be resolved.
+  void FacePoints(std::int32_t t, const std::int32_t*& begin, const std::int32_t*& end) const
+  {
+    const std::int32_t index = this->Find(t);
+    if (index < 0)
+    {
+      begin = end = nullptr;
+      return;
+    }
+    const Entry& entry = this->Entries[index];
+    begin = this->Points.data() + entry.PointStart;
+    end = begin + entry.PointCount;
+  }
+
+  // Ghost: a vertex is Tess::Ghost (inline here: this runs for every ring triangle).
+  bool Ghost(std::int32_t t) const
+  {
+    const std::int32_t* v = this->T.Origin().data() + 3 * t;
+    return v[0] < 0 || v[1] < 0 || v[2] < 0;
+  }
+
+  void Resolve(std::int32_t t)
+  {
+    if (this->Ghost(t) || this->Find(t) >= 0)
+    {
+      return; // ghosts stay unlisted: Label gives -2 - t
+    }
+    const auto& org = this->T.Origin();
+    const auto& twin = this->T.Twin();
+    const std::vector<Point2>& pts = this->T.Points();
+    // Flood the triangles on t's circle; members are marked with a placeholder entry.
+    constexpr std::int32_t Pending = -2;
+    this->Cluster.assign(1, t);
+    this->Insert(t, Pending);
+    for (std::size_t k = 0; k < this->Cluster.size(); ++k)
+    {
+      const std::int32_t s = this->Cluster[k];
+      for (std::int32_t side = 0; side < 3; ++side)
+      {
+        const std::int32_t f = twin[3 * s + side];
+        const std::int32_t u = f / 3;
+        if (!this->Ghost(u) && this->Find(u) == -1 &&
+          incircle_fast(
+            pts[org[3 * t]], pts[org[3 * t + 1]], pts[org[3 * t + 2]], pts[org[Tess::Prev(f)]]) ==
+            0)
+        {
+          this->Insert(u, Pending);
+          this->Cluster.push_back(u);
+        }
+      }
+    }
+    Entry entry;
+    entry.Label = *std::min_element(this->Cluster.begin(), this->Cluster.end());
+    entry.PointStart = std::int32_t(this->Points.size());
+    if (this->Cluster.size() == 1)
+    {
+      std::int32_t a = org[3 * t], b = org[3 * t + 1], c = org[3 * t + 2];
+      if (b < a)
+      {
+        std::swap(a, b);
+      }
+      if (c < b)
+      {
+        std::swap(b, c);
+      }
+      if (b < a)
+      {
+        std::swap(a, b);
+      }
+      this->Points.insert(this->Points.end(), { a, b, c });
+    }
+    else
+    {
+      for (const std::int32_t s : this->Cluster)
+      {
+        this->Points.insert(this->Points.end(), { org[3 * s], org[3 * s + 1], org[3 * s + 2] });
+      }
+      std::sort(this->Points.begin() + entry.PointStart, this->Points.end());
+      this->Points.erase(std::unique(this->Points.begin() + entry.PointStart, this->Points.end()),
+        this->Points.end());
+    }
+    entry.PointCount = std::int32_t(this->Points.size()) - entry.PointStart;
+    const std::int32_t* ids = this->Points.data() + entry.PointStart;
+    double error = 0.0;
+    entry.Centre = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], error);
+    entry.Inside = CentreInside(this->T, entry.Label, entry.Centre, error);
+    const std::int32_t index = std::int32_t(this->Entries.size());
+    this->Entries.push_back(entry);
+    for (const std::int32_t s : this->Cluster)
+    {
+      this->Values[this->Slot(s)] = index;
+    }
+  }
+
+private:
+  struct Entry
+  {
+    std::int32_t Label = -1;
+    Point2 Centre;
+    bool Inside = false;
+    std::int32_t PointStart = 0;
+    std::int32_t PointCount = 0;
+  };
+
+  std::size_t Slot(std::int32_t t) const
+  {
+    const std::size_t mask = this->Keys.size() - 1;
+    std::size_t slot = (std::uint32_t(t) * 2654435761U) & mask;
+    while (this->Keys[slot] != t && this->Keys[slot] != -1)
+    {
+      slot = (slot + 1) & mask;
+    }
+    return slot;
+  }
+  /// Entry index of t; -1 when t is not listed, -2 while its cluster is being flooded.
+  std::int32_t Find(std::int32_t t) const
+  {
+    const std::size_t slot = this->Slot(t);
+    return this->Keys[slot] == t ? this->Values[slot] : -1;
+  }
+  void Insert(std::int32_t t, std::int32_t value)
+  {
+    if (2 * (this->Used + 1) > this->Keys.size())
+    {
+      std::vector<std::int32_t> keys(2 * this->Keys.size(), -1), values(2 * this->Keys.size(), -1);
+      keys.swap(this->Keys);
+      values.swap(this->Values);
+      for (std::size_t k = 0; k < keys.size(); ++k)
+      {
+        if (keys[k] != -1)
+        {
+          const std::size_t slot = this->Slot(keys[k]);
+          this->Keys[slot] = keys[k];
+          this->Values[slot] = values[k];
+        }
+      }
+    }
+    const std::size_t slot = this->Slot(t);
+    this->Keys[slot] = t;
+    this->Values[slot] = value;
+    ++this->Used;
+  }
+
+  const Tess& T;
+  std::vector<std::int32_t> Keys, Values; // open addressing: triangle -> entry index
+  std::size_t Used = 0;
+  std::vector<Entry> Entries;
+  std::vector<std::int32_t> Points; // per entry, its face's point ids, ascending
+  std::vector<std::int32_t> Cluster;
+};
+
+// For each accepted id (first occurrence), a half-edge leaving it: one pass over the half-edge
+// arrays, stopped once every id is found. Returns (id, edge) pairs in the order of ids; ids that
+// are not vertices (rejected, duplicate, removed) never occur in the arrays and are dropped.
+// (Status() is not asked: it costs O(removed points) per call.)
+std::vector<std::pair<std::int32_t, std::int32_t>> VertexEdges(const Tess& tess,
+  const std::vector<std::int32_t>& ids)
+{
+  std::vector<std::pair<std::int32_t, std::int32_t>> found;
+  std::vector<std::int32_t> slot(tess.PointCount(), -1);
+  for (const std::int32_t id : ids)
+  {
+    if (id >= 0 && std::size_t(id) < tess.PointCount() && slot[id] < 0)
+    {
+      slot[id] = std::int32_t(found.size());
+      found.emplace_back(id, -1);
+    }
+  }
+  std::size_t missing = found.size();
+  const auto& org = tess.Origin();
+  for (std::size_t e = 0; e < org.size() && missing > 0; ++e)
+  {
+    const std::int32_t v = org[e];
+    if (v >= 0 && slot[v] >= 0 && found[slot[v]].second < 0)
+    {
+      found[slot[v]].second = std::int32_t(e);
+      --missing;
+    }
+  }
+  found.erase(std::remove_if(found.begin(),
+                found.end(),
+                [](const std::pair<std::int32_t, std::int32_t>& f) { return f.second < 0; }),
+    found.end());
+  return found;
+}
+
+void AppendMates(const Tess& tess,
+  const LocalFaces& faces,
+  std::int32_t v,
+  const std::vector<std::int32_t>& ring,
+  std::vector<std::int32_t>& scratch,
+  FaceMateLists& mates)
+{
+  scratch.clear();
+  const auto& org = tess.Origin();
+  for (const std::int32_t e : ring)
+  {
+    const std::int32_t* begin = nullptr;
+    const std::int32_t* end = nullptr;
+    faces.FacePoints(e / 3, begin, end);
+    scratch.insert(scratch.end(), begin, end);
+    if (org[Tess::Next(e)] >= 0)
+    {
+      scratch.push_back(org[Tess::Next(e)]);
+    }
+  }
+  std::sort(scratch.begin(), scratch.end());
+  scratch.erase(std::unique(scratch.begin(), scratch.end()), scratch.end());
+  mates.PointIds.push_back(v);
+  for (const std::int32_t j : scratch)
+  {
+    if (j != v)
+    {
+      mates.Ids.push_back(j);
+    }
+  }
+  mates.Offsets.push_back(std::int64_t(mates.Ids.size()));
+}
+
+// The collinear case: from the full derivation (no faces; the line is short-lived).
+TileSet CollinearTilesOf(const Tess& tess,
+  const std::vector<std::int32_t>& ids,
+  FaceMateLists* mates)
+{
+  const TileSet all = TessellationDual(tess).Tiles();
+  std::vector<std::int32_t> index(tess.PointCount(), -1);
+  for (std::size_t k = 0; k < all.PointIds.size(); ++k)
+  {
+    index[all.PointIds[k]] = std::int32_t(k);
+  }
+  const auto& line = tess.CollinearPoints();
+  std::vector<std::int32_t> position(tess.PointCount(), -1);
+  for (std::size_t k = 0; k < line.size(); ++k)
+  {
+    position[line[k]] = std::int32_t(k);
+  }
+  TileSet tiles;
+  tiles.Offsets.push_back(0);
+  for (const std::int32_t id : ids)
+  {
+    if (id < 0 || std::size_t(id) >= index.size() || index[id] < 0)
+    {
+      continue;
+    }
+    const std::size_t k = std::size_t(index[id]);
+    index[id] = -1; // repeats are skipped
+    tiles.PointIds.push_back(id);
+    tiles.Vertices.insert(tiles.Vertices.end(),
+      all.Vertices.begin() + all.Offsets[k],
+      all.Vertices.begin() + all.Offsets[k + 1]);
+    tiles.Offsets.push_back(std::int64_t(tiles.Vertices.size()));
+    tiles.Areas.push_back(all.Areas[k]);
+    tiles.NeighborCounts.push_back(all.NeighborCounts[k]);
+    if (mates)
+    {
+      mates->PointIds.push_back(id);
+      const std::int32_t p = position[id];
+      std::int32_t pair[2] = { p > 0 ? line[p - 1] : -1,
+        p + 1 < std::int32_t(line.size()) ? line[p + 1] : -1 };
+      std::sort(pair, pair + 2);
+      for (const std::int32_t j : pair)
+      {
+        if (j >= 0)
+        {
+          mates->Ids.push_back(j);
+        }
+      }
+      mates->Offsets.push_back(std::int64_t(mates->Ids.size()));
+    }
+  }
+  return tiles;
+}
+
+TileSet LocalTiles(const Tess& tess,
+  const std::vector<std::int32_t>& ids,
+  bool wantTiles,
+  FaceMateLists* mates)
+{
+  if (mates)
+  {
+    *mates = FaceMateLists();
+    mates->Offsets.push_back(0);
+  }
+  if (!tess.IsTwoDimensional())
+  {
+    return CollinearTilesOf(tess, ids, mates);
+  }
+  TileSet tiles;
+  tiles.Offsets.push_back(0);
+  const std::vector<std::pair<std::int32_t, std::int32_t>> starts = VertexEdges(tess, ids);
+  LocalFaces faces(tess, 8 * starts.size());
+  std::vector<TileEdge> edges;
+  std::vector<Point2> polygon;
+  std::vector<std::int32_t> ring, scratch;
+  for (const auto& [v, start] : starts)
+  {
+    // Label the faces of the ring first (RingTileEdges reads them).
+    std::int32_t e = start;
+    do
+    {
+      faces.Resolve(e / 3);
+      e = tess.RingNext(e);
+    } while (e != start);
+    RingTileEdges(tess, faces, v, start, edges, ring);
+    if (mates)
+    {
+      AppendMates(tess, faces, v, ring, scratch, *mates);
+    }
+    if (!wantTiles)
+    {
+      continue;
+    }
+    const std::int32_t sides = AssemblePolygon(tess, edges, polygon);
+    tiles.PointIds.push_back(v);
+    tiles.Vertices.insert(tiles.Vertices.end(), polygon.begin(), polygon.end());
+    tiles.Offsets.push_back(std::int64_t(tiles.Vertices.size()));
+    tiles.Areas.push_back(CompensatedPolygonArea(polygon.data(), polygon.size()));
+    tiles.NeighborCounts.push_back(sides);
+  }
+  return tiles;
+}
+
+} // namespace
+
+TileSet ComputeTilesOf(const DirichletTessellation& tessellation,
+  const std::vector<std::int32_t>& ids,
+  FaceMateLists* mates)
+{
+  return LocalTiles(tessellation, ids, true, mates);
+}
+
+FaceMateLists ComputeFaceMatesOf(const DirichletTessellation& tessellation,
+  const std::vector<std::int32_t>& ids)
+{
+  FaceMateLists mates;
+  LocalTiles(tessellation, ids, false, &mates);
+  return mates;
+}
+
+} // namespace tessera

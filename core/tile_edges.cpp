@@ -1,0 +1,328 @@
+#include "tile_edges.h"
+
+#include "window_predicates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tessera
+{
+namespace tiles_detail
+{
+
+// The bound is first order in the roundings of the differences, squares, products and quotient,
+// times a safety factor of 4: the exact circle comparison only uses it to skip pairs of triangles
+// whose centres are certainly different.
+Point2 Circumcentre(const Point2& a, const Point2& b, const Point2& c, double& error)
+{
+  const double bx = b.x - a.x, by = b.y - a.y;
+  const double cx = c.x - a.x, cy = c.y - a.y;
+  const double b2 = bx * bx + by * by;
+  const double c2 = cx * cx + cy * cy;
+  const double d = 2.0 * (bx * cy - by * cx);
+  const double ux = (cy * b2 - by * c2) / d, uy = (bx * c2 - cx * b2) / d;
+  const double condition = 2.0 * (std::fabs(bx * cy) + std::fabs(by * cx)) / std::fabs(d);
+  const double spread = 2.0 *
+    (std::fabs(cy) * b2 + std::fabs(by) * c2 + std::fabs(bx) * c2 + std::fabs(cx) * b2) /
+    std::fabs(d);
+  constexpr double unit = 0x1p-53;
+  error = 4.0 * 16.0 * unit *
+    (spread + (std::fabs(ux) + std::fabs(uy)) * (condition + 1.0) + std::fabs(a.x) +
+      std::fabs(a.y));
+  if (!std::isfinite(error))
+  {
+    error = std::numeric_limits<double>::infinity();
+  }
+  return { a.x + ux, a.y + uy };
+}
+
+namespace
+{
+// The exact side of face's centre: any three of its points span its circle.
+int FaceSide(const Tess& tess, std::int32_t face, const HalfPlane& h)
+{
+  const auto& org = tess.Origin();
+  const std::vector<Point2>& pts = tess.Points();
+  return CircumcentreSide(h, pts[org[3 * face]], pts[org[3 * face + 1]], pts[org[3 * face + 2]]);
+}
+} // namespace
+
+// Whether the centre of the face with representative triangle `face` lies
+// strictly inside the window, exactly: the rounded centre c and its error bound
+// settle almost every face, CircumcentreSide the rest.
+bool CentreInside(const Tess& tess, std::int32_t face, const Point2& c, double error)
+{
+  constexpr double unit = 0x1p-53;
+  for (const HalfPlane& h : tess.GetWindow().EffectiveConstraints())
+  {
+    const double ax = h.a * c.x, by = h.b * c.y;
+    const double value = (ax + by) + h.c;
+    // The centre's coordinates are within `error` of the true ones; the evaluation adds at most
+    // 3 roundings. NaN or infinity fails both tests and goes to the exact predicate.
+    const double bound = (std::fabs(h.a) + std::fabs(h.b)) * error +
+      4.0 * unit * ((std::fabs(ax) + std::fabs(by)) + std::fabs(h.c));
+    if (value < -bound)
+    {
+      continue;
+    }
+    if (value > bound || FaceSide(tess, face, h) >= 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+namespace
+{
+
+bool ClipCanonical(const Tess& tess,
+  std::int32_t a,
+  std::int32_t b,
+  const FaceView& lo,
+  const FaceView& hi,
+  TileEdge& out);
+} // namespace
+
+bool ClipEdge(const Tess& tess,
+  std::int32_t from,
+  std::int32_t to,
+  const FaceView& right,
+  const FaceView& left,
+  TileEdge& out)
+{
+  if (from < to)
+  {
+    return ClipCanonical(tess, from, to, right, left, out);
+  }
+  TileEdge reversed;
+  if (!ClipCanonical(tess, to, from, left, right, reversed))
+  {
+    return false;
+  }
+  out.Lo = reversed.Hi;
+  out.Hi = reversed.Lo;
+  return true;
+}
+
+namespace
+{
+
+// The part inside the window of the tile edge of a (lower id) with b: the
+// bisector, parametrised as m + t * d with m the midpoint and d = (b - a)
+// turned anticlockwise, from the centre of loFace (right of a->b; -1 for a
+// ghost: t = -infinity) to the centre of hiFace (left of a->b), t_lo < t_hi.
+//
+// Every decision is exact (window_predicates.h): the window meets the bisector
+// in the open interval (L, U), L the last crossing of a line entered along d,
+// U the first crossing of a line left; the edge is kept iff
+// max(t_lo, L) < min(t_hi, U), i.e. the open Voronoi edge meets the open
+// window in a segment of positive length. A centre is compared with a crossing
+// through the sign of the line at the centre: the centre lies on the bisector,
+// so h(centre) = h(m) + t_centre h(d) = (t_centre - t_line) h(d).
+// Only the coordinates (centre bits, crossings m + t d) are rounded.
+//
+// Ends exactly on the window boundary: an end at a face centre on a line
+// keeps the centre's bits (every tile meeting there shares them) but carries
+// the line, so the polygon follows the window from there. Where the end is a
+// window corner (two lines cross the bisector at the same point) it takes the
+// corner's bits; leaving, it is labelled with the earlier of the two lines and
+// entering with the later, so the walk along the boundary from an exit to the
+// next entry never goes round the window the wrong way (it only repeats the
+// corner, which AssemblePolygon drops).
+bool ClipCanonical(const Tess& tess,
+  std::int32_t a,
+  std::int32_t b,
+  const FaceView& lo,
+  const FaceView& hi,
+  TileEdge& out)
+{
+  const std::int32_t loFace = lo.Face, hiFace = hi.Face;
+  const bool loInside = loFace >= 0 && lo.Inside;
+  const bool hiInside = hiFace >= 0 && hi.Inside;
+  if (loInside && hiInside)
+  {
+    out.Lo = { lo.Centre, -1, loFace };
+    out.Hi = { hi.Centre, -1, hiFace };
+    return true;
+  }
+  const Point2& pa = tess.Points()[a];
+  const Point2& pb = tess.Points()[b];
+  const auto& constraints = tess.GetWindow().EffectiveConstraints();
+  const int count = int(constraints.size());
+  int lower = -1, upper = -1;                    // constraints giving L and U
+  bool lowerCorner = false, upperCorner = false; // L (U) is also reached by an adjacent line
+  for (int k = 0; k < count; ++k)
+  {
+    const HalfPlane& h = constraints[k];
+    const int direction = BisectorDirectionSign(h, pa, pb);
+    if (direction == 0)
+    {
+      if (MidpointSide(h, pa, pb) >= 0)
+      {
+        return false; // parallel, on or outside the line
+      }
+      continue;
+    }
+    int& best = direction > 0 ? upper : lower;
+    bool& corner = direction > 0 ? upperCorner : lowerCorner;
+    if (best < 0)
+    {
+      best = k;
+      corner = false;
+      continue;
+    }
+    // Exit: the smallest crossing; entry: the largest.
+    const int order = CompareBisectorCrossings(h, constraints[best], pa, pb) * direction;
+    if (order < 0)
+    {
+      best = k;
+      corner = false;
+    }
+    else if (order == 0)
+    {
+      // A tie at a corner: keep the earlier line on exit, the later on entry.
+      const bool kAfterBest = (best + 1) % count == k;
+      const bool kBeforeBest = (k + 1) % count == best;
+      if ((direction > 0 && kBeforeBest) || (direction < 0 && kAfterBest))
+      {
+        best = k;
+      }
+      corner = corner || kAfterBest || kBeforeBest;
+    }
+  }
+  if (lower < 0 || upper < 0 ||
+    CompareBisectorCrossings(constraints[lower], constraints[upper], pa, pb) >= 0)
+  {
+    return false;
+  }
+  const HalfPlane& hl = constraints[lower];
+  const HalfPlane& hu = constraints[upper];
+  // Centre vs L: sign(t_centre - L) = -FaceSide(face, hl) (the line is entered along d);
+  // centre vs U: sign(t_centre - U) = FaceSide(face, hu).
+  int loVsL = 1, hiVsU = -1;
+  if (loFace >= 0 && !loInside)
+  {
+    if (FaceSide(tess, loFace, hu) >= 0)
+    {
+      return false; // t_lo >= U
+    }
+    loVsL = -FaceSide(tess, loFace, hl);
+  }
+  if (hiFace >= 0 && !hiInside)
+  {
+    if (FaceSide(tess, hiFace, hl) >= 0)
+    {
+      return false; // t_hi <= L
+    }
+    hiVsU = FaceSide(tess, hiFace, hu);
+  }
+  const std::vector<Point2>& corners = tess.GetWindow().Vertices();
+  // Window corner k is where constraint k-1 meets k: for a tie between k and k+1 it is k+1.
+  const auto cornerIndex = [&](int line, bool exit) { return exit ? (line + 1) % count : line; };
+  const auto cornerOf = [&](int line, bool exit)
+  {
+    return EdgeEnd{
+      corners[std::size_t(cornerIndex(line, exit))], line, -2 - cornerIndex(line, exit)
+    };
+  };
+  const double mx = 0.5 * (pa.x + pb.x), my = 0.5 * (pa.y + pb.y);
+  const double dx = -(pb.y - pa.y), dy = pb.x - pa.x;
+  const auto crossing = [&](const HalfPlane& h)
+  {
+    const double t = -(h.a * mx + h.b * my + h.c) / (h.a * dx + h.b * dy);
+    return Point2{ mx + t * dx, my + t * dy };
+  };
+  if (loFace < 0 || loVsL < 0)
+  {
+    out.Lo = lowerCorner ? cornerOf(lower, false) : EdgeEnd{ crossing(hl), lower, -1 };
+  }
+  else if (loVsL == 0)
+  {
+    out.Lo = lowerCorner ? cornerOf(lower, false) : EdgeEnd{ lo.Centre, lower, loFace };
+  }
+  else
+  {
+    out.Lo = { lo.Centre, -1, loFace };
+  }
+  if (hiFace < 0 || hiVsU > 0)
+  {
+    out.Hi = upperCorner ? cornerOf(upper, true) : EdgeEnd{ crossing(hu), upper, -1 };
+  }
+  else if (hiVsU == 0)
+  {
+    out.Hi = upperCorner ? cornerOf(upper, true) : EdgeEnd{ hi.Centre, upper, hiFace };
+  }
+  else
+  {
+    out.Hi = { hi.Centre, -1, hiFace };
+  }
+  return true;
+}
+} // namespace
+
+// Returns the number of sides (contiguities with points and window edges), decided exactly.
+std::int32_t AssemblePolygon(const Tess& tess,
+  const std::vector<TileEdge>& edges,
+  std::vector<Point2>& polygon)
+{
+  const std::vector<Point2>& corners = tess.GetWindow().Vertices();
+  const int count = int(corners.size());
+  polygon.clear();
+  if (edges.empty())
+  {
+    polygon = corners;
+    return count;
+  }
+  // Sides: one per tile edge, plus the window pieces between an exit and the next entry, counted
+  // from the exact decisions (the rounded vertices may coincide where the true ones do not).
+  std::int32_t sides = std::int32_t(edges.size());
+  for (std::size_t s = 0; s < edges.size(); ++s)
+  {
+    const TileEdge& edge = edges[s];
+    polygon.push_back(edge.Lo.P);
+    if (edge.Hi.Constraint < 0)
+    {
+      continue; // a face centre: the next edge starts there
+    }
+    polygon.push_back(edge.Hi.P);
+    const EdgeEnd& next = edges[(s + 1) % edges.size()].Lo;
+    if (next.Constraint < 0 || (next.Where == edge.Hi.Where && next.Where != -1))
+    {
+      continue; // leaves and re-enters at one point: no window side
+    }
+    // Leave on constraint a, follow the window boundary through corners a+1 ..
+    // b, re-enter on b: pieces of lines a .. b, less those of zero length (leaving
+    // at corner a+1, or entering at corner b).
+    const int exit = edge.Hi.Constraint;
+    const int entry = next.Constraint;
+    sides += (entry - exit + count) % count + 1;
+    sides -= edge.Hi.Where == -2 - (exit + 1) % count ? 1 : 0;
+    sides -= next.Where == -2 - entry ? 1 : 0;
+    for (int k = exit; k != entry;)
+    {
+      k = (k + 1) % count;
+      polygon.push_back(corners[k]);
+    }
+  }
+  // Repeated vertices (an end exactly at a corner, or distinct ends rounded to
+  // one point) are dropped.
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < polygon.size(); ++k)
+  {
+    if (kept == 0 || polygon[k] != polygon[kept - 1])
+    {
+      polygon[kept++] = polygon[k];
+    }
+  }
+  while (kept > 1 && polygon[kept - 1] == polygon[0])
+  {
+    --kept;
+  }
+  polygon.resize(kept);
+  return sides;
+}
+
+} // namespace tiles_detail
+} // namespace tessera

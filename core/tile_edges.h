@@ -1,0 +1,115 @@
+#pragma once
+// Internal to the tile derivations (tiles.cpp: the whole tessellation; local_tiles.cpp: chosen
+// points): a tile edge clipped to the window, the faces it joins, and the polygon assembled from
+// a ring of such edges. See tiles.h for the rules (exact decisions, rounded coordinates only).
+
+#include "dirichlet_tessellation.h"
+#include "geometry.h"
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace tessera
+{
+namespace tiles_detail
+{
+
+using Tess = DirichletTessellation;
+
+struct EdgeEnd
+{
+  Point2 P;
+  int Constraint; ///< window constraint the end lies on; -1 for a face centre inside
+  /// Where the end is exactly: a face (>= 0), window corner k (-2 - k), or a crossing of a
+  /// window line elsewhere (-1). Two ends with the same Where >= 0 or <= -2 coincide exactly.
+  std::int32_t Where;
+};
+
+struct TileEdge
+{
+  EdgeEnd Lo, Hi;
+};
+
+/// A face as a tile edge sees it; Face < 0 for a ghost (centre at infinity).
+struct FaceView
+{
+  std::int32_t Face = -1;
+  Point2 Centre;
+  bool Inside = false;
+};
+
+// Circumcentre from the points in a fixed (ascending id) order, relative to the first one; `error`
+// bounds the rounding error of each coordinate (infinity when the triangle is too flat to say).
+Point2 Circumcentre(const Point2& a, const Point2& b, const Point2& c, double& error);
+
+/// Whether the centre c (error bound `error`) of the face with representative triangle `face`
+/// lies strictly inside the window, decided exactly.
+bool CentreInside(const Tess& tess, std::int32_t face, const Point2& c, double error);
+
+/// The part inside the window of the tile edge of `from` with `to` (anticlockwise around from),
+/// between the centres of the faces on its right and left; false when nothing of positive length
+/// is inside.
+bool ClipEdge(const Tess& tess,
+  std::int32_t from,
+  std::int32_t to,
+  const FaceView& right,
+  const FaceView& left,
+  TileEdge& out);
+
+/// The tile polygon from its clipped edges (window corners added between an exit and the next
+/// entry). Returns the number of sides (contiguities with points and window edges), decided
+/// exactly.
+std::int32_t AssemblePolygon(const Tess& tess,
+  const std::vector<TileEdge>& edges,
+  std::vector<Point2>& polygon);
+
+// The clipped edges of v's tile, anticlockwise from the edge to its smallest
+// neighbour id (so the polygon does not depend on where the ring starts, nor on
+// the diagonals stored in degenerate faces).
+// faces.Label(t) is triangle t's face (-2 - t for a ghost), faces.View(label)
+// its centre and inside flag.
+template<class Faces>
+void RingTileEdges(const Tess& tess,
+  const Faces& faces,
+  std::int32_t v,
+  std::int32_t vertexEdge,
+  std::vector<TileEdge>& edges,
+  std::vector<std::int32_t>& ring)
+{
+  edges.clear();
+  const auto& org = tess.Origin();
+  const auto& twin = tess.Twin();
+  ring.clear();
+  std::size_t first = 0;
+  std::int32_t smallest = std::numeric_limits<std::int32_t>::max();
+  std::int32_t e = vertexEdge;
+  do
+  {
+    // Diagonals of degenerate faces (the same face on both sides) depend on the insertion order:
+    // they are never the start.
+    const std::int32_t j = org[Tess::Next(e)];
+    if (j >= 0 && j < smallest && faces.Label(e / 3) != faces.Label(twin[e] / 3))
+    {
+      smallest = j;
+      first = ring.size();
+    }
+    ring.push_back(e);
+    e = tess.RingNext(e);
+  } while (e != vertexEdge);
+  TileEdge edge;
+  for (std::size_t k = 0; k < ring.size(); ++k)
+  {
+    e = ring[(first + k) % ring.size()];
+    const std::int32_t j = org[Tess::Next(e)];
+    const std::int32_t left = faces.Label(e / 3);
+    const std::int32_t right = faces.Label(twin[e] / 3);
+    if (j >= 0 && left != right && ClipEdge(tess, v, j, faces.View(right), faces.View(left), edge))
+    {
+      edges.push_back(edge);
+    }
+  }
+}
+
+} // namespace tiles_detail
+} // namespace tessera
