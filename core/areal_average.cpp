@@ -208,7 +208,8 @@ struct ThiessenArealAverage::State
   /// Re-clips a gauge's tile if its polygon changed.
   void Refresh(std::int32_t g, const Point2* tile, std::size_t count)
   {
-    if (!SameVertices(this->CachedTile[g], tile, count))
+    // A rebuild reuses nothing from the previous step (it is the baseline that updates beat).
+    if (!this->Settings.Incremental || !SameVertices(this->CachedTile[g], tile, count))
     {
       this->CachedArea[g] = this->ClippedArea(tile, count, static_cast<std::size_t>(g));
       this->CachedTile[g].assign(tile, tile + count);
@@ -407,6 +408,10 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   s.TheWindow.reset(
     new Window(Window::Rectangle(box.XMin - pad, box.XMax + pad, box.YMin - pad, box.YMax + pad)));
   s.Tessellation.reset(new DirichletTessellation(*s.TheWindow));
+  if (settings.Incremental)
+  {
+    s.Tessellation->TrackVertexEdges(); // local tile derivation finds its rings in O(1)
+  }
   s.EngineOfGauge.assign(gaugesLonLat.size(), NotInTessellation);
   s.CachedTile.resize(gaugesLonLat.size());
   s.CachedArea.assign(gaugesLonLat.size(), 0.0);

@@ -56,7 +56,8 @@ struct ArealAverageSettings
   /// GeodesicPolygon only: spacing, in projected metres, of the points added along clipped ring
   /// edges before unprojecting.
   double GeodesicStepMetres = 1000.0;
-  /// false: rebuild the tessellation at every step (for comparison in benchmarks).
+  /// false: every step from scratch, nothing reused (rebuild the tessellation, clip every tile):
+  /// the baseline that incremental updates are compared with in benchmarks.
   bool Incremental = true;
 };
 

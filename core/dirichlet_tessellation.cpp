@@ -963,6 +963,20 @@ std::int32_t DirichletTessellation::FindVertexEdge(std::int32_t id) const
   return -1;
 }
 
+std::int32_t DirichletTessellation::EdgeLeaving(std::int32_t id) const
+{
+  if (id < 0 || std::size_t(id) >= this->Coordinates.size() || !this->IsTwoDimensional())
+  {
+    return -1;
+  }
+  if (!this->VertexEdges.empty())
+  {
+    const std::int32_t e = this->VertexEdges[id];
+    return e >= 0 && this->Origins[e] == id ? e : -1;
+  }
+  return this->Status(id) == PointStatus::Accepted ? this->FindVertexEdge(id) : -1;
+}
+
 void DirichletTessellation::Remove(std::int32_t id)
 {
   const PointStatus status = this->Status(id); // throws for an out-of-range id

@@ -104,6 +104,15 @@ public:
   /// The half-edge after e anticlockwise around Origin()[e] (one step along its ring).
   std::int32_t RingNext(std::int32_t e) const { return this->Twins[Prev(e)]; }
   bool IsGhostTriangle(std::int32_t t) const;
+
+  /// Keeps one half-edge leaving each vertex up to date from now on (4 bytes per id; Remove turns
+  /// it on by itself), so that EdgeLeaving is O(1).
+  void TrackVertexEdges() { this->EnableVertexEdges(); }
+  bool TracksVertexEdges() const { return !this->VertexEdges.empty(); }
+  /// A half-edge leaving vertex id, or -1 when id is not a vertex (rejected, duplicate, removed,
+  /// unknown, or the tessellation is not two-dimensional). O(1) when vertex edges are tracked,
+  /// otherwise a walk from the last triangle.
+  std::int32_t EdgeLeaving(std::int32_t id) const;
   bool IsFreeTriangle(std::int32_t t) const { return this->Origins[3 * t] == Free; }
 
   /// Bytes held by the structure (capacities of all arrays, coordinates included). A batch build

@@ -896,3 +896,38 @@ TEST(DirichletTessellation, StatusQueriesTrackStreamingChanges)
     CheckEmptyCircles(*t);
   }
 }
+
+TEST(DirichletTessellation, EdgeLeavingNamesAnEdgeOfEveryVertexOnly)
+{
+  std::vector<Point2> points = UniformPoints(200, 17);
+  points.push_back(points[5]);    // 200 duplicates 5
+  points.push_back({ 3.0, 0.5 }); // 201 outside
+  for (const bool tracked : { false, true })
+  {
+    Tess t(UnitWindow(), points);
+    if (tracked)
+    {
+      t.TrackVertexEdges();
+      t.Remove(7);
+      t.Insert({ 0.25, 0.75 }); // 202
+    }
+    EXPECT_EQ(t.TracksVertexEdges(), tracked);
+    for (std::int32_t id = -1; id <= std::int32_t(t.PointCount()); ++id)
+    {
+      const bool vertex =
+        id >= 0 && std::size_t(id) < t.PointCount() && t.Status(id) == PointStatus::Accepted;
+      const std::int32_t e = t.EdgeLeaving(id);
+      if (vertex)
+      {
+        ASSERT_GE(e, 0) << "vertex " << id;
+        EXPECT_EQ(t.Origin()[e], id);
+      }
+      else
+      {
+        EXPECT_EQ(e, -1) << "id " << id;
+      }
+    }
+    EXPECT_EQ(t.EdgeLeaving(200), -1); // the duplicate
+    EXPECT_EQ(t.EdgeLeaving(201), -1); // outside
+  }
+}
