@@ -230,7 +230,7 @@ struct ThiessenArealAverage::State
   }
 
   /// Every tile, from the whole tessellation (and, when updating, every gauge's face mates).
-  void DeriveAll()
+  std::size_t DeriveAll()
   {
     const TileSet tiles = TessellationDual(*this->Tessellation).Tiles();
     for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
@@ -244,6 +244,7 @@ struct ThiessenArealAverage::State
     {
       this->StoreMates(ComputeFaceMatesOf(*this->Tessellation, tiles.PointIds));
     }
+    return tiles.PointIds.size();
   }
 
   /// Only the tiles that can have changed. A tile changes only if one of its Delaunay faces
@@ -254,7 +255,7 @@ struct ThiessenArealAverage::State
   /// later removal (insertion) meets that an earlier one made have their points among the earlier
   /// one's mates, so these sets cover the whole sequence. Everything else keeps its cached tile,
   /// area and mates.
-  void DeriveChanged(const std::vector<char>& wanted,
+  std::size_t DeriveChanged(const std::vector<char>& wanted,
     const std::vector<std::int32_t>& removed,
     const std::vector<std::int32_t>& inserted)
   {
@@ -304,6 +305,7 @@ struct ThiessenArealAverage::State
         static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]));
     }
     this->StoreMates(mates);
+    return tiles.PointIds.size();
   }
 };
 
@@ -506,14 +508,8 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
     step.Mean = std::numeric_limits<double>::quiet_NaN();
     return step;
   }
-  if (local)
-  {
-    s.DeriveChanged(wanted, removed, inserted);
-  }
-  else
-  {
-    s.DeriveAll();
-  }
+  const std::size_t derived = local ? s.DeriveChanged(wanted, removed, inserted) : s.DeriveAll();
+  step.TilesDerived = static_cast<int>(derived);
   // Weights of every reporting gauge from the cached areas (current for all of them), ascending.
   double weighted = 0.0, weightSum = 0.0;
   for (std::size_t g = 0; g < n; ++g)

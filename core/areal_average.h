@@ -68,7 +68,8 @@ struct ArealStep
                             ///< when no gauge reported
   int StationsUsed = 0;     ///< gauges that reported (co-located repeats counted once)
   int StationsWeighted = 0; ///< of those, gauges whose tile reaches into the catchment
-  double CoveredFraction = 0.0;     ///< sum of weights (1 when any gauge reported)
+  double CoveredFraction = 0.0; ///< sum of weights (1 when any gauge reported)
+  int TilesDerived = 0; ///< tiles derived for this step: all after a rebuild, few after an update
   std::vector<std::int32_t> Gauges; ///< weighted gauges, ascending
   std::vector<double> Weights;      ///< per weighted gauge
   std::vector<double> AreasM2;      ///< per weighted gauge: clipped ellipsoidal area, m^2
