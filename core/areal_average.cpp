@@ -72,10 +72,9 @@ struct ThiessenArealAverage::State
   ClippedRings Scratch;
   std::vector<Point2> Dense;
 
-  // Per gauge, while it is in the tessellation: the gauges sharing a Delaunay face with it
-  // (tiles.h, FaceMateLists), valid for every gauge in the tessellation once HaveMates is set.
-  std::vector<std::vector<std::int32_t>> Mates;
-  bool HaveMates = false;
+  // Whether CachedTile holds the tile of every gauge in the tessellation (the previous step
+  // derived them): then an update needs to derive only the tiles that changed.
+  bool TilesCurrent = false;
 
   double MeasureRings(const ClippedRings& rings, std::size_t firstRing, std::size_t lastRing)
   {
@@ -167,11 +166,10 @@ struct ThiessenArealAverage::State
     }
   }
 
-  /// Removes the gauges that stopped reporting and inserts those that started (listed in removed
-  /// and inserted, in the order done).
-  void Update(const std::vector<char>& wanted,
+  /// The gauges that stopped reporting and those that started, each list in Hilbert order.
+  void ListChanges(const std::vector<char>& wanted,
     std::vector<std::int32_t>& removed,
-    std::vector<std::int32_t>& inserted)
+    std::vector<std::int32_t>& inserted) const
   {
     removed.clear();
     inserted.clear();
@@ -188,6 +186,23 @@ struct ThiessenArealAverage::State
     }
     this->SpatialSort(removed);
     this->SpatialSort(inserted);
+  }
+
+  /// The engine ids of the gauges' face mates (tiles.h), before anything changes.
+  std::vector<std::int32_t> MatesOf(const std::vector<std::int32_t>& gauges) const
+  {
+    std::vector<std::int32_t> ids;
+    ids.reserve(gauges.size());
+    for (const std::int32_t g : gauges)
+    {
+      ids.push_back(this->EngineOfGauge[g]);
+    }
+    return ComputeFaceMatesOf(*this->Tessellation, ids).Ids;
+  }
+
+  /// Removes, then inserts (Green-Sibson removal and insertion).
+  void Apply(const std::vector<std::int32_t>& removed, const std::vector<std::int32_t>& inserted)
+  {
     for (const std::int32_t g : removed)
     {
       this->Tessellation->Remove(this->EngineOfGauge[g]);
@@ -216,20 +231,7 @@ struct ThiessenArealAverage::State
     }
   }
 
-  void StoreMates(const FaceMateLists& mates)
-  {
-    for (std::size_t k = 0; k < mates.PointIds.size(); ++k)
-    {
-      std::vector<std::int32_t>& list = this->Mates[this->GaugeOfEngine[mates.PointIds[k]]];
-      list.clear();
-      for (std::int64_t i = mates.Offsets[k]; i < mates.Offsets[k + 1]; ++i)
-      {
-        list.push_back(this->GaugeOfEngine[mates.Ids[i]]);
-      }
-    }
-  }
-
-  /// Every tile, from the whole tessellation (and, when updating, every gauge's face mates).
+  /// Every tile, from the whole tessellation.
   std::size_t DeriveAll()
   {
     const TileSet tiles = TessellationDual(*this->Tessellation).Tiles();
@@ -239,24 +241,20 @@ struct ThiessenArealAverage::State
         &tiles.Vertices[tiles.Offsets[k]],
         static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]));
     }
-    this->HaveMates = this->Settings.Incremental && this->Tessellation->IsTwoDimensional();
-    if (this->HaveMates)
-    {
-      this->StoreMates(ComputeFaceMatesOf(*this->Tessellation, tiles.PointIds));
-    }
+    this->TilesCurrent = this->Settings.Incremental;
     return tiles.PointIds.size();
   }
 
   /// Only the tiles that can have changed. A tile changes only if one of its Delaunay faces
   /// changes, and a face changes only if a removed point was on it (before the removals) or an
   /// inserted point is on it (after the insertions): so the tiles to derive are those of the
-  /// inserted gauges and of the face mates of every removed gauge (as stored from the previous
-  /// step) and of every inserted gauge (now). Removals come before insertions, and the faces a
-  /// later removal (insertion) meets that an earlier one made have their points among the earlier
-  /// one's mates, so these sets cover the whole sequence. Everything else keeps its cached tile,
-  /// area and mates.
+  /// inserted gauges and of the face mates of every removed gauge (taken before the removals:
+  /// removedMates, engine ids) and of every inserted gauge (now). Removals come before
+  /// insertions, and the faces a later removal (insertion) meets that an earlier one made have
+  /// their points among the earlier one's mates, so these sets cover the whole sequence.
+  /// Everything else keeps its cached tile and area.
   std::size_t DeriveChanged(const std::vector<char>& wanted,
-    const std::vector<std::int32_t>& removed,
+    const std::vector<std::int32_t>& removedMates,
     const std::vector<std::int32_t>& inserted)
   {
     std::vector<char> marked(wanted.size(), 0);
@@ -269,13 +267,9 @@ struct ThiessenArealAverage::State
         changed.push_back(g);
       }
     };
-    for (const std::int32_t g : removed)
+    for (const std::int32_t id : removedMates)
     {
-      for (const std::int32_t m : this->Mates[g])
-      {
-        mark(m);
-      }
-      this->Mates[g].clear();
+      mark(this->GaugeOfEngine[id]); // engine ids are never reused: still this gauge's
     }
     std::vector<std::int32_t> insertedIds;
     for (const std::int32_t g : inserted)
@@ -296,15 +290,13 @@ struct ThiessenArealAverage::State
     {
       ids.push_back(this->EngineOfGauge[g]);
     }
-    FaceMateLists mates;
-    const TileSet tiles = ComputeTilesOf(*this->Tessellation, ids, &mates);
+    const TileSet tiles = ComputeTilesOf(*this->Tessellation, ids);
     for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
     {
       this->Refresh(this->GaugeOfEngine[tiles.PointIds[k]],
         &tiles.Vertices[tiles.Offsets[k]],
         static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]));
     }
-    this->StoreMates(mates);
     return tiles.PointIds.size();
   }
 };
@@ -417,7 +409,6 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   s.EngineOfGauge.assign(gaugesLonLat.size(), NotInTessellation);
   s.CachedTile.resize(gaugesLonLat.size());
   s.CachedArea.assign(gaugesLonLat.size(), 0.0);
-  s.Mates.resize(gaugesLonLat.size());
 }
 
 ThiessenArealAverage::~ThiessenArealAverage() = default;
@@ -472,19 +463,20 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
       wanted[g] = 1;
     }
   }
-  // The local derivation when updating a two-dimensional tessellation with mates from the
-  // previous step and at most a fifth of the gauges changing; otherwise every tile.
+  // The local derivation when updating a two-dimensional tessellation whose tiles the previous
+  // step derived, with at most a fifth of the gauges changing; otherwise every tile.
   bool local = false;
-  std::vector<std::int32_t> removed, inserted;
+  std::vector<std::int32_t> removed, inserted, removedMates;
   if (s.Settings.Incremental)
   {
-    std::size_t changes = 0;
-    for (std::size_t g = 0; g < n; ++g)
+    s.ListChanges(wanted, removed, inserted);
+    local = s.TilesCurrent && s.Tessellation->IsTwoDimensional() &&
+      5 * (removed.size() + inserted.size()) <= n;
+    if (local)
     {
-      changes += (wanted[g] != 0) != (s.EngineOfGauge[g] != NotInTessellation) ? 1 : 0;
+      removedMates = s.MatesOf(removed);
     }
-    local = s.HaveMates && s.Tessellation->IsTwoDimensional() && 5 * changes <= n;
-    s.Update(wanted, removed, inserted);
+    s.Apply(removed, inserted);
     local = local && s.Tessellation->IsTwoDimensional();
   }
   else
@@ -504,11 +496,12 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
   step.StationsUsed = static_cast<int>(std::count(wanted.begin(), wanted.end(), 1));
   if (step.StationsUsed == 0)
   {
-    s.HaveMates = false;
+    s.TilesCurrent = false;
     step.Mean = std::numeric_limits<double>::quiet_NaN();
     return step;
   }
-  const std::size_t derived = local ? s.DeriveChanged(wanted, removed, inserted) : s.DeriveAll();
+  const std::size_t derived =
+    local ? s.DeriveChanged(wanted, removedMates, inserted) : s.DeriveAll();
   step.TilesDerived = static_cast<int>(derived);
   // Weights of every reporting gauge from the cached areas (current for all of them), ascending.
   double weighted = 0.0, weightSum = 0.0;
