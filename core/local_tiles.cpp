@@ -347,19 +347,7 @@ bool InteriorTile(const Tess& tess,
     previous = label;
   }
   std::rotate(polygon.begin(), polygon.begin() + std::ptrdiff_t(first), polygon.end());
-  std::size_t kept = 0;
-  for (std::size_t k = 0; k < n; ++k)
-  {
-    if (kept == 0 || polygon[k] != polygon[kept - 1])
-    {
-      polygon[kept++] = polygon[k];
-    }
-  }
-  while (kept > 1 && polygon[kept - 1] == polygon[0])
-  {
-    --kept;
-  }
-  polygon.resize(kept);
+  DropRepeatedVertices(polygon);
   return true;
 }
 

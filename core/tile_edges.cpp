@@ -308,6 +308,12 @@ std::int32_t AssemblePolygon(const Tess& tess,
   }
   // Repeated vertices (an end exactly at a corner, or distinct ends rounded to
   // one point) are dropped.
+  DropRepeatedVertices(polygon);
+  return sides;
+}
+
+void DropRepeatedVertices(std::vector<Point2>& polygon)
+{
   std::size_t kept = 0;
   for (std::size_t k = 0; k < polygon.size(); ++k)
   {
@@ -321,7 +327,6 @@ std::int32_t AssemblePolygon(const Tess& tess,
     --kept;
   }
   polygon.resize(kept);
-  return sides;
 }
 
 } // namespace tiles_detail

@@ -64,6 +64,9 @@ std::int32_t AssemblePolygon(const Tess& tess,
   const std::vector<TileEdge>& edges,
   std::vector<Point2>& polygon);
 
+/// Drops consecutive repeats of a vertex (cyclically): rounded ends that coincide.
+void DropRepeatedVertices(std::vector<Point2>& polygon);
+
 // The clipped edges of v's tile, anticlockwise from the edge to its smallest
 // neighbour id (so the polygon does not depend on where the ring starts, nor on
 // the diagonals stored in degenerate faces).
