@@ -91,10 +91,14 @@ public:
       {
         const std::int32_t f = twin[3 * s + side];
         const std::int32_t u = f / 3;
-        if (!this->Ghost(u) && this->Find(u) == -1 &&
-          incircle_fast(
-            pts[org[3 * t]], pts[org[3 * t + 1]], pts[org[3 * t + 2]], pts[org[Tess::Prev(f)]]) ==
-            0)
+        if (this->Find(u) != -1)
+        {
+          continue; // listed already: no need to touch its (likely uncached) vertices
+        }
+        // u shares the edge of f with s, so it is a ghost iff its third vertex is the ghost.
+        const std::int32_t d = org[Tess::Prev(f)];
+        if (d >= 0 &&
+          incircle_fast(pts[org[3 * t]], pts[org[3 * t + 1]], pts[org[3 * t + 2]], pts[d]) == 0)
         {
           this->Insert(u, Pending);
           this->Cluster.push_back(u);
