@@ -4,6 +4,9 @@
 // Delaunay_triangulation_2 (Exact_predicates_inexact_constructions_kernel, range insert) runs in
 // the same program on the same points, as the peer.
 //
+// The stages are also timed separately (FacesAfterBuild, DualOnly, TilesOnly,
+// ContiguitiesOnly), and BuildAndTiles times the build plus the tiles with areas.
+//
 // Columns: ns/pt = wall time per input point; B/pt = bytes held by the structure per point
 // (coordinates included); each benchmark's counters are printed in Google Benchmark's table.
 
@@ -115,6 +118,71 @@ void TesseraTilesAndAreas(benchmark::State& state)
   SetPerPoint(state, points.size());
 }
 
+// The stages separately, on a tessellation built once: ComputeDelaunayFaces after the build, the
+// TessellationDual constructor, and Tiles() / Contiguities() on a dual built once.
+void TesseraFacesAfterBuild(benchmark::State& state)
+{
+  const std::vector<Point2>& points = Input(state.range(0));
+  const tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+  for (auto _ : state)
+  {
+    const tessera::DelaunayFaces faces = tessera::ComputeDelaunayFaces(t, false);
+    benchmark::DoNotOptimize(faces.PointIds.data());
+  }
+  SetPerPoint(state, points.size());
+}
+
+void TesseraDualOnly(benchmark::State& state)
+{
+  const std::vector<Point2>& points = Input(state.range(0));
+  const tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+  for (auto _ : state)
+  {
+    const tessera::TessellationDual dual(t);
+    benchmark::DoNotOptimize(dual.DegenerateFaceCount());
+  }
+  SetPerPoint(state, points.size());
+}
+
+void TesseraTilesOnly(benchmark::State& state)
+{
+  const std::vector<Point2>& points = Input(state.range(0));
+  const tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+  const tessera::TessellationDual dual(t);
+  for (auto _ : state)
+  {
+    const tessera::TileSet tiles = dual.Tiles();
+    benchmark::DoNotOptimize(tiles.Areas.data());
+  }
+  SetPerPoint(state, points.size());
+}
+
+void TesseraContiguitiesOnly(benchmark::State& state)
+{
+  const std::vector<Point2>& points = Input(state.range(0));
+  const tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+  const tessera::TessellationDual dual(t);
+  for (auto _ : state)
+  {
+    const tessera::ContiguityGraph graph = dual.Contiguities();
+    benchmark::DoNotOptimize(graph.Pairs.data());
+  }
+  SetPerPoint(state, points.size());
+}
+
+// Issue 3's target (b): the build, the dual and the tiles with areas, from the points.
+void TesseraBuildAndTiles(benchmark::State& state)
+{
+  const std::vector<Point2>& points = Input(state.range(0));
+  for (auto _ : state)
+  {
+    const tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+    const tessera::TileSet tiles = tessera::ComputeTiles(t);
+    benchmark::DoNotOptimize(tiles.Areas.data());
+  }
+  SetPerPoint(state, points.size());
+}
+
 #ifdef TESSERA_HAVE_CGAL
 void CgalDelaunay(benchmark::State& state)
 {
@@ -155,6 +223,12 @@ BENCHMARK(TesseraDelaunayFaces)->Apply(Sizes);
 BENCHMARK(TesseraDelaunayFaces)->Apply(Large);
 BENCHMARK(TesseraTilesAndAreas)->Apply(Sizes);
 BENCHMARK(TesseraTilesAndAreas)->Apply(Large);
+BENCHMARK(TesseraFacesAfterBuild)->Apply(Sizes);
+BENCHMARK(TesseraDualOnly)->Apply(Sizes);
+BENCHMARK(TesseraTilesOnly)->Apply(Sizes);
+BENCHMARK(TesseraContiguitiesOnly)->Apply(Sizes);
+BENCHMARK(TesseraBuildAndTiles)->Apply(Sizes);
+BENCHMARK(TesseraBuildAndTiles)->Apply(Large);
 #ifdef TESSERA_HAVE_CGAL
 BENCHMARK(CgalDelaunay)->Apply(Sizes);
 BENCHMARK(CgalDelaunay)->Apply(Large);

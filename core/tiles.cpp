@@ -6,7 +6,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <exception>
 #include <limits>
+#include <system_error>
+#include <thread>
 #include <utility>
 
 namespace tessera
@@ -16,6 +20,82 @@ namespace
 {
 
 using namespace tiles_detail;
+
+/// Threads for a pass over `work` items: up to the hardware's (at most 8), with at least 25000
+/// items each (below that, starting a thread costs more than it saves: small inputs run serially).
+std::size_t ThreadCount(std::int64_t work)
+{
+  constexpr std::int64_t minimumPerThread = 25000;
+  const std::size_t hardware = std::max(1U, std::thread::hardware_concurrency());
+  const std::size_t useful = std::size_t(std::max<std::int64_t>(1, work / minimumPerThread));
+  return std::min({ hardware, useful, std::size_t(8) });
+}
+
+/// An index for a prefetch: ghost and free ids (negative) replaced by 0, to stay in bounds.
+inline std::int32_t NonNegative(std::int32_t id)
+{
+  return std::max(id, std::int32_t(0));
+}
+
+/// The chunks + 1 boundaries of `chunks` contiguous, nearly equal parts of [0, n).
+std::vector<std::int32_t> ChunkBounds(std::int32_t n, std::size_t chunks)
+{
+  std::vector<std::int32_t> bounds(chunks + 1);
+  for (std::size_t k = 0; k <= chunks; ++k)
+  {
+    bounds[k] = std::int32_t(std::int64_t(n) * std::int64_t(k) / std::int64_t(chunks));
+  }
+  return bounds;
+}
+
+/// Runs task(0 .. chunks-1), chunk 0 on the calling thread, the others on their own threads;
+/// rethrows the first exception a task threw once all have finished.
+template<class Task>
+void RunChunks(std::size_t chunks, const Task& task)
+{
+  if (chunks <= 1)
+  {
+    task(0);
+    return;
+  }
+  std::vector<std::exception_ptr> errors(chunks);
+  const auto guarded = [&](std::size_t k)
+  {
+    try
+    {
+      task(k);
+    }
+    catch (...)
+    {
+      errors[k] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> threads;
+  threads.reserve(chunks - 1);
+  for (std::size_t k = 1; k < chunks; ++k)
+  {
+    try
+    {
+      threads.emplace_back(guarded, k);
+    }
+    catch (const std::system_error&)
+    {
+      guarded(k); // no thread to be had: run it here
+    }
+  }
+  guarded(0);
+  for (std::thread& thread : threads)
+  {
+    thread.join();
+  }
+  for (const std::exception_ptr& error : errors)
+  {
+    if (error)
+    {
+      std::rethrow_exception(error);
+    }
+  }
+}
 
 /// A triangle a, b, c (anticlockwise) as a face starting at its smallest id.
 void AppendTriangleFace(DelaunayFaces& faces, std::int32_t a, std::int32_t b, std::int32_t c)
@@ -67,8 +147,9 @@ TessellationDual::TessellationDual(const DirichletTessellation& tessellation)
       this->OrderEdge.push_back(std::int32_t(e));
     }
   }
-  this->ComputeTriangleCentres();
-  this->LabelFaces();
+  std::vector<std::uint8_t> candidate;
+  this->ComputeTriangleCentres(candidate);
+  this->LabelFaces(candidate);
   this->ComputeCentres();
 }
 
@@ -76,22 +157,44 @@ TessellationDual::TessellationDual(const DirichletTessellation& tessellation)
 // Faces: ghosts get Face = -2 - t (never merged), real triangles the id of
 // the first triangle of their co-circular cluster.
 
-// Every real triangle's centre (canonical: from its ids in ascending order) and
-// error bound.
-void TessellationDual::ComputeTriangleCentres()
+// Every real triangle's centre (canonical: from its ids in ascending order), error bound and
+// inside-the-window flag (right for every face that is a single triangle; ComputeCentres redoes
+// the degenerate ones), and whether a real neighbour with a larger index might be co-circular
+// with it (Candidate). Chunks of triangles in parallel, each writing its own entries.
+void TessellationDual::ComputeTriangleCentres(std::vector<std::uint8_t>& candidate)
 {
-  const auto& org = this->Tess.Origin();
-  const std::vector<Point2>& pts = this->Tess.Points();
-  const std::size_t triangles = org.size() / 3;
-  this->Data.resize(triangles);
-  this->CentreError.resize(triangles);
-  for (std::size_t t = 0; t < triangles; ++t)
+  const std::int32_t triangles = std::int32_t(this->Tess.Origin().size() / 3);
+  this->Data.resize(std::size_t(triangles));
+  this->CentreError.resize(std::size_t(triangles));
+  candidate.assign(std::size_t(triangles), 0);
+  const std::vector<std::int32_t> bounds = ChunkBounds(triangles, ThreadCount(triangles));
+  RunChunks(bounds.size() - 1, [&](std::size_t k) { this->CentresOf(bounds[k], bounds[k + 1]); });
+  RunChunks(bounds.size() - 1,
+    [&](std::size_t k) { this->CandidatesOf(bounds[k], bounds[k + 1], candidate.data()); });
+}
+
+void TessellationDual::CentresOf(std::int32_t begin, std::int32_t end)
+{
+  const std::int32_t* org = this->Tess.Origin().data();
+  const Point2* pts = this->Tess.Points().data();
+  constexpr std::int32_t ahead = 16;
+  const std::int32_t prefetchEnd = std::max(begin, end - ahead);
+  for (std::int32_t t = begin; t < end; ++t)
   {
+    if (t < prefetchEnd)
+    {
+      const std::int32_t* next = org + 3 * (t + ahead);
+      __builtin_prefetch(pts + NonNegative(next[0]));
+      __builtin_prefetch(pts + NonNegative(next[1]));
+      __builtin_prefetch(pts + NonNegative(next[2]));
+    }
     std::int32_t a = org[3 * t], b = org[3 * t + 1], c = org[3 * t + 2];
     if (a < 0 || b < 0 || c < 0)
     {
+      this->Data[t].Face = -2 - t; // a ghost or free triangle: its own face, never merged
       continue;
     }
+    this->Data[t].Face = t; // until LabelFaces merges it
     // Sort the three ids (a rotation and at most one swap).
     if (b < a && b < c)
     {
@@ -107,7 +210,50 @@ void TessellationDual::ComputeTriangleCentres()
     {
       std::swap(b, c);
     }
-    this->Data[t].Centre = Circumcentre(pts[a], pts[b], pts[c], this->CentreError[t]);
+    TriangleData& data = this->Data[t];
+    double& error = this->CentreError[t];
+    data.Centre = Circumcentre(pts[a], pts[b], pts[c], error);
+    data.Inside = CentreInside(this->Tess, t, data.Centre, error) ? 1 : 0;
+  }
+}
+
+void TessellationDual::CandidatesOf(std::int32_t begin,
+  std::int32_t end,
+  std::uint8_t* candidate) const
+{
+  const std::int32_t* org = this->Tess.Origin().data();
+  const std::int32_t* twin = this->Tess.Twin().data();
+  const TriangleData* data = this->Data.data();
+  const double* error = this->CentreError.data();
+  // The neighbours' centres are random loads: request them a few triangles ahead.
+  constexpr std::int32_t ahead = 12;
+  const std::int32_t prefetchEnd = std::max(begin, end - ahead);
+  for (std::int32_t t = begin; t < end; ++t)
+  {
+    if (t < prefetchEnd)
+    {
+      const std::int32_t* next = twin + 3 * (t + ahead);
+      for (std::int32_t k = 0; k < 3; ++k)
+      {
+        __builtin_prefetch(data + NonNegative(next[k]) / 3);
+        __builtin_prefetch(error + NonNegative(next[k]) / 3);
+      }
+    }
+    if ((org[3 * t] | org[3 * t + 1] | org[3 * t + 2]) < 0)
+    {
+      continue;
+    }
+    bool any = false;
+    for (std::int32_t k = 0; k < 3; ++k)
+    {
+      const std::int32_t f = twin[3 * t + k];
+      // A real neighbour (its vertex opposite the shared edge is not the ghost) further on.
+      if (f / 3 > t && org[Tess::Prev(f)] >= 0 && this->Cocircular(t, f))
+      {
+        any = true;
+      }
+    }
+    candidate[t] = any ? 1 : 0;
   }
 }
 
@@ -129,20 +275,23 @@ bool TessellationDual::Cocircular(std::int32_t t, std::int32_t f) const
            pts[org[3 * t]], pts[org[3 * t + 1]], pts[org[3 * t + 2]], pts[org[Tess::Prev(f)]]) == 0;
 }
 
-void TessellationDual::LabelFaces()
+// Ghosts (and free triangles) are their own faces, -2 - t. Real triangles in order: an
+// unlabelled one becomes a face and absorbs the unlabelled co-circular triangles around it. Only
+// a candidate (ComputeTriangleCentres) can have such a neighbour; without any candidate, every
+// real triangle is its own face, as CentresOf labelled it.
+void TessellationDual::LabelFaces(const std::vector<std::uint8_t>& candidate)
 {
-  const auto& org = this->Tess.Origin();
   const auto& twin = this->Tess.Twin();
-  const std::int32_t triangles = std::int32_t(org.size() / 3);
-  for (TriangleData& data : this->Data)
+  const std::int32_t triangles = std::int32_t(this->Data.size());
+  if (std::find(candidate.begin(), candidate.end(), std::uint8_t(1)) == candidate.end())
   {
-    data.Face = -1;
+    return;
   }
   for (std::int32_t t = 0; t < triangles; ++t)
   {
-    if (this->Tess.IsFreeTriangle(t) || this->Tess.IsGhostTriangle(t))
+    if (this->Data[t].Face >= 0)
     {
-      this->Data[t].Face = -2 - t;
+      this->Data[t].Face = -1;
     }
   }
   std::vector<std::int32_t> cluster, stack, boundary;
@@ -153,6 +302,10 @@ void TessellationDual::LabelFaces()
       continue;
     }
     this->Data[t].Face = t;
+    if (!candidate[t])
+    {
+      continue;
+    }
     for (std::int32_t k = 0; k < 3; ++k)
     {
       const std::int32_t f = twin[3 * t + k];
@@ -188,6 +341,7 @@ void TessellationDual::MergeCocircular(std::int32_t root,
       if (this->Data[u].Face == -1 && this->Cocircular(root, f))
       {
         this->Data[u].Face = root;
+        this->Data[u].Inside = 0; // not a representative
         cluster.push_back(u);
         stack.push_back(u);
       }
@@ -250,9 +404,10 @@ const std::int32_t* TessellationDual::DegeneratePolygon(std::int32_t face, std::
   return this->DegenerateVertices.data() + this->DegenerateStarts[k];
 }
 
-// Degenerate faces take their centre from their three smallest ids; every face
-// gets its inside-the-window flag, decided exactly: the rounded centre and its
-// error bound settle almost every face, CircumcentreSide the rest.
+// Degenerate faces take their centre from their three smallest ids, and their inside-the-window
+// flag from that centre (the other faces have theirs from ComputeTriangleCentres), decided
+// exactly: the rounded centre and its error bound settle almost every face, CircumcentreSide the
+// rest.
 void TessellationDual::ComputeCentres()
 {
   const std::vector<Point2>& pts = this->Tess.Points();
@@ -262,16 +417,9 @@ void TessellationDual::ComputeCentres()
     const std::int32_t* polygon = this->DegeneratePolygon(rep, size);
     std::int32_t ids[3] = { 0, 0, 0 };
     std::partial_sort_copy(polygon, polygon + size, ids, ids + 3);
-    this->Data[rep].Centre =
-      Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], this->CentreError[rep]);
-  }
-  for (std::int32_t t = 0; t < std::int32_t(this->Data.size()); ++t)
-  {
-    if (this->Data[t].Face == t)
-    {
-      this->Data[t].Inside =
-        CentreInside(this->Tess, t, this->Data[t].Centre, this->CentreError[t]) ? 1 : 0;
-    }
+    double error = 0.0;
+    this->Data[rep].Centre = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], error);
+    this->Data[rep].Inside = CentreInside(this->Tess, rep, this->Data[rep].Centre, error) ? 1 : 0;
   }
   std::vector<double>().swap(this->CentreError);
 }
@@ -330,6 +478,10 @@ void TessellationDual::TileEdgesOf(std::int32_t v,
 // ---------------------------------------------------------------------------------------------
 // Results.
 
+// Tiles and contiguities are computed for contiguous chunks of Order in parallel, each into its
+// own arrays (chunk 0 straight into the result), then concatenated in order: the result does not
+// depend on the number of threads.
+
 TileSet TessellationDual::Tiles() const
 {
   TileSet tiles;
@@ -340,13 +492,124 @@ TileSet TessellationDual::Tiles() const
   tiles.NeighborCounts.reserve(accepted);
   tiles.Vertices.reserve(6 * accepted + 16);
   tiles.Offsets.push_back(0);
+  const std::int32_t count = std::int32_t(this->Order.size());
+  const std::vector<std::int32_t> bounds = ChunkBounds(count, ThreadCount(count));
+  std::vector<TileSet> parts(bounds.size() - 2);
+  RunChunks(bounds.size() - 1,
+    [&](std::size_t k)
+    {
+      TileSet& out = k == 0 ? tiles : parts[k - 1];
+      if (k > 0)
+      {
+        const std::size_t size = std::size_t(bounds[k + 1] - bounds[k]);
+        out.PointIds.reserve(size);
+        out.Offsets.reserve(size + 1);
+        out.Areas.reserve(size);
+        out.NeighborCounts.reserve(size);
+        out.Vertices.reserve(6 * size + 16);
+        out.Offsets.push_back(0);
+      }
+      this->TilesOf(bounds[k], bounds[k + 1], out);
+    });
+  for (const TileSet& part : parts)
+  {
+    const std::int64_t base = std::int64_t(tiles.Vertices.size());
+    tiles.PointIds.insert(tiles.PointIds.end(), part.PointIds.begin(), part.PointIds.end());
+    for (std::size_t k = 1; k < part.Offsets.size(); ++k)
+    {
+      tiles.Offsets.push_back(base + part.Offsets[k]);
+    }
+    tiles.Vertices.insert(tiles.Vertices.end(), part.Vertices.begin(), part.Vertices.end());
+    tiles.Areas.insert(tiles.Areas.end(), part.Areas.begin(), part.Areas.end());
+    tiles.NeighborCounts.insert(
+      tiles.NeighborCounts.end(), part.NeighborCounts.begin(), part.NeighborCounts.end());
+  }
+  return tiles;
+}
+
+// The tiles of Order[begin .. end), appended to tiles (whose Offsets already has its first 0).
+//
+// Fast path: a point whose ring has no ghost, no degenerate face across a ring edge (distinct
+// faces on either side of every ring edge) and only faces whose centres are strictly inside the
+// window. Then every ClipEdge keeps the whole edge, from the centre of the face on its right to
+// that on its left, so AssemblePolygon would list the centres of the faces around the ring,
+// starting with the face on the right of the edge to the smallest neighbour id, drop repeats of
+// rounded points, and count one side per ring edge: that is done here directly, with the same
+// bits. Every other point takes the general path.
+void TessellationDual::TilesOf(std::int32_t begin, std::int32_t end, TileSet& tiles) const
+{
   std::vector<TileEdge> edges;
   std::vector<Point2> polygon;
   std::vector<std::int32_t> ring;
+  std::vector<std::int32_t> faces; // fast path: left face of each ring edge
   const bool planar = this->Tess.IsTwoDimensional();
-  for (std::size_t k = 0; k < this->Order.size(); ++k)
+  const std::int32_t* org = this->Tess.Origin().data();
+  const std::int32_t* twin = this->Tess.Twin().data();
+  const TriangleData* data = this->Data.data();
+  for (std::int32_t k = begin; k < end; ++k)
   {
+    if (planar && (k - begin) % RingBatch == 0)
+    {
+      this->TouchRings(k, std::min(end, k + RingBatch));
+    }
     const std::int32_t v = this->Order[k];
+    bool fast = planar;
+    std::size_t first = 0;
+    if (planar)
+    {
+      faces.clear();
+      std::int32_t smallest = std::numeric_limits<std::int32_t>::max();
+      const std::int32_t start = this->OrderEdge[k];
+      std::int32_t e = start;
+      do
+      {
+        const std::int32_t j = org[Tess::Next(e)];
+        const std::int32_t face = data[e / 3].Face;
+        if (j < 0 || face < 0 || !data[face].Inside)
+        {
+          fast = false;
+          break;
+        }
+        if (j < smallest)
+        {
+          smallest = j;
+          first = faces.size();
+        }
+        faces.push_back(face);
+        e = twin[Tess::Prev(e)]; // RingNext
+      } while (e != start);
+      for (std::size_t r = 0; fast && r < faces.size(); ++r)
+      {
+        fast = faces[r] != faces[r == 0 ? faces.size() - 1 : r - 1];
+      }
+    }
+    if (fast)
+    {
+      // Edge r's right face is edge r-1's left face.
+      const std::size_t size = faces.size();
+      polygon.resize(size);
+      std::size_t kept = 0;
+      for (std::size_t r = 0; r < size; ++r)
+      {
+        const std::size_t at = (first + size - 1 + r) % size;
+        const Point2& p = data[faces[at]].Centre;
+        if (kept == 0 || p != polygon[kept - 1])
+        {
+          polygon[kept++] = p;
+        }
+      }
+      while (kept > 1 && polygon[kept - 1] == polygon[0])
+      {
+        --kept;
+      }
+      polygon.resize(kept);
+      tiles.PointIds.push_back(v);
+      tiles.Vertices.insert(tiles.Vertices.end(), polygon.begin(), polygon.end());
+      tiles.Offsets.push_back(std::int64_t(tiles.Vertices.size()));
+      tiles.Areas.push_back(CompensatedPolygonArea(polygon.data(), polygon.size()));
+      tiles.NeighborCounts.push_back(std::int32_t(size));
+      continue;
+    }
     this->TileEdgesOf(v, planar ? this->OrderEdge[k] : -1, edges, ring);
     const std::int32_t sides = AssemblePolygon(this->Tess, edges, polygon);
     tiles.PointIds.push_back(v);
@@ -355,7 +618,44 @@ TileSet TessellationDual::Tiles() const
     tiles.Areas.push_back(CompensatedPolygonArea(polygon.data(), polygon.size()));
     tiles.NeighborCounts.push_back(sides);
   }
-  return tiles;
+}
+
+// A ring walk is a chain of dependent loads (twin, then the next triangle's twin ...), mostly
+// cache misses: walk the rings of Order[begin .. end) side by side, one step of each in turn,
+// so that their misses overlap, and bring in the triangles' faces and vertices on the way.
+void TessellationDual::TouchRings(std::int32_t begin, std::int32_t end) const
+{
+  const std::int32_t* org = this->Tess.Origin().data();
+  const std::int32_t* twin = this->Tess.Twin().data();
+  const TriangleData* data = this->Data.data();
+  std::int32_t start[RingBatch], at[RingBatch];
+  const std::int32_t count = end - begin;
+  for (std::int32_t s = 0; s < count; ++s)
+  {
+    start[s] = at[s] = this->OrderEdge[begin + s];
+  }
+  std::int32_t active = count;
+  while (active > 0)
+  {
+    active = 0;
+    for (std::int32_t s = 0; s < count; ++s)
+    {
+      const std::int32_t e = at[s];
+      if (e < 0)
+      {
+        continue;
+      }
+      // Both ends of the triangle's records (they may straddle two cache lines).
+      const std::int32_t t = e / 3;
+      __builtin_prefetch(data + t);
+      __builtin_prefetch(reinterpret_cast<const char*>(data + t + 1) - 1);
+      __builtin_prefetch(org + 3 * t);
+      __builtin_prefetch(org + 3 * t + 2);
+      const std::int32_t next = twin[Tess::Prev(e)];
+      at[s] = next == start[s] ? -1 : next;
+      ++active;
+    }
+  }
 }
 
 ContiguityGraph TessellationDual::Contiguities() const
@@ -385,15 +685,50 @@ ContiguityGraph TessellationDual::Contiguities() const
   }
   std::sort(half.begin(), half.end());
 
+  graph.Pairs.reserve(6 * this->Tess.AcceptedCount());
+  graph.Kinds.reserve(3 * this->Tess.AcceptedCount());
+  const std::int32_t count = std::int32_t(this->Order.size());
+  const std::vector<std::int32_t> bounds = ChunkBounds(count, ThreadCount(count));
+  std::vector<ContiguityGraph> parts(bounds.size() - 2);
+  RunChunks(bounds.size() - 1,
+    [&](std::size_t k)
+    {
+      ContiguityGraph& out = k == 0 ? graph : parts[k - 1];
+      if (k > 0)
+      {
+        const std::size_t size = std::size_t(bounds[k + 1] - bounds[k]);
+        out.Pairs.reserve(6 * size);
+        out.Kinds.reserve(3 * size);
+      }
+      this->ContiguitiesOf(bounds[k], bounds[k + 1], half, out);
+    });
+  for (const ContiguityGraph& part : parts)
+  {
+    graph.Pairs.insert(graph.Pairs.end(), part.Pairs.begin(), part.Pairs.end());
+    graph.Kinds.insert(graph.Kinds.end(), part.Kinds.begin(), part.Kinds.end());
+  }
+  return graph;
+}
+
+// The contiguities of Order[begin .. end) with larger ids, appended to graph. An edge between two
+// distinct real faces whose centres are both inside the window is kept whole (ClipEdge would
+// return it at once); any other edge is clipped.
+void TessellationDual::ContiguitiesOf(std::int32_t begin,
+  std::int32_t end,
+  const std::vector<std::pair<std::int32_t, std::int32_t>>& half,
+  ContiguityGraph& graph) const
+{
   const bool planar = this->Tess.IsTwoDimensional();
   const auto& org = this->Tess.Origin();
   const auto& twin = this->Tess.Twin();
   std::vector<std::pair<std::int32_t, std::uint8_t>> around;
   TileEdge edge;
-  graph.Pairs.reserve(6 * this->Tess.AcceptedCount());
-  graph.Kinds.reserve(3 * this->Tess.AcceptedCount());
-  for (std::size_t index = 0; index < this->Order.size(); ++index)
+  for (std::int32_t index = begin; index < end; ++index)
   {
+    if (planar && (index - begin) % RingBatch == 0)
+    {
+      this->TouchRings(index, std::min(end, index + RingBatch));
+    }
     const std::int32_t v = this->Order[index];
     around.clear();
     if (!planar)
@@ -415,21 +750,29 @@ ContiguityGraph TessellationDual::Contiguities() const
       do
       {
         const std::int32_t j = org[Tess::Next(e)];
-        const std::int32_t left = this->Data[e / 3].Face;
-        const std::int32_t right = this->Data[twin[e] / 3].Face;
-        if (j > v && left != right &&
-          ClipEdge(this->Tess, v, j, this->View(right), this->View(left), edge))
+        if (j > v)
         {
-          around.emplace_back(j, 0);
+          const std::int32_t left = this->Data[e / 3].Face;
+          const std::int32_t right = this->Data[twin[e] / 3].Face;
+          if (left != right &&
+            ((left >= 0 && right >= 0 && this->Data[left].Inside && this->Data[right].Inside) ||
+              ClipEdge(this->Tess, v, j, this->View(right), this->View(left), edge)))
+          {
+            around.emplace_back(j, 0);
+          }
         }
         e = this->Tess.RingNext(e);
       } while (e != start);
     }
-    for (auto at = std::lower_bound(half.begin(), half.end(), std::make_pair(v, std::int32_t(-1)));
-         at != half.end() && at->first == v;
-         ++at)
+    if (!half.empty())
     {
-      around.emplace_back(at->second, 1);
+      for (auto at =
+             std::lower_bound(half.begin(), half.end(), std::make_pair(v, std::int32_t(-1)));
+           at != half.end() && at->first == v;
+           ++at)
+      {
+        around.emplace_back(at->second, 1);
+      }
     }
     std::sort(around.begin(), around.end());
     for (const auto& [j, kind] : around)
@@ -439,7 +782,6 @@ ContiguityGraph TessellationDual::Contiguities() const
       graph.Kinds.push_back(kind);
     }
   }
-  return graph;
 }
 
 DelaunayFaces TessellationDual::Faces(bool splitDegenerate) const
@@ -496,58 +838,129 @@ ContiguityGraph ComputeContiguityGraph(const DirichletTessellation& tessellation
 
 namespace
 {
-/// Whether two adjacent real triangles are exactly co-circular somewhere (then faces must be
-/// merged and the full dual is needed). One inlined, filtered incircle per interior edge: far
-/// cheaper than the dual's centres when, as for most data, no face is degenerate.
-bool HasCocircularNeighbours(const DirichletTessellation& tessellation)
+/// Result of one chunk of the fast Delaunay-faces pass.
+struct FaceChunk
 {
-  const auto& org = tessellation.Origin();
-  const auto& twin = tessellation.Twin();
-  const std::vector<Point2>& pts = tessellation.Points();
-  for (std::int32_t e = 0; e < std::int32_t(org.size()); ++e)
+  std::size_t Faces = 0;
+  bool Cocircular = false;
+};
+
+/// Triangles [begin, end): writes each real triangle as a face starting at its smallest id to
+/// out (3 ids each, consecutive) and stops early if two adjacent real triangles are exactly
+/// co-circular (then faces must be merged and the full dual is needed). One inlined, filtered
+/// incircle per interior edge, from the triangle with the smaller index: far cheaper than the
+/// dual's centres when, as for most data, no face is degenerate.
+FaceChunk WriteTriangleFaces(const DirichletTessellation& tessellation,
+  std::int32_t begin,
+  std::int32_t end,
+  std::int32_t* out)
+{
+  const std::int32_t* org = tessellation.Origin().data();
+  const std::int32_t* twin = tessellation.Twin().data();
+  const Point2* pts = tessellation.Points().data();
+  FaceChunk chunk;
+  std::int32_t* write = out;
+  // The loads are random in space (ids are in input order): prefetch the points of triangles a
+  // few steps ahead, and the neighbours' opposite vertices a little later.
+  constexpr std::int32_t ahead = 16;
+  const std::int32_t prefetchEnd = std::max(begin, end - ahead);
+  for (std::int32_t t = begin; t < end; ++t)
   {
-    const std::int32_t f = twin[e];
-    if (f < e)
+    if (t < prefetchEnd)
     {
-      continue;
+      // Ghost and free ids are negative, a free triangle's twins -1: clamped to stay in bounds.
+      const std::int32_t* next = org + 3 * (t + ahead);
+      const std::int32_t* near = twin + 3 * (t + ahead / 2);
+      for (int k = 0; k < 3; ++k)
+      {
+        __builtin_prefetch(pts + NonNegative(next[k]));
+        const std::int32_t f = NonNegative(near[k]);
+        __builtin_prefetch(pts + NonNegative(org[DirichletTessellation::Prev(f)]));
+      }
     }
-    const std::int32_t t = e / 3, u = f / 3;
-    if (org[3 * t] == DirichletTessellation::Free || tessellation.IsGhostTriangle(t) ||
-      tessellation.IsGhostTriangle(u))
+    const std::int32_t v[3] = { org[3 * t], org[3 * t + 1], org[3 * t + 2] };
+    if ((v[0] | v[1] | v[2]) < 0)
     {
-      continue;
+      continue; // ghost or free
     }
-    const std::int32_t d = org[DirichletTessellation::Prev(f)];
-    if (incircle_fast(pts[org[3 * t]], pts[org[3 * t + 1]], pts[org[3 * t + 2]], pts[d]) == 0)
+    // Rotate to the smallest id without a data-dependent branch.
+    const int m = v[0] < v[1] && v[0] < v[2] ? 0 : (v[1] < v[2] ? 1 : 2);
+    const int m1 = m == 2 ? 0 : m + 1;
+    const int m2 = m == 0 ? 2 : m - 1;
+    write[0] = v[m];
+    write[1] = v[m1];
+    write[2] = v[m2];
+    write += 3;
+    // The opposite vertices of the neighbours with a larger half-edge index (ghosts have the
+    // vertex Ghost there), gathered without a branch, then tested.
+    std::int32_t opposite[3];
+    int count = 0;
+    for (int k = 0; k < 3; ++k)
     {
-      return true;
+      const std::int32_t e = 3 * t + k;
+      const std::int32_t f = twin[e];
+      const std::int32_t d = org[DirichletTessellation::Prev(f)];
+      opposite[count] = d;
+      count += (f > e) & (d >= 0);
+    }
+    const Point2 a = pts[v[0]], b = pts[v[1]], c = pts[v[2]];
+    for (int k = 0; k < count; ++k)
+    {
+      if (incircle_fast(a, b, c, pts[opposite[k]]) == 0)
+      {
+        chunk.Cocircular = true;
+        return chunk;
+      }
     }
   }
-  return false;
+  chunk.Faces = std::size_t(write - out) / 3;
+  return chunk;
 }
 } // namespace
 
 DelaunayFaces ComputeDelaunayFaces(const DirichletTessellation& tessellation, bool splitDegenerate)
 {
-  if (!tessellation.IsTwoDimensional() || HasCocircularNeighbours(tessellation))
+  if (!tessellation.IsTwoDimensional())
   {
     return TessellationDual(tessellation).Faces(splitDegenerate);
   }
-  // No degenerate face: the faces are the real triangles, each starting at its smallest id, in
-  // the order of the triangle arrays (as Faces() lists them).
-  const auto& org = tessellation.Origin();
+  // Optimistically, the faces are the real triangles, each starting at its smallest id, in the
+  // order of the triangle arrays (as Faces() lists them). Chunks of triangles are written in
+  // parallel to their own parts of the output, then closed up: the same result for any number
+  // of threads. A degenerate face anywhere sends the whole computation to the dual.
+  const std::int32_t triangles = std::int32_t(tessellation.Origin().size() / 3);
+  const std::vector<std::int32_t> bounds = ChunkBounds(triangles, ThreadCount(triangles));
+  const std::size_t chunks = bounds.size() - 1;
   DelaunayFaces faces;
-  faces.Offsets.reserve(2 * tessellation.AcceptedCount() + 1);
-  faces.PointIds.reserve(6 * tessellation.AcceptedCount());
-  faces.Offsets.push_back(0);
-  for (std::int32_t t = 0; t < std::int32_t(org.size() / 3); ++t)
-  {
-    const std::int32_t a = org[3 * t], b = org[3 * t + 1], c = org[3 * t + 2];
-    if (a < 0 || b < 0 || c < 0)
+  faces.PointIds.resize(3 * std::size_t(triangles));
+  std::vector<FaceChunk> results(chunks);
+  RunChunks(chunks,
+    [&](std::size_t k)
     {
-      continue; // ghost or free
+      results[k] = WriteTriangleFaces(
+        tessellation, bounds[k], bounds[k + 1], faces.PointIds.data() + 3 * bounds[k]);
+    });
+  std::size_t count = 0;
+  for (std::size_t k = 0; k < chunks; ++k)
+  {
+    if (results[k].Cocircular)
+    {
+      return TessellationDual(tessellation).Faces(splitDegenerate);
     }
-    AppendTriangleFace(faces, a, b, c);
+    if (count != std::size_t(bounds[k]) && results[k].Faces > 0)
+    {
+      std::memmove(faces.PointIds.data() + 3 * count,
+        faces.PointIds.data() + 3 * std::size_t(bounds[k]),
+        3 * results[k].Faces * sizeof(std::int32_t));
+    }
+    count += results[k].Faces;
+  }
+  faces.PointIds.resize(3 * count);
+  faces.Offsets.resize(count + 1);
+  std::int64_t* offsets = faces.Offsets.data();
+  for (std::size_t k = 0; k <= count; ++k)
+  {
+    offsets[k] = std::int64_t(3 * k);
   }
   return faces;
 }

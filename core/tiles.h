@@ -41,6 +41,7 @@
 #include "geometry.h"
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace tessera
@@ -98,9 +99,11 @@ public:
   tiles_detail::FaceView View(std::int32_t label) const;
 
 private:
-  void ComputeTriangleCentres();
+  void ComputeTriangleCentres(std::vector<std::uint8_t>& candidate);
+  void CentresOf(std::int32_t begin, std::int32_t end);
+  void CandidatesOf(std::int32_t begin, std::int32_t end, std::uint8_t* candidate) const;
   bool Cocircular(std::int32_t t, std::int32_t f) const;
-  void LabelFaces();
+  void LabelFaces(const std::vector<std::uint8_t>& candidate);
   void MergeCocircular(std::int32_t root,
     std::vector<std::int32_t>& cluster,
     std::vector<std::int32_t>& stack,
@@ -110,6 +113,15 @@ private:
     std::int32_t vertexEdge,
     std::vector<tiles_detail::TileEdge>& edges,
     std::vector<std::int32_t>& ring) const;
+  /// Tiles() and Contiguities() run chunks of Order in parallel (TilesOf, ContiguitiesOf);
+  /// TouchRings walks RingBatch rings side by side to overlap their cache misses.
+  static constexpr std::int32_t RingBatch = 32;
+  void TouchRings(std::int32_t begin, std::int32_t end) const;
+  void TilesOf(std::int32_t begin, std::int32_t end, TileSet& tiles) const;
+  void ContiguitiesOf(std::int32_t begin,
+    std::int32_t end,
+    const std::vector<std::pair<std::int32_t, std::int32_t>>& half,
+    ContiguityGraph& graph) const;
   const std::int32_t* DegeneratePolygon(std::int32_t face, std::int32_t& size) const;
   std::int32_t Neighbors1D(std::int32_t v, std::int32_t& next) const;
 

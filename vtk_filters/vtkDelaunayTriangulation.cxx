@@ -14,7 +14,9 @@
 #include "dirichlet_tessellation.h"
 #include "tiles.h"
 
+#include <algorithm>
 #include <exception>
+#include <thread>
 #include <utility>
 
 vtkStandardNewMacro(vtkDelaunayTriangulation);
@@ -64,11 +66,29 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
       output->SetPoints(input->GetPoints());
     }
     output->GetPointData()->PassData(input->GetPointData());
+    // The two id arrays are widened to vtkIdType side by side (two threads for large outputs).
     vtkNew<vtkIdTypeArray> connectivity;
     connectivity->SetNumberOfValues(static_cast<vtkIdType>(faces.PointIds.size()));
+    vtkNew<vtkIdTypeArray> offsets;
+    offsets->SetNumberOfValues(static_cast<vtkIdType>(faces.Offsets.size()));
+    const auto copyOffsets = [&faces, &offsets]()
+    { std::copy(faces.Offsets.begin(), faces.Offsets.end(), offsets->GetPointer(0)); };
+    std::thread helper;
+    if (faces.Offsets.size() > 100000 && std::thread::hardware_concurrency() > 1)
+    {
+      helper = std::thread(copyOffsets);
+    }
+    else
+    {
+      copyOffsets();
+    }
     std::copy(faces.PointIds.begin(), faces.PointIds.end(), connectivity->GetPointer(0));
+    if (helper.joinable())
+    {
+      helper.join();
+    }
     vtkNew<vtkCellArray> polys;
-    polys->SetData(tessera_vtk::MakeIdArray(faces.Offsets), connectivity);
+    polys->SetData(offsets, connectivity);
     output->SetPolys(polys);
 
     const std::vector<std::int32_t> rejected = tessellation.RejectedIds();

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <thread>
 #include <utility>
 
 vtkStandardNewMacro(vtkDirichletTessellation);
@@ -100,8 +101,23 @@ void WriteTiles(const tessera::TileSet& tiles, vtkPointSet* input, vtkPolyData* 
   offsets->SetNumberOfValues(tileCount + 1);
   vtkIdType* offsetData = offsets->GetPointer(0);
   vtkIdType written = 0;
+  // The tiles come in the core's (spatial) order and leave in point id order: the reads jump
+  // about, so the vertices of a tile a few steps ahead are requested early (and the offset that
+  // locates them earlier still).
+  constexpr vtkIdType ahead = 8;
   for (vtkIdType k = 0; k < tileCount; ++k)
   {
+    if (k + 2 * ahead < tileCount)
+    {
+      __builtin_prefetch(tiles.Offsets.data() + order[k + 2 * ahead]);
+    }
+    if (k + ahead < tileCount)
+    {
+      const tessera::Point2* upcoming = tiles.Vertices.data() + tiles.Offsets[order[k + ahead]];
+      __builtin_prefetch(upcoming);
+      __builtin_prefetch(upcoming + 4);
+      __builtin_prefetch(upcoming + 8);
+    }
     offsetData[k] = written;
     const std::int32_t tile = order[k];
     for (std::int64_t v = tiles.Offsets[tile]; v < tiles.Offsets[tile + 1]; ++v, ++written)
@@ -150,6 +166,13 @@ void WriteTiles(const tessera::TileSet& tiles, vtkPointSet* input, vtkPolyData* 
   int* countData = neighborCounts->GetPointer(0);
   for (vtkIdType k = 0; k < tileCount; ++k)
   {
+    if (k + ahead < tileCount)
+    {
+      const std::int32_t upcoming = order[k + ahead];
+      __builtin_prefetch(tiles.PointIds.data() + upcoming);
+      __builtin_prefetch(tiles.Areas.data() + upcoming);
+      __builtin_prefetch(tiles.NeighborCounts.data() + upcoming);
+    }
     const std::int32_t tile = order[k];
     if (copyPointData)
     {
@@ -164,55 +187,100 @@ void WriteTiles(const tessera::TileSet& tiles, vtkPointSet* input, vtkPolyData* 
   cellData->AddArray(neighborCounts);
 }
 
-/// Output 1: the input points with one line per contiguous pair and its Kind.
-void WriteGraph(const tessera::ContiguityGraph& graph, vtkPointSet* input, vtkPolyData* output)
+/// Output 1: the input points with one line per contiguous pair and its Kind. Made in three
+/// steps so that Fill (plain loops over the arrays, no VTK calls) can run on a thread of its own
+/// while the tiles are written: the constructor passes the input's points and point data and
+/// allocates the arrays, Fill fills them, Attach hands them to the output.
+class GraphWriter
 {
-  if (input->GetPoints())
+public:
+  GraphWriter(const tessera::ContiguityGraph& graph, vtkPointSet* input, vtkPolyData* output)
+    : Graph(graph)
+    , PairCount(static_cast<vtkIdType>(graph.Kinds.size()))
+    , Start(static_cast<std::size_t>(input->GetNumberOfPoints()) + 1, 0)
   {
-    output->SetPoints(input->GetPoints());
+    if (input->GetPoints())
+    {
+      output->SetPoints(input->GetPoints());
+    }
+    output->GetPointData()->PassData(input->GetPointData());
+    this->Offsets->SetNumberOfValues(this->PairCount + 1);
+    this->Connectivity->SetNumberOfValues(2 * this->PairCount);
+    this->Kinds->SetName("Kind");
+    this->Kinds->SetNumberOfValues(this->PairCount);
   }
-  output->GetPointData()->PassData(input->GetPointData());
-  const vtkIdType pairCount = static_cast<vtkIdType>(graph.Kinds.size());
-  // Pairs sorted by (i, j). Both cores list the pairs of one i together with j ascending, the
-  // groups in their own tile order, so a stable counting sort on i is enough (linear time).
-  std::vector<vtkIdType> start(static_cast<std::size_t>(input->GetNumberOfPoints()) + 1, 0);
-  for (vtkIdType k = 0; k < pairCount; ++k)
+
+  void Fill()
   {
-    ++start[graph.Pairs[2 * k] + 1];
+    // Pairs sorted by (i, j). Both cores list the pairs of one i together with j ascending, the
+    // groups in their own tile order, so a stable counting sort on i is enough (linear time):
+    // the pairs are read in order and each written straight to its place.
+    const std::vector<std::int32_t>& pairs = this->Graph.Pairs;
+    std::vector<vtkIdType>& start = this->Start;
+    // Point ids are random in space: the counters are requested a few pairs ahead.
+    constexpr vtkIdType ahead = 16;
+    for (vtkIdType k = 0; k < this->PairCount; ++k)
+    {
+      if (k + ahead < this->PairCount)
+      {
+        __builtin_prefetch(start.data() + pairs[2 * (k + ahead)] + 1);
+      }
+      ++start[pairs[2 * k] + 1];
+    }
+    for (std::size_t i = 1; i < start.size(); ++i)
+    {
+      start[i] += start[i - 1];
+    }
+    vtkIdType* offsetData = this->Offsets->GetPointer(0);
+    vtkIdType* ids = this->Connectivity->GetPointer(0);
+    unsigned char* kindData = this->Kinds->GetPointer(0);
+    for (vtkIdType k = 0; k < this->PairCount; ++k)
+    {
+      if (k + ahead < this->PairCount)
+      {
+        __builtin_prefetch(start.data() + pairs[2 * (k + ahead)]);
+      }
+      const std::int32_t i = pairs[2 * k];
+      const vtkIdType at = start[i]++;
+      ids[2 * at] = i;
+      ids[2 * at + 1] = pairs[2 * k + 1];
+      kindData[at] = this->Graph.Kinds[k];
+    }
+    for (vtkIdType k = 0; k <= this->PairCount; ++k)
+    {
+      offsetData[k] = 2 * k;
+    }
   }
-  for (std::size_t i = 1; i < start.size(); ++i)
+
+  void Attach(vtkPolyData* output)
   {
-    start[i] += start[i - 1];
+    vtkNew<vtkCellArray> lines;
+    lines->SetData(this->Offsets, this->Connectivity);
+    output->SetLines(lines);
+    output->GetCellData()->AddArray(this->Kinds);
   }
-  std::vector<std::int32_t> order(static_cast<std::size_t>(pairCount));
-  for (vtkIdType k = 0; k < pairCount; ++k)
+
+private:
+  const tessera::ContiguityGraph& Graph;
+  const vtkIdType PairCount;
+  std::vector<vtkIdType> Start;
+  vtkNew<vtkIdTypeArray> Offsets;
+  vtkNew<vtkIdTypeArray> Connectivity;
+  vtkNew<vtkUnsignedCharArray> Kinds;
+};
+
+/// Joins a thread (if one was started) when leaving the scope, exceptions included.
+struct JoinOnExit
+{
+  std::thread Thread;
+  ~JoinOnExit()
   {
-    order[start[graph.Pairs[2 * k]]++] = static_cast<std::int32_t>(k);
+    if (this->Thread.joinable())
+    {
+      this->Thread.join();
+    }
   }
-  vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetNumberOfValues(pairCount + 1);
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfValues(2 * pairCount);
-  vtkNew<vtkUnsignedCharArray> kinds;
-  kinds->SetName("Kind");
-  kinds->SetNumberOfValues(pairCount);
-  vtkIdType* offsetData = offsets->GetPointer(0);
-  vtkIdType* ids = connectivity->GetPointer(0);
-  unsigned char* kindData = kinds->GetPointer(0);
-  for (vtkIdType k = 0; k < pairCount; ++k)
-  {
-    const std::int32_t pair = order[k];
-    offsetData[k] = 2 * k;
-    ids[2 * k] = graph.Pairs[2 * pair];
-    ids[2 * k + 1] = graph.Pairs[2 * pair + 1];
-    kindData[k] = graph.Kinds[pair];
-  }
-  offsets->SetValue(pairCount, 2 * pairCount);
-  vtkNew<vtkCellArray> lines;
-  lines->SetData(offsets, connectivity);
-  output->SetLines(lines);
-  output->GetCellData()->AddArray(kinds);
-}
+};
 
 } // namespace
 
@@ -268,8 +336,21 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
       ? RunBrasselReif(window, std::move(points))
       : RunGreenSibson(std::move(window), std::move(points));
     this->UpdateProgress(0.8);
-    WriteTiles(result.Tiles, input, tilesOutput);
-    WriteGraph(result.Graph, input, graphOutput);
+    GraphWriter graph(result.Graph, input, graphOutput);
+    {
+      // The graph's arrays are filled beside the tiles' (two threads for large outputs).
+      JoinOnExit worker;
+      if (result.Graph.Kinds.size() > 100000 && std::thread::hardware_concurrency() > 1)
+      {
+        worker.Thread = std::thread([&graph]() { graph.Fill(); });
+      }
+      else
+      {
+        graph.Fill();
+      }
+      WriteTiles(result.Tiles, input, tilesOutput);
+    }
+    graph.Attach(graphOutput);
     tessera_vtk::AddUnusedPointIds(tilesOutput, result.Rejected, result.Duplicates);
     tessera_vtk::AddUnusedPointIds(graphOutput, result.Rejected, result.Duplicates);
     if (!result.Rejected.empty() || !result.Duplicates.empty())
