@@ -4,6 +4,7 @@
 
 #include "polygon_area.h"
 #include "predicates_inline.h"
+#include "parallel_chunks.h"
 #include "tile_edges.h"
 
 #include <algorithm>
@@ -355,29 +356,23 @@ bool InteriorTile(const Tess& tess,
   return true;
 }
 
-TileSet LocalTiles(const Tess& tess,
-  const std::vector<std::int32_t>& ids,
+// Tiles (when wanted) and mates of starts[begin, end) into tiles and mates (each with its
+// leading 0 offset).
+void LocalTilesOfRange(const Tess& tess,
+  const std::vector<std::pair<std::int32_t, std::int32_t>>& starts,
+  std::size_t begin,
+  std::size_t end,
   bool wantTiles,
+  TileSet& tiles,
   FaceMateLists* mates)
 {
-  if (mates)
-  {
-    *mates = FaceMateLists();
-    mates->Offsets.push_back(0);
-  }
-  if (!tess.IsTwoDimensional())
-  {
-    return CollinearTilesOf(tess, ids, mates);
-  }
-  TileSet tiles;
-  tiles.Offsets.push_back(0);
-  const std::vector<std::pair<std::int32_t, std::int32_t>> starts = VertexEdges(tess, ids);
   LocalFaces faces(tess);
   std::vector<TileEdge> edges;
   std::vector<Point2> polygon;
   std::vector<std::int32_t> ring, scratch;
-  for (const auto& [v, start] : starts)
+  for (std::size_t k = begin; k < end; ++k)
   {
+    const auto& [v, start] = starts[k];
     // Label the faces of the ring first (the tile edges read them).
     std::int32_t e = start;
     do
@@ -405,6 +400,80 @@ TileSet LocalTiles(const Tess& tess,
     tiles.Offsets.push_back(std::int64_t(tiles.Vertices.size()));
     tiles.Areas.push_back(CompensatedPolygonArea(polygon.data(), polygon.size()));
     tiles.NeighborCounts.push_back(sides);
+  }
+}
+
+template<class T>
+void Append(std::vector<T>& to, const std::vector<T>& from)
+{
+  to.insert(to.end(), from.begin(), from.end());
+}
+
+/// Appends offsets[1..] shifted by base (the size of what they index, before appending).
+void AppendOffsets(std::vector<std::int64_t>& to,
+  const std::vector<std::int64_t>& from,
+  std::int64_t base)
+{
+  for (std::size_t k = 1; k < from.size(); ++k)
+  {
+    to.push_back(base + from[k]);
+  }
+}
+
+TileSet LocalTiles(const Tess& tess,
+  const std::vector<std::int32_t>& ids,
+  bool wantTiles,
+  FaceMateLists* mates)
+{
+  if (mates)
+  {
+    *mates = FaceMateLists();
+    mates->Offsets.push_back(0);
+  }
+  if (!tess.IsTwoDimensional())
+  {
+    return CollinearTilesOf(tess, ids, mates);
+  }
+  TileSet tiles;
+  tiles.Offsets.push_back(0);
+  const std::vector<std::pair<std::int32_t, std::int32_t>> starts = VertexEdges(tess, ids);
+  // Chunks of the points on the cores (each labels the faces it meets on its own, with the same
+  // rules, so the joined result is the serial one). A local tile costs some 1000 times a pass
+  // item of the full derivation's, hence the small minimum per thread.
+  const std::vector<std::int32_t> bounds =
+    parallel::ChunkBounds(std::int32_t(starts.size()), parallel::ThreadCount(starts.size(), 1000));
+  const std::size_t chunks = bounds.size() - 1;
+  std::vector<TileSet> partTiles(chunks);
+  std::vector<FaceMateLists> partMates(mates ? chunks : 0);
+  parallel::RunChunks(chunks,
+    [&](std::size_t k)
+    {
+      TileSet& out = k == 0 ? tiles : partTiles[k];
+      FaceMateLists* outMates = !mates ? nullptr : k == 0 ? mates : &partMates[k];
+      if (k > 0)
+      {
+        out.Offsets.push_back(0);
+        if (outMates)
+        {
+          outMates->Offsets.push_back(0);
+        }
+      }
+      LocalTilesOfRange(tess, starts, bounds[k], bounds[k + 1], wantTiles, out, outMates);
+    });
+  for (std::size_t k = 1; k < chunks; ++k)
+  {
+    const TileSet& part = partTiles[k];
+    Append(tiles.PointIds, part.PointIds);
+    AppendOffsets(tiles.Offsets, part.Offsets, std::int64_t(tiles.Vertices.size()));
+    Append(tiles.Vertices, part.Vertices);
+    Append(tiles.Areas, part.Areas);
+    Append(tiles.NeighborCounts, part.NeighborCounts);
+    if (mates)
+    {
+      Append(mates->PointIds, partMates[k].PointIds);
+      AppendOffsets(mates->Offsets, partMates[k].Offsets, std::int64_t(mates->Ids.size()));
+      Append(mates->Ids, partMates[k].Ids);
+    }
   }
   return tiles;
 }

@@ -185,6 +185,18 @@ TEST(LocalTiles, RandomSetsMatchTheFullDerivation)
   }
 }
 
+// Thousands of points: the request is split across threads (on a machine with more than one
+// core) and the joined result must still be the full derivation's, in the asked order.
+TEST(LocalTiles, LargeRequestsMatchTheFullDerivation)
+{
+  const DirichletTessellation uniform(Window::Rectangle(0, 1, 0, 1), UniformPoints(6000, 21));
+  ExpectLocalEqualsFull(uniform, 21);
+  ExpectMatesFromFaces(uniform);
+  const DirichletTessellation lattice(Window::Rectangle(0, 1, 0, 1), Lattice(70, 1.0 / 71));
+  ExpectLocalEqualsFull(lattice, 22);
+  ExpectMatesFromFaces(lattice);
+}
+
 TEST(LocalTiles, DegenerateSetsMatchTheFullDerivation)
 {
   const DirichletTessellation lattice(Window::Rectangle(0, 1, 0, 1), Lattice(15, 1.0 / 16));

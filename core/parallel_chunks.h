@@ -1,0 +1,89 @@
+#pragma once
+// Internal: contiguous chunks of a loop on the machine's cores (std::thread). Each chunk writes
+// its own output and the caller joins them in chunk order, so results do not depend on the number
+// of threads; small inputs stay on the calling thread.
+
+#include <algorithm>
+#include <cstdint>
+#include <exception>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace tessera
+{
+namespace parallel
+{
+
+/// Threads for a pass over `work` items: up to the hardware's (at most 8), with at least
+/// minimumPerThread items each (below that, starting a thread costs more than it saves: small
+/// inputs run serially).
+inline std::size_t ThreadCount(std::int64_t work, std::int64_t minimumPerThread = 25000)
+{
+  const std::size_t hardware = std::max(1U, std::thread::hardware_concurrency());
+  const std::size_t useful = std::size_t(std::max<std::int64_t>(1, work / minimumPerThread));
+  return std::min({ hardware, useful, std::size_t(8) });
+}
+
+/// The chunks + 1 boundaries of `chunks` contiguous, nearly equal parts of [0, n).
+inline std::vector<std::int32_t> ChunkBounds(std::int32_t n, std::size_t chunks)
+{
+  std::vector<std::int32_t> bounds(chunks + 1);
+  for (std::size_t k = 0; k <= chunks; ++k)
+  {
+    bounds[k] = std::int32_t(std::int64_t(n) * std::int64_t(k) / std::int64_t(chunks));
+  }
+  return bounds;
+}
+
+/// Runs task(0 .. chunks-1), chunk 0 on the calling thread, the others on their own threads;
+/// rethrows the first exception a task threw once all have finished.
+template<class Task>
+void RunChunks(std::size_t chunks, const Task& task)
+{
+  if (chunks <= 1)
+  {
+    task(0);
+    return;
+  }
+  std::vector<std::exception_ptr> errors(chunks);
+  const auto guarded = [&](std::size_t k)
+  {
+    try
+    {
+      task(k);
+    }
+    catch (...)
+    {
+      errors[k] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> threads;
+  threads.reserve(chunks - 1);
+  for (std::size_t k = 1; k < chunks; ++k)
+  {
+    try
+    {
+      threads.emplace_back(guarded, k);
+    }
+    catch (const std::system_error&)
+    {
+      guarded(k); // no thread to be had: run it here
+    }
+  }
+  guarded(0);
+  for (std::thread& thread : threads)
+  {
+    thread.join();
+  }
+  for (const std::exception_ptr& error : errors)
+  {
+    if (error)
+    {
+      std::rethrow_exception(error);
+    }
+  }
+}
+
+} // namespace parallel
+} // namespace tessera
