@@ -671,11 +671,101 @@ BigInt big_offset(double x, double tail, int base)
 // ---------------------------------------------------------------------------------------------
 // Tiers 2 and 3.
 
+namespace
+{
+
+// Tier 1b, between the filter and the expansions: when no operation of the floating-point
+// evaluation rounds at all (coordinates on a coarse grid: lattices, integers, dyadic steps), the
+// computed determinant is the exact one. Each operation's roundoff is computed error-free and the
+// tier answers only if every one is zero. On degenerate lattice input the filter always fails
+// (the determinant is 0, inside any error bound): this decides it with a few dozen flops instead
+// of an expansion. Differences are kept within [2^-150, 2^150] (or 0), so that no product of up
+// to four of them, nor a cancelled sum times a lift, comes near underflow or overflow, where the
+// error-free transformations stop being exact.
+class RoundingFree
+{
+public:
+  bool Exact = true;
+
+  double Diff(double a, double b)
+  {
+    double x, y;
+    two_diff(a, b, x, y);
+    const double m = std::fabs(x);
+    this->Exact = this->Exact && y == 0.0 && (x == 0.0 || (m >= 0x1p-150 && m <= 0x1p150));
+    return x;
+  }
+  double Product(double a, double b)
+  {
+    double x, y;
+    two_product(a, b, x, y);
+    this->Exact = this->Exact && y == 0.0;
+    return x;
+  }
+  double Sum(double a, double b)
+  {
+    double x, y;
+    two_sum(a, b, x, y);
+    this->Exact = this->Exact && y == 0.0;
+    return x;
+  }
+  double Difference(double a, double b) { return this->Sum(a, -b); }
+};
+
+int Sign(double v)
+{
+  return int(v > 0.0) - int(v < 0.0);
+}
+
+/// orient2d when its evaluation is rounding-free; false otherwise.
+bool orient2d_rounding_free(const Point2& a, const Point2& b, const Point2& c, int& sign)
+{
+  RoundingFree r;
+  const double acx = r.Diff(a.x, c.x), bcy = r.Diff(b.y, c.y);
+  const double acy = r.Diff(a.y, c.y), bcx = r.Diff(b.x, c.x);
+  const double det = r.Difference(r.Product(acx, bcy), r.Product(acy, bcx));
+  sign = Sign(det);
+  return r.Exact;
+}
+
+/// incircle when its evaluation is rounding-free; false otherwise.
+bool incircle_rounding_free(const Point2& a,
+  const Point2& b,
+  const Point2& c,
+  const Point2& d,
+  int& sign)
+{
+  RoundingFree r;
+  const double adx = r.Diff(a.x, d.x), ady = r.Diff(a.y, d.y);
+  const double bdx = r.Diff(b.x, d.x), bdy = r.Diff(b.y, d.y);
+  const double cdx = r.Diff(c.x, d.x), cdy = r.Diff(c.y, d.y);
+  if (!r.Exact)
+  {
+    return false;
+  }
+  const double alift = r.Sum(r.Product(adx, adx), r.Product(ady, ady));
+  const double blift = r.Sum(r.Product(bdx, bdx), r.Product(bdy, bdy));
+  const double clift = r.Sum(r.Product(cdx, cdx), r.Product(cdy, cdy));
+  const double bc = r.Difference(r.Product(bdx, cdy), r.Product(cdx, bdy));
+  const double ca = r.Difference(r.Product(cdx, ady), r.Product(adx, cdy));
+  const double ab = r.Difference(r.Product(adx, bdy), r.Product(bdx, ady));
+  const double det = r.Sum(r.Sum(r.Product(alift, bc), r.Product(blift, ca)), r.Product(clift, ab));
+  sign = Sign(det);
+  return r.Exact;
+}
+
+} // namespace
+
 namespace detail
 {
 
 int orient2d_exact(const Point2& a, const Point2& b, const Point2& c)
 {
+  int sign = 0;
+  if (orient2d_rounding_free(a, b, c, sign))
+  {
+    return sign;
+  }
   BitRange range;
   for (const Point2* p : { &a, &b, &c })
   {
@@ -696,6 +786,11 @@ int orient2d_exact(const Point2& a, const Point2& b, const Point2& c)
 
 int incircle_exact(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
 {
+  int sign = 0;
+  if (incircle_rounding_free(a, b, c, d, sign))
+  {
+    return sign;
+  }
   BitRange range;
   for (const Point2* p : { &a, &b, &c, &d })
   {

@@ -313,6 +313,29 @@ TEST(Predicates, Offset2To30TinySteps)
   EXPECT_GT(t.zeros, 1000);
 }
 
+TEST(Predicates, RoundingFreeTierAtItsRangeLimits)
+{
+  // Small-integer points scaled by 2^k: every operation is exact, so the rounding-free tier
+  // answers while the coordinate differences stay within [2^-150, 2^150], and the expansions
+  // (or big integers) beyond. Either way the sign must be GMP's, degenerate or not.
+  std::mt19937_64 rng(12);
+  Tally t;
+  for (const int k : { -220, -160, -151, -150, -149, -100, 0, 100, 140, 147, 149, 150, 151, 200 })
+  {
+    for (int i = 0; i < 300; ++i)
+    {
+      std::vector<Point2> p(4);
+      for (Point2& q : p)
+      {
+        q = { std::ldexp(std::floor(uniform(rng, -6, 7)), k),
+          std::ldexp(std::floor(uniform(rng, -6, 7)), k) };
+      }
+      check_points(p, t);
+    }
+  }
+  EXPECT_GT(t.zeros, 100);
+}
+
 TEST(Predicates, SquareLatticeExactlyDegenerate)
 {
   // Four corners of any lattice square or rectangle are co-circular; with a huge offset the
