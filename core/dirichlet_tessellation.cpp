@@ -1,6 +1,7 @@
 #include "dirichlet_tessellation.h"
 
 #include "errors.h"
+#include "parallel_chunks.h"
 #include "predicates_inline.h"
 #include "spatial_order.h"
 
@@ -229,11 +230,18 @@ void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids)
   const std::vector<std::int32_t> order = BrioHilbertOrder(this->Coordinates, ids);
   ids.clear();
   ids.shrink_to_fit();
+  // The gather and the relabelling below are random reads of a large array: on the cores.
+  const std::vector<std::int32_t> pointChunks = parallel::ChunkBounds(
+    std::int32_t(order.size()), parallel::ThreadCount(std::int64_t(order.size())));
   std::vector<Point2> local(order.size());
-  for (std::size_t k = 0; k < order.size(); ++k)
-  {
-    local[k] = this->Coordinates[order[k]];
-  }
+  parallel::RunChunks(pointChunks.size() - 1,
+    [&](std::size_t c)
+    {
+      for (std::int32_t k = pointChunks[c]; k < pointChunks[c + 1]; ++k)
+      {
+        local[k] = this->Coordinates[order[k]];
+      }
+    });
   std::vector<std::pair<std::int32_t, std::int32_t>> earlierDuplicates;
   earlierDuplicates.swap(this->DuplicatePairs);
   this->Coordinates.swap(local);
@@ -244,10 +252,18 @@ void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids)
   }
   this->BuildOrder = nullptr;
   this->Coordinates.swap(local);
-  for (std::int32_t& v : this->Origins)
-  {
-    v = v >= 0 ? order[v] : v;
-  }
+  std::int32_t* const origins = this->Origins.data();
+  const std::vector<std::int32_t> edgeChunks = parallel::ChunkBounds(
+    std::int32_t(this->Origins.size()), parallel::ThreadCount(std::int64_t(this->Origins.size())));
+  parallel::RunChunks(edgeChunks.size() - 1,
+    [&](std::size_t c)
+    {
+      for (std::int32_t e = edgeChunks[c]; e < edgeChunks[c + 1]; ++e)
+      {
+        const std::int32_t v = origins[e];
+        origins[e] = v >= 0 ? order[v] : v;
+      }
+    });
   for (std::int32_t& v : this->Collinear)
   {
     v = order[v];

@@ -1,5 +1,7 @@
 #include "spatial_order.h"
 
+#include "parallel_chunks.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -270,10 +272,17 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
   if (keyBits + idBits <= 64)
   {
     std::vector<std::uint64_t> packed(n);
-    for (std::size_t k = 0; k < n; ++k)
-    {
-      packed[k] = (key(ids[k]) << idBits) | std::uint64_t(ids[k]);
-    }
+    // The keys (a hash and a Hilbert index per point) on the cores; the sort stays serial.
+    const std::vector<std::int32_t> bounds =
+      parallel::ChunkBounds(std::int32_t(n), parallel::ThreadCount(std::int64_t(n)));
+    parallel::RunChunks(bounds.size() - 1,
+      [&](std::size_t c)
+      {
+        for (std::int32_t k = bounds[c]; k < bounds[c + 1]; ++k)
+        {
+          packed[k] = (key(ids[k]) << idBits) | std::uint64_t(ids[k]);
+        }
+      });
     RadixSortPacked(packed, idBits, keyBits);
     const std::uint64_t idMask = (std::uint64_t(1) << idBits) - 1;
     for (std::size_t k = 0; k < n; ++k)
