@@ -77,38 +77,6 @@ bool CentreInside(const Tess& tess, std::int32_t face, const Point2& c, double e
 namespace
 {
 
-bool ClipCanonical(const Tess& tess,
-  std::int32_t a,
-  std::int32_t b,
-  const FaceView& lo,
-  const FaceView& hi,
-  TileEdge& out);
-} // namespace
-
-bool ClipEdge(const Tess& tess,
-  std::int32_t from,
-  std::int32_t to,
-  const FaceView& right,
-  const FaceView& left,
-  TileEdge& out)
-{
-  if (from < to)
-  {
-    return ClipCanonical(tess, from, to, right, left, out);
-  }
-  TileEdge reversed;
-  if (!ClipCanonical(tess, to, from, left, right, reversed))
-  {
-    return false;
-  }
-  out.Lo = reversed.Hi;
-  out.Hi = reversed.Lo;
-  return true;
-}
-
-namespace
-{
-
 // The part inside the window of the tile edge of a (lower id) with b: the
 // bisector, parametrised as m + t * d with m the midpoint and d = (b - a)
 // turned anticlockwise, from the centre of loFace (right of a->b; -1 for a
@@ -261,6 +229,27 @@ bool ClipCanonical(const Tess& tess,
   return true;
 }
 } // namespace
+
+bool ClipEdge(const Tess& tess,
+  std::int32_t from,
+  std::int32_t to,
+  const FaceView& right,
+  const FaceView& left,
+  TileEdge& out)
+{
+  if (from < to)
+  {
+    return ClipCanonical(tess, from, to, right, left, out);
+  }
+  TileEdge reversed;
+  if (!ClipCanonical(tess, to, from, left, right, reversed))
+  {
+    return false;
+  }
+  out.Lo = reversed.Hi;
+  out.Hi = reversed.Lo;
+  return true;
+}
 
 // Returns the number of sides (contiguities with points and window edges), decided exactly.
 std::int32_t AssemblePolygon(const Tess& tess,
