@@ -206,99 +206,146 @@ bool TessellationDual::Cocircular(std::int32_t t, std::int32_t f) const
            pts[org[3 * t]], pts[org[3 * t + 1]], pts[org[3 * t + 2]], pts[org[Tess::Prev(f)]]) == 0;
 }
 
-// Ghosts (and free triangles) are their own faces, -2 - t. Real triangles in order: an
-// unlabelled one becomes a face and absorbs the unlabelled co-circular triangles around it. Only
-// a candidate (ComputeTriangleCentres) can have such a neighbour; without any candidate, every
-// real triangle is its own face, as CentresOf labelled it.
+// Ghosts (and free triangles) are their own faces, -2 - t. A real triangle is a face of its own
+// (as CentresOf labelled it) unless it is exactly co-circular with a neighbour: then the whole
+// connected cluster on that circle is one face, labelled by its smallest triangle index. Only a
+// candidate (ComputeTriangleCentres) can start a cluster, since the cluster's smallest triangle
+// has a co-circular neighbour further on.
+//
+// Chunks of triangles find clusters in parallel, each flooding from its candidates and keeping a
+// cluster only if no member comes before the triangle it started from (its smallest index, so
+// exactly one chunk keeps it). The clusters are then recorded in chunk order, i.e. by ascending
+// smallest triangle, as a serial scan would.
+struct TessellationDual::ClusterList
+{
+  std::vector<std::int32_t> Roots;
+  std::vector<std::int32_t> MemberStarts{ 0 };
+  std::vector<std::int32_t> Members;
+  std::vector<std::int32_t> PolygonStarts{ 0 };
+  std::vector<std::int32_t> Polygons; ///< each anticlockwise from its smallest point id
+};
+
 void TessellationDual::LabelFaces(const std::vector<std::uint8_t>& candidate)
 {
-  const auto& twin = this->Tess.Twin();
   const std::int32_t triangles = std::int32_t(this->Data.size());
   if (std::find(candidate.begin(), candidate.end(), std::uint8_t(1)) == candidate.end())
   {
     return;
   }
-  for (std::int32_t t = 0; t < triangles; ++t)
+  const std::vector<std::int32_t> bounds = ChunkBounds(triangles, ThreadCount(triangles));
+  std::vector<ClusterList> found(bounds.size() - 1);
+  RunChunks(bounds.size() - 1,
+    [&](std::size_t k) { this->FindClusters(bounds[k], bounds[k + 1], candidate, found[k]); });
+  for (const ClusterList& list : found)
   {
-    if (this->Data[t].Face >= 0)
+    for (std::size_t c = 0; c < list.Roots.size(); ++c)
     {
-      this->Data[t].Face = -1;
-    }
-  }
-  std::vector<std::int32_t> cluster, stack, boundary;
-  for (std::int32_t t = 0; t < triangles; ++t)
-  {
-    if (this->Data[t].Face != -1)
-    {
-      continue;
-    }
-    this->Data[t].Face = t;
-    if (!candidate[t])
-    {
-      continue;
-    }
-    for (std::int32_t k = 0; k < 3; ++k)
-    {
-      const std::int32_t f = twin[3 * t + k];
-      if (this->Data[f / 3].Face == -1 && this->Cocircular(t, f))
+      const std::int32_t root = list.Roots[c];
+      for (std::int32_t m = list.MemberStarts[c]; m < list.MemberStarts[c + 1]; ++m)
       {
-        this->MergeCocircular(t, cluster, stack, boundary);
-        break;
+        const std::int32_t member = list.Members[m];
+        if (member != root)
+        {
+          this->Data[member].Face = root;
+          this->Data[member].Inside = 0; // not a representative
+        }
       }
+      this->RecordCluster(root,
+        list.Polygons.data() + list.PolygonStarts[c],
+        list.PolygonStarts[c + 1] - list.PolygonStarts[c]);
     }
   }
 }
 
-// Flood the cluster of triangles sharing root's circle, then chain its boundary
-// half-edges into the face polygon (anticlockwise, rotated to start at its
-// smallest id).
-void TessellationDual::MergeCocircular(std::int32_t root,
-  std::vector<std::int32_t>& cluster,
-  std::vector<std::int32_t>& stack,
-  std::vector<std::int32_t>& boundary)
+void TessellationDual::FindClusters(std::int32_t begin,
+  std::int32_t end,
+  const std::vector<std::uint8_t>& candidate,
+  ClusterList& found) const
 {
   const auto& org = this->Tess.Origin();
   const auto& twin = this->Tess.Twin();
-  cluster.assign(1, root);
-  stack.assign(1, root);
-  while (!stack.empty())
+  std::vector<std::uint8_t> visited(this->Data.size(), 0); // this chunk's floods only
+  std::vector<std::int32_t> cluster, stack, boundary;
+  for (std::int32_t t = begin; t < end; ++t)
   {
-    const std::int32_t s = stack.back();
-    stack.pop_back();
-    for (std::int32_t k = 0; k < 3; ++k)
+    if (!candidate[t] || visited[t])
     {
-      const std::int32_t f = twin[3 * s + k];
-      const std::int32_t u = f / 3;
-      if (this->Data[u].Face == -1 && this->Cocircular(root, f))
+      continue;
+    }
+    // Flood t's circle through real neighbours (their vertex opposite the shared edge is not
+    // the ghost).
+    visited[t] = 1;
+    cluster.assign(1, t);
+    stack.assign(1, t);
+    bool smallest = true;
+    while (!stack.empty())
+    {
+      const std::int32_t s = stack.back();
+      stack.pop_back();
+      for (std::int32_t k = 0; k < 3; ++k)
       {
-        this->Data[u].Face = root;
-        this->Data[u].Inside = 0; // not a representative
-        cluster.push_back(u);
-        stack.push_back(u);
+        const std::int32_t f = twin[3 * s + k];
+        const std::int32_t u = f / 3;
+        if (!visited[u] && org[Tess::Prev(f)] >= 0 && this->Cocircular(t, f))
+        {
+          visited[u] = 1;
+          cluster.push_back(u);
+          stack.push_back(u);
+          smallest = smallest && u > t;
+        }
       }
     }
-  }
-  boundary.clear();
-  for (const std::int32_t s : cluster)
-  {
-    for (std::int32_t k = 0; k < 3; ++k)
+    if (!smallest)
     {
-      const std::int32_t e = 3 * s + k;
-      if (this->Data[twin[e] / 3].Face != root)
+      continue; // an earlier chunk keeps this cluster
+    }
+    std::sort(cluster.begin(), cluster.end());
+    boundary.clear();
+    for (const std::int32_t s : cluster)
+    {
+      for (std::int32_t k = 0; k < 3; ++k)
       {
-        boundary.push_back(e);
+        const std::int32_t e = 3 * s + k;
+        if (!std::binary_search(cluster.begin(), cluster.end(), twin[e] / 3))
+        {
+          boundary.push_back(e);
+        }
       }
     }
-  }
-  // Chain: the boundary edge after x->y leaves y. Start at the smallest id.
-  std::size_t first = 0;
-  for (std::size_t k = 1; k < boundary.size(); ++k)
-  {
-    if (org[boundary[k]] < org[boundary[first]])
+    // Chain: the boundary edge after x->y leaves y. Start at the smallest id.
+    std::size_t first = 0;
+    for (std::size_t k = 1; k < boundary.size(); ++k)
     {
-      first = k;
+      if (org[boundary[k]] < org[boundary[first]])
+      {
+        first = k;
+      }
     }
+    std::int32_t e = boundary[first];
+    for (std::size_t step = 0; step < boundary.size(); ++step)
+    {
+      found.Polygons.push_back(org[e]);
+      const std::int32_t to = org[Tess::Next(e)];
+      for (const std::int32_t g : boundary)
+      {
+        if (org[g] == to)
+        {
+          e = g;
+          break;
+        }
+      }
+    }
+    found.PolygonStarts.push_back(std::int32_t(found.Polygons.size()));
+    found.Roots.push_back(t);
+    found.Members.insert(found.Members.end(), cluster.begin(), cluster.end());
+    found.MemberStarts.push_back(std::int32_t(found.Members.size()));
   }
+}
+
+void TessellationDual::RecordCluster(std::int32_t root,
+  const std::int32_t* polygon,
+  std::int32_t size)
+{
   if (this->DegenerateIndex.empty())
   {
     this->DegenerateIndex.assign(this->Data.size(), -1);
@@ -306,20 +353,7 @@ void TessellationDual::MergeCocircular(std::int32_t root,
   }
   this->DegenerateIndex[root] = std::int32_t(this->DegenerateReps.size());
   this->DegenerateReps.push_back(root);
-  std::int32_t e = boundary[first];
-  for (std::size_t step = 0; step < boundary.size(); ++step)
-  {
-    this->DegenerateVertices.push_back(org[e]);
-    const std::int32_t to = org[Tess::Next(e)];
-    for (const std::int32_t g : boundary)
-    {
-      if (org[g] == to)
-      {
-        e = g;
-        break;
-      }
-    }
-  }
+  this->DegenerateVertices.insert(this->DegenerateVertices.end(), polygon, polygon + size);
   this->DegenerateStarts.push_back(std::int32_t(this->DegenerateVertices.size()));
 }
 

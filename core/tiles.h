@@ -104,10 +104,12 @@ private:
   void CandidatesOf(std::int32_t begin, std::int32_t end, std::uint8_t* candidate) const;
   bool Cocircular(std::int32_t t, std::int32_t f) const;
   void LabelFaces(const std::vector<std::uint8_t>& candidate);
-  void MergeCocircular(std::int32_t root,
-    std::vector<std::int32_t>& cluster,
-    std::vector<std::int32_t>& stack,
-    std::vector<std::int32_t>& boundary);
+  struct ClusterList; // co-circular clusters found by one chunk of triangles (tiles.cpp)
+  void FindClusters(std::int32_t begin,
+    std::int32_t end,
+    const std::vector<std::uint8_t>& candidate,
+    ClusterList& found) const;
+  void RecordCluster(std::int32_t root, const std::int32_t* polygon, std::int32_t size);
   void ComputeCentres();
   void TileEdgesOf(std::int32_t v,
     std::int32_t vertexEdge,
