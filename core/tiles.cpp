@@ -376,16 +376,24 @@ const std::int32_t* TessellationDual::DegeneratePolygon(std::int32_t face, std::
 void TessellationDual::ComputeCentres()
 {
   const std::vector<Point2>& pts = this->Tess.Points();
-  for (const std::int32_t rep : this->DegenerateReps)
-  {
-    std::int32_t size = 0;
-    const std::int32_t* polygon = this->DegeneratePolygon(rep, size);
-    std::int32_t ids[3] = { 0, 0, 0 };
-    std::partial_sort_copy(polygon, polygon + size, ids, ids + 3);
-    double error = 0.0;
-    this->Data[rep].Centre = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], error);
-    this->Data[rep].Inside = CentreInside(this->Tess, rep, this->Data[rep].Centre, error) ? 1 : 0;
-  }
+  const std::int32_t count = std::int32_t(this->DegenerateReps.size());
+  const std::vector<std::int32_t> bounds = ChunkBounds(count, ThreadCount(count));
+  RunChunks(bounds.size() - 1,
+    [&](std::size_t k)
+    {
+      for (std::int32_t r = bounds[k]; r < bounds[k + 1]; ++r)
+      {
+        const std::int32_t rep = this->DegenerateReps[r];
+        std::int32_t size = 0;
+        const std::int32_t* polygon = this->DegeneratePolygon(rep, size);
+        std::int32_t ids[3] = { 0, 0, 0 };
+        std::partial_sort_copy(polygon, polygon + size, ids, ids + 3);
+        double error = 0.0;
+        TriangleData& data = this->Data[rep];
+        data.Centre = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], error);
+        data.Inside = CentreInside(this->Tess, rep, data.Centre, error) ? 1 : 0;
+      }
+    });
   std::vector<double>().swap(this->CentreError);
 }
 
