@@ -561,21 +561,11 @@ void TessellationDual::TilesOf(std::int32_t begin, std::int32_t end, TileSet& ti
       // Edge r's right face is edge r-1's left face.
       const std::size_t size = faces.size();
       polygon.resize(size);
-      std::size_t kept = 0;
       for (std::size_t r = 0; r < size; ++r)
       {
-        const std::size_t at = (first + size - 1 + r) % size;
-        const Point2& p = data[faces[at]].Centre;
-        if (kept == 0 || p != polygon[kept - 1])
-        {
-          polygon[kept++] = p;
-        }
+        polygon[r] = data[faces[(first + size - 1 + r) % size]].Centre;
       }
-      while (kept > 1 && polygon[kept - 1] == polygon[0])
-      {
-        --kept;
-      }
-      polygon.resize(kept);
+      DropRepeatedVertices(polygon);
       tiles.PointIds.push_back(v);
       tiles.Vertices.insert(tiles.Vertices.end(), polygon.begin(), polygon.end());
       tiles.Offsets.push_back(std::int64_t(tiles.Vertices.size()));
