@@ -13,6 +13,7 @@
 // Without a file, a synthetic outline of the same extent with jagged edges is used.
 
 #include "clip.h"
+#include "test_support.h" // the jittered tiling the clip tests use
 
 #include <chrono>
 #include <cmath>
@@ -271,31 +272,7 @@ int main(int argc, char** argv)
   const double dy = (box.YMax - box.YMin) * 1.1 / cells;
   const double x0 = box.XMin - 0.05 * (box.XMax - box.XMin);
   const double y0 = box.YMin - 0.05 * (box.YMax - box.YMin);
-  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
-  std::vector<Point2> nodes;
-  for (int j = 0; j <= cells; ++j)
-  {
-    for (int i = 0; i <= cells; ++i)
-    {
-      const bool border = i == 0 || j == 0 || i == cells || j == cells;
-      nodes.push_back({ x0 + (i + (border ? 0.0 : jitter(random))) * dx,
-        y0 + (j + (border ? 0.0 : jitter(random))) * dy });
-    }
-  }
-  tileOffsets.assign(1, 0);
-  tileVertices.clear();
-  const auto node = [&](int i, int j)
-  { return nodes[static_cast<std::size_t>(i + j * (cells + 1))]; };
-  for (int j = 0; j < cells; ++j)
-  {
-    for (int i = 0; i < cells; ++i)
-    {
-      tileVertices.insert(tileVertices.end(), { node(i, j), node(i + 1, j), node(i + 1, j + 1) });
-      tileOffsets.push_back(tileVertices.size());
-      tileVertices.insert(tileVertices.end(), { node(i, j), node(i + 1, j + 1), node(i, j + 1) });
-      tileOffsets.push_back(tileVertices.size());
-    }
-  }
+  tessera_test::JitteredTriangleTiling(x0, y0, dx, dy, cells, random, tileOffsets, tileVertices);
   for (const bool withRings : { false, true })
   {
     start = std::chrono::steady_clock::now();

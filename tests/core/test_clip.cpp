@@ -540,31 +540,7 @@ void TilingOf(const tessera::Box2& box,
 {
   const double x0 = box.XMin - 7.3, y0 = box.YMin - 5.1;
   const double dx = (box.XMax - box.XMin + 14.0) / cells, dy = (box.YMax - box.YMin + 11.0) / cells;
-  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
-  std::vector<Point2> nodes;
-  for (int j = 0; j <= cells; ++j)
-  {
-    for (int i = 0; i <= cells; ++i)
-    {
-      const bool border = i == 0 || j == 0 || i == cells || j == cells;
-      nodes.push_back({ x0 + (i + (border ? 0.0 : jitter(random))) * dx,
-        y0 + (j + (border ? 0.0 : jitter(random))) * dy });
-    }
-  }
-  offsets.assign(1, 0);
-  vertices.clear();
-  const auto node = [&](int i, int j)
-  { return nodes[static_cast<std::size_t>(i + j * (cells + 1))]; };
-  for (int j = 0; j < cells; ++j)
-  {
-    for (int i = 0; i < cells; ++i)
-    {
-      vertices.insert(vertices.end(), { node(i, j), node(i + 1, j), node(i + 1, j + 1) });
-      offsets.push_back(vertices.size());
-      vertices.insert(vertices.end(), { node(i, j), node(i + 1, j + 1), node(i, j + 1) });
-      offsets.push_back(vertices.size());
-    }
-  }
+  tessera_test::JitteredTriangleTiling(x0, y0, dx, dy, cells, random, offsets, vertices);
 }
 
 TEST(Clip, TilingAreasSumToCatchmentArea)

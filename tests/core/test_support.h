@@ -86,4 +86,43 @@ inline double ShoelaceArea(const std::vector<tessera::Point2>& polygon)
   return 0.5 * sum;
 }
 
+/// A jittered (cells x cells) grid from (x0, y0) with steps dx, dy, each quad split into two
+/// anticlockwise triangles: a tiling of convex tiles (flat offsets into vertices). Border nodes
+/// are not jittered, so the tiles exactly cover the rectangle.
+inline void JitteredTriangleTiling(double x0,
+  double y0,
+  double dx,
+  double dy,
+  int cells,
+  std::mt19937& random,
+  std::vector<std::size_t>& offsets,
+  std::vector<tessera::Point2>& vertices)
+{
+  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
+  std::vector<tessera::Point2> nodes;
+  for (int j = 0; j <= cells; ++j)
+  {
+    for (int i = 0; i <= cells; ++i)
+    {
+      const bool border = i == 0 || j == 0 || i == cells || j == cells;
+      nodes.push_back({ x0 + (i + (border ? 0.0 : jitter(random))) * dx,
+        y0 + (j + (border ? 0.0 : jitter(random))) * dy });
+    }
+  }
+  offsets.assign(1, 0);
+  vertices.clear();
+  const auto node = [&](int i, int j)
+  { return nodes[static_cast<std::size_t>(i + j * (cells + 1))]; };
+  for (int j = 0; j < cells; ++j)
+  {
+    for (int i = 0; i < cells; ++i)
+    {
+      vertices.insert(vertices.end(), { node(i, j), node(i + 1, j), node(i + 1, j + 1) });
+      offsets.push_back(vertices.size());
+      vertices.insert(vertices.end(), { node(i, j), node(i + 1, j + 1), node(i, j + 1) });
+      offsets.push_back(vertices.size());
+    }
+  }
+}
+
 } // namespace tessera_test
