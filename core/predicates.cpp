@@ -1012,29 +1012,10 @@ int incircle_offsets(const Offset2& a, const Offset2& b, const Offset2& c)
 {
   // Filter on the rounded offsets: they carry relative errors below eps, as the differences
   // incircle computes, which is all Shewchuk's bound assumes about them.
+  const int filtered = detail::incircle_filter_differences(a.x, a.y, b.x, b.y, c.x, c.y);
+  if (filtered != 0)
   {
-    const double adx = a.x, ady = a.y, bdx = b.x, bdy = b.y, cdx = c.x, cdy = c.y;
-    const double bdxcdy = bdx * cdy, cdxbdy = cdx * bdy;
-    const double cdxady = cdx * ady, adxcdy = adx * cdy;
-    const double adxbdy = adx * bdy, bdxady = bdx * ady;
-    const double alift = adx * adx + ady * ady;
-    const double blift = bdx * bdx + bdy * bdy;
-    const double clift = cdx * cdx + cdy * cdy;
-    const double det =
-      alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
-    const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
-      (std::fabs(cdxady) + std::fabs(adxcdy)) * blift +
-      (std::fabs(adxbdy) + std::fabs(bdxady)) * clift;
-    const double errbound =
-      detail::kIncircleBound * permanent + detail::kUnderflowTerm * ((alift + blift + clift) + 1.0);
-    if (det > errbound)
-    {
-      return 1;
-    }
-    if (-det > errbound)
-    {
-      return -1;
-    }
+    return filtered;
   }
   BitRange range;
   for (const Offset2* o : { &a, &b, &c })

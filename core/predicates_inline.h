@@ -65,33 +65,25 @@ inline int orient2d_filter(const Point2& a, const Point2& b, const Point2& c)
   return orient2d_filter(a, b, c, orient2d_exact);
 }
 
-/// incircle's filter; when it cannot decide, `undecided(a, b, c, d)` does.
-template<typename Undecided>
-inline int incircle_filter(const Point2& a,
-  const Point2& b,
-  const Point2& c,
-  const Point2& d,
-  Undecided undecided)
+/// incircle's filter on the differences of a, b, c to d (each with a relative error below eps, as
+/// a rounded difference has, or none): +1 or -1 when the rounded determinant's sign is certain,
+/// 0 when it is not (a decided determinant is never 0). The sign is computed without a branch.
+inline int incircle_filter_differences(double adx,
+  double ady,
+  double bdx,
+  double bdy,
+  double cdx,
+  double cdy)
 {
-  const double adx = a.x - d.x;
-  const double bdx = b.x - d.x;
-  const double cdx = c.x - d.x;
-  const double ady = a.y - d.y;
-  const double bdy = b.y - d.y;
-  const double cdy = c.y - d.y;
-
   const double bdxcdy = bdx * cdy;
   const double cdxbdy = cdx * bdy;
   const double alift = adx * adx + ady * ady;
-
   const double cdxady = cdx * ady;
   const double adxcdy = adx * cdy;
   const double blift = bdx * bdx + bdy * bdy;
-
   const double adxbdy = adx * bdy;
   const double bdxady = bdx * ady;
   const double clift = cdx * cdx + cdy * cdy;
-
   const double det =
     alift * (bdxcdy - cdxbdy) + blift * (cdxady - adxcdy) + clift * (adxbdy - bdxady);
   const double permanent = (std::fabs(bdxcdy) + std::fabs(cdxbdy)) * alift +
@@ -101,9 +93,24 @@ inline int incircle_filter(const Point2& a,
   // the lifts.
   const double errbound =
     kIncircleBound * permanent + kUnderflowTerm * ((alift + blift + clift) + 1.0);
-  if (__builtin_expect(std::fabs(det) > errbound, 1))
+  // NaN or infinity (overflow) anywhere makes the comparison false: undecided.
+  const bool decided = std::fabs(det) > errbound;
+  return decided ? int(det > 0.0) - int(det < 0.0) : 0;
+}
+
+/// incircle's filter; when it cannot decide, `undecided(a, b, c, d)` does.
+template<typename Undecided>
+inline int incircle_filter(const Point2& a,
+  const Point2& b,
+  const Point2& c,
+  const Point2& d,
+  Undecided undecided)
+{
+  const int sign =
+    incircle_filter_differences(a.x - d.x, a.y - d.y, b.x - d.x, b.y - d.y, c.x - d.x, c.y - d.y);
+  if (__builtin_expect(sign != 0, 1))
   {
-    return int(det > 0.0) - int(det < 0.0);
+    return sign;
   }
   return undecided(a, b, c, d);
 }
