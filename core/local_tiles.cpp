@@ -2,7 +2,6 @@
 // chosen points only, labelling just the faces around them, bit for bit as TessellationDual.
 #include "tiles.h"
 
-#include "polygon_area.h"
 #include "predicates_inline.h"
 #include "parallel_chunks.h"
 #include "tile_edges.h"
@@ -28,9 +27,10 @@ class LocalFaces
 public:
   /// A table indexed by triangle (4 bytes each, cleared per derivation: far cheaper than the
   /// cache misses of hashing, and it keeps the time proportional to the rings walked plus one
-  /// memset).
-  explicit LocalFaces(const Tess& tess)
+  /// memset). Without wantCentres (face mates only) the faces get no centre (View is not used).
+  LocalFaces(const Tess& tess, bool wantCentres)
     : T(tess)
+    , WantCentres(wantCentres)
     , EntryOf(tess.Origin().size() / 3, -1)
   {
   }
@@ -138,9 +138,12 @@ public:
     }
     entry.PointCount = std::int32_t(this->Points.size()) - entry.PointStart;
     const std::int32_t* ids = this->Points.data() + entry.PointStart;
-    double error = 0.0;
-    entry.Centre = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], error);
-    entry.Inside = CentreInside(this->T, entry.Label, entry.Centre, error);
+    if (this->WantCentres)
+    {
+      double error = 0.0;
+      entry.Centre = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], error);
+      entry.Inside = CentreInside(this->T, entry.Label, entry.Centre, error);
+    }
     const std::int32_t index = std::int32_t(this->Entries.size());
     this->Entries.push_back(entry);
     for (const std::int32_t s : this->Cluster)
@@ -164,6 +167,7 @@ private:
   void Insert(std::int32_t t, std::int32_t value) { this->EntryOf[t] = value; }
 
   const Tess& T;
+  const bool WantCentres;
   std::vector<std::int32_t> EntryOf; // per triangle: entry index, -1 unlisted, -2 pending
   std::vector<Entry> Entries;
   std::vector<std::int32_t> Points; // per entry, its face's point ids, ascending
@@ -307,55 +311,6 @@ TileSet CollinearTilesOf(const Tess& tess,
   return tiles;
 }
 
-// The common case, without clipping: every face around the point is a real triangle or merged
-// face whose centre is strictly inside the window, and no degenerate face straddles a ring edge.
-// Then every tile edge runs from the centre on its right to the centre on its left, inside the
-// window, so the polygon is the ring of centres and each edge is one side: exactly what
-// RingTileEdges and AssemblePolygon give (same start, at the edge to the smallest neighbour id;
-// same dropping of rounded repeats), for a fraction of the cost. Fills ring (the half-edges
-// leaving the point, from start) in either case.
-bool InteriorTile(const Tess& tess,
-  const LocalFaces& faces,
-  std::int32_t start,
-  std::vector<std::int32_t>& ring,
-  std::vector<Point2>& polygon)
-{
-  const auto& org = tess.Origin();
-  ring.clear();
-  std::int32_t e = start;
-  do
-  {
-    ring.push_back(e);
-    e = tess.RingNext(e);
-  } while (e != start);
-  const std::size_t n = ring.size();
-  std::int32_t previous = faces.Label(ring[n - 1] / 3); // the face right of ring[0]
-  std::size_t first = 0;
-  polygon.resize(n);
-  for (std::size_t k = 0; k < n; ++k)
-  {
-    const std::int32_t label = faces.Label(ring[k] / 3);
-    if (label < 0 || label == previous)
-    {
-      return false; // a ghost (unbounded tile edge) or a degenerate face's diagonal
-    }
-    const FaceView view = faces.View(previous);
-    if (!view.Inside)
-    {
-      return false;
-    }
-    polygon[k] = view.Centre; // the tile edge along ring[k] starts at the centre on its right
-    if (org[Tess::Next(ring[k])] < org[Tess::Next(ring[first])])
-    {
-      first = k;
-    }
-    previous = label;
-  }
-  std::rotate(polygon.begin(), polygon.begin() + std::ptrdiff_t(first), polygon.end());
-  DropRepeatedVertices(polygon);
-  return true;
-}
-
 // Tiles (when wanted) and mates of starts[begin, end) into tiles and mates (each with its
 // leading 0 offset).
 void LocalTilesOfRange(const Tess& tess,
@@ -366,7 +321,7 @@ void LocalTilesOfRange(const Tess& tess,
   TileSet& tiles,
   FaceMateLists* mates)
 {
-  LocalFaces faces(tess);
+  LocalFaces faces(tess, wantTiles);
   std::vector<TileEdge> edges;
   std::vector<Point2> polygon;
   std::vector<std::int32_t> ring, scratch;
@@ -374,16 +329,10 @@ void LocalTilesOfRange(const Tess& tess,
   {
     const auto& [v, start] = starts[k];
     // Label the faces of the ring first (the tile edges read them).
-    std::int32_t e = start;
-    do
+    CollectRing(tess, start, ring);
+    for (const std::int32_t e : ring)
     {
       faces.Resolve(e / 3);
-      e = tess.RingNext(e);
-    } while (e != start);
-    const bool interior = wantTiles && InteriorTile(tess, faces, start, ring, polygon);
-    if (!interior)
-    {
-      RingTileEdges(tess, faces, v, start, edges, ring);
     }
     if (mates)
     {
@@ -393,13 +342,14 @@ void LocalTilesOfRange(const Tess& tess,
     {
       continue;
     }
-    const std::int32_t sides =
-      interior ? std::int32_t(ring.size()) : AssemblePolygon(tess, edges, polygon);
-    tiles.PointIds.push_back(v);
-    tiles.Vertices.insert(tiles.Vertices.end(), polygon.begin(), polygon.end());
-    tiles.Offsets.push_back(std::int64_t(tiles.Vertices.size()));
-    tiles.Areas.push_back(CompensatedPolygonArea(polygon.data(), polygon.size()));
-    tiles.NeighborCounts.push_back(sides);
+    if (InteriorTile(tess, faces, ring, polygon))
+    {
+      AppendTile(tiles, v, polygon, std::int32_t(ring.size()));
+      continue;
+    }
+    RingTileEdges(tess, faces, v, start, edges, ring);
+    const std::int32_t sides = AssemblePolygon(tess, edges, polygon);
+    AppendTile(tiles, v, polygon, sides);
   }
 }
 

@@ -1,5 +1,6 @@
 #include "tile_edges.h"
 
+#include "polygon_area.h"
 #include "window_predicates.h"
 
 #include <algorithm>
@@ -299,6 +300,18 @@ std::int32_t AssemblePolygon(const Tess& tess,
   // one point) are dropped.
   DropRepeatedVertices(polygon);
   return sides;
+}
+
+void AppendTile(TileSet& tiles,
+  std::int32_t point,
+  const std::vector<Point2>& polygon,
+  std::int32_t sides)
+{
+  tiles.PointIds.push_back(point);
+  tiles.Vertices.insert(tiles.Vertices.end(), polygon.begin(), polygon.end());
+  tiles.Offsets.push_back(std::int64_t(tiles.Vertices.size()));
+  tiles.Areas.push_back(CompensatedPolygonArea(polygon.data(), polygon.size()));
+  tiles.NeighborCounts.push_back(sides);
 }
 
 void DropRepeatedVertices(std::vector<Point2>& polygon)

@@ -1,6 +1,5 @@
 #include "tiles.h"
 
-#include "polygon_area.h"
 #include "predicates_inline.h"
 #include "parallel_chunks.h"
 #include "tile_edges.h"
@@ -500,25 +499,15 @@ TileSet TessellationDual::Tiles() const
   return tiles;
 }
 
-// The tiles of Order[begin .. end), appended to tiles (whose Offsets already has its first 0).
-//
-// Fast path: a point whose ring has no ghost, no degenerate face across a ring edge (distinct
-// faces on either side of every ring edge) and only faces whose centres are strictly inside the
-// window. Then every ClipEdge keeps the whole edge, from the centre of the face on its right to
-// that on its left, so AssemblePolygon would list the centres of the faces around the ring,
-// starting with the face on the right of the edge to the smallest neighbour id, drop repeats of
-// rounded points, and count one side per ring edge: that is done here directly, with the same
-// bits. Every other point takes the general path.
+// The tiles of Order[begin .. end), appended to tiles (whose Offsets already has its first 0):
+// interior tiles without clipping (InteriorTile, the same bits), every other point through the
+// clipped tile edges.
 void TessellationDual::TilesOf(std::int32_t begin, std::int32_t end, TileSet& tiles) const
 {
   std::vector<TileEdge> edges;
   std::vector<Point2> polygon;
   std::vector<std::int32_t> ring;
-  std::vector<std::int32_t> faces; // fast path: left face of each ring edge
   const bool planar = this->Tess.IsTwoDimensional();
-  const std::int32_t* org = this->Tess.Origin().data();
-  const std::int32_t* twin = this->Tess.Twin().data();
-  const TriangleData* data = this->Data.data();
   for (std::int32_t k = begin; k < end; ++k)
   {
     if (planar && (k - begin) % RingBatch == 0)
@@ -526,60 +515,18 @@ void TessellationDual::TilesOf(std::int32_t begin, std::int32_t end, TileSet& ti
       this->TouchRings(k, std::min(end, k + RingBatch));
     }
     const std::int32_t v = this->Order[k];
-    bool fast = planar;
-    std::size_t first = 0;
     if (planar)
     {
-      faces.clear();
-      std::int32_t smallest = std::numeric_limits<std::int32_t>::max();
-      const std::int32_t start = this->OrderEdge[k];
-      std::int32_t e = start;
-      do
+      CollectRing(this->Tess, this->OrderEdge[k], ring);
+      if (InteriorTile(this->Tess, *this, ring, polygon))
       {
-        const std::int32_t j = org[Tess::Next(e)];
-        const std::int32_t face = data[e / 3].Face;
-        if (j < 0 || face < 0 || !data[face].Inside)
-        {
-          fast = false;
-          break;
-        }
-        if (j < smallest)
-        {
-          smallest = j;
-          first = faces.size();
-        }
-        faces.push_back(face);
-        e = twin[Tess::Prev(e)]; // RingNext
-      } while (e != start);
-      for (std::size_t r = 0; fast && r < faces.size(); ++r)
-      {
-        fast = faces[r] != faces[r == 0 ? faces.size() - 1 : r - 1];
+        AppendTile(tiles, v, polygon, std::int32_t(ring.size()));
+        continue;
       }
-    }
-    if (fast)
-    {
-      // Edge r's right face is edge r-1's left face.
-      const std::size_t size = faces.size();
-      polygon.resize(size);
-      for (std::size_t r = 0; r < size; ++r)
-      {
-        polygon[r] = data[faces[(first + size - 1 + r) % size]].Centre;
-      }
-      DropRepeatedVertices(polygon);
-      tiles.PointIds.push_back(v);
-      tiles.Vertices.insert(tiles.Vertices.end(), polygon.begin(), polygon.end());
-      tiles.Offsets.push_back(std::int64_t(tiles.Vertices.size()));
-      tiles.Areas.push_back(CompensatedPolygonArea(polygon.data(), polygon.size()));
-      tiles.NeighborCounts.push_back(std::int32_t(size));
-      continue;
     }
     this->TileEdgesOf(v, planar ? this->OrderEdge[k] : -1, edges, ring);
     const std::int32_t sides = AssemblePolygon(this->Tess, edges, polygon);
-    tiles.PointIds.push_back(v);
-    tiles.Vertices.insert(tiles.Vertices.end(), polygon.begin(), polygon.end());
-    tiles.Offsets.push_back(std::int64_t(tiles.Vertices.size()));
-    tiles.Areas.push_back(CompensatedPolygonArea(polygon.data(), polygon.size()));
-    tiles.NeighborCounts.push_back(sides);
+    AppendTile(tiles, v, polygon, sides);
   }
 }
 
