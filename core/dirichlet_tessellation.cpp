@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -36,137 +35,17 @@ bool ClearlyInside(const std::vector<HalfPlane>& constraints, const Point2& p)
   return true;
 }
 
-// orient2d and incircle for the hot loops: the inlined filters of predicates_inline.h, with a
-// grid stage (below) between the filter and the exact arithmetic.
-#if defined(__FMA__) || defined(__ARM_FEATURE_FMA) || defined(__FP_FAST_FMA) || defined(FP_FAST_FMA)
+// orient2d and incircle for the hot loops: the inlined filters of predicates_inline.h (their exact
+// stages decide lattice and other rounding-free input cheaply, see predicates.cpp).
 inline int Orient(const Point2& a, const Point2& b, const Point2& c)
 {
   return orient2d_fast(a, b, c);
 }
+
 inline int InCircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
 {
   return incircle_fast(a, b, c, d);
 }
-#else
-// A second, still exact, stage for when the filter cannot decide: points on a common grid.
-// Degenerate inputs are usually lattices or rounded data (the benchmark's 1000 x 1000 lattice,
-// gauges on integer coordinates), and there nearly every undecided determinant is exactly zero. If
-// all coordinates are integer multiples of a power of two u, with quotients below 2^51, then the
-// coordinate differences are exact; if moreover they are below 2^B u in magnitude, every product
-// and sum of the floating-point determinant is an integer multiple of a power of u below 2^53
-// times it, so the determinant is computed without any rounding and its sign is exact. B = 25 for
-// orient2d (2 * 25 + 1 bits) and 12 for incircle (4 * 12 + 4 bits). The range of u keeps its
-// powers normal and their multiples finite. Otherwise the exact expansion arithmetic decides.
-constexpr int NoExponent = -100000;
-
-// floor(log2(v)) for a positive normal v; NoExponent for 0, subnormals, infinity and NaN.
-inline int ExponentOf(double v)
-{
-  std::uint64_t bits;
-  std::memcpy(&bits, &v, sizeof bits);
-  const int biased = int((bits >> 52) & 0x7ff);
-  return biased == 0 || biased == 0x7ff ? NoExponent : biased - 1023;
-}
-
-// 2^k for -1022 <= k <= 1023.
-inline double PowerOfTwo(int k)
-{
-  const std::uint64_t bits = std::uint64_t(k + 1023) << 52;
-  double v;
-  std::memcpy(&v, &bits, sizeof v);
-  return v;
-}
-
-// Whether v is an integer multiple of the power of two u, with |v / u| < 2^51.
-inline bool OnGrid(double v, double u)
-{
-  const double q = v / u; // exact unless it underflows, which the product below detects
-  if (!(std::fabs(q) < 0x1p51) || q * u != v)
-  {
-    return false;
-  }
-  // Adding and subtracting 1.5 * 2^52 rounds q to an integer (|q| < 2^51, round to nearest).
-  const volatile double magic = 0x1.8p52;
-  return (q + magic) - magic == q;
-}
-
-// The grid unit for differences of largest magnitude m (at most 2^bits units), or 0 if none fits.
-inline double GridUnit(double m, int bits, int lowest, int highest)
-{
-  const int e = ExponentOf(m);
-  if (e == NoExponent)
-  {
-    return 0.0;
-  }
-  const int k = e + 1 - bits; // m < 2^(e + 1) = 2^bits * 2^k
-  return k < lowest || k > highest ? 0.0 : PowerOfTwo(k);
-}
-
-// Sign of orient2d when a, b, c lie on a common grid as above; false if they do not.
-bool GridOrient(const Point2& a, const Point2& b, const Point2& c, int& sign)
-{
-  const double acx = a.x - c.x, bcx = b.x - c.x, acy = a.y - c.y, bcy = b.y - c.y;
-  const double m =
-    std::max(std::max(std::fabs(acx), std::fabs(bcx)), std::max(std::fabs(acy), std::fabs(bcy)));
-  const double u = GridUnit(m, 25, -500, 480);
-  if (u == 0.0 || !OnGrid(a.x, u) || !OnGrid(a.y, u) || !OnGrid(b.x, u) || !OnGrid(b.y, u) ||
-    !OnGrid(c.x, u) || !OnGrid(c.y, u))
-  {
-    return false;
-  }
-  const double det = acx * bcy - acy * bcx;
-  sign = int(det > 0.0) - int(det < 0.0);
-  return true;
-}
-
-// Sign of incircle when a, b, c, d lie on a common grid as above; false if they do not.
-bool GridInCircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d, int& sign)
-{
-  const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
-  const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
-  const double m = std::max(std::max(std::max(std::fabs(adx), std::fabs(bdx)), std::fabs(cdx)),
-    std::max(std::max(std::fabs(ady), std::fabs(bdy)), std::fabs(cdy)));
-  const double u = GridUnit(m, 12, -250, 240);
-  if (u == 0.0 || !OnGrid(a.x, u) || !OnGrid(a.y, u) || !OnGrid(b.x, u) || !OnGrid(b.y, u) ||
-    !OnGrid(c.x, u) || !OnGrid(c.y, u) || !OnGrid(d.x, u) || !OnGrid(d.y, u))
-  {
-    return false;
-  }
-  const double alift = adx * adx + ady * ady;
-  const double blift = bdx * bdx + bdy * bdy;
-  const double clift = cdx * cdx + cdy * cdy;
-  const double det = alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) +
-    clift * (adx * bdy - bdx * ady);
-  sign = int(det > 0.0) - int(det < 0.0);
-  return true;
-}
-
-// The stages after the filter, out of line so that the hot loops stay small.
-__attribute__((noinline)) int OrientUndecided(const Point2& a, const Point2& b, const Point2& c)
-{
-  int sign;
-  return GridOrient(a, b, c, sign) ? sign : detail::orient2d_exact(a, b, c);
-}
-
-__attribute__((noinline)) int InCircleUndecided(const Point2& a,
-  const Point2& b,
-  const Point2& c,
-  const Point2& d)
-{
-  int sign;
-  return GridInCircle(a, b, c, d, sign) ? sign : detail::incircle_exact(a, b, c, d);
-}
-
-inline int Orient(const Point2& a, const Point2& b, const Point2& c)
-{
-  return detail::orient2d_filter(a, b, c, OrientUndecided);
-}
-
-inline int InCircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
-{
-  return detail::incircle_filter(a, b, c, d, InCircleUndecided);
-}
-#endif
 
 bool LexicographicLess(const Point2& a, const Point2& b)
 {

@@ -14,6 +14,8 @@
 //  1. Floating-point filter (predicates_inline.h): the determinant in doubles, accepted when its
 //     magnitude exceeds a bound proportional to the permanent (Shewchuk 1997, bounds "A") plus an
 //     absolute term covering gradual underflow. Overflow produces Inf/NaN, which never passes.
+//  1b. orient2d and incircle only: points on a common power-of-two grid (lattices, integers), where
+//     the double evaluation is itself exact (GridOrient, GridInCircle below).
 //  2. Expansion arithmetic: each difference of coordinates is an exact two-term expansion
 //     (two_diff), and the determinant is evaluated exactly as a sum of nonoverlapping doubles
 //     (two_product, scale_expansion, merge-based expansion sum with zero elimination), its sign
@@ -674,84 +676,97 @@ BigInt big_offset(double x, double tail, int base)
 namespace
 {
 
-// Tier 1b, between the filter and the expansions: when no operation of the floating-point
-// evaluation rounds at all (coordinates on a coarse grid: lattices, integers, dyadic steps), the
-// computed determinant is the exact one. Each operation's roundoff is computed error-free and the
-// tier answers only if every one is zero. On degenerate lattice input the filter always fails
-// (the determinant is 0, inside any error bound): this decides it with a few dozen flops instead
-// of an expansion. Differences are kept within [2^-150, 2^150] (or 0), so that no product of up
-// to four of them, nor a cancelled sum times a lift, comes near underflow or overflow, where the
-// error-free transformations stop being exact.
-class RoundingFree
-{
-public:
-  bool Exact = true;
+// Tier 1b, between the filter and the expansions: points on a common grid. Degenerate inputs are
+// usually lattices or rounded data (the benchmark's 1000 x 1000 lattice, gauges on integer
+// coordinates), and there nearly every undecided determinant is exactly zero. If all coordinates
+// are integer multiples of a power of two u, with quotients below 2^51, then the coordinate
+// differences are exact; if moreover they are below 2^B u in magnitude, every product and sum of
+// the floating-point determinant is an integer multiple of a power of u below 2^53 times it, so
+// the determinant is computed without any rounding and its sign is exact. B = 25 for orient2d
+// (2 * 25 + 1 bits) and 12 for incircle (4 * 12 + 4 bits). The range of u keeps its powers normal
+// and their multiples finite. Otherwise the expansions decide.
+constexpr int NoExponent = -100000;
 
-  double Diff(double a, double b)
-  {
-    double x, y;
-    two_diff(a, b, x, y);
-    const double m = std::fabs(x);
-    this->Exact = this->Exact && y == 0.0 && (x == 0.0 || (m >= 0x1p-150 && m <= 0x1p150));
-    return x;
-  }
-  double Product(double a, double b)
-  {
-    double x, y;
-    two_product(a, b, x, y);
-    this->Exact = this->Exact && y == 0.0;
-    return x;
-  }
-  double Sum(double a, double b)
-  {
-    double x, y;
-    two_sum(a, b, x, y);
-    this->Exact = this->Exact && y == 0.0;
-    return x;
-  }
-  double Difference(double a, double b) { return this->Sum(a, -b); }
-};
-
-int Sign(double v)
+// floor(log2(v)) for a positive normal v; NoExponent for 0, subnormals, infinity and NaN.
+inline int ExponentOf(double v)
 {
-  return int(v > 0.0) - int(v < 0.0);
+  std::uint64_t bits;
+  std::memcpy(&bits, &v, sizeof bits);
+  const int biased = int((bits >> 52) & 0x7ff);
+  return biased == 0 || biased == 0x7ff ? NoExponent : biased - 1023;
 }
 
-/// orient2d when its evaluation is rounding-free; false otherwise.
-bool orient2d_rounding_free(const Point2& a, const Point2& b, const Point2& c, int& sign)
+// 2^k for -1022 <= k <= 1023.
+inline double PowerOfTwo(int k)
 {
-  RoundingFree r;
-  const double acx = r.Diff(a.x, c.x), bcy = r.Diff(b.y, c.y);
-  const double acy = r.Diff(a.y, c.y), bcx = r.Diff(b.x, c.x);
-  const double det = r.Difference(r.Product(acx, bcy), r.Product(acy, bcx));
-  sign = Sign(det);
-  return r.Exact;
+  const std::uint64_t bits = std::uint64_t(k + 1023) << 52;
+  double v;
+  std::memcpy(&v, &bits, sizeof v);
+  return v;
 }
 
-/// incircle when its evaluation is rounding-free; false otherwise.
-bool incircle_rounding_free(const Point2& a,
-  const Point2& b,
-  const Point2& c,
-  const Point2& d,
-  int& sign)
+// Whether v is an integer multiple of the power of two u, with |v / u| < 2^51.
+inline bool OnGrid(double v, double u)
 {
-  RoundingFree r;
-  const double adx = r.Diff(a.x, d.x), ady = r.Diff(a.y, d.y);
-  const double bdx = r.Diff(b.x, d.x), bdy = r.Diff(b.y, d.y);
-  const double cdx = r.Diff(c.x, d.x), cdy = r.Diff(c.y, d.y);
-  if (!r.Exact)
+  const double q = v / u; // exact unless it underflows, which the product below detects
+  if (!(std::fabs(q) < 0x1p51) || q * u != v)
   {
     return false;
   }
-  const double alift = r.Sum(r.Product(adx, adx), r.Product(ady, ady));
-  const double blift = r.Sum(r.Product(bdx, bdx), r.Product(bdy, bdy));
-  const double clift = r.Sum(r.Product(cdx, cdx), r.Product(cdy, cdy));
-  const double bc = r.Difference(r.Product(bdx, cdy), r.Product(cdx, bdy));
-  const double ca = r.Difference(r.Product(cdx, ady), r.Product(adx, cdy));
-  const double ab = r.Difference(r.Product(adx, bdy), r.Product(bdx, ady));
-  const double det = r.Sum(r.Sum(r.Product(alift, bc), r.Product(blift, ca)), r.Product(clift, ab));
-  sign = Sign(det);
-  return r.Exact;
+  // Adding and subtracting 1.5 * 2^52 rounds q to an integer (|q| < 2^51, round to nearest).
+  const volatile double magic = 0x1.8p52;
+  return (q + magic) - magic == q;
+}
+
+// The grid unit for differences of largest magnitude m (at most 2^bits units), or 0 if none fits.
+inline double GridUnit(double m, int bits, int lowest, int highest)
+{
+  const int e = ExponentOf(m);
+  if (e == NoExponent)
+  {
+    return 0.0;
+  }
+  const int k = e + 1 - bits; // m < 2^(e + 1) = 2^bits * 2^k
+  return k < lowest || k > highest ? 0.0 : PowerOfTwo(k);
+}
+
+// Sign of orient2d when a, b, c lie on a common grid as above; false if they do not.
+bool GridOrient(const Point2& a, const Point2& b, const Point2& c, int& sign)
+{
+  const double acx = a.x - c.x, bcx = b.x - c.x, acy = a.y - c.y, bcy = b.y - c.y;
+  const double m =
+    std::max(std::max(std::fabs(acx), std::fabs(bcx)), std::max(std::fabs(acy), std::fabs(bcy)));
+  const double u = GridUnit(m, 25, -500, 480);
+  if (u == 0.0 || !OnGrid(a.x, u) || !OnGrid(a.y, u) || !OnGrid(b.x, u) || !OnGrid(b.y, u) ||
+    !OnGrid(c.x, u) || !OnGrid(c.y, u))
+  {
+    return false;
+  }
+  const double det = acx * bcy - acy * bcx;
+  sign = int(det > 0.0) - int(det < 0.0);
+  return true;
+}
+
+// Sign of incircle when a, b, c, d lie on a common grid as above; false if they do not.
+bool GridInCircle(const Point2& a, const Point2& b, const Point2& c, const Point2& d, int& sign)
+{
+  const double adx = a.x - d.x, bdx = b.x - d.x, cdx = c.x - d.x;
+  const double ady = a.y - d.y, bdy = b.y - d.y, cdy = c.y - d.y;
+  const double m = std::max(std::max(std::max(std::fabs(adx), std::fabs(bdx)), std::fabs(cdx)),
+    std::max(std::max(std::fabs(ady), std::fabs(bdy)), std::fabs(cdy)));
+  const double u = GridUnit(m, 12, -250, 240);
+  if (u == 0.0 || !OnGrid(a.x, u) || !OnGrid(a.y, u) || !OnGrid(b.x, u) || !OnGrid(b.y, u) ||
+    !OnGrid(c.x, u) || !OnGrid(c.y, u) || !OnGrid(d.x, u) || !OnGrid(d.y, u))
+  {
+    return false;
+  }
+  const double alift = adx * adx + ady * ady;
+  const double blift = bdx * bdx + bdy * bdy;
+  const double clift = cdx * cdx + cdy * cdy;
+  const double det = alift * (bdx * cdy - cdx * bdy) + blift * (cdx * ady - adx * cdy) +
+    clift * (adx * bdy - bdx * ady);
+  sign = int(det > 0.0) - int(det < 0.0);
+  return true;
 }
 
 } // namespace
@@ -762,7 +777,7 @@ namespace detail
 int orient2d_exact(const Point2& a, const Point2& b, const Point2& c)
 {
   int sign = 0;
-  if (orient2d_rounding_free(a, b, c, sign))
+  if (GridOrient(a, b, c, sign))
   {
     return sign;
   }
@@ -787,7 +802,7 @@ int orient2d_exact(const Point2& a, const Point2& b, const Point2& c)
 int incircle_exact(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
 {
   int sign = 0;
-  if (incircle_rounding_free(a, b, c, d, sign))
+  if (GridInCircle(a, b, c, d, sign))
   {
     return sign;
   }

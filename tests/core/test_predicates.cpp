@@ -313,14 +313,15 @@ TEST(Predicates, Offset2To30TinySteps)
   EXPECT_GT(t.zeros, 1000);
 }
 
-TEST(Predicates, RoundingFreeTierAtItsRangeLimits)
+TEST(Predicates, GridTierAtItsRangeLimits)
 {
-  // Small-integer points scaled by 2^k: every operation is exact, so the rounding-free tier
-  // answers while the coordinate differences stay within [2^-150, 2^150], and the expansions
-  // (or big integers) beyond. Either way the sign must be GMP's, degenerate or not.
+  // Small-integer points scaled by 2^k: the points lie on a power-of-two grid, so the grid tier
+  // answers while the grid unit stays within its range, and the expansions (or big integers)
+  // beyond. Either way the sign must be GMP's, degenerate or not.
   std::mt19937_64 rng(12);
   Tally t;
-  for (const int k : { -220, -160, -151, -150, -149, -100, 0, 100, 140, 147, 149, 150, 151, 200 })
+  for (const int k :
+    { -280, -220, -160, -151, -150, -149, -100, 0, 100, 140, 149, 150, 151, 200, 260 })
   {
     for (int i = 0; i < 300; ++i)
     {
