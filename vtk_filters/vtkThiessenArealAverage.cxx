@@ -92,6 +92,13 @@ std::vector<double> ReadTimes(vtkTable* table, const std::string& column)
   return unique;
 }
 
+/// The modification time of a table's column, 0 when it has none.
+vtkMTimeType ColumnMTime(vtkTable* table, const std::string& column)
+{
+  vtkAbstractArray* array = table->GetColumnByName(column.c_str());
+  return array ? array->GetMTime() : 0;
+}
+
 } // namespace
 
 struct vtkThiessenArealAverage::Internals
@@ -101,8 +108,41 @@ struct vtkThiessenArealAverage::Internals
   std::vector<std::vector<double>> Values; // per step, per gauge; NaN = missing
   std::unique_ptr<tessera::ThiessenArealAverage> Average;
   vtkNew<vtkTable> Summary;
-  std::vector<std::string> Warnings;
+
+  /// The observation times read (and validated) by RequestInformation, with what they were read
+  /// from, so that Build reuses them while the table and the time column are unchanged.
+  struct TimesCache
+  {
+    vtkTable* Table = nullptr; // compared only, never dereferenced; null: nothing cached
+    vtkMTimeType TableMTime = 0;
+    vtkMTimeType ColumnMTime = 0;
+    std::string Column;
+    std::vector<double> Times;
+  } ReadTimesCache;
+
+  /// ReadTimes(table, column), from the cache when it was read from this table, unchanged since.
+  const std::vector<double>& CachedReadTimes(vtkTable* table, const std::string& column);
 };
+
+const std::vector<double>& vtkThiessenArealAverage::Internals::CachedReadTimes(vtkTable* table,
+  const std::string& column)
+{
+  TimesCache& cache = this->ReadTimesCache;
+  const vtkMTimeType tableMTime = table->GetMTime();
+  const vtkMTimeType columnMTime = ColumnMTime(table, column);
+  if (cache.Table == table && cache.TableMTime == tableMTime && cache.ColumnMTime == columnMTime &&
+    cache.Column == column)
+  {
+    return cache.Times;
+  }
+  cache.Table = nullptr; // until the read succeeds (it throws on bad times)
+  cache.Times = ReadTimes(table, column);
+  cache.Table = table;
+  cache.TableMTime = tableMTime;
+  cache.ColumnMTime = columnMTime;
+  cache.Column = column;
+  return cache.Times;
+}
 
 //------------------------------------------------------------------------------
 vtkThiessenArealAverage::vtkThiessenArealAverage()
@@ -168,7 +208,7 @@ int vtkThiessenArealAverage::RequestInformation(vtkInformation*,
   }
   try
   {
-    const std::vector<double> times = ReadTimes(table, this->TimeColumn);
+    const std::vector<double>& times = this->Internal->CachedReadTimes(table, this->TimeColumn);
     if (!times.empty())
     {
       outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(),
@@ -228,7 +268,7 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
       const auto after = std::upper_bound(in.Times.begin(), in.Times.end(), t);
       step = after == in.Times.begin() ? 0 : static_cast<std::size_t>(after - in.Times.begin() - 1);
     }
-    this->WriteTiles(step, gauges, stationIds, tilesOutput);
+    this->WriteTiles(step, stationIds, tilesOutput);
     if (!in.Times.empty())
     {
       tilesOutput->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), in.Times[step]);
@@ -253,7 +293,6 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
 {
   Internals& in = *this->Internal;
   in.Average.reset();
-  in.Warnings.clear();
   const std::vector<tessera::Point2> lonlat = tessera_vtk::ReadPoints2D(gauges->GetPoints());
   const tessera_vtk::Rings rings = tessera_vtk::ReadPolygonRings(catchment);
   tessera::ArealAverageSettings settings;
@@ -290,7 +329,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     {
       gaugeOf.emplace(StationKey(stationIds->GetVariantValue(static_cast<vtkIdType>(g))), g);
     }
-    in.Times = ReadTimes(observations, this->TimeColumn);
+    in.Times = in.CachedReadTimes(observations, this->TimeColumn);
     in.Values.assign(in.Times.size(), std::vector<double>(gaugeCount, missing));
     std::unordered_map<std::string, bool> reportedUnknown;
     for (vtkIdType r = 0; r < observations->GetNumberOfRows(); ++r)
@@ -352,7 +391,11 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     bool any = false;
     for (const auto& stepValues : in.Values)
     {
-      any = any || !std::isnan(stepValues[g]);
+      if (!std::isnan(stepValues[g]))
+      {
+        any = true;
+        break;
+      }
     }
     if (!any)
     {
@@ -421,7 +464,6 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
 
 //------------------------------------------------------------------------------
 void vtkThiessenArealAverage::WriteTiles(std::size_t step,
-  vtkPointSet*,
   vtkAbstractArray* stationIds,
   vtkPolyData* output)
 {

@@ -161,10 +161,7 @@ private:
     vtkDataObject* catchment,
     vtkTable* observations);
   /// Output 0 for one step.
-  void WriteTiles(std::size_t step,
-    vtkPointSet* gauges,
-    vtkAbstractArray* stationIds,
-    vtkPolyData* output);
+  void WriteTiles(std::size_t step, vtkAbstractArray* stationIds, vtkPolyData* output);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;
