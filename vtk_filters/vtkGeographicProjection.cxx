@@ -232,6 +232,7 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
   try
   {
     tessera::ProjectionParameters parameters;
+    std::vector<tessera::Point2> lonlat; // the input points, read when projecting forward
     const std::string record = ReadProjectionRecord(input);
     if (this->Inverse && !record.empty())
     {
@@ -244,13 +245,14 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
     }
     else
     {
-      parameters = ChooseForwardParameters(this, ReadXY(input->GetPoints()));
+      lonlat = ReadXY(input->GetPoints());
+      parameters = ChooseForwardParameters(this, lonlat);
     }
 
     auto polyInput = vtkPolyData::SafeDownCast(input);
     if (!this->Inverse && polyInput && this->MaximumEdgeLength > 0.0)
     {
-      tessera::ValidateLonLat(ReadXY(input->GetPoints()));
+      tessera::ValidateLonLat(lonlat);
       EdgeDensifier(polyInput, vtkPolyData::SafeDownCast(output), this->MaximumEdgeLength).Run();
       output->GetFieldData()->PassData(input->GetFieldData());
     }
