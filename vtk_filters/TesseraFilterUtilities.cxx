@@ -234,12 +234,18 @@ void AddUnusedPointIds(vtkDataObject* data,
   AddIdFieldArray(data, "DuplicateOfPointIds", originals);
 }
 
-vtkSmartPointer<vtkIdTypeArray> MakeIdArray(const std::vector<std::int64_t>& values)
+std::string UnusedPointsWarning(std::size_t rejected, std::size_t duplicates, const char* verb)
 {
-  auto array = vtkSmartPointer<vtkIdTypeArray>::New();
-  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
-  std::copy(values.begin(), values.end(), array->GetPointer(0));
-  return array;
+  if (rejected == 0 && duplicates == 0)
+  {
+    return std::string();
+  }
+  std::ostringstream text;
+  text << rejected << " point(s) outside the window and " << duplicates
+       << " exact duplicate(s) were not " << verb
+       << "; their ids are in the field data arrays RejectedPointIds, DuplicatePointIds and "
+          "DuplicateOfPointIds.";
+  return text.str();
 }
 
 } // namespace tessera_vtk

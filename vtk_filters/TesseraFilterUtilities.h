@@ -9,6 +9,7 @@
 #include "geometry.h"
 #include "window.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <utility>
@@ -17,7 +18,6 @@
 class vtkDataObject;
 class vtkPoints;
 class vtkPointSet;
-class vtkIdTypeArray;
 
 namespace tessera_vtk
 {
@@ -60,8 +60,10 @@ void AddUnusedPointIds(vtkDataObject* data,
   const std::vector<std::int32_t>& rejected,
   const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates);
 
-/// A vtkIdTypeArray holding `values`.
-vtkSmartPointer<vtkIdTypeArray> MakeIdArray(const std::vector<std::int64_t>& values);
+/// The warning for points a tessellation filter did not use (`rejected` outside the window,
+/// `duplicates` exact copies), saying they were not `verb` ("used", "triangulated") and where their
+/// ids are; empty when every point was used.
+std::string UnusedPointsWarning(std::size_t rejected, std::size_t duplicates, const char* verb);
 
 } // namespace tessera_vtk
 

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <string>
 #include <thread>
 #include <utility>
 
@@ -94,12 +95,11 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     const std::vector<std::int32_t> rejected = tessellation.RejectedIds();
     const auto duplicates = tessellation.Duplicates();
     tessera_vtk::AddUnusedPointIds(output, rejected, duplicates);
-    if (!rejected.empty() || !duplicates.empty())
+    const std::string unused =
+      tessera_vtk::UnusedPointsWarning(rejected.size(), duplicates.size(), "triangulated");
+    if (!unused.empty())
     {
-      vtkWarningMacro(
-        << rejected.size() << " point(s) outside the window and " << duplicates.size()
-        << " exact duplicate(s) were not triangulated; their ids are in the field "
-           "data arrays RejectedPointIds, DuplicatePointIds and DuplicateOfPointIds.");
+      vtkWarningMacro(<< unused);
     }
     return 1;
   }

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <string>
 #include <thread>
 #include <utility>
 
@@ -353,12 +354,11 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     graph.Attach(graphOutput);
     tessera_vtk::AddUnusedPointIds(tilesOutput, result.Rejected, result.Duplicates);
     tessera_vtk::AddUnusedPointIds(graphOutput, result.Rejected, result.Duplicates);
-    if (!result.Rejected.empty() || !result.Duplicates.empty())
+    const std::string unused =
+      tessera_vtk::UnusedPointsWarning(result.Rejected.size(), result.Duplicates.size(), "used");
+    if (!unused.empty())
     {
-      vtkWarningMacro(<< result.Rejected.size() << " point(s) outside the window and "
-                      << result.Duplicates.size()
-                      << " exact duplicate(s) were not used; their ids are in the field data "
-                         "arrays RejectedPointIds, DuplicatePointIds and DuplicateOfPointIds.");
+      vtkWarningMacro(<< unused);
     }
     return 1;
   }
