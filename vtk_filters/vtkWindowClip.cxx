@@ -16,6 +16,7 @@
 #include "clip.h"
 #include "polygon_area.h"
 
+#include <algorithm>
 #include <exception>
 
 vtkStandardNewMacro(vtkWindowClip);
@@ -64,6 +65,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
     tessera::Catchment::Workspace work;
     std::vector<tessera::Point2> tile;
     vtkNew<vtkIdList> ids;
+    tessera::ClippedRings rings; // reused: ClipInto appends to it
     const vtkIdType cellCount = tiles->GetNumberOfCells();
     for (vtkIdType c = 0; c < cellCount; ++c)
     {
@@ -85,7 +87,8 @@ int vtkWindowClip::RequestData(vtkInformation*,
         tile[k] = { p[0], p[1] };
       }
       const double ownArea = tessera_vtk::OrientAnticlockwise(tile);
-      tessera::ClippedRings rings;
+      rings.RingOffsets.assign(1, 0);
+      rings.Vertices.clear();
       const double clipped =
         catchment.ClipInto(tile.data(), tile.size(), static_cast<std::size_t>(c), work, &rings);
       if (clipped <= 0.0)
