@@ -1361,10 +1361,13 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
     { return p.X < q.X || (p.X == q.X && (p.Y < q.Y || (p.Y == q.Y && p.Id < q.Id))); };
     const std::size_t buckets =
       std::max<std::size_t>(1, std::min<std::size_t>(4096, keyed.size() / 64));
-    const double scale = double(buckets) / (xmax - xmin);
+    // Keys are scaled by 2^scale, so the bucket range must be too.
+    const double keyMin = std::ldexp(xmin, scale);
+    const double keyMax = std::ldexp(xmax, scale);
+    const double perUnit = double(buckets) / (keyMax - keyMin);
     auto bucketOf = [&](double x)
     {
-      const double b = std::floor((x - xmin) * scale);
+      const double b = std::floor((x - keyMin) * perUnit);
       return b <= 0.0 ? std::size_t(0) : std::min(buckets - 1, std::size_t(b));
     };
     std::vector<std::size_t> start(buckets + 1, 0);
