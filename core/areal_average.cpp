@@ -71,16 +71,17 @@ struct ThiessenArealAverage::State
   Catchment::Workspace Work;
   ClippedRings Scratch;
   std::vector<Point2> Dense;
+  std::vector<Point2> LonLat; // scratch for MeasureRings
 
   // Whether CachedTile holds the tile of every gauge in the tessellation (the previous step
   // derived them): then an update needs to derive only the tiles that changed.
   bool TilesCurrent = false;
 
-  double MeasureRings(const ClippedRings& rings, std::size_t firstRing, std::size_t lastRing)
+  /// Ellipsoidal area (m^2) of all the rings.
+  double MeasureRings(const ClippedRings& rings)
   {
     double total = 0.0;
-    std::vector<Point2> lonlat;
-    for (std::size_t r = firstRing; r < lastRing; ++r)
+    for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
     {
       const std::size_t begin = rings.RingOffsets[r];
       const std::size_t count = rings.RingOffsets[r + 1] - begin;
@@ -90,12 +91,12 @@ struct ThiessenArealAverage::State
       }
       DensifyPlanarRing(
         &rings.Vertices[begin], count, this->Settings.GeodesicStepMetres, this->Dense);
-      lonlat.resize(this->Dense.size());
+      this->LonLat.resize(this->Dense.size());
       for (std::size_t i = 0; i < this->Dense.size(); ++i)
       {
-        lonlat[i] = this->Projector->Inverse(this->Dense[i]);
+        this->LonLat[i] = this->Projector->Inverse(this->Dense[i]);
       }
-      total += EllipsoidalRingArea(lonlat);
+      total += EllipsoidalRingArea(this->LonLat);
     }
     return total;
   }
@@ -114,7 +115,7 @@ struct ThiessenArealAverage::State
     {
       return 0.0;
     }
-    return this->MeasureRings(this->Scratch, 0, this->Scratch.RingOffsets.size() - 1);
+    return this->MeasureRings(this->Scratch);
   }
 
   void Rebuild(const std::vector<std::int32_t>& active)
@@ -385,7 +386,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     ClippedRings stored;
     stored.RingOffsets = s.Region->RingOffsets();
     stored.Vertices = s.Region->Vertices();
-    s.CatchmentArea = s.MeasureRings(stored, 0, stored.RingOffsets.size() - 1);
+    s.CatchmentArea = s.MeasureRings(stored);
   }
 
   // The window: every gauge and the whole catchment, padded.
