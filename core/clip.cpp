@@ -361,26 +361,24 @@ Catchment::Catchment(const std::vector<std::size_t>& ringOffsets,
   this->TotalArea = area.Value();
 }
 
-std::size_t Catchment::CellX(double x) const
+std::size_t Catchment::CellIndex(double value, double lo, double scale, std::size_t count)
 {
-  const double cell = (x - this->Box.XMin) * this->CellScaleX;
+  const double cell = (value - lo) * scale;
   if (!(cell > 0.0))
   {
     return 0;
   }
-  return cell >= static_cast<double>(this->GridX) ? this->GridX - 1
-                                                  : static_cast<std::size_t>(cell);
+  return cell >= static_cast<double>(count) ? count - 1 : static_cast<std::size_t>(cell);
+}
+
+std::size_t Catchment::CellX(double x) const
+{
+  return CellIndex(x, this->Box.XMin, this->CellScaleX, this->GridX);
 }
 
 std::size_t Catchment::CellY(double y) const
 {
-  const double cell = (y - this->Box.YMin) * this->CellScaleY;
-  if (!(cell > 0.0))
-  {
-    return 0;
-  }
-  return cell >= static_cast<double>(this->GridY) ? this->GridY - 1
-                                                  : static_cast<std::size_t>(cell);
+  return CellIndex(y, this->Box.YMin, this->CellScaleY, this->GridY);
 }
 
 std::size_t Catchment::NextVertex(std::size_t v) const

@@ -154,6 +154,9 @@ private:
     const Point2& centre,
     int winding,
     std::vector<Point2>& local) const;
+  // Grid cell of a coordinate along one axis: floor((value - lo) * scale), clamped to
+  // [0, count).
+  static std::size_t CellIndex(double value, double lo, double scale, std::size_t count);
   std::size_t CellX(double x) const;
   std::size_t CellY(double y) const;
   std::size_t NextVertex(std::size_t v) const;

@@ -36,10 +36,6 @@ struct PixelGrid
   {
     return { (p.x - this->OriginX) / this->Spacing, (p.y - this->OriginY) / this->Spacing };
   }
-  Point2 FromPixelUnits(const Point2& q) const
-  {
-    return { this->OriginX + q.x * this->Spacing, this->OriginY + q.y * this->Spacing };
-  }
 };
 
 } // namespace tessera
