@@ -96,10 +96,7 @@ std::vector<double> ContourArcLengths(const RidgeContours& contours, int width)
   {
     for (int k = contours.Offsets[c] + 1; k < contours.Offsets[c + 1]; ++k)
     {
-      const int a = contours.Pixels[k - 1];
-      const int b = contours.Pixels[k];
-      arc[k] =
-        arc[k - 1] + std::hypot(double(a % width - b % width), double(a / width - b / width));
+      arc[k] = arc[k - 1] + StepLength(contours.Pixels[k - 1], contours.Pixels[k], width);
     }
   }
   return arc;

@@ -35,12 +35,17 @@ int NeighbourCount(const std::vector<std::uint8_t>& mask, int width, int height,
   return count;
 }
 
+} // namespace
+
 double StepLength(int a, int b, int width)
 {
   const double dx = (a % width) - (b % width);
   const double dy = (a / width) - (b / width);
   return std::sqrt(dx * dx + dy * dy);
 }
+
+namespace
+{
 
 double PathLength(const std::vector<int>& pixels, int begin, int end, bool closed, int width)
 {
@@ -742,7 +747,7 @@ RidgeContours TraceRidgeContours(const std::vector<std::uint8_t>& minor,
   std::vector<std::uint8_t> pruned = result.Skeleton;
   SkeletonGraph graph = PruneSegmentsWithoutMajorRidge(
     pruned, major, width, height, settings.MaximumBridgeLength, result);
-  std::vector<Segment> kept = graph.Segments;
+  const std::vector<Segment>& kept = graph.Segments;
   result.KeptSegmentCount = static_cast<int>(kept.size());
 
   Joiner joiner(kept, graph.SegmentPixels, width, settings, graph.JunctionCount);

@@ -79,6 +79,10 @@ void ThinToSkeleton(std::vector<std::uint8_t>& mask, int width, int height);
 /// foreground components its removal would leave touching it (1 = a simple pixel).
 int ConnectivityNumber(const std::vector<std::uint8_t>& mask, int width, int height, int i, int j);
 
+/// Length (pixels) of the straight step between pixel indices a and b (j * width + i):
+/// 1 between 4-neighbours, sqrt(2) between diagonal neighbours.
+double StepLength(int a, int b, int width);
+
 /// Steps 1-5. Throws InputError if the masks do not match width x height or the settings are
 /// invalid (negative minimum length, TangentPixels < 1).
 RidgeContours TraceRidgeContours(const std::vector<std::uint8_t>& minor,
