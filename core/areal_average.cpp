@@ -140,14 +140,7 @@ struct ThiessenArealAverage::State
   void SpatialSort(std::vector<std::int32_t>& gauges) const
   {
     const std::vector<Point2>& corners = this->TheWindow->Vertices();
-    double xmin = corners[0].x, xmax = xmin, ymin = corners[0].y, ymax = ymin;
-    for (const Point2& corner : corners)
-    {
-      xmin = std::min(xmin, corner.x);
-      xmax = std::max(xmax, corner.x);
-      ymin = std::min(ymin, corner.y);
-      ymax = std::max(ymax, corner.y);
-    }
+    const Box2 box = BoundsOf(corners.data(), corners.size());
     const auto cell = [](double v, double lo, double hi)
     {
       const double u = (v - lo) / (hi - lo) * 65535.0;
@@ -158,7 +151,8 @@ struct ThiessenArealAverage::State
     for (const std::int32_t g : gauges)
     {
       const Point2& p = this->GaugesXY[g];
-      order.emplace_back(HilbertIndex(cell(p.x, xmin, xmax), cell(p.y, ymin, ymax), 16), g);
+      order.emplace_back(
+        HilbertIndex(cell(p.x, box.XMin, box.XMax), cell(p.y, box.YMin, box.YMax), 16), g);
     }
     std::sort(order.begin(), order.end());
     for (std::size_t k = 0; k < order.size(); ++k)
@@ -393,13 +387,9 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   Box2 box = s.Region->Bounds();
   for (const Point2& p : s.GaugesXY)
   {
-    box.XMin = std::min(box.XMin, p.x);
-    box.XMax = std::max(box.XMax, p.x);
-    box.YMin = std::min(box.YMin, p.y);
-    box.YMax = std::max(box.YMax, p.y);
+    box.Extend(p);
   }
-  const double pad =
-    std::max(settings.Padding, 0.01) * std::max(box.XMax - box.XMin, box.YMax - box.YMin);
+  const double pad = std::max(settings.Padding, 0.01) * box.LargerSide();
   s.TheWindow.reset(
     new Window(Window::Rectangle(box.XMin - pad, box.XMax + pad, box.YMin - pad, box.YMax + pad)));
   s.Tessellation.reset(new DirichletTessellation(*s.TheWindow));

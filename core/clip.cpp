@@ -239,19 +239,6 @@ Point2 NearestInBox(const Box2& box, const Point2& u)
     std::min(std::max(u.y, box.YMin), box.YMax) };
 }
 
-Box2 BoundsOf(const Point2* points, std::size_t count)
-{
-  Box2 box{ points[0].x, points[0].x, points[0].y, points[0].y };
-  for (std::size_t i = 1; i < count; ++i)
-  {
-    box.XMin = std::min(box.XMin, points[i].x);
-    box.XMax = std::max(box.XMax, points[i].x);
-    box.YMin = std::min(box.YMin, points[i].y);
-    box.YMax = std::max(box.YMax, points[i].y);
-  }
-  return box;
-}
-
 void CheckTile(const Point2* tile, std::size_t count, std::size_t tileId)
 {
   if (count < 3)

@@ -41,14 +41,6 @@
 namespace tessera
 {
 
-struct Box2
-{
-  double XMin = 0.0;
-  double XMax = 0.0;
-  double YMin = 0.0;
-  double YMax = 0.0;
-};
-
 /// Polygons as flat rings: ring r has vertices RingOffsets[r] .. RingOffsets[r+1]-1.
 struct ClippedRings
 {

@@ -1,6 +1,9 @@
 #pragma once
 // Plain geometric value types shared by every core algorithm.
 
+#include <algorithm>
+#include <cstddef>
+
 namespace tessera
 {
 
@@ -17,6 +20,36 @@ inline bool operator==(const Point2& a, const Point2& b)
 inline bool operator!=(const Point2& a, const Point2& b)
 {
   return !(a == b);
+}
+
+/// An axis-aligned bounding box.
+struct Box2
+{
+  double XMin = 0.0;
+  double XMax = 0.0;
+  double YMin = 0.0;
+  double YMax = 0.0;
+
+  /// The smallest box holding this one and p.
+  void Extend(const Point2& p)
+  {
+    this->XMin = std::min(this->XMin, p.x);
+    this->XMax = std::max(this->XMax, p.x);
+    this->YMin = std::min(this->YMin, p.y);
+    this->YMax = std::max(this->YMax, p.y);
+  }
+  double LargerSide() const { return std::max(this->XMax - this->XMin, this->YMax - this->YMin); }
+};
+
+/// The bounding box of count >= 1 points.
+inline Box2 BoundsOf(const Point2* points, std::size_t count)
+{
+  Box2 box{ points[0].x, points[0].x, points[0].y, points[0].y };
+  for (std::size_t i = 1; i < count; ++i)
+  {
+    box.Extend(points[i]);
+  }
+  return box;
 }
 
 } // namespace tessera

@@ -41,25 +41,6 @@ void CheckFinitePoints(const std::vector<Point2>& points)
   }
 }
 
-struct Box
-{
-  double MinX, MaxX, MinY, MaxY;
-  double Extent() const { return std::max(this->MaxX - this->MinX, this->MaxY - this->MinY); }
-};
-
-Box BoundingBox(const std::vector<Point2>& points)
-{
-  Box box{ points[0].x, points[0].x, points[0].y, points[0].y };
-  for (const Point2& p : points)
-  {
-    box.MinX = std::min(box.MinX, p.x);
-    box.MaxX = std::max(box.MaxX, p.x);
-    box.MinY = std::min(box.MinY, p.y);
-    box.MaxY = std::max(box.MaxY, p.y);
-  }
-  return box;
-}
-
 Point2 ClampToGrid(Point2 q, const PixelGrid& grid)
 {
   // Rounding in ToPixelUnits can put an extreme point a hair outside the last pixel centre.
@@ -197,19 +178,19 @@ void RidgeGrouping::CheckImageSize(int imageSize) const
 
 PixelGrid RidgeGrouping::MakeGrid(const std::vector<Point2>& points, int imageSize) const
 {
-  const Box box = BoundingBox(points);
+  const Box2 box = BoundsOf(points.data(), points.size());
   const int margin = this->MarginPixels();
   PixelGrid grid;
-  grid.Spacing = box.Extent() / static_cast<double>(imageSize - 1 - 2 * margin);
+  grid.Spacing = box.LargerSide() / static_cast<double>(imageSize - 1 - 2 * margin);
   auto side = [&](double extent)
   {
     return std::min(imageSize, static_cast<int>(std::ceil(extent / grid.Spacing)) + 1 + 2 * margin);
   };
-  grid.Width = side(box.MaxX - box.MinX);
-  grid.Height = side(box.MaxY - box.MinY);
+  grid.Width = side(box.XMax - box.XMin);
+  grid.Height = side(box.YMax - box.YMin);
   // Centre the bounding box in the image.
-  grid.OriginX = 0.5 * (box.MinX + box.MaxX) - 0.5 * (grid.Width - 1) * grid.Spacing;
-  grid.OriginY = 0.5 * (box.MinY + box.MaxY) - 0.5 * (grid.Height - 1) * grid.Spacing;
+  grid.OriginX = 0.5 * (box.XMin + box.XMax) - 0.5 * (grid.Width - 1) * grid.Spacing;
+  grid.OriginY = 0.5 * (box.YMin + box.YMax) - 0.5 * (grid.Height - 1) * grid.Spacing;
   return grid;
 }
 
@@ -262,7 +243,7 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
       std::to_string(points.size()) + ": outputs are empty");
     return result;
   }
-  if (BoundingBox(points).Extent() == 0.0)
+  if (BoundsOf(points.data(), points.size()).LargerSide() == 0.0)
   {
     std::fill(result.GroupId.begin(), result.GroupId.end(), 0);
     result.Warnings.push_back("all points are identical: one group, no ridge and no curve");

@@ -221,14 +221,12 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
   {
     return order;
   }
-  double xmin = points[ids[0]].x, xmax = xmin, ymin = points[ids[0]].y, ymax = ymin;
+  Box2 box = BoundsOf(&points[ids[0]], 1);
   for (const std::int32_t id : ids)
   {
-    xmin = std::min(xmin, points[id].x);
-    xmax = std::max(xmax, points[id].x);
-    ymin = std::min(ymin, points[id].y);
-    ymax = std::max(ymax, points[id].y);
+    box.Extend(points[id]);
   }
+  const double xmin = box.XMin, xmax = box.XMax, ymin = box.YMin, ymax = box.YMax;
   const int levels = LevelCount(n);
   const int rounds = RoundCount(n);
   const double cells = double(std::uint32_t(1) << levels);

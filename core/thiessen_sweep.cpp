@@ -1287,15 +1287,8 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
                      "has " +
       std::to_string(window.Vertices().size()) + " sides or slanted ones");
   }
-  double xmin = std::numeric_limits<double>::infinity(), ymin = xmin;
-  double xmax = -xmin, ymax = -xmin;
-  for (const Point2& v : window.Vertices())
-  {
-    xmin = std::min(xmin, v.x);
-    xmax = std::max(xmax, v.x);
-    ymin = std::min(ymin, v.y);
-    ymax = std::max(ymax, v.y);
-  }
+  const Box2 bounds = BoundsOf(window.Vertices().data(), window.Vertices().size());
+  const double xmin = bounds.XMin, xmax = bounds.XMax, ymin = bounds.YMin, ymax = bounds.YMax;
   if (points.size() >= std::size_t(std::numeric_limits<std::int32_t>::max() / 4))
   {
     throw InputError(

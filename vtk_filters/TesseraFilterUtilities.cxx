@@ -112,15 +112,9 @@ tessera::Window ChooseWindow(const double bounds[4],
   {
     return tessera::Window::Rectangle(-1.0, 1.0, -1.0, 1.0);
   }
-  double xmin = points[0].x, xmax = xmin, ymin = points[0].y, ymax = ymin;
-  for (const auto& p : points)
-  {
-    xmin = std::min(xmin, p.x);
-    xmax = std::max(xmax, p.x);
-    ymin = std::min(ymin, p.y);
-    ymax = std::max(ymax, p.y);
-  }
-  const double side = std::max(xmax - xmin, ymax - ymin);
+  const tessera::Box2 box = tessera::BoundsOf(points.data(), points.size());
+  const double xmin = box.XMin, xmax = box.XMax, ymin = box.YMin, ymax = box.YMax;
+  const double side = box.LargerSide();
   // Identical points: a unit square around them (a padding of a zero side would be empty).
   const double pad = side > 0.0 ? padding * side : 0.5;
   const double margin = side > 0.0 && pad == 0.0 ? side * 1e-9 : 0.0; // keep points strictly inside
