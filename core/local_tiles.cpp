@@ -412,12 +412,7 @@ TileSet LocalTiles(const Tess& tess,
     });
   for (std::size_t k = 1; k < chunks; ++k)
   {
-    const TileSet& part = partTiles[k];
-    Append(tiles.PointIds, part.PointIds);
-    AppendOffsets(tiles.Offsets, part.Offsets, std::int64_t(tiles.Vertices.size()));
-    Append(tiles.Vertices, part.Vertices);
-    Append(tiles.Areas, part.Areas);
-    Append(tiles.NeighborCounts, part.NeighborCounts);
+    AppendTileSet(tiles, partTiles[k]);
     if (mates)
     {
       Append(mates->PointIds, partMates[k].PointIds);

@@ -314,6 +314,20 @@ void AppendTile(TileSet& tiles,
   tiles.NeighborCounts.push_back(sides);
 }
 
+void AppendTileSet(TileSet& tiles, const TileSet& from)
+{
+  const std::int64_t base = std::int64_t(tiles.Vertices.size());
+  tiles.PointIds.insert(tiles.PointIds.end(), from.PointIds.begin(), from.PointIds.end());
+  for (std::size_t k = 1; k < from.Offsets.size(); ++k)
+  {
+    tiles.Offsets.push_back(base + from.Offsets[k]);
+  }
+  tiles.Vertices.insert(tiles.Vertices.end(), from.Vertices.begin(), from.Vertices.end());
+  tiles.Areas.insert(tiles.Areas.end(), from.Areas.begin(), from.Areas.end());
+  tiles.NeighborCounts.insert(
+    tiles.NeighborCounts.end(), from.NeighborCounts.begin(), from.NeighborCounts.end());
+}
+
 void DropRepeatedVertices(std::vector<Point2>& polygon)
 {
   std::size_t kept = 0;

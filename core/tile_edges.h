@@ -76,6 +76,9 @@ void AppendTile(TileSet& tiles,
   const std::vector<Point2>& polygon,
   std::int32_t sides);
 
+/// Appends every tile of from to tiles (joining chunks computed apart, in order).
+void AppendTileSet(TileSet& tiles, const TileSet& from);
+
 /// The half-edges leaving a point, anticlockwise from vertexEdge.
 inline void CollectRing(const Tess& tess, std::int32_t vertexEdge, std::vector<std::int32_t>& ring)
 {

@@ -485,16 +485,7 @@ TileSet TessellationDual::Tiles() const
     });
   for (const TileSet& part : parts)
   {
-    const std::int64_t base = std::int64_t(tiles.Vertices.size());
-    tiles.PointIds.insert(tiles.PointIds.end(), part.PointIds.begin(), part.PointIds.end());
-    for (std::size_t k = 1; k < part.Offsets.size(); ++k)
-    {
-      tiles.Offsets.push_back(base + part.Offsets[k]);
-    }
-    tiles.Vertices.insert(tiles.Vertices.end(), part.Vertices.begin(), part.Vertices.end());
-    tiles.Areas.insert(tiles.Areas.end(), part.Areas.begin(), part.Areas.end());
-    tiles.NeighborCounts.insert(
-      tiles.NeighborCounts.end(), part.NeighborCounts.begin(), part.NeighborCounts.end());
+    AppendTileSet(tiles, part);
   }
   return tiles;
 }
