@@ -7,8 +7,9 @@
 // which also absorbs the rounding of the permanent itself. A permanent below 2^-900 (where an
 // underflowed product could matter) or a non-finite value goes to the exact tier.
 //
-// Contraction would change the roundings the bounds assume, so it is off for this file; the exact
-// products use std::fma, which is exact by definition.
+// Contraction would change the roundings the bounds assume and break the error-free
+// transformations of expansion_arithmetic.h, so it is off for this file (before the includes); the
+// exact products use std::fma, which is exact by definition.
 
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
@@ -18,6 +19,7 @@
 
 #include "window_predicates.h"
 
+#include "expansion_arithmetic.h"
 #include "predicates.h"
 
 #include <cmath>
@@ -50,59 +52,37 @@ int FilteredSign(double value, double permanent, double bound)
   return 2;
 }
 
-// An expansion: nonoverlapping doubles in increasing magnitude, no zeros.
+// An expansion: nonoverlapping doubles in increasing magnitude, no zeros. The arithmetic is that
+// of expansion_arithmetic.h; these wrappers size a vector to the bound, run the shared routine
+// and shrink the vector to the result.
 using Expansion = std::vector<double>;
-
-inline void TwoSum(double a, double b, double& x, double& y)
-{
-  x = a + b;
-  const double bv = x - a;
-  const double av = x - bv;
-  y = (a - av) + (b - bv);
-}
 
 Expansion Of(double a)
 {
   return a == 0.0 ? Expansion{} : Expansion{ a };
 }
 
-Expansion Grow(const Expansion& e, double b)
+int Length(const Expansion& e)
 {
-  Expansion h;
-  h.reserve(e.size() + 1);
-  double q = b;
-  for (const double ei : e)
-  {
-    double sum = 0.0, tail = 0.0;
-    TwoSum(q, ei, sum, tail);
-    q = sum;
-    if (tail != 0.0)
-    {
-      h.push_back(tail);
-    }
-  }
-  if (q != 0.0)
-  {
-    h.push_back(q);
-  }
+  return static_cast<int>(e.size());
+}
+
+Expansion Add(const Expansion& e, const Expansion& f)
+{
+  Expansion h(e.size() + f.size());
+  h.resize(static_cast<std::size_t>(
+    expansion::expansion_sum(e.data(), Length(e), f.data(), Length(f), h.data())));
   return h;
 }
 
-Expansion Add(Expansion e, const Expansion& f)
+Expansion Grow(const Expansion& e, double b)
 {
-  for (const double fi : f)
-  {
-    e = Grow(e, fi);
-  }
-  return e;
+  return Add(e, Of(b));
 }
 
 Expansion Negate(Expansion e)
 {
-  for (double& x : e)
-  {
-    x = -x;
-  }
+  expansion::negate(e.data(), Length(e));
   return e;
 }
 
@@ -111,41 +91,13 @@ Expansion Subtract(const Expansion& e, const Expansion& f)
   return Add(e, Negate(f));
 }
 
-// e * b (Shewchuk's scale_expansion_zeroelim, with fma for the exact products).
+// e * b. The products use std::fma (exact without splitting, so also for huge factors: these
+// inputs are not rescaled into a window as predicates.cpp's are).
 Expansion Scale(const Expansion& e, double b)
 {
-  Expansion h;
-  if (e.empty() || b == 0.0)
-  {
-    return h;
-  }
-  h.reserve(2 * e.size());
-  double q = e[0] * b;
-  double low = std::fma(e[0], b, -q);
-  if (low != 0.0)
-  {
-    h.push_back(low);
-  }
-  for (std::size_t i = 1; i < e.size(); ++i)
-  {
-    const double product = e[i] * b;
-    const double productLow = std::fma(e[i], b, -product);
-    double sum = 0.0, tail = 0.0;
-    TwoSum(q, productLow, sum, tail);
-    if (tail != 0.0)
-    {
-      h.push_back(tail);
-    }
-    TwoSum(product, sum, q, tail);
-    if (tail != 0.0)
-    {
-      h.push_back(tail);
-    }
-  }
-  if (q != 0.0)
-  {
-    h.push_back(q);
-  }
+  Expansion h(2 * e.size());
+  h.resize(static_cast<std::size_t>(
+    expansion::scale_expansion<expansion::two_product_fma>(e.data(), Length(e), b, h.data())));
   return h;
 }
 
@@ -162,18 +114,9 @@ Expansion Multiply(const Expansion& e, const Expansion& f)
 // a - b exactly.
 Expansion Difference(double a, double b)
 {
-  double x = 0.0, y = 0.0;
-  TwoSum(a, -b, x, y);
-  Expansion e;
-  if (y != 0.0)
-  {
-    e.push_back(y);
-  }
-  if (x != 0.0)
-  {
-    e.push_back(x);
-  }
-  return e;
+  Expansion h(2);
+  h.resize(static_cast<std::size_t>(expansion::diff_expansion(a, b, h.data())));
+  return h;
 }
 
 Expansion Sum2(double a, double b)
@@ -183,7 +126,7 @@ Expansion Sum2(double a, double b)
 
 int Sign(const Expansion& e)
 {
-  return e.empty() ? 0 : (e.back() > 0.0 ? 1 : -1);
+  return expansion::expansion_sign(e.data(), Length(e));
 }
 
 // h.a * u + h.b * v + k (u, v expansions, k a double).
