@@ -122,7 +122,13 @@ inline int diff_expansion(double a, double b, double* h)
 // sum: merge the components by magnitude, then carry a running approximation Q through them with
 // two_sum, emitting each roundoff. Correct for strongly nonoverlapping inputs with
 // round-to-nearest-even, which all expansions built here are.
-inline int expansion_sum(const double* e, int elen, const double* f, int flen, double* h)
+// Not inlined: it only runs once a filter has failed, and inlined into its callers GCC 12 at -O3
+// reports false stringop-overflow and maybe-uninitialized warnings (errors here).
+__attribute__((noinline)) inline int expansion_sum(const double* e,
+  int elen,
+  const double* f,
+  int flen,
+  double* h)
 {
   if (elen == 0)
   {
