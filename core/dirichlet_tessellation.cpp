@@ -125,11 +125,9 @@ void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids)
   earlierDuplicates.swap(this->DuplicatePairs);
   this->Coordinates.swap(local);
   this->BuildOrder = &order;
-  for (std::size_t k = 0; k < order.size(); ++k)
-  {
-    this->InsertAcceptedPoint(std::int32_t(k));
-  }
+  this->InsertInOrder(std::int32_t(order.size()));
   this->BuildOrder = nullptr;
+  this->NoCocircularTriangles = this->FindNoCocircularTriangles();
   this->Coordinates.swap(local);
   std::int32_t* const origins = this->Origins.data();
   const std::vector<std::int32_t> edgeChunks = parallel::ChunkBounds(
@@ -161,6 +159,46 @@ void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids)
   }
 }
 
+// One filtered incircle per interior edge, on both cores. Called by BuildFrom before the vertices
+// are renamed to input ids, while consecutive triangles have nearby vertices in memory.
+bool DirichletTessellation::FindNoCocircularTriangles() const
+{
+  if (!this->IsTwoDimensional())
+  {
+    return false;
+  }
+  const std::int32_t* const org = this->Origins.data();
+  const std::int32_t* const twin = this->Twins.data();
+  const Point2* const pts = this->Coordinates.data();
+  const std::int32_t triangles = std::int32_t(this->Origins.size() / 3);
+  const std::vector<std::int32_t> chunks =
+    parallel::ChunkBounds(triangles, parallel::ThreadCount(triangles));
+  std::vector<char> found(chunks.size() - 1, 0);
+  parallel::RunChunks(chunks.size() - 1,
+    [&](std::size_t c)
+    {
+      for (std::int32_t t = chunks[c]; t < chunks[c + 1]; ++t)
+      {
+        const std::int32_t a = org[3 * t], b = org[3 * t + 1], d = org[3 * t + 2];
+        if (a < 0 || b < 0 || d < 0)
+        {
+          continue; // ghost or free
+        }
+        for (std::int32_t e = 3 * t; e < 3 * t + 3; ++e)
+        {
+          const std::int32_t f = twin[e];
+          const std::int32_t across = org[Prev(f)];
+          if (f > e && across >= 0 && incircle_fast(pts[a], pts[b], pts[d], pts[across]) == 0)
+          {
+            found[c] = 1;
+            return;
+          }
+        }
+      }
+    });
+  return std::find(found.begin(), found.end(), 1) == found.end();
+}
+
 void DirichletTessellation::Validate(const Point2& p, std::size_t id) const
 {
   if (std::isnan(p.x) || std::isnan(p.y))
@@ -175,6 +213,7 @@ void DirichletTessellation::Validate(const Point2& p, std::size_t id) const
 
 std::int32_t DirichletTessellation::Insert(const Point2& p)
 {
+  this->NoCocircularTriangles = false;
   const std::size_t id = this->Coordinates.size();
   this->Validate(p, id);
   if (id >= std::size_t(INT32_MAX / 8))
@@ -270,7 +309,7 @@ void DirichletTessellation::LeaveCollinearPhase(std::int32_t id)
   this->SetTriangle(g1, b, a, Ghost, 3 * t0, 3 * g3 + 2, 3 * g2 + 1);
   this->SetTriangle(g2, id, b, Ghost, 3 * t0 + 1, 3 * g1 + 2, 3 * g3 + 1);
   this->SetTriangle(g3, a, id, Ghost, 3 * t0 + 2, 3 * g2 + 2, 3 * g1 + 1);
-  this->LastTriangle = t0;
+  this->Serial.LastTriangle = t0;
   ++this->Accepted;
   this->Accepted -= rest.size();
   for (const std::int32_t r : rest)
@@ -285,21 +324,37 @@ void DirichletTessellation::LeaveCollinearPhase(std::int32_t id)
 void DirichletTessellation::InsertIntoTriangulation(std::int32_t id)
 {
   std::int32_t edge = -1;
-  switch (this->Locate(this->Coordinates[id], edge))
+  if (this->InsertInRegion(this->Serial, id, edge) == Location::OnVertex)
+  {
+    this->RecordDuplicate(id, this->Origins[edge], edge);
+    return;
+  }
+  ++this->Accepted;
+}
+
+// Inserts vertex id unless it is a copy of a vertex (OnVertex, edge leaves that vertex) or its
+// insertion would change a triangle the region does not own (Foreign, nothing changed).
+DirichletTessellation::Location DirichletTessellation::InsertInRegion(Region& region,
+  std::int32_t id,
+  std::int32_t& edge)
+{
+  const Location location = this->Locate(region, this->Coordinates[id], edge);
+  switch (location)
   {
     case Location::OnVertex:
-      this->RecordDuplicate(id, this->Origins[edge], edge);
-      return;
+    case Location::Foreign:
+      return location;
     case Location::OnEdge:
-      this->SplitEdge(edge, id);
+      this->SplitEdge(region, edge, id);
       break;
     case Location::Inside:
     case Location::InGhost:
-      this->SplitTriangle(edge / 3, id);
+      this->SplitTriangle(region, edge / 3, id);
       break;
   }
-  this->RestoreDelaunay();
-  ++this->Accepted;
+  this->RestoreDelaunay(region);
+  ++region.Inserted;
+  return location;
 }
 
 bool DirichletTessellation::IsGhostTriangle(std::int32_t t) const
@@ -308,16 +363,19 @@ bool DirichletTessellation::IsGhostTriangle(std::int32_t t) const
     this->Origins[3 * t + 2] == Ghost;
 }
 
-// Visibility walk from the last triangle created: cross any edge that has p strictly on its far
-// side. In a Delaunay triangulation this walk cannot cycle. Reaching a ghost triangle means p is
-// strictly outside the hull edge just crossed.
-DirichletTessellation::Location DirichletTessellation::Locate(const Point2& p,
+// Visibility walk from the region's last triangle created: cross any edge that has p strictly on
+// its far side. In a Delaunay triangulation this walk cannot cycle. Reaching a ghost triangle means
+// p is strictly outside the hull edge just crossed. The walk stays in triangles the region owns:
+// it enters a triangle across an edge it owns, so only the apex needs checking, and it reads no
+// other triangle (in a two-region build another thread may be writing those).
+DirichletTessellation::Location DirichletTessellation::Locate(const Region& region,
+  const Point2& p,
   std::int32_t& edge) const
 {
   const Point2* const pts = this->Coordinates.data();
   const std::int32_t* const org = this->Origins.data();
   const std::int32_t* const twin = this->Twins.data();
-  std::int32_t t = this->LastTriangle;
+  std::int32_t t = region.LastTriangle;
   if (org[3 * t] == Ghost || org[3 * t + 1] == Ghost || org[3 * t + 2] == Ghost)
   {
     for (std::int32_t k = 0; k < 3; ++k)
@@ -338,6 +396,11 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Point2& p,
   {
     // First triangle: all three edges.
     const std::int32_t base = 3 * t;
+    if (!region.Owns(pts[org[base]]) || !region.Owns(pts[org[base + 1]]) ||
+      !region.Owns(pts[org[base + 2]]))
+    {
+      return Location::Foreign;
+    }
     const Point2& a = pts[org[base]];
     const Point2& b = pts[org[base + 1]];
     const Point2& c = pts[org[base + 2]];
@@ -366,6 +429,7 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Point2& p,
   // Then each triangle is entered through one edge and has two left to test. Both are evaluated
   // and the edge to cross is selected without a branch on the (unpredictable) side signs; only
   // the end of the walk is a branch.
+  std::int64_t steps = 0;
   while (crossed >= 0)
   {
     const std::int32_t f = twin[crossed];
@@ -377,12 +441,16 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Point2& p,
     if (apex == Ghost)
     {
       edge = f;
-      return Location::InGhost;
+      return region.GrowsHull ? Location::InGhost : Location::Foreign;
+    }
+    const Point2& c = pts[apex];
+    if (!region.Owns(c) || ++steps > region.MaxWalk)
+    {
+      return Location::Foreign;
     }
     t = tf;
     const Point2& a = pts[org[base + entered]];
     const Point2& b = pts[org[base + k1]];
-    const Point2& c = pts[apex];
     const int s1 = Orient(b, c, p);
     const int s2 = Orient(c, a, p);
     const bool cross1 = s1 < 0;
@@ -413,8 +481,11 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Point2& p,
   {
     if (sides[k] == 0)
     {
+      // Splitting the edge also splits the triangle across it.
       edge = base + k;
-      return Location::OnEdge;
+      const std::int32_t across = org[Prev(twin[edge])];
+      return (across == Ghost ? region.GrowsHull : region.Owns(pts[across])) ? Location::OnEdge
+                                                                             : Location::Foreign;
     }
   }
   edge = base;
@@ -485,10 +556,10 @@ void DirichletTessellation::SetTriangle(std::int32_t t,
 //         / \                     /|\ .
 //        /   \        ->         / p \ .
 //       x-----y                 x-----y
-void DirichletTessellation::SplitTriangle(std::int32_t t, std::int32_t p)
+void DirichletTessellation::SplitTriangle(Region& region, std::int32_t t, std::int32_t p)
 {
-  const std::int32_t t1 = this->NewTriangle();
-  const std::int32_t t2 = this->NewTriangle();
+  const std::int32_t t1 = this->NewTriangle(region);
+  const std::int32_t t2 = this->NewTriangle(region);
   std::int32_t* const org = this->Origins.data();
   std::int32_t* const twin = this->Twins.data();
   const std::int32_t e = 3 * t, e1 = 3 * t1, e2 = 3 * t2;
@@ -524,10 +595,10 @@ void DirichletTessellation::SplitTriangle(std::int32_t t, std::int32_t p)
     }
     this->VertexEdges[p] = e + 2;
   }
-  this->FlipStack.push_back(t);
-  this->FlipStack.push_back(t1);
-  this->FlipStack.push_back(t2);
-  this->LastTriangle = t;
+  region.FlipStack.push_back(t);
+  region.FlipStack.push_back(t1);
+  region.FlipStack.push_back(t2);
+  region.LastTriangle = t;
 }
 
 // p lies strictly inside edge x->y (half-edge e); the far side may be a ghost (w = Ghost).
@@ -537,7 +608,7 @@ void DirichletTessellation::SplitTriangle(std::int32_t t, std::int32_t p)
 //        x---y        ->         x-p-y
 //         \ /                     \|/
 //          w                       w
-void DirichletTessellation::SplitEdge(std::int32_t e, std::int32_t p)
+void DirichletTessellation::SplitEdge(Region& region, std::int32_t e, std::int32_t p)
 {
   const std::int32_t f = this->Twins[e];
   const std::int32_t x = this->Origins[e], y = this->Origins[Next(e)], z = this->Origins[Prev(e)];
@@ -545,37 +616,38 @@ void DirichletTessellation::SplitEdge(std::int32_t e, std::int32_t p)
   const std::int32_t oyz = this->Twins[Next(e)], ozx = this->Twins[Prev(e)];
   const std::int32_t oxw = this->Twins[Next(f)], owy = this->Twins[Prev(f)];
   const std::int32_t ta = e / 3, tb = f / 3;
-  const std::int32_t tc = this->NewTriangle();
-  const std::int32_t td = this->NewTriangle();
+  const std::int32_t tc = this->NewTriangle(region);
+  const std::int32_t td = this->NewTriangle(region);
   this->SetTriangle(ta, y, z, p, oyz, 3 * tb + 2, 3 * td + 1);
   this->SetTriangle(tb, z, x, p, ozx, 3 * tc + 2, 3 * ta + 1);
   this->SetTriangle(tc, x, w, p, oxw, 3 * td + 2, 3 * tb + 1);
   this->SetTriangle(td, w, y, p, owy, 3 * ta + 2, 3 * tc + 1);
-  this->FlipStack.push_back(ta);
-  this->FlipStack.push_back(tb);
-  this->FlipStack.push_back(tc);
-  this->FlipStack.push_back(td);
-  this->LastTriangle = ta;
+  region.FlipStack.push_back(ta);
+  region.FlipStack.push_back(tb);
+  region.FlipStack.push_back(tc);
+  region.FlipStack.push_back(td);
+  region.LastTriangle = ta;
 }
 
 // Pops the flip stack: each triangle t = (x, y, p) has the new point p third; its first edge
 // x -> y is flipped when p lies strictly inside the circle of the triangle (y, x, q) across it
 // (for a ghost triangle the "circle" is the open half-plane beyond its hull edge). Both results
-// keep p third, so both are checked again.
+// keep p third, so both are checked again. An edge whose far triangle the region does not own is
+// left as it is (two_region_build.cpp legalizes those edges afterwards).
 //
 //          p                       p
 //         / \                     /|\ .
 //        x---y        ->         x | y
 //         \ /                     \|/
 //          q                       q
-void DirichletTessellation::RestoreDelaunay()
+void DirichletTessellation::RestoreDelaunay(Region& region)
 {
   std::int32_t* const org = this->Origins.data();
   std::int32_t* const twin = this->Twins.data();
   const Point2* const pts = this->Coordinates.data();
   // Null in a batch build, which does not keep vertex half-edges.
   std::int32_t* const vertexEdge = this->VertexEdges.empty() ? nullptr : this->VertexEdges.data();
-  std::vector<std::int32_t>& stack = this->FlipStack;
+  std::vector<std::int32_t>& stack = region.FlipStack;
   while (!stack.empty())
   {
     const std::int32_t t = stack.back();
@@ -591,6 +663,10 @@ void DirichletTessellation::RestoreDelaunay()
     if (q == Ghost)
     {
       continue; // e is a hull edge seen from inside: p is on the inner side
+    }
+    if (!region.Owns(pts[q]))
+    {
+      continue;
     }
     const std::int32_t x = org[e], y = org[e + 1], p = org[e + 2];
     bool conflict;
@@ -830,7 +906,7 @@ std::size_t DirichletTessellation::StructureBytes() const
   return this->Coordinates.capacity() * sizeof(Point2) +
     (this->Origins.capacity() + this->Twins.capacity() + this->FreeTriangles.capacity() +
       this->Collinear.capacity() + this->Rejected.capacity() + this->RemovedPoints.capacity() +
-      this->FlipStack.capacity() + this->VertexEdges.capacity()) *
+      this->Serial.FlipStack.capacity() + this->VertexEdges.capacity()) *
     sizeof(std::int32_t) +
     this->StatusBytes.capacity() +
     this->DuplicatePairs.capacity() * sizeof(std::pair<std::int32_t, std::int32_t>);
@@ -851,7 +927,8 @@ std::int32_t DirichletTessellation::FindVertexEdge(std::int32_t id) const
     }
   }
   std::int32_t edge = -1;
-  if (this->Locate(this->Coordinates[id], edge) == Location::OnVertex && this->Origins[edge] == id)
+  if (this->Locate(this->Serial, this->Coordinates[id], edge) == Location::OnVertex &&
+    this->Origins[edge] == id)
   {
     return edge;
   }
@@ -874,6 +951,7 @@ std::int32_t DirichletTessellation::EdgeLeaving(std::int32_t id) const
 
 void DirichletTessellation::Remove(std::int32_t id)
 {
+  this->NoCocircularTriangles = false;
   const PointStatus status = this->Status(id); // throws for an out-of-range id
   if (status == PointStatus::Removed)
   {
@@ -1075,7 +1153,7 @@ void DirichletTessellation::ApplyPlan(const std::vector<Ear>& plan,
     this->Twins[3 * t] = this->Twins[3 * t + 1] = this->Twins[3 * t + 2] = -1;
     this->FreeTriangles.push_back(t);
   }
-  this->LastTriangle = slots[0];
+  this->Serial.LastTriangle = slots[0];
 }
 
 // Removes a hull vertex v without rebuilding. Its star is the real triangles (v, n_i, n_i+1)
@@ -1214,7 +1292,7 @@ bool DirichletTessellation::RemoveHullVertex(std::int32_t edge)
     this->Twins[3 * free] = this->Twins[3 * free + 1] = this->Twins[3 * free + 2] = -1;
     this->FreeTriangles.push_back(free);
   }
-  this->LastTriangle = slots[0];
+  this->Serial.LastTriangle = slots[0];
   return true;
 }
 
@@ -1243,7 +1321,7 @@ void DirichletTessellation::RebuildWithout(std::int32_t id)
   this->Twins.clear();
   this->FreeTriangles.clear();
   this->Collinear.clear();
-  this->LastTriangle = 0;
+  this->Serial.LastTriangle = 0;
   this->Accepted = 0;
   // BuildFrom numbers vertices locally: the vertex half-edges are derived afterwards.
   this->VertexEdges.clear();

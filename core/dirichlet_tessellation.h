@@ -35,6 +35,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -114,6 +115,12 @@ public:
   /// otherwise a walk from the last triangle.
   std::int32_t EdgeLeaving(std::int32_t id) const;
   bool IsFreeTriangle(std::int32_t t) const { return this->Origins[3 * t] == Free; }
+  /// True when a batch build found no two adjacent real triangles exactly co-circular (no
+  /// degenerate vertex of the tessellation) and nothing was inserted or removed since: the
+  /// Delaunay faces are then exactly the real triangles. False when unknown or when there are
+  /// such triangles. The check runs while the build's points are in spatial order, where it is
+  /// cheap; derived results use it to skip their own.
+  bool KnownFreeOfCocircularTriangles() const { return this->NoCocircularTriangles; }
 
   /// Bytes held by the structure (capacities of all arrays, coordinates included). A batch build
   /// holds no per-id arrays besides the coordinates; the first Insert adds a status byte per id
@@ -127,7 +134,34 @@ private:
     Inside,
     OnEdge,
     OnVertex,
-    InGhost
+    InGhost,
+    Foreign ///< inserting the point would change a triangle its region does not own
+  };
+
+  /// Who may change which triangles while points are inserted. The serial insertion (member
+  /// Serial) owns every triangle. The two regions of a parallel batch build each own the
+  /// triangles whose vertices all lie on their side of a vertical seam (ghosts count for neither
+  /// side), and defer a point whose insertion would touch any other triangle
+  /// (two_region_build.cpp).
+  struct Region
+  {
+    double SeamX = std::numeric_limits<double>::infinity();
+    bool Upper = false; ///< owns the points with x >= SeamX rather than x < SeamX
+    bool Owns(const Point2& p) const { return (p.x < this->SeamX) != this->Upper; }
+    /// Whether the region may insert points outside the hull. A region that owns part of the hull
+    /// only must not: its hull may be reflex where a flip across the seam was skipped, and a new
+    /// triangle on a hull edge could then overlap the triangulation.
+    bool GrowsHull = true;
+    std::int32_t LastTriangle = 0;
+    /// Preallocated triangles [NextSlot, EndSlot), used before NewTriangle() is asked.
+    std::int32_t NextSlot = 0;
+    std::int32_t EndSlot = 0;
+    /// A walk longer than this gives up (Foreign): a safety net where the triangulation outside
+    /// the region is not yet Delaunay.
+    std::int64_t MaxWalk = std::numeric_limits<std::int64_t>::max();
+    std::vector<std::int32_t> FlipStack;
+    std::vector<std::int32_t> Deferred; ///< points left for the serial insertion
+    std::size_t Inserted = 0;
   };
 
   void Validate(const Point2& p, std::size_t id) const;
@@ -141,11 +175,22 @@ private:
   void InsertCollinear(std::int32_t id);
   void LeaveCollinearPhase(std::int32_t id);
   void InsertIntoTriangulation(std::int32_t id);
-  Location Locate(const Point2& p, std::int32_t& edge) const;
-  void SplitTriangle(std::int32_t t, std::int32_t p);
-  void SplitEdge(std::int32_t e, std::int32_t p);
-  void RestoreDelaunay();
+  Location InsertInRegion(Region& region, std::int32_t id, std::int32_t& edge);
+  Location Locate(const Region& region, const Point2& p, std::int32_t& edge) const;
+  void SplitTriangle(Region& region, std::int32_t t, std::int32_t p);
+  void SplitEdge(Region& region, std::int32_t e, std::int32_t p);
+  void RestoreDelaunay(Region& region);
   std::int32_t NewTriangle();
+  std::int32_t NewTriangle(Region& region)
+  {
+    return region.NextSlot < region.EndSlot ? region.NextSlot++ : this->NewTriangle();
+  }
+  // Two-region batch build (two_region_build.cpp).
+  void InsertInOrder(std::int32_t count);
+  bool InsertInTwoRegions(std::int32_t first, std::int32_t end);
+  void LegalizeEdges(std::vector<std::int32_t>& edges);
+  void FlipEdge(std::int32_t e);
+  void CompactFreeTriangles();
   void SetTriangle(std::int32_t t,
     std::int32_t a,
     std::int32_t b,
@@ -153,6 +198,7 @@ private:
     std::int32_t ta,
     std::int32_t tb,
     std::int32_t tc);
+  bool FindNoCocircularTriangles() const;
   void RecordDuplicate(std::int32_t id, std::int32_t kept, std::int32_t keptEdge);
   void Relabel(std::int32_t edge, std::int32_t newId);
   std::int32_t FindVertexEdge(std::int32_t id) const;
@@ -183,16 +229,16 @@ private:
   std::vector<std::int32_t> Rejected;
   std::vector<std::pair<std::int32_t, std::int32_t>> DuplicatePairs;
   std::vector<std::int32_t> RemovedPoints;
-  std::vector<std::int32_t> FlipStack;
   /// Per id, a PointStatus in the low bits plus HasDuplicates for an accepted point that exact
   /// copies point to; empty until the first Insert or Remove (a batch build does not pay for it).
   std::vector<std::uint8_t> StatusBytes;
   /// Per id, one half-edge leaving that vertex (-1 for ids that are not vertices); empty until
   /// the first Remove, then kept up to date wherever a triangle's vertices are written.
   std::vector<std::int32_t> VertexEdges;
-  std::int32_t LastTriangle = 0;
+  Region Serial;
   const std::vector<std::int32_t>* BuildOrder = nullptr;
   std::size_t Accepted = 0;
+  bool NoCocircularTriangles = false;
 };
 
 } // namespace tessera

@@ -750,12 +750,14 @@ struct FaceChunk
 /// out (3 ids each, consecutive) and stops early if two adjacent real triangles are exactly
 /// co-circular (then faces must be merged and the full dual is needed). One inlined, filtered
 /// incircle per interior edge, from the triangle with the smaller index: far cheaper than the
-/// dual's centres when, as for most data, no face is degenerate.
+/// dual's centres when, as for most data, no face is degenerate. When the batch build already
+/// checked (KnownFreeOfCocircularTriangles), no point is read at all.
 FaceChunk WriteTriangleFaces(const DirichletTessellation& tessellation,
   std::int32_t begin,
   std::int32_t end,
   std::int32_t* out)
 {
+  const bool check = !tessellation.KnownFreeOfCocircularTriangles();
   const std::int32_t* org = tessellation.Origin().data();
   const std::int32_t* twin = tessellation.Twin().data();
   const Point2* pts = tessellation.Points().data();
@@ -767,7 +769,7 @@ FaceChunk WriteTriangleFaces(const DirichletTessellation& tessellation,
   const std::int32_t prefetchEnd = std::max(begin, end - ahead);
   for (std::int32_t t = begin; t < end; ++t)
   {
-    if (t < prefetchEnd)
+    if (check && t < prefetchEnd)
     {
       // Ghost and free ids are negative, a free triangle's twins -1: clamped to stay in bounds.
       const std::int32_t* next = org + 3 * (t + ahead);
@@ -792,6 +794,10 @@ FaceChunk WriteTriangleFaces(const DirichletTessellation& tessellation,
     write[1] = v[m1];
     write[2] = v[m2];
     write += 3;
+    if (!check)
+    {
+      continue;
+    }
     // The opposite vertices of the neighbours with a larger half-edge index (ghosts have the
     // vertex Ghost there), gathered without a branch, then tested.
     std::int32_t opposite[3];

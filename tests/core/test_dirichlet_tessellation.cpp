@@ -5,6 +5,7 @@
 #include "dirichlet_tessellation.h"
 #include "errors.h"
 #include "predicates.h"
+#include "spatial_order.h"
 #include "tiles.h"
 
 #include "test_support.h"
@@ -930,4 +931,197 @@ TEST(DirichletTessellation, EdgeLeavingNamesAnEdgeOfEveryVertexOnly)
     EXPECT_EQ(t.EdgeLeaving(200), -1); // the duplicate
     EXPECT_EQ(t.EdgeLeaving(201), -1); // outside
   }
+}
+
+// -------------------------------------------------------------------------------------------
+// Large batches are built by two regions on either side of a seam, then sewn (two_region_build):
+// the result must be the triangulation a plain serial insertion gives.
+
+namespace
+{
+
+constexpr std::size_t TwoRegionSize = 250000; // above the two-region threshold (200000)
+
+// Every edge is locally Delaunay under the exact predicates (Lawson: then the whole triangulation
+// is), and the hull is convex: no reflex hull vertex between two ghost triangles.
+void CheckLocallyDelaunay(const Tess& t)
+{
+  const auto& org = t.Origin();
+  const auto& twin = t.Twin();
+  const auto& pts = t.Points();
+  std::size_t bad = 0;
+  for (std::int32_t e = 0; e < std::int32_t(org.size()); ++e)
+  {
+    const std::int32_t f = twin[e];
+    const std::int32_t a = org[e], b = org[Tess::Next(e)], c = org[Tess::Prev(e)];
+    const std::int32_t d = org[Tess::Prev(f)];
+    if (a == Tess::Ghost)
+    {
+      bad += orient2d(pts[d], pts[b], pts[c]) > 0;
+    }
+    else if (b == Tess::Ghost)
+    {
+      bad += orient2d(pts[a], pts[d], pts[c]) > 0;
+    }
+    else if (c != Tess::Ghost && d != Tess::Ghost)
+    {
+      bad += incircle(pts[b], pts[a], pts[d], pts[c]) > 0;
+    }
+  }
+  EXPECT_EQ(bad, 0u);
+}
+
+// The same points inserted one by one (serial insertion throughout) in the batch's own spatial
+// order, with the id map from streaming ids back to input ids.
+Tess StreamedInSpatialOrder(const std::vector<Point2>& points, std::vector<std::int32_t>& idMap)
+{
+  std::vector<std::int32_t> ids(points.size());
+  std::iota(ids.begin(), ids.end(), 0);
+  idMap = BrioHilbertOrder(points, ids);
+  Tess streaming(UnitWindow());
+  for (const std::int32_t id : idMap)
+  {
+    streaming.Insert(points[id]);
+  }
+  return streaming;
+}
+
+// The Delaunay faces as cycles of coordinates: comparable whichever copy of a duplicate is kept.
+std::vector<std::vector<std::pair<double, double>>> FacesByCoordinates(const Tess& t)
+{
+  const DelaunayFaces faces = ComputeDelaunayFaces(t, false);
+  std::vector<std::vector<std::pair<double, double>>> result;
+  for (std::size_t f = 0; f + 1 < faces.Offsets.size(); ++f)
+  {
+    std::vector<std::pair<double, double>> face;
+    for (std::int64_t k = faces.Offsets[f]; k < faces.Offsets[f + 1]; ++k)
+    {
+      const Point2& p = t.Points()[faces.PointIds[k]];
+      face.emplace_back(p.x, p.y);
+    }
+    std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
+    result.push_back(face);
+  }
+  std::sort(result.begin(), result.end());
+  return result;
+}
+
+void ExpectSameAsStreaming(const std::vector<Point2>& points)
+{
+  const Tess batch(UnitWindow(), points);
+  CheckStructure(batch);
+  CheckLocallyDelaunay(batch);
+  // No preallocated triangle is left unused: exactly 2n - 2 triangles with the ghosts.
+  EXPECT_EQ(batch.Origin().size(), 3 * (2 * batch.AcceptedCount() - 2));
+  std::vector<std::int32_t> idMap;
+  const Tess streaming = StreamedInSpatialOrder(points, idMap);
+  EXPECT_EQ(batch.AcceptedCount(), streaming.AcceptedCount());
+  EXPECT_EQ(batch.Duplicates().size(), streaming.Duplicates().size());
+  if (batch.Duplicates().empty())
+  {
+    // Tiles are left out: their circumcentres are computed from the lowest id, which differs.
+    EXPECT_TRUE(MakeCanonical(batch, {}, false) == MakeCanonical(streaming, idMap, false));
+  }
+  else
+  {
+    EXPECT_TRUE(FacesByCoordinates(batch) == FacesByCoordinates(streaming));
+  }
+}
+
+} // namespace
+
+TEST(DirichletTessellation, TwoRegionBuildOfUniformPointsEqualsSerialInsertion)
+{
+  const std::vector<Point2> points = UniformPoints(TwoRegionSize, 41);
+  ExpectSameAsStreaming(points);
+  const Tess batch(UnitWindow(), points);
+  EXPECT_EQ(CheckStructure(batch), 2 * points.size() - 2 - HullSize(batch));
+}
+
+// Every face degenerate, and lattice points exactly on the seam.
+TEST(DirichletTessellation, TwoRegionBuildOfALatticeEqualsSerialInsertion)
+{
+  std::vector<Point2> points;
+  for (int i = 0; i < 500; ++i)
+  {
+    for (int j = 0; j < 500; ++j)
+    {
+      points.push_back({ i / 500.0, j / 500.0 });
+    }
+  }
+  std::shuffle(points.begin(), points.end(), std::mt19937(5));
+  ExpectSameAsStreaming(points);
+}
+
+// Many exact duplicates (deferred, then compacted away) and co-circular quadruples.
+TEST(DirichletTessellation, TwoRegionBuildWithDuplicatesEqualsSerialInsertion)
+{
+  std::mt19937 random(8);
+  std::uniform_int_distribution<int> cell(0, 399);
+  std::vector<Point2> points(TwoRegionSize);
+  for (Point2& p : points)
+  {
+    p = { cell(random) / 400.0, cell(random) / 400.0 };
+  }
+  ExpectSameAsStreaming(points);
+}
+
+// A dense cluster with a sparse halo: most hull vertices arrive after the serial sample, so the
+// regions extend the hull on both sides of the seam and the sewing must make it convex again.
+TEST(DirichletTessellation, TwoRegionBuildThatGrowsTheHullEqualsSerialInsertion)
+{
+  std::mt19937 random(13);
+  std::normal_distribution<double> normal(0.5, 0.05);
+  std::vector<Point2> points(TwoRegionSize);
+  for (Point2& p : points)
+  {
+    p = { std::clamp(normal(random), -0.4, 1.4), std::clamp(normal(random), -0.4, 1.4) };
+  }
+  ExpectSameAsStreaming(points);
+}
+
+// The build's own co-circularity check against the exact incircle of every interior edge.
+TEST(DirichletTessellation, CocircularTrianglesAreKnownAfterABatchBuild)
+{
+  const auto anyCocircularEdge = [](const Tess& t)
+  {
+    const auto& org = t.Origin();
+    const auto& pts = t.Points();
+    for (std::int32_t e = 0; e < std::int32_t(org.size()); ++e)
+    {
+      const std::int32_t f = t.Twin()[e];
+      const std::int32_t a = org[e], b = org[Tess::Next(e)], c = org[Tess::Prev(e)];
+      const std::int32_t d = org[Tess::Prev(f)];
+      if (a >= 0 && b >= 0 && c >= 0 && d >= 0 && incircle(pts[a], pts[b], pts[c], pts[d]) == 0)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  std::vector<Point2> lattice;
+  for (int i = 0; i < 10; ++i)
+  {
+    for (int j = 0; j < 10; ++j)
+    {
+      lattice.push_back({ i / 10.0, j / 10.0 });
+    }
+  }
+  std::vector<Point2> square = UniformPoints(300, 3);
+  square.insert(square.end(), { { 0.25, 0.25 }, { 0.75, 0.25 }, { 0.75, 0.75 }, { 0.25, 0.75 } });
+  for (const auto& points :
+    { UniformPoints(2000, 2), lattice, square, UniformPoints(TwoRegionSize, 4) })
+  {
+    Tess t(UnitWindow(), points);
+    EXPECT_EQ(t.KnownFreeOfCocircularTriangles(), !anyCocircularEdge(t));
+    if (t.KnownFreeOfCocircularTriangles())
+    {
+      t.Insert({ 0.5, 0.5 });
+      EXPECT_FALSE(t.KnownFreeOfCocircularTriangles());
+    }
+  }
+  Tess removed(UnitWindow(), UniformPoints(500, 6));
+  ASSERT_TRUE(removed.KnownFreeOfCocircularTriangles());
+  removed.Remove(3);
+  EXPECT_FALSE(removed.KnownFreeOfCocircularTriangles());
 }

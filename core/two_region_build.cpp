@@ -1,0 +1,304 @@
+// Two-region batch insertion: the Delaunay triangulation of a large batch built on two cores.
+//
+// 1. A random sample, the first 1/32 of the BRIO order (its early rounds are random subsets), is
+//    inserted serially. The sample's median x is the seam.
+// 2. Two regions insert the rest at once, each the points on its side of the seam in BRIO order.
+//    A region owns the triangles whose vertices all lie on its side (a ghost vertex counts for
+//    neither side). It defers a point whose walk or split would touch another triangle, and skips
+//    a Lawson flip across an edge into another triangle. The triangles that straddle the seam
+//    belong to neither region: nobody changes them while both run, so both may read them; the
+//    twin link of such a triangle's edge whose ends are on one side is written by that side alone.
+//
+//             lower region      seam      upper region
+//        +---------+---------+----:----+---------+
+//        |  owned  | /  straddling :    \  owned  |     changed by the upper thread only
+//        |  lower  |/ (frozen while both run)\  upper  |
+//        +---------+---------+----:----+---------+
+//
+// 3. The triangulation is then Delaunay except possibly at edges of straddling triangles (the
+//    skipped flips): Lawson's flip algorithm, which reaches the Delaunay triangulation from any
+//    triangulation, is run from those edges.
+// 4. The deferred points are inserted serially; preallocated triangles left unused (by points
+//    that turned out to be duplicates) are compacted away.
+//
+// Each region reads only what it owns and what nobody writes, so the result depends on the input
+// alone, never on timing or on the number of threads: with one core the regions run in turn.
+
+#include "dirichlet_tessellation.h"
+
+#include "parallel_chunks.h"
+#include "predicates_inline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <thread>
+
+namespace tessera
+{
+namespace
+{
+
+// Below this many points a serial build is faster than starting a thread and sewing the seam.
+constexpr std::int32_t TwoRegionMinimum = 200000;
+
+// The share of the batch inserted serially first: larger makes the straddling band thinner (fewer
+// deferred points), smaller leaves more to the two regions.
+constexpr std::int32_t SampleDivisor = 32;
+
+} // namespace
+
+// Inserts vertices [0, count) (BuildFrom's local numbering) in order, on two regions when the
+// batch is large.
+void DirichletTessellation::InsertInOrder(std::int32_t count)
+{
+  const std::int32_t sample = count >= TwoRegionMinimum ? count / SampleDivisor : count;
+  for (std::int32_t k = 0; k < sample; ++k)
+  {
+    this->InsertAcceptedPoint(k);
+  }
+  if (sample < count && !this->InsertInTwoRegions(sample, count))
+  {
+    for (std::int32_t k = sample; k < count; ++k)
+    {
+      this->InsertAcceptedPoint(k);
+    }
+  }
+}
+
+// Steps 2 to 4 for vertices [first, end). Returns false, having inserted nothing, when the
+// sample is not yet two-dimensional.
+bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t end)
+{
+  if (!this->IsTwoDimensional() || this->Accepted < 3)
+  {
+    return false;
+  }
+  const Point2* const pts = this->Coordinates.data();
+  std::vector<double> sampleX(static_cast<std::size_t>(first));
+  for (std::int32_t k = 0; k < first; ++k)
+  {
+    sampleX[k] = pts[k].x;
+  }
+  std::nth_element(sampleX.begin(), sampleX.begin() + first / 2, sampleX.end());
+  Region regions[2];
+  for (int side = 0; side < 2; ++side)
+  {
+    regions[side].SeamX = sampleX[first / 2];
+    regions[side].Upper = side == 1;
+    regions[side].GrowsHull = false;
+    regions[side].MaxWalk = std::int64_t(8 * std::sqrt(double(end))) + 1024;
+  }
+  std::vector<std::int32_t> sides[2];
+  for (std::int32_t k = first; k < end; ++k)
+  {
+    sides[regions[1].Owns(pts[k]) ? 1 : 0].push_back(k);
+  }
+
+  // Which triangles straddle the seam, before anything else changes.
+  const auto ownedBy = [&](const Region& region, std::int32_t t)
+  {
+    for (std::int32_t k = 0; k < 3; ++k)
+    {
+      const std::int32_t v = this->Origins[3 * t + k];
+      if (v != Ghost && !region.Owns(pts[v]))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  const std::int32_t sampleTriangles = std::int32_t(this->Origins.size() / 3);
+  std::vector<std::int32_t> seamEdges;
+  for (std::int32_t t = 0; t < sampleTriangles; ++t)
+  {
+    if (!this->IsFreeTriangle(t) && !ownedBy(regions[0], t) && !ownedBy(regions[1], t))
+    {
+      seamEdges.insert(seamEdges.end(), { 3 * t, 3 * t + 1, 3 * t + 2 });
+    }
+  }
+
+  // Each region starts at its owned triangle nearest to its first point, and gets 2 triangles
+  // per point: exactly what inserting all of them takes.
+  std::int32_t slot = sampleTriangles;
+  for (int side = 0; side < 2; ++side)
+  {
+    Region& region = regions[side];
+    region.NextSlot = slot;
+    slot += 2 * std::int32_t(sides[side].size());
+    region.EndSlot = slot;
+    region.LastTriangle = this->Serial.LastTriangle;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::int32_t t = 0; !sides[side].empty() && t < sampleTriangles; ++t)
+    {
+      if (!this->IsFreeTriangle(t) && !this->IsGhostTriangle(t) && ownedBy(region, t))
+      {
+        const Point2& v = pts[this->Origins[3 * t]];
+        const Point2& p = pts[sides[side].front()];
+        const double distance = (v.x - p.x) * (v.x - p.x) + (v.y - p.y) * (v.y - p.y);
+        if (distance < nearest)
+        {
+          nearest = distance;
+          region.LastTriangle = t;
+        }
+      }
+    }
+  }
+  this->Origins.resize(3 * std::size_t(slot), Free);
+  this->Twins.resize(3 * std::size_t(slot), -1);
+
+  const auto insertSide = [&](std::size_t side)
+  {
+    Region& region = regions[side];
+    for (const std::int32_t id : sides[side])
+    {
+      std::int32_t edge = -1;
+      const Location location = this->InsertInRegion(region, id, edge);
+      if (location == Location::Foreign || location == Location::OnVertex)
+      {
+        region.Deferred.push_back(id);
+      }
+    }
+  };
+  if (std::thread::hardware_concurrency() > 1)
+  {
+    parallel::RunChunks(2, insertSide);
+  }
+  else
+  {
+    insertSide(0);
+    insertSide(1);
+  }
+
+  for (Region& region : regions)
+  {
+    this->Accepted += region.Inserted;
+    for (std::int32_t t = region.EndSlot - 1; t >= region.NextSlot; --t)
+    {
+      this->FreeTriangles.push_back(t);
+    }
+  }
+  this->LegalizeEdges(seamEdges);
+  this->Serial.LastTriangle = regions[0].LastTriangle;
+  for (const Region& region : regions)
+  {
+    for (const std::int32_t id : region.Deferred)
+    {
+      this->InsertAcceptedPoint(id);
+    }
+  }
+  this->CompactFreeTriangles();
+  return true;
+}
+
+// Lawson's flip algorithm from the given half-edges: flips every edge whose far apex lies strictly
+// inside the circle of its triangle, and checks the four edges around each flip, until none is
+// left. Ghost triangles take part as in RestoreDelaunay: the "circle" of a ghost triangle is the
+// open half-plane beyond its hull edge, so flips also make the hull convex again.
+void DirichletTessellation::LegalizeEdges(std::vector<std::int32_t>& edges)
+{
+  const Point2* const pts = this->Coordinates.data();
+  const std::int32_t* const org = this->Origins.data();
+  while (!edges.empty())
+  {
+    const std::int32_t e = edges.back();
+    edges.pop_back();
+    const std::int32_t f = this->Twins[e];
+    const std::int32_t a = org[e], b = org[Next(e)], c = org[Prev(e)], d = org[Prev(f)];
+    bool illegal;
+    if (a == Ghost)
+    {
+      illegal = orient2d_fast(pts[d], pts[b], pts[c]) > 0; // b is a reflex hull vertex
+    }
+    else if (b == Ghost)
+    {
+      illegal = orient2d_fast(pts[a], pts[d], pts[c]) > 0; // a is a reflex hull vertex
+    }
+    else if (c == Ghost || d == Ghost)
+    {
+      illegal = false; // a hull edge
+    }
+    else
+    {
+      illegal = incircle_fast(pts[b], pts[a], pts[d], pts[c]) > 0;
+    }
+    if (illegal)
+    {
+      this->FlipEdge(e);
+      // After the flip e is a -> d, Prev(e) c -> a, f d -> b and Next(f) b -> c.
+      edges.insert(edges.end(), { e, Prev(e), f, Next(f) });
+    }
+  }
+}
+
+// Replaces the diagonal a - b of the quadrilateral a, d, b, c by c - d, keeping both triangles'
+// slots and the positions of e and its twin f in them.
+//
+//          c                        c
+//         / \                      /|\ .
+//        a-e->b         ->        a | b
+//         \ /                      \|/
+//          d                        d
+void DirichletTessellation::FlipEdge(std::int32_t e)
+{
+  std::int32_t* const org = this->Origins.data();
+  std::int32_t* const twin = this->Twins.data();
+  const std::int32_t f = twin[e];
+  const std::int32_t e1 = Next(e), e2 = Prev(e), f1 = Next(f), f2 = Prev(f);
+  const std::int32_t b = org[e1], c = org[e2], d = org[f2];
+  const std::int32_t outerBC = twin[e1], outerAD = twin[f1], outerDB = twin[f2];
+  // (a, d, c): e = a -> d, e1 = d -> c, e2 = c -> a keeps its twin.
+  org[e1] = d;
+  twin[e] = outerAD;
+  twin[outerAD] = e;
+  twin[e1] = f2;
+  // (d, b, c): f = d -> b, f1 = b -> c, f2 = c -> d.
+  org[f] = d;
+  org[f1] = b;
+  org[f2] = c;
+  twin[f] = outerDB;
+  twin[outerDB] = f;
+  twin[f1] = outerBC;
+  twin[outerBC] = f1;
+  twin[f2] = e1;
+}
+
+// Moves the triangles at the end into the free slots below, so that the arrays hold exactly the
+// triangulation (2n - 2 triangles) as a serial build would.
+void DirichletTessellation::CompactFreeTriangles()
+{
+  std::vector<std::int32_t>& holes = this->FreeTriangles;
+  std::sort(holes.begin(), holes.end());
+  const std::int32_t count = std::int32_t(this->Origins.size() / 3);
+  const std::int32_t kept = count - std::int32_t(holes.size());
+  std::int32_t* const org = this->Origins.data();
+  std::int32_t* const twin = this->Twins.data();
+  std::int32_t from = count;
+  for (const std::int32_t hole : holes)
+  {
+    if (hole >= kept)
+    {
+      break;
+    }
+    do
+    {
+      --from;
+    } while (this->IsFreeTriangle(from));
+    for (std::int32_t k = 0; k < 3; ++k)
+    {
+      const std::int32_t e = 3 * hole + k;
+      org[e] = org[3 * from + k];
+      twin[e] = twin[3 * from + k];
+      twin[twin[e]] = e;
+    }
+  }
+  std::vector<std::int32_t>().swap(holes); // the structure keeps no spare capacity
+  this->Origins.resize(3 * std::size_t(kept));
+  this->Twins.resize(3 * std::size_t(kept));
+  if (this->Serial.LastTriangle >= kept)
+  {
+    this->Serial.LastTriangle = 0;
+  }
+}
+
+} // namespace tessera
