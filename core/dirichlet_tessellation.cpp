@@ -177,8 +177,19 @@ bool DirichletTessellation::FindNoCocircularTriangles() const
   parallel::RunChunks(chunks.size() - 1,
     [&](std::size_t c)
     {
+      // The neighbours' opposite vertices are the cache misses: request them a few triangles
+      // ahead (further ahead, or the points as well, measured slower).
+      constexpr std::int32_t ahead = 8;
+      const std::int32_t prefetchEnd = std::max(chunks[c], chunks[c + 1] - ahead);
       for (std::int32_t t = chunks[c]; t < chunks[c + 1]; ++t)
       {
+        if (t < prefetchEnd)
+        {
+          for (std::int32_t k = 0; k < 3; ++k)
+          {
+            __builtin_prefetch(org + Prev(std::max(0, twin[3 * (t + ahead) + k])));
+          }
+        }
         const std::int32_t a = org[3 * t], b = org[3 * t + 1], d = org[3 * t + 2];
         if (a < 0 || b < 0 || d < 0)
         {

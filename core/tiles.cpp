@@ -99,8 +99,11 @@ void TessellationDual::ComputeTriangleCentres(std::vector<std::uint8_t>& candida
   candidate.assign(std::size_t(triangles), 0);
   const std::vector<std::int32_t> bounds = ChunkBounds(triangles, ThreadCount(triangles));
   RunChunks(bounds.size() - 1, [&](std::size_t k) { this->CentresOf(bounds[k], bounds[k + 1]); });
-  RunChunks(bounds.size() - 1,
-    [&](std::size_t k) { this->CandidatesOf(bounds[k], bounds[k + 1], candidate.data()); });
+  if (!this->Tess.KnownFreeOfCocircularTriangles()) // else no triangle is a candidate
+  {
+    RunChunks(bounds.size() - 1,
+      [&](std::size_t k) { this->CandidatesOf(bounds[k], bounds[k + 1], candidate.data()); });
+  }
 }
 
 void TessellationDual::CentresOf(std::int32_t begin, std::int32_t end)
