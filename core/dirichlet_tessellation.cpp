@@ -187,7 +187,11 @@ bool DirichletTessellation::FindNoCocircularTriangles() const
         {
           for (std::int32_t k = 0; k < 3; ++k)
           {
-            __builtin_prefetch(org + Prev(std::max(0, twin[3 * (t + ahead) + k])));
+            const std::int32_t f = twin[3 * (t + ahead) + k];
+            if (f > 3 * (t + ahead) + k)
+            {
+              __builtin_prefetch(org + Prev(f));
+            }
           }
         }
         const std::int32_t a = org[3 * t], b = org[3 * t + 1], d = org[3 * t + 2];
@@ -198,8 +202,12 @@ bool DirichletTessellation::FindNoCocircularTriangles() const
         for (std::int32_t e = 3 * t; e < 3 * t + 3; ++e)
         {
           const std::int32_t f = twin[e];
+          if (f < e)
+          {
+            continue; // checked from the other side
+          }
           const std::int32_t across = org[Prev(f)];
-          if (f > e && across >= 0 && incircle_fast(pts[a], pts[b], pts[d], pts[across]) == 0)
+          if (across >= 0 && incircle_fast(pts[a], pts[b], pts[d], pts[across]) == 0)
           {
             found[c] = 1;
             return;

@@ -36,11 +36,43 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <new>
 #include <utility>
 #include <vector>
 
 namespace tessera
 {
+
+/// std::allocator, except that resize() leaves new elements uninitialised: the two-region build
+/// sizes its arrays once and each thread writes (and so first touches) its own part.
+template<class T>
+struct UninitializedAllocator : std::allocator<T>
+{
+  template<class U>
+  struct rebind
+  {
+    using other = UninitializedAllocator<U>;
+  };
+  UninitializedAllocator() = default;
+  template<class U>
+  UninitializedAllocator(const UninitializedAllocator<U>&) noexcept
+  {
+  }
+  template<class U>
+  void construct(U* p) noexcept
+  {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template<class U, class... Args>
+  void construct(U* p, Args&&... args)
+  {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
+/// The half-edge arrays' type: a std::vector of int32.
+using HalfEdgeArray = std::vector<std::int32_t, UninitializedAllocator<std::int32_t>>;
 
 enum class PointStatus : std::uint8_t
 {
@@ -98,8 +130,8 @@ public:
   bool IsTwoDimensional() const { return !this->Origins.empty(); }
   const std::vector<std::int32_t>& CollinearPoints() const { return this->Collinear; }
 
-  const std::vector<std::int32_t>& Origin() const { return this->Origins; }
-  const std::vector<std::int32_t>& Twin() const { return this->Twins; }
+  const HalfEdgeArray& Origin() const { return this->Origins; }
+  const HalfEdgeArray& Twin() const { return this->Twins; }
   static std::int32_t Next(std::int32_t e) { return e % 3 == 2 ? e - 2 : e + 1; }
   static std::int32_t Prev(std::int32_t e) { return e % 3 == 0 ? e + 2 : e - 1; }
   /// The half-edge after e anticlockwise around Origin()[e] (one step along its ring).
@@ -222,8 +254,8 @@ private:
 
   Window TheWindow;
   std::vector<Point2> Coordinates;
-  std::vector<std::int32_t> Origins;
-  std::vector<std::int32_t> Twins;
+  HalfEdgeArray Origins;
+  HalfEdgeArray Twins;
   std::vector<std::int32_t> FreeTriangles;
   std::vector<std::int32_t> Collinear;
   std::vector<std::int32_t> Rejected;

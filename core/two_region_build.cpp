@@ -144,8 +144,9 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
       }
     }
   }
-  this->Origins.resize(3 * std::size_t(slot), Free);
-  this->Twins.resize(3 * std::size_t(slot), -1);
+  // Not written here: each region writes the triangles it makes, the rest are freed below.
+  this->Origins.resize(3 * std::size_t(slot));
+  this->Twins.resize(3 * std::size_t(slot));
 
   const auto insertSide = [&](std::size_t side)
   {
@@ -175,6 +176,8 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
     this->Accepted += region.Inserted;
     for (std::int32_t t = region.EndSlot - 1; t >= region.NextSlot; --t)
     {
+      std::fill_n(this->Origins.begin() + 3 * t, 3, Free);
+      std::fill_n(this->Twins.begin() + 3 * t, 3, -1);
       this->FreeTriangles.push_back(t);
     }
   }
