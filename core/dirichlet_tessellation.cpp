@@ -125,9 +125,10 @@ void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids)
   earlierDuplicates.swap(this->DuplicatePairs);
   this->Coordinates.swap(local);
   this->BuildOrder = &order;
+  this->Serial.SawCocircular = false;
   this->InsertInOrder(std::int32_t(order.size()));
   this->BuildOrder = nullptr;
-  this->NoCocircularTriangles = this->FindNoCocircularTriangles();
+  this->NoCocircularTriangles = !this->Serial.SawCocircular;
   this->Coordinates.swap(local);
   std::int32_t* const origins = this->Origins.data();
   const std::vector<std::int32_t> edgeChunks = parallel::ChunkBounds(
@@ -159,63 +160,35 @@ void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids)
   }
 }
 
-// One filtered incircle per interior edge, on both cores. Called by BuildFrom before the vertices
-// are renamed to input ids, while consecutive triangles have nearby vertices in memory.
-bool DirichletTessellation::FindNoCocircularTriangles() const
+// Whether two adjacent triangles around a new point are exactly co-circular; start is a half-edge
+// leaving it. Why this and the insertion's own tests suffice to know that a batch build has no
+// co-circular adjacent pair: take such a pair in the result and the event that made the later of
+// the two triangles.
+// - A split or Lawson flip while inserting N, with the shared edge opposite N: the triangle went
+//   on the flip stack and its edge was tested against the other (RestoreDelaunay records a zero),
+//   or the flip was skipped at the seam and LegalizeEdges tested it.
+// - The same, with the shared edge incident to N: both triangles lie around N, tested here.
+// - A Lawson flip in LegalizeEdges: the four outer edges are tested; the two triangles on either
+//   side of the new diagonal are not co-circular, as the flip needed a strictly positive test.
+bool DirichletTessellation::StarIsCocircular(std::int32_t start) const
 {
-  if (!this->IsTwoDimensional())
-  {
-    return false;
-  }
   const std::int32_t* const org = this->Origins.data();
   const std::int32_t* const twin = this->Twins.data();
   const Point2* const pts = this->Coordinates.data();
-  const std::int32_t triangles = std::int32_t(this->Origins.size() / 3);
-  const std::vector<std::int32_t> chunks =
-    parallel::ChunkBounds(triangles, parallel::ThreadCount(triangles));
-  std::vector<char> found(chunks.size() - 1, 0);
-  parallel::RunChunks(chunks.size() - 1,
-    [&](std::size_t c)
+  const std::int32_t p = org[start];
+  std::int32_t e = start;
+  do
+  {
+    // (p, v1, v2) and the next triangle around p, (p, v2, v3), share the edge p - v2.
+    const std::int32_t next = twin[Prev(e)];
+    const std::int32_t v1 = org[Next(e)], v2 = org[Prev(e)], v3 = org[Prev(next)];
+    if (v1 >= 0 && v2 >= 0 && v3 >= 0 && incircle_fast(pts[p], pts[v1], pts[v2], pts[v3]) == 0)
     {
-      // The neighbours' opposite vertices are the cache misses: request them a few triangles
-      // ahead (further ahead, or the points as well, measured slower).
-      constexpr std::int32_t ahead = 8;
-      const std::int32_t prefetchEnd = std::max(chunks[c], chunks[c + 1] - ahead);
-      for (std::int32_t t = chunks[c]; t < chunks[c + 1]; ++t)
-      {
-        if (t < prefetchEnd)
-        {
-          for (std::int32_t k = 0; k < 3; ++k)
-          {
-            const std::int32_t f = twin[3 * (t + ahead) + k];
-            if (f > 3 * (t + ahead) + k)
-            {
-              __builtin_prefetch(org + Prev(f));
-            }
-          }
-        }
-        const std::int32_t a = org[3 * t], b = org[3 * t + 1], d = org[3 * t + 2];
-        if (a < 0 || b < 0 || d < 0)
-        {
-          continue; // ghost or free
-        }
-        for (std::int32_t e = 3 * t; e < 3 * t + 3; ++e)
-        {
-          const std::int32_t f = twin[e];
-          if (f < e)
-          {
-            continue; // checked from the other side
-          }
-          const std::int32_t across = org[Prev(f)];
-          if (across >= 0 && incircle_fast(pts[a], pts[b], pts[d], pts[across]) == 0)
-          {
-            found[c] = 1;
-            return;
-          }
-        }
-      }
-    });
-  return std::find(found.begin(), found.end(), 1) == found.end();
+      return true;
+    }
+    e = next;
+  } while (e != start);
+  return false;
 }
 
 void DirichletTessellation::Validate(const Point2& p, std::size_t id) const
@@ -373,6 +346,11 @@ DirichletTessellation::Location DirichletTessellation::InsertInRegion(Region& re
   }
   this->RestoreDelaunay(region);
   ++region.Inserted;
+  if (this->BuildOrder && !region.SawCocircular) // only a batch build keeps the flag
+  {
+    const std::int32_t start = 3 * region.LastTriangle + 2; // leaves id (see SplitTriangle)
+    region.SawCocircular = this->Origins[start] != id || this->StarIsCocircular(start);
+  }
   return location;
 }
 
@@ -667,6 +645,7 @@ void DirichletTessellation::RestoreDelaunay(Region& region)
   // Null in a batch build, which does not keep vertex half-edges.
   std::int32_t* const vertexEdge = this->VertexEdges.empty() ? nullptr : this->VertexEdges.data();
   std::vector<std::int32_t>& stack = region.FlipStack;
+  bool cocircular = false;
   while (!stack.empty())
   {
     const std::int32_t t = stack.back();
@@ -699,7 +678,9 @@ void DirichletTessellation::RestoreDelaunay(Region& region)
     }
     else
     {
-      conflict = InCircle(pts[y], pts[x], pts[q], pts[p]) > 0;
+      const int side = InCircle(pts[y], pts[x], pts[q], pts[p]);
+      conflict = side > 0;
+      cocircular |= side == 0;
     }
     if (!conflict)
     {
@@ -741,6 +722,7 @@ void DirichletTessellation::RestoreDelaunay(Region& region)
     stack.push_back(t);
     stack.push_back(t2);
   }
+  region.SawCocircular |= cocircular;
 }
 
 // ---------------------------------------------------------------------------------------------

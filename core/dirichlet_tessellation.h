@@ -147,11 +147,12 @@ public:
   /// otherwise a walk from the last triangle.
   std::int32_t EdgeLeaving(std::int32_t id) const;
   bool IsFreeTriangle(std::int32_t t) const { return this->Origins[3 * t] == Free; }
-  /// True when a batch build found no two adjacent real triangles exactly co-circular (no
-  /// degenerate vertex of the tessellation) and nothing was inserted or removed since: the
-  /// Delaunay faces are then exactly the real triangles. False when unknown or when there are
-  /// such triangles. The check runs while the build's points are in spatial order, where it is
-  /// cheap; derived results use it to skip their own.
+  /// True when a batch build met no two adjacent real triangles exactly co-circular (so the
+  /// tessellation has no degenerate vertex) and nothing was inserted or removed since: the
+  /// Delaunay faces are then exactly the real triangles. False when unknown or when the build met
+  /// such triangles (possibly only on the way). The build tracks it as it inserts, from tests it
+  /// makes anyway plus one per triangle around each new point; derived results use it to skip
+  /// their own check.
   bool KnownFreeOfCocircularTriangles() const { return this->NoCocircularTriangles; }
 
   /// Bytes held by the structure (capacities of all arrays, coordinates included). A batch build
@@ -194,6 +195,9 @@ private:
     std::vector<std::int32_t> FlipStack;
     std::vector<std::int32_t> Deferred; ///< points left for the serial insertion
     std::size_t Inserted = 0;
+    /// Whether an insertion met two adjacent real triangles exactly co-circular (see
+    /// StarIsCocircular for why the tests made during insertion are enough).
+    bool SawCocircular = false;
   };
 
   void Validate(const Point2& p, std::size_t id) const;
@@ -220,7 +224,7 @@ private:
   // Two-region batch build (two_region_build.cpp).
   void InsertInOrder(std::int32_t count);
   bool InsertInTwoRegions(std::int32_t first, std::int32_t end);
-  void LegalizeEdges(std::vector<std::int32_t>& edges);
+  bool LegalizeEdges(std::vector<std::int32_t>& edges);
   void FlipEdge(std::int32_t e);
   void CompactFreeTriangles();
   void SetTriangle(std::int32_t t,
@@ -230,7 +234,7 @@ private:
     std::int32_t ta,
     std::int32_t tb,
     std::int32_t tc);
-  bool FindNoCocircularTriangles() const;
+  bool StarIsCocircular(std::int32_t start) const;
   void RecordDuplicate(std::int32_t id, std::int32_t kept, std::int32_t keptEdge);
   void Relabel(std::int32_t edge, std::int32_t newId);
   std::int32_t FindVertexEdge(std::int32_t id) const;

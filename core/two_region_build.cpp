@@ -181,7 +181,8 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
       this->FreeTriangles.push_back(t);
     }
   }
-  this->LegalizeEdges(seamEdges);
+  this->Serial.SawCocircular |=
+    regions[0].SawCocircular || regions[1].SawCocircular || this->LegalizeEdges(seamEdges);
   this->Serial.LastTriangle = regions[0].LastTriangle;
   for (const Region& region : regions)
   {
@@ -197,9 +198,11 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
 // Lawson's flip algorithm from the given half-edges: flips every edge whose far apex lies strictly
 // inside the circle of its triangle, and checks the four edges around each flip, until none is
 // left. Ghost triangles take part as in RestoreDelaunay: the "circle" of a ghost triangle is the
-// open half-plane beyond its hull edge, so flips also make the hull convex again.
-void DirichletTessellation::LegalizeEdges(std::vector<std::int32_t>& edges)
+// open half-plane beyond its hull edge, so flips also make the hull convex again. Returns whether
+// a test found two adjacent triangles exactly co-circular.
+bool DirichletTessellation::LegalizeEdges(std::vector<std::int32_t>& edges)
 {
+  bool cocircular = false;
   const Point2* const pts = this->Coordinates.data();
   const std::int32_t* const org = this->Origins.data();
   while (!edges.empty())
@@ -223,7 +226,9 @@ void DirichletTessellation::LegalizeEdges(std::vector<std::int32_t>& edges)
     }
     else
     {
-      illegal = incircle_fast(pts[b], pts[a], pts[d], pts[c]) > 0;
+      const int side = incircle_fast(pts[b], pts[a], pts[d], pts[c]);
+      illegal = side > 0;
+      cocircular |= side == 0;
     }
     if (illegal)
     {
@@ -232,6 +237,7 @@ void DirichletTessellation::LegalizeEdges(std::vector<std::int32_t>& edges)
       edges.insert(edges.end(), { e, Prev(e), f, Next(f) });
     }
   }
+  return cocircular;
 }
 
 // Replaces the diagonal a - b of the quadrilateral a, d, b, c by c - d, keeping both triangles'
