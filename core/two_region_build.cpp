@@ -181,8 +181,10 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
       this->FreeTriangles.push_back(t);
     }
   }
+  // The seam is legalized whatever the regions saw (no short-circuit here).
+  const bool seamCocircular = this->LegalizeEdges(seamEdges);
   this->Serial.SawCocircular |=
-    regions[0].SawCocircular || regions[1].SawCocircular || this->LegalizeEdges(seamEdges);
+    seamCocircular || regions[0].SawCocircular || regions[1].SawCocircular;
   this->Serial.LastTriangle = regions[0].LastTriangle;
   for (const Region& region : regions)
   {

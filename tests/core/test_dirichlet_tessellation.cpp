@@ -1080,6 +1080,24 @@ TEST(DirichletTessellation, TwoRegionBuildThatGrowsTheHullEqualsSerialInsertion)
   ExpectSameAsStreaming(points);
 }
 
+// Uniform points with a few exact co-circular squares, some near the seam: the regions meet
+// co-circular triangles and the seam must still be sewn.
+TEST(DirichletTessellation, TwoRegionBuildWithCocircularSquaresEqualsSerialInsertion)
+{
+  std::vector<Point2> points = UniformPoints(TwoRegionSize, 23);
+  std::mt19937 random(29);
+  std::uniform_real_distribution<double> nearSeam(0.49, 0.51), anywhere(0.05, 0.95);
+  for (int square = 0; square < 40; ++square)
+  {
+    const double x = square % 2 == 0 ? nearSeam(random) : anywhere(random);
+    const double y = anywhere(random), h = 1e-7;
+    points.insert(
+      points.end(), { { x - h, y - h }, { x + h, y - h }, { x + h, y + h }, { x - h, y + h } });
+  }
+  std::shuffle(points.begin(), points.end(), std::mt19937(31));
+  ExpectSameAsStreaming(points);
+}
+
 // The build's co-circularity flag against the exact incircle of every interior edge: never true
 // when two adjacent triangles are co-circular, and true for points in general position.
 TEST(DirichletTessellation, CocircularTrianglesAreKnownAfterABatchBuild)
