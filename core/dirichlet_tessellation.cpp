@@ -47,6 +47,33 @@ inline int InCircle(const Point2& a, const Point2& b, const Point2& c, const Poi
   return incircle_fast(a, b, c, d);
 }
 
+// The Delaunay test of half-edge x -> y of triangle (x, y, p) against q, the apex across it:
+// 1 when p lies strictly inside the circle of (y, x, q), so that the edge must flip; 0 when the
+// four real points are exactly co-circular; -1 otherwise. For a ghost triangle the "circle" is the
+// open half-plane beyond its hull edge (a hull vertex that became reflex flips away); a hull edge
+// seen from inside (p or q the ghost) never flips.
+inline int DelaunayEdgeTest(const Point2* pts,
+  std::int32_t x,
+  std::int32_t y,
+  std::int32_t p,
+  std::int32_t q)
+{
+  constexpr std::int32_t ghost = DirichletTessellation::Ghost;
+  if (x == ghost)
+  {
+    return Orient(pts[q], pts[y], pts[p]) > 0 ? 1 : -1;
+  }
+  if (y == ghost)
+  {
+    return Orient(pts[x], pts[q], pts[p]) > 0 ? 1 : -1;
+  }
+  if (p == ghost || q == ghost)
+  {
+    return -1;
+  }
+  return InCircle(pts[y], pts[x], pts[q], pts[p]);
+}
+
 bool LexicographicLess(const Point2& a, const Point2& b)
 {
   return a.x < b.x || (a.x == b.x && a.y < b.y);
@@ -438,7 +465,7 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Region& regi
     if (apex == Ghost)
     {
       edge = f;
-      return region.GrowsHull ? Location::InGhost : Location::Foreign;
+      return region.GrowsHull() ? Location::InGhost : Location::Foreign;
     }
     const Point2& c = pts[apex];
     if (!region.Owns(c) || ++steps > region.MaxWalk)
@@ -481,8 +508,8 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Region& regi
       // Splitting the edge also splits the triangle across it.
       edge = base + k;
       const std::int32_t across = org[Prev(twin[edge])];
-      return (across == Ghost ? region.GrowsHull : region.Owns(pts[across])) ? Location::OnEdge
-                                                                             : Location::Foreign;
+      return (across == Ghost ? region.GrowsHull() : region.Owns(pts[across])) ? Location::OnEdge
+                                                                               : Location::Foreign;
     }
   }
   edge = base;
@@ -626,6 +653,15 @@ void DirichletTessellation::SplitEdge(Region& region, std::int32_t e, std::int32
   region.LastTriangle = ta;
 }
 
+// For LegalizeEdges (two_region_build.cpp); RestoreDelaunay calls DelaunayEdgeTest inlined.
+int DirichletTessellation::EdgeTest(std::int32_t x,
+  std::int32_t y,
+  std::int32_t p,
+  std::int32_t q) const
+{
+  return DelaunayEdgeTest(this->Coordinates.data(), x, y, p, q);
+}
+
 // Pops the flip stack: each triangle t = (x, y, p) has the new point p third; its first edge
 // x -> y is flipped when p lies strictly inside the circle of the triangle (y, x, q) across it
 // (for a ghost triangle the "circle" is the open half-plane beyond its hull edge). Both results
@@ -667,21 +703,9 @@ void DirichletTessellation::RestoreDelaunay(Region& region)
       continue;
     }
     const std::int32_t x = org[e], y = org[e + 1], p = org[e + 2];
-    bool conflict;
-    if (x == Ghost)
-    {
-      conflict = Orient(pts[q], pts[y], pts[p]) > 0;
-    }
-    else if (y == Ghost)
-    {
-      conflict = Orient(pts[x], pts[q], pts[p]) > 0;
-    }
-    else
-    {
-      const int side = InCircle(pts[y], pts[x], pts[q], pts[p]);
-      conflict = side > 0;
-      cocircular |= side == 0;
-    }
+    const int test = DelaunayEdgeTest(pts, x, y, p, q);
+    cocircular |= test == 0;
+    const bool conflict = test > 0;
     if (!conflict)
     {
       continue;

@@ -181,10 +181,11 @@ private:
     double SeamX = std::numeric_limits<double>::infinity();
     bool Upper = false; ///< owns the points with x >= SeamX rather than x < SeamX
     bool Owns(const Point2& p) const { return (p.x < this->SeamX) != this->Upper; }
-    /// Whether the region may insert points outside the hull. A region that owns part of the hull
-    /// only must not: its hull may be reflex where a flip across the seam was skipped, and a new
-    /// triangle on a hull edge could then overlap the triangulation.
-    bool GrowsHull = true;
+    /// Whether the region may insert points outside the hull: only the one that owns everything.
+    /// A region that owns part of the hull must not: its hull may be reflex where a flip across
+    /// the seam was skipped, and a new triangle on a hull edge could then overlap the
+    /// triangulation.
+    bool GrowsHull() const { return this->SeamX == std::numeric_limits<double>::infinity(); }
     std::int32_t LastTriangle = 0;
     /// Preallocated triangles [NextSlot, EndSlot), used before NewTriangle() is asked.
     std::int32_t NextSlot = 0;
@@ -215,6 +216,7 @@ private:
   Location Locate(const Region& region, const Point2& p, std::int32_t& edge) const;
   void SplitTriangle(Region& region, std::int32_t t, std::int32_t p);
   void SplitEdge(Region& region, std::int32_t e, std::int32_t p);
+  int EdgeTest(std::int32_t x, std::int32_t y, std::int32_t p, std::int32_t q) const;
   void RestoreDelaunay(Region& region);
   std::int32_t NewTriangle();
   std::int32_t NewTriangle(Region& region)

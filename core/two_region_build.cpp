@@ -27,7 +27,6 @@
 #include "dirichlet_tessellation.h"
 
 #include "parallel_chunks.h"
-#include "predicates_inline.h"
 
 #include <algorithm>
 #include <cmath>
@@ -70,7 +69,7 @@ void DirichletTessellation::InsertInOrder(std::int32_t count)
 // sample is not yet two-dimensional.
 bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t end)
 {
-  if (!this->IsTwoDimensional() || this->Accepted < 3)
+  if (!this->IsTwoDimensional())
   {
     return false;
   }
@@ -86,7 +85,6 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
   {
     regions[side].SeamX = sampleX[first / 2];
     regions[side].Upper = side == 1;
-    regions[side].GrowsHull = false;
     regions[side].MaxWalk = std::int64_t(8 * std::sqrt(double(end))) + 1024;
   }
   std::vector<std::int32_t> sides[2];
@@ -128,13 +126,17 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
     slot += 2 * std::int32_t(sides[side].size());
     region.EndSlot = slot;
     region.LastTriangle = this->Serial.LastTriangle;
+    if (sides[side].empty())
+    {
+      continue;
+    }
+    const Point2& p = pts[sides[side].front()];
     double nearest = std::numeric_limits<double>::infinity();
-    for (std::int32_t t = 0; !sides[side].empty() && t < sampleTriangles; ++t)
+    for (std::int32_t t = 0; t < sampleTriangles; ++t)
     {
       if (!this->IsFreeTriangle(t) && !this->IsGhostTriangle(t) && ownedBy(region, t))
       {
         const Point2& v = pts[this->Origins[3 * t]];
-        const Point2& p = pts[sides[side].front()];
         const double distance = (v.x - p.x) * (v.x - p.x) + (v.y - p.y) * (v.y - p.y);
         if (distance < nearest)
         {
@@ -199,13 +201,11 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
 
 // Lawson's flip algorithm from the given half-edges: flips every edge whose far apex lies strictly
 // inside the circle of its triangle, and checks the four edges around each flip, until none is
-// left. Ghost triangles take part as in RestoreDelaunay: the "circle" of a ghost triangle is the
-// open half-plane beyond its hull edge, so flips also make the hull convex again. Returns whether
-// a test found two adjacent triangles exactly co-circular.
+// left. Ghost triangles take part through the same EdgeTest as RestoreDelaunay, so flips also make
+// the hull convex again. Returns whether a test found two adjacent triangles exactly co-circular.
 bool DirichletTessellation::LegalizeEdges(std::vector<std::int32_t>& edges)
 {
   bool cocircular = false;
-  const Point2* const pts = this->Coordinates.data();
   const std::int32_t* const org = this->Origins.data();
   while (!edges.empty())
   {
@@ -213,26 +213,9 @@ bool DirichletTessellation::LegalizeEdges(std::vector<std::int32_t>& edges)
     edges.pop_back();
     const std::int32_t f = this->Twins[e];
     const std::int32_t a = org[e], b = org[Next(e)], c = org[Prev(e)], d = org[Prev(f)];
-    bool illegal;
-    if (a == Ghost)
-    {
-      illegal = orient2d_fast(pts[d], pts[b], pts[c]) > 0; // b is a reflex hull vertex
-    }
-    else if (b == Ghost)
-    {
-      illegal = orient2d_fast(pts[a], pts[d], pts[c]) > 0; // a is a reflex hull vertex
-    }
-    else if (c == Ghost || d == Ghost)
-    {
-      illegal = false; // a hull edge
-    }
-    else
-    {
-      const int side = incircle_fast(pts[b], pts[a], pts[d], pts[c]);
-      illegal = side > 0;
-      cocircular |= side == 0;
-    }
-    if (illegal)
+    const int test = this->EdgeTest(a, b, c, d);
+    cocircular |= test == 0;
+    if (test > 0)
     {
       this->FlipEdge(e);
       // After the flip e is a -> d, Prev(e) c -> a, f d -> b and Next(f) b -> c.
