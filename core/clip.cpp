@@ -173,15 +173,6 @@ void ConvexHull(std::vector<Point2>& points, std::vector<Point2>& hull)
   std::swap(points, hull);
 }
 
-void DropRepeatedVertices(std::vector<Point2>& ring)
-{
-  ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
-  while (ring.size() > 1 && ring.front() == ring.back())
-  {
-    ring.pop_back();
-  }
-}
-
 void AppendRing(ClippedRings& rings, const Point2* begin, std::size_t count, bool reversed)
 {
   if (reversed)

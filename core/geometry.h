@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <vector>
 
 namespace tessera
 {
@@ -50,6 +51,17 @@ inline Box2 BoundsOf(const Point2* points, std::size_t count)
     box.Extend(points[i]);
   }
   return box;
+}
+
+/// Drops consecutive repeats of a vertex, cyclically (the last vertex equal to the first too):
+/// the coinciding rounded ends of a clipped or assembled polygon.
+inline void DropRepeatedVertices(std::vector<Point2>& polygon)
+{
+  polygon.erase(std::unique(polygon.begin(), polygon.end()), polygon.end());
+  while (polygon.size() > 1 && polygon.front() == polygon.back())
+  {
+    polygon.pop_back();
+  }
 }
 
 } // namespace tessera

@@ -328,22 +328,5 @@ void AppendTileSet(TileSet& tiles, const TileSet& from)
     tiles.NeighborCounts.end(), from.NeighborCounts.begin(), from.NeighborCounts.end());
 }
 
-void DropRepeatedVertices(std::vector<Point2>& polygon)
-{
-  std::size_t kept = 0;
-  for (std::size_t k = 0; k < polygon.size(); ++k)
-  {
-    if (kept == 0 || polygon[k] != polygon[kept - 1])
-    {
-      polygon[kept++] = polygon[k];
-    }
-  }
-  while (kept > 1 && polygon[kept - 1] == polygon[0])
-  {
-    --kept;
-  }
-  polygon.resize(kept);
-}
-
 } // namespace tiles_detail
 } // namespace tessera

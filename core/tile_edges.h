@@ -67,9 +67,6 @@ std::int32_t AssemblePolygon(const Tess& tess,
   const std::vector<TileEdge>& edges,
   std::vector<Point2>& polygon);
 
-/// Drops consecutive repeats of a vertex (cyclically): rounded ends that coincide.
-void DropRepeatedVertices(std::vector<Point2>& polygon);
-
 /// Appends one tile (its polygon, compensated area and side count) to tiles.
 void AppendTile(TileSet& tiles,
   std::int32_t point,
