@@ -184,7 +184,7 @@ std::vector<std::pair<std::int32_t, std::int32_t>> VertexEdges(const Tess& tess,
   std::vector<std::pair<std::int32_t, std::int32_t>> found;
   if (tess.TracksVertexEdges())
   {
-    // O(1) per id: an incremental user's time stays proportional to what changed.
+    // O(1) per id past one table of the points.
     std::vector<char> listed(tess.PointCount(), 0);
     for (const std::int32_t id : ids)
     {
@@ -386,6 +386,10 @@ TileSet LocalTiles(const Tess& tess,
   }
   TileSet tiles;
   tiles.Offsets.push_back(0);
+  if (ids.empty())
+  {
+    return tiles; // without the O(points) and O(triangles) tables below
+  }
   const std::vector<std::pair<std::int32_t, std::int32_t>> starts = VertexEdges(tess, ids);
   // Chunks of the points on the cores (each labels the faces it meets on its own, with the same
   // rules, so the joined result is the serial one). A local tile costs some 1000 times a pass

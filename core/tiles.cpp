@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <limits>
 #include <utility>
 
 namespace tessera
@@ -90,17 +89,19 @@ TessellationDual::TessellationDual(const DirichletTessellation& tessellation)
 // Every real triangle's centre (canonical: from its ids in ascending order), error bound and
 // inside-the-window flag (right for every face that is a single triangle; ComputeCentres redoes
 // the degenerate ones), and whether a real neighbour with a larger index might be co-circular
-// with it (Candidate). Chunks of triangles in parallel, each writing its own entries.
+// with it (Candidate; left empty when the build knows there are none). Chunks of triangles in
+// parallel, each writing its own entries.
 void TessellationDual::ComputeTriangleCentres(std::vector<std::uint8_t>& candidate)
 {
   const std::int32_t triangles = std::int32_t(this->Tess.Origin().size() / 3);
   this->Data.resize(std::size_t(triangles));
   this->CentreError.resize(std::size_t(triangles));
-  candidate.assign(std::size_t(triangles), 0);
   const std::vector<std::int32_t> bounds = ChunkBounds(triangles, ThreadCount(triangles));
   RunChunks(bounds.size() - 1, [&](std::size_t k) { this->CentresOf(bounds[k], bounds[k + 1]); });
-  if (!this->Tess.KnownFreeOfCocircularTriangles()) // else no triangle is a candidate
+  // Known free of co-circular triangles: no candidates at all (LabelFaces has nothing to do).
+  if (!this->Tess.KnownFreeOfCocircularTriangles())
   {
+    candidate.assign(std::size_t(triangles), 0);
     RunChunks(bounds.size() - 1,
       [&](std::size_t k) { this->CandidatesOf(bounds[k], bounds[k + 1], candidate.data()); });
   }

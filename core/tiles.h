@@ -75,8 +75,8 @@ struct DelaunayFaces
 
 namespace tiles_detail
 {
-struct TileEdge; // a clipped tile edge (tiles.cpp)
-struct FaceView; // a face as a tile edge sees it (tiles.cpp)
+struct TileEdge; // a clipped tile edge (tile_edges.h)
+struct FaceView; // a face as a tile edge sees it (tile_edges.h)
 } // namespace tiles_detail
 
 /// Face structure of a tessellation (merged degenerate faces, centres): computed once, then each
@@ -168,8 +168,9 @@ struct FaceMateLists
 /// repeats, are skipped), bit for bit the tiles TessellationDual(tessellation).Tiles() gives for
 /// them: the same faces (degenerate ones merged, centres from their three smallest ids) and the
 /// same clipping. Only the faces around the given points are labelled, so the time is
-/// proportional to their rings, plus one pass over the half-edge arrays to find an edge leaving
-/// each point. With mates, also fills their face mates (same order as the tiles).
+/// proportional to their rings, plus, unless the tessellation tracks vertex edges
+/// (TrackVertexEdges), one pass over the half-edge arrays to find an edge leaving each point.
+/// With mates, also fills their face mates (same order as the tiles).
 TileSet ComputeTilesOf(const DirichletTessellation& tessellation,
   const std::vector<std::int32_t>& ids,
   FaceMateLists* mates = nullptr);
