@@ -85,5 +85,31 @@ void RunChunks(std::size_t chunks, const Task& task)
   }
 }
 
+/// Runs first() on the calling thread and second() beside it on a thread of its own when beside
+/// is true, one after the other otherwise, with RunChunks' guarantees (both joined, the first
+/// exception rethrown). first() may call what must stay on the calling thread (VTK).
+template<class First, class Second>
+void RunSideBySide(bool beside, const First& first, const Second& second)
+{
+  if (!beside)
+  {
+    first();
+    second();
+    return;
+  }
+  RunChunks(2,
+    [&](std::size_t k)
+    {
+      if (k == 0)
+      {
+        first();
+      }
+      else
+      {
+        second();
+      }
+    });
+}
+
 } // namespace parallel
 } // namespace tessera

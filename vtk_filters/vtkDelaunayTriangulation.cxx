@@ -12,12 +12,12 @@
 
 #include "TesseraFilterUtilities.h"
 #include "dirichlet_tessellation.h"
+#include "parallel_chunks.h"
 #include "tiles.h"
 
 #include <algorithm>
 #include <exception>
 #include <string>
-#include <thread>
 #include <utility>
 
 vtkStandardNewMacro(vtkDelaunayTriangulation);
@@ -72,22 +72,11 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     connectivity->SetNumberOfValues(static_cast<vtkIdType>(faces.PointIds.size()));
     vtkNew<vtkIdTypeArray> offsets;
     offsets->SetNumberOfValues(static_cast<vtkIdType>(faces.Offsets.size()));
-    const auto copyOffsets = [&faces, &offsets]()
-    { std::copy(faces.Offsets.begin(), faces.Offsets.end(), offsets->GetPointer(0)); };
-    std::thread helper;
-    if (faces.Offsets.size() > 100000 && std::thread::hardware_concurrency() > 1)
-    {
-      helper = std::thread(copyOffsets);
-    }
-    else
-    {
-      copyOffsets();
-    }
-    std::copy(faces.PointIds.begin(), faces.PointIds.end(), connectivity->GetPointer(0));
-    if (helper.joinable())
-    {
-      helper.join();
-    }
+    tessera::parallel::RunSideBySide(
+      tessera::parallel::ThreadCount(std::int64_t(faces.Offsets.size()), 50000) > 1,
+      [&]()
+      { std::copy(faces.PointIds.begin(), faces.PointIds.end(), connectivity->GetPointer(0)); },
+      [&]() { std::copy(faces.Offsets.begin(), faces.Offsets.end(), offsets->GetPointer(0)); });
     vtkNew<vtkCellArray> polys;
     polys->SetData(offsets, connectivity);
     output->SetPolys(polys);

@@ -17,13 +17,13 @@
 #include "TesseraFilterUtilities.h"
 #include "dirichlet_tessellation.h"
 #include "errors.h"
+#include "parallel_chunks.h"
 #include "thiessen_sweep.h"
 #include "tiles.h"
 
 #include <algorithm>
 #include <exception>
 #include <string>
-#include <thread>
 #include <utility>
 
 vtkStandardNewMacro(vtkDirichletTessellation);
@@ -270,19 +270,6 @@ private:
   vtkNew<vtkUnsignedCharArray> Kinds;
 };
 
-/// Joins a thread (if one was started) when leaving the scope, exceptions included.
-struct JoinOnExit
-{
-  std::thread Thread;
-  ~JoinOnExit()
-  {
-    if (this->Thread.joinable())
-    {
-      this->Thread.join();
-    }
-  }
-};
-
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -338,19 +325,11 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
       : RunGreenSibson(std::move(window), std::move(points));
     this->UpdateProgress(0.8);
     GraphWriter graph(result.Graph, input, graphOutput);
-    {
-      // The graph's arrays are filled beside the tiles' (two threads for large outputs).
-      JoinOnExit worker;
-      if (result.Graph.Kinds.size() > 100000 && std::thread::hardware_concurrency() > 1)
-      {
-        worker.Thread = std::thread([&graph]() { graph.Fill(); });
-      }
-      else
-      {
-        graph.Fill();
-      }
-      WriteTiles(result.Tiles, input, tilesOutput);
-    }
+    // The graph's arrays are filled beside the tiles' (two threads for large outputs).
+    tessera::parallel::RunSideBySide(
+      tessera::parallel::ThreadCount(std::int64_t(result.Graph.Kinds.size()), 50000) > 1,
+      [&]() { WriteTiles(result.Tiles, input, tilesOutput); },
+      [&graph]() { graph.Fill(); });
     graph.Attach(graphOutput);
     tessera_vtk::AddUnusedPointIds(tilesOutput, result.Rejected, result.Duplicates);
     tessera_vtk::AddUnusedPointIds(graphOutput, result.Rejected, result.Duplicates);
