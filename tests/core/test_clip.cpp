@@ -746,14 +746,7 @@ TEST(Clip, ProjectedLatticeThiessenTilesSumToCatchmentArea)
   const Catchment catchment(rings.Offsets, rings.Vertices);
   const mpq_class exactArea = ExactRegionArea(rings);
 
-  tessera::Box2 box{ sites[0].x, sites[0].x, sites[0].y, sites[0].y };
-  for (const Point2& p : sites)
-  {
-    box = { std::min(box.XMin, p.x),
-      std::max(box.XMax, p.x),
-      std::min(box.YMin, p.y),
-      std::max(box.YMax, p.y) };
-  }
+  const tessera::Box2 box = tessera::BoundsOf(sites.data(), sites.size());
   const tessera::DirichletTessellation tessellation(
     tessera::Window::Rectangle(box.XMin - 2e5, box.XMax + 2e5, box.YMin - 2e5, box.YMax + 2e5),
     sites);
