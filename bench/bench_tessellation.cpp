@@ -13,6 +13,8 @@
 #include "dirichlet_tessellation.h"
 #include "tiles.h"
 
+#include "test_support.h" // the point sets the tests use
+
 #include <benchmark/benchmark.h>
 
 #include <random>
@@ -33,30 +35,14 @@ const std::vector<Point2>& UniformPoints(std::size_t n)
   static std::vector<Point2> points;
   if (points.size() != n)
   {
-    std::mt19937_64 rng(12345);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    points.resize(n);
-    for (Point2& p : points)
-    {
-      p = { u(rng), u(rng) };
-    }
+    points = tessera_test::UniformPoints(n, 12345);
   }
   return points;
 }
 
 const std::vector<Point2>& LatticePoints()
 {
-  static std::vector<Point2> points;
-  if (points.empty())
-  {
-    for (int j = 0; j < 1000; ++j)
-    {
-      for (int i = 0; i < 1000; ++i)
-      {
-        points.push_back({ i + 0.5, j + 0.5 });
-      }
-    }
-  }
+  static const std::vector<Point2> points = tessera_test::SquareLattice(1000);
   return points;
 }
 

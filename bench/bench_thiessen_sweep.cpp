@@ -15,6 +15,8 @@
 #include "tiles.h"
 #include "window.h"
 
+#include "test_support.h" // the lattice the tests use
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -42,17 +44,9 @@ std::vector<Point2> make_points(std::size_t n, Input input, std::uint64_t seed)
 {
   if (input == Input::Lattice)
   {
-    // A square lattice of about n points: every Delaunay face degenerate (4 co-circular points).
-    const std::size_t side = std::size_t(std::lround(std::sqrt(double(n))));
-    std::vector<Point2> points;
-    for (std::size_t j = 0; j < side; ++j)
-    {
-      for (std::size_t i = 0; i < side; ++i)
-      {
-        points.push_back({ (double(i) + 0.5) / double(side), (double(j) + 0.5) / double(side) });
-      }
-    }
-    return points;
+    // A square lattice of about n points in the unit square.
+    const int side = int(std::lround(std::sqrt(double(n))));
+    return tessera_test::SquareLattice(side, double(side));
   }
   const bool clustered = input == Input::Clustered;
   std::mt19937_64 rng(seed);

@@ -29,6 +29,22 @@ inline std::vector<std::int32_t> AcceptedIds(const tessera::DirichletTessellatio
   return ids;
 }
 
+/// The side x side square lattice ((i + 0.5) / divisor, (j + 0.5) / divisor), row by row: every
+/// Delaunay face degenerate (4 co-circular points).
+inline std::vector<tessera::Point2> SquareLattice(int side, double divisor = 1.0)
+{
+  std::vector<tessera::Point2> points;
+  points.reserve(std::size_t(side) * std::size_t(side));
+  for (int j = 0; j < side; ++j)
+  {
+    for (int i = 0; i < side; ++i)
+    {
+      points.push_back({ (i + 0.5) / divisor, (j + 0.5) / divisor });
+    }
+  }
+  return points;
+}
+
 /// n points uniform in [lo, hi)^2, reproducible from the seed.
 inline std::vector<tessera::Point2> UniformPoints(std::size_t n,
   std::uint64_t seed,

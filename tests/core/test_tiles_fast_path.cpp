@@ -119,21 +119,16 @@ void ExpectSameAsGeneralPath(const DirichletTessellation& t, const std::string& 
 
 std::vector<Point2> Lattice(int n, double jitter, std::uint64_t seed)
 {
+  std::vector<Point2> points = tessera_test::SquareLattice(n);
   std::mt19937_64 random(seed);
   std::uniform_int_distribution<int> ulps(-2, 2);
-  std::vector<Point2> points;
-  for (int j = 0; j < n; ++j)
+  for (Point2& p : points)
   {
-    for (int i = 0; i < n; ++i)
+    if (jitter > 0.0)
     {
-      Point2 p{ i + 0.5, j + 0.5 };
-      if (jitter > 0.0)
-      {
-        // A few ulps: centres that round to the same point (repeated vertices to drop).
-        p.x += jitter * ulps(random);
-        p.y += jitter * ulps(random);
-      }
-      points.push_back(p);
+      // A few ulps: centres that round to the same point (repeated vertices to drop).
+      p.x += jitter * ulps(random);
+      p.y += jitter * ulps(random);
     }
   }
   return points;
