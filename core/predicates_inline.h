@@ -40,12 +40,11 @@ constexpr double kDistanceBound = (4.0 + 64.0 * kEpsilon) * kEpsilon;
 // term, far above the few such errors a determinant can collect, keeps the bounds valid there.
 constexpr double kUnderflowTerm = 0x1p-1020;
 
-/// orient2d's filter; when it cannot decide, `undecided(a, b, c)` does (an exact stage). The
-/// only branch is whether the filter decided, which is almost always true and so predicted; the
-/// sign of a decided determinant is computed without a branch (a branch on it would be
-/// mispredicted half the time, and callers branch on it once more anyway).
-template<typename Undecided>
-inline int orient2d_filter(const Point2& a, const Point2& b, const Point2& c, Undecided undecided)
+/// orient2d's filter; when it cannot decide, orient2d_exact does. The only branch is whether the
+/// filter decided, which is almost always true and so predicted; the sign of a decided
+/// determinant is computed without a branch (a branch on it would be mispredicted half the time,
+/// and callers branch on it once more anyway).
+inline int orient2d_filter(const Point2& a, const Point2& b, const Point2& c)
 {
   const double detleft = (a.x - c.x) * (b.y - c.y);
   const double detright = (a.y - c.y) * (b.x - c.x);
@@ -57,12 +56,7 @@ inline int orient2d_filter(const Point2& a, const Point2& b, const Point2& c, Un
   {
     return int(det > 0.0) - int(det < 0.0);
   }
-  return undecided(a, b, c);
-}
-
-inline int orient2d_filter(const Point2& a, const Point2& b, const Point2& c)
-{
-  return orient2d_filter(a, b, c, orient2d_exact);
+  return orient2d_exact(a, b, c);
 }
 
 /// incircle's filter on the differences of a, b, c to d (each with a relative error below eps, as
@@ -98,13 +92,8 @@ inline int incircle_filter_differences(double adx,
   return decided ? int(det > 0.0) - int(det < 0.0) : 0;
 }
 
-/// incircle's filter; when it cannot decide, `undecided(a, b, c, d)` does.
-template<typename Undecided>
-inline int incircle_filter(const Point2& a,
-  const Point2& b,
-  const Point2& c,
-  const Point2& d,
-  Undecided undecided)
+/// incircle's filter; when it cannot decide, incircle_exact does.
+inline int incircle_filter(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
 {
   const int sign =
     incircle_filter_differences(a.x - d.x, a.y - d.y, b.x - d.x, b.y - d.y, c.x - d.x, c.y - d.y);
@@ -112,12 +101,7 @@ inline int incircle_filter(const Point2& a,
   {
     return sign;
   }
-  return undecided(a, b, c, d);
-}
-
-inline int incircle_filter(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
-{
-  return incircle_filter(a, b, c, d, incircle_exact);
+  return incircle_exact(a, b, c, d);
 }
 
 inline int compare_distance_filter(const Point2& p, const Point2& a, const Point2& b)
