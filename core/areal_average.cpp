@@ -73,10 +73,6 @@ struct ThiessenArealAverage::State
   std::vector<Point2> Dense;
   std::vector<Point2> LonLat; // scratch for MeasureRings
 
-  // Whether CachedTile holds the tile of every gauge in the tessellation (the previous step
-  // derived them): then an update needs to derive only the tiles that changed.
-  bool TilesCurrent = false;
-
   /// Ellipsoidal area (m^2) of all the rings.
   double MeasureRings(const ClippedRings& rings)
   {
@@ -183,8 +179,7 @@ struct ThiessenArealAverage::State
     this->SpatialSort(inserted);
   }
 
-  /// The engine ids of the gauges' face mates (tiles.h), before anything changes.
-  std::vector<std::int32_t> MatesOf(const std::vector<std::int32_t>& gauges) const
+  std::vector<std::int32_t> EngineIds(const std::vector<std::int32_t>& gauges) const
   {
     std::vector<std::int32_t> ids;
     ids.reserve(gauges.size());
@@ -192,7 +187,13 @@ struct ThiessenArealAverage::State
     {
       ids.push_back(this->EngineOfGauge[g]);
     }
-    return ComputeFaceMatesOf(*this->Tessellation, ids).Ids;
+    return ids;
+  }
+
+  /// The engine ids of the gauges' face mates (tiles.h), before anything changes.
+  std::vector<std::int32_t> MatesOf(const std::vector<std::int32_t>& gauges) const
+  {
+    return ComputeFaceMatesOf(*this->Tessellation, this->EngineIds(gauges)).Ids;
   }
 
   /// Removes, then inserts (Green-Sibson removal and insertion).
@@ -236,7 +237,6 @@ struct ThiessenArealAverage::State
         &tiles.Vertices[tiles.Offsets[k]],
         static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]));
     }
-    this->TilesCurrent = this->Settings.Incremental;
     return tiles.PointIds.size();
   }
 
@@ -266,26 +266,18 @@ struct ThiessenArealAverage::State
     {
       mark(this->GaugeOfEngine[id]); // engine ids are never reused: still this gauge's
     }
-    std::vector<std::int32_t> insertedIds;
     for (const std::int32_t g : inserted)
     {
       mark(g);
-      insertedIds.push_back(this->EngineOfGauge[g]);
     }
-    const FaceMateLists fresh = ComputeFaceMatesOf(*this->Tessellation, insertedIds);
+    const FaceMateLists fresh = ComputeFaceMatesOf(*this->Tessellation, this->EngineIds(inserted));
     for (const std::int32_t id : fresh.Ids)
     {
       mark(this->GaugeOfEngine[id]);
     }
     // Neighbouring tiles one after the other: their faces share cache lines.
     this->SpatialSort(changed);
-    std::vector<std::int32_t> ids;
-    ids.reserve(changed.size());
-    for (const std::int32_t g : changed)
-    {
-      ids.push_back(this->EngineOfGauge[g]);
-    }
-    const TileSet tiles = ComputeTilesOf(*this->Tessellation, ids);
+    const TileSet tiles = ComputeTilesOf(*this->Tessellation, this->EngineIds(changed));
     for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
     {
       this->Refresh(this->GaugeOfEngine[tiles.PointIds[k]],
@@ -454,15 +446,16 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
       wanted[g] = 1;
     }
   }
-  // The local derivation when updating a two-dimensional tessellation whose tiles the previous
-  // step derived, with at most a fifth of the gauges changing; otherwise every tile.
+  // The local derivation when updating a two-dimensional tessellation, with at most a fifth of
+  // the gauges changing; otherwise every tile. A two-dimensional tessellation before the update
+  // means that the previous step derived every tile it has (the first step, or one after a step
+  // without reports, starts from an empty tessellation).
   bool local = false;
   std::vector<std::int32_t> removed, inserted, removedMates;
   if (s.Settings.Incremental)
   {
     s.ListChanges(wanted, removed, inserted);
-    local = s.TilesCurrent && s.Tessellation->IsTwoDimensional() &&
-      5 * (removed.size() + inserted.size()) <= n;
+    local = s.Tessellation->IsTwoDimensional() && 5 * (removed.size() + inserted.size()) <= n;
     if (local)
     {
       removedMates = s.MatesOf(removed);
@@ -487,7 +480,6 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
   step.StationsUsed = static_cast<int>(std::count(wanted.begin(), wanted.end(), 1));
   if (step.StationsUsed == 0)
   {
-    s.TilesCurrent = false;
     step.Mean = std::numeric_limits<double>::quiet_NaN();
     return step;
   }
