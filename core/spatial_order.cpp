@@ -222,16 +222,17 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
     return order;
   }
   Box2 box = BoundsOf(&points[ids[0]], 1);
+  std::int32_t largestId = 0;
   for (const std::int32_t id : ids)
   {
     box.Extend(points[id]);
+    largestId = std::max(largestId, id);
   }
-  const double xmin = box.XMin, xmax = box.XMax, ymin = box.YMin, ymax = box.YMax;
   const int levels = LevelCount(n);
   const int rounds = RoundCount(n);
   const double cells = double(std::uint32_t(1) << levels);
   // One common scale for both axes keeps the curve's locality isotropic.
-  const double extent = std::max(xmax - xmin, ymax - ymin);
+  const double extent = box.LargerSide();
   const double scale = extent > 0.0 ? (cells * (1.0 - 1e-12)) / extent : 0.0;
   const auto cell = [&](double v, double lo)
   {
@@ -245,11 +246,6 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
     ++roundBits;
   }
   const int keyBits = 2 * levels + roundBits;
-  std::int32_t largestId = 0;
-  for (const std::int32_t id : ids)
-  {
-    largestId = std::max(largestId, id);
-  }
   int idBits = 1;
   while (idBits < 31 && (std::int64_t(1) << idBits) <= largestId)
   {
@@ -263,7 +259,7 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
     const int zeros = std::min(__builtin_ctzll(hash | (std::uint64_t(1) << 63)), rounds - 1);
     const std::uint64_t round = std::uint64_t(rounds - 1 - zeros);
     const std::uint32_t h =
-      HilbertIndexFast(table, cell(points[id].x, xmin), cell(points[id].y, ymin), levels);
+      HilbertIndexFast(table, cell(points[id].x, box.XMin), cell(points[id].y, box.YMin), levels);
     return (round << (2 * levels)) | h;
   };
   order.resize(n);
