@@ -1321,7 +1321,7 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
   // floating-point ranges of the search, which give up outside 1e-70 .. 1e70, effective.
   int scale = 0;
   {
-    const double extent = std::max(xmax - xmin, ymax - ymin);
+    const double extent = bounds.LargerSide();
     if (std::isfinite(extent) && extent > 0.0)
     {
       const int e = std::ilogb(extent);
@@ -1335,6 +1335,10 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
     }
     scale = ok ? scale : 0;
   }
+  const Box2 scaled{ std::ldexp(xmin, scale),
+    std::ldexp(xmax, scale),
+    std::ldexp(ymin, scale),
+    std::ldexp(ymax, scale) };
   for (std::size_t i = 0; i < points.size(); ++i)
   {
     const Point2& p = points[i];
@@ -1355,8 +1359,8 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
     const std::size_t buckets =
       std::max<std::size_t>(1, std::min<std::size_t>(4096, keyed.size() / 64));
     // Keys are scaled by 2^scale, so the bucket range must be too.
-    const double keyMin = std::ldexp(xmin, scale);
-    const double keyMax = std::ldexp(xmax, scale);
+    const double keyMin = scaled.XMin;
+    const double keyMax = scaled.XMax;
     const double perUnit = double(buckets) / (keyMax - keyMin);
     auto bucketOf = [&](double x)
     {
@@ -1403,10 +1407,10 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
   keyed = std::vector<Keyed>();
   std::sort(result.Duplicates.begin(), result.Duplicates.end());
 
-  Sweep sweep(std::ldexp(xmin, scale),
-    std::ldexp(xmax, scale),
-    std::ldexp(ymin, scale),
-    std::ldexp(ymax, scale),
+  Sweep sweep(scaled.XMin,
+    scaled.XMax,
+    scaled.YMin,
+    scaled.YMax,
     std::move(xs),
     std::move(ys),
     std::move(ids));
