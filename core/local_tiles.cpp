@@ -347,7 +347,7 @@ void LocalTilesOfRange(const Tess& tess,
       AppendTile(tiles, v, polygon, std::int32_t(ring.size()));
       continue;
     }
-    RingTileEdges(tess, faces, v, start, edges, ring);
+    RingTileEdges(tess, faces, v, ring, edges);
     const std::int32_t sides = AssemblePolygon(tess, edges, polygon);
     AppendTile(tiles, v, polygon, sides);
   }

@@ -132,41 +132,37 @@ bool InteriorTile(const Tess& tess,
 
 // The clipped edges of v's tile, anticlockwise from the edge to its smallest
 // neighbour id (so the polygon does not depend on where the ring starts, nor on
-// the diagonals stored in degenerate faces).
+// the diagonals stored in degenerate faces). ring: the half-edges leaving v (CollectRing).
 // faces.Label(t) is triangle t's face (-2 - t for a ghost), faces.View(label)
 // its centre and inside flag.
 template<class Faces>
 void RingTileEdges(const Tess& tess,
   const Faces& faces,
   std::int32_t v,
-  std::int32_t vertexEdge,
-  std::vector<TileEdge>& edges,
-  std::vector<std::int32_t>& ring)
+  const std::vector<std::int32_t>& ring,
+  std::vector<TileEdge>& edges)
 {
   edges.clear();
   const auto& org = tess.Origin();
   const auto& twin = tess.Twin();
-  ring.clear();
   std::size_t first = 0;
   std::int32_t smallest = std::numeric_limits<std::int32_t>::max();
-  std::int32_t e = vertexEdge;
-  do
+  for (std::size_t k = 0; k < ring.size(); ++k)
   {
     // Diagonals of degenerate faces (the same face on both sides) depend on the insertion order:
     // they are never the start.
+    const std::int32_t e = ring[k];
     const std::int32_t j = org[Tess::Next(e)];
     if (j >= 0 && j < smallest && faces.Label(e / 3) != faces.Label(twin[e] / 3))
     {
       smallest = j;
-      first = ring.size();
+      first = k;
     }
-    ring.push_back(e);
-    e = tess.RingNext(e);
-  } while (e != vertexEdge);
+  }
   TileEdge edge;
   for (std::size_t k = 0; k < ring.size(); ++k)
   {
-    e = ring[(first + k) % ring.size()];
+    const std::int32_t e = ring[(first + k) % ring.size()];
     const std::int32_t j = org[Tess::Next(e)];
     const std::int32_t left = faces.Label(e / 3);
     const std::int32_t right = faces.Label(twin[e] / 3);

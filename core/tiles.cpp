@@ -422,13 +422,12 @@ std::int32_t TessellationDual::Neighbors1D(std::int32_t v, std::int32_t& next) c
 }
 
 void TessellationDual::TileEdgesOf(std::int32_t v,
-  std::int32_t vertexEdge,
-  std::vector<TileEdge>& edges,
-  std::vector<std::int32_t>& ring) const
+  const std::vector<std::int32_t>& ring,
+  std::vector<TileEdge>& edges) const
 {
   if (this->Tess.IsTwoDimensional())
   {
-    RingTileEdges(this->Tess, *this, v, vertexEdge, edges, ring);
+    RingTileEdges(this->Tess, *this, v, ring, edges);
     return;
   }
   // Two parallel edges; either cyclic order is anticlockwise, start at the
@@ -519,7 +518,7 @@ void TessellationDual::TilesOf(std::int32_t begin, std::int32_t end, TileSet& ti
         continue;
       }
     }
-    this->TileEdgesOf(v, planar ? this->OrderEdge[k] : -1, edges, ring);
+    this->TileEdgesOf(v, ring, edges); // the ring collected above (planar)
     const std::int32_t sides = AssemblePolygon(this->Tess, edges, polygon);
     AppendTile(tiles, v, polygon, sides);
   }

@@ -111,10 +111,10 @@ private:
     ClusterList& found) const;
   void RecordCluster(std::int32_t root, const std::int32_t* polygon, std::int32_t size);
   void ComputeCentres();
+  /// ring: the half-edges leaving v (CollectRing) when the tessellation is two-dimensional.
   void TileEdgesOf(std::int32_t v,
-    std::int32_t vertexEdge,
-    std::vector<tiles_detail::TileEdge>& edges,
-    std::vector<std::int32_t>& ring) const;
+    const std::vector<std::int32_t>& ring,
+    std::vector<tiles_detail::TileEdge>& edges) const;
   /// Tiles() and Contiguities() run chunks of Order in parallel (TilesOf, ContiguitiesOf);
   /// TouchRings walks RingBatch rings side by side to overlap their cache misses.
   static constexpr std::int32_t RingBatch = 32;
