@@ -112,18 +112,7 @@ public:
     if (this->Cluster.size() == 1)
     {
       std::int32_t a = org[3 * t], b = org[3 * t + 1], c = org[3 * t + 2];
-      if (b < a)
-      {
-        std::swap(a, b);
-      }
-      if (c < b)
-      {
-        std::swap(b, c);
-      }
-      if (b < a)
-      {
-        std::swap(a, b);
-      }
+      SortTriangleIds(a, b, c);
       this->Points.insert(this->Points.end(), { a, b, c });
     }
     else

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace tessera
@@ -75,6 +76,27 @@ void AppendTile(TileSet& tiles,
 
 /// Appends every tile of from to tiles (joining chunks computed apart, in order).
 void AppendTileSet(TileSet& tiles, const TileSet& from);
+
+/// Sorts a triangle's three (distinct) ids ascending with a rotation and at most one swap: the
+/// canonical order its centre is computed in, by the full and the local derivations alike, so
+/// that both give the same bits.
+inline void SortTriangleIds(std::int32_t& a, std::int32_t& b, std::int32_t& c)
+{
+  if (b < a && b < c)
+  {
+    std::swap(a, b);
+    std::swap(b, c);
+  }
+  else if (c < a && c < b)
+  {
+    std::swap(a, c);
+    std::swap(b, c);
+  }
+  if (c < b)
+  {
+    std::swap(b, c);
+  }
+}
 
 /// The half-edges leaving a point, anticlockwise from vertexEdge.
 inline void CollectRing(const Tess& tess, std::int32_t vertexEdge, std::vector<std::int32_t>& ring)

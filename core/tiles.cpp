@@ -129,21 +129,7 @@ void TessellationDual::CentresOf(std::int32_t begin, std::int32_t end)
       continue;
     }
     this->Data[t].Face = t; // until LabelFaces merges it
-    // Sort the three ids (a rotation and at most one swap).
-    if (b < a && b < c)
-    {
-      std::swap(a, b);
-      std::swap(b, c);
-    }
-    else if (c < a && c < b)
-    {
-      std::swap(a, c);
-      std::swap(b, c);
-    }
-    if (c < b)
-    {
-      std::swap(b, c);
-    }
+    SortTriangleIds(a, b, c);
     TriangleData& data = this->Data[t];
     double& error = this->CentreError[t];
     data.Centre = Circumcentre(pts[a], pts[b], pts[c], error);
