@@ -45,6 +45,56 @@ constexpr std::int32_t TwoRegionMinimum = 200000;
 // deferred points), smaller leaves more to the two regions.
 constexpr std::int32_t SampleDivisor = 32;
 
+// Where a region's walk restarts when the straight walk from its last triangle runs into a
+// triangle it does not own. The points of one side, taken in Hilbert order, leave the side and
+// come back wherever the curve crosses the seam, and the straight walk between two such points
+// may pass through the straddling band. A failed walk also left the region's last triangle where
+// it was, so the points after it failed too: with 1M uniform points from one generator 7% were
+// deferred, against 1.3% from another. Now the walk is tried once more from the triangle the
+// region last made in the point's cell of a coarse grid (seeded with its sample triangles): a
+// short walk that meets the band only near the seam. About 0.9% are deferred with either input.
+//
+// A slot the region has written holds a triangle it owns until both regions finish (it alone
+// changes such triangles, and its splits and flips keep their vertices on its side), and so does
+// an owned sample triangle: the restart reads nothing the other region writes. Each region has
+// its own grid.
+class RestartGrid
+{
+public:
+  RestartGrid(const Box2& box, std::int32_t cellsPerSide)
+    : Box(box)
+    , Cells(cellsPerSide)
+    , ScaleX(cellsPerSide / std::max(box.XMax - box.XMin, std::numeric_limits<double>::min()))
+    , ScaleY(cellsPerSide / std::max(box.YMax - box.YMin, std::numeric_limits<double>::min()))
+    , Triangles(std::size_t(cellsPerSide) * std::size_t(cellsPerSide), -1)
+  {
+  }
+
+  /// The cell's triangle (-1: none yet) of a point in the box the grid was made for.
+  std::int32_t& At(const Point2& p)
+  {
+    const std::int32_t i = this->Cell((p.x - this->Box.XMin) * this->ScaleX);
+    const std::int32_t j = this->Cell((p.y - this->Box.YMin) * this->ScaleY);
+    return this->Triangles[std::size_t(j) * std::size_t(this->Cells) + std::size_t(i)];
+  }
+
+private:
+  std::int32_t Cell(double scaled) const
+  {
+    return std::int32_t(std::clamp(scaled, 0.0, double(this->Cells - 1)));
+  }
+
+  Box2 Box;
+  std::int32_t Cells;
+  double ScaleX;
+  double ScaleY;
+  std::vector<std::int32_t> Triangles;
+};
+
+// About this many sample points per cell of a restart grid: a restart walk then crosses a few
+// triangles.
+constexpr std::int32_t SamplePointsPerCell = 4;
+
 } // namespace
 
 // Inserts vertices [0, count) (BuildFrom's local numbering) in order, on two regions when the
@@ -117,7 +167,12 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
   }
 
   // Each region starts at its owned triangle nearest to its first point, and gets 2 triangles
-  // per point: exactly what inserting all of them takes.
+  // per point: exactly what inserting all of them takes. Its restart grid starts with its owned
+  // sample triangles.
+  const Box2 box = BoundsOf(pts, std::size_t(end));
+  const std::int32_t cellsPerSide =
+    std::max(1, std::int32_t(std::sqrt(double(first) / SamplePointsPerCell)));
+  std::vector<RestartGrid> restarts(2, RestartGrid(box, cellsPerSide));
   std::int32_t slot = sampleTriangles;
   for (int side = 0; side < 2; ++side)
   {
@@ -137,6 +192,7 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
       if (!this->IsFreeTriangle(t) && !this->IsGhostTriangle(t) && ownedBy(region, t))
       {
         const Point2& v = pts[this->Origins[3 * t]];
+        restarts[side].At(v) = t;
         const double distance = (v.x - p.x) * (v.x - p.x) + (v.y - p.y) * (v.y - p.y);
         if (distance < nearest)
         {
@@ -156,10 +212,20 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
     for (const std::int32_t id : sides[side])
     {
       std::int32_t edge = -1;
-      const Location location = this->InsertInRegion(region, id, edge);
+      std::int32_t& restart = restarts[side].At(pts[id]);
+      Location location = this->InsertInRegion(region, id, edge);
+      if (location == Location::Foreign && restart >= 0 && restart != region.LastTriangle)
+      {
+        region.LastTriangle = restart;
+        location = this->InsertInRegion(region, id, edge);
+      }
       if (location == Location::Foreign || location == Location::OnVertex)
       {
         region.Deferred.push_back(id);
+      }
+      else
+      {
+        restart = region.LastTriangle;
       }
     }
   };
