@@ -41,7 +41,7 @@ void AppendTriangleFace(DelaunayFaces& faces, std::int32_t a, std::int32_t b, st
   {
     faces.PointIds.insert(faces.PointIds.end(), { c, a, b });
   }
-  faces.Offsets.push_back(std::int64_t(faces.PointIds.size()));
+  faces.Offsets.push_back(std::int32_t(faces.PointIds.size()));
 }
 } // namespace
 
@@ -702,14 +702,14 @@ DelaunayFaces TessellationDual::Faces(bool splitDegenerate) const
     else if (!splitDegenerate)
     {
       faces.PointIds.insert(faces.PointIds.end(), polygon, polygon + size);
-      faces.Offsets.push_back(std::int64_t(faces.PointIds.size()));
+      faces.Offsets.push_back(std::int32_t(faces.PointIds.size()));
     }
     else
     {
       for (std::int32_t k = 1; k + 1 < size; ++k)
       {
         faces.PointIds.insert(faces.PointIds.end(), { polygon[0], polygon[k], polygon[k + 1] });
-        faces.Offsets.push_back(std::int64_t(faces.PointIds.size()));
+        faces.Offsets.push_back(std::int32_t(faces.PointIds.size()));
       }
     }
   }
@@ -814,50 +814,75 @@ FaceChunk WriteTriangleFaces(const DirichletTessellation& tessellation,
 }
 } // namespace
 
-DelaunayFaces ComputeDelaunayFaces(const DirichletTessellation& tessellation, bool splitDegenerate)
+std::size_t DelaunayFaceCapacity(const DirichletTessellation& tessellation)
+{
+  return tessellation.Origin().size() / 3;
+}
+
+// The faces are the real triangles, each starting at its smallest id, in the order of the
+// triangle arrays (as Faces() lists them), unless some face is degenerate. Chunks of triangles
+// are written in parallel to their own parts of the output, then closed up: the same result for
+// any number of threads.
+std::int64_t WriteTriangularDelaunayFaces(const DirichletTessellation& tessellation,
+  std::int32_t* pointIds,
+  std::int32_t* offsets)
 {
   if (!tessellation.IsTwoDimensional())
   {
-    return TessellationDual(tessellation).Faces(splitDegenerate);
+    return -1;
   }
-  // Optimistically, the faces are the real triangles, each starting at its smallest id, in the
-  // order of the triangle arrays (as Faces() lists them). Chunks of triangles are written in
-  // parallel to their own parts of the output, then closed up: the same result for any number
-  // of threads. A degenerate face anywhere sends the whole computation to the dual.
-  const std::int32_t triangles = std::int32_t(tessellation.Origin().size() / 3);
+  const std::int32_t triangles = std::int32_t(DelaunayFaceCapacity(tessellation));
   const std::vector<std::int32_t> bounds = ChunkBounds(triangles, ThreadCount(triangles));
   const std::size_t chunks = bounds.size() - 1;
-  DelaunayFaces faces;
-  faces.PointIds.resize(3 * std::size_t(triangles));
   std::vector<FaceChunk> results(chunks);
   RunChunks(chunks,
     [&](std::size_t k)
     {
-      results[k] = WriteTriangleFaces(
-        tessellation, bounds[k], bounds[k + 1], faces.PointIds.data() + 3 * bounds[k]);
+      results[k] =
+        WriteTriangleFaces(tessellation, bounds[k], bounds[k + 1], pointIds + 3 * bounds[k]);
     });
   std::size_t count = 0;
   for (std::size_t k = 0; k < chunks; ++k)
   {
     if (results[k].Cocircular)
     {
-      return TessellationDual(tessellation).Faces(splitDegenerate);
+      return -1;
     }
     if (count != std::size_t(bounds[k]) && results[k].Faces > 0)
     {
-      std::memmove(faces.PointIds.data() + 3 * count,
-        faces.PointIds.data() + 3 * std::size_t(bounds[k]),
+      std::memmove(pointIds + 3 * count,
+        pointIds + 3 * std::size_t(bounds[k]),
         3 * results[k].Faces * sizeof(std::int32_t));
     }
     count += results[k].Faces;
   }
-  faces.PointIds.resize(3 * count);
-  faces.Offsets.resize(count + 1);
-  std::int64_t* offsets = faces.Offsets.data();
-  for (std::size_t k = 0; k <= count; ++k)
+  const std::vector<std::int32_t> offsetChunks =
+    ChunkBounds(std::int32_t(count + 1), ThreadCount(std::int64_t(count + 1)));
+  RunChunks(offsetChunks.size() - 1,
+    [&](std::size_t c)
+    {
+      for (std::int32_t k = offsetChunks[c]; k < offsetChunks[c + 1]; ++k)
+      {
+        offsets[k] = 3 * k;
+      }
+    });
+  return std::int64_t(count);
+}
+
+DelaunayFaces ComputeDelaunayFaces(const DirichletTessellation& tessellation, bool splitDegenerate)
+{
+  const std::size_t capacity = DelaunayFaceCapacity(tessellation);
+  DelaunayFaces faces;
+  faces.PointIds.resize(3 * capacity);
+  faces.Offsets.resize(capacity + 1);
+  const std::int64_t count =
+    WriteTriangularDelaunayFaces(tessellation, faces.PointIds.data(), faces.Offsets.data());
+  if (count < 0)
   {
-    offsets[k] = std::int64_t(3 * k);
+    return TessellationDual(tessellation).Faces(splitDegenerate);
   }
+  faces.PointIds.resize(3 * std::size_t(count));
+  faces.Offsets.resize(std::size_t(count) + 1);
   return faces;
 }
 } // namespace tessera

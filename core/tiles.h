@@ -67,9 +67,11 @@ struct ContiguityGraph
 /// Delaunay faces, each anticlockwise and starting at its smallest point id, listed in the order
 /// of the triangle arrays. The set of faces, and each face, do not depend on the insertion order;
 /// the listing order does.
+/// Offsets are int32 like the ids: a tessellation holds at most INT32_MAX / 8 points, so fewer
+/// than 6 ids per point fit.
 struct DelaunayFaces
 {
-  std::vector<std::int64_t> Offsets;
+  std::vector<std::int32_t> Offsets;
   std::vector<std::int32_t> PointIds;
 };
 
@@ -180,5 +182,18 @@ FaceMateLists ComputeFaceMatesOf(const DirichletTessellation& tessellation,
   const std::vector<std::int32_t>& ids);
 ContiguityGraph ComputeContiguityGraph(const DirichletTessellation& tessellation);
 DelaunayFaces ComputeDelaunayFaces(const DirichletTessellation& tessellation, bool splitDegenerate);
+
+/// An upper bound on the number of faces when every Delaunay face is a triangle.
+std::size_t DelaunayFaceCapacity(const DirichletTessellation& tessellation);
+
+/// ComputeDelaunayFaces when every face is a triangle (the common case), written into the
+/// caller's arrays, e.g. a VTK filter's output, so that nothing is copied. pointIds must hold
+/// 3 * DelaunayFaceCapacity() ids and offsets DelaunayFaceCapacity() + 1. Returns the number of
+/// faces written (the same faces, in the same order, as ComputeDelaunayFaces), or -1 when some
+/// face is degenerate or the tessellation is not two-dimensional: then the arrays hold nothing
+/// of use and ComputeDelaunayFaces gives the faces.
+std::int64_t WriteTriangularDelaunayFaces(const DirichletTessellation& tessellation,
+  std::int32_t* pointIds,
+  std::int32_t* offsets);
 
 } // namespace tessera
