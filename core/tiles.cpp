@@ -443,50 +443,136 @@ void TessellationDual::TileEdgesOf(std::int32_t v,
 // own arrays (chunk 0 straight into the result), then concatenated in order: the result does not
 // depend on the number of threads.
 
+struct TessellationDual::RingScratch
+{
+  std::vector<std::int32_t> Ring; ///< the half-edges leaving the point (planar case)
+  std::vector<TileEdge> Edges;
+  std::vector<Point2> Polygon;
+  std::vector<std::pair<std::int32_t, std::uint8_t>> Around;
+  TileEdge Edge;
+};
+
 TileSet TessellationDual::Tiles() const
 {
   TileSet tiles;
-  const std::size_t accepted = this->Tess.AcceptedCount();
-  tiles.PointIds.reserve(accepted);
-  tiles.Offsets.reserve(accepted + 1);
-  tiles.Areas.reserve(accepted);
-  tiles.NeighborCounts.reserve(accepted);
-  tiles.Vertices.reserve(6 * accepted + 16);
-  tiles.Offsets.push_back(0);
-  const std::int32_t count = std::int32_t(this->Order.size());
-  const std::vector<std::int32_t> bounds = ChunkBounds(count, ThreadCount(count));
-  std::vector<TileSet> parts(bounds.size() - 2);
-  RunChunks(bounds.size() - 1,
-    [&](std::size_t k)
-    {
-      TileSet& out = k == 0 ? tiles : parts[k - 1];
-      if (k > 0)
-      {
-        const std::size_t size = std::size_t(bounds[k + 1] - bounds[k]);
-        out.PointIds.reserve(size);
-        out.Offsets.reserve(size + 1);
-        out.Areas.reserve(size);
-        out.NeighborCounts.reserve(size);
-        out.Vertices.reserve(6 * size + 16);
-        out.Offsets.push_back(0);
-      }
-      this->TilesOf(bounds[k], bounds[k + 1], out);
-    });
-  for (const TileSet& part : parts)
-  {
-    AppendTileSet(tiles, part);
-  }
+  this->Derive(&tiles, nullptr);
   return tiles;
 }
 
-// The tiles of Order[begin .. end), appended to tiles (whose Offsets already has its first 0):
-// interior tiles without clipping (InteriorTile, the same bits), every other point through the
-// clipped tile edges.
-void TessellationDual::TilesOf(std::int32_t begin, std::int32_t end, TileSet& tiles) const
+ContiguityGraph TessellationDual::Contiguities() const
 {
-  std::vector<TileEdge> edges;
-  std::vector<Point2> polygon;
-  std::vector<std::int32_t> ring;
+  ContiguityGraph graph;
+  this->Derive(nullptr, &graph);
+  return graph;
+}
+
+TilesAndGraph TessellationDual::TilesAndContiguities() const
+{
+  TilesAndGraph both;
+  this->Derive(&both.Tiles, &both.Graph);
+  return both;
+}
+
+namespace
+{
+void ReserveTiles(TileSet& tiles, std::size_t count)
+{
+  tiles.PointIds.reserve(count);
+  tiles.Offsets.reserve(count + 1);
+  tiles.Areas.reserve(count);
+  tiles.NeighborCounts.reserve(count);
+  tiles.Vertices.reserve(6 * count + 16);
+  tiles.Offsets.push_back(0);
+}
+
+void ReserveGraph(ContiguityGraph& graph, std::size_t count)
+{
+  graph.Pairs.reserve(6 * count);
+  graph.Kinds.reserve(3 * count);
+}
+} // namespace
+
+// The requested results (either pointer may be null) in one pass over the rings, so that asking
+// for both walks each ring once: the walks are cache misses, and walking twice cost as much again
+// as the contiguity tests.
+void TessellationDual::Derive(TileSet* tiles, ContiguityGraph* graph) const
+{
+  const std::vector<std::pair<std::int32_t, std::int32_t>> half =
+    graph ? this->HalfNeighbours() : std::vector<std::pair<std::int32_t, std::int32_t>>();
+  const std::int32_t count = std::int32_t(this->Order.size());
+  const std::vector<std::int32_t> bounds = ChunkBounds(count, ThreadCount(count));
+  const std::size_t chunks = bounds.size() - 1;
+  std::vector<TileSet> tileParts(chunks - 1);
+  std::vector<ContiguityGraph> graphParts(chunks - 1);
+  RunChunks(chunks,
+    [&](std::size_t k)
+    {
+      const std::size_t size = std::size_t(k == 0 ? count : bounds[k + 1] - bounds[k]);
+      TileSet* chunkTiles = !tiles ? nullptr : k == 0 ? tiles : &tileParts[k - 1];
+      ContiguityGraph* chunkGraph = !graph ? nullptr : k == 0 ? graph : &graphParts[k - 1];
+      if (chunkTiles)
+      {
+        ReserveTiles(*chunkTiles, size);
+      }
+      if (chunkGraph)
+      {
+        ReserveGraph(*chunkGraph, size);
+      }
+      this->DeriveOf(bounds[k], bounds[k + 1], half, chunkTiles, chunkGraph);
+    });
+  for (std::size_t k = 0; k + 1 < chunks; ++k)
+  {
+    if (tiles)
+    {
+      AppendTileSet(*tiles, tileParts[k]);
+    }
+    if (graph)
+    {
+      graph->Pairs.insert(
+        graph->Pairs.end(), graphParts[k].Pairs.begin(), graphParts[k].Pairs.end());
+      graph->Kinds.insert(
+        graph->Kinds.end(), graphParts[k].Kinds.begin(), graphParts[k].Kinds.end());
+    }
+  }
+}
+
+// Half-neighbours: non-adjacent vertices of a degenerate face whose centre is in the window,
+// as sorted pairs (smaller id first).
+std::vector<std::pair<std::int32_t, std::int32_t>> TessellationDual::HalfNeighbours() const
+{
+  std::vector<std::pair<std::int32_t, std::int32_t>> half;
+  for (const std::int32_t rep : this->DegenerateReps)
+  {
+    if (!this->Data[rep].Inside)
+    {
+      continue;
+    }
+    std::int32_t size = 0;
+    const std::int32_t* polygon = this->DegeneratePolygon(rep, size);
+    for (std::int32_t x = 0; x < size; ++x)
+    {
+      for (std::int32_t y = x + 2; y < size; ++y)
+      {
+        if (!(x == 0 && y == size - 1))
+        {
+          half.emplace_back(std::min(polygon[x], polygon[y]), std::max(polygon[x], polygon[y]));
+        }
+      }
+    }
+  }
+  std::sort(half.begin(), half.end());
+  return half;
+}
+
+// The results for the points Order[begin .. end), appended to tiles and graph (either may be
+// null; tiles' Offsets already has its first 0). Each point's ring is collected once for both.
+void TessellationDual::DeriveOf(std::int32_t begin,
+  std::int32_t end,
+  const std::vector<std::pair<std::int32_t, std::int32_t>>& half,
+  TileSet* tiles,
+  ContiguityGraph* graph) const
+{
+  RingScratch scratch;
   const bool planar = this->Tess.IsTwoDimensional();
   for (std::int32_t k = begin; k < end; ++k)
   {
@@ -497,17 +583,32 @@ void TessellationDual::TilesOf(std::int32_t begin, std::int32_t end, TileSet& ti
     const std::int32_t v = this->Order[k];
     if (planar)
     {
-      CollectRing(this->Tess, this->OrderEdge[k], ring);
-      if (InteriorTile(this->Tess, *this, ring, polygon))
-      {
-        AppendTile(tiles, v, polygon, std::int32_t(ring.size()));
-        continue;
-      }
+      CollectRing(this->Tess, this->OrderEdge[k], scratch.Ring);
     }
-    this->TileEdgesOf(v, ring, edges); // the ring collected above (planar)
-    const std::int32_t sides = AssemblePolygon(this->Tess, edges, polygon);
-    AppendTile(tiles, v, polygon, sides);
+    if (tiles)
+    {
+      this->AppendTileOf(v, scratch, *tiles);
+    }
+    if (graph)
+    {
+      this->AppendContiguitiesOf(v, half, scratch, *graph);
+    }
   }
+}
+
+// Point v's tile (scratch.Ring: its ring when planar): an interior tile without clipping
+// (InteriorTile, the same bits), any other through the clipped tile edges.
+void TessellationDual::AppendTileOf(std::int32_t v, RingScratch& scratch, TileSet& tiles) const
+{
+  if (this->Tess.IsTwoDimensional() &&
+    InteriorTile(this->Tess, *this, scratch.Ring, scratch.Polygon))
+  {
+    AppendTile(tiles, v, scratch.Polygon, std::int32_t(scratch.Ring.size()));
+    return;
+  }
+  this->TileEdgesOf(v, scratch.Ring, scratch.Edges);
+  const std::int32_t sides = AssemblePolygon(this->Tess, scratch.Edges, scratch.Polygon);
+  AppendTile(tiles, v, scratch.Polygon, sides);
 }
 
 // A ring walk is a chain of dependent loads (twin, then the next triangle's twin ...), mostly
@@ -548,129 +649,64 @@ void TessellationDual::TouchRings(std::int32_t begin, std::int32_t end) const
   }
 }
 
-ContiguityGraph TessellationDual::Contiguities() const
-{
-  ContiguityGraph graph;
-  // Half-neighbours: non-adjacent vertices of a degenerate face whose centre is
-  // in the window.
-  std::vector<std::pair<std::int32_t, std::int32_t>> half;
-  for (const std::int32_t rep : this->DegenerateReps)
-  {
-    if (!this->Data[rep].Inside)
-    {
-      continue;
-    }
-    std::int32_t size = 0;
-    const std::int32_t* polygon = this->DegeneratePolygon(rep, size);
-    for (std::int32_t x = 0; x < size; ++x)
-    {
-      for (std::int32_t y = x + 2; y < size; ++y)
-      {
-        if (!(x == 0 && y == size - 1))
-        {
-          half.emplace_back(std::min(polygon[x], polygon[y]), std::max(polygon[x], polygon[y]));
-        }
-      }
-    }
-  }
-  std::sort(half.begin(), half.end());
-
-  graph.Pairs.reserve(6 * this->Tess.AcceptedCount());
-  graph.Kinds.reserve(3 * this->Tess.AcceptedCount());
-  const std::int32_t count = std::int32_t(this->Order.size());
-  const std::vector<std::int32_t> bounds = ChunkBounds(count, ThreadCount(count));
-  std::vector<ContiguityGraph> parts(bounds.size() - 2);
-  RunChunks(bounds.size() - 1,
-    [&](std::size_t k)
-    {
-      ContiguityGraph& out = k == 0 ? graph : parts[k - 1];
-      if (k > 0)
-      {
-        const std::size_t size = std::size_t(bounds[k + 1] - bounds[k]);
-        out.Pairs.reserve(6 * size);
-        out.Kinds.reserve(3 * size);
-      }
-      this->ContiguitiesOf(bounds[k], bounds[k + 1], half, out);
-    });
-  for (const ContiguityGraph& part : parts)
-  {
-    graph.Pairs.insert(graph.Pairs.end(), part.Pairs.begin(), part.Pairs.end());
-    graph.Kinds.insert(graph.Kinds.end(), part.Kinds.begin(), part.Kinds.end());
-  }
-  return graph;
-}
-
-// The contiguities of Order[begin .. end) with larger ids, appended to graph. An edge between two
-// distinct real faces whose centres are both inside the window is kept whole (ClipEdge would
-// return it at once); any other edge is clipped.
-void TessellationDual::ContiguitiesOf(std::int32_t begin,
-  std::int32_t end,
+// Point v's contiguities with larger ids, appended to graph. An edge between two distinct real
+// faces whose centres are both inside the window is kept whole (ClipEdge would return it at
+// once); any other edge is clipped.
+void TessellationDual::AppendContiguitiesOf(std::int32_t v,
   const std::vector<std::pair<std::int32_t, std::int32_t>>& half,
+  RingScratch& scratch,
   ContiguityGraph& graph) const
 {
-  const bool planar = this->Tess.IsTwoDimensional();
   const auto& org = this->Tess.Origin();
   const auto& twin = this->Tess.Twin();
-  std::vector<std::pair<std::int32_t, std::uint8_t>> around;
-  TileEdge edge;
-  for (std::int32_t index = begin; index < end; ++index)
+  auto& around = scratch.Around;
+  TileEdge& edge = scratch.Edge;
+  around.clear();
+  if (!this->Tess.IsTwoDimensional())
   {
-    if (planar && (index - begin) % RingBatch == 0)
+    std::int32_t next = -1;
+    const std::int32_t previous = this->Neighbors1D(v, next);
+    for (const std::int32_t j : { previous, next })
     {
-      this->TouchRings(index, std::min(end, index + RingBatch));
-    }
-    const std::int32_t v = this->Order[index];
-    around.clear();
-    if (!planar)
-    {
-      std::int32_t next = -1;
-      const std::int32_t previous = this->Neighbors1D(v, next);
-      for (const std::int32_t j : { previous, next })
+      if (j > v && ClipEdge(this->Tess, v, j, FaceView(), FaceView(), edge))
       {
-        if (j > v && ClipEdge(this->Tess, v, j, FaceView(), FaceView(), edge))
+        around.emplace_back(j, 0);
+      }
+    }
+  }
+  else
+  {
+    for (const std::int32_t e : scratch.Ring)
+    {
+      const std::int32_t j = org[Tess::Next(e)];
+      if (j > v)
+      {
+        const std::int32_t left = this->Data[e / 3].Face;
+        const std::int32_t right = this->Data[twin[e] / 3].Face;
+        if (left != right &&
+          ((left >= 0 && right >= 0 && this->Data[left].Inside && this->Data[right].Inside) ||
+            ClipEdge(this->Tess, v, j, this->View(right), this->View(left), edge)))
         {
           around.emplace_back(j, 0);
         }
       }
     }
-    else
+  }
+  if (!half.empty())
+  {
+    for (auto at = std::lower_bound(half.begin(), half.end(), std::make_pair(v, std::int32_t(-1)));
+         at != half.end() && at->first == v;
+         ++at)
     {
-      const std::int32_t start = this->OrderEdge[index];
-      std::int32_t e = start;
-      do
-      {
-        const std::int32_t j = org[Tess::Next(e)];
-        if (j > v)
-        {
-          const std::int32_t left = this->Data[e / 3].Face;
-          const std::int32_t right = this->Data[twin[e] / 3].Face;
-          if (left != right &&
-            ((left >= 0 && right >= 0 && this->Data[left].Inside && this->Data[right].Inside) ||
-              ClipEdge(this->Tess, v, j, this->View(right), this->View(left), edge)))
-          {
-            around.emplace_back(j, 0);
-          }
-        }
-        e = this->Tess.RingNext(e);
-      } while (e != start);
+      around.emplace_back(at->second, 1);
     }
-    if (!half.empty())
-    {
-      for (auto at =
-             std::lower_bound(half.begin(), half.end(), std::make_pair(v, std::int32_t(-1)));
-           at != half.end() && at->first == v;
-           ++at)
-      {
-        around.emplace_back(at->second, 1);
-      }
-    }
-    std::sort(around.begin(), around.end());
-    for (const auto& [j, kind] : around)
-    {
-      graph.Pairs.push_back(v);
-      graph.Pairs.push_back(j);
-      graph.Kinds.push_back(kind);
-    }
+  }
+  std::sort(around.begin(), around.end());
+  for (const auto& [j, kind] : around)
+  {
+    graph.Pairs.push_back(v);
+    graph.Pairs.push_back(j);
+    graph.Kinds.push_back(kind);
   }
 }
 

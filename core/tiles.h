@@ -64,6 +64,12 @@ struct ContiguityGraph
   std::vector<std::uint8_t> Kinds; ///< 0: share an edge of positive length, 1: half-neighbours
 };
 
+struct TilesAndGraph
+{
+  TileSet Tiles;
+  ContiguityGraph Graph;
+};
+
 /// Delaunay faces, each anticlockwise and starting at its smallest point id, listed in the order
 /// of the triangle arrays. The set of faces, and each face, do not depend on the insertion order;
 /// the listing order does.
@@ -90,6 +96,9 @@ public:
 
   TileSet Tiles() const;
   ContiguityGraph Contiguities() const;
+  /// Both, as Tiles() and Contiguities() give them, in one pass over the rings (faster than
+  /// calling the two).
+  TilesAndGraph TilesAndContiguities() const;
   /// With splitDegenerate, a degenerate face becomes a fan of triangles from its smallest id.
   DelaunayFaces Faces(bool splitDegenerate) const;
 
@@ -117,14 +126,22 @@ private:
   void TileEdgesOf(std::int32_t v,
     const std::vector<std::int32_t>& ring,
     std::vector<tiles_detail::TileEdge>& edges) const;
-  /// Tiles() and Contiguities() run chunks of Order in parallel (TilesOf, ContiguitiesOf);
+  /// Tiles() and Contiguities() run chunks of Order in parallel (Derive, DeriveOf);
   /// TouchRings walks RingBatch rings side by side to overlap their cache misses.
   static constexpr std::int32_t RingBatch = 32;
+  struct RingScratch; // one chunk's buffers (tiles.cpp)
   void TouchRings(std::int32_t begin, std::int32_t end) const;
-  void TilesOf(std::int32_t begin, std::int32_t end, TileSet& tiles) const;
-  void ContiguitiesOf(std::int32_t begin,
+  void Derive(TileSet* tiles, ContiguityGraph* graph) const;
+  void DeriveOf(std::int32_t begin,
     std::int32_t end,
     const std::vector<std::pair<std::int32_t, std::int32_t>>& half,
+    TileSet* tiles,
+    ContiguityGraph* graph) const;
+  std::vector<std::pair<std::int32_t, std::int32_t>> HalfNeighbours() const;
+  void AppendTileOf(std::int32_t v, RingScratch& scratch, TileSet& tiles) const;
+  void AppendContiguitiesOf(std::int32_t v,
+    const std::vector<std::pair<std::int32_t, std::int32_t>>& half,
+    RingScratch& scratch,
     ContiguityGraph& graph) const;
   const std::int32_t* DegeneratePolygon(std::int32_t face, std::int32_t& size) const;
   std::int32_t Neighbors1D(std::int32_t v, std::int32_t& next) const;

@@ -12,6 +12,7 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkTypeInt32Array.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "TesseraFilterUtilities.h"
@@ -22,6 +23,8 @@
 #include "tiles.h"
 
 #include <algorithm>
+#include <climits>
+#include <cstdint>
 #include <exception>
 #include <string>
 #include <utility>
@@ -43,10 +46,11 @@ struct TessellationResult
 TessellationResult RunGreenSibson(tessera::Window window, std::vector<tessera::Point2> points)
 {
   const tessera::DirichletTessellation tessellation(std::move(window), std::move(points));
-  const tessera::TessellationDual dual(tessellation);
-  return {
-    dual.Tiles(), dual.Contiguities(), tessellation.RejectedIds(), tessellation.Duplicates()
-  };
+  tessera::TilesAndGraph both = tessera::TessellationDual(tessellation).TilesAndContiguities();
+  return { std::move(both.Tiles),
+    std::move(both.Graph),
+    tessellation.RejectedIds(),
+    tessellation.Duplicates() };
 }
 
 TessellationResult RunBrasselReif(const tessera::Window& window,
@@ -86,11 +90,23 @@ std::vector<std::int32_t> OrderByPointId(const std::vector<std::int32_t>& keys, 
   return order;
 }
 
+/// The cell arrays use 32-bit storage, which VTK reads like the 64-bit kind: half the memory to
+/// fill. Both engines hold fewer than INT32_MAX / 8 points, so fewer than 2^31 ids fit.
+void CheckFitsInt32(vtkIdType count, const char* what)
+{
+  if (count > vtkIdType(INT32_MAX))
+  {
+    throw tessera::InputError(
+      std::string("too many ") + what + " for 32-bit cell arrays: " + std::to_string(count));
+  }
+}
+
 /// Output 0: the tiles in ascending point id, their arrays and the input's point data on them.
 void WriteTiles(const tessera::TileSet& tiles, vtkPointSet* input, vtkPolyData* output)
 {
   const vtkIdType tileCount = static_cast<vtkIdType>(tiles.PointIds.size());
   const vtkIdType vertexCount = static_cast<vtkIdType>(tiles.Vertices.size());
+  CheckFitsInt32(vertexCount, "tile vertices");
   const std::vector<std::int32_t> order =
     OrderByPointId(tiles.PointIds, static_cast<std::size_t>(input->GetNumberOfPoints()));
 
@@ -98,13 +114,14 @@ void WriteTiles(const tessera::TileSet& tiles, vtkPointSet* input, vtkPolyData* 
   coordinates->SetNumberOfComponents(3);
   coordinates->SetNumberOfTuples(vertexCount);
   double* xyz = coordinates->GetPointer(0);
-  vtkNew<vtkIdTypeArray> offsets;
+  vtkNew<vtkTypeInt32Array> offsets;
   offsets->SetNumberOfValues(tileCount + 1);
-  vtkIdType* offsetData = offsets->GetPointer(0);
-  vtkIdType written = 0;
+  std::int32_t* offsetData = offsets->GetPointer(0);
+  std::int32_t written = 0;
   // The tiles come in the core's (spatial) order and leave in point id order: the reads jump
   // about, so the vertices of a tile a few steps ahead are requested early (and the offset that
-  // locates them earlier still).
+  // locates them earlier still). Splitting this copy over two threads gained nothing at 1M
+  // points: it is bound by first touching the output's pages.
   constexpr vtkIdType ahead = 8;
   for (vtkIdType k = 0; k < tileCount; ++k)
   {
@@ -133,10 +150,10 @@ void WriteTiles(const tessera::TileSet& tiles, vtkPointSet* input, vtkPolyData* 
   points->SetData(coordinates);
   output->SetPoints(points);
 
-  vtkNew<vtkIdTypeArray> connectivity;
+  vtkNew<vtkTypeInt32Array> connectivity;
   connectivity->SetNumberOfValues(vertexCount);
-  vtkIdType* ids = connectivity->GetPointer(0);
-  for (vtkIdType v = 0; v < vertexCount; ++v)
+  std::int32_t* ids = connectivity->GetPointer(0);
+  for (std::int32_t v = 0; v < std::int32_t(vertexCount); ++v)
   {
     ids[v] = v;
   }
@@ -205,6 +222,7 @@ public:
       output->SetPoints(input->GetPoints());
     }
     output->GetPointData()->PassData(input->GetPointData());
+    CheckFitsInt32(2 * this->PairCount, "contiguities");
     this->Offsets->SetNumberOfValues(this->PairCount + 1);
     this->Connectivity->SetNumberOfValues(2 * this->PairCount);
     this->Kinds->SetName("Kind");
@@ -217,7 +235,7 @@ public:
     // groups in their own tile order, so a stable counting sort on i is enough (linear time):
     // the pairs are read in order and each written straight to its place.
     const std::vector<std::int32_t>& pairs = this->Graph.Pairs;
-    std::vector<vtkIdType>& start = this->Start;
+    std::vector<std::int32_t>& start = this->Start;
     // Point ids are random in space: the counters are requested a few pairs ahead.
     constexpr vtkIdType ahead = 16;
     for (vtkIdType k = 0; k < this->PairCount; ++k)
@@ -232,8 +250,8 @@ public:
     {
       start[i] += start[i - 1];
     }
-    vtkIdType* offsetData = this->Offsets->GetPointer(0);
-    vtkIdType* ids = this->Connectivity->GetPointer(0);
+    std::int32_t* offsetData = this->Offsets->GetPointer(0);
+    std::int32_t* ids = this->Connectivity->GetPointer(0);
     unsigned char* kindData = this->Kinds->GetPointer(0);
     for (vtkIdType k = 0; k < this->PairCount; ++k)
     {
@@ -242,12 +260,12 @@ public:
         __builtin_prefetch(start.data() + pairs[2 * (k + ahead)]);
       }
       const std::int32_t i = pairs[2 * k];
-      const vtkIdType at = start[i]++;
+      const std::int32_t at = start[i]++;
       ids[2 * at] = i;
       ids[2 * at + 1] = pairs[2 * k + 1];
       kindData[at] = this->Graph.Kinds[k];
     }
-    for (vtkIdType k = 0; k <= this->PairCount; ++k)
+    for (std::int32_t k = 0; k <= std::int32_t(this->PairCount); ++k)
     {
       offsetData[k] = 2 * k;
     }
@@ -264,9 +282,9 @@ public:
 private:
   const tessera::ContiguityGraph& Graph;
   const vtkIdType PairCount;
-  std::vector<vtkIdType> Start;
-  vtkNew<vtkIdTypeArray> Offsets;
-  vtkNew<vtkIdTypeArray> Connectivity;
+  std::vector<std::int32_t> Start;
+  vtkNew<vtkTypeInt32Array> Offsets;
+  vtkNew<vtkTypeInt32Array> Connectivity;
   vtkNew<vtkUnsignedCharArray> Kinds;
 };
 

@@ -634,5 +634,66 @@ TEST(Tiles, FastDelaunayFacesEqualTheDualsFaces)
       EXPECT_EQ(fast.Offsets, dual.Offsets) << "round " << round;
       EXPECT_EQ(fast.PointIds, dual.PointIds) << "round " << round;
     }
+    // The same fast path writing into the caller's arrays: all or nothing.
+    const std::size_t capacity = tessera::DelaunayFaceCapacity(t);
+    std::vector<std::int32_t> ids(3 * capacity, -7), offsets(capacity + 1, -7);
+    const std::int64_t count = tessera::WriteTriangularDelaunayFaces(t, ids.data(), offsets.data());
+    const tessera::TessellationDual dual(t);
+    if (dual.DegenerateFaceCount() > 0)
+    {
+      EXPECT_EQ(count, -1) << "round " << round;
+      continue;
+    }
+    const tessera::DelaunayFaces faces = dual.Faces(false);
+    ASSERT_EQ(count + 1, std::int64_t(faces.Offsets.size())) << "round " << round;
+    ids.resize(3 * std::size_t(count));
+    offsets.resize(std::size_t(count) + 1);
+    EXPECT_EQ(ids, faces.PointIds) << "round " << round;
+    EXPECT_EQ(offsets, faces.Offsets) << "round " << round;
+  }
+}
+
+// TilesAndContiguities walks each ring once for both results: it must give exactly what the two
+// separate passes give, for uniform points, lattice patches (degenerate faces, half-neighbours),
+// an oblique window that clips many tiles, removals, and collinear points.
+TEST(Tiles, TilesAndContiguitiesEqualTheSeparatePasses)
+{
+  const Window oblique({ { 1.0, 1.0, -1.6 }, { -1.0, 0.2, -0.3 }, { 0.1, -1.0, -0.2 } });
+  std::vector<std::vector<Point2>> sets;
+  sets.push_back(UniformPoints(3000, 5));
+  sets.push_back(tessera_test::SquareLattice(30, 30.0));
+  std::vector<Point2> mixed = UniformPoints(800, 6);
+  const std::vector<Point2> patch = tessera_test::SquareLattice(6, 50.0);
+  mixed.insert(mixed.end(), patch.begin(), patch.end());
+  sets.push_back(mixed);
+  sets.push_back({ { 0.1, 0.1 }, { 0.3, 0.3 }, { 0.5, 0.5 }, { 0.9, 0.9 } });
+  for (std::size_t set = 0; set < sets.size(); ++set)
+  {
+    for (const Window& window : { Window::Rectangle(-0.1, 1.1, -0.1, 1.1), oblique })
+    {
+      DirichletTessellation t(window, sets[set]);
+      if (set == 2)
+      {
+        for (std::int32_t id = 0; id < 100; ++id)
+        {
+          if (t.Status(id) == PointStatus::Accepted)
+          {
+            t.Remove(id);
+          }
+        }
+      }
+      const TessellationDual dual(t);
+      const TilesAndGraph both = dual.TilesAndContiguities();
+      const TileSet tiles = dual.Tiles();
+      const ContiguityGraph graph = dual.Contiguities();
+      EXPECT_EQ(both.Tiles.PointIds, tiles.PointIds) << "set " << set;
+      EXPECT_EQ(both.Tiles.Offsets, tiles.Offsets) << "set " << set;
+      EXPECT_TRUE(both.Tiles.Vertices == tiles.Vertices) << "set " << set;
+      EXPECT_EQ(both.Tiles.Areas, tiles.Areas) << "set " << set;
+      EXPECT_EQ(both.Tiles.NeighborCounts, tiles.NeighborCounts) << "set " << set;
+      EXPECT_EQ(both.Graph.Pairs, graph.Pairs) << "set " << set;
+      EXPECT_EQ(both.Graph.Kinds, graph.Kinds) << "set " << set;
+      EXPECT_GT(graph.Pairs.size(), 0u) << "set " << set;
+    }
   }
 }
