@@ -2,7 +2,11 @@
 // CGAL's Delaunay_triangulation_2 (exact predicates, inexact constructions, range insert),
 // vtkDelaunay2D and vtkVoronoi2D (where they finish within a minute).
 //
-//   bench_filters [max_points]     (default 1000000) prints a Markdown table
+//   bench_filters [max_points] [repeats]   (defaults 1000000 and 5) prints a Markdown table
+//
+// Tessera's filters and CGAL run `repeats` times each, in turn, on the same input, and the table
+// shows the median run: this VM's single runs vary by 15-25%. vtkDelaunay2D and vtkVoronoi2D
+// run once (they take seconds to minutes).
 #include "vtkDelaunay2D.h"
 #include "vtkDelaunayTriangulation.h"
 #include "vtkDirichletTessellation.h"
@@ -17,6 +21,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #endif
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -49,7 +54,13 @@ vtkNew<vtkPolyData> UniformPoints(vtkIdType n, unsigned seed)
   return data;
 }
 
-template <typename Filter>
+double Median(std::vector<double> seconds)
+{
+  std::sort(seconds.begin(), seconds.end());
+  return seconds[seconds.size() / 2];
+}
+
+template<typename Filter>
 double TimeFilter(vtkPolyData* input, vtkIdType& cells)
 {
   vtkNew<Filter> filter;
@@ -95,7 +106,16 @@ std::string Cell(double seconds)
 
 int main(int argc, char** argv)
 {
+  if (argc > 1 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h"))
+  {
+    std::printf(
+      "usage: bench_filters [max_points] [repeats]   (defaults 1000000 and 5)\n"
+      "Times vtkDelaunayTriangulation and vtkDirichletTessellation through Update()\n"
+      "beside CGAL, vtkDelaunay2D and vtkVoronoi2D on 1e4 .. max_points uniform points.\n");
+    return 0;
+  }
   const vtkIdType maxPoints = argc > 1 ? std::atoll(argv[1]) : 1000000;
+  const int repeats = argc > 2 ? std::max(1, std::atoi(argv[2])) : 5;
   std::printf("| points | Tessera Delaunay | Tessera tiles+areas | CGAL DT2 | vtkDelaunay2D | "
               "vtkVoronoi2D | Delaunay / CGAL | tiles / CGAL | vtkVoronoi2D / tiles |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
@@ -103,24 +123,39 @@ int main(int argc, char** argv)
   {
     auto input = UniformPoints(n, 7);
     vtkIdType triangles = 0, tiles = 0, peerCells = 0;
-    const double delaunay = TimeFilter<vtkDelaunayTriangulation>(input, triangles);
-    const double tessellation = TimeFilter<vtkDirichletTessellation>(input, tiles);
-    double cgal = -1.0;
+    std::vector<double> delaunayRuns, tessellationRuns, cgalRuns;
+    for (int run = 0; run < repeats; ++run)
+    {
+      delaunayRuns.push_back(TimeFilter<vtkDelaunayTriangulation>(input, triangles));
+      tessellationRuns.push_back(TimeFilter<vtkDirichletTessellation>(input, tiles));
 #ifdef TESSERA_HAVE_CGAL
-    std::size_t cgalFaces = 0;
-    cgal = TimeCgal(input, cgalFaces);
-    if (static_cast<vtkIdType>(cgalFaces) != triangles)
-      std::fprintf(stderr, "warning: %lld points: CGAL has %zu faces, Tessera %lld\n",
-        static_cast<long long>(n), cgalFaces, static_cast<long long>(triangles));
+      std::size_t cgalFaces = 0;
+      cgalRuns.push_back(TimeCgal(input, cgalFaces));
+      if (static_cast<vtkIdType>(cgalFaces) != triangles)
+        std::fprintf(stderr,
+          "warning: %lld points: CGAL has %zu faces, Tessera %lld\n",
+          static_cast<long long>(n),
+          cgalFaces,
+          static_cast<long long>(triangles));
 #endif
+    }
+    const double delaunay = Median(delaunayRuns);
+    const double tessellation = Median(tessellationRuns);
+    const double cgal = cgalRuns.empty() ? -1.0 : Median(cgalRuns);
     // vtkDelaunay2D takes ~28 s at 100k points here: run it up to 100k only.
     const double delaunay2d = n <= 100000 ? TimeFilter<vtkDelaunay2D>(input, peerCells) : -1.0;
     const double voronoi2d = TimeFilter<vtkVoronoi2D>(input, peerCells);
     auto ratio = [](double a, double b) { return b > 0 && a > 0 ? a / b : -1.0; };
-    std::printf("| %lld | %s | %s | %s | %s | %s | %s | %s | %s |\n", static_cast<long long>(n),
-      Cell(delaunay).c_str(), Cell(tessellation).c_str(), Cell(cgal).c_str(),
-      Cell(delaunay2d).c_str(), Cell(voronoi2d).c_str(), Cell(ratio(delaunay, cgal)).c_str(),
-      Cell(ratio(tessellation, cgal)).c_str(), Cell(ratio(voronoi2d, tessellation)).c_str());
+    std::printf("| %lld | %s | %s | %s | %s | %s | %s | %s | %s |\n",
+      static_cast<long long>(n),
+      Cell(delaunay).c_str(),
+      Cell(tessellation).c_str(),
+      Cell(cgal).c_str(),
+      Cell(delaunay2d).c_str(),
+      Cell(voronoi2d).c_str(),
+      Cell(ratio(delaunay, cgal)).c_str(),
+      Cell(ratio(tessellation, cgal)).c_str(),
+      Cell(ratio(voronoi2d, tessellation)).c_str());
     std::fflush(stdout);
   }
   return 0;
