@@ -100,26 +100,35 @@ DirichletTessellation::DirichletTessellation(Window window, std::vector<Point2> 
   {
     throw InputError("too many points: " + std::to_string(this->Coordinates.size()));
   }
-  for (std::size_t id = 0; id < this->Coordinates.size(); ++id)
-  {
-    this->Validate(this->Coordinates[id], id);
-  }
-  std::vector<std::int32_t> inside;
-  inside.reserve(this->Coordinates.size());
+  // Validation and the window test on the cores: each chunk lists its own ids, in id order, and
+  // the first bad point of the first chunk that has one is the one reported, as when serial.
+  const std::int32_t n = std::int32_t(this->Coordinates.size());
+  const std::vector<std::int32_t> bounds = parallel::ChunkBounds(n, parallel::ThreadCount(n));
+  const std::size_t chunks = bounds.size() - 1;
+  std::vector<std::vector<std::int32_t>> inside(chunks), outside(chunks);
   const std::vector<HalfPlane>& constraints = this->TheWindow.EffectiveConstraints();
-  for (std::size_t id = 0; id < this->Coordinates.size(); ++id)
+  parallel::RunChunks(chunks,
+    [&](std::size_t c)
+    {
+      inside[c].reserve(std::size_t(c == 0 ? n : bounds[c + 1] - bounds[c])); // 0 gets them all
+      for (std::int32_t id = bounds[c]; id < bounds[c + 1]; ++id)
+      {
+        const Point2& p = this->Coordinates[id];
+        this->Validate(p, std::size_t(id));
+        (ClearlyInside(constraints, p) || this->TheWindow.Contains(p) ? inside[c] : outside[c])
+          .push_back(id);
+      }
+    });
+  for (std::size_t c = 1; c < chunks; ++c)
   {
-    const Point2& p = this->Coordinates[id];
-    if (ClearlyInside(constraints, p) || this->TheWindow.Contains(p))
-    {
-      inside.push_back(std::int32_t(id));
-    }
-    else
-    {
-      this->Rejected.push_back(std::int32_t(id));
-    }
+    inside[0].insert(inside[0].end(), inside[c].begin(), inside[c].end());
+    std::vector<std::int32_t>().swap(inside[c]);
   }
-  this->BuildFrom(inside);
+  for (const std::vector<std::int32_t>& ids : outside)
+  {
+    this->Rejected.insert(this->Rejected.end(), ids.begin(), ids.end());
+  }
+  this->BuildFrom(inside[0]);
 }
 
 // Batch insertion in BRIO + Hilbert order. While building, vertex k is the k-th point of that

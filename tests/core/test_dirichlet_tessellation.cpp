@@ -240,6 +240,21 @@ TEST(DirichletTessellation, NanAndInfinityAreRejectedWithTheirId)
   {
     EXPECT_NE(std::string(error.what()).find("point 7"), std::string::npos) << error.what();
   }
+  // A batch large enough to be validated in chunks on the cores: the first bad id is named,
+  // whichever chunk finds its bad point first.
+  std::vector<Point2> many = UniformPoints(200000, 4);
+  many[150000].x = std::numeric_limits<double>::infinity();
+  many[120001].y = std::numeric_limits<double>::quiet_NaN();
+  many[199999].x = std::numeric_limits<double>::quiet_NaN();
+  try
+  {
+    Tess t(UnitWindow(), many);
+    FAIL() << "no InputError";
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_NE(std::string(error.what()).find("point 120001 "), std::string::npos) << error.what();
+  }
   Tess streaming(UnitWindow());
   streaming.Insert({ 0.1, 0.2 });
   streaming.Insert({ 0.3, 0.2 });
@@ -252,6 +267,30 @@ TEST(DirichletTessellation, NanAndInfinityAreRejectedWithTheirId)
   {
     EXPECT_NE(std::string(error.what()).find("point 2"), std::string::npos) << error.what();
   }
+}
+
+TEST(DirichletTessellation, OutsidePointsOfALargeBatchAreReportedInIdOrder)
+{
+  // Validated in chunks on the cores: the rejected ids of every chunk, ascending, against a
+  // direct test of each point (the window is open: a point on its edge is outside).
+  std::vector<Point2> points = UniformPoints(120000, 8);
+  for (std::size_t k = 0; k < points.size(); k += 97)
+  {
+    points[k].x = 0.5 + points[k].x; // about half of these leave the unit window
+  }
+  points[60000].x = 1.0; // on its edge
+  const Tess t(Window::Rectangle(0.0, 1.0, 0.0, 1.0), points);
+  std::vector<std::int32_t> expected;
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    if (!(points[k].x > 0.0 && points[k].x < 1.0 && points[k].y > 0.0 && points[k].y < 1.0))
+    {
+      expected.push_back(std::int32_t(k));
+    }
+  }
+  ASSERT_GT(expected.size(), 100u);
+  EXPECT_EQ(t.RejectedIds(), expected);
+  EXPECT_EQ(t.AcceptedCount() + expected.size(), points.size());
 }
 
 TEST(DirichletTessellation, DuplicatesAndOutsidePointsAreReported)
