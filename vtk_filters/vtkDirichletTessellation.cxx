@@ -102,108 +102,155 @@ void CheckFitsInt32(vtkIdType count, const char* what)
 }
 
 /// Output 0: the tiles in ascending point id, their arrays and the input's point data on them.
-void WriteTiles(const tessera::TileSet& tiles, vtkPointSet* input, vtkPolyData* output)
+/// Made in steps, like GraphWriter, so that the filling can be shared between two threads: the
+/// constructor orders the tiles, allocates the arrays and places each tile's vertices;
+/// CopyVertices fills a range of tiles' vertices and FillConnectivity the ids (plain loops, any
+/// thread); FillCellData copies the input's point data too (VTK calls: the calling thread);
+/// Attach hands everything to the output.
+class TileWriter
 {
-  const vtkIdType tileCount = static_cast<vtkIdType>(tiles.PointIds.size());
-  const vtkIdType vertexCount = static_cast<vtkIdType>(tiles.Vertices.size());
-  CheckFitsInt32(vertexCount, "tile vertices");
-  const std::vector<std::int32_t> order =
-    OrderByPointId(tiles.PointIds, static_cast<std::size_t>(input->GetNumberOfPoints()));
-
-  vtkNew<vtkDoubleArray> coordinates;
-  coordinates->SetNumberOfComponents(3);
-  coordinates->SetNumberOfTuples(vertexCount);
-  double* xyz = coordinates->GetPointer(0);
-  vtkNew<vtkTypeInt32Array> offsets;
-  offsets->SetNumberOfValues(tileCount + 1);
-  std::int32_t* offsetData = offsets->GetPointer(0);
-  std::int32_t written = 0;
-  // The tiles come in the core's (spatial) order and leave in point id order: the reads jump
-  // about, so the vertices of a tile a few steps ahead are requested early (and the offset that
-  // locates them earlier still). Splitting this copy over two threads gained nothing at 1M
-  // points: it is bound by first touching the output's pages.
-  constexpr vtkIdType ahead = 8;
-  for (vtkIdType k = 0; k < tileCount; ++k)
+public:
+  TileWriter(const tessera::TileSet& tiles, vtkPointSet* input, vtkPolyData* output)
+    : Tiles(tiles)
+    , Input(input)
+    , Output(output)
+    , TileCount(static_cast<vtkIdType>(tiles.PointIds.size()))
+    , VertexCount(static_cast<vtkIdType>(tiles.Vertices.size()))
+    , Order(OrderByPointId(tiles.PointIds, static_cast<std::size_t>(input->GetNumberOfPoints())))
   {
-    if (k + 2 * ahead < tileCount)
+    CheckFitsInt32(this->VertexCount, "tile vertices");
+    this->Coordinates->SetNumberOfComponents(3);
+    this->Coordinates->SetNumberOfTuples(this->VertexCount);
+    this->Offsets->SetNumberOfValues(this->TileCount + 1);
+    this->Connectivity->SetNumberOfValues(this->VertexCount);
+    this->PointIds->SetName("PointId");
+    this->Areas->SetName("Area");
+    this->NeighborCounts->SetName("NeighborCount");
+    this->PointIds->SetNumberOfValues(this->TileCount);
+    this->Areas->SetNumberOfValues(this->TileCount);
+    this->NeighborCounts->SetNumberOfValues(this->TileCount);
+    // Where each tile's vertices go. The order jumps about the core's (spatial) order: the
+    // offsets are requested a few tiles ahead.
+    std::int32_t* offsets = this->Offsets->GetPointer(0);
+    const std::vector<std::int64_t>& from = tiles.Offsets;
+    std::int32_t written = 0;
+    for (vtkIdType k = 0; k < this->TileCount; ++k)
     {
-      __builtin_prefetch(tiles.Offsets.data() + order[k + 2 * ahead]);
+      if (k + Ahead < this->TileCount)
+      {
+        __builtin_prefetch(from.data() + this->Order[k + Ahead]);
+      }
+      offsets[k] = written;
+      written += std::int32_t(from[this->Order[k] + 1] - from[this->Order[k]]);
     }
-    if (k + ahead < tileCount)
+    offsets[this->TileCount] = written;
+  }
+
+  vtkIdType Count() const { return this->TileCount; }
+
+  /// The vertices (x, y, 0) of the tiles [begin, end) of the output order.
+  void CopyVertices(vtkIdType begin, vtkIdType end)
+  {
+    const tessera::TileSet& tiles = this->Tiles;
+    const std::int32_t* offsets = this->Offsets->GetPointer(0);
+    double* xyz = this->Coordinates->GetPointer(0);
+    for (vtkIdType k = begin; k < end; ++k)
     {
-      const tessera::Point2* upcoming = tiles.Vertices.data() + tiles.Offsets[order[k + ahead]];
-      __builtin_prefetch(upcoming);
-      __builtin_prefetch(upcoming + 4);
-      __builtin_prefetch(upcoming + 8);
-    }
-    offsetData[k] = written;
-    const std::int32_t tile = order[k];
-    for (std::int64_t v = tiles.Offsets[tile]; v < tiles.Offsets[tile + 1]; ++v, ++written)
-    {
-      xyz[3 * written] = tiles.Vertices[v].x;
-      xyz[3 * written + 1] = tiles.Vertices[v].y;
-      xyz[3 * written + 2] = 0.0;
+      if (k + Ahead < end)
+      {
+        const tessera::Point2* upcoming =
+          tiles.Vertices.data() + tiles.Offsets[this->Order[k + Ahead]];
+        __builtin_prefetch(upcoming);
+        __builtin_prefetch(upcoming + 4);
+        __builtin_prefetch(upcoming + 8);
+      }
+      const std::int32_t tile = this->Order[k];
+      std::int64_t written = offsets[k];
+      for (std::int64_t v = tiles.Offsets[tile]; v < tiles.Offsets[tile + 1]; ++v, ++written)
+      {
+        xyz[3 * written] = tiles.Vertices[v].x;
+        xyz[3 * written + 1] = tiles.Vertices[v].y;
+        xyz[3 * written + 2] = 0.0;
+      }
     }
   }
-  offsetData[tileCount] = written;
-  vtkNew<vtkPoints> points;
-  points->SetData(coordinates);
-  output->SetPoints(points);
 
-  vtkNew<vtkTypeInt32Array> connectivity;
-  connectivity->SetNumberOfValues(vertexCount);
-  std::int32_t* ids = connectivity->GetPointer(0);
-  for (std::int32_t v = 0; v < std::int32_t(vertexCount); ++v)
+  /// Each tile has its own vertices: the connectivity is 0, 1, 2, ...
+  void FillConnectivity()
   {
-    ids[v] = v;
-  }
-  vtkNew<vtkCellArray> polys;
-  polys->SetData(offsets, connectivity);
-  output->SetPolys(polys);
-
-  vtkCellData* cellData = output->GetCellData();
-  vtkPointData* inputData = input->GetPointData();
-  // The input's point data follows the tiles (a gauge's values on its tile). Skipped when there
-  // is none: a CopyData call per tile costs more than the rest of this loop at a million tiles.
-  const bool copyPointData = inputData->GetNumberOfArrays() > 0;
-  if (copyPointData)
-  {
-    cellData->CopyAllocate(inputData, tileCount);
-  }
-  vtkNew<vtkIdTypeArray> pointIds;
-  pointIds->SetName("PointId");
-  vtkNew<vtkDoubleArray> areas;
-  areas->SetName("Area");
-  vtkNew<vtkIntArray> neighborCounts;
-  neighborCounts->SetName("NeighborCount");
-  pointIds->SetNumberOfValues(tileCount);
-  areas->SetNumberOfValues(tileCount);
-  neighborCounts->SetNumberOfValues(tileCount);
-  vtkIdType* pointIdData = pointIds->GetPointer(0);
-  double* areaData = areas->GetPointer(0);
-  int* countData = neighborCounts->GetPointer(0);
-  for (vtkIdType k = 0; k < tileCount; ++k)
-  {
-    if (k + ahead < tileCount)
+    std::int32_t* ids = this->Connectivity->GetPointer(0);
+    for (std::int32_t v = 0; v < std::int32_t(this->VertexCount); ++v)
     {
-      const std::int32_t upcoming = order[k + ahead];
-      __builtin_prefetch(tiles.PointIds.data() + upcoming);
-      __builtin_prefetch(tiles.Areas.data() + upcoming);
-      __builtin_prefetch(tiles.NeighborCounts.data() + upcoming);
+      ids[v] = v;
     }
-    const std::int32_t tile = order[k];
+  }
+
+  /// PointId, Area, NeighborCount and the input's point data, per tile. On the calling thread.
+  void FillCellData()
+  {
+    const tessera::TileSet& tiles = this->Tiles;
+    vtkCellData* cellData = this->Output->GetCellData();
+    vtkPointData* inputData = this->Input->GetPointData();
+    // The input's point data follows the tiles (a gauge's values on its tile). Skipped when
+    // there is none: a CopyData call per tile costs more than the rest of this loop at a million
+    // tiles.
+    const bool copyPointData = inputData->GetNumberOfArrays() > 0;
     if (copyPointData)
     {
-      cellData->CopyData(inputData, tiles.PointIds[tile], k);
+      cellData->CopyAllocate(inputData, this->TileCount);
     }
-    pointIdData[k] = tiles.PointIds[tile];
-    areaData[k] = tiles.Areas[tile];
-    countData[k] = tiles.NeighborCounts[tile];
+    vtkIdType* pointIdData = this->PointIds->GetPointer(0);
+    double* areaData = this->Areas->GetPointer(0);
+    int* countData = this->NeighborCounts->GetPointer(0);
+    for (vtkIdType k = 0; k < this->TileCount; ++k)
+    {
+      if (k + Ahead < this->TileCount)
+      {
+        const std::int32_t upcoming = this->Order[k + Ahead];
+        __builtin_prefetch(tiles.PointIds.data() + upcoming);
+        __builtin_prefetch(tiles.Areas.data() + upcoming);
+        __builtin_prefetch(tiles.NeighborCounts.data() + upcoming);
+      }
+      const std::int32_t tile = this->Order[k];
+      if (copyPointData)
+      {
+        cellData->CopyData(inputData, tiles.PointIds[tile], k);
+      }
+      pointIdData[k] = tiles.PointIds[tile];
+      areaData[k] = tiles.Areas[tile];
+      countData[k] = tiles.NeighborCounts[tile];
+    }
   }
-  cellData->AddArray(pointIds);
-  cellData->AddArray(areas);
-  cellData->AddArray(neighborCounts);
-}
+
+  void Attach()
+  {
+    vtkNew<vtkPoints> points;
+    points->SetData(this->Coordinates);
+    this->Output->SetPoints(points);
+    vtkNew<vtkCellArray> polys;
+    polys->SetData(this->Offsets, this->Connectivity);
+    this->Output->SetPolys(polys);
+    vtkCellData* cellData = this->Output->GetCellData();
+    cellData->AddArray(this->PointIds);
+    cellData->AddArray(this->Areas);
+    cellData->AddArray(this->NeighborCounts);
+  }
+
+private:
+  static constexpr vtkIdType Ahead = 8; ///< tiles read ahead of the one being written
+  const tessera::TileSet& Tiles;
+  vtkPointSet* Input;
+  vtkPolyData* Output;
+  const vtkIdType TileCount;
+  const vtkIdType VertexCount;
+  const std::vector<std::int32_t> Order;
+  vtkNew<vtkDoubleArray> Coordinates;
+  vtkNew<vtkTypeInt32Array> Offsets;
+  vtkNew<vtkTypeInt32Array> Connectivity;
+  vtkNew<vtkIdTypeArray> PointIds;
+  vtkNew<vtkDoubleArray> Areas;
+  vtkNew<vtkIntArray> NeighborCounts;
+};
 
 /// Output 1: the input points with one line per contiguous pair and its Kind. Made in three
 /// steps so that Fill (plain loops over the arrays, no VTK calls) can run on a thread of its own
@@ -343,11 +390,25 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
       : RunGreenSibson(std::move(window), std::move(points));
     this->UpdateProgress(0.8);
     GraphWriter graph(result.Graph, input, graphOutput);
-    // The graph's arrays are filled beside the tiles' (two threads for large outputs).
+    TileWriter tiles(result.Tiles, input, tilesOutput);
+    // Two threads for large outputs: first the tiles' vertices in two halves (the longest part:
+    // first touching the output's pages), then the cell data beside the graph and the tiles'
+    // connectivity.
+    const bool beside = tessera::parallel::ThreadCount(tiles.Count(), 25000) > 1;
+    const vtkIdType half = tiles.Count() / 2;
     tessera::parallel::RunSideBySide(
-      tessera::parallel::ThreadCount(std::int64_t(result.Graph.Kinds.size()), 50000) > 1,
-      [&]() { WriteTiles(result.Tiles, input, tilesOutput); },
-      [&graph]() { graph.Fill(); });
+      beside,
+      [&]() { tiles.CopyVertices(0, half); },
+      [&]() { tiles.CopyVertices(half, tiles.Count()); });
+    tessera::parallel::RunSideBySide(
+      beside,
+      [&]() { tiles.FillCellData(); },
+      [&]()
+      {
+        graph.Fill();
+        tiles.FillConnectivity();
+      });
+    tiles.Attach();
     graph.Attach(graphOutput);
     tessera_vtk::AddUnusedPointIds(tilesOutput, result.Rejected, result.Duplicates);
     tessera_vtk::AddUnusedPointIds(graphOutput, result.Rejected, result.Duplicates);
