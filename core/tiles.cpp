@@ -95,7 +95,11 @@ void TessellationDual::ComputeTriangleCentres(std::vector<std::uint8_t>& candida
 {
   const std::int32_t triangles = std::int32_t(this->Tess.Origin().size() / 3);
   this->Data.resize(std::size_t(triangles));
-  this->CentreError.resize(std::size_t(triangles));
+  // The centres' error bounds serve only to find co-circular candidates.
+  if (!this->Tess.KnownFreeOfCocircularTriangles())
+  {
+    this->CentreError.resize(std::size_t(triangles));
+  }
   const std::vector<std::int32_t> bounds = ChunkBounds(triangles, ThreadCount(triangles));
   RunChunks(bounds.size() - 1, [&](std::size_t k) { this->CentresOf(bounds[k], bounds[k + 1]); });
   // Known free of co-circular triangles: no candidates at all (LabelFaces has nothing to do).
@@ -111,6 +115,7 @@ void TessellationDual::CentresOf(std::int32_t begin, std::int32_t end)
 {
   const std::int32_t* org = this->Tess.Origin().data();
   const Point2* pts = this->Tess.Points().data();
+  double* const errors = this->CentreError.empty() ? nullptr : this->CentreError.data();
   constexpr std::int32_t ahead = 16;
   const std::int32_t prefetchEnd = std::max(begin, end - ahead);
   for (std::int32_t t = begin; t < end; ++t)
@@ -131,9 +136,13 @@ void TessellationDual::CentresOf(std::int32_t begin, std::int32_t end)
     this->Data[t].Face = t; // until LabelFaces merges it
     SortTriangleIds(a, b, c);
     TriangleData& data = this->Data[t];
-    double& error = this->CentreError[t];
+    double error = 0.0;
     data.Centre = Circumcentre(pts[a], pts[b], pts[c], error);
     data.Inside = CentreInside(this->Tess, t, data.Centre, error) ? 1 : 0;
+    if (errors)
+    {
+      errors[t] = error;
+    }
   }
 }
 
