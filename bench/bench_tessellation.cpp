@@ -5,7 +5,9 @@
 // the same program on the same points, as the peer.
 //
 // The stages are also timed separately (FacesAfterBuild, DualOnly, TilesOnly,
-// ContiguitiesOnly), and BuildAndTiles times the build plus the tiles with areas.
+// ContiguitiesOnly), BuildAndTiles times the build plus the tiles with areas, and
+// BuildTilesAndGraph the build plus tiles and contiguity graph (what vtkDirichletTessellation
+// asks of the core).
 //
 // Columns: ns/pt = wall time per input point; B/pt = bytes held by the structure per point
 // (coordinates included); each benchmark's counters are printed in Google Benchmark's table.
@@ -169,6 +171,21 @@ void TesseraBuildAndTiles(benchmark::State& state)
   SetPerPoint(state, points.size());
 }
 
+// What vtkDirichletTessellation asks of the core: the build, then the tiles with areas and the
+// contiguity graph in one pass over the rings.
+void TesseraBuildTilesAndGraph(benchmark::State& state)
+{
+  const std::vector<Point2>& points = Input(state.range(0));
+  for (auto _ : state)
+  {
+    const tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+    const tessera::TilesAndGraph both = tessera::TessellationDual(t).TilesAndContiguities();
+    benchmark::DoNotOptimize(both.Tiles.Areas.data());
+    benchmark::DoNotOptimize(both.Graph.Pairs.data());
+  }
+  SetPerPoint(state, points.size());
+}
+
 #ifdef TESSERA_HAVE_CGAL
 void CgalDelaunay(benchmark::State& state)
 {
@@ -215,6 +232,7 @@ BENCHMARK(TesseraTilesOnly)->Apply(Sizes);
 BENCHMARK(TesseraContiguitiesOnly)->Apply(Sizes);
 BENCHMARK(TesseraBuildAndTiles)->Apply(Sizes);
 BENCHMARK(TesseraBuildAndTiles)->Apply(Large);
+BENCHMARK(TesseraBuildTilesAndGraph)->Apply(Sizes);
 #ifdef TESSERA_HAVE_CGAL
 BENCHMARK(CgalDelaunay)->Apply(Sizes);
 BENCHMARK(CgalDelaunay)->Apply(Large);
