@@ -979,7 +979,9 @@ TEST(DirichletTessellation, EdgeLeavingNamesAnEdgeOfEveryVertexOnly)
 namespace
 {
 
-constexpr std::size_t TwoRegionSize = 250000; // above the two-region threshold (200000)
+// Above the two-region threshold (10000): the seam, the deferred points and the sewing are all
+// exercised; one test also runs a quarter of a million points.
+constexpr std::size_t TwoRegionSize = 40000;
 
 // Every edge is locally Delaunay under the exact predicates (Lawson: then the whole triangulation
 // is), and the hull is convex: no reflex hull vertex between two ghost triangles.
@@ -1071,21 +1073,26 @@ void ExpectSameAsStreaming(const std::vector<Point2>& points)
 
 TEST(DirichletTessellation, TwoRegionBuildOfUniformPointsEqualsSerialInsertion)
 {
-  const std::vector<Point2> points = UniformPoints(TwoRegionSize, 41);
-  ExpectSameAsStreaming(points);
-  const Tess batch(UnitWindow(), points);
-  EXPECT_EQ(CheckStructure(batch), 2 * points.size() - 2 - HullSize(batch));
+  // Just above the threshold (a sample of 375 points: a wide seam band), the usual size, and a
+  // quarter of a million.
+  for (const std::size_t n : { std::size_t(12000), TwoRegionSize, std::size_t(250000) })
+  {
+    const std::vector<Point2> points = UniformPoints(n, 41);
+    ExpectSameAsStreaming(points);
+    const Tess batch(UnitWindow(), points);
+    EXPECT_EQ(CheckStructure(batch), 2 * points.size() - 2 - HullSize(batch));
+  }
 }
 
 // Every face degenerate, and lattice points exactly on the seam.
 TEST(DirichletTessellation, TwoRegionBuildOfALatticeEqualsSerialInsertion)
 {
   std::vector<Point2> points;
-  for (int i = 0; i < 500; ++i)
+  for (int i = 0; i < 200; ++i)
   {
-    for (int j = 0; j < 500; ++j)
+    for (int j = 0; j < 200; ++j)
     {
-      points.push_back({ i / 500.0, j / 500.0 });
+      points.push_back({ i / 200.0, j / 200.0 });
     }
   }
   std::shuffle(points.begin(), points.end(), std::mt19937(5));
@@ -1096,11 +1103,11 @@ TEST(DirichletTessellation, TwoRegionBuildOfALatticeEqualsSerialInsertion)
 TEST(DirichletTessellation, TwoRegionBuildWithDuplicatesEqualsSerialInsertion)
 {
   std::mt19937 random(8);
-  std::uniform_int_distribution<int> cell(0, 399);
+  std::uniform_int_distribution<int> cell(0, 159);
   std::vector<Point2> points(TwoRegionSize);
   for (Point2& p : points)
   {
-    p = { cell(random) / 400.0, cell(random) / 400.0 };
+    p = { cell(random) / 160.0, cell(random) / 160.0 };
   }
   ExpectSameAsStreaming(points);
 }
