@@ -45,6 +45,15 @@ void AppendTriangleFace(DelaunayFaces& faces, std::int32_t a, std::int32_t b, st
 }
 } // namespace
 
+namespace
+{
+// A second thread pays off from a few thousand tiles (about 250 ns of work each): at 10^4 points
+// the build plus tiles went from 6.4-7.9 to 5.4-6.7 ms (medians of 5) with these instead of the
+// default 25000.
+constexpr std::int64_t MinimumTilesPerThread = 2500;
+constexpr std::int64_t MinimumTrianglesPerThread = 5000;
+} // namespace
+
 TessellationDual::TessellationDual(const DirichletTessellation& tessellation)
   : Tess(tessellation)
 {
@@ -100,7 +109,8 @@ void TessellationDual::ComputeTriangleCentres(std::vector<std::uint8_t>& candida
   {
     this->CentreError.resize(std::size_t(triangles));
   }
-  const std::vector<std::int32_t> bounds = ChunkBounds(triangles, ThreadCount(triangles));
+  const std::vector<std::int32_t> bounds =
+    ChunkBounds(triangles, ThreadCount(triangles, MinimumTrianglesPerThread));
   RunChunks(bounds.size() - 1, [&](std::size_t k) { this->CentresOf(bounds[k], bounds[k + 1]); });
   // Known free of co-circular triangles: no candidates at all (LabelFaces has nothing to do).
   if (!this->Tess.KnownFreeOfCocircularTriangles())
@@ -509,7 +519,8 @@ void TessellationDual::Derive(TileSet* tiles, ContiguityGraph* graph) const
   const std::vector<std::pair<std::int32_t, std::int32_t>> half =
     graph ? this->HalfNeighbours() : std::vector<std::pair<std::int32_t, std::int32_t>>();
   const std::int32_t count = std::int32_t(this->Order.size());
-  const std::vector<std::int32_t> bounds = ChunkBounds(count, ThreadCount(count));
+  const std::vector<std::int32_t> bounds =
+    ChunkBounds(count, ThreadCount(count, MinimumTilesPerThread));
   const std::size_t chunks = bounds.size() - 1;
   std::vector<TileSet> tileParts(chunks - 1);
   std::vector<ContiguityGraph> graphParts(chunks - 1);
