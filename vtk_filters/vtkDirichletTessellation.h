@@ -34,6 +34,8 @@
  * (unsigned char): 0 = neighbours sharing an edge of positive length, 1 = half-neighbours (sharing
  * only a degenerate vertex).
  *
+ * Both outputs' cell arrays use 32-bit storage (read by VTK like the 64-bit kind).
+ *
  * 0, 1 or 2 points and collinear points give valid output: the tiles are the whole window,
  * strips or half-planes within it. A NaN or infinite coordinate is an error naming the point.
  *

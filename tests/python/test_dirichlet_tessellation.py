@@ -253,6 +253,45 @@ def test_nan_point_is_named():
     assert_that(f.GetOutput(0).GetNumberOfCells() == 0, "empty output")
 
 
+def cells_of(data):
+    return [tuple(data.GetCell(c).GetPointIds().GetId(k)
+                  for k in range(data.GetCell(c).GetNumberOfPoints()))
+            for c in range(data.GetNumberOfCells())]
+
+
+def test_32_bit_cell_arrays_survive_a_vtp_round_trip():
+    # The outputs' cell arrays use 32-bit storage: a VTK writer and reader (which store 64-bit
+    # ids here) must give back the same cells, and the legacy GetData() the same ids.
+    import os
+    import tempfile
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
+
+    rng = random.Random(9)
+    coords = [(rng.uniform(0, 1), rng.uniform(0, 1)) for _ in range(300)]
+    tiles = tessellate(make_points(coords)).GetOutput(0)
+    t = vtkDelaunayTriangulation()
+    t.SetInputData(make_points(coords))
+    t.Update()
+    for name, data in (("tiles", tiles), ("triangles", t.GetOutput())):
+        assert_that(not data.GetPolys().IsStorage64Bit(), f"{name}: 32-bit cell storage")
+        with tempfile.TemporaryDirectory() as directory:
+            path = os.path.join(directory, name + ".vtp")
+            writer = vtkXMLPolyDataWriter()
+            writer.SetFileName(path)
+            writer.SetInputData(data)
+            assert_that(writer.Write() == 1, f"{name}: written")
+            reader = vtkXMLPolyDataReader()
+            reader.SetFileName(path)
+            reader.Update()
+            assert_that(cells_of(reader.GetOutput()) == cells_of(data), f"{name}: same cells read back")
+        legacy = data.GetPolys().GetData()
+        flat = []
+        for cell in cells_of(data):
+            flat += [len(cell), *cell]
+        assert_that([legacy.GetValue(k) for k in range(legacy.GetNumberOfValues())] == flat,
+                    f"{name}: legacy GetData() lists the same cells")
+
+
 if __name__ == "__main__":
     run([test_tiles_are_nearest_point_regions,
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
@@ -261,4 +300,5 @@ if __name__ == "__main__":
          test_degenerate_inputs_give_valid_output,
          test_both_engines_agree,
          test_brassel_reif_refuses_a_non_rectangular_window,
-         test_nan_point_is_named])
+         test_nan_point_is_named,
+         test_32_bit_cell_arrays_survive_a_vtp_round_trip])
