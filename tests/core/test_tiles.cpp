@@ -653,9 +653,11 @@ TEST(Tiles, FastDelaunayFacesEqualTheDualsFaces)
   }
 }
 
-// TilesAndContiguities walks each ring once for both results: it must give exactly what the two
-// separate passes give, for uniform points, lattice patches (degenerate faces, half-neighbours),
-// an oblique window that clips many tiles, removals, and collinear points.
+// TilesAndContiguities walks each ring once for both results, sharing one chunk's scratch
+// buffers: it must give exactly what the two separate passes give, for uniform points, lattice
+// patches (degenerate faces, half-neighbours), an oblique window that clips many tiles, removals,
+// and collinear points. (Whether the results themselves are right is what the exact tests above
+// check: all three share Derive.)
 TEST(Tiles, TilesAndContiguitiesEqualTheSeparatePasses)
 {
   const Window oblique({ { 1.0, 1.0, -1.6 }, { -1.0, 0.2, -0.3 }, { 0.1, -1.0, -0.2 } });
