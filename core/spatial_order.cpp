@@ -234,10 +234,12 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
   // One common scale for both axes keeps the curve's locality isotropic.
   const double extent = box.LargerSide();
   const double scale = extent > 0.0 ? (cells * (1.0 - 1e-12)) / extent : 0.0;
+  // A box wider than the largest double makes the scale 0 and a coordinate's offset may be
+  // infinite (0 * inf = NaN): such a value goes to cell 0, never to an undefined conversion.
   const auto cell = [&](double v, double lo)
   {
     const double c = std::floor((v - lo) * scale);
-    return std::uint32_t(std::min(std::max(c, 0.0), cells - 1.0));
+    return c > 0.0 ? std::uint32_t(std::min(c, cells - 1.0)) : 0U;
   };
 
   int roundBits = 0;

@@ -70,3 +70,20 @@ TEST(SpatialOrder, BrioOrderIsAReproduciblePermutation)
   EXPECT_TRUE(BrioHilbertOrder(points, {}).empty());
   EXPECT_EQ(BrioHilbertOrder(points, { 7 }), std::vector<std::int32_t>{ 7 });
 }
+
+TEST(SpatialOrder, ABoxWiderThanTheLargestDoubleStillGivesAPermutation)
+{
+  // XMax - XMin overflows to infinity: the scale is 0 and offsets of points far from XMin are
+  // infinite too (0 * inf = NaN), which must still land in a valid cell.
+  std::vector<Point2> points;
+  std::vector<std::int32_t> ids;
+  for (std::int32_t k = 0; k < 1000; ++k)
+  {
+    const double t = double(k) / 999.0;
+    points.push_back({ -1.7e308 + t * 1.7e308 + t * 1.7e308, 0.5 * t });
+    ids.push_back(k);
+  }
+  std::vector<std::int32_t> sorted = BrioHilbertOrder(points, ids);
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(sorted, ids);
+}
