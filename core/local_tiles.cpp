@@ -331,14 +331,7 @@ void LocalTilesOfRange(const Tess& tess,
     {
       continue;
     }
-    if (InteriorTile(tess, faces, ring, polygon))
-    {
-      AppendTile(tiles, v, polygon, std::int32_t(ring.size()));
-      continue;
-    }
-    RingTileEdges(tess, faces, v, ring, edges);
-    const std::int32_t sides = AssemblePolygon(tess, edges, polygon);
-    AppendTile(tiles, v, polygon, sides);
+    AppendRingTile(tess, faces, v, ring, edges, polygon, tiles);
   }
 }
 

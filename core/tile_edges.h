@@ -195,5 +195,28 @@ void RingTileEdges(const Tess& tess,
   }
 }
 
+/// Appends v's tile, ring being its half-edges (CollectRing): an interior tile straight from
+/// the ring of centres (InteriorTile, the same bits), any other from its clipped edges. The
+/// full derivation and the local one (local_tiles.cpp) both make their tiles here; edges and
+/// polygon are scratch.
+template<class Faces>
+void AppendRingTile(const Tess& tess,
+  const Faces& faces,
+  std::int32_t v,
+  const std::vector<std::int32_t>& ring,
+  std::vector<TileEdge>& edges,
+  std::vector<Point2>& polygon,
+  TileSet& tiles)
+{
+  if (InteriorTile(tess, faces, ring, polygon))
+  {
+    AppendTile(tiles, v, polygon, std::int32_t(ring.size()));
+    return;
+  }
+  RingTileEdges(tess, faces, v, ring, edges);
+  const std::int32_t sides = AssemblePolygon(tess, edges, polygon);
+  AppendTile(tiles, v, polygon, sides);
+}
+
 } // namespace tiles_detail
 } // namespace tessera

@@ -426,17 +426,10 @@ std::int32_t TessellationDual::Neighbors1D(std::int32_t v, std::int32_t& next) c
   return k > 0 ? line[k - 1] : -1;
 }
 
-void TessellationDual::TileEdgesOf(std::int32_t v,
-  const std::vector<std::int32_t>& ring,
-  std::vector<TileEdge>& edges) const
+// Collinear case: two parallel edges; either cyclic order is anticlockwise, start at the
+// smaller id.
+void TessellationDual::CollinearTileEdges(std::int32_t v, std::vector<TileEdge>& edges) const
 {
-  if (this->Tess.IsTwoDimensional())
-  {
-    RingTileEdges(this->Tess, *this, v, ring, edges);
-    return;
-  }
-  // Two parallel edges; either cyclic order is anticlockwise, start at the
-  // smaller id.
   edges.clear();
   TileEdge edge;
   std::int32_t next = -1;
@@ -616,17 +609,16 @@ void TessellationDual::DeriveOf(std::int32_t begin,
   }
 }
 
-// Point v's tile (scratch.Ring: its ring when planar): an interior tile without clipping
-// (InteriorTile, the same bits), any other through the clipped tile edges.
+// Point v's tile (scratch.Ring: its ring when planar; a strip between its line neighbours when
+// the points are collinear).
 void TessellationDual::AppendTileOf(std::int32_t v, RingScratch& scratch, TileSet& tiles) const
 {
-  if (this->Tess.IsTwoDimensional() &&
-    InteriorTile(this->Tess, *this, scratch.Ring, scratch.Polygon))
+  if (this->Tess.IsTwoDimensional())
   {
-    AppendTile(tiles, v, scratch.Polygon, std::int32_t(scratch.Ring.size()));
+    AppendRingTile(this->Tess, *this, v, scratch.Ring, scratch.Edges, scratch.Polygon, tiles);
     return;
   }
-  this->TileEdgesOf(v, scratch.Ring, scratch.Edges);
+  this->CollinearTileEdges(v, scratch.Edges);
   const std::int32_t sides = AssemblePolygon(this->Tess, scratch.Edges, scratch.Polygon);
   AppendTile(tiles, v, scratch.Polygon, sides);
 }

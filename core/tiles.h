@@ -122,10 +122,8 @@ private:
     ClusterList& found) const;
   void RecordCluster(std::int32_t root, const std::int32_t* polygon, std::int32_t size);
   void ComputeCentres();
-  /// ring: the half-edges leaving v (CollectRing) when the tessellation is two-dimensional.
-  void TileEdgesOf(std::int32_t v,
-    const std::vector<std::int32_t>& ring,
-    std::vector<tiles_detail::TileEdge>& edges) const;
+  /// The collinear case's tile edges of v (the planar case uses RingTileEdges).
+  void CollinearTileEdges(std::int32_t v, std::vector<tiles_detail::TileEdge>& edges) const;
   /// Tiles() and Contiguities() run chunks of Order in parallel (Derive, DeriveOf);
   /// TouchRings walks RingBatch rings side by side to overlap their cache misses.
   static constexpr std::int32_t RingBatch = 32;
