@@ -171,9 +171,9 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
     }
   }
 
-  // Each region starts at its owned triangle nearest to its first point, and gets 2 triangles
-  // per point: exactly what inserting all of them takes. Its restart grid starts with its owned
-  // sample triangles.
+  // Each region gets 2 triangles per point: exactly what inserting all of them takes. Its
+  // restart grid starts with its owned sample triangles, and its first walk starts from the
+  // grid's triangle for its first point (from any owned triangle if that cell has none).
   const Box2 box = BoundsOf(pts, std::size_t(end));
   const std::int32_t cellsPerSide =
     std::max(1, std::int32_t(std::sqrt(double(first) / SamplePointsPerCell)));
@@ -186,25 +186,17 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
     slot += 2 * std::int32_t(sides[side].size());
     region.EndSlot = slot;
     region.LastTriangle = this->Serial.LastTriangle;
-    if (sides[side].empty())
-    {
-      continue;
-    }
-    const Point2& p = pts[sides[side].front()];
-    double nearest = std::numeric_limits<double>::infinity();
     for (std::int32_t t = 0; t < sampleTriangles; ++t)
     {
       if (!this->IsFreeTriangle(t) && !this->IsGhostTriangle(t) && ownedBy(region, t))
       {
-        const Point2& v = pts[this->Origins[3 * t]];
-        restarts[side].At(v) = t;
-        const double distance = (v.x - p.x) * (v.x - p.x) + (v.y - p.y) * (v.y - p.y);
-        if (distance < nearest)
-        {
-          nearest = distance;
-          region.LastTriangle = t;
-        }
+        restarts[side].At(pts[this->Origins[3 * t]]) = t;
+        region.LastTriangle = t;
       }
+    }
+    if (!sides[side].empty() && restarts[side].At(pts[sides[side].front()]) >= 0)
+    {
+      region.LastTriangle = restarts[side].At(pts[sides[side].front()]);
     }
   }
   // Not written here: each region writes the triangles it makes, the rest are freed below.
