@@ -171,15 +171,16 @@ void TesseraBuildAndTiles(benchmark::State& state)
   SetPerPoint(state, points.size());
 }
 
-// What vtkDirichletTessellation asks of the core: the build, then the tiles with areas and the
-// contiguity graph in one pass over the rings.
+// What vtkDirichletTessellation asks of the core: the build, then the tiles with areas (as a
+// mesh with shared corners) and the contiguity graph in one pass over the rings.
 void TesseraBuildTilesAndGraph(benchmark::State& state)
 {
   const std::vector<Point2>& points = Input(state.range(0));
   for (auto _ : state)
   {
     const tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
-    const tessera::TilesAndGraph both = tessera::TessellationDual(t).TilesAndContiguities();
+    tessera::TessellationDual dual(t);
+    const tessera::TileMeshAndGraph both = dual.TileMeshAndContiguities();
     benchmark::DoNotOptimize(both.Tiles.Areas.data());
     benchmark::DoNotOptimize(both.Graph.Pairs.data());
   }
@@ -233,6 +234,7 @@ BENCHMARK(TesseraContiguitiesOnly)->Apply(Sizes);
 BENCHMARK(TesseraBuildAndTiles)->Apply(Sizes);
 BENCHMARK(TesseraBuildAndTiles)->Apply(Large);
 BENCHMARK(TesseraBuildTilesAndGraph)->Apply(Sizes);
+BENCHMARK(TesseraBuildTilesAndGraph)->Apply(Large);
 #ifdef TESSERA_HAVE_CGAL
 BENCHMARK(CgalDelaunay)->Apply(Sizes);
 BENCHMARK(CgalDelaunay)->Apply(Large);

@@ -64,4 +64,26 @@ inline void DropRepeatedVertices(std::vector<Point2>& polygon)
   }
 }
 
+/// The same, dropping each removed vertex's tag too (tags[k] goes with polygon[k]).
+template<class Tag>
+void DropRepeatedVertices(std::vector<Point2>& polygon, std::vector<Tag>& tags)
+{
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < polygon.size(); ++k)
+  {
+    if (kept == 0 || !(polygon[k] == polygon[kept - 1]))
+    {
+      polygon[kept] = polygon[k];
+      tags[kept] = tags[k];
+      ++kept;
+    }
+  }
+  while (kept > 1 && polygon[0] == polygon[kept - 1])
+  {
+    --kept;
+  }
+  polygon.resize(kept);
+  tags.resize(kept);
+}
+
 } // namespace tessera

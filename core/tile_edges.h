@@ -116,18 +116,24 @@ inline void CollectRing(const Tess& tess, std::int32_t vertexEdge, std::vector<s
 /// right to the centre on its left, inside the window, so the polygon is the ring of centres and
 /// each ring edge is one side: exactly what RingTileEdges and AssemblePolygon give (same start, at
 /// the edge to the smallest neighbour id; same dropping of rounded repeats), for a fraction of the
-/// cost. Returns false, polygon unspecified, for any other point.
+/// cost. Returns false, polygon unspecified, for any other point. With labels, also gives the
+/// face of each polygon vertex.
 template<class Faces>
 bool InteriorTile(const Tess& tess,
   const Faces& faces,
   const std::vector<std::int32_t>& ring,
-  std::vector<Point2>& polygon)
+  std::vector<Point2>& polygon,
+  std::vector<std::int32_t>* labels = nullptr)
 {
   const auto& org = tess.Origin();
   const std::size_t n = ring.size();
   std::int32_t previous = faces.Label(ring[n - 1] / 3); // the face right of ring[0]
   std::size_t first = 0;
   polygon.resize(n);
+  if (labels)
+  {
+    labels->resize(n);
+  }
   for (std::size_t k = 0; k < n; ++k)
   {
     const std::int32_t label = faces.Label(ring[k] / 3);
@@ -141,6 +147,10 @@ bool InteriorTile(const Tess& tess,
       return false;
     }
     polygon[k] = view.Centre; // the tile edge along ring[k] starts at the centre on its right
+    if (labels)
+    {
+      (*labels)[k] = previous;
+    }
     if (org[Tess::Next(ring[k])] < org[Tess::Next(ring[first])])
     {
       first = k;
@@ -148,7 +158,13 @@ bool InteriorTile(const Tess& tess,
     previous = label;
   }
   std::rotate(polygon.begin(), polygon.begin() + std::ptrdiff_t(first), polygon.end());
-  DropRepeatedVertices(polygon);
+  if (!labels)
+  {
+    DropRepeatedVertices(polygon);
+    return true;
+  }
+  std::rotate(labels->begin(), labels->begin() + std::ptrdiff_t(first), labels->end());
+  DropRepeatedVertices(polygon, *labels);
   return true;
 }
 

@@ -1,12 +1,17 @@
 #include "tiles.h"
 
-#include "predicates_inline.h"
+#include "errors.h"
 #include "parallel_chunks.h"
+#include "polygon_area.h"
+#include "predicates_inline.h"
 #include "tile_edges.h"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstring>
+#include <string>
+#include <tuple>
 #include <utility>
 
 namespace tessera
@@ -148,7 +153,7 @@ void TessellationDual::CentresOf(std::int32_t begin, std::int32_t end)
     TriangleData& data = this->Data[t];
     double error = 0.0;
     data.Centre = Circumcentre(pts[a], pts[b], pts[c], error);
-    data.Inside = CentreInside(this->Tess, t, data.Centre, error) ? 1 : 0;
+    data.Vertex = CentreInside(this->Tess, t, data.Centre, error) ? 0 : -1;
     if (errors)
     {
       errors[t] = error;
@@ -255,7 +260,7 @@ void TessellationDual::LabelFaces(const std::vector<std::uint8_t>& candidate)
         if (member != root)
         {
           this->Data[member].Face = root;
-          this->Data[member].Inside = 0; // not a representative
+          this->Data[member].Vertex = -1; // not a representative
         }
       }
       this->RecordCluster(root,
@@ -399,7 +404,7 @@ void TessellationDual::ComputeCentres()
         double error = 0.0;
         TriangleData& data = this->Data[rep];
         data.Centre = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], error);
-        data.Inside = CentreInside(this->Tess, rep, data.Centre, error) ? 1 : 0;
+        data.Vertex = CentreInside(this->Tess, rep, data.Centre, error) ? 0 : -1;
       }
     });
   std::vector<double>().swap(this->CentreError);
@@ -414,7 +419,7 @@ FaceView TessellationDual::View(std::int32_t label) const
   {
     return FaceView();
   }
-  return { label, this->Data[label].Centre, this->Data[label].Inside != 0 };
+  return { label, this->Data[label].Centre, this->Data[label].Inside() };
 }
 
 // Collinear case: the neighbours along the line (-1 where there is none).
@@ -460,29 +465,118 @@ struct TessellationDual::RingScratch
   std::vector<std::int32_t> Ring; ///< the half-edges leaving the point (planar case)
   std::vector<TileEdge> Edges;
   std::vector<Point2> Polygon;
+  std::vector<std::int32_t> Labels; ///< an interior tile's faces (mesh)
   std::vector<std::pair<std::int32_t, std::uint8_t>> Around;
   TileEdge Edge;
+};
+
+// A chunk's mesh tiles. Face centres and window corners have their final vertex ids already
+// (NumberFaceVertices). A crossing is appended to Tiles.Vertices as it is met: chunk 0 writes into
+// the result, whose Vertices already hold the faces and corners, so its ids are final too; a later
+// chunk starts from an empty list, and the join adds its base to the ids at ExtraSlots.
+struct TessellationDual::MeshPart
+{
+  TileMesh Tiles;
+  std::int32_t CornerBase = 0; ///< vertex id of window corner 0
+  std::vector<std::int64_t> ExtraSlots;
 };
 
 TileSet TessellationDual::Tiles() const
 {
   TileSet tiles;
-  this->Derive(&tiles, nullptr);
+  this->Derive(&tiles, nullptr, nullptr);
   return tiles;
 }
 
 ContiguityGraph TessellationDual::Contiguities() const
 {
   ContiguityGraph graph;
-  this->Derive(nullptr, &graph);
+  this->Derive(nullptr, nullptr, &graph);
   return graph;
 }
 
 TilesAndGraph TessellationDual::TilesAndContiguities() const
 {
   TilesAndGraph both;
-  this->Derive(&both.Tiles, &both.Graph);
+  this->Derive(&both.Tiles, nullptr, &both.Graph);
   return both;
+}
+
+TileMeshAndGraph TessellationDual::TileMeshAndContiguities()
+{
+  TileMeshAndGraph both;
+  std::vector<Point2>& vertices = both.Tiles.Vertices;
+  this->NumberFaceVertices(vertices);
+  const std::vector<Point2>& corners = this->Tess.GetWindow().Vertices();
+  if (!this->Order.empty()) // no tiles, no vertices
+  {
+    vertices.insert(vertices.end(), corners.begin(), corners.end());
+  }
+  this->Derive(nullptr, &both.Tiles, &both.Graph);
+  return both;
+}
+
+// Numbers the representatives whose centre is inside the window in the order of the triangle
+// arrays (Vertex), and lists their centres in that order: a count per chunk of triangles, then
+// each chunk numbers and copies its own. Returns the number of face vertices.
+std::int32_t TessellationDual::NumberFaceVertices(std::vector<Point2>& vertices)
+{
+  const std::int32_t triangles = std::int32_t(this->Data.size());
+  const std::vector<std::int32_t> bounds =
+    ChunkBounds(triangles, ThreadCount(triangles, MinimumTrianglesPerThread));
+  const std::size_t chunks = bounds.size() - 1;
+  std::vector<std::int32_t> first(chunks + 1, 0);
+  RunChunks(chunks,
+    [&](std::size_t k)
+    {
+      std::int32_t count = 0;
+      for (std::int32_t t = bounds[k]; t < bounds[k + 1]; ++t)
+      {
+        count += this->Data[t].Inside() ? 1 : 0;
+      }
+      first[k + 1] = count;
+    });
+  for (std::size_t k = 0; k < chunks; ++k)
+  {
+    first[k + 1] += first[k];
+  }
+  vertices.resize(std::size_t(first[chunks]));
+  RunChunks(chunks,
+    [&](std::size_t k)
+    {
+      std::int32_t next = first[k];
+      for (std::int32_t t = bounds[k]; t < bounds[k + 1]; ++t)
+      {
+        TriangleData& data = this->Data[t];
+        if (data.Inside())
+        {
+          vertices[std::size_t(next)] = data.Centre;
+          data.Vertex = next++;
+        }
+      }
+    });
+  return first[chunks];
+}
+
+TileMesh MeshOfSeparateTiles(TileSet tiles)
+{
+  TileMesh mesh;
+  mesh.PointIds = std::move(tiles.PointIds);
+  mesh.Offsets = std::move(tiles.Offsets);
+  if (tiles.Vertices.size() > std::size_t(INT32_MAX))
+  {
+    throw InputError(
+      "too many tile vertices for 32-bit vertex ids: " + std::to_string(tiles.Vertices.size()));
+  }
+  mesh.VertexIds.resize(tiles.Vertices.size());
+  for (std::size_t v = 0; v < mesh.VertexIds.size(); ++v)
+  {
+    mesh.VertexIds[v] = std::int32_t(v);
+  }
+  mesh.Vertices = std::move(tiles.Vertices);
+  mesh.Areas = std::move(tiles.Areas);
+  mesh.NeighborCounts = std::move(tiles.NeighborCounts);
+  return mesh;
 }
 
 namespace
@@ -497,6 +591,93 @@ void ReserveTiles(TileSet& tiles, std::size_t count)
   tiles.Offsets.push_back(0);
 }
 
+void ReserveMesh(TileMesh& mesh, std::size_t count)
+{
+  mesh.PointIds.reserve(count);
+  mesh.Offsets.reserve(count + 1);
+  mesh.Areas.reserve(count);
+  mesh.NeighborCounts.reserve(count);
+  mesh.VertexIds.reserve(6 * count + 16);
+  mesh.Offsets.push_back(0);
+}
+
+// Appends a later chunk's tiles to mesh: its crossings (the ids at extraSlots, counted from 0)
+// go after the vertices mesh has, and their slots, shifted, to slots.
+void AppendMeshTiles(TileMesh& mesh,
+  const TileMesh& from,
+  const std::vector<std::int64_t>& extraSlots,
+  std::vector<std::int64_t>& slots)
+{
+  const std::int64_t base = std::int64_t(mesh.VertexIds.size());
+  const std::int32_t vertexBase = std::int32_t(mesh.Vertices.size());
+  mesh.PointIds.insert(mesh.PointIds.end(), from.PointIds.begin(), from.PointIds.end());
+  for (std::size_t k = 1; k < from.Offsets.size(); ++k)
+  {
+    mesh.Offsets.push_back(base + from.Offsets[k]);
+  }
+  mesh.VertexIds.insert(mesh.VertexIds.end(), from.VertexIds.begin(), from.VertexIds.end());
+  for (const std::int64_t slot : extraSlots)
+  {
+    mesh.VertexIds[std::size_t(base + slot)] += vertexBase;
+    slots.push_back(base + slot);
+  }
+  mesh.Vertices.insert(mesh.Vertices.end(), from.Vertices.begin(), from.Vertices.end());
+  mesh.Areas.insert(mesh.Areas.end(), from.Areas.begin(), from.Areas.end());
+  mesh.NeighborCounts.insert(
+    mesh.NeighborCounts.end(), from.NeighborCounts.begin(), from.NeighborCounts.end());
+}
+
+// Both tiles of a clipped edge compute its crossing with the window boundary from the same point
+// pair in the same order (ClipEdge), so their copies have the same coordinates. Equal crossings
+// become one vertex (the first listed), so that the tiles share their vertices along the window
+// boundary too: crossings are the vertices from firstCrossing on, slots where VertexIds name them.
+void MergeEqualCrossings(TileMesh& mesh,
+  std::int32_t firstCrossing,
+  const std::vector<std::int64_t>& slots)
+{
+  const std::int32_t count = std::int32_t(mesh.Vertices.size()) - firstCrossing;
+  const Point2* crossing = mesh.Vertices.data() + firstCrossing;
+  std::vector<std::int32_t> sorted(static_cast<std::size_t>(count));
+  for (std::int32_t k = 0; k < count; ++k)
+  {
+    sorted[std::size_t(k)] = k;
+  }
+  std::sort(sorted.begin(),
+    sorted.end(),
+    [&](std::int32_t a, std::int32_t b)
+    {
+      return std::make_tuple(crossing[a].x, crossing[a].y, a) <
+        std::make_tuple(crossing[b].x, crossing[b].y, b);
+    });
+  // first[k]: the first crossing equal to k; then renumber the kept ones in their order.
+  std::vector<std::int32_t> first(static_cast<std::size_t>(count));
+  for (std::size_t s = 0; s < sorted.size(); ++s)
+  {
+    const bool repeat = s > 0 && crossing[sorted[s]] == crossing[sorted[s - 1]];
+    first[std::size_t(sorted[s])] = repeat ? first[std::size_t(sorted[s - 1])] : sorted[s];
+  }
+  std::vector<std::int32_t> renumbered(static_cast<std::size_t>(count));
+  std::int32_t kept = 0;
+  for (std::int32_t k = 0; k < count; ++k)
+  {
+    if (first[std::size_t(k)] == k)
+    {
+      mesh.Vertices[std::size_t(firstCrossing + kept)] = crossing[k];
+      renumbered[std::size_t(k)] = kept++;
+    }
+    else
+    {
+      renumbered[std::size_t(k)] = renumbered[std::size_t(first[std::size_t(k)])];
+    }
+  }
+  mesh.Vertices.resize(std::size_t(firstCrossing + kept));
+  for (const std::int64_t slot : slots)
+  {
+    std::int32_t& id = mesh.VertexIds[std::size_t(slot)];
+    id = firstCrossing + renumbered[std::size_t(id - firstCrossing)];
+  }
+}
+
 void ReserveGraph(ContiguityGraph& graph, std::size_t count)
 {
   graph.Pairs.reserve(6 * count);
@@ -507,7 +688,7 @@ void ReserveGraph(ContiguityGraph& graph, std::size_t count)
 // The requested results (either pointer may be null) in one pass over the rings, so that asking
 // for both walks each ring once: the walks are cache misses, and walking twice cost as much again
 // as the contiguity tests.
-void TessellationDual::Derive(TileSet* tiles, ContiguityGraph* graph) const
+void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* graph) const
 {
   const std::vector<std::pair<std::int32_t, std::int32_t>> half =
     graph ? this->HalfNeighbours() : std::vector<std::pair<std::int32_t, std::int32_t>>();
@@ -516,28 +697,53 @@ void TessellationDual::Derive(TileSet* tiles, ContiguityGraph* graph) const
     ChunkBounds(count, ThreadCount(count, MinimumTilesPerThread));
   const std::size_t chunks = bounds.size() - 1;
   std::vector<TileSet> tileParts(chunks - 1);
+  std::vector<MeshPart> meshParts(mesh ? chunks : 0);
   std::vector<ContiguityGraph> graphParts(chunks - 1);
+  if (mesh)
+  {
+    // Chunk 0 writes into the result (which holds the faces' and corners' vertices so far).
+    std::swap(meshParts[0].Tiles, *mesh);
+    for (MeshPart& part : meshParts)
+    {
+      part.CornerBase =
+        std::int32_t(meshParts[0].Tiles.Vertices.size() - this->Tess.GetWindow().Vertices().size());
+    }
+  }
   RunChunks(chunks,
     [&](std::size_t k)
     {
       const std::size_t size = std::size_t(k == 0 ? count : bounds[k + 1] - bounds[k]);
       TileSet* chunkTiles = !tiles ? nullptr : k == 0 ? tiles : &tileParts[k - 1];
+      MeshPart* chunkMesh = mesh ? &meshParts[k] : nullptr;
       ContiguityGraph* chunkGraph = !graph ? nullptr : k == 0 ? graph : &graphParts[k - 1];
       if (chunkTiles)
       {
         ReserveTiles(*chunkTiles, size);
       }
+      if (chunkMesh)
+      {
+        ReserveMesh(chunkMesh->Tiles, size);
+      }
       if (chunkGraph)
       {
         ReserveGraph(*chunkGraph, size);
       }
-      this->DeriveOf(bounds[k], bounds[k + 1], half, chunkTiles, chunkGraph);
+      this->DeriveOf(bounds[k], bounds[k + 1], half, chunkTiles, chunkMesh, chunkGraph);
     });
+  if (mesh)
+  {
+    std::swap(meshParts[0].Tiles, *mesh);
+  }
   for (std::size_t k = 0; k + 1 < chunks; ++k)
   {
     if (tiles)
     {
       AppendTileSet(*tiles, tileParts[k]);
+    }
+    if (mesh)
+    {
+      AppendMeshTiles(
+        *mesh, meshParts[k + 1].Tiles, meshParts[k + 1].ExtraSlots, meshParts[0].ExtraSlots);
     }
     if (graph)
     {
@@ -546,6 +752,12 @@ void TessellationDual::Derive(TileSet* tiles, ContiguityGraph* graph) const
       graph->Kinds.insert(
         graph->Kinds.end(), graphParts[k].Kinds.begin(), graphParts[k].Kinds.end());
     }
+  }
+  if (mesh)
+  {
+    MergeEqualCrossings(*mesh,
+      meshParts[0].CornerBase + std::int32_t(this->Tess.GetWindow().Vertices().size()),
+      meshParts[0].ExtraSlots);
   }
 }
 
@@ -556,7 +768,7 @@ std::vector<std::pair<std::int32_t, std::int32_t>> TessellationDual::HalfNeighbo
   std::vector<std::pair<std::int32_t, std::int32_t>> half;
   for (const std::int32_t rep : this->DegenerateReps)
   {
-    if (!this->Data[rep].Inside)
+    if (!this->Data[rep].Inside())
     {
       continue;
     }
@@ -583,6 +795,7 @@ void TessellationDual::DeriveOf(std::int32_t begin,
   std::int32_t end,
   const std::vector<std::pair<std::int32_t, std::int32_t>>& half,
   TileSet* tiles,
+  MeshPart* mesh,
   ContiguityGraph* graph) const
 {
   RingScratch scratch;
@@ -601,6 +814,10 @@ void TessellationDual::DeriveOf(std::int32_t begin,
     if (tiles)
     {
       this->AppendTileOf(v, scratch, *tiles);
+    }
+    if (mesh)
+    {
+      this->AppendMeshTileOf(v, scratch, *mesh);
     }
     if (graph)
     {
@@ -621,6 +838,75 @@ void TessellationDual::AppendTileOf(std::int32_t v, RingScratch& scratch, TileSe
   this->CollinearTileEdges(v, scratch.Edges);
   const std::int32_t sides = AssemblePolygon(this->Tess, scratch.Edges, scratch.Polygon);
   AppendTile(tiles, v, scratch.Polygon, sides);
+}
+
+// Point v's tile as mesh vertex ids: an interior tile's from its faces, any other's by matching
+// its polygon's vertices to the faces and window corners its edges end at.
+void TessellationDual::AppendMeshTileOf(std::int32_t v, RingScratch& scratch, MeshPart& mesh) const
+{
+  TileMesh& tiles = mesh.Tiles;
+  std::vector<Point2>& polygon = scratch.Polygon;
+  std::int32_t sides = 0;
+  const bool planar = this->Tess.IsTwoDimensional();
+  if (planar && InteriorTile(this->Tess, *this, scratch.Ring, polygon, &scratch.Labels))
+  {
+    for (const std::int32_t label : scratch.Labels)
+    {
+      tiles.VertexIds.push_back(this->Data[label].Vertex);
+    }
+    sides = std::int32_t(scratch.Ring.size());
+  }
+  else
+  {
+    if (planar)
+    {
+      RingTileEdges(this->Tess, *this, v, scratch.Ring, scratch.Edges);
+    }
+    else
+    {
+      this->CollinearTileEdges(v, scratch.Edges);
+    }
+    sides = AssemblePolygon(this->Tess, scratch.Edges, polygon);
+    for (const Point2& p : polygon)
+    {
+      tiles.VertexIds.push_back(this->MeshVertexOf(p, scratch, mesh));
+    }
+  }
+  tiles.PointIds.push_back(v);
+  tiles.Offsets.push_back(std::int64_t(tiles.VertexIds.size()));
+  tiles.Areas.push_back(CompensatedPolygonArea(polygon.data(), polygon.size()));
+  tiles.NeighborCounts.push_back(sides);
+}
+
+// The vertex id of a clipped tile's polygon vertex p (about to be appended): a face centre inside
+// the window that one of its edges ends at, a window corner, or else a crossing of the window
+// boundary, a new vertex. Matched by exact coordinates: AssemblePolygon copies them.
+std::int32_t TessellationDual::MeshVertexOf(const Point2& p,
+  const RingScratch& scratch,
+  MeshPart& mesh) const
+{
+  for (const TileEdge& edge : scratch.Edges)
+  {
+    for (const EdgeEnd* end : { &edge.Lo, &edge.Hi })
+    {
+      if (end->Constraint < 0 && end->Where >= 0 && end->P == p && this->Data[end->Where].Inside())
+      {
+        return this->Data[end->Where].Vertex;
+      }
+    }
+  }
+  const std::vector<Point2>& corners = this->Tess.GetWindow().Vertices();
+  for (std::size_t k = 0; k < corners.size(); ++k)
+  {
+    if (corners[k] == p)
+    {
+      return mesh.CornerBase + std::int32_t(k);
+    }
+  }
+  TileMesh& tiles = mesh.Tiles;
+  mesh.ExtraSlots.push_back(std::int64_t(tiles.VertexIds.size()));
+  tiles.Vertices.push_back(p);
+  return std::int32_t(tiles.Vertices.size() - 1);
 }
 
 // A ring walk is a chain of dependent loads (twin, then the next triangle's twin ...), mostly
@@ -696,7 +982,7 @@ void TessellationDual::AppendContiguitiesOf(std::int32_t v,
         const std::int32_t left = this->Data[e / 3].Face;
         const std::int32_t right = this->Data[twin[e] / 3].Face;
         if (left != right &&
-          ((left >= 0 && right >= 0 && this->Data[left].Inside && this->Data[right].Inside) ||
+          ((left >= 0 && right >= 0 && this->Data[left].Inside() && this->Data[right].Inside()) ||
             ClipEdge(this->Tess, v, j, this->View(right), this->View(left), edge)))
         {
           around.emplace_back(j, 0);

@@ -70,6 +70,33 @@ struct TilesAndGraph
   ContiguityGraph Graph;
 };
 
+/// The tiles of a TileSet as a mesh whose tiles share vertices: tile k's polygon is
+/// Vertices[VertexIds[Offsets[k]]], ... and has exactly the coordinates of the TileSet's tile k.
+/// Where tiles meet at a face centre inside the window they use one vertex, and likewise at a
+/// window corner; a point where a tile edge crosses the window boundary is a vertex of its own in
+/// each tile that has it (the two tiles' copies have the same coordinates).
+struct TileMesh
+{
+  std::vector<std::int32_t> PointIds;
+  std::vector<std::int64_t> Offsets;   ///< tile k's vertex ids are [Offsets[k], Offsets[k+1])
+  std::vector<std::int32_t> VertexIds; ///< anticlockwise, into Vertices
+  /// Face centres inside the window (in the order of the triangle arrays), then the window's
+  /// corners, then the crossings of tile edges with the window boundary.
+  std::vector<Point2> Vertices;
+  std::vector<double> Areas;
+  std::vector<std::int32_t> NeighborCounts;
+};
+
+struct TileMeshAndGraph
+{
+  TileMesh Tiles;
+  ContiguityGraph Graph;
+};
+
+/// A TileSet as a TileMesh in which every tile has its own vertices (nothing is shared): for a
+/// caller that writes either engine's tiles one way.
+TileMesh MeshOfSeparateTiles(TileSet tiles);
+
 /// Delaunay faces, each anticlockwise and starting at its smallest point id, listed in the order
 /// of the triangle arrays. The set of faces, and each face, do not depend on the insertion order;
 /// the listing order does.
@@ -99,6 +126,9 @@ public:
   /// Both, as Tiles() and Contiguities() give them, in one pass over the rings (faster than
   /// calling the two).
   TilesAndGraph TilesAndContiguities() const;
+  /// The same tiles as a TileMesh, and the contiguities, in one pass (what a caller that writes
+  /// a mesh needs: a third of the vertices to store). Not const: it numbers the face vertices.
+  TileMeshAndGraph TileMeshAndContiguities();
   /// With splitDegenerate, a degenerate face becomes a fan of triangles from its smallest id.
   DelaunayFaces Faces(bool splitDegenerate) const;
 
@@ -128,15 +158,20 @@ private:
   /// TouchRings walks RingBatch rings side by side to overlap their cache misses.
   static constexpr std::int32_t RingBatch = 32;
   struct RingScratch; // one chunk's buffers (tiles.cpp)
+  struct MeshPart;    // one chunk's mesh tiles (tiles.cpp)
   void TouchRings(std::int32_t begin, std::int32_t end) const;
-  void Derive(TileSet* tiles, ContiguityGraph* graph) const;
+  void Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* graph) const;
   void DeriveOf(std::int32_t begin,
     std::int32_t end,
     const std::vector<std::pair<std::int32_t, std::int32_t>>& half,
     TileSet* tiles,
+    MeshPart* mesh,
     ContiguityGraph* graph) const;
   std::vector<std::pair<std::int32_t, std::int32_t>> HalfNeighbours() const;
   void AppendTileOf(std::int32_t v, RingScratch& scratch, TileSet& tiles) const;
+  void AppendMeshTileOf(std::int32_t v, RingScratch& scratch, MeshPart& mesh) const;
+  std::int32_t MeshVertexOf(const Point2& p, const RingScratch& scratch, MeshPart& mesh) const;
+  std::int32_t NumberFaceVertices(std::vector<Point2>& vertices);
   void AppendContiguitiesOf(std::int32_t v,
     const std::vector<std::pair<std::int32_t, std::int32_t>>& half,
     RingScratch& scratch,
@@ -152,12 +187,14 @@ private:
   std::vector<std::int32_t> OrderEdge; ///< two-dimensional case: a half-edge leaving Order[k]
   /// Per triangle, together so that a ring walk touches one cache line per triangle: its face
   /// (a representative triangle; -2 - t for a ghost), and for a representative the face's centre
-  /// and whether it lies inside the window.
+  /// and whether it lies inside the window: Vertex >= 0 (once NumberFaceVertices has run, the
+  /// centre's index among a TileMesh's vertices; 0 before), -1 otherwise.
   struct TriangleData
   {
     Point2 Centre;
     std::int32_t Face = -1;
-    std::uint8_t Inside = 0;
+    std::int32_t Vertex = -1;
+    bool Inside() const { return this->Vertex >= 0; }
   };
   std::vector<TriangleData> Data;
   std::vector<double> CentreError; ///< per triangle, while labelling faces

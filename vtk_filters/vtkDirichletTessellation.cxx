@@ -37,7 +37,7 @@ namespace
 /// What either engine produces, in the core's flat arrays.
 struct TessellationResult
 {
-  tessera::TileSet Tiles;
+  tessera::TileMesh Tiles;
   tessera::ContiguityGraph Graph;
   std::vector<std::int32_t> Rejected;
   std::vector<std::pair<std::int32_t, std::int32_t>> Duplicates;
@@ -46,7 +46,8 @@ struct TessellationResult
 TessellationResult RunGreenSibson(tessera::Window window, std::vector<tessera::Point2> points)
 {
   const tessera::DirichletTessellation tessellation(std::move(window), std::move(points));
-  tessera::TilesAndGraph both = tessera::TessellationDual(tessellation).TilesAndContiguities();
+  tessera::TileMeshAndGraph both =
+    tessera::TessellationDual(tessellation).TileMeshAndContiguities();
   return { std::move(both.Tiles),
     std::move(both.Graph),
     tessellation.RejectedIds(),
@@ -62,7 +63,7 @@ TessellationResult RunBrasselReif(const tessera::Window& window,
                               "only); remove the window constraints or use GreenSibson");
   }
   tessera::ThiessenSweepResult sweep = tessera::ComputeThiessenSweep(window, points);
-  return { std::move(sweep.Tiles),
+  return { tessera::MeshOfSeparateTiles(std::move(sweep.Tiles)),
     std::move(sweep.Contiguities),
     std::move(sweep.RejectedIds),
     std::move(sweep.Duplicates) };
@@ -101,16 +102,16 @@ void CheckFitsInt32(vtkIdType count, const char* what)
   }
 }
 
-/// Output 0: the tiles in ascending point id, their arrays and the input's point data on them.
-/// Made in steps, like GraphWriter, so that the filling can be shared between two threads: the
-/// constructor orders the tiles, allocates the arrays and places each tile's vertices;
-/// CopyVertices fills a range of tiles' vertices and FillConnectivity the ids (plain loops, any
-/// thread); FillCellData copies the input's point data too (VTK calls: the calling thread);
-/// Attach hands everything to the output.
+/// Output 0: the tiles in ascending point id, on the mesh's vertices (tiles that meet share
+/// them), with their arrays and the input's point data. Made in steps, like GraphWriter, so that
+/// the filling can be shared between two threads: the constructor orders the tiles, allocates the
+/// arrays and places each tile's vertex ids; CopyVertices fills a range of the points and
+/// CopyConnectivity a range of the tiles' ids (plain loops, any thread); FillCellData copies the
+/// input's point data too (VTK calls: the calling thread); Attach hands everything to the output.
 class TileWriter
 {
 public:
-  TileWriter(const tessera::TileSet& tiles, vtkPointSet* input, vtkPolyData* output)
+  TileWriter(const tessera::TileMesh& tiles, vtkPointSet* input, vtkPolyData* output)
     : Tiles(tiles)
     , Input(input)
     , Output(output)
@@ -118,19 +119,20 @@ public:
     , VertexCount(static_cast<vtkIdType>(tiles.Vertices.size()))
     , Order(OrderByPointId(tiles.PointIds, static_cast<std::size_t>(input->GetNumberOfPoints())))
   {
-    CheckFitsInt32(this->VertexCount, "tile vertices");
+    const vtkIdType idCount = static_cast<vtkIdType>(tiles.VertexIds.size());
+    CheckFitsInt32(idCount, "tile vertices");
     this->Coordinates->SetNumberOfComponents(3);
     this->Coordinates->SetNumberOfTuples(this->VertexCount);
     this->Offsets->SetNumberOfValues(this->TileCount + 1);
-    this->Connectivity->SetNumberOfValues(this->VertexCount);
+    this->Connectivity->SetNumberOfValues(idCount);
     this->PointIds->SetName("PointId");
     this->Areas->SetName("Area");
     this->NeighborCounts->SetName("NeighborCount");
     this->PointIds->SetNumberOfValues(this->TileCount);
     this->Areas->SetNumberOfValues(this->TileCount);
     this->NeighborCounts->SetNumberOfValues(this->TileCount);
-    // Where each tile's vertices go. The order jumps about the core's (spatial) order: the
-    // offsets are requested a few tiles ahead.
+    // Where each tile's ids go. The order jumps about the core's (spatial) order: the offsets
+    // are requested a few tiles ahead.
     std::int32_t* offsets = this->Offsets->GetPointer(0);
     const std::vector<std::int64_t>& from = tiles.Offsets;
     std::int32_t written = 0;
@@ -147,48 +149,46 @@ public:
   }
 
   vtkIdType Count() const { return this->TileCount; }
+  vtkIdType PointCount() const { return this->VertexCount; }
 
-  /// The vertices (x, y, 0) of the tiles [begin, end) of the output order.
+  /// The points (x, y, 0) [begin, end).
   void CopyVertices(vtkIdType begin, vtkIdType end)
   {
-    const tessera::TileSet& tiles = this->Tiles;
-    const std::int32_t* offsets = this->Offsets->GetPointer(0);
+    const tessera::Point2* vertices = this->Tiles.Vertices.data();
     double* xyz = this->Coordinates->GetPointer(0);
+    for (vtkIdType v = begin; v < end; ++v)
+    {
+      xyz[3 * v] = vertices[v].x;
+      xyz[3 * v + 1] = vertices[v].y;
+      xyz[3 * v + 2] = 0.0;
+    }
+  }
+
+  /// The vertex ids of the tiles [begin, end) of the output order.
+  void CopyConnectivity(vtkIdType begin, vtkIdType end)
+  {
+    const tessera::TileMesh& tiles = this->Tiles;
+    const std::int32_t* offsets = this->Offsets->GetPointer(0);
+    std::int32_t* ids = this->Connectivity->GetPointer(0);
     for (vtkIdType k = begin; k < end; ++k)
     {
       if (k + Ahead < end)
       {
-        const tessera::Point2* upcoming =
-          tiles.Vertices.data() + tiles.Offsets[this->Order[k + Ahead]];
-        __builtin_prefetch(upcoming);
-        __builtin_prefetch(upcoming + 4);
-        __builtin_prefetch(upcoming + 8);
+        const std::int32_t upcoming = this->Order[k + Ahead];
+        __builtin_prefetch(tiles.Offsets.data() + upcoming);
+        __builtin_prefetch(tiles.VertexIds.data() + tiles.Offsets[this->Order[k + Ahead / 2]]);
       }
       const std::int32_t tile = this->Order[k];
-      std::int64_t written = offsets[k];
-      for (std::int64_t v = tiles.Offsets[tile]; v < tiles.Offsets[tile + 1]; ++v, ++written)
-      {
-        xyz[3 * written] = tiles.Vertices[v].x;
-        xyz[3 * written + 1] = tiles.Vertices[v].y;
-        xyz[3 * written + 2] = 0.0;
-      }
-    }
-  }
-
-  /// Each tile has its own vertices: the connectivity is 0, 1, 2, ...
-  void FillConnectivity()
-  {
-    std::int32_t* ids = this->Connectivity->GetPointer(0);
-    for (std::int32_t v = 0; v < std::int32_t(this->VertexCount); ++v)
-    {
-      ids[v] = v;
+      std::copy(tiles.VertexIds.data() + tiles.Offsets[tile],
+        tiles.VertexIds.data() + tiles.Offsets[tile + 1],
+        ids + offsets[k]);
     }
   }
 
   /// PointId, Area, NeighborCount and the input's point data, per tile. On the calling thread.
   void FillCellData()
   {
-    const tessera::TileSet& tiles = this->Tiles;
+    const tessera::TileMesh& tiles = this->Tiles;
     vtkCellData* cellData = this->Output->GetCellData();
     vtkPointData* inputData = this->Input->GetPointData();
     // The input's point data follows the tiles (a gauge's values on its tile). Skipped when
@@ -238,7 +238,7 @@ public:
 
 private:
   static constexpr vtkIdType Ahead = 8; ///< tiles read ahead of the one being written
-  const tessera::TileSet& Tiles;
+  const tessera::TileMesh& Tiles;
   vtkPointSet* Input;
   vtkPolyData* Output;
   const vtkIdType TileCount;
@@ -391,23 +391,25 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     this->UpdateProgress(0.8);
     GraphWriter graph(result.Graph, input, graphOutput);
     TileWriter tiles(result.Tiles, input, tilesOutput);
-    // Two threads for large outputs: first the tiles' vertices in two halves (the longest part:
-    // first touching the output's pages), then the cell data beside the graph and the tiles'
-    // connectivity.
+    // Two threads for large outputs: first the points and the tiles' ids in two halves (first
+    // touching the output's pages), then the cell data beside the graph.
     const bool beside = tessera::parallel::ThreadCount(tiles.Count(), 25000) > 1;
     const vtkIdType half = tiles.Count() / 2;
+    const vtkIdType halfPoints = tiles.PointCount() / 2;
     tessera::parallel::RunSideBySide(
       beside,
-      [&]() { tiles.CopyVertices(0, half); },
-      [&]() { tiles.CopyVertices(half, tiles.Count()); });
-    tessera::parallel::RunSideBySide(
-      beside,
-      [&]() { tiles.FillCellData(); },
       [&]()
       {
-        graph.Fill();
-        tiles.FillConnectivity();
+        tiles.CopyVertices(0, halfPoints);
+        tiles.CopyConnectivity(0, half);
+      },
+      [&]()
+      {
+        tiles.CopyVertices(halfPoints, tiles.PointCount());
+        tiles.CopyConnectivity(half, tiles.Count());
       });
+    tessera::parallel::RunSideBySide(
+      beside, [&]() { tiles.FillCellData(); }, [&]() { graph.Fill(); });
     tiles.Attach();
     graph.Attach(graphOutput);
     tessera_vtk::AddUnusedPointIds(tilesOutput, result.Rejected, result.Duplicates);

@@ -18,8 +18,11 @@
  * Algorithms: GreenSibson (default), the incremental engine; BrasselReif, the Thiessen sweep of
  * Brassel and Reif (1979), which needs a rectangular window. Both give the same outputs.
  *
- * Output 0 (vtkPolyData): one polygon per accepted point (anticlockwise; vertices are tile
- * corners: circumcentres and window-edge points), in ascending point id. Cell data:
+ * Output 0 (vtkPolyData): one polygon per accepted point (anticlockwise), in ascending point id.
+ * Its points are the tile corners: circumcentres inside the window, window corners and the points
+ * where tile edges cross the window boundary. Tiles that meet share the point there (with the
+ * GreenSibson algorithm: the tiles form a conforming mesh; with BrasselReif each tile has its
+ * own copies). Cell data:
  * - `PointId` (vtkIdType): the index of the point in the input;
  * - `Area` (double): the tile's area, by compensated summation;
  * - `NeighborCount` (int): contiguities of the tile, window edges included (its polygon sides);

@@ -699,3 +699,106 @@ TEST(Tiles, TilesAndContiguitiesEqualTheSeparatePasses)
     }
   }
 }
+
+// The mesh form of the tiles (what vtkDirichletTessellation writes): tile for tile the same
+// polygons, bit for bit, areas and side counts as Tiles(), the same contiguities, and a
+// conforming mesh: every vertex is used, no two vertices coincide (tiles that meet share the
+// vertex), and every polygon side is also a side of the neighbouring tile, by vertex ids, unless
+// it runs along the window boundary. 12,000 points make two chunks, whose crossings are merged.
+TEST(Tiles, TileMeshExpandsToTheTilesAndIsConforming)
+{
+  const Window oblique({ { 1.0, 1.0, -1.6 }, { -1.0, 0.2, -0.3 }, { 0.1, -1.0, -0.2 } });
+  std::vector<std::vector<Point2>> sets;
+  sets.push_back(UniformPoints(3000, 5));
+  sets.push_back(UniformPoints(12000, 7));
+  sets.push_back(tessera_test::SquareLattice(30, 30.0));
+  std::vector<Point2> mixed = UniformPoints(800, 6);
+  const std::vector<Point2> patch = tessera_test::SquareLattice(6, 50.0);
+  mixed.insert(mixed.end(), patch.begin(), patch.end());
+  sets.push_back(mixed);
+  sets.push_back({ { 0.1, 0.1 }, { 0.3, 0.3 }, { 0.5, 0.5 }, { 0.9, 0.9 } });
+  sets.push_back({ { 0.4, 0.6 } });
+  sets.push_back({});
+  for (std::size_t set = 0; set < sets.size(); ++set)
+  {
+    for (const Window& window : { Window::Rectangle(-0.1, 1.1, -0.1, 1.1), oblique })
+    {
+      DirichletTessellation t(window, sets[set]);
+      if (set == 3)
+      {
+        for (std::int32_t id = 0; id < 100; ++id)
+        {
+          if (t.Status(id) == PointStatus::Accepted)
+          {
+            t.Remove(id);
+          }
+        }
+      }
+      TessellationDual dual(t);
+      const TilesAndGraph both = dual.TilesAndContiguities();
+      const TileMeshAndGraph mesh = dual.TileMeshAndContiguities();
+      const TileSet& tiles = both.Tiles;
+      EXPECT_EQ(mesh.Tiles.PointIds, tiles.PointIds) << "set " << set;
+      EXPECT_EQ(mesh.Tiles.Offsets, tiles.Offsets) << "set " << set;
+      EXPECT_EQ(mesh.Tiles.Areas, tiles.Areas) << "set " << set;
+      EXPECT_EQ(mesh.Tiles.NeighborCounts, tiles.NeighborCounts) << "set " << set;
+      EXPECT_EQ(mesh.Graph.Pairs, both.Graph.Pairs) << "set " << set;
+      EXPECT_EQ(mesh.Graph.Kinds, both.Graph.Kinds) << "set " << set;
+      const std::vector<Point2>& vertices = mesh.Tiles.Vertices;
+      ASSERT_EQ(mesh.Tiles.VertexIds.size(), tiles.Vertices.size()) << "set " << set;
+      std::vector<int> uses(vertices.size(), 0);
+      for (std::size_t v = 0; v < tiles.Vertices.size(); ++v)
+      {
+        const std::int32_t id = mesh.Tiles.VertexIds[v];
+        ASSERT_TRUE(id >= 0 && std::size_t(id) < vertices.size()) << "set " << set;
+        ASSERT_TRUE(vertices[id] == tiles.Vertices[v]) << "set " << set << " vertex " << v;
+        ++uses[std::size_t(id)];
+      }
+      EXPECT_EQ(std::count(uses.begin(), uses.end(), 0), 0) << "set " << set;
+      std::set<std::pair<double, double>> distinct;
+      for (const Point2& p : vertices)
+      {
+        distinct.emplace(p.x, p.y);
+      }
+      EXPECT_EQ(distinct.size(), vertices.size()) << "set " << set;
+      // Sides by vertex ids; an unmatched side must lie on a window line.
+      std::set<std::pair<std::int32_t, std::int32_t>> sides;
+      const auto& offsets = mesh.Tiles.Offsets;
+      for (std::size_t k = 0; k + 1 < offsets.size(); ++k)
+      {
+        for (std::int64_t v = offsets[k]; v < offsets[k + 1]; ++v)
+        {
+          const std::int64_t w = v + 1 < offsets[k + 1] ? v + 1 : offsets[k];
+          sides.emplace(mesh.Tiles.VertexIds[v], mesh.Tiles.VertexIds[w]);
+        }
+      }
+      const auto onOneLine = [&](const Point2& a, const Point2& b)
+      {
+        for (const HalfPlane& h : t.GetWindow().EffectiveConstraints())
+        {
+          const double norm = std::hypot(h.a, h.b);
+          if (std::abs(h.a * a.x + h.b * a.y + h.c) <= 1e-12 * norm &&
+            std::abs(h.a * b.x + h.b * b.y + h.c) <= 1e-12 * norm)
+          {
+            return true;
+          }
+        }
+        return false;
+      };
+      std::size_t boundarySides = 0;
+      for (const auto& [a, b] : sides)
+      {
+        if (!sides.count({ b, a }))
+        {
+          ++boundarySides;
+          EXPECT_TRUE(onOneLine(vertices[a], vertices[b]))
+            << "set " << set << ": side " << a << "-" << b << " has no twin";
+        }
+      }
+      if (!sets[set].empty())
+      {
+        EXPECT_GE(boundarySides, t.GetWindow().EffectiveConstraints().size()) << "set " << set;
+      }
+    }
+  }
+}

@@ -253,6 +253,53 @@ def test_nan_point_is_named():
     assert_that(f.GetOutput(0).GetNumberOfCells() == 0, "empty output")
 
 
+def test_tiles_form_a_conforming_mesh():
+    # Tiles that meet share their corner points: VTK's edge filters find no non-manifold edge, and
+    # boundary edges only along the window, whose perimeter they add up to; merging coincident
+    # points (vtkCleanPolyData) finds nothing to merge.
+    from vtkmodules.vtkFiltersCore import vtkCleanPolyData, vtkFeatureEdges
+
+    rng = random.Random(12)
+    coords = [(rng.uniform(0, 1), rng.uniform(0, 1)) for _ in range(600)]
+    coords = [(x, y) for x, y in coords if x + y < 1.45]
+    f = vtkDirichletTessellation()
+    f.SetInputData(make_points(coords))
+    f.SetWindowBounds(0, 1, 0, 1)
+    f.AddWindowConstraint(1, 1, -1.5)  # x + y < 1.5 cuts a corner
+    f.Update()
+    tiles = f.GetOutput(0)
+    references = sum(tiles.GetCell(c).GetNumberOfPoints() for c in range(tiles.GetNumberOfCells()))
+    assert_that(tiles.GetNumberOfPoints() < references / 2.5,
+                f"corners shared: {tiles.GetNumberOfPoints()} points for {references} corners")
+    edges = vtkFeatureEdges()
+    edges.SetInputData(tiles)
+    edges.BoundaryEdgesOff()
+    edges.FeatureEdgesOff()
+    edges.ManifoldEdgesOff()
+    edges.NonManifoldEdgesOn()
+    edges.Update()
+    assert_that(edges.GetOutput().GetNumberOfCells() == 0, "no non-manifold edge")
+    edges.NonManifoldEdgesOff()
+    edges.BoundaryEdgesOn()
+    edges.Update()
+    boundary = edges.GetOutput()
+    length = 0.0
+    for c in range(boundary.GetNumberOfCells()):
+        a, b = (np.array(boundary.GetPoint(boundary.GetCell(c).GetPointId(k))[:2]) for k in (0, 1))
+        length += float(np.linalg.norm(b - a))
+        for p in (a, b):
+            on_window = min(abs(p[0]), abs(p[0] - 1), abs(p[1]), abs(p[1] - 1), abs(p[0] + p[1] - 1.5))
+            assert_that(on_window < 1e-12, f"boundary edge {c} lies on the window ({p})")
+    assert_close(length, 3 + math.sqrt(0.5), 1e-12, "boundary edges add up to the window's perimeter")
+    clean = vtkCleanPolyData()
+    clean.SetInputData(tiles)
+    clean.PointMergingOn()
+    clean.SetTolerance(0.0)
+    clean.Update()
+    assert_that(clean.GetOutput().GetNumberOfPoints() == tiles.GetNumberOfPoints(),
+                "no two corner points coincide")
+
+
 def cells_of(data):
     return [tuple(data.GetCell(c).GetPointIds().GetId(k)
                   for k in range(data.GetCell(c).GetNumberOfPoints()))
@@ -301,4 +348,5 @@ if __name__ == "__main__":
          test_both_engines_agree,
          test_brassel_reif_refuses_a_non_rectangular_window,
          test_nan_point_is_named,
+         test_tiles_form_a_conforming_mesh,
          test_32_bit_cell_arrays_survive_a_vtp_round_trip])
