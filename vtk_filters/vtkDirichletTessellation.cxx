@@ -252,17 +252,21 @@ private:
   vtkNew<vtkIntArray> NeighborCounts;
 };
 
-/// Output 1: the input points with one line per contiguous pair and its Kind. Made in three
-/// steps so that Fill (plain loops over the arrays, no VTK calls) can run on a thread of its own
-/// while the tiles are written: the constructor passes the input's points and point data and
-/// allocates the arrays, Fill fills them, Attach hands them to the output.
+/// Output 1: the input points with one line per contiguous pair and its Kind, sorted by (i, j).
+/// Both cores list the pairs of one i together with j ascending, the groups in their own tile
+/// order, so a stable counting sort on i is enough (linear time). It runs in steps, so that the
+/// plain loops can share two threads while the tiles are written: the constructor passes the
+/// input's points and point data and allocates the arrays; Count(h) counts half h of the pairs
+/// per i, Place turns the counts into each half's first slot per i (half 0's pairs of an i before
+/// half 1's: the sort stays stable), Scatter(h) writes half h's pairs to their slots; Attach hands
+/// the arrays to the output.
 class GraphWriter
 {
 public:
   GraphWriter(const tessera::ContiguityGraph& graph, vtkPointSet* input, vtkPolyData* output)
     : Graph(graph)
     , PairCount(static_cast<vtkIdType>(graph.Kinds.size()))
-    , Start(static_cast<std::size_t>(input->GetNumberOfPoints()) + 1, 0)
+    , IdLimit(static_cast<std::size_t>(input->GetNumberOfPoints()))
   {
     if (input->GetPoints())
     {
@@ -276,45 +280,61 @@ public:
     this->Kinds->SetNumberOfValues(this->PairCount);
   }
 
-  void Fill()
+  void Count(int half)
   {
-    // Pairs sorted by (i, j). Both cores list the pairs of one i together with j ascending, the
-    // groups in their own tile order, so a stable counting sort on i is enough (linear time):
-    // the pairs are read in order and each written straight to its place.
-    const std::vector<std::int32_t>& pairs = this->Graph.Pairs;
-    std::vector<std::int32_t>& start = this->Start;
+    std::vector<std::int32_t>& count = this->Slots[half];
+    count.assign(this->IdLimit, 0);
+    const std::int32_t* pairs = this->Graph.Pairs.data();
+    const vtkIdType begin = this->HalfBegin(half), end = this->HalfBegin(half + 1);
     // Point ids are random in space: the counters are requested a few pairs ahead.
-    constexpr vtkIdType ahead = 16;
-    for (vtkIdType k = 0; k < this->PairCount; ++k)
+    for (vtkIdType k = begin; k < end; ++k)
     {
-      if (k + ahead < this->PairCount)
+      if (k + Ahead < end)
       {
-        __builtin_prefetch(start.data() + pairs[2 * (k + ahead)] + 1);
+        __builtin_prefetch(count.data() + pairs[2 * (k + Ahead)]);
       }
-      ++start[pairs[2 * k] + 1];
+      ++count[pairs[2 * k]];
     }
-    for (std::size_t i = 1; i < start.size(); ++i)
+  }
+
+  void Place()
+  {
+    std::int32_t next = 0;
+    for (std::size_t i = 0; i < this->IdLimit; ++i)
     {
-      start[i] += start[i - 1];
+      for (std::vector<std::int32_t>& slots : this->Slots)
+      {
+        const std::int32_t count = slots[i];
+        slots[i] = next;
+        next += count;
+      }
     }
-    std::int32_t* offsetData = this->Offsets->GetPointer(0);
+  }
+
+  void Scatter(int half)
+  {
+    std::vector<std::int32_t>& slot = this->Slots[half];
+    const std::int32_t* pairs = this->Graph.Pairs.data();
+    const std::uint8_t* kinds = this->Graph.Kinds.data();
     std::int32_t* ids = this->Connectivity->GetPointer(0);
     unsigned char* kindData = this->Kinds->GetPointer(0);
-    for (vtkIdType k = 0; k < this->PairCount; ++k)
+    const vtkIdType begin = this->HalfBegin(half), end = this->HalfBegin(half + 1);
+    for (vtkIdType k = begin; k < end; ++k)
     {
-      if (k + ahead < this->PairCount)
+      if (k + Ahead < end)
       {
-        __builtin_prefetch(start.data() + pairs[2 * (k + ahead)]);
+        __builtin_prefetch(slot.data() + pairs[2 * (k + Ahead)]);
       }
       const std::int32_t i = pairs[2 * k];
-      const std::int32_t at = start[i]++;
+      const std::int32_t at = slot[i]++;
       ids[2 * at] = i;
       ids[2 * at + 1] = pairs[2 * k + 1];
-      kindData[at] = this->Graph.Kinds[k];
+      kindData[at] = kinds[k];
     }
-    for (std::int32_t k = 0; k <= std::int32_t(this->PairCount); ++k)
+    std::int32_t* offsetData = this->Offsets->GetPointer(0);
+    for (vtkIdType k = begin; k < end + (half == 1 ? 1 : 0); ++k)
     {
-      offsetData[k] = 2 * k;
+      offsetData[k] = std::int32_t(2 * k);
     }
   }
 
@@ -327,9 +347,16 @@ public:
   }
 
 private:
+  static constexpr vtkIdType Ahead = 16; ///< pairs read ahead of the one counted or written
+  vtkIdType HalfBegin(int half) const
+  {
+    return half == 0 ? 0 : half == 1 ? this->PairCount / 2 : this->PairCount;
+  }
+
   const tessera::ContiguityGraph& Graph;
   const vtkIdType PairCount;
-  std::vector<std::int32_t> Start;
+  const std::size_t IdLimit;
+  std::vector<std::int32_t> Slots[2]; ///< per half: counts per i, then next slot per i
   vtkNew<vtkTypeInt32Array> Offsets;
   vtkNew<vtkTypeInt32Array> Connectivity;
   vtkNew<vtkUnsignedCharArray> Kinds;
@@ -391,8 +418,9 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     this->UpdateProgress(0.8);
     GraphWriter graph(result.Graph, input, graphOutput);
     TileWriter tiles(result.Tiles, input, tilesOutput);
-    // Two threads for large outputs: first the points and the tiles' ids in two halves (first
-    // touching the output's pages), then the cell data beside the graph.
+    // Two threads for large outputs: first the points, the tiles' ids and the graph's counts in
+    // two halves (first touching the output's pages), then the cell data (VTK calls: this
+    // thread) beside the graph's lines.
     const bool beside = tessera::parallel::ThreadCount(tiles.Count(), 25000) > 1;
     const vtkIdType half = tiles.Count() / 2;
     const vtkIdType halfPoints = tiles.PointCount() / 2;
@@ -402,14 +430,23 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
       {
         tiles.CopyVertices(0, halfPoints);
         tiles.CopyConnectivity(0, half);
+        graph.Count(0);
       },
       [&]()
       {
         tiles.CopyVertices(halfPoints, tiles.PointCount());
         tiles.CopyConnectivity(half, tiles.Count());
+        graph.Count(1);
       });
+    graph.Place();
     tessera::parallel::RunSideBySide(
-      beside, [&]() { tiles.FillCellData(); }, [&]() { graph.Fill(); });
+      beside,
+      [&]() { tiles.FillCellData(); },
+      [&]()
+      {
+        graph.Scatter(0);
+        graph.Scatter(1);
+      });
     tiles.Attach();
     graph.Attach(graphOutput);
     tessera_vtk::AddUnusedPointIds(tilesOutput, result.Rejected, result.Duplicates);

@@ -300,6 +300,31 @@ def test_tiles_form_a_conforming_mesh():
                 "no two corner points coincide")
 
 
+def test_large_graph_is_sorted_with_kinds_following_pairs():
+    # 62,500 lattice points: enough for the filter to write on two threads. The graph's lines are
+    # sorted by (i, j) with i < j, Kind 0 pairs are the lattice's edges and Kind 1 pairs its
+    # squares' diagonals, all of them.
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    side = 250
+    coords = [(i, j) for j in range(side) for i in range(side)]
+    graph = tessellate(make_points(coords)).GetOutput(1)
+    lines = vtk_to_numpy(graph.GetLines().GetConnectivityArray()).reshape(-1, 2).astype(np.int64)
+    kinds = vtk_to_numpy(graph.GetCellData().GetArray("Kind"))
+    assert_that(bool(np.all(lines[:, 0] < lines[:, 1])), "i < j on every line")
+    key = lines[:, 0] * len(coords) + lines[:, 1]
+    assert_that(bool(np.all(np.diff(key) > 0)), "lines sorted by (i, j), no repeats")
+    ix, iy = lines % side, lines // side
+    dx, dy = np.abs(ix[:, 1] - ix[:, 0]), np.abs(iy[:, 1] - iy[:, 0])
+    edge = dx + dy == 1
+    diagonal = (dx == 1) & (dy == 1)
+    assert_that(bool(np.all(kinds[edge] == 0)) and bool(np.all(kinds[diagonal] == 1)),
+                "Kind follows its pair")
+    assert_that(int(edge.sum()) == 2 * side * (side - 1), f"all lattice edges ({int(edge.sum())})")
+    assert_that(int(diagonal.sum()) == 2 * (side - 1) ** 2, f"all diagonals ({int(diagonal.sum())})")
+    assert_that(len(kinds) == int(edge.sum() + diagonal.sum()), "nothing else")
+
+
 def cells_of(data):
     return [tuple(data.GetCell(c).GetPointIds().GetId(k)
                   for k in range(data.GetCell(c).GetNumberOfPoints()))
@@ -349,4 +374,5 @@ if __name__ == "__main__":
          test_brassel_reif_refuses_a_non_rectangular_window,
          test_nan_point_is_named,
          test_tiles_form_a_conforming_mesh,
+         test_large_graph_is_sorted_with_kinds_following_pairs,
          test_32_bit_cell_arrays_survive_a_vtp_round_trip])
