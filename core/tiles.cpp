@@ -74,26 +74,63 @@ TessellationDual::TessellationDual(const DirichletTessellation& tessellation)
     this->Order = line;
     return;
   }
-  // First appearance of each vertex in the half-edge arrays; a bit per point
-  // keeps the "seen" test in cache.
-  std::vector<std::uint64_t> seen((n + 63) / 64, 0);
-  this->Order.reserve(tessellation.AcceptedCount());
-  this->OrderEdge.reserve(tessellation.AcceptedCount());
-  const auto& org = tessellation.Origin();
-  for (std::size_t e = 0; e < org.size(); ++e)
-  {
-    const std::int32_t v = org[e];
-    if (v >= 0 && !(seen[std::size_t(v) >> 6] >> (v & 63) & 1U))
-    {
-      seen[std::size_t(v) >> 6] |= std::uint64_t(1) << (v & 63);
-      this->Order.push_back(v);
-      this->OrderEdge.push_back(std::int32_t(e));
-    }
-  }
+  this->OrderPoints();
   std::vector<std::uint8_t> candidate;
   this->ComputeTriangleCentres(candidate);
   this->LabelFaces(candidate);
   this->ComputeCentres();
+}
+
+// First appearance of each vertex in the half-edge arrays (Order, with the half-edge in
+// OrderEdge); a bit per point keeps the "seen" test in cache. Chunks of the arrays in parallel,
+// each with its own bits; a chunk's first appearances then count only if no earlier chunk saw the
+// vertex, so the order is the serial one.
+void TessellationDual::OrderPoints()
+{
+  const HalfEdgeArray& org = this->Tess.Origin();
+  const std::size_t words = (this->Tess.PointCount() + 63) / 64;
+  const std::int32_t edges = std::int32_t(org.size());
+  const std::vector<std::int32_t> bounds =
+    ChunkBounds(edges, ThreadCount(edges, 6 * MinimumTilesPerThread));
+  const std::size_t chunks = bounds.size() - 1;
+  std::vector<std::vector<std::uint64_t>> seen(chunks);
+  std::vector<std::vector<std::int32_t>> first(chunks);
+  RunChunks(chunks,
+    [&](std::size_t k)
+    {
+      std::vector<std::uint64_t>& bits = seen[k];
+      std::vector<std::int32_t>& found = first[k];
+      bits.assign(words, 0);
+      found.reserve(std::size_t(bounds[k + 1] - bounds[k]) / 5);
+      for (std::int32_t e = bounds[k]; e < bounds[k + 1]; ++e)
+      {
+        const std::int32_t v = org[std::size_t(e)];
+        if (v >= 0 && !(bits[std::size_t(v) >> 6] >> (v & 63) & 1U))
+        {
+          bits[std::size_t(v) >> 6] |= std::uint64_t(1) << (v & 63);
+          found.push_back(e);
+        }
+      }
+    });
+  this->Order.reserve(this->Tess.AcceptedCount());
+  this->OrderEdge.reserve(this->Tess.AcceptedCount());
+  std::vector<std::uint64_t>& earlier = seen[0];
+  for (std::size_t k = 0; k < chunks; ++k)
+  {
+    for (const std::int32_t e : first[k])
+    {
+      const std::int32_t v = org[std::size_t(e)];
+      if (k == 0 || !(earlier[std::size_t(v) >> 6] >> (v & 63) & 1U))
+      {
+        this->Order.push_back(v);
+        this->OrderEdge.push_back(e);
+      }
+    }
+    for (std::size_t w = 0; k > 0 && w < words; ++w)
+    {
+      earlier[w] |= seen[k][w];
+    }
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -108,7 +145,7 @@ TessellationDual::TessellationDual(const DirichletTessellation& tessellation)
 void TessellationDual::ComputeTriangleCentres(std::vector<std::uint8_t>& candidate)
 {
   const std::int32_t triangles = std::int32_t(this->Tess.Origin().size() / 3);
-  this->Data.resize(std::size_t(triangles));
+  this->Data.resize(std::size_t(triangles)); // not initialised: CentresOf writes every entry
   // The centres' error bounds serve only to find co-circular candidates.
   if (!this->Tess.KnownFreeOfCocircularTriangles())
   {
@@ -146,14 +183,17 @@ void TessellationDual::CentresOf(std::int32_t begin, std::int32_t end)
     if (a < 0 || b < 0 || c < 0)
     {
       this->Data[t].Face = -2 - t; // a ghost or free triangle: its own face, never merged
+      this->Data[t].Vertex = -1;
       continue;
     }
     this->Data[t].Face = t; // until LabelFaces merges it
     SortTriangleIds(a, b, c);
     TriangleData& data = this->Data[t];
     double error = 0.0;
-    data.Centre = Circumcentre(pts[a], pts[b], pts[c], error);
-    data.Vertex = CentreInside(this->Tess, t, data.Centre, error) ? 0 : -1;
+    const Point2 centre = Circumcentre(pts[a], pts[b], pts[c], error);
+    data.X = centre.x;
+    data.Y = centre.y;
+    data.Vertex = CentreInside(this->Tess, t, centre, error) ? 0 : -1;
     if (errors)
     {
       errors[t] = error;
@@ -208,8 +248,8 @@ bool TessellationDual::Cocircular(std::int32_t t, std::int32_t f) const
 {
   const std::int32_t u = f / 3;
   const double slack = this->CentreError[t] + this->CentreError[u];
-  if (std::fabs(this->Data[t].Centre.x - this->Data[u].Centre.x) > slack ||
-    std::fabs(this->Data[t].Centre.y - this->Data[u].Centre.y) > slack)
+  if (std::fabs(this->Data[t].X - this->Data[u].X) > slack ||
+    std::fabs(this->Data[t].Y - this->Data[u].Y) > slack)
   {
     return false;
   }
@@ -403,8 +443,10 @@ void TessellationDual::ComputeCentres()
         std::partial_sort_copy(polygon, polygon + size, ids, ids + 3);
         double error = 0.0;
         TriangleData& data = this->Data[rep];
-        data.Centre = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], error);
-        data.Vertex = CentreInside(this->Tess, rep, data.Centre, error) ? 0 : -1;
+        const Point2 centre = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], error);
+        data.X = centre.x;
+        data.Y = centre.y;
+        data.Vertex = CentreInside(this->Tess, rep, centre, error) ? 0 : -1;
       }
     });
   std::vector<double>().swap(this->CentreError);
@@ -419,7 +461,7 @@ FaceView TessellationDual::View(std::int32_t label) const
   {
     return FaceView();
   }
-  return { label, this->Data[label].Centre, this->Data[label].Inside() };
+  return { label, this->Data[label].Centre(), this->Data[label].Inside() };
 }
 
 // Collinear case: the neighbours along the line (-1 where there is none).
@@ -550,7 +592,7 @@ std::int32_t TessellationDual::NumberFaceVertices(std::vector<Point2>& vertices)
         TriangleData& data = this->Data[t];
         if (data.Inside())
         {
-          vertices[std::size_t(next)] = data.Centre;
+          vertices[std::size_t(next)] = data.Centre();
           data.Vertex = next++;
         }
       }
