@@ -4,7 +4,8 @@
 // gauges, derives every tile and clips every tile. An update removes and inserts the gauges that
 // changed, re-derives the tiles of their face mates and re-clips only tiles that changed.
 //
-//   bench_areal_average [examples/data]      prints two tables
+//   bench_areal_average [examples/data] [--synthetic]   prints two tables (the second only
+//                                                       with --synthetic)
 #include "areal_average.h"
 
 #include <algorithm>
@@ -130,11 +131,41 @@ double RunAll(ThiessenArealAverage& average,
   return Seconds(start);
 }
 
+void RunColorado(const std::string& dir);
+void RunSynthetic();
+
 } // namespace
 
 int main(int argc, char** argv)
 {
-  const std::string dir = argc > 1 ? argv[1] : "examples/data";
+  std::string dir = "examples/data";
+  bool syntheticOnly = false;
+  for (int k = 1; k < argc; ++k)
+  {
+    const std::string arg = argv[k];
+    if (arg == "--help" || arg == "-h")
+    {
+      std::printf("usage: bench_areal_average [DATA_DIR] [--synthetic]\n"
+                  "  DATA_DIR     the examples' data (default examples/data)\n"
+                  "  --synthetic  only the synthetic table (100k gauges, 1%% toggling)\n");
+      return 0;
+    }
+    if (arg == "--synthetic")
+      syntheticOnly = true;
+    else
+      dir = arg;
+  }
+  if (!syntheticOnly)
+    RunColorado(dir);
+  RunSynthetic();
+  return 0;
+}
+
+namespace
+{
+
+void RunColorado(const std::string& dir)
+{
   const Colorado data = ReadColorado(dir);
   std::printf("Colorado: %zu gauges, %zu months, outline of %zu vertices\n\n",
     data.Gauges.size(),
@@ -162,8 +193,11 @@ int main(int argc, char** argv)
         checksum);
     }
   }
+}
 
-  // Synthetic: N gauges in a 10 x 10 degree box, a catchment inside it, 1% toggling per step.
+// Synthetic: N gauges in a 10 x 10 degree box, a catchment inside it, 1% toggling per step.
+void RunSynthetic()
+{
   std::printf("\n| gauges | steps | toggling per step | update s/step | rebuild s/step | ratio |"
               " tiles re-derived per update |\n");
   std::printf("|--------|-------|-------------------|---------------|----------------|-------|"
@@ -215,5 +249,6 @@ int main(int argc, char** argv)
     if (std::abs(checksum[0] - checksum[1]) > 1e-9 * std::abs(checksum[1]))
       std::printf("   (checksums differ: %.12f vs %.12f)\n", checksum[0], checksum[1]);
   }
-  return 0;
 }
+
+} // namespace
