@@ -307,25 +307,18 @@ void AppendTile(TileSet& tiles,
   const std::vector<Point2>& polygon,
   std::int32_t sides)
 {
-  tiles.PointIds.push_back(point);
   tiles.Vertices.insert(tiles.Vertices.end(), polygon.begin(), polygon.end());
-  tiles.Offsets.push_back(std::int64_t(tiles.Vertices.size()));
-  tiles.Areas.push_back(CompensatedPolygonArea(polygon.data(), polygon.size()));
-  tiles.NeighborCounts.push_back(sides);
+  AppendTileColumns(tiles,
+    point,
+    std::int64_t(tiles.Vertices.size()),
+    CompensatedPolygonArea(polygon.data(), polygon.size()),
+    sides);
 }
 
 void AppendTileSet(TileSet& tiles, const TileSet& from)
 {
-  const std::int64_t base = std::int64_t(tiles.Vertices.size());
-  tiles.PointIds.insert(tiles.PointIds.end(), from.PointIds.begin(), from.PointIds.end());
-  for (std::size_t k = 1; k < from.Offsets.size(); ++k)
-  {
-    tiles.Offsets.push_back(base + from.Offsets[k]);
-  }
+  AppendTileColumns(tiles, from, std::int64_t(tiles.Vertices.size()));
   tiles.Vertices.insert(tiles.Vertices.end(), from.Vertices.begin(), from.Vertices.end());
-  tiles.Areas.insert(tiles.Areas.end(), from.Areas.begin(), from.Areas.end());
-  tiles.NeighborCounts.insert(
-    tiles.NeighborCounts.end(), from.NeighborCounts.begin(), from.NeighborCounts.end());
 }
 
 } // namespace tiles_detail

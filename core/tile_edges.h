@@ -77,6 +77,35 @@ void AppendTile(TileSet& tiles,
 /// Appends every tile of from to tiles (joining chunks computed apart, in order).
 void AppendTileSet(TileSet& tiles, const TileSet& from);
 
+/// The per-tile columns TileSet and TileMesh share: one tile's (its offset is where its vertices
+/// end, vertexEnd) ...
+template<class Tiles>
+void AppendTileColumns(Tiles& tiles,
+  std::int32_t point,
+  std::int64_t vertexEnd,
+  double area,
+  std::int32_t sides)
+{
+  tiles.PointIds.push_back(point);
+  tiles.Offsets.push_back(vertexEnd);
+  tiles.Areas.push_back(area);
+  tiles.NeighborCounts.push_back(sides);
+}
+
+/// ... and every tile's of from, its offsets shifted by base (the vertices tiles had).
+template<class Tiles>
+void AppendTileColumns(Tiles& tiles, const Tiles& from, std::int64_t base)
+{
+  tiles.PointIds.insert(tiles.PointIds.end(), from.PointIds.begin(), from.PointIds.end());
+  for (std::size_t k = 1; k < from.Offsets.size(); ++k)
+  {
+    tiles.Offsets.push_back(base + from.Offsets[k]);
+  }
+  tiles.Areas.insert(tiles.Areas.end(), from.Areas.begin(), from.Areas.end());
+  tiles.NeighborCounts.insert(
+    tiles.NeighborCounts.end(), from.NeighborCounts.begin(), from.NeighborCounts.end());
+}
+
 /// Sorts a triangle's three (distinct) ids ascending with a rotation and at most one swap: the
 /// canonical order its centre is computed in, by the full and the local derivations alike, so
 /// that both give the same bits.

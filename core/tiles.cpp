@@ -623,24 +623,17 @@ TileMesh MeshOfSeparateTiles(TileSet tiles)
 
 namespace
 {
-void ReserveTiles(TileSet& tiles, std::size_t count)
+// Room for count tiles of a TileSet or a TileMesh (perVertex: its Vertices or VertexIds), and
+// the leading 0 offset.
+template<class Tiles, class PerVertex>
+void ReserveTiles(Tiles& tiles, PerVertex& perVertex, std::size_t count)
 {
   tiles.PointIds.reserve(count);
   tiles.Offsets.reserve(count + 1);
   tiles.Areas.reserve(count);
   tiles.NeighborCounts.reserve(count);
-  tiles.Vertices.reserve(6 * count + 16);
+  perVertex.reserve(6 * count + 16);
   tiles.Offsets.push_back(0);
-}
-
-void ReserveMesh(TileMesh& mesh, std::size_t count)
-{
-  mesh.PointIds.reserve(count);
-  mesh.Offsets.reserve(count + 1);
-  mesh.Areas.reserve(count);
-  mesh.NeighborCounts.reserve(count);
-  mesh.VertexIds.reserve(6 * count + 16);
-  mesh.Offsets.push_back(0);
 }
 
 // Appends a later chunk's tiles to mesh: its crossings (the ids at extraSlots, counted from 0)
@@ -652,11 +645,7 @@ void AppendMeshTiles(TileMesh& mesh,
 {
   const std::int64_t base = std::int64_t(mesh.VertexIds.size());
   const std::int32_t vertexBase = std::int32_t(mesh.Vertices.size());
-  mesh.PointIds.insert(mesh.PointIds.end(), from.PointIds.begin(), from.PointIds.end());
-  for (std::size_t k = 1; k < from.Offsets.size(); ++k)
-  {
-    mesh.Offsets.push_back(base + from.Offsets[k]);
-  }
+  AppendTileColumns(mesh, from, base);
   mesh.VertexIds.insert(mesh.VertexIds.end(), from.VertexIds.begin(), from.VertexIds.end());
   for (const std::int64_t slot : extraSlots)
   {
@@ -664,9 +653,6 @@ void AppendMeshTiles(TileMesh& mesh,
     slots.push_back(base + slot);
   }
   mesh.Vertices.insert(mesh.Vertices.end(), from.Vertices.begin(), from.Vertices.end());
-  mesh.Areas.insert(mesh.Areas.end(), from.Areas.begin(), from.Areas.end());
-  mesh.NeighborCounts.insert(
-    mesh.NeighborCounts.end(), from.NeighborCounts.begin(), from.NeighborCounts.end());
 }
 
 // Both tiles of a clipped edge compute its crossing with the window boundary from the same point
@@ -760,11 +746,11 @@ void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* g
       ContiguityGraph* chunkGraph = !graph ? nullptr : k == 0 ? graph : &graphParts[k - 1];
       if (chunkTiles)
       {
-        ReserveTiles(*chunkTiles, size);
+        ReserveTiles(*chunkTiles, chunkTiles->Vertices, size);
       }
       if (chunkMesh)
       {
-        ReserveMesh(chunkMesh->Tiles, size);
+        ReserveTiles(chunkMesh->Tiles, chunkMesh->Tiles.VertexIds, size);
       }
       if (chunkGraph)
       {
@@ -923,10 +909,11 @@ void TessellationDual::AppendMeshTileOf(std::int32_t v, RingScratch& scratch, Me
       tiles.VertexIds.push_back(this->MeshVertexOf(p, scratch, mesh));
     }
   }
-  tiles.PointIds.push_back(v);
-  tiles.Offsets.push_back(std::int64_t(tiles.VertexIds.size()));
-  tiles.Areas.push_back(CompensatedPolygonArea(polygon.data(), polygon.size()));
-  tiles.NeighborCounts.push_back(sides);
+  AppendTileColumns(tiles,
+    v,
+    std::int64_t(tiles.VertexIds.size()),
+    CompensatedPolygonArea(polygon.data(), polygon.size()),
+    sides);
 }
 
 // The vertex id of a clipped tile's polygon vertex p (about to be appended): a face centre inside

@@ -17,6 +17,7 @@
 #include <map>
 #include <random>
 #include <set>
+#include <string>
 #include <vector>
 
 using namespace tessera;
@@ -653,37 +654,50 @@ TEST(Tiles, FastDelaunayFacesEqualTheDualsFaces)
   }
 }
 
-// TilesAndContiguities walks each ring once for both results, sharing one chunk's scratch
-// buffers: it must give exactly what the two separate passes give, for uniform points, lattice
-// patches (degenerate faces, half-neighbours), an oblique window that clips many tiles, removals,
-// and collinear points. (Whether the results themselves are right is what the exact tests above
-// check: all three share Derive.)
-TEST(Tiles, TilesAndContiguitiesEqualTheSeparatePasses)
+// Inputs for the derivation tests, by name: uniform points, a lattice (degenerate faces,
+// half-neighbours), uniform points with a lattice patch and the first 100 ids removed, collinear
+// points, and the extra sets given. Each is tessellated in a rectangle and in an oblique triangle
+// that clips many tiles, and handed to check(tessellation, name).
+template<class Check>
+void ForEachDerivationInput(std::vector<std::pair<std::string, std::vector<Point2>>> extra,
+  const Check& check)
 {
-  const Window oblique({ { 1.0, 1.0, -1.6 }, { -1.0, 0.2, -0.3 }, { 0.1, -1.0, -0.2 } });
-  std::vector<std::vector<Point2>> sets;
-  sets.push_back(UniformPoints(3000, 5));
-  sets.push_back(tessera_test::SquareLattice(30, 30.0));
+  std::vector<std::pair<std::string, std::vector<Point2>>> sets;
+  sets.emplace_back("uniform", UniformPoints(3000, 5));
+  sets.emplace_back("lattice", tessera_test::SquareLattice(30, 30.0));
   std::vector<Point2> mixed = UniformPoints(800, 6);
   const std::vector<Point2> patch = tessera_test::SquareLattice(6, 50.0);
   mixed.insert(mixed.end(), patch.begin(), patch.end());
-  sets.push_back(mixed);
-  sets.push_back({ { 0.1, 0.1 }, { 0.3, 0.3 }, { 0.5, 0.5 }, { 0.9, 0.9 } });
-  for (std::size_t set = 0; set < sets.size(); ++set)
+  sets.emplace_back("mixed, 100 removed", mixed);
+  sets.emplace_back(
+    "collinear", std::vector<Point2>{ { 0.1, 0.1 }, { 0.3, 0.3 }, { 0.5, 0.5 }, { 0.9, 0.9 } });
+  sets.insert(sets.end(), extra.begin(), extra.end());
+  const Window oblique({ { 1.0, 1.0, -1.6 }, { -1.0, 0.2, -0.3 }, { 0.1, -1.0, -0.2 } });
+  for (const auto& [name, points] : sets)
   {
     for (const Window& window : { Window::Rectangle(-0.1, 1.1, -0.1, 1.1), oblique })
     {
-      DirichletTessellation t(window, sets[set]);
-      if (set == 2)
+      DirichletTessellation t(window, points);
+      for (std::int32_t id = 0; name == "mixed, 100 removed" && id < 100; ++id)
       {
-        for (std::int32_t id = 0; id < 100; ++id)
+        if (t.Status(id) == PointStatus::Accepted)
         {
-          if (t.Status(id) == PointStatus::Accepted)
-          {
-            t.Remove(id);
-          }
+          t.Remove(id);
         }
       }
+      check(t, name);
+    }
+  }
+}
+
+// TilesAndContiguities walks each ring once for both results, sharing one chunk's scratch
+// buffers: it must give exactly what the two separate passes give. (Whether the results
+// themselves are right is what the exact tests above check: all three share Derive.)
+TEST(Tiles, TilesAndContiguitiesEqualTheSeparatePasses)
+{
+  ForEachDerivationInput({},
+    [](const DirichletTessellation& t, const std::string& set)
+    {
       const TessellationDual dual(t);
       const TilesAndGraph both = dual.TilesAndContiguities();
       const TileSet tiles = dual.Tiles();
@@ -696,8 +710,7 @@ TEST(Tiles, TilesAndContiguitiesEqualTheSeparatePasses)
       EXPECT_EQ(both.Graph.Pairs, graph.Pairs) << "set " << set;
       EXPECT_EQ(both.Graph.Kinds, graph.Kinds) << "set " << set;
       EXPECT_GT(graph.Pairs.size(), 0u) << "set " << set;
-    }
-  }
+    });
 }
 
 // The mesh form of the tiles (what vtkDirichletTessellation writes): tile for tile the same
@@ -707,33 +720,11 @@ TEST(Tiles, TilesAndContiguitiesEqualTheSeparatePasses)
 // it runs along the window boundary. 12,000 points make two chunks, whose crossings are merged.
 TEST(Tiles, TileMeshExpandsToTheTilesAndIsConforming)
 {
-  const Window oblique({ { 1.0, 1.0, -1.6 }, { -1.0, 0.2, -0.3 }, { 0.1, -1.0, -0.2 } });
-  std::vector<std::vector<Point2>> sets;
-  sets.push_back(UniformPoints(3000, 5));
-  sets.push_back(UniformPoints(12000, 7));
-  sets.push_back(tessera_test::SquareLattice(30, 30.0));
-  std::vector<Point2> mixed = UniformPoints(800, 6);
-  const std::vector<Point2> patch = tessera_test::SquareLattice(6, 50.0);
-  mixed.insert(mixed.end(), patch.begin(), patch.end());
-  sets.push_back(mixed);
-  sets.push_back({ { 0.1, 0.1 }, { 0.3, 0.3 }, { 0.5, 0.5 }, { 0.9, 0.9 } });
-  sets.push_back({ { 0.4, 0.6 } });
-  sets.push_back({});
-  for (std::size_t set = 0; set < sets.size(); ++set)
-  {
-    for (const Window& window : { Window::Rectangle(-0.1, 1.1, -0.1, 1.1), oblique })
+  ForEachDerivationInput({ { "uniform, two chunks", UniformPoints(12000, 7) },
+                           { "one point", { { 0.4, 0.6 } } },
+                           { "no point", {} } },
+    [](const DirichletTessellation& t, const std::string& set)
     {
-      DirichletTessellation t(window, sets[set]);
-      if (set == 3)
-      {
-        for (std::int32_t id = 0; id < 100; ++id)
-        {
-          if (t.Status(id) == PointStatus::Accepted)
-          {
-            t.Remove(id);
-          }
-        }
-      }
       TessellationDual dual(t);
       const TilesAndGraph both = dual.TilesAndContiguities();
       const TileMeshAndGraph mesh = dual.TileMeshAndContiguities();
@@ -795,10 +786,9 @@ TEST(Tiles, TileMeshExpandsToTheTilesAndIsConforming)
             << "set " << set << ": side " << a << "-" << b << " has no twin";
         }
       }
-      if (!sets[set].empty())
+      if (t.AcceptedCount() > 0)
       {
         EXPECT_GE(boundarySides, t.GetWindow().EffectiveConstraints().size()) << "set " << set;
       }
-    }
-  }
+    });
 }
