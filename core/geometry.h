@@ -64,9 +64,12 @@ inline void DropRepeatedVertices(std::vector<Point2>& polygon)
   }
 }
 
-/// The same, dropping each removed vertex's tag too (tags[k] goes with polygon[k]).
+/// The same, dropping each removed vertex's tag too (tags[k] goes with polygon[k]). With merged,
+/// also lists (kept tag, dropped tag) wherever the two differ: things at one point.
 template<class Tag>
-void DropRepeatedVertices(std::vector<Point2>& polygon, std::vector<Tag>& tags)
+void DropRepeatedVertices(std::vector<Point2>& polygon,
+  std::vector<Tag>& tags,
+  std::vector<std::pair<Tag, Tag>>* merged = nullptr)
 {
   std::size_t kept = 0;
   for (std::size_t k = 0; k < polygon.size(); ++k)
@@ -77,9 +80,17 @@ void DropRepeatedVertices(std::vector<Point2>& polygon, std::vector<Tag>& tags)
       tags[kept] = tags[k];
       ++kept;
     }
+    else if (merged && tags[k] != tags[kept - 1])
+    {
+      merged->emplace_back(tags[kept - 1], tags[k]);
+    }
   }
   while (kept > 1 && polygon[0] == polygon[kept - 1])
   {
+    if (merged && tags[0] != tags[kept - 1])
+    {
+      merged->emplace_back(tags[0], tags[kept - 1]);
+    }
     --kept;
   }
   polygon.resize(kept);

@@ -146,13 +146,15 @@ inline void CollectRing(const Tess& tess, std::int32_t vertexEdge, std::vector<s
 /// each ring edge is one side: exactly what RingTileEdges and AssemblePolygon give (same start, at
 /// the edge to the smallest neighbour id; same dropping of rounded repeats), for a fraction of the
 /// cost. Returns false, polygon unspecified, for any other point. With labels, also gives the
-/// face of each polygon vertex.
+/// face of each polygon vertex, and appends to sameCentre the (kept, dropped) faces of each
+/// dropped repeat: distinct faces whose rounded centres coincide.
 template<class Faces>
 bool InteriorTile(const Tess& tess,
   const Faces& faces,
   const std::vector<std::int32_t>& ring,
   std::vector<Point2>& polygon,
-  std::vector<std::int32_t>* labels = nullptr)
+  std::vector<std::int32_t>* labels = nullptr,
+  std::vector<std::pair<std::int32_t, std::int32_t>>* sameCentre = nullptr)
 {
   const auto& org = tess.Origin();
   const std::size_t n = ring.size();
@@ -193,7 +195,7 @@ bool InteriorTile(const Tess& tess,
     return true;
   }
   std::rotate(labels->begin(), labels->begin() + std::ptrdiff_t(first), labels->end());
-  DropRepeatedVertices(polygon, *labels);
+  DropRepeatedVertices(polygon, *labels, sameCentre);
   return true;
 }
 

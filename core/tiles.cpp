@@ -508,6 +508,7 @@ struct TessellationDual::RingScratch
   std::vector<TileEdge> Edges;
   std::vector<Point2> Polygon;
   std::vector<std::int32_t> Labels; ///< an interior tile's faces (mesh)
+  std::vector<std::pair<std::int32_t, std::int32_t>> SameCentre; ///< faces at one rounded point
   std::vector<std::pair<std::int32_t, std::uint8_t>> Around;
   TileEdge Edge;
 };
@@ -520,7 +521,12 @@ struct TessellationDual::MeshPart
 {
   TileMesh Tiles;
   std::int32_t CornerBase = 0; ///< vertex id of window corner 0
+  /// The window corners by coordinates (x, y, index), for a binary search.
+  std::vector<std::tuple<double, double, std::int32_t>> Corners;
   std::vector<std::int64_t> ExtraSlots;
+  /// Pairs of face vertices a tile met at one point (distinct faces whose rounded centres
+  /// coincide): the join makes each such group one vertex, so that every tile names it alike.
+  std::vector<std::pair<std::int32_t, std::int32_t>> SameVertex;
 };
 
 TileSet TessellationDual::Tiles() const
@@ -706,6 +712,58 @@ void MergeEqualCrossings(TileMesh& mesh,
   }
 }
 
+// Makes each group of vertices joined by the pairs one vertex (its smallest id), drops the others
+// and renumbers: distinct faces whose rounded centres coincide, which a tile lists once (dropping
+// the repeat) and its neighbours each by their own face. Rare; one pass over the ids when any.
+void MergeSameVertices(TileMesh& mesh,
+  const std::vector<std::pair<std::int32_t, std::int32_t>>& pairs)
+{
+  if (pairs.empty())
+  {
+    return;
+  }
+  std::vector<std::int32_t> root(mesh.Vertices.size());
+  for (std::size_t v = 0; v < root.size(); ++v)
+  {
+    root[v] = std::int32_t(v);
+  }
+  const auto find = [&](std::int32_t v)
+  {
+    while (root[std::size_t(v)] != v)
+    {
+      root[std::size_t(v)] = root[std::size_t(root[std::size_t(v)])];
+      v = root[std::size_t(v)];
+    }
+    return v;
+  };
+  for (const auto& [a, b] : pairs)
+  {
+    const std::int32_t ra = find(a), rb = find(b);
+    root[std::size_t(std::max(ra, rb))] = std::min(ra, rb);
+  }
+  // New ids in the old order of the kept vertices (each group keeps its smallest id).
+  std::vector<std::int32_t> renumbered(root.size());
+  std::int32_t kept = 0;
+  for (std::size_t v = 0; v < root.size(); ++v)
+  {
+    const std::int32_t r = find(std::int32_t(v));
+    if (r == std::int32_t(v))
+    {
+      mesh.Vertices[std::size_t(kept)] = mesh.Vertices[v];
+      renumbered[v] = kept++;
+    }
+    else
+    {
+      renumbered[v] = renumbered[std::size_t(r)];
+    }
+  }
+  mesh.Vertices.resize(std::size_t(kept));
+  for (std::int32_t& id : mesh.VertexIds)
+  {
+    id = renumbered[std::size_t(id)];
+  }
+}
+
 void ReserveGraph(ContiguityGraph& graph, std::size_t count)
 {
   graph.Pairs.reserve(6 * count);
@@ -731,10 +789,17 @@ void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* g
   {
     // Chunk 0 writes into the result (which holds the faces' and corners' vertices so far).
     std::swap(meshParts[0].Tiles, *mesh);
+    const std::vector<Point2>& corners = this->Tess.GetWindow().Vertices();
+    std::vector<std::tuple<double, double, std::int32_t>> sortedCorners;
+    for (std::size_t k = 0; k < corners.size(); ++k)
+    {
+      sortedCorners.emplace_back(corners[k].x, corners[k].y, std::int32_t(k));
+    }
+    std::sort(sortedCorners.begin(), sortedCorners.end());
     for (MeshPart& part : meshParts)
     {
-      part.CornerBase =
-        std::int32_t(meshParts[0].Tiles.Vertices.size() - this->Tess.GetWindow().Vertices().size());
+      part.CornerBase = std::int32_t(meshParts[0].Tiles.Vertices.size() - corners.size());
+      part.Corners = sortedCorners;
     }
   }
   RunChunks(chunks,
@@ -783,6 +848,12 @@ void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* g
       MergeEqualCrossings(*mesh,
         meshParts[0].CornerBase + std::int32_t(this->Tess.GetWindow().Vertices().size()),
         meshParts[0].ExtraSlots);
+      std::vector<std::pair<std::int32_t, std::int32_t>> same;
+      for (const MeshPart& part : meshParts)
+      {
+        same.insert(same.end(), part.SameVertex.begin(), part.SameVertex.end());
+      }
+      MergeSameVertices(*mesh, same);
     }
   };
   const auto joinGraph = [&]()
@@ -885,11 +956,17 @@ void TessellationDual::AppendMeshTileOf(std::int32_t v, RingScratch& scratch, Me
   std::vector<Point2>& polygon = scratch.Polygon;
   std::int32_t sides = 0;
   const bool planar = this->Tess.IsTwoDimensional();
-  if (planar && InteriorTile(this->Tess, *this, scratch.Ring, polygon, &scratch.Labels))
+  scratch.SameCentre.clear();
+  if (planar &&
+    InteriorTile(this->Tess, *this, scratch.Ring, polygon, &scratch.Labels, &scratch.SameCentre))
   {
     for (const std::int32_t label : scratch.Labels)
     {
       tiles.VertexIds.push_back(this->Data[label].Vertex);
+    }
+    for (const auto& [kept, dropped] : scratch.SameCentre)
+    {
+      mesh.SameVertex.emplace_back(this->Data[kept].Vertex, this->Data[dropped].Vertex);
     }
     sides = std::int32_t(scratch.Ring.size());
   }
@@ -918,28 +995,40 @@ void TessellationDual::AppendMeshTileOf(std::int32_t v, RingScratch& scratch, Me
 
 // The vertex id of a clipped tile's polygon vertex p (about to be appended): a face centre inside
 // the window that one of its edges ends at, a window corner, or else a crossing of the window
-// boundary, a new vertex. Matched by exact coordinates: AssemblePolygon copies them.
+// boundary, a new vertex. Matched by exact coordinates: AssemblePolygon copies them (and keeps one
+// of several ends at one point: the others are recorded as the same vertex).
 std::int32_t TessellationDual::MeshVertexOf(const Point2& p,
   const RingScratch& scratch,
   MeshPart& mesh) const
 {
+  std::int32_t face = -1;
   for (const TileEdge& edge : scratch.Edges)
   {
     for (const EdgeEnd* end : { &edge.Lo, &edge.Hi })
     {
       if (end->Constraint < 0 && end->Where >= 0 && end->P == p && this->Data[end->Where].Inside())
       {
-        return this->Data[end->Where].Vertex;
+        const std::int32_t vertex = this->Data[end->Where].Vertex;
+        if (face < 0)
+        {
+          face = vertex;
+        }
+        else if (vertex != face)
+        {
+          mesh.SameVertex.emplace_back(face, vertex);
+        }
       }
     }
   }
-  const std::vector<Point2>& corners = this->Tess.GetWindow().Vertices();
-  for (std::size_t k = 0; k < corners.size(); ++k)
+  if (face >= 0)
   {
-    if (corners[k] == p)
-    {
-      return mesh.CornerBase + std::int32_t(k);
-    }
+    return face;
+  }
+  const auto corner = std::lower_bound(
+    mesh.Corners.begin(), mesh.Corners.end(), std::make_tuple(p.x, p.y, std::int32_t(-1)));
+  if (corner != mesh.Corners.end() && std::get<0>(*corner) == p.x && std::get<1>(*corner) == p.y)
+  {
+    return mesh.CornerBase + std::get<2>(*corner);
   }
   TileMesh& tiles = mesh.Tiles;
   mesh.ExtraSlots.push_back(std::int64_t(tiles.VertexIds.size()));

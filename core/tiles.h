@@ -73,8 +73,9 @@ struct TilesAndGraph
 /// The tiles of a TileSet as a mesh whose tiles share vertices: tile k's polygon is
 /// Vertices[VertexIds[Offsets[k]]], ... and has exactly the coordinates of the TileSet's tile k.
 /// Where tiles meet at a face centre inside the window they use one vertex, and likewise at a
-/// window corner; a point where a tile edge crosses the window boundary is a vertex of its own in
-/// each tile that has it (the two tiles' copies have the same coordinates).
+/// window corner and where a tile edge crosses the window boundary (both tiles compute that point
+/// alike). Distinct faces whose rounded centres coincide, which a tile lists once, are one vertex
+/// too. So tiles that share a side name it by the same two vertex ids: a conforming mesh.
 struct TileMesh
 {
   std::vector<std::int32_t> PointIds;
@@ -127,7 +128,8 @@ public:
   /// calling the two).
   TilesAndGraph TilesAndContiguities() const;
   /// The same tiles as a TileMesh, and the contiguities, in one pass (what a caller that writes
-  /// a mesh needs: a third of the vertices to store). Not const: it numbers the face vertices.
+  /// a mesh needs: a third of the vertices to store). Not const: it numbers the face vertices,
+  /// so it must not run while another thread uses this object.
   TileMeshAndGraph TileMeshAndContiguities();
   /// With splitDegenerate, a degenerate face becomes a fan of triangles from its smallest id.
   DelaunayFaces Faces(bool splitDegenerate) const;

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <random>
 #include <set>
@@ -654,38 +655,43 @@ TEST(Tiles, FastDelaunayFacesEqualTheDualsFaces)
   }
 }
 
-// Inputs for the derivation tests, by name: uniform points, a lattice (degenerate faces,
-// half-neighbours), uniform points with a lattice patch and the first 100 ids removed, collinear
-// points, and the extra sets given. Each is tessellated in a rectangle and in an oblique triangle
-// that clips many tiles, and handed to check(tessellation, name).
-template<class Check>
-void ForEachDerivationInput(std::vector<std::pair<std::string, std::vector<Point2>>> extra,
-  const Check& check)
+// Inputs for the derivation tests: uniform points, a lattice (degenerate faces, half-neighbours),
+// uniform points with a lattice patch and the first 100 ids removed, collinear points, and the
+// extra ones given. Each is tessellated in a rectangle and in an oblique triangle that clips many
+// tiles, points removed, and handed to check(tessellation, name).
+struct DerivationInput
 {
-  std::vector<std::pair<std::string, std::vector<Point2>>> sets;
-  sets.emplace_back("uniform", UniformPoints(3000, 5));
-  sets.emplace_back("lattice", tessera_test::SquareLattice(30, 30.0));
+  std::string Name;
+  std::vector<Point2> Points;
+  std::int32_t RemoveBelow = 0; ///< ids below this ...
+  std::int32_t RemoveEvery = 1; ///< ... and multiples of this are removed after the build
+};
+
+template<class Check>
+void ForEachDerivationInput(std::vector<DerivationInput> inputs, const Check& check)
+{
   std::vector<Point2> mixed = UniformPoints(800, 6);
   const std::vector<Point2> patch = tessera_test::SquareLattice(6, 50.0);
   mixed.insert(mixed.end(), patch.begin(), patch.end());
-  sets.emplace_back("mixed, 100 removed", mixed);
-  sets.emplace_back(
-    "collinear", std::vector<Point2>{ { 0.1, 0.1 }, { 0.3, 0.3 }, { 0.5, 0.5 }, { 0.9, 0.9 } });
-  sets.insert(sets.end(), extra.begin(), extra.end());
+  inputs.insert(inputs.begin(),
+    { { "uniform", UniformPoints(3000, 5) },
+      { "lattice", tessera_test::SquareLattice(30, 30.0) },
+      { "mixed, 100 removed", mixed, 100 },
+      { "collinear", { { 0.1, 0.1 }, { 0.3, 0.3 }, { 0.5, 0.5 }, { 0.9, 0.9 } } } });
   const Window oblique({ { 1.0, 1.0, -1.6 }, { -1.0, 0.2, -0.3 }, { 0.1, -1.0, -0.2 } });
-  for (const auto& [name, points] : sets)
+  for (const DerivationInput& input : inputs)
   {
     for (const Window& window : { Window::Rectangle(-0.1, 1.1, -0.1, 1.1), oblique })
     {
-      DirichletTessellation t(window, points);
-      for (std::int32_t id = 0; name == "mixed, 100 removed" && id < 100; ++id)
+      DirichletTessellation t(window, input.Points);
+      for (std::int32_t id = 0; id < input.RemoveBelow; id += input.RemoveEvery)
       {
         if (t.Status(id) == PointStatus::Accepted)
         {
           t.Remove(id);
         }
       }
-      check(t, name);
+      check(t, input.Name);
     }
   }
 }
@@ -720,7 +726,10 @@ TEST(Tiles, TilesAndContiguitiesEqualTheSeparatePasses)
 // it runs along the window boundary. 12,000 points make two chunks, whose crossings are merged.
 TEST(Tiles, TileMeshExpandsToTheTilesAndIsConforming)
 {
+  // A lattice spaced 1/29 with every other point of a patch removed: distinct faces whose rounded
+  // centres coincide, which one tile lists once and its neighbours each by their own face.
   ForEachDerivationInput({ { "uniform, two chunks", UniformPoints(12000, 7) },
+                           { "checkerboard patch", tessera_test::SquareLattice(31, 29.0), 299, 2 },
                            { "one point", { { 0.4, 0.6 } } },
                            { "no point", {} } },
     [](const DirichletTessellation& t, const std::string& set)
@@ -742,7 +751,8 @@ TEST(Tiles, TileMeshExpandsToTheTilesAndIsConforming)
       {
         const std::int32_t id = mesh.Tiles.VertexIds[v];
         ASSERT_TRUE(id >= 0 && std::size_t(id) < vertices.size()) << "set " << set;
-        ASSERT_TRUE(vertices[id] == tiles.Vertices[v]) << "set " << set << " vertex " << v;
+        ASSERT_EQ(std::memcmp(&vertices[id], &tiles.Vertices[v], sizeof(Point2)), 0)
+          << "set " << set << " vertex " << v;
         ++uses[std::size_t(id)];
       }
       EXPECT_EQ(std::count(uses.begin(), uses.end(), 0), 0) << "set " << set;
