@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <exception>
 #include <system_error>
 #include <thread>
@@ -15,14 +16,30 @@ namespace tessera
 namespace parallel
 {
 
-/// Threads for a pass over `work` items: up to the hardware's (at most 8), with at least
-/// minimumPerThread items each (below that, starting a thread costs more than it saves: small
-/// inputs run serially).
+/// The most threads a pass may use: the environment variable TESSERA_THREADS when it holds a
+/// number from 1 to 64 (read at each call: a few calls per operation), else the hardware's, at
+/// most 8. TESSERA_THREADS=1 runs everything on the calling thread; the tests set it to force
+/// several chunks on any machine.
+inline std::size_t ThreadLimit()
+{
+  if (const char* text = std::getenv("TESSERA_THREADS"))
+  {
+    char* end = nullptr;
+    const long value = std::strtol(text, &end, 10);
+    if (end != text && *end == '\0' && value >= 1 && value <= 64)
+    {
+      return std::size_t(value);
+    }
+  }
+  return std::min(std::size_t(8), std::size_t(std::max(1U, std::thread::hardware_concurrency())));
+}
+
+/// Threads for a pass over `work` items: up to ThreadLimit(), with at least minimumPerThread items
+/// each (below that, starting a thread costs more than it saves: small inputs run serially).
 inline std::size_t ThreadCount(std::int64_t work, std::int64_t minimumPerThread = 25000)
 {
-  const std::size_t hardware = std::max(1U, std::thread::hardware_concurrency());
   const std::size_t useful = std::size_t(std::max<std::int64_t>(1, work / minimumPerThread));
-  return std::min({ hardware, useful, std::size_t(8) });
+  return std::min(ThreadLimit(), useful);
 }
 
 /// The chunks + 1 boundaries of `chunks` contiguous, nearly equal parts of [0, n).

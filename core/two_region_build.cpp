@@ -226,7 +226,7 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
       }
     }
   };
-  if (std::thread::hardware_concurrency() > 1)
+  if (parallel::ThreadLimit() > 1)
   {
     parallel::RunChunks(2, insertSide);
   }

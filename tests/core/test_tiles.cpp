@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <random>
@@ -799,6 +800,81 @@ TEST(Tiles, TileMeshExpandsToTheTilesAndIsConforming)
       if (t.AcceptedCount() > 0)
       {
         EXPECT_GE(boundarySides, t.GetWindow().EffectiveConstraints().size()) << "set " << set;
+      }
+    });
+}
+
+// Sets TESSERA_THREADS (parallel_chunks.h) for its lifetime, then puts back what was there.
+class ThreadLimitOverride
+{
+public:
+  explicit ThreadLimitOverride(int threads)
+  {
+    if (const char* old = std::getenv("TESSERA_THREADS"))
+    {
+      this->Old = old;
+      this->HadOld = true;
+    }
+    setenv("TESSERA_THREADS", std::to_string(threads).c_str(), 1);
+  }
+  ~ThreadLimitOverride()
+  {
+    if (this->HadOld)
+    {
+      setenv("TESSERA_THREADS", this->Old.c_str(), 1);
+    }
+    else
+    {
+      unsetenv("TESSERA_THREADS");
+    }
+  }
+
+private:
+  std::string Old;
+  bool HadOld = false;
+};
+
+// Each derivation runs in chunks joined in order: the results, bit for bit, must not depend on
+// how many threads there are. TESSERA_THREADS forces 1, 2, 3 and 7 chunks on any machine, so the
+// joins (crossings renumbered and merged, coinciding centres merged, graph and tile parts) run
+// whatever the cores.
+TEST(Tiles, DerivedResultsDoNotDependOnTheThreadCount)
+{
+  ForEachDerivationInput(
+    { { "uniform, many chunks", UniformPoints(40000, 11) },
+      { "checkerboard patch", tessera_test::SquareLattice(31, 29.0), 299, 2 } },
+    [](const DirichletTessellation& t, const std::string& set)
+    {
+      const auto derive = [&](int threads)
+      {
+        const ThreadLimitOverride limit(threads);
+        TessellationDual dual(t);
+        return std::make_pair(dual.TileMeshAndContiguities(), dual.TilesAndContiguities());
+      };
+      const auto serial = derive(1);
+      for (const int threads : { 2, 3, 7 })
+      {
+        const auto chunked = derive(threads);
+        const TileMesh& a = serial.first.Tiles;
+        const TileMesh& b = chunked.first.Tiles;
+        EXPECT_EQ(a.PointIds, b.PointIds) << set << ", " << threads << " threads";
+        EXPECT_EQ(a.Offsets, b.Offsets) << set << ", " << threads << " threads";
+        EXPECT_EQ(a.VertexIds, b.VertexIds) << set << ", " << threads << " threads";
+        ASSERT_EQ(a.Vertices.size(), b.Vertices.size()) << set << ", " << threads << " threads";
+        EXPECT_EQ(
+          std::memcmp(a.Vertices.data(), b.Vertices.data(), a.Vertices.size() * sizeof(Point2)), 0)
+          << set << ", " << threads << " threads";
+        EXPECT_EQ(a.Areas, b.Areas) << set << ", " << threads << " threads";
+        EXPECT_EQ(serial.first.Graph.Pairs, chunked.first.Graph.Pairs) << set << ", " << threads;
+        EXPECT_EQ(serial.first.Graph.Kinds, chunked.first.Graph.Kinds) << set << ", " << threads;
+        const TileSet& c = serial.second.Tiles;
+        const TileSet& d = chunked.second.Tiles;
+        EXPECT_EQ(c.Offsets, d.Offsets) << set << ", " << threads << " threads";
+        ASSERT_EQ(c.Vertices.size(), d.Vertices.size()) << set << ", " << threads << " threads";
+        EXPECT_EQ(
+          std::memcmp(c.Vertices.data(), d.Vertices.data(), c.Vertices.size() * sizeof(Point2)), 0)
+          << set << ", " << threads << " threads";
+        EXPECT_EQ(serial.second.Graph.Pairs, chunked.second.Graph.Pairs) << set << ", " << threads;
       }
     });
 }
