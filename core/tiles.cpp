@@ -81,10 +81,18 @@ TessellationDual::TessellationDual(const DirichletTessellation& tessellation)
   this->ComputeCentres();
 }
 
-// First appearance of each vertex in the half-edge arrays (Order, with the half-edge in
-// OrderEdge); a bit per point keeps the "seen" test in cache. Chunks of the arrays in parallel,
-// each with its own bits; a chunk's first appearances then count only if no earlier chunk saw the
-// vertex, so the order is the serial one.
+// Each vertex where it first appears in the half-edge arrays read from the end (Order, with the
+// half-edge in OrderEdge); a bit per point keeps the "seen" test in cache.
+//
+// Why from the end: a batch build's arrays start with the triangles of its serial sample, whose
+// slots later insertions keep reusing all over the window, and go on with the triangles the
+// regions made in their (Hilbert) insertion order. Read from the start, the first tenth of the
+// points came out scattered and took twice as long to derive as any later tenth; read from the
+// end, every point comes out where its last-made triangles are, in insertion order: tiles and
+// contiguities at 1M took 153-202 ms instead of 269-275 ms on two threads.
+//
+// Chunks of the arrays in parallel, each with its own bits; a chunk's first appearances then
+// count only if no earlier chunk saw the vertex, so the order is the serial one.
 void TessellationDual::OrderPoints()
 {
   const HalfEdgeArray& org = this->Tess.Origin();
@@ -102,8 +110,9 @@ void TessellationDual::OrderPoints()
       std::vector<std::int32_t>& found = first[k];
       bits.assign(words, 0);
       found.reserve(std::size_t(bounds[k + 1] - bounds[k]) / 5);
-      for (std::int32_t e = bounds[k]; e < bounds[k + 1]; ++e)
+      for (std::int32_t r = bounds[k]; r < bounds[k + 1]; ++r)
       {
+        const std::int32_t e = edges - 1 - r;
         const std::int32_t v = org[std::size_t(e)];
         if (v >= 0 && !(bits[std::size_t(v) >> 6] >> (v & 63) & 1U))
         {

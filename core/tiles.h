@@ -184,8 +184,9 @@ private:
 
   const DirichletTessellation& Tess;
   std::vector<std::int32_t> LinePosition; ///< collinear case: per point id, index along the line
-  /// Accepted points in traversal order: first appearance in the half-edge arrays, which follow
-  /// the spatial insertion order, so walking rings in this order stays in cache.
+  /// Accepted points in traversal order: first appearance in the half-edge arrays read from the
+  /// end (OrderPoints), which follows the spatial insertion order, so walking rings in this order
+  /// stays in cache.
   std::vector<std::int32_t> Order;
   std::vector<std::int32_t> OrderEdge; ///< two-dimensional case: a half-edge leaving Order[k]
   /// Per triangle, together so that a ring walk touches one cache line per triangle: its face
