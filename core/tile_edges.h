@@ -242,10 +242,31 @@ void RingTileEdges(const Tess& tess,
   }
 }
 
-/// Appends v's tile, ring being its half-edges (CollectRing): an interior tile straight from
-/// the ring of centres (InteriorTile, the same bits), any other from its clipped edges. The
-/// full derivation and the local one (local_tiles.cpp) both make their tiles here; edges and
-/// polygon are scratch.
+/// v's tile polygon, ring being its half-edges (CollectRing): an interior tile straight from the
+/// ring of centres (InteriorTile, the same bits; labels and sameCentre as there), any other from
+/// its clipped edges, which stay in edges. interior says which; returns the number of sides. The
+/// full derivation and the local one (local_tiles.cpp) both make their tiles here.
+template<class Faces>
+std::int32_t RingTilePolygon(const Tess& tess,
+  const Faces& faces,
+  std::int32_t v,
+  const std::vector<std::int32_t>& ring,
+  std::vector<TileEdge>& edges,
+  std::vector<Point2>& polygon,
+  bool& interior,
+  std::vector<std::int32_t>* labels = nullptr,
+  std::vector<std::pair<std::int32_t, std::int32_t>>* sameCentre = nullptr)
+{
+  interior = InteriorTile(tess, faces, ring, polygon, labels, sameCentre);
+  if (interior)
+  {
+    return std::int32_t(ring.size());
+  }
+  RingTileEdges(tess, faces, v, ring, edges);
+  return AssemblePolygon(tess, edges, polygon);
+}
+
+/// Appends v's tile (RingTilePolygon); edges and polygon are scratch.
 template<class Faces>
 void AppendRingTile(const Tess& tess,
   const Faces& faces,
@@ -255,13 +276,8 @@ void AppendRingTile(const Tess& tess,
   std::vector<Point2>& polygon,
   TileSet& tiles)
 {
-  if (InteriorTile(tess, faces, ring, polygon))
-  {
-    AppendTile(tiles, v, polygon, std::int32_t(ring.size()));
-    return;
-  }
-  RingTileEdges(tess, faces, v, ring, edges);
-  const std::int32_t sides = AssemblePolygon(tess, edges, polygon);
+  bool interior = false;
+  const std::int32_t sides = RingTilePolygon(tess, faces, v, ring, edges, polygon, interior);
   AppendTile(tiles, v, polygon, sides);
 }
 

@@ -516,6 +516,7 @@ struct TessellationDual::RingScratch
   std::vector<std::int32_t> Ring; ///< the half-edges leaving the point (planar case)
   std::vector<TileEdge> Edges;
   std::vector<Point2> Polygon;
+  bool Interior = false;            ///< the polygon came from the ring of centres
   std::vector<std::int32_t> Labels; ///< an interior tile's faces (mesh)
   std::vector<std::pair<std::int32_t, std::int32_t>> SameCentre; ///< faces at one rounded point
   std::vector<std::pair<std::int32_t, std::uint8_t>> Around;
@@ -943,17 +944,34 @@ void TessellationDual::DeriveOf(std::int32_t begin,
   }
 }
 
-// Point v's tile (scratch.Ring: its ring when planar; a strip between its line neighbours when
-// the points are collinear).
-void TessellationDual::AppendTileOf(std::int32_t v, RingScratch& scratch, TileSet& tiles) const
+// Point v's tile polygon into scratch.Polygon (scratch.Ring: its ring when planar; a strip
+// between its line neighbours when the points are collinear); returns its number of sides. An
+// interior tile sets scratch.Interior, and with labels (the mesh) also scratch.Labels and
+// scratch.SameCentre; any other tile leaves its clipped edges in scratch.Edges.
+std::int32_t TessellationDual::TilePolygonOf(std::int32_t v,
+  RingScratch& scratch,
+  bool withLabels) const
 {
+  scratch.Interior = false;
   if (this->Tess.IsTwoDimensional())
   {
-    AppendRingTile(this->Tess, *this, v, scratch.Ring, scratch.Edges, scratch.Polygon, tiles);
-    return;
+    return RingTilePolygon(this->Tess,
+      *this,
+      v,
+      scratch.Ring,
+      scratch.Edges,
+      scratch.Polygon,
+      scratch.Interior,
+      withLabels ? &scratch.Labels : nullptr,
+      withLabels ? &scratch.SameCentre : nullptr);
   }
   this->CollinearTileEdges(v, scratch.Edges);
-  const std::int32_t sides = AssemblePolygon(this->Tess, scratch.Edges, scratch.Polygon);
+  return AssemblePolygon(this->Tess, scratch.Edges, scratch.Polygon);
+}
+
+void TessellationDual::AppendTileOf(std::int32_t v, RingScratch& scratch, TileSet& tiles) const
+{
+  const std::int32_t sides = this->TilePolygonOf(v, scratch, false);
   AppendTile(tiles, v, scratch.Polygon, sides);
 }
 
@@ -962,12 +980,10 @@ void TessellationDual::AppendTileOf(std::int32_t v, RingScratch& scratch, TileSe
 void TessellationDual::AppendMeshTileOf(std::int32_t v, RingScratch& scratch, MeshPart& mesh) const
 {
   TileMesh& tiles = mesh.Tiles;
-  std::vector<Point2>& polygon = scratch.Polygon;
-  std::int32_t sides = 0;
-  const bool planar = this->Tess.IsTwoDimensional();
+  const std::vector<Point2>& polygon = scratch.Polygon;
   scratch.SameCentre.clear();
-  if (planar &&
-    InteriorTile(this->Tess, *this, scratch.Ring, polygon, &scratch.Labels, &scratch.SameCentre))
+  const std::int32_t sides = this->TilePolygonOf(v, scratch, true);
+  if (scratch.Interior)
   {
     for (const std::int32_t label : scratch.Labels)
     {
@@ -977,19 +993,9 @@ void TessellationDual::AppendMeshTileOf(std::int32_t v, RingScratch& scratch, Me
     {
       mesh.SameVertex.emplace_back(this->Data[kept].Vertex, this->Data[dropped].Vertex);
     }
-    sides = std::int32_t(scratch.Ring.size());
   }
   else
   {
-    if (planar)
-    {
-      RingTileEdges(this->Tess, *this, v, scratch.Ring, scratch.Edges);
-    }
-    else
-    {
-      this->CollinearTileEdges(v, scratch.Edges);
-    }
-    sides = AssemblePolygon(this->Tess, scratch.Edges, polygon);
     for (const Point2& p : polygon)
     {
       tiles.VertexIds.push_back(this->MeshVertexOf(p, scratch, mesh));

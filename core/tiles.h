@@ -171,6 +171,7 @@ private:
     MeshPart* mesh,
     ContiguityGraph* graph) const;
   std::vector<std::pair<std::int32_t, std::int32_t>> HalfNeighbours() const;
+  std::int32_t TilePolygonOf(std::int32_t v, RingScratch& scratch, bool withLabels) const;
   void AppendTileOf(std::int32_t v, RingScratch& scratch, TileSet& tiles) const;
   void AppendMeshTileOf(std::int32_t v, RingScratch& scratch, MeshPart& mesh) const;
   std::int32_t MeshVertexOf(const Point2& p, const RingScratch& scratch, MeshPart& mesh) const;
