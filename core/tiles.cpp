@@ -524,15 +524,16 @@ struct TessellationDual::RingScratch
 };
 
 // A chunk's mesh tiles. Face centres and window corners have their final vertex ids already
-// (NumberFaceVertices). A crossing is appended to Tiles.Vertices as it is met: chunk 0 writes into
-// the result, whose Vertices already hold the faces and corners, so its ids are final too; a later
-// chunk starts from an empty list, and the join adds its base to the ids at ExtraSlots.
+// (NumberFaceVertices, then Derive). A crossing is appended to Tiles.Vertices as it is met: chunk 0
+// writes into the result, whose Vertices already hold the faces and corners, so its ids are final
+// too; a later chunk starts from an empty list, and the join adds its base to the ids at
+// ExtraSlots.
 struct TessellationDual::MeshPart
 {
   TileMesh Tiles;
   std::int32_t CornerBase = 0; ///< vertex id of window corner 0
-  /// The window corners by coordinates (x, y, index), for a binary search.
-  std::vector<std::tuple<double, double, std::int32_t>> Corners;
+  /// The window corners by coordinates (x, y, index), for a binary search; one list for all parts.
+  const std::vector<std::tuple<double, double, std::int32_t>>* Corners = nullptr;
   std::vector<std::int64_t> ExtraSlots;
   /// Pairs of face vertices a tile met at one point (distinct faces whose rounded centres
   /// coincide): the join makes each such group one vertex, so that every tile names it alike.
@@ -563,21 +564,15 @@ TilesAndGraph TessellationDual::TilesAndContiguities() const
 TileMeshAndGraph TessellationDual::TileMeshAndContiguities()
 {
   TileMeshAndGraph both;
-  std::vector<Point2>& vertices = both.Tiles.Vertices;
-  this->NumberFaceVertices(vertices);
-  const std::vector<Point2>& corners = this->Tess.GetWindow().Vertices();
-  if (!this->Order.empty()) // no tiles, no vertices
-  {
-    vertices.insert(vertices.end(), corners.begin(), corners.end());
-  }
+  this->NumberFaceVertices(both.Tiles.Vertices);
   this->Derive(nullptr, &both.Tiles, &both.Graph);
   return both;
 }
 
 // Numbers the representatives whose centre is inside the window in the order of the triangle
 // arrays (Vertex), and lists their centres in that order: a count per chunk of triangles, then
-// each chunk numbers and copies its own. Returns the number of face vertices.
-std::int32_t TessellationDual::NumberFaceVertices(std::vector<Point2>& vertices)
+// each chunk numbers and copies its own.
+void TessellationDual::NumberFaceVertices(std::vector<Point2>& vertices)
 {
   const std::int32_t triangles = std::int32_t(this->Data.size());
   const std::vector<std::int32_t> bounds =
@@ -613,7 +608,6 @@ std::int32_t TessellationDual::NumberFaceVertices(std::vector<Point2>& vertices)
         }
       }
     });
-  return first[chunks];
 }
 
 TileMesh MeshOfSeparateTiles(TileSet tiles)
@@ -671,6 +665,31 @@ void AppendMeshTiles(TileMesh& mesh,
   mesh.Vertices.insert(mesh.Vertices.end(), from.Vertices.begin(), from.Vertices.end());
 }
 
+// Keeps, of the vertices from `from` on, those that stand for themselves (representative[k] == k
+// for vertex from + k; a representative comes before the vertices it stands for), in their order,
+// and returns each vertex's new id: its own or its representative's.
+std::vector<std::int32_t> KeepRepresentatives(std::vector<Point2>& vertices,
+  std::int32_t from,
+  const std::vector<std::int32_t>& representative)
+{
+  std::vector<std::int32_t> renumbered(representative.size());
+  std::int32_t kept = from;
+  for (std::size_t k = 0; k < representative.size(); ++k)
+  {
+    if (representative[k] == std::int32_t(k))
+    {
+      vertices[std::size_t(kept)] = vertices[std::size_t(from) + k];
+      renumbered[k] = kept++;
+    }
+    else
+    {
+      renumbered[k] = renumbered[std::size_t(representative[k])];
+    }
+  }
+  vertices.resize(std::size_t(kept));
+  return renumbered;
+}
+
 // Both tiles of a clipped edge compute its crossing with the window boundary from the same point
 // pair in the same order (ClipEdge), so their copies have the same coordinates. Equal crossings
 // become one vertex (the first listed), so that the tiles share their vertices along the window
@@ -693,32 +712,19 @@ void MergeEqualCrossings(TileMesh& mesh,
       return std::make_tuple(crossing[a].x, crossing[a].y, a) <
         std::make_tuple(crossing[b].x, crossing[b].y, b);
     });
-  // first[k]: the first crossing equal to k; then renumber the kept ones in their order.
+  // Each crossing's representative: the first crossing equal to it.
   std::vector<std::int32_t> first(static_cast<std::size_t>(count));
   for (std::size_t s = 0; s < sorted.size(); ++s)
   {
     const bool repeat = s > 0 && crossing[sorted[s]] == crossing[sorted[s - 1]];
     first[std::size_t(sorted[s])] = repeat ? first[std::size_t(sorted[s - 1])] : sorted[s];
   }
-  std::vector<std::int32_t> renumbered(static_cast<std::size_t>(count));
-  std::int32_t kept = 0;
-  for (std::int32_t k = 0; k < count; ++k)
-  {
-    if (first[std::size_t(k)] == k)
-    {
-      mesh.Vertices[std::size_t(firstCrossing + kept)] = crossing[k];
-      renumbered[std::size_t(k)] = kept++;
-    }
-    else
-    {
-      renumbered[std::size_t(k)] = renumbered[std::size_t(first[std::size_t(k)])];
-    }
-  }
-  mesh.Vertices.resize(std::size_t(firstCrossing + kept));
+  const std::vector<std::int32_t> renumbered =
+    KeepRepresentatives(mesh.Vertices, firstCrossing, first);
   for (const std::int64_t slot : slots)
   {
     std::int32_t& id = mesh.VertexIds[std::size_t(slot)];
-    id = firstCrossing + renumbered[std::size_t(id - firstCrossing)];
+    id = renumbered[std::size_t(id - firstCrossing)];
   }
 }
 
@@ -751,23 +757,11 @@ void MergeSameVertices(TileMesh& mesh,
     const std::int32_t ra = find(a), rb = find(b);
     root[std::size_t(std::max(ra, rb))] = std::min(ra, rb);
   }
-  // New ids in the old order of the kept vertices (each group keeps its smallest id).
-  std::vector<std::int32_t> renumbered(root.size());
-  std::int32_t kept = 0;
   for (std::size_t v = 0; v < root.size(); ++v)
   {
-    const std::int32_t r = find(std::int32_t(v));
-    if (r == std::int32_t(v))
-    {
-      mesh.Vertices[std::size_t(kept)] = mesh.Vertices[v];
-      renumbered[v] = kept++;
-    }
-    else
-    {
-      renumbered[v] = renumbered[std::size_t(r)];
-    }
+    root[v] = find(std::int32_t(v)); // each group's smallest id
   }
-  mesh.Vertices.resize(std::size_t(kept));
+  const std::vector<std::int32_t> renumbered = KeepRepresentatives(mesh.Vertices, 0, root);
   for (std::int32_t& id : mesh.VertexIds)
   {
     id = renumbered[std::size_t(id)];
@@ -795,21 +789,30 @@ void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* g
   std::vector<TileSet> tileParts(chunks - 1);
   std::vector<MeshPart> meshParts(mesh ? chunks : 0);
   std::vector<ContiguityGraph> graphParts(chunks - 1);
+  // The mesh's vertices: its face centres (numbered already), the window's corners when there
+  // are tiles to use them, then the crossings from firstCrossing on. Chunk 0 writes into the
+  // result.
+  std::vector<std::tuple<double, double, std::int32_t>> sortedCorners;
+  std::int32_t firstCrossing = 0;
   if (mesh)
   {
-    // Chunk 0 writes into the result (which holds the faces' and corners' vertices so far).
-    std::swap(meshParts[0].Tiles, *mesh);
     const std::vector<Point2>& corners = this->Tess.GetWindow().Vertices();
-    std::vector<std::tuple<double, double, std::int32_t>> sortedCorners;
+    const std::int32_t cornerBase = std::int32_t(mesh->Vertices.size());
+    if (count > 0)
+    {
+      mesh->Vertices.insert(mesh->Vertices.end(), corners.begin(), corners.end());
+    }
+    firstCrossing = std::int32_t(mesh->Vertices.size());
     for (std::size_t k = 0; k < corners.size(); ++k)
     {
       sortedCorners.emplace_back(corners[k].x, corners[k].y, std::int32_t(k));
     }
     std::sort(sortedCorners.begin(), sortedCorners.end());
+    std::swap(meshParts[0].Tiles, *mesh);
     for (MeshPart& part : meshParts)
     {
-      part.CornerBase = std::int32_t(meshParts[0].Tiles.Vertices.size() - corners.size());
-      part.Corners = sortedCorners;
+      part.CornerBase = cornerBase;
+      part.Corners = &sortedCorners;
     }
   }
   RunChunks(chunks,
@@ -855,9 +858,7 @@ void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* g
     }
     if (mesh)
     {
-      MergeEqualCrossings(*mesh,
-        meshParts[0].CornerBase + std::int32_t(this->Tess.GetWindow().Vertices().size()),
-        meshParts[0].ExtraSlots);
+      MergeEqualCrossings(*mesh, firstCrossing, meshParts[0].ExtraSlots);
       std::vector<std::pair<std::int32_t, std::int32_t>> same;
       for (const MeshPart& part : meshParts)
       {
@@ -1039,9 +1040,10 @@ std::int32_t TessellationDual::MeshVertexOf(const Point2& p,
   {
     return face;
   }
-  const auto corner = std::lower_bound(
-    mesh.Corners.begin(), mesh.Corners.end(), std::make_tuple(p.x, p.y, std::int32_t(-1)));
-  if (corner != mesh.Corners.end() && std::get<0>(*corner) == p.x && std::get<1>(*corner) == p.y)
+  const auto& corners = *mesh.Corners;
+  const auto corner =
+    std::lower_bound(corners.begin(), corners.end(), std::make_tuple(p.x, p.y, std::int32_t(-1)));
+  if (corner != corners.end() && std::get<0>(*corner) == p.x && std::get<1>(*corner) == p.y)
   {
     return mesh.CornerBase + std::get<2>(*corner);
   }

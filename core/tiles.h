@@ -175,7 +175,7 @@ private:
   void AppendTileOf(std::int32_t v, RingScratch& scratch, TileSet& tiles) const;
   void AppendMeshTileOf(std::int32_t v, RingScratch& scratch, MeshPart& mesh) const;
   std::int32_t MeshVertexOf(const Point2& p, const RingScratch& scratch, MeshPart& mesh) const;
-  std::int32_t NumberFaceVertices(std::vector<Point2>& vertices);
+  void NumberFaceVertices(std::vector<Point2>& vertices);
   void AppendContiguitiesOf(std::int32_t v,
     const std::vector<std::pair<std::int32_t, std::int32_t>>& half,
     RingScratch& scratch,
