@@ -48,8 +48,9 @@ vtkNew<vtkCellArray> FacesOf(const tessera::DirichletTessellation& tessellation,
   }
   else
   {
-    // Degenerate faces (or no triangles at all): the general derivation, then one copy.
-    const tessera::DelaunayFaces faces = tessera::ComputeDelaunayFaces(tessellation, split);
+    // Degenerate faces (or no triangles at all): the general derivation, then one copy. Straight
+    // to the dual: ComputeDelaunayFaces would first try the fast path again.
+    const tessera::DelaunayFaces faces = tessera::TessellationDual(tessellation).Faces(split);
     connectivity = Int32Array(faces.PointIds.size());
     std::copy(faces.PointIds.begin(), faces.PointIds.end(), connectivity->GetPointer(0));
     offsets = Int32Array(faces.Offsets.size());
