@@ -227,19 +227,26 @@ TEST(DirichletTessellation, RingsAreSymmetricAndAnticlockwise)
   }
 }
 
+// Runs action, which must throw an InputError whose message contains text.
+template<class Action>
+void ExpectInputErrorNaming(const Action& action, const std::string& text)
+{
+  try
+  {
+    action();
+    ADD_FAILURE() << "no InputError (expected one naming \"" << text << "\")";
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_NE(std::string(error.what()).find(text), std::string::npos) << error.what();
+  }
+}
+
 TEST(DirichletTessellation, NanAndInfinityAreRejectedWithTheirId)
 {
   std::vector<Point2> points = UniformPoints(10, 3);
   points[7].y = std::numeric_limits<double>::quiet_NaN();
-  try
-  {
-    Tess t(UnitWindow(), points);
-    FAIL() << "no InputError";
-  }
-  catch (const InputError& error)
-  {
-    EXPECT_NE(std::string(error.what()).find("point 7"), std::string::npos) << error.what();
-  }
+  ExpectInputErrorNaming([&]() { Tess t(UnitWindow(), points); }, "point 7");
   // A batch large enough to be validated in chunks on the cores: the first bad id is named,
   // whichever chunk finds its bad point first.
   // Bad points at the end of the first half and the start of the second: with any even number
@@ -248,27 +255,15 @@ TEST(DirichletTessellation, NanAndInfinityAreRejectedWithTheirId)
   many[100000].x = std::numeric_limits<double>::infinity();
   many[99999].y = std::numeric_limits<double>::quiet_NaN();
   many[199999].x = std::numeric_limits<double>::quiet_NaN();
-  try
-  {
-    Tess t(UnitWindow(), many);
-    FAIL() << "no InputError";
-  }
-  catch (const InputError& error)
-  {
-    EXPECT_NE(std::string(error.what()).find("point 99999 "), std::string::npos) << error.what();
-  }
+  ExpectInputErrorNaming([&]() { Tess t(UnitWindow(), many); }, "point 99999 ");
   Tess streaming(UnitWindow());
   streaming.Insert({ 0.1, 0.2 });
   streaming.Insert({ 0.3, 0.2 });
-  try
-  {
-    streaming.Insert({ std::numeric_limits<double>::infinity(), 0.0 });
-    FAIL() << "no InputError";
-  }
-  catch (const InputError& error)
-  {
-    EXPECT_NE(std::string(error.what()).find("point 2"), std::string::npos) << error.what();
-  }
+  ExpectInputErrorNaming(
+    [&]() {
+      streaming.Insert({ std::numeric_limits<double>::infinity(), 0.0 });
+    },
+    "point 2");
 }
 
 TEST(DirichletTessellation, OutsidePointsOfALargeBatchAreReportedInIdOrder)
