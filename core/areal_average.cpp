@@ -138,10 +138,7 @@ struct ThiessenArealAverage::State
     const std::vector<Point2>& corners = this->TheWindow->Vertices();
     const Box2 box = BoundsOf(corners.data(), corners.size());
     const auto cell = [](double v, double lo, double hi)
-    {
-      const double u = (v - lo) / (hi - lo) * 65535.0;
-      return static_cast<std::uint32_t>(std::min(65535.0, std::max(0.0, u)));
-    };
+    { return GridCell((v - lo) / (hi - lo) * 65535.0, 65536); };
     std::vector<std::pair<std::uint32_t, std::int32_t>> order;
     order.reserve(gauges.size());
     for (const std::int32_t g : gauges)

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace tessera
@@ -51,6 +52,15 @@ inline Box2 BoundsOf(const Point2* points, std::size_t count)
     box.Extend(points[i]);
   }
   return box;
+}
+
+/// The cell, 0 .. cells - 1, of a coordinate already scaled to cell units (spatial grids and
+/// curves). NaN and everything below 0 go to cell 0, everything beyond to the last: a box of
+/// subnormal width, or wider than the largest double, makes scales infinite or zero and scaled
+/// coordinates NaN (0 * inf), and converting those to an integer is undefined.
+inline std::uint32_t GridCell(double scaled, std::uint32_t cells)
+{
+  return scaled > 0.0 ? std::uint32_t(std::min(scaled, double(cells - 1))) : 0U;
 }
 
 /// Drops consecutive repeats of a vertex, cyclically (the last vertex equal to the first too):

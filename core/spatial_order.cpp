@@ -235,12 +235,9 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
   const double extent = box.LargerSide();
   const double scale = extent > 0.0 ? (cells * (1.0 - 1e-12)) / extent : 0.0;
   // A box wider than the largest double makes the scale 0 and a coordinate's offset may be
-  // infinite (0 * inf = NaN): such a value goes to cell 0, never to an undefined conversion.
+  // infinite (0 * inf = NaN): GridCell sends such a value to cell 0.
   const auto cell = [&](double v, double lo)
-  {
-    const double c = std::floor((v - lo) * scale);
-    return c > 0.0 ? std::uint32_t(std::min(c, cells - 1.0)) : 0U;
-  };
+  { return GridCell((v - lo) * scale, std::uint32_t(1) << levels); };
 
   int roundBits = 0;
   while ((1 << roundBits) < rounds)

@@ -81,11 +81,10 @@ public:
 
 private:
   // A side of the box far below 1 (subnormal widths) or beyond the largest double makes the
-  // scale infinite or zero, and the scaled coordinate may be NaN (0 * inf): any cell will do
-  // then, so NaN and everything below 0 go to cell 0 rather than to an undefined conversion.
+  // scale infinite or zero: any cell will do then (GridCell).
   std::int32_t Cell(double scaled) const
   {
-    return scaled > 0.0 ? std::int32_t(std::min(scaled, double(this->Cells - 1))) : 0;
+    return std::int32_t(GridCell(scaled, std::uint32_t(this->Cells)));
   }
 
   Box2 Box;
