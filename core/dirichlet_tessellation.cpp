@@ -35,6 +35,50 @@ bool ClearlyInside(const std::vector<HalfPlane>& constraints, const Point2& p)
   return true;
 }
 
+// Whether every point is finite and strictly inside the window, from one pass on the cores that
+// also writes inside[k] = k: the corners of the points' bounding box inside the (convex) window
+// put every point inside. The filters' default window pads that box, so this is the usual case;
+// it saves a window test per point (10-20 ns each, half of the build's serial-looking start).
+bool AllFiniteAndInside(const std::vector<Point2>& points,
+  const Window& window,
+  const std::vector<std::int32_t>& bounds,
+  std::vector<std::int32_t>& inside)
+{
+  const std::size_t chunks = bounds.size() - 1;
+  if (bounds.back() == 0)
+  {
+    return true;
+  }
+  std::vector<Box2> boxes(chunks);
+  std::vector<char> finite(chunks);
+  parallel::RunChunks(chunks,
+    [&](std::size_t c)
+    {
+      Box2 box = BoundsOf(&points[bounds[c]], 1);
+      bool allFinite = true;
+      for (std::int32_t k = bounds[c]; k < bounds[c + 1]; ++k)
+      {
+        const Point2& p = points[k];
+        allFinite &= (p.x - p.x == 0.0) & (p.y - p.y == 0.0); // false for NaN and infinities
+        box.Extend(p);
+        inside[k] = k;
+      }
+      boxes[c] = box;
+      finite[c] = allFinite;
+    });
+  Box2 box = boxes[0];
+  for (std::size_t c = 0; c < chunks; ++c)
+  {
+    if (!finite[c])
+    {
+      return false;
+    }
+    box.Extend(boxes[c]);
+  }
+  return window.Contains({ box.XMin, box.YMin }) && window.Contains({ box.XMax, box.YMin }) &&
+    window.Contains({ box.XMax, box.YMax }) && window.Contains({ box.XMin, box.YMax });
+}
+
 // orient2d and incircle for the hot loops: the inlined filters of predicates_inline.h (their exact
 // stages decide lattice and other rounding-free input cheaply, see predicates.cpp).
 inline int Orient(const Point2& a, const Point2& b, const Point2& c)
@@ -100,35 +144,57 @@ DirichletTessellation::DirichletTessellation(Window window, std::vector<Point2> 
   {
     throw InputError("too many points: " + std::to_string(this->Coordinates.size()));
   }
-  // Validation and the window test on the cores: each chunk lists its own ids, in id order, and
-  // the first bad point of the first chunk that has one is the one reported, as when serial.
   const std::int32_t n = std::int32_t(this->Coordinates.size());
   const std::vector<std::int32_t> bounds = parallel::ChunkBounds(n, parallel::ThreadCount(n));
+  std::vector<std::int32_t> inside(static_cast<std::size_t>(n));
+  if (AllFiniteAndInside(this->Coordinates, this->TheWindow, bounds, inside))
+  {
+    this->BuildFrom(inside);
+    return;
+  }
+  // Validation and the window test per point, on the cores. Each chunk writes the ids it keeps, in
+  // id order, over its own part of `inside` and lists the others; the kept parts are then moved
+  // together. The first bad point of the first chunk that has one is the one reported, as when
+  // serial.
   const std::size_t chunks = bounds.size() - 1;
-  std::vector<std::vector<std::int32_t>> inside(chunks), outside(chunks);
+  std::vector<std::int32_t> kept(chunks);
+  std::vector<std::vector<std::int32_t>> outside(chunks);
   const std::vector<HalfPlane>& constraints = this->TheWindow.EffectiveConstraints();
   parallel::RunChunks(chunks,
     [&](std::size_t c)
     {
-      inside[c].reserve(std::size_t(c == 0 ? n : bounds[c + 1] - bounds[c])); // 0 gets them all
+      std::int32_t* const out = inside.data() + bounds[c];
+      std::int32_t count = 0;
       for (std::int32_t id = bounds[c]; id < bounds[c + 1]; ++id)
       {
         const Point2& p = this->Coordinates[id];
         this->Validate(p, std::size_t(id));
-        (ClearlyInside(constraints, p) || this->TheWindow.Contains(p) ? inside[c] : outside[c])
-          .push_back(id);
+        if (ClearlyInside(constraints, p) || this->TheWindow.Contains(p))
+        {
+          out[count++] = id;
+        }
+        else
+        {
+          outside[c].push_back(id);
+        }
       }
+      kept[c] = count;
     });
+  std::int32_t end = kept[0];
   for (std::size_t c = 1; c < chunks; ++c)
   {
-    inside[0].insert(inside[0].end(), inside[c].begin(), inside[c].end());
-    std::vector<std::int32_t>().swap(inside[c]);
+    if (end != bounds[c])
+    {
+      std::copy_n(inside.begin() + bounds[c], kept[c], inside.begin() + end);
+    }
+    end += kept[c];
   }
+  inside.resize(std::size_t(end));
   for (const std::vector<std::int32_t>& ids : outside)
   {
     this->Rejected.insert(this->Rejected.end(), ids.begin(), ids.end());
   }
-  this->BuildFrom(inside[0]);
+  this->BuildFrom(inside);
 }
 
 // Batch insertion in BRIO + Hilbert order. While building, vertex k is the k-th point of that

@@ -31,6 +31,7 @@
 // triangles.
 
 #include "geometry.h"
+#include "uninitialized_allocator.h"
 #include "window.h"
 
 #include <cstddef>
@@ -44,35 +45,10 @@
 namespace tessera
 {
 
-/// std::allocator, except that resize() leaves new elements uninitialised: the two-region build
-/// sizes its arrays once and each thread writes (and so first touches) its own part.
-template<class T>
-struct UninitializedAllocator : std::allocator<T>
-{
-  template<class U>
-  struct rebind
-  {
-    using other = UninitializedAllocator<U>;
-  };
-  UninitializedAllocator() = default;
-  template<class U>
-  UninitializedAllocator(const UninitializedAllocator<U>&) noexcept
-  {
-  }
-  template<class U>
-  void construct(U* p) noexcept
-  {
-    ::new (static_cast<void*>(p)) U;
-  }
-  template<class U, class... Args>
-  void construct(U* p, Args&&... args)
-  {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-};
-
-/// The half-edge arrays' type: a std::vector of int32.
-using HalfEdgeArray = std::vector<std::int32_t, UninitializedAllocator<std::int32_t>>;
+/// The half-edge arrays' type: a std::vector of int32 whose resize() writes nothing, so that the
+/// two-region build sizes its arrays once and each thread writes (and so first touches) its own
+/// part.
+using HalfEdgeArray = UninitializedVector<std::int32_t>;
 
 enum class PointStatus : std::uint8_t
 {

@@ -40,6 +40,12 @@ struct Box2
     this->YMin = std::min(this->YMin, p.y);
     this->YMax = std::max(this->YMax, p.y);
   }
+  /// The smallest box holding this one and another.
+  void Extend(const Box2& other)
+  {
+    this->Extend(Point2{ other.XMin, other.YMin });
+    this->Extend(Point2{ other.XMax, other.YMax });
+  }
   double LargerSide() const { return std::max(this->XMax - this->XMin, this->YMax - this->YMin); }
 };
 

@@ -1,6 +1,7 @@
 #include "spatial_order.h"
 
 #include "parallel_chunks.h"
+#include "uninitialized_allocator.h"
 
 #include <algorithm>
 #include <cmath>
@@ -57,7 +58,7 @@ void RadixSortByKey(std::vector<KeyedId>& items, int bits)
 
 // The same on keys packed above the ids in one 64-bit word: half the memory traffic. The digits
 // are as wide as the passes allow, all counted in one read of the items.
-void RadixSortPacked(std::vector<std::uint64_t>& items, int lowBit, int bits)
+void RadixSortPacked(UninitializedVector<std::uint64_t>& items, int lowBit, int bits)
 {
   constexpr int MaxDigitBits = 11;
   const int passes = (bits + MaxDigitBits - 1) / MaxDigitBits;
@@ -76,7 +77,7 @@ void RadixSortPacked(std::vector<std::uint64_t>& items, int lowBit, int bits)
       ++count[std::size_t(pass) * buckets + ((item >> (lowBit + pass * digitBits)) & mask)];
     }
   }
-  std::vector<std::uint64_t> buffer(items.size());
+  UninitializedVector<std::uint64_t> buffer(items.size());
   for (int pass = 0; pass < passes; ++pass)
   {
     std::size_t* const c = count.data() + std::size_t(pass) * buckets;
@@ -221,13 +222,30 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
   {
     return order;
   }
-  Box2 box = BoundsOf(&points[ids[0]], 1);
-  std::int32_t largestId = 0;
-  for (const std::int32_t id : ids)
+  // The bounding box and the largest id, in chunks on the cores.
+  const std::vector<std::int32_t> bounds =
+    parallel::ChunkBounds(std::int32_t(n), parallel::ThreadCount(std::int64_t(n)));
+  std::vector<Box2> boxes(bounds.size() - 1);
+  std::vector<std::int32_t> largestIds(bounds.size() - 1);
+  parallel::RunChunks(bounds.size() - 1,
+    [&](std::size_t c)
+    {
+      Box2 chunkBox = BoundsOf(&points[ids[bounds[c]]], 1);
+      std::int32_t largest = 0;
+      for (std::int32_t k = bounds[c]; k < bounds[c + 1]; ++k)
+      {
+        chunkBox.Extend(points[ids[k]]);
+        largest = std::max(largest, ids[k]);
+      }
+      boxes[c] = chunkBox;
+      largestIds[c] = largest;
+    });
+  Box2 box = boxes[0];
+  for (const Box2& chunkBox : boxes)
   {
-    box.Extend(points[id]);
-    largestId = std::max(largestId, id);
+    box.Extend(chunkBox);
   }
+  const std::int32_t largestId = *std::max_element(largestIds.begin(), largestIds.end());
   const int levels = LevelCount(n);
   const int rounds = RoundCount(n);
   const double cells = double(std::uint32_t(1) << levels);
@@ -264,10 +282,9 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
   order.resize(n);
   if (keyBits + idBits <= 64)
   {
-    std::vector<std::uint64_t> packed(n);
-    // The keys (a hash and a Hilbert index per point) on the cores; the sort stays serial.
-    const std::vector<std::int32_t> bounds =
-      parallel::ChunkBounds(std::int32_t(n), parallel::ThreadCount(std::int64_t(n)));
+    // The keys (a hash and a Hilbert index per point) on the cores, which also first touch the
+    // array; the sort stays serial.
+    UninitializedVector<std::uint64_t> packed(n);
     parallel::RunChunks(bounds.size() - 1,
       [&](std::size_t c)
       {

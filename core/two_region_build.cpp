@@ -141,6 +141,10 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
     regions[side].MaxWalk = std::int64_t(8 * std::sqrt(double(end))) + 1024;
   }
   std::vector<std::int32_t> sides[2];
+  for (std::vector<std::int32_t>& side : sides)
+  {
+    side.reserve(std::size_t(end - first)); // either may get them all; only what is used is touched
+  }
   for (std::int32_t k = first; k < end; ++k)
   {
     sides[regions[1].Owns(pts[k]) ? 1 : 0].push_back(k);

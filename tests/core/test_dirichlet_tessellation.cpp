@@ -290,6 +290,25 @@ TEST(DirichletTessellation, OutsidePointsOfALargeBatchAreReportedInIdOrder)
   EXPECT_EQ(t.AcceptedCount() + expected.size(), points.size());
 }
 
+TEST(DirichletTessellation, PointsInsideAWindowThatCutsTheirBoxAreAllAccepted)
+{
+  // The triangle x > 0, y > 0, x + y < 1 holds the points but not their bounding box's far
+  // corner, so the per-point window test decides: nothing is rejected. With one point moved onto
+  // the hypotenuse (outside: the window is open), exactly that one is.
+  std::vector<Point2> points = UniformPoints(60000, 9);
+  for (Point2& p : points)
+  {
+    if (p.x + p.y >= 1.0)
+    {
+      p = { 1.0 - p.x, 1.0 - p.y };
+    }
+  }
+  const Window triangle({ { -1.0, 0.0, 0.0 }, { 0.0, -1.0, 0.0 }, { 1.0, 1.0, -1.0 } });
+  EXPECT_TRUE(Tess(triangle, points).RejectedIds().empty());
+  points[123] = { 0.25, 0.75 };
+  EXPECT_EQ(Tess(triangle, points).RejectedIds(), (std::vector<std::int32_t>{ 123 }));
+}
+
 TEST(DirichletTessellation, DuplicatesAndOutsidePointsAreReported)
 {
   std::vector<Point2> points = UniformPoints(40, 5);
