@@ -520,6 +520,7 @@ struct TessellationDual::RingScratch
   std::vector<std::int32_t> Labels; ///< an interior tile's faces (mesh)
   std::vector<std::pair<std::int32_t, std::int32_t>> SameCentre; ///< faces at one rounded point
   std::vector<std::pair<std::int32_t, std::uint8_t>> Around;
+  std::vector<std::int32_t> Larger; ///< an interior tile's neighbours with larger ids
   TileEdge Edge;
 };
 
@@ -1115,6 +1116,30 @@ void TessellationDual::AppendContiguitiesOf(std::int32_t v,
         around.emplace_back(j, 0);
       }
     }
+  }
+  else if (scratch.Interior && half.empty())
+  {
+    // The common case, without branches on the (unpredictable) neighbour ids: v's tile polygon
+    // was just found interior (TilePolygonOf; a graph alone never sets the flag), so every ring
+    // edge lies between two distinct real faces inside the window, and there are no
+    // half-neighbours at all.
+    std::vector<std::int32_t>& larger = scratch.Larger;
+    larger.resize(scratch.Ring.size());
+    std::size_t count = 0;
+    for (const std::int32_t e : scratch.Ring)
+    {
+      const std::int32_t j = org[Tess::Next(e)];
+      larger[count] = j;
+      count += j > v ? 1 : 0;
+    }
+    std::sort(larger.begin(), larger.begin() + std::ptrdiff_t(count));
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      graph.Pairs.push_back(v);
+      graph.Pairs.push_back(larger[k]);
+    }
+    graph.Kinds.insert(graph.Kinds.end(), count, std::uint8_t(0));
+    return;
   }
   else
   {

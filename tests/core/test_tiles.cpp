@@ -698,8 +698,9 @@ void ForEachDerivationInput(std::vector<DerivationInput> inputs, const Check& ch
 }
 
 // TilesAndContiguities walks each ring once for both results, sharing one chunk's scratch
-// buffers: it must give exactly what the two separate passes give. (Whether the results
-// themselves are right is what the exact tests above check: all three share Derive.)
+// buffers, and lists an interior tile's contiguities straight from its ring (Contiguities() alone
+// checks every ring edge's faces): it must give exactly what the two separate passes give. (Whether
+// the results themselves are right is what the exact tests above check: all three share Derive.)
 TEST(Tiles, TilesAndContiguitiesEqualTheSeparatePasses)
 {
   ForEachDerivationInput({},
