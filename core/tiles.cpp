@@ -10,6 +10,7 @@
 #include <climits>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -622,10 +623,7 @@ TileMesh MeshOfSeparateTiles(TileSet tiles)
       "too many tile vertices for 32-bit vertex ids: " + std::to_string(tiles.Vertices.size()));
   }
   mesh.VertexIds.resize(tiles.Vertices.size());
-  for (std::size_t v = 0; v < mesh.VertexIds.size(); ++v)
-  {
-    mesh.VertexIds[v] = std::int32_t(v);
-  }
+  std::iota(mesh.VertexIds.begin(), mesh.VertexIds.end(), 0);
   mesh.Vertices = std::move(tiles.Vertices);
   mesh.Areas = std::move(tiles.Areas);
   mesh.NeighborCounts = std::move(tiles.NeighborCounts);
@@ -702,10 +700,7 @@ void MergeEqualCrossings(TileMesh& mesh,
   const std::int32_t count = std::int32_t(mesh.Vertices.size()) - firstCrossing;
   const Point2* crossing = mesh.Vertices.data() + firstCrossing;
   std::vector<std::int32_t> sorted(static_cast<std::size_t>(count));
-  for (std::int32_t k = 0; k < count; ++k)
-  {
-    sorted[std::size_t(k)] = k;
-  }
+  std::iota(sorted.begin(), sorted.end(), 0);
   std::sort(sorted.begin(),
     sorted.end(),
     [&](std::int32_t a, std::int32_t b)
@@ -740,10 +735,7 @@ void MergeSameVertices(TileMesh& mesh,
     return;
   }
   std::vector<std::int32_t> root(mesh.Vertices.size());
-  for (std::size_t v = 0; v < root.size(); ++v)
-  {
-    root[v] = std::int32_t(v);
-  }
+  std::iota(root.begin(), root.end(), 0);
   const auto find = [&](std::int32_t v)
   {
     while (root[std::size_t(v)] != v)
@@ -1092,15 +1084,51 @@ void TessellationDual::TouchRings(std::int32_t begin, std::int32_t end) const
   }
 }
 
+namespace
+{
+// The contiguities of an interior tile without half-neighbours: every ring neighbour, each an
+// edge neighbour (Kind 0). Gathered without a branch on the (unpredictable) neighbour ids and
+// sorted as plain ints; larger is scratch.
+void AppendRingNeighbours(const HalfEdgeArray& org,
+  std::int32_t v,
+  const std::vector<std::int32_t>& ring,
+  std::vector<std::int32_t>& larger,
+  ContiguityGraph& graph)
+{
+  larger.resize(ring.size());
+  std::size_t count = 0;
+  for (const std::int32_t e : ring)
+  {
+    const std::int32_t j = org[Tess::Next(e)];
+    larger[count] = j;
+    count += j > v ? 1 : 0;
+  }
+  std::sort(larger.begin(), larger.begin() + std::ptrdiff_t(count));
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    graph.Pairs.push_back(v);
+    graph.Pairs.push_back(larger[k]);
+  }
+  graph.Kinds.insert(graph.Kinds.end(), count, std::uint8_t(0));
+}
+} // namespace
+
 // Point v's contiguities with larger ids, appended to graph. An edge between two distinct real
 // faces whose centres are both inside the window is kept whole (ClipEdge would return it at
-// once); any other edge is clipped.
+// once); any other edge is clipped. When v's tile polygon was just found interior (TilePolygonOf;
+// a graph alone never sets the flag), every ring edge is such an edge, and without
+// half-neighbours the ring alone gives the list.
 void TessellationDual::AppendContiguitiesOf(std::int32_t v,
   const std::vector<std::pair<std::int32_t, std::int32_t>>& half,
   RingScratch& scratch,
   ContiguityGraph& graph) const
 {
   const auto& org = this->Tess.Origin();
+  if (scratch.Interior && half.empty())
+  {
+    AppendRingNeighbours(org, v, scratch.Ring, scratch.Larger, graph);
+    return;
+  }
   const auto& twin = this->Tess.Twin();
   auto& around = scratch.Around;
   TileEdge& edge = scratch.Edge;
@@ -1116,30 +1144,6 @@ void TessellationDual::AppendContiguitiesOf(std::int32_t v,
         around.emplace_back(j, 0);
       }
     }
-  }
-  else if (scratch.Interior && half.empty())
-  {
-    // The common case, without branches on the (unpredictable) neighbour ids: v's tile polygon
-    // was just found interior (TilePolygonOf; a graph alone never sets the flag), so every ring
-    // edge lies between two distinct real faces inside the window, and there are no
-    // half-neighbours at all.
-    std::vector<std::int32_t>& larger = scratch.Larger;
-    larger.resize(scratch.Ring.size());
-    std::size_t count = 0;
-    for (const std::int32_t e : scratch.Ring)
-    {
-      const std::int32_t j = org[Tess::Next(e)];
-      larger[count] = j;
-      count += j > v ? 1 : 0;
-    }
-    std::sort(larger.begin(), larger.begin() + std::ptrdiff_t(count));
-    for (std::size_t k = 0; k < count; ++k)
-    {
-      graph.Pairs.push_back(v);
-      graph.Pairs.push_back(larger[k]);
-    }
-    graph.Kinds.insert(graph.Kinds.end(), count, std::uint8_t(0));
-    return;
   }
   else
   {

@@ -205,7 +205,7 @@ private:
     Point2 Centre() const { return { this->X, this->Y }; }
     bool Inside() const { return this->Vertex >= 0; }
   };
-  std::vector<TriangleData, UninitializedAllocator<TriangleData>> Data;
+  UninitializedVector<TriangleData> Data;
   std::vector<double> CentreError; ///< per triangle, while labelling faces
   // Degenerate faces: representative -> index k; polygon k is DegenerateVertices[Starts[k] ..
   // Starts[k+1]), anticlockwise, starting at its smallest id.
