@@ -1160,8 +1160,6 @@ TEST(DirichletTessellation, TwoRegionBuildWithCocircularSquaresEqualsSerialInser
   ExpectSameAsStreaming(points);
 }
 
-// The build's co-circularity flag against the exact incircle of every interior edge: never true
-// when two adjacent triangles are co-circular, and true for points in general position.
 // A box with a subnormal width: the restart grid's scale overflows and a scaled coordinate is
 // NaN (0 * inf); its cell must still be a valid one (a crash or, under UBSan, an undefined
 // conversion before). Every point is finite, inside the window and the set is two-dimensional.
@@ -1177,6 +1175,8 @@ TEST(DirichletTessellation, TwoRegionBuildOfASubnormallyThinSetDoesNotCrash)
   EXPECT_TRUE(t.IsTwoDimensional());
 }
 
+// The build's co-circularity flag against the exact incircle of every interior edge: never true
+// when two adjacent triangles are co-circular, and true for points in general position.
 TEST(DirichletTessellation, CocircularTrianglesAreKnownAfterABatchBuild)
 {
   const auto anyCocircularEdge = [](const Tess& t)
