@@ -36,13 +36,14 @@ bool ClearlyInside(const std::vector<HalfPlane>& constraints, const Point2& p)
 }
 
 // Whether every point is finite and strictly inside the window, from one pass on the cores that
-// also writes inside[k] = k: the corners of the points' bounding box inside the (convex) window
+// also writes inside[k] = k and the points' bounding box: its corners inside the (convex) window
 // put every point inside. The filters' default window pads that box, so this is the usual case;
 // it saves a window test per point (10-20 ns each, half of the build's serial-looking start).
 bool AllFiniteAndInside(const std::vector<Point2>& points,
   const Window& window,
   const std::vector<std::int32_t>& bounds,
-  std::vector<std::int32_t>& inside)
+  std::vector<std::int32_t>& inside,
+  Box2& box)
 {
   const std::size_t chunks = bounds.size() - 1;
   if (bounds.back() == 0)
@@ -54,19 +55,19 @@ bool AllFiniteAndInside(const std::vector<Point2>& points,
   parallel::RunChunks(chunks,
     [&](std::size_t c)
     {
-      Box2 box = BoundsOf(&points[bounds[c]], 1);
+      Box2 chunkBox = BoundsOf(&points[bounds[c]], 1);
       bool allFinite = true;
       for (std::int32_t k = bounds[c]; k < bounds[c + 1]; ++k)
       {
         const Point2& p = points[k];
         allFinite &= (p.x - p.x == 0.0) & (p.y - p.y == 0.0); // false for NaN and infinities
-        box.Extend(p);
+        chunkBox.Extend(p);
         inside[k] = k;
       }
-      boxes[c] = box;
+      boxes[c] = chunkBox;
       finite[c] = allFinite;
     });
-  Box2 box = boxes[0];
+  box = boxes[0];
   for (std::size_t c = 0; c < chunks; ++c)
   {
     if (!finite[c])
@@ -147,9 +148,10 @@ DirichletTessellation::DirichletTessellation(Window window, std::vector<Point2> 
   const std::int32_t n = std::int32_t(this->Coordinates.size());
   const std::vector<std::int32_t> bounds = parallel::ChunkBounds(n, parallel::ThreadCount(n));
   std::vector<std::int32_t> inside(static_cast<std::size_t>(n));
-  if (AllFiniteAndInside(this->Coordinates, this->TheWindow, bounds, inside))
+  Box2 box;
+  if (AllFiniteAndInside(this->Coordinates, this->TheWindow, bounds, inside, box))
   {
-    this->BuildFrom(inside);
+    this->BuildFrom(inside, &box);
     return;
   }
   // Validation and the window test per point, on the cores. Each chunk writes the ids it keeps, in
@@ -202,13 +204,15 @@ DirichletTessellation::DirichletTessellation(Window window, std::vector<Point2> 
 // neighbouring memory instead of coordinates scattered by input id (the difference is a factor of
 // about two at 1M points). At the end the vertices are renamed to input ids and the input order
 // is restored, so the structure costs no more than with input ids throughout.
-void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids)
+void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids, const Box2* knownBox)
 {
   // A triangulation of n points with its ghosts has exactly 2n - 2 triangles.
   const std::size_t triangles = ids.size() >= 3 ? 2 * ids.size() - 2 : 0;
   this->Origins.reserve(this->Origins.size() + 3 * triangles);
   this->Twins.reserve(this->Twins.size() + 3 * triangles);
-  const std::vector<std::int32_t> order = BrioHilbertOrder(this->Coordinates, ids);
+  const std::vector<std::int32_t> order = knownBox
+    ? BrioHilbertOrder(this->Coordinates, ids, *knownBox)
+    : BrioHilbertOrder(this->Coordinates, ids);
   ids.clear();
   ids.shrink_to_fit();
   // The gather and the relabelling below are random reads of a large array: on the cores.

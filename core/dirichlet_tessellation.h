@@ -178,7 +178,8 @@ private:
   };
 
   void Validate(const Point2& p, std::size_t id) const;
-  void BuildFrom(std::vector<std::int32_t>& ids);
+  /// knownBox: the bounding box of the points of ids when the caller has it (else computed).
+  void BuildFrom(std::vector<std::int32_t>& ids, const Box2* knownBox = nullptr);
   /// The input id of a vertex (differs only during BuildFrom, which numbers vertices locally).
   std::int32_t InputId(std::int32_t v) const
   {

@@ -212,8 +212,47 @@ std::uint32_t HilbertIndex(std::uint32_t x, std::uint32_t y, int levels)
   return HilbertIndexFast(TheHilbertTable(), x, y, levels);
 }
 
+namespace
+{
+// The bounding box of the points of ids (at least one), in chunks on the cores.
+Box2 BoundsOfIds(const std::vector<Point2>& points, const std::vector<std::int32_t>& ids)
+{
+  const std::vector<std::int32_t> bounds = parallel::ChunkBounds(
+    std::int32_t(ids.size()), parallel::ThreadCount(std::int64_t(ids.size())));
+  std::vector<Box2> boxes(bounds.size() - 1);
+  parallel::RunChunks(bounds.size() - 1,
+    [&](std::size_t c)
+    {
+      Box2 chunkBox = BoundsOf(&points[ids[bounds[c]]], 1);
+      for (std::int32_t k = bounds[c]; k < bounds[c + 1]; ++k)
+      {
+        chunkBox.Extend(points[ids[k]]);
+      }
+      boxes[c] = chunkBox;
+    });
+  Box2 box = boxes[0];
+  for (const Box2& chunkBox : boxes)
+  {
+    box.Extend(chunkBox);
+  }
+  return box;
+}
+} // namespace
+
 std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
   const std::vector<std::int32_t>& ids,
+  std::uint64_t seed)
+{
+  if (ids.empty())
+  {
+    return {};
+  }
+  return BrioHilbertOrder(points, ids, BoundsOfIds(points, ids), seed);
+}
+
+std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
+  const std::vector<std::int32_t>& ids,
+  const Box2& box,
   std::uint64_t seed)
 {
   const std::size_t n = ids.size();
@@ -222,30 +261,9 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
   {
     return order;
   }
-  // The bounding box and the largest id, in chunks on the cores.
+  const std::int32_t largestId = *std::max_element(ids.begin(), ids.end());
   const std::vector<std::int32_t> bounds =
     parallel::ChunkBounds(std::int32_t(n), parallel::ThreadCount(std::int64_t(n)));
-  std::vector<Box2> boxes(bounds.size() - 1);
-  std::vector<std::int32_t> largestIds(bounds.size() - 1);
-  parallel::RunChunks(bounds.size() - 1,
-    [&](std::size_t c)
-    {
-      Box2 chunkBox = BoundsOf(&points[ids[bounds[c]]], 1);
-      std::int32_t largest = 0;
-      for (std::int32_t k = bounds[c]; k < bounds[c + 1]; ++k)
-      {
-        chunkBox.Extend(points[ids[k]]);
-        largest = std::max(largest, ids[k]);
-      }
-      boxes[c] = chunkBox;
-      largestIds[c] = largest;
-    });
-  Box2 box = boxes[0];
-  for (const Box2& chunkBox : boxes)
-  {
-    box.Extend(chunkBox);
-  }
-  const std::int32_t largestId = *std::max_element(largestIds.begin(), largestIds.end());
   const int levels = LevelCount(n);
   const int rounds = RoundCount(n);
   const double cells = double(std::uint32_t(1) << levels);

@@ -24,4 +24,11 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
   const std::vector<std::int32_t>& ids,
   std::uint64_t seed = 0);
 
+/// The same, given box: the bounding box of the points of ids, for a caller that has it already
+/// (the batch build finds it while validating the points).
+std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
+  const std::vector<std::int32_t>& ids,
+  const Box2& box,
+  std::uint64_t seed = 0);
+
 } // namespace tessera

@@ -69,6 +69,13 @@ TEST(SpatialOrder, BrioOrderIsAReproduciblePermutation)
   EXPECT_LT(total / double(half - 1), 1.0);
   EXPECT_TRUE(BrioHilbertOrder(points, {}).empty());
   EXPECT_EQ(BrioHilbertOrder(points, { 7 }), std::vector<std::int32_t>{ 7 });
+  // Given the selected points' box (found here serially), the same order.
+  Box2 box = BoundsOf(&points[ids[0]], 1);
+  for (const std::int32_t id : ids)
+  {
+    box.Extend(points[id]);
+  }
+  EXPECT_EQ(BrioHilbertOrder(points, ids, box), order);
 }
 
 TEST(SpatialOrder, ABoxWiderThanTheLargestDoubleStillGivesAPermutation)
