@@ -72,7 +72,7 @@ TessellationDual::TessellationDual(const DirichletTessellation& tessellation)
     {
       this->LinePosition[line[k]] = std::int32_t(k);
     }
-    this->Order = line;
+    this->Order.assign(line.begin(), line.end());
     return;
   }
   this->OrderPoints();
@@ -93,7 +93,10 @@ TessellationDual::TessellationDual(const DirichletTessellation& tessellation)
 // contiguities at 1M took 153-202 ms instead of 269-275 ms on two threads.
 //
 // Chunks of the arrays in parallel, each with its own bits; a chunk's first appearances then
-// count only if no earlier chunk saw the vertex, so the order is the serial one.
+// count only if no earlier chunk saw the vertex, so the order is the serial one. Both loops are
+// branch-free on the "seen" bit (vertex ids are random, so the branch was mispredicted often):
+// every edge is written at the end of the list, which then grows only when its vertex is new.
+// (1M points: 27-29 ms with a branch and push_back, 8.5 ms without.)
 void TessellationDual::OrderPoints()
 {
   const HalfEdgeArray& org = this->Tess.Origin();
@@ -103,44 +106,56 @@ void TessellationDual::OrderPoints()
     ChunkBounds(edges, ThreadCount(edges, 6 * MinimumTilesPerThread));
   const std::size_t chunks = bounds.size() - 1;
   std::vector<std::vector<std::uint64_t>> seen(chunks);
-  std::vector<std::vector<std::int32_t>> first(chunks);
+  std::vector<UninitializedVector<std::int32_t>> first(chunks);
   RunChunks(chunks,
     [&](std::size_t k)
     {
       std::vector<std::uint64_t>& bits = seen[k];
-      std::vector<std::int32_t>& found = first[k];
       bits.assign(words, 0);
-      found.reserve(std::size_t(bounds[k + 1] - bounds[k]) / 5);
+      first[k].resize(std::size_t(bounds[k + 1] - bounds[k]));
+      const std::int32_t* origin = org.data();
+      std::int32_t* found = first[k].data();
+      std::size_t count = 0;
       for (std::int32_t r = bounds[k]; r < bounds[k + 1]; ++r)
       {
         const std::int32_t e = edges - 1 - r;
-        const std::int32_t v = org[std::size_t(e)];
-        if (v >= 0 && !(bits[std::size_t(v) >> 6] >> (v & 63) & 1U))
+        const std::int32_t v = origin[e];
+        if (v >= 0) // ghost and free triangles' slots hold negative ids: rare, well predicted
         {
-          bits[std::size_t(v) >> 6] |= std::uint64_t(1) << (v & 63);
-          found.push_back(e);
+          std::uint64_t& word = bits[std::size_t(v) >> 6];
+          const std::uint64_t bit = std::uint64_t(1) << (v & 63);
+          found[count] = e;
+          count += (word & bit) == 0 ? 1 : 0;
+          word |= bit;
         }
       }
+      first[k].resize(count);
     });
-  this->Order.reserve(this->Tess.AcceptedCount());
-  this->OrderEdge.reserve(this->Tess.AcceptedCount());
-  std::vector<std::uint64_t>& earlier = seen[0];
+  std::size_t total = 0;
+  for (const UninitializedVector<std::int32_t>& found : first)
+  {
+    total += found.size();
+  }
+  this->Order.resize(total);
+  this->OrderEdge.resize(total);
+  const std::uint64_t* earlier = seen[0].data();
+  std::size_t count = 0;
   for (std::size_t k = 0; k < chunks; ++k)
   {
     for (const std::int32_t e : first[k])
     {
       const std::int32_t v = org[std::size_t(e)];
-      if (k == 0 || !(earlier[std::size_t(v) >> 6] >> (v & 63) & 1U))
-      {
-        this->Order.push_back(v);
-        this->OrderEdge.push_back(e);
-      }
+      this->Order[count] = v;
+      this->OrderEdge[count] = e;
+      count += k == 0 || !(earlier[std::size_t(v) >> 6] >> (v & 63) & 1U) ? 1 : 0;
     }
     for (std::size_t w = 0; k > 0 && w < words; ++w)
     {
-      earlier[w] |= seen[k][w];
+      seen[0][w] |= seen[k][w];
     }
   }
+  this->Order.resize(count);
+  this->OrderEdge.resize(count);
 }
 
 // ---------------------------------------------------------------------------------------------

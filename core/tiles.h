@@ -39,6 +39,7 @@
 
 #include "dirichlet_tessellation.h"
 #include "geometry.h"
+#include "uninitialized_allocator.h"
 
 #include <cstdint>
 #include <utility>
@@ -188,8 +189,9 @@ private:
   /// Accepted points in traversal order: first appearance in the half-edge arrays read from the
   /// end (OrderPoints), which follows the spatial insertion order, so walking rings in this order
   /// stays in cache.
-  std::vector<std::int32_t> Order;
-  std::vector<std::int32_t> OrderEdge; ///< two-dimensional case: a half-edge leaving Order[k]
+  UninitializedVector<std::int32_t> Order;
+  UninitializedVector<std::int32_t>
+    OrderEdge; ///< two-dimensional case: a half-edge leaving Order[k]
   /// Per triangle, together so that a ring walk touches one cache line per triangle: its face
   /// (a representative triangle; -2 - t for a ghost), and for a representative the face's centre
   /// and whether it lies inside the window: Vertex >= 0 (once NumberFaceVertices has run, the
