@@ -54,6 +54,10 @@ int FaceSide(const Tess& tess, std::int32_t face, const HalfPlane& h)
 // settle almost every face, CircumcentreSide the rest.
 bool CentreInside(const Tess& tess, std::int32_t face, const Point2& c, double error)
 {
+  if (tess.GetWindow().CertainlyContains(c, error))
+  {
+    return true; // most centres, in an axis-aligned rectangle: a few comparisons
+  }
   constexpr double unit = 0x1p-53;
   for (const HalfPlane& h : tess.GetWindow().EffectiveConstraints())
   {

@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -102,6 +103,45 @@ Point2 crossing(const HalfPlane& p, const HalfPlane& q)
     difference_of_products(u.c, v.a, v.c, u.a) / d };
 }
 
+Box2 EmptyBox()
+{
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  return { inf, -inf, inf, -inf };
+}
+
+// The box that Window::CertainlyContains tests against, for an axis-aligned rectangle: each side
+// is the constraint's line (-c / a, rounded once) moved inwards by 2^-40 of (its coordinate's
+// magnitude + the rectangle's side). The rounding of that line, and that of c.x - error (or of
+// c.x + error) in the test, are a few ulps of numbers of that size, far less than the margin: so
+// a point that passes is strictly inside. (A result of the test's subtraction that is subnormal is
+// exact.) A rectangle too small for the margin to be a normal number gets the empty box; an
+// overflowing one gets infinities or NaNs, which fail every comparison.
+Box2 CertainInterior(const std::vector<HalfPlane>& effective)
+{
+  Box2 line = EmptyBox(); // filled below: each axis has one lower and one upper constraint
+  for (const HalfPlane& h : effective)
+  {
+    if (h.b == 0.0)
+    {
+      (h.a > 0.0 ? line.XMax : line.XMin) = -h.c / h.a;
+    }
+    else
+    {
+      (h.b > 0.0 ? line.YMax : line.YMin) = -h.c / h.b;
+    }
+  }
+  const double width = line.XMax - line.XMin, height = line.YMax - line.YMin;
+  constexpr double smallest = 0x1p-960; // the margins below stay normal numbers
+  if (!(width > smallest) || !(height > smallest))
+  {
+    return EmptyBox();
+  }
+  constexpr double margin = 0x1p-40;
+  return { line.XMin + margin * (std::fabs(line.XMin) + width),
+    line.XMax - margin * (std::fabs(line.XMax) + width),
+    line.YMin + margin * (std::fabs(line.YMin) + height),
+    line.YMax - margin * (std::fabs(line.YMax) + height) };
+}
 } // namespace
 
 Window::Window(const std::vector<HalfPlane>& constraints)
@@ -237,6 +277,7 @@ Window::Window(const std::vector<HalfPlane>& constraints)
   {
     this->Corners.push_back(crossing(this->Effective[(k + m - 1) % m], this->Effective[k]));
   }
+  this->Interior = this->IsAxisAlignedRectangle() ? CertainInterior(this->Effective) : EmptyBox();
 }
 
 Window Window::Rectangle(double xmin, double xmax, double ymin, double ymax)

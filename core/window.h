@@ -46,11 +46,23 @@ public:
   double Area() const;
   bool IsAxisAlignedRectangle() const;
 
+  /// Whether every point within `error` of c in each coordinate lies strictly inside the window,
+  /// by a test against a box inside it: true only when that is certain, false when the test
+  /// cannot tell (also for every point when the window is not an axis-aligned rectangle). A few
+  /// comparisons instead of an exact test per constraint, for the many points far from the
+  /// window's edges.
+  bool CertainlyContains(const Point2& c, double error) const
+  {
+    return c.x - error > this->Interior.XMin && c.x + error < this->Interior.XMax &&
+      c.y - error > this->Interior.YMin && c.y + error < this->Interior.YMax;
+  }
+
 private:
   std::vector<HalfPlane> Effective;
   std::vector<std::size_t> EffectiveInputIds;
   std::vector<std::size_t> RedundantInputIds;
   std::vector<Point2> Corners;
+  Box2 Interior; ///< CertainlyContains' box (empty, so that it never passes, if not a rectangle)
 };
 
 } // namespace tessera

@@ -477,6 +477,66 @@ TEST(Window, ContainsIsExact)
   EXPECT_LT(inside, checked - checked / 10);
 }
 
+// CertainlyContains: whenever it says yes, every point of the square of half-side `error` around
+// c is strictly inside (its four corners, checked with exact rationals: the window is a
+// rectangle). Rectangles of several scales and offsets (2^30, 1e-9, 1e9), written with unit and
+// non-unit coefficients (the line of 3x - 1 < 0 is not a double); centres anywhere, on the edges
+// and an ulp either side; errors from 0 to large. It must also say yes for most points well inside
+// (it is a fast path, not a test that never passes), and never for a window that is not a
+// rectangle.
+TEST(Window, CertainlyContainsOnlyWhenEveryNearbyPointIsInside)
+{
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> u(0, 1);
+  int certified = 0, wellInside = 0, wellInsideCertified = 0;
+  for (int trial = 0; trial < 200; ++trial)
+  {
+    const double scale = trial % 4 == 0 ? 1e-9 : trial % 4 == 1 ? 1e9 : 1.0;
+    const double offset = trial % 3 == 0 ? std::ldexp(1.0, 30) * scale : 0.0;
+    const double k = trial % 2 == 0 ? 1.0 : 3.0; // constraint coefficients
+    const double x0 = offset + u(rng) * scale, x1 = x0 + (0.5 + u(rng)) * scale;
+    const double y0 = -offset - u(rng) * scale, y1 = y0 + (0.5 + u(rng)) * scale;
+    const std::vector<HalfPlane> hs{
+      { -k, 0, k * x0 }, { k, 0, -k * x1 }, { 0, -k, k * y0 }, { 0, k, -k * y1 }
+    };
+    const Window w(hs);
+    for (int s = 0; s < 200; ++s)
+    {
+      Point2 c{ x0 + (u(rng) * 1.2 - 0.1) * (x1 - x0), y0 + (u(rng) * 1.2 - 0.1) * (y1 - y0) };
+      if (s % 4 == 1)
+      {
+        c.x = s % 8 == 1 ? x0 : x1; // on an edge (up to k's rounding), maybe an ulp off
+        c.x = std::nextafter(c.x, u(rng) < 0.5 ? -1e300 : 1e300);
+      }
+      const double error = s % 5 == 0 ? 0.0 : std::ldexp(u(rng), -int(u(rng) * 60)) * scale;
+      const bool certain = w.CertainlyContains(c, error);
+      bool exact = true;
+      for (const double dx : { -1.0, 1.0 })
+      {
+        for (const double dy : { -1.0, 1.0 })
+        {
+          const mpq_class px = Q(c.x) + dx * Q(error), py = Q(c.y) + dy * Q(error);
+          for (const HalfPlane& h : hs)
+          {
+            exact = exact && Q(h.a) * px + Q(h.b) * py + Q(h.c) < 0;
+          }
+        }
+      }
+      ASSERT_TRUE(!certain || exact) << "trial " << trial << " sample " << s;
+      certified += certain;
+      const bool deep = c.x > x0 + 0.01 * (x1 - x0) && c.x < x1 - 0.01 * (x1 - x0) &&
+        c.y > y0 + 0.01 * (y1 - y0) && c.y < y1 - 0.01 * (y1 - y0) && error < 1e-3 * scale;
+      wellInside += deep;
+      wellInsideCertified += deep && certain;
+    }
+  }
+  EXPECT_GT(certified, 0);
+  EXPECT_GT(wellInsideCertified, wellInside * 9 / 10);
+  // A triangle: never certain, even at its centroid with no error.
+  const Window triangle({ { -1, 0, 0 }, { 0, -1, 0 }, { 1, 1, -1 } });
+  EXPECT_FALSE(triangle.CertainlyContains({ 0.25, 0.25 }, 0.0));
+}
+
 TEST(Window, ExtremeCoefficients)
 {
   // Constraints scaled by huge or tiny factors describe (nearly) the same window; with powers of
