@@ -69,10 +69,28 @@ inline std::uint32_t GridCell(double scaled, std::uint32_t cells)
   return scaled > 0.0 ? std::uint32_t(std::min(scaled, double(cells - 1))) : 0U;
 }
 
+/// Whether some vertex equals the one before it, cyclically (the last vertex counts as the one
+/// before the first). A pass without branches: almost no polygon has a repeat, and the compaction
+/// below copies every vertex (and tag) to find out.
+inline bool HasRepeatedVertex(const std::vector<Point2>& polygon)
+{
+  const std::size_t n = polygon.size();
+  bool repeated = n > 1 && polygon[0] == polygon[n - 1];
+  for (std::size_t k = 1; k < n; ++k)
+  {
+    repeated |= polygon[k] == polygon[k - 1];
+  }
+  return repeated;
+}
+
 /// Drops consecutive repeats of a vertex, cyclically (the last vertex equal to the first too):
 /// the coinciding rounded ends of a clipped or assembled polygon.
 inline void DropRepeatedVertices(std::vector<Point2>& polygon)
 {
+  if (!HasRepeatedVertex(polygon))
+  {
+    return;
+  }
   polygon.erase(std::unique(polygon.begin(), polygon.end()), polygon.end());
   while (polygon.size() > 1 && polygon.front() == polygon.back())
   {
@@ -87,6 +105,10 @@ void DropRepeatedVertices(std::vector<Point2>& polygon,
   std::vector<Tag>& tags,
   std::vector<std::pair<Tag, Tag>>* merged = nullptr)
 {
+  if (!HasRepeatedVertex(polygon))
+  {
+    return;
+  }
   std::size_t kept = 0;
   for (std::size_t k = 0; k < polygon.size(); ++k)
   {
