@@ -158,14 +158,21 @@ bool InteriorTile(const Tess& tess,
 {
   const auto& org = tess.Origin();
   const std::size_t n = ring.size();
-  std::int32_t previous = faces.Label(ring[n - 1] / 3); // the face right of ring[0]
+  // The polygon starts at the edge to the smallest neighbour id: find it first, then walk the
+  // ring from there, so that the vertices are written in their final order (no rotation).
   std::size_t first = 0;
+  for (std::size_t k = 1; k < n; ++k)
+  {
+    first = org[Tess::Next(ring[k])] < org[Tess::Next(ring[first])] ? k : first;
+  }
   polygon.resize(n);
   if (labels)
   {
     labels->resize(n);
   }
-  for (std::size_t k = 0; k < n; ++k)
+  std::size_t k = first;
+  std::int32_t previous = faces.Label(ring[k == 0 ? n - 1 : k - 1] / 3); // right of ring[k]
+  for (std::size_t written = 0; written < n; ++written)
   {
     const std::int32_t label = faces.Label(ring[k] / 3);
     if (label < 0 || label == previous)
@@ -177,24 +184,19 @@ bool InteriorTile(const Tess& tess,
     {
       return false;
     }
-    polygon[k] = view.Centre; // the tile edge along ring[k] starts at the centre on its right
+    polygon[written] = view.Centre; // the tile edge along ring[k] starts at the centre on its right
     if (labels)
     {
-      (*labels)[k] = previous;
-    }
-    if (org[Tess::Next(ring[k])] < org[Tess::Next(ring[first])])
-    {
-      first = k;
+      (*labels)[written] = previous;
     }
     previous = label;
+    k = k + 1 == n ? 0 : k + 1;
   }
-  std::rotate(polygon.begin(), polygon.begin() + std::ptrdiff_t(first), polygon.end());
   if (!labels)
   {
     DropRepeatedVertices(polygon);
     return true;
   }
-  std::rotate(labels->begin(), labels->begin() + std::ptrdiff_t(first), labels->end());
   DropRepeatedVertices(polygon, *labels, sameCentre);
   return true;
 }
