@@ -76,9 +76,9 @@ TessellationDual::TessellationDual(const DirichletTessellation& tessellation)
     return;
   }
   this->OrderPoints();
-  std::vector<std::uint8_t> candidate;
-  this->ComputeTriangleCentres(candidate);
-  this->LabelFaces(candidate);
+  std::vector<std::uint8_t> cocircular;
+  this->ComputeTriangleCentres(cocircular);
+  this->LabelFaces(cocircular);
   this->ComputeCentres();
 }
 
@@ -164,10 +164,10 @@ void TessellationDual::OrderPoints()
 
 // Every real triangle's centre (canonical: from its ids in ascending order), error bound and
 // inside-the-window flag (right for every face that is a single triangle; ComputeCentres redoes
-// the degenerate ones), and whether a real neighbour with a larger index might be co-circular
-// with it (Candidate; left empty when the build knows there are none). Chunks of triangles in
-// parallel, each writing its own entries.
-void TessellationDual::ComputeTriangleCentres(std::vector<std::uint8_t>& candidate)
+// the degenerate ones), and which of its real neighbours with a larger index are exactly
+// co-circular with it (cocircular: bit k for the neighbour across edge k; left empty when the
+// build knows there are none). Chunks of triangles in parallel, each writing its own entries.
+void TessellationDual::ComputeTriangleCentres(std::vector<std::uint8_t>& cocircular)
 {
   const std::int32_t triangles = std::int32_t(this->Tess.Origin().size() / 3);
   this->Data.resize(std::size_t(triangles)); // not initialised: CentresOf writes every entry
@@ -179,12 +179,12 @@ void TessellationDual::ComputeTriangleCentres(std::vector<std::uint8_t>& candida
   const std::vector<std::int32_t> bounds =
     ChunkBounds(triangles, ThreadCount(triangles, MinimumTrianglesPerThread));
   RunChunks(bounds.size() - 1, [&](std::size_t k) { this->CentresOf(bounds[k], bounds[k + 1]); });
-  // Known free of co-circular triangles: no candidates at all (LabelFaces has nothing to do).
+  // Known free of co-circular triangles: no tests at all (LabelFaces has nothing to do).
   if (!this->Tess.KnownFreeOfCocircularTriangles())
   {
-    candidate.assign(std::size_t(triangles), 0);
+    cocircular.assign(std::size_t(triangles), 0);
     RunChunks(bounds.size() - 1,
-      [&](std::size_t k) { this->CandidatesOf(bounds[k], bounds[k + 1], candidate.data()); });
+      [&](std::size_t k) { this->CocircularEdgesOf(bounds[k], bounds[k + 1], cocircular.data()); });
   }
 }
 
@@ -226,9 +226,9 @@ void TessellationDual::CentresOf(std::int32_t begin, std::int32_t end)
   }
 }
 
-void TessellationDual::CandidatesOf(std::int32_t begin,
+void TessellationDual::CocircularEdgesOf(std::int32_t begin,
   std::int32_t end,
-  std::uint8_t* candidate) const
+  std::uint8_t* cocircular) const
 {
   const std::int32_t* org = this->Tess.Origin().data();
   const std::int32_t* twin = this->Tess.Twin().data();
@@ -252,17 +252,17 @@ void TessellationDual::CandidatesOf(std::int32_t begin,
     {
       continue;
     }
-    bool any = false;
+    std::uint8_t bits = 0;
     for (std::int32_t k = 0; k < 3; ++k)
     {
       const std::int32_t f = twin[3 * t + k];
       // A real neighbour (its vertex opposite the shared edge is not the ghost) further on.
       if (f / 3 > t && org[Tess::Prev(f)] >= 0 && this->Cocircular(t, f))
       {
-        any = true;
+        bits |= std::uint8_t(1U << k);
       }
     }
-    candidate[t] = any ? 1 : 0;
+    cocircular[t] = bits;
   }
 }
 
@@ -287,8 +287,11 @@ bool TessellationDual::Cocircular(std::int32_t t, std::int32_t f) const
 // Ghosts (and free triangles) are their own faces, -2 - t. A real triangle is a face of its own
 // (as CentresOf labelled it) unless it is exactly co-circular with a neighbour: then the whole
 // connected cluster on that circle is one face, labelled by its smallest triangle index. Only a
-// candidate (ComputeTriangleCentres) can start a cluster, since the cluster's smallest triangle
-// has a co-circular neighbour further on.
+// triangle with a co-circular neighbour further on can start a cluster (its smallest triangle
+// has one). The floods read the co-circular edges ComputeTriangleCentres found (each adjacent
+// pair was tested once, from its smaller triangle) instead of testing the pairs again: on a
+// lattice, where every pair across a square's diagonal is co-circular, those tests were exact
+// evaluations.
 //
 // Chunks of triangles find clusters in parallel, each flooding from its candidates and keeping a
 // cluster only if no member comes before the triangle it started from (its smallest index, so
@@ -303,17 +306,18 @@ struct TessellationDual::ClusterList
   std::vector<std::int32_t> Polygons; ///< each anticlockwise from its smallest point id
 };
 
-void TessellationDual::LabelFaces(const std::vector<std::uint8_t>& candidate)
+void TessellationDual::LabelFaces(const std::vector<std::uint8_t>& cocircular)
 {
   const std::int32_t triangles = std::int32_t(this->Data.size());
-  if (std::find(candidate.begin(), candidate.end(), std::uint8_t(1)) == candidate.end())
+  if (std::none_of(
+        cocircular.begin(), cocircular.end(), [](std::uint8_t bits) { return bits != 0; }))
   {
     return;
   }
   const std::vector<std::int32_t> bounds = ChunkBounds(triangles, ThreadCount(triangles));
   std::vector<ClusterList> found(bounds.size() - 1);
   RunChunks(bounds.size() - 1,
-    [&](std::size_t k) { this->FindClusters(bounds[k], bounds[k + 1], candidate, found[k]); });
+    [&](std::size_t k) { this->FindClusters(bounds[k], bounds[k + 1], cocircular, found[k]); });
   for (const ClusterList& list : found)
   {
     for (std::size_t c = 0; c < list.Roots.size(); ++c)
@@ -337,7 +341,7 @@ void TessellationDual::LabelFaces(const std::vector<std::uint8_t>& candidate)
 
 void TessellationDual::FindClusters(std::int32_t begin,
   std::int32_t end,
-  const std::vector<std::uint8_t>& candidate,
+  const std::vector<std::uint8_t>& cocircular,
   ClusterList& found) const
 {
   const auto& org = this->Tess.Origin();
@@ -346,12 +350,11 @@ void TessellationDual::FindClusters(std::int32_t begin,
   std::vector<std::int32_t> cluster, stack, boundary;
   for (std::int32_t t = begin; t < end; ++t)
   {
-    if (!candidate[t] || visited[t])
+    if (!cocircular[t] || visited[t])
     {
       continue;
     }
-    // Flood t's circle through real neighbours (their vertex opposite the shared edge is not
-    // the ghost).
+    // Flood t's circle through the co-circular edges (each recorded by its smaller triangle).
     visited[t] = 1;
     cluster.assign(1, t);
     stack.assign(1, t);
@@ -364,7 +367,8 @@ void TessellationDual::FindClusters(std::int32_t begin,
       {
         const std::int32_t f = twin[3 * s + k];
         const std::int32_t u = f / 3;
-        if (!visited[u] && org[Tess::Prev(f)] >= 0 && this->Cocircular(t, f))
+        const bool across = u > s ? cocircular[s] >> k & 1U : cocircular[u] >> (f - 3 * u) & 1U;
+        if (across && !visited[u])
         {
           visited[u] = 1;
           cluster.push_back(u);

@@ -144,15 +144,15 @@ public:
 
 private:
   void OrderPoints();
-  void ComputeTriangleCentres(std::vector<std::uint8_t>& candidate);
+  void ComputeTriangleCentres(std::vector<std::uint8_t>& cocircular);
   void CentresOf(std::int32_t begin, std::int32_t end);
-  void CandidatesOf(std::int32_t begin, std::int32_t end, std::uint8_t* candidate) const;
+  void CocircularEdgesOf(std::int32_t begin, std::int32_t end, std::uint8_t* cocircular) const;
   bool Cocircular(std::int32_t t, std::int32_t f) const;
-  void LabelFaces(const std::vector<std::uint8_t>& candidate);
+  void LabelFaces(const std::vector<std::uint8_t>& cocircular);
   struct ClusterList; // co-circular clusters found by one chunk of triangles (tiles.cpp)
   void FindClusters(std::int32_t begin,
     std::int32_t end,
-    const std::vector<std::uint8_t>& candidate,
+    const std::vector<std::uint8_t>& cocircular,
     ClusterList& found) const;
   void RecordCluster(std::int32_t root, const std::int32_t* polygon, std::int32_t size);
   void ComputeCentres();
