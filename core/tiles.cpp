@@ -138,7 +138,7 @@ void TessellationDual::OrderPoints()
   }
   this->Order.resize(total);
   this->OrderEdge.resize(total);
-  const std::uint64_t* earlier = seen[0].data();
+  std::uint64_t* const earlier = seen[0].data(); // the vertices seen by chunks before k
   std::size_t count = 0;
   for (std::size_t k = 0; k < chunks; ++k)
   {
@@ -151,7 +151,7 @@ void TessellationDual::OrderPoints()
     }
     for (std::size_t w = 0; k > 0 && w < words; ++w)
     {
-      seen[0][w] |= seen[k][w];
+      earlier[w] |= seen[k][w];
     }
   }
   this->Order.resize(count);
