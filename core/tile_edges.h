@@ -201,6 +201,88 @@ bool InteriorTile(const Tess& tess,
   return true;
 }
 
+/// InteriorTile where degenerate faces straddle ring edges (a lattice, say): those edges are
+/// diagonals, the same face on both sides, and no tile edge. When every face around the point is
+/// real with its centre strictly inside the window, the polygon is the centre on the right of
+/// each edge that is not a diagonal, from the one to the smallest neighbour id, with repeats
+/// dropped: what RingTileEdges (which skips diagonals and never starts at one) and
+/// AssemblePolygon give. Returns the number of sides (those edges), or 0 for any other point
+/// (polygon unspecified). labels and sameCentre as in InteriorTile.
+///
+///        c1 ------- c2          the faces around v: A (two triangles, diagonal v-d), B, C, ...
+///         |  A   d  |           edges v-a, v-b: sides, centre on the right of each
+///         |    /    |           edge v-d: A on both sides, no side
+///         a--v------b
+template<class Faces>
+std::int32_t InteriorTileAcrossDiagonals(const Tess& tess,
+  const Faces& faces,
+  const std::vector<std::int32_t>& ring,
+  std::vector<Point2>& polygon,
+  std::vector<std::int32_t>* labels = nullptr,
+  std::vector<std::pair<std::int32_t, std::int32_t>>* sameCentre = nullptr)
+{
+  const auto& org = tess.Origin();
+  const std::size_t n = ring.size();
+  // The start, and whether every face is real and inside (each is on the right of some edge).
+  std::size_t first = n;
+  std::int32_t previous = faces.Label(ring[n - 1] / 3); // the face right of ring[0]
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    const std::int32_t label = faces.Label(ring[k] / 3);
+    if (label < 0)
+    {
+      return 0; // a ghost: an unbounded tile edge
+    }
+    if (label != previous)
+    {
+      if (!faces.View(previous).Inside)
+      {
+        return 0;
+      }
+      if (first == n || org[Tess::Next(ring[k])] < org[Tess::Next(ring[first])])
+      {
+        first = k;
+      }
+    }
+    previous = label;
+  }
+  if (first == n)
+  {
+    return 0;
+  }
+  polygon.clear();
+  if (labels)
+  {
+    labels->clear();
+  }
+  std::size_t k = first;
+  previous = faces.Label(ring[k == 0 ? n - 1 : k - 1] / 3);
+  for (std::size_t step = 0; step < n; ++step)
+  {
+    const std::int32_t label = faces.Label(ring[k] / 3);
+    if (label != previous)
+    {
+      polygon.push_back(faces.View(previous).Centre);
+      if (labels)
+      {
+        labels->push_back(previous);
+      }
+    }
+    previous = label;
+    k = k + 1 == n ? 0 : k + 1;
+  }
+  const std::int32_t sides = std::int32_t(polygon.size());
+  if (labels)
+  {
+    DropRepeatedVertices(polygon, *labels, sameCentre);
+  }
+  else
+  {
+    DropRepeatedVertices(polygon);
+  }
+  return sides;
+}
+
 // The clipped edges of v's tile, anticlockwise from the edge to its smallest
 // neighbour id (so the polygon does not depend on where the ring starts, nor on
 // the diagonals stored in degenerate faces). ring: the half-edges leaving v (CollectRing).
@@ -245,9 +327,10 @@ void RingTileEdges(const Tess& tess,
 }
 
 /// v's tile polygon, ring being its half-edges (CollectRing): an interior tile straight from the
-/// ring of centres (InteriorTile, the same bits; labels and sameCentre as there), any other from
-/// its clipped edges, which stay in edges. interior says which; returns the number of sides. The
-/// full derivation and the local one (local_tiles.cpp) both make their tiles here.
+/// ring of centres (InteriorTile, or InteriorTileAcrossDiagonals where degenerate faces straddle
+/// ring edges: the same bits; labels and sameCentre as there), any other from its clipped edges,
+/// which stay in edges. interior says which; returns the number of sides. The full derivation and
+/// the local one (local_tiles.cpp) both make their tiles here.
 template<class Faces>
 std::int32_t RingTilePolygon(const Tess& tess,
   const Faces& faces,
@@ -263,6 +346,13 @@ std::int32_t RingTilePolygon(const Tess& tess,
   if (interior)
   {
     return std::int32_t(ring.size());
+  }
+  const std::int32_t sides =
+    InteriorTileAcrossDiagonals(tess, faces, ring, polygon, labels, sameCentre);
+  if (sides > 0)
+  {
+    interior = true;
+    return sides;
   }
   RingTileEdges(tess, faces, v, ring, edges);
   return AssemblePolygon(tess, edges, polygon);
