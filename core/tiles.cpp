@@ -7,9 +7,11 @@
 #include "tile_edges.h"
 
 #include <algorithm>
+#include <array>
 #include <climits>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numeric>
 #include <string>
 #include <tuple>
@@ -455,6 +457,30 @@ const std::int32_t* TessellationDual::DegeneratePolygon(std::int32_t face, std::
 // flag from that centre (the other faces have theirs from ComputeTriangleCentres), decided
 // exactly: the rounded centre and its error bound settle almost every face, CircumcentreSide the
 // rest.
+namespace
+{
+// The three smallest ids of a degenerate face's polygon (which starts at its smallest), ascending:
+// the points its centre is computed from. One pass instead of a partial sort (a heap).
+std::array<std::int32_t, 3> SmallestThree(const std::int32_t* polygon, std::int32_t size)
+{
+  std::int32_t second = std::numeric_limits<std::int32_t>::max(), third = second;
+  for (std::int32_t k = 1; k < size; ++k)
+  {
+    const std::int32_t id = polygon[k];
+    if (id < second)
+    {
+      third = second;
+      second = id;
+    }
+    else if (id < third)
+    {
+      third = id;
+    }
+  }
+  return { polygon[0], second, third };
+}
+} // namespace
+
 void TessellationDual::ComputeCentres()
 {
   const std::vector<Point2>& pts = this->Tess.Points();
@@ -468,8 +494,7 @@ void TessellationDual::ComputeCentres()
         const std::int32_t rep = this->DegenerateReps[r];
         std::int32_t size = 0;
         const std::int32_t* polygon = this->DegeneratePolygon(rep, size);
-        std::int32_t ids[3] = { 0, 0, 0 };
-        std::partial_sort_copy(polygon, polygon + size, ids, ids + 3);
+        const std::array<std::int32_t, 3> ids = SmallestThree(polygon, size);
         double error = 0.0;
         TriangleData& data = this->Data[rep];
         const Point2 centre = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], error);
