@@ -817,8 +817,7 @@ void ReserveGraph(ContiguityGraph& graph, std::size_t count)
 // as the contiguity tests.
 void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* graph) const
 {
-  const std::vector<std::pair<std::int32_t, std::int32_t>> half =
-    graph ? this->HalfNeighbours() : std::vector<std::pair<std::int32_t, std::int32_t>>();
+  const bool half = graph && this->AnyHalfNeighbours();
   const std::int32_t count = std::int32_t(this->Order.size());
   const std::vector<std::int32_t> bounds =
     ChunkBounds(count, ThreadCount(count, MinimumTilesPerThread));
@@ -917,39 +916,54 @@ void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* g
   parallel::RunSideBySide(chunks > 1 && graph && (tiles || mesh), joinTiles, joinGraph);
 }
 
-// Half-neighbours: non-adjacent vertices of a degenerate face whose centre is in the window,
-// as sorted pairs (smaller id first).
-std::vector<std::pair<std::int32_t, std::int32_t>> TessellationDual::HalfNeighbours() const
+// Half-neighbours are the non-adjacent vertices of a degenerate face whose centre is in the
+// window (it has 4 or more vertices, so it has some): is there such a face at all?
+bool TessellationDual::AnyHalfNeighbours() const
 {
-  std::vector<std::pair<std::int32_t, std::int32_t>> half;
-  for (const std::int32_t rep : this->DegenerateReps)
+  return std::any_of(this->DegenerateReps.begin(),
+    this->DegenerateReps.end(),
+    [&](std::int32_t rep) { return this->Data[rep].Inside(); });
+}
+
+// v's half-neighbours with larger ids, appended to around with Kind 1: of each degenerate face
+// around v (a run of ring triangles with one label, taken at its first) whose centre is in the
+// window, the vertices other than v and its two neighbours along the face's polygon. A pair is
+// a diagonal of one face only (a diagonal of a convex face lies inside it), so nothing repeats.
+void TessellationDual::AppendHalfNeighboursOf(std::int32_t v,
+  const std::vector<std::int32_t>& ring,
+  std::vector<std::pair<std::int32_t, std::uint8_t>>& around) const
+{
+  std::int32_t previous = this->Data[ring.back() / 3].Face;
+  for (const std::int32_t e : ring)
   {
-    if (!this->Data[rep].Inside())
-    {
-      continue;
-    }
+    const std::int32_t face = this->Data[e / 3].Face;
+    const bool first = face != previous;
+    previous = face;
     std::int32_t size = 0;
-    const std::int32_t* polygon = this->DegeneratePolygon(rep, size);
-    for (std::int32_t x = 0; x < size; ++x)
+    const std::int32_t* polygon = first && face >= 0 && this->Data[face].Inside()
+      ? this->DegeneratePolygon(face, size)
+      : nullptr;
+    if (!polygon)
     {
-      for (std::int32_t y = x + 2; y < size; ++y)
+      continue; // not the start of a run, a ghost, outside, or a single triangle
+    }
+    const std::int32_t at = std::int32_t(std::find(polygon, polygon + size, v) - polygon);
+    for (std::int32_t k = 2; k + 1 < size; ++k)
+    {
+      const std::int32_t j = polygon[(at + k) % size];
+      if (j > v)
       {
-        if (!(x == 0 && y == size - 1))
-        {
-          half.emplace_back(std::min(polygon[x], polygon[y]), std::max(polygon[x], polygon[y]));
-        }
+        around.emplace_back(j, std::uint8_t(1));
       }
     }
   }
-  std::sort(half.begin(), half.end());
-  return half;
 }
 
 // The results for the points Order[begin .. end), appended to tiles and graph (either may be
 // null; tiles' Offsets already has its first 0). Each point's ring is collected once for both.
 void TessellationDual::DeriveOf(std::int32_t begin,
   std::int32_t end,
-  const std::vector<std::pair<std::int32_t, std::int32_t>>& half,
+  bool half,
   TileSet* tiles,
   MeshPart* mesh,
   ContiguityGraph* graph) const
@@ -1157,18 +1171,19 @@ void AppendRingNeighbours(const HalfEdgeArray& org,
 }
 } // namespace
 
-// Point v's contiguities with larger ids, appended to graph. An edge between two distinct real
-// faces whose centres are both inside the window is kept whole (ClipEdge would return it at
-// once); any other edge is clipped. When v's tile polygon was just found interior (TilePolygonOf;
-// a graph alone never sets the flag), every ring edge is such an edge, and without
-// half-neighbours the ring alone gives the list.
+// Point v's contiguities with larger ids, appended to graph (half: whether the tessellation has
+// half-neighbours at all). An edge between two distinct real faces whose centres are both inside
+// the window is kept whole (ClipEdge would return it at once); any other edge is clipped. When v's
+// tile polygon was just found interior (TilePolygonOf; a graph alone never sets the flag), every
+// ring edge is such an edge, and without half-neighbours (so without degenerate faces inside the
+// window, and no diagonals) the ring alone gives the list.
 void TessellationDual::AppendContiguitiesOf(std::int32_t v,
-  const std::vector<std::pair<std::int32_t, std::int32_t>>& half,
+  bool half,
   RingScratch& scratch,
   ContiguityGraph& graph) const
 {
   const auto& org = this->Tess.Origin();
-  if (scratch.Interior && half.empty())
+  if (scratch.Interior && !half)
   {
     AppendRingNeighbours(org, v, scratch.Ring, scratch.Larger, graph);
     return;
@@ -1207,14 +1222,9 @@ void TessellationDual::AppendContiguitiesOf(std::int32_t v,
       }
     }
   }
-  if (!half.empty())
+  if (half && this->Tess.IsTwoDimensional())
   {
-    for (auto at = std::lower_bound(half.begin(), half.end(), std::make_pair(v, std::int32_t(-1)));
-         at != half.end() && at->first == v;
-         ++at)
-    {
-      around.emplace_back(at->second, 1);
-    }
+    this->AppendHalfNeighboursOf(v, scratch.Ring, around);
   }
   std::sort(around.begin(), around.end());
   for (const auto& [j, kind] : around)

@@ -167,18 +167,21 @@ private:
   void Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* graph) const;
   void DeriveOf(std::int32_t begin,
     std::int32_t end,
-    const std::vector<std::pair<std::int32_t, std::int32_t>>& half,
+    bool half,
     TileSet* tiles,
     MeshPart* mesh,
     ContiguityGraph* graph) const;
-  std::vector<std::pair<std::int32_t, std::int32_t>> HalfNeighbours() const;
+  bool AnyHalfNeighbours() const;
+  void AppendHalfNeighboursOf(std::int32_t v,
+    const std::vector<std::int32_t>& ring,
+    std::vector<std::pair<std::int32_t, std::uint8_t>>& around) const;
   std::int32_t TilePolygonOf(std::int32_t v, RingScratch& scratch, bool withLabels) const;
   void AppendTileOf(std::int32_t v, RingScratch& scratch, TileSet& tiles) const;
   void AppendMeshTileOf(std::int32_t v, RingScratch& scratch, MeshPart& mesh) const;
   std::int32_t MeshVertexOf(const Point2& p, const RingScratch& scratch, MeshPart& mesh) const;
   void NumberFaceVertices(std::vector<Point2>& vertices);
   void AppendContiguitiesOf(std::int32_t v,
-    const std::vector<std::pair<std::int32_t, std::int32_t>>& half,
+    bool half,
     RingScratch& scratch,
     ContiguityGraph& graph) const;
   const std::int32_t* DegeneratePolygon(std::int32_t face, std::int32_t& size) const;
