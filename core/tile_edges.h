@@ -140,81 +140,25 @@ inline void CollectRing(const Tess& tess, std::int32_t vertexEdge, std::vector<s
 }
 
 /// The common case, without clipping: every face around the point (ring: its half-edges,
-/// CollectRing) is a real triangle or merged face whose centre is strictly inside the window, and
-/// no degenerate face straddles a ring edge. Then every tile edge runs from the centre on its
-/// right to the centre on its left, inside the window, so the polygon is the ring of centres and
-/// each ring edge is one side: exactly what RingTileEdges and AssemblePolygon give (same start, at
-/// the edge to the smallest neighbour id; same dropping of rounded repeats), for a fraction of the
-/// cost. Returns false, polygon unspecified, for any other point. With labels, also gives the
-/// face of each polygon vertex, and appends to sameCentre the (kept, dropped) faces of each
-/// dropped repeat: distinct faces whose rounded centres coincide.
-template<class Faces>
-bool InteriorTile(const Tess& tess,
-  const Faces& faces,
-  const std::vector<std::int32_t>& ring,
-  std::vector<Point2>& polygon,
-  std::vector<std::int32_t>* labels = nullptr,
-  std::vector<std::pair<std::int32_t, std::int32_t>>* sameCentre = nullptr)
-{
-  const auto& org = tess.Origin();
-  const std::size_t n = ring.size();
-  // The polygon starts at the edge to the smallest neighbour id: find it first, then walk the
-  // ring from there, so that the vertices are written in their final order (no rotation).
-  std::size_t first = 0;
-  for (std::size_t k = 1; k < n; ++k)
-  {
-    first = org[Tess::Next(ring[k])] < org[Tess::Next(ring[first])] ? k : first;
-  }
-  polygon.resize(n);
-  if (labels)
-  {
-    labels->resize(n);
-  }
-  std::size_t k = first;
-  std::int32_t previous = faces.Label(ring[k == 0 ? n - 1 : k - 1] / 3); // right of ring[k]
-  for (std::size_t written = 0; written < n; ++written)
-  {
-    const std::int32_t label = faces.Label(ring[k] / 3);
-    if (label < 0 || label == previous)
-    {
-      return false; // a ghost (unbounded tile edge) or a degenerate face's diagonal
-    }
-    const FaceView view = faces.View(previous);
-    if (!view.Inside)
-    {
-      return false;
-    }
-    polygon[written] = view.Centre; // the tile edge along ring[k] starts at the centre on its right
-    if (labels)
-    {
-      (*labels)[written] = previous;
-    }
-    previous = label;
-    k = k + 1 == n ? 0 : k + 1;
-  }
-  if (!labels)
-  {
-    DropRepeatedVertices(polygon);
-    return true;
-  }
-  DropRepeatedVertices(polygon, *labels, sameCentre);
-  return true;
-}
-
-/// InteriorTile where degenerate faces straddle ring edges (a lattice, say): those edges are
-/// diagonals, the same face on both sides, and no tile edge. When every face around the point is
-/// real with its centre strictly inside the window, the polygon is the centre on the right of
-/// each edge that is not a diagonal, from the one to the smallest neighbour id, with repeats
-/// dropped: what RingTileEdges (which skips diagonals and never starts at one) and
-/// AssemblePolygon give. Returns the number of sides (those edges), or 0 for any other point
-/// (polygon unspecified). labels and sameCentre as in InteriorTile.
+/// CollectRing) is a real triangle or merged face whose centre is strictly inside the window.
+/// Then every tile edge runs from the centre on its right to the centre on its left, inside the
+/// window, so the polygon is the ring of centres: exactly what RingTileEdges and AssemblePolygon
+/// give (same start, at the edge to the smallest neighbour id; same dropping of rounded repeats),
+/// for a fraction of the cost. A ring edge with one degenerate face on both sides (a lattice, say)
+/// is a diagonal of that face, no tile edge: it is skipped, and never the start, as RingTileEdges
+/// does.
 ///
 ///        c1 ------- c2          the faces around v: A (two triangles, diagonal v-d), B, C, ...
 ///         |  A   d  |           edges v-a, v-b: sides, centre on the right of each
 ///         |    /    |           edge v-d: A on both sides, no side
 ///         a--v------b
+///
+/// Returns the number of sides (the ring edges that are not diagonals), or 0, polygon
+/// unspecified, for any other point. With labels, also gives the face of each polygon vertex, and
+/// appends to sameCentre the (kept, dropped) faces of each dropped repeat: distinct faces whose
+/// rounded centres coincide.
 template<class Faces>
-std::int32_t InteriorTileAcrossDiagonals(const Tess& tess,
+std::int32_t InteriorTile(const Tess& tess,
   const Faces& faces,
   const std::vector<std::int32_t>& ring,
   std::vector<Point2>& polygon,
@@ -223,7 +167,8 @@ std::int32_t InteriorTileAcrossDiagonals(const Tess& tess,
 {
   const auto& org = tess.Origin();
   const std::size_t n = ring.size();
-  // The start, and whether every face is real and inside (each is on the right of some edge).
+  // The start, and whether every face is real and inside (each is on the right of some edge):
+  // first, so that the vertices are then written in their final order (no rotation).
   std::size_t first = n;
   std::int32_t previous = faces.Label(ring[n - 1] / 3); // the face right of ring[0]
   for (std::size_t k = 0; k < n; ++k)
@@ -250,11 +195,12 @@ std::int32_t InteriorTileAcrossDiagonals(const Tess& tess,
   {
     return 0;
   }
-  polygon.clear();
+  polygon.resize(n);
   if (labels)
   {
-    labels->clear();
+    labels->resize(n);
   }
+  std::size_t sides = 0;
   std::size_t k = first;
   previous = faces.Label(ring[k == 0 ? n - 1 : k - 1] / 3);
   for (std::size_t step = 0; step < n; ++step)
@@ -262,25 +208,26 @@ std::int32_t InteriorTileAcrossDiagonals(const Tess& tess,
     const std::int32_t label = faces.Label(ring[k] / 3);
     if (label != previous)
     {
-      polygon.push_back(faces.View(previous).Centre);
+      // The tile edge along ring[k] starts at the centre on its right.
+      polygon[sides] = faces.View(previous).Centre;
       if (labels)
       {
-        labels->push_back(previous);
+        (*labels)[sides] = previous;
       }
+      ++sides;
     }
     previous = label;
     k = k + 1 == n ? 0 : k + 1;
   }
-  const std::int32_t sides = std::int32_t(polygon.size());
-  if (labels)
-  {
-    DropRepeatedVertices(polygon, *labels, sameCentre);
-  }
-  else
+  polygon.resize(sides);
+  if (!labels)
   {
     DropRepeatedVertices(polygon);
+    return std::int32_t(sides);
   }
-  return sides;
+  labels->resize(sides);
+  DropRepeatedVertices(polygon, *labels, sameCentre);
+  return std::int32_t(sides);
 }
 
 // The clipped edges of v's tile, anticlockwise from the edge to its smallest
@@ -327,10 +274,9 @@ void RingTileEdges(const Tess& tess,
 }
 
 /// v's tile polygon, ring being its half-edges (CollectRing): an interior tile straight from the
-/// ring of centres (InteriorTile, or InteriorTileAcrossDiagonals where degenerate faces straddle
-/// ring edges: the same bits; labels and sameCentre as there), any other from its clipped edges,
-/// which stay in edges. interior says which; returns the number of sides. The full derivation and
-/// the local one (local_tiles.cpp) both make their tiles here.
+/// ring of centres (InteriorTile, the same bits; labels and sameCentre as there), any other from
+/// its clipped edges, which stay in edges. interior says which; returns the number of sides. The
+/// full derivation and the local one (local_tiles.cpp) both make their tiles here.
 template<class Faces>
 std::int32_t RingTilePolygon(const Tess& tess,
   const Faces& faces,
@@ -342,16 +288,10 @@ std::int32_t RingTilePolygon(const Tess& tess,
   std::vector<std::int32_t>* labels = nullptr,
   std::vector<std::pair<std::int32_t, std::int32_t>>* sameCentre = nullptr)
 {
-  interior = InteriorTile(tess, faces, ring, polygon, labels, sameCentre);
+  const std::int32_t sides = InteriorTile(tess, faces, ring, polygon, labels, sameCentre);
+  interior = sides > 0;
   if (interior)
   {
-    return std::int32_t(ring.size());
-  }
-  const std::int32_t sides =
-    InteriorTileAcrossDiagonals(tess, faces, ring, polygon, labels, sameCentre);
-  if (sides > 0)
-  {
-    interior = true;
     return sides;
   }
   RingTileEdges(tess, faces, v, ring, edges);
