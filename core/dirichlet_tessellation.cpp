@@ -67,15 +67,11 @@ bool AllFiniteAndInside(const std::vector<Point2>& points,
       boxes[c] = chunkBox;
       finite[c] = allFinite;
     });
-  box = boxes[0];
-  for (std::size_t c = 0; c < chunks; ++c)
+  if (std::find(finite.begin(), finite.end(), 0) != finite.end())
   {
-    if (!finite[c])
-    {
-      return false;
-    }
-    box.Extend(boxes[c]);
+    return false;
   }
+  box = UnionOf(boxes);
   return window.Contains({ box.XMin, box.YMin }) && window.Contains({ box.XMax, box.YMin }) &&
     window.Contains({ box.XMax, box.YMax }) && window.Contains({ box.XMin, box.YMax });
 }

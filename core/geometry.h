@@ -60,6 +60,17 @@ inline Box2 BoundsOf(const Point2* points, std::size_t count)
   return box;
 }
 
+/// The smallest box holding all of boxes (at least one): the join of boxes found in chunks.
+inline Box2 UnionOf(const std::vector<Box2>& boxes)
+{
+  Box2 box = boxes.front();
+  for (std::size_t k = 1; k < boxes.size(); ++k)
+  {
+    box.Extend(boxes[k]);
+  }
+  return box;
+}
+
 /// The cell, 0 .. cells - 1, of a coordinate already scaled to cell units (spatial grids and
 /// curves). NaN and everything below 0 go to cell 0, everything beyond to the last: a box of
 /// subnormal width, or wider than the largest double, makes scales infinite or zero and scaled

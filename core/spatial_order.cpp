@@ -230,12 +230,7 @@ Box2 BoundsOfIds(const std::vector<Point2>& points, const std::vector<std::int32
       }
       boxes[c] = chunkBox;
     });
-  Box2 box = boxes[0];
-  for (const Box2& chunkBox : boxes)
-  {
-    box.Extend(chunkBox);
-  }
-  return box;
+  return UnionOf(boxes);
 }
 } // namespace
 
