@@ -1222,7 +1222,7 @@ void TessellationDual::AppendContiguitiesOf(std::int32_t v,
       }
     }
   }
-  if (half && this->Tess.IsTwoDimensional())
+  if (half) // degenerate faces exist only in two dimensions: scratch.Ring is v's ring
   {
     this->AppendHalfNeighboursOf(v, scratch.Ring, around);
   }

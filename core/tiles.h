@@ -193,8 +193,8 @@ private:
   /// end (OrderPoints), which follows the spatial insertion order, so walking rings in this order
   /// stays in cache.
   UninitializedVector<std::int32_t> Order;
-  UninitializedVector<std::int32_t>
-    OrderEdge; ///< two-dimensional case: a half-edge leaving Order[k]
+  /// Two-dimensional case: a half-edge leaving Order[k].
+  UninitializedVector<std::int32_t> OrderEdge;
   /// Per triangle, together so that a ring walk touches one cache line per triangle: its face
   /// (a representative triangle; -2 - t for a ghost), and for a representative the face's centre
   /// and whether it lies inside the window: Vertex >= 0 (once NumberFaceVertices has run, the
