@@ -81,7 +81,7 @@ TessellationDual::TessellationDual(const DirichletTessellation& tessellation)
   std::vector<std::uint8_t> cocircular;
   this->ComputeTriangleCentres(cocircular);
   this->LabelFaces(cocircular);
-  this->ComputeCentres();
+  std::vector<double>().swap(this->CentreError); // needed only to find co-circular pairs
 }
 
 // Each vertex where it first appears in the half-edge arrays read from the end (Order, with the
@@ -165,7 +165,7 @@ void TessellationDual::OrderPoints()
 // the first triangle of their co-circular cluster.
 
 // Every real triangle's centre (canonical: from its ids in ascending order), error bound and
-// inside-the-window flag (right for every face that is a single triangle; ComputeCentres redoes
+// inside-the-window flag (right for every face that is a single triangle; MergeClusters redoes
 // the degenerate ones), and which of its real neighbours with a larger index are exactly
 // co-circular with it (cocircular: bit k for the neighbour across edge k; left empty when the
 // build knows there are none). Chunks of triangles in parallel, each writing its own entries.
@@ -286,177 +286,6 @@ bool TessellationDual::Cocircular(std::int32_t t, std::int32_t f) const
            pts[org[3 * t]], pts[org[3 * t + 1]], pts[org[3 * t + 2]], pts[org[Tess::Prev(f)]]) == 0;
 }
 
-// Ghosts (and free triangles) are their own faces, -2 - t. A real triangle is a face of its own
-// (as CentresOf labelled it) unless it is exactly co-circular with a neighbour: then the whole
-// connected cluster on that circle is one face, labelled by its smallest triangle index. Only a
-// triangle with a co-circular neighbour further on can start a cluster (its smallest triangle
-// has one). The floods read the co-circular edges ComputeTriangleCentres found (each adjacent
-// pair was tested once, from its smaller triangle) instead of testing the pairs again: on a
-// lattice, where every pair across a square's diagonal is co-circular, those tests were exact
-// evaluations.
-//
-// Chunks of triangles find clusters in parallel, each flooding from its candidates and keeping a
-// cluster only if no member comes before the triangle it started from (its smallest index, so
-// exactly one chunk keeps it). The clusters are then recorded in chunk order, i.e. by ascending
-// smallest triangle, as a serial scan would.
-struct TessellationDual::ClusterList
-{
-  std::vector<std::int32_t> Roots;
-  std::vector<std::int32_t> MemberStarts{ 0 };
-  std::vector<std::int32_t> Members;
-  std::vector<std::int32_t> PolygonStarts{ 0 };
-  std::vector<std::int32_t> Polygons; ///< each anticlockwise from its smallest point id
-};
-
-void TessellationDual::LabelFaces(const std::vector<std::uint8_t>& cocircular)
-{
-  const std::int32_t triangles = std::int32_t(this->Data.size());
-  if (std::none_of(
-        cocircular.begin(), cocircular.end(), [](std::uint8_t bits) { return bits != 0; }))
-  {
-    return;
-  }
-  const std::vector<std::int32_t> bounds = ChunkBounds(triangles, ThreadCount(triangles));
-  std::vector<ClusterList> found(bounds.size() - 1);
-  RunChunks(bounds.size() - 1,
-    [&](std::size_t k) { this->FindClusters(bounds[k], bounds[k + 1], cocircular, found[k]); });
-  for (const ClusterList& list : found)
-  {
-    for (std::size_t c = 0; c < list.Roots.size(); ++c)
-    {
-      const std::int32_t root = list.Roots[c];
-      for (std::int32_t m = list.MemberStarts[c]; m < list.MemberStarts[c + 1]; ++m)
-      {
-        const std::int32_t member = list.Members[m];
-        if (member != root)
-        {
-          this->Data[member].Face = root;
-          this->Data[member].Vertex = -1; // not a representative
-        }
-      }
-      this->RecordCluster(root,
-        list.Polygons.data() + list.PolygonStarts[c],
-        list.PolygonStarts[c + 1] - list.PolygonStarts[c]);
-    }
-  }
-}
-
-void TessellationDual::FindClusters(std::int32_t begin,
-  std::int32_t end,
-  const std::vector<std::uint8_t>& cocircular,
-  ClusterList& found) const
-{
-  const auto& org = this->Tess.Origin();
-  const auto& twin = this->Tess.Twin();
-  std::vector<std::uint8_t> visited(this->Data.size(), 0); // this chunk's floods only
-  std::vector<std::int32_t> cluster, stack, boundary;
-  for (std::int32_t t = begin; t < end; ++t)
-  {
-    if (!cocircular[t] || visited[t])
-    {
-      continue;
-    }
-    // Flood t's circle through the co-circular edges (each recorded by its smaller triangle).
-    visited[t] = 1;
-    cluster.assign(1, t);
-    stack.assign(1, t);
-    bool smallest = true;
-    while (!stack.empty())
-    {
-      const std::int32_t s = stack.back();
-      stack.pop_back();
-      for (std::int32_t k = 0; k < 3; ++k)
-      {
-        const std::int32_t f = twin[3 * s + k];
-        const std::int32_t u = f / 3;
-        const bool across = u > s ? cocircular[s] >> k & 1U : cocircular[u] >> (f - 3 * u) & 1U;
-        if (across && !visited[u])
-        {
-          visited[u] = 1;
-          cluster.push_back(u);
-          stack.push_back(u);
-          smallest = smallest && u > t;
-        }
-      }
-    }
-    if (!smallest)
-    {
-      continue; // an earlier chunk keeps this cluster
-    }
-    std::sort(cluster.begin(), cluster.end());
-    boundary.clear();
-    for (const std::int32_t s : cluster)
-    {
-      for (std::int32_t k = 0; k < 3; ++k)
-      {
-        const std::int32_t e = 3 * s + k;
-        if (!std::binary_search(cluster.begin(), cluster.end(), twin[e] / 3))
-        {
-          boundary.push_back(e);
-        }
-      }
-    }
-    // Chain: the boundary edge after x->y leaves y. Start at the smallest id.
-    std::size_t first = 0;
-    for (std::size_t k = 1; k < boundary.size(); ++k)
-    {
-      if (org[boundary[k]] < org[boundary[first]])
-      {
-        first = k;
-      }
-    }
-    std::int32_t e = boundary[first];
-    for (std::size_t step = 0; step < boundary.size(); ++step)
-    {
-      found.Polygons.push_back(org[e]);
-      const std::int32_t to = org[Tess::Next(e)];
-      for (const std::int32_t g : boundary)
-      {
-        if (org[g] == to)
-        {
-          e = g;
-          break;
-        }
-      }
-    }
-    found.PolygonStarts.push_back(std::int32_t(found.Polygons.size()));
-    found.Roots.push_back(t);
-    found.Members.insert(found.Members.end(), cluster.begin(), cluster.end());
-    found.MemberStarts.push_back(std::int32_t(found.Members.size()));
-  }
-}
-
-void TessellationDual::RecordCluster(std::int32_t root,
-  const std::int32_t* polygon,
-  std::int32_t size)
-{
-  if (this->DegenerateIndex.empty())
-  {
-    this->DegenerateIndex.assign(this->Data.size(), -1);
-    this->DegenerateStarts.push_back(0);
-  }
-  this->DegenerateIndex[root] = std::int32_t(this->DegenerateReps.size());
-  this->DegenerateReps.push_back(root);
-  this->DegenerateVertices.insert(this->DegenerateVertices.end(), polygon, polygon + size);
-  this->DegenerateStarts.push_back(std::int32_t(this->DegenerateVertices.size()));
-}
-
-const std::int32_t* TessellationDual::DegeneratePolygon(std::int32_t face, std::int32_t& size) const
-{
-  if (this->DegenerateIndex.empty() || this->DegenerateIndex[face] < 0)
-  {
-    size = 0;
-    return nullptr;
-  }
-  const std::int32_t k = this->DegenerateIndex[face];
-  size = this->DegenerateStarts[k + 1] - this->DegenerateStarts[k];
-  return this->DegenerateVertices.data() + this->DegenerateStarts[k];
-}
-
-// Degenerate faces take their centre from their three smallest ids, and their inside-the-window
-// flag from that centre (the other faces have theirs from ComputeTriangleCentres), decided
-// exactly: the rounded centre and its error bound settle almost every face, CircumcentreSide the
-// rest.
 namespace
 {
 // The three smallest ids of a degenerate face's polygon (which starts at its smallest), ascending:
@@ -481,29 +310,197 @@ std::array<std::int32_t, 3> SmallestThree(const std::int32_t* polygon, std::int3
 }
 } // namespace
 
-void TessellationDual::ComputeCentres()
+// Ghosts (and free triangles) are their own faces, -2 - t. A real triangle is a face of its own
+// (as CentresOf labelled it) unless it is exactly co-circular with a neighbour: then the whole
+// connected cluster on that circle is one face, labelled by its smallest triangle index. Only a
+// triangle with a co-circular neighbour further on can start a cluster (its smallest triangle
+// has one). The floods read the co-circular edges ComputeTriangleCentres found (each adjacent
+// pair was tested once, from its smaller triangle) instead of testing the pairs again: on a
+// lattice, where every pair across a square's diagonal is co-circular, those tests were exact
+// evaluations.
+//
+// Chunks of triangles merge clusters in parallel, each flooding from its candidates and keeping a
+// cluster only if no member comes before the triangle it started from (its smallest index, so
+// exactly one chunk keeps it). The chunk that keeps a cluster labels its triangles and computes
+// its centre (no other chunk reads or writes those entries: the floods read only the bits and
+// the half-edge arrays); the clusters' polygons are then recorded in chunk order, i.e. by
+// ascending smallest triangle, as a serial scan would.
+struct TessellationDual::ClusterList
 {
-  const std::vector<Point2>& pts = this->Tess.Points();
-  const std::int32_t count = std::int32_t(this->DegenerateReps.size());
-  const std::vector<std::int32_t> bounds = ChunkBounds(count, ThreadCount(count));
+  std::vector<std::int32_t> Roots;
+  std::vector<std::int32_t> PolygonStarts{ 0 };
+  std::vector<std::int32_t> Polygons; ///< each anticlockwise from its smallest point id
+};
+
+void TessellationDual::LabelFaces(const std::vector<std::uint8_t>& cocircular)
+{
+  const std::int32_t triangles = std::int32_t(this->Data.size());
+  if (std::none_of(
+        cocircular.begin(), cocircular.end(), [](std::uint8_t bits) { return bits != 0; }))
+  {
+    return;
+  }
+  const std::vector<std::int32_t> bounds = ChunkBounds(triangles, ThreadCount(triangles));
+  std::vector<ClusterList> found(bounds.size() - 1);
   RunChunks(bounds.size() - 1,
-    [&](std::size_t k)
+    [&](std::size_t k) { this->MergeClusters(bounds[k], bounds[k + 1], cocircular, found[k]); });
+  this->RecordClusters(found);
+}
+
+// The clusters whose smallest triangle is in [begin, end): each one's triangles labelled with it,
+// its polygon listed in found, and its centre taken from its three smallest ids with its inside
+// flag decided exactly (the rounded centre and its error bound settle almost every face,
+// CircumcentreSide the rest).
+//
+// Membership is a stamp per triangle: 0 unvisited, else the number (from 1) of the flood that
+// reached it in this chunk, so that "in this cluster" is one comparison (no sorted copy).
+void TessellationDual::MergeClusters(std::int32_t begin,
+  std::int32_t end,
+  const std::vector<std::uint8_t>& cocircular,
+  ClusterList& found)
+{
+  const auto& org = this->Tess.Origin();
+  const auto& twin = this->Tess.Twin();
+  const std::vector<Point2>& pts = this->Tess.Points();
+  std::vector<std::int32_t> stamp(this->Data.size(), 0); // this chunk's floods only
+  std::vector<std::int32_t> cluster, stack, boundary;
+  std::int32_t flood = 0;
+  // A cluster's other triangles are random loads (on a lattice, one per cluster, and they were
+  // most of the time): request those of the clusters a few triangles ahead.
+  constexpr std::int32_t ahead = 8;
+  const std::int32_t prefetchEnd = std::max(begin, end - ahead);
+  for (std::int32_t t = begin; t < end; ++t)
+  {
+    if (t < prefetchEnd)
     {
-      for (std::int32_t r = bounds[k]; r < bounds[k + 1]; ++r)
+      const std::int32_t next = t + ahead;
+      for (std::int32_t k = 0; k < 3; ++k)
       {
-        const std::int32_t rep = this->DegenerateReps[r];
-        std::int32_t size = 0;
-        const std::int32_t* polygon = this->DegeneratePolygon(rep, size);
-        const std::array<std::int32_t, 3> ids = SmallestThree(polygon, size);
-        double error = 0.0;
-        TriangleData& data = this->Data[rep];
-        const Point2 centre = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], error);
-        data.X = centre.x;
-        data.Y = centre.y;
-        data.Vertex = CentreInside(this->Tess, rep, centre, error) ? 0 : -1;
+        if (cocircular[next] >> k & 1U)
+        {
+          const std::int32_t u = twin[3 * next + k] / 3;
+          __builtin_prefetch(twin.data() + 3 * u);
+          __builtin_prefetch(org.data() + 3 * u);
+          __builtin_prefetch(stamp.data() + u);
+          __builtin_prefetch(this->Data.data() + u, 1);
+        }
       }
-    });
-  std::vector<double>().swap(this->CentreError);
+    }
+    if (!cocircular[t] || stamp[t] != 0)
+    {
+      continue;
+    }
+    // Flood t's circle through the co-circular edges (each recorded by its smaller triangle).
+    ++flood;
+    stamp[t] = flood;
+    cluster.assign(1, t);
+    stack.assign(1, t);
+    bool smallest = true;
+    while (!stack.empty())
+    {
+      const std::int32_t s = stack.back();
+      stack.pop_back();
+      for (std::int32_t k = 0; k < 3; ++k)
+      {
+        const std::int32_t f = twin[3 * s + k];
+        const std::int32_t u = f / 3;
+        const bool across = u > s ? cocircular[s] >> k & 1U : cocircular[u] >> (f - 3 * u) & 1U;
+        if (across && stamp[u] == 0)
+        {
+          stamp[u] = flood;
+          cluster.push_back(u);
+          stack.push_back(u);
+          smallest = smallest && u > t;
+        }
+      }
+    }
+    if (!smallest)
+    {
+      continue; // an earlier chunk keeps this cluster
+    }
+    boundary.clear();
+    for (const std::int32_t s : cluster)
+    {
+      for (std::int32_t k = 0; k < 3; ++k)
+      {
+        const std::int32_t e = 3 * s + k;
+        if (stamp[twin[e] / 3] != flood)
+        {
+          boundary.push_back(e);
+        }
+      }
+    }
+    // Chain: the boundary edge after x->y leaves y. Start at the smallest id.
+    std::size_t first = 0;
+    for (std::size_t k = 1; k < boundary.size(); ++k)
+    {
+      if (org[boundary[k]] < org[boundary[first]])
+      {
+        first = k;
+      }
+    }
+    const std::size_t polygonStart = found.Polygons.size();
+    std::int32_t e = boundary[first];
+    for (std::size_t step = 0; step < boundary.size(); ++step)
+    {
+      found.Polygons.push_back(org[e]);
+      const std::int32_t to = org[Tess::Next(e)];
+      for (const std::int32_t g : boundary)
+      {
+        if (org[g] == to)
+        {
+          e = g;
+          break;
+        }
+      }
+    }
+    found.PolygonStarts.push_back(std::int32_t(found.Polygons.size()));
+    found.Roots.push_back(t);
+    for (const std::int32_t member : cluster)
+    {
+      this->Data[member].Face = t;
+      this->Data[member].Vertex = -1; // not a representative (the root's is set below)
+    }
+    const std::array<std::int32_t, 3> ids =
+      SmallestThree(found.Polygons.data() + polygonStart, std::int32_t(boundary.size()));
+    double error = 0.0;
+    const Point2 centre = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], error);
+    TriangleData& data = this->Data[t];
+    data.X = centre.x;
+    data.Y = centre.y;
+    data.Vertex = CentreInside(this->Tess, t, centre, error) ? 0 : -1;
+  }
+}
+
+// The chunks' clusters, in chunk order, as the degenerate faces' lists.
+void TessellationDual::RecordClusters(const std::vector<ClusterList>& found)
+{
+  this->DegenerateIndex.assign(this->Data.size(), -1);
+  this->DegenerateStarts.assign(1, 0);
+  for (const ClusterList& list : found)
+  {
+    const std::int32_t base = std::int32_t(this->DegenerateVertices.size());
+    for (std::size_t c = 0; c < list.Roots.size(); ++c)
+    {
+      this->DegenerateIndex[list.Roots[c]] = std::int32_t(this->DegenerateReps.size());
+      this->DegenerateReps.push_back(list.Roots[c]);
+      this->DegenerateStarts.push_back(base + list.PolygonStarts[c + 1]);
+    }
+    this->DegenerateVertices.insert(
+      this->DegenerateVertices.end(), list.Polygons.begin(), list.Polygons.end());
+  }
+}
+
+const std::int32_t* TessellationDual::DegeneratePolygon(std::int32_t face, std::int32_t& size) const
+{
+  if (this->DegenerateIndex.empty() || this->DegenerateIndex[face] < 0)
+  {
+    size = 0;
+    return nullptr;
+  }
+  const std::int32_t k = this->DegenerateIndex[face];
+  size = this->DegenerateStarts[k + 1] - this->DegenerateStarts[k];
+  return this->DegenerateVertices.data() + this->DegenerateStarts[k];
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -150,12 +150,11 @@ private:
   bool Cocircular(std::int32_t t, std::int32_t f) const;
   void LabelFaces(const std::vector<std::uint8_t>& cocircular);
   struct ClusterList; // co-circular clusters found by one chunk of triangles (tiles.cpp)
-  void FindClusters(std::int32_t begin,
+  void MergeClusters(std::int32_t begin,
     std::int32_t end,
     const std::vector<std::uint8_t>& cocircular,
-    ClusterList& found) const;
-  void RecordCluster(std::int32_t root, const std::int32_t* polygon, std::int32_t size);
-  void ComputeCentres();
+    ClusterList& found);
+  void RecordClusters(const std::vector<ClusterList>& found);
   /// The collinear case's tile edges of v (the planar case uses RingTileEdges).
   void CollinearTileEdges(std::int32_t v, std::vector<tiles_detail::TileEdge>& edges) const;
   /// Tiles() and Contiguities() run chunks of Order in parallel (Derive, DeriveOf);
