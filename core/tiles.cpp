@@ -258,8 +258,9 @@ void TessellationDual::CocircularEdgesOf(std::int32_t begin,
     for (std::int32_t k = 0; k < 3; ++k)
     {
       const std::int32_t f = twin[3 * t + k];
-      // A real neighbour (its vertex opposite the shared edge is not the ghost) further on.
-      if (f / 3 > t && org[Tess::Prev(f)] >= 0 && this->Cocircular(t, f))
+      // A real neighbour further on (CentresOf labelled ghosts and free triangles negative: read
+      // from the prefetched entry, not from the neighbour's vertices, a cache miss).
+      if (f / 3 > t && data[f / 3].Face >= 0 && this->Cocircular(t, f))
       {
         bits |= std::uint8_t(1U << k);
       }
@@ -352,8 +353,9 @@ void TessellationDual::LabelFaces(const std::vector<std::uint8_t>& cocircular)
 // flag decided exactly (the rounded centre and its error bound settle almost every face,
 // CircumcentreSide the rest).
 //
-// Membership is a stamp per triangle: 0 unvisited, else the number (from 1) of the flood that
-// reached it in this chunk, so that "in this cluster" is one comparison (no sorted copy).
+// The flood lists the face's boundary edges as it goes (the edges it does not cross), so that no
+// membership test reads the triangles outside: on a lattice those were random loads, four per
+// face, and cost as much as the rest.
 void TessellationDual::MergeClusters(std::int32_t begin,
   std::int32_t end,
   const std::vector<std::uint8_t>& cocircular,
@@ -362,9 +364,8 @@ void TessellationDual::MergeClusters(std::int32_t begin,
   const auto& org = this->Tess.Origin();
   const auto& twin = this->Tess.Twin();
   const std::vector<Point2>& pts = this->Tess.Points();
-  std::vector<std::int32_t> stamp(this->Data.size(), 0); // this chunk's floods only
+  std::vector<std::uint8_t> visited(this->Data.size(), 0); // this chunk's floods only
   std::vector<std::int32_t> cluster, stack, boundary;
-  std::int32_t flood = 0;
   // A cluster's other triangles are random loads (on a lattice, one per cluster, and they were
   // most of the time): request those of the clusters a few triangles ahead.
   constexpr std::int32_t ahead = 8;
@@ -381,20 +382,20 @@ void TessellationDual::MergeClusters(std::int32_t begin,
           const std::int32_t u = twin[3 * next + k] / 3;
           __builtin_prefetch(twin.data() + 3 * u);
           __builtin_prefetch(org.data() + 3 * u);
-          __builtin_prefetch(stamp.data() + u);
+          __builtin_prefetch(visited.data() + u);
           __builtin_prefetch(this->Data.data() + u, 1);
         }
       }
     }
-    if (!cocircular[t] || stamp[t] != 0)
+    if (!cocircular[t] || visited[t])
     {
       continue;
     }
     // Flood t's circle through the co-circular edges (each recorded by its smaller triangle).
-    ++flood;
-    stamp[t] = flood;
+    visited[t] = 1;
     cluster.assign(1, t);
     stack.assign(1, t);
+    boundary.clear();
     bool smallest = true;
     while (!stack.empty())
     {
@@ -405,9 +406,15 @@ void TessellationDual::MergeClusters(std::int32_t begin,
         const std::int32_t f = twin[3 * s + k];
         const std::int32_t u = f / 3;
         const bool across = u > s ? cocircular[s] >> k & 1U : cocircular[u] >> (f - 3 * u) & 1U;
-        if (across && stamp[u] == 0)
+        if (!across)
         {
-          stamp[u] = flood;
+          // Not across: u is off the circle (two adjacent triangles on one circle always have
+          // their edge's bit), so this edge bounds the face.
+          boundary.push_back(3 * s + k);
+        }
+        else if (!visited[u])
+        {
+          visited[u] = 1;
           cluster.push_back(u);
           stack.push_back(u);
           smallest = smallest && u > t;
@@ -417,18 +424,6 @@ void TessellationDual::MergeClusters(std::int32_t begin,
     if (!smallest)
     {
       continue; // an earlier chunk keeps this cluster
-    }
-    boundary.clear();
-    for (const std::int32_t s : cluster)
-    {
-      for (std::int32_t k = 0; k < 3; ++k)
-      {
-        const std::int32_t e = 3 * s + k;
-        if (stamp[twin[e] / 3] != flood)
-        {
-          boundary.push_back(e);
-        }
-      }
     }
     // Chain: the boundary edge after x->y leaves y. Start at the smallest id.
     std::size_t first = 0;
