@@ -154,7 +154,8 @@ private:
     std::int32_t end,
     const std::vector<std::uint8_t>& cocircular,
     ClusterList& found);
-  void RecordClusters(const std::vector<ClusterList>& found);
+  void RecordClusters(const std::vector<std::int32_t>& bounds,
+    const std::vector<ClusterList>& found);
   /// The collinear case's tile edges of v (the planar case uses RingTileEdges).
   void CollinearTileEdges(std::int32_t v, std::vector<tiles_detail::TileEdge>& edges) const;
   /// Tiles() and Contiguities() run chunks of Order in parallel (Derive, DeriveOf);
@@ -213,10 +214,11 @@ private:
   std::vector<double> CentreError; ///< per triangle, while labelling faces
   // Degenerate faces: representative -> index k; polygon k is DegenerateVertices[Starts[k] ..
   // Starts[k+1]), anticlockwise, starting at its smallest id.
-  std::vector<std::int32_t> DegenerateIndex;
-  std::vector<std::int32_t> DegenerateStarts;
-  std::vector<std::int32_t> DegenerateVertices;
-  std::vector<std::int32_t> DegenerateReps;
+  // Written by RecordClusters in parallel chunks, so sized without a fill.
+  UninitializedVector<std::int32_t> DegenerateIndex;
+  UninitializedVector<std::int32_t> DegenerateStarts;
+  UninitializedVector<std::int32_t> DegenerateVertices;
+  UninitializedVector<std::int32_t> DegenerateReps;
 };
 
 TileSet ComputeTiles(const DirichletTessellation& tessellation);
