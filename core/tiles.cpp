@@ -236,7 +236,10 @@ void TessellationDual::CocircularEdgesOf(std::int32_t begin,
   const std::int32_t* twin = this->Tess.Twin().data();
   const TriangleData* data = this->Data.data();
   const double* error = this->CentreError.data();
-  // The neighbours' centres are random loads: request them a few triangles ahead.
+  // The neighbours' centres, and their vertices for the exact test, are random loads: request
+  // the centres and the neighbours' ids a few triangles ahead, and the vertex across each edge
+  // (its id loaded by then) half as far ahead.
+  const Point2* pts = this->Tess.Points().data();
   constexpr std::int32_t ahead = 12;
   const std::int32_t prefetchEnd = std::max(begin, end - ahead);
   for (std::int32_t t = begin; t < end; ++t)
@@ -244,10 +247,13 @@ void TessellationDual::CocircularEdgesOf(std::int32_t begin,
     if (t < prefetchEnd)
     {
       const std::int32_t* next = twin + 3 * (t + ahead);
+      const std::int32_t* nearer = twin + 3 * (t + ahead / 2);
       for (std::int32_t k = 0; k < 3; ++k)
       {
         __builtin_prefetch(data + NonNegative(next[k]) / 3);
         __builtin_prefetch(error + NonNegative(next[k]) / 3);
+        __builtin_prefetch(org + NonNegative(next[k]));
+        __builtin_prefetch(pts + NonNegative(org[Tess::Prev(NonNegative(nearer[k]))]));
       }
     }
     if ((org[3 * t] | org[3 * t + 1] | org[3 * t + 2]) < 0)
