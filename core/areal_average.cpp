@@ -136,22 +136,7 @@ struct ThiessenArealAverage::State
   void SpatialSort(std::vector<std::int32_t>& gauges) const
   {
     const std::vector<Point2>& corners = this->TheWindow->Vertices();
-    const Box2 box = BoundsOf(corners.data(), corners.size());
-    const auto cell = [](double v, double lo, double hi)
-    { return GridCell((v - lo) / (hi - lo) * 65535.0, 65536); };
-    std::vector<std::pair<std::uint32_t, std::int32_t>> order;
-    order.reserve(gauges.size());
-    for (const std::int32_t g : gauges)
-    {
-      const Point2& p = this->GaugesXY[g];
-      order.emplace_back(
-        HilbertIndex(cell(p.x, box.XMin, box.XMax), cell(p.y, box.YMin, box.YMax), 16), g);
-    }
-    std::sort(order.begin(), order.end());
-    for (std::size_t k = 0; k < order.size(); ++k)
-    {
-      gauges[k] = order[k].second;
-    }
+    SortAlongHilbertCurve(this->GaugesXY.data(), BoundsOf(corners.data(), corners.size()), gauges);
   }
 
   /// The gauges that stopped reporting and those that started, each list in Hilbert order.

@@ -212,6 +212,29 @@ std::uint32_t HilbertIndex(std::uint32_t x, std::uint32_t y, int levels)
   return HilbertIndexFast(TheHilbertTable(), x, y, levels);
 }
 
+void SortAlongHilbertCurve(const Point2* points, const Box2& box, std::vector<std::int32_t>& ids)
+{
+  constexpr int levels = 16;
+  const double extent = box.LargerSide();
+  const double scale = extent > 0.0 ? (65536.0 * (1.0 - 1e-12)) / extent : 0.0;
+  const auto cell = [&](double v, double lo) { return GridCell((v - lo) * scale, 65536U); };
+  const HilbertTable& table = TheHilbertTable();
+  std::vector<std::pair<std::uint32_t, std::int32_t>> keyed;
+  keyed.reserve(ids.size());
+  for (const std::int32_t id : ids)
+  {
+    const Point2& p = points[id];
+    keyed.emplace_back(
+      HilbertIndexFast(table, cell(p.x, box.XMin), cell(p.y, box.YMin), levels), id);
+  }
+  std::stable_sort(
+    keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (std::size_t k = 0; k < ids.size(); ++k)
+  {
+    ids[k] = keyed[k].second;
+  }
+}
+
 namespace
 {
 // The bounding box of the points of ids (at least one), in chunks on the cores.

@@ -16,6 +16,11 @@ namespace tessera
 /// Hilbert index of the cell (x, y) of a 2^levels x 2^levels grid (levels <= 16).
 std::uint32_t HilbertIndex(std::uint32_t x, std::uint32_t y, int levels);
 
+/// ids (indices into points) sorted along a Hilbert curve over box (65536 cells a side, one scale
+/// for both axes; ties keep their order): each point is then near the one before it, so a walk
+/// from the last to the next is short. For a few points at a time; BrioHilbertOrder for batches.
+void SortAlongHilbertCurve(const Point2* points, const Box2& box, std::vector<std::int32_t>& ids);
+
 /// The ids (indices into points) of `ids` reordered: rounds of geometrically growing size
 /// (each point goes to the last round with probability 1/2, to the one before with 1/4, ...,
 /// decided by a hash of its id and `seed`, so the order is reproducible), each round sorted by

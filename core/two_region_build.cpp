@@ -18,7 +18,8 @@
 // 3. The triangulation is then Delaunay except possibly at edges of straddling triangles (the
 //    skipped flips): Lawson's flip algorithm, which reaches the Delaunay triangulation from any
 //    triangulation, is run from those edges.
-// 4. The deferred points are inserted serially; preallocated triangles left unused (by points
+// 4. The deferred points are inserted serially, along a Hilbert curve; preallocated triangles left
+// unused (by points
 //    that turned out to be duplicates) are compacted away.
 //
 // Each region reads only what it owns and what nobody writes, so the result depends on the input
@@ -27,6 +28,7 @@
 #include "dirichlet_tessellation.h"
 
 #include "parallel_chunks.h"
+#include "spatial_order.h"
 
 #include <algorithm>
 #include <cmath>
@@ -253,12 +255,15 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
   this->Serial.SawCocircular |=
     seamCocircular || regions[0].SawCocircular || regions[1].SawCocircular;
   this->Serial.LastTriangle = regions[0].LastTriangle;
-  for (const Region& region : regions)
+  // The deferred points, along the curve: they lie near the seam and outside the sample's hull
+  // (all around the batch), and walking to them in their rounds' order took 13 steps each at 1M
+  // points (5 along the curve), 10.6 ms against 5.3.
+  std::vector<std::int32_t> deferred = std::move(regions[0].Deferred);
+  deferred.insert(deferred.end(), regions[1].Deferred.begin(), regions[1].Deferred.end());
+  SortAlongHilbertCurve(pts, box, deferred);
+  for (const std::int32_t id : deferred)
   {
-    for (const std::int32_t id : region.Deferred)
-    {
-      this->InsertAcceptedPoint(id);
-    }
+    this->InsertAcceptedPoint(id);
   }
   this->CompactFreeTriangles();
   return true;
