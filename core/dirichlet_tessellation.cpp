@@ -206,9 +206,11 @@ void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids, const Box2
   const std::size_t triangles = ids.size() >= 3 ? 2 * ids.size() - 2 : 0;
   this->Origins.reserve(this->Origins.size() + 3 * triangles);
   this->Twins.reserve(this->Twins.size() + 3 * triangles);
-  const std::vector<std::int32_t> order = knownBox
-    ? BrioHilbertOrder(this->Coordinates, ids, *knownBox)
-    : BrioHilbertOrder(this->Coordinates, ids);
+  // The batch's box serves the order and then the two-region build (its restart grids and curve).
+  const Box2 box = knownBox ? *knownBox
+    : ids.empty()           ? Box2()
+                            : BoundsOfIds(this->Coordinates, ids);
+  const std::vector<std::int32_t> order = BrioHilbertOrder(this->Coordinates, ids, box);
   ids.clear();
   ids.shrink_to_fit();
   // The gather and the relabelling below are random reads of a large array: on the cores.
@@ -228,7 +230,7 @@ void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids, const Box2
   this->Coordinates.swap(local);
   this->BuildOrder = &order;
   this->Serial.SawCocircular = false;
-  this->InsertInOrder(std::int32_t(order.size()));
+  this->InsertInOrder(std::int32_t(order.size()), box);
   this->BuildOrder = nullptr;
   this->NoCocircularTriangles = !this->Serial.SawCocircular;
   this->Coordinates.swap(local);

@@ -201,8 +201,9 @@ private:
     return region.NextSlot < region.EndSlot ? region.NextSlot++ : this->NewTriangle();
   }
   // Two-region batch build (two_region_build.cpp).
-  void InsertInOrder(std::int32_t count);
-  bool InsertInTwoRegions(std::int32_t first, std::int32_t end);
+  /// box: the bounding box of the vertices [0, count).
+  void InsertInOrder(std::int32_t count, const Box2& box);
+  bool InsertInTwoRegions(std::int32_t first, std::int32_t end, const Box2& box);
   bool LegalizeEdges(std::vector<std::int32_t>& edges);
   void FlipEdge(std::int32_t e);
   void CompactFreeTriangles();

@@ -235,9 +235,6 @@ void SortAlongHilbertCurve(const Point2* points, const Box2& box, std::vector<st
   }
 }
 
-namespace
-{
-// The bounding box of the points of ids (at least one), in chunks on the cores.
 Box2 BoundsOfIds(const std::vector<Point2>& points, const std::vector<std::int32_t>& ids)
 {
   const std::vector<std::int32_t> bounds = parallel::ChunkBounds(
@@ -255,7 +252,6 @@ Box2 BoundsOfIds(const std::vector<Point2>& points, const std::vector<std::int32
     });
   return UnionOf(boxes);
 }
-} // namespace
 
 std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
   const std::vector<std::int32_t>& ids,

@@ -16,6 +16,9 @@ namespace tessera
 /// Hilbert index of the cell (x, y) of a 2^levels x 2^levels grid (levels <= 16).
 std::uint32_t HilbertIndex(std::uint32_t x, std::uint32_t y, int levels);
 
+/// The bounding box of the points of ids (at least one), in chunks on the cores.
+Box2 BoundsOfIds(const std::vector<Point2>& points, const std::vector<std::int32_t>& ids);
+
 /// ids (indices into points) sorted along a Hilbert curve over box (65536 cells a side, one scale
 /// for both axes; ties keep their order): each point is then near the one before it, so a walk
 /// from the last to the next is short. For a few points at a time; BrioHilbertOrder for batches.

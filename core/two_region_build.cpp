@@ -19,9 +19,8 @@
 // 3. The triangulation is then Delaunay except possibly at edges of straddling triangles (the
 //    skipped flips): Lawson's flip algorithm, which reaches the Delaunay triangulation from any
 //    triangulation, is run from those edges.
-// 4. The deferred points are inserted serially, along a Hilbert curve; preallocated triangles left
-// unused (by points
-//    that turned out to be duplicates) are compacted away.
+// 4. The deferred points are inserted serially, along a Hilbert curve; preallocated triangles
+//    left unused (by points that turned out to be duplicates) are compacted away.
 //
 // Each region reads only what it owns and what nobody writes, so the result depends on the input
 // alone, never on timing or on the number of threads: with one core the regions run in turn.
@@ -131,14 +130,14 @@ constexpr std::int32_t SamplePointsPerCell = 4;
 
 // Inserts vertices [0, count) (BuildFrom's local numbering) in order, on two regions when the
 // batch is large.
-void DirichletTessellation::InsertInOrder(std::int32_t count)
+void DirichletTessellation::InsertInOrder(std::int32_t count, const Box2& box)
 {
   const std::int32_t sample = count >= TwoRegionMinimum ? count / SampleDivisor : count;
   for (std::int32_t k = 0; k < sample; ++k)
   {
     this->InsertAcceptedPoint(k);
   }
-  if (sample < count && !this->InsertInTwoRegions(sample, count))
+  if (sample < count && !this->InsertInTwoRegions(sample, count, box))
   {
     for (std::int32_t k = sample; k < count; ++k)
     {
@@ -149,7 +148,9 @@ void DirichletTessellation::InsertInOrder(std::int32_t count)
 
 // Steps 2 to 4 for vertices [first, end). Returns false, having inserted nothing, when the
 // sample is not yet two-dimensional.
-bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t end)
+bool DirichletTessellation::InsertInTwoRegions(std::int32_t first,
+  std::int32_t end,
+  const Box2& box)
 {
   if (!this->IsTwoDimensional())
   {
@@ -174,7 +175,15 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
   {
     side.reserve(std::size_t(end - first)); // either may get them all; only what is used is touched
   }
-  const Box2 box = BoundsOf(pts, std::size_t(end));
+  // Serial insertions of scattered points, each walking from the last: along the curve.
+  const auto insertAlongCurve = [&](std::vector<std::int32_t>& ids)
+  {
+    SortAlongHilbertCurve(pts, box, ids);
+    for (const std::int32_t id : ids)
+    {
+      this->InsertAcceptedPoint(id);
+    }
+  };
   const double seam = regions[0].SeamX;
   const double halfWidth = SeamStripHalfWidth(pts, first, end, seam);
   std::vector<std::int32_t> strip;
@@ -189,11 +198,7 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
       sides[regions[1].Owns(pts[k]) ? 1 : 0].push_back(k);
     }
   }
-  SortAlongHilbertCurve(pts, box, strip);
-  for (const std::int32_t k : strip)
-  {
-    this->InsertAcceptedPoint(k);
-  }
+  insertAlongCurve(strip);
 
   // Which triangles straddle the seam, before anything else changes.
   const auto ownedBy = [&](const Region& region, std::int32_t t)
@@ -302,11 +307,7 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first, std::int32_t 
   // points (5 along the curve), 10.6 ms against 5.3.
   std::vector<std::int32_t> deferred = std::move(regions[0].Deferred);
   deferred.insert(deferred.end(), regions[1].Deferred.begin(), regions[1].Deferred.end());
-  SortAlongHilbertCurve(pts, box, deferred);
-  for (const std::int32_t id : deferred)
-  {
-    this->InsertAcceptedPoint(id);
-  }
+  insertAlongCurve(deferred);
   this->CompactFreeTriangles();
   return true;
 }
