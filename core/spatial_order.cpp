@@ -212,20 +212,49 @@ std::uint32_t HilbertIndex(std::uint32_t x, std::uint32_t y, int levels)
   return HilbertIndexFast(TheHilbertTable(), x, y, levels);
 }
 
+namespace
+{
+// The Hilbert index, on a 2^levels x 2^levels grid over box, of each point: one scale for both
+// axes keeps the curve's locality isotropic, and a hair under cells / extent keeps the far side
+// in the last cell. A box wider than the largest double makes the scale 0 and a coordinate's
+// offset may be infinite (0 * inf = NaN): GridCell sends such a value to cell 0.
+class CurveIndex
+{
+public:
+  CurveIndex(const Box2& box, int levels)
+    : Box(box)
+    , Levels(levels)
+    , Cells(std::uint32_t(1) << levels)
+    , Scale(box.LargerSide() > 0.0 ? (double(this->Cells) * (1.0 - 1e-12)) / box.LargerSide() : 0.0)
+    , Table(TheHilbertTable())
+  {
+  }
+
+  std::uint32_t operator()(const Point2& p) const
+  {
+    return HilbertIndexFast(this->Table,
+      GridCell((p.x - this->Box.XMin) * this->Scale, this->Cells),
+      GridCell((p.y - this->Box.YMin) * this->Scale, this->Cells),
+      this->Levels);
+  }
+
+private:
+  Box2 Box;
+  int Levels;
+  std::uint32_t Cells;
+  double Scale;
+  const HilbertTable& Table;
+};
+} // namespace
+
 void SortAlongHilbertCurve(const Point2* points, const Box2& box, std::vector<std::int32_t>& ids)
 {
-  constexpr int levels = 16;
-  const double extent = box.LargerSide();
-  const double scale = extent > 0.0 ? (65536.0 * (1.0 - 1e-12)) / extent : 0.0;
-  const auto cell = [&](double v, double lo) { return GridCell((v - lo) * scale, 65536U); };
-  const HilbertTable& table = TheHilbertTable();
+  const CurveIndex index(box, 16);
   std::vector<std::pair<std::uint32_t, std::int32_t>> keyed;
   keyed.reserve(ids.size());
   for (const std::int32_t id : ids)
   {
-    const Point2& p = points[id];
-    keyed.emplace_back(
-      HilbertIndexFast(table, cell(p.x, box.XMin), cell(p.y, box.YMin), levels), id);
+    keyed.emplace_back(index(points[id]), id);
   }
   std::stable_sort(
     keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -280,14 +309,7 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
     parallel::ChunkBounds(std::int32_t(n), parallel::ThreadCount(std::int64_t(n)));
   const int levels = LevelCount(n);
   const int rounds = RoundCount(n);
-  const double cells = double(std::uint32_t(1) << levels);
-  // One common scale for both axes keeps the curve's locality isotropic.
-  const double extent = box.LargerSide();
-  const double scale = extent > 0.0 ? (cells * (1.0 - 1e-12)) / extent : 0.0;
-  // A box wider than the largest double makes the scale 0 and a coordinate's offset may be
-  // infinite (0 * inf = NaN): GridCell sends such a value to cell 0.
-  const auto cell = [&](double v, double lo)
-  { return GridCell((v - lo) * scale, std::uint32_t(1) << levels); };
+  const CurveIndex curve(box, levels);
 
   int roundBits = 0;
   while ((1 << roundBits) < rounds)
@@ -300,16 +322,13 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
   {
     ++idBits;
   }
-  const HilbertTable& table = TheHilbertTable();
   const auto key = [&](std::int32_t id)
   {
     // Trailing zeros of a hash: 0 with probability 1/2 (last round), 1 with 1/4, ...
     const std::uint64_t hash = SplitMix64(seed ^ (std::uint64_t(id) * 0x2545f4914f6cdd1dULL));
     const int zeros = std::min(__builtin_ctzll(hash | (std::uint64_t(1) << 63)), rounds - 1);
     const std::uint64_t round = std::uint64_t(rounds - 1 - zeros);
-    const std::uint32_t h =
-      HilbertIndexFast(table, cell(points[id].x, box.XMin), cell(points[id].y, box.YMin), levels);
-    return (round << (2 * levels)) | h;
+    return (round << (2 * levels)) | curve(points[id]);
   };
   order.resize(n);
   if (keyBits + idBits <= 64)
