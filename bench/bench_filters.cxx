@@ -6,8 +6,7 @@
 //
 // Tessera's filters and CGAL run `repeats` times each (ten times as often at 10^4 points), in
 // turn, on the same input, and the table shows the median run: this VM's single runs vary by
-// 15-25%. vtkDelaunay2D and vtkVoronoi2D
-// run once (they take seconds to minutes).
+// 15-25%. vtkDelaunay2D and vtkVoronoi2D run once (they take seconds to minutes).
 #include "vtkDelaunay2D.h"
 #include "vtkDelaunayTriangulation.h"
 #include "vtkDirichletTessellation.h"

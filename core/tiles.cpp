@@ -326,12 +326,12 @@ std::array<std::int32_t, 3> SmallestThree(const std::int32_t* polygon, std::int3
 // lattice, where every pair across a square's diagonal is co-circular, those tests were exact
 // evaluations.
 //
-// Chunks of triangles merge clusters in parallel, each flooding from its candidates and keeping a
-// cluster only if no member comes before the triangle it started from (its smallest index, so
-// exactly one chunk keeps it). The chunk that keeps a cluster labels its triangles and computes
-// its centre (no other chunk reads or writes those entries: the floods read only the bits and
-// the half-edge arrays); the clusters' polygons are then recorded in chunk order, i.e. by
-// ascending smallest triangle, as a serial scan would.
+// Chunks of triangles merge clusters in parallel, each flooding from its triangles that have a
+// co-circular bit and keeping a cluster only if no member comes before the triangle it started from
+// (its smallest index, so exactly one chunk keeps it). The chunk that keeps a cluster labels its
+// triangles and computes its centre (no other chunk reads or writes those entries: the floods read
+// only the bits and the half-edge arrays); the clusters' polygons are then recorded in chunk order,
+// i.e. by ascending smallest triangle, as a serial scan would.
 struct TessellationDual::ClusterList
 {
   std::vector<std::int32_t> Roots;
