@@ -39,11 +39,6 @@ void DensifyPlanarRing(const Point2* ring, std::size_t count, double step, std::
   }
 }
 
-bool SameVertices(const std::vector<Point2>& cached, const Point2* tile, std::size_t count)
-{
-  return cached.size() == count && std::equal(cached.begin(), cached.end(), tile);
-}
-
 } // namespace
 
 struct ThiessenArealAverage::State
@@ -65,13 +60,75 @@ struct ThiessenArealAverage::State
   std::vector<std::int32_t> EngineOfGauge; // engine id, or NotInTessellation
   std::vector<std::int32_t> GaugeOfEngine;
 
-  // Per gauge: the tile polygon last clipped and its clipped area (m^2).
-  std::vector<std::vector<Point2>> CachedTile;
+  // Per gauge: the clipped area (m^2) of its tile, as last derived.
   std::vector<double> CachedArea;
   Catchment::Workspace Work;
   ClippedRings Scratch;
   std::vector<Point2> Dense;
   std::vector<Point2> LonLat; // scratch for MeasureRings
+  std::vector<char> Wanted;   // per gauge: used this step (kept: a step is O(gauges) already)
+  std::vector<char> PlaceTaken;
+  std::vector<char> Marked;         // DeriveChanged's
+  std::vector<std::int32_t> Picked; // Step's weighted gauges (n + 1: written past the last)
+
+  /// wanted[g] = 1 for the gauges used at this step: those that reported, the first of each
+  /// place. Returns their number; throws InputError naming a gauge with an infinite value.
+  int MarkReporting(const std::vector<double>& values, std::vector<char>& wanted)
+  {
+    const std::size_t n = values.size();
+    wanted.resize(n);
+    if (!this->Duplicates.empty())
+    {
+      return this->MarkReportingGrouped(values, wanted);
+    }
+    // Without branches on the values: in a real record, which gauges report is close to random,
+    // and a mispredicted branch per gauge was most of this loop's time.
+    int used = 0;
+    bool infinite = false;
+    for (std::size_t g = 0; g < n; ++g)
+    {
+      const double value = values[g];
+      const bool reported = !std::isnan(value);
+      infinite |= std::isinf(value);
+      wanted[g] = static_cast<char>(reported);
+      used += reported;
+    }
+    if (infinite)
+    {
+      ThrowAtFirstInfinite(values);
+    }
+    return used;
+  }
+
+  int MarkReportingGrouped(const std::vector<double>& values, std::vector<char>& wanted)
+  {
+    const std::size_t n = values.size();
+    std::fill(wanted.begin(), wanted.end(), 0);
+    this->PlaceTaken.assign(n, 0);
+    int used = 0;
+    for (std::size_t g = 0; g < n; ++g)
+    {
+      if (std::isinf(values[g]))
+      {
+        ThrowAtFirstInfinite(values);
+      }
+      char& taken = this->PlaceTaken[this->FirstAtPlace[g]];
+      if (!std::isnan(values[g]) && !taken)
+      {
+        taken = 1;
+        wanted[g] = 1;
+        ++used;
+      }
+    }
+    return used;
+  }
+
+  [[noreturn]] static void ThrowAtFirstInfinite(const std::vector<double>& values)
+  {
+    const auto first =
+      std::find_if(values.begin(), values.end(), [](double value) { return std::isinf(value); });
+    throw InputError("gauge " + std::to_string(first - values.begin()) + " has an infinite value");
+  }
 
   /// Ellipsoidal area (m^2) of all the rings.
   double MeasureRings(const ClippedRings& rings)
@@ -148,13 +205,11 @@ struct ThiessenArealAverage::State
     inserted.clear();
     for (std::size_t g = 0; g < wanted.size(); ++g)
     {
-      if (!wanted[g] && this->EngineOfGauge[g] != NotInTessellation)
+      // One branch, on a change (rare), rather than on wanted (random).
+      const bool present = this->EngineOfGauge[g] != NotInTessellation;
+      if (bool(wanted[g]) != present)
       {
-        removed.push_back(static_cast<std::int32_t>(g));
-      }
-      else if (wanted[g] && this->EngineOfGauge[g] == NotInTessellation)
-      {
-        inserted.push_back(static_cast<std::int32_t>(g));
+        (present ? removed : inserted).push_back(static_cast<std::int32_t>(g));
       }
     }
     this->SpatialSort(removed);
@@ -198,15 +253,10 @@ struct ThiessenArealAverage::State
     }
   }
 
-  /// Re-clips a gauge's tile if its polygon changed.
+  /// Clips a gauge's (new) tile.
   void Refresh(std::int32_t g, const Point2* tile, std::size_t count)
   {
-    // A rebuild reuses nothing from the previous step (it is the baseline that updates beat).
-    if (!this->Settings.Incremental || !SameVertices(this->CachedTile[g], tile, count))
-    {
-      this->CachedArea[g] = this->ClippedArea(tile, count, static_cast<std::size_t>(g));
-      this->CachedTile[g].assign(tile, tile + count);
-    }
+    this->CachedArea[g] = this->ClippedArea(tile, count, static_cast<std::size_t>(g));
   }
 
   /// Every tile, from the whole tessellation.
@@ -234,7 +284,8 @@ struct ThiessenArealAverage::State
     const std::vector<std::int32_t>& removedMates,
     const std::vector<std::int32_t>& inserted)
   {
-    std::vector<char> marked(wanted.size(), 0);
+    std::vector<char>& marked = this->Marked;
+    marked.assign(wanted.size(), 0);
     std::vector<std::int32_t> changed;
     const auto mark = [&](std::int32_t g)
     {
@@ -372,7 +423,6 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     s.Tessellation->TrackVertexEdges(); // local tile derivation finds its rings in O(1)
   }
   s.EngineOfGauge.assign(gaugesLonLat.size(), NotInTessellation);
-  s.CachedTile.resize(gaugesLonLat.size());
   s.CachedArea.assign(gaugesLonLat.size(), 0.0);
 }
 
@@ -413,21 +463,8 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
     throw InputError("a step has " + std::to_string(values.size()) + " values for " +
       std::to_string(n) + " gauges");
   }
-  // The gauge used at each place: the first of its group that reported.
-  std::vector<char> wanted(n, 0);
-  std::vector<char> placeTaken(n, 0);
-  for (std::size_t g = 0; g < n; ++g)
-  {
-    if (std::isinf(values[g]))
-    {
-      throw InputError("gauge " + std::to_string(g) + " has an infinite value");
-    }
-    if (!std::isnan(values[g]) && !placeTaken[s.FirstAtPlace[g]])
-    {
-      placeTaken[s.FirstAtPlace[g]] = 1;
-      wanted[g] = 1;
-    }
-  }
+  std::vector<char>& wanted = s.Wanted;
+  const int used = s.MarkReporting(values, wanted);
   // The local derivation when updating a two-dimensional tessellation, with at most a fifth of
   // the gauges changing; otherwise every tile. A two-dimensional tessellation before the update
   // means that the previous step derived every tile it has (the first step, or one after a step
@@ -459,7 +496,7 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
   }
 
   ArealStep step;
-  step.StationsUsed = static_cast<int>(std::count(wanted.begin(), wanted.end(), 1));
+  step.StationsUsed = used;
   if (step.StationsUsed == 0)
   {
     step.Mean = std::numeric_limits<double>::quiet_NaN();
@@ -469,23 +506,29 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
     local ? s.DeriveChanged(wanted, removedMates, inserted) : s.DeriveAll();
   step.TilesDerived = static_cast<int>(derived);
   // Weights of every reporting gauge from the cached areas (current for all of them), ascending.
-  double weighted = 0.0, weightSum = 0.0;
+  // The weighted gauges are listed without a branch per gauge (which gauges report, and whose
+  // tile reaches the catchment, is close to random), then weighed.
+  std::vector<std::int32_t>& picked = s.Picked;
+  picked.resize(n + 1);
+  std::size_t count = 0;
   for (std::size_t g = 0; g < n; ++g)
   {
-    if (!wanted[g])
-    {
-      continue;
-    }
+    picked[count] = static_cast<std::int32_t>(g);
+    count += static_cast<std::size_t>((wanted[g] != 0) & (s.CachedArea[g] > 0.0));
+  }
+  step.Gauges.assign(picked.begin(), picked.begin() + std::ptrdiff_t(count));
+  step.Weights.resize(count);
+  step.AreasM2.resize(count);
+  double weighted = 0.0, weightSum = 0.0;
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const std::int32_t g = picked[k];
     const double area = s.CachedArea[g];
-    if (area > 0.0)
-    {
-      const double weight = area / s.CatchmentArea;
-      step.Gauges.push_back(static_cast<std::int32_t>(g));
-      step.Weights.push_back(weight);
-      step.AreasM2.push_back(area);
-      weighted += weight * values[g];
-      weightSum += weight;
-    }
+    const double weight = area / s.CatchmentArea;
+    step.Weights[k] = weight;
+    step.AreasM2[k] = area;
+    weighted += weight * values[g];
+    weightSum += weight;
   }
   step.StationsWeighted = static_cast<int>(step.Gauges.size());
   step.CoveredFraction = weightSum;
@@ -497,16 +540,24 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
 {
   State& s = *this->Impl;
   ClippedTilesLonLat out;
-  // The gauges in the tessellation, ascending, with their current (cached) tiles.
-  for (std::size_t gauge = 0; gauge < s.EngineOfGauge.size(); ++gauge)
+  // The gauges in the tessellation, ascending, with their tiles (derived again here: the steps
+  // keep only the clipped areas).
+  const TileSet tiles = TessellationDual(*s.Tessellation).Tiles();
+  std::vector<std::int32_t> tileOf(s.EngineOfGauge.size(), -1);
+  for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
   {
-    if (s.EngineOfGauge[gauge] == NotInTessellation)
+    tileOf[s.GaugeOfEngine[tiles.PointIds[k]]] = static_cast<std::int32_t>(k);
+  }
+  for (std::size_t gauge = 0; gauge < tileOf.size(); ++gauge)
+  {
+    if (tileOf[gauge] < 0)
     {
       continue;
     }
     const std::int32_t g = static_cast<std::int32_t>(gauge);
-    const Point2* tile = s.CachedTile[g].data();
-    const std::size_t count = s.CachedTile[g].size();
+    const std::size_t k = static_cast<std::size_t>(tileOf[gauge]);
+    const Point2* tile = &tiles.Vertices[tiles.Offsets[k]];
+    const std::size_t count = static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]);
     ClippedRings rings;
     if (s.Region->ClipInto(tile, count, static_cast<std::size_t>(g), s.Work, &rings) <= 0.0)
     {
