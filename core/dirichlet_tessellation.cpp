@@ -130,6 +130,7 @@ constexpr std::uint8_t HasDuplicates = 0x80;
 
 DirichletTessellation::DirichletTessellation(Window window)
   : TheWindow(std::move(window))
+  , NoCocircularTriangles(true) // no triangles yet
 {
 }
 
@@ -309,6 +310,9 @@ void DirichletTessellation::Validate(const Point2& p, std::size_t id) const
 
 std::int32_t DirichletTessellation::Insert(const Point2& p)
 {
+  // Known free of co-circular triangles until now: still so if this insertion's own tests and
+  // the star test (StarIsCocircular) meet no zero. Unknown (false) if anything throws.
+  const bool wasFree = this->NoCocircularTriangles;
   this->NoCocircularTriangles = false;
   const std::size_t id = this->Coordinates.size();
   this->Validate(p, id);
@@ -327,10 +331,15 @@ std::int32_t DirichletTessellation::Insert(const Point2& p)
   {
     this->Rejected.push_back(std::int32_t(id)); // the largest id so far: Rejected stays sorted
     this->StatusBytes.back() = std::uint8_t(PointStatus::OutsideWindow);
+    this->NoCocircularTriangles = wasFree;
   }
   else
   {
+    this->Serial.SawCocircular = false;
+    this->CheckStars = wasFree;
     this->InsertAcceptedPoint(std::int32_t(id));
+    this->CheckStars = false;
+    this->NoCocircularTriangles = wasFree && !this->Serial.SawCocircular;
   }
   return std::int32_t(id);
 }
@@ -450,7 +459,7 @@ DirichletTessellation::Location DirichletTessellation::InsertInRegion(Region& re
   }
   this->RestoreDelaunay(region);
   ++region.Inserted;
-  if (this->BuildOrder && !region.SawCocircular) // only a batch build keeps the flag
+  if ((this->BuildOrder || this->CheckStars) && !region.SawCocircular) // when tracked
   {
     const std::int32_t start = 3 * region.LastTriangle + 2; // leaves id (see SplitTriangle)
     region.SawCocircular = this->Origins[start] != id || this->StarIsCocircular(start);
@@ -1053,6 +1062,10 @@ std::int32_t DirichletTessellation::EdgeLeaving(std::int32_t id) const
 
 void DirichletTessellation::Remove(std::int32_t id)
 {
+  // As in Insert: a removal that re-triangulates in place tests its new triangles against their
+  // neighbours (AnyCocircularNeighbour); one that changes no triangle keeps the flag; a rebuild
+  // sets it afresh.
+  const bool wasFree = this->NoCocircularTriangles;
   this->NoCocircularTriangles = false;
   const PointStatus status = this->Status(id); // throws for an out-of-range id
   if (status == PointStatus::Removed)
@@ -1067,6 +1080,7 @@ void DirichletTessellation::Remove(std::int32_t id)
   {
     this->Rejected.erase(std::lower_bound(this->Rejected.begin(), this->Rejected.end(), id));
     this->RemovedPoints.push_back(id);
+    this->NoCocircularTriangles = wasFree;
     return;
   }
   if (status == PointStatus::Duplicate)
@@ -1074,6 +1088,7 @@ void DirichletTessellation::Remove(std::int32_t id)
     // The copied point keeps its HasDuplicates mark (a hint; see StatusMask).
     this->DuplicatePairs.erase(this->FindDuplicatePair(id));
     this->RemovedPoints.push_back(id);
+    this->NoCocircularTriangles = wasFree;
     return;
   }
   std::int32_t edge = -1;
@@ -1126,6 +1141,7 @@ void DirichletTessellation::Remove(std::int32_t id)
     {
       *onLine = heir;
     }
+    this->NoCocircularTriangles = wasFree;
     return;
   }
 
@@ -1133,12 +1149,49 @@ void DirichletTessellation::Remove(std::int32_t id)
   if (!this->IsTwoDimensional())
   {
     this->Collinear.erase(onLine);
+    this->NoCocircularTriangles = wasFree;
     return;
   }
-  if (!this->RemoveInteriorVertex(edge) && !this->RemoveHullVertex(edge))
+  this->Serial.SawCocircular = false;
+  this->CheckStars = wasFree;
+  const bool inPlace = this->RemoveInteriorVertex(edge) || this->RemoveHullVertex(edge);
+  this->CheckStars = false;
+  if (inPlace)
   {
-    this->RebuildWithout(id);
+    this->NoCocircularTriangles = wasFree && !this->Serial.SawCocircular;
   }
+  else
+  {
+    this->RebuildWithout(id); // sets the flag
+  }
+}
+
+// Whether a real triangle among the given ones is exactly co-circular with a real triangle
+// across one of its edges: after a removal, the pairs that involve a new triangle are exactly
+// these (the others are unchanged).
+bool DirichletTessellation::AnyCocircularNeighbour(const std::int32_t* triangles,
+  std::size_t count) const
+{
+  const Point2* const pts = this->Coordinates.data();
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const std::int32_t t = triangles[k];
+    const std::int32_t a = this->Origins[3 * t], b = this->Origins[3 * t + 1],
+                       c = this->Origins[3 * t + 2];
+    if (a < 0 || b < 0 || c < 0)
+    {
+      continue;
+    }
+    for (std::int32_t side = 0; side < 3; ++side)
+    {
+      const std::int32_t d = this->Origins[Prev(this->Twins[3 * t + side])];
+      if (d >= 0 && incircle_fast(pts[a], pts[b], pts[c], pts[d]) == 0)
+      {
+        return true;
+      }
+    }
+  }
+  return false;
 }
 
 // One triangle of a re-triangulated hole: its vertices and the twins of its three half-edges
@@ -1236,6 +1289,10 @@ bool DirichletTessellation::RemoveInteriorVertex(std::int32_t edge)
     return false; // rebuilding is always correct
   }
   this->ApplyPlan(plan, slots);
+  if (this->CheckStars)
+  {
+    this->Serial.SawCocircular = this->AnyCocircularNeighbour(slots.data(), plan.size());
+  }
   return true;
 }
 
@@ -1395,6 +1452,10 @@ bool DirichletTessellation::RemoveHullVertex(std::int32_t edge)
     this->FreeTriangles.push_back(free);
   }
   this->Serial.LastTriangle = slots[0];
+  if (this->CheckStars)
+  {
+    this->Serial.SawCocircular = this->AnyCocircularNeighbour(slots.data(), k - h);
+  }
   return true;
 }
 

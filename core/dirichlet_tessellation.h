@@ -123,12 +123,12 @@ public:
   /// otherwise a walk from the last triangle.
   std::int32_t EdgeLeaving(std::int32_t id) const;
   bool IsFreeTriangle(std::int32_t t) const { return this->Origins[3 * t] == Free; }
-  /// True when a batch build met no two adjacent real triangles exactly co-circular (so the
-  /// tessellation has no degenerate vertex) and nothing was inserted or removed since: the
-  /// Delaunay faces are then exactly the real triangles. False when unknown or when the build met
-  /// such triangles (possibly only on the way). The build tracks it as it inserts, from tests it
-  /// makes anyway plus one per triangle around each new point; derived results use it to skip
-  /// their own check.
+  /// True when no two adjacent real triangles are exactly co-circular (so the tessellation has
+  /// no degenerate vertex), as tracked since construction: the Delaunay faces are then exactly
+  /// the real triangles. False when unknown or once such triangles were met (possibly only on
+  /// the way: it stays false until a rebuild). Insertions track it from tests they make anyway
+  /// plus one per triangle around each new point; removals test their new triangles against
+  /// their neighbours. Derived results use it to skip their own check.
   bool KnownFreeOfCocircularTriangles() const { return this->NoCocircularTriangles; }
 
   /// Bytes held by the structure (capacities of all arrays, coordinates included). A batch build
@@ -235,6 +235,7 @@ private:
   bool RemoveInteriorVertex(std::int32_t edge);
   bool RemoveHullVertex(std::int32_t edge);
   void RebuildWithout(std::int32_t id);
+  bool AnyCocircularNeighbour(const std::int32_t* triangles, std::size_t count) const;
 
   Window TheWindow;
   std::vector<Point2> Coordinates;
@@ -255,6 +256,8 @@ private:
   const std::vector<std::int32_t>* BuildOrder = nullptr;
   std::size_t Accepted = 0;
   bool NoCocircularTriangles = false;
+  /// During one Insert or Remove while NoCocircularTriangles holds: test what it changes.
+  bool CheckStars = false;
 };
 
 } // namespace tessera

@@ -31,6 +31,7 @@ public:
   LocalFaces(const Tess& tess, bool wantCentres)
     : T(tess)
     , WantCentres(wantCentres)
+    , FreeOfCocircular(tess.KnownFreeOfCocircularTriangles())
     , EntryOf(tess.Origin().size() / 3, -1)
   {
   }
@@ -81,11 +82,12 @@ public:
     const auto& org = this->T.Origin();
     const auto& twin = this->T.Twin();
     const std::vector<Point2>& pts = this->T.Points();
-    // Flood the triangles on t's circle; members are marked with a placeholder entry.
+    // Flood the triangles on t's circle; members are marked with a placeholder entry. (None
+    // when the tessellation is known free of co-circular triangles.)
     constexpr std::int32_t Pending = -2;
     this->Cluster.assign(1, t);
     this->Insert(t, Pending);
-    for (std::size_t k = 0; k < this->Cluster.size(); ++k)
+    for (std::size_t k = 0; k < this->Cluster.size() && !this->FreeOfCocircular; ++k)
     {
       const std::int32_t s = this->Cluster[k];
       for (std::int32_t side = 0; side < 3; ++side)
@@ -157,6 +159,7 @@ private:
 
   const Tess& T;
   const bool WantCentres;
+  const bool FreeOfCocircular;
   std::vector<std::int32_t> EntryOf; // per triangle: entry index, -1 unlisted, -2 pending
   std::vector<Entry> Entries;
   std::vector<std::int32_t> Points; // per entry, its face's point ids, ascending

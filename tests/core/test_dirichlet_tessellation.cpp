@@ -1177,31 +1177,38 @@ TEST(DirichletTessellation, TwoRegionBuildOfASubnormallyThinSetDoesNotCrash)
 
 // The build's co-circularity flag against the exact incircle of every interior edge: never true
 // when two adjacent triangles are co-circular, and true for points in general position.
+namespace
+{
+/// Whether two adjacent real triangles are exactly co-circular (exact incircle of every edge).
+bool AnyCocircularEdge(const Tess& t)
+{
+  const auto& org = t.Origin();
+  const auto& pts = t.Points();
+  for (std::int32_t e = 0; e < std::int32_t(org.size()); ++e)
+  {
+    const std::int32_t f = t.Twin()[e];
+    const std::int32_t a = org[e], b = org[Tess::Next(e)], c = org[Tess::Prev(e)];
+    const std::int32_t d = org[Tess::Prev(f)];
+    if (a >= 0 && b >= 0 && c >= 0 && d >= 0 && incircle(pts[a], pts[b], pts[c], pts[d]) == 0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+} // namespace
+
 TEST(DirichletTessellation, CocircularTrianglesAreKnownAfterABatchBuild)
 {
-  const auto anyCocircularEdge = [](const Tess& t)
-  {
-    const auto& org = t.Origin();
-    const auto& pts = t.Points();
-    for (std::int32_t e = 0; e < std::int32_t(org.size()); ++e)
-    {
-      const std::int32_t f = t.Twin()[e];
-      const std::int32_t a = org[e], b = org[Tess::Next(e)], c = org[Tess::Prev(e)];
-      const std::int32_t d = org[Tess::Prev(f)];
-      if (a >= 0 && b >= 0 && c >= 0 && d >= 0 && incircle(pts[a], pts[b], pts[c], pts[d]) == 0)
-      {
-        return true;
-      }
-    }
-    return false;
-  };
+  const auto anyCocircularEdge = [](const Tess& t) { return AnyCocircularEdge(t); };
   for (const std::size_t n : { std::size_t(2000), TwoRegionSize })
   {
     Tess t(UnitWindow(), UniformPoints(n, 2));
     EXPECT_FALSE(anyCocircularEdge(t));
     EXPECT_TRUE(t.KnownFreeOfCocircularTriangles());
-    t.Insert({ 0.5, 0.5 });
-    EXPECT_FALSE(t.KnownFreeOfCocircularTriangles());
+    t.Insert({ 0.5, 0.5 }); // general position still: the flag is kept
+    EXPECT_FALSE(anyCocircularEdge(t));
+    EXPECT_TRUE(t.KnownFreeOfCocircularTriangles());
   }
   // One tiny square (an empty circle through four points) among uniform points, at places that
   // include the two-region seam (near x = 0.5) and the hull: it must be noticed wherever it is.
@@ -1237,8 +1244,104 @@ TEST(DirichletTessellation, CocircularTrianglesAreKnownAfterABatchBuild)
     }
   }
   EXPECT_FALSE(Tess(UnitWindow(), lattice).KnownFreeOfCocircularTriangles());
-  Tess removed(UnitWindow(), UniformPoints(500, 6));
-  ASSERT_TRUE(removed.KnownFreeOfCocircularTriangles());
-  removed.Remove(3);
-  EXPECT_FALSE(removed.KnownFreeOfCocircularTriangles());
+}
+
+// The flag through streaming: an empty tessellation is free; Insert and Remove keep the flag
+// while nothing is co-circular, and drop it (never wrongly keep it) when an insertion or a
+// removal makes two adjacent triangles co-circular, checked after every operation against the
+// exact incircle of every edge.
+TEST(DirichletTessellation, CocircularTrianglesAreTrackedThroughInsertAndRemove)
+{
+  // General position: kept through 300 insertions and 150 removals (interior and hull).
+  {
+    Tess t(UnitWindow());
+    EXPECT_TRUE(t.KnownFreeOfCocircularTriangles());
+    for (const Point2& p : UniformPoints(300, 8))
+    {
+      t.Insert(p);
+    }
+    EXPECT_TRUE(t.KnownFreeOfCocircularTriangles());
+    for (std::int32_t id = 0; id < 300; id += 2)
+    {
+      t.Remove(id);
+      ASSERT_TRUE(t.KnownFreeOfCocircularTriangles()) << "after removing " << id;
+    }
+    EXPECT_FALSE(AnyCocircularEdge(t));
+  }
+  // A tiny square inserted corner by corner among uniform points: dropped by the fourth corner.
+  {
+    Tess t(UnitWindow(), UniformPoints(400, 9));
+    const double h = 1e-7;
+    for (const Point2& corner : { Point2{ 0.3 - h, 0.6 - h },
+           { 0.3 + h, 0.6 - h },
+           { 0.3 + h, 0.6 + h },
+           { 0.3 - h, 0.6 + h } })
+    {
+      t.Insert(corner);
+      EXPECT_TRUE(!t.KnownFreeOfCocircularTriangles() || !AnyCocircularEdge(t));
+    }
+    EXPECT_TRUE(AnyCocircularEdge(t));
+    EXPECT_FALSE(t.KnownFreeOfCocircularTriangles());
+  }
+  // A square with a point at its centre: removing the centre leaves the square's two triangles
+  // on one circle.
+  {
+    // (The centre goes in first: the corners alone would be co-circular on the way, and the flag
+    // stays false once it has been.)
+    std::vector<Point2> points = UniformPoints(400, 10);
+    const double h = 1e-4;
+    points.push_back({ 0.7, 0.2 });
+    points.insert(points.end(),
+      { { 0.7 - h, 0.2 - h }, { 0.7 + h, 0.2 - h }, { 0.7 + h, 0.2 + h }, { 0.7 - h, 0.2 + h } });
+    Tess t(UnitWindow());
+    for (const Point2& p : points)
+    {
+      t.Insert(p);
+    }
+    ASSERT_FALSE(AnyCocircularEdge(t));
+    ASSERT_TRUE(t.KnownFreeOfCocircularTriangles());
+    t.Remove(400);
+    EXPECT_TRUE(AnyCocircularEdge(t));
+    EXPECT_FALSE(t.KnownFreeOfCocircularTriangles());
+  }
+  // Lattice points (many co-circular quadruples) inserted and removed at random among uniform
+  // ones, in many short runs from a fresh tessellation: the flag is never true while two adjacent
+  // triangles are co-circular. (Each run checks until its first co-circularity, when the flag
+  // drops for good; the count shows that many checks found it still true.)
+  std::mt19937 random(12);
+  std::uniform_int_distribution<int> cell(1, 9);
+  int checkedWhileFree = 0, dropped = 0;
+  for (int run = 0; run < 60; ++run)
+  {
+    Tess t(UnitWindow());
+    std::vector<std::int32_t> present;
+    for (const Point2& p : UniformPoints(20, 200 + run))
+    {
+      present.push_back(t.Insert(p));
+    }
+    for (int op = 0; op < 40 && t.KnownFreeOfCocircularTriangles(); ++op)
+    {
+      if (random() % 3 == 0)
+      {
+        const std::size_t k = random() % present.size();
+        t.Remove(present[k]);
+        present.erase(present.begin() + std::ptrdiff_t(k));
+      }
+      else
+      {
+        present.push_back(t.Insert({ cell(random) / 10.0, cell(random) / 10.0 }));
+      }
+      if (t.KnownFreeOfCocircularTriangles())
+      {
+        ASSERT_FALSE(AnyCocircularEdge(t)) << "run " << run << " operation " << op;
+        ++checkedWhileFree;
+      }
+      else
+      {
+        ++dropped;
+      }
+    }
+  }
+  EXPECT_GT(checkedWhileFree, 100);
+  EXPECT_GT(dropped, 10);
 }
