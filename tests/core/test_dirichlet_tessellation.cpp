@@ -1175,11 +1175,10 @@ TEST(DirichletTessellation, TwoRegionBuildOfASubnormallyThinSetDoesNotCrash)
   EXPECT_TRUE(t.IsTwoDimensional());
 }
 
-// The build's co-circularity flag against the exact incircle of every interior edge: never true
-// when two adjacent triangles are co-circular, and true for points in general position.
 namespace
 {
-/// Whether two adjacent real triangles are exactly co-circular (exact incircle of every edge).
+/// Whether two adjacent real triangles are exactly co-circular (exact incircle of every edge;
+/// recycled triangles, whose twins are -1, are skipped).
 bool AnyCocircularEdge(const Tess& t)
 {
   const auto& org = t.Origin();
@@ -1187,6 +1186,10 @@ bool AnyCocircularEdge(const Tess& t)
   for (std::int32_t e = 0; e < std::int32_t(org.size()); ++e)
   {
     const std::int32_t f = t.Twin()[e];
+    if (f < 0)
+    {
+      continue;
+    }
     const std::int32_t a = org[e], b = org[Tess::Next(e)], c = org[Tess::Prev(e)];
     const std::int32_t d = org[Tess::Prev(f)];
     if (a >= 0 && b >= 0 && c >= 0 && d >= 0 && incircle(pts[a], pts[b], pts[c], pts[d]) == 0)
@@ -1198,6 +1201,8 @@ bool AnyCocircularEdge(const Tess& t)
 }
 } // namespace
 
+// The build's co-circularity flag against the exact incircle of every interior edge: never true
+// when two adjacent triangles are co-circular, and true for points in general position.
 TEST(DirichletTessellation, CocircularTrianglesAreKnownAfterABatchBuild)
 {
   const auto anyCocircularEdge = [](const Tess& t) { return AnyCocircularEdge(t); };
