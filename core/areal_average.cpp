@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <sstream>
 
 namespace tessera
@@ -59,6 +60,8 @@ struct ThiessenArealAverage::State
   std::unique_ptr<DirichletTessellation> Tessellation;
   std::vector<std::int32_t> EngineOfGauge; // engine id, or NotInTessellation
   std::vector<std::int32_t> GaugeOfEngine;
+  std::vector<std::int32_t> CurveOrder; // every gauge, along the Hilbert curve (updates only)
+  std::vector<std::int32_t> CurveRank;  // per gauge, its position in CurveOrder
 
   // Per gauge: the clipped area (m^2) of its tile, as last derived.
   std::vector<double> CachedArea;
@@ -233,6 +236,31 @@ struct ThiessenArealAverage::State
     return ComputeFaceMatesOf(*this->Tessellation, this->EngineIds(gauges)).Ids;
   }
 
+  /// The engine id of a gauge in the tessellation next to gauge g along the Hilbert curve (a few
+  /// steps either way), where the walk to g starts: the gauges inserted at one step are spread
+  /// over the whole window, and a walk from the one before crossed some ten triangles, a cache
+  /// miss each. -1 when none is near on the curve (the walk then starts where the last ended).
+  std::int32_t PresentNear(std::int32_t g) const
+  {
+    const std::int64_t rank = this->CurveRank[g];
+    const std::int64_t n = static_cast<std::int64_t>(this->CurveOrder.size());
+    for (std::int64_t step = 1; step <= 8; ++step)
+    {
+      for (const std::int64_t q : { rank - step, rank + step })
+      {
+        if (q >= 0 && q < n)
+        {
+          const std::int32_t id = this->EngineOfGauge[this->CurveOrder[q]];
+          if (id != NotInTessellation)
+          {
+            return id;
+          }
+        }
+      }
+    }
+    return -1;
+  }
+
   /// Removes, then inserts (Green-Sibson removal and insertion).
   void Apply(const std::vector<std::int32_t>& removed, const std::vector<std::int32_t>& inserted)
   {
@@ -243,7 +271,7 @@ struct ThiessenArealAverage::State
     }
     for (const std::int32_t g : inserted)
     {
-      const std::int32_t id = this->Tessellation->Insert(this->GaugesXY[g]);
+      const std::int32_t id = this->Tessellation->Insert(this->GaugesXY[g], this->PresentNear(g));
       this->EngineOfGauge[g] = id;
       if (static_cast<std::size_t>(id) >= this->GaugeOfEngine.size())
       {
@@ -421,6 +449,14 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   if (settings.Incremental)
   {
     s.Tessellation->TrackVertexEdges(); // local tile derivation finds its rings in O(1)
+    s.CurveOrder.resize(gaugesLonLat.size());
+    std::iota(s.CurveOrder.begin(), s.CurveOrder.end(), 0);
+    s.SpatialSort(s.CurveOrder);
+    s.CurveRank.resize(gaugesLonLat.size());
+    for (std::size_t k = 0; k < s.CurveOrder.size(); ++k)
+    {
+      s.CurveRank[s.CurveOrder[k]] = static_cast<std::int32_t>(k);
+    }
   }
   s.EngineOfGauge.assign(gaugesLonLat.size(), NotInTessellation);
   s.CachedArea.assign(gaugesLonLat.size(), 0.0);

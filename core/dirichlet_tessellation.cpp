@@ -308,7 +308,7 @@ void DirichletTessellation::Validate(const Point2& p, std::size_t id) const
   }
 }
 
-std::int32_t DirichletTessellation::Insert(const Point2& p)
+std::int32_t DirichletTessellation::Insert(const Point2& p, std::int32_t nearId)
 {
   // Known free of co-circular triangles until now: still so if this insertion's own tests and
   // the star test (StarIsCocircular) meet no zero. Unknown (false) if anything throws.
@@ -335,6 +335,14 @@ std::int32_t DirichletTessellation::Insert(const Point2& p)
   }
   else
   {
+    if (nearId >= 0 && this->TracksVertexEdges())
+    {
+      const std::int32_t e = this->EdgeLeaving(nearId); // -1 unless an accepted vertex
+      if (e >= 0)
+      {
+        this->Serial.LastTriangle = e / 3;
+      }
+    }
     this->Serial.SawCocircular = false;
     this->CheckStars = wasFree;
     this->InsertAcceptedPoint(std::int32_t(id));

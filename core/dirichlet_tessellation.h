@@ -73,7 +73,10 @@ public:
 
   /// Streaming: appends p with the next id and inserts it. Returns its id; its status tells
   /// whether it was accepted. Throws InputError (naming that id) for a NaN/Inf coordinate.
-  std::int32_t Insert(const Point2& p);
+  /// nearId: an accepted point near p, where the walk to p starts when vertex edges are tracked
+  /// (TrackVertexEdges); otherwise, or for -1, it starts at the triangle made last. The result
+  /// is the same either way: only the walk's length differs.
+  std::int32_t Insert(const Point2& p, std::int32_t nearId = -1);
   /// Removes an accepted point (the result equals the tessellation built without it; if it had
   /// exact duplicates, the smallest of them takes its place). A duplicate or rejected point is
   /// only marked removed. Throws InputError for an unknown or already removed id. The hole left

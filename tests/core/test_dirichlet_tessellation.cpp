@@ -402,6 +402,42 @@ TEST(DirichletTessellation, StreamingEqualsBatch)
   EXPECT_TRUE(MakeCanonical(batch) == MakeCanonical(streaming));
 }
 
+// Insert's nearId only moves where the walk starts: with any hint (a random earlier point, a
+// removed or rejected one, an unknown id) the result is the tessellation built without hints, on
+// uniform points and on a lattice with its co-circular squares and duplicates.
+TEST(DirichletTessellation, InsertHintsChangeNothing)
+{
+  std::vector<Point2> lattice = tessera_test::SquareLattice(30, 31.0);
+  lattice.insert(lattice.end(), lattice.begin(), lattice.begin() + 40); // duplicates
+  lattice.push_back({ 2.0, 2.0 });                                      // outside the window
+  for (const std::vector<Point2>& points : { UniformPoints(3000, 14), lattice })
+  {
+    std::mt19937 random(5);
+    Tess plain(UnitWindow()), hinted(UnitWindow());
+    plain.TrackVertexEdges();
+    hinted.TrackVertexEdges();
+    for (std::size_t k = 0; k < points.size(); ++k)
+    {
+      plain.Insert(points[k]);
+      const std::int32_t hint = k == 0 ? -1 : std::int32_t(random() % (k + 5)) - 2;
+      hinted.Insert(points[k], hint);
+      if (k % 7 == 3)
+      {
+        const std::int32_t victim = std::int32_t(random() % (k + 1));
+        if (plain.Status(victim) != PointStatus::Removed)
+        {
+          plain.Remove(victim);
+          hinted.Remove(victim);
+        }
+      }
+    }
+    CheckStructure(hinted);
+    EXPECT_TRUE(MakeCanonical(plain) == MakeCanonical(hinted));
+    EXPECT_EQ(plain.Duplicates(), hinted.Duplicates());
+    EXPECT_EQ(plain.RejectedIds(), hinted.RejectedIds());
+  }
+}
+
 TEST(DirichletTessellation, TenInsertionOrdersGiveIdenticalResults)
 {
   // A lattice with jitter-free co-circular squares plus random points: degenerate faces included.
