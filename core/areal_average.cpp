@@ -72,17 +72,18 @@ struct ThiessenArealAverage::State
   std::vector<char> Wanted;   // per gauge: used this step (kept: a step is O(gauges) already)
   std::vector<char> PlaceTaken;
   std::vector<char> Marked;         // DeriveChanged's
-  std::vector<std::int32_t> Picked; // Step's weighted gauges (n + 1: written past the last)
+  std::vector<std::int32_t> Picked; // Step's weighted gauges (gauge g is written at a slot <= g)
 
-  /// wanted[g] = 1 for the gauges used at this step: those that reported, the first of each
+  /// Wanted[g] = 1 for the gauges used at this step: those that reported, the first of each
   /// place. Returns their number; throws InputError naming a gauge with an infinite value.
-  int MarkReporting(const std::vector<double>& values, std::vector<char>& wanted)
+  int MarkReporting(const std::vector<double>& values)
   {
     const std::size_t n = values.size();
+    std::vector<char>& wanted = this->Wanted;
     wanted.resize(n);
     if (!this->Duplicates.empty())
     {
-      return this->MarkReportingGrouped(values, wanted);
+      return this->MarkReportingGrouped(values);
     }
     // Without branches on the values: in a real record, which gauges report is close to random,
     // and a mispredicted branch per gauge was most of this loop's time.
@@ -103,9 +104,10 @@ struct ThiessenArealAverage::State
     return used;
   }
 
-  int MarkReportingGrouped(const std::vector<double>& values, std::vector<char>& wanted)
+  int MarkReportingGrouped(const std::vector<double>& values)
   {
     const std::size_t n = values.size();
+    std::vector<char>& wanted = this->Wanted;
     std::fill(wanted.begin(), wanted.end(), 0);
     this->PlaceTaken.assign(n, 0);
     int used = 0;
@@ -499,8 +501,8 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
     throw InputError("a step has " + std::to_string(values.size()) + " values for " +
       std::to_string(n) + " gauges");
   }
-  std::vector<char>& wanted = s.Wanted;
-  const int used = s.MarkReporting(values, wanted);
+  const int used = s.MarkReporting(values);
+  const std::vector<char>& wanted = s.Wanted;
   // The local derivation when updating a two-dimensional tessellation, with at most a fifth of
   // the gauges changing; otherwise every tile. A two-dimensional tessellation before the update
   // means that the previous step derived every tile it has (the first step, or one after a step
@@ -545,7 +547,7 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
   // The weighted gauges are listed without a branch per gauge (which gauges report, and whose
   // tile reaches the catchment, is close to random), then weighed.
   std::vector<std::int32_t>& picked = s.Picked;
-  picked.resize(n + 1);
+  picked.resize(n);
   std::size_t count = 0;
   for (std::size_t g = 0; g < n; ++g)
   {

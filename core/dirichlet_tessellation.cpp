@@ -310,10 +310,6 @@ void DirichletTessellation::Validate(const Point2& p, std::size_t id) const
 
 std::int32_t DirichletTessellation::Insert(const Point2& p, std::int32_t nearId)
 {
-  // Known free of co-circular triangles until now: still so if this insertion's own tests and
-  // the star test (StarIsCocircular) meet no zero. Unknown (false) if anything throws.
-  const bool wasFree = this->NoCocircularTriangles;
-  this->NoCocircularTriangles = false;
   const std::size_t id = this->Coordinates.size();
   this->Validate(p, id);
   if (id >= std::size_t(INT32_MAX / 8))
@@ -331,7 +327,6 @@ std::int32_t DirichletTessellation::Insert(const Point2& p, std::int32_t nearId)
   {
     this->Rejected.push_back(std::int32_t(id)); // the largest id so far: Rejected stays sorted
     this->StatusBytes.back() = std::uint8_t(PointStatus::OutsideWindow);
-    this->NoCocircularTriangles = wasFree;
   }
   else
   {
@@ -343,11 +338,9 @@ std::int32_t DirichletTessellation::Insert(const Point2& p, std::int32_t nearId)
         this->Serial.LastTriangle = e / 3;
       }
     }
-    this->Serial.SawCocircular = false;
-    this->CheckStars = wasFree;
+    this->BeginTrackedChange();
     this->InsertAcceptedPoint(std::int32_t(id));
-    this->CheckStars = false;
-    this->NoCocircularTriangles = wasFree && !this->Serial.SawCocircular;
+    this->EndTrackedChange();
   }
   return std::int32_t(id);
 }
@@ -467,7 +460,7 @@ DirichletTessellation::Location DirichletTessellation::InsertInRegion(Region& re
   }
   this->RestoreDelaunay(region);
   ++region.Inserted;
-  if ((this->BuildOrder || this->CheckStars) && !region.SawCocircular) // when tracked
+  if ((this->BuildOrder || this->TrackingCocircular) && !region.SawCocircular)
   {
     const std::int32_t start = 3 * region.LastTriangle + 2; // leaves id (see SplitTriangle)
     region.SawCocircular = this->Origins[start] != id || this->StarIsCocircular(start);
@@ -1070,11 +1063,6 @@ std::int32_t DirichletTessellation::EdgeLeaving(std::int32_t id) const
 
 void DirichletTessellation::Remove(std::int32_t id)
 {
-  // As in Insert: a removal that re-triangulates in place tests its new triangles against their
-  // neighbours (AnyCocircularNeighbour); one that changes no triangle keeps the flag; a rebuild
-  // sets it afresh.
-  const bool wasFree = this->NoCocircularTriangles;
-  this->NoCocircularTriangles = false;
   const PointStatus status = this->Status(id); // throws for an out-of-range id
   if (status == PointStatus::Removed)
   {
@@ -1088,7 +1076,6 @@ void DirichletTessellation::Remove(std::int32_t id)
   {
     this->Rejected.erase(std::lower_bound(this->Rejected.begin(), this->Rejected.end(), id));
     this->RemovedPoints.push_back(id);
-    this->NoCocircularTriangles = wasFree;
     return;
   }
   if (status == PointStatus::Duplicate)
@@ -1096,7 +1083,6 @@ void DirichletTessellation::Remove(std::int32_t id)
     // The copied point keeps its HasDuplicates mark (a hint; see StatusMask).
     this->DuplicatePairs.erase(this->FindDuplicatePair(id));
     this->RemovedPoints.push_back(id);
-    this->NoCocircularTriangles = wasFree;
     return;
   }
   std::int32_t edge = -1;
@@ -1149,7 +1135,6 @@ void DirichletTessellation::Remove(std::int32_t id)
     {
       *onLine = heir;
     }
-    this->NoCocircularTriangles = wasFree;
     return;
   }
 
@@ -1157,21 +1142,33 @@ void DirichletTessellation::Remove(std::int32_t id)
   if (!this->IsTwoDimensional())
   {
     this->Collinear.erase(onLine);
-    this->NoCocircularTriangles = wasFree;
     return;
   }
-  this->Serial.SawCocircular = false;
-  this->CheckStars = wasFree;
+  // The paths above change no triangle and keep the co-circularity flag; an in-place removal
+  // tests its new triangles against their neighbours (AnyCocircularNeighbour); a rebuild sets
+  // the flag afresh.
+  this->BeginTrackedChange();
   const bool inPlace = this->RemoveInteriorVertex(edge) || this->RemoveHullVertex(edge);
-  this->CheckStars = false;
-  if (inPlace)
+  this->EndTrackedChange();
+  if (!inPlace)
   {
-    this->NoCocircularTriangles = wasFree && !this->Serial.SawCocircular;
+    this->RebuildWithout(id);
   }
-  else
-  {
-    this->RebuildWithout(id); // sets the flag
-  }
+}
+
+// Known free of co-circular triangles before a change to the triangles: still so after it if the
+// tests it makes (SawCocircular) meet no zero. Unknown (false) while it runs, so also if it throws.
+void DirichletTessellation::BeginTrackedChange()
+{
+  this->TrackingCocircular = this->NoCocircularTriangles;
+  this->NoCocircularTriangles = false;
+  this->Serial.SawCocircular = false;
+}
+
+void DirichletTessellation::EndTrackedChange()
+{
+  this->NoCocircularTriangles = this->TrackingCocircular && !this->Serial.SawCocircular;
+  this->TrackingCocircular = false;
 }
 
 // Whether a real triangle among the given ones is exactly co-circular with a real triangle
@@ -1297,7 +1294,7 @@ bool DirichletTessellation::RemoveInteriorVertex(std::int32_t edge)
     return false; // rebuilding is always correct
   }
   this->ApplyPlan(plan, slots);
-  if (this->CheckStars)
+  if (this->TrackingCocircular)
   {
     this->Serial.SawCocircular = this->AnyCocircularNeighbour(slots.data(), plan.size());
   }
@@ -1460,7 +1457,7 @@ bool DirichletTessellation::RemoveHullVertex(std::int32_t edge)
     this->FreeTriangles.push_back(free);
   }
   this->Serial.LastTriangle = slots[0];
-  if (this->CheckStars)
+  if (this->TrackingCocircular)
   {
     this->Serial.SawCocircular = this->AnyCocircularNeighbour(slots.data(), k - h);
   }

@@ -239,6 +239,8 @@ private:
   bool RemoveHullVertex(std::int32_t edge);
   void RebuildWithout(std::int32_t id);
   bool AnyCocircularNeighbour(const std::int32_t* triangles, std::size_t count) const;
+  void BeginTrackedChange();
+  void EndTrackedChange();
 
   Window TheWindow;
   std::vector<Point2> Coordinates;
@@ -259,8 +261,9 @@ private:
   const std::vector<std::int32_t>* BuildOrder = nullptr;
   std::size_t Accepted = 0;
   bool NoCocircularTriangles = false;
-  /// During one Insert or Remove while NoCocircularTriangles holds: test what it changes.
-  bool CheckStars = false;
+  /// Between BeginTrackedChange and EndTrackedChange, when the tessellation was known free of
+  /// co-circular triangles: the change tests what it makes (star tests, removal's new triangles).
+  bool TrackingCocircular = false;
 };
 
 } // namespace tessera

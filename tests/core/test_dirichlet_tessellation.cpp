@@ -1241,14 +1241,13 @@ bool AnyCocircularEdge(const Tess& t)
 // when two adjacent triangles are co-circular, and true for points in general position.
 TEST(DirichletTessellation, CocircularTrianglesAreKnownAfterABatchBuild)
 {
-  const auto anyCocircularEdge = [](const Tess& t) { return AnyCocircularEdge(t); };
   for (const std::size_t n : { std::size_t(2000), TwoRegionSize })
   {
     Tess t(UnitWindow(), UniformPoints(n, 2));
-    EXPECT_FALSE(anyCocircularEdge(t));
+    EXPECT_FALSE(AnyCocircularEdge(t));
     EXPECT_TRUE(t.KnownFreeOfCocircularTriangles());
     t.Insert({ 0.5, 0.5 }); // general position still: the flag is kept
-    EXPECT_FALSE(anyCocircularEdge(t));
+    EXPECT_FALSE(AnyCocircularEdge(t));
     EXPECT_TRUE(t.KnownFreeOfCocircularTriangles());
   }
   // One tiny square (an empty circle through four points) among uniform points, at places that
@@ -1272,7 +1271,7 @@ TEST(DirichletTessellation, CocircularTrianglesAreKnownAfterABatchBuild)
           points.begin() + std::ptrdiff_t((at + k * n / 5) % points.size()), corners[k]);
       }
       const Tess t(UnitWindow(), points);
-      ASSERT_TRUE(anyCocircularEdge(t)) << "trial " << trial;
+      ASSERT_TRUE(AnyCocircularEdge(t)) << "trial " << trial;
       EXPECT_FALSE(t.KnownFreeOfCocircularTriangles()) << "trial " << trial << " n " << n;
     }
   }
