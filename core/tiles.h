@@ -138,6 +138,11 @@ public:
   /// Number of merged faces with 4 or more points.
   std::size_t DegenerateFaceCount() const { return this->DegenerateReps.size(); }
 
+  /// The results are derived in chunks of at least this many points, one per thread (a second
+  /// thread pays off from a few thousand tiles, about 250 ns of work each: at 10^4 points the
+  /// build plus tiles went from 6.4-7.9 to 5.4-6.7 ms, medians of 5, with this instead of 25000).
+  static constexpr std::int64_t MinimumTilesPerThread = 2500;
+
   // Face access for the tile walk (tiles.cpp): triangle t's face label, and a face's view.
   std::int32_t Label(std::int32_t t) const { return this->Data[t].Face; }
   tiles_detail::FaceView View(std::int32_t label) const;

@@ -768,12 +768,14 @@ TEST(Clip, ProjectedLatticeThiessenTilesSumToCatchmentArea)
       const Point2 a = tile[i], b = tile[(i + 1) % tile.size()];
       rough += std::fabs(a.x - b.x) + std::fabs(a.y - b.y) < 1e-6;
     }
-    if (area == 0.0 || area == tileArea)
-    {
-      continue; // no clipping happened: the rotations below would not exercise it
-    }
+    // Every tile against the exact clip, those the clip left whole or empty included (a tile
+    // wrongly dropped or wrongly kept whole must fail here, not only in the sum).
     const mpq_class exact = ExactPolygonClippedArea(rings, tile);
     EXPECT_NEAR(area, exact.get_d(), Tolerance(exact, tileArea)) << "tile " << t;
+    if (exact == 0 || exact == ExactArea(ToExact(tile)))
+    {
+      continue; // the catchment misses the tile or holds it: rotations would not exercise a cut
+    }
     for (std::size_t start = 1; start < tile.size(); ++start)
     {
       std::rotate(tile.begin(), tile.begin() + 1, tile.end());
