@@ -3,6 +3,7 @@
 #include "areal_average.h"
 #include "errors.h"
 
+#include <GeographicLib/Constants.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -31,6 +32,32 @@ double Sum(const std::vector<double>& v)
   return std::accumulate(v.begin(), v.end(), 0.0);
 }
 
+constexpr double Degree = M_PI / 180.0;
+
+// WGS84 eccentricity squared.
+double EccentricitySquared()
+{
+  const double f = GeographicLib::Constants::WGS84_f();
+  return f * (2 - f);
+}
+
+// The authalic function q(phi) (Snyder, Map Projections: A Working Manual, eq. 3-12): the area
+// of the WGS84 zone between the equator and latitude phi is a^2 q(phi) / 2 per radian of
+// longitude.
+double AuthalicQ(double latitudeDegrees)
+{
+  const double e2 = EccentricitySquared(), e = std::sqrt(e2);
+  const double s = std::sin(latitudeDegrees * Degree);
+  return (1 - e2) * (s / (1 - e2 * s * s) + std::log((1 + e * s) / (1 - e * s)) / (2 * e));
+}
+
+// Closed-form ellipsoidal area of the cell between two meridians and two parallels, m^2.
+double LonLatCellArea(double west, double south, double east, double north)
+{
+  const double a = GeographicLib::Constants::WGS84_a();
+  return 0.5 * a * a * (east - west) * Degree * (AuthalicQ(north) - AuthalicQ(south));
+}
+
 } // namespace
 
 TEST(ArealAverage, FourSymmetricGaugesShareASquareEqually)
@@ -56,8 +83,17 @@ TEST(ArealAverage, FourSymmetricGaugesShareASquareEqually)
     }
     EXPECT_NEAR(step.Mean, 2.5, 1e-9);
     EXPECT_NEAR(Sum(step.Weights), 1.0, method == AreaMethod::EqualAreaPlane ? 1e-12 : 1e-8);
-    // The catchment's area: 2x2 degrees at the equator is about 4.9e10 m^2.
-    EXPECT_NEAR(average.CatchmentAreaM2() / 4.9234e10, 1.0, 1e-3);
+    // The catchment's area against the closed form for a meridian/parallel cell. Standard
+    // parallels symmetric about the equator make the Albers conic cylindrical (n = 0), so the
+    // densified parallels stay straight in the plane: the planar area differs only by rounding.
+    // The geodesic method joins the points along each parallel (2 degrees, cut into 400 pieces of
+    // dl = 0.005 degrees: 0.01-degree catchment pieces, halved by the 1000 m step) by geodesics,
+    // which bulge poleward by an area R^2 sin(phi) cos(phi)^2 dl^3 / 12 each: 2 x 16 m^2 in all
+    // at phi = 1 degree, 6.4e-10 of the area; the tolerance is three times that.
+    const double expected = LonLatCellArea(-1.0, -1.0, 1.0, 1.0);
+    EXPECT_NEAR(average.CatchmentAreaM2() / expected,
+      1.0,
+      method == AreaMethod::EqualAreaPlane ? 1e-12 : 2e-9);
   }
 }
 
@@ -67,9 +103,17 @@ TEST(ArealAverage, AGaugeOutsideTheCatchmentStillOwnsItsNearestPart)
   // Gauge 1 lies outside, east of the square, nearer to its eastern strip than gauge 0 is.
   const std::vector<Point2> gauges = { { 10.3, 40.5 }, { 11.2, 40.5 } };
   ThiessenArealAverage average(gauges, catchment.Offsets, catchment.Ring);
+  ASSERT_EQ(average.Projection().Kind, ProjectionKind::AlbersEqualArea);
   const ArealStep step = average.Step({ 10.0, 20.0 });
   ASSERT_EQ(step.StationsWeighted, 2);
-  EXPECT_GT(step.Weights[1], 0.1);
+  // Gauge 1's weight is exactly 1/4 by symmetry. The projection is an Albers conic, where the
+  // parallel 40.5 through both gauges is a circle about the cone's apex: the perpendicular
+  // bisector of the two gauges passes through the apex, so it is a meridian, the one halfway
+  // between them, 10.75. Gauge 1 owns the strip between meridians 10.75 and 11, and a strip's
+  // ellipsoidal area is proportional to its longitude span: 0.25 of the 1-degree square. The
+  // engine's chords (0.01-degree pieces) are congruent under rotation about the apex, so they
+  // keep the ratio; what is left is the rounding of the clipped shoelace sums.
+  EXPECT_NEAR(step.Weights[1], 0.25, 1e-13);
   EXPECT_NEAR(Sum(step.Weights), 1.0, 1e-12);
   EXPECT_NEAR(step.Mean, 10.0 * step.Weights[0] + 20.0 * step.Weights[1], 1e-12);
 }

@@ -1208,7 +1208,12 @@ TEST(DirichletTessellation, TwoRegionBuildOfASubnormallyThinSetDoesNotCrash)
   }
   const Tess t(Window::Rectangle(-1.0, 1.0, -1.0, 2.0), points);
   EXPECT_EQ(t.AcceptedCount(), points.size());
-  EXPECT_TRUE(t.IsTwoDimensional());
+  ASSERT_TRUE(t.IsTwoDimensional());
+  // And the result is a valid Delaunay triangulation: consistent half-edges, anticlockwise real
+  // triangles (exact orient2d), 2n - 2 - h of them (Euler, h hull edges), every edge locally
+  // Delaunay and the hull convex under the exact predicates.
+  EXPECT_EQ(CheckStructure(t), 2 * points.size() - 2 - HullSize(t));
+  CheckLocallyDelaunay(t);
 }
 
 namespace

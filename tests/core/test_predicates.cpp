@@ -513,9 +513,18 @@ TEST(Predicates, AffineSignExtremes)
     ASSERT_EQ(tessera::affine_sign(a, b, c, p), affine_ref(a, b, c, p))
       << a << " " << b << " " << c << " " << p.x << " " << p.y;
   }
-  // Exactly zero.
-  EXPECT_EQ(tessera::affine_sign(3, 5, -(3 * 1e-300 + 5 * 2e-300), Point2{ 1e-300, 2e-300 }),
-    affine_ref(3, 5, -(3 * 1e-300 + 5 * 2e-300), Point2{ 1e-300, 2e-300 }));
+  // Exactly zero: dyadic inputs, exact in binary, with 3 * 2^e + 5 * 2^(e+1) - 13 * 2^e = 0 (at
+  // subnormal, tiny, unit and huge scales; every product and c are exact doubles). One ulp of c
+  // either way is no longer zero: c is negative, so towards zero the sum turns positive.
+  for (const int e : { -1070, -996, 0, 1000 })
+  {
+    const Point2 p{ std::ldexp(1.0, e), std::ldexp(1.0, e + 1) };
+    const double c = -13 * std::ldexp(1.0, e);
+    ASSERT_EQ(affine_ref(3, 5, c, p), 0) << e;
+    EXPECT_EQ(tessera::affine_sign(3, 5, c, p), 0) << e;
+    EXPECT_EQ(tessera::affine_sign(3, 5, std::nextafter(c, 0.0), p), 1) << e;
+    EXPECT_EQ(tessera::affine_sign(3, 5, std::nextafter(c, -HUGE_VAL), p), -1) << e;
+  }
   EXPECT_EQ(tessera::affine_sign(0.5, 0.25, -1, Point2{ 1, 2 }), 0);
 }
 
@@ -548,6 +557,18 @@ mpq_class QX(const tessera::Offset2& o)
 mpq_class QY(const tessera::Offset2& o)
 {
   return Q(o.y) + Q(o.yTail);
+}
+
+// Offset2's representation: x is the double nearest to x + xTail, i.e. the tail is at most half
+// the gap from x to the next double on the tail's side (and likewise y).
+bool head_is_nearest(double head, double tail)
+{
+  if (tail == 0)
+  {
+    return true;
+  }
+  const double next = std::nextafter(head, tail > 0 ? HUGE_VAL : -HUGE_VAL);
+  return 2 * abs(Q(tail)) <= abs(Q(next) - Q(head));
 }
 
 int incircle_offsets_ref(const tessera::Offset2& a,
@@ -583,14 +604,24 @@ TEST(Predicates, OffsetsAndReflections)
     for (auto& off : o)
     {
       const int kind = int(uniform(rng, 0, 3));
+      // Each offset, head plus tail, is exactly the difference it stands for (GMP).
       if (kind == 0)
       {
-        off = tessera::exact_offset(Point2{ coord(), coord() }, centre);
+        const Point2 q{ coord(), coord() };
+        off = tessera::exact_offset(q, centre);
+        ASSERT_EQ(QX(off), Q(q.x) - Q(centre.x)) << i;
+        ASSERT_EQ(QY(off), Q(q.y) - Q(centre.y)) << i;
       }
       else
       {
-        off = reflection_offset(centre, coord(), kind == 1);
+        // The centre's reflection in x = border (kind 1) or y = border (kind 2).
+        const double border = coord();
+        off = reflection_offset(centre, border, kind == 1);
+        ASSERT_EQ(QX(off), kind == 1 ? 2 * (Q(border) - Q(centre.x)) : mpq_class(0)) << i;
+        ASSERT_EQ(QY(off), kind == 1 ? mpq_class(0) : 2 * (Q(border) - Q(centre.y))) << i;
       }
+      ASSERT_TRUE(head_is_nearest(off.x, off.xTail)) << i << " " << off.x << " " << off.xTail;
+      ASSERT_TRUE(head_is_nearest(off.y, off.yTail)) << i << " " << off.y << " " << off.yTail;
     }
     const int expected = incircle_offsets_ref(o[0], o[1], o[2]);
     ASSERT_EQ(tessera::incircle_offsets(o[0], o[1], o[2]), expected) << i;

@@ -691,8 +691,11 @@ TEST(ThiessenSweep, LargerSetsAreaAndSymmetry)
   const std::vector<Point2> pts = gaussian_clusters(20000, 3);
   const ThiessenSweepResult r = ComputeThiessenSweep(Window::Rectangle(0, 1, 0, 1), pts);
   check_structure(r, pts, 1.0, 1e-12);
-  // Every kind-0 pair appears in both tiles' neighbour counts: sum of sides = 2 * pairs +
-  // window sides.
+  // Every side of a tile is either shared with one kind-0 neighbour (which counts it too) or lies
+  // on the window boundary; kind-1 half-neighbours share only a vertex and add no side. So the sum
+  // of sides = 2 * kind-0 pairs + tile edges on the boundary, counted here from the polygons: an
+  // edge whose two ends lie on one side of the window rectangle (boundary crossings and corners
+  // carry the side's coordinate exactly, and no bisector runs along a side).
   std::size_t sides = 0;
   for (const std::int32_t c : r.Tiles.NeighborCounts)
   {
@@ -703,8 +706,27 @@ TEST(ThiessenSweep, LargerSetsAreaAndSymmetry)
   {
     kind0 += k == 0;
   }
-  EXPECT_GT(sides, 2 * kind0);
-  EXPECT_LT(sides - 2 * kind0, std::size_t(4000));
+  const TileSet& t = r.Tiles;
+  std::size_t boundaryEdges = 0;
+  double boundaryLength = 0.0;
+  for (std::size_t k = 0; k < t.PointIds.size(); ++k)
+  {
+    const std::int64_t b = t.Offsets[k], e = t.Offsets[k + 1];
+    for (std::int64_t v = b; v < e; ++v)
+    {
+      const Point2& u = t.Vertices[v];
+      const Point2& w = t.Vertices[v + 1 < e ? v + 1 : b];
+      if ((u.x == 0 && w.x == 0) || (u.x == 1 && w.x == 1) || (u.y == 0 && w.y == 0) ||
+        (u.y == 1 && w.y == 1))
+      {
+        ++boundaryEdges;
+        boundaryLength += std::hypot(w.x - u.x, w.y - u.y);
+      }
+    }
+  }
+  EXPECT_EQ(sides, 2 * kind0 + boundaryEdges);
+  // The boundary edges found tile the window's perimeter exactly once.
+  EXPECT_NEAR(boundaryLength, 4.0, 1e-12);
 }
 
 TEST(ThiessenSweep, EnginesAgree)
