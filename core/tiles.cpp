@@ -566,9 +566,16 @@ void TessellationDual::CollinearTileEdges(std::int32_t v, std::vector<TileEdge>&
 // ---------------------------------------------------------------------------------------------
 // Results.
 
-// Tiles and contiguities are computed for contiguous chunks of Order in parallel, each into its
-// own arrays (chunk 0 straight into the result), then concatenated in order: the result does not
-// depend on the number of threads.
+// Tiles and contiguities are computed for contiguous chunks of Order in parallel, then joined in
+// order: the result does not depend on the number of threads. A TileSet's chunks fill arrays of
+// their own (chunk 0 straight into the result), which the join appends. A TileMesh's and a
+// graph's chunks write in place: each chunk's tiles have known places in the per-tile columns,
+// and its vertex ids and pairs go to a region of the result sized from an estimate, which the
+// join slides down against the region before (ChunkArray). At 10^7 points appending the second
+// chunk's arrays took 650 ms, most of it first touches of the result's pages.
+//
+//   result:   [ chunk 0's ids ....... gap | chunk 1's ids ......... gap | ... ]
+//   joined:   [ chunk 0's ids ....... chunk 1's ids ......... ... ]
 
 struct TessellationDual::RingScratch
 {
@@ -583,14 +590,126 @@ struct TessellationDual::RingScratch
   TileEdge Edge;
 };
 
-// A chunk's mesh tiles. Face centres and window corners have their final vertex ids already
-// (NumberFaceVertices, then Derive). A crossing is appended to Tiles.Vertices as it is met: chunk 0
-// writes into the result, whose Vertices already hold the faces and corners, so its ids are final
-// too; a later chunk starts from an empty list, and the join adds its base to the ids at
-// ExtraSlots.
+namespace tiles_detail
+{
+/// One chunk's share of an array that the chunks fill side by side: a region of the result,
+/// written in place, and then, should the region's estimated size fall short, a vector of its own
+/// (Spill) for the rest. Indices count from the region's start.
+template<class T>
+class ChunkArray
+{
+public:
+  void Bind(T* begin, std::size_t capacity)
+  {
+    this->Begin = this->At = begin;
+    this->End = begin + capacity;
+  }
+  void push_back(T value)
+  {
+    if (this->At != this->End)
+    {
+      *this->At++ = value;
+    }
+    else
+    {
+      this->Spill.push_back(value);
+    }
+  }
+  std::size_t InRegion() const { return std::size_t(this->At - this->Begin); }
+  std::size_t size() const { return this->InRegion() + this->Spill.size(); }
+  T& operator[](std::size_t i)
+  {
+    const std::size_t inRegion = this->InRegion();
+    return i < inRegion ? this->Begin[i] : this->Spill[i - inRegion];
+  }
+  const T* Region() const { return this->Begin; }
+  const std::vector<T>& Spilled() const { return this->Spill; }
+
+private:
+  T* Begin = nullptr;
+  T* At = nullptr;
+  T* End = nullptr;
+  std::vector<T> Spill;
+};
+
+/// Sizes result for the parts' regions (capacity[k] elements each, in order) and binds each part
+/// to its own; returns where each region starts.
+template<class T>
+std::vector<std::size_t> BindRegions(UninitializedVector<T>& result,
+  std::vector<ChunkArray<T>*> parts,
+  const std::vector<std::size_t>& capacity)
+{
+  std::vector<std::size_t> start(parts.size() + 1, 0);
+  for (std::size_t k = 0; k < parts.size(); ++k)
+  {
+    start[k + 1] = start[k] + capacity[k];
+  }
+  result.resize(start.back()); // uninitialised: each chunk first touches its own region
+  for (std::size_t k = 0; k < parts.size(); ++k)
+  {
+    parts[k]->Bind(result.data() + start[k], capacity[k]);
+  }
+  return start;
+}
+
+/// Joins the parts in order into result (their regions start at start[k]); returns where each
+/// part begins in the joined array, and its end. Without a spill the regions slide down in order
+/// (part k's never lies below where it belongs, as every part before it fitted its region); with
+/// one, the parts are copied into a new array.
+template<class T>
+std::vector<std::int64_t> JoinRegions(UninitializedVector<T>& result,
+  const std::vector<ChunkArray<T>*>& parts,
+  const std::vector<std::size_t>& start)
+{
+  std::vector<std::int64_t> base(parts.size() + 1, 0);
+  bool spilled = false;
+  for (std::size_t k = 0; k < parts.size(); ++k)
+  {
+    base[k + 1] = base[k] + std::int64_t(parts[k]->size());
+    spilled = spilled || !parts[k]->Spilled().empty();
+  }
+  if (!spilled)
+  {
+    for (std::size_t k = 1; k < parts.size(); ++k)
+    {
+      std::memmove(result.data() + base[k], result.data() + start[k], parts[k]->size() * sizeof(T));
+    }
+    result.resize(std::size_t(base.back()));
+    return base;
+  }
+  UninitializedVector<T> joined(std::size_t(base.back()));
+  for (std::size_t k = 0; k < parts.size(); ++k)
+  {
+    const ChunkArray<T>& part = *parts[k];
+    T* to = std::copy(part.Region(), part.Region() + part.InRegion(), joined.data() + base[k]);
+    std::copy(part.Spilled().begin(), part.Spilled().end(), to);
+  }
+  result.swap(joined);
+  return base;
+}
+
+/// Room for a chunk of `tiles` tiles at `perTile` entries each, with a margin for a chunk whose
+/// points have more neighbours than the average (a chunk is a compact region of the plane: the
+/// excess is at most proportional to its border) and for the tiles the window clips.
+inline std::size_t EstimatedRoom(std::size_t tiles, std::size_t perTile)
+{
+  return perTile * tiles + 16 * std::size_t(std::sqrt(double(tiles))) + 256;
+}
+} // namespace tiles_detail
+
+// A chunk's mesh tiles. Its per-tile columns go straight to the result's, from tile Next on; its
+// vertex ids to VertexIds (Offsets counting from its start until the join adds its base). Face
+// centres and window corners have their final vertex ids already (NumberFaceVertices, then
+// Derive). A crossing is appended to Crossings as it is met: chunk 0's is the result's Vertices,
+// which already hold the faces and corners, so its ids are final too; a later chunk starts from
+// an empty list of its own, and the join adds its base to the ids at ExtraSlots.
 struct TessellationDual::MeshPart
 {
-  TileMesh Tiles;
+  TileMesh* Result = nullptr;
+  std::int64_t Next = 0; ///< the result's index of this chunk's next tile
+  tiles_detail::ChunkArray<std::int32_t> VertexIds;
+  std::vector<Point2>* Crossings = nullptr;
+  std::vector<Point2> OwnCrossings;
   std::int32_t CornerBase = 0; ///< vertex id of window corner 0
   /// The window corners by coordinates (x, y, index), for a binary search; one list for all parts.
   const std::vector<std::tuple<double, double, std::int32_t>>* Corners = nullptr;
@@ -598,6 +717,13 @@ struct TessellationDual::MeshPart
   /// Pairs of face vertices a tile met at one point (distinct faces whose rounded centres
   /// coincide): the join makes each such group one vertex, so that every tile names it alike.
   std::vector<std::pair<std::int32_t, std::int32_t>> SameVertex;
+};
+
+// A chunk's contiguities, in its regions of the result's arrays.
+struct TessellationDual::GraphPart
+{
+  tiles_detail::ChunkArray<std::int32_t> Pairs;
+  tiles_detail::ChunkArray<std::uint8_t> Kinds;
 };
 
 TileSet TessellationDual::Tiles() const
@@ -678,54 +804,33 @@ void TessellationDual::NumberFaceVertices(std::vector<Point2>& vertices)
 
 TileMesh MeshOfSeparateTiles(TileSet tiles)
 {
-  TileMesh mesh;
-  mesh.PointIds = std::move(tiles.PointIds);
-  mesh.Offsets = std::move(tiles.Offsets);
   if (tiles.Vertices.size() > std::size_t(INT32_MAX))
   {
     throw InputError(
       "too many tile vertices for 32-bit vertex ids: " + std::to_string(tiles.Vertices.size()));
   }
+  TileMesh mesh;
+  mesh.PointIds.assign(tiles.PointIds.begin(), tiles.PointIds.end());
+  mesh.Offsets.assign(tiles.Offsets.begin(), tiles.Offsets.end());
   mesh.VertexIds.resize(tiles.Vertices.size());
   std::iota(mesh.VertexIds.begin(), mesh.VertexIds.end(), 0);
   mesh.Vertices = std::move(tiles.Vertices);
-  mesh.Areas = std::move(tiles.Areas);
-  mesh.NeighborCounts = std::move(tiles.NeighborCounts);
+  mesh.Areas.assign(tiles.Areas.begin(), tiles.Areas.end());
+  mesh.NeighborCounts.assign(tiles.NeighborCounts.begin(), tiles.NeighborCounts.end());
   return mesh;
 }
 
 namespace
 {
-// Room for count tiles of a TileSet or a TileMesh (perVertex: its Vertices or VertexIds), and
-// the leading 0 offset.
-template<class Tiles, class PerVertex>
-void ReserveTiles(Tiles& tiles, PerVertex& perVertex, std::size_t count)
+// Room for count tiles of a TileSet, and the leading 0 offset.
+void ReserveTiles(TileSet& tiles, std::size_t count)
 {
   tiles.PointIds.reserve(count);
   tiles.Offsets.reserve(count + 1);
   tiles.Areas.reserve(count);
   tiles.NeighborCounts.reserve(count);
-  perVertex.reserve(6 * count + 16);
+  tiles.Vertices.reserve(6 * count + 16);
   tiles.Offsets.push_back(0);
-}
-
-// Appends a later chunk's tiles to mesh: its crossings (the ids at extraSlots, counted from 0)
-// go after the vertices mesh has, and their slots, shifted, to slots.
-void AppendMeshTiles(TileMesh& mesh,
-  const TileMesh& from,
-  const std::vector<std::int64_t>& extraSlots,
-  std::vector<std::int64_t>& slots)
-{
-  const std::int64_t base = std::int64_t(mesh.VertexIds.size());
-  const std::int32_t vertexBase = std::int32_t(mesh.Vertices.size());
-  AppendTileColumns(mesh, from, base);
-  mesh.VertexIds.insert(mesh.VertexIds.end(), from.VertexIds.begin(), from.VertexIds.end());
-  for (const std::int64_t slot : extraSlots)
-  {
-    mesh.VertexIds[std::size_t(base + slot)] += vertexBase;
-    slots.push_back(base + slot);
-  }
-  mesh.Vertices.insert(mesh.Vertices.end(), from.Vertices.begin(), from.Vertices.end());
 }
 
 // Keeps, of the vertices from `from` on, those that stand for themselves (representative[k] == k
@@ -825,29 +930,30 @@ void MergeSameVertices(TileMesh& mesh,
   }
 }
 
-void ReserveGraph(ContiguityGraph& graph, std::size_t count)
-{
-  graph.Pairs.reserve(6 * count);
-  graph.Kinds.reserve(3 * count);
-}
 } // namespace
 
-// The requested results (either pointer may be null) in one pass over the rings, so that asking
-// for both walks each ring once: the walks are cache misses, and walking twice cost as much again
-// as the contiguity tests.
+// The requested results (any pointer may be null) in one pass over the rings, so that asking
+// for several walks each ring once: the walks are cache misses, and walking twice cost as much
+// again as the contiguity tests.
 void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* graph) const
 {
+  using tiles_detail::ChunkArray;
+  using tiles_detail::EstimatedRoom;
   const bool half = graph && this->AnyHalfNeighbours();
   const std::int32_t count = std::int32_t(this->Order.size());
   const std::vector<std::int32_t> bounds =
     ChunkBounds(count, ThreadCount(count, MinimumTilesPerThread));
   const std::size_t chunks = bounds.size() - 1;
+  const auto sizeOf = [&](std::size_t k) { return std::size_t(bounds[k + 1] - bounds[k]); };
   std::vector<TileSet> tileParts(chunks - 1);
   std::vector<MeshPart> meshParts(mesh ? chunks : 0);
-  std::vector<ContiguityGraph> graphParts(chunks - 1);
+  std::vector<GraphPart> graphParts(graph ? chunks : 0);
+  std::vector<ChunkArray<std::int32_t>*> idParts, pairParts;
+  std::vector<ChunkArray<std::uint8_t>*> kindParts;
+  std::vector<std::size_t> idStarts, pairStarts, kindStarts;
   // The mesh's vertices: its face centres (numbered already), the window's corners when there
-  // are tiles to use them, then the crossings from firstCrossing on. Chunk 0 writes into the
-  // result.
+  // are tiles to use them, then the crossings from firstCrossing on. Chunk 0's crossings go
+  // straight to the result.
   std::vector<std::tuple<double, double, std::int32_t>> sortedCorners;
   std::int32_t firstCrossing = 0;
   if (mesh)
@@ -864,76 +970,130 @@ void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* g
       sortedCorners.emplace_back(corners[k].x, corners[k].y, std::int32_t(k));
     }
     std::sort(sortedCorners.begin(), sortedCorners.end());
-    std::swap(meshParts[0].Tiles, *mesh);
-    for (MeshPart& part : meshParts)
+    mesh->PointIds.resize(std::size_t(count));
+    mesh->Offsets.resize(std::size_t(count) + 1);
+    mesh->Offsets[0] = 0;
+    mesh->Areas.resize(std::size_t(count));
+    mesh->NeighborCounts.resize(std::size_t(count));
+    std::vector<std::size_t> room;
+    for (std::size_t k = 0; k < chunks; ++k)
     {
+      MeshPart& part = meshParts[k];
+      part.Result = mesh;
+      part.Next = bounds[k];
+      part.Crossings = k == 0 ? &mesh->Vertices : &part.OwnCrossings;
       part.CornerBase = cornerBase;
       part.Corners = &sortedCorners;
+      idParts.push_back(&part.VertexIds);
+      room.push_back(EstimatedRoom(sizeOf(k), 6)); // a tile has 6 vertices on average
     }
+    idStarts = tiles_detail::BindRegions(mesh->VertexIds, idParts, room);
+  }
+  if (graph)
+  {
+    // 3 pairs per point on average (each of the 3n Delaunay edges once), plus the diagonals of
+    // the degenerate faces, spread evenly.
+    const double halfPerPoint = half ? double(this->HalfNeighbourPairCount()) / count : 0.0;
+    std::vector<std::size_t> pairRoom, kindRoom;
+    for (std::size_t k = 0; k < chunks; ++k)
+    {
+      const std::size_t extra = std::size_t(std::ceil(halfPerPoint * double(sizeOf(k))));
+      pairRoom.push_back(EstimatedRoom(sizeOf(k), 6) + 2 * extra);
+      kindRoom.push_back(EstimatedRoom(sizeOf(k), 3) + extra);
+      pairParts.push_back(&graphParts[k].Pairs);
+      kindParts.push_back(&graphParts[k].Kinds);
+    }
+    pairStarts = tiles_detail::BindRegions(graph->Pairs, pairParts, pairRoom);
+    kindStarts = tiles_detail::BindRegions(graph->Kinds, kindParts, kindRoom);
   }
   RunChunks(chunks,
     [&](std::size_t k)
     {
-      const std::size_t size = std::size_t(k == 0 ? count : bounds[k + 1] - bounds[k]);
       TileSet* chunkTiles = !tiles ? nullptr : k == 0 ? tiles : &tileParts[k - 1];
-      MeshPart* chunkMesh = mesh ? &meshParts[k] : nullptr;
-      ContiguityGraph* chunkGraph = !graph ? nullptr : k == 0 ? graph : &graphParts[k - 1];
       if (chunkTiles)
       {
-        ReserveTiles(*chunkTiles, chunkTiles->Vertices, size);
+        ReserveTiles(*chunkTiles, k == 0 ? std::size_t(count) : sizeOf(k));
       }
-      if (chunkMesh)
-      {
-        ReserveTiles(chunkMesh->Tiles, chunkMesh->Tiles.VertexIds, size);
-      }
-      if (chunkGraph)
-      {
-        ReserveGraph(*chunkGraph, size);
-      }
-      this->DeriveOf(bounds[k], bounds[k + 1], half, chunkTiles, chunkMesh, chunkGraph);
+      this->DeriveOf(bounds[k],
+        bounds[k + 1],
+        half,
+        chunkTiles,
+        mesh ? &meshParts[k] : nullptr,
+        graph ? &graphParts[k] : nullptr);
     });
-  if (mesh)
-  {
-    std::swap(meshParts[0].Tiles, *mesh);
-  }
-  // The joins copy tens of megabytes at a million points (first touching the result's pages):
-  // the tiles on one thread, the graph on the other.
   const auto joinTiles = [&]()
   {
-    for (std::size_t k = 0; k + 1 < chunks; ++k)
+    for (std::size_t k = 0; tiles && k + 1 < chunks; ++k)
     {
-      if (tiles)
-      {
-        AppendTileSet(*tiles, tileParts[k]);
-      }
-      if (mesh)
-      {
-        AppendMeshTiles(
-          *mesh, meshParts[k + 1].Tiles, meshParts[k + 1].ExtraSlots, meshParts[0].ExtraSlots);
-      }
+      AppendTileSet(*tiles, tileParts[k]);
     }
     if (mesh)
     {
-      MergeEqualCrossings(*mesh, firstCrossing, meshParts[0].ExtraSlots);
-      std::vector<std::pair<std::int32_t, std::int32_t>> same;
-      for (const MeshPart& part : meshParts)
-      {
-        same.insert(same.end(), part.SameVertex.begin(), part.SameVertex.end());
-      }
-      MergeSameVertices(*mesh, same);
+      this->JoinMeshParts(*mesh, bounds, meshParts, idParts, idStarts, firstCrossing);
     }
   };
   const auto joinGraph = [&]()
   {
-    for (std::size_t k = 0; graph && k + 1 < chunks; ++k)
+    if (graph)
     {
-      graph->Pairs.insert(
-        graph->Pairs.end(), graphParts[k].Pairs.begin(), graphParts[k].Pairs.end());
-      graph->Kinds.insert(
-        graph->Kinds.end(), graphParts[k].Kinds.begin(), graphParts[k].Kinds.end());
+      tiles_detail::JoinRegions(graph->Pairs, pairParts, pairStarts);
+      tiles_detail::JoinRegions(graph->Kinds, kindParts, kindStarts);
     }
   };
   parallel::RunSideBySide(chunks > 1 && graph && (tiles || mesh), joinTiles, joinGraph);
+}
+
+// Joins the mesh's chunks: their vertex ids slide together, a later chunk's offsets get its
+// base, its crossings are appended to the vertices (their ids get the vertices' count before
+// them), and then equal crossings and coinciding centres become one vertex each.
+void TessellationDual::JoinMeshParts(TileMesh& mesh,
+  const std::vector<std::int32_t>& bounds,
+  std::vector<MeshPart>& parts,
+  const std::vector<tiles_detail::ChunkArray<std::int32_t>*>& idParts,
+  const std::vector<std::size_t>& idStarts,
+  std::int32_t firstCrossing) const
+{
+  const std::vector<std::int64_t> base =
+    tiles_detail::JoinRegions(mesh.VertexIds, idParts, idStarts);
+  std::vector<std::int64_t>& slots = parts[0].ExtraSlots; // chunk 0's are final already
+  for (std::size_t k = 1; k < parts.size(); ++k)
+  {
+    for (std::int32_t t = bounds[k] + 1; t <= bounds[k + 1]; ++t)
+    {
+      mesh.Offsets[std::size_t(t)] += base[k];
+    }
+    const std::int32_t vertexBase = std::int32_t(mesh.Vertices.size());
+    for (const std::int64_t slot : parts[k].ExtraSlots)
+    {
+      mesh.VertexIds[std::size_t(base[k] + slot)] += vertexBase;
+      slots.push_back(base[k] + slot);
+    }
+    mesh.Vertices.insert(
+      mesh.Vertices.end(), parts[k].OwnCrossings.begin(), parts[k].OwnCrossings.end());
+  }
+  MergeEqualCrossings(mesh, firstCrossing, slots);
+  std::vector<std::pair<std::int32_t, std::int32_t>> same;
+  for (const MeshPart& part : parts)
+  {
+    same.insert(same.end(), part.SameVertex.begin(), part.SameVertex.end());
+  }
+  MergeSameVertices(mesh, same);
+}
+
+// The number of half-neighbour pairs: the diagonals of the degenerate faces whose centre is in
+// the window (m (m - 3) / 2 for a face of m points).
+std::int64_t TessellationDual::HalfNeighbourPairCount() const
+{
+  std::int64_t pairs = 0;
+  for (const std::int32_t rep : this->DegenerateReps)
+  {
+    std::int32_t size = 0;
+    if (this->Data[rep].Inside() && this->DegeneratePolygon(rep, size))
+    {
+      pairs += std::int64_t(size) * (size - 3) / 2;
+    }
+  }
+  return pairs;
 }
 
 // Half-neighbours are the non-adjacent vertices of a degenerate face whose centre is in the
@@ -986,7 +1146,7 @@ void TessellationDual::DeriveOf(std::int32_t begin,
   bool half,
   TileSet* tiles,
   MeshPart* mesh,
-  ContiguityGraph* graph) const
+  GraphPart* graph) const
 {
   RingScratch scratch;
   const bool planar = this->Tess.IsTwoDimensional();
@@ -1051,7 +1211,7 @@ void TessellationDual::AppendTileOf(std::int32_t v, RingScratch& scratch, TileSe
 // its polygon's vertices to the faces and window corners its edges end at.
 void TessellationDual::AppendMeshTileOf(std::int32_t v, RingScratch& scratch, MeshPart& mesh) const
 {
-  TileMesh& tiles = mesh.Tiles;
+  auto& ids = mesh.VertexIds;
   const std::vector<Point2>& polygon = scratch.Polygon;
   scratch.SameCentre.clear();
   const std::int32_t sides = this->TilePolygonOf(v, scratch, true);
@@ -1059,7 +1219,7 @@ void TessellationDual::AppendMeshTileOf(std::int32_t v, RingScratch& scratch, Me
   {
     for (const std::int32_t label : scratch.Labels)
     {
-      tiles.VertexIds.push_back(this->Data[label].Vertex);
+      ids.push_back(this->Data[label].Vertex);
     }
     for (const auto& [kept, dropped] : scratch.SameCentre)
     {
@@ -1070,14 +1230,15 @@ void TessellationDual::AppendMeshTileOf(std::int32_t v, RingScratch& scratch, Me
   {
     for (const Point2& p : polygon)
     {
-      tiles.VertexIds.push_back(this->MeshVertexOf(p, scratch, mesh));
+      ids.push_back(this->MeshVertexOf(p, scratch, mesh));
     }
   }
-  AppendTileColumns(tiles,
-    v,
-    std::int64_t(tiles.VertexIds.size()),
-    CompensatedPolygonArea(polygon.data(), polygon.size()),
-    sides);
+  TileMesh& result = *mesh.Result;
+  const std::size_t tile = std::size_t(mesh.Next++);
+  result.PointIds[tile] = v;
+  result.Offsets[tile + 1] = std::int64_t(ids.size()); // from the chunk's start until the join
+  result.Areas[tile] = CompensatedPolygonArea(polygon.data(), polygon.size());
+  result.NeighborCounts[tile] = sides;
 }
 
 // The vertex id of a clipped tile's polygon vertex p (about to be appended): a face centre inside
@@ -1118,10 +1279,9 @@ std::int32_t TessellationDual::MeshVertexOf(const Point2& p,
   {
     return mesh.CornerBase + std::get<2>(*corner);
   }
-  TileMesh& tiles = mesh.Tiles;
-  mesh.ExtraSlots.push_back(std::int64_t(tiles.VertexIds.size()));
-  tiles.Vertices.push_back(p);
-  return std::int32_t(tiles.Vertices.size() - 1);
+  mesh.ExtraSlots.push_back(std::int64_t(mesh.VertexIds.size()));
+  mesh.Crossings->push_back(p);
+  return std::int32_t(mesh.Crossings->size() - 1);
 }
 
 // A ring walk is a chain of dependent loads (twin, then the next triangle's twin ...), mostly
@@ -1167,11 +1327,12 @@ namespace
 // The contiguities of an interior tile without half-neighbours: every ring neighbour, each an
 // edge neighbour (Kind 0). Gathered without a branch on the (unpredictable) neighbour ids and
 // sorted as plain ints; larger is scratch.
+template<class Graph>
 void AppendRingNeighbours(const HalfEdgeArray& org,
   std::int32_t v,
   const std::vector<std::int32_t>& ring,
   std::vector<std::int32_t>& larger,
-  ContiguityGraph& graph)
+  Graph& graph)
 {
   larger.resize(ring.size());
   std::size_t count = 0;
@@ -1186,8 +1347,8 @@ void AppendRingNeighbours(const HalfEdgeArray& org,
   {
     graph.Pairs.push_back(v);
     graph.Pairs.push_back(larger[k]);
+    graph.Kinds.push_back(0);
   }
-  graph.Kinds.insert(graph.Kinds.end(), count, std::uint8_t(0));
 }
 } // namespace
 
@@ -1200,7 +1361,7 @@ void AppendRingNeighbours(const HalfEdgeArray& org,
 void TessellationDual::AppendContiguitiesOf(std::int32_t v,
   bool half,
   RingScratch& scratch,
-  ContiguityGraph& graph) const
+  GraphPart& graph) const
 {
   const auto& org = this->Tess.Origin();
   if (scratch.Interior && !half)

@@ -58,11 +58,14 @@ struct TileSet
   std::vector<std::int32_t> NeighborCounts; ///< contiguities: sides of the polygon
 };
 
-/// Pairs (i < j), grouped by i (in the tiles' order), ascending j within a group.
+/// Pairs (i < j), grouped by i (in the tiles' order), ascending j within a group. The arrays'
+/// resize() leaves new elements uninitialised (UninitializedVector): the derivation's chunks
+/// write their parts in place, each thread first touching its own pages.
 struct ContiguityGraph
 {
-  std::vector<std::int32_t> Pairs; ///< 2 ids per contiguity
-  std::vector<std::uint8_t> Kinds; ///< 0: share an edge of positive length, 1: half-neighbours
+  UninitializedVector<std::int32_t> Pairs; ///< 2 ids per contiguity
+  UninitializedVector<std::uint8_t>
+    Kinds; ///< 0: share an edge of positive length, 1: half-neighbours
 };
 
 struct TilesAndGraph
@@ -76,17 +79,18 @@ struct TilesAndGraph
 /// Where tiles meet at a face centre inside the window they use one vertex, and likewise at a
 /// window corner and where a tile edge crosses the window boundary (both tiles compute that point
 /// alike). Distinct faces whose rounded centres coincide, which a tile lists once, are one vertex
-/// too. So tiles that share a side name it by the same two vertex ids: a conforming mesh.
+/// too. So tiles that share a side name it by the same two vertex ids: a conforming mesh. The
+/// per-tile and per-id arrays are UninitializedVectors, as in ContiguityGraph.
 struct TileMesh
 {
-  std::vector<std::int32_t> PointIds;
-  std::vector<std::int64_t> Offsets;   ///< tile k's vertex ids are [Offsets[k], Offsets[k+1])
-  std::vector<std::int32_t> VertexIds; ///< anticlockwise, into Vertices
+  UninitializedVector<std::int32_t> PointIds;
+  UninitializedVector<std::int64_t> Offsets; ///< tile k's vertex ids are [Offsets[k], Offsets[k+1])
+  UninitializedVector<std::int32_t> VertexIds; ///< anticlockwise, into Vertices
   /// Face centres inside the window (in the order of the triangle arrays), then the window's
   /// corners, then the crossings of tile edges with the window boundary.
   std::vector<Point2> Vertices;
-  std::vector<double> Areas;
-  std::vector<std::int32_t> NeighborCounts;
+  UninitializedVector<double> Areas;
+  UninitializedVector<std::int32_t> NeighborCounts;
 };
 
 struct TileMeshAndGraph
@@ -114,6 +118,8 @@ namespace tiles_detail
 {
 struct TileEdge; // a clipped tile edge (tile_edges.h)
 struct FaceView; // a face as a tile edge sees it (tile_edges.h)
+template<class T>
+class ChunkArray; // a chunk's share of a result array (tiles.cpp)
 } // namespace tiles_detail
 
 /// Face structure of a tessellation (merged degenerate faces, centres): computed once, then each
@@ -168,6 +174,7 @@ private:
   static constexpr std::int32_t RingBatch = 32;
   struct RingScratch; // one chunk's buffers (tiles.cpp)
   struct MeshPart;    // one chunk's mesh tiles (tiles.cpp)
+  struct GraphPart;   // one chunk's contiguities (tiles.cpp)
   void TouchRings(std::int32_t begin, std::int32_t end) const;
   void Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* graph) const;
   void DeriveOf(std::int32_t begin,
@@ -175,8 +182,15 @@ private:
     bool half,
     TileSet* tiles,
     MeshPart* mesh,
-    ContiguityGraph* graph) const;
+    GraphPart* graph) const;
+  void JoinMeshParts(TileMesh& mesh,
+    const std::vector<std::int32_t>& bounds,
+    std::vector<MeshPart>& parts,
+    const std::vector<tiles_detail::ChunkArray<std::int32_t>*>& idParts,
+    const std::vector<std::size_t>& idStarts,
+    std::int32_t firstCrossing) const;
   bool AnyHalfNeighbours() const;
+  std::int64_t HalfNeighbourPairCount() const;
   void AppendHalfNeighboursOf(std::int32_t v,
     const std::vector<std::int32_t>& ring,
     std::vector<std::pair<std::int32_t, std::uint8_t>>& around) const;
@@ -188,7 +202,7 @@ private:
   void AppendContiguitiesOf(std::int32_t v,
     bool half,
     RingScratch& scratch,
-    ContiguityGraph& graph) const;
+    GraphPart& graph) const;
   const std::int32_t* DegeneratePolygon(std::int32_t face, std::int32_t& size) const;
   std::int32_t Neighbors1D(std::int32_t v, std::int32_t& next) const;
 

@@ -72,7 +72,8 @@ TessellationResult RunBrasselReif(const tessera::Window& window,
 /// Positions 0..count-1 ordered by key (keys are distinct point ids below idLimit): a counting
 /// sort, so that both engines' results come out in ascending point id whatever order their cores
 /// list them in.
-std::vector<std::int32_t> OrderByPointId(const std::vector<std::int32_t>& keys, std::size_t idLimit)
+std::vector<std::int32_t> OrderByPointId(const tessera::UninitializedVector<std::int32_t>& keys,
+  std::size_t idLimit)
 {
   std::vector<std::int32_t> slot(idLimit, -1);
   for (std::size_t k = 0; k < keys.size(); ++k)
@@ -134,7 +135,7 @@ public:
     // Where each tile's ids go. The order jumps about the core's (spatial) order: the offsets
     // are requested a few tiles ahead.
     std::int32_t* offsets = this->Offsets->GetPointer(0);
-    const std::vector<std::int64_t>& from = tiles.Offsets;
+    const auto& from = tiles.Offsets;
     std::int32_t written = 0;
     for (vtkIdType k = 0; k < this->TileCount; ++k)
     {

@@ -697,6 +697,13 @@ void ForEachDerivationInput(std::vector<DerivationInput> inputs, const Check& ch
   }
 }
 
+// A TileMesh column (an UninitializedVector) as a std::vector, to compare with a TileSet's.
+template<class T>
+std::vector<T> Plain(const tessera::UninitializedVector<T>& column)
+{
+  return { column.begin(), column.end() };
+}
+
 // TilesAndContiguities walks each ring once for both results, sharing one chunk's scratch
 // buffers, and lists an interior tile's contiguities straight from its ring (Contiguities() alone
 // checks every ring edge's faces): it must give exactly what the two separate passes give. (Whether
@@ -740,10 +747,10 @@ TEST(Tiles, TileMeshExpandsToTheTilesAndIsConforming)
       const TilesAndGraph both = dual.TilesAndContiguities();
       const TileMeshAndGraph mesh = dual.TileMeshAndContiguities();
       const TileSet& tiles = both.Tiles;
-      EXPECT_EQ(mesh.Tiles.PointIds, tiles.PointIds) << "set " << set;
-      EXPECT_EQ(mesh.Tiles.Offsets, tiles.Offsets) << "set " << set;
-      EXPECT_EQ(mesh.Tiles.Areas, tiles.Areas) << "set " << set;
-      EXPECT_EQ(mesh.Tiles.NeighborCounts, tiles.NeighborCounts) << "set " << set;
+      EXPECT_EQ(Plain(mesh.Tiles.PointIds), tiles.PointIds) << "set " << set;
+      EXPECT_EQ(Plain(mesh.Tiles.Offsets), tiles.Offsets) << "set " << set;
+      EXPECT_EQ(Plain(mesh.Tiles.Areas), tiles.Areas) << "set " << set;
+      EXPECT_EQ(Plain(mesh.Tiles.NeighborCounts), tiles.NeighborCounts) << "set " << set;
       EXPECT_EQ(mesh.Graph.Pairs, both.Graph.Pairs) << "set " << set;
       EXPECT_EQ(mesh.Graph.Kinds, both.Graph.Kinds) << "set " << set;
       const std::vector<Point2>& vertices = mesh.Tiles.Vertices;
@@ -835,20 +842,64 @@ private:
   bool HadOld = false;
 };
 
+// The 324 integer points of the circle x^2 + y^2 = 32045^2 (32045 = 5 * 13 * 17 * 29), scaled
+// by 2^-16 (exactly) about (0.5, 0.5): one Delaunay face of 324 co-circular points, 52,002
+// half-neighbour pairs. With uniform points outside the circle around it.
+std::vector<Point2> BigCircleAmidUniformPoints(std::size_t outside)
+{
+  const std::int64_t radius = 32045;
+  std::vector<Point2> points;
+  for (std::int64_t x = -radius; x <= radius; ++x)
+  {
+    const std::int64_t rest = radius * radius - x * x;
+    const auto y = std::int64_t(std::llround(std::sqrt(double(rest))));
+    if (y * y != rest)
+    {
+      continue;
+    }
+    for (const std::int64_t signedY : { y, -y })
+    {
+      if (signedY != 0 || y == 0)
+      {
+        points.push_back({ 0.5 + double(x) / 65536.0, 0.5 + double(signedY) / 65536.0 });
+      }
+      if (y == 0)
+      {
+        break;
+      }
+    }
+  }
+  for (const Point2& p : UniformPoints(3 * outside, 12, -0.1, 1.1))
+  {
+    const double dx = p.x - 0.5, dy = p.y - 0.5;
+    if (points.size() < outside + 324 && dx * dx + dy * dy > 0.25)
+    {
+      points.push_back(p);
+    }
+  }
+  return points;
+}
+
 // Each derivation runs in chunks joined in order: the results, bit for bit, must not depend on
 // how many threads there are. TESSERA_THREADS forces 1, 2, 3 and 7 chunks on any machine for the
 // inputs with enough points (chunks hold at least MinimumTilesPerThread tiles), so the joins
-// (crossings renumbered and merged, coinciding centres merged, graph and tile parts) run whatever
-// the cores. The smaller inputs ForEachDerivationInput adds run in one chunk: for them this only
+// (crossings renumbered and merged, coinciding centres merged, vertex ids and pairs slid together
+// or, when a chunk outgrew its estimated share, copied) run whatever the cores. The big circle's
+// half-neighbour pairs all fall to the chunks that hold its points, more than their share: those
+// spill. The smaller inputs ForEachDerivationInput adds run in one chunk: for them this only
 // checks that the derivation is repeatable.
 TEST(Tiles, DerivedResultsDoNotDependOnTheThreadCount)
 {
-  const std::vector<std::string> chunked = { "uniform, many chunks",
-    "checkerboard patches, many chunks" };
+  const std::vector<Point2> circle = BigCircleAmidUniformPoints(26000);
+  ASSERT_EQ(circle.size(), 26324u);
+  const std::vector<std::string> chunked = {
+    "uniform, many chunks", "checkerboard patches, many chunks", "big circle, many chunks"
+  };
   ForEachDerivationInput(
     { { "uniform, many chunks", UniformPoints(40000, 11) },
       { "checkerboard patch", tessera_test::SquareLattice(31, 29.0), 299, 2 },
-      { "checkerboard patches, many chunks", tessera_test::SquareLattice(170, 165.0), 28900, 7 } },
+      { "checkerboard patches, many chunks", tessera_test::SquareLattice(170, 165.0), 28900, 7 },
+      { "big circle, many chunks", circle } },
     [&](const DirichletTessellation& t, const std::string& set)
     {
       if (std::find(chunked.begin(), chunked.end(), set) != chunked.end())
