@@ -594,7 +594,7 @@ namespace tiles_detail
 {
 /// One chunk's share of an array that the chunks fill side by side: a region of the result,
 /// written in place, and then, should the region's estimated size fall short, a vector of its own
-/// (Spill) for the rest. Indices count from the region's start.
+/// (Spill) for the rest.
 template<class T>
 class ChunkArray
 {
@@ -617,11 +617,6 @@ public:
   }
   std::size_t InRegion() const { return std::size_t(this->At - this->Begin); }
   std::size_t size() const { return this->InRegion() + this->Spill.size(); }
-  T& operator[](std::size_t i)
-  {
-    const std::size_t inRegion = this->InRegion();
-    return i < inRegion ? this->Begin[i] : this->Spill[i - inRegion];
-  }
   const T* Region() const { return this->Begin; }
   const std::vector<T>& Spilled() const { return this->Spill; }
 
@@ -636,7 +631,7 @@ private:
 /// to its own; returns where each region starts.
 template<class T>
 std::vector<std::size_t> BindRegions(UninitializedVector<T>& result,
-  std::vector<ChunkArray<T>*> parts,
+  const std::vector<ChunkArray<T>*>& parts,
   const std::vector<std::size_t>& capacity)
 {
   std::vector<std::size_t> start(parts.size() + 1, 0);
