@@ -55,8 +55,7 @@ void AppendTriangleFace(DelaunayFaces& faces, std::int32_t a, std::int32_t b, st
 
 namespace
 {
-constexpr std::int64_t MinimumTilesPerThread = TessellationDual::MinimumTilesPerThread;
-constexpr std::int64_t MinimumTrianglesPerThread = 2 * MinimumTilesPerThread;
+constexpr std::int64_t MinimumTrianglesPerThread = 2 * TessellationDual::MinimumTilesPerThread;
 } // namespace
 
 TessellationDual::TessellationDual(const DirichletTessellation& tessellation)
@@ -627,47 +626,46 @@ private:
   std::vector<T> Spill;
 };
 
-/// Sizes result for the parts' regions (capacity[k] elements each, in order) and binds each part
-/// to its own; returns where each region starts.
-template<class T>
-std::vector<std::size_t> BindRegions(UninitializedVector<T>& result,
-  const std::vector<ChunkArray<T>*>& parts,
+/// Sizes result for the parts' regions of their arrays (capacity[k] elements for part k, in
+/// order) and binds each part's to its own.
+template<class T, class Part>
+void BindRegions(UninitializedVector<T>& result,
+  std::vector<Part>& parts,
+  ChunkArray<T> Part::*array,
   const std::vector<std::size_t>& capacity)
 {
-  std::vector<std::size_t> start(parts.size() + 1, 0);
+  const std::size_t total = std::accumulate(capacity.begin(), capacity.end(), std::size_t(0));
+  result.resize(total); // uninitialised: each chunk first touches its own region
+  T* begin = result.data();
   for (std::size_t k = 0; k < parts.size(); ++k)
   {
-    start[k + 1] = start[k] + capacity[k];
+    (parts[k].*array).Bind(begin, capacity[k]);
+    begin += capacity[k];
   }
-  result.resize(start.back()); // uninitialised: each chunk first touches its own region
-  for (std::size_t k = 0; k < parts.size(); ++k)
-  {
-    parts[k]->Bind(result.data() + start[k], capacity[k]);
-  }
-  return start;
 }
 
-/// Joins the parts in order into result (their regions start at start[k]); returns where each
-/// part begins in the joined array, and its end. Without a spill the regions slide down in order
-/// (part k's never lies below where it belongs, as every part before it fitted its region); with
-/// one, the parts are copied into a new array.
-template<class T>
+/// Joins the parts' arrays in order into result; returns where each part begins in the joined
+/// array, and its end. Without a spill the regions slide down in order (part k's never lies
+/// below where it belongs, as every part before it fitted its region); with one, the parts are
+/// copied into a new array.
+template<class T, class Part>
 std::vector<std::int64_t> JoinRegions(UninitializedVector<T>& result,
-  const std::vector<ChunkArray<T>*>& parts,
-  const std::vector<std::size_t>& start)
+  const std::vector<Part>& parts,
+  ChunkArray<T> Part::*array)
 {
   std::vector<std::int64_t> base(parts.size() + 1, 0);
   bool spilled = false;
   for (std::size_t k = 0; k < parts.size(); ++k)
   {
-    base[k + 1] = base[k] + std::int64_t(parts[k]->size());
-    spilled = spilled || !parts[k]->Spilled().empty();
+    base[k + 1] = base[k] + std::int64_t((parts[k].*array).size());
+    spilled = spilled || !(parts[k].*array).Spilled().empty();
   }
   if (!spilled)
   {
     for (std::size_t k = 1; k < parts.size(); ++k)
     {
-      std::memmove(result.data() + base[k], result.data() + start[k], parts[k]->size() * sizeof(T));
+      const ChunkArray<T>& part = parts[k].*array;
+      std::memmove(result.data() + base[k], part.Region(), part.InRegion() * sizeof(T));
     }
     result.resize(std::size_t(base.back()));
     return base;
@@ -675,7 +673,7 @@ std::vector<std::int64_t> JoinRegions(UninitializedVector<T>& result,
   UninitializedVector<T> joined(std::size_t(base.back()));
   for (std::size_t k = 0; k < parts.size(); ++k)
   {
-    const ChunkArray<T>& part = *parts[k];
+    const ChunkArray<T>& part = parts[k].*array;
     T* to = std::copy(part.Region(), part.Region() + part.InRegion(), joined.data() + base[k]);
     std::copy(part.Spilled().begin(), part.Spilled().end(), to);
   }
@@ -932,9 +930,10 @@ void MergeSameVertices(TileMesh& mesh,
 // again as the contiguity tests.
 void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* graph) const
 {
-  using tiles_detail::ChunkArray;
   using tiles_detail::EstimatedRoom;
-  const bool half = graph && this->AnyHalfNeighbours();
+  // Half-neighbours: the diagonals of the degenerate faces whose centre is in the window.
+  const std::int64_t halfPairs = graph ? this->HalfNeighbourPairCount() : 0;
+  const bool half = halfPairs > 0;
   const std::int32_t count = std::int32_t(this->Order.size());
   const std::vector<std::int32_t> bounds =
     ChunkBounds(count, ThreadCount(count, MinimumTilesPerThread));
@@ -943,9 +942,6 @@ void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* g
   std::vector<TileSet> tileParts(chunks - 1);
   std::vector<MeshPart> meshParts(mesh ? chunks : 0);
   std::vector<GraphPart> graphParts(graph ? chunks : 0);
-  std::vector<ChunkArray<std::int32_t>*> idParts, pairParts;
-  std::vector<ChunkArray<std::uint8_t>*> kindParts;
-  std::vector<std::size_t> idStarts, pairStarts, kindStarts;
   // The mesh's vertices: its face centres (numbered already), the window's corners when there
   // are tiles to use them, then the crossings from firstCrossing on. Chunk 0's crossings go
   // straight to the result.
@@ -979,27 +975,24 @@ void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* g
       part.Crossings = k == 0 ? &mesh->Vertices : &part.OwnCrossings;
       part.CornerBase = cornerBase;
       part.Corners = &sortedCorners;
-      idParts.push_back(&part.VertexIds);
       room.push_back(EstimatedRoom(sizeOf(k), 6)); // a tile has 6 vertices on average
     }
-    idStarts = tiles_detail::BindRegions(mesh->VertexIds, idParts, room);
+    tiles_detail::BindRegions(mesh->VertexIds, meshParts, &MeshPart::VertexIds, room);
   }
   if (graph)
   {
     // 3 pairs per point on average (each of the 3n Delaunay edges once), plus the diagonals of
     // the degenerate faces, spread evenly.
-    const double halfPerPoint = half ? double(this->HalfNeighbourPairCount()) / count : 0.0;
+    const double halfPerPoint = half ? double(halfPairs) / count : 0.0;
     std::vector<std::size_t> pairRoom, kindRoom;
     for (std::size_t k = 0; k < chunks; ++k)
     {
       const std::size_t extra = std::size_t(std::ceil(halfPerPoint * double(sizeOf(k))));
       pairRoom.push_back(EstimatedRoom(sizeOf(k), 6) + 2 * extra);
       kindRoom.push_back(EstimatedRoom(sizeOf(k), 3) + extra);
-      pairParts.push_back(&graphParts[k].Pairs);
-      kindParts.push_back(&graphParts[k].Kinds);
     }
-    pairStarts = tiles_detail::BindRegions(graph->Pairs, pairParts, pairRoom);
-    kindStarts = tiles_detail::BindRegions(graph->Kinds, kindParts, kindRoom);
+    tiles_detail::BindRegions(graph->Pairs, graphParts, &GraphPart::Pairs, pairRoom);
+    tiles_detail::BindRegions(graph->Kinds, graphParts, &GraphPart::Kinds, kindRoom);
   }
   RunChunks(chunks,
     [&](std::size_t k)
@@ -1024,15 +1017,15 @@ void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* g
     }
     if (mesh)
     {
-      this->JoinMeshParts(*mesh, bounds, meshParts, idParts, idStarts, firstCrossing);
+      this->JoinMeshParts(*mesh, bounds, meshParts, firstCrossing);
     }
   };
   const auto joinGraph = [&]()
   {
     if (graph)
     {
-      tiles_detail::JoinRegions(graph->Pairs, pairParts, pairStarts);
-      tiles_detail::JoinRegions(graph->Kinds, kindParts, kindStarts);
+      tiles_detail::JoinRegions(graph->Pairs, graphParts, &GraphPart::Pairs);
+      tiles_detail::JoinRegions(graph->Kinds, graphParts, &GraphPart::Kinds);
     }
   };
   parallel::RunSideBySide(chunks > 1 && graph && (tiles || mesh), joinTiles, joinGraph);
@@ -1044,12 +1037,10 @@ void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* g
 void TessellationDual::JoinMeshParts(TileMesh& mesh,
   const std::vector<std::int32_t>& bounds,
   std::vector<MeshPart>& parts,
-  const std::vector<tiles_detail::ChunkArray<std::int32_t>*>& idParts,
-  const std::vector<std::size_t>& idStarts,
   std::int32_t firstCrossing) const
 {
   const std::vector<std::int64_t> base =
-    tiles_detail::JoinRegions(mesh.VertexIds, idParts, idStarts);
+    tiles_detail::JoinRegions(mesh.VertexIds, parts, &MeshPart::VertexIds);
   std::vector<std::int64_t>& slots = parts[0].ExtraSlots; // chunk 0's are final already
   for (std::size_t k = 1; k < parts.size(); ++k)
   {
@@ -1075,8 +1066,8 @@ void TessellationDual::JoinMeshParts(TileMesh& mesh,
   MergeSameVertices(mesh, same);
 }
 
-// The number of half-neighbour pairs: the diagonals of the degenerate faces whose centre is in
-// the window (m (m - 3) / 2 for a face of m points).
+// The number of half-neighbour pairs: the non-adjacent vertex pairs of the degenerate faces
+// whose centre is in the window, m (m - 3) / 2 for a face of m points (m >= 4: none is zero).
 std::int64_t TessellationDual::HalfNeighbourPairCount() const
 {
   std::int64_t pairs = 0;
@@ -1089,15 +1080,6 @@ std::int64_t TessellationDual::HalfNeighbourPairCount() const
     }
   }
   return pairs;
-}
-
-// Half-neighbours are the non-adjacent vertices of a degenerate face whose centre is in the
-// window (it has 4 or more vertices, so it has some): is there such a face at all?
-bool TessellationDual::AnyHalfNeighbours() const
-{
-  return std::any_of(this->DegenerateReps.begin(),
-    this->DegenerateReps.end(),
-    [&](std::int32_t rep) { return this->Data[rep].Inside(); });
 }
 
 // v's half-neighbours with larger ids, appended to around with Kind 1: of each degenerate face

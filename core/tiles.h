@@ -118,8 +118,6 @@ namespace tiles_detail
 {
 struct TileEdge; // a clipped tile edge (tile_edges.h)
 struct FaceView; // a face as a tile edge sees it (tile_edges.h)
-template<class T>
-class ChunkArray; // a chunk's share of a result array (tiles.cpp)
 } // namespace tiles_detail
 
 /// Face structure of a tessellation (merged degenerate faces, centres): computed once, then each
@@ -186,10 +184,7 @@ private:
   void JoinMeshParts(TileMesh& mesh,
     const std::vector<std::int32_t>& bounds,
     std::vector<MeshPart>& parts,
-    const std::vector<tiles_detail::ChunkArray<std::int32_t>*>& idParts,
-    const std::vector<std::size_t>& idStarts,
     std::int32_t firstCrossing) const;
-  bool AnyHalfNeighbours() const;
   std::int64_t HalfNeighbourPairCount() const;
   void AppendHalfNeighboursOf(std::int32_t v,
     const std::vector<std::int32_t>& ring,

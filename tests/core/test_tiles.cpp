@@ -857,16 +857,10 @@ std::vector<Point2> BigCircleAmidUniformPoints(std::size_t outside)
     {
       continue;
     }
-    for (const std::int64_t signedY : { y, -y })
+    points.push_back({ 0.5 + double(x) / 65536.0, 0.5 + double(y) / 65536.0 });
+    if (y != 0)
     {
-      if (signedY != 0 || y == 0)
-      {
-        points.push_back({ 0.5 + double(x) / 65536.0, 0.5 + double(signedY) / 65536.0 });
-      }
-      if (y == 0)
-      {
-        break;
-      }
+      points.push_back({ 0.5 + double(x) / 65536.0, 0.5 - double(y) / 65536.0 });
     }
   }
   for (const Point2& p : UniformPoints(3 * outside, 12, -0.1, 1.1))
