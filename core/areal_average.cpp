@@ -65,6 +65,13 @@ struct ThiessenArealAverage::State
 
   // Per gauge: the clipped area (m^2) of its tile, as last derived.
   std::vector<double> CachedArea;
+  // Per gauge in the tessellation (updates only): a box holding its tile, the tile's own box when
+  // it was last derived, grown since by the removals next to it (GrowBoundsAcrossRemovals).
+  std::vector<Box2> TileBounds;
+  // Boxes this far clear of the catchment's box hold tiles clear of it, whatever the rounding of
+  // the tiles' vertices (a millionth of the window's larger side).
+  double ClearMargin = 0.0;
+  std::vector<std::int32_t> RemovedSlot; // per gauge: its place in a step's removals, or -1
   Catchment::Workspace Work;
   ClippedRings Scratch;
   std::vector<Point2> Dense;
@@ -232,12 +239,6 @@ struct ThiessenArealAverage::State
     return ids;
   }
 
-  /// The engine ids of the gauges' face mates (tiles.h), before anything changes.
-  std::vector<std::int32_t> MatesOf(const std::vector<std::int32_t>& gauges) const
-  {
-    return ComputeFaceMatesOf(*this->Tessellation, this->EngineIds(gauges)).Ids;
-  }
-
   /// The engine id of a gauge in the tessellation next to gauge g along the Hilbert curve (a few
   /// steps either way), where the walk to g starts: the gauges inserted at one step are spread
   /// over the whole window, and a walk from the one before crossed some ten triangles, a cache
@@ -287,6 +288,96 @@ struct ThiessenArealAverage::State
   void Refresh(std::int32_t g, const Point2* tile, std::size_t count)
   {
     this->CachedArea[g] = this->ClippedArea(tile, count, static_cast<std::size_t>(g));
+    if (this->Settings.Incremental)
+    {
+      this->TileBounds[g] = BoundsOf(tile, count);
+    }
+  }
+
+  /// Whether a tile inside box is clear of the catchment (clipped area 0).
+  bool ClearOfCatchment(const Box2& box) const
+  {
+    const Box2& c = this->Region->Bounds();
+    const double m = this->ClearMargin;
+    return box.XMax < c.XMin - m || box.XMin > c.XMax + m || box.YMax < c.YMin - m ||
+      box.YMin > c.YMax + m;
+  }
+
+  /// Grows the boxes of the tiles that a step's removals enlarge (mates: the removed gauges' face
+  /// mates, before the removals). After the removals, a remaining gauge g's tile lies within its
+  /// old tile and the old tiles of the removed gauges in the components (removed gauges joined
+  /// through face mates) that g is a face mate of. Take x in g's new tile and in removed r's old
+  /// tile, and walk from x to g: the circle about any point y of the walk through g lies inside
+  /// the circle about x through g, which holds no remaining gauge, so every tile the walk
+  /// crosses before g's is a removed gauge's, and tiles crossed one after the other are mates:
+  ///
+  ///     x . . . . . . . . . . . . . g
+  ///     [ T(r) | T(r') | T(r'') ][ T(g) ]    r, r', r'' removed, one component; r'' a mate of g
+  ///
+  /// Insertions only shrink tiles, so the grown boxes hold the step's final tiles.
+  void GrowBoundsAcrossRemovals(const FaceMateLists& mates)
+  {
+    const std::size_t count = mates.PointIds.size();
+    std::vector<std::int32_t>& slot = this->RemovedSlot;
+    std::vector<std::int32_t> parent(count);
+    std::vector<Box2> joined(count);
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      const std::int32_t g = this->GaugeOfEngine[mates.PointIds[k]];
+      slot[g] = static_cast<std::int32_t>(k);
+      parent[k] = static_cast<std::int32_t>(k);
+      joined[k] = this->TileBounds[g];
+    }
+    const auto root = [&parent](std::int32_t k)
+    {
+      while (parent[k] != k)
+      {
+        k = parent[k] = parent[parent[k]]; // path halving
+      }
+      return k;
+    };
+    const auto eachMate = [&](std::size_t k, auto&& visit)
+    {
+      for (std::int64_t i = mates.Offsets[k]; i < mates.Offsets[k + 1]; ++i)
+      {
+        visit(this->GaugeOfEngine[mates.Ids[i]]);
+      }
+    };
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      eachMate(k,
+        [&](std::int32_t mate)
+        {
+          if (slot[mate] >= 0)
+          {
+            parent[root(slot[mate])] = root(static_cast<std::int32_t>(k));
+          }
+        });
+    }
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      const std::int32_t r = root(static_cast<std::int32_t>(k));
+      if (r != static_cast<std::int32_t>(k))
+      {
+        joined[r].Extend(joined[k]);
+      }
+    }
+    for (std::size_t k = 0; k < count; ++k)
+    {
+      const Box2& component = joined[root(static_cast<std::int32_t>(k))];
+      eachMate(k,
+        [&](std::int32_t mate)
+        {
+          if (slot[mate] < 0)
+          {
+            this->TileBounds[mate].Extend(component);
+          }
+        });
+    }
+    for (const std::int32_t id : mates.PointIds)
+    {
+      slot[this->GaugeOfEngine[id]] = -1;
+    }
   }
 
   /// Every tile, from the whole tessellation.
@@ -309,34 +400,46 @@ struct ThiessenArealAverage::State
   /// removedMates, engine ids) and of every inserted gauge (now). Removals come before
   /// insertions, and the faces a later removal (insertion) meets that an earlier one made have
   /// their points among the earlier one's mates, so these sets cover the whole sequence.
-  /// Everything else keeps its cached tile and area.
-  std::size_t DeriveChanged(const std::vector<char>& wanted,
+  /// Everything else keeps its cached tile and area. Of the changed tiles of gauges that were
+  /// there before, those whose (grown) boxes are clear of the catchment are not derived: their
+  /// clipped area is 0. Returns (tiles derived, changed tiles found clear by their boxes).
+  std::pair<std::size_t, std::size_t> DeriveChanged(const std::vector<char>& wanted,
     const std::vector<std::int32_t>& removedMates,
     const std::vector<std::int32_t>& inserted)
   {
     std::vector<char>& marked = this->Marked;
     marked.assign(wanted.size(), 0);
     std::vector<std::int32_t> changed;
-    const auto mark = [&](std::int32_t g)
+    std::size_t clear = 0;
+    for (const std::int32_t g : inserted)
+    {
+      marked[g] = 1;
+      changed.push_back(g);
+    }
+    const auto markKept = [&](std::int32_t g)
     {
       if (wanted[g] && !marked[g])
       {
         marked[g] = 1;
-        changed.push_back(g);
+        if (this->ClearOfCatchment(this->TileBounds[g]))
+        {
+          this->CachedArea[g] = 0.0;
+          ++clear;
+        }
+        else
+        {
+          changed.push_back(g);
+        }
       }
     };
     for (const std::int32_t id : removedMates)
     {
-      mark(this->GaugeOfEngine[id]); // engine ids are never reused: still this gauge's
-    }
-    for (const std::int32_t g : inserted)
-    {
-      mark(g);
+      markKept(this->GaugeOfEngine[id]); // engine ids are never reused: still this gauge's
     }
     const FaceMateLists fresh = ComputeFaceMatesOf(*this->Tessellation, this->EngineIds(inserted));
     for (const std::int32_t id : fresh.Ids)
     {
-      mark(this->GaugeOfEngine[id]);
+      markKept(this->GaugeOfEngine[id]);
     }
     // Neighbouring tiles one after the other: their faces share cache lines.
     this->SpatialSort(changed);
@@ -347,7 +450,7 @@ struct ThiessenArealAverage::State
         &tiles.Vertices[tiles.Offsets[k]],
         static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]));
     }
-    return tiles.PointIds.size();
+    return { tiles.PointIds.size(), clear };
   }
 };
 
@@ -451,6 +554,9 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   if (settings.Incremental)
   {
     s.Tessellation->TrackVertexEdges(); // local tile derivation finds its rings in O(1)
+    s.TileBounds.resize(gaugesLonLat.size());
+    s.RemovedSlot.assign(gaugesLonLat.size(), -1);
+    s.ClearMargin = 1e-6 * (box.LargerSide() + 2.0 * pad);
     s.CurveOrder.resize(gaugesLonLat.size());
     std::iota(s.CurveOrder.begin(), s.CurveOrder.end(), 0);
     s.SpatialSort(s.CurveOrder);
@@ -515,7 +621,9 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
     local = s.Tessellation->IsTwoDimensional() && 5 * (removed.size() + inserted.size()) <= n;
     if (local)
     {
-      removedMates = s.MatesOf(removed);
+      const FaceMateLists mates = ComputeFaceMatesOf(*s.Tessellation, s.EngineIds(removed));
+      s.GrowBoundsAcrossRemovals(mates);
+      removedMates = mates.Ids;
     }
     s.Apply(removed, inserted);
     local = local && s.Tessellation->IsTwoDimensional();
@@ -540,9 +648,11 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
     step.Mean = std::numeric_limits<double>::quiet_NaN();
     return step;
   }
-  const std::size_t derived =
-    local ? s.DeriveChanged(wanted, removedMates, inserted) : s.DeriveAll();
-  step.TilesDerived = static_cast<int>(derived);
+  const std::pair<std::size_t, std::size_t> derived = local
+    ? s.DeriveChanged(wanted, removedMates, inserted)
+    : std::make_pair(s.DeriveAll(), std::size_t(0));
+  step.TilesDerived = static_cast<int>(derived.first);
+  step.TilesFoundClear = static_cast<int>(derived.second);
   // Weights of every reporting gauge from the cached areas (current for all of them), ascending.
   // The weighted gauges are listed without a branch per gauge (which gauges report, and whose
   // tile reaches the catchment, is close to random), then weighed.

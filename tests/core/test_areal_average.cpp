@@ -265,3 +265,78 @@ TEST(ArealAverage, LatticeGaugesUpdateLikeRebuildsThroughCatchmentVertices)
     EXPECT_NEAR(Sum(x.Weights), 1.0, 1e-12) << "step " << t;
   }
 }
+
+TEST(ArealAverage, UpdatesSkipTilesClearOfTheCatchmentYetEqualRebuildsWhenHolesOpenAcrossIt)
+{
+  // Many gauges around a small catchment. Updates do not derive changed tiles whose bounds stay
+  // clear of the catchment. Some steps stop every gauge in a disk about a point of the catchment's
+  // edge: a gauge beyond the disk, outside the catchment and whose own tile and neighbours' tiles
+  // are far from it, then owns part of the catchment. Only the bounds of the whole removed
+  // component (the disk), not those of its removed neighbours alone, show that it must be derived.
+  std::mt19937_64 random(31);
+  std::uniform_real_distribution<double> lon(-110.0, -100.0), lat(35.0, 45.0), value(0.0, 10.0);
+  std::vector<Point2> gauges(3000);
+  for (auto& g : gauges)
+  {
+    g = { lon(random), lat(random) };
+  }
+  const Square catchment(-106.0, 39.0, -104.0, 41.0);
+  ArealAverageSettings rebuild;
+  rebuild.Incremental = false;
+  ThiessenArealAverage a(gauges, catchment.Offsets, catchment.Ring);
+  ThiessenArealAverage b(gauges, catchment.Offsets, catchment.Ring, rebuild);
+  std::vector<char> reporting(gauges.size(), 1);
+  std::vector<double> values(gauges.size());
+  std::uniform_real_distribution<double> along(0.0, 8.0);
+  long clearTotal = 0;
+  for (int t = 0; t < 24; ++t)
+  {
+    if (t % 3 == 1)
+    {
+      // A hole of radius 1.4 degrees about a point of the catchment's boundary.
+      const double s = along(random);
+      const Point2 centre = s < 2 ? Point2{ -106.0 + s, 39.0 }
+        : s < 4                   ? Point2{ -104.0, 39.0 + (s - 2) }
+        : s < 6                   ? Point2{ -104.0 - (s - 4), 41.0 }
+                                  : Point2{ -106.0, 41.0 - (s - 6) };
+      for (std::size_t g = 0; g < gauges.size(); ++g)
+      {
+        if (std::hypot(gauges[g].x - centre.x, gauges[g].y - centre.y) < 1.4)
+        {
+          reporting[g] = 0;
+        }
+      }
+    }
+    else
+    {
+      for (std::size_t g = 0; g < gauges.size(); ++g)
+      {
+        // Scattered toggles; the hole closes two steps after it opens.
+        if (t % 3 == 0 ? !reporting[g] : random() % 100 < 1)
+        {
+          reporting[g] = !reporting[g];
+        }
+      }
+    }
+    for (std::size_t g = 0; g < gauges.size(); ++g)
+    {
+      values[g] = reporting[g] ? value(random) : NaN;
+    }
+    const ArealStep x = a.Step(values), y = b.Step(values);
+    ASSERT_EQ(x.Gauges, y.Gauges) << "step " << t;
+    for (std::size_t k = 0; k < x.Weights.size(); ++k)
+    {
+      EXPECT_NEAR(x.Weights[k], y.Weights[k], 1e-13) << "step " << t << " gauge " << x.Gauges[k];
+    }
+    EXPECT_NEAR(x.Mean, y.Mean, 1e-12) << "step " << t;
+    EXPECT_NEAR(Sum(x.Weights), 1.0, 1e-12) << "step " << t;
+    EXPECT_EQ(y.TilesFoundClear, 0);
+    if (t > 0)
+    {
+      // The premise: updates (not rebuilds) that skipped tiles.
+      EXPECT_LT(x.TilesDerived, y.TilesDerived / 5) << "step " << t;
+      clearTotal += x.TilesFoundClear;
+    }
+  }
+  EXPECT_GT(clearTotal, 1000);
+}
