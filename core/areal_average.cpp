@@ -68,8 +68,11 @@ struct ThiessenArealAverage::State
   // Per gauge in the tessellation (updates only): a box holding its tile, the tile's own box when
   // it was last derived, grown since by the removals next to it (GrowBoundsAcrossRemovals).
   std::vector<Box2> TileBounds;
-  // Boxes this far clear of the catchment's box hold tiles clear of it, whatever the rounding of
-  // the tiles' vertices (a millionth of the window's larger side).
+  // How far clear of the catchment's box a box must be (a millionth of the window's larger side,
+  // about 1 m in Colorado): the boxes are those of computed tiles, whose vertices are rounded
+  // (by some 1e-10 m there), so a tile derived again could poke out by its rounding. Only a face
+  // centre far outside its rounding's usual size (from a nearly collinear triple) could exceed the
+  // margin, and then the derived tile itself is off by as much.
   double ClearMargin = 0.0;
   std::vector<std::int32_t> RemovedSlot; // per gauge: its place in a step's removals, or -1
   Catchment::Workspace Work;

@@ -13,10 +13,11 @@
 // started are inserted (Green-Sibson removal and insertion). Only the tiles that can have changed
 // (those of the changed gauges' face mates) are derived and clipped against the catchment again;
 // the others keep their clipped areas. (Comparing each new polygon with the previous one to skip
-// the clip did not pay: in the synthetic benchmark 99% of them had changed.) Of the changed tiles,
-// those provably still clear of the catchment are not even derived: each gauge keeps a box
-// holding its tile, grown by the boxes of the removed gauges next to it (ArealStep's
-// TilesFoundClear counts them; in the synthetic benchmark, 57% of the changed tiles).
+// the clip did not pay: in the synthetic benchmark 99% of them had changed.) Of the tiles that
+// may have changed, those provably still clear of the catchment are not even derived: each gauge
+// keeps a box holding its tile, grown by the joined boxes of the components of removed gauges
+// that it borders (ArealStep's TilesFoundClear counts them; in the synthetic benchmark, 57% of
+// the tiles that may have changed).
 //
 // Areas on the ellipsoid. The weight of a gauge is the ellipsoidal area of its tile inside the
 // catchment over the catchment's ellipsoidal area. Two ways, chosen by AreaMethod:
@@ -75,8 +76,8 @@ struct ArealStep
   int StationsWeighted = 0; ///< of those, gauges whose tile reaches into the catchment
   double CoveredFraction = 0.0; ///< sum of weights (1 when any gauge reported)
   int TilesDerived = 0; ///< tiles derived for this step: all after a rebuild, few after an update
-  /// Tiles that an update changed but did not derive: their bounds show them clear of the
-  /// catchment (clipped area 0). Always 0 after a rebuild.
+  /// Tiles that an update may have changed but did not derive: their bounds show them clear of
+  /// the catchment (clipped area 0). Always 0 after a rebuild.
   int TilesFoundClear = 0;
   std::vector<std::int32_t> Gauges; ///< weighted gauges, ascending
   std::vector<double> Weights;      ///< per weighted gauge
