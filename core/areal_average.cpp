@@ -66,7 +66,7 @@ struct ThiessenArealAverage::State
   // Per gauge: the clipped area (m^2) of its tile, as last derived.
   std::vector<double> CachedArea;
   // Per gauge in the tessellation (updates only): a box holding its tile, the tile's own box when
-  // it was last derived, grown since by the removals next to it (GrowBoundsAcrossRemovals).
+  // it was last derived, grown since by the removals next to it (Apply).
   std::vector<Box2> TileBounds;
   // How far clear of the catchment's box a box must be (a millionth of the window's larger side,
   // about 1 m in Colorado): the boxes are those of computed tiles, whose vertices are rounded
@@ -74,7 +74,7 @@ struct ThiessenArealAverage::State
   // centre far outside its rounding's usual size (from a nearly collinear triple) could exceed the
   // margin, and then the derived tile itself is off by as much.
   double ClearMargin = 0.0;
-  std::vector<std::int32_t> RemovedSlot; // per gauge: its place in a step's removals, or -1
+  std::vector<std::int32_t> Neighbours; // Apply's scratch
   Catchment::Workspace Work;
   ClippedRings Scratch;
   std::vector<Point2> Dense;
@@ -267,24 +267,73 @@ struct ThiessenArealAverage::State
     return -1;
   }
 
-  /// Removes, then inserts (Green-Sibson removal and insertion).
-  void Apply(const std::vector<std::int32_t>& removed, const std::vector<std::int32_t>& inserted)
+  /// Removes, then inserts (Green-Sibson removal and insertion). With touched, also lists the
+  /// gauges whose tiles' areas may change, and grows the tile boxes: a tile gains or loses area
+  /// only when a point joined to it by a triangulation edge is removed or inserted
+  /// (DirichletTessellation::AppendNeighbours), so the neighbours of each removed gauge just
+  /// before its removal, and of each inserted gauge just after its insertion, are all of them.
+  /// (Face mates taken once for the whole step, as the full derivation defines them, cost more:
+  /// they need the faces labelled.) A removed gauge's tile goes to its neighbours, so each of
+  /// their boxes takes in its box; an insertion only shrinks tiles:
+  ///
+  ///        before          remove r            r's neighbours' boxes take in r's box
+  ///     +---+---+---+    +---+-------+
+  ///     | a | r | b |    | a :   b   |         (a's new tile lies in its box + r's box)
+  ///     +---+---+---+    +---+-------+
+  ///
+  /// Returns false when the tessellation stopped being two-dimensional on the way (a removal that
+  /// leaves the points collinear rebuilds it): then no list is made and every tile must be
+  /// derived.
+  bool Apply(const std::vector<std::int32_t>& removed,
+    const std::vector<std::int32_t>& inserted,
+    std::vector<std::int32_t>* touched)
   {
+    DirichletTessellation& t = *this->Tessellation;
+    std::vector<std::int32_t>& around = this->Neighbours;
     for (const std::int32_t g : removed)
     {
-      this->Tessellation->Remove(this->EngineOfGauge[g]);
+      if (touched)
+      {
+        around.clear();
+        t.AppendNeighbours(this->EngineOfGauge[g], around);
+        for (const std::int32_t id : around)
+        {
+          const std::int32_t neighbour = this->GaugeOfEngine[id];
+          this->TileBounds[neighbour].Extend(this->TileBounds[g]);
+          touched->push_back(neighbour);
+        }
+      }
+      t.Remove(this->EngineOfGauge[g]);
       this->EngineOfGauge[g] = NotInTessellation;
+      if (!t.IsTwoDimensional())
+      {
+        touched = nullptr;
+      }
     }
     for (const std::int32_t g : inserted)
     {
-      const std::int32_t id = this->Tessellation->Insert(this->GaugesXY[g], this->PresentNear(g));
+      const std::int32_t id = t.Insert(this->GaugesXY[g], this->PresentNear(g));
       this->EngineOfGauge[g] = id;
       if (static_cast<std::size_t>(id) >= this->GaugeOfEngine.size())
       {
         this->GaugeOfEngine.resize(id + 1, NotInTessellation);
       }
       this->GaugeOfEngine[id] = g;
+      if (touched && t.IsTwoDimensional())
+      {
+        around.clear();
+        t.AppendNeighbours(id, around);
+        for (const std::int32_t neighbour : around)
+        {
+          touched->push_back(this->GaugeOfEngine[neighbour]);
+        }
+      }
+      else
+      {
+        touched = nullptr;
+      }
     }
+    return touched != nullptr;
   }
 
   /// Clips a gauge's (new) tile.
@@ -306,83 +355,6 @@ struct ThiessenArealAverage::State
       box.YMin > c.YMax + m;
   }
 
-  /// Grows the boxes of the tiles that a step's removals enlarge (mates: the removed gauges' face
-  /// mates, before the removals). After the removals, a remaining gauge g's tile lies within its
-  /// old tile and the old tiles of the removed gauges in the components (removed gauges joined
-  /// through face mates) that g is a face mate of. Take x in g's new tile and in removed r's old
-  /// tile, and walk from x to g: the circle about any point y of the walk through g lies inside
-  /// the circle about x through g, which holds no remaining gauge, so every tile the walk
-  /// crosses before g's is a removed gauge's, and tiles crossed one after the other are mates:
-  ///
-  ///     x . . . . . . . . . . . . . g
-  ///     [ T(r) | T(r') | T(r'') ][ T(g) ]    r, r', r'' removed, one component; r'' a mate of g
-  ///
-  /// Insertions only shrink tiles, so the grown boxes hold the step's final tiles.
-  void GrowBoundsAcrossRemovals(const FaceMateLists& mates)
-  {
-    const std::size_t count = mates.PointIds.size();
-    std::vector<std::int32_t>& slot = this->RemovedSlot;
-    std::vector<std::int32_t> parent(count);
-    std::vector<Box2> joined(count);
-    for (std::size_t k = 0; k < count; ++k)
-    {
-      const std::int32_t g = this->GaugeOfEngine[mates.PointIds[k]];
-      slot[g] = static_cast<std::int32_t>(k);
-      parent[k] = static_cast<std::int32_t>(k);
-      joined[k] = this->TileBounds[g];
-    }
-    const auto root = [&parent](std::int32_t k)
-    {
-      while (parent[k] != k)
-      {
-        k = parent[k] = parent[parent[k]]; // path halving
-      }
-      return k;
-    };
-    const auto eachMate = [&](std::size_t k, auto&& visit)
-    {
-      for (std::int64_t i = mates.Offsets[k]; i < mates.Offsets[k + 1]; ++i)
-      {
-        visit(this->GaugeOfEngine[mates.Ids[i]]);
-      }
-    };
-    for (std::size_t k = 0; k < count; ++k)
-    {
-      eachMate(k,
-        [&](std::int32_t mate)
-        {
-          if (slot[mate] >= 0)
-          {
-            parent[root(slot[mate])] = root(static_cast<std::int32_t>(k));
-          }
-        });
-    }
-    for (std::size_t k = 0; k < count; ++k)
-    {
-      const std::int32_t r = root(static_cast<std::int32_t>(k));
-      if (r != static_cast<std::int32_t>(k))
-      {
-        joined[r].Extend(joined[k]);
-      }
-    }
-    for (std::size_t k = 0; k < count; ++k)
-    {
-      const Box2& component = joined[root(static_cast<std::int32_t>(k))];
-      eachMate(k,
-        [&](std::int32_t mate)
-        {
-          if (slot[mate] < 0)
-          {
-            this->TileBounds[mate].Extend(component);
-          }
-        });
-    }
-    for (const std::int32_t id : mates.PointIds)
-    {
-      slot[this->GaugeOfEngine[id]] = -1;
-    }
-  }
-
   /// Every tile, from the whole tessellation.
   std::size_t DeriveAll()
   {
@@ -396,18 +368,12 @@ struct ThiessenArealAverage::State
     return tiles.PointIds.size();
   }
 
-  /// Only the tiles that can have changed. A tile changes only if one of its Delaunay faces
-  /// changes, and a face changes only if a removed point was on it (before the removals) or an
-  /// inserted point is on it (after the insertions): so the tiles to derive are those of the
-  /// inserted gauges and of the face mates of every removed gauge (taken before the removals:
-  /// removedMates, engine ids) and of every inserted gauge (now). Removals come before
-  /// insertions, and the faces a later removal (insertion) meets that an earlier one made have
-  /// their points among the earlier one's mates, so these sets cover the whole sequence.
-  /// Everything else keeps its cached tile and area. Of the changed tiles of gauges that were
-  /// there before, those whose (grown) boxes are clear of the catchment are not derived: their
-  /// clipped area is 0. Returns (tiles derived, changed tiles found clear by their boxes).
+  /// Only the tiles whose areas may have changed: those of the inserted gauges and of the gauges
+  /// that Apply touched. Everything else keeps its cached area. Of the touched gauges, those whose
+  /// (grown) boxes are clear of the catchment are not derived: their clipped area is 0. Returns
+  /// (tiles derived, touched tiles found clear by their boxes).
   std::pair<std::size_t, std::size_t> DeriveChanged(const std::vector<char>& wanted,
-    const std::vector<std::int32_t>& removedMates,
+    const std::vector<std::int32_t>& touched,
     const std::vector<std::int32_t>& inserted)
   {
     std::vector<char>& marked = this->Marked;
@@ -419,9 +385,9 @@ struct ThiessenArealAverage::State
       marked[g] = 1;
       changed.push_back(g);
     }
-    const auto markKept = [&](std::int32_t g)
+    for (const std::int32_t g : touched)
     {
-      if (wanted[g] && !marked[g])
+      if (wanted[g] && !marked[g]) // (a touched gauge may have been removed later)
       {
         marked[g] = 1;
         if (this->ClearOfCatchment(this->TileBounds[g]))
@@ -434,15 +400,6 @@ struct ThiessenArealAverage::State
           changed.push_back(g);
         }
       }
-    };
-    for (const std::int32_t id : removedMates)
-    {
-      markKept(this->GaugeOfEngine[id]); // engine ids are never reused: still this gauge's
-    }
-    const FaceMateLists fresh = ComputeFaceMatesOf(*this->Tessellation, this->EngineIds(inserted));
-    for (const std::int32_t id : fresh.Ids)
-    {
-      markKept(this->GaugeOfEngine[id]);
     }
     // Neighbouring tiles one after the other: their faces share cache lines.
     this->SpatialSort(changed);
@@ -558,7 +515,6 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   {
     s.Tessellation->TrackVertexEdges(); // local tile derivation finds its rings in O(1)
     s.TileBounds.resize(gaugesLonLat.size());
-    s.RemovedSlot.assign(gaugesLonLat.size(), -1);
     s.ClearMargin = 1e-6 * (box.LargerSide() + 2.0 * pad);
     s.CurveOrder.resize(gaugesLonLat.size());
     std::iota(s.CurveOrder.begin(), s.CurveOrder.end(), 0);
@@ -617,19 +573,12 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
   // means that the previous step derived every tile it has (the first step, or one after a step
   // without reports, starts from an empty tessellation).
   bool local = false;
-  std::vector<std::int32_t> removed, inserted, removedMates;
+  std::vector<std::int32_t> removed, inserted, touched;
   if (s.Settings.Incremental)
   {
     s.ListChanges(wanted, removed, inserted);
     local = s.Tessellation->IsTwoDimensional() && 5 * (removed.size() + inserted.size()) <= n;
-    if (local)
-    {
-      const FaceMateLists mates = ComputeFaceMatesOf(*s.Tessellation, s.EngineIds(removed));
-      s.GrowBoundsAcrossRemovals(mates);
-      removedMates = mates.Ids;
-    }
-    s.Apply(removed, inserted);
-    local = local && s.Tessellation->IsTwoDimensional();
+    local = s.Apply(removed, inserted, local ? &touched : nullptr);
   }
   else
   {
@@ -652,7 +601,7 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
     return step;
   }
   const std::pair<std::size_t, std::size_t> derived = local
-    ? s.DeriveChanged(wanted, removedMates, inserted)
+    ? s.DeriveChanged(wanted, touched, inserted)
     : std::make_pair(s.DeriveAll(), std::size_t(0));
   step.TilesDerived = static_cast<int>(derived.first);
   step.TilesFoundClear = static_cast<int>(derived.second);

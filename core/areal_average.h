@@ -10,14 +10,14 @@
 // Reuse between steps. The reporting set changes a little from one step to the next (in the
 // Colorado record, 1236 months have 1071 distinct sets, so caching by set is useless), so the
 // tessellation is updated, not rebuilt: gauges that stopped reporting are removed and those that
-// started are inserted (Green-Sibson removal and insertion). Only the tiles that can have changed
-// (those of the changed gauges' face mates) are derived and clipped against the catchment again;
-// the others keep their clipped areas. (Comparing each new polygon with the previous one to skip
-// the clip did not pay: in the synthetic benchmark 99% of them had changed.) Of the tiles that
-// may have changed, those provably still clear of the catchment are not even derived: each gauge
-// keeps a box holding its tile, grown by the joined boxes of the components of removed gauges
-// that it borders (ArealStep's TilesFoundClear counts them; in the synthetic benchmark, 57% of
-// the tiles that may have changed).
+// started are inserted (Green-Sibson removal and insertion). Only the tiles whose areas can have
+// changed (those of the changed gauges' neighbours, each taken as it is removed or inserted) are
+// derived and clipped against the catchment again; the others keep their clipped areas.
+// (Comparing each new polygon with the previous one to skip the clip did not pay: in the
+// synthetic benchmark 99% of them had changed.) Of those tiles, the ones provably still clear of
+// the catchment are not even derived: each gauge keeps a box holding its tile, grown by the box of
+// each removed neighbour (ArealStep's TilesFoundClear counts them; in the synthetic benchmark,
+// over half of them).
 //
 // Areas on the ellipsoid. The weight of a gauge is the ellipsoidal area of its tile inside the
 // catchment over the catchment's ellipsoidal area. Two ways, chosen by AreaMethod:

@@ -1061,6 +1061,25 @@ std::int32_t DirichletTessellation::EdgeLeaving(std::int32_t id) const
   return this->Status(id) == PointStatus::Accepted ? this->FindVertexEdge(id) : -1;
 }
 
+void DirichletTessellation::AppendNeighbours(std::int32_t id, std::vector<std::int32_t>& out) const
+{
+  const std::int32_t first = this->EdgeLeaving(id);
+  if (first < 0)
+  {
+    return;
+  }
+  std::int32_t e = first;
+  do
+  {
+    const std::int32_t j = this->Origins[Next(e)];
+    if (j != Ghost)
+    {
+      out.push_back(j);
+    }
+    e = this->RingNext(e);
+  } while (e != first);
+}
+
 void DirichletTessellation::Remove(std::int32_t id)
 {
   const PointStatus status = this->Status(id); // throws for an out-of-range id

@@ -125,6 +125,14 @@ public:
   /// unknown, or the tessellation is not two-dimensional). O(1) when vertex edges are tracked,
   /// otherwise a walk from the last triangle.
   std::int32_t EdgeLeaving(std::int32_t id) const;
+  /// Appends to out the points joined to id by an edge of the triangulation, anticlockwise (none
+  /// when id is not a vertex or the tessellation is not two-dimensional). Where points are
+  /// co-circular the triangulation keeps some diagonals of their face, so these are a superset of
+  /// the points whose tiles share an edge of positive length with id's; they include every point
+  /// whose tile gains area when id is removed, or lost area when id was inserted (area passing
+  /// between two tiles needs an empty circle through just those two points, so an edge of every
+  /// Delaunay triangulation). O(degree) when vertex edges are tracked (see EdgeLeaving).
+  void AppendNeighbours(std::int32_t id, std::vector<std::int32_t>& out) const;
   bool IsFreeTriangle(std::int32_t t) const { return this->Origins[3 * t] == Free; }
   /// True when no two adjacent real triangles are exactly co-circular (so the tessellation has
   /// no degenerate vertex), as tracked since construction: the Delaunay faces are then exactly

@@ -272,8 +272,9 @@ TEST(ArealAverage, UpdatesSkipTilesClearOfTheCatchmentYetEqualRebuildsWhenHolesO
   // Many gauges around a small catchment. Updates do not derive changed tiles whose bounds stay
   // clear of the catchment. Some steps stop every gauge in a disk about a point of the catchment's
   // edge: a gauge beyond the disk, outside the catchment and whose own tile and neighbours' tiles
-  // are far from it, then owns part of the catchment. Only the bounds of the whole removed
-  // component (the disk), not those of its removed neighbours alone, show that it must be derived.
+  // are far from it, then owns part of the catchment. Only boxes passed on along the removals
+  // across the disk (each removed gauge's box goes to its neighbours), not the removed neighbours'
+  // own boxes, show that it must be derived.
   std::mt19937_64 random(31);
   std::uniform_real_distribution<double> lon(-110.0, -100.0), lat(35.0, 45.0), value(0.0, 10.0);
   std::vector<Point2> gauges(3000);

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <random>
 #include <set>
@@ -1022,6 +1023,127 @@ TEST(DirichletTessellation, EdgeLeavingNamesAnEdgeOfEveryVertexOnly)
     EXPECT_EQ(t.EdgeLeaving(200), -1); // the duplicate
     EXPECT_EQ(t.EdgeLeaving(201), -1); // outside
   }
+}
+
+namespace
+{
+
+// Uniform points right of x = 0.5, a square lattice left of it (co-circular faces).
+std::vector<Point2> HalfLatticeHalfUniform()
+{
+  std::vector<Point2> points;
+  for (const Point2& p : tessera_test::SquareLattice(8, 8.0))
+  {
+    if (p.x < 0.5)
+    {
+      points.push_back(p);
+    }
+  }
+  for (const Point2& p : UniformPoints(120, 23))
+  {
+    points.push_back({ 0.5 + 0.5 * p.x, p.y });
+  }
+  return points;
+}
+
+std::map<std::int32_t, double> TileAreas(const Tess& t)
+{
+  const TileSet tiles = TessellationDual(t).Tiles();
+  std::map<std::int32_t, double> areas;
+  for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
+  {
+    areas[tiles.PointIds[k]] = tiles.Areas[k];
+  }
+  return areas;
+}
+
+} // namespace
+
+TEST(DirichletTessellation, NeighboursAreTheTriangulationEdgesAnticlockwise)
+{
+  Tess t(UnitWindow(), HalfLatticeHalfUniform());
+  t.TrackVertexEdges();
+  t.Remove(3);
+  t.Insert({ 0.7, 0.3 });
+  const auto& org = t.Origin();
+  for (const std::int32_t id : tessera_test::AcceptedIds(t))
+  {
+    // Brute force: the other vertices of the real triangles at id, and those triangles.
+    std::set<std::int32_t> expected;
+    std::set<std::pair<std::int32_t, std::int32_t>> anticlockwise; // (a, b): triangle (id, a, b)
+    for (std::size_t e = 0; e < org.size(); e += 3)
+    {
+      const std::int32_t v[3] = { org[e], org[e + 1], org[e + 2] };
+      if (v[0] < 0 || v[1] < 0 || v[2] < 0)
+      {
+        continue; // ghost or free
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        if (v[k] == id)
+        {
+          expected.insert({ v[(k + 1) % 3], v[(k + 2) % 3] });
+          anticlockwise.insert({ v[(k + 1) % 3], v[(k + 2) % 3] });
+        }
+      }
+    }
+    std::vector<std::int32_t> around;
+    t.AppendNeighbours(id, around);
+    EXPECT_EQ(std::set<std::int32_t>(around.begin(), around.end()), expected) << "point " << id;
+    EXPECT_EQ(around.size(), expected.size()) << "point " << id << " lists a neighbour twice";
+    // Consecutive neighbours span a triangle at id (all around for an interior point; a hull
+    // point misses exactly one pair, its ghost gap).
+    std::size_t spanned = 0;
+    for (std::size_t k = 0; k < around.size(); ++k)
+    {
+      spanned += anticlockwise.count({ around[k], around[(k + 1) % around.size()] });
+    }
+    EXPECT_GE(spanned + 1, around.size()) << "point " << id;
+    EXPECT_EQ(spanned, anticlockwise.size()) << "point " << id;
+  }
+  std::vector<std::int32_t> none;
+  t.AppendNeighbours(3, none); // removed
+  EXPECT_TRUE(none.empty());
+}
+
+// The property areal-average updates rely on: a tile whose area changes when a point is removed
+// or inserted belongs to one of that point's neighbours (then), lattice faces included.
+TEST(DirichletTessellation, NeighboursHoldEveryTileARemovalOrInsertionResizes)
+{
+  const std::vector<Point2> points = HalfLatticeHalfUniform();
+  Tess t(UnitWindow(), points);
+  t.TrackVertexEdges();
+  int resized = 0;
+  for (std::int32_t id = 0; id < std::int32_t(points.size()); id += 3)
+  {
+    std::vector<std::int32_t> before;
+    t.AppendNeighbours(id, before);
+    const std::map<std::int32_t, double> a = TileAreas(t);
+    t.Remove(id);
+    const std::map<std::int32_t, double> b = TileAreas(t);
+    for (const auto& [j, area] : b)
+    {
+      if (std::abs(area - a.at(j)) > 1e-12)
+      {
+        ++resized;
+        EXPECT_NE(std::find(before.begin(), before.end(), j), before.end())
+          << "removing " << id << " resized the tile of " << j;
+      }
+    }
+    const std::int32_t again = t.Insert(points[id]);
+    std::vector<std::int32_t> after;
+    t.AppendNeighbours(again, after);
+    const std::map<std::int32_t, double> c = TileAreas(t);
+    for (const auto& [j, area] : b)
+    {
+      if (std::abs(area - c.at(j)) > 1e-12)
+      {
+        EXPECT_NE(std::find(after.begin(), after.end(), j), after.end())
+          << "inserting " << again << " resized the tile of " << j;
+      }
+    }
+  }
+  EXPECT_GT(resized, 200); // the premise: removals that resize tiles
 }
 
 // -------------------------------------------------------------------------------------------
