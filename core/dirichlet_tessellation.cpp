@@ -1218,13 +1218,6 @@ bool DirichletTessellation::AnyCocircularNeighbour(const std::int32_t* triangles
   return false;
 }
 
-// One triangle of a re-triangulated hole: its vertices and the twins of its three half-edges
-// (-1 where a later triangle of the same plan supplies the twin).
-struct DirichletTessellation::Ear
-{
-  std::int32_t A, B, C, TwinA, TwinB, TwinC;
-};
-
 // Triangulates the anticlockwise polygon ring (outer[i]: twin of the edge ring[i] -> ring[i+1])
 // by cutting Delaunay ears (Devillers 1999): an ear (a, b, c) that turns left and whose circle
 // contains no other polygon vertex is a triangle of the Delaunay triangulation of the points
@@ -1290,9 +1283,12 @@ bool DirichletTessellation::CutDelaunayEars(std::vector<std::int32_t>& ring,
 //        e---f                 e---f
 bool DirichletTessellation::RemoveInteriorVertex(std::int32_t edge)
 {
-  std::vector<std::int32_t> ring;  // link vertices, anticlockwise
-  std::vector<std::int32_t> outer; // outer[i]: twin of the link edge ring[i] -> ring[i+1]
-  std::vector<std::int32_t> slots; // the star's triangles, reused
+  std::vector<std::int32_t>& ring = this->Removal.Ring;
+  std::vector<std::int32_t>& outer = this->Removal.Outer;
+  std::vector<std::int32_t>& slots = this->Removal.Slots;
+  ring.clear();
+  outer.clear();
+  slots.clear();
   std::int32_t e = edge;
   do
   {
@@ -1307,7 +1303,8 @@ bool DirichletTessellation::RemoveInteriorVertex(std::int32_t edge)
     e = this->RingNext(e);
   } while (e != edge);
 
-  std::vector<Ear> plan;
+  std::vector<Ear>& plan = this->Removal.Plan;
+  plan.clear();
   if (!this->CutDelaunayEars(ring, outer, slots, 0, plan))
   {
     return false; // rebuilding is always correct
