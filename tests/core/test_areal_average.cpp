@@ -28,6 +28,23 @@ struct Square
   }
 };
 
+// n gauges uniform in a lon/lat box, drawn from random (longitude, then latitude, per gauge).
+std::vector<Point2> UniformGauges(std::size_t n,
+  std::mt19937_64& random,
+  double west,
+  double east,
+  double south,
+  double north)
+{
+  std::uniform_real_distribution<double> lon(west, east), lat(south, north);
+  std::vector<Point2> gauges(n);
+  for (auto& g : gauges)
+  {
+    g = { lon(random), lat(random) };
+  }
+  return gauges;
+}
+
 double Sum(const std::vector<double>& v)
 {
   return std::accumulate(v.begin(), v.end(), 0.0);
@@ -122,12 +139,8 @@ TEST(ArealAverage, AGaugeOutsideTheCatchmentStillOwnsItsNearestPart)
 TEST(ArealAverage, IncrementalUpdatesEqualRebuildsAndMissingGaugesHandOverTheirArea)
 {
   std::mt19937_64 random(11);
-  std::uniform_real_distribution<double> lon(-109.0, -102.0), lat(37.0, 41.0), value(0.0, 10.0);
-  std::vector<Point2> gauges(80);
-  for (auto& g : gauges)
-  {
-    g = { lon(random), lat(random) };
-  }
+  std::uniform_real_distribution<double> value(0.0, 10.0);
+  const std::vector<Point2> gauges = UniformGauges(80, random, -109.0, -102.0, 37.0, 41.0);
   const Square catchment(-108.0, 37.5, -103.0, 40.5);
   ArealAverageSettings incremental, rebuild;
   rebuild.Incremental = false;
@@ -160,12 +173,7 @@ TEST(ArealAverage, IncrementalUpdatesEqualRebuildsAndMissingGaugesHandOverTheirA
 TEST(ArealAverage, EqualAreaPlaneAgreesWithGeodesicPolygons)
 {
   std::mt19937_64 random(5);
-  std::uniform_real_distribution<double> lon(-109.0, -102.0), lat(37.0, 41.0);
-  std::vector<Point2> gauges(40);
-  for (auto& g : gauges)
-  {
-    g = { lon(random), lat(random) };
-  }
+  const std::vector<Point2> gauges = UniformGauges(40, random, -109.0, -102.0, 37.0, 41.0);
   const Square catchment(-108.0, 37.5, -103.0, 40.5);
   ArealAverageSettings plane, geodesic;
   plane.Areas = AreaMethod::EqualAreaPlane;
@@ -276,12 +284,8 @@ TEST(ArealAverage, UpdatesSkipTilesClearOfTheCatchmentYetEqualRebuildsWhenHolesO
   // across the disk (each removed gauge's box goes to its neighbours), not the removed neighbours'
   // own boxes, show that it must be derived.
   std::mt19937_64 random(31);
-  std::uniform_real_distribution<double> lon(-110.0, -100.0), lat(35.0, 45.0), value(0.0, 10.0);
-  std::vector<Point2> gauges(3000);
-  for (auto& g : gauges)
-  {
-    g = { lon(random), lat(random) };
-  }
+  std::uniform_real_distribution<double> value(0.0, 10.0);
+  const std::vector<Point2> gauges = UniformGauges(3000, random, -110.0, -100.0, 35.0, 45.0);
   const Square catchment(-106.0, 39.0, -104.0, 41.0);
   ArealAverageSettings rebuild;
   rebuild.Incremental = false;
