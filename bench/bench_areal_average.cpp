@@ -2,8 +2,9 @@
 // gauges with 1% toggling per step, incremental updates against rebuilds in the same run.
 // A rebuild reuses nothing from the previous step: it builds the tessellation of the reporting
 // gauges, derives every tile and clips every tile. An update removes and inserts the gauges that
-// changed, re-derives the tiles of their face mates and re-clips only tiles that changed, except
-// those whose bounds show them clear of the catchment.
+// changed, then re-derives and re-clips only the tiles whose areas may have changed (the
+// neighbours of the removed and inserted gauges), except those whose boxes show them clear of
+// the catchment.
 //
 //   bench_areal_average [examples/data] [--synthetic]   prints two tables (the second only
 //                                                       with --synthetic)

@@ -282,8 +282,8 @@ struct ThiessenArealAverage::State
   ///     +---+---+---+    +---+-------+
   ///
   /// Returns false when the tessellation stopped being two-dimensional on the way (a removal that
-  /// leaves the points collinear rebuilds it): then no list is made and every tile must be
-  /// derived.
+  /// leaves the points collinear rebuilds it): then the list (if one was asked for) is incomplete
+  /// and every tile must be derived.
   bool Apply(const std::vector<std::int32_t>& removed,
     const std::vector<std::int32_t>& inserted,
     std::vector<std::int32_t>* touched)
@@ -570,8 +570,8 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
   const std::vector<char>& wanted = s.Wanted;
   // The local derivation when updating a two-dimensional tessellation, with at most a fifth of
   // the gauges changing; otherwise every tile. A two-dimensional tessellation before the update
-  // means that the previous step derived every tile it has (the first step, or one after a step
-  // without reports, starts from an empty tessellation).
+  // means that every cached area is current (the first step, or one after a step without
+  // reports, starts from an empty tessellation).
   bool local = false;
   std::vector<std::int32_t> removed, inserted, touched;
   if (s.Settings.Incremental)

@@ -129,9 +129,11 @@ public:
   /// when id is not a vertex or the tessellation is not two-dimensional). Where points are
   /// co-circular the triangulation keeps some diagonals of their face, so these are a superset of
   /// the points whose tiles share an edge of positive length with id's; they include every point
-  /// whose tile gains area when id is removed, or lost area when id was inserted (area passing
-  /// between two tiles needs an empty circle through just those two points, so an edge of every
-  /// Delaunay triangulation). O(degree) when vertex edges are tracked (see EdgeLeaving).
+  /// whose tile gains area when id is removed, or lost area when id was inserted. Why: if j's new
+  /// tile takes area from id's old tile, that overlap is open, so walking inside it from j's side
+  /// crosses a Voronoi edge between id and j of positive length; its points are centres of empty
+  /// circles through just id and j, which makes id-j an edge of every Delaunay triangulation.
+  /// O(degree) when vertex edges are tracked (see EdgeLeaving).
   void AppendNeighbours(std::int32_t id, std::vector<std::int32_t>& out) const;
   bool IsFreeTriangle(std::int32_t t) const { return this->Origins[3 * t] == Free; }
   /// True when no two adjacent real triangles are exactly co-circular (so the tessellation has

@@ -365,3 +365,54 @@ TEST(ArealAverage, UpdatesSkipTilesClearOfTheCatchmentYetEqualRebuildsWhenHolesO
   EXPECT_GT(clearTotal, 1000);
   EXPECT_GE(farGainers, 8); // 17 with this seed
 }
+
+TEST(ArealAverage, AnUpdateThatPassesThroughCollinearGaugesDerivesEveryTile)
+{
+  // Step 1: gauges 0-2 on one parallel and gauge 3 off it. Step 2 removes gauge 3 (the rest are
+  // then collinear for a moment: the engine holds no triangles) and inserts gauges 4 and 5, few
+  // enough changes for a local update. Step 3 updates locally again. Each equals a rebuild.
+  const std::vector<Point2> gauges{ { -107.0, 39.0 },
+    { -105.5, 39.0 },
+    { -104.0, 39.0 },
+    { -105.0, 40.2 },
+    { -106.2, 37.8 },
+    { -103.6, 40.6 },
+    { -108.5, 37.2 },
+    { -102.4, 40.9 },
+    { -108.8, 40.8 },
+    { -102.2, 37.1 },
+    { -106.0, 38.5 },
+    { -104.5, 39.6 },
+    { -107.5, 40.0 },
+    { -103.0, 38.0 },
+    { -105.8, 37.3 },
+    { -104.2, 40.7 },
+    { -107.7, 38.2 },
+    { -102.8, 39.4 },
+    { -106.6, 39.8 },
+    { -103.8, 37.6 } };
+  const Square catchment(-108.0, 37.5, -103.0, 40.5);
+  ArealAverageSettings rebuild;
+  rebuild.Incremental = false;
+  ThiessenArealAverage a(gauges, catchment.Offsets, catchment.Ring);
+  ThiessenArealAverage b(gauges, catchment.Offsets, catchment.Ring, rebuild);
+  const std::vector<std::vector<int>> reporting{
+    { 0, 1, 2, 3 }, { 0, 1, 2, 4, 5 }, { 0, 1, 2, 4, 5, 6 }
+  };
+  for (std::size_t t = 0; t < reporting.size(); ++t)
+  {
+    std::vector<double> values(gauges.size(), NaN);
+    for (const int g : reporting[t])
+    {
+      values[g] = 1.0 + g;
+    }
+    const ArealStep x = a.Step(values), y = b.Step(values);
+    ASSERT_EQ(x.Gauges, y.Gauges) << "step " << t;
+    for (std::size_t k = 0; k < x.Weights.size(); ++k)
+    {
+      EXPECT_NEAR(x.Weights[k], y.Weights[k], 1e-13) << "step " << t << " gauge " << x.Gauges[k];
+    }
+    EXPECT_NEAR(Sum(x.Weights), 1.0, 1e-12) << "step " << t;
+    EXPECT_NEAR(x.Mean, y.Mean, 1e-12) << "step " << t;
+  }
+}
