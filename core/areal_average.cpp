@@ -66,7 +66,8 @@ struct ThiessenArealAverage::State
   // Per gauge: the clipped area (m^2) of its tile, as last derived.
   std::vector<double> CachedArea;
   // Per gauge in the tessellation (updates only): a box holding its tile, the tile's own box when
-  // it was last derived, grown since by the removals next to it (Apply).
+  // it was last derived, grown since by the removals next to it; for a gauge inserted and not
+  // derived since, the joined boxes of its neighbours at its insertion (Apply).
   std::vector<Box2> TileBounds;
   // How far clear of the catchment's box a box must be (a millionth of the window's larger side,
   // about 1 m in Colorado): the boxes are those of computed tiles, whose vertices are rounded
@@ -274,12 +275,21 @@ struct ThiessenArealAverage::State
   /// before its removal, and of each inserted gauge just after its insertion, are all of them.
   /// (Face mates taken once for the whole step, as the full derivation defines them, cost more:
   /// they need the faces labelled.) A removed gauge's tile goes to its neighbours, so each of
-  /// their boxes takes in its box; an insertion only shrinks tiles:
+  /// their boxes takes in its box; an insertion only shrinks tiles, and the inserted gauge's tile
+  /// is made of pieces of its neighbours' tiles, so its box is their joined boxes:
   ///
   ///        before          remove r            r's neighbours' boxes take in r's box
   ///     +---+---+---+    +---+-------+
   ///     | a | r | b |    | a :   b   |         (a's new tile lies in its box + r's box)
   ///     +---+---+---+    +---+-------+
+  ///
+  ///        before          insert i            i's box joins a's and b's boxes
+  ///     +-----+-----+    +---+---+---+
+  ///     |  a  :  b  |    | a | i | b |         (i's tile lies in a's and b's old tiles)
+  ///     +-----+-----+    +---+---+---+
+  ///
+  /// (The same walk argument as AppendNeighbours': a piece of an old tile j inside i's new tile is
+  /// open, so j and i share an edge of positive length, and j is among i's neighbours.)
   ///
   /// Returns false when the tessellation stopped being two-dimensional on the way (a removal that
   /// leaves the points collinear rebuilds it): then the list (if one was asked for) is incomplete
@@ -323,10 +333,14 @@ struct ThiessenArealAverage::State
       {
         around.clear();
         t.AppendNeighbours(id, around);
+        Box2 box = this->TileBounds[this->GaugeOfEngine[around.front()]];
         for (const std::int32_t neighbour : around)
         {
-          touched->push_back(this->GaugeOfEngine[neighbour]);
+          const std::int32_t j = this->GaugeOfEngine[neighbour];
+          box.Extend(this->TileBounds[j]);
+          touched->push_back(j);
         }
+        this->TileBounds[g] = box;
       }
       else
       {
@@ -369,9 +383,9 @@ struct ThiessenArealAverage::State
   }
 
   /// Only the tiles whose areas may have changed: those of the inserted gauges and of the gauges
-  /// that Apply touched. Everything else keeps its cached area. Of the touched gauges, those whose
-  /// (grown) boxes are clear of the catchment are not derived: their clipped area is 0. Returns
-  /// (tiles derived, touched tiles found clear by their boxes).
+  /// that Apply touched. Everything else keeps its cached area. Of these, those whose boxes (grown,
+  /// or joined for inserted gauges) are clear of the catchment are not derived: their clipped area
+  /// is 0. Returns (tiles derived, tiles found clear by their boxes).
   std::pair<std::size_t, std::size_t> DeriveChanged(const std::vector<char>& wanted,
     const std::vector<std::int32_t>& touched,
     const std::vector<std::int32_t>& inserted)
@@ -380,15 +394,15 @@ struct ThiessenArealAverage::State
     marked.assign(wanted.size(), 0);
     std::vector<std::int32_t> changed;
     std::size_t clear = 0;
-    for (const std::int32_t g : inserted)
+    // Inserted gauges first (an inserted gauge is touched again by later insertions next to it).
+    for (const std::vector<std::int32_t>* list : { &inserted, &touched })
     {
-      marked[g] = 1;
-      changed.push_back(g);
-    }
-    for (const std::int32_t g : touched)
-    {
-      if (wanted[g] && !marked[g]) // (a touched gauge may have been removed later)
+      for (const std::int32_t g : *list)
       {
+        if (!wanted[g] || marked[g]) // (a touched gauge may have been removed later)
+        {
+          continue;
+        }
         marked[g] = 1;
         if (this->ClearOfCatchment(this->TileBounds[g]))
         {
