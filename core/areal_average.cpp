@@ -173,6 +173,13 @@ struct ThiessenArealAverage::State
   /// Ellipsoidal area (m^2) of tile & catchment.
   double ClippedArea(const Point2* tile, std::size_t count, std::size_t tileId)
   {
+    // A tile thinner than the rounding of its vertices (between gauges some nanometres apart,
+    // closer than CoLocatedMetres allows by default) can come out folded or collapsed: its true
+    // area is below the rounding's, so it counts as empty.
+    if (count < 3 || Catchment::TileSignedArea(tile, count) <= 0.0)
+    {
+      return 0.0;
+    }
     if (this->Method == AreaMethod::EqualAreaPlane)
     {
       return this->Region->ClipInto(tile, count, tileId, this->Work, nullptr);
@@ -428,6 +435,47 @@ struct ThiessenArealAverage::State
   }
 };
 
+namespace
+{
+
+/// Per gauge, the smallest gauge id at its place: gauges within `metres` of a gauge of a place
+/// (in id order) join it. On a grid of cells at least a millimetre wide, so that a gauge is
+/// compared only with the gauges in the 3 x 3 cells about it.
+std::vector<std::int32_t> GroupByPlace(const std::vector<Point2>& xy, double metres)
+{
+  const double cell = std::max(metres, 1e-3);
+  std::map<std::pair<std::int64_t, std::int64_t>, std::vector<std::int32_t>> cells;
+  std::vector<std::int32_t> first(xy.size());
+  for (std::size_t g = 0; g < xy.size(); ++g)
+  {
+    const std::int64_t i = static_cast<std::int64_t>(std::floor(xy[g].x / cell));
+    const std::int64_t j = static_cast<std::int64_t>(std::floor(xy[g].y / cell));
+    first[g] = static_cast<std::int32_t>(g);
+    for (std::int64_t di = -1; di <= 1; ++di)
+    {
+      for (std::int64_t dj = -1; dj <= 1; ++dj)
+      {
+        const auto found = cells.find({ i + di, j + dj });
+        if (found == cells.end())
+        {
+          continue;
+        }
+        for (const std::int32_t h : found->second)
+        {
+          if (first[h] < first[g] && std::hypot(xy[g].x - xy[h].x, xy[g].y - xy[h].y) <= metres)
+          {
+            first[g] = first[h];
+          }
+        }
+      }
+    }
+    cells[{ i, j }].push_back(static_cast<std::int32_t>(g));
+  }
+  return first;
+}
+
+} // namespace
+
 ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonLat,
   const std::vector<std::size_t>& catchmentRingOffsets,
   const std::vector<Point2>& catchmentLonLat,
@@ -447,6 +495,11 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
               << ")";
       throw InputError(message.str());
     }
+  }
+  if (!(settings.CoLocatedMetres >= 0.0) || !std::isfinite(settings.CoLocatedMetres))
+  {
+    throw InputError("CoLocatedMetres must be a finite distance >= 0, not " +
+      std::to_string(settings.CoLocatedMetres));
   }
   const CleanRings rings = ValidateRings(catchmentRingOffsets, catchmentLonLat);
 
@@ -468,19 +521,18 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
                                                                     : AreaMethod::GeodesicPolygon;
   }
 
-  // Gauges: projected, and grouped by exact position (the first of a group is its name).
+  // Gauges: projected, and grouped by place (the first of a group is its name).
   s.GaugesXY.resize(gaugesLonLat.size());
-  s.FirstAtPlace.resize(gaugesLonLat.size());
-  std::map<std::pair<double, double>, std::int32_t> firstAt;
   for (std::size_t g = 0; g < gaugesLonLat.size(); ++g)
   {
     s.GaugesXY[g] = s.Projector->Forward(gaugesLonLat[g], static_cast<long long>(g));
-    const auto key = std::make_pair(s.GaugesXY[g].x, s.GaugesXY[g].y);
-    const auto found = firstAt.emplace(key, static_cast<std::int32_t>(g)).first->second;
-    s.FirstAtPlace[g] = found;
-    if (found != static_cast<std::int32_t>(g))
+  }
+  s.FirstAtPlace = GroupByPlace(s.GaugesXY, settings.CoLocatedMetres);
+  for (std::size_t g = 0; g < gaugesLonLat.size(); ++g)
+  {
+    if (s.FirstAtPlace[g] != static_cast<std::int32_t>(g))
     {
-      s.Duplicates.emplace_back(static_cast<std::int32_t>(g), found);
+      s.Duplicates.emplace_back(static_cast<std::int32_t>(g), s.FirstAtPlace[g]);
     }
   }
 

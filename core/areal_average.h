@@ -59,6 +59,12 @@ struct ArealAverageSettings
   /// Catchment edges are straight in lon/lat: cut into pieces of at most this many degrees before
   /// projecting.
   double CatchmentEdgeDegrees = 0.01;
+  /// Gauges closer than this (projected metres) are at one place, as exact repeats are: at each
+  /// step the first of them that reported is used (DuplicateGauges lists them). Gauges much
+  /// closer than a millimetre have tiles too thin for their rounded vertices (a strip a few
+  /// nanometres wide folds), whose clipped areas are unreliable; the same gauge written with
+  /// longitudes 360 degrees apart lands some nanometres from itself. 0 groups exact repeats only.
+  double CoLocatedMetres = 0.01;
   /// GeodesicPolygon only: spacing, in projected metres, of the points added along clipped ring
   /// edges before unprojecting.
   double GeodesicStepMetres = 1000.0;
@@ -98,8 +104,8 @@ public:
   /// gaugesLonLat: one point per gauge (id = index). Throws InputError naming the gauge for a
   /// NaN/Inf coordinate or |latitude| > 90. The catchment: rings in lon/lat (flat offsets, even-odd
   /// rule); throws InputError naming ring, vertex or segments when a ring is degenerate or
-  /// self-intersecting or two rings cross. Gauges at one place are grouped: at each step the
-  /// first of a group that reported is used (see DuplicateGauges).
+  /// self-intersecting or two rings cross. Gauges at one place (within CoLocatedMetres) are
+  /// grouped: at each step the first of a group that reported is used (see DuplicateGauges).
   ThiessenArealAverage(const std::vector<Point2>& gaugesLonLat,
     const std::vector<std::size_t>& catchmentRingOffsets,
     const std::vector<Point2>& catchmentLonLat,
@@ -110,7 +116,8 @@ public:
 
   const ProjectionParameters& Projection() const;
   AreaMethod Method() const;
-  /// (gauge, first gauge at the same place) for every gauge that repeats an earlier one.
+  /// (gauge, first gauge at the same place) for every gauge at the place of an earlier one
+  /// (within CoLocatedMetres of it, or of another gauge of that place).
   const std::vector<std::pair<std::int32_t, std::int32_t>>& DuplicateGauges() const;
   /// The catchment's ellipsoidal area, m^2, measured as the tiles are.
   double CatchmentAreaM2() const;

@@ -585,6 +585,11 @@ ClippedTiles Catchment::ClipAll(const std::vector<std::size_t>& tileOffsets,
   return clipped;
 }
 
+double Catchment::TileSignedArea(const Point2* tile, std::size_t count)
+{
+  return SignedArea(tile, count);
+}
+
 double Catchment::ClipInto(const Point2* tile,
   std::size_t count,
   std::size_t tileId,
@@ -592,7 +597,7 @@ double Catchment::ClipInto(const Point2* tile,
   ClippedRings* rings) const
 {
   CheckTile(tile, count, tileId);
-  const double tileArea = SignedArea(tile, count);
+  const double tileArea = TileSignedArea(tile, count);
   if (tileArea < 0.0)
   {
     throw InputError("tile " + std::to_string(tileId) + " has clockwise vertices (signed area " +

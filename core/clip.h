@@ -134,6 +134,10 @@ public:
     Workspace& work,
     ClippedRings* rings) const;
 
+  /// The signed area ClipInto finds for a tile (it rejects tiles where it is negative): the
+  /// shoelace sum of exact products, compensated.
+  static double TileSignedArea(const Point2* tile, std::size_t count);
+
 private:
   void BuildGrid();
   void FindDepths();

@@ -37,10 +37,10 @@
  * catchment), `CoveredFraction` (sum of weights).
  *
  * Unused input is reported, never dropped silently: gauges with no observation, observations of
- * unknown stations, and co-located gauges (the first is kept and its value used) are listed in a
- * warning and in output 1's field data (`UnobservedGaugeIds`, `DuplicateGaugeIds`,
- * `DuplicateOfGaugeIds`). A gauge with a NaN or out-of-range coordinate and a self-intersecting
- * catchment are errors naming them.
+ * unknown stations, and co-located gauges (within 1 cm once projected; the first is kept and its
+ * value used) are listed in a warning and in output 1's field data (`UnobservedGaugeIds`,
+ * `DuplicateGaugeIds`, `DuplicateOfGaugeIds`). A gauge with a NaN or out-of-range coordinate and a
+ * self-intersecting catchment are errors naming them.
  */
 
 #ifndef vtkThiessenArealAverage_h

@@ -416,3 +416,104 @@ TEST(ArealAverage, AnUpdateThatPassesThroughCollinearGaugesDerivesEveryTile)
     EXPECT_NEAR(x.Mean, y.Mean, 1e-12) << "step " << t;
   }
 }
+
+TEST(ArealAverage, GaugesNanometresApartAreOnePlace)
+{
+  // Gauge 2 is gauge 1 written with its longitude 360 degrees lower (it projects some
+  // nanometres away); gauge 3 is 1e-12 degrees east of gauge 1. Each is grouped with gauge 1, so
+  // that at each step one of them owns their tile, as a lone gauge there would.
+  const std::vector<Point2> gauges{ { 42.755389162668756, -9.049444927432857 },
+    { 42.628477585690931, -9.6917621987416123 },
+    { -317.37152241430908, -9.6917621987416123 },
+    { 42.628477585690931 + 1e-12, -9.6917621987416123 } };
+  const Square catchment(42.4, -9.8, 42.8, -9.2);
+  ThiessenArealAverage a(gauges, catchment.Offsets, catchment.Ring);
+  ThiessenArealAverage lone({ gauges[0], gauges[1] }, catchment.Offsets, catchment.Ring);
+  const std::vector<std::pair<std::int32_t, std::int32_t>> repeats{ { 2, 1 }, { 3, 1 } };
+  EXPECT_EQ(a.DuplicateGauges(), repeats);
+  const ArealStep reference = lone.Step({ 1.0, 2.0 });
+  ASSERT_EQ(reference.Gauges.size(), 2u);
+  // Each gauge of the place in turn, then all three (the first, gauge 1, is used).
+  for (int used = 1; used <= 4; ++used)
+  {
+    std::vector<double> values{ 1.0, NaN, NaN, NaN };
+    for (int g = 1; g <= 3; ++g)
+    {
+      values[g] = used == 4 || used == g ? 2.0 : NaN;
+    }
+    const ArealStep x = a.Step(values);
+    ASSERT_EQ(x.Gauges.size(), 2u) << "case " << used;
+    EXPECT_EQ(x.Gauges[1], used == 4 ? 1 : used);
+    EXPECT_EQ(x.StationsUsed, 2);
+    EXPECT_NEAR(x.Weights[0], reference.Weights[0], 1e-9) << "case " << used;
+    EXPECT_NEAR(x.Weights[1], reference.Weights[1], 1e-9) << "case " << used;
+    EXPECT_NEAR(x.Mean, reference.Mean, 1e-9) << "case " << used;
+  }
+}
+
+TEST(ArealAverage, GaugesUlpsApartWithoutGroupingGiveFiniteWeightsNotErrors)
+{
+  // Three gauges one ulp apart in longitude near the pole (two ulps from the first to the last),
+  // with grouping turned off: their tiles are thinner than the rounding of their vertices and
+  // come out folded or collapsed (one used to make Step throw "tile 2 has clockwise vertices").
+  // A step is no error and its weights are finite and within [0, 1]; the three share about the
+  // area a lone gauge there gets, 1.6% more here: clipped areas of folded tiles are unreliable,
+  // which is why CoLocatedMetres groups such gauges by default.
+  const std::vector<Point2> gauges{ { -0.41856777320835226, 86.818952425533439 },
+    { -0.49953974868171797, 86.815146534946507 },
+    { -0.49953974868171791, 86.815146534946507 },
+    { -0.49953974868171785, 86.815146534946507 },
+    { -0.37530043358558773, 86.750514218423049 },
+    { -0.35162104552200762, 86.9057989760054 } };
+  // A catchment of two rings (a hole) and a wide window, as a fuzzer found them.
+  const std::vector<std::size_t> offsets{ 0, 12, 16 };
+  const std::vector<Point2> rings{ { -0.39844357974047001, 86.841804520291959 },
+    { -0.37977925768659843, 86.84779150351261 },
+    { -0.41782430568597606, 86.869848415377561 },
+    { -0.4373981633843248, 86.889722286280659 },
+    { -0.45257912282558177, 86.867288178519388 },
+    { -0.45667211939782931, 86.868354596208746 },
+    { -0.46237148627373242, 86.850299308363546 },
+    { -0.46003001567518603, 86.834238063056091 },
+    { -0.44453436778109129, 86.804955832468266 },
+    { -0.42996665156659042, 86.807921761280852 },
+    { -0.41312611343498434, 86.789662930664804 },
+    { -0.40824673568623498, 86.809070258067706 },
+    { -0.42563652366676469, 86.848106127070423 },
+    { -0.41068445019701821, 86.848106127070423 },
+    { -0.41068445019701821, 86.83315405360068 },
+    { -0.42563652366676469, 86.83315405360068 } };
+  ArealAverageSettings exact;
+  exact.CoLocatedMetres = 0.0;
+  exact.Padding = 3.0;
+  ThiessenArealAverage a(gauges, offsets, rings, exact);
+  EXPECT_TRUE(a.DuplicateGauges().empty());
+  ThiessenArealAverage lone({ gauges[0], gauges[1], gauges[4], gauges[5] }, offsets, rings, exact);
+  const ArealStep reference = lone.Step({ 1.0, 2.0, 3.0, 4.0 });
+  ArealStep x;
+  ASSERT_NO_THROW(x = a.Step({ 1.0, 2.0, 2.0, 2.0, 3.0, 4.0 }));
+  double place = 0.0;
+  for (std::size_t k = 0; k < x.Gauges.size(); ++k)
+  {
+    EXPECT_TRUE(std::isfinite(x.Weights[k]));
+    EXPECT_GE(x.Weights[k], 0.0);
+    EXPECT_LE(x.Weights[k], 1.0);
+    place += x.Gauges[k] >= 1 && x.Gauges[k] <= 3 ? x.Weights[k] : 0.0;
+  }
+  ASSERT_EQ(reference.Gauges[1], 1);
+  EXPECT_NEAR(place, reference.Weights[1], 0.05 * reference.Weights[1]);
+}
+
+TEST(ArealAverage, CoLocatedDistanceMustBeFiniteAndNotNegative)
+{
+  const Square catchment(-108.0, 37.5, -103.0, 40.5);
+  for (const double bad : { -1.0, NaN, std::numeric_limits<double>::infinity() })
+  {
+    ArealAverageSettings settings;
+    settings.CoLocatedMetres = bad;
+    EXPECT_THROW(
+      ThiessenArealAverage({ { -105.0, 39.0 } }, catchment.Offsets, catchment.Ring, settings),
+      InputError)
+      << bad;
+  }
+}
