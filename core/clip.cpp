@@ -53,6 +53,27 @@ double SignedArea(const Point2* ring, std::size_t count)
   return 0.5 * twice.Value();
 }
 
+// The local rings' winding is counted at the box's centre, which must lie strictly inside the
+// box: a sliver tile's box can be an ulp or two wide, and its computed centre then falls on a
+// side. Such a box is widened by ulps on that axis (it still holds the tile).
+void WidenUntilCentreIsInside(Box2& box)
+{
+  const double down = -std::numeric_limits<double>::infinity();
+  const double up = std::numeric_limits<double>::infinity();
+  while (!(box.XMin < box.XMin + 0.5 * (box.XMax - box.XMin) &&
+    box.XMin + 0.5 * (box.XMax - box.XMin) < box.XMax))
+  {
+    box.XMin = std::nextafter(box.XMin, down);
+    box.XMax = std::nextafter(box.XMax, up);
+  }
+  while (!(box.YMin < box.YMin + 0.5 * (box.YMax - box.YMin) &&
+    box.YMin + 0.5 * (box.YMax - box.YMin) < box.YMax))
+  {
+    box.YMin = std::nextafter(box.YMin, down);
+    box.YMax = std::nextafter(box.YMax, up);
+  }
+}
+
 // Winding-number contribution of segment a->b at p, by the signed crossings of the ray from p
 // towards +x. Half-open in y so a vertex on the ray counts once; exact through orient2d.
 int RayCrossing(const Point2& a, const Point2& b, const Point2& p)
@@ -603,12 +624,13 @@ double Catchment::ClipInto(const Point2* tile,
     throw InputError("tile " + std::to_string(tileId) + " has clockwise vertices (signed area " +
       std::to_string(tileArea) + "); tiles must be convex and anticlockwise");
   }
-  const Box2 box = BoundsOf(tile, count);
+  Box2 box = BoundsOf(tile, count);
   if (tileArea == 0.0 || box.XMax < this->Box.XMin || box.XMin > this->Box.XMax ||
     box.YMax < this->Box.YMin || box.YMin > this->Box.YMax)
   {
     return 0.0;
   }
+  WidenUntilCentreIsInside(box);
   const std::size_t x0 = this->CellX(box.XMin);
   const std::size_t x1 = this->CellX(box.XMax);
   const std::size_t y0 = this->CellY(box.YMin);

@@ -529,6 +529,40 @@ TEST(Clip, DyadicCoordinatesAwayFromOriginMatchExactClipping)
   }
 }
 
+TEST(Clip, SliverTilesWhoseBoxIsAnUlpWideMatchExactClipping)
+{
+  // A fuzzer's case: coordinates near 2^39, a tile whose box is one ulp wide in x, so that the
+  // box's computed centre lies on its side. The winding counted there once added the whole tile.
+  // The same case shifted by dyadic offsets (exact) must agree with the exact area too.
+  const std::vector<Point2> ring{ { 549755813892.0, -412316860426.0 },
+    { 549755813889.0, -412316860425.0 },
+    { 549755813884.0, -412316860420.0 },
+    { 549755813881.0, -412316860412.0 },
+    { 549755813881.0, -412316860411.5 },
+    { 549755813896.0, -412316860415.0 },
+    { 549755813898.0, -412316860416.0 } };
+  const std::vector<Point2> tile{ { 549755813889.9999, -412316860426.0 },
+    { 549755813890.0, -412316860426.00006 },
+    { 549755813890.0, -412316860425.99994 } };
+  for (const double shift : { 0.0, 3.0, -1024.0, 0.5 })
+  {
+    Rings rings;
+    std::vector<Point2> shifted = ring;
+    for (Point2& p : shifted)
+    {
+      p.x += shift;
+    }
+    rings.Add(shifted);
+    std::vector<Point2> t = tile;
+    for (Point2& p : t)
+    {
+      p.x += shift;
+    }
+    const Catchment catchment(rings.Offsets, rings.Vertices);
+    EXPECT_EQ(catchment.ClipArea(t), ExactClippedArea(rings, t).get_d()) << "shift " << shift;
+  }
+}
+
 // ---- Tilings -----------------------------------------------------------------------------------
 
 // A jittered grid over (and beyond) the catchment's box, each quad split into two triangles.
