@@ -53,6 +53,31 @@ double SignedArea(const Point2* ring, std::size_t count)
   return 0.5 * twice.Value();
 }
 
+// The tile's vertices from its lowest (smallest x, then y) on, in rotated when that is not the
+// first: the clipped area is summed, and measured relative to the first vertex, in this order, so
+// that the same polygon gives the same bits whichever vertex it was listed from (two
+// tessellations of the same points list a tile from different vertices).
+const Point2* StartAtLowestVertex(const Point2* tile,
+  std::size_t count,
+  std::vector<Point2>& rotated)
+{
+  std::size_t lowest = 0;
+  for (std::size_t i = 1; i < count; ++i)
+  {
+    if (tile[i].x < tile[lowest].x || (tile[i].x == tile[lowest].x && tile[i].y < tile[lowest].y))
+    {
+      lowest = i;
+    }
+  }
+  if (lowest == 0)
+  {
+    return tile;
+  }
+  rotated.assign(tile + lowest, tile + count);
+  rotated.insert(rotated.end(), tile, tile + lowest);
+  return rotated.data();
+}
+
 // The local rings' winding is counted at the box's centre, which must lie strictly inside the
 // box: a sliver tile's box can be an ulp or two wide, and its computed centre then falls on a
 // side. Such a box is widened by ulps on that axis (it still holds the tile).
@@ -618,6 +643,7 @@ double Catchment::ClipInto(const Point2* tile,
   ClippedRings* rings) const
 {
   CheckTile(tile, count, tileId);
+  tile = StartAtLowestVertex(tile, count, work.Rotated);
   const double tileArea = TileSignedArea(tile, count);
   if (tileArea < 0.0)
   {

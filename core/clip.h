@@ -125,6 +125,7 @@ public:
     std::vector<Point2> Tile;
     std::vector<Point2> ClipA;
     std::vector<Point2> ClipB;
+    std::vector<Point2> Rotated;
   };
   /// The same as ClipArea / Clip for tile vertices tile[0] .. tile[count-1]; rings are appended to
   /// *rings when it is not null. tileId only names the tile in error messages.

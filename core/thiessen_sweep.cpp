@@ -23,6 +23,7 @@
 
 #include "thiessen_sweep.h"
 
+#include "circumcentre.h"
 #include "errors.h"
 #include "polygon_area.h"
 #include "predicates.h"
@@ -120,16 +121,11 @@ bool CircleBox(double ax,
     std::isfinite(box.YHi);
 }
 
-// Circumcentre from the points in ascending id order, relative to the first (as tiles.cpp does,
+// Circumcentre from the points in ascending id order (circumcentre.h, as tiles.cpp computes it,
 // so that interior vertices get the same bits from both engines).
 Point2 Circumcentre(const Point2& a, const Point2& b, const Point2& c)
 {
-  const double bx = b.x - a.x, by = b.y - a.y;
-  const double cx = c.x - a.x, cy = c.y - a.y;
-  const double b2 = bx * bx + by * by;
-  const double c2 = cx * cx + cy * cy;
-  const double d = 2.0 * (bx * cy - by * cx);
-  return { a.x + (cy * b2 - by * c2) / d, a.y + (bx * c2 - cx * b2) / d };
+  return CircumcentreOf(a, b, c);
 }
 
 class Sweep

@@ -1,5 +1,6 @@
 #include "tile_edges.h"
 
+#include "circumcentre.h"
 #include "polygon_area.h"
 #include "window_predicates.h"
 
@@ -17,25 +18,23 @@ namespace tiles_detail
 // whose centres are certainly different.
 Point2 Circumcentre(const Point2& a, const Point2& b, const Point2& c, double& error)
 {
-  const double bx = b.x - a.x, by = b.y - a.y;
-  const double cx = c.x - a.x, cy = c.y - a.y;
-  const double b2 = bx * bx + by * by;
-  const double c2 = cx * cx + cy * cy;
-  const double d = 2.0 * (bx * cy - by * cx);
-  const double ux = (cy * b2 - by * c2) / d, uy = (bx * c2 - cx * b2) / d;
+  const CircumcentreTerms t = CircumcentreOffset(a, b, c);
+  const Point2& o = t.Origin;
+  const double bx = t.bx, by = t.by, cx = t.cx, cy = t.cy, b2 = t.b2, c2 = t.c2, d = t.d;
+  const double ux = t.ux, uy = t.uy;
   const double condition = 2.0 * (std::fabs(bx * cy) + std::fabs(by * cx)) / std::fabs(d);
   const double spread = 2.0 *
     (std::fabs(cy) * b2 + std::fabs(by) * c2 + std::fabs(bx) * c2 + std::fabs(cx) * b2) /
     std::fabs(d);
   constexpr double unit = 0x1p-53;
   error = 4.0 * 16.0 * unit *
-    (spread + (std::fabs(ux) + std::fabs(uy)) * (condition + 1.0) + std::fabs(a.x) +
-      std::fabs(a.y));
+    (spread + (std::fabs(ux) + std::fabs(uy)) * (condition + 1.0) + std::fabs(o.x) +
+      std::fabs(o.y));
   if (!std::isfinite(error))
   {
     error = std::numeric_limits<double>::infinity();
   }
-  return { a.x + ux, a.y + uy };
+  return { o.x + ux, o.y + uy };
 }
 
 namespace

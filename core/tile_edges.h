@@ -43,8 +43,9 @@ struct FaceView
   bool Inside = false;
 };
 
-// Circumcentre from the points in a fixed (ascending id) order, relative to the first one; `error`
-// bounds the rounding error of each coordinate (infinity when the triangle is too flat to say).
+// Circumcentre from the points in a fixed (ascending id) order (circumcentre.h: relative to the
+// first, or to the second for a sliver whose short side is opposite the first); `error` bounds
+// the rounding error of each coordinate (infinity when the triangle is too flat to say).
 Point2 Circumcentre(const Point2& a, const Point2& b, const Point2& c, double& error);
 
 /// Whether the centre c (error bound `error`) of the face with representative triangle `face`

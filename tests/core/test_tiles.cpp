@@ -81,6 +81,59 @@ std::vector<Point2> BruteForceTile(const Window& window,
   return polygon;
 }
 
+// The exact area of point i's tile: the window polygon clipped by every bisector half-plane in
+// rational arithmetic.
+mpq_class ExactTileArea(const Window& window, const std::vector<Point2>& points, std::size_t i)
+{
+  struct Q
+  {
+    mpq_class x, y;
+  };
+  std::vector<Q> polygon;
+  for (const Point2& v : window.Vertices())
+  {
+    polygon.push_back({ v.x, v.y });
+  }
+  const Q p{ points[i].x, points[i].y };
+  for (std::size_t j = 0; j < points.size(); ++j)
+  {
+    const Q q{ points[j].x, points[j].y };
+    if (j == i || (q.x == p.x && q.y == p.y))
+    {
+      continue;
+    }
+    // g(x) = (q - p).(x - (p + q) / 2) <= 0: nearer to p.
+    const mpq_class mx = (p.x + q.x) / 2, my = (p.y + q.y) / 2;
+    const auto g = [&](const Q& v) -> mpq_class
+    { return (q.x - p.x) * (v.x - mx) + (q.y - p.y) * (v.y - my); };
+    std::vector<Q> clipped;
+    for (std::size_t k = 0; k < polygon.size(); ++k)
+    {
+      const Q& a = polygon[k];
+      const Q& b = polygon[(k + 1) % polygon.size()];
+      const mpq_class ga = g(a), gb = g(b);
+      if (sgn(ga) <= 0)
+      {
+        clipped.push_back(a);
+      }
+      if ((sgn(ga) < 0 && sgn(gb) > 0) || (sgn(ga) > 0 && sgn(gb) < 0))
+      {
+        const mpq_class t = ga / (ga - gb);
+        clipped.push_back({ a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) });
+      }
+    }
+    polygon = clipped;
+  }
+  mpq_class twice = 0;
+  for (std::size_t k = 0; k < polygon.size(); ++k)
+  {
+    const Q& a = polygon[k];
+    const Q& b = polygon[(k + 1) % polygon.size()];
+    twice += a.x * b.y - b.x * a.y;
+  }
+  return twice / 2;
+}
+
 bool Near(const Point2& a, const Point2& b, double tolerance)
 {
   return std::fabs(a.x - b.x) <= tolerance && std::fabs(a.y - b.y) <= tolerance;
@@ -932,4 +985,51 @@ TEST(Tiles, DerivedResultsDoNotDependOnTheThreadCount)
         EXPECT_EQ(serial.second.Graph.Pairs, chunked.second.Graph.Pairs) << set << ", " << threads;
       }
     });
+}
+
+TEST(Tiles, SliverTrianglesGiveAccurateTilesInBothEngines)
+{
+  // Two points an ulp or a few ulps apart and one far away: the Voronoi vertex of such a sliver,
+  // computed relative to the far point, once came out NaN (the rounded area cancelled to 0) or
+  // far off (squared lengths cancelling: 100 m off for points 3e-13 apart and 650 m away), so
+  // that tiles folded and a tile area was -427880 instead of 1.4e-9. Found by fuzzers.
+  struct Case
+  {
+    Window TheWindow;
+    std::vector<Point2> Points;
+  };
+  const std::vector<Case> cases{
+    { Window::Rectangle(-2, 2, -2, 2), { { -0.9, -0.9 }, { 0.5, 1 }, { 0.49999999999999994, 1 } } },
+    { Window::Rectangle(-18.5, 20.5, -11.5, 20.5),
+      { { 8, -4 }, { 4, -2.0000000000000004 }, { 4, -2 } } },
+    { Window::Rectangle(-20000, 20000, -20000, 20000),
+      { { 43.464033582254537, -1075.1446211870732 },
+        { -458.94559721606407, -1499.933501380531 },
+        { -458.94559721606379, -1499.933501380531 },
+        { -458.94559721606339, -1499.933501380531 },
+        { 318.33129978483834, -8718.9008964872755 },
+        { 445.89589776923708, 8625.0844053565652 } } },
+  };
+  for (std::size_t c = 0; c < cases.size(); ++c)
+  {
+    const Window& window = cases[c].TheWindow;
+    const std::vector<Point2>& points = cases[c].Points;
+    const double windowArea = window.Area();
+    const TileSet green = ComputeTiles(DirichletTessellation(window, points));
+    const TileSet sweep = ComputeThiessenSweep(window, points).Tiles;
+    for (const TileSet* tiles : { &green, &sweep })
+    {
+      ASSERT_EQ(tiles->PointIds.size(), points.size()) << "case " << c;
+      for (std::size_t k = 0; k < tiles->PointIds.size(); ++k)
+      {
+        const std::int32_t id = tiles->PointIds[k];
+        const double exact = ExactTileArea(window, points, std::size_t(id)).get_d();
+        // Rounded vertices of a sliver's tile err by ulps of the coordinates, times the tile's
+        // length: 1e-12 of the window's area bounds that here.
+        EXPECT_NEAR(tiles->Areas[k], exact, 1e-12 * windowArea)
+          << "case " << c << " point " << id << (tiles == &green ? " (Green-Sibson)" : " (sweep)");
+        EXPECT_GE(tiles->Areas[k], 0.0) << "case " << c << " point " << id;
+      }
+    }
+  }
 }
