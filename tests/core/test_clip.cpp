@@ -11,6 +11,7 @@
 #include "window.h"
 
 #include <gmpxx.h>
+#include "exact_support.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -30,10 +31,8 @@ namespace
 
 // ---- Exact rational reference ------------------------------------------------------------------
 
-struct QPoint
-{
-  mpq_class x, y;
-};
+using tessera_test::ExactArea;
+using tessera_test::QPoint;
 
 QPoint ToExact(const Point2& p)
 {
@@ -53,18 +52,6 @@ std::vector<QPoint> ToExact(const std::vector<Point2>& points)
 mpq_class Cross(const QPoint& a, const QPoint& b, const QPoint& c)
 {
   return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-}
-
-mpq_class ExactArea(const std::vector<QPoint>& ring)
-{
-  mpq_class twice = 0;
-  for (std::size_t i = 0; i < ring.size(); ++i)
-  {
-    const QPoint& a = ring[i];
-    const QPoint& b = ring[(i + 1) % ring.size()];
-    twice += a.x * b.y - b.x * a.y;
-  }
-  return twice / 2;
 }
 
 // Textbook Sutherland-Hodgman in exact arithmetic, inside = closed left side of each edge.

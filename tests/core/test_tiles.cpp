@@ -8,6 +8,7 @@
 #include "tiles.h"
 
 #include <gmpxx.h>
+#include "exact_support.h"
 #include "test_support.h"
 
 #include <gtest/gtest.h>
@@ -85,10 +86,7 @@ std::vector<Point2> BruteForceTile(const Window& window,
 // rational arithmetic.
 mpq_class ExactTileArea(const Window& window, const std::vector<Point2>& points, std::size_t i)
 {
-  struct Q
-  {
-    mpq_class x, y;
-  };
+  using Q = tessera_test::QPoint;
   std::vector<Q> polygon;
   for (const Point2& v : window.Vertices())
   {
@@ -124,14 +122,7 @@ mpq_class ExactTileArea(const Window& window, const std::vector<Point2>& points,
     }
     polygon = clipped;
   }
-  mpq_class twice = 0;
-  for (std::size_t k = 0; k < polygon.size(); ++k)
-  {
-    const Q& a = polygon[k];
-    const Q& b = polygon[(k + 1) % polygon.size()];
-    twice += a.x * b.y - b.x * a.y;
-  }
-  return twice / 2;
+  return tessera_test::ExactArea(polygon);
 }
 
 bool Near(const Point2& a, const Point2& b, double tolerance)
