@@ -1024,3 +1024,29 @@ TEST(Tiles, SliverTrianglesGiveAccurateTilesInBothEngines)
     }
   }
 }
+
+TEST(Tiles, PointsASubnormalDistanceApartGiveFiniteHalves)
+{
+  // Two points 4.94e-324 apart split the window ±1 along their bisector (x = 2.47e-324, so
+  // halves of area 2 each). The bisector's direction was of subnormal size: its crossing with a
+  // window side had an infinite parameter, and t * 0 made a NaN vertex. Both engines, and the
+  // exact areas. (In a window of ±1e-9 the exact window predicates underflow: out of their
+  // documented range, window_predicates.h, and not tested here.)
+  const Window window = Window::Rectangle(-1, 1, -1, 1);
+  const std::vector<Point2> points{ { 0.0, 0.0 }, { 4.94e-324, 0.0 } };
+  const TileSet green = ComputeTiles(DirichletTessellation(window, points));
+  const TileSet sweep = ComputeThiessenSweep(window, points).Tiles;
+  for (const TileSet* tiles : { &green, &sweep })
+  {
+    ASSERT_EQ(tiles->PointIds.size(), 2u);
+    for (std::size_t k = 0; k < 2; ++k)
+    {
+      EXPECT_NEAR(tiles->Areas[k], ExactTileArea(window, points, std::size_t(k)).get_d(), 1e-15)
+        << k;
+      for (std::int64_t v = tiles->Offsets[k]; v < tiles->Offsets[k + 1]; ++v)
+      {
+        EXPECT_TRUE(std::isfinite(tiles->Vertices[v].x) && std::isfinite(tiles->Vertices[v].y));
+      }
+    }
+  }
+}
