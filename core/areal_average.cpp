@@ -170,23 +170,19 @@ struct ThiessenArealAverage::State
     return total;
   }
 
-  /// Ellipsoidal area (m^2) of tile & catchment.
+  /// Ellipsoidal area (m^2) of tile & catchment. (A tile between gauges some nanometres apart,
+  /// closer than CoLocatedMetres allows by default, can come out folded: it counts as empty.)
   double ClippedArea(const Point2* tile, std::size_t count, std::size_t tileId)
   {
-    // A tile thinner than the rounding of its vertices (between gauges some nanometres apart,
-    // closer than CoLocatedMetres allows by default) can come out folded or collapsed: its true
-    // area is below the rounding's, so it counts as empty.
-    if (count < 3 || Catchment::TileSignedArea(tile, count) <= 0.0)
-    {
-      return 0.0;
-    }
     if (this->Method == AreaMethod::EqualAreaPlane)
     {
-      return this->Region->ClipInto(tile, count, tileId, this->Work, nullptr);
+      return this->Region->ClipInto(
+        tile, count, tileId, this->Work, nullptr, Catchment::FoldedTile::IsEmpty);
     }
     this->Scratch.RingOffsets.assign(1, 0);
     this->Scratch.Vertices.clear();
-    const double planar = this->Region->ClipInto(tile, count, tileId, this->Work, &this->Scratch);
+    const double planar = this->Region->ClipInto(
+      tile, count, tileId, this->Work, &this->Scratch, Catchment::FoldedTile::IsEmpty);
     if (planar <= 0.0)
     {
       return 0.0;
@@ -725,7 +721,12 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
     const Point2* tile = &tiles.Vertices[tiles.Offsets[k]];
     const std::size_t count = static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]);
     ClippedRings rings;
-    if (s.Region->ClipInto(tile, count, static_cast<std::size_t>(g), s.Work, &rings) <= 0.0)
+    if (s.Region->ClipInto(tile,
+          count,
+          static_cast<std::size_t>(g),
+          s.Work,
+          &rings,
+          Catchment::FoldedTile::IsEmpty) <= 0.0)
     {
       continue;
     }

@@ -631,20 +631,24 @@ ClippedTiles Catchment::ClipAll(const std::vector<std::size_t>& tileOffsets,
   return clipped;
 }
 
-double Catchment::TileSignedArea(const Point2* tile, std::size_t count)
-{
-  return SignedArea(tile, count);
-}
-
 double Catchment::ClipInto(const Point2* tile,
   std::size_t count,
   std::size_t tileId,
   Workspace& work,
-  ClippedRings* rings) const
+  ClippedRings* rings,
+  FoldedTile folded) const
 {
+  if (count < 3 && folded == FoldedTile::IsEmpty)
+  {
+    return 0.0;
+  }
   CheckTile(tile, count, tileId);
   tile = StartAtLowestVertex(tile, count, work.Rotated);
-  const double tileArea = TileSignedArea(tile, count);
+  const double tileArea = SignedArea(tile, count);
+  if (tileArea < 0.0 && folded == FoldedTile::IsEmpty)
+  {
+    return 0.0;
+  }
   if (tileArea < 0.0)
   {
     throw InputError("tile " + std::to_string(tileId) + " has clockwise vertices (signed area " +

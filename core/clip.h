@@ -127,17 +127,22 @@ public:
     std::vector<Point2> ClipB;
     std::vector<Point2> Rotated;
   };
+  /// What a tile with fewer than 3 vertices or clockwise vertices is.
+  enum class FoldedTile
+  {
+    IsAnError, ///< an InputError naming it (tiles given by a user)
+    IsEmpty,   ///< area 0: tiles derived from a tessellation, where a tile thinner than the
+               ///< rounding of its vertices (between points nanometres apart) can come out folded
+               ///< or collapsed, its true area being below the rounding's
+  };
   /// The same as ClipArea / Clip for tile vertices tile[0] .. tile[count-1]; rings are appended to
   /// *rings when it is not null. tileId only names the tile in error messages.
   double ClipInto(const Point2* tile,
     std::size_t count,
     std::size_t tileId,
     Workspace& work,
-    ClippedRings* rings) const;
-
-  /// The signed area ClipInto finds for a tile (it rejects tiles where it is negative): the
-  /// shoelace sum of exact products, compensated.
-  static double TileSignedArea(const Point2* tile, std::size_t count);
+    ClippedRings* rings,
+    FoldedTile folded = FoldedTile::IsAnError) const;
 
 private:
   void BuildGrid();

@@ -550,6 +550,28 @@ TEST(Clip, SliverTilesWhoseBoxIsAnUlpWideMatchExactClipping)
   }
 }
 
+TEST(Clip, FoldedTilesAreErrorsOrEmptyAsAsked)
+{
+  // A tile given by a user with clockwise vertices, or fewer than 3, is an error naming it; a
+  // tessellation's tile that came out folded or collapsed (thinner than its vertices' rounding)
+  // counts as empty when the caller says so (FoldedTile::IsEmpty), and a sound tile is clipped
+  // the same either way.
+  Rings rings;
+  rings.Add({ { 0, 0 }, { 4, 0 }, { 4, 4 }, { 0, 4 } });
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  Catchment::Workspace work;
+  const std::vector<Point2> clockwise{ { 1, 1 }, { 1, 2 }, { 2, 2 }, { 2, 1 } };
+  const std::vector<Point2> two{ { 1, 1 }, { 2, 2 } };
+  const std::vector<Point2> sound{ { 3, 3 }, { 5, 3 }, { 5, 5 }, { 3, 5 } };
+  EXPECT_THROW(catchment.ClipInto(clockwise.data(), 4, 7, work, nullptr), InputError);
+  EXPECT_THROW(catchment.ClipInto(two.data(), 2, 7, work, nullptr), InputError);
+  const auto empty = Catchment::FoldedTile::IsEmpty;
+  EXPECT_EQ(catchment.ClipInto(clockwise.data(), 4, 7, work, nullptr, empty), 0.0);
+  EXPECT_EQ(catchment.ClipInto(two.data(), 2, 7, work, nullptr, empty), 0.0);
+  EXPECT_EQ(catchment.ClipInto(sound.data(), 4, 7, work, nullptr, empty), 1.0);
+  EXPECT_EQ(catchment.ClipInto(sound.data(), 4, 7, work, nullptr), 1.0);
+}
+
 // ---- Tilings -----------------------------------------------------------------------------------
 
 // A jittered grid over (and beyond) the catchment's box, each quad split into two triangles.
