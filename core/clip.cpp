@@ -81,22 +81,19 @@ const Point2* StartAtLowestVertex(const Point2* tile,
 // The local rings' winding is counted at the box's centre, which must lie strictly inside the
 // box: a sliver tile's box can be an ulp or two wide, and its computed centre then falls on a
 // side. Such a box is widened by ulps on that axis (it still holds the tile).
+void WidenUntilMiddleIsInside(double& low, double& high)
+{
+  while (!(low < low + 0.5 * (high - low) && low + 0.5 * (high - low) < high))
+  {
+    low = std::nextafter(low, -std::numeric_limits<double>::infinity());
+    high = std::nextafter(high, std::numeric_limits<double>::infinity());
+  }
+}
+
 void WidenUntilCentreIsInside(Box2& box)
 {
-  const double down = -std::numeric_limits<double>::infinity();
-  const double up = std::numeric_limits<double>::infinity();
-  while (!(box.XMin < box.XMin + 0.5 * (box.XMax - box.XMin) &&
-    box.XMin + 0.5 * (box.XMax - box.XMin) < box.XMax))
-  {
-    box.XMin = std::nextafter(box.XMin, down);
-    box.XMax = std::nextafter(box.XMax, up);
-  }
-  while (!(box.YMin < box.YMin + 0.5 * (box.YMax - box.YMin) &&
-    box.YMin + 0.5 * (box.YMax - box.YMin) < box.YMax))
-  {
-    box.YMin = std::nextafter(box.YMin, down);
-    box.YMax = std::nextafter(box.YMax, up);
-  }
+  WidenUntilMiddleIsInside(box.XMin, box.XMax);
+  WidenUntilMiddleIsInside(box.YMin, box.YMax);
 }
 
 // Winding-number contribution of segment a->b at p, by the signed crossings of the ray from p

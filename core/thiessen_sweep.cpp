@@ -121,13 +121,6 @@ bool CircleBox(double ax,
     std::isfinite(box.YHi);
 }
 
-// Circumcentre from the points in ascending id order (circumcentre.h, as tiles.cpp computes it,
-// so that interior vertices get the same bits from both engines).
-Point2 Circumcentre(const Point2& a, const Point2& b, const Point2& c)
-{
-  return CircumcentreOf(a, b, c);
-}
-
 class Sweep
 {
 public:
@@ -1111,7 +1104,9 @@ Point2 Sweep::FaceCentre(const std::vector<std::int32_t>& circle) const
       0.5 * (p.x + q.x) + (q.y - p.y) * ((ySide - p.y) + (ySide - q.y)) / (2.0 * (p.x - q.x));
     return { std::min(std::max(x, this->XMin), this->XMax), ySide };
   }
-  return Circumcentre(p,
+  // From the points in ascending id order, as tiles.cpp computes it (circumcentre.h), so that
+  // interior vertices get the same bits from both engines.
+  return CircumcentreOf(p,
     Point2{ this->Xs[smallest[1]], this->Ys[smallest[1]] },
     Point2{ this->Xs[smallest[2]], this->Ys[smallest[2]] });
 }

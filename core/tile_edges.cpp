@@ -199,15 +199,15 @@ bool ClipCanonical(const Tess& tess,
       corners[std::size_t(cornerIndex(line, exit))], line, -2 - cornerIndex(line, exit)
     };
   };
-  const double mx = 0.5 * (pa.x + pb.x), my = 0.5 * (pa.y + pb.y);
-  // The direction scaled by a power of two to a largest component in [1, 2): exact, and the
-  // crossing's bits are unchanged (scaling by 2^k commutes with rounding), but a direction of
-  // subnormal size (points a subnormal distance apart) no longer sends t to infinity, where
-  // t * 0 made a NaN vertex.
-  const int scale = -std::ilogb(std::max(std::fabs(pb.y - pa.y), std::fabs(pb.x - pa.x)));
-  const double dx = std::ldexp(-(pb.y - pa.y), scale), dy = std::ldexp(pb.x - pa.x, scale);
+  // Where the bisector m + t * d meets the line of h (only for edges that end on the window).
+  // d is scaled by a power of two to a largest component in [1, 2): exact, so the crossing's bits
+  // are unchanged (scaling by 2^k commutes with rounding), but a direction of subnormal size
+  // (points a subnormal distance apart) no longer sends t to infinity, where t * 0 made a NaN.
   const auto crossing = [&](const HalfPlane& h)
   {
+    const double mx = 0.5 * (pa.x + pb.x), my = 0.5 * (pa.y + pb.y);
+    const int scale = -std::ilogb(std::max(std::fabs(pb.y - pa.y), std::fabs(pb.x - pa.x)));
+    const double dx = std::ldexp(-(pb.y - pa.y), scale), dy = std::ldexp(pb.x - pa.x, scale);
     const double t = -(h.a * mx + h.b * my + h.c) / (h.a * dx + h.b * dy);
     return Point2{ mx + t * dx, my + t * dy };
   };
