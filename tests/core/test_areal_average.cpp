@@ -366,7 +366,7 @@ TEST(ArealAverage, UpdatesSkipTilesClearOfTheCatchmentYetEqualRebuildsWhenHolesO
   EXPECT_GE(farGainers, 8); // 17 with this seed
 }
 
-TEST(ArealAverage, AnUpdateThatPassesThroughCollinearGaugesDerivesEveryTile)
+TEST(ArealAverage, AnUpdateThatPassesThroughCollinearGaugesEqualsRebuilds)
 {
   // Step 1: gauges 0-2 on one parallel and gauge 3 off it. Step 2 removes gauge 3 (the rest are
   // then collinear for a moment: the engine holds no triangles) and inserts gauges 4 and 5, few
