@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -288,6 +289,71 @@ void CheckTile(const Point2* tile, std::size_t count, std::size_t tileId)
       throw InputError("tile " + std::to_string(tileId) + " vertex " + std::to_string(i) + " has " +
         (nan ? "a NaN coordinate" : "an infinite coordinate"));
     }
+  }
+}
+
+// Whether the ring turns left at every vertex (by the fast orientation test) and winds once: its
+// edges' x and y directions each change sign at most twice around it. Such a ring is convex.
+bool TurnsLeftOnce(const Point2* ring, std::size_t count)
+{
+  int xChanges = 0, yChanges = 0;
+  double lastDx = ring[0].x - ring[count - 1].x, lastDy = ring[0].y - ring[count - 1].y;
+  const Point2* a = &ring[count - 1];
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const Point2& b = ring[i];
+    const Point2& c = ring[i + 1 == count ? 0 : i + 1];
+    if (orient2d_fast(*a, b, c) <= 0)
+    {
+      return false;
+    }
+    // Edge b-c against the last edge of non-zero x (y) extent before it.
+    const double dx = c.x - b.x, dy = c.y - b.y;
+    xChanges += dx != 0.0 && lastDx != 0.0 && (dx > 0) != (lastDx > 0);
+    yChanges += dy != 0.0 && lastDy != 0.0 && (dy > 0) != (lastDy > 0);
+    lastDx = dx != 0.0 ? dx : lastDx;
+    lastDy = dy != 0.0 ? dy : lastDy;
+    a = &b;
+  }
+  return xChanges <= 2 && yChanges <= 2;
+}
+
+// A tile given by a user must be convex: the clipping takes its convex hull (rounded tessellation
+// tiles have reflex turns an ulp deep, and vertices an ulp apart), so the clipped area of a
+// genuinely non-convex polygon would be its hull's. A hull larger than the tile by more than a
+// millionth of its area, beyond what rounding the coordinates could make, is such a polygon.
+void CheckConvex(const Point2* tile,
+  std::size_t count,
+  std::size_t tileId,
+  double tileArea,
+  std::vector<Point2>& points,
+  std::vector<Point2>& hull)
+{
+  if (TurnsLeftOnce(tile, count))
+  {
+    return; // the common case, without a hull
+  }
+  const Box2 box = BoundsOf(tile, count);
+  const double magnitude = std::max(std::max(std::abs(box.XMin), std::abs(box.XMax)),
+    std::max(std::abs(box.YMin), std::abs(box.YMax)));
+  const Point2 origin = tile[0];
+  points.resize(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    points[i] = { tile[i].x - origin.x, tile[i].y - origin.y };
+  }
+  ConvexHull(points, hull);
+  const double hullArea = SignedArea(points.data(), points.size());
+  const double perimeter = 2.0 * ((box.XMax - box.XMin) + (box.YMax - box.YMin));
+  const double rounding = 64.0 * std::numeric_limits<double>::epsilon() * magnitude * perimeter;
+  if (hullArea - tileArea > 1e-6 * hullArea + rounding)
+  {
+    std::ostringstream message;
+    message.precision(17);
+    message << "tile " << tileId << " is not convex: its area " << tileArea
+            << " is less than its convex hull's " << hullArea
+            << "; tiles must be convex (split it into convex parts)";
+    throw InputError(message.str());
   }
 }
 
@@ -650,6 +716,10 @@ double Catchment::ClipInto(const Point2* tile,
   {
     throw InputError("tile " + std::to_string(tileId) + " has clockwise vertices (signed area " +
       std::to_string(tileArea) + "); tiles must be convex and anticlockwise");
+  }
+  if (folded == FoldedTile::IsAnError)
+  {
+    CheckConvex(tile, count, tileId, tileArea, work.Tile, work.ClipB);
   }
   Box2 box = BoundsOf(tile, count);
   if (tileArea == 0.0 || box.XMax < this->Box.XMin || box.XMin > this->Box.XMax ||

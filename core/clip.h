@@ -105,8 +105,9 @@ public:
   /// Area of tile & catchment. The tile is a convex polygon with anticlockwise vertices; it is
   /// clipped as the convex hull of its vertices, so repeated and collinear vertices, and the small
   /// non-convexity of rounding (vertices an ulp apart, folds), change the area by ulps. Throws
-  /// InputError for fewer than 3 vertices, a NaN or infinite vertex, or clockwise vertices; a tile
-  /// of zero area gives 0.
+  /// InputError for fewer than 3 vertices, a NaN or infinite vertex, clockwise vertices, or a tile
+  /// that is not convex (its convex hull larger than it by more than a millionth, beyond the
+  /// rounding of its coordinates); a tile of zero area gives 0.
   double ClipArea(const std::vector<Point2>& tile) const;
   /// Area and rings of tile & catchment (see ClippedTile).
   ClippedTile Clip(const std::vector<Point2>& tile) const;
@@ -130,7 +131,7 @@ public:
   /// What a tile with fewer than 3 vertices or clockwise vertices is.
   enum class FoldedTile
   {
-    IsAnError, ///< an InputError naming it (tiles given by a user)
+    IsAnError, ///< an InputError naming it (tiles given by a user; a non-convex tile is one too)
     IsEmpty,   ///< area 0: tiles derived from a tessellation, where a tile thinner than the
                ///< rounding of its vertices (between points nanometres apart) can come out folded
                ///< or collapsed, its true area being below the rounding's

@@ -915,6 +915,63 @@ TEST(Clip, RejectsBadTilesNamingThem)
   EXPECT_EQ(catchment.ClipArea({ { 1, 1 }, { 2, 2 }, { 3, 3 } }), 0.0);
 }
 
+TEST(Clip, NonConvexTilesAreErrorsAndRoundingFoldsAreNot)
+{
+  // A genuinely non-convex tile would be clipped as its convex hull: it is an error naming it,
+  // whether it lies inside the catchment, straddles it or misses it. A tile whose reflex turn is
+  // only as deep as the rounding of its coordinates (as in a tessellation far from the origin) is
+  // clipped.
+  Rings square;
+  square.Add(Rectangle(0, 0, 4, 4));
+  const Catchment catchment(square.Offsets, square.Vertices);
+  const auto ell = [](double x, double y)
+  {
+    return std::vector<Point2>{
+      { x, y }, { x + 2, y }, { x + 2, y + 1 }, { x + 1, y + 1 }, { x + 1, y + 2 }, { x, y + 2 }
+    };
+  };
+  for (const Point2& at : { Point2{ 1, 1 }, Point2{ 3, 3 }, Point2{ 10, 10 } })
+  {
+    const std::string error = ErrorOf([&] { catchment.ClipArea(ell(at.x, at.y)); });
+    EXPECT_NE(error.find("tile 0 is not convex: its area 3 is less than its convex hull's 3.5"),
+      std::string::npos)
+      << error;
+  }
+  std::vector<Point2> vertices = Rectangle(1, 1, 2, 2);
+  const std::vector<Point2> second = ell(2, 2);
+  vertices.insert(vertices.end(), second.begin(), second.end());
+  EXPECT_NE(ErrorOf(
+              [&] {
+                catchment.ClipAll({ 0, 4, 10 }, vertices);
+              })
+              .find("tile 1 is not convex"),
+    std::string::npos);
+  // Tessellation tiles (FoldedTile::IsEmpty) are not checked: they are convex up to rounding.
+  Catchment::Workspace work;
+  const std::vector<Point2> inside = ell(1, 1);
+  EXPECT_EQ(catchment.ClipInto(
+              inside.data(), inside.size(), 0, work, nullptr, Catchment::FoldedTile::IsEmpty),
+    3.0);
+
+  // A unit square at 2^40 with a vertex on its bottom edge raised by one ulp (2^-12): a reflex
+  // turn 1.2e-4 of its area deep, from rounding alone. A notch half the side deep is not.
+  const double big = std::ldexp(1.0, 40), ulp = std::ldexp(1.0, -12);
+  Rings far;
+  far.Add(Rectangle(big - 8, big - 8, big + 0.5, big + 8));
+  const Catchment farCatchment(far.Offsets, far.Vertices);
+  const std::vector<Point2> folded{
+    { big, big }, { big + 0.5, big + ulp }, { big + 1, big }, { big + 1, big + 1 }, { big, big + 1 }
+  };
+  const double area = farCatchment.ClipArea(folded);
+  EXPECT_GE(area, 0.5 - ulp);
+  EXPECT_LE(area, 0.5);
+  const std::vector<Point2> notched{
+    { big, big }, { big + 0.5, big + 0.5 }, { big + 1, big }, { big + 1, big + 1 }, { big, big + 1 }
+  };
+  EXPECT_NE(ErrorOf([&] { farCatchment.ClipArea(notched); }).find("tile 0 is not convex"),
+    std::string::npos);
+}
+
 TEST(Clip, SegmentsIntersectIsExact)
 {
   // Near-degenerate: c is on segment ab only in exact arithmetic.

@@ -245,9 +245,28 @@ def test_window_clip_of_projected_tiles_sums_to_the_catchment():
     assert_close(sum(clipped.values()), area, 1e-12 * area, "clipped tiles sum to the catchment")
 
 
+def test_window_clip_names_a_non_convex_tile():
+    square = [(0, 0), (4, 0), (4, 4), (0, 4)]
+    ell = [(3, 3), (5, 3), (5, 4), (4, 4), (4, 5), (3, 5)]  # straddles the window's corner
+    clip = vtkWindowClip()
+    messages = messages_of(clip)
+    clip.SetInputData(polygon([[(1, 1), (2, 1), (2, 2), (1, 2)], ell]))
+    clip.SetWindowData(polygon([square]))
+    clip.Update()
+    assert_that(len(messages) == 1 and "tile 1 is not convex" in messages[0],
+                f"the L-shaped tile named: {messages}")
+    assert_that(clip.GetOutput().GetNumberOfCells() == 0, "no output after the error")
+    clip.SetInputData(polygon([[(1, 1), (2, 1), (2, 2), (1, 2)], [(3, 3), (5, 3), (5, 5), (3, 5)]]))
+    clip.Update()
+    cd = clip.GetOutput().GetCellData()
+    areas = [cd.GetArray("ClippedArea").GetValue(c) for c in range(clip.GetOutput().GetNumberOfCells())]
+    assert_that(len(messages) == 1 and areas == [1.0, 1.0], f"convex tiles clip: {areas}")
+
+
 if __name__ == "__main__":
     run([test_four_symmetric_gauges_share_a_square,
          test_colorado_months_match_a_brute_force_raster,
          test_missing_steps_and_unused_input_are_reported,
          test_bad_gauge_and_self_intersecting_catchment_are_named,
-         test_window_clip_of_projected_tiles_sums_to_the_catchment])
+         test_window_clip_of_projected_tiles_sums_to_the_catchment,
+         test_window_clip_names_a_non_convex_tile])
