@@ -39,17 +39,39 @@ struct CompensatedSum
   double Value() const { return this->Sum + this->Error; }
 };
 
-// Shoelace over the ring's own coordinates (no shift, which would round them): the products are
-// exact through fma, so only the final sum is rounded.
+// Whether a - b is exact: its rounding error (Knuth's TwoSum) is zero.
+bool DifferenceIsExact(double a, double b)
+{
+  const double difference = a - b;
+  const double virtualA = difference + b;
+  const double virtualB = virtualA - difference;
+  return (a - virtualA) + (virtualB - b) == 0.0;
+}
+
+// Shoelace with exact products (fma) and a compensated sum, which errs by about eps of the area
+// plus eps^2 of the terms' magnitudes. Far from the origin those terms dwarf the area (a unit tile
+// at 2^40 came out 3e-8 off), so the ring is taken relative to its first vertex when every such
+// shift is exact, as it is for a ring small beside its distance from the origin; otherwise (a ring
+// about the origin, where the terms are small anyway) over its own coordinates, which a shift
+// would round.
 double SignedArea(const Point2* ring, std::size_t count)
 {
+  Point2 origin = ring[0];
+  for (std::size_t i = 1; i < count; ++i)
+  {
+    if (!DifferenceIsExact(ring[i].x, origin.x) || !DifferenceIsExact(ring[i].y, origin.y))
+    {
+      origin = Point2{ 0.0, 0.0 };
+      break;
+    }
+  }
   CompensatedSum twice;
   for (std::size_t i = 0; i < count; ++i)
   {
     const Point2& a = ring[i];
     const Point2& b = ring[i + 1 == count ? 0 : i + 1];
-    twice.AddProduct(a.x, b.y);
-    twice.AddProduct(-b.x, a.y);
+    twice.AddProduct(a.x - origin.x, b.y - origin.y);
+    twice.AddProduct(origin.x - b.x, a.y - origin.y);
   }
   return 0.5 * twice.Value();
 }
