@@ -17,7 +17,9 @@
 #include "polygon_area.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <exception>
+#include <vector>
 
 vtkStandardNewMacro(vtkWindowClip);
 
@@ -65,7 +67,8 @@ int vtkWindowClip::RequestData(vtkInformation*,
     tessera::Catchment::Workspace work;
     std::vector<tessera::Point2> tile;
     vtkNew<vtkIdList> ids;
-    tessera::ClippedRings rings; // reused: ClipInto appends to it
+    tessera::ClippedRings rings;       // reused: ClipInto appends to it
+    std::vector<std::int32_t> skipped; // cells that are not polygons: reported, not clipped
     const vtkIdType cellCount = tiles->GetNumberOfCells();
     for (vtkIdType c = 0; c < cellCount; ++c)
     {
@@ -76,6 +79,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
       const int type = tiles->GetCellType(c);
       if (type != VTK_POLYGON && type != VTK_TRIANGLE && type != VTK_QUAD)
       {
+        skipped.push_back(static_cast<std::int32_t>(c));
         continue;
       }
       tiles->GetCellPoints(c, ids);
@@ -124,6 +128,15 @@ int vtkWindowClip::RequestData(vtkInformation*,
     outCD->AddArray(clippedAreas);
     outCD->AddArray(fractions);
     outCD->AddArray(holes);
+    if (!skipped.empty())
+    {
+      tessera_vtk::AddIdFieldArray(output, "SkippedCellIds", skipped);
+      vtkWarningMacro(<< skipped.size()
+                      << " cell(s) of input 0 are not polygons, triangles or quads "
+                      << "(the first is cell " << skipped.front()
+                      << ") and were not clipped; their ids are in the field data array "
+                         "SkippedCellIds.");
+    }
     return 1;
   }
   catch (const std::exception& e)

@@ -261,6 +261,31 @@ def test_window_clip_names_a_non_convex_tile():
     cd = clip.GetOutput().GetCellData()
     areas = [cd.GetArray("ClippedArea").GetValue(c) for c in range(clip.GetOutput().GetNumberOfCells())]
     assert_that(len(messages) == 1 and areas == [1.0, 1.0], f"convex tiles clip: {areas}")
+    skipped = clip.GetOutput().GetFieldData().GetArray("SkippedCellIds")
+    assert_that(skipped is None, "no cell skipped")
+
+
+def test_window_clip_reports_cells_that_are_not_polygons():
+    tiles = polygon([[(1, 1), (2, 1), (2, 2), (1, 2)]])
+    lines = vtkCellArray()
+    for a, b in [(0, 1), (1, 2)]:
+        lines.InsertNextCell(2)
+        lines.InsertCellPoint(a)
+        lines.InsertCellPoint(b)
+    tiles.SetLines(lines)  # vtkPolyData numbers lines before polygons: cells 0 and 1
+    clip = vtkWindowClip()
+    messages = messages_of(clip, "WarningEvent")
+    clip.SetInputData(tiles)
+    clip.SetWindowData(polygon([[(0, 0), (4, 0), (4, 4), (0, 4)]]))
+    clip.Update()
+    out = clip.GetOutput()
+    skipped = out.GetFieldData().GetArray("SkippedCellIds")
+    listed = sorted(skipped.GetValue(k) for k in range(skipped.GetNumberOfTuples()))
+    line_ids = sorted(c for c in range(tiles.GetNumberOfCells()) if tiles.GetCellType(c) == 3)
+    assert_that(listed == line_ids and len(listed) == 2, f"the lines listed: {listed} vs {line_ids}")
+    assert_that(len(messages) == 1 and "2 cell(s) of input 0 are not polygons" in messages[0],
+                f"a warning: {messages}")
+    assert_that(out.GetNumberOfCells() == 1, "the square clipped")
 
 
 if __name__ == "__main__":
@@ -269,4 +294,5 @@ if __name__ == "__main__":
          test_missing_steps_and_unused_input_are_reported,
          test_bad_gauge_and_self_intersecting_catchment_are_named,
          test_window_clip_of_projected_tiles_sums_to_the_catchment,
-         test_window_clip_names_a_non_convex_tile])
+         test_window_clip_names_a_non_convex_tile,
+         test_window_clip_reports_cells_that_are_not_polygons])
