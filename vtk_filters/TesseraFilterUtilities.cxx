@@ -150,22 +150,28 @@ bool IsClosedLine(vtkPolyData* poly, vtkIdList* ids)
   return ids->GetId(0) == ids->GetId(n - 1) || (first[0] == last[0] && first[1] == last[1]);
 }
 
-void AppendPolygonRings(vtkPolyData* poly, Rings& rings)
+void AppendPolygonRings(vtkPolyData* poly, const std::string& block, Rings& rings)
 {
   vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c)
   {
     const int type = poly->GetCellType(c);
     const bool isPolygon = type == VTK_POLYGON || type == VTK_TRIANGLE || type == VTK_QUAD;
-    if (!isPolygon && type != VTK_POLY_LINE)
+    bool isRing = isPolygon;
+    if (type == VTK_POLY_LINE)
     {
+      poly->GetCellPoints(c, ids);
+      isRing = IsClosedLine(poly, ids);
+    }
+    if (!isRing)
+    {
+      if (rings.SkippedCells++ == 0)
+      {
+        rings.FirstSkipped = block + "cell " + std::to_string(c);
+      }
       continue;
     }
     poly->GetCellPoints(c, ids);
-    if (!isPolygon && !IsClosedLine(poly, ids))
-    {
-      continue;
-    }
     for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
     {
       double p[3];
@@ -182,7 +188,7 @@ Rings ReadPolygonRings(vtkDataObject* data)
   Rings rings;
   if (auto* poly = vtkPolyData::SafeDownCast(data))
   {
-    AppendPolygonRings(poly, rings);
+    AppendPolygonRings(poly, std::string(), rings);
   }
   else if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
   {
@@ -191,7 +197,8 @@ Rings ReadPolygonRings(vtkDataObject* data)
     {
       if (auto* block = vtkPolyData::SafeDownCast(iter->GetCurrentDataObject()))
       {
-        AppendPolygonRings(block, rings);
+        AppendPolygonRings(
+          block, "block " + std::to_string(iter->GetCurrentFlatIndex()) + " ", rings);
       }
     }
   }
@@ -201,6 +208,17 @@ Rings ReadPolygonRings(vtkDataObject* data)
       (data ? data->GetClassName() : "nothing") + ") holds no polygon");
   }
   return rings;
+}
+
+std::string SkippedCellsWarning(const Rings& rings, const char* what)
+{
+  if (rings.SkippedCells == 0)
+  {
+    return std::string();
+  }
+  return std::to_string(rings.SkippedCells) + " cell(s) of the " + what +
+    " are not polygons or closed polylines and were ignored (the first is " + rings.FirstSkipped +
+    ").";
 }
 
 double OrientAnticlockwise(std::vector<tessera::Point2>& polygon)

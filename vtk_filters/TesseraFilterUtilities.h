@@ -43,12 +43,21 @@ struct Rings
 {
   std::vector<std::size_t> Offsets{ 0 };
   std::vector<tessera::Point2> Vertices;
+  /// Cells that are not rings (vertices, lines, open polylines, strips): their number, and the
+  /// first of them ("cell 7", or "block 2 cell 7" in a composite data set).
+  std::size_t SkippedCells = 0;
+  std::string FirstSkipped;
 };
 
 /// Every polygon, triangle and quad cell, and every closed polyline (last point = first, as
 /// vtkGDALVectorReader gives polygon rings), of a vtkPolyData or of every vtkPolyData block of a
-/// composite data set, as one ring each (x, y used). Throws tessera::InputError when there is none.
+/// composite data set, as one ring each (x, y used); other cells are counted in SkippedCells.
+/// Throws tessera::InputError when there is no ring.
 Rings ReadPolygonRings(vtkDataObject* data);
+
+/// The warning for the cells of a window/catchment input that are not rings (what names the input),
+/// or empty when there are none.
+std::string SkippedCellsWarning(const Rings& rings, const char* what);
 
 /// Reverses a clockwise polygon; returns its (now non-negative) shoelace area.
 double OrientAnticlockwise(std::vector<tessera::Point2>& polygon);

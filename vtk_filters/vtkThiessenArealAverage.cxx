@@ -295,6 +295,11 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   in.Average.reset();
   const std::vector<tessera::Point2> lonlat = tessera_vtk::ReadPoints2D(gauges->GetPoints());
   const tessera_vtk::Rings rings = tessera_vtk::ReadPolygonRings(catchment);
+  const std::string skippedRings = tessera_vtk::SkippedCellsWarning(rings, "catchment (input 1)");
+  if (!skippedRings.empty())
+  {
+    vtkWarningMacro(<< skippedRings);
+  }
   tessera::ArealAverageSettings settings;
   if (!this->ProjectionRecord.empty())
   {

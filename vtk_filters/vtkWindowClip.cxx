@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <exception>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkWindowClip);
@@ -47,6 +48,11 @@ int vtkWindowClip::RequestData(vtkInformation*,
   try
   {
     const tessera_vtk::Rings window = tessera_vtk::ReadPolygonRings(windowData);
+    const std::string skippedRings = tessera_vtk::SkippedCellsWarning(window, "window (input 1)");
+    if (!skippedRings.empty())
+    {
+      vtkWarningMacro(<< skippedRings);
+    }
     const tessera::Catchment catchment(window.Offsets, window.Vertices);
 
     vtkNew<vtkPoints> points;

@@ -5,11 +5,12 @@
  * vtkWindowClip intersects every polygon of input 0 (convex tiles, such as the output of
  * vtkDirichletTessellation; a clockwise one is reversed first) with the region of input 1: the
  * polygons (and closed polylines, as vtkGDALVectorReader gives rings) of input 1 taken as rings
- * under the even-odd rule, so a ring inside another is a hole and a ring inside a hole an island.
- * Ring orientation and order do not matter. A catchment boundary that touches or crosses itself, or
- * two rings that touch, is an error naming them. So is a tile of input 0 that is not convex (beyond
- * the rounding of its vertices: its convex hull larger by more than a millionth of its area),
- * whose clipped area would otherwise be its hull's.
+ * under the even-odd rule, so a ring inside another is a hole and a ring inside a hole an island
+ * (other cells of input 1, such as open polylines, are ignored with a warning). Ring orientation
+ * and order do not matter. A catchment boundary that touches or crosses itself, or two rings that
+ * touch, is an error naming them. So is a tile of input 0 that is not convex (beyond the rounding
+ * of its vertices: its convex hull larger by more than a millionth of its area), whose clipped area
+ * would otherwise be its hull's.
  *
  * The output holds one polygon per ring of each clipped tile (a tile cut into two lobes gives two
  * polygons; a tile around a hole gives its outer ring and the hole's ring, flagged), with the

@@ -288,6 +288,37 @@ def test_window_clip_reports_cells_that_are_not_polygons():
     assert_that(out.GetNumberOfCells() == 1, "the square clipped")
 
 
+def with_open_polyline(data):
+    """The polygon data with an open polyline (cell 0: lines come before polygons) added."""
+    lines = vtkCellArray()
+    lines.InsertNextCell(3)
+    for k in range(3):
+        lines.InsertCellPoint(k)
+    data.SetLines(lines)
+    return data
+
+
+def test_window_cells_that_are_not_rings_are_reported():
+    square = [(0, 0), (1, 0), (1, 1), (0, 1)]
+    f = vtkThiessenArealAverage()
+    messages = messages_of(f, "WarningEvent")
+    f.SetGaugesData(gauges_polydata([(0.2, 0.2), (0.8, 0.8)], ["a", "b"], [1.0, 3.0]))
+    f.SetCatchmentData(with_open_polyline(polygon([square])))
+    f.Update(1)
+    # (about 2: the projected bisector of the two gauges is not quite the square's diagonal)
+    assert_close(summary_column(f, "ArealMean")[0], 2.0, 1e-3, "the square is the catchment")
+    assert_that(len(messages) == 1 and "1 cell(s) of the catchment (input 1) are not polygons"
+                in messages[0] and "cell 0" in messages[0], f"the polyline reported: {messages}")
+    clip = vtkWindowClip()
+    messages = messages_of(clip, "WarningEvent")
+    clip.SetInputData(polygon([[(0.25, 0.25), (0.75, 0.25), (0.75, 0.75), (0.25, 0.75)]]))
+    clip.SetWindowData(with_open_polyline(polygon([square])))
+    clip.Update()
+    assert_that(clip.GetOutput().GetNumberOfCells() == 1, "the tile clipped by the square")
+    assert_that(len(messages) == 1 and "of the window (input 1)" in messages[0],
+                f"the polyline reported: {messages}")
+
+
 if __name__ == "__main__":
     run([test_four_symmetric_gauges_share_a_square,
          test_colorado_months_match_a_brute_force_raster,
@@ -295,4 +326,5 @@ if __name__ == "__main__":
          test_bad_gauge_and_self_intersecting_catchment_are_named,
          test_window_clip_of_projected_tiles_sums_to_the_catchment,
          test_window_clip_names_a_non_convex_tile,
-         test_window_clip_reports_cells_that_are_not_polygons])
+         test_window_clip_reports_cells_that_are_not_polygons,
+         test_window_cells_that_are_not_rings_are_reported])
