@@ -17,6 +17,14 @@
 //     c                    \____________ a
 //
 // The test is one comparison that almost never holds, so typical triangles pay a few flops.
+//
+// Two things the doubles cannot fix: sides that are not exact differences (points near the
+// origin with very different exponents), amplified by a nearly collinear triple (a vertex 2.66
+// off along a sliver 20 long), and squared sides that underflow (points a subnormal distance
+// apart: a vertex 12.6 off, or NaN). When the area's condition (the size of its products over
+// their difference) exceeds 2^16, or the squares or the area leave the safe range, the offset is
+// recomputed from exact sides, scaled by a power of two, with exact numerators and denominator
+// (expansions) each rounded once (ExactCircumcentreOffset).
 
 #include "expansion_arithmetic.h"
 #include "geometry.h"
@@ -64,19 +72,101 @@ inline void SidesFrom(const Point2& o, const Point2& b, const Point2& c, Circumc
   t.c2 = t.cx * t.cx + t.cy * t.cy;
 }
 
+/// The value of an expansion, rounded (summed from its smallest component up).
+inline double EstimateOf(const double* e, int n)
+{
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i)
+  {
+    sum += e[i];
+  }
+  return sum;
+}
+
+/// u = circumcentre - o from exact arithmetic: the sides as exact differences, scaled by a power of
+/// two that takes their largest component to about 2^300 (so that products of three stay below
+/// 2^900, and a side a subnormal length long keeps its bits: only parts some 2^-650 of the largest
+/// underflow in products, too small to matter), the numerators (degree 3) and the denominator
+/// (degree 2) as exact expansions, each rounded once, and the quotient scaled back.
+inline void ExactCircumcentreOffset(const Point2& o,
+  const Point2& b,
+  const Point2& c,
+  double& ux,
+  double& uy)
+{
+  using namespace expansion;
+  double side[4][2];
+  int length[4];
+  length[0] = diff_expansion(b.x, o.x, side[0]);
+  length[1] = diff_expansion(b.y, o.y, side[1]);
+  length[2] = diff_expansion(c.x, o.x, side[2]);
+  length[3] = diff_expansion(c.y, o.y, side[3]);
+  double largest = 0.0;
+  for (int k = 0; k < 4; ++k)
+  {
+    for (int i = 0; i < length[k]; ++i)
+    {
+      largest = std::max(largest, std::fabs(side[k][i]));
+    }
+  }
+  const int scale = largest > 0.0 ? 300 - std::ilogb(largest) : 0;
+  for (int k = 0; k < 4; ++k)
+  {
+    for (int i = 0; i < length[k]; ++i)
+    {
+      side[k][i] = std::ldexp(side[k][i], scale);
+    }
+  }
+  const double *bx = side[0], *by = side[1], *cx = side[2], *cy = side[3];
+  const int nbx = length[0], nby = length[1], ncx = length[2], ncy = length[3];
+  // Squared sides (b2, c2) and twice the area (bx cy - by cx), exactly.
+  double xx[8], yy[8], b2[16], c2[16], p[8], q[8], area[16];
+  int nb2 = expansion_sum(
+    xx, expansion_product(bx, nbx, bx, nbx, xx), yy, expansion_product(by, nby, by, nby, yy), b2);
+  int nc2 = expansion_sum(
+    xx, expansion_product(cx, ncx, cx, ncx, xx), yy, expansion_product(cy, ncy, cy, ncy, yy), c2);
+  const int np = expansion_product(bx, nbx, cy, ncy, p);
+  const int nq = expansion_product(by, nby, cx, ncx, q);
+  negate(q, nq);
+  const int narea = expansion_sum(p, np, q, nq, area);
+  // ux = (cy b2 - by c2) / (2 area), uy = (bx c2 - cx b2) / (2 area).
+  double first[64], second[64], numerator[128];
+  int n1 = expansion_product(cy, ncy, b2, nb2, first);
+  int n2 = expansion_product(by, nby, c2, nc2, second);
+  negate(second, n2);
+  int n = expansion_sum(first, n1, second, n2, numerator);
+  const double denominator = 2.0 * EstimateOf(area, narea);
+  ux = std::ldexp(EstimateOf(numerator, n) / denominator, -scale);
+  n1 = expansion_product(bx, nbx, c2, nc2, first);
+  n2 = expansion_product(cx, ncx, b2, nb2, second);
+  negate(second, n2);
+  n = expansion_sum(first, n1, second, n2, numerator);
+  uy = std::ldexp(EstimateOf(numerator, n) / denominator, -scale);
+}
+
 /// a, b, c in the engines' canonical order (ascending ids); see the conditioning note above.
 inline CircumcentreTerms CircumcentreOffset(const Point2& a, const Point2& b, const Point2& c)
 {
   CircumcentreTerms t;
   SidesFrom(a, b, c, t);
   const double ex = c.x - b.x, ey = c.y - b.y;
-  if (ex * ex + ey * ey < 0x1p-20 * std::min(t.b2, t.c2))
+  const bool turned = ex * ex + ey * ey < 0x1p-20 * std::min(t.b2, t.c2);
+  if (turned)
   {
     SidesFrom(b, c, a, t); // a cyclic turn: the orientation is kept
   }
   t.d = 2.0 * TwiceSignedArea(t.bx, t.by, t.cx, t.cy);
   t.ux = (t.cy * t.b2 - t.by * t.c2) / t.d;
   t.uy = (t.bx * t.c2 - t.cx * t.b2) / t.d;
+  // Written so that NaN and infinities also take the exact path.
+  const double products = std::fabs(t.bx * t.cy) + std::fabs(t.by * t.cx);
+  const bool wellConditioned = 2.0 * products <= 0x1p16 * std::fabs(t.d) &&
+    std::min(t.b2, t.c2) >= 0x1p-900 && std::max(t.b2, t.c2) <= 0x1p900 &&
+    std::fabs(t.d) >= 0x1p-900;
+  if (!wellConditioned)
+  {
+    ExactCircumcentreOffset(t.Origin, turned ? c : b, turned ? a : c, t.ux, t.uy);
+  }
   return t;
 }
 
