@@ -89,6 +89,13 @@ int vtkWindowClip::RequestData(vtkInformation*,
         continue;
       }
       tiles->GetCellPoints(c, ids);
+      if (ids->GetNumberOfIds() < 3)
+      {
+        // A polygon collapsed to 1 or 2 points (a tessellation's tile between points some
+        // nanometres apart can be): nothing to clip.
+        skipped.push_back(static_cast<std::int32_t>(c));
+        continue;
+      }
       tile.resize(ids->GetNumberOfIds());
       for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
       {

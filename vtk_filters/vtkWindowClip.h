@@ -20,8 +20,9 @@
  * - `AreaFraction` (double): ClippedArea over the tile's own area;
  * - `Hole` (unsigned char): 1 for a ring that bounds a hole (clockwise), 0 otherwise.
  * Tiles entirely outside the window give no polygon. Cells of input 0 that are not polygons,
- * triangles or quads (lines, vertices, strips) are not clipped: a warning counts them and the
- * output's field data array `SkippedCellIds` (vtkIdType) lists them. Areas use exact orientation
+ * triangles or quads (lines, vertices, strips), and polygons of fewer than 3 points, are not
+ * clipped: a warning counts them and the output's field data array `SkippedCellIds` (vtkIdType)
+ * lists them. Areas use exact orientation
  * tests and compensated sums, so the clipped areas of a tiling sum to the window's area to
  * round-off.
  * Only x and y are used.
