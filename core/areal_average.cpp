@@ -215,6 +215,21 @@ struct ThiessenArealAverage::State
     SortAlongHilbertCurve(this->GaugesXY.data(), BoundsOf(corners.data(), corners.size()), gauges);
   }
 
+  /// The same order for a few gauges, from their ranks along the curve (updates only): sorting
+  /// integers instead of computing Hilbert keys took a third of the time of listing changes.
+  void SortAlongCurve(std::vector<std::int32_t>& gauges) const
+  {
+    for (std::int32_t& g : gauges)
+    {
+      g = this->CurveRank[g];
+    }
+    std::sort(gauges.begin(), gauges.end());
+    for (std::int32_t& rank : gauges)
+    {
+      rank = this->CurveOrder[rank];
+    }
+  }
+
   /// The gauges that stopped reporting and those that started, each list in Hilbert order.
   void ListChanges(const std::vector<char>& wanted,
     std::vector<std::int32_t>& removed,
@@ -231,8 +246,8 @@ struct ThiessenArealAverage::State
         (present ? removed : inserted).push_back(static_cast<std::int32_t>(g));
       }
     }
-    this->SpatialSort(removed);
-    this->SpatialSort(inserted);
+    this->SortAlongCurve(removed);
+    this->SortAlongCurve(inserted);
   }
 
   std::vector<std::int32_t> EngineIds(const std::vector<std::int32_t>& gauges) const
@@ -419,7 +434,7 @@ struct ThiessenArealAverage::State
       }
     }
     // Neighbouring tiles one after the other: their faces share cache lines.
-    this->SpatialSort(changed);
+    this->SortAlongCurve(changed);
     const TileSet tiles = ComputeTilesOf(*this->Tessellation, this->EngineIds(changed));
     for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
     {
