@@ -1,0 +1,106 @@
+// The exact (expansion) parts of circumcentre.h: they run only for ill-conditioned triangles.
+// Out of line so that the expansion arithmetic is compiled here, with contraction off, as
+// expansion_arithmetic.h requires of every includer.
+#if defined(__clang__)
+#pragma STDC FP_CONTRACT OFF
+#elif defined(__GNUC__)
+#pragma GCC optimize("fp-contract=off")
+#endif
+
+#include "circumcentre.h"
+
+#include "expansion_arithmetic.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tessera
+{
+
+namespace
+{
+
+/// The value of an expansion, rounded (summed from its smallest component up).
+double EstimateOf(const double* e, int n)
+{
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i)
+  {
+    sum += e[i];
+  }
+  return sum;
+}
+
+} // namespace
+
+double ExactTwiceSignedArea(double bx, double by, double cx, double cy)
+{
+  double pHigh, pLow, qHigh, qLow;
+  expansion::two_product(bx, cy, pHigh, pLow);
+  expansion::two_product(by, cx, qHigh, qLow);
+  return (pHigh - qHigh) + (pLow - qLow); // pHigh - qHigh is exact here (Sterbenz)
+}
+
+/// u = circumcentre - o from exact arithmetic: the sides as exact differences, scaled by a power of
+/// two that takes their largest component to about 2^300 (so that products of three stay below
+/// 2^900, and a side a subnormal length long keeps its bits: only parts some 2^-650 of the largest
+/// underflow in products, too small to matter), the numerators (degree 3) and the denominator
+/// (degree 2) as exact expansions, each rounded (summing an expansion's components errs by a few
+/// ulps), and the quotient scaled back.
+void ExactCircumcentreOffset(const Point2& o,
+  const Point2& b,
+  const Point2& c,
+  double& ux,
+  double& uy)
+{
+  using namespace expansion;
+  double side[4][2];
+  int length[4];
+  length[0] = diff_expansion(b.x, o.x, side[0]);
+  length[1] = diff_expansion(b.y, o.y, side[1]);
+  length[2] = diff_expansion(c.x, o.x, side[2]);
+  length[3] = diff_expansion(c.y, o.y, side[3]);
+  double largest = 0.0;
+  for (int k = 0; k < 4; ++k)
+  {
+    for (int i = 0; i < length[k]; ++i)
+    {
+      largest = std::max(largest, std::fabs(side[k][i]));
+    }
+  }
+  const int scale = largest > 0.0 ? 300 - std::ilogb(largest) : 0;
+  for (int k = 0; k < 4; ++k)
+  {
+    for (int i = 0; i < length[k]; ++i)
+    {
+      side[k][i] = std::ldexp(side[k][i], scale);
+    }
+  }
+  const double *bx = side[0], *by = side[1], *cx = side[2], *cy = side[3];
+  const int nbx = length[0], nby = length[1], ncx = length[2], ncy = length[3];
+  // Squared sides (b2, c2) and twice the area (bx cy - by cx), exactly.
+  double xx[8], yy[8], b2[16], c2[16], p[8], q[8], area[16];
+  int nb2 = expansion_sum(
+    xx, expansion_product(bx, nbx, bx, nbx, xx), yy, expansion_product(by, nby, by, nby, yy), b2);
+  int nc2 = expansion_sum(
+    xx, expansion_product(cx, ncx, cx, ncx, xx), yy, expansion_product(cy, ncy, cy, ncy, yy), c2);
+  const int np = expansion_product(bx, nbx, cy, ncy, p);
+  const int nq = expansion_product(by, nby, cx, ncx, q);
+  negate(q, nq);
+  const int narea = expansion_sum(p, np, q, nq, area);
+  // ux = (cy b2 - by c2) / (2 area), uy = (bx c2 - cx b2) / (2 area).
+  double first[64], second[64], numerator[128];
+  int n1 = expansion_product(cy, ncy, b2, nb2, first);
+  int n2 = expansion_product(by, nby, c2, nc2, second);
+  negate(second, n2);
+  int n = expansion_sum(first, n1, second, n2, numerator);
+  const double denominator = 2.0 * EstimateOf(area, narea);
+  ux = std::ldexp(EstimateOf(numerator, n) / denominator, -scale);
+  n1 = expansion_product(bx, nbx, c2, nc2, first);
+  n2 = expansion_product(cx, ncx, b2, nb2, second);
+  negate(second, n2);
+  n = expansion_sum(first, n1, second, n2, numerator);
+  uy = std::ldexp(EstimateOf(numerator, n) / denominator, -scale);
+}
+
+} // namespace tessera
