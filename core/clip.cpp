@@ -348,6 +348,7 @@ void CheckConvex(const Point2* tile,
   std::size_t count,
   std::size_t tileId,
   double tileArea,
+  double coordinateEpsilon,
   std::vector<Point2>& points,
   std::vector<Point2>& hull)
 {
@@ -367,13 +368,14 @@ void CheckConvex(const Point2* tile,
   ConvexHull(points, hull);
   const double hullArea = SignedArea(points.data(), points.size());
   const double perimeter = 2.0 * ((box.XMax - box.XMin) + (box.YMax - box.YMin));
-  const double rounding = 64.0 * std::numeric_limits<double>::epsilon() * magnitude * perimeter;
-  if (hullArea - tileArea > 1e-6 * hullArea + rounding)
+  const double rounding = 64.0 * coordinateEpsilon * magnitude * perimeter;
+  // Both ways: a ring wound twice around its hull has twice its area.
+  if (std::abs(hullArea - tileArea) > 1e-6 * hullArea + rounding)
   {
     std::ostringstream message;
     message.precision(17);
     message << "tile " << tileId << " is not convex: its area " << tileArea
-            << " is less than its convex hull's " << hullArea
+            << " differs from its convex hull's " << hullArea
             << "; tiles must be convex (split it into convex parts)";
     throw InputError(message.str());
   }
@@ -721,7 +723,8 @@ double Catchment::ClipInto(const Point2* tile,
   std::size_t tileId,
   Workspace& work,
   ClippedRings* rings,
-  FoldedTile folded) const
+  FoldedTile folded,
+  double coordinateEpsilon) const
 {
   if (count < 3 && folded == FoldedTile::IsEmpty)
   {
@@ -741,7 +744,7 @@ double Catchment::ClipInto(const Point2* tile,
   }
   if (folded == FoldedTile::IsAnError)
   {
-    CheckConvex(tile, count, tileId, tileArea, work.Tile, work.ClipB);
+    CheckConvex(tile, count, tileId, tileArea, coordinateEpsilon, work.Tile, work.ClipB);
   }
   Box2 box = BoundsOf(tile, count);
   if (tileArea == 0.0 || box.XMax < this->Box.XMin || box.XMin > this->Box.XMax ||

@@ -35,6 +35,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -106,8 +107,9 @@ public:
   /// clipped as the convex hull of its vertices, so repeated and collinear vertices, and the small
   /// non-convexity of rounding (vertices an ulp apart, folds), change the area by ulps. Throws
   /// InputError for fewer than 3 vertices, a NaN or infinite vertex, clockwise vertices, or a tile
-  /// that is not convex (its convex hull larger than it by more than a millionth, beyond the
-  /// rounding of its coordinates); a tile of zero area gives 0.
+  /// that is not convex (its area differing from its convex hull's by more than a millionth,
+  /// beyond the rounding of double coordinates; see ClipInto for others); a tile of zero area
+  /// gives 0.
   double ClipArea(const std::vector<Point2>& tile) const;
   /// Area and rings of tile & catchment (see ClippedTile).
   ClippedTile Clip(const std::vector<Point2>& tile) const;
@@ -137,13 +139,17 @@ public:
                ///< or collapsed, its true area being below the rounding's
   };
   /// The same as ClipArea / Clip for tile vertices tile[0] .. tile[count-1]; rings are appended to
-  /// *rings when it is not null. tileId only names the tile in error messages.
+  /// *rings when it is not null. tileId only names the tile in error messages. With
+  /// FoldedTile::IsAnError the tile must also be convex up to the rounding of its coordinates,
+  /// whose relative precision is coordinateEpsilon: the machine epsilon of the type they were
+  /// computed in (2^-23 for tiles that went through float, as VTK points often do).
   double ClipInto(const Point2* tile,
     std::size_t count,
     std::size_t tileId,
     Workspace& work,
     ClippedRings* rings,
-    FoldedTile folded = FoldedTile::IsAnError) const;
+    FoldedTile folded = FoldedTile::IsAnError,
+    double coordinateEpsilon = std::numeric_limits<double>::epsilon()) const;
 
 private:
   void BuildGrid();

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <exception>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -75,6 +76,11 @@ int vtkWindowClip::RequestData(vtkInformation*,
     vtkNew<vtkIdList> ids;
     tessera::ClippedRings rings;       // reused: ClipInto appends to it
     std::vector<std::int32_t> skipped; // cells that are not polygons: reported, not clipped
+    // Tiles whose points are floats are convex up to a float's rounding (the clip's convexity
+    // check allows for it).
+    const bool floatPoints = tiles->GetPoints() && tiles->GetPoints()->GetDataType() == VTK_FLOAT;
+    const double epsilon =
+      floatPoints ? std::numeric_limits<float>::epsilon() : std::numeric_limits<double>::epsilon();
     const vtkIdType cellCount = tiles->GetNumberOfCells();
     for (vtkIdType c = 0; c < cellCount; ++c)
     {
@@ -106,8 +112,13 @@ int vtkWindowClip::RequestData(vtkInformation*,
       const double ownArea = tessera_vtk::OrientAnticlockwise(tile);
       rings.RingOffsets.assign(1, 0);
       rings.Vertices.clear();
-      const double clipped =
-        catchment.ClipInto(tile.data(), tile.size(), static_cast<std::size_t>(c), work, &rings);
+      const double clipped = catchment.ClipInto(tile.data(),
+        tile.size(),
+        static_cast<std::size_t>(c),
+        work,
+        &rings,
+        tessera::Catchment::FoldedTile::IsAnError,
+        epsilon);
       if (clipped <= 0.0)
       {
         continue;

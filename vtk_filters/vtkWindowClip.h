@@ -9,8 +9,8 @@
  * (other cells of input 1, such as open polylines, are ignored with a warning). Ring orientation
  * and order do not matter. A catchment boundary that touches or crosses itself, or two rings that
  * touch, is an error naming them. So is a tile of input 0 that is not convex (beyond the rounding
- * of its vertices: its convex hull larger by more than a millionth of its area), whose clipped area
- * would otherwise be its hull's.
+ * of its vertices, in float or double as its points are stored: its area differing from its convex
+ * hull's by more than a millionth), whose clipped area would otherwise be its hull's.
  *
  * The output holds one polygon per ring of each clipped tile (a tile cut into two lobes gives two
  * polygons; a tile around a hole gives its outer ring and the hole's ring, flagged), with the
@@ -22,10 +22,8 @@
  * Tiles entirely outside the window give no polygon. Cells of input 0 that are not polygons,
  * triangles or quads (lines, vertices, strips), and polygons of fewer than 3 points, are not
  * clipped: a warning counts them and the output's field data array `SkippedCellIds` (vtkIdType)
- * lists them. Areas use exact orientation
- * tests and compensated sums, so the clipped areas of a tiling sum to the window's area to
- * round-off.
- * Only x and y are used.
+ * lists them. Areas use exact orientation tests and compensated sums, so the clipped areas of a
+ * tiling sum to the window's area to round-off. Only x and y are used.
  */
 
 #ifndef vtkWindowClip_h

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -974,7 +975,7 @@ TEST(Clip, NonConvexTilesAreErrorsAndRoundingFoldsAreNot)
   for (const Point2& at : { Point2{ 1, 1 }, Point2{ 3, 3 }, Point2{ 10, 10 } })
   {
     const std::string error = ErrorOf([&] { catchment.ClipArea(ell(at.x, at.y)); });
-    EXPECT_NE(error.find("tile 0 is not convex: its area 3 is less than its convex hull's 3.5"),
+    EXPECT_NE(error.find("tile 0 is not convex: its area 3 differs from its convex hull's 3.5"),
       std::string::npos)
       << error;
   }
@@ -1011,6 +1012,36 @@ TEST(Clip, NonConvexTilesAreErrorsAndRoundingFoldsAreNot)
   };
   EXPECT_NE(ErrorOf([&] { farCatchment.ClipArea(notched); }).find("tile 0 is not convex"),
     std::string::npos);
+
+  // A square listed twice winds twice around its hull: twice the hull's area.
+  std::vector<Point2> twice = Rectangle(1, 1, 2, 2);
+  const std::vector<Point2> again = twice;
+  twice.insert(twice.end(), again.begin(), again.end());
+  EXPECT_NE(ErrorOf([&] { catchment.ClipArea(twice); }).find("tile 0 is not convex: its area 2"),
+    std::string::npos);
+
+  // Tiles that went through float (VTK points often do): a fold as deep as a float's rounding at
+  // UTM-like coordinates is an error for double coordinates, and clips when the caller gives the
+  // float epsilon.
+  const double x0 = 500000.0, y0 = 4500000.0, floatUlp = std::ldexp(1.0, -1); // ulp of 4.5e6
+  const std::vector<Point2> floatFolded{ { x0, y0 },
+    { x0 + 300, y0 + floatUlp },
+    { x0 + 600, y0 },
+    { x0 + 600, y0 + 600 },
+    { x0, y0 + 600 } };
+  Rings utm;
+  utm.Add(Rectangle(x0 - 1000, y0 - 1000, x0 + 300, y0 + 1000));
+  const Catchment utmCatchment(utm.Offsets, utm.Vertices);
+  EXPECT_NE(ErrorOf([&] { utmCatchment.ClipArea(floatFolded); }).find("tile 0 is not convex"),
+    std::string::npos);
+  const double floatArea = utmCatchment.ClipInto(floatFolded.data(),
+    floatFolded.size(),
+    0,
+    work,
+    nullptr,
+    Catchment::FoldedTile::IsAnError,
+    std::numeric_limits<float>::epsilon());
+  EXPECT_NEAR(floatArea, 300.0 * 600.0, 300.0 * floatUlp);
 }
 
 TEST(Clip, SegmentsIntersectIsExact)

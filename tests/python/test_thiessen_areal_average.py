@@ -293,6 +293,47 @@ def test_window_clip_reports_cells_that_are_not_polygons():
     assert_that(out.GetNumberOfCells() == 1, "the square clipped")
 
 
+def test_window_clip_of_tiles_stored_in_float():
+    # Tessellation tiles whose points went through float (VTK's default point type) fold by a
+    # float's rounding: the convexity check allows for it, and the tiling still sums to the window.
+    rng = np.random.default_rng(1)
+    for cx, cy, half in [(5e5, 4.5e6, 5e4), (100.0, 40.0, 1.0)]:
+        xy = np.c_[cx + half * (2 * rng.random(3000) - 1), cy + half * (2 * rng.random(3000) - 1)]
+        points = vtkPoints()
+        points.SetDataTypeToDouble()
+        for x, y in xy:
+            points.InsertNextPoint(x, y, 0.0)
+        gauges = vtkPolyData()
+        gauges.SetPoints(points)
+        tess = vtkDirichletTessellation()
+        tess.SetInputData(gauges)
+        tess.Update()
+        tiles = vtkPolyData()
+        tiles.DeepCopy(tess.GetOutput(0))
+        single = vtkPoints()
+        single.SetDataTypeToFloat()
+        single.SetNumberOfPoints(tiles.GetNumberOfPoints())
+        for i in range(tiles.GetNumberOfPoints()):
+            single.SetPoint(i, tiles.GetPoint(i))
+        tiles.SetPoints(single)
+        window = [(cx - 0.7 * half, cy - 0.6 * half), (cx + 0.8 * half, cy - 0.7 * half),
+                  (cx + 0.6 * half, cy + 0.9 * half), (cx - 0.5 * half, cy + 0.5 * half)]
+        clip = vtkWindowClip()
+        messages = messages_of(clip)
+        clip.SetInputData(tiles)
+        clip.SetWindowData(polygon([window]))
+        clip.Update()
+        assert_that(not messages, f"float tiles at ({cx}, {cy}) clip: {messages[:1]}")
+        out = clip.GetOutput()
+        cd = out.GetCellData()
+        clipped = {cd.GetArray("TileId").GetValue(c): cd.GetArray("ClippedArea").GetValue(c)
+                   for c in range(out.GetNumberOfCells())}
+        x = np.array([p[0] for p in window])
+        y = np.array([p[1] for p in window])
+        area = 0.5 * abs(float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)))
+        assert_close(sum(clipped.values()), area, 1e-4 * area, "float tiles sum to the window")
+
+
 def with_open_polyline(data):
     """The polygon data with an open polyline (cell 0: lines come before polygons) added."""
     lines = vtkCellArray()
@@ -332,4 +373,5 @@ if __name__ == "__main__":
          test_window_clip_of_projected_tiles_sums_to_the_catchment,
          test_window_clip_names_a_non_convex_tile,
          test_window_clip_reports_cells_that_are_not_polygons,
-         test_window_cells_that_are_not_rings_are_reported])
+         test_window_cells_that_are_not_rings_are_reported,
+         test_window_clip_of_tiles_stored_in_float])
