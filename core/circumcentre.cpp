@@ -41,6 +41,8 @@ double ExactTwiceSignedArea(double bx, double by, double cx, double cy)
   return (pHigh - qHigh) + (pLow - qLow); // pHigh - qHigh is exact here (Sterbenz)
 }
 
+namespace
+{
 /// u = circumcentre - o from exact arithmetic: the sides as exact differences, scaled by a power of
 /// two that takes their largest component to about 2^300 (so that products of three stay below
 /// 2^900, and a side a subnormal length long keeps its bits: only parts some 2^-650 of the largest
@@ -101,6 +103,13 @@ void ExactCircumcentreOffset(const Point2& o,
   negate(second, n2);
   n = expansion_sum(first, n1, second, n2, numerator);
   uy = std::ldexp(EstimateOf(numerator, n) / denominator, -scale);
+}
+} // namespace
+
+void IllConditionedCircumcentre(const Point2& b, const Point2& c, CircumcentreTerms& t)
+{
+  t.d = 2.0 * TwiceSignedArea(t.bx, t.by, t.cx, t.cy);
+  ExactCircumcentreOffset(t.Origin, b, c, t.ux, t.uy);
 }
 
 } // namespace tessera

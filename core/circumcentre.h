@@ -71,13 +71,10 @@ inline void SidesFrom(const Point2& o, const Point2& b, const Point2& c, Circumc
   t.c2 = t.cx * t.cx + t.cy * t.cy;
 }
 
-/// u = circumcentre - o from exact sides and exact numerators and denominator (circumcentre.cpp):
-/// the ill-conditioned case of CircumcentreOffset, accurate to a few ulps.
-void ExactCircumcentreOffset(const Point2& o,
-  const Point2& b,
-  const Point2& c,
-  double& ux,
-  double& uy);
+/// The ill-conditioned case of CircumcentreOffset (circumcentre.cpp), for the sides from t.Origin
+/// to b and c already in t: t.d from TwiceSignedArea, and (t.ux, t.uy) from exact sides and exact
+/// numerators and denominator, accurate to a few ulps (ExactCircumcentreOffset).
+void IllConditionedCircumcentre(const Point2& b, const Point2& c, CircumcentreTerms& t);
 
 /// a, b, c in the engines' canonical order (ascending ids); see the conditioning note above.
 inline CircumcentreTerms CircumcentreOffset(const Point2& a, const Point2& b, const Point2& c)
@@ -90,17 +87,22 @@ inline CircumcentreTerms CircumcentreOffset(const Point2& a, const Point2& b, co
   {
     SidesFrom(b, c, a, t); // a cyclic turn: the orientation is kept
   }
-  t.d = 2.0 * TwiceSignedArea(t.bx, t.by, t.cx, t.cy);
-  t.ux = (t.cy * t.b2 - t.by * t.c2) / t.d;
-  t.uy = (t.bx * t.c2 - t.cx * t.b2) / t.d;
-  // Written so that NaN and infinities also take the exact path.
-  const double products = std::fabs(t.bx * t.cy) + std::fabs(t.by * t.cx);
-  const bool wellConditioned = 2.0 * products <= 0x1p16 * std::fabs(t.d) &&
-    std::min(t.b2, t.c2) >= 0x1p-900 && std::max(t.b2, t.c2) <= 0x1p900 &&
-    std::fabs(t.d) >= 0x1p-900;
-  if (!wellConditioned)
+  // The area's products, once: a difference above 2^-16 of their size is well conditioned (and
+  // is what TwiceSignedArea would return). Written so that NaN and infinities fail the test.
+  const double p = t.bx * t.cy, q = t.by * t.cx;
+  const double twice = p - q;
+  const bool wellConditioned = std::fabs(twice) > 0x1p-16 * (std::fabs(p) + std::fabs(q)) &&
+    std::fabs(twice) >= 0x1p-900 && std::min(t.b2, t.c2) >= 0x1p-900 &&
+    std::max(t.b2, t.c2) <= 0x1p900;
+  if (wellConditioned)
   {
-    ExactCircumcentreOffset(t.Origin, turned ? c : b, turned ? a : c, t.ux, t.uy);
+    t.d = 2.0 * twice;
+    t.ux = (t.cy * t.b2 - t.by * t.c2) / t.d;
+    t.uy = (t.bx * t.c2 - t.cx * t.b2) / t.d;
+  }
+  else
+  {
+    IllConditionedCircumcentre(turned ? c : b, turned ? a : c, t);
   }
   return t;
 }
