@@ -1,11 +1,7 @@
 // The exact (expansion) parts of circumcentre.h: they run only for ill-conditioned triangles.
 // Out of line so that the expansion arithmetic is compiled here, with contraction off, as
 // expansion_arithmetic.h requires of every includer.
-#if defined(__clang__)
-#pragma STDC FP_CONTRACT OFF
-#elif defined(__GNUC__)
-#pragma GCC optimize("fp-contract=off")
-#endif
+#include "fp_contract_off.h" // first: before the expansion arithmetic
 
 #include "circumcentre.h"
 

@@ -5,13 +5,8 @@
 // (window_predicates.cpp). Not part of the public API.
 //
 // Every includer MUST compile with floating-point contraction switched off, and the switch must
-// come before this #include (the GCC pragma only affects functions defined after it):
-//
-//   #if defined(__clang__)
-//   #pragma STDC FP_CONTRACT OFF
-//   #elif defined(__GNUC__)
-//   #pragma GCC optimize("fp-contract=off")
-//   #endif
+// come before this #include (the GCC pragma only affects functions defined after it): include
+// "fp_contract_off.h" first.
 //
 // Fusing a*b+c into an fma would break the error-free transformations (two_sum, two_diff, Dekker's
 // product). These are inline functions, so a single contracted copy in any translation unit could

@@ -34,11 +34,7 @@
 // Contraction (fusing a*b+c into an fma) would change the roundings the filter's bounds and the
 // Dekker product rely on, so it is switched off for this file.
 
-#if defined(__clang__)
-#pragma STDC FP_CONTRACT OFF
-#elif defined(__GNUC__)
-#pragma GCC optimize("fp-contract=off")
-#endif
+#include "fp_contract_off.h" // first: before the expansion arithmetic
 
 #include "predicates.h"
 #include "expansion_arithmetic.h"

@@ -11,11 +11,7 @@
 // transformations of expansion_arithmetic.h, so it is off for this file (before the includes); the
 // exact products use std::fma, which is exact by definition.
 
-#if defined(__clang__)
-#pragma STDC FP_CONTRACT OFF
-#elif defined(__GNUC__)
-#pragma GCC optimize("fp-contract=off")
-#endif
+#include "fp_contract_off.h" // first: before the expansion arithmetic
 
 #include "window_predicates.h"
 

@@ -14,7 +14,8 @@ from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
 
 from tessera import (vtkDirichletTessellation, vtkGeographicProjection, vtkThiessenArealAverage,
                      vtkWindowClip)
-from tessera_testing import EXAMPLE_DATA, assert_close, assert_that, messages_of, run
+from tessera_testing import (EXAMPLE_DATA, assert_close, assert_that, make_points, messages_of,
+                             run)
 
 
 def gauges_polydata(coords, ids, values=None):
@@ -299,14 +300,8 @@ def test_window_clip_of_tiles_stored_in_float():
     rng = np.random.default_rng(1)
     for cx, cy, half in [(5e5, 4.5e6, 5e4), (100.0, 40.0, 1.0)]:
         xy = np.c_[cx + half * (2 * rng.random(3000) - 1), cy + half * (2 * rng.random(3000) - 1)]
-        points = vtkPoints()
-        points.SetDataTypeToDouble()
-        for x, y in xy:
-            points.InsertNextPoint(x, y, 0.0)
-        gauges = vtkPolyData()
-        gauges.SetPoints(points)
         tess = vtkDirichletTessellation()
-        tess.SetInputData(gauges)
+        tess.SetInputData(make_points([tuple(p) for p in xy]))
         tess.Update()
         tiles = vtkPolyData()
         tiles.DeepCopy(tess.GetOutput(0))
