@@ -42,6 +42,11 @@
  * 0, 1 or 2 points and collinear points give valid output: the tiles are the whole window,
  * strips or half-planes within it. A NaN or infinite coordinate is an error naming the point.
  *
+ * Range. The Delaunay decisions are exact for any finite coordinates. The window decisions of the
+ * GreenSibson tiles (where a Voronoi vertex lies against a window side) are exact for nonzero
+ * coordinates within about 1e-60 .. 1e60 in magnitude; far below that (points some 1e-100 apart,
+ * subnormal coordinates) their products underflow and tiles can come out wrong.
+ *
  * @sa vtkDelaunayTriangulation vtkVoronoi2D
  */
 
