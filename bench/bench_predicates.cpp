@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <functional>
 #include <random>
+#include <string>
 #include <vector>
 
 using tessera::Point2;
@@ -40,8 +41,16 @@ double seconds_per_call(const std::vector<Point2>& pts, const std::function<int(
 
 } // namespace
 
-int main()
+int main(int argc, char** argv)
 {
+  if (argc > 1 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h"))
+  {
+    std::printf("usage: bench_predicates\n"
+                "Nanoseconds per call of the exact predicates (orient2d, incircle): the\n"
+                "out-of-line functions, the inline fast paths and the exact tiers alone, on\n"
+                "random and degenerate inputs.\n");
+    return 0;
+  }
   const std::size_t n = 2000000;
   std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> u(0, 1);
