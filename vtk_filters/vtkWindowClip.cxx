@@ -3,6 +3,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -74,8 +75,9 @@ int vtkWindowClip::RequestData(vtkInformation*,
     tessera::Catchment::Workspace work;
     std::vector<tessera::Point2> tile;
     vtkNew<vtkIdList> ids;
-    tessera::ClippedRings rings;       // reused: ClipInto appends to it
-    std::vector<std::int32_t> skipped; // cells that are not polygons: reported, not clipped
+    tessera::ClippedRings rings;    // reused: ClipInto appends to it
+    vtkNew<vtkIdTypeArray> skipped; // cells that are not polygons: reported, not clipped
+    skipped->SetName("SkippedCellIds");
     // Tiles whose points are floats are convex up to a float's rounding (the clip's convexity
     // check allows for it).
     const bool floatPoints = tiles->GetPoints() && tiles->GetPoints()->GetDataType() == VTK_FLOAT;
@@ -91,7 +93,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
       const int type = tiles->GetCellType(c);
       if (type != VTK_POLYGON && type != VTK_TRIANGLE && type != VTK_QUAD)
       {
-        skipped.push_back(static_cast<std::int32_t>(c));
+        skipped->InsertNextValue(c);
         continue;
       }
       tiles->GetCellPoints(c, ids);
@@ -99,7 +101,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
       {
         // A polygon collapsed to 1 or 2 points (a tessellation's tile between points some
         // nanometres apart can be): nothing to clip.
-        skipped.push_back(static_cast<std::int32_t>(c));
+        skipped->InsertNextValue(c);
         continue;
       }
       tile.resize(ids->GetNumberOfIds());
@@ -152,12 +154,13 @@ int vtkWindowClip::RequestData(vtkInformation*,
     outCD->AddArray(clippedAreas);
     outCD->AddArray(fractions);
     outCD->AddArray(holes);
-    if (!skipped.empty())
+    if (skipped->GetNumberOfValues() > 0)
     {
-      tessera_vtk::AddIdFieldArray(output, "SkippedCellIds", skipped);
-      vtkWarningMacro(<< skipped.size()
-                      << " cell(s) of input 0 are not polygons, triangles or quads "
-                      << "(the first is cell " << skipped.front()
+      output->GetFieldData()->AddArray(skipped);
+      vtkWarningMacro(<< skipped->GetNumberOfValues()
+                      << " cell(s) of input 0 are not polygons of 3 or more points, triangles or "
+                         "quads (the first is cell "
+                      << skipped->GetValue(0)
                       << ") and were not clipped; their ids are in the field data array "
                          "SkippedCellIds.");
     }
