@@ -76,22 +76,29 @@ double SignedArea(const Point2* ring, std::size_t count)
   return 0.5 * twice.Value();
 }
 
-// The tile's vertices from its lowest (smallest x, then y) on, in rotated when that is not the
-// first: the clipped area is summed, and measured relative to the first vertex, in this order, so
-// that the same polygon gives the same bits whichever vertex it was listed from (two
-// tessellations of the same points list a tile from different vertices).
-const Point2* StartAtLowestVertex(const Point2* tile,
-  std::size_t count,
-  std::vector<Point2>& rotated)
+// The lexicographically smallest vertex (smallest x, then y) of a ring.
+std::size_t LowestVertex(const Point2* ring, std::size_t count)
 {
   std::size_t lowest = 0;
   for (std::size_t i = 1; i < count; ++i)
   {
-    if (tile[i].x < tile[lowest].x || (tile[i].x == tile[lowest].x && tile[i].y < tile[lowest].y))
+    if (ring[i].x < ring[lowest].x || (ring[i].x == ring[lowest].x && ring[i].y < ring[lowest].y))
     {
       lowest = i;
     }
   }
+  return lowest;
+}
+
+// The tile's vertices from its lowest on, in rotated when that is not the first: the clipped area
+// is summed, and measured relative to the first vertex, in this order, so that the same polygon
+// gives the same bits whichever vertex it was listed from (two tessellations of the same points
+// list a tile from different vertices).
+const Point2* StartAtLowestVertex(const Point2* tile,
+  std::size_t count,
+  std::vector<Point2>& rotated)
+{
+  const std::size_t lowest = LowestVertex(tile, count);
   if (lowest == 0)
   {
     return tile;
@@ -340,33 +347,46 @@ bool TurnsLeftOnce(const Point2* ring, std::size_t count)
   return xChanges <= 2 && yChanges <= 2;
 }
 
+// The convex hull of the tile, relative to its first vertex, in work.Tile (work.ClipB is scratch):
+// the coordinates the clipping runs in. Sutherland-Hodgman intersects the half-planes of the
+// tile's edges, which is the tile only if every turn is strictly convex. Rounded tiles have
+// vertices an ulp apart (and the shift can make more): the line through two such vertices has an
+// arbitrary direction, and its half-plane can cut away most of the tile, or all of it, depending
+// on the start vertex. So the clipping uses the convex hull, taken in the very coordinates it runs
+// on, which differs from a nearly convex tile by slivers an ulp wide.
+void HullRelativeToFirstVertex(const Point2* tile, std::size_t count, Catchment::Workspace& work)
+{
+  const Point2 origin = tile[0];
+  work.Tile.resize(count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    work.Tile[i] = { tile[i].x - origin.x, tile[i].y - origin.y };
+  }
+  ConvexHull(work.Tile, work.ClipB);
+}
+
 // A tile given by a user must be convex: the clipping takes its convex hull (rounded tessellation
 // tiles have reflex turns an ulp deep, and vertices an ulp apart), so the clipped area of a
 // genuinely non-convex polygon would be its hull's. A hull larger than the tile by more than a
 // millionth of its area, beyond what rounding the coordinates could make, is such a polygon.
-void CheckConvex(const Point2* tile,
+// Returns whether it left the hull in work (HullRelativeToFirstVertex): convex tiles pass a
+// one-pass test without one.
+bool CheckConvex(const Point2* tile,
   std::size_t count,
   std::size_t tileId,
   double tileArea,
+  const Box2& box,
   double coordinateEpsilon,
-  std::vector<Point2>& points,
-  std::vector<Point2>& hull)
+  Catchment::Workspace& work)
 {
   if (TurnsLeftOnce(tile, count))
   {
-    return; // the common case, without a hull
+    return false;
   }
-  const Box2 box = BoundsOf(tile, count);
+  HullRelativeToFirstVertex(tile, count, work);
+  const double hullArea = SignedArea(work.Tile.data(), work.Tile.size());
   const double magnitude = std::max(std::max(std::abs(box.XMin), std::abs(box.XMax)),
     std::max(std::abs(box.YMin), std::abs(box.YMax)));
-  const Point2 origin = tile[0];
-  points.resize(count);
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    points[i] = { tile[i].x - origin.x, tile[i].y - origin.y };
-  }
-  ConvexHull(points, hull);
-  const double hullArea = SignedArea(points.data(), points.size());
   const double perimeter = 2.0 * ((box.XMax - box.XMin) + (box.YMax - box.YMin));
   const double rounding = 64.0 * coordinateEpsilon * magnitude * perimeter;
   // Both ways: a ring wound twice around its hull has twice its area.
@@ -379,6 +399,7 @@ void CheckConvex(const Point2* tile,
             << "; tiles must be convex (split it into convex parts)";
     throw InputError(message.str());
   }
+  return true;
 }
 
 void CheckTileOffsets(const std::vector<std::size_t>& offsets, std::size_t vertexCount)
@@ -405,14 +426,7 @@ void CheckTileOffsets(const std::vector<std::size_t>& offsets, std::size_t verte
 // convexly, and the neighbours cannot be collinear with it (validation rejects such overlaps).
 int RingOrientation(const Point2* ring, std::size_t count)
 {
-  std::size_t lowest = 0;
-  for (std::size_t i = 1; i < count; ++i)
-  {
-    if (ring[i].x < ring[lowest].x || (ring[i].x == ring[lowest].x && ring[i].y < ring[lowest].y))
-    {
-      lowest = i;
-    }
-  }
+  const std::size_t lowest = LowestVertex(ring, count);
   const Point2& before = ring[lowest == 0 ? count - 1 : lowest - 1];
   const Point2& after = ring[lowest + 1 == count ? 0 : lowest + 1];
   return orient2d_fast(before, ring[lowest], after);
@@ -742,11 +756,9 @@ double Catchment::ClipInto(const Point2* tile,
     throw InputError("tile " + std::to_string(tileId) + " has clockwise vertices (signed area " +
       std::to_string(tileArea) + "); tiles must be convex and anticlockwise");
   }
-  if (folded == FoldedTile::IsAnError)
-  {
-    CheckConvex(tile, count, tileId, tileArea, coordinateEpsilon, work.Tile, work.ClipB);
-  }
   Box2 box = BoundsOf(tile, count);
+  const bool hullBuilt = folded == FoldedTile::IsAnError &&
+    CheckConvex(tile, count, tileId, tileArea, box, coordinateEpsilon, work);
   if (tileArea == 0.0 || box.XMax < this->Box.XMin || box.XMin > this->Box.XMax ||
     box.YMax < this->Box.YMin || box.YMin > this->Box.YMax)
   {
@@ -812,18 +824,10 @@ double Catchment::ClipInto(const Point2* tile,
   // Pieces are clipped and measured relative to the tile's first vertex: rounded intersection
   // points then err by ulps of the tile's size, not of the coordinates' magnitude.
   const Point2 origin = tile[0];
-  work.Tile.resize(count);
-  for (std::size_t i = 0; i < count; ++i)
+  if (!hullBuilt)
   {
-    work.Tile[i] = { tile[i].x - origin.x, tile[i].y - origin.y };
+    HullRelativeToFirstVertex(tile, count, work);
   }
-  // Sutherland-Hodgman intersects the half-planes of the tile's edges, which is the tile only if
-  // every turn is strictly convex. Rounded tiles have vertices an ulp apart (and the shift above
-  // can make more): the line through two such vertices has an arbitrary direction, and its
-  // half-plane can cut away most of the tile, or all of it, depending on the start vertex. So the
-  // clipping uses the convex hull, taken in the very coordinates it runs on, which differs from a
-  // nearly convex tile by slivers an ulp wide.
-  ConvexHull(work.Tile, work.ClipB);
   const std::size_t hullCount = work.Tile.size();
   if (hullCount < 3)
   {
