@@ -27,6 +27,25 @@ double EstimateOf(const double* e, int n)
   return sum;
 }
 
+/// e * f - g * h from exact products, rounded (e and g of at most 2 components, f and h of at most
+/// 16).
+double DifferenceOfProducts(const double* e,
+  int ne,
+  const double* f,
+  int nf,
+  const double* g,
+  int ng,
+  const double* h,
+  int nh)
+{
+  using namespace expansion;
+  double first[64], second[64], difference[128];
+  const int n1 = expansion_product(e, ne, f, nf, first);
+  const int n2 = expansion_product(g, ng, h, nh, second);
+  negate(second, n2);
+  return EstimateOf(difference, expansion_sum(first, n1, second, n2, difference));
+}
+
 } // namespace
 
 double ExactTwiceSignedArea(double bx, double by, double cx, double cy)
@@ -76,29 +95,16 @@ void ExactCircumcentreOffset(const Point2& o,
   }
   const double *bx = side[0], *by = side[1], *cx = side[2], *cy = side[3];
   const int nbx = length[0], nby = length[1], ncx = length[2], ncy = length[3];
-  // Squared sides (b2, c2) and twice the area (bx cy - by cx), exactly.
-  double xx[8], yy[8], b2[16], c2[16], p[8], q[8], area[16];
-  int nb2 = expansion_sum(
+  // Squared sides (b2, c2) exactly; twice the area (bx cy - by cx) rounded from exact products.
+  double xx[8], yy[8], b2[16], c2[16];
+  const int nb2 = expansion_sum(
     xx, expansion_product(bx, nbx, bx, nbx, xx), yy, expansion_product(by, nby, by, nby, yy), b2);
-  int nc2 = expansion_sum(
+  const int nc2 = expansion_sum(
     xx, expansion_product(cx, ncx, cx, ncx, xx), yy, expansion_product(cy, ncy, cy, ncy, yy), c2);
-  const int np = expansion_product(bx, nbx, cy, ncy, p);
-  const int nq = expansion_product(by, nby, cx, ncx, q);
-  negate(q, nq);
-  const int narea = expansion_sum(p, np, q, nq, area);
   // ux = (cy b2 - by c2) / (2 area), uy = (bx c2 - cx b2) / (2 area).
-  double first[64], second[64], numerator[128];
-  int n1 = expansion_product(cy, ncy, b2, nb2, first);
-  int n2 = expansion_product(by, nby, c2, nc2, second);
-  negate(second, n2);
-  int n = expansion_sum(first, n1, second, n2, numerator);
-  const double denominator = 2.0 * EstimateOf(area, narea);
-  ux = std::ldexp(EstimateOf(numerator, n) / denominator, -scale);
-  n1 = expansion_product(bx, nbx, c2, nc2, first);
-  n2 = expansion_product(cx, ncx, b2, nb2, second);
-  negate(second, n2);
-  n = expansion_sum(first, n1, second, n2, numerator);
-  uy = std::ldexp(EstimateOf(numerator, n) / denominator, -scale);
+  const double denominator = 2.0 * DifferenceOfProducts(bx, nbx, cy, ncy, by, nby, cx, ncx);
+  ux = std::ldexp(DifferenceOfProducts(cy, ncy, b2, nb2, by, nby, c2, nc2) / denominator, -scale);
+  uy = std::ldexp(DifferenceOfProducts(bx, nbx, c2, nc2, cx, ncx, b2, nb2) / denominator, -scale);
 }
 } // namespace
 

@@ -52,12 +52,13 @@ inline double TwiceSignedArea(double bx, double by, double cx, double cy)
   return ExactTwiceSignedArea(bx, by, cx, cy);
 }
 
-/// The centre as Origin + (ux, uy), with the sides from Origin, their squared lengths and twice
-/// the signed area d, as Circumcentre's error bound uses them.
+/// The centre as Origin + (ux, uy), with the sides from Origin, their squared lengths, twice the
+/// signed area d and the size of its products |bx cy| + |by cx|, as Circumcentre's error bound
+/// uses them.
 struct CircumcentreTerms
 {
   Point2 Origin;
-  double bx, by, cx, cy, b2, c2, d, ux, uy;
+  double bx, by, cx, cy, b2, c2, d, products, ux, uy;
 };
 
 inline void SidesFrom(const Point2& o, const Point2& b, const Point2& c, CircumcentreTerms& t)
@@ -91,7 +92,8 @@ inline CircumcentreTerms CircumcentreOffset(const Point2& a, const Point2& b, co
   // is what TwiceSignedArea would return). Written so that NaN and infinities fail the test.
   const double p = t.bx * t.cy, q = t.by * t.cx;
   const double twice = p - q;
-  const bool wellConditioned = std::fabs(twice) > 0x1p-16 * (std::fabs(p) + std::fabs(q)) &&
+  t.products = std::fabs(p) + std::fabs(q);
+  const bool wellConditioned = std::fabs(twice) > 0x1p-16 * t.products &&
     std::fabs(twice) >= 0x1p-900 && std::min(t.b2, t.c2) >= 0x1p-900 &&
     std::max(t.b2, t.c2) <= 0x1p900;
   if (wellConditioned)

@@ -22,7 +22,7 @@ Point2 Circumcentre(const Point2& a, const Point2& b, const Point2& c, double& e
   const Point2& o = t.Origin;
   const double bx = t.bx, by = t.by, cx = t.cx, cy = t.cy, b2 = t.b2, c2 = t.c2, d = t.d;
   const double ux = t.ux, uy = t.uy;
-  const double condition = 2.0 * (std::fabs(bx * cy) + std::fabs(by * cx)) / std::fabs(d);
+  const double condition = 2.0 * t.products / std::fabs(d);
   const double spread = 2.0 *
     (std::fabs(cy) * b2 + std::fabs(by) * c2 + std::fabs(bx) * c2 + std::fabs(cx) * b2) /
     std::fabs(d);
