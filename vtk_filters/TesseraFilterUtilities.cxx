@@ -157,11 +157,11 @@ void AppendPolygonRings(vtkPolyData* poly, const std::string& block, Rings& ring
   {
     const int type = poly->GetCellType(c);
     const bool isPolygon = type == VTK_POLYGON || type == VTK_TRIANGLE || type == VTK_QUAD;
-    bool isRing = isPolygon;
-    if (type == VTK_POLY_LINE)
+    bool isRing = isPolygon || type == VTK_POLY_LINE;
+    if (isRing)
     {
       poly->GetCellPoints(c, ids);
-      isRing = IsClosedLine(poly, ids);
+      isRing = isPolygon || IsClosedLine(poly, ids);
     }
     if (!isRing)
     {
@@ -171,7 +171,6 @@ void AppendPolygonRings(vtkPolyData* poly, const std::string& block, Rings& ring
       }
       continue;
     }
-    poly->GetCellPoints(c, ids);
     for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
     {
       double p[3];

@@ -18,7 +18,6 @@
 #include "polygon_area.h"
 
 #include <algorithm>
-#include <cstdint>
 #include <exception>
 #include <limits>
 #include <string>
