@@ -7,6 +7,13 @@
 
 #include "expansion_arithmetic.h"
 
+// GCC 12 at -O3 inlines lift_expansion here and reports its buffers as maybe uninitialized when
+// passed to expansion_sum (a false positive, as expansion_arithmetic.h notes for expansion_sum;
+// every component read is written first).
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+
 #include <algorithm>
 #include <cmath>
 
@@ -28,7 +35,7 @@ double EstimateOf(const double* e, int n)
 }
 
 /// e * f - g * h from exact products, rounded (e and g of at most 2 components, f and h of at most
-/// 16).
+/// 16: expansion_arithmetic.h's cross_expansion for longer factors).
 double DifferenceOfProducts(const double* e,
   int ne,
   const double* f,
@@ -96,13 +103,12 @@ void ExactCircumcentreOffset(const Point2& o,
   const double *bx = side[0], *by = side[1], *cx = side[2], *cy = side[3];
   const int nbx = length[0], nby = length[1], ncx = length[2], ncy = length[3];
   // Squared sides (b2, c2) exactly; twice the area (bx cy - by cx) rounded from exact products.
-  double xx[8], yy[8], b2[16], c2[16];
-  const int nb2 = expansion_sum(
-    xx, expansion_product(bx, nbx, bx, nbx, xx), yy, expansion_product(by, nby, by, nby, yy), b2);
-  const int nc2 = expansion_sum(
-    xx, expansion_product(cx, ncx, cx, ncx, xx), yy, expansion_product(cy, ncy, cy, ncy, yy), c2);
+  double b2[16], c2[16], area[16];
+  const int nb2 = lift_expansion(bx, nbx, by, nby, b2);
+  const int nc2 = lift_expansion(cx, ncx, cy, ncy, c2);
   // ux = (cy b2 - by c2) / (2 area), uy = (bx c2 - cx b2) / (2 area).
-  const double denominator = 2.0 * DifferenceOfProducts(bx, nbx, cy, ncy, by, nby, cx, ncx);
+  const double denominator =
+    2.0 * EstimateOf(area, cross_expansion(bx, nbx, cy, ncy, by, nby, cx, ncx, area));
   ux = std::ldexp(DifferenceOfProducts(cy, ncy, b2, nb2, by, nby, c2, nc2) / denominator, -scale);
   uy = std::ldexp(DifferenceOfProducts(bx, nbx, c2, nc2, cx, ncx, b2, nb2) / denominator, -scale);
 }

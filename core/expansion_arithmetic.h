@@ -248,5 +248,36 @@ inline void negate(double* e, int n)
   }
 }
 
+// (u * v - w * z) for expansions of length <= 2: length <= 16.
+inline int cross_expansion(const double* u,
+  int un,
+  const double* v,
+  int vn,
+  const double* w,
+  int wn,
+  const double* z,
+  int zn,
+  double* h)
+{
+  double p[8], q[8];
+  const int pn = expansion_product(u, un, v, vn, p);
+  const int qn = expansion_product(w, wn, z, zn, q);
+  negate(q, qn);
+  return expansion_sum(p, pn, q, qn, h);
+}
+
+// u^2 + v^2 for expansions of length <= 2: length <= 16.
+inline int lift_expansion(const double* u,
+  int un,
+  const double* v,
+  int vn,
+  double* h)
+{
+  double p[8], q[8];
+  const int pn = expansion_product(u, un, u, un, p);
+  const int qn = expansion_product(v, vn, v, vn, q);
+  return expansion_sum(p, pn, q, qn, h);
+}
+
 } // namespace expansion
 } // namespace tessera

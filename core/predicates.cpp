@@ -313,33 +313,6 @@ int orient2d_expansion(const Point2& a, const Point2& b, const Point2& c)
   return expansion_sign(det, n);
 }
 
-// (u * v - w * z) for expansions of length <= 2: length <= 16.
-int cross_expansion(const double* u,
-  int un,
-  const double* v,
-  int vn,
-  const double* w,
-  int wn,
-  const double* z,
-  int zn,
-  double* h)
-{
-  double p[8], q[8];
-  const int pn = expansion_product(u, un, v, vn, p);
-  const int qn = expansion_product(w, wn, z, zn, q);
-  negate(q, qn);
-  return expansion_sum(p, pn, q, qn, h);
-}
-
-// u^2 + v^2 for expansions of length <= 2: length <= 16.
-int lift_expansion(const double* u, int un, const double* v, int vn, double* h)
-{
-  double p[8], q[8];
-  const int pn = expansion_product(u, un, u, un, p);
-  const int qn = expansion_product(v, vn, v, vn, q);
-  return expansion_sum(p, pn, q, qn, h);
-}
-
 // The incircle determinant from the exact offsets (expansions of length <= 2) of a, b, c from d.
 int incircle_from_offsets(const double* adx,
   int adxn,
