@@ -35,7 +35,7 @@ double EstimateOf(const double* e, int n)
 }
 
 /// e * f - g * h from exact products, rounded (e and g of at most 2 components, f and h of at most
-/// 16: expansion_arithmetic.h's cross_expansion for longer factors).
+/// 16).
 double DifferenceOfProducts(const double* e,
   int ne,
   const double* f,
@@ -45,12 +45,9 @@ double DifferenceOfProducts(const double* e,
   const double* h,
   int nh)
 {
-  using namespace expansion;
-  double first[64], second[64], difference[128];
-  const int n1 = expansion_product(e, ne, f, nf, first);
-  const int n2 = expansion_product(g, ng, h, nh, second);
-  negate(second, n2);
-  return EstimateOf(difference, expansion_sum(first, n1, second, n2, difference));
+  double difference[128];
+  return EstimateOf(
+    difference, expansion::cross_expansion<16>(e, ne, f, nf, g, ng, h, nh, difference));
 }
 
 } // namespace

@@ -248,7 +248,9 @@ inline void negate(double* e, int n)
   }
 }
 
-// (u * v - w * z) for expansions of length <= 2: length <= 16.
+// (u * v - w * z), for u and w of length <= 2 and v and z of length <= Factor (h has room for
+// 8 * Factor): length <= 16 for the default, as the determinants use it.
+template<int Factor = 2>
 inline int cross_expansion(const double* u,
   int un,
   const double* v,
@@ -259,7 +261,7 @@ inline int cross_expansion(const double* u,
   int zn,
   double* h)
 {
-  double p[8], q[8];
+  double p[4 * Factor], q[4 * Factor];
   const int pn = expansion_product(u, un, v, vn, p);
   const int qn = expansion_product(w, wn, z, zn, q);
   negate(q, qn);
@@ -267,11 +269,7 @@ inline int cross_expansion(const double* u,
 }
 
 // u^2 + v^2 for expansions of length <= 2: length <= 16.
-inline int lift_expansion(const double* u,
-  int un,
-  const double* v,
-  int vn,
-  double* h)
+inline int lift_expansion(const double* u, int un, const double* v, int vn, double* h)
 {
   double p[8], q[8];
   const int pn = expansion_product(u, un, u, un, p);

@@ -305,12 +305,8 @@ int orient2d_expansion(const Point2& a, const Point2& b, const Point2& c)
   const int acyn = diff_expansion(a.y, c.y, acy);
   const int bcxn = diff_expansion(b.x, c.x, bcx);
   const int bcyn = diff_expansion(b.y, c.y, bcy);
-  double left[8], right[8], det[16];
-  const int ln = expansion_product(acx, acxn, bcy, bcyn, left);
-  const int rn = expansion_product(acy, acyn, bcx, bcxn, right);
-  negate(right, rn);
-  const int n = expansion_sum(left, ln, right, rn, det);
-  return expansion_sign(det, n);
+  double det[16];
+  return expansion_sign(det, cross_expansion(acx, acxn, bcy, bcyn, acy, acyn, bcx, bcxn, det));
 }
 
 // The incircle determinant from the exact offsets (expansions of length <= 2) of a, b, c from d.
