@@ -32,6 +32,9 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "data")
+sys.path.insert(0, HERE)
+
+import csv_input  # noqa: E402 (the examples' CSV reading, beside this script)
 
 
 def decimal_time(year, month):
@@ -53,15 +56,13 @@ def read_gauges(path):
     ids, names = vtkStringArray(), vtkStringArray()
     ids.SetName("station_id")
     names.SetName("name")
-    with open(path, newline="") as f:
-        for line, row in enumerate(csv.DictReader(f), start=2):
-            try:
-                lon, lat = float(row["lon"]), float(row["lat"])
-            except (KeyError, ValueError) as error:
-                sys.exit(f"{path}:{line}: station {row.get('station_id')!r}: bad coordinate ({error})")
-            points.InsertNextPoint(lon, lat, 0.0)
-            ids.InsertNextValue(row["station_id"].strip())
-            names.InsertNextValue(row.get("name", "").strip())
+    for line, row in csv_input.rows(path, ("station_id", "lon", "lat"), "stations"):
+        station = csv_input.text(row, "station_id", path, line)
+        lon = csv_input.number(row, "lon", path, line)
+        lat = csv_input.number(row, "lat", path, line)
+        points.InsertNextPoint(lon, lat, 0.0)
+        ids.InsertNextValue(station)
+        names.InsertNextValue((row.get("name") or "").strip())
     gauges = vtkPolyData()
     gauges.SetPoints(points)
     gauges.GetPointData().AddArray(ids)
@@ -80,21 +81,54 @@ def read_observations(path):
     stations.SetName("station_id")
     times.SetName("time")
     values.SetName("precip")
-    with open(path, newline="") as f:
-        for line, row in enumerate(csv.DictReader(f), start=2):
-            try:
-                t = decimal_time(int(row["year"]), int(row["month"]))
-                v = float(row["precip"])
-            except (KeyError, ValueError) as error:
-                sys.exit(f"{path}:{line}: bad observation ({error})")
-            stations.InsertNextValue(row["station_id"].strip())
-            reporting.setdefault(year_month(t), set()).add(row["station_id"].strip())
-            times.InsertNextValue(t)
-            values.InsertNextValue(v)
+    unrecorded = 0
+    for line, row in csv_input.rows(path, ("station_id", "year", "month", "precip"), "observations"):
+        station = csv_input.text(row, "station_id", path, line)
+        t = decimal_time(csv_input.integer(row, "year", path, line, 1, 9999),
+                         csv_input.integer(row, "month", path, line, 1, 12))
+        # A missing value stays in the table as NaN: the gauge does not report that month (the
+        # filter drops it for that step), and the month remains a step even if no gauge reports.
+        value = math.nan
+        if csv_input.is_missing(row.get("precip")):
+            unrecorded += 1
+        else:
+            value = csv_input.number(row, "precip", path, line)
+            reporting.setdefault(year_month(t), set()).add(station)
+        stations.InsertNextValue(station)
+        times.InsertNextValue(t)
+        values.InsertNextValue(value)
+    if unrecorded:
+        print(f"{path}: {unrecorded} observation(s) without a value (empty, NA, NaN or null) "
+              "count as missing", file=sys.stderr)
     table = vtkTable()
     for column in (stations, times, values):
         table.AddColumn(column)
     return table, reporting
+
+
+def read_catchment(path):
+    """The catchment's polygons (a multiblock from vtkGDALVectorReader); ends the script naming
+    the file when it is missing, unreadable or holds no polygon."""
+    from vtkmodules.vtkCommonCore import vtkCommand
+    from vtkmodules.vtkIOGDAL import vtkGDALVectorReader
+
+    if not os.path.isfile(path):
+        csv_input.fail(f"{path}: no such catchment file")
+    reader = vtkGDALVectorReader()
+    errors = []
+    reader.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: errors.append(event))
+    reader.SetFileName(path)
+    reader.Update()
+    output = reader.GetOutput()
+    blocks = output.GetNumberOfBlocks() if output else 0
+    # GDAL gives a polygon's rings as polygons or as closed lines; the filter reads both.
+    polygons = sum(block.GetNumberOfPolys() + block.GetNumberOfLines()
+                   for block in (output.GetBlock(b) for b in range(blocks))
+                   if block is not None and block.IsA("vtkPolyData"))
+    if errors or polygons == 0:
+        csv_input.fail(f"{path}: GDAL read no polygon from the catchment file "
+                       "(expected a GeoJSON or shapefile polygon in lon/lat)")
+    return reader
 
 
 class Progress:
@@ -151,7 +185,7 @@ def write_weights(per_gauge, gauges, path):
         for g in sorted(per_gauge, key=lambda g: -per_gauge[g]["weight"]):
             lon, lat, _ = gauges.GetPoint(g)
             e = per_gauge[g]
-            out.writerow([ids.GetValue(g), names.GetValue(g), lon, lat, f"{e['weight']:.10f}",
+            out.writerow([ids.GetValue(g), names.GetValue(g), lon, lat, f"{e['weight']:.15g}",
                           f"{e['area'] / 1e6:.4f}", e["value"]])
 
 
@@ -218,8 +252,12 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", default="out", help="output directory (created if missing)")
     parser.add_argument("--month", default="1963-08", help="month for the weights, tiles and map, YYYY-MM")
-    parser.add_argument("--stations", default=os.path.join(DATA, "colorado_stations.csv"))
-    parser.add_argument("--observations", default=os.path.join(DATA, "colorado_monthly_precip.csv"))
+    parser.add_argument("--stations", default=os.path.join(DATA, "colorado_stations.csv"),
+                        help="CSV of gauges: columns station_id, lon, lat (degrees, WGS84), "
+                             "optional name")
+    parser.add_argument("--observations", default=os.path.join(DATA, "colorado_monthly_precip.csv"),
+                        help="CSV of monthly values, one row per gauge and month: columns "
+                             "station_id, year, month, precip (empty, NA, NaN or null = missing)")
     parser.add_argument("--catchment", default=os.path.join(DATA, "colorado_boundary.geojson"),
                         help="catchment polygon (GeoJSON or shapefile, lon/lat)")
     parser.add_argument("--no-plots", action="store_true", help="skip the PNG files")
@@ -232,18 +270,15 @@ def main(argv=None):
         sys.exit(f"--month {args.month!r}: expected YYYY-MM")
 
     from vtkmodules.vtkCommonCore import vtkCommand
-    from vtkmodules.vtkIOGDAL import vtkGDALVectorReader
     from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
-    from tessera import vtkThiessenArealAverage
+    vtkThiessenArealAverage = csv_input.import_tessera().vtkThiessenArealAverage
 
     os.makedirs(args.out, exist_ok=True)
     started = time.time()
     gauges = read_gauges(args.stations)
     observations, reporting_ids = read_observations(args.observations)
-    catchment = vtkGDALVectorReader()
-    catchment.SetFileName(args.catchment)
-    catchment.Update()
+    catchment = read_catchment(args.catchment)
     print(f"read {gauges.GetNumberOfPoints()} gauges and {observations.GetNumberOfRows()} "
           f"observations in {time.time() - started:.1f} s", file=sys.stderr)
 
@@ -290,8 +325,8 @@ def main(argv=None):
         plot_series(rows, os.path.join(args.out, "areal_mean.png"))
 
     valid = [r[4] for r in rows if not math.isnan(r[4])]
-    print(f"{len(rows)} months, {len(valid)} with data; mean of the monthly areal means "
-          f"{sum(valid) / len(valid):.3f}")
+    print(f"{len(rows)} months, {len(valid)} with data"
+          + (f"; mean of the monthly areal means {sum(valid) / len(valid):.3f}" if valid else ""))
     print(f"{year}-{month:02d}: areal mean {row[4]:.3f}, {row[2]} gauges reported, "
           f"{row[3]} weighted; weights sum to {sum(e['weight'] for e in per_gauge.values()):.12f}")
     print(f"wrote {args.out}/areal_mean.csv, weights_{tag}.csv, tiles_{tag}.vtp"

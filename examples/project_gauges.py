@@ -2,7 +2,7 @@
 """Project rain gauges given in longitude/latitude to a plane with Tessera's
 vtkGeographicProjection, and write them out.
 
-Reads a CSV with columns station_id, name, lon, lat, elev_m (default: the 376 Colorado gauges in
+Reads a CSV with columns station_id, lon, lat and optional name, elev_m (default: the 376 Colorado gauges in
 examples/data/colorado_stations.csv) and writes into --out:
   gauges_projected.vtp   the gauges as VTK points (x, y in metres, z = elevation), with point data
                          StationId, Name, Longitude, Latitude, and field data TesseraProjection;
@@ -17,6 +17,10 @@ import os
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+import csv_input  # noqa: E402 (the examples' CSV reading, beside this script)
+
 PROJECTIONS = {
     "automatic": "SetProjectionToAutomatic",
     "albers": "SetProjectionToAlbersEqualArea",
@@ -40,22 +44,17 @@ def read_gauges(path):
     lon_array, lat_array = vtkDoubleArray(), vtkDoubleArray()
     lon_array.SetName("Longitude")
     lat_array.SetName("Latitude")
-    with open(path, newline="") as f:
-        reader = csv.DictReader(f)
-        for column in ("station_id", "lon", "lat"):
-            if column not in (reader.fieldnames or []):
-                sys.exit(f"{path}: no column '{column}' (columns: {reader.fieldnames})")
-        for line, row in enumerate(reader, start=2):
-            try:
-                lon, lat = float(row["lon"]), float(row["lat"])
-                elev = float(row.get("elev_m") or 0.0)
-            except ValueError as error:
-                sys.exit(f"{path}:{line}: station {row.get('station_id')!r}: {error}")
-            points.InsertNextPoint(lon, lat, elev)
-            ids.InsertNextValue(row["station_id"])
-            names.InsertNextValue((row.get("name") or "").strip())
-            lon_array.InsertNextValue(lon)
-            lat_array.InsertNextValue(lat)
+    for line, row in csv_input.rows(path, ("station_id", "lon", "lat"), "stations"):
+        station = csv_input.text(row, "station_id", path, line)
+        lon = csv_input.number(row, "lon", path, line)
+        lat = csv_input.number(row, "lat", path, line)
+        missing_elevation = csv_input.is_missing(row.get("elev_m"))
+        elev = 0.0 if missing_elevation else csv_input.number(row, "elev_m", path, line)
+        points.InsertNextPoint(lon, lat, elev)
+        ids.InsertNextValue(station)
+        names.InsertNextValue((row.get("name") or "").strip())
+        lon_array.InsertNextValue(lon)
+        lat_array.InsertNextValue(lat)
     gauges = vtkPolyData()
     gauges.SetPoints(points)
     verts = vtkCellArray()
@@ -71,7 +70,7 @@ def read_gauges(path):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--stations", default=os.path.join(HERE, "data", "colorado_stations.csv"),
-                        help="CSV of gauges (station_id, name, lon, lat, elev_m)")
+                        help="CSV of gauges: columns station_id, lon, lat (degrees), optional name, elev_m")
     parser.add_argument("--projection", choices=sorted(PROJECTIONS), default="automatic",
                         help="map projection (default: automatic Albers equal-area)")
     parser.add_argument("--out", default="out", help="output directory (created if missing)")
@@ -79,7 +78,7 @@ def main(argv=None):
     # Imported after parsing so that --help works without VTK on the path.
     from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
-    from tessera import vtkGeographicProjection
+    vtkGeographicProjection = csv_input.import_tessera().vtkGeographicProjection
 
     gauges = read_gauges(args.stations)
     projection = vtkGeographicProjection()

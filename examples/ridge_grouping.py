@@ -17,11 +17,13 @@ Run with Debian's /usr/bin/python3 and PYTHONPATH=build/python.
 """
 
 import argparse
-import csv
 import os
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+import csv_input  # noqa: E402 (the examples' CSV reading, beside this script)
 
 
 def read_quakes(path):
@@ -33,14 +35,11 @@ def read_quakes(path):
     depth, mag = vtkDoubleArray(), vtkDoubleArray()
     depth.SetName("depth_km")
     mag.SetName("mag")
-    with open(path, newline="") as f:
-        for line, row in enumerate(csv.DictReader(f), start=2):
-            try:
-                points.InsertNextPoint(float(row["long"]), float(row["lat"]), 0.0)
-                depth.InsertNextValue(float(row["depth"]))
-                mag.InsertNextValue(float(row["mag"]))
-            except (KeyError, ValueError) as error:
-                sys.exit(f"{path}:{line}: bad row ({error})")
+    for line, row in csv_input.rows(path, ("lat", "long", "depth", "mag"), "epicentres"):
+        lon, lat = csv_input.number(row, "long", path, line), csv_input.number(row, "lat", path, line)
+        points.InsertNextPoint(lon, lat, 0.0)
+        depth.InsertNextValue(csv_input.number(row, "depth", path, line))
+        mag.InsertNextValue(csv_input.number(row, "mag", path, line))
     data = vtkPolyData()
     data.SetPoints(points)
     data.GetPointData().AddArray(depth)
@@ -58,7 +57,8 @@ def polylines(data):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--quakes", default=os.path.join(HERE, "data", "fiji_quakes.csv"))
+    parser.add_argument("--quakes", default=os.path.join(HERE, "data", "fiji_quakes.csv"),
+                        help="CSV of epicentres: columns lat, long (degrees), depth, mag")
     parser.add_argument("--out", default="out", help="output directory")
     parser.add_argument("--width", type=float, default=4.0, help="basis width in pixels")
     parser.add_argument("--image-size", type=int, default=0, help="pixels along the longer side (0 = automatic)")
@@ -70,7 +70,8 @@ def main(argv=None):
 
     from vtkmodules.vtkIOXML import vtkXMLImageDataWriter, vtkXMLPolyDataWriter
 
-    from tessera import vtkGeographicProjection, vtkRidgeGrouping
+    tessera = csv_input.import_tessera()
+    vtkGeographicProjection, vtkRidgeGrouping = tessera.vtkGeographicProjection, tessera.vtkRidgeGrouping
 
     quakes = read_quakes(args.quakes)
     projection = vtkGeographicProjection()

@@ -1,0 +1,193 @@
+"""The examples as a user runs them (examples/*.py with Debian's /usr/bin/python3): the Colorado
+main job's files agree with the raw data and with each other, the other two examples run on their
+data, and a user's bad files end the run with one line naming the file, line and column, never a
+traceback."""
+
+import csv
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+from tessera_testing import EXAMPLE_DATA, SOURCE_DIR, assert_close, assert_that, run
+
+EXAMPLES = os.path.join(SOURCE_DIR, "examples")
+MONTH = (1963, 8)
+
+
+def run_example(script, *arguments):
+    """Runs examples/<script> with the arguments; returns (exit status, stdout, stderr)."""
+    done = subprocess.run([sys.executable, os.path.join(EXAMPLES, script), *arguments],
+                          capture_output=True, text=True, timeout=300)
+    return done.returncode, done.stdout, done.stderr
+
+
+def read_csv(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def is_png(path):
+    with open(path, "rb") as f:
+        return f.read(8) == b"\x89PNG\r\n\x1a\n"
+
+
+def raw_reporting_counts():
+    """Independently of the script: how many gauges of the stations file have a value in each
+    (year, month) of the observations file."""
+    known = {row["station_id"].strip() for row in read_csv(os.path.join(EXAMPLE_DATA, "colorado_stations.csv"))}
+    reporting = {}
+    for row in read_csv(os.path.join(EXAMPLE_DATA, "colorado_monthly_precip.csv")):
+        if row["precip"].strip() and row["station_id"].strip() in known:
+            reporting.setdefault((int(row["year"]), int(row["month"])), set()).add(row["station_id"].strip())
+    return {month: len(ids) for month, ids in reporting.items()}
+
+
+def test_the_colorado_main_job():
+    with tempfile.TemporaryDirectory() as out:
+        status, stdout, stderr = run_example("colorado_areal_precipitation.py", "--out", out,
+                                             "--month", "%04d-%02d" % MONTH)
+        assert_that(status == 0, f"the main job failed ({status}): {stderr}")
+        rows = read_csv(os.path.join(out, "areal_mean.csv"))
+        assert_that(list(rows[0]) == ["year", "month", "stations_used", "stations_weighted", "areal_mean"],
+                    f"areal_mean.csv columns: {list(rows[0])}")
+        months = [(int(r["year"]), int(r["month"])) for r in rows]
+        expected = [(y, m) for y in range(1895, 1998) for m in range(1, 13)]
+        assert_that(months == expected, "areal_mean.csv does not hold the 1236 months 1895-01 .. 1997-12")
+        counts = raw_reporting_counts()
+        for r, month in zip(rows, months):
+            assert_that(int(r["stations_used"]) == counts.get(month, 0),
+                        f"{month}: stations_used {r['stations_used']}, the data has {counts.get(month, 0)}")
+            assert_that(0 < int(r["stations_weighted"]) <= int(r["stations_used"]),
+                        f"{month}: stations_weighted {r['stations_weighted']} of {r['stations_used']}")
+        row = rows[months.index(MONTH)]
+
+        tag = "%04d_%02d" % MONTH
+        weights = read_csv(os.path.join(out, f"weights_{tag}.csv"))
+        total = sum(float(w["weight"]) for w in weights)
+        assert_close(total, 1.0, 1e-12, "the month's weights sum (15 digits each)")
+        weighted = [w for w in weights if float(w["weight"]) > 0.0]
+        assert_that(len(weighted) == int(row["stations_weighted"]),
+                    f"{len(weighted)} gauges with a weight, areal_mean.csv says {row['stations_weighted']}")
+        mean = sum(float(w["weight"]) * float(w["precip"]) for w in weighted)
+        assert_close(mean, float(row["areal_mean"]), 1e-6, "sum of weight x precip against areal_mean")
+
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+
+        reader = vtkXMLPolyDataReader()
+        reader.SetFileName(os.path.join(out, f"tiles_{tag}.vtp"))
+        reader.Update()
+        tiles = reader.GetOutput()
+        ids, weight = tiles.GetCellData().GetAbstractArray("StationId"), tiles.GetCellData().GetArray("Weight")
+        per_station = {}
+        for c in range(tiles.GetNumberOfCells()):
+            per_station[ids.GetValue(c)] = per_station.get(ids.GetValue(c), 0.0) + weight.GetValue(c)
+        for w in weighted:
+            assert_close(per_station.get(w["station_id"], 0.0), float(w["weight"]), 1e-14,
+                         f"station {w['station_id']}: tiles' Weight against weights_{tag}.csv")
+        for name in (f"map_{tag}.png", "areal_mean.png"):
+            assert_that(is_png(os.path.join(out, name)), f"{name} is not a PNG file")
+        assert_that("1236 months" in stdout, f"summary line: {stdout}")
+
+
+def test_missing_values_keep_their_months():
+    with tempfile.TemporaryDirectory() as out:
+        observations = os.path.join(out, "obs.csv")
+        with open(observations, "w") as f:
+            f.write("station_id,year,month,precip\n050848,1950,1,\n050848,1950,2,NA\n"
+                    "051294,1950,2,n/a\n050848,1950,3,2.5\n051294,1950,3,null\n")
+        status, stdout, stderr = run_example("colorado_areal_precipitation.py", "--out", out,
+                                             "--observations", observations, "--month", "1950-03",
+                                             "--no-plots")
+        assert_that(status == 0, f"failed ({status}): {stderr}")
+        assert_that("4 observation(s) without a value" in stderr, f"missing values not reported: {stderr}")
+        rows = read_csv(os.path.join(out, "areal_mean.csv"))
+        got = [(r["month"], r["stations_used"], r["areal_mean"]) for r in rows]
+        assert_that(got == [("1", "0", ""), ("2", "0", ""), ("3", "1", "2.500000")],
+                    f"months with missing values: {got}")
+
+
+def test_bad_files_are_named():
+    with tempfile.TemporaryDirectory() as out:
+        def write(name, text):
+            path = os.path.join(out, name)
+            with open(path, "w") as f:
+                f.write(text)
+            return path
+
+        stations_id = write("id.csv", "id,lon,lat\n1,-105,39\n")
+        stations_lat = write("lat.csv", "station_id,lon,lat\nA,-105,39\nB,-104,north\n")
+        month = write("month.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,13,1\n")
+        value = write("value.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,1,5\n")
+        value2 = write("value2.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,x\n")
+        empty_id = write("empty_id.csv", "station_id,year,month,precip\n ,1950,1,1\n")
+        not_polygon = write("catchment.geojson", "{}\n")
+        missing = os.path.join(out, "absent.csv")
+        cases = [
+            (("--stations", stations_id), [stations_id, "no column 'station_id'", "id, lon, lat"]),
+            (("--stations", stations_lat), [stations_lat + ":3", "'lat'", "'north' is not a number"]),
+            (("--stations", missing), [missing, "cannot read the stations file"]),
+            (("--observations", month), [month + ":3", "'month'", "13 is outside 1..12"]),
+            (("--observations", value2), [value2 + ":3", "'precip'", "'x' is not a number"]),
+            (("--observations", empty_id), [empty_id + ":2", "'station_id' is empty"]),
+            (("--catchment", not_polygon), [not_polygon, "no polygon"]),
+            (("--catchment", missing), [missing, "no such catchment file"]),
+            (("--month", "1963-13"), ["--month", "YYYY-MM"]),
+        ]
+        for arguments, fragments in cases:
+            status, _, stderr = run_example("colorado_areal_precipitation.py", "--out", out, "--no-plots",
+                                            *arguments)
+            assert_that(status == 1, f"{arguments}: exit status {status}, expected 1")
+            assert_that("Traceback" not in stderr, f"{arguments}: a traceback instead of a message: {stderr}")
+            for fragment in fragments:
+                assert_that(fragment in stderr, f"{arguments}: {fragment!r} not in {stderr!r}")
+        short = write("short.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2\n")
+        for path, fields in ((value, 5), (short, 3)):
+            status, _, stderr = run_example("colorado_areal_precipitation.py", "--out", out, "--no-plots",
+                                            "--observations", path)
+            expected = f"{path}:3: {fields} field(s) where the header has 4"
+            assert_that(status == 1 and expected in stderr, f"{path}: {status} {stderr!r}")
+
+def test_the_other_examples_run_on_their_data():
+    with tempfile.TemporaryDirectory() as out:
+        status, _, stderr = run_example("project_gauges.py", "--out", out)
+        assert_that(status == 0, f"project_gauges.py failed: {stderr}")
+        projected = read_csv(os.path.join(out, "gauges_projected.csv"))
+        stations = read_csv(os.path.join(EXAMPLE_DATA, "colorado_stations.csv"))
+        assert_that(len(projected) == len(stations) == 376, f"{len(projected)} projected gauges")
+        assert_that(all(math.isfinite(float(r["x_m"])) and math.isfinite(float(r["y_m"])) for r in projected),
+                    "a projected coordinate is not finite")
+        status, stdout, stderr = run_example("ridge_grouping.py", "--out", out)
+        assert_that(status == 0, f"ridge_grouping.py failed: {stderr}")
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+
+        reader = vtkXMLPolyDataReader()
+        reader.SetFileName(os.path.join(out, "fiji_points.vtp"))
+        reader.Update()
+        points = reader.GetOutput()
+        groups = points.GetPointData().GetArray("GroupId")
+        assert_that(points.GetNumberOfPoints() == 1000 and groups is not None, "fiji_points.vtp")
+        found = {groups.GetValue(i) for i in range(points.GetNumberOfPoints())} - {-1}
+        assert_that(len(found) >= 2, f"the epicentres fall into {len(found)} group(s)")
+        assert_that(is_png(os.path.join(out, "fiji_groups.png")), "fiji_groups.png is not a PNG file")
+        quakes = os.path.join(out, "quakes.csv")
+        with open(quakes, "w") as f:
+            f.write("lat,lon\n1,2\n")
+        status, _, stderr = run_example("ridge_grouping.py", "--out", out, "--quakes", quakes)
+        assert_that(status == 1 and "no column 'long', 'depth', 'mag'" in stderr, f"ridge_grouping.py: {stderr}")
+
+
+def test_without_tessera_on_the_path_the_scripts_say_how_to_run():
+    environment = dict(os.environ, PYTHONPATH="")
+    done = subprocess.run([sys.executable, os.path.join(EXAMPLES, "project_gauges.py"), "--out",
+                           tempfile.gettempdir()], capture_output=True, text=True, env=environment,
+                          timeout=60)
+    assert_that(done.returncode == 1 and "PYTHONPATH=build/python" in done.stderr
+                and "Traceback" not in done.stderr, f"without PYTHONPATH: {done.returncode} {done.stderr}")
+
+
+if __name__ == "__main__":
+    run([test_the_colorado_main_job, test_missing_values_keep_their_months, test_bad_files_are_named,
+         test_the_other_examples_run_on_their_data,
+         test_without_tessera_on_the_path_the_scripts_say_how_to_run])
