@@ -23,12 +23,14 @@
 
 #include "TesseraFilterUtilities.h"
 #include "areal_average.h"
+#include "decimal_time.h"
 #include "errors.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
@@ -68,28 +70,95 @@ std::string ListIds(const std::vector<std::string>& ids)
   return out.str();
 }
 
-/// Unique sorted times of the observations table's time column.
-std::vector<double> ReadTimes(vtkTable* table, const std::string& column)
+/// The column of the observations table, or an InputError naming it and what it should hold.
+vtkAbstractArray* ObservationColumn(vtkTable* table, const std::string& column, const char* holds)
 {
-  auto* times = vtkDataArray::SafeDownCast(table->GetColumnByName(column.c_str()));
-  if (!times)
+  vtkAbstractArray* array = table->GetColumnByName(column.c_str());
+  if (!array || array->GetNumberOfComponents() != 1)
   {
-    throw tessera::InputError("the observations table has no numeric column '" + column + "'");
+    throw tessera::InputError(
+      "the observations table has no column '" + column + "' (" + holds + ")");
   }
-  std::vector<double> unique(static_cast<std::size_t>(times->GetNumberOfTuples()));
+  return array;
+}
+
+/// A number of a column (numeric, or text that reads as one); NaN when it is neither.
+double ColumnNumber(vtkAbstractArray* array, vtkIdType row)
+{
+  if (auto* numbers = vtkDataArray::SafeDownCast(array))
+  {
+    return numbers->GetTuple1(row);
+  }
+  bool valid = false;
+  const double value = array->GetVariantValue(row).ToDouble(&valid);
+  return valid ? value : std::numeric_limits<double>::quiet_NaN();
+}
+
+/// The time of each row of the observations table (decimal_time.h): the time column's numbers,
+/// its text read as ISO dates (YYYY, YYYY-MM, YYYY-MM-DD, optionally with a time of day), or, with
+/// a month column, the time column's year plus the month's twelfth.
+std::vector<double> ReadRowTimes(vtkTable* table,
+  const std::string& timeColumn,
+  const std::string& monthColumn)
+{
+  const bool byMonth = !monthColumn.empty();
+  vtkAbstractArray* times = ObservationColumn(table,
+    timeColumn,
+    byMonth ? "years" : "numbers, or dates as text such as 1963-08 or 1963-08-16");
+  vtkAbstractArray* months =
+    byMonth ? ObservationColumn(table, monthColumn, "months 1 .. 12") : nullptr;
+  const bool dates = !byMonth && !vtkDataArray::SafeDownCast(times);
+  std::vector<double> rowTimes(static_cast<std::size_t>(times->GetNumberOfTuples()));
+  const auto fail = [](vtkIdType row, const std::string& what)
+  {
+    std::ostringstream message;
+    message << "observation row " << row << ": " << what;
+    throw tessera::InputError(message.str());
+  };
   for (vtkIdType r = 0; r < times->GetNumberOfTuples(); ++r)
   {
-    unique[r] = times->GetTuple1(r);
-    if (!std::isfinite(unique[r]))
+    if (dates)
     {
-      std::ostringstream message;
-      message << "observation row " << r << " has a non-finite time " << unique[r];
-      throw tessera::InputError(message.str());
+      const std::string text = times->GetVariantValue(r).ToString();
+      const std::optional<double> t = tessera::IsoDateTime(text);
+      if (!t)
+      {
+        fail(r,
+          "'" + text + "' in column '" + timeColumn +
+            "' is not a date (YYYY, YYYY-MM or YYYY-MM-DD, optionally with hh:mm[:ss])");
+      }
+      rowTimes[r] = *t;
+      continue;
+    }
+    const double t = ColumnNumber(times, r);
+    if (!std::isfinite(t))
+    {
+      fail(r,
+        "the time '" + times->GetVariantValue(r).ToString() + "' in column '" + timeColumn +
+          "' is not a finite number");
+    }
+    rowTimes[r] = t;
+    if (byMonth)
+    {
+      const double month = ColumnNumber(months, r);
+      if (!(month >= 1.0 && month <= 12.0 && month == std::floor(month)))
+      {
+        fail(r,
+          "the month " + months->GetVariantValue(r).ToString() + " in column '" + monthColumn +
+            "' is not 1 .. 12");
+      }
+      rowTimes[r] = tessera::MonthTime(t, static_cast<int>(month));
     }
   }
-  std::sort(unique.begin(), unique.end());
-  unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
-  return unique;
+  return rowTimes;
+}
+
+/// The distinct times, ascending.
+std::vector<double> UniqueTimes(std::vector<double> times)
+{
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
 }
 
 /// The modification time of a table's column, 0 when it has none.
@@ -110,38 +179,49 @@ struct vtkThiessenArealAverage::Internals
   vtkNew<vtkTable> Summary;
 
   /// The observation times read (and validated) by RequestInformation, with what they were read
-  /// from, so that Build reuses them while the table and the time column are unchanged.
+  /// from, so that Build reuses them while the table and the time columns are unchanged.
   struct TimesCache
   {
     vtkTable* Table = nullptr; // compared only, never dereferenced; null: nothing cached
     vtkMTimeType TableMTime = 0;
-    vtkMTimeType ColumnMTime = 0;
-    std::string Column;
-    std::vector<double> Times;
+    vtkMTimeType ColumnMTimes[2] = { 0, 0 };
+    std::string Columns[2];
+    std::vector<double> RowTimes; // per row of the table
+    std::vector<double> Times;    // distinct, ascending: the time steps
   } ReadTimesCache;
 
-  /// ReadTimes(table, column), from the cache when it was read from this table, unchanged since.
-  const std::vector<double>& CachedReadTimes(vtkTable* table, const std::string& column);
+  /// ReadRowTimes(table, timeColumn, monthColumn) and its distinct times, from the cache when
+  /// they were read from this table, unchanged since.
+  const TimesCache& CachedReadTimes(vtkTable* table,
+    const std::string& timeColumn,
+    const std::string& monthColumn);
 };
 
-const std::vector<double>& vtkThiessenArealAverage::Internals::CachedReadTimes(vtkTable* table,
-  const std::string& column)
+const vtkThiessenArealAverage::Internals::TimesCache&
+vtkThiessenArealAverage::Internals::CachedReadTimes(vtkTable* table,
+  const std::string& timeColumn,
+  const std::string& monthColumn)
 {
   TimesCache& cache = this->ReadTimesCache;
   const vtkMTimeType tableMTime = table->GetMTime();
-  const vtkMTimeType columnMTime = ColumnMTime(table, column);
-  if (cache.Table == table && cache.TableMTime == tableMTime && cache.ColumnMTime == columnMTime &&
-    cache.Column == column)
+  const vtkMTimeType columnMTimes[2] = { ColumnMTime(table, timeColumn),
+    monthColumn.empty() ? 0 : ColumnMTime(table, monthColumn) };
+  if (cache.Table == table && cache.TableMTime == tableMTime &&
+    cache.ColumnMTimes[0] == columnMTimes[0] && cache.ColumnMTimes[1] == columnMTimes[1] &&
+    cache.Columns[0] == timeColumn && cache.Columns[1] == monthColumn)
   {
-    return cache.Times;
+    return cache;
   }
   cache.Table = nullptr; // until the read succeeds (it throws on bad times)
-  cache.Times = ReadTimes(table, column);
+  cache.RowTimes = ReadRowTimes(table, timeColumn, monthColumn);
+  cache.Times = UniqueTimes(cache.RowTimes);
   cache.Table = table;
   cache.TableMTime = tableMTime;
-  cache.ColumnMTime = columnMTime;
-  cache.Column = column;
-  return cache.Times;
+  cache.ColumnMTimes[0] = columnMTimes[0];
+  cache.ColumnMTimes[1] = columnMTimes[1];
+  cache.Columns[0] = timeColumn;
+  cache.Columns[1] = monthColumn;
+  return cache;
 }
 
 //------------------------------------------------------------------------------
@@ -208,7 +288,8 @@ int vtkThiessenArealAverage::RequestInformation(vtkInformation*,
   }
   try
   {
-    const std::vector<double>& times = this->Internal->CachedReadTimes(table, this->TimeColumn);
+    const std::vector<double>& times =
+      this->Internal->CachedReadTimes(table, this->TimeColumn, this->MonthColumn).Times;
     if (!times.empty())
     {
       outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(),
@@ -319,22 +400,23 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   std::vector<std::string> unknownStations;
   if (observations)
   {
-    vtkAbstractArray* stations = observations->GetColumnByName(this->StationColumn.c_str());
-    auto* times =
-      vtkDataArray::SafeDownCast(observations->GetColumnByName(this->TimeColumn.c_str()));
-    auto* values =
-      vtkDataArray::SafeDownCast(observations->GetColumnByName(this->ValueColumn.c_str()));
-    if (!stations || !times || !values)
+    vtkAbstractArray* stations =
+      ObservationColumn(observations, this->StationColumn, "station ids, numbers or text");
+    auto* values = vtkDataArray::SafeDownCast(
+      ObservationColumn(observations, this->ValueColumn, "numbers; NaN where missing"));
+    if (!values)
     {
-      throw tessera::InputError("the observations table needs columns '" + this->StationColumn +
-        "', '" + this->TimeColumn + "' (numeric) and '" + this->ValueColumn + "' (numeric)");
+      throw tessera::InputError("the observations column '" + this->ValueColumn +
+        "' holds text: the values must be numbers (NaN where missing)");
     }
     std::unordered_map<std::string, std::size_t> gaugeOf;
     for (std::size_t g = 0; g < gaugeCount; ++g)
     {
       gaugeOf.emplace(StationKey(stationIds->GetVariantValue(static_cast<vtkIdType>(g))), g);
     }
-    in.Times = in.CachedReadTimes(observations, this->TimeColumn);
+    const Internals::TimesCache& read =
+      in.CachedReadTimes(observations, this->TimeColumn, this->MonthColumn);
+    in.Times = read.Times;
     in.Values.assign(in.Times.size(), std::vector<double>(gaugeCount, missing));
     std::unordered_map<std::string, bool> reportedUnknown;
     for (vtkIdType r = 0; r < observations->GetNumberOfRows(); ++r)
@@ -357,7 +439,9 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
         throw tessera::InputError(message.str());
       }
       const std::size_t step = static_cast<std::size_t>(
-        std::lower_bound(in.Times.begin(), in.Times.end(), times->GetTuple1(r)) - in.Times.begin());
+        std::lower_bound(
+          in.Times.begin(), in.Times.end(), read.RowTimes[static_cast<std::size_t>(r)]) -
+        in.Times.begin());
       double& slot = in.Values[step][gauge->second];
       if (std::isnan(slot))
       {
@@ -541,6 +625,7 @@ void vtkThiessenArealAverage::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ValueArrayName: " << this->ValueArrayName << "\n";
   os << indent << "StationColumn: " << this->StationColumn << "\n";
   os << indent << "TimeColumn: " << this->TimeColumn << "\n";
+  os << indent << "MonthColumn: " << this->MonthColumn << "\n";
   os << indent << "ValueColumn: " << this->ValueColumn << "\n";
   os << indent << "ProjectionRecord: " << this->ProjectionRecord << "\n";
   os << indent << "AreaMethod: " << this->AreaMethod << "\n";

@@ -19,6 +19,12 @@
  * - port 2 (optional), observations: a vtkTable in long format with a station id column, a time
  *   column and a value column (StationColumn, TimeColumn, ValueColumn: defaults "station_id",
  *   "time", "value"). Without it, the gauges' point-data array ValueArrayName is one time step.
+ *   Times are numbers, or text holding ISO dates (YYYY, YYYY-MM, YYYY-MM-DD, optionally with a
+ *   time of day), or a year column with a month column (MonthColumn); dates become decimal years
+ *   on a month grid: 1963-08 (or 1963-08-01, or year 1963 with month 8) is 1963 + 7/12, and a
+ *   day is its share of its month (core/decimal_time.h). A CSV file read by ParaView or
+ *   vtkDelimitedTextReader can thus be used as it is. A row's time that is not a finite number,
+ *   a date or a month 1 .. 12 is an error naming the row.
  * Station ids match as text (leading zeros of integer ids are ignored, so "050109" matches 50109).
  *
  * The projection is vtkGeographicProjection's automatic equal-area conic fitted to the gauges and
@@ -112,6 +118,16 @@ public:
 
   ///@{
   /**
+   * The observations column of months (1 .. 12) when the table gives a row's time as a year
+   * column (TimeColumn, e.g. "year") and a month column (e.g. "month"): the time is then
+   * year + (month - 1) / 12. Empty (default): TimeColumn alone gives the time.
+   */
+  vtkSetStdStringFromCharMacro(MonthColumn);
+  vtkGetCharFromStdStringMacro(MonthColumn);
+  ///@}
+
+  ///@{
+  /**
    * A `TesseraProjection` record ("projection=... lon0=... ..."); empty (default) = automatic.
    */
   vtkSetStdStringFromCharMacro(ProjectionRecord);
@@ -149,6 +165,7 @@ protected:
   std::string StationColumn = "station_id";
   std::string TimeColumn = "time";
   std::string ValueColumn = "value";
+  std::string MonthColumn;
   std::string ProjectionRecord;
   int AreaMethod = AUTOMATIC_AREAS;
 

@@ -1,35 +1,24 @@
 """pvbatch: Filters > Tessera > Thiessen Areal Average on the Colorado gauges, outline and monthly
-table as ParaView reads them; checks the fetched table and the tiles at a requested time."""
+table as ParaView reads them (the table's year and month columns give the steps); checks the
+fetched table and the tiles at a requested time."""
 
 import math
 import os
 import sys
 
 from paraview import servermanager
-from paraview.simple import (CSVReader, LoadPlugin, OpenDataFile, ProgrammableFilter,
-                             TableToPoints, UpdatePipeline)
+from paraview.simple import CSVReader, LoadPlugin, OpenDataFile, TableToPoints
 
 LoadPlugin(os.environ["TESSERA_PLUGIN"], remote=False, ns=globals())
 data = os.path.join(os.environ["TESSERA_SOURCE_DIR"], "examples", "data")
 stations = TableToPoints(Input=CSVReader(FileName=[os.path.join(data, "colorado_stations.csv")]),
                          XColumn="lon", YColumn="lat", ZColumn="elev_m")
 outline = OpenDataFile(os.path.join(data, "colorado_boundary.geojson"))
+# The monthly CSV as ParaView reads it (year and month columns), with no Python in between.
 monthly = CSVReader(FileName=[os.path.join(data, "colorado_monthly_precip.csv")])
-timed = ProgrammableFilter(Input=monthly)
-timed.OutputDataSetType = "vtkTable"
-timed.Script = """
-from vtkmodules.vtkCommonCore import vtkDoubleArray
-table = self.GetTableInput()
-out = self.GetTableOutput()
-out.ShallowCopy(table)
-t = vtkDoubleArray()
-t.SetName("time")
-years, months = table.GetColumnByName("year"), table.GetColumnByName("month")
-for r in range(table.GetNumberOfRows()):
-    t.InsertNextValue(years.GetValue(r) + (months.GetValue(r) - 1) / 12.0)
-out.AddColumn(t)
-"""
-average = ThiessenArealAverage(Gauges=stations, Catchment=outline, Observations=timed)  # noqa: F821
+average = ThiessenArealAverage(Gauges=stations, Catchment=outline, Observations=monthly)  # noqa: F821
+average.TimeColumn = "year"
+average.MonthColumn = "month"
 average.ValueColumn = "precip"
 failures = []
 average.UpdatePipeline(1963 + 7 / 12.0)

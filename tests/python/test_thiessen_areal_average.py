@@ -360,6 +360,104 @@ def test_window_cells_that_are_not_rings_are_reported():
                 f"the polyline reported: {messages}")
 
 
+def dated_table(months, time_of):
+    """observations_table's rows with the time column replaced: time_of(year, month) gives the
+    columns {name: value} (text or number) of each row."""
+    from vtkmodules.vtkCommonCore import vtkIntArray
+
+    table = vtkTable()
+    s, v = vtkStringArray(), vtkDoubleArray()
+    s.SetName("station_id")
+    v.SetName("value")
+    columns = {}
+    for (year, month), values in sorted(months.items()):
+        for sid, value in values.items():
+            s.InsertNextValue(sid)
+            v.InsertNextValue(value)
+            for name, item in time_of(year, month).items():
+                if name not in columns:
+                    columns[name] = vtkStringArray() if isinstance(item, str) else vtkIntArray()
+                    columns[name].SetName(name)
+                columns[name].InsertNextValue(item)
+    for column in (s, v, *columns.values()):
+        table.AddColumn(column)
+    return table
+
+
+def summary_of(coords, ids, ring, table, **settings):
+    f = vtkThiessenArealAverage()
+    messages = messages_of(f)
+    f.SetGaugesData(gauges_polydata(coords, ids))
+    f.SetCatchmentData(polygon([ring]))
+    f.SetObservationsData(table)
+    for name, value in settings.items():
+        getattr(f, "Set" + name)(value)
+    f.Update(1)
+    return f, messages
+
+
+def test_dates_and_year_month_columns_give_the_same_steps():
+    coords, ids, ring, months = read_colorado()
+    numeric, _ = summary_of(coords, ids, ring, observations_table(months))
+    expected = {name: summary_column(numeric, name) for name in ("Time", "ArealMean", "StationsUsed")}
+    cases = {
+        "YYYY-MM text": (lambda y, m: {"date": f"{y:04d}-{m:02d}"}, {"TimeColumn": "date"}),
+        "YYYY-MM-01 text": (lambda y, m: {"date": f"{y:04d}-{m:02d}-01"}, {"TimeColumn": "date"}),
+        "year and month": (lambda y, m: {"year": y, "month": m},
+                           {"TimeColumn": "year", "MonthColumn": "month"}),
+        "year and month as text": (lambda y, m: {"year": str(y), "month": f"{m:02d}"},
+                                   {"TimeColumn": "year", "MonthColumn": "month"}),
+    }
+    for what, (time_of, settings) in cases.items():
+        f, messages = summary_of(coords, ids, ring, dated_table(months, time_of), **settings)
+        assert_that(not messages, f"{what}: {messages}")
+        for name, values in expected.items():
+            got = summary_column(f, name)
+            assert_that(got == values, f"{what}: {name} {got} differs from the numeric times' {values}")
+        steps = f.GetOutputInformation(0).Get(vtkStreamingDemandDrivenPipeline.TIME_STEPS())
+        assert_that(list(steps) == expected["Time"], f"{what}: time steps advertised {steps}")
+
+
+def test_the_monthly_csv_as_a_text_reader_gives_it():
+    # What ParaView's CSV reader hands the filter: year and month as numbers, no time column.
+    from vtkmodules.vtkIOInfovis import vtkDelimitedTextReader
+
+    coords, ids, ring, months = read_colorado()
+    reader = vtkDelimitedTextReader()
+    reader.SetFileName(os.path.join(EXAMPLE_DATA, "colorado_monthly_precip.csv"))
+    reader.SetHaveHeaders(True)
+    reader.SetDetectNumericColumns(True)
+    reader.Update()
+    f, messages = summary_of(coords, ids, ring, reader.GetOutput(), TimeColumn="year",
+                             MonthColumn="month", ValueColumn="precip")
+    assert_that(not messages, f"errors: {messages}")
+    times, means = summary_column(f, "Time"), summary_column(f, "ArealMean")
+    assert_that(len(times) == 1236, f"{len(times)} monthly steps, expected 1236")
+    numeric, _ = summary_of(coords, ids, ring, observations_table(months))
+    for t, mean in zip(summary_column(numeric, "Time"), summary_column(numeric, "ArealMean")):
+        k = times.index(t)
+        assert_close(means[k], mean, 1e-12 * abs(mean), f"month {t}: the whole CSV against 3 months")
+
+
+def test_bad_dates_and_months_are_named():
+    coords, ids, ring, months = read_colorado()
+    one = {(1963, 8): months[(1963, 8)]}
+    cases = [
+        (lambda y, m: {"date": "1963-13"}, {"TimeColumn": "date"},
+         ["observation row 0", "'1963-13'", "column 'date'", "is not a date"]),
+        (lambda y, m: {"year": y, "month": 0}, {"TimeColumn": "year", "MonthColumn": "month"},
+         ["observation row 0", "month 0", "column 'month'", "1 .. 12"]),
+        (lambda y, m: {"year": y}, {"TimeColumn": "year", "MonthColumn": "month"},
+         ["no column 'month'"]),
+        (lambda y, m: {"date": "1963-08"}, {"TimeColumn": "time"}, ["no column 'time'"]),
+    ]
+    for time_of, settings, fragments in cases:
+        f, messages = summary_of(coords, ids, ring, dated_table(one, time_of), **settings)
+        assert_that(messages and all(x in messages[0] for x in fragments),
+                    f"{settings}: expected {fragments} in {messages}")
+        assert_that(f.GetOutputDataObject(1).GetNumberOfRows() == 0, f"{settings}: output not empty")
+
+
 if __name__ == "__main__":
     run([test_four_symmetric_gauges_share_a_square,
          test_colorado_months_match_a_brute_force_raster,
@@ -369,4 +467,7 @@ if __name__ == "__main__":
          test_window_clip_names_a_non_convex_tile,
          test_window_clip_reports_cells_that_are_not_polygons,
          test_window_cells_that_are_not_rings_are_reported,
-         test_window_clip_of_tiles_stored_in_float])
+         test_window_clip_of_tiles_stored_in_float,
+         test_dates_and_year_month_columns_give_the_same_steps,
+         test_the_monthly_csv_as_a_text_reader_gives_it,
+         test_bad_dates_and_months_are_named])

@@ -1,0 +1,136 @@
+// Decimal years on a month grid (decimal_time.h): parsing of ISO 8601 calendar dates.
+#include "decimal_time.h"
+
+#include <cctype>
+
+namespace tessera
+{
+namespace
+{
+
+bool IsLeapYear(int year)
+{
+  return (year % 4 == 0 && year % 100 != 0) || year % 400 == 0;
+}
+
+int DaysInMonth(int year, int month)
+{
+  static constexpr int days[12] = { 31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31 };
+  return month == 2 && IsLeapYear(year) ? 29 : days[month - 1];
+}
+
+/// Reads exactly `digits` decimal digits at text[at ..] into value; advances at.
+bool ReadDigits(std::string_view text, std::size_t& at, int digits, int& value)
+{
+  if (at + static_cast<std::size_t>(digits) > text.size())
+  {
+    return false;
+  }
+  value = 0;
+  for (int k = 0; k < digits; ++k, ++at)
+  {
+    const unsigned char c = static_cast<unsigned char>(text[at]);
+    if (!std::isdigit(c))
+    {
+      return false;
+    }
+    value = 10 * value + (c - '0');
+  }
+  return true;
+}
+
+/// Consumes the character c at text[at] if it is there.
+bool Skip(std::string_view text, std::size_t& at, char c)
+{
+  if (at < text.size() && text[at] == c)
+  {
+    ++at;
+    return true;
+  }
+  return false;
+}
+
+std::string_view Trimmed(std::string_view text)
+{
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front())))
+  {
+    text.remove_prefix(1);
+  }
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
+  {
+    text.remove_suffix(1);
+  }
+  return text;
+}
+
+/// The seconds of a time of day "hh:mm" or "hh:mm:ss" (optional "Z") at text[at ..] to its end.
+std::optional<int> SecondsOfDay(std::string_view text, std::size_t at)
+{
+  int hours = 0, minutes = 0, seconds = 0;
+  if (!ReadDigits(text, at, 2, hours) || !Skip(text, at, ':') ||
+    !ReadDigits(text, at, 2, minutes) || hours > 23 || minutes > 59)
+  {
+    return std::nullopt;
+  }
+  if (Skip(text, at, ':') && (!ReadDigits(text, at, 2, seconds) || seconds > 59))
+  {
+    return std::nullopt;
+  }
+  Skip(text, at, 'Z');
+  if (at != text.size())
+  {
+    return std::nullopt;
+  }
+  return 3600 * hours + 60 * minutes + seconds;
+}
+
+} // namespace
+
+double MonthTime(double year, int month)
+{
+  return year + (month - 1) / 12.0;
+}
+
+std::optional<double> IsoDateTime(std::string_view text)
+{
+  text = Trimmed(text);
+  std::size_t at = 0;
+  int year = 0, month = 1, day = 1;
+  if (!ReadDigits(text, at, 4, year))
+  {
+    return std::nullopt;
+  }
+  if (Skip(text, at, '-') && (!ReadDigits(text, at, 2, month) || month < 1 || month > 12))
+  {
+    return std::nullopt;
+  }
+  if (at > 4 && Skip(text, at, '-') &&
+    (!ReadDigits(text, at, 2, day) || day < 1 || day > DaysInMonth(year, month)))
+  {
+    return std::nullopt;
+  }
+  int seconds = 0;
+  if (at < text.size())
+  {
+    // A time of day only after a full date.
+    const bool fullDate = at == 10;
+    if (!fullDate || !(text[at] == 'T' || text[at] == ' '))
+    {
+      return std::nullopt;
+    }
+    const std::optional<int> ofDay = SecondsOfDay(text, at + 1);
+    if (!ofDay)
+    {
+      return std::nullopt;
+    }
+    seconds = *ofDay;
+  }
+  if (seconds == 0 && day == 1)
+  {
+    return MonthTime(year, month); // bit for bit the value of the year and month columns
+  }
+  const double intoMonth = (day - 1 + seconds / 86400.0) / DaysInMonth(year, month);
+  return year + (month - 1 + intoMonth) / 12.0;
+}
+
+} // namespace tessera

@@ -1,0 +1,26 @@
+#pragma once
+// Calendar dates as the time values of the areal average: decimal years on a month grid. A month
+// is a twelfth of its year whatever its length, and a day a share of its month, so that
+//
+//   1963-08  ->  1963 + 7/12            (the same value as year 1963 with month 8)
+//   1963-08-16  ->  1963 + (7 + 15/31) / 12
+//
+// Monthly series given as year and month columns, as "YYYY-MM" text or as the first day of each
+// month therefore land on the same steps, and daily series stay in calendar order.
+
+#include <optional>
+#include <string_view>
+
+namespace tessera
+{
+
+/// year + (month - 1) / 12, month in 1 .. 12 (not checked).
+double MonthTime(double year, int month);
+
+/// The time of an ISO 8601 calendar date "YYYY", "YYYY-MM" or "YYYY-MM-DD", optionally followed by
+/// a time of day ("T" or a space, then "hh:mm" or "hh:mm:ss", and an optional trailing "Z"), with
+/// spaces around it ignored; nothing when the text is not such a date (a month outside 1 .. 12,
+/// a day beyond its month, an hour beyond 23, ...).
+std::optional<double> IsoDateTime(std::string_view text);
+
+} // namespace tessera

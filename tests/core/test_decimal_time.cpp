@@ -1,0 +1,131 @@
+// Decimal years on a month grid: every day of 1900-2100 (listed by the C library's gmtime, an
+// independent calendar) parses, in calendar order, inside its month's twelfth, with the first of
+// each month equal bit for bit to the year-and-month value; malformed and impossible dates are
+// refused.
+#include "decimal_time.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <ctime>
+#include <string>
+#include <vector>
+
+using tessera::IsoDateTime;
+using tessera::MonthTime;
+
+namespace
+{
+
+struct Day
+{
+  int Year, Month, DayOfMonth, DaysInMonth;
+  std::string Text;
+};
+
+/// Every day from 1900-01-01 to 2100-12-31 from gmtime, with its month's length counted by
+/// walking the days (not from a table).
+std::vector<Day> CalendarDays()
+{
+  std::vector<Day> days;
+  std::tm start{};
+  start.tm_year = 0; // 1900
+  start.tm_mday = 1;
+  const std::time_t first = timegm(&start);
+  for (std::time_t t = first;; t += 86400)
+  {
+    std::tm date{};
+    gmtime_r(&t, &date);
+    if (date.tm_year + 1900 > 2100)
+    {
+      break;
+    }
+    char text[40];
+    std::snprintf(
+      text, sizeof text, "%04d-%02d-%02d", date.tm_year + 1900, date.tm_mon + 1, date.tm_mday);
+    days.push_back({ date.tm_year + 1900, date.tm_mon + 1, date.tm_mday, 0, text });
+  }
+  for (std::size_t k = 0; k < days.size();)
+  {
+    std::size_t end = k;
+    while (end < days.size() && days[end].Month == days[k].Month && days[end].Year == days[k].Year)
+    {
+      ++end;
+    }
+    for (std::size_t j = k; j < end; ++j)
+    {
+      days[j].DaysInMonth = int(end - k);
+    }
+    k = end;
+  }
+  return days;
+}
+
+} // namespace
+
+TEST(DecimalTime, EveryDayOfTwoCenturiesIsInItsMonthAndInOrder)
+{
+  const std::vector<Day> days = CalendarDays();
+  ASSERT_EQ(days.size(), 73414U); // 201 years, 49 of them leap (2000 is, 1900 and 2100 are not)
+  double previous = -1.0;
+  for (const Day& day : days)
+  {
+    const std::optional<double> t = IsoDateTime(day.Text);
+    ASSERT_TRUE(t) << day.Text;
+    const double monthStart = MonthTime(day.Year, day.Month);
+    const double expected =
+      day.Year + (day.Month - 1 + double(day.DayOfMonth - 1) / day.DaysInMonth) / 12.0;
+    EXPECT_NEAR(*t, expected, 1e-12) << day.Text;
+    EXPECT_GE(*t, monthStart) << day.Text;
+    EXPECT_LT(*t, day.Month < 12 ? MonthTime(day.Year, day.Month + 1) : day.Year + 1.0) << day.Text;
+    EXPECT_GT(*t, previous) << day.Text;
+    previous = *t;
+    if (day.DayOfMonth == 1)
+    {
+      // The first of a month, "YYYY-MM" and the year-and-month columns give the same step.
+      EXPECT_EQ(*t, monthStart) << day.Text;
+      EXPECT_EQ(IsoDateTime(day.Text.substr(0, 7)), monthStart) << day.Text;
+      EXPECT_EQ(IsoDateTime(day.Text + "T00:00:00Z"), monthStart) << day.Text;
+    }
+  }
+}
+
+TEST(DecimalTime, TimesOfDayAndSpacesAndYears)
+{
+  EXPECT_EQ(IsoDateTime("1963"), 1963.0);
+  EXPECT_EQ(IsoDateTime("  1963-08 "), MonthTime(1963, 8));
+  EXPECT_NEAR(*IsoDateTime("1963-08-01T12:00"), 1963 + (7 + 0.5 / 31) / 12.0, 1e-12);
+  EXPECT_NEAR(*IsoDateTime("1963-08-16 18:00:00"), 1963 + (7 + 15.75 / 31) / 12.0, 1e-12);
+  EXPECT_LT(*IsoDateTime("1963-08-31T23:59:59"), MonthTime(1963, 9));
+}
+
+TEST(DecimalTime, MalformedAndImpossibleDatesAreRefused)
+{
+  for (const char* text : { "",
+         "abc",
+         "63-08",
+         "1963-8",
+         "1963/08",
+         "1963-13",
+         "1963-00",
+         "1963-08-00",
+         "1963-08-32",
+         "1963-09-31",
+         "1963-02-29",
+         "1900-02-29",
+         "2100-02-29",
+         "1963-08-01T24:00",
+         "1963-08-01T12",
+         "1963-08-01T12:60",
+         "1963-08-01 12:00:60",
+         "1963-08-01x",
+         "1963-08T12:00",
+         "1963T12:00",
+         "1963-08-",
+         "19630801" })
+  {
+    EXPECT_FALSE(IsoDateTime(text)) << text;
+  }
+  EXPECT_TRUE(IsoDateTime("2000-02-29"));
+  EXPECT_TRUE(IsoDateTime("1964-02-29"));
+}
