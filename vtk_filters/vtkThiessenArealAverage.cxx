@@ -27,7 +27,9 @@
 #include "errors.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <map>
 #include <optional>
@@ -151,6 +153,40 @@ std::vector<double> ReadRowTimes(vtkTable* table,
     }
   }
   return rowTimes;
+}
+
+/// A row's value: a number, or NaN (missing) for NaN or, in a text column, an empty field, NA,
+/// N/A, NaN or null (any case). A CSV reader gives a text column where such markers stand among
+/// the numbers. Other text is an error naming the row.
+double ObservationValue(vtkAbstractArray* values, vtkIdType row, const std::string& column)
+{
+  if (auto* numbers = vtkDataArray::SafeDownCast(values))
+  {
+    return numbers->GetTuple1(row);
+  }
+  const std::string text = values->GetVariantValue(row).ToString();
+  const auto first = text.find_first_not_of(" \t");
+  const auto last = text.find_last_not_of(" \t");
+  std::string trimmed = first == std::string::npos ? "" : text.substr(first, last - first + 1);
+  std::string lower = trimmed;
+  std::transform(lower.begin(),
+    lower.end(),
+    lower.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (lower.empty() || lower == "na" || lower == "n/a" || lower == "nan" || lower == "null")
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  char* end = nullptr;
+  const double value = std::strtod(trimmed.c_str(), &end);
+  if (end != trimmed.c_str() + trimmed.size())
+  {
+    std::ostringstream message;
+    message << "observation row " << row << ": '" << text << "' in column '" << column
+            << "' is not a number (a missing value is an empty field, NA, N/A, NaN or null)";
+    throw tessera::InputError(message.str());
+  }
+  return value;
 }
 
 /// The distinct times, ascending.
@@ -402,13 +438,8 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   {
     vtkAbstractArray* stations =
       ObservationColumn(observations, this->StationColumn, "station ids, numbers or text");
-    auto* values = vtkDataArray::SafeDownCast(
-      ObservationColumn(observations, this->ValueColumn, "numbers; NaN where missing"));
-    if (!values)
-    {
-      throw tessera::InputError("the observations column '" + this->ValueColumn +
-        "' holds text: the values must be numbers (NaN where missing)");
-    }
+    vtkAbstractArray* values = ObservationColumn(
+      observations, this->ValueColumn, "numbers; NaN, NA or an empty field where missing");
     std::unordered_map<std::string, std::size_t> gaugeOf;
     for (std::size_t g = 0; g < gaugeCount; ++g)
     {
@@ -431,7 +462,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
         }
         continue;
       }
-      const double value = values->GetTuple1(r);
+      const double value = ObservationValue(values, r, this->ValueColumn);
       if (std::isinf(value))
       {
         std::ostringstream message;

@@ -22,9 +22,13 @@
  *   Times are numbers, or text holding ISO dates (YYYY, YYYY-MM, YYYY-MM-DD, optionally with a
  *   time of day), or a year column with a month column (MonthColumn); dates become decimal years
  *   on a month grid: 1963-08 (or 1963-08-01, or year 1963 with month 8) is 1963 + 7/12, and a
- *   day is its share of its month (core/decimal_time.h). A CSV file read by ParaView or
- *   vtkDelimitedTextReader can thus be used as it is. A row's time that is not a finite number,
- *   a date or a month 1 .. 12 is an error naming the row.
+ *   day is its share of its month (core/decimal_time.h). Values are numbers, NaN where missing;
+ *   a text value column (what a CSV reader gives when markers stand among the numbers) also takes
+ *   an empty field, NA, N/A, NaN or null as missing. A CSV file read by ParaView or
+ *   vtkDelimitedTextReader can thus be used as it is, with one caution: those readers turn an
+ *   empty field of an otherwise numeric column into 0, so write missing values as NaN or NA. A
+ *   row's time that is not a finite number, a date or a month 1 .. 12, and a value that is not a
+ *   number or a missing-value marker, are errors naming the row.
  * Station ids match as text (leading zeros of integer ids are ignored, so "050109" matches 50109).
  *
  * The projection is vtkGeographicProjection's automatic equal-area conic fitted to the gauges and

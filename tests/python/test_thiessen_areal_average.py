@@ -458,6 +458,47 @@ def test_bad_dates_and_months_are_named():
         assert_that(f.GetOutputDataObject(1).GetNumberOfRows() == 0, f"{settings}: output not empty")
 
 
+def text_table(rows):
+    """A table of text columns station_id, date, value from (station, date, value) rows: what a
+    CSV reader gives when missing-value markers stand among the numbers."""
+    table = vtkTable()
+    columns = [vtkStringArray() for _ in range(3)]
+    for column, name in zip(columns, ("station_id", "date", "value")):
+        column.SetName(name)
+        table.AddColumn(column)
+    for row in rows:
+        for column, item in zip(columns, row):
+            column.InsertNextValue(item)
+    return table
+
+
+def test_text_values_with_missing_markers():
+    coords = [(0.25, 0.5), (0.75, 0.5)]
+    square = [[(0, 0), (1, 0), (1, 1), (0, 1)]]
+    rows = [("a", "2000-01", " 2.0"), ("b", "2000-01", "4"), ("a", "2000-02", "NA"),
+            ("b", "2000-02", "6.5"), ("a", "2000-03", ""), ("b", "2000-03", "n/a"),
+            ("a", "2000-04", "null"), ("b", "2000-04", "NaN")]
+    f = vtkThiessenArealAverage()
+    messages = messages_of(f)
+    f.SetGaugesData(gauges_polydata(coords, ["a", "b"]))
+    f.SetCatchmentData(polygon(square))
+    f.SetObservationsData(text_table(rows))
+    f.SetTimeColumn("date")
+    f.Update(1)
+    assert_that(not messages, f"errors: {messages}")
+    means = summary_column(f, "ArealMean")
+    used = summary_column(f, "StationsUsed")
+    assert_that(used == [2, 1, 0, 0], f"gauges reporting with markers as missing: {used}")
+    assert_close(means[0], 3.0, 1e-12, "two halves of the square")
+    assert_that(means[1] == 6.5 and math.isnan(means[2]) and math.isnan(means[3]),
+                f"areal means {means}")
+    f.SetObservationsData(text_table(rows + [("b", "2000-05", "1,5")]))
+    f.Update(1)
+    assert_that(messages and "observation row 8" in messages[-1] and "'1,5'" in messages[-1]
+                and "column 'value'" in messages[-1] and "not a number" in messages[-1],
+                f"a value that is not a number: {messages}")
+
+
 if __name__ == "__main__":
     run([test_four_symmetric_gauges_share_a_square,
          test_colorado_months_match_a_brute_force_raster,
@@ -470,4 +511,5 @@ if __name__ == "__main__":
          test_window_clip_of_tiles_stored_in_float,
          test_dates_and_year_month_columns_give_the_same_steps,
          test_the_monthly_csv_as_a_text_reader_gives_it,
-         test_bad_dates_and_months_are_named])
+         test_bad_dates_and_months_are_named,
+         test_text_values_with_missing_markers])
