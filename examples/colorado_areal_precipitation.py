@@ -13,6 +13,8 @@ Writes into --out:
                          stations_used = gauges that reported, stations_weighted = those whose tile
                          reaches the catchment; areal_mean is empty where no gauge reported)
   weights_YYYY_MM.csv    station_id,name,lon,lat,weight,area_km2,precip for --month
+  weights_all_months.csv year,month,station_id,weight,area_km2,precip: every month's weights (a row
+                         per month and gauge with a weight)
   tiles_YYYY_MM.vtp      that month's tiles clipped to the catchment, in lon/lat (cell data
                          StationId, GaugeId, Weight, Area_m2, Value)
   map_YYYY_MM.png        the tiles coloured by that month's precipitation, gauges, the outline
@@ -144,6 +146,25 @@ class Progress:
             print(f"\r{self.label}: {percent:3d}%", end="", file=sys.stderr, flush=True)
             if percent == 100:
                 print(file=sys.stderr)
+
+
+def write_all_weights(table, path):
+    """Output 2 of the filter (a row per month and weighted gauge) as CSV."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    times = vtk_to_numpy(table.GetColumnByName("Time"))
+    weights = vtk_to_numpy(table.GetColumnByName("Weight"))
+    areas = vtk_to_numpy(table.GetColumnByName("Area_m2"))
+    values = vtk_to_numpy(table.GetColumnByName("Value"))
+    stations = table.GetColumnByName("StationId")
+    with open(path, "w", newline="") as f:
+        out = csv.writer(f)
+        out.writerow(["year", "month", "station_id", "weight", "area_km2", "precip"])
+        for r in range(table.GetNumberOfRows()):
+            year, month = year_month(times[r])
+            out.writerow([year, month, stations.GetValue(r), f"{weights[r]:.15g}",
+                          f"{areas[r] / 1e6:.4f}", f"{values[r]:g}"])
+    return table.GetNumberOfRows()
 
 
 def write_summary(table, path):
@@ -295,6 +316,7 @@ def main(argv=None):
         sys.exit("the areal average failed (see the error above)")
     print(f"{summary.GetNumberOfRows()} months in {time.time() - started:.2f} s", file=sys.stderr)
     rows = write_summary(summary, os.path.join(args.out, "areal_mean.csv"))
+    write_all_weights(average.GetOutputDataObject(2), os.path.join(args.out, "weights_all_months.csv"))
 
     t = decimal_time(year, month)
     average.UpdateTimeStep(t)
@@ -329,7 +351,7 @@ def main(argv=None):
           + (f"; mean of the monthly areal means {sum(valid) / len(valid):.3f}" if valid else ""))
     print(f"{year}-{month:02d}: areal mean {row[4]:.3f}, {row[2]} gauges reported, "
           f"{row[3]} weighted; weights sum to {sum(e['weight'] for e in per_gauge.values()):.12f}")
-    print(f"wrote {args.out}/areal_mean.csv, weights_{tag}.csv, tiles_{tag}.vtp"
+    print(f"wrote {args.out}/areal_mean.csv, weights_all_months.csv, weights_{tag}.csv, tiles_{tag}.vtp"
           + ("" if args.no_plots else f", map_{tag}.png, areal_mean.png"))
 
 

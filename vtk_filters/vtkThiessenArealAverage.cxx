@@ -17,6 +17,7 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
 #include "vtkVariant.h"
@@ -204,6 +205,65 @@ vtkMTimeType ColumnMTime(vtkTable* table, const std::string& column)
   return array ? array->GetMTime() : 0;
 }
 
+/// Output 2's columns, a row per step and weighted gauge: Time, StationId (the gauges' id array's
+/// type, when they have one), GaugeId, Weight, Area_m2, Value.
+class WeightRows
+{
+public:
+  explicit WeightRows(vtkAbstractArray* stationIds)
+    : StationIds(stationIds)
+  {
+    if (stationIds)
+    {
+      this->Stations = vtk::TakeSmartPointer(stationIds->NewInstance());
+      this->Stations->SetNumberOfComponents(stationIds->GetNumberOfComponents());
+      this->Stations->SetName("StationId");
+    }
+    this->Times->SetName("Time");
+    this->GaugeIds->SetName("GaugeId");
+    this->Weights->SetName("Weight");
+    this->Areas->SetName("Area_m2");
+    this->Values->SetName("Value");
+  }
+
+  void Append(double time, const tessera::ArealStep& step, const std::vector<double>& values)
+  {
+    for (std::size_t k = 0; k < step.Gauges.size(); ++k)
+    {
+      const std::int32_t g = step.Gauges[k];
+      this->Times->InsertNextValue(time);
+      if (this->Stations)
+      {
+        this->Stations->InsertNextTuple(g, this->StationIds);
+      }
+      this->GaugeIds->InsertNextValue(g);
+      this->Weights->InsertNextValue(step.Weights[k]);
+      this->Areas->InsertNextValue(step.AreasM2[k]);
+      this->Values->InsertNextValue(values[static_cast<std::size_t>(g)]);
+    }
+  }
+
+  void Fill(vtkTable* table)
+  {
+    table->Initialize();
+    table->AddColumn(this->Times);
+    if (this->Stations)
+    {
+      table->AddColumn(this->Stations);
+    }
+    table->AddColumn(this->GaugeIds);
+    table->AddColumn(this->Weights);
+    table->AddColumn(this->Areas);
+    table->AddColumn(this->Values);
+  }
+
+private:
+  vtkAbstractArray* StationIds;
+  vtkSmartPointer<vtkAbstractArray> Stations;
+  vtkNew<vtkDoubleArray> Times, Weights, Areas, Values;
+  vtkNew<vtkIdTypeArray> GaugeIds;
+};
+
 } // namespace
 
 struct vtkThiessenArealAverage::Internals
@@ -213,6 +273,7 @@ struct vtkThiessenArealAverage::Internals
   std::vector<std::vector<double>> Values; // per step, per gauge; NaN = missing
   std::unique_ptr<tessera::ThiessenArealAverage> Average;
   vtkNew<vtkTable> Summary;
+  vtkNew<vtkTable> Weights; // output 2: one row per step and weighted gauge
 
   /// The observation times read (and validated) by RequestInformation, with what they were read
   /// from, so that Build reuses them while the table and the time columns are unchanged.
@@ -265,7 +326,7 @@ vtkThiessenArealAverage::vtkThiessenArealAverage()
   : Internal(new Internals)
 {
   this->SetNumberOfInputPorts(3);
-  this->SetNumberOfOutputPorts(2);
+  this->SetNumberOfOutputPorts(3);
 }
 
 vtkThiessenArealAverage::~vtkThiessenArealAverage() = default;
@@ -354,6 +415,7 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
   vtkInformation* tilesInfo = outputVector->GetInformationObject(0);
   vtkPolyData* tilesOutput = vtkPolyData::GetData(outputVector, 0);
   vtkTable* summaryOutput = vtkTable::GetData(outputVector, 1);
+  vtkTable* weightsOutput = vtkTable::GetData(outputVector, 2);
   Internals& in = *this->Internal;
   try
   {
@@ -376,6 +438,7 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
       in.BuiltFor = stamp;
     }
     summaryOutput->ShallowCopy(in.Summary);
+    weightsOutput->ShallowCopy(in.Weights);
 
     // The requested step: the last one at or before the requested time.
     std::size_t step = 0;
@@ -398,6 +461,7 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
     in.Average.reset();
     tilesOutput->Initialize();
     summaryOutput->Initialize();
+    weightsOutput->Initialize();
     return 0;
   }
 }
@@ -558,6 +622,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   used->SetName("StationsUsed");
   weighted->SetName("StationsWeighted");
   covered->SetName("CoveredFraction");
+  WeightRows weightRows(stationIds);
   for (std::size_t step = 0; step < in.Times.size(); ++step)
   {
     if (step % 16 == 0)
@@ -570,7 +635,12 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     used->InsertNextValue(result.StationsUsed);
     weighted->InsertNextValue(result.StationsWeighted);
     covered->InsertNextValue(result.CoveredFraction);
+    if (this->WeightsTable)
+    {
+      weightRows.Append(in.Times[step], result, in.Values[step]);
+    }
   }
+  weightRows.Fill(in.Weights);
   in.Summary->Initialize();
   in.Summary->AddColumn(timeColumn);
   in.Summary->AddColumn(means);
@@ -660,4 +730,5 @@ void vtkThiessenArealAverage::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ValueColumn: " << this->ValueColumn << "\n";
   os << indent << "ProjectionRecord: " << this->ProjectionRecord << "\n";
   os << indent << "AreaMethod: " << this->AreaMethod << "\n";
+  os << indent << "WeightsTable: " << (this->WeightsTable ? "on" : "off") << "\n";
 }

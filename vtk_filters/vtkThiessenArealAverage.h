@@ -47,6 +47,12 @@
  * `StationsUsed` (gauges reporting), `StationsWeighted` (of those, gauges whose tile reaches the
  * catchment), `CoveredFraction` (sum of weights).
  *
+ * Output 2 (vtkTable): every gauge's weight at every step, in long format: one row per time step
+ * and weighted gauge (steps in order, gauges ascending within a step): `Time`, `StationId` (when
+ * the gauges have station ids), `GaugeId`, `Weight`, `Area_m2`, `Value`. A step's weights sum to
+ * its `CoveredFraction` and its areal mean is the sum of `Weight` x `Value`. WeightsTable off
+ * leaves it empty.
+ *
  * Unused input is reported, never dropped silently: gauges with no observation, observations of
  * unknown stations, and co-located gauges (within 1 cm once projected; the first is kept and its
  * value used) are listed in a warning and in output 1's field data (`UnobservedGaugeIds`,
@@ -150,6 +156,16 @@ public:
   void SetAreaMethodToGeodesicPolygon() { this->SetAreaMethod(GEODESIC_POLYGON); }
   ///@}
 
+  ///@{
+  /**
+   * Whether output 2 lists every step's weights (default on). Off saves its memory when gauges
+   * times steps run to many millions of rows.
+   */
+  vtkSetMacro(WeightsTable, bool);
+  vtkGetMacro(WeightsTable, bool);
+  vtkBooleanMacro(WeightsTable, bool);
+  ///@}
+
   /**
    * Number of time steps found in the last update (1 without observations).
    */
@@ -172,6 +188,7 @@ protected:
   std::string MonthColumn;
   std::string ProjectionRecord;
   int AreaMethod = AUTOMATIC_AREAS;
+  bool WeightsTable = true;
 
 private:
   vtkThiessenArealAverage(const vtkThiessenArealAverage&) = delete;

@@ -38,6 +38,16 @@ mean = math.fsum(per_gauge[gauge.GetValue(c)] * values.GetValue(c) for c in
            {gauge.GetValue(c): c for c in range(tiles.GetNumberOfCells())}.values())
 if not 7.0 < mean < 9.5:
     failures.append(f"1963-08 areal mean {mean} far from the 8.17 the example computes")
+# Output 2: every step's weights; the rows of 1963-08 are the tiles' weights.
+table = servermanager.Fetch(average, idx=2)
+times, gauges, listed = (table.GetColumnByName(n) for n in ("Time", "GaugeId", "Weight"))
+august = {gauges.GetValue(r): listed.GetValue(r) for r in range(table.GetNumberOfRows())
+          if abs(times.GetValue(r) - (1963 + 7 / 12.0)) < 1e-9}
+tiled = {g: w for g, w in per_gauge.items() if w > 0.0}
+if august.keys() != tiled.keys() or any(abs(august[g] - w) > 1e-14 for g, w in tiled.items()):
+    failures.append(f"output 2's {len(august)} weights for 1963-08 differ from the tiles' {len(tiled)}")
+if len({times.GetValue(r) for r in range(table.GetNumberOfRows())}) != 1236:
+    failures.append("output 2 does not list all 1236 months")
 if failures:
     print("FAIL:\n" + "\n".join(failures))
     sys.exit(1)

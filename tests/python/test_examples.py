@@ -86,6 +86,22 @@ def test_the_colorado_main_job():
         for w in weighted:
             assert_close(per_station.get(w["station_id"], 0.0), float(w["weight"]), 1e-14,
                          f"station {w['station_id']}: tiles' Weight against weights_{tag}.csv")
+        # Every month's weights: a month's rows are its weighted gauges, summing to 1, and their
+        # weight x precip sums to the month's areal mean.
+        per_month = {}
+        for w in read_csv(os.path.join(out, "weights_all_months.csv")):
+            per_month.setdefault((int(w["year"]), int(w["month"])), []).append(w)
+        for r, month in zip(rows, months):
+            listed = per_month.get(month, [])
+            assert_that(len(listed) == int(r["stations_weighted"]),
+                        f"{month}: {len(listed)} rows in weights_all_months.csv, {r['stations_weighted']} weighted")
+            assert_close(math.fsum(float(w["weight"]) for w in listed), 1.0, 1e-12, f"{month}: weights sum")
+            mean = math.fsum(float(w["weight"]) * float(w["precip"]) for w in listed)
+            assert_close(mean, float(r["areal_mean"]), 1e-6, f"{month}: weight x precip against areal_mean")
+        chosen = {w["station_id"]: float(w["weight"]) for w in per_month[MONTH]}
+        for w in weighted:
+            assert_close(chosen[w["station_id"]], float(w["weight"]), 1e-14,
+                         f"station {w['station_id']}: weights_all_months.csv against weights_{tag}.csv")
         for name in (f"map_{tag}.png", "areal_mean.png"):
             assert_that(is_png(os.path.join(out, name)), f"{name} is not a PNG file")
         assert_that("1236 months" in stdout, f"summary line: {stdout}")

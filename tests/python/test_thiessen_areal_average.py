@@ -499,6 +499,34 @@ def test_text_values_with_missing_markers():
                 f"a value that is not a number: {messages}")
 
 
+def test_weights_table_lists_every_step():
+    coords, ids, ring, months = read_colorado()
+    f, messages = summary_of(coords, ids, ring, observations_table(months))
+    assert_that(not messages, f"errors: {messages}")
+    table = f.GetOutputDataObject(2)
+    column = {name: table.GetColumnByName(name) for name in
+              ("Time", "StationId", "GaugeId", "Weight", "Area_m2", "Value")}
+    assert_that(all(column.values()), f"columns of output 2: {[n for n, c in column.items() if not c]}")
+    rows = [{name: c.GetValue(r) for name, c in column.items()} for r in range(table.GetNumberOfRows())]
+    times = summary_column(f, "Time")
+    for k, (key, t) in enumerate(zip(sorted(months), times)):
+        step = [r for r in rows if r["Time"] == t]
+        assert_that(len(step) == summary_column(f, "StationsWeighted")[k], f"{key}: rows of output 2")
+        assert_that([r["GaugeId"] for r in step] == sorted(r["GaugeId"] for r in step), f"{key}: gauge order")
+        assert_close(math.fsum(r["Weight"] for r in step), 1.0, 1e-12, f"{key}: weights sum")
+        mean = math.fsum(r["Weight"] * r["Value"] for r in step)
+        assert_close(mean, summary_column(f, "ArealMean")[k], 1e-12 * abs(mean), f"{key}: sum of weight x value")
+        f.UpdateTimeStep(t)
+        tiles = weights_by_gauge(f.GetOutputDataObject(0))
+        for r in step:
+            assert_that(r["StationId"] == ids[r["GaugeId"]], f"{key}: StationId of gauge {r['GaugeId']}")
+            assert_that(r["Value"] == months[key][ids[r["GaugeId"]]], f"{key}: value of {r['StationId']}")
+            assert_close(r["Weight"], tiles[r["GaugeId"]], 1e-15, f"{key}: weight of gauge {r['GaugeId']} against its tile")
+    f.SetWeightsTable(False)
+    f.Update(2)
+    assert_that(f.GetOutputDataObject(2).GetNumberOfRows() == 0, "WeightsTable off leaves output 2 empty")
+
+
 if __name__ == "__main__":
     run([test_four_symmetric_gauges_share_a_square,
          test_colorado_months_match_a_brute_force_raster,
@@ -512,4 +540,5 @@ if __name__ == "__main__":
          test_dates_and_year_month_columns_give_the_same_steps,
          test_the_monthly_csv_as_a_text_reader_gives_it,
          test_bad_dates_and_months_are_named,
-         test_text_values_with_missing_markers])
+         test_text_values_with_missing_markers,
+         test_weights_table_lists_every_step])
