@@ -163,7 +163,7 @@ def write_all_weights(table, path):
         for r in range(table.GetNumberOfRows()):
             year, month = year_month(times[r])
             out.writerow([year, month, stations.GetValue(r), f"{weights[r]:.15g}",
-                          f"{areas[r] / 1e6:.4f}", f"{values[r]:g}"])
+                          f"{areas[r] / 1e6:.4f}", f"{values[r]:.15g}"])
     return table.GetNumberOfRows()
 
 

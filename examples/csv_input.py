@@ -3,7 +3,10 @@ before any row is read, a value that is not a number is named with its file, lin
 missing values (an empty field, NA, N/A, NaN, null, in any case) are told apart from bad ones.
 Every failure ends the script with one line naming what is wrong and where, never a traceback."""
 
+import codecs
 import csv
+import io
+import math
 import sys
 
 MISSING = frozenset(("", "na", "n/a", "nan", "null"))
@@ -14,16 +17,32 @@ def fail(message):
     sys.exit(message)
 
 
+def decoded(path, what):
+    """The text of the file: UTF-8 (with or without a byte-order mark), UTF-16 with its mark, or
+    else Windows-1252, which is what a spreadsheet saves as CSV on Windows."""
+    try:
+        with open(path, "rb") as handle:
+            data = handle.read()
+    except OSError as error:
+        fail(f"{path}: cannot read the {what} file ({error.strerror})")
+    if data.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
+        try:
+            return data.decode("utf-16")
+        except UnicodeDecodeError as error:
+            fail(f"{path}: the {what} file is not valid UTF-16 text ({error.reason})")
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        return data.decode("cp1252", errors="replace")
+
+
 def rows(path, required, what):
     """Yields (line, row) for each record of the CSV file at path (a header line first; row maps
     the header's names, stripped of spaces, to the fields). Ends the script, naming the file, when
-    it cannot be read or lacks one of the required columns; what says what the file holds."""
+    it cannot be read, lacks one of the required columns, or is not well-formed CSV; what says what
+    the file holds."""
+    reader = csv.DictReader(io.StringIO(decoded(path, what), newline=""), strict=True)
     try:
-        handle = open(path, newline="", encoding="utf-8-sig")  # a spreadsheet's byte-order mark
-    except OSError as error:
-        fail(f"{path}: cannot read the {what} file ({error.strerror})")
-    with handle:
-        reader = csv.DictReader(handle)
         columns = [name.strip() for name in reader.fieldnames or []]
         absent = [name for name in required if name not in columns]
         if absent:
@@ -37,6 +56,8 @@ def rows(path, required, what):
                 fail(f"{path}:{reader.line_num}: {fields} field(s) where the header has "
                      f"{len(columns)} ({', '.join(columns)})")
             yield reader.line_num, row
+    except csv.Error as error:  # e.g. a quote opened and never closed
+        fail(f"{path}:{reader.line_num}: not well-formed CSV ({error})")
 
 
 def is_missing(text):
@@ -45,13 +66,16 @@ def is_missing(text):
 
 
 def number(row, column, path, line):
-    """The field as a float; ends the script, naming file, line, column and text, if it is not a
-    number (a missing value included: test is_missing first where one is allowed)."""
+    """The field as a finite float; ends the script, naming file, line, column and text, if it is
+    not one (a missing value included: test is_missing first where one is allowed)."""
     text = row.get(column)
     try:
-        return float((text or "").strip())
+        value = float((text or "").strip())
     except ValueError:
         fail(f"{path}:{line}: column {column!r}: {text!r} is not a number")
+    if not math.isfinite(value):  # float() takes inf, 1e999 and nan
+        fail(f"{path}:{line}: column {column!r}: {text!r} is not a finite number")
+    return value
 
 
 def integer(row, column, path, line, low, high):

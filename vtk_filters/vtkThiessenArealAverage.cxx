@@ -104,6 +104,10 @@ std::vector<double> ReadRowTimes(vtkTable* table,
   const std::string& timeColumn,
   const std::string& monthColumn)
 {
+  if (table->GetNumberOfRows() == 0)
+  {
+    return {}; // no steps: Build says so, even when the columns are missing too
+  }
   const bool byMonth = !monthColumn.empty();
   vtkAbstractArray* times = ObservationColumn(table,
     timeColumn,
@@ -500,6 +504,10 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   std::vector<std::string> unknownStations;
   if (observations)
   {
+    if (observations->GetNumberOfRows() == 0)
+    {
+      throw tessera::InputError("the observations table has no rows (no time step to average)");
+    }
     vtkAbstractArray* stations =
       ObservationColumn(observations, this->StationColumn, "station ids, numbers or text");
     vtkAbstractArray* values = ObservationColumn(

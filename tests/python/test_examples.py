@@ -139,6 +139,15 @@ def test_bad_files_are_named():
         value2 = write("value2.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,x\n")
         empty_id = write("empty_id.csv", "station_id,year,month,precip\n ,1950,1,1\n")
         not_polygon = write("catchment.geojson", "{}\n")
+        header_only = write("header.csv", "station_id,year,month,precip\n")
+        infinite = write("inf.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,1e999\n")
+        quote = write("quote.csv", 'station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,"1.2\n')
+        utf16 = os.path.join(out, "utf16.csv")
+        with open(utf16, "w", encoding="utf-16") as f:
+            f.write("station_id,year,month,precip\n050848,1963,8,1.5\n")
+        latin = os.path.join(out, "latin.csv")
+        with open(latin, "w", encoding="cp1252") as f:
+            f.write("station_id,name,lon,lat\n050848,Café,-105,39.5\n")
         missing = os.path.join(out, "absent.csv")
         cases = [
             (("--stations", stations_id), [stations_id, "no column 'station_id'", "id, lon, lat"]),
@@ -150,6 +159,9 @@ def test_bad_files_are_named():
             (("--catchment", not_polygon), [not_polygon, "no polygon"]),
             (("--catchment", missing), [missing, "no such catchment file"]),
             (("--month", "1963-13"), ["--month", "YYYY-MM"]),
+            (("--observations", header_only), ["the observations table has no rows"]),
+            (("--observations", infinite), [infinite + ":3", "'precip'", "'1e999' is not a finite number"]),
+            (("--observations", quote), [quote + ":", "not well-formed CSV"]),
         ]
         for arguments, fragments in cases:
             status, _, stderr = run_example("colorado_areal_precipitation.py", "--out", out, "--no-plots",
@@ -158,6 +170,13 @@ def test_bad_files_are_named():
             assert_that("Traceback" not in stderr, f"{arguments}: a traceback instead of a message: {stderr}")
             for fragment in fragments:
                 assert_that(fragment in stderr, f"{arguments}: {fragment!r} not in {stderr!r}")
+        # Text a spreadsheet saves: Windows-1252 stations, UTF-16 observations with its mark.
+        status, _, stderr = run_example("colorado_areal_precipitation.py", "--out", out, "--no-plots",
+                                        "--stations", latin, "--observations", utf16, "--month", "1963-08")
+        assert_that(status == 0, f"cp1252 and UTF-16 files: {status} {stderr}")
+        weights = read_csv(os.path.join(out, "weights_1963_08.csv"))
+        assert_that([(w["name"], float(w["weight"]), float(w["precip"])) for w in weights] == [("Café", 1.0, 1.5)],
+                    f"cp1252 and UTF-16 files read as {weights}")
         short = write("short.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2\n")
         for path, fields in ((value, 5), (short, 3)):
             status, _, stderr = run_example("colorado_areal_precipitation.py", "--out", out, "--no-plots",

@@ -451,8 +451,11 @@ def test_bad_dates_and_months_are_named():
          ["no column 'month'"]),
         (lambda y, m: {"date": "1963-08"}, {"TimeColumn": "time"}, ["no column 'time'"]),
     ]
+    # A table without rows (a CSV file of a header only).
+    cases.append((lambda y, m: {"time": 1963}, {}, ["the observations table has no rows"]))
     for time_of, settings, fragments in cases:
-        f, messages = summary_of(coords, ids, ring, dated_table(one, time_of), **settings)
+        rows = {(1963, 8): {}} if "no rows" in fragments[0] else one
+        f, messages = summary_of(coords, ids, ring, dated_table(rows, time_of), **settings)
         assert_that(messages and all(x in messages[0] for x in fragments),
                     f"{settings}: expected {fragments} in {messages}")
         assert_that(f.GetOutputDataObject(1).GetNumberOfRows() == 0, f"{settings}: output not empty")
