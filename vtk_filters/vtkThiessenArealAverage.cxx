@@ -42,14 +42,19 @@ vtkStandardNewMacro(vtkThiessenArealAverage);
 namespace
 {
 
+/// text without the given characters at either end.
+std::string Trimmed(const std::string& text, const char* characters = " \t")
+{
+  const auto first = text.find_first_not_of(characters);
+  const auto last = text.find_last_not_of(characters);
+  return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+}
+
 /// Station ids compare as text, trimmed, with leading zeros of integer ids dropped, so that an id
 /// read as text ("050109") matches the same id read as a number (50109).
 std::string StationKey(const vtkVariant& value)
 {
-  std::string text = value.ToString();
-  const auto first = text.find_first_not_of(" \t\"");
-  const auto last = text.find_last_not_of(" \t\"");
-  text = first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
+  std::string text = Trimmed(value.ToString(), " \t\"");
   if (!text.empty() &&
     std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }))
   {
@@ -85,16 +90,59 @@ vtkAbstractArray* ObservationColumn(vtkTable* table, const std::string& column, 
   return array;
 }
 
-/// A number of a column (numeric, or text that reads as one); NaN when it is neither.
-double ColumnNumber(vtkAbstractArray* array, vtkIdType row)
+/// An InputError for a row of the observations table: "observation row R: what".
+[[noreturn]] void ThrowRowError(vtkIdType row, const std::string& what)
 {
-  if (auto* numbers = vtkDataArray::SafeDownCast(array))
+  std::ostringstream message;
+  message << "observation row " << row << ": " << what;
+  throw tessera::InputError(message.str());
+}
+
+/// A column read as numbers: a numeric array directly, text parsed row by row (the array's type
+/// is found once, not per row).
+class NumberColumn
+{
+public:
+  explicit NumberColumn(vtkAbstractArray* array)
+    : Array(array)
+    , Numbers(vtkDataArray::SafeDownCast(array))
   {
-    return numbers->GetTuple1(row);
   }
-  bool valid = false;
-  const double value = array->GetVariantValue(row).ToDouble(&valid);
-  return valid ? value : std::numeric_limits<double>::quiet_NaN();
+
+  bool IsText() const { return !this->Numbers; }
+  std::string Text(vtkIdType row) const { return this->Array->GetVariantValue(row).ToString(); }
+
+  /// The row's number; nothing for text that is not one (spaces around it are allowed).
+  std::optional<double> Number(vtkIdType row) const
+  {
+    if (this->Numbers)
+    {
+      return this->Numbers->GetTuple1(row);
+    }
+    const std::string text = Trimmed(this->Text(row));
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size())
+    {
+      return std::nullopt;
+    }
+    return value;
+  }
+
+private:
+  vtkAbstractArray* Array;
+  vtkDataArray* Numbers;
+};
+
+/// Whether text marks a missing value: empty, NA, N/A, NaN or null (any case, spaces around).
+bool IsMissingMarker(const std::string& text)
+{
+  std::string lower = Trimmed(text);
+  std::transform(lower.begin(),
+    lower.end(),
+    lower.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return lower.empty() || lower == "na" || lower == "n/a" || lower == "nan" || lower == "null";
 }
 
 /// The time of each row of the observations table (decimal_time.h): the time column's numbers,
@@ -109,89 +157,65 @@ std::vector<double> ReadRowTimes(vtkTable* table,
     return {}; // no steps: Build says so, even when the columns are missing too
   }
   const bool byMonth = !monthColumn.empty();
-  vtkAbstractArray* times = ObservationColumn(table,
+  const NumberColumn times(ObservationColumn(table,
     timeColumn,
-    byMonth ? "years" : "numbers, or dates as text such as 1963-08 or 1963-08-16");
-  vtkAbstractArray* months =
-    byMonth ? ObservationColumn(table, monthColumn, "months 1 .. 12") : nullptr;
-  const bool dates = !byMonth && !vtkDataArray::SafeDownCast(times);
-  std::vector<double> rowTimes(static_cast<std::size_t>(times->GetNumberOfTuples()));
-  const auto fail = [](vtkIdType row, const std::string& what)
-  {
-    std::ostringstream message;
-    message << "observation row " << row << ": " << what;
-    throw tessera::InputError(message.str());
-  };
-  for (vtkIdType r = 0; r < times->GetNumberOfTuples(); ++r)
+    byMonth ? "years" : "numbers, or dates as text such as 1963-08 or 1963-08-16"));
+  const NumberColumn months(
+    byMonth ? ObservationColumn(table, monthColumn, "months 1 .. 12") : nullptr);
+  const bool dates = !byMonth && times.IsText();
+  std::vector<double> rowTimes(static_cast<std::size_t>(table->GetNumberOfRows()));
+  for (vtkIdType r = 0; r < table->GetNumberOfRows(); ++r)
   {
     if (dates)
     {
-      const std::string text = times->GetVariantValue(r).ToString();
-      const std::optional<double> t = tessera::IsoDateTime(text);
+      const std::optional<double> t = tessera::IsoDateTime(times.Text(r));
       if (!t)
       {
-        fail(r,
-          "'" + text + "' in column '" + timeColumn +
+        ThrowRowError(r,
+          "'" + times.Text(r) + "' in column '" + timeColumn +
             "' is not a date (YYYY, YYYY-MM or YYYY-MM-DD, optionally with hh:mm[:ss])");
       }
       rowTimes[r] = *t;
       continue;
     }
-    const double t = ColumnNumber(times, r);
-    if (!std::isfinite(t))
+    const std::optional<double> t = times.Number(r);
+    if (!t || !std::isfinite(*t))
     {
-      fail(r,
-        "the time '" + times->GetVariantValue(r).ToString() + "' in column '" + timeColumn +
-          "' is not a finite number");
+      ThrowRowError(r,
+        "the time '" + times.Text(r) + "' in column '" + timeColumn + "' is not a finite number");
     }
-    rowTimes[r] = t;
+    rowTimes[r] = *t;
     if (byMonth)
     {
-      const double month = ColumnNumber(months, r);
+      const double month = months.Number(r).value_or(0.0);
       if (!(month >= 1.0 && month <= 12.0 && month == std::floor(month)))
       {
-        fail(r,
-          "the month " + months->GetVariantValue(r).ToString() + " in column '" + monthColumn +
-            "' is not 1 .. 12");
+        ThrowRowError(
+          r, "the month " + months.Text(r) + " in column '" + monthColumn + "' is not 1 .. 12");
       }
-      rowTimes[r] = tessera::MonthTime(t, static_cast<int>(month));
+      rowTimes[r] = tessera::MonthTime(*t, static_cast<int>(month));
     }
   }
   return rowTimes;
 }
 
-/// A row's value: a number, or NaN (missing) for NaN or, in a text column, an empty field, NA,
-/// N/A, NaN or null (any case). A CSV reader gives a text column where such markers stand among
-/// the numbers. Other text is an error naming the row.
-double ObservationValue(vtkAbstractArray* values, vtkIdType row, const std::string& column)
+/// A row's value: a number, or NaN (missing) for NaN or, in a text column, a missing-value marker
+/// (IsMissingMarker: a CSV reader gives a text column where such markers stand among the numbers).
+/// Other text is an error naming the row.
+double ObservationValue(const NumberColumn& values, vtkIdType row, const std::string& column)
 {
-  if (auto* numbers = vtkDataArray::SafeDownCast(values))
+  if (const std::optional<double> value = values.Number(row))
   {
-    return numbers->GetTuple1(row);
+    return *value;
   }
-  const std::string text = values->GetVariantValue(row).ToString();
-  const auto first = text.find_first_not_of(" \t");
-  const auto last = text.find_last_not_of(" \t");
-  std::string trimmed = first == std::string::npos ? "" : text.substr(first, last - first + 1);
-  std::string lower = trimmed;
-  std::transform(lower.begin(),
-    lower.end(),
-    lower.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (lower.empty() || lower == "na" || lower == "n/a" || lower == "nan" || lower == "null")
+  const std::string text = values.Text(row);
+  if (!IsMissingMarker(text))
   {
-    return std::numeric_limits<double>::quiet_NaN();
+    ThrowRowError(row,
+      "'" + text + "' in column '" + column +
+        "' is not a number (a missing value is an empty field, NA, N/A, NaN or null)");
   }
-  char* end = nullptr;
-  const double value = std::strtod(trimmed.c_str(), &end);
-  if (end != trimmed.c_str() + trimmed.size())
-  {
-    std::ostringstream message;
-    message << "observation row " << row << ": '" << text << "' in column '" << column
-            << "' is not a number (a missing value is an empty field, NA, N/A, NaN or null)";
-    throw tessera::InputError(message.str());
-  }
-  return value;
+  return std::numeric_limits<double>::quiet_NaN();
 }
 
 /// The distinct times, ascending.
@@ -510,8 +534,8 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     }
     vtkAbstractArray* stations =
       ObservationColumn(observations, this->StationColumn, "station ids, numbers or text");
-    vtkAbstractArray* values = ObservationColumn(
-      observations, this->ValueColumn, "numbers; NaN, NA or an empty field where missing");
+    const NumberColumn values(ObservationColumn(
+      observations, this->ValueColumn, "numbers; NaN, NA or an empty field where missing"));
     std::unordered_map<std::string, std::size_t> gaugeOf;
     for (std::size_t g = 0; g < gaugeCount; ++g)
     {
@@ -537,9 +561,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
       const double value = ObservationValue(values, r, this->ValueColumn);
       if (std::isinf(value))
       {
-        std::ostringstream message;
-        message << "observation row " << r << " (station " << key << ") has an infinite value";
-        throw tessera::InputError(message.str());
+        ThrowRowError(r, "station " + key + " has an infinite value");
       }
       const std::size_t step = static_cast<std::size_t>(
         std::lower_bound(
