@@ -58,13 +58,10 @@ def read_gauges(path):
     ids, names = vtkStringArray(), vtkStringArray()
     ids.SetName("station_id")
     names.SetName("name")
-    for line, row in csv_input.rows(path, ("station_id", "lon", "lat"), "stations"):
-        station = csv_input.text(row, "station_id", path, line)
-        lon = csv_input.number(row, "lon", path, line)
-        lat = csv_input.number(row, "lat", path, line)
+    for _, _, station, name, lon, lat in csv_input.gauges(path):
         points.InsertNextPoint(lon, lat, 0.0)
         ids.InsertNextValue(station)
-        names.InsertNextValue((row.get("name") or "").strip())
+        names.InsertNextValue(name)
     gauges = vtkPolyData()
     gauges.SetPoints(points)
     gauges.GetPointData().AddArray(ids)

@@ -98,6 +98,14 @@ def text(row, column, path, line):
     return value
 
 
+def gauges(path):
+    """Yields (line, row, station_id, name, lon, lat) for each gauge of a stations file: columns
+    station_id, lon, lat (degrees), an optional name, and any others (left in row)."""
+    for line, row in rows(path, ("station_id", "lon", "lat"), "stations"):
+        yield (line, row, text(row, "station_id", path, line), (row.get("name") or "").strip(),
+               number(row, "lon", path, line), number(row, "lat", path, line))
+
+
 def import_tessera():
     """The tessera package; ends the script with how to run it when Python cannot find it."""
     try:

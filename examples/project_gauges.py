@@ -44,15 +44,12 @@ def read_gauges(path):
     lon_array, lat_array = vtkDoubleArray(), vtkDoubleArray()
     lon_array.SetName("Longitude")
     lat_array.SetName("Latitude")
-    for line, row in csv_input.rows(path, ("station_id", "lon", "lat"), "stations"):
-        station = csv_input.text(row, "station_id", path, line)
-        lon = csv_input.number(row, "lon", path, line)
-        lat = csv_input.number(row, "lat", path, line)
+    for line, row, station, name, lon, lat in csv_input.gauges(path):
         missing_elevation = csv_input.is_missing(row.get("elev_m"))
         elev = 0.0 if missing_elevation else csv_input.number(row, "elev_m", path, line)
         points.InsertNextPoint(lon, lat, elev)
         ids.InsertNextValue(station)
-        names.InsertNextValue((row.get("name") or "").strip())
+        names.InsertNextValue(name)
         lon_array.InsertNextValue(lon)
         lat_array.InsertNextValue(lat)
     gauges = vtkPolyData()
