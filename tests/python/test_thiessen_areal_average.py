@@ -97,19 +97,8 @@ def read_colorado():
 
 
 def observations_table(months):
-    table = vtkTable()
-    s, t, v = vtkStringArray(), vtkDoubleArray(), vtkDoubleArray()
-    s.SetName("station_id")
-    t.SetName("time")
-    v.SetName("value")
-    for (year, month), values in sorted(months.items()):
-        for sid, value in values.items():
-            s.InsertNextValue(sid)
-            t.InsertNextValue(year + (month - 1) / 12)
-            v.InsertNextValue(value)
-    for column in (s, t, v):
-        table.AddColumn(column)
-    return table
+    """The months' values in long format with a numeric time column (year + (month - 1) / 12)."""
+    return dated_table(months, lambda year, month: {"time": year + (month - 1) / 12})
 
 
 def brute_force_mean(coords, ids, ring, values, step=0.01):
@@ -361,10 +350,11 @@ def test_window_cells_that_are_not_rings_are_reported():
 
 
 def dated_table(months, time_of):
-    """observations_table's rows with the time column replaced: time_of(year, month) gives the
-    columns {name: value} (text or number) of each row."""
+    """{(year, month): {station: value}} as a long-format table: station_id, value, and the time
+    columns that time_of(year, month) gives for each row ({name: text, int or float})."""
     from vtkmodules.vtkCommonCore import vtkIntArray
 
+    kinds = {str: vtkStringArray, int: vtkIntArray, float: vtkDoubleArray}
     table = vtkTable()
     s, v = vtkStringArray(), vtkDoubleArray()
     s.SetName("station_id")
@@ -376,7 +366,7 @@ def dated_table(months, time_of):
             v.InsertNextValue(value)
             for name, item in time_of(year, month).items():
                 if name not in columns:
-                    columns[name] = vtkStringArray() if isinstance(item, str) else vtkIntArray()
+                    columns[name] = kinds[type(item)]()
                     columns[name].SetName(name)
                 columns[name].InsertNextValue(item)
     for column in (s, v, *columns.values()):
