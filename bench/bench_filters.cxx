@@ -7,6 +7,10 @@
 // Tessera's filters and CGAL run `repeats` times each (ten times as often at 10^4 points), in
 // turn, on the same input, and the table shows the median run: this VM's single runs vary by
 // 15-25%. vtkDelaunay2D and vtkVoronoi2D run once (they take seconds to minutes).
+//
+// vtkDirichletTessellation is timed twice: "tiles+areas" with ComputeContiguityGraph off (output
+// 0 only: the tiles with their areas, which the tiles target names) and
+// "tiles+areas+graph", the default, which also derives and writes the contiguity graph.
 #include "vtkDelaunay2D.h"
 #include "vtkDelaunayTriangulation.h"
 #include "vtkDirichletTessellation.h"
@@ -72,6 +76,19 @@ double TimeFilter(vtkPolyData* input, vtkIdType& cells)
   return seconds;
 }
 
+/// vtkDirichletTessellation with ComputeContiguityGraph off: the tiles with their areas only.
+double TimeTilesOnly(vtkPolyData* input, vtkIdType& cells)
+{
+  vtkNew<vtkDirichletTessellation> filter;
+  filter->SetInputData(input);
+  filter->ComputeContiguityGraphOff();
+  const auto start = Clock::now();
+  filter->Update();
+  const double seconds = Seconds(start);
+  cells = filter->GetOutput()->GetNumberOfCells();
+  return seconds;
+}
+
 #ifdef TESSERA_HAVE_CGAL
 double TimeCgal(vtkPolyData* input, std::size_t& faces)
 {
@@ -110,26 +127,34 @@ int main(int argc, char** argv)
   {
     std::printf(
       "usage: bench_filters [max_points] [repeats]   (defaults 1000000 and 5)\n"
-      "Times vtkDelaunayTriangulation and vtkDirichletTessellation through Update()\n"
+      "Times vtkDelaunayTriangulation and vtkDirichletTessellation (without and with its\n"
+      "contiguity graph) through Update()\n"
       "beside CGAL, vtkDelaunay2D and vtkVoronoi2D on 1e4 .. max_points uniform points.\n");
     return 0;
   }
   const vtkIdType maxPoints = argc > 1 ? std::atoll(argv[1]) : 1000000;
   const int repeats = argc > 2 ? std::max(1, std::atoi(argv[2])) : 5;
-  std::printf("| points | Tessera Delaunay | Tessera tiles+areas | CGAL DT2 | vtkDelaunay2D | "
-              "vtkVoronoi2D | Delaunay / CGAL | tiles / CGAL | vtkVoronoi2D / tiles |\n");
-  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("| points | Tessera Delaunay | Tessera tiles+areas | Tessera tiles+areas+graph | "
+              "CGAL DT2 | vtkDelaunay2D | vtkVoronoi2D | Delaunay / CGAL | tiles / CGAL | "
+              "tiles+graph / CGAL | vtkVoronoi2D / tiles+graph |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (vtkIdType n = 10000; n <= maxPoints; n *= 10)
   {
     auto input = UniformPoints(n, 7);
-    vtkIdType triangles = 0, tiles = 0, peerCells = 0;
-    std::vector<double> delaunayRuns, tessellationRuns, cgalRuns;
+    vtkIdType triangles = 0, tiles = 0, tilesOnly = 0, peerCells = 0;
+    std::vector<double> delaunayRuns, tilesOnlyRuns, tessellationRuns, cgalRuns;
     // Ten times the runs at 10^4 points (milliseconds each): their medians move less.
     const int runs = repeats * int(std::max<vtkIdType>(1, 100000 / n));
     for (int run = 0; run < runs; ++run)
     {
       delaunayRuns.push_back(TimeFilter<vtkDelaunayTriangulation>(input, triangles));
+      tilesOnlyRuns.push_back(TimeTilesOnly(input, tilesOnly));
       tessellationRuns.push_back(TimeFilter<vtkDirichletTessellation>(input, tiles));
+      if (tilesOnly != tiles)
+        std::fprintf(stderr,
+          "warning: %lld tiles without the graph, %lld with it\n",
+          static_cast<long long>(tilesOnly),
+          static_cast<long long>(tiles));
 #ifdef TESSERA_HAVE_CGAL
       std::size_t cgalFaces = 0;
       cgalRuns.push_back(TimeCgal(input, cgalFaces));
@@ -142,20 +167,24 @@ int main(int argc, char** argv)
 #endif
     }
     const double delaunay = Median(delaunayRuns);
+    const double tilesAlone = Median(tilesOnlyRuns);
     const double tessellation = Median(tessellationRuns);
     const double cgal = cgalRuns.empty() ? -1.0 : Median(cgalRuns);
     // vtkDelaunay2D takes ~28 s at 100k points here: run it up to 100k only.
     const double delaunay2d = n <= 100000 ? TimeFilter<vtkDelaunay2D>(input, peerCells) : -1.0;
-    const double voronoi2d = TimeFilter<vtkVoronoi2D>(input, peerCells);
+    // vtkVoronoi2D takes ~22 s at 10^6 points and ~250 s at 10^7: run it up to 10^6 only.
+    const double voronoi2d = n <= 1000000 ? TimeFilter<vtkVoronoi2D>(input, peerCells) : -1.0;
     auto ratio = [](double a, double b) { return b > 0 && a > 0 ? a / b : -1.0; };
-    std::printf("| %lld | %s | %s | %s | %s | %s | %s | %s | %s |\n",
+    std::printf("| %lld | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n",
       static_cast<long long>(n),
       Cell(delaunay).c_str(),
+      Cell(tilesAlone).c_str(),
       Cell(tessellation).c_str(),
       Cell(cgal).c_str(),
       Cell(delaunay2d).c_str(),
       Cell(voronoi2d).c_str(),
       Cell(ratio(delaunay, cgal)).c_str(),
+      Cell(ratio(tilesAlone, cgal)).c_str(),
       Cell(ratio(tessellation, cgal)).c_str(),
       Cell(ratio(voronoi2d, tessellation)).c_str());
     std::fflush(stdout);

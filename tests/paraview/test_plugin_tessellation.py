@@ -47,6 +47,22 @@ for c in range(0, tiles.GetNumberOfCells(), 7):
     if d[ids.GetValue(c)] > min(d) * (1 + 1e-9):
         failures.append(f"tile {c}: centroid not nearest to its gauge {ids.GetValue(c)}")
 
+# The XML's Compute Contiguity Graph property: on by default (the graph port has a line per
+# contiguity), off leaves that port empty and the tiles as they were.
+graph = servermanager.Fetch(tess, idx=1)
+if tess.ComputeContiguityGraph != 1 or graph.GetNumberOfCells() < 2 * n:
+    failures.append(f"graph by default: {tess.ComputeContiguityGraph}, {graph.GetNumberOfCells()} lines")
+tess.ComputeContiguityGraph = 0
+tess.UpdatePipeline()
+graph = servermanager.Fetch(tess, idx=1)
+without = servermanager.Fetch(tess)
+if graph.GetNumberOfCells() != 0 or graph.GetNumberOfPoints() != 0:
+    failures.append(f"graph off: {graph.GetNumberOfPoints()} points, {graph.GetNumberOfCells()} lines")
+if without.GetNumberOfCells() != tiles.GetNumberOfCells() or any(
+        without.GetCellData().GetArray("Area").GetValue(c) != areas.GetValue(c)
+        for c in range(tiles.GetNumberOfCells())):
+    failures.append("graph off changed the tiles")
+
 tri = DelaunayTriangulation(Input=projected)  # noqa: F821
 tri.UpdatePipeline()
 faces = servermanager.Fetch(tri)

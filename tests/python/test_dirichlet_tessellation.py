@@ -372,6 +372,56 @@ def test_32_bit_cell_arrays_survive_a_vtp_round_trip():
                     f"{name}: legacy GetData() lists the same cells")
 
 
+def test_graph_off_leaves_the_tiles_unchanged():
+    # ComputeContiguityGraph off: output 1 empty, output 0 the same arrays bit for bit (both
+    # engines; 60,000 points so that the filter writes on two threads; a point-data array, a
+    # duplicate and a point outside the window so that everything output 0 carries is there).
+    # Turning it back on brings the graph back.
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    rng = random.Random(12)
+    coords = [(rng.uniform(0, 1), rng.uniform(0, 1)) for _ in range(60000)]
+    coords += [coords[7], (3.0, 3.0)]
+    data = make_points(coords, rain=[float(k % 97) for k in range(len(coords))])
+
+    def arrays(output):
+        result = {"points": vtk_to_numpy(output.GetPoints().GetData()).copy(),
+                  "offsets": vtk_to_numpy(output.GetPolys().GetOffsetsArray()).copy(),
+                  "ids": vtk_to_numpy(output.GetPolys().GetConnectivityArray()).copy()}
+        for data_set in (output.GetCellData(), output.GetFieldData()):
+            for a in range(data_set.GetNumberOfArrays()):
+                array = data_set.GetArray(a)
+                result[array.GetName()] = vtk_to_numpy(array).copy()
+        return result
+
+    for algorithm in ("GreenSibson", "BrasselReif"):
+        f = vtkDirichletTessellation()
+        f.SetInputData(data)
+        f.SetWindowBounds(-0.1, 1.1, -0.1, 1.1)
+        getattr(f, f"SetAlgorithmTo{algorithm}")()
+        f.Update()
+        with_graph = arrays(f.GetOutput(0))
+        pairs = f.GetOutput(1).GetNumberOfCells()
+        assert_that(pairs > 2.9 * 60000, f"{algorithm}: a graph by default ({pairs} pairs)")
+        f.ComputeContiguityGraphOff()
+        f.Update()
+        without = arrays(f.GetOutput(0))
+        assert_that(sorted(with_graph) == sorted(without), f"{algorithm}: same arrays {sorted(without)}")
+        for name in with_graph:
+            assert_that(with_graph[name].dtype == without[name].dtype and
+                        np.array_equal(with_graph[name], without[name]),
+                        f"{algorithm}: {name} identical without the graph")
+        assert_that(list(without["DuplicatePointIds"]) == [60000] and
+                    list(without["RejectedPointIds"]) == [60001], f"{algorithm}: unused points listed")
+        graph = f.GetOutput(1)
+        assert_that(graph.GetNumberOfPoints() == 0 and graph.GetNumberOfCells() == 0,
+                    f"{algorithm}: output 1 empty ({graph.GetNumberOfPoints()} points, "
+                    f"{graph.GetNumberOfCells()} cells)")
+        f.ComputeContiguityGraphOn()
+        f.Update()
+        assert_that(f.GetOutput(1).GetNumberOfCells() == pairs, f"{algorithm}: the graph is back")
+
+
 if __name__ == "__main__":
     run([test_tiles_are_nearest_point_regions,
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
@@ -383,4 +433,5 @@ if __name__ == "__main__":
          test_nan_point_is_named,
          test_tiles_form_a_conforming_mesh,
          test_large_graph_is_sorted_with_kinds_following_pairs,
-         test_32_bit_cell_arrays_survive_a_vtp_round_trip])
+         test_32_bit_cell_arrays_survive_a_vtp_round_trip,
+         test_graph_off_leaves_the_tiles_unchanged])
