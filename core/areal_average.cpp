@@ -2,6 +2,7 @@
 
 #include "dirichlet_tessellation.h"
 #include "errors.h"
+#include "parallel_chunks.h"
 #include "polygon_validation.h"
 #include "spatial_order.h"
 #include "tiles.h"
@@ -76,11 +77,16 @@ struct ThiessenArealAverage::State
   // margin, and then the derived tile itself is off by as much.
   double ClearMargin = 0.0;
   std::vector<std::int32_t> Neighbours; // Apply's scratch
-  Catchment::Workspace Work;
-  ClippedRings Scratch;
-  std::vector<Point2> Dense;
-  std::vector<Point2> LonLat; // scratch for MeasureRings
-  std::vector<char> Wanted;   // per gauge: used this step (kept: a step is O(gauges) already)
+  /// What clipping and measuring a tile needs besides the tile: one per thread of a clipping pass.
+  struct ClipScratch
+  {
+    Catchment::Workspace Work;
+    ClippedRings Rings;
+    std::vector<Point2> Dense;
+    std::vector<Point2> LonLat;
+  };
+  std::vector<ClipScratch> Scratch{ 1 }; // [0]: the calling thread's
+  std::vector<char> Wanted; // per gauge: used this step (kept: a step is O(gauges) already)
   std::vector<char> PlaceTaken;
   std::vector<char> Marked;         // DeriveChanged's
   std::vector<std::int32_t> Picked; // Step's weighted gauges (gauge g is written at a slot <= g)
@@ -147,7 +153,7 @@ struct ThiessenArealAverage::State
   }
 
   /// Ellipsoidal area (m^2) of all the rings.
-  double MeasureRings(const ClippedRings& rings)
+  double MeasureRings(const ClippedRings& rings, ClipScratch& scratch) const
   {
     double total = 0.0;
     for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
@@ -159,35 +165,38 @@ struct ThiessenArealAverage::State
         continue;
       }
       DensifyPlanarRing(
-        &rings.Vertices[begin], count, this->Settings.GeodesicStepMetres, this->Dense);
-      this->LonLat.resize(this->Dense.size());
-      for (std::size_t i = 0; i < this->Dense.size(); ++i)
+        &rings.Vertices[begin], count, this->Settings.GeodesicStepMetres, scratch.Dense);
+      scratch.LonLat.resize(scratch.Dense.size());
+      for (std::size_t i = 0; i < scratch.Dense.size(); ++i)
       {
-        this->LonLat[i] = this->Projector->Inverse(this->Dense[i]);
+        scratch.LonLat[i] = this->Projector->Inverse(scratch.Dense[i]);
       }
-      total += EllipsoidalRingArea(this->LonLat);
+      total += EllipsoidalRingArea(scratch.LonLat);
     }
     return total;
   }
 
   /// Ellipsoidal area (m^2) of tile & catchment. (A tile between gauges some nanometres apart,
   /// closer than CoLocatedMetres allows by default, can come out folded: it counts as empty.)
-  double ClippedArea(const Point2* tile, std::size_t count, std::size_t tileId)
+  double ClippedArea(const Point2* tile,
+    std::size_t count,
+    std::size_t tileId,
+    ClipScratch& scratch) const
   {
     if (this->Method == AreaMethod::EqualAreaPlane)
     {
       return this->Region->ClipInto(
-        tile, count, tileId, this->Work, nullptr, Catchment::FoldedTile::IsEmpty);
+        tile, count, tileId, scratch.Work, nullptr, Catchment::FoldedTile::IsEmpty);
     }
-    this->Scratch.RingOffsets.assign(1, 0);
-    this->Scratch.Vertices.clear();
+    scratch.Rings.RingOffsets.assign(1, 0);
+    scratch.Rings.Vertices.clear();
     const double planar = this->Region->ClipInto(
-      tile, count, tileId, this->Work, &this->Scratch, Catchment::FoldedTile::IsEmpty);
+      tile, count, tileId, scratch.Work, &scratch.Rings, Catchment::FoldedTile::IsEmpty);
     if (planar <= 0.0)
     {
       return 0.0;
     }
-    return this->MeasureRings(this->Scratch);
+    return this->MeasureRings(scratch.Rings, scratch);
   }
 
   void Rebuild(const std::vector<std::int32_t>& active)
@@ -368,14 +377,39 @@ struct ThiessenArealAverage::State
     return touched != nullptr;
   }
 
-  /// Clips a gauge's (new) tile.
-  void Refresh(std::int32_t g, const Point2* tile, std::size_t count)
+  /// Clips the (new) tiles and caches their areas, in chunks on the cores when there are enough
+  /// of them: each tile is clipped and measured on its own (writing only its gauge's entries), so
+  /// the areas are the same bits on any number of threads, and an error is the one the first
+  /// failing tile in order gives. A tile costs some 0.3 us on an equal-area plane and some 0.1-1
+  /// ms measured geodesically (its densified rings unprojected and summed by GeographicLib).
+  void Refresh(const TileSet& tiles)
   {
-    this->CachedArea[g] = this->ClippedArea(tile, count, static_cast<std::size_t>(g));
-    if (this->Settings.Incremental)
+    const std::int64_t count = static_cast<std::int64_t>(tiles.PointIds.size());
+    const std::int64_t perThread = this->Method == AreaMethod::EqualAreaPlane ? 1000 : 4;
+    const std::vector<std::int32_t> bounds = parallel::ChunkBounds(
+      static_cast<std::int32_t>(count), parallel::ThreadCount(count, perThread));
+    const std::size_t chunks = bounds.size() - 1;
+    if (this->Scratch.size() < chunks)
     {
-      this->TileBounds[g] = BoundsOf(tile, count);
+      this->Scratch.resize(chunks);
     }
+    parallel::RunChunks(chunks,
+      [&](std::size_t chunk)
+      {
+        for (std::int32_t k = bounds[chunk]; k < bounds[chunk + 1]; ++k)
+        {
+          const std::int32_t g = this->GaugeOfEngine[tiles.PointIds[k]];
+          const Point2* tile = &tiles.Vertices[tiles.Offsets[k]];
+          const std::size_t size =
+            static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]);
+          this->CachedArea[g] =
+            this->ClippedArea(tile, size, static_cast<std::size_t>(g), this->Scratch[chunk]);
+          if (this->Settings.Incremental)
+          {
+            this->TileBounds[g] = BoundsOf(tile, size);
+          }
+        }
+      });
   }
 
   /// Whether a tile inside box is clear of the catchment (clipped area 0).
@@ -391,12 +425,7 @@ struct ThiessenArealAverage::State
   std::size_t DeriveAll()
   {
     const TileSet tiles = TessellationDual(*this->Tessellation).Tiles();
-    for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
-    {
-      this->Refresh(this->GaugeOfEngine[tiles.PointIds[k]],
-        &tiles.Vertices[tiles.Offsets[k]],
-        static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]));
-    }
+    this->Refresh(tiles);
     return tiles.PointIds.size();
   }
 
@@ -436,12 +465,7 @@ struct ThiessenArealAverage::State
     // Neighbouring tiles one after the other: their faces share cache lines.
     this->SortAlongCurve(changed);
     const TileSet tiles = ComputeTilesOf(*this->Tessellation, this->EngineIds(changed));
-    for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
-    {
-      this->Refresh(this->GaugeOfEngine[tiles.PointIds[k]],
-        &tiles.Vertices[tiles.Offsets[k]],
-        static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]));
-    }
+    this->Refresh(tiles);
     return { tiles.PointIds.size(), clear };
   }
 };
@@ -575,7 +599,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     ClippedRings stored;
     stored.RingOffsets = s.Region->RingOffsets();
     stored.Vertices = s.Region->Vertices();
-    s.CatchmentArea = s.MeasureRings(stored);
+    s.CatchmentArea = s.MeasureRings(stored, s.Scratch[0]);
   }
 
   // The window: every gauge and the whole catchment, padded.
@@ -739,7 +763,7 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
     if (s.Region->ClipInto(tile,
           count,
           static_cast<std::size_t>(g),
-          s.Work,
+          s.Scratch[0].Work,
           &rings,
           Catchment::FoldedTile::IsEmpty) <= 0.0)
     {
@@ -749,9 +773,11 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
     for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
     {
       const std::size_t begin = rings.RingOffsets[r];
-      DensifyPlanarRing(
-        &rings.Vertices[begin], rings.RingOffsets[r + 1] - begin, maxStepMetres, s.Dense);
-      for (const Point2& p : s.Dense)
+      DensifyPlanarRing(&rings.Vertices[begin],
+        rings.RingOffsets[r + 1] - begin,
+        maxStepMetres,
+        s.Scratch[0].Dense);
+      for (const Point2& p : s.Scratch[0].Dense)
       {
         out.Rings.Vertices.push_back(s.Projector->Inverse(p));
       }

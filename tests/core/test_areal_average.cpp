@@ -2,6 +2,7 @@
 // rebuilds, the two area methods against each other, missing values, duplicates and bad input.
 #include "areal_average.h"
 #include "errors.h"
+#include "test_support.h"
 
 #include <GeographicLib/Constants.hpp>
 #include <gtest/gtest.h>
@@ -167,6 +168,59 @@ TEST(ArealAverage, IncrementalUpdatesEqualRebuildsAndMissingGaugesHandOverTheirA
     EXPECT_EQ(x.StationsUsed,
       static_cast<int>(
         std::count_if(values.begin(), values.end(), [](double v) { return !std::isnan(v); })));
+  }
+}
+
+// The tiles' clipped areas are measured in chunks on the cores (one chunk per 1000 tiles on the
+// equal-area plane, per 4 tiles geodesically): each step's weights and areas must be the same bits
+// on 1 thread and on 3, updating or rebuilding, with gauges dropping out and back at each step.
+TEST(ArealAverage, AreasAreTheSameBitsOnAnyNumberOfThreads)
+{
+  for (const AreaMethod method : { AreaMethod::EqualAreaPlane, AreaMethod::GeodesicPolygon })
+  {
+    const bool plane = method == AreaMethod::EqualAreaPlane;
+    std::mt19937_64 random(plane ? 21 : 22);
+    const std::vector<Point2> gauges =
+      UniformGauges(plane ? 6000 : 60, random, -109.0, -102.0, 37.0, 41.0);
+    const Square catchment(-108.0, 37.5, -103.0, 40.5);
+    std::uniform_real_distribution<double> value(0.0, 10.0);
+    std::bernoulli_distribution missing(0.1);
+    std::vector<std::vector<double>> steps(6, std::vector<double>(gauges.size()));
+    for (auto& step : steps)
+    {
+      for (auto& v : step)
+      {
+        v = missing(random) ? NaN : value(random);
+      }
+    }
+    for (const bool incremental : { true, false })
+    {
+      ArealAverageSettings settings;
+      settings.Areas = method;
+      settings.Incremental = incremental;
+      std::vector<ArealStep> results[2];
+      for (int run = 0; run < 2; ++run)
+      {
+        const tessera_test::ThreadLimitOverride limit(run == 0 ? 1 : 3);
+        ThiessenArealAverage average(gauges, catchment.Offsets, catchment.Ring, settings);
+        for (const auto& step : steps)
+        {
+          results[run].push_back(average.Step(step));
+        }
+      }
+      for (std::size_t t = 0; t < steps.size(); ++t)
+      {
+        const ArealStep& one = results[0][t];
+        const ArealStep& three = results[1][t];
+        const std::string where = std::string(plane ? "plane" : "geodesic") +
+          (incremental ? ", updating" : ", rebuilding") + ", step " + std::to_string(t);
+        ASSERT_EQ(one.Gauges, three.Gauges) << where;
+        EXPECT_EQ(one.AreasM2, three.AreasM2) << where;
+        EXPECT_EQ(one.Weights, three.Weights) << where;
+        EXPECT_EQ(one.Mean, three.Mean) << where;
+        EXPECT_GE(one.TilesDerived, plane ? 2000 : 8) << where << ": enough tiles for two chunks";
+      }
+    }
   }
 }
 

@@ -7,13 +7,45 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <map>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
 namespace tessera_test
 {
+
+// Sets TESSERA_THREADS (parallel_chunks.h) for its lifetime, then puts back what was there.
+class ThreadLimitOverride
+{
+public:
+  explicit ThreadLimitOverride(int threads)
+  {
+    if (const char* old = std::getenv("TESSERA_THREADS"))
+    {
+      this->Old = old;
+      this->HadOld = true;
+    }
+    setenv("TESSERA_THREADS", std::to_string(threads).c_str(), 1);
+  }
+  ~ThreadLimitOverride()
+  {
+    if (this->HadOld)
+    {
+      setenv("TESSERA_THREADS", this->Old.c_str(), 1);
+    }
+    else
+    {
+      unsetenv("TESSERA_THREADS");
+    }
+  }
+
+private:
+  std::string Old;
+  bool HadOld = false;
+};
 
 /// Ids of the accepted points of a tessellation, ascending.
 inline std::vector<std::int32_t> AcceptedIds(const tessera::DirichletTessellation& t)

@@ -858,36 +858,6 @@ TEST(Tiles, TileMeshExpandsToTheTilesAndIsConforming)
     });
 }
 
-// Sets TESSERA_THREADS (parallel_chunks.h) for its lifetime, then puts back what was there.
-class ThreadLimitOverride
-{
-public:
-  explicit ThreadLimitOverride(int threads)
-  {
-    if (const char* old = std::getenv("TESSERA_THREADS"))
-    {
-      this->Old = old;
-      this->HadOld = true;
-    }
-    setenv("TESSERA_THREADS", std::to_string(threads).c_str(), 1);
-  }
-  ~ThreadLimitOverride()
-  {
-    if (this->HadOld)
-    {
-      setenv("TESSERA_THREADS", this->Old.c_str(), 1);
-    }
-    else
-    {
-      unsetenv("TESSERA_THREADS");
-    }
-  }
-
-private:
-  std::string Old;
-  bool HadOld = false;
-};
-
 // The 324 integer points of the circle x^2 + y^2 = 32045^2 (32045 = 5 * 13 * 17 * 29), scaled
 // by 2^-16 (exactly) about (0.5, 0.5): one Delaunay face of 324 co-circular points, 52,002
 // half-neighbour pairs. With uniform points outside the circle around it.
@@ -948,7 +918,7 @@ TEST(Tiles, DerivedResultsDoNotDependOnTheThreadCount)
       }
       const auto derive = [&](int threads)
       {
-        const ThreadLimitOverride limit(threads);
+        const tessera_test::ThreadLimitOverride limit(threads);
         TessellationDual dual(t);
         return std::make_pair(dual.TileMeshAndContiguities(), dual.TilesAndContiguities());
       };
