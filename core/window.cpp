@@ -270,7 +270,10 @@ Window::Window(const std::vector<HalfPlane>& constraints)
   this->EffectiveInputIds = ids;
   for (std::size_t id : ids)
   {
-    this->Effective.push_back(constraints[id]);
+    // Scaled by a power of two (the same half-plane, exactly): the tiles' constructions square
+    // and multiply coefficients, which overflowed for |a|, |b| around 1e155 and underflowed
+    // around 1e-200.
+    this->Effective.push_back(normalized(constraints[id]));
   }
   const std::size_t m = ids.size();
   for (std::size_t k = 0; k < m; ++k)

@@ -30,7 +30,9 @@ public:
   static Window Rectangle(double xmin, double xmax, double ymin, double ymax);
 
   /// The effective (non-redundant) constraints, ordered so that their edges run anticlockwise
-  /// around the window: edge k lies on constraint k and runs from vertex k to vertex k+1.
+  /// around the window: edge k lies on constraint k and runs from vertex k to vertex k+1. Each is
+  /// the input's constraint scaled by a power of two so that max(|a|, |b|) lies in [1, 2): the
+  /// same half-plane (exactly, unless c is some 1e300 times smaller than a and b and underflows).
   const std::vector<HalfPlane>& EffectiveConstraints() const { return this->Effective; }
   /// For each effective constraint, its index in the constructor's input.
   const std::vector<std::size_t>& EffectiveIds() const { return this->EffectiveInputIds; }

@@ -223,6 +223,43 @@ TEST(Tiles, AreasSumToTheWindowAreaAndEulerCountHolds)
   }
 }
 
+// A window given by constraints multiplied by a huge or tiny factor is the same window: the
+// tiles (their points, sides and areas) must not change. Products of such coefficients used to
+// overflow (factors from about 1e155) or underflow (about 1e-200), and tiles overlapped.
+TEST(Tiles, ScalingTheWindowConstraintsLeavesTheTiles)
+{
+  const std::vector<HalfPlane> square{ { -1, 0, 0 }, { 1, 0, -1 }, { 0, -1, 0 }, { 0, 1, -1 } };
+  const std::vector<HalfPlane> triangle{ { 0, -1, 0 }, { -1, 0, 0 }, { 1, 1, -1 } };
+  for (const auto* shape : { &square, &triangle })
+  {
+    const std::vector<Point2> points =
+      shape == &square ? UniformPoints(300, 77u, 0.01, 0.99) : UniformPoints(300, 78u, 0.01, 0.49);
+    const Window plain(*shape);
+    const DirichletTessellation reference(plain, points);
+    const TileSet expected = TessellationDual(reference).Tiles();
+    for (const double factor : { 1e155, 1e300, 1e-200, 1e-300, 3.0 })
+    {
+      std::vector<HalfPlane> scaled = *shape;
+      for (HalfPlane& h : scaled)
+      {
+        h = { h.a * factor, h.b * factor, h.c * factor };
+      }
+      const Window window(scaled);
+      const DirichletTessellation t(window, points);
+      const TileSet tiles = TessellationDual(t).Tiles();
+      const std::string where =
+        std::string(shape == &square ? "square" : "triangle") + " times " + std::to_string(factor);
+      EXPECT_NEAR(NeumaierSum(tiles.Areas), plain.Area(), 1e-12 * plain.Area()) << where;
+      ASSERT_EQ(tiles.PointIds, expected.PointIds) << where;
+      EXPECT_EQ(tiles.NeighborCounts, expected.NeighborCounts) << where;
+      for (std::size_t k = 0; k < tiles.Areas.size(); ++k)
+      {
+        EXPECT_NEAR(tiles.Areas[k], expected.Areas[k], 1e-13) << where << ", tile " << k;
+      }
+    }
+  }
+}
+
 TEST(Tiles, SquareLatticeHasSquareTilesAndDiagonalHalfNeighbours)
 {
   const int side = 10;

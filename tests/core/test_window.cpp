@@ -190,9 +190,12 @@ void check_structure(const Window& w, const std::vector<HalfPlane>& input)
   EXPECT_EQ(all.size(), input.size());
   for (std::size_t k = 0; k < eff.size(); ++k)
   {
-    EXPECT_EQ(eff[k].a, input[ids[k]].a);
-    EXPECT_EQ(eff[k].b, input[ids[k]].b);
-    EXPECT_EQ(eff[k].c, input[ids[k]].c);
+    // The input's constraint scaled by a power of two: max(|a|, |b|) in [1, 2).
+    const HalfPlane& in = input[ids[k]];
+    const int e = std::ilogb(std::max(std::fabs(in.a), std::fabs(in.b)));
+    EXPECT_EQ(eff[k].a, std::ldexp(in.a, -e));
+    EXPECT_EQ(eff[k].b, std::ldexp(in.b, -e));
+    EXPECT_EQ(eff[k].c, std::ldexp(in.c, -e));
     // Anticlockwise and convex.
     const Point2& p = v[k];
     const Point2& q = v[(k + 1) % v.size()];
