@@ -76,11 +76,55 @@ std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points)
   return xy;
 }
 
+namespace
+{
+// value - pad, or the next double below value when rounding swallows pad (a pad far below the
+// coordinates' ulp: points 0.25 apart at 1e15, a lone point at 1e16): the automatic window must
+// keep every point strictly inside.
+double Below(double value, double pad)
+{
+  const double padded = value - pad;
+  return padded < value ? padded : std::nextafter(value, -HUGE_VAL);
+}
+
+double Above(double value, double pad)
+{
+  const double padded = value + pad;
+  return padded > value ? padded : std::nextafter(value, HUGE_VAL);
+}
+
+// The window, unless it is so large that areas in it overflow (a Padding of 1e299 gave NaN areas).
+tessera::Window Representable(tessera::Window window)
+{
+  if (!std::isfinite(window.Area()))
+  {
+    const tessera::Box2 box = tessera::BoundsOf(window.Vertices().data(), window.Vertices().size());
+    std::ostringstream message;
+    message << "the window (x " << box.XMin << " .. " << box.XMax << ", y " << box.YMin << " .. "
+            << box.YMax << ") is too large: its area overflows a double; set a smaller "
+            << "Padding or WindowBounds";
+    throw tessera::InputError(message.str());
+  }
+  return window;
+}
+} // namespace
+
 tessera::Window ChooseWindow(const double bounds[4],
   const std::vector<double>& constraints,
   double padding,
   const std::vector<tessera::Point2>& points)
 {
+  const char* names[4] = { "xmin", "xmax", "ymin", "ymax" };
+  for (int k = 0; k < 4; ++k)
+  {
+    if (std::isnan(bounds[k]))
+    {
+      std::ostringstream message;
+      message << "WindowBounds " << names[k] << " is NaN (xmin, xmax, ymin, ymax = " << bounds[0]
+              << ", " << bounds[1] << ", " << bounds[2] << ", " << bounds[3] << ")";
+      throw tessera::InputError(message.str());
+    }
+  }
   std::vector<tessera::HalfPlane> halfPlanes;
   const bool haveBounds = bounds[0] < bounds[1] && bounds[2] < bounds[3];
   if (haveBounds)
@@ -98,9 +142,9 @@ tessera::Window ChooseWindow(const double bounds[4],
   {
     if (haveBounds && halfPlanes.size() == 4)
     {
-      return tessera::Window::Rectangle(bounds[0], bounds[1], bounds[2], bounds[3]);
+      return Representable(tessera::Window::Rectangle(bounds[0], bounds[1], bounds[2], bounds[3]));
     }
-    return tessera::Window(halfPlanes);
+    return Representable(tessera::Window(halfPlanes));
   }
   if (!(padding >= 0.0) || !std::isfinite(padding))
   {
@@ -118,8 +162,19 @@ tessera::Window ChooseWindow(const double bounds[4],
   // Identical points: a unit square around them (a padding of a zero side would be empty).
   const double pad = side > 0.0 ? padding * side : 0.5;
   const double margin = side > 0.0 && pad == 0.0 ? side * 1e-9 : 0.0; // keep points strictly inside
-  return tessera::Window::Rectangle(
-    xmin - pad - margin, xmax + pad + margin, ymin - pad - margin, ymax + pad + margin);
+  const double lower[2] = { Below(xmin, pad + margin), Below(ymin, pad + margin) };
+  const double upper[2] = { Above(xmax, pad + margin), Above(ymax, pad + margin) };
+  if (!std::isfinite(lower[0]) || !std::isfinite(lower[1]) || !std::isfinite(upper[0]) ||
+    !std::isfinite(upper[1]))
+  {
+    std::ostringstream message;
+    message.precision(17);
+    message << "Padding " << padding << " of the points' bounding box (x " << xmin << " .. " << xmax
+            << ", y " << ymin << " .. " << ymax
+            << ") gives an infinite window; set a smaller Padding or WindowBounds";
+    throw tessera::InputError(message.str());
+  }
+  return Representable(tessera::Window::Rectangle(lower[0], upper[0], lower[1], upper[1]));
 }
 
 void AddIdFieldArray(vtkDataObject* data, const char* name, const std::vector<std::int32_t>& ids)

@@ -29,7 +29,10 @@ std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points);
 /// The window a filter works in: the rectangle `bounds` (xmin, xmax, ymin, ymax) when it is not
 /// empty, intersected with `constraints` (a, b, c triples: a*x + b*y + c < 0); with neither, the
 /// bounding box of the points padded on every side by `padding` times its larger side (a unit
-/// square around a single point or a cloud of identical points; [-1, 1]^2 with no point).
+/// square around a single point or a cloud of identical points; [-1, 1]^2 with no point). A side
+/// that rounding would leave on the points (a padding below their coordinates' ulp) moves out to
+/// the next double, so every point stays strictly inside. Throws tessera::InputError for a NaN
+/// bound and for a padding that makes the window infinite.
 tessera::Window ChooseWindow(const double bounds[4],
   const std::vector<double>& constraints,
   double padding,

@@ -420,8 +420,7 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
       ? RunBrasselReif(window, std::move(points))
       : RunGreenSibson(std::move(window), std::move(points), this->ComputeContiguityGraph);
     this->UpdateProgress(0.8);
-    graphOutput->Initialize();
-    std::optional<GraphWriter> graph; // none: output 1 stays empty
+    std::optional<GraphWriter> graph; // none: output 1 stays empty (its field data passed)
     if (this->ComputeContiguityGraph)
     {
       graph.emplace(result.Graph, input, graphOutput);

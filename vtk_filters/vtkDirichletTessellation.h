@@ -37,9 +37,10 @@
  * (unsigned char): 0 = neighbours sharing an edge of positive length, 1 = half-neighbours (sharing
  * only a degenerate vertex).
  *
- * With ComputeContiguityGraph off, output 1 is left empty (no points, no lines) and the graph is
- * neither derived nor written: a caller that wants only the tiles saves that time (about 15-25%
- * of the filter's) and the graph's memory (some 12 bytes per contiguity, 3 per point).
+ * With ComputeContiguityGraph off, output 1 has no points and no lines (the input's field data is
+ * still passed to it) and the graph is not written (nor derived, with GreenSibson; the sweep finds
+ * it anyway): a caller that wants only the tiles saves that time (about 10-25% of the filter's)
+ * and the graph's memory (some 12 bytes per contiguity, 3 per point).
  *
  * Both outputs' cell arrays use 32-bit storage (read by VTK like the 64-bit kind).
  *

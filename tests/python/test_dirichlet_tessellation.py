@@ -383,6 +383,11 @@ def test_graph_off_leaves_the_tiles_unchanged():
     coords = [(rng.uniform(0, 1), rng.uniform(0, 1)) for _ in range(60000)]
     coords += [coords[7], (3.0, 3.0)]
     data = make_points(coords, rain=[float(k % 97) for k in range(len(coords))])
+    from vtkmodules.vtkCommonCore import vtkStringArray
+    note = vtkStringArray()
+    note.SetName("Provenance")
+    note.InsertNextValue("field data every output keeps")
+    data.GetFieldData().AddArray(note)
 
     def arrays(output):
         result = {"points": vtk_to_numpy(output.GetPoints().GetData()).copy(),
@@ -390,8 +395,9 @@ def test_graph_off_leaves_the_tiles_unchanged():
                   "ids": vtk_to_numpy(output.GetPolys().GetConnectivityArray()).copy()}
         for data_set in (output.GetCellData(), output.GetFieldData()):
             for a in range(data_set.GetNumberOfArrays()):
-                array = data_set.GetArray(a)
-                result[array.GetName()] = vtk_to_numpy(array).copy()
+                array = data_set.GetArray(a)  # None for the string array
+                if array is not None:
+                    result[array.GetName()] = vtk_to_numpy(array).copy()
         return result
 
     for algorithm in ("GreenSibson", "BrasselReif"):
@@ -417,9 +423,49 @@ def test_graph_off_leaves_the_tiles_unchanged():
         assert_that(graph.GetNumberOfPoints() == 0 and graph.GetNumberOfCells() == 0,
                     f"{algorithm}: output 1 empty ({graph.GetNumberOfPoints()} points, "
                     f"{graph.GetNumberOfCells()} cells)")
+        for port in (0, 1):
+            kept = f.GetOutput(port).GetFieldData().GetAbstractArray("Provenance")
+            assert_that(kept is not None and kept.GetValue(0) == note.GetValue(0),
+                        f"{algorithm}: output {port} keeps the input's field data without the graph")
         f.ComputeContiguityGraphOn()
         f.Update()
         assert_that(f.GetOutput(1).GetNumberOfCells() == pairs, f"{algorithm}: the graph is back")
+
+
+def test_automatic_window_keeps_every_point_and_bad_windows_are_named():
+    # The automatic window's padding can be far below the coordinates' ulp: every point must still
+    # get its tile (the window's sides move out to the next doubles), and the tiles fill it.
+    import numpy as np
+
+    x = 1e6
+    cases = [("0.25 apart at 1e15", [(1e15, 1e15), (1e15 + 0.25, 1e15 + 0.25)], 0.1),
+             ("1 ulp apart at 1e6", [(x, x), (float(np.nextafter(x, 2e6)),) * 2], 0.1),
+             ("Padding 0 at 1e15", [(1e15 + a, 1e15 + b) for a, b in [(0, 0), (1, 0), (0, 1), (1, 1), (0.5, 0.5)]], 0.0),
+             ("Padding 0 at 1e9", [(1e9 + a, 1e9 + b) for a, b in [(0, 0), (1, 0), (0, 1), (1, 1), (0.5, 0.5)]], 0.0),
+             ("one point at 1e16", [(1e16, 1e16)], 0.1),
+             ("identical points at 1e17", [(1e17, 1e17)] * 3, 0.1)]
+    for name, coords, padding in cases:
+        f = vtkDirichletTessellation()
+        messages = messages_of(f)
+        f.SetInputData(make_points(coords))
+        f.SetPadding(padding)
+        f.Update()
+        tiles = f.GetOutput(0)
+        distinct = len(set(coords))
+        rejected = tiles.GetFieldData().GetArray("RejectedPointIds").GetNumberOfTuples()
+        assert_that(tiles.GetNumberOfCells() == distinct and rejected == 0,
+                    f"{name}: {tiles.GetNumberOfCells()} tiles of {distinct}, {rejected} rejected, {messages}")
+    for name, setup, expected in [
+            ("NaN bound", lambda f: f.SetWindowBounds(math.nan, 1, 0, 1), "WindowBounds xmin is NaN"),
+            ("infinite padding", lambda f: f.SetPadding(math.inf), "area overflows"),
+            ("huge bounds", lambda f: f.SetWindowBounds(-1e200, 1e200, -1e200, 1e200), "area overflows")]:
+        f = vtkDirichletTessellation()
+        messages = messages_of(f)
+        f.SetInputData(make_points([(0.2, 0.3), (0.7, 0.6), (0.4, 0.9)]))
+        setup(f)
+        f.Update()
+        assert_that(len(messages) == 1 and expected in messages[0] and f.GetOutput(0).GetNumberOfCells() == 0,
+                    f"{name}: an error saying '{expected}', not NaN areas: {messages}")
 
 
 if __name__ == "__main__":
@@ -434,4 +480,5 @@ if __name__ == "__main__":
          test_tiles_form_a_conforming_mesh,
          test_large_graph_is_sorted_with_kinds_following_pairs,
          test_32_bit_cell_arrays_survive_a_vtp_round_trip,
-         test_graph_off_leaves_the_tiles_unchanged])
+         test_graph_off_leaves_the_tiles_unchanged,
+         test_automatic_window_keeps_every_point_and_bad_windows_are_named])
