@@ -509,6 +509,30 @@ std::vector<std::int32_t> GroupByPlace(const std::vector<Point2>& xy, double met
   return first;
 }
 
+/// Throws InputError naming the ring and vertex of a catchment vertex outside -360 .. 360 degrees
+/// of longitude or -90 .. 90 of latitude (a typo such as -1031.5 for -103.15 would otherwise wrap
+/// around the globe and give a catchment of some 10^6 km^2).
+void CheckCatchmentLonLat(const std::vector<std::size_t>& offsets,
+  const std::vector<Point2>& lonlat)
+{
+  for (std::size_t r = 0; r + 1 < offsets.size(); ++r)
+  {
+    for (std::size_t k = offsets[r]; k < offsets[r + 1] && k < lonlat.size(); ++k)
+    {
+      const Point2& p = lonlat[k];
+      if (std::isfinite(p.x) && std::isfinite(p.y) &&
+        (std::abs(p.y) > 90.0 || std::abs(p.x) > 360.0))
+      {
+        std::ostringstream message;
+        message.precision(17);
+        message << "catchment ring " << r << " vertex " << (k - offsets[r])
+                << " has an invalid longitude/latitude (" << p.x << ", " << p.y << ")";
+        throw InputError(message.str());
+      }
+    }
+  }
+}
+
 } // namespace
 
 ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonLat,
@@ -522,7 +546,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   for (std::size_t g = 0; g < gaugesLonLat.size(); ++g)
   {
     const Point2& p = gaugesLonLat[g];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || std::abs(p.y) > 90.0)
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || std::abs(p.y) > 90.0 || std::abs(p.x) > 360.0)
     {
       std::ostringstream message;
       message.precision(17);
@@ -536,6 +560,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     throw InputError("CoLocatedMetres must be a finite distance >= 0, not " +
       std::to_string(settings.CoLocatedMetres));
   }
+  CheckCatchmentLonLat(catchmentRingOffsets, catchmentLonLat);
   const CleanRings rings = ValidateRings(catchmentRingOffsets, catchmentLonLat);
 
   if (settings.HaveProjection)

@@ -102,8 +102,9 @@ class ThiessenArealAverage
 {
 public:
   /// gaugesLonLat: one point per gauge (id = index). Throws InputError naming the gauge for a
-  /// NaN/Inf coordinate or |latitude| > 90. The catchment: rings in lon/lat (flat offsets, even-odd
-  /// rule); throws InputError naming ring, vertex or segments when a ring is degenerate or
+  /// NaN/Inf coordinate, |latitude| > 90 or |longitude| > 360, and naming the ring and vertex for
+  /// a catchment vertex out of those ranges. The catchment: rings in lon/lat (flat offsets,
+  /// even-odd rule); throws InputError naming ring, vertex or segments when a ring is degenerate or
   /// self-intersecting or two rings cross. Gauges at one place (within CoLocatedMetres) are
   /// grouped: at each step the first of a group that reported is used (see DuplicateGauges).
   ThiessenArealAverage(const std::vector<Point2>& gaugesLonLat,

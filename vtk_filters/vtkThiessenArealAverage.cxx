@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <map>
@@ -54,7 +55,22 @@ std::string Trimmed(const std::string& text, const char* characters = " \t")
 /// read as text ("050109") matches the same id read as a number (50109).
 std::string StationKey(const vtkVariant& value)
 {
-  std::string text = Trimmed(value.ToString(), " \t\"");
+  // A floating-point id (a CSV reader's numeric column) in full: ToString() keeps 6 digits, which
+  // made USGS-style ids such as 06730200 and 06730500 one station.
+  std::string text;
+  if (value.IsFloat() || value.IsDouble())
+  {
+    const double number = value.ToDouble();
+    char digits[64];
+    const bool integral = std::isfinite(number) && number == std::floor(number) &&
+      std::fabs(number) < 9007199254740992.0; // 2^53: every such double is an exact integer
+    std::snprintf(digits, sizeof digits, integral ? "%.0f" : "%.17g", number);
+    text = digits;
+  }
+  else
+  {
+    text = Trimmed(value.ToString(), " \t\"");
+  }
   if (!text.empty() &&
     std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }))
   {
@@ -525,7 +541,8 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
 
   in.Times.clear();
   in.Values.clear();
-  std::vector<std::string> unknownStations;
+  std::vector<std::string> unknownStations, sharedIds, repeatedNames;
+  std::vector<std::int32_t> repeatedRows;
   if (observations)
   {
     if (observations->GetNumberOfRows() == 0)
@@ -546,6 +563,16 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     in.Times = read.Times;
     in.Values.assign(in.Times.size(), std::vector<double>(gaugeCount, missing));
     std::unordered_map<std::string, bool> reportedUnknown;
+    for (std::size_t g = 0; g < gaugeCount; ++g)
+    {
+      const std::string key = StationKey(stationIds->GetVariantValue(static_cast<vtkIdType>(g)));
+      const std::size_t first = gaugeOf.at(key);
+      if (first != g)
+      {
+        sharedIds.push_back(
+          key + " (gauges " + std::to_string(first) + " and " + std::to_string(g) + ")");
+      }
+    }
     for (vtkIdType r = 0; r < observations->GetNumberOfRows(); ++r)
     {
       const std::string key = StationKey(stations->GetVariantValue(r));
@@ -571,6 +598,11 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
       if (std::isnan(slot))
       {
         slot = value; // a repeated (station, time) row keeps its first value
+      }
+      else
+      {
+        repeatedRows.push_back(static_cast<std::int32_t>(r));
+        repeatedNames.push_back("row " + std::to_string(r) + " (station " + key + ")");
       }
     }
   }
@@ -636,6 +668,21 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
                     << " station id(s) that no gauge has were ignored: "
                     << ListIds(unknownStations));
   }
+  if (!sharedIds.empty())
+  {
+    vtkWarningMacro(<< sharedIds.size()
+                    << " station id(s) are given to more than one gauge; their observations go "
+                       "to the first: "
+                    << ListIds(sharedIds));
+  }
+  if (!repeatedRows.empty())
+  {
+    vtkWarningMacro(<< repeatedRows.size()
+                    << " observation row(s) repeat a station and time of an earlier row with a "
+                       "value; the earlier value is used (rows from 0, listed in "
+                       "RepeatedObservationRows): "
+                    << ListIds(repeatedNames));
+  }
   if (!duplicates.empty())
   {
     vtkWarningMacro(<< duplicates.size()
@@ -680,6 +727,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   tessera_vtk::AddIdFieldArray(in.Summary, "UnobservedGaugeIds", unobserved);
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateGaugeIds", duplicates);
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateOfGaugeIds", duplicateOf);
+  tessera_vtk::AddIdFieldArray(in.Summary, "RepeatedObservationRows", repeatedRows);
 }
 
 //------------------------------------------------------------------------------

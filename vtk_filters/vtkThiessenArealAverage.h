@@ -29,7 +29,9 @@
  *   empty field of an otherwise numeric column into 0, so write missing values as NaN or NA. A
  *   row's time that is not a finite number, a date or a month 1 .. 12, and a value that is not a
  *   number or a missing-value marker, are errors naming the row.
- * Station ids match as text (leading zeros of integer ids are ignored, so "050109" matches 50109).
+ * Station ids match as text (leading zeros of integer ids are ignored, so "050109" matches 50109;
+ * a floating-point id column, as a CSV reader makes, is read in full, so 6730200 and 6730500 stay
+ * two stations).
  *
  * The projection is vtkGeographicProjection's automatic equal-area conic fitted to the gauges and
  * catchment, unless ProjectionRecord holds a `TesseraProjection` record (e.g. "projection=UTM
@@ -53,11 +55,14 @@
  * its `CoveredFraction` and its areal mean is the sum of `Weight` x `Value`. WeightsTable off
  * leaves it empty.
  *
- * Unused input is reported, never dropped silently: gauges with no observation, observations of
- * unknown stations, and co-located gauges (within 1 cm once projected; the first is kept and its
- * value used) are listed in a warning and in output 1's field data (`UnobservedGaugeIds`,
- * `DuplicateGaugeIds`, `DuplicateOfGaugeIds`). A gauge with a NaN or out-of-range coordinate and a
- * self-intersecting catchment are errors naming them.
+ * Unused input is reported, never dropped silently, in a warning: gauges with no observation,
+ * observations of unknown stations, a station id given to several gauges (its observations go to
+ * the first), observation rows repeating the station and time of an earlier row that had a value
+ * (the earlier value is used), and co-located gauges (within 1 cm once projected; the first is
+ * kept and its value used). Output 1's field data lists the gauges and rows among them:
+ * `UnobservedGaugeIds`, `DuplicateGaugeIds`, `DuplicateOfGaugeIds`, `RepeatedObservationRows`
+ * (table rows, from 0). A gauge with a NaN or out-of-range coordinate (latitude beyond 90 degrees,
+ * longitude beyond 360) and a self-intersecting catchment are errors naming them.
  */
 
 #ifndef vtkThiessenArealAverage_h

@@ -284,6 +284,29 @@ TEST(ArealAverage, BadInputIsNamed)
   {
     EXPECT_NE(std::string(e.what()).find("gauge 1"), std::string::npos) << e.what();
   }
+  // Longitudes beyond 360 degrees are typos (-1031.5 for -103.15), for a gauge and for the
+  // catchment; 0 .. 360 and -180 .. 180 are both fine.
+  const auto errorOf = [&](const std::vector<Point2>& gauges, const std::vector<Point2>& ring)
+  {
+    try
+    {
+      ThiessenArealAverage average(gauges, catchment.Offsets, ring);
+    }
+    catch (const InputError& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(
+    errorOf({ { 0.2, 0.2 }, { -1031.5, 0.5 } }, catchment.Ring).find("gauge 1"), std::string::npos);
+  const Square far(359.0, 0.0, 360.5, 1.0);
+  EXPECT_NE(
+    errorOf({ { 359.5, 0.5 } }, far.Ring).find("catchment ring 0 vertex 1"), std::string::npos)
+    << errorOf({ { 359.5, 0.5 } }, far.Ring);
+  const Square east(359.0, 0.0, 360.0, 1.0), west(-180.0, 0.0, -179.0, 1.0);
+  EXPECT_EQ(errorOf({ { 359.5, 0.5 }, { -360.0, 0.2 } }, east.Ring), "");
+  EXPECT_EQ(errorOf({ { -179.5, 0.5 } }, west.Ring), "");
   const std::vector<Point2> bowtie = { { 0, 0 }, { 1, 1 }, { 1, 0 }, { 0, 1 } };
   EXPECT_THROW(ThiessenArealAverage({ { 0.2, 0.2 } }, { 0, 4 }, bowtie), InputError);
   ThiessenArealAverage average({ { 0.2, 0.2 } }, catchment.Offsets, catchment.Ring);

@@ -189,6 +189,14 @@ def test_bad_gauge_and_self_intersecting_catchment_are_named():
     f.SetCatchmentData(polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]]))
     f.Update()
     assert_that(len(messages) == 1 and "gauge 1" in messages[0], f"gauge 1 named: {messages}")
+    for gauge, ring, named in [((-1031.5, 0.5), [(0, 0), (1, 0), (1, 1), (0, 1)], "gauge 1"),
+                               ((0.5, 0.5), [(0, 0), (1000, 0), (1000, 1), (0, 1)], "catchment ring 0 vertex 1")]:
+        h = vtkThiessenArealAverage()
+        messages = messages_of(h)
+        h.SetGaugesData(gauges_polydata([(0.2, 0.2), gauge], ["a", "b"], [1.0, 2.0]))
+        h.SetCatchmentData(polygon([ring]))
+        h.Update()
+        assert_that(len(messages) == 1 and named in messages[0], f"longitude typo named ({named}): {messages}")
     g = vtkThiessenArealAverage()
     messages = messages_of(g)
     g.SetGaugesData(gauges_polydata([(0.2, 0.2)], ["a"], [1.0]))
@@ -520,6 +528,58 @@ def test_weights_table_lists_every_step():
     assert_that(f.GetOutputDataObject(2).GetNumberOfRows() == 0, "WeightsTable off leaves output 2 empty")
 
 
+def test_long_numeric_ids_repeated_rows_and_shared_ids_are_kept_apart_and_reported():
+    # USGS-style ids in double columns (as a CSV reader gives them) are four stations, not one:
+    # the mean of four symmetric gauges with values 1..4 is 2.5 with weights of 1/4.
+    from vtkmodules.vtkCommonCore import vtkDoubleArray as Doubles
+
+    coords = [(-0.5, -0.5), (0.5, -0.5), (0.5, 0.5), (-0.5, 0.5)]
+    ids = [394529105231201.0, 394529105231202.0, 6730200.0, 6730500.0]
+    gauges = gauges_polydata(coords, ["x"] * 4)
+    numeric = Doubles()
+    numeric.SetName("usgs")
+    for i in ids:
+        numeric.InsertNextValue(i)
+    gauges.GetPointData().AddArray(numeric)
+    table = vtkTable()
+    station, value, year = Doubles(), Doubles(), Doubles()
+    station.SetName("usgs")
+    value.SetName("value")
+    year.SetName("time")
+    rows = [(ids[0], 1.0), (ids[1], 2.0), (ids[2], 3.0), (ids[3], 4.0), (ids[2], 30.0)]
+    for sid, v in rows:
+        station.InsertNextValue(sid)
+        value.InsertNextValue(v)
+        year.InsertNextValue(2000.0)
+    for column in (station, value, year):
+        table.AddColumn(column)
+    from vtkmodules.vtkCommonCore import vtkCommand
+
+    f = vtkThiessenArealAverage()
+    messages = messages_of(f, vtkCommand.WarningEvent)
+    f.SetGaugesData(gauges)
+    f.SetStationIdArrayName("usgs")
+    f.SetStationColumn("usgs")
+    f.SetCatchmentData(polygon([[(-1, -1), (1, -1), (1, 1), (-1, 1)]]))
+    f.SetObservationsData(table)
+    f.Update(1)
+    assert_close(summary_column(f, "ArealMean")[0], 2.5, 1e-9, "four stations, the first of the repeated rows")
+    assert_that(summary_column(f, "StationsUsed")[0] == 4, "four stations used")
+    repeated = f.GetOutputDataObject(1).GetFieldData().GetArray("RepeatedObservationRows")
+    assert_that(repeated.GetNumberOfTuples() == 1 and repeated.GetValue(0) == 4, "row 4 listed as a repeat")
+    assert_that(any("row 4 (station 6730200)" in m for m in messages), f"the repeat is reported: {messages}")
+    # One station id on two gauges: reported, its observations go to the first.
+    g = vtkThiessenArealAverage()
+    messages = messages_of(g, vtkCommand.WarningEvent)
+    g.SetGaugesData(gauges_polydata(coords, ["a", "b", "c", "b"]))
+    g.SetCatchmentData(polygon([[(-1, -1), (1, -1), (1, 1), (-1, 1)]]))
+    g.SetObservationsData(observations_table({(2000, 1): {"a": 1.0, "b": 2.0, "c": 3.0}}))
+    g.Update(1)
+    assert_that(any("b (gauges 1 and 3)" in m for m in messages), f"the shared id is reported: {messages}")
+    unobserved = g.GetOutputDataObject(1).GetFieldData().GetArray("UnobservedGaugeIds")
+    assert_that(unobserved.GetNumberOfTuples() == 1 and unobserved.GetValue(0) == 3, "gauge 3 unobserved")
+
+
 if __name__ == "__main__":
     run([test_four_symmetric_gauges_share_a_square,
          test_colorado_months_match_a_brute_force_raster,
@@ -534,4 +594,5 @@ if __name__ == "__main__":
          test_the_monthly_csv_as_a_text_reader_gives_it,
          test_bad_dates_and_months_are_named,
          test_text_values_with_missing_markers,
-         test_weights_table_lists_every_step])
+         test_weights_table_lists_every_step,
+         test_long_numeric_ids_repeated_rows_and_shared_ids_are_kept_apart_and_reported])
