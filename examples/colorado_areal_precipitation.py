@@ -9,9 +9,11 @@ weighted by the ellipsoidal area of its tile inside the catchment, and the areal
 weighted mean. A gauge outside the state still owns the part of the state nearest to it.
 
 Writes into --out:
-  areal_mean.csv         year,month,stations_used,stations_weighted,areal_mean (one row a month;
-                         stations_used = gauges that reported, stations_weighted = those whose tile
-                         reaches the catchment; areal_mean is empty where no gauge reported)
+  areal_mean.csv         year,month,stations_used,stations_weighted,areal_mean (one row a month,
+                         from the first to the last month of the observations, months without
+                         any row included; stations_used = gauges that reported,
+                         stations_weighted = those whose tile reaches the catchment; areal_mean
+                         is empty where no gauge reported)
   weights_YYYY_MM.csv    station_id,name,lon,lat,weight,area_km2,precip for --month
   weights_all_months.csv year,month,station_id,weight,area_km2,precip: every month's weights (a row
                          per month and gauge with a weight)
@@ -99,6 +101,22 @@ def read_observations(path):
     if unrecorded:
         print(f"{path}: {unrecorded} observation(s) without a value (empty, NA, NaN or null) "
               "count as missing", file=sys.stderr)
+    # A month without any row between the first and the last is a month where no gauge reported:
+    # a row with a missing value (for the first row's station) keeps it a step of its own, so that
+    # areal_mean.csv has every month, empty where nothing was measured.
+    present = {year_month(times.GetValue(r)) for r in range(times.GetNumberOfValues())}
+    if present:
+        first, last = min(present), max(present)
+        gaps = [(y, m) for y in range(first[0], last[0] + 1) for m in range(1, 13)
+                if first <= (y, m) <= last and (y, m) not in present]
+        for y, m in gaps:
+            stations.InsertNextValue(stations.GetValue(0))
+            times.InsertNextValue(decimal_time(y, m))
+            values.InsertNextValue(math.nan)
+        if gaps:
+            print(f"{path}: {len(gaps)} month(s) between {first[0]}-{first[1]:02d} and "
+                  f"{last[0]}-{last[1]:02d} have no row; they are months where no gauge reported",
+                  file=sys.stderr)
     table = vtkTable()
     for column in (stations, times, values):
         table.AddColumn(column)

@@ -122,6 +122,20 @@ def test_missing_values_keep_their_months():
         got = [(r["month"], r["stations_used"], r["areal_mean"]) for r in rows]
         assert_that(got == [("1", "0", ""), ("2", "0", ""), ("3", "1", "2.500000")],
                     f"months with missing values: {got}")
+        # Months without any row between the first and the last (1950-12 to 1951-02 here) are
+        # months where no gauge reported: they keep their rows.
+        with open(observations, "w") as f:
+            f.write("station_id,year,month,precip\n050848,1950,11,1.5\n050848,1951,3,2.5\n")
+        status, stdout, stderr = run_example("colorado_areal_precipitation.py", "--out", out,
+                                             "--observations", observations, "--month", "1951-01",
+                                             "--no-plots")
+        assert_that(status == 0, f"failed ({status}): {stderr}")
+        assert_that("3 month(s) between 1950-11 and 1951-03 have no row" in stderr, f"gaps not reported: {stderr}")
+        rows = read_csv(os.path.join(out, "areal_mean.csv"))
+        got = [(r["year"], r["month"], r["stations_used"], r["areal_mean"]) for r in rows]
+        assert_that(got == [("1950", "11", "1", "1.500000"), ("1950", "12", "0", ""), ("1951", "1", "0", ""),
+                            ("1951", "2", "0", ""), ("1951", "3", "1", "2.500000")], f"every month listed: {got}")
+        assert_that("1951-01: areal mean nan, 0 gauges reported" in stdout, f"the chosen empty month: {stdout}")
 
 
 def test_bad_files_are_named():
