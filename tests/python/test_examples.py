@@ -110,28 +110,29 @@ def test_the_colorado_main_job():
 def test_missing_values_keep_their_months():
     with tempfile.TemporaryDirectory() as out:
         observations = os.path.join(out, "obs.csv")
-        with open(observations, "w") as f:
-            f.write("station_id,year,month,precip\n050848,1950,1,\n050848,1950,2,NA\n"
-                    "051294,1950,2,n/a\n050848,1950,3,2.5\n051294,1950,3,null\n")
-        status, stdout, stderr = run_example("colorado_areal_precipitation.py", "--out", out,
-                                             "--observations", observations, "--month", "1950-03",
-                                             "--no-plots")
-        assert_that(status == 0, f"failed ({status}): {stderr}")
+
+        def run_on(text, month):
+            """Runs the example on observations `text`; returns its stdout, stderr and the rows of
+            areal_mean.csv."""
+            with open(observations, "w") as f:
+                f.write(text)
+            status, stdout, stderr = run_example("colorado_areal_precipitation.py", "--out", out,
+                                                 "--observations", observations, "--month", month,
+                                                 "--no-plots")
+            assert_that(status == 0, f"failed ({status}): {stderr}")
+            return stdout, stderr, read_csv(os.path.join(out, "areal_mean.csv"))
+
+        stdout, stderr, rows = run_on("station_id,year,month,precip\n050848,1950,1,\n050848,1950,2,NA\n"
+                                      "051294,1950,2,n/a\n050848,1950,3,2.5\n051294,1950,3,null\n", "1950-03")
         assert_that("4 observation(s) without a value" in stderr, f"missing values not reported: {stderr}")
-        rows = read_csv(os.path.join(out, "areal_mean.csv"))
         got = [(r["month"], r["stations_used"], r["areal_mean"]) for r in rows]
         assert_that(got == [("1", "0", ""), ("2", "0", ""), ("3", "1", "2.500000")],
                     f"months with missing values: {got}")
         # Months without any row between the first and the last (1950-12 to 1951-02 here) are
         # months where no gauge reported: they keep their rows.
-        with open(observations, "w") as f:
-            f.write("station_id,year,month,precip\n050848,1950,11,1.5\n050848,1951,3,2.5\n")
-        status, stdout, stderr = run_example("colorado_areal_precipitation.py", "--out", out,
-                                             "--observations", observations, "--month", "1951-01",
-                                             "--no-plots")
-        assert_that(status == 0, f"failed ({status}): {stderr}")
+        stdout, stderr, rows = run_on("station_id,year,month,precip\n050848,1950,11,1.5\n050848,1951,3,2.5\n",
+                                      "1951-01")
         assert_that("3 month(s) between 1950-11 and 1951-03 have no row" in stderr, f"gaps not reported: {stderr}")
-        rows = read_csv(os.path.join(out, "areal_mean.csv"))
         got = [(r["year"], r["month"], r["stations_used"], r["areal_mean"]) for r in rows]
         assert_that(got == [("1950", "11", "1", "1.500000"), ("1950", "12", "0", ""), ("1951", "1", "0", ""),
                             ("1951", "2", "0", ""), ("1951", "3", "1", "2.500000")], f"every month listed: {got}")
