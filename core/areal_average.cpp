@@ -509,9 +509,24 @@ std::vector<std::int32_t> GroupByPlace(const std::vector<Point2>& xy, double met
   return first;
 }
 
-/// Throws InputError naming the ring and vertex of a catchment vertex outside -360 .. 360 degrees
-/// of longitude or -90 .. 90 of latitude (a typo such as -1031.5 for -103.15 would otherwise wrap
-/// around the globe and give a catchment of some 10^6 km^2).
+/// Whether p is a longitude within -360 .. 360 degrees and a latitude within -90 .. 90 (false for
+/// NaN). Wider longitudes are typos (-1031.5 for -103.15): a gauge would wrap round the globe and
+/// a catchment span some 10^6 km^2.
+bool InLonLatRange(const Point2& p)
+{
+  return std::abs(p.y) <= 90.0 && std::abs(p.x) <= 360.0;
+}
+
+[[noreturn]] void ThrowInvalidLonLat(const std::string& what, const Point2& p)
+{
+  std::ostringstream message;
+  message.precision(17);
+  message << what << " has an invalid longitude/latitude (" << p.x << ", " << p.y << ")";
+  throw InputError(message.str());
+}
+
+/// Throws InputError naming the ring and vertex of a finite catchment vertex out of range (NaN
+/// and infinite ones are left to ValidateRings, which names them so).
 void CheckCatchmentLonLat(const std::vector<std::size_t>& offsets,
   const std::vector<Point2>& lonlat)
 {
@@ -520,14 +535,10 @@ void CheckCatchmentLonLat(const std::vector<std::size_t>& offsets,
     for (std::size_t k = offsets[r]; k < offsets[r + 1] && k < lonlat.size(); ++k)
     {
       const Point2& p = lonlat[k];
-      if (std::isfinite(p.x) && std::isfinite(p.y) &&
-        (std::abs(p.y) > 90.0 || std::abs(p.x) > 360.0))
+      if (std::isfinite(p.x) && std::isfinite(p.y) && !InLonLatRange(p))
       {
-        std::ostringstream message;
-        message.precision(17);
-        message << "catchment ring " << r << " vertex " << (k - offsets[r])
-                << " has an invalid longitude/latitude (" << p.x << ", " << p.y << ")";
-        throw InputError(message.str());
+        ThrowInvalidLonLat(
+          "catchment ring " + std::to_string(r) + " vertex " + std::to_string(k - offsets[r]), p);
       }
     }
   }
@@ -545,14 +556,9 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   s.Settings = settings;
   for (std::size_t g = 0; g < gaugesLonLat.size(); ++g)
   {
-    const Point2& p = gaugesLonLat[g];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || std::abs(p.y) > 90.0 || std::abs(p.x) > 360.0)
+    if (!InLonLatRange(gaugesLonLat[g])) // NaN and infinities included
     {
-      std::ostringstream message;
-      message.precision(17);
-      message << "gauge " << g << " has an invalid longitude/latitude (" << p.x << ", " << p.y
-              << ")";
-      throw InputError(message.str());
+      ThrowInvalidLonLat("gauge " + std::to_string(g), gaugesLonLat[g]);
     }
   }
   if (!(settings.CoLocatedMetres >= 0.0) || !std::isfinite(settings.CoLocatedMetres))

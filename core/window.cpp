@@ -94,10 +94,10 @@ HalfPlane normalized(const HalfPlane& h)
   return HalfPlane{ std::ldexp(h.a, -e), std::ldexp(h.b, -e), std::ldexp(h.c, -e) };
 }
 
-Point2 crossing(const HalfPlane& p, const HalfPlane& q)
+// Where the lines of two normalized constraints (max(|a|, |b|) in [1, 2), as the window stores
+// them) cross.
+Point2 crossing(const HalfPlane& u, const HalfPlane& v)
 {
-  const HalfPlane u = normalized(p);
-  const HalfPlane v = normalized(q);
   const double d = difference_of_products(u.a, v.b, v.a, u.b);
   return Point2{ difference_of_products(u.b, v.c, v.b, u.c) / d,
     difference_of_products(u.c, v.a, v.c, u.a) / d };
@@ -325,7 +325,7 @@ bool Window::Contains(const Point2& p) const
 
 Point2 Window::Reflect(const Point2& p, std::size_t k) const
 {
-  const HalfPlane h = normalized(this->Effective.at(k));
+  const HalfPlane& h = this->Effective.at(k); // normalized: the products below cannot overflow
   const double value = std::fma(h.a, p.x, std::fma(h.b, p.y, h.c));
   const double scale = 2.0 * value / (h.a * h.a + h.b * h.b);
   return Point2{ p.x - scale * h.a, p.y - scale * h.b };

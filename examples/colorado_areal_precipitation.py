@@ -83,10 +83,13 @@ def read_observations(path):
     times.SetName("time")
     values.SetName("precip")
     unrecorded = 0
+    present = set()  # (year, month) of every row
     for line, row in csv_input.rows(path, ("station_id", "year", "month", "precip"), "observations"):
         station = csv_input.text(row, "station_id", path, line)
-        t = decimal_time(csv_input.integer(row, "year", path, line, 1, 9999),
-                         csv_input.integer(row, "month", path, line, 1, 12))
+        year_and_month = (csv_input.integer(row, "year", path, line, 1, 9999),
+                          csv_input.integer(row, "month", path, line, 1, 12))
+        present.add(year_and_month)
+        t = decimal_time(*year_and_month)
         # A missing value stays in the table as NaN: the gauge does not report that month (the
         # filter drops it for that step), and the month remains a step even if no gauge reports.
         value = math.nan
@@ -94,7 +97,7 @@ def read_observations(path):
             unrecorded += 1
         else:
             value = csv_input.number(row, "precip", path, line)
-            reporting.setdefault(year_month(t), set()).add(station)
+            reporting.setdefault(year_and_month, set()).add(station)
         stations.InsertNextValue(station)
         times.InsertNextValue(t)
         values.InsertNextValue(value)
@@ -104,7 +107,6 @@ def read_observations(path):
     # A month without any row between the first and the last is a month where no gauge reported:
     # a row with a missing value (for the first row's station) keeps it a step of its own, so that
     # areal_mean.csv has every month, empty where nothing was measured.
-    present = {year_month(times.GetValue(r)) for r in range(times.GetNumberOfValues())}
     if present:
         first, last = min(present), max(present)
         gaps = [(y, m) for y in range(first[0], last[0] + 1) for m in range(1, 13)

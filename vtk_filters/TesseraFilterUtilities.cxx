@@ -93,17 +93,21 @@ double Above(double value, double pad)
   return padded > value ? padded : std::nextafter(value, HUGE_VAL);
 }
 
+[[noreturn]] void ThrowWindowTooLarge(double xmin, double xmax, double ymin, double ymax)
+{
+  std::ostringstream message;
+  message << "the window (x " << xmin << " .. " << xmax << ", y " << ymin << " .. " << ymax
+          << ") is too large: its area overflows a double; set a smaller Padding or WindowBounds";
+  throw tessera::InputError(message.str());
+}
+
 // The window, unless it is so large that areas in it overflow (a Padding of 1e299 gave NaN areas).
 tessera::Window Representable(tessera::Window window)
 {
   if (!std::isfinite(window.Area()))
   {
     const tessera::Box2 box = tessera::BoundsOf(window.Vertices().data(), window.Vertices().size());
-    std::ostringstream message;
-    message << "the window (x " << box.XMin << " .. " << box.XMax << ", y " << box.YMin << " .. "
-            << box.YMax << ") is too large: its area overflows a double; set a smaller "
-            << "Padding or WindowBounds";
-    throw tessera::InputError(message.str());
+    ThrowWindowTooLarge(box.XMin, box.XMax, box.YMin, box.YMax);
   }
   return window;
 }
@@ -167,12 +171,7 @@ tessera::Window ChooseWindow(const double bounds[4],
   if (!std::isfinite(lower[0]) || !std::isfinite(lower[1]) || !std::isfinite(upper[0]) ||
     !std::isfinite(upper[1]))
   {
-    std::ostringstream message;
-    message.precision(17);
-    message << "Padding " << padding << " of the points' bounding box (x " << xmin << " .. " << xmax
-            << ", y " << ymin << " .. " << ymax
-            << ") gives an infinite window; set a smaller Padding or WindowBounds";
-    throw tessera::InputError(message.str());
+    ThrowWindowTooLarge(lower[0], upper[0], lower[1], upper[1]); // before Rectangle refuses it
   }
   return Representable(tessera::Window::Rectangle(lower[0], upper[0], lower[1], upper[1]));
 }

@@ -32,7 +32,7 @@ std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points);
 /// square around a single point or a cloud of identical points; [-1, 1]^2 with no point). A side
 /// that rounding would leave on the points (a padding below their coordinates' ulp) moves out to
 /// the next double, so every point stays strictly inside. Throws tessera::InputError for a NaN
-/// bound and for a padding that makes the window infinite.
+/// bound and for a window so large (a huge padding or bounds) that its area overflows.
 tessera::Window ChooseWindow(const double bounds[4],
   const std::vector<double>& constraints,
   double padding,

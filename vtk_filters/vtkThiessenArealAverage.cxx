@@ -553,26 +553,22 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
       ObservationColumn(observations, this->StationColumn, "station ids, numbers or text");
     const NumberColumn values(ObservationColumn(
       observations, this->ValueColumn, "numbers; NaN, NA or an empty field where missing"));
-    std::unordered_map<std::string, std::size_t> gaugeOf;
+    std::unordered_map<std::string, std::size_t> gaugeOf; // the first gauge of each id
     for (std::size_t g = 0; g < gaugeCount; ++g)
     {
-      gaugeOf.emplace(StationKey(stationIds->GetVariantValue(static_cast<vtkIdType>(g))), g);
+      const auto [at, first] =
+        gaugeOf.emplace(StationKey(stationIds->GetVariantValue(static_cast<vtkIdType>(g))), g);
+      if (!first)
+      {
+        sharedIds.push_back(
+          at->first + " (gauges " + std::to_string(at->second) + " and " + std::to_string(g) + ")");
+      }
     }
     const Internals::TimesCache& read =
       in.CachedReadTimes(observations, this->TimeColumn, this->MonthColumn);
     in.Times = read.Times;
     in.Values.assign(in.Times.size(), std::vector<double>(gaugeCount, missing));
     std::unordered_map<std::string, bool> reportedUnknown;
-    for (std::size_t g = 0; g < gaugeCount; ++g)
-    {
-      const std::string key = StationKey(stationIds->GetVariantValue(static_cast<vtkIdType>(g)));
-      const std::size_t first = gaugeOf.at(key);
-      if (first != g)
-      {
-        sharedIds.push_back(
-          key + " (gauges " + std::to_string(first) + " and " + std::to_string(g) + ")");
-      }
-    }
     for (vtkIdType r = 0; r < observations->GetNumberOfRows(); ++r)
     {
       const std::string key = StationKey(stations->GetVariantValue(r));
@@ -657,39 +653,23 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     duplicateOf.push_back(pair.second);
     duplicateNames.push_back(idOf(pair.first) + " (same place as " + idOf(pair.second) + ")");
   }
-  if (!unobserved.empty())
+  // One warning per kind of unused input: "N <what>: the first 20 names".
+  const auto warnOf = [this](const std::vector<std::string>& names, const char* what)
   {
-    vtkWarningMacro(<< unobserved.size() << " gauge(s) have no observation and are never used: "
-                    << ListIds(unobservedNames));
-  }
-  if (!unknownStations.empty())
-  {
-    vtkWarningMacro(<< "observations of " << unknownStations.size()
-                    << " station id(s) that no gauge has were ignored: "
-                    << ListIds(unknownStations));
-  }
-  if (!sharedIds.empty())
-  {
-    vtkWarningMacro(<< sharedIds.size()
-                    << " station id(s) are given to more than one gauge; their observations go "
-                       "to the first: "
-                    << ListIds(sharedIds));
-  }
-  if (!repeatedRows.empty())
-  {
-    vtkWarningMacro(<< repeatedRows.size()
-                    << " observation row(s) repeat a station and time of an earlier row with a "
-                       "value; the earlier value is used (rows from 0, listed in "
-                       "RepeatedObservationRows): "
-                    << ListIds(repeatedNames));
-  }
-  if (!duplicates.empty())
-  {
-    vtkWarningMacro(<< duplicates.size()
-                    << " gauge(s) stand where an earlier gauge stands; the first that reports is "
-                       "used: "
-                    << ListIds(duplicateNames));
-  }
+    if (!names.empty())
+    {
+      vtkWarningMacro(<< names.size() << " " << what << ": " << ListIds(names));
+    }
+  };
+  warnOf(unobservedNames, "gauge(s) have no observation and are never used");
+  warnOf(unknownStations, "station id(s) of the observations that no gauge has were ignored");
+  warnOf(sharedIds,
+    "station id(s) are given to more than one gauge; their observations go to the first");
+  warnOf(repeatedNames,
+    "observation row(s) repeat a station and time of an earlier row with a value; the earlier "
+    "value is used (rows from 0, listed in RepeatedObservationRows)");
+  warnOf(
+    duplicateNames, "gauge(s) stand where an earlier gauge stands; the first that reports is used");
 
   // The summary: every step in order, each one updating the tessellation of the one before.
   vtkNew<vtkDoubleArray> timeColumn, means, covered;
