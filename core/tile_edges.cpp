@@ -208,6 +208,18 @@ bool ClipCanonical(const Tess& tess,
     const double mx = 0.5 * (pa.x + pb.x), my = 0.5 * (pa.y + pb.y);
     const int scale = -std::ilogb(std::max(std::fabs(pb.y - pa.y), std::fabs(pb.x - pa.x)));
     const double dx = std::ldexp(-(pb.y - pa.y), scale), dy = std::ldexp(pb.x - pa.x, scale);
+    // An axis-aligned side keeps its coordinate exactly (-c/a or -c/b, one rounding), so a
+    // rectangle's tiles have straight sides; only the other coordinate comes from the bisector.
+    if (h.b == 0.0 && dx != 0.0)
+    {
+      const double x = -h.c / h.a;
+      return Point2{ x, my + (x - mx) / dx * dy };
+    }
+    if (h.a == 0.0 && dy != 0.0)
+    {
+      const double y = -h.c / h.b;
+      return Point2{ mx + (y - my) / dy * dx, y };
+    }
     const double t = -(h.a * mx + h.b * my + h.c) / (h.a * dx + h.b * dy);
     return Point2{ mx + t * dx, my + t * dy };
   };

@@ -98,6 +98,22 @@ HalfPlane normalized(const HalfPlane& h)
 // them) cross.
 Point2 crossing(const HalfPlane& u, const HalfPlane& v)
 {
+  // An axis-aligned line keeps its coordinate exactly (one rounding of -c/a or -c/b), so corners
+  // lie exactly on the axis-aligned sides they join, as the tile edges' crossings do.
+  if (u.b == 0.0 || v.b == 0.0)
+  {
+    const HalfPlane& vertical = u.b == 0.0 ? u : v;
+    const HalfPlane& other = u.b == 0.0 ? v : u;
+    const double x = -vertical.c / vertical.a;
+    return Point2{ x, other.a == 0.0 ? -other.c / other.b : -(other.a * x + other.c) / other.b };
+  }
+  if (u.a == 0.0 || v.a == 0.0)
+  {
+    const HalfPlane& horizontal = u.a == 0.0 ? u : v;
+    const HalfPlane& other = u.a == 0.0 ? v : u;
+    const double y = -horizontal.c / horizontal.b;
+    return Point2{ -(other.b * y + other.c) / other.a, y };
+  }
   const double d = difference_of_products(u.a, v.b, v.a, u.b);
   return Point2{ difference_of_products(u.b, v.c, v.b, u.c) / d,
     difference_of_products(u.c, v.a, v.c, u.a) / d };

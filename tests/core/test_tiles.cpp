@@ -260,6 +260,77 @@ TEST(Tiles, ScalingTheWindowConstraintsLeavesTheTiles)
   }
 }
 
+// Where a tile edge leaves the window through an axis-aligned side (x = X or y = Y), its end has
+// that coordinate exactly: the side's own value (a rectangle's bound, or -c/a correctly rounded
+// for a constraint a*x + c < 0), so a user's test "on the side" (x == xmax) holds and tiles of a
+// rectangle keep straight sides. The crossing used to be found along the bisector, m + t d, and
+// landed up to some ulps off the side. Checked for both tile derivations (TileSet and TileMesh)
+// against the side's value computed independently here.
+TEST(Tiles, CrossingsWithAxisAlignedSidesLieExactlyOnTheSides)
+{
+  struct Case
+  {
+    std::vector<HalfPlane> constraints;
+    std::vector<double> sideX, sideY; // the sides' exact coordinates
+  };
+  const double x0 = -3.3, x1 = 0.7, y0 = 0.1, y1 = 2.9;
+  const std::vector<Case> cases{
+    { { { -1, 0, x0 }, { 1, 0, -x1 }, { 0, -1, y0 }, { 0, 1, -y1 } }, { x0, x1 }, { y0, y1 } },
+    // x < 2.1 / 3 and y > -1.7 / 7, with a slanted third side: -c/a of the normalized
+    // constraint, which is -c/a of the given one (scaling by 2^k is exact).
+    { { { 3, 0, -2.1 }, { 0, -7, -1.7 }, { -1, 1, -1 } }, { 2.1 / 3 }, { -1.7 / 7 } },
+  };
+  for (std::size_t c = 0; c < cases.size(); ++c)
+  {
+    const Window window(cases[c].constraints);
+    const Box2 box = BoundsOf(window.Vertices().data(), window.Vertices().size());
+    std::mt19937_64 random(100 + c);
+    std::uniform_real_distribution<double> ux(box.XMin, box.XMax), uy(box.YMin, box.YMax);
+    std::vector<Point2> points;
+    while (points.size() < 3000)
+    {
+      const Point2 p{ ux(random), uy(random) };
+      if (window.Contains(p))
+      {
+        points.push_back(p);
+      }
+    }
+    DirichletTessellation t(window, points);
+    const TileSet tiles = TessellationDual(t).Tiles();
+    const TileMesh mesh = TessellationDual(t).TileMeshAndContiguities(false).Tiles;
+    std::size_t onSides = 0;
+    const auto check = [&](const Point2& v, const char* where)
+    {
+      for (const double x : cases[c].sideX)
+      {
+        if (std::fabs(v.x - x) <= 1e-9)
+        {
+          ++onSides;
+          EXPECT_EQ(v.x, x) << where << " case " << c << ": a vertex " << v.x - x
+                            << " off x = " << x;
+        }
+      }
+      for (const double y : cases[c].sideY)
+      {
+        if (std::fabs(v.y - y) <= 1e-9)
+        {
+          ++onSides;
+          EXPECT_EQ(v.y, y) << where << " case " << c << ": a vertex " << v.y - y
+                            << " off y = " << y;
+        }
+      }
+    };
+    for (const Point2& v : tiles.Vertices)
+    {
+      check(v, "TileSet");
+    }
+    for (const Point2& v : mesh.Vertices)
+    {
+      check(v, "TileMesh");
+    }
+    EXPECT_GT(onSides, 100u) << "case " << c;
+  }
+}
 TEST(Tiles, SquareLatticeHasSquareTilesAndDiagonalHalfNeighbours)
 {
   const int side = 10;
