@@ -47,6 +47,11 @@
 //    that are adjacent around the circle share edges; every other pair (the zero-length "neighbour"
 //    the paper records and the pair it drops) is reported as half-neighbours (kind 1), as the
 //    Green-Sibson engine does, when the vertex is inside the window.
+//  - Every vertex is found once, so a tile never repeats one; but distinct vertices can round to
+//    one point (circumcentres of nearly co-circular centroids, a side crossing within rounding of
+//    a window corner). The tile's polygon lists that point once, as the Green-Sibson engine's
+//    does: no two consecutive vertices (the last and the first included) are equal. Its area and
+//    NeighborCount are those of the exact tile (NeighborCount can then exceed the vertex count).
 //  - Instrumentation (Fig. 11), per polygon, summed over its searches: A = points consulted
 //    (fetched from the index within the ordinate range, and the dummies), B = points passing the
 //    abscissa-range and half-plane tests, C = points inside or on the circle (each one replaced

@@ -25,7 +25,9 @@
  * own copies). Cell data:
  * - `PointId` (vtkIdType): the index of the point in the input;
  * - `Area` (double): the tile's area, by compensated summation;
- * - `NeighborCount` (int): contiguities of the tile, window edges included (its polygon sides);
+ * - `NeighborCount` (int): contiguities of the tile, window edges included (its polygon sides,
+ *   decided exactly: where distinct corners round to one point, the polygon lists it once, never
+ *   twice in a row, and has fewer points than NeighborCount);
  * - every input point-data array, copied to the tile of its point (a gauge's values follow it).
  * Field data (on both outputs):
  * - `RejectedPointIds` (vtkIdType): points not strictly inside the window;
