@@ -1,8 +1,10 @@
 #include "vtkDirichletTessellation.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkIntArray.h"
@@ -26,9 +28,10 @@
 #include <climits>
 #include <cstdint>
 #include <exception>
-#include <string>
 #include <optional>
+#include <string>
 #include <utility>
+#include <vector>
 
 vtkStandardNewMacro(vtkDirichletTessellation);
 
@@ -106,6 +109,52 @@ void CheckFitsInt32(vtkIdType count, const char* what)
   }
 }
 
+/// The filter's own cell arrays on output 0. Their names are API: an input point-data array with
+/// one of them is passed under another name (see RenameInputArraysWithOwnNames).
+constexpr const char* OwnArrayNames[] = { "PointId", "Area", "NeighborCount" };
+
+/// The first of name + "_input", name + "_input_2", ... that no array of data has: an input with
+/// both "Area" and "Area_input" keeps both.
+std::string FreeInputName(vtkFieldData* data, const std::string& name)
+{
+  std::string candidate = name + "_input";
+  for (int k = 2; data->GetAbstractArray(candidate.c_str()) != nullptr; ++k)
+  {
+    candidate = name + "_input_" + std::to_string(k);
+  }
+  return candidate;
+}
+
+/// The input's arrays copied to cellData that carry one of the filter's own names are renamed,
+/// so that both reach the output (adding the filter's array would replace the copy silently).
+/// Returns (input name, output name) pairs, for the warning.
+std::vector<std::pair<std::string, std::string>> RenameInputArraysWithOwnNames(
+  vtkCellData* cellData)
+{
+  std::vector<std::pair<std::string, std::string>> renamed;
+  for (const char* own : OwnArrayNames)
+  {
+    if (vtkAbstractArray* copy = cellData->GetAbstractArray(own))
+    {
+      const std::string name = FreeInputName(cellData, own);
+      copy->SetName(name.c_str());
+      renamed.emplace_back(own, name);
+    }
+  }
+  return renamed;
+}
+
+std::string RenamedArraysWarning(const std::vector<std::pair<std::string, std::string>>& renamed)
+{
+  std::string message;
+  for (const auto& [from, to] : renamed)
+  {
+    message += std::string(message.empty() ? "" : "; ") + "input point-data array '" + from +
+      "' is passed to the tiles as '" + to + "' ('" + from + "' is this filter's own cell array)";
+  }
+  return message;
+}
+
 /// Output 0: the tiles in ascending point id, on the mesh's vertices (tiles that meet share
 /// them), with their arrays and the input's point data. Made in steps, like GraphWriter, so that
 /// the filling can be shared between two threads: the constructor orders the tiles, allocates the
@@ -129,9 +178,9 @@ public:
     this->Coordinates->SetNumberOfTuples(this->VertexCount);
     this->Offsets->SetNumberOfValues(this->TileCount + 1);
     this->Connectivity->SetNumberOfValues(idCount);
-    this->PointIds->SetName("PointId");
-    this->Areas->SetName("Area");
-    this->NeighborCounts->SetName("NeighborCount");
+    this->PointIds->SetName(OwnArrayNames[0]);
+    this->Areas->SetName(OwnArrayNames[1]);
+    this->NeighborCounts->SetName(OwnArrayNames[2]);
     this->PointIds->SetNumberOfValues(this->TileCount);
     this->Areas->SetNumberOfValues(this->TileCount);
     this->NeighborCounts->SetNumberOfValues(this->TileCount);
@@ -154,6 +203,11 @@ public:
 
   vtkIdType Count() const { return this->TileCount; }
   vtkIdType PointCount() const { return this->VertexCount; }
+  /// Input arrays passed under another name by FillCellData: (input name, output name).
+  const std::vector<std::pair<std::string, std::string>>& RenamedArrays() const
+  {
+    return this->Renamed;
+  }
 
   /// The points (x, y, 0) [begin, end).
   void CopyVertices(vtkIdType begin, vtkIdType end)
@@ -201,7 +255,10 @@ public:
     const bool copyPointData = inputData->GetNumberOfArrays() > 0;
     if (copyPointData)
     {
+      // Global ids too (VTK copies none by default): one tile per point keeps them unique.
+      cellData->SetCopyGlobalIds(1, vtkDataSetAttributes::COPYTUPLE);
       cellData->CopyAllocate(inputData, this->TileCount);
+      this->Renamed = RenameInputArraysWithOwnNames(cellData);
     }
     vtkIdType* pointIdData = this->PointIds->GetPointer(0);
     double* areaData = this->Areas->GetPointer(0);
@@ -254,6 +311,7 @@ private:
   vtkNew<vtkIdTypeArray> PointIds;
   vtkNew<vtkDoubleArray> Areas;
   vtkNew<vtkIntArray> NeighborCounts;
+  std::vector<std::pair<std::string, std::string>> Renamed;
 };
 
 /// Output 1: the input points with one line per contiguous pair and its Kind, sorted by (i, j).
@@ -479,6 +537,10 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     if (!unused.empty())
     {
       vtkWarningMacro(<< unused);
+    }
+    if (!tiles.RenamedArrays().empty())
+    {
+      vtkWarningMacro(<< RenamedArraysWarning(tiles.RenamedArrays()));
     }
     return 1;
   }

@@ -28,16 +28,21 @@
  * - `NeighborCount` (int): contiguities of the tile, window edges included (its polygon sides,
  *   decided exactly: where distinct corners round to one point, the polygon lists it once, never
  *   twice in a row, and has fewer points than NeighborCount);
- * - every input point-data array, copied to the tile of its point (a gauge's values follow it).
+ * - every input point-data array, copied to the tile of its point (a gauge's values follow it),
+ *   attributes included: global ids become the tiles' global ids (one tile per point keeps them
+ *   unique), pedigree ids their pedigree ids, active scalars etc. stay active.
+ * The three names above are the filter's API and always hold its own arrays. An input array
+ * with one of them is still passed, renamed NAME_input (or NAME_input_2, _3 ... if the input
+ * has that name too), and a warning names it (e.g. an input `Area` becomes `Area_input`).
  * Field data (on both outputs):
  * - `RejectedPointIds` (vtkIdType): points not strictly inside the window;
  * - `DuplicatePointIds` and `DuplicateOfPointIds` (vtkIdType, same length): exact copies of an
  *   earlier point, and the accepted point each one copies (the first is kept).
  *
  * Output 1 (vtkPolyData): the contiguity graph, sorted by (i, j). Its points are the input points
- * (same ids, point data passed), with one line per contiguous pair (i < j) and cell data `Kind`
- * (unsigned char): 0 = neighbours sharing an edge of positive length, 1 = half-neighbours (sharing
- * only a degenerate vertex).
+ * (same ids, point data passed as it is: names and global ids kept), with one line per contiguous
+ * pair (i < j) and cell data `Kind` (unsigned char): 0 = neighbours sharing an edge of positive
+ * length, 1 = half-neighbours (sharing only a degenerate vertex).
  *
  * With ComputeContiguityGraph off, output 1 has no points and no lines (the input's field data is
  * still passed to it) and the graph is not written (nor derived, with GreenSibson; the sweep finds

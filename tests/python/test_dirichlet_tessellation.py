@@ -468,6 +468,115 @@ def test_automatic_window_keeps_every_point_and_bad_windows_are_named():
                     f"{name}: an error saying '{expected}', not NaN areas: {messages}")
 
 
+def points_with_attribute_arrays(coords):
+    """make_points with arrays named like the filter's own (Area, PointId, NeighborCount), one named
+    like the first free name for Area (Area_input), a plain one, global ids and pedigree ids: each
+    with values that tell the point apart."""
+    from vtkmodules.vtkCommonCore import vtkIdTypeArray, vtkIntArray, vtkStringArray
+
+    n = len(coords)
+    data = make_points(coords, Area=[1000.0 + k for k in range(n)], PointId=[5000.0 + k for k in range(n)],
+                       Area_input=[-1.0 - k for k in range(n)], rain=[0.5 * k for k in range(n)])
+    counts = vtkIntArray()
+    counts.SetName("NeighborCount")
+    global_ids = vtkIdTypeArray()
+    global_ids.SetName("GlobalIds")
+    stations = vtkStringArray()
+    stations.SetName("station")
+    for k in range(n):
+        counts.InsertNextValue(90 + k)
+        global_ids.InsertNextValue(7 * k + 3)
+        stations.InsertNextValue(f"S{k}")
+    data.GetPointData().AddArray(counts)
+    data.GetPointData().SetGlobalIds(global_ids)
+    data.GetPointData().SetPedigreeIds(stations)
+    data.GetPointData().SetActiveScalars("Area")
+    return data
+
+
+def test_input_arrays_named_like_the_filters_are_kept_under_another_name():
+    # The filter's PointId, Area and NeighborCount are its own (checked against a brute-force
+    # nearest point and the shoelace area of each tile); the input's arrays of those names reach
+    # the tiles as NAME_input (Area as Area_input_2: the input has an Area_input too), named in a
+    # warning; global and pedigree ids follow their tile like every other array, as attributes.
+    from vtkmodules.vtkCommonCore import vtkCommand
+
+    rng = random.Random(14)
+    coords = [(rng.uniform(0, 1), rng.uniform(0, 1)) for _ in range(60)]
+    coords += [coords[7], (3.0, 3.0)]  # a duplicate and a point outside the window: ids skip them
+    data = points_with_attribute_arrays(coords)
+    source = data.GetPointData()
+    used = np.array(coords[:60])
+    renamed = {"Area": "Area_input_2", "PointId": "PointId_input", "NeighborCount": "NeighborCount_input",
+               "Area_input": "Area_input", "rain": "rain"}
+    for algorithm in ("GreenSibson", "BrasselReif"):
+        f = vtkDirichletTessellation()
+        warnings = messages_of(f, vtkCommand.WarningEvent)
+        f.SetInputData(data)
+        f.SetWindowBounds(-0.1, 1.1, -0.1, 1.1)
+        getattr(f, f"SetAlgorithmTo{algorithm}")()
+        f.Update()
+        tiles = f.GetOutput(0)
+        cells = tiles.GetCellData()
+        assert_that(tiles.GetNumberOfCells() == 60, f"{algorithm}: 60 tiles")
+        ids, areas, counts = (cells.GetArray(name) for name in ("PointId", "Area", "NeighborCount"))
+        assert_that(ids.GetDataTypeAsString() == "idtype" and counts.GetDataTypeAsString() == "int",
+                    f"{algorithm}: the filter's own PointId and NeighborCount")
+        for k, poly in enumerate(tile_polygons(tiles)):
+            pid = ids.GetValue(k)
+            nearest = int(np.argmin(np.hypot(*(used - poly.mean(axis=0)).T)))
+            assert_that(pid == nearest, f"{algorithm}: PointId of tile {k} is {pid}, its point is {nearest}")
+            assert_close(areas.GetValue(k), shoelace(poly), 1.44e-12, f"{algorithm}: Area of tile {k}")
+            assert_that(counts.GetValue(k) >= len(poly), f"{algorithm}: NeighborCount of tile {k}")
+            for name, output_name in renamed.items():
+                copy = cells.GetArray(output_name)
+                assert_that(copy is not None and copy.GetValue(k) == source.GetArray(name).GetValue(pid),
+                            f"{algorithm}: input {name} follows tile {k} as {output_name}")
+            assert_that(cells.GetGlobalIds() is not None and cells.GetGlobalIds().GetName() == "GlobalIds"
+                        and cells.GetGlobalIds().GetValue(k) == 7 * pid + 3,
+                        f"{algorithm}: global ids follow tile {k} as the tiles' global ids")
+            assert_that(cells.GetPedigreeIds() is not None and cells.GetPedigreeIds().GetValue(k) == f"S{pid}",
+                        f"{algorithm}: pedigree ids follow tile {k}")
+        assert_that(cells.GetScalars() is not None and cells.GetScalars().GetName() == "Area_input_2",
+                    f"{algorithm}: the input's active scalars stay active under their new name")
+        named = [m for m in warnings if "filter's own" in m]
+        assert_that(len(named) == 1 and all(f"'{name}' is passed to the tiles as '{renamed[name]}'" in named[0]
+                                            for name in ("Area", "PointId", "NeighborCount")),
+                    f"{algorithm}: one warning naming each renamed array: {warnings}")
+        # Output 1's points are the input points: their data keeps its names, global ids included.
+        graph_data = f.GetOutput(1).GetPointData()
+        assert_that(graph_data.GetArray("Area").GetValue(5) == 1005.0 and graph_data.GetGlobalIds() is not None,
+                    f"{algorithm}: output 1 passes the input's point data as it is")
+        plain = vtkDirichletTessellation()
+        plain_warnings = messages_of(plain, vtkCommand.WarningEvent)
+        plain.SetInputData(make_points(coords[:60], rain=[0.0] * 60))
+        getattr(plain, f"SetAlgorithmTo{algorithm}")()
+        plain.Update()
+        assert_that(plain_warnings == [] and plain.GetOutput(0).GetCellData().GetArray("rain") is not None,
+                    f"{algorithm}: no warning without a clash: {plain_warnings}")
+
+
+def test_delaunay_passes_point_data_with_the_input_points():
+    # vtkDelaunayTriangulation keeps the input points in order, so their data passes unchanged,
+    # every name (it adds no point or cell array) and global ids included.
+    coords = [(0.1, 0.2), (0.9, 0.1), (0.5, 0.8), (0.4, 0.4), (0.7, 0.6)]
+    data = points_with_attribute_arrays(coords)
+    t = vtkDelaunayTriangulation()
+    t.SetInputData(data)
+    t.Update()
+    out = t.GetOutput().GetPointData()
+    source = data.GetPointData()
+    names = sorted(source.GetAbstractArray(a).GetName() for a in range(source.GetNumberOfArrays()))
+    assert_that(sorted(out.GetAbstractArray(a).GetName() for a in range(out.GetNumberOfArrays())) == names,
+                f"the input's point arrays, under their names: {names}")
+    for name in ("Area", "PointId", "NeighborCount", "rain"):
+        assert_that([out.GetArray(name).GetValue(k) for k in range(5)] ==
+                    [source.GetArray(name).GetValue(k) for k in range(5)], f"{name} passed unchanged")
+    assert_that(out.GetGlobalIds() is not None and [out.GetGlobalIds().GetValue(k) for k in range(5)] ==
+                [7 * k + 3 for k in range(5)], "global ids passed as global ids")
+    assert_that(t.GetOutput().GetCellData().GetNumberOfArrays() == 0, "no cell array of its own")
+
+
 if __name__ == "__main__":
     run([test_tiles_are_nearest_point_regions,
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
@@ -481,4 +590,6 @@ if __name__ == "__main__":
          test_large_graph_is_sorted_with_kinds_following_pairs,
          test_32_bit_cell_arrays_survive_a_vtp_round_trip,
          test_graph_off_leaves_the_tiles_unchanged,
-         test_automatic_window_keeps_every_point_and_bad_windows_are_named])
+         test_automatic_window_keeps_every_point_and_bad_windows_are_named,
+         test_input_arrays_named_like_the_filters_are_kept_under_another_name,
+         test_delaunay_passes_point_data_with_the_input_points])
