@@ -56,9 +56,10 @@ inline std::vector<std::int32_t> ChunkBounds(std::int32_t n, std::size_t chunks)
 }
 
 /// Runs job(context, k) for k in 1 .. chunks-1 on the kept threads and job(context, 0) on the
-/// calling thread, and returns once all have returned (job must not throw). Returns false, having
-/// run nothing, when the kept threads are busy with another caller's chunks (a pass started from
-/// inside a chunk, or from another thread) or cannot be started.
+/// calling thread, which then also runs the chunks that no kept thread has started yet (chunks
+/// must not wait for each other), and returns once all have returned (job must not throw). Returns
+/// false, having run nothing, when the kept threads are busy with another caller's chunks (a pass
+/// started from inside a chunk, or from another thread) or cannot be started.
 bool RunOnKeptThreads(std::size_t chunks,
   void (*job)(const void* context, std::size_t k),
   const void* context);
@@ -89,8 +90,9 @@ void RunOnNewThreads(std::size_t chunks, const Guarded& guarded)
 }
 
 /// Runs task(0 .. chunks-1), chunk 0 on the calling thread, the others on other threads (the kept
-/// ones, else threads started for this call); rethrows the first exception a task threw once all
-/// have finished.
+/// ones, else threads started for this call) or, when no kept thread has started one by the time
+/// chunk 0 is done, on the calling thread too; chunks must not wait for each other. Rethrows the
+/// first exception a task threw once all have finished.
 template<class Task>
 void RunChunks(std::size_t chunks, const Task& task)
 {
@@ -127,9 +129,10 @@ void RunChunks(std::size_t chunks, const Task& task)
   }
 }
 
-/// Runs first() on the calling thread and second() beside it on a thread of its own when beside
-/// is true, one after the other otherwise, with RunChunks' guarantees (both joined, the first
-/// exception rethrown). first() may call what must stay on the calling thread (VTK).
+/// Runs first() on the calling thread and second() beside it (on another thread, or after first()
+/// when no thread has taken it by then) when beside is true, one after the other otherwise, with
+/// RunChunks' guarantees (both joined, the first exception rethrown). first() may call what must
+/// stay on the calling thread (VTK).
 template<class First, class Second>
 void RunSideBySide(bool beside, const First& first, const Second& second)
 {
