@@ -1,5 +1,6 @@
 #include "TesseraFilterUtilities.h"
 
+#include "vtkAbstractArray.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
@@ -284,19 +285,83 @@ double OrientAnticlockwise(std::vector<tessera::Point2>& polygon)
   return std::abs(area);
 }
 
-void AddUnusedPointIds(vtkDataObject* data,
+std::string FreeInputName(vtkFieldData* data, const std::string& name)
+{
+  std::string candidate = name + "_input";
+  for (int k = 2; data->GetAbstractArray(candidate.c_str()) != nullptr; ++k)
+  {
+    candidate = name + "_input_" + std::to_string(k);
+  }
+  return candidate;
+}
+
+RenamedArrays RenameArraysNamed(vtkFieldData* data, const std::vector<const char*>& own, bool copy)
+{
+  RenamedArrays renamed;
+  for (const char* name : own)
+  {
+    vtkAbstractArray* array = data->GetAbstractArray(name);
+    if (!array)
+    {
+      continue;
+    }
+    const std::string newName = FreeInputName(data, name);
+    if (copy)
+    {
+      vtkSmartPointer<vtkAbstractArray> renamedCopy =
+        vtkSmartPointer<vtkAbstractArray>::Take(array->NewInstance());
+      renamedCopy->DeepCopy(array);
+      renamedCopy->SetName(newName.c_str());
+      data->RemoveArray(name);
+      data->AddArray(renamedCopy);
+    }
+    else
+    {
+      array->SetName(newName.c_str());
+    }
+    renamed.emplace_back(name, newName);
+  }
+  return renamed;
+}
+
+std::string RenamedArraysWarning(const RenamedArrays& renamed,
+  const char* kind,
+  const char* where,
+  const char* ownKind)
+{
+  std::string message;
+  for (const auto& [from, to] : renamed)
+  {
+    message += std::string(message.empty() ? "" : "; ") + "input " + kind + " array '" + from +
+      "' is passed to " + where + " as '" + to + "' ('" + from + "' is this filter's own " +
+      ownKind + " array)";
+  }
+  return message;
+}
+
+const std::vector<const char*>& UnusedPointIdNames()
+{
+  static const std::vector<const char*> names{
+    "RejectedPointIds", "DuplicatePointIds", "DuplicateOfPointIds"
+  };
+  return names;
+}
+
+RenamedArrays AddUnusedPointIds(vtkDataObject* data,
   const std::vector<std::int32_t>& rejected,
   const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates)
 {
+  const RenamedArrays renamed = RenameArraysNamed(data->GetFieldData(), UnusedPointIdNames(), true);
   std::vector<std::int32_t> copies, originals;
   for (const auto& pair : duplicates)
   {
     copies.push_back(pair.first);
     originals.push_back(pair.second);
   }
-  AddIdFieldArray(data, "RejectedPointIds", rejected);
-  AddIdFieldArray(data, "DuplicatePointIds", copies);
-  AddIdFieldArray(data, "DuplicateOfPointIds", originals);
+  AddIdFieldArray(data, UnusedPointIdNames()[0], rejected);
+  AddIdFieldArray(data, UnusedPointIdNames()[1], copies);
+  AddIdFieldArray(data, UnusedPointIdNames()[2], originals);
+  return renamed;
 }
 
 std::string UnusedPointsWarning(std::size_t rejected, std::size_t duplicates, const char* verb)

@@ -16,6 +16,7 @@
 #include <vector>
 
 class vtkDataObject;
+class vtkFieldData;
 class vtkPoints;
 class vtkPointSet;
 
@@ -65,10 +66,35 @@ std::string SkippedCellsWarning(const Rings& rings, const char* what);
 /// Reverses a clockwise polygon; returns its (now non-negative) shoelace area.
 double OrientAnticlockwise(std::vector<tessera::Point2>& polygon);
 
+/// (input name, output name) of the input arrays a filter passes under another name, because it
+/// writes an array of that name itself.
+using RenamedArrays = std::vector<std::pair<std::string, std::string>>;
+
+/// The first of name + "_input", name + "_input_2", ... that no array of data has: an input with
+/// both "Area" and "Area_input" keeps both.
+std::string FreeInputName(vtkFieldData* data, const std::string& name);
+
+/// Renames the arrays of data named as one of `own` (the filter's own arrays, about to be added)
+/// to a FreeInputName, so that both reach the output: adding the filter's array would replace
+/// the input's silently. With `copy`, each is replaced by a renamed copy first (field data passed
+/// by the pipeline shares the input's array objects, which must keep their names).
+RenamedArrays RenameArraysNamed(vtkFieldData* data, const std::vector<const char*>& own, bool copy);
+
+/// "input <kind> array 'X' is passed to <where> as 'X_input' ('X' is this filter's own <ownKind>
+/// array)", one clause per renamed array.
+std::string RenamedArraysWarning(const RenamedArrays& renamed,
+  const char* kind,
+  const char* where,
+  const char* ownKind);
+
+/// The names of the field data arrays AddUnusedPointIds writes.
+const std::vector<const char*>& UnusedPointIdNames();
+
 /// The field data arrays every tessellation filter writes for points it did not use:
 /// `RejectedPointIds` (outside the window), `DuplicatePointIds` and `DuplicateOfPointIds`
-/// (exact copies and the accepted point each one copies).
-void AddUnusedPointIds(vtkDataObject* data,
+/// (exact copies and the accepted point each one copies). An input field-data array with one of
+/// these names is kept under another name (RenameArraysNamed); returns those renamed.
+RenamedArrays AddUnusedPointIds(vtkDataObject* data,
   const std::vector<std::int32_t>& rejected,
   const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates);
 

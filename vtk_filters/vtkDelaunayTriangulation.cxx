@@ -109,7 +109,13 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
 
     const std::vector<std::int32_t> rejected = tessellation.RejectedIds();
     const auto duplicates = tessellation.Duplicates();
-    tessera_vtk::AddUnusedPointIds(output, rejected, duplicates);
+    const tessera_vtk::RenamedArrays renamed =
+      tessera_vtk::AddUnusedPointIds(output, rejected, duplicates);
+    if (!renamed.empty())
+    {
+      vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
+                        renamed, "field-data", "the output", "field"));
+    }
     const std::string unused =
       tessera_vtk::UnusedPointsWarning(rejected.size(), duplicates.size(), "triangulated");
     if (!unused.empty())

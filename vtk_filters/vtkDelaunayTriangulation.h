@@ -13,7 +13,8 @@
  * Only points strictly inside the window take part (see vtkDirichletTessellation for the window:
  * WindowBounds, constraints, Padding); the rest are listed, never dropped silently. Field data:
  * `RejectedPointIds`, `DuplicatePointIds`, `DuplicateOfPointIds` (vtkIdType), as in
- * vtkDirichletTessellation. Fewer than 3 points or collinear points give no face.
+ * vtkDirichletTessellation (an input field array with one of these names is kept renamed
+ * NAME_input, with a warning). Fewer than 3 points or collinear points give no face.
  *
  * @sa vtkDirichletTessellation vtkDelaunay2D
  */

@@ -110,50 +110,8 @@ void CheckFitsInt32(vtkIdType count, const char* what)
 }
 
 /// The filter's own cell arrays on output 0. Their names are API: an input point-data array with
-/// one of them is passed under another name (see RenameInputArraysWithOwnNames).
-constexpr const char* OwnArrayNames[] = { "PointId", "Area", "NeighborCount" };
-
-/// The first of name + "_input", name + "_input_2", ... that no array of data has: an input with
-/// both "Area" and "Area_input" keeps both.
-std::string FreeInputName(vtkFieldData* data, const std::string& name)
-{
-  std::string candidate = name + "_input";
-  for (int k = 2; data->GetAbstractArray(candidate.c_str()) != nullptr; ++k)
-  {
-    candidate = name + "_input_" + std::to_string(k);
-  }
-  return candidate;
-}
-
-/// The input's arrays copied to cellData that carry one of the filter's own names are renamed,
-/// so that both reach the output (adding the filter's array would replace the copy silently).
-/// Returns (input name, output name) pairs, for the warning.
-std::vector<std::pair<std::string, std::string>> RenameInputArraysWithOwnNames(
-  vtkCellData* cellData)
-{
-  std::vector<std::pair<std::string, std::string>> renamed;
-  for (const char* own : OwnArrayNames)
-  {
-    if (vtkAbstractArray* copy = cellData->GetAbstractArray(own))
-    {
-      const std::string name = FreeInputName(cellData, own);
-      copy->SetName(name.c_str());
-      renamed.emplace_back(own, name);
-    }
-  }
-  return renamed;
-}
-
-std::string RenamedArraysWarning(const std::vector<std::pair<std::string, std::string>>& renamed)
-{
-  std::string message;
-  for (const auto& [from, to] : renamed)
-  {
-    message += std::string(message.empty() ? "" : "; ") + "input point-data array '" + from +
-      "' is passed to the tiles as '" + to + "' ('" + from + "' is this filter's own cell array)";
-  }
-  return message;
-}
+/// one of them is passed under another name (tessera_vtk::RenameArraysNamed).
+const std::vector<const char*> OwnArrayNames{ "PointId", "Area", "NeighborCount" };
 
 /// Output 0: the tiles in ascending point id, on the mesh's vertices (tiles that meet share
 /// them), with their arrays and the input's point data. Made in steps, like GraphWriter, so that
@@ -204,10 +162,7 @@ public:
   vtkIdType Count() const { return this->TileCount; }
   vtkIdType PointCount() const { return this->VertexCount; }
   /// Input arrays passed under another name by FillCellData: (input name, output name).
-  const std::vector<std::pair<std::string, std::string>>& RenamedArrays() const
-  {
-    return this->Renamed;
-  }
+  const tessera_vtk::RenamedArrays& RenamedArrays() const { return this->Renamed; }
 
   /// The points (x, y, 0) [begin, end).
   void CopyVertices(vtkIdType begin, vtkIdType end)
@@ -258,7 +213,7 @@ public:
       // Global ids too (VTK copies none by default): one tile per point keeps them unique.
       cellData->SetCopyGlobalIds(1, vtkDataSetAttributes::COPYTUPLE);
       cellData->CopyAllocate(inputData, this->TileCount);
-      this->Renamed = RenameInputArraysWithOwnNames(cellData);
+      this->Renamed = tessera_vtk::RenameArraysNamed(cellData, OwnArrayNames, false);
     }
     vtkIdType* pointIdData = this->PointIds->GetPointer(0);
     double* areaData = this->Areas->GetPointer(0);
@@ -311,7 +266,7 @@ private:
   vtkNew<vtkIdTypeArray> PointIds;
   vtkNew<vtkDoubleArray> Areas;
   vtkNew<vtkIntArray> NeighborCounts;
-  std::vector<std::pair<std::string, std::string>> Renamed;
+  tessera_vtk::RenamedArrays Renamed;
 };
 
 /// Output 1: the input points with one line per contiguous pair and its Kind, sorted by (i, j).
@@ -526,12 +481,14 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
         }
       });
     tiles.Attach();
-    tessera_vtk::AddUnusedPointIds(tilesOutput, result.Rejected, result.Duplicates);
+    const tessera_vtk::RenamedArrays renamedFields =
+      tessera_vtk::AddUnusedPointIds(tilesOutput, result.Rejected, result.Duplicates);
     if (graph)
     {
       graph->Attach(graphOutput);
-      tessera_vtk::AddUnusedPointIds(graphOutput, result.Rejected, result.Duplicates);
     }
+    // With the graph off too: output 1 carries the same field data as output 0.
+    tessera_vtk::AddUnusedPointIds(graphOutput, result.Rejected, result.Duplicates);
     const std::string unused =
       tessera_vtk::UnusedPointsWarning(result.Rejected.size(), result.Duplicates.size(), "used");
     if (!unused.empty())
@@ -540,7 +497,13 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     }
     if (!tiles.RenamedArrays().empty())
     {
-      vtkWarningMacro(<< RenamedArraysWarning(tiles.RenamedArrays()));
+      vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
+                        tiles.RenamedArrays(), "point-data", "the tiles", "cell"));
+    }
+    if (!renamedFields.empty())
+    {
+      vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
+                        renamedFields, "field-data", "both outputs", "field"));
     }
     return 1;
   }

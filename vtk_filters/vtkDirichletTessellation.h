@@ -38,14 +38,16 @@
  * - `RejectedPointIds` (vtkIdType): points not strictly inside the window;
  * - `DuplicatePointIds` and `DuplicateOfPointIds` (vtkIdType, same length): exact copies of an
  *   earlier point, and the accepted point each one copies (the first is kept).
+ * The input's field data is passed too; an input field array with one of these three names (say,
+ * from an earlier tessellation) is kept renamed NAME_input, with a warning.
  *
  * Output 1 (vtkPolyData): the contiguity graph, sorted by (i, j). Its points are the input points
  * (same ids, point data passed as it is: names and global ids kept), with one line per contiguous
  * pair (i < j) and cell data `Kind` (unsigned char): 0 = neighbours sharing an edge of positive
  * length, 1 = half-neighbours (sharing only a degenerate vertex).
  *
- * With ComputeContiguityGraph off, output 1 has no points and no lines (the input's field data is
- * still passed to it) and the graph is not written (nor derived, with GreenSibson; the sweep finds
+ * With ComputeContiguityGraph off, output 1 has no points and no lines (its field data is still
+ * output 0's) and the graph is not written (nor derived, with GreenSibson; the sweep finds
  * it anyway): a caller that wants only the tiles saves that time (about 10-25% of the filter's)
  * and the graph's memory (some 12 bytes per contiguity, 3 per point).
  *

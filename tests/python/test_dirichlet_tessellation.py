@@ -183,6 +183,51 @@ def test_unused_points_are_reported_with_ids():
     assert_that(f.GetOutput(0).GetNumberOfCells() == 3, "three distinct points inside")
 
 
+def id_values(field_data, name):
+    array = field_data.GetArray(name)
+    return None if array is None else [int(array.GetValue(i)) for i in range(array.GetNumberOfTuples())]
+
+
+def test_input_field_data_named_like_the_unused_point_ids_is_kept_under_another_name():
+    """An input whose field data already has RejectedPointIds / DuplicatePointIds (e.g. the output
+    of an earlier tessellation) keeps them, renamed NAME_input, beside the filter's own, which
+    list this run's unused points (computed here from the window and the coordinates); the
+    input's arrays keep their names, and a warning names each renamed array."""
+    from vtkmodules.vtkCommonCore import vtkCommand, vtkIdTypeArray
+
+    coords = [(0.2, 0.2), (0.8, 0.3), (5.0, 5.0), (0.2, 0.2), (0.5, 0.9), (-1.0, 0.5)]
+    outside = [i for i, (x, y) in enumerate(coords) if not (0 < x < 1 and 0 < y < 1)]
+    copies = [i for i, p in enumerate(coords) if p in coords[:i] and i not in outside]
+    data = make_points(coords)
+    for name, value in (("RejectedPointIds", 99), ("DuplicatePointIds", 98)):
+        upstream = vtkIdTypeArray()
+        upstream.SetName(name)
+        upstream.InsertNextValue(value)
+        data.GetFieldData().AddArray(upstream)
+    filters = []
+    for graph in (True, False):
+        f = vtkDirichletTessellation()
+        f.SetComputeContiguityGraph(graph)
+        filters.append((f"tessellation (graph {graph})", f, (0, 1)))
+    filters.append(("Delaunay", vtkDelaunayTriangulation(), (0,)))
+    for what, f, ports in filters:
+        f.SetInputData(data)
+        f.SetWindowBounds(0, 1, 0, 1)
+        warnings = messages_of(f, vtkCommand.WarningEvent)
+        f.Update()
+        for port in ports:
+            fd = f.GetOutput(port).GetFieldData()
+            where = f"{what}, output {port}"
+            assert_that(id_values(fd, "RejectedPointIds") == outside, f"{where}: own rejected ids")
+            assert_that(id_values(fd, "DuplicatePointIds") == copies, f"{where}: own duplicate ids")
+            assert_that(id_values(fd, "RejectedPointIds_input") == [99], f"{where}: input's kept")
+            assert_that(id_values(fd, "DuplicatePointIds_input") == [98], f"{where}: input's kept")
+        renamed = [w for w in warnings if "RejectedPointIds_input" in w and "DuplicatePointIds_input" in w]
+        assert_that(len(renamed) == 1, f"{what}: one warning names the renamed arrays: {warnings}")
+    assert_that(id_values(data.GetFieldData(), "RejectedPointIds") == [99], "the input keeps its names")
+    assert_that(data.GetFieldData().GetArray("RejectedPointIds_input") is None, "nor gains arrays")
+
+
 def test_degenerate_inputs_give_valid_output():
     for coords, cells in [([], 0), ([(0.5, 0.5)], 1), ([(0.2, 0.5), (0.7, 0.5)], 2),
                           ([(0.1, 0.1), (0.3, 0.3), (0.5, 0.5), (0.9, 0.9)], 4)]:
@@ -582,6 +627,7 @@ if __name__ == "__main__":
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
          test_square_lattice_has_square_tiles_and_diagonal_half_neighbours,
          test_unused_points_are_reported_with_ids,
+         test_input_field_data_named_like_the_unused_point_ids_is_kept_under_another_name,
          test_degenerate_inputs_give_valid_output,
          test_both_engines_agree,
          test_brassel_reif_refuses_a_non_rectangular_window,
