@@ -381,6 +381,24 @@ std::vector<Point2> square_lattice(int n, double step = 1.0, double x0 = 0.0, do
   return p;
 }
 
+// An n x n lattice of step 0.1 from (0.2, 0.2) with every coordinate nudged by 0 or 1 ulp.
+std::vector<Point2> nudged_square_lattice(int n, std::mt19937_64& rng)
+{
+  std::vector<Point2> pts = square_lattice(n, 0.1, 0.2, 0.2);
+  for (Point2& p : pts)
+  {
+    if (rng() % 2)
+    {
+      p.x = std::nextafter(p.x, rng() % 2 ? 2.0 : -2.0);
+    }
+    if (rng() % 3 == 0)
+    {
+      p.y = std::nextafter(p.y, rng() % 2 ? 2.0 : -2.0);
+    }
+  }
+  return pts;
+}
+
 } // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -534,18 +552,7 @@ TEST(ThiessenSweep, NearDegenerateSets)
   std::mt19937_64 rng(9);
   for (int trial = 0; trial < 4; ++trial)
   {
-    std::vector<Point2> pts = square_lattice(7, 0.1, 0.2, 0.2);
-    for (Point2& p : pts)
-    {
-      if (rng() % 2)
-      {
-        p.x = std::nextafter(p.x, rng() % 2 ? 2.0 : -2.0);
-      }
-      if (rng() % 3 == 0)
-      {
-        p.y = std::nextafter(p.y, rng() % 2 ? 2.0 : -2.0);
-      }
-    }
+    std::vector<Point2> pts = nudged_square_lattice(7, rng);
     expect_matches_brute_force(pts, 0.1, 0.85, 0.12, 0.9);
   }
   std::vector<Point2> circle;
@@ -834,18 +841,7 @@ std::vector<Case> nudged_lattice_cases(std::mt19937_64& rng)
   std::vector<Case> cases;
   for (int trial = 0; trial < 60; ++trial)
   {
-    std::vector<Point2> pts = square_lattice(6, 0.1, 0.2, 0.2);
-    for (Point2& p : pts)
-    {
-      if (rng() % 2)
-      {
-        p.x = std::nextafter(p.x, rng() % 2 ? 2.0 : -2.0);
-      }
-      if (rng() % 3 == 0)
-      {
-        p.y = std::nextafter(p.y, rng() % 2 ? 2.0 : -2.0);
-      }
-    }
+    std::vector<Point2> pts = nudged_square_lattice(6, rng);
     cases.push_back(
       { "nudged lattice " + std::to_string(trial), pts, Window::Rectangle(0.1, 0.85, 0.12, 0.9) });
   }
