@@ -381,6 +381,20 @@ std::vector<Point2> square_lattice(int n, double step = 1.0, double x0 = 0.0, do
   return p;
 }
 
+// The 12 integer points on the circle of radius 5 about the origin (exactly co-circular).
+const std::vector<std::pair<int, int>> RadiusFiveLatticePoints{ { 5, 0 },
+  { 4, 3 },
+  { 3, 4 },
+  { 0, 5 },
+  { -3, 4 },
+  { -4, 3 },
+  { -5, 0 },
+  { -4, -3 },
+  { -3, -4 },
+  { 0, -5 },
+  { 3, -4 },
+  { 4, -3 } };
+
 // An n x n lattice of step 0.1 from (0.2, 0.2) with every coordinate nudged by 0 or 1 ulp.
 std::vector<Point2> nudged_square_lattice(int n, std::mt19937_64& rng)
 {
@@ -556,18 +570,7 @@ TEST(ThiessenSweep, NearDegenerateSets)
     expect_matches_brute_force(pts, 0.1, 0.85, 0.12, 0.9);
   }
   std::vector<Point2> circle;
-  for (const auto& [x, y] : std::vector<std::pair<int, int>>{ { 5, 0 },
-         { 4, 3 },
-         { 3, 4 },
-         { 0, 5 },
-         { -3, 4 },
-         { -4, 3 },
-         { -5, 0 },
-         { -4, -3 },
-         { -3, -4 },
-         { 0, -5 },
-         { 3, -4 },
-         { 4, -3 } })
+  for (const auto& [x, y] : RadiusFiveLatticePoints)
   {
     circle.push_back({ double(x), double(y) });
   }
@@ -876,18 +879,7 @@ std::vector<Case> degenerate_cases(std::mt19937_64& rng)
       pts,
       Window::Rectangle(xmin, xmax, ymin, ymax) });
   }
-  const std::vector<std::pair<int, int>> onCircle = { { 5, 0 },
-    { 4, 3 },
-    { 3, 4 },
-    { 0, 5 },
-    { -3, 4 },
-    { -4, 3 },
-    { -5, 0 },
-    { -4, -3 },
-    { -3, -4 },
-    { 0, -5 },
-    { 3, -4 },
-    { 4, -3 } };
+  const std::vector<std::pair<int, int>>& onCircle = RadiusFiveLatticePoints;
   for (int trial = 0; trial < 40; ++trial)
   {
     std::vector<Point2> pts = { { 0.0, 0.0 } };
