@@ -443,6 +443,9 @@ int vtkThiessenArealAverage::RequestInformation(vtkInformation*,
   catch (const std::exception& e)
   {
     vtkErrorMacro(<< e.what());
+    // RequestData will not run: without this the outputs would still show the last good input's
+    // results as if they were this input's.
+    this->DiscardResults(outputVector);
     return 0;
   }
   return 1;
@@ -502,11 +505,28 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
   catch (const std::exception& e)
   {
     vtkErrorMacro(<< e.what());
-    in.Average.reset();
-    tilesOutput->Initialize();
-    summaryOutput->Initialize();
-    weightsOutput->Initialize();
+    this->DiscardResults(outputVector);
     return 0;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkThiessenArealAverage::DiscardResults(vtkInformationVector* outputVector)
+{
+  Internals& in = *this->Internal;
+  in.Average.reset();
+  in.Times.clear();
+  in.Values.clear();
+  in.Summary->Initialize();
+  in.Weights->Initialize();
+  for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port)
+  {
+    vtkInformation* info = outputVector->GetInformationObject(port);
+    if (vtkDataObject* output = info->Get(vtkDataObject::DATA_OBJECT()))
+    {
+      output->Initialize();
+      output->GetInformation()->Remove(vtkDataObject::DATA_TIME_STEP());
+    }
   }
 }
 

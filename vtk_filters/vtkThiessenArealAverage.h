@@ -63,6 +63,10 @@
  * `UnobservedGaugeIds`, `DuplicateGaugeIds`, `DuplicateOfGaugeIds`, `RepeatedObservationRows`
  * (table rows, from 0). A gauge with a NaN or out-of-range coordinate (latitude beyond 90 degrees,
  * longitude beyond 360) and a self-intersecting catchment are errors naming them.
+ *
+ * An error (bad input, whether found while reading the times or while averaging) is reported with
+ * vtkErrorMacro and leaves all three outputs empty, with no time steps advertised: an earlier
+ * input's results are never left in place to be taken for this one's.
  */
 
 #ifndef vtkThiessenArealAverage_h
@@ -204,6 +208,9 @@ private:
     vtkAbstractArray* stationIds,
     vtkDataObject* catchment,
     vtkTable* observations);
+  /// Forgets the last build and empties every output: after an error nothing is shown as a result
+  /// of the failed input.
+  void DiscardResults(vtkInformationVector* outputVector);
   /// Output 0 for one step.
   void WriteTiles(std::size_t step, vtkAbstractArray* stationIds, vtkPolyData* output);
 

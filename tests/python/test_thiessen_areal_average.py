@@ -500,6 +500,42 @@ def test_text_values_with_missing_markers():
                 f"a value that is not a number: {messages}")
 
 
+def output_sizes(f):
+    """(cells of output 0, rows of output 1, rows of output 2, advertised time steps)."""
+    steps = f.GetOutputInformation(0).Get(vtkStreamingDemandDrivenPipeline.TIME_STEPS())
+    return (f.GetOutputDataObject(0).GetNumberOfCells(), f.GetOutputDataObject(1).GetNumberOfRows(),
+            f.GetOutputDataObject(2).GetNumberOfRows(), len(steps) if steps else 0)
+
+
+def test_a_failed_update_leaves_no_earlier_result():
+    # A good run, then a table whose times cannot be read (RequestInformation fails, so RequestData
+    # does not run): whichever port the update asks for, no output keeps the good run's tiles,
+    # means or weights, and a good table afterwards gives them again.
+    coords = [(0.25, 0.5), (0.75, 0.5)]
+    good = [("a", "2000-01", "2"), ("b", "2000-01", "4"), ("a", "2000-02", "1")]
+    bad = [("a", "2000-01", "2"), ("b", "2000-13", "4")]
+    f = vtkThiessenArealAverage()
+    messages = messages_of(f)
+    f.SetGaugesData(gauges_polydata(coords, ["a", "b"]))
+    f.SetCatchmentData(polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]]))
+    f.SetTimeColumn("date")
+    for port in range(3):
+        f.SetObservationsData(text_table(good))
+        for p in range(3):
+            f.Update(p)
+        sizes = output_sizes(f)
+        assert_that(not messages, f"errors on a good table: {messages}")
+        assert_that(sizes == (2, 2, 3, 2) and f.GetNumberOfTimeSteps() == 2,
+                    f"good table: outputs {sizes}, {f.GetNumberOfTimeSteps()} steps")
+        f.SetObservationsData(text_table(bad))
+        f.Update(port)
+        sizes = output_sizes(f)
+        assert_that(len(messages) == 1 and "'2000-13'" in messages[0], f"the bad table's error: {messages}")
+        assert_that(sizes == (0, 0, 0, 0) and f.GetNumberOfTimeSteps() == 0,
+                    f"after the failure (update of port {port}): outputs {sizes}, "
+                    f"{f.GetNumberOfTimeSteps()} steps")
+        messages.clear()
+
 def test_weights_table_lists_every_step():
     coords, ids, ring, months = read_colorado()
     f, messages = summary_of(coords, ids, ring, observations_table(months))
@@ -594,5 +630,6 @@ if __name__ == "__main__":
          test_the_monthly_csv_as_a_text_reader_gives_it,
          test_bad_dates_and_months_are_named,
          test_text_values_with_missing_markers,
+         test_a_failed_update_leaves_no_earlier_result,
          test_weights_table_lists_every_step,
          test_long_numeric_ids_repeated_rows_and_shared_ids_are_kept_apart_and_reported])
