@@ -71,9 +71,10 @@ def read_gauges(path):
     return gauges
 
 
-def read_observations(path):
+def read_observations(path, gauge_ids):
     """The long-format monthly table as a vtkTable (station_id, time, precip), and the set of
-    reporting station ids of every (year, month)."""
+    reporting station ids of every (year, month). gauge_ids: the stations file's ids (a month
+    none of whose rows names one of them is a month where no gauge reported)."""
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
     from vtkmodules.vtkCommonDataModel import vtkTable
 
@@ -83,12 +84,15 @@ def read_observations(path):
     times.SetName("time")
     values.SetName("precip")
     unrecorded = 0
-    present = set()  # (year, month) of every row
+    months = set()  # (year, month) of every row
+    present = set()  # (year, month) of every row of a gauge's station
     for line, row in csv_input.rows(path, ("station_id", "year", "month", "precip"), "observations"):
         station = csv_input.text(row, "station_id", path, line)
         year_and_month = (csv_input.integer(row, "year", path, line, 1, 9999),
                           csv_input.integer(row, "month", path, line, 1, 12))
-        present.add(year_and_month)
+        months.add(year_and_month)
+        if station in gauge_ids:
+            present.add(year_and_month)
         t = decimal_time(*year_and_month)
         # A missing value stays in the table as NaN: the gauge does not report that month (the
         # filter drops it for that step), and the month remains a step even if no gauge reports.
@@ -104,21 +108,23 @@ def read_observations(path):
     if unrecorded:
         print(f"{path}: {unrecorded} observation(s) without a value (empty, NA, NaN or null) "
               "count as missing", file=sys.stderr)
-    # A month without any row between the first and the last is a month where no gauge reported:
-    # a row with a missing value (for the first row's station) keeps it a step of its own, so that
+    # A month between the first and the last without a row of any gauge's station is a month where
+    # no gauge reported: a row with a missing value (for a gauge's station: the filter makes no
+    # step of a row naming a station no gauge has) keeps it a step of its own, so that
     # areal_mean.csv has every month, empty where nothing was measured.
-    if present:
-        first, last = min(present), max(present)
+    if months and gauge_ids:
+        first, last = min(months), max(months)
         gaps = [(y, m) for y in range(first[0], last[0] + 1) for m in range(1, 13)
                 if first <= (y, m) <= last and (y, m) not in present]
+        filler = min(gauge_ids)
         for y, m in gaps:
-            stations.InsertNextValue(stations.GetValue(0))
+            stations.InsertNextValue(filler)
             times.InsertNextValue(decimal_time(y, m))
             values.InsertNextValue(math.nan)
         if gaps:
             print(f"{path}: {len(gaps)} month(s) between {first[0]}-{first[1]:02d} and "
-                  f"{last[0]}-{last[1]:02d} have no row; they are months where no gauge reported",
-                  file=sys.stderr)
+                  f"{last[0]}-{last[1]:02d} have no row of a gauge's station; they are months "
+                  "where no gauge reported", file=sys.stderr)
     table = vtkTable()
     for column in (stations, times, values):
         table.AddColumn(column)
@@ -315,7 +321,9 @@ def main(argv=None):
     os.makedirs(args.out, exist_ok=True)
     started = time.time()
     gauges = read_gauges(args.stations)
-    observations, reporting_ids = read_observations(args.observations)
+    station_ids = gauges.GetPointData().GetAbstractArray("station_id")
+    observations, reporting_ids = read_observations(
+        args.observations, {station_ids.GetValue(i) for i in range(station_ids.GetNumberOfValues())})
     catchment = read_catchment(args.catchment)
     print(f"read {gauges.GetNumberOfPoints()} gauges and {observations.GetNumberOfRows()} "
           f"observations in {time.time() - started:.1f} s", file=sys.stderr)

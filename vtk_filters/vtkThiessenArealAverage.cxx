@@ -61,6 +61,10 @@ std::string StationKey(const vtkVariant& value)
   if (value.IsFloat() || value.IsDouble())
   {
     const double number = value.ToDouble();
+    if (std::isnan(number))
+    {
+      return std::string(); // what a reader may make of an empty field: no station
+    }
     char digits[64];
     const bool integral = std::isfinite(number) && number == std::floor(number) &&
       std::fabs(number) < 9007199254740992.0; // 2^53: every such double is an exact integer
@@ -161,58 +165,215 @@ bool IsMissingMarker(const std::string& text)
   return lower.empty() || lower == "na" || lower == "n/a" || lower == "nan" || lower == "null";
 }
 
-/// The time of each row of the observations table (decimal_time.h): the time column's numbers,
-/// its text read as ISO dates (YYYY, YYYY-MM, YYYY-MM-DD, optionally with a time of day), or, with
-/// a month column, the time column's year plus the month's twelfth.
-std::vector<double> ReadRowTimes(vtkTable* table,
+/// Reads a row's time (decimal_time.h): the time column's number, its text as an ISO date (YYYY,
+/// YYYY-MM, YYYY-MM-DD, optionally with a time of day), or, with a month column, the time column's
+/// year plus the month's twelfth.
+class RowTimeReader
+{
+public:
+  RowTimeReader(vtkTable* table, const std::string& timeColumn, const std::string& monthColumn)
+    : TimeColumn(timeColumn)
+    , MonthColumn(monthColumn)
+    , Times(ObservationColumn(table,
+        timeColumn,
+        monthColumn.empty() ? "numbers, or dates as text such as 1963-08 or 1963-08-16" : "years"))
+  {
+    if (!monthColumn.empty())
+    {
+      this->Months.emplace(ObservationColumn(table, monthColumn, "months 1 .. 12"));
+    }
+  }
+
+  /// The row's time; nothing when its time or month field is empty (blank text, or NaN: what a
+  /// reader may make of an empty numeric field). Throws InputError naming the row for a time that
+  /// is not a finite number, a date or a month 1 .. 12.
+  std::optional<double> operator()(vtkIdType row) const
+  {
+    if (IsEmpty(this->Times, row) || (this->Months && IsEmpty(*this->Months, row)))
+    {
+      return std::nullopt;
+    }
+    if (!this->Months && this->Times.IsText())
+    {
+      return this->Date(row);
+    }
+    const std::optional<double> t = this->Times.Number(row);
+    if (!t || !std::isfinite(*t))
+    {
+      ThrowRowError(row,
+        "the time '" + this->Times.Text(row) + "' in column '" + this->TimeColumn +
+          "' is not a finite number");
+    }
+    if (!this->Months)
+    {
+      return t;
+    }
+    const double month = this->Months->Number(row).value_or(0.0);
+    if (!(month >= 1.0 && month <= 12.0 && month == std::floor(month)))
+    {
+      ThrowRowError(row,
+        "the month " + this->Months->Text(row) + " in column '" + this->MonthColumn +
+          "' is not 1 .. 12");
+    }
+    return tessera::MonthTime(*t, static_cast<int>(month));
+  }
+
+private:
+  static bool IsEmpty(const NumberColumn& column, vtkIdType row)
+  {
+    if (column.IsText())
+    {
+      return Trimmed(column.Text(row)).empty();
+    }
+    return std::isnan(column.Number(row).value_or(0.0));
+  }
+
+  double Date(vtkIdType row) const
+  {
+    const std::optional<double> t = tessera::IsoDateTime(this->Times.Text(row));
+    if (!t)
+    {
+      ThrowRowError(row,
+        "'" + this->Times.Text(row) + "' in column '" + this->TimeColumn +
+          "' is not a date (YYYY, YYYY-MM or YYYY-MM-DD, optionally with hh:mm[:ss])");
+    }
+    return *t;
+  }
+
+  std::string TimeColumn, MonthColumn;
+  NumberColumn Times;
+  std::optional<NumberColumn> Months;
+};
+
+/// The first gauge of each station key; ids given to more than one gauge are added to shared.
+std::unordered_map<std::string, std::int32_t> GaugesByStation(vtkAbstractArray* stationIds,
+  std::vector<std::string>& shared)
+{
+  std::unordered_map<std::string, std::int32_t> gaugeOf;
+  for (vtkIdType g = 0; g < stationIds->GetNumberOfTuples(); ++g)
+  {
+    const auto [at, first] =
+      gaugeOf.emplace(StationKey(stationIds->GetVariantValue(g)), static_cast<std::int32_t>(g));
+    if (!first)
+    {
+      shared.push_back(
+        at->first + " (gauges " + std::to_string(at->second) + " and " + std::to_string(g) + ")");
+    }
+  }
+  return gaugeOf;
+}
+
+/// Which rows of the observations table are used, and at which times. A row is used when it names
+/// a station that a gauge has and a time; the time steps are the distinct times of the used rows
+/// only, so that a blank line or a station outside the gauges never makes a step of its own.
+struct ObservationRows
+{
+  std::vector<std::int32_t> GaugeOfRow; ///< per row: the gauge it reports, -1 for a row not used
+  std::vector<double> RowTimes;         ///< per row: its time (NaN for a row not used)
+  std::vector<double> Times;            ///< the distinct times of the used rows, ascending
+  std::vector<std::int32_t> UnusedRows; ///< the rows not used, ascending (rows from 0)
+  /// The rows without a station or time: "row 12 (no station id)", "row 13 (station A: no time)".
+  std::vector<std::string> IncompleteRows;
+  std::vector<std::string> UnknownStations; ///< "X (3 rows from row 5)": ids no gauge has
+  std::vector<std::string> SharedIds;       ///< ids given to more than one gauge
+};
+
+/// Tallies the rows naming each station id that no gauge has, in the order first met.
+class UnknownStationTally
+{
+public:
+  void Add(const std::string& key, vtkIdType row)
+  {
+    const auto [at, first] = this->Index.emplace(key, this->Stations.size());
+    if (first)
+    {
+      this->Stations.push_back({ key, 0, row });
+    }
+    ++this->Stations[at->second].Rows;
+  }
+
+  /// "X (1 row: row 5)", "Y (3 rows from row 7)".
+  std::vector<std::string> Names() const
+  {
+    std::vector<std::string> names;
+    for (const Station& s : this->Stations)
+    {
+      names.push_back(s.Key +
+        (s.Rows == 1 ? " (1 row: row " : " (" + std::to_string(s.Rows) + " rows from row ") +
+        std::to_string(s.FirstRow) + ")");
+    }
+    return names;
+  }
+
+private:
+  struct Station
+  {
+    std::string Key;
+    std::size_t Rows;
+    vtkIdType FirstRow;
+  };
+  std::unordered_map<std::string, std::size_t> Index;
+  std::vector<Station> Stations;
+};
+
+/// The distinct values, ascending.
+std::vector<double> UniqueTimes(std::vector<double> times)
+{
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  return times;
+}
+
+/// The rows of the observations table matched with the gauges' station ids and read for times
+/// (ObservationRows). Throws InputError for a missing column and, naming the row, for a used row's
+/// time that cannot be read.
+ObservationRows ClassifyRows(vtkTable* table,
+  vtkAbstractArray* stationIds,
+  const std::string& stationColumn,
   const std::string& timeColumn,
   const std::string& monthColumn)
 {
-  if (table->GetNumberOfRows() == 0)
+  ObservationRows rows;
+  const vtkIdType count = table->GetNumberOfRows();
+  if (count == 0)
   {
-    return {}; // no steps: Build says so, even when the columns are missing too
+    return rows; // no steps: Build says so, even when the columns are missing too
   }
-  const bool byMonth = !monthColumn.empty();
-  const NumberColumn times(ObservationColumn(table,
-    timeColumn,
-    byMonth ? "years" : "numbers, or dates as text such as 1963-08 or 1963-08-16"));
-  const NumberColumn months(
-    byMonth ? ObservationColumn(table, monthColumn, "months 1 .. 12") : nullptr);
-  const bool dates = !byMonth && times.IsText();
-  std::vector<double> rowTimes(static_cast<std::size_t>(table->GetNumberOfRows()));
-  for (vtkIdType r = 0; r < table->GetNumberOfRows(); ++r)
+  const auto gaugeOf = GaugesByStation(stationIds, rows.SharedIds);
+  vtkAbstractArray* stations =
+    ObservationColumn(table, stationColumn, "station ids, numbers or text");
+  const RowTimeReader timeOf(table, timeColumn, monthColumn);
+  rows.GaugeOfRow.assign(static_cast<std::size_t>(count), -1);
+  rows.RowTimes.assign(static_cast<std::size_t>(count), std::numeric_limits<double>::quiet_NaN());
+  std::vector<double> usedTimes;
+  UnknownStationTally unknown;
+  for (vtkIdType r = 0; r < count; ++r)
   {
-    if (dates)
+    const std::string key = StationKey(stations->GetVariantValue(r));
+    const auto gauge = key.empty() ? gaugeOf.end() : gaugeOf.find(key);
+    // The station first: a row of no known station is not used, whatever its time holds.
+    const std::optional<double> t = gauge == gaugeOf.end() ? std::nullopt : timeOf(r);
+    if (!t)
     {
-      const std::optional<double> t = tessera::IsoDateTime(times.Text(r));
-      if (!t)
+      rows.UnusedRows.push_back(static_cast<std::int32_t>(r));
+      if (gauge != gaugeOf.end() || key.empty())
       {
-        ThrowRowError(r,
-          "'" + times.Text(r) + "' in column '" + timeColumn +
-            "' is not a date (YYYY, YYYY-MM or YYYY-MM-DD, optionally with hh:mm[:ss])");
+        rows.IncompleteRows.push_back("row " + std::to_string(r) +
+          (key.empty() ? " (no station id)" : " (station " + key + ": no time)"));
       }
-      rowTimes[r] = *t;
+      else
+      {
+        unknown.Add(key, r);
+      }
       continue;
     }
-    const std::optional<double> t = times.Number(r);
-    if (!t || !std::isfinite(*t))
-    {
-      ThrowRowError(r,
-        "the time '" + times.Text(r) + "' in column '" + timeColumn + "' is not a finite number");
-    }
-    rowTimes[r] = *t;
-    if (byMonth)
-    {
-      const double month = months.Number(r).value_or(0.0);
-      if (!(month >= 1.0 && month <= 12.0 && month == std::floor(month)))
-      {
-        ThrowRowError(
-          r, "the month " + months.Text(r) + " in column '" + monthColumn + "' is not 1 .. 12");
-      }
-      rowTimes[r] = tessera::MonthTime(*t, static_cast<int>(month));
-    }
+    rows.GaugeOfRow[static_cast<std::size_t>(r)] = gauge->second;
+    rows.RowTimes[static_cast<std::size_t>(r)] = *t;
+    usedTimes.push_back(*t);
   }
-  return rowTimes;
+  rows.Times = UniqueTimes(std::move(usedTimes));
+  rows.UnknownStations = unknown.Names();
+  return rows;
 }
 
 /// A row's value: a number, or NaN (missing) for NaN or, in a text column, a missing-value marker
@@ -234,12 +395,81 @@ double ObservationValue(const NumberColumn& values, vtkIdType row, const std::st
   return std::numeric_limits<double>::quiet_NaN();
 }
 
-/// The distinct times, ascending.
-std::vector<double> UniqueTimes(std::vector<double> times)
+/// The error for a table none of whose rows can be used: how many lack a station or time, and which
+/// station ids no gauge has.
+std::string NoUsableRowMessage(const ObservationRows& rows)
 {
-  std::sort(times.begin(), times.end());
-  times.erase(std::unique(times.begin(), times.end()), times.end());
-  return times;
+  std::ostringstream message;
+  message << "none of the " << rows.GaugeOfRow.size()
+          << " observation rows can be used (no time step to average): "
+          << rows.IncompleteRows.size() << " have no station id or no time";
+  if (!rows.UnknownStations.empty())
+  {
+    message << ", the others name station ids that no gauge has: " << ListIds(rows.UnknownStations);
+  }
+  return message.str();
+}
+
+/// The observations table's station and value columns.
+struct StationAndValueColumns
+{
+  const std::string& Station;
+  const std::string& Value;
+};
+
+/// Per step, per gauge: the used rows' values (NaN where a gauge did not report). A row repeating
+/// the station and time of an earlier row with a value is listed in repeatedRows and, as "row R
+/// (station S)", in repeatedNames; the earlier value is kept. Throws InputError naming the row
+/// for a value that is infinite or neither a number nor a missing-value marker.
+std::vector<std::vector<double>> StepValues(vtkTable* table,
+  const ObservationRows& rows,
+  const StationAndValueColumns& columns,
+  std::size_t gaugeCount,
+  std::vector<std::int32_t>& repeatedRows,
+  std::vector<std::string>& repeatedNames)
+{
+  const NumberColumn values(
+    ObservationColumn(table, columns.Value, "numbers; NaN, NA or an empty field where missing"));
+  vtkAbstractArray* stations = table->GetColumnByName(columns.Station.c_str());
+  std::vector<std::vector<double>> stepValues(
+    rows.Times.size(), std::vector<double>(gaugeCount, std::numeric_limits<double>::quiet_NaN()));
+  for (std::size_t r = 0; r < rows.GaugeOfRow.size(); ++r)
+  {
+    const std::int32_t gauge = rows.GaugeOfRow[r];
+    if (gauge < 0)
+    {
+      continue;
+    }
+    const vtkIdType row = static_cast<vtkIdType>(r);
+    const double value = ObservationValue(values, row, columns.Value);
+    if (std::isinf(value))
+    {
+      ThrowRowError(
+        row, "station " + StationKey(stations->GetVariantValue(row)) + " has an infinite value");
+    }
+    const auto step =
+      std::lower_bound(rows.Times.begin(), rows.Times.end(), rows.RowTimes[r]) - rows.Times.begin();
+    double& slot = stepValues[static_cast<std::size_t>(step)][static_cast<std::size_t>(gauge)];
+    if (std::isnan(slot))
+    {
+      slot = value;
+    }
+    else
+    {
+      repeatedRows.push_back(static_cast<std::int32_t>(r));
+      repeatedNames.push_back("row " + std::to_string(r) + " (station " +
+        StationKey(stations->GetVariantValue(row)) + ")");
+    }
+  }
+  return stepValues;
+}
+
+/// The data of an upstream connection, brought up to date.
+vtkDataObject* UpdatedData(vtkAlgorithmOutput* connection)
+{
+  vtkAlgorithm* source = connection->GetProducer();
+  source->Update(connection->GetIndex());
+  return source->GetOutputDataObject(connection->GetIndex());
 }
 
 /// The modification time of a table's column, 0 when it has none.
@@ -319,51 +549,49 @@ struct vtkThiessenArealAverage::Internals
   vtkNew<vtkTable> Summary;
   vtkNew<vtkTable> Weights; // output 2: one row per step and weighted gauge
 
-  /// The observation times read (and validated) by RequestInformation, with what they were read
-  /// from, so that Build reuses them while the table and the time columns are unchanged.
-  struct TimesCache
+  /// What the observation rows were classified from: the table and the gauges' station ids (each
+  /// compared by address, never dereferenced, and modification times), and the column names.
+  struct RowsSource
   {
-    vtkTable* Table = nullptr; // compared only, never dereferenced; null: nothing cached
-    vtkMTimeType TableMTime = 0;
-    vtkMTimeType ColumnMTimes[2] = { 0, 0 };
-    std::string Columns[2];
-    std::vector<double> RowTimes; // per row of the table
-    std::vector<double> Times;    // distinct, ascending: the time steps
-  } ReadTimesCache;
+    vtkTable* Table = nullptr; // null: nothing cached
+    vtkAbstractArray* StationIds = nullptr;
+    std::vector<vtkMTimeType> MTimes;
+    std::vector<std::string> Columns;
+    bool operator==(const RowsSource& other) const
+    {
+      return this->Table == other.Table && this->StationIds == other.StationIds &&
+        this->MTimes == other.MTimes && this->Columns == other.Columns;
+    }
+  };
+  RowsSource ClassifiedFrom;
+  ObservationRows Classified;
 
-  /// ReadRowTimes(table, timeColumn, monthColumn) and its distinct times, from the cache when
-  /// they were read from this table, unchanged since.
-  const TimesCache& CachedReadTimes(vtkTable* table,
+  /// ClassifyRows of the table, read by RequestInformation (which needs the time steps) and kept
+  /// for Build while the table, the gauges' ids and the columns are unchanged.
+  const ObservationRows& CachedRows(vtkTable* table,
+    vtkAbstractArray* stationIds,
+    const std::string& stationColumn,
     const std::string& timeColumn,
-    const std::string& monthColumn);
-};
-
-const vtkThiessenArealAverage::Internals::TimesCache&
-vtkThiessenArealAverage::Internals::CachedReadTimes(vtkTable* table,
-  const std::string& timeColumn,
-  const std::string& monthColumn)
-{
-  TimesCache& cache = this->ReadTimesCache;
-  const vtkMTimeType tableMTime = table->GetMTime();
-  const vtkMTimeType columnMTimes[2] = { ColumnMTime(table, timeColumn),
-    monthColumn.empty() ? 0 : ColumnMTime(table, monthColumn) };
-  if (cache.Table == table && cache.TableMTime == tableMTime &&
-    cache.ColumnMTimes[0] == columnMTimes[0] && cache.ColumnMTimes[1] == columnMTimes[1] &&
-    cache.Columns[0] == timeColumn && cache.Columns[1] == monthColumn)
+    const std::string& monthColumn)
   {
-    return cache;
+    RowsSource source;
+    source.Table = table;
+    source.StationIds = stationIds;
+    source.Columns = { stationColumn, timeColumn, monthColumn };
+    source.MTimes = { table->GetMTime(), stationIds->GetMTime() };
+    for (const std::string& column : source.Columns)
+    {
+      source.MTimes.push_back(ColumnMTime(table, column));
+    }
+    if (!(source == this->ClassifiedFrom))
+    {
+      this->ClassifiedFrom = RowsSource(); // until the read succeeds (it throws on bad times)
+      this->Classified = ClassifyRows(table, stationIds, stationColumn, timeColumn, monthColumn);
+      this->ClassifiedFrom = source;
+    }
+    return this->Classified;
   }
-  cache.Table = nullptr; // until the read succeeds (it throws on bad times)
-  cache.RowTimes = ReadRowTimes(table, timeColumn, monthColumn);
-  cache.Times = UniqueTimes(cache.RowTimes);
-  cache.Table = table;
-  cache.TableMTime = tableMTime;
-  cache.ColumnMTimes[0] = columnMTimes[0];
-  cache.ColumnMTimes[1] = columnMTimes[1];
-  cache.Columns[0] = timeColumn;
-  cache.Columns[1] = monthColumn;
-  return cache;
-}
+};
 
 //------------------------------------------------------------------------------
 vtkThiessenArealAverage::vtkThiessenArealAverage()
@@ -413,24 +641,28 @@ int vtkThiessenArealAverage::RequestInformation(vtkInformation*,
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
   outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
-  if (this->GetNumberOfInputConnections(2) == 0)
+  if (this->GetNumberOfInputConnections(2) == 0 || this->GetNumberOfInputConnections(0) == 0)
   {
     return 1;
   }
-  // The time steps are the observation table's times: that table is read now, ahead of
-  // RequestData, so that the pipeline (and ParaView's time slider) knows them.
-  vtkAlgorithm* source = this->GetInputAlgorithm(2, 0);
-  source->Update(this->GetInputConnection(2, 0)->GetIndex());
-  auto* table =
-    vtkTable::SafeDownCast(source->GetOutputDataObject(this->GetInputConnection(2, 0)->GetIndex()));
-  if (!table)
+  // The time steps are the times of the observation rows that can be used, those of stations
+  // the gauges have: the table and the gauges are read now, ahead of RequestData, so that the
+  // pipeline (and ParaView's time slider) knows them.
+  auto* table = vtkTable::SafeDownCast(UpdatedData(this->GetInputConnection(2, 0)));
+  auto* gauges = vtkPointSet::SafeDownCast(UpdatedData(this->GetInputConnection(0, 0)));
+  if (!table || !gauges)
   {
     return 1;
   }
   try
   {
-    const std::vector<double>& times =
-      this->Internal->CachedReadTimes(table, this->TimeColumn, this->MonthColumn).Times;
+    const std::vector<double>& times = this->Internal
+                                         ->CachedRows(table,
+                                           this->GaugeStationIds(gauges, true),
+                                           this->StationColumn,
+                                           this->TimeColumn,
+                                           this->MonthColumn)
+                                         .Times;
     if (!times.empty())
     {
       outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(),
@@ -466,18 +698,13 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
   Internals& in = *this->Internal;
   try
   {
-    vtkAbstractArray* stationIds =
-      gauges->GetPointData()->GetAbstractArray(this->StationIdArrayName.c_str());
-    if (!stationIds && observations)
-    {
-      throw tessera::InputError("the gauges have no point-data array '" + this->StationIdArrayName +
-        "' of station ids to match the observations with");
-    }
+    vtkAbstractArray* stationIds = this->GaugeStationIds(gauges, observations != nullptr);
     vtkMTimeType stamp = std::max(this->GetMTime(), gauges->GetMTime());
     stamp = std::max(stamp, catchment->GetMTime());
     if (observations)
     {
-      stamp = std::max(stamp, observations->GetMTime());
+      // (a table's own time does not follow its columns; its row data's does)
+      stamp = std::max({ stamp, observations->GetMTime(), observations->GetRowData()->GetMTime() });
     }
     if (!in.Average || stamp > in.BuiltFor)
     {
@@ -508,6 +735,19 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
     this->DiscardResults(outputVector);
     return 0;
   }
+}
+
+//------------------------------------------------------------------------------
+vtkAbstractArray* vtkThiessenArealAverage::GaugeStationIds(vtkPointSet* gauges, bool required)
+{
+  vtkAbstractArray* ids =
+    gauges->GetPointData()->GetAbstractArray(this->StationIdArrayName.c_str());
+  if (!ids && required)
+  {
+    throw tessera::InputError("the gauges have no point-data array '" + this->StationIdArrayName +
+      "' of station ids to match the observations with");
+  }
+  return ids;
 }
 
 //------------------------------------------------------------------------------
@@ -557,70 +797,32 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   in.Average.reset(
     new tessera::ThiessenArealAverage(lonlat, rings.Offsets, rings.Vertices, settings));
   const std::size_t gaugeCount = lonlat.size();
-  const double missing = std::numeric_limits<double>::quiet_NaN();
 
   in.Times.clear();
   in.Values.clear();
-  std::vector<std::string> unknownStations, sharedIds, repeatedNames;
+  std::vector<std::string> repeatedNames;
   std::vector<std::int32_t> repeatedRows;
+  static const ObservationRows noRows;
+  const ObservationRows* rows = &noRows;
   if (observations)
   {
     if (observations->GetNumberOfRows() == 0)
     {
       throw tessera::InputError("the observations table has no rows (no time step to average)");
     }
-    vtkAbstractArray* stations =
-      ObservationColumn(observations, this->StationColumn, "station ids, numbers or text");
-    const NumberColumn values(ObservationColumn(
-      observations, this->ValueColumn, "numbers; NaN, NA or an empty field where missing"));
-    std::unordered_map<std::string, std::size_t> gaugeOf; // the first gauge of each id
-    for (std::size_t g = 0; g < gaugeCount; ++g)
+    rows = &in.CachedRows(
+      observations, stationIds, this->StationColumn, this->TimeColumn, this->MonthColumn);
+    if (rows->Times.empty())
     {
-      const auto [at, first] =
-        gaugeOf.emplace(StationKey(stationIds->GetVariantValue(static_cast<vtkIdType>(g))), g);
-      if (!first)
-      {
-        sharedIds.push_back(
-          at->first + " (gauges " + std::to_string(at->second) + " and " + std::to_string(g) + ")");
-      }
+      throw tessera::InputError(NoUsableRowMessage(*rows));
     }
-    const Internals::TimesCache& read =
-      in.CachedReadTimes(observations, this->TimeColumn, this->MonthColumn);
-    in.Times = read.Times;
-    in.Values.assign(in.Times.size(), std::vector<double>(gaugeCount, missing));
-    std::unordered_map<std::string, bool> reportedUnknown;
-    for (vtkIdType r = 0; r < observations->GetNumberOfRows(); ++r)
-    {
-      const std::string key = StationKey(stations->GetVariantValue(r));
-      const auto gauge = gaugeOf.find(key);
-      if (gauge == gaugeOf.end())
-      {
-        if (reportedUnknown.emplace(key, true).second)
-        {
-          unknownStations.push_back(key);
-        }
-        continue;
-      }
-      const double value = ObservationValue(values, r, this->ValueColumn);
-      if (std::isinf(value))
-      {
-        ThrowRowError(r, "station " + key + " has an infinite value");
-      }
-      const std::size_t step = static_cast<std::size_t>(
-        std::lower_bound(
-          in.Times.begin(), in.Times.end(), read.RowTimes[static_cast<std::size_t>(r)]) -
-        in.Times.begin());
-      double& slot = in.Values[step][gauge->second];
-      if (std::isnan(slot))
-      {
-        slot = value; // a repeated (station, time) row keeps its first value
-      }
-      else
-      {
-        repeatedRows.push_back(static_cast<std::int32_t>(r));
-        repeatedNames.push_back("row " + std::to_string(r) + " (station " + key + ")");
-      }
-    }
+    in.Times = rows->Times;
+    in.Values = StepValues(observations,
+      *rows,
+      { this->StationColumn, this->ValueColumn },
+      gaugeCount,
+      repeatedRows,
+      repeatedNames);
   }
   else
   {
@@ -682,8 +884,13 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     }
   };
   warnOf(unobservedNames, "gauge(s) have no observation and are never used");
-  warnOf(unknownStations, "station id(s) of the observations that no gauge has were ignored");
-  warnOf(sharedIds,
+  warnOf(rows->UnknownStations,
+    "station id(s) of the observations that no gauge has: their rows were ignored (rows from 0, "
+    "listed in UnusedObservationRows)");
+  warnOf(rows->IncompleteRows,
+    "observation row(s) have no station id or no time and were ignored (rows from 0, listed in "
+    "UnusedObservationRows)");
+  warnOf(rows->SharedIds,
     "station id(s) are given to more than one gauge; their observations go to the first");
   warnOf(repeatedNames,
     "observation row(s) repeat a station and time of an earlier row with a value; the earlier "
@@ -728,6 +935,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateGaugeIds", duplicates);
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateOfGaugeIds", duplicateOf);
   tessera_vtk::AddIdFieldArray(in.Summary, "RepeatedObservationRows", repeatedRows);
+  tessera_vtk::AddIdFieldArray(in.Summary, "UnusedObservationRows", rows->UnusedRows);
 }
 
 //------------------------------------------------------------------------------

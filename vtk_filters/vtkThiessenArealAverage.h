@@ -27,8 +27,14 @@
  *   an empty field, NA, N/A, NaN or null as missing. A CSV file read by ParaView or
  *   vtkDelimitedTextReader can thus be used as it is, with one caution: those readers turn an
  *   empty field of an otherwise numeric column into 0, so write missing values as NaN or NA. A
- *   row's time that is not a finite number, a date or a month 1 .. 12, and a value that is not a
- *   number or a missing-value marker, are errors naming the row.
+ *   row is used only when its station is one of the gauges' and it has a time (or year and
+ *   month): a row with an empty or blank station id (or a NaN one), an empty time or month field
+ *   (blank text, or NaN), or a station id that no gauge has is not used and makes no time step
+ *   (a blank last line ",," read into numeric columns becomes station 0 at time 0: not used unless
+ *   a gauge has id 0). The time steps are the distinct times of the used rows. A used row's time
+ *   that is not a finite number, a date or a month 1 .. 12, and a value that is not a number or a
+ *   missing-value marker, are errors naming the row; a table none of whose rows can be used is an
+ *   error that counts them.
  * Station ids match as text (leading zeros of integer ids are ignored, so "050109" matches 50109;
  * a floating-point id column, as a CSV reader makes, is read in full, so 6730200 and 6730500 stay
  * two stations).
@@ -56,12 +62,14 @@
  * leaves it empty.
  *
  * Unused input is reported, never dropped silently, in a warning: gauges with no observation,
- * observations of unknown stations, a station id given to several gauges (its observations go to
- * the first), observation rows repeating the station and time of an earlier row that had a value
- * (the earlier value is used), and co-located gauges (within 1 cm once projected; the first is
- * kept and its value used). Output 1's field data lists the gauges and rows among them:
- * `UnobservedGaugeIds`, `DuplicateGaugeIds`, `DuplicateOfGaugeIds`, `RepeatedObservationRows`
- * (table rows, from 0). A gauge with a NaN or out-of-range coordinate (latitude beyond 90 degrees,
+ * observation rows of station ids that no gauge has (each id with its number of rows and first
+ * row), rows without a station id or a time (by row), a station id given to several gauges (its
+ * observations go to the first), observation rows repeating the station and time of an earlier
+ * row that had a value (the earlier value is used), and co-located gauges (within 1 cm once
+ * projected; the first is kept and its value used). Output 1's field data lists the gauges and
+ * rows among them: `UnobservedGaugeIds`, `DuplicateGaugeIds`, `DuplicateOfGaugeIds`,
+ * `RepeatedObservationRows` and `UnusedObservationRows` (rows not used: no station id, no time,
+ * or a station no gauge has; table rows, from 0). A gauge with a NaN or out-of-range coordinate (latitude beyond 90 degrees,
  * longitude beyond 360) and a self-intersecting catchment are errors naming them.
  *
  * An error (bad input, whether found while reading the times or while averaging) is reported with
@@ -208,6 +216,9 @@ private:
     vtkAbstractArray* stationIds,
     vtkDataObject* catchment,
     vtkTable* observations);
+  /// The gauges' point-data array StationIdArrayName; an InputError naming it when it is missing
+  /// and required (to match observations with).
+  vtkAbstractArray* GaugeStationIds(vtkPointSet* gauges, bool required);
   /// Forgets the last build and empties every output: after an error nothing is shown as a result
   /// of the failed input.
   void DiscardResults(vtkInformationVector* outputVector);

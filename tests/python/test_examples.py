@@ -132,11 +132,21 @@ def test_missing_values_keep_their_months():
         # months where no gauge reported: they keep their rows.
         stdout, stderr, rows = run_on("station_id,year,month,precip\n050848,1950,11,1.5\n050848,1951,3,2.5\n",
                                       "1951-01")
-        assert_that("3 month(s) between 1950-11 and 1951-03 have no row" in stderr, f"gaps not reported: {stderr}")
+        assert_that("3 month(s) between 1950-11 and 1951-03 have no row of a gauge's station" in stderr,
+                    f"gaps not reported: {stderr}")
         got = [(r["year"], r["month"], r["stations_used"], r["areal_mean"]) for r in rows]
         assert_that(got == [("1950", "11", "1", "1.500000"), ("1950", "12", "0", ""), ("1951", "1", "0", ""),
                             ("1951", "2", "0", ""), ("1951", "3", "1", "2.500000")], f"every month listed: {got}")
         assert_that("1951-01: areal mean nan, 0 gauges reported" in stdout, f"the chosen empty month: {stdout}")
+        # A month whose only row names a station that is not in the stations file (the filter
+        # makes no step of it) is a month where no gauge reported, and the first row's station
+        # may be such a one.
+        stdout, stderr, rows = run_on("station_id,year,month,precip\nNOSUCH,1950,1,1.0\n050848,1950,2,2.5\n",
+                                      "1950-02")
+        got = [(r["year"], r["month"], r["stations_used"], r["areal_mean"]) for r in rows]
+        assert_that(got == [("1950", "1", "0", ""), ("1950", "2", "1", "2.500000")],
+                    f"a month of an unknown station only: {got}")
+        assert_that("NOSUCH (1 row: row 0)" in stderr, f"the unknown station not reported: {stderr}")
 
 
 def test_bad_files_are_named():

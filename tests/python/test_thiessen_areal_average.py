@@ -165,10 +165,15 @@ def test_missing_steps_and_unused_input_are_reported():
     f.SetGaugesData(gauges_polydata([(0.2, 0.2), (0.8, 0.8), (0.5, 0.5), (0.2, 0.2)],
                                     ["g1", "g2", "never", "g1copy"]))
     f.SetCatchmentData(polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]]))
-    table = observations_table({(2000, 1): {"g1": 3.0, "unknown": 5.0}, (2000, 2): {"other": 1.0},
-                                (2000, 3): {"g1copy": 7.0, "g2": 1.0}})
+    # 2000-02: a gauge's row without a value keeps the month a step where no gauge reported;
+    # 2000-04 has only a station that no gauge has: no step.
+    months = {(2000, 1): {"g1": 3.0, "unknown": 5.0}, (2000, 2): {"other": 1.0, "g2": math.nan},
+              (2000, 3): {"g1copy": 7.0, "g2": 1.0}, (2000, 4): {"other": 2.0}}
+    table = observations_table(months)
     f.SetObservationsData(table)
     f.Update(1)
+    times = summary_column(f, "Time")
+    assert_that(times == [2000.0, 2000 + 1 / 12, 2000 + 2 / 12], f"steps {times}")
     means = summary_column(f, "ArealMean")
     assert_that(means[0] == 3.0, f"only g1 reported: {means[0]}")
     assert_that(math.isnan(means[1]), "no gauge: NaN mean")
@@ -536,6 +541,101 @@ def test_a_failed_update_leaves_no_earlier_result():
                     f"{f.GetNumberOfTimeSteps()} steps")
         messages.clear()
 
+def written_csv(text):
+    """A temporary CSV file holding text; returns its path (removed at exit)."""
+    import atexit
+    import tempfile
+
+    handle, path = tempfile.mkstemp(suffix=".csv")
+    with os.fdopen(handle, "w") as f:
+        f.write(text)
+    atexit.register(os.remove, path)
+    return path
+
+
+def csv_reader_table(text):
+    """The table VTK's CSV reader gives for text (numeric columns detected, as ParaView does)."""
+    from vtkmodules.vtkIOInfovis import vtkDelimitedTextReader
+
+    reader = vtkDelimitedTextReader()
+    reader.SetFileName(written_csv(text))
+    reader.SetHaveHeaders(True)
+    reader.SetDetectNumericColumns(True)
+    reader.Update()
+    return reader.GetOutput()
+
+
+def usable_rows(text, gauge_ids, time_of):
+    """Independently of the filter: (rows used, rows not used) of the CSV text (rows from 0), a
+    row being used when its station (trimmed) is a gauge's id and its time field is not blank;
+    time_of gives the step time of a used row's fields."""
+    used, unused = {}, []
+    for r, row in enumerate(csv.DictReader(text.splitlines())):
+        station = (row["station_id"] or "").strip()
+        if station in gauge_ids and all((row[c] or "").strip() for c in row if c not in ("station_id", "value")):
+            used[r] = time_of(row)
+        else:
+            unused.append(r)
+    return used, unused
+
+
+def field_ids(f, name):
+    array = f.GetOutputDataObject(1).GetFieldData().GetArray(name)
+    return [array.GetValue(i) for i in range(array.GetNumberOfTuples())] if array else None
+
+
+def test_rows_that_cannot_be_used_make_no_step_and_are_listed():
+    from vtkmodules.vtkCommonCore import vtkCommand
+
+    coords, square = [(0.25, 0.5), (0.75, 0.5)], [[(0, 0), (1, 0), (1, 1), (0, 1)]]
+    # Numeric columns: the reader turns the blank last line into station 0, time 0, value 0.
+    numeric = "station_id,time,value\n1,2000.0,1.0\n2,2000.0,3.0\n1,2000.5,2.0\n99,2001.0,5.0\n,,\n"
+    # Text columns: dates, a blank station, a row without a time, a station no gauge has.
+    dated = ("station_id,date,value\nA,2000-01,1\nB,2000-01,3\nA,2000-02,2\nC,2000-03,5\n,,\n"
+             "  ,2000-04,1\nA,,2\n")
+    cases = [
+        (numeric, ["1", "2"], {}, lambda row: float(row["time"]), ["99 (1 row: row 3)", "0 (1 row: row 4)"]),
+        (dated, ["A", "B"], {"TimeColumn": "date"},
+         lambda row: int(row["date"][:4]) + (int(row["date"][5:7]) - 1) / 12,
+         ["C (1 row: row 3)", "row 4 (no station id)", "row 5 (no station id)",
+          "row 6 (station A: no time)"]),
+    ]
+    for text, ids, settings, time_of, named in cases:
+        used, unused = usable_rows(text, set(ids), time_of)
+        f = vtkThiessenArealAverage()
+        errors, warnings = messages_of(f), messages_of(f, vtkCommand.WarningEvent)
+        f.SetGaugesData(gauges_polydata(coords, ids))
+        f.SetCatchmentData(polygon(square))
+        f.SetObservationsData(csv_reader_table(text))
+        for name, value in settings.items():
+            getattr(f, "Set" + name)(value)
+        f.Update(1)
+        assert_that(not errors, f"errors: {errors}")
+        expected = sorted(set(used.values()))
+        times = summary_column(f, "Time")
+        assert_that(times == expected, f"steps {times}, the used rows' times are {expected}")
+        steps = f.GetOutputInformation(0).Get(vtkStreamingDemandDrivenPipeline.TIME_STEPS())
+        assert_that(list(steps) == expected, f"advertised steps {steps}")
+        assert_that(summary_column(f, "StationsUsed") == [sum(1 for t in used.values() if t == step) for step in expected],
+                    f"StationsUsed {summary_column(f, 'StationsUsed')}")
+        assert_that(field_ids(f, "UnusedObservationRows") == unused,
+                    f"UnusedObservationRows {field_ids(f, 'UnusedObservationRows')}, expected {unused}")
+        for fragment in named:
+            assert_that(any(fragment in w for w in warnings), f"{fragment!r} not reported: {warnings}")
+    # No usable row at all: an error that says why, and empty outputs.
+    f = vtkThiessenArealAverage()
+    errors = messages_of(f)
+    f.SetGaugesData(gauges_polydata(coords, ["A", "B"]))
+    f.SetCatchmentData(polygon(square))
+    f.SetObservationsData(csv_reader_table("station_id,date,value\nC,2000-03,5\n,,\n"))
+    f.SetTimeColumn("date")
+    f.Update(1)
+    assert_that(len(errors) == 1 and "none of the 2 observation rows can be used" in errors[0]
+                and "1 have no station id or no time" in errors[0] and "C (1 row: row 0)" in errors[0],
+                f"no usable row: {errors}")
+    assert_that(f.GetOutputDataObject(1).GetNumberOfRows() == 0, "no usable row: output 1 not empty")
+
+
 def test_weights_table_lists_every_step():
     coords, ids, ring, months = read_colorado()
     f, messages = summary_of(coords, ids, ring, observations_table(months))
@@ -631,5 +731,6 @@ if __name__ == "__main__":
          test_bad_dates_and_months_are_named,
          test_text_values_with_missing_markers,
          test_a_failed_update_leaves_no_earlier_result,
+         test_rows_that_cannot_be_used_make_no_step_and_are_listed,
          test_weights_table_lists_every_step,
          test_long_numeric_ids_repeated_rows_and_shared_ids_are_kept_apart_and_reported])
