@@ -22,6 +22,17 @@ namespace
 
 constexpr std::int32_t NotInTessellation = -1;
 
+/// "gauge 7", or "gauge 7 (station 050848)" when the gauges have names.
+std::string GaugeLabel(std::size_t gauge, const std::vector<std::string>& names)
+{
+  std::string label = "gauge " + std::to_string(gauge);
+  if (gauge < names.size())
+  {
+    label += " (station " + names[gauge] + ")";
+  }
+  return label;
+}
+
 /// Points along a ring's edges in the plane so that no piece is longer than step (closing edge
 /// included; the first vertex is not repeated).
 void DensifyPlanarRing(const Point2* ring, std::size_t count, double step, std::vector<Point2>& out)
@@ -145,11 +156,13 @@ struct ThiessenArealAverage::State
     return used;
   }
 
-  [[noreturn]] static void ThrowAtFirstInfinite(const std::vector<double>& values)
+  [[noreturn]] void ThrowAtFirstInfinite(const std::vector<double>& values) const
   {
     const auto first =
       std::find_if(values.begin(), values.end(), [](double value) { return std::isinf(value); });
-    throw InputError("gauge " + std::to_string(first - values.begin()) + " has an infinite value");
+    throw InputError(
+      GaugeLabel(static_cast<std::size_t>(first - values.begin()), this->Settings.GaugeNames) +
+      " has an infinite value");
   }
 
   /// Ellipsoidal area (m^2) of all the rings.
@@ -558,13 +571,18 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   {
     if (!InLonLatRange(gaugesLonLat[g])) // NaN and infinities included
     {
-      ThrowInvalidLonLat("gauge " + std::to_string(g), gaugesLonLat[g]);
+      ThrowInvalidLonLat(GaugeLabel(g, settings.GaugeNames), gaugesLonLat[g]);
     }
   }
   if (!(settings.CoLocatedMetres >= 0.0) || !std::isfinite(settings.CoLocatedMetres))
   {
     throw InputError("CoLocatedMetres must be a finite distance >= 0, not " +
       std::to_string(settings.CoLocatedMetres));
+  }
+  if (!settings.GaugeNames.empty() && settings.GaugeNames.size() != gaugesLonLat.size())
+  {
+    throw InputError("GaugeNames has " + std::to_string(settings.GaugeNames.size()) +
+      " names for " + std::to_string(gaugesLonLat.size()) + " gauges");
   }
   CheckCatchmentLonLat(catchmentRingOffsets, catchmentLonLat);
   const CleanRings rings = ValidateRings(catchmentRingOffsets, catchmentLonLat);
@@ -591,7 +609,14 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   s.GaugesXY.resize(gaugesLonLat.size());
   for (std::size_t g = 0; g < gaugesLonLat.size(); ++g)
   {
-    s.GaugesXY[g] = s.Projector->Forward(gaugesLonLat[g], static_cast<long long>(g));
+    try
+    {
+      s.GaugesXY[g] = s.Projector->Forward(gaugesLonLat[g]);
+    }
+    catch (const InputError& e) // it names the place ("point (lon, lat) ..."), not the gauge
+    {
+      throw InputError(GaugeLabel(g, settings.GaugeNames) + ": " + e.what());
+    }
   }
   s.FirstAtPlace = GroupByPlace(s.GaugesXY, settings.CoLocatedMetres);
   for (std::size_t g = 0; g < gaugesLonLat.size(); ++g)

@@ -34,6 +34,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -68,6 +69,9 @@ struct ArealAverageSettings
   /// GeodesicPolygon only: spacing, in projected metres, of the points added along clipped ring
   /// edges before unprojecting.
   double GeodesicStepMetres = 1000.0;
+  /// Optional names of the gauges for error messages, one per gauge (e.g. their station ids):
+  /// gauge g is then "gauge g (station NAME)". Empty: gauges are named by index only.
+  std::vector<std::string> GaugeNames;
   /// false: every step from scratch, nothing reused (rebuild the tessellation, clip every tile):
   /// the baseline that incremental updates are compared with in benchmarks.
   bool Incremental = true;
@@ -101,9 +105,10 @@ struct ClippedTilesLonLat
 class ThiessenArealAverage
 {
 public:
-  /// gaugesLonLat: one point per gauge (id = index). Throws InputError naming the gauge for a
-  /// NaN/Inf coordinate, |latitude| > 90 or |longitude| > 360, and naming the ring and vertex for
-  /// a catchment vertex out of those ranges. The catchment: rings in lon/lat (flat offsets,
+  /// gaugesLonLat: one point per gauge (id = index). Throws InputError naming the gauge (by index
+  /// and, given settings.GaugeNames, by name) for a NaN/Inf coordinate, |latitude| > 90,
+  /// |longitude| > 360 or a place the projection cannot represent, and naming the ring and vertex
+  /// for a catchment vertex out of those ranges. The catchment: rings in lon/lat (flat offsets,
   /// even-odd rule); throws InputError naming ring, vertex or segments when a ring is degenerate or
   /// self-intersecting or two rings cross. Gauges at one place (within CoLocatedMetres) are
   /// grouped: at each step the first of a group that reported is used (see DuplicateGauges).
@@ -126,7 +131,7 @@ public:
   const std::vector<Point2>& ProjectedGauges() const;
 
   /// Advances to a step: values[g] is gauge g's value, NaN where it did not report. Throws
-  /// InputError if values has the wrong size or an infinite value (naming the gauge).
+  /// InputError if values has the wrong size or an infinite value (naming the gauge as above).
   ArealStep Step(const std::vector<double>& values);
 
   /// The current step's clipped tiles in lon/lat, edges densified every maxStepMetres (projected)

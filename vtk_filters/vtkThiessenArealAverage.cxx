@@ -51,30 +51,32 @@ std::string Trimmed(const std::string& text, const char* characters = " \t")
   return first == std::string::npos ? std::string() : text.substr(first, last - first + 1);
 }
 
-/// Station ids compare as text, trimmed, with leading zeros of integer ids dropped, so that an id
-/// read as text ("050109") matches the same id read as a number (50109).
-std::string StationKey(const vtkVariant& value)
+/// A station id as text, trimmed; empty for NaN (what a reader may make of an empty field).
+std::string StationName(const vtkVariant& value)
 {
+  if (!(value.IsFloat() || value.IsDouble()))
+  {
+    return Trimmed(value.ToString(), " \t\"");
+  }
   // A floating-point id (a CSV reader's numeric column) in full: ToString() keeps 6 digits, which
   // made USGS-style ids such as 06730200 and 06730500 one station.
-  std::string text;
-  if (value.IsFloat() || value.IsDouble())
+  const double number = value.ToDouble();
+  if (std::isnan(number))
   {
-    const double number = value.ToDouble();
-    if (std::isnan(number))
-    {
-      return std::string(); // what a reader may make of an empty field: no station
-    }
-    char digits[64];
-    const bool integral = std::isfinite(number) && number == std::floor(number) &&
-      std::fabs(number) < 9007199254740992.0; // 2^53: every such double is an exact integer
-    std::snprintf(digits, sizeof digits, integral ? "%.0f" : "%.17g", number);
-    text = digits;
+    return std::string();
   }
-  else
-  {
-    text = Trimmed(value.ToString(), " \t\"");
-  }
+  char digits[64];
+  const bool integral = std::isfinite(number) && number == std::floor(number) &&
+    std::fabs(number) < 9007199254740992.0; // 2^53: every such double is an exact integer
+  std::snprintf(digits, sizeof digits, integral ? "%.0f" : "%.17g", number);
+  return digits;
+}
+
+/// Station ids compare as text (StationName), with leading zeros of integer ids dropped, so that
+/// an id read as text ("050109") matches the same id read as a number (50109).
+std::string StationKey(const vtkVariant& value)
+{
+  std::string text = StationName(value);
   if (!text.empty() &&
     std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }))
   {
@@ -791,6 +793,13 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     settings.HaveProjection = true;
     settings.Projection = tessera::ProjectionParameters::FromString(this->ProjectionRecord);
   }
+  if (stationIds && stationIds->GetNumberOfTuples() == gauges->GetNumberOfPoints())
+  {
+    for (vtkIdType g = 0; g < stationIds->GetNumberOfTuples(); ++g)
+    {
+      settings.GaugeNames.push_back(StationName(stationIds->GetVariantValue(g))); // for errors
+    }
+  }
   settings.Areas = this->AreaMethod == EQUAL_AREA_PLANE ? tessera::AreaMethod::EqualAreaPlane
     : this->AreaMethod == GEODESIC_POLYGON              ? tessera::AreaMethod::GeodesicPolygon
                                                         : tessera::AreaMethod::Automatic;
@@ -845,7 +854,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   // Everything valid but unused is reported by id.
   auto idOf = [&](std::size_t g)
   {
-    return stationIds ? stationIds->GetVariantValue(static_cast<vtkIdType>(g)).ToString()
+    return stationIds ? StationName(stationIds->GetVariantValue(static_cast<vtkIdType>(g)))
                       : std::to_string(g);
   };
   std::vector<std::int32_t> unobserved;

@@ -69,8 +69,12 @@
  * projected; the first is kept and its value used). Output 1's field data lists the gauges and
  * rows among them: `UnobservedGaugeIds`, `DuplicateGaugeIds`, `DuplicateOfGaugeIds`,
  * `RepeatedObservationRows` and `UnusedObservationRows` (rows not used: no station id, no time,
- * or a station no gauge has; table rows, from 0). A gauge with a NaN or out-of-range coordinate (latitude beyond 90 degrees,
- * longitude beyond 360) and a self-intersecting catchment are errors naming them.
+ * or a station no gauge has; table rows, from 0).
+ *
+ * A gauge with a NaN or out-of-range coordinate (latitude beyond 90 degrees, longitude beyond 360,
+ * or beyond what ProjectionRecord's projection represents) and a self-intersecting catchment are
+ * errors naming them: a gauge by its index and, when the gauges have station ids, its id
+ * ("gauge 7 (station 050848)").
  *
  * An error (bad input, whether found while reading the times or while averaging) is reported with
  * vtkErrorMacro and leaves all three outputs empty, with no time steps advertised: an earlier

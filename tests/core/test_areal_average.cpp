@@ -314,6 +314,46 @@ TEST(ArealAverage, BadInputIsNamed)
   EXPECT_THROW(average.Step({ INFINITY }), InputError);
 }
 
+TEST(ArealAverage, BadGaugesAreNamedByTheirNamesToo)
+{
+  // With GaugeNames (a filter's station ids), every error about a gauge gives its name beside its
+  // index: a latitude beyond 90, a longitude typo, a NaN, a place the projection cannot represent
+  // (UTM zone 31 for a gauge 60 degrees east of it) and an infinite value at a step.
+  const Square catchment(0.0, 0.0, 1.0, 1.0);
+  ArealAverageSettings named;
+  named.GaugeNames = { "A-1", "050848" };
+  ArealAverageSettings utm = named;
+  utm.HaveProjection = true;
+  utm.Projection = ProjectionParameters::FromString("projection=UTM zone=31 north=1");
+  const auto errorOf = [&](const std::vector<Point2>& gauges, const ArealAverageSettings& settings)
+  {
+    try
+    {
+      ThiessenArealAverage average(gauges, catchment.Offsets, catchment.Ring, settings);
+      average.Step({ 1.0, INFINITY });
+    }
+    catch (const InputError& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  for (const Point2& bad : { Point2{ 0.3, 91.0 },
+         Point2{ -1031.5, 0.5 },
+         Point2{ NAN, 0.5 },
+         Point2{ 63.0, 0.5 },
+         Point2{ 0.7, 0.5 } })
+  {
+    const std::string error =
+      errorOf({ { 0.2, 0.2 }, bad }, bad.x == 63.0 ? utm : named); // (0.7, 0.5): the infinite value
+    EXPECT_NE(error.find("gauge 1 (station 050848)"), std::string::npos) << error;
+    EXPECT_EQ(error.find("A-1"), std::string::npos) << error;
+  }
+  named.GaugeNames.pop_back();
+  EXPECT_NE(
+    errorOf({ { 0.2, 0.2 }, { 0.7, 0.5 } }, named).find("1 names for 2 gauges"), std::string::npos);
+}
+
 TEST(ArealAverage, LatticeGaugesUpdateLikeRebuildsThroughCatchmentVertices)
 {
   // Gauges on a lon/lat lattice: tile sides run exactly through densified catchment vertices and

@@ -193,8 +193,17 @@ def test_bad_gauge_and_self_intersecting_catchment_are_named():
     f.SetGaugesData(gauges_polydata([(0.2, 0.2), (0.8, 95.0)], ["a", "b"], [1.0, 2.0]))
     f.SetCatchmentData(polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]]))
     f.Update()
-    assert_that(len(messages) == 1 and "gauge 1" in messages[0], f"gauge 1 named: {messages}")
-    for gauge, ring, named in [((-1031.5, 0.5), [(0, 0), (1, 0), (1, 1), (0, 1)], "gauge 1"),
+    assert_that(len(messages) == 1 and "gauge 1 (station b)" in messages[0], f"gauge 1 named: {messages}")
+    # By its station id too, as a double id column (a CSV reader's) gives it in full.
+    usgs = gauges_polydata([(0.2, 0.2), (0.8, 95.0)], ["a", "b"], [1.0, 2.0])
+    usgs.GetPointData().RemoveArray("station_id")
+    usgs.GetPointData().AddArray(make_points([(0, 0), (0, 0)], station_id=[6730200.0, 394529105231201.0])
+                                 .GetPointData().GetArray("station_id"))
+    f.SetGaugesData(usgs)
+    f.Update()
+    assert_that(len(messages) == 2 and "gauge 1 (station 394529105231201)" in messages[1],
+                f"gauge 1 named by its double id: {messages}")
+    for gauge, ring, named in [((-1031.5, 0.5), [(0, 0), (1, 0), (1, 1), (0, 1)], "gauge 1 (station b)"),
                                ((0.5, 0.5), [(0, 0), (1000, 0), (1000, 1), (0, 1)], "catchment ring 0 vertex 1")]:
         h = vtkThiessenArealAverage()
         messages = messages_of(h)
