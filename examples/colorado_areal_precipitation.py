@@ -20,6 +20,7 @@ Writes into --out:
   tiles_YYYY_MM.vtp      that month's tiles clipped to the catchment, in lon/lat (cell data
                          StationId, GaugeId, Weight, Area_m2, Value)
   map_YYYY_MM.png        the tiles coloured by that month's precipitation, gauges, the outline
+                         (each ring of it), over the catchment and the weighted gauges' extent
   areal_mean.png         the areal-mean time series
 Units are those of the data (documented as mm; the magnitudes look like cm: see
 examples/data/README.md).
@@ -233,7 +234,47 @@ def write_weights(per_gauge, gauges, path):
                           f"{e['area'] / 1e6:.4f}", e["value"]])
 
 
+def catchment_rings(data):
+    """The catchment's rings as lists of (lon, lat), one per polygon cell or closed polyline of
+    every polydata block (a multiblock such as vtkGDALVectorReader's, or a vtkPolyData), a
+    closing point equal to the first dropped: an outline of several rings (islands, holes) is
+    drawn ring by ring, not as one line through all its points."""
+    blocks = [data]
+    if data.IsA("vtkCompositeDataSet"):
+        blocks, leaves = [], data.NewIterator()
+        leaves.InitTraversal()
+        while not leaves.IsDoneWithTraversal():
+            blocks.append(leaves.GetCurrentDataObject())
+            leaves.GoToNextItem()
+    rings = []
+    for block in blocks:
+        if block is None or not block.IsA("vtkPolyData"):
+            continue
+        for cells in (block.GetPolys(), block.GetLines()):
+            offsets, connectivity = cells.GetOffsetsArray(), cells.GetConnectivityArray()
+            for c in range(cells.GetNumberOfCells()):
+                ring = [block.GetPoint(connectivity.GetValue(i))[:2]
+                        for i in range(offsets.GetValue(c), offsets.GetValue(c + 1))]
+                if len(ring) > 1 and ring[0] == ring[-1]:
+                    ring.pop()
+                if len(ring) >= 3:
+                    rings.append(ring)
+    return rings
+
+
+def map_extent(rings, points, margin=0.05):
+    """(lon_min, lon_max, lat_min, lat_max) of the rings and the points, each side moved out by
+    margin times the larger of the two spans, so that the catchment and the gauges that carry
+    weight fill the map wherever the catchment is."""
+    lons = [p[0] for ring in rings for p in ring] + [p[0] for p in points]
+    lats = [p[1] for ring in rings for p in ring] + [p[1] for p in points]
+    pad = margin * max(max(lons) - min(lons), max(lats) - min(lats), 1e-6)
+    return min(lons) - pad, max(lons) + pad, min(lats) - pad, max(lats) + pad
+
+
 def plot_map(per_gauge, gauges, outline, reporting, title, path):
+    """outline: the catchment's rings (catchment_rings); the map shows them and the weighted
+    gauges (map_extent)."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -249,8 +290,9 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path):
     collection = PolyCollection(polys, array=colours, cmap="viridis_r", edgecolors="white", linewidths=0.4)
     ax.add_collection(collection)
     fig.colorbar(collection, ax=ax, label="monthly precipitation (data units)")
-    xs, ys = zip(*outline)
-    ax.plot(xs + xs[:1], ys + ys[:1], color="black", linewidth=1.2)
+    for ring in outline:
+        xs, ys = zip(*ring)
+        ax.plot(xs + xs[:1], ys + ys[:1], color="black", linewidth=1.2)
     lon = [gauges.GetPoint(i)[0] for i in range(gauges.GetNumberOfPoints())]
     lat = [gauges.GetPoint(i)[1] for i in range(gauges.GetNumberOfPoints())]
     ax.scatter([lon[i] for i in range(len(lon)) if i not in reporting],
@@ -258,9 +300,10 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path):
                s=6, facecolors="none", edgecolors="grey", linewidths=0.5, label="gauge, no report")
     ax.scatter([lon[i] for i in reporting], [lat[i] for i in reporting], s=9, color="red",
                label="gauge, reported")
-    ax.set_xlim(-109.6, -100.9)
-    ax.set_ylim(36.4, 41.6)
-    ax.set_aspect(1.0 / math.cos(math.radians(39.0)))
+    lon_min, lon_max, lat_min, lat_max = map_extent(outline, [gauges.GetPoint(g)[:2] for g in per_gauge])
+    ax.set_xlim(lon_min, lon_max)
+    ax.set_ylim(lat_min, lat_max)
+    ax.set_aspect(1.0 / math.cos(math.radians((lat_min + lat_max) / 2)))  # degrees of equal length
     ax.set_xlabel("longitude")
     ax.set_ylabel("latitude")
     ax.set_title(title)
@@ -283,7 +326,7 @@ def plot_series(rows, path):
                                       gridspec_kw={"height_ratios": [3, 1]})
     top.plot(t, v, linewidth=0.6, color="tab:blue")
     top.set_ylabel("Thiessen areal mean (data units)")
-    top.set_title("Colorado monthly precipitation, Thiessen areal mean 1895-1997")
+    top.set_title(f"Monthly precipitation, Thiessen areal mean {rows[0][0]}-{rows[-1][0]}")
     bottom.plot([decimal_time(y, m) for y, m, *_ in rows], used, linewidth=0.6, color="tab:grey")
     bottom.set_ylabel("gauges reporting")
     bottom.set_xlabel("year")
@@ -361,8 +404,7 @@ def main(argv=None):
 
     row = next(r for r in rows if (r[0], r[1]) == (year, month))
     if not args.no_plots:
-        block = catchment.GetOutput().GetBlock(0)
-        outline = [block.GetPoint(i)[:2] for i in range(block.GetNumberOfPoints())]
+        outline = catchment_rings(catchment.GetOutput())
         ids = gauges.GetPointData().GetAbstractArray("station_id")
         reported = reporting_ids.get((year, month), set())
         reporting = {i for i in range(gauges.GetNumberOfPoints()) if ids.GetValue(i) in reported}

@@ -209,6 +209,74 @@ def test_bad_files_are_named():
             expected = f"{path}:3: {fields} field(s) where the header has 4"
             assert_that(status == 1 and expected in stderr, f"{path}: {status} {stderr!r}")
 
+# A synthetic basin in New Zealand (lon 175.5-176.5, southern hemisphere) with a lake: a two-ring
+# outline (a concave outer ring and a hole), five gauges around and in it, one far away.
+LAKE_BASIN = {"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {}, "geometry": {
+    "type": "Polygon", "coordinates": [
+        [[175.5, -39.2], [176.5, -39.2], [176.5, -38.4], [176.0, -38.6], [175.5, -38.4], [175.5, -39.2]],
+        [[175.8, -38.95], [175.8, -38.7], [176.1, -38.7], [176.1, -38.95], [175.8, -38.95]]]}}]}
+LAKE_GAUGES = {"N1": (175.6, -39.1), "N2": (176.4, -39.1), "N3": (175.95, -38.82), "N4": (175.7, -38.5),
+               "N5": (176.3, -38.55), "N6": (177.5, -37.0)}
+
+
+def write_lake_basin(directory):
+    """The basin's catchment, stations and observations files; returns their paths."""
+    import json
+
+    paths = [os.path.join(directory, name) for name in ("basin.geojson", "stations.csv", "obs.csv")]
+    with open(paths[0], "w") as f:
+        json.dump(LAKE_BASIN, f)
+    with open(paths[1], "w") as f:
+        f.write("station_id,lon,lat\n" + "".join(f"{s},{lon},{lat}\n" for s, (lon, lat) in LAKE_GAUGES.items()))
+    with open(paths[2], "w") as f:
+        f.write("station_id,year,month,precip\n" + "".join(f"{s},2001,1,{10 * k}\n" for k, s in enumerate(LAKE_GAUGES, 1)
+                                                          if s != "N6") + "N1,2001,2,5\nN6,2001,2,7\n")
+    return paths
+
+
+def import_example():
+    sys.path.insert(0, EXAMPLES)
+    import colorado_areal_precipitation
+
+    return colorado_areal_precipitation
+
+
+def test_the_map_of_another_place_with_a_lake():
+    example = import_example()
+    with tempfile.TemporaryDirectory() as out:
+        catchment, stations, observations = write_lake_basin(out)
+        status, stdout, stderr = run_example("colorado_areal_precipitation.py", "--out", out, "--stations", stations,
+                                             "--observations", observations, "--catchment", catchment,
+                                             "--month", "2001-01")
+        assert_that(status == 0, f"the lake basin failed ({status}): {stderr}")
+        assert_that(is_png(os.path.join(out, "map_2001_01.png")), "map_2001_01.png is not a PNG file")
+        weights = read_csv(os.path.join(out, "weights_2001_01.csv"))
+        assert_close(sum(float(w["weight"]) for w in weights), 1.0, 1e-12, "the lake basin's weights sum")
+        # The outline, ring by ring: GDAL's reading of the file gives back the file's two rings.
+        rings = example.catchment_rings(example.read_catchment(catchment).GetOutput())
+        expected = [[tuple(p) for p in ring[:-1]] for ring in LAKE_BASIN["features"][0]["geometry"]["coordinates"]]
+        assert_that(rings == expected, f"rings {rings}, the file has {expected}")
+    # The map's extent holds the catchment and the weighted gauges with an even margin, here as
+    # for Colorado (no place is built in).
+    weighted = [LAKE_GAUGES[w["station_id"]] for w in weights]
+    colorado = [read_colorado_outline()]
+    for outline, points in ((rings, weighted), (colorado, [(-109.4, 37.1), (-101.1, 40.0)])):
+        lon_min, lon_max, lat_min, lat_max = example.map_extent(outline, points)
+        xs = [p[0] for ring in outline for p in ring] + [p[0] for p in points]
+        ys = [p[1] for ring in outline for p in ring] + [p[1] for p in points]
+        margins = [min(xs) - lon_min, lon_max - max(xs), min(ys) - lat_min, lat_max - max(ys)]
+        span = max(max(xs) - min(xs), max(ys) - min(ys))
+        assert_that(all(abs(m - margins[0]) <= 1e-9 * span for m in margins) and 0 < margins[0] <= 0.1 * span,
+                    f"extent {lon_min, lon_max, lat_min, lat_max} of {min(xs), max(xs), min(ys), max(ys)}")
+
+
+def read_colorado_outline():
+    import json
+
+    with open(os.path.join(EXAMPLE_DATA, "colorado_boundary.geojson")) as f:
+        return [tuple(p) for p in json.load(f)["features"][0]["geometry"]["coordinates"][0][:-1]]
+
+
 def test_the_other_examples_run_on_their_data():
     with tempfile.TemporaryDirectory() as out:
         status, _, stderr = run_example("project_gauges.py", "--out", out)
@@ -249,5 +317,6 @@ def test_without_tessera_on_the_path_the_scripts_say_how_to_run():
 
 if __name__ == "__main__":
     run([test_the_colorado_main_job, test_missing_values_keep_their_months, test_bad_files_are_named,
+         test_the_map_of_another_place_with_a_lake,
          test_the_other_examples_run_on_their_data,
          test_without_tessera_on_the_path_the_scripts_say_how_to_run])
