@@ -1,8 +1,10 @@
 #include "areal_average.h"
 
 #include "dirichlet_tessellation.h"
+#include "display_pieces.h"
 #include "errors.h"
 #include "parallel_chunks.h"
+#include "polygon_area.h"
 #include "polygon_validation.h"
 #include "spatial_order.h"
 #include "tiles.h"
@@ -49,6 +51,27 @@ void DensifyPlanarRing(const Point2* ring, std::size_t count, double step, std::
       const double t = static_cast<double>(i) / pieces;
       out.push_back({ a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) });
     }
+  }
+}
+
+/// The ring's points unprojected onto the end of lonlat, without repeating a point: points an ulp
+/// apart in the plane can come back as one.
+void AppendUnprojected(const std::vector<Point2>& ring,
+  const GeographicProjection& projector,
+  std::vector<Point2>& lonlat)
+{
+  const std::size_t first = lonlat.size();
+  for (const Point2& p : ring)
+  {
+    const Point2 q = projector.Inverse(p);
+    if (lonlat.size() == first || lonlat.back() != q)
+    {
+      lonlat.push_back(q);
+    }
+  }
+  while (lonlat.size() > first + 1 && lonlat.back() == lonlat[first])
+  {
+    lonlat.pop_back();
   }
 }
 
@@ -187,6 +210,19 @@ struct ThiessenArealAverage::State
       total += EllipsoidalRingArea(scratch.LonLat);
     }
     return total;
+  }
+
+  /// Ellipsoidal area (m^2) of a simple anticlockwise polygon in the plane, measured as the tiles
+  /// are.
+  double PieceArea(const Point2* piece, std::size_t count, ClipScratch& scratch) const
+  {
+    if (this->Method == AreaMethod::EqualAreaPlane)
+    {
+      return CompensatedPolygonArea(piece, count);
+    }
+    scratch.Rings.RingOffsets.assign({ 0, count });
+    scratch.Rings.Vertices.assign(piece, piece + count);
+    return this->MeasureRings(scratch.Rings, scratch);
   }
 
   /// Ellipsoidal area (m^2) of tile & catchment. (A tile between gauges some nanometres apart,
@@ -825,21 +861,22 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
     {
       continue;
     }
-    out.Gauges.push_back(g);
-    for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
+    const ClippedRings pieces = DisplayPieces(rings);
+    if (pieces.RingOffsets.size() < 2)
     {
-      const std::size_t begin = rings.RingOffsets[r];
-      DensifyPlanarRing(&rings.Vertices[begin],
-        rings.RingOffsets[r + 1] - begin,
-        maxStepMetres,
-        s.Scratch[0].Dense);
-      for (const Point2& p : s.Scratch[0].Dense)
-      {
-        out.Rings.Vertices.push_back(s.Projector->Inverse(p));
-      }
-      out.Rings.RingOffsets.push_back(out.Rings.Vertices.size());
+      continue; // (only rings of no area)
     }
-    out.TileRingOffsets.push_back(out.Rings.RingOffsets.size() - 1);
+    out.Gauges.push_back(g);
+    for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
+    {
+      const Point2* piece = &pieces.Vertices[pieces.RingOffsets[r]];
+      const std::size_t size = pieces.RingOffsets[r + 1] - pieces.RingOffsets[r];
+      out.PieceAreasM2.push_back(s.PieceArea(piece, size, s.Scratch[0]));
+      DensifyPlanarRing(piece, size, maxStepMetres, s.Scratch[0].Dense);
+      AppendUnprojected(s.Scratch[0].Dense, *s.Projector, out.Pieces.Vertices);
+      out.Pieces.RingOffsets.push_back(out.Pieces.Vertices.size());
+    }
+    out.TilePieceOffsets.push_back(out.Pieces.RingOffsets.size() - 1);
   }
   return out;
 }

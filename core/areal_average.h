@@ -94,12 +94,16 @@ struct ArealStep
   std::vector<double> AreasM2;      ///< per weighted gauge: clipped ellipsoidal area, m^2
 };
 
-/// The clipped tiles of the current step, for display: rings in lon/lat.
+/// The clipped tiles of the current step, for display, in lon/lat: each tile's part of the
+/// catchment as pieces that are simple polygons without holes (x-monotone, display_pieces.h): one
+/// for most tiles, several for a part with a hole or lobes joined only at the tile's edge. A
+/// tile's pieces do not overlap and their areas add up to its clipped area.
 struct ClippedTilesLonLat
 {
-  std::vector<std::int32_t> Gauges;              ///< one entry per tile with a non-empty clip
-  std::vector<std::size_t> TileRingOffsets{ 0 }; ///< rings of tile k: [k], [k+1]
-  ClippedRings Rings;                            ///< vertices in lon/lat degrees
+  std::vector<std::int32_t> Gauges;               ///< one entry per tile with a non-empty clip
+  std::vector<std::size_t> TilePieceOffsets{ 0 }; ///< pieces of tile k: [k], [k+1]
+  ClippedRings Pieces;                            ///< one ring per piece, lon/lat degrees
+  std::vector<double> PieceAreasM2; ///< per piece: ellipsoidal area, m^2, measured as weights are
 };
 
 class ThiessenArealAverage

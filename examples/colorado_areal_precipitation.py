@@ -17,8 +17,10 @@ Writes into --out:
   weights_YYYY_MM.csv    station_id,name,lon,lat,weight,area_km2,precip for --month
   weights_all_months.csv year,month,station_id,weight,area_km2,precip: every month's weights (a row
                          per month and gauge with a weight)
-  tiles_YYYY_MM.vtp      that month's tiles clipped to the catchment, in lon/lat (cell data
-                         StationId, GaugeId, Weight, Area_m2, Value)
+  tiles_YYYY_MM.vtp      that month's tiles clipped to the catchment, in lon/lat: simple
+                         polygons, several for a tile around a lake or across a bay (cell data
+                         StationId, GaugeId, Weight, Area_m2 and Value per gauge, CellArea_m2
+                         and CellWeight per cell)
   map_YYYY_MM.png        the tiles coloured by that month's precipitation, gauges, the outline
                          (each ring of it), over the catchment and the weighted gauges' extent
   areal_mean.png         the areal-mean time series
@@ -207,7 +209,9 @@ def write_summary(table, path):
 
 
 def tiles_by_gauge(tiles):
-    """Per gauge: weight, area, value and its rings (lists of (lon, lat))."""
+    """Per gauge: weight, area, value (the gauge's, repeated on each of its cells) and its pieces
+    (one cell each: lists of (lon, lat); a tile whose part of the catchment has a hole or is in
+    parts joined at the tile's edge comes as several pieces)."""
     cd = tiles.GetCellData()
     gauge_ids, weights = cd.GetArray("GaugeId"), cd.GetArray("Weight")
     areas, values = cd.GetArray("Area_m2"), cd.GetArray("Value")
@@ -282,13 +286,17 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path):
     from matplotlib.collections import PolyCollection
 
     fig, ax = plt.subplots(figsize=(9, 6.5))
-    polys, colours = [], []
-    for e in per_gauge.values():
-        for ring in e["rings"]:
-            polys.append(ring)
-            colours.append(e["value"])
-    collection = PolyCollection(polys, array=colours, cmap="viridis_r", edgecolors="white", linewidths=0.4)
-    ax.add_collection(collection)
+    # A tile of one piece is outlined in white; the pieces of a tile in several are drawn without
+    # outlines, so that the seams between them do not look like tile boundaries.
+    values = [e["value"] for e in per_gauge.values()]
+    for whole in (False, True):
+        pieces = [(ring, e["value"]) for e in per_gauge.values() if (len(e["rings"]) == 1) == whole
+                  for ring in e["rings"]]
+        collection = PolyCollection([ring for ring, _ in pieces], array=[v for _, v in pieces],
+                                    cmap="viridis_r", edgecolors="white" if whole else "face",
+                                    linewidths=0.4)
+        collection.set_clim(min(values), max(values))
+        ax.add_collection(collection)
     fig.colorbar(collection, ax=ax, label="monthly precipitation (data units)")
     for ring in outline:
         xs, ys = zip(*ring)

@@ -466,6 +466,69 @@ std::vector<std::vector<double>> StepValues(vtkTable* table,
   return stepValues;
 }
 
+/// Output 0's cell data, a cell per piece of a gauge's clipped tile: StationId (the gauges' id
+/// array's type, when they have one), GaugeId, Weight, Area_m2 and Value (the gauge's, on each of
+/// its cells), CellArea_m2 and CellWeight (the cell's own area and its share of the catchment).
+class TileCellData
+{
+public:
+  explicit TileCellData(vtkAbstractArray* stationIds)
+    : StationIds(stationIds)
+  {
+    if (stationIds)
+    {
+      this->Stations = vtk::TakeSmartPointer(stationIds->NewInstance());
+      this->Stations->SetNumberOfComponents(stationIds->GetNumberOfComponents());
+      this->Stations->SetName("StationId");
+    }
+    this->GaugeIds->SetName("GaugeId");
+    this->Weights->SetName("Weight");
+    this->Areas->SetName("Area_m2");
+    this->Values->SetName("Value");
+    this->CellAreas->SetName("CellArea_m2");
+    this->CellWeights->SetName("CellWeight");
+  }
+
+  void Append(std::int32_t gauge,
+    double weight,
+    double area,
+    double value,
+    double cellArea,
+    double catchmentArea)
+  {
+    if (this->Stations)
+    {
+      this->Stations->InsertNextTuple(gauge, this->StationIds);
+    }
+    this->GaugeIds->InsertNextValue(gauge);
+    this->Weights->InsertNextValue(weight);
+    this->Areas->InsertNextValue(area);
+    this->Values->InsertNextValue(value);
+    this->CellAreas->InsertNextValue(cellArea);
+    this->CellWeights->InsertNextValue(cellArea / catchmentArea);
+  }
+
+  void AddTo(vtkCellData* cellData)
+  {
+    if (this->Stations)
+    {
+      cellData->AddArray(this->Stations);
+    }
+    cellData->AddArray(this->GaugeIds);
+    cellData->AddArray(this->Weights);
+    cellData->AddArray(this->Areas);
+    cellData->AddArray(this->Values);
+    cellData->AddArray(this->CellAreas);
+    cellData->AddArray(this->CellWeights);
+  }
+
+private:
+  vtkAbstractArray* StationIds;
+  vtkSmartPointer<vtkAbstractArray> Stations;
+  vtkNew<vtkIdTypeArray> GaugeIds;
+  vtkNew<vtkDoubleArray> Weights, Areas, Values, CellAreas, CellWeights;
+};
+
 /// The data of an upstream connection, brought up to date.
 vtkDataObject* UpdatedData(vtkAlgorithmOutput* connection)
 {
@@ -958,59 +1021,41 @@ void vtkThiessenArealAverage::WriteTiles(std::size_t step,
 
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  for (const auto& p : clipped.Rings.Vertices)
+  for (const auto& p : clipped.Pieces.Vertices)
   {
     points->InsertNextPoint(p.x, p.y, 0.0);
   }
   vtkNew<vtkCellArray> polys;
-  vtkSmartPointer<vtkAbstractArray> station;
-  if (stationIds)
-  {
-    station = vtk::TakeSmartPointer(stationIds->NewInstance());
-    station->SetNumberOfComponents(stationIds->GetNumberOfComponents());
-  }
-  vtkNew<vtkIdTypeArray> gaugeIds;
-  vtkNew<vtkDoubleArray> weights, areas, values;
-  gaugeIds->SetName("GaugeId");
-  weights->SetName("Weight");
-  areas->SetName("Area_m2");
-  values->SetName("Value");
+  TileCellData cells(stationIds);
+  const double catchmentArea = in.Average->CatchmentAreaM2();
   for (std::size_t k = 0; k < clipped.Gauges.size(); ++k)
   {
     const std::int32_t g = clipped.Gauges[k];
     const auto found = std::lower_bound(result.Gauges.begin(), result.Gauges.end(), g);
     const std::size_t index = static_cast<std::size_t>(found - result.Gauges.begin());
     const bool isWeighted = found != result.Gauges.end() && *found == g;
-    for (std::size_t r = clipped.TileRingOffsets[k]; r < clipped.TileRingOffsets[k + 1]; ++r)
+    // One cell per piece; the gauge's Weight and Area_m2 are repeated on each of its cells, the
+    // cell's own share is CellArea_m2 / CellWeight.
+    for (std::size_t r = clipped.TilePieceOffsets[k]; r < clipped.TilePieceOffsets[k + 1]; ++r)
     {
-      const std::size_t begin = clipped.Rings.RingOffsets[r],
-                        end = clipped.Rings.RingOffsets[r + 1];
+      const std::size_t begin = clipped.Pieces.RingOffsets[r],
+                        end = clipped.Pieces.RingOffsets[r + 1];
       polys->InsertNextCell(static_cast<vtkIdType>(end - begin));
       for (std::size_t v = begin; v < end; ++v)
       {
         polys->InsertCellPoint(static_cast<vtkIdType>(v));
       }
-      if (station)
-      {
-        station->InsertNextTuple(g, stationIds);
-      }
-      gaugeIds->InsertNextValue(g);
-      weights->InsertNextValue(isWeighted ? result.Weights[index] : 0.0);
-      areas->InsertNextValue(isWeighted ? result.AreasM2[index] : 0.0);
-      values->InsertNextValue(in.Values[step][g]);
+      cells.Append(g,
+        isWeighted ? result.Weights[index] : 0.0,
+        isWeighted ? result.AreasM2[index] : 0.0,
+        in.Values[step][static_cast<std::size_t>(g)],
+        clipped.PieceAreasM2[r],
+        catchmentArea);
     }
   }
   output->SetPoints(points);
   output->SetPolys(polys);
-  if (station)
-  {
-    station->SetName("StationId");
-    output->GetCellData()->AddArray(station);
-  }
-  output->GetCellData()->AddArray(gaugeIds);
-  output->GetCellData()->AddArray(weights);
-  output->GetCellData()->AddArray(areas);
-  output->GetCellData()->AddArray(values);
+  cells.AddTo(output->GetCellData());
 }
 
 //------------------------------------------------------------------------------

@@ -46,10 +46,20 @@
  * (AreaMethod selects explicitly).
  *
  * Output 0 (vtkPolyData, time-dependent): the tiles of the requested time step clipped to the
- * catchment, in lon/lat (one polygon per ring), with cell data `StationId` (the gauge's id, its
- * array type kept), `GaugeId` (index into the gauges), `Weight`, `Area_m2` and `Value` (the
- * gauge's value at that step). Time steps are advertised, so ParaView's time slider re-weights
- * the tiles step by step.
+ * catchment, in lon/lat. Every cell is a simple polygon (no hole, not touching itself) and cells
+ * do not overlap, so ParaView fills exactly the catchment: each tile's part of the catchment is
+ * cut by vertical lines (in the projected plane) into x-monotone pieces, a cell each
+ * (core/display_pieces.h). Most tiles, concave ones included, are one piece; a part with a hole
+ * (a lake in the tile: two pieces around it) or made of lobes that meet only along the tile's
+ * edge (a tile across a bay) gives several, so a gauge can have several cells. Cell data:
+ * `StationId` (the gauge's id, its array type kept), `GaugeId` (index into the gauges), `Weight`
+ * and `Area_m2` (the gauge's weight and clipped ellipsoidal area, m^2: per gauge, repeated on
+ * each of its cells, so sum them once per station, not over cells), `Value` (the gauge's value),
+ * `CellArea_m2` (this cell's own ellipsoidal area, m^2) and `CellWeight` (CellArea_m2 over the
+ * catchment's area). Summed over all cells, `CellArea_m2` gives the covered catchment area and
+ * `CellWeight` the CoveredFraction (1); over a gauge's cells, its `Area_m2` and `Weight` (to
+ * round-off for equal-area areas, about 1e-9 for geodesic ones). Time steps are advertised, so
+ * ParaView's time slider re-weights the tiles step by step.
  *
  * Output 1 (vtkTable): one row per time step: `Time`, `ArealMean` (NaN where no gauge reported),
  * `StationsUsed` (gauges reporting), `StationsWeighted` (of those, gauges whose tile reaches the

@@ -357,14 +357,14 @@ TEST(LocalTiles, ArealAverageUpdatesEqualRebuildsWhenFewGaugesToggle)
       const ClippedTilesLonLat cb = b.CurrentClippedTiles(5000.0);
       EXPECT_EQ(ca.Gauges, cb.Gauges) << "step " << t;
       // (Vertex counts may differ: the engines' ids differ, so centres round differently.)
-      EXPECT_EQ(ca.TileRingOffsets, cb.TileRingOffsets) << "step " << t;
-      ASSERT_EQ(ca.Rings.RingOffsets.size(), cb.Rings.RingOffsets.size()) << "step " << t;
+      EXPECT_EQ(ca.TilePieceOffsets, cb.TilePieceOffsets) << "step " << t;
+      ASSERT_EQ(ca.Pieces.RingOffsets.size(), cb.Pieces.RingOffsets.size()) << "step " << t;
       // Each ring's area (shoelace in lon/lat degrees) agrees: the vertices differ only by
       // rounding (of the face centres, then of the unprojection), which moves a ring's area by
       // about 1e-13 of itself (the largest difference seen here is 1.1e-13); checked at 1e-11.
-      for (std::size_t r = 0; r + 1 < ca.Rings.RingOffsets.size(); ++r)
+      for (std::size_t r = 0; r + 1 < ca.Pieces.RingOffsets.size(); ++r)
       {
-        const double areaA = ShoelaceArea(ca.Rings, r), areaB = ShoelaceArea(cb.Rings, r);
+        const double areaA = ShoelaceArea(ca.Pieces, r), areaB = ShoelaceArea(cb.Pieces, r);
         EXPECT_NEAR(areaA, areaB, 1e-11 * std::fabs(areaB)) << "step " << t << " ring " << r;
       }
     }

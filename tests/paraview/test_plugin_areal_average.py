@@ -31,6 +31,10 @@ gauge = tiles.GetCellData().GetArray("GaugeId")
 per_gauge = {gauge.GetValue(c): weights.GetValue(c) for c in range(tiles.GetNumberOfCells())}
 if abs(math.fsum(per_gauge.values()) - 1.0) > 1e-12:
     failures.append(f"weights of 1963-08 sum to {math.fsum(per_gauge.values())}")
+cell_weights = tiles.GetCellData().GetArray("CellWeight")
+covered = math.fsum(cell_weights.GetValue(c) for c in range(tiles.GetNumberOfCells())) if cell_weights else None
+if covered is None or abs(covered - 1.0) > 1e-12:
+    failures.append(f"the cells' CellWeight of 1963-08 sum to {covered}, not 1")
 if len(per_gauge) < 150:
     failures.append(f"only {len(per_gauge)} weighted gauges in 1963-08")
 values = tiles.GetCellData().GetArray("Value")

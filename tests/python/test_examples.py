@@ -79,13 +79,20 @@ def test_the_colorado_main_job():
         reader.SetFileName(os.path.join(out, f"tiles_{tag}.vtp"))
         reader.Update()
         tiles = reader.GetOutput()
-        ids, weight = tiles.GetCellData().GetAbstractArray("StationId"), tiles.GetCellData().GetArray("Weight")
-        per_station = {}
+        cd = tiles.GetCellData()
+        ids, weight, cell_weight = cd.GetAbstractArray("StationId"), cd.GetArray("Weight"), cd.GetArray("CellWeight")
+        per_station = {}  # station: (its Weight, the sum of its cells' CellWeight)
         for c in range(tiles.GetNumberOfCells()):
-            per_station[ids.GetValue(c)] = per_station.get(ids.GetValue(c), 0.0) + weight.GetValue(c)
+            station = ids.GetValue(c)
+            earlier = per_station.get(station, (weight.GetValue(c), 0.0))
+            assert_that(earlier[0] == weight.GetValue(c), f"station {station}: cells with different Weight")
+            per_station[station] = (earlier[0], earlier[1] + cell_weight.GetValue(c))
         for w in weighted:
-            assert_close(per_station.get(w["station_id"], 0.0), float(w["weight"]), 1e-14,
+            station_weight, cells = per_station.get(w["station_id"], (0.0, 0.0))
+            assert_close(station_weight, float(w["weight"]), 1e-14,
                          f"station {w['station_id']}: tiles' Weight against weights_{tag}.csv")
+            assert_close(cells, float(w["weight"]), 1e-12,
+                         f"station {w['station_id']}: its cells' CellWeight against weights_{tag}.csv")
         # Every month's weights: a month's rows are its weighted gauges, summing to 1, and their
         # weight x precip sums to the month's areal mean.
         per_month = {}
@@ -252,6 +259,20 @@ def test_the_map_of_another_place_with_a_lake():
         assert_that(is_png(os.path.join(out, "map_2001_01.png")), "map_2001_01.png is not a PNG file")
         weights = read_csv(os.path.join(out, "weights_2001_01.csv"))
         assert_close(sum(float(w["weight"]) for w in weights), 1.0, 1e-12, "the lake basin's weights sum")
+        # The tiles file: no cell over the lake, cells' weights summing to 1.
+        from matplotlib.path import Path
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+
+        reader = vtkXMLPolyDataReader()
+        reader.SetFileName(os.path.join(out, "tiles_2001_01.vtp"))
+        reader.Update()
+        tiles = reader.GetOutput()
+        cells = [[tiles.GetPoint(tiles.GetCell(c).GetPointId(k))[:2] for k in range(tiles.GetCell(c).GetNumberOfPoints())]
+                 for c in range(tiles.GetNumberOfCells())]
+        assert_that(not any(Path(cell).contains_point((175.95, -38.82)) for cell in cells), "a cell covers the lake")
+        cell_weight = tiles.GetCellData().GetArray("CellWeight")
+        assert_close(math.fsum(cell_weight.GetValue(c) for c in range(tiles.GetNumberOfCells())), 1.0, 1e-12,
+                     "the lake basin's cells' CellWeight")
         # The outline, ring by ring: GDAL's reading of the file gives back the file's two rings.
         rings = example.catchment_rings(example.read_catchment(catchment).GetOutput())
         expected = [[tuple(p) for p in ring[:-1]] for ring in LAKE_BASIN["features"][0]["geometry"]["coordinates"]]

@@ -645,6 +645,109 @@ def test_rows_that_cannot_be_used_make_no_step_and_are_listed():
     assert_that(f.GetOutputDataObject(1).GetNumberOfRows() == 0, "no usable row: output 1 not empty")
 
 
+def ellipsoidal_area(ring):
+    """Signed area (m^2, anticlockwise positive) on WGS84 of a lon/lat ring whose edges are straight
+    in longitude and latitude, independently of the filter: A = -closed integral of F(lat) dlon,
+    F the integral of the area element M N cos(lat) over latitude (Snyder's q times a^2 / 2),
+    each edge by 20-point Gauss-Legendre."""
+    a, f = 6378137.0, 1 / 298.257223563
+    e2 = f * (2 - f)
+    e = math.sqrt(e2)
+
+    def F(lat):
+        s = np.sin(lat)
+        return a * a * (1 - e2) / 2 * (s / (1 - e2 * s * s) + np.log((1 + e * s) / (1 - e * s)) / (2 * e))
+
+    nodes, weights = np.polynomial.legendre.leggauss(20)
+    t = (nodes + 1) / 2
+    total = 0.0
+    for (lon1, lat1), (lon2, lat2) in zip(ring, ring[1:] + ring[:1]):
+        lats = np.radians(lat1 + t * (lat2 - lat1))
+        total -= math.radians(lon2 - lon1) * float(np.sum(weights / 2 * F(lats)))
+    return total
+
+
+def cell_rings(tiles):
+    return [[tiles.GetPoint(tiles.GetCell(c).GetPointId(k))[:2] for k in range(tiles.GetCell(c).GetNumberOfPoints())]
+            for c in range(tiles.GetNumberOfCells())]
+
+
+def is_simple(ring):
+    """No two edges of the ring meet except neighbours at their shared vertex (floating point: the
+    rings here are far from degenerate)."""
+    def orient(p, q, r):
+        d = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
+        return (d > 0) - (d < 0)
+
+    def on(p, q, r):
+        return min(p[0], q[0]) <= r[0] <= max(p[0], q[0]) and min(p[1], q[1]) <= r[1] <= max(p[1], q[1])
+
+    edges = list(zip(ring, ring[1:] + ring[:1]))
+    n = len(edges)
+    for i in range(n):
+        for j in range(i + 1, n):
+            if j == i + 1 or (i == 0 and j == n - 1):
+                continue
+            (p, q), (r, s) = edges[i], edges[j]
+            o = [orient(p, q, r), orient(p, q, s), orient(r, s, p), orient(r, s, q)]
+            if (o[0] * o[1] < 0 and o[2] * o[3] < 0) or (o[0] == 0 and on(p, q, r)) or (o[1] == 0 and on(p, q, s)) \
+                    or (o[2] == 0 and on(r, s, p)) or (o[3] == 0 and on(r, s, q)):
+                return False
+    return True
+
+
+def test_tiles_of_a_catchment_with_a_hole_or_a_bay():
+    # A lake inside the tile of the gauge standing in it; a bay whose mouth a gauge's tile spans, so
+    # that the tile meets both shores. Output 0 must show each tile's part of the catchment as
+    # simple polygons: nothing over the lake or the bay, no cell over another, cell areas adding up
+    # to the catchment, and the weights read per station.
+    square = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+    lake = [(0.35, 0.35), (0.35, 0.65), (0.65, 0.65), (0.65, 0.35)]  # clockwise: a hole
+    bay = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.6, 1.0), (0.6, 0.3), (0.4, 0.3), (0.4, 1.0), (0.0, 1.0)]
+    cases = [("lake", [square, lake], [(0.5, 0.5), (0.1, 0.1), (0.9, 0.1), (0.9, 0.9), (0.1, 0.9)], (0.5, 0.5)),
+             ("bay", [bay], [(0.5, 0.9), (0.5, 0.1), (0.1, 0.5), (0.9, 0.5)], (0.5, 0.8))]
+    for name, rings, coords, outside in cases:
+        f = vtkThiessenArealAverage()
+        errors = messages_of(f)
+        ids = [f"{name}{k}" for k in range(len(coords))]
+        f.SetGaugesData(gauges_polydata(coords, ids, [float(k + 1) for k in range(len(coords))]))
+        f.SetCatchmentData(polygon(rings))
+        f.Update(0)
+        assert_that(not errors, f"{name}: {errors}")
+        tiles = f.GetOutputDataObject(0)
+        cd = tiles.GetCellData()
+        column = {n: [cd.GetAbstractArray(n).GetValue(c) for c in range(tiles.GetNumberOfCells())]
+                  for n in ("StationId", "Weight", "Area_m2", "CellArea_m2", "CellWeight")}
+        catchment_area = sum(abs(ellipsoidal_area(r)) * (1 if k == 0 else -1) for k, r in enumerate(rings))
+        assert_close(math.fsum(column["CellArea_m2"]), catchment_area, 1e-9 * catchment_area,
+                     f"{name}: cell areas against the catchment's")
+        assert_close(math.fsum(column["CellWeight"]), 1.0, 1e-12, f"{name}: cell weights sum")
+        per_station = {}
+        for sid, weight, area, cell_area in zip(column["StationId"], column["Weight"], column["Area_m2"],
+                                                column["CellArea_m2"]):
+            entry = per_station.setdefault(sid, {"weight": weight, "area": area, "cells": 0.0})
+            assert_that(entry["weight"] == weight and entry["area"] == area,
+                        f"{name}: station {sid}'s cells disagree on its Weight or Area_m2")
+            entry["cells"] += cell_area
+        assert_close(math.fsum(e["weight"] for e in per_station.values()), 1.0, 1e-12,
+                     f"{name}: weights per station sum")
+        for sid, e in per_station.items():
+            assert_close(e["cells"], e["area"], 1e-9 * e["area"], f"{name}: station {sid}'s cells against its Area_m2")
+        cells = cell_rings(tiles)
+        assert_that(all(is_simple(ring) for ring in cells), f"{name}: a cell is not a simple polygon")
+        paths = [Path(ring) for ring in cells]
+        assert_that(not any(p.contains_point(outside) for p in paths), f"{name}: a cell covers {outside}")
+        # Point by point: inside the catchment (even-odd over its rings) exactly one cell, else none.
+        n = 50
+        samples = np.array([((i + 0.5 * math.sqrt(2) - 0.2) / n, (j + 0.5 * math.sqrt(3) - 0.4) / n)
+                            for i in range(n) for j in range(n)])
+        covering = sum(p.contains_points(samples).astype(int) for p in paths)
+        inside = sum(Path(r).contains_points(samples).astype(int) for r in rings) % 2
+        wrong = np.nonzero(covering != inside)[0]
+        assert_that(len(wrong) == 0, f"{name}: {len(wrong)} sample points covered {covering[wrong[:5]]} times, "
+                                     f"inside {inside[wrong[:5]]}: {samples[wrong[:5]].tolist()}")
+
+
 def test_weights_table_lists_every_step():
     coords, ids, ring, months = read_colorado()
     f, messages = summary_of(coords, ids, ring, observations_table(months))
@@ -742,4 +845,5 @@ if __name__ == "__main__":
          test_a_failed_update_leaves_no_earlier_result,
          test_rows_that_cannot_be_used_make_no_step_and_are_listed,
          test_weights_table_lists_every_step,
+         test_tiles_of_a_catchment_with_a_hole_or_a_bay,
          test_long_numeric_ids_repeated_rows_and_shared_ids_are_kept_apart_and_reported])

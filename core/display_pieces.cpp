@@ -1,0 +1,375 @@
+#include "display_pieces.h"
+
+#include "polygon_area.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace tessera
+{
+namespace
+{
+
+/// Rings whose area is not negligible beside the others' (ClipInto leaves rings of no area where a
+/// ring of the catchment only runs along the tile's boundary: they contribute nothing but slabs).
+ClippedRings WithoutEmptyRings(const ClippedRings& rings)
+{
+  std::vector<double> areas;
+  double total = 0.0;
+  for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
+  {
+    const std::size_t begin = rings.RingOffsets[r], count = rings.RingOffsets[r + 1] - begin;
+    areas.push_back(count < 3 ? 0.0 : CompensatedPolygonArea(&rings.Vertices[begin], count));
+    total += std::fabs(areas.back());
+  }
+  ClippedRings kept;
+  for (std::size_t r = 0; r < areas.size(); ++r)
+  {
+    if (std::fabs(areas[r]) > 1e-12 * total)
+    {
+      kept.Vertices.insert(kept.Vertices.end(),
+        rings.Vertices.begin() + static_cast<std::ptrdiff_t>(rings.RingOffsets[r]),
+        rings.Vertices.begin() + static_cast<std::ptrdiff_t>(rings.RingOffsets[r + 1]));
+      kept.RingOffsets.push_back(kept.Vertices.size());
+    }
+  }
+  return kept;
+}
+
+/// A ring edge that is not vertical, from its left end to its right end. Winding: +1 when its ring
+/// runs left to right along it (the region is above it), -1 otherwise.
+struct SweepEdge
+{
+  Point2 Left, Right;
+  int Winding;
+  /// |dy / dx|: how much a rounding of x moves the edge's height.
+  double Steepness() const
+  {
+    return std::fabs(this->Right.y - this->Left.y) / (this->Right.x - this->Left.x);
+  }
+};
+
+/// The edge's height at x, exactly its end's height at its ends (so that slabs meeting at a
+/// vertex see the same corner on either side).
+double HeightAt(const SweepEdge& e, double x)
+{
+  if (x <= e.Left.x)
+  {
+    return e.Left.y;
+  }
+  if (x >= e.Right.x)
+  {
+    return e.Right.y;
+  }
+  return e.Left.y + (x - e.Left.x) / (e.Right.x - e.Left.x) * (e.Right.y - e.Left.y);
+}
+
+/// Every edge that is not vertical, sorted by its left end's x.
+std::vector<SweepEdge> SweepEdges(const ClippedRings& rings)
+{
+  std::vector<SweepEdge> edges;
+  for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
+  {
+    const std::size_t begin = rings.RingOffsets[r], end = rings.RingOffsets[r + 1];
+    for (std::size_t v = begin; v < end; ++v)
+    {
+      const Point2& a = rings.Vertices[v];
+      const Point2& b = rings.Vertices[v + 1 == end ? begin : v + 1];
+      if (a.x < b.x)
+      {
+        edges.push_back({ a, b, +1 });
+      }
+      else if (b.x < a.x)
+      {
+        edges.push_back({ b, a, -1 });
+      }
+    }
+  }
+  std::sort(edges.begin(),
+    edges.end(),
+    [](const SweepEdge& e, const SweepEdge& f) { return e.Left.x < f.Left.x; });
+  return edges;
+}
+
+/// The distinct x of the vertices, ascending: the slabs' sides.
+std::vector<double> SlabSides(const ClippedRings& rings)
+{
+  std::vector<double> xs;
+  for (const Point2& p : rings.Vertices)
+  {
+    xs.push_back(p.x);
+  }
+  std::sort(xs.begin(), xs.end());
+  xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+  return xs;
+}
+
+/// How far apart two points must be to count as different: a few ulps of the largest coordinate.
+/// Where two edges of opposite sense run along one line (a ring of the catchment and the tile's
+/// edge, or the two sides of a bridge), their rounded vertices put one a little above the other;
+/// the sliver between them is no part of the region, and a piece continued through it would come
+/// out with a spike along the line. (Heights on steep edges are compared with this times the
+/// steepness: a rounding of x moves them that much more.)
+double PointTolerance(const ClippedRings& rings)
+{
+  double largest = 0.0;
+  for (const Point2& p : rings.Vertices)
+  {
+    largest = std::max({ largest, std::fabs(p.x), std::fabs(p.y) });
+  }
+  return 64.0 * std::numeric_limits<double>::epsilon() * largest;
+}
+
+/// The region between two edges inside one slab: vertical sides at the slab's x.
+struct Trapezoid
+{
+  std::size_t Bottom, Top; // edges
+  Point2 BottomLeft, BottomRight, TopLeft, TopRight;
+  double HeightTolerance; // heights closer than this on its sides are one (PointTolerance)
+};
+
+Trapezoid MakeTrapezoid(const std::vector<SweepEdge>& edges,
+  std::size_t bottom,
+  std::size_t top,
+  double left,
+  double right,
+  double tolerance)
+{
+  Trapezoid t{ bottom, top, {}, {}, {}, {}, 0.0 };
+  t.HeightTolerance =
+    tolerance * (1.0 + std::max(edges[bottom].Steepness(), edges[top].Steepness()));
+  t.BottomLeft = { left, HeightAt(edges[bottom], left) };
+  t.BottomRight = { right, HeightAt(edges[bottom], right) };
+  // (rounding can put a corner of the top edge a little below the bottom one's where they meet)
+  t.TopLeft = { left, std::max(HeightAt(edges[top], left), t.BottomLeft.y) };
+  t.TopRight = { right, std::max(HeightAt(edges[top], right), t.BottomRight.y) };
+  return t;
+}
+
+/// The region inside the slab left .. right, bottom to top, without slivers no higher than their
+/// HeightTolerance (tolerance: PointTolerance). active: the edges spanning the slab.
+/// Edges are taken in order of their height at the slab's middle; where the sum of the windings
+/// below rises above 0 a trapezoid starts, where it falls back it ends. At equal heights rising
+/// edges come first, so that coincident edges of opposite sense (a bridge) never split the region.
+std::vector<Trapezoid> SlabTrapezoids(const std::vector<SweepEdge>& edges,
+  const std::vector<std::size_t>& active,
+  double left,
+  double right,
+  double tolerance)
+{
+  const double middle = left + 0.5 * (right - left);
+  std::vector<std::pair<double, std::size_t>> order;
+  for (const std::size_t e : active)
+  {
+    order.emplace_back(HeightAt(edges[e], middle), e);
+  }
+  std::sort(order.begin(),
+    order.end(),
+    [&](const auto& a, const auto& b)
+    {
+      return a.first < b.first ||
+        (a.first == b.first && edges[a.second].Winding > edges[b.second].Winding);
+    });
+  std::vector<Trapezoid> slab;
+  int winding = 0;
+  std::size_t bottom = 0;
+  for (const auto& [height, e] : order)
+  {
+    const int below = winding;
+    winding += edges[e].Winding;
+    if (below <= 0 && winding > 0)
+    {
+      bottom = e;
+    }
+    else if (below > 0 && winding <= 0)
+    {
+      const Trapezoid t = MakeTrapezoid(edges, bottom, e, left, right, tolerance);
+      if (t.TopLeft.y - t.BottomLeft.y > t.HeightTolerance ||
+        t.TopRight.y - t.BottomRight.y > t.HeightTolerance)
+      {
+        slab.push_back(t); // (not a sliver between edges along one line)
+      }
+    }
+  }
+  return slab;
+}
+
+/// x-monotone pieces grown from left to right out of the slabs' trapezoids.
+class PieceBuilder
+{
+public:
+  explicit PieceBuilder(double tolerance)
+    : Tolerance(tolerance)
+  {
+  }
+
+  /// Adds a slab's trapezoids, bottom to top: each one continues the first piece of the slab
+  /// before whose right side shares a stretch with its left side (a vertical line then still meets
+  /// the piece in one interval, so that it stays a simple polygon), unless a trapezoid below took
+  /// that piece; otherwise it starts a piece. The pieces that no trapezoid continues are finished.
+  void AddSlab(const std::vector<Trapezoid>& slab)
+  {
+    std::vector<Piece> open;
+    for (const Trapezoid& t : slab)
+    {
+      auto piece = std::find_if(
+        this->Open.begin(), this->Open.end(), [&](const Piece& p) { return p.Meets(t); });
+      if (piece != this->Open.end())
+      {
+        piece->Extend(t);
+        open.push_back(std::move(*piece));
+        this->Open.erase(piece);
+      }
+      else
+      {
+        open.push_back(Piece(t));
+      }
+    }
+    for (const Piece& p : this->Open)
+    {
+      this->Finish(p);
+    }
+    this->Open = std::move(open);
+  }
+
+  ClippedRings Pieces()
+  {
+    for (const Piece& p : this->Open)
+    {
+      this->Finish(p);
+    }
+    this->Open.clear();
+    return this->Done;
+  }
+
+private:
+  /// Its lower and upper boundaries, both left to right, the edges of its last trapezoid and the
+  /// height tolerances of that one and of all.
+  struct Piece
+  {
+    std::vector<Point2> Lower, Upper;
+    std::size_t Bottom, Top;
+    double LastTolerance, LargestTolerance;
+
+    explicit Piece(const Trapezoid& t)
+      : Lower{ t.BottomLeft, t.BottomRight }
+      , Upper{ t.TopLeft, t.TopRight }
+      , Bottom(t.Bottom)
+      , Top(t.Top)
+      , LastTolerance(t.HeightTolerance)
+      , LargestTolerance(t.HeightTolerance)
+    {
+    }
+
+    /// Whether t's left side and this piece's right side (at the same x) overlap in a stretch
+    /// longer than either's height tolerance.
+    bool Meets(const Trapezoid& t) const
+    {
+      return std::min(this->Upper.back().y, t.TopLeft.y) -
+        std::max(this->Lower.back().y, t.BottomLeft.y) >
+        std::max(this->LastTolerance, t.HeightTolerance);
+    }
+
+    /// Takes in t, which Meets this piece.
+    void Extend(const Trapezoid& t)
+    {
+      const double tolerance = std::max(this->LastTolerance, t.HeightTolerance);
+      Continue(this->Lower, t.BottomLeft, t.BottomRight, t.Bottom == this->Bottom, tolerance);
+      Continue(this->Upper, t.TopLeft, t.TopRight, t.Top == this->Top, tolerance);
+      this->Bottom = t.Bottom;
+      this->Top = t.Top;
+      this->LastTolerance = t.HeightTolerance;
+      this->LargestTolerance = std::max(this->LargestTolerance, t.HeightTolerance);
+    }
+
+    /// A boundary taken on to the next slab's side, from left to right: a vertical step first
+    /// where the sides' ends differ by more than tolerance (a vertical edge of the rings, or a
+    /// piece ending beside this one; less is the rounding of one point seen from two edges);
+    /// along the same edge the joint is no corner, and its point is replaced, not kept.
+    static void Continue(std::vector<Point2>& boundary,
+      const Point2& left,
+      const Point2& right,
+      bool sameEdge,
+      double tolerance)
+    {
+      if (std::fabs(boundary.back().y - left.y) > tolerance)
+      {
+        boundary.push_back(left);
+        sameEdge = false;
+      }
+      if (sameEdge)
+      {
+        boundary.back() = right;
+      }
+      else
+      {
+        boundary.push_back(right);
+      }
+    }
+  };
+
+  /// The piece as an anticlockwise ring (lower boundary, then the upper one backwards), points
+  /// within the tolerance of the one before counted once (corners where the two boundaries meet,
+  /// sides no higher than rounding); a piece of no area is dropped.
+  void Finish(const Piece& p)
+  {
+    std::vector<Point2> ring(p.Lower);
+    ring.insert(ring.end(), p.Upper.rbegin(), p.Upper.rend());
+    const auto near = [&](const Point2& a, const Point2& b) {
+      return std::fabs(a.x - b.x) <= this->Tolerance && std::fabs(a.y - b.y) <= p.LargestTolerance;
+    };
+    ring.erase(std::unique(ring.begin(), ring.end(), near), ring.end());
+    while (ring.size() > 1 && near(ring.front(), ring.back()))
+    {
+      ring.pop_back();
+    }
+    if (ring.size() < 3 || CompensatedPolygonArea(ring.data(), ring.size()) <= 0.0)
+    {
+      return;
+    }
+    this->Done.Vertices.insert(this->Done.Vertices.end(), ring.begin(), ring.end());
+    this->Done.RingOffsets.push_back(this->Done.Vertices.size());
+  }
+
+  double Tolerance;
+  std::vector<Piece> Open; // the pieces that the last slab's trapezoids ended, bottom to top
+  ClippedRings Done;
+};
+
+/// The region as x-monotone pieces (see the header): slab by slab, left to right.
+ClippedRings MonotonePieces(const ClippedRings& rings)
+{
+  const std::vector<SweepEdge> edges = SweepEdges(rings);
+  const std::vector<double> sides = SlabSides(rings);
+  const double tolerance = PointTolerance(rings);
+  PieceBuilder builder(tolerance);
+  std::vector<std::size_t> active; // the edges spanning the current slab
+  std::size_t entering = 0;        // the next edge, by its left end, to enter
+  for (std::size_t s = 0; s + 1 < sides.size(); ++s)
+  {
+    const double left = sides[s], right = sides[s + 1];
+    active.erase(
+      std::remove_if(
+        active.begin(), active.end(), [&](std::size_t e) { return edges[e].Right.x <= left; }),
+      active.end());
+    for (; entering < edges.size() && edges[entering].Left.x <= left; ++entering)
+    {
+      active.push_back(entering); // (every edge ends at a side: it spans whole slabs)
+    }
+    builder.AddSlab(SlabTrapezoids(edges, active, left, right, tolerance));
+  }
+  return builder.Pieces();
+}
+
+} // namespace
+
+ClippedRings DisplayPieces(const ClippedRings& rings)
+{
+  return MonotonePieces(WithoutEmptyRings(rings));
+}
+
+} // namespace tessera

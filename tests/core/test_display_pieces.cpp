@@ -1,0 +1,257 @@
+// DisplayPieces: the region of a clipped tile as simple anticlockwise pieces. Checked against the
+// clip's own area and, point by point, against the catchment's and the tile's membership.
+
+#include "areal_average.h"
+#include "clip.h"
+#include "display_pieces.h"
+#include "errors.h"
+#include "polygon_area.h"
+#include "polygon_validation.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+using namespace tessera;
+
+namespace
+{
+
+std::vector<Point2> Rectangle(double x0, double y0, double x1, double y1)
+{
+  return { { x0, y0 }, { x1, y0 }, { x1, y1 }, { x0, y1 } };
+}
+
+Catchment MakeCatchment(const std::vector<std::vector<Point2>>& rings)
+{
+  std::vector<std::size_t> offsets{ 0 };
+  std::vector<Point2> vertices;
+  for (const auto& ring : rings)
+  {
+    vertices.insert(vertices.end(), ring.begin(), ring.end());
+    offsets.push_back(vertices.size());
+  }
+  return Catchment(offsets, vertices);
+}
+
+/// Crossing-number membership of p in the ring r of rings (p is never on a boundary here).
+bool InRing(const ClippedRings& rings, std::size_t r, const Point2& p)
+{
+  bool inside = false;
+  const std::size_t begin = rings.RingOffsets[r], end = rings.RingOffsets[r + 1];
+  for (std::size_t i = begin, j = end - 1; i < end; j = i++)
+  {
+    const Point2& a = rings.Vertices[i];
+    const Point2& b = rings.Vertices[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x))
+    {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
+
+bool InConvexTile(const std::vector<Point2>& tile, const Point2& p)
+{
+  for (std::size_t i = 0; i < tile.size(); ++i)
+  {
+    const Point2& a = tile[i];
+    const Point2& b = tile[(i + 1) % tile.size()];
+    if ((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x) <= 0.0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Every piece is a simple anticlockwise ring; their areas sum to the clip's; each sample point of
+/// a grid over the tile's box lies in exactly one piece when it is in tile & catchment, in none
+/// otherwise. Returns the number of pieces.
+std::size_t ExpectPiecesOfTheRegion(const Catchment& catchment, const std::vector<Point2>& tile)
+{
+  const ClippedTile clipped = catchment.Clip(tile);
+  const ClippedRings pieces = DisplayPieces(clipped.Rings);
+  double total = 0.0;
+  for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
+  {
+    const std::size_t begin = pieces.RingOffsets[r], count = pieces.RingOffsets[r + 1] - begin;
+    const double area = CompensatedPolygonArea(&pieces.Vertices[begin], count);
+    EXPECT_GT(area, 0.0) << "piece " << r;
+    const std::vector<Point2> ring(pieces.Vertices.begin() + static_cast<std::ptrdiff_t>(begin),
+      pieces.Vertices.begin() + static_cast<std::ptrdiff_t>(begin + count));
+    EXPECT_NO_THROW(ValidateRings({ 0, count }, ring)) << "piece " << r << " is not simple";
+    total += area;
+  }
+  EXPECT_NEAR(total, clipped.Area, 1e-12 * std::max(1.0, clipped.Area));
+  const Box2 box = BoundsOf(tile.data(), tile.size());
+  const int n = 60;
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      // (irrational offsets: no sample on an edge)
+      const Point2 p{ box.XMin + (i + 0.5 * std::sqrt(2.0) - 0.2) / n * (box.XMax - box.XMin),
+        box.YMin + (j + 0.5 * std::sqrt(3.0) - 0.4) / n * (box.YMax - box.YMin) };
+      int covering = 0;
+      for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
+      {
+        covering += InRing(pieces, r, p);
+      }
+      const int expected = InConvexTile(tile, p) && catchment.Contains(p);
+      EXPECT_EQ(covering, expected) << "at (" << p.x << ", " << p.y << ")";
+    }
+  }
+  return pieces.RingOffsets.size() - 1;
+}
+
+} // namespace
+
+TEST(DisplayPieces, AHoleInTheTileIsLeftOut)
+{
+  const Catchment lake = MakeCatchment({ Rectangle(0, 0, 10, 10), Rectangle(4, 4, 6, 6) });
+  // Split by the hole: a U (left, below, right) and the part above it.
+  EXPECT_EQ(ExpectPiecesOfTheRegion(lake, Rectangle(1, 1, 9, 9)), 2U);
+  // A hole with many vertices still gives few pieces: a 64-gon lake.
+  std::vector<Point2> round;
+  for (int k = 0; k < 64; ++k)
+  {
+    round.push_back({ 5 + 1.5 * std::cos(k * M_PI / 32), 5 + 1.5 * std::sin(k * M_PI / 32) });
+  }
+  EXPECT_LE(ExpectPiecesOfTheRegion(
+              MakeCatchment({ Rectangle(0, 0, 10, 10), round }), Rectangle(1, 1, 9, 9)),
+    4U);
+}
+
+TEST(DisplayPieces, LobesOfABayAreSeparatePieces)
+{
+  // A bay from the top down to y = 3 between x = 4 and 6: a tile across it meets both shores.
+  const Catchment bay = MakeCatchment(
+    { { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 6, 10 }, { 6, 3 }, { 4, 3 }, { 4, 10 }, { 0, 10 } } });
+  EXPECT_EQ(ExpectPiecesOfTheRegion(bay, Rectangle(2, 5, 8, 12)), 2U);
+  EXPECT_GE(ExpectPiecesOfTheRegion(bay, Rectangle(2, 1, 8, 12)), 1U); // joined below the bay
+}
+
+TEST(DisplayPieces, AnXMonotonePartIsOnePiece)
+{
+  const Catchment bay = MakeCatchment(
+    { { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 6, 10 }, { 6, 3 }, { 4, 3 }, { 4, 10 }, { 0, 10 } } });
+  for (const auto& tile : { Rectangle(1, 1, 3, 3), Rectangle(3, 1, 7, 5) }) // convex, concave
+  {
+    const ClippedTile clipped = bay.Clip(tile);
+    const ClippedRings pieces = DisplayPieces(clipped.Rings);
+    ASSERT_EQ(pieces.RingOffsets.size(), 2U);
+    EXPECT_NEAR(
+      CompensatedPolygonArea(pieces.Vertices.data(), pieces.Vertices.size()), clipped.Area, 1e-12);
+  }
+}
+
+TEST(DisplayPieces, RandomTilesOverHolesAndBays)
+{
+  // A comb (bays from the top) with two holes and an island in one of them; random convex tiles
+  // of random sizes anywhere over it.
+  const Catchment comb = MakeCatchment({ { { 0, 0 },
+                                           { 20, 0 },
+                                           { 20, 10 },
+                                           { 16, 10 },
+                                           { 16, 4 },
+                                           { 14, 4 },
+                                           { 14, 10 },
+                                           { 9, 10 },
+                                           { 8.5, 5 },
+                                           { 8, 10 },
+                                           { 0, 10 } },
+    Rectangle(2, 2, 6, 7),
+    Rectangle(3, 3, 4, 4),
+    { { 10, 1 }, { 12, 1.5 }, { 11, 3 } } });
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> where(-2.0, 22.0), size(0.5, 9.0), angle(0.0, 2 * M_PI);
+  for (int t = 0; t < 150; ++t)
+  {
+    const Point2 centre{ where(random), where(random) / 2.0 };
+    const double radius = size(random);
+    std::vector<double> angles(3 + random() % 6);
+    for (double& a : angles)
+    {
+      a = angle(random);
+    }
+    std::sort(angles.begin(), angles.end());
+    angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
+    std::vector<Point2> tile;
+    for (const double a : angles)
+    {
+      tile.push_back({ centre.x + radius * std::cos(a), centre.y + radius * std::sin(a) });
+    }
+    if (CompensatedPolygonArea(tile.data(), tile.size()) < 1e-3)
+    {
+      continue;
+    }
+    SCOPED_TRACE("tile " + std::to_string(t));
+    ExpectPiecesOfTheRegion(comb, tile);
+  }
+}
+
+TEST(DisplayPieces, PiecesOfTessellatedTilesAreSimpleInLonLat)
+{
+  // Tiles as the areal average derives them (rounded vertices; on a lattice, edges through
+  // catchment vertices, nearly vertical edges and rings running along the tiles' edges), around a
+  // lake and across a bay with an island-hole: every piece that output 0 would show is a simple
+  // ring in lon/lat, and the pieces' areas add up to the catchment's.
+  const std::vector<Point2> square{ { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+  const std::vector<Point2> lake{
+    { 0.35, 0.35 }, { 0.35, 0.65 }, { 0.5, 0.7 }, { 0.65, 0.65 }, { 0.65, 0.35 }
+  };
+  const std::vector<Point2> bay{
+    { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0.6, 1 }, { 0.6, 0.3 }, { 0.4, 0.3 }, { 0.4, 1 }, { 0, 1 }
+  };
+  const std::vector<Point2> hole{ { 0.1, 0.1 }, { 0.1, 0.2 }, { 0.2, 0.2 }, { 0.2, 0.1 } };
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> where(-0.2, 1.2);
+  for (int trial = 0; trial < 32; ++trial)
+  {
+    const bool withLake = trial % 2 == 0;
+    std::vector<Point2> ring = withLake ? square : bay;
+    const std::vector<Point2>& inner = withLake ? lake : hole;
+    ring.insert(ring.end(), inner.begin(), inner.end());
+    const std::vector<std::size_t> offsets{ 0, ring.size() - inner.size(), ring.size() };
+    std::vector<Point2> gauges;
+    if (trial < 16) // lattices of 4 spacings and 2 offsets
+    {
+      const double step = std::vector<double>{ 0.1, 0.125, 0.2, 0.25 }[(trial / 2) % 4];
+      const double offset = trial < 8 ? 0.0 : 0.05;
+      for (int i = 0; offset + i * step < 1.2; ++i)
+      {
+        for (int j = 0; offset + j * step < 1.2; ++j)
+        {
+          gauges.push_back({ offset + i * step, offset + j * step });
+        }
+      }
+    }
+    else
+    {
+      for (int k = 0; k < 3 + trial; ++k)
+      {
+        gauges.push_back({ where(random), where(random) });
+      }
+    }
+    ThiessenArealAverage average(gauges, offsets, ring);
+    average.Step(std::vector<double>(gauges.size(), 1.0));
+    const ClippedTilesLonLat tiles = average.CurrentClippedTiles();
+    double total = 0.0;
+    for (std::size_t r = 0; r + 1 < tiles.Pieces.RingOffsets.size(); ++r)
+    {
+      const std::size_t begin = tiles.Pieces.RingOffsets[r], end = tiles.Pieces.RingOffsets[r + 1];
+      const std::vector<Point2> piece(
+        tiles.Pieces.Vertices.begin() + static_cast<std::ptrdiff_t>(begin),
+        tiles.Pieces.Vertices.begin() + static_cast<std::ptrdiff_t>(end));
+      EXPECT_NO_THROW(ValidateRings({ 0, piece.size() }, piece))
+        << "trial " << trial << ": piece " << r << " is not simple";
+      EXPECT_GT(CompensatedPolygonArea(piece.data(), piece.size()), 0.0) << "trial " << trial;
+      total += tiles.PieceAreasM2[r];
+    }
+    EXPECT_NEAR(total, average.CatchmentAreaM2(), 1e-9 * average.CatchmentAreaM2())
+      << "trial " << trial;
+  }
+}
