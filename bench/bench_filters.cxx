@@ -2,7 +2,8 @@
 // CGAL's Delaunay_triangulation_2 (exact predicates, inexact constructions, range insert),
 // vtkDelaunay2D and vtkVoronoi2D (where they finish within a minute).
 //
-//   bench_filters [max_points] [repeats]   (defaults 1000000 and 5) prints a Markdown table
+//   bench_filters [max_points] [repeats]   (defaults 1000000 and 5) prints two Markdown tables:
+//   seconds and ratios, then microseconds per point with each column's flatness over the sizes
 //
 // Tessera's filters and CGAL run `repeats` times each (ten times as often at 10^4 points), in
 // turn, on the same input, and the table shows the median run: this VM's single runs vary by
@@ -119,6 +120,30 @@ std::string Cell(double seconds)
   return text;
 }
 
+/// The medians again in microseconds per point, and the flatness of each column over the sizes
+/// (largest over smallest per-point time; the target is at most 1.3 from 10^4 to 10^7).
+void PrintPerPoint(const std::vector<vtkIdType>& sizes, const std::vector<std::vector<double>>& us)
+{
+  std::printf("\n| microseconds per point | Tessera Delaunay | Tessera tiles+areas | "
+              "Tessera tiles+areas+graph | CGAL DT2 |\n|---|---|---|---|---|\n");
+  for (std::size_t k = 0; k < sizes.size(); ++k)
+  {
+    std::printf("| %lld | %s | %s | %s | %s |\n",
+      static_cast<long long>(sizes[k]),
+      Cell(us[0][k]).c_str(),
+      Cell(us[1][k]).c_str(),
+      Cell(us[2][k]).c_str(),
+      Cell(us[3][k]).c_str());
+  }
+  std::printf("| largest / smallest |");
+  for (const std::vector<double>& column : us)
+  {
+    const auto [low, high] = std::minmax_element(column.begin(), column.end());
+    std::printf(" %s |", Cell(*low > 0 ? *high / *low : -1.0).c_str());
+  }
+  std::printf("\n");
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -138,6 +163,9 @@ int main(int argc, char** argv)
               "CGAL DT2 | vtkDelaunay2D | vtkVoronoi2D | Delaunay / CGAL | tiles / CGAL | "
               "tiles+graph / CGAL | vtkVoronoi2D / tiles+graph |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+  // Microseconds per point of each column of the second table, per size, for its flatness row.
+  std::vector<vtkIdType> sizes;
+  std::vector<std::vector<double>> perPoint(4);
   for (vtkIdType n = 10000; n <= maxPoints; n *= 10)
   {
     auto input = UniformPoints(n, 7);
@@ -188,6 +216,13 @@ int main(int argc, char** argv)
       Cell(ratio(tessellation, cgal)).c_str(),
       Cell(ratio(voronoi2d, tessellation)).c_str());
     std::fflush(stdout);
+    sizes.push_back(n);
+    const double columns[4] = { delaunay, tilesAlone, tessellation, cgal };
+    for (int c = 0; c < 4; ++c)
+    {
+      perPoint[c].push_back(columns[c] > 0 ? 1e6 * columns[c] / double(n) : -1.0);
+    }
   }
+  PrintPerPoint(sizes, perPoint);
   return 0;
 }
