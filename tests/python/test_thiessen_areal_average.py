@@ -451,6 +451,46 @@ def test_the_monthly_csv_as_a_text_reader_gives_it():
         assert_close(means[k], mean, 1e-12 * abs(mean), f"month {t}: the whole CSV against 3 months")
 
 
+def test_blank_values_read_as_text_are_missing():
+    """ParaView's CSV reader makes an empty field of a numeric column 0; with Detect Numeric
+    Columns off (what the README advises for blank missing values) the columns stay text and the
+    filter reads a blank value as missing. Each month's mean and StationsUsed must then equal those
+    of the same table without the blank rows, read as numbers."""
+    import tempfile
+
+    from vtkmodules.vtkIOInfovis import vtkDelimitedTextReader
+
+    coords, ids, ring, months = read_colorado()
+    blanked = {}
+    with tempfile.NamedTemporaryFile("w", suffix=".csv", delete=False) as out:
+        out.write("station_id,year,month,precip\n")
+        for (year, month), values in sorted(months.items()):
+            kept = {}
+            for k, (sid, value) in enumerate(sorted(values.items())):
+                blank = k % 3 == 0
+                out.write(f"{sid},{year},{month},{'' if blank else repr(value)}\n")
+                if not blank:
+                    kept[sid] = value
+            blanked[(year, month)] = kept
+        path = out.name
+    reader = vtkDelimitedTextReader()
+    reader.SetFileName(path)
+    reader.SetHaveHeaders(True)
+    reader.SetDetectNumericColumns(False)
+    reader.Update()
+    os.unlink(path)
+    f, messages = summary_of(coords, ids, ring, reader.GetOutput(), TimeColumn="year",
+                             MonthColumn="month", ValueColumn="precip")
+    assert_that(not messages, f"errors: {messages}")
+    numeric, _ = summary_of(coords, ids, ring, observations_table(blanked))
+    for name in ("Time", "StationsUsed", "StationsWeighted"):
+        got, want = summary_column(f, name), summary_column(numeric, name)
+        assert_that(all(abs(a - b) < 1e-9 for a, b in zip(got, want)) and len(got) == len(want),
+                    f"{name}: {got} against the table without blanks {want}")
+    for got, want in zip(summary_column(f, "ArealMean"), summary_column(numeric, "ArealMean")):
+        assert_close(got, want, 1e-12 * abs(want), "areal mean with blanks as missing")
+
+
 def test_bad_dates_and_months_are_named():
     coords, ids, ring, months = read_colorado()
     one = {(1963, 8): months[(1963, 8)]}
@@ -840,6 +880,7 @@ if __name__ == "__main__":
          test_window_clip_of_tiles_stored_in_float,
          test_dates_and_year_month_columns_give_the_same_steps,
          test_the_monthly_csv_as_a_text_reader_gives_it,
+         test_blank_values_read_as_text_are_missing,
          test_bad_dates_and_months_are_named,
          test_text_values_with_missing_markers,
          test_a_failed_update_leaves_no_earlier_result,
