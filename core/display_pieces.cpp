@@ -155,25 +155,51 @@ Trapezoid MakeTrapezoid(const std::vector<SweepEdge>& edges,
 /// Edges are taken in order of their height at the slab's middle; where the sum of the windings
 /// below rises above 0 a trapezoid starts, where it falls back it ends. At equal heights rising
 /// edges come first, so that coincident edges of opposite sense (a bridge) never split the region.
+///
+/// active is left in that order. It comes in the slab before's order with the entering edges at
+/// its end (entered: how many), and edges do not cross, so that order still holds but for
+/// rounding: the entering edges are sorted and merged in, then an insertion pass mends what
+/// rounding swapped, in time linear in the active edges (a full sort of every slab made a
+/// catchment with 600 small lakes in a column take seconds a step). Equal heights and windings
+/// go by edge index, so the order is one whatever the order before.
 std::vector<Trapezoid> SlabTrapezoids(const std::vector<SweepEdge>& edges,
-  const std::vector<std::size_t>& active,
+  std::vector<std::size_t>& active,
+  std::size_t entered,
   double left,
   double right,
   double tolerance)
 {
   const double middle = left + 0.5 * (right - left);
   std::vector<std::pair<double, std::size_t>> order;
+  order.reserve(active.size());
   for (const std::size_t e : active)
   {
     order.emplace_back(HeightAt(edges[e], middle), e);
   }
-  std::sort(order.begin(),
-    order.end(),
-    [&](const auto& a, const auto& b)
+  const auto lower =
+    [&](const std::pair<double, std::size_t>& a, const std::pair<double, std::size_t>& b)
+  {
+    const int wa = edges[a.second].Winding, wb = edges[b.second].Winding;
+    return a.first < b.first ||
+      (a.first == b.first && (wa > wb || (wa == wb && a.second < b.second)));
+  };
+  const auto tail = order.end() - std::ptrdiff_t(entered);
+  std::sort(tail, order.end(), lower);
+  std::inplace_merge(order.begin(), tail, order.end(), lower);
+  for (std::size_t i = 1; i < order.size(); ++i)
+  {
+    const std::pair<double, std::size_t> item = order[i];
+    std::size_t j = i;
+    for (; j > 0 && lower(item, order[j - 1]); --j)
     {
-      return a.first < b.first ||
-        (a.first == b.first && edges[a.second].Winding > edges[b.second].Winding);
-    });
+      order[j] = order[j - 1];
+    }
+    order[j] = item;
+  }
+  for (std::size_t k = 0; k < order.size(); ++k)
+  {
+    active[k] = order[k].second;
+  }
   std::vector<Trapezoid> slab;
   int winding = 0;
   std::size_t bottom = 0;
@@ -211,27 +237,47 @@ public:
   /// before whose right side shares a stretch with its left side (a vertical line then still meets
   /// the piece in one interval, so that it stays a simple polygon), unless a trapezoid below took
   /// that piece; otherwise it starts a piece. The pieces that no trapezoid continues are finished.
+  ///
+  /// The open pieces are in the order of the slab before's trapezoids, bottom to top, so one pass
+  /// up both lists finds the matches: a piece wholly below a trapezoid is below every later one,
+  /// and once a piece lies wholly above it so do the rest. (A search of all open pieces for each
+  /// trapezoid, with erasing from the middle, made a catchment with 600 small lakes in a column
+  /// take 20 s a step: cubic in the lakes.)
   void AddSlab(const std::vector<Trapezoid>& slab)
   {
     std::vector<Piece> open;
+    open.reserve(slab.size());
+    std::vector<char> taken(this->Open.size(), 0);
+    std::size_t first = 0; // Open[0, first): taken, or below every trapezoid still to come
     for (const Trapezoid& t : slab)
     {
-      auto piece = std::find_if(
-        this->Open.begin(), this->Open.end(), [&](const Piece& p) { return p.Meets(t); });
-      if (piece != this->Open.end())
+      while (first < this->Open.size() && (taken[first] || this->Open[first].Below(t)))
       {
-        piece->Extend(t);
-        open.push_back(std::move(*piece));
-        this->Open.erase(piece);
+        ++first;
+      }
+      std::size_t k = first;
+      while (
+        k < this->Open.size() && !this->Open[k].Above(t) && (taken[k] || !this->Open[k].Meets(t)))
+      {
+        ++k;
+      }
+      if (k < this->Open.size() && !taken[k] && this->Open[k].Meets(t))
+      {
+        this->Open[k].Extend(t);
+        open.push_back(std::move(this->Open[k]));
+        taken[k] = 1;
       }
       else
       {
         open.push_back(Piece(t));
       }
     }
-    for (const Piece& p : this->Open)
+    for (std::size_t k = 0; k < this->Open.size(); ++k)
     {
-      this->Finish(p);
+      if (!taken[k])
+      {
+        this->Finish(this->Open[k]);
+      }
     }
     this->Open = std::move(open);
   }
@@ -273,6 +319,12 @@ private:
         std::max(this->Lower.back().y, t.BottomLeft.y) >
         std::max(this->LastTolerance, t.HeightTolerance);
     }
+
+    /// Whether this piece's right side lies wholly below t's left side (no stretch in common).
+    bool Below(const Trapezoid& t) const { return this->Upper.back().y <= t.BottomLeft.y; }
+
+    /// Whether this piece's right side lies wholly above t's left side.
+    bool Above(const Trapezoid& t) const { return this->Lower.back().y >= t.TopLeft.y; }
 
     /// Takes in t, which Meets this piece.
     void Extend(const Trapezoid& t)
@@ -347,7 +399,7 @@ ClippedRings MonotonePieces(const ClippedRings& rings)
   const std::vector<double> sides = SlabSides(rings);
   const double tolerance = PointTolerance(rings);
   PieceBuilder builder(tolerance);
-  std::vector<std::size_t> active; // the edges spanning the current slab
+  std::vector<std::size_t> active; // the edges spanning the current slab, bottom to top
   std::size_t entering = 0;        // the next edge, by its left end, to enter
   for (std::size_t s = 0; s + 1 < sides.size(); ++s)
   {
@@ -356,11 +408,12 @@ ClippedRings MonotonePieces(const ClippedRings& rings)
       std::remove_if(
         active.begin(), active.end(), [&](std::size_t e) { return edges[e].Right.x <= left; }),
       active.end());
+    const std::size_t before = active.size();
     for (; entering < edges.size() && edges[entering].Left.x <= left; ++entering)
     {
       active.push_back(entering); // (every edge ends at a side: it spans whole slabs)
     }
-    builder.AddSlab(SlabTrapezoids(edges, active, left, right, tolerance));
+    builder.AddSlab(SlabTrapezoids(edges, active, active.size() - before, left, right, tolerance));
   }
   return builder.Pieces();
 }

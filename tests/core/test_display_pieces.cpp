@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -123,6 +124,25 @@ TEST(DisplayPieces, AHoleInTheTileIsLeftOut)
   EXPECT_LE(ExpectPiecesOfTheRegion(
               MakeCatchment({ Rectangle(0, 0, 10, 10), round }), Rectangle(1, 1, 9, 9)),
     4U);
+}
+
+// Many lakes over one x range (a column of them, the case that made a quadratic match of pieces
+// and a sort of every slab cost seconds): each lake still splits the tile once, so the region is
+// lakes + 1 pieces, covering it exactly (checked on the sample grid), whatever the lakes' order.
+TEST(DisplayPieces, AColumnOfLakesGivesOnePieceMoreThanLakes)
+{
+  std::mt19937_64 random(4);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const int lakes = 120;
+  std::vector<std::vector<Point2>> rings{ Rectangle(0, 0, 10, 40) };
+  for (int j = 0; j < lakes; ++j)
+  {
+    const double x = 3.0 + u(random), y = (j + 0.25) * 40.0 / lakes;
+    rings.push_back(Rectangle(x, y, x + 3.0 + u(random), y + 0.5 * 40.0 / lakes));
+  }
+  std::shuffle(rings.begin() + 1, rings.end(), random);
+  EXPECT_EQ(
+    ExpectPiecesOfTheRegion(MakeCatchment(rings), Rectangle(1, -1, 9, 41)), std::size_t(lakes + 1));
 }
 
 TEST(DisplayPieces, LobesOfABayAreSeparatePieces)
