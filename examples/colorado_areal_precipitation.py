@@ -54,6 +54,16 @@ def year_month(t):
     return index // 12, index % 12 + 1
 
 
+def station_key(station_id):
+    """A station id as vtkThiessenArealAverage matches it: trimmed of spaces, tabs and quotes and,
+    for an integer id (digits only), without its leading zeros, so that "050109" and 50109 (the
+    same id after a spreadsheet dropped its zeros) are one station; any other id as its text."""
+    text = station_id.strip(" \t\"")
+    if text and all("0" <= c <= "9" for c in text):
+        text = text.lstrip("0") or "0"
+    return text
+
+
 def read_gauges(path):
     from vtkmodules.vtkCommonCore import vtkPoints, vtkStringArray
     from vtkmodules.vtkCommonDataModel import vtkPolyData
@@ -76,8 +86,9 @@ def read_gauges(path):
 
 def read_observations(path, gauge_ids):
     """The long-format monthly table as a vtkTable (station_id, time, precip), and the set of
-    reporting station ids of every (year, month). gauge_ids: the stations file's ids (a month
-    none of whose rows names one of them is a month where no gauge reported)."""
+    reporting stations of every (year, month), as station_key()s. gauge_ids: the stations file's
+    ids (a month none of whose rows names one of them is a month where no gauge reported). Ids
+    are compared as the filter compares them (station_key)."""
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
     from vtkmodules.vtkCommonDataModel import vtkTable
 
@@ -87,6 +98,7 @@ def read_observations(path, gauge_ids):
     times.SetName("time")
     values.SetName("precip")
     unrecorded = 0
+    gauge_keys = {station_key(g) for g in gauge_ids}
     months = set()  # (year, month) of every row
     present = set()  # (year, month) of every row of a gauge's station
     for line, row in csv_input.rows(path, ("station_id", "year", "month", "precip"), "observations"):
@@ -94,7 +106,8 @@ def read_observations(path, gauge_ids):
         year_and_month = (csv_input.integer(row, "year", path, line, 1, 9999),
                           csv_input.integer(row, "month", path, line, 1, 12))
         months.add(year_and_month)
-        if station in gauge_ids:
+        key = station_key(station)
+        if key in gauge_keys:
             present.add(year_and_month)
         t = decimal_time(*year_and_month)
         # A missing value stays in the table as NaN: the gauge does not report that month (the
@@ -104,7 +117,7 @@ def read_observations(path, gauge_ids):
             unrecorded += 1
         else:
             value = csv_input.number(row, "precip", path, line)
-            reporting.setdefault(year_and_month, set()).add(station)
+            reporting.setdefault(year_and_month, set()).add(key)
         stations.InsertNextValue(station)
         times.InsertNextValue(t)
         values.InsertNextValue(value)
@@ -119,7 +132,7 @@ def read_observations(path, gauge_ids):
         first, last = min(months), max(months)
         gaps = [(y, m) for y in range(first[0], last[0] + 1) for m in range(1, 13)
                 if first <= (y, m) <= last and (y, m) not in present]
-        filler = min(gauge_ids)
+        filler = min(gauge_ids)  # a gauge's id: the month is a step of the filter
         for y, m in gaps:
             stations.InsertNextValue(filler)
             times.InsertNextValue(decimal_time(y, m))
@@ -278,7 +291,8 @@ def map_extent(rings, points, margin=0.05):
 
 def plot_map(per_gauge, gauges, outline, reporting, title, path):
     """outline: the catchment's rings (catchment_rings); the map shows them and the weighted
-    gauges (map_extent)."""
+    gauges (map_extent). A month where no gauge reported has no tiles: the map shows the outline
+    and the gauges, without tiles or colour bar."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -289,7 +303,7 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path):
     # A tile of one piece is outlined in white; the pieces of a tile in several are drawn without
     # outlines, so that the seams between them do not look like tile boundaries.
     values = [e["value"] for e in per_gauge.values()]
-    for whole in (False, True):
+    for whole in ((False, True) if values else ()):
         pieces = [(ring, e["value"]) for e in per_gauge.values() if (len(e["rings"]) == 1) == whole
                   for ring in e["rings"]]
         collection = PolyCollection([ring for ring, _ in pieces], array=[v for _, v in pieces],
@@ -297,7 +311,8 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path):
                                     linewidths=0.4)
         collection.set_clim(min(values), max(values))
         ax.add_collection(collection)
-    fig.colorbar(collection, ax=ax, label="monthly precipitation (data units)")
+    if values:
+        fig.colorbar(collection, ax=ax, label="monthly precipitation (data units)")
     for ring in outline:
         xs, ys = zip(*ring)
         ax.plot(xs + xs[:1], ys + ys[:1], color="black", linewidth=1.2)
@@ -414,10 +429,16 @@ def main(argv=None):
     if not args.no_plots:
         outline = catchment_rings(catchment.GetOutput())
         ids = gauges.GetPointData().GetAbstractArray("station_id")
-        reported = reporting_ids.get((year, month), set())
-        reporting = {i for i in range(gauges.GetNumberOfPoints()) if ids.GetValue(i) in reported}
-        title = (f"{year}-{month:02d}: Thiessen areal mean {row[4]:.3f} from {row[3]} of {row[2]} "
-                 f"reporting gauges")
+        # A station's observations go to the first gauge with its id (station_key), as in the filter.
+        gauge_of = {}
+        for i in range(gauges.GetNumberOfPoints()):
+            gauge_of.setdefault(station_key(ids.GetValue(i)), i)
+        reporting = {gauge_of[key] for key in reporting_ids.get((year, month), set()) if key in gauge_of}
+        if row[2] == 0:
+            title = f"{year}-{month:02d}: no gauge reported (Thiessen areal mean nan)"
+        else:
+            title = (f"{year}-{month:02d}: Thiessen areal mean {row[4]:.3f} from {row[3]} of {row[2]} "
+                     f"reporting gauges")
         plot_map(per_gauge, gauges, outline, reporting, title, os.path.join(args.out, f"map_{tag}.png"))
         plot_series(rows, os.path.join(args.out, "areal_mean.png"))
 

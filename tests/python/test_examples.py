@@ -291,6 +291,71 @@ def test_the_map_of_another_place_with_a_lake():
                     f"extent {lon_min, lon_max, lat_min, lat_max} of {min(xs), max(xs), min(ys), max(ys)}")
 
 
+def test_a_month_without_reports_still_gets_its_map():
+    # The lake basin with 2001-02 taken out of the observations: the month is in the record (a
+    # month where no gauge reported) and, chosen for the map, gives a map of the outline and the
+    # gauges, a weights file of its header only and an areal mean nan.
+    with tempfile.TemporaryDirectory() as out:
+        catchment, stations, observations = write_lake_basin(out)
+        with open(observations, "w") as f:
+            f.write("station_id,year,month,precip\nN1,2001,1,10\nN2,2001,1,20\nN1,2001,3,5\nN6,2001,3,7\n")
+        status, stdout, stderr = run_example("colorado_areal_precipitation.py", "--out", out, "--stations", stations,
+                                             "--observations", observations, "--catchment", catchment,
+                                             "--month", "2001-02")
+        assert_that(status == 0, f"a month without reports failed ({status}): {stderr}")
+        assert_that("Traceback" not in stderr, f"a traceback: {stderr}")
+        assert_that(is_png(os.path.join(out, "map_2001_02.png")), "map_2001_02.png is not a PNG file")
+        assert_that(os.path.isfile(os.path.join(out, "tiles_2001_02.vtp")), "no tiles_2001_02.vtp")
+        with open(os.path.join(out, "weights_2001_02.csv")) as f:
+            lines = f.read().splitlines()
+        assert_that(lines == ["station_id,name,lon,lat,weight,area_km2,precip"], f"weights_2001_02.csv: {lines}")
+        got = [(r["month"], r["stations_used"], r["areal_mean"]) for r in read_csv(os.path.join(out, "areal_mean.csv"))]
+        assert_that(got == [("1", "2", got[0][2]), ("2", "0", ""), ("3", "2", got[2][2])] and got[0][2] and got[2][2],
+                    f"areal_mean.csv: {got}")
+        assert_that("2001-02: areal mean nan, 0 gauges reported, 0 weighted" in stdout, f"the empty month: {stdout}")
+
+
+def test_ids_without_their_leading_zeros_match_as_in_the_filter():
+    # Integer ids whose leading zeros a spreadsheet dropped from the observations ("0101" as 101,
+    # "000" as 0) are the same stations, as in vtkThiessenArealAverage: every output is that of
+    # the file with the zeros. 2001-02 has rows of integer ids only, 2001-03 none at all.
+    gauges = {"0101": (175.6, -39.1), "0102": (176.4, -39.1), "000": (175.95, -38.82), "0104": (175.7, -38.5),
+              "N5": (176.3, -38.55), "007": (177.5, -37.0)}
+    rows = [("0101", 1, "10"), ("0102", 1, "20"), ("000", 1, "30"), ("0104", 1, "40"), ("N5", 1, "50"),
+            ("0101", 2, "5"), ("000", 2, "3"), ("007", 2, "7"), ("N5", 4, "8"), ("0102", 4, "NA")]
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, _ = write_lake_basin(directory)
+        with open(stations, "w") as f:
+            f.write("station_id,lon,lat\n" + "".join(f"{s},{lon},{lat}\n" for s, (lon, lat) in gauges.items()))
+        outputs = {}
+        for name, strip in (("zeros", False), ("nozeros", True)):
+            observations = os.path.join(directory, f"{name}.csv")
+            with open(observations, "w") as f:
+                f.write("station_id,year,month,precip\n" + "".join(
+                    f"{int(s) if strip and s.isdigit() else s},2001,{m},{v}\n" for s, m, v in rows))
+            out = os.path.join(directory, name)
+            status, stdout, stderr = run_example("colorado_areal_precipitation.py", "--out", out,
+                                                 "--stations", stations, "--observations", observations,
+                                                 "--catchment", catchment, "--month", "2001-02")
+            assert_that(status == 0, f"{name}: failed ({status}): {stderr}")
+            files = {}
+            for file in ("areal_mean.csv", "weights_all_months.csv", "weights_2001_02.csv", "map_2001_02.png"):
+                with open(os.path.join(out, file), "rb") as f:
+                    files[file] = f.read()
+            gaps = [line.replace(observations, "OBS") for line in stderr.splitlines() if "have no row of" in line]
+            outputs[name] = (files, stdout.replace(out, "OUT"), gaps, stderr)
+        zeros, nozeros = outputs["zeros"], outputs["nozeros"]
+        assert_that(len(read_csv(os.path.join(directory, "zeros", "areal_mean.csv"))) == 4, "4 months expected")
+        for file in zeros[0]:
+            # The map too: the gauges drawn as reporting are the same.
+            assert_that(zeros[0][file] == nozeros[0][file], f"{file} differs without the leading zeros")
+        assert_that(zeros[1] == nozeros[1], f"stdout differs: {zeros[1]!r} against {nozeros[1]!r}")
+        assert_that(zeros[2] == nozeros[2] == ["OBS: 1 month(s) between 2001-01 and 2001-04 have no row of a "
+                                               "gauge's station; they are months where no gauge reported"],
+                    f"the months without a gauge's row: {zeros[2]} against {nozeros[2]}")
+        assert_that("repeat a station and time" not in nozeros[3], f"rows flagged as repeated: {nozeros[3]}")
+
+
 def read_colorado_outline():
     import json
 
@@ -339,5 +404,7 @@ def test_without_tessera_on_the_path_the_scripts_say_how_to_run():
 if __name__ == "__main__":
     run([test_the_colorado_main_job, test_missing_values_keep_their_months, test_bad_files_are_named,
          test_the_map_of_another_place_with_a_lake,
+         test_a_month_without_reports_still_gets_its_map,
+         test_ids_without_their_leading_zeros_match_as_in_the_filter,
          test_the_other_examples_run_on_their_data,
          test_without_tessera_on_the_path_the_scripts_say_how_to_run])
