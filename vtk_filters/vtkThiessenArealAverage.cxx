@@ -247,6 +247,28 @@ private:
   std::optional<NumberColumn> Months;
 };
 
+/// Throws InputError naming the first gauge (index and station id) with a NaN or infinite
+/// longitude or latitude: ReadPoints2D would name it only as a point.
+void ThrowAtNonFiniteGauge(vtkPointSet* gauges, vtkAbstractArray* stationIds)
+{
+  for (vtkIdType g = 0; g < gauges->GetNumberOfPoints(); ++g)
+  {
+    double p[3];
+    gauges->GetPoint(g, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]))
+    {
+      std::ostringstream message;
+      message << "gauge " << g;
+      if (stationIds)
+      {
+        message << " (station " << StationName(stationIds->GetVariantValue(g)) << ")";
+      }
+      message << " has a NaN or infinite coordinate (lon " << p[0] << ", lat " << p[1] << ")";
+      throw tessera::InputError(message.str());
+    }
+  }
+}
+
 /// The first gauge of each station key; ids given to more than one gauge are added to shared.
 std::unordered_map<std::string, std::int32_t> GaugesByStation(vtkAbstractArray* stationIds,
   std::vector<std::string>& shared)
@@ -447,7 +469,7 @@ std::vector<std::vector<double>> StepValues(vtkTable* table,
     if (std::isinf(value))
     {
       ThrowRowError(
-        row, "station " + StationKey(stations->GetVariantValue(row)) + " has an infinite value");
+        row, "station " + StationName(stations->GetVariantValue(row)) + " has an infinite value");
     }
     const auto step =
       std::lower_bound(rows.Times.begin(), rows.Times.end(), rows.RowTimes[r]) - rows.Times.begin();
@@ -460,7 +482,7 @@ std::vector<std::vector<double>> StepValues(vtkTable* table,
     {
       repeatedRows.push_back(static_cast<std::int32_t>(r));
       repeatedNames.push_back("row " + std::to_string(r) + " (station " +
-        StationKey(stations->GetVariantValue(row)) + ")");
+        StationName(stations->GetVariantValue(row)) + ")");
     }
   }
   return stepValues;
@@ -634,6 +656,7 @@ struct vtkThiessenArealAverage::Internals
   /// ClassifyRows of the table, read by RequestInformation (which needs the time steps) and kept
   /// for Build while the table, the gauges' ids and the columns are unchanged.
   const ObservationRows& CachedRows(vtkTable* table,
+    vtkPointSet* gauges,
     vtkAbstractArray* stationIds,
     const std::string& stationColumn,
     const std::string& timeColumn,
@@ -643,7 +666,8 @@ struct vtkThiessenArealAverage::Internals
     source.Table = table;
     source.StationIds = stationIds;
     source.Columns = { stationColumn, timeColumn, monthColumn };
-    source.MTimes = { table->GetMTime(), stationIds->GetMTime() };
+    // (the gauges' time too: an id changed in place with only the gauges marked modified)
+    source.MTimes = { table->GetMTime(), stationIds->GetMTime(), gauges->GetMTime() };
     for (const std::string& column : source.Columns)
     {
       source.MTimes.push_back(ColumnMTime(table, column));
@@ -723,6 +747,7 @@ int vtkThiessenArealAverage::RequestInformation(vtkInformation*,
   {
     const std::vector<double>& times = this->Internal
                                          ->CachedRows(table,
+                                           gauges,
                                            this->GaugeStationIds(gauges, true),
                                            this->StationColumn,
                                            this->TimeColumn,
@@ -812,6 +837,12 @@ vtkAbstractArray* vtkThiessenArealAverage::GaugeStationIds(vtkPointSet* gauges, 
     throw tessera::InputError("the gauges have no point-data array '" + this->StationIdArrayName +
       "' of station ids to match the observations with");
   }
+  if (ids && ids->GetNumberOfTuples() != gauges->GetNumberOfPoints())
+  {
+    throw tessera::InputError("the gauges' station id array '" + this->StationIdArrayName +
+      "' has " + std::to_string(ids->GetNumberOfTuples()) + " values for " +
+      std::to_string(gauges->GetNumberOfPoints()) + " gauges");
+  }
   return ids;
 }
 
@@ -827,6 +858,8 @@ void vtkThiessenArealAverage::DiscardResults(vtkInformationVector* outputVector)
   for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port)
   {
     vtkInformation* info = outputVector->GetInformationObject(port);
+    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
     if (vtkDataObject* output = info->Get(vtkDataObject::DATA_OBJECT()))
     {
       output->Initialize();
@@ -843,6 +876,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
 {
   Internals& in = *this->Internal;
   in.Average.reset();
+  ThrowAtNonFiniteGauge(gauges, stationIds);
   const std::vector<tessera::Point2> lonlat = tessera_vtk::ReadPoints2D(gauges->GetPoints());
   const tessera_vtk::Rings rings = tessera_vtk::ReadPolygonRings(catchment);
   const std::string skippedRings = tessera_vtk::SkippedCellsWarning(rings, "catchment (input 1)");
@@ -883,7 +917,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
       throw tessera::InputError("the observations table has no rows (no time step to average)");
     }
     rows = &in.CachedRows(
-      observations, stationIds, this->StationColumn, this->TimeColumn, this->MonthColumn);
+      observations, gauges, stationIds, this->StationColumn, this->TimeColumn, this->MonthColumn);
     if (rows->Times.empty())
     {
       throw tessera::InputError(NoUsableRowMessage(*rows));

@@ -33,13 +33,14 @@
  *   month): a row with an empty or blank station id (or a NaN one), an empty time or month field
  *   (blank text, or NaN), or a station id that no gauge has is not used and makes no time step
  *   (a blank last line ",," read into numeric columns becomes station 0 at time 0: not used unless
- *   a gauge has id 0). The time steps are the distinct times of the used rows. A used row's time
- *   that is not a finite number, a date or a month 1 .. 12, and a value that is not a number or a
- *   missing-value marker, are errors naming the row; a table none of whose rows can be used is an
- *   error that counts them.
- * Station ids match as text (leading zeros of integer ids are ignored, so "050109" matches 50109;
- * a floating-point id column, as a CSV reader makes, is read in full, so 6730200 and 6730500 stay
- * two stations).
+ *   a gauge has id 0; but an empty time field in a numeric time column is read as time 0, which
+ *   is a time like any other, so such a row of a known station makes a step at 0: leave no time
+ *   empty, or give dates as text). The time steps are the distinct times of the used rows. A used
+ * row's time that is not a finite number, a date or a month 1 .. 12, and a value that is not a
+ * number or a missing-value marker, are errors naming the row; a table none of whose rows can be
+ * used is an error that counts them. Station ids match as text (leading zeros of integer ids are
+ * ignored, so "050109" matches 50109; a floating-point id column, as a CSV reader makes, is read in
+ * full, so 6730200 and 6730500 stay two stations).
  *
  * The projection is vtkGeographicProjection's automatic equal-area conic fitted to the gauges and
  * catchment, unless ProjectionRecord holds a `TesseraProjection` record (e.g. "projection=UTM

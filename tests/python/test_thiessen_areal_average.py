@@ -590,6 +590,63 @@ def test_a_failed_update_leaves_no_earlier_result():
                     f"{f.GetNumberOfTimeSteps()} steps")
         messages.clear()
 
+def test_review_cases_of_gauges_and_errors():
+    """Four review findings. (1) A station id array longer than the gauges is an error giving the
+    counts (it was read past the gauges' values). (2) A station id changed in place, with only the
+    gauges marked modified, is matched afresh: its rows make their time step again. (3) After an
+    error found while averaging (a NaN gauge), no time step stays advertised. (4) Errors name a
+    gauge by its station id as written, leading zeros and all."""
+    from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
+
+    square = polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]])
+    coords = [(0.25, 0.5), (0.75, 0.5)]
+    rows = [("A", "2000-01", "2"), ("B", "2000-01", "4"), ("C", "2000-02", "1")]
+
+    def filter_of(gauges):
+        f = vtkThiessenArealAverage()
+        messages = messages_of(f)
+        f.SetGaugesData(gauges)
+        f.SetCatchmentData(square)
+        f.SetTimeColumn("date")
+        f.SetObservationsData(text_table(rows))
+        return f, messages
+
+    longer = gauges_polydata(coords, ["A", "B"])
+    longer.GetPointData().GetAbstractArray("station_id").InsertNextValue("C")
+    f, messages = filter_of(longer)
+    f.Update(1)
+    assert_that(len(messages) == 1 and "has 3 values for 2 gauges" in messages[0],
+                f"(1) a longer id array: {messages}")
+
+    gauges = gauges_polydata(coords, ["A", "B"])
+    f, messages = filter_of(gauges)
+    f.Update(1)
+    before = summary_column(f, "Time")
+    gauges.GetPointData().GetAbstractArray("station_id").SetValue(1, "C")
+    gauges.Modified()
+    f.Update(1)
+    after = summary_column(f, "Time")
+    assert_that(not messages and len(before) == 1 and len(after) == 2,
+                f"(2) steps {before} then {after} after B became C: {messages}")
+
+    def advertised(f):  # (output 0, the tiles, carries the steps)
+        return [f.GetOutputInformation(p).Has(sddp.TIME_STEPS()) for p in range(3)]
+
+    assert_that(advertised(f)[0], "(3) steps advertised after a good run")
+    gauges.GetPoints().SetPoint(1, float("nan"), 0.5, 0.0)
+    gauges.Modified()
+    f.Update(1)
+    assert_that(len(messages) == 1 and "gauge 1 (station C)" in messages[0],
+                f"(4) a NaN gauge named by its id: {messages}")
+    assert_that(not any(advertised(f)), f"(3) after the error: {advertised(f)}")
+
+    f, messages = filter_of(gauges_polydata(coords, ["050109", "050110"]))
+    f.SetObservationsData(text_table([("050109", "2000-01", "2"), ("050110", "2000-01", "inf")]))
+    f.Update(1)
+    assert_that(len(messages) == 1 and "station 050110" in messages[0],
+                f"(4) a row named by the id as written: {messages}")
+
+
 def written_csv(text):
     """A temporary CSV file holding text; returns its path (removed at exit)."""
     import atexit
@@ -884,6 +941,7 @@ if __name__ == "__main__":
          test_bad_dates_and_months_are_named,
          test_text_values_with_missing_markers,
          test_a_failed_update_leaves_no_earlier_result,
+         test_review_cases_of_gauges_and_errors,
          test_rows_that_cannot_be_used_make_no_step_and_are_listed,
          test_weights_table_lists_every_step,
          test_tiles_of_a_catchment_with_a_hole_or_a_bay,
