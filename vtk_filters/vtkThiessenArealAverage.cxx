@@ -488,6 +488,20 @@ std::vector<std::vector<double>> StepValues(vtkTable* table,
   return stepValues;
 }
 
+/// An empty array of the gauges' station id type and components, named StationId; null when the
+/// gauges have no ids.
+vtkSmartPointer<vtkAbstractArray> NewStationIdArray(vtkAbstractArray* stationIds)
+{
+  if (!stationIds)
+  {
+    return nullptr;
+  }
+  auto stations = vtk::TakeSmartPointer(stationIds->NewInstance());
+  stations->SetNumberOfComponents(stationIds->GetNumberOfComponents());
+  stations->SetName("StationId");
+  return stations;
+}
+
 /// Output 0's cell data, a cell per piece of a gauge's clipped tile: StationId (the gauges' id
 /// array's type, when they have one), GaugeId, Weight, Area_m2 and Value (the gauge's, on each of
 /// its cells), CellArea_m2 and CellWeight (the cell's own area and its share of the catchment).
@@ -496,13 +510,8 @@ class TileCellData
 public:
   explicit TileCellData(vtkAbstractArray* stationIds)
     : StationIds(stationIds)
+    , Stations(NewStationIdArray(stationIds))
   {
-    if (stationIds)
-    {
-      this->Stations = vtk::TakeSmartPointer(stationIds->NewInstance());
-      this->Stations->SetNumberOfComponents(stationIds->GetNumberOfComponents());
-      this->Stations->SetName("StationId");
-    }
     this->GaugeIds->SetName("GaugeId");
     this->Weights->SetName("Weight");
     this->Areas->SetName("Area_m2");
@@ -573,13 +582,8 @@ class WeightRows
 public:
   explicit WeightRows(vtkAbstractArray* stationIds)
     : StationIds(stationIds)
+    , Stations(NewStationIdArray(stationIds))
   {
-    if (stationIds)
-    {
-      this->Stations = vtk::TakeSmartPointer(stationIds->NewInstance());
-      this->Stations->SetNumberOfComponents(stationIds->GetNumberOfComponents());
-      this->Stations->SetName("StationId");
-    }
     this->Times->SetName("Time");
     this->GaugeIds->SetName("GaugeId");
     this->Weights->SetName("Weight");
