@@ -7,7 +7,7 @@ import os
 import sys
 
 from paraview import servermanager
-from paraview.simple import CSVReader, LoadPlugin, OpenDataFile, TableToPoints
+from paraview.simple import CSVReader, GetTimeKeeper, LoadPlugin, OpenDataFile, TableToPoints
 
 LoadPlugin(os.environ["TESSERA_PLUGIN"], remote=False, ns=globals())
 data = os.path.join(os.environ["TESSERA_SOURCE_DIR"], "examples", "data")
@@ -25,6 +25,12 @@ average.UpdatePipeline(1963 + 7 / 12.0)
 information = average.GetDataInformation().DataInformation
 if information.GetNumberOfTimeSteps() != 1236:
     failures.append(f"{information.GetNumberOfTimeSteps()} time steps advertised, expected 1236")
+# The time keeper (hence the time slider and animation) knows the steps through the proxy's
+# TimestepValues information property, which the GUI updates on Apply.
+average.UpdatePipelineInformation()
+if len(average.TimestepValues) != 1236 or len(GetTimeKeeper().TimestepValues) != 1236:
+    failures.append(f"the time keeper has {len(GetTimeKeeper().TimestepValues)} steps "
+                    f"(the proxy's TimestepValues {len(average.TimestepValues)}), expected 1236")
 tiles = servermanager.Fetch(average)
 weights = tiles.GetCellData().GetArray("Weight")
 gauge = tiles.GetCellData().GetArray("GaugeId")
