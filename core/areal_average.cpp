@@ -54,27 +54,6 @@ void DensifyPlanarRing(const Point2* ring, std::size_t count, double step, std::
   }
 }
 
-/// The ring's points unprojected onto the end of lonlat, without repeating a point: points an ulp
-/// apart in the plane can come back as one.
-void AppendUnprojected(const std::vector<Point2>& ring,
-  const GeographicProjection& projector,
-  std::vector<Point2>& lonlat)
-{
-  const std::size_t first = lonlat.size();
-  for (const Point2& p : ring)
-  {
-    const Point2 q = projector.Inverse(p);
-    if (lonlat.size() == first || lonlat.back() != q)
-    {
-      lonlat.push_back(q);
-    }
-  }
-  while (lonlat.size() > first + 1 && lonlat.back() == lonlat[first])
-  {
-    lonlat.pop_back();
-  }
-}
-
 } // namespace
 
 struct ThiessenArealAverage::State
@@ -188,6 +167,16 @@ struct ThiessenArealAverage::State
       " has an infinite value");
   }
 
+  /// The plane's points in lon/lat.
+  void Unproject(const std::vector<Point2>& plane, std::vector<Point2>& lonlat) const
+  {
+    lonlat.resize(plane.size());
+    for (std::size_t i = 0; i < plane.size(); ++i)
+    {
+      lonlat[i] = this->Projector->Inverse(plane[i]);
+    }
+  }
+
   /// Ellipsoidal area (m^2) of all the rings.
   double MeasureRings(const ClippedRings& rings, ClipScratch& scratch) const
   {
@@ -202,11 +191,7 @@ struct ThiessenArealAverage::State
       }
       DensifyPlanarRing(
         &rings.Vertices[begin], count, this->Settings.GeodesicStepMetres, scratch.Dense);
-      scratch.LonLat.resize(scratch.Dense.size());
-      for (std::size_t i = 0; i < scratch.Dense.size(); ++i)
-      {
-        scratch.LonLat[i] = this->Projector->Inverse(scratch.Dense[i]);
-      }
+      this->Unproject(scratch.Dense, scratch.LonLat);
       total += EllipsoidalRingArea(scratch.LonLat);
     }
     return total;
@@ -851,11 +836,12 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
     const std::size_t k = static_cast<std::size_t>(tileOf[gauge]);
     const Point2* tile = &tiles.Vertices[tiles.Offsets[k]];
     const std::size_t count = static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]);
+    State::ClipScratch& scratch = s.Scratch[0];
     ClippedRings rings;
     if (s.Region->ClipInto(tile,
           count,
           static_cast<std::size_t>(g),
-          s.Scratch[0].Work,
+          scratch.Work,
           &rings,
           Catchment::FoldedTile::IsEmpty) <= 0.0)
     {
@@ -871,9 +857,12 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
     {
       const Point2* piece = &pieces.Vertices[pieces.RingOffsets[r]];
       const std::size_t size = pieces.RingOffsets[r + 1] - pieces.RingOffsets[r];
-      out.PieceAreasM2.push_back(s.PieceArea(piece, size, s.Scratch[0]));
-      DensifyPlanarRing(piece, size, maxStepMetres, s.Scratch[0].Dense);
-      AppendUnprojected(s.Scratch[0].Dense, *s.Projector, out.Pieces.Vertices);
+      out.PieceAreasM2.push_back(s.PieceArea(piece, size, scratch));
+      DensifyPlanarRing(piece, size, maxStepMetres, scratch.Dense);
+      s.Unproject(scratch.Dense, scratch.LonLat);
+      DropRepeatedVertices(scratch.LonLat); // points an ulp apart in the plane can come back as one
+      out.Pieces.Vertices.insert(
+        out.Pieces.Vertices.end(), scratch.LonLat.begin(), scratch.LonLat.end());
       out.Pieces.RingOffsets.push_back(out.Pieces.Vertices.size());
     }
     out.TilePieceOffsets.push_back(out.Pieces.RingOffsets.size() - 1);

@@ -31,7 +31,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -1269,20 +1268,6 @@ void Sweep::ProcessCentroid(std::int32_t a)
   this->Processed[a] = 1;
 }
 
-// Distinct Thiessen vertices can round to one point (the circumcentres of nearly co-circular
-// points, a window crossing within rounding of a corner): the tile starting at `first` lists such
-// a point once, as the Green-Sibson engine does (geometry.h, DropRepeatedVertices). Its area and
-// its NeighborCount (the exact sides, each neighbour found by exact predicates) stay as they are.
-void DropRepeatedVerticesFrom(std::vector<Point2>& vertices, std::size_t first)
-{
-  const auto begin = vertices.begin() + std::ptrdiff_t(first);
-  vertices.erase(std::unique(begin, vertices.end()), vertices.end());
-  while (vertices.size() > first + 1 && vertices.back() == vertices[first])
-  {
-    vertices.pop_back();
-  }
-}
-
 } // namespace
 
 ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector<Point2>& points)
@@ -1468,6 +1453,7 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
   // vertices' coordinates.
   constexpr std::size_t kAhead = 4;
   const std::int32_t* vertexIds = sweep.PackedVertexIds.data();
+  std::vector<Point2> polygon; // a tile's vertices (scratch)
   for (std::size_t r = 0; r < accepted; ++r)
   {
     if (r + 3 * kAhead < accepted)
@@ -1491,14 +1477,18 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
     const std::int32_t id = acceptedIds[r];
     const auto& record = sweep.Records[sortedOf[id]];
     tiles.PointIds.push_back(id);
-    const std::size_t firstVertex = tiles.Vertices.size();
+    polygon.clear();
     for (std::int32_t k = 0; k < record.Size; ++k)
     {
       const Point2& v = sweep.Vertices[vertexIds[record.Start + k]];
-      tiles.Vertices.push_back(
+      polygon.push_back(
         scale == 0 ? v : Point2{ std::ldexp(v.x, -scale), std::ldexp(v.y, -scale) });
     }
-    DropRepeatedVerticesFrom(tiles.Vertices, firstVertex);
+    // Distinct Thiessen vertices can round to one point (the circumcentres of nearly co-circular
+    // points, a window crossing within rounding of a corner): the polygon lists it once, as the
+    // Green-Sibson engine's does. Its area and NeighborCount (the exact sides) stay as they are.
+    DropRepeatedVertices(polygon);
+    tiles.Vertices.insert(tiles.Vertices.end(), polygon.begin(), polygon.end());
     tiles.Offsets.push_back(static_cast<std::int64_t>(tiles.Vertices.size()));
     tiles.Areas.push_back(scale == 0 ? record.Area : std::ldexp(record.Area, -2 * scale));
     tiles.NeighborCounts.push_back(record.Size);
