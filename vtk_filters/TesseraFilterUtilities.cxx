@@ -36,7 +36,7 @@ void CopyXY(const Real* xyz, vtkIdType n, std::vector<tessera::Point2>& out)
 }
 } // namespace
 
-std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points)
+std::vector<tessera::Point2> CopyPoints2D(vtkPoints* points)
 {
   const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
   std::vector<tessera::Point2> xy(static_cast<std::size_t>(n));
@@ -64,7 +64,13 @@ std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points)
       xy[i] = { p[0], p[1] };
     }
   }
-  for (vtkIdType i = 0; i < n; ++i)
+  return xy;
+}
+
+std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points)
+{
+  std::vector<tessera::Point2> xy = CopyPoints2D(points);
+  for (std::size_t i = 0; i < xy.size(); ++i)
   {
     if (!std::isfinite(xy[i].x) || !std::isfinite(xy[i].y))
     {
@@ -285,6 +291,10 @@ double OrientAnticlockwise(std::vector<tessera::Point2>& polygon)
   return std::abs(area);
 }
 
+namespace
+{
+/// The first of name + "_input", name + "_input_2", ... that no array of data has: an input with
+/// both "Area" and "Area_input" keeps both.
 std::string FreeInputName(vtkFieldData* data, const std::string& name)
 {
   std::string candidate = name + "_input";
@@ -294,6 +304,17 @@ std::string FreeInputName(vtkFieldData* data, const std::string& name)
   }
   return candidate;
 }
+
+/// The field data arrays AddUnusedPointIds writes.
+const std::vector<const char*>& UnusedPointIdNames()
+{
+  static const std::vector<const char*> names{
+    "RejectedPointIds", "DuplicatePointIds", "DuplicateOfPointIds"
+  };
+  return names;
+}
+
+} // namespace
 
 RenamedArrays RenameArraysNamed(vtkFieldData* data, const std::vector<const char*>& own, bool copy)
 {
@@ -337,14 +358,6 @@ std::string RenamedArraysWarning(const RenamedArrays& renamed,
       ownKind + " array)";
   }
   return message;
-}
-
-const std::vector<const char*>& UnusedPointIdNames()
-{
-  static const std::vector<const char*> names{
-    "RejectedPointIds", "DuplicatePointIds", "DuplicateOfPointIds"
-  };
-  return names;
 }
 
 RenamedArrays AddUnusedPointIds(vtkDataObject* data,

@@ -23,8 +23,11 @@ class vtkPointSet;
 namespace tessera_vtk
 {
 
-/// x, y of every point (z ignored). Throws tessera::InputError naming the first point with a NaN
-/// or infinite x or y.
+/// x, y of every point (z ignored), as they are (NaN and infinities included: for a caller whose
+/// core check names the points better).
+std::vector<tessera::Point2> CopyPoints2D(vtkPoints* points);
+
+/// CopyPoints2D, throwing tessera::InputError naming the first point with a NaN or infinite x or y.
 std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points);
 
 /// The window a filter works in: the rectangle `bounds` (xmin, xmax, ymin, ymax) when it is not
@@ -70,14 +73,11 @@ double OrientAnticlockwise(std::vector<tessera::Point2>& polygon);
 /// writes an array of that name itself.
 using RenamedArrays = std::vector<std::pair<std::string, std::string>>;
 
-/// The first of name + "_input", name + "_input_2", ... that no array of data has: an input with
-/// both "Area" and "Area_input" keeps both.
-std::string FreeInputName(vtkFieldData* data, const std::string& name);
-
 /// Renames the arrays of data named as one of `own` (the filter's own arrays, about to be added)
-/// to a FreeInputName, so that both reach the output: adding the filter's array would replace
-/// the input's silently. With `copy`, each is replaced by a renamed copy first (field data passed
-/// by the pipeline shares the input's array objects, which must keep their names).
+/// to the first of NAME_input, NAME_input_2, ... that data lacks, so that both reach the output:
+/// adding the filter's array would replace the input's silently. With `copy`, each is replaced by a
+/// renamed copy first (field data passed by the pipeline shares the input's array objects, which
+/// must keep their names).
 RenamedArrays RenameArraysNamed(vtkFieldData* data, const std::vector<const char*>& own, bool copy);
 
 /// "input <kind> array 'X' is passed to <where> as 'X_input' ('X' is this filter's own <ownKind>
@@ -86,9 +86,6 @@ std::string RenamedArraysWarning(const RenamedArrays& renamed,
   const char* kind,
   const char* where,
   const char* ownKind);
-
-/// The names of the field data arrays AddUnusedPointIds writes.
-const std::vector<const char*>& UnusedPointIdNames();
 
 /// The field data arrays every tessellation filter writes for points it did not use:
 /// `RejectedPointIds` (outside the window), `DuplicatePointIds` and `DuplicateOfPointIds`

@@ -72,11 +72,10 @@ std::string StationName(const vtkVariant& value)
   return digits;
 }
 
-/// Station ids compare as text (StationName), with leading zeros of integer ids dropped, so that
-/// an id read as text ("050109") matches the same id read as a number (50109).
-std::string StationKey(const vtkVariant& value)
+/// Station ids compare as text (a StationName), with leading zeros of integer ids dropped, so
+/// that an id read as text ("050109") matches the same id read as a number (50109).
+std::string StationKey(std::string text)
 {
-  std::string text = StationName(value);
   if (!text.empty() &&
     std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }))
   {
@@ -247,28 +246,6 @@ private:
   std::optional<NumberColumn> Months;
 };
 
-/// Throws InputError naming the first gauge (index and station id) with a NaN or infinite
-/// longitude or latitude: ReadPoints2D would name it only as a point.
-void ThrowAtNonFiniteGauge(vtkPointSet* gauges, vtkAbstractArray* stationIds)
-{
-  for (vtkIdType g = 0; g < gauges->GetNumberOfPoints(); ++g)
-  {
-    double p[3];
-    gauges->GetPoint(g, p);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]))
-    {
-      std::ostringstream message;
-      message << "gauge " << g;
-      if (stationIds)
-      {
-        message << " (station " << StationName(stationIds->GetVariantValue(g)) << ")";
-      }
-      message << " has a NaN or infinite coordinate (lon " << p[0] << ", lat " << p[1] << ")";
-      throw tessera::InputError(message.str());
-    }
-  }
-}
-
 /// The first gauge of each station key; ids given to more than one gauge are added to shared.
 std::unordered_map<std::string, std::int32_t> GaugesByStation(vtkAbstractArray* stationIds,
   std::vector<std::string>& shared)
@@ -276,12 +253,12 @@ std::unordered_map<std::string, std::int32_t> GaugesByStation(vtkAbstractArray* 
   std::unordered_map<std::string, std::int32_t> gaugeOf;
   for (vtkIdType g = 0; g < stationIds->GetNumberOfTuples(); ++g)
   {
-    const auto [at, first] =
-      gaugeOf.emplace(StationKey(stationIds->GetVariantValue(g)), static_cast<std::int32_t>(g));
+    const std::string name = StationName(stationIds->GetVariantValue(g));
+    const auto [at, first] = gaugeOf.emplace(StationKey(name), static_cast<std::int32_t>(g));
     if (!first)
     {
       shared.push_back(
-        at->first + " (gauges " + std::to_string(at->second) + " and " + std::to_string(g) + ")");
+        name + " (gauges " + std::to_string(at->second) + " and " + std::to_string(g) + ")");
     }
   }
   return gaugeOf;
@@ -306,12 +283,13 @@ struct ObservationRows
 class UnknownStationTally
 {
 public:
-  void Add(const std::string& key, vtkIdType row)
+  /// A row of station name (as written), grouped by its key.
+  void Add(const std::string& key, const std::string& name, vtkIdType row)
   {
     const auto [at, first] = this->Index.emplace(key, this->Stations.size());
     if (first)
     {
-      this->Stations.push_back({ key, 0, row });
+      this->Stations.push_back({ name, 0, row });
     }
     ++this->Stations[at->second].Rows;
   }
@@ -322,7 +300,7 @@ public:
     std::vector<std::string> names;
     for (const Station& s : this->Stations)
     {
-      names.push_back(s.Key +
+      names.push_back(s.Name +
         (s.Rows == 1 ? " (1 row: row " : " (" + std::to_string(s.Rows) + " rows from row ") +
         std::to_string(s.FirstRow) + ")");
     }
@@ -332,7 +310,7 @@ public:
 private:
   struct Station
   {
-    std::string Key;
+    std::string Name; // the first row's
     std::size_t Rows;
     vtkIdType FirstRow;
   };
@@ -373,7 +351,8 @@ ObservationRows ClassifyRows(vtkTable* table,
   UnknownStationTally unknown;
   for (vtkIdType r = 0; r < count; ++r)
   {
-    const std::string key = StationKey(stations->GetVariantValue(r));
+    const std::string name = StationName(stations->GetVariantValue(r));
+    const std::string key = StationKey(name);
     const auto gauge = key.empty() ? gaugeOf.end() : gaugeOf.find(key);
     // The station first: a row of no known station is not used, whatever its time holds.
     const std::optional<double> t = gauge == gaugeOf.end() ? std::nullopt : timeOf(r);
@@ -383,11 +362,11 @@ ObservationRows ClassifyRows(vtkTable* table,
       if (gauge != gaugeOf.end() || key.empty())
       {
         rows.IncompleteRows.push_back("row " + std::to_string(r) +
-          (key.empty() ? " (no station id)" : " (station " + key + ": no time)"));
+          (key.empty() ? " (no station id)" : " (station " + name + ": no time)"));
       }
       else
       {
-        unknown.Add(key, r);
+        unknown.Add(key, name, r);
       }
       continue;
     }
@@ -488,19 +467,37 @@ std::vector<std::vector<double>> StepValues(vtkTable* table,
   return stepValues;
 }
 
-/// An empty array of the gauges' station id type and components, named StationId; null when the
-/// gauges have no ids.
-vtkSmartPointer<vtkAbstractArray> NewStationIdArray(vtkAbstractArray* stationIds)
+/// The StationId array of an output: the gauges' id for each entry, in their id array's type
+/// and components; none when the gauges have no ids.
+class StationIdColumn
 {
-  if (!stationIds)
+public:
+  explicit StationIdColumn(vtkAbstractArray* stationIds)
+    : StationIds(stationIds)
   {
-    return nullptr;
+    if (stationIds)
+    {
+      this->Stations = vtk::TakeSmartPointer(stationIds->NewInstance());
+      this->Stations->SetNumberOfComponents(stationIds->GetNumberOfComponents());
+      this->Stations->SetName("StationId");
+    }
   }
-  auto stations = vtk::TakeSmartPointer(stationIds->NewInstance());
-  stations->SetNumberOfComponents(stationIds->GetNumberOfComponents());
-  stations->SetName("StationId");
-  return stations;
-}
+
+  void Append(std::int32_t gauge)
+  {
+    if (this->Stations)
+    {
+      this->Stations->InsertNextTuple(gauge, this->StationIds);
+    }
+  }
+
+  /// The array, or null without ids.
+  vtkAbstractArray* Array() const { return this->Stations; }
+
+private:
+  vtkAbstractArray* StationIds;
+  vtkSmartPointer<vtkAbstractArray> Stations;
+};
 
 /// Output 0's cell data, a cell per piece of a gauge's clipped tile: StationId (the gauges' id
 /// array's type, when they have one), GaugeId, Weight, Area_m2 and Value (the gauge's, on each of
@@ -509,8 +506,7 @@ class TileCellData
 {
 public:
   explicit TileCellData(vtkAbstractArray* stationIds)
-    : StationIds(stationIds)
-    , Stations(NewStationIdArray(stationIds))
+    : Stations(stationIds)
   {
     this->GaugeIds->SetName("GaugeId");
     this->Weights->SetName("Weight");
@@ -527,10 +523,7 @@ public:
     double cellArea,
     double catchmentArea)
   {
-    if (this->Stations)
-    {
-      this->Stations->InsertNextTuple(gauge, this->StationIds);
-    }
+    this->Stations.Append(gauge);
     this->GaugeIds->InsertNextValue(gauge);
     this->Weights->InsertNextValue(weight);
     this->Areas->InsertNextValue(area);
@@ -541,9 +534,9 @@ public:
 
   void AddTo(vtkCellData* cellData)
   {
-    if (this->Stations)
+    if (this->Stations.Array())
     {
-      cellData->AddArray(this->Stations);
+      cellData->AddArray(this->Stations.Array());
     }
     cellData->AddArray(this->GaugeIds);
     cellData->AddArray(this->Weights);
@@ -554,8 +547,7 @@ public:
   }
 
 private:
-  vtkAbstractArray* StationIds;
-  vtkSmartPointer<vtkAbstractArray> Stations;
+  StationIdColumn Stations;
   vtkNew<vtkIdTypeArray> GaugeIds;
   vtkNew<vtkDoubleArray> Weights, Areas, Values, CellAreas, CellWeights;
 };
@@ -581,8 +573,7 @@ class WeightRows
 {
 public:
   explicit WeightRows(vtkAbstractArray* stationIds)
-    : StationIds(stationIds)
-    , Stations(NewStationIdArray(stationIds))
+    : Stations(stationIds)
   {
     this->Times->SetName("Time");
     this->GaugeIds->SetName("GaugeId");
@@ -597,10 +588,7 @@ public:
     {
       const std::int32_t g = step.Gauges[k];
       this->Times->InsertNextValue(time);
-      if (this->Stations)
-      {
-        this->Stations->InsertNextTuple(g, this->StationIds);
-      }
+      this->Stations.Append(g);
       this->GaugeIds->InsertNextValue(g);
       this->Weights->InsertNextValue(step.Weights[k]);
       this->Areas->InsertNextValue(step.AreasM2[k]);
@@ -612,9 +600,9 @@ public:
   {
     table->Initialize();
     table->AddColumn(this->Times);
-    if (this->Stations)
+    if (this->Stations.Array())
     {
-      table->AddColumn(this->Stations);
+      table->AddColumn(this->Stations.Array());
     }
     table->AddColumn(this->GaugeIds);
     table->AddColumn(this->Weights);
@@ -623,8 +611,7 @@ public:
   }
 
 private:
-  vtkAbstractArray* StationIds;
-  vtkSmartPointer<vtkAbstractArray> Stations;
+  StationIdColumn Stations;
   vtkNew<vtkDoubleArray> Times, Weights, Areas, Values;
   vtkNew<vtkIdTypeArray> GaugeIds;
 };
@@ -880,8 +867,8 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
 {
   Internals& in = *this->Internal;
   in.Average.reset();
-  ThrowAtNonFiniteGauge(gauges, stationIds);
-  const std::vector<tessera::Point2> lonlat = tessera_vtk::ReadPoints2D(gauges->GetPoints());
+  // (unchecked: the core names a NaN or infinite gauge by index and, via GaugeNames, station id)
+  const std::vector<tessera::Point2> lonlat = tessera_vtk::CopyPoints2D(gauges->GetPoints());
   const tessera_vtk::Rings rings = tessera_vtk::ReadPolygonRings(catchment);
   const std::string skippedRings = tessera_vtk::SkippedCellsWarning(rings, "catchment (input 1)");
   if (!skippedRings.empty())
@@ -894,7 +881,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     settings.HaveProjection = true;
     settings.Projection = tessera::ProjectionParameters::FromString(this->ProjectionRecord);
   }
-  if (stationIds && stationIds->GetNumberOfTuples() == gauges->GetNumberOfPoints())
+  if (stationIds) // (GaugeStationIds checked: one per gauge)
   {
     for (vtkIdType g = 0; g < stationIds->GetNumberOfTuples(); ++g)
     {
