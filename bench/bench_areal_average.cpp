@@ -119,21 +119,25 @@ double RunAll(ThiessenArealAverage& average,
   const std::vector<std::vector<double>>& steps,
   double& checksum,
   double* derivedPerStep = nullptr,
-  double* clearPerStep = nullptr)
+  double* clearPerStep = nullptr,
+  double* deferredPerStep = nullptr)
 {
   const auto start = Clock::now();
-  double derived = 0.0, clear = 0.0;
+  double derived = 0.0, clear = 0.0, deferred = 0.0;
   for (const auto& values : steps)
   {
     const ArealStep step = average.Step(values);
     checksum += std::isnan(step.Mean) ? 0.0 : step.Mean;
     derived += step.TilesDerived;
     clear += step.TilesFoundClear;
+    deferred += step.RemovalsDeferred;
   }
   if (derivedPerStep)
     *derivedPerStep = derived / double(steps.size());
   if (clearPerStep)
     *clearPerStep = clear / double(steps.size());
+  if (deferredPerStep)
+    *deferredPerStep = deferred / double(steps.size());
   return Seconds(start);
 }
 
@@ -205,9 +209,9 @@ void RunColorado(const std::string& dir)
 void RunSynthetic()
 {
   std::printf("\n| gauges | steps | toggling per step | update s/step | rebuild s/step | ratio |"
-              " tiles re-derived per update | changed tiles found clear |\n");
+              " tiles re-derived per update | changed tiles found clear | removals deferred |\n");
   std::printf("|--------|-------|-------------------|---------------|----------------|-------|"
-              "-----------------------------|---------------------------|\n");
+              "-----------------------------|---------------------------|-------------------|\n");
   for (std::size_t n : { 10000u, 100000u })
   {
     std::mt19937_64 random(42);
@@ -235,6 +239,7 @@ void RunSynthetic()
     double checksum[2] = { 0.0, 0.0 };
     double derived[2] = { 0.0, 0.0 }; // mean tiles derived per step
     double clear = 0.0;               // mean changed tiles found clear per update
+    double deferred = 0.0;            // mean removals deferred per update
     for (int mode = 0; mode < 2; ++mode)
     {
       ArealAverageSettings settings;
@@ -242,11 +247,16 @@ void RunSynthetic()
       ThiessenArealAverage average(gauges, offsets, square, settings);
       average.Step(steps[0]); // the first step builds in both modes: not timed
       const std::vector<std::vector<double>> rest(steps.begin() + 1, steps.end());
-      perStep[mode] =
-        RunAll(average, rest, checksum[mode], &derived[mode], mode == 0 ? &clear : nullptr) /
+      perStep[mode] = RunAll(average,
+                        rest,
+                        checksum[mode],
+                        &derived[mode],
+                        mode == 0 ? &clear : nullptr,
+                        mode == 0 ? &deferred : nullptr) /
         rest.size();
     }
-    std::printf("| %6zu | %5d | %17zu | %13.5f | %14.5f | %5.1f | %13.0f of %13.0f | %25.0f |\n",
+    std::printf(
+      "| %6zu | %5d | %17zu | %13.5f | %14.5f | %5.1f | %13.0f of %13.0f | %25.0f | %17.0f |\n",
       n,
       stepCount,
       n / 100,
@@ -255,7 +265,8 @@ void RunSynthetic()
       perStep[1] / perStep[0],
       derived[0],
       derived[1],
-      clear);
+      clear,
+      deferred);
     if (std::abs(checksum[0] - checksum[1]) > 1e-9 * std::abs(checksum[1]))
       std::printf("   (checksums differ: %.12f vs %.12f)\n", checksum[0], checksum[1]);
   }

@@ -100,6 +100,10 @@ struct ThiessenArealAverage::State
   };
   std::vector<ClipScratch> Scratch{ 1 }; // [0]: the calling thread's
   std::vector<char> Wanted; // per gauge: used this step (kept: a step is O(gauges) already)
+  // Per gauge (updates only): 1 while it is in the tessellation though not used, its removal
+  // deferred because its tile is clear of the catchment (DeferClearRemovals). Its clipped area is
+  // 0, and stays 0 for as long as it is deferred.
+  std::vector<char> Deferred;
   std::vector<char> PlaceTaken;
   std::vector<char> Marked;         // DeriveChanged's
   std::vector<std::int32_t> Picked; // Step's weighted gauges (gauge g is written at a slot <= g)
@@ -273,24 +277,86 @@ struct ThiessenArealAverage::State
     }
   }
 
-  /// The gauges that stopped reporting and those that started, each list in Hilbert order.
-  void ListChanges(const std::vector<char>& wanted,
+  /// The gauges that stopped reporting and those that started, each list in Hilbert order. A
+  /// gauge whose removal was deferred and that reports again is neither: it is used as it is.
+  /// Returns the number of such gauges.
+  std::size_t ListChanges(const std::vector<char>& wanted,
     std::vector<std::int32_t>& removed,
-    std::vector<std::int32_t>& inserted) const
+    std::vector<std::int32_t>& inserted)
   {
     removed.clear();
     inserted.clear();
+    std::size_t resumed = 0;
     for (std::size_t g = 0; g < wanted.size(); ++g)
     {
       // One branch, on a change (rare), rather than on wanted (random).
       const bool present = this->EngineOfGauge[g] != NotInTessellation;
-      if (bool(wanted[g]) != present)
+      const bool used = present && !this->Deferred[g];
+      if (bool(wanted[g]) != used)
       {
-        (present ? removed : inserted).push_back(static_cast<std::int32_t>(g));
+        if (!present)
+        {
+          inserted.push_back(static_cast<std::int32_t>(g));
+        }
+        else if (this->Deferred[g])
+        {
+          this->Deferred[g] = 0; // its tile is still clear of the catchment: area 0, as cached
+          ++resumed;
+        }
+        else
+        {
+          removed.push_back(static_cast<std::int32_t>(g));
+        }
       }
     }
     this->SortAlongCurve(removed);
     this->SortAlongCurve(inserted);
+    return resumed;
+  }
+
+  /// Defers the removals (from removed) of gauges whose tiles are clear of the catchment: they
+  /// stay in the tessellation, unused, and removed keeps the others. Returns how many.
+  ///
+  /// Why the result is unchanged. A point of the catchment lies in the tile of a gauge that is
+  /// not deferred (deferred tiles are clear of it), and no gauge used at this step is nearer to
+  /// it than that one, since the used gauges are those of the tessellation less the deferred
+  /// ones (the insertions of the step come next, as usual). So every used gauge's tile has the
+  /// same part of the catchment as in the tessellation of the used gauges alone. A deferred tile
+  /// grows only when a neighbour is removed (Apply grows its box then, and removes it for real
+  /// once the box reaches the catchment: RemoveDeferredNear), and shrinks when one is inserted.
+  ///
+  ///      catchment          gauges far outside (x: stopped reporting, removal deferred)
+  ///     +---------+
+  ///     |  a   b  |    c     x      x     the tiles of c and x change only outside the
+  ///     +---------+         d             catchment when x goes: nothing used changes
+  std::size_t DeferClearRemovals(std::vector<std::int32_t>& removed)
+  {
+    const auto kept = std::stable_partition(removed.begin(),
+      removed.end(),
+      [this](std::int32_t g) { return !this->ClearOfCatchment(this->TileBounds[g]); });
+    for (auto it = kept; it != removed.end(); ++it)
+    {
+      this->Deferred[*it] = 1;
+      this->CachedArea[*it] = 0.0;
+    }
+    const std::size_t deferred = static_cast<std::size_t>(removed.end() - kept);
+    removed.erase(kept, removed.end());
+    return deferred;
+  }
+
+  /// Every deferred gauge, for removal with the rest (a step that derives every tile keeps no
+  /// deferred gauge: their tiles are not watched then).
+  void TakeAllDeferred(std::vector<std::int32_t>& removed)
+  {
+    for (std::size_t g = 0; g < this->Deferred.size(); ++g)
+    {
+      if (this->Deferred[g])
+      {
+        this->Deferred[g] = 0;
+        removed.push_back(static_cast<std::int32_t>(g));
+      }
+    }
+    this->SortAlongCurve(removed);
   }
 
   std::vector<std::int32_t> EngineIds(const std::vector<std::int32_t>& gauges) const
@@ -361,7 +427,7 @@ struct ThiessenArealAverage::State
   {
     DirichletTessellation& t = *this->Tessellation;
     std::vector<std::int32_t>& around = this->Neighbours;
-    for (const std::int32_t g : removed)
+    const auto remove = [&](std::int32_t g)
     {
       if (touched)
       {
@@ -379,6 +445,33 @@ struct ThiessenArealAverage::State
       if (!t.IsTwoDimensional())
       {
         touched = nullptr;
+      }
+    };
+    for (const std::int32_t g : removed)
+    {
+      remove(g);
+    }
+    // Deferred gauges next to the removed ones: their tiles grew, so their boxes did. One whose
+    // box now reaches the catchment is removed for real (which grows its neighbours' boxes: they
+    // are checked in turn, being appended to touched).
+    for (std::size_t k = 0; touched && k < touched->size(); ++k)
+    {
+      const std::int32_t g = (*touched)[k];
+      if (this->Deferred[g] && this->EngineOfGauge[g] != NotInTessellation &&
+        !this->ClearOfCatchment(this->TileBounds[g]))
+      {
+        this->Deferred[g] = 0;
+        remove(g);
+      }
+    }
+    if (!touched)
+    {
+      // Every tile is derived: no gauge stays deferred (its tile may reach the catchment now).
+      std::vector<std::int32_t> rest;
+      this->TakeAllDeferred(rest);
+      for (const std::int32_t g : rest)
+      {
+        remove(g);
       }
     }
     for (const std::int32_t g : inserted)
@@ -693,6 +786,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   {
     s.Tessellation->TrackVertexEdges(); // local tile derivation finds its rings in O(1)
     s.TileBounds.resize(gaugesLonLat.size());
+    s.Deferred.assign(gaugesLonLat.size(), 0);
     s.ClearMargin = 1e-6 * (box.LargerSide() + 2.0 * pad);
     s.CurveOrder.resize(gaugesLonLat.size());
     std::iota(s.CurveOrder.begin(), s.CurveOrder.end(), 0);
@@ -752,10 +846,19 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
   // reports, starts from an empty tessellation).
   bool local = false;
   std::vector<std::int32_t> removed, inserted, touched;
+  std::size_t deferred = 0;
   if (s.Settings.Incremental)
   {
     s.ListChanges(wanted, removed, inserted);
     local = s.Tessellation->IsTwoDimensional() && 5 * (removed.size() + inserted.size()) <= n;
+    if (local)
+    {
+      deferred = s.DeferClearRemovals(removed);
+    }
+    else
+    {
+      s.TakeAllDeferred(removed);
+    }
     local = s.Apply(removed, inserted, local ? &touched : nullptr);
   }
   else
@@ -773,6 +876,7 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
 
   ArealStep step;
   step.StationsUsed = used;
+  step.RemovalsDeferred = static_cast<int>(deferred);
   if (step.StationsUsed == 0)
   {
     step.Mean = std::numeric_limits<double>::quiet_NaN();
@@ -828,9 +932,9 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
   }
   for (std::size_t gauge = 0; gauge < tileOf.size(); ++gauge)
   {
-    if (tileOf[gauge] < 0)
+    if (tileOf[gauge] < 0 || !s.Wanted[gauge])
     {
-      continue;
+      continue; // (a gauge in the tessellation but not used: its removal is deferred)
     }
     const std::int32_t g = static_cast<std::int32_t>(gauge);
     const std::size_t k = static_cast<std::size_t>(tileOf[gauge]);

@@ -89,6 +89,11 @@ struct ArealStep
   /// Tiles that an update may have changed but did not derive: their bounds show them clear of
   /// the catchment (clipped area 0). Always 0 after a rebuild.
   int TilesFoundClear = 0;
+  /// Gauges that stopped reporting at this step but stay in the tessellation, unused, because
+  /// their tiles are clear of the catchment: removing them would change no clipped area. (Updates
+  /// only; such a gauge is removed once a tile change next to it brings its tile near the
+  /// catchment, and is used as it is if it reports again.)
+  int RemovalsDeferred = 0;
   std::vector<std::int32_t> Gauges; ///< weighted gauges, ascending
   std::vector<double> Weights;      ///< per weighted gauge
   std::vector<double> AreasM2;      ///< per weighted gauge: clipped ellipsoidal area, m^2

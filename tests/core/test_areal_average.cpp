@@ -395,11 +395,12 @@ TEST(ArealAverage, LatticeGaugesUpdateLikeRebuildsThroughCatchmentVertices)
 TEST(ArealAverage, UpdatesSkipTilesClearOfTheCatchmentYetEqualRebuildsWhenHolesOpenAcrossIt)
 {
   // Many gauges around a small catchment. Updates do not derive changed tiles whose bounds stay
-  // clear of the catchment. Some steps stop every gauge in a disk about a point of the catchment's
-  // edge: a gauge beyond the disk, outside the catchment and whose own tile and neighbours' tiles
-  // are far from it, then owns part of the catchment. Only boxes passed on along the removals
-  // across the disk (each removed gauge's box goes to its neighbours), not the removed neighbours'
-  // own boxes, show that it must be derived.
+  // clear of the catchment, and defer the removal of stopped gauges whose tiles are. Some steps
+  // stop every gauge in a disk about a point of the catchment's edge: a gauge beyond the disk,
+  // outside the catchment and whose own tile and neighbours' tiles are far from it, then owns part
+  // of the catchment. Only boxes passed on along the removals across the disk (each removed gauge's
+  // box goes to its neighbours), not the removed neighbours' own boxes, show that it must be
+  // derived.
   std::mt19937_64 random(31);
   std::uniform_real_distribution<double> value(0.0, 10.0);
   const std::vector<Point2> gauges = UniformGauges(3000, random, -110.0, -100.0, 35.0, 45.0);
@@ -413,6 +414,7 @@ TEST(ArealAverage, UpdatesSkipTilesClearOfTheCatchmentYetEqualRebuildsWhenHolesO
   std::uniform_real_distribution<double> along(0.0, 8.0);
   std::vector<char> weightedBefore(gauges.size(), 0);
   long clearTotal = 0;
+  long deferredTotal = 0;
   int farGainers = 0;
   for (int t = 0; t < 24; ++t)
   {
@@ -460,6 +462,7 @@ TEST(ArealAverage, UpdatesSkipTilesClearOfTheCatchmentYetEqualRebuildsWhenHolesO
       // The premise: updates (not rebuilds), which skipped tiles.
       EXPECT_LT(x.TilesDerived, y.TilesDerived / 5) << "step " << t;
       clearTotal += x.TilesFoundClear;
+      deferredTotal += x.RemovalsDeferred;
     }
     if (t % 3 == 1)
     {
@@ -479,8 +482,106 @@ TEST(ArealAverage, UpdatesSkipTilesClearOfTheCatchmentYetEqualRebuildsWhenHolesO
       weightedBefore[g] = 1;
     }
   }
-  EXPECT_GT(clearTotal, 1000);
+  // The premises of skipping: changed tiles found clear by their boxes (301 with this seed), and
+  // removals deferred because the stopped gauges' tiles were clear of the catchment (1087).
+  EXPECT_GT(clearTotal, 200);
+  EXPECT_GT(deferredTotal, 500);
   EXPECT_GE(farGainers, 8); // 17 with this seed
+}
+
+TEST(ArealAverage, ADeferredRemovalIsMadeOnceRemovalsNextToItBringItsTileToTheCatchment)
+{
+  // Gauges on a jittered 0.5-degree grid, a 2-degree catchment, and a gauge F 1 degree east of
+  // it. Step 1: F stops; its tile is clear of the catchment, so its removal is deferred (F stays
+  // in the tessellation, unused). Step 2: a band of gauges from inside the catchment's east side
+  // to F stops. Removing them passes their boxes on to F, whose tile would now reach into the
+  // catchment: F must go too, or that part of the catchment would be lost (F is unused) instead
+  // of going to its true owners. Step 3: F and the band report again (F is inserted: it was
+  // removed for real). Steps 4 and 5: F stops (deferred) and reports again at once, used as it
+  // is. Every step equals a rebuild.
+  //
+  //          +-----------+
+  //          | catchment |
+  //          |      #####|######  F        # band stopped at step 2
+  //          |      #####|######
+  //          +-----------+
+  std::mt19937_64 random(41);
+  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
+  std::vector<Point2> gauges;
+  for (int i = 0; i <= 20; ++i)
+  {
+    for (int j = 0; j <= 20; ++j)
+    {
+      gauges.push_back({ -110.0 + 0.5 * i + jitter(random), 35.0 + 0.5 * j + jitter(random) });
+    }
+  }
+  const Square catchment(-106.0, 39.0, -104.0, 41.0);
+  std::size_t far = 0;
+  const auto distance = [&](std::size_t k)
+  { return std::hypot(gauges[k].x + 103.0, gauges[k].y - 40.0); };
+  for (std::size_t g = 1; g < gauges.size(); ++g)
+  {
+    far = distance(g) < distance(far) ? g : far;
+  }
+  const auto inBand = [&](const Point2& p)
+  { return p.x > -105.3 && p.x < gauges[far].x - 0.2 && std::abs(p.y - 40.0) < 1.8; };
+  ArealAverageSettings rebuild;
+  rebuild.Incremental = false;
+  ThiessenArealAverage a(gauges, catchment.Offsets, catchment.Ring);
+  ThiessenArealAverage b(gauges, catchment.Offsets, catchment.Ring, rebuild);
+  ThiessenArealAverage withF(gauges, catchment.Offsets, catchment.Ring, rebuild);
+  std::vector<char> reporting(gauges.size(), 1);
+  int bandSize = 0;
+  for (int t = 0; t < 6; ++t)
+  {
+    if (t == 1 || t == 4)
+    {
+      reporting[far] = 0;
+    }
+    if (t == 2)
+    {
+      for (std::size_t g = 0; g < gauges.size(); ++g)
+      {
+        bandSize += inBand(gauges[g]);
+        reporting[g] = reporting[g] && !inBand(gauges[g]);
+      }
+    }
+    if (t == 3 || t == 5)
+    {
+      std::fill(reporting.begin(), reporting.end(), 1);
+    }
+    std::vector<double> values(gauges.size());
+    for (std::size_t g = 0; g < gauges.size(); ++g)
+    {
+      values[g] = reporting[g] ? double(1 + g % 5) : NaN;
+    }
+    const ArealStep x = a.Step(values), y = b.Step(values);
+    ASSERT_EQ(x.Gauges, y.Gauges) << "step " << t;
+    for (std::size_t k = 0; k < x.Weights.size(); ++k)
+    {
+      EXPECT_NEAR(x.Weights[k], y.Weights[k], 1e-13) << "step " << t << " gauge " << x.Gauges[k];
+    }
+    EXPECT_NEAR(Sum(x.Weights), 1.0, 1e-12) << "step " << t;
+    EXPECT_NEAR(x.Mean, y.Mean, 1e-12) << "step " << t;
+    // The premises: F's removal is deferred at steps 1 and 4 (and some of the band's at step 2,
+    // until they are made), and updates (not rebuilds) ran.
+    if (t != 2)
+    {
+      EXPECT_EQ(x.RemovalsDeferred, t == 1 || t == 4 ? 1 : 0) << "step " << t;
+    }
+    if (t > 0)
+    {
+      EXPECT_LT(x.TilesDerived, y.TilesDerived / 2) << "step " << t;
+    }
+    if (t == 2)
+    {
+      // ... and F, were it present, would own part of the catchment.
+      values[far] = 1.0;
+      const ArealStep z = withF.Step(values);
+      EXPECT_TRUE(std::binary_search(z.Gauges.begin(), z.Gauges.end(), std::int32_t(far)));
+    }
+  }
+  EXPECT_GE(bandSize, 10);
 }
 
 TEST(ArealAverage, AnUpdateThatPassesThroughCollinearGaugesEqualsRebuilds)
