@@ -707,9 +707,11 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   }
   else
   {
-    std::vector<Point2> everything = gaugesLonLat;
-    everything.insert(everything.end(), rings.Vertices.begin(), rings.Vertices.end());
-    s.Parameters = AutomaticParameters(everything);
+    // Fitted to the catchment alone: the tiles matter only there, the conic's distances are
+    // truest where it is fitted (so the tiles there come closest to the geodesically nearest
+    // gauges), and the result does not move with gauges far away (a gauge never reporting, or
+    // one with a mistyped coordinate, fitted in, moved Colorado's monthly means by up to 2%).
+    s.Parameters = AutomaticParameters(rings.Vertices);
   }
   s.Projector.reset(new GeographicProjection(s.Parameters));
   s.Method = settings.Areas;

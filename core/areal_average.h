@@ -50,7 +50,8 @@ enum class AreaMethod
 
 struct ArealAverageSettings
 {
-  /// Projection of gauges and catchment; without one, AutomaticParameters of gauges + catchment.
+  /// Projection of gauges and catchment; without one, AutomaticParameters of the catchment (where
+  /// the tiles are measured: gauges far from it do not change it).
   bool HaveProjection = false;
   ProjectionParameters Projection;
   AreaMethod Areas = AreaMethod::Automatic;

@@ -42,11 +42,12 @@
  * ignored, so "050109" matches 50109; a floating-point id column, as a CSV reader makes, is read in
  * full, so 6730200 and 6730500 stay two stations).
  *
- * The projection is vtkGeographicProjection's automatic equal-area conic fitted to the gauges and
- * catchment, unless ProjectionRecord holds a `TesseraProjection` record (e.g. "projection=UTM
- * zone=13 north=1"). With an equal-area projection, planar areas are the ellipsoidal areas;
- * otherwise rings are unprojected, densified, and measured with GeographicLib::PolygonArea
- * (AreaMethod selects explicitly).
+ * The projection is vtkGeographicProjection's automatic equal-area conic fitted to the catchment
+ * (where the tiles are measured, so gauges far from it, such as one that never reports or has a
+ * mistyped coordinate, do not change the weights), unless ProjectionRecord holds a
+ * `TesseraProjection` record (e.g. "projection=UTM zone=13 north=1"). With an equal-area
+ * projection, planar areas are the ellipsoidal areas; otherwise rings are unprojected, densified,
+ * and measured with GeographicLib::PolygonArea (AreaMethod selects explicitly).
  *
  * Output 0 (vtkPolyData, time-dependent): the tiles of the requested time step clipped to the
  * catchment, in lon/lat. Every cell is a simple polygon (no hole, not touching itself) and cells
