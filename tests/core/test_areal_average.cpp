@@ -116,6 +116,29 @@ TEST(ArealAverage, FourSymmetricGaugesShareASquareEqually)
   }
 }
 
+TEST(ArealAverage, AFarGaugeThatNeverReportsChangesNoWeight)
+{
+  // The automatic projection is fitted to the catchment: a gauge far away (here one whose
+  // latitude and longitude were swapped) that never reports leaves every weight as it was. (Fitted
+  // to gauges + catchment, it moved them by some 4%.)
+  const Square catchment(-1.0, -1.0, 1.0, 1.0);
+  const std::vector<Point2> three{ { -0.5, -0.5 }, { 0.5, -0.5 }, { 0.5, 0.5 } };
+  std::vector<Point2> four = three;
+  four.push_back({ 10.0, 85.0 });
+  ThiessenArealAverage a(three, catchment.Offsets, catchment.Ring);
+  ThiessenArealAverage b(four, catchment.Offsets, catchment.Ring);
+  const ArealStep x = a.Step({ 10.0, 20.0, 30.0 });
+  const ArealStep y = b.Step({ 10.0, 20.0, 30.0, NaN });
+  ASSERT_EQ(x.Gauges, y.Gauges);
+  for (std::size_t k = 0; k < x.Weights.size(); ++k)
+  {
+    EXPECT_NEAR(x.Weights[k], y.Weights[k], 1e-12) << "gauge " << k;
+  }
+  EXPECT_NEAR(x.Mean, y.Mean, 1e-10);
+  // The premise: the gauges do not share the square equally (so a projection change shows).
+  EXPECT_GT(std::abs(x.Weights[0] - x.Weights[1]), 1e-3);
+}
+
 TEST(ArealAverage, AGaugeOutsideTheCatchmentStillOwnsItsNearestPart)
 {
   const Square catchment(10.0, 40.0, 11.0, 41.0);
