@@ -746,6 +746,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   // Catchment: edges straight in lon/lat are densified, then projected.
   std::vector<std::size_t> offsets{ 0 };
   std::vector<Point2> projected;
+  std::vector<std::size_t> segmentOf; // per projected vertex: the caller's segment it lies on
   for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
   {
     const std::size_t begin = rings.RingOffsets[r], end = rings.RingOffsets[r + 1];
@@ -757,11 +758,33 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
       for (int i = 0; i < pieces; ++i)
       {
         projected.push_back(s.Projector->Forward(InterpolateLonLat(a, b, double(i) / pieces)));
+        segmentOf.push_back(rings.SourceIndex[k]);
       }
     }
     offsets.push_back(projected.size());
   }
-  s.Region.reset(new Catchment(offsets, projected));
+  try
+  {
+    s.Region.reset(new Catchment(offsets, projected));
+  }
+  catch (const InputError&)
+  {
+    // The rings were valid in lon/lat, so they meet only once projected: the usual cause is a
+    // catchment cut in two at the 180th meridian (as GeoJSON writes it), whose halves touch
+    // along it in the plane. Named in the caller's segments, not the densified pieces'.
+    try
+    {
+      ValidateRings(offsets, projected, &segmentOf);
+    }
+    catch (const InputError& e)
+    {
+      throw InputError("the catchment meets itself once projected, though not in lon/lat: " +
+        std::string(e.what()) +
+        ". A catchment cut at the 180th meridian must be given as one ring whose longitudes run "
+        "on past 180 (e.g. 179 to 181)");
+    }
+    throw;
+  }
   if (s.Method == AreaMethod::EqualAreaPlane)
   {
     s.CatchmentArea = s.Region->Area();

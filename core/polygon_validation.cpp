@@ -60,7 +60,8 @@ void CheckFinite(const std::vector<std::size_t>& ringOffsets, const std::vector<
 // A vertex equal to its successor adds a zero-length segment and nothing else; keeping the last of
 // each run makes clean segment k the caller's segment SourceIndex[k].
 CleanRings DropRepeats(const std::vector<std::size_t>& ringOffsets,
-  const std::vector<Point2>& vertices)
+  const std::vector<Point2>& vertices,
+  const std::vector<std::size_t>* segmentOf)
 {
   CleanRings clean;
   clean.RingOffsets.push_back(0);
@@ -74,7 +75,7 @@ CleanRings DropRepeats(const std::vector<std::size_t>& ringOffsets,
       if (vertices[v] != vertices[next])
       {
         clean.Vertices.push_back(vertices[v]);
-        clean.SourceIndex.push_back(v - begin);
+        clean.SourceIndex.push_back(segmentOf ? (*segmentOf)[v] : v - begin);
       }
     }
     const std::size_t kept = clean.Vertices.size() - clean.RingOffsets.back();
@@ -235,11 +236,17 @@ bool SegmentsIntersect(const Point2& a, const Point2& b, const Point2& c, const 
 }
 
 CleanRings ValidateRings(const std::vector<std::size_t>& ringOffsets,
-  const std::vector<Point2>& vertices)
+  const std::vector<Point2>& vertices,
+  const std::vector<std::size_t>* segmentOf)
 {
   CheckOffsets(ringOffsets, vertices.size());
+  if (segmentOf && segmentOf->size() != vertices.size())
+  {
+    throw InputError("ValidateRings: " + std::to_string(segmentOf->size()) +
+      " segment numbers for " + std::to_string(vertices.size()) + " vertices");
+  }
   CheckFinite(ringOffsets, vertices);
-  CleanRings clean = DropRepeats(ringOffsets, vertices);
+  CleanRings clean = DropRepeats(ringOffsets, vertices, segmentOf);
   CheckIntersections(clean);
   return clean;
 }

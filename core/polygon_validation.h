@@ -31,8 +31,12 @@ struct CleanRings
 /// malformed offsets; a NaN or infinite coordinate; a ring with fewer than 3 distinct vertices;
 /// two segments of one ring that touch or cross other than at their shared vertex (collinear
 /// overlap of neighbouring segments included); two rings that touch or cross.
+/// segmentOf, for rings the caller made by cutting its own into pieces (densified edges): per
+/// vertex, the caller's number of the segment that starts there, which messages then use (and
+/// SourceIndex holds).
 CleanRings ValidateRings(const std::vector<std::size_t>& ringOffsets,
-  const std::vector<Point2>& vertices);
+  const std::vector<Point2>& vertices,
+  const std::vector<std::size_t>* segmentOf = nullptr);
 
 /// Whether the closed segments ab and cd have a point in common, exactly.
 bool SegmentsIntersect(const Point2& a, const Point2& b, const Point2& c, const Point2& d);

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <regex>
 
 using namespace tessera;
 
@@ -293,6 +294,45 @@ TEST(ArealAverage, CoLocatedGaugesAreReportedAndTheFirstReportingOneIsUsed)
   EXPECT_DOUBLE_EQ(both.Mean, 1.0); // the first one's value
   const ArealStep second = average.Step({ NaN, NaN, 9.0 });
   EXPECT_DOUBLE_EQ(second.Mean, 9.0); // the repeat stands in when the first is missing
+}
+
+TEST(ArealAverage, ACatchmentCutAtTheAntimeridianIsNamedInItsOwnSegments)
+{
+  // GeoJSON writes a catchment across the 180th meridian as two parts, one ending at 180 and one
+  // starting at -180. They do not meet in lon/lat, but projected they touch along the meridian:
+  // an error, naming the user's segments (each square has 4; the densified pieces are 100 per
+  // edge) and what to do.
+  const std::vector<std::size_t> offsets{ 0, 4, 8 };
+  const std::vector<Point2> rings{ { 179.0, -1.0 },
+    { 180.0, -1.0 },
+    { 180.0, 1.0 },
+    { 179.0, 1.0 },
+    { -180.0, -1.0 },
+    { -179.0, -1.0 },
+    { -179.0, 1.0 },
+    { -180.0, 1.0 } };
+  const std::vector<Point2> gauges{ { 179.5, -0.5 }, { -179.5, 0.5 } };
+  std::string message;
+  try
+  {
+    ThiessenArealAverage average(gauges, offsets, rings);
+  }
+  catch (const InputError& e)
+  {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("180th meridian"), std::string::npos) << message;
+  // ring 0's segment 1 runs up the meridian at 180, ring 1's segment 3 down it at -180; where
+  // the corners meet, the segments before or after them touch too.
+  const std::regex named("ring 0 segment ([0-3]) and ring 1 segment ([0-3]) touch");
+  EXPECT_TRUE(std::regex_search(message, named)) << message;
+  // The same square written with longitudes past 180 is fine.
+  const std::vector<std::size_t> one{ 0, 4 };
+  const std::vector<Point2> whole{
+    { 179.0, -1.0 }, { 181.0, -1.0 }, { 181.0, 1.0 }, { 179.0, 1.0 }
+  };
+  ThiessenArealAverage average(gauges, one, whole);
+  EXPECT_NEAR(Sum(average.Step({ 1.0, 2.0 }).Weights), 1.0, 1e-12);
 }
 
 TEST(ArealAverage, BadInputIsNamed)
