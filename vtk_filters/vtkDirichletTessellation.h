@@ -4,10 +4,13 @@
  *
  * vtkDirichletTessellation computes the tile of every point: the part of a convex window nearer
  * to that point than to any other (Green and Sibson 1978). Only x and y of the input points are
- * used. Every topological decision uses exact predicates, so the result is the same for every
- * insertion order and exactly co-circular points are handled consistently: at a vertex shared by
- * 4 or more tiles, neither diagonal is recorded as a contiguity; the pairs that meet only there
- * are half-neighbours.
+ * used. Every topological decision uses exact predicates, so the combinatorics (which tiles there
+ * are, which points neighbour which, and each tile's sides) are the same for every insertion
+ * order, and exactly co-circular points are handled consistently: at a vertex shared by 4 or more
+ * tiles, neither diagonal is recorded as a contiguity; the pairs that meet only there are
+ * half-neighbours. The corners are rounded constructions (circumcentres, window crossings), so
+ * with another order their coordinates and the areas may differ in the last bits (some ulps;
+ * areas by some 1e-12 relative at most).
  *
  * The window is the intersection of the rectangle SetWindowBounds(xmin, xmax, ymin, ymax) (when
  * xmin < xmax and ymin < ymax) and the strict constraints a*x + b*y + c < 0 added with
@@ -16,7 +19,8 @@
  * unbounded window is an error.
  *
  * Algorithms: GreenSibson (default), the incremental engine; BrasselReif, the Thiessen sweep of
- * Brassel and Reif (1979), which needs a rectangular window. Both give the same outputs.
+ * Brassel and Reif (1979), which needs a rectangular window. Both give the same combinatorics;
+ * corners and areas agree to rounding (an ulp or so).
  *
  * Output 0 (vtkPolyData): one polygon per accepted point (anticlockwise), in ascending point id.
  * Its points are the tile corners: circumcentres inside the window, window corners and the points
