@@ -34,6 +34,7 @@ import argparse
 import csv
 import math
 import os
+import re
 import sys
 import time
 
@@ -65,6 +66,8 @@ def station_key(station_id):
 
 
 def read_gauges(path):
+    """The gauges as a vtkPolyData (points in lon/lat, point data station_id and name), and the
+    stations file's line of each gauge (gauge i is the file's i-th record)."""
     from vtkmodules.vtkCommonCore import vtkPoints, vtkStringArray
     from vtkmodules.vtkCommonDataModel import vtkPolyData
 
@@ -73,7 +76,9 @@ def read_gauges(path):
     ids, names = vtkStringArray(), vtkStringArray()
     ids.SetName("station_id")
     names.SetName("name")
-    for _, _, station, name, lon, lat in csv_input.gauges(path):
+    lines = []
+    for line, _, station, name, lon, lat in csv_input.gauges(path):
+        lines.append(line)
         points.InsertNextPoint(lon, lat, 0.0)
         ids.InsertNextValue(station)
         names.InsertNextValue(name)
@@ -81,14 +86,16 @@ def read_gauges(path):
     gauges.SetPoints(points)
     gauges.GetPointData().AddArray(ids)
     gauges.GetPointData().AddArray(names)
-    return gauges
+    return gauges, lines
 
 
 def read_observations(path, gauge_ids):
-    """The long-format monthly table as a vtkTable (station_id, time, precip), and the set of
-    reporting stations of every (year, month), as station_key()s. gauge_ids: the stations file's
-    ids (a month none of whose rows names one of them is a month where no gauge reported). Ids
-    are compared as the filter compares them (station_key)."""
+    """The long-format monthly table as a vtkTable (station_id, time, precip), the set of
+    reporting stations of every (year, month), as station_key()s, and the file's line of each
+    record read (table row r, counted from 0, is the record of line lines[r]; the rows after them
+    are the filler rows of months without a row of a gauge's station). gauge_ids: the stations
+    file's ids (a month none of whose rows names one of them is a month where no gauge reported).
+    Ids are compared as the filter compares them (station_key)."""
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
     from vtkmodules.vtkCommonDataModel import vtkTable
 
@@ -101,7 +108,9 @@ def read_observations(path, gauge_ids):
     gauge_keys = {station_key(g) for g in gauge_ids}
     months = set()  # (year, month) of every row
     present = set()  # (year, month) of every row of a gauge's station
+    lines = []  # the file's line of each row read
     for line, row in csv_input.rows(path, ("station_id", "year", "month", "precip"), "observations"):
+        lines.append(line)
         station = csv_input.text(row, "station_id", path, line)
         year_and_month = (csv_input.integer(row, "year", path, line, 1, 9999),
                           csv_input.integer(row, "month", path, line, 1, 12))
@@ -144,7 +153,7 @@ def read_observations(path, gauge_ids):
     table = vtkTable()
     for column in (stations, times, values):
         table.AddColumn(column)
-    return table, reporting
+    return table, reporting, lines
 
 
 def read_catchment(path):
@@ -153,6 +162,9 @@ def read_catchment(path):
     from vtkmodules.vtkCommonCore import vtkCommand
     from vtkmodules.vtkIOGDAL import vtkGDALVectorReader
 
+    if os.path.isdir(path):
+        csv_input.fail(f"{path}: is a directory, not a catchment file (expected a GeoJSON or "
+                       "shapefile polygon in lon/lat)")
     if not os.path.isfile(path):
         csv_input.fail(f"{path}: no such catchment file")
     reader = vtkGDALVectorReader()
@@ -173,18 +185,147 @@ def read_catchment(path):
 
 
 class Progress:
-    """Prints the filter's progress over the months on one line."""
+    """Prints the filter's progress over the months on one line; end_line() ends that line before
+    another message is printed, stop() ends it for good (the filter failed)."""
 
     def __init__(self, label):
-        self.label, self.last = label, -1
+        self.label, self.last, self.open, self.stopped = label, -1, False, False
 
     def __call__(self, caller, event):
         percent = int(caller.GetProgress() * 100)
-        if percent != self.last and percent % 5 == 0:
+        if not self.stopped and percent != self.last and percent % 5 == 0:
             self.last = percent
             print(f"\r{self.label}: {percent:3d}%", end="", file=sys.stderr, flush=True)
+            self.open = True
             if percent == 100:
-                print(file=sys.stderr)
+                self.end_line()
+
+    def end_line(self):
+        if self.open:
+            print(file=sys.stderr, flush=True)
+            self.open = False
+
+    def stop(self):
+        self.end_line()
+        self.stopped = True
+
+
+def vtk_message_text(message):
+    """The text of a VTK error or warning as an ErrorEvent or WarningEvent observer receives it
+    ("ERROR: In file.cxx, line N\nvtkClass (0x...): text\n\n"), on one line, without the source
+    line and the object's class and address."""
+    lines = [line.strip() for line in message.strip().splitlines()]
+    if lines and re.match(r"(ERROR|Warning|Generic Warning): In ", lines[0]):
+        lines = lines[1:]
+    text = " ".join(line for line in lines if line)
+    return re.sub(r"^\w+ \(0x[0-9a-fA-F]+\): ", "", text)
+
+
+class InputFiles:
+    """Where the filter's inputs came from: its messages, which name gauges by index and
+    observation rows by table row (both from 0), become lines naming the file and, for a gauge or a
+    row, its line. The mapping is simple: gauge g is the stations file's g-th record, table row r
+    the observations file's r-th record (the filler rows after them are never named: they have a
+    gauge's id, a time and no value)."""
+
+    def __init__(self, stations, gauge_lines, observations, row_lines, catchment):
+        self.stations, self.gauge_lines = stations, gauge_lines
+        self.observations, self.row_lines = observations, row_lines
+        self.catchment = catchment
+
+    def row_line(self, row):
+        """The observations file's line of table row `row` (as text), or None for a filler row."""
+        return str(self.row_lines[row]) if row < len(self.row_lines) else None
+
+    def rows_as_lines(self, text):
+        """text with "row R" as "line L" and without the filter's note on its row numbering."""
+        def line(m):
+            found = self.row_line(int(m.group(1)))
+            return f"line {found}" if found else f"{m.group(0)} (a row added for a month without rows)"
+        return re.sub(r"\brow (\d+)\b", line, re.sub(r" \(rows from 0, listed in \w+\)", "", text))
+
+    def gauges_as_lines(self, text):
+        """text with "(gauges A and B)" as "(gauges A and B: lines L and M)"."""
+        def lines(m):
+            a, b = int(m.group(1)), int(m.group(2))
+            if max(a, b) >= len(self.gauge_lines):
+                return m.group(0)
+            return f"(gauges {a} and {b}: lines {self.gauge_lines[a]} and {self.gauge_lines[b]})"
+        return re.sub(r"\(gauges (\d+) and (\d+)\)", lines, text)
+
+    def error(self, text):
+        """The one line that reports the filter's error `text`."""
+        gauge = re.match(r"gauge (\d+)\b", text)
+        if gauge:
+            g = int(gauge.group(1))
+            where = f":{self.gauge_lines[g]}" if g < len(self.gauge_lines) else ""
+            return f"{self.stations}{where}: {text}"
+        row = re.match(r"observation row (\d+): (.*)", text)
+        if row and self.row_line(int(row.group(1))):
+            return f"{self.observations}:{self.row_line(int(row.group(1)))}: {row.group(2)}"
+        if re.match(r"(catchment )?ring \d+", text):
+            return f"{self.catchment}: {text} (counted from 0, in the file's order)"
+        if text.startswith("the window/catchment input"):
+            return f"{self.catchment}: {text}"
+        if re.match(r"the observations table|none of the \d+ observation rows", text):
+            return f"{self.observations}: {self.rows_as_lines(text)}"
+        return f"the areal average failed: {text}"
+
+    def warning(self, text):
+        """The line that reports the filter's warning `text`."""
+        if re.match(r"\d+ (station id\(s\) of the observations|observation row\(s\))", text):
+            return f"{self.observations}: {self.rows_as_lines(text)}"
+        if re.match(r"\d+ (gauge\(s\)|station id\(s\) are given to more than one gauge)", text):
+            return f"{self.stations}: {self.gauges_as_lines(text)}"
+        if re.match(r"\d+ cell\(s\) of the catchment", text):
+            return f"{self.catchment}: {text}"
+        return f"warning: {text}"
+
+
+class FilterMessages:
+    """Catches the filter's errors and warnings. Its warnings are printed as they come, each on a
+    line of its own (InputFiles.warning); check() ends the script with one line for its error
+    (InputFiles.error). A VTK object with an ErrorEvent or WarningEvent observer passes its
+    messages to the observer instead of printing them (as a log line with the time, thread and
+    object address), so the filter's are caught here, and the executive's follow-up ("Algorithm
+    ... returned failure for request: ...", with a dump of the request) is kept back."""
+
+    def __init__(self, average, files, progress):
+        from vtkmodules.util.misc import calldata_type
+        from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
+
+        self.files, self.progress = files, progress
+        self.errors, self.executive_errors = [], []
+
+        @calldata_type(VTK_STRING)
+        def on_error(caller, event, message):
+            progress.stop()
+            self.errors.append(vtk_message_text(message))
+
+        @calldata_type(VTK_STRING)
+        def on_warning(caller, event, message):
+            progress.end_line()
+            print(files.warning(vtk_message_text(message)), file=sys.stderr, flush=True)
+
+        @calldata_type(VTK_STRING)
+        def on_executive_error(caller, event, message):
+            progress.stop()
+            self.executive_errors.append(vtk_message_text(message))
+
+        average.AddObserver(vtkCommand.ErrorEvent, on_error)
+        average.AddObserver(vtkCommand.WarningEvent, on_warning)
+        average.GetExecutive().AddObserver(vtkCommand.ErrorEvent, on_executive_error)
+
+    def check(self, failed=False):
+        """Ends the script with one line if the filter (or its executive) gave an error since it was
+        updated, or if it failed (failed: its output is missing) without one."""
+        if self.errors:
+            csv_input.fail(self.files.error(self.errors[0]))
+        if self.executive_errors:
+            csv_input.fail("the areal average failed: " + re.sub(r" for request: .*", "", self.executive_errors[0]))
+        if failed:
+            self.progress.stop()
+            csv_input.fail("the areal average failed and gave no message")
 
 
 def write_all_weights(table, path):
@@ -384,27 +525,35 @@ def main(argv=None):
 
     vtkThiessenArealAverage = csv_input.import_tessera().vtkThiessenArealAverage
 
-    os.makedirs(args.out, exist_ok=True)
+    if os.path.exists(args.out) and not os.path.isdir(args.out):
+        csv_input.fail(f"--out {args.out}: exists and is not a directory")
+    try:
+        os.makedirs(args.out, exist_ok=True)
+    except OSError as error:
+        csv_input.fail(f"--out {args.out}: cannot create the directory ({error.strerror})")
     started = time.time()
-    gauges = read_gauges(args.stations)
+    gauges, gauge_lines = read_gauges(args.stations)
     station_ids = gauges.GetPointData().GetAbstractArray("station_id")
-    observations, reporting_ids = read_observations(
+    observations, reporting_ids, row_lines = read_observations(
         args.observations, {station_ids.GetValue(i) for i in range(station_ids.GetNumberOfValues())})
     catchment = read_catchment(args.catchment)
-    print(f"read {gauges.GetNumberOfPoints()} gauges and {observations.GetNumberOfRows()} "
-          f"observations in {time.time() - started:.1f} s", file=sys.stderr)
+    # (the observations file's rows: the table also has a row for each month without any)
+    print(f"read {gauges.GetNumberOfPoints()} gauges and {len(row_lines)} observations in "
+          f"{time.time() - started:.1f} s", file=sys.stderr)
 
     average = vtkThiessenArealAverage()
     average.SetGaugesData(gauges)
     average.SetCatchmentConnection(catchment.GetOutputPort())
     average.SetObservationsData(observations)
     average.SetValueColumn("precip")
-    average.AddObserver(vtkCommand.ProgressEvent, Progress("Thiessen areal means"))
+    progress = Progress("Thiessen areal means")
+    average.AddObserver(vtkCommand.ProgressEvent, progress)
     started = time.time()
+    messages = FilterMessages(average, InputFiles(args.stations, gauge_lines, args.observations, row_lines,
+                                                  args.catchment), progress)
     average.Update(1)
     summary = average.GetOutputDataObject(1)
-    if summary is None or summary.GetNumberOfRows() == 0:
-        sys.exit("the areal average failed (see the error above)")
+    messages.check(summary is None or summary.GetNumberOfRows() == 0)
     print(f"{summary.GetNumberOfRows()} months in {time.time() - started:.2f} s", file=sys.stderr)
     rows = write_summary(summary, os.path.join(args.out, "areal_mean.csv"))
     write_all_weights(average.GetOutputDataObject(2), os.path.join(args.out, "weights_all_months.csv"))
@@ -412,6 +561,7 @@ def main(argv=None):
     t = decimal_time(year, month)
     average.UpdateTimeStep(t)
     tiles = average.GetOutputDataObject(0)
+    messages.check(tiles is None)
     chosen = year_month(tiles.GetInformation().Get(tiles.DATA_TIME_STEP()))
     if chosen != (year, month):
         print(f"note: {year}-{month:02d} is not in the record; showing {chosen[0]}-{chosen[1]:02d}",

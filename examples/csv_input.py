@@ -38,10 +38,15 @@ def decoded(path, what):
 
 def rows(path, required, what):
     """Yields (line, row) for each record of the CSV file at path (a header line first; row maps
-    the header's names, stripped of spaces, to the fields). Ends the script, naming the file, when
-    it cannot be read, lacks one of the required columns, or is not well-formed CSV; what says what
-    the file holds."""
-    reader = csv.DictReader(io.StringIO(decoded(path, what), newline=""), strict=True)
+    the header's names, stripped of spaces, to the fields); blank lines and records whose fields
+    are all empty are skipped. Ends the script, naming the file, when it cannot be read, is not a
+    CSV file, lacks one of the required columns, or is not well-formed CSV; what says what the
+    file holds."""
+    text = decoded(path, what)
+    if text.lstrip().startswith(("{", "[")):
+        fail(f"{path}: the {what} file is not a CSV file (it starts like JSON or GeoJSON; "
+             f"expected a header line such as {','.join(required)})")
+    reader = csv.DictReader(io.StringIO(text, newline=""), strict=True)
     try:
         columns = [name.strip() for name in reader.fieldnames or []]
         absent = [name for name in required if name not in columns]
@@ -50,6 +55,11 @@ def rows(path, required, what):
                  f"(it needs {', '.join(required)}; its header: {', '.join(columns) or 'none'})")
         reader.fieldnames = columns
         for row in reader:
+            # A record whose fields are all empty (",,," as a spreadsheet exports a blank row, or
+            # a line of spaces) holds nothing: skipped, like a blank line.
+            fields = [value for key, value in row.items() if key is not None] + (row.get(None) or [])
+            if all(not (field or "").strip() for field in fields):
+                continue
             # A record with more or fewer fields than the header would shift or lose values.
             if None in row or None in row.values():
                 fields = len(columns) + len(row.get(None) or []) - list(row.values()).count(None)
@@ -57,7 +67,9 @@ def rows(path, required, what):
                      f"{len(columns)} ({', '.join(columns)})")
             yield reader.line_num, row
     except csv.Error as error:  # e.g. a quote opened and never closed
-        fail(f"{path}:{reader.line_num}: not well-formed CSV ({error})")
+        # The underlying reader's count: the lines read up to the error (the DictReader's own
+        # line_num is that of the last record it returned, 0 while the header is read).
+        fail(f"{path}:{max(reader.reader.line_num, 1)}: not well-formed CSV ({error})")
 
 
 def is_missing(text):

@@ -6,6 +6,7 @@ traceback."""
 import csv
 import math
 import os
+import re
 import subprocess
 import sys
 import tempfile
@@ -153,7 +154,8 @@ def test_missing_values_keep_their_months():
         got = [(r["year"], r["month"], r["stations_used"], r["areal_mean"]) for r in rows]
         assert_that(got == [("1950", "1", "0", ""), ("1950", "2", "1", "2.500000")],
                     f"a month of an unknown station only: {got}")
-        assert_that("NOSUCH (1 row: row 0)" in stderr, f"the unknown station not reported: {stderr}")
+        # The filter's row 0 is named as the file's line 2.
+        assert_that("NOSUCH (1 row: line 2)" in stderr, f"the unknown station not reported: {stderr}")
 
 
 def test_bad_files_are_named():
@@ -174,6 +176,11 @@ def test_bad_files_are_named():
         header_only = write("header.csv", "station_id,year,month,precip\n")
         infinite = write("inf.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,1e999\n")
         quote = write("quote.csv", 'station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,"1.2\n')
+        bad_header = write("bad_header.csv", 'station_id,"lon"x,lat\n050848,-105,39\n')
+        geojson = write("stations.geojson", '{"type": "FeatureCollection", "features": []}\n')
+        pretty_json = write("pretty.json", '{\n  "station_id": "050848"\n}\n')
+        directory = os.path.join(out, "catchment.d")
+        os.mkdir(directory)
         utf16 = os.path.join(out, "utf16.csv")
         with open(utf16, "w", encoding="utf-16") as f:
             f.write("station_id,year,month,precip\n050848,1963,8,1.5\n")
@@ -193,13 +200,21 @@ def test_bad_files_are_named():
             (("--month", "1963-13"), ["--month", "YYYY-MM"]),
             (("--observations", header_only), ["the observations table has no rows"]),
             (("--observations", infinite), [infinite + ":3", "'precip'", "'1e999' is not a finite number"]),
-            (("--observations", quote), [quote + ":", "not well-formed CSV"]),
+            # The line the malformed record ends on (the unclosed quote runs to the end of line 3).
+            (("--observations", quote), [quote + ":3: not well-formed CSV"]),
+            # A bad header is on line 1, not "line 0"; a JSON file is no CSV file.
+            (("--stations", bad_header), [bad_header + ":1: not well-formed CSV"]),
+            (("--stations", geojson), [geojson + ": the stations file is not a CSV file"]),
+            (("--stations", pretty_json), [pretty_json + ": the stations file is not a CSV file"]),
+            (("--catchment", directory), [directory + ": is a directory"]),
+            (("--out", stations_id), [f"--out {stations_id}: exists and is not a directory"]),
         ]
         for arguments, fragments in cases:
             status, _, stderr = run_example("colorado_areal_precipitation.py", "--out", out, "--no-plots",
                                             *arguments)
             assert_that(status == 1, f"{arguments}: exit status {status}, expected 1")
             assert_that("Traceback" not in stderr, f"{arguments}: a traceback instead of a message: {stderr}")
+            assert_that(":0:" not in stderr, f"{arguments}: a line 0: {stderr}")
             for fragment in fragments:
                 assert_that(fragment in stderr, f"{arguments}: {fragment!r} not in {stderr!r}")
         # Text a spreadsheet saves: Windows-1252 stations, UTF-16 observations with its mark.
@@ -304,6 +319,8 @@ def test_a_month_without_reports_still_gets_its_map():
                                              "--month", "2001-02")
         assert_that(status == 0, f"a month without reports failed ({status}): {stderr}")
         assert_that("Traceback" not in stderr, f"a traceback: {stderr}")
+        # The rows read from the file: not the row the script adds for 2001-02.
+        assert_that("read 6 gauges and 4 observations in" in stderr, f"the rows read: {stderr}")
         assert_that(is_png(os.path.join(out, "map_2001_02.png")), "map_2001_02.png is not a PNG file")
         assert_that(os.path.isfile(os.path.join(out, "tiles_2001_02.vtp")), "no tiles_2001_02.vtp")
         with open(os.path.join(out, "weights_2001_02.csv")) as f:
@@ -356,6 +373,174 @@ def test_ids_without_their_leading_zeros_match_as_in_the_filter():
         assert_that("repeat a station and time" not in nozeros[3], f"rows flagged as repeated: {nozeros[3]}")
 
 
+def stderr_messages(stderr):
+    """The lines of the example's stderr other than its reading summary and progress lines."""
+    return [line for line in stderr.splitlines()
+            if line and not line.startswith("read ") and "Thiessen areal means:" not in line]
+
+
+def assert_without_vtk_decoration(stderr, what):
+    """No VTK log line (colour codes, source line, object address) nor executive dump in stderr,
+    and every progress line holds progress only (a message after it starts a line of its own)."""
+    for mark in ("\x1b", "ERR|", "WARN|", "ERROR: In", "Warning: In", "(0x", "vtkExecutive",
+                 "vtkCompositeDataPipeline", "Debug: Off", "Modified Time", "see the error above"):
+        assert_that(mark not in stderr, f"{what}: {mark!r} in {stderr!r}")
+    for line in stderr.splitlines():  # (run_example's text mode reads the progress's \r as a line end)
+        if "Thiessen areal means:" in line:
+            assert_that(re.fullmatch(r"Thiessen areal means: +\d+%", line),
+                        f"{what}: a message on the progress line {line!r}")
+
+
+def test_the_filters_errors_name_the_file_and_line():
+    # An input the script passes but vtkThiessenArealAverage rejects ends the run with one line
+    # naming the file (and, for a gauge, the stations file's line), not VTK's log and executive dump.
+    import json
+
+    with tempfile.TemporaryDirectory() as out:
+        catchment, stations, observations = write_lake_basin(out)
+
+        def write(name, text):
+            path = os.path.join(out, name)
+            with open(path, "w") as f:
+                f.write(text)
+            return path
+
+        def polygon(name, ring):
+            return write(name, json.dumps({"type": "FeatureCollection", "features": [{
+                "type": "Feature", "properties": {}, "geometry": {"type": "Polygon", "coordinates": [ring]}}]}))
+
+        bad_gauge = write("bad_gauge.csv", "station_id,lon,lat\nN1,175.6,-39.1\nN2,176.4,-39.1\nN3,175.95,-38.82\n"
+                                           "004,-0.5,95\n")
+        bow_tie = polygon("bow_tie.geojson", [[175.5, -39.2], [176.5, -38.4], [176.5, -39.2], [175.5, -38.4],
+                                              [175.5, -39.2]])
+        metres = polygon("metres.geojson", [[500000, 4100000], [800000, 4100000], [800000, 4500000],
+                                            [500000, 4500000], [500000, 4100000]])
+        header_only = write("header_only.csv", "station_id,year,month,precip\n")
+        cases = [
+            (("--stations", bad_gauge),
+             f"{bad_gauge}:5: gauge 3 (station 004) has an invalid longitude/latitude (-0.5, 95)"),
+            (("--catchment", bow_tie),
+             f"{bow_tie}: ring 0 is self-intersecting: segment 0 and segment 2 touch or cross"),
+            (("--catchment", metres),
+             f"{metres}: catchment ring 0 vertex 0 has an invalid longitude/latitude (500000, "),
+            (("--observations", header_only), f"{header_only}: the observations table has no rows"),
+        ]
+        for arguments, expected in cases:
+            files = {"--stations": stations, "--observations": observations, "--catchment": catchment}
+            files[arguments[0]] = arguments[1]
+            status, _, stderr = run_example("colorado_areal_precipitation.py", "--out", out, "--no-plots",
+                                            *(item for pair in files.items() for item in pair))
+            assert_that(status == 1, f"{arguments}: exit status {status}, expected 1: {stderr}")
+            assert_without_vtk_decoration(stderr, str(arguments))
+            messages = stderr_messages(stderr)
+            assert_that(len(messages) == 1 and messages[0].startswith(expected),
+                        f"{arguments}: expected one line starting {expected!r}, got {messages}")
+
+
+def test_the_filters_warnings_are_lines_of_their_own():
+    # The filter's warnings, each on a line of its own after the progress line, naming the file
+    # and, for observation rows, the file's lines (the filter's rows from 0); gauges of a shared
+    # id by their stations file lines.
+    with tempfile.TemporaryDirectory() as out:
+        catchment, stations, observations = write_lake_basin(out)
+        with open(stations, "a") as f:
+            f.write("N1,176.0,-39.0\nN7,176.4,-39.1\n")  # lines 8 and 9: a shared id, a gauge at N2's place
+        with open(observations, "w") as f:
+            f.write("station_id,year,month,precip\nN1,2001,1,10\nN2,2001,1,20\nXX,2001,1,5\nN3,2001,1,30\n"
+                    "N1,2001,1,11\nXX,2001,2,5\nN4,2001,2,40\n")
+        status, _, stderr = run_example("colorado_areal_precipitation.py", "--out", out, "--no-plots",
+                                        "--stations", stations, "--observations", observations,
+                                        "--catchment", catchment, "--month", "2001-01")
+        assert_that(status == 0, f"failed ({status}): {stderr}")
+        assert_without_vtk_decoration(stderr, "warnings")
+        messages = stderr_messages(stderr)
+        expected = [
+            f"{observations}: 1 station id(s) of the observations that no gauge has: their rows were ignored: "
+            "XX (2 rows from line 4)",
+            f"{observations}: 1 observation row(s) repeat a station and time of an earlier row with a value; "
+            "the earlier value is used: line 6 (station N1)",
+            f"{stations}: 1 station id(s) are given to more than one gauge; their observations go to the first: "
+            "N1 (gauges 0 and 6: lines 2 and 8)",
+            f"{stations}: 1 gauge(s) stand where an earlier gauge stands; the first that reports is used: "
+            "N7 (same place as N2)",
+        ]
+        for line in expected:
+            assert_that(line in messages, f"{line!r} not among {messages}")
+        unused = [m for m in messages if "never used" in m]
+        assert_that(len(unused) == 1 and unused[0].startswith(f"{stations}: 4 gauge(s) have no observation"),
+                    f"the never-used gauges: {messages}")
+
+
+def test_rows_of_empty_fields_are_skipped():
+    # Blank rows as a spreadsheet exports them (",,,"), lines of spaces and blank lines hold no
+    # data: the run is that of the files without them, and lines are still counted in the file.
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, observations = write_lake_basin(directory)
+        outputs = {}
+        for name in ("clean", "blank"):
+            out = os.path.join(directory, name)
+            arguments = ["--out", out, "--catchment", catchment, "--month", "2001-01", "--no-plots"]
+            if name == "clean":
+                arguments += ["--stations", stations, "--observations", observations]
+            else:
+                with open(stations) as f:
+                    lines = f.read().splitlines()
+                blank_stations = os.path.join(directory, "blank_stations.csv")
+                with open(blank_stations, "w") as f:
+                    f.write("\n".join(lines[:3] + [",,", "  ,  ,  "] + lines[3:] + [",,", ",,"]) + "\n")
+                with open(observations) as f:
+                    lines = f.read().splitlines()
+                blank_observations = os.path.join(directory, "blank_obs.csv")
+                with open(blank_observations, "w") as f:
+                    f.write("\n".join(lines[:2] + [",,,", "", "   "] + lines[2:] + ["XX,2001,2,1", ",,,", ",,,"])
+                            + "\n")
+                arguments += ["--stations", blank_stations, "--observations", blank_observations]
+            status, stdout, stderr = run_example("colorado_areal_precipitation.py", *arguments)
+            assert_that(status == 0, f"{name}: failed ({status}): {stderr}")
+            with open(os.path.join(out, "areal_mean.csv")) as f:
+                outputs[name] = (f.read(), stdout.replace(out, "OUT"), stderr)
+        assert_that(outputs["clean"][:2] == outputs["blank"][:2],
+                    f"blank rows change the run: {outputs['clean'][:2]} against {outputs['blank'][:2]}")
+        stderr = outputs["blank"][2]
+        assert_that("read 6 gauges and 8 observations" in stderr, f"the rows read: {stderr}")
+        # The unknown station's row is the file's line 12, lines 3-5 being blank.
+        assert_that("XX (1 row: line 12)" in stderr, f"the unknown station's line: {stderr}")
+
+
+def test_the_messages_map_to_files_and_lines():
+    # InputFiles, on messages the files above do not give: a row error (the script checks the
+    # values first), a row the script added, a message of no known kind.
+    example = import_example()
+    files = example.InputFiles("s.csv", [2, 3, 5], "o.csv", [2, 4], "c.geojson")
+    cases = [
+        (files.error("observation row 1: 'x' in column 'precip' is not a number"),
+         "o.csv:4: 'x' in column 'precip' is not a number"),
+        (files.error("gauge 2 (station C): point (200, 10) is 60 degrees of longitude from the central meridian"),
+         "s.csv:5: gauge 2 (station C): point (200, 10) is 60 degrees of longitude from the central meridian"),
+        (files.error("none of the 2 observation rows can be used (no time step to average): 0 have no station id "
+                     "or no time, the others name station ids that no gauge has: A (2 rows from row 0)"),
+         "o.csv: none of the 2 observation rows can be used (no time step to average): 0 have no station id "
+         "or no time, the others name station ids that no gauge has: A (2 rows from line 2)"),
+        (files.error("something else"), "the areal average failed: something else"),
+        (files.warning("1 observation row(s) have no station id or no time and were ignored (rows from 0, listed "
+                       "in UnusedObservationRows): row 2 (station A: no time)"),
+         "o.csv: 1 observation row(s) have no station id or no time and were ignored: row 2 (a row added for a "
+         "month without rows) (station A: no time)"),
+        (files.warning("1 cell(s) of the catchment (input 1) are not polygons or closed polylines and were ignored "
+                       "(the first is block 0 cell 3)."),
+         "c.geojson: 1 cell(s) of the catchment (input 1) are not polygons or closed polylines and were ignored "
+         "(the first is block 0 cell 3)."),
+        (example.vtk_message_text("ERROR: In /src/vtkThiessenArealAverage.cxx, line 815\nvtkThiessenArealAverage "
+                                  "(0x3ab42b20): gauge 3 (station 004) has an invalid longitude/latitude\n\n"),
+         "gauge 3 (station 004) has an invalid longitude/latitude"),
+        (example.vtk_message_text("Warning: In /src/vtkThiessenArealAverage.cxx, line 980\nvtkThiessenArealAverage "
+                                  "(0x3ab42b20): 1 gauge(s) have no observation\n\n"),
+         "1 gauge(s) have no observation"),
+    ]
+    for got, expected in cases:
+        assert_that(got == expected, f"{got!r}, expected {expected!r}")
+
+
 def read_colorado_outline():
     import json
 
@@ -406,5 +591,9 @@ if __name__ == "__main__":
          test_the_map_of_another_place_with_a_lake,
          test_a_month_without_reports_still_gets_its_map,
          test_ids_without_their_leading_zeros_match_as_in_the_filter,
+         test_the_filters_errors_name_the_file_and_line,
+         test_the_filters_warnings_are_lines_of_their_own,
+         test_rows_of_empty_fields_are_skipped,
+         test_the_messages_map_to_files_and_lines,
          test_the_other_examples_run_on_their_data,
          test_without_tessera_on_the_path_the_scripts_say_how_to_run])
