@@ -6,9 +6,21 @@
 // neighbours of the removed and inserted gauges), except those whose boxes show them clear of
 // the catchment.
 //
-//   bench_areal_average [examples/data] [--synthetic]   prints two tables (the second only
-//                                                       with --synthetic)
+// The peer, where CGAL is found: the synthetic stream's topology alone in CGAL's
+// Delaunay_triangulation_2 (exact predicates, inexact constructions), updated (removals, then
+// insertions spatially sorted, each hinted by the one before) against rebuilt (range insert)
+// per step, with no tiles, clipping or areas: the ratio a peer's incremental Delaunay reaches.
+//
+//   bench_areal_average [examples/data] [--synthetic]   prints the Colorado table (not with
+//                                                       --synthetic), the synthetic table and
+//                                                       the CGAL peer's
 #include "areal_average.h"
+
+#ifdef TESSERA_HAVE_CGAL
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/spatial_sort.h>
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -205,9 +217,77 @@ void RunColorado(const std::string& dir)
   }
 }
 
+#ifdef TESSERA_HAVE_CGAL
+/// Seconds per step (after the first) of CGAL's Delaunay triangulation of the reporting gauges:
+/// updated (first) and rebuilt (second).
+std::pair<double, double> CgalTopologyPerStep(const std::vector<Point2>& gauges,
+  const std::vector<std::vector<double>>& steps)
+{
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Delaunay = CGAL::Delaunay_triangulation_2<Kernel>;
+  using Point = Kernel::Point_2;
+  const std::size_t n = gauges.size();
+  const auto reporting = [&](std::size_t t, std::size_t g) { return !std::isnan(steps[t][g]); };
+  // Updated: handles kept per gauge.
+  Delaunay dt;
+  std::vector<Delaunay::Vertex_handle> handle(n);
+  for (std::size_t g = 0; g < n; ++g)
+    if (reporting(0, g))
+      handle[g] = dt.insert(Point(gauges[g].x, gauges[g].y));
+  auto start = Clock::now();
+  std::vector<std::pair<Point, std::size_t>> started;
+  for (std::size_t t = 1; t < steps.size(); ++t)
+  {
+    started.clear();
+    for (std::size_t g = 0; g < n; ++g)
+    {
+      const bool on = reporting(t, g);
+      if (handle[g] != Delaunay::Vertex_handle() && !on)
+      {
+        dt.remove(handle[g]);
+        handle[g] = Delaunay::Vertex_handle();
+      }
+      else if (handle[g] == Delaunay::Vertex_handle() && on)
+      {
+        started.emplace_back(Point(gauges[g].x, gauges[g].y), g);
+      }
+    }
+    CGAL::spatial_sort(started.begin(),
+      started.end(),
+      CGAL::Spatial_sort_traits_adapter_2<Kernel,
+        CGAL::First_of_pair_property_map<std::pair<Point, std::size_t>>>());
+    Delaunay::Face_handle hint;
+    for (const auto& [p, g] : started)
+    {
+      handle[g] = dt.insert(p, hint);
+      hint = handle[g]->face();
+    }
+  }
+  const double updated = Seconds(start) / double(steps.size() - 1);
+  // Rebuilt.
+  start = Clock::now();
+  std::size_t vertices = 0;
+  for (std::size_t t = 1; t < steps.size(); ++t)
+  {
+    std::vector<Point> points;
+    for (std::size_t g = 0; g < n; ++g)
+      if (reporting(t, g))
+        points.emplace_back(gauges[g].x, gauges[g].y);
+    Delaunay rebuilt;
+    rebuilt.insert(points.begin(), points.end());
+    vertices += rebuilt.number_of_vertices();
+  }
+  const double rebuiltTime = Seconds(start) / double(steps.size() - 1);
+  if (vertices == 0)
+    std::printf("(no vertices)\n");
+  return { updated, rebuiltTime };
+}
+#endif
+
 // Synthetic: N gauges in a 10 x 10 degree box, a catchment inside it, 1% toggling per step.
 void RunSynthetic()
 {
+  std::vector<std::string> peerRows;
   std::printf("\n| gauges | steps | toggling per step | update s/step | rebuild s/step | ratio |"
               " tiles re-derived per update | changed tiles found clear | removals deferred |\n");
   std::printf("|--------|-------|-------------------|---------------|----------------|-------|"
@@ -269,6 +349,26 @@ void RunSynthetic()
       deferred);
     if (std::abs(checksum[0] - checksum[1]) > 1e-9 * std::abs(checksum[1]))
       std::printf("   (checksums differ: %.12f vs %.12f)\n", checksum[0], checksum[1]);
+#ifdef TESSERA_HAVE_CGAL
+    const auto [updated, rebuilt] = CgalTopologyPerStep(gauges, steps);
+    char row[200];
+    std::snprintf(row,
+      sizeof row,
+      "| %6zu | %22.5f | %23.5f | %5.1f |",
+      n,
+      updated,
+      rebuilt,
+      rebuilt / updated);
+    peerRows.push_back(row);
+#endif
+  }
+  if (!peerRows.empty())
+  {
+    std::printf("\n| gauges | CGAL DT2 update s/step | CGAL DT2 rebuild s/step | ratio |   "
+                "(topology only: no tiles, clipping or areas)\n");
+    std::printf("|--------|------------------------|-------------------------|-------|\n");
+    for (const std::string& row : peerRows)
+      std::printf("%s\n", row.c_str());
   }
 }
 
