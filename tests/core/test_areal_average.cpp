@@ -52,6 +52,19 @@ double Sum(const std::vector<double>& v)
   return std::accumulate(v.begin(), v.end(), 0.0);
 }
 
+// Step t of an update against the rebuild's: the same weighted gauges, weights and mean, and the
+// weights sum to 1.
+void ExpectSameStep(const ArealStep& x, const ArealStep& y, int t)
+{
+  ASSERT_EQ(x.Gauges, y.Gauges) << "step " << t;
+  for (std::size_t k = 0; k < x.Weights.size(); ++k)
+  {
+    EXPECT_NEAR(x.Weights[k], y.Weights[k], 1e-13) << "step " << t << " gauge " << x.Gauges[k];
+  }
+  EXPECT_NEAR(Sum(x.Weights), 1.0, 1e-12) << "step " << t;
+  EXPECT_NEAR(x.Mean, y.Mean, 1e-12) << "step " << t;
+}
+
 constexpr double Degree = M_PI / 180.0;
 
 // WGS84 eccentricity squared.
@@ -619,13 +632,7 @@ TEST(ArealAverage, ADeferredRemovalIsMadeOnceRemovalsNextToItBringItsTileToTheCa
       values[g] = reporting[g] ? double(1 + g % 5) : NaN;
     }
     const ArealStep x = a.Step(values), y = b.Step(values);
-    ASSERT_EQ(x.Gauges, y.Gauges) << "step " << t;
-    for (std::size_t k = 0; k < x.Weights.size(); ++k)
-    {
-      EXPECT_NEAR(x.Weights[k], y.Weights[k], 1e-13) << "step " << t << " gauge " << x.Gauges[k];
-    }
-    EXPECT_NEAR(Sum(x.Weights), 1.0, 1e-12) << "step " << t;
-    EXPECT_NEAR(x.Mean, y.Mean, 1e-12) << "step " << t;
+    ExpectSameStep(x, y, static_cast<int>(t));
     // The premises: F's removal is deferred at steps 1 and 4 (and some of the band's at step 2,
     // until they are made), and updates (not rebuilds) ran.
     if (t != 2)
@@ -688,13 +695,7 @@ TEST(ArealAverage, AnUpdateThatPassesThroughCollinearGaugesEqualsRebuilds)
       values[g] = 1.0 + g;
     }
     const ArealStep x = a.Step(values), y = b.Step(values);
-    ASSERT_EQ(x.Gauges, y.Gauges) << "step " << t;
-    for (std::size_t k = 0; k < x.Weights.size(); ++k)
-    {
-      EXPECT_NEAR(x.Weights[k], y.Weights[k], 1e-13) << "step " << t << " gauge " << x.Gauges[k];
-    }
-    EXPECT_NEAR(Sum(x.Weights), 1.0, 1e-12) << "step " << t;
-    EXPECT_NEAR(x.Mean, y.Mean, 1e-12) << "step " << t;
+    ExpectSameStep(x, y, static_cast<int>(t));
   }
 }
 
