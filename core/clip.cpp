@@ -869,6 +869,8 @@ double Catchment::ClipInto(const Point2* tile,
     hullMagnitude = std::max({ hullMagnitude, std::fabs(p.x), std::fabs(p.y) });
   }
   CompensatedSum area;
+  double roundingBound = 0.0; // of the area: the sum of the pieces' (RoundingAreaBound)
+  const std::size_t ringsBefore = rings ? rings->RingOffsets.size() : 0;
   for (std::size_t first = 0; first < work.Candidates.size();)
   {
     const std::uint32_t ring = this->EdgeRing[work.Candidates[first]];
@@ -902,11 +904,13 @@ double Catchment::ClipInto(const Point2* tile,
       continue;
     }
     const double pieceArea = SignedArea(work.ClipA.data(), work.ClipA.size());
-    if (std::fabs(pieceArea) <= RoundingAreaBound(work.ClipA, magnitude))
+    const double pieceBound = RoundingAreaBound(work.ClipA, magnitude);
+    if (std::fabs(pieceArea) <= pieceBound)
     {
       continue; // no area that rounding could not have made: an empty piece, not a ring
     }
     area.Add(pieceArea);
+    roundingBound += pieceBound;
     if (rings)
     {
       for (Point2& p : work.ClipA)
@@ -919,10 +923,23 @@ double Catchment::ClipInto(const Point2* tile,
   for (int k = 0; k < std::abs(farWinding); ++k)
   {
     area.Add(farWinding > 0 ? tileArea : -tileArea);
+    roundingBound += RoundingAreaBound(work.Tile, hullMagnitude);
     if (rings)
     {
       AppendRing(*rings, tile, count, farWinding < 0);
     }
+  }
+  if (std::fabs(area.Value()) <= roundingBound)
+  {
+    // Pieces that cancel but for rounding (a tile inside a hole: the outer ring gives the tile,
+    // the hole's ring clipped to the tile gives it back reversed, their areas computed apart
+    // differ by 1e-19): the tile is outside, no area and no ring.
+    if (rings)
+    {
+      rings->RingOffsets.resize(ringsBefore);
+      rings->Vertices.resize(rings->RingOffsets.back());
+    }
+    return 0.0;
   }
   return std::min(std::max(area.Value(), 0.0), tileArea);
 }

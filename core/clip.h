@@ -27,6 +27,8 @@
 // within that rounding's bound (16 eps * its perimeter * the magnitude of the shifted coordinates
 // it is made of; see RoundingAreaBound in clip.cpp) counts as empty: no area and no ring, so that
 // a tile wholly outside the catchment gives nothing rather than a degenerate ring of area 1e-19.
+// So does a tile whose pieces sum to no more than the sum of their bounds (a tile inside a hole:
+// the tile from the outer ring and its reversal from the hole's ring, which cancel).
 //
 // Cost: construction O(n log n) for validation plus the grid (about 2 cells per segment); a tile
 // costs O(its vertices x nearby segments) plus a walk along one grid row. A tile whose box misses
