@@ -25,6 +25,16 @@
 
 vtkStandardNewMacro(vtkWindowClip);
 
+namespace
+{
+/// The filter's own cell arrays. Their names are API: an input cell-data array with one of them
+/// is passed under another name (tessera_vtk::RenameArraysNamed).
+const std::vector<const char*> OwnArrayNames{ "TileId",
+  "ClippedArea",
+  "AreaFraction",
+  "PieceArea" };
+} // namespace
+
 //------------------------------------------------------------------------------
 vtkWindowClip::vtkWindowClip()
 {
@@ -62,14 +72,17 @@ int vtkWindowClip::RequestData(vtkInformation*,
     vtkCellData* outCD = output->GetCellData();
     vtkCellData* inCD = tiles->GetCellData();
     outCD->CopyAllocate(inCD);
+    // Adding the filter's arrays would replace the input's of the same names silently.
+    const tessera_vtk::RenamedArrays renamed =
+      tessera_vtk::RenameArraysNamed(outCD, OwnArrayNames, false);
     vtkNew<vtkIdTypeArray> tileIds;
-    tileIds->SetName("TileId");
+    tileIds->SetName(OwnArrayNames[0]);
     vtkNew<vtkDoubleArray> clippedAreas;
-    clippedAreas->SetName("ClippedArea");
+    clippedAreas->SetName(OwnArrayNames[1]);
     vtkNew<vtkDoubleArray> fractions;
-    fractions->SetName("AreaFraction");
+    fractions->SetName(OwnArrayNames[2]);
     vtkNew<vtkDoubleArray> pieceAreas;
-    pieceAreas->SetName("PieceArea");
+    pieceAreas->SetName(OwnArrayNames[3]);
 
     tessera::Catchment::Workspace work;
     std::vector<tessera::Point2> tile;
@@ -151,6 +164,11 @@ int vtkWindowClip::RequestData(vtkInformation*,
     outCD->AddArray(clippedAreas);
     outCD->AddArray(fractions);
     outCD->AddArray(pieceAreas);
+    if (!renamed.empty())
+    {
+      vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
+                        renamed, "cell-data", "the clipped tiles", "cell"));
+    }
     if (skipped->GetNumberOfValues() > 0)
     {
       output->GetFieldData()->AddArray(skipped);

@@ -23,6 +23,8 @@
  * - `AreaFraction` (double): ClippedArea over the tile's own area;
  * - `PieceArea` (double): the area of this polygon; a tile's PieceArea values add up to its
  *   ClippedArea (to rounding).
+ * An input cell-data array with one of these four names is passed under the first free name of
+ * NAME_input, NAME_input_2, ..., with a warning naming it.
  * Tiles entirely outside the window give no polygon. Cells of input 0 that are not polygons,
  * triangles or quads (lines, vertices, strips), and polygons of fewer than 3 points, are not
  * clipped: a warning counts them and the output's field data array `SkippedCellIds` (vtkIdType)

@@ -274,6 +274,54 @@ def test_review_cases():
                 "PieceArea 0.5 each, ClippedArea 1 and AreaFraction 1 / 2.5 on both")
 
 
+def test_input_arrays_named_like_the_filters_are_kept_under_another_name():
+    # Tiles that already carry TileId, ClippedArea, AreaFraction and PieceArea (e.g. the output of
+    # an earlier clip) and PieceArea_input: the input's arrays reach the output as NAME_input
+    # (PieceArea as PieceArea_input_2), following their tile, named in one warning; the filter's
+    # own arrays are its own.
+    squares = [[(x, 0), (x + 1, 0), (x + 1, 1), (x, 1)] for x in range(4)]
+    tiles = polygon(squares)
+    inputs = {"TileId": vtkIntArray, "ClippedArea": vtkDoubleArray, "AreaFraction": vtkDoubleArray,
+              "PieceArea": vtkDoubleArray, "PieceArea_input": vtkDoubleArray, "rain": vtkDoubleArray}
+    for k, (name, kind) in enumerate(inputs.items()):
+        array = kind()
+        array.SetName(name)
+        for c in range(len(squares)):
+            array.InsertNextValue(100 * k + c)
+        tiles.GetCellData().AddArray(array)
+    f = vtkWindowClip()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    errors = messages_of(f)
+    f.SetInputData(tiles)
+    f.SetWindowData(polygon([[(0.5, -1), (3.5, -1), (3.5, 2), (0.5, 2)]]))  # cuts tiles 0 and 3
+    f.Update()
+    out = f.GetOutput()
+    assert_that(not errors and out.GetNumberOfCells() == 4, f"four cells: {errors}")
+    tile_ids = cell_values(out, "TileId")
+    assert_that(tile_ids == [0, 1, 2, 3] and out.GetCellData().GetArray("TileId").GetDataTypeAsString() == "idtype",
+                f"the filter's own TileId: {tile_ids}")
+    assert_that(cell_values(out, "ClippedArea") == [0.5, 1.0, 1.0, 0.5]
+                and cell_values(out, "AreaFraction") == [0.5, 1.0, 1.0, 0.5]
+                and cell_values(out, "PieceArea") == [0.5, 1.0, 1.0, 0.5], "the filter's own areas")
+    renamed = {"TileId": "TileId_input", "ClippedArea": "ClippedArea_input",
+               "AreaFraction": "AreaFraction_input", "PieceArea": "PieceArea_input_2",
+               "PieceArea_input": "PieceArea_input", "rain": "rain"}
+    for k, name in enumerate(inputs):
+        assert_that(cell_values(out, renamed[name]) == [100 * k + c for c in tile_ids],
+                    f"input {name} follows its tile as {renamed[name]}")
+    named = [m for m in warnings if "filter's own" in m]
+    assert_that(len(named) == 1 and all(f"'{name}' is passed to the clipped tiles as '{renamed[name]}'"
+                                        in named[0] for name in list(inputs)[:4]),
+                f"one warning naming each renamed array: {warnings}")
+    plain = vtkWindowClip()
+    plain_warnings = messages_of(plain, vtkCommand.WarningEvent)
+    plain.SetInputData(polygon(squares))
+    plain.SetWindowData(polygon([[(0.5, -1), (3.5, -1), (3.5, 2), (0.5, 2)]]))
+    plain.Update()
+    assert_that(plain_warnings == [], f"no warning without a clash: {plain_warnings}")
+
+
 if __name__ == "__main__":
     run([test_cells_are_simple_pieces_that_fill_tile_and_window,
-         test_review_cases])
+         test_review_cases,
+         test_input_arrays_named_like_the_filters_are_kept_under_another_name])
