@@ -76,6 +76,36 @@ double SignedArea(const Point2* ring, std::size_t count)
   return 0.5 * twice.Value();
 }
 
+// How much area the rounding in ClipInto can give a piece whose true area is 0 (a tile wholly
+// outside the catchment whose clipping leaves a degenerate ring a, c, a of area 1e-19): the piece
+// (relative coordinates, as clipped) is made of coordinates, shifted to the tile's first vertex,
+// of magnitude at most `magnitude` (the local ring's and the tile's). Derivation, u = eps / 2:
+// - each shifted coordinate errs by at most u * magnitude (one rounding of a difference), so every
+//   line of the clipping (a ring segment, a tile edge) lies within 2u * magnitude of the true one
+//   between its ends, the error of its ends interpolated;
+// - a crossing LineCrossing computes lies within a few u * magnitude of both lines (the distances
+//   ds, dt and the interpolation s + f * (t - s) each round a few times numbers of that size);
+//   it may slide further along a line nearly parallel to the other, but a vertex sliding along an
+//   edge of the piece moves the area only by its offset across the other edge, again that small;
+// - so every edge of the piece lies within about 8u * magnitude of where the exact clipping of the
+//   exact coordinates puts it, and the area between them is at most that distance times the edge's
+//   length: |area error| <= 8u * magnitude * perimeter, plus the shoelace's own error (eps * area
+//   and eps^2 of its terms, compensated), which is smaller.
+// The bound is 16 eps * magnitude * L1 perimeter (>= the Euclidean one): four times the estimate,
+// for the stages of clipping that move one vertex more than once. A true piece this thin (under
+// 32 ulps of the coordinates' magnitude wide on average) is below what the coordinates resolve.
+double RoundingAreaBound(const std::vector<Point2>& piece, double magnitude)
+{
+  double perimeter = 0.0;
+  for (std::size_t i = 0; i < piece.size(); ++i)
+  {
+    const Point2& a = piece[i];
+    const Point2& b = piece[i + 1 == piece.size() ? 0 : i + 1];
+    perimeter += std::fabs(b.x - a.x) + std::fabs(b.y - a.y);
+  }
+  return 16.0 * std::numeric_limits<double>::epsilon() * magnitude * perimeter;
+}
+
 // The lexicographically smallest vertex (smallest x, then y) of a ring.
 std::size_t LowestVertex(const Point2* ring, std::size_t count)
 {
@@ -833,7 +863,14 @@ double Catchment::ClipInto(const Point2* tile,
   {
     return 0.0; // thinner than the rounding of the shift
   }
+  double hullMagnitude = 0.0;
+  for (const Point2& p : work.Tile)
+  {
+    hullMagnitude = std::max({ hullMagnitude, std::fabs(p.x), std::fabs(p.y) });
+  }
   CompensatedSum area;
+  double roundingBound = 0.0; // of the area: the sum of the pieces' (RoundingAreaBound)
+  const std::size_t ringsBefore = rings ? rings->RingOffsets.size() : 0;
   for (std::size_t first = 0; first < work.Candidates.size();)
   {
     const std::uint32_t ring = this->EdgeRing[work.Candidates[first]];
@@ -849,9 +886,12 @@ double Catchment::ClipInto(const Point2* tile,
     first = last;
 
     work.ClipA.clear();
+    double magnitude = hullMagnitude; // of the coordinates the piece is made of, as shifted
     for (const Point2& p : work.Local)
     {
       work.ClipA.push_back({ p.x - origin.x, p.y - origin.y });
+      magnitude =
+        std::max({ magnitude, std::fabs(work.ClipA.back().x), std::fabs(work.ClipA.back().y) });
     }
     for (std::size_t e = 0; e < hullCount && !work.ClipA.empty(); ++e)
     {
@@ -864,8 +904,14 @@ double Catchment::ClipInto(const Point2* tile,
       continue;
     }
     const double pieceArea = SignedArea(work.ClipA.data(), work.ClipA.size());
+    const double pieceBound = RoundingAreaBound(work.ClipA, magnitude);
+    if (std::fabs(pieceArea) <= pieceBound)
+    {
+      continue; // no area that rounding could not have made: an empty piece, not a ring
+    }
     area.Add(pieceArea);
-    if (rings && pieceArea != 0.0)
+    roundingBound += pieceBound;
+    if (rings)
     {
       for (Point2& p : work.ClipA)
       {
@@ -877,10 +923,23 @@ double Catchment::ClipInto(const Point2* tile,
   for (int k = 0; k < std::abs(farWinding); ++k)
   {
     area.Add(farWinding > 0 ? tileArea : -tileArea);
+    roundingBound += RoundingAreaBound(work.Tile, hullMagnitude);
     if (rings)
     {
       AppendRing(*rings, tile, count, farWinding < 0);
     }
+  }
+  if (std::fabs(area.Value()) <= roundingBound)
+  {
+    // Pieces that cancel but for rounding (a tile inside a hole: the outer ring gives the tile,
+    // the hole's ring clipped to the tile gives it back reversed, their areas computed apart
+    // differ by 1e-19): the tile is outside, no area and no ring.
+    if (rings)
+    {
+      rings->RingOffsets.resize(ringsBefore);
+      rings->Vertices.resize(rings->RingOffsets.back());
+    }
+    return 0.0;
   }
   return std::min(std::max(area.Value(), 0.0), tileArea);
 }

@@ -23,7 +23,12 @@
 // inside/outside decisions exact there too): rounded intersection points then err by ulps of the
 // tile's size, not of the coordinates' magnitude, and areas are compensated sums of products made
 // exact by fma. An area errs by about (piece perimeter) * ulp(tile size): near 1e-16 relative for
-// pieces that are not slivers, whatever the offset of the coordinates.
+// pieces that are not slivers, whatever the offset of the coordinates. A piece whose area is
+// within that rounding's bound (16 eps * its perimeter * the magnitude of the shifted coordinates
+// it is made of; see RoundingAreaBound in clip.cpp) counts as empty: no area and no ring, so that
+// a tile wholly outside the catchment gives nothing rather than a degenerate ring of area 1e-19.
+// So does a tile whose pieces sum to no more than the sum of their bounds (a tile inside a hole:
+// the tile from the outer ring and its reversal from the hole's ring, which cancel).
 //
 // Cost: construction O(n log n) for validation plus the grid (about 2 cells per segment); a tile
 // costs O(its vertices x nearby segments) plus a walk along one grid row. A tile whose box misses

@@ -124,13 +124,53 @@ double PointTolerance(const ClippedRings& rings)
   return 64.0 * std::numeric_limits<double>::epsilon() * largest;
 }
 
+/// A corner of a trapezoid: a point on a side, and whether it is a vertex of the rings (its
+/// height an edge's end's own) rather than a height interpolated along an edge.
+struct Corner
+{
+  Point2 At;
+  bool IsVertex;
+};
+
 /// The region between two edges inside one slab: vertical sides at the slab's x.
 struct Trapezoid
 {
   std::size_t Bottom, Top; // edges
-  Point2 BottomLeft, BottomRight, TopLeft, TopRight;
+  Corner BottomLeft, BottomRight, TopLeft, TopRight;
   double HeightTolerance; // heights closer than this on its sides are one (PointTolerance)
 };
+
+/// Whether x is one of the edge's ends, where HeightAt gives a vertex's own height.
+bool EndsAt(const SweepEdge& e, double x)
+{
+  return x <= e.Left.x || x >= e.Right.x;
+}
+
+/// A trapezoid's corners on its side at x, between edges bottom and top. Where the two edges meet
+/// there (the corners no further apart than tolerance, or the top one a little below: rounding),
+/// the meeting point is often a vertex of the rings that lies on the other edge only to rounding:
+/// a crossing ClipInto computed on a tile edge, which Sutherland-Hodgman then runs along to the
+/// tile's corner and back. When one edge ends at x and the other is interpolated there, both
+/// corners take the end's height, the vertex's own: on a steep edge a rounding of x moves the
+/// interpolated height far (6.7e-14 at a slope of 3700), and the piece's corner, moved that much
+/// along the steep edge, made the piece 1.6e-16 too large, 2e-12 of its tile's clipped area.
+/// Otherwise the top corner is kept no lower than the bottom one.
+void SideCorners(const SweepEdge& bottom,
+  const SweepEdge& top,
+  double x,
+  double tolerance,
+  Corner& bottomCorner,
+  Corner& topCorner)
+{
+  const double low = HeightAt(bottom, x), high = HeightAt(top, x);
+  const bool bottomEnds = EndsAt(bottom, x), topEnds = EndsAt(top, x);
+  bottomCorner = { { x, low }, bottomEnds };
+  topCorner = high >= low ? Corner{ { x, high }, topEnds } : bottomCorner;
+  if (high - low <= tolerance && topEnds != bottomEnds)
+  {
+    bottomCorner = topCorner = { { x, topEnds ? high : low }, true };
+  }
+}
 
 Trapezoid MakeTrapezoid(const std::vector<SweepEdge>& edges,
   std::size_t bottom,
@@ -142,11 +182,8 @@ Trapezoid MakeTrapezoid(const std::vector<SweepEdge>& edges,
   Trapezoid t{ bottom, top, {}, {}, {}, {}, 0.0 };
   t.HeightTolerance =
     tolerance * (1.0 + std::max(edges[bottom].Steepness(), edges[top].Steepness()));
-  t.BottomLeft = { left, HeightAt(edges[bottom], left) };
-  t.BottomRight = { right, HeightAt(edges[bottom], right) };
-  // (rounding can put a corner of the top edge a little below the bottom one's where they meet)
-  t.TopLeft = { left, std::max(HeightAt(edges[top], left), t.BottomLeft.y) };
-  t.TopRight = { right, std::max(HeightAt(edges[top], right), t.BottomRight.y) };
+  SideCorners(edges[bottom], edges[top], left, t.HeightTolerance, t.BottomLeft, t.TopLeft);
+  SideCorners(edges[bottom], edges[top], right, t.HeightTolerance, t.BottomRight, t.TopRight);
   return t;
 }
 
@@ -214,8 +251,8 @@ std::vector<Trapezoid> SlabTrapezoids(const std::vector<SweepEdge>& edges,
     else if (below > 0 && winding <= 0)
     {
       const Trapezoid t = MakeTrapezoid(edges, bottom, e, left, right, tolerance);
-      if (t.TopLeft.y - t.BottomLeft.y > t.HeightTolerance ||
-        t.TopRight.y - t.BottomRight.y > t.HeightTolerance)
+      if (t.TopLeft.At.y - t.BottomLeft.At.y > t.HeightTolerance ||
+        t.TopRight.At.y - t.BottomRight.At.y > t.HeightTolerance)
       {
         slab.push_back(t); // (not a sliver between edges along one line)
       }
@@ -298,12 +335,15 @@ private:
   struct Piece
   {
     std::vector<Point2> Lower, Upper;
+    bool LowerEndIsVertex, UpperEndIsVertex; // whether Lower.back(), Upper.back() are
     std::size_t Bottom, Top;
     double LastTolerance, LargestTolerance;
 
     explicit Piece(const Trapezoid& t)
-      : Lower{ t.BottomLeft, t.BottomRight }
-      , Upper{ t.TopLeft, t.TopRight }
+      : Lower{ t.BottomLeft.At, t.BottomRight.At }
+      , Upper{ t.TopLeft.At, t.TopRight.At }
+      , LowerEndIsVertex(t.BottomRight.IsVertex)
+      , UpperEndIsVertex(t.TopRight.IsVertex)
       , Bottom(t.Bottom)
       , Top(t.Top)
       , LastTolerance(t.HeightTolerance)
@@ -315,23 +355,29 @@ private:
     /// longer than either's height tolerance.
     bool Meets(const Trapezoid& t) const
     {
-      return std::min(this->Upper.back().y, t.TopLeft.y) -
-        std::max(this->Lower.back().y, t.BottomLeft.y) >
+      return std::min(this->Upper.back().y, t.TopLeft.At.y) -
+        std::max(this->Lower.back().y, t.BottomLeft.At.y) >
         std::max(this->LastTolerance, t.HeightTolerance);
     }
 
     /// Whether this piece's right side lies wholly below t's left side (no stretch in common).
-    bool Below(const Trapezoid& t) const { return this->Upper.back().y <= t.BottomLeft.y; }
+    bool Below(const Trapezoid& t) const { return this->Upper.back().y <= t.BottomLeft.At.y; }
 
     /// Whether this piece's right side lies wholly above t's left side.
-    bool Above(const Trapezoid& t) const { return this->Lower.back().y >= t.TopLeft.y; }
+    bool Above(const Trapezoid& t) const { return this->Lower.back().y >= t.TopLeft.At.y; }
 
     /// Takes in t, which Meets this piece.
     void Extend(const Trapezoid& t)
     {
       const double tolerance = std::max(this->LastTolerance, t.HeightTolerance);
-      Continue(this->Lower, t.BottomLeft, t.BottomRight, t.Bottom == this->Bottom, tolerance);
-      Continue(this->Upper, t.TopLeft, t.TopRight, t.Top == this->Top, tolerance);
+      Continue(this->Lower,
+        this->LowerEndIsVertex,
+        t.BottomLeft,
+        t.BottomRight,
+        t.Bottom == this->Bottom,
+        tolerance);
+      Continue(
+        this->Upper, this->UpperEndIsVertex, t.TopLeft, t.TopRight, t.Top == this->Top, tolerance);
       this->Bottom = t.Bottom;
       this->Top = t.Top;
       this->LastTolerance = t.HeightTolerance;
@@ -341,26 +387,35 @@ private:
     /// A boundary taken on to the next slab's side, from left to right: a vertical step first
     /// where the sides' ends differ by more than tolerance (a vertical edge of the rings, or a
     /// piece ending beside this one; less is the rounding of one point seen from two edges);
-    /// along the same edge the joint is no corner, and its point is replaced, not kept.
+    /// along the same edge the joint is no corner, and its point is replaced, not kept. Where the
+    /// sides' ends are one point, it is the one that is a vertex of the rings, if either is (see
+    /// SideCorners: the other's height, interpolated along a steep edge, may be far off).
+    /// endIsVertex: whether boundary.back() is a vertex, before and after.
     static void Continue(std::vector<Point2>& boundary,
-      const Point2& left,
-      const Point2& right,
+      bool& endIsVertex,
+      const Corner& left,
+      const Corner& right,
       bool sameEdge,
       double tolerance)
     {
-      if (std::fabs(boundary.back().y - left.y) > tolerance)
+      if (std::fabs(boundary.back().y - left.At.y) > tolerance)
       {
-        boundary.push_back(left);
+        boundary.push_back(left.At);
         sameEdge = false;
+      }
+      else if (left.IsVertex && !endIsVertex)
+      {
+        boundary.back() = left.At;
       }
       if (sameEdge)
       {
-        boundary.back() = right;
+        boundary.back() = right.At;
       }
       else
       {
-        boundary.push_back(right);
+        boundary.push_back(right.At);
       }
+      endIsVertex = right.IsVertex;
     }
   };
 

@@ -160,22 +160,27 @@ Box2 CertainInterior(const std::vector<HalfPlane>& effective)
 }
 } // namespace
 
-Window::Window(const std::vector<HalfPlane>& constraints)
+Window::Window(const std::vector<HalfPlane>& constraints, const ConstraintNames& names)
 {
   const std::size_t n = constraints.size();
+  // Constraint i as the caller names it.
+  const auto named = [&](std::size_t i)
+  {
+    const bool given = i < names.Each.size() && !names.Each[i].empty();
+    return given ? names.Each[i] : "window constraint " + std::to_string(i);
+  };
   for (std::size_t i = 0; i < n; ++i)
   {
     const HalfPlane& h = constraints[i];
     if (!std::isfinite(h.a) || !std::isfinite(h.b) || !std::isfinite(h.c))
     {
-      throw InputError("window constraint " + std::to_string(i) + " has a " +
-        (std::isnan(h.a) || std::isnan(h.b) || std::isnan(h.c) ? "NaN" : "infinite") +
+      throw InputError(named(i) + " has " +
+        (std::isnan(h.a) || std::isnan(h.b) || std::isnan(h.c) ? "a NaN" : "an infinite") +
         " coefficient " + describe(h));
     }
     if (h.a == 0.0 && h.b == 0.0)
     {
-      throw InputError("window constraint " + std::to_string(i) +
-        " has a == b == 0: it is no half-plane " + describe(h));
+      throw InputError(named(i) + " has a == b == 0: it is no half-plane " + describe(h));
     }
   }
   if (n == 0)
@@ -209,9 +214,8 @@ Window::Window(const std::vector<HalfPlane>& constraints)
         }
         else if (offset >= 0)
         {
-          throw InputError("window is empty: constraints " + std::to_string(i) + " " +
-            describe(hi) + " and " + std::to_string(j) + " " + describe(hj) +
-            " are parallel and leave no room between them");
+          throw InputError("window is empty: " + named(i) + " " + describe(hi) + " and " +
+            named(j) + " " + describe(hj) + " are parallel and leave no room between them");
         }
       }
       else if (rate < 0)
@@ -241,8 +245,8 @@ Window::Window(const std::vector<HalfPlane>& constraints)
     {
       // A ray (or the whole line) of L_i satisfies every other constraint strictly; points just
       // inside it are in the window, whose closure then contains a ray.
-      throw InputError("window is unbounded: the boundary line of constraint " + std::to_string(i) +
-        " " + describe(hi) + " is not closed off by the other constraints" +
+      throw InputError("window is unbounded: the boundary line of " + named(i) + " " +
+        describe(hi) + " is not closed off by the other constraints" +
         (hasEntry || hasExit ? " at one end" : " at either end"));
     }
     effective[i] = value_at_crossing(hi, constraints[entry], constraints[exit]) < 0;
@@ -256,8 +260,9 @@ Window::Window(const std::vector<HalfPlane>& constraints)
   if (ids.size() < 3)
   {
     // A nonempty open intersection has a boundary of positive length on some constraint.
-    throw InputError("window is empty: the " + std::to_string(n) +
-      " constraints have no interior point in common");
+    throw InputError("window is empty: " +
+      (names.All.empty() ? "the " + std::to_string(n) + " window constraints" : names.All) +
+      " have no interior point in common");
   }
 
   // Anticlockwise order around a convex polygon is the angular order of the outward normals,

@@ -6,6 +6,7 @@
 #include "geometry.h"
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace tessera
@@ -19,12 +20,24 @@ struct HalfPlane
   double c = 0.0;
 };
 
+/// How a Window's error messages name the constraints it was given, for a caller that assembles
+/// them from several sources (a rectangle's sides and a user's constraints, say).
+struct ConstraintNames
+{
+  /// Each[i] names constraint i ("the WindowBounds side x > xmin"); a constraint without an
+  /// entry, or with an empty one, is "window constraint i".
+  std::vector<std::string> Each;
+  /// All the constraints together, the subject of "... have no interior point in common"
+  /// ("WindowBounds and the 2 window constraints"); empty: "the N window constraints".
+  std::string All;
+};
+
 class Window
 {
 public:
-  /// Throws InputError for a constraint with a NaN/Inf coefficient or a == b == 0 (naming its
-  /// index), and for an empty or unbounded intersection.
-  explicit Window(const std::vector<HalfPlane>& constraints);
+  /// Throws InputError for a constraint with a NaN/Inf coefficient or a == b == 0 (naming it, by
+  /// default as "window constraint i"), and for an empty or unbounded intersection.
+  explicit Window(const std::vector<HalfPlane>& constraints, const ConstraintNames& names = {});
 
   /// xmin < x < xmax, ymin < y < ymax. Throws InputError unless xmin < xmax and ymin < ymax.
   static Window Rectangle(double xmin, double xmax, double ymin, double ymax);

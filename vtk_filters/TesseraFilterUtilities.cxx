@@ -137,6 +137,9 @@ tessera::Window ChooseWindow(const double bounds[4],
     }
   }
   std::vector<tessera::HalfPlane> halfPlanes;
+  // Errors name the rectangle's sides as such and the user's constraints by their own numbers
+  // (AddWindowConstraint's order, from 0), not by their place after the sides.
+  tessera::ConstraintNames naming;
   const bool haveBounds = bounds[0] < bounds[1] && bounds[2] < bounds[3];
   if (haveBounds)
   {
@@ -144,18 +147,29 @@ tessera::Window ChooseWindow(const double bounds[4],
     halfPlanes.push_back({ 1.0, 0.0, -bounds[1] }); // x < xmax
     halfPlanes.push_back({ 0.0, -1.0, bounds[2] }); // y > ymin
     halfPlanes.push_back({ 0.0, 1.0, -bounds[3] }); // y < ymax
+    naming.Each = { "the WindowBounds side x > xmin",
+      "the WindowBounds side x < xmax",
+      "the WindowBounds side y > ymin",
+      "the WindowBounds side y < ymax" };
   }
-  for (std::size_t k = 0; k + 2 < constraints.size(); k += 3)
+  std::size_t userCount = 0;
+  for (std::size_t k = 0; k + 2 < constraints.size(); k += 3, ++userCount)
   {
     halfPlanes.push_back({ constraints[k], constraints[k + 1], constraints[k + 2] });
+    naming.Each.push_back("window constraint " + std::to_string(userCount));
   }
   if (!halfPlanes.empty())
   {
-    if (haveBounds && halfPlanes.size() == 4)
+    if (haveBounds && userCount == 0)
     {
       return Representable(tessera::Window::Rectangle(bounds[0], bounds[1], bounds[2], bounds[3]));
     }
-    return Representable(tessera::Window(halfPlanes));
+    if (haveBounds)
+    {
+      naming.All = "WindowBounds and the " + std::to_string(userCount) + " window constraint" +
+        (userCount == 1 ? "" : "s");
+    }
+    return Representable(tessera::Window(halfPlanes, naming));
   }
   if (!(padding >= 0.0) || !std::isfinite(padding))
   {

@@ -11,10 +11,10 @@
 #include "vtkObjectFactory.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkUnsignedCharArray.h"
 
 #include "TesseraFilterUtilities.h"
 #include "clip.h"
+#include "display_pieces.h"
 #include "polygon_area.h"
 
 #include <algorithm>
@@ -24,6 +24,16 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkWindowClip);
+
+namespace
+{
+/// The filter's own cell arrays. Their names are API: an input cell-data array with one of them
+/// is passed under another name (tessera_vtk::RenameArraysNamed).
+const std::vector<const char*> OwnArrayNames{ "TileId",
+  "ClippedArea",
+  "AreaFraction",
+  "PieceArea" };
+} // namespace
 
 //------------------------------------------------------------------------------
 vtkWindowClip::vtkWindowClip()
@@ -62,14 +72,17 @@ int vtkWindowClip::RequestData(vtkInformation*,
     vtkCellData* outCD = output->GetCellData();
     vtkCellData* inCD = tiles->GetCellData();
     outCD->CopyAllocate(inCD);
+    // Adding the filter's arrays would replace the input's of the same names silently.
+    const tessera_vtk::RenamedArrays renamed =
+      tessera_vtk::RenameArraysNamed(outCD, OwnArrayNames, false);
     vtkNew<vtkIdTypeArray> tileIds;
-    tileIds->SetName("TileId");
+    tileIds->SetName(OwnArrayNames[0]);
     vtkNew<vtkDoubleArray> clippedAreas;
-    clippedAreas->SetName("ClippedArea");
+    clippedAreas->SetName(OwnArrayNames[1]);
     vtkNew<vtkDoubleArray> fractions;
-    fractions->SetName("AreaFraction");
-    vtkNew<vtkUnsignedCharArray> holes;
-    holes->SetName("Hole");
+    fractions->SetName(OwnArrayNames[2]);
+    vtkNew<vtkDoubleArray> pieceAreas;
+    pieceAreas->SetName(OwnArrayNames[3]);
 
     tessera::Catchment::Workspace work;
     std::vector<tessera::Point2> tile;
@@ -124,27 +137,25 @@ int vtkWindowClip::RequestData(vtkInformation*,
       {
         continue;
       }
-      for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
+      // ClipInto's rings are right for areas, not for display (zero-width spikes and bridges,
+      // lobes joined into one ring, holes as clockwise rings): one cell per display piece instead,
+      // each a simple polygon, the pieces disjoint and filling tile & window.
+      const tessera::ClippedRings pieces = tessera::DisplayPieces(rings);
+      for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
       {
-        const std::size_t begin = rings.RingOffsets[r], end = rings.RingOffsets[r + 1];
-        if (end - begin < 3)
-        {
-          continue;
-        }
+        const std::size_t begin = pieces.RingOffsets[r], end = pieces.RingOffsets[r + 1];
         polys->InsertNextCell(static_cast<vtkIdType>(end - begin));
         for (std::size_t k = begin; k < end; ++k)
         {
-          const auto& a = rings.Vertices[k];
+          const auto& a = pieces.Vertices[k];
           polys->InsertCellPoint(points->InsertNextPoint(a.x, a.y, 0.0));
         }
-        // Rings come with the region on their left: a clockwise ring bounds a hole.
-        const bool hole =
-          tessera::CompensatedPolygonArea(&rings.Vertices[begin], end - begin) < 0.0;
         outCD->CopyData(inCD, c, polys->GetNumberOfCells() - 1);
         tileIds->InsertNextValue(c);
         clippedAreas->InsertNextValue(clipped);
         fractions->InsertNextValue(ownArea > 0.0 ? clipped / ownArea : 0.0);
-        holes->InsertNextValue(hole ? 1 : 0);
+        pieceAreas->InsertNextValue(
+          tessera::CompensatedPolygonArea(&pieces.Vertices[begin], end - begin));
       }
     }
     output->SetPoints(points);
@@ -152,7 +163,12 @@ int vtkWindowClip::RequestData(vtkInformation*,
     outCD->AddArray(tileIds);
     outCD->AddArray(clippedAreas);
     outCD->AddArray(fractions);
-    outCD->AddArray(holes);
+    outCD->AddArray(pieceAreas);
+    if (!renamed.empty())
+    {
+      vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
+                        renamed, "cell-data", "the clipped tiles", "cell"));
+    }
     if (skipped->GetNumberOfValues() > 0)
     {
       output->GetFieldData()->AddArray(skipped);

@@ -12,13 +12,19 @@
  * of its vertices, in float or double as its points are stored: its area differing from its convex
  * hull's by more than a millionth), whose clipped area would otherwise be its hull's.
  *
- * The output holds one polygon per ring of each clipped tile (a tile cut into two lobes gives two
- * polygons; a tile around a hole gives its outer ring and the hole's ring, flagged), with the
- * tile's cell data and:
+ * The output holds each clipped tile as one or more polygons, its display pieces: simple,
+ * anticlockwise, without holes, not overlapping one another, inside the window, together filling
+ * exactly tile & window, so that vtkTriangleFilter, Integrate Variables and rendering read them as
+ * meant. A tile that the window cuts into lobes gives one polygon per lobe or more; a tile around
+ * a hole is cut into pieces around it (x-monotone pieces: a vertical line meets each in one
+ * interval; an x-monotone part is one piece). Each polygon has the tile's cell data and:
  * - `TileId` (vtkIdType): the input 0 cell the polygon comes from;
- * - `ClippedArea` (double): the area of the whole tile inside the window (same on all its rings);
+ * - `ClippedArea` (double): the area of the whole tile inside the window (same on all its pieces);
  * - `AreaFraction` (double): ClippedArea over the tile's own area;
- * - `Hole` (unsigned char): 1 for a ring that bounds a hole (clockwise), 0 otherwise.
+ * - `PieceArea` (double): the area of this polygon; a tile's PieceArea values add up to its
+ *   ClippedArea (to rounding).
+ * An input cell-data array with one of these four names is passed under the first free name of
+ * NAME_input, NAME_input_2, ..., with a warning naming it.
  * Tiles entirely outside the window give no polygon. Cells of input 0 that are not polygons,
  * triangles or quads (lines, vertices, strips), and polygons of fewer than 3 points, are not
  * clipped: a warning counts them and the output's field data array `SkippedCellIds` (vtkIdType)

@@ -3,10 +3,13 @@
 
 #include "areal_average.h"
 #include "clip.h"
+#include "dirichlet_tessellation.h"
 #include "display_pieces.h"
 #include "errors.h"
 #include "polygon_area.h"
 #include "polygon_validation.h"
+#include "tiles.h"
+#include "window.h"
 
 #include <gtest/gtest.h>
 
@@ -211,6 +214,67 @@ TEST(DisplayPieces, RandomTilesOverHolesAndBays)
     SCOPED_TRACE("tile " + std::to_string(t));
     ExpectPiecesOfTheRegion(comb, tile);
   }
+}
+
+// Tessellation tiles (random points in the unit square) over a star-shaped catchment and over a
+// square with a star-shaped hole: every tile's pieces are simple and their areas add up to its
+// clipped area to 1e-12 of it (or of a hundredth of the tile, for slivers, whose clipped area is
+// a sum of signed rings that cancel). Tiles have steep edges, and Sutherland-Hodgman runs along
+// them to a tile corner and back from a crossing that lies on the edge only to rounding. Where a
+// piece's corner took the edge's height interpolated at the crossing's x instead of the
+// crossing's own (6.7e-14 off at a slope of 3700; where the corners of a side met, or where a
+// piece went on into the next slab), the piece came out up to 3.4e-16 too large or small, 2e-12 of
+// the tile's clipped area: 10 tiles of the 100 trials.
+TEST(DisplayPieces, PiecesOfTessellatedTilesAddUpToTheClippedArea)
+{
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const auto star = [&](Point2 centre, int count, double rMin, double rMax)
+  {
+    std::vector<Point2> ring;
+    for (int k = 0; k < count; ++k)
+    {
+      const double angle = 2.0 * M_PI * (k + 0.1 + 0.8 * u(random)) / count;
+      const double radius = rMin + (rMax - rMin) * u(random);
+      ring.push_back({ centre.x + radius * std::cos(angle), centre.y + radius * std::sin(angle) });
+    }
+    return ring;
+  };
+  int tilesChecked = 0;
+  for (int trial = 0; trial < 100; ++trial)
+  {
+    const Catchment catchment = trial % 2 == 0
+      ? MakeCatchment({ star({ 0.5, 0.5 }, 23, 0.12, 0.45) })
+      : MakeCatchment({ Rectangle(0.05, 0.05, 0.95, 0.95), star({ 0.52, 0.47 }, 17, 0.1, 0.3) });
+    std::vector<Point2> points(static_cast<std::size_t>(100 + 50 * trial));
+    for (Point2& p : points)
+    {
+      p = { u(random), u(random) };
+    }
+    const DirichletTessellation tessellation(Window::Rectangle(-0.01, 1.01, -0.02, 1.03), points);
+    const TileSet tiles = ComputeTiles(tessellation);
+    for (std::size_t t = 0; t + 1 < tiles.Offsets.size(); ++t)
+    {
+      const std::vector<Point2> tile(
+        tiles.Vertices.begin() + tiles.Offsets[t], tiles.Vertices.begin() + tiles.Offsets[t + 1]);
+      const ClippedTile clipped = catchment.Clip(tile);
+      const ClippedRings pieces = DisplayPieces(clipped.Rings);
+      double total = 0.0;
+      for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
+      {
+        const std::size_t begin = pieces.RingOffsets[r], count = pieces.RingOffsets[r + 1] - begin;
+        const std::vector<Point2> ring(pieces.Vertices.begin() + static_cast<std::ptrdiff_t>(begin),
+          pieces.Vertices.begin() + static_cast<std::ptrdiff_t>(begin + count));
+        EXPECT_NO_THROW(ValidateRings({ 0, count }, ring))
+          << "trial " << trial << " tile " << t << ": piece " << r << " is not simple";
+        total += CompensatedPolygonArea(ring.data(), count);
+      }
+      EXPECT_NEAR(total, clipped.Area, 1e-12 * std::max(clipped.Area, 1e-2 * tiles.Areas[t]))
+        << "trial " << trial << " tile " << t;
+      tilesChecked += clipped.Area > 0.0 && clipped.Area < tiles.Areas[t];
+    }
+  }
+  EXPECT_GT(tilesChecked, 1000); // tiles that the catchment cuts
 }
 
 TEST(DisplayPieces, PiecesOfTessellatedTilesAreSimpleInLonLat)

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+using tessera::ConstraintNames;
 using tessera::HalfPlane;
 using tessera::InputError;
 using tessera::Point2;
@@ -344,9 +345,31 @@ TEST(Window, BadConstraintsNameTheirIndex)
   hs.push_back({ 1, std::nan(""), 0 });
   expect_input_error([&] { Window w(hs); }, "constraint 4 has a NaN");
   hs.back() = { 1, 0, std::numeric_limits<double>::infinity() };
-  expect_input_error([&] { Window w(hs); }, "constraint 4 has a");
+  expect_input_error([&] { Window w(hs); }, "window constraint 4 has an infinite coefficient");
   hs.back() = { 0, 0, -1 };
   expect_input_error([&] { Window w(hs); }, "constraint 4 has a == b == 0");
+  hs.back() = { 1, 1, 1 };
+  expect_input_error(
+    [&] { Window w(hs); }, "window is empty: the 5 window constraints have no interior point");
+}
+
+// A caller that assembles the constraints (a rectangle's four sides, then a user's) names them in
+// errors as its user knows them; unnamed ones keep their index.
+TEST(Window, ErrorsUseTheCallersNames)
+{
+  std::vector<HalfPlane> hs = unit_square_constraints();
+  ConstraintNames names;
+  names.Each = { "side 0", "side 1", "side 2", "side 3", "user constraint 0" };
+  names.All = "the sides and the 1 user constraint";
+  hs.push_back({ 0, 0, -1 });
+  expect_input_error([&] { Window w(hs, names); }, "user constraint 0 has a == b == 0");
+  hs.back() = { 1, 1, 1 };
+  expect_input_error([&] { Window w(hs, names); },
+    "window is empty: the sides and the 1 user constraint have no interior point in common");
+  hs.back() = { 1, 0, 1 }; // x < -1, against the square's x > 0
+  expect_input_error([&] { Window w(hs, names); }, " and user constraint 0 (a = 1");
+  names.Each.pop_back();
+  expect_input_error([&] { Window w(hs, names); }, " and window constraint 4 (a = 1");
 }
 
 TEST(Window, RedundancyMatchesExactReference)

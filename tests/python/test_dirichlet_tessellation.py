@@ -513,6 +513,41 @@ def test_automatic_window_keeps_every_point_and_bad_windows_are_named():
                     f"{name}: an error saying '{expected}', not NaN areas: {messages}")
 
 
+def test_window_constraint_errors_name_them_as_the_user_added_them():
+    # With WindowBounds, the window is the rectangle's four sides and then the user's constraints:
+    # errors used to number those from 4 ("window constraint 4" for the first one added) and to
+    # count the sides as constraints ("the 5 constraints").
+    cases = [
+        ("a == b == 0", (0, 1, 0, 1), [(0, 0, -1)],
+         "window constraint 0 has a == b == 0: it is no half-plane (a = 0, b = 0, c = -1)"),
+        ("an infinite coefficient", (0, 1, 0, 1), [(0.5, 0.5, -0.5), (math.inf, 1, 1)],
+         "window constraint 1 has an infinite coefficient (a = inf, b = 1, c = 1)"),
+        ("no interior point", (0, 1, 0, 1), [(1, 1, 1)],
+         "window is empty: WindowBounds and the 1 window constraint have no interior point in common"),
+        ("two constraints, no interior point", (0, 1, 0, 1), [(1, 1, 1), (-1, 0, -0.5)],
+         "window is empty: WindowBounds and the 2 window constraints have no interior point in common"),
+        ("parallel to a side", (0, 1, 0, 1), [(1, 0, 1)],
+         "window is empty: the WindowBounds side x > xmin (a = -1, b = 0, c = 0) and window constraint 0 "
+         "(a = 1, b = 0, c = 1) are parallel and leave no room between them"),
+        ("without WindowBounds", None, [(1, 0, -1), (-1, 0, 0), (0, 1, -1), (0, -1, 0), (0, 0, 2)],
+         "window constraint 4 has a == b == 0"),
+        ("unbounded without WindowBounds", None, [(1, 0, -1), (0, 1, -1)],
+         "the boundary line of window constraint 0 (a = 1, b = 0, c = -1) is not closed off"),
+    ]
+    for name, bounds, constraints, expected in cases:
+        for f in (vtkDirichletTessellation(), vtkDelaunayTriangulation()):
+            messages = messages_of(f)
+            f.SetInputData(make_points([(0.2, 0.3), (0.7, 0.6), (0.4, 0.9)]))
+            if bounds:
+                f.SetWindowBounds(*bounds)
+            for a, b, c in constraints:
+                f.AddWindowConstraint(a, b, c)
+            f.Update()
+            what = f"{f.GetClassName()}, {name}"
+            assert_that(len(messages) == 1 and expected in messages[0], f"{what}: '{expected}' in {messages}")
+            assert_that("a infinite" not in messages[0], f"{what}: {messages[0]}")
+
+
 def points_with_attribute_arrays(coords):
     """make_points with arrays named like the filter's own (Area, PointId, NeighborCount), one named
     like the first free name for Area (Area_input), a plain one, global ids and pedigree ids: each
@@ -637,5 +672,6 @@ if __name__ == "__main__":
          test_32_bit_cell_arrays_survive_a_vtp_round_trip,
          test_graph_off_leaves_the_tiles_unchanged,
          test_automatic_window_keeps_every_point_and_bad_windows_are_named,
+         test_window_constraint_errors_name_them_as_the_user_added_them,
          test_input_arrays_named_like_the_filters_are_kept_under_another_name,
          test_delaunay_passes_point_data_with_the_input_points])

@@ -1,0 +1,327 @@
+"""vtkWindowClip from Python: its cells are what a renderer and VTK's mesh filters read as meant
+(simple polygons inside the window, not overlapping, filling tile & window), checked with an exact
+segment-intersection test, vtkTriangleFilter's triangles and point sampling; and the filter's own
+array names."""
+
+import math
+import random
+from fractions import Fraction
+
+import numpy as np
+from matplotlib.path import Path
+from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkIntArray, vtkPoints
+from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkFiltersCore import vtkTriangleFilter
+
+from tessera import vtkDirichletTessellation, vtkWindowClip
+from tessera_testing import assert_close, assert_that, make_points, messages_of, run
+
+
+def polygon(rings):
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    polys = vtkCellArray()
+    for ring in rings:
+        polys.InsertNextCell(len(ring))
+        for x, y in ring:
+            polys.InsertCellPoint(points.InsertNextPoint(x, y, 0.0))
+    data = vtkPolyData()
+    data.SetPoints(points)
+    data.SetPolys(polys)
+    return data
+
+
+def clip(tiles, window_rings):
+    f = vtkWindowClip()
+    errors = messages_of(f)
+    f.SetInputData(tiles)
+    f.SetWindowData(polygon(window_rings))
+    f.Update()
+    assert_that(not errors, f"no error: {errors}")
+    return f.GetOutput()
+
+
+def cell_rings(data):
+    rings = []
+    for c in range(data.GetNumberOfCells()):
+        ids = data.GetCell(c).GetPointIds()
+        rings.append([data.GetPoint(ids.GetId(k))[:2] for k in range(ids.GetNumberOfIds())])
+    return rings
+
+
+def cell_values(data, name):
+    array = data.GetCellData().GetArray(name)
+    assert_that(array is not None, f"cell array {name}")
+    return [array.GetValue(c) for c in range(data.GetNumberOfCells())]
+
+
+def shoelace(ring):
+    return 0.5 * math.fsum(a[0] * b[1] - b[0] * a[1] for a, b in zip(ring, ring[1:] + ring[:1]))
+
+
+def exact_area(ring):
+    """The polygon's signed area, exactly (as a fraction)."""
+    q = [(Fraction(x), Fraction(y)) for x, y in ring]
+    return sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(q, q[1:] + q[:1])) / 2
+
+
+# ---- an exact simplicity test --------------------------------------------------------------------
+
+def orient(a, b, c):
+    """Sign of the turn a -> b -> c, exactly (the doubles as fractions)."""
+    d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+    return (d > 0) - (d < 0)
+
+
+def on_segment(p, a, b):
+    """p on the closed segment a-b (p, a, b collinear)."""
+    return min(a[0], b[0]) <= p[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= p[1] <= max(a[1], b[1])
+
+
+def segments_meet(a, b, c, d):
+    """Whether the closed segments a-b and c-d have a point in common."""
+    o1, o2, o3, o4 = orient(a, b, c), orient(a, b, d), orient(c, d, a), orient(c, d, b)
+    if o1 * o2 < 0 and o3 * o4 < 0:
+        return True
+    return ((o1 == 0 and on_segment(c, a, b)) or (o2 == 0 and on_segment(d, a, b))
+            or (o3 == 0 and on_segment(a, c, d)) or (o4 == 0 and on_segment(b, c, d)))
+
+
+def simplicity_defect(ring):
+    """None for a simple polygon (at least 3 distinct vertices, positive area, edges meeting only
+    where consecutive ones share their vertex, no spike back along an edge); otherwise what is
+    wrong. Exact: the vertices are taken as fractions."""
+    q = [(Fraction(x), Fraction(y)) for x, y in ring]
+    n = len(q)
+    if n < 3 or len(set(q)) != n:
+        return f"{n} vertices, {len(set(q))} distinct"
+    edges = [(q[i], q[(i + 1) % n]) for i in range(n)]
+    for i in range(n):
+        a, b = edges[i]
+        c = edges[(i + 1) % n][1]
+        if orient(a, b, c) == 0 and (c[0] - b[0]) * (a[0] - b[0]) + (c[1] - b[1]) * (a[1] - b[1]) > 0:
+            return f"a spike at vertex {(i + 1) % n}"
+        for j in range(i + 2, n):
+            if i == 0 and j == n - 1:
+                continue  # consecutive (the closing edge)
+            if segments_meet(a, b, *edges[j]):
+                return f"edges {i} and {j} meet"
+    if exact_area(ring) <= 0:
+        return "not anticlockwise"
+    return None
+
+
+# ---- windows ---------------------------------------------------------------------------------------
+
+CONVEX_QUAD = [[(0.13, 0.08), (0.91, 0.17), (0.83, 0.93), (0.11, 0.77)]]
+
+
+def star(centre, count, r_min, r_max, rng, clockwise=False):
+    ring = []
+    for k in range(count):
+        angle = 2 * math.pi * (k + 0.1 + 0.8 * rng.random()) / count
+        radius = r_min + (r_max - r_min) * rng.random()
+        ring.append((centre[0] + radius * math.cos(angle), centre[1] + radius * math.sin(angle)))
+    return ring[::-1] if clockwise else ring
+
+
+def windows():
+    rng = random.Random(5)
+    return {"a convex quad": CONVEX_QUAD,
+            "a star": [star((0.5, 0.5), 23, 0.12, 0.45, rng)],
+            "a square with a star-shaped hole": [[(0.05, 0.05), (0.95, 0.05), (0.95, 0.95), (0.05, 0.95)],
+                                                 star((0.52, 0.47), 17, 0.1, 0.3, rng, clockwise=True)]}
+
+
+def window_area(rings):
+    """Even-odd area: outer ring minus the rings inside it (the windows here nest one deep)."""
+    areas = sorted((abs(shoelace(r)) for r in rings), reverse=True)
+    return areas[0] - math.fsum(areas[1:])
+
+
+def window_paths(rings):
+    return [Path(np.array(r)) for r in rings]
+
+
+def in_window(paths, points):
+    """Even-odd membership of points."""
+    inside = np.zeros(len(points), dtype=int)
+    for path in paths:
+        inside += path.contains_points(points)
+    return inside % 2 == 1
+
+
+def distances_to_boundary(rings, points):
+    """For each point (an n x 2 array), its distance to the nearest edge of the rings."""
+    best = np.full(len(points), np.inf)
+    for ring in rings:
+        for a, b in zip(ring, ring[1:] + ring[:1]):
+            a, b = np.array(a), np.array(b)
+            t = np.clip((points - a) @ (b - a) / ((b - a) @ (b - a)), 0.0, 1.0)
+            best = np.minimum(best, np.hypot(*(points - a - t[:, None] * (b - a)).T))
+    return best
+
+
+def distance_to_boundary(rings, p):
+    best = math.inf
+    for ring in rings:
+        for a, b in zip(ring, ring[1:] + ring[:1]):
+            ax, ay, bx, by = *a, *b
+            t = max(0.0, min(1.0, ((p[0] - ax) * (bx - ax) + (p[1] - ay) * (by - ay))
+                             / ((bx - ax) ** 2 + (by - ay) ** 2)))
+            best = min(best, math.hypot(p[0] - ax - t * (bx - ax), p[1] - ay - t * (by - ay)))
+    return best
+
+
+def random_tiling(seed, count):
+    rng = np.random.default_rng(seed)
+    tess = vtkDirichletTessellation()
+    tess.SetInputData(make_points([tuple(p) for p in rng.random((count, 2))]))
+    tess.SetWindowBounds(-0.01, 1.01, -0.02, 1.03)
+    tess.Update()
+    return tess.GetOutput(0)
+
+
+def triangulated_area_by_tile(data):
+    triangles = vtkTriangleFilter()
+    triangles.SetInputData(data)
+    triangles.Update()
+    out = triangles.GetOutput()
+    tile_ids = cell_values(out, "TileId")
+    sums = {}
+    for tile, ring in zip(tile_ids, cell_rings(out)):
+        assert_that(len(ring) == 3, f"vtkTriangleFilter gives triangles, not {len(ring)} points")
+        sums.setdefault(tile, []).append(exact_area(ring))
+    return {tile: float(sum(areas)) for tile, areas in sums.items()}
+
+
+def test_cells_are_simple_pieces_that_fill_tile_and_window():
+    # Per tile, the cells' areas (PieceArea, and vtkTriangleFilter's triangles measured exactly)
+    # add up to ClippedArea within 1e-12 of it, or of a hundredth of the tile for a sliver: its
+    # ClippedArea is a sum of signed rings that cancel (a tile mostly in the hole), known to the
+    # rounding of the tile's area, not of its own.
+    for seed, count in [(1, 60), (2, 400), (3, 2000)]:
+        tiles = random_tiling(seed, count)
+        tile_areas = [float(exact_area(ring)) for ring in cell_rings(tiles)]
+        for name, rings in windows().items():
+            what = f"{name}, {count} tiles"
+            out = clip(tiles, rings)
+            pieces = cell_rings(out)
+            tile_ids = cell_values(out, "TileId")
+            clipped = cell_values(out, "ClippedArea")
+            piece_areas = cell_values(out, "PieceArea")
+            assert_that(out.GetCellData().GetArray("PieceArea").GetDataTypeAsString() == "double",
+                        f"{what}: PieceArea is double")
+            assert_that(out.GetCellData().GetArray("Hole") is None, f"{what}: no Hole array")
+            defects = [(c, d) for c, d in enumerate(map(simplicity_defect, pieces)) if d]
+            assert_that(not defects, f"{what}: {len(defects)} cells are not simple polygons: {defects[:3]}")
+            size = 1.0
+            outside = [(c, p) for c, ring in enumerate(pieces) for p in ring
+                       if not in_window(window_paths(rings), [p])[0]
+                       and distance_to_boundary(rings, p) > 1e-12 * size]
+            assert_that(not outside, f"{what}: vertices outside the window: {outside[:3]}")
+            per_tile = {}
+            for tile, area, piece_area, ring in zip(tile_ids, clipped, piece_areas, pieces):
+                per_tile.setdefault(tile, (area, []))[1].append(piece_area)
+                assert_close(piece_area, float(exact_area(ring)), 1e-12 * area, f"{what}: PieceArea of a cell of tile {tile}")
+                assert_that(per_tile[tile][0] == area, f"{what}: one ClippedArea per tile")
+            triangulated = triangulated_area_by_tile(out)
+            for tile, (area, piece_list) in per_tile.items():
+                tolerance = 1e-12 * max(area, 1e-2 * tile_areas[tile])
+                assert_close(math.fsum(piece_list), area, tolerance, f"{what}: PieceArea sum of tile {tile}")
+                assert_close(triangulated[tile], math.fsum(piece_list), 1e-12 * area,
+                             f"{what}: triangulated area of tile {tile}")
+                assert_close(triangulated[tile], area, tolerance, f"{what}: triangulated area of tile {tile}")
+            expected = window_area(rings)
+            assert_close(math.fsum(a for a, _ in per_tile.values()), expected, 1e-12 * expected,
+                         f"{what}: the clipped areas sum to the window's")
+            assert_close(math.fsum(triangulated.values()), expected, 1e-12 * expected,
+                         f"{what}: the triangles sum to the window's area")
+            # No overlaps and no gaps: a point inside the window (not near its boundary or a tile
+            # edge) lies in exactly one cell, a point outside in none.
+            rng = np.random.default_rng(seed + 10)
+            samples = rng.random((4000, 2))
+            covering = np.zeros(len(samples), dtype=int)
+            for ring in pieces:
+                covering += Path(np.array(ring)).contains_points(samples)
+            clear = distances_to_boundary(rings, samples) > 1e-9
+            inside = in_window(window_paths(rings), samples)
+            surely_in, surely_out = clear & inside, clear & ~inside
+            assert_that(np.all(covering[surely_out] == 0), f"{what}: a cell outside the window")
+            assert_that(np.all(covering <= 1), f"{what}: {np.sum(covering > 1)} sample points in two cells")
+            # (a point on a tile edge lies in no cell: a few at most)
+            assert_that(np.sum(covering[surely_in] == 0) <= 2,
+                        f"{what}: {np.sum(covering[surely_in] == 0)} points of the window in no cell")
+
+
+def test_review_cases():
+    # A square tile by a non-convex window: Sutherland-Hodgman left a spike to (3, 0), outside the
+    # window, and vtkTriangleFilter then gave 0.333 for a clipped area of 0.958.
+    out = clip(polygon([[(3, 0), (5, 0), (5, 2), (3, 2)]]), [[(0, 0), (4, 1), (3, 4), (0, 3)]])
+    rings = cell_rings(out)
+    assert_that(all(simplicity_defect(r) is None for r in rings), f"simple cells: {rings}")
+    assert_that((3.0, 0.0) not in [p for r in rings for p in r], f"no vertex (3, 0): {rings}")
+    assert_close(cell_values(out, "ClippedArea")[0], 23 / 24, 1e-15, "the clipped area")
+    assert_close(triangulated_area_by_tile(out)[0], 23 / 24, 1e-15, "the triangulated area")
+    # A band across a U-shaped window: two lobes, two cells (not one ring joined along y = 2).
+    u_shape = [(0, 0), (3, 0), (3, 3), (2, 3), (2, 1), (1, 1), (1, 3), (0, 3)]
+    out = clip(polygon([[(-1, 2), (4, 2), (4, 2.5), (-1, 2.5)]]), [u_shape])
+    rings = cell_rings(out)
+    assert_that(len(rings) == 2 and all(simplicity_defect(r) is None for r in rings),
+                f"two simple cells for the two lobes: {rings}")
+    assert_that(sorted(cell_values(out, "PieceArea")) == [0.5, 0.5] and cell_values(out, "ClippedArea") == [1.0, 1.0]
+                and cell_values(out, "TileId") == [0, 0] and cell_values(out, "AreaFraction") == [0.4, 0.4],
+                "PieceArea 0.5 each, ClippedArea 1 and AreaFraction 1 / 2.5 on both")
+
+
+def test_input_arrays_named_like_the_filters_are_kept_under_another_name():
+    # Tiles that already carry TileId, ClippedArea, AreaFraction and PieceArea (e.g. the output of
+    # an earlier clip) and PieceArea_input: the input's arrays reach the output as NAME_input
+    # (PieceArea as PieceArea_input_2), following their tile, named in one warning; the filter's
+    # own arrays are its own.
+    squares = [[(x, 0), (x + 1, 0), (x + 1, 1), (x, 1)] for x in range(4)]
+    tiles = polygon(squares)
+    inputs = {"TileId": vtkIntArray, "ClippedArea": vtkDoubleArray, "AreaFraction": vtkDoubleArray,
+              "PieceArea": vtkDoubleArray, "PieceArea_input": vtkDoubleArray, "rain": vtkDoubleArray}
+    for k, (name, kind) in enumerate(inputs.items()):
+        array = kind()
+        array.SetName(name)
+        for c in range(len(squares)):
+            array.InsertNextValue(100 * k + c)
+        tiles.GetCellData().AddArray(array)
+    f = vtkWindowClip()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    errors = messages_of(f)
+    f.SetInputData(tiles)
+    f.SetWindowData(polygon([[(0.5, -1), (3.5, -1), (3.5, 2), (0.5, 2)]]))  # cuts tiles 0 and 3
+    f.Update()
+    out = f.GetOutput()
+    assert_that(not errors and out.GetNumberOfCells() == 4, f"four cells: {errors}")
+    tile_ids = cell_values(out, "TileId")
+    assert_that(tile_ids == [0, 1, 2, 3] and out.GetCellData().GetArray("TileId").GetDataTypeAsString() == "idtype",
+                f"the filter's own TileId: {tile_ids}")
+    assert_that(cell_values(out, "ClippedArea") == [0.5, 1.0, 1.0, 0.5]
+                and cell_values(out, "AreaFraction") == [0.5, 1.0, 1.0, 0.5]
+                and cell_values(out, "PieceArea") == [0.5, 1.0, 1.0, 0.5], "the filter's own areas")
+    renamed = {"TileId": "TileId_input", "ClippedArea": "ClippedArea_input",
+               "AreaFraction": "AreaFraction_input", "PieceArea": "PieceArea_input_2",
+               "PieceArea_input": "PieceArea_input", "rain": "rain"}
+    for k, name in enumerate(inputs):
+        assert_that(cell_values(out, renamed[name]) == [100 * k + c for c in tile_ids],
+                    f"input {name} follows its tile as {renamed[name]}")
+    named = [m for m in warnings if "filter's own" in m]
+    assert_that(len(named) == 1 and all(f"'{name}' is passed to the clipped tiles as '{renamed[name]}'"
+                                        in named[0] for name in list(inputs)[:4]),
+                f"one warning naming each renamed array: {warnings}")
+    plain = vtkWindowClip()
+    plain_warnings = messages_of(plain, vtkCommand.WarningEvent)
+    plain.SetInputData(polygon(squares))
+    plain.SetWindowData(polygon([[(0.5, -1), (3.5, -1), (3.5, 2), (0.5, 2)]]))
+    plain.Update()
+    assert_that(plain_warnings == [], f"no warning without a clash: {plain_warnings}")
+
+
+if __name__ == "__main__":
+    run([test_cells_are_simple_pieces_that_fill_tile_and_window,
+         test_review_cases,
+         test_input_arrays_named_like_the_filters_are_kept_under_another_name])
