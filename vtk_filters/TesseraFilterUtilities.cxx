@@ -120,6 +120,23 @@ tessera::Window Representable(tessera::Window window)
 }
 } // namespace
 
+std::string EmptyBoundsWarning(const double bounds[4])
+{
+  const bool unset = bounds[0] == 0.0 && bounds[1] == 0.0 && bounds[2] == 0.0 && bounds[3] == 0.0;
+  if (unset || (bounds[0] < bounds[1] && bounds[2] < bounds[3]))
+  {
+    return std::string();
+  }
+  std::ostringstream message;
+  message << "WindowBounds (xmin, xmax, ymin, ymax = " << bounds[0] << ", " << bounds[1] << ", "
+          << bounds[2] << ", " << bounds[3] << ") is an empty rectangle ("
+          << (bounds[0] >= bounds[1] ? "xmin >= xmax" : "ymin >= ymax")
+          << "), so it is ignored: the window is the padded bounding box of the points (cut by any "
+             "window constraints). Were the bounds given in another order, such as (xmin, ymin, "
+             "xmax, ymax)?";
+  return message.str();
+}
+
 tessera::Window ChooseWindow(const double bounds[4],
   const std::vector<double>& constraints,
   double padding,

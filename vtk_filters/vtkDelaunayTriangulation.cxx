@@ -69,6 +69,12 @@ void vtkDelaunayTriangulation::AddWindowConstraint(double a, double b, double c)
   this->Modified();
 }
 
+int vtkDelaunayTriangulation::GetNumberOfWindowConstraints() const
+{
+  return static_cast<int>(this->WindowConstraints.size() / 3);
+}
+
+//------------------------------------------------------------------------------
 void vtkDelaunayTriangulation::RemoveAllWindowConstraints()
 {
   if (!this->WindowConstraints.empty())
@@ -97,6 +103,11 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
     tessera::Window window =
       tessera_vtk::ChooseWindow(this->WindowBounds, this->WindowConstraints, this->Padding, points);
+    const std::string emptyBounds = tessera_vtk::EmptyBoundsWarning(this->WindowBounds);
+    if (!emptyBounds.empty())
+    {
+      vtkWarningMacro(<< emptyBounds);
+    }
     const tessera::DirichletTessellation tessellation(std::move(window), std::move(points));
     this->UpdateProgress(0.7);
 

@@ -45,7 +45,8 @@ public:
 
   ///@{
   /**
-   * The window rectangle (xmin, xmax, ymin, ymax); ignored while empty (the default).
+   * The window rectangle (xmin, xmax, ymin, ymax). Ignored while empty (xmin >= xmax or
+   * ymin >= ymax; the default is 0, 0, 0, 0), with a warning unless it is that default.
    */
   vtkSetVector4Macro(WindowBounds, double);
   vtkGetVector4Macro(WindowBounds, double);
@@ -57,6 +58,7 @@ public:
    */
   void AddWindowConstraint(double a, double b, double c);
   void RemoveAllWindowConstraints();
+  int GetNumberOfWindowConstraints() const;
   ///@}
 
   ///@{

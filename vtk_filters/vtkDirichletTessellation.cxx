@@ -428,6 +428,11 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
     tessera::Window window =
       tessera_vtk::ChooseWindow(this->WindowBounds, this->WindowConstraints, this->Padding, points);
+    const std::string emptyBounds = tessera_vtk::EmptyBoundsWarning(this->WindowBounds);
+    if (!emptyBounds.empty())
+    {
+      vtkWarningMacro(<< emptyBounds);
+    }
     this->UpdateProgress(0.1);
     const TessellationResult result = this->Algorithm == BRASSEL_REIF
       ? RunBrasselReif(window, std::move(points))

@@ -102,7 +102,7 @@ public:
   ///@{
   /**
    * The window rectangle (xmin, xmax, ymin, ymax). Ignored while empty (xmin >= xmax or
-   * ymin >= ymax; the default is 0, 0, 0, 0).
+   * ymin >= ymax; the default is 0, 0, 0, 0), with a warning unless it is that default.
    */
   vtkSetVector4Macro(WindowBounds, double);
   vtkGetVector4Macro(WindowBounds, double);

@@ -548,6 +548,41 @@ def test_window_constraint_errors_name_them_as_the_user_added_them():
             assert_that("a infinite" not in messages[0], f"{what}: {messages[0]}")
 
 
+def test_empty_window_bounds_warn_and_leave_the_automatic_window():
+    # Bounds given as (xmin, ymin, xmax, ymax) make an empty rectangle, ignored as documented: the
+    # filters now say so. The default 0, 0, 0, 0 (no rectangle) and a proper rectangle are
+    # silent, and the window used is the padded bounding box either way.
+    from vtkmodules.vtkCommonCore import vtkCommand
+
+    coords = [(0.2, 0.3), (0.7, 0.6), (0.4, 0.9), (0.9, 0.1)]
+    for f in (vtkDirichletTessellation(), vtkDelaunayTriangulation()):
+        what = f.GetClassName()
+        warnings = messages_of(f, vtkCommand.WarningEvent)
+        f.SetInputData(make_points(coords))
+        f.Update()
+        cells = f.GetOutput().GetNumberOfCells()
+        assert_that(warnings == [], f"{what}: default bounds warned {warnings}")
+        f.SetWindowBounds(0.0, 0.0, 1.0, 1.0)  # (xmin, ymin, xmax, ymax) read as (xmin, xmax, ...)
+        f.Update()
+        assert_that(len(warnings) == 1 and "xmin >= xmax" in warnings[0] and "(xmin, ymin, xmax, ymax)"
+                    in warnings[0], f"{what}: {warnings}")
+        assert_that(f.GetOutput().GetNumberOfCells() == cells, f"{what}: output changed")
+        f.SetWindowBounds(0.0, 1.0, 1.0, 0.5)
+        f.Update()
+        assert_that(len(warnings) == 2 and "ymin >= ymax" in warnings[1], f"{what}: {warnings}")
+        assert_that(f.GetOutput().GetNumberOfCells() == cells, f"{what}: output changed")
+        f.SetWindowBounds(0.0, 1.0, 0.0, 1.0)
+        f.Update()
+        f.SetWindowBounds(0.0, 0.0, 0.0, 0.0)
+        f.Update()
+        assert_that(len(warnings) == 2, f"{what}: a rectangle or the default warned {warnings[2:]}")
+    d = vtkDelaunayTriangulation()
+    assert_that(d.GetNumberOfWindowConstraints() == 0, "no constraint yet")
+    d.AddWindowConstraint(1.0, 0.0, -2.0)
+    d.AddWindowConstraint(0.0, 1.0, -2.0)
+    assert_that(d.GetNumberOfWindowConstraints() == 2, "two constraints added")
+
+
 def points_with_attribute_arrays(coords):
     """make_points with arrays named like the filter's own (Area, PointId, NeighborCount), one named
     like the first free name for Area (Area_input), a plain one, global ids and pedigree ids: each
@@ -673,5 +708,6 @@ if __name__ == "__main__":
          test_graph_off_leaves_the_tiles_unchanged,
          test_automatic_window_keeps_every_point_and_bad_windows_are_named,
          test_window_constraint_errors_name_them_as_the_user_added_them,
+         test_empty_window_bounds_warn_and_leave_the_automatic_window,
          test_input_arrays_named_like_the_filters_are_kept_under_another_name,
          test_delaunay_passes_point_data_with_the_input_points])
