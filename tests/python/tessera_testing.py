@@ -33,6 +33,24 @@ def messages_of(algorithm, event=None):
     return messages
 
 
+def polygon(rings):
+    """vtkPolyData with one polygon cell per ring of (x, y) vertices (z = 0, double precision)."""
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    polys = vtkCellArray()
+    for ring in rings:
+        polys.InsertNextCell(len(ring))
+        for x, y in ring:
+            polys.InsertCellPoint(points.InsertNextPoint(x, y, 0.0))
+    data = vtkPolyData()
+    data.SetPoints(points)
+    data.SetPolys(polys)
+    return data
+
+
 def make_points(coords, **arrays):
     """vtkPolyData of (x, y) points (z = 0, double precision), with one double point-data array
     per keyword argument (name=list of values)."""

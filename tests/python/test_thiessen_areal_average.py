@@ -15,7 +15,7 @@ from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
 from tessera import (vtkDirichletTessellation, vtkGeographicProjection, vtkThiessenArealAverage,
                      vtkWindowClip)
 from tessera_testing import (EXAMPLE_DATA, assert_close, assert_that, make_points, messages_of,
-                             run)
+                             polygon, run)
 
 
 def gauges_polydata(coords, ids, values=None):
@@ -35,20 +35,6 @@ def gauges_polydata(coords, ids, values=None):
         for v in values:
             array.InsertNextValue(v)
         data.GetPointData().AddArray(array)
-    return data
-
-
-def polygon(rings):
-    points = vtkPoints()
-    points.SetDataTypeToDouble()
-    polys = vtkCellArray()
-    for ring in rings:
-        polys.InsertNextCell(len(ring))
-        for x, y in ring:
-            polys.InsertCellPoint(points.InsertNextPoint(x, y, 0.0))
-    data = vtkPolyData()
-    data.SetPoints(points)
-    data.SetPolys(polys)
     return data
 
 

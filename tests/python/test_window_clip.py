@@ -14,21 +14,7 @@ from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkTriangleFilter
 
 from tessera import vtkDirichletTessellation, vtkWindowClip
-from tessera_testing import assert_close, assert_that, make_points, messages_of, run
-
-
-def polygon(rings):
-    points = vtkPoints()
-    points.SetDataTypeToDouble()
-    polys = vtkCellArray()
-    for ring in rings:
-        polys.InsertNextCell(len(ring))
-        for x, y in ring:
-            polys.InsertCellPoint(points.InsertNextPoint(x, y, 0.0))
-    data = vtkPolyData()
-    data.SetPoints(points)
-    data.SetPolys(polys)
-    return data
+from tessera_testing import assert_close, assert_that, make_points, messages_of, polygon, run
 
 
 def clip(tiles, window_rings):
