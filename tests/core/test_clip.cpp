@@ -615,6 +615,100 @@ TEST(Clip, FoldedTilesAreErrorsOrEmptyAsAsked)
   EXPECT_EQ(catchment.ClipInto(sound.data(), 4, 7, work, nullptr), 1.0);
 }
 
+// Random convex quad w (anticlockwise) with sloped edges, at one of several scales and offsets.
+double SlopedQuadScale(int w)
+{
+  return std::pow(10.0, static_cast<double>(w % 4) * 2.0 - 2.0);
+}
+
+double SlopedQuadOffset(int w)
+{
+  return (w % 3) * 1000.0 * SlopedQuadScale(w) + 0.3;
+}
+
+std::vector<Point2> SlopedQuad(int w,
+  std::mt19937& random,
+  std::uniform_real_distribution<double>& u)
+{
+  const double scale = SlopedQuadScale(w), offset = SlopedQuadOffset(w);
+  std::vector<Point2> quad(4);
+  for (int k = 0; k < 4; ++k)
+  {
+    const double angle = 2.0 * M_PI * (k + 0.15 + 0.7 * u(random)) / 4.0;
+    const double radius = scale * (0.6 + 0.4 * u(random));
+    quad[static_cast<std::size_t>(k)] = { offset + radius * std::cos(angle),
+      offset + radius * std::sin(angle) };
+  }
+  return ConvexHull(quad);
+}
+
+// 600 random triangles near the edges of the anticlockwise convex ring (sizes from a tenth of
+// `size` down to 1e-5 of it), each just outside an edge or straddling it (inside false), or just
+// inside or straddling (inside true). Those strictly outside the ring (every vertex strictly
+// right of one edge) or strictly inside it (strictly left of every edge), decided exactly by
+// orient2d, must clip to nothing: no area, no ring. Returns (triangles checked, failures).
+std::pair<int, int> ExpectStrictTrianglesClipToNothing(const Catchment& catchment,
+  const std::vector<Point2>& ring,
+  double size,
+  bool inside,
+  std::mt19937& random,
+  std::uniform_real_distribution<double>& u,
+  const std::string& what)
+{
+  const std::size_t n = ring.size();
+  const double side = inside ? -1.0 : 1.0; // +1: towards the right of an edge (outside)
+  int checked = 0, failed = 0;
+  for (int t = 0; t < 600; ++t)
+  {
+    const std::size_t e = static_cast<std::size_t>(t) % n;
+    const Point2& a = ring[e];
+    const Point2& b = ring[(e + 1) % n];
+    const double along = u(random), s = size * std::pow(10.0, -1.0 - 4.0 * u(random));
+    const double ex = b.x - a.x, ey = b.y - a.y, length = std::hypot(ex, ey);
+    const Point2 near{ a.x + along * ex + side * (ey / length * s * u(random)),
+      a.y + along * ey - side * (ex / length * s * u(random)) };
+    std::vector<Point2> tile;
+    for (int k = 0; k < 3; ++k)
+    {
+      const double angle = 2.0 * M_PI * (k + u(random)) / 3.0;
+      tile.push_back({ near.x + s * std::cos(angle), near.y + s * std::sin(angle) });
+    }
+    const int turn = tessera::orient2d(tile[0], tile[1], tile[2]);
+    if (turn == 0)
+    {
+      continue;
+    }
+    if (turn < 0)
+    {
+      std::swap(tile[1], tile[2]);
+    }
+    // Per edge: every vertex strictly on the side looked at (right of it outside, left inside).
+    bool beyondOne = false, beyondAll = true;
+    for (std::size_t f = 0; f < n; ++f)
+    {
+      const bool beyond = std::all_of(tile.begin(),
+        tile.end(),
+        [&](const Point2& p)
+        { return side * tessera::orient2d(ring[f], ring[(f + 1) % n], p) < 0; });
+      beyondOne = beyondOne || beyond;
+      beyondAll = beyondAll && beyond;
+    }
+    if (!(inside ? beyondAll : beyondOne))
+    {
+      continue;
+    }
+    ++checked;
+    const tessera::ClippedTile clipped = catchment.Clip(tile);
+    if (clipped.Area != 0.0 || !clipped.Rings.Vertices.empty())
+    {
+      ++failed;
+      ADD_FAILURE() << what << " tile " << t << ": area " << clipped.Area << ", "
+                    << clipped.Rings.RingOffsets.size() - 1 << " ring(s)";
+    }
+  }
+  return { checked, failed };
+}
+
 // Tiles strictly outside a convex window with sloped edges: every vertex strictly outside one
 // window edge, decided exactly by orient2d. The rounding of the window's vertices shifted to the
 // tile's first vertex used to leave a degenerate ring with a residue area (1.2e-19 for the first
@@ -635,76 +729,19 @@ TEST(Clip, TilesStrictlyOutsideASlopedWindowGiveNothing)
   std::mt19937 random(41);
   std::uniform_real_distribution<double> u(0.0, 1.0);
   int outside = 0, failed = 0;
-  // The quad as given, and random convex quads with sloped edges at several offsets and scales,
-  // with triangles from a tenth of the window's size down to 1e-5 of it.
+  // The quad as given, and random convex quads with sloped edges at several offsets and scales.
   for (int w = 0; w < 24; ++w)
   {
-    std::vector<Point2> window = quad;
-    if (w > 0)
-    {
-      const double scale = std::pow(10.0, static_cast<double>(w % 4) * 2.0 - 2.0);
-      const double offset = (w % 3) * 1000.0 * scale + 0.3;
-      for (int k = 0; k < 4; ++k)
-      {
-        const double angle = 2.0 * M_PI * (k + 0.15 + 0.7 * u(random)) / 4.0;
-        const double radius = scale * (0.6 + 0.4 * u(random));
-        window[static_cast<std::size_t>(k)] = { offset + radius * std::cos(angle),
-          offset + radius * std::sin(angle) };
-      }
-      window = ConvexHull(window);
-    }
-    const std::size_t n = window.size();
+    const std::vector<Point2> window = w == 0 ? quad : SlopedQuad(w, random, u);
     Rings rings;
     rings.Add(window);
     const Catchment catchment(rings.Offsets, rings.Vertices);
     const double size = std::max(catchment.Bounds().XMax - catchment.Bounds().XMin,
       catchment.Bounds().YMax - catchment.Bounds().YMin);
-    for (int t = 0; t < 600; ++t)
-    {
-      // A triangle near a point of a window edge, just outside it or straddling it.
-      const std::size_t e = static_cast<std::size_t>(t) % n;
-      const Point2& a = window[e];
-      const Point2& b = window[(e + 1) % n];
-      const double along = u(random), s = size * std::pow(10.0, -1.0 - 4.0 * u(random));
-      const double ex = b.x - a.x, ey = b.y - a.y, length = std::hypot(ex, ey);
-      const Point2 near{ a.x + along * ex + ey / length * s * u(random),
-        a.y + along * ey - ex / length * s * u(random) };
-      std::vector<Point2> tile;
-      for (int k = 0; k < 3; ++k)
-      {
-        const double angle = 2.0 * M_PI * (k + u(random)) / 3.0;
-        tile.push_back({ near.x + s * std::cos(angle), near.y + s * std::sin(angle) });
-      }
-      const int turn = tessera::orient2d(tile[0], tile[1], tile[2]);
-      if (turn == 0)
-      {
-        continue;
-      }
-      if (turn < 0)
-      {
-        std::swap(tile[1], tile[2]);
-      }
-      bool strictlyOutside = false;
-      for (std::size_t f = 0; f < n && !strictlyOutside; ++f)
-      {
-        strictlyOutside = std::all_of(tile.begin(),
-          tile.end(),
-          [&](const Point2& p)
-          { return tessera::orient2d(window[f], window[(f + 1) % n], p) < 0; });
-      }
-      if (!strictlyOutside)
-      {
-        continue;
-      }
-      ++outside;
-      const tessera::ClippedTile clipped = catchment.Clip(tile);
-      if (clipped.Area != 0.0 || !clipped.Rings.Vertices.empty())
-      {
-        ++failed;
-        ADD_FAILURE() << "window " << w << " tile " << t << ": area " << clipped.Area << ", "
-                      << clipped.Rings.RingOffsets.size() - 1 << " ring(s)";
-      }
-    }
+    const auto [checked, failures] = ExpectStrictTrianglesClipToNothing(
+      catchment, window, size, false, random, u, "window " + std::to_string(w));
+    outside += checked;
+    failed += failures;
   }
   EXPECT_GT(outside, 2500); // the check must see many tiles
   EXPECT_EQ(failed, 0) << "of " << outside << " tiles strictly outside";
@@ -720,68 +757,17 @@ TEST(Clip, TilesStrictlyInsideAHoleGiveNothing)
   int inside = 0, failed = 0;
   for (int w = 0; w < 24; ++w)
   {
-    const double scale = std::pow(10.0, static_cast<double>(w % 4) * 2.0 - 2.0);
-    const double offset = (w % 3) * 1000.0 * scale + 0.3;
-    std::vector<Point2> hole(4);
-    for (int k = 0; k < 4; ++k)
-    {
-      const double angle = 2.0 * M_PI * (k + 0.15 + 0.7 * u(random)) / 4.0;
-      const double radius = scale * (0.6 + 0.4 * u(random));
-      hole[static_cast<std::size_t>(k)] = { offset + radius * std::cos(angle),
-        offset + radius * std::sin(angle) };
-    }
-    hole = ConvexHull(hole);
-    const std::size_t n = hole.size();
+    const double scale = SlopedQuadScale(w), offset = SlopedQuadOffset(w);
+    const std::vector<Point2> hole = SlopedQuad(w, random, u);
     Rings rings;
     rings.Add(
       Rectangle(offset - 3 * scale, offset - 3 * scale, offset + 3 * scale, offset + 3 * scale));
     rings.Add(hole);
     const Catchment catchment(rings.Offsets, rings.Vertices);
-    for (int t = 0; t < 600; ++t)
-    {
-      // A triangle near a point of a hole edge, inside the hole or straddling its edge.
-      const std::size_t e = static_cast<std::size_t>(t) % n;
-      const Point2& a = hole[e];
-      const Point2& b = hole[(e + 1) % n];
-      const double along = u(random), s = scale * std::pow(10.0, -1.0 - 4.0 * u(random));
-      const double ex = b.x - a.x, ey = b.y - a.y, length = std::hypot(ex, ey);
-      const Point2 near{ a.x + along * ex - ey / length * s * u(random),
-        a.y + along * ey + ex / length * s * u(random) };
-      std::vector<Point2> tile;
-      for (int k = 0; k < 3; ++k)
-      {
-        const double angle = 2.0 * M_PI * (k + u(random)) / 3.0;
-        tile.push_back({ near.x + s * std::cos(angle), near.y + s * std::sin(angle) });
-      }
-      const int turn = tessera::orient2d(tile[0], tile[1], tile[2]);
-      if (turn == 0)
-      {
-        continue;
-      }
-      if (turn < 0)
-      {
-        std::swap(tile[1], tile[2]);
-      }
-      bool strictlyInside = true;
-      for (std::size_t f = 0; f < n && strictlyInside; ++f)
-      {
-        strictlyInside = std::all_of(tile.begin(),
-          tile.end(),
-          [&](const Point2& p) { return tessera::orient2d(hole[f], hole[(f + 1) % n], p) > 0; });
-      }
-      if (!strictlyInside)
-      {
-        continue;
-      }
-      ++inside;
-      const tessera::ClippedTile clipped = catchment.Clip(tile);
-      if (clipped.Area != 0.0 || !clipped.Rings.Vertices.empty())
-      {
-        ++failed;
-        ADD_FAILURE() << "hole " << w << " tile " << t << ": area " << clipped.Area << ", "
-                      << clipped.Rings.RingOffsets.size() - 1 << " ring(s)";
-      }
-    }
+    const auto [checked, failures] = ExpectStrictTrianglesClipToNothing(
+      catchment, hole, scale, true, random, u, "hole " + std::to_string(w));
+    inside += checked;
+    failed += failures;
   }
   EXPECT_GT(inside, 2500); // the check must see many tiles
   EXPECT_EQ(failed, 0) << "of " << inside << " tiles strictly inside the hole";
