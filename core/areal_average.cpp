@@ -181,6 +181,18 @@ struct ThiessenArealAverage::State
     }
   }
 
+  /// Ellipsoidal area (m^2) of one ring in the plane: densified, unprojected, measured.
+  double MeasureRing(const Point2* ring, std::size_t count, ClipScratch& scratch) const
+  {
+    if (count < 3)
+    {
+      return 0.0;
+    }
+    DensifyPlanarRing(ring, count, this->Settings.GeodesicStepMetres, scratch.Dense);
+    this->Unproject(scratch.Dense, scratch.LonLat);
+    return EllipsoidalRingArea(scratch.LonLat);
+  }
+
   /// Ellipsoidal area (m^2) of all the rings.
   double MeasureRings(const ClippedRings& rings, ClipScratch& scratch) const
   {
@@ -188,15 +200,7 @@ struct ThiessenArealAverage::State
     for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
     {
       const std::size_t begin = rings.RingOffsets[r];
-      const std::size_t count = rings.RingOffsets[r + 1] - begin;
-      if (count < 3)
-      {
-        continue;
-      }
-      DensifyPlanarRing(
-        &rings.Vertices[begin], count, this->Settings.GeodesicStepMetres, scratch.Dense);
-      this->Unproject(scratch.Dense, scratch.LonLat);
-      total += EllipsoidalRingArea(scratch.LonLat);
+      total += this->MeasureRing(&rings.Vertices[begin], rings.RingOffsets[r + 1] - begin, scratch);
     }
     return total;
   }
@@ -205,13 +209,8 @@ struct ThiessenArealAverage::State
   /// are.
   double PieceArea(const Point2* piece, std::size_t count, ClipScratch& scratch) const
   {
-    if (this->Method == AreaMethod::EqualAreaPlane)
-    {
-      return CompensatedPolygonArea(piece, count);
-    }
-    scratch.Rings.RingOffsets.assign({ 0, count });
-    scratch.Rings.Vertices.assign(piece, piece + count);
-    return this->MeasureRings(scratch.Rings, scratch);
+    return this->Method == AreaMethod::EqualAreaPlane ? CompensatedPolygonArea(piece, count)
+                                                      : this->MeasureRing(piece, count, scratch);
   }
 
   /// Ellipsoidal area (m^2) of tile & catchment. (A tile between gauges some nanometres apart,
@@ -279,14 +278,12 @@ struct ThiessenArealAverage::State
 
   /// The gauges that stopped reporting and those that started, each list in Hilbert order. A
   /// gauge whose removal was deferred and that reports again is neither: it is used as it is.
-  /// Returns the number of such gauges.
-  std::size_t ListChanges(const std::vector<char>& wanted,
+  void ListChanges(const std::vector<char>& wanted,
     std::vector<std::int32_t>& removed,
     std::vector<std::int32_t>& inserted)
   {
     removed.clear();
     inserted.clear();
-    std::size_t resumed = 0;
     for (std::size_t g = 0; g < wanted.size(); ++g)
     {
       // One branch, on a change (rare), rather than on wanted (random).
@@ -301,7 +298,6 @@ struct ThiessenArealAverage::State
         else if (this->Deferred[g])
         {
           this->Deferred[g] = 0; // its tile is still clear of the catchment: area 0, as cached
-          ++resumed;
         }
         else
         {
@@ -311,7 +307,6 @@ struct ThiessenArealAverage::State
     }
     this->SortAlongCurve(removed);
     this->SortAlongCurve(inserted);
-    return resumed;
   }
 
   /// Defers the removals (from removed) of gauges whose tiles are clear of the catchment: they
@@ -323,7 +318,7 @@ struct ThiessenArealAverage::State
   /// ones (the insertions of the step come next, as usual). So every used gauge's tile has the
   /// same part of the catchment as in the tessellation of the used gauges alone. A deferred tile
   /// grows only when a neighbour is removed (Apply grows its box then, and removes it for real
-  /// once the box reaches the catchment: RemoveDeferredNear), and shrinks when one is inserted.
+  /// once the box reaches the catchment), and shrinks when one is inserted.
   ///
   ///      catchment          gauges far outside (x: stopped reporting, removal deferred)
   ///     +---------+
@@ -427,6 +422,7 @@ struct ThiessenArealAverage::State
   {
     DirichletTessellation& t = *this->Tessellation;
     std::vector<std::int32_t>& around = this->Neighbours;
+    const bool local = touched != nullptr; // (a step that is not has no deferred gauge)
     const auto remove = [&](std::int32_t g)
     {
       if (touched)
@@ -453,20 +449,21 @@ struct ThiessenArealAverage::State
     }
     // Deferred gauges next to the removed ones: their tiles grew, so their boxes did. One whose
     // box now reaches the catchment is removed for real (which grows its neighbours' boxes: they
-    // are checked in turn, being appended to touched).
+    // are checked in turn, being appended to touched). A deferred gauge is in the tessellation:
+    // its flag is cleared before it is removed.
     for (std::size_t k = 0; touched && k < touched->size(); ++k)
     {
       const std::int32_t g = (*touched)[k];
-      if (this->Deferred[g] && this->EngineOfGauge[g] != NotInTessellation &&
-        !this->ClearOfCatchment(this->TileBounds[g]))
+      if (this->Deferred[g] && !this->ClearOfCatchment(this->TileBounds[g]))
       {
         this->Deferred[g] = 0;
         remove(g);
       }
     }
-    if (!touched)
+    if (local && !touched)
     {
-      // Every tile is derived: no gauge stays deferred (its tile may reach the catchment now).
+      // The tessellation stopped being two-dimensional on the way, so every tile is derived: no
+      // gauge stays deferred (its tile may reach the catchment now).
       std::vector<std::int32_t> rest;
       this->TakeAllDeferred(rest);
       for (const std::int32_t g : rest)
