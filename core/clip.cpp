@@ -415,8 +415,7 @@ bool CheckConvex(const Point2* tile,
   }
   HullRelativeToFirstVertex(tile, count, work);
   const double hullArea = SignedArea(work.Tile.data(), work.Tile.size());
-  const double magnitude = std::max(std::max(std::abs(box.XMin), std::abs(box.XMax)),
-    std::max(std::abs(box.YMin), std::abs(box.YMax)));
+  const double magnitude = box.LargestMagnitude();
   const double perimeter = 2.0 * ((box.XMax - box.XMin) + (box.YMax - box.YMin));
   const double rounding = 64.0 * coordinateEpsilon * magnitude * perimeter;
   // Both ways: a ring wound twice around its hull has twice its area.
@@ -863,11 +862,7 @@ double Catchment::ClipInto(const Point2* tile,
   {
     return 0.0; // thinner than the rounding of the shift
   }
-  double hullMagnitude = 0.0;
-  for (const Point2& p : work.Tile)
-  {
-    hullMagnitude = std::max({ hullMagnitude, std::fabs(p.x), std::fabs(p.y) });
-  }
+  const double hullMagnitude = BoundsOf(work.Tile.data(), hullCount).LargestMagnitude();
   CompensatedSum area;
   double roundingBound = 0.0; // of the area: the sum of the pieces' (RoundingAreaBound)
   const std::size_t ringsBefore = rings ? rings->RingOffsets.size() : 0;

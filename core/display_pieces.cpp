@@ -116,11 +116,9 @@ std::vector<double> SlabSides(const ClippedRings& rings)
 /// steepness: a rounding of x moves them that much more.)
 double PointTolerance(const ClippedRings& rings)
 {
-  double largest = 0.0;
-  for (const Point2& p : rings.Vertices)
-  {
-    largest = std::max({ largest, std::fabs(p.x), std::fabs(p.y) });
-  }
+  const double largest = rings.Vertices.empty()
+    ? 0.0
+    : BoundsOf(rings.Vertices.data(), rings.Vertices.size()).LargestMagnitude();
   return 64.0 * std::numeric_limits<double>::epsilon() * largest;
 }
 

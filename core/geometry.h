@@ -2,6 +2,7 @@
 // Plain geometric value types shared by every core algorithm.
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -47,6 +48,13 @@ struct Box2
     this->Extend(Point2{ other.XMax, other.YMax });
   }
   double LargerSide() const { return std::max(this->XMax - this->XMin, this->YMax - this->YMin); }
+  /// The largest |coordinate| in the box (what the rounding of its points' coordinates scales
+  /// with).
+  double LargestMagnitude() const
+  {
+    return std::max(std::max(std::abs(this->XMin), std::abs(this->XMax)),
+      std::max(std::abs(this->YMin), std::abs(this->YMax)));
+  }
 };
 
 /// The bounding box of count >= 1 points.
