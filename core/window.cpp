@@ -105,7 +105,7 @@ Point2 crossing(const HalfPlane& u, const HalfPlane& v)
     const HalfPlane& vertical = u.b == 0.0 ? u : v;
     const HalfPlane& other = u.b == 0.0 ? v : u;
     const double x = -vertical.c / vertical.a;
-    return Point2{ x, other.a == 0.0 ? -other.c / other.b : -(other.a * x + other.c) / other.b };
+    return Point2{ x, -(other.a * x + other.c) / other.b }; // (other.a == 0: exactly -c/b too)
   }
   if (u.a == 0.0 || v.a == 0.0)
   {
