@@ -150,6 +150,6 @@ void vtkDelaunayTriangulation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SplitDegenerateFaces: " << this->SplitDegenerateFaces << "\n";
   os << indent << "WindowBounds: " << this->WindowBounds[0] << ", " << this->WindowBounds[1] << ", "
      << this->WindowBounds[2] << ", " << this->WindowBounds[3] << "\n";
-  os << indent << "WindowConstraints: " << this->WindowConstraints.size() / 3 << "\n";
+  os << indent << "WindowConstraints: " << this->GetNumberOfWindowConstraints() << "\n";
   os << indent << "Padding: " << this->Padding << "\n";
 }
