@@ -14,6 +14,7 @@
 #include <regex>
 
 using namespace tessera;
+using tessera_test::ErrorOf;
 
 namespace
 {
@@ -325,15 +326,8 @@ TEST(ArealAverage, ACatchmentCutAtTheAntimeridianIsNamedInItsOwnSegments)
     { -179.0, 1.0 },
     { -180.0, 1.0 } };
   const std::vector<Point2> gauges{ { 179.5, -0.5 }, { -179.5, 0.5 } };
-  std::string message;
-  try
-  {
-    ThiessenArealAverage average(gauges, offsets, rings);
-  }
-  catch (const InputError& e)
-  {
-    message = e.what();
-  }
+  const std::string message =
+    ErrorOf([&] { ThiessenArealAverage average(gauges, offsets, rings); });
   EXPECT_NE(message.find("180th meridian"), std::string::npos) << message;
   // ring 0's segment 1 runs up the meridian at 180, ring 1's segment 3 down it at -180; where
   // the corners meet, the segments before or after them touch too.
@@ -363,23 +357,12 @@ TEST(ArealAverage, BadInputIsNamed)
   // Longitudes beyond 360 degrees are typos (-1031.5 for -103.15), for a gauge and for the
   // catchment; 0 .. 360 and -180 .. 180 are both fine.
   const auto errorOf = [&](const std::vector<Point2>& gauges, const std::vector<Point2>& ring)
-  {
-    try
-    {
-      ThiessenArealAverage average(gauges, catchment.Offsets, ring);
-    }
-    catch (const InputError& e)
-    {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
+  { return ErrorOf([&] { ThiessenArealAverage average(gauges, catchment.Offsets, ring); }); };
   EXPECT_NE(
     errorOf({ { 0.2, 0.2 }, { -1031.5, 0.5 } }, catchment.Ring).find("gauge 1"), std::string::npos);
   const Square far(359.0, 0.0, 360.5, 1.0);
-  EXPECT_NE(
-    errorOf({ { 359.5, 0.5 } }, far.Ring).find("catchment ring 0 vertex 1"), std::string::npos)
-    << errorOf({ { 359.5, 0.5 } }, far.Ring);
+  const std::string farError = errorOf({ { 359.5, 0.5 } }, far.Ring);
+  EXPECT_NE(farError.find("catchment ring 0 vertex 1"), std::string::npos) << farError;
   const Square east(359.0, 0.0, 360.0, 1.0), west(-180.0, 0.0, -179.0, 1.0);
   EXPECT_EQ(errorOf({ { 359.5, 0.5 }, { -360.0, 0.2 } }, east.Ring), "");
   EXPECT_EQ(errorOf({ { -179.5, 0.5 } }, west.Ring), "");
@@ -403,16 +386,12 @@ TEST(ArealAverage, BadGaugesAreNamedByTheirNamesToo)
   utm.Projection = ProjectionParameters::FromString("projection=UTM zone=31 north=1");
   const auto errorOf = [&](const std::vector<Point2>& gauges, const ArealAverageSettings& settings)
   {
-    try
-    {
-      ThiessenArealAverage average(gauges, catchment.Offsets, catchment.Ring, settings);
-      average.Step({ 1.0, INFINITY });
-    }
-    catch (const InputError& e)
-    {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return ErrorOf(
+      [&]
+      {
+        ThiessenArealAverage average(gauges, catchment.Offsets, catchment.Ring, settings);
+        average.Step({ 1.0, INFINITY });
+      });
   };
   for (const Point2& bad : { Point2{ 0.3, 91.0 },
          Point2{ -1031.5, 0.5 },

@@ -33,6 +33,7 @@ namespace
 
 // ---- Exact rational reference ------------------------------------------------------------------
 
+using tessera_test::ErrorOf;
 using tessera_test::ExactArea;
 using tessera_test::QPoint;
 
@@ -311,20 +312,6 @@ Rings NestedStars(std::mt19937& random, double step, double offset)
 double Tolerance(const mpq_class& exact, double tileArea)
 {
   return 1e-12 * std::max(std::fabs(exact.get_d()), 1e-3 * tileArea);
-}
-
-template<typename Function>
-std::string ErrorOf(Function&& function)
-{
-  try
-  {
-    function();
-  }
-  catch (const InputError& error)
-  {
-    return error.what();
-  }
-  return "";
 }
 
 // Checks the returned rings against the region they claim: their signed areas add up to the

@@ -2,6 +2,7 @@
 // Small helpers shared by the core test programs (not part of the library).
 
 #include "dirichlet_tessellation.h"
+#include "errors.h"
 #include "tiles.h"
 #include "window.h"
 
@@ -46,6 +47,21 @@ private:
   std::string Old;
   bool HadOld = false;
 };
+
+/// The message of the InputError that function throws, or "" when it throws none.
+template<typename Function>
+std::string ErrorOf(Function&& function)
+{
+  try
+  {
+    function();
+  }
+  catch (const tessera::InputError& error)
+  {
+    return error.what();
+  }
+  return "";
+}
 
 /// Ids of the accepted points of a tessellation, ascending.
 inline std::vector<std::int32_t> AcceptedIds(const tessera::DirichletTessellation& t)
