@@ -11,6 +11,8 @@
 #include "tiles.h"
 #include "window.h"
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,26 +21,11 @@
 #include <vector>
 
 using namespace tessera;
+using tessera_test::MakeCatchment;
+using tessera_test::Rectangle;
 
 namespace
 {
-
-std::vector<Point2> Rectangle(double x0, double y0, double x1, double y1)
-{
-  return { { x0, y0 }, { x1, y0 }, { x1, y1 }, { x0, y1 } };
-}
-
-Catchment MakeCatchment(const std::vector<std::vector<Point2>>& rings)
-{
-  std::vector<std::size_t> offsets{ 0 };
-  std::vector<Point2> vertices;
-  for (const auto& ring : rings)
-  {
-    vertices.insert(vertices.end(), ring.begin(), ring.end());
-    offsets.push_back(vertices.size());
-  }
-  return Catchment(offsets, vertices);
-}
 
 /// Crossing-number membership of p in the ring r of rings (p is never on a boundary here).
 bool InRing(const ClippedRings& rings, std::size_t r, const Point2& p)
