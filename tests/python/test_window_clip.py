@@ -9,8 +9,7 @@ from fractions import Fraction
 
 import numpy as np
 from matplotlib.path import Path
-from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkIntArray, vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkIntArray
 from vtkmodules.vtkFiltersCore import vtkTriangleFilter
 
 from tessera import vtkDirichletTessellation, vtkWindowClip
@@ -148,17 +147,6 @@ def distances_to_boundary(rings, points):
     return best
 
 
-def distance_to_boundary(rings, p):
-    best = math.inf
-    for ring in rings:
-        for a, b in zip(ring, ring[1:] + ring[:1]):
-            ax, ay, bx, by = *a, *b
-            t = max(0.0, min(1.0, ((p[0] - ax) * (bx - ax) + (p[1] - ay) * (by - ay))
-                             / ((bx - ax) ** 2 + (by - ay) ** 2)))
-            best = min(best, math.hypot(p[0] - ax - t * (bx - ax), p[1] - ay - t * (by - ay)))
-    return best
-
-
 def random_tiling(seed, count):
     rng = np.random.default_rng(seed)
     tess = vtkDirichletTessellation()
@@ -201,10 +189,11 @@ def test_cells_are_simple_pieces_that_fill_tile_and_window():
             assert_that(out.GetCellData().GetArray("Hole") is None, f"{what}: no Hole array")
             defects = [(c, d) for c, d in enumerate(map(simplicity_defect, pieces)) if d]
             assert_that(not defects, f"{what}: {len(defects)} cells are not simple polygons: {defects[:3]}")
-            size = 1.0
-            outside = [(c, p) for c, ring in enumerate(pieces) for p in ring
-                       if not in_window(window_paths(rings), [p])[0]
-                       and distance_to_boundary(rings, p) > 1e-12 * size]
+            paths = window_paths(rings)
+            vertices = np.array([p for ring in pieces for p in ring], dtype=float).reshape(-1, 2)
+            cell_of_vertex = [c for c, ring in enumerate(pieces) for _ in ring]
+            away = ~in_window(paths, vertices) & (distances_to_boundary(rings, vertices) > 1e-12)
+            outside = [(cell_of_vertex[k], tuple(vertices[k])) for k in np.flatnonzero(away)]
             assert_that(not outside, f"{what}: vertices outside the window: {outside[:3]}")
             per_tile = {}
             for tile, area, piece_area, ring in zip(tile_ids, clipped, piece_areas, pieces):
@@ -231,7 +220,7 @@ def test_cells_are_simple_pieces_that_fill_tile_and_window():
             for ring in pieces:
                 covering += Path(np.array(ring)).contains_points(samples)
             clear = distances_to_boundary(rings, samples) > 1e-9
-            inside = in_window(window_paths(rings), samples)
+            inside = in_window(paths, samples)
             surely_in, surely_out = clear & inside, clear & ~inside
             assert_that(np.all(covering[surely_out] == 0), f"{what}: a cell outside the window")
             assert_that(np.all(covering <= 1), f"{what}: {np.sum(covering > 1)} sample points in two cells")
