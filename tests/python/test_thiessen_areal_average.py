@@ -14,8 +14,8 @@ from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
 
 from tessera import (vtkDirichletTessellation, vtkGeographicProjection, vtkThiessenArealAverage,
                      vtkWindowClip)
-from tessera_testing import (EXAMPLE_DATA, assert_close, assert_that, make_points, messages_of,
-                             polygon, run)
+from tessera_testing import (EXAMPLE_DATA, assert_close, assert_that, cell_rings, make_points,
+                             messages_of, polygon, run, simplicity_defect)
 
 
 def gauges_polydata(coords, ids, values=None):
@@ -235,9 +235,7 @@ def test_window_clip_of_projected_tiles_sums_to_the_catchment():
         fraction = cd.GetArray("AreaFraction").GetValue(c)
         assert_that(0.0 < fraction <= 1.0 + 1e-12, f"AreaFraction {fraction} in (0, 1]")
     assert_that(cd.GetAbstractArray("station_id") is not None, "tile cell data carried")
-    poly = outline.GetOutput()
-    ids = poly.GetCell(0).GetPointIds()
-    pts = np.array([poly.GetPoint(ids.GetId(k))[:2] for k in range(ids.GetNumberOfIds())])
+    pts = np.array(cell_rings(outline.GetOutput())[0])
     x, y = pts[:, 0], pts[:, 1]
     area = 0.5 * abs(float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)))
     assert_close(sum(clipped.values()), area, 1e-12 * area, "clipped tiles sum to the catchment")
@@ -750,35 +748,6 @@ def ellipsoidal_area(ring):
     return total
 
 
-def cell_rings(tiles):
-    return [[tiles.GetPoint(tiles.GetCell(c).GetPointId(k))[:2] for k in range(tiles.GetCell(c).GetNumberOfPoints())]
-            for c in range(tiles.GetNumberOfCells())]
-
-
-def is_simple(ring):
-    """No two edges of the ring meet except neighbours at their shared vertex (floating point: the
-    rings here are far from degenerate)."""
-    def orient(p, q, r):
-        d = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
-        return (d > 0) - (d < 0)
-
-    def on(p, q, r):
-        return min(p[0], q[0]) <= r[0] <= max(p[0], q[0]) and min(p[1], q[1]) <= r[1] <= max(p[1], q[1])
-
-    edges = list(zip(ring, ring[1:] + ring[:1]))
-    n = len(edges)
-    for i in range(n):
-        for j in range(i + 1, n):
-            if j == i + 1 or (i == 0 and j == n - 1):
-                continue
-            (p, q), (r, s) = edges[i], edges[j]
-            o = [orient(p, q, r), orient(p, q, s), orient(r, s, p), orient(r, s, q)]
-            if (o[0] * o[1] < 0 and o[2] * o[3] < 0) or (o[0] == 0 and on(p, q, r)) or (o[1] == 0 and on(p, q, s)) \
-                    or (o[2] == 0 and on(r, s, p)) or (o[3] == 0 and on(r, s, q)):
-                return False
-    return True
-
-
 def test_tiles_of_a_catchment_with_a_hole_or_a_bay():
     # A lake inside the tile of the gauge standing in it; a bay whose mouth a gauge's tile spans, so
     # that the tile meets both shores. Output 0 must show each tile's part of the catchment as
@@ -817,7 +786,7 @@ def test_tiles_of_a_catchment_with_a_hole_or_a_bay():
         for sid, e in per_station.items():
             assert_close(e["cells"], e["area"], 1e-9 * e["area"], f"{name}: station {sid}'s cells against its Area_m2")
         cells = cell_rings(tiles)
-        assert_that(all(is_simple(ring) for ring in cells), f"{name}: a cell is not a simple polygon")
+        assert_that(all(simplicity_defect(ring) is None for ring in cells), f"{name}: a cell is not a simple polygon")
         paths = [Path(ring) for ring in cells]
         assert_that(not any(p.contains_point(outside) for p in paths), f"{name}: a cell covers {outside}")
         # Point by point: inside the catchment (even-odd over its rings) exactly one cell, else none.
