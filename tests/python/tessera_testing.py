@@ -1,6 +1,7 @@
 """Small helpers shared by the Python tests: a failing check raises AssertionError with a message,
 and the process exits non-zero, so ctest sees the failure."""
 
+import json
 import os
 import sys
 from fractions import Fraction
@@ -59,6 +60,13 @@ def cell_rings(data):
         ids = data.GetCell(c).GetPointIds()
         rings.append([data.GetPoint(ids.GetId(k))[:2] for k in range(ids.GetNumberOfIds())])
     return rings
+
+
+def colorado_outline():
+    """The Colorado catchment's ring (examples/data/colorado_boundary.geojson) as (lon, lat)
+    tuples, without the closing point."""
+    with open(os.path.join(EXAMPLE_DATA, "colorado_boundary.geojson")) as f:
+        return [tuple(p) for p in json.load(f)["features"][0]["geometry"]["coordinates"][0][:-1]]
 
 
 # ---- an exact simplicity test --------------------------------------------------------------------

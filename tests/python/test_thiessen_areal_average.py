@@ -2,7 +2,6 @@
 record against a brute-force raster of geodesically nearest gauges, and bad input."""
 
 import csv
-import json
 import math
 import os
 
@@ -15,8 +14,8 @@ from vtkmodules.vtkIOInfovis import vtkDelimitedTextReader
 
 from tessera import (vtkDirichletTessellation, vtkGeographicProjection, vtkThiessenArealAverage,
                      vtkWindowClip)
-from tessera_testing import (EXAMPLE_DATA, assert_close, assert_that, cell_rings, make_points,
-                             messages_of, polygon, run, simplicity_defect)
+from tessera_testing import (EXAMPLE_DATA, assert_close, assert_that, cell_rings, colorado_outline,
+                             make_points, messages_of, polygon, run, simplicity_defect)
 
 
 def gauges_polydata(coords, ids, values=None):
@@ -72,8 +71,7 @@ def read_colorado():
         for row in csv.DictReader(f):
             coords.append((float(row["lon"]), float(row["lat"])))
             ids.append(row["station_id"])
-    with open(os.path.join(EXAMPLE_DATA, "colorado_boundary.geojson")) as f:
-        ring = json.load(f)["features"][0]["geometry"]["coordinates"][0][:-1]
+    ring = colorado_outline()
     months = {}
     with open(os.path.join(EXAMPLE_DATA, "colorado_monthly_precip.csv")) as f:
         for row in csv.DictReader(f):
