@@ -89,13 +89,14 @@ def read_gauges(path):
     return gauges, lines
 
 
-def read_observations(path, gauge_ids):
+def read_observations(path, gauge_of, filler):
     """The long-format monthly table as a vtkTable (station_id, time, precip), the set of
-    reporting stations of every (year, month), as station_key()s, and the file's line of each
-    record read (table row r, counted from 0, is the record of line lines[r]; the rows after them
-    are the filler rows of months without a row of a gauge's station). gauge_ids: the stations
-    file's ids (a month none of whose rows names one of them is a month where no gauge reported).
-    Ids are compared as the filter compares them (station_key)."""
+    reporting gauges of every (year, month), as gauge indices, and the file's line of each record
+    read (table row r, counted from 0, is the record of line lines[r]; the rows after them are the
+    filler rows of months without a row of a gauge's station). gauge_of: the gauge that a
+    station's observations go to, by station_key() (ids are compared as the filter compares them;
+    a month none of whose rows names a gauge's station is a month where no gauge reported).
+    filler: a gauge's station id, given to the rows of those months."""
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
     from vtkmodules.vtkCommonDataModel import vtkTable
 
@@ -105,7 +106,6 @@ def read_observations(path, gauge_ids):
     times.SetName("time")
     values.SetName("precip")
     unrecorded = 0
-    gauge_keys = {station_key(g) for g in gauge_ids}
     months = set()  # (year, month) of every row
     present = set()  # (year, month) of every row of a gauge's station
     lines = []  # the file's line of each row read
@@ -115,8 +115,8 @@ def read_observations(path, gauge_ids):
         year_and_month = (csv_input.integer(row, "year", path, line, 1, 9999),
                           csv_input.integer(row, "month", path, line, 1, 12))
         months.add(year_and_month)
-        key = station_key(station)
-        if key in gauge_keys:
+        gauge = gauge_of.get(station_key(station))
+        if gauge is not None:
             present.add(year_and_month)
         t = decimal_time(*year_and_month)
         # A missing value stays in the table as NaN: the gauge does not report that month (the
@@ -126,7 +126,8 @@ def read_observations(path, gauge_ids):
             unrecorded += 1
         else:
             value = csv_input.number(row, "precip", path, line)
-            reporting.setdefault(year_and_month, set()).add(key)
+            if gauge is not None:
+                reporting.setdefault(year_and_month, set()).add(gauge)
         stations.InsertNextValue(station)
         times.InsertNextValue(t)
         values.InsertNextValue(value)
@@ -137,12 +138,11 @@ def read_observations(path, gauge_ids):
     # no gauge reported: a row with a missing value (for a gauge's station: the filter makes no
     # step of a row naming a station no gauge has) keeps it a step of its own, so that
     # areal_mean.csv has every month, empty where nothing was measured.
-    if months and gauge_ids:
+    if months and gauge_of:
         first, last = min(months), max(months)
         gaps = [(y, m) for y in range(first[0], last[0] + 1) for m in range(1, 13)
                 if first <= (y, m) <= last and (y, m) not in present]
-        filler = min(gauge_ids)  # a gauge's id: the month is a step of the filter
-        for y, m in gaps:
+        for y, m in gaps:  # (a gauge's id: the month is a step of the filter)
             stations.InsertNextValue(filler)
             times.InsertNextValue(decimal_time(y, m))
             values.InsertNextValue(math.nan)
@@ -157,8 +157,9 @@ def read_observations(path, gauge_ids):
 
 
 def read_catchment(path):
-    """The catchment's polygons (a multiblock from vtkGDALVectorReader); ends the script naming
-    the file when it is missing, unreadable or holds no polygon."""
+    """The catchment's reader (a vtkGDALVectorReader, whose output is a multiblock of its
+    polygons) and its rings (catchment_rings); ends the script naming the file when it is
+    missing, unreadable or holds no polygon."""
     from vtkmodules.vtkCommonCore import vtkCommand
     from vtkmodules.vtkIOGDAL import vtkGDALVectorReader
 
@@ -173,15 +174,11 @@ def read_catchment(path):
     reader.SetFileName(path)
     reader.Update()
     output = reader.GetOutput()
-    blocks = output.GetNumberOfBlocks() if output else 0
-    # GDAL gives a polygon's rings as polygons or as closed lines; the filter reads both.
-    polygons = sum(block.GetNumberOfPolys() + block.GetNumberOfLines()
-                   for block in (output.GetBlock(b) for b in range(blocks))
-                   if block is not None and block.IsA("vtkPolyData"))
-    if errors or polygons == 0:
+    rings = catchment_rings(output) if output else []
+    if errors or not rings:
         csv_input.fail(f"{path}: GDAL read no polygon from the catchment file "
                        "(expected a GeoJSON or shapefile polygon in lon/lat)")
-    return reader
+    return reader, rings
 
 
 class Progress:
@@ -370,12 +367,11 @@ def tiles_by_gauge(tiles):
     gauge_ids, weights = cd.GetArray("GaugeId"), cd.GetArray("Weight")
     areas, values = cd.GetArray("Area_m2"), cd.GetArray("Value")
     result = {}
-    for c in range(tiles.GetNumberOfCells()):
+    for c, ring in enumerate(polygon_rings(tiles)):  # (the tiles are polygon cells only)
         g = gauge_ids.GetValue(c)
         entry = result.setdefault(g, {"weight": weights.GetValue(c), "area": areas.GetValue(c),
                                       "value": values.GetValue(c), "rings": []})
-        ids = tiles.GetCell(c).GetPointIds()
-        entry["rings"].append([tiles.GetPoint(ids.GetId(k))[:2] for k in range(ids.GetNumberOfIds())])
+        entry["rings"].append(ring)
     return result
 
 
@@ -390,6 +386,18 @@ def write_weights(per_gauge, gauges, path):
             e = per_gauge[g]
             out.writerow([ids.GetValue(g), names.GetValue(g), lon, lat, f"{e['weight']:.15g}",
                           f"{e['area'] / 1e6:.4f}", e["value"]])
+
+
+def polygon_rings(data):
+    """The vertices, as lists of (x, y), of each polygon cell of a vtkPolyData, then of each of its
+    polylines."""
+    rings = []
+    for cells in (data.GetPolys(), data.GetLines()):
+        offsets, connectivity = cells.GetOffsetsArray(), cells.GetConnectivityArray()
+        for c in range(cells.GetNumberOfCells()):
+            rings.append([data.GetPoint(connectivity.GetValue(i))[:2]
+                          for i in range(offsets.GetValue(c), offsets.GetValue(c + 1))])
+    return rings
 
 
 def catchment_rings(data):
@@ -408,15 +416,12 @@ def catchment_rings(data):
     for block in blocks:
         if block is None or not block.IsA("vtkPolyData"):
             continue
-        for cells in (block.GetPolys(), block.GetLines()):
-            offsets, connectivity = cells.GetOffsetsArray(), cells.GetConnectivityArray()
-            for c in range(cells.GetNumberOfCells()):
-                ring = [block.GetPoint(connectivity.GetValue(i))[:2]
-                        for i in range(offsets.GetValue(c), offsets.GetValue(c + 1))]
-                if len(ring) > 1 and ring[0] == ring[-1]:
-                    ring.pop()
-                if len(ring) >= 3:
-                    rings.append(ring)
+        # GDAL gives a polygon's rings as polygons or as closed lines; the filter reads both.
+        for ring in polygon_rings(block):
+            if len(ring) > 1 and ring[0] == ring[-1]:
+                ring.pop()
+            if len(ring) >= 3:
+                rings.append(ring)
     return rings
 
 
@@ -533,10 +538,15 @@ def main(argv=None):
         csv_input.fail(f"--out {args.out}: cannot create the directory ({error.strerror})")
     started = time.time()
     gauges, gauge_lines = read_gauges(args.stations)
-    station_ids = gauges.GetPointData().GetAbstractArray("station_id")
-    observations, reporting_ids, row_lines = read_observations(
-        args.observations, {station_ids.GetValue(i) for i in range(station_ids.GetNumberOfValues())})
-    catchment = read_catchment(args.catchment)
+    ids = gauges.GetPointData().GetAbstractArray("station_id")
+    station_ids = [ids.GetValue(i) for i in range(ids.GetNumberOfValues())]
+    # A station's observations go to the first gauge with its id (station_key), as in the filter.
+    gauge_of = {}
+    for i, station in enumerate(station_ids):
+        gauge_of.setdefault(station_key(station), i)
+    observations, reporting, row_lines = read_observations(args.observations, gauge_of,
+                                                           min(station_ids, default=None))
+    catchment, outline = read_catchment(args.catchment)
     # (the observations file's rows: the table also has a row for each month without any)
     print(f"read {gauges.GetNumberOfPoints()} gauges and {len(row_lines)} observations in "
           f"{time.time() - started:.1f} s", file=sys.stderr)
@@ -577,19 +587,13 @@ def main(argv=None):
 
     row = next(r for r in rows if (r[0], r[1]) == (year, month))
     if not args.no_plots:
-        outline = catchment_rings(catchment.GetOutput())
-        ids = gauges.GetPointData().GetAbstractArray("station_id")
-        # A station's observations go to the first gauge with its id (station_key), as in the filter.
-        gauge_of = {}
-        for i in range(gauges.GetNumberOfPoints()):
-            gauge_of.setdefault(station_key(ids.GetValue(i)), i)
-        reporting = {gauge_of[key] for key in reporting_ids.get((year, month), set()) if key in gauge_of}
         if row[2] == 0:
             title = f"{year}-{month:02d}: no gauge reported (Thiessen areal mean nan)"
         else:
             title = (f"{year}-{month:02d}: Thiessen areal mean {row[4]:.3f} from {row[3]} of {row[2]} "
                      f"reporting gauges")
-        plot_map(per_gauge, gauges, outline, reporting, title, os.path.join(args.out, f"map_{tag}.png"))
+        plot_map(per_gauge, gauges, outline, reporting.get((year, month), set()), title,
+                 os.path.join(args.out, f"map_{tag}.png"))
         plot_series(rows, os.path.join(args.out, "areal_mean.png"))
 
     valid = [r[4] for r in rows if not math.isnan(r[4])]

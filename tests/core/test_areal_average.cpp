@@ -14,6 +14,7 @@
 #include <regex>
 
 using namespace tessera;
+using tessera_test::ErrorOf;
 
 namespace
 {
@@ -52,17 +53,22 @@ double Sum(const std::vector<double>& v)
   return std::accumulate(v.begin(), v.end(), 0.0);
 }
 
-// Step t of an update against the rebuild's: the same weighted gauges, weights and mean, and the
-// weights sum to 1.
-void ExpectSameStep(const ArealStep& x, const ArealStep& y, int t)
+// Step t of an update against the rebuild's (or of one average against another): the same
+// weighted gauges, weights and mean (to the given tolerances), and the weights sum to 1.
+void ExpectSameStep(const ArealStep& x,
+  const ArealStep& y,
+  int t,
+  double weightTolerance = 1e-13,
+  double meanTolerance = 1e-12)
 {
   ASSERT_EQ(x.Gauges, y.Gauges) << "step " << t;
   for (std::size_t k = 0; k < x.Weights.size(); ++k)
   {
-    EXPECT_NEAR(x.Weights[k], y.Weights[k], 1e-13) << "step " << t << " gauge " << x.Gauges[k];
+    EXPECT_NEAR(x.Weights[k], y.Weights[k], weightTolerance)
+      << "step " << t << " gauge " << x.Gauges[k];
   }
   EXPECT_NEAR(Sum(x.Weights), 1.0, 1e-12) << "step " << t;
-  EXPECT_NEAR(x.Mean, y.Mean, 1e-12) << "step " << t;
+  EXPECT_NEAR(x.Mean, y.Mean, meanTolerance) << "step " << t;
 }
 
 constexpr double Degree = M_PI / 180.0;
@@ -143,12 +149,7 @@ TEST(ArealAverage, AFarGaugeThatNeverReportsChangesNoWeight)
   ThiessenArealAverage b(four, catchment.Offsets, catchment.Ring);
   const ArealStep x = a.Step({ 10.0, 20.0, 30.0 });
   const ArealStep y = b.Step({ 10.0, 20.0, 30.0, NaN });
-  ASSERT_EQ(x.Gauges, y.Gauges);
-  for (std::size_t k = 0; k < x.Weights.size(); ++k)
-  {
-    EXPECT_NEAR(x.Weights[k], y.Weights[k], 1e-12) << "gauge " << k;
-  }
-  EXPECT_NEAR(x.Mean, y.Mean, 1e-10);
+  ASSERT_NO_FATAL_FAILURE(ExpectSameStep(x, y, 0, 1e-12, 1e-10));
   // The premise: the gauges do not share the square equally (so a projection change shows).
   EXPECT_GT(std::abs(x.Weights[0] - x.Weights[1]), 1e-3);
 }
@@ -194,14 +195,11 @@ TEST(ArealAverage, IncrementalUpdatesEqualRebuildsAndMissingGaugesHandOverTheirA
     }
     const ArealStep x = a.Step(values);
     const ArealStep y = b.Step(values);
-    ASSERT_EQ(x.Gauges, y.Gauges) << "step " << t;
+    ASSERT_NO_FATAL_FAILURE(ExpectSameStep(x, y, t));
     for (std::size_t k = 0; k < x.Weights.size(); ++k)
     {
-      EXPECT_NEAR(x.Weights[k], y.Weights[k], 1e-13) << "step " << t << " gauge " << x.Gauges[k];
       EXPECT_FALSE(std::isnan(values[x.Gauges[k]])) << "a missing gauge got a weight";
     }
-    EXPECT_NEAR(Sum(x.Weights), 1.0, 1e-12) << "step " << t;
-    EXPECT_NEAR(x.Mean, y.Mean, 1e-12);
     EXPECT_EQ(x.StationsUsed,
       static_cast<int>(
         std::count_if(values.begin(), values.end(), [](double v) { return !std::isnan(v); })));
@@ -325,15 +323,8 @@ TEST(ArealAverage, ACatchmentCutAtTheAntimeridianIsNamedInItsOwnSegments)
     { -179.0, 1.0 },
     { -180.0, 1.0 } };
   const std::vector<Point2> gauges{ { 179.5, -0.5 }, { -179.5, 0.5 } };
-  std::string message;
-  try
-  {
-    ThiessenArealAverage average(gauges, offsets, rings);
-  }
-  catch (const InputError& e)
-  {
-    message = e.what();
-  }
+  const std::string message =
+    ErrorOf([&] { ThiessenArealAverage average(gauges, offsets, rings); });
   EXPECT_NE(message.find("180th meridian"), std::string::npos) << message;
   // ring 0's segment 1 runs up the meridian at 180, ring 1's segment 3 down it at -180; where
   // the corners meet, the segments before or after them touch too.
@@ -363,23 +354,12 @@ TEST(ArealAverage, BadInputIsNamed)
   // Longitudes beyond 360 degrees are typos (-1031.5 for -103.15), for a gauge and for the
   // catchment; 0 .. 360 and -180 .. 180 are both fine.
   const auto errorOf = [&](const std::vector<Point2>& gauges, const std::vector<Point2>& ring)
-  {
-    try
-    {
-      ThiessenArealAverage average(gauges, catchment.Offsets, ring);
-    }
-    catch (const InputError& e)
-    {
-      return std::string(e.what());
-    }
-    return std::string();
-  };
+  { return ErrorOf([&] { ThiessenArealAverage average(gauges, catchment.Offsets, ring); }); };
   EXPECT_NE(
     errorOf({ { 0.2, 0.2 }, { -1031.5, 0.5 } }, catchment.Ring).find("gauge 1"), std::string::npos);
   const Square far(359.0, 0.0, 360.5, 1.0);
-  EXPECT_NE(
-    errorOf({ { 359.5, 0.5 } }, far.Ring).find("catchment ring 0 vertex 1"), std::string::npos)
-    << errorOf({ { 359.5, 0.5 } }, far.Ring);
+  const std::string farError = errorOf({ { 359.5, 0.5 } }, far.Ring);
+  EXPECT_NE(farError.find("catchment ring 0 vertex 1"), std::string::npos) << farError;
   const Square east(359.0, 0.0, 360.0, 1.0), west(-180.0, 0.0, -179.0, 1.0);
   EXPECT_EQ(errorOf({ { 359.5, 0.5 }, { -360.0, 0.2 } }, east.Ring), "");
   EXPECT_EQ(errorOf({ { -179.5, 0.5 } }, west.Ring), "");
@@ -403,16 +383,12 @@ TEST(ArealAverage, BadGaugesAreNamedByTheirNamesToo)
   utm.Projection = ProjectionParameters::FromString("projection=UTM zone=31 north=1");
   const auto errorOf = [&](const std::vector<Point2>& gauges, const ArealAverageSettings& settings)
   {
-    try
-    {
-      ThiessenArealAverage average(gauges, catchment.Offsets, catchment.Ring, settings);
-      average.Step({ 1.0, INFINITY });
-    }
-    catch (const InputError& e)
-    {
-      return std::string(e.what());
-    }
-    return std::string("no error");
+    return ErrorOf(
+      [&]
+      {
+        ThiessenArealAverage average(gauges, catchment.Offsets, catchment.Ring, settings);
+        average.Step({ 1.0, INFINITY });
+      });
   };
   for (const Point2& bad : { Point2{ 0.3, 91.0 },
          Point2{ -1031.5, 0.5 },
@@ -459,12 +435,7 @@ TEST(ArealAverage, LatticeGaugesUpdateLikeRebuildsThroughCatchmentVertices)
       values[g] = reporting[g] ? double(g % 7) : NaN;
     }
     const ArealStep x = a.Step(values), y = b.Step(values);
-    ASSERT_EQ(x.Gauges, y.Gauges) << "step " << t;
-    for (std::size_t k = 0; k < x.Weights.size(); ++k)
-    {
-      EXPECT_NEAR(x.Weights[k], y.Weights[k], 1e-13) << "step " << t << " gauge " << x.Gauges[k];
-    }
-    EXPECT_NEAR(Sum(x.Weights), 1.0, 1e-12) << "step " << t;
+    ASSERT_NO_FATAL_FAILURE(ExpectSameStep(x, y, t));
   }
 }
 
@@ -526,13 +497,7 @@ TEST(ArealAverage, UpdatesSkipTilesClearOfTheCatchmentYetEqualRebuildsWhenHolesO
       values[g] = reporting[g] ? value(random) : NaN;
     }
     const ArealStep x = a.Step(values), y = b.Step(values);
-    ASSERT_EQ(x.Gauges, y.Gauges) << "step " << t;
-    for (std::size_t k = 0; k < x.Weights.size(); ++k)
-    {
-      EXPECT_NEAR(x.Weights[k], y.Weights[k], 1e-13) << "step " << t << " gauge " << x.Gauges[k];
-    }
-    EXPECT_NEAR(x.Mean, y.Mean, 1e-12) << "step " << t;
-    EXPECT_NEAR(Sum(x.Weights), 1.0, 1e-12) << "step " << t;
+    ASSERT_NO_FATAL_FAILURE(ExpectSameStep(x, y, t));
     if (t > 0)
     {
       // The premise: updates (not rebuilds), which skipped tiles.

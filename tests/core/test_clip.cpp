@@ -33,8 +33,11 @@ namespace
 
 // ---- Exact rational reference ------------------------------------------------------------------
 
+using tessera_test::ErrorOf;
 using tessera_test::ExactArea;
 using tessera_test::QPoint;
+using tessera_test::Rectangle;
+using tessera_test::Rings;
 
 QPoint ToExact(const Point2& p)
 {
@@ -106,23 +109,6 @@ bool ExactInsideRing(const QPoint& p, const std::vector<QPoint>& ring)
   }
   return inside;
 }
-
-struct Rings
-{
-  std::vector<std::size_t> Offsets{ 0 };
-  std::vector<Point2> Vertices;
-  void Add(const std::vector<Point2>& ring)
-  {
-    this->Vertices.insert(this->Vertices.end(), ring.begin(), ring.end());
-    this->Offsets.push_back(this->Vertices.size());
-  }
-  std::vector<Point2> Ring(std::size_t r) const
-  {
-    return { this->Vertices.begin() + static_cast<std::ptrdiff_t>(this->Offsets[r]),
-      this->Vertices.begin() + static_cast<std::ptrdiff_t>(this->Offsets[r + 1]) };
-  }
-  std::size_t Count() const { return this->Offsets.size() - 1; }
-};
 
 bool ExactInsideRegion(const QPoint& p, const Rings& rings)
 {
@@ -198,11 +184,6 @@ mpq_class ExactRegionArea(const Rings& rings)
 }
 
 // ---- Shapes ------------------------------------------------------------------------------------
-
-std::vector<Point2> Rectangle(double x0, double y0, double x1, double y1)
-{
-  return { { x0, y0 }, { x1, y0 }, { x1, y1 }, { x0, y1 } };
-}
 
 double Overlap1D(double a0, double a1, double b0, double b1)
 {
@@ -311,20 +292,6 @@ Rings NestedStars(std::mt19937& random, double step, double offset)
 double Tolerance(const mpq_class& exact, double tileArea)
 {
   return 1e-12 * std::max(std::fabs(exact.get_d()), 1e-3 * tileArea);
-}
-
-template<typename Function>
-std::string ErrorOf(Function&& function)
-{
-  try
-  {
-    function();
-  }
-  catch (const InputError& error)
-  {
-    return error.what();
-  }
-  return "";
 }
 
 // Checks the returned rings against the region they claim: their signed areas add up to the

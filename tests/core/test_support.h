@@ -1,11 +1,14 @@
 #pragma once
 // Small helpers shared by the core test programs (not part of the library).
 
+#include "clip.h"
 #include "dirichlet_tessellation.h"
+#include "errors.h"
 #include "tiles.h"
 #include "window.h"
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <map>
@@ -46,6 +49,61 @@ private:
   std::string Old;
   bool HadOld = false;
 };
+
+/// The message of the InputError that function throws, or "" when it throws none.
+template<typename Function>
+std::string ErrorOf(Function&& function)
+{
+  try
+  {
+    function();
+  }
+  catch (const tessera::InputError& error)
+  {
+    return error.what();
+  }
+  return "";
+}
+
+/// The axis-aligned rectangle from (x0, y0) to (x1, y1), anticlockwise when x0 < x1 and y0 < y1.
+inline std::vector<tessera::Point2> Rectangle(double x0, double y0, double x1, double y1)
+{
+  return { { x0, y0 }, { x1, y0 }, { x1, y1 }, { x0, y1 } };
+}
+
+/// Rings of a region as the core takes them: flat vertices, ring r from Offsets[r] to
+/// Offsets[r + 1].
+struct Rings
+{
+  std::vector<std::size_t> Offsets{ 0 };
+  std::vector<tessera::Point2> Vertices;
+  Rings() = default;
+  explicit Rings(const std::vector<std::vector<tessera::Point2>>& rings)
+  {
+    for (const auto& ring : rings)
+    {
+      this->Add(ring);
+    }
+  }
+  void Add(const std::vector<tessera::Point2>& ring)
+  {
+    this->Vertices.insert(this->Vertices.end(), ring.begin(), ring.end());
+    this->Offsets.push_back(this->Vertices.size());
+  }
+  std::vector<tessera::Point2> Ring(std::size_t r) const
+  {
+    return { this->Vertices.begin() + static_cast<std::ptrdiff_t>(this->Offsets[r]),
+      this->Vertices.begin() + static_cast<std::ptrdiff_t>(this->Offsets[r + 1]) };
+  }
+  std::size_t Count() const { return this->Offsets.size() - 1; }
+};
+
+/// The catchment of the given rings.
+inline tessera::Catchment MakeCatchment(const std::vector<std::vector<tessera::Point2>>& rings)
+{
+  const Rings flat(rings);
+  return tessera::Catchment(flat.Offsets, flat.Vertices);
+}
 
 /// Ids of the accepted points of a tessellation, ascending.
 inline std::vector<std::int32_t> AcceptedIds(const tessera::DirichletTessellation& t)

@@ -1,8 +1,10 @@
 """Small helpers shared by the Python tests: a failing check raises AssertionError with a message,
 and the process exits non-zero, so ctest sees the failure."""
 
+import json
 import os
 import sys
+from fractions import Fraction
 
 SOURCE_DIR = os.environ.get("TESSERA_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
 EXAMPLE_DATA = os.path.join(SOURCE_DIR, "examples", "data")
@@ -49,6 +51,74 @@ def polygon(rings):
     data.SetPoints(points)
     data.SetPolys(polys)
     return data
+
+
+def cell_rings(data):
+    """The (x, y) vertices of each cell of a vtkPolyData, cell by cell."""
+    rings = []
+    for c in range(data.GetNumberOfCells()):
+        ids = data.GetCell(c).GetPointIds()
+        rings.append([data.GetPoint(ids.GetId(k))[:2] for k in range(ids.GetNumberOfIds())])
+    return rings
+
+
+def colorado_outline():
+    """The Colorado catchment's ring (examples/data/colorado_boundary.geojson) as (lon, lat)
+    tuples, without the closing point."""
+    with open(os.path.join(EXAMPLE_DATA, "colorado_boundary.geojson")) as f:
+        return [tuple(p) for p in json.load(f)["features"][0]["geometry"]["coordinates"][0][:-1]]
+
+
+# ---- an exact simplicity test --------------------------------------------------------------------
+
+def exact_area(ring):
+    """The polygon's signed area, exactly (as a fraction)."""
+    q = [(Fraction(x), Fraction(y)) for x, y in ring]
+    return sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(q, q[1:] + q[:1])) / 2
+
+
+def orient(a, b, c):
+    """Sign of the turn a -> b -> c, exactly (the doubles as fractions)."""
+    d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+    return (d > 0) - (d < 0)
+
+
+def on_segment(p, a, b):
+    """p on the closed segment a-b (p, a, b collinear)."""
+    return min(a[0], b[0]) <= p[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= p[1] <= max(a[1], b[1])
+
+
+def segments_meet(a, b, c, d):
+    """Whether the closed segments a-b and c-d have a point in common."""
+    o1, o2, o3, o4 = orient(a, b, c), orient(a, b, d), orient(c, d, a), orient(c, d, b)
+    if o1 * o2 < 0 and o3 * o4 < 0:
+        return True
+    return ((o1 == 0 and on_segment(c, a, b)) or (o2 == 0 and on_segment(d, a, b))
+            or (o3 == 0 and on_segment(a, c, d)) or (o4 == 0 and on_segment(b, c, d)))
+
+
+def simplicity_defect(ring):
+    """None for a simple polygon (at least 3 distinct vertices, positive area, edges meeting only
+    where consecutive ones share their vertex, no spike back along an edge); otherwise what is
+    wrong. Exact: the vertices are taken as fractions."""
+    q = [(Fraction(x), Fraction(y)) for x, y in ring]
+    n = len(q)
+    if n < 3 or len(set(q)) != n:
+        return f"{n} vertices, {len(set(q))} distinct"
+    edges = [(q[i], q[(i + 1) % n]) for i in range(n)]
+    for i in range(n):
+        a, b = edges[i]
+        c = edges[(i + 1) % n][1]
+        if orient(a, b, c) == 0 and (c[0] - b[0]) * (a[0] - b[0]) + (c[1] - b[1]) * (a[1] - b[1]) > 0:
+            return f"a spike at vertex {(i + 1) % n}"
+        for j in range(i + 2, n):
+            if i == 0 and j == n - 1:
+                continue  # consecutive (the closing edge)
+            if segments_meet(a, b, *edges[j]):
+                return f"edges {i} and {j} meet"
+    if exact_area(ring) <= 0:
+        return "not anticlockwise"
+    return None
 
 
 def make_points(coords, **arrays):

@@ -11,7 +11,8 @@ import subprocess
 import sys
 import tempfile
 
-from tessera_testing import EXAMPLE_DATA, SOURCE_DIR, assert_close, assert_that, run
+from tessera_testing import (EXAMPLE_DATA, SOURCE_DIR, assert_close, assert_that, cell_rings, colorado_outline,
+                             run)
 
 EXAMPLES = os.path.join(SOURCE_DIR, "examples")
 MONTH = (1963, 8)
@@ -22,6 +23,41 @@ def run_example(script, *arguments):
     done = subprocess.run([sys.executable, os.path.join(EXAMPLES, script), *arguments],
                           capture_output=True, text=True, timeout=300)
     return done.returncode, done.stdout, done.stderr
+
+
+def run_colorado(out, *arguments, what="the run", status=0, plots=True, **options):
+    """Runs colorado_areal_precipitation.py with --out out, each keyword option as a flag
+    (month="2001-01" as --month 2001-01), --no-plots unless plots, then the arguments; asserts its
+    exit status (0 unless given) and returns its (stdout, stderr)."""
+    flags = [item for name, value in options.items() for item in (f"--{name}", value)]
+    got, stdout, stderr = run_example("colorado_areal_precipitation.py", "--out", out, *flags,
+                                      *([] if plots else ["--no-plots"]), *arguments)
+    assert_that(got == status, f"{what}: exit status {got}, expected {status}: {stderr}")
+    return stdout, stderr
+
+
+def write(directory, name, text):
+    """Writes text into directory/name; returns its path."""
+    path = os.path.join(directory, name)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def write_stations(path, gauges):
+    """A stations file of gauges ({station_id: (lon, lat)})."""
+    with open(path, "w") as f:
+        f.write("station_id,lon,lat\n" + "".join(f"{s},{lon},{lat}\n" for s, (lon, lat) in gauges.items()))
+
+
+def read_polydata(path):
+    """A .vtp file's vtkPolyData."""
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return reader.GetOutput()
 
 
 def read_csv(path):
@@ -47,9 +83,7 @@ def raw_reporting_counts():
 
 def test_the_colorado_main_job():
     with tempfile.TemporaryDirectory() as out:
-        status, stdout, stderr = run_example("colorado_areal_precipitation.py", "--out", out,
-                                             "--month", "%04d-%02d" % MONTH)
-        assert_that(status == 0, f"the main job failed ({status}): {stderr}")
+        stdout, stderr = run_colorado(out, month="%04d-%02d" % MONTH, what="the main job")
         rows = read_csv(os.path.join(out, "areal_mean.csv"))
         assert_that(list(rows[0]) == ["year", "month", "stations_used", "stations_weighted", "areal_mean"],
                     f"areal_mean.csv columns: {list(rows[0])}")
@@ -74,12 +108,7 @@ def test_the_colorado_main_job():
         mean = sum(float(w["weight"]) * float(w["precip"]) for w in weighted)
         assert_close(mean, float(row["areal_mean"]), 1e-6, "sum of weight x precip against areal_mean")
 
-        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-
-        reader = vtkXMLPolyDataReader()
-        reader.SetFileName(os.path.join(out, f"tiles_{tag}.vtp"))
-        reader.Update()
-        tiles = reader.GetOutput()
+        tiles = read_polydata(os.path.join(out, f"tiles_{tag}.vtp"))
         cd = tiles.GetCellData()
         ids, weight, cell_weight = cd.GetAbstractArray("StationId"), cd.GetArray("Weight"), cd.GetArray("CellWeight")
         per_station = {}  # station: (its Weight, the sum of its cells' CellWeight)
@@ -124,10 +153,7 @@ def test_missing_values_keep_their_months():
             areal_mean.csv."""
             with open(observations, "w") as f:
                 f.write(text)
-            status, stdout, stderr = run_example("colorado_areal_precipitation.py", "--out", out,
-                                                 "--observations", observations, "--month", month,
-                                                 "--no-plots")
-            assert_that(status == 0, f"failed ({status}): {stderr}")
+            stdout, stderr = run_colorado(out, observations=observations, month=month, plots=False)
             return stdout, stderr, read_csv(os.path.join(out, "areal_mean.csv"))
 
         stdout, stderr, rows = run_on("station_id,year,month,precip\n050848,1950,1,\n050848,1950,2,NA\n"
@@ -160,25 +186,19 @@ def test_missing_values_keep_their_months():
 
 def test_bad_files_are_named():
     with tempfile.TemporaryDirectory() as out:
-        def write(name, text):
-            path = os.path.join(out, name)
-            with open(path, "w") as f:
-                f.write(text)
-            return path
-
-        stations_id = write("id.csv", "id,lon,lat\n1,-105,39\n")
-        stations_lat = write("lat.csv", "station_id,lon,lat\nA,-105,39\nB,-104,north\n")
-        month = write("month.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,13,1\n")
-        value = write("value.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,1,5\n")
-        value2 = write("value2.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,x\n")
-        empty_id = write("empty_id.csv", "station_id,year,month,precip\n ,1950,1,1\n")
-        not_polygon = write("catchment.geojson", "{}\n")
-        header_only = write("header.csv", "station_id,year,month,precip\n")
-        infinite = write("inf.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,1e999\n")
-        quote = write("quote.csv", 'station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,"1.2\n')
-        bad_header = write("bad_header.csv", 'station_id,"lon"x,lat\n050848,-105,39\n')
-        geojson = write("stations.geojson", '{"type": "FeatureCollection", "features": []}\n')
-        pretty_json = write("pretty.json", '{\n  "station_id": "050848"\n}\n')
+        stations_id = write(out, "id.csv", "id,lon,lat\n1,-105,39\n")
+        stations_lat = write(out, "lat.csv", "station_id,lon,lat\nA,-105,39\nB,-104,north\n")
+        month = write(out, "month.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,13,1\n")
+        value = write(out, "value.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,1,5\n")
+        value2 = write(out, "value2.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,x\n")
+        empty_id = write(out, "empty_id.csv", "station_id,year,month,precip\n ,1950,1,1\n")
+        not_polygon = write(out, "catchment.geojson", "{}\n")
+        header_only = write(out, "header.csv", "station_id,year,month,precip\n")
+        infinite = write(out, "inf.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,1e999\n")
+        quote = write(out, "quote.csv", 'station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,"1.2\n')
+        bad_header = write(out, "bad_header.csv", 'station_id,"lon"x,lat\n050848,-105,39\n')
+        geojson = write(out, "stations.geojson", '{"type": "FeatureCollection", "features": []}\n')
+        pretty_json = write(out, "pretty.json", '{\n  "station_id": "050848"\n}\n')
         directory = os.path.join(out, "catchment.d")
         os.mkdir(directory)
         utf16 = os.path.join(out, "utf16.csv")
@@ -210,26 +230,22 @@ def test_bad_files_are_named():
             (("--out", stations_id), [f"--out {stations_id}: exists and is not a directory"]),
         ]
         for arguments, fragments in cases:
-            status, _, stderr = run_example("colorado_areal_precipitation.py", "--out", out, "--no-plots",
-                                            *arguments)
-            assert_that(status == 1, f"{arguments}: exit status {status}, expected 1")
+            _, stderr = run_colorado(out, *arguments, what=str(arguments), status=1, plots=False)
             assert_that("Traceback" not in stderr, f"{arguments}: a traceback instead of a message: {stderr}")
             assert_that(":0:" not in stderr, f"{arguments}: a line 0: {stderr}")
             for fragment in fragments:
                 assert_that(fragment in stderr, f"{arguments}: {fragment!r} not in {stderr!r}")
         # Text a spreadsheet saves: Windows-1252 stations, UTF-16 observations with its mark.
-        status, _, stderr = run_example("colorado_areal_precipitation.py", "--out", out, "--no-plots",
-                                        "--stations", latin, "--observations", utf16, "--month", "1963-08")
-        assert_that(status == 0, f"cp1252 and UTF-16 files: {status} {stderr}")
+        run_colorado(out, stations=latin, observations=utf16, month="1963-08", plots=False,
+                     what="cp1252 and UTF-16 files")
         weights = read_csv(os.path.join(out, "weights_1963_08.csv"))
         assert_that([(w["name"], float(w["weight"]), float(w["precip"])) for w in weights] == [("Café", 1.0, 1.5)],
                     f"cp1252 and UTF-16 files read as {weights}")
-        short = write("short.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2\n")
+        short = write(out, "short.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2\n")
         for path, fields in ((value, 5), (short, 3)):
-            status, _, stderr = run_example("colorado_areal_precipitation.py", "--out", out, "--no-plots",
-                                            "--observations", path)
+            _, stderr = run_colorado(out, observations=path, what=path, status=1, plots=False)
             expected = f"{path}:3: {fields} field(s) where the header has 4"
-            assert_that(status == 1 and expected in stderr, f"{path}: {status} {stderr!r}")
+            assert_that(expected in stderr, f"{path}: {stderr!r}")
 
 # A synthetic basin in New Zealand (lon 175.5-176.5, southern hemisphere) with a lake: a two-ring
 # outline (a concave outer ring and a hole), five gauges around and in it, one far away.
@@ -248,8 +264,7 @@ def write_lake_basin(directory):
     paths = [os.path.join(directory, name) for name in ("basin.geojson", "stations.csv", "obs.csv")]
     with open(paths[0], "w") as f:
         json.dump(LAKE_BASIN, f)
-    with open(paths[1], "w") as f:
-        f.write("station_id,lon,lat\n" + "".join(f"{s},{lon},{lat}\n" for s, (lon, lat) in LAKE_GAUGES.items()))
+    write_stations(paths[1], LAKE_GAUGES)
     with open(paths[2], "w") as f:
         f.write("station_id,year,month,precip\n" + "".join(f"{s},2001,1,{10 * k}\n" for k, s in enumerate(LAKE_GAUGES, 1)
                                                           if s != "N6") + "N1,2001,2,5\nN6,2001,2,7\n")
@@ -267,35 +282,28 @@ def test_the_map_of_another_place_with_a_lake():
     example = import_example()
     with tempfile.TemporaryDirectory() as out:
         catchment, stations, observations = write_lake_basin(out)
-        status, stdout, stderr = run_example("colorado_areal_precipitation.py", "--out", out, "--stations", stations,
-                                             "--observations", observations, "--catchment", catchment,
-                                             "--month", "2001-01")
-        assert_that(status == 0, f"the lake basin failed ({status}): {stderr}")
+        run_colorado(out, stations=stations, observations=observations, catchment=catchment, month="2001-01",
+                     what="the lake basin")
         assert_that(is_png(os.path.join(out, "map_2001_01.png")), "map_2001_01.png is not a PNG file")
         weights = read_csv(os.path.join(out, "weights_2001_01.csv"))
         assert_close(sum(float(w["weight"]) for w in weights), 1.0, 1e-12, "the lake basin's weights sum")
         # The tiles file: no cell over the lake, cells' weights summing to 1.
         from matplotlib.path import Path
-        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
-        reader = vtkXMLPolyDataReader()
-        reader.SetFileName(os.path.join(out, "tiles_2001_01.vtp"))
-        reader.Update()
-        tiles = reader.GetOutput()
-        cells = [[tiles.GetPoint(tiles.GetCell(c).GetPointId(k))[:2] for k in range(tiles.GetCell(c).GetNumberOfPoints())]
-                 for c in range(tiles.GetNumberOfCells())]
+        tiles = read_polydata(os.path.join(out, "tiles_2001_01.vtp"))
+        cells = cell_rings(tiles)
         assert_that(not any(Path(cell).contains_point((175.95, -38.82)) for cell in cells), "a cell covers the lake")
         cell_weight = tiles.GetCellData().GetArray("CellWeight")
         assert_close(math.fsum(cell_weight.GetValue(c) for c in range(tiles.GetNumberOfCells())), 1.0, 1e-12,
                      "the lake basin's cells' CellWeight")
         # The outline, ring by ring: GDAL's reading of the file gives back the file's two rings.
-        rings = example.catchment_rings(example.read_catchment(catchment).GetOutput())
+        _, rings = example.read_catchment(catchment)
         expected = [[tuple(p) for p in ring[:-1]] for ring in LAKE_BASIN["features"][0]["geometry"]["coordinates"]]
         assert_that(rings == expected, f"rings {rings}, the file has {expected}")
     # The map's extent holds the catchment and the weighted gauges with an even margin, here as
     # for Colorado (no place is built in).
     weighted = [LAKE_GAUGES[w["station_id"]] for w in weights]
-    colorado = [read_colorado_outline()]
+    colorado = [colorado_outline()]
     for outline, points in ((rings, weighted), (colorado, [(-109.4, 37.1), (-101.1, 40.0)])):
         lon_min, lon_max, lat_min, lat_max = example.map_extent(outline, points)
         xs = [p[0] for ring in outline for p in ring] + [p[0] for p in points]
@@ -314,10 +322,8 @@ def test_a_month_without_reports_still_gets_its_map():
         catchment, stations, observations = write_lake_basin(out)
         with open(observations, "w") as f:
             f.write("station_id,year,month,precip\nN1,2001,1,10\nN2,2001,1,20\nN1,2001,3,5\nN6,2001,3,7\n")
-        status, stdout, stderr = run_example("colorado_areal_precipitation.py", "--out", out, "--stations", stations,
-                                             "--observations", observations, "--catchment", catchment,
-                                             "--month", "2001-02")
-        assert_that(status == 0, f"a month without reports failed ({status}): {stderr}")
+        stdout, stderr = run_colorado(out, stations=stations, observations=observations, catchment=catchment,
+                                      month="2001-02", what="a month without reports")
         assert_that("Traceback" not in stderr, f"a traceback: {stderr}")
         # The rows read from the file: not the row the script adds for 2001-02.
         assert_that("read 6 gauges and 4 observations in" in stderr, f"the rows read: {stderr}")
@@ -342,8 +348,7 @@ def test_ids_without_their_leading_zeros_match_as_in_the_filter():
             ("0101", 2, "5"), ("000", 2, "3"), ("007", 2, "7"), ("N5", 4, "8"), ("0102", 4, "NA")]
     with tempfile.TemporaryDirectory() as directory:
         catchment, stations, _ = write_lake_basin(directory)
-        with open(stations, "w") as f:
-            f.write("station_id,lon,lat\n" + "".join(f"{s},{lon},{lat}\n" for s, (lon, lat) in gauges.items()))
+        write_stations(stations, gauges)
         outputs = {}
         for name, strip in (("zeros", False), ("nozeros", True)):
             observations = os.path.join(directory, f"{name}.csv")
@@ -351,10 +356,8 @@ def test_ids_without_their_leading_zeros_match_as_in_the_filter():
                 f.write("station_id,year,month,precip\n" + "".join(
                     f"{int(s) if strip and s.isdigit() else s},2001,{m},{v}\n" for s, m, v in rows))
             out = os.path.join(directory, name)
-            status, stdout, stderr = run_example("colorado_areal_precipitation.py", "--out", out,
-                                                 "--stations", stations, "--observations", observations,
-                                                 "--catchment", catchment, "--month", "2001-02")
-            assert_that(status == 0, f"{name}: failed ({status}): {stderr}")
+            stdout, stderr = run_colorado(out, stations=stations, observations=observations, catchment=catchment,
+                                          month="2001-02", what=name)
             files = {}
             for file in ("areal_mean.csv", "weights_all_months.csv", "weights_2001_02.csv", "map_2001_02.png"):
                 with open(os.path.join(out, file), "rb") as f:
@@ -399,23 +402,17 @@ def test_the_filters_errors_name_the_file_and_line():
     with tempfile.TemporaryDirectory() as out:
         catchment, stations, observations = write_lake_basin(out)
 
-        def write(name, text):
-            path = os.path.join(out, name)
-            with open(path, "w") as f:
-                f.write(text)
-            return path
-
         def polygon(name, ring):
-            return write(name, json.dumps({"type": "FeatureCollection", "features": [{
+            return write(out, name, json.dumps({"type": "FeatureCollection", "features": [{
                 "type": "Feature", "properties": {}, "geometry": {"type": "Polygon", "coordinates": [ring]}}]}))
 
-        bad_gauge = write("bad_gauge.csv", "station_id,lon,lat\nN1,175.6,-39.1\nN2,176.4,-39.1\nN3,175.95,-38.82\n"
-                                           "004,-0.5,95\n")
+        bad_gauge = write(out, "bad_gauge.csv", "station_id,lon,lat\nN1,175.6,-39.1\nN2,176.4,-39.1\n"
+                                                "N3,175.95,-38.82\n004,-0.5,95\n")
         bow_tie = polygon("bow_tie.geojson", [[175.5, -39.2], [176.5, -38.4], [176.5, -39.2], [175.5, -38.4],
                                               [175.5, -39.2]])
         metres = polygon("metres.geojson", [[500000, 4100000], [800000, 4100000], [800000, 4500000],
                                             [500000, 4500000], [500000, 4100000]])
-        header_only = write("header_only.csv", "station_id,year,month,precip\n")
+        header_only = write(out, "header_only.csv", "station_id,year,month,precip\n")
         cases = [
             (("--stations", bad_gauge),
              f"{bad_gauge}:5: gauge 3 (station 004) has an invalid longitude/latitude (-0.5, 95)"),
@@ -426,11 +423,9 @@ def test_the_filters_errors_name_the_file_and_line():
             (("--observations", header_only), f"{header_only}: the observations table has no rows"),
         ]
         for arguments, expected in cases:
-            files = {"--stations": stations, "--observations": observations, "--catchment": catchment}
-            files[arguments[0]] = arguments[1]
-            status, _, stderr = run_example("colorado_areal_precipitation.py", "--out", out, "--no-plots",
-                                            *(item for pair in files.items() for item in pair))
-            assert_that(status == 1, f"{arguments}: exit status {status}, expected 1: {stderr}")
+            files = {"stations": stations, "observations": observations, "catchment": catchment}
+            files[arguments[0].lstrip("-")] = arguments[1]
+            _, stderr = run_colorado(out, what=str(arguments), status=1, plots=False, **files)
             assert_without_vtk_decoration(stderr, str(arguments))
             messages = stderr_messages(stderr)
             assert_that(len(messages) == 1 and messages[0].startswith(expected),
@@ -448,10 +443,8 @@ def test_the_filters_warnings_are_lines_of_their_own():
         with open(observations, "w") as f:
             f.write("station_id,year,month,precip\nN1,2001,1,10\nN2,2001,1,20\nXX,2001,1,5\nN3,2001,1,30\n"
                     "N1,2001,1,11\nXX,2001,2,5\nN4,2001,2,40\n")
-        status, _, stderr = run_example("colorado_areal_precipitation.py", "--out", out, "--no-plots",
-                                        "--stations", stations, "--observations", observations,
-                                        "--catchment", catchment, "--month", "2001-01")
-        assert_that(status == 0, f"failed ({status}): {stderr}")
+        _, stderr = run_colorado(out, stations=stations, observations=observations, catchment=catchment,
+                                 month="2001-01", plots=False, what="warnings")
         assert_without_vtk_decoration(stderr, "warnings")
         messages = stderr_messages(stderr)
         expected = [
@@ -479,10 +472,8 @@ def test_rows_of_empty_fields_are_skipped():
         outputs = {}
         for name in ("clean", "blank"):
             out = os.path.join(directory, name)
-            arguments = ["--out", out, "--catchment", catchment, "--month", "2001-01", "--no-plots"]
-            if name == "clean":
-                arguments += ["--stations", stations, "--observations", observations]
-            else:
+            files = {"stations": stations, "observations": observations}
+            if name == "blank":
                 with open(stations) as f:
                     lines = f.read().splitlines()
                 blank_stations = os.path.join(directory, "blank_stations.csv")
@@ -494,9 +485,9 @@ def test_rows_of_empty_fields_are_skipped():
                 with open(blank_observations, "w") as f:
                     f.write("\n".join(lines[:2] + [",,,", "", "   "] + lines[2:] + ["XX,2001,2,1", ",,,", ",,,"])
                             + "\n")
-                arguments += ["--stations", blank_stations, "--observations", blank_observations]
-            status, stdout, stderr = run_example("colorado_areal_precipitation.py", *arguments)
-            assert_that(status == 0, f"{name}: failed ({status}): {stderr}")
+                files = {"stations": blank_stations, "observations": blank_observations}
+            stdout, stderr = run_colorado(out, catchment=catchment, month="2001-01", plots=False, what=name,
+                                          **files)
             with open(os.path.join(out, "areal_mean.csv")) as f:
                 outputs[name] = (f.read(), stdout.replace(out, "OUT"), stderr)
         assert_that(outputs["clean"][:2] == outputs["blank"][:2],
@@ -541,13 +532,6 @@ def test_the_messages_map_to_files_and_lines():
         assert_that(got == expected, f"{got!r}, expected {expected!r}")
 
 
-def read_colorado_outline():
-    import json
-
-    with open(os.path.join(EXAMPLE_DATA, "colorado_boundary.geojson")) as f:
-        return [tuple(p) for p in json.load(f)["features"][0]["geometry"]["coordinates"][0][:-1]]
-
-
 def test_the_other_examples_run_on_their_data():
     with tempfile.TemporaryDirectory() as out:
         status, _, stderr = run_example("project_gauges.py", "--out", out)
@@ -559,12 +543,7 @@ def test_the_other_examples_run_on_their_data():
                     "a projected coordinate is not finite")
         status, stdout, stderr = run_example("ridge_grouping.py", "--out", out)
         assert_that(status == 0, f"ridge_grouping.py failed: {stderr}")
-        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
-
-        reader = vtkXMLPolyDataReader()
-        reader.SetFileName(os.path.join(out, "fiji_points.vtp"))
-        reader.Update()
-        points = reader.GetOutput()
+        points = read_polydata(os.path.join(out, "fiji_points.vtp"))
         groups = points.GetPointData().GetArray("GroupId")
         assert_that(points.GetNumberOfPoints() == 1000 and groups is not None, "fiji_points.vtp")
         found = {groups.GetValue(i) for i in range(points.GetNumberOfPoints())} - {-1}

@@ -2,20 +2,20 @@
 record against a brute-force raster of geodesically nearest gauges, and bad input."""
 
 import csv
-import json
 import math
 import os
 
 import numpy as np
 from matplotlib.path import Path
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints, vtkStringArray
+from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkIntArray, vtkPoints, vtkStringArray
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData, vtkTable
 from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
+from vtkmodules.vtkIOInfovis import vtkDelimitedTextReader
 
 from tessera import (vtkDirichletTessellation, vtkGeographicProjection, vtkThiessenArealAverage,
                      vtkWindowClip)
-from tessera_testing import (EXAMPLE_DATA, assert_close, assert_that, make_points, messages_of,
-                             polygon, run)
+from tessera_testing import (EXAMPLE_DATA, assert_close, assert_that, cell_rings, colorado_outline,
+                             make_points, messages_of, polygon, run, simplicity_defect)
 
 
 def gauges_polydata(coords, ids, values=None):
@@ -71,8 +71,7 @@ def read_colorado():
         for row in csv.DictReader(f):
             coords.append((float(row["lon"]), float(row["lat"])))
             ids.append(row["station_id"])
-    with open(os.path.join(EXAMPLE_DATA, "colorado_boundary.geojson")) as f:
-        ring = json.load(f)["features"][0]["geometry"]["coordinates"][0][:-1]
+    ring = colorado_outline()
     months = {}
     with open(os.path.join(EXAMPLE_DATA, "colorado_monthly_precip.csv")) as f:
         for row in csv.DictReader(f):
@@ -235,9 +234,7 @@ def test_window_clip_of_projected_tiles_sums_to_the_catchment():
         fraction = cd.GetArray("AreaFraction").GetValue(c)
         assert_that(0.0 < fraction <= 1.0 + 1e-12, f"AreaFraction {fraction} in (0, 1]")
     assert_that(cd.GetAbstractArray("station_id") is not None, "tile cell data carried")
-    poly = outline.GetOutput()
-    ids = poly.GetCell(0).GetPointIds()
-    pts = np.array([poly.GetPoint(ids.GetId(k))[:2] for k in range(ids.GetNumberOfIds())])
+    pts = np.array(cell_rings(outline.GetOutput())[0])
     x, y = pts[:, 0], pts[:, 1]
     area = 0.5 * abs(float(np.sum(x * np.roll(y, -1) - np.roll(x, -1) * y)))
     assert_close(sum(clipped.values()), area, 1e-12 * area, "clipped tiles sum to the catchment")
@@ -360,8 +357,6 @@ def test_window_cells_that_are_not_rings_are_reported():
 def dated_table(months, time_of):
     """{(year, month): {station: value}} as a long-format table: station_id, value, and the time
     columns that time_of(year, month) gives for each row ({name: text, int or float})."""
-    from vtkmodules.vtkCommonCore import vtkIntArray
-
     kinds = {str: vtkStringArray, int: vtkIntArray, float: vtkDoubleArray}
     table = vtkTable()
     s, v = vtkStringArray(), vtkDoubleArray()
@@ -418,8 +413,6 @@ def test_dates_and_year_month_columns_give_the_same_steps():
 
 def test_the_monthly_csv_as_a_text_reader_gives_it():
     # What ParaView's CSV reader hands the filter: year and month as numbers, no time column.
-    from vtkmodules.vtkIOInfovis import vtkDelimitedTextReader
-
     coords, ids, ring, months = read_colorado()
     reader = vtkDelimitedTextReader()
     reader.SetFileName(os.path.join(EXAMPLE_DATA, "colorado_monthly_precip.csv"))
@@ -442,30 +435,19 @@ def test_blank_values_read_as_text_are_missing():
     Columns off (what the README advises for blank missing values) the columns stay text and the
     filter reads a blank value as missing. Each month's mean and StationsUsed must then equal those
     of the same table without the blank rows, read as numbers."""
-    import tempfile
-
-    from vtkmodules.vtkIOInfovis import vtkDelimitedTextReader
-
     coords, ids, ring, months = read_colorado()
     blanked = {}
-    with tempfile.NamedTemporaryFile("w", suffix=".csv", delete=False) as out:
-        out.write("station_id,year,month,precip\n")
-        for (year, month), values in sorted(months.items()):
-            kept = {}
-            for k, (sid, value) in enumerate(sorted(values.items())):
-                blank = k % 3 == 0
-                out.write(f"{sid},{year},{month},{'' if blank else repr(value)}\n")
-                if not blank:
-                    kept[sid] = value
-            blanked[(year, month)] = kept
-        path = out.name
-    reader = vtkDelimitedTextReader()
-    reader.SetFileName(path)
-    reader.SetHaveHeaders(True)
-    reader.SetDetectNumericColumns(False)
-    reader.Update()
-    os.unlink(path)
-    f, messages = summary_of(coords, ids, ring, reader.GetOutput(), TimeColumn="year",
+    lines = ["station_id,year,month,precip\n"]
+    for (year, month), values in sorted(months.items()):
+        kept = {}
+        for k, (sid, value) in enumerate(sorted(values.items())):
+            blank = k % 3 == 0
+            lines.append(f"{sid},{year},{month},{'' if blank else repr(value)}\n")
+            if not blank:
+                kept[sid] = value
+        blanked[(year, month)] = kept
+    table = csv_reader_table("".join(lines), detect_numeric=False)
+    f, messages = summary_of(coords, ids, ring, table, TimeColumn="year",
                              MonthColumn="month", ValueColumn="precip")
     assert_that(not messages, f"errors: {messages}")
     numeric, _ = summary_of(coords, ids, ring, observations_table(blanked))
@@ -582,8 +564,6 @@ def test_review_cases_of_gauges_and_errors():
     gauges marked modified, is matched afresh: its rows make their time step again. (3) After an
     error found while averaging (a NaN gauge), no time step stays advertised. (4) Errors name a
     gauge by its station id as written, leading zeros and all."""
-    from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
-
     square = polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]])
     coords = [(0.25, 0.5), (0.75, 0.5)]
     rows = [("A", "2000-01", "2"), ("B", "2000-01", "4"), ("C", "2000-02", "1")]
@@ -616,7 +596,8 @@ def test_review_cases_of_gauges_and_errors():
                 f"(2) steps {before} then {after} after B became C: {messages}")
 
     def advertised(f):  # (output 0, the tiles, carries the steps)
-        return [f.GetOutputInformation(p).Has(sddp.TIME_STEPS()) for p in range(3)]
+        steps = vtkStreamingDemandDrivenPipeline.TIME_STEPS()
+        return [f.GetOutputInformation(p).Has(steps) for p in range(3)]
 
     assert_that(advertised(f)[0], "(3) steps advertised after a good run")
     gauges.GetPoints().SetPoint(1, float("nan"), 0.5, 0.0)
@@ -645,14 +626,13 @@ def written_csv(text):
     return path
 
 
-def csv_reader_table(text):
-    """The table VTK's CSV reader gives for text (numeric columns detected, as ParaView does)."""
-    from vtkmodules.vtkIOInfovis import vtkDelimitedTextReader
-
+def csv_reader_table(text, detect_numeric=True):
+    """The table VTK's CSV reader gives for text (by default numeric columns detected, as ParaView
+    does; detect_numeric=False leaves every column text)."""
     reader = vtkDelimitedTextReader()
     reader.SetFileName(written_csv(text))
     reader.SetHaveHeaders(True)
-    reader.SetDetectNumericColumns(True)
+    reader.SetDetectNumericColumns(detect_numeric)
     reader.Update()
     return reader.GetOutput()
 
@@ -677,8 +657,6 @@ def field_ids(f, name):
 
 
 def test_rows_that_cannot_be_used_make_no_step_and_are_listed():
-    from vtkmodules.vtkCommonCore import vtkCommand
-
     coords, square = [(0.25, 0.5), (0.75, 0.5)], [[(0, 0), (1, 0), (1, 1), (0, 1)]]
     # Numeric columns: the reader turns the blank last line into station 0, time 0, value 0.
     numeric = "station_id,time,value\n1,2000.0,1.0\n2,2000.0,3.0\n1,2000.5,2.0\n99,2001.0,5.0\n,,\n"
@@ -750,35 +728,6 @@ def ellipsoidal_area(ring):
     return total
 
 
-def cell_rings(tiles):
-    return [[tiles.GetPoint(tiles.GetCell(c).GetPointId(k))[:2] for k in range(tiles.GetCell(c).GetNumberOfPoints())]
-            for c in range(tiles.GetNumberOfCells())]
-
-
-def is_simple(ring):
-    """No two edges of the ring meet except neighbours at their shared vertex (floating point: the
-    rings here are far from degenerate)."""
-    def orient(p, q, r):
-        d = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
-        return (d > 0) - (d < 0)
-
-    def on(p, q, r):
-        return min(p[0], q[0]) <= r[0] <= max(p[0], q[0]) and min(p[1], q[1]) <= r[1] <= max(p[1], q[1])
-
-    edges = list(zip(ring, ring[1:] + ring[:1]))
-    n = len(edges)
-    for i in range(n):
-        for j in range(i + 1, n):
-            if j == i + 1 or (i == 0 and j == n - 1):
-                continue
-            (p, q), (r, s) = edges[i], edges[j]
-            o = [orient(p, q, r), orient(p, q, s), orient(r, s, p), orient(r, s, q)]
-            if (o[0] * o[1] < 0 and o[2] * o[3] < 0) or (o[0] == 0 and on(p, q, r)) or (o[1] == 0 and on(p, q, s)) \
-                    or (o[2] == 0 and on(r, s, p)) or (o[3] == 0 and on(r, s, q)):
-                return False
-    return True
-
-
 def test_tiles_of_a_catchment_with_a_hole_or_a_bay():
     # A lake inside the tile of the gauge standing in it; a bay whose mouth a gauge's tile spans, so
     # that the tile meets both shores. Output 0 must show each tile's part of the catchment as
@@ -817,7 +766,8 @@ def test_tiles_of_a_catchment_with_a_hole_or_a_bay():
         for sid, e in per_station.items():
             assert_close(e["cells"], e["area"], 1e-9 * e["area"], f"{name}: station {sid}'s cells against its Area_m2")
         cells = cell_rings(tiles)
-        assert_that(all(is_simple(ring) for ring in cells), f"{name}: a cell is not a simple polygon")
+        assert_that(all(simplicity_defect(ring) is None for ring in cells),
+                    f"{name}: a cell is not a simple polygon")
         paths = [Path(ring) for ring in cells]
         assert_that(not any(p.contains_point(outside) for p in paths), f"{name}: a cell covers {outside}")
         # Point by point: inside the catchment (even-odd over its rings) exactly one cell, else none.
@@ -862,18 +812,16 @@ def test_weights_table_lists_every_step():
 def test_long_numeric_ids_repeated_rows_and_shared_ids_are_kept_apart_and_reported():
     # USGS-style ids in double columns (as a CSV reader gives them) are four stations, not one:
     # the mean of four symmetric gauges with values 1..4 is 2.5 with weights of 1/4.
-    from vtkmodules.vtkCommonCore import vtkDoubleArray as Doubles
-
     coords = [(-0.5, -0.5), (0.5, -0.5), (0.5, 0.5), (-0.5, 0.5)]
     ids = [394529105231201.0, 394529105231202.0, 6730200.0, 6730500.0]
     gauges = gauges_polydata(coords, ["x"] * 4)
-    numeric = Doubles()
+    numeric = vtkDoubleArray()
     numeric.SetName("usgs")
     for i in ids:
         numeric.InsertNextValue(i)
     gauges.GetPointData().AddArray(numeric)
     table = vtkTable()
-    station, value, year = Doubles(), Doubles(), Doubles()
+    station, value, year = vtkDoubleArray(), vtkDoubleArray(), vtkDoubleArray()
     station.SetName("usgs")
     value.SetName("value")
     year.SetName("time")
@@ -884,7 +832,6 @@ def test_long_numeric_ids_repeated_rows_and_shared_ids_are_kept_apart_and_report
         year.InsertNextValue(2000.0)
     for column in (station, value, year):
         table.AddColumn(column)
-    from vtkmodules.vtkCommonCore import vtkCommand
 
     f = vtkThiessenArealAverage()
     messages = messages_of(f, vtkCommand.WarningEvent)

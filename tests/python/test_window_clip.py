@@ -5,16 +5,15 @@ array names."""
 
 import math
 import random
-from fractions import Fraction
 
 import numpy as np
 from matplotlib.path import Path
-from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkIntArray, vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkIntArray
 from vtkmodules.vtkFiltersCore import vtkTriangleFilter
 
 from tessera import vtkDirichletTessellation, vtkWindowClip
-from tessera_testing import assert_close, assert_that, make_points, messages_of, polygon, run
+from tessera_testing import (assert_close, assert_that, cell_rings, exact_area, make_points, messages_of,
+                             polygon, run, simplicity_defect)
 
 
 def clip(tiles, window_rings):
@@ -27,14 +26,6 @@ def clip(tiles, window_rings):
     return f.GetOutput()
 
 
-def cell_rings(data):
-    rings = []
-    for c in range(data.GetNumberOfCells()):
-        ids = data.GetCell(c).GetPointIds()
-        rings.append([data.GetPoint(ids.GetId(k))[:2] for k in range(ids.GetNumberOfIds())])
-    return rings
-
-
 def cell_values(data, name):
     array = data.GetCellData().GetArray(name)
     assert_that(array is not None, f"cell array {name}")
@@ -43,58 +34,6 @@ def cell_values(data, name):
 
 def shoelace(ring):
     return 0.5 * math.fsum(a[0] * b[1] - b[0] * a[1] for a, b in zip(ring, ring[1:] + ring[:1]))
-
-
-def exact_area(ring):
-    """The polygon's signed area, exactly (as a fraction)."""
-    q = [(Fraction(x), Fraction(y)) for x, y in ring]
-    return sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(q, q[1:] + q[:1])) / 2
-
-
-# ---- an exact simplicity test --------------------------------------------------------------------
-
-def orient(a, b, c):
-    """Sign of the turn a -> b -> c, exactly (the doubles as fractions)."""
-    d = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
-    return (d > 0) - (d < 0)
-
-
-def on_segment(p, a, b):
-    """p on the closed segment a-b (p, a, b collinear)."""
-    return min(a[0], b[0]) <= p[0] <= max(a[0], b[0]) and min(a[1], b[1]) <= p[1] <= max(a[1], b[1])
-
-
-def segments_meet(a, b, c, d):
-    """Whether the closed segments a-b and c-d have a point in common."""
-    o1, o2, o3, o4 = orient(a, b, c), orient(a, b, d), orient(c, d, a), orient(c, d, b)
-    if o1 * o2 < 0 and o3 * o4 < 0:
-        return True
-    return ((o1 == 0 and on_segment(c, a, b)) or (o2 == 0 and on_segment(d, a, b))
-            or (o3 == 0 and on_segment(a, c, d)) or (o4 == 0 and on_segment(b, c, d)))
-
-
-def simplicity_defect(ring):
-    """None for a simple polygon (at least 3 distinct vertices, positive area, edges meeting only
-    where consecutive ones share their vertex, no spike back along an edge); otherwise what is
-    wrong. Exact: the vertices are taken as fractions."""
-    q = [(Fraction(x), Fraction(y)) for x, y in ring]
-    n = len(q)
-    if n < 3 or len(set(q)) != n:
-        return f"{n} vertices, {len(set(q))} distinct"
-    edges = [(q[i], q[(i + 1) % n]) for i in range(n)]
-    for i in range(n):
-        a, b = edges[i]
-        c = edges[(i + 1) % n][1]
-        if orient(a, b, c) == 0 and (c[0] - b[0]) * (a[0] - b[0]) + (c[1] - b[1]) * (a[1] - b[1]) > 0:
-            return f"a spike at vertex {(i + 1) % n}"
-        for j in range(i + 2, n):
-            if i == 0 and j == n - 1:
-                continue  # consecutive (the closing edge)
-            if segments_meet(a, b, *edges[j]):
-                return f"edges {i} and {j} meet"
-    if exact_area(ring) <= 0:
-        return "not anticlockwise"
-    return None
 
 
 # ---- windows ---------------------------------------------------------------------------------------
@@ -148,17 +87,6 @@ def distances_to_boundary(rings, points):
     return best
 
 
-def distance_to_boundary(rings, p):
-    best = math.inf
-    for ring in rings:
-        for a, b in zip(ring, ring[1:] + ring[:1]):
-            ax, ay, bx, by = *a, *b
-            t = max(0.0, min(1.0, ((p[0] - ax) * (bx - ax) + (p[1] - ay) * (by - ay))
-                             / ((bx - ax) ** 2 + (by - ay) ** 2)))
-            best = min(best, math.hypot(p[0] - ax - t * (bx - ax), p[1] - ay - t * (by - ay)))
-    return best
-
-
 def random_tiling(seed, count):
     rng = np.random.default_rng(seed)
     tess = vtkDirichletTessellation()
@@ -201,10 +129,11 @@ def test_cells_are_simple_pieces_that_fill_tile_and_window():
             assert_that(out.GetCellData().GetArray("Hole") is None, f"{what}: no Hole array")
             defects = [(c, d) for c, d in enumerate(map(simplicity_defect, pieces)) if d]
             assert_that(not defects, f"{what}: {len(defects)} cells are not simple polygons: {defects[:3]}")
-            size = 1.0
-            outside = [(c, p) for c, ring in enumerate(pieces) for p in ring
-                       if not in_window(window_paths(rings), [p])[0]
-                       and distance_to_boundary(rings, p) > 1e-12 * size]
+            paths = window_paths(rings)
+            vertices = np.array([p for ring in pieces for p in ring], dtype=float).reshape(-1, 2)
+            cell_of_vertex = [c for c, ring in enumerate(pieces) for _ in ring]
+            away = ~in_window(paths, vertices) & (distances_to_boundary(rings, vertices) > 1e-12)
+            outside = [(cell_of_vertex[k], tuple(vertices[k])) for k in np.flatnonzero(away)]
             assert_that(not outside, f"{what}: vertices outside the window: {outside[:3]}")
             per_tile = {}
             for tile, area, piece_area, ring in zip(tile_ids, clipped, piece_areas, pieces):
@@ -231,7 +160,7 @@ def test_cells_are_simple_pieces_that_fill_tile_and_window():
             for ring in pieces:
                 covering += Path(np.array(ring)).contains_points(samples)
             clear = distances_to_boundary(rings, samples) > 1e-9
-            inside = in_window(window_paths(rings), samples)
+            inside = in_window(paths, samples)
             surely_in, surely_out = clear & inside, clear & ~inside
             assert_that(np.all(covering[surely_out] == 0), f"{what}: a cell outside the window")
             assert_that(np.all(covering <= 1), f"{what}: {np.sum(covering > 1)} sample points in two cells")
