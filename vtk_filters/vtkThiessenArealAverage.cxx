@@ -33,7 +33,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
-#include <map>
 #include <optional>
 #include <sstream>
 #include <unordered_map>
