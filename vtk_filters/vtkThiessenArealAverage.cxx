@@ -123,31 +123,58 @@ vtkAbstractArray* ObservationColumn(vtkTable* table, const std::string& column, 
 class NumberColumn
 {
 public:
+  /// A cell, read once: a text column's text, or a numeric column's number.
+  struct Cell
+  {
+    std::optional<std::string> Text; ///< a text column's (and only then)
+    double Value = 0.0;              ///< a numeric column's
+
+    /// Blank text, or NaN (what a reader may make of an empty numeric field).
+    bool IsEmpty() const
+    {
+      return this->Text ? Trimmed(*this->Text).empty() : std::isnan(this->Value);
+    }
+
+    /// The number; nothing for text that is not one (spaces around it are allowed).
+    std::optional<double> Number() const
+    {
+      if (!this->Text)
+      {
+        return this->Value;
+      }
+      const std::string text = Trimmed(*this->Text);
+      char* end = nullptr;
+      const double value = std::strtod(text.c_str(), &end);
+      if (text.empty() || end != text.c_str() + text.size())
+      {
+        return std::nullopt;
+      }
+      return value;
+    }
+  };
+
   explicit NumberColumn(vtkAbstractArray* array)
     : Array(array)
     , Numbers(vtkDataArray::SafeDownCast(array))
   {
   }
 
-  bool IsText() const { return !this->Numbers; }
-  std::string Text(vtkIdType row) const { return this->Array->GetVariantValue(row).ToString(); }
-
-  /// The row's number; nothing for text that is not one (spaces around it are allowed).
-  std::optional<double> Number(vtkIdType row) const
+  Cell Read(vtkIdType row) const
   {
+    Cell cell;
     if (this->Numbers)
     {
-      return this->Numbers->GetTuple1(row);
+      cell.Value = this->Numbers->GetTuple1(row);
     }
-    const std::string text = Trimmed(this->Text(row));
-    char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size())
+    else
     {
-      return std::nullopt;
+      cell.Text = this->Text(row);
     }
-    return value;
+    return cell;
   }
+
+  /// The row as text (for messages).
+  std::string Text(vtkIdType row) const { return this->Array->GetVariantValue(row).ToString(); }
 
 private:
   vtkAbstractArray* Array;
@@ -189,52 +216,56 @@ public:
   /// is not a finite number, a date or a month 1 .. 12.
   std::optional<double> operator()(vtkIdType row) const
   {
-    if (IsEmpty(this->Times, row) || (this->Months && IsEmpty(*this->Months, row)))
+    const NumberColumn::Cell time = this->Times.Read(row);
+    if (time.IsEmpty())
     {
       return std::nullopt;
     }
-    if (!this->Months && this->Times.IsText())
-    {
-      return this->Date(row);
-    }
-    const std::optional<double> t = this->Times.Number(row);
-    if (!t || !std::isfinite(*t))
-    {
-      ThrowRowError(row,
-        "the time '" + this->Times.Text(row) + "' in column '" + this->TimeColumn +
-          "' is not a finite number");
-    }
     if (!this->Months)
     {
-      return t;
+      if (time.Text)
+      {
+        return this->Date(row, *time.Text);
+      }
+      return this->Finite(row, time);
     }
-    const double month = this->Months->Number(row).value_or(0.0);
+    const NumberColumn::Cell monthCell = this->Months->Read(row);
+    if (monthCell.IsEmpty())
+    {
+      return std::nullopt;
+    }
+    const double year = this->Finite(row, time);
+    const double month = monthCell.Number().value_or(0.0);
     if (!(month >= 1.0 && month <= 12.0 && month == std::floor(month)))
     {
       ThrowRowError(row,
         "the month " + this->Months->Text(row) + " in column '" + this->MonthColumn +
           "' is not 1 .. 12");
     }
-    return tessera::MonthTime(*t, static_cast<int>(month));
+    return tessera::MonthTime(year, static_cast<int>(month));
   }
 
 private:
-  static bool IsEmpty(const NumberColumn& column, vtkIdType row)
+  /// The time cell's number, or an error naming the row when it is not a finite number.
+  double Finite(vtkIdType row, const NumberColumn::Cell& time) const
   {
-    if (column.IsText())
+    const std::optional<double> t = time.Number();
+    if (!t || !std::isfinite(*t))
     {
-      return Trimmed(column.Text(row)).empty();
+      ThrowRowError(row,
+        "the time '" + this->Times.Text(row) + "' in column '" + this->TimeColumn +
+          "' is not a finite number");
     }
-    return std::isnan(column.Number(row).value_or(0.0));
+    return *t;
   }
 
-  double Date(vtkIdType row) const
+  double Date(vtkIdType row, const std::string& text) const
   {
-    const std::optional<double> t = tessera::IsoDateTime(this->Times.Text(row));
+    const std::optional<double> t = tessera::IsoDateTime(text);
     if (!t)
     {
       ThrowRowError(row,
-        "'" + this->Times.Text(row) + "' in column '" + this->TimeColumn +
+        "'" + text + "' in column '" + this->TimeColumn +
           "' is not a date (YYYY, YYYY-MM or YYYY-MM-DD, optionally with hh:mm[:ss])");
     }
     return *t;
@@ -383,11 +414,12 @@ ObservationRows ClassifyRows(vtkTable* table,
 /// Other text is an error naming the row.
 double ObservationValue(const NumberColumn& values, vtkIdType row, const std::string& column)
 {
-  if (const std::optional<double> value = values.Number(row))
+  const NumberColumn::Cell cell = values.Read(row);
+  if (const std::optional<double> value = cell.Number())
   {
     return *value;
   }
-  const std::string text = values.Text(row);
+  const std::string& text = *cell.Text; // (a numeric cell is always a number)
   if (!IsMissingMarker(text))
   {
     ThrowRowError(row,
