@@ -276,14 +276,30 @@ private:
   std::optional<NumberColumn> Months;
 };
 
-/// The first gauge of each station key; ids given to more than one gauge are added to shared.
-std::unordered_map<std::string, std::int32_t> GaugesByStation(vtkAbstractArray* stationIds,
+/// The gauges' station ids as text (StationName), one per gauge; none without an id array.
+std::vector<std::string> GaugeNames(vtkAbstractArray* stationIds)
+{
+  std::vector<std::string> names;
+  if (stationIds)
+  {
+    for (vtkIdType g = 0; g < stationIds->GetNumberOfTuples(); ++g)
+    {
+      names.push_back(StationName(stationIds->GetVariantValue(g)));
+    }
+  }
+  return names;
+}
+
+/// The first gauge of each station key (of the gauges' names, GaugeNames); ids given to more than
+/// one gauge are added to shared.
+std::unordered_map<std::string, std::int32_t> GaugesByStation(
+  const std::vector<std::string>& gaugeNames,
   std::vector<std::string>& shared)
 {
   std::unordered_map<std::string, std::int32_t> gaugeOf;
-  for (vtkIdType g = 0; g < stationIds->GetNumberOfTuples(); ++g)
+  for (std::size_t g = 0; g < gaugeNames.size(); ++g)
   {
-    const std::string name = StationName(stationIds->GetVariantValue(g));
+    const std::string& name = gaugeNames[g];
     const auto [at, first] = gaugeOf.emplace(StationKey(name), static_cast<std::int32_t>(g));
     if (!first)
     {
@@ -356,11 +372,11 @@ std::vector<double> UniqueTimes(std::vector<double> times)
   return times;
 }
 
-/// The rows of the observations table matched with the gauges' station ids and read for times
-/// (ObservationRows). Throws InputError for a missing column and, naming the row, for a used row's
-/// time that cannot be read.
+/// The rows of the observations table matched with the gauges' station ids (as GaugeNames gives
+/// them) and read for times (ObservationRows). Throws InputError for a missing column and, naming
+/// the row, for a used row's time that cannot be read.
 ObservationRows ClassifyRows(vtkTable* table,
-  vtkAbstractArray* stationIds,
+  const std::vector<std::string>& gaugeNames,
   const std::string& stationColumn,
   const std::string& timeColumn,
   const std::string& monthColumn)
@@ -371,7 +387,7 @@ ObservationRows ClassifyRows(vtkTable* table,
   {
     return rows; // no steps: Build says so, even when the columns are missing too
   }
-  const auto gaugeOf = GaugesByStation(stationIds, rows.SharedIds);
+  const auto gaugeOf = GaugesByStation(gaugeNames, rows.SharedIds);
   vtkAbstractArray* stations =
     ObservationColumn(table, stationColumn, "station ids, numbers or text");
   const RowTimeReader timeOf(table, timeColumn, monthColumn);
@@ -676,10 +692,12 @@ struct vtkThiessenArealAverage::Internals
   ObservationRows Classified;
 
   /// ClassifyRows of the table, read by RequestInformation (which needs the time steps) and kept
-  /// for Build while the table, the gauges' ids and the columns are unchanged.
+  /// for Build while the table, the gauges' ids and the columns are unchanged. gaugeNames: the
+  /// GaugeNames of stationIds.
   const ObservationRows& CachedRows(vtkTable* table,
     vtkPointSet* gauges,
     vtkAbstractArray* stationIds,
+    const std::vector<std::string>& gaugeNames,
     const std::string& stationColumn,
     const std::string& timeColumn,
     const std::string& monthColumn)
@@ -697,7 +715,7 @@ struct vtkThiessenArealAverage::Internals
     if (!(source == this->ClassifiedFrom))
     {
       this->ClassifiedFrom = RowsSource(); // until the read succeeds (it throws on bad times)
-      this->Classified = ClassifyRows(table, stationIds, stationColumn, timeColumn, monthColumn);
+      this->Classified = ClassifyRows(table, gaugeNames, stationColumn, timeColumn, monthColumn);
       this->ClassifiedFrom = source;
     }
     return this->Classified;
@@ -767,10 +785,12 @@ int vtkThiessenArealAverage::RequestInformation(vtkInformation*,
   }
   try
   {
+    vtkAbstractArray* stationIds = this->GaugeStationIds(gauges, true);
     const std::vector<double>& times = this->Internal
                                          ->CachedRows(table,
                                            gauges,
-                                           this->GaugeStationIds(gauges, true),
+                                           stationIds,
+                                           GaugeNames(stationIds),
                                            this->StationColumn,
                                            this->TimeColumn,
                                            this->MonthColumn)
@@ -912,13 +932,9 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     settings.HaveProjection = true;
     settings.Projection = tessera::ProjectionParameters::FromString(this->ProjectionRecord);
   }
-  if (stationIds) // (GaugeStationIds checked: one per gauge)
-  {
-    for (vtkIdType g = 0; g < stationIds->GetNumberOfTuples(); ++g)
-    {
-      settings.GaugeNames.push_back(StationName(stationIds->GetVariantValue(g))); // for errors
-    }
-  }
+  // (GaugeStationIds checked: one per gauge)
+  const std::vector<std::string> gaugeNames = GaugeNames(stationIds);
+  settings.GaugeNames = gaugeNames; // for errors
   settings.Areas = this->AreaMethod == EQUAL_AREA_PLANE ? tessera::AreaMethod::EqualAreaPlane
     : this->AreaMethod == GEODESIC_POLYGON              ? tessera::AreaMethod::GeodesicPolygon
                                                         : tessera::AreaMethod::Automatic;
@@ -938,8 +954,13 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     {
       throw tessera::InputError("the observations table has no rows (no time step to average)");
     }
-    rows = &in.CachedRows(
-      observations, gauges, stationIds, this->StationColumn, this->TimeColumn, this->MonthColumn);
+    rows = &in.CachedRows(observations,
+      gauges,
+      stationIds,
+      gaugeNames,
+      this->StationColumn,
+      this->TimeColumn,
+      this->MonthColumn);
     if (rows->Times.empty())
     {
       throw tessera::InputError(NoUsableRowMessage(*rows));
@@ -971,11 +992,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   }
 
   // Everything valid but unused is reported by id.
-  auto idOf = [&](std::size_t g)
-  {
-    return stationIds ? StationName(stationIds->GetVariantValue(static_cast<vtkIdType>(g)))
-                      : std::to_string(g);
-  };
+  auto idOf = [&](std::size_t g) { return stationIds ? gaugeNames[g] : std::to_string(g); };
   std::vector<std::int32_t> unobserved;
   std::vector<std::string> unobservedNames;
   for (std::size_t g = 0; g < gaugeCount; ++g)
