@@ -84,18 +84,26 @@ std::string StationKey(std::string text)
   return text;
 }
 
-std::string ListIds(const std::vector<std::string>& ids)
+/// The first 20 of count names, nameOf(0), nameOf(1), ..., then ", ... (N in all)" when there are
+/// more: only the names shown are made.
+template<class NameOf>
+std::string ListNames(std::size_t count, const NameOf& nameOf)
 {
   std::ostringstream out;
-  for (std::size_t k = 0; k < ids.size() && k < 20; ++k)
+  for (std::size_t k = 0; k < count && k < 20; ++k)
   {
-    out << (k ? ", " : "") << ids[k];
+    out << (k ? ", " : "") << nameOf(k);
   }
-  if (ids.size() > 20)
+  if (count > 20)
   {
-    out << ", ... (" << ids.size() << " in all)";
+    out << ", ... (" << count << " in all)";
   }
   return out.str();
+}
+
+std::string ListIds(const std::vector<std::string>& ids)
+{
+  return ListNames(ids.size(), [&ids](std::size_t k) { return ids[k]; });
 }
 
 /// The column of the observations table, or an InputError naming it and what it should hold.
@@ -108,6 +116,12 @@ vtkAbstractArray* ObservationColumn(vtkTable* table, const std::string& column, 
       "the observations table has no column '" + column + "' (" + holds + ")");
   }
   return array;
+}
+
+/// The station id of a row of the observations table's station column, as written (StationName).
+std::string RowStation(vtkAbstractArray* stations, std::size_t row)
+{
+  return StationName(stations->GetVariantValue(static_cast<vtkIdType>(row)));
 }
 
 /// An InputError for a row of the observations table: "observation row R: what".
@@ -316,11 +330,11 @@ std::unordered_map<std::string, std::int32_t> GaugesByStation(
 struct ObservationRows
 {
   std::vector<std::int32_t> GaugeOfRow; ///< per row: the gauge it reports, -1 for a row not used
-  std::vector<double> RowTimes;         ///< per row: its time (NaN for a row not used)
-  std::vector<double> Times;            ///< the distinct times of the used rows, ascending
-  std::vector<std::int32_t> UnusedRows; ///< the rows not used, ascending (rows from 0)
-  /// The rows without a station or time: "row 12 (no station id)", "row 13 (station A: no time)".
-  std::vector<std::string> IncompleteRows;
+  std::vector<std::int32_t>
+    StepOfRow;               ///< per row: its time's index in Times, -1 for a row not used
+  std::vector<double> Times; ///< the distinct times of the used rows, ascending
+  /// The rows without a station id, or of a gauge's station without a time, ascending.
+  std::vector<std::int32_t> IncompleteRows;
   std::vector<std::string> UnknownStations; ///< "X (3 rows from row 5)": ids no gauge has
   std::vector<std::string> SharedIds;       ///< ids given to more than one gauge
 };
@@ -365,7 +379,7 @@ private:
 };
 
 /// The distinct values, ascending.
-std::vector<double> UniqueTimes(std::vector<double> times)
+std::vector<double> UniqueTimes(std::vector<double> times) // (a copy: sorted here)
 {
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
@@ -392,8 +406,7 @@ ObservationRows ClassifyRows(vtkTable* table,
     ObservationColumn(table, stationColumn, "station ids, numbers or text");
   const RowTimeReader timeOf(table, timeColumn, monthColumn);
   rows.GaugeOfRow.assign(static_cast<std::size_t>(count), -1);
-  rows.RowTimes.assign(static_cast<std::size_t>(count), std::numeric_limits<double>::quiet_NaN());
-  std::vector<double> usedTimes;
+  std::vector<double> usedTimes; // the used rows', in row order
   UnknownStationTally unknown;
   for (vtkIdType r = 0; r < count; ++r)
   {
@@ -404,11 +417,9 @@ ObservationRows ClassifyRows(vtkTable* table,
     const std::optional<double> t = gauge == gaugeOf.end() ? std::nullopt : timeOf(r);
     if (!t)
     {
-      rows.UnusedRows.push_back(static_cast<std::int32_t>(r));
       if (gauge != gaugeOf.end() || key.empty())
       {
-        rows.IncompleteRows.push_back("row " + std::to_string(r) +
-          (key.empty() ? " (no station id)" : " (station " + name + ": no time)"));
+        rows.IncompleteRows.push_back(static_cast<std::int32_t>(r));
       }
       else
       {
@@ -417,10 +428,19 @@ ObservationRows ClassifyRows(vtkTable* table,
       continue;
     }
     rows.GaugeOfRow[static_cast<std::size_t>(r)] = gauge->second;
-    rows.RowTimes[static_cast<std::size_t>(r)] = *t;
     usedTimes.push_back(*t);
   }
-  rows.Times = UniqueTimes(std::move(usedTimes));
+  rows.Times = UniqueTimes(usedTimes);
+  rows.StepOfRow.assign(rows.GaugeOfRow.size(), -1);
+  auto usedTime = usedTimes.begin();
+  for (std::size_t r = 0; r < rows.GaugeOfRow.size(); ++r)
+  {
+    if (rows.GaugeOfRow[r] >= 0)
+    {
+      rows.StepOfRow[r] = static_cast<std::int32_t>(
+        std::lower_bound(rows.Times.begin(), rows.Times.end(), *usedTime++) - rows.Times.begin());
+    }
+  }
   rows.UnknownStations = unknown.Names();
   return rows;
 }
@@ -460,27 +480,43 @@ std::string NoUsableRowMessage(const ObservationRows& rows)
   return message.str();
 }
 
-/// The observations table's station and value columns.
-struct StationAndValueColumns
+/// The rows not used (ObservationRows), ascending.
+std::vector<std::int32_t> UnusedRows(const ObservationRows& rows)
 {
-  const std::string& Station;
-  const std::string& Value;
-};
+  std::vector<std::int32_t> unused;
+  for (std::size_t r = 0; r < rows.GaugeOfRow.size(); ++r)
+  {
+    if (rows.GaugeOfRow[r] < 0)
+    {
+      unused.push_back(static_cast<std::int32_t>(r));
+    }
+  }
+  return unused;
+}
+
+/// An incomplete row (ObservationRows) of the station column: "row 12 (no station id)", "row 13
+/// (station A: no time)".
+std::string IncompleteRowName(vtkAbstractArray* stations, std::int32_t row)
+{
+  const std::string name = RowStation(stations, static_cast<std::size_t>(row));
+  return "row " + std::to_string(row) +
+    (name.empty() ? " (no station id)" : " (station " + name + ": no time)");
+}
 
 /// Per step, per gauge: the used rows' values (NaN where a gauge did not report). A row repeating
-/// the station and time of an earlier row with a value is listed in repeatedRows and, as "row R
-/// (station S)", in repeatedNames; the earlier value is kept. Throws InputError naming the row
-/// for a value that is infinite or neither a number nor a missing-value marker.
+/// the station and time of an earlier row with a value is listed in repeatedRows; the earlier
+/// value is kept. Throws InputError naming the row for a value that is infinite or neither a
+/// number nor a missing-value marker.
 std::vector<std::vector<double>> StepValues(vtkTable* table,
   const ObservationRows& rows,
-  const StationAndValueColumns& columns,
+  const std::string& stationColumn,
+  const std::string& valueColumn,
   std::size_t gaugeCount,
-  std::vector<std::int32_t>& repeatedRows,
-  std::vector<std::string>& repeatedNames)
+  std::vector<std::int32_t>& repeatedRows)
 {
   const NumberColumn values(
-    ObservationColumn(table, columns.Value, "numbers; NaN, NA or an empty field where missing"));
-  vtkAbstractArray* stations = table->GetColumnByName(columns.Station.c_str());
+    ObservationColumn(table, valueColumn, "numbers; NaN, NA or an empty field where missing"));
+  vtkAbstractArray* stations = table->GetColumnByName(stationColumn.c_str());
   std::vector<std::vector<double>> stepValues(
     rows.Times.size(), std::vector<double>(gaugeCount, std::numeric_limits<double>::quiet_NaN()));
   for (std::size_t r = 0; r < rows.GaugeOfRow.size(); ++r)
@@ -491,15 +527,13 @@ std::vector<std::vector<double>> StepValues(vtkTable* table,
       continue;
     }
     const vtkIdType row = static_cast<vtkIdType>(r);
-    const double value = ObservationValue(values, row, columns.Value);
+    const double value = ObservationValue(values, row, valueColumn);
     if (std::isinf(value))
     {
-      ThrowRowError(
-        row, "station " + StationName(stations->GetVariantValue(row)) + " has an infinite value");
+      ThrowRowError(row, "station " + RowStation(stations, r) + " has an infinite value");
     }
-    const auto step =
-      std::lower_bound(rows.Times.begin(), rows.Times.end(), rows.RowTimes[r]) - rows.Times.begin();
-    double& slot = stepValues[static_cast<std::size_t>(step)][static_cast<std::size_t>(gauge)];
+    const auto step = static_cast<std::size_t>(rows.StepOfRow[r]);
+    double& slot = stepValues[step][static_cast<std::size_t>(gauge)];
     if (std::isnan(slot))
     {
       slot = value;
@@ -507,8 +541,6 @@ std::vector<std::vector<double>> StepValues(vtkTable* table,
     else
     {
       repeatedRows.push_back(static_cast<std::int32_t>(r));
-      repeatedNames.push_back("row " + std::to_string(r) + " (station " +
-        StationName(stations->GetVariantValue(row)) + ")");
     }
   }
   return stepValues;
@@ -944,7 +976,6 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
 
   in.Times.clear();
   in.Values.clear();
-  std::vector<std::string> repeatedNames;
   std::vector<std::int32_t> repeatedRows;
   static const ObservationRows noRows;
   const ObservationRows* rows = &noRows;
@@ -966,12 +997,8 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
       throw tessera::InputError(NoUsableRowMessage(*rows));
     }
     in.Times = rows->Times;
-    in.Values = StepValues(observations,
-      *rows,
-      { this->StationColumn, this->ValueColumn },
-      gaugeCount,
-      repeatedRows,
-      repeatedNames);
+    in.Values = StepValues(
+      observations, *rows, this->StationColumn, this->ValueColumn, gaugeCount, repeatedRows);
   }
   else
   {
@@ -994,7 +1021,6 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   // Everything valid but unused is reported by id.
   auto idOf = [&](std::size_t g) { return stationIds ? gaugeNames[g] : std::to_string(g); };
   std::vector<std::int32_t> unobserved;
-  std::vector<std::string> unobservedNames;
   for (std::size_t g = 0; g < gaugeCount; ++g)
   {
     bool any = false;
@@ -1009,39 +1035,55 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     if (!any)
     {
       unobserved.push_back(static_cast<std::int32_t>(g));
-      unobservedNames.push_back(idOf(g));
     }
   }
   std::vector<std::int32_t> duplicates, duplicateOf;
-  std::vector<std::string> duplicateNames;
   for (const auto& pair : in.Average->DuplicateGauges())
   {
     duplicates.push_back(pair.first);
     duplicateOf.push_back(pair.second);
-    duplicateNames.push_back(idOf(pair.first) + " (same place as " + idOf(pair.second) + ")");
   }
-  // One warning per kind of unused input: "N <what>: the first 20 names".
-  const auto warnOf = [this](const std::vector<std::string>& names, const char* what)
+  // One warning per kind of unused input: "N <what>: the first 20 names" (only those are made).
+  const auto warnOf = [this](std::size_t count, const char* what, const auto& nameOf)
   {
-    if (!names.empty())
+    if (count > 0)
     {
-      vtkWarningMacro(<< names.size() << " " << what << ": " << ListIds(names));
+      vtkWarningMacro(<< count << " " << what << ": " << ListNames(count, nameOf));
     }
   };
-  warnOf(unobservedNames, "gauge(s) have no observation and are never used");
-  warnOf(rows->UnknownStations,
+  const auto idsOf = [](const std::vector<std::string>& ids)
+  { return [&ids](std::size_t k) { return ids[k]; }; };
+  vtkAbstractArray* stations =
+    observations ? observations->GetColumnByName(this->StationColumn.c_str()) : nullptr;
+  warnOf(unobserved.size(),
+    "gauge(s) have no observation and are never used",
+    [&](std::size_t k) { return idOf(static_cast<std::size_t>(unobserved[k])); });
+  warnOf(rows->UnknownStations.size(),
     "station id(s) of the observations that no gauge has: their rows were ignored (rows from 0, "
-    "listed in UnusedObservationRows)");
-  warnOf(rows->IncompleteRows,
+    "listed in UnusedObservationRows)",
+    idsOf(rows->UnknownStations));
+  warnOf(rows->IncompleteRows.size(),
     "observation row(s) have no station id or no time and were ignored (rows from 0, listed in "
-    "UnusedObservationRows)");
-  warnOf(rows->SharedIds,
-    "station id(s) are given to more than one gauge; their observations go to the first");
-  warnOf(repeatedNames,
+    "UnusedObservationRows)",
+    [&](std::size_t k) { return IncompleteRowName(stations, rows->IncompleteRows[k]); });
+  warnOf(rows->SharedIds.size(),
+    "station id(s) are given to more than one gauge; their observations go to the first",
+    idsOf(rows->SharedIds));
+  warnOf(repeatedRows.size(),
     "observation row(s) repeat a station and time of an earlier row with a value; the earlier "
-    "value is used (rows from 0, listed in RepeatedObservationRows)");
-  warnOf(
-    duplicateNames, "gauge(s) stand where an earlier gauge stands; the first that reports is used");
+    "value is used (rows from 0, listed in RepeatedObservationRows)",
+    [&](std::size_t k)
+    {
+      const auto row = static_cast<std::size_t>(repeatedRows[k]);
+      return "row " + std::to_string(row) + " (station " + RowStation(stations, row) + ")";
+    });
+  warnOf(duplicates.size(),
+    "gauge(s) stand where an earlier gauge stands; the first that reports is used",
+    [&](std::size_t k)
+    {
+      return idOf(static_cast<std::size_t>(duplicates[k])) + " (same place as " +
+        idOf(static_cast<std::size_t>(duplicateOf[k])) + ")";
+    });
 
   // The summary: every step in order, each one updating the tessellation of the one before.
   vtkNew<vtkDoubleArray> timeColumn, means, covered;
@@ -1080,7 +1122,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateGaugeIds", duplicates);
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateOfGaugeIds", duplicateOf);
   tessera_vtk::AddIdFieldArray(in.Summary, "RepeatedObservationRows", repeatedRows);
-  tessera_vtk::AddIdFieldArray(in.Summary, "UnusedObservationRows", rows->UnusedRows);
+  tessera_vtk::AddIdFieldArray(in.Summary, "UnusedObservationRows", UnusedRows(*rows));
 }
 
 //------------------------------------------------------------------------------
