@@ -26,6 +26,7 @@
 #include "areal_average.h"
 #include "decimal_time.h"
 #include "errors.h"
+#include "observation_series.h"
 
 #include <algorithm>
 #include <cctype>
@@ -35,7 +36,6 @@
 #include <limits>
 #include <optional>
 #include <sstream>
-#include <unordered_map>
 
 vtkStandardNewMacro(vtkThiessenArealAverage);
 
@@ -71,19 +71,6 @@ std::string StationName(const vtkVariant& value)
   return digits;
 }
 
-/// Station ids compare as text (a StationName), with leading zeros of integer ids dropped, so
-/// that an id read as text ("050109") matches the same id read as a number (50109).
-std::string StationKey(std::string text)
-{
-  if (!text.empty() &&
-    std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }))
-  {
-    const auto nonZero = text.find_first_not_of('0');
-    text = nonZero == std::string::npos ? "0" : text.substr(nonZero);
-  }
-  return text;
-}
-
 /// The first 20 of count names, nameOf(0), nameOf(1), ..., then ", ... (N in all)" when there are
 /// more: only the names shown are made.
 template<class NameOf>
@@ -99,11 +86,6 @@ std::string ListNames(std::size_t count, const NameOf& nameOf)
     out << ", ... (" << count << " in all)";
   }
   return out.str();
-}
-
-std::string ListIds(const std::vector<std::string>& ids)
-{
-  return ListNames(ids.size(), [&ids](std::size_t k) { return ids[k]; });
 }
 
 /// The column of the observations table, or an InputError naming it and what it should hold.
@@ -304,92 +286,17 @@ std::vector<std::string> GaugeNames(vtkAbstractArray* stationIds)
   return names;
 }
 
-/// The first gauge of each station key (of the gauges' names, GaugeNames); ids given to more than
-/// one gauge are added to shared.
-std::unordered_map<std::string, std::int32_t> GaugesByStation(
-  const std::vector<std::string>& gaugeNames,
-  std::vector<std::string>& shared)
-{
-  std::unordered_map<std::string, std::int32_t> gaugeOf;
-  for (std::size_t g = 0; g < gaugeNames.size(); ++g)
-  {
-    const std::string& name = gaugeNames[g];
-    const auto [at, first] = gaugeOf.emplace(StationKey(name), static_cast<std::int32_t>(g));
-    if (!first)
-    {
-      shared.push_back(
-        name + " (gauges " + std::to_string(at->second) + " and " + std::to_string(g) + ")");
-    }
-  }
-  return gaugeOf;
-}
-
-/// Which rows of the observations table are used, and at which times. A row is used when it names
-/// a station that a gauge has and a time; the time steps are the distinct times of the used rows
-/// only, so that a blank line or a station outside the gauges never makes a step of its own.
+/// The observation rows matched with the gauges and their time steps (observation_series.h).
 struct ObservationRows
 {
-  std::vector<std::int32_t> GaugeOfRow; ///< per row: the gauge it reports, -1 for a row not used
-  std::vector<std::int32_t>
-    StepOfRow;               ///< per row: its time's index in Times, -1 for a row not used
-  std::vector<double> Times; ///< the distinct times of the used rows, ascending
-  /// The rows without a station id, or of a gauge's station without a time, ascending.
-  std::vector<std::int32_t> IncompleteRows;
-  std::vector<std::string> UnknownStations; ///< "X (3 rows from row 5)": ids no gauge has
-  std::vector<std::string> SharedIds;       ///< ids given to more than one gauge
+  tessera::StationMatch Match;
+  tessera::ObservationSteps Steps;
 };
-
-/// Tallies the rows naming each station id that no gauge has, in the order first met.
-class UnknownStationTally
-{
-public:
-  /// A row of station name (as written), grouped by its key.
-  void Add(const std::string& key, const std::string& name, vtkIdType row)
-  {
-    const auto [at, first] = this->Index.emplace(key, this->Stations.size());
-    if (first)
-    {
-      this->Stations.push_back({ name, 0, row });
-    }
-    ++this->Stations[at->second].Rows;
-  }
-
-  /// "X (1 row: row 5)", "Y (3 rows from row 7)".
-  std::vector<std::string> Names() const
-  {
-    std::vector<std::string> names;
-    for (const Station& s : this->Stations)
-    {
-      names.push_back(s.Name +
-        (s.Rows == 1 ? " (1 row: row " : " (" + std::to_string(s.Rows) + " rows from row ") +
-        std::to_string(s.FirstRow) + ")");
-    }
-    return names;
-  }
-
-private:
-  struct Station
-  {
-    std::string Name; // the first row's
-    std::size_t Rows;
-    vtkIdType FirstRow;
-  };
-  std::unordered_map<std::string, std::size_t> Index;
-  std::vector<Station> Stations;
-};
-
-/// The distinct values, ascending.
-std::vector<double> UniqueTimes(std::vector<double> times) // (a copy: sorted here)
-{
-  std::sort(times.begin(), times.end());
-  times.erase(std::unique(times.begin(), times.end()), times.end());
-  return times;
-}
 
 /// The rows of the observations table matched with the gauges' station ids (as GaugeNames gives
-/// them) and read for times (ObservationRows). Throws InputError for a missing column and, naming
-/// the row, for a used row's time that cannot be read.
-ObservationRows ClassifyRows(vtkTable* table,
+/// them) and, those of a gauge's station only, read for times (ObservationRows). Throws
+/// InputError for a missing column and, naming the row, for such a row's time that cannot be read.
+ObservationRows ReadRows(vtkTable* table,
   const std::vector<std::string>& gaugeNames,
   const std::string& stationColumn,
   const std::string& timeColumn,
@@ -401,47 +308,25 @@ ObservationRows ClassifyRows(vtkTable* table,
   {
     return rows; // no steps: Build says so, even when the columns are missing too
   }
-  const auto gaugeOf = GaugesByStation(gaugeNames, rows.SharedIds);
   vtkAbstractArray* stations =
     ObservationColumn(table, stationColumn, "station ids, numbers or text");
   const RowTimeReader timeOf(table, timeColumn, monthColumn);
-  rows.GaugeOfRow.assign(static_cast<std::size_t>(count), -1);
-  std::vector<double> usedTimes; // the used rows', in row order
-  UnknownStationTally unknown;
-  for (vtkIdType r = 0; r < count; ++r)
+  std::vector<std::string> rowNames(static_cast<std::size_t>(count));
+  for (std::size_t r = 0; r < rowNames.size(); ++r)
   {
-    const std::string name = StationName(stations->GetVariantValue(r));
-    const std::string key = StationKey(name);
-    const auto gauge = key.empty() ? gaugeOf.end() : gaugeOf.find(key);
-    // The station first: a row of no known station is not used, whatever its time holds.
-    const std::optional<double> t = gauge == gaugeOf.end() ? std::nullopt : timeOf(r);
-    if (!t)
-    {
-      if (gauge != gaugeOf.end() || key.empty())
-      {
-        rows.IncompleteRows.push_back(static_cast<std::int32_t>(r));
-      }
-      else
-      {
-        unknown.Add(key, name, r);
-      }
-      continue;
-    }
-    rows.GaugeOfRow[static_cast<std::size_t>(r)] = gauge->second;
-    usedTimes.push_back(*t);
+    rowNames[r] = RowStation(stations, r);
   }
-  rows.Times = UniqueTimes(usedTimes);
-  rows.StepOfRow.assign(rows.GaugeOfRow.size(), -1);
-  auto usedTime = usedTimes.begin();
-  for (std::size_t r = 0; r < rows.GaugeOfRow.size(); ++r)
+  rows.Match = tessera::MatchStations(gaugeNames, rowNames);
+  // The station first: a row of no known station is not used, whatever its time holds.
+  std::vector<std::optional<double>> rowTimes(rowNames.size());
+  for (std::size_t r = 0; r < rowTimes.size(); ++r)
   {
-    if (rows.GaugeOfRow[r] >= 0)
+    if (rows.Match.GaugeOfRow[r] >= 0)
     {
-      rows.StepOfRow[r] = static_cast<std::int32_t>(
-        std::lower_bound(rows.Times.begin(), rows.Times.end(), *usedTime++) - rows.Times.begin());
+      rowTimes[r] = timeOf(static_cast<vtkIdType>(r));
     }
   }
-  rows.UnknownStations = unknown.Names();
+  rows.Steps = tessera::StepsOfRows(rows.Match, rowTimes);
   return rows;
 }
 
@@ -465,37 +350,36 @@ double ObservationValue(const NumberColumn& values, vtkIdType row, const std::st
   return std::numeric_limits<double>::quiet_NaN();
 }
 
+/// An unknown station (observation_series.h) of the station column: "X (1 row: row 5)", "Y (3
+/// rows from row 7)", X and Y as written in their first row.
+std::string UnknownStationName(vtkAbstractArray* stations, const tessera::UnknownStation& station)
+{
+  return RowStation(stations, static_cast<std::size_t>(station.FirstRow)) +
+    (station.Rows == 1 ? " (1 row: row "
+                       : " (" + std::to_string(station.Rows) + " rows from row ") +
+    std::to_string(station.FirstRow) + ")";
+}
+
 /// The error for a table none of whose rows can be used: how many lack a station or time, and which
 /// station ids no gauge has.
-std::string NoUsableRowMessage(const ObservationRows& rows)
+std::string NoUsableRowMessage(const ObservationRows& rows, vtkAbstractArray* stations)
 {
+  const std::vector<tessera::UnknownStation>& unknown = rows.Match.UnknownStations;
   std::ostringstream message;
-  message << "none of the " << rows.GaugeOfRow.size()
+  message << "none of the " << rows.Steps.StepOfRow.size()
           << " observation rows can be used (no time step to average): "
-          << rows.IncompleteRows.size() << " have no station id or no time";
-  if (!rows.UnknownStations.empty())
+          << rows.Steps.IncompleteRows.size() << " have no station id or no time";
+  if (!unknown.empty())
   {
-    message << ", the others name station ids that no gauge has: " << ListIds(rows.UnknownStations);
+    message << ", the others name station ids that no gauge has: "
+            << ListNames(unknown.size(),
+                 [&](std::size_t k) { return UnknownStationName(stations, unknown[k]); });
   }
   return message.str();
 }
 
-/// The rows not used (ObservationRows), ascending.
-std::vector<std::int32_t> UnusedRows(const ObservationRows& rows)
-{
-  std::vector<std::int32_t> unused;
-  for (std::size_t r = 0; r < rows.GaugeOfRow.size(); ++r)
-  {
-    if (rows.GaugeOfRow[r] < 0)
-    {
-      unused.push_back(static_cast<std::int32_t>(r));
-    }
-  }
-  return unused;
-}
-
-/// An incomplete row (ObservationRows) of the station column: "row 12 (no station id)", "row 13
-/// (station A: no time)".
+/// An incomplete row (observation_series.h) of the station column: "row 12 (no station id)",
+/// "row 13 (station A: no time)".
 std::string IncompleteRowName(vtkAbstractArray* stations, std::int32_t row)
 {
   const std::string name = RowStation(stations, static_cast<std::size_t>(row));
@@ -503,47 +387,31 @@ std::string IncompleteRowName(vtkAbstractArray* stations, std::int32_t row)
     (name.empty() ? " (no station id)" : " (station " + name + ": no time)");
 }
 
-/// Per step, per gauge: the used rows' values (NaN where a gauge did not report). A row repeating
-/// the station and time of an earlier row with a value is listed in repeatedRows; the earlier
-/// value is kept. Throws InputError naming the row for a value that is infinite or neither a
-/// number nor a missing-value marker.
-std::vector<std::vector<double>> StepValues(vtkTable* table,
-  const ObservationRows& rows,
+/// Per row, the value of a used row (NaN for the others, which are not read). Throws InputError
+/// naming the row for a value that is infinite or neither a number nor a missing-value marker.
+std::vector<double> RowValues(vtkTable* table,
+  const tessera::ObservationSteps& steps,
   const std::string& stationColumn,
-  const std::string& valueColumn,
-  std::size_t gaugeCount,
-  std::vector<std::int32_t>& repeatedRows)
+  const std::string& valueColumn)
 {
   const NumberColumn values(
     ObservationColumn(table, valueColumn, "numbers; NaN, NA or an empty field where missing"));
   vtkAbstractArray* stations = table->GetColumnByName(stationColumn.c_str());
-  std::vector<std::vector<double>> stepValues(
-    rows.Times.size(), std::vector<double>(gaugeCount, std::numeric_limits<double>::quiet_NaN()));
-  for (std::size_t r = 0; r < rows.GaugeOfRow.size(); ++r)
+  std::vector<double> rowValues(steps.StepOfRow.size(), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t r = 0; r < rowValues.size(); ++r)
   {
-    const std::int32_t gauge = rows.GaugeOfRow[r];
-    if (gauge < 0)
+    if (steps.StepOfRow[r] < 0)
     {
       continue;
     }
     const vtkIdType row = static_cast<vtkIdType>(r);
-    const double value = ObservationValue(values, row, valueColumn);
-    if (std::isinf(value))
+    rowValues[r] = ObservationValue(values, row, valueColumn);
+    if (std::isinf(rowValues[r]))
     {
       ThrowRowError(row, "station " + RowStation(stations, r) + " has an infinite value");
     }
-    const auto step = static_cast<std::size_t>(rows.StepOfRow[r]);
-    double& slot = stepValues[step][static_cast<std::size_t>(gauge)];
-    if (std::isnan(slot))
-    {
-      slot = value;
-    }
-    else
-    {
-      repeatedRows.push_back(static_cast<std::int32_t>(r));
-    }
   }
-  return stepValues;
+  return rowValues;
 }
 
 /// The StationId array of an output: the gauges' id for each entry, in their id array's type
@@ -723,7 +591,7 @@ struct vtkThiessenArealAverage::Internals
   RowsSource ClassifiedFrom;
   ObservationRows Classified;
 
-  /// ClassifyRows of the table, read by RequestInformation (which needs the time steps) and kept
+  /// ReadRows of the table, read by RequestInformation (which needs the time steps) and kept
   /// for Build while the table, the gauges' ids and the columns are unchanged. gaugeNames: the
   /// GaugeNames of stationIds.
   const ObservationRows& CachedRows(vtkTable* table,
@@ -747,7 +615,7 @@ struct vtkThiessenArealAverage::Internals
     if (!(source == this->ClassifiedFrom))
     {
       this->ClassifiedFrom = RowsSource(); // until the read succeeds (it throws on bad times)
-      this->Classified = ClassifyRows(table, gaugeNames, stationColumn, timeColumn, monthColumn);
+      this->Classified = ReadRows(table, gaugeNames, stationColumn, timeColumn, monthColumn);
       this->ClassifiedFrom = source;
     }
     return this->Classified;
@@ -826,7 +694,7 @@ int vtkThiessenArealAverage::RequestInformation(vtkInformation*,
                                            this->StationColumn,
                                            this->TimeColumn,
                                            this->MonthColumn)
-                                         .Times;
+                                         .Steps.Times;
     if (!times.empty())
     {
       outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(),
@@ -979,6 +847,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   std::vector<std::int32_t> repeatedRows;
   static const ObservationRows noRows;
   const ObservationRows* rows = &noRows;
+  vtkAbstractArray* stations = nullptr; // the observations' station column (for messages)
   if (observations)
   {
     if (observations->GetNumberOfRows() == 0)
@@ -992,13 +861,18 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
       this->StationColumn,
       this->TimeColumn,
       this->MonthColumn);
-    if (rows->Times.empty())
+    stations = observations->GetColumnByName(this->StationColumn.c_str());
+    if (rows->Steps.Times.empty())
     {
-      throw tessera::InputError(NoUsableRowMessage(*rows));
+      throw tessera::InputError(NoUsableRowMessage(*rows, stations));
     }
-    in.Times = rows->Times;
-    in.Values = StepValues(
-      observations, *rows, this->StationColumn, this->ValueColumn, gaugeCount, repeatedRows);
+    in.Times = rows->Steps.Times;
+    tessera::StepSeries series = tessera::BuildSeries(rows->Match,
+      rows->Steps,
+      RowValues(observations, rows->Steps, this->StationColumn, this->ValueColumn),
+      gaugeCount);
+    in.Values = std::move(series.Values);
+    repeatedRows = std::move(series.RepeatedRows);
   }
   else
   {
@@ -1051,24 +925,27 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
       vtkWarningMacro(<< count << " " << what << ": " << ListNames(count, nameOf));
     }
   };
-  const auto idsOf = [](const std::vector<std::string>& ids)
-  { return [&ids](std::size_t k) { return ids[k]; }; };
-  vtkAbstractArray* stations =
-    observations ? observations->GetColumnByName(this->StationColumn.c_str()) : nullptr;
   warnOf(unobserved.size(),
     "gauge(s) have no observation and are never used",
     [&](std::size_t k) { return idOf(static_cast<std::size_t>(unobserved[k])); });
-  warnOf(rows->UnknownStations.size(),
+  const std::vector<tessera::UnknownStation>& unknown = rows->Match.UnknownStations;
+  warnOf(unknown.size(),
     "station id(s) of the observations that no gauge has: their rows were ignored (rows from 0, "
     "listed in UnusedObservationRows)",
-    idsOf(rows->UnknownStations));
-  warnOf(rows->IncompleteRows.size(),
+    [&](std::size_t k) { return UnknownStationName(stations, unknown[k]); });
+  const std::vector<std::int32_t>& incomplete = rows->Steps.IncompleteRows;
+  warnOf(incomplete.size(),
     "observation row(s) have no station id or no time and were ignored (rows from 0, listed in "
     "UnusedObservationRows)",
-    [&](std::size_t k) { return IncompleteRowName(stations, rows->IncompleteRows[k]); });
-  warnOf(rows->SharedIds.size(),
+    [&](std::size_t k) { return IncompleteRowName(stations, incomplete[k]); });
+  const std::vector<tessera::SharedStation>& shared = rows->Match.SharedStations;
+  warnOf(shared.size(),
     "station id(s) are given to more than one gauge; their observations go to the first",
-    idsOf(rows->SharedIds));
+    [&](std::size_t k)
+    {
+      return gaugeNames[static_cast<std::size_t>(shared[k].Gauge)] + " (gauges " +
+        std::to_string(shared[k].FirstGauge) + " and " + std::to_string(shared[k].Gauge) + ")";
+    });
   warnOf(repeatedRows.size(),
     "observation row(s) repeat a station and time of an earlier row with a value; the earlier "
     "value is used (rows from 0, listed in RepeatedObservationRows)",
@@ -1122,7 +999,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateGaugeIds", duplicates);
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateOfGaugeIds", duplicateOf);
   tessera_vtk::AddIdFieldArray(in.Summary, "RepeatedObservationRows", repeatedRows);
-  tessera_vtk::AddIdFieldArray(in.Summary, "UnusedObservationRows", UnusedRows(*rows));
+  tessera_vtk::AddIdFieldArray(in.Summary, "UnusedObservationRows", rows->Steps.UnusedRows());
 }
 
 //------------------------------------------------------------------------------
