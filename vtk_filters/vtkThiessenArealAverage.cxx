@@ -446,57 +446,80 @@ private:
   vtkSmartPointer<vtkAbstractArray> Stations;
 };
 
-/// Output 0's cell data, a cell per piece of a gauge's clipped tile: StationId (the gauges' id
-/// array's type, when they have one), GaugeId, Weight, Area_m2 and Value (the gauge's, on each of
-/// its cells), CellArea_m2 and CellWeight (the cell's own area and its share of the catchment).
-class TileCellData
+/// The arrays of an output that describe a gauge, an entry per cell or row: StationId (the
+/// gauges' id array's type, when they have one), GaugeId, Weight, Area_m2 and Value.
+class GaugeColumns
 {
 public:
-  explicit TileCellData(vtkAbstractArray* stationIds)
+  explicit GaugeColumns(vtkAbstractArray* stationIds)
     : Stations(stationIds)
   {
     this->GaugeIds->SetName("GaugeId");
     this->Weights->SetName("Weight");
     this->Areas->SetName("Area_m2");
     this->Values->SetName("Value");
-    this->CellAreas->SetName("CellArea_m2");
-    this->CellWeights->SetName("CellWeight");
   }
 
-  void Append(std::int32_t gauge,
-    double weight,
-    double area,
-    double value,
-    double cellArea,
-    double catchmentArea)
+  void Append(std::int32_t gauge, double weight, double area, double value)
   {
     this->Stations.Append(gauge);
     this->GaugeIds->InsertNextValue(gauge);
     this->Weights->InsertNextValue(weight);
     this->Areas->InsertNextValue(area);
     this->Values->InsertNextValue(value);
-    this->CellAreas->InsertNextValue(cellArea);
-    this->CellWeights->InsertNextValue(cellArea / catchmentArea);
   }
 
-  void AddTo(vtkCellData* cellData)
+  /// Adds the arrays, in the order above, to cell data or a table's row data (its columns).
+  void AddTo(vtkFieldData* data)
   {
     if (this->Stations.Array())
     {
-      cellData->AddArray(this->Stations.Array());
+      data->AddArray(this->Stations.Array());
     }
-    cellData->AddArray(this->GaugeIds);
-    cellData->AddArray(this->Weights);
-    cellData->AddArray(this->Areas);
-    cellData->AddArray(this->Values);
-    cellData->AddArray(this->CellAreas);
-    cellData->AddArray(this->CellWeights);
+    data->AddArray(this->GaugeIds);
+    data->AddArray(this->Weights);
+    data->AddArray(this->Areas);
+    data->AddArray(this->Values);
   }
 
 private:
   StationIdColumn Stations;
   vtkNew<vtkIdTypeArray> GaugeIds;
-  vtkNew<vtkDoubleArray> Weights, Areas, Values, CellAreas, CellWeights;
+  vtkNew<vtkDoubleArray> Weights, Areas, Values;
+};
+
+/// Output 0's cell data, a cell per piece of a gauge's clipped tile: GaugeColumns (the gauge's, on
+/// each of its cells), then CellArea_m2 and CellWeight (the cell's own area and its share of the
+/// catchment).
+class TileCellData
+{
+public:
+  TileCellData(vtkAbstractArray* stationIds, double catchmentArea)
+    : Gauges(stationIds)
+    , CatchmentArea(catchmentArea)
+  {
+    this->CellAreas->SetName("CellArea_m2");
+    this->CellWeights->SetName("CellWeight");
+  }
+
+  void Append(std::int32_t gauge, double weight, double area, double value, double cellArea)
+  {
+    this->Gauges.Append(gauge, weight, area, value);
+    this->CellAreas->InsertNextValue(cellArea);
+    this->CellWeights->InsertNextValue(cellArea / this->CatchmentArea);
+  }
+
+  void AddTo(vtkCellData* cellData)
+  {
+    this->Gauges.AddTo(cellData);
+    cellData->AddArray(this->CellAreas);
+    cellData->AddArray(this->CellWeights);
+  }
+
+private:
+  GaugeColumns Gauges;
+  double CatchmentArea;
+  vtkNew<vtkDoubleArray> CellAreas, CellWeights;
 };
 
 /// The data of an upstream connection, brought up to date.
@@ -514,19 +537,14 @@ vtkMTimeType ColumnMTime(vtkTable* table, const std::string& column)
   return array ? array->GetMTime() : 0;
 }
 
-/// Output 2's columns, a row per step and weighted gauge: Time, StationId (the gauges' id array's
-/// type, when they have one), GaugeId, Weight, Area_m2, Value.
+/// Output 2's columns, a row per step and weighted gauge: Time, then GaugeColumns.
 class WeightRows
 {
 public:
   explicit WeightRows(vtkAbstractArray* stationIds)
-    : Stations(stationIds)
+    : Gauges(stationIds)
   {
     this->Times->SetName("Time");
-    this->GaugeIds->SetName("GaugeId");
-    this->Weights->SetName("Weight");
-    this->Areas->SetName("Area_m2");
-    this->Values->SetName("Value");
   }
 
   void Append(double time, const tessera::ArealStep& step, const std::vector<double>& values)
@@ -535,11 +553,7 @@ public:
     {
       const std::int32_t g = step.Gauges[k];
       this->Times->InsertNextValue(time);
-      this->Stations.Append(g);
-      this->GaugeIds->InsertNextValue(g);
-      this->Weights->InsertNextValue(step.Weights[k]);
-      this->Areas->InsertNextValue(step.AreasM2[k]);
-      this->Values->InsertNextValue(values[static_cast<std::size_t>(g)]);
+      this->Gauges.Append(g, step.Weights[k], step.AreasM2[k], values[static_cast<std::size_t>(g)]);
     }
   }
 
@@ -547,20 +561,12 @@ public:
   {
     table->Initialize();
     table->AddColumn(this->Times);
-    if (this->Stations.Array())
-    {
-      table->AddColumn(this->Stations.Array());
-    }
-    table->AddColumn(this->GaugeIds);
-    table->AddColumn(this->Weights);
-    table->AddColumn(this->Areas);
-    table->AddColumn(this->Values);
+    this->Gauges.AddTo(table->GetRowData()); // (a table's columns are its row data's arrays)
   }
 
 private:
-  StationIdColumn Stations;
-  vtkNew<vtkDoubleArray> Times, Weights, Areas, Values;
-  vtkNew<vtkIdTypeArray> GaugeIds;
+  vtkNew<vtkDoubleArray> Times;
+  GaugeColumns Gauges;
 };
 
 } // namespace
@@ -1018,8 +1024,7 @@ void vtkThiessenArealAverage::WriteTiles(std::size_t step,
     points->InsertNextPoint(p.x, p.y, 0.0);
   }
   vtkNew<vtkCellArray> polys;
-  TileCellData cells(stationIds);
-  const double catchmentArea = in.Average->CatchmentAreaM2();
+  TileCellData cells(stationIds, in.Average->CatchmentAreaM2());
   for (std::size_t k = 0; k < clipped.Gauges.size(); ++k)
   {
     const std::int32_t g = clipped.Gauges[k];
@@ -1041,8 +1046,7 @@ void vtkThiessenArealAverage::WriteTiles(std::size_t step,
         isWeighted ? result.Weights[index] : 0.0,
         isWeighted ? result.AreasM2[index] : 0.0,
         in.Values[step][static_cast<std::size_t>(g)],
-        clipped.PieceAreasM2[r],
-        catchmentArea);
+        clipped.PieceAreasM2[r]);
     }
   }
   output->SetPoints(points);
