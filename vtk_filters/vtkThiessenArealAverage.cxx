@@ -26,6 +26,7 @@
 #include "areal_average.h"
 #include "decimal_time.h"
 #include "errors.h"
+#include "observation_series.h"
 
 #include <algorithm>
 #include <cctype>
@@ -33,10 +34,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
-#include <map>
 #include <optional>
 #include <sstream>
-#include <unordered_map>
 
 vtkStandardNewMacro(vtkThiessenArealAverage);
 
@@ -72,29 +71,19 @@ std::string StationName(const vtkVariant& value)
   return digits;
 }
 
-/// Station ids compare as text (a StationName), with leading zeros of integer ids dropped, so
-/// that an id read as text ("050109") matches the same id read as a number (50109).
-std::string StationKey(std::string text)
-{
-  if (!text.empty() &&
-    std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; }))
-  {
-    const auto nonZero = text.find_first_not_of('0');
-    text = nonZero == std::string::npos ? "0" : text.substr(nonZero);
-  }
-  return text;
-}
-
-std::string ListIds(const std::vector<std::string>& ids)
+/// The first 20 of count names, nameOf(0), nameOf(1), ..., then ", ... (N in all)" when there are
+/// more: only the names shown are made.
+template<class NameOf>
+std::string ListNames(std::size_t count, const NameOf& nameOf)
 {
   std::ostringstream out;
-  for (std::size_t k = 0; k < ids.size() && k < 20; ++k)
+  for (std::size_t k = 0; k < count && k < 20; ++k)
   {
-    out << (k ? ", " : "") << ids[k];
+    out << (k ? ", " : "") << nameOf(k);
   }
-  if (ids.size() > 20)
+  if (count > 20)
   {
-    out << ", ... (" << ids.size() << " in all)";
+    out << ", ... (" << count << " in all)";
   }
   return out.str();
 }
@@ -111,6 +100,12 @@ vtkAbstractArray* ObservationColumn(vtkTable* table, const std::string& column, 
   return array;
 }
 
+/// The station id of a row of the observations table's station column, as written (StationName).
+std::string RowStation(vtkAbstractArray* stations, std::size_t row)
+{
+  return StationName(stations->GetVariantValue(static_cast<vtkIdType>(row)));
+}
+
 /// An InputError for a row of the observations table: "observation row R: what".
 [[noreturn]] void ThrowRowError(vtkIdType row, const std::string& what)
 {
@@ -124,31 +119,58 @@ vtkAbstractArray* ObservationColumn(vtkTable* table, const std::string& column, 
 class NumberColumn
 {
 public:
+  /// A cell, read once: a text column's text, or a numeric column's number.
+  struct Cell
+  {
+    std::optional<std::string> Text; ///< a text column's (and only then)
+    double Value = 0.0;              ///< a numeric column's
+
+    /// Blank text, or NaN (what a reader may make of an empty numeric field).
+    bool IsEmpty() const
+    {
+      return this->Text ? Trimmed(*this->Text).empty() : std::isnan(this->Value);
+    }
+
+    /// The number; nothing for text that is not one (spaces around it are allowed).
+    std::optional<double> Number() const
+    {
+      if (!this->Text)
+      {
+        return this->Value;
+      }
+      const std::string text = Trimmed(*this->Text);
+      char* end = nullptr;
+      const double value = std::strtod(text.c_str(), &end);
+      if (text.empty() || end != text.c_str() + text.size())
+      {
+        return std::nullopt;
+      }
+      return value;
+    }
+  };
+
   explicit NumberColumn(vtkAbstractArray* array)
     : Array(array)
     , Numbers(vtkDataArray::SafeDownCast(array))
   {
   }
 
-  bool IsText() const { return !this->Numbers; }
-  std::string Text(vtkIdType row) const { return this->Array->GetVariantValue(row).ToString(); }
-
-  /// The row's number; nothing for text that is not one (spaces around it are allowed).
-  std::optional<double> Number(vtkIdType row) const
+  Cell Read(vtkIdType row) const
   {
+    Cell cell;
     if (this->Numbers)
     {
-      return this->Numbers->GetTuple1(row);
+      cell.Value = this->Numbers->GetTuple1(row);
     }
-    const std::string text = Trimmed(this->Text(row));
-    char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size())
+    else
     {
-      return std::nullopt;
+      cell.Text = this->Text(row);
     }
-    return value;
+    return cell;
   }
+
+  /// The row as text (for messages).
+  std::string Text(vtkIdType row) const { return this->Array->GetVariantValue(row).ToString(); }
 
 private:
   vtkAbstractArray* Array;
@@ -190,52 +212,56 @@ public:
   /// is not a finite number, a date or a month 1 .. 12.
   std::optional<double> operator()(vtkIdType row) const
   {
-    if (IsEmpty(this->Times, row) || (this->Months && IsEmpty(*this->Months, row)))
+    const NumberColumn::Cell time = this->Times.Read(row);
+    if (time.IsEmpty())
     {
       return std::nullopt;
     }
-    if (!this->Months && this->Times.IsText())
-    {
-      return this->Date(row);
-    }
-    const std::optional<double> t = this->Times.Number(row);
-    if (!t || !std::isfinite(*t))
-    {
-      ThrowRowError(row,
-        "the time '" + this->Times.Text(row) + "' in column '" + this->TimeColumn +
-          "' is not a finite number");
-    }
     if (!this->Months)
     {
-      return t;
+      if (time.Text)
+      {
+        return this->Date(row, *time.Text);
+      }
+      return this->Finite(row, time);
     }
-    const double month = this->Months->Number(row).value_or(0.0);
+    const NumberColumn::Cell monthCell = this->Months->Read(row);
+    if (monthCell.IsEmpty())
+    {
+      return std::nullopt;
+    }
+    const double year = this->Finite(row, time);
+    const double month = monthCell.Number().value_or(0.0);
     if (!(month >= 1.0 && month <= 12.0 && month == std::floor(month)))
     {
       ThrowRowError(row,
         "the month " + this->Months->Text(row) + " in column '" + this->MonthColumn +
           "' is not 1 .. 12");
     }
-    return tessera::MonthTime(*t, static_cast<int>(month));
+    return tessera::MonthTime(year, static_cast<int>(month));
   }
 
 private:
-  static bool IsEmpty(const NumberColumn& column, vtkIdType row)
+  /// The time cell's number, or an error naming the row when it is not a finite number.
+  double Finite(vtkIdType row, const NumberColumn::Cell& time) const
   {
-    if (column.IsText())
+    const std::optional<double> t = time.Number();
+    if (!t || !std::isfinite(*t))
     {
-      return Trimmed(column.Text(row)).empty();
+      ThrowRowError(row,
+        "the time '" + this->Times.Text(row) + "' in column '" + this->TimeColumn +
+          "' is not a finite number");
     }
-    return std::isnan(column.Number(row).value_or(0.0));
+    return *t;
   }
 
-  double Date(vtkIdType row) const
+  double Date(vtkIdType row, const std::string& text) const
   {
-    const std::optional<double> t = tessera::IsoDateTime(this->Times.Text(row));
+    const std::optional<double> t = tessera::IsoDateTime(text);
     if (!t)
     {
       ThrowRowError(row,
-        "'" + this->Times.Text(row) + "' in column '" + this->TimeColumn +
+        "'" + text + "' in column '" + this->TimeColumn +
           "' is not a date (YYYY, YYYY-MM or YYYY-MM-DD, optionally with hh:mm[:ss])");
     }
     return *t;
@@ -246,91 +272,32 @@ private:
   std::optional<NumberColumn> Months;
 };
 
-/// The first gauge of each station key; ids given to more than one gauge are added to shared.
-std::unordered_map<std::string, std::int32_t> GaugesByStation(vtkAbstractArray* stationIds,
-  std::vector<std::string>& shared)
+/// The gauges' station ids as text (StationName), one per gauge; none without an id array.
+std::vector<std::string> GaugeNames(vtkAbstractArray* stationIds)
 {
-  std::unordered_map<std::string, std::int32_t> gaugeOf;
-  for (vtkIdType g = 0; g < stationIds->GetNumberOfTuples(); ++g)
+  std::vector<std::string> names;
+  if (stationIds)
   {
-    const std::string name = StationName(stationIds->GetVariantValue(g));
-    const auto [at, first] = gaugeOf.emplace(StationKey(name), static_cast<std::int32_t>(g));
-    if (!first)
+    for (vtkIdType g = 0; g < stationIds->GetNumberOfTuples(); ++g)
     {
-      shared.push_back(
-        name + " (gauges " + std::to_string(at->second) + " and " + std::to_string(g) + ")");
+      names.push_back(StationName(stationIds->GetVariantValue(g)));
     }
   }
-  return gaugeOf;
+  return names;
 }
 
-/// Which rows of the observations table are used, and at which times. A row is used when it names
-/// a station that a gauge has and a time; the time steps are the distinct times of the used rows
-/// only, so that a blank line or a station outside the gauges never makes a step of its own.
+/// The observation rows matched with the gauges and their time steps (observation_series.h).
 struct ObservationRows
 {
-  std::vector<std::int32_t> GaugeOfRow; ///< per row: the gauge it reports, -1 for a row not used
-  std::vector<double> RowTimes;         ///< per row: its time (NaN for a row not used)
-  std::vector<double> Times;            ///< the distinct times of the used rows, ascending
-  std::vector<std::int32_t> UnusedRows; ///< the rows not used, ascending (rows from 0)
-  /// The rows without a station or time: "row 12 (no station id)", "row 13 (station A: no time)".
-  std::vector<std::string> IncompleteRows;
-  std::vector<std::string> UnknownStations; ///< "X (3 rows from row 5)": ids no gauge has
-  std::vector<std::string> SharedIds;       ///< ids given to more than one gauge
+  tessera::StationMatch Match;
+  tessera::ObservationSteps Steps;
 };
 
-/// Tallies the rows naming each station id that no gauge has, in the order first met.
-class UnknownStationTally
-{
-public:
-  /// A row of station name (as written), grouped by its key.
-  void Add(const std::string& key, const std::string& name, vtkIdType row)
-  {
-    const auto [at, first] = this->Index.emplace(key, this->Stations.size());
-    if (first)
-    {
-      this->Stations.push_back({ name, 0, row });
-    }
-    ++this->Stations[at->second].Rows;
-  }
-
-  /// "X (1 row: row 5)", "Y (3 rows from row 7)".
-  std::vector<std::string> Names() const
-  {
-    std::vector<std::string> names;
-    for (const Station& s : this->Stations)
-    {
-      names.push_back(s.Name +
-        (s.Rows == 1 ? " (1 row: row " : " (" + std::to_string(s.Rows) + " rows from row ") +
-        std::to_string(s.FirstRow) + ")");
-    }
-    return names;
-  }
-
-private:
-  struct Station
-  {
-    std::string Name; // the first row's
-    std::size_t Rows;
-    vtkIdType FirstRow;
-  };
-  std::unordered_map<std::string, std::size_t> Index;
-  std::vector<Station> Stations;
-};
-
-/// The distinct values, ascending.
-std::vector<double> UniqueTimes(std::vector<double> times)
-{
-  std::sort(times.begin(), times.end());
-  times.erase(std::unique(times.begin(), times.end()), times.end());
-  return times;
-}
-
-/// The rows of the observations table matched with the gauges' station ids and read for times
-/// (ObservationRows). Throws InputError for a missing column and, naming the row, for a used row's
-/// time that cannot be read.
-ObservationRows ClassifyRows(vtkTable* table,
-  vtkAbstractArray* stationIds,
+/// The rows of the observations table matched with the gauges' station ids (as GaugeNames gives
+/// them) and, those of a gauge's station only, read for times (ObservationRows). Throws
+/// InputError for a missing column and, naming the row, for such a row's time that cannot be read.
+ObservationRows ReadRows(vtkTable* table,
+  const std::vector<std::string>& gaugeNames,
   const std::string& stationColumn,
   const std::string& timeColumn,
   const std::string& monthColumn)
@@ -341,41 +308,25 @@ ObservationRows ClassifyRows(vtkTable* table,
   {
     return rows; // no steps: Build says so, even when the columns are missing too
   }
-  const auto gaugeOf = GaugesByStation(stationIds, rows.SharedIds);
   vtkAbstractArray* stations =
     ObservationColumn(table, stationColumn, "station ids, numbers or text");
   const RowTimeReader timeOf(table, timeColumn, monthColumn);
-  rows.GaugeOfRow.assign(static_cast<std::size_t>(count), -1);
-  rows.RowTimes.assign(static_cast<std::size_t>(count), std::numeric_limits<double>::quiet_NaN());
-  std::vector<double> usedTimes;
-  UnknownStationTally unknown;
-  for (vtkIdType r = 0; r < count; ++r)
+  std::vector<std::string> rowNames(static_cast<std::size_t>(count));
+  for (std::size_t r = 0; r < rowNames.size(); ++r)
   {
-    const std::string name = StationName(stations->GetVariantValue(r));
-    const std::string key = StationKey(name);
-    const auto gauge = key.empty() ? gaugeOf.end() : gaugeOf.find(key);
-    // The station first: a row of no known station is not used, whatever its time holds.
-    const std::optional<double> t = gauge == gaugeOf.end() ? std::nullopt : timeOf(r);
-    if (!t)
-    {
-      rows.UnusedRows.push_back(static_cast<std::int32_t>(r));
-      if (gauge != gaugeOf.end() || key.empty())
-      {
-        rows.IncompleteRows.push_back("row " + std::to_string(r) +
-          (key.empty() ? " (no station id)" : " (station " + name + ": no time)"));
-      }
-      else
-      {
-        unknown.Add(key, name, r);
-      }
-      continue;
-    }
-    rows.GaugeOfRow[static_cast<std::size_t>(r)] = gauge->second;
-    rows.RowTimes[static_cast<std::size_t>(r)] = *t;
-    usedTimes.push_back(*t);
+    rowNames[r] = RowStation(stations, r);
   }
-  rows.Times = UniqueTimes(std::move(usedTimes));
-  rows.UnknownStations = unknown.Names();
+  rows.Match = tessera::MatchStations(gaugeNames, rowNames);
+  // The station first: a row of no known station is not used, whatever its time holds.
+  std::vector<std::optional<double>> rowTimes(rowNames.size());
+  for (std::size_t r = 0; r < rowTimes.size(); ++r)
+  {
+    if (rows.Match.GaugeOfRow[r] >= 0)
+    {
+      rowTimes[r] = timeOf(static_cast<vtkIdType>(r));
+    }
+  }
+  rows.Steps = tessera::StepsOfRows(rows.Match, rowTimes);
   return rows;
 }
 
@@ -384,11 +335,12 @@ ObservationRows ClassifyRows(vtkTable* table,
 /// Other text is an error naming the row.
 double ObservationValue(const NumberColumn& values, vtkIdType row, const std::string& column)
 {
-  if (const std::optional<double> value = values.Number(row))
+  const NumberColumn::Cell cell = values.Read(row);
+  if (const std::optional<double> value = cell.Number())
   {
     return *value;
   }
-  const std::string text = values.Text(row);
+  const std::string& text = *cell.Text; // (a numeric cell is always a number)
   if (!IsMissingMarker(text))
   {
     ThrowRowError(row,
@@ -398,73 +350,68 @@ double ObservationValue(const NumberColumn& values, vtkIdType row, const std::st
   return std::numeric_limits<double>::quiet_NaN();
 }
 
+/// An unknown station (observation_series.h) of the station column: "X (1 row: row 5)", "Y (3
+/// rows from row 7)", X and Y as written in their first row.
+std::string UnknownStationName(vtkAbstractArray* stations, const tessera::UnknownStation& station)
+{
+  return RowStation(stations, static_cast<std::size_t>(station.FirstRow)) +
+    (station.Rows == 1 ? " (1 row: row "
+                       : " (" + std::to_string(station.Rows) + " rows from row ") +
+    std::to_string(station.FirstRow) + ")";
+}
+
 /// The error for a table none of whose rows can be used: how many lack a station or time, and which
 /// station ids no gauge has.
-std::string NoUsableRowMessage(const ObservationRows& rows)
+std::string NoUsableRowMessage(const ObservationRows& rows, vtkAbstractArray* stations)
 {
+  const std::vector<tessera::UnknownStation>& unknown = rows.Match.UnknownStations;
   std::ostringstream message;
-  message << "none of the " << rows.GaugeOfRow.size()
+  message << "none of the " << rows.Steps.StepOfRow.size()
           << " observation rows can be used (no time step to average): "
-          << rows.IncompleteRows.size() << " have no station id or no time";
-  if (!rows.UnknownStations.empty())
+          << rows.Steps.IncompleteRows.size() << " have no station id or no time";
+  if (!unknown.empty())
   {
-    message << ", the others name station ids that no gauge has: " << ListIds(rows.UnknownStations);
+    message << ", the others name station ids that no gauge has: "
+            << ListNames(unknown.size(),
+                 [&](std::size_t k) { return UnknownStationName(stations, unknown[k]); });
   }
   return message.str();
 }
 
-/// The observations table's station and value columns.
-struct StationAndValueColumns
+/// An incomplete row (observation_series.h) of the station column: "row 12 (no station id)",
+/// "row 13 (station A: no time)".
+std::string IncompleteRowName(vtkAbstractArray* stations, std::int32_t row)
 {
-  const std::string& Station;
-  const std::string& Value;
-};
+  const std::string name = RowStation(stations, static_cast<std::size_t>(row));
+  return "row " + std::to_string(row) +
+    (name.empty() ? " (no station id)" : " (station " + name + ": no time)");
+}
 
-/// Per step, per gauge: the used rows' values (NaN where a gauge did not report). A row repeating
-/// the station and time of an earlier row with a value is listed in repeatedRows and, as "row R
-/// (station S)", in repeatedNames; the earlier value is kept. Throws InputError naming the row
-/// for a value that is infinite or neither a number nor a missing-value marker.
-std::vector<std::vector<double>> StepValues(vtkTable* table,
-  const ObservationRows& rows,
-  const StationAndValueColumns& columns,
-  std::size_t gaugeCount,
-  std::vector<std::int32_t>& repeatedRows,
-  std::vector<std::string>& repeatedNames)
+/// Per row, the value of a used row (NaN for the others, which are not read). Throws InputError
+/// naming the row for a value that is infinite or neither a number nor a missing-value marker.
+std::vector<double> RowValues(vtkTable* table,
+  const tessera::ObservationSteps& steps,
+  const std::string& stationColumn,
+  const std::string& valueColumn)
 {
   const NumberColumn values(
-    ObservationColumn(table, columns.Value, "numbers; NaN, NA or an empty field where missing"));
-  vtkAbstractArray* stations = table->GetColumnByName(columns.Station.c_str());
-  std::vector<std::vector<double>> stepValues(
-    rows.Times.size(), std::vector<double>(gaugeCount, std::numeric_limits<double>::quiet_NaN()));
-  for (std::size_t r = 0; r < rows.GaugeOfRow.size(); ++r)
+    ObservationColumn(table, valueColumn, "numbers; NaN, NA or an empty field where missing"));
+  vtkAbstractArray* stations = table->GetColumnByName(stationColumn.c_str());
+  std::vector<double> rowValues(steps.StepOfRow.size(), std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t r = 0; r < rowValues.size(); ++r)
   {
-    const std::int32_t gauge = rows.GaugeOfRow[r];
-    if (gauge < 0)
+    if (steps.StepOfRow[r] < 0)
     {
       continue;
     }
     const vtkIdType row = static_cast<vtkIdType>(r);
-    const double value = ObservationValue(values, row, columns.Value);
-    if (std::isinf(value))
+    rowValues[r] = ObservationValue(values, row, valueColumn);
+    if (std::isinf(rowValues[r]))
     {
-      ThrowRowError(
-        row, "station " + StationName(stations->GetVariantValue(row)) + " has an infinite value");
-    }
-    const auto step =
-      std::lower_bound(rows.Times.begin(), rows.Times.end(), rows.RowTimes[r]) - rows.Times.begin();
-    double& slot = stepValues[static_cast<std::size_t>(step)][static_cast<std::size_t>(gauge)];
-    if (std::isnan(slot))
-    {
-      slot = value;
-    }
-    else
-    {
-      repeatedRows.push_back(static_cast<std::int32_t>(r));
-      repeatedNames.push_back("row " + std::to_string(r) + " (station " +
-        StationName(stations->GetVariantValue(row)) + ")");
+      ThrowRowError(row, "station " + RowStation(stations, r) + " has an infinite value");
     }
   }
-  return stepValues;
+  return rowValues;
 }
 
 /// The StationId array of an output: the gauges' id for each entry, in their id array's type
@@ -499,57 +446,80 @@ private:
   vtkSmartPointer<vtkAbstractArray> Stations;
 };
 
-/// Output 0's cell data, a cell per piece of a gauge's clipped tile: StationId (the gauges' id
-/// array's type, when they have one), GaugeId, Weight, Area_m2 and Value (the gauge's, on each of
-/// its cells), CellArea_m2 and CellWeight (the cell's own area and its share of the catchment).
-class TileCellData
+/// The arrays of an output that describe a gauge, an entry per cell or row: StationId (the
+/// gauges' id array's type, when they have one), GaugeId, Weight, Area_m2 and Value.
+class GaugeColumns
 {
 public:
-  explicit TileCellData(vtkAbstractArray* stationIds)
+  explicit GaugeColumns(vtkAbstractArray* stationIds)
     : Stations(stationIds)
   {
     this->GaugeIds->SetName("GaugeId");
     this->Weights->SetName("Weight");
     this->Areas->SetName("Area_m2");
     this->Values->SetName("Value");
-    this->CellAreas->SetName("CellArea_m2");
-    this->CellWeights->SetName("CellWeight");
   }
 
-  void Append(std::int32_t gauge,
-    double weight,
-    double area,
-    double value,
-    double cellArea,
-    double catchmentArea)
+  void Append(std::int32_t gauge, double weight, double area, double value)
   {
     this->Stations.Append(gauge);
     this->GaugeIds->InsertNextValue(gauge);
     this->Weights->InsertNextValue(weight);
     this->Areas->InsertNextValue(area);
     this->Values->InsertNextValue(value);
-    this->CellAreas->InsertNextValue(cellArea);
-    this->CellWeights->InsertNextValue(cellArea / catchmentArea);
   }
 
-  void AddTo(vtkCellData* cellData)
+  /// Adds the arrays, in the order above, to cell data or a table's row data (its columns).
+  void AddTo(vtkFieldData* data)
   {
     if (this->Stations.Array())
     {
-      cellData->AddArray(this->Stations.Array());
+      data->AddArray(this->Stations.Array());
     }
-    cellData->AddArray(this->GaugeIds);
-    cellData->AddArray(this->Weights);
-    cellData->AddArray(this->Areas);
-    cellData->AddArray(this->Values);
-    cellData->AddArray(this->CellAreas);
-    cellData->AddArray(this->CellWeights);
+    data->AddArray(this->GaugeIds);
+    data->AddArray(this->Weights);
+    data->AddArray(this->Areas);
+    data->AddArray(this->Values);
   }
 
 private:
   StationIdColumn Stations;
   vtkNew<vtkIdTypeArray> GaugeIds;
-  vtkNew<vtkDoubleArray> Weights, Areas, Values, CellAreas, CellWeights;
+  vtkNew<vtkDoubleArray> Weights, Areas, Values;
+};
+
+/// Output 0's cell data, a cell per piece of a gauge's clipped tile: GaugeColumns (the gauge's, on
+/// each of its cells), then CellArea_m2 and CellWeight (the cell's own area and its share of the
+/// catchment).
+class TileCellData
+{
+public:
+  TileCellData(vtkAbstractArray* stationIds, double catchmentArea)
+    : Gauges(stationIds)
+    , CatchmentArea(catchmentArea)
+  {
+    this->CellAreas->SetName("CellArea_m2");
+    this->CellWeights->SetName("CellWeight");
+  }
+
+  void Append(std::int32_t gauge, double weight, double area, double value, double cellArea)
+  {
+    this->Gauges.Append(gauge, weight, area, value);
+    this->CellAreas->InsertNextValue(cellArea);
+    this->CellWeights->InsertNextValue(cellArea / this->CatchmentArea);
+  }
+
+  void AddTo(vtkCellData* cellData)
+  {
+    this->Gauges.AddTo(cellData);
+    cellData->AddArray(this->CellAreas);
+    cellData->AddArray(this->CellWeights);
+  }
+
+private:
+  GaugeColumns Gauges;
+  double CatchmentArea;
+  vtkNew<vtkDoubleArray> CellAreas, CellWeights;
 };
 
 /// The data of an upstream connection, brought up to date.
@@ -567,19 +537,14 @@ vtkMTimeType ColumnMTime(vtkTable* table, const std::string& column)
   return array ? array->GetMTime() : 0;
 }
 
-/// Output 2's columns, a row per step and weighted gauge: Time, StationId (the gauges' id array's
-/// type, when they have one), GaugeId, Weight, Area_m2, Value.
+/// Output 2's columns, a row per step and weighted gauge: Time, then GaugeColumns.
 class WeightRows
 {
 public:
   explicit WeightRows(vtkAbstractArray* stationIds)
-    : Stations(stationIds)
+    : Gauges(stationIds)
   {
     this->Times->SetName("Time");
-    this->GaugeIds->SetName("GaugeId");
-    this->Weights->SetName("Weight");
-    this->Areas->SetName("Area_m2");
-    this->Values->SetName("Value");
   }
 
   void Append(double time, const tessera::ArealStep& step, const std::vector<double>& values)
@@ -588,11 +553,7 @@ public:
     {
       const std::int32_t g = step.Gauges[k];
       this->Times->InsertNextValue(time);
-      this->Stations.Append(g);
-      this->GaugeIds->InsertNextValue(g);
-      this->Weights->InsertNextValue(step.Weights[k]);
-      this->Areas->InsertNextValue(step.AreasM2[k]);
-      this->Values->InsertNextValue(values[static_cast<std::size_t>(g)]);
+      this->Gauges.Append(g, step.Weights[k], step.AreasM2[k], values[static_cast<std::size_t>(g)]);
     }
   }
 
@@ -600,20 +561,12 @@ public:
   {
     table->Initialize();
     table->AddColumn(this->Times);
-    if (this->Stations.Array())
-    {
-      table->AddColumn(this->Stations.Array());
-    }
-    table->AddColumn(this->GaugeIds);
-    table->AddColumn(this->Weights);
-    table->AddColumn(this->Areas);
-    table->AddColumn(this->Values);
+    this->Gauges.AddTo(table->GetRowData()); // (a table's columns are its row data's arrays)
   }
 
 private:
-  StationIdColumn Stations;
-  vtkNew<vtkDoubleArray> Times, Weights, Areas, Values;
-  vtkNew<vtkIdTypeArray> GaugeIds;
+  vtkNew<vtkDoubleArray> Times;
+  GaugeColumns Gauges;
 };
 
 } // namespace
@@ -644,11 +597,13 @@ struct vtkThiessenArealAverage::Internals
   RowsSource ClassifiedFrom;
   ObservationRows Classified;
 
-  /// ClassifyRows of the table, read by RequestInformation (which needs the time steps) and kept
-  /// for Build while the table, the gauges' ids and the columns are unchanged.
+  /// ReadRows of the table, read by RequestInformation (which needs the time steps) and kept
+  /// for Build while the table, the gauges' ids and the columns are unchanged. gaugeNames: the
+  /// GaugeNames of stationIds.
   const ObservationRows& CachedRows(vtkTable* table,
     vtkPointSet* gauges,
     vtkAbstractArray* stationIds,
+    const std::vector<std::string>& gaugeNames,
     const std::string& stationColumn,
     const std::string& timeColumn,
     const std::string& monthColumn)
@@ -666,7 +621,7 @@ struct vtkThiessenArealAverage::Internals
     if (!(source == this->ClassifiedFrom))
     {
       this->ClassifiedFrom = RowsSource(); // until the read succeeds (it throws on bad times)
-      this->Classified = ClassifyRows(table, stationIds, stationColumn, timeColumn, monthColumn);
+      this->Classified = ReadRows(table, gaugeNames, stationColumn, timeColumn, monthColumn);
       this->ClassifiedFrom = source;
     }
     return this->Classified;
@@ -736,14 +691,16 @@ int vtkThiessenArealAverage::RequestInformation(vtkInformation*,
   }
   try
   {
+    vtkAbstractArray* stationIds = this->GaugeStationIds(gauges, true);
     const std::vector<double>& times = this->Internal
                                          ->CachedRows(table,
                                            gauges,
-                                           this->GaugeStationIds(gauges, true),
+                                           stationIds,
+                                           GaugeNames(stationIds),
                                            this->StationColumn,
                                            this->TimeColumn,
                                            this->MonthColumn)
-                                         .Times;
+                                         .Steps.Times;
     if (!times.empty())
     {
       outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(),
@@ -881,13 +838,9 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     settings.HaveProjection = true;
     settings.Projection = tessera::ProjectionParameters::FromString(this->ProjectionRecord);
   }
-  if (stationIds) // (GaugeStationIds checked: one per gauge)
-  {
-    for (vtkIdType g = 0; g < stationIds->GetNumberOfTuples(); ++g)
-    {
-      settings.GaugeNames.push_back(StationName(stationIds->GetVariantValue(g))); // for errors
-    }
-  }
+  // (GaugeStationIds checked: one per gauge)
+  const std::vector<std::string> gaugeNames = GaugeNames(stationIds);
+  settings.GaugeNames = gaugeNames; // for errors
   settings.Areas = this->AreaMethod == EQUAL_AREA_PLANE ? tessera::AreaMethod::EqualAreaPlane
     : this->AreaMethod == GEODESIC_POLYGON              ? tessera::AreaMethod::GeodesicPolygon
                                                         : tessera::AreaMethod::Automatic;
@@ -897,29 +850,35 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
 
   in.Times.clear();
   in.Values.clear();
-  std::vector<std::string> repeatedNames;
   std::vector<std::int32_t> repeatedRows;
   static const ObservationRows noRows;
   const ObservationRows* rows = &noRows;
+  vtkAbstractArray* stations = nullptr; // the observations' station column (for messages)
   if (observations)
   {
     if (observations->GetNumberOfRows() == 0)
     {
       throw tessera::InputError("the observations table has no rows (no time step to average)");
     }
-    rows = &in.CachedRows(
-      observations, gauges, stationIds, this->StationColumn, this->TimeColumn, this->MonthColumn);
-    if (rows->Times.empty())
+    rows = &in.CachedRows(observations,
+      gauges,
+      stationIds,
+      gaugeNames,
+      this->StationColumn,
+      this->TimeColumn,
+      this->MonthColumn);
+    stations = observations->GetColumnByName(this->StationColumn.c_str());
+    if (rows->Steps.Times.empty())
     {
-      throw tessera::InputError(NoUsableRowMessage(*rows));
+      throw tessera::InputError(NoUsableRowMessage(*rows, stations));
     }
-    in.Times = rows->Times;
-    in.Values = StepValues(observations,
-      *rows,
-      { this->StationColumn, this->ValueColumn },
-      gaugeCount,
-      repeatedRows,
-      repeatedNames);
+    in.Times = rows->Steps.Times;
+    tessera::StepSeries series = tessera::BuildSeries(rows->Match,
+      rows->Steps,
+      RowValues(observations, rows->Steps, this->StationColumn, this->ValueColumn),
+      gaugeCount);
+    in.Values = std::move(series.Values);
+    repeatedRows = std::move(series.RepeatedRows);
   }
   else
   {
@@ -940,13 +899,8 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   }
 
   // Everything valid but unused is reported by id.
-  auto idOf = [&](std::size_t g)
-  {
-    return stationIds ? StationName(stationIds->GetVariantValue(static_cast<vtkIdType>(g)))
-                      : std::to_string(g);
-  };
+  auto idOf = [&](std::size_t g) { return stationIds ? gaugeNames[g] : std::to_string(g); };
   std::vector<std::int32_t> unobserved;
-  std::vector<std::string> unobservedNames;
   for (std::size_t g = 0; g < gaugeCount; ++g)
   {
     bool any = false;
@@ -961,39 +915,58 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     if (!any)
     {
       unobserved.push_back(static_cast<std::int32_t>(g));
-      unobservedNames.push_back(idOf(g));
     }
   }
   std::vector<std::int32_t> duplicates, duplicateOf;
-  std::vector<std::string> duplicateNames;
   for (const auto& pair : in.Average->DuplicateGauges())
   {
     duplicates.push_back(pair.first);
     duplicateOf.push_back(pair.second);
-    duplicateNames.push_back(idOf(pair.first) + " (same place as " + idOf(pair.second) + ")");
   }
-  // One warning per kind of unused input: "N <what>: the first 20 names".
-  const auto warnOf = [this](const std::vector<std::string>& names, const char* what)
+  // One warning per kind of unused input: "N <what>: the first 20 names" (only those are made).
+  const auto warnOf = [this](std::size_t count, const char* what, const auto& nameOf)
   {
-    if (!names.empty())
+    if (count > 0)
     {
-      vtkWarningMacro(<< names.size() << " " << what << ": " << ListIds(names));
+      vtkWarningMacro(<< count << " " << what << ": " << ListNames(count, nameOf));
     }
   };
-  warnOf(unobservedNames, "gauge(s) have no observation and are never used");
-  warnOf(rows->UnknownStations,
+  warnOf(unobserved.size(),
+    "gauge(s) have no observation and are never used",
+    [&](std::size_t k) { return idOf(static_cast<std::size_t>(unobserved[k])); });
+  const std::vector<tessera::UnknownStation>& unknown = rows->Match.UnknownStations;
+  warnOf(unknown.size(),
     "station id(s) of the observations that no gauge has: their rows were ignored (rows from 0, "
-    "listed in UnusedObservationRows)");
-  warnOf(rows->IncompleteRows,
+    "listed in UnusedObservationRows)",
+    [&](std::size_t k) { return UnknownStationName(stations, unknown[k]); });
+  const std::vector<std::int32_t>& incomplete = rows->Steps.IncompleteRows;
+  warnOf(incomplete.size(),
     "observation row(s) have no station id or no time and were ignored (rows from 0, listed in "
-    "UnusedObservationRows)");
-  warnOf(rows->SharedIds,
-    "station id(s) are given to more than one gauge; their observations go to the first");
-  warnOf(repeatedNames,
+    "UnusedObservationRows)",
+    [&](std::size_t k) { return IncompleteRowName(stations, incomplete[k]); });
+  const std::vector<tessera::SharedStation>& shared = rows->Match.SharedStations;
+  warnOf(shared.size(),
+    "station id(s) are given to more than one gauge; their observations go to the first",
+    [&](std::size_t k)
+    {
+      return gaugeNames[static_cast<std::size_t>(shared[k].Gauge)] + " (gauges " +
+        std::to_string(shared[k].FirstGauge) + " and " + std::to_string(shared[k].Gauge) + ")";
+    });
+  warnOf(repeatedRows.size(),
     "observation row(s) repeat a station and time of an earlier row with a value; the earlier "
-    "value is used (rows from 0, listed in RepeatedObservationRows)");
-  warnOf(
-    duplicateNames, "gauge(s) stand where an earlier gauge stands; the first that reports is used");
+    "value is used (rows from 0, listed in RepeatedObservationRows)",
+    [&](std::size_t k)
+    {
+      const auto row = static_cast<std::size_t>(repeatedRows[k]);
+      return "row " + std::to_string(row) + " (station " + RowStation(stations, row) + ")";
+    });
+  warnOf(duplicates.size(),
+    "gauge(s) stand where an earlier gauge stands; the first that reports is used",
+    [&](std::size_t k)
+    {
+      return idOf(static_cast<std::size_t>(duplicates[k])) + " (same place as " +
+        idOf(static_cast<std::size_t>(duplicateOf[k])) + ")";
+    });
 
   // The summary: every step in order, each one updating the tessellation of the one before.
   vtkNew<vtkDoubleArray> timeColumn, means, covered;
@@ -1032,7 +1005,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateGaugeIds", duplicates);
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateOfGaugeIds", duplicateOf);
   tessera_vtk::AddIdFieldArray(in.Summary, "RepeatedObservationRows", repeatedRows);
-  tessera_vtk::AddIdFieldArray(in.Summary, "UnusedObservationRows", rows->UnusedRows);
+  tessera_vtk::AddIdFieldArray(in.Summary, "UnusedObservationRows", rows->Steps.UnusedRows());
 }
 
 //------------------------------------------------------------------------------
@@ -1051,8 +1024,7 @@ void vtkThiessenArealAverage::WriteTiles(std::size_t step,
     points->InsertNextPoint(p.x, p.y, 0.0);
   }
   vtkNew<vtkCellArray> polys;
-  TileCellData cells(stationIds);
-  const double catchmentArea = in.Average->CatchmentAreaM2();
+  TileCellData cells(stationIds, in.Average->CatchmentAreaM2());
   for (std::size_t k = 0; k < clipped.Gauges.size(); ++k)
   {
     const std::int32_t g = clipped.Gauges[k];
@@ -1074,8 +1046,7 @@ void vtkThiessenArealAverage::WriteTiles(std::size_t step,
         isWeighted ? result.Weights[index] : 0.0,
         isWeighted ? result.AreasM2[index] : 0.0,
         in.Values[step][static_cast<std::size_t>(g)],
-        clipped.PieceAreasM2[r],
-        catchmentArea);
+        clipped.PieceAreasM2[r]);
     }
   }
   output->SetPoints(points);

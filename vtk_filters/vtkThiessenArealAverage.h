@@ -40,7 +40,7 @@
  * number or a missing-value marker, are errors naming the row; a table none of whose rows can be
  * used is an error that counts them. Station ids match as text (leading zeros of integer ids are
  * ignored, so "050109" matches 50109; a floating-point id column, as a CSV reader makes, is read in
- * full, so 6730200 and 6730500 stay two stations).
+ * full, so 6730200 and 6730500 stay two stations; matching and steps: core/observation_series.h).
  *
  * The projection is vtkGeographicProjection's automatic equal-area conic fitted to the catchment
  * (where the tiles are measured, so gauges far from it, such as one that never reports or has a

@@ -1,0 +1,146 @@
+#include "observation_series.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <unordered_map>
+
+namespace tessera
+{
+
+std::string StationKey(std::string id)
+{
+  if (!id.empty() && std::all_of(id.begin(), id.end(), [](char c) { return c >= '0' && c <= '9'; }))
+  {
+    const auto nonZero = id.find_first_not_of('0');
+    id = nonZero == std::string::npos ? "0" : id.substr(nonZero);
+  }
+  return id;
+}
+
+StationMatch MatchStations(const std::vector<std::string>& gaugeIds,
+  const std::vector<std::string>& rowIds)
+{
+  StationMatch match;
+  std::unordered_map<std::string, std::int32_t> gaugeOf; // the first gauge of each key
+  for (std::size_t g = 0; g < gaugeIds.size(); ++g)
+  {
+    const auto [at, first] = gaugeOf.emplace(StationKey(gaugeIds[g]), static_cast<std::int32_t>(g));
+    if (!first)
+    {
+      match.SharedStations.push_back({ at->second, static_cast<std::int32_t>(g) });
+    }
+  }
+  std::unordered_map<std::string, std::size_t> unknownOf; // index in UnknownStations of each key
+  match.GaugeOfRow.assign(rowIds.size(), -1);
+  for (std::size_t r = 0; r < rowIds.size(); ++r)
+  {
+    const auto row = static_cast<std::int32_t>(r);
+    std::string key = StationKey(rowIds[r]);
+    if (key.empty())
+    {
+      match.RowsWithoutStation.push_back(row);
+      continue;
+    }
+    const auto gauge = gaugeOf.find(key);
+    if (gauge != gaugeOf.end())
+    {
+      match.GaugeOfRow[r] = gauge->second;
+      continue;
+    }
+    const auto [at, first] = unknownOf.emplace(std::move(key), match.UnknownStations.size());
+    if (first)
+    {
+      match.UnknownStations.push_back({ row, 0 });
+    }
+    ++match.UnknownStations[at->second].Rows;
+  }
+  return match;
+}
+
+std::vector<std::int32_t> ObservationSteps::UnusedRows() const
+{
+  std::vector<std::int32_t> unused;
+  for (std::size_t r = 0; r < this->StepOfRow.size(); ++r)
+  {
+    if (this->StepOfRow[r] < 0)
+    {
+      unused.push_back(static_cast<std::int32_t>(r));
+    }
+  }
+  return unused;
+}
+
+ObservationSteps StepsOfRows(const StationMatch& match,
+  const std::vector<std::optional<double>>& rowTimes)
+{
+  ObservationSteps steps;
+  const std::size_t count = match.GaugeOfRow.size();
+  std::vector<double> usedTimes;         // the used rows', in row order
+  std::vector<std::int32_t> withoutTime; // the rows of a gauge without a time
+  for (std::size_t r = 0; r < count; ++r)
+  {
+    if (match.GaugeOfRow[r] >= 0)
+    {
+      if (rowTimes[r])
+      {
+        usedTimes.push_back(*rowTimes[r]);
+      }
+      else
+      {
+        withoutTime.push_back(static_cast<std::int32_t>(r));
+      }
+    }
+  }
+  std::merge(match.RowsWithoutStation.begin(),
+    match.RowsWithoutStation.end(),
+    withoutTime.begin(),
+    withoutTime.end(),
+    std::back_inserter(steps.IncompleteRows));
+  steps.Times = usedTimes;
+  std::sort(steps.Times.begin(), steps.Times.end());
+  steps.Times.erase(std::unique(steps.Times.begin(), steps.Times.end()), steps.Times.end());
+  steps.StepOfRow.assign(count, -1);
+  auto usedTime = usedTimes.begin();
+  for (std::size_t r = 0; r < count; ++r)
+  {
+    if (match.GaugeOfRow[r] >= 0 && rowTimes[r])
+    {
+      steps.StepOfRow[r] = static_cast<std::int32_t>(
+        std::lower_bound(steps.Times.begin(), steps.Times.end(), *usedTime++) -
+        steps.Times.begin());
+    }
+  }
+  return steps;
+}
+
+StepSeries BuildSeries(const StationMatch& match,
+  const ObservationSteps& steps,
+  const std::vector<double>& rowValues,
+  std::size_t gaugeCount)
+{
+  StepSeries series;
+  series.Values.assign(
+    steps.Times.size(), std::vector<double>(gaugeCount, std::numeric_limits<double>::quiet_NaN()));
+  for (std::size_t r = 0; r < steps.StepOfRow.size(); ++r)
+  {
+    if (steps.StepOfRow[r] < 0)
+    {
+      continue;
+    }
+    double& slot = series.Values[static_cast<std::size_t>(steps.StepOfRow[r])]
+                                [static_cast<std::size_t>(match.GaugeOfRow[r])];
+    if (std::isnan(slot))
+    {
+      slot = rowValues[r];
+    }
+    else
+    {
+      series.RepeatedRows.push_back(static_cast<std::int32_t>(r));
+    }
+  }
+  return series;
+}
+
+} // namespace tessera
