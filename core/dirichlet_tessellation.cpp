@@ -323,26 +323,42 @@ std::int32_t DirichletTessellation::Insert(const Point2& p, std::int32_t nearId)
   {
     this->VertexEdges.push_back(-1);
   }
+  this->InsertKnownPoint(std::int32_t(id), nearId);
+  return std::int32_t(id);
+}
+
+void DirichletTessellation::Reinsert(std::int32_t id, std::int32_t nearId)
+{
+  if (this->Status(id) != PointStatus::Removed) // (throws for an out-of-range id)
+  {
+    throw InputError(
+      "point " + std::to_string(id) + " cannot be inserted again: it is not removed");
+  }
+  this->StatusBytes[id] = std::uint8_t(PointStatus::Accepted);
+  this->InsertKnownPoint(id, nearId);
+}
+
+// Inserts point id (coordinates stored, status Accepted) unless the window rejects it.
+void DirichletTessellation::InsertKnownPoint(std::int32_t id, std::int32_t nearId)
+{
+  const Point2& p = this->Coordinates[id];
   if (!this->TheWindow.Contains(p))
   {
-    this->Rejected.push_back(std::int32_t(id)); // the largest id so far: Rejected stays sorted
-    this->StatusBytes.back() = std::uint8_t(PointStatus::OutsideWindow);
+    this->Rejected.insert(std::lower_bound(this->Rejected.begin(), this->Rejected.end(), id), id);
+    this->StatusBytes[id] = std::uint8_t(PointStatus::OutsideWindow);
+    return;
   }
-  else
+  if (nearId >= 0 && this->TracksVertexEdges())
   {
-    if (nearId >= 0 && this->TracksVertexEdges())
+    const std::int32_t e = this->EdgeLeaving(nearId); // -1 unless an accepted vertex
+    if (e >= 0)
     {
-      const std::int32_t e = this->EdgeLeaving(nearId); // -1 unless an accepted vertex
-      if (e >= 0)
-      {
-        this->Serial.LastTriangle = e / 3;
-      }
+      this->Serial.LastTriangle = e / 3;
     }
-    this->BeginTrackedChange();
-    this->InsertAcceptedPoint(std::int32_t(id));
-    this->EndTrackedChange();
   }
-  return std::int32_t(id);
+  this->BeginTrackedChange();
+  this->InsertAcceptedPoint(id);
+  this->EndTrackedChange();
 }
 
 void DirichletTessellation::InsertAcceptedPoint(std::int32_t id)
@@ -954,16 +970,22 @@ void DirichletTessellation::EnableStatusBytes()
   }
 }
 
+// Removed points are known by their bytes alone (no list): those keep theirs.
 void DirichletTessellation::RecomputeStatusBytes()
 {
+  std::vector<std::uint8_t> before;
+  before.swap(this->StatusBytes);
   this->StatusBytes.assign(this->Coordinates.size(), std::uint8_t(PointStatus::Accepted));
+  for (std::size_t id = 0; id < before.size() && id < this->StatusBytes.size(); ++id)
+  {
+    if ((before[id] & StatusMask) == std::uint8_t(PointStatus::Removed))
+    {
+      this->StatusBytes[id] = std::uint8_t(PointStatus::Removed);
+    }
+  }
   for (const std::int32_t id : this->Rejected)
   {
     this->StatusBytes[id] = std::uint8_t(PointStatus::OutsideWindow);
-  }
-  for (const std::int32_t id : this->RemovedPoints)
-  {
-    this->StatusBytes[id] = std::uint8_t(PointStatus::Removed);
   }
   for (const auto& pair : this->DuplicatePairs)
   {
@@ -1006,10 +1028,19 @@ std::vector<std::pair<std::int32_t, std::int32_t>> DirichletTessellation::Duplic
   return pairs;
 }
 
+// Removed points are known by their status bytes alone (Remove makes them, and they stay in step
+// with the coordinates from then on, through rebuilds too): no list to keep, which Reinsert
+// would have to search.
 std::vector<std::int32_t> DirichletTessellation::RemovedIds() const
 {
-  std::vector<std::int32_t> ids = this->RemovedPoints;
-  std::sort(ids.begin(), ids.end());
+  std::vector<std::int32_t> ids;
+  for (std::size_t id = 0; id < this->StatusBytes.size(); ++id)
+  {
+    if ((this->StatusBytes[id] & StatusMask) == std::uint8_t(PointStatus::Removed))
+    {
+      ids.push_back(std::int32_t(id));
+    }
+  }
   return ids;
 }
 
@@ -1017,8 +1048,8 @@ std::size_t DirichletTessellation::StructureBytes() const
 {
   return this->Coordinates.capacity() * sizeof(Point2) +
     (this->Origins.capacity() + this->Twins.capacity() + this->FreeTriangles.capacity() +
-      this->Collinear.capacity() + this->Rejected.capacity() + this->RemovedPoints.capacity() +
-      this->Serial.FlipStack.capacity() + this->VertexEdges.capacity()) *
+      this->Collinear.capacity() + this->Rejected.capacity() + this->Serial.FlipStack.capacity() +
+      this->VertexEdges.capacity()) *
     sizeof(std::int32_t) +
     this->StatusBytes.capacity() +
     this->DuplicatePairs.capacity() * sizeof(std::pair<std::int32_t, std::int32_t>);
@@ -1094,14 +1125,12 @@ void DirichletTessellation::Remove(std::int32_t id)
   if (status == PointStatus::OutsideWindow)
   {
     this->Rejected.erase(std::lower_bound(this->Rejected.begin(), this->Rejected.end(), id));
-    this->RemovedPoints.push_back(id);
     return;
   }
   if (status == PointStatus::Duplicate)
   {
     // The copied point keeps its HasDuplicates mark (a hint; see StatusMask).
     this->DuplicatePairs.erase(this->FindDuplicatePair(id));
-    this->RemovedPoints.push_back(id);
     return;
   }
   std::int32_t edge = -1;
@@ -1118,7 +1147,6 @@ void DirichletTessellation::Remove(std::int32_t id)
   {
     onLine = std::find(this->Collinear.begin(), this->Collinear.end(), id);
   }
-  this->RemovedPoints.push_back(id);
   this->VertexEdges[id] = -1;
 
   // A duplicate takes the removed point's place: the structure does not change.

@@ -77,6 +77,12 @@ public:
   /// (TrackVertexEdges); otherwise, or for -1, it starts at the triangle made last. The result
   /// is the same either way: only the walk's length differs.
   std::int32_t Insert(const Point2& p, std::int32_t nearId = -1);
+  /// Inserts a removed point again under its id, as Insert would insert its coordinates (nearId
+  /// likewise; the window may reject it again, and it may be an exact copy of an accepted point).
+  /// A stream whose points come and go, as gauges stop and start reporting, then keeps each
+  /// point's id and its arrays' size, and points near in space stay near in memory when their
+  /// ids were given in a spatial order. Throws InputError for an id that is not Removed.
+  void Reinsert(std::int32_t id, std::int32_t nearId = -1);
   /// Removes an accepted point (the result equals the tessellation built without it; if it had
   /// exact duplicates, the smallest of them takes its place). A duplicate or rejected point is
   /// only marked removed. Throws InputError for an unknown or already removed id. The hole left
@@ -198,6 +204,7 @@ private:
   {
     return this->BuildOrder ? (*this->BuildOrder)[v] : v;
   }
+  void InsertKnownPoint(std::int32_t id, std::int32_t nearId);
   void InsertAcceptedPoint(std::int32_t id);
   void InsertCollinear(std::int32_t id);
   void LeaveCollinearPhase(std::int32_t id);
@@ -274,7 +281,6 @@ private:
   std::vector<std::int32_t> Collinear;
   std::vector<std::int32_t> Rejected;
   std::vector<std::pair<std::int32_t, std::int32_t>> DuplicatePairs;
-  std::vector<std::int32_t> RemovedPoints;
   /// Per id, a PointStatus in the low bits plus HasDuplicates for an accepted point that exact
   /// copies point to; empty until the first Insert or Remove (a batch build does not pay for it).
   std::vector<std::uint8_t> StatusBytes;

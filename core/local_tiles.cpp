@@ -338,6 +338,32 @@ void LocalTilesOfRange(const Tess& tess,
   }
 }
 
+// Visits the tiles of starts[begin, end) as they are made (VisitTilesOf's chunk).
+void VisitTilesOfRange(const Tess& tess,
+  const std::vector<std::pair<std::int32_t, std::int32_t>>& starts,
+  std::size_t begin,
+  std::size_t end,
+  std::size_t chunk,
+  const TileVisitor& visit)
+{
+  LocalFaces faces(tess, true);
+  std::vector<TileEdge> edges;
+  std::vector<Point2> polygon;
+  std::vector<std::int32_t> ring;
+  for (std::size_t k = begin; k < end; ++k)
+  {
+    const auto& [v, start] = starts[k];
+    CollectRing(tess, start, ring);
+    for (const std::int32_t e : ring)
+    {
+      faces.Resolve(e / 3);
+    }
+    bool interior = false;
+    RingTilePolygon(tess, faces, v, ring, edges, polygon, interior);
+    visit(chunk, v, polygon.data(), polygon.size());
+  }
+}
+
 template<class T>
 void Append(std::vector<T>& to, const std::vector<T>& from)
 {
@@ -420,6 +446,39 @@ TileSet ComputeTilesOf(const DirichletTessellation& tessellation,
   FaceMateLists* mates)
 {
   return LocalTiles(tessellation, ids, true, mates);
+}
+
+std::size_t VisitTilesOf(const DirichletTessellation& tessellation,
+  const std::vector<std::int32_t>& ids,
+  std::size_t maxChunks,
+  std::int64_t minimumPerThread,
+  const TileVisitor& visit)
+{
+  if (!tessellation.IsTwoDimensional())
+  {
+    const TileSet tiles = CollinearTilesOf(tessellation, ids, nullptr);
+    for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
+    {
+      visit(0,
+        tiles.PointIds[k],
+        &tiles.Vertices[tiles.Offsets[k]],
+        std::size_t(tiles.Offsets[k + 1] - tiles.Offsets[k]));
+    }
+    return tiles.PointIds.size();
+  }
+  if (ids.empty())
+  {
+    return 0;
+  }
+  const std::vector<std::pair<std::int32_t, std::int32_t>> starts = VertexEdges(tessellation, ids);
+  const std::size_t chunks = std::max<std::size_t>(
+    1, std::min(maxChunks, parallel::ThreadCount(std::int64_t(starts.size()), minimumPerThread)));
+  const std::vector<std::int32_t> bounds =
+    parallel::ChunkBounds(std::int32_t(starts.size()), chunks);
+  parallel::RunChunks(chunks,
+    [&](std::size_t k)
+    { VisitTilesOfRange(tessellation, starts, bounds[k], bounds[k + 1], k, visit); });
+  return starts.size();
 }
 
 FaceMateLists ComputeFaceMatesOf(const DirichletTessellation& tessellation,

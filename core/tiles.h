@@ -42,6 +42,7 @@
 #include "uninitialized_allocator.h"
 
 #include <cstdint>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -258,6 +259,25 @@ struct FaceMateLists
 TileSet ComputeTilesOf(const DirichletTessellation& tessellation,
   const std::vector<std::int32_t>& ids,
   FaceMateLists* mates = nullptr);
+
+/// What VisitTilesOf hands over per tile: the chunk it belongs to, the point's id and its tile's
+/// vertices (valid during the call only).
+using TileVisitor = std::function<
+  void(std::size_t chunk, std::int32_t id, const Point2* vertices, std::size_t count)>;
+
+/// ComputeTilesOf's tiles (the same, in the same order) handed to visit one by one as they are
+/// made, instead of collected: a caller that clips or measures each tile does so while it is in
+/// the cache, on the thread that made it. The ids are cut into contiguous chunks, at most
+/// maxChunks, with at least minimumPerThread ids each (parallel::ThreadCount); chunk 0 runs on
+/// the calling thread, the others beside it, so visit must only write what belongs to its chunk
+/// or to the id. A chunk stops at the first tile whose visit throws; once every chunk has
+/// stopped, the error of the first failing tile in the given order is rethrown. Returns the number
+/// of tiles visited.
+std::size_t VisitTilesOf(const DirichletTessellation& tessellation,
+  const std::vector<std::int32_t>& ids,
+  std::size_t maxChunks,
+  std::int64_t minimumPerThread,
+  const TileVisitor& visit);
 
 /// The face mates of the given points only (same rules as ComputeTilesOf), without the tiles.
 FaceMateLists ComputeFaceMatesOf(const DirichletTessellation& tessellation,

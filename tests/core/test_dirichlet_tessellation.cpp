@@ -941,6 +941,111 @@ TEST(DirichletTessellation, InsertThenRemoveEqualsNeverInsertedWhileStreaming)
   }
 }
 
+// Points that come and go under their ids (Reinsert): after every step the tessellation equals
+// the batch build of the points not removed at that moment, over sets with degenerate hulls,
+// lattices and co-circular points, and ids are never added.
+TEST(DirichletTessellation, ReinsertingRemovedPointsEqualsNeverRemoved)
+{
+  const std::vector<std::vector<Point2>> sets = HullTestSets();
+  std::mt19937 rng(31);
+  for (std::size_t s = 0; s < sets.size(); ++s)
+  {
+    const std::vector<Point2>& points = sets[s];
+    for (int sequence = 0; sequence < 4; ++sequence)
+    {
+      Tess t(UnitWindow());
+      for (const Point2& p : points)
+      {
+        t.Insert(p);
+      }
+      t.TrackVertexEdges();
+      std::vector<std::int32_t> removed;
+      for (int step = 0; step < 3 * int(points.size()); ++step)
+      {
+        const bool reinsert =
+          !removed.empty() && (t.AcceptedCount() <= 4 || std::bernoulli_distribution(0.45)(rng));
+        if (reinsert)
+        {
+          const std::size_t k =
+            std::uniform_int_distribution<std::size_t>(0, removed.size() - 1)(rng);
+          const std::int32_t id = removed[k];
+          removed.erase(removed.begin() + std::ptrdiff_t(k));
+          // Half of them with a hint, any accepted point: the walk starts there.
+          const std::int32_t candidate = std::int32_t(rng() % points.size());
+          const bool hinted = step % 2 == 1 && t.Status(candidate) == PointStatus::Accepted;
+          t.Reinsert(id, hinted ? candidate : -1);
+          EXPECT_EQ(t.Status(id), PointStatus::Accepted);
+        }
+        else
+        {
+          std::vector<std::int32_t> accepted;
+          for (std::int32_t id = 0; id < std::int32_t(points.size()); ++id)
+          {
+            if (t.Status(id) == PointStatus::Accepted)
+            {
+              accepted.push_back(id);
+            }
+          }
+          const std::int32_t id =
+            accepted[std::uniform_int_distribution<std::size_t>(0, accepted.size() - 1)(rng)];
+          t.Remove(id);
+          removed.push_back(id);
+        }
+        ASSERT_EQ(t.PointCount(), points.size());
+        std::vector<std::int32_t> sorted = removed;
+        std::sort(sorted.begin(), sorted.end());
+        ASSERT_EQ(t.RemovedIds(), sorted);
+        if (t.IsTwoDimensional())
+        {
+          CheckStructure(t);
+        }
+        ASSERT_TRUE(MakeCanonical(t) == WithoutIds(points, removed))
+          << "set " << s << " sequence " << sequence << " step " << step;
+      }
+    }
+  }
+}
+
+// Reinsert gives back each kind of status: a point outside the window is rejected again, and a
+// copy is a duplicate again or, having the smaller id, takes the accepted copy's place. Removing
+// everything listed and reinserting it in another order ends where the batch build is.
+TEST(DirichletTessellation, ReinsertRestoresRejectionsAndDuplicates)
+{
+  std::vector<Point2> points = UniformPoints(40, 29);
+  points.push_back({ 5.0, 5.0 });  // 40: outside
+  points.push_back(points[7]);     // 41: copy of 7
+  points.push_back(points[7]);     // 42: copy of 7
+  points.push_back({ -5.0, 0.0 }); // 43: outside
+  points.push_back(points[3]);     // 44: copy of 3
+  const Tess batch(UnitWindow(), points);
+  Tess t(UnitWindow(), points);
+  for (const std::int32_t id : { 40, 42, 7, 3, 44 })
+  {
+    t.Remove(id);
+  }
+  EXPECT_THROW(t.Reinsert(41), InputError); // accepted
+  EXPECT_THROW(t.Reinsert(43), InputError); // rejected, not removed
+  EXPECT_THROW(t.Reinsert(45), InputError); // unknown
+  t.Reinsert(40);
+  EXPECT_EQ(t.Status(40), PointStatus::OutsideWindow);
+  EXPECT_EQ(t.RejectedIds(), (std::vector<std::int32_t>{ 40, 43 }));
+  t.Reinsert(42); // 7 is removed, so 42 copies 41
+  EXPECT_EQ(t.DuplicateOf(42), 41);
+  t.Reinsert(44); // 3 is removed: 44 is accepted
+  EXPECT_EQ(t.Status(44), PointStatus::Accepted);
+  t.Reinsert(7); // the smallest id of its place: 41 and 42 copy it now
+  t.Reinsert(3);
+  EXPECT_EQ(t.Status(7), PointStatus::Accepted);
+  EXPECT_EQ(t.Status(3), PointStatus::Accepted);
+  EXPECT_EQ(t.Duplicates(), batch.Duplicates());
+  EXPECT_EQ(t.RejectedIds(), batch.RejectedIds());
+  EXPECT_TRUE(t.RemovedIds().empty());
+  EXPECT_EQ(t.AcceptedCount(), batch.AcceptedCount());
+  EXPECT_EQ(t.PointCount(), points.size());
+  CheckStructure(t);
+  EXPECT_TRUE(MakeCanonical(t) == MakeCanonical(batch));
+}
+
 // Status bytes and the sorted lists agree through streaming insertions, rejections, duplicates
 // and removals of each kind.
 TEST(DirichletTessellation, StatusQueriesTrackStreamingChanges)

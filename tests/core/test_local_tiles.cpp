@@ -18,6 +18,8 @@
 #include <map>
 #include <random>
 #include <set>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 using namespace tessera;
@@ -232,6 +234,95 @@ TEST(LocalTiles, DegenerateSetsMatchTheFullDerivation)
   const DirichletTessellation collinear(Window::Rectangle(0, 1, 0, 1), line);
   ASSERT_FALSE(collinear.IsTwoDimensional());
   ExpectLocalEqualsFull(collinear, 6);
+}
+
+// VisitTilesOf hands over ComputeTilesOf's tiles, bit for bit and in order within each chunk,
+// each once, with chunks contiguous and in order, on 1, 2, 3 and 7 threads (lattice: every face
+// degenerate; collinear: no faces). The error rethrown is the first failing tile's.
+TEST(LocalTiles, VisitedTilesAreComputeTilesOfsInChunks)
+{
+  std::vector<Point2> line;
+  for (int k = 0; k < 900; ++k)
+  {
+    line.push_back({ (k + 1) / 1024.0, (k + 1) / 2048.0 });
+  }
+  const DirichletTessellation sets[] = {
+    DirichletTessellation(Window::Rectangle(0, 1, 0, 1), UniformPoints(3000, 41)),
+    DirichletTessellation(Window::Rectangle(0, 1, 0, 1), Lattice(40, 1.0 / 41)),
+    DirichletTessellation(Window::Rectangle(0, 1, 0, 1), line),
+  };
+  for (const DirichletTessellation& t : sets)
+  {
+    std::vector<std::int32_t> ask = tessera_test::AcceptedIds(t);
+    std::shuffle(ask.begin(), ask.end(), std::mt19937_64(7));
+    ask.resize(ask.size() * 2 / 3);
+    ask.push_back(ask.front()); // a repeat, skipped
+    const TileSet expected = ComputeTilesOf(t, ask);
+    for (const int threads : { 1, 2, 3, 7 })
+    {
+      const tessera_test::ThreadLimitOverride limit(threads);
+      std::vector<std::vector<std::pair<std::int32_t, std::vector<Point2>>>> byChunk(threads);
+      const std::size_t visited = VisitTilesOf(t,
+        ask,
+        std::size_t(threads),
+        100,
+        [&](std::size_t chunk, std::int32_t id, const Point2* tile, std::size_t count)
+        { byChunk.at(chunk).emplace_back(id, std::vector<Point2>(tile, tile + count)); });
+      EXPECT_EQ(visited, expected.PointIds.size());
+      std::size_t k = 0;
+      std::size_t chunksUsed = 0;
+      for (const auto& chunk : byChunk)
+      {
+        chunksUsed += chunk.empty() ? 0 : 1;
+        for (const auto& [id, tile] : chunk)
+        {
+          ASSERT_LT(k, expected.PointIds.size());
+          EXPECT_EQ(id, expected.PointIds[k]);
+          const std::vector<Point2> want(expected.Vertices.begin() + expected.Offsets[k],
+            expected.Vertices.begin() + expected.Offsets[k + 1]);
+          EXPECT_TRUE(tile.size() == want.size() &&
+            std::memcmp(tile.data(), want.data(), tile.size() * sizeof(Point2)) == 0)
+            << "tile of " << id << ", " << threads << " threads";
+          ++k;
+        }
+      }
+      EXPECT_EQ(k, expected.PointIds.size());
+      if (t.IsTwoDimensional())
+      {
+        EXPECT_EQ(chunksUsed, std::size_t(threads)) << threads << " threads"; // >= 100 tiles each
+      }
+    }
+    // Errors: tiles fail from a point on; on any number of threads, that point's error arrives.
+    const std::int32_t firstFailing = expected.PointIds[expected.PointIds.size() / 3];
+    std::vector<char> failing(t.PointCount(), 0);
+    for (std::size_t k = expected.PointIds.size() / 3; k < expected.PointIds.size(); ++k)
+    {
+      failing[expected.PointIds[k]] = 1;
+    }
+    for (const int threads : { 1, 3 })
+    {
+      const tessera_test::ThreadLimitOverride limit(threads);
+      try
+      {
+        VisitTilesOf(t,
+          ask,
+          std::size_t(threads),
+          100,
+          [&](std::size_t, std::int32_t id, const Point2*, std::size_t)
+          {
+            if (failing[id])
+            {
+              throw std::runtime_error(std::to_string(id));
+            }
+          });
+        ADD_FAILURE() << "no error";
+      }
+      catch (const std::runtime_error& error)
+      {
+        EXPECT_EQ(std::string(error.what()), std::to_string(firstFailing));
+      }
+    }
+  }
 }
 
 // The areal average's update rule: after removals and insertions, the tiles that differ from
