@@ -79,6 +79,11 @@ public:
     {
       return; // ghosts stay unlisted: Label gives -2 - t
     }
+    if (this->FreeOfCocircular)
+    {
+      this->ResolveTriangle(t);
+      return;
+    }
     const auto& org = this->T.Origin();
     const auto& twin = this->T.Twin();
     const std::vector<Point2>& pts = this->T.Points();
@@ -144,6 +149,32 @@ public:
   }
 
 private:
+  /// Resolve's case without co-circular triangles: the face is t alone, labelled t (the same
+  /// entry the general case makes for a cluster of one, without its lists: this runs for every
+  /// face of every tile derived).
+  void ResolveTriangle(std::int32_t t)
+  {
+    const std::int32_t* v = this->T.Origin().data() + 3 * t;
+    std::int32_t a = v[0], b = v[1], c = v[2];
+    SortTriangleIds(a, b, c);
+    Entry entry;
+    entry.Label = t;
+    entry.PointStart = std::int32_t(this->Points.size());
+    entry.PointCount = 3;
+    this->Points.push_back(a);
+    this->Points.push_back(b);
+    this->Points.push_back(c);
+    if (this->WantCentres)
+    {
+      const std::vector<Point2>& pts = this->T.Points();
+      double error = 0.0;
+      entry.Centre = Circumcentre(pts[a], pts[b], pts[c], error);
+      entry.Inside = CentreInside(this->T, entry.Label, entry.Centre, error);
+    }
+    this->EntryOf[t] = std::int32_t(this->Entries.size());
+    this->Entries.push_back(entry);
+  }
+
   struct Entry
   {
     std::int32_t Label = -1;
