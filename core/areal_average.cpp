@@ -90,9 +90,11 @@ struct ThiessenArealAverage::State
 
   // Per gauge: the clipped area (m^2) of its tile, as last derived.
   std::vector<double> CachedArea;
-  // Per gauge in the tessellation (updates only): a box holding its tile, the tile's own box when
-  // it was last derived, grown since by the removals next to it; for a gauge inserted and not
-  // derived since, the joined boxes of its neighbours at its insertion (Apply).
+  // Per engine id of a gauge in the tessellation (updates only): a box holding its tile, the
+  // tile's own box when it was last derived, grown since by the removals next to it; for a gauge
+  // inserted and not derived since, the joined boxes of its neighbours at its insertion (Apply).
+  // By engine id, not gauge: Apply reads and grows the boxes of each changed gauge's neighbours,
+  // whose ids are near each other (RemovedId), where their gauge numbers are anywhere.
   std::vector<Box2> TileBounds;
   // How far clear of the catchment's box a box must be (a millionth of the window's larger side,
   // about 1 m in Colorado): the boxes are those of computed tiles, whose vertices are rounded
@@ -110,6 +112,7 @@ struct ThiessenArealAverage::State
     std::vector<Point2> LonLat;
   };
   std::vector<ClipScratch> Scratch{ 1 }; // [0]: the calling thread's
+  LocalTilesWorkspace LocalTiles;        // DeriveChanged's, kept between steps
   std::vector<char> Wanted; // per gauge: used this step (kept: a step is O(gauges) already)
   // Per gauge (updates only): 1 while it is in the tessellation though not used, its removal
   // deferred because its tile is clear of the catchment (DeferClearRemovals). Its clipped area is
@@ -368,7 +371,7 @@ struct ThiessenArealAverage::State
   {
     const auto kept = std::stable_partition(removed.begin(),
       removed.end(),
-      [this](std::int32_t g) { return !this->ClearOfCatchment(this->TileBounds[g]); });
+      [this](std::int32_t g) { return !this->ClearOfCatchment(this->BoundsOfGauge(g)); });
     for (auto it = kept; it != removed.end(); ++it)
     {
       this->Deferred[*it] = 1;
@@ -470,11 +473,11 @@ struct ThiessenArealAverage::State
       {
         around.clear();
         t.AppendNeighbours(this->EngineOfGauge[g], around);
+        const Box2& box = this->BoundsOfGauge(g);
         for (const std::int32_t id : around)
         {
-          const std::int32_t neighbour = this->GaugeOfEngine[id];
-          this->TileBounds[neighbour].Extend(this->TileBounds[g]);
-          touched->push_back(neighbour);
+          this->TileBounds[id].Extend(box);
+          touched->push_back(this->GaugeOfEngine[id]);
         }
       }
       t.Remove(this->EngineOfGauge[g]);
@@ -497,7 +500,7 @@ struct ThiessenArealAverage::State
     for (std::size_t k = 0; touched && k < touched->size(); ++k)
     {
       const std::int32_t g = (*touched)[k];
-      if (this->Deferred[g] && !this->ClearOfCatchment(this->TileBounds[g]))
+      if (this->Deferred[g] && !this->ClearOfCatchment(this->BoundsOfGauge(g)))
       {
         this->Deferred[g] = 0;
         remove(g);
@@ -531,19 +534,22 @@ struct ThiessenArealAverage::State
       {
         this->GaugeOfEngine.resize(id + 1, NotInTessellation);
       }
+      if (static_cast<std::size_t>(id) >= this->TileBounds.size() && this->Settings.Incremental)
+      {
+        this->TileBounds.resize(id + 1);
+      }
       this->GaugeOfEngine[id] = g;
       if (touched && t.IsTwoDimensional())
       {
         around.clear();
         t.AppendNeighbours(id, around);
-        Box2 box = this->TileBounds[this->GaugeOfEngine[around.front()]];
+        Box2 box = this->TileBounds[around.front()];
         for (const std::int32_t neighbour : around)
         {
-          const std::int32_t j = this->GaugeOfEngine[neighbour];
-          box.Extend(this->TileBounds[j]);
-          touched->push_back(j);
+          box.Extend(this->TileBounds[neighbour]);
+          touched->push_back(this->GaugeOfEngine[neighbour]);
         }
-        this->TileBounds[g] = box;
+        this->TileBounds[id] = box;
       }
       else
       {
@@ -599,8 +605,14 @@ struct ThiessenArealAverage::State
     this->CachedArea[g] = this->ClippedArea(tile, size, static_cast<std::size_t>(g), scratch);
     if (this->Settings.Incremental)
     {
-      this->TileBounds[g] = BoundsOf(tile, size);
+      this->TileBounds[id] = BoundsOf(tile, size);
     }
+  }
+
+  /// The box of gauge g's tile (g in the tessellation).
+  const Box2& BoundsOfGauge(std::int32_t g) const
+  {
+    return this->TileBounds[this->EngineOfGauge[g]];
   }
 
   /// Whether a tile inside box is clear of the catchment (clipped area 0).
@@ -642,7 +654,7 @@ struct ThiessenArealAverage::State
           continue;
         }
         marked[g] = 1;
-        if (this->ClearOfCatchment(this->TileBounds[g]))
+        if (this->ClearOfCatchment(this->BoundsOfGauge(g)))
         {
           this->CachedArea[g] = 0.0;
           ++clear;
@@ -658,12 +670,14 @@ struct ThiessenArealAverage::State
     this->SortAlongCurve(changed);
     const std::size_t maxChunks = parallel::ThreadLimit();
     this->GrowScratch(maxChunks);
-    const std::size_t derived = VisitTilesOf(*this->Tessellation,
+    const std::size_t derived = VisitTilesOf(
+      *this->Tessellation,
       this->EngineIds(changed),
       maxChunks,
       std::min<std::int64_t>(this->ClipsPerThread(), LocalTilesPerThread),
       [this](std::size_t chunk, std::int32_t id, const Point2* tile, std::size_t size)
-      { this->Store(id, tile, size, this->Scratch[chunk]); });
+      { this->Store(id, tile, size, this->Scratch[chunk]); },
+      &this->LocalTiles);
     return { derived, clear };
   }
 };

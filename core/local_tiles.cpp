@@ -25,16 +25,30 @@ using namespace tiles_detail;
 class LocalFaces
 {
 public:
-  /// A table indexed by triangle (4 bytes each, cleared per derivation: far cheaper than the
-  /// cache misses of hashing, and it keeps the time proportional to the rings walked plus one
-  /// memset). Without wantCentres (face mates only) the faces get no centre (View is not used).
-  LocalFaces(const Tess& tess, bool wantCentres)
+  /// A table indexed by triangle (4 bytes each: far cheaper than the cache misses of hashing),
+  /// all -1 between derivations: the caller's (kept between calls, and set back entry by entry
+  /// when this is done, so that a call costs what its rings do) or, without one, a table made
+  /// for this derivation. Without wantCentres (face mates only) the faces get no centre (View is
+  /// not used).
+  LocalFaces(const Tess& tess, bool wantCentres, std::vector<std::int32_t>* table = nullptr)
     : T(tess)
     , WantCentres(wantCentres)
     , FreeOfCocircular(tess.KnownFreeOfCocircularTriangles())
-    , EntryOf(tess.Origin().size() / 3, -1)
+    , EntryOf(table ? *table : this->OwnTable)
   {
+    this->EntryOf.resize(tess.Origin().size() / 3, -1);
   }
+
+  ~LocalFaces()
+  {
+    for (const std::int32_t t : this->Written)
+    {
+      this->EntryOf[t] = -1;
+    }
+  }
+
+  LocalFaces(const LocalFaces&) = delete;
+  LocalFaces& operator=(const LocalFaces&) = delete;
 
   std::int32_t Label(std::int32_t t) const
   {
@@ -144,7 +158,7 @@ public:
     this->Entries.push_back(entry);
     for (const std::int32_t s : this->Cluster)
     {
-      this->EntryOf[s] = index;
+      this->Insert(s, index);
     }
   }
 
@@ -171,7 +185,7 @@ private:
       entry.Centre = Circumcentre(pts[a], pts[b], pts[c], error);
       entry.Inside = CentreInside(this->T, entry.Label, entry.Centre, error);
     }
-    this->EntryOf[t] = std::int32_t(this->Entries.size());
+    this->Insert(t, std::int32_t(this->Entries.size()));
     this->Entries.push_back(entry);
   }
 
@@ -186,12 +200,21 @@ private:
 
   /// Entry index of t; -1 when t is not listed, -2 while its cluster is being flooded.
   std::int32_t Find(std::int32_t t) const { return this->EntryOf[t]; }
-  void Insert(std::int32_t t, std::int32_t value) { this->EntryOf[t] = value; }
+  void Insert(std::int32_t t, std::int32_t value)
+  {
+    if (this->EntryOf[t] == -1)
+    {
+      this->Written.push_back(t);
+    }
+    this->EntryOf[t] = value;
+  }
 
   const Tess& T;
   const bool WantCentres;
   const bool FreeOfCocircular;
-  std::vector<std::int32_t> EntryOf; // per triangle: entry index, -1 unlisted, -2 pending
+  std::vector<std::int32_t> OwnTable; // (declared before EntryOf, which may refer to it)
+  std::vector<std::int32_t>& EntryOf; // per triangle: entry index, -1 unlisted, -2 pending
+  std::vector<std::int32_t> Written;  // the triangles whose entries are not -1
   std::vector<Entry> Entries;
   std::vector<std::int32_t> Points; // per entry, its face's point ids, ascending
   std::vector<std::int32_t> Cluster;
@@ -375,9 +398,10 @@ void VisitTilesOfRange(const Tess& tess,
   std::size_t begin,
   std::size_t end,
   std::size_t chunk,
-  const TileVisitor& visit)
+  const TileVisitor& visit,
+  std::vector<std::int32_t>* table)
 {
-  LocalFaces faces(tess, true);
+  LocalFaces faces(tess, true, table);
   std::vector<TileEdge> edges;
   std::vector<Point2> polygon;
   std::vector<std::int32_t> ring;
@@ -483,7 +507,8 @@ std::size_t VisitTilesOf(const DirichletTessellation& tessellation,
   const std::vector<std::int32_t>& ids,
   std::size_t maxChunks,
   std::int64_t minimumPerThread,
-  const TileVisitor& visit)
+  const TileVisitor& visit,
+  LocalTilesWorkspace* workspace)
 {
   if (!tessellation.IsTwoDimensional())
   {
@@ -506,9 +531,21 @@ std::size_t VisitTilesOf(const DirichletTessellation& tessellation,
     1, std::min(maxChunks, parallel::ThreadCount(std::int64_t(starts.size()), minimumPerThread)));
   const std::vector<std::int32_t> bounds =
     parallel::ChunkBounds(std::int32_t(starts.size()), chunks);
+  if (workspace && workspace->FaceTables.size() < chunks)
+  {
+    workspace->FaceTables.resize(chunks);
+  }
   parallel::RunChunks(chunks,
     [&](std::size_t k)
-    { VisitTilesOfRange(tessellation, starts, bounds[k], bounds[k + 1], k, visit); });
+    {
+      VisitTilesOfRange(tessellation,
+        starts,
+        bounds[k],
+        bounds[k + 1],
+        k,
+        visit,
+        workspace ? &workspace->FaceTables[k] : nullptr);
+    });
   return starts.size();
 }
 

@@ -265,6 +265,15 @@ TileSet ComputeTilesOf(const DirichletTessellation& tessellation,
 using TileVisitor = std::function<
   void(std::size_t chunk, std::int32_t id, const Point2* vertices, std::size_t count)>;
 
+/// What VisitTilesOf keeps between calls when given one: per chunk, a table of the triangles'
+/// faces, set back after each call entry by entry, so that a caller that visits a few tiles at
+/// each of many steps (the areal average's updates) does not clear a table of every triangle each
+/// time. Its contents are VisitTilesOf's business.
+struct LocalTilesWorkspace
+{
+  std::vector<std::vector<std::int32_t>> FaceTables;
+};
+
 /// ComputeTilesOf's tiles (the same, in the same order) handed to visit one by one as they are
 /// made, instead of collected: a caller that clips or measures each tile does so while it is in
 /// the cache, on the thread that made it. The ids are cut into contiguous chunks, at most
@@ -277,7 +286,8 @@ std::size_t VisitTilesOf(const DirichletTessellation& tessellation,
   const std::vector<std::int32_t>& ids,
   std::size_t maxChunks,
   std::int64_t minimumPerThread,
-  const TileVisitor& visit);
+  const TileVisitor& visit,
+  LocalTilesWorkspace* workspace = nullptr);
 
 /// The face mates of the given points only (same rules as ComputeTilesOf), without the tiles.
 FaceMateLists ComputeFaceMatesOf(const DirichletTessellation& tessellation,

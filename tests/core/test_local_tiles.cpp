@@ -238,7 +238,8 @@ TEST(LocalTiles, DegenerateSetsMatchTheFullDerivation)
 
 // VisitTilesOf hands over ComputeTilesOf's tiles, bit for bit and in order within each chunk,
 // each once, with chunks contiguous and in order, on 1, 2, 3 and 7 threads (lattice: every face
-// degenerate; collinear: no faces). The error rethrown is the first failing tile's.
+// degenerate; collinear: no faces), with and without a workspace kept between calls. The error
+// rethrown is the first failing tile's.
 TEST(LocalTiles, VisitedTilesAreComputeTilesOfsInChunks)
 {
   std::vector<Point2> line;
@@ -258,16 +259,33 @@ TEST(LocalTiles, VisitedTilesAreComputeTilesOfsInChunks)
     ask.resize(ask.size() * 2 / 3);
     ask.push_back(ask.front()); // a repeat, skipped
     const TileSet expected = ComputeTilesOf(t, ask);
-    for (const int threads : { 1, 2, 3, 7 })
+    // A workspace kept over the calls (as the areal average keeps one) must leave no trace: its
+    // tables are all unlisted after each call, and the next call gives the same tiles.
+    LocalTilesWorkspace workspace;
+    const auto allUnlisted = [&workspace]()
+    {
+      for (const std::vector<std::int32_t>& table : workspace.FaceTables)
+      {
+        if (std::any_of(table.begin(), table.end(), [](std::int32_t e) { return e != -1; }))
+        {
+          return false;
+        }
+      }
+      return true;
+    };
+    for (const int threads : { 1, 2, 3, 7, 3 })
     {
       const tessera_test::ThreadLimitOverride limit(threads);
       std::vector<std::vector<std::pair<std::int32_t, std::vector<Point2>>>> byChunk(threads);
-      const std::size_t visited = VisitTilesOf(t,
+      const std::size_t visited = VisitTilesOf(
+        t,
         ask,
         std::size_t(threads),
         100,
         [&](std::size_t chunk, std::int32_t id, const Point2* tile, std::size_t count)
-        { byChunk.at(chunk).emplace_back(id, std::vector<Point2>(tile, tile + count)); });
+        { byChunk.at(chunk).emplace_back(id, std::vector<Point2>(tile, tile + count)); },
+        threads == 2 ? nullptr : &workspace);
+      EXPECT_TRUE(allUnlisted());
       EXPECT_EQ(visited, expected.PointIds.size());
       std::size_t k = 0;
       std::size_t chunksUsed = 0;
@@ -304,7 +322,8 @@ TEST(LocalTiles, VisitedTilesAreComputeTilesOfsInChunks)
       const tessera_test::ThreadLimitOverride limit(threads);
       try
       {
-        VisitTilesOf(t,
+        VisitTilesOf(
+          t,
           ask,
           std::size_t(threads),
           100,
@@ -314,13 +333,15 @@ TEST(LocalTiles, VisitedTilesAreComputeTilesOfsInChunks)
             {
               throw std::runtime_error(std::to_string(id));
             }
-          });
+          },
+          &workspace);
         ADD_FAILURE() << "no error";
       }
       catch (const std::runtime_error& error)
       {
         EXPECT_EQ(std::string(error.what()), std::to_string(firstFailing));
       }
+      EXPECT_TRUE(allUnlisted()) << "after an error, " << threads << " threads";
     }
   }
 }
