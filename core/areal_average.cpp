@@ -25,6 +25,21 @@ namespace
 {
 
 constexpr std::int32_t NotInTessellation = -1;
+
+/// The index of the lowest set bit of a nonzero word.
+int LowestSetBit(std::uint64_t word)
+{
+#if defined(__GNUC__)
+  return __builtin_ctzll(word);
+#else
+  int bit = 0;
+  for (; (word & 1) == 0; word >>= 1)
+  {
+    ++bit;
+  }
+  return bit;
+#endif
+}
 // Tiles derived locally (some 0.5 us each: they miss the cache) per thread, at least; as for
 // ComputeTilesOf.
 constexpr std::int64_t LocalTilesPerThread = 250;
@@ -87,6 +102,7 @@ struct ThiessenArealAverage::State
   std::vector<std::int32_t> GaugeOfEngine;
   std::vector<std::int32_t> CurveOrder; // every gauge, along the Hilbert curve (updates only)
   std::vector<std::int32_t> CurveRank;  // per gauge, its position in CurveOrder
+  std::vector<std::uint64_t> CurveBits; // SortAlongCurve's bitmap of ranks, all zero between uses
 
   // Per gauge: the clipped area (m^2) of its tile, as last derived.
   std::vector<double> CachedArea;
@@ -279,17 +295,45 @@ struct ThiessenArealAverage::State
   }
 
   /// The same order for a few gauges, from their ranks along the curve (updates only): sorting
-  /// integers instead of computing Hilbert keys took a third of the time of listing changes.
-  void SortAlongCurve(std::vector<std::int32_t>& gauges) const
+  /// integers instead of computing Hilbert keys took a third of the time of listing changes. The
+  /// ranks are sorted by marking them in a bitmap of every rank and reading it back: for the 2400
+  /// changed tiles of a step among 100k gauges, some 1600 words read against a comparison sort's
+  /// mispredicted branches (0.08 ms). Short lists, and lists with a repeated gauge (which the
+  /// bitmap would merge), are sorted by comparison.
+  void SortAlongCurve(std::vector<std::int32_t>& gauges)
   {
-    for (std::int32_t& g : gauges)
+    std::vector<std::uint64_t>& bits = this->CurveBits; // all zero between calls
+    bits.resize(this->CurveOrder.size() / 64 + 1, 0);
+    bool repeated = false;
+    for (const std::int32_t g : gauges)
     {
-      g = this->CurveRank[g];
+      const std::int32_t rank = this->CurveRank[g];
+      const std::uint64_t mask = std::uint64_t(1) << (rank & 63);
+      repeated |= (bits[rank >> 6] & mask) != 0;
+      bits[rank >> 6] |= mask;
     }
-    std::sort(gauges.begin(), gauges.end());
-    for (std::int32_t& rank : gauges)
+    if (repeated || gauges.size() < 64)
     {
-      rank = this->CurveOrder[rank];
+      for (std::int32_t& g : gauges)
+      {
+        g = this->CurveRank[g];
+        bits[g >> 6] = 0;
+      }
+      std::sort(gauges.begin(), gauges.end());
+      for (std::int32_t& rank : gauges)
+      {
+        rank = this->CurveOrder[rank];
+      }
+      return;
+    }
+    std::size_t k = 0;
+    for (std::size_t w = 0; k < gauges.size(); ++w)
+    {
+      for (std::uint64_t word = bits[w]; word != 0; word &= word - 1)
+      {
+        gauges[k++] = this->CurveOrder[64 * w + LowestSetBit(word)];
+      }
+      bits[w] = 0;
     }
   }
 
