@@ -16,8 +16,11 @@
 // (Comparing each new polygon with the previous one to skip the clip did not pay: in the
 // synthetic benchmark 99% of them had changed.) Of those tiles, the ones provably still clear of
 // the catchment are not even derived: each gauge keeps a box holding its tile, grown by the box of
-// each removed neighbour (ArealStep's TilesFoundClear counts them; in the synthetic benchmark,
-// over half of them).
+// each removed neighbour (ArealStep's TilesFoundClear counts them), and a gauge whose tile is
+// clear of it stays in the tessellation, unused, when it stops reporting (RemovalsDeferred). A
+// gauge that reports again is inserted under its old engine id, so that the engine's ids, given
+// along a Hilbert curve at the first step, stay near each other in space; the per-step work on
+// the changed gauges' neighbours is done in those ids.
 //
 // Areas on the ellipsoid. The weight of a gauge is the ellipsoidal area of its tile inside the
 // catchment over the catchment's ellipsoidal area. Two ways, chosen by AreaMethod:
