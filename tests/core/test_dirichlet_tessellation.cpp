@@ -760,6 +760,18 @@ Canonical WithoutIds(const std::vector<Point2>& points, const std::vector<std::i
   return MakeCanonical(Tess(UnitWindow(), without));
 }
 
+// Removes one of the candidates, at random, and records it in removed.
+void RemoveOneOf(Tess& t,
+  const std::vector<std::int32_t>& candidates,
+  std::mt19937& rng,
+  std::vector<std::int32_t>& removed)
+{
+  const std::int32_t id =
+    candidates[std::uniform_int_distribution<std::size_t>(0, candidates.size() - 1)(rng)];
+  t.Remove(id);
+  removed.push_back(id);
+}
+
 // Point sets whose hulls are degenerate in the ways hull removal must handle.
 std::vector<std::vector<Point2>> HullTestSets()
 {
@@ -916,19 +928,9 @@ TEST(DirichletTessellation, InsertThenRemoveEqualsNeverInsertedWhileStreaming)
           std::vector<std::int32_t> candidates = HullVertices(t);
           if (action == 1 || candidates.empty())
           {
-            candidates.clear();
-            for (std::int32_t id = 0; id < std::int32_t(t.PointCount()); ++id)
-            {
-              if (t.Status(id) == PointStatus::Accepted)
-              {
-                candidates.push_back(id);
-              }
-            }
+            candidates = tessera_test::AcceptedIds(t);
           }
-          const std::int32_t id =
-            candidates[std::uniform_int_distribution<std::size_t>(0, candidates.size() - 1)(rng)];
-          t.Remove(id);
-          removed.push_back(id);
+          RemoveOneOf(t, candidates, rng, removed);
         }
         if (t.IsTwoDimensional())
         {
@@ -978,18 +980,7 @@ TEST(DirichletTessellation, ReinsertingRemovedPointsEqualsNeverRemoved)
         }
         else
         {
-          std::vector<std::int32_t> accepted;
-          for (std::int32_t id = 0; id < std::int32_t(points.size()); ++id)
-          {
-            if (t.Status(id) == PointStatus::Accepted)
-            {
-              accepted.push_back(id);
-            }
-          }
-          const std::int32_t id =
-            accepted[std::uniform_int_distribution<std::size_t>(0, accepted.size() - 1)(rng)];
-          t.Remove(id);
-          removed.push_back(id);
+          RemoveOneOf(t, tessera_test::AcceptedIds(t), rng, removed);
         }
         ASSERT_EQ(t.PointCount(), points.size());
         std::vector<std::int32_t> sorted = removed;
