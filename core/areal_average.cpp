@@ -18,6 +18,7 @@
 #include <map>
 #include <numeric>
 #include <sstream>
+#include <stdexcept>
 
 namespace tessera
 {
@@ -129,6 +130,12 @@ struct ThiessenArealAverage::State
 
   std::vector<Point2> GaugesXY;
   std::vector<std::int32_t> FirstAtPlace; // per gauge: smallest gauge id at its coordinates
+  std::vector<char> PlaceShared;          // per gauge: others share its place (empty when none do)
+
+  bool SharesPlace(std::int32_t g) const
+  {
+    return !this->PlaceShared.empty() && this->PlaceShared[g];
+  }
   std::vector<std::pair<std::int32_t, std::int32_t>> Duplicates;
 
   std::unique_ptr<Catchment> Region;
@@ -428,11 +435,16 @@ struct ThiessenArealAverage::State
   ///     +---------+
   ///     |  a   b  |    c     x      x     the tiles of c and x change only outside the
   ///     +---------+         d             catchment when x goes: nothing used changes
+  ///
+  /// A gauge that shares its place with others is never deferred: another of them may report
+  /// while it stays in the tessellation, and two gauges at one place cannot both be vertices (an
+  /// exact copy would be the engine's duplicate, without a tile of its own).
   std::size_t DeferClearRemovals(std::vector<std::int32_t>& removed)
   {
     const auto kept = std::stable_partition(removed.begin(),
       removed.end(),
-      [this](std::int32_t g) { return !this->ClearOfCatchment(this->BoundsOfGauge(g)); });
+      [this](std::int32_t g)
+      { return this->SharesPlace(g) || !this->ClearOfCatchment(this->BoundsOfGauge(g)); });
     for (auto it = kept; it != removed.end(); ++it)
     {
       this->Deferred[this->EngineOfGauge[*it]] = 1;
@@ -577,6 +589,12 @@ struct ThiessenArealAverage::State
       else
       {
         id = t.Insert(this->GaugesXY[g], this->PresentNear(g));
+      }
+      if (t.Status(id) != PointStatus::Accepted)
+      {
+        // Never: gauges lie inside the window, and one gauge per place is in the tessellation.
+        throw std::logic_error(GaugeLabel(static_cast<std::size_t>(g), this->Settings.GaugeNames) +
+          " is not a vertex of the tessellation after its insertion");
       }
       this->EngineOfGauge[g] = id;
       this->Used[g] = 1;
@@ -883,6 +901,15 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     if (s.FirstAtPlace[g] != static_cast<std::int32_t>(g))
     {
       s.Duplicates.emplace_back(static_cast<std::int32_t>(g), s.FirstAtPlace[g]);
+    }
+  }
+  if (!s.Duplicates.empty())
+  {
+    s.PlaceShared.assign(gaugesLonLat.size(), 0);
+    for (const auto& [copy, first] : s.Duplicates)
+    {
+      s.PlaceShared[copy] = 1;
+      s.PlaceShared[first] = 1;
     }
   }
 

@@ -619,6 +619,94 @@ TEST(ArealAverage, ADeferredRemovalIsMadeOnceRemovalsNextToItBringItsTileToTheCa
   EXPECT_GE(bandSize, 10);
 }
 
+// Gauges at one place are never deferred. The grid of the test above, with gauge C an exact copy
+// of F (one place: the first of them that reports is used). Case 1: F stops while C starts; had
+// F's removal been deferred, C would have been inserted onto F's vertex, as the engine's
+// duplicate without a tile (a crash, or C weighed by a stale area). Case 2: F (smaller id) is
+// inserted again while C's removal would be deferred, which made F take over C's vertex, and C
+// inherit it, still flagged deferred, when F went: weights that summed to 0.977. Every step
+// equals a rebuild.
+TEST(ArealAverage, GaugesSharingAPlaceAreNeverDeferred)
+{
+  std::mt19937_64 random(41);
+  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
+  std::vector<Point2> gauges;
+  for (int i = 0; i <= 20; ++i)
+  {
+    for (int j = 0; j <= 20; ++j)
+    {
+      gauges.push_back({ -110.0 + 0.5 * i + jitter(random), 35.0 + 0.5 * j + jitter(random) });
+    }
+  }
+  const Square catchment(-106.0, 39.0, -104.0, 41.0);
+  std::size_t far = 0;
+  const auto distance = [&](std::size_t k)
+  { return std::hypot(gauges[k].x + 103.0, gauges[k].y - 40.0); };
+  for (std::size_t g = 1; g < gauges.size(); ++g)
+  {
+    far = distance(g) < distance(far) ? g : far;
+  }
+  const std::size_t copy = gauges.size();
+  gauges.push_back(gauges[far]);
+  const auto inBand = [&](const Point2& p)
+  { return p.x > -105.3 && p.x < gauges[far].x - 0.2 && std::abs(p.y - 40.0) < 1.8; };
+  const std::size_t n = gauges.size();
+  // Who reports, step by step: case 1, then case 2.
+  std::vector<std::vector<char>> cases[2];
+  std::vector<char> on(n, 1);
+  on[copy] = 0;
+  cases[0].push_back(on); // F in, C out
+  on[far] = 0;
+  on[copy] = 1;
+  cases[0].push_back(on); // F stops, C starts
+  on.assign(n, 1);
+  on[copy] = 0;
+  cases[1].push_back(on); // F in (its engine id the smaller)
+  on[far] = 0;
+  for (std::size_t g = 0; g < n; ++g)
+  {
+    on[g] = on[g] && !(gauges[g].x < -106.5);
+  }
+  cases[1].push_back(on); // F and a third of the gauges stop: every tile derived, F removed
+  on.assign(n, 1);
+  on[far] = 0;
+  cases[1].push_back(on); // C in (a new, larger engine id)
+  on[copy] = 0;
+  on[far] = 1;
+  cases[1].push_back(on); // C stops (not deferred), F reports again under its old id
+  for (const bool copyReports : { false, true })
+  {
+    on.assign(n, 1);
+    on[copy] = copyReports;
+    on[far] = 0;
+    for (std::size_t g = 0; g < n; ++g)
+    {
+      on[g] = on[g] && !inBand(gauges[g]);
+    }
+    cases[1].push_back(on); // F and the band stop; then C reports too
+  }
+  for (int c = 0; c < 2; ++c)
+  {
+    ArealAverageSettings rebuild;
+    rebuild.Incremental = false;
+    ThiessenArealAverage a(gauges, catchment.Offsets, catchment.Ring);
+    ThiessenArealAverage b(gauges, catchment.Offsets, catchment.Ring, rebuild);
+    ASSERT_EQ(a.DuplicateGauges().size(), 1u);
+    for (std::size_t t = 0; t < cases[c].size(); ++t)
+    {
+      std::vector<double> values(n);
+      for (std::size_t g = 0; g < n; ++g)
+      {
+        values[g] = cases[c][t][g] ? double(1 + g % 5) : NaN;
+      }
+      const ArealStep x = a.Step(values), y = b.Step(values);
+      ExpectSameStep(x, y, static_cast<int>(10 * c + t));
+      EXPECT_NEAR(std::accumulate(x.Weights.begin(), x.Weights.end(), 0.0), 1.0, 1e-12)
+        << "case " << c << ", step " << t;
+    }
+  }
+}
+
 TEST(ArealAverage, AnUpdateThatPassesThroughCollinearGaugesEqualsRebuilds)
 {
   // Step 1: gauges 0-2 on one parallel and gauge 3 off it. Step 2 removes gauge 3 (the rest are
