@@ -319,7 +319,7 @@ std::int32_t DirichletTessellation::Insert(const Point2& p, std::int32_t nearId)
   this->EnableStatusBytes();
   this->Coordinates.push_back(p);
   this->StatusBytes.push_back(std::uint8_t(PointStatus::Accepted));
-  if (!this->VertexEdges.empty())
+  if (this->VertexEdgesOn)
   {
     this->VertexEdges.push_back(-1);
   }
@@ -996,9 +996,10 @@ void DirichletTessellation::RecomputeStatusBytes()
 
 void DirichletTessellation::EnableVertexEdges()
 {
-  if (this->VertexEdges.empty())
+  if (!this->VertexEdgesOn)
   {
     this->RecomputeVertexEdges();
+    this->VertexEdgesOn = true; // (from the first point on, when there is none yet)
   }
 }
 

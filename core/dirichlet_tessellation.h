@@ -287,6 +287,7 @@ private:
   /// Per id, one half-edge leaving that vertex (-1 for ids that are not vertices); empty until
   /// the first Remove, then kept up to date wherever a triangle's vertices are written.
   std::vector<std::int32_t> VertexEdges;
+  bool VertexEdgesOn = false; ///< VertexEdges kept (it is empty while there are no points)
   Region Serial;
   RemovalScratch Removal;
   const std::vector<std::int32_t>* BuildOrder = nullptr;

@@ -1091,9 +1091,21 @@ TEST(DirichletTessellation, EdgeLeavingNamesAnEdgeOfEveryVertexOnly)
   std::vector<Point2> points = UniformPoints(200, 17);
   points.push_back(points[5]);    // 200 duplicates 5
   points.push_back({ 3.0, 0.5 }); // 201 outside
-  for (const bool tracked : { false, true })
+  // Untracked; tracked from a batch build on; and tracked from the empty tessellation on, the
+  // points streamed in (the table starts with the first point).
+  for (const int mode : { 0, 1, 2 })
   {
-    Tess t(UnitWindow(), points);
+    const bool tracked = mode > 0;
+    Tess t = mode < 2 ? Tess(UnitWindow(), points) : Tess(UnitWindow());
+    if (mode == 2)
+    {
+      t.TrackVertexEdges();
+      for (const Point2& p : points)
+      {
+        t.Insert(p);
+      }
+      EXPECT_TRUE(t.TracksVertexEdges()); // (it was not, until the first removal)
+    }
     if (tracked)
     {
       t.TrackVertexEdges();
