@@ -48,6 +48,41 @@ std::vector<Point2> UniformGauges(std::size_t n,
   return gauges;
 }
 
+// The deferral tests' gauges: a jittered 0.5-degree grid, a 2-degree catchment, and the gauge F
+// (Far) nearest to a point 1 degree east of it; Band holds a strip from inside the catchment's
+// east side to F.
+struct DeferralGrid
+{
+  std::vector<Point2> Gauges;
+  Square Catchment{ -106.0, 39.0, -104.0, 41.0 };
+  std::size_t Far = 0;
+
+  DeferralGrid()
+  {
+    std::mt19937_64 random(41);
+    std::uniform_real_distribution<double> jitter(-0.1, 0.1);
+    for (int i = 0; i <= 20; ++i)
+    {
+      for (int j = 0; j <= 20; ++j)
+      {
+        this->Gauges.push_back(
+          { -110.0 + 0.5 * i + jitter(random), 35.0 + 0.5 * j + jitter(random) });
+      }
+    }
+    const auto distance = [this](std::size_t k)
+    { return std::hypot(this->Gauges[k].x + 103.0, this->Gauges[k].y - 40.0); };
+    for (std::size_t g = 1; g < this->Gauges.size(); ++g)
+    {
+      this->Far = distance(g) < distance(this->Far) ? g : this->Far;
+    }
+  }
+
+  bool InBand(const Point2& p) const
+  {
+    return p.x > -105.3 && p.x < this->Gauges[this->Far].x - 0.2 && std::abs(p.y - 40.0) < 1.8;
+  }
+};
+
 double Sum(const std::vector<double>& v)
 {
   return std::accumulate(v.begin(), v.end(), 0.0);
@@ -546,26 +581,11 @@ TEST(ArealAverage, ADeferredRemovalIsMadeOnceRemovalsNextToItBringItsTileToTheCa
   //          |      #####|######  F        # band stopped at step 2
   //          |      #####|######
   //          +-----------+
-  std::mt19937_64 random(41);
-  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
-  std::vector<Point2> gauges;
-  for (int i = 0; i <= 20; ++i)
-  {
-    for (int j = 0; j <= 20; ++j)
-    {
-      gauges.push_back({ -110.0 + 0.5 * i + jitter(random), 35.0 + 0.5 * j + jitter(random) });
-    }
-  }
-  const Square catchment(-106.0, 39.0, -104.0, 41.0);
-  std::size_t far = 0;
-  const auto distance = [&](std::size_t k)
-  { return std::hypot(gauges[k].x + 103.0, gauges[k].y - 40.0); };
-  for (std::size_t g = 1; g < gauges.size(); ++g)
-  {
-    far = distance(g) < distance(far) ? g : far;
-  }
-  const auto inBand = [&](const Point2& p)
-  { return p.x > -105.3 && p.x < gauges[far].x - 0.2 && std::abs(p.y - 40.0) < 1.8; };
+  const DeferralGrid grid;
+  const std::vector<Point2>& gauges = grid.Gauges;
+  const Square& catchment = grid.Catchment;
+  const std::size_t far = grid.Far;
+  const auto inBand = [&grid](const Point2& p) { return grid.InBand(p); };
   ArealAverageSettings rebuild;
   rebuild.Incremental = false;
   ThiessenArealAverage a(gauges, catchment.Offsets, catchment.Ring);
@@ -628,28 +648,13 @@ TEST(ArealAverage, ADeferredRemovalIsMadeOnceRemovalsNextToItBringItsTileToTheCa
 // equals a rebuild.
 TEST(ArealAverage, GaugesSharingAPlaceAreNeverDeferred)
 {
-  std::mt19937_64 random(41);
-  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
-  std::vector<Point2> gauges;
-  for (int i = 0; i <= 20; ++i)
-  {
-    for (int j = 0; j <= 20; ++j)
-    {
-      gauges.push_back({ -110.0 + 0.5 * i + jitter(random), 35.0 + 0.5 * j + jitter(random) });
-    }
-  }
-  const Square catchment(-106.0, 39.0, -104.0, 41.0);
-  std::size_t far = 0;
-  const auto distance = [&](std::size_t k)
-  { return std::hypot(gauges[k].x + 103.0, gauges[k].y - 40.0); };
-  for (std::size_t g = 1; g < gauges.size(); ++g)
-  {
-    far = distance(g) < distance(far) ? g : far;
-  }
-  const std::size_t copy = gauges.size();
-  gauges.push_back(gauges[far]);
-  const auto inBand = [&](const Point2& p)
-  { return p.x > -105.3 && p.x < gauges[far].x - 0.2 && std::abs(p.y - 40.0) < 1.8; };
+  DeferralGrid grid;
+  const std::size_t far = grid.Far;
+  const std::size_t copy = grid.Gauges.size();
+  grid.Gauges.push_back(grid.Gauges[far]);
+  const std::vector<Point2>& gauges = grid.Gauges;
+  const Square& catchment = grid.Catchment;
+  const auto inBand = [&grid](const Point2& p) { return grid.InBand(p); };
   const std::size_t n = gauges.size();
   // Who reports, step by step: case 1, then case 2.
   std::vector<std::vector<char>> cases[2];
