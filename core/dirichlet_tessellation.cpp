@@ -263,6 +263,7 @@ void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids, const Box2
   {
     this->RecomputeStatusBytes();
   }
+  this->ScatteredTriangles = 0; // made along the build's spatial order
 }
 
 // Whether two adjacent triangles around a new point are exactly co-circular; start is a half-edge
@@ -621,6 +622,7 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Region& regi
 
 std::int32_t DirichletTessellation::NewTriangle()
 {
+  ++this->ScatteredTriangles;
   if (!this->FreeTriangles.empty())
   {
     const std::int32_t t = this->FreeTriangles.back();

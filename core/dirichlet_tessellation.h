@@ -156,6 +156,15 @@ public:
   /// vertex in O(1)): 69 bytes per point in streaming use.
   std::size_t StructureBytes() const;
 
+  /// Triangles made (new or from freed slots) since the build or the last
+  /// OrderTrianglesByVertex: each may lie anywhere in memory, away from its neighbours.
+  std::size_t ScatteredTriangleCount() const { return this->ScatteredTriangles; }
+  /// Renumbers the triangles in the order of their smallest vertex id and drops freed slots, so
+  /// that, where ids were given in a spatial order, triangles near in space are near in memory
+  /// again after many updates (triangle_order.cpp). The triangulation and every derived result
+  /// stay the same; half-edge numbers held from before are void. O(triangles + ids).
+  void OrderTrianglesByVertex();
+
 private:
   enum class Location
   {
@@ -296,6 +305,18 @@ private:
   /// Between BeginTrackedChange and EndTrackedChange, when the tessellation was known free of
   /// co-circular triangles: the change tests what it makes (star tests, removal's new triangles).
   bool TrackingCocircular = false;
+  std::size_t ScatteredTriangles = 0; ///< see ScatteredTriangleCount
+  /// OrderTrianglesByVertex's arrays, kept between calls (the half-edge arrays it fills are
+  /// swapped with the structure's): fresh pages cost more than the ordering itself.
+  struct OrderScratch
+  {
+    std::vector<std::uint32_t> Keys;
+    std::vector<std::int32_t> First;
+    std::vector<std::int32_t> NewIndex;
+    HalfEdgeArray Origins;
+    HalfEdgeArray Twins;
+  };
+  OrderScratch Ordering;
 };
 
 } // namespace tessera

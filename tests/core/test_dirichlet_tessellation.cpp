@@ -997,6 +997,99 @@ TEST(DirichletTessellation, ReinsertingRemovedPointsEqualsNeverRemoved)
   }
 }
 
+// OrderTrianglesByVertex renumbers triangles only: in a stream of removals and reinsertions over
+// degenerate sets, lattices and co-circular points, ordered at random moments, the structure
+// stays valid, the tessellation (faces, contiguities, tiles bit for bit) is the one before the
+// ordering and the batch build's, no slot is left free, triangles come in the order of their
+// smallest vertex id, every vertex's half-edge leaves it, and the stream goes on correctly.
+TEST(DirichletTessellation, OrderingTrianglesKeepsTheTessellation)
+{
+  const std::vector<std::vector<Point2>> sets = HullTestSets();
+  std::mt19937 rng(47);
+  std::size_t orderings = 0;
+  for (std::size_t s = 0; s < sets.size(); ++s)
+  {
+    const std::vector<Point2>& points = sets[s];
+    Tess t(UnitWindow());
+    for (const Point2& p : points)
+    {
+      t.Insert(p);
+    }
+    ASSERT_GT(t.ScatteredTriangleCount(), 0u);
+    std::vector<std::int32_t> removed;
+    for (int step = 0; step < 2 * int(points.size()); ++step)
+    {
+      if (!removed.empty() && (t.AcceptedCount() <= 4 || std::bernoulli_distribution(0.45)(rng)))
+      {
+        const std::size_t k =
+          std::uniform_int_distribution<std::size_t>(0, removed.size() - 1)(rng);
+        t.Reinsert(removed[k]);
+        removed.erase(removed.begin() + std::ptrdiff_t(k));
+      }
+      else
+      {
+        RemoveOneOf(t, tessera_test::AcceptedIds(t), rng, removed);
+      }
+      if (!t.IsTwoDimensional() || step % 3 != 0)
+      {
+        continue;
+      }
+      const Canonical before = MakeCanonical(t);
+      const bool knownFree = t.KnownFreeOfCocircularTriangles();
+      t.OrderTrianglesByVertex();
+      ++orderings;
+      EXPECT_EQ(t.ScatteredTriangleCount(), 0u);
+      EXPECT_EQ(t.KnownFreeOfCocircularTriangles(), knownFree);
+      const std::size_t real = CheckStructure(t);
+      const std::size_t triangles = t.Origin().size() / 3;
+      EXPECT_EQ(triangles, 2 * t.AcceptedCount() - 2) << "a slot stayed free";
+      EXPECT_EQ(real + HullSize(t), triangles);
+      std::uint32_t lastKey = 0;
+      for (std::size_t tri = 0; tri < triangles; ++tri)
+      {
+        const std::int32_t* v = t.Origin().data() + 3 * tri;
+        std::uint32_t key = UINT32_MAX;
+        for (int k = 0; k < 3; ++k)
+        {
+          if (v[k] >= 0)
+          {
+            key = std::min(key, std::uint32_t(v[k]));
+          }
+        }
+        ASSERT_GE(key, lastKey) << "triangle " << tri;
+        lastKey = key;
+      }
+      for (std::int32_t id = 0; id < std::int32_t(t.PointCount()); ++id)
+      {
+        const std::int32_t e = t.EdgeLeaving(id);
+        if (t.Status(id) == PointStatus::Accepted)
+        {
+          ASSERT_GE(e, 0) << "point " << id;
+          EXPECT_EQ(t.Origin()[e], id);
+        }
+        else
+        {
+          EXPECT_EQ(e, -1) << "point " << id;
+        }
+      }
+      ASSERT_TRUE(MakeCanonical(t) == before) << "set " << s << " step " << step;
+      ASSERT_TRUE(before == WithoutIds(points, removed)) << "set " << s << " step " << step;
+    }
+    // The stream goes on from the ordered arrays.
+    for (const std::int32_t id : removed)
+    {
+      t.Reinsert(id);
+    }
+    removed.clear();
+    if (t.IsTwoDimensional())
+    {
+      CheckStructure(t);
+    }
+    ASSERT_TRUE(MakeCanonical(t) == WithoutIds(points, removed)) << "set " << s;
+  }
+  EXPECT_GT(orderings, 100u);
+}
+
 // Reinsert gives back each kind of status: a point outside the window is rejected again, and a
 // copy is a duplicate again or, having the smaller id, takes the accepted copy's place. Removing
 // everything listed and reinserting it in another order ends where the batch build is.

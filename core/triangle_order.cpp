@@ -1,0 +1,103 @@
+// DirichletTessellation::OrderTrianglesByVertex: renumbers the triangles so that those near in
+// space are near in memory again after many removals and insertions.
+//
+// Why. A batch build creates triangles along its spatial insertion order, so a vertex's ring and
+// its neighbours' rings lie in a few cache lines. Updates spoil that: Remove frees two slots of
+// each star, and Insert takes its two new triangles from the free list, from wherever the last
+// removal was. After some 40,000 insertions among 100,000 triangles (the areal average's
+// synthetic stream) the tiles derived around the changed points took 35-40% longer than just
+// after the build, each ring step a cache miss.
+//
+// How. Triangles are sorted by their smallest vertex id (a counting sort: O(triangles + ids)),
+// keeping their old order within one key; ghost triangles go by their smallest real vertex, free
+// slots are dropped. Where ids were given in a spatial order (a batch build's input sorted along
+// a curve, or the areal average's gauges, numbered along a Hilbert curve), that is a spatial
+// order. Half-edges keep their place within their triangle, so only indices change:
+//
+//     old t:  [a b c | twins x y z]   ->   new u = NewIndex[t]:  [a b c | twins x' y' z']
+//             x' = 3 * NewIndex[x / 3] + x % 3  (likewise y, z, vertex edges, the walk's start)
+//
+// The triangulation itself is unchanged: every derived result is the same, bit for bit.
+#include "dirichlet_tessellation.h"
+
+#include <algorithm>
+#include <cstdint>
+
+namespace tessera
+{
+
+void DirichletTessellation::OrderTrianglesByVertex()
+{
+  this->ScatteredTriangles = 0;
+  if (this->Origins.empty())
+  {
+    return;
+  }
+  const std::int32_t triangleCount = std::int32_t(this->Origins.size() / 3);
+  const std::int32_t* org = this->Origins.data();
+  const std::int32_t idCount = std::int32_t(this->Coordinates.size());
+  OrderScratch& scratch = this->Ordering;
+  // Key of triangle t: its smallest real vertex id. As unsigned numbers Ghost (-1) and Free (-2)
+  // are the largest, so the smallest of the three is real except in a free slot (all Free), which
+  // gets the key idCount and is dropped. Branch-free: which vertex is smallest is a coin toss.
+  std::vector<std::uint32_t>& keys = scratch.Keys;
+  keys.resize(std::size_t(triangleCount));
+  std::vector<std::int32_t>& first = scratch.First;
+  first.assign(std::size_t(idCount) + 2, 0);
+  for (std::int32_t t = 0; t < triangleCount; ++t)
+  {
+    const std::uint32_t smallest = std::min(
+      { std::uint32_t(org[3 * t]), std::uint32_t(org[3 * t + 1]), std::uint32_t(org[3 * t + 2]) });
+    const std::uint32_t key = std::min(smallest, std::uint32_t(idCount));
+    keys[t] = key;
+    ++first[key + 1];
+  }
+  for (std::size_t k = 1; k < first.size(); ++k)
+  {
+    first[k] += first[k - 1];
+  }
+  const std::int32_t kept = first[std::size_t(idCount)];
+  std::vector<std::int32_t>& newIndex = scratch.NewIndex;
+  newIndex.resize(std::size_t(triangleCount));
+  for (std::int32_t t = 0; t < triangleCount; ++t)
+  {
+    newIndex[t] = first[keys[t]]++; // a free slot's index (>= kept) is never read
+  }
+  const auto newEdge = [&newIndex](std::int32_t e) { return 3 * newIndex[e / 3] + e % 3; };
+  // The capacity kept: insertions after the ordering append (no slot is free), and a fresh
+  // array of exactly this size would be copied whole by the first of them.
+  HalfEdgeArray& origins = scratch.Origins;
+  HalfEdgeArray& twins = scratch.Twins;
+  origins.reserve(this->Origins.capacity());
+  twins.reserve(this->Twins.capacity());
+  origins.resize(3 * std::size_t(kept));
+  twins.resize(3 * std::size_t(kept));
+  for (std::int32_t t = 0; t < triangleCount; ++t)
+  {
+    const std::int32_t u = newIndex[t];
+    if (u >= kept)
+    {
+      continue; // a free slot
+    }
+    for (std::int32_t k = 0; k < 3; ++k)
+    {
+      origins[3 * u + k] = org[3 * t + k];
+      twins[3 * u + k] = newEdge(this->Twins[3 * t + k]);
+    }
+  }
+  for (std::int32_t& e : this->VertexEdges)
+  {
+    if (e >= 0)
+    {
+      e = newEdge(e);
+    }
+  }
+  const std::int32_t last = newIndex[this->Serial.LastTriangle];
+  this->Serial.LastTriangle = last < kept ? last : 0;
+  this->Serial.NextSlot = this->Serial.EndSlot = 0;
+  this->Origins.swap(origins);
+  this->Twins.swap(twins);
+  this->FreeTriangles.clear();
+}
+
+} // namespace tessera
