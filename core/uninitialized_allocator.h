@@ -2,7 +2,12 @@
 // A std::allocator whose resize() leaves new elements of trivially constructible types
 // uninitialised, so that the pass that writes them first (often on the cores) is also the one that
 // first touches their pages: a serial zero fill of a large array costs a page fault per 4 KiB.
+// Arrays of LargePageBytes or more come on transparent huge pages (large_pages.h), a page fault
+// per 2 MiB.
 
+#include "large_pages.h"
+
+#include <cstdlib>
 #include <memory>
 #include <new>
 #include <utility>
@@ -12,7 +17,7 @@ namespace tessera
 {
 
 /// std::allocator, except that resize() leaves new elements uninitialised (default-initialised:
-/// nothing is written for int32, uint64 and the like).
+/// nothing is written for int32, uint64 and the like) and large arrays are on huge pages.
 template<class T>
 struct UninitializedAllocator : std::allocator<T>
 {
@@ -26,6 +31,15 @@ struct UninitializedAllocator : std::allocator<T>
   UninitializedAllocator(const UninitializedAllocator<U>&) noexcept
   {
   }
+  T* allocate(std::size_t n)
+  {
+    if (n > std::size_t(-1) / sizeof(T))
+    {
+      throw std::bad_array_new_length();
+    }
+    return static_cast<T*>(AllocateLarge(n * sizeof(T)));
+  }
+  void deallocate(T* p, std::size_t) noexcept { std::free(p); }
   template<class U>
   void construct(U* p) noexcept
   {

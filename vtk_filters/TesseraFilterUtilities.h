@@ -7,6 +7,7 @@
 #include "vtkType.h"
 
 #include "geometry.h"
+#include "large_pages.h"
 #include "window.h"
 
 #include <cstddef>
@@ -104,6 +105,26 @@ RenamedArrays AddUnusedPointIds(vtkDataObject* data,
 /// `duplicates` exact copies), saying they were not `verb` ("used", "triangulated") and where their
 /// ids are; empty when every point was used.
 std::string UnusedPointsWarning(std::size_t rejected, std::size_t duplicates, const char* verb);
+
+/// Sizes array to `tuples` tuples of `components` values, left unwritten. A large array (the
+/// filters' outputs at 10^5 points and more) is allocated on huge pages (core large_pages.h: a
+/// page fault per 2 MiB instead of per 4 KiB, which on a virtual machine halved the tiles
+/// filter's time at 10^5 points) and handed to the array, which frees it.
+template<class ArrayT>
+void AllocateValues(ArrayT* array, vtkIdType tuples, int components = 1)
+{
+  using Value = typename ArrayT::ValueType;
+  array->SetNumberOfComponents(components);
+  const vtkIdType values = tuples * components;
+  const std::size_t bytes = static_cast<std::size_t>(values) * sizeof(Value);
+  if (bytes < tessera::LargePageBytes)
+  {
+    array->SetNumberOfTuples(tuples);
+    return;
+  }
+  array->SetArray(
+    static_cast<Value*>(tessera::AllocateLarge(bytes)), values, 0, ArrayT::VTK_DATA_ARRAY_FREE);
+}
 
 } // namespace tessera_vtk
 

@@ -27,7 +27,7 @@ namespace
 vtkNew<vtkTypeInt32Array> Int32Array(std::size_t size)
 {
   vtkNew<vtkTypeInt32Array> array;
-  array->SetNumberOfValues(static_cast<vtkIdType>(size));
+  tessera_vtk::AllocateValues(array.Get(), static_cast<vtkIdType>(size));
   return array;
 }
 

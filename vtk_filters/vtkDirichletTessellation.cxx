@@ -132,16 +132,15 @@ public:
   {
     const vtkIdType idCount = static_cast<vtkIdType>(tiles.VertexIds.size());
     CheckFitsInt32(idCount, "tile vertices");
-    this->Coordinates->SetNumberOfComponents(3);
-    this->Coordinates->SetNumberOfTuples(this->VertexCount);
-    this->Offsets->SetNumberOfValues(this->TileCount + 1);
-    this->Connectivity->SetNumberOfValues(idCount);
+    tessera_vtk::AllocateValues(this->Coordinates.Get(), this->VertexCount, 3);
+    tessera_vtk::AllocateValues(this->Offsets.Get(), this->TileCount + 1);
+    tessera_vtk::AllocateValues(this->Connectivity.Get(), idCount);
     this->PointIds->SetName(OwnArrayNames[0]);
     this->Areas->SetName(OwnArrayNames[1]);
     this->NeighborCounts->SetName(OwnArrayNames[2]);
-    this->PointIds->SetNumberOfValues(this->TileCount);
-    this->Areas->SetNumberOfValues(this->TileCount);
-    this->NeighborCounts->SetNumberOfValues(this->TileCount);
+    tessera_vtk::AllocateValues(this->PointIds.Get(), this->TileCount);
+    tessera_vtk::AllocateValues(this->Areas.Get(), this->TileCount);
+    tessera_vtk::AllocateValues(this->NeighborCounts.Get(), this->TileCount);
     // Where each tile's ids go. The order jumps about the core's (spatial) order: the offsets
     // are requested a few tiles ahead.
     std::int32_t* offsets = this->Offsets->GetPointer(0);
@@ -291,10 +290,10 @@ public:
     }
     output->GetPointData()->PassData(input->GetPointData());
     CheckFitsInt32(2 * this->PairCount, "contiguities");
-    this->Offsets->SetNumberOfValues(this->PairCount + 1);
-    this->Connectivity->SetNumberOfValues(2 * this->PairCount);
+    tessera_vtk::AllocateValues(this->Offsets.Get(), this->PairCount + 1);
+    tessera_vtk::AllocateValues(this->Connectivity.Get(), 2 * this->PairCount);
     this->Kinds->SetName("Kind");
-    this->Kinds->SetNumberOfValues(this->PairCount);
+    tessera_vtk::AllocateValues(this->Kinds.Get(), this->PairCount);
   }
 
   void Count(int half)
