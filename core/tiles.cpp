@@ -701,8 +701,8 @@ struct TessellationDual::MeshPart
   TileMesh* Result = nullptr;
   std::int64_t Next = 0; ///< the result's index of this chunk's next tile
   tiles_detail::ChunkArray<std::int32_t> VertexIds;
-  std::vector<Point2>* Crossings = nullptr;
-  std::vector<Point2> OwnCrossings;
+  UninitializedVector<Point2>* Crossings = nullptr;
+  UninitializedVector<Point2> OwnCrossings;
   std::int32_t CornerBase = 0; ///< vertex id of window corner 0
   /// The window corners by coordinates (x, y, index), for a binary search; one list for all parts.
   const std::vector<std::tuple<double, double, std::int32_t>>* Corners = nullptr;
@@ -751,7 +751,7 @@ TileMeshAndGraph TessellationDual::TileMeshAndContiguities(bool withContiguities
 // Numbers the representatives whose centre is inside the window in the order of the triangle
 // arrays (Vertex), and lists their centres in that order: a count per chunk of triangles, then
 // each chunk numbers and copies its own.
-void TessellationDual::NumberFaceVertices(std::vector<Point2>& vertices)
+void TessellationDual::NumberFaceVertices(UninitializedVector<Point2>& vertices)
 {
   const std::int32_t triangles = std::int32_t(this->Data.size());
   const std::vector<std::int32_t> bounds =
@@ -807,7 +807,7 @@ TileMesh MeshOfSeparateTiles(TileSet tiles)
   mesh.Offsets.assign(tiles.Offsets.begin(), tiles.Offsets.end());
   mesh.VertexIds.resize(tiles.Vertices.size());
   std::iota(mesh.VertexIds.begin(), mesh.VertexIds.end(), 0);
-  mesh.Vertices = std::move(tiles.Vertices);
+  mesh.Vertices.assign(tiles.Vertices.begin(), tiles.Vertices.end());
   mesh.Areas.assign(tiles.Areas.begin(), tiles.Areas.end());
   mesh.NeighborCounts.assign(tiles.NeighborCounts.begin(), tiles.NeighborCounts.end());
   return mesh;
@@ -829,7 +829,7 @@ void ReserveTiles(TileSet& tiles, std::size_t count)
 // Keeps, of the vertices from `from` on, those that stand for themselves (representative[k] == k
 // for vertex from + k; a representative comes before the vertices it stands for), in their order,
 // and returns each vertex's new id: its own or its representative's.
-std::vector<std::int32_t> KeepRepresentatives(std::vector<Point2>& vertices,
+std::vector<std::int32_t> KeepRepresentatives(UninitializedVector<Point2>& vertices,
   std::int32_t from,
   const std::vector<std::int32_t>& representative)
 {

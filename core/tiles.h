@@ -89,7 +89,7 @@ struct TileMesh
   UninitializedVector<std::int32_t> VertexIds; ///< anticlockwise, into Vertices
   /// Face centres inside the window (in the order of the triangle arrays), then the window's
   /// corners, then the crossings of tile edges with the window boundary.
-  std::vector<Point2> Vertices;
+  UninitializedVector<Point2> Vertices;
   UninitializedVector<double> Areas;
   UninitializedVector<std::int32_t> NeighborCounts;
 };
@@ -195,7 +195,7 @@ private:
   void AppendTileOf(std::int32_t v, RingScratch& scratch, TileSet& tiles) const;
   void AppendMeshTileOf(std::int32_t v, RingScratch& scratch, MeshPart& mesh) const;
   std::int32_t MeshVertexOf(const Point2& p, const RingScratch& scratch, MeshPart& mesh) const;
-  void NumberFaceVertices(std::vector<Point2>& vertices);
+  void NumberFaceVertices(UninitializedVector<Point2>& vertices);
   void AppendContiguitiesOf(std::int32_t v,
     bool half,
     RingScratch& scratch,

@@ -907,7 +907,7 @@ TEST(Tiles, TileMeshExpandsToTheTilesAndIsConforming)
       EXPECT_EQ(Plain(mesh.Tiles.NeighborCounts), tiles.NeighborCounts) << "set " << set;
       EXPECT_EQ(mesh.Graph.Pairs, both.Graph.Pairs) << "set " << set;
       EXPECT_EQ(mesh.Graph.Kinds, both.Graph.Kinds) << "set " << set;
-      const std::vector<Point2>& vertices = mesh.Tiles.Vertices;
+      const auto& vertices = mesh.Tiles.Vertices;
       ASSERT_EQ(mesh.Tiles.VertexIds.size(), tiles.Vertices.size()) << "set " << set;
       std::vector<int> uses(vertices.size(), 0);
       for (std::size_t v = 0; v < tiles.Vertices.size(); ++v)
