@@ -903,6 +903,9 @@ void DirichletTessellation::Relabel(std::int32_t edge, std::int32_t newId)
 {
   if (!this->VertexEdges.empty())
   {
+    // The old id is no vertex now: its entry would name a half-edge that leaves newId (and,
+    // once that triangle is freed and the triangles ordered, a slot past the arrays' end).
+    this->VertexEdges[this->Origins[edge]] = -1;
     this->VertexEdges[newId] = edge;
   }
   std::int32_t e = edge;
@@ -1094,7 +1097,7 @@ std::int32_t DirichletTessellation::EdgeLeaving(std::int32_t id) const
   if (!this->VertexEdges.empty())
   {
     const std::int32_t e = this->VertexEdges[id];
-    return e >= 0 && this->Origins[e] == id ? e : -1;
+    return e >= 0 && std::size_t(e) < this->Origins.size() && this->Origins[e] == id ? e : -1;
   }
   return this->Status(id) == PointStatus::Accepted ? this->FindVertexEdge(id) : -1;
 }

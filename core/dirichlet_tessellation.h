@@ -163,7 +163,8 @@ public:
   /// Renumbers the triangles in the order of their smallest vertex id and drops freed slots, so
   /// that, where ids were given in a spatial order, triangles near in space are near in memory
   /// again after many updates (triangle_order.cpp). The triangulation and every derived result
-  /// stay the same; half-edge numbers held from before are void. O(triangles + ids).
+  /// stay the same (those listed in triangle order, such as a TileMesh's face-centre vertices,
+  /// in the new order); half-edge numbers held from before are void. O(triangles + ids).
   void OrderTrianglesByVertex();
 
 private:

@@ -24,6 +24,10 @@ void* AllocateLarge(std::size_t bytes)
     return memory;
   }
   // aligned_alloc wants a multiple of the alignment; the whole rounded range is advised.
+  if (bytes > std::size_t(-1) - HugePage)
+  {
+    throw std::bad_alloc();
+  }
   const std::size_t rounded = (bytes + HugePage - 1) / HugePage * HugePage;
   void* memory = std::aligned_alloc(HugePage, rounded);
   if (!memory)

@@ -9,9 +9,11 @@
 // with every allocation on huge pages (glibc.malloc.hugetlb=1), one fault per 2 MiB. A library
 // cannot set that for its process, so its own large arrays ask for huge pages themselves. There a
 // fresh 4 KiB page cost 11 us and a fresh 2 MiB huge page 110 us (the cost of ten small ones), so
-// from 256 KiB on an array is faster on huge pages even when rounding up to 2 MiB takes up to
-// eight times its memory (only while it lives: these are a derivation's arrays). Smaller arrays
-// keep the ordinary allocator.
+// from 256 KiB on an array is faster on huge pages, though rounding up to 2 MiB can take up to
+// eight times its memory: for an array of 256 KiB to 2 MiB that is at most 2 MiB more, most of
+// them a derivation's arrays, freed with it (a streaming tessellation's half-edge arrays and the
+// filters' outputs live longer; StructureBytes counts capacities, not this rounding). Smaller
+// arrays keep the ordinary allocator.
 
 #include <cstddef>
 

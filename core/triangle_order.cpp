@@ -17,7 +17,9 @@
 //     old t:  [a b c | twins x y z]   ->   new u = NewIndex[t]:  [a b c | twins x' y' z']
 //             x' = 3 * NewIndex[x / 3] + x % 3  (likewise y, z, vertex edges, the walk's start)
 //
-// The triangulation itself is unchanged: every derived result is the same, bit for bit.
+// The triangulation itself is unchanged: every derived result is the same, bit for bit, though
+// results listed in triangle order (a TileMesh's face-centre vertices, the Delaunay faces) come in
+// the new order.
 #include "dirichlet_tessellation.h"
 
 #include <algorithm>
@@ -85,12 +87,14 @@ void DirichletTessellation::OrderTrianglesByVertex()
       twins[3 * u + k] = newEdge(this->Twins[3 * t + k]);
     }
   }
-  for (std::int32_t& e : this->VertexEdges)
+  // A vertex's edge is remapped only where it still leaves that vertex (an entry of an id that is
+  // no vertex any more may name a freed slot, which has no place in the new arrays).
+  const std::size_t edgeCount = this->Origins.size();
+  for (std::size_t id = 0; id < this->VertexEdges.size(); ++id)
   {
-    if (e >= 0)
-    {
-      e = newEdge(e);
-    }
+    std::int32_t& e = this->VertexEdges[id];
+    const bool leaves = e >= 0 && std::size_t(e) < edgeCount && org[e] == std::int32_t(id);
+    e = leaves ? newEdge(e) : -1;
   }
   const std::int32_t last = newIndex[this->Serial.LastTriangle];
   this->Serial.LastTriangle = last < kept ? last : 0;

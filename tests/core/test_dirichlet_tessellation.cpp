@@ -1090,6 +1090,109 @@ TEST(DirichletTessellation, OrderingTrianglesKeepsTheTessellation)
   EXPECT_GT(orderings, 100u);
 }
 
+// Exact copies hand the vertex back and forth (removing the smaller id makes its copy the vertex,
+// reinserting it takes the vertex back): the id that stops being a vertex must not keep a stale
+// half-edge, which an ordering would map past the arrays' end. Ordered after every step, with
+// orderings twice in a row and insertions hinted at a vertex next.
+TEST(DirichletTessellation, OrderingKeepsVertexEdgesWhereCopiesTakeTurns)
+{
+  std::vector<Point2> points = UniformPoints(40, 211);
+  for (int k = 0; k < 10; ++k)
+  {
+    points.push_back(points[std::size_t(k)]); // ids 40..49 copy 0..9
+  }
+  std::mt19937 rng(53);
+  Tess t(UnitWindow());
+  for (const Point2& p : points)
+  {
+    t.Insert(p);
+  }
+  std::vector<std::int32_t> removed;
+  int copiesThatWereVertices = 0, copiesThatGaveBack = 0;
+  for (int step = 0; step < 400; ++step)
+  {
+    std::vector<char> copyWasVertex(10);
+    for (int k = 0; k < 10; ++k)
+    {
+      copyWasVertex[std::size_t(k)] = t.Status(40 + k) == PointStatus::Accepted;
+    }
+    if (!removed.empty() && (t.AcceptedCount() <= 8 || std::bernoulli_distribution(0.5)(rng)))
+    {
+      const std::size_t k = std::uniform_int_distribution<std::size_t>(0, removed.size() - 1)(rng);
+      t.Reinsert(removed[k]);
+      removed.erase(removed.begin() + std::ptrdiff_t(k));
+    }
+    else
+    {
+      std::vector<std::int32_t> present;
+      for (std::int32_t id = 0; id < std::int32_t(points.size()); ++id)
+      {
+        if (t.Status(id) != PointStatus::Removed)
+        {
+          present.push_back(id);
+        }
+      }
+      RemoveOneOf(t, present, rng, removed);
+    }
+    for (int k = 0; k < 10; ++k)
+    {
+      const bool isVertex = t.Status(40 + k) == PointStatus::Accepted;
+      copiesThatWereVertices += isVertex && !copyWasVertex[std::size_t(k)];
+      copiesThatGaveBack += !isVertex && copyWasVertex[std::size_t(k)];
+    }
+    ASSERT_TRUE(t.IsTwoDimensional());
+    t.OrderTrianglesByVertex();
+    if (step % 7 == 0)
+    {
+      t.OrderTrianglesByVertex();
+    }
+    CheckStructure(t);
+    for (std::int32_t id = 0; id < std::int32_t(points.size()); ++id)
+    {
+      const std::int32_t e = t.EdgeLeaving(id);
+      if (t.Status(id) == PointStatus::Accepted)
+      {
+        ASSERT_GE(e, 0) << "step " << step << " point " << id;
+        ASSERT_EQ(t.Origin()[e], id) << "step " << step;
+      }
+      else
+      {
+        ASSERT_EQ(e, -1) << "step " << step << " point " << id;
+      }
+    }
+    ASSERT_TRUE(MakeCanonical(t) == WithoutIds(points, removed)) << "step " << step;
+  }
+  EXPECT_GT(copiesThatWereVertices, 10);
+  EXPECT_GT(copiesThatGaveBack, 10);
+  // A hinted insertion starts its walk from the ordered arrays.
+  const std::vector<std::int32_t> accepted = tessera_test::AcceptedIds(t);
+  const std::int32_t id = t.Insert({ 0.5, 0.5 }, accepted[accepted.size() / 2]);
+  points.push_back({ 0.5, 0.5 });
+  ASSERT_EQ(id, std::int32_t(points.size()) - 1);
+  CheckStructure(t);
+  EXPECT_TRUE(MakeCanonical(t) == WithoutIds(points, removed));
+}
+
+// Ordering leaves a tessellation without triangles (empty, one point, collinear points) as it is.
+TEST(DirichletTessellation, OrderingATessellationWithoutTrianglesChangesNothing)
+{
+  Tess t(UnitWindow());
+  t.OrderTrianglesByVertex();
+  EXPECT_EQ(t.AcceptedCount(), 0u);
+  for (int k = 0; k < 4; ++k)
+  {
+    t.Insert({ 0.1 * k, 0.2 * k });
+    t.OrderTrianglesByVertex();
+    EXPECT_FALSE(t.IsTwoDimensional());
+    EXPECT_EQ(t.CollinearPoints().size(), std::size_t(k + 1));
+    EXPECT_EQ(t.ScatteredTriangleCount(), 0u);
+  }
+  t.Insert({ 0.9, 0.1 }); // the line's four points lie on the hull too: 2n - 2 - h = 3
+  t.OrderTrianglesByVertex();
+  EXPECT_EQ(HullSize(t), 5u);
+  EXPECT_EQ(CheckStructure(t), 3u);
+}
+
 // Reinsert gives back each kind of status: a point outside the window is rejected again, and a
 // copy is a duplicate again or, having the smaller id, takes the accepted copy's place. Removing
 // everything listed and reinserting it in another order ends where the batch build is.

@@ -59,6 +59,9 @@ TEST(LargePages, VectorsKeepTheirContentsWhileGrowingPastTheThreshold)
   }
   EXPECT_EQ(wrong, 0);
   EXPECT_EQ(values.back(), -1);
+  // The vector's block came from AllocateLarge (its rebind and allocate are the allocator's own).
+  ASSERT_GE(values.capacity() * sizeof(std::int32_t), LargePageBytes);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(values.data()) % (std::uintptr_t(2) << 20), 0u);
   UninitializedVector<std::int32_t> copy(values.begin(), values.end());
   EXPECT_TRUE(copy == values);
 }
