@@ -17,8 +17,10 @@
 
 #include "errors.h"
 #include "polygon_area.h"
+#include "segment_rings.h"
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <sstream>
 
@@ -242,25 +244,81 @@ bool IsClosedLine(vtkPolyData* poly, vtkIdList* ids)
   return ids->GetId(0) == ids->GetId(n - 1) || (first[0] == last[0] && first[1] == last[1]);
 }
 
+/// Loose line segments (line cells, open polylines) of one vtkPolyData and their cells. Ends are
+/// matched by coordinates, not point ids: a contour keeps one id per point, but line features
+/// read from a file may repeat a point under two ids.
+class LooseSegments
+{
+public:
+  void Add(vtkPolyData* poly, vtkIdList* ids, vtkIdType cell)
+  {
+    for (vtkIdType k = 0; k + 1 < ids->GetNumberOfIds(); ++k)
+    {
+      this->Segments.emplace_back(
+        this->PlaceOf(poly, ids->GetId(k)), this->PlaceOf(poly, ids->GetId(k + 1)));
+      this->CellOf.push_back(cell);
+    }
+  }
+
+  /// Appends the closed rings they form to rings; returns the cells with a segment in none.
+  std::vector<vtkIdType> JoinInto(Rings& rings) const
+  {
+    const tessera::SegmentRings joined = tessera::JoinSegmentsIntoRings(this->Segments);
+    for (std::size_t r = 0; r + 1 < joined.Offsets.size(); ++r)
+    {
+      for (std::size_t k = joined.Offsets[r]; k < joined.Offsets[r + 1]; ++k)
+      {
+        rings.Vertices.push_back(this->Places[std::size_t(joined.Ids[k])]);
+      }
+      rings.Offsets.push_back(rings.Vertices.size());
+    }
+    std::vector<vtkIdType> unjoined;
+    for (const std::size_t s : joined.Unjoined)
+    {
+      unjoined.push_back(this->CellOf[s]);
+    }
+    return unjoined;
+  }
+
+private:
+  std::int64_t PlaceOf(vtkPolyData* poly, vtkIdType id)
+  {
+    double p[3];
+    poly->GetPoint(id, p);
+    const auto found =
+      this->PlaceIds.emplace(std::make_pair(p[0], p[1]), std::int64_t(this->Places.size()));
+    if (found.second)
+    {
+      this->Places.push_back({ p[0], p[1] });
+    }
+    return found.first->second;
+  }
+
+  std::vector<std::pair<std::int64_t, std::int64_t>> Segments;
+  std::vector<vtkIdType> CellOf;
+  std::map<std::pair<double, double>, std::int64_t> PlaceIds;
+  std::vector<tessera::Point2> Places;
+};
+
 void AppendPolygonRings(vtkPolyData* poly, const std::string& block, Rings& rings)
 {
   vtkNew<vtkIdList> ids;
+  std::vector<vtkIdType> skipped;
+  LooseSegments loose;
   for (vtkIdType c = 0; c < poly->GetNumberOfCells(); ++c)
   {
     const int type = poly->GetCellType(c);
     const bool isPolygon = type == VTK_POLYGON || type == VTK_TRIANGLE || type == VTK_QUAD;
-    bool isRing = isPolygon || type == VTK_POLY_LINE;
-    if (isRing)
+    const bool isLine = type == VTK_LINE || type == VTK_POLY_LINE;
+    if (!isPolygon && !isLine)
     {
-      poly->GetCellPoints(c, ids);
-      isRing = isPolygon || IsClosedLine(poly, ids);
+      skipped.push_back(c);
+      continue;
     }
-    if (!isRing)
+    poly->GetCellPoints(c, ids);
+    if (isLine && !IsClosedLine(poly, ids))
     {
-      if (rings.SkippedCells++ == 0)
-      {
-        rings.FirstSkipped = block + "cell " + std::to_string(c);
-      }
+      loose.Add(poly, ids, c); // joined with the others below
       continue;
     }
     for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
@@ -270,6 +328,18 @@ void AppendPolygonRings(vtkPolyData* poly, const std::string& block, Rings& ring
       rings.Vertices.push_back({ p[0], p[1] });
     }
     rings.Offsets.push_back(rings.Vertices.size());
+  }
+  const std::vector<vtkIdType> unjoined = loose.JoinInto(rings);
+  skipped.insert(skipped.end(), unjoined.begin(), unjoined.end());
+  std::sort(skipped.begin(), skipped.end());
+  skipped.erase(std::unique(skipped.begin(), skipped.end()), skipped.end());
+  if (!skipped.empty())
+  {
+    if (rings.SkippedCells == 0)
+    {
+      rings.FirstSkipped = block + "cell " + std::to_string(skipped.front());
+    }
+    rings.SkippedCells += skipped.size();
   }
 }
 } // namespace
@@ -295,8 +365,10 @@ Rings ReadPolygonRings(vtkDataObject* data)
   }
   if (rings.Offsets.size() < 2)
   {
+    const std::string skipped = SkippedCellsWarning(rings, "input");
     throw tessera::InputError(std::string("the window/catchment input (") +
-      (data ? data->GetClassName() : "nothing") + ") holds no polygon");
+      (data ? data->GetClassName() : "nothing") + ") holds no polygon" +
+      (skipped.empty() ? std::string() : ": " + skipped));
   }
   return rings;
 }
@@ -308,8 +380,9 @@ std::string SkippedCellsWarning(const Rings& rings, const char* what)
     return std::string();
   }
   return std::to_string(rings.SkippedCells) + " cell(s) of the " + what +
-    " are not polygons or closed polylines and were ignored (the first is " + rings.FirstSkipped +
-    ").";
+    " are not polygons or closed polylines, nor lines that join end to end into closed rings, "
+    "and were ignored (the first is " +
+    rings.FirstSkipped + ").";
 }
 
 double OrientAnticlockwise(std::vector<tessera::Point2>& polygon)

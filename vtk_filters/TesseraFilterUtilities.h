@@ -56,15 +56,19 @@ struct Rings
 {
   std::vector<std::size_t> Offsets{ 0 };
   std::vector<tessera::Point2> Vertices;
-  /// Cells that are not rings (vertices, lines, open polylines, strips): their number, and the
-  /// first of them ("cell 7", or "block 2 cell 7" in a composite data set).
+  /// Cells that are not rings (vertices, strips, lines and open polylines that join into no
+  /// closed ring): their number, and the first of them ("cell 7", or "block 2 cell 7" in a
+  /// composite data set).
   std::size_t SkippedCells = 0;
   std::string FirstSkipped;
 };
 
 /// Every polygon, triangle and quad cell, and every closed polyline (last point = first, as
 /// vtkGDALVectorReader gives polygon rings), of a vtkPolyData or of every vtkPolyData block of a
-/// composite data set, as one ring each (x, y used); other cells are counted in SkippedCells.
+/// composite data set, as one ring each (x, y used); then, per block, the closed rings that its
+/// line cells and open polylines form end to end (a contour, as vtkCutter or ParaView's Contour
+/// gives it: core segment_rings.h, ends matched by coordinates). Other cells, and lines in no
+/// closed ring, are counted in SkippedCells.
 /// Throws tessera::InputError when there is no ring.
 Rings ReadPolygonRings(vtkDataObject* data);
 

@@ -14,8 +14,9 @@
  * - port 0, gauges: a vtkPointSet with x = longitude, y = latitude (degrees, WGS84) and a
  *   point-data array of station ids (StationIdArrayName, default "station_id");
  * - port 1, catchment: polygons or closed polylines in lon/lat (vtkPolyData, or a composite data
- * set such as vtkGDALVectorReader's output), taken as rings under the even-odd rule (other cells,
- * such as open polylines, are ignored with a warning that counts them and names the first);
+ * set such as vtkGDALVectorReader's output), or lines that join end to end into closed rings,
+ * taken as rings under the even-odd rule (other cells, such as lines in no closed ring, are
+ * ignored with a warning that counts them and names the first);
  * - port 2 (optional), observations: a vtkTable in long format with a station id column, a time
  *   column and a value column (StationColumn, TimeColumn, ValueColumn: defaults "station_id",
  *   "time", "value"). Without it, the gauges' point-data array ValueArrayName is one time step.

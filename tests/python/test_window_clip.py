@@ -236,7 +236,72 @@ def test_input_arrays_named_like_the_filters_are_kept_under_another_name():
     assert_that(plain_warnings == [], f"no warning without a clash: {plain_warnings}")
 
 
+def line_segments(rings, rng, shared_ids):
+    """vtkPolyData with one two-point line cell per ring edge, shuffled, some reversed; with
+    shared_ids the rings' points are stored once (as vtkCutter gives a contour), else every cell
+    has points of its own (line features read from a file)."""
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    edges = []
+    for ring in rings:
+        ids = [points.InsertNextPoint(x, y, 0.0) for x, y in ring]
+        edges += [(ring[k], ring[(k + 1) % len(ring)], ids[k], ids[(k + 1) % len(ring)])
+                  for k in range(len(ring))]
+    rng.shuffle(edges)
+    lines = vtkCellArray()
+    for a, b, ia, ib in edges:
+        if rng.random() < 0.5:
+            a, b, ia, ib = b, a, ib, ia
+        if not shared_ids:
+            ia, ib = points.InsertNextPoint(a[0], a[1], 0.0), points.InsertNextPoint(b[0], b[1], 0.0)
+        lines.InsertNextCell(2)
+        lines.InsertCellPoint(ia)
+        lines.InsertCellPoint(ib)
+    data = vtkPolyData()
+    data.SetPoints(points)
+    data.SetLines(lines)
+    return data
+
+
+def test_a_window_of_loose_line_segments_is_joined_into_its_rings():
+    # The window with a hole and the star of windows(), given as contour-like line segments, clip
+    # exactly as the same rings given as polygons; a dangling segment is reported, not joined.
+    rng = random.Random(21)
+    tiles = random_tiling(8, 300)
+    for name, rings in windows().items():
+        expected = cell_values(clip(tiles, rings), "ClippedArea")
+        for shared_ids in (True, False):
+            f = vtkWindowClip()
+            errors = messages_of(f)
+            warnings = messages_of(f, "WarningEvent")
+            f.SetInputData(tiles)
+            f.SetWindowData(line_segments(rings, rng, shared_ids))
+            f.Update()
+            assert_that(not errors and not warnings, f"{name}: joined without a message: {errors} {warnings}")
+            got = cell_values(f.GetOutput(), "ClippedArea")
+            assert_that(got == expected, f"{name}: the same clipped areas as the polygons ({len(got)} cells)")
+    square = [(0.1, 0.1), (0.9, 0.1), (0.9, 0.9), (0.1, 0.9)]
+    window = line_segments([square], rng, True)
+    tail = window.GetPoints().InsertNextPoint(1.0, 1.0, 0.0)
+    window.GetLines().InsertNextCell(2)
+    window.GetLines().InsertCellPoint(2)  # the corner (0.9, 0.9): three segments meet there
+    window.GetLines().InsertCellPoint(tail)
+    f = vtkWindowClip()
+    errors = messages_of(f)
+    warnings = messages_of(f, "WarningEvent")
+    f.SetInputData(tiles)
+    f.SetWindowData(window)
+    f.Update()
+    assert_that(errors and "no polygon" in errors[0] and "5 cell(s) of the input" in errors[0]
+                and "the first is cell 0" in errors[0],
+                f"nothing left to clip by, the square's and the dangling segment's cells named: {errors}")
+
+
 if __name__ == "__main__":
     run([test_cells_are_simple_pieces_that_fill_tile_and_window,
          test_review_cases,
-         test_input_arrays_named_like_the_filters_are_kept_under_another_name])
+         test_input_arrays_named_like_the_filters_are_kept_under_another_name,
+         test_a_window_of_loose_line_segments_is_joined_into_its_rings])

@@ -1,0 +1,35 @@
+#pragma once
+// Closed rings from loose line segments, joined where they share a point id: a contour line as
+// vtkCutter or ParaView's Contour gives it (one two-point line cell per segment), taken as a
+// window or catchment boundary.
+//
+//     a---b        segments (a,b) (c,b) (c,d) (d,a), in any order and either direction,
+//     |   |        give the ring a, b, c, d (the first segment's direction);
+//     d---c        a chain that ends, or a point where three or more segments meet, gives none.
+
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace tessera
+{
+
+struct SegmentRings
+{
+  /// Ring k's point ids are Ids[Offsets[k], Offsets[k + 1]) (the first is not repeated at the end).
+  std::vector<std::size_t> Offsets{ 0 };
+  std::vector<std::int64_t> Ids;
+  /// Indices (into the segments given) of the segments in no ring, ascending: those of a chain
+  /// that does not close, of a component where a point has other than two segments, and those
+  /// whose two ends are one point.
+  std::vector<std::size_t> Unjoined;
+};
+
+/// Joins segments (pairs of point ids) into closed rings. Every point of a ring has exactly two
+/// segments, so a ring is unambiguous; a component with any other point is left unjoined whole.
+/// O(s log s) for s segments.
+SegmentRings JoinSegmentsIntoRings(
+  const std::vector<std::pair<std::int64_t, std::int64_t>>& segments);
+
+} // namespace tessera
