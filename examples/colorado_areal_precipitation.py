@@ -106,6 +106,7 @@ def read_observations(path, gauge_of, filler):
     times.SetName("time")
     values.SetName("precip")
     unrecorded = 0
+    negative = []  # the lines of negative values
     months = set()  # (year, month) of every row
     present = set()  # (year, month) of every row of a gauge's station
     lines = []  # the file's line of each row read
@@ -126,6 +127,8 @@ def read_observations(path, gauge_of, filler):
             unrecorded += 1
         else:
             value = csv_input.number(row, "precip", path, line)
+            if value < 0:
+                negative.append(line)
             if gauge is not None:
                 reporting.setdefault(year_and_month, set()).add(gauge)
         stations.InsertNextValue(station)
@@ -134,6 +137,14 @@ def read_observations(path, gauge_of, filler):
     if unrecorded:
         print(f"{path}: {unrecorded} observation(s) without a value (empty, NA, NaN or null) "
               "count as missing", file=sys.stderr)
+    if negative:
+        # Precipitation is never negative: these are most often a missing-value code (-99, -9999)
+        # that would drag the means down. They are used as given, and named.
+        shown = ", ".join(str(line) for line in negative[:20])
+        more = f" and {len(negative) - 20} more" if len(negative) > 20 else ""
+        print(f"{path}: {len(negative)} observation(s) have a negative precipitation, used as given "
+              f"(write a missing value as NA if that is what they mean): line(s) {shown}{more}",
+              file=sys.stderr)
     # A month between the first and the last without a row of any gauge's station is a month where
     # no gauge reported: a row with a missing value (for a gauge's station: the filter makes no
     # step of a row naming a station no gauge has) keeps it a step of its own, so that

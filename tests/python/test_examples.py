@@ -159,6 +159,7 @@ def test_missing_values_keep_their_months():
         stdout, stderr, rows = run_on("station_id,year,month,precip\n050848,1950,1,\n050848,1950,2,NA\n"
                                       "051294,1950,2,n/a\n050848,1950,3,2.5\n051294,1950,3,null\n", "1950-03")
         assert_that("4 observation(s) without a value" in stderr, f"missing values not reported: {stderr}")
+        assert_that("negative" not in stderr, f"no negative value to report: {stderr}")
         got = [(r["month"], r["stations_used"], r["areal_mean"]) for r in rows]
         assert_that(got == [("1", "0", ""), ("2", "0", ""), ("3", "1", "2.500000")],
                     f"months with missing values: {got}")
@@ -182,6 +183,15 @@ def test_missing_values_keep_their_months():
                     f"a month of an unknown station only: {got}")
         # The filter's row 0 is named as the file's line 2.
         assert_that("NOSUCH (1 row: line 2)" in stderr, f"the unknown station not reported: {stderr}")
+        # A negative value (a missing-value code such as -9999, most often) is used as given and
+        # named by its line.
+        stdout, stderr, rows = run_on("station_id,year,month,precip\n050848,1950,1,-9999\n050848,1950,2,2.5\n"
+                                      "051294,1950,2,-0.5\n", "1950-02")
+        assert_that("obs.csv: 2 observation(s) have a negative precipitation, used as given" in stderr
+                    and "line(s) 2, 4" in stderr, f"negative values not named: {stderr}")
+        got = [(r["month"], r["stations_used"], float(r["areal_mean"])) for r in rows]
+        assert_that(got[0] == ("1", "1", -9999.0) and got[1][1] == "2" and got[1][2] < 2.5,
+                    f"negative values used as given: {got}")
 
 
 def test_bad_files_are_named():
