@@ -1059,9 +1059,8 @@ std::size_t DirichletTessellation::StructureBytes() const
     sizeof(std::int32_t) +
     this->StatusBytes.capacity() +
     this->DuplicatePairs.capacity() * sizeof(std::pair<std::int32_t, std::int32_t>) +
-    (this->Ordering.Keys.capacity() + this->Ordering.First.capacity() +
-      this->Ordering.NewIndex.capacity() + this->Ordering.Origins.capacity() +
-      this->Ordering.Twins.capacity()) *
+    (this->Ordering.First.capacity() + this->Ordering.NewIndex.capacity() +
+      this->Ordering.Origins.capacity() + this->Ordering.Twins.capacity()) *
     sizeof(std::int32_t);
 }
 

@@ -312,7 +312,6 @@ private:
   /// swapped with the structure's): fresh pages cost more than the ordering itself.
   struct OrderScratch
   {
-    std::vector<std::uint32_t> Keys;
     std::vector<std::int32_t> First;
     std::vector<std::int32_t> NewIndex;
     HalfEdgeArray Origins;

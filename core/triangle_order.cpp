@@ -42,28 +42,27 @@ void DirichletTessellation::OrderTrianglesByVertex()
   // Key of triangle t: its smallest real vertex id. As unsigned numbers Ghost (-1) and Free (-2)
   // are the largest, so the smallest of the three is real except in a free slot (all Free), which
   // gets the key idCount and is dropped. Branch-free: which vertex is smallest is a coin toss.
-  std::vector<std::uint32_t>& keys = scratch.Keys;
-  keys.resize(std::size_t(triangleCount));
+  // newIndex holds the keys first, then (in place) each triangle's new index.
+  std::vector<std::int32_t>& newIndex = scratch.NewIndex;
+  newIndex.resize(std::size_t(triangleCount));
   std::vector<std::int32_t>& first = scratch.First;
   first.assign(std::size_t(idCount) + 2, 0);
   for (std::int32_t t = 0; t < triangleCount; ++t)
   {
     const std::uint32_t smallest = std::min(
       { std::uint32_t(org[3 * t]), std::uint32_t(org[3 * t + 1]), std::uint32_t(org[3 * t + 2]) });
-    const std::uint32_t key = std::min(smallest, std::uint32_t(idCount));
-    keys[t] = key;
-    ++first[key + 1];
+    const std::int32_t key = std::int32_t(std::min(smallest, std::uint32_t(idCount)));
+    newIndex[t] = key;
+    ++first[std::size_t(key) + 1];
   }
   for (std::size_t k = 1; k < first.size(); ++k)
   {
     first[k] += first[k - 1];
   }
   const std::int32_t kept = first[std::size_t(idCount)];
-  std::vector<std::int32_t>& newIndex = scratch.NewIndex;
-  newIndex.resize(std::size_t(triangleCount));
-  for (std::int32_t t = 0; t < triangleCount; ++t)
+  for (std::int32_t& index : newIndex)
   {
-    newIndex[t] = first[keys[t]]++; // a free slot's index (>= kept) is never read
+    index = first[std::size_t(index)]++; // a free slot's index (>= kept) is never read
   }
   const auto newEdge = [&newIndex](std::int32_t e) { return 3 * newIndex[e / 3] + e % 3; };
   // The capacity kept: insertions after the ordering append (no slot is free), and a fresh
