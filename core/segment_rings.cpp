@@ -3,6 +3,7 @@
 #include "segment_rings.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace tessera
 {
@@ -118,6 +119,54 @@ SegmentRings JoinSegmentsIntoRings(
     }
   }
   return result;
+}
+
+PointRings JoinSegmentsAtEqualEnds(const std::vector<Point2>& ends)
+{
+  // Each end numbered by its place: the ends sorted by (x, y), equal ones given one number. An end
+  // with a NaN coordinate equals none (and would break the sort's order): a place of its own, for
+  // the ring's validation to name.
+  std::vector<std::int64_t> place(ends.size());
+  std::vector<Point2> places;
+  std::vector<std::size_t> order;
+  for (std::size_t k = 0; k < ends.size(); ++k)
+  {
+    if (std::isnan(ends[k].x) || std::isnan(ends[k].y))
+    {
+      place[k] = std::int64_t(places.size());
+      places.push_back(ends[k]);
+    }
+    else
+    {
+      order.push_back(k);
+    }
+  }
+  const auto before = [&ends](std::size_t a, std::size_t b)
+  { return ends[a].x != ends[b].x ? ends[a].x < ends[b].x : ends[a].y < ends[b].y; };
+  std::sort(order.begin(), order.end(), before);
+  for (std::size_t k = 0; k < order.size(); ++k)
+  {
+    if (k == 0 || !(ends[order[k]] == ends[order[k - 1]]))
+    {
+      places.push_back(ends[order[k]]);
+    }
+    place[order[k]] = std::int64_t(places.size()) - 1;
+  }
+  std::vector<std::pair<std::int64_t, std::int64_t>> segments(ends.size() / 2);
+  for (std::size_t s = 0; s < segments.size(); ++s)
+  {
+    segments[s] = { place[2 * s], place[2 * s + 1] };
+  }
+  const SegmentRings joined = JoinSegmentsIntoRings(segments);
+  PointRings rings;
+  rings.Offsets = joined.Offsets;
+  rings.Vertices.reserve(joined.Ids.size());
+  for (const std::int64_t id : joined.Ids)
+  {
+    rings.Vertices.push_back(places[std::size_t(id)]);
+  }
+  rings.Unjoined = joined.Unjoined;
+  return rings;
 }
 
 } // namespace tessera

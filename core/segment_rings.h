@@ -1,11 +1,14 @@
 #pragma once
-// Closed rings from loose line segments, joined where they share a point id: a contour line as
-// vtkCutter or ParaView's Contour gives it (one two-point line cell per segment), taken as a
-// window or catchment boundary.
+// Closed rings from loose line segments, joined where they share a point id, or (for segments given
+// by their ends) where their ends have equal coordinates: a contour line as vtkCutter or
+// ParaView's Contour gives it (one two-point line cell per segment), taken as a window or
+// catchment boundary.
 //
 //     a---b        segments (a,b) (c,b) (c,d) (d,a), in any order and either direction,
 //     |   |        give the ring a, b, c, d (the first segment's direction);
 //     d---c        a chain that ends, or a point where three or more segments meet, gives none.
+
+#include "geometry.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -31,5 +34,21 @@ struct SegmentRings
 /// O(s log s) for s segments.
 SegmentRings JoinSegmentsIntoRings(
   const std::vector<std::pair<std::int64_t, std::int64_t>>& segments);
+
+/// Rings of points, from JoinSegmentsAtEqualEnds.
+struct PointRings
+{
+  /// Ring k's vertices are Vertices[Offsets[k], Offsets[k + 1]) (the first not repeated).
+  std::vector<std::size_t> Offsets{ 0 };
+  std::vector<Point2> Vertices;
+  /// As SegmentRings::Unjoined.
+  std::vector<std::size_t> Unjoined;
+};
+
+/// Joins segments given by their ends (segment s from ends[2s] to ends[2s + 1]) into closed rings,
+/// ends meeting where their coordinates are equal: a contour keeps one point id per point, but
+/// line features read from a file may repeat a point under two ids. As JoinSegmentsIntoRings
+/// otherwise.
+PointRings JoinSegmentsAtEqualEnds(const std::vector<Point2>& ends);
 
 } // namespace tessera

@@ -20,7 +20,6 @@
 #include "segment_rings.h"
 
 #include <algorithm>
-#include <map>
 #include <cmath>
 #include <sstream>
 
@@ -244,9 +243,8 @@ bool IsClosedLine(vtkPolyData* poly, vtkIdList* ids)
   return ids->GetId(0) == ids->GetId(n - 1) || (first[0] == last[0] && first[1] == last[1]);
 }
 
-/// Loose line segments (line cells, open polylines) of one vtkPolyData and their cells. Ends are
-/// matched by coordinates, not point ids: a contour keeps one id per point, but line features
-/// read from a file may repeat a point under two ids.
+/// Loose line segments (line cells, open polylines) of one vtkPolyData, by their ends, and their
+/// cells: the core joins them into rings (JoinSegmentsAtEqualEnds).
 class LooseSegments
 {
 public:
@@ -254,8 +252,12 @@ public:
   {
     for (vtkIdType k = 0; k + 1 < ids->GetNumberOfIds(); ++k)
     {
-      this->Segments.emplace_back(
-        this->PlaceOf(poly, ids->GetId(k)), this->PlaceOf(poly, ids->GetId(k + 1)));
+      for (const vtkIdType id : { ids->GetId(k), ids->GetId(k + 1) })
+      {
+        double p[3];
+        poly->GetPoint(id, p);
+        this->Ends.push_back({ p[0], p[1] });
+      }
       this->CellOf.push_back(cell);
     }
   }
@@ -263,13 +265,12 @@ public:
   /// Appends the closed rings they form to rings; returns the cells with a segment in none.
   std::vector<vtkIdType> JoinInto(Rings& rings) const
   {
-    const tessera::SegmentRings joined = tessera::JoinSegmentsIntoRings(this->Segments);
+    const tessera::PointRings joined = tessera::JoinSegmentsAtEqualEnds(this->Ends);
     for (std::size_t r = 0; r + 1 < joined.Offsets.size(); ++r)
     {
-      for (std::size_t k = joined.Offsets[r]; k < joined.Offsets[r + 1]; ++k)
-      {
-        rings.Vertices.push_back(this->Places[std::size_t(joined.Ids[k])]);
-      }
+      rings.Vertices.insert(rings.Vertices.end(),
+        joined.Vertices.begin() + std::ptrdiff_t(joined.Offsets[r]),
+        joined.Vertices.begin() + std::ptrdiff_t(joined.Offsets[r + 1]));
       rings.Offsets.push_back(rings.Vertices.size());
     }
     std::vector<vtkIdType> unjoined;
@@ -281,23 +282,8 @@ public:
   }
 
 private:
-  std::int64_t PlaceOf(vtkPolyData* poly, vtkIdType id)
-  {
-    double p[3];
-    poly->GetPoint(id, p);
-    const auto found =
-      this->PlaceIds.emplace(std::make_pair(p[0], p[1]), std::int64_t(this->Places.size()));
-    if (found.second)
-    {
-      this->Places.push_back({ p[0], p[1] });
-    }
-    return found.first->second;
-  }
-
-  std::vector<std::pair<std::int64_t, std::int64_t>> Segments;
+  std::vector<tessera::Point2> Ends; ///< segment s: Ends[2s] to Ends[2s + 1]
   std::vector<vtkIdType> CellOf;
-  std::map<std::pair<double, double>, std::int64_t> PlaceIds;
-  std::vector<tessera::Point2> Places;
 };
 
 void AppendPolygonRings(vtkPolyData* poly, const std::string& block, Rings& rings)

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <random>
 #include <set>
@@ -157,4 +158,25 @@ TEST(SegmentRings, RandomCyclesChainsAndBranchesAgainstTheirConstruction)
     EXPECT_EQ(found, cycles) << "trial " << trial;
     EXPECT_EQ(rings.Unjoined.size(), segments.size() - cycleSegments) << "trial " << trial;
   }
+}
+
+// Ends meet where their coordinates are equal (each segment with points of its own, as line
+// features read from a file); an end with a NaN coordinate meets none, and does not upset the sort.
+TEST(SegmentRings, EndsMeetWhereTheirCoordinatesAreEqual)
+{
+  const Point2 a{ 0, 0 }, b{ 1, 0 }, c{ 1, 1 }, d{ 0, 1 };
+  const std::vector<Point2> ends{ c, b, a, b, d, c, a, d };
+  const PointRings rings = JoinSegmentsAtEqualEnds(ends);
+  ASSERT_EQ(rings.Offsets, (std::vector<std::size_t>{ 0, 4 }));
+  EXPECT_TRUE(rings.Unjoined.empty());
+  // The first segment's direction: c, b, then on around the square.
+  EXPECT_EQ(rings.Vertices, (std::vector<Point2>{ c, b, a, d }));
+
+  const double nan = std::nan("");
+  std::vector<Point2> withNan = ends;
+  withNan.insert(
+    withNan.end(), { { 5, 5 }, { nan, 5 }, { nan, 5 }, { 5, 5 }, { 2, nan }, { 2, 2 } });
+  const PointRings partly = JoinSegmentsAtEqualEnds(withNan);
+  EXPECT_EQ(partly.Offsets, (std::vector<std::size_t>{ 0, 4 }));
+  EXPECT_EQ(partly.Unjoined, (std::vector<std::size_t>{ 4, 5, 6 }));
 }
