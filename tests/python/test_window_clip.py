@@ -16,14 +16,21 @@ from tessera_testing import (assert_close, assert_that, cell_rings, exact_area, 
                              polygon, run, simplicity_defect)
 
 
-def clip(tiles, window_rings):
+def clip_by(tiles, window):
+    """tiles clipped by the window data set: the output, the errors and the warnings."""
     f = vtkWindowClip()
     errors = messages_of(f)
+    warnings = messages_of(f, "WarningEvent")
     f.SetInputData(tiles)
-    f.SetWindowData(polygon(window_rings))
+    f.SetWindowData(window)
     f.Update()
+    return f.GetOutput(), errors, warnings
+
+
+def clip(tiles, window_rings):
+    output, errors, _ = clip_by(tiles, polygon(window_rings))
     assert_that(not errors, f"no error: {errors}")
-    return f.GetOutput()
+    return output
 
 
 def cell_values(data, name):
@@ -274,14 +281,9 @@ def test_a_window_of_loose_line_segments_is_joined_into_its_rings():
     for name, rings in windows().items():
         expected = cell_values(clip(tiles, rings), "ClippedArea")
         for shared_ids in (True, False):
-            f = vtkWindowClip()
-            errors = messages_of(f)
-            warnings = messages_of(f, "WarningEvent")
-            f.SetInputData(tiles)
-            f.SetWindowData(line_segments(rings, rng, shared_ids))
-            f.Update()
+            output, errors, warnings = clip_by(tiles, line_segments(rings, rng, shared_ids))
             assert_that(not errors and not warnings, f"{name}: joined without a message: {errors} {warnings}")
-            got = cell_values(f.GetOutput(), "ClippedArea")
+            got = cell_values(output, "ClippedArea")
             assert_that(got == expected, f"{name}: the same clipped areas as the polygons ({len(got)} cells)")
     square = [(0.1, 0.1), (0.9, 0.1), (0.9, 0.9), (0.1, 0.9)]
     window = line_segments([square], rng, True)
@@ -289,12 +291,7 @@ def test_a_window_of_loose_line_segments_is_joined_into_its_rings():
     window.GetLines().InsertNextCell(2)
     window.GetLines().InsertCellPoint(2)  # the corner (0.9, 0.9): three segments meet there
     window.GetLines().InsertCellPoint(tail)
-    f = vtkWindowClip()
-    errors = messages_of(f)
-    warnings = messages_of(f, "WarningEvent")
-    f.SetInputData(tiles)
-    f.SetWindowData(window)
-    f.Update()
+    _, errors, _ = clip_by(tiles, window)
     assert_that(errors and "no polygon" in errors[0] and "5 cell(s) of the input" in errors[0]
                 and "the first is cell 0" in errors[0],
                 f"nothing left to clip by, the square's and the dangling segment's cells named: {errors}")
