@@ -1,6 +1,7 @@
 #include "dirichlet_tessellation.h"
 
 #include "errors.h"
+#include "large_pages.h"
 #include "parallel_chunks.h"
 #include "predicates_inline.h"
 #include "spatial_order.h"
@@ -144,7 +145,8 @@ DirichletTessellation::DirichletTessellation(Window window, std::vector<Point2> 
   }
   const std::int32_t n = std::int32_t(this->Coordinates.size());
   const std::vector<std::int32_t> bounds = parallel::ChunkBounds(n, parallel::ThreadCount(n));
-  std::vector<std::int32_t> inside(static_cast<std::size_t>(n));
+  std::vector<std::int32_t> inside;
+  ResizeOnLargePages(inside, static_cast<std::size_t>(n));
   Box2 box;
   if (AllFiniteAndInside(this->Coordinates, this->TheWindow, bounds, inside, box))
   {
@@ -217,7 +219,8 @@ void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids, const Box2
   // The gather and the relabelling below are random reads of a large array: on the cores.
   const std::vector<std::int32_t> pointChunks = parallel::ChunkBounds(
     std::int32_t(order.size()), parallel::ThreadCount(std::int64_t(order.size())));
-  std::vector<Point2> local(order.size());
+  std::vector<Point2> local;
+  ResizeOnLargePages(local, order.size());
   parallel::RunChunks(pointChunks.size() - 1,
     [&](std::size_t c)
     {

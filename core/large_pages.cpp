@@ -1,6 +1,7 @@
 // AllocateLarge: aligned_alloc plus madvise(MADV_HUGEPAGE) (see large_pages.h for why).
 #include "large_pages.h"
 
+#include <cstdint>
 #include <cstdlib>
 #include <new>
 
@@ -10,10 +11,34 @@
 
 namespace tessera
 {
+namespace
+{
+constexpr std::size_t HugePage = std::size_t(2) << 20;
+} // namespace
+
+void AdviseLargePages(const void* begin, std::size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  const std::uintptr_t at = reinterpret_cast<std::uintptr_t>(begin);
+  if (!begin || bytes < HugePage || at > std::uintptr_t(-1) - bytes - HugePage)
+  {
+    return;
+  }
+  const std::uintptr_t first = (at + HugePage - 1) & ~std::uintptr_t(HugePage - 1);
+  const std::uintptr_t end = (at + bytes) & ~std::uintptr_t(HugePage - 1);
+  if (end > first)
+  {
+    // Advice only: a range the system cannot back by huge pages keeps ordinary ones.
+    madvise(reinterpret_cast<void*>(first), end - first, MADV_HUGEPAGE);
+  }
+#else
+  (void)begin;
+  (void)bytes;
+#endif
+}
 
 void* AllocateLarge(std::size_t bytes)
 {
-  constexpr std::size_t HugePage = std::size_t(2) << 20;
   if (bytes < LargePageBytes)
   {
     void* memory = std::malloc(bytes == 0 ? 1 : bytes);

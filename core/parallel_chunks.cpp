@@ -156,7 +156,7 @@ private:
       }
       // More threads than cores (TESSERA_THREADS above them): a thread that polls would keep
       // one that has a chunk to run off its core, so all sleep at once.
-      this->Polling = this->Threads.size() < std::thread::hardware_concurrency();
+      this->Polling = this->Threads.size() < HardwareThreads();
     }
     return true;
   }

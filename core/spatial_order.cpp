@@ -330,7 +330,7 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
     const std::uint64_t round = std::uint64_t(rounds - 1 - zeros);
     return (round << (2 * levels)) | curve(points[id]);
   };
-  order.resize(n);
+  ResizeOnLargePages(order, n);
   if (keyBits + idBits <= 64)
   {
     // The keys (a hash and a Hilbert index per point) on the cores, which also first touch the

@@ -1,6 +1,7 @@
 #include "tiles.h"
 
 #include "errors.h"
+#include "large_pages.h"
 #include "parallel_chunks.h"
 #include "polygon_area.h"
 #include "predicates_inline.h"
@@ -172,7 +173,7 @@ void TessellationDual::ComputeTriangleCentres(std::vector<std::uint8_t>& cocircu
   // The centres' error bounds serve only to find co-circular candidates.
   if (!this->Tess.KnownFreeOfCocircularTriangles())
   {
-    this->CentreError.resize(std::size_t(triangles));
+    ResizeOnLargePages(this->CentreError, std::size_t(triangles));
   }
   const std::vector<std::int32_t> bounds =
     ChunkBounds(triangles, ThreadCount(triangles, MinimumTrianglesPerThread));
@@ -180,7 +181,8 @@ void TessellationDual::ComputeTriangleCentres(std::vector<std::uint8_t>& cocircu
   // Known free of co-circular triangles: no tests at all (LabelFaces has nothing to do).
   if (!this->Tess.KnownFreeOfCocircularTriangles())
   {
-    cocircular.assign(std::size_t(triangles), 0);
+    cocircular.clear();
+    ResizeOnLargePages(cocircular, std::size_t(triangles)); // zeros
     RunChunks(bounds.size() - 1,
       [&](std::size_t k) { this->CocircularEdgesOf(bounds[k], bounds[k + 1], cocircular.data()); });
   }

@@ -27,6 +27,7 @@
 
 #include "dirichlet_tessellation.h"
 
+#include "large_pages.h"
 #include "parallel_chunks.h"
 #include "spatial_order.h"
 
@@ -174,6 +175,7 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first,
   for (std::vector<std::int32_t>& side : sides)
   {
     side.reserve(std::size_t(end - first)); // either may get them all; only what is used is touched
+    AdviseLargePages(side.data(), side.capacity() * sizeof(std::int32_t));
   }
   // Serial insertions of scattered points, each walking from the last: along the curve.
   const auto insertAlongCurve = [&](std::vector<std::int32_t>& ids)

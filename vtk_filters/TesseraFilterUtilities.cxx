@@ -16,6 +16,7 @@
 #include "vtkPoints.h"
 
 #include "errors.h"
+#include "large_pages.h"
 #include "polygon_area.h"
 #include "segment_rings.h"
 
@@ -40,7 +41,8 @@ void CopyXY(const Real* xyz, vtkIdType n, std::vector<tessera::Point2>& out)
 std::vector<tessera::Point2> CopyPoints2D(vtkPoints* points)
 {
   const vtkIdType n = points ? points->GetNumberOfPoints() : 0;
-  std::vector<tessera::Point2> xy(static_cast<std::size_t>(n));
+  std::vector<tessera::Point2> xy; // the engine's coordinates: read at random, on huge pages
+  tessera::ResizeOnLargePages(xy, static_cast<std::size_t>(n));
   if (n == 0)
   {
     return xy;

@@ -20,6 +20,7 @@
 #include "TesseraFilterUtilities.h"
 #include "dirichlet_tessellation.h"
 #include "errors.h"
+#include "large_pages.h"
 #include "parallel_chunks.h"
 #include "thiessen_sweep.h"
 #include "tiles.h"
@@ -81,18 +82,21 @@ TessellationResult RunBrasselReif(const tessera::Window& window,
 std::vector<std::int32_t> OrderByPointId(const tessera::UninitializedVector<std::int32_t>& keys,
   std::size_t idLimit)
 {
-  std::vector<std::int32_t> slot(idLimit, -1);
+  std::vector<std::int32_t> slot; // written at random: on huge pages
+  tessera::ResizeOnLargePages(slot, idLimit);
+  std::fill(slot.begin(), slot.end(), -1);
   for (std::size_t k = 0; k < keys.size(); ++k)
   {
     slot[keys[k]] = static_cast<std::int32_t>(k);
   }
   std::vector<std::int32_t> order;
-  order.reserve(keys.size());
+  tessera::ResizeOnLargePages(order, keys.size());
+  std::size_t next = 0;
   for (std::int32_t k : slot)
   {
     if (k >= 0)
     {
-      order.push_back(k);
+      order[next++] = k;
     }
   }
   return order;
@@ -299,7 +303,8 @@ public:
   void Count(int half)
   {
     std::vector<std::int32_t>& count = this->Slots[half];
-    count.assign(this->IdLimit, 0);
+    count.clear();                                     // counted at random: on huge pages
+    tessera::ResizeOnLargePages(count, this->IdLimit); // zeros
     const std::int32_t* pairs = this->Graph.Pairs.data();
     const vtkIdType begin = this->HalfBegin(half), end = this->HalfBegin(half + 1);
     // Point ids are random in space: the counters are requested a few pairs ahead.

@@ -8,7 +8,12 @@
 
 #include <cstdint>
 #include <cstdlib>
+#include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
 
 using namespace tessera;
 
@@ -64,4 +69,76 @@ TEST(LargePages, VectorsKeepTheirContentsWhileGrowingPastTheThreshold)
   EXPECT_EQ(reinterpret_cast<std::uintptr_t>(values.data()) % (std::uintptr_t(2) << 20), 0u);
   UninitializedVector<std::int32_t> copy(values.begin(), values.end());
   EXPECT_TRUE(copy == values);
+}
+
+namespace
+{
+/// The VmFlags of the mapping that holds address (Linux /proc/self/smaps); empty where unknown.
+std::string MappingFlags(const void* address)
+{
+  std::ifstream smaps("/proc/self/smaps");
+  const std::uintptr_t at = reinterpret_cast<std::uintptr_t>(address);
+  std::string line;
+  bool inside = false;
+  while (std::getline(smaps, line))
+  {
+    unsigned long long begin = 0, end = 0;
+    if (std::sscanf(line.c_str(), "%llx-%llx ", &begin, &end) == 2 && line.find('-') < 17)
+    {
+      inside = begin <= at && at < end;
+    }
+    else if (inside && line.rfind("VmFlags:", 0) == 0)
+    {
+      return line;
+    }
+  }
+  return {};
+}
+
+bool HugePagesOnRequest()
+{
+  std::ifstream mode("/sys/kernel/mm/transparent_hugepage/enabled");
+  std::string text((std::istreambuf_iterator<char>(mode)), std::istreambuf_iterator<char>());
+  return text.find("[madvise]") != std::string::npos || text.find("[always]") != std::string::npos;
+}
+} // namespace
+
+TEST(LargePages, ResizeOnLargePagesKeepsVectorSemantics)
+{
+  std::vector<std::int32_t> values{ 7, 8, 9 };
+  const std::size_t n = 5 * (std::size_t(2) << 20) / sizeof(std::int32_t); // 10 MiB
+  ResizeOnLargePages(values, n);
+  ASSERT_EQ(values.size(), n);
+  EXPECT_EQ(values[0], 7);
+  EXPECT_EQ(values[2], 9);
+  std::size_t nonZero = 0;
+  for (std::size_t k = 3; k < n; ++k)
+  {
+    nonZero += values[k] != 0;
+  }
+  EXPECT_EQ(nonZero, 0u);        // new elements value-initialised, as resize() makes them
+  ResizeOnLargePages(values, 2); // shrinking: plain resize
+  EXPECT_EQ(values.size(), 2u);
+  EXPECT_EQ(values[1], 8);
+  // Nothing to advise, or nothing whole inside: no effect, no failure.
+  AdviseLargePages(nullptr, 1 << 24);
+  AdviseLargePages(values.data(), 0);
+  AdviseLargePages(reinterpret_cast<const char*>(values.data()) + 1, 12345);
+}
+
+TEST(LargePages, ResizeOnLargePagesAdvisesTheWholeHugePagesInside)
+{
+  if (!HugePagesOnRequest())
+  {
+    GTEST_SKIP() << "transparent huge pages are not offered on request here";
+  }
+  std::vector<double> values;
+  ResizeOnLargePages(values, std::size_t(3) << 20); // 24 MiB: whole 2 MiB pages inside
+  const std::string middle = MappingFlags(values.data() + values.size() / 2);
+  ASSERT_FALSE(middle.empty()) << "no mapping found for the vector's storage";
+  EXPECT_NE(middle.find(" hg"), std::string::npos) << middle;
+  // A plain vector of the same size is not advised (the check can tell the two apart).
+  std::vector<double> plain(std::size_t(3) << 20);
+  const std::string plainFlags = MappingFlags(plain.data() + plain.size() / 2);
+  EXPECT_EQ(plainFlags.find(" hg"), std::string::npos) << plainFlags;
 }
