@@ -20,9 +20,9 @@ void AdviseLargePages(const void* begin, std::size_t bytes)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   const std::uintptr_t at = reinterpret_cast<std::uintptr_t>(begin);
-  if (!begin || bytes < HugePage || at > std::uintptr_t(-1) - bytes - HugePage)
+  if (!begin || bytes < HugePage || bytes > std::uintptr_t(-1) - at)
   {
-    return;
+    return; // nothing whole inside, or a range that would wrap (then at + HugePage cannot)
   }
   const std::uintptr_t first = (at + HugePage - 1) & ~std::uintptr_t(HugePage - 1);
   const std::uintptr_t end = (at + bytes) & ~std::uintptr_t(HugePage - 1);

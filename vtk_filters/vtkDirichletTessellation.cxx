@@ -99,6 +99,7 @@ std::vector<std::int32_t> OrderByPointId(const tessera::UninitializedVector<std:
       order[next++] = k;
     }
   }
+  order.resize(next); // keys.size(): the keys are distinct
   return order;
 }
 
