@@ -205,15 +205,18 @@ struct ThiessenArealAverage::State
       return this->MarkReportingGrouped(values);
     }
     // Without branches on the values: in a real record, which gauges report is close to random,
-    // and a mispredicted branch per gauge was most of this loop's time.
+    // and a mispredicted branch per gauge was most of this loop's time. Through local pointers: a
+    // char store may alias anything, so wanted[g] made the compiler reload the vectors' data
+    // pointers at every gauge (a fifth of a 100k-gauge step's own time went to this loop).
+    const double* const value = values.data();
+    char* const mark = wanted.data();
     int used = 0;
     bool infinite = false;
     for (std::size_t g = 0; g < n; ++g)
     {
-      const double value = values[g];
-      const bool reported = !std::isnan(value);
-      infinite |= std::isinf(value);
-      wanted[g] = static_cast<char>(reported);
+      const bool reported = !std::isnan(value[g]);
+      infinite |= std::isinf(value[g]);
+      mark[g] = static_cast<char>(reported);
       used += reported;
     }
     if (infinite)
