@@ -59,10 +59,7 @@ void* AllocateLarge(std::size_t bytes)
   {
     throw std::bad_alloc();
   }
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  // Advice only: where huge pages are off or none is free, the pages are ordinary ones.
-  madvise(memory, rounded, MADV_HUGEPAGE);
-#endif
+  AdviseLargePages(memory, rounded); // the whole block: it is aligned and rounded
   return memory;
 }
 

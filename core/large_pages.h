@@ -34,17 +34,33 @@ void* AllocateLarge(std::size_t bytes);
 /// coordinates are read at random by id, and on 4 KiB pages nearly every read missed the TLB.
 void AdviseLargePages(const void* begin, std::size_t bytes);
 
-/// v.resize(n), its storage first advised onto huge pages when it has to grow (see
-/// AdviseLargePages): the new elements are then written on huge pages, not 4 KiB ones.
+/// v.reserve(n), the storage advised onto huge pages when it has to grow (see AdviseLargePages):
+/// the elements written into it later are then written on huge pages, not 4 KiB ones.
 template<class T, class Allocator>
-void ResizeOnLargePages(std::vector<T, Allocator>& v, std::size_t n)
+void ReserveOnLargePages(std::vector<T, Allocator>& v, std::size_t n)
 {
   if (n > v.capacity())
   {
     v.reserve(n);
     AdviseLargePages(v.data(), v.capacity() * sizeof(T));
   }
+}
+
+/// v.resize(n) on storage reserved by ReserveOnLargePages.
+template<class T, class Allocator>
+void ResizeOnLargePages(std::vector<T, Allocator>& v, std::size_t n)
+{
+  ReserveOnLargePages(v, n);
   v.resize(n);
+}
+
+/// v.assign(n, value) on storage reserved by ReserveOnLargePages (one pass over the elements).
+template<class T, class Allocator>
+void AssignOnLargePages(std::vector<T, Allocator>& v, std::size_t n, const T& value)
+{
+  v.clear();
+  ReserveOnLargePages(v, n);
+  v.resize(n, value);
 }
 
 } // namespace tessera

@@ -181,8 +181,7 @@ void TessellationDual::ComputeTriangleCentres(std::vector<std::uint8_t>& cocircu
   // Known free of co-circular triangles: no tests at all (LabelFaces has nothing to do).
   if (!this->Tess.KnownFreeOfCocircularTriangles())
   {
-    cocircular.clear();
-    ResizeOnLargePages(cocircular, std::size_t(triangles)); // zeros
+    AssignOnLargePages(cocircular, std::size_t(triangles), std::uint8_t(0));
     RunChunks(bounds.size() - 1,
       [&](std::size_t k) { this->CocircularEdgesOf(bounds[k], bounds[k + 1], cocircular.data()); });
   }

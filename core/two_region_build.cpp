@@ -174,8 +174,8 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first,
   std::vector<std::int32_t> sides[2];
   for (std::vector<std::int32_t>& side : sides)
   {
-    side.reserve(std::size_t(end - first)); // either may get them all; only what is used is touched
-    AdviseLargePages(side.data(), side.capacity() * sizeof(std::int32_t));
+    // Either may get them all; only what is used is touched.
+    ReserveOnLargePages(side, std::size_t(end - first));
   }
   // Serial insertions of scattered points, each walking from the last: along the curve.
   const auto insertAlongCurve = [&](std::vector<std::int32_t>& ids)

@@ -83,23 +83,20 @@ std::vector<std::int32_t> OrderByPointId(const tessera::UninitializedVector<std:
   std::size_t idLimit)
 {
   std::vector<std::int32_t> slot; // written at random: on huge pages
-  tessera::ResizeOnLargePages(slot, idLimit);
-  std::fill(slot.begin(), slot.end(), -1);
+  tessera::AssignOnLargePages(slot, idLimit, std::int32_t(-1));
   for (std::size_t k = 0; k < keys.size(); ++k)
   {
     slot[keys[k]] = static_cast<std::int32_t>(k);
   }
   std::vector<std::int32_t> order;
-  tessera::ResizeOnLargePages(order, keys.size());
-  std::size_t next = 0;
+  tessera::ReserveOnLargePages(order, keys.size());
   for (std::int32_t k : slot)
   {
     if (k >= 0)
     {
-      order[next++] = k;
+      order.push_back(k);
     }
   }
-  order.resize(next); // keys.size(): the keys are distinct
   return order;
 }
 
@@ -304,8 +301,7 @@ public:
   void Count(int half)
   {
     std::vector<std::int32_t>& count = this->Slots[half];
-    count.clear();                                     // counted at random: on huge pages
-    tessera::ResizeOnLargePages(count, this->IdLimit); // zeros
+    tessera::AssignOnLargePages(count, this->IdLimit, std::int32_t(0)); // counted at random
     const std::int32_t* pairs = this->Graph.Pairs.data();
     const vtkIdType begin = this->HalfBegin(half), end = this->HalfBegin(half + 1);
     // Point ids are random in space: the counters are requested a few pairs ahead.

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <cstdio>
@@ -126,6 +127,21 @@ TEST(LargePages, ResizeOnLargePagesKeepsVectorSemantics)
   AdviseLargePages(reinterpret_cast<const char*>(values.data()) + 1, 12345);
 }
 
+TEST(LargePages, AssignAndReserveOnLargePagesKeepVectorSemantics)
+{
+  std::vector<std::int32_t> values{ 7, 8, 9 };
+  const std::size_t n = 5 * (std::size_t(2) << 20) / sizeof(std::int32_t);
+  AssignOnLargePages(values, n, std::int32_t(-1));
+  ASSERT_EQ(values.size(), n);
+  EXPECT_EQ(std::count(values.begin(), values.end(), -1), std::ptrdiff_t(n)); // old ones too
+  AssignOnLargePages(values, 4, std::int32_t(5));                             // within the capacity
+  EXPECT_EQ(values, std::vector<std::int32_t>(4, 5));
+  std::vector<std::int32_t> reserved{ 1 };
+  ReserveOnLargePages(reserved, n);
+  EXPECT_GE(reserved.capacity(), n);
+  EXPECT_EQ(reserved, std::vector<std::int32_t>{ 1 }); // contents kept, nothing added
+}
+
 TEST(LargePages, ResizeOnLargePagesAdvisesTheWholeHugePagesInside)
 {
   if (!HugePagesOnRequest())
@@ -137,6 +153,11 @@ TEST(LargePages, ResizeOnLargePagesAdvisesTheWholeHugePagesInside)
   const std::string middle = MappingFlags(values.data() + values.size() / 2);
   ASSERT_FALSE(middle.empty()) << "no mapping found for the vector's storage";
   EXPECT_NE(middle.find(" hg"), std::string::npos) << middle;
+  // So is storage reserved for elements pushed later.
+  std::vector<double> pushed;
+  ReserveOnLargePages(pushed, std::size_t(3) << 20);
+  const std::string reservedFlags = MappingFlags(pushed.data() + (std::size_t(3) << 19));
+  EXPECT_NE(reservedFlags.find(" hg"), std::string::npos) << reservedFlags;
   // A plain vector of the same size is not advised (the check can tell the two apart).
   std::vector<double> plain(std::size_t(3) << 20);
   const std::string plainFlags = MappingFlags(plain.data() + plain.size() / 2);
