@@ -7,7 +7,9 @@
 //
 // Tessera's filters and CGAL run `repeats` times each (ten times as often at 10^4 points), in
 // turn, on the same input, and the table shows the median run: this VM's single runs vary by
-// 15-25%. vtkDelaunay2D and vtkVoronoi2D run once (they take seconds to minutes).
+// 15-25%. vtkDelaunay2D and vtkVoronoi2D run once (they take seconds to minutes). From 10^6
+// points on, a run's time also depends on how long ago the memory it maps afresh was freed: a
+// guest that reports free memory to its host pays the host's faults on it (README, Benchmarks).
 //
 // vtkDirichletTessellation is timed twice: "tiles+areas" with ComputeContiguityGraph off (output
 // 0 only: the tiles with their areas, which the tiles target names) and
