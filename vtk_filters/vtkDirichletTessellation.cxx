@@ -21,6 +21,7 @@
 #include "dirichlet_tessellation.h"
 #include "errors.h"
 #include "large_pages.h"
+#include "order_by_key.h"
 #include "parallel_chunks.h"
 #include "thiessen_sweep.h"
 #include "tiles.h"
@@ -76,30 +77,6 @@ TessellationResult RunBrasselReif(const tessera::Window& window,
     std::move(sweep.Duplicates) };
 }
 
-/// Positions 0..count-1 ordered by key (keys are distinct point ids below idLimit): a counting
-/// sort, so that both engines' results come out in ascending point id whatever order their cores
-/// list them in.
-std::vector<std::int32_t> OrderByPointId(const tessera::UninitializedVector<std::int32_t>& keys,
-  std::size_t idLimit)
-{
-  std::vector<std::int32_t> slot; // written at random: on huge pages
-  tessera::AssignOnLargePages(slot, idLimit, std::int32_t(-1));
-  for (std::size_t k = 0; k < keys.size(); ++k)
-  {
-    slot[keys[k]] = static_cast<std::int32_t>(k);
-  }
-  std::vector<std::int32_t> order;
-  tessera::ReserveOnLargePages(order, keys.size());
-  for (std::int32_t k : slot)
-  {
-    if (k >= 0)
-    {
-      order.push_back(k);
-    }
-  }
-  return order;
-}
-
 /// The cell arrays use 32-bit storage, which VTK reads like the 64-bit kind: half the memory to
 /// fill. Both engines hold fewer than INT32_MAX / 8 points, so fewer than 2^31 ids fit.
 void CheckFitsInt32(vtkIdType count, const char* what)
@@ -130,7 +107,9 @@ public:
     , Output(output)
     , TileCount(static_cast<vtkIdType>(tiles.PointIds.size()))
     , VertexCount(static_cast<vtkIdType>(tiles.Vertices.size()))
-    , Order(OrderByPointId(tiles.PointIds, static_cast<std::size_t>(input->GetNumberOfPoints())))
+    , Order(tessera::OrderByDistinctKeys(tiles.PointIds.data(),
+        tiles.PointIds.size(),
+        static_cast<std::size_t>(input->GetNumberOfPoints())))
   {
     const vtkIdType idCount = static_cast<vtkIdType>(tiles.VertexIds.size());
     CheckFitsInt32(idCount, "tile vertices");
