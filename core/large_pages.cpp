@@ -25,7 +25,8 @@ constexpr std::size_t HugePage = std::size_t(2) << 20;
 /// block soon reuses its heap for everything smaller. Huge-page blocks, 2 MiB aligned, never got
 /// there: aligned_alloc asks for twice the alignment, more than the threshold their own frees
 /// set, so every one was a fresh mapping. At 10^4 points the tiles filter mapped, faulted and
-/// unmapped three 4 MiB blocks per run (0.61-0.77 us/pt, against 0.44-0.64 with this).
+/// unmapped three 4 MiB blocks per run: 0.59-0.68 us/pt, against 0.47-0.55 with this, in
+/// alternating runs.
 ///
 /// The cost: up to 62 MiB of freed memory at the top of the heap stays with the process, as it
 /// would after the process freed any 31 MiB block. A threshold fixed by mallopt (or

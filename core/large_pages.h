@@ -26,6 +26,8 @@ constexpr std::size_t LargePageBytes = std::size_t(256) << 10;
 
 /// bytes of memory, 2 MiB aligned and advised to be backed by huge pages when bytes >=
 /// LargePageBytes (plain malloc otherwise). Release it with std::free. Throws std::bad_alloc.
+/// The first large block raises glibc's mmap threshold for the process, once, so that freed
+/// blocks up to 31 MiB are reused from the heap rather than mapped afresh (large_pages.cpp).
 void* AllocateLarge(std::size_t bytes);
 
 /// Advises the whole 2 MiB pages inside [begin, begin + bytes) to be backed by huge pages when
@@ -35,7 +37,8 @@ void* AllocateLarge(std::size_t bytes);
 void AdviseLargePages(const void* begin, std::size_t bytes);
 
 /// v.reserve(n), the storage advised onto huge pages when it has to grow (see AdviseLargePages):
-/// the elements written into it later are then written on huge pages, not 4 KiB ones.
+/// the elements written into it later are then written on huge pages, not 4 KiB ones, wherever
+/// its memory is fresh (memory the heap reuses keeps the pages it already has).
 template<class T, class Allocator>
 void ReserveOnLargePages(std::vector<T, Allocator>& v, std::size_t n)
 {
