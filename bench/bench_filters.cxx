@@ -2,8 +2,10 @@
 // CGAL's Delaunay_triangulation_2 (exact predicates, inexact constructions, range insert),
 // vtkDelaunay2D and vtkVoronoi2D (where they finish within a minute).
 //
-//   bench_filters [max_points] [repeats]   (defaults 1000000 and 5) prints two Markdown tables:
-//   seconds and ratios, then microseconds per point with each column's flatness over the sizes
+//   bench_filters [max_points] [repeats]   (defaults 1000000 and 5) prints three Markdown tables:
+//   seconds and ratios (of medians), microseconds per point with each column's flatness over the
+//   sizes, and each filter's time over CGAL's run by run (median, range, and the runs that meet
+//   the target: 0.5 for the Delaunay filter, 1.0 for the tiles)
 //
 // Tessera's filters and CGAL run `repeats` times each (ten times as often at 10^4 points), in
 // turn, on the same input, and the table shows the median run: this VM's single runs vary by
@@ -122,6 +124,38 @@ std::string Cell(double seconds)
   return text;
 }
 
+/// One filter's time over CGAL's, run by run (each pair ran seconds apart, so the VM's swings in
+/// speed, up to 2x within minutes, mostly cancel): the median, the range, and in how many runs the
+/// ratio was at most `target`.
+std::string PairedRatios(const std::vector<double>& ours,
+  const std::vector<double>& cgal,
+  double target)
+{
+  if (cgal.size() != ours.size() || cgal.empty())
+  {
+    return "-";
+  }
+  std::vector<double> ratios;
+  for (std::size_t k = 0; k < ours.size(); ++k)
+  {
+    ratios.push_back(ours[k] / cgal[k]);
+  }
+  const std::size_t met = static_cast<std::size_t>(
+    std::count_if(ratios.begin(), ratios.end(), [&](double r) { return r <= target; }));
+  const auto [low, high] = std::minmax_element(ratios.begin(), ratios.end());
+  char text[96];
+  std::snprintf(text,
+    sizeof text,
+    "%.3g (%.3g-%.3g), %zu of %zu at most %.2g",
+    Median(ratios),
+    *low,
+    *high,
+    met,
+    ratios.size(),
+    target);
+  return text;
+}
+
 /// The medians again in microseconds per point, and the flatness of each column over the sizes
 /// (largest over smallest per-point time; the target is at most 1.3 from 10^4 to 10^7).
 void PrintPerPoint(const std::vector<vtkIdType>& sizes, const std::vector<std::vector<double>>& us)
@@ -168,6 +202,7 @@ int main(int argc, char** argv)
   // Microseconds per point of each column of the second table, per size, for its flatness row.
   std::vector<vtkIdType> sizes;
   std::vector<std::vector<double>> perPoint(4);
+  std::vector<std::string> pairedRows; // the third table's rows
   for (vtkIdType n = 10000; n <= maxPoints; n *= 10)
   {
     auto input = UniformPoints(n, 7);
@@ -200,6 +235,10 @@ int main(int argc, char** argv)
     const double tilesAlone = Median(tilesOnlyRuns);
     const double tessellation = Median(tessellationRuns);
     const double cgal = cgalRuns.empty() ? -1.0 : Median(cgalRuns);
+    pairedRows.push_back("| " + std::to_string(n) + " | " +
+      PairedRatios(delaunayRuns, cgalRuns, 0.5) + " | " +
+      PairedRatios(tilesOnlyRuns, cgalRuns, 1.0) + " | " +
+      PairedRatios(tessellationRuns, cgalRuns, 1.0) + " |");
     // vtkDelaunay2D takes ~28 s at 100k points here: run it up to 100k only.
     const double delaunay2d = n <= 100000 ? TimeFilter<vtkDelaunay2D>(input, peerCells) : -1.0;
     // vtkVoronoi2D takes ~22 s at 10^6 points and ~250 s at 10^7: run it up to 10^6 only.
@@ -226,5 +265,11 @@ int main(int argc, char** argv)
     }
   }
   PrintPerPoint(sizes, perPoint);
+  std::printf("\n| points | Delaunay / CGAL, run by run | tiles / CGAL, run by run | "
+              "tiles+graph / CGAL, run by run |\n|---|---|---|---|\n");
+  for (const std::string& row : pairedRows)
+  {
+    std::printf("%s\n", row.c_str());
+  }
   return 0;
 }
