@@ -37,10 +37,8 @@ void RaiseMallocThresholdOnce()
   static const bool raised = []()
   {
     // The compiler may drop a malloc whose block is never used: the volatile keeps this one.
-    static void* volatile block = nullptr;
-    block = std::malloc(std::size_t(31) << 20);
+    void* volatile block = std::malloc(std::size_t(31) << 20);
     std::free(block);
-    block = nullptr;
     return true;
   }();
   (void)raised;
