@@ -88,14 +88,30 @@ std::string ListNames(std::size_t count, const NameOf& nameOf)
   return out.str();
 }
 
-/// The column of the observations table, or an InputError naming it and what it should hold.
-vtkAbstractArray* ObservationColumn(vtkTable* table, const std::string& column, const char* holds)
+/// The names of a table's columns, for messages: "a, b, c", or "none".
+std::string ColumnNames(vtkTable* table)
+{
+  std::string names;
+  for (vtkIdType c = 0; c < table->GetNumberOfColumns(); ++c)
+  {
+    const char* name = table->GetColumnName(c);
+    names += (c ? ", " : "") + std::string(name ? name : "(unnamed)");
+  }
+  return names.empty() ? "none" : names;
+}
+
+/// The column of the observations table, or an InputError naming it, the property that names it
+/// and what it should hold, and the columns the table has (the usual mistake is a name).
+vtkAbstractArray* ObservationColumn(vtkTable* table,
+  const std::string& column,
+  const char* property,
+  const char* holds)
 {
   vtkAbstractArray* array = table->GetColumnByName(column.c_str());
   if (!array || array->GetNumberOfComponents() != 1)
   {
-    throw tessera::InputError(
-      "the observations table has no column '" + column + "' (" + holds + ")");
+    throw tessera::InputError("the observations table has no column '" + column + "' (" + property +
+      ": " + holds + "); its columns are " + ColumnNames(table));
   }
   return array;
 }
@@ -199,11 +215,12 @@ public:
     , MonthColumn(monthColumn)
     , Times(ObservationColumn(table,
         timeColumn,
+        "TimeColumn",
         monthColumn.empty() ? "numbers, or dates as text such as 1963-08 or 1963-08-16" : "years"))
   {
     if (!monthColumn.empty())
     {
-      this->Months.emplace(ObservationColumn(table, monthColumn, "months 1 .. 12"));
+      this->Months.emplace(ObservationColumn(table, monthColumn, "MonthColumn", "months 1 .. 12"));
     }
   }
 
@@ -309,7 +326,7 @@ ObservationRows ReadRows(vtkTable* table,
     return rows; // no steps: Build says so, even when the columns are missing too
   }
   vtkAbstractArray* stations =
-    ObservationColumn(table, stationColumn, "station ids, numbers or text");
+    ObservationColumn(table, stationColumn, "StationColumn", "station ids, numbers or text");
   const RowTimeReader timeOf(table, timeColumn, monthColumn);
   std::vector<std::string> rowNames(static_cast<std::size_t>(count));
   for (std::size_t r = 0; r < rowNames.size(); ++r)
@@ -394,8 +411,8 @@ std::vector<double> RowValues(vtkTable* table,
   const std::string& stationColumn,
   const std::string& valueColumn)
 {
-  const NumberColumn values(
-    ObservationColumn(table, valueColumn, "numbers; NaN, NA or an empty field where missing"));
+  const NumberColumn values(ObservationColumn(
+    table, valueColumn, "ValueColumn", "numbers; NaN, NA or an empty field where missing"));
   vtkAbstractArray* stations = table->GetColumnByName(stationColumn.c_str());
   std::vector<double> rowValues(steps.StepOfRow.size(), std::numeric_limits<double>::quiet_NaN());
   for (std::size_t r = 0; r < rowValues.size(); ++r)
@@ -710,13 +727,14 @@ int vtkThiessenArealAverage::RequestInformation(vtkInformation*,
       outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
     }
   }
-  catch (const std::exception& e)
+  catch (const std::exception&)
   {
-    vtkErrorMacro(<< e.what());
-    // RequestData will not run: without this the outputs would still show the last good input's
-    // results as if they were this input's.
+    // No time steps, and no error yet: RequestData reads the same inputs and reports it. ParaView
+    // asks for the information as soon as the filter is made, before the user has set the
+    // columns (the defaults, time and value, are seldom a file's names), and an error then would
+    // greet every new filter. Until RequestData runs, the outputs must not show the last good
+    // input's results as if they were this input's.
     this->DiscardResults(outputVector);
-    return 0;
   }
   return 1;
 }

@@ -481,6 +481,37 @@ def test_bad_dates_and_months_are_named():
         assert_that(f.GetOutputDataObject(1).GetNumberOfRows() == 0, f"{settings}: output not empty")
 
 
+def test_columns_not_yet_set_give_no_error_until_the_update():
+    """ParaView asks for the pipeline information as soon as the filter is made, before its
+    columns are set: that gives no error and no time step. The update then names the missing
+    column, the property that names it and the columns the table has; the right names work."""
+    coords = [(0.25, 0.5), (0.75, 0.5)]
+    f = vtkThiessenArealAverage()
+    messages = messages_of(f)
+    f.SetGaugesData(gauges_polydata(coords, ["a", "b"]))
+    f.SetCatchmentData(polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]]))
+    f.SetObservationsData(text_table([("a", "2000-01", "2"), ("b", "2000-01", "4")]))
+    f.UpdateInformation()
+    steps = f.GetOutputInformation(0).Get(vtkStreamingDemandDrivenPipeline.TIME_STEPS())
+    assert_that(not messages and not steps, f"information with the default columns: {messages}, {steps}")
+    f.Update(1)
+    assert_that(len(messages) == 1 and "no column 'time' (TimeColumn:" in messages[0]
+                and "its columns are station_id, date, value" in messages[0],
+                f"the update with the default time column: {messages}")
+    assert_that(output_sizes(f) == (0, 0, 0, 0), f"outputs after the error: {output_sizes(f)}")
+    messages.clear()
+    f.SetTimeColumn("date")
+    f.SetValueColumn("precip")
+    f.Update(1)
+    assert_that(len(messages) == 1 and "no column 'precip' (ValueColumn:" in messages[0],
+                f"a value column the table lacks: {messages}")
+    messages.clear()
+    f.SetValueColumn("value")
+    f.Update(1)
+    assert_that(not messages and summary_column(f, "ArealMean") == [3.0],
+                f"the right columns: {messages}, {summary_column(f, 'ArealMean')}")
+
+
 def text_table(rows):
     """A table of text columns station_id, date, value from (station, date, value) rows: what a
     CSV reader gives when missing-value markers stand among the numbers."""
@@ -875,6 +906,7 @@ if __name__ == "__main__":
          test_text_values_with_missing_markers,
          test_a_failed_update_leaves_no_earlier_result,
          test_review_cases_of_gauges_and_errors,
+         test_columns_not_yet_set_give_no_error_until_the_update,
          test_rows_that_cannot_be_used_make_no_step_and_are_listed,
          test_weights_table_lists_every_step,
          test_tiles_of_a_catchment_with_a_hole_or_a_bay,
