@@ -218,17 +218,6 @@ class Progress:
         self.stopped = True
 
 
-def vtk_message_text(message):
-    """The text of a VTK error or warning as an ErrorEvent or WarningEvent observer receives it
-    ("ERROR: In file.cxx, line N\nvtkClass (0x...): text\n\n"), on one line, without the source
-    line and the object's class and address."""
-    lines = [line.strip() for line in message.strip().splitlines()]
-    if lines and re.match(r"(ERROR|Warning|Generic Warning): In ", lines[0]):
-        lines = lines[1:]
-    text = " ".join(line for line in lines if line)
-    return re.sub(r"^\w+ \(0x[0-9a-fA-F]+\): ", "", text)
-
-
 class InputFiles:
     """Where the filter's inputs came from: its messages, which name gauges by index and
     observation rows by table row (both from 0), become lines naming the file and, for a gauge or a
@@ -293,36 +282,27 @@ class InputFiles:
 class FilterMessages:
     """Catches the filter's errors and warnings. Its warnings are printed as they come, each on a
     line of its own (InputFiles.warning); check() ends the script with one line for its error
-    (InputFiles.error). A VTK object with an ErrorEvent or WarningEvent observer passes its
-    messages to the observer instead of printing them (as a log line with the time, thread and
-    object address), so the filter's are caught here, and the executive's follow-up ("Algorithm
-    ... returned failure for request: ...", with a dump of the request) is kept back."""
+    (InputFiles.error). Caught by csv_input.catch_vtk_messages, none of them is printed as VTK's
+    log line, and the executive's follow-up ("Algorithm ... returned failure for request: ...",
+    with a dump of the request) is kept until check()."""
 
     def __init__(self, average, files, progress):
-        from vtkmodules.util.misc import calldata_type
-        from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
-
         self.files, self.progress = files, progress
         self.errors, self.executive_errors = [], []
 
-        @calldata_type(VTK_STRING)
-        def on_error(caller, event, message):
+        def on_error(text):
             progress.stop()
-            self.errors.append(vtk_message_text(message))
+            self.errors.append(text)
 
-        @calldata_type(VTK_STRING)
-        def on_warning(caller, event, message):
+        def on_warning(text):
             progress.end_line()
-            print(files.warning(vtk_message_text(message)), file=sys.stderr, flush=True)
+            print(files.warning(text), file=sys.stderr, flush=True)
 
-        @calldata_type(VTK_STRING)
-        def on_executive_error(caller, event, message):
+        def on_executive_error(text):
             progress.stop()
-            self.executive_errors.append(vtk_message_text(message))
+            self.executive_errors.append(text)
 
-        average.AddObserver(vtkCommand.ErrorEvent, on_error)
-        average.AddObserver(vtkCommand.WarningEvent, on_warning)
-        average.GetExecutive().AddObserver(vtkCommand.ErrorEvent, on_executive_error)
+        csv_input.catch_vtk_messages(average, on_error, on_warning, on_executive_error)
 
     def check(self, failed=False):
         """Ends the script with one line if the filter (or its executive) gave an error since it was
@@ -493,21 +473,36 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path):
     plt.close(fig)
 
 
+def monthly_series(rows):
+    """The time series areal_mean.png plots, from write_summary's rows: (times, means, gauges
+    reporting), a point for every month from the first row's to the last's. A month without an
+    areal mean (no gauge reported, or no row: 0 gauges) has mean NaN, where matplotlib breaks the
+    line: dropping it would draw the line straight across the gap as if it had been measured."""
+    by_month = {(y, m): (used, mean) for y, m, used, _, mean in rows}
+    first, last = min(by_month), max(by_month)
+    months = [(y, m) for y in range(first[0], last[0] + 1) for m in range(1, 13) if first <= (y, m) <= last]
+    values = [by_month.get(month, (0, math.nan)) for month in months]
+    return [decimal_time(y, m) for y, m in months], [mean for _, mean in values], [used for used, _ in values]
+
+
 def plot_series(rows, path):
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    t = [decimal_time(y, m) for y, m, _, _, mean in rows if not math.isnan(mean)]
-    v = [mean for *_, mean in rows if not math.isnan(mean)]
-    used = [u for _, _, u, _, _ in rows]
+    t, v, used = monthly_series(rows)
+    # A month with a mean between two without is no segment of the line: a dot shows it.
+    alone = [i for i in range(len(v)) if not math.isnan(v[i])
+             and (i == 0 or math.isnan(v[i - 1])) and (i == len(v) - 1 or math.isnan(v[i + 1]))]
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(11, 6), sharex=True,
                                       gridspec_kw={"height_ratios": [3, 1]})
     top.plot(t, v, linewidth=0.6, color="tab:blue")
+    top.plot([t[i] for i in alone], [v[i] for i in alone], linestyle="none", marker=".", markersize=2,
+             color="tab:blue")
     top.set_ylabel("Thiessen areal mean (data units)")
     top.set_title(f"Monthly precipitation, Thiessen areal mean {rows[0][0]}-{rows[-1][0]}")
-    bottom.plot([decimal_time(y, m) for y, m, *_ in rows], used, linewidth=0.6, color="tab:grey")
+    bottom.plot(t, used, linewidth=0.6, color="tab:grey")
     bottom.set_ylabel("gauges reporting")
     bottom.set_xlabel("year")
     fig.tight_layout()

@@ -1,12 +1,19 @@
 """Reading the examples' CSV files the way a user's own files need: the named columns are checked
 before any row is read, a value that is not a number is named with its file, line and column, and
 missing values (an empty field, NA, N/A, NaN, null, in any case) are told apart from bad ones.
-Every failure ends the script with one line naming what is wrong and where, never a traceback."""
+Every failure ends the script with one line naming what is wrong and where, never a traceback;
+catch_vtk_messages() and vtk_message_text() give a script the VTK filters' messages as text, so
+that it reports a value the filters reject in such a line too, not as VTK's log.
 
+A module imported by the other examples (colorado_areal_precipitation.py, project_gauges.py,
+ridge_grouping.py, beside it), not a script: run, it only says so."""
+
+import argparse
 import codecs
 import csv
 import io
 import math
+import re
 import sys
 
 MISSING = frozenset(("", "na", "n/a", "nan", "null"))
@@ -126,3 +133,50 @@ def import_tessera():
         fail(f"cannot import tessera ({error}): run with Debian's /usr/bin/python3 and "
              "PYTHONPATH=build/python after scripts/build (scripts/demo does both)")
     return tessera
+
+
+def vtk_message_text(message):
+    """The text of a VTK error or warning as an ErrorEvent or WarningEvent observer receives it
+    ("ERROR: In file.cxx, line N\nvtkClass (0x...): text\n\n"), on one line, without the source
+    line and the object's class and address."""
+    lines = [line.strip() for line in message.strip().splitlines()]
+    if lines and re.match(r"(ERROR|Warning|Generic Warning): In ", lines[0]):
+        lines = lines[1:]
+    text = " ".join(line for line in lines if line)
+    return re.sub(r"^\w+ \(0x[0-9a-fA-F]+\): ", "", text)
+
+
+def catch_vtk_messages(algorithm, on_error, on_warning=None, on_executive_error=None):
+    """Passes the text (vtk_message_text) of each error of the algorithm to on_error, of each of its
+    warnings to on_warning and of each error of its executive to on_executive_error. A VTK object
+    with an ErrorEvent or WarningEvent observer passes its messages to the observer instead of
+    printing them (as a log line with the time, thread and object address); the executive's error
+    is the follow-up "Algorithm ... returned failure for request: ..." with a dump of the request,
+    kept back when on_executive_error is None. Without on_warning, warnings print as VTK prints
+    them."""
+    from vtkmodules.util.misc import calldata_type
+    from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand
+
+    def observer(handler):
+        @calldata_type(VTK_STRING)
+        def on_message(caller, event, message):
+            if handler is not None:
+                handler(vtk_message_text(message))
+        return on_message
+
+    algorithm.AddObserver(vtkCommand.ErrorEvent, observer(on_error))
+    if on_warning is not None:
+        algorithm.AddObserver(vtkCommand.WarningEvent, observer(on_warning))
+    algorithm.GetExecutive().AddObserver(vtkCommand.ErrorEvent, observer(on_executive_error))
+
+
+def main(argv=None):
+    # `python3 csv_input.py` with or without --help: what the module is for, since the README's
+    # "every script takes --help" reaches this file too.
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.parse_args(argv)
+    parser.print_help()
+
+
+if __name__ == "__main__":
+    main()

@@ -14,6 +14,7 @@ Run it with Debian's /usr/bin/python3 and PYTHONPATH pointing to build/python (s
 import argparse
 import csv
 import os
+import re
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -32,7 +33,8 @@ PROJECTIONS = {
 
 
 def read_gauges(path):
-    """The gauges as vtkPolyData (one vertex each); names the row of any bad coordinate."""
+    """The gauges as vtkPolyData (one vertex each), and the stations file's line of each gauge
+    (gauge i is the file's i-th record); names the row of any coordinate that is not a number."""
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints, vtkStringArray
     from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 
@@ -44,7 +46,9 @@ def read_gauges(path):
     lon_array, lat_array = vtkDoubleArray(), vtkDoubleArray()
     lon_array.SetName("Longitude")
     lat_array.SetName("Latitude")
+    lines = []
     for line, row, station, name, lon, lat in csv_input.gauges(path):
+        lines.append(line)
         missing_elevation = csv_input.is_missing(row.get("elev_m"))
         elev = 0.0 if missing_elevation else csv_input.number(row, "elev_m", path, line)
         points.InsertNextPoint(lon, lat, elev)
@@ -61,7 +65,19 @@ def read_gauges(path):
     gauges.SetVerts(verts)
     for array in (ids, names, lon_array, lat_array):
         gauges.GetPointData().AddArray(array)
-    return gauges
+    return gauges, lines
+
+
+def projection_error(text, path, gauges, lines):
+    """The one line that reports the projection's error `text`. The filter names a bad gauge as
+    "point N (lon, lat)" (N counted from 0: the file's N-th record), which becomes the stations
+    file's line and the gauge's station; any other error names the file."""
+    point = re.match(r"point (\d+) (.*)", text)
+    if point and int(point.group(1)) < len(lines):
+        g = int(point.group(1))
+        station = gauges.GetPointData().GetAbstractArray("StationId").GetValue(g)
+        return f"{path}:{lines[g]}: station {station} at {point.group(2)}"
+    return f"{path}: cannot project the gauges: {text}"
 
 
 def main(argv=None):
@@ -77,14 +93,25 @@ def main(argv=None):
 
     vtkGeographicProjection = csv_input.import_tessera().vtkGeographicProjection
 
-    gauges = read_gauges(args.stations)
+    gauges, lines = read_gauges(args.stations)
+    if gauges.GetNumberOfPoints() == 0:
+        csv_input.fail(f"{args.stations}: no gauges to project (the file has no rows)")
     projection = vtkGeographicProjection()
     getattr(projection, PROJECTIONS[args.projection])()
+    # A gauge the projection rejects (a latitude beyond 90, too far from a UTM zone) ends the run
+    # with one line naming its line in the file, as the main example does, not VTK's log and the
+    # executive's dump of its request.
+    errors, executive_errors = [], []
+    csv_input.catch_vtk_messages(projection, errors.append, on_executive_error=executive_errors.append)
     projection.SetInputData(gauges)
     projection.Update()
     projected = projection.GetOutput()
+    if errors:
+        csv_input.fail(projection_error(errors[0], args.stations, gauges, lines))
+    if executive_errors:
+        csv_input.fail("the projection failed: " + re.sub(r" for request: .*", "", executive_errors[0]))
     if projected.GetNumberOfPoints() != gauges.GetNumberOfPoints():
-        sys.exit("projection failed (see the error above)")
+        csv_input.fail("the projection failed and gave no message")
 
     os.makedirs(args.out, exist_ok=True)
     writer = vtkXMLPolyDataWriter()

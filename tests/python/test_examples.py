@@ -281,11 +281,12 @@ def write_lake_basin(directory):
     return paths
 
 
-def import_example():
-    sys.path.insert(0, EXAMPLES)
-    import colorado_areal_precipitation
+def import_example(name="colorado_areal_precipitation"):
+    """The module of examples/<name>.py, imported as the examples import csv_input."""
+    import importlib
 
-    return colorado_areal_precipitation
+    sys.path.insert(0, EXAMPLES)
+    return importlib.import_module(name)
 
 
 def test_the_map_of_another_place_with_a_lake():
@@ -346,6 +347,45 @@ def test_a_month_without_reports_still_gets_its_map():
         assert_that(got == [("1", "2", got[0][2]), ("2", "0", ""), ("3", "2", got[2][2])] and got[0][2] and got[2][2],
                     f"areal_mean.csv: {got}")
         assert_that("2001-02: areal mean nan, 0 gauges reported, 0 weighted" in stdout, f"the empty month: {stdout}")
+
+
+def test_the_time_series_breaks_at_months_without_a_mean():
+    # areal_mean.png's line stops at a month where no gauge reported (an empty areal_mean) and
+    # starts again after it, rather than joining the months either side: such a month is NaN in
+    # the plotted series, and so is a month without a row at all (2002-02 here).
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    example = import_example()
+    rows = [(2001, 11, 2, 2, 1.5), (2001, 12, 0, 0, math.nan), (2002, 1, 1, 1, 2.0), (2002, 3, 1, 1, 3.0),
+            (2002, 4, 2, 1, 4.0)]
+    times, means, used = example.monthly_series(rows)
+    expected = [example.decimal_time(y, m) for y, m in ((2001, 11), (2001, 12), (2002, 1), (2002, 2), (2002, 3),
+                                                         (2002, 4))]
+    assert_that(times == expected, f"times {times}, expected {expected}")
+    shown = ["nan" if math.isnan(v) else v for v in means]
+    assert_that(shown == [1.5, "nan", 2.0, "nan", 3.0, 4.0], f"means {shown}")
+    assert_that(used == [2, 0, 1, 0, 1, 2], f"gauges reporting {used}")
+    # The figure as plot_series draws it (kept from its plt.close(fig); matplotlib.use may call
+    # plt.close("all"), passed on): the line is that series, and the lone months 2001-11 and
+    # 2002-01 (no line segment: a gap after, or on either side) are drawn as dots.
+    figures, close = [], plt.close
+    plt.close = lambda fig=None: figures.append(fig) if isinstance(fig, plt.Figure) else close(fig)
+    try:
+        with tempfile.TemporaryDirectory() as out:
+            path = os.path.join(out, "areal_mean.png")
+            example.plot_series(rows, path)
+            assert_that(is_png(path), "areal_mean.png is not a PNG file")
+    finally:
+        plt.close = close
+    line, dots = figures[0].axes[0].get_lines()
+    drawn = ["nan" if math.isnan(v) else v for v in line.get_ydata()]
+    assert_that(list(line.get_xdata()) == times and drawn == shown, f"the line: {list(line.get_xdata())}, {drawn}")
+    assert_that(list(dots.get_xdata()) == [times[0], times[2]] and list(dots.get_ydata()) == [1.5, 2.0],
+                f"the lone months: {list(dots.get_xdata())}, {list(dots.get_ydata())}")
+    close(figures[0])
 
 
 def test_ids_without_their_leading_zeros_match_as_in_the_filter():
@@ -511,7 +551,7 @@ def test_rows_of_empty_fields_are_skipped():
 def test_the_messages_map_to_files_and_lines():
     # InputFiles, on messages the files above do not give: a row error (the script checks the
     # values first), a row the script added, a message of no known kind.
-    example = import_example()
+    example, csv_input = import_example(), import_example("csv_input")
     files = example.InputFiles("s.csv", [2, 3, 5], "o.csv", [2, 4], "c.geojson")
     cases = [
         (files.error("observation row 1: 'x' in column 'precip' is not a number"),
@@ -531,11 +571,11 @@ def test_the_messages_map_to_files_and_lines():
                        "(the first is block 0 cell 3)."),
          "c.geojson: 1 cell(s) of the catchment (input 1) are not polygons or closed polylines and were ignored "
          "(the first is block 0 cell 3)."),
-        (example.vtk_message_text("ERROR: In /src/vtkThiessenArealAverage.cxx, line 815\nvtkThiessenArealAverage "
-                                  "(0x3ab42b20): gauge 3 (station 004) has an invalid longitude/latitude\n\n"),
+        (csv_input.vtk_message_text("ERROR: In /src/vtkThiessenArealAverage.cxx, line 815\nvtkThiessenArealAverage "
+                                    "(0x3ab42b20): gauge 3 (station 004) has an invalid longitude/latitude\n\n"),
          "gauge 3 (station 004) has an invalid longitude/latitude"),
-        (example.vtk_message_text("Warning: In /src/vtkThiessenArealAverage.cxx, line 980\nvtkThiessenArealAverage "
-                                  "(0x3ab42b20): 1 gauge(s) have no observation\n\n"),
+        (csv_input.vtk_message_text("Warning: In /src/vtkThiessenArealAverage.cxx, line 980\nvtkThiessenArealAverage "
+                                    "(0x3ab42b20): 1 gauge(s) have no observation\n\n"),
          "1 gauge(s) have no observation"),
     ]
     for got, expected in cases:
@@ -566,6 +606,56 @@ def test_the_other_examples_run_on_their_data():
         assert_that(status == 1 and "no column 'long', 'depth', 'mag'" in stderr, f"ridge_grouping.py: {stderr}")
 
 
+def test_project_gauges_names_a_bad_gauge_by_its_line():
+    # A gauge vtkGeographicProjection rejects ends project_gauges.py with one line naming the
+    # stations file, the gauge's line and station and the bad value, as in the main example, not
+    # VTK's log with the executive's dump nor the filter's "point N" counted from 0.
+    with tempfile.TemporaryDirectory() as out:
+        # (gauge 2 on line 5: the blank line is counted in the file, not as a gauge)
+        north = write(out, "north.csv", "station_id,lon,lat\nA,-105,39\n\nB,-104,40\nC,-0.5,95\n")
+        # Two gauges in Colorado and one in Europe: 60 degrees from the UTM zone's meridian.
+        far = write(out, "far.csv", "station_id,lon,lat\nA,-105,39\nB,-104,40\nC,20,45\n")
+        empty = write(out, "empty.csv", "station_id,lon,lat\n")
+        cases = [
+            ((), north, f"{north}:5: station C at (-0.5, 95) has a latitude beyond 90 degrees"),
+            (("--projection", "utm"), far, f"{far}:2: station A at (-105, 39) is 60 degrees of longitude from the "
+                                           "central meridian"),
+            ((), empty, f"{empty}: no gauges to project (the file has no rows)"),
+        ]
+        for arguments, stations, expected in cases:
+            status, stdout, stderr = run_example("project_gauges.py", "--out", os.path.join(out, "o"),
+                                                 "--stations", stations, *arguments)
+            what = f"project_gauges.py --stations {stations} {' '.join(arguments)}"
+            assert_that(status == 1, f"{what}: exit status {status}: {stderr}")
+            assert_without_vtk_decoration(stderr, what)
+            messages = stderr.splitlines()
+            assert_that(len(messages) == 1 and messages[0].startswith(expected),
+                        f"{what}: expected one line starting {expected!r}, got {messages}")
+            assert_that(not os.path.exists(os.path.join(out, "o")), f"{what}: wrote its outputs")
+
+
+def test_every_script_takes_help():
+    # The README's promise, csv_input.py included: it is imported by the other examples, and run
+    # (with --help or without arguments) it says so; imported, it prints nothing.
+    scripts = sorted(name for name in os.listdir(EXAMPLES) if name.endswith(".py"))
+    assert_that("csv_input.py" in scripts and len(scripts) >= 4, f"examples: {scripts}")
+    for script in scripts:
+        status, stdout, stderr = run_example(script, "--help")
+        assert_that(status == 0 and stdout.startswith(f"usage: {script}") and not stderr,
+                    f"{script} --help: exit status {status}, {stdout!r}, {stderr!r}")
+    status, stdout, stderr = run_example("csv_input.py")
+    assert_that(status == 0 and stdout.startswith("usage: csv_input.py") and not stderr,
+                f"csv_input.py without arguments: exit status {status}, {stdout!r}, {stderr!r}")
+    text = " ".join(stdout.split())
+    for fragment in ("module imported by the other examples", "colorado_areal_precipitation.py",
+                     "project_gauges.py", "ridge_grouping.py"):
+        assert_that(fragment in text, f"csv_input.py does not say {fragment!r}: {stdout!r}")
+    done = subprocess.run([sys.executable, "-c", f"import sys; sys.path.insert(0, {EXAMPLES!r}); import csv_input"],
+                          capture_output=True, text=True, timeout=60)
+    assert_that(done.returncode == 0 and not done.stdout and not done.stderr,
+                f"importing csv_input: {done.returncode} {done.stdout!r} {done.stderr!r}")
+
+
 def test_without_tessera_on_the_path_the_scripts_say_how_to_run():
     environment = dict(os.environ, PYTHONPATH="")
     done = subprocess.run([sys.executable, os.path.join(EXAMPLES, "project_gauges.py"), "--out",
@@ -579,10 +669,13 @@ if __name__ == "__main__":
     run([test_the_colorado_main_job, test_missing_values_keep_their_months, test_bad_files_are_named,
          test_the_map_of_another_place_with_a_lake,
          test_a_month_without_reports_still_gets_its_map,
+         test_the_time_series_breaks_at_months_without_a_mean,
          test_ids_without_their_leading_zeros_match_as_in_the_filter,
          test_the_filters_errors_name_the_file_and_line,
          test_the_filters_warnings_are_lines_of_their_own,
          test_rows_of_empty_fields_are_skipped,
          test_the_messages_map_to_files_and_lines,
          test_the_other_examples_run_on_their_data,
+         test_project_gauges_names_a_bad_gauge_by_its_line,
+         test_every_script_takes_help,
          test_without_tessera_on_the_path_the_scripts_say_how_to_run])
