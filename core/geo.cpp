@@ -89,6 +89,28 @@ const char* ProjectionKindName(ProjectionKind kind)
   return "Unknown";
 }
 
+bool SameProjection(const ProjectionParameters& a, const ProjectionParameters& b)
+{
+  if (a.Kind != b.Kind)
+  {
+    return false;
+  }
+  switch (a.Kind)
+  {
+    case ProjectionKind::AlbersEqualArea:
+    case ProjectionKind::LambertConformalConic:
+      return a.CentralLongitude == b.CentralLongitude &&
+        a.StandardParallel1 == b.StandardParallel1 && a.StandardParallel2 == b.StandardParallel2;
+    case ProjectionKind::TransverseMercator:
+      return a.CentralLongitude == b.CentralLongitude;
+    case ProjectionKind::UTM:
+      return a.UTMZone == b.UTMZone && a.UTMNorth == b.UTMNorth;
+    case ProjectionKind::AzimuthalEquidistant:
+      return a.CentralLongitude == b.CentralLongitude && a.CentralLatitude == b.CentralLatitude;
+  }
+  return false;
+}
+
 std::string ProjectionParameters::ToString() const
 {
   return std::string("projection=") + ProjectionKindName(this->Kind) +

@@ -46,6 +46,11 @@ struct ProjectionParameters
   static ProjectionParameters FromString(const std::string& text);
 };
 
+/// Whether two projections map every point alike: the same kind, and the same values of the
+/// fields that kind uses (records of one projection may differ in the others, e.g. lat0 of a
+/// conic fitted to the data and of one given by hand).
+bool SameProjection(const ProjectionParameters& a, const ProjectionParameters& b);
+
 /// The shortest longitude arc holding every longitude, and the latitude range.
 struct GeographicExtent
 {

@@ -14,6 +14,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
+#include "vtkStringArray.h"
 
 #include "errors.h"
 #include "large_pages.h"
@@ -122,6 +123,39 @@ tessera::Window Representable(tessera::Window window)
   return window;
 }
 } // namespace
+
+const char* const ProjectionRecordName = "TesseraProjection";
+
+std::string ReadProjectionRecord(vtkDataObject* data)
+{
+  vtkFieldData* fd = data ? data->GetFieldData() : nullptr;
+  auto* record =
+    fd ? vtkStringArray::SafeDownCast(fd->GetAbstractArray(ProjectionRecordName)) : nullptr;
+  return record && record->GetNumberOfValues() > 0 ? record->GetValue(0) : std::string();
+}
+
+std::string ProjectionRecordOf(vtkDataObject* data, const std::string& what)
+{
+  std::string record = ReadProjectionRecord(data);
+  auto* composite = vtkCompositeDataSet::SafeDownCast(data);
+  if (!record.empty() || !composite)
+  {
+    return record;
+  }
+  vtkSmartPointer<vtkCompositeDataIterator> it;
+  it.TakeReference(composite->NewIterator());
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    const std::string own = ReadProjectionRecord(it->GetCurrentDataObject());
+    if (!own.empty() && !record.empty() && own != record)
+    {
+      throw tessera::InputError(what + " mixes blocks projected differently: block " +
+        std::to_string(it->GetCurrentFlatIndex()) + " with " + own + ", another with " + record);
+    }
+    record = own.empty() ? record : own;
+  }
+  return record;
+}
 
 std::string EmptyBoundsWarning(const double bounds[4])
 {

@@ -76,6 +76,17 @@ Rings ReadPolygonRings(vtkDataObject* data);
 /// or empty when there are none.
 std::string SkippedCellsWarning(const Rings& rings, const char* what);
 
+/// The name of vtkGeographicProjection's field-data record of the projection it applied.
+extern const char* const ProjectionRecordName;
+
+/// The projection record of a data object's own field data, or "" when it has none.
+std::string ReadProjectionRecord(vtkDataObject* data);
+
+/// The projection record of a data object: its own, or else the one the leaves of a composite
+/// carry (vtkGeographicProjection writes it on both); "" when there is none. Throws
+/// tessera::InputError when leaves carry different ones. what names the input in that message.
+std::string ProjectionRecordOf(vtkDataObject* data, const std::string& what);
+
 /// Reverses a clockwise polygon; returns its (now non-negative) shoelace area.
 double OrientAnticlockwise(std::vector<tessera::Point2>& polygon);
 

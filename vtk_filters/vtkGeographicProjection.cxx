@@ -3,6 +3,8 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
@@ -16,10 +18,13 @@
 #include "vtkSmartPointer.h"
 #include "vtkStringArray.h"
 
+#include "TesseraFilterUtilities.h"
 #include "errors.h"
 #include "geo.h"
 
 #include <map>
+#include <memory>
+#include <string>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -28,7 +33,8 @@ vtkStandardNewMacro(vtkGeographicProjection);
 
 namespace
 {
-const char* const ProjectionRecordName = "TesseraProjection";
+using tessera_vtk::ProjectionRecordName;
+using tessera_vtk::ReadProjectionRecord;
 
 std::vector<tessera::Point2> ReadXY(vtkPoints* points)
 {
@@ -40,15 +46,6 @@ std::vector<tessera::Point2> ReadXY(vtkPoints* points)
     xy[i] = { p[0], p[1] };
   }
   return xy;
-}
-
-/// The `TesseraProjection` record of a data set's field data, or "" when it has none.
-std::string ReadProjectionRecord(vtkDataObject* data)
-{
-  vtkFieldData* fd = data->GetFieldData();
-  auto* record =
-    fd ? vtkStringArray::SafeDownCast(fd->GetAbstractArray(ProjectionRecordName)) : nullptr;
-  return record && record->GetNumberOfValues() > 0 ? record->GetValue(0) : std::string();
 }
 
 void WriteProjectionRecord(vtkDataObject* data, const std::string& record)
@@ -212,78 +209,239 @@ tessera::ProjectionParameters ChooseForwardParameters(vtkGeographicProjection* s
   return p;
 }
 
+/// A point set to project and its output; Label names a composite's block in messages ("" for
+/// a lone data set).
+struct Piece
+{
+  vtkPointSet* Input;
+  vtkPointSet* Output;
+  std::string Label;
+};
+
+/// Runs work; an InputError from it gets the piece's label in front.
+template<typename Work>
+void WithLabel(const Piece& piece, Work&& work)
+{
+  try
+  {
+    work();
+  }
+  catch (const tessera::InputError& e)
+  {
+    if (piece.Label.empty())
+    {
+      throw;
+    }
+    throw tessera::InputError(piece.Label + ": " + e.what());
+  }
+}
+
+/// The pieces of the input: itself, or each non-empty leaf of a composite, whose structure the
+/// output then copies with a new data set of the leaf's type in each place.
+std::vector<Piece> PiecesOf(vtkDataObject* input, vtkDataObject* output)
+{
+  auto* composite = vtkCompositeDataSet::SafeDownCast(input);
+  if (!composite)
+  {
+    auto* in = vtkPointSet::SafeDownCast(input);
+    auto* out = vtkPointSet::SafeDownCast(output);
+    if (!in || !out)
+    {
+      throw tessera::InputError(std::string("the input is a ") + input->GetClassName() +
+        ", not a point set or a composite of point sets");
+    }
+    return { Piece{ in, out, std::string() } };
+  }
+  auto* compositeOutput = vtkCompositeDataSet::SafeDownCast(output);
+  compositeOutput->CopyStructure(composite);
+  std::vector<Piece> pieces;
+  vtkSmartPointer<vtkCompositeDataIterator> it;
+  it.TakeReference(composite->NewIterator());
+  it->SkipEmptyNodesOn();
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    std::string label = "block " + std::to_string(it->GetCurrentFlatIndex());
+    if (it->HasCurrentMetaData() && it->GetCurrentMetaData()->Has(vtkCompositeDataSet::NAME()))
+    {
+      label += std::string(" (") + it->GetCurrentMetaData()->Get(vtkCompositeDataSet::NAME()) + ")";
+    }
+    vtkDataObject* leaf = it->GetCurrentDataObject();
+    auto* in = vtkPointSet::SafeDownCast(leaf);
+    if (!in)
+    {
+      throw tessera::InputError(label + " is a " + leaf->GetClassName() + ", not a point set");
+    }
+    vtkSmartPointer<vtkPointSet> out;
+    out.TakeReference(in->NewInstance());
+    compositeOutput->SetDataSet(it, out);
+    pieces.push_back(Piece{ in, out, label });
+  }
+  return pieces;
+}
+
+/// The projection for all pieces: the inverse's from the input's record (the whole's, or the one
+/// its blocks share), else from the settings and all the pieces' points together.
+tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
+  vtkDataObject* input,
+  const std::vector<Piece>& pieces)
+{
+  if (self->GetInverse())
+  {
+    // The record of the whole, or else the one all its blocks carry.
+    const std::string record = tessera_vtk::ProjectionRecordOf(input, "the input");
+    if (!record.empty())
+    {
+      return tessera::ProjectionParameters::FromString(record);
+    }
+    if (self->GetParametersFromData())
+    {
+      throw tessera::InputError("Inverse needs the input's TesseraProjection field data, or "
+                                "ParametersFromData off and the projection's parameters set");
+    }
+  }
+  std::vector<tessera::Point2> lonlat;
+  for (const Piece& piece : pieces)
+  {
+    const std::vector<tessera::Point2> own = ReadXY(piece.Input->GetPoints());
+    if (!self->GetInverse())
+    {
+      WithLabel(piece, [&own]() { tessera::ValidateLonLat(own); });
+    }
+    lonlat.insert(lonlat.end(), own.begin(), own.end());
+  }
+  return ChooseForwardParameters(self, lonlat);
+}
+
+/// Projects one piece into its output, with the record (none when empty).
+void ProjectPiece(vtkGeographicProjection* self,
+  const Piece& piece,
+  const tessera::GeographicProjection* projection,
+  const std::string& record)
+{
+  vtkPointSet* input = piece.Input;
+  vtkPointSet* output = piece.Output;
+  auto polyInput = vtkPolyData::SafeDownCast(input);
+  if (!self->GetInverse() && polyInput && self->GetMaximumEdgeLength() > 0.0)
+  {
+    EdgeDensifier(polyInput, vtkPolyData::SafeDownCast(output), self->GetMaximumEdgeLength()).Run();
+    output->GetFieldData()->PassData(input->GetFieldData());
+  }
+  else
+  {
+    output->CopyStructure(input);
+    output->GetPointData()->PassData(input->GetPointData());
+    output->GetCellData()->PassData(input->GetCellData());
+    output->GetFieldData()->PassData(input->GetFieldData());
+  }
+
+  vtkPoints* source = output->GetPoints();
+  vtkNew<vtkPoints> projected;
+  projected->SetDataTypeToDouble();
+  const vtkIdType n = source ? source->GetNumberOfPoints() : 0;
+  projected->SetNumberOfPoints(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    source->GetPoint(i, p);
+    const tessera::Point2 q = self->GetInverse() ? projection->Inverse({ p[0], p[1] }, i)
+                                                 : projection->Forward({ p[0], p[1] }, i);
+    projected->SetPoint(i, q.x, q.y, p[2]);
+  }
+  output->SetPoints(projected);
+  output->GetFieldData()->RemoveArray(ProjectionRecordName);
+  if (!record.empty())
+  {
+    WriteProjectionRecord(output, record);
+  }
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
 vtkGeographicProjection::vtkGeographicProjection() = default;
 
 //------------------------------------------------------------------------------
+int vtkGeographicProjection::FillInputPortInformation(int, vtkInformation* info)
+{
+  // A composite (e.g. vtkGDALVectorReader's layers) is taken whole, so that all its blocks share
+  // one projection: block by block, each would get its own automatic one.
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
+  return 1;
+}
+
+int vtkGeographicProjection::FillOutputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkDataObject");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkGeographicProjection::RequestDataObject(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  auto* composite = vtkCompositeDataSet::GetData(inputVector[0], 0);
+  if (!composite)
+  {
+    return this->Superclass::RequestDataObject(request, inputVector, outputVector);
+  }
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
+  if (!output || !output->IsA(composite->GetClassName()))
+  {
+    vtkSmartPointer<vtkDataObject> made;
+    made.TakeReference(composite->NewInstance());
+    outInfo->Set(vtkDataObject::DATA_OBJECT(), made);
+  }
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkGeographicProjection::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
-  vtkPointSet* output = vtkPointSet::GetData(outputVector);
+  vtkDataObject* input = vtkDataObject::GetData(inputVector[0]);
+  vtkDataObject* output = vtkDataObject::GetData(outputVector);
   if (!input || !output)
   {
-    vtkErrorMacro("vtkGeographicProjection needs a vtkPointSet input.");
+    vtkErrorMacro("vtkGeographicProjection needs a vtkPointSet or composite input.");
     return 0;
   }
   try
   {
-    tessera::ProjectionParameters parameters;
-    std::vector<tessera::Point2> lonlat; // the input points, read when projecting forward
-    const std::string record = ReadProjectionRecord(input);
-    if (this->Inverse && !record.empty())
+    std::vector<Piece> pieces = PiecesOf(input, output);
+    std::size_t points = 0;
+    for (const Piece& piece : pieces)
     {
-      parameters = tessera::ProjectionParameters::FromString(record);
+      points += static_cast<std::size_t>(piece.Input->GetNumberOfPoints());
     }
-    else if (this->Inverse && this->ParametersFromData)
+    // Nothing to fit a projection to: empty in, empty out (with the structure), no record.
+    const bool fitted =
+      !this->Inverse && (this->Projection == AUTOMATIC || this->ParametersFromData);
+    const bool none = points == 0 && fitted;
+    std::unique_ptr<tessera::GeographicProjection> projection;
+    std::string record;
+    if (!none)
     {
-      throw tessera::InputError("Inverse needs the input's TesseraProjection field data, or "
-                                "ParametersFromData off and the projection's parameters set");
+      const tessera::ProjectionParameters parameters = ChooseParameters(this, input, pieces);
+      projection.reset(new tessera::GeographicProjection(parameters));
+      record = this->Inverse ? std::string() : parameters.ToString();
     }
-    else
+    for (const Piece& piece : pieces)
     {
-      lonlat = ReadXY(input->GetPoints());
-      parameters = ChooseForwardParameters(this, lonlat);
+      WithLabel(piece, [&]() { ProjectPiece(this, piece, projection.get(), record); });
     }
-
-    auto polyInput = vtkPolyData::SafeDownCast(input);
-    if (!this->Inverse && polyInput && this->MaximumEdgeLength > 0.0)
+    if (vtkCompositeDataSet::SafeDownCast(output))
     {
-      tessera::ValidateLonLat(lonlat);
-      EdgeDensifier(polyInput, vtkPolyData::SafeDownCast(output), this->MaximumEdgeLength).Run();
+      // A composite: its own field data too.
       output->GetFieldData()->PassData(input->GetFieldData());
-    }
-    else
-    {
-      output->CopyStructure(input);
-      output->GetPointData()->PassData(input->GetPointData());
-      output->GetCellData()->PassData(input->GetCellData());
-      output->GetFieldData()->PassData(input->GetFieldData());
-    }
-
-    const tessera::GeographicProjection projection(parameters);
-    vtkPoints* source = output->GetPoints();
-    vtkNew<vtkPoints> projected;
-    projected->SetDataTypeToDouble();
-    const vtkIdType n = source ? source->GetNumberOfPoints() : 0;
-    projected->SetNumberOfPoints(n);
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      double p[3];
-      source->GetPoint(i, p);
-      const tessera::Point2 q = this->Inverse ? projection.Inverse({ p[0], p[1] }, i)
-                                              : projection.Forward({ p[0], p[1] }, i);
-      projected->SetPoint(i, q.x, q.y, p[2]);
-    }
-    output->SetPoints(projected);
-
-    output->GetFieldData()->RemoveArray(ProjectionRecordName);
-    if (!this->Inverse)
-    {
-      WriteProjectionRecord(output, parameters.ToString());
+      output->GetFieldData()->RemoveArray(ProjectionRecordName);
+      if (!record.empty())
+      {
+        WriteProjectionRecord(output, record);
+      }
     }
     return 1;
   }

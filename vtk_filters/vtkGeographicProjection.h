@@ -5,7 +5,10 @@
  * vtkGeographicProjection maps the x, y coordinates of any vtkPointSet, read as longitude and
  * latitude in degrees on the WGS84 ellipsoid, to projected x, y in metres with GeographicLib
  * (z is kept). Thiessen polygons and Dirichlet tiles are only meaningful in a plane, so gauges
- * given in lon/lat pass through this filter first.
+ * given in lon/lat pass through this filter first. A composite data set of point sets (such as
+ * vtkGDALVectorReader's layers) gives a composite of the same structure, all its blocks projected
+ * with one projection fitted to them all (its errors name the block). An input without points
+ * gives an empty output, without a record when the projection would be fitted to the data.
  *
  * Projections (SetProjectionTo...):
  * - Automatic (default): an Albers equal-area conic whose standard parallels sit at 1/6 and 5/6
@@ -33,7 +36,9 @@
  * - `TesseraProjection` (vtkStringArray, one value): the projection and its parameters as
  *   "projection=AlbersEqualArea lon0=... lat0=... lat1=... lat2=... zone=... north=...",
  *   exact to the last bit. With Inverse on, the filter reads it from its input (so nobody retypes
- *   parameters) and removes it from the output; later Tessera filters read it too.
+ *   parameters) and removes it from the output. vtkWindowClip compares its two inputs'
+ *   records: tiles and window projected differently (e.g. each with its own automatic
+ *   projection) are an error. On a composite the record is written on the whole and each block.
  *
  * Bad input (NaN/Inf, |latitude| > 90, a point the projection cannot represent such as a UTM
  * point beyond 500 km from the zone's meridian, a transverse Mercator point beyond 45 degrees
@@ -148,6 +153,9 @@ protected:
   vtkGeographicProjection();
   ~vtkGeographicProjection() override = default;
 
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
+  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Projection = AUTOMATIC;

@@ -13,6 +13,8 @@
 #include "vtkPolyData.h"
 
 #include "TesseraFilterUtilities.h"
+#include "errors.h"
+#include "geo.h"
 #include "clip.h"
 #include "display_pieces.h"
 #include "polygon_area.h"
@@ -33,6 +35,34 @@ const std::vector<const char*> OwnArrayNames{ "TileId",
   "ClippedArea",
   "AreaFraction",
   "PieceArea" };
+/// Tiles and window in two different planes would be clipped as if in one, the areas wrong by
+/// the projections' difference, silently: two automatic projections of different data (gauges
+/// and catchment projected apart) differ. Throws when the inputs' TesseraProjection records
+/// differ; returns a warning when only one input has one, else "".
+std::string ProjectionWarning(vtkDataObject* tiles, vtkDataObject* window)
+{
+  const std::string ofTiles = tessera_vtk::ProjectionRecordOf(tiles, "input 0 (the tiles)");
+  const std::string ofWindow = tessera_vtk::ProjectionRecordOf(window, "input 1 (the window)");
+  if (!ofTiles.empty() && !ofWindow.empty() &&
+    !tessera::SameProjection(tessera::ProjectionParameters::FromString(ofTiles),
+      tessera::ProjectionParameters::FromString(ofWindow)))
+  {
+    throw tessera::InputError("the tiles (input 0) and the window (input 1) were projected "
+                              "differently (tiles: " +
+      ofTiles + "; window: " + ofWindow +
+      "): project both with one projection (the same settings with ParametersFromData off), "
+      "or use Thiessen Areal Average, which projects gauges and catchment together");
+  }
+  if (ofTiles.empty() == ofWindow.empty())
+  {
+    return std::string();
+  }
+  const std::string projected = ofTiles.empty() ? "the window (input 1)" : "the tiles (input 0)";
+  const std::string other = ofTiles.empty() ? "the tiles (input 0)" : "the window (input 1)";
+  return projected + " carries a TesseraProjection record (" + ofTiles + ofWindow + ") and " +
+    other + " none: both are taken to be in the same plane";
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -58,6 +88,11 @@ int vtkWindowClip::RequestData(vtkInformation*,
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   try
   {
+    const std::string projectionWarning = ProjectionWarning(tiles, windowData);
+    if (!projectionWarning.empty())
+    {
+      vtkWarningMacro(<< projectionWarning);
+    }
     const tessera_vtk::Rings window = tessera_vtk::ReadPolygonRings(windowData);
     const std::string skippedRings = tessera_vtk::SkippedCellsWarning(window, "window (input 1)");
     if (!skippedRings.empty())

@@ -249,3 +249,67 @@ TEST(Geo, ParameterRecordRoundTripsExactly)
   EXPECT_THROW(ProjectionParameters::FromString("projection=Mollweide"), InputError);
   EXPECT_THROW(ProjectionParameters::FromString("projection=UTM zone=x"), InputError);
 }
+
+// SameProjection against the projections themselves: for each kind, changing one field at a time
+// changes where sample points land exactly when SameProjection says the projections differ.
+TEST(Geo, SameProjectionIsWhetherPointsLandAlike)
+{
+  // (between the meridians of UTM zones 12 and 13, so that both represent them)
+  const std::vector<Point2> samples = { { -108.0, 39.0 }, { -107.5, 41.5 }, { -108.4, 36.4 } };
+  const auto landings = [&samples](const ProjectionParameters& p)
+  {
+    const GeographicProjection projection(p);
+    std::vector<Point2> xy;
+    for (std::size_t i = 0; i < samples.size(); ++i)
+    {
+      xy.push_back(projection.Forward(samples[i], i));
+    }
+    return xy;
+  };
+  const ProjectionKind kinds[] = { ProjectionKind::AlbersEqualArea,
+    ProjectionKind::LambertConformalConic,
+    ProjectionKind::TransverseMercator,
+    ProjectionKind::UTM,
+    ProjectionKind::AzimuthalEquidistant };
+  int different = 0;
+  for (const ProjectionKind kind : kinds)
+  {
+    ProjectionParameters base;
+    base.Kind = kind;
+    base.CentralLongitude = -105.5;
+    base.CentralLatitude = 39.0;
+    base.StandardParallel1 = 37.5;
+    base.StandardParallel2 = 40.5;
+    base.UTMZone = 13;
+    base.UTMNorth = true;
+    std::vector<ProjectionParameters> variants(6, base);
+    variants[0].CentralLongitude = -104.5;
+    variants[1].CentralLatitude = 38.0;
+    variants[2].StandardParallel1 = 36.5;
+    variants[3].StandardParallel2 = 41.5;
+    variants[4].UTMZone = 12;
+    variants[5].UTMNorth = false;
+    const std::vector<Point2> expected = landings(base);
+    EXPECT_TRUE(SameProjection(base, base));
+    for (std::size_t v = 0; v < variants.size(); ++v)
+    {
+      const std::vector<Point2> got = landings(variants[v]);
+      bool alike = true;
+      for (std::size_t i = 0; i < got.size(); ++i)
+      {
+        alike = alike && got[i].x == expected[i].x && got[i].y == expected[i].y;
+      }
+      EXPECT_EQ(SameProjection(base, variants[v]), alike)
+        << ProjectionKindName(kind) << ", variant " << v;
+      EXPECT_EQ(SameProjection(variants[v], base), alike);
+      different += alike ? 0 : 1;
+    }
+  }
+  // Each kind uses some of the six fields: 3 + 3 + 1 + 2 + 2.
+  EXPECT_EQ(different, 11);
+  ProjectionParameters other;
+  other.Kind = ProjectionKind::LambertConformalConic;
+  ProjectionParameters same = other;
+  same.Kind = ProjectionKind::AlbersEqualArea;
+  EXPECT_FALSE(SameProjection(other, same));
+}

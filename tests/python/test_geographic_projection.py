@@ -6,7 +6,7 @@ import math
 import os
 
 from vtkmodules.vtkCommonCore import vtkPoints
-from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkMultiBlockDataSet, vtkPolyData
 
 from tessera import vtkGeographicProjection
 from tessera_testing import EXAMPLE_DATA, assert_close, assert_that, messages_of, run
@@ -90,7 +90,82 @@ def test_nan_point_is_named_and_output_is_empty():
     assert_that("point 1" in messages[0], f"the error names point 1: {messages[0]}")
 
 
+def lonlat_points(pairs):
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    for lon, lat in pairs:
+        points.InsertNextPoint(lon, lat, 0.0)
+    data = vtkPolyData()
+    data.SetPoints(points)
+    return data
+
+
+def record_of(data):
+    array = data.GetFieldData().GetAbstractArray("TesseraProjection")
+    return array.GetValue(0) if array else None
+
+
+def test_the_blocks_of_a_composite_share_one_projection():
+    """A multiblock (as vtkGDALVectorReader gives a file's layers) is projected with one projection
+    fitted to all its blocks: the same point lands at the same place in every block, exactly where
+    projecting all the points as one set puts it. Errors name the block; the inverse undoes it."""
+    west, east = [(-109.0, 37.0), (-105.0, 39.0)], [(-105.0, 39.0), (-102.0, 41.0)]
+    blocks = vtkMultiBlockDataSet()
+    blocks.SetBlock(0, lonlat_points(west))
+    blocks.SetBlock(1, None)  # an empty place is kept empty
+    blocks.SetBlock(2, lonlat_points(east))
+    blocks.GetMetaData(2).Set(vtkCompositeDataSet.NAME(), "east")
+    f = vtkGeographicProjection()
+    messages = messages_of(f)
+    f.SetInputData(blocks)
+    f.Update()
+    out = f.GetOutputDataObject(0)
+    assert_that(not messages and out.IsA("vtkMultiBlockDataSet") and out.GetNumberOfBlocks() == 3,
+                f"a multiblock out: {messages}, {out.GetClassName()}")
+    whole = vtkGeographicProjection()
+    whole.SetInputData(lonlat_points(west + east))
+    whole.Update()
+    expected = whole.GetOutput()
+    record = record_of(expected)
+    assert_that(out.GetBlock(1) is None, "the empty place stays empty")
+    for b, first in ((0, 0), (2, 2)):
+        block = out.GetBlock(b)
+        assert_that(record_of(block) == record, f"block {b}: {record_of(block)} against {record}")
+        for i in range(2):
+            assert_that(block.GetPoint(i) == expected.GetPoint(first + i),
+                        f"block {b} point {i}: {block.GetPoint(i)} against {expected.GetPoint(first + i)}")
+    assert_that(out.GetBlock(0).GetPoint(1) == out.GetBlock(2).GetPoint(0), "(-105, 39) in both blocks")
+    assert_that(record_of(out) == record, f"the composite's own record: {record_of(out)}")
+
+    inverse = vtkGeographicProjection()
+    inverse.SetInputConnection(f.GetOutputPort())
+    inverse.InverseOn()
+    inverse.Update()
+    back = inverse.GetOutputDataObject(0).GetBlock(2)
+    for i, (lon, lat) in enumerate(east):
+        assert_close(back.GetPoint(i)[0], lon, 1e-9, f"longitude {i} back")
+        assert_close(back.GetPoint(i)[1], lat, 1e-9, f"latitude {i} back")
+
+    blocks.SetBlock(2, lonlat_points([(-105.0, 39.0), (-102.0, 95.0)]))
+    blocks.GetMetaData(2).Set(vtkCompositeDataSet.NAME(), "east")
+    f.Modified()
+    f.Update()
+    assert_that(len(messages) == 1 and "block" in messages[0] and "(east): point 1" in messages[0],
+                f"the bad point named with its block: {messages}")
+
+
+def test_no_points_give_an_empty_output_without_error():
+    f = vtkGeographicProjection()
+    messages = messages_of(f)
+    f.SetInputData(lonlat_points([]))
+    f.Update()
+    assert_that(not messages and f.GetOutput().GetNumberOfPoints() == 0 and record_of(f.GetOutput()) is None,
+                f"no points: {messages}")
+
+
 if __name__ == "__main__":
     run([test_round_trip_of_the_colorado_gauges,
          test_azimuthal_equidistant_keeps_distances_from_the_centre,
-         test_nan_point_is_named_and_output_is_empty])
+         test_nan_point_is_named_and_output_is_empty,
+         test_the_blocks_of_a_composite_share_one_projection,
+         test_no_points_give_an_empty_output_without_error])

@@ -11,7 +11,7 @@ from matplotlib.path import Path
 from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkIntArray
 from vtkmodules.vtkFiltersCore import vtkTriangleFilter
 
-from tessera import vtkDirichletTessellation, vtkWindowClip
+from tessera import vtkDirichletTessellation, vtkGeographicProjection, vtkWindowClip
 from tessera_testing import (assert_close, assert_that, cell_rings, exact_area, make_points, messages_of,
                              polygon, run, simplicity_defect)
 
@@ -297,8 +297,50 @@ def test_a_window_of_loose_line_segments_is_joined_into_its_rings():
                 f"nothing left to clip by, the square's and the dangling segment's cells named: {errors}")
 
 
+def test_tiles_and_window_must_share_their_projection():
+    """Gauges and catchment projected apart, each with its automatic projection, lie in two
+    different planes: clipping one by the other is an error naming both projections. With one
+    projection for both it clips, and the output keeps the record (so an inverse finds it). A
+    record on one input only gives a warning."""
+    gauges = make_points([(-105.0, 39.0), (-104.0, 40.0), (-103.0, 38.5), (-106.0, 40.5)])
+    catchment = polygon([[(-106.0, 38.0), (-103.0, 38.0), (-103.0, 41.0), (-106.0, 41.0)]])
+
+    def projected(data, automatic):
+        f = vtkGeographicProjection()
+        f.SetInputData(data)
+        if not automatic:
+            f.SetProjectionToAlbersEqualArea()
+            f.ParametersFromDataOff()
+            f.SetCentralLongitude(-104.5)
+            f.SetStandardParallels(38.0, 41.0)
+        f.Update()
+        return f.GetOutput()
+
+    def tiles_of(points):
+        t = vtkDirichletTessellation()
+        t.SetInputData(points)
+        t.Update()
+        return t.GetOutput()
+
+    def record(data):
+        array = data.GetFieldData().GetAbstractArray("TesseraProjection")
+        return array.GetValue(0) if array else None
+
+    output, errors, warnings = clip_by(tiles_of(projected(gauges, True)), projected(catchment, True))
+    assert_that(len(errors) == 1 and "projected differently" in errors[0] and errors[0].count("lon0=") == 2
+                and output.GetNumberOfCells() == 0, f"two automatic projections: {errors}")
+    same = projected(gauges, False)
+    output, errors, warnings = clip_by(tiles_of(same), projected(catchment, False))
+    assert_that(not errors and not warnings and output.GetNumberOfCells() == 4, f"one projection: {errors} {warnings}")
+    assert_that(record(output) == record(same), f"the output's record: {record(output)}")
+    output, errors, warnings = clip_by(tiles_of(gauges), projected(catchment, False))
+    assert_that(not errors and len(warnings) == 1 and "the window (input 1) carries" in warnings[0]
+                and "the tiles (input 0) none" in warnings[0], f"one record: {errors} {warnings}")
+
+
 if __name__ == "__main__":
     run([test_cells_are_simple_pieces_that_fill_tile_and_window,
          test_review_cases,
          test_input_arrays_named_like_the_filters_are_kept_under_another_name,
-         test_a_window_of_loose_line_segments_is_joined_into_its_rings])
+         test_a_window_of_loose_line_segments_is_joined_into_its_rings,
+         test_tiles_and_window_must_share_their_projection])
