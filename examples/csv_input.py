@@ -170,6 +170,18 @@ def catch_vtk_messages(algorithm, on_error, on_warning=None, on_executive_error=
     algorithm.GetExecutive().AddObserver(vtkCommand.ErrorEvent, observer(on_executive_error))
 
 
+def point_error(text, path, lines, name):
+    """A filter's error `text` about a point of the data read from `path`, as one line naming the
+    file's line of that point, or None when the error names no point. The filters name a bad point
+    as "point N (x, y) ..." (N counted from 0: the file's N-th record, on line lines[N]); the line
+    reads "path:line: name(N) at (x, y) ..."."""
+    point = re.match(r"point (\d+) (.*)", text)
+    if not point or int(point.group(1)) >= len(lines):
+        return None
+    g = int(point.group(1))
+    return f"{path}:{lines[g]}: {name(g)} at {point.group(2)}"
+
+
 def main(argv=None):
     # `python3 csv_input.py` with or without --help: what the module is for, since the README's
     # "every script takes --help" reaches this file too.

@@ -69,15 +69,11 @@ def read_gauges(path):
 
 
 def projection_error(text, path, gauges, lines):
-    """The one line that reports the projection's error `text`. The filter names a bad gauge as
-    "point N (lon, lat)" (N counted from 0: the file's N-th record), which becomes the stations
-    file's line and the gauge's station; any other error names the file."""
-    point = re.match(r"point (\d+) (.*)", text)
-    if point and int(point.group(1)) < len(lines):
-        g = int(point.group(1))
-        station = gauges.GetPointData().GetAbstractArray("StationId").GetValue(g)
-        return f"{path}:{lines[g]}: station {station} at {point.group(2)}"
-    return f"{path}: cannot project the gauges: {text}"
+    """The one line that reports the projection's error `text`: a bad gauge by the stations file's
+    line and its station, any other error by the file."""
+    station = gauges.GetPointData().GetAbstractArray("StationId")
+    return (csv_input.point_error(text, path, lines, lambda g: f"station {station.GetValue(g)}")
+            or f"{path}: cannot project the gauges: {text}")
 
 
 def main(argv=None):

@@ -35,7 +35,9 @@ def read_quakes(path):
     depth, mag = vtkDoubleArray(), vtkDoubleArray()
     depth.SetName("depth_km")
     mag.SetName("mag")
+    lines = []
     for line, row in csv_input.rows(path, ("lat", "long", "depth", "mag"), "epicentres"):
+        lines.append(line)
         lon, lat = csv_input.number(row, "long", path, line), csv_input.number(row, "lat", path, line)
         points.InsertNextPoint(lon, lat, 0.0)
         depth.InsertNextValue(csv_input.number(row, "depth", path, line))
@@ -44,7 +46,7 @@ def read_quakes(path):
     data.SetPoints(points)
     data.GetPointData().AddArray(depth)
     data.GetPointData().AddArray(mag)
-    return data
+    return data, lines
 
 
 def polylines(data):
@@ -73,10 +75,21 @@ def main(argv=None):
     tessera = csv_input.import_tessera()
     vtkGeographicProjection, vtkRidgeGrouping = tessera.vtkGeographicProjection, tessera.vtkRidgeGrouping
 
-    quakes = read_quakes(args.quakes)
+    quakes, lines = read_quakes(args.quakes)
+    if quakes.GetNumberOfPoints() == 0:
+        csv_input.fail(f"{args.quakes}: no epicentres to group (the file has no rows)")
     projection = vtkGeographicProjection()
     projection.SetInputData(quakes)
+    # An epicentre the projection rejects (a latitude beyond 90) or a grouping error ends the run
+    # with one line naming the file (and the epicentre's line), not VTK's log and the executive's
+    # dump of its request.
+    errors = []
+    csv_input.catch_vtk_messages(projection, lambda text: errors.append(
+        csv_input.point_error(text, args.quakes, lines, lambda g: "epicentre")
+        or f"{args.quakes}: cannot project the epicentres: {text}"))
     grouping = vtkRidgeGrouping()
+    csv_input.catch_vtk_messages(grouping, lambda text: errors.append(f"ridge grouping failed: {text}"),
+                                 lambda text: print(f"warning: {text}", file=sys.stderr))
     grouping.SetInputConnection(projection.GetOutputPort())
     grouping.SetWidth(args.width)
     grouping.SetImageSize(args.image_size)
@@ -87,9 +100,11 @@ def main(argv=None):
     if args.closest_tangent:
         grouping.SetJoinRuleToClosestTangent()
     grouping.Update()
+    if errors:
+        csv_input.fail(errors[0])
     points = grouping.GetOutput(0)
     if points.GetNumberOfPoints() == 0:
-        sys.exit("ridge grouping failed (see the error above)")
+        csv_input.fail("ridge grouping failed and gave no message")
 
     os.makedirs(args.out, exist_ok=True)
     for port, name in ((0, "fiji_points.vtp"), (1, "fiji_contours.vtp"), (2, "fiji_curves.vtp")):

@@ -604,6 +604,23 @@ def test_the_other_examples_run_on_their_data():
             f.write("lat,lon\n1,2\n")
         status, _, stderr = run_example("ridge_grouping.py", "--out", out, "--quakes", quakes)
         assert_that(status == 1 and "no column 'long', 'depth', 'mag'" in stderr, f"ridge_grouping.py: {stderr}")
+        # An epicentre the projection rejects, a file without rows and a grouping error: one line
+        # each (the file's line of the epicentre), no VTK log, no traceback.
+        north = write(out, "north.csv", "lat,long,depth,mag\n-20.4,181.6,562,4.8\n\n95,181,100,4.5\n")
+        empty = write(out, "empty.csv", "lat,long,depth,mag\n")
+        two = write(out, "two.csv", "lat,long,depth,mag\n-20,181,1,1\n-21,182,1,1\n")
+        for extra, expected in (
+                (("--quakes", north), f"{north}:4: epicentre at (181, 95) has a latitude beyond 90 degrees"),
+                (("--quakes", empty), f"{empty}: no epicentres to group (the file has no rows)"),
+                (("--quakes", two, "--image-size", "100000"), "ridge grouping failed: image size 100000 exceeds")):
+            status, _, stderr = run_example("ridge_grouping.py", "--out", os.path.join(out, "bad"), *extra)
+            lines = stderr.strip().splitlines()
+            assert_that(status == 1 and lines and lines[-1].startswith(expected)
+                        and not any("vtkRidgeGrouping.cxx" in x or "Traceback" in x for x in lines),
+                        f"ridge_grouping.py {extra}: expected a last line starting {expected!r}, got {lines}")
+        status, _, stderr = run_example("ridge_grouping.py", "--out", os.path.join(out, "two"), "--quakes", two)
+        assert_that(status == 0 and stderr.strip().startswith("warning: no ridge contour reaches"),
+                    f"a warning as a line of its own: {stderr}")
 
 
 def test_project_gauges_names_a_bad_gauge_by_its_line():
