@@ -481,8 +481,12 @@ Point2 GeographicProjection::Inverse(const Point2& xy, long long id) const
   return lonlat;
 }
 
-int DensifiedPieceCount(const Point2& a, const Point2& b, double maxStep)
+int DensifiedPieceCount(const Point2& a, const Point2& b, double maxStep, bool* capped)
 {
+  if (capped)
+  {
+    *capped = false;
+  }
   if (!(maxStep > 0.0) || !std::isfinite(maxStep))
   {
     return 1;
@@ -490,8 +494,11 @@ int DensifiedPieceCount(const Point2& a, const Point2& b, double maxStep)
   const double dx = LongitudeDifference(a.x, b.x);
   const double dy = b.y - a.y;
   const double pieces = std::ceil(std::hypot(dx, dy) / maxStep);
-  // An absurdly fine step is capped rather than allowed to exhaust memory.
-  return static_cast<int>(std::min(std::max(pieces, 1.0), 1.0e6));
+  if (capped)
+  {
+    *capped = pieces > double(MaxDensifiedPieces);
+  }
+  return static_cast<int>(std::min(std::max(pieces, 1.0), double(MaxDensifiedPieces)));
 }
 
 Point2 InterpolateLonLat(const Point2& a, const Point2& b, double t)

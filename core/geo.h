@@ -105,10 +105,15 @@ private:
   Engines* Impl = nullptr;
 };
 
+/// The most pieces DensifiedPieceCount cuts an edge into: an absurdly fine step is capped
+/// rather than allowed to exhaust memory.
+constexpr int MaxDensifiedPieces = 1000000;
+
 /// Number of equal pieces an edge from a to b (lon/lat, the shorter way round in longitude) is cut
 /// into so that no piece is longer than maxStep degrees (in the lon/lat plane). maxStep <= 0 or
 /// non-finite means no densification (1 piece).
-int DensifiedPieceCount(const Point2& a, const Point2& b, double maxStep);
+/// With capped, also says whether the count was cut down to MaxDensifiedPieces.
+int DensifiedPieceCount(const Point2& a, const Point2& b, double maxStep, bool* capped = nullptr);
 /// The point a fraction t along the lon/lat-straight edge from a to b (longitude taken the shorter
 /// way round, continuing from a's longitude, so it may leave [-180, 180]).
 Point2 InterpolateLonLat(const Point2& a, const Point2& b, double t);

@@ -141,8 +141,10 @@ private:
     double pa[3], pb[3];
     this->Input->GetPoint(a, pa);
     this->Input->GetPoint(b, pb);
+    bool capped = false;
     const int pieces =
-      tessera::DensifiedPieceCount({ pa[0], pa[1] }, { pb[0], pb[1] }, this->MaxStep);
+      tessera::DensifiedPieceCount({ pa[0], pa[1] }, { pb[0], pb[1] }, this->MaxStep, &capped);
+    this->CappedEdges += capped ? 1 : 0;
     const vtkIdType first = this->Points->GetNumberOfPoints();
     for (int k = 1; k < pieces; ++k)
     {
@@ -154,6 +156,11 @@ private:
     return { first, pieces };
   }
 
+public:
+  /// Edges cut into MaxDensifiedPieces: their pieces may be longer than MaxStep.
+  vtkIdType CappedEdges = 0;
+
+private:
   vtkPolyData* Input;
   vtkPolyData* Output;
   double MaxStep;
@@ -312,18 +319,23 @@ tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
   return ChooseForwardParameters(self, lonlat);
 }
 
-/// Projects one piece into its output, with the record (none when empty).
-void ProjectPiece(vtkGeographicProjection* self,
+/// Projects one piece into its output, with the record (none when empty). Returns the number of
+/// edges that densifying cut into the most pieces allowed.
+vtkIdType ProjectPiece(vtkGeographicProjection* self,
   const Piece& piece,
   const tessera::GeographicProjection* projection,
   const std::string& record)
 {
   vtkPointSet* input = piece.Input;
   vtkPointSet* output = piece.Output;
+  vtkIdType capped = 0;
   auto polyInput = vtkPolyData::SafeDownCast(input);
   if (!self->GetInverse() && polyInput && self->GetMaximumEdgeLength() > 0.0)
   {
-    EdgeDensifier(polyInput, vtkPolyData::SafeDownCast(output), self->GetMaximumEdgeLength()).Run();
+    EdgeDensifier densifier(
+      polyInput, vtkPolyData::SafeDownCast(output), self->GetMaximumEdgeLength());
+    densifier.Run();
+    capped = densifier.CappedEdges;
     output->GetFieldData()->PassData(input->GetFieldData());
   }
   else
@@ -353,6 +365,7 @@ void ProjectPiece(vtkGeographicProjection* self,
   {
     WriteProjectionRecord(output, record);
   }
+  return capped;
 }
 
 } // namespace
@@ -429,9 +442,17 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
       projection.reset(new tessera::GeographicProjection(parameters));
       record = this->Inverse ? std::string() : parameters.ToString();
     }
+    vtkIdType capped = 0;
     for (const Piece& piece : pieces)
     {
-      WithLabel(piece, [&]() { ProjectPiece(this, piece, projection.get(), record); });
+      WithLabel(piece, [&]() { capped += ProjectPiece(this, piece, projection.get(), record); });
+    }
+    if (capped > 0)
+    {
+      vtkWarningMacro(<< capped << " edge(s) were cut into " << tessera::MaxDensifiedPieces
+                      << " pieces, the most allowed: their pieces are longer than "
+                         "MaximumEdgeLength "
+                      << this->MaximumEdgeLength << " degrees");
     }
     if (vtkCompositeDataSet::SafeDownCast(output))
     {

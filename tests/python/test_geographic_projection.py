@@ -163,9 +163,39 @@ def test_no_points_give_an_empty_output_without_error():
                 f"no points: {messages}")
 
 
+def test_an_edge_cut_into_the_most_pieces_is_reported():
+    """Densifying cuts an edge into at most 10^6 pieces (a step too fine would exhaust memory):
+    an edge that needs more gives a warning with the count, one that needs 10^6 or fewer none."""
+    from vtkmodules.vtkCommonCore import vtkCommand
+    from vtkmodules.vtkCommonDataModel import vtkCellArray
+
+    line = lonlat_points([(-105.0, 39.0), (-104.0, 39.0), (-104.0, 39.5)])
+    cells = vtkCellArray()
+    cells.InsertNextCell(3)
+    for i in range(3):
+        cells.InsertCellPoint(i)
+    line.SetLines(cells)
+    # (at 5e-7 the half-degree edge needs exactly 10^6 pieces: not counted; the 1-degree one is)
+    for step, capped in ((1e-3, 0), (1e-7, 2), (8e-7, 1), (5e-7, 1)):
+        f = vtkGeographicProjection()
+        warnings = messages_of(f, vtkCommand.WarningEvent)
+        f.SetMaximumEdgeLength(step)
+        f.SetInputData(line)
+        f.Update()
+        points = f.GetOutput().GetNumberOfPoints()
+        expected = 1 + sum(min(math.ceil(length / step), 10 ** 6) for length in (1.0, 0.5))
+        assert_that(abs(points - expected) <= 2, f"step {step}: {points} points, about {expected}")
+        if capped:
+            assert_that(len(warnings) == 1 and warnings[0].find(f"{capped} edge(s) were cut into 1000000") >= 0,
+                        f"step {step}: {warnings}")
+        else:
+            assert_that(not warnings, f"step {step}: {warnings}")
+
+
 if __name__ == "__main__":
     run([test_round_trip_of_the_colorado_gauges,
          test_azimuthal_equidistant_keeps_distances_from_the_centre,
          test_nan_point_is_named_and_output_is_empty,
          test_the_blocks_of_a_composite_share_one_projection,
-         test_no_points_give_an_empty_output_without_error])
+         test_no_points_give_an_empty_output_without_error,
+         test_an_edge_cut_into_the_most_pieces_is_reported])
