@@ -63,7 +63,8 @@ public:
 
   ///@{
   /**
-   * Padding of the automatic window (default 0.1 of the larger bounding-box side).
+   * Padding of the automatic window (default 0.1 of the larger bounding-box side; as for
+   * vtkDirichletTessellation, points without extent get the unit square centred on them).
    */
   vtkSetClampMacro(Padding, double, 0.0, VTK_DOUBLE_MAX);
   vtkGetMacro(Padding, double);

@@ -15,8 +15,10 @@
  * The window is the intersection of the rectangle SetWindowBounds(xmin, xmax, ymin, ymax) (when
  * xmin < xmax and ymin < ymax) and the strict constraints a*x + b*y + c < 0 added with
  * AddWindowConstraint. With neither, it is the points' bounding box padded on every side by
- * Padding (default 0.1) times its larger side. Redundant constraints are ignored; an empty or
- * unbounded window is an error.
+ * Padding (default 0.1) times its larger side; points without extent (one point, or copies of
+ * one) get the square of side 1 centred on them, and no points the square -1 < x, y < 1. Padding
+ * 0 keeps a margin of 1e-9 of the larger side, so that every point is strictly inside. Redundant
+ * constraints are ignored; an empty or unbounded window is an error.
  *
  * Algorithms: GreenSibson (default), the incremental engine; BrasselReif, the Thiessen sweep of
  * Brassel and Reif (1979), which needs a rectangular window. Both give the same combinatorics;

@@ -241,6 +241,14 @@ def test_degenerate_inputs_give_valid_output():
         t.SetInputData(make_points(coords))
         t.Update()
         assert_that(t.GetOutput().GetNumberOfCells() == 0, f"{len(coords)} collinear/few points: no face")
+    # Without a window, points without extent get the square of side 1 centred on them (the
+    # header's rule: a padding of a zero side would leave no window).
+    for coords in ([(5e6, 7e6)], [(5e6, 7e6)] * 3):
+        tiles = tessellate(make_points(coords)).GetOutput(0)
+        bounds = tiles.GetBounds()[:4]
+        assert_that(tiles.GetNumberOfCells() == 1 and tiles.GetCellData().GetArray("Area").GetValue(0) == 1.0
+                    and bounds == (5e6 - 0.5, 5e6 + 0.5, 7e6 - 0.5, 7e6 + 0.5),
+                    f"{len(coords)} copies of one point: the unit square around it, got {bounds}")
 
 
 def graph_pairs(graph):
