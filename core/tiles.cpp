@@ -820,6 +820,18 @@ TileMesh MeshOfSeparateTiles(TileSet tiles)
   return mesh;
 }
 
+void ScaleByPowerOfTwo(TileMesh& mesh, int exponent)
+{
+  for (Point2& v : mesh.Vertices)
+  {
+    v = { std::ldexp(v.x, exponent), std::ldexp(v.y, exponent) };
+  }
+  for (double& area : mesh.Areas)
+  {
+    area = std::ldexp(area, 2 * exponent);
+  }
+}
+
 namespace
 {
 // Room for count tiles of a TileSet, and the leading 0 offset.

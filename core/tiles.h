@@ -104,6 +104,10 @@ struct TileMeshAndGraph
 /// caller that writes either engine's tiles one way.
 TileMesh MeshOfSeparateTiles(TileSet tiles);
 
+/// Scales a mesh's vertices by 2^exponent and its areas by 2^(2 exponent), exactly: the tiles of
+/// points scaled by Window::RangeScaleExponent, brought back to the points' own scale.
+void ScaleByPowerOfTwo(TileMesh& mesh, int exponent);
+
 /// Delaunay faces, each anticlockwise and starting at its smallest point id, listed in the order
 /// of the triangle arrays. The set of faces, and each face, do not depend on the insertion order;
 /// the listing order does.

@@ -369,6 +369,32 @@ double Window::Area() const
   return 0.5 * (sum + compensation);
 }
 
+int Window::RangeScaleExponent() const
+{
+  double largest = 0.0;
+  for (const Point2& corner : this->Corners)
+  {
+    largest = std::max({ largest, std::fabs(corner.x), std::fabs(corner.y) });
+  }
+  if (largest == 0.0 || (largest >= std::ldexp(1.0, -128) && largest <= std::ldexp(1.0, 128)))
+  {
+    return 0;
+  }
+  int exponent = 0;
+  std::frexp(largest, &exponent); // largest = f * 2^exponent, f in [0.5, 1)
+  return 1 - exponent;
+}
+
+Window Window::ScaledByPowerOfTwo(int exponent) const
+{
+  std::vector<HalfPlane> scaled = this->Effective;
+  for (HalfPlane& h : scaled)
+  {
+    h.c = std::ldexp(h.c, exponent);
+  }
+  return Window(scaled);
+}
+
 bool Window::IsAxisAlignedRectangle() const
 {
   if (this->Effective.size() != 4)

@@ -61,6 +61,16 @@ public:
   double Area() const;
   bool IsAxisAlignedRectangle() const;
 
+  /// The exponent e of the power of two 2^e that brings the window's largest corner coordinate
+  /// (in magnitude) into [1, 2), when that coordinate lies outside [2^-128, 2^128]; 0 otherwise.
+  /// Points and window scaled by 2^e (ScaledByPowerOfTwo) have the same tessellation, exactly
+  /// (a product by a power of two is exact while nothing overflows or underflows), and stay
+  /// within the range where the tile derivation's window decisions are exact
+  /// (window_predicates.h): a caller with coordinates of some 1e100, or 1e-100, scales first.
+  int RangeScaleExponent() const;
+  /// This window with every point scaled by 2^exponent (x < xmax becomes x < xmax * 2^exponent).
+  Window ScaledByPowerOfTwo(int exponent) const;
+
   /// Whether every point within `error` of c in each coordinate lies strictly inside the window,
   /// by a test against a box inside it: true only when that is certain, false when the test
   /// cannot tell (also for every point when the window is not an axis-aligned rectangle). A few

@@ -63,9 +63,12 @@
  * strips or half-planes within it. A NaN or infinite coordinate is an error naming the point.
  *
  * Range. The Delaunay decisions are exact for any finite coordinates. The window decisions of the
- * GreenSibson tiles (where a Voronoi vertex lies against a window side) are exact for nonzero
- * coordinates within about 1e-60 .. 1e60 in magnitude; far below that (points some 1e-100 apart,
- * subnormal coordinates) their products underflow and tiles can come out wrong.
+ * tiles (where a Voronoi vertex lies against a window side) are exact for nonzero coordinates
+ * within about 1e-60 .. 1e60 in magnitude: coordinates of some 1e100 or 1e-100 are therefore
+ * scaled by a power of two (exactly) into that range and the tiles scaled back, so the tiles of
+ * points scaled by s are those of the points, scaled (areas by s^2, which overflow beyond about
+ * 1e154). Points closer together than some 1e-60 of the window's size, where those products
+ * underflow whatever the scale, are an error (the tiles' areas would not fill the window).
  *
  * @sa vtkDelaunayTriangulation vtkVoronoi2D
  */

@@ -608,3 +608,35 @@ TEST(Window, ExtremeCoefficients)
     EXPECT_NEAR(r.y, -0.5, 1e-14);
   }
 }
+
+// RangeScaleExponent: 0 inside [2^-128, 2^128]; outside, the power of two that brings the largest
+// corner coordinate into [1, 2). ScaledByPowerOfTwo scales the corners exactly and keeps which
+// points are inside (tested on points scaled alike, on and off the sides).
+TEST(Window, ScalingByAPowerOfTwoIntoTheExactRange)
+{
+  EXPECT_EQ(Window::Rectangle(0.0, 1e6, -3.0, 5.0).RangeScaleExponent(), 0);
+  EXPECT_EQ(Window::Rectangle(0.0, std::ldexp(1.0, 128), 0.0, 1.0).RangeScaleExponent(), 0);
+  const Window triangle({ { -1.0, 0.0, 0.0 }, { 0.0, -1.0, 0.0 }, { 1.0, 1.0, -1.0 } });
+  for (const int size : { -700, -200, 129, 300, 900 })
+  {
+    const double s = std::ldexp(1.0, size);
+    const Window big({ { -1.0, 0.0, 0.0 }, { 0.0, -1.0, 0.0 }, { 1.0, 1.0, -s } });
+    const int e = big.RangeScaleExponent();
+    EXPECT_EQ(e, -size) << "window of size 2^" << size;
+    const Window scaled = big.ScaledByPowerOfTwo(e);
+    ASSERT_EQ(scaled.Vertices().size(), triangle.Vertices().size());
+    for (std::size_t k = 0; k < scaled.Vertices().size(); ++k)
+    {
+      EXPECT_EQ(scaled.Vertices()[k].x, triangle.Vertices()[k].x);
+      EXPECT_EQ(scaled.Vertices()[k].y, triangle.Vertices()[k].y);
+    }
+    EXPECT_EQ(scaled.Area(), triangle.Area());
+    for (const Point2 p :
+      { Point2{ 0.25, 0.25 }, Point2{ 0.5, 0.5 }, Point2{ 0.0, 0.3 }, Point2{ 0.75, 0.5 } })
+    {
+      const Point2 atSize{ std::ldexp(p.x, size), std::ldexp(p.y, size) };
+      EXPECT_EQ(big.Contains(atSize), triangle.Contains(p));
+      EXPECT_EQ(scaled.Contains(p), triangle.Contains(p));
+    }
+  }
+}

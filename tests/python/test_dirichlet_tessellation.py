@@ -700,6 +700,41 @@ def test_delaunay_passes_point_data_with_the_input_points():
     assert_that(t.GetOutput().GetCellData().GetNumberOfArrays() == 0, "no cell array of its own")
 
 
+def test_tiles_at_any_scale_and_points_too_close_for_exact_tiles():
+    """Coordinates of some 1e-270 to 1e150: the tiles equal those of the same points at scale 1,
+    scaled, exactly (the filter works on points and window scaled by a power of two into the range
+    where the tiles' window decisions are exact). Points some 1e-200 apart in a unit window are
+    beyond that range: an error saying so instead of wrong tiles."""
+    import random
+
+    rng = random.Random(11)
+    unit = [(rng.random(), rng.random()) for _ in range(200)]
+    reference = tessellate(make_points(unit), bounds=(0, 1, 0, 1))
+    ref_tiles = reference.GetOutput(0)
+    ref_areas = [ref_tiles.GetCellData().GetArray("Area").GetValue(c) for c in range(ref_tiles.GetNumberOfCells())]
+    ref_pairs = graph_pairs(reference.GetOutput(1))
+    for exponent in (-900, -400, 350, 500):
+        s = math.ldexp(1.0, exponent)
+        f = tessellate(make_points([(x * s, y * s) for x, y in unit]), bounds=(0, s, 0, s))
+        tiles = f.GetOutput(0)
+        areas = [tiles.GetCellData().GetArray("Area").GetValue(c) for c in range(tiles.GetNumberOfCells())]
+        assert_that(areas == [a * s * s for a in ref_areas], f"2^{exponent}: areas are the unit set's times s^2")
+        assert_that(graph_pairs(f.GetOutput(1)) == ref_pairs, f"2^{exponent}: the same contiguities")
+        same_points = all(tiles.GetPoint(i) == tuple(c * s for c in ref_tiles.GetPoint(i))
+                          for i in range(ref_tiles.GetNumberOfPoints()))
+        assert_that(tiles.GetNumberOfPoints() == ref_tiles.GetNumberOfPoints() and same_points,
+                    f"2^{exponent}: tile vertices are the unit set's times s")
+
+    close = [(0.5, 0.5)] + [(rng.random() * 1e-200, rng.random() * 1e-200) for _ in range(50)]
+    f = vtkDirichletTessellation()
+    messages = messages_of(f)
+    f.SetInputData(make_points(close))
+    f.SetWindowBounds(0, 1, 0, 1)
+    f.Update()
+    assert_that(len(messages) == 1 and "areas add up to" in messages[0] and "too close together" in messages[0]
+                and f.GetOutput(0).GetNumberOfCells() == 0, f"points 1e-200 apart: {messages}")
+
+
 if __name__ == "__main__":
     run([test_tiles_are_nearest_point_regions,
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
@@ -718,4 +753,5 @@ if __name__ == "__main__":
          test_window_constraint_errors_name_them_as_the_user_added_them,
          test_empty_window_bounds_warn_and_leave_the_automatic_window,
          test_input_arrays_named_like_the_filters_are_kept_under_another_name,
-         test_delaunay_passes_point_data_with_the_input_points])
+         test_delaunay_passes_point_data_with_the_input_points,
+         test_tiles_at_any_scale_and_points_too_close_for_exact_tiles])
