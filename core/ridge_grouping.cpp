@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <sstream>
 #include <string>
 
 namespace tessera
@@ -37,6 +38,25 @@ void CheckFinitePoints(const std::vector<Point2>& points)
     if (!std::isfinite(points[k].x) || !std::isfinite(points[k].y))
     {
       throw InputError("point " + std::to_string(k) + " has a NaN or infinite coordinate");
+    }
+  }
+}
+
+/// Coordinates within +-1e306 (some 2^1016): beyond, the pixel grid's origin and the curves'
+/// control points overflow, and the errors met there name values the caller never gave.
+void CheckCoordinateRange(const std::vector<Point2>& points)
+{
+  constexpr double Limit = 1e306;
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    if (std::fabs(points[k].x) > Limit || std::fabs(points[k].y) > Limit)
+    {
+      std::ostringstream message;
+      message.precision(17);
+      message << "point " << k << " (" << points[k].x << ", " << points[k].y
+              << ") lies beyond +-1e306, the coordinates ridge grouping takes (its pixel grid and "
+                 "curves would overflow): scale the points";
+      throw InputError(message.str());
     }
   }
 }
@@ -135,6 +155,14 @@ RidgeGrouping::RidgeGrouping(const RidgeGroupingSettings& settings)
   : Settings(settings)
 {
   CheckPositive(settings.Width, "basis width");
+  // The margins (MarginPixels) on both sides of the largest image must leave room inside it.
+  const double widest = 0.5 * (MaxImageSize - 3) - 2.0;
+  if (settings.Width > widest)
+  {
+    throw InputError("basis width " + std::to_string(settings.Width) +
+      " pixels leaves no room inside the largest image (" + std::to_string(MaxImageSize) +
+      " pixels, margins of the width on both sides): at most " + std::to_string(widest));
+  }
   CheckPositive(settings.CurveSigma, "curve sigma");
   CheckPositive(settings.CurveSamplesPerPixel, "curve samples per pixel");
   if (!(settings.MinimumContourLength >= 0.0) || !std::isfinite(settings.MinimumContourLength))
@@ -234,6 +262,7 @@ int RidgeGrouping::AutomaticImageSize(const std::vector<Point2>& points, bool& c
 RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
 {
   CheckFinitePoints(points);
+  CheckCoordinateRange(points);
   RidgeGroupingResult result;
   result.GroupId.assign(points.size(), -1);
   result.Node.assign(points.size(), 0.0);

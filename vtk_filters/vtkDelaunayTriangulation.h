@@ -64,9 +64,10 @@ public:
   ///@{
   /**
    * Padding of the automatic window (default 0.1 of the larger bounding-box side; as for
-   * vtkDirichletTessellation, points without extent get the unit square centred on them).
+   * vtkDirichletTessellation, points without extent get the unit square centred on them). A
+   * negative or NaN padding is an error at the update.
    */
-  vtkSetClampMacro(Padding, double, 0.0, VTK_DOUBLE_MAX);
+  vtkSetMacro(Padding, double);
   vtkGetMacro(Padding, double);
   ///@}
 

@@ -125,9 +125,10 @@ public:
   ///@{
   /**
    * Padding of the automatic window, as a fraction of the points' larger bounding-box side
-   * (default 0.1). Used only when there is no window rectangle and no constraint.
+   * (default 0.1). Used only when there is no window rectangle and no constraint; a negative or
+   * NaN padding is then an error at the update.
    */
-  vtkSetClampMacro(Padding, double, 0.0, VTK_DOUBLE_MAX);
+  vtkSetMacro(Padding, double);
   vtkGetMacro(Padding, double);
   ///@}
 

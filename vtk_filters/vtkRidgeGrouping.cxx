@@ -138,6 +138,14 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     }
     pointsOut->SetVerts(verts);
     pointsOut->GetPointData()->PassData(input->GetPointData());
+    // (copies: the passed arrays are the input's, which keep their names)
+    const tessera_vtk::RenamedArrays renamed =
+      tessera_vtk::RenameArraysNamed(pointsOut->GetPointData(), { "GroupId", "Node" }, true);
+    if (!renamed.empty())
+    {
+      vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
+                        renamed, "point-data", "output 0", "point"));
+    }
     vtkNew<vtkIntArray> groups;
     groups->SetName("GroupId");
     vtkNew<vtkDoubleArray> nodes;

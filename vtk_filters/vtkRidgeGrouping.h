@@ -13,7 +13,8 @@
  *
  * Outputs (array names are API):
  * - 0 (vtkPolyData): the input points (one vertex each, point data passed) with point data
- *   `GroupId` (int; the contour of the point, -1 = unassigned) and `Node` (double in [0, 1]).
+ *   `GroupId` (int; the contour of the point, -1 = unassigned) and `Node` (double in [0, 1]);
+ *   an input array of one of those names is passed as NAME_input, with a warning.
  *   Field data `ImageSize` (pixels along the longer side, as used), `PixelSize`,
  *   `FieldErrorBound` (bound of |FFT field - direct sum| at any pixel).
  * - 1 (vtkPolyData): the ridge contours as polylines through pixel centres (a closed contour
@@ -67,26 +68,28 @@ public:
 
   ///@{
   /**
-   * Width of the basis (r or s) in pixels (default 5).
+   * Width of the basis (r or s) in pixels (default 5). A width that is not positive, or whose
+   * margins leave no room inside the largest image (above 1020.5), is an error at the update.
    */
-  vtkSetClampMacro(Width, double, 1e-3, VTK_DOUBLE_MAX);
+  vtkSetMacro(Width, double);
   vtkGetMacro(Width, double);
   ///@}
 
   ///@{
   /**
-   * Pixels along the longer side of the image, margins included; 0 (default) = automatic.
+   * Pixels along the longer side of the image, margins included; 0 (default) = automatic. A
+   * negative size, or one above 2048, is an error at the update.
    */
-  vtkSetClampMacro(ImageSize, int, 0, VTK_INT_MAX);
+  vtkSetMacro(ImageSize, int);
   vtkGetMacro(ImageSize, int);
   ///@}
 
   ///@{
   /**
    * Smoothness of the fitted rational Gaussian curves, in node units (default 0.04; the paper
-   * uses 0.01 to 0.08).
+   * uses 0.01 to 0.08). Not positive: an error at the update.
    */
-  vtkSetClampMacro(CurveSigma, double, 1e-6, VTK_DOUBLE_MAX);
+  vtkSetMacro(CurveSigma, double);
   vtkGetMacro(CurveSigma, double);
   ///@}
 
@@ -104,8 +107,9 @@ public:
   ///@{
   /**
    * Ridge contours shorter than this many pixels are dropped before partitioning (default 10).
+   * Negative: an error at the update.
    */
-  vtkSetClampMacro(MinimumContourLength, double, 0.0, VTK_DOUBLE_MAX);
+  vtkSetMacro(MinimumContourLength, double);
   vtkGetMacro(MinimumContourLength, double);
   ///@}
 

@@ -510,7 +510,8 @@ def test_automatic_window_keeps_every_point_and_bad_windows_are_named():
                     f"{name}: {tiles.GetNumberOfCells()} tiles of {distinct}, {rejected} rejected, {messages}")
     for name, setup, expected in [
             ("NaN bound", lambda f: f.SetWindowBounds(math.nan, 1, 0, 1), "WindowBounds xmin is NaN"),
-            ("infinite padding", lambda f: f.SetPadding(math.inf), "area overflows"),
+            ("infinite padding", lambda f: f.SetPadding(math.inf), "Padding inf is not a finite number >= 0"),
+            ("huge padding", lambda f: f.SetPadding(1e300), "area overflows"),
             ("huge bounds", lambda f: f.SetWindowBounds(-1e200, 1e200, -1e200, 1e200), "area overflows")]:
         f = vtkDirichletTessellation()
         messages = messages_of(f)
@@ -735,6 +736,18 @@ def test_tiles_at_any_scale_and_points_too_close_for_exact_tiles():
                 and f.GetOutput(0).GetNumberOfCells() == 0, f"points 1e-200 apart: {messages}")
 
 
+def test_a_negative_padding_is_an_error():
+    # (it was clamped to 0, silently)
+    for cls in (vtkDirichletTessellation, vtkDelaunayTriangulation):
+        f = cls()
+        messages = messages_of(f)
+        f.SetPadding(-1.0)
+        f.SetInputData(make_points([(0, 0), (1, 0), (0, 1)]))
+        f.Update()
+        assert_that(f.GetPadding() == -1.0 and len(messages) == 1 and "Padding -1 is not a finite number >= 0" in messages[0],
+                    f"{cls.__name__}: {messages}")
+
+
 if __name__ == "__main__":
     run([test_tiles_are_nearest_point_regions,
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
@@ -754,4 +767,5 @@ if __name__ == "__main__":
          test_empty_window_bounds_warn_and_leave_the_automatic_window,
          test_input_arrays_named_like_the_filters_are_kept_under_another_name,
          test_delaunay_passes_point_data_with_the_input_points,
-         test_tiles_at_any_scale_and_points_too_close_for_exact_tiles])
+         test_tiles_at_any_scale_and_points_too_close_for_exact_tiles,
+         test_a_negative_padding_is_an_error])

@@ -121,5 +121,60 @@ def test_bad_and_degenerate_input():
     assert_that(len(errors) == 1 and "point 1" in errors[0], f"NaN point named: {errors}")
 
 
+def test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept():
+    """Settings out of range are errors naming them (they were clamped to other values, silently:
+    Width -5 gave 15 groups for two curves), as are a basis width whose margins leave no room in
+    the largest image (2^31 pixels overflowed) and points beyond +-1e306; points up to 2e305 give
+    the same groups as at scale 1. Input arrays named GroupId or Node are passed as NAME_input."""
+    from vtkmodules.vtkCommonCore import vtkDoubleArray
+
+    coords, _, _ = two_noisy_curves()
+    xs, ys = [x for x, _ in coords], [y for _, y in coords]
+    cases = [("SetWidth", -5.0, "basis width -5"), ("SetWidth", 3e9, "leaves no room"),
+             ("SetCurveSigma", 0.0, "curve sigma 0"), ("SetMinimumContourLength", -2.0, "minimum contour length -2"),
+             ("SetImageSize", -1, "image size -1 is negative")]
+    for setter, value, expected in cases:
+        f = vtkRidgeGrouping()
+        errors = messages_of(f)
+        getattr(f, setter)(value)
+        f.SetInputData(make_points(list(zip(xs, ys))))
+        f.Update()
+        assert_that(len(errors) == 1 and expected in errors[0] and f.GetOutput(0).GetNumberOfPoints() == 0,
+                    f"{setter}({value}): {errors}")
+
+    def groups_at(scale):
+        f = vtkRidgeGrouping()
+        errors = messages_of(f)
+        f.SetInputData(make_points([(x * scale, y * scale) for x, y in zip(xs, ys)]))
+        f.Update()
+        array = f.GetOutput(0).GetPointData().GetArray("GroupId")
+        return [array.GetValue(i) for i in range(array.GetNumberOfTuples())] if array else None, errors
+
+    unit, _ = groups_at(1.0)
+    huge, errors = groups_at(2e305 / max(map(abs, xs + ys)))
+    assert_that(not errors and huge == unit, f"points up to 2e305: the groups at scale 1 ({errors})")
+    none, errors = groups_at(1e307 / max(map(abs, xs + ys)))
+    assert_that(none is None and len(errors) == 1 and "beyond +-1e306" in errors[0], f"points of 1e307: {errors}")
+
+    data = make_points(list(zip(xs, ys)))
+    for name in ("GroupId", "Node"):
+        array = vtkDoubleArray()
+        array.SetName(name)
+        for i in range(data.GetNumberOfPoints()):
+            array.InsertNextValue(7.0)
+        data.GetPointData().AddArray(array)
+    f = vtkRidgeGrouping()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetInputData(data)
+    f.Update()
+    out = f.GetOutput(0).GetPointData()
+    kept = [out.GetArray(n) for n in ("GroupId_input", "Node_input")]
+    assert_that(all(a is not None and a.GetValue(0) == 7.0 for a in kept)
+                and out.GetArray("GroupId").GetValue(0) != 7.0, "the input's arrays kept under NAME_input")
+    assert_that(any("'GroupId' is passed to output 0 as 'GroupId_input'" in w for w in warnings), f"warned: {warnings}")
+    assert_that(data.GetPointData().GetArray("GroupId") is not None, "the input's own array keeps its name")
+
+
 if __name__ == "__main__":
-    run([test_two_noisy_curves_are_grouped_ordered_and_fitted, test_bad_and_degenerate_input])
+    run([test_two_noisy_curves_are_grouped_ordered_and_fitted, test_bad_and_degenerate_input,
+         test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept])
