@@ -269,7 +269,8 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
   if (points.size() < 2)
   {
     result.Warnings.push_back("ridge grouping needs at least 2 points, got " +
-      std::to_string(points.size()) + ": outputs are empty");
+      std::to_string(points.size()) +
+      ": no group, contour or curve (the points are output 0, unassigned)");
     return result;
   }
   if (BoundsOf(points.data(), points.size()).LargerSide() == 0.0)

@@ -69,8 +69,9 @@ TessellationResult RunBrasselReif(const tessera::Window& window,
 {
   if (!window.IsAxisAlignedRectangle())
   {
-    throw tessera::InputError("the BrasselReif algorithm needs a rectangular window (WindowBounds "
-                              "only); remove the window constraints or use GreenSibson");
+    throw tessera::InputError("the BrasselReif algorithm needs a window that is a rectangle with "
+                              "sides parallel to the axes (WindowBounds, or constraints that make "
+                              "one); use GreenSibson for other windows");
   }
   tessera::ThiessenSweepResult sweep = tessera::ComputeThiessenSweep(window, points);
   return { tessera::MeshOfSeparateTiles(std::move(sweep.Tiles)),

@@ -19,7 +19,8 @@
  *   `FieldErrorBound` (bound of |FFT field - direct sum| at any pixel).
  * - 1 (vtkPolyData): the ridge contours as polylines through pixel centres (a closed contour
  *   repeats its first point), cell data `ContourId` (int, = GroupId of its points), `Closed`
- *   (unsigned char) and `Length` (double).
+ *   (unsigned char) and `Length` (double: the length of the pixel path, in input units, which
+ *   exceeds a smooth curve's by a few percent).
  * - 2 (vtkPolyData): the fitted curves, finely sampled polylines, cell data `GroupId` and
  *   `Closed`.
  * - 3 (vtkImageData): the field image, point data `Field` (double), `MinorRidge` and
@@ -96,7 +97,8 @@ public:
   ///@{
   /**
    * How ridge segments are joined at branch pixels: longest contour (default, the paper's) or
-   * closest tangent.
+   * closest tangent. Where two curves cross, the longest contour may turn onto the other curve
+   * (two L-shaped groups); closest tangent keeps each curve straight through the crossing.
    */
   vtkSetClampMacro(JoinRule, int, LONGEST, CLOSEST_TANGENT);
   vtkGetMacro(JoinRule, int);

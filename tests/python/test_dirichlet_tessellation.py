@@ -301,7 +301,14 @@ def test_brassel_reif_refuses_a_non_rectangular_window():
     f.AddWindowConstraint(1, 1, -1.5)  # x + y < 1.5 cuts a corner
     f.SetAlgorithmToBrasselReif()
     f.Update()
-    assert_that(len(messages) == 1 and "rectangular" in messages[0], f"clear error: {messages}")
+    assert_that(len(messages) == 1 and "a rectangle with sides parallel to the axes" in messages[0], f"clear error: {messages}")
+    # Constraints that leave a rectangle (x < 0.5 here) are taken, as the message says.
+    f.RemoveAllWindowConstraints()
+    f.AddWindowConstraint(1, 0, -0.5)
+    f.Update()
+    areas = f.GetOutput(0).GetCellData().GetArray("Area")
+    assert_that(len(messages) == 1 and areas is not None and areas.GetNumberOfTuples() == 2, f"x < 0.5: {messages}")
+    assert_close(areas.GetValue(0) + areas.GetValue(1), 0.5, 1e-15, "the tiles fill the half window")
 
 
 def test_nan_point_is_named():
