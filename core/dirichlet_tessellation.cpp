@@ -300,22 +300,22 @@ bool DirichletTessellation::StarIsCocircular(std::int32_t start) const
   return false;
 }
 
-void DirichletTessellation::Validate(const Point2& p, std::size_t id) const
+void DirichletTessellation::Validate(const Point2& p, std::size_t id, const char* after) const
 {
   if (std::isnan(p.x) || std::isnan(p.y))
   {
-    throw InputError("point " + std::to_string(id) + " has a NaN coordinate");
+    throw InputError("point " + std::to_string(id) + " has a NaN coordinate" + after);
   }
   if (!std::isfinite(p.x) || !std::isfinite(p.y))
   {
-    throw InputError("point " + std::to_string(id) + " has an infinite coordinate");
+    throw InputError("point " + std::to_string(id) + " has an infinite coordinate" + after);
   }
 }
 
 std::int32_t DirichletTessellation::Insert(const Point2& p, std::int32_t nearId)
 {
   const std::size_t id = this->Coordinates.size();
-  this->Validate(p, id);
+  this->Validate(p, id, ": not inserted (the next point inserted gets that id)");
   if (id >= std::size_t(INT32_MAX / 8))
   {
     throw InputError("too many points: " + std::to_string(id + 1));

@@ -72,7 +72,8 @@ public:
   DirichletTessellation(Window window, std::vector<Point2> points);
 
   /// Streaming: appends p with the next id and inserts it. Returns its id; its status tells
-  /// whether it was accepted. Throws InputError (naming that id) for a NaN/Inf coordinate.
+  /// whether it was accepted. Throws InputError (naming that id) for a NaN/Inf coordinate; the
+  /// point is then not appended, and the next point inserted gets that id.
   /// nearId: an accepted point near p, where the walk to p starts when vertex edges are tracked
   /// (TrackVertexEdges); otherwise, or for -1, it starts at the triangle made last. The result
   /// is the same either way: only the walk's length differs.
@@ -207,7 +208,8 @@ private:
     bool SawCocircular = false;
   };
 
-  void Validate(const Point2& p, std::size_t id) const;
+  /// Throws InputError naming the point id for a NaN/Inf coordinate (after: appended to it).
+  void Validate(const Point2& p, std::size_t id, const char* after = "") const;
   /// knownBox: the bounding box of the points of ids when the caller has it (else computed).
   void BuildFrom(std::vector<std::int32_t>& ids, const Box2* knownBox = nullptr);
   /// The input id of a vertex (differs only during BuildFrom, which numbers vertices locally).

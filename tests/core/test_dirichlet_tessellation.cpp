@@ -403,6 +403,37 @@ TEST(DirichletTessellation, StreamingEqualsBatch)
   EXPECT_TRUE(MakeCanonical(batch) == MakeCanonical(streaming));
 }
 
+// A streamed point with a NaN or infinite coordinate is refused, named by the id it would have
+// had, and not appended: the next point gets that id, and the result equals the batch of the
+// valid points.
+TEST(DirichletTessellation, StreamingRefusesABadPointWithoutUsingItsId)
+{
+  const std::vector<Point2> points = UniformPoints(40, 5);
+  Tess batch(UnitWindow(), points);
+  Tess streaming(UnitWindow());
+  const double bad[2] = { std::nan(""), std::numeric_limits<double>::infinity() };
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    if (k == 7 || k == 23)
+    {
+      try
+      {
+        streaming.Insert({ 0.5, bad[k == 23 ? 1 : 0] });
+        ADD_FAILURE() << "a bad point was inserted";
+      }
+      catch (const tessera::InputError& e)
+      {
+        EXPECT_EQ(std::string(e.what()),
+          "point " + std::to_string(k) + (k == 23 ? " has an infinite" : " has a NaN") +
+            " coordinate: not inserted (the next point inserted gets that id)");
+      }
+    }
+    EXPECT_EQ(streaming.Insert(points[k]), std::int32_t(k));
+  }
+  CheckStructure(streaming);
+  EXPECT_TRUE(MakeCanonical(batch) == MakeCanonical(streaming));
+}
+
 // Insert's nearId only moves where the walk starts: with any hint (a random earlier point, a
 // removed or rejected one, an unknown id) the result is the tessellation built without hints, on
 // uniform points and on a lattice with its co-circular squares and duplicates.
