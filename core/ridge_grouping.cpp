@@ -288,7 +288,12 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
   if (capped)
   {
     result.Warnings.push_back("automatic image size capped at " + std::to_string(result.ImageSize) +
-      " pixels: fewer than half of the points have a pixel of their own");
+      " pixels" +
+      (result.ImageSize > MaxAutomaticImageSize
+          ? " (the least that holds the margins of a basis width of " +
+            std::to_string(this->Settings.Width) + " pixels)"
+          : std::string()) +
+      ": fewer than half of the points have a pixel of their own");
   }
   const PixelGrid grid = this->MakeGrid(points, result.ImageSize);
   result.Grid = grid;

@@ -16,7 +16,8 @@
 // the data have neighbours to be tested against); the shorter side gets as many pixels as it
 // needs at the same spacing. With ImageSize = 0 the size is chosen as the paper says: the
 // smallest of 64, 96, 128, 192, 256, 384, 512, 768, 1024 at which most (more than half) of the
-// points fall in a pixel of their own; 1024 (with a warning) when none does.
+// points fall in a pixel of their own; 1024 (with a warning) when none does, or, for a basis so
+// wide (above some 500 pixels) that its margins need more, the smallest size that holds them.
 //
 // Choices the paper leaves open (each explained where it is made):
 //  - the field is spread onto the pixel grid bilinearly and convolved by FFT, error bound
