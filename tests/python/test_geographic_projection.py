@@ -9,7 +9,7 @@ from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkMultiBlockDataSet, vtkPolyData
 
 from tessera import vtkGeographicProjection
-from tessera_testing import EXAMPLE_DATA, assert_close, assert_that, messages_of, run
+from tessera_testing import EXAMPLE_DATA, assert_close, assert_that, make_points, messages_of, run
 
 
 def colorado_gauges():
@@ -90,16 +90,6 @@ def test_nan_point_is_named_and_output_is_empty():
     assert_that("point 1" in messages[0], f"the error names point 1: {messages[0]}")
 
 
-def lonlat_points(pairs):
-    points = vtkPoints()
-    points.SetDataTypeToDouble()
-    for lon, lat in pairs:
-        points.InsertNextPoint(lon, lat, 0.0)
-    data = vtkPolyData()
-    data.SetPoints(points)
-    return data
-
-
 def record_of(data):
     array = data.GetFieldData().GetAbstractArray("TesseraProjection")
     return array.GetValue(0) if array else None
@@ -111,9 +101,9 @@ def test_the_blocks_of_a_composite_share_one_projection():
     projecting all the points as one set puts it. Errors name the block; the inverse undoes it."""
     west, east = [(-109.0, 37.0), (-105.0, 39.0)], [(-105.0, 39.0), (-102.0, 41.0)]
     blocks = vtkMultiBlockDataSet()
-    blocks.SetBlock(0, lonlat_points(west))
+    blocks.SetBlock(0, make_points(west))
     blocks.SetBlock(1, None)  # an empty place is kept empty
-    blocks.SetBlock(2, lonlat_points(east))
+    blocks.SetBlock(2, make_points(east))
     blocks.GetMetaData(2).Set(vtkCompositeDataSet.NAME(), "east")
     f = vtkGeographicProjection()
     messages = messages_of(f)
@@ -123,7 +113,7 @@ def test_the_blocks_of_a_composite_share_one_projection():
     assert_that(not messages and out.IsA("vtkMultiBlockDataSet") and out.GetNumberOfBlocks() == 3,
                 f"a multiblock out: {messages}, {out.GetClassName()}")
     whole = vtkGeographicProjection()
-    whole.SetInputData(lonlat_points(west + east))
+    whole.SetInputData(make_points(west + east))
     whole.Update()
     expected = whole.GetOutput()
     record = record_of(expected)
@@ -146,7 +136,7 @@ def test_the_blocks_of_a_composite_share_one_projection():
         assert_close(back.GetPoint(i)[0], lon, 1e-9, f"longitude {i} back")
         assert_close(back.GetPoint(i)[1], lat, 1e-9, f"latitude {i} back")
 
-    blocks.SetBlock(2, lonlat_points([(-105.0, 39.0), (-102.0, 95.0)]))
+    blocks.SetBlock(2, make_points([(-105.0, 39.0), (-102.0, 95.0)]))
     blocks.GetMetaData(2).Set(vtkCompositeDataSet.NAME(), "east")
     f.Modified()
     f.Update()
@@ -157,7 +147,7 @@ def test_the_blocks_of_a_composite_share_one_projection():
 def test_no_points_give_an_empty_output_without_error():
     f = vtkGeographicProjection()
     messages = messages_of(f)
-    f.SetInputData(lonlat_points([]))
+    f.SetInputData(make_points([]))
     f.Update()
     assert_that(not messages and f.GetOutput().GetNumberOfPoints() == 0 and record_of(f.GetOutput()) is None,
                 f"no points: {messages}")
@@ -169,7 +159,7 @@ def test_an_edge_cut_into_the_most_pieces_is_reported():
     from vtkmodules.vtkCommonCore import vtkCommand
     from vtkmodules.vtkCommonDataModel import vtkCellArray
 
-    line = lonlat_points([(-105.0, 39.0), (-104.0, 39.0), (-104.0, 39.5)])
+    line = make_points([(-105.0, 39.0), (-104.0, 39.0), (-104.0, 39.5)])
     cells = vtkCellArray()
     cells.InsertNextCell(3)
     for i in range(3):
