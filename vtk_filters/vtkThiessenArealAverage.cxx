@@ -155,6 +155,11 @@ public:
         return this->Value;
       }
       const std::string text = Trimmed(*this->Text);
+      // (strtod also reads hexadecimal, "0x10" as 16: no data file means that)
+      if (text.find_first_of("xX") != std::string::npos)
+      {
+        return std::nullopt;
+      }
       char* end = nullptr;
       const double value = std::strtod(text.c_str(), &end);
       if (text.empty() || end != text.c_str() + text.size())
@@ -238,7 +243,7 @@ public:
     {
       if (time.Text)
       {
-        return this->Date(row, *time.Text);
+        return this->Date(row, time);
       }
       return this->Finite(row, time);
     }
@@ -248,6 +253,12 @@ public:
       return std::nullopt;
     }
     const double year = this->Finite(row, time);
+    if (year != std::floor(year))
+    {
+      ThrowRowError(row,
+        "the year '" + this->Times.Text(row) + "' in column '" + this->TimeColumn +
+          "' is not a whole number (with the month in column '" + this->MonthColumn + "')");
+    }
     const double month = monthCell.Number().value_or(0.0);
     if (!(month >= 1.0 && month <= 12.0 && month == std::floor(month)))
     {
@@ -272,16 +283,25 @@ private:
     return *t;
   }
 
-  double Date(vtkIdType row, const std::string& text) const
+  /// A text time: an ISO date, or else a number (a numeric column read as text, as ParaView's
+  /// CSV reader gives it with Detect Numeric Columns off, which the README advises for files with
+  /// blank missing values).
+  double Date(vtkIdType row, const NumberColumn::Cell& time) const
   {
-    const std::optional<double> t = tessera::IsoDateTime(text);
-    if (!t)
+    const std::optional<double> t = tessera::IsoDateTime(*time.Text);
+    if (t)
+    {
+      return *t;
+    }
+    const std::optional<double> number = time.Number();
+    if (!number || !std::isfinite(*number))
     {
       ThrowRowError(row,
-        "'" + text + "' in column '" + this->TimeColumn +
-          "' is not a date (YYYY, YYYY-MM or YYYY-MM-DD, optionally with hh:mm[:ss])");
+        "'" + *time.Text + "' in column '" + this->TimeColumn +
+          "' is not a date (YYYY, YYYY-MM or YYYY-MM-DD, optionally with hh:mm[:ss]) or a "
+          "finite number");
     }
-    return *t;
+    return *number;
   }
 
   std::string TimeColumn, MonthColumn;
@@ -691,9 +711,16 @@ int vtkThiessenArealAverage::RequestInformation(vtkInformation*,
   vtkInformationVector* outputVector)
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  if (this->GetNumberOfInputConnections(2) == 0)
+  {
+    // Without a table an update averages the gauges' one array as it is: the gauges' own time
+    // steps (a file series of gauge files, say), which the pipeline copies from input 0, are the
+    // filter's, and a requested time goes up to the gauges.
+    return 1;
+  }
   outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
   outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
-  if (this->GetNumberOfInputConnections(2) == 0 || this->GetNumberOfInputConnections(0) == 0)
+  if (this->GetNumberOfInputConnections(0) == 0)
   {
     return 1;
   }
@@ -783,6 +810,7 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
     {
       tilesOutput->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), in.Times[step]);
     }
+
     return 1;
   }
   catch (const std::exception& e)
@@ -908,7 +936,11 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
         "without observations the gauges need a numeric point-data array '" + this->ValueArrayName +
         "'");
     }
-    in.Times.push_back(0.0);
+    // The one step's time: the gauges' own (from a time-aware source), else 0.
+    vtkInformation* gaugesInfo = gauges->GetInformation();
+    in.Times.push_back(gaugesInfo->Has(vtkDataObject::DATA_TIME_STEP())
+        ? gaugesInfo->Get(vtkDataObject::DATA_TIME_STEP())
+        : 0.0);
     in.Values.emplace_back(gaugeCount);
     for (std::size_t g = 0; g < gaugeCount; ++g)
     {
@@ -950,7 +982,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     }
   };
   warnOf(unobserved.size(),
-    "gauge(s) have no observation and are never used",
+    "gauge(s) have no observed value (no row, or only missing values) and are never used",
     [&](std::size_t k) { return idOf(static_cast<std::size_t>(unobserved[k])); });
   const std::vector<tessera::UnknownStation>& unknown = rows->Match.UnknownStations;
   warnOf(unknown.size(),

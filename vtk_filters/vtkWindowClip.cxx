@@ -9,6 +9,7 @@
 #include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
@@ -63,6 +64,27 @@ std::string ProjectionWarning(vtkDataObject* tiles, vtkDataObject* window)
     other + " none: both are taken to be in the same plane";
 }
 
+/// The tiles' point data is not passed (their cell and field data are): the pieces' vertices are
+/// new points, crossings of tile edges and window rings among them. A warning names its arrays.
+std::string PointDataWarning(vtkPolyData* tiles)
+{
+  vtkPointData* pointData = tiles->GetPointData();
+  const int count = pointData->GetNumberOfArrays();
+  if (count == 0)
+  {
+    return std::string();
+  }
+  std::string names;
+  for (int k = 0; k < count; ++k)
+  {
+    const char* name = pointData->GetArrayName(k);
+    names += (k ? ", '" : "'") + std::string(name ? name : "(unnamed)") + "'";
+  }
+  return "the point data of input 0 (" + names +
+    ") is not passed: the clipped pieces' vertices are new points (the tiles' cell data is "
+    "passed)";
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -92,6 +114,11 @@ int vtkWindowClip::RequestData(vtkInformation*,
     if (!projectionWarning.empty())
     {
       vtkWarningMacro(<< projectionWarning);
+    }
+    const std::string pointDataWarning = PointDataWarning(tiles);
+    if (!pointDataWarning.empty())
+    {
+      vtkWarningMacro(<< pointDataWarning);
     }
     const tessera_vtk::Rings window = tessera_vtk::ReadPolygonRings(windowData);
     const std::string skippedRings = tessera_vtk::SkippedCellsWarning(window, "window (input 1)");

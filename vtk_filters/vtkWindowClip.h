@@ -31,9 +31,10 @@
  * triangles or quads (lines, vertices, strips), and polygons of fewer than 3 points, are not
  * clipped: a warning counts them and the output's field data array `SkippedCellIds` (vtkIdType)
  * lists them. Areas use exact orientation tests and compensated sums, so the clipped areas of a
- * tiling sum to the window's area to round-off. Only x and y are used, in one plane: inputs whose
- * `TesseraProjection` records (vtkGeographicProjection) differ are an error naming both, and a
- * record on one input only gives a warning.
+ * tiling sum to the window's area to round-off. The tiles' point data is not passed (the pieces'
+ * vertices are new points; a warning names its arrays). Only x and y are used, in one plane: inputs
+ * whose `TesseraProjection` records (vtkGeographicProjection) differ are an error naming both, and
+ * a record on one input only gives a warning.
  */
 
 #ifndef vtkWindowClip_h

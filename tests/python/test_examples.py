@@ -510,7 +510,7 @@ def test_the_filters_warnings_are_lines_of_their_own():
         for line in expected:
             assert_that(line in messages, f"{line!r} not among {messages}")
         unused = [m for m in messages if "never used" in m]
-        assert_that(len(unused) == 1 and unused[0].startswith(f"{stations}: 4 gauge(s) have no observation"),
+        assert_that(len(unused) == 1 and unused[0].startswith(f"{stations}: 4 gauge(s) have no observed value"),
                     f"the never-used gauges: {messages}")
 
 

@@ -889,6 +889,101 @@ def test_long_numeric_ids_repeated_rows_and_shared_ids_are_kept_apart_and_report
     assert_that(unobserved.GetNumberOfTuples() == 1 and unobserved.GetValue(0) == 3, "gauge 3 unobserved")
 
 
+def test_review_cases_of_times_values_and_time_aware_gauges():
+    """A user review's findings. (1) Numeric times in a text column (a CSV read with numeric
+    detection off, as the README advises for blank missing values) are read as numbers; a text
+    time that is neither a date nor a number is named. (2) A year that is not whole, with a month
+    column, is an error (1963.5 with month 8 became 2064.08). (3) A hexadecimal value is not a
+    number (0x10 was read as 16). (4) Without a table, the gauges' own time steps are the
+    filter's: a requested time goes up to them, and the tiles carry their time."""
+    from vtkmodules.util.vtkAlgorithm import VTKPythonAlgorithmBase
+
+    square = polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]])
+    coords = [(0.25, 0.5), (0.75, 0.5)]
+
+    def run_table(rows, **settings):
+        f = vtkThiessenArealAverage()
+        messages = messages_of(f)
+        f.SetGaugesData(gauges_polydata(coords, ["a", "b"]))
+        f.SetCatchmentData(square)
+        f.SetObservationsData(text_table(rows))
+        f.SetTimeColumn("date")
+        for name, value in settings.items():
+            getattr(f, "Set" + name)(value)
+        f.Update(1)
+        return f, messages
+
+    f, messages = run_table([("a", "1963.5", "10"), ("b", "1963.5", "20"), ("a", " 1964.25 ", ""),
+                             ("b", "1964.25", "2")])
+    assert_that(not messages and summary_column(f, "Time") == [1963.5, 1964.25]
+                and summary_column(f, "ArealMean") == [15.0, 2.0] and summary_column(f, "StationsUsed") == [2, 1],
+                f"(1) numeric text times: {messages} {summary_column(f, 'Time')} {summary_column(f, 'ArealMean')}")
+    f, messages = run_table([("a", "1963.5", "10"), ("b", "mid-1963", "20")])
+    assert_that(len(messages) == 1 and "'mid-1963' in column 'date' is not a date" in messages[0]
+                and "or a finite number" in messages[0], f"(1) neither a date nor a number: {messages}")
+
+    table = vtkTable()
+    for name, values in (("station_id", ["a", "b"]), ("year", ["1963.5", "1963"]), ("month", ["8", "8"]),
+                         ("value", ["1", "2"])):
+        column = vtkStringArray()
+        column.SetName(name)
+        for v in values:
+            column.InsertNextValue(v)
+        table.AddColumn(column)
+    f = vtkThiessenArealAverage()
+    messages = messages_of(f)
+    f.SetGaugesData(gauges_polydata(coords, ["a", "b"]))
+    f.SetCatchmentData(square)
+    f.SetObservationsData(table)
+    f.SetTimeColumn("year")
+    f.SetMonthColumn("month")
+    f.Update(1)
+    assert_that(len(messages) == 1 and "the year '1963.5' in column 'year' is not a whole number" in messages[0],
+                f"(2) a fractional year with a month: {messages}")
+
+    f, messages = run_table([("a", "2000-01", "0x10"), ("b", "2000-01", "2")])
+    assert_that(len(messages) == 1 and "'0x10'" in messages[0] and "not a number" in messages[0],
+                f"(3) a hexadecimal value: {messages}")
+
+    class TimedGauges(VTKPythonAlgorithmBase):
+        """Gauges a and b whose value is 10 t and 20 t at times 1, 2, 3."""
+
+        def __init__(self):
+            VTKPythonAlgorithmBase.__init__(self, nInputPorts=0, nOutputPorts=1, outputType="vtkPolyData")
+            self.asked = []
+
+        def RequestInformation(self, request, inInfo, outInfo):
+            info = outInfo.GetInformationObject(0)
+            info.Set(vtkStreamingDemandDrivenPipeline.TIME_STEPS(), [1.0, 2.0, 3.0], 3)
+            info.Set(vtkStreamingDemandDrivenPipeline.TIME_RANGE(), [1.0, 3.0], 2)
+            return 1
+
+        def RequestData(self, request, inInfo, outInfo):
+            info = outInfo.GetInformationObject(0)
+            t = info.Get(vtkStreamingDemandDrivenPipeline.UPDATE_TIME_STEP())
+            self.asked.append(t)
+            out = vtkPolyData.GetData(outInfo)
+            out.ShallowCopy(gauges_polydata(coords, ["a", "b"], [10 * t, 20 * t]))
+            out.GetInformation().Set(vtkPolyData.DATA_TIME_STEP(), t)
+            return 1
+
+    source = TimedGauges()
+    f = vtkThiessenArealAverage()
+    messages = messages_of(f)
+    f.SetGaugesConnection(source.GetOutputPort())
+    f.SetCatchmentData(square)
+    f.UpdateInformation()
+    steps = f.GetOutputInformation(0).Get(vtkStreamingDemandDrivenPipeline.TIME_STEPS())
+    assert_that(steps == (1.0, 2.0, 3.0), f"(4) the gauges' steps advertised: {steps}")
+    for t in (2.0, 3.0, 1.0):
+        f.UpdateTimeStep(t)
+        tiles = f.GetOutputDataObject(0)
+        values = sorted(tiles.GetCellData().GetArray("Value").GetValue(c) for c in range(tiles.GetNumberOfCells()))
+        assert_that(values == [10 * t, 20 * t] and tiles.GetInformation().Get(vtkPolyData.DATA_TIME_STEP()) == t
+                    and summary_column(f, "Time") == [t], f"(4) at time {t}: {values}, {summary_column(f, 'Time')}")
+    assert_that(not messages and source.asked[-3:] == [2.0, 3.0, 1.0], f"(4) {messages}, asked {source.asked}")
+
+
 if __name__ == "__main__":
     run([test_four_symmetric_gauges_share_a_square,
          test_colorado_months_match_a_brute_force_raster,
@@ -907,6 +1002,7 @@ if __name__ == "__main__":
          test_a_failed_update_leaves_no_earlier_result,
          test_review_cases_of_gauges_and_errors,
          test_columns_not_yet_set_give_no_error_until_the_update,
+         test_review_cases_of_times_values_and_time_aware_gauges,
          test_rows_that_cannot_be_used_make_no_step_and_are_listed,
          test_weights_table_lists_every_step,
          test_tiles_of_a_catchment_with_a_hole_or_a_bay,

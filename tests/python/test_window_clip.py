@@ -338,9 +338,30 @@ def test_tiles_and_window_must_share_their_projection():
                 and "the tiles (input 0) none" in warnings[0], f"one record: {errors} {warnings}")
 
 
+def test_the_tiles_point_data_is_named_as_not_passed():
+    # (it was dropped without a word; the tiles' cell data is passed)
+    tiles = vtkDirichletTessellation()
+    tiles.SetInputData(make_points([(0.2, 0.3), (0.7, 0.6)]))
+    tiles.SetWindowBounds(0, 1, 0, 1)
+    tiles.Update()
+    data = tiles.GetOutput(0)
+    for name in ("elev", "slope"):
+        array = vtkDoubleArray()
+        array.SetName(name)
+        for i in range(data.GetNumberOfPoints()):
+            array.InsertNextValue(1.0)
+        data.GetPointData().AddArray(array)
+    output, errors, warnings = clip_by(data, polygon([[(0.1, 0.1), (0.9, 0.1), (0.9, 0.9), (0.1, 0.9)]]))
+    assert_that(not errors and output.GetNumberOfCells() == 2 and output.GetCellData().GetArray("PointId"),
+                f"clipped with the cell data: {errors}")
+    assert_that(len(warnings) == 1 and "point data of input 0 ('elev', 'slope') is not passed" in warnings[0],
+                f"the dropped arrays named: {warnings}")
+
+
 if __name__ == "__main__":
     run([test_cells_are_simple_pieces_that_fill_tile_and_window,
          test_review_cases,
          test_input_arrays_named_like_the_filters_are_kept_under_another_name,
          test_a_window_of_loose_line_segments_is_joined_into_its_rings,
-         test_tiles_and_window_must_share_their_projection])
+         test_tiles_and_window_must_share_their_projection,
+         test_the_tiles_point_data_is_named_as_not_passed])
