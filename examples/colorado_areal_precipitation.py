@@ -201,7 +201,8 @@ class Progress:
 
     def __call__(self, caller, event):
         percent = int(caller.GetProgress() * 100)
-        if not self.stopped and percent != self.last and percent % 5 == 0:
+        percent -= percent % 5  # in steps of 5, shown even when the filter reports past one
+        if not self.stopped and percent != self.last:
             self.last = percent
             print(f"\r{self.label}: {percent:3d}%", end="", file=sys.stderr, flush=True)
             self.open = True
@@ -563,7 +564,7 @@ def main(argv=None):
     average.SetObservationsData(observations)
     average.SetValueColumn("precip")
     progress = Progress("Thiessen areal means")
-    average.AddObserver(vtkCommand.ProgressEvent, progress)
+    progress_tag = average.AddObserver(vtkCommand.ProgressEvent, progress)
     started = time.time()
     messages = FilterMessages(average, InputFiles(args.stations, gauge_lines, args.observations, row_lines,
                                                   args.catchment), progress)
@@ -571,6 +572,8 @@ def main(argv=None):
     summary = average.GetOutputDataObject(1)
     messages.check(summary is None or summary.GetNumberOfRows() == 0)
     print(f"{summary.GetNumberOfRows()} months in {time.time() - started:.2f} s", file=sys.stderr)
+    # The month's tiles below re-run the filter for that time only: no second progress bar.
+    average.RemoveObserver(progress_tag)
     rows = write_summary(summary, os.path.join(args.out, "areal_mean.csv"))
     write_all_weights(average.GetOutputDataObject(2), os.path.join(args.out, "weights_all_months.csv"))
 
