@@ -50,7 +50,11 @@
  * mistyped coordinate, do not change the weights), unless ProjectionRecord holds a
  * `TesseraProjection` record (e.g. "projection=UTM zone=13 north=1"). With an equal-area
  * projection, planar areas are the ellipsoidal areas; otherwise rings are unprojected, densified,
- * and measured with GeographicLib::PolygonArea (AreaMethod selects explicitly).
+ * and measured with GeographicLib::PolygonArea (AreaMethod selects explicitly). The tiles
+ * themselves are Thiessen polygons in the projected plane, not on the ellipsoid: over Colorado
+ * the areal means agree with a raster of the geodesically nearest gauge to better than 0.1% (the
+ * tests check it), while over a box of 25 by 18 degrees at 50-68 N single weights were found up
+ * to 3% (relative) from the geodesic ones, the areal mean 0.08%.
  *
  * Output 0 (vtkPolyData, time-dependent): the tiles of the requested time step clipped to the
  * catchment, in lon/lat. Every cell is a simple polygon (no hole, not touching itself) and cells
