@@ -64,8 +64,9 @@ public:
   ///@{
   /**
    * Padding of the automatic window (default 0.1 of the larger bounding-box side; as for
-   * vtkDirichletTessellation, points without extent get the unit square centred on them). A
-   * negative or NaN padding is an error at the update.
+   * vtkDirichletTessellation, points without extent get the unit square centred on them). Used
+   * only without WindowBounds and constraints; a negative or NaN padding is then an error at the
+   * update.
    */
   vtkSetMacro(Padding, double);
   vtkGetMacro(Padding, double);

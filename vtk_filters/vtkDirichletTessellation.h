@@ -8,9 +8,10 @@
  * are, which points neighbour which, and each tile's sides) are the same for every insertion
  * order, and exactly co-circular points are handled consistently: at a vertex shared by 4 or more
  * tiles, neither diagonal is recorded as a contiguity; the pairs that meet only there are
- * half-neighbours. The corners are rounded constructions (circumcentres, window crossings), so
- * with another order their coordinates and the areas may differ in the last bits (some ulps;
- * areas by some 1e-12 relative at most).
+ * half-neighbours when that vertex lies strictly inside the window (tiles that meet only at a
+ * point of the window's boundary are no pair at all). The corners are rounded constructions
+ * (circumcentres, window crossings), so with another order their coordinates and the areas may
+ * differ in the last bits (some ulps; areas by some 1e-12 relative at most).
  *
  * The window is the intersection of the rectangle SetWindowBounds(xmin, xmax, ymin, ymax) (when
  * xmin < xmax and ymin < ymax) and the strict constraints a*x + b*y + c < 0 added with
@@ -18,7 +19,8 @@
  * Padding (default 0.1) times its larger side; points without extent (one point, or copies of
  * one) get the square of side 1 centred on them, and no points the square -1 < x, y < 1. Padding
  * 0 keeps a margin of 1e-9 of the larger side, so that every point is strictly inside. Redundant
- * constraints are ignored; an empty or unbounded window is an error.
+ * constraints are ignored; an empty or unbounded window is an error, and so is a constraint with
+ * a = b = 0 (no half-plane, even one every point satisfies).
  *
  * Algorithms: GreenSibson (default), the incremental engine; BrasselReif, the Thiessen sweep of
  * Brassel and Reif (1979), which needs a rectangular window. Both give the same combinatorics;
@@ -50,7 +52,7 @@
  * Output 1 (vtkPolyData): the contiguity graph, sorted by (i, j). Its points are the input points
  * (same ids, point data passed as it is: names and global ids kept), with one line per contiguous
  * pair (i < j) and cell data `Kind` (unsigned char): 0 = neighbours sharing an edge of positive
- * length, 1 = half-neighbours (sharing only a degenerate vertex).
+ * length, 1 = half-neighbours (sharing only a degenerate vertex strictly inside the window).
  *
  * With ComputeContiguityGraph off, output 1 has no points and no lines (its field data is still
  * output 0's) and the graph is not written (nor derived, with GreenSibson; the sweep finds

@@ -79,7 +79,8 @@ public:
   ///@{
   /**
    * Pixels along the longer side of the image, margins included; 0 (default) = automatic. A
-   * negative size, or one above 2048, is an error at the update.
+   * negative size, one above 2048, or one below 2 (ceil(Width) + 2) + 3 (no room inside the
+   * margins) is an error at the update.
    */
   vtkSetMacro(ImageSize, int);
   vtkGetMacro(ImageSize, int);

@@ -755,6 +755,18 @@ def test_a_negative_padding_is_an_error():
                     f"{cls.__name__}: {messages}")
 
 
+def test_half_neighbours_need_their_vertex_strictly_inside_the_window():
+    # Four points co-circular about (5, 10): their tiles meet there. On the window's top side that
+    # point makes no pair; with the window raised it is inside, and the pairs across it are
+    # half-neighbours. Both engines agree (the documented rule; a user review asked).
+    coords = [(2.0, 6.0), (8.0, 6.0), (5.0, 5.0), (1.0, 7.0)]
+    for algorithm in ("GreenSibson", "BrasselReif"):
+        on_side = graph_pairs(tessellate(make_points(coords), (0, 10, 0, 10), algorithm).GetOutput(1))
+        inside = graph_pairs(tessellate(make_points(coords), (0, 10, 0, 10.5), algorithm).GetOutput(1))
+        assert_that(on_side == {0: {(0, 2), (0, 3), (1, 2)}, 1: set()}, f"{algorithm}, vertex on the side: {on_side}")
+        assert_that(inside[1] == {(0, 1), (2, 3)}, f"{algorithm}, vertex inside: {inside}")
+
+
 if __name__ == "__main__":
     run([test_tiles_are_nearest_point_regions,
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
@@ -775,4 +787,5 @@ if __name__ == "__main__":
          test_input_arrays_named_like_the_filters_are_kept_under_another_name,
          test_delaunay_passes_point_data_with_the_input_points,
          test_tiles_at_any_scale_and_points_too_close_for_exact_tiles,
-         test_a_negative_padding_is_an_error])
+         test_a_negative_padding_is_an_error,
+         test_half_neighbours_need_their_vertex_strictly_inside_the_window])
