@@ -61,6 +61,21 @@ void CheckCoordinateRange(const std::vector<Point2>& points)
   }
 }
 
+/// The grid reaches beyond the points by its margins, up to some 500 times their extent for the
+/// widest basis in the smallest image that holds it: points within +-1e306 can still put its
+/// origin or far corner beyond the doubles.
+void CheckGridIsFinite(const PixelGrid& grid, double width)
+{
+  const double farX = grid.OriginX + (grid.Width - 1) * grid.Spacing;
+  const double farY = grid.OriginY + (grid.Height - 1) * grid.Spacing;
+  if (!std::isfinite(grid.OriginX) || !std::isfinite(grid.OriginY) || !std::isfinite(farX) ||
+    !std::isfinite(farY) || !std::isfinite(grid.Spacing))
+  {
+    throw InputError("the pixel grid around the points, with the margins of a basis width of " +
+      std::to_string(width) + " pixels, reaches beyond the largest double: scale the points");
+  }
+}
+
 Point2 ClampToGrid(Point2 q, const PixelGrid& grid)
 {
   // Rounding in ToPixelUnits can put an extreme point a hair outside the last pixel centre.
@@ -155,8 +170,9 @@ RidgeGrouping::RidgeGrouping(const RidgeGroupingSettings& settings)
   : Settings(settings)
 {
   CheckPositive(settings.Width, "basis width");
-  // The margins (MarginPixels) on both sides of the largest image must leave room inside it.
-  const double widest = 0.5 * (MaxImageSize - 3) - 2.0;
+  // The margins (MarginPixels: ceil(Width) + 2) on both sides of the largest image must leave
+  // room inside it: 2 (ceil(Width) + 2) + 3 <= MaxImageSize.
+  const double widest = double((MaxImageSize - 3) / 2 - 2);
   if (settings.Width > widest)
   {
     throw InputError("basis width " + std::to_string(settings.Width) +
@@ -219,6 +235,7 @@ PixelGrid RidgeGrouping::MakeGrid(const std::vector<Point2>& points, int imageSi
   // Centre the bounding box in the image.
   grid.OriginX = 0.5 * (box.XMin + box.XMax) - 0.5 * (grid.Width - 1) * grid.Spacing;
   grid.OriginY = 0.5 * (box.YMin + box.YMax) - 0.5 * (grid.Height - 1) * grid.Spacing;
+  CheckGridIsFinite(grid, this->Settings.Width);
   return grid;
 }
 

@@ -34,7 +34,7 @@
 //
 // Limits. ImageSize may not exceed MaxImageSize = 2048: the padded FFT then holds two complex
 // 4096 x 4096 arrays (512 MiB). A larger request is refused with an InputError before anything
-// is allocated; so is a basis width whose margins leave no room inside that image (above 1020.5
+// is allocated; so is a basis width whose margins leave no room inside that image (above 1020
 // pixels), and a point beyond +-1e306 (the grid and the curves would overflow).
 
 #include "geometry.h"

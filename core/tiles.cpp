@@ -11,6 +11,7 @@
 #include <array>
 #include <climits>
 #include <cmath>
+#include <sstream>
 #include <cstring>
 #include <limits>
 #include <numeric>
@@ -829,6 +830,41 @@ void ScaleByPowerOfTwo(TileMesh& mesh, int exponent)
   for (double& area : mesh.Areas)
   {
     area = std::ldexp(area, 2 * exponent);
+  }
+}
+
+/// The tiles fill the window, so their areas add up to its area. Points closer together than the
+/// tile derivation's exact range allows (some 1e-60 of the window's size, where the products of
+/// its window decisions underflow) can break that: an error then, rather than wrong tiles.
+void CheckTilesFillWindow(const TileMesh& tiles, double windowArea)
+{
+  const std::size_t n = tiles.Areas.size();
+  if (n == 0)
+  {
+    return;
+  }
+  double sums[4] = { 0.0, 0.0, 0.0, 0.0 }; // four chains: the adds do not wait on one another
+  std::size_t k = 0;
+  for (; k + 4 <= n; k += 4)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      sums[j] += tiles.Areas[k + j];
+    }
+  }
+  for (; k < n; ++k)
+  {
+    sums[0] += tiles.Areas[k];
+  }
+  const double total = (sums[0] + sums[1]) + (sums[2] + sums[3]);
+  if (!(std::fabs(total - windowArea) <= 1e-6 * windowArea))
+  {
+    std::ostringstream message;
+    message.precision(17);
+    message << "the tiles' areas add up to " << total << ", not the window's area " << windowArea
+            << ": the points lie too close together, for the window's size, for exact tiles (their "
+               "coordinates differ by some 1e-60 of it or less)";
+    throw InputError(message.str());
   }
 }
 

@@ -108,6 +108,12 @@ TileMesh MeshOfSeparateTiles(TileSet tiles);
 /// points scaled by Window::RangeScaleExponent, brought back to the points' own scale.
 void ScaleByPowerOfTwo(TileMesh& mesh, int exponent);
 
+/// Throws InputError unless the tiles' areas add up to the window's area (within 1e-6 relative):
+/// a check that points lay within the range where the tiles are exact (window_predicates.h).
+/// Necessary, not sufficient: it catches tiles that overlap or leave gaps, not a tile given to the
+/// wrong point. No tiles pass.
+void CheckTilesFillWindow(const TileMesh& tiles, double windowArea);
+
 /// Delaunay faces, each anticlockwise and starting at its smallest point id, listed in the order
 /// of the triangle arrays. The set of faces, and each face, do not depend on the insertion order;
 /// the listing order does.

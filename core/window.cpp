@@ -388,11 +388,49 @@ int Window::RangeScaleExponent() const
 Window Window::ScaledByPowerOfTwo(int exponent) const
 {
   std::vector<HalfPlane> scaled = this->Effective;
-  for (HalfPlane& h : scaled)
+  for (std::size_t k = 0; k < scaled.size(); ++k)
   {
-    h.c = std::ldexp(h.c, exponent);
+    const double c = scaled[k].c;
+    scaled[k].c = std::ldexp(c, exponent);
+    if (std::ldexp(scaled[k].c, -exponent) != c)
+    {
+      std::ostringstream s;
+      s.precision(17);
+      s << "window constraint " << this->EffectiveInputIds[k] << " (c = " << c
+        << ") cannot be scaled by 2^" << exponent << " exactly";
+      throw InputError(s.str());
+    }
   }
   return Window(scaled);
+}
+
+void ScalePointsByPowerOfTwo(std::vector<Point2>& points, int exponent)
+{
+  const auto scale = [exponent](double v, bool& lost)
+  {
+    const double scaled = std::ldexp(v, exponent);
+    if (std::isinf(scaled) && std::isfinite(v))
+    {
+      return std::copysign(4.0, v); // far outside the scaled window, and still outside
+    }
+    lost = lost || (std::isfinite(v) && std::ldexp(scaled, -exponent) != v); // (NaN: named later)
+    return scaled;
+  };
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    bool lost = false;
+    const Point2 p = points[k];
+    points[k] = { scale(p.x, lost), scale(p.y, lost) };
+    if (lost)
+    {
+      std::ostringstream s;
+      s.precision(17);
+      s << "point " << k << " (" << p.x << ", " << p.y << ") cannot be scaled by 2^" << exponent
+        << " exactly, as the window's scale needs: the points span more orders of magnitude than "
+           "the doubles hold around it";
+      throw InputError(s.str());
+    }
+  }
 }
 
 bool Window::IsAxisAlignedRectangle() const

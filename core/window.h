@@ -69,6 +69,8 @@ public:
   /// (window_predicates.h): a caller with coordinates of some 1e100, or 1e-100, scales first.
   int RangeScaleExponent() const;
   /// This window with every point scaled by 2^exponent (x < xmax becomes x < xmax * 2^exponent).
+  /// Throws InputError when a constraint's c would lose bits (a line through the origin's
+  /// neighbourhood, some 1e-300 from it, in a window of the opposite scale).
   Window ScaledByPowerOfTwo(int exponent) const;
 
   /// Whether every point within `error` of c in each coordinate lies strictly inside the window,
@@ -89,5 +91,13 @@ private:
   std::vector<Point2> Corners;
   Box2 Interior; ///< CertainlyContains' box (empty, so that it never passes, if not a rectangle)
 };
+
+/// Points scaled by 2^exponent beside a window scaled by Window::RangeScaleExponent's exponent
+/// (whose corners then lie within |x|, |y| < 2). Exact, except where it cannot be: a coordinate
+/// that would overflow belongs to a point far outside the window, and becomes 4 of its sign (still
+/// outside: the point is rejected as before); a nonzero coordinate that would fall below the
+/// normal doubles and lose bits is an InputError naming the point (the points then span more
+/// orders of magnitude than the doubles hold around the window's scale).
+void ScalePointsByPowerOfTwo(std::vector<Point2>& points, int exponent);
 
 } // namespace tessera

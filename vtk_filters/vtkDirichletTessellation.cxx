@@ -80,50 +80,6 @@ TessellationResult RunBrasselReif(const tessera::Window& window,
     std::move(sweep.Duplicates) };
 }
 
-/// Points and window scaled by 2^exponent (Window::RangeScaleExponent).
-void ScalePoints(std::vector<tessera::Point2>& points, int exponent)
-{
-  for (tessera::Point2& p : points)
-  {
-    p = { std::ldexp(p.x, exponent), std::ldexp(p.y, exponent) };
-  }
-}
-
-/// The tiles fill the window, so their areas add up to its area. Points closer together than the
-/// tile derivation's exact range allows (some 1e-60 of the window's size, where the products of
-/// its window decisions underflow) can break that: an error then, rather than wrong tiles.
-void CheckTilesFillWindow(const tessera::TileMesh& tiles, double windowArea)
-{
-  const std::size_t n = tiles.Areas.size();
-  if (n == 0)
-  {
-    return;
-  }
-  double sums[4] = { 0.0, 0.0, 0.0, 0.0 }; // four chains: the adds do not wait on one another
-  std::size_t k = 0;
-  for (; k + 4 <= n; k += 4)
-  {
-    for (int j = 0; j < 4; ++j)
-    {
-      sums[j] += tiles.Areas[k + j];
-    }
-  }
-  for (; k < n; ++k)
-  {
-    sums[0] += tiles.Areas[k];
-  }
-  const double total = (sums[0] + sums[1]) + (sums[2] + sums[3]);
-  if (!(std::fabs(total - windowArea) <= 1e-6 * windowArea))
-  {
-    std::ostringstream message;
-    message.precision(17);
-    message << "the tiles' areas add up to " << total << ", not the window's area " << windowArea
-            << ": the points lie too close together, for the window's size, for exact tiles (their "
-               "coordinates differ by some 1e-60 of it or less)";
-    throw tessera::InputError(message.str());
-  }
-}
-
 /// The cell arrays use 32-bit storage, which VTK reads like the 64-bit kind: half the memory to
 /// fill. Both engines hold fewer than INT32_MAX / 8 points, so fewer than 2^31 ids fit.
 void CheckFitsInt32(vtkIdType count, const char* what)
@@ -467,14 +423,14 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     if (exponent != 0)
     {
       window = window.ScaledByPowerOfTwo(exponent);
-      ScalePoints(points, exponent);
+      tessera::ScalePointsByPowerOfTwo(points, exponent);
     }
     const double windowArea = window.Area();
     this->UpdateProgress(0.1);
     TessellationResult result = this->Algorithm == BRASSEL_REIF
       ? RunBrasselReif(window, std::move(points))
       : RunGreenSibson(std::move(window), std::move(points), this->ComputeContiguityGraph);
-    CheckTilesFillWindow(result.Tiles, windowArea);
+    tessera::CheckTilesFillWindow(result.Tiles, windowArea);
     if (exponent != 0)
     {
       tessera::ScaleByPowerOfTwo(result.Tiles, -exponent);

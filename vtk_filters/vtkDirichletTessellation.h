@@ -69,8 +69,10 @@
  * within about 1e-60 .. 1e60 in magnitude: coordinates of some 1e100 or 1e-100 are therefore
  * scaled by a power of two (exactly) into that range and the tiles scaled back, so the tiles of
  * points scaled by s are those of the points, scaled (areas by s^2, which overflow beyond about
- * 1e154). Points closer together than some 1e-60 of the window's size, where those products
- * underflow whatever the scale, are an error (the tiles' areas would not fill the window).
+ * 1e154 and underflow to 0 below about 1e-154). Points closer together than some 1e-60 of the
+ * window's size, where those products underflow whatever the scale, are an error when the tiles'
+ * areas do not fill the window (a check that catches overlaps and gaps, not every wrong tile); so
+ * is a point that cannot be scaled exactly beside the window (its coordinate would lose bits).
  *
  * @sa vtkDelaunayTriangulation vtkVoronoi2D
  */

@@ -430,10 +430,10 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
     {
       points += static_cast<std::size_t>(piece.Input->GetNumberOfPoints());
     }
-    // Nothing to fit a projection to: empty in, empty out (with the structure), no record.
-    const bool fitted =
-      !this->Inverse && (this->Projection == AUTOMATIC || this->ParametersFromData);
-    const bool none = points == 0 && fitted;
+    // Nothing to fit a projection to, or to undo: empty in, empty out (with the structure), no
+    // record (an empty forward output has none, so its inverse takes it as it is).
+    const bool fitted = this->Projection == AUTOMATIC || this->ParametersFromData;
+    const bool none = points == 0 && (this->Inverse || fitted);
     std::unique_ptr<tessera::GeographicProjection> projection;
     std::string record;
     if (!none)

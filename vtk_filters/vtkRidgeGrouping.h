@@ -70,7 +70,7 @@ public:
   ///@{
   /**
    * Width of the basis (r or s) in pixels (default 5). A width that is not positive, or whose
-   * margins leave no room inside the largest image (above 1020.5), is an error at the update.
+   * margins leave no room inside the largest image (above 1020), is an error at the update.
    */
   vtkSetMacro(Width, double);
   vtkGetMacro(Width, double);

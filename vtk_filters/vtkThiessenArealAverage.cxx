@@ -71,32 +71,17 @@ std::string StationName(const vtkVariant& value)
   return digits;
 }
 
-/// The first 20 of count names, nameOf(0), nameOf(1), ..., then ", ... (N in all)" when there are
-/// more: only the names shown are made.
-template<class NameOf>
-std::string ListNames(std::size_t count, const NameOf& nameOf)
-{
-  std::ostringstream out;
-  for (std::size_t k = 0; k < count && k < 20; ++k)
-  {
-    out << (k ? ", " : "") << nameOf(k);
-  }
-  if (count > 20)
-  {
-    out << ", ... (" << count << " in all)";
-  }
-  return out.str();
-}
+using tessera_vtk::ListNames;
 
 /// The names of a table's columns, for messages: "a, b, c", or "none".
 std::string ColumnNames(vtkTable* table)
 {
-  std::string names;
-  for (vtkIdType c = 0; c < table->GetNumberOfColumns(); ++c)
-  {
-    const char* name = table->GetColumnName(c);
-    names += (c ? ", " : "") + std::string(name ? name : "(unnamed)");
-  }
+  const std::string names = ListNames(static_cast<std::size_t>(table->GetNumberOfColumns()),
+    [table](std::size_t c)
+    {
+      const char* name = table->GetColumnName(static_cast<vtkIdType>(c));
+      return std::string(name ? name : "(unnamed)");
+    });
   return names.empty() ? "none" : names;
 }
 

@@ -74,12 +74,12 @@ std::string PointDataWarning(vtkPolyData* tiles)
   {
     return std::string();
   }
-  std::string names;
-  for (int k = 0; k < count; ++k)
-  {
-    const char* name = pointData->GetArrayName(k);
-    names += (k ? ", '" : "'") + std::string(name ? name : "(unnamed)") + "'";
-  }
+  const std::string names = tessera_vtk::ListNames(static_cast<std::size_t>(count),
+    [pointData](std::size_t k)
+    {
+      const char* name = pointData->GetArrayName(static_cast<int>(k));
+      return "'" + std::string(name ? name : "(unnamed)") + "'";
+    });
   return "the point data of input 0 (" + names +
     ") is not passed: the clipped pieces' vertices are new points (the tiles' cell data is "
     "passed)";

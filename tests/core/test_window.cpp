@@ -640,3 +640,41 @@ TEST(Window, ScalingByAPowerOfTwoIntoTheExactRange)
     }
   }
 }
+
+// ScalePointsByPowerOfTwo: exact where it can be; a coordinate that would overflow becomes 4 of
+// its sign (outside any window scaled into [-2, 2]); NaN stays NaN (the engine names it); a
+// coordinate that would lose bits below the normal doubles is an error naming the point. A
+// constraint whose c would lose bits is refused likewise.
+TEST(Window, ScalingPointsByAPowerOfTwo)
+{
+  std::vector<Point2> points = { { 0.25, -3.0 }, { 1e300, -1e300 }, { std::nan(""), 1.0 } };
+  tessera::ScalePointsByPowerOfTwo(points, 100);
+  EXPECT_EQ(points[0].x, std::ldexp(0.25, 100));
+  EXPECT_EQ(points[0].y, std::ldexp(-3.0, 100));
+  EXPECT_EQ(points[1].x, 4.0);
+  EXPECT_EQ(points[1].y, -4.0);
+  EXPECT_TRUE(std::isnan(points[2].x));
+  EXPECT_EQ(points[2].y, std::ldexp(1.0, 100));
+
+  std::vector<Point2> exact = { { std::ldexp(1.0, -1000), 0.0 } }; // a subnormal power of two
+  tessera::ScalePointsByPowerOfTwo(exact, -60);
+  EXPECT_EQ(exact[0].x, std::ldexp(1.0, -1060));
+  std::vector<Point2> lossy = { { 1.0, 2.0 },
+    { std::ldexp(1.0 + std::ldexp(1.0, -20), -1000), 0.0 } };
+  try
+  {
+    tessera::ScalePointsByPowerOfTwo(lossy, -60);
+    ADD_FAILURE() << "bits lost without an error";
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("point 1 ("), std::string::npos) << e.what();
+  }
+
+  const Window nearOrigin({ { -1.0, 0.0, std::ldexp(1.0 + std::ldexp(1.0, -30), -1000) },
+    { 1.0, 0.0, -1.0 },
+    { 0.0, -1.0, 0.0 },
+    { 0.0, 1.0, -1.0 } });
+  EXPECT_THROW(nearOrigin.ScaledByPowerOfTwo(-60), InputError);
+  EXPECT_NO_THROW(nearOrigin.ScaledByPowerOfTwo(60));
+}

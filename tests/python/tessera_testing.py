@@ -121,6 +121,12 @@ def simplicity_defect(ring):
     return None
 
 
+def projection_record(data):
+    """The TesseraProjection field-data record of a data object, or None."""
+    array = data.GetFieldData().GetAbstractArray("TesseraProjection")
+    return array.GetValue(0) if array else None
+
+
 def make_points(coords, **arrays):
     """vtkPolyData of (x, y) points (z = 0, double precision), with one double point-data array
     per keyword argument (name=list of values)."""

@@ -721,17 +721,40 @@ def test_tiles_at_any_scale_and_points_too_close_for_exact_tiles():
     ref_tiles = reference.GetOutput(0)
     ref_areas = [ref_tiles.GetCellData().GetArray("Area").GetValue(c) for c in range(ref_tiles.GetNumberOfCells())]
     ref_pairs = graph_pairs(reference.GetOutput(1))
-    for exponent in (-900, -400, 350, 500):
+    for exponent in (-900, -500, -400, 350, 500):
         s = math.ldexp(1.0, exponent)
         f = tessellate(make_points([(x * s, y * s) for x, y in unit]), bounds=(0, s, 0, s))
         tiles = f.GetOutput(0)
         areas = [tiles.GetCellData().GetArray("Area").GetValue(c) for c in range(tiles.GetNumberOfCells())]
-        assert_that(areas == [a * s * s for a in ref_areas], f"2^{exponent}: areas are the unit set's times s^2")
+        if exponent > -500:  # (at 2^-900, s^2 underflows: the areas are 0, as documented)
+            assert_that(areas == [a * s * s for a in ref_areas] and min(areas) > 0,
+                        f"2^{exponent}: areas are the unit set's times s^2")
+        else:
+            assert_that(areas == [0.0] * len(ref_areas) if exponent == -900 else areas == [a * s * s for a in ref_areas],
+                        f"2^{exponent}: areas {areas[:3]}")
         assert_that(graph_pairs(f.GetOutput(1)) == ref_pairs, f"2^{exponent}: the same contiguities")
         same_points = all(tiles.GetPoint(i) == tuple(c * s for c in ref_tiles.GetPoint(i))
                           for i in range(ref_tiles.GetNumberOfPoints()))
         assert_that(tiles.GetNumberOfPoints() == ref_tiles.GetNumberOfPoints() and same_points,
                     f"2^{exponent}: tile vertices are the unit set's times s")
+
+    # Scaling up, a point far outside the window stays outside (rejected), not infinite; scaling
+    # down, a point whose coordinates would lose bits is an error naming it.
+    s = math.ldexp(1.0, -700)
+    f = tessellate(make_points([(0.3 * s, 0.4 * s), (0.6 * s, 0.7 * s), (1e300, 0.0)]), bounds=(0, s, 0, s))
+    rejected = f.GetOutput(0).GetFieldData().GetArray("RejectedPointIds")
+    assert_that(f.GetOutput(0).GetNumberOfCells() == 2 and rejected.GetNumberOfTuples() == 1
+                and rejected.GetValue(0) == 2, "a far point beside a tiny window is rejected")
+    s = math.ldexp(1.0, 500)
+    tiny = math.ldexp(1.0, -560)
+    f = vtkDirichletTessellation()
+    messages = messages_of(f)
+    f.SetInputData(make_points([(0.3 * s, 0.4 * s), (tiny, tiny), (tiny * (1 + 2 ** -20), tiny)]))
+    f.SetWindowBounds(0, s, 0, s)
+    f.Update()
+    # (point 1, a power of two, stays exact as a subnormal; point 2 would lose bits)
+    assert_that(len(messages) == 1 and "point 2" in messages[0] and "cannot be scaled" in messages[0],
+                f"coordinates that would lose bits: {messages}")
 
     close = [(0.5, 0.5)] + [(rng.random() * 1e-200, rng.random() * 1e-200) for _ in range(50)]
     f = vtkDirichletTessellation()

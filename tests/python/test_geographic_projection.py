@@ -9,7 +9,7 @@ from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkMultiBlockDataSet, vtkPolyData
 
 from tessera import vtkGeographicProjection
-from tessera_testing import EXAMPLE_DATA, assert_close, assert_that, make_points, messages_of, run
+from tessera_testing import EXAMPLE_DATA, assert_close, assert_that, make_points, messages_of, projection_record, run
 
 
 def colorado_gauges():
@@ -90,11 +90,6 @@ def test_nan_point_is_named_and_output_is_empty():
     assert_that("point 1" in messages[0], f"the error names point 1: {messages[0]}")
 
 
-def record_of(data):
-    array = data.GetFieldData().GetAbstractArray("TesseraProjection")
-    return array.GetValue(0) if array else None
-
-
 def test_the_blocks_of_a_composite_share_one_projection():
     """A multiblock (as vtkGDALVectorReader gives a file's layers) is projected with one projection
     fitted to all its blocks: the same point lands at the same place in every block, exactly where
@@ -116,16 +111,16 @@ def test_the_blocks_of_a_composite_share_one_projection():
     whole.SetInputData(make_points(west + east))
     whole.Update()
     expected = whole.GetOutput()
-    record = record_of(expected)
+    record = projection_record(expected)
     assert_that(out.GetBlock(1) is None, "the empty place stays empty")
     for b, first in ((0, 0), (2, 2)):
         block = out.GetBlock(b)
-        assert_that(record_of(block) == record, f"block {b}: {record_of(block)} against {record}")
+        assert_that(projection_record(block) == record, f"block {b}: {projection_record(block)} against {record}")
         for i in range(2):
             assert_that(block.GetPoint(i) == expected.GetPoint(first + i),
                         f"block {b} point {i}: {block.GetPoint(i)} against {expected.GetPoint(first + i)}")
     assert_that(out.GetBlock(0).GetPoint(1) == out.GetBlock(2).GetPoint(0), "(-105, 39) in both blocks")
-    assert_that(record_of(out) == record, f"the composite's own record: {record_of(out)}")
+    assert_that(projection_record(out) == record, f"the composite's own record: {projection_record(out)}")
 
     inverse = vtkGeographicProjection()
     inverse.SetInputConnection(f.GetOutputPort())
@@ -149,8 +144,15 @@ def test_no_points_give_an_empty_output_without_error():
     messages = messages_of(f)
     f.SetInputData(make_points([]))
     f.Update()
-    assert_that(not messages and f.GetOutput().GetNumberOfPoints() == 0 and record_of(f.GetOutput()) is None,
+    assert_that(not messages and f.GetOutput().GetNumberOfPoints() == 0 and projection_record(f.GetOutput()) is None,
                 f"no points: {messages}")
+    inverse = vtkGeographicProjection()
+    inverse_messages = messages_of(inverse)
+    inverse.SetInputConnection(f.GetOutputPort())
+    inverse.InverseOn()
+    inverse.Update()
+    assert_that(not inverse_messages and inverse.GetOutput().GetNumberOfPoints() == 0,
+                f"the empty output's inverse: {inverse_messages}")
 
 
 def test_an_edge_cut_into_the_most_pieces_is_reported():

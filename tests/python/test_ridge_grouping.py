@@ -131,6 +131,7 @@ def test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept():
     coords, _, _ = two_noisy_curves()
     xs, ys = [x for x, _ in coords], [y for _, y in coords]
     cases = [("SetWidth", -5.0, "basis width -5"), ("SetWidth", 3e9, "leaves no room"),
+             ("SetWidth", 1020.25, "at most 1020.0"),
              ("SetCurveSigma", 0.0, "curve sigma 0"), ("SetMinimumContourLength", -2.0, "minimum contour length -2"),
              ("SetImageSize", -1, "image size -1 is negative")]
     for setter, value, expected in cases:
@@ -155,6 +156,14 @@ def test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept():
     assert_that(not errors and huge == unit, f"points up to 2e305: the groups at scale 1 ({errors})")
     none, errors = groups_at(1e307 / max(map(abs, xs + ys)))
     assert_that(none is None and len(errors) == 1 and "beyond +-1e306" in errors[0], f"points of 1e307: {errors}")
+    # Within +-1e306, a wide basis's margins can still carry the grid beyond the doubles.
+    f = vtkRidgeGrouping()
+    errors = messages_of(f)
+    f.SetWidth(600)
+    scale = 9e305 / max(map(abs, xs + ys))
+    f.SetInputData(make_points([(x * scale, y * scale) for x, y in zip(xs, ys)]))
+    f.Update()
+    assert_that(len(errors) == 1 and "reaches beyond the largest double" in errors[0], f"a wide basis: {errors}")
 
     data = make_points(list(zip(xs, ys)))
     for name in ("GroupId", "Node"):

@@ -12,7 +12,7 @@ from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkIntArray
 from vtkmodules.vtkFiltersCore import vtkTriangleFilter
 
 from tessera import vtkDirichletTessellation, vtkGeographicProjection, vtkWindowClip
-from tessera_testing import (assert_close, assert_that, cell_rings, exact_area, make_points, messages_of,
+from tessera_testing import (assert_close, assert_that, cell_rings, exact_area, make_points, messages_of, projection_record,
                              polygon, run, simplicity_defect)
 
 
@@ -322,20 +322,25 @@ def test_tiles_and_window_must_share_their_projection():
         t.Update()
         return t.GetOutput()
 
-    def record(data):
-        array = data.GetFieldData().GetAbstractArray("TesseraProjection")
-        return array.GetValue(0) if array else None
-
     output, errors, warnings = clip_by(tiles_of(projected(gauges, True)), projected(catchment, True))
     assert_that(len(errors) == 1 and "projected differently" in errors[0] and errors[0].count("lon0=") == 2
                 and output.GetNumberOfCells() == 0, f"two automatic projections: {errors}")
     same = projected(gauges, False)
     output, errors, warnings = clip_by(tiles_of(same), projected(catchment, False))
     assert_that(not errors and not warnings and output.GetNumberOfCells() == 4, f"one projection: {errors} {warnings}")
-    assert_that(record(output) == record(same), f"the output's record: {record(output)}")
+    assert_that(projection_record(output) == projection_record(same), f"the output's record: {projection_record(output)}")
     output, errors, warnings = clip_by(tiles_of(gauges), projected(catchment, False))
     assert_that(not errors and len(warnings) == 1 and "the window (input 1) carries" in warnings[0]
                 and "the tiles (input 0) none" in warnings[0], f"one record: {errors} {warnings}")
+    # A window of blocks projected apart (each with its own automatic projection) is refused.
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+
+    blocks = vtkMultiBlockDataSet()
+    blocks.SetBlock(0, projected(catchment, True))
+    blocks.SetBlock(1, projected(polygon([[(-110.0, 30.0), (-100.0, 30.0), (-100.0, 35.0)]]), True))
+    output, errors, warnings = clip_by(tiles_of(same), blocks)
+    assert_that(len(errors) == 1 and "input 1 (the window) mixes blocks projected differently" in errors[0],
+                f"a window of differently projected blocks: {errors}")
 
 
 def test_the_tiles_point_data_is_named_as_not_passed():
