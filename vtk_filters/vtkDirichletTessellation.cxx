@@ -27,12 +27,10 @@
 #include "tiles.h"
 
 #include <algorithm>
-#include <cmath>
 #include <climits>
 #include <cstdint>
 #include <exception>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
