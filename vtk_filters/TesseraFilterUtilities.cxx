@@ -112,10 +112,11 @@ double Above(double value, double pad)
   throw tessera::InputError(message.str());
 }
 
-// The window, unless it is so large that areas in it overflow (a Padding of 1e299 gave NaN areas).
-tessera::Window Representable(tessera::Window window)
+// The window, unless areas are needed and it is so large that they overflow (a Padding of 1e299
+// gave NaN areas).
+tessera::Window Representable(tessera::Window window, bool needArea)
 {
-  if (!std::isfinite(window.Area()))
+  if (needArea && !std::isfinite(window.Area()))
   {
     const tessera::Box2 box = tessera::BoundsOf(window.Vertices().data(), window.Vertices().size());
     ThrowWindowTooLarge(box.XMin, box.XMax, box.YMin, box.YMax);
@@ -177,7 +178,8 @@ std::string EmptyBoundsWarning(const double bounds[4])
 tessera::Window ChooseWindow(const double bounds[4],
   const std::vector<double>& constraints,
   double padding,
-  const std::vector<tessera::Point2>& points)
+  const std::vector<tessera::Point2>& points,
+  bool needArea)
 {
   const char* names[4] = { "xmin", "xmax", "ymin", "ymax" };
   for (int k = 0; k < 4; ++k)
@@ -216,14 +218,15 @@ tessera::Window ChooseWindow(const double bounds[4],
   {
     if (haveBounds && userCount == 0)
     {
-      return Representable(tessera::Window::Rectangle(bounds[0], bounds[1], bounds[2], bounds[3]));
+      return Representable(
+        tessera::Window::Rectangle(bounds[0], bounds[1], bounds[2], bounds[3]), needArea);
     }
     if (haveBounds)
     {
       naming.All = "WindowBounds and the " + std::to_string(userCount) + " window constraint" +
         (userCount == 1 ? "" : "s");
     }
-    return Representable(tessera::Window(halfPlanes, naming));
+    return Representable(tessera::Window(halfPlanes, naming), needArea);
   }
   if (!(padding >= 0.0) || !std::isfinite(padding))
   {
@@ -248,7 +251,8 @@ tessera::Window ChooseWindow(const double bounds[4],
   {
     ThrowWindowTooLarge(lower[0], upper[0], lower[1], upper[1]); // before Rectangle refuses it
   }
-  return Representable(tessera::Window::Rectangle(lower[0], upper[0], lower[1], upper[1]));
+  return Representable(
+    tessera::Window::Rectangle(lower[0], upper[0], lower[1], upper[1]), needArea);
 }
 
 void AddIdFieldArray(vtkDataObject* data, const char* name, const std::vector<std::int32_t>& ids)

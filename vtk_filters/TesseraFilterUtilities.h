@@ -37,11 +37,13 @@ std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points);
 /// square around a single point or a cloud of identical points; [-1, 1]^2 with no point). A side
 /// that rounding would leave on the points (a padding below their coordinates' ulp) moves out to
 /// the next double, so every point stays strictly inside. Throws tessera::InputError for a NaN
-/// bound and for a window so large (a huge padding or bounds) that its area overflows.
+/// bound and, with needArea (tiles, whose areas would overflow), for a window so large (a huge
+/// padding or bounds) that its area overflows.
 tessera::Window ChooseWindow(const double bounds[4],
   const std::vector<double>& constraints,
   double padding,
-  const std::vector<tessera::Point2>& points);
+  const std::vector<tessera::Point2>& points,
+  bool needArea = true);
 
 /// A warning for WindowBounds set to an empty rectangle (xmin >= xmax or ymin >= ymax, most likely
 /// arguments in another order, such as (xmin, ymin, xmax, ymax)), which ChooseWindow ignores;

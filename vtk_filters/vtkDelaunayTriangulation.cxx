@@ -101,12 +101,21 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
   try
   {
     std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
-    tessera::Window window =
-      tessera_vtk::ChooseWindow(this->WindowBounds, this->WindowConstraints, this->Padding, points);
+    tessera::Window window = tessera_vtk::ChooseWindow(
+      this->WindowBounds, this->WindowConstraints, this->Padding, points, false);
     const std::string emptyBounds = tessera_vtk::EmptyBoundsWarning(this->WindowBounds);
     if (!emptyBounds.empty())
     {
       vtkWarningMacro(<< emptyBounds);
+    }
+    // Coordinates of some 1e100 or more, or 1e-100 or less: the triangulation of points and
+    // window scaled by a power of two (exactly) is the same, and its faces are ids, so nothing is
+    // scaled back; every decision then stays within the predicates' exact range.
+    const int exponent = window.RangeScaleExponent();
+    if (exponent != 0)
+    {
+      window = window.ScaledByPowerOfTwo(exponent);
+      tessera::ScalePointsByPowerOfTwo(points, exponent);
     }
     const tessera::DirichletTessellation tessellation(std::move(window), std::move(points));
     this->UpdateProgress(0.7);

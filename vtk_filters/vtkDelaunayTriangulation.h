@@ -16,6 +16,10 @@
  * vtkDirichletTessellation (an input field array with one of these names is kept renamed
  * NAME_input, with a warning). Fewer than 3 points or collinear points give no face.
  *
+ * Any finite scale: coordinates of some 1e100 or 1e-100 are scaled by a power of two (exactly)
+ * before the triangulation, which is the same; the faces are ids, so nothing is scaled back. A
+ * window too large for its area to be a double is taken (a triangulation needs no area).
+ *
  * @sa vtkDirichletTessellation vtkDelaunay2D
  */
 

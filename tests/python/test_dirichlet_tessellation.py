@@ -790,6 +790,34 @@ def test_half_neighbours_need_their_vertex_strictly_inside_the_window():
         assert_that(inside[1] == {(0, 1), (2, 3)}, f"{algorithm}, vertex inside: {inside}")
 
 
+def test_delaunay_at_any_scale():
+    # The faces of points scaled by a power of two are the unit set's, from 2^-900 to 2^660
+    # (some 1e198: its automatic window's area overflows, which a triangulation does not need).
+    import random
+
+    rng = random.Random(5)
+    unit = [(rng.random(), rng.random()) for _ in range(300)]
+
+    def faces(coords):
+        t = vtkDelaunayTriangulation()
+        messages = messages_of(t)
+        t.SetInputData(make_points(coords))
+        t.Update()
+        out = t.GetOutput()
+        ids = out.GetPolys().GetConnectivityArray()
+        offsets = out.GetPolys().GetOffsetsArray()
+        cells = {tuple(ids.GetValue(k) for k in range(offsets.GetValue(c), offsets.GetValue(c + 1)))
+                 for c in range(out.GetNumberOfCells())}
+        return cells, messages
+
+    reference, messages = faces(unit)
+    assert_that(not messages and len(reference) > 500, f"unit faces: {len(reference)} {messages}")
+    for exponent in (-900, -400, 400, 660):
+        s = math.ldexp(1.0, exponent)
+        got, messages = faces([(x * s, y * s) for x, y in unit])
+        assert_that(not messages and got == reference, f"2^{exponent}: {len(got)} faces, {messages}")
+
+
 if __name__ == "__main__":
     run([test_tiles_are_nearest_point_regions,
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
@@ -811,4 +839,5 @@ if __name__ == "__main__":
          test_delaunay_passes_point_data_with_the_input_points,
          test_tiles_at_any_scale_and_points_too_close_for_exact_tiles,
          test_a_negative_padding_is_an_error,
-         test_half_neighbours_need_their_vertex_strictly_inside_the_window])
+         test_half_neighbours_need_their_vertex_strictly_inside_the_window,
+         test_delaunay_at_any_scale])
