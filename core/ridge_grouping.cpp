@@ -31,33 +31,34 @@ void CheckPositive(double value, const char* name)
   }
 }
 
-void CheckFinitePoints(const std::vector<Point2>& points)
+/// Every point finite (else an error naming the first that is not), and within +-1e306 (some
+/// 2^1016): beyond, the pixel grid's origin and the curves' control points overflow, and the
+/// errors met there name values the caller never gave. One pass; a NaN or infinity anywhere is
+/// named before a point out of range.
+void CheckPoints(const std::vector<Point2>& points)
 {
+  constexpr double Limit = 1e306;
+  std::size_t beyond = points.size(); // the first point out of range, if any
   for (std::size_t k = 0; k < points.size(); ++k)
   {
     if (!std::isfinite(points[k].x) || !std::isfinite(points[k].y))
     {
       throw InputError("point " + std::to_string(k) + " has a NaN or infinite coordinate");
     }
-  }
-}
-
-/// Coordinates within +-1e306 (some 2^1016): beyond, the pixel grid's origin and the curves'
-/// control points overflow, and the errors met there name values the caller never gave.
-void CheckCoordinateRange(const std::vector<Point2>& points)
-{
-  constexpr double Limit = 1e306;
-  for (std::size_t k = 0; k < points.size(); ++k)
-  {
-    if (std::fabs(points[k].x) > Limit || std::fabs(points[k].y) > Limit)
+    if (beyond == points.size() &&
+      (std::fabs(points[k].x) > Limit || std::fabs(points[k].y) > Limit))
     {
-      std::ostringstream message;
-      message.precision(17);
-      message << "point " << k << " (" << points[k].x << ", " << points[k].y
-              << ") lies beyond +-1e306, the coordinates ridge grouping takes (its pixel grid and "
-                 "curves would overflow): scale the points";
-      throw InputError(message.str());
+      beyond = k;
     }
+  }
+  if (beyond < points.size())
+  {
+    std::ostringstream message;
+    message.precision(17);
+    message << "point " << beyond << " (" << points[beyond].x << ", " << points[beyond].y
+            << ") lies beyond +-1e306, the coordinates ridge grouping takes (its pixel grid and "
+               "curves would overflow): scale the points";
+    throw InputError(message.str());
   }
 }
 
@@ -278,8 +279,7 @@ int RidgeGrouping::AutomaticImageSize(const std::vector<Point2>& points, bool& c
 
 RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
 {
-  CheckFinitePoints(points);
-  CheckCoordinateRange(points);
+  CheckPoints(points);
   RidgeGroupingResult result;
   result.GroupId.assign(points.size(), -1);
   result.Node.assign(points.size(), 0.0);

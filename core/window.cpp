@@ -433,6 +433,17 @@ void ScalePointsByPowerOfTwo(std::vector<Point2>& points, int exponent)
   }
 }
 
+int ScaleIntoExactRange(Window& window, std::vector<Point2>& points)
+{
+  const int exponent = window.RangeScaleExponent();
+  if (exponent != 0)
+  {
+    window = window.ScaledByPowerOfTwo(exponent);
+    ScalePointsByPowerOfTwo(points, exponent);
+  }
+  return exponent;
+}
+
 bool Window::IsAxisAlignedRectangle() const
 {
   if (this->Effective.size() != 4)

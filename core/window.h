@@ -100,4 +100,9 @@ private:
 /// orders of magnitude than the doubles hold around the window's scale).
 void ScalePointsByPowerOfTwo(std::vector<Point2>& points, int exponent);
 
+/// Scales window and points together by 2^Window::RangeScaleExponent() (nothing when it is 0),
+/// so that a tessellation of them keeps its window decisions within their exact range; returns
+/// the exponent, with which a caller scales the tiles back (ScaleByPowerOfTwo(TileMesh&, -e)).
+int ScaleIntoExactRange(Window& window, std::vector<Point2>& points);
+
 } // namespace tessera

@@ -9,8 +9,8 @@
 // Range. The exact tier forms the products with fma, exact unless a product overflows or falls
 // below about 2^-969: coordinates and coefficients within about 1e-60 .. 1e60 (nonzero) are safe,
 // far beyond the 2^30 offsets and 1e-9 / 1e9 scalings the project tests. A caller with coordinates
-// outside it scales points and window by Window::RangeScaleExponent first (vtkDirichletTessellation
-// does).
+// outside it scales points and window with ScaleIntoExactRange (window.h) first, as the
+// tessellation filters do.
 //
 // Bisector parametrisation: for points a, b the bisector is m + t * d with m = (a + b) / 2 and
 // d = (b - a) turned anticlockwise, d = (a.y - b.y, b.x - a.x).

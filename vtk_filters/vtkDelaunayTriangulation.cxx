@@ -111,12 +111,7 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     // Coordinates of some 1e100 or more, or 1e-100 or less: the triangulation of points and
     // window scaled by a power of two (exactly) is the same, and its faces are ids, so nothing is
     // scaled back; every decision then stays within the predicates' exact range.
-    const int exponent = window.RangeScaleExponent();
-    if (exponent != 0)
-    {
-      window = window.ScaledByPowerOfTwo(exponent);
-      tessera::ScalePointsByPowerOfTwo(points, exponent);
-    }
+    tessera::ScaleIntoExactRange(window, points);
     const tessera::DirichletTessellation tessellation(std::move(window), std::move(points));
     this->UpdateProgress(0.7);
 

@@ -417,12 +417,7 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     // Coordinates of some 1e100 or 1e-100: both engines work on points and window scaled by a
     // power of two (exactly) into the range where the tiles' window decisions are exact
     // (window_predicates.h), and the tiles are scaled back.
-    const int exponent = window.RangeScaleExponent();
-    if (exponent != 0)
-    {
-      window = window.ScaledByPowerOfTwo(exponent);
-      tessera::ScalePointsByPowerOfTwo(points, exponent);
-    }
+    const int exponent = tessera::ScaleIntoExactRange(window, points);
     const double windowArea = window.Area();
     this->UpdateProgress(0.1);
     TessellationResult result = this->Algorithm == BRASSEL_REIF

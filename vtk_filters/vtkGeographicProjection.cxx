@@ -86,6 +86,9 @@ public:
     this->Output->GetCellData()->PassData(this->Input->GetCellData());
   }
 
+  /// Edges cut into MaxDensifiedPieces: their pieces may be longer than MaxStep.
+  vtkIdType CappedEdges = 0;
+
 private:
   vtkSmartPointer<vtkCellArray> DensifyCells(vtkCellArray* cells, bool closed)
   {
@@ -156,11 +159,6 @@ private:
     return { first, pieces };
   }
 
-public:
-  /// Edges cut into MaxDensifiedPieces: their pieces may be longer than MaxStep.
-  vtkIdType CappedEdges = 0;
-
-private:
   vtkPolyData* Input;
   vtkPolyData* Output;
   double MaxStep;
@@ -309,12 +307,19 @@ tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
   std::vector<tessera::Point2> lonlat;
   for (const Piece& piece : pieces)
   {
-    const std::vector<tessera::Point2> own = ReadXY(piece.Input->GetPoints());
+    std::vector<tessera::Point2> own = ReadXY(piece.Input->GetPoints());
     if (!self->GetInverse())
     {
       WithLabel(piece, [&own]() { tessera::ValidateLonLat(own); });
     }
-    lonlat.insert(lonlat.end(), own.begin(), own.end());
+    if (lonlat.empty())
+    {
+      lonlat = std::move(own); // (a lone data set's points, not copied again)
+    }
+    else
+    {
+      lonlat.insert(lonlat.end(), own.begin(), own.end());
+    }
   }
   return ChooseForwardParameters(self, lonlat);
 }

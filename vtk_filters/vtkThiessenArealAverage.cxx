@@ -795,7 +795,6 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
     {
       tilesOutput->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), in.Times[step]);
     }
-
     return 1;
   }
   catch (const std::exception& e)

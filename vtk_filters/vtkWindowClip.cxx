@@ -14,10 +14,10 @@
 #include "vtkPolyData.h"
 
 #include "TesseraFilterUtilities.h"
-#include "errors.h"
-#include "geo.h"
 #include "clip.h"
 #include "display_pieces.h"
+#include "errors.h"
+#include "geo.h"
 #include "polygon_area.h"
 
 #include <algorithm>

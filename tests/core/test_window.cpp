@@ -677,4 +677,18 @@ TEST(Window, ScalingPointsByAPowerOfTwo)
     { 0.0, 1.0, -1.0 } });
   EXPECT_THROW(nearOrigin.ScaledByPowerOfTwo(-60), InputError);
   EXPECT_NO_THROW(nearOrigin.ScaledByPowerOfTwo(60));
+
+  // ScaleIntoExactRange: both together by the window's exponent, or neither.
+  Window big = Window::Rectangle(0.0, std::ldexp(1.0, 300), 0.0, std::ldexp(1.0, 299));
+  std::vector<Point2> inside = { { std::ldexp(3.0, 297), std::ldexp(1.0, 297) } };
+  EXPECT_EQ(tessera::ScaleIntoExactRange(big, inside), -300);
+  EXPECT_EQ(big.Vertices()[2].x, 1.0);
+  EXPECT_EQ(big.Vertices()[2].y, 0.5);
+  EXPECT_EQ(inside[0].x, 0.375);
+  EXPECT_EQ(inside[0].y, 0.125);
+  Window unit = Window::Rectangle(0.0, 1.0, 0.0, 1.0);
+  std::vector<Point2> kept = { { 0.25, 0.75 } };
+  EXPECT_EQ(tessera::ScaleIntoExactRange(unit, kept), 0);
+  EXPECT_EQ(kept[0].x, 0.25);
+  EXPECT_EQ(unit.Vertices()[2].x, 1.0);
 }
