@@ -126,8 +126,6 @@ def test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept():
     Width -5 gave 15 groups for two curves), as are a basis width whose margins leave no room in
     the largest image (2^31 pixels overflowed) and points beyond +-1e306; points up to 2e305 give
     the same groups as at scale 1. Input arrays named GroupId or Node are passed as NAME_input."""
-    from vtkmodules.vtkCommonCore import vtkDoubleArray
-
     coords, _, _ = two_noisy_curves()
     xs, ys = [x for x, _ in coords], [y for _, y in coords]
     cases = [("SetWidth", -5.0, "basis width -5"), ("SetWidth", 3e9, "leaves no room"),
@@ -165,13 +163,7 @@ def test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept():
     f.Update()
     assert_that(len(errors) == 1 and "reaches beyond the largest double" in errors[0], f"a wide basis: {errors}")
 
-    data = make_points(list(zip(xs, ys)))
-    for name in ("GroupId", "Node"):
-        array = vtkDoubleArray()
-        array.SetName(name)
-        for i in range(data.GetNumberOfPoints()):
-            array.InsertNextValue(7.0)
-        data.GetPointData().AddArray(array)
+    data = make_points(list(zip(xs, ys)), GroupId=[7.0] * len(xs), Node=[7.0] * len(xs))
     f = vtkRidgeGrouping()
     warnings = messages_of(f, vtkCommand.WarningEvent)
     f.SetInputData(data)
