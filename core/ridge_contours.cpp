@@ -619,10 +619,21 @@ bool HasMajorPixel(const Segment& s,
 
 // Step 3 of the header comment. Removing a branch can merge the two segments on either side of
 // its branch pixel into one (the pixel then has two neighbours), so the graph is rebuilt after
-// each round. Dangling segments (a free end) without a major-ridge pixel go, repeatedly, and so
-// do loops from a junction back to itself; a segment between two different junctions stays,
-// because major pixels are sparse on noisy crests (ridge_extraction.h) and removing such a
-// piece would cut a ridge wherever two noise branches leave it with no major pixel between.
+// each round. Two kinds of segment without a major-ridge pixel go, in this order:
+// - dangling ones (a free end) and loops from a junction back to itself, round after round
+//   until none is left;
+// - only then, segments between two different junctions longer than maximumBridgeLength.
+// The order matters: on a noisy crest, major pixels are sparse (ridge_extraction.h) and noise
+// branches leave the crest at junctions; once the branches are gone those junctions dissolve
+// and the crest pieces between them merge into segments that do have major pixels. Removing
+// junction-to-junction pieces in the same round as the branches would cut such a crest. What
+// is left between two lasting junctions is a short piece where ridges cross (kept) or a saddle
+// path from one ridge across to another (removed: it would join two curves into one group).
+//
+//     ridge 1  ====J1======          a saddle path J1 - J2 between two ridges: both junctions
+//                  |                 last (each ridge passes through its own), the path has
+//                  | saddle path     no major pixel, and it goes
+//     ridge 2  ====J2======
 SkeletonGraph PruneSegmentsWithoutMajorRidge(std::vector<std::uint8_t>& skeleton,
   const std::vector<std::uint8_t>& major,
   int width,
@@ -640,16 +651,25 @@ SkeletonGraph PruneSegmentsWithoutMajorRidge(std::vector<std::uint8_t>& skeleton
       diagnostics.SegmentCount = static_cast<int>(graph.Segments.size());
       first = false;
     }
-    std::vector<const Segment*> removal;
+    std::vector<const Segment*> branches, saddlePaths;
     for (const Segment& s : graph.Segments)
     {
-      const bool bridge = s.Junction[0] >= 0 && s.Junction[1] >= 0 &&
-        s.Junction[0] != s.Junction[1] && s.Length <= maximumBridgeLength;
-      if (!bridge && !HasMajorPixel(s, graph.SegmentPixels, major))
+      if (HasMajorPixel(s, graph.SegmentPixels, major))
       {
-        removal.push_back(&s);
+        continue;
+      }
+      const bool betweenJunctions =
+        s.Junction[0] >= 0 && s.Junction[1] >= 0 && s.Junction[0] != s.Junction[1];
+      if (!betweenJunctions)
+      {
+        branches.push_back(&s);
+      }
+      else if (s.Length > maximumBridgeLength)
+      {
+        saddlePaths.push_back(&s);
       }
     }
+    const std::vector<const Segment*>& removal = branches.empty() ? saddlePaths : branches;
     if (removal.empty())
     {
       return graph;

@@ -12,11 +12,13 @@
 //    two neighbours each); a run with no end and no junction is a closed loop.
 // 3. Segments without a major-ridge pixel are removed, as branches: a segment with a free end
 //    (or a loop) goes, and the graph is rebuilt so that the segments on either side of a
-//    branch pixel that lost its branch merge; this repeats until nothing changes. A segment
-//    between two different junctions is kept without a major pixel if it is at most
-//    MaximumBridgeLength long (the paper removes "branches"; such a short piece lies on a ridge
-//    between two branch points, and major pixels are sparse on noisy crests, see
-//    ridge_extraction.h); a longer one is a saddle path between two ridges and goes.
+//    branch pixel that lost its branch merge; this repeats until nothing changes. Only then
+//    does a segment between two different junctions go without a major pixel, and only if it
+//    is longer than MaximumBridgeLength: such a segment that outlived the branches is a saddle
+//    path from one ridge to another, while a shorter one lies where ridges cross (the paper
+//    removes every segment without a major pixel; major pixels are sparse on noisy crests, see
+//    ridge_extraction.h, and removing the pieces between noise branches before the branches
+//    would cut the crest). The whole step repeats until nothing changes.
 // 4. At each junction the remaining segment ends are joined in pairs, best pair first:
 //    Longest joins the two ends whose contours (so far) give the longest contour;
 //    ClosestTangent joins the two ends whose tangents at the junction are most nearly opposite

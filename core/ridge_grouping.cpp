@@ -334,9 +334,10 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
   RidgeContourSettings contourSettings;
   contourSettings.Join = this->Settings.Join;
   contourSettings.MinimumLength = this->Settings.MinimumContourLength;
-  // Two basis widths: a saddle path between two ridges is at least about that long (the field
-  // dips between ridges closer than a width or two only when they merge into one ridge).
-  contourSettings.MaximumBridgeLength = 4.0 * this->Settings.Width;
+  // Two basis widths: ridges closer than about that merge into one, so a saddle path between
+  // two separate ridges is longer (with four widths, noisy lines 4.3 widths apart were joined
+  // across into Z-shaped groups).
+  contourSettings.MaximumBridgeLength = 2.0 * this->Settings.Width;
   const RidgeContours contours =
     TraceRidgeContours(masks.Minor, masks.Major, grid.Width, grid.Height, contourSettings);
   result.MinorRidge = std::move(masks.Minor);

@@ -28,8 +28,8 @@
 //    of the 8 directions (the paper: 1 step), which doubles the share of crest pixels found
 //    major on noisy data without marking pixels away from the crests;
 //  - minor ridges are thinned to one pixel before branch pixels are counted; segments without
-//    a major pixel are removed as dangling branches, and between two junctions only when
-//    longer than 4 basis widths (ridge_contours.h);
+//    a major pixel are removed as dangling branches first, and then, between two junctions that
+//    remain, when longer than 2 basis widths (ridge_contours.h);
 //  - points past the end of an open contour get extended nodes (point_partition.h).
 //
 // Limits. ImageSize may not exceed MaxImageSize = 2048: the padded FFT then holds two complex

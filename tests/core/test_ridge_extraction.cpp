@@ -227,6 +227,66 @@ TEST(RidgeContours, BranchWithoutMajorPixelIsRemovedAndTheLineJoined)
   EXPECT_EQ(std::max(first % w, last % w), 74);
 }
 
+TEST(RidgeContours, SaddlePathBetweenTwoRidgesGoesAShortCrossingStays)
+{
+  // Two horizontal ridges, rows 10 and 40, every pixel major, joined by vertical paths without
+  // a major pixel: one at x = 30, 29 pixels long (beyond the bridge limit of 12: a saddle path),
+  // and on a third ridge pair (rows 60 and 70) one 9 pixels long (within the limit: kept).
+  const int w = 80;
+  const int h = 80;
+  Mask minor(w * h, 0);
+  Draw(minor, w, 5, 10, 74, 10);
+  Draw(minor, w, 5, 40, 74, 40);
+  Draw(minor, w, 5, 60, 74, 60);
+  Draw(minor, w, 5, 70, 74, 70);
+  Mask major = minor;
+  Draw(minor, w, 30, 11, 30, 39);
+  Draw(minor, w, 30, 61, 30, 69);
+  tessera::RidgeContourSettings settings;
+  settings.MinimumLength = 5;
+  settings.MaximumBridgeLength = 12;
+  const tessera::RidgeContours c = tessera::TraceRidgeContours(minor, major, w, h, settings);
+  // Whether some contour holds a pixel of the path at x = 30 strictly between two rows (the
+  // junction pixels at the rows' ends belong to the rows).
+  auto pathKept = [&](int rowFrom, int rowTo)
+  {
+    for (std::size_t q = 0; q < c.Pixels.size(); ++q)
+    {
+      const int i = c.Pixels[q] % w, j = c.Pixels[q] / w;
+      if (i == 30 && j > rowFrom + 1 && j < rowTo - 1)
+      {
+        return true;
+      }
+    }
+    return false;
+  };
+  EXPECT_FALSE(pathKept(10, 40));
+  EXPECT_TRUE(pathKept(60, 70));
+}
+
+TEST(RidgeContours, CrestPieceBetweenNoiseBranchesStaysWhenTheBranchesGo)
+{
+  // A ridge on row 20 with major pixels only near its ends, and two noise branches without
+  // major pixels leaving it at x = 25 and x = 55: the 30-pixel crest piece between them is
+  // longer than the bridge limit, but once the branches are gone it is part of the ridge.
+  const int w = 80;
+  const int h = 40;
+  Mask minor(w * h, 0);
+  Mask major(w * h, 0);
+  Draw(minor, w, 5, 20, 74, 20);
+  Draw(minor, w, 25, 21, 25, 32);
+  Draw(minor, w, 55, 19, 55, 8);
+  major[20 * w + 10] = 1;
+  major[20 * w + 70] = 1;
+  tessera::RidgeContourSettings settings;
+  settings.MinimumLength = 5;
+  settings.MaximumBridgeLength = 10;
+  const tessera::RidgeContours c = tessera::TraceRidgeContours(minor, major, w, h, settings);
+  ASSERT_EQ(c.Count(), 1);
+  EXPECT_GE(c.Lengths[0], 69.0 - 1e-9);
+  EXPECT_LE(c.Lengths[0], 69.0 + 4 * std::sqrt(2.0) - 4 + 1e-9);
+}
+
 TEST(RidgeContours, JoinRulesAtATJunction)
 {
   // Horizontal ridge 5..74 on row 10 and a branch rising from x = 40, all major. Longest:
