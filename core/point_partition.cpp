@@ -87,6 +87,53 @@ double DistanceBeyondEnd(const Point2& p,
   return std::max(0.0, along);
 }
 
+// The points past one contour end, in order of their distance beyond it, continue the curve
+// while each lies within maximumGap of the one before (the first: of the end pixel). From the
+// first gap on they are taken as outliers: each gets the distance of the last continuation (0:
+// the end pixel's node, the paper's), so that one far point cannot stretch the node range and
+// squeeze the nodes of every other point of the contour.
+//
+//   contour   continuations    gap > maximumGap     outlier
+//   ======E   . . .. . .  ----------------------->    x      (x gets the node of the last dot)
+void KeepContinuationsOnly(std::vector<double>& beyond,
+  const std::vector<int>& projection,
+  double maximumGap)
+{
+  std::vector<std::size_t> past; // the points past an end, by end pixel, then distance
+  for (std::size_t k = 0; k < beyond.size(); ++k)
+  {
+    if (beyond[k] > 0.0)
+    {
+      past.push_back(k);
+    }
+  }
+  std::sort(past.begin(),
+    past.end(),
+    [&](std::size_t a, std::size_t b) {
+      return projection[a] != projection[b] ? projection[a] < projection[b] : beyond[a] < beyond[b];
+    });
+  double last = 0.0; // distance of the last continuation past the current end
+  bool outliers = false;
+  for (std::size_t m = 0; m < past.size(); ++m)
+  {
+    const std::size_t k = past[m];
+    if (m == 0 || projection[k] != projection[past[m - 1]])
+    {
+      last = 0.0;
+      outliers = false;
+    }
+    outliers = outliers || beyond[k] - last > maximumGap;
+    if (outliers)
+    {
+      beyond[k] = last;
+    }
+    else
+    {
+      last = beyond[k];
+    }
+  }
+}
+
 } // namespace
 
 std::vector<double> ContourArcLengths(const RidgeContours& contours, int width)
@@ -105,7 +152,8 @@ std::vector<double> ContourArcLengths(const RidgeContours& contours, int width)
 PointPartition PartitionPoints(const std::vector<Point2>& pixelPoints,
   const RidgeContours& contours,
   int width,
-  int height)
+  int height,
+  double maximumGap)
 {
   for (std::size_t k = 0; k < pixelPoints.size(); ++k)
   {
@@ -136,9 +184,7 @@ PointPartition PartitionPoints(const std::vector<Point2>& pixelPoints,
   }
   const std::vector<int> nearest = NearestFeatureTransform(isContour, width, height);
   result.Extended.assign(pixelPoints.size(), 0);
-  std::vector<double> extendedArc(pixelPoints.size(), 0.0);
-  std::vector<double> lowest(contours.Count(), 0.0);
-  std::vector<double> highest(contours.Lengths.begin(), contours.Lengths.end());
+  std::vector<double> beyond(pixelPoints.size(), 0.0);
   for (std::size_t k = 0; k < pixelPoints.size(); ++k)
   {
     const int pixel = NearestContourPixel(pixelPoints[k], nearest, width, height);
@@ -146,12 +192,21 @@ PointPartition PartitionPoints(const std::vector<Point2>& pixelPoints,
     const int contour = contourOfPosition[position];
     result.GroupId[k] = contour;
     result.Projection[k] = position;
+    beyond[k] = DistanceBeyondEnd(pixelPoints[k], contours, contour, position, width);
+  }
+  KeepContinuationsOnly(beyond, result.Projection, maximumGap);
+  std::vector<double> extendedArc(pixelPoints.size(), 0.0);
+  std::vector<double> lowest(contours.Count(), 0.0);
+  std::vector<double> highest(contours.Lengths.begin(), contours.Lengths.end());
+  for (std::size_t k = 0; k < pixelPoints.size(); ++k)
+  {
+    const int position = result.Projection[k];
+    const int contour = result.GroupId[k];
     extendedArc[k] = result.ArcLength[position];
-    const double beyond = DistanceBeyondEnd(pixelPoints[k], contours, contour, position, width);
-    if (beyond > 0.0)
+    if (beyond[k] > 0.0)
     {
       result.Extended[k] = 1;
-      extendedArc[k] += position == contours.Offsets[contour] ? -beyond : beyond;
+      extendedArc[k] += position == contours.Offsets[contour] ? -beyond[k] : beyond[k];
       lowest[contour] = std::min(lowest[contour], extendedArc[k]);
       highest[contour] = std::max(highest[contour], extendedArc[k]);
     }

@@ -16,7 +16,11 @@
 // their mean. A point whose projection is an end pixel of an open contour and that lies beyond
 // it along the end tangent (measured over the last few pixels) gets the arc length extended by
 // that tangent distance; the nodes of the contour's points are then the extended arc lengths
-// rescaled to [0, 1]. For contours whose ends are not passed the nodes are the paper's.
+// rescaled to [0, 1]. For contours whose ends are not passed the nodes are the paper's. Only
+// points that continue the curve are extended: taken by distance beyond the end, each within
+// maximumGap (pixels) of the one before, the first of the end pixel. A point after a larger gap
+// is an outlier and gets the node of the last continuation (the end pixel's if there is none);
+// otherwise one far point would stretch the node range and squeeze every other node.
 
 #include "geometry.h"
 #include "ridge_contours.h"
@@ -49,6 +53,7 @@ std::vector<double> ContourArcLengths(const RidgeContours& contours, int width);
 PointPartition PartitionPoints(const std::vector<Point2>& pixelPoints,
   const RidgeContours& contours,
   int width,
-  int height);
+  int height,
+  double maximumGap);
 
 } // namespace tessera

@@ -258,9 +258,23 @@ double RidgeGrouping::FractionInOwnPixel(const std::vector<Point2>& points, cons
   return points.empty() ? 0.0 : static_cast<double>(alone) / static_cast<double>(points.size());
 }
 
+std::vector<Point2> RidgeGrouping::DistinctPoints(const std::vector<Point2>& points)
+{
+  std::vector<Point2> distinct = points;
+  auto before = [](const Point2& a, const Point2& b)
+  { return a.x < b.x || (a.x == b.x && a.y < b.y); };
+  auto same = [](const Point2& a, const Point2& b) { return a.x == b.x && a.y == b.y; };
+  std::sort(distinct.begin(), distinct.end(), before);
+  distinct.erase(std::unique(distinct.begin(), distinct.end(), same), distinct.end());
+  return distinct;
+}
+
+// Copies of a point count once: they can never have pixels of their own, and counting them
+// would push data with repeated measurements to the finest image, splitting a curve into dozens.
 int RidgeGrouping::AutomaticImageSize(const std::vector<Point2>& points, bool& capped) const
 {
   const int smallest = 2 * this->MarginPixels() + 3;
+  const std::vector<Point2> distinct = DistinctPoints(points);
   capped = false;
   for (int candidate : AutomaticCandidates)
   {
@@ -268,7 +282,7 @@ int RidgeGrouping::AutomaticImageSize(const std::vector<Point2>& points, bool& c
     {
       continue;
     }
-    if (FractionInOwnPixel(points, this->MakeGrid(points, candidate)) > 0.5)
+    if (FractionInOwnPixel(distinct, this->MakeGrid(points, candidate)) > 0.5)
     {
       return candidate;
     }
@@ -310,7 +324,7 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
           ? " (the least that holds the margins of a basis width of " +
             std::to_string(this->Settings.Width) + " pixels)"
           : std::string()) +
-      ": fewer than half of the points have a pixel of their own");
+      ": fewer than half of the distinct points have a pixel of their own");
   }
   const PixelGrid grid = this->MakeGrid(points, result.ImageSize);
   result.Grid = grid;
@@ -347,7 +361,10 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
     result.Warnings.push_back("no ridge contour reaches the minimum length: no point is grouped");
   }
 
-  const PointPartition partition = PartitionPoints(pixelPoints, contours, grid.Width, grid.Height);
+  // Points past a contour end continue it while each is within two basis widths of the one
+  // before: points further apart along a curve no longer make one ridge of the field.
+  const PointPartition partition =
+    PartitionPoints(pixelPoints, contours, grid.Width, grid.Height, 2.0 * this->Settings.Width);
   result.GroupId = partition.GroupId;
   result.Node = partition.Node;
   for (int c = 0; c < contours.Count(); ++c)

@@ -16,8 +16,10 @@
 // the data have neighbours to be tested against); the shorter side gets as many pixels as it
 // needs at the same spacing. With ImageSize = 0 the size is chosen as the paper says: the
 // smallest of 64, 96, 128, 192, 256, 384, 512, 768, 1024 at which most (more than half) of the
-// points fall in a pixel of their own; 1024 (with a warning) when none does, or, for a basis so
-// wide (above some 500 pixels) that its margins need more, the smallest size that holds them.
+// points fall in a pixel of their own, copies of a point counting as one point (repeated
+// measurements cannot be told apart by any image); 1024 (with a warning) when none does, or, for a
+// basis so wide (above some 500 pixels) that its margins need more, the smallest size that holds
+// them.
 //
 // Choices the paper leaves open (each explained where it is made):
 //  - the field is spread onto the pixel grid bilinearly and convolved by FFT, error bound
@@ -123,9 +125,12 @@ public:
   /// The image over the bounding box of points (not all identical) with imageSize pixels
   /// along its longer side.
   PixelGrid MakeGrid(const std::vector<Point2>& points, int imageSize) const;
-  /// The paper's automatic choice (see the header comment); `capped` tells whether no
-  /// candidate reached a majority of points in pixels of their own.
+  /// The paper's automatic choice (see the header comment), counting copies of a point once;
+  /// `capped` tells whether no candidate reached a majority of distinct points in pixels of
+  /// their own.
   int AutomaticImageSize(const std::vector<Point2>& points, bool& capped) const;
+  /// The points with copies (equal coordinates) removed, in lexicographic order.
+  static std::vector<Point2> DistinctPoints(const std::vector<Point2>& points);
   /// Fraction of points alone in their (nearest) pixel of grid.
   static double FractionInOwnPixel(const std::vector<Point2>& points, const PixelGrid& grid);
 

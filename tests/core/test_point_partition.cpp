@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -14,6 +15,9 @@ namespace
 {
 
 using tessera::Point2;
+
+// Every point past a contour end extends it (the gap rule is tested on its own).
+const double NoGapLimit = std::numeric_limits<double>::infinity();
 
 double SquaredDistance(int a, int b, int width)
 {
@@ -127,7 +131,7 @@ TEST(PointPartition, AssignsTheNearestContourPixelAndItsArcLength)
     p = { x(rng), y(rng) };
   }
   const tessera::PointPartition partition =
-    tessera::PartitionPoints(points, contours, width, height);
+    tessera::PartitionPoints(points, contours, width, height, NoGapLimit);
   int exact = 0;
   for (std::size_t k = 0; k < points.size(); ++k)
   {
@@ -181,7 +185,8 @@ TEST(PointPartition, NodesIncreaseAlongAnOpenContourAndBeyondItsEnds)
   {
     points.push_back({ x, 5.2 });
   }
-  const tessera::PointPartition partition = tessera::PartitionPoints(points, contours, width, 30);
+  const tessera::PointPartition partition =
+    tessera::PartitionPoints(points, contours, width, 30, NoGapLimit);
   for (std::size_t k = 1; k < points.size(); ++k)
   {
     EXPECT_GE(partition.Node[k], partition.Node[k - 1]) << "x = " << points[k].x;
@@ -190,14 +195,58 @@ TEST(PointPartition, NodesIncreaseAlongAnOpenContourAndBeyondItsEnds)
   EXPECT_TRUE(partition.Extended[0]);
 }
 
+TEST(PointPartition, AFarPointPastAnEndDoesNotStretchTheNodes)
+{
+  // One open contour along row 5, x = 10 .. 30 (end pixel at x = 30, tangent +x). Points on it,
+  // continuations at x = 31 .. 35 (1 pixel apart), and an outlier at x = 55, 20 pixels further.
+  const int width = 60;
+  tessera::RidgeContours contour;
+  for (int i = 10; i <= 30; ++i)
+  {
+    contour.Pixels.push_back(5 * width + i);
+  }
+  contour.Offsets.push_back(static_cast<int>(contour.Pixels.size()));
+  contour.Closed.push_back(0);
+  contour.Lengths.push_back(20.0);
+  std::vector<Point2> points;
+  for (double x = 10.0; x <= 35.0; x += 1.0)
+  {
+    points.push_back({ x, 5.3 });
+  }
+  const std::size_t lastContinuation = points.size() - 1;
+  const std::vector<Point2> withoutOutlier = points;
+  points.push_back({ 55.0, 5.3 });
+  const double gap = 4.0;
+  const tessera::PointPartition clean =
+    tessera::PartitionPoints(withoutOutlier, contour, width, 12, gap);
+  const tessera::PointPartition result = tessera::PartitionPoints(points, contour, width, 12, gap);
+  // Continuations are extended: x = 10 .. 35 spans 25 pixels, node k / 25.
+  for (std::size_t k = 0; k <= lastContinuation; ++k)
+  {
+    EXPECT_NEAR(clean.Node[k], double(k) / 25.0, 1e-12) << "x = " << points[k].x;
+    EXPECT_EQ(result.Node[k], clean.Node[k]) << "x = " << points[k].x;
+  }
+  EXPECT_TRUE(result.Extended[lastContinuation]);
+  EXPECT_EQ(result.Node.back(), result.Node[lastContinuation]);
+  // Without the gap rule the outlier took the node range: x = 35 got 25 / 45 of it.
+  const tessera::PointPartition stretched =
+    tessera::PartitionPoints(points, contour, width, 12, NoGapLimit);
+  EXPECT_NEAR(stretched.Node[lastContinuation], 25.0 / 45.0, 1e-12);
+  // An outlier with no continuation before it gets the end pixel's node, the paper's.
+  const std::vector<Point2> lone = { { 10.0, 5.3 }, { 30.0, 5.3 }, { 45.0, 5.3 } };
+  const tessera::PointPartition alone = tessera::PartitionPoints(lone, contour, width, 12, gap);
+  EXPECT_EQ(alone.Node, (std::vector<double>{ 0.0, 1.0, 1.0 }));
+  EXPECT_FALSE(alone.Extended[2]);
+}
+
 TEST(PointPartition, NoContourLeavesEveryPointUnassigned)
 {
   tessera::RidgeContours none;
   const tessera::PointPartition partition =
-    tessera::PartitionPoints({ { 1, 1 }, { 2, 3 } }, none, 10, 10);
+    tessera::PartitionPoints({ { 1, 1 }, { 2, 3 } }, none, 10, 10, NoGapLimit);
   EXPECT_EQ(partition.GroupId, (std::vector<int>{ -1, -1 }));
-  EXPECT_THROW(
-    tessera::PartitionPoints({ { 1, 1 }, { 20, 3 } }, none, 10, 10), tessera::InputError);
+  EXPECT_THROW(tessera::PartitionPoints({ { 1, 1 }, { 20, 3 } }, none, 10, 10, NoGapLimit),
+    tessera::InputError);
 }
 
 } // namespace

@@ -658,6 +658,49 @@ TEST(RidgeGrouping, AutomaticImageSizeGivesMostPointsTheirOwnPixel)
   }
 }
 
+TEST(RidgeGrouping, RepeatedPointsDoNotChangeTheAutomaticImage)
+{
+  // Every point given twice, then three times (repeated measurements): copies can never have a
+  // pixel of their own, and counting them pushed the automatic image to 1024 pixels, splitting
+  // one arc into 37 groups. They count once: the same image and, per point, the same group.
+  const std::vector<TrueCurve> arc = { { [](double t)
+    {
+      return Point2{ 100 * std::cos(2 * t), 100 * std::sin(2 * t) };
+    },
+    false } };
+  const std::vector<Point2> points = Positions(SampleCurves(arc, { 300 }, 1.0, 4));
+  RidgeGroupingSettings settings;
+  const RidgeGroupingResult once = RidgeGrouping(settings).Run(points);
+  ASSERT_LT(once.ImageSize, RidgeGrouping::MaxAutomaticImageSize);
+  for (int copies : { 2, 3 })
+  {
+    std::vector<Point2> repeated;
+    for (int c = 0; c < copies; ++c)
+    {
+      repeated.insert(repeated.end(), points.begin(), points.end());
+    }
+    const RidgeGroupingResult result = RidgeGrouping(settings).Run(repeated);
+    EXPECT_EQ(result.ImageSize, once.ImageSize) << copies << " copies";
+    EXPECT_TRUE(result.Warnings.empty()) << result.Warnings.front();
+    for (std::size_t k = 0; k < repeated.size(); ++k)
+    {
+      ASSERT_EQ(result.GroupId[k], once.GroupId[k % points.size()]) << copies << " copies, " << k;
+    }
+  }
+}
+
+TEST(RidgeGrouping, DistinctPointsDropOnlyExactCopies)
+{
+  const std::vector<Point2> points = {
+    { 1, 2 }, { 0, 5 }, { 1, 2 }, { 1, std::nextafter(2.0, 3.0) }, { 0, 5 }, { -0.0, 5 }
+  };
+  const std::vector<Point2> distinct = RidgeGrouping::DistinctPoints(points);
+  ASSERT_EQ(distinct.size(), 3U); // -0.0 == 0.0: the same position
+  EXPECT_EQ(distinct[0].x, 0.0);
+  EXPECT_EQ(distinct[1].y, 2.0);
+  EXPECT_EQ(distinct[2].y, std::nextafter(2.0, 3.0));
+}
+
 TEST(RidgeGrouping, OutputsAreConsistent)
 {
   const std::vector<Sample> samples = SampleCurves(TwoOpenCurves(), { 800, 600 }, 1.0, 5);
