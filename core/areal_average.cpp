@@ -17,7 +17,6 @@
 #include <limits>
 #include <map>
 #include <numeric>
-#include <sstream>
 #include <stdexcept>
 
 namespace tessera
@@ -825,10 +824,8 @@ bool InLonLatRange(const Point2& p)
 
 [[noreturn]] void ThrowInvalidLonLat(const std::string& what, const Point2& p)
 {
-  std::ostringstream message;
-  message.precision(17);
-  message << what << " has an invalid longitude/latitude (" << p.x << ", " << p.y << ")";
-  throw InputError(message.str());
+  throw InputError(
+    what + " has an invalid longitude/latitude (" + NumberText(p.x) + ", " + NumberText(p.y) + ")");
 }
 
 /// Throws InputError naming the ring and vertex of a finite catchment vertex out of range (NaN
@@ -870,7 +867,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   if (!(settings.CoLocatedMetres >= 0.0) || !std::isfinite(settings.CoLocatedMetres))
   {
     throw InputError("CoLocatedMetres must be a finite distance >= 0, not " +
-      std::to_string(settings.CoLocatedMetres));
+      NumberText(settings.CoLocatedMetres));
   }
   if (!settings.GaugeNames.empty() && settings.GaugeNames.size() != gaugesLonLat.size())
   {

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <utility>
 
@@ -421,12 +420,9 @@ bool CheckConvex(const Point2* tile,
   // Both ways: a ring wound twice around its hull has twice its area.
   if (std::abs(hullArea - tileArea) > 1e-6 * hullArea + rounding)
   {
-    std::ostringstream message;
-    message.precision(17);
-    message << "tile " << tileId << " is not convex: its area " << tileArea
-            << " differs from its convex hull's " << hullArea
-            << "; tiles must be convex (split it into convex parts)";
-    throw InputError(message.str());
+    throw InputError("tile " + std::to_string(tileId) + " is not convex: its area " +
+      NumberText(tileArea) + " differs from its convex hull's " + NumberText(hullArea) +
+      "; tiles must be convex (split it into convex parts)");
   }
   return true;
 }

@@ -12,7 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <memory>
 #include <sstream>
 
@@ -35,22 +34,17 @@ constexpr double MaxProjectedMagnitude = 1.0e8;
 
 std::string FormatNumber(double value)
 {
-  char buffer[40];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
-  return buffer;
+  return NumberText(value);
 }
 
 std::string DescribePoint(const char* what, long long id, const Point2& p)
 {
-  std::ostringstream out;
-  out.precision(17);
-  out << what;
+  std::string text = what;
   if (id >= 0)
   {
-    out << ' ' << id;
+    text += ' ' + std::to_string(id);
   }
-  out << " (" << p.x << ", " << p.y << ")";
-  return out.str();
+  return text + " (" + NumberText(p.x) + ", " + NumberText(p.y) + ")";
 }
 
 /// Signed difference b - a of two longitudes, in [-180, 180).

@@ -32,7 +32,7 @@ void CheckGrid(int gridWidth, int gridHeight, double width)
   }
   if (!(width > 0.0) || !std::isfinite(width))
   {
-    throw InputError("basis width " + std::to_string(width) + " is not a positive number");
+    throw InputError("basis width " + NumberText(width) + " is not a positive number");
   }
 }
 
@@ -47,8 +47,8 @@ void CheckPointsInsideGrid(const std::vector<Point2>& pixelPoints, int gridWidth
     }
     if (p.x < 0.0 || p.y < 0.0 || p.x > gridWidth - 1 || p.y > gridHeight - 1)
     {
-      throw InputError("point " + std::to_string(k) + " at pixel (" + std::to_string(p.x) + ", " +
-        std::to_string(p.y) + ") lies outside the field grid");
+      throw InputError("point " + std::to_string(k) + " at pixel (" + NumberText(p.x) + ", " +
+        NumberText(p.y) + ") lies outside the field grid");
     }
   }
 }

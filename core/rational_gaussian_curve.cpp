@@ -39,7 +39,7 @@ void CheckInput(const std::vector<double>& nodes,
   }
   if (!(sigma > 0.0) || !std::isfinite(sigma))
   {
-    throw InputError("RaG curve sigma " + std::to_string(sigma) + " is not a positive number");
+    throw InputError("RaG curve sigma " + NumberText(sigma) + " is not a positive number");
   }
   if (sampleCount < 2)
   {
@@ -50,11 +50,11 @@ void CheckInput(const std::vector<double>& nodes,
     if (!(nodes[k] >= 0.0 && nodes[k] <= 1.0))
     {
       throw InputError(
-        "RaG node " + std::to_string(k) + " (" + std::to_string(nodes[k]) + ") is outside [0, 1]");
+        "RaG node " + std::to_string(k) + " (" + NumberText(nodes[k]) + ") is outside [0, 1]");
     }
     if (!(weights[k] > 0.0) || !std::isfinite(weights[k]))
     {
-      throw InputError("RaG weight " + std::to_string(k) + " (" + std::to_string(weights[k]) +
+      throw InputError("RaG weight " + std::to_string(k) + " (" + NumberText(weights[k]) +
         ") is not a positive number");
     }
     if (!std::isfinite(controls[k].x) || !std::isfinite(controls[k].y))

@@ -753,7 +753,7 @@ RidgeContours TraceRidgeContours(const std::vector<std::uint8_t>& minor,
   CheckMask(major, width, height, "major ridge");
   if (!(settings.MinimumLength >= 0.0) || !std::isfinite(settings.MinimumLength))
   {
-    throw InputError("minimum contour length " + std::to_string(settings.MinimumLength) +
+    throw InputError("minimum contour length " + NumberText(settings.MinimumLength) +
       " is not a non-negative number");
   }
   if (settings.TangentPixels < 1)

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <sstream>
 #include <string>
 
 namespace tessera
@@ -27,7 +26,7 @@ void CheckPositive(double value, const char* name)
 {
   if (!(value > 0.0) || !std::isfinite(value))
   {
-    throw InputError(std::string(name) + " " + std::to_string(value) + " is not a positive number");
+    throw InputError(std::string(name) + " " + NumberText(value) + " is not a positive number");
   }
 }
 
@@ -53,12 +52,10 @@ void CheckPoints(const std::vector<Point2>& points)
   }
   if (beyond < points.size())
   {
-    std::ostringstream message;
-    message.precision(17);
-    message << "point " << beyond << " (" << points[beyond].x << ", " << points[beyond].y
-            << ") lies beyond +-1e306, the coordinates ridge grouping takes (its pixel grid and "
-               "curves would overflow): scale the points";
-    throw InputError(message.str());
+    throw InputError("point " + std::to_string(beyond) + " (" + NumberText(points[beyond].x) +
+      ", " + NumberText(points[beyond].y) +
+      ") lies beyond +-1e306, the coordinates ridge grouping takes (its pixel grid and curves "
+      "would overflow): scale the points");
   }
 }
 
@@ -73,7 +70,7 @@ void CheckGridIsFinite(const PixelGrid& grid, double width)
     !std::isfinite(farY) || !std::isfinite(grid.Spacing))
   {
     throw InputError("the pixel grid around the points, with the margins of a basis width of " +
-      std::to_string(width) + " pixels, reaches beyond the largest double: scale the points");
+      NumberText(width) + " pixels, reaches beyond the largest double: scale the points");
   }
 }
 
@@ -176,15 +173,15 @@ RidgeGrouping::RidgeGrouping(const RidgeGroupingSettings& settings)
   const double widest = double((MaxImageSize - 3) / 2 - 2);
   if (settings.Width > widest)
   {
-    throw InputError("basis width " + std::to_string(settings.Width) +
+    throw InputError("basis width " + NumberText(settings.Width) +
       " pixels leaves no room inside the largest image (" + std::to_string(MaxImageSize) +
-      " pixels, margins of the width on both sides): at most " + std::to_string(widest));
+      " pixels, margins of the width on both sides): at most " + NumberText(widest));
   }
   CheckPositive(settings.CurveSigma, "curve sigma");
   CheckPositive(settings.CurveSamplesPerPixel, "curve samples per pixel");
   if (!(settings.MinimumContourLength >= 0.0) || !std::isfinite(settings.MinimumContourLength))
   {
-    throw InputError("minimum contour length " + std::to_string(settings.MinimumContourLength) +
+    throw InputError("minimum contour length " + NumberText(settings.MinimumContourLength) +
       " is not a non-negative number");
   }
   if (settings.ImageSize < 0)
@@ -217,7 +214,7 @@ void RidgeGrouping::CheckImageSize(int imageSize) const
   {
     throw InputError("image size " + std::to_string(imageSize) + " is below " +
       std::to_string(smallest) + " pixels, the least that leaves room inside the margins of a " +
-      "basis width of " + std::to_string(this->Settings.Width) + " pixels");
+      "basis width of " + NumberText(this->Settings.Width) + " pixels");
   }
 }
 
@@ -322,7 +319,7 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
       " pixels" +
       (result.ImageSize > MaxAutomaticImageSize
           ? " (the least that holds the margins of a basis width of " +
-            std::to_string(this->Settings.Width) + " pixels)"
+            NumberText(this->Settings.Width) + " pixels)"
           : std::string()) +
       ": fewer than half of the distinct points have a pixel of their own");
   }

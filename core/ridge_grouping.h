@@ -117,7 +117,8 @@ public:
   explicit RidgeGrouping(const RidgeGroupingSettings& settings = RidgeGroupingSettings());
 
   /// Throws InputError naming the first point with a NaN or infinite coordinate. Fewer than two
-  /// points give empty outputs and a warning; identical points give one group and no curve.
+  /// points give a warning, every point unassigned (GroupId -1) and no contour or curve;
+  /// identical points give one group and no curve.
   RidgeGroupingResult Run(const std::vector<Point2>& points) const;
 
   /// Margin in pixels on every side of the bounding box.

@@ -14,7 +14,6 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
-#include <sstream>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -846,12 +845,10 @@ void CheckTilesFillWindow(const TileMesh& tiles, double windowArea)
   const double total = std::accumulate(tiles.Areas.begin(), tiles.Areas.end(), 0.0);
   if (!(std::fabs(total - windowArea) <= 1e-6 * windowArea))
   {
-    std::ostringstream message;
-    message.precision(17);
-    message << "the tiles' areas add up to " << total << ", not the window's area " << windowArea
-            << ": the points lie too close together, for the window's size, for exact tiles (their "
-               "coordinates differ by some 1e-60 of it or less)";
-    throw InputError(message.str());
+    throw InputError("the tiles' areas add up to " + NumberText(total) +
+      ", not the window's area " + NumberText(windowArea) +
+      ": the points lie too close together, for the window's size, for exact tiles (their "
+      "coordinates differ by some 1e-60 of it or less)");
   }
 }
 

@@ -24,7 +24,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <string>
 
 namespace tessera
@@ -71,10 +70,7 @@ bool same_direction(const HalfPlane& i, const HalfPlane& j)
 
 std::string describe(const HalfPlane& h)
 {
-  std::ostringstream s;
-  s.precision(17);
-  s << "(a = " << h.a << ", b = " << h.b << ", c = " << h.c << ")";
-  return s.str();
+  return "(a = " + NumberText(h.a) + ", b = " + NumberText(h.b) + ", c = " + NumberText(h.c) + ")";
 }
 
 // a*b - c*d with one rounding error less than the naive formula (Kahan's algorithm).
@@ -312,18 +308,15 @@ Window Window::Rectangle(double xmin, double xmax, double ymin, double ymax)
   {
     if (!std::isfinite(bounds[i]))
     {
-      std::ostringstream s;
-      s << "rectangle window: " << names[i] << " = " << bounds[i] << " is not finite";
-      throw InputError(s.str());
+      throw InputError(std::string("rectangle window: ") + names[i] + " = " +
+        NumberText(bounds[i]) + " is not finite");
     }
   }
   if (!(xmin < xmax) || !(ymin < ymax))
   {
-    std::ostringstream s;
-    s.precision(17);
-    s << "rectangle window is empty: need xmin < xmax and ymin < ymax, got x in (" << xmin << ", "
-      << xmax << "), y in (" << ymin << ", " << ymax << ")";
-    throw InputError(s.str());
+    throw InputError("rectangle window is empty: need xmin < xmax and ymin < ymax, got x in (" +
+      NumberText(xmin) + ", " + NumberText(xmax) + "), y in (" + NumberText(ymin) + ", " +
+      NumberText(ymax) + ")");
   }
   // Bottom, right, top, left: vertex 0 is the lower-left corner.
   return Window({ HalfPlane{ 0.0, -1.0, ymin },
@@ -394,11 +387,9 @@ Window Window::ScaledByPowerOfTwo(int exponent) const
     scaled[k].c = std::ldexp(c, exponent);
     if (std::ldexp(scaled[k].c, -exponent) != c)
     {
-      std::ostringstream s;
-      s.precision(17);
-      s << "window constraint " << this->EffectiveInputIds[k] << " (c = " << c
-        << ") cannot be scaled by 2^" << exponent << " exactly";
-      throw InputError(s.str());
+      throw InputError("window constraint " + std::to_string(this->EffectiveInputIds[k]) +
+        " (c = " + NumberText(c) + ") cannot be scaled by 2^" + std::to_string(exponent) +
+        " exactly");
     }
   }
   return Window(scaled);
@@ -423,12 +414,10 @@ void ScalePointsByPowerOfTwo(std::vector<Point2>& points, int exponent)
     points[k] = { scale(p.x, lost), scale(p.y, lost) };
     if (lost)
     {
-      std::ostringstream s;
-      s.precision(17);
-      s << "point " << k << " (" << p.x << ", " << p.y << ") cannot be scaled by 2^" << exponent
-        << " exactly, as the window's scale needs: the points span more orders of magnitude than "
-           "the doubles hold around it";
-      throw InputError(s.str());
+      throw InputError("point " + std::to_string(k) + " (" + NumberText(p.x) + ", " +
+        NumberText(p.y) + ") cannot be scaled by 2^" + std::to_string(exponent) +
+        " exactly, as the window's scale needs: the points span more orders of magnitude than the "
+        "doubles hold around it");
     }
   }
 }

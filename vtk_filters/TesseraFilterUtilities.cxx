@@ -78,10 +78,9 @@ std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points)
   {
     if (!std::isfinite(xy[i].x) || !std::isfinite(xy[i].y))
     {
-      std::ostringstream message;
-      message << "point " << i << " has a NaN or infinite coordinate (" << xy[i].x << ", "
-              << xy[i].y << ")";
-      throw tessera::InputError(message.str());
+      throw tessera::InputError("point " + std::to_string(i) +
+        " has a NaN or infinite coordinate (" + tessera::NumberText(xy[i].x) + ", " +
+        tessera::NumberText(xy[i].y) + ")");
     }
   }
   return xy;
@@ -106,10 +105,10 @@ double Above(double value, double pad)
 
 [[noreturn]] void ThrowWindowTooLarge(double xmin, double xmax, double ymin, double ymax)
 {
-  std::ostringstream message;
-  message << "the window (x " << xmin << " .. " << xmax << ", y " << ymin << " .. " << ymax
-          << ") is too large: its area overflows a double; set a smaller Padding or WindowBounds";
-  throw tessera::InputError(message.str());
+  throw tessera::InputError("the window (x " + tessera::NumberText(xmin) + " .. " +
+    tessera::NumberText(xmax) + ", y " + tessera::NumberText(ymin) + " .. " +
+    tessera::NumberText(ymax) +
+    ") is too large: its area overflows a double; set a smaller Padding or WindowBounds");
 }
 
 // The window, unless areas are needed and it is so large that they overflow (a Padding of 1e299
@@ -122,6 +121,13 @@ tessera::Window Representable(tessera::Window window, bool needArea)
     ThrowWindowTooLarge(box.XMin, box.XMax, box.YMin, box.YMax);
   }
   return window;
+}
+
+/// "xmin, xmax, ymin, ymax" of WindowBounds, each as the user gave it.
+std::string BoundsText(const double bounds[4])
+{
+  return tessera::NumberText(bounds[0]) + ", " + tessera::NumberText(bounds[1]) + ", " +
+    tessera::NumberText(bounds[2]) + ", " + tessera::NumberText(bounds[3]);
 }
 } // namespace
 
@@ -165,14 +171,10 @@ std::string EmptyBoundsWarning(const double bounds[4])
   {
     return std::string();
   }
-  std::ostringstream message;
-  message << "WindowBounds (xmin, xmax, ymin, ymax = " << bounds[0] << ", " << bounds[1] << ", "
-          << bounds[2] << ", " << bounds[3] << ") is an empty rectangle ("
-          << (bounds[0] >= bounds[1] ? "xmin >= xmax" : "ymin >= ymax")
-          << "), so it is ignored: the window is the padded bounding box of the points (cut by any "
-             "window constraints). Were the bounds given in another order, such as (xmin, ymin, "
-             "xmax, ymax)?";
-  return message.str();
+  return "WindowBounds (xmin, xmax, ymin, ymax = " + BoundsText(bounds) +
+    ") is an empty rectangle (" + (bounds[0] >= bounds[1] ? "xmin >= xmax" : "ymin >= ymax") +
+    "), so it is ignored: the window is the padded bounding box of the points (cut by any window "
+    "constraints). Were the bounds given in another order, such as (xmin, ymin, xmax, ymax)?";
 }
 
 tessera::Window ChooseWindow(const double bounds[4],
@@ -186,10 +188,8 @@ tessera::Window ChooseWindow(const double bounds[4],
   {
     if (std::isnan(bounds[k]))
     {
-      std::ostringstream message;
-      message << "WindowBounds " << names[k] << " is NaN (xmin, xmax, ymin, ymax = " << bounds[0]
-              << ", " << bounds[1] << ", " << bounds[2] << ", " << bounds[3] << ")";
-      throw tessera::InputError(message.str());
+      throw tessera::InputError(std::string("WindowBounds ") + names[k] +
+        " is NaN (xmin, xmax, ymin, ymax = " + BoundsText(bounds) + ")");
     }
   }
   std::vector<tessera::HalfPlane> halfPlanes;
@@ -230,9 +230,8 @@ tessera::Window ChooseWindow(const double bounds[4],
   }
   if (!(padding >= 0.0) || !std::isfinite(padding))
   {
-    std::ostringstream message;
-    message << "Padding " << padding << " is not a finite number >= 0";
-    throw tessera::InputError(message.str());
+    throw tessera::InputError(
+      "Padding " + tessera::NumberText(padding) + " is not a finite number >= 0");
   }
   if (points.empty())
   {

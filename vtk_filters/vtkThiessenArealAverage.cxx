@@ -64,11 +64,15 @@ std::string StationName(const vtkVariant& value)
   {
     return std::string();
   }
-  char digits[64];
   const bool integral = std::isfinite(number) && number == std::floor(number) &&
     std::fabs(number) < 9007199254740992.0; // 2^53: every such double is an exact integer
-  std::snprintf(digits, sizeof digits, integral ? "%.0f" : "%.17g", number);
-  return digits;
+  if (integral)
+  {
+    char digits[32];
+    std::snprintf(digits, sizeof digits, "%.0f", number);
+    return digits;
+  }
+  return tessera::NumberText(number);
 }
 
 using tessera_vtk::ListNames;

@@ -124,12 +124,14 @@ def test_bad_and_degenerate_input():
 def test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept():
     """Settings out of range are errors naming them (they were clamped to other values, silently:
     Width -5 gave 15 groups for two curves), as are a basis width whose margins leave no room in
-    the largest image (2^31 pixels overflowed) and points beyond +-1e306; points up to 2e305 give
+    the largest image (2^31 pixels overflowed) and points beyond +-1e306, each value as given (six
+    decimals made -1e-9 "-0.000000"); points up to 2e305 give
     the same groups as at scale 1. Input arrays named GroupId or Node are passed as NAME_input."""
     coords, _, _ = two_noisy_curves()
     xs, ys = [x for x, _ in coords], [y for _, y in coords]
     cases = [("SetWidth", -5.0, "basis width -5"), ("SetWidth", 3e9, "leaves no room"),
-             ("SetWidth", 1020.25, "at most 1020.0"),
+             ("SetWidth", 1020.25, "basis width 1020.25 pixels leaves no room"),
+             ("SetWidth", -1e-9, "basis width -1e-09 is not a positive number"),
              ("SetCurveSigma", 0.0, "curve sigma 0"), ("SetMinimumContourLength", -2.0, "minimum contour length -2"),
              ("SetImageSize", -1, "image size -1 is negative")]
     for setter, value, expected in cases:

@@ -1,0 +1,64 @@
+// NumberText, the numbers in error messages and projection records: exact (reads back as the
+// same double, checked on random bit patterns) and short (what a person typed comes back).
+#include "errors.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <string>
+
+namespace
+{
+
+double FromBits(std::uint64_t bits)
+{
+  double value;
+  std::memcpy(&value, &bits, sizeof value);
+  return value;
+}
+
+TEST(NumberText, ReadsBackAsTheSameDouble)
+{
+  std::mt19937_64 rng(3);
+  int checked = 0;
+  for (int k = 0; k < 200000; ++k)
+  {
+    // Every exponent, subnormals included; NaN and infinity bit patterns are skipped here.
+    const double value = FromBits(rng());
+    if (!std::isfinite(value))
+    {
+      continue;
+    }
+    const std::string text = tessera::NumberText(value);
+    ASSERT_EQ(std::strtod(text.c_str(), nullptr), value) << text;
+    ++checked;
+  }
+  EXPECT_GT(checked, 190000);
+  EXPECT_EQ(tessera::NumberText(std::nextafter(0.1, 1.0)), "0.10000000000000002");
+}
+
+TEST(NumberText, GivesBackWhatWasTyped)
+{
+  for (const char* typed : { "39.2",
+         "1020.0000001",
+         "0.1",
+         "-1e-09",
+         "1e+306",
+         "0",
+         "-0",
+         "12",
+         "123456789012345",
+         "0.30000000000000004",
+         "nan",
+         "inf",
+         "-inf" })
+  {
+    EXPECT_EQ(tessera::NumberText(std::strtod(typed, nullptr)), typed);
+  }
+}
+
+} // namespace
