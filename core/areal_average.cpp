@@ -828,21 +828,45 @@ bool InLonLatRange(const Point2& p)
     what + " has an invalid longitude/latitude (" + NumberText(p.x) + ", " + NumberText(p.y) + ")");
 }
 
+/// An edge that reads two ways round the globe (EdgeReadsBothWays) makes two different
+/// catchments (a box from -100 to 100 was measured 20% smaller, on the other side of the globe,
+/// with no message): refused.
+void CheckEdgeReading(const Point2& a, const Point2& b, std::size_t ring, std::size_t segment)
+{
+  if (EdgeReadsBothWays(a, b))
+  {
+    const double written = std::abs(b.x - a.x);
+    throw InputError("catchment ring " + std::to_string(ring) + " segment " +
+      std::to_string(segment) + " runs from longitude " + NumberText(a.x) + " to " +
+      NumberText(b.x) + ", " + NumberText(written) +
+      " degrees as written: it can be read either way round the globe (straight in lon/lat, or " +
+      NumberText(360.0 - written) +
+      " degrees the other way, across the 180th meridian). Add a vertex in between for the "
+      "first; for the second, write the longitudes continuing past 180 (e.g. 170 to 190)");
+  }
+}
+
 /// Throws InputError naming the ring and vertex of a finite catchment vertex out of range (NaN
-/// and infinite ones are left to ValidateRings, which names them so).
+/// and infinite ones are left to ValidateRings, which names them so), or the ring and segment of
+/// an edge that can be read two ways (CheckEdgeReading).
 void CheckCatchmentLonLat(const std::vector<std::size_t>& offsets,
   const std::vector<Point2>& lonlat)
 {
   for (std::size_t r = 0; r + 1 < offsets.size(); ++r)
   {
-    for (std::size_t k = offsets[r]; k < offsets[r + 1] && k < lonlat.size(); ++k)
+    const std::size_t begin = offsets[r], end = std::min(offsets[r + 1], lonlat.size());
+    for (std::size_t k = begin; k < end; ++k)
     {
       const Point2& p = lonlat[k];
       if (std::isfinite(p.x) && std::isfinite(p.y) && !InLonLatRange(p))
       {
         ThrowInvalidLonLat(
-          "catchment ring " + std::to_string(r) + " vertex " + std::to_string(k - offsets[r]), p);
+          "catchment ring " + std::to_string(r) + " vertex " + std::to_string(k - begin), p);
       }
+    }
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      CheckEdgeReading(lonlat[k], lonlat[k + 1 < end ? k + 1 : begin], r, k - begin);
     }
   }
 }
@@ -891,6 +915,14 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   }
   s.Projector.reset(new GeographicProjection(s.Parameters));
   s.Method = settings.Areas;
+  if (s.Method == AreaMethod::EqualAreaPlane &&
+    s.Parameters.Kind != ProjectionKind::AlbersEqualArea)
+  {
+    throw InputError(std::string("areas in the projected plane (EqualAreaPlane) are ellipsoidal "
+                                 "areas only in an equal-area projection, and ") +
+      ProjectionKindName(s.Parameters.Kind) +
+      " is not one: use the GeodesicPolygon or Automatic area method");
+  }
   if (s.Method == AreaMethod::Automatic)
   {
     s.Method = s.Parameters.Kind == ProjectionKind::AlbersEqualArea ? AreaMethod::EqualAreaPlane

@@ -47,7 +47,7 @@ namespace tessera
 enum class AreaMethod
 {
   Automatic,       ///< EqualAreaPlane for Albers equal-area, GeodesicPolygon otherwise
-  EqualAreaPlane,  ///< planar areas in an equal-area projection
+  EqualAreaPlane,  ///< planar areas; only with an equal-area projection (else an InputError)
   GeodesicPolygon, ///< unprojected, densified rings measured with GeographicLib::PolygonArea
 };
 
@@ -62,7 +62,10 @@ struct ArealAverageSettings
   /// fraction of its larger side.
   double Padding = 0.1;
   /// Catchment edges are straight in lon/lat: cut into pieces of at most this many degrees before
-  /// projecting.
+  /// projecting. An edge whose longitudes differ by more than 270 degrees as written is taken the
+  /// shorter way round (179 to -179 across the 180th meridian); one that differs by 180 to 270
+  /// degrees could be meant either way and is an InputError naming its ring and segment
+  /// (EdgeReadsBothWays, geo.h).
   double CatchmentEdgeDegrees = 0.01;
   /// Gauges closer than this (projected metres) are at one place, as exact repeats are: at each
   /// step the first of them that reported is used (DuplicateGauges lists them). Gauges much

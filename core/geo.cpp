@@ -475,6 +475,12 @@ Point2 GeographicProjection::Inverse(const Point2& xy, long long id) const
   return lonlat;
 }
 
+bool EdgeReadsBothWays(const Point2& a, const Point2& b)
+{
+  const double written = std::abs(b.x - a.x);
+  return written >= 180.0 && written <= 270.0;
+}
+
 int DensifiedPieceCount(const Point2& a, const Point2& b, double maxStep, bool* capped)
 {
   if (capped)

@@ -114,6 +114,13 @@ constexpr int MaxDensifiedPieces = 1000000;
 /// non-finite means no densification (1 piece).
 /// With capped, also says whether the count was cut down to MaxDensifiedPieces.
 int DensifiedPieceCount(const Point2& a, const Point2& b, double maxStep, bool* capped = nullptr);
+/// Whether the edge from a to b (lon/lat) can be read two ways round the globe: its longitudes
+/// differ by 180 to 270 degrees as written, so straight in lon/lat (RFC 7946) it spans that much,
+/// and the shorter way round (DensifiedPieceCount, InterpolateLonLat) 90 to 180 degrees the other
+/// way; both are plausible and they are different lines (a box from -100 to 100 becomes one from
+/// 100 to 260). Beyond 270 degrees the shorter way is meant (179 to -179 across the 180th
+/// meridian, 359.5 to 0.5 in 0 .. 360 data); below 180 the two readings agree.
+bool EdgeReadsBothWays(const Point2& a, const Point2& b);
 /// The point a fraction t along the lon/lat-straight edge from a to b (longitude taken the shorter
 /// way round, continuing from a's longitude, so it may leave [-180, 180]).
 Point2 InterpolateLonLat(const Point2& a, const Point2& b, double t);

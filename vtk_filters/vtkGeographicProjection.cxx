@@ -88,6 +88,10 @@ public:
 
   /// Edges cut into MaxDensifiedPieces: their pieces may be longer than MaxStep.
   vtkIdType CappedEdges = 0;
+  /// Edges that read two ways round the globe (EdgeReadsBothWays), taken the shorter way round
+  /// (InterpolateLonLat), and the first of them ("points a and b, longitude x to y").
+  vtkIdType WrappedEdges = 0;
+  std::string FirstWrapped;
 
 private:
   vtkSmartPointer<vtkCellArray> DensifyCells(vtkCellArray* cells, bool closed)
@@ -148,6 +152,14 @@ private:
     const int pieces =
       tessera::DensifiedPieceCount({ pa[0], pa[1] }, { pb[0], pb[1] }, this->MaxStep, &capped);
     this->CappedEdges += capped ? 1 : 0;
+    if (tessera::EdgeReadsBothWays({ pa[0], pa[1] }, { pb[0], pb[1] }))
+    {
+      if (this->WrappedEdges++ == 0)
+      {
+        this->FirstWrapped = "points " + std::to_string(a) + " and " + std::to_string(b) +
+          ", longitude " + tessera::NumberText(pa[0]) + " to " + tessera::NumberText(pb[0]);
+      }
+    }
     const vtkIdType first = this->Points->GetNumberOfPoints();
     for (int k = 1; k < pieces; ++k)
     {
@@ -324,23 +336,37 @@ tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
   return ChooseForwardParameters(self, lonlat);
 }
 
-/// Projects one piece into its output, with the record (none when empty). Returns the number of
-/// edges that densifying cut into the most pieces allowed.
-vtkIdType ProjectPiece(vtkGeographicProjection* self,
+/// What densifying met, over all pieces: edges cut into the most pieces allowed, and edges taken
+/// the shorter way round in longitude (the first named, with its block).
+struct DensifyReport
+{
+  vtkIdType Capped = 0;
+  vtkIdType Wrapped = 0;
+  std::string FirstWrapped;
+};
+
+/// Projects one piece into its output, with the record (none when empty), adding to report.
+void ProjectPiece(vtkGeographicProjection* self,
   const Piece& piece,
   const tessera::GeographicProjection* projection,
-  const std::string& record)
+  const std::string& record,
+  DensifyReport& report)
 {
   vtkPointSet* input = piece.Input;
   vtkPointSet* output = piece.Output;
-  vtkIdType capped = 0;
   auto polyInput = vtkPolyData::SafeDownCast(input);
   if (!self->GetInverse() && polyInput && self->GetMaximumEdgeLength() > 0.0)
   {
     EdgeDensifier densifier(
       polyInput, vtkPolyData::SafeDownCast(output), self->GetMaximumEdgeLength());
     densifier.Run();
-    capped = densifier.CappedEdges;
+    report.Capped += densifier.CappedEdges;
+    if (report.Wrapped == 0 && densifier.WrappedEdges > 0)
+    {
+      report.FirstWrapped =
+        (piece.Label.empty() ? std::string() : piece.Label + " ") + densifier.FirstWrapped;
+    }
+    report.Wrapped += densifier.WrappedEdges;
     output->GetFieldData()->PassData(input->GetFieldData());
   }
   else
@@ -370,7 +396,6 @@ vtkIdType ProjectPiece(vtkGeographicProjection* self,
   {
     WriteProjectionRecord(output, record);
   }
-  return capped;
 }
 
 } // namespace
@@ -447,17 +472,26 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
       projection.reset(new tessera::GeographicProjection(parameters));
       record = this->Inverse ? std::string() : parameters.ToString();
     }
-    vtkIdType capped = 0;
+    DensifyReport report;
     for (const Piece& piece : pieces)
     {
-      WithLabel(piece, [&]() { capped += ProjectPiece(this, piece, projection.get(), record); });
+      WithLabel(piece, [&]() { ProjectPiece(this, piece, projection.get(), record, report); });
     }
-    if (capped > 0)
+    if (report.Capped > 0)
     {
-      vtkWarningMacro(<< capped << " edge(s) were cut into " << tessera::MaxDensifiedPieces
+      vtkWarningMacro(<< report.Capped << " edge(s) were cut into " << tessera::MaxDensifiedPieces
                       << " pieces, the most allowed: their pieces are longer than "
                          "MaximumEdgeLength "
-                      << this->MaximumEdgeLength << " degrees");
+                      << tessera::NumberText(this->MaximumEdgeLength) << " degrees");
+    }
+    if (report.Wrapped > 0)
+    {
+      vtkWarningMacro(<< report.Wrapped
+                      << " edge(s) span 180 to 270 degrees of longitude as written (the first: "
+                      << report.FirstWrapped
+                      << "): they were densified the shorter way round, across the 180th "
+                         "meridian, not straight in lon/lat; add a vertex in between where an "
+                         "edge should run straight");
     }
     if (vtkCompositeDataSet::SafeDownCast(output))
     {

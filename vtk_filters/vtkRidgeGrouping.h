@@ -29,8 +29,8 @@
  * Fewer than 2 points give a warning, output 0 holding them unassigned (GroupId -1) and the
  * other outputs empty; identical points give one group and no curve. ImageSize 0 (default)
  * chooses the size as the paper says (most points in pixels of their own, copies of a point
- * counting once); sizes above 2048 are refused before anything is allocated (the FFT would need more than
- * 512 MiB). NaN or infinite coordinates are an error naming the point.
+ * counting once); sizes above 2048 are refused before anything is allocated (the FFT would need
+ * more than 512 MiB). NaN or infinite coordinates are an error naming the point.
  */
 
 #ifndef vtkRidgeGrouping_h

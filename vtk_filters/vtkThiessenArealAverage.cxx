@@ -937,7 +937,12 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   }
 
   // Everything valid but unused is reported by id.
-  auto idOf = [&](std::size_t g) { return stationIds ? gaugeNames[g] : std::to_string(g); };
+  // A gauge by its station id, or by its point id when it has none (an empty id named nothing).
+  auto idOf = [&](std::size_t g)
+  {
+    return stationIds && !gaugeNames[g].empty() ? gaugeNames[g]
+                                                : "gauge " + std::to_string(g) + " (no station id)";
+  };
   std::vector<std::int32_t> unobserved;
   for (std::size_t g = 0; g < gaugeCount; ++g)
   {

@@ -16,7 +16,10 @@
  * - port 1, catchment: polygons or closed polylines in lon/lat (vtkPolyData, or a composite data
  * set such as vtkGDALVectorReader's output), or lines that join end to end into closed rings,
  * taken as rings under the even-odd rule (other cells, such as lines in no closed ring, are
- * ignored with a warning that counts them and names the first);
+ * ignored with a warning that counts them and names the first); edges are straight in lon/lat,
+ * but one whose longitudes differ by more than 270 degrees as written is taken the shorter way
+ * round (179 to -179 crosses the 180th meridian) and one that differs by 180 to 270 degrees,
+ * which could be meant either way, is an error naming its ring and segment;
  * - port 2 (optional), observations: a vtkTable in long format with a station id column, a time
  *   column and a value column (StationColumn, TimeColumn, ValueColumn: defaults "station_id",
  *   "time", "value"). Without it, the gauges' point-data array ValueArrayName is one time step, at
@@ -189,7 +192,8 @@ public:
   ///@{
   /**
    * How ellipsoidal areas are measured (default automatic: planar areas for an equal-area
-   * projection, GeographicLib::PolygonArea of unprojected rings otherwise).
+   * projection, GeographicLib::PolygonArea of unprojected rings otherwise). EqualAreaPlane with a
+   * projection that is not equal-area is an error at the update.
    */
   vtkSetClampMacro(AreaMethod, int, AUTOMATIC_AREAS, GEODESIC_POLYGON);
   vtkGetMacro(AreaMethod, int);

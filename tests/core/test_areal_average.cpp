@@ -374,6 +374,73 @@ TEST(ArealAverage, ACatchmentCutAtTheAntimeridianIsNamedInItsOwnSegments)
   EXPECT_NEAR(Sum(average.Step({ 1.0, 2.0 }).Weights), 1.0, 1e-12);
 }
 
+TEST(ArealAverage, AnEdgeThatReadsBothWaysRoundTheGlobeIsRefused)
+{
+  // A box from -100 to 100 written with its four corners: its bottom and top edges differ by 200
+  // degrees of longitude, straight in lon/lat through 0, or 160 degrees the other way through
+  // 180. The shorter way was taken silently (the catchment 20% smaller, on the far side of the
+  // globe); now an error names the ring, segment and both readings.
+  const std::vector<Point2> gauges{ { -50.0, 20.0 }, { 50.0, 20.0 } };
+  const Square box(-100.0, 10.0, 100.0, 30.0);
+  const std::string error =
+    ErrorOf([&] { ThiessenArealAverage average(gauges, box.Offsets, box.Ring); });
+  EXPECT_NE(error.find("catchment ring 0 segment 0 runs from longitude -100 to 100, 200 degrees"),
+    std::string::npos)
+    << error;
+  EXPECT_NE(error.find("160 degrees the other way"), std::string::npos) << error;
+  // With a vertex at 0 on both long edges it is the box through 0, measured as such: the two
+  // gauges split it in equal halves.
+  const std::vector<std::size_t> six{ 0, 6 };
+  const std::vector<Point2> through0{ { -100.0, 10.0 },
+    { 0.0, 10.0 },
+    { 100.0, 10.0 },
+    { 100.0, 30.0 },
+    { 0.0, 30.0 },
+    { -100.0, 30.0 } };
+  ThiessenArealAverage average(gauges, six, through0);
+  const ArealStep step = average.Step({ 1.0, 3.0 });
+  ASSERT_EQ(step.StationsWeighted, 2);
+  EXPECT_NEAR(step.Weights[0], 0.5, 1e-9);
+  EXPECT_NEAR(step.Mean, 2.0, 1e-9);
+  // Edges that differ by more than 270 degrees as written are read the shorter way, as meant:
+  // across the 180th meridian (179 to -179) and, in 0 .. 360 data, across the prime meridian.
+  for (const Square& crossing :
+    { Square(179.0, -1.0, -179.0, 1.0), Square(359.5, 50.0, 0.5, 51.0) })
+  {
+    // Two gauges a quarter degree inside the west and east edges: they split it in halves.
+    const double west = crossing.Ring[0].x, east = crossing.Ring[1].x, y = crossing.Ring[0].y;
+    const std::vector<Point2> inside{ { west + 0.25, y + 0.5 }, { east - 0.25, y + 0.5 } };
+    ThiessenArealAverage across(inside, crossing.Offsets, crossing.Ring);
+    const ArealStep both = across.Step({ 1.0, 3.0 });
+    ASSERT_EQ(both.StationsWeighted, 2) << west;
+    EXPECT_NEAR(both.Weights[0], 0.5, 1e-6) << west;
+  }
+}
+
+TEST(ArealAverage, PlanarAreasNeedAnEqualAreaProjection)
+{
+  // EqualAreaPlane with a projection that does not keep areas gave planar areas as ellipsoidal
+  // ones (Colorado +1.8% in Transverse Mercator): an error naming the projection.
+  const Square catchment(0.0, 0.0, 1.0, 1.0);
+  ArealAverageSettings settings;
+  settings.Areas = AreaMethod::EqualAreaPlane;
+  settings.HaveProjection = true;
+  settings.Projection =
+    ProjectionParameters::FromString("projection=TransverseMercator lon0=0.5 lat0=0");
+  const std::string error = ErrorOf(
+    [&] {
+      ThiessenArealAverage average({ { 0.5, 0.5 } }, catchment.Offsets, catchment.Ring, settings);
+    });
+  EXPECT_NE(error.find("TransverseMercator is not one"), std::string::npos) << error;
+  settings.Areas = AreaMethod::GeodesicPolygon;
+  EXPECT_EQ(
+    ErrorOf(
+      [&] {
+        ThiessenArealAverage average({ { 0.5, 0.5 } }, catchment.Offsets, catchment.Ring, settings);
+      }),
+    "");
+}
+
 TEST(ArealAverage, BadInputIsNamed)
 {
   const Square catchment(0.0, 0.0, 1.0, 1.0);

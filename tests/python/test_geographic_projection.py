@@ -184,10 +184,49 @@ def test_an_edge_cut_into_the_most_pieces_is_reported():
             assert_that(not warnings, f"step {step}: {warnings}")
 
 
+def test_an_edge_that_reads_both_ways_round_the_globe_is_reported():
+    """A polygon edge whose longitudes differ by 180 to 270 degrees as written is densified the
+    shorter way round, across the 180th meridian, not straight in lon/lat as RFC 7946 reads it: a
+    warning counts such edges and names the first (it was silent, and a box from -100 to 100
+    came out as one from 100 to 260). An antimeridian edge written 179 to -179 (358 degrees) is
+    read as meant, without a warning."""
+    from vtkmodules.vtkCommonCore import vtkCommand
+    from vtkmodules.vtkCommonDataModel import vtkCellArray
+
+    def box(west, east):
+        data = make_points([(west, 10.0), (east, 10.0), (east, 30.0), (west, 30.0)])
+        cells = vtkCellArray()
+        cells.InsertNextCell(4)
+        for i in range(4):
+            cells.InsertCellPoint(i)
+        data.SetPolys(cells)
+        return data
+
+    for west, east, warned in ((-100.0, 100.0, True), (179.0, -179.0, False), (-80.0, 80.0, False)):
+        f = vtkGeographicProjection()
+        warnings = messages_of(f, vtkCommand.WarningEvent)
+        f.SetInputData(box(west, east))
+        f.Update()
+        if warned:
+            assert_that(len(warnings) == 1 and "2 edge(s) span 180 to 270 degrees" in warnings[0]
+                        and "points 0 and 1, longitude -100 to 100" in warnings[0], f"{west}: {warnings}")
+            # the densified bottom edge runs through 180 (the other way, it would pass 0)
+            inverse = vtkGeographicProjection()
+            inverse.SetInverse(True)
+            inverse.SetInputConnection(f.GetOutputPort())
+            inverse.Update()
+            out = inverse.GetOutput()
+            lons = [out.GetPoint(i)[0] % 360.0 for i in range(out.GetNumberOfPoints())]
+            assert_that(max(lons) > 179.0 and min(lons) >= 100.0 - 1e-6, f"{min(lons)} .. {max(lons)}")
+        else:
+            assert_that(not warnings, f"{west}: {warnings}")
+
+
 if __name__ == "__main__":
     run([test_round_trip_of_the_colorado_gauges,
          test_azimuthal_equidistant_keeps_distances_from_the_centre,
          test_nan_point_is_named_and_output_is_empty,
          test_the_blocks_of_a_composite_share_one_projection,
          test_no_points_give_an_empty_output_without_error,
-         test_an_edge_cut_into_the_most_pieces_is_reported])
+         test_an_edge_cut_into_the_most_pieces_is_reported,
+         test_an_edge_that_reads_both_ways_round_the_globe_is_reported])

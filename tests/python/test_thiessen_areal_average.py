@@ -172,6 +172,19 @@ def test_missing_steps_and_unused_input_are_reported():
           "gauge 3 repeats gauge 0")
 
 
+def test_an_unobserved_gauge_without_a_station_id_is_named_by_its_point():
+    """A gauge whose station id is empty can never be matched: the warning names it by its point
+    id (it listed nothing after the colon)."""
+    f = vtkThiessenArealAverage()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetGaugesData(gauges_polydata([(0.2, 0.2), (0.8, 0.8)], ["g1", ""]))
+    f.SetCatchmentData(polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]]))
+    f.SetObservationsData(observations_table({(2000, 1): {"g1": 3.0}}))
+    f.Update(1)
+    named = [w for w in warnings if "never used" in w]
+    assert_that(len(named) == 1 and "never used: gauge 1 (no station id)" in named[0], f"{warnings}")
+
+
 def test_bad_gauge_and_self_intersecting_catchment_are_named():
     f = vtkThiessenArealAverage()
     messages = messages_of(f)
@@ -988,6 +1001,7 @@ if __name__ == "__main__":
     run([test_four_symmetric_gauges_share_a_square,
          test_colorado_months_match_a_brute_force_raster,
          test_missing_steps_and_unused_input_are_reported,
+         test_an_unobserved_gauge_without_a_station_id_is_named_by_its_point,
          test_bad_gauge_and_self_intersecting_catchment_are_named,
          test_window_clip_of_projected_tiles_sums_to_the_catchment,
          test_window_clip_names_a_non_convex_tile,
