@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace tessera
@@ -88,33 +89,140 @@ inline std::uint32_t GridCell(double scaled, std::uint32_t cells)
   return scaled > 0.0 ? std::uint32_t(std::min(scaled, double(cells - 1))) : 0U;
 }
 
-/// Whether some vertex equals the one before it, cyclically (the last vertex counts as the one
-/// before the first). A pass without branches: almost no polygon has a repeat, and the compaction
-/// below copies every vertex (and tag) to find out.
+/// Whether some vertex equals the one before it or the one two before, cyclically (the last
+/// vertices count as the ones before the first). A pass without branches: almost no polygon has a
+/// repeat, and the compaction below copies every vertex (and tag) to find out.
 inline bool HasRepeatedVertex(const std::vector<Point2>& polygon)
 {
   const std::size_t n = polygon.size();
-  bool repeated = n > 1 && polygon[0] == polygon[n - 1];
+  if (n < 2)
+  {
+    return false;
+  }
+  bool repeated = polygon[0] == polygon[n - 1];
+  if (n > 2)
+  {
+    repeated |= (polygon[0] == polygon[n - 2]) | (polygon[1] == polygon[n - 1]);
+  }
   for (std::size_t k = 1; k < n; ++k)
   {
     repeated |= polygon[k] == polygon[k - 1];
   }
+  for (std::size_t k = 2; k < n; ++k)
+  {
+    repeated |= polygon[k] == polygon[k - 2];
+  }
   return repeated;
 }
 
-/// Drops consecutive repeats of a vertex, cyclically (the last vertex equal to the first too):
-/// the coinciding rounded ends of a clipped or assembled polygon.
+namespace polygon_detail
+{
+/// Tags that go nowhere: DropRepeatedVertices without tags.
+struct NoTags
+{
+  struct Tag
+  {
+    bool operator!=(const Tag&) const { return false; }
+  };
+  Tag operator[](std::size_t) const { return {}; }
+  Tag& operator[](std::size_t) { return this->Dummy; }
+  void resize(std::size_t) {}
+  Tag Dummy;
+};
+} // namespace polygon_detail
+
+/// Drops repeats of a vertex in a closed polygon, with each removed vertex's tag (tags[k] goes
+/// with polygon[k]): consecutive repeats, cyclically (the coinciding rounded ends of a clipped or
+/// assembled polygon), and spikes X, Y, X, which keep one X only (rounding can give two
+/// distinct faces around a tile one rounded centre, with a third an ulp away between them: the
+/// tile would go out to it and back, a polygon that is not simple, its edge X - Y used by four
+/// tile sides where the neighbours meet). With merged, also lists (kept tag, dropped tag) of two
+/// vertices at one point wherever the tags differ (a spike's Y is at a point of its own).
+///
+///   ... W  X  Y  X  Z ...   ->   ... W  X  Z ...        (Y an ulp from X; W, Z far)
+template<class Polygon, class Tags, class Merged>
+void DropRepeatedVerticesAndSpikes(Polygon& polygon, Tags& tags, Merged* merged)
+{
+  const auto drop = [&](std::size_t kept, std::size_t dropped)
+  {
+    if (merged && tags[kept] != tags[dropped])
+    {
+      merged->emplace_back(tags[kept], tags[dropped]);
+    }
+  };
+  std::size_t size = 0;
+  for (std::size_t k = 0; k < polygon.size(); ++k)
+  {
+    polygon[size] = polygon[k];
+    tags[size] = tags[k];
+    ++size;
+    for (;;)
+    {
+      if (size >= 2 && polygon[size - 1] == polygon[size - 2])
+      {
+        drop(size - 2, size - 1);
+        size -= 1;
+      }
+      else if (size >= 3 && polygon[size - 1] == polygon[size - 3])
+      {
+        drop(size - 3, size - 1);
+        size -= 2;
+      }
+      else
+      {
+        break;
+      }
+    }
+  }
+  // Across the end: the last vertices before the first ones.
+  std::size_t front = 0;
+  for (;;)
+  {
+    const std::size_t n = size - front;
+    if (n >= 2 && polygon[front] == polygon[size - 1])
+    {
+      drop(front, size - 1);
+      size -= 1;
+    }
+    else if (n >= 3 && polygon[size - 2] == polygon[front])
+    {
+      drop(front, size - 2); // X (size - 2), Y (size - 1), X (front): keep X (front)
+      size -= 2;
+    }
+    else if (n >= 3 && polygon[size - 1] == polygon[front + 1])
+    {
+      drop(front + 1, size - 1); // X (size - 1), Y (front), X (front + 1): keep X (front + 1)
+      front += 1;
+      size -= 1;
+    }
+    else
+    {
+      break;
+    }
+  }
+  if (front > 0)
+  {
+    for (std::size_t k = front; k < size; ++k)
+    {
+      polygon[k - front] = polygon[k];
+      tags[k - front] = tags[k];
+    }
+    size -= front;
+  }
+  polygon.resize(size);
+  tags.resize(size);
+}
+
+/// Drops repeated vertices and spikes (DropRepeatedVerticesAndSpikes), without tags.
 inline void DropRepeatedVertices(std::vector<Point2>& polygon)
 {
   if (!HasRepeatedVertex(polygon))
   {
     return;
   }
-  polygon.erase(std::unique(polygon.begin(), polygon.end()), polygon.end());
-  while (polygon.size() > 1 && polygon.front() == polygon.back())
-  {
-    polygon.pop_back();
-  }
+  polygon_detail::NoTags none;
+  using NoPairs = std::vector<std::pair<polygon_detail::NoTags::Tag, polygon_detail::NoTags::Tag>>;
+  DropRepeatedVerticesAndSpikes(polygon, none, static_cast<NoPairs*>(nullptr));
 }
 
 /// The same, dropping each removed vertex's tag too (tags[k] goes with polygon[k]). With merged,
@@ -128,30 +236,7 @@ void DropRepeatedVertices(std::vector<Point2>& polygon,
   {
     return;
   }
-  std::size_t kept = 0;
-  for (std::size_t k = 0; k < polygon.size(); ++k)
-  {
-    if (kept == 0 || !(polygon[k] == polygon[kept - 1]))
-    {
-      polygon[kept] = polygon[k];
-      tags[kept] = tags[k];
-      ++kept;
-    }
-    else if (merged && tags[k] != tags[kept - 1])
-    {
-      merged->emplace_back(tags[kept - 1], tags[k]);
-    }
-  }
-  while (kept > 1 && polygon[0] == polygon[kept - 1])
-  {
-    if (merged && tags[0] != tags[kept - 1])
-    {
-      merged->emplace_back(tags[0], tags[kept - 1]);
-    }
-    --kept;
-  }
-  polygon.resize(kept);
-  tags.resize(kept);
+  DropRepeatedVerticesAndSpikes(polygon, tags, merged);
 }
 
 } // namespace tessera

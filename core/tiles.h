@@ -80,7 +80,11 @@ struct TilesAndGraph
 /// Where tiles meet at a face centre inside the window they use one vertex, and likewise at a
 /// window corner and where a tile edge crosses the window boundary (both tiles compute that point
 /// alike). Distinct faces whose rounded centres coincide, which a tile lists once, are one vertex
-/// too. So tiles that share a side name it by the same two vertex ids: a conforming mesh. The
+/// too, and a tile whose rounded corners go X, Y, X (three faces an ulp apart, the outer two
+/// rounding to one point) keeps one X: it would go out to Y and back. So tiles that share a side
+/// name it by the same two vertex ids: a conforming mesh. (Limit: where four or more face centres
+/// lie within rounding of each other, as when some 20 points lie within 1e-16 of one circle, a
+/// tile can still touch itself at a rounded corner, X, Y, Z, X; its area and sides stay exact.) The
 /// per-tile and per-id arrays are UninitializedVectors, as in ContiguityGraph.
 struct TileMesh
 {

@@ -35,7 +35,8 @@
  * - `Area` (double): the tile's area, by compensated summation;
  * - `NeighborCount` (int): contiguities of the tile, window edges included (its polygon sides,
  *   decided exactly: where distinct corners round to one point, the polygon lists it once, never
- *   twice in a row, and has fewer points than NeighborCount);
+ *   twice in a row, and has fewer points than NeighborCount; a corner an ulp off between two that
+ *   round to one point is left out, so that the polygon does not go out to it and back);
  * - every input point-data array, copied to the tile of its point (a gauge's values follow it),
  *   attributes included: global ids become the tiles' global ids (one tile per point keeps them
  *   unique), pedigree ids their pedigree ids, active scalars etc. stay active.

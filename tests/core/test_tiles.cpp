@@ -882,6 +882,71 @@ TEST(Tiles, TilesAndContiguitiesEqualTheSeparatePasses)
     });
 }
 
+TEST(Tiles, DroppingRepeatedVerticesAlsoDropsSpikes)
+{
+  // Vertices by letter; tags are the positions in the given ring. A spike X, Y, X keeps one X
+  // (the tags of the two X merged) and drops Y; anywhere in the ring, also across its end.
+  const std::map<char, Point2> at = { { 'A', { 0, 0 } },
+    { 'B', { 1e-16, 0 } },
+    { 'C', { 1, 0 } },
+    { 'D', { 1, 1 } },
+    { 'E', { 0, 1 } } };
+  struct Case
+  {
+    const char* Given;
+    const char* Kept;
+    std::vector<std::pair<int, int>> Merged;
+  };
+  for (const Case& c : { Case{ "ABACDE", "ACDE", { { 0, 2 } } },
+         Case{ "CDEABA", "CDEA", { { 3, 5 } } },
+         Case{ "BACDEA", "ACDE", { { 1, 5 } } }, // A (5), B (0), A (1): across the end
+         Case{ "ACDEAB", "ACDE", { { 0, 4 } } }, // A (4), B (5), A (0): across the end
+         Case{ "AABAACD", "ACD", { { 0, 1 }, { 0, 3 }, { 0, 4 } } },
+         Case{ "ACDE", "ACDE", {} } })
+  {
+    std::vector<Point2> polygon;
+    std::vector<int> tags;
+    for (const char* v = c.Given; *v; ++v)
+    {
+      polygon.push_back(at.at(*v));
+      tags.push_back(int(v - c.Given));
+    }
+    std::vector<std::pair<int, int>> merged;
+    DropRepeatedVertices(polygon, tags, &merged);
+    std::string kept;
+    for (std::size_t k = 0; k < polygon.size(); ++k)
+    {
+      for (const auto& [letter, p] : at)
+      {
+        kept += p == polygon[k] ? std::string(1, letter) : std::string();
+      }
+      EXPECT_TRUE(polygon[k] == at.at(c.Given[tags[k]])) << c.Given << ": tag " << tags[k];
+    }
+    EXPECT_EQ(kept, c.Kept) << c.Given;
+    EXPECT_EQ(merged, c.Merged) << c.Given;
+    std::vector<Point2> untagged;
+    for (const char* v = c.Given; *v; ++v)
+    {
+      untagged.push_back(at.at(*v));
+    }
+    DropRepeatedVertices(untagged);
+    EXPECT_EQ(untagged.size(), polygon.size()) << c.Given;
+  }
+}
+
+// Five points near the circle of radius 0.3 about (0.5, 0.5), not on it: three Voronoi vertices
+// some 1e-17 apart near the centre, two of which round to one point, the third an ulp away. The
+// tile around them went out to the third and back (a spike: vertex ids 1 0 8 5 9 0, the side 0-1
+// used by four tiles' sides).
+std::vector<Point2> NearlyCocircularFive()
+{
+  return { { 0x1.99991bc569925p-1, 0x1.00c49b7033733p-1 },
+    { 0x1.2ebbe7fde48bep-1, 0x1.925159f5ef30bp-1 },
+    { 0x1.0691fc019d6d4p-2, 0x1.59a94f2263138p-1 },
+    { 0x1.08603c509e002p-2, 0x1.4a3125c6915e6p-2 },
+    { 0x1.3031e013942b2p-1, 0x1.b8a0a250c6664p-3 } };
+}
+
 // The mesh form of the tiles (what vtkDirichletTessellation writes): tile for tile the same
 // polygons, bit for bit, areas and side counts as Tiles(), the same contiguities, and a
 // conforming mesh: every vertex is used, no two vertices coincide (tiles that meet share the
@@ -894,7 +959,8 @@ TEST(Tiles, TileMeshExpandsToTheTilesAndIsConforming)
   ForEachDerivationInput({ { "uniform, two chunks", UniformPoints(12000, 7) },
                            { "checkerboard patch", tessera_test::SquareLattice(31, 29.0), 299, 2 },
                            { "one point", { { 0.4, 0.6 } } },
-                           { "no point", {} } },
+                           { "no point", {} },
+                           { "five points nearly on a circle", NearlyCocircularFive() } },
     [](const DirichletTessellation& t, const std::string& set)
     {
       TessellationDual dual(t);
@@ -925,15 +991,22 @@ TEST(Tiles, TileMeshExpandsToTheTilesAndIsConforming)
         distinct.emplace(p.x, p.y);
       }
       EXPECT_EQ(distinct.size(), vertices.size()) << "set " << set;
-      // Sides by vertex ids; an unmatched side must lie on a window line.
+      // Sides by vertex ids; an unmatched side must lie on a window line. Each tile is a simple
+      // polygon: no vertex twice, and no side used twice in one direction over all tiles.
       std::set<std::pair<std::int32_t, std::int32_t>> sides;
       const auto& offsets = mesh.Tiles.Offsets;
       for (std::size_t k = 0; k + 1 < offsets.size(); ++k)
       {
+        std::set<std::int32_t> own;
         for (std::int64_t v = offsets[k]; v < offsets[k + 1]; ++v)
         {
           const std::int64_t w = v + 1 < offsets[k + 1] ? v + 1 : offsets[k];
-          sides.emplace(mesh.Tiles.VertexIds[v], mesh.Tiles.VertexIds[w]);
+          EXPECT_TRUE(own.insert(mesh.Tiles.VertexIds[v]).second)
+            << "set " << set << ": tile " << k << " has vertex " << mesh.Tiles.VertexIds[v]
+            << " twice";
+          EXPECT_TRUE(sides.emplace(mesh.Tiles.VertexIds[v], mesh.Tiles.VertexIds[w]).second)
+            << "set " << set << ": side " << mesh.Tiles.VertexIds[v] << "-"
+            << mesh.Tiles.VertexIds[w] << " used twice";
         }
       }
       const auto onOneLine = [&](const Point2& a, const Point2& b)
