@@ -418,6 +418,10 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     // power of two (exactly) into the range where the tiles' window decisions are exact
     // (window_predicates.h), and the tiles are scaled back.
     const int exponent = tessera::ScaleIntoExactRange(window, points);
+    if (this->Algorithm != BRASSEL_REIF) // (its sweep's tests keep their range)
+    {
+      tessera::CheckPointsInExactRange(window, points, exponent);
+    }
     const double windowArea = window.Area();
     this->UpdateProgress(0.1);
     TessellationResult result = this->Algorithm == BRASSEL_REIF

@@ -70,10 +70,12 @@
  * within about 1e-60 .. 1e60 in magnitude: coordinates of some 1e100 or 1e-100 are therefore
  * scaled by a power of two (exactly) into that range and the tiles scaled back, so the tiles of
  * points scaled by s are those of the points, scaled (areas by s^2, which overflow beyond about
- * 1e154 and underflow to 0 below about 1e-154). Points closer together than some 1e-60 of the
- * window's size, where those products underflow whatever the scale, are an error when the tiles'
- * areas do not fill the window (a check that catches overlaps and gaps, not every wrong tile); so
- * is a point that cannot be scaled exactly beside the window (its coordinate would lose bits).
+ * 1e154 and underflow to 0 below about 1e-154). A point inside the window with a coordinate
+ * nonzero but below some 1e-60 of the window's size, where those products underflow whatever the
+ * scale, is an error naming it (GreenSibson; the BrasselReif sweep's tests keep their range), and
+ * so is one that cannot be scaled exactly beside the window (its coordinate would lose bits).
+ * Tiles whose areas do not fill the window (points closer together than some 1e-60 of its size)
+ * are an error too, a last check that catches overlaps and gaps, not every wrong tile.
  *
  * @sa vtkDelaunayTriangulation vtkVoronoi2D
  */

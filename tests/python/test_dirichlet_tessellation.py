@@ -712,7 +712,7 @@ def test_tiles_at_any_scale_and_points_too_close_for_exact_tiles():
     """Coordinates of some 1e-270 to 1e150: the tiles equal those of the same points at scale 1,
     scaled, exactly (the filter works on points and window scaled by a power of two into the range
     where the tiles' window decisions are exact). Points some 1e-200 apart in a unit window are
-    beyond that range: an error saying so instead of wrong tiles."""
+    beyond that range: an error naming one instead of wrong tiles."""
     import random
 
     rng = random.Random(11)
@@ -762,7 +762,8 @@ def test_tiles_at_any_scale_and_points_too_close_for_exact_tiles():
     f.SetInputData(make_points(close))
     f.SetWindowBounds(0, 1, 0, 1)
     f.Update()
-    assert_that(len(messages) == 1 and "areas add up to" in messages[0] and "too close together" in messages[0]
+    # (they lie within 1e-200 of the corner: the first with a coordinate that small is named)
+    assert_that(len(messages) == 1 and "has a coordinate below some 1e-60 of the window's size" in messages[0]
                 and f.GetOutput(0).GetNumberOfCells() == 0, f"points 1e-200 apart: {messages}")
 
 
@@ -818,6 +819,35 @@ def test_delaunay_at_any_scale():
         assert_that(not messages and got == reference, f"2^{exponent}: {len(got)} faces, {messages}")
 
 
+def test_a_coordinate_too_small_for_exact_window_decisions_is_named():
+    # Points 0.053 apart in the window (0, 0.1)^2, one at x = 1e-200: exactly, tile 1's bisector
+    # meets the left side just above the corner, so both tiles have 4 sides (BrasselReif: 4). The
+    # GreenSibson tiles' window decisions underflow there: tile 1 had 3 sides, with no message.
+    # Now an error names the point; the same point at x = 0 is fine.
+    tiny = [(1e-200, 0.037500000000000006), (0.037500000000000006, 5e-201)]
+    f = vtkDirichletTessellation()
+    messages = messages_of(f)
+    f.SetInputData(make_points(tiny))
+    f.SetWindowBounds(0, 0.1, 0, 0.1)
+    f.Update()
+    assert_that(len(messages) == 1 and "point 0 (1e-200, 0.037500000000000006) has a coordinate below some 1e-60"
+                in messages[0] and f.GetOutput(0).GetNumberOfCells() == 0, f"{messages}")
+    sweep = tessellate(make_points(tiny), (0, 0.1, 0, 0.1), "BrasselReif").GetOutput(0)
+    counts = sweep.GetCellData().GetArray("NeighborCount")
+    assert_that([counts.GetValue(c) for c in range(sweep.GetNumberOfCells())] == [4, 4], "the sweep's tiles")
+    # At 1e-50 (within the exact range) both engines give the exact 4 sides each, no message.
+    for algorithm in ("GreenSibson", "BrasselReif"):
+        f = vtkDirichletTessellation()
+        messages = messages_of(f)
+        f.SetInputData(make_points([(1e-50, 0.037500000000000006), (0.037500000000000006, 5e-51)]))
+        f.SetWindowBounds(0, 0.1, 0, 0.1)
+        getattr(f, f"SetAlgorithmTo{algorithm}")()
+        f.Update()
+        counts = f.GetOutput(0).GetCellData().GetArray("NeighborCount")
+        assert_that(not messages and [counts.GetValue(c) for c in range(f.GetOutput(0).GetNumberOfCells())] == [4, 4],
+                    f"{algorithm} at 1e-50: {messages}")
+
+
 if __name__ == "__main__":
     run([test_tiles_are_nearest_point_regions,
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
@@ -840,4 +870,5 @@ if __name__ == "__main__":
          test_tiles_at_any_scale_and_points_too_close_for_exact_tiles,
          test_a_negative_padding_is_an_error,
          test_half_neighbours_need_their_vertex_strictly_inside_the_window,
-         test_delaunay_at_any_scale])
+         test_delaunay_at_any_scale,
+         test_a_coordinate_too_small_for_exact_window_decisions_is_named])
