@@ -9,7 +9,8 @@ from vtkmodules.vtkCommonCore import vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkMultiBlockDataSet, vtkPolyData
 
 from tessera import vtkGeographicProjection
-from tessera_testing import EXAMPLE_DATA, assert_close, assert_that, make_points, messages_of, projection_record, run
+from tessera_testing import (EXAMPLE_DATA, assert_close, assert_that, make_points, messages_of, polygon,
+                             projection_record, run)
 
 
 def colorado_gauges():
@@ -191,21 +192,11 @@ def test_an_edge_that_reads_both_ways_round_the_globe_is_reported():
     came out as one from 100 to 260). An antimeridian edge written 179 to -179 (358 degrees) is
     read as meant, without a warning."""
     from vtkmodules.vtkCommonCore import vtkCommand
-    from vtkmodules.vtkCommonDataModel import vtkCellArray
-
-    def box(west, east):
-        data = make_points([(west, 10.0), (east, 10.0), (east, 30.0), (west, 30.0)])
-        cells = vtkCellArray()
-        cells.InsertNextCell(4)
-        for i in range(4):
-            cells.InsertCellPoint(i)
-        data.SetPolys(cells)
-        return data
 
     for west, east, warned in ((-100.0, 100.0, True), (179.0, -179.0, False), (-80.0, 80.0, False)):
         f = vtkGeographicProjection()
         warnings = messages_of(f, vtkCommand.WarningEvent)
-        f.SetInputData(box(west, east))
+        f.SetInputData(polygon([[(west, 10.0), (east, 10.0), (east, 30.0), (west, 30.0)]]))
         f.Update()
         if warned:
             assert_that(len(warnings) == 1 and "2 edge(s) span 180 to 270 degrees" in warnings[0]
