@@ -835,14 +835,21 @@ void CheckEdgeReading(const Point2& a, const Point2& b, std::size_t ring, std::s
 {
   if (EdgeReadsBothWays(a, b))
   {
+    // The middle longitude of each reading, and the end written for the other: b moved by 360
+    // towards a (-100 to 100 becomes -100 to -260, 10 to 200 becomes 10 to -160).
     const double written = std::abs(b.x - a.x);
+    const double straightMiddle = 0.5 * (a.x + b.x);
+    const double otherMiddle = std::remainder(straightMiddle + 180.0, 360.0);
+    const double otherEnd = b.x - std::copysign(360.0, b.x - a.x);
     throw InputError("catchment ring " + std::to_string(ring) + " segment " +
       std::to_string(segment) + " runs from longitude " + NumberText(a.x) + " to " +
       NumberText(b.x) + ", " + NumberText(written) +
-      " degrees as written: it can be read either way round the globe (straight in lon/lat, or " +
-      NumberText(360.0 - written) +
-      " degrees the other way, across the 180th meridian). Add a vertex in between for the "
-      "first; for the second, write the longitudes continuing past 180 (e.g. 170 to 190)");
+      " degrees as written: it can be read either way round the globe (straight in lon/lat, "
+      "through longitude " +
+      NumberText(straightMiddle) + ", or " + NumberText(360.0 - written) +
+      " degrees the other way, through longitude " + NumberText(otherMiddle) +
+      "). Add a vertex in between for the first; for the second, write its end as " +
+      NumberText(otherEnd));
   }
 }
 

@@ -1,24 +1,41 @@
 #include "errors.h"
 
-#include <cstdio>
-#include <cstdlib>
+#include <algorithm>
+#include <charconv>
 
 namespace tessera
 {
 
-// 15 significant digits read back exactly for most values a person types; 17 always do.
+// Locale-free (snprintf would follow LC_NUMERIC, which a GUI may set to ","). The shortest
+// scientific text that reads back (std::to_chars) gives the digits needed; printed %g-style with
+// at least 15 of them, so that 500000 stays "500000" (the shortest text would be "5e+05") while
+// trailing zeros still go. Correct rounding to that many digits does not always read back where
+// the shortest text did (2^-509: the gap below a power of two is half the gap above): one more
+// digit then, up to 17, which always do.
 std::string NumberText(double value)
 {
   char buffer[40];
-  for (int digits = 15; digits <= 17; ++digits)
+  const char* const begin = buffer;
+  const std::to_chars_result shortest =
+    std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::scientific);
+  const char* const exponent = std::find(begin, static_cast<const char*>(shortest.ptr), 'e');
+  if (exponent == shortest.ptr)
   {
-    std::snprintf(buffer, sizeof buffer, "%.*g", digits, value);
-    if (digits == 17 || std::strtod(buffer, nullptr) == value)
+    return std::string(buffer, shortest.ptr); // nan, inf
+  }
+  const int digits =
+    int(std::count_if(begin, exponent, [](char c) { return c >= '0' && c <= '9'; }));
+  for (int precision = std::max(digits, 15);; ++precision)
+  {
+    const std::to_chars_result end =
+      std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, precision);
+    double back = 0.0;
+    std::from_chars(buffer, end.ptr, back);
+    if (back == value || precision >= 17)
     {
-      break;
+      return std::string(buffer, end.ptr);
     }
   }
-  return buffer;
 }
 
 } // namespace tessera

@@ -17,8 +17,9 @@ public:
   }
 };
 
-/// value as the shortest decimal text that reads back as the same double, for messages and
-/// records: "39.2", not "39.200000000000003"; "1020.0000001", not "1020.000000"; "nan", "inf".
+/// value as the shortest decimal text that reads back as the same double, with "." whatever the
+/// locale, for messages and records: "39.2", not "39.200000000000003"; "1020.0000001", not
+/// "1020.000000"; "nan", "inf".
 std::string NumberText(double value);
 
 } // namespace tessera

@@ -133,13 +133,14 @@ struct NoTags
 
 /// Drops repeats of a vertex in a closed polygon, with each removed vertex's tag (tags[k] goes
 /// with polygon[k]): consecutive repeats, cyclically (the coinciding rounded ends of a clipped or
-/// assembled polygon), and spikes X, Y, X, which keep one X only (rounding can give two
-/// distinct faces around a tile one rounded centre, with a third an ulp away between them: the
-/// tile would go out to it and back, a polygon that is not simple, its edge X - Y used by four
-/// tile sides where the neighbours meet). With merged, also lists (kept tag, dropped tag) of two
+/// assembled polygon), and spikes X, Y, X, which keep one X only, wherever Y is: out to Y and
+/// back encloses no area, and the polygon would not be simple. (Where it arises: rounding can
+/// give two distinct faces around a tile one rounded centre, with a third an ulp away between
+/// them, and the tile's side X - Y would be used by four tile sides where the neighbours meet.)
+/// A triangle X, Y, X becomes X alone. With merged, also lists (kept tag, dropped tag) of two
 /// vertices at one point wherever the tags differ (a spike's Y is at a point of its own).
 ///
-///   ... W  X  Y  X  Z ...   ->   ... W  X  Z ...        (Y an ulp from X; W, Z far)
+///   ... W  X  Y  X  Z ...   ->   ... W  X  Z ...        (in tiles: Y an ulp from X; W, Z far)
 template<class Polygon, class Tags, class Merged>
 void DropRepeatedVerticesAndSpikes(Polygon& polygon, Tags& tags, Merged* merged)
 {

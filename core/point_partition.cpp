@@ -87,11 +87,11 @@ double DistanceBeyondEnd(const Point2& p,
   return std::max(0.0, along);
 }
 
-// The points past one contour end, in order of their distance beyond it, continue the curve
-// while each lies within maximumGap of the one before (the first: of the end pixel). From the
-// first gap on they are taken as outliers: each gets the distance of the last continuation (0:
-// the end pixel's node, the paper's), so that one far point cannot stretch the node range and
-// squeeze the nodes of every other point of the contour.
+// The points past one contour end, in order of their distance beyond it (along the end tangent),
+// continue the curve while each lies at most maximumGap further than the one before (the first:
+// than the end pixel). From the first gap on they are taken as outliers: each gets the distance of
+// the last continuation (0: the end pixel's node, the paper's), so that one far point cannot
+// stretch the node range and squeeze the nodes of every other point of the contour.
 //
 //   contour   continuations    gap > maximumGap     outlier
 //   ======E   . . .. . .  ----------------------->    x      (x gets the node of the last dot)

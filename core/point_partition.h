@@ -17,8 +17,9 @@
 // it along the end tangent (measured over the last few pixels) gets the arc length extended by
 // that tangent distance; the nodes of the contour's points are then the extended arc lengths
 // rescaled to [0, 1]. For contours whose ends are not passed the nodes are the paper's. Only
-// points that continue the curve are extended: taken by distance beyond the end, each within
-// maximumGap (pixels) of the one before, the first of the end pixel. A point after a larger gap
+// points that continue the curve are extended: taken by distance beyond the end (along the end
+// tangent), each at most maximumGap (pixels) further than the one before, the first than the end
+// pixel. A point after a larger gap
 // is an outlier and gets the node of the last continuation (the end pixel's if there is none);
 // otherwise one far point would stretch the node range and squeeze every other node.
 

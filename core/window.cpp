@@ -435,24 +435,26 @@ int ScaleIntoExactRange(Window& window, std::vector<Point2>& points)
 
 void CheckPointsInExactRange(const Window& window, const std::vector<Point2>& points, int exponent)
 {
-  const double smallest = std::ldexp(1.0, -200);
+  double reach = 0.0; // the window's largest corner coordinate
+  for (const Point2& corner : window.Vertices())
+  {
+    reach = std::max({ reach, std::fabs(corner.x), std::fabs(corner.y) });
+  }
+  const double smallest = std::ldexp(reach, -200);
   const auto tiny = [smallest](double v) { return v != 0.0 && std::fabs(v) < smallest; };
   for (std::size_t k = 0; k < points.size(); ++k)
   {
     const Point2& p = points[k];
     if ((tiny(p.x) || tiny(p.y)) && window.Contains(p))
     {
-      double reach = 0.0; // the window's largest corner coordinate, as the caller gave it
-      for (const Point2& corner : window.Vertices())
-      {
-        reach = std::max({ reach, std::fabs(corner.x), std::fabs(corner.y) });
-      }
       throw InputError("point " + std::to_string(k) + " (" +
         NumberText(std::ldexp(p.x, -exponent)) + ", " + NumberText(std::ldexp(p.y, -exponent)) +
-        ") has a coordinate below some 1e-60 of the window's size (its corners reach " +
+        ") has a coordinate below 2^-200 (some 6e-61) of the window's reach (its largest corner "
+        "coordinate, " +
         NumberText(std::ldexp(reach, -exponent)) +
-        "), though not 0: the tiles' window decisions are exact only from there up; set that "
-        "coordinate to 0, or move the origin (the BrasselReif algorithm takes such points)");
+        "), though not 0: the tiles' window decisions are exact only from there up, whatever the "
+        "scale; set that coordinate to 0, or move the origin (the BrasselReif algorithm takes "
+        "such points)");
     }
   }
 }

@@ -106,12 +106,12 @@ void ScalePointsByPowerOfTwo(std::vector<Point2>& points, int exponent);
 int ScaleIntoExactRange(Window& window, std::vector<Point2>& points);
 
 /// After ScaleIntoExactRange (its exponent given, for the message): throws InputError naming the
-/// first point inside the window with a nonzero coordinate below 2^-200 (some 6e-61) in
-/// magnitude. Its bisectors meet the window lines in products that fall below the doubles, and
-/// the tiles' window decisions (window_predicates.h) are then not exact: points at 1e-200 and
-/// 0.0375 in a window of 0.1 got a tile of 3 sides instead of 4, with no message. No scaling
-/// helps (the point spans too many orders of magnitude beside the window). Points outside the
-/// window are rejected anyway and not checked.
+/// first point inside the window with a nonzero coordinate below 2^-200 (some 6e-61) of the
+/// window's reach (its largest corner coordinate). Its bisectors meet the window lines in
+/// products that fall below the doubles, and the tiles' window decisions (window_predicates.h)
+/// are then not exact: points at 1e-200 and 0.0375 in a window of 0.1 got a tile of 3 sides
+/// instead of 4, with no message. No scaling helps (the point spans too many orders of
+/// magnitude beside the window). Points outside the window are rejected anyway and not checked.
 void CheckPointsInExactRange(const Window& window, const std::vector<Point2>& points, int exponent);
 
 } // namespace tessera

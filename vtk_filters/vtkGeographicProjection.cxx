@@ -489,9 +489,8 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
       vtkWarningMacro(<< report.Wrapped
                       << " edge(s) span 180 to 270 degrees of longitude as written (the first: "
                       << report.FirstWrapped
-                      << "): they were densified the shorter way round, across the 180th "
-                         "meridian, not straight in lon/lat; add a vertex in between where an "
-                         "edge should run straight");
+                      << "): each was taken the shorter way round the globe, not straight in "
+                         "lon/lat; add a vertex in between where an edge should run straight");
     }
     if (vtkCompositeDataSet::SafeDownCast(output))
     {

@@ -387,7 +387,22 @@ TEST(ArealAverage, AnEdgeThatReadsBothWaysRoundTheGlobeIsRefused)
   EXPECT_NE(error.find("catchment ring 0 segment 0 runs from longitude -100 to 100, 200 degrees"),
     std::string::npos)
     << error;
-  EXPECT_NE(error.find("160 degrees the other way"), std::string::npos) << error;
+  EXPECT_NE(error.find("through longitude 0, or 160 degrees the other way, through longitude 180). "
+                       "Add a vertex in between for the first; for the second, write its end as "
+                       "-260"),
+    std::string::npos)
+    << error;
+  // In 0 .. 360 data, 10 to 200: the other reading passes 285 (-75), its end written -160.
+  const Square east(10.0, 10.0, 200.0, 30.0);
+  const std::string other = ErrorOf(
+    [&] {
+      ThiessenArealAverage average({ { 50.0, 20.0 } }, east.Offsets, east.Ring);
+    });
+  EXPECT_NE(other.find("through longitude 105, or 170 degrees the other way, through longitude "
+                       "-75). Add a vertex in between for the first; for the second, write its "
+                       "end as -160"),
+    std::string::npos)
+    << other;
   // With a vertex at 0 on both long edges it is the box through 0, measured as such: the two
   // gauges split it in equal halves.
   const std::vector<std::size_t> six{ 0, 6 };

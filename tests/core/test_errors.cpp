@@ -39,6 +39,18 @@ TEST(NumberText, ReadsBackAsTheSameDouble)
   }
   EXPECT_GT(checked, 190000);
   EXPECT_EQ(tessera::NumberText(std::nextafter(0.1, 1.0)), "0.10000000000000002");
+  // Powers of two (the gap below is half the gap above: correct rounding to the shortest
+  // text's digit count may not read back) and their neighbours, at every exponent.
+  for (int e = -1074; e <= 1023; ++e)
+  {
+    for (const double value : { std::ldexp(1.0, e),
+           std::nextafter(std::ldexp(1.0, e), 0.0),
+           std::nextafter(std::ldexp(1.0, e), HUGE_VAL) })
+    {
+      const std::string text = tessera::NumberText(value);
+      ASSERT_EQ(std::strtod(text.c_str(), nullptr), value) << text;
+    }
+  }
 }
 
 TEST(NumberText, GivesBackWhatWasTyped)

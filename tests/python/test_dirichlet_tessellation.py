@@ -763,7 +763,7 @@ def test_tiles_at_any_scale_and_points_too_close_for_exact_tiles():
     f.SetWindowBounds(0, 1, 0, 1)
     f.Update()
     # (they lie within 1e-200 of the corner: the first with a coordinate that small is named)
-    assert_that(len(messages) == 1 and "has a coordinate below some 1e-60 of the window's size" in messages[0]
+    assert_that(len(messages) == 1 and "has a coordinate below 2^-200 (some 6e-61) of the window's reach" in messages[0]
                 and f.GetOutput(0).GetNumberOfCells() == 0, f"points 1e-200 apart: {messages}")
 
 
@@ -830,22 +830,25 @@ def test_a_coordinate_too_small_for_exact_window_decisions_is_named():
     f.SetInputData(make_points(tiny))
     f.SetWindowBounds(0, 0.1, 0, 0.1)
     f.Update()
-    assert_that(len(messages) == 1 and "point 0 (1e-200, 0.037500000000000006) has a coordinate below some 1e-60"
+    assert_that(len(messages) == 1 and "point 0 (1e-200, 0.037500000000000006) has a coordinate below 2^-200 (some 6e-61) of the window's reach"
                 in messages[0] and f.GetOutput(0).GetNumberOfCells() == 0, f"{messages}")
     sweep = tessellate(make_points(tiny), (0, 0.1, 0, 0.1), "BrasselReif").GetOutput(0)
     counts = sweep.GetCellData().GetArray("NeighborCount")
     assert_that([counts.GetValue(c) for c in range(sweep.GetNumberOfCells())] == [4, 4], "the sweep's tiles")
-    # At 1e-50 (within the exact range) both engines give the exact 4 sides each, no message.
-    for algorithm in ("GreenSibson", "BrasselReif"):
+    # At 1e-50 (within the exact range) both engines give the exact 4 sides each, no message; so
+    # at 1e-74 in a window of 1e-35 (the limit is relative to the window's reach).
+    for algorithm, coordinate, size in (("GreenSibson", 1e-50, 0.1), ("BrasselReif", 1e-50, 0.1),
+                                        ("GreenSibson", 1e-74, 1e-35), ("BrasselReif", 1e-74, 1e-35)):
         f = vtkDirichletTessellation()
         messages = messages_of(f)
-        f.SetInputData(make_points([(1e-50, 0.037500000000000006), (0.037500000000000006, 5e-51)]))
-        f.SetWindowBounds(0, 0.1, 0, 0.1)
+        inner = 0.375 * size
+        f.SetInputData(make_points([(coordinate, inner), (inner, coordinate / 2)]))
+        f.SetWindowBounds(0, size, 0, size)
         getattr(f, f"SetAlgorithmTo{algorithm}")()
         f.Update()
         counts = f.GetOutput(0).GetCellData().GetArray("NeighborCount")
         assert_that(not messages and [counts.GetValue(c) for c in range(f.GetOutput(0).GetNumberOfCells())] == [4, 4],
-                    f"{algorithm} at 1e-50: {messages}")
+                    f"{algorithm} at {coordinate} in {size}: {messages}")
 
 
 if __name__ == "__main__":
