@@ -72,8 +72,9 @@
  * points scaled by s are those of the points, scaled (areas by s^2, which overflow beyond about
  * 1e154 and underflow to 0 below about 1e-154). A point inside the window with a coordinate
  * nonzero but below 2^-200 (some 6e-61) of the window's reach (its largest corner coordinate),
- * where those products underflow whatever the scale, is an error naming it (GreenSibson; the BrasselReif sweep's tests keep their range), and
- * so is one that cannot be scaled exactly beside the window (its coordinate would lose bits).
+ * where those products underflow whatever the scale, is an error naming it (GreenSibson; the
+ * BrasselReif sweep's tests keep their range), and so is one that cannot be scaled exactly
+ * beside the window (its coordinate would lose bits).
  * Tiles whose areas do not fill the window (points closer together than some 1e-60 of its size)
  * are an error too, a last check that catches overlaps and gaps, not every wrong tile.
  *
