@@ -315,13 +315,13 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
   this->CheckImageSize(result.ImageSize);
   if (capped)
   {
-    result.Warnings.push_back("automatic image size capped at " + std::to_string(result.ImageSize) +
-      " pixels" +
-      (result.ImageSize > MaxAutomaticImageSize
-          ? " (the least that holds the margins of a basis width of " +
-            NumberText(this->Settings.Width) + " pixels)"
-          : std::string()) +
-      ": fewer than half of the distinct points have a pixel of their own");
+    // Above the largest automatic size no size was tried: the margins alone decided.
+    result.Warnings.push_back(result.ImageSize > MaxAutomaticImageSize
+        ? "automatic image size " + std::to_string(result.ImageSize) +
+          " pixels, the least that holds the margins of a basis width of " +
+          NumberText(this->Settings.Width) + " pixels (more than any automatic size)"
+        : "automatic image size capped at " + std::to_string(result.ImageSize) +
+          " pixels: fewer than half of the distinct points have a pixel of their own");
   }
   const PixelGrid grid = this->MakeGrid(points, result.ImageSize);
   result.Grid = grid;

@@ -689,6 +689,22 @@ TEST(RidgeGrouping, RepeatedPointsDoNotChangeTheAutomaticImage)
   }
 }
 
+TEST(RidgeGrouping, AWidthBeyondEveryAutomaticSizeSaysSo)
+{
+  // A basis width of 600 pixels needs margins of 602 on each side: no automatic size (at most
+  // 1024) holds them, none is tried, and the warning says why the size is what it is (it spoke
+  // of points without pixels of their own, which nothing had counted).
+  const std::vector<Point2> points = { { 0, 0 }, { 1, 0 }, { 0, 1 }, { 1, 1 }, { 0.5, 0.5 } };
+  RidgeGroupingSettings settings;
+  settings.Width = 600;
+  const RidgeGroupingResult wide = RidgeGrouping(settings).Run(points);
+  EXPECT_EQ(wide.ImageSize, 2 * (600 + 2) + 3);
+  ASSERT_FALSE(wide.Warnings.empty());
+  EXPECT_EQ(wide.Warnings.front(),
+    "automatic image size 1207 pixels, the least that holds the margins of a basis width of 600 "
+    "pixels (more than any automatic size)");
+}
+
 TEST(RidgeGrouping, DistinctPointsDropOnlyExactCopies)
 {
   const std::vector<Point2> points = {
