@@ -922,8 +922,9 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   }
   s.Projector.reset(new GeographicProjection(s.Parameters));
   s.Method = settings.Areas;
-  if (s.Method == AreaMethod::EqualAreaPlane &&
-    s.Parameters.Kind != ProjectionKind::AlbersEqualArea)
+  // Of the projections offered, only Albers keeps areas.
+  const bool equalArea = s.Parameters.Kind == ProjectionKind::AlbersEqualArea;
+  if (s.Method == AreaMethod::EqualAreaPlane && !equalArea)
   {
     throw InputError(std::string("areas in the projected plane (EqualAreaPlane) are ellipsoidal "
                                  "areas only in an equal-area projection, and ") +
@@ -932,8 +933,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   }
   if (s.Method == AreaMethod::Automatic)
   {
-    s.Method = s.Parameters.Kind == ProjectionKind::AlbersEqualArea ? AreaMethod::EqualAreaPlane
-                                                                    : AreaMethod::GeodesicPolygon;
+    s.Method = equalArea ? AreaMethod::EqualAreaPlane : AreaMethod::GeodesicPolygon;
   }
 
   // Gauges: projected, and grouped by place (the first of a group is its name).

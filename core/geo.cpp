@@ -32,11 +32,6 @@ constexpr double UTMScale = 0.9996;
 // singularity of the projection, such as the far pole of a Lambert cone: refused, not returned.
 constexpr double MaxProjectedMagnitude = 1.0e8;
 
-std::string FormatNumber(double value)
-{
-  return NumberText(value);
-}
-
 std::string DescribePoint(const char* what, long long id, const Point2& p)
 {
   std::string text = what;
@@ -108,10 +103,9 @@ bool SameProjection(const ProjectionParameters& a, const ProjectionParameters& b
 std::string ProjectionParameters::ToString() const
 {
   return std::string("projection=") + ProjectionKindName(this->Kind) +
-    " lon0=" + FormatNumber(this->CentralLongitude) +
-    " lat0=" + FormatNumber(this->CentralLatitude) +
-    " lat1=" + FormatNumber(this->StandardParallel1) +
-    " lat2=" + FormatNumber(this->StandardParallel2) + " zone=" + std::to_string(this->UTMZone) +
+    " lon0=" + NumberText(this->CentralLongitude) + " lat0=" + NumberText(this->CentralLatitude) +
+    " lat1=" + NumberText(this->StandardParallel1) +
+    " lat2=" + NumberText(this->StandardParallel2) + " zone=" + std::to_string(this->UTMZone) +
     " north=" + (this->UTMNorth ? "1" : "0");
 }
 
@@ -297,13 +291,13 @@ GeographicProjection::GeographicProjection(const ProjectionParameters& parameter
   {
     if (!IsValidLatitude(lat))
     {
-      throw InputError(std::string("projection parameter ") + name + " = " + FormatNumber(lat) +
+      throw InputError(std::string("projection parameter ") + name + " = " + NumberText(lat) +
         " is not a latitude in [-90, 90]");
     }
   };
   if (!std::isfinite(p.CentralLongitude))
   {
-    throw InputError("projection parameter lon0 = " + FormatNumber(p.CentralLongitude) +
+    throw InputError("projection parameter lon0 = " + NumberText(p.CentralLongitude) +
       " is not a finite longitude");
   }
   Impl->CentralMeridian = p.CentralLongitude;
@@ -399,8 +393,8 @@ Point2 GeographicProjection::Forward(const Point2& lonlat, long long id) const
       if (std::abs(lon - lon0) > TransverseMercatorMaxLongitudeOffset)
       {
         throw InputError(DescribePoint("point", id, lonlat) + " is " +
-          FormatNumber(std::abs(lon - lon0)) + " degrees of longitude from the central meridian " +
-          FormatNumber(lon0) + "; " + ProjectionKindName(Params.Kind) +
+          NumberText(std::abs(lon - lon0)) + " degrees of longitude from the central meridian " +
+          NumberText(lon0) + "; " + ProjectionKindName(Params.Kind) +
           " represents at most 45 degrees");
       }
       Impl->Mercator->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
@@ -409,7 +403,7 @@ Point2 GeographicProjection::Forward(const Point2& lonlat, long long id) const
         if (std::abs(xy.x) > UTMMaxEastingOffset)
         {
           throw InputError(DescribePoint("point", id, lonlat) + " lies " +
-            FormatNumber(std::abs(xy.x) / 1000.0) + " km from the central meridian of UTM zone " +
+            NumberText(std::abs(xy.x) / 1000.0) + " km from the central meridian of UTM zone " +
             std::to_string(Params.UTMZone) + "; UTM eastings stop at 500 km");
         }
         xy.x += UTMFalseEasting;

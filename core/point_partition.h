@@ -19,9 +19,9 @@
 // rescaled to [0, 1]. For contours whose ends are not passed the nodes are the paper's. Only
 // points that continue the curve are extended: taken by distance beyond the end (along the end
 // tangent), each at most maximumGap (pixels) further than the one before, the first than the end
-// pixel. A point after a larger gap
-// is an outlier and gets the node of the last continuation (the end pixel's if there is none);
-// otherwise one far point would stretch the node range and squeeze every other node.
+// pixel. A point after a larger gap is an outlier and gets the node of the last continuation (the
+// end pixel's if there is none); otherwise one far point would stretch the node range and squeeze
+// every other node.
 
 #include "geometry.h"
 #include "ridge_contours.h"

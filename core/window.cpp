@@ -362,13 +362,19 @@ double Window::Area() const
   return 0.5 * (sum + compensation);
 }
 
-int Window::RangeScaleExponent() const
+double Window::Reach() const
 {
   double largest = 0.0;
   for (const Point2& corner : this->Corners)
   {
     largest = std::max({ largest, std::fabs(corner.x), std::fabs(corner.y) });
   }
+  return largest;
+}
+
+int Window::RangeScaleExponent() const
+{
+  const double largest = this->Reach();
   if (largest == 0.0 || (largest >= std::ldexp(1.0, -128) && largest <= std::ldexp(1.0, 128)))
   {
     return 0;
@@ -435,11 +441,7 @@ int ScaleIntoExactRange(Window& window, std::vector<Point2>& points)
 
 void CheckPointsInExactRange(const Window& window, const std::vector<Point2>& points, int exponent)
 {
-  double reach = 0.0; // the window's largest corner coordinate
-  for (const Point2& corner : window.Vertices())
-  {
-    reach = std::max({ reach, std::fabs(corner.x), std::fabs(corner.y) });
-  }
+  const double reach = window.Reach();
   const double smallest = std::ldexp(reach, -200);
   const auto tiny = [smallest](double v) { return v != 0.0 && std::fabs(v) < smallest; };
   for (std::size_t k = 0; k < points.size(); ++k)

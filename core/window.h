@@ -61,6 +61,8 @@ public:
   double Area() const;
   bool IsAxisAlignedRectangle() const;
 
+  /// The largest corner coordinate in magnitude, max |x|, |y| over the corners.
+  double Reach() const;
   /// The exponent e of the power of two 2^e that brings the window's largest corner coordinate
   /// (in magnitude) into [1, 2), when that coordinate lies outside [2^-128, 2^128]; 0 otherwise.
   /// Points and window scaled by 2^e (ScaledByPowerOfTwo) have the same tessellation, exactly

@@ -56,16 +56,34 @@ void WriteProjectionRecord(vtkDataObject* data, const std::string& record)
   data->GetFieldData()->AddArray(array);
 }
 
+/// What densifying met, over all pieces: edges cut into MaxDensifiedPieces (their pieces may be
+/// longer than the step), and edges that read two ways round the globe (EdgeReadsBothWays), taken
+/// the shorter way round (InterpolateLonLat), the first of them named ("block b points a and c,
+/// longitude x to y").
+struct DensifyReport
+{
+  vtkIdType Capped = 0;
+  vtkIdType Wrapped = 0;
+  std::string FirstWrapped;
+};
+
 /// Cuts the line and polygon edges of lon/lat poly data so that no piece is longer than maxStep
 /// degrees. New points are appended after the input's, with point data interpolated; an edge
 /// shared by two cells is cut once, so neighbouring polygons stay conforming.
 class EdgeDensifier
 {
 public:
-  EdgeDensifier(vtkPolyData* input, vtkPolyData* output, double maxStep)
+  /// label: the piece's, put before the first wrapped edge's name; report: added to.
+  EdgeDensifier(vtkPolyData* input,
+    vtkPolyData* output,
+    double maxStep,
+    const std::string& label,
+    DensifyReport& report)
     : Input(input)
     , Output(output)
     , MaxStep(maxStep)
+    , Label(label)
+    , Report(report)
   {
     this->Points->SetDataTypeToDouble();
     this->Points->DeepCopy(input->GetPoints());
@@ -85,13 +103,6 @@ public:
     this->Output->SetPoints(this->Points);
     this->Output->GetCellData()->PassData(this->Input->GetCellData());
   }
-
-  /// Edges cut into MaxDensifiedPieces: their pieces may be longer than MaxStep.
-  vtkIdType CappedEdges = 0;
-  /// Edges that read two ways round the globe (EdgeReadsBothWays), taken the shorter way round
-  /// (InterpolateLonLat), and the first of them ("points a and b, longitude x to y").
-  vtkIdType WrappedEdges = 0;
-  std::string FirstWrapped;
 
 private:
   vtkSmartPointer<vtkCellArray> DensifyCells(vtkCellArray* cells, bool closed)
@@ -151,14 +162,13 @@ private:
     bool capped = false;
     const int pieces =
       tessera::DensifiedPieceCount({ pa[0], pa[1] }, { pb[0], pb[1] }, this->MaxStep, &capped);
-    this->CappedEdges += capped ? 1 : 0;
-    if (tessera::EdgeReadsBothWays({ pa[0], pa[1] }, { pb[0], pb[1] }))
+    this->Report.Capped += capped ? 1 : 0;
+    if (tessera::EdgeReadsBothWays({ pa[0], pa[1] }, { pb[0], pb[1] }) &&
+      this->Report.Wrapped++ == 0)
     {
-      if (this->WrappedEdges++ == 0)
-      {
-        this->FirstWrapped = "points " + std::to_string(a) + " and " + std::to_string(b) +
-          ", longitude " + tessera::NumberText(pa[0]) + " to " + tessera::NumberText(pb[0]);
-      }
+      this->Report.FirstWrapped = (this->Label.empty() ? std::string() : this->Label + " ") +
+        "points " + std::to_string(a) + " and " + std::to_string(b) + ", longitude " +
+        tessera::NumberText(pa[0]) + " to " + tessera::NumberText(pb[0]);
     }
     const vtkIdType first = this->Points->GetNumberOfPoints();
     for (int k = 1; k < pieces; ++k)
@@ -174,6 +184,8 @@ private:
   vtkPolyData* Input;
   vtkPolyData* Output;
   double MaxStep;
+  const std::string& Label;
+  DensifyReport& Report;
   vtkNew<vtkPoints> Points;
   std::map<std::pair<vtkIdType, vtkIdType>, std::pair<vtkIdType, int>> Cuts;
 };
@@ -336,15 +348,6 @@ tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
   return ChooseForwardParameters(self, lonlat);
 }
 
-/// What densifying met, over all pieces: edges cut into the most pieces allowed, and edges taken
-/// the shorter way round in longitude (the first named, with its block).
-struct DensifyReport
-{
-  vtkIdType Capped = 0;
-  vtkIdType Wrapped = 0;
-  std::string FirstWrapped;
-};
-
 /// Projects one piece into its output, with the record (none when empty), adding to report.
 void ProjectPiece(vtkGeographicProjection* self,
   const Piece& piece,
@@ -357,16 +360,12 @@ void ProjectPiece(vtkGeographicProjection* self,
   auto polyInput = vtkPolyData::SafeDownCast(input);
   if (!self->GetInverse() && polyInput && self->GetMaximumEdgeLength() > 0.0)
   {
-    EdgeDensifier densifier(
-      polyInput, vtkPolyData::SafeDownCast(output), self->GetMaximumEdgeLength());
+    EdgeDensifier densifier(polyInput,
+      vtkPolyData::SafeDownCast(output),
+      self->GetMaximumEdgeLength(),
+      piece.Label,
+      report);
     densifier.Run();
-    report.Capped += densifier.CappedEdges;
-    if (report.Wrapped == 0 && densifier.WrappedEdges > 0)
-    {
-      report.FirstWrapped =
-        (piece.Label.empty() ? std::string() : piece.Label + " ") + densifier.FirstWrapped;
-    }
-    report.Wrapped += densifier.WrappedEdges;
     output->GetFieldData()->PassData(input->GetFieldData());
   }
   else
