@@ -719,7 +719,8 @@ struct ThiessenArealAverage::State
   }
 
   /// Only the tiles whose areas may have changed: those of the inserted gauges and of the gauges
-  /// that Apply touched (engine ids). Everything else keeps its cached area. Of these, those whose
+  /// that Apply touched (engine ids), and with degenerate faces their face mates. Everything else
+  /// keeps its cached area. Of these, those whose
   /// boxes (grown, or joined for inserted gauges) are clear of the catchment are not derived: their
   /// clipped area is 0. Returns (tiles derived, tiles found clear by their boxes). Works in engine
   /// ids: the touched points are near each other in them, where their gauge numbers are anywhere.
@@ -757,6 +758,22 @@ struct ThiessenArealAverage::State
     for (const std::int32_t id : touched)
     {
       consider(id);
+    }
+    if (!t.KnownFreeOfCocircularTriangles())
+    {
+      // A degenerate face takes its centre from its first three points (tiles.h), so a step that
+      // changes its points can move that centre by an ulp in the tile of each of its points, not
+      // only in those of the changed gauges' neighbours. Such a face has a touched point or an
+      // inserted one, so their face mates complete the list.
+      std::vector<std::int32_t> around = touched;
+      for (const std::int32_t g : inserted)
+      {
+        around.push_back(this->EngineOfGauge[g]);
+      }
+      for (const std::int32_t id : ComputeFaceMatesOf(t, around).Ids)
+      {
+        consider(id);
+      }
     }
     // Neighbouring tiles one after the other: their faces share cache lines. Each tile is
     // clipped as soon as it is made, on the thread that made it (while it is in the cache).

@@ -34,6 +34,17 @@
 namespace tessera
 {
 
+/// The engines' canonical order of a centre's points: by x, then by y (two distinct points are
+/// never tied). The derivations (tiles.cpp, local_tiles.cpp) and the sweep (thiessen_sweep.cpp)
+/// give a face centre its first three points in this order, and clip a tile edge from the first
+/// of its two points. By coordinates, not ids: the bits then do not depend on how the points are
+/// numbered, so a renumbered input (a shuffled gauge list, or the areal average's incremental and
+/// rebuilt tessellations, which number the same gauges differently) gives the same tiles.
+inline bool ComesFirst(const Point2& p, const Point2& q)
+{
+  return p.x < q.x || (p.x == q.x && p.y < q.y);
+}
+
 /// bx * cy - by * cx from exact products, rounded (circumcentre.cpp).
 double ExactTwiceSignedArea(double bx, double by, double cx, double cy);
 
@@ -77,7 +88,7 @@ inline void SidesFrom(const Point2& o, const Point2& b, const Point2& c, Circumc
 /// numerators and denominator, accurate to a few ulps (ExactCircumcentreOffset).
 void IllConditionedCircumcentre(const Point2& b, const Point2& c, CircumcentreTerms& t);
 
-/// a, b, c in the engines' canonical order (ascending ids); see the conditioning note above.
+/// a, b, c in the engines' canonical order (ComesFirst); see the conditioning note above.
 inline CircumcentreTerms CircumcentreOffset(const Point2& a, const Point2& b, const Point2& c)
 {
   CircumcentreTerms t;
@@ -109,7 +120,7 @@ inline CircumcentreTerms CircumcentreOffset(const Point2& a, const Point2& b, co
   return t;
 }
 
-/// The circumcentre of a, b, c (given in the engines' canonical order: ascending ids).
+/// The circumcentre of a, b, c (given in the engines' canonical order: ComesFirst).
 inline Point2 CircumcentreOf(const Point2& a, const Point2& b, const Point2& c)
 {
   const CircumcentreTerms t = CircumcentreOffset(a, b, c);

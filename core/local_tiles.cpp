@@ -20,8 +20,7 @@ using namespace tiles_detail;
 // Faces around chosen points, labelled on demand with the full derivation's rules: a face is the
 // cluster of exactly co-circular triangles (connected, since the points on an empty circle are
 // triangulated by triangles on that circle), labelled by its smallest triangle index, with its
-// centre from its three smallest point ids (one triangle: its sorted ids) through the same
-// Circumcentre, so the bits match TessellationDual's.
+// centre from the same FaceCentre, so the bits match TessellationDual's.
 class LocalFaces
 {
 public:
@@ -66,7 +65,8 @@ public:
     return { label, entry.Centre, entry.Inside };
   }
 
-  /// The points of triangle t's face (none for a ghost); t must be resolved.
+  /// The points of triangle t's face, in no particular order (none for a ghost); t must be
+  /// resolved.
   void FacePoints(std::int32_t t, const std::int32_t*& begin, const std::int32_t*& end) const
   {
     const std::int32_t index = this->Find(t);
@@ -132,9 +132,7 @@ public:
     entry.PointStart = std::int32_t(this->Points.size());
     if (this->Cluster.size() == 1)
     {
-      std::int32_t a = org[3 * t], b = org[3 * t + 1], c = org[3 * t + 2];
-      SortTriangleIds(a, b, c);
-      this->Points.insert(this->Points.end(), { a, b, c });
+      this->Points.insert(this->Points.end(), { org[3 * t], org[3 * t + 1], org[3 * t + 2] });
     }
     else
     {
@@ -147,11 +145,11 @@ public:
         this->Points.end());
     }
     entry.PointCount = std::int32_t(this->Points.size()) - entry.PointStart;
-    const std::int32_t* ids = this->Points.data() + entry.PointStart;
     if (this->WantCentres)
     {
       double error = 0.0;
-      entry.Centre = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], error);
+      entry.Centre = FaceCentre(
+        pts, this->Points.data() + entry.PointStart, std::size_t(entry.PointCount), error);
       entry.Inside = CentreInside(this->T, entry.Label, entry.Centre, error);
     }
     const std::int32_t index = std::int32_t(this->Entries.size());
@@ -169,20 +167,15 @@ private:
   void ResolveTriangle(std::int32_t t)
   {
     const std::int32_t* v = this->T.Origin().data() + 3 * t;
-    std::int32_t a = v[0], b = v[1], c = v[2];
-    SortTriangleIds(a, b, c);
     Entry entry;
     entry.Label = t;
     entry.PointStart = std::int32_t(this->Points.size());
     entry.PointCount = 3;
-    this->Points.push_back(a);
-    this->Points.push_back(b);
-    this->Points.push_back(c);
+    this->Points.insert(this->Points.end(), v, v + 3);
     if (this->WantCentres)
     {
-      const std::vector<Point2>& pts = this->T.Points();
       double error = 0.0;
-      entry.Centre = Circumcentre(pts[a], pts[b], pts[c], error);
+      entry.Centre = FaceCentre(this->T.Points(), &this->Points[entry.PointStart], 3, error);
       entry.Inside = CentreInside(this->T, entry.Label, entry.Centre, error);
     }
     this->Insert(t, std::int32_t(this->Entries.size()));

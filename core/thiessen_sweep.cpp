@@ -1056,7 +1056,7 @@ Point2 Sweep::FaceCentre(const std::vector<std::int32_t>& circle) const
 {
   bool vertical = false, horizontal = false;
   double xSide = 0.0, ySide = 0.0;
-  std::int32_t smallest[3] = { kNone, kNone, kNone }; // centroids with the smallest ids
+  std::int32_t first[3] = { kNone, kNone, kNone }; // the first centroids by ComesFirst
   for (const std::int32_t s : circle)
   {
     if (s == kLeft || s == kRight)
@@ -1072,9 +1072,10 @@ Point2 Sweep::FaceCentre(const std::vector<std::int32_t>& circle) const
     else
     {
       std::int32_t c = s;
-      for (std::int32_t& slot : smallest)
+      for (std::int32_t& slot : first)
       {
-        if (slot == kNone || this->IdOf[c] < this->IdOf[slot])
+        if (slot == kNone ||
+          ComesFirst({ this->Xs[c], this->Ys[c] }, { this->Xs[slot], this->Ys[slot] }))
         {
           std::swap(slot, c);
           if (c == kNone)
@@ -1089,11 +1090,11 @@ Point2 Sweep::FaceCentre(const std::vector<std::int32_t>& circle) const
   {
     return { xSide, ySide }; // a window corner
   }
-  const Point2 p{ this->Xs[smallest[0]], this->Ys[smallest[0]] };
+  const Point2 p{ this->Xs[first[0]], this->Ys[first[0]] };
   if (vertical || horizontal)
   {
-    // Where the bisector of the two smallest-id centroids crosses the side.
-    const Point2 q{ this->Xs[smallest[1]], this->Ys[smallest[1]] };
+    // Where the bisector of the first two centroids crosses the side.
+    const Point2 q{ this->Xs[first[1]], this->Ys[first[1]] };
     if (vertical)
     {
       const double y =
@@ -1104,11 +1105,11 @@ Point2 Sweep::FaceCentre(const std::vector<std::int32_t>& circle) const
       0.5 * (p.x + q.x) + (q.y - p.y) * ((ySide - p.y) + (ySide - q.y)) / (2.0 * (p.x - q.x));
     return { std::min(std::max(x, this->XMin), this->XMax), ySide };
   }
-  // From the points in ascending id order, as tiles.cpp computes it (circumcentre.h), so that
-  // interior vertices get the same bits from both engines.
+  // From the first three points by ComesFirst, as tiles.cpp computes it (circumcentre.h), so
+  // that interior vertices get the same bits from both engines.
   return CircumcentreOf(p,
-    Point2{ this->Xs[smallest[1]], this->Ys[smallest[1]] },
-    Point2{ this->Xs[smallest[2]], this->Ys[smallest[2]] });
+    Point2{ this->Xs[first[1]], this->Ys[first[1]] },
+    Point2{ this->Xs[first[2]], this->Ys[first[2]] });
 }
 
 Sweep::Entry Sweep::SearchAndRecord(std::int32_t cur)

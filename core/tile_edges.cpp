@@ -37,6 +37,28 @@ Point2 Circumcentre(const Point2& a, const Point2& b, const Point2& c, double& e
   return { o.x + ux, o.y + uy };
 }
 
+Point2 FaceCentre(const std::vector<Point2>& pts,
+  const std::int32_t* ids,
+  std::size_t count,
+  double& error)
+{
+  // The first three by ComesFirst, in one pass: the first three ids sorted, then each further
+  // id put in its place among them, or passed over.
+  std::int32_t first[3] = { ids[0], ids[1], ids[2] };
+  SortByCoordinates(pts.data(), first[0], first[1], first[2]);
+  for (std::size_t k = 3; k < count; ++k)
+  {
+    const std::int32_t id = ids[k];
+    if (!ComesFirst(pts[id], pts[first[2]]))
+    {
+      continue;
+    }
+    first[2] = id;
+    SortByCoordinates(pts.data(), first[0], first[1], first[2]);
+  }
+  return Circumcentre(pts[first[0]], pts[first[1]], pts[first[2]], error);
+}
+
 namespace
 {
 // The exact side of face's centre: any three of its points span its circle.
@@ -258,7 +280,8 @@ bool ClipEdge(const Tess& tess,
   const FaceView& left,
   TileEdge& out)
 {
-  if (from < to)
+  const std::vector<Point2>& pts = tess.Points();
+  if (ComesFirst(pts[from], pts[to]))
   {
     return ClipCanonical(tess, from, to, right, left, out);
   }

@@ -209,7 +209,7 @@ void TessellationDual::CentresOf(std::int32_t begin, std::int32_t end)
       __builtin_prefetch(pts + NonNegative(next[1]));
       __builtin_prefetch(pts + NonNegative(next[2]));
     }
-    std::int32_t a = org[3 * t], b = org[3 * t + 1], c = org[3 * t + 2];
+    const std::int32_t a = org[3 * t], b = org[3 * t + 1], c = org[3 * t + 2];
     if (a < 0 || b < 0 || c < 0)
     {
       this->Data[t].Face = -2 - t; // a ghost or free triangle: its own face, never merged
@@ -217,10 +217,11 @@ void TessellationDual::CentresOf(std::int32_t begin, std::int32_t end)
       continue;
     }
     this->Data[t].Face = t; // until LabelFaces merges it
-    SortTriangleIds(a, b, c);
     TriangleData& data = this->Data[t];
     double error = 0.0;
-    const Point2 centre = Circumcentre(pts[a], pts[b], pts[c], error);
+    std::int32_t first = a, second = b, third = c; // FaceCentre's order, inline: it runs per face
+    SortByCoordinates(pts, first, second, third);
+    const Point2 centre = Circumcentre(pts[first], pts[second], pts[third], error);
     data.X = centre.x;
     data.Y = centre.y;
     data.Vertex = CentreInside(this->Tess, t, centre, error) ? 0 : -1;
@@ -296,30 +297,6 @@ bool TessellationDual::Cocircular(std::int32_t t, std::int32_t f) const
            pts[org[3 * t]], pts[org[3 * t + 1]], pts[org[3 * t + 2]], pts[org[Tess::Prev(f)]]) == 0;
 }
 
-namespace
-{
-// The three smallest ids of a degenerate face's polygon (which starts at its smallest), ascending:
-// the points its centre is computed from. One pass instead of a partial sort (a heap).
-std::array<std::int32_t, 3> SmallestThree(const std::int32_t* polygon, std::int32_t size)
-{
-  std::int32_t second = std::numeric_limits<std::int32_t>::max(), third = second;
-  for (std::int32_t k = 1; k < size; ++k)
-  {
-    const std::int32_t id = polygon[k];
-    if (id < second)
-    {
-      third = second;
-      second = id;
-    }
-    else if (id < third)
-    {
-      third = id;
-    }
-  }
-  return { polygon[0], second, third };
-}
-} // namespace
-
 // Ghosts (and free triangles) are their own faces, -2 - t. A real triangle is a face of its own
 // (as CentresOf labelled it) unless it is exactly co-circular with a neighbour: then the whole
 // connected cluster on that circle is one face, labelled by its smallest triangle index. Only a
@@ -358,7 +335,7 @@ void TessellationDual::LabelFaces(const std::vector<std::uint8_t>& cocircular)
 }
 
 // The clusters whose smallest triangle is in [begin, end): each one's triangles labelled with it,
-// its polygon listed in found, and its centre taken from its three smallest ids with its inside
+// its polygon listed in found, and its centre taken from its points (FaceCentre) with its inside
 // flag decided exactly (the rounded centre and its error bound settle almost every face,
 // CircumcentreSide the rest).
 //
@@ -465,10 +442,9 @@ void TessellationDual::MergeClusters(std::int32_t begin,
       this->Data[member].Face = t;
       this->Data[member].Vertex = -1; // not a representative (the root's is set below)
     }
-    const std::array<std::int32_t, 3> ids =
-      SmallestThree(found.Polygons.data() + polygonStart, std::int32_t(boundary.size()));
     double error = 0.0;
-    const Point2 centre = Circumcentre(pts[ids[0]], pts[ids[1]], pts[ids[2]], error);
+    const Point2 centre =
+      FaceCentre(pts, found.Polygons.data() + polygonStart, boundary.size(), error);
     TriangleData& data = this->Data[t];
     data.X = centre.x;
     data.Y = centre.y;

@@ -10,20 +10,20 @@
 //
 // Faces. Triangles of the stored triangulation whose circumcircles coincide exactly (4 or more
 // co-circular points, decided with the exact incircle) are merged into one degenerate face. A
-// face's centre is computed once, from its three smallest point ids in ascending order, so every
-// tile that has it as a vertex gets the same bits and the result does not depend on which diagonal
-// the triangulation happens to store. Neither diagonal of a degenerate face is a contiguity: its
-// non-adjacent vertex pairs are half-neighbours (kind 1), reported when the centre lies inside the
-// window.
+// face's centre is computed once, from its first three points by coordinates (circumcentre.h:
+// ComesFirst), so every tile that has it as a vertex gets the same bits, and the result depends
+// neither on which diagonal the triangulation happens to store nor on how the points are numbered.
+// Neither diagonal of a degenerate face is a contiguity: its non-adjacent vertex pairs are
+// half-neighbours (kind 1), reported when the centre lies inside the window.
 //
 // Window constraints (the paper's second kind of object) are handled here. The edge a tile shares
 // with point j runs along the bisector of the two points between the centres of the faces on
 // either side of the Delaunay edge (a ray where that face is a ghost). It is clipped once, to the
-// window, from the point pair in ascending id order, so both tiles agree on it. Every decision
-// about the window is exact (window_predicates.h; "exact predicates, inexact constructions"):
-// whether a face centre lies strictly inside (the rounded centre with its error bound settles
-// almost every face, the exact predicate the rest), which window lines the bisector crosses
-// first and last, and whether the face centres lie before or after those crossings. So a
+// window, from the first of the two points by coordinates, so both tiles agree on it. Every
+// decision about the window is exact (window_predicates.h; "exact predicates, inexact
+// constructions"): whether a face centre lies strictly inside (the rounded centre with its error
+// bound settles almost every face, the exact predicate the rest), which window lines the bisector
+// crosses first and last, and whether the face centres lie before or after those crossings. So a
 // contiguity (kind 0) is reported iff the open Voronoi edge meets the open window in a segment of
 // positive length, and half-neighbours iff their degenerate vertex is strictly inside. Only the
 // coordinates are rounded: a kept face centre, a crossing computed from the bisector's midpoint
@@ -265,7 +265,7 @@ struct FaceMateLists
 
 /// The tiles of the given points only, in the given order (ids that are not accepted, and
 /// repeats, are skipped), bit for bit the tiles TessellationDual(tessellation).Tiles() gives for
-/// them: the same faces (degenerate ones merged, centres from their three smallest ids) and the
+/// them: the same faces (degenerate ones merged, centres from their first three points) and the
 /// same clipping. Only the faces around the given points are labelled, so the time is
 /// proportional to their rings, plus, unless the tessellation tracks vertex edges
 /// (TrackVertexEdges), one pass over the half-edge arrays to find an edge leaving each point.
