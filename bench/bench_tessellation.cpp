@@ -19,6 +19,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -208,6 +209,29 @@ void CgalDelaunay(benchmark::State& state)
 }
 #endif
 
+// Removing a vertex of degree d: the centre of d points on an ellipse, joined to all of them (the
+// time of the removal alone; the build is paused out). Its link is cut into Delaunay ears, each
+// checked against the whole link: O(d^2) incircle tests when the scan resumes where it last cut.
+void TesseraRemoveHighDegreeVertex(benchmark::State& state)
+{
+  const std::size_t d = std::size_t(state.range(0));
+  std::vector<Point2> points;
+  for (std::size_t k = 0; k < d; ++k)
+  {
+    const double a = 2.0 * M_PI * double(k) / double(d);
+    points.push_back({ 0.5 + 0.4 * std::cos(a), 0.5 + 0.3 * std::sin(a) });
+  }
+  points.push_back({ 0.5, 0.5 });
+  for (auto _ : state)
+  {
+    state.PauseTiming();
+    tessera::DirichletTessellation t(WindowFor(false), points);
+    state.ResumeTiming();
+    t.Remove(std::int32_t(d));
+    benchmark::DoNotOptimize(t.AcceptedCount());
+  }
+}
+
 // Argument 0 is the 1000 x 1000 lattice.
 void Sizes(benchmark::internal::Benchmark* b)
 {
@@ -235,6 +259,13 @@ BENCHMARK(TesseraBuildAndTiles)->Apply(Sizes);
 BENCHMARK(TesseraBuildAndTiles)->Apply(Large);
 BENCHMARK(TesseraBuildTilesAndGraph)->Apply(Sizes);
 BENCHMARK(TesseraBuildTilesAndGraph)->Apply(Large);
+BENCHMARK(TesseraRemoveHighDegreeVertex)
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime()
+  ->Arg(1000)
+  ->Arg(2000)
+  ->Arg(4000)
+  ->Arg(8000);
 #ifdef TESSERA_HAVE_CGAL
 BENCHMARK(CgalDelaunay)->Apply(Sizes);
 BENCHMARK(CgalDelaunay)->Apply(Large);

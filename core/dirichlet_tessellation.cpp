@@ -1269,47 +1269,64 @@ bool DirichletTessellation::CutDelaunayEars(std::vector<std::int32_t>& ring,
   std::size_t first,
   std::vector<Ear>& plan) const
 {
-  const std::vector<Point2>& pts = this->Coordinates;
   std::size_t used = first;
+  // The scan goes round the ring from where it last cut, one step back: a cut changes only the
+  // ears at its two ends (and can make others empty, which the scan meets on its way round).
+  // Restarting at 0 after every cut, as this once did, made a vertex of degree d cost O(d^3):
+  // the centre of 8000 points on an ellipse took 26 s to remove.
+  std::size_t i = 0;
+  std::size_t failed = 0; // candidates in a row that were no ear
   while (ring.size() > 3)
   {
     const std::size_t n = ring.size();
-    bool cut = false;
-    for (std::size_t i = 0; i < n && !cut; ++i)
+    if (failed >= n)
     {
-      const std::size_t b = (i + 1) % n, c = (i + 2) % n;
-      const Point2& pa = pts[ring[i]];
-      const Point2& pb = pts[ring[b]];
-      const Point2& pc = pts[ring[c]];
-      if (orient2d_fast(pa, pb, pc) <= 0)
-      {
-        continue;
-      }
-      bool empty = true;
-      for (std::size_t k = 0; k < n && empty; ++k)
-      {
-        if (k != i && k != b && k != c && incircle_fast(pa, pb, pc, pts[ring[k]]) > 0)
-        {
-          empty = false;
-        }
-      }
-      if (!empty)
-      {
-        continue;
-      }
-      const std::int32_t t = slots[used++];
-      plan.push_back({ ring[i], ring[b], ring[c], outer[i], outer[b], -1 });
-      outer[i] = 3 * t + 2; // the new edge ring[i] -> ring[c] faces this triangle's c -> a
-      ring.erase(ring.begin() + std::ptrdiff_t(b));
-      outer.erase(outer.begin() + std::ptrdiff_t(b));
-      cut = true;
+      return false; // once round without an ear
     }
-    if (!cut)
+    i %= n;
+    const std::size_t b = (i + 1) % n, c = (i + 2) % n;
+    if (!this->IsDelaunayEar(ring, i, b, c))
+    {
+      ++i;
+      ++failed;
+      continue;
+    }
+    const std::int32_t t = slots[used++];
+    plan.push_back({ ring[i], ring[b], ring[c], outer[i], outer[b], -1 });
+    outer[i] = 3 * t + 2; // the new edge ring[i] -> ring[c] faces this triangle's c -> a
+    ring.erase(ring.begin() + std::ptrdiff_t(b));
+    outer.erase(outer.begin() + std::ptrdiff_t(b));
+    // b's removal shifted the entries after it down by one; i's own entry moved if b was 0.
+    i = b == 0 ? i - 1 : i;
+    i = i == 0 ? ring.size() - 1 : i - 1;
+    failed = 0;
+  }
+  plan.push_back({ ring[0], ring[1], ring[2], outer[0], outer[1], outer[2] });
+  return true;
+}
+
+// Whether ring[i], ring[b], ring[c] (consecutive) turn left and no other ring vertex lies strictly
+// inside their circle: an ear of the Delaunay triangulation without the removed vertex.
+bool DirichletTessellation::IsDelaunayEar(const std::vector<std::int32_t>& ring,
+  std::size_t i,
+  std::size_t b,
+  std::size_t c) const
+{
+  const std::vector<Point2>& pts = this->Coordinates;
+  const Point2& pa = pts[ring[i]];
+  const Point2& pb = pts[ring[b]];
+  const Point2& pc = pts[ring[c]];
+  if (orient2d_fast(pa, pb, pc) <= 0)
+  {
+    return false;
+  }
+  for (std::size_t k = 0; k < ring.size(); ++k)
+  {
+    if (k != i && k != b && k != c && incircle_fast(pa, pb, pc, pts[ring[k]]) > 0)
     {
       return false;
     }
   }
-  plan.push_back({ ring[0], ring[1], ring[2], outer[0], outer[1], outer[2] });
   return true;
 }
 

@@ -278,6 +278,10 @@ private:
     const std::vector<std::int32_t>& slots,
     std::size_t first,
     std::vector<Ear>& plan) const;
+  bool IsDelaunayEar(const std::vector<std::int32_t>& ring,
+    std::size_t i,
+    std::size_t b,
+    std::size_t c) const;
   void ApplyPlan(const std::vector<Ear>& plan, const std::vector<std::int32_t>& slots);
   bool RemoveInteriorVertex(std::int32_t edge);
   bool RemoveHullVertex(std::int32_t edge);

@@ -559,6 +559,30 @@ TEST(DirichletTessellation, InsertThenRemoveEqualsNeverInserted)
   }
 }
 
+// A vertex joined to every other point: the centre of points on an ellipse (symmetric about both
+// axes, so rectangles of them are co-circular and its link meets degenerate faces). Its link is
+// cut into ears in one pass round it, resuming after each cut (restarting at the first vertex
+// after each cut made this removal cubic in the degree).
+TEST(DirichletTessellation, RemovingAVertexOfHighDegreeEqualsNeverInserted)
+{
+  std::vector<Point2> points;
+  for (int k = 0; k < 240; ++k)
+  {
+    const double a = 2.0 * M_PI * k / 240.0;
+    points.push_back({ 0.5 + 0.4 * std::cos(a), 0.5 + 0.3 * std::sin(a) });
+  }
+  const Canonical expected = MakeCanonical(Tess(UnitWindow(), points));
+  points.push_back({ 0.5, 0.5 });
+  Tess t(UnitWindow(), points);
+  std::vector<std::int32_t> around;
+  t.AppendNeighbours(240, around);
+  ASSERT_GE(around.size(), 200u);
+  t.Remove(240);
+  CheckStructure(t);
+  CheckEmptyCircles(t);
+  EXPECT_TRUE(MakeCanonical(t) == expected);
+}
+
 TEST(DirichletTessellation, RemovingAPointWithDuplicatesKeepsTheCopy)
 {
   std::vector<Point2> points = UniformPoints(30, 19);
