@@ -208,6 +208,7 @@ private:
   std::int32_t TilePolygonOf(std::int32_t v, RingScratch& scratch, bool withLabels) const;
   void AppendTileOf(std::int32_t v, RingScratch& scratch, TileSet& tiles) const;
   void AppendMeshTileOf(std::int32_t v, RingScratch& scratch, MeshPart& mesh) const;
+  void IndexEdgeEnds(RingScratch& scratch) const;
   std::int32_t MeshVertexOf(const Point2& p, const RingScratch& scratch, MeshPart& mesh) const;
   void NumberFaceVertices(UninitializedVector<Point2>& vertices);
   void AppendContiguitiesOf(std::int32_t v,

@@ -947,6 +947,20 @@ std::vector<Point2> NearlyCocircularFive()
     { 0x1.3031e013942b2p-1, 0x1.b8a0a250c6664p-3 } };
 }
 
+// Points on a convex arc: each joined to many others, so the tiles of the first and last have
+// hundreds of sides, clipped by the window (their mesh vertices are found through an index of
+// their edges' ends).
+std::vector<Point2> PointsOnAParabola(int n)
+{
+  std::vector<Point2> points;
+  for (int k = 0; k < n; ++k)
+  {
+    const double t = double(k) / n;
+    points.push_back({ 0.1 + 0.8 * t, 0.1 + 0.8 * t * t });
+  }
+  return points;
+}
+
 // The mesh form of the tiles (what vtkDirichletTessellation writes): tile for tile the same
 // polygons, bit for bit, areas and side counts as Tiles(), the same contiguities, and a
 // conforming mesh: every vertex is used, no two vertices coincide (tiles that meet share the
@@ -954,13 +968,25 @@ std::vector<Point2> NearlyCocircularFive()
 // it runs along the window boundary. 12,000 points make two chunks, whose crossings are merged.
 TEST(Tiles, TileMeshExpandsToTheTilesAndIsConforming)
 {
+  const std::vector<Point2> parabola = PointsOnAParabola(400);
+  {
+    const TileSet tiles =
+      ComputeTiles(DirichletTessellation(Window::Rectangle(0, 1, 0, 1), parabola));
+    std::int64_t most = 0;
+    for (std::size_t k = 0; k + 1 < tiles.Offsets.size(); ++k)
+    {
+      most = std::max(most, tiles.Offsets[k + 1] - tiles.Offsets[k]);
+    }
+    ASSERT_GT(most, 100); // the premise
+  }
   // A lattice spaced 1/29 with every other point of a patch removed: distinct faces whose rounded
   // centres coincide, which one tile lists once and its neighbours each by their own face.
   ForEachDerivationInput({ { "uniform, two chunks", UniformPoints(12000, 7) },
                            { "checkerboard patch", tessera_test::SquareLattice(31, 29.0), 299, 2 },
                            { "one point", { { 0.4, 0.6 } } },
                            { "no point", {} },
-                           { "five points nearly on a circle", NearlyCocircularFive() } },
+                           { "five points nearly on a circle", NearlyCocircularFive() },
+                           { "400 points on a parabola", parabola } },
     [](const DirichletTessellation& t, const std::string& set)
     {
       TessellationDual dual(t);
