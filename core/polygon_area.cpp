@@ -8,11 +8,22 @@ namespace tessera
 
 double CompensatedPolygonArea(const Point2* v, std::size_t n)
 {
+  // From the lowest vertex (by x, then y), so that a polygon listed from another vertex (a tile
+  // of the same points numbered otherwise) gets the same bits.
+  std::size_t o = 0;
+  for (std::size_t k = 1; k < n; ++k)
+  {
+    o = (v[k].x < v[o].x || (v[k].x == v[o].x && v[k].y < v[o].y)) ? k : o;
+  }
+  const auto at = [v, n, o](std::size_t k) -> const Point2&
+  { return v[o + k < n ? o + k : o + k - n]; };
   double sum = 0.0, compensation = 0.0;
   for (std::size_t k = 1; k + 1 < n; ++k)
   {
-    const double ax = v[k].x - v[0].x, ay = v[k].y - v[0].y;
-    const double bx = v[k + 1].x - v[0].x, by = v[k + 1].y - v[0].y;
+    const Point2& p = at(k);
+    const Point2& q = at(k + 1);
+    const double ax = p.x - v[o].x, ay = p.y - v[o].y;
+    const double bx = q.x - v[o].x, by = q.y - v[o].y;
     // Neumaier: each addition's exact rounding error goes to the compensation. Found by Knuth's
     // TwoSum, which needs no comparison of |sum| and |term| (a branch mispredicted about once per
     // tile) and gives the same exact error as the compare-and-subtract form.

@@ -10,8 +10,9 @@
  * tiles, neither diagonal is recorded as a contiguity; the pairs that meet only there are
  * half-neighbours when that vertex lies strictly inside the window (tiles that meet only at a
  * point of the window's boundary are no pair at all). The corners are rounded constructions
- * (circumcentres, window crossings), so with another order their coordinates and the areas may
- * differ in the last bits (some ulps; areas by some 1e-12 relative at most).
+ * (circumcentres, window crossings), each computed from its points taken in coordinate order,
+ * and an area is summed from its tile's lowest corner, so the input reordered gives the same
+ * corners and areas, bit for bit.
  *
  * The window is the intersection of the rectangle SetWindowBounds(xmin, xmax, ymin, ymax) (when
  * xmin < xmax and ymin < ymax) and the strict constraints a*x + b*y + c < 0 added with

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -102,9 +103,11 @@ struct Canonical
   std::vector<std::vector<std::int32_t>> Faces;
   std::vector<std::vector<std::pair<double, double>>> Tiles;
   std::vector<std::int32_t> TileIds;
+  std::vector<std::uint64_t> Areas; ///< bits, in TileIds' order (a window of 1e300 makes NaN areas)
   bool operator==(const Canonical& o) const
   {
-    return Graph == o.Graph && Faces == o.Faces && Tiles == o.Tiles && TileIds == o.TileIds;
+    return Graph == o.Graph && Faces == o.Faces && Tiles == o.Tiles && TileIds == o.TileIds &&
+      Areas == o.Areas;
   }
 };
 
@@ -138,7 +141,7 @@ Canonical MakeCanonical(const Tess& t,
   if (tiles)
   {
     const TileSet set = dual.Tiles();
-    std::vector<std::pair<std::int32_t, std::vector<std::pair<double, double>>>> byId;
+    std::vector<std::tuple<std::int32_t, std::vector<std::pair<double, double>>, double>> byId;
     for (std::size_t k = 0; k < set.PointIds.size(); ++k)
     {
       std::vector<std::pair<double, double>> polygon;
@@ -148,13 +151,16 @@ Canonical MakeCanonical(const Tess& t,
       }
       // Compare as a cycle: rotate to the smallest vertex.
       std::rotate(polygon.begin(), std::min_element(polygon.begin(), polygon.end()), polygon.end());
-      byId.emplace_back(map(set.PointIds[k]), polygon);
+      byId.emplace_back(map(set.PointIds[k]), polygon, set.Areas[k]);
     }
     std::sort(byId.begin(), byId.end());
-    for (auto& [id, polygon] : byId)
+    for (auto& [id, polygon, area] : byId)
     {
       c.TileIds.push_back(id);
       c.Tiles.push_back(polygon);
+      std::uint64_t bits = 0;
+      std::memcpy(&bits, &area, sizeof bits);
+      c.Areas.push_back(bits);
     }
   }
   return c;
@@ -505,7 +511,8 @@ TEST(DirichletTessellation, TenInsertionOrdersGiveIdenticalResults)
       id = id == std::int32_t(points.size() - 1) ? 5 : id;
     }
     // Other ids, the same tiles to the last bit: centres and window crossings are computed from
-    // their points in coordinate order, not id order (circumcentre.h: ComesFirst).
+    // their points in coordinate order, not id order (circumcentre.h: ComesFirst), and areas are
+    // summed from each tile's lowest vertex, wherever its polygon starts.
     EXPECT_TRUE(MakeCanonical(t, idMap) == reference) << "round " << round;
   }
   // Same ids, different insertion order (batch with its BRIO order vs sequential streaming):
