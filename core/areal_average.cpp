@@ -720,10 +720,10 @@ struct ThiessenArealAverage::State
 
   /// Only the tiles whose areas may have changed: those of the inserted gauges and of the gauges
   /// that Apply touched (engine ids), and with degenerate faces their face mates. Everything else
-  /// keeps its cached area. Of these, those whose
-  /// boxes (grown, or joined for inserted gauges) are clear of the catchment are not derived: their
-  /// clipped area is 0. Returns (tiles derived, tiles found clear by their boxes). Works in engine
-  /// ids: the touched points are near each other in them, where their gauge numbers are anywhere.
+  /// keeps its cached area. Of these, those whose boxes (grown, or joined for inserted gauges) are
+  /// clear of the catchment are not derived: their clipped area is 0. Returns (tiles derived, tiles
+  /// found clear by their boxes). Works in engine ids: the touched points are near each other in
+  /// them, where their gauge numbers are anywhere.
   std::pair<std::size_t, std::size_t> DeriveChanged(const std::vector<std::int32_t>& touched,
     const std::vector<std::int32_t>& inserted)
   {

@@ -34,17 +34,6 @@
 namespace tessera
 {
 
-/// The engines' canonical order of a centre's points: by x, then by y (two distinct points are
-/// never tied). The derivations (tiles.cpp, local_tiles.cpp) and the sweep (thiessen_sweep.cpp)
-/// give a face centre its first three points in this order, and clip a tile edge from the first
-/// of its two points. By coordinates, not ids: the bits then do not depend on how the points are
-/// numbered, so a renumbered input (a shuffled gauge list, or the areal average's incremental and
-/// rebuilt tessellations, which number the same gauges differently) gives the same tiles.
-inline bool ComesFirst(const Point2& p, const Point2& q)
-{
-  return p.x < q.x || (p.x == q.x && p.y < q.y);
-}
-
 /// bx * cy - by * cx from exact products, rounded (circumcentre.cpp).
 double ExactTwiceSignedArea(double bx, double by, double cx, double cy);
 

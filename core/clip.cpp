@@ -105,20 +105,6 @@ double RoundingAreaBound(const std::vector<Point2>& piece, double magnitude)
   return 16.0 * std::numeric_limits<double>::epsilon() * magnitude * perimeter;
 }
 
-// The lexicographically smallest vertex (smallest x, then y) of a ring.
-std::size_t LowestVertex(const Point2* ring, std::size_t count)
-{
-  std::size_t lowest = 0;
-  for (std::size_t i = 1; i < count; ++i)
-  {
-    if (ring[i].x < ring[lowest].x || (ring[i].x == ring[lowest].x && ring[i].y < ring[lowest].y))
-    {
-      lowest = i;
-    }
-  }
-  return lowest;
-}
-
 // The tile's vertices from its lowest on, in rotated when that is not the first: the clipped area
 // is summed, and measured relative to the first vertex, in this order, so that the same polygon
 // gives the same bits whichever vertex it was listed from (two tessellations of the same points

@@ -80,6 +80,29 @@ inline Box2 UnionOf(const std::vector<Box2>& boxes)
   return box;
 }
 
+/// The order in which constructions take their points: by x, then by y (two distinct points are
+/// never tied). The engines give a face centre its first three points in this order and clip a
+/// tile edge from the first of its two points (circumcentre.h), and sum an area from a polygon's
+/// first vertex in it: by coordinates, not ids, so that the bits do not depend on how the points
+/// are numbered (a shuffled gauge list, or the areal average's incremental and rebuilt
+/// tessellations, which number the same gauges differently, give the same tiles). Written without
+/// branches (which of two points comes first is close to random): callers sort with it.
+inline bool ComesFirst(const Point2& p, const Point2& q)
+{
+  return (p.x < q.x) | ((p.x == q.x) & (p.y < q.y));
+}
+
+/// The first vertex of a ring (count >= 1) by ComesFirst.
+inline std::size_t LowestVertex(const Point2* ring, std::size_t count)
+{
+  std::size_t lowest = 0;
+  for (std::size_t i = 1; i < count; ++i)
+  {
+    lowest = ComesFirst(ring[i], ring[lowest]) ? i : lowest;
+  }
+  return lowest;
+}
+
 /// The cell, 0 .. cells - 1, of a coordinate already scaled to cell units (spatial grids and
 /// curves). NaN and everything below 0 go to cell 0, everything beyond to the last: a box of
 /// subnormal width, or wider than the largest double, makes scales infinite or zero and scaled

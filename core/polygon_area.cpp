@@ -8,13 +8,9 @@ namespace tessera
 
 double CompensatedPolygonArea(const Point2* v, std::size_t n)
 {
-  // From the lowest vertex (by x, then y), so that a polygon listed from another vertex (a tile
-  // of the same points numbered otherwise) gets the same bits.
-  std::size_t o = 0;
-  for (std::size_t k = 1; k < n; ++k)
-  {
-    o = (v[k].x < v[o].x || (v[k].x == v[o].x && v[k].y < v[o].y)) ? k : o;
-  }
+  // From the lowest vertex, so that a polygon listed from another vertex (a tile of the same
+  // points numbered otherwise) gets the same bits.
+  const std::size_t o = LowestVertex(v, n);
   const auto at = [v, n, o](std::size_t k) -> const Point2&
   { return v[o + k < n ? o + k : o + k - n]; };
   double sum = 0.0, compensation = 0.0;

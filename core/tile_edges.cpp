@@ -42,21 +42,18 @@ Point2 FaceCentre(const std::vector<Point2>& pts,
   std::size_t count,
   double& error)
 {
-  // The first three by ComesFirst, in one pass: the first three ids sorted, then each further
-  // id put in its place among them, or passed over.
+  // The first three by ComesFirst, in one pass: the three kept are sorted, and a further id that
+  // comes before the last of them takes its place.
   std::int32_t first[3] = { ids[0], ids[1], ids[2] };
-  SortByCoordinates(pts.data(), first[0], first[1], first[2]);
   for (std::size_t k = 3; k < count; ++k)
   {
-    const std::int32_t id = ids[k];
-    if (!ComesFirst(pts[id], pts[first[2]]))
-    {
-      continue;
-    }
-    first[2] = id;
     SortByCoordinates(pts.data(), first[0], first[1], first[2]);
+    if (ComesFirst(pts[ids[k]], pts[first[2]]))
+    {
+      first[2] = ids[k];
+    }
   }
-  return Circumcentre(pts[first[0]], pts[first[1]], pts[first[2]], error);
+  return TriangleCentre(pts.data(), first[0], first[1], first[2], error);
 }
 
 namespace

@@ -48,7 +48,7 @@ struct FaceView
 // the rounding error of each coordinate (infinity when the triangle is too flat to say).
 Point2 Circumcentre(const Point2& a, const Point2& b, const Point2& c, double& error);
 
-/// Sorts three distinct point ids by their points in the engines' order (circumcentre.h:
+/// Sorts three distinct point ids by their points in the engines' order (geometry.h:
 /// ComesFirst) with three compare-exchanges that compile to conditional moves: which of a
 /// triangle's points comes first is close to random, and a branch on it was mispredicted often
 /// enough to slow the centres of a whole tessellation by a fifth.
@@ -56,9 +56,7 @@ inline void SortByCoordinates(const Point2* pts, std::int32_t& a, std::int32_t& 
 {
   const auto exchange = [pts](std::int32_t& p, std::int32_t& q)
   {
-    const Point2& u = pts[p];
-    const Point2& v = pts[q];
-    const bool swap = (v.x < u.x) | ((v.x == u.x) & (v.y < u.y));
+    const bool swap = ComesFirst(pts[q], pts[p]);
     const std::int32_t first = swap ? q : p;
     q = swap ? p : q;
     p = first;
@@ -68,8 +66,20 @@ inline void SortByCoordinates(const Point2* pts, std::int32_t& a, std::int32_t& 
   exchange(a, b);
 }
 
+/// The centre of triangle a, b, c from its points in the engines' order (FaceCentre's, for a
+/// face of three points; inline: the full derivation runs it for every triangle).
+inline Point2 TriangleCentre(const Point2* pts,
+  std::int32_t a,
+  std::int32_t b,
+  std::int32_t c,
+  double& error)
+{
+  SortByCoordinates(pts, a, b, c);
+  return Circumcentre(pts[a], pts[b], pts[c], error);
+}
+
 /// The centre of a face with points ids[0, count) (count >= 3, in any order), from its first
-/// three points in the engines' order (circumcentre.h: ComesFirst; any three points of a face
+/// three points in the engines' order (geometry.h: ComesFirst; any three points of a face
 /// span its circle), so that every tile having it as a vertex gets the same bits whichever of
 /// the face's triangles it reads, and whatever the numbering. `error` as Circumcentre's.
 Point2 FaceCentre(const std::vector<Point2>& pts,

@@ -219,9 +219,7 @@ void TessellationDual::CentresOf(std::int32_t begin, std::int32_t end)
     this->Data[t].Face = t; // until LabelFaces merges it
     TriangleData& data = this->Data[t];
     double error = 0.0;
-    std::int32_t first = a, second = b, third = c; // FaceCentre's order, inline: it runs per face
-    SortByCoordinates(pts, first, second, third);
-    const Point2 centre = Circumcentre(pts[first], pts[second], pts[third], error);
+    const Point2 centre = TriangleCentre(pts, a, b, c, error);
     data.X = centre.x;
     data.Y = centre.y;
     data.Vertex = CentreInside(this->Tess, t, centre, error) ? 0 : -1;
@@ -308,20 +306,16 @@ void ChainBoundary(const std::int32_t* org,
   std::vector<std::int32_t>& boundary,
   std::vector<std::int32_t>& polygon)
 {
+  const auto byOrigin = [org](std::int32_t a, std::int32_t b) { return org[a] < org[b]; };
   const auto leaving = [org](std::int32_t edge, std::int32_t point) { return org[edge] < point; };
   const bool sorted = boundary.size() > 8;
   if (sorted)
   {
-    std::sort(boundary.begin(),
-      boundary.end(),
-      [org](std::int32_t a, std::int32_t b) { return org[a] < org[b]; });
+    std::sort(boundary.begin(), boundary.end(), byOrigin);
   }
   else
   {
-    std::iter_swap(boundary.begin(),
-      std::min_element(boundary.begin(),
-        boundary.end(),
-        [org](std::int32_t a, std::int32_t b) { return org[a] < org[b]; }));
+    std::iter_swap(boundary.begin(), std::min_element(boundary.begin(), boundary.end(), byOrigin));
   }
   std::int32_t e = boundary.front();
   for (std::size_t step = 0; step < boundary.size(); ++step)
@@ -1265,14 +1259,18 @@ void TessellationDual::AppendMeshTileOf(std::int32_t v, RingScratch& scratch, Me
   result.NeighborCounts[tile] = sides;
 }
 
-// The vertex id of a clipped tile's polygon vertex p (about to be appended): a face centre inside
-// the window that one of its edges ends at, a window corner, or else a crossing of the window
-// boundary, a new vertex. Matched by exact coordinates: AssemblePolygon copies them (and keeps one
-// of several ends at one point: the others are recorded as the same vertex).
-// The ends of a clipped tile's edges that are mesh vertices (face centres inside the window), by
-// place, when the tile has enough edges for a search per polygon vertex to cost: a tile with d
-// sides cost O(d^2) (a point on a convex arc has a tile of as many sides as the arc has points:
-// 1e5 of them on a parabola took 29 s through the filter). Empty for a few edges.
+// The mesh vertex an edge end is, when it is a face centre inside the window; -1 otherwise.
+std::int32_t TessellationDual::MeshVertexAt(const EdgeEnd& end) const
+{
+  return end.Constraint < 0 && end.Where >= 0 && this->Data[end.Where].Inside()
+    ? this->Data[end.Where].Vertex
+    : -1;
+}
+
+// The ends of a clipped tile's edges that are mesh vertices (MeshVertexAt), by place, when the
+// tile has enough edges for a search per polygon vertex to cost: a tile with d sides cost O(d^2)
+// (a point on a convex arc has a tile of as many sides as the arc has points: 1e5 of them on a
+// parabola took 29 s through the filter). Empty for a few edges.
 void TessellationDual::IndexEdgeEnds(RingScratch& scratch) const
 {
   scratch.Ends.clear();
@@ -1285,9 +1283,10 @@ void TessellationDual::IndexEdgeEnds(RingScratch& scratch) const
   {
     for (const EdgeEnd* end : { &edge.Lo, &edge.Hi })
     {
-      if (end->Constraint < 0 && end->Where >= 0 && this->Data[end->Where].Inside())
+      const std::int32_t vertex = this->MeshVertexAt(*end);
+      if (vertex >= 0)
       {
-        scratch.Ends.push_back({ end->P.x, end->P.y, order, this->Data[end->Where].Vertex });
+        scratch.Ends.push_back({ end->P.x, end->P.y, order, vertex });
       }
       ++order;
     }
@@ -1295,6 +1294,10 @@ void TessellationDual::IndexEdgeEnds(RingScratch& scratch) const
   std::sort(scratch.Ends.begin(), scratch.Ends.end());
 }
 
+// The vertex id of a clipped tile's polygon vertex p (about to be appended): a face centre inside
+// the window that one of its edges ends at, a window corner, or else a crossing of the window
+// boundary, a new vertex. Matched by exact coordinates: AssemblePolygon copies them (and keeps one
+// of several ends at one point: the others are recorded as the same vertex).
 std::int32_t TessellationDual::MeshVertexOf(const Point2& p,
   const RingScratch& scratch,
   MeshPart& mesh) const
@@ -1329,10 +1332,10 @@ std::int32_t TessellationDual::MeshVertexOf(const Point2& p,
     {
       for (const EdgeEnd* end : { &edge.Lo, &edge.Hi })
       {
-        if (end->Constraint < 0 && end->Where >= 0 && end->P == p &&
-          this->Data[end->Where].Inside())
+        const std::int32_t vertex = end->P == p ? this->MeshVertexAt(*end) : -1;
+        if (vertex >= 0)
         {
-          meet(this->Data[end->Where].Vertex);
+          meet(vertex);
         }
       }
     }

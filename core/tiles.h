@@ -10,7 +10,7 @@
 //
 // Faces. Triangles of the stored triangulation whose circumcircles coincide exactly (4 or more
 // co-circular points, decided with the exact incircle) are merged into one degenerate face. A
-// face's centre is computed once, from its first three points by coordinates (circumcentre.h:
+// face's centre is computed once, from its first three points by coordinates (geometry.h:
 // ComesFirst), so every tile that has it as a vertex gets the same bits, and the result depends
 // neither on which diagonal the triangulation happens to store nor on how the points are numbered.
 // Neither diagonal of a degenerate face is a contiguity: its non-adjacent vertex pairs are
@@ -131,6 +131,7 @@ struct DelaunayFaces
 
 namespace tiles_detail
 {
+struct EdgeEnd;  // an end of a clipped tile edge (tile_edges.h)
 struct TileEdge; // a clipped tile edge (tile_edges.h)
 struct FaceView; // a face as a tile edge sees it (tile_edges.h)
 } // namespace tiles_detail
@@ -208,6 +209,7 @@ private:
   std::int32_t TilePolygonOf(std::int32_t v, RingScratch& scratch, bool withLabels) const;
   void AppendTileOf(std::int32_t v, RingScratch& scratch, TileSet& tiles) const;
   void AppendMeshTileOf(std::int32_t v, RingScratch& scratch, MeshPart& mesh) const;
+  std::int32_t MeshVertexAt(const tiles_detail::EdgeEnd& end) const;
   void IndexEdgeEnds(RingScratch& scratch) const;
   std::int32_t MeshVertexOf(const Point2& p, const RingScratch& scratch, MeshPart& mesh) const;
   void NumberFaceVertices(UninitializedVector<Point2>& vertices);

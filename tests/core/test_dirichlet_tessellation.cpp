@@ -511,7 +511,7 @@ TEST(DirichletTessellation, TenInsertionOrdersGiveIdenticalResults)
       id = id == std::int32_t(points.size() - 1) ? 5 : id;
     }
     // Other ids, the same tiles to the last bit: centres and window crossings are computed from
-    // their points in coordinate order, not id order (circumcentre.h: ComesFirst), and areas are
+    // their points in coordinate order, not id order (geometry.h: ComesFirst), and areas are
     // summed from each tile's lowest vertex, wherever its polygon starts.
     EXPECT_TRUE(MakeCanonical(t, idMap) == reference) << "round " << round;
   }
@@ -1638,7 +1638,7 @@ void ExpectSameAsStreaming(const std::vector<Point2>& points)
   EXPECT_EQ(batch.Duplicates().size(), streaming.Duplicates().size());
   if (batch.Duplicates().empty())
   {
-    // Other ids, the same tiles to the last bit (circumcentre.h: ComesFirst).
+    // Other ids, the same tiles to the last bit (geometry.h: ComesFirst).
     EXPECT_TRUE(MakeCanonical(batch) == MakeCanonical(streaming, idMap));
   }
   else
