@@ -220,6 +220,7 @@ private:
   void InsertKnownPoint(std::int32_t id, std::int32_t nearId);
   void InsertAcceptedPoint(std::int32_t id);
   void InsertCollinear(std::int32_t id);
+  void SortCollinearBatch();
   void LeaveCollinearPhase(std::int32_t id);
   void InsertIntoTriangulation(std::int32_t id);
   Location InsertInRegion(Region& region, std::int32_t id, std::int32_t& edge);
@@ -296,6 +297,8 @@ private:
   HalfEdgeArray Twins;
   std::vector<std::int32_t> FreeTriangles;
   std::vector<std::int32_t> Collinear;
+  /// During BuildFrom: Collinear[2..] were appended in build order, to be sorted at the end.
+  bool CollinearUnsorted = false;
   std::vector<std::int32_t> Rejected;
   std::vector<std::pair<std::int32_t, std::int32_t>> DuplicatePairs;
   /// Per id, a PointStatus in the low bits plus HasDuplicates for an accepted point that exact

@@ -396,6 +396,77 @@ TEST(DirichletTessellation, FewAndCollinearPointsGiveValidOutput)
   }
 }
 
+// A batch of collinear points is sorted along its line once at its end (not point by point): with
+// exact copies in any order the result is the streamed one, and the copy kept at each place is
+// the one with the smallest id. Then once more with a point off the line, which makes the batch
+// two-dimensional on the way, and with 1500 copies each of two places (copies of the first place
+// met are kept in order one by one until the second place comes, and the sort at the end then
+// drops the one kept so far for a copy with a smaller id: pairs naming it must follow).
+TEST(DirichletTessellation, ACollinearBatchWithCopiesEqualsStreaming)
+{
+  std::mt19937 random(17);
+  const auto onTheLine = [&random](int places, std::size_t count)
+  {
+    std::uniform_int_distribution<int> place(0, places - 1);
+    std::vector<Point2> line(count);
+    for (Point2& p : line)
+    {
+      const int k = place(random);
+      p = { 0.25 + k / 4096.0, 0.5 - k / 8192.0 };
+    }
+    return line;
+  };
+  const std::vector<Point2> line = onTheLine(2000, 3000); // about a third copy an earlier point
+  for (const int input : { 0, 1, 2 })
+  {
+    const bool offTheLine = input == 1;
+    std::vector<Point2> points = input == 2 ? onTheLine(2, 3000) : line;
+    if (offTheLine)
+    {
+      points.insert(points.begin() + 1700, { 0.5, 0.9 });
+    }
+    Tess batch(UnitWindow(), points);
+    Tess streaming(UnitWindow());
+    for (const Point2& p : points)
+    {
+      streaming.Insert(p);
+    }
+    EXPECT_EQ(batch.IsTwoDimensional(), offTheLine);
+    EXPECT_EQ(batch.CollinearPoints(), streaming.CollinearPoints());
+    EXPECT_EQ(batch.Duplicates(), streaming.Duplicates());
+    EXPECT_EQ(batch.AcceptedCount(), streaming.AcceptedCount());
+    EXPECT_TRUE(MakeCanonical(batch) == MakeCanonical(streaming));
+    // Independently: per place, the smallest id is kept and every other id names it.
+    std::map<std::pair<double, double>, std::int32_t> first;
+    for (std::size_t id = 0; id < points.size(); ++id)
+    {
+      first.emplace(std::make_pair(points[id].x, points[id].y), std::int32_t(id));
+    }
+    EXPECT_EQ(batch.AcceptedCount(), first.size());
+    for (std::size_t id = 0; id < points.size(); ++id)
+    {
+      const std::int32_t kept = first.at({ points[id].x, points[id].y });
+      if (kept == std::int32_t(id))
+      {
+        EXPECT_EQ(batch.Status(std::int32_t(id)), PointStatus::Accepted) << id;
+      }
+      else
+      {
+        EXPECT_EQ(batch.DuplicateOf(std::int32_t(id)), kept) << id;
+      }
+    }
+    if (!offTheLine)
+    {
+      std::vector<std::int32_t> along;
+      for (const auto& entry : first)
+      {
+        along.push_back(entry.second); // by x, then y: the line's order
+      }
+      EXPECT_EQ(batch.CollinearPoints(), along);
+    }
+  }
+}
+
 TEST(DirichletTessellation, StreamingEqualsBatch)
 {
   const std::vector<Point2> points = UniformPoints(150, 11);
