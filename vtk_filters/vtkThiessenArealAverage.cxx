@@ -791,6 +791,12 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
     if (tilesInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()) && !in.Times.empty())
     {
       const double t = tilesInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+      if (std::isnan(t))
+      {
+        // (Every comparison with NaN is false: the search below would give the last step.)
+        throw tessera::InputError("the requested time is NaN; the steps' times run from " +
+          tessera::NumberText(in.Times.front()) + " to " + tessera::NumberText(in.Times.back()));
+      }
       const auto after = std::upper_bound(in.Times.begin(), in.Times.end(), t);
       step = after == in.Times.begin() ? 0 : static_cast<std::size_t>(after - in.Times.begin() - 1);
     }

@@ -853,6 +853,25 @@ def test_weights_table_lists_every_step():
     assert_that(f.GetOutputDataObject(2).GetNumberOfRows() == 0, "WeightsTable off leaves output 2 empty")
 
 
+def test_a_requested_time_picks_the_step_at_or_before_it_and_nan_is_named():
+    coords = [(0.25, 0.5), (0.75, 0.5)]
+    months = {(2000, 1): {"a": 1.0, "b": 3.0}, (2000, 2): {"a": 5.0}, (2000, 3): {"b": 7.0}}
+    f, messages = summary_of(coords, ["a", "b"], [(0, 0), (1, 0), (1, 1), (0, 1)],
+                             observations_table(months))
+    times = summary_column(f, "Time")
+    assert_that(not messages and len(times) == 3, f"three steps: {messages} {times}")
+    # Between steps, before the first and after the last: the step at or before, else the first.
+    for t, step in ((times[1] + 0.01, 1), (times[0] - 1.0, 0), (times[2] + 1.0, 2), (times[2], 2)):
+        f.UpdateTimeStep(t)
+        tiles = f.GetOutputDataObject(0)
+        assert_that(not messages and tiles.GetInformation().Get(vtkPolyData.DATA_TIME_STEP()) == times[step],
+                    f"time {t} gives step {step}: {messages}")
+    # NaN compares false with every time, and once gave the last step without a word.
+    f.UpdateTimeStep(math.nan)
+    assert_that(len(messages) == 1 and "the requested time is NaN" in messages[0]
+                and f.GetOutputDataObject(0).GetNumberOfCells() == 0, f"a NaN time: {messages}")
+
+
 def test_long_numeric_ids_repeated_rows_and_shared_ids_are_kept_apart_and_reported():
     # USGS-style ids in double columns (as a CSV reader gives them) are four stations, not one:
     # the mean of four symmetric gauges with values 1..4 is 2.5 with weights of 1/4.
@@ -1019,5 +1038,6 @@ if __name__ == "__main__":
          test_review_cases_of_times_values_and_time_aware_gauges,
          test_rows_that_cannot_be_used_make_no_step_and_are_listed,
          test_weights_table_lists_every_step,
+         test_a_requested_time_picks_the_step_at_or_before_it_and_nan_is_named,
          test_tiles_of_a_catchment_with_a_hole_or_a_bay,
          test_long_numeric_ids_repeated_rows_and_shared_ids_are_kept_apart_and_reported])
