@@ -895,6 +895,34 @@ void CheckCatchmentLonLat(const std::vector<std::size_t>& offsets,
   }
 }
 
+/// Throws InputError when the catchment's edges, cut into pieces of at most edgeDegrees, would
+/// make more than MaxCatchmentVertices vertices: some 100 bytes each once projected and indexed, so
+/// such a catchment would take gigabytes (a comb of thousands of teeth tens of degrees long ran out
+/// of memory without a word). A real outline stays far below: 20 million pieces of 0.01 degrees
+/// are 200000 degrees of boundary.
+void CheckDensifiedCatchmentSize(const CleanRings& rings, double edgeDegrees)
+{
+  constexpr std::size_t MaxCatchmentVertices = 20000000;
+  std::size_t total = 0;
+  for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
+  {
+    const std::size_t begin = rings.RingOffsets[r], end = rings.RingOffsets[r + 1];
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      total += std::size_t(DensifiedPieceCount(
+        rings.Vertices[k], rings.Vertices[k + 1 < end ? k + 1 : begin], edgeDegrees));
+    }
+  }
+  if (total > MaxCatchmentVertices)
+  {
+    throw InputError("the catchment's edges, cut into pieces of at most " +
+      NumberText(edgeDegrees) + " degrees to follow their lon/lat lines once projected, make " +
+      std::to_string(total) + " vertices, more than " + std::to_string(MaxCatchmentVertices) +
+      " (some 100 bytes each): simplify the outline, or cut its edges more coarsely "
+      "(CatchmentEdgeDegrees)");
+  }
+}
+
 } // namespace
 
 ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonLat,
@@ -985,6 +1013,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   }
 
   // Catchment: edges straight in lon/lat are densified, then projected.
+  CheckDensifiedCatchmentSize(rings, settings.CatchmentEdgeDegrees);
   std::vector<std::size_t> offsets{ 0 };
   std::vector<Point2> projected;
   std::vector<std::size_t> segmentOf; // per projected vertex: the caller's segment it lies on

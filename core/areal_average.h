@@ -65,7 +65,8 @@ struct ArealAverageSettings
   /// projecting. An edge whose longitudes differ by more than 270 degrees as written is taken the
   /// shorter way round (179 to -179 across the 180th meridian); one that differs by 180 to 270
   /// degrees could be meant either way and is an InputError naming its ring and segment
-  /// (EdgeReadsBothWays, geo.h).
+  /// (EdgeReadsBothWays, geo.h). More than 20 million pieces in all (200000 degrees of boundary
+  /// at 0.01) is an InputError giving the count: they would take gigabytes.
   double CatchmentEdgeDegrees = 0.01;
   /// Gauges closer than this (projected metres) are at one place, as exact repeats are: at each
   /// step the first of them that reported is used (DuplicateGauges lists them). Gauges much

@@ -435,6 +435,41 @@ TEST(ArealAverage, AnEdgeThatReadsBothWaysRoundTheGlobeIsRefused)
   }
 }
 
+// A catchment whose edges, cut into pieces of CatchmentEdgeDegrees, would make more vertices than
+// memory holds is an InputError that gives the count, not an allocation that fails. A 60-gon of
+// radius 40 degrees has edges of about 4 degrees: some 25 million pieces of 1e-5 degrees, 15
+// thousand of the default 0.01 (which is used as before).
+TEST(ArealAverage, ACatchmentTooFinelyCutIsNamedNotAllocated)
+{
+  std::vector<Point2> ring;
+  for (int k = 0; k < 60; ++k)
+  {
+    const double angle = 2.0 * M_PI * k / 60.0;
+    ring.push_back({ 40.0 * std::cos(angle), 40.0 * std::sin(angle) });
+  }
+  const std::vector<std::size_t> offsets{ 0, ring.size() };
+  const std::vector<Point2> gauges{ { -10.0, 0.0 }, { 10.0, 0.0 } };
+  ArealAverageSettings fine;
+  fine.CatchmentEdgeDegrees = 1e-5;
+  const std::string error =
+    ErrorOf([&] { ThiessenArealAverage average(gauges, offsets, ring, fine); });
+  std::size_t pieces = 0; // independently: each edge's length over the step, rounded up
+  for (std::size_t k = 0; k < ring.size(); ++k)
+  {
+    const Point2 a = ring[k], b = ring[(k + 1) % ring.size()];
+    pieces += std::size_t(std::ceil(std::hypot(b.x - a.x, b.y - a.y) / 1e-5));
+  }
+  EXPECT_GT(pieces, 20000000u);
+  EXPECT_NE(error.find("cut into pieces of at most 1e-05 degrees"), std::string::npos) << error;
+  EXPECT_NE(error.find("make " + std::to_string(pieces) + " vertices, more than 20000000"),
+    std::string::npos)
+    << error;
+  ThiessenArealAverage average(gauges, offsets, ring);
+  const ArealStep step = average.Step({ 1.0, 3.0 });
+  EXPECT_EQ(step.StationsWeighted, 2);
+  EXPECT_NEAR(step.Weights[0], 0.5, 1e-9);
+}
+
 TEST(ArealAverage, PlanarAreasNeedAnEqualAreaProjection)
 {
   // EqualAreaPlane with a projection that does not keep areas gave planar areas as ellipsoidal
