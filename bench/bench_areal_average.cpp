@@ -11,9 +11,13 @@
 // insertions spatially sorted, each hinted by the one before) against rebuilt (range insert)
 // per step, with no tiles, clipping or areas: the ratio a peer's incremental Delaunay reaches.
 //
-//   bench_areal_average [examples/data] [--synthetic]   prints the Colorado table (not with
-//                                                       --synthetic), the synthetic table and
-//                                                       the CGAL peer's
+// Detailed outlines: 376 gauges (60% reporting at random each step) under a catchment of 10^3 to
+// 3 10^5 vertices (a wavy oval some 6 degrees across): what a step costs when the tiles on the
+// boundary hold thousands of its segments.
+//
+//   bench_areal_average [examples/data] [--synthetic]   prints the Colorado table and the detailed
+//                                                       outlines' (not with --synthetic), the
+//                                                       synthetic table and the CGAL peer's
 #include "areal_average.h"
 
 #ifdef TESSERA_HAVE_CGAL
@@ -155,6 +159,7 @@ double RunAll(ThiessenArealAverage& average,
 }
 
 void RunColorado(const std::string& dir);
+void RunDetailedOutlines();
 void RunSynthetic(int repeats);
 
 } // namespace
@@ -192,7 +197,10 @@ int main(int argc, char** argv)
       dir = arg;
   }
   if (!syntheticOnly)
+  {
     RunColorado(dir);
+    RunDetailedOutlines();
+  }
   RunSynthetic(repeats);
   return 0;
 }
@@ -297,6 +305,54 @@ std::pair<double, double> CgalTopologyPerStep(const std::vector<Point2>& gauges,
   return { updated, rebuiltTime };
 }
 #endif
+
+void RunDetailedOutlines()
+{
+  std::printf("\n| outline vertices | gauges | steps | construction s | incremental ms/step |\n");
+  std::printf("|------------------|--------|-------|----------------|---------------------|\n");
+  for (const std::size_t vertices : { 1000u, 30000u, 300000u })
+  {
+    std::mt19937_64 random(3);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<Point2> ring(vertices);
+    for (std::size_t k = 0; k < vertices; ++k)
+    {
+      const double angle = 2.0 * M_PI * double(k) / double(vertices);
+      const double radius = 3.0 *
+        (1.0 + 0.08 * std::sin(7 * angle) + 0.04 * std::sin(53 * angle) +
+          0.01 * std::sin(1009 * angle) + 0.003 * (unit(random) - 0.5));
+      ring[k] = { -105.5 + radius * std::cos(angle), 39.0 + 0.8 * radius * std::sin(angle) };
+    }
+    std::vector<Point2> gauges(376);
+    for (Point2& g : gauges)
+    {
+      g = { -111.0 + 11.0 * unit(random), 34.0 + 10.0 * unit(random) };
+    }
+    const int stepCount = 100;
+    std::vector<std::vector<double>> steps(stepCount, std::vector<double>(gauges.size()));
+    for (std::vector<double>& step : steps)
+    {
+      for (double& value : step)
+      {
+        value = unit(random) < 0.6 ? unit(random) : std::nan("");
+      }
+    }
+    const auto start = Clock::now();
+    ThiessenArealAverage average(gauges, { 0, vertices }, ring);
+    const double built = Seconds(start);
+    const auto stepping = Clock::now();
+    for (const std::vector<double>& step : steps)
+    {
+      average.Step(step);
+    }
+    std::printf("| %16zu | %6zu | %5d | %14.3f | %19.2f |\n",
+      vertices,
+      gauges.size(),
+      stepCount,
+      built,
+      1e3 * Seconds(stepping) / stepCount);
+  }
+}
 
 // Synthetic: N gauges in a 10 x 10 degree box, a catchment inside it, 1% toggling per step. Each
 // mode runs `repeats` times, the modes alternating, and the fastest run of each is reported: on

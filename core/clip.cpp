@@ -443,6 +443,40 @@ int RingOrientation(const Point2* ring, std::size_t count)
   return orient2d_fast(before, ring[lowest], after);
 }
 
+// Sorts distinct segment ids below limit. A tile on a detailed outline (3e5 vertices) has
+// thousands of candidate segments, and std::sort took 15% of a step there: from 1024 ids on, a
+// radix sort of 11-bit digits (as many as limit needs) in O(ids) per digit.
+void SortSegmentIds(std::vector<std::uint32_t>& ids,
+  std::vector<std::uint32_t>& scratch,
+  std::size_t limit)
+{
+  if (ids.size() < 1024)
+  {
+    std::sort(ids.begin(), ids.end());
+    return;
+  }
+  constexpr int DigitBits = 11;
+  constexpr std::uint32_t DigitMask = (1u << DigitBits) - 1;
+  scratch.resize(ids.size());
+  for (int shift = 0; shift < 32 && (limit - 1) >> shift != 0; shift += DigitBits)
+  {
+    std::uint32_t start[DigitMask + 2] = {};
+    for (const std::uint32_t id : ids)
+    {
+      ++start[((id >> shift) & DigitMask) + 1];
+    }
+    for (std::uint32_t d = 0; d <= DigitMask; ++d)
+    {
+      start[d + 1] += start[d];
+    }
+    for (const std::uint32_t id : ids)
+    {
+      scratch[start[(id >> shift) & DigitMask]++] = id;
+    }
+    ids.swap(scratch);
+  }
+}
+
 // Sorts (ring, crossing) pairs by ring and sums each ring's crossings in place.
 void SumByRing(std::vector<std::pair<std::uint32_t, int>>& crossings)
 {
@@ -556,8 +590,13 @@ void Catchment::BuildGrid()
       }
     }
   };
+  this->FirstCell.resize(this->Points.size());
   for (std::size_t v = 0; v < this->Points.size(); ++v)
   {
+    const Point2& a = this->Points[v];
+    const Point2& b = this->Points[this->NextVertex(v)];
+    this->FirstCell[v] = static_cast<std::uint32_t>(
+      this->CellX(std::min(a.x, b.x)) << 16 | this->CellY(std::min(a.y, b.y)));
     forEachCell(v, [&count](std::size_t cell) { ++count[cell + 1]; });
   }
   for (std::size_t c = 0; c < cellCount; ++c)
@@ -792,10 +831,9 @@ double Catchment::ClipInto(const Point2* tile,
       for (std::uint32_t k = this->CellStart[cell]; k < this->CellStart[cell + 1]; ++k)
       {
         const std::uint32_t v = this->CellEdges[k];
-        const Point2& a = this->Points[v];
-        const Point2& b = this->Points[this->NextVertex(v)];
-        if (std::max(this->CellX(std::min(a.x, b.x)), x0) == i &&
-          std::max(this->CellY(std::min(a.y, b.y)), y0) == j)
+        const std::uint32_t firstCell = this->FirstCell[v];
+        if (std::max<std::size_t>(firstCell >> 16, x0) == i &&
+          std::max<std::size_t>(firstCell & 0xffff, y0) == j)
         {
           work.Candidates.push_back(v);
         }
@@ -823,7 +861,7 @@ double Catchment::ClipInto(const Point2* tile,
     return tileArea;
   }
 
-  std::sort(work.Candidates.begin(), work.Candidates.end());
+  SortSegmentIds(work.Candidates, work.SortScratch, this->Points.size());
   this->RayCrossings(centre, work.Crossings);
   SumByRing(work.Crossings);
   int farWinding = 0; // winding inside the box of the rings with no candidate segment

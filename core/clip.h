@@ -128,6 +128,7 @@ public:
   struct Workspace
   {
     std::vector<std::uint32_t> Candidates;
+    std::vector<std::uint32_t> SortScratch;
     std::vector<std::pair<std::uint32_t, int>> Crossings;
     std::vector<Point2> Local;
     std::vector<Point2> Tile;
@@ -192,6 +193,8 @@ private:
   double CellScaleY = 1.0;
   std::vector<std::uint32_t> CellStart;
   std::vector<std::uint32_t> CellEdges;
+  // Per segment, the first cell its box meets: column << 16 | row (GridX, GridY <= 4096).
+  std::vector<std::uint32_t> FirstCell;
   // Per cell: -1 when segments meet it, else 0 or 1 for outside or inside the catchment.
   std::vector<signed char> EmptyCellInside;
 };

@@ -476,6 +476,31 @@ TEST(Clip, RandomConvexTilesMatchExactRationalClipping)
   }
 }
 
+// Detailed outlines: a tile then has thousands of candidate segments, sorted by a radix sort from
+// 1024 on (SortSegmentIds). Star rings of 6000 and 3000 vertices (a hole in the first), tiles of
+// up to half their width.
+TEST(Clip, TilesOnDetailedOutlinesMatchExactRationalClipping)
+{
+  std::mt19937 random(21);
+  Rings rings;
+  rings.Add(Star(random, { 0.0, 0.0 }, 6000, 60.0, 100.0, 1.0 / 64));
+  rings.Add(Star(random, { 0.0, 0.0 }, 3000, 20.0, 40.0, 1.0 / 64));
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  std::uniform_real_distribution<double> corner(-110.0, 30.0), size(40.0, 100.0);
+  int partial = 0;
+  for (int i = 0; i < 12; ++i)
+  {
+    const double x = corner(random), y = corner(random), side = size(random);
+    const std::vector<Point2> tile = RandomConvex(random, x, x + side, y, y + side, 8, 1.0 / 16);
+    const mpq_class exact = ExactClippedArea(rings, tile);
+    const double tileArea = tessera_test::ShoelaceArea(tile);
+    EXPECT_NEAR(catchment.ClipArea(tile), exact.get_d(), Tolerance(exact, tileArea))
+      << "tile " << i;
+    partial += exact > 0 && exact.get_d() < tileArea;
+  }
+  EXPECT_GT(partial, 6);
+}
+
 TEST(Clip, DyadicCoordinatesAwayFromOriginMatchExactClipping)
 {
   for (unsigned seed = 20; seed < 24; ++seed)
