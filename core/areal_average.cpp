@@ -919,7 +919,7 @@ void CheckDensifiedCatchmentSize(const CleanRings& rings, double edgeDegrees)
       NumberText(edgeDegrees) + " degrees to follow their lon/lat lines once projected, make " +
       std::to_string(total) + " vertices, more than " + std::to_string(MaxCatchmentVertices) +
       " (some 100 bytes each): simplify the outline, or cut its edges more coarsely "
-      "(CatchmentEdgeDegrees)");
+      "(ArealAverageSettings::CatchmentEdgeDegrees, in the core's C++ API)");
   }
 }
 

@@ -793,9 +793,13 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
       const double t = tilesInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
       if (std::isnan(t))
       {
-        // (Every comparison with NaN is false: the search below would give the last step.)
-        throw tessera::InputError("the requested time is NaN; the steps' times run from " +
-          tessera::NumberText(in.Times.front()) + " to " + tessera::NumberText(in.Times.back()));
+        // (Every comparison with NaN is false: the search below would give the last step.) A bad
+        // request, not bad input: the average, its tables and time steps stay for the next one.
+        vtkErrorMacro(<< "the requested time is NaN; the steps' times run from "
+                      << tessera::NumberText(in.Times.front()) << " to "
+                      << tessera::NumberText(in.Times.back()));
+        tilesOutput->Initialize();
+        return 0;
       }
       const auto after = std::upper_bound(in.Times.begin(), in.Times.end(), t);
       step = after == in.Times.begin() ? 0 : static_cast<std::size_t>(after - in.Times.begin() - 1);

@@ -437,7 +437,7 @@ TEST(ArealAverage, AnEdgeThatReadsBothWaysRoundTheGlobeIsRefused)
 
 // A catchment whose edges, cut into pieces of CatchmentEdgeDegrees, would make more vertices than
 // memory holds is an InputError that gives the count, not an allocation that fails. A 60-gon of
-// radius 40 degrees has edges of about 4 degrees: some 25 million pieces of 1e-5 degrees, 15
+// radius 40 degrees has edges of about 4 degrees: some 25 million pieces of 1e-5 degrees, 25
 // thousand of the default 0.01 (which is used as before).
 TEST(ArealAverage, ACatchmentTooFinelyCutIsNamedNotAllocated)
 {

@@ -861,15 +861,29 @@ def test_a_requested_time_picks_the_step_at_or_before_it_and_nan_is_named():
     times = summary_column(f, "Time")
     assert_that(not messages and len(times) == 3, f"three steps: {messages} {times}")
     # Between steps, before the first and after the last: the step at or before, else the first.
+    cells = {}
     for t, step in ((times[1] + 0.01, 1), (times[0] - 1.0, 0), (times[2] + 1.0, 2), (times[2], 2)):
         f.UpdateTimeStep(t)
         tiles = f.GetOutputDataObject(0)
         assert_that(not messages and tiles.GetInformation().Get(vtkPolyData.DATA_TIME_STEP()) == times[step],
                     f"time {t} gives step {step}: {messages}")
-    # NaN compares false with every time, and once gave the last step without a word.
+        cells[step] = tiles.GetNumberOfCells()
+    # NaN compares false with every time, and once gave the last step without a word. It is a
+    # bad request, not bad input: the tables and time steps stay, and the next request is served.
+    summary = [summary_column(f, name) for name in ("Time", "ArealMean")]
+    rows = f.GetOutputDataObject(2).GetNumberOfRows()
     f.UpdateTimeStep(math.nan)
     assert_that(len(messages) == 1 and "the requested time is NaN" in messages[0]
                 and f.GetOutputDataObject(0).GetNumberOfCells() == 0, f"a NaN time: {messages}")
+    assert_that([summary_column(f, name) for name in ("Time", "ArealMean")] == summary
+                and f.GetOutputDataObject(2).GetNumberOfRows() == rows > 0
+                and len(f.GetOutputInformation(0).Get(vtkStreamingDemandDrivenPipeline.TIME_STEPS())) == 3,
+                "a NaN time keeps the summary, the weights table and the time steps")
+    f.UpdateTimeStep(times[1])
+    tiles = f.GetOutputDataObject(0)
+    assert_that(len(messages) == 1 and tiles.GetNumberOfCells() == cells[1] > 0
+                and tiles.GetInformation().Get(vtkPolyData.DATA_TIME_STEP()) == times[1],
+                f"the next request after a NaN one: {messages}")
 
 
 def test_long_numeric_ids_repeated_rows_and_shared_ids_are_kept_apart_and_reported():
