@@ -895,22 +895,24 @@ void CheckCatchmentLonLat(const std::vector<std::size_t>& offsets,
   }
 }
 
-/// Throws InputError when the catchment's edges, cut into pieces of at most edgeDegrees, would
-/// make more than MaxCatchmentVertices vertices: some 100 bytes each once projected and indexed, so
-/// such a catchment would take gigabytes (a comb of thousands of teeth tens of degrees long ran out
-/// of memory without a word). A real outline stays far below: 20 million pieces of 0.01 degrees
-/// are 200000 degrees of boundary.
-void CheckDensifiedCatchmentSize(const CleanRings& rings, double edgeDegrees)
+/// Per catchment segment (ring vertex k to the next), the pieces it is cut into at most
+/// edgeDegrees long. Throws InputError when they make more than MaxCatchmentVertices vertices in
+/// all: some 100 bytes each once projected and indexed, so such a catchment would take gigabytes
+/// (a comb of thousands of teeth tens of degrees long ran out of memory without a word). A real
+/// outline stays far below: 20 million pieces of 0.01 degrees are 200000 degrees of boundary.
+std::vector<int> DensifiedPieceCounts(const CleanRings& rings, double edgeDegrees)
 {
   constexpr std::size_t MaxCatchmentVertices = 20000000;
+  std::vector<int> pieces(rings.Vertices.size());
   std::size_t total = 0;
   for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
   {
     const std::size_t begin = rings.RingOffsets[r], end = rings.RingOffsets[r + 1];
     for (std::size_t k = begin; k < end; ++k)
     {
-      total += std::size_t(DensifiedPieceCount(
-        rings.Vertices[k], rings.Vertices[k + 1 < end ? k + 1 : begin], edgeDegrees));
+      pieces[k] = DensifiedPieceCount(
+        rings.Vertices[k], rings.Vertices[k + 1 < end ? k + 1 : begin], edgeDegrees);
+      total += std::size_t(pieces[k]);
     }
   }
   if (total > MaxCatchmentVertices)
@@ -921,6 +923,7 @@ void CheckDensifiedCatchmentSize(const CleanRings& rings, double edgeDegrees)
       " (some 100 bytes each): simplify the outline, or cut its edges more coarsely "
       "(ArealAverageSettings::CatchmentEdgeDegrees, in the core's C++ API)");
   }
+  return pieces;
 }
 
 } // namespace
@@ -1013,7 +1016,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   }
 
   // Catchment: edges straight in lon/lat are densified, then projected.
-  CheckDensifiedCatchmentSize(rings, settings.CatchmentEdgeDegrees);
+  const std::vector<int> pieceCounts = DensifiedPieceCounts(rings, settings.CatchmentEdgeDegrees);
   std::vector<std::size_t> offsets{ 0 };
   std::vector<Point2> projected;
   std::vector<std::size_t> segmentOf; // per projected vertex: the caller's segment it lies on
@@ -1024,7 +1027,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     {
       const Point2& a = rings.Vertices[k];
       const Point2& b = rings.Vertices[k + 1 < end ? k + 1 : begin];
-      const int pieces = DensifiedPieceCount(a, b, settings.CatchmentEdgeDegrees);
+      const int pieces = pieceCounts[k];
       for (int i = 0; i < pieces; ++i)
       {
         projected.push_back(s.Projector->Forward(InterpolateLonLat(a, b, double(i) / pieces)));

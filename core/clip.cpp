@@ -236,9 +236,7 @@ void ClipByEdge(const std::vector<Point2>& in,
 // points are collinear.
 void ConvexHull(std::vector<Point2>& points, std::vector<Point2>& hull)
 {
-  std::sort(points.begin(),
-    points.end(),
-    [](const Point2& a, const Point2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  std::sort(points.begin(), points.end(), ComesFirst);
   hull.clear();
   for (const Point2& p : points)
   {
@@ -574,6 +572,7 @@ void Catchment::BuildGrid()
   this->CellScaleY = static_cast<double>(this->GridY) / height;
   const std::size_t cellCount = this->GridX * this->GridY;
   std::vector<std::uint32_t> count(cellCount + 1, 0);
+  this->FirstCell.resize(this->Points.size());
   const auto forEachCell = [this](std::size_t v, auto&& visit)
   {
     const Point2& a = this->Points[v];
@@ -582,6 +581,7 @@ void Catchment::BuildGrid()
     const std::size_t x1 = this->CellX(std::max(a.x, b.x));
     const std::size_t y0 = this->CellY(std::min(a.y, b.y));
     const std::size_t y1 = this->CellY(std::max(a.y, b.y));
+    this->FirstCell[v] = static_cast<std::uint32_t>(x0 << 16 | y0);
     for (std::size_t j = y0; j <= y1; ++j)
     {
       for (std::size_t i = x0; i <= x1; ++i)
@@ -590,13 +590,8 @@ void Catchment::BuildGrid()
       }
     }
   };
-  this->FirstCell.resize(this->Points.size());
   for (std::size_t v = 0; v < this->Points.size(); ++v)
   {
-    const Point2& a = this->Points[v];
-    const Point2& b = this->Points[this->NextVertex(v)];
-    this->FirstCell[v] = static_cast<std::uint32_t>(
-      this->CellX(std::min(a.x, b.x)) << 16 | this->CellY(std::min(a.y, b.y)));
     forEachCell(v, [&count](std::size_t cell) { ++count[cell + 1]; });
   }
   for (std::size_t c = 0; c < cellCount; ++c)

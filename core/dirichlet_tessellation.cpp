@@ -116,11 +116,6 @@ inline int DelaunayEdgeTest(const Point2* pts,
   return InCircle(pts[y], pts[x], pts[q], pts[p]);
 }
 
-bool LexicographicLess(const Point2& a, const Point2& b)
-{
-  return a.x < b.x || (a.x == b.x && a.y < b.y);
-}
-
 // StatusBytes: the PointStatus in the low bits; HasDuplicates marks an accepted point that some
 // Duplicate may copy, so that Remove looks for an heir only then (the mark may outlive the last
 // copy: it is a hint, never a promise).
@@ -404,7 +399,7 @@ void DirichletTessellation::InsertCollinear(std::int32_t id)
   auto at = std::lower_bound(this->Collinear.begin(),
     this->Collinear.end(),
     p,
-    [&pts](std::int32_t k, const Point2& q) { return LexicographicLess(pts[k], q); });
+    [&pts](std::int32_t k, const Point2& q) { return ComesFirst(pts[k], q); });
   if (at != this->Collinear.end() && pts[*at] == p)
   {
     this->RecordDuplicate(id, *at, -1);
@@ -431,10 +426,8 @@ void DirichletTessellation::SortCollinearBatch()
   const std::vector<Point2>& pts = this->Coordinates;
   std::sort(this->Collinear.begin(),
     this->Collinear.end(),
-    [&](std::int32_t a, std::int32_t b)
-    {
-      return pts[a] == pts[b] ? this->InputId(a) < this->InputId(b)
-                              : LexicographicLess(pts[a], pts[b]);
+    [&](std::int32_t a, std::int32_t b) {
+      return pts[a] == pts[b] ? this->InputId(a) < this->InputId(b) : ComesFirst(pts[a], pts[b]);
     });
   std::vector<std::pair<std::int32_t, std::int32_t>> dropped; // (copy, the one kept)
   std::size_t kept = 0;

@@ -258,11 +258,8 @@ double RidgeGrouping::FractionInOwnPixel(const std::vector<Point2>& points, cons
 std::vector<Point2> RidgeGrouping::DistinctPoints(const std::vector<Point2>& points)
 {
   std::vector<Point2> distinct = points;
-  auto before = [](const Point2& a, const Point2& b)
-  { return a.x < b.x || (a.x == b.x && a.y < b.y); };
-  auto same = [](const Point2& a, const Point2& b) { return a.x == b.x && a.y == b.y; };
-  std::sort(distinct.begin(), distinct.end(), before);
-  distinct.erase(std::unique(distinct.begin(), distinct.end(), same), distinct.end());
+  std::sort(distinct.begin(), distinct.end(), ComesFirst);
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
   return distinct;
 }
 

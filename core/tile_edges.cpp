@@ -45,15 +45,16 @@ Point2 FaceCentre(const std::vector<Point2>& pts,
   // The first three by ComesFirst, in one pass: the three kept are sorted, and a further id that
   // comes before the last of them takes its place.
   std::int32_t first[3] = { ids[0], ids[1], ids[2] };
+  SortByCoordinates(pts.data(), first[0], first[1], first[2]);
   for (std::size_t k = 3; k < count; ++k)
   {
-    SortByCoordinates(pts.data(), first[0], first[1], first[2]);
     if (ComesFirst(pts[ids[k]], pts[first[2]]))
     {
       first[2] = ids[k];
+      SortByCoordinates(pts.data(), first[0], first[1], first[2]);
     }
   }
-  return TriangleCentre(pts.data(), first[0], first[1], first[2], error);
+  return Circumcentre(pts[first[0]], pts[first[1]], pts[first[2]], error);
 }
 
 namespace
