@@ -525,11 +525,9 @@ def main(argv=None):
                         help="catchment polygon (GeoJSON or shapefile, lon/lat)")
     parser.add_argument("--no-plots", action="store_true", help="skip the PNG files")
     args = parser.parse_args(argv)
-    try:
-        year, month = (int(x) for x in args.month.split("-"))
-        if not 1 <= month <= 12:
-            raise ValueError
-    except ValueError:
+    chosen = re.fullmatch(r"([0-9]{1,4})-([0-9]{1,2})", args.month.strip())
+    year, month = (int(chosen.group(1)), int(chosen.group(2))) if chosen else (0, 0)
+    if not 1 <= year or not 1 <= month <= 12:
         sys.exit(f"--month {args.month!r}: expected YYYY-MM")
 
     from vtkmodules.vtkCommonCore import vtkCommand

@@ -43,19 +43,21 @@ def decoded(path, what):
         return data.decode("cp1252", errors="replace")
 
 
-def rows(path, required, what):
+def rows(path, required, what, optional=()):
     """Yields (line, row) for each record of the CSV file at path (a header line first; row maps
     the header's names, stripped of spaces, to the fields); blank lines and records whose fields
-    are all empty are skipped. Ends the script, naming the file, when it cannot be read, is not a
-    CSV file, lacks one of the required columns, or is not well-formed CSV; what says what the
-    file holds."""
+    are all empty are skipped. A required or optional column may be named in another case
+    (STATION_ID, Lon). Ends the script, naming the file, when it cannot be read, is not a CSV
+    file, lacks one of the required columns, has one of them (or an optional one) twice, or is not
+    well-formed CSV; what says what the file holds."""
     text = decoded(path, what)
     if text.lstrip().startswith(("{", "[")):
         fail(f"{path}: the {what} file is not a CSV file (it starts like JSON or GeoJSON; "
              f"expected a header line such as {','.join(required)})")
     reader = csv.DictReader(io.StringIO(text, newline=""), strict=True)
     try:
-        columns = [name.strip() for name in reader.fieldnames or []]
+        columns = named_columns([name.strip() for name in reader.fieldnames or []],
+                                (*required, *optional), path)
         absent = [name for name in required if name not in columns]
         if absent:
             fail(f"{path}: the {what} file has no column {', '.join(repr(n) for n in absent)} "
@@ -79,6 +81,21 @@ def rows(path, required, what):
         fail(f"{path}:{max(reader.reader.line_num, 1)}: not well-formed CSV ({error})")
 
 
+def named_columns(columns, names, path):
+    """The header's columns with each of names in its own spelling where the header has it in
+    another case; ends the script, naming the file, when one of names appears twice (in any case):
+    which of them holds the values would be a guess (a reader of a dict keeps the last)."""
+    columns = list(columns)
+    for name in names:
+        same = [k for k, column in enumerate(columns) if column.lower() == name.lower()]
+        if len(same) > 1:
+            fail(f"{path}:1: column {name!r} appears {len(same)} times (columns "
+                 f"{', '.join(str(k + 1) for k in same)}): keep one")
+        if same:
+            columns[same[0]] = name
+    return columns
+
+
 def is_missing(text):
     """True for an empty field or a missing-value marker (NA, N/A, NaN, null, in any case)."""
     return (text or "").strip().lower() in MISSING
@@ -89,6 +106,8 @@ def number(row, column, path, line):
     not one (a missing value included: test is_missing first where one is allowed)."""
     text = row.get(column)
     try:
+        if "_" in (text or ""):  # float() takes Python's digit groups: 1_5 would be 15
+            raise ValueError
         value = float((text or "").strip())
     except ValueError:
         fail(f"{path}:{line}: column {column!r}: {text!r} is not a number")
@@ -98,12 +117,14 @@ def number(row, column, path, line):
 
 
 def integer(row, column, path, line, low, high):
-    """The field as an int in [low, high]; ends the script naming it otherwise."""
+    """The field as an int in [low, high] (decimal digits, optionally followed by a point and
+    zeros, as a spreadsheet or pandas writes a whole-number column: 1963.0); ends the script
+    naming it otherwise."""
     text = (row.get(column) or "").strip()
-    try:
-        value = int(text)
-    except ValueError:
+    whole = re.fullmatch(r"([+-]?[0-9]+)(?:\.0*)?", text)
+    if not whole:
         fail(f"{path}:{line}: column {column!r}: {text!r} is not an integer")
+    value = int(whole.group(1))
     if not low <= value <= high:
         fail(f"{path}:{line}: column {column!r}: {value} is outside {low}..{high}")
     return value
@@ -117,10 +138,11 @@ def text(row, column, path, line):
     return value
 
 
-def gauges(path):
+def gauges(path, optional=()):
     """Yields (line, row, station_id, name, lon, lat) for each gauge of a stations file: columns
-    station_id, lon, lat (degrees), an optional name, and any others (left in row)."""
-    for line, row in rows(path, ("station_id", "lon", "lat"), "stations"):
+    station_id, lon, lat (degrees), an optional name, the other optional columns named (checked as
+    rows() checks them), and any others (left in row)."""
+    for line, row in rows(path, ("station_id", "lon", "lat"), "stations", ("name", *optional)):
         yield (line, row, text(row, "station_id", path, line), (row.get("name") or "").strip(),
                number(row, "lon", path, line), number(row, "lat", path, line))
 

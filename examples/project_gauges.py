@@ -47,7 +47,7 @@ def read_gauges(path):
     lon_array.SetName("Longitude")
     lat_array.SetName("Latitude")
     lines = []
-    for line, row, station, name, lon, lat in csv_input.gauges(path):
+    for line, row, station, name, lon, lat in csv_input.gauges(path, ("elev_m",)):
         lines.append(line)
         missing_elevation = csv_input.is_missing(row.get("elev_m"))
         elev = 0.0 if missing_elevation else csv_input.number(row, "elev_m", path, line)

@@ -209,6 +209,8 @@ def test_bad_files_are_named():
         bad_header = write(out, "bad_header.csv", 'station_id,"lon"x,lat\n050848,-105,39\n')
         geojson = write(out, "stations.geojson", '{"type": "FeatureCollection", "features": []}\n')
         pretty_json = write(out, "pretty.json", '{\n  "station_id": "050848"\n}\n')
+        twice = write(out, "twice.csv", "station_id,year,month,precip,Precip\n050848,1950,1,1,100\n")
+        grouped = write(out, "grouped.csv", "station_id,year,month,precip\n050848,1950,1,1_5\n")
         directory = os.path.join(out, "catchment.d")
         os.mkdir(directory)
         utf16 = os.path.join(out, "utf16.csv")
@@ -238,6 +240,11 @@ def test_bad_files_are_named():
             (("--stations", pretty_json), [pretty_json + ": the stations file is not a CSV file"]),
             (("--catchment", directory), [directory + ": is a directory"]),
             (("--out", stations_id), [f"--out {stations_id}: exists and is not a directory"]),
+            # A column twice (in any case): which holds the values would be a guess.
+            (("--observations", twice), [twice + ":1", "column 'precip' appears 2 times (columns 4, 5)"]),
+            # Python's float() reads 1_5 as 15: not a number in a data file.
+            (("--observations", grouped), [grouped + ":2", "'precip'", "'1_5' is not a number"]),
+            (("--month", "1_963-08"), ["--month", "YYYY-MM"]),
         ]
         for arguments, fragments in cases:
             _, stderr = run_colorado(out, *arguments, what=str(arguments), status=1, plots=False)
@@ -251,6 +258,14 @@ def test_bad_files_are_named():
         weights = read_csv(os.path.join(out, "weights_1963_08.csv"))
         assert_that([(w["name"], float(w["weight"]), float(w["precip"])) for w in weights] == [("Café", 1.0, 1.5)],
                     f"cp1252 and UTF-16 files read as {weights}")
+        # Column names in another case, and whole numbers as pandas writes a column with gaps.
+        upper = write(out, "upper.csv", "STATION_ID,Lon,LAT\n050848,-105,39.5\n")
+        floats = write(out, "floats.csv", "Station_Id,YEAR,Month,PRECIP\n050848,1963.0,8.0,2.5\n")
+        run_colorado(out, stations=upper, observations=floats, month="1963-08", plots=False,
+                     what="column names in capitals, years as 1963.0")
+        weights = read_csv(os.path.join(out, "weights_1963_08.csv"))
+        assert_that([(w["station_id"], float(w["weight"]), float(w["precip"])) for w in weights]
+                    == [("050848", 1.0, 2.5)], f"capitals and 1963.0 read as {weights}")
         short = write(out, "short.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2\n")
         for path, fields in ((value, 5), (short, 3)):
             _, stderr = run_colorado(out, observations=path, what=path, status=1, plots=False)
