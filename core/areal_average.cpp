@@ -1129,6 +1129,21 @@ const std::vector<Point2>& ThiessenArealAverage::ProjectedGauges() const
   return this->Impl->GaugesXY;
 }
 
+bool ThiessenArealAverage::GaugeInsideCatchment(std::size_t g) const
+{
+  return this->Impl->Region->Contains(this->Impl->GaugesXY.at(g));
+}
+
+std::vector<std::int32_t> ThiessenArealAverage::CatchmentRingsAround(std::size_t r) const
+{
+  const Catchment& region = *this->Impl->Region;
+  if (r + 1 >= region.RingOffsets().size())
+  {
+    throw std::out_of_range("CatchmentRingsAround: no ring " + std::to_string(r));
+  }
+  return region.EnclosingRings(r);
+}
+
 ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
 {
   State& s = *this->Impl;

@@ -152,6 +152,11 @@ public:
   double CatchmentAreaM2() const;
   /// Projected gauge positions (metres).
   const std::vector<Point2>& ProjectedGauges() const;
+  /// Whether gauge g lies inside the catchment (even-odd; on its boundary: either answer).
+  bool GaugeInsideCatchment(std::size_t g) const;
+  /// The catchment rings (numbered as given) that enclose ring r, ascending: r is a hole when
+  /// their number is odd.
+  std::vector<std::int32_t> CatchmentRingsAround(std::size_t r) const;
 
   /// Advances to a step: values[g] is gauge g's value, NaN where it did not report. Throws
   /// InputError if values has the wrong size or an infinite value (naming the gauge as above).

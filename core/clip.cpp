@@ -641,21 +641,29 @@ void Catchment::RayCrossings(const Point2& p, std::vector<std::pair<std::uint32_
 }
 
 // Rings do not touch, so a ring's first vertex is strictly inside or outside every other ring.
+// Rings do not touch, so a ring encloses another exactly when it winds around any of its points.
+std::vector<std::int32_t> Catchment::EnclosingRings(std::size_t r) const
+{
+  std::vector<std::pair<std::uint32_t, int>> crossings;
+  this->RayCrossings(this->Points[this->Offsets[r]], crossings);
+  SumByRing(crossings);
+  std::vector<std::int32_t> enclosing;
+  for (const auto& [ring, winding] : crossings)
+  {
+    if (ring != r && winding != 0)
+    {
+      enclosing.push_back(static_cast<std::int32_t>(ring));
+    }
+  }
+  return enclosing;
+}
+
 void Catchment::FindDepths()
 {
   this->Depths.assign(this->RingCount(), 0);
-  std::vector<std::pair<std::uint32_t, int>> crossings;
   for (std::size_t r = 0; r < this->RingCount(); ++r)
   {
-    this->RayCrossings(this->Points[this->Offsets[r]], crossings);
-    SumByRing(crossings);
-    for (const auto& ringWinding : crossings)
-    {
-      if (ringWinding.first != r && ringWinding.second != 0)
-      {
-        ++this->Depths[r];
-      }
-    }
+    this->Depths[r] = static_cast<int>(this->EnclosingRings(r).size());
   }
 }
 

@@ -99,6 +99,8 @@ public:
   const std::vector<Point2>& Vertices() const { return this->Points; }
   /// Number of other rings that enclose ring r (even: an outer boundary, odd: a hole).
   const std::vector<int>& RingDepths() const { return this->Depths; }
+  /// The other rings that enclose ring r, ascending (RingDepths()[r] of them).
+  std::vector<std::int32_t> EnclosingRings(std::size_t r) const;
   /// Whether ring r was reversed to orient it as above.
   const std::vector<bool>& RingReversed() const { return this->Reversed; }
 

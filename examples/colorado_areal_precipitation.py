@@ -275,7 +275,9 @@ class InputFiles:
             return f"{self.observations}: {self.rows_as_lines(text)}"
         if re.match(r"\d+ (gauge\(s\)|station id\(s\) are given to more than one gauge)", text):
             return f"{self.stations}: {self.gauges_as_lines(text)}"
-        if re.match(r"\d+ cell\(s\) of the catchment", text):
+        if re.match(r"none of the \d+ gauges", text):
+            return f"{self.stations}: {text}"
+        if re.match(r"\d+ (cell\(s\) of the catchment|catchment ring\(s\))", text):
             return f"{self.catchment}: {text}"
         return f"warning: {text}"
 

@@ -375,6 +375,7 @@ Rings ReadPolygonRings(vtkDataObject* data)
   if (auto* poly = vtkPolyData::SafeDownCast(data))
   {
     AppendPolygonRings(poly, std::string(), rings);
+    rings.Blocks.resize(rings.Offsets.size() - 1, -1);
   }
   else if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
   {
@@ -383,8 +384,9 @@ Rings ReadPolygonRings(vtkDataObject* data)
     {
       if (auto* block = vtkPolyData::SafeDownCast(iter->GetCurrentDataObject()))
       {
-        AppendPolygonRings(
-          block, "block " + std::to_string(iter->GetCurrentFlatIndex()) + " ", rings);
+        const unsigned int flat = iter->GetCurrentFlatIndex();
+        AppendPolygonRings(block, "block " + std::to_string(flat) + " ", rings);
+        rings.Blocks.resize(rings.Offsets.size() - 1, std::int64_t(flat));
       }
     }
   }

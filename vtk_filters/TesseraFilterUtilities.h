@@ -63,6 +63,9 @@ struct Rings
   /// composite data set).
   std::size_t SkippedCells = 0;
   std::string FirstSkipped;
+  /// Per ring, the flat index of the block it came from in a composite data set (-1 for a
+  /// vtkPolyData input): vtkGDALVectorReader gives each feature a block of its own.
+  std::vector<std::int64_t> Blocks;
 };
 
 /// Every polygon, triangle and quad cell, and every closed polyline (last point = first, as

@@ -29,6 +29,7 @@
 #include "observation_series.h"
 
 #include <algorithm>
+#include <functional>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -595,6 +596,51 @@ private:
   GaugeColumns Gauges;
 };
 
+/// The warning for catchment rings that lie inside a ring of another block, or "" when none does
+/// (or the rings are not from blocks). vtkGDALVectorReader gives each feature a block, so such a
+/// ring is a feature inside another feature, and the even-odd rule cuts it out as a hole: a
+/// sub-basin given beside its basin takes itself out of the catchment. (A hole of a polygon comes
+/// in its polygon's block.)
+std::string RingsInsideOtherBlocksWarning(const tessera_vtk::Rings& rings,
+  const tessera::ThiessenArealAverage& average)
+{
+  const std::vector<std::int64_t>& block = rings.Blocks;
+  if (std::adjacent_find(block.begin(), block.end(), std::not_equal_to<std::int64_t>()) ==
+    block.end())
+  {
+    return std::string(); // one block (or a vtkPolyData): holes are where the rings put them
+  }
+  std::vector<std::pair<std::size_t, std::int32_t>> inside; // (ring, a ring around it)
+  for (std::size_t r = 0; r < block.size(); ++r)
+  {
+    for (const std::int32_t around : average.CatchmentRingsAround(r))
+    {
+      if (block[static_cast<std::size_t>(around)] != block[r])
+      {
+        inside.emplace_back(r, around);
+        break;
+      }
+    }
+  }
+  if (inside.empty())
+  {
+    return std::string();
+  }
+  return std::to_string(inside.size()) +
+    " catchment ring(s) lie inside a ring of another block (feature), so the even-odd rule cuts "
+    "them out of the catchment as holes (a sub-basin given beside its basin removes itself; give "
+    "the basin alone, or each hole in the block of its polygon): " +
+    ListNames(inside.size(),
+      [&](std::size_t k)
+      {
+        const std::size_t r = inside[k].first;
+        const auto around = static_cast<std::size_t>(inside[k].second);
+        return "ring " + std::to_string(r) + " (block " + std::to_string(block[r]) +
+          ") inside ring " + std::to_string(around) + " (block " + std::to_string(block[around]) +
+          ")";
+      });
+}
+
 } // namespace
 
 struct vtkThiessenArealAverage::Internals
@@ -891,6 +937,24 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   in.Average.reset(
     new tessera::ThiessenArealAverage(lonlat, rings.Offsets, rings.Vertices, settings));
   const std::size_t gaugeCount = lonlat.size();
+  const std::string nested = RingsInsideOtherBlocksWarning(rings, *in.Average);
+  if (!nested.empty())
+  {
+    vtkWarningMacro(<< nested);
+  }
+  std::size_t gaugesInside = 0;
+  for (std::size_t g = 0; g < gaugeCount; ++g)
+  {
+    gaugesInside += in.Average->GaugeInsideCatchment(g) ? 1 : 0;
+  }
+  if (gaugeCount > 0 && gaugesInside == 0)
+  {
+    vtkWarningMacro(<< "none of the " << gaugeCount
+                    << " gauges lies inside the catchment: every weight goes to gauges outside "
+                       "it, as Thiessen's rule gives them. If that is unexpected, check that the "
+                       "gauges are longitude, latitude in degrees (a west longitude without its "
+                       "minus sign, or the two swapped).");
+  }
 
   in.Times.clear();
   in.Values.clear();
@@ -1030,6 +1094,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   weighted->SetName("StationsWeighted");
   covered->SetName("CoveredFraction");
   WeightRows weightRows(stationIds);
+  std::vector<char> everWeighted(gaugeCount, 0);
   for (std::size_t step = 0; step < in.Times.size(); ++step)
   {
     if (step % 16 == 0)
@@ -1042,12 +1107,39 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     used->InsertNextValue(result.StationsUsed);
     weighted->InsertNextValue(result.StationsWeighted);
     covered->InsertNextValue(result.CoveredFraction);
+    for (const std::int32_t g : result.Gauges)
+    {
+      everWeighted[static_cast<std::size_t>(g)] = 1;
+    }
     if (this->WeightsTable)
     {
       weightRows.Append(in.Times[step], result, in.Values[step]);
     }
   }
   weightRows.Fill(in.Weights);
+  // Gauges with values whose tiles never reach the catchment (those without values, and gauges at
+  // the place of another, are reported above).
+  std::vector<char> reported(gaugeCount, 1);
+  for (const std::int32_t g : unobserved)
+  {
+    reported[static_cast<std::size_t>(g)] = 0;
+  }
+  for (const std::int32_t g : duplicates)
+  {
+    reported[static_cast<std::size_t>(g)] = 0;
+  }
+  std::vector<std::int32_t> unweighted;
+  for (std::size_t g = 0; g < gaugeCount; ++g)
+  {
+    if (reported[g] && !everWeighted[g])
+    {
+      unweighted.push_back(static_cast<std::int32_t>(g));
+    }
+  }
+  warnOf(unweighted.size(),
+    "gauge(s) have observed values, but their tiles never reach the catchment at any step, so "
+    "they are never weighted (listed in UnweightedGaugeIds)",
+    [&](std::size_t k) { return idOf(static_cast<std::size_t>(unweighted[k])); });
   in.Summary->Initialize();
   in.Summary->AddColumn(timeColumn);
   in.Summary->AddColumn(means);
@@ -1055,6 +1147,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   in.Summary->AddColumn(weighted);
   in.Summary->AddColumn(covered);
   tessera_vtk::AddIdFieldArray(in.Summary, "UnobservedGaugeIds", unobserved);
+  tessera_vtk::AddIdFieldArray(in.Summary, "UnweightedGaugeIds", unweighted);
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateGaugeIds", duplicates);
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateOfGaugeIds", duplicateOf);
   tessera_vtk::AddIdFieldArray(in.Summary, "RepeatedObservationRows", repeatedRows);

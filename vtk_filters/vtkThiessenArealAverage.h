@@ -89,11 +89,15 @@
  * observation rows of station ids that no gauge has (each id with its number of rows and first
  * row), rows without a station id or a time (by row), a station id given to several gauges (its
  * observations go to the first), observation rows repeating the station and time of an earlier
- * row that had a value (the earlier value is used), and co-located gauges (within 1 cm once
- * projected; the first is kept and its value used). Output 1's field data lists the gauges and
- * rows among them: `UnobservedGaugeIds`, `DuplicateGaugeIds`, `DuplicateOfGaugeIds`,
+ * row that had a value (the earlier value is used), co-located gauges (within 1 cm once
+ * projected; the first is kept and its value used), and gauges with observed values whose tiles
+ * never reach the catchment at any step. Output 1's field data lists the gauges and rows among
+ * them: `UnobservedGaugeIds`, `DuplicateGaugeIds`, `DuplicateOfGaugeIds`, `UnweightedGaugeIds`,
  * `RepeatedObservationRows` and `UnusedObservationRows` (rows not used: no station id, no time,
- * or a station no gauge has; table rows, from 0).
+ * or a station no gauge has; table rows, from 0). Two more warnings flag input that is used but
+ * may not be what was meant: no gauge inside the catchment (a sign of swapped or unsigned
+ * coordinates), and a catchment ring inside a ring of another block (in vtkGDALVectorReader's
+ * output, a feature inside another feature), which the even-odd rule makes a hole.
  *
  * A gauge with a NaN or out-of-range coordinate (latitude beyond 90 degrees, longitude beyond 360,
  * or beyond what ProjectionRecord's projection represents) and a self-intersecting catchment are

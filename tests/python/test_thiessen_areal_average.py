@@ -185,6 +185,62 @@ def test_an_unobserved_gauge_without_a_station_id_is_named_by_its_point():
     assert_that(len(named) == 1 and "never used: gauge 1 (no station id)" in named[0], f"{warnings}")
 
 
+def test_gauges_never_weighted_and_no_gauge_inside_are_reported():
+    """A gauge whose tile never reaches the catchment is named (and listed in UnweightedGaugeIds);
+    gauges all outside the catchment (a west longitude without its minus sign) get a warning."""
+    f = vtkThiessenArealAverage()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    # a, b, c, d share the square; far's tile (beyond 3) never reaches it; unseen never reports.
+    f.SetGaugesData(gauges_polydata([(-0.5, -0.5), (0.5, -0.5), (0.5, 0.5), (-0.5, 0.5), (6, 0), (7, 0)],
+                                    ["a", "b", "c", "d", "far", "unseen"]))
+    f.SetCatchmentData(polygon([[(-1, -1), (1, -1), (1, 1), (-1, 1)]]))
+    f.SetObservationsData(observations_table({(2000, 1): {"a": 1.0, "b": 2.0, "c": 3.0, "d": 4.0, "far": 9.0},
+                                              (2000, 2): {"a": 1.0, "far": 9.0}}))
+    f.Update(1)
+    assert_that(summary_column(f, "ArealMean") == [2.5, 1.0], f"means {summary_column(f, 'ArealMean')}")
+    ids = f.GetOutputDataObject(1).GetFieldData().GetArray("UnweightedGaugeIds")
+    assert_that([ids.GetValue(i) for i in range(ids.GetNumberOfTuples())] == [4], "far never weighted")
+    named = [w for w in warnings if "never weighted" in w]
+    assert_that(len(named) == 1 and named[0].rstrip().endswith("(listed in UnweightedGaugeIds): far"),
+                f"{warnings}")
+    assert_that(not any("none of the" in w for w in warnings), f"gauges are inside: {warnings}")
+    # Every gauge east of the catchment: the means come from gauges outside it, and it is said.
+    g = vtkThiessenArealAverage()
+    outside = messages_of(g, vtkCommand.WarningEvent)
+    g.SetGaugesData(gauges_polydata([(105.0, 39.0), (104.0, 38.0)], ["a", "b"], [1.0, 2.0]))
+    g.SetCatchmentData(polygon([[(-109, 37), (-102, 37), (-102, 41), (-109, 41)]]))
+    g.Update(1)
+    said = [w for w in outside if "none of the 2 gauges lies inside the catchment" in w]
+    assert_that(len(said) == 1 and "minus sign" in said[0], f"{outside}")
+
+
+def test_a_catchment_ring_inside_another_blocks_ring_is_reported():
+    """vtkGDALVectorReader gives each feature a block: a sub-basin given beside its basin is cut out
+    as a hole by the even-odd rule, and a warning names it; a hole in its polygon's block is not."""
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+
+    basin = [(-1, -1), (1, -1), (1, 1), (-1, 1)]
+    sub = [(-0.5, -0.5), (0.5, -0.5), (0.5, 0.5), (-0.5, 0.5)]
+    for blocks, expected in (([[basin], [sub]], 1), ([[basin, sub]], 0), ([[basin], [[(2, 2), (3, 2), (3, 3)]]], 0)):
+        catchment = vtkMultiBlockDataSet()
+        for k, rings in enumerate(blocks):
+            catchment.SetBlock(k, polygon(rings))
+        f = vtkThiessenArealAverage()
+        warnings = messages_of(f, vtkCommand.WarningEvent)
+        f.SetGaugesData(gauges_polydata([(-0.75, 0.0), (0.75, 0.0)], ["w", "e"], [1.0, 3.0]))
+        f.SetCatchmentData(catchment)
+        f.Update(1)
+        if sub in blocks[-1]:
+            # Either way the even-odd rule holds: the inner square is a hole (both halves alike).
+            assert_close(summary_column(f, "ArealMean")[0], 2.0, 1e-9, f"mean of {len(blocks)} block(s)")
+        said = [w for w in warnings if "inside a ring of another block" in w]
+        assert_that(len(said) == expected, f"{len(blocks)} block(s): {warnings}")
+        if expected:
+            # (blocks by flat index, as in the filters' other messages: the root is 0)
+            assert_that("): 1 catchment ring(s)" in said[0]
+                        and "ring 1 (block 2) inside ring 0 (block 1)" in said[0], said[0])
+
+
 def test_bad_gauge_and_self_intersecting_catchment_are_named():
     f = vtkThiessenArealAverage()
     messages = messages_of(f)
@@ -1035,6 +1091,8 @@ if __name__ == "__main__":
          test_colorado_months_match_a_brute_force_raster,
          test_missing_steps_and_unused_input_are_reported,
          test_an_unobserved_gauge_without_a_station_id_is_named_by_its_point,
+         test_gauges_never_weighted_and_no_gauge_inside_are_reported,
+         test_a_catchment_ring_inside_another_blocks_ring_is_reported,
          test_bad_gauge_and_self_intersecting_catchment_are_named,
          test_window_clip_of_projected_tiles_sums_to_the_catchment,
          test_window_clip_names_a_non_convex_tile,
