@@ -15,6 +15,10 @@
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkStringArray.h"
+#include "vtkCellData.h"
+#include "vtkCellType.h"
+#include "vtkPointData.h"
+#include "vtkPointSet.h"
 
 #include "errors.h"
 #include "large_pages.h"
@@ -368,6 +372,137 @@ void AppendPolygonRings(vtkPolyData* poly, const std::string& block, Rings& ring
   }
 }
 } // namespace
+
+namespace
+{
+/// Per point of a point set whose cells are one vertex per point, that vertex's cell (its
+/// attributes' row); empty when its cells are anything else.
+std::vector<vtkIdType> VertexCellOfPoint(vtkPointSet* leaf)
+{
+  const vtkIdType n = leaf->GetNumberOfPoints();
+  if (leaf->GetNumberOfCells() != n)
+  {
+    return {};
+  }
+  std::vector<vtkIdType> cellOf(static_cast<std::size_t>(n), -1);
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < n; ++c)
+  {
+    if (leaf->GetCellType(c) != VTK_VERTEX)
+    {
+      return {};
+    }
+    leaf->GetCellPoints(c, ids);
+    const vtkIdType p = ids->GetNumberOfIds() == 1 ? ids->GetId(0) : -1;
+    if (p < 0 || p >= n || cellOf[static_cast<std::size_t>(p)] >= 0)
+    {
+      return {};
+    }
+    cellOf[static_cast<std::size_t>(p)] = c;
+  }
+  return cellOf;
+}
+
+/// The array `name` of a leaf: its point data's, else (vertex cells only) its cell data's, with
+/// the row of each point in rowOf (empty: the point's own id).
+vtkAbstractArray* LeafArray(vtkPointSet* leaf,
+  const std::string& name,
+  const std::vector<vtkIdType>& cellOf,
+  const std::vector<vtkIdType>** rowOf)
+{
+  static const std::vector<vtkIdType> none;
+  *rowOf = &none;
+  if (vtkAbstractArray* own = leaf->GetPointData()->GetAbstractArray(name.c_str()))
+  {
+    return own;
+  }
+  if (!cellOf.empty())
+  {
+    *rowOf = &cellOf;
+    return leaf->GetCellData()->GetAbstractArray(name.c_str());
+  }
+  return nullptr;
+}
+} // namespace
+
+vtkSmartPointer<vtkPolyData> MergedPoints(vtkDataObject* data,
+  const std::vector<std::string>& arrays)
+{
+  auto merged = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  merged->SetPoints(points);
+  auto* composite = vtkCompositeDataSet::SafeDownCast(data);
+  if (!composite)
+  {
+    return merged;
+  }
+  std::vector<vtkSmartPointer<vtkAbstractArray>> joined(arrays.size());
+  bool first = true;
+  std::string firstBlock;
+  auto iter = vtk::TakeSmartPointer(composite->NewIterator());
+  for (iter->InitTraversal(); !iter->IsDoneWithTraversal(); iter->GoToNextItem())
+  {
+    const std::string block = "block " + std::to_string(iter->GetCurrentFlatIndex());
+    auto* leaf = vtkPointSet::SafeDownCast(iter->GetCurrentDataObject());
+    if (!leaf)
+    {
+      throw tessera::InputError(block + " of the points is a " +
+        iter->GetCurrentDataObject()->GetClassName() + ", not a point set");
+    }
+    const vtkIdType n = leaf->GetNumberOfPoints();
+    if (n == 0)
+    {
+      continue;
+    }
+    const std::vector<vtkIdType> cellOf = VertexCellOfPoint(leaf);
+    for (std::size_t a = 0; a < arrays.size(); ++a)
+    {
+      const std::vector<vtkIdType>* rowOf = nullptr;
+      vtkAbstractArray* source = LeafArray(leaf, arrays[a], cellOf, &rowOf);
+      if (first && source)
+      {
+        joined[a].TakeReference(source->NewInstance());
+        joined[a]->SetName(arrays[a].c_str());
+        joined[a]->SetNumberOfComponents(source->GetNumberOfComponents());
+      }
+      if (!joined[a])
+      {
+        continue; // the first leaf has none: not joined
+      }
+      if (!source || std::string(source->GetClassName()) != joined[a]->GetClassName() ||
+        source->GetNumberOfComponents() != joined[a]->GetNumberOfComponents())
+      {
+        throw tessera::InputError(block + " of the points " +
+          (source ? std::string("holds '") + arrays[a] + "' as a " + source->GetClassName() +
+                " where " + firstBlock + " holds a " + joined[a]->GetClassName()
+                  : "has no array '" + arrays[a] + "', which " + firstBlock + " has"));
+      }
+      for (vtkIdType p = 0; p < n; ++p)
+      {
+        joined[a]->InsertNextTuple(
+          rowOf->empty() ? p : (*rowOf)[static_cast<std::size_t>(p)], source);
+      }
+    }
+    for (vtkIdType p = 0; p < n; ++p)
+    {
+      points->InsertNextPoint(leaf->GetPoint(p));
+    }
+    if (first)
+    {
+      firstBlock = block;
+      first = false;
+    }
+  }
+  for (const auto& array : joined)
+  {
+    if (array)
+    {
+      merged->GetPointData()->AddArray(array);
+    }
+  }
+  return merged;
+}
 
 Rings ReadPolygonRings(vtkDataObject* data)
 {

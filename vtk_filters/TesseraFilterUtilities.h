@@ -20,6 +20,7 @@ class vtkDataObject;
 class vtkFieldData;
 class vtkPoints;
 class vtkPointSet;
+class vtkPolyData;
 
 namespace tessera_vtk
 {
@@ -30,6 +31,15 @@ std::vector<tessera::Point2> CopyPoints2D(vtkPoints* points);
 
 /// CopyPoints2D, throwing tessera::InputError naming the first point with a NaN or infinite x or y.
 std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points);
+
+/// The points of every vtkPointSet leaf of a composite data set, in the leaves' order, as one
+/// vtkPolyData (points only, no cells), with the point-data arrays named in `arrays` that the
+/// first leaf with points has, joined over the leaves. A leaf whose cells are one vertex per point
+/// (a feature of vtkGDALVectorReader's point layer: its attributes are cell data) gives its
+/// cell-data array of that name instead. Throws tessera::InputError naming the block for a leaf
+/// that is not a point set, or that lacks an array the first one has or holds it in another type.
+vtkSmartPointer<vtkPolyData> MergedPoints(vtkDataObject* data,
+  const std::vector<std::string>& arrays);
 
 /// The window a filter works in: the rectangle `bounds` (xmin, xmax, ymin, ymax) when it is not
 /// empty, intersected with `constraints` (a, b, c triples: a*x + b*y + c < 0); with neither, the

@@ -16,6 +16,8 @@
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -557,6 +559,21 @@ vtkDataObject* UpdatedData(vtkAlgorithmOutput* connection)
   return source->GetOutputDataObject(connection->GetIndex());
 }
 
+/// The latest modification time of a data object and, for a composite one, of its blocks.
+vtkMTimeType LatestMTime(vtkDataObject* data)
+{
+  vtkMTimeType latest = data->GetMTime();
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    auto iter = vtk::TakeSmartPointer(composite->NewIterator());
+    for (iter->InitTraversal(); !iter->IsDoneWithTraversal(); iter->GoToNextItem())
+    {
+      latest = std::max(latest, iter->GetCurrentDataObject()->GetMTime());
+    }
+  }
+  return latest;
+}
+
 /// The modification time of a table's column, 0 when it has none.
 vtkMTimeType ColumnMTime(vtkTable* table, const std::string& column)
 {
@@ -646,6 +663,14 @@ std::string RingsInsideOtherBlocksWarning(const tessera_vtk::Rings& rings,
 struct vtkThiessenArealAverage::Internals
 {
   vtkMTimeType BuiltFor = 0;
+  /// Gauges given as a composite data set (a point GeoJSON or shapefile read by
+  /// vtkGDALVectorReader: a block per gauge) are joined into one point set, kept while the
+  /// composite, its blocks and the array names are unchanged, so that its modification time, and
+  /// with it the results above, last as a plain point set's would.
+  vtkSmartPointer<vtkPolyData> Joined;
+  vtkDataObject* JoinedFrom = nullptr; ///< compared by address, never dereferenced
+  vtkMTimeType JoinedAt = 0;
+  std::vector<std::string> JoinedArrays;
   std::vector<double> Times;
   std::vector<std::vector<double>> Values; // per step, per gauge; NaN = missing
   std::unique_ptr<tessera::ThiessenArealAverage> Average;
@@ -720,7 +745,10 @@ int vtkThiessenArealAverage::FillInputPortInformation(int port, vtkInformation* 
 {
   if (port == 0)
   {
+    // Points, or a composite of point sets (a point layer from vtkGDALVectorReader: a block per
+    // feature), joined into one set of gauges.
     info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+    info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   }
   else if (port == 1)
   {
@@ -763,13 +791,14 @@ int vtkThiessenArealAverage::RequestInformation(vtkInformation*,
   // the gauges have: the table and the gauges are read now, ahead of RequestData, so that the
   // pipeline (and ParaView's time slider) knows them.
   auto* table = vtkTable::SafeDownCast(UpdatedData(this->GetInputConnection(2, 0)));
-  auto* gauges = vtkPointSet::SafeDownCast(UpdatedData(this->GetInputConnection(0, 0)));
-  if (!table || !gauges)
+  vtkDataObject* gaugesData = UpdatedData(this->GetInputConnection(0, 0));
+  if (!table || !gaugesData)
   {
     return 1;
   }
   try
   {
+    vtkPointSet* gauges = this->GaugesOf(gaugesData);
     vtkAbstractArray* stationIds = this->GaugeStationIds(gauges, true);
     const std::vector<double>& times = this->Internal
                                          ->CachedRows(table,
@@ -806,7 +835,7 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkPointSet* gauges = vtkPointSet::GetData(inputVector[0]);
+  vtkDataObject* gaugesData = vtkDataObject::GetData(inputVector[0]);
   vtkDataObject* catchment = vtkDataObject::GetData(inputVector[1]);
   vtkTable* observations = vtkTable::GetData(inputVector[2]);
   vtkInformation* tilesInfo = outputVector->GetInformationObject(0);
@@ -816,6 +845,7 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
   Internals& in = *this->Internal;
   try
   {
+    vtkPointSet* gauges = this->GaugesOf(gaugesData);
     vtkAbstractArray* stationIds = this->GaugeStationIds(gauges, observations != nullptr);
     vtkMTimeType stamp = std::max(this->GetMTime(), gauges->GetMTime());
     stamp = std::max(stamp, catchment->GetMTime());
@@ -863,6 +893,32 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
     this->DiscardResults(outputVector);
     return 0;
   }
+}
+
+//------------------------------------------------------------------------------
+vtkPointSet* vtkThiessenArealAverage::GaugesOf(vtkDataObject* data)
+{
+  if (auto* points = vtkPointSet::SafeDownCast(data))
+  {
+    return points;
+  }
+  if (!vtkCompositeDataSet::SafeDownCast(data))
+  {
+    throw tessera::InputError(std::string("the gauges (input 0) are a ") +
+      (data ? data->GetClassName() : "nothing") + ", not points");
+  }
+  Internals& in = *this->Internal;
+  const std::vector<std::string> arrays{ this->StationIdArrayName, this->ValueArrayName };
+  const vtkMTimeType latest = LatestMTime(data);
+  if (!in.Joined || in.JoinedFrom != data || in.JoinedAt != latest || in.JoinedArrays != arrays)
+  {
+    in.Joined = nullptr; // until the join succeeds
+    in.Joined = tessera_vtk::MergedPoints(data, arrays);
+    in.JoinedFrom = data;
+    in.JoinedAt = latest;
+    in.JoinedArrays = arrays;
+  }
+  return in.Joined;
 }
 
 //------------------------------------------------------------------------------

@@ -12,7 +12,10 @@
  *
  * Inputs:
  * - port 0, gauges: a vtkPointSet with x = longitude, y = latitude (degrees, WGS84) and a
- *   point-data array of station ids (StationIdArrayName, default "station_id");
+ *   point-data array of station ids (StationIdArrayName, default "station_id"), or a composite
+ *   data set of point sets, whose points are joined in block order (gauge g is the g-th of them):
+ *   a point GeoJSON or shapefile read by vtkGDALVectorReader (a block per gauge, its attributes
+ *   as the cell data of its vertex, which is then taken as the point's);
  * - port 1, catchment: polygons or closed polylines in lon/lat (vtkPolyData, or a composite data
  * set such as vtkGDALVectorReader's output), or lines that join end to end into closed rings,
  * taken as rings under the even-odd rule (other cells, such as lines in no closed ring, are
@@ -249,6 +252,9 @@ private:
     vtkAbstractArray* stationIds,
     vtkDataObject* catchment,
     vtkTable* observations);
+  /// The gauges as one point set: input 0 itself, or its blocks' points joined (kept in the
+  /// internals while unchanged). Throws InputError for input that is neither.
+  vtkPointSet* GaugesOf(vtkDataObject* data);
   /// The gauges' point-data array StationIdArrayName; an InputError naming it when it is missing
   /// and required (to match observations with).
   vtkAbstractArray* GaugeStationIds(vtkPointSet* gauges, bool required);

@@ -241,6 +241,54 @@ def test_a_catchment_ring_inside_another_blocks_ring_is_reported():
                         and "ring 1 (block 2) inside ring 0 (block 1)" in said[0], said[0])
 
 
+def test_gauges_in_blocks_as_a_point_layer_gives_them_are_joined():
+    """A point GeoJSON or shapefile read by vtkGDALVectorReader is a multiblock with a block per
+    gauge, its attributes the cell data of its vertex: the gauges are joined in block order and
+    give what the same gauges as one point set give (the filter crashed in ParaView on them)."""
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+
+    coords = [(-0.5, -0.5), (0.5, -0.5), (0.5, 0.5), (-0.5, 0.5), (0.1, 0.2)]
+    names = ["a", "b", "c", "d", "e"]
+    months = {(2000, 1): {"a": 1.0, "b": 2.0, "c": 3.0, "d": 4.0, "e": 10.0}, (2000, 2): {"b": 5.0, "e": 1.0}}
+    blocks = vtkMultiBlockDataSet()
+    for k, ((lon, lat), name) in enumerate(zip(coords, names)):
+        leaf = vtkPolyData()
+        points = vtkPoints()
+        points.SetDataTypeToDouble()
+        points.InsertNextPoint(lon, lat, 0.0)
+        leaf.SetPoints(points)
+        verts = vtkCellArray()
+        verts.InsertNextCell(1, [0])
+        leaf.SetVerts(verts)
+        station = vtkStringArray()
+        station.SetName("station_id")
+        station.InsertNextValue(name)
+        leaf.GetCellData().AddArray(station)
+        blocks.SetBlock(k, leaf)
+    results = []
+    for gauges in (gauges_polydata(coords, names), blocks):
+        f = vtkThiessenArealAverage()
+        errors = messages_of(f)
+        f.SetGaugesData(gauges)
+        f.SetCatchmentData(polygon([[(-1, -1), (1, -1), (1, 1), (-1, 1)]]))
+        f.SetObservationsData(observations_table(months))
+        f.Update(1)
+        assert_that(not errors, f"{gauges.GetClassName()}: {errors}")
+        f.Update(0)
+        results.append((summary_column(f, "ArealMean"), sorted(weights_by_gauge(f.GetOutputDataObject(0)).items())))
+    assert_that(results[0] == results[1] and len(results[0][1]) == 5, f"point set {results[0]}, blocks {results[1]}")
+    # A block without the station ids is named.
+    blocks.GetBlock(3).GetCellData().RemoveArray("station_id")
+    f = vtkThiessenArealAverage()
+    errors = messages_of(f)
+    f.SetGaugesData(blocks)
+    f.SetCatchmentData(polygon([[(-1, -1), (1, -1), (1, 1), (-1, 1)]]))
+    f.SetObservationsData(observations_table(months))
+    f.Update(1)
+    assert_that(len(errors) == 1 and "block 4 of the points has no array 'station_id', which block 1 has" in errors[0],
+                f"{errors}")
+
+
 def test_bad_gauge_and_self_intersecting_catchment_are_named():
     f = vtkThiessenArealAverage()
     messages = messages_of(f)
@@ -1093,6 +1141,7 @@ if __name__ == "__main__":
          test_an_unobserved_gauge_without_a_station_id_is_named_by_its_point,
          test_gauges_never_weighted_and_no_gauge_inside_are_reported,
          test_a_catchment_ring_inside_another_blocks_ring_is_reported,
+         test_gauges_in_blocks_as_a_point_layer_gives_them_are_joined,
          test_bad_gauge_and_self_intersecting_catchment_are_named,
          test_window_clip_of_projected_tiles_sums_to_the_catchment,
          test_window_clip_names_a_non_convex_tile,
