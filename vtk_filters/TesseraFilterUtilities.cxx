@@ -423,7 +423,46 @@ vtkAbstractArray* LeafArray(vtkPointSet* leaf,
   }
   return nullptr;
 }
+/// The names of a leaf's point-data arrays and, with its vertices' cell data, of those cell-data
+/// arrays that no point-data array shares a name with.
+std::vector<std::string> ArrayNames(vtkPointSet* leaf, bool withCellData)
+{
+  std::vector<std::string> names;
+  for (vtkFieldData* data : { static_cast<vtkFieldData*>(leaf->GetPointData()),
+         static_cast<vtkFieldData*>(leaf->GetCellData()) })
+  {
+    for (int k = 0; k < data->GetNumberOfArrays(); ++k)
+    {
+      const char* name = data->GetAbstractArray(k)->GetName();
+      if (name && *name && std::find(names.begin(), names.end(), name) == names.end())
+      {
+        names.emplace_back(name);
+      }
+    }
+    if (!withCellData)
+    {
+      break;
+    }
+  }
+  return names;
+}
 } // namespace
+
+vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data)
+{
+  if (auto* points = vtkPointSet::SafeDownCast(data))
+  {
+    return points;
+  }
+  if (vtkCompositeDataSet::SafeDownCast(data))
+  {
+    return MergedPoints(data, {});
+  }
+  throw tessera::InputError(std::string("the input is ") +
+    (data ? std::string("a ") + data->GetClassName() : std::string("missing")) +
+    ", not points: a vtkPointSet (vtkPolyData, vtkUnstructuredGrid, ...) or a composite data set "
+    "of them is needed");
+}
 
 vtkSmartPointer<vtkPolyData> MergedPoints(vtkDataObject* data,
   const std::vector<std::string>& arrays)
@@ -437,6 +476,7 @@ vtkSmartPointer<vtkPolyData> MergedPoints(vtkDataObject* data,
   {
     return merged;
   }
+  std::vector<std::string> names = arrays;
   std::vector<vtkSmartPointer<vtkAbstractArray>> joined(arrays.size());
   bool first = true;
   std::string firstBlock;
@@ -456,14 +496,19 @@ vtkSmartPointer<vtkPolyData> MergedPoints(vtkDataObject* data,
       continue;
     }
     const std::vector<vtkIdType> cellOf = VertexCellOfPoint(leaf);
-    for (std::size_t a = 0; a < arrays.size(); ++a)
+    if (first && arrays.empty())
+    {
+      names = ArrayNames(leaf, !cellOf.empty());
+      joined.resize(names.size());
+    }
+    for (std::size_t a = 0; a < names.size(); ++a)
     {
       const std::vector<vtkIdType>* rowOf = nullptr;
-      vtkAbstractArray* source = LeafArray(leaf, arrays[a], cellOf, &rowOf);
+      vtkAbstractArray* source = LeafArray(leaf, names[a], cellOf, &rowOf);
       if (first && source)
       {
         joined[a].TakeReference(source->NewInstance());
-        joined[a]->SetName(arrays[a].c_str());
+        joined[a]->SetName(names[a].c_str());
         joined[a]->SetNumberOfComponents(source->GetNumberOfComponents());
       }
       if (!joined[a])
@@ -474,9 +519,9 @@ vtkSmartPointer<vtkPolyData> MergedPoints(vtkDataObject* data,
         source->GetNumberOfComponents() != joined[a]->GetNumberOfComponents())
       {
         throw tessera::InputError(block + " of the points " +
-          (source ? std::string("holds '") + arrays[a] + "' as a " + source->GetClassName() +
+          (source ? std::string("holds '") + names[a] + "' as a " + source->GetClassName() +
                 " where " + firstBlock + " holds a " + joined[a]->GetClassName()
-                  : "has no array '" + arrays[a] + "', which " + firstBlock + " has"));
+                  : "has no array '" + names[a] + "', which " + firstBlock + " has"));
       }
       for (vtkIdType p = 0; p < n; ++p)
       {

@@ -33,13 +33,21 @@ std::vector<tessera::Point2> CopyPoints2D(vtkPoints* points);
 std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points);
 
 /// The points of every vtkPointSet leaf of a composite data set, in the leaves' order, as one
-/// vtkPolyData (points only, no cells), with the point-data arrays named in `arrays` that the
-/// first leaf with points has, joined over the leaves. A leaf whose cells are one vertex per point
-/// (a feature of vtkGDALVectorReader's point layer: its attributes are cell data) gives its
-/// cell-data array of that name instead. Throws tessera::InputError naming the block for a leaf
+/// vtkPolyData (points only, no cells), with the point-data arrays named in `arrays` (empty: all)
+/// that the first leaf with points has, joined over the leaves. A leaf whose cells are one vertex
+/// per point (a feature of vtkGDALVectorReader's point layer: its attributes are cell data) gives
+/// its cell-data array of that name instead. Throws tessera::InputError naming the block for a leaf
 /// that is not a point set, or that lacks an array the first one has or holds it in another type.
 vtkSmartPointer<vtkPolyData> MergedPoints(vtkDataObject* data,
   const std::vector<std::string>& arrays);
+
+/// A point filter's input as one point set: a vtkPointSet itself, or a composite data set's
+/// points joined by MergedPoints with all their arrays (so that a point layer read by
+/// vtkGDALVectorReader, a block per feature, is one set of points, not a tessellation per
+/// point). Throws tessera::InputError naming the type of any other input: the filters take
+/// every type at their port and check it here, so that a wrong one empties their outputs (the
+/// pipeline's own type check stops before RequestData and left the last results in place).
+vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data);
 
 /// The window a filter works in: the rectangle `bounds` (xmin, xmax, ymin, ymax) when it is not
 /// empty, intersected with `constraints` (a, b, c triples: a*x + b*y + c < 0); with neither, the

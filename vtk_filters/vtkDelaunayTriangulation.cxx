@@ -87,7 +87,9 @@ void vtkDelaunayTriangulation::RemoveAllWindowConstraints()
 //------------------------------------------------------------------------------
 int vtkDelaunayTriangulation::FillInputPortInformation(int, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  // Any data object: InputPoints takes points or a composite of them and names any other type
+  // (a type the pipeline refused never reached RequestData, and the last results stayed).
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
   return 1;
 }
 
@@ -96,10 +98,11 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkDataObject* inputData = vtkDataObject::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   try
   {
+    const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(inputData);
     std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
     tessera::Window window = tessera_vtk::ChooseWindow(
       this->WindowBounds, this->WindowConstraints, this->Padding, points, false);

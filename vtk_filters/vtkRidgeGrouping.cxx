@@ -84,7 +84,9 @@ vtkRidgeGrouping::vtkRidgeGrouping()
 
 int vtkRidgeGrouping::FillInputPortInformation(int, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+  // Any data object: InputPoints takes points or a composite of them and names any other type
+  // (a type the pipeline refused never reached RequestData, and the last results stayed).
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
   return 1;
 }
 
@@ -99,13 +101,14 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkPointSet* input = vtkPointSet::GetData(inputVector[0]);
+  vtkDataObject* inputData = vtkDataObject::GetData(inputVector[0]);
   vtkPolyData* pointsOut = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* contoursOut = vtkPolyData::GetData(outputVector, 1);
   vtkPolyData* curvesOut = vtkPolyData::GetData(outputVector, 2);
   vtkImageData* imageOut = vtkImageData::GetData(outputVector, 3);
   try
   {
+    const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(inputData);
     const std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
     tessera::RidgeGroupingSettings settings;
     settings.Basis = this->Basis == GAUSSIAN ? tessera::RadialBasis::Gaussian

@@ -747,8 +747,9 @@ int vtkThiessenArealAverage::FillInputPortInformation(int port, vtkInformation* 
   {
     // Points, or a composite of point sets (a point layer from vtkGDALVectorReader: a block per
     // feature), joined into one set of gauges.
-    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
-    info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
+    // (any type at all: GaugesOf names one that is neither, where the pipeline's own check would
+    // stop before RequestData and leave the last results in place)
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
   }
   else if (port == 1)
   {
@@ -756,7 +757,7 @@ int vtkThiessenArealAverage::FillInputPortInformation(int port, vtkInformation* 
   }
   else
   {
-    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkTable");
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject"); // a table: RequestData
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   }
   return 1;
@@ -837,7 +838,8 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
 {
   vtkDataObject* gaugesData = vtkDataObject::GetData(inputVector[0]);
   vtkDataObject* catchment = vtkDataObject::GetData(inputVector[1]);
-  vtkTable* observations = vtkTable::GetData(inputVector[2]);
+  vtkDataObject* observationsData = vtkDataObject::GetData(inputVector[2]);
+  vtkTable* observations = vtkTable::SafeDownCast(observationsData);
   vtkInformation* tilesInfo = outputVector->GetInformationObject(0);
   vtkPolyData* tilesOutput = vtkPolyData::GetData(outputVector, 0);
   vtkTable* summaryOutput = vtkTable::GetData(outputVector, 1);
@@ -845,6 +847,11 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
   Internals& in = *this->Internal;
   try
   {
+    if (observationsData && !observations)
+    {
+      throw tessera::InputError(std::string("the observations (input 2) are a ") +
+        observationsData->GetClassName() + ", not a table");
+    }
     vtkPointSet* gauges = this->GaugesOf(gaugesData);
     vtkAbstractArray* stationIds = this->GaugeStationIds(gauges, observations != nullptr);
     vtkMTimeType stamp = std::max(this->GetMTime(), gauges->GetMTime());

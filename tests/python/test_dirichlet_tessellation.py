@@ -851,6 +851,67 @@ def test_a_coordinate_too_small_for_exact_window_decisions_is_named():
                     f"{algorithm} at {coordinate} in {size}: {messages}")
 
 
+
+def point_layer_blocks(coords, values):
+    """The points as vtkGDALVectorReader gives a point layer: a block per point, one vertex each,
+    its attribute (here "elev") as the vertex's cell data."""
+    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkMultiBlockDataSet, vtkPolyData
+
+    blocks = vtkMultiBlockDataSet()
+    for k, ((x, y), value) in enumerate(zip(coords, values)):
+        points = vtkPoints()
+        points.SetDataTypeToDouble()
+        points.InsertNextPoint(x, y, 0.0)
+        verts = vtkCellArray()
+        verts.InsertNextCell(1, [0])
+        elev = vtkDoubleArray()
+        elev.SetName("elev")
+        elev.InsertNextValue(value)
+        leaf = vtkPolyData()
+        leaf.SetPoints(points)
+        leaf.SetVerts(verts)
+        leaf.GetCellData().AddArray(elev)
+        blocks.SetBlock(k, leaf)
+    return blocks
+
+
+def test_points_in_blocks_are_one_set_and_other_types_empty_the_outputs():
+    """A point layer in blocks (vtkGDALVectorReader's, a block per point) is tessellated and
+    triangulated as one set of points, its attributes carried (each block was tessellated alone:
+    a square per point, no triangle); an input of another type after a good run is an error naming
+    the type and leaves empty outputs (the pipeline's type check left the last results)."""
+    from vtkmodules.vtkCommonCore import vtkCommand
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+
+    rng = np.random.default_rng(5)
+    coords = [tuple(p) for p in rng.random((60, 2))]
+    values = list(rng.random(60))
+    for cls in (vtkDirichletTessellation, vtkDelaunayTriangulation):
+        outputs = []
+        for data in (make_points(coords, elev=values), point_layer_blocks(coords, values)):
+            f = cls()
+            f.SetInputData(data)
+            f.Update()
+            out = f.GetOutputDataObject(0)
+            elev = out.GetCellData().GetArray("elev") or out.GetPointData().GetArray("elev")
+            cells = []
+            for c in range(out.GetNumberOfCells()):
+                ids = out.GetCell(c).GetPointIds()
+                cells.append(tuple(out.GetPoint(ids.GetId(k))[:2] for k in range(ids.GetNumberOfIds())))
+            outputs.append((out.GetClassName(), cells, [elev.GetValue(k) for k in range(elev.GetNumberOfTuples())]))
+        assert_that(outputs[0] == outputs[1] and len(outputs[0][1]) >= 60,
+                    f"{cls.__name__}: {len(outputs[0][1])} cells from one point set, {len(outputs[1][1])} from blocks")
+        image = vtkImageData()
+        image.SetDimensions(3, 3, 1)
+        errors = messages_of(f, vtkCommand.ErrorEvent)
+        f.SetInputData(image)
+        f.Update()
+        out = f.GetOutputDataObject(0)
+        assert_that(out.GetNumberOfCells() == 0 and out.GetNumberOfPoints() == 0,
+                    f"{cls.__name__}: {out.GetNumberOfCells()} cells left after an image")
+        assert_that(any("the input is a vtkImageData, not points" in e for e in errors), f"{errors}")
+
 if __name__ == "__main__":
     run([test_tiles_are_nearest_point_regions,
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
@@ -874,4 +935,5 @@ if __name__ == "__main__":
          test_a_negative_padding_is_an_error,
          test_half_neighbours_need_their_vertex_strictly_inside_the_window,
          test_delaunay_at_any_scale,
-         test_a_coordinate_too_small_for_exact_window_decisions_is_named])
+         test_a_coordinate_too_small_for_exact_window_decisions_is_named,
+         test_points_in_blocks_are_one_set_and_other_types_empty_the_outputs])

@@ -287,6 +287,27 @@ def test_gauges_in_blocks_as_a_point_layer_gives_them_are_joined():
     f.Update(1)
     assert_that(len(errors) == 1 and "block 4 of the points has no array 'station_id', which block 1 has" in errors[0],
                 f"{errors}")
+    # Inputs of another type after a good run: errors naming the type, and nothing left shown.
+    from vtkmodules.vtkCommonDataModel import vtkImageData
+
+    image = vtkImageData()
+    image.SetDimensions(2, 2, 1)
+    for wrong in ("gauges", "observations"):
+        f = vtkThiessenArealAverage()
+        errors = messages_of(f)
+        f.SetGaugesData(gauges_polydata(coords, names))
+        f.SetCatchmentData(polygon([[(-1, -1), (1, -1), (1, 1), (-1, 1)]]))
+        f.SetObservationsData(observations_table(months))
+        f.Update(1)
+        assert_that(f.GetOutputDataObject(1).GetNumberOfRows() == 2 and not errors, f"good run: {errors}")
+        getattr(f, "SetGaugesData" if wrong == "gauges" else "SetObservationsData")(image)
+        f.Update(1)
+        f.UpdateInformation()
+        steps = f.GetOutputInformation(0).Get(vtkStreamingDemandDrivenPipeline.TIME_STEPS())
+        assert_that(f.GetOutputDataObject(1).GetNumberOfRows() == 0 and steps is None,
+                    f"{wrong} as an image: {f.GetOutputDataObject(1).GetNumberOfRows()} rows, steps {steps}")
+        said = "the gauges (input 0) are a vtkImageData" if wrong == "gauges" else "the observations (input 2) are a vtkImageData"
+        assert_that(any(said in e for e in errors), f"{wrong}: {errors}")
 
 
 def test_bad_gauge_and_self_intersecting_catchment_are_named():
