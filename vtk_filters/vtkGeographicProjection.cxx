@@ -210,7 +210,9 @@ tessera::ProjectionKind KindOf(int projection)
 tessera::ProjectionParameters ChooseForwardParameters(vtkGeographicProjection* self,
   const std::vector<tessera::Point2>& lonlat)
 {
-  if (self->GetProjection() == vtkGeographicProjection::AUTOMATIC)
+  // Automatic is the Albers equal-area conic fitted to the data; with ParametersFromData off it
+  // takes the parameters set, as AlbersEqualArea does (they were ignored).
+  if (self->GetProjection() == vtkGeographicProjection::AUTOMATIC && self->GetParametersFromData())
   {
     return tessera::AutomaticParameters(lonlat);
   }
@@ -461,7 +463,7 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
     }
     // Nothing to fit a projection to, or to undo: empty in, empty out (with the structure), no
     // record (an empty forward output has none, so its inverse takes it as it is).
-    const bool fitted = this->Projection == AUTOMATIC || this->ParametersFromData;
+    const bool fitted = this->ParametersFromData;
     const bool none = points == 0 && (this->Inverse || fitted);
     std::unique_ptr<tessera::GeographicProjection> projection;
     std::string record;

@@ -20,7 +20,8 @@
  * - AzimuthalEquidistant about (CentralLongitude, CentralLatitude).
  * With ParametersFromData on (default) the centre and standard parallels come from the data as
  * for Automatic; off, the values set with SetCentralLongitude, SetCentralLatitude and
- * SetStandardParallels are used.
+ * SetStandardParallels are used, by Automatic too (it is then the Albers equal-area conic with
+ * them).
  *
  * Longitudes are angles: the data's extent is the shortest longitude arc that holds it, so a set
  * crossing the antimeridian (e.g. 165..181.6) is handled, and the inverse returns longitudes

@@ -213,6 +213,34 @@ def test_an_edge_that_reads_both_ways_round_the_globe_is_reported():
             assert_that(not warnings, f"{west}: {warnings}")
 
 
+
+def test_automatic_with_parameters_set_is_their_albers_conic():
+    """Automatic is the Albers equal-area conic fitted to the data; with ParametersFromData off it
+    takes the parameters set, forward and inverse (they were ignored: the inverse of metres fitted
+    a conic to them as if they were degrees and gave (20.0001, 30.2264) for (10, 20) m)."""
+    lonlat = [(-105.0, 39.0), (-104.2, 40.1), (-106.3, 38.2)]
+
+    def projected(kind, source, inverse=False):
+        f = vtkGeographicProjection()
+        getattr(f, "SetProjectionTo" + kind)()
+        f.ParametersFromDataOff()
+        f.SetCentralLongitude(-104.5)
+        f.SetCentralLatitude(39.5)
+        f.SetStandardParallels(39.17, 39.83)
+        f.SetInverse(inverse)
+        f.SetInputData(source)
+        f.Update()
+        out = f.GetOutput()
+        return [out.GetPoint(k)[:2] for k in range(out.GetNumberOfPoints())]
+
+    albers = projected("AlbersEqualArea", make_points(lonlat))
+    automatic = projected("Automatic", make_points(lonlat))
+    assert_that(automatic == albers, f"Automatic {automatic}, AlbersEqualArea {albers}")
+    back = projected("Automatic", make_points(albers), inverse=True)
+    for (lon, lat), (x, y) in zip(lonlat, back):
+        assert_close(x, lon, 1e-9, "longitude back")
+        assert_close(y, lat, 1e-9, "latitude back")
+
 if __name__ == "__main__":
     run([test_round_trip_of_the_colorado_gauges,
          test_azimuthal_equidistant_keeps_distances_from_the_centre,
@@ -220,4 +248,5 @@ if __name__ == "__main__":
          test_the_blocks_of_a_composite_share_one_projection,
          test_no_points_give_an_empty_output_without_error,
          test_an_edge_cut_into_the_most_pieces_is_reported,
-         test_an_edge_that_reads_both_ways_round_the_globe_is_reported])
+         test_an_edge_that_reads_both_ways_round_the_globe_is_reported,
+         test_automatic_with_parameters_set_is_their_albers_conic])
