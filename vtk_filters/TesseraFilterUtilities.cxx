@@ -168,7 +168,7 @@ std::string ProjectionRecordOf(vtkDataObject* data, const std::string& what)
   return record;
 }
 
-std::string EmptyBoundsWarning(const double bounds[4])
+std::string EmptyBoundsWarning(const double bounds[4], bool withConstraints)
 {
   const bool unset = bounds[0] == 0.0 && bounds[1] == 0.0 && bounds[2] == 0.0 && bounds[3] == 0.0;
   if (unset || (bounds[0] < bounds[1] && bounds[2] < bounds[3]))
@@ -177,8 +177,9 @@ std::string EmptyBoundsWarning(const double bounds[4])
   }
   return "WindowBounds (xmin, xmax, ymin, ymax = " + BoundsText(bounds) +
     ") is an empty rectangle (" + (bounds[0] >= bounds[1] ? "xmin >= xmax" : "ymin >= ymax") +
-    "), so it is ignored: the window is the padded bounding box of the points (cut by any window "
-    "constraints). Were the bounds given in another order, such as (xmin, ymin, xmax, ymax)?";
+    "), so it is ignored: the window is " +
+    (withConstraints ? "the window constraints alone" : "the padded bounding box of the points") +
+    ". Were the bounds given in another order, such as (xmin, ymin, xmax, ymax)?";
 }
 
 tessera::Window ChooseWindow(const double bounds[4],

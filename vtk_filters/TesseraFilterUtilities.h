@@ -65,8 +65,9 @@ tessera::Window ChooseWindow(const double bounds[4],
 
 /// A warning for WindowBounds set to an empty rectangle (xmin >= xmax or ymin >= ymax, most likely
 /// arguments in another order, such as (xmin, ymin, xmax, ymax)), which ChooseWindow ignores;
-/// empty when there is none. The default 0, 0, 0, 0 ("no rectangle") gives none.
-std::string EmptyBoundsWarning(const double bounds[4]);
+/// empty when there is none. The default 0, 0, 0, 0 ("no rectangle") gives none. withConstraints:
+/// whether window constraints are set (the window is then those alone).
+std::string EmptyBoundsWarning(const double bounds[4], bool withConstraints);
 
 /// Adds an id array (vtkIdTypeArray, one component) named `name` to the data object's field data.
 void AddIdFieldArray(vtkDataObject* data, const char* name, const std::vector<std::int32_t>& ids);

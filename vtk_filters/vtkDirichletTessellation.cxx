@@ -412,7 +412,8 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
     tessera::Window window =
       tessera_vtk::ChooseWindow(this->WindowBounds, this->WindowConstraints, this->Padding, points);
-    const std::string emptyBounds = tessera_vtk::EmptyBoundsWarning(this->WindowBounds);
+    const std::string emptyBounds =
+      tessera_vtk::EmptyBoundsWarning(this->WindowBounds, !this->WindowConstraints.empty());
     if (!emptyBounds.empty())
     {
       vtkWarningMacro(<< emptyBounds);

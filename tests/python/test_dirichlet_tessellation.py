@@ -581,7 +581,8 @@ def test_empty_window_bounds_warn_and_leave_the_automatic_window():
         f.SetWindowBounds(0.0, 0.0, 1.0, 1.0)  # (xmin, ymin, xmax, ymax) read as (xmin, xmax, ...)
         f.Update()
         assert_that(len(warnings) == 1 and "xmin >= xmax" in warnings[0] and "(xmin, ymin, xmax, ymax)"
-                    in warnings[0], f"{what}: {warnings}")
+                    in warnings[0] and "the window is the padded bounding box of the points" in warnings[0],
+                    f"{what}: {warnings}")
         assert_that(f.GetOutput().GetNumberOfCells() == cells, f"{what}: output changed")
         f.SetWindowBounds(0.0, 1.0, 1.0, 0.5)
         f.Update()
@@ -592,6 +593,13 @@ def test_empty_window_bounds_warn_and_leave_the_automatic_window():
         f.SetWindowBounds(0.0, 0.0, 0.0, 0.0)
         f.Update()
         assert_that(len(warnings) == 2, f"{what}: a rectangle or the default warned {warnings[2:]}")
+        # With constraints, an empty rectangle leaves the constraints alone as the window.
+        for a, b, c in ((1, 0, -1), (-1, 0, 0), (0, 1, -1), (0, -1, 0)):
+            f.AddWindowConstraint(a, b, c)
+        f.SetWindowBounds(0.0, 0.0, 1.0, 1.0)
+        f.Update()
+        assert_that(len(warnings) == 3 and "the window is the window constraints alone" in warnings[2],
+                    f"{what}: {warnings[2:]}")
     d = vtkDelaunayTriangulation()
     assert_that(d.GetNumberOfWindowConstraints() == 0, "no constraint yet")
     d.AddWindowConstraint(1.0, 0.0, -2.0)
