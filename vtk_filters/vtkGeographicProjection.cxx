@@ -65,6 +65,9 @@ struct DensifyReport
   vtkIdType Capped = 0;
   vtkIdType Wrapped = 0;
   std::string FirstWrapped;
+  /// Pieces whose global ids were not carried (new points have none), and the first's label.
+  vtkIdType GlobalIdsDropped = 0;
+  std::string FirstGlobalIds;
 };
 
 /// Cuts the line and polygon edges of lon/lat poly data so that no piece is longer than maxStep
@@ -102,6 +105,23 @@ public:
     this->Output->SetPolys(this->DensifyCells(this->Input->GetPolys(), true));
     this->Output->SetPoints(this->Points);
     this->Output->GetCellData()->PassData(this->Input->GetCellData());
+    vtkPointData* inputData = this->Input->GetPointData();
+    if (this->Points->GetNumberOfPoints() == this->Input->GetNumberOfPoints())
+    {
+      // Nothing was cut (points, vertices, short edges): the point data as it is, with its roles.
+      // (Copying tuples leaves out global ids, which must stay unique: the README's gauges lost
+      // theirs on the way to the tiles.)
+      this->Output->GetPointData()->Initialize();
+      this->Output->GetPointData()->PassData(inputData);
+    }
+    else if (vtkDataArray* ids = inputData->GetGlobalIds())
+    {
+      if (this->Report.GlobalIdsDropped++ == 0)
+      {
+        this->Report.FirstGlobalIds = (this->Label.empty() ? std::string() : this->Label + ": ") +
+          "'" + (ids->GetName() ? ids->GetName() : "") + "'";
+      }
+    }
   }
 
 private:
@@ -484,6 +504,14 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
                       << " pieces, the most allowed: their pieces are longer than "
                          "MaximumEdgeLength "
                       << tessera::NumberText(this->MaximumEdgeLength) << " degrees");
+    }
+    if (report.GlobalIdsDropped > 0)
+    {
+      vtkWarningMacro(<< "the global ids of " << report.GlobalIdsDropped
+                      << " piece(s) (the first: " << report.FirstGlobalIds
+                      << ") were not carried: edges longer than MaximumEdgeLength were cut, and "
+                         "the new points have no id (MaximumEdgeLength 0 keeps the points as "
+                         "they are)");
     }
     if (report.Wrapped > 0)
     {

@@ -241,6 +241,45 @@ def test_automatic_with_parameters_set_is_their_albers_conic():
         assert_close(x, lon, 1e-9, "longitude back")
         assert_close(y, lat, 1e-9, "latitude back")
 
+
+def test_global_ids_are_kept_where_no_edge_is_cut_and_their_loss_is_said():
+    """Points (nothing to cut) keep their global ids through the projection and on to the tiles,
+    as the README's pipeline needs (copying tuples left them out); where edges are cut, the new
+    points have no id and a warning says the ids were not carried."""
+    from vtkmodules.vtkCommonCore import vtkCommand, vtkIdTypeArray
+
+    from tessera import vtkDirichletTessellation
+
+    def with_ids(data):
+        ids = vtkIdTypeArray()
+        ids.SetName("gid")
+        for k in range(data.GetNumberOfPoints()):
+            ids.InsertNextValue(1000 + k)
+        data.GetPointData().SetGlobalIds(ids)
+        return data
+
+    f = vtkGeographicProjection()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetInputData(with_ids(make_points([(-105, 39), (-104, 40), (-103, 38)])))
+    tiles = vtkDirichletTessellation()
+    tiles.SetInputConnection(f.GetOutputPort())
+    tiles.Update()
+    projected = f.GetOutput().GetPointData().GetGlobalIds()
+    carried = tiles.GetOutput().GetCellData().GetArray("gid")
+    assert_that(projected is not None and [projected.GetValue(k) for k in range(3)] == [1000, 1001, 1002],
+                "the projected points' global ids")
+    assert_that(carried is not None and [carried.GetValue(k) for k in range(3)] == [1000, 1001, 1002],
+                "the tiles' global ids")
+    assert_that(not warnings, f"{warnings}")
+    g = vtkGeographicProjection()
+    warned = messages_of(g, vtkCommand.WarningEvent)
+    g.SetInputData(with_ids(polygon([[(-109, 37), (-102, 37), (-102, 41), (-109, 41)]])))
+    g.Update()
+    assert_that(g.GetOutput().GetNumberOfPoints() > 4 and g.GetOutput().GetPointData().GetGlobalIds() is None,
+                "cut edges: new points, no global ids")
+    assert_that(len(warned) == 1 and "the global ids of 1 piece(s) (the first: 'gid') were not carried" in warned[0],
+                f"{warned}")
+
 if __name__ == "__main__":
     run([test_round_trip_of_the_colorado_gauges,
          test_azimuthal_equidistant_keeps_distances_from_the_centre,
@@ -249,4 +288,5 @@ if __name__ == "__main__":
          test_no_points_give_an_empty_output_without_error,
          test_an_edge_cut_into_the_most_pieces_is_reported,
          test_an_edge_that_reads_both_ways_round_the_globe_is_reported,
-         test_automatic_with_parameters_set_is_their_albers_conic])
+         test_automatic_with_parameters_set_is_their_albers_conic,
+         test_global_ids_are_kept_where_no_edge_is_cut_and_their_loss_is_said])
