@@ -21,6 +21,7 @@
 #include "polygon_area.h"
 
 #include <algorithm>
+#include <cmath>
 #include <exception>
 #include <limits>
 #include <string>
@@ -152,6 +153,8 @@ int vtkWindowClip::RequestData(vtkInformation*,
     tessera::ClippedRings rings;    // reused: ClipInto appends to it
     vtkNew<vtkIdTypeArray> skipped; // cells that are not polygons: reported, not clipped
     skipped->SetName("SkippedCellIds");
+    vtkNew<vtkIdTypeArray> empty; // polygons in the window without area to clip: reported
+    empty->SetName("EmptyTileIds");
     // Tiles whose points are floats are convex up to a float's rounding (the clip's convexity
     // check allows for it).
     const bool floatPoints = tiles->GetPoints() && tiles->GetPoints()->GetDataType() == VTK_FLOAT;
@@ -186,6 +189,12 @@ int vtkWindowClip::RequestData(vtkInformation*,
         tile[k] = { p[0], p[1] };
       }
       const double ownArea = tessera_vtk::OrientAnticlockwise(tile);
+      if (!std::isfinite(ownArea))
+      {
+        throw tessera::InputError("cell " + std::to_string(c) +
+          " of input 0: its area overflows (coordinates of some 1e154 or more); scale the tiles "
+          "and the window down");
+      }
       rings.RingOffsets.assign(1, 0);
       rings.Vertices.clear();
       const double clipped = catchment.ClipInto(tile.data(),
@@ -197,6 +206,18 @@ int vtkWindowClip::RequestData(vtkInformation*,
         epsilon);
       if (clipped <= 0.0)
       {
+        // Outside the window, or without area to clip: collinear corners, or a sliver thinner
+        // than the clip's rounding. The latter lie in the window, and are reported.
+        tessera::Point2 centre{ 0.0, 0.0 };
+        for (const tessera::Point2& p : tile)
+        {
+          centre.x += p.x / static_cast<double>(tile.size());
+          centre.y += p.y / static_cast<double>(tile.size());
+        }
+        if (catchment.Contains(centre))
+        {
+          empty->InsertNextValue(c);
+        }
         continue;
       }
       // ClipInto's rings are right for areas, not for display (zero-width spikes and bridges,
@@ -230,6 +251,16 @@ int vtkWindowClip::RequestData(vtkInformation*,
     {
       vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
                         renamed, "cell-data", "the clipped tiles", "cell"));
+    }
+    if (empty->GetNumberOfValues() > 0)
+    {
+      output->GetFieldData()->AddArray(empty);
+      vtkWarningMacro(<< empty->GetNumberOfValues()
+                      << " polygon(s) of input 0 lie in the window but have no area to clip "
+                         "(collinear corners, or thinner than the clip's rounding), so they give "
+                         "no piece (the first is cell "
+                      << empty->GetValue(0) << "); their ids are in the field data array "
+                      << "EmptyTileIds.");
     }
     if (skipped->GetNumberOfValues() > 0)
     {

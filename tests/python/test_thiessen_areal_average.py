@@ -426,6 +426,35 @@ def test_window_clip_reports_cells_that_are_not_polygons():
     assert_that(out.GetNumberOfCells() == 1, "the square clipped")
 
 
+def test_window_clip_reports_tiles_without_area_and_names_an_overflow():
+    """Polygons in the window without area to clip (a sliver thinner than rounding, collinear
+    corners) give no piece: they are listed in EmptyTileIds with a warning (they vanished
+    silently); one outside the window is not listed. Coordinates whose area overflows are an
+    error naming the cell (every tile vanished without a word)."""
+    window = polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]])
+    tiles = polygon([[(0.1, 0.5), (0.9, 0.5), (0.9, 0.5 + 1e-15)], [(0.2, 0.2), (0.3, 0.2), (0.3, 0.3)],
+                     [(0.1, 0.7), (0.5, 0.7), (0.9, 0.7)], [(2, 2), (3, 2), (3, 3)]])
+    clip = vtkWindowClip()
+    messages = messages_of(clip, "WarningEvent")
+    clip.SetInputData(tiles)
+    clip.SetWindowData(window)
+    clip.Update()
+    out = clip.GetOutput()
+    empty = out.GetFieldData().GetArray("EmptyTileIds")
+    listed = [empty.GetValue(k) for k in range(empty.GetNumberOfTuples())] if empty else None
+    assert_that(listed == [0, 2], f"the sliver and the collinear polygon listed: {listed}")
+    assert_that(len(messages) == 1 and "2 polygon(s) of input 0 lie in the window but have no area" in messages[0],
+                f"{messages}")
+    kept = out.GetCellData().GetArray("TileId")
+    assert_that([kept.GetValue(k) for k in range(kept.GetNumberOfTuples())] == [1], "tile 1 clipped")
+    huge = vtkWindowClip()
+    errors = messages_of(huge)
+    huge.SetInputData(polygon([[(0, 0), (1e200, 0), (1e200, 1e200), (0, 1e200)]]))
+    huge.SetWindowData(polygon([[(0, 0), (5e199, 0), (5e199, 1e200), (0, 1e200)]]))
+    huge.Update()
+    assert_that(len(errors) == 1 and "cell 0 of input 0: its area overflows" in errors[0], f"{errors}")
+
+
 def test_window_clip_of_tiles_stored_in_float():
     # Tessellation tiles whose points went through float (VTK's default point type) fold by a
     # float's rounding: the convexity check allows for it, and the tiling still sums to the window.
@@ -1167,6 +1196,7 @@ if __name__ == "__main__":
          test_window_clip_of_projected_tiles_sums_to_the_catchment,
          test_window_clip_names_a_non_convex_tile,
          test_window_clip_reports_cells_that_are_not_polygons,
+         test_window_clip_reports_tiles_without_area_and_names_an_overflow,
          test_window_cells_that_are_not_rings_are_reported,
          test_window_clip_of_tiles_stored_in_float,
          test_dates_and_year_month_columns_give_the_same_steps,
