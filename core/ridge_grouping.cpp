@@ -285,6 +285,26 @@ int RidgeGrouping::AutomaticImageSize(const std::vector<Point2>& points, bool& c
   return std::max(MaxAutomaticImageSize, smallest);
 }
 
+int RidgeGrouping::ChosenImageSize(const std::vector<Point2>& points, bool& capped) const
+{
+  capped = false;
+  const int size = this->Settings.ImageSize == 0 ? this->AutomaticImageSize(points, capped)
+                                                 : this->Settings.ImageSize;
+  this->CheckImageSize(size);
+  return size;
+}
+
+PixelGrid RidgeGrouping::ImageGridOf(const std::vector<Point2>& points) const
+{
+  CheckPoints(points);
+  if (points.size() < 2 || BoundsOf(points.data(), points.size()).LargerSide() == 0.0)
+  {
+    return PixelGrid();
+  }
+  bool capped = false;
+  return this->MakeGrid(points, this->ChosenImageSize(points, capped));
+}
+
 RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
 {
   CheckPoints(points);
@@ -307,9 +327,7 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
 
   result.ImageSizeAutomatic = this->Settings.ImageSize == 0;
   bool capped = false;
-  result.ImageSize =
-    result.ImageSizeAutomatic ? this->AutomaticImageSize(points, capped) : this->Settings.ImageSize;
-  this->CheckImageSize(result.ImageSize);
+  result.ImageSize = this->ChosenImageSize(points, capped);
   if (capped)
   {
     // Above the largest automatic size no size was tried: the margins alone decided.

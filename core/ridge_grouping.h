@@ -121,6 +121,10 @@ public:
   /// identical points give one group and no curve.
   RidgeGroupingResult Run(const std::vector<Point2>& points) const;
 
+  /// The field image's grid that Run gives for these points (the image size chosen as Run
+  /// chooses it), without computing the field: an empty grid for fewer than two distinct points.
+  /// Throws as Run does for a bad point or an image size over the limit.
+  PixelGrid ImageGridOf(const std::vector<Point2>& points) const;
   /// Margin in pixels on every side of the bounding box.
   int MarginPixels() const;
   /// The image over the bounding box of points (not all identical) with imageSize pixels
@@ -137,6 +141,9 @@ public:
 
 private:
   void CheckImageSize(int imageSize) const;
+  /// The image size for points (not all identical): the set one, or the automatic choice
+  /// (capped: see AutomaticImageSize); checked against the limits.
+  int ChosenImageSize(const std::vector<Point2>& points, bool& capped) const;
 
   RidgeGroupingSettings Settings;
 };

@@ -14,6 +14,8 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkAlgorithmOutput.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "TesseraFilterUtilities.h"
@@ -74,6 +76,22 @@ vtkSmartPointer<vtkUnsignedCharArray> ByteArray(const char* name,
   return array;
 }
 
+/// The core's settings from the filter's.
+tessera::RidgeGroupingSettings CoreSettings(vtkRidgeGrouping* self)
+{
+  tessera::RidgeGroupingSettings settings;
+  settings.Basis = self->GetBasis() == vtkRidgeGrouping::GAUSSIAN
+    ? tessera::RadialBasis::Gaussian
+    : tessera::RadialBasis::InverseMultiquadric;
+  settings.Width = self->GetWidth();
+  settings.ImageSize = self->GetImageSize();
+  settings.CurveSigma = self->GetCurveSigma();
+  settings.Join = self->GetJoinRule() == vtkRidgeGrouping::CLOSEST_TANGENT
+    ? tessera::JoinRule::ClosestTangent
+    : tessera::JoinRule::Longest;
+  settings.MinimumContourLength = self->GetMinimumContourLength();
+  return settings;
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -97,6 +115,49 @@ int vtkRidgeGrouping::FillOutputPortInformation(int port, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
+int vtkRidgeGrouping::RequestInformation(vtkInformation*,
+  vtkInformationVector**,
+  vtkInformationVector* outputVector)
+{
+  // The field image's extent, origin and spacing, which the pipeline needs before RequestData:
+  // without them a consumer asks for an empty extent (ParaView showed the image as nothing). They
+  // depend on the points, so the input is brought up to date and its grid chosen here as Run
+  // will choose it (no field is computed).
+  int extent[6] = { 0, -1, 0, -1, 0, -1 };
+  double origin[3] = { 0.0, 0.0, 0.0 };
+  double spacing[3] = { 1.0, 1.0, 1.0 };
+  try
+  {
+    if (vtkAlgorithmOutput* connection = this->GetInputConnection(0, 0))
+    {
+      connection->GetProducer()->Update(connection->GetIndex());
+      const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(
+        connection->GetProducer()->GetOutputDataObject(connection->GetIndex()));
+      const tessera::PixelGrid grid = tessera::RidgeGrouping(CoreSettings(this))
+                                        .ImageGridOf(tessera_vtk::ReadPoints2D(input->GetPoints()));
+      if (grid.PixelCount() > 0)
+      {
+        extent[1] = grid.Width - 1;
+        extent[3] = grid.Height - 1;
+        extent[5] = 0;
+        origin[0] = grid.OriginX;
+        origin[1] = grid.OriginY;
+        spacing[0] = spacing[1] = grid.Spacing;
+      }
+    }
+  }
+  catch (const std::exception&)
+  {
+    // RequestData reads the same input and settings, and reports the error.
+  }
+  vtkInformation* imageInfo = outputVector->GetInformationObject(3);
+  imageInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
+  imageInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
+  imageInfo->Set(vtkDataObject::SPACING(), spacing, 3);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkRidgeGrouping::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
@@ -110,16 +171,7 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
   {
     const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(inputData);
     const std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
-    tessera::RidgeGroupingSettings settings;
-    settings.Basis = this->Basis == GAUSSIAN ? tessera::RadialBasis::Gaussian
-                                             : tessera::RadialBasis::InverseMultiquadric;
-    settings.Width = this->Width;
-    settings.ImageSize = this->ImageSize;
-    settings.CurveSigma = this->CurveSigma;
-    settings.Join = this->JoinRule == CLOSEST_TANGENT ? tessera::JoinRule::ClosestTangent
-                                                      : tessera::JoinRule::Longest;
-    settings.MinimumContourLength = this->MinimumContourLength;
-    const tessera::RidgeGrouping grouping(settings);
+    const tessera::RidgeGrouping grouping(CoreSettings(this));
     this->UpdateProgress(0.05);
     const tessera::RidgeGroupingResult result = grouping.Run(points);
     this->UpdateProgress(0.9);

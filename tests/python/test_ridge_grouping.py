@@ -178,6 +178,35 @@ def test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept():
     assert_that(data.GetPointData().GetArray("GroupId") is not None, "the input's own array keeps its name")
 
 
+
+def test_the_field_image_is_advertised_before_it_is_made():
+    """Output 3's extent, origin and spacing are known from the pipeline information, before
+    RequestData, and equal the image made; an image filter downstream then gets every pixel (it
+    asked for the advertised empty extent, and ParaView showed the image as nothing)."""
+    from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
+    from vtkmodules.vtkImagingCore import vtkImageShiftScale
+
+    coords, _, _ = two_noisy_curves()
+    for size in (0, 200):
+        f = vtkRidgeGrouping()
+        f.SetInputData(make_points(coords))
+        f.SetImageSize(size)
+        f.UpdateInformation()
+        info = f.GetOutputInformation(3)
+        advertised = (info.Get(vtkStreamingDemandDrivenPipeline.WHOLE_EXTENT()), info.Get(f.GetOutputDataObject(3).ORIGIN()),
+                      info.Get(f.GetOutputDataObject(3).SPACING()))
+        scaled = vtkImageShiftScale()
+        scaled.SetInputConnection(f.GetOutputPort(3))
+        scaled.SetScale(2.0)
+        scaled.Update()
+        image = f.GetOutputDataObject(3)
+        made = (image.GetExtent(), image.GetOrigin(), image.GetSpacing())
+        assert_that(image.GetNumberOfPoints() > 1000 and advertised == made,
+                    f"size {size}: advertised {advertised}, made {made}")
+        assert_that(scaled.GetOutput().GetNumberOfPoints() == image.GetNumberOfPoints(),
+                    f"size {size}: downstream {scaled.GetOutput().GetNumberOfPoints()} of {image.GetNumberOfPoints()}")
+
 if __name__ == "__main__":
     run([test_two_noisy_curves_are_grouped_ordered_and_fitted, test_bad_and_degenerate_input,
-         test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept])
+         test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept,
+         test_the_field_image_is_advertised_before_it_is_made])
