@@ -428,9 +428,10 @@ vtkGeographicProjection::vtkGeographicProjection() = default;
 int vtkGeographicProjection::FillInputPortInformation(int, vtkInformation* info)
 {
   // A composite (e.g. vtkGDALVectorReader's layers) is taken whole, so that all its blocks share
-  // one projection: block by block, each would get its own automatic one.
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
-  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
+  // one projection: block by block, each would get its own automatic one. Any type is taken:
+  // RequestData names one that is neither a point set nor a composite, and empties the output
+  // (the pipeline's own check stopped before it and left the last result in place).
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
   return 1;
 }
 
@@ -446,12 +447,22 @@ int vtkGeographicProjection::RequestDataObject(vtkInformation* request,
   vtkInformationVector* outputVector)
 {
   auto* composite = vtkCompositeDataSet::GetData(inputVector[0], 0);
-  if (!composite)
+  if (!composite && vtkPointSet::GetData(inputVector[0], 0))
   {
     return this->Superclass::RequestDataObject(request, inputVector, outputVector);
   }
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
+  if (!composite)
+  {
+    // Neither points nor a composite: a vtkPolyData, which RequestData leaves empty with an error
+    // naming the input's type.
+    if (!vtkPolyData::SafeDownCast(output))
+    {
+      outInfo->Set(vtkDataObject::DATA_OBJECT(), vtkSmartPointer<vtkPolyData>::New());
+    }
+    return 1;
+  }
   if (!output || !output->IsA(composite->GetClassName()))
   {
     vtkSmartPointer<vtkDataObject> made;

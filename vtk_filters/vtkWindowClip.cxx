@@ -97,7 +97,10 @@ vtkWindowClip::vtkWindowClip()
 //------------------------------------------------------------------------------
 int vtkWindowClip::FillInputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkPolyData" : "vtkDataObject");
+  // Any type on both ports: RequestData names a wrong one for input 0 and empties the output (the
+  // pipeline's own check stopped before it and left the last result in place).
+  (void)port;
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
   return 1;
 }
 
@@ -106,11 +109,18 @@ int vtkWindowClip::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkPolyData* tiles = vtkPolyData::GetData(inputVector[0]);
+  vtkDataObject* tilesData = vtkDataObject::GetData(inputVector[0]);
+  vtkPolyData* tiles = vtkPolyData::SafeDownCast(tilesData);
   vtkDataObject* windowData = vtkDataObject::GetData(inputVector[1]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   try
   {
+    if (!tiles)
+    {
+      throw tessera::InputError(std::string("input 0 (the tiles) is ") +
+        (tilesData ? std::string("a ") + tilesData->GetClassName() : std::string("missing")) +
+        ", not a vtkPolyData of polygons");
+    }
     const std::string projectionWarning = ProjectionWarning(tiles, windowData);
     if (!projectionWarning.empty())
     {

@@ -363,10 +363,42 @@ def test_the_tiles_point_data_is_named_as_not_passed():
                 f"the dropped arrays named: {warnings}")
 
 
+
+def test_inputs_of_another_type_are_named_and_leave_empty_outputs():
+    """An image in place of the points (projection) or of the tiles (clip), after a good run: an
+    error naming its type, and an empty output (the pipeline's own type check stopped before
+    RequestData and left the last result in place)."""
+    from vtkmodules.vtkCommonDataModel import vtkImageData, vtkTable
+
+    image = vtkImageData()
+    image.SetDimensions(3, 3, 1)
+    projection = vtkGeographicProjection()
+    errors = messages_of(projection)
+    projection.SetInputData(make_points([(-105, 39), (-104, 40)]))
+    projection.Update()
+    assert_that(projection.GetOutputDataObject(0).GetNumberOfPoints() == 2 and not errors, f"{errors}")
+    for wrong in (image, vtkTable()):
+        projection.SetInputData(wrong)
+        projection.Update()
+        out = projection.GetOutputDataObject(0)
+        assert_that(out.GetNumberOfPoints() == 0, f"{wrong.GetClassName()}: {out.GetNumberOfPoints()} points left")
+        assert_that(f"the input is a {wrong.GetClassName()}, not a point set" in errors[-1], f"{errors}")
+    clip = vtkWindowClip()
+    clip_errors = messages_of(clip)
+    clip.SetInputData(polygon([[(0.2, 0.2), (0.6, 0.2), (0.6, 0.6)]]))
+    clip.SetWindowData(polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]]))
+    clip.Update()
+    assert_that(clip.GetOutput().GetNumberOfCells() == 1 and not clip_errors, f"{clip_errors}")
+    clip.SetInputData(image)
+    clip.Update()
+    assert_that(clip.GetOutput().GetNumberOfCells() == 0, f"{clip.GetOutput().GetNumberOfCells()} cells left")
+    assert_that(len(clip_errors) == 1 and "input 0 (the tiles) is a vtkImageData" in clip_errors[0], f"{clip_errors}")
+
 if __name__ == "__main__":
     run([test_cells_are_simple_pieces_that_fill_tile_and_window,
          test_review_cases,
          test_input_arrays_named_like_the_filters_are_kept_under_another_name,
          test_a_window_of_loose_line_segments_is_joined_into_its_rings,
          test_tiles_and_window_must_share_their_projection,
-         test_the_tiles_point_data_is_named_as_not_passed])
+         test_the_tiles_point_data_is_named_as_not_passed,
+         test_inputs_of_another_type_are_named_and_leave_empty_outputs])
