@@ -1,6 +1,6 @@
 """Reading the examples' CSV files the way a user's own files need: the named columns are checked
 before any row is read, a value that is not a number is named with its file, line and column, and
-missing values (an empty field, NA, N/A, NaN, null, in any case) are told apart from bad ones.
+missing values (an empty field, NA, N/A, #N/A, NaN, null, in any case) are told apart from bad ones.
 Every failure ends the script with one line naming what is wrong and where, never a traceback;
 catch_vtk_messages() and vtk_message_text() give a script the VTK filters' messages as text, so
 that it reports a value the filters reject in such a line too, not as VTK's log.
@@ -16,7 +16,7 @@ import math
 import re
 import sys
 
-MISSING = frozenset(("", "na", "n/a", "nan", "null"))
+MISSING = frozenset(("", "na", "n/a", "#n/a", "nan", "null"))  # (#N/A: Excel's)
 
 
 def fail(message):
@@ -60,8 +60,12 @@ def rows(path, required, what, optional=()):
                                 (*required, *optional), path)
         absent = [name for name in required if name not in columns]
         if absent:
+            # A spreadsheet set to another locale saves with semicolons; some tools use tabs.
+            other = next((f" (it seems separated by {name}: save it with commas)"
+                          for mark, name in ((";", "semicolons"), ("\t", "tabs"))
+                          if len(columns) == 1 and mark in columns[0]), "")
             fail(f"{path}: the {what} file has no column {', '.join(repr(n) for n in absent)} "
-                 f"(it needs {', '.join(required)}; its header: {', '.join(columns) or 'none'})")
+                 f"(it needs {', '.join(required)}; its header: {', '.join(columns) or 'none'}){other}")
         reader.fieldnames = columns
         for row in reader:
             # A record whose fields are all empty (",,," as a spreadsheet exports a blank row, or
@@ -97,7 +101,7 @@ def named_columns(columns, names, path):
 
 
 def is_missing(text):
-    """True for an empty field or a missing-value marker (NA, N/A, NaN, null, in any case)."""
+    """True for an empty field or a missing-value marker (NA, N/A, #N/A, NaN, null, in any case)."""
     return (text or "").strip().lower() in MISSING
 
 

@@ -211,6 +211,7 @@ def test_bad_files_are_named():
         pretty_json = write(out, "pretty.json", '{\n  "station_id": "050848"\n}\n')
         twice = write(out, "twice.csv", "station_id,year,month,precip,Precip\n050848,1950,1,1,100\n")
         grouped = write(out, "grouped.csv", "station_id,year,month,precip\n050848,1950,1,1_5\n")
+        semicolons = write(out, "semicolons.csv", "station_id;lon;lat\n050848;-105;39\n")
         directory = os.path.join(out, "catchment.d")
         os.mkdir(directory)
         utf16 = os.path.join(out, "utf16.csv")
@@ -245,6 +246,7 @@ def test_bad_files_are_named():
             # Python's float() reads 1_5 as 15: not a number in a data file.
             (("--observations", grouped), [grouped + ":2", "'precip'", "'1_5' is not a number"]),
             (("--month", "1_963-08"), ["--month", "YYYY-MM"]),
+            (("--stations", semicolons), [semicolons, "no column 'station_id'", "separated by semicolons"]),
         ]
         for arguments, fragments in cases:
             _, stderr = run_colorado(out, *arguments, what=str(arguments), status=1, plots=False)
@@ -260,7 +262,8 @@ def test_bad_files_are_named():
                     f"cp1252 and UTF-16 files read as {weights}")
         # Column names in another case, and whole numbers as pandas writes a column with gaps.
         upper = write(out, "upper.csv", "STATION_ID,Lon,LAT\n050848,-105,39.5\n")
-        floats = write(out, "floats.csv", "Station_Id,YEAR,Month,PRECIP\n050848,1963.0,8.0,2.5\n")
+        floats = write(out, "floats.csv", "Station_Id,YEAR,Month,PRECIP\n050848,1963.0,8.0,2.5\n"
+                                          "050848,1963,9,#N/A\n")
         run_colorado(out, stations=upper, observations=floats, month="1963-08", plots=False,
                      what="column names in capitals, years as 1963.0")
         weights = read_csv(os.path.join(out, "weights_1963_08.csv"))
