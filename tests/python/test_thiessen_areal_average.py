@@ -265,26 +265,26 @@ def test_gauges_in_blocks_as_a_point_layer_gives_them_are_joined():
         station.InsertNextValue(name)
         leaf.GetCellData().AddArray(station)
         blocks.SetBlock(k, leaf)
-    results = []
-    for gauges in (gauges_polydata(coords, names), blocks):
+    def averaged(gauges):
+        """The filter on these gauges, the square catchment and the months, updated, and its errors."""
         f = vtkThiessenArealAverage()
         errors = messages_of(f)
         f.SetGaugesData(gauges)
         f.SetCatchmentData(polygon([[(-1, -1), (1, -1), (1, 1), (-1, 1)]]))
         f.SetObservationsData(observations_table(months))
         f.Update(1)
+        return f, errors
+
+    results = []
+    for gauges in (gauges_polydata(coords, names), blocks):
+        f, errors = averaged(gauges)
         assert_that(not errors, f"{gauges.GetClassName()}: {errors}")
         f.Update(0)
         results.append((summary_column(f, "ArealMean"), sorted(weights_by_gauge(f.GetOutputDataObject(0)).items())))
     assert_that(results[0] == results[1] and len(results[0][1]) == 5, f"point set {results[0]}, blocks {results[1]}")
     # A block without the station ids is named.
     blocks.GetBlock(3).GetCellData().RemoveArray("station_id")
-    f = vtkThiessenArealAverage()
-    errors = messages_of(f)
-    f.SetGaugesData(blocks)
-    f.SetCatchmentData(polygon([[(-1, -1), (1, -1), (1, 1), (-1, 1)]]))
-    f.SetObservationsData(observations_table(months))
-    f.Update(1)
+    _, errors = averaged(blocks)
     assert_that(len(errors) == 1 and "block 4 of the points has no array 'station_id', which block 1 has" in errors[0],
                 f"{errors}")
     # Inputs of another type after a good run: errors naming the type, and nothing left shown.
@@ -293,12 +293,7 @@ def test_gauges_in_blocks_as_a_point_layer_gives_them_are_joined():
     image = vtkImageData()
     image.SetDimensions(2, 2, 1)
     for wrong in ("gauges", "observations"):
-        f = vtkThiessenArealAverage()
-        errors = messages_of(f)
-        f.SetGaugesData(gauges_polydata(coords, names))
-        f.SetCatchmentData(polygon([[(-1, -1), (1, -1), (1, 1), (-1, 1)]]))
-        f.SetObservationsData(observations_table(months))
-        f.Update(1)
+        f, errors = averaged(gauges_polydata(coords, names))
         assert_that(f.GetOutputDataObject(1).GetNumberOfRows() == 2 and not errors, f"good run: {errors}")
         getattr(f, "SetGaugesData" if wrong == "gauges" else "SetObservationsData")(image)
         f.Update(1)
