@@ -640,8 +640,8 @@ void Catchment::RayCrossings(const Point2& p, std::vector<std::pair<std::uint32_
   }
 }
 
-// Rings do not touch, so a ring's first vertex is strictly inside or outside every other ring.
-// Rings do not touch, so a ring encloses another exactly when it winds around any of its points.
+// Rings do not touch, so a ring's first vertex is strictly inside or outside every other ring,
+// and a ring encloses another exactly when it winds around that vertex.
 std::vector<std::int32_t> Catchment::EnclosingRings(std::size_t r) const
 {
   std::vector<std::pair<std::uint32_t, int>> crossings;

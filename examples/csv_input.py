@@ -57,7 +57,7 @@ def rows(path, required, what, optional=()):
     reader = csv.DictReader(io.StringIO(text, newline=""), strict=True)
     try:
         columns = named_columns([name.strip() for name in reader.fieldnames or []],
-                                (*required, *optional), path)
+                                (*required, *optional), f"{path}:{max(reader.reader.line_num, 1)}")
         absent = [name for name in required if name not in columns]
         if absent:
             # A spreadsheet set to another locale saves with semicolons; some tools use tabs.
@@ -85,15 +85,16 @@ def rows(path, required, what, optional=()):
         fail(f"{path}:{max(reader.reader.line_num, 1)}: not well-formed CSV ({error})")
 
 
-def named_columns(columns, names, path):
+def named_columns(columns, names, where):
     """The header's columns with each of names in its own spelling where the header has it in
-    another case; ends the script, naming the file, when one of names appears twice (in any case):
-    which of them holds the values would be a guess (a reader of a dict keeps the last)."""
+    another case; ends the script, naming where (file:line of the header), when one of names
+    appears twice (in any case): which of them holds the values would be a guess (a reader of a
+    dict keeps the last)."""
     columns = list(columns)
     for name in names:
         same = [k for k, column in enumerate(columns) if column.lower() == name.lower()]
         if len(same) > 1:
-            fail(f"{path}:1: column {name!r} appears {len(same)} times (columns "
+            fail(f"{where}: column {name!r} appears {len(same)} times (columns "
                  f"{', '.join(str(k + 1) for k in same)}): keep one")
         if same:
             columns[same[0]] = name

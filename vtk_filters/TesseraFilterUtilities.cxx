@@ -519,10 +519,15 @@ vtkSmartPointer<vtkPolyData> MergedPoints(vtkDataObject* data,
       if (!source || std::string(source->GetClassName()) != joined[a]->GetClassName() ||
         source->GetNumberOfComponents() != joined[a]->GetNumberOfComponents())
       {
+        const bool onOtherCells =
+          !source && leaf->GetCellData()->GetAbstractArray(names[a].c_str());
         throw tessera::InputError(block + " of the points " +
           (source ? std::string("holds '") + names[a] + "' as a " + source->GetClassName() +
                 " where " + firstBlock + " holds a " + joined[a]->GetClassName()
-                  : "has no array '" + names[a] + "', which " + firstBlock + " has"));
+              : onOtherCells ? "holds '" + names[a] +
+                "' as cell data of cells that are not one vertex per point (a multipoint "
+                "feature?), so its points cannot be given it"
+                             : "has no array '" + names[a] + "', which " + firstBlock + " has"));
       }
       for (vtkIdType p = 0; p < n; ++p)
       {

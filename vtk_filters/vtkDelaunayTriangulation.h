@@ -16,6 +16,12 @@
  * vtkDirichletTessellation (an input field array with one of these names is kept renamed
  * NAME_input, with a warning). Fewer than 3 points or collinear points give no face.
  *
+ * The input is a vtkPointSet, or a composite data set of them whose points are joined in block
+ * order into one set (a point layer from vtkGDALVectorReader, a block per feature with its
+ * attributes as its vertex's cell data, carried as the point's): ids then count the joined
+ * points, and attribute roles such as global ids are not kept. Any other type is an error naming
+ * it, with the outputs emptied.
+ *
  * Any finite scale: coordinates of some 1e100 or 1e-100 are scaled by a power of two (exactly)
  * before the triangulation, which is the same; the faces are ids, so nothing is scaled back. A
  * window too large for its area to be a double is taken (a triangulation needs no area).

@@ -23,6 +23,12 @@
  * constraints are ignored; an empty or unbounded window is an error, and so is a constraint with
  * a = b = 0 (no half-plane, even one every point satisfies).
  *
+ * The input is a vtkPointSet, or a composite data set of them whose points are joined in block
+ * order into one set (a point layer from vtkGDALVectorReader, a block per feature with its
+ * attributes as its vertex's cell data, carried as the point's): ids then count the joined
+ * points, and attribute roles such as global ids are not kept. Any other type is an error naming
+ * it, with the outputs emptied.
+ *
  * Algorithms: GreenSibson (default), the incremental engine; BrasselReif, the Thiessen sweep of
  * Brassel and Reif (1979), which needs a rectangular window. Both give the same combinatorics;
  * corners and areas agree to rounding (an ulp or so). The sweep has the paper's bad cases: when

@@ -21,6 +21,7 @@
 #include "TesseraFilterUtilities.h"
 #include "ridge_grouping.h"
 
+#include <algorithm>
 #include <exception>
 
 vtkStandardNewMacro(vtkRidgeGrouping);
@@ -246,6 +247,23 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
 
     // Output 3: the field image.
     const tessera::PixelGrid& grid = result.Grid;
+    vtkInformation* imageInfo = outputVector->GetInformationObject(3);
+    int advertised[6] = { 0, -1, 0, -1, 0, -1 };
+    imageInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), advertised);
+    const int made[6] = {
+      0, grid.Width - 1, 0, grid.Height - 1, 0, grid.PixelCount() > 0 ? 0 : -1
+    };
+    if (!std::equal(made, made + 6, advertised))
+    {
+      // RequestInformation chose the grid from the points as they were then (another time step's,
+      // say): consumers may have asked for that extent. The made one is advertised from now on.
+      imageInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), made, 6);
+      vtkWarningMacro(<< "the field image's grid (" << grid.Width << " x " << grid.Height
+                      << " pixels) differs from the one announced before it was made, from the "
+                         "points as they were then ("
+                      << advertised[1] + 1 << " x " << advertised[3] + 1
+                      << "); update again to give it to consumers whole");
+    }
     imageOut->SetDimensions(grid.Width, grid.Height, grid.PixelCount() > 0 ? 1 : 0);
     imageOut->SetOrigin(grid.OriginX, grid.OriginY, 0.0);
     imageOut->SetSpacing(grid.Spacing, grid.Spacing, 1.0);

@@ -11,6 +11,12 @@
  * curve with unit weights is fitted to each group (periodic on closed contours). Only x and y
  * are used.
  *
+ * The input is a vtkPointSet, or a composite data set of them whose points are joined in block
+ * order into one set (a point layer from vtkGDALVectorReader, a block per feature with its
+ * attributes as its vertex's cell data, carried as the point's): ids then count the joined
+ * points, and attribute roles such as global ids are not kept. Any other type is an error naming
+ * it, with the outputs emptied.
+ *
  * Outputs (array names are API):
  * - 0 (vtkPolyData): the input points (one vertex each, point data passed) with point data
  *   `GroupId` (int; the contour of the point, -1 = unassigned) and `Node` (double in [0, 1]);

@@ -18,6 +18,7 @@
 #include "vtkPoints.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkDataObjectTreeIterator.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -566,6 +567,10 @@ vtkMTimeType LatestMTime(vtkDataObject* data)
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
   {
     auto iter = vtk::TakeSmartPointer(composite->NewIterator());
+    if (auto* tree = vtkDataObjectTreeIterator::SafeDownCast(iter))
+    {
+      tree->VisitOnlyLeavesOff(); // inner blocks too: a leaf moved within one changes only it
+    }
     for (iter->InitTraversal(); !iter->IsDoneWithTraversal(); iter->GoToNextItem())
     {
       latest = std::max(latest, iter->GetCurrentDataObject()->GetMTime());
@@ -924,6 +929,18 @@ vtkPointSet* vtkThiessenArealAverage::GaugesOf(vtkDataObject* data)
     in.JoinedFrom = data;
     in.JoinedAt = latest;
     in.JoinedArrays = arrays;
+  }
+  // The composite's time (of a time-aware source), which the gauges' one step takes without
+  // observations.
+  vtkInformation* time = data->GetInformation();
+  if (time->Has(vtkDataObject::DATA_TIME_STEP()))
+  {
+    in.Joined->GetInformation()->Set(
+      vtkDataObject::DATA_TIME_STEP(), time->Get(vtkDataObject::DATA_TIME_STEP()));
+  }
+  else
+  {
+    in.Joined->GetInformation()->Remove(vtkDataObject::DATA_TIME_STEP());
   }
   return in.Joined;
 }

@@ -97,10 +97,9 @@ vtkWindowClip::vtkWindowClip()
 //------------------------------------------------------------------------------
 int vtkWindowClip::FillInputPortInformation(int port, vtkInformation* info)
 {
-  // Any type on both ports: RequestData names a wrong one for input 0 and empties the output (the
-  // pipeline's own check stopped before it and left the last result in place).
-  (void)port;
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+  // Tiles as vtkPolyData: a composite of them is clipped block by block by the composite
+  // pipeline (a shapefile's polygons read by vtkGDALVectorReader, say).
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkPolyData" : "vtkDataObject");
   return 1;
 }
 
@@ -109,18 +108,11 @@ int vtkWindowClip::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkDataObject* tilesData = vtkDataObject::GetData(inputVector[0]);
-  vtkPolyData* tiles = vtkPolyData::SafeDownCast(tilesData);
+  vtkPolyData* tiles = vtkPolyData::GetData(inputVector[0]);
   vtkDataObject* windowData = vtkDataObject::GetData(inputVector[1]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   try
   {
-    if (!tiles)
-    {
-      throw tessera::InputError(std::string("input 0 (the tiles) is ") +
-        (tilesData ? std::string("a ") + tilesData->GetClassName() : std::string("missing")) +
-        ", not a vtkPolyData of polygons");
-    }
     const std::string projectionWarning = ProjectionWarning(tiles, windowData);
     if (!projectionWarning.empty())
     {
@@ -199,7 +191,10 @@ int vtkWindowClip::RequestData(vtkInformation*,
         tile[k] = { p[0], p[1] };
       }
       const double ownArea = tessera_vtk::OrientAnticlockwise(tile);
-      if (!std::isfinite(ownArea))
+      const bool finiteCorners = std::all_of(tile.begin(),
+        tile.end(),
+        [](const tessera::Point2& p) { return std::isfinite(p.x) && std::isfinite(p.y); });
+      if (finiteCorners && !std::isfinite(ownArea)) // (a NaN corner is named by the clip below)
       {
         throw tessera::InputError("cell " + std::to_string(c) +
           " of input 0: its area overflows (coordinates of some 1e154 or more); scale the tiles "

@@ -282,6 +282,21 @@ def test_gauges_in_blocks_as_a_point_layer_gives_them_are_joined():
         f.Update(0)
         results.append((summary_column(f, "ArealMean"), sorted(weights_by_gauge(f.GetOutputDataObject(0)).items())))
     assert_that(results[0] == results[1] and len(results[0][1]) == 5, f"point set {results[0]}, blocks {results[1]}")
+    # Without observations, the blocks' value arrays make the one step, at the composite's time.
+    from vtkmodules.vtkCommonDataModel import vtkDataObject
+
+    for k, value in enumerate([1.0, 2.0, 3.0, 4.0, 10.0]):
+        array = vtkDoubleArray()
+        array.SetName("value")
+        array.InsertNextValue(value)
+        blocks.GetBlock(k).GetCellData().AddArray(array)
+    blocks.GetInformation().Set(vtkDataObject.DATA_TIME_STEP(), 1963.5)
+    g = vtkThiessenArealAverage()
+    g.SetGaugesData(blocks)
+    g.SetCatchmentData(polygon([[(-1, -1), (1, -1), (1, 1), (-1, 1)]]))
+    g.Update(1)
+    assert_that(summary_column(g, "Time") == [1963.5] and summary_column(g, "ArealMean") == [results[0][0][0]],
+                f"one step from the blocks' values: {summary_column(g, 'Time')}, {summary_column(g, 'ArealMean')}")
     # A block without the station ids is named.
     blocks.GetBlock(3).GetCellData().RemoveArray("station_id")
     _, errors = averaged(blocks)
@@ -442,6 +457,13 @@ def test_window_clip_reports_tiles_without_area_and_names_an_overflow():
                 f"{messages}")
     kept = out.GetCellData().GetArray("TileId")
     assert_that([kept.GetValue(k) for k in range(kept.GetNumberOfTuples())] == [1], "tile 1 clipped")
+    # A NaN corner is named as such (not as an overflow).
+    nan_tile = vtkWindowClip()
+    nan_errors = messages_of(nan_tile)
+    nan_tile.SetInputData(polygon([[(0.2, 0.2), (float("nan"), 0.2), (0.3, 0.3)]]))
+    nan_tile.SetWindowData(window)
+    nan_tile.Update()
+    assert_that(len(nan_errors) == 1 and "tile 0 vertex 1 has a NaN coordinate" in nan_errors[0], f"{nan_errors}")
     huge = vtkWindowClip()
     errors = messages_of(huge)
     huge.SetInputData(polygon([[(0, 0), (1e200, 0), (1e200, 1e200), (0, 1e200)]]))

@@ -365,10 +365,11 @@ def test_the_tiles_point_data_is_named_as_not_passed():
 
 
 def test_inputs_of_another_type_are_named_and_leave_empty_outputs():
-    """An image in place of the points (projection) or of the tiles (clip), after a good run: an
-    error naming its type, and an empty output (the pipeline's own type check stopped before
-    RequestData and left the last result in place)."""
-    from vtkmodules.vtkCommonDataModel import vtkImageData, vtkTable
+    """An image or a table in place of the points of the projection, after a good run: an error
+    naming its type, and an empty output (the pipeline's own type check stopped before
+    RequestData and left the last result in place). Tiles in blocks are still clipped block by
+    block (the clip's tiles port keeps vtkPolyData, for the composite pipeline)."""
+    from vtkmodules.vtkCommonDataModel import vtkImageData, vtkMultiBlockDataSet, vtkTable
 
     image = vtkImageData()
     image.SetDimensions(3, 3, 1)
@@ -383,16 +384,18 @@ def test_inputs_of_another_type_are_named_and_leave_empty_outputs():
         out = projection.GetOutputDataObject(0)
         assert_that(out.GetNumberOfPoints() == 0, f"{wrong.GetClassName()}: {out.GetNumberOfPoints()} points left")
         assert_that(f"the input is a {wrong.GetClassName()}, not a point set" in errors[-1], f"{errors}")
+    blocks = vtkMultiBlockDataSet()
+    blocks.SetBlock(0, polygon([[(0.2, 0.2), (0.6, 0.2), (0.6, 0.6)]]))
+    blocks.SetBlock(1, polygon([[(0.5, 0.5), (1.5, 0.5), (1.5, 1.5), (0.5, 1.5)]]))
     clip = vtkWindowClip()
     clip_errors = messages_of(clip)
-    clip.SetInputData(polygon([[(0.2, 0.2), (0.6, 0.2), (0.6, 0.6)]]))
+    clip.SetInputData(blocks)
     clip.SetWindowData(polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]]))
     clip.Update()
-    assert_that(clip.GetOutput().GetNumberOfCells() == 1 and not clip_errors, f"{clip_errors}")
-    clip.SetInputData(image)
-    clip.Update()
-    assert_that(clip.GetOutput().GetNumberOfCells() == 0, f"{clip.GetOutput().GetNumberOfCells()} cells left")
-    assert_that(len(clip_errors) == 1 and "input 0 (the tiles) is a vtkImageData" in clip_errors[0], f"{clip_errors}")
+    out = clip.GetOutputDataObject(0)
+    areas = [out.GetBlock(k).GetCellData().GetArray("ClippedArea").GetValue(0) for k in range(out.GetNumberOfBlocks())]
+    assert_that(not clip_errors and out.IsA("vtkMultiBlockDataSet") and np.allclose(areas, [0.08, 0.25], rtol=1e-12),
+                f"blocks clipped one by one: {out.GetClassName()}, {areas}, {clip_errors}")
 
 if __name__ == "__main__":
     run([test_cells_are_simple_pieces_that_fill_tile_and_window,
