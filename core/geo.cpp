@@ -192,6 +192,13 @@ void ValidateLonLat(const std::vector<Point2>& lonlat)
       throw InputError(
         DescribePoint("point", static_cast<long long>(i), p) + " has a latitude beyond 90 degrees");
     }
+    // As the areal average's gauges: a wider longitude is a typo (-1031.5 for -103.15), and one
+    // of 1e20 has no digit left below a turn of the globe.
+    if (std::abs(p.x) > 360.0)
+    {
+      throw InputError(DescribePoint("point", static_cast<long long>(i), p) +
+        " has a longitude beyond 360 degrees");
+    }
   }
 }
 

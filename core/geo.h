@@ -62,7 +62,8 @@ struct GeographicExtent
   double CentralLatitude() const { return 0.5 * (this->SouthLatitude + this->NorthLatitude); }
 };
 
-/// Throws InputError naming the first point with a NaN/Inf coordinate or |latitude| > 90.
+/// Throws InputError naming the first point with a NaN/Inf coordinate, |latitude| > 90 or
+/// |longitude| > 360.
 void ValidateLonLat(const std::vector<Point2>& lonlat);
 /// Extent of valid lon/lat points (validated first). Throws InputError if there are none.
 GeographicExtent ComputeExtent(const std::vector<Point2>& lonlat);

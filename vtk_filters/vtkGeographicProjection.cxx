@@ -22,6 +22,7 @@
 #include "errors.h"
 #include "geo.h"
 
+#include <cmath>
 #include <map>
 #include <memory>
 #include <string>
@@ -380,6 +381,11 @@ void ProjectPiece(vtkGeographicProjection* self,
   vtkPointSet* input = piece.Input;
   vtkPointSet* output = piece.Output;
   auto polyInput = vtkPolyData::SafeDownCast(input);
+  if (std::isnan(self->GetMaximumEdgeLength()))
+  {
+    // (every comparison with NaN is false: it turned the densification off without a word)
+    throw tessera::InputError("MaximumEdgeLength is NaN (0 or less turns the densification off)");
+  }
   if (!self->GetInverse() && polyInput && self->GetMaximumEdgeLength() > 0.0)
   {
     EdgeDensifier densifier(polyInput,

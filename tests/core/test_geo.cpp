@@ -205,6 +205,21 @@ TEST(Geo, BadPointsAreNamedById)
   {
     EXPECT_NE(std::string(e.what()).find("point 2"), std::string::npos) << e.what();
   }
+  // Longitudes: 0..360 and -360..0 are angles; beyond is a typo, or no angle at all (1e20).
+  EXPECT_NO_THROW(ValidateLonLat({ { 359.0, 10.0 }, { -360.0, 10.0 } }));
+  for (const double lon : { 360.5, -1031.5, 1e20 })
+  {
+    try
+    {
+      ValidateLonLat({ { 0.0, 0.0 }, { lon, 10.0 } });
+      FAIL() << "longitude " << lon << " accepted";
+    }
+    catch (const InputError& e)
+    {
+      EXPECT_NE(std::string(e.what()).find("point 1"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("longitude beyond 360"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(Geo, PointsAProjectionCannotRepresentAreRefused)

@@ -280,6 +280,18 @@ def test_global_ids_are_kept_where_no_edge_is_cut_and_their_loss_is_said():
     assert_that(len(warned) == 1 and "the global ids of 1 piece(s) (the first: 'gid') were not carried" in warned[0],
                 f"{warned}")
 
+
+def test_a_nan_edge_length_is_an_error():
+    """MaximumEdgeLength NaN turned the densification off without a word (every comparison with
+    NaN is false): an error saying how to turn it off."""
+    f = vtkGeographicProjection()
+    errors = messages_of(f)
+    f.SetInputData(polygon([[(-109, 37), (-102, 37), (-102, 41), (-109, 41)]]))
+    f.SetMaximumEdgeLength(float("nan"))
+    f.Update()
+    assert_that(len(errors) == 1 and "MaximumEdgeLength is NaN" in errors[0] and f.GetOutput().GetNumberOfPoints() == 0,
+                f"{errors}")
+
 if __name__ == "__main__":
     run([test_round_trip_of_the_colorado_gauges,
          test_azimuthal_equidistant_keeps_distances_from_the_centre,
@@ -289,4 +301,5 @@ if __name__ == "__main__":
          test_an_edge_cut_into_the_most_pieces_is_reported,
          test_an_edge_that_reads_both_ways_round_the_globe_is_reported,
          test_automatic_with_parameters_set_is_their_albers_conic,
-         test_global_ids_are_kept_where_no_edge_is_cut_and_their_loss_is_said])
+         test_global_ids_are_kept_where_no_edge_is_cut_and_their_loss_is_said,
+         test_a_nan_edge_length_is_an_error])
