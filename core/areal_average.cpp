@@ -831,14 +831,6 @@ std::vector<std::int32_t> GroupByPlace(const std::vector<Point2>& xy, double met
   return first;
 }
 
-/// Whether p is a longitude within -360 .. 360 degrees and a latitude within -90 .. 90 (false for
-/// NaN). Wider longitudes are typos (-1031.5 for -103.15): a gauge would wrap round the globe and
-/// a catchment span some 10^6 km^2.
-bool InLonLatRange(const Point2& p)
-{
-  return std::abs(p.y) <= 90.0 && std::abs(p.x) <= 360.0;
-}
-
 [[noreturn]] void ThrowInvalidLonLat(const std::string& what, const Point2& p)
 {
   throw InputError(

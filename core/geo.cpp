@@ -177,6 +177,11 @@ ProjectionParameters ProjectionParameters::FromString(const std::string& text)
   return result;
 }
 
+bool InLonLatRange(const Point2& p)
+{
+  return std::abs(p.y) <= 90.0 && std::abs(p.x) <= 360.0;
+}
+
 void ValidateLonLat(const std::vector<Point2>& lonlat)
 {
   for (std::size_t i = 0; i < lonlat.size(); ++i)
@@ -187,17 +192,11 @@ void ValidateLonLat(const std::vector<Point2>& lonlat)
       throw InputError(
         DescribePoint("point", static_cast<long long>(i), p) + " has a NaN or infinite coordinate");
     }
-    if (std::abs(p.y) > 90.0)
-    {
-      throw InputError(
-        DescribePoint("point", static_cast<long long>(i), p) + " has a latitude beyond 90 degrees");
-    }
-    // As the areal average's gauges: a wider longitude is a typo (-1031.5 for -103.15), and one
-    // of 1e20 has no digit left below a turn of the globe.
-    if (std::abs(p.x) > 360.0)
+    if (!InLonLatRange(p))
     {
       throw InputError(DescribePoint("point", static_cast<long long>(i), p) +
-        " has a longitude beyond 360 degrees");
+        (std::abs(p.y) > 90.0 ? " has a latitude beyond 90 degrees"
+                              : " has a longitude beyond 360 degrees"));
     }
   }
 }

@@ -62,8 +62,11 @@ struct GeographicExtent
   double CentralLatitude() const { return 0.5 * (this->SouthLatitude + this->NorthLatitude); }
 };
 
-/// Throws InputError naming the first point with a NaN/Inf coordinate, |latitude| > 90 or
-/// |longitude| > 360.
+/// Whether p is a longitude within -360 .. 360 degrees and a latitude within -90 .. 90 (false for
+/// NaN). Wider longitudes are typos (-1031.5 for -103.15): a gauge would wrap round the globe, a
+/// catchment span some 10^6 km^2, and one of 1e20 has no digit left below a turn of the globe.
+bool InLonLatRange(const Point2& p);
+/// Throws InputError naming the first point with a NaN/Inf coordinate or out of InLonLatRange.
 void ValidateLonLat(const std::vector<Point2>& lonlat);
 /// Extent of valid lon/lat points (validated first). Throws InputError if there are none.
 GeographicExtent ComputeExtent(const std::vector<Point2>& lonlat);

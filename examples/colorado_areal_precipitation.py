@@ -135,7 +135,7 @@ def read_observations(path, gauge_of, filler):
         times.InsertNextValue(t)
         values.InsertNextValue(value)
     if unrecorded:
-        print(f"{path}: {unrecorded} observation(s) without a value (empty, NA, #N/A, NaN or null) "
+        print(f"{path}: {unrecorded} observation(s) without a value ({csv_input.MISSING_TEXT}) "
               "count as missing", file=sys.stderr)
     if negative:
         # Precipitation is never negative: these are most often a missing-value code (-99, -9999)
@@ -522,7 +522,7 @@ def main(argv=None):
                              "optional name")
     parser.add_argument("--observations", default=os.path.join(DATA, "colorado_monthly_precip.csv"),
                         help="CSV of monthly values, one row per gauge and month: columns "
-                             "station_id, year, month, precip (empty, NA, #N/A, NaN or null = missing)")
+                             f"station_id, year, month, precip ({csv_input.MISSING_TEXT} = missing)")
     parser.add_argument("--catchment", default=os.path.join(DATA, "colorado_boundary.geojson"),
                         help="catchment polygon (GeoJSON or shapefile, lon/lat)")
     parser.add_argument("--no-plots", action="store_true", help="skip the PNG files")

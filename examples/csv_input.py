@@ -17,6 +17,7 @@ import re
 import sys
 
 MISSING = frozenset(("", "na", "n/a", "#n/a", "nan", "null"))  # (#N/A: Excel's)
+MISSING_TEXT = "empty, NA, N/A, #N/A, NaN or null"  # MISSING as a user writes them
 
 
 def fail(message):
@@ -102,7 +103,7 @@ def named_columns(columns, names, where):
 
 
 def is_missing(text):
-    """True for an empty field or a missing-value marker (NA, N/A, #N/A, NaN, null, in any case)."""
+    """True for an empty field or a missing-value marker (MISSING_TEXT, in any case)."""
     return (text or "").strip().lower() in MISSING
 
 

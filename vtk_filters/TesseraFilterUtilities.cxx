@@ -1,6 +1,8 @@
 #include "TesseraFilterUtilities.h"
 
 #include "vtkAbstractArray.h"
+#include "vtkAlgorithm.h"
+#include "vtkAlgorithmOutput.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
@@ -372,10 +374,7 @@ void AppendPolygonRings(vtkPolyData* poly, const std::string& block, Rings& ring
     rings.SkippedCells += skipped.size();
   }
 }
-} // namespace
 
-namespace
-{
 /// Per point of a point set whose cells are one vertex per point, that vertex's cell (its
 /// attributes' row); empty when its cells are anything else.
 std::vector<vtkIdType> VertexCellOfPoint(vtkPointSet* leaf)
@@ -404,25 +403,33 @@ std::vector<vtkIdType> VertexCellOfPoint(vtkPointSet* leaf)
   return cellOf;
 }
 
-/// The array `name` of a leaf: its point data's, else (vertex cells only) its cell data's, with
-/// the row of each point in rowOf (empty: the point's own id).
-vtkAbstractArray* LeafArray(vtkPointSet* leaf,
-  const std::string& name,
-  const std::vector<vtkIdType>& cellOf,
-  const std::vector<vtkIdType>** rowOf)
+/// A leaf's array for its points, and the row of each point in it (null: the point's own id).
+struct LeafArray
 {
-  static const std::vector<vtkIdType> none;
-  *rowOf = &none;
+  vtkAbstractArray* Array = nullptr;
+  const std::vector<vtkIdType>* RowOf = nullptr;
+
+  vtkIdType Row(vtkIdType point) const
+  {
+    return this->RowOf ? (*this->RowOf)[static_cast<std::size_t>(point)] : point;
+  }
+};
+
+/// The array `name` of a leaf: its point data's, else (cellOf not empty: vertex cells only) its
+/// cell data's.
+LeafArray FindLeafArray(vtkPointSet* leaf,
+  const std::string& name,
+  const std::vector<vtkIdType>& cellOf)
+{
   if (vtkAbstractArray* own = leaf->GetPointData()->GetAbstractArray(name.c_str()))
   {
-    return own;
+    return { own, nullptr };
   }
   if (!cellOf.empty())
   {
-    *rowOf = &cellOf;
-    return leaf->GetCellData()->GetAbstractArray(name.c_str());
+    return { leaf->GetCellData()->GetAbstractArray(name.c_str()), &cellOf };
   }
-  return nullptr;
+  return {};
 }
 /// The names of a leaf's point-data arrays and, with its vertices' cell data, of those cell-data
 /// arrays that no point-data array shares a name with.
@@ -449,15 +456,22 @@ std::vector<std::string> ArrayNames(vtkPointSet* leaf, bool withCellData)
 }
 } // namespace
 
+vtkDataObject* UpdatedData(vtkAlgorithmOutput* connection)
+{
+  vtkAlgorithm* source = connection->GetProducer();
+  source->Update(connection->GetIndex());
+  return source->GetOutputDataObject(connection->GetIndex());
+}
+
 vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data)
 {
   if (auto* points = vtkPointSet::SafeDownCast(data))
   {
     return points;
   }
-  if (vtkCompositeDataSet::SafeDownCast(data))
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
   {
-    return MergedPoints(data, {});
+    return MergedPoints(composite, {});
   }
   throw tessera::InputError(std::string("the input is ") +
     (data ? std::string("a ") + data->GetClassName() : std::string("missing")) +
@@ -465,18 +479,13 @@ vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data)
     "of them is needed");
 }
 
-vtkSmartPointer<vtkPolyData> MergedPoints(vtkDataObject* data,
+vtkSmartPointer<vtkPolyData> MergedPoints(vtkCompositeDataSet* composite,
   const std::vector<std::string>& arrays)
 {
   auto merged = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   merged->SetPoints(points);
-  auto* composite = vtkCompositeDataSet::SafeDownCast(data);
-  if (!composite)
-  {
-    return merged;
-  }
   std::vector<std::string> names = arrays;
   std::vector<vtkSmartPointer<vtkAbstractArray>> joined(arrays.size());
   bool first = true;
@@ -504,8 +513,8 @@ vtkSmartPointer<vtkPolyData> MergedPoints(vtkDataObject* data,
     }
     for (std::size_t a = 0; a < names.size(); ++a)
     {
-      const std::vector<vtkIdType>* rowOf = nullptr;
-      vtkAbstractArray* source = LeafArray(leaf, names[a], cellOf, &rowOf);
+      const LeafArray found = FindLeafArray(leaf, names[a], cellOf);
+      vtkAbstractArray* source = found.Array;
       if (first && source)
       {
         joined[a].TakeReference(source->NewInstance());
@@ -531,8 +540,7 @@ vtkSmartPointer<vtkPolyData> MergedPoints(vtkDataObject* data,
       }
       for (vtkIdType p = 0; p < n; ++p)
       {
-        joined[a]->InsertNextTuple(
-          rowOf->empty() ? p : (*rowOf)[static_cast<std::size_t>(p)], source);
+        joined[a]->InsertNextTuple(found.Row(p), source);
       }
     }
     for (vtkIdType p = 0; p < n; ++p)

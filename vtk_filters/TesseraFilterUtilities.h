@@ -16,6 +16,8 @@
 #include <utility>
 #include <vector>
 
+class vtkAlgorithmOutput;
+class vtkCompositeDataSet;
 class vtkDataObject;
 class vtkFieldData;
 class vtkPoints;
@@ -32,13 +34,17 @@ std::vector<tessera::Point2> CopyPoints2D(vtkPoints* points);
 /// CopyPoints2D, throwing tessera::InputError naming the first point with a NaN or infinite x or y.
 std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points);
 
+/// The data of an upstream connection, brought up to date (for a RequestInformation that needs
+/// the input's data: the areal average's time steps, the ridge grouping's image extent).
+vtkDataObject* UpdatedData(vtkAlgorithmOutput* connection);
+
 /// The points of every vtkPointSet leaf of a composite data set, in the leaves' order, as one
 /// vtkPolyData (points only, no cells), with the point-data arrays named in `arrays` (empty: all)
 /// that the first leaf with points has, joined over the leaves. A leaf whose cells are one vertex
 /// per point (a feature of vtkGDALVectorReader's point layer: its attributes are cell data) gives
 /// its cell-data array of that name instead. Throws tessera::InputError naming the block for a leaf
 /// that is not a point set, or that lacks an array the first one has or holds it in another type.
-vtkSmartPointer<vtkPolyData> MergedPoints(vtkDataObject* data,
+vtkSmartPointer<vtkPolyData> MergedPoints(vtkCompositeDataSet* data,
   const std::vector<std::string>& arrays);
 
 /// A point filter's input as one point set: a vtkPointSet itself, or a composite data set's

@@ -381,11 +381,6 @@ void ProjectPiece(vtkGeographicProjection* self,
   vtkPointSet* input = piece.Input;
   vtkPointSet* output = piece.Output;
   auto polyInput = vtkPolyData::SafeDownCast(input);
-  if (std::isnan(self->GetMaximumEdgeLength()))
-  {
-    // (every comparison with NaN is false: it turned the densification off without a word)
-    throw tessera::InputError("MaximumEdgeLength is NaN (0 or less turns the densification off)");
-  }
   if (!self->GetInverse() && polyInput && self->GetMaximumEdgeLength() > 0.0)
   {
     EdgeDensifier densifier(polyInput,
@@ -492,6 +487,11 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
   }
   try
   {
+    if (std::isnan(this->MaximumEdgeLength))
+    {
+      // (every comparison with NaN is false: it turned the densification off without a word)
+      throw tessera::InputError("MaximumEdgeLength is NaN (0 or less turns the densification off)");
+    }
     std::vector<Piece> pieces = PiecesOf(input, output);
     std::size_t points = 0;
     for (const Piece& piece : pieces)

@@ -15,7 +15,6 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
-#include "vtkAlgorithmOutput.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "TesseraFilterUtilities.h"
@@ -77,6 +76,16 @@ vtkSmartPointer<vtkUnsignedCharArray> ByteArray(const char* name,
   return array;
 }
 
+/// The whole extent of the field image on grid (0, -1, ... for an empty grid).
+void ExtentOf(const tessera::PixelGrid& grid, int extent[6])
+{
+  const bool empty = grid.PixelCount() == 0;
+  const int bounds[6] = {
+    0, empty ? -1 : grid.Width - 1, 0, empty ? -1 : grid.Height - 1, 0, empty ? -1 : 0
+  };
+  std::copy(bounds, bounds + 6, extent);
+}
+
 /// The core's settings from the filter's.
 tessera::RidgeGroupingSettings CoreSettings(vtkRidgeGrouping* self)
 {
@@ -124,33 +133,25 @@ int vtkRidgeGrouping::RequestInformation(vtkInformation*,
   // without them a consumer asks for an empty extent (ParaView showed the image as nothing). They
   // depend on the points, so the input is brought up to date and its grid chosen here as Run
   // will choose it (no field is computed).
-  int extent[6] = { 0, -1, 0, -1, 0, -1 };
-  double origin[3] = { 0.0, 0.0, 0.0 };
-  double spacing[3] = { 1.0, 1.0, 1.0 };
+  tessera::PixelGrid grid; // empty until the input gives one
   try
   {
     if (vtkAlgorithmOutput* connection = this->GetInputConnection(0, 0))
     {
-      connection->GetProducer()->Update(connection->GetIndex());
-      const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(
-        connection->GetProducer()->GetOutputDataObject(connection->GetIndex()));
-      const tessera::PixelGrid grid = tessera::RidgeGrouping(CoreSettings(this))
-                                        .ImageGridOf(tessera_vtk::ReadPoints2D(input->GetPoints()));
-      if (grid.PixelCount() > 0)
-      {
-        extent[1] = grid.Width - 1;
-        extent[3] = grid.Height - 1;
-        extent[5] = 0;
-        origin[0] = grid.OriginX;
-        origin[1] = grid.OriginY;
-        spacing[0] = spacing[1] = grid.Spacing;
-      }
+      const vtkSmartPointer<vtkPointSet> input =
+        tessera_vtk::InputPoints(tessera_vtk::UpdatedData(connection));
+      grid = tessera::RidgeGrouping(CoreSettings(this))
+               .ImageGridOf(tessera_vtk::ReadPoints2D(input->GetPoints()));
     }
   }
   catch (const std::exception&)
   {
     // RequestData reads the same input and settings, and reports the error.
   }
+  int extent[6];
+  ExtentOf(grid, extent);
+  const double origin[3] = { grid.OriginX, grid.OriginY, 0.0 };
+  const double spacing[3] = { grid.Spacing, grid.Spacing, 1.0 };
   vtkInformation* imageInfo = outputVector->GetInformationObject(3);
   imageInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), extent, 6);
   imageInfo->Set(vtkDataObject::ORIGIN(), origin, 3);
@@ -250,9 +251,8 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     vtkInformation* imageInfo = outputVector->GetInformationObject(3);
     int advertised[6] = { 0, -1, 0, -1, 0, -1 };
     imageInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), advertised);
-    const int made[6] = {
-      0, grid.Width - 1, 0, grid.Height - 1, 0, grid.PixelCount() > 0 ? 0 : -1
-    };
+    int made[6];
+    ExtentOf(grid, made);
     if (!std::equal(made, made + 6, advertised))
     {
       // RequestInformation chose the grid from the points as they were then (another time step's,

@@ -552,14 +552,6 @@ private:
   vtkNew<vtkDoubleArray> CellAreas, CellWeights;
 };
 
-/// The data of an upstream connection, brought up to date.
-vtkDataObject* UpdatedData(vtkAlgorithmOutput* connection)
-{
-  vtkAlgorithm* source = connection->GetProducer();
-  source->Update(connection->GetIndex());
-  return source->GetOutputDataObject(connection->GetIndex());
-}
-
 /// The latest modification time of a data object and, for a composite one, of its blocks.
 vtkMTimeType LatestMTime(vtkDataObject* data)
 {
@@ -751,9 +743,8 @@ int vtkThiessenArealAverage::FillInputPortInformation(int port, vtkInformation* 
   if (port == 0)
   {
     // Points, or a composite of point sets (a point layer from vtkGDALVectorReader: a block per
-    // feature), joined into one set of gauges.
-    // (any type at all: GaugesOf names one that is neither, where the pipeline's own check would
-    // stop before RequestData and leave the last results in place)
+    // feature) joined into one set of gauges; any other type too, for GaugesOf to name (the
+    // pipeline's own check would stop before RequestData and leave the last results in place).
     info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
   }
   else if (port == 1)
@@ -796,8 +787,8 @@ int vtkThiessenArealAverage::RequestInformation(vtkInformation*,
   // The time steps are the times of the observation rows that can be used, those of stations
   // the gauges have: the table and the gauges are read now, ahead of RequestData, so that the
   // pipeline (and ParaView's time slider) knows them.
-  auto* table = vtkTable::SafeDownCast(UpdatedData(this->GetInputConnection(2, 0)));
-  vtkDataObject* gaugesData = UpdatedData(this->GetInputConnection(0, 0));
+  auto* table = vtkTable::SafeDownCast(tessera_vtk::UpdatedData(this->GetInputConnection(2, 0)));
+  vtkDataObject* gaugesData = tessera_vtk::UpdatedData(this->GetInputConnection(0, 0));
   if (!table || !gaugesData)
   {
     return 1;
@@ -914,7 +905,8 @@ vtkPointSet* vtkThiessenArealAverage::GaugesOf(vtkDataObject* data)
   {
     return points;
   }
-  if (!vtkCompositeDataSet::SafeDownCast(data))
+  auto* composite = vtkCompositeDataSet::SafeDownCast(data);
+  if (!composite)
   {
     throw tessera::InputError(std::string("the gauges (input 0) are a ") +
       (data ? data->GetClassName() : "nothing") + ", not points");
@@ -925,7 +917,7 @@ vtkPointSet* vtkThiessenArealAverage::GaugesOf(vtkDataObject* data)
   if (!in.Joined || in.JoinedFrom != data || in.JoinedAt != latest || in.JoinedArrays != arrays)
   {
     in.Joined = nullptr; // until the join succeeds
-    in.Joined = tessera_vtk::MergedPoints(data, arrays);
+    in.Joined = tessera_vtk::MergedPoints(composite, arrays);
     in.JoinedFrom = data;
     in.JoinedAt = latest;
     in.JoinedArrays = arrays;
@@ -1198,20 +1190,18 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   }
   weightRows.Fill(in.Weights);
   // Gauges with values whose tiles never reach the catchment (those without values, and gauges at
-  // the place of another, are reported above).
-  std::vector<char> reported(gaugeCount, 1);
-  for (const std::int32_t g : unobserved)
+  // the place of another, are reported above, so they count as told).
+  for (const std::vector<std::int32_t>* told : { &unobserved, &duplicates })
   {
-    reported[static_cast<std::size_t>(g)] = 0;
-  }
-  for (const std::int32_t g : duplicates)
-  {
-    reported[static_cast<std::size_t>(g)] = 0;
+    for (const std::int32_t g : *told)
+    {
+      everWeighted[static_cast<std::size_t>(g)] = 1;
+    }
   }
   std::vector<std::int32_t> unweighted;
   for (std::size_t g = 0; g < gaugeCount; ++g)
   {
-    if (reported[g] && !everWeighted[g])
+    if (!everWeighted[g])
     {
       unweighted.push_back(static_cast<std::int32_t>(g));
     }
