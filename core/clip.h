@@ -179,6 +179,8 @@ private:
   std::size_t NextVertex(std::size_t v) const;
   // Signed crossings of the ray from p towards +x, per ring, over the whole catchment.
   void RayCrossings(const Point2& p, std::vector<std::pair<std::uint32_t, int>>& out) const;
+  // Winding number of the rings at p (the crossings in work.Crossings).
+  int WindingAt(const Point2& p, Workspace& work) const;
 
   std::vector<std::size_t> Offsets;
   std::vector<Point2> Points;

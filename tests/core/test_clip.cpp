@@ -11,6 +11,7 @@
 #include "tiles.h"
 #include "window.h"
 
+#include <array>
 #include <gmpxx.h>
 #include "exact_support.h"
 #include "test_support.h"
@@ -499,6 +500,66 @@ TEST(Clip, TilesOnDetailedOutlinesMatchExactRationalClipping)
     partial += exact > 0 && exact.get_d() < tileArea;
   }
   EXPECT_GT(partial, 6);
+}
+
+// A catchment of few long slanted edges has a coarse grid (3 x 3 cells here), so a small tile's
+// cells list segments that pass it by: those whose boxes miss the tile's, and those whose boxes
+// meet it while their lines leave all four corners on one side. Such a tile takes the path of an
+// empty cell; tiles across an edge, and those just clear of one, must match the exact clipping.
+TEST(Clip, SmallTilesBesideLongSlantedEdgesMatchExactClipping)
+{
+  std::mt19937 random(31);
+  const std::vector<Point2> triangle{ { 0.0, 0.0 }, { 100.0, 3.0 }, { 40.0, 90.0 } };
+  const std::vector<Point2> hole{ { 30.0, 20.0 }, { 45.0, 50.0 }, { 60.0, 22.0 } };
+  const Rings rings({ triangle, hole });
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  std::uniform_real_distribution<double> along(0.0, 1.0), offset(-4.0, 4.0), size(0.25, 3.0);
+  int partial = 0, inside = 0, outside = 0;
+  for (int i = 0; i < 600; ++i)
+  {
+    const std::vector<Point2>& ring = i % 3 == 0 ? hole : triangle;
+    const std::size_t e = static_cast<std::size_t>(i / 3) % ring.size();
+    const Point2& a = ring[e];
+    const Point2& b = ring[(e + 1) % ring.size()];
+    const double t = along(random), s = size(random);
+    const double x = a.x + t * (b.x - a.x) + offset(random);
+    const double y = a.y + t * (b.y - a.y) + offset(random);
+    const std::vector<Point2> tile = RandomConvex(random, x, x + s, y, y + s, 6, 1.0 / 64);
+    const mpq_class exact = ExactClippedArea(rings, tile);
+    const double tileArea = tessera_test::ShoelaceArea(tile);
+    EXPECT_NEAR(catchment.ClipArea(tile), exact.get_d(), Tolerance(exact, tileArea))
+      << "tile " << i;
+    partial += exact > 0 && exact.get_d() < tileArea;
+    inside += exact.get_d() == tileArea;
+    outside += exact == 0;
+  }
+  // Each kind must be well represented for the comparison to mean something.
+  EXPECT_GT(partial, 60);
+  EXPECT_GT(inside, 100);
+  EXPECT_GT(outside, 100);
+}
+
+// A sliver (a triangle 1e-13 high, some ulps at 50) is as thin as the clipping's rounding: it has
+// no area to clip wherever it lies, whether a catchment segment's cell holds it or not (in an
+// empty cell its area was kept).
+TEST(Clip, SliverTilesHaveNoAreaWhateverTheirCell)
+{
+  const Rings rings({ { { 0.0, 0.0 }, { 100.0, 0.0 }, { 100.0, 100.0 }, { 0.0, 100.0 } } });
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  // The square's grid is 3 x 3, its middle cell empty: slivers across the cells of the edges,
+  // beside an edge, and in the empty cell.
+  for (const auto& [x0, x1, y] : { std::array<double, 3>{ 10.0, 90.0, 1.0 },
+         std::array<double, 3>{ 10.0, 90.0, 50.0 },
+         std::array<double, 3>{ 40.0, 60.0, 50.0 } })
+  {
+    const std::vector<Point2> sliver{ { x0, y }, { x1, y }, { x1, y + 1e-13 } };
+    ASSERT_GT(tessera_test::ShoelaceArea(sliver), 0.0);
+    EXPECT_EQ(catchment.ClipArea(sliver), 0.0) << "from x = " << x0 << " at y = " << y;
+  }
+  const std::vector<Point2> thin{ { 10.0, 50.0 }, { 90.0, 50.0 }, { 90.0, 50.0 + 1e-9 } };
+  const double height = (50.0 + 1e-9) - 50.0; // exact: 1e-9 as rounded at 50
+  EXPECT_NEAR(catchment.ClipArea(thin), 40.0 * height, 1e-22)
+    << "a thin tile above rounding keeps its area";
 }
 
 TEST(Clip, DyadicCoordinatesAwayFromOriginMatchExactClipping)
