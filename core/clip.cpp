@@ -55,17 +55,17 @@ bool DifferenceIsExact(double a, double b)
 // would round.
 double SignedArea(const Point2* ring, std::size_t count)
 {
-  Point2 origin = ring[0];
-  for (std::size_t i = 1; i < count; ++i)
+  bool shifted = true;
+  for (std::size_t i = 1; i < count && shifted; ++i)
   {
-    if (!DifferenceIsExact(ring[i].x, origin.x) || !DifferenceIsExact(ring[i].y, origin.y))
-    {
-      origin = Point2{ 0.0, 0.0 };
-      break;
-    }
+    shifted = DifferenceIsExact(ring[i].x, ring[0].x) && DifferenceIsExact(ring[i].y, ring[0].y);
   }
+  // Relative to the first vertex, the terms of the two edges at it are zeros, which leave a
+  // compensated sum's bits as they are: only the edges between the others are summed (a third of
+  // a hexagon's products).
+  const Point2 origin = shifted ? ring[0] : Point2{ 0.0, 0.0 };
   CompensatedSum twice;
-  for (std::size_t i = 0; i < count; ++i)
+  for (std::size_t i = shifted ? 1 : 0; i + (shifted ? 1 : 0) < count; ++i)
   {
     const Point2& a = ring[i];
     const Point2& b = ring[i + 1 == count ? 0 : i + 1];
@@ -555,27 +555,30 @@ Catchment::Catchment(const std::vector<std::size_t>& ringOffsets,
   this->TotalArea = area.Value();
 }
 
-std::size_t Catchment::CellIndex(double value, double lo, double scale, std::size_t count)
+// (Inline, and through int, which holds any count up to 4096: as calls converting to an unsigned
+// 64-bit type, the cell lookups were a tenth of the clipping's instructions.)
+inline std::size_t Catchment::CellIndex(double value, double lo, double scale, std::size_t count)
 {
   const double cell = (value - lo) * scale;
   if (!(cell > 0.0))
   {
     return 0;
   }
-  return cell >= static_cast<double>(count) ? count - 1 : static_cast<std::size_t>(cell);
+  return cell >= static_cast<double>(count) ? count - 1
+                                            : static_cast<std::size_t>(static_cast<int>(cell));
 }
 
-std::size_t Catchment::CellX(double x) const
+inline std::size_t Catchment::CellX(double x) const
 {
   return CellIndex(x, this->Box.XMin, this->CellScaleX, this->GridX);
 }
 
-std::size_t Catchment::CellY(double y) const
+inline std::size_t Catchment::CellY(double y) const
 {
   return CellIndex(y, this->Box.YMin, this->CellScaleY, this->GridY);
 }
 
-std::size_t Catchment::NextVertex(std::size_t v) const
+inline std::size_t Catchment::NextVertex(std::size_t v) const
 {
   const std::uint32_t ring = this->EdgeRing[v];
   return v + 1 == this->Offsets[ring + 1] ? this->Offsets[ring] : v + 1;
@@ -651,13 +654,12 @@ void Catchment::RayCrossings(const Point2& p, std::vector<std::pair<std::uint32_
     for (std::uint32_t k = this->CellStart[cell]; k < this->CellStart[cell + 1]; ++k)
     {
       const std::uint32_t v = this->CellEdges[k];
-      const Point2& a = this->Points[v];
-      const Point2& b = this->Points[this->NextVertex(v)];
-      if (std::max(this->CellX(std::min(a.x, b.x)), first) != i)
+      // Each segment once, in its first cell along the ray (its own first column, stored).
+      if (std::max<std::size_t>(this->FirstCell[v] >> 16, first) != i)
       {
         continue;
       }
-      const int crossing = RayCrossing(a, b, p);
+      const int crossing = RayCrossing(this->Points[v], this->Points[this->NextVertex(v)], p);
       if (crossing != 0)
       {
         out.emplace_back(this->EdgeRing[v], crossing);
