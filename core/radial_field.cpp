@@ -228,12 +228,14 @@ double FastFieldErrorBound(RadialBasis basis,
   return spreading + rounding;
 }
 
-std::size_t FastFieldMemoryBytes(int gridWidth, int gridHeight)
+// In double: for the sizes it is asked about to refuse them (up to 2^31 pixels a side), the
+// product of the padded sides overflows 64 bits (an image size of 2^31 - 1 was said to need 0 MiB).
+double FastFieldMemoryBytes(int gridWidth, int gridHeight)
 {
-  const std::size_t padded =
-    NextPowerOfTwo(2 * static_cast<std::size_t>(std::max(gridWidth, 1)) - 1) *
-    NextPowerOfTwo(2 * static_cast<std::size_t>(std::max(gridHeight, 1)) - 1);
-  return 2 * padded * sizeof(Complex);
+  const double padded =
+    static_cast<double>(NextPowerOfTwo(2 * static_cast<std::size_t>(std::max(gridWidth, 1)) - 1)) *
+    static_cast<double>(NextPowerOfTwo(2 * static_cast<std::size_t>(std::max(gridHeight, 1)) - 1));
+  return 2.0 * padded * static_cast<double>(sizeof(Complex));
 }
 
 } // namespace tessera

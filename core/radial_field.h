@@ -58,7 +58,7 @@ double FastFieldErrorBound(RadialBasis basis,
   int gridHeight);
 
 /// Bytes FastField allocates for its padded buffers (two complex arrays of P entries), so a
-/// caller can refuse an image size before allocating anything.
-std::size_t FastFieldMemoryBytes(int gridWidth, int gridHeight);
+/// caller can refuse an image size before allocating anything; a double, which cannot overflow.
+double FastFieldMemoryBytes(int gridWidth, int gridHeight);
 
 } // namespace tessera

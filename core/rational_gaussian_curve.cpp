@@ -149,13 +149,60 @@ bool WindowedAverage(const std::vector<ControlPoint>& sorted,
   return true;
 }
 
-// Closed curve whose window reaches half a period: sum every periodic image explicitly.
+// Below this sigma a closed curve's periodic Gaussian is summed over its images directly (at most
+// 2 * 6 + 1 of them); from it on, as its Fourier series (PeriodicFourierSum).
+constexpr double FourierSigma = 0.5;
+
+// A closed curve with a wide sigma (a period of 1): by Poisson summation, the periodic Gaussian
+// sum over k of exp(-(d + k)^2 / (2 sigma^2)) is sqrt(2 pi) sigma (1 + 2 sum over m >= 1 of
+// exp(-2 pi^2 sigma^2 m^2) cos(2 pi m d)), whose terms fall so fast for sigma >= 1/2 that three
+// give it to double precision. The images summed directly would number 16 sigma (a sigma of 1e4
+// took a minute, and one of 1e9 overflowed their count into NaN curves). The constant factor
+// cancels in the ratio; for a huge sigma every weight is 1: the curve is the controls' centroid.
+Point2 PeriodicFourierSum(const std::vector<double>& nodes,
+  const std::vector<Point2>& controls,
+  const std::vector<double>& weights,
+  double u,
+  double sigma)
+{
+  constexpr double Pi = 3.14159265358979323846;
+  // The terms beyond exp(-40) (4e-18) of the first are dropped: m up to sqrt(40 / 2 pi^2) / sigma.
+  const int terms = static_cast<int>(std::ceil(std::sqrt(40.0 / (2.0 * Pi * Pi)) / sigma));
+  std::vector<double> amplitude(static_cast<std::size_t>(terms) + 1);
+  for (int m = 1; m <= terms; ++m)
+  {
+    amplitude[m] = 2.0 * std::exp(-2.0 * Pi * Pi * sigma * sigma * m * m);
+  }
+  double sumW = 0.0;
+  double sumX = 0.0;
+  double sumY = 0.0;
+  for (std::size_t k = 0; k < nodes.size(); ++k)
+  {
+    double g = 1.0;
+    for (int m = 1; m <= terms; ++m)
+    {
+      g += amplitude[m] * std::cos(2.0 * Pi * m * (u - nodes[k]));
+    }
+    g *= weights[k];
+    sumW += g;
+    sumX += g * controls[k].x;
+    sumY += g * controls[k].y;
+  }
+  return { sumX / sumW, sumY / sumW };
+}
+
+// Closed curve whose window reaches half a period: sum every periodic image explicitly (sigma
+// under FourierSigma: at most 6 images either way).
 Point2 PeriodicFullSum(const std::vector<double>& nodes,
   const std::vector<Point2>& controls,
   const std::vector<double>& weights,
   double u,
   double sigma)
 {
+  if (sigma >= FourierSigma)
+  {
+    return PeriodicFourierSum(nodes, controls, weights, u, sigma);
+  }
   const double twoSigma2 = 2.0 * sigma * sigma;
   const int images = static_cast<int>(std::ceil(8.0 * sigma)) + 2;
   double nearest = std::numeric_limits<double>::infinity();

@@ -203,8 +203,7 @@ void RidgeGrouping::CheckImageSize(int imageSize) const
 {
   if (imageSize > MaxImageSize)
   {
-    const double mebibytes =
-      static_cast<double>(FastFieldMemoryBytes(imageSize, imageSize)) / (1024.0 * 1024.0);
+    const double mebibytes = FastFieldMemoryBytes(imageSize, imageSize) / (1024.0 * 1024.0);
     throw InputError("image size " + std::to_string(imageSize) + " exceeds the limit of " +
       std::to_string(MaxImageSize) + " pixels: its FFT field would need " +
       std::to_string(static_cast<long long>(mebibytes)) + " MiB of memory");

@@ -132,6 +132,62 @@ TEST(RationalGaussianCurve, StaysFiniteFarFromAllNodes)
   EXPECT_NEAR(curve[20].x, 1.0, 1e-9); // u = 0.4: the nearest node is 0.01
 }
 
+// A wide sigma on a closed curve is summed as a Fourier series (from sigma 1/2): it must match the
+// images summed directly (enough of them: 16 sigma + 12), run in time independent of sigma, and
+// tend to the controls' weighted centroid (a sigma of 1e9 once gave NaN curves, and 1e4 a minute).
+TEST(RationalGaussianCurve, ClosedCurvesWithAWideSigmaMatchTheImageSum)
+{
+  std::vector<double> nodes;
+  std::vector<Point2> points;
+  RandomControls(50, 5, nodes, points);
+  std::vector<double> weights(nodes.size());
+  for (std::size_t i = 0; i < weights.size(); ++i)
+  {
+    weights[i] = 1.0 + static_cast<double>(i % 3);
+  }
+  for (double sigma : { 0.4999, 0.5, 0.7, 2.0 })
+  {
+    const int samples = 40;
+    const auto curve =
+      tessera::SampleRationalGaussianCurve(nodes, points, weights, sigma, true, samples);
+    const int images = static_cast<int>(std::ceil(16.0 * sigma)) + 12;
+    for (int s = 0; s < samples; ++s)
+    {
+      const double u = s / double(samples);
+      long double sw = 0.0L, sx = 0.0L, sy = 0.0L;
+      for (std::size_t i = 0; i < nodes.size(); ++i)
+      {
+        for (int k = -images; k <= images; ++k)
+        {
+          const long double d = u - nodes[i] + k;
+          const long double g = weights[i] * std::exp(-d * d / (2.0L * sigma * sigma));
+          sw += g;
+          sx += g * points[i].x;
+          sy += g * points[i].y;
+        }
+      }
+      EXPECT_NEAR(curve[s].x, static_cast<double>(sx / sw), 1e-11) << "sigma " << sigma;
+      EXPECT_NEAR(curve[s].y, static_cast<double>(sy / sw), 1e-11) << "sigma " << sigma;
+    }
+  }
+  double cx = 0.0, cy = 0.0, total = 0.0;
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+  {
+    cx += weights[i] * points[i].x;
+    cy += weights[i] * points[i].y;
+    total += weights[i];
+  }
+  for (double sigma : { 1e4, 1e9, 1e300 })
+  {
+    for (const Point2& p :
+      tessera::SampleRationalGaussianCurve(nodes, points, weights, sigma, true, 16))
+    {
+      EXPECT_NEAR(p.x, cx / total, 1e-12) << "sigma " << sigma;
+      EXPECT_NEAR(p.y, cy / total, 1e-12) << "sigma " << sigma;
+    }
+  }
+}
+
 TEST(RationalGaussianCurve, RejectsBadInput)
 {
   const std::vector<double> nodes = { 0.0, 0.5 };

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <functional>
 #include <map>
 #include <random>
@@ -581,7 +582,20 @@ TEST(RidgeGrouping, OversizedImageIsRefusedWithAMemoryMessage)
   {
     const std::string message = e.what();
     EXPECT_NE(message.find("100000"), std::string::npos) << message;
-    EXPECT_NE(message.find("MiB"), std::string::npos) << message;
+    // Two complex arrays of 2^18 x 2^18 (the sides padded to powers of two): 2^41 bytes.
+    EXPECT_NE(message.find("2097152 MiB"), std::string::npos) << message;
+  }
+  // The largest int: 2^32 x 2^32 padded, whose product overflows 64 bits (it was said to need 0).
+  settings.ImageSize = std::numeric_limits<int>::max();
+  try
+  {
+    RidgeGrouping grouping(settings);
+    FAIL() << "image size 2^31 - 1 accepted";
+  }
+  catch (const tessera::InputError& e)
+  {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("562949953421312 MiB"), std::string::npos) << message;
   }
   settings.ImageSize = RidgeGrouping::MaxImageSize + 1;
   EXPECT_THROW(RidgeGrouping{ settings }, tessera::InputError);
