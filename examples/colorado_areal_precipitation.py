@@ -537,12 +537,7 @@ def main(argv=None):
 
     vtkThiessenArealAverage = csv_input.import_tessera().vtkThiessenArealAverage
 
-    if os.path.exists(args.out) and not os.path.isdir(args.out):
-        csv_input.fail(f"--out {args.out}: exists and is not a directory")
-    try:
-        os.makedirs(args.out, exist_ok=True)
-    except OSError as error:
-        csv_input.fail(f"--out {args.out}: cannot create the directory ({error.strerror})")
+    csv_input.output_directory(args.out)
     started = time.time()
     gauges, gauge_lines = read_gauges(args.stations)
     ids = gauges.GetPointData().GetAbstractArray("station_id")

@@ -3,7 +3,8 @@ before any row is read, a value that is not a number is named with its file, lin
 missing values (an empty field, NA, N/A, #N/A, NaN, null, in any case) are told apart from bad ones.
 Every failure ends the script with one line naming what is wrong and where, never a traceback;
 catch_vtk_messages() and vtk_message_text() give a script the VTK filters' messages as text, so
-that it reports a value the filters reject in such a line too, not as VTK's log.
+that it reports a value the filters reject in such a line too, not as VTK's log; output_directory()
+makes the --out directory, or says in such a line why it cannot, before any work is done.
 
 A module imported by the other examples (colorado_areal_precipitation.py, project_gauges.py,
 ridge_grouping.py, beside it), not a script: run, it only says so."""
@@ -13,6 +14,7 @@ import codecs
 import csv
 import io
 import math
+import os
 import re
 import sys
 
@@ -151,6 +153,19 @@ def gauges(path, optional=()):
     for line, row in rows(path, ("station_id", "lon", "lat"), "stations", ("name", *optional)):
         yield (line, row, text(row, "station_id", path, line), (row.get("name") or "").strip(),
                number(row, "lon", path, line), number(row, "lat", path, line))
+
+
+def output_directory(path):
+    """Makes the directory path (--out) with its parents unless it exists; ends the script, naming
+    it and why, when it is something else (a file) or cannot be made (a file where a parent should
+    be, no permission). Called before the inputs are read, so that a bad --out is told at once, not
+    as a traceback once the work is done."""
+    if os.path.exists(path) and not os.path.isdir(path):
+        fail(f"--out {path}: exists and is not a directory")
+    try:
+        os.makedirs(path, exist_ok=True)
+    except OSError as error:
+        fail(f"--out {path}: cannot create the directory ({error.strerror or error})")
 
 
 def import_tessera():

@@ -89,6 +89,7 @@ def main(argv=None):
 
     vtkGeographicProjection = csv_input.import_tessera().vtkGeographicProjection
 
+    csv_input.output_directory(args.out)
     gauges, lines = read_gauges(args.stations)
     if gauges.GetNumberOfPoints() == 0:
         csv_input.fail(f"{args.stations}: no gauges to project (the file has no rows)")
@@ -109,7 +110,6 @@ def main(argv=None):
     if projected.GetNumberOfPoints() != gauges.GetNumberOfPoints():
         csv_input.fail("the projection failed and gave no message")
 
-    os.makedirs(args.out, exist_ok=True)
     writer = vtkXMLPolyDataWriter()
     writer.SetFileName(os.path.join(args.out, "gauges_projected.vtp"))
     writer.SetInputData(projected)

@@ -61,7 +61,7 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--quakes", default=os.path.join(HERE, "data", "fiji_quakes.csv"),
                         help="CSV of epicentres: columns lat, long (degrees), depth, mag")
-    parser.add_argument("--out", default="out", help="output directory")
+    parser.add_argument("--out", default="out", help="output directory (created if missing)")
     parser.add_argument("--width", type=float, default=4.0, help="basis width in pixels")
     parser.add_argument("--image-size", type=int, default=0, help="pixels along the longer side (0 = automatic)")
     parser.add_argument("--curve-sigma", type=float, default=0.1, help="RaG curve smoothness (node units)")
@@ -75,6 +75,7 @@ def main(argv=None):
     tessera = csv_input.import_tessera()
     vtkGeographicProjection, vtkRidgeGrouping = tessera.vtkGeographicProjection, tessera.vtkRidgeGrouping
 
+    csv_input.output_directory(args.out)
     quakes, lines = read_quakes(args.quakes)
     if quakes.GetNumberOfPoints() == 0:
         csv_input.fail(f"{args.quakes}: no epicentres to group (the file has no rows)")
@@ -82,11 +83,17 @@ def main(argv=None):
     projection.SetInputData(quakes)
     # An epicentre the projection rejects (a latitude beyond 90) or a grouping error ends the run
     # with one line naming the file (and the epicentre's line), not VTK's log and the executive's
-    # dump of its request.
+    # dump of its request. The projection runs on its own first: a failed projection's output is
+    # empty, and the grouping would warn about its 0 points before the line that says why.
     errors = []
     csv_input.catch_vtk_messages(projection, lambda text: errors.append(
         csv_input.point_error(text, args.quakes, lines, lambda g: "epicentre")
         or f"{args.quakes}: cannot project the epicentres: {text}"))
+    projection.Update()
+    if errors:
+        csv_input.fail(errors[0])
+    if projection.GetOutput().GetNumberOfPoints() != quakes.GetNumberOfPoints():
+        csv_input.fail(f"{args.quakes}: the projection of the epicentres failed and gave no message")
     grouping = vtkRidgeGrouping()
     csv_input.catch_vtk_messages(grouping, lambda text: errors.append(f"ridge grouping failed: {text}"),
                                  lambda text: print(f"warning: {text}", file=sys.stderr))
@@ -106,7 +113,6 @@ def main(argv=None):
     if points.GetNumberOfPoints() == 0:
         csv_input.fail("ridge grouping failed and gave no message")
 
-    os.makedirs(args.out, exist_ok=True)
     for port, name in ((0, "fiji_points.vtp"), (1, "fiji_contours.vtp"), (2, "fiji_curves.vtp")):
         writer = vtkXMLPolyDataWriter()
         writer.SetFileName(os.path.join(args.out, name))

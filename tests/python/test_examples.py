@@ -635,14 +635,64 @@ def test_the_other_examples_run_on_their_data():
             what = f"ridge_grouping.py {extra}"
             assert_without_vtk_decoration(stderr, what)  # (a VTK log line names vtkRidgeGrouping.cxx)
             lines = stderr.strip().splitlines()
-            assert_that(status == 1 and lines and lines[-1].startswith(expected)
-                        and not any("Traceback" in x for x in lines),
-                        f"{what}: expected a last line starting {expected!r}, got {lines}")
+            assert_that(status == 1 and len(lines) == 1 and lines[0].startswith(expected),
+                        f"{what}: expected one line starting {expected!r}, got {lines}")
         status, _, stderr = run_example("ridge_grouping.py", "--out", os.path.join(out, "two"), "--quakes", two)
         assert_without_vtk_decoration(stderr, "ridge_grouping.py's warning")
         assert_that(status == 0 and stderr.strip().startswith("warning: no ridge contour reaches"),
                     f"a warning as a line of its own: {stderr}")
 
+
+def test_ridge_grouping_names_a_bad_epicentre_alone():
+    # An epicentre the projection rejects ends the run with the one line naming it, whether the
+    # other epicentres would be enough to group or not: the grouping does not run on the failed
+    # projection's empty output, so no warning of its about "0 points" comes before the line.
+    with tempfile.TemporaryDirectory() as directory:
+        out = os.path.join(directory, "out")
+        after_one = write(directory, "after_one.csv", "lat,long,depth,mag\n-20,181,500,4.5\n95,182,500,4.5\n")
+        alone = write(directory, "alone.csv", "lat,long,depth,mag\n-91,181,500,4.5\n")
+        among = write(directory, "among.csv", "lat,long,depth,mag\n-20,181,1,1\n-21,182,1,1\n\n"
+                                              "90.5,181,1,1\n-22,183,1,1\n")
+        for quakes, expected in (
+                (after_one, f"{after_one}:3: epicentre at (182, 95) has a latitude beyond 90 degrees"),
+                (alone, f"{alone}:2: epicentre at (181, -91) has a latitude beyond 90 degrees"),
+                (among, f"{among}:5: epicentre at (181, 90.5) has a latitude beyond 90 degrees")):
+            status, stdout, stderr = run_example("ridge_grouping.py", "--out", out, "--quakes", quakes)
+            what = f"ridge_grouping.py --quakes {quakes}"
+            assert_that(status == 1, f"{what}: exit status {status}: {stderr}")
+            assert_that("warning" not in stderr and "Traceback" not in stderr, f"{what}: {stderr!r}")
+            assert_that(stderr.splitlines() == [expected], f"{what}: expected only {expected!r}, got {stderr!r}")
+            assert_that(not stdout, f"{what}: printed {stdout!r}")
+
+
+def test_ridge_grouping_checks_its_out_directory_first():
+    # An --out that cannot be created ends the run before the epicentres are read and grouped, with
+    # one line naming it and why (as the main example says it), not a traceback after the work;
+    # the bad epicentres file shows that no reading came first.
+    with tempfile.TemporaryDirectory() as directory:
+        regular = write(directory, "a_file", "not a directory\n")
+        bad_quakes = write(directory, "north.csv", "lat,long,depth,mag\n95,181,1,1\n")
+        cases = [
+            (regular, f"--out {regular}: exists and is not a directory"),
+            (os.path.join(regular, "sub"),
+             f"--out {os.path.join(regular, 'sub')}: cannot create the directory (Not a directory)"),
+            (os.path.join(regular, "sub", "deeper"),
+             f"--out {os.path.join(regular, 'sub', 'deeper')}: cannot create the directory (Not a directory)"),
+        ]
+        for out, expected in cases:
+            # (project_gauges.py too: it made its --out after the projection, with a traceback)
+            for script, inputs in (("ridge_grouping.py", ()), ("ridge_grouping.py", ("--quakes", bad_quakes)),
+                                   ("project_gauges.py", ())):
+                status, stdout, stderr = run_example(script, "--out", out, *inputs)
+                what = f"{script} --out {out} {' '.join(inputs)}"
+                assert_that(status == 1, f"{what}: exit status {status}: {stderr}")
+                assert_that("Traceback" not in stderr, f"{what}: a traceback instead of a message: {stderr}")
+                assert_that(stderr.splitlines() == [expected], f"{what}: expected only {expected!r}, got {stderr!r}")
+                assert_that(not stdout, f"{what}: printed {stdout!r}")
+        with open(regular) as f:
+            assert_that(f.read() == "not a directory\n", "--out a file: the file was changed")
+        assert_that(sorted(os.listdir(directory)) == ["a_file", "north.csv"],
+                    f"files left beside the inputs: {os.listdir(directory)}")
 
 def test_project_gauges_names_a_bad_gauge_by_its_line():
     # A gauge vtkGeographicProjection rejects ends project_gauges.py with one line naming the
@@ -669,7 +719,9 @@ def test_project_gauges_names_a_bad_gauge_by_its_line():
             messages = stderr.splitlines()
             assert_that(len(messages) == 1 and messages[0].startswith(expected),
                         f"{what}: expected one line starting {expected!r}, got {messages}")
-            assert_that(not os.path.exists(os.path.join(out, "o")), f"{what}: wrote its outputs")
+            # (--out is made before the inputs are read, so that a bad one is told first)
+            made = os.path.join(out, "o")
+            assert_that(not os.path.exists(made) or not os.listdir(made), f"{what}: wrote its outputs")
 
 
 def test_every_script_takes_help():
@@ -714,6 +766,8 @@ if __name__ == "__main__":
          test_rows_of_empty_fields_are_skipped,
          test_the_messages_map_to_files_and_lines,
          test_the_other_examples_run_on_their_data,
+         test_ridge_grouping_names_a_bad_epicentre_alone,
+         test_ridge_grouping_checks_its_out_directory_first,
          test_project_gauges_names_a_bad_gauge_by_its_line,
          test_every_script_takes_help,
          test_without_tessera_on_the_path_the_scripts_say_how_to_run])
