@@ -6,7 +6,14 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkIdList.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMultiBlockDataSet.h"
+#include "vtkPartitionedDataSet.h"
+#include "vtkPartitionedDataSetCollection.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkDataObject.h"
@@ -29,6 +36,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 namespace tessera_vtk
@@ -157,13 +165,14 @@ std::string ProjectionRecordOf(vtkDataObject* data, const std::string& what)
   }
   vtkSmartPointer<vtkCompositeDataIterator> it;
   it.TakeReference(composite->NewIterator());
+  const BlockLabels labels(composite);
   for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
   {
     const std::string own = ReadProjectionRecord(it->GetCurrentDataObject());
     if (!own.empty() && !record.empty() && own != record)
     {
-      throw tessera::InputError(what + " mixes blocks projected differently: block " +
-        std::to_string(it->GetCurrentFlatIndex()) + " with " + own + ", another with " + record);
+      throw tessera::InputError(what + " mixes blocks projected differently: " + labels.Of(it) +
+        " with " + own + ", another with " + record);
     }
     record = own.empty() ? record : own;
   }
@@ -454,6 +463,140 @@ std::vector<std::string> ArrayNames(vtkPointSet* leaf, bool withCellData)
   }
   return names;
 }
+
+/// The cell-data arrays of a point set that have no point-data array of their name.
+std::vector<std::string> UncarriedCellArrays(vtkPointSet* set)
+{
+  std::vector<std::string> names;
+  vtkCellData* cells = set->GetCellData();
+  for (int k = 0; k < cells->GetNumberOfArrays(); ++k)
+  {
+    const char* name = cells->GetAbstractArray(k)->GetName();
+    if (name && *name && !set->GetPointData()->GetAbstractArray(name))
+    {
+      names.emplace_back(name);
+    }
+  }
+  return names;
+}
+
+/// A leaf of a composite data set of points, with the name the messages give it.
+struct PointLeaf
+{
+  vtkPointSet* Set;
+  std::string Label;
+  std::vector<vtkIdType> CellOf; // VertexCellOfPoint
+};
+
+/// The leaves with points, in the composite's order. Throws tessera::InputError naming a leaf that
+/// is not a point set, or one whose attribute arrays are short (CheckAttributeLengths).
+std::vector<PointLeaf> PointLeaves(vtkCompositeDataSet* composite)
+{
+  const BlockLabels labels(composite);
+  std::vector<PointLeaf> leaves;
+  auto iter = vtk::TakeSmartPointer(composite->NewIterator());
+  for (iter->InitTraversal(); !iter->IsDoneWithTraversal(); iter->GoToNextItem())
+  {
+    const std::string label = labels.Of(iter);
+    auto* leaf = vtkPointSet::SafeDownCast(iter->GetCurrentDataObject());
+    if (!leaf)
+    {
+      throw tessera::InputError(label + " of the points is a " +
+        iter->GetCurrentDataObject()->GetClassName() + ", not a point set");
+    }
+    if (leaf->GetNumberOfPoints() > 0)
+    {
+      CheckAttributeLengths(leaf, label + " of the points");
+      leaves.push_back({ leaf, label, VertexCellOfPoint(leaf) });
+    }
+  }
+  return leaves;
+}
+
+/// Why the leaves' arrays `name` cannot be joined (a leaf lacks it, or holds it in another type
+/// or number of components than the first that has it), or "" when they can.
+std::string JoinProblem(const std::vector<PointLeaf>& leaves, const std::string& name)
+{
+  const PointLeaf* model = nullptr;
+  vtkAbstractArray* modelArray = nullptr;
+  for (const PointLeaf& leaf : leaves)
+  {
+    vtkAbstractArray* array = FindLeafArray(leaf.Set, name, leaf.CellOf).Array;
+    if (!array)
+    {
+      if (leaf.Set->GetCellData()->GetAbstractArray(name.c_str()))
+      {
+        return leaf.Label + " of the points holds '" + name +
+          "' as cell data of cells that are not one vertex per point (a multipoint feature?), so "
+          "its points cannot be given it";
+      }
+      std::string other;
+      for (const PointLeaf& with : leaves)
+      {
+        if (FindLeafArray(with.Set, name, with.CellOf).Array)
+        {
+          other = ", which " + with.Label + " has";
+          break;
+        }
+      }
+      return leaf.Label + " of the points has no array '" + name + "'" + other;
+    }
+    if (!modelArray)
+    {
+      model = &leaf;
+      modelArray = array;
+    }
+    else if (std::string(array->GetClassName()) != modelArray->GetClassName() ||
+      array->GetNumberOfComponents() != modelArray->GetNumberOfComponents())
+    {
+      return leaf.Label + " of the points holds '" + name + "' as a " + array->GetClassName() +
+        " of " + std::to_string(array->GetNumberOfComponents()) + " component(s) where " +
+        model->Label + " holds a " + modelArray->GetClassName() + " of " +
+        std::to_string(modelArray->GetNumberOfComponents());
+    }
+  }
+  return std::string();
+}
+
+/// The path of each leaf below node (child indices joined by '/').
+void CollectLeafPaths(vtkDataObject* node,
+  const std::string& path,
+  std::map<vtkDataObject*, std::string>& paths)
+{
+  const auto child = [&](unsigned int k, vtkDataObject* data)
+  {
+    if (data)
+    {
+      CollectLeafPaths(
+        data, path.empty() ? std::to_string(k) : path + "/" + std::to_string(k), paths);
+    }
+  };
+  if (auto* collection = vtkPartitionedDataSetCollection::SafeDownCast(node))
+  {
+    for (unsigned int k = 0; k < collection->GetNumberOfPartitionedDataSets(); ++k)
+    {
+      child(k, collection->GetPartitionedDataSet(k));
+    }
+  }
+  else if (auto* partitioned = vtkPartitionedDataSet::SafeDownCast(node))
+  {
+    for (unsigned int k = 0; k < partitioned->GetNumberOfPartitions(); ++k)
+    {
+      child(k, partitioned->GetPartitionAsDataObject(k));
+    }
+  }
+  else if (auto* blocks = vtkMultiBlockDataSet::SafeDownCast(node))
+  {
+    for (unsigned int k = 0; k < blocks->GetNumberOfBlocks(); ++k)
+    {
+      child(k, blocks->GetBlock(k));
+    }
+  }
+  else if (!path.empty())
+  {
+    paths.emplace(node, path);
+  }
+}
 } // namespace
 
 vtkDataObject* UpdatedData(vtkAlgorithmOutput* connection)
@@ -463,15 +606,116 @@ vtkDataObject* UpdatedData(vtkAlgorithmOutput* connection)
   return source->GetOutputDataObject(connection->GetIndex());
 }
 
-vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data)
+BlockLabels::BlockLabels(vtkCompositeDataSet* data)
+{
+  CollectLeafPaths(data, std::string(), this->Paths);
+}
+
+std::string BlockLabels::Of(vtkCompositeDataIterator* it) const
+{
+  const auto found = this->Paths.find(it->GetCurrentDataObject());
+  std::string label = found != this->Paths.end()
+    ? "block " + found->second + " (composite index " + std::to_string(it->GetCurrentFlatIndex())
+    : "the block of composite index " + std::to_string(it->GetCurrentFlatIndex());
+  if (it->HasCurrentMetaData() && it->GetCurrentMetaData()->Has(vtkCompositeDataSet::NAME()))
+  {
+    label += std::string(found != this->Paths.end() ? ", '" : " ('") +
+      it->GetCurrentMetaData()->Get(vtkCompositeDataSet::NAME()) + "'";
+    return label + ")";
+  }
+  return found != this->Paths.end() ? label + ")" : label;
+}
+
+void CheckAttributeLengths(vtkDataSet* data, const std::string& what)
+{
+  for (const bool points : { true, false })
+  {
+    vtkFieldData* arrays = points ? static_cast<vtkFieldData*>(data->GetPointData())
+                                  : static_cast<vtkFieldData*>(data->GetCellData());
+    const vtkIdType needed = points ? data->GetNumberOfPoints() : data->GetNumberOfCells();
+    for (int k = 0; k < arrays->GetNumberOfArrays(); ++k)
+    {
+      vtkAbstractArray* array = arrays->GetAbstractArray(k);
+      if (array && array->GetNumberOfTuples() < needed)
+      {
+        const char* name = array->GetName();
+        throw tessera::InputError(what + ": its " + (points ? "point" : "cell") + "-data array " +
+          (name && *name ? "'" + std::string(name) + "'" : std::string("without a name")) +
+          " has " + std::to_string(array->GetNumberOfTuples()) + " value(s) for " +
+          std::to_string(needed) + (points ? " points" : " cells"));
+      }
+    }
+  }
+}
+
+void RequestWholeInputs(vtkInformationVector** inputVector, int firstPort, int lastPort)
+{
+  for (int port = firstPort; port <= lastPort; ++port)
+  {
+    for (int k = 0; k < inputVector[port]->GetNumberOfInformationObjects(); ++k)
+    {
+      vtkInformation* info = inputVector[port]->GetInformationObject(k);
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+    }
+  }
+}
+
+bool MakesOutput(vtkInformationVector* outputVector)
+{
+  for (int k = 0; k < outputVector->GetNumberOfInformationObjects(); ++k)
+  {
+    vtkInformation* info = outputVector->GetInformationObject(k);
+    if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
+      info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data, std::vector<std::string>& warnings)
 {
   if (auto* points = vtkPointSet::SafeDownCast(data))
   {
-    return points;
+    CheckAttributeLengths(points, "the input");
+    const std::vector<std::string> cellArrays = UncarriedCellArrays(points);
+    if (cellArrays.empty())
+    {
+      return points;
+    }
+    if (VertexCellOfPoint(points).empty())
+    {
+      warnings.push_back("the input's cell-data arrays (" +
+        ListNames(cellArrays.size(), [&](std::size_t k) { return "'" + cellArrays[k] + "'"; }) +
+        ") are not carried: its cells are not one vertex per point, so they are no point's");
+      return points;
+    }
+    // One vertex per point (ParaView's Merge Blocks of a GDAL point layer): the vertices'
+    // attributes are the points', joined as for blocks, the point set's ids kept.
+    vtkNew<vtkMultiBlockDataSet> one;
+    one->SetBlock(0, points);
+    vtkSmartPointer<vtkPolyData> joined = MergedPoints(one, {}, nullptr);
+    for (int attribute : { vtkDataSetAttributes::GLOBALIDS, vtkDataSetAttributes::PEDIGREEIDS })
+    {
+      if (vtkAbstractArray* ids = points->GetPointData()->GetAbstractAttribute(attribute))
+      {
+        joined->GetPointData()->SetActiveAttribute(ids->GetName(), attribute);
+      }
+    }
+    return joined;
   }
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
   {
-    return MergedPoints(composite, {});
+    std::map<std::string, std::string> dropped;
+    vtkSmartPointer<vtkPolyData> joined = MergedPoints(composite, {}, &dropped);
+    for (const auto& [name, problem] : dropped)
+    {
+      warnings.push_back("the array '" + name + "' is not carried: " + problem);
+    }
+    return joined;
   }
   throw tessera::InputError(std::string("the input is ") +
     (data ? std::string("a ") + data->GetClassName() : std::string("missing")) +
@@ -480,84 +724,65 @@ vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data)
 }
 
 vtkSmartPointer<vtkPolyData> MergedPoints(vtkCompositeDataSet* composite,
-  const std::vector<std::string>& arrays)
+  const std::vector<std::string>& arrays,
+  std::map<std::string, std::string>* dropped)
 {
+  const std::vector<PointLeaf> leaves = PointLeaves(composite);
   auto merged = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  merged->SetPoints(points);
-  std::vector<std::string> names = arrays;
-  std::vector<vtkSmartPointer<vtkAbstractArray>> joined(arrays.size());
-  bool first = true;
-  std::string firstBlock;
-  auto iter = vtk::TakeSmartPointer(composite->NewIterator());
-  for (iter->InitTraversal(); !iter->IsDoneWithTraversal(); iter->GoToNextItem())
+  for (const PointLeaf& leaf : leaves)
   {
-    const std::string block = "block " + std::to_string(iter->GetCurrentFlatIndex());
-    auto* leaf = vtkPointSet::SafeDownCast(iter->GetCurrentDataObject());
-    if (!leaf)
+    for (vtkIdType p = 0; p < leaf.Set->GetNumberOfPoints(); ++p)
     {
-      throw tessera::InputError(block + " of the points is a " +
-        iter->GetCurrentDataObject()->GetClassName() + ", not a point set");
-    }
-    const vtkIdType n = leaf->GetNumberOfPoints();
-    if (n == 0)
-    {
-      continue;
-    }
-    const std::vector<vtkIdType> cellOf = VertexCellOfPoint(leaf);
-    if (first && arrays.empty())
-    {
-      names = ArrayNames(leaf, !cellOf.empty());
-      joined.resize(names.size());
-    }
-    for (std::size_t a = 0; a < names.size(); ++a)
-    {
-      const LeafArray found = FindLeafArray(leaf, names[a], cellOf);
-      vtkAbstractArray* source = found.Array;
-      if (first && source)
-      {
-        joined[a].TakeReference(source->NewInstance());
-        joined[a]->SetName(names[a].c_str());
-        joined[a]->SetNumberOfComponents(source->GetNumberOfComponents());
-      }
-      if (!joined[a])
-      {
-        continue; // the first leaf has none: not joined
-      }
-      if (!source || std::string(source->GetClassName()) != joined[a]->GetClassName() ||
-        source->GetNumberOfComponents() != joined[a]->GetNumberOfComponents())
-      {
-        const bool onOtherCells =
-          !source && leaf->GetCellData()->GetAbstractArray(names[a].c_str());
-        throw tessera::InputError(block + " of the points " +
-          (source ? std::string("holds '") + names[a] + "' as a " + source->GetClassName() +
-                " where " + firstBlock + " holds a " + joined[a]->GetClassName()
-              : onOtherCells ? "holds '" + names[a] +
-                "' as cell data of cells that are not one vertex per point (a multipoint "
-                "feature?), so its points cannot be given it"
-                             : "has no array '" + names[a] + "', which " + firstBlock + " has"));
-      }
-      for (vtkIdType p = 0; p < n; ++p)
-      {
-        joined[a]->InsertNextTuple(found.Row(p), source);
-      }
-    }
-    for (vtkIdType p = 0; p < n; ++p)
-    {
-      points->InsertNextPoint(leaf->GetPoint(p));
-    }
-    if (first)
-    {
-      firstBlock = block;
-      first = false;
+      points->InsertNextPoint(leaf.Set->GetPoint(p));
     }
   }
-  for (const auto& array : joined)
+  merged->SetPoints(points);
+  std::vector<std::string> names = arrays;
+  if (arrays.empty())
   {
-    if (array)
+    for (const PointLeaf& leaf : leaves)
     {
-      merged->GetPointData()->AddArray(array);
+      for (const std::string& name : ArrayNames(leaf.Set, !leaf.CellOf.empty()))
+      {
+        if (std::find(names.begin(), names.end(), name) == names.end())
+        {
+          names.push_back(name);
+        }
+      }
+    }
+  }
+  for (const std::string& name : names)
+  {
+    const std::string problem = JoinProblem(leaves, name);
+    if (!problem.empty())
+    {
+      if (!dropped)
+      {
+        throw tessera::InputError(problem);
+      }
+      dropped->emplace(name, problem);
+      continue;
+    }
+    vtkSmartPointer<vtkAbstractArray> joined;
+    for (const PointLeaf& leaf : leaves)
+    {
+      const LeafArray found = FindLeafArray(leaf.Set, name, leaf.CellOf);
+      if (!joined)
+      {
+        joined.TakeReference(found.Array->NewInstance());
+        joined->SetName(name.c_str());
+        joined->SetNumberOfComponents(found.Array->GetNumberOfComponents());
+      }
+      for (vtkIdType p = 0; p < leaf.Set->GetNumberOfPoints(); ++p)
+      {
+        joined->InsertNextTuple(found.Row(p), found.Array);
+      }
+    }
+    if (joined)
+    {
+      merged->GetPointData()->AddArray(joined);
     }
   }
   return merged;
@@ -574,13 +799,16 @@ Rings ReadPolygonRings(vtkDataObject* data)
   else if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
   {
     auto iter = vtk::TakeSmartPointer(composite->NewIterator());
+    const BlockLabels labels(composite);
     for (iter->InitTraversal(); !iter->IsDoneWithTraversal(); iter->GoToNextItem())
     {
       if (auto* block = vtkPolyData::SafeDownCast(iter->GetCurrentDataObject()))
       {
-        const unsigned int flat = iter->GetCurrentFlatIndex();
-        AppendPolygonRings(block, "block " + std::to_string(flat) + " ", rings);
-        rings.Blocks.resize(rings.Offsets.size() - 1, std::int64_t(flat));
+        const std::int64_t flat = iter->GetCurrentFlatIndex();
+        const std::string label = labels.Of(iter);
+        AppendPolygonRings(block, label + " ", rings);
+        rings.Blocks.resize(rings.Offsets.size() - 1, flat);
+        rings.BlockNames.emplace(flat, label);
       }
     }
   }

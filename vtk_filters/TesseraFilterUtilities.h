@@ -12,12 +12,16 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
 class vtkAlgorithmOutput;
+class vtkCompositeDataIterator;
 class vtkCompositeDataSet;
+class vtkDataSet;
+class vtkInformationVector;
 class vtkDataObject;
 class vtkFieldData;
 class vtkPoints;
@@ -38,22 +42,61 @@ std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points);
 /// the input's data: the areal average's time steps, the ridge grouping's image extent).
 vtkDataObject* UpdatedData(vtkAlgorithmOutput* connection);
 
-/// The points of every vtkPointSet leaf of a composite data set, in the leaves' order, as one
-/// vtkPolyData (points only, no cells), with the point-data arrays named in `arrays` (empty: all)
-/// that the first leaf with points has, joined over the leaves. A leaf whose cells are one vertex
-/// per point (a feature of vtkGDALVectorReader's point layer: its attributes are cell data) gives
-/// its cell-data array of that name instead. Throws tessera::InputError naming the block for a leaf
-/// that is not a point set, or that lacks an array the first one has or holds it in another type.
-vtkSmartPointer<vtkPolyData> MergedPoints(vtkCompositeDataSet* data,
-  const std::vector<std::string>& arrays);
+/// How messages name a composite data set's leaves: by their path in the tree as a script builds
+/// it ("block 1", "block 0/2": SetBlock's indices), with the composite (flat) index that
+/// ParaView's Multiblock Inspector shows and the block's name when it has one:
+/// "block 1 (composite index 2, 'Gauges')".
+class BlockLabels
+{
+public:
+  explicit BlockLabels(vtkCompositeDataSet* data);
+  std::string Of(vtkCompositeDataIterator* it) const;
 
-/// A point filter's input as one point set: a vtkPointSet itself, or a composite data set's
-/// points joined by MergedPoints with all their arrays (so that a point layer read by
-/// vtkGDALVectorReader, a block per feature, is one set of points, not a tessellation per
-/// point). Throws tessera::InputError naming the type of any other input: the filters take
-/// every type at their port and check it here, so that a wrong one empties their outputs (the
-/// pipeline's own type check stops before RequestData and left the last results in place).
-vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data);
+private:
+  std::map<vtkDataObject*, std::string> Paths;
+};
+
+/// Throws tessera::InputError (naming `what` and the array) when a point-data array of data has
+/// fewer values than it has points, or a cell-data array fewer than cells: the filters copy them
+/// by point and cell id, and a short one was read past its end (a crash, or garbage in the tiles).
+void CheckAttributeLengths(vtkDataSet* data, const std::string& what);
+
+/// The points of every vtkPointSet leaf of a composite data set, in the leaves' order, as one
+/// vtkPolyData (points only, no cells), with their arrays joined over the leaves. A leaf whose
+/// cells are one vertex per point (a feature of vtkGDALVectorReader's point layer: its attributes
+/// are cell data) gives its vertices' cell-data arrays as its points' (where it has no point-data
+/// array of that name).
+/// The arrays named in `arrays` (empty: every array some leaf has) are joined where every leaf
+/// with points has them in one type and number of components. One that cannot be joined is left
+/// out, with why (which leaf lacks it, or holds what) in (*dropped)[name]; without `dropped`, it is
+/// an InputError saying why. Throws tessera::InputError naming a leaf that is not a point set, or
+/// whose arrays are short (CheckAttributeLengths).
+vtkSmartPointer<vtkPolyData> MergedPoints(vtkCompositeDataSet* data,
+  const std::vector<std::string>& arrays,
+  std::map<std::string, std::string>* dropped);
+
+/// A point filter's input as one point set:
+/// - a vtkPointSet itself, or, when its cells are one vertex per point and carry cell data (a GDAL
+///   point layer after ParaView's Merge Blocks), its points with those attributes as point data
+///   (ids kept); cell data of other cells is not carried, and a line in `warnings` says so;
+/// - a composite data set's points joined by MergedPoints with all their arrays (so that a point
+///   layer read by vtkGDALVectorReader, a block per feature, is one set of points, not a
+///   tessellation per point); arrays that cannot be joined get a line each in `warnings`.
+/// Throws tessera::InputError naming the type of any other input (the filters take every type at
+/// their port and check it here, so that a wrong one empties their outputs: the pipeline's own
+/// type check stops before RequestData and left the last results in place), and for short
+/// attribute arrays (CheckAttributeLengths).
+vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data, std::vector<std::string>& warnings);
+
+/// Asks every connection of input ports firstPort .. lastPort for the whole data set: piece 0 of
+/// 1, no ghost levels. A tessellation, a triangulation, a grouping or a fitted projection of one
+/// piece's points is not that of all the points (ParaView under MPI asks each process for a piece,
+/// and each tessellated its own: tiles overlapping, their areas summing to twice the window's), so
+/// every process reads the whole input and only the first piece makes the output (MakesOutput).
+void RequestWholeInputs(vtkInformationVector** inputVector, int firstPort, int lastPort);
+
+/// False when an output's requested piece is not the first: that process leaves the outputs empty.
+bool MakesOutput(vtkInformationVector* outputVector);
 
 /// The window a filter works in: the rectangle `bounds` (xmin, xmax, ymin, ymax) when it is not
 /// empty, intersected with `constraints` (a, b, c triples: a*x + b*y + c < 0); with neither, the
@@ -91,6 +134,8 @@ struct Rings
   /// Per ring, the flat index of the block it came from in a composite data set (-1 for a
   /// vtkPolyData input): vtkGDALVectorReader gives each feature a block of its own.
   std::vector<std::int64_t> Blocks;
+  /// The blocks' names in messages (BlockLabels), by flat index.
+  std::map<std::int64_t, std::string> BlockNames;
 };
 
 /// Every polygon, triangle and quad cell, and every closed polyline (last point = first, as

@@ -94,15 +94,35 @@ int vtkDelaunayTriangulation::FillInputPortInformation(int, vtkInformation* info
 }
 
 //------------------------------------------------------------------------------
+int vtkDelaunayTriangulation::RequestUpdateExtent(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector*)
+{
+  // Every point at once: see RequestWholeInputs (ParaView under MPI asks each process for a
+  // piece, and each made the tessellation of its own piece's points).
+  tessera_vtk::RequestWholeInputs(inputVector, 0, 0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkDelaunayTriangulation::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
+  if (!tessera_vtk::MakesOutput(outputVector))
+  {
+    return 1; // another process's piece: the first makes the whole output (RequestWholeInputs)
+  }
   vtkDataObject* inputData = vtkDataObject::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   try
   {
-    const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(inputData);
+    std::vector<std::string> notCarried;
+    const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(inputData, notCarried);
+    for (const std::string& warning : notCarried)
+    {
+      vtkWarningMacro(<< warning);
+    }
     std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
     tessera::Window window = tessera_vtk::ChooseWindow(
       this->WindowBounds, this->WindowConstraints, this->Padding, points, false);

@@ -87,6 +87,7 @@ protected:
   ~vtkDelaunayTriangulation() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
   bool SplitDegenerateFaces = false;

@@ -191,8 +191,11 @@ public:
     const bool copyPointData = inputData->GetNumberOfArrays() > 0;
     if (copyPointData)
     {
-      // Global ids too (VTK copies none by default): one tile per point keeps them unique.
+      // Global ids too (VTK copies none by default): one tile per point keeps them unique. Not
+      // the points' ghost flags: as cell ghosts their bits mean other things (a duplicate point's
+      // flag hid its tile as a duplicate cell, and the tiles' integrated area fell short).
       cellData->SetCopyGlobalIds(1, vtkDataSetAttributes::COPYTUPLE);
+      cellData->CopyFieldOff(vtkDataSetAttributes::GhostArrayName());
       cellData->CopyAllocate(inputData, this->TileCount);
       this->Renamed = tessera_vtk::RenameArraysNamed(cellData, OwnArrayNames, false);
     }
@@ -399,16 +402,36 @@ int vtkDirichletTessellation::FillInputPortInformation(int, vtkInformation* info
 }
 
 //------------------------------------------------------------------------------
+int vtkDirichletTessellation::RequestUpdateExtent(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector*)
+{
+  // Every point at once: see RequestWholeInputs (ParaView under MPI asks each process for a
+  // piece, and each made the tessellation of its own piece's points).
+  tessera_vtk::RequestWholeInputs(inputVector, 0, 0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkDirichletTessellation::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
+  if (!tessera_vtk::MakesOutput(outputVector))
+  {
+    return 1; // another process's piece: the first makes the whole output (RequestWholeInputs)
+  }
   vtkDataObject* inputData = vtkDataObject::GetData(inputVector[0]);
   vtkPolyData* tilesOutput = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* graphOutput = vtkPolyData::GetData(outputVector, 1);
   try
   {
-    const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(inputData);
+    std::vector<std::string> notCarried;
+    const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(inputData, notCarried);
+    for (const std::string& warning : notCarried)
+    {
+      vtkWarningMacro(<< warning);
+    }
     std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
     tessera::Window window =
       tessera_vtk::ChooseWindow(this->WindowBounds, this->WindowConstraints, this->Padding, points);

@@ -165,6 +165,7 @@ protected:
   ~vtkDirichletTessellation() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
   int Algorithm = GREEN_SIBSON;

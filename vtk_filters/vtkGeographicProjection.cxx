@@ -302,6 +302,7 @@ std::vector<Piece> PiecesOf(vtkDataObject* input, vtkDataObject* output)
       throw tessera::InputError(std::string("the input is a ") + input->GetClassName() +
         ", not a point set or a composite of point sets");
     }
+    tessera_vtk::CheckAttributeLengths(in, "the input");
     return { Piece{ in, out, std::string() } };
   }
   auto* compositeOutput = vtkCompositeDataSet::SafeDownCast(output);
@@ -310,19 +311,17 @@ std::vector<Piece> PiecesOf(vtkDataObject* input, vtkDataObject* output)
   vtkSmartPointer<vtkCompositeDataIterator> it;
   it.TakeReference(composite->NewIterator());
   it->SkipEmptyNodesOn();
+  const tessera_vtk::BlockLabels labels(composite);
   for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
   {
-    std::string label = "block " + std::to_string(it->GetCurrentFlatIndex());
-    if (it->HasCurrentMetaData() && it->GetCurrentMetaData()->Has(vtkCompositeDataSet::NAME()))
-    {
-      label += std::string(" (") + it->GetCurrentMetaData()->Get(vtkCompositeDataSet::NAME()) + ")";
-    }
+    const std::string label = labels.Of(it);
     vtkDataObject* leaf = it->GetCurrentDataObject();
     auto* in = vtkPointSet::SafeDownCast(leaf);
     if (!in)
     {
       throw tessera::InputError(label + " is a " + leaf->GetClassName() + ", not a point set");
     }
+    tessera_vtk::CheckAttributeLengths(in, label);
     vtkSmartPointer<vtkPointSet> out;
     out.TakeReference(in->NewInstance());
     compositeOutput->SetDataSet(it, out);
@@ -474,10 +473,25 @@ int vtkGeographicProjection::RequestDataObject(vtkInformation* request,
 }
 
 //------------------------------------------------------------------------------
+int vtkGeographicProjection::ComputeInputUpdateExtent(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector*)
+{
+  // Every point at once: the fitted projection is the same for all of them only if it is fitted
+  // to all of them (RequestWholeInputs; ParaView under MPI asks each process for a piece).
+  tessera_vtk::RequestWholeInputs(inputVector, 0, 0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkGeographicProjection::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
+  if (!tessera_vtk::MakesOutput(outputVector))
+  {
+    return 1; // another process's piece: the first makes the whole output (RequestWholeInputs)
+  }
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0]);
   vtkDataObject* output = vtkDataObject::GetData(outputVector);
   if (!input || !output)

@@ -162,6 +162,9 @@ protected:
   int FillOutputPortInformation(int port, vtkInformation* info) override;
   int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int ComputeInputUpdateExtent(vtkInformation*,
+    vtkInformationVector**,
+    vtkInformationVector*) override;
 
   int Projection = AUTOMATIC;
   int UTMZone = 0;

@@ -138,8 +138,9 @@ int vtkRidgeGrouping::RequestInformation(vtkInformation*,
   {
     if (vtkAlgorithmOutput* connection = this->GetInputConnection(0, 0))
     {
+      std::vector<std::string> ignored; // (RequestData gives the warnings)
       const vtkSmartPointer<vtkPointSet> input =
-        tessera_vtk::InputPoints(tessera_vtk::UpdatedData(connection));
+        tessera_vtk::InputPoints(tessera_vtk::UpdatedData(connection), ignored);
       grid = tessera::RidgeGrouping(CoreSettings(this))
                .ImageGridOf(tessera_vtk::ReadPoints2D(input->GetPoints()));
     }
@@ -160,10 +161,25 @@ int vtkRidgeGrouping::RequestInformation(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
+int vtkRidgeGrouping::RequestUpdateExtent(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector*)
+{
+  // Every point at once: see RequestWholeInputs (ParaView under MPI asks each process for a
+  // piece, and each made the tessellation of its own piece's points).
+  tessera_vtk::RequestWholeInputs(inputVector, 0, 0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkRidgeGrouping::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
+  if (!tessera_vtk::MakesOutput(outputVector))
+  {
+    return 1; // another process's piece: the first makes the whole output (RequestWholeInputs)
+  }
   vtkDataObject* inputData = vtkDataObject::GetData(inputVector[0]);
   vtkPolyData* pointsOut = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* contoursOut = vtkPolyData::GetData(outputVector, 1);
@@ -171,7 +187,12 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
   vtkImageData* imageOut = vtkImageData::GetData(outputVector, 3);
   try
   {
-    const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(inputData);
+    std::vector<std::string> notCarried;
+    const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(inputData, notCarried);
+    for (const std::string& warning : notCarried)
+    {
+      vtkWarningMacro(<< warning);
+    }
     const std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
     const tessera::RidgeGrouping grouping(CoreSettings(this));
     this->UpdateProgress(0.05);

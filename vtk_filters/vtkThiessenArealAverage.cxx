@@ -649,9 +649,8 @@ std::string RingsInsideOtherBlocksWarning(const tessera_vtk::Rings& rings,
       {
         const std::size_t r = inside[k].first;
         const auto around = static_cast<std::size_t>(inside[k].second);
-        return "ring " + std::to_string(r) + " (block " + std::to_string(block[r]) +
-          ") inside ring " + std::to_string(around) + " (block " + std::to_string(block[around]) +
-          ")";
+        return "ring " + std::to_string(r) + " of " + rings.BlockNames.at(block[r]) +
+          " inside ring " + std::to_string(around) + " of " + rings.BlockNames.at(block[around]);
       });
 }
 
@@ -828,10 +827,25 @@ int vtkThiessenArealAverage::RequestInformation(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
+int vtkThiessenArealAverage::RequestUpdateExtent(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector*)
+{
+  // Every point at once: see RequestWholeInputs (ParaView under MPI asks each process for a
+  // piece, and each made the tessellation of its own piece's points).
+  tessera_vtk::RequestWholeInputs(inputVector, 0, 2);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkThiessenArealAverage::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
+  if (!tessera_vtk::MakesOutput(outputVector))
+  {
+    return 1; // another process's piece: the first makes the whole output (RequestWholeInputs)
+  }
   vtkDataObject* gaugesData = vtkDataObject::GetData(inputVector[0]);
   vtkDataObject* catchment = vtkDataObject::GetData(inputVector[1]);
   vtkDataObject* observationsData = vtkDataObject::GetData(inputVector[2]);
@@ -917,7 +931,16 @@ vtkPointSet* vtkThiessenArealAverage::GaugesOf(vtkDataObject* data)
   if (!in.Joined || in.JoinedFrom != data || in.JoinedAt != latest || in.JoinedArrays != arrays)
   {
     in.Joined = nullptr; // until the join succeeds
-    in.Joined = tessera_vtk::MergedPoints(composite, arrays);
+    // The station ids are needed; the value array only without observations (where its absence
+    // is told when the step is read).
+    std::map<std::string, std::string> dropped;
+    vtkSmartPointer<vtkPolyData> joined = tessera_vtk::MergedPoints(composite, arrays, &dropped);
+    const auto stationProblem = dropped.find(this->StationIdArrayName);
+    if (stationProblem != dropped.end())
+    {
+      throw tessera::InputError(stationProblem->second);
+    }
+    in.Joined = joined;
     in.JoinedFrom = data;
     in.JoinedAt = latest;
     in.JoinedArrays = arrays;

@@ -104,6 +104,17 @@ int vtkWindowClip::FillInputPortInformation(int port, vtkInformation* info)
 }
 
 //------------------------------------------------------------------------------
+int vtkWindowClip::RequestUpdateExtent(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector*)
+{
+  // The window whole on every process (ParaView under MPI asks each for a piece); the tiles may
+  // come in pieces, each clipped on its own.
+  tessera_vtk::RequestWholeInputs(inputVector, 1, 1);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
 int vtkWindowClip::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)

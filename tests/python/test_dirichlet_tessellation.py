@@ -920,6 +920,154 @@ def test_points_in_blocks_are_one_set_and_other_types_empty_the_outputs():
                     f"{cls.__name__}: {out.GetNumberOfCells()} cells left after an image")
         assert_that(any("the input is a vtkImageData, not points" in e for e in errors), f"{errors}")
 
+
+def test_short_attribute_arrays_are_errors_naming_them():
+    """A point-data array with fewer values than points was read past its end: a segfault with a
+    string array, garbage in the tiles with a double one. It is an error naming the array, for a
+    point set and for a block."""
+    from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkStringArray
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+
+    from tessera import vtkRidgeGrouping
+
+    rng = np.random.default_rng(8)
+    coords = [tuple(p) for p in rng.random((1000, 2))]
+    for array_type in (vtkStringArray, vtkDoubleArray):
+        for cls in (vtkDirichletTessellation, vtkDelaunayTriangulation, vtkRidgeGrouping):
+            for in_block in (False, True):
+                data = make_points(coords)
+                short = array_type()
+                short.SetName("name")
+                short.InsertNextValue("only one" if array_type is vtkStringArray else 1.0)
+                data.GetPointData().AddArray(short)
+                if in_block:
+                    blocks = vtkMultiBlockDataSet()
+                    blocks.SetBlock(0, data)
+                    data = blocks
+                f = cls()
+                errors = messages_of(f, vtkCommand.ErrorEvent)
+                f.SetInputData(data)
+                f.Update()
+                where = "block 0 (composite index 1) of the points" if in_block else "the input"
+                expected = f"{where}: its point-data array 'name' has 1 value(s) for 1000 points"
+                assert_that(len(errors) == 1 and expected in errors[0],
+                            f"{cls.__name__}, {array_type.__name__}, block {in_block}: {errors}")
+                assert_that(f.GetOutputDataObject(0).GetNumberOfCells() == 0, "outputs emptied")
+
+
+def test_each_process_piece_gets_the_whole_tessellation_once():
+    """ParaView under MPI asks each process for a piece of the output: each tessellated its own
+    piece's points (overlapping tiles whose areas summed to twice the window's). Now the first piece
+    is the tessellation of all the points and the others are empty, whatever the source splits."""
+    from vtkmodules.vtkFiltersGeneral import vtkImageDataToPointSet
+    from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
+
+    source = vtkRTAnalyticSource()
+    source.SetWholeExtent(0, 9, 0, 9, 0, 0)
+    points = vtkImageDataToPointSet()
+    points.SetInputConnection(source.GetOutputPort())
+    for cls in (vtkDirichletTessellation, vtkDelaunayTriangulation):
+        f = cls()
+        f.SetInputConnection(points.GetOutputPort())
+        f.SetWindowBounds(-0.5, 9.5, -0.5, 9.5)
+        counts, areas = [], []
+        for piece in range(3):
+            f.UpdatePiece(piece, 3, 0)
+            out = f.GetOutputDataObject(0)
+            counts.append(out.GetNumberOfCells())
+            area = out.GetCellData().GetArray("Area")
+            areas.append(sum(area.GetValue(k) for k in range(area.GetNumberOfTuples())) if area else 0.0)
+        whole = 100 if cls is vtkDirichletTessellation else 81  # tiles, or degenerate square faces
+        assert_that(counts == [whole, 0, 0], f"{cls.__name__}: cells per piece {counts}")
+        if cls is vtkDirichletTessellation:
+            assert_close(areas[0], 100.0, 1e-12, "the first piece's tiles fill the window")
+
+
+def test_vertex_cell_data_of_one_point_set_is_carried_and_other_cell_data_is_reported():
+    """A point set whose cells are one vertex per point with cell-data attributes (a GDAL point
+    layer after ParaView's Merge Blocks) had them dropped silently; now they follow the points, as
+    for blocks. Cell data of other cells cannot, and a warning names it."""
+    from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray
+    from vtkmodules.vtkCommonDataModel import vtkCellArray
+
+    rng = np.random.default_rng(9)
+    coords = [tuple(p) for p in rng.random((40, 2))]
+    values = list(rng.random(40))
+    for cls in (vtkDirichletTessellation, vtkDelaunayTriangulation):
+        data = make_points(coords)
+        verts = vtkCellArray()
+        for k in reversed(range(40)):  # vertex cells in another order than the points
+            verts.InsertNextCell(1, [k])
+        data.SetVerts(verts)
+        rain = vtkDoubleArray()
+        rain.SetName("rain")
+        for k in reversed(range(40)):
+            rain.InsertNextValue(values[k])
+        data.GetCellData().AddArray(rain)
+        f = cls()
+        f.SetInputData(data)
+        f.Update()
+        out = f.GetOutputDataObject(0)
+        if cls is vtkDirichletTessellation:
+            ids = out.GetCellData().GetArray("PointId")
+            got = out.GetCellData().GetArray("rain")
+            assert_that(got is not None and all(got.GetValue(c) == values[ids.GetValue(c)] for c in range(out.GetNumberOfCells())),
+                        "each tile carries its point's vertex value")
+        else:
+            got = out.GetPointData().GetArray("rain")
+            assert_that(got is not None and [got.GetValue(k) for k in range(40)] == values, "points carry their vertex value")
+        lines = make_points(coords)
+        cells = vtkCellArray()
+        cells.InsertNextCell(2, [0, 1])
+        lines.SetLines(cells)
+        tag = vtkDoubleArray()
+        tag.SetName("tag")
+        tag.InsertNextValue(1.0)
+        lines.GetCellData().AddArray(tag)
+        g = cls()
+        warnings = messages_of(g, vtkCommand.WarningEvent)
+        g.SetInputData(lines)
+        g.Update()
+        assert_that(any("cell-data arrays ('tag') are not carried" in w for w in warnings), f"{warnings}")
+
+
+def test_blocks_with_different_arrays_are_joined_with_a_warning_either_way_round():
+    """An array in some blocks only was dropped silently in one order and an error in the other
+    (the grouping needs no array at all); either way the points are now used and a warning names
+    the array and the blocks as a script numbers them. The point ghost flags are not copied to the
+    tiles (as cell ghosts they hid a tile)."""
+    from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkUnsignedCharArray
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+
+    rng = np.random.default_rng(10)
+    first = [tuple(p) for p in rng.random((20, 2))]
+    second = [tuple(p) for p in rng.random((20, 2))]
+    for rain_in in (0, 1):
+        blocks = vtkMultiBlockDataSet()
+        for k, coords in enumerate((first, second)):
+            arrays = {"rain": list(rng.random(20))} if k == rain_in else {}
+            blocks.SetBlock(k, make_points(coords, **arrays))
+        f = vtkDirichletTessellation()
+        warnings = messages_of(f, vtkCommand.WarningEvent)
+        errors = messages_of(f, vtkCommand.ErrorEvent)
+        f.SetInputData(blocks)
+        f.Update()
+        lacking = 1 - rain_in
+        expected = (f"the array 'rain' is not carried: block {lacking} (composite index {lacking + 1}) of the points "
+                    f"has no array 'rain', which block {rain_in} (composite index {rain_in + 1}) has")
+        assert_that(not errors and len(warnings) == 1 and expected in warnings[0], f"{errors} {warnings}")
+        assert_that(f.GetOutputDataObject(0).GetNumberOfCells() == 40, "every point tessellated")
+    data = make_points(first)
+    ghosts = vtkUnsignedCharArray()
+    ghosts.SetName("vtkGhostType")
+    for k in range(20):
+        ghosts.InsertNextValue(1 if k == 3 else 0)
+    data.GetPointData().AddArray(ghosts)
+    f = vtkDirichletTessellation()
+    f.SetInputData(data)
+    f.Update()
+    assert_that(f.GetOutputDataObject(0).GetCellData().GetArray("vtkGhostType") is None, "no cell ghosts")
+
 if __name__ == "__main__":
     run([test_tiles_are_nearest_point_regions,
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
@@ -944,4 +1092,8 @@ if __name__ == "__main__":
          test_half_neighbours_need_their_vertex_strictly_inside_the_window,
          test_delaunay_at_any_scale,
          test_a_coordinate_too_small_for_exact_window_decisions_is_named,
-         test_points_in_blocks_are_one_set_and_other_types_empty_the_outputs])
+         test_points_in_blocks_are_one_set_and_other_types_empty_the_outputs,
+         test_short_attribute_arrays_are_errors_naming_them,
+         test_each_process_piece_gets_the_whole_tessellation_once,
+         test_vertex_cell_data_of_one_point_set_is_carried_and_other_cell_data_is_reported,
+         test_blocks_with_different_arrays_are_joined_with_a_warning_either_way_round])

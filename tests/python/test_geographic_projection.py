@@ -136,7 +136,7 @@ def test_the_blocks_of_a_composite_share_one_projection():
     blocks.GetMetaData(2).Set(vtkCompositeDataSet.NAME(), "east")
     f.Modified()
     f.Update()
-    assert_that(len(messages) == 1 and "block" in messages[0] and "(east): point 1" in messages[0],
+    assert_that(len(messages) == 1 and "block 2 (composite index 3, 'east'): point 1" in messages[0],
                 f"the bad point named with its block: {messages}")
 
 

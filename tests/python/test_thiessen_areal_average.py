@@ -238,7 +238,7 @@ def test_a_catchment_ring_inside_another_blocks_ring_is_reported():
         if expected:
             # (blocks by flat index, as in the filters' other messages: the root is 0)
             assert_that("): 1 catchment ring(s)" in said[0]
-                        and "ring 1 (block 2) inside ring 0 (block 1)" in said[0], said[0])
+                        and "ring 1 of block 1 (composite index 2) inside ring 0 of block 0 (composite index 1)" in said[0], said[0])
 
 
 def test_gauges_in_blocks_as_a_point_layer_gives_them_are_joined():
@@ -300,7 +300,7 @@ def test_gauges_in_blocks_as_a_point_layer_gives_them_are_joined():
     # A block without the station ids is named.
     blocks.GetBlock(3).GetCellData().RemoveArray("station_id")
     _, errors = averaged(blocks)
-    assert_that(len(errors) == 1 and "block 4 of the points has no array 'station_id', which block 1 has" in errors[0],
+    assert_that(len(errors) == 1 and "block 3 (composite index 4) of the points has no array 'station_id', which block 0 (composite index 1) has" in errors[0],
                 f"{errors}")
     # Inputs of another type after a good run: errors naming the type, and nothing left shown.
     from vtkmodules.vtkCommonDataModel import vtkImageData
