@@ -125,6 +125,7 @@ void FitCurves(const std::vector<Point2>& points,
     sumY[position] += points[k].y;
     count[position] += 1.0;
   }
+  std::vector<int> single; // groups of one point: no curve to fit
   for (int c = 0; c < contours.Count(); ++c)
   {
     std::vector<double> nodes;
@@ -149,6 +150,10 @@ void FitCurves(const std::vector<Point2>& points,
     const double members = std::accumulate(weights.begin(), weights.end(), 0.0);
     if (members < 2.0)
     {
+      if (members > 0.0)
+      {
+        single.push_back(c);
+      }
       continue;
     }
     const double samples = std::ceil(settings.CurveSamplesPerPixel * contours.Lengths[c]);
@@ -159,6 +164,17 @@ void FitCurves(const std::vector<Point2>& points,
     result.Curves.Offsets.push_back(static_cast<int>(result.Curves.Points.size()));
     result.CurveGroupId.push_back(c);
     result.CurveClosed.push_back(contours.Closed[c]);
+  }
+  if (!single.empty())
+  {
+    std::string ids;
+    for (std::size_t k = 0; k < single.size() && k < 20; ++k)
+    {
+      ids += (k ? ", " : "") + std::to_string(single[k]);
+    }
+    result.Warnings.push_back(std::to_string(single.size()) +
+      " group(s) of a single point get no curve (a curve needs two points): group(s) " + ids +
+      (single.size() > 20 ? ", ... (" + std::to_string(single.size()) + " in all)" : ""));
   }
 }
 

@@ -124,14 +124,16 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
       vtkWarningMacro(<< warning);
     }
     std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
-    tessera::Window window = tessera_vtk::ChooseWindow(
-      this->WindowBounds, this->WindowConstraints, this->Padding, points, false);
+    // (Before the window is made: an empty WindowBounds is ignored, and a window of the
+    // constraints alone may then be refused, which the warning explains.)
     const std::string emptyBounds =
       tessera_vtk::EmptyBoundsWarning(this->WindowBounds, !this->WindowConstraints.empty());
     if (!emptyBounds.empty())
     {
       vtkWarningMacro(<< emptyBounds);
     }
+    tessera::Window window = tessera_vtk::ChooseWindow(
+      this->WindowBounds, this->WindowConstraints, this->Padding, points, false);
     // Coordinates of some 1e100 or more, or 1e-100 or less: the triangulation of points and
     // window scaled by a power of two (exactly) is the same, and its faces are ids, so nothing is
     // scaled back; every decision then stays within the predicates' exact range.

@@ -433,14 +433,16 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
       vtkWarningMacro(<< warning);
     }
     std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
-    tessera::Window window =
-      tessera_vtk::ChooseWindow(this->WindowBounds, this->WindowConstraints, this->Padding, points);
+    // (Before the window is made: an empty WindowBounds is ignored, and a window of the
+    // constraints alone may then be refused, which the warning explains.)
     const std::string emptyBounds =
       tessera_vtk::EmptyBoundsWarning(this->WindowBounds, !this->WindowConstraints.empty());
     if (!emptyBounds.empty())
     {
       vtkWarningMacro(<< emptyBounds);
     }
+    tessera::Window window =
+      tessera_vtk::ChooseWindow(this->WindowBounds, this->WindowConstraints, this->Padding, points);
     // Coordinates of some 1e100 or 1e-100: both engines work on points and window scaled by a
     // power of two (exactly) into the range where the tiles' window decisions are exact
     // (window_predicates.h), and the tiles are scaled back.

@@ -7,9 +7,19 @@
  * on an image over the points' bounding box (by FFT convolution, with a stated error bound); its
  * minor and major ridges are traced into ridge contours, joined at branch pixels by the longest-
  * contour or the closest-tangent rule; every point goes to the contour with the nearest pixel
- * and gets a node (arc length from the contour's start over its length); a rational Gaussian
- * curve with unit weights is fitted to each group (periodic on closed contours). Only x and y
- * are used.
+ * and gets a node (arc length from the contour's start over its length), however far it lies
+ * from it (an outlier joins the nearest group and pulls its curve); a rational Gaussian curve
+ * with unit weights is fitted to each group of two or more points (periodic on closed contours;
+ * groups of one point are named in a warning). Only x and y are used: points off the plane z = 0
+ * are grouped by their x and y, and the contours, curves and image lie at z = 0.
+ *
+ * The grouping is not symmetric under reflection: the ridges' thinning peels borders in a fixed
+ * order, so a mirrored data set can give other groups where ridges meet or nearly touch (the
+ * field and its ridge pixels are mirrored exactly). A time-varying input: the field image's
+ * extent is announced from the points as RequestInformation finds them, which a change of time
+ * alone does not rerun. Without a consumer of the image, each time is grouped as asked (a warning
+ * says when its grid differs from the announced one); with one, a time whose grid differs stops
+ * the pipeline with VTK's extent errors, and the outputs keep the last time that succeeded.
  *
  * The input is a vtkPointSet, or a composite data set of them whose points are joined in block
  * order into one set (a point layer from vtkGDALVectorReader, a block per feature with its
@@ -106,7 +116,9 @@ public:
   /**
    * How ridge segments are joined at branch pixels: longest contour (default, the paper's) or
    * closest tangent. Where two curves cross, the longest contour may turn onto the other curve
-   * (two L-shaped groups); closest tangent keeps each curve straight through the crossing.
+   * (two L-shaped groups); closest tangent tends to keep each curve straight through the crossing,
+   * but where the two ridges merge before it (a shallow angle, or the inverse multiquadric's wide
+   * ridges at a right angle) the points of both curves can still fall into one or mixed groups.
    */
   vtkSetClampMacro(JoinRule, int, LONGEST, CLOSEST_TANGENT);
   vtkGetMacro(JoinRule, int);

@@ -569,6 +569,68 @@ TEST(RidgeGrouping, IdenticalPointsGiveOneGroupAndNoCurve)
   EXPECT_FALSE(result.Warnings.empty());
 }
 
+// A group of one point gets no curve (a curve needs two): such groups are named in a warning, and
+// every group of two or more points has its curve. A noisy circle on a fine image breaks into
+// short contours, some of which take a single point.
+TEST(RidgeGrouping, GroupsOfOnePointAreNamedAsHavingNoCurve)
+{
+  int singles = 0;
+  for (unsigned seed = 0; seed < 6; ++seed)
+  {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> angle(0.0, 2.0 * 3.14159265358979323846);
+    std::normal_distribution<double> noise(0.0, 2.0);
+    std::vector<Point2> points;
+    for (int k = 0; k < 300; ++k)
+    {
+      const double a = angle(random);
+      points.push_back(
+        { 100.0 * std::cos(a) + noise(random), 100.0 * std::sin(a) + noise(random) });
+    }
+    RidgeGroupingSettings settings = TestSettings();
+    settings.ImageSize = 512;
+    const RidgeGroupingResult result = RidgeGrouping(settings).Run(points);
+    std::map<int, int> members;
+    for (const int g : result.GroupId)
+    {
+      if (g >= 0)
+      {
+        ++members[g];
+      }
+    }
+    std::vector<int> alone;
+    for (const auto& [group, count] : members)
+    {
+      const bool curved =
+        std::find(result.CurveGroupId.begin(), result.CurveGroupId.end(), group) !=
+        result.CurveGroupId.end();
+      EXPECT_EQ(curved, count >= 2) << "seed " << seed << " group " << group << ": " << count;
+      if (count == 1)
+      {
+        alone.push_back(group);
+      }
+    }
+    singles += static_cast<int>(alone.size());
+    const auto warning = std::find_if(result.Warnings.begin(),
+      result.Warnings.end(),
+      [](const std::string& w) { return w.find("get no curve") != std::string::npos; });
+    ASSERT_EQ(warning != result.Warnings.end(), !alone.empty()) << "seed " << seed;
+    if (!alone.empty())
+    {
+      std::string ids;
+      for (std::size_t k = 0; k < alone.size(); ++k)
+      {
+        ids += (k ? ", " : "") + std::to_string(alone[k]);
+      }
+      EXPECT_NE(warning->find(std::to_string(alone.size()) + " group(s) of a single point"),
+        std::string::npos)
+        << *warning;
+      EXPECT_NE(warning->find("group(s) " + ids), std::string::npos) << *warning;
+    }
+  }
+  EXPECT_GT(singles, 0) << "no group of one point: the test checks nothing";
+}
+
 TEST(RidgeGrouping, OversizedImageIsRefusedWithAMemoryMessage)
 {
   RidgeGroupingSettings settings = TestSettings();

@@ -600,6 +600,18 @@ def test_empty_window_bounds_warn_and_leave_the_automatic_window():
         f.Update()
         assert_that(len(warnings) == 3 and "the window is the window constraints alone" in warnings[2],
                     f"{what}: {warnings[2:]}")
+        # Constraints that make no window alone: the warning still comes (it came only after a
+        # window was made, so the error of an unbounded window never said the rectangle was
+        # ignored).
+        g = type(f)()
+        said = messages_of(g, vtkCommand.WarningEvent)
+        errors = messages_of(g, vtkCommand.ErrorEvent)
+        g.SetInputData(make_points(coords))
+        g.SetWindowBounds(0.0, 0.0, 1.0, 1.0)
+        g.AddWindowConstraint(1.0, 1.0, -1.5)
+        g.Update()
+        assert_that(len(said) == 1 and "so it is ignored: the window is the window constraints alone" in said[0]
+                    and len(errors) == 1 and "window is unbounded" in errors[0], f"{what}: {said} {errors}")
     d = vtkDelaunayTriangulation()
     assert_that(d.GetNumberOfWindowConstraints() == 0, "no constraint yet")
     d.AddWindowConstraint(1.0, 0.0, -2.0)
