@@ -93,6 +93,44 @@ void CheckFitsInt32(vtkIdType count, const char* what)
 /// one of them is passed under another name (tessera_vtk::RenameArraysNamed).
 const std::vector<const char*> OwnArrayNames{ "PointId", "Area", "NeighborCount" };
 
+/// The warning for accepted points whose tiles have fewer than 3 distinct corners, or "". Such a
+/// tile is a strip narrower than the coordinates' resolution (points an ulp or so apart): its
+/// corners round onto each other, so its polygon has 1 or 2 points and no area in doubles, and
+/// which corners are left can depend on the input's order.
+std::string CollapsedTilesWarning(const tessera::TileMesh& tiles)
+{
+  std::vector<std::int32_t> collapsed;
+  for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
+  {
+    std::vector<tessera::Point2> corners;
+    for (std::int64_t v = tiles.Offsets[k]; v < tiles.Offsets[k + 1] && corners.size() < 3; ++v)
+    {
+      const tessera::Point2& p = tiles.Vertices[static_cast<std::size_t>(tiles.VertexIds[v])];
+      if (std::find_if(corners.begin(),
+            corners.end(),
+            [&](const tessera::Point2& q) { return q.x == p.x && q.y == p.y; }) == corners.end())
+      {
+        corners.push_back(p);
+      }
+    }
+    if (corners.size() < 3)
+    {
+      collapsed.push_back(tiles.PointIds[k]);
+    }
+  }
+  if (collapsed.empty())
+  {
+    return std::string();
+  }
+  std::sort(collapsed.begin(), collapsed.end());
+  return std::to_string(collapsed.size()) +
+    " tile(s) are narrower than the coordinates can resolve (their points lie an ulp or so from "
+    "their neighbours), so their polygons have fewer than 3 corners and no area in doubles: "
+    "points " +
+    tessera_vtk::ListNames(
+      collapsed.size(), [&](std::size_t k) { return std::to_string(collapsed[k]); });
+}
+
 /// Output 0: the tiles in ascending point id, on the mesh's vertices (tiles that meet share
 /// them), with their arrays and the input's point data. Made in steps, like GraphWriter, so that
 /// the filling can be shared between two threads: the constructor orders the tiles, allocates the
@@ -523,6 +561,11 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     if (!unused.empty())
     {
       vtkWarningMacro(<< unused);
+    }
+    const std::string collapsed = CollapsedTilesWarning(result.Tiles);
+    if (!collapsed.empty())
+    {
+      vtkWarningMacro(<< collapsed);
     }
     if (!tiles.RenamedArrays().empty())
     {

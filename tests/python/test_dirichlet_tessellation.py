@@ -1080,6 +1080,31 @@ def test_blocks_with_different_arrays_are_joined_with_a_warning_either_way_round
     f.Update()
     assert_that(f.GetOutputDataObject(0).GetCellData().GetArray("vtkGhostType") is None, "no cell ghosts")
 
+
+def test_tiles_narrower_than_an_ulp_are_named():
+    """Three points an ulp apart in x: the middle tile is a strip an ulp wide, whose corners round
+    onto each other (a polygon of one or two points, no area). It was given silently; both engines
+    now name its point. Points a little further apart keep a true tile and no warning."""
+    from vtkmodules.vtkCommonCore import vtkCommand
+
+    x = 4.0
+    for gap in (1, 2 ** 20):
+        # (gap 1: the doubles next to 4 on either side, half an ulp of 4 below it and one above)
+        left = math.nextafter(x, 0.0) if gap == 1 else x - gap * math.ulp(x)
+        right = math.nextafter(x, 9.0) if gap == 1 else x + gap * math.ulp(x)
+        for engine in ("SetAlgorithmToGreenSibson", "SetAlgorithmToBrasselReif"):
+            f = vtkDirichletTessellation()
+            getattr(f, engine)()
+            warnings = messages_of(f, vtkCommand.WarningEvent)
+            f.SetInputData(make_points([(left, 5.0), (x, 5.0), (right, 5.0)]))
+            f.SetWindowBounds(0.0, 6.0, 4.5, 5.5)
+            f.Update()
+            named = [w for w in warnings if "narrower than the coordinates can resolve" in w]
+            if gap == 1:
+                assert_that(len(named) == 1 and "no area in doubles: points 1\n" in named[0], f"{engine}: {warnings}")
+            else:
+                assert_that(not named, f"{engine}, points {gap} ulps apart: {warnings}")
+
 if __name__ == "__main__":
     run([test_tiles_are_nearest_point_regions,
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
@@ -1108,4 +1133,5 @@ if __name__ == "__main__":
          test_short_attribute_arrays_are_errors_naming_them,
          test_each_process_piece_gets_the_whole_tessellation_once,
          test_vertex_cell_data_of_one_point_set_is_carried_and_other_cell_data_is_reported,
-         test_blocks_with_different_arrays_are_joined_with_a_warning_either_way_round])
+         test_blocks_with_different_arrays_are_joined_with_a_warning_either_way_round,
+         test_tiles_narrower_than_an_ulp_are_named])
