@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <string>
 
@@ -175,6 +176,52 @@ void FitCurves(const std::vector<Point2>& points,
     result.Warnings.push_back(std::to_string(single.size()) +
       " group(s) of a single point get no curve (a curve needs two points): group(s) " + ids +
       (single.size() > 20 ? ", ... (" + std::to_string(single.size()) + " in all)" : ""));
+  }
+}
+
+/// ContourDistance per point, and a warning naming the points beyond FarContourWidths basis
+/// widths of their contour: the partition gives every point to the nearest contour, so an outlier
+/// far from every ridge joins a group silently and pulls its curve (a point 1e4 away from a circle
+/// of radius 100 put a spike of 468 into its curve).
+void MeasureContourDistances(const std::vector<Point2>& pixelPoints,
+  const RidgeContours& contours,
+  const PointPartition& partition,
+  const PixelGrid& grid,
+  double width,
+  RidgeGroupingResult& result)
+{
+  result.ContourDistance.assign(pixelPoints.size(), std::numeric_limits<double>::quiet_NaN());
+  std::vector<std::size_t> far;
+  for (std::size_t k = 0; k < pixelPoints.size(); ++k)
+  {
+    const int position = partition.Projection[k];
+    if (position < 0)
+    {
+      continue;
+    }
+    const int pixel = contours.Pixels[static_cast<std::size_t>(position)];
+    const double pixels =
+      std::hypot(pixelPoints[k].x - pixel % grid.Width, pixelPoints[k].y - pixel / grid.Width);
+    result.ContourDistance[k] = pixels * grid.Spacing;
+    if (pixels > RidgeGrouping::FarContourWidths * width)
+    {
+      far.push_back(k);
+    }
+  }
+  if (!far.empty())
+  {
+    std::string ids;
+    for (std::size_t k = 0; k < far.size() && k < 20; ++k)
+    {
+      ids += (k ? ", " : "") + std::to_string(far[k]);
+    }
+    result.Warnings.push_back(std::to_string(far.size()) + " point(s) lie more than " +
+      NumberText(RidgeGrouping::FarContourWidths) + " basis widths (" +
+      NumberText(RidgeGrouping::FarContourWidths * width * grid.Spacing) +
+      " in the points' units) from the contour they are grouped by, whose curve they pull: "
+      "point(s) " +
+      ids + (far.size() > 20 ? ", ... (" + std::to_string(far.size()) + " in all)" : "") +
+      " (ContourDistance gives every point's distance)");
   }
 }
 
@@ -394,6 +441,7 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
     PartitionPoints(pixelPoints, contours, grid.Width, grid.Height, 2.0 * this->Settings.Width);
   result.GroupId = partition.GroupId;
   result.Node = partition.Node;
+  MeasureContourDistances(pixelPoints, contours, partition, grid, this->Settings.Width, result);
   for (int c = 0; c < contours.Count(); ++c)
   {
     AppendPixelPolyline(contours, c, grid, result.Contours);

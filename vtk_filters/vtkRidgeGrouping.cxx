@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <limits>
 
 vtkStandardNewMacro(vtkRidgeGrouping);
 
@@ -217,8 +218,8 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     pointsOut->SetVerts(verts);
     pointsOut->GetPointData()->PassData(input->GetPointData());
     // (copies: the passed arrays are the input's, which keep their names)
-    const tessera_vtk::RenamedArrays renamed =
-      tessera_vtk::RenameArraysNamed(pointsOut->GetPointData(), { "GroupId", "Node" }, true);
+    const tessera_vtk::RenamedArrays renamed = tessera_vtk::RenameArraysNamed(
+      pointsOut->GetPointData(), { "GroupId", "Node", "ContourDistance" }, true);
     if (!renamed.empty())
     {
       vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
@@ -228,15 +229,22 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     groups->SetName("GroupId");
     vtkNew<vtkDoubleArray> nodes;
     nodes->SetName("Node");
+    vtkNew<vtkDoubleArray> distances;
+    distances->SetName("ContourDistance");
     groups->SetNumberOfValues(n);
     nodes->SetNumberOfValues(n);
+    distances->SetNumberOfValues(n);
     for (vtkIdType i = 0; i < n; ++i)
     {
       groups->SetValue(i, result.GroupId.empty() ? -1 : result.GroupId[i]);
       nodes->SetValue(i, result.Node.empty() ? 0.0 : result.Node[i]);
+      distances->SetValue(i,
+        result.ContourDistance.empty() ? std::numeric_limits<double>::quiet_NaN()
+                                       : result.ContourDistance[i]);
     }
     pointsOut->GetPointData()->AddArray(groups);
     pointsOut->GetPointData()->AddArray(nodes);
+    pointsOut->GetPointData()->AddArray(distances);
     AddScalar(pointsOut->GetFieldData(), "ImageSize", result.ImageSize);
     AddScalar(pointsOut->GetFieldData(), "PixelSize", result.PixelSize);
     AddScalar(pointsOut->GetFieldData(), "FieldErrorBound", result.FieldErrorBound);

@@ -29,7 +29,9 @@
  *
  * Outputs (array names are API):
  * - 0 (vtkPolyData): the input points (one vertex each, point data passed) with point data
- *   `GroupId` (int; the contour of the point, -1 = unassigned) and `Node` (double in [0, 1]);
+ *   `GroupId` (int; the contour of the point, -1 = unassigned), `Node` (double in [0, 1]) and
+ *   `ContourDistance` (double; from the point to the contour pixel it is grouped by, in the
+ *   points' units, NaN when unassigned: points beyond 10 basis widths are named in a warning);
  *   an input array of one of those names is passed as NAME_input, with a warning.
  *   Field data `ImageSize` (pixels along the longer side, as used), `PixelSize`,
  *   `FieldErrorBound` (bound of |FFT field - direct sum| at any pixel).

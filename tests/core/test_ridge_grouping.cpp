@@ -631,6 +631,63 @@ TEST(RidgeGrouping, GroupsOfOnePointAreNamedAsHavingNoCurve)
   EXPECT_GT(singles, 0) << "no group of one point: the test checks nothing";
 }
 
+// Every point goes to the nearest contour however far it is: ContourDistance is its distance to
+// the nearest contour pixel (checked against all of them), and an outlier far from every ridge is
+// named in a warning (it joined a group silently and put a spike into its curve).
+TEST(RidgeGrouping, ContourDistancesAreToTheNearestContourPixelAndOutliersAreNamed)
+{
+  std::mt19937 random(4);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * 3.14159265358979323846);
+  std::normal_distribution<double> noise(0.0, 2.0);
+  std::vector<Point2> points;
+  for (int k = 0; k < 300; ++k)
+  {
+    const double a = angle(random);
+    points.push_back({ 100.0 * std::cos(a) + noise(random), 100.0 * std::sin(a) + noise(random) });
+  }
+  for (const bool outlier : { false, true })
+  {
+    if (outlier)
+    {
+      points.push_back({ 1500.0, 0.0 }); // some 700 pixels from the circle, 140 widths
+    }
+    RidgeGroupingSettings settings = TestSettings();
+    settings.ImageSize = outlier ? 1024 : 256; // (the circle some 100 pixels wide in both)
+    const RidgeGroupingResult result = RidgeGrouping(settings).Run(points);
+    ASSERT_EQ(result.ContourDistance.size(), points.size());
+    ASSERT_GT(result.Contours.Count(), 0);
+    for (std::size_t k = 0; k < points.size(); ++k)
+    {
+      if (result.GroupId[k] < 0)
+      {
+        EXPECT_TRUE(std::isnan(result.ContourDistance[k])) << k;
+        continue;
+      }
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const Point2& p : result.Contours.Points)
+      {
+        nearest = std::min(nearest, std::hypot(points[k].x - p.x, points[k].y - p.y));
+      }
+      EXPECT_NEAR(result.ContourDistance[k], nearest, 1e-9 * (1.0 + nearest)) << "point " << k;
+    }
+    const auto warning = std::find_if(result.Warnings.begin(),
+      result.Warnings.end(),
+      [](const std::string& w)
+      { return w.find("from the contour they are grouped by") != std::string::npos; });
+    if (outlier)
+    {
+      ASSERT_NE(warning, result.Warnings.end());
+      EXPECT_NE(warning->find("1 point(s) lie more than 10 basis widths"), std::string::npos)
+        << *warning;
+      EXPECT_NE(warning->find("point(s) 300 ("), std::string::npos) << *warning;
+    }
+    else
+    {
+      EXPECT_TRUE(warning == result.Warnings.end()) << *warning;
+    }
+  }
+}
+
 TEST(RidgeGrouping, OversizedImageIsRefusedWithAMemoryMessage)
 {
   RidgeGroupingSettings settings = TestSettings();

@@ -9,7 +9,7 @@ import numpy as np
 from vtkmodules.vtkCommonCore import vtkCommand
 
 from tessera import vtkRidgeGrouping
-from tessera_testing import assert_that, make_points, messages_of, run
+from tessera_testing import assert_close, assert_that, make_points, messages_of, run
 
 
 def adjusted_rand_index(a, b):
@@ -70,7 +70,13 @@ def test_two_noisy_curves_are_grouped_ordered_and_fitted():
         # Node order may run either way along the curve.
         assert_that(abs(tau) > 0.95, f"curve {curve}: Kendall tau {tau:.3f}")
         assert_that(all(0.0 <= nodes[i] <= 1.0 for i in members), "nodes in [0, 1]")
+    # Each point's distance to its contour: the nearest of the contours' pixel centres (noise 1).
+    distance = pts.GetPointData().GetArray("ContourDistance")
     contours = f.GetOutputDataObject(1)
+    pixels = np.array([contours.GetPoint(k)[:2] for k in range(contours.GetNumberOfPoints())])
+    for i in range(0, len(coords), 37):
+        nearest = np.min(np.hypot(pixels[:, 0] - coords[i][0], pixels[:, 1] - coords[i][1]))
+        assert_close(distance.GetValue(i), nearest, 1e-9 * (1 + nearest), f"ContourDistance of point {i}")
     assert_that(contours.GetCellData().GetArray("ContourId") is not None, "ContourId")
     assert_that(contours.GetCellData().GetArray("Closed") is not None, "Closed")
     curves = f.GetOutputDataObject(2)
