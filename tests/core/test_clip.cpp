@@ -468,6 +468,18 @@ void CompareRandomTiles(const Rings& rings, double offset, unsigned seed, int ti
   EXPECT_GT(partial, tiles / 10); // the comparison must exercise real clipping
 }
 
+/// The exact area of tile & rings, once the catchment's ClipArea of tile i is checked against it.
+mpq_class ExpectExactArea(const Catchment& catchment,
+  const Rings& rings,
+  const std::vector<Point2>& tile,
+  double tileArea,
+  int i)
+{
+  const mpq_class exact = ExactClippedArea(rings, tile);
+  EXPECT_NEAR(catchment.ClipArea(tile), exact.get_d(), Tolerance(exact, tileArea)) << "tile " << i;
+  return exact;
+}
+
 TEST(Clip, RandomConvexTilesMatchExactRationalClipping)
 {
   for (unsigned seed = 10; seed < 16; ++seed)
@@ -493,10 +505,8 @@ TEST(Clip, TilesOnDetailedOutlinesMatchExactRationalClipping)
   {
     const double x = corner(random), y = corner(random), side = size(random);
     const std::vector<Point2> tile = RandomConvex(random, x, x + side, y, y + side, 8, 1.0 / 16);
-    const mpq_class exact = ExactClippedArea(rings, tile);
     const double tileArea = tessera_test::ShoelaceArea(tile);
-    EXPECT_NEAR(catchment.ClipArea(tile), exact.get_d(), Tolerance(exact, tileArea))
-      << "tile " << i;
+    const mpq_class exact = ExpectExactArea(catchment, rings, tile, tileArea, i);
     partial += exact > 0 && exact.get_d() < tileArea;
   }
   EXPECT_GT(partial, 6);
@@ -525,10 +535,8 @@ TEST(Clip, SmallTilesBesideLongSlantedEdgesMatchExactClipping)
     const double x = a.x + t * (b.x - a.x) + offset(random);
     const double y = a.y + t * (b.y - a.y) + offset(random);
     const std::vector<Point2> tile = RandomConvex(random, x, x + s, y, y + s, 6, 1.0 / 64);
-    const mpq_class exact = ExactClippedArea(rings, tile);
     const double tileArea = tessera_test::ShoelaceArea(tile);
-    EXPECT_NEAR(catchment.ClipArea(tile), exact.get_d(), Tolerance(exact, tileArea))
-      << "tile " << i;
+    const mpq_class exact = ExpectExactArea(catchment, rings, tile, tileArea, i);
     partial += exact > 0 && exact.get_d() < tileArea;
     inside += exact.get_d() == tileArea;
     outside += exact == 0;
