@@ -80,9 +80,10 @@ struct RidgeGroupingResult
   // Output 0, per input point.
   std::vector<int> GroupId; ///< ridge contour of the point, -1 = unassigned
   std::vector<double> Node; ///< in [0, 1]; 0 when unassigned
-  /// Distance (input units) from the point to the contour pixel it is grouped by; NaN when
-  /// unassigned. A point joins the nearest contour however far it is: those beyond
-  /// FarContourWidths basis widths are also named in a warning.
+  /// Distance (input units) from the point to the contour pixel it is grouped by; NaN where there
+  /// is none (unassigned, or every point identical: one group without a contour). A point joins the
+  /// nearest contour however far it is: those beyond FarContourWidths basis widths are also named
+  /// in a warning.
   std::vector<double> ContourDistance;
 
   // Output 1: ridge contours, pixel centres in input coordinates; ContourId = line index =

@@ -384,6 +384,13 @@ void AppendPolygonRings(vtkPolyData* poly, const std::string& block, Rings& ring
   }
 }
 
+/// Ghost flags are not attributes to carry: a cell's bits mean other things than a point's
+/// (HIGHCONNECTIVITYCELL is HIDDENPOINT's bit), and a joined or tessellated set has no ghosts.
+bool IsGhostArray(const char* name)
+{
+  return std::string(name) == vtkDataSetAttributes::GhostArrayName();
+}
+
 /// Per point of a point set whose cells are one vertex per point, that vertex's cell (its
 /// attributes' row); empty when its cells are anything else.
 std::vector<vtkIdType> VertexCellOfPoint(vtkPointSet* leaf)
@@ -451,7 +458,8 @@ std::vector<std::string> ArrayNames(vtkPointSet* leaf, bool withCellData)
     for (int k = 0; k < data->GetNumberOfArrays(); ++k)
     {
       const char* name = data->GetAbstractArray(k)->GetName();
-      if (name && *name && std::find(names.begin(), names.end(), name) == names.end())
+      if (name && *name && !IsGhostArray(name) &&
+        std::find(names.begin(), names.end(), name) == names.end())
       {
         names.emplace_back(name);
       }
@@ -472,12 +480,41 @@ std::vector<std::string> UncarriedCellArrays(vtkPointSet* set)
   for (int k = 0; k < cells->GetNumberOfArrays(); ++k)
   {
     const char* name = cells->GetAbstractArray(k)->GetName();
-    if (name && *name && !set->GetPointData()->GetAbstractArray(name))
+    if (name && *name && !set->GetPointData()->GetAbstractArray(name) && !IsGhostArray(name))
     {
       names.emplace_back(name);
     }
   }
   return names;
+}
+
+/// A point set whose cells are one vertex per point (cellOf: VertexCellOfPoint) with its
+/// vertices' cell-data arrays `names` added to its point data, each point given its vertex's
+/// value: a shallow copy, so that the point data's roles (scalars, global ids, ...) and unnamed
+/// arrays stay as they are.
+vtkSmartPointer<vtkPointSet> WithVertexAttributes(vtkPointSet* points,
+  const std::vector<vtkIdType>& cellOf,
+  const std::vector<std::string>& names)
+{
+  vtkSmartPointer<vtkPointSet> copy;
+  copy.TakeReference(points->NewInstance());
+  copy->ShallowCopy(points);
+  const vtkIdType n = points->GetNumberOfPoints();
+  for (const std::string& name : names)
+  {
+    vtkAbstractArray* source = points->GetCellData()->GetAbstractArray(name.c_str());
+    vtkSmartPointer<vtkAbstractArray> array;
+    array.TakeReference(source->NewInstance());
+    array->SetName(name.c_str());
+    array->SetNumberOfComponents(source->GetNumberOfComponents());
+    array->SetNumberOfTuples(n);
+    for (vtkIdType p = 0; p < n; ++p)
+    {
+      array->SetTuple(p, cellOf[static_cast<std::size_t>(p)], source);
+    }
+    copy->GetPointData()->AddArray(array);
+  }
+  return copy;
 }
 
 /// A leaf of a composite data set of points, with the name the messages give it.
@@ -602,8 +639,19 @@ void CollectLeafPaths(vtkDataObject* node,
 vtkDataObject* UpdatedData(vtkAlgorithmOutput* connection)
 {
   vtkAlgorithm* source = connection->GetProducer();
-  source->Update(connection->GetIndex());
-  return source->GetOutputDataObject(connection->GetIndex());
+  const int port = connection->GetIndex();
+  // The whole data, as RequestWholeInputs asks for it: a plain Update keeps the piece last asked
+  // of the source (in ParaView under MPI, its own representation's), and the information made
+  // from one piece (the ridge grouping's image extent, the areal average's time steps) then
+  // differed from RequestData's, made from the whole.
+  vtkNew<vtkInformationVector> requests;
+  requests->SetNumberOfInformationObjects(port + 1);
+  vtkInformation* request = requests->GetInformationObject(port);
+  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  source->Update(port, requests);
+  return source->GetOutputDataObject(port);
 }
 
 BlockLabels::BlockLabels(vtkCompositeDataSet* data)
@@ -682,11 +730,12 @@ vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data, std::vector<std::s
   {
     CheckAttributeLengths(points, "the input");
     const std::vector<std::string> cellArrays = UncarriedCellArrays(points);
-    if (cellArrays.empty())
+    if (cellArrays.empty() || points->GetNumberOfPoints() == 0)
     {
       return points;
     }
-    if (VertexCellOfPoint(points).empty())
+    const std::vector<vtkIdType> cellOf = VertexCellOfPoint(points);
+    if (cellOf.empty())
     {
       warnings.push_back("the input's cell-data arrays (" +
         ListNames(cellArrays.size(), [&](std::size_t k) { return "'" + cellArrays[k] + "'"; }) +
@@ -694,18 +743,8 @@ vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data, std::vector<std::s
       return points;
     }
     // One vertex per point (ParaView's Merge Blocks of a GDAL point layer): the vertices'
-    // attributes are the points', joined as for blocks, the point set's ids kept.
-    vtkNew<vtkMultiBlockDataSet> one;
-    one->SetBlock(0, points);
-    vtkSmartPointer<vtkPolyData> joined = MergedPoints(one, {}, nullptr);
-    for (int attribute : { vtkDataSetAttributes::GLOBALIDS, vtkDataSetAttributes::PEDIGREEIDS })
-    {
-      if (vtkAbstractArray* ids = points->GetPointData()->GetAbstractAttribute(attribute))
-      {
-        joined->GetPointData()->SetActiveAttribute(ids->GetName(), attribute);
-      }
-    }
-    return joined;
+    // attributes are the points'.
+    return WithVertexAttributes(points, cellOf, cellArrays);
   }
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
   {
@@ -721,6 +760,26 @@ vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data, std::vector<std::s
     (data ? std::string("a ") + data->GetClassName() : std::string("missing")) +
     ", not points: a vtkPointSet (vtkPolyData, vtkUnstructuredGrid, ...) or a composite data set "
     "of them is needed");
+}
+
+vtkSmartPointer<vtkPointSet> VertexArraysAsPointData(vtkPointSet* points,
+  const std::vector<std::string>& names)
+{
+  std::vector<std::string> wanted;
+  for (const std::string& name : UncarriedCellArrays(points))
+  {
+    if (std::find(names.begin(), names.end(), name) != names.end())
+    {
+      wanted.push_back(name);
+    }
+  }
+  const std::vector<vtkIdType> cellOf =
+    wanted.empty() ? std::vector<vtkIdType>() : VertexCellOfPoint(points);
+  if (cellOf.empty())
+  {
+    return points;
+  }
+  return WithVertexAttributes(points, cellOf, wanted);
 }
 
 vtkSmartPointer<vtkPolyData> MergedPoints(vtkCompositeDataSet* composite,

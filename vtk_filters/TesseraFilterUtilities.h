@@ -88,11 +88,18 @@ vtkSmartPointer<vtkPolyData> MergedPoints(vtkCompositeDataSet* data,
 /// attribute arrays (CheckAttributeLengths).
 vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data, std::vector<std::string>& warnings);
 
+/// points itself, or, when its cells are one vertex per point and some of the arrays `names` are
+/// its vertices' cell data only, a shallow copy with those given to its points as point data.
+vtkSmartPointer<vtkPointSet> VertexArraysAsPointData(vtkPointSet* points,
+  const std::vector<std::string>& names);
+
 /// Asks every connection of input ports firstPort .. lastPort for the whole data set: piece 0 of
 /// 1, no ghost levels. A tessellation, a triangulation, a grouping or a fitted projection of one
 /// piece's points is not that of all the points (ParaView under MPI asks each process for a piece,
 /// and each tessellated its own: tiles overlapping, their areas summing to twice the window's), so
 /// every process reads the whole input and only the first piece makes the output (MakesOutput).
+/// A filter's RequestUpdateExtent calls this instead of its superclass's, whose requests (the
+/// output's piece, EXACT_EXTENT) are those it replaces.
 void RequestWholeInputs(vtkInformationVector** inputVector, int firstPort, int lastPort);
 
 /// False when an output's requested piece is not the first: that process leaves the outputs empty.

@@ -18,8 +18,8 @@
  * xmin < xmax and ymin < ymax) and the strict constraints a*x + b*y + c < 0 added with
  * AddWindowConstraint. With neither, it is the points' bounding box padded on every side by
  * Padding (default 0.1) times its larger side; points without extent (one point, or copies of
- * one) get the square of side 1 centred on them (or the least wider one that the coordinates
- * can hold: side 16 about 1e16, as 0.5 is below their ulp), and no points the square
+ * one) get the square of side 1 centred on them (or, where the coordinates cannot hold it, the
+ * square an ulp out on every side: side 4 about 1e16), and no points the square
  * -1 < x, y < 1. Padding
  * 0 keeps a margin of 1e-9 of the larger side, so that every point is strictly inside. Redundant
  * constraints are ignored; an empty or unbounded window is an error, and so is a constraint with

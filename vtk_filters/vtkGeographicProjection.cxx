@@ -490,7 +490,15 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
 {
   if (!tessera_vtk::MakesOutput(outputVector))
   {
-    return 1; // another process's piece: the first makes the whole output (RequestWholeInputs)
+    // Another process's piece: the first makes the whole output (RequestWholeInputs). Blocks keep
+    // their places on every process (ParaView picks and colours blocks by composite index).
+    auto* compositeIn = vtkCompositeDataSet::GetData(inputVector[0]);
+    auto* compositeOut = vtkCompositeDataSet::GetData(outputVector);
+    if (compositeIn && compositeOut)
+    {
+      compositeOut->CopyStructure(compositeIn);
+    }
+    return 1;
   }
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0]);
   vtkDataObject* output = vtkDataObject::GetData(outputVector);

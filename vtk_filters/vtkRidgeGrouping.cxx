@@ -167,7 +167,7 @@ int vtkRidgeGrouping::RequestUpdateExtent(vtkInformation*,
   vtkInformationVector*)
 {
   // Every point at once: see RequestWholeInputs (ParaView under MPI asks each process for a
-  // piece, and each made the tessellation of its own piece's points).
+  // piece, and each grouped its own piece's points).
   tessera_vtk::RequestWholeInputs(inputVector, 0, 0);
   return 1;
 }

@@ -660,10 +660,13 @@ struct vtkThiessenArealAverage::Internals
 {
   vtkMTimeType BuiltFor = 0;
   /// Gauges given as a composite data set (a point GeoJSON or shapefile read by
-  /// vtkGDALVectorReader: a block per gauge) are joined into one point set, kept while the
-  /// composite, its blocks and the array names are unchanged, so that its modification time, and
-  /// with it the results above, last as a plain point set's would.
-  vtkSmartPointer<vtkPolyData> Joined;
+  /// vtkGDALVectorReader: a block per gauge) are joined into one point set, and a point set whose
+  /// station ids or values are its vertices' cell data (the same after Merge Blocks) is copied with
+  /// them as point data; either is kept while the input and the array names are unchanged, so that
+  /// its modification time, and with it the results above, last as a plain point set's would.
+  vtkSmartPointer<vtkPointSet> Joined;
+  /// Why the blocks' value arrays could not be joined ("" when they were, or not asked for).
+  std::string ValueProblem;
   vtkDataObject* JoinedFrom = nullptr; ///< compared by address, never dereferenced
   vtkMTimeType JoinedAt = 0;
   std::vector<std::string> JoinedArrays;
@@ -831,8 +834,8 @@ int vtkThiessenArealAverage::RequestUpdateExtent(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector*)
 {
-  // Every point at once: see RequestWholeInputs (ParaView under MPI asks each process for a
-  // piece, and each made the tessellation of its own piece's points).
+  // Every gauge, the whole catchment and every observation at once: see RequestWholeInputs
+  // (ParaView under MPI asks each process for a piece, and each averaged over its own piece).
   tessera_vtk::RequestWholeInputs(inputVector, 0, 2);
   return 1;
 }
@@ -915,24 +918,45 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
 //------------------------------------------------------------------------------
 vtkPointSet* vtkThiessenArealAverage::GaugesOf(vtkDataObject* data)
 {
-  if (auto* points = vtkPointSet::SafeDownCast(data))
-  {
-    return points;
-  }
+  auto* points = vtkPointSet::SafeDownCast(data);
   auto* composite = vtkCompositeDataSet::SafeDownCast(data);
-  if (!composite)
+  if (!points && !composite)
   {
     throw tessera::InputError(std::string("the gauges (input 0) are a ") +
       (data ? data->GetClassName() : "nothing") + ", not points");
   }
   Internals& in = *this->Internal;
   const std::vector<std::string> arrays{ this->StationIdArrayName, this->ValueArrayName };
+  if (points)
+  {
+    // (Values and ids are read by gauge id: a short array was read past its end.)
+    tessera_vtk::CheckAttributeLengths(points, "the gauges (input 0)");
+    in.ValueProblem.clear();
+    // Attributes of one vertex per point (a GDAL point layer after Merge Blocks) are the points';
+    // a copy made for them is kept while the input is unchanged, as a join is.
+    const vtkMTimeType latest = data->GetMTime();
+    if (in.Joined && in.JoinedFrom == data && in.JoinedAt == latest && in.JoinedArrays == arrays)
+    {
+      return in.Joined;
+    }
+    const vtkSmartPointer<vtkPointSet> carried =
+      tessera_vtk::VertexArraysAsPointData(points, arrays);
+    if (carried == points)
+    {
+      return points;
+    }
+    in.Joined = carried;
+    in.JoinedFrom = data;
+    in.JoinedAt = latest;
+    in.JoinedArrays = arrays;
+    return in.Joined;
+  }
   const vtkMTimeType latest = LatestMTime(data);
   if (!in.Joined || in.JoinedFrom != data || in.JoinedAt != latest || in.JoinedArrays != arrays)
   {
     in.Joined = nullptr; // until the join succeeds
-    // The station ids are needed; the value array only without observations (where its absence
-    // is told when the step is read).
+    // The station ids are needed; the value array only without observations, where the reason
+    // it could not be joined is the error (ValueProblem).
     std::map<std::string, std::string> dropped;
     vtkSmartPointer<vtkPolyData> joined = tessera_vtk::MergedPoints(composite, arrays, &dropped);
     const auto stationProblem = dropped.find(this->StationIdArrayName);
@@ -940,6 +964,8 @@ vtkPointSet* vtkThiessenArealAverage::GaugesOf(vtkDataObject* data)
     {
       throw tessera::InputError(stationProblem->second);
     }
+    const auto valueProblem = dropped.find(this->ValueArrayName);
+    in.ValueProblem = valueProblem != dropped.end() ? valueProblem->second : std::string();
     in.Joined = joined;
     in.JoinedFrom = data;
     in.JoinedAt = latest;
@@ -1091,7 +1117,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     {
       throw tessera::InputError(
         "without observations the gauges need a numeric point-data array '" + this->ValueArrayName +
-        "'");
+        "'" + (in.ValueProblem.empty() ? std::string() : ": " + in.ValueProblem));
     }
     // The one step's time: the gauges' own (from a time-aware source), else 0.
     vtkInformation* gaugesInfo = gauges->GetInformation();

@@ -1028,6 +1028,40 @@ def test_vertex_cell_data_of_one_point_set_is_carried_and_other_cell_data_is_rep
         else:
             got = out.GetPointData().GetArray("rain")
             assert_that(got is not None and [got.GetValue(k) for k in range(40)] == values, "points carry their vertex value")
+        # The point data keeps its roles and unnamed arrays (a join rebuilt it without them), and a
+        # cell ghost array is not made the points' (its bits mean other things there).
+        from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
+
+        scalars = vtkDoubleArray()
+        scalars.SetName("s")
+        unnamed = vtkDoubleArray()
+        ghosts = vtkUnsignedCharArray()
+        ghosts.SetName("vtkGhostType")
+        for k in range(40):
+            scalars.InsertNextValue(k)
+            unnamed.InsertNextValue(-k)
+            ghosts.InsertNextValue(2 if k == 5 else 0)
+        data.GetPointData().SetScalars(scalars)
+        data.GetPointData().AddArray(unnamed)
+        data.GetCellData().AddArray(ghosts)
+        d = vtkDelaunayTriangulation()
+        d.SetInputData(data)
+        d.Update()
+        pd = d.GetOutput().GetPointData()
+        assert_that(pd.GetScalars() is not None and pd.GetScalars().GetName() == "s", "active scalars kept")
+        assert_that(any(pd.GetAbstractArray(k).GetName() is None for k in range(pd.GetNumberOfArrays())),
+                    "the unnamed array kept")
+        assert_that(pd.GetArray("rain") is not None and pd.GetArray("vtkGhostType") is None,
+                    "vertex attributes carried, cell ghosts not")
+        # No points: nothing to carry, and no warning that the cells are not vertices.
+        empty = make_points([])
+        empty.GetCellData().AddArray(vtkDoubleArray())
+        empty.GetCellData().GetArray(0).SetName("rain")
+        e = cls()
+        said = messages_of(e, vtkCommand.WarningEvent)
+        e.SetInputData(empty)
+        e.Update()
+        assert_that(not [w for w in said if "not carried" in w], f"{said}")
         lines = make_points(coords)
         cells = vtkCellArray()
         cells.InsertNextCell(2, [0, 1])

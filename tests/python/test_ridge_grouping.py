@@ -212,7 +212,37 @@ def test_the_field_image_is_advertised_before_it_is_made():
         assert_that(scaled.GetOutput().GetNumberOfPoints() == image.GetNumberOfPoints(),
                     f"size {size}: downstream {scaled.GetOutput().GetNumberOfPoints()} of {image.GetNumberOfPoints()}")
 
+
+
+def test_the_image_is_advertised_from_the_whole_input_when_its_source_gave_a_piece():
+    """The extent is advertised from the whole input even when the source last gave a piece (in
+    ParaView under MPI, to its own representation): RequestInformation updated it as it stood, a
+    third of the points, and the image made from all of them differed from the one announced."""
+    from vtkmodules.vtkCommonCore import vtkCommand
+    from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline
+    from vtkmodules.vtkFiltersGeneral import vtkImageDataToPointSet
+    from vtkmodules.vtkImagingCore import vtkRTAnalyticSource
+
+    source = vtkRTAnalyticSource()
+    source.SetWholeExtent(0, 29, 0, 29, 0, 0)
+    points = vtkImageDataToPointSet()
+    points.SetInputConnection(source.GetOutputPort())
+    points.UpdatePiece(2, 3, 0)  # a sibling consumer asked for the last third
+    assert_that(points.GetOutput().GetNumberOfPoints() < 900, "the source gave a piece")
+    f = vtkRidgeGrouping()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetInputConnection(points.GetOutputPort())
+    f.UpdateInformation()
+    announced = f.GetOutputInformation(3).Get(vtkStreamingDemandDrivenPipeline.WHOLE_EXTENT())
+    f.Update()
+    made = f.GetOutputDataObject(3).GetExtent()
+    assert_that(f.GetOutput(0).GetNumberOfPoints() == 900 and announced == made
+                and not [w for w in warnings if "differs from the one announced" in w],
+                f"announced {announced}, made {made}: {warnings}")
+
+
 if __name__ == "__main__":
     run([test_two_noisy_curves_are_grouped_ordered_and_fitted, test_bad_and_degenerate_input,
          test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept,
-         test_the_field_image_is_advertised_before_it_is_made])
+         test_the_field_image_is_advertised_before_it_is_made,
+         test_the_image_is_advertised_from_the_whole_input_when_its_source_gave_a_piece])

@@ -236,7 +236,7 @@ def test_a_catchment_ring_inside_another_blocks_ring_is_reported():
         said = [w for w in warnings if "inside a ring of another block" in w]
         assert_that(len(said) == expected, f"{len(blocks)} block(s): {warnings}")
         if expected:
-            # (blocks by flat index, as in the filters' other messages: the root is 0)
+            # (blocks by their index under the root, with ParaView's composite index beside it)
             assert_that("): 1 catchment ring(s)" in said[0]
                         and "ring 1 of block 1 (composite index 2) inside ring 0 of block 0 (composite index 1)" in said[0], said[0])
 
@@ -275,13 +275,30 @@ def test_gauges_in_blocks_as_a_point_layer_gives_them_are_joined():
         f.Update(1)
         return f, errors
 
+    # The same vertices as one point set (Merge Blocks of the layer): their cell data is theirs too
+    # (it was not read: "no point-data array 'station_id'").
+    merged = vtkPolyData()
+    merged_points = vtkPoints()
+    merged_points.SetDataTypeToDouble()
+    merged_verts = vtkCellArray()
+    merged_ids = vtkStringArray()
+    merged_ids.SetName("station_id")
+    for k in reversed(range(len(coords))):  # vertices in another order than the points
+        merged_verts.InsertNextCell(1, [k])
+        merged_ids.InsertNextValue(names[k])
+    for lon, lat in coords:
+        merged_points.InsertNextPoint(lon, lat, 0.0)
+    merged.SetPoints(merged_points)
+    merged.SetVerts(merged_verts)
+    merged.GetCellData().AddArray(merged_ids)
     results = []
-    for gauges in (gauges_polydata(coords, names), blocks):
+    for gauges in (gauges_polydata(coords, names), blocks, merged):
         f, errors = averaged(gauges)
         assert_that(not errors, f"{gauges.GetClassName()}: {errors}")
         f.Update(0)
         results.append((summary_column(f, "ArealMean"), sorted(weights_by_gauge(f.GetOutputDataObject(0)).items())))
-    assert_that(results[0] == results[1] and len(results[0][1]) == 5, f"point set {results[0]}, blocks {results[1]}")
+    assert_that(results[0] == results[1] == results[2] and len(results[0][1]) == 5,
+                f"point set {results[0]}, blocks {results[1]}, vertices' cell data {results[2]}")
     # Without observations, the blocks' value arrays make the one step, at the composite's time.
     from vtkmodules.vtkCommonDataModel import vtkDataObject
 
@@ -297,6 +314,25 @@ def test_gauges_in_blocks_as_a_point_layer_gives_them_are_joined():
     g.Update(1)
     assert_that(summary_column(g, "Time") == [1963.5] and summary_column(g, "ArealMean") == [results[0][0][0]],
                 f"one step from the blocks' values: {summary_column(g, 'Time')}, {summary_column(g, 'ArealMean')}")
+    # Without observations, a block whose value array is missing is named as the reason (the error
+    # said only that the gauges need a numeric array 'value').
+    blocks.GetBlock(2).GetCellData().RemoveArray("value")
+    g.Modified()
+    errors = messages_of(g)
+    g.Update(1)
+    assert_that(len(errors) == 1 and "need a numeric point-data array 'value': block 2 (composite index 3) of the points "
+                "has no array 'value', which block 0 (composite index 1) has" in errors[0], f"{errors}")
+    # A value array shorter than the gauges of one point set was read past its end (a mean of
+    # garbage): an error naming it.
+    short = gauges_polydata(coords, names, [1.0, 2.0, 3.0, 4.0, 5.0])
+    short.GetPointData().GetArray("value").SetNumberOfTuples(1)
+    h = vtkThiessenArealAverage()
+    errors = messages_of(h)
+    h.SetGaugesData(short)
+    h.SetCatchmentData(polygon([[(-1, -1), (1, -1), (1, 1), (-1, 1)]]))
+    h.Update(1)
+    assert_that(len(errors) == 1 and "the gauges (input 0): its point-data array 'value' has 1 value(s) for 5 points"
+                in errors[0], f"{errors}")
     # A block without the station ids is named.
     blocks.GetBlock(3).GetCellData().RemoveArray("station_id")
     _, errors = averaged(blocks)
