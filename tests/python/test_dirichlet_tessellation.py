@@ -3,6 +3,7 @@ computations: brute-force nearest points, VTK's own vtkDelaunay2D, and hand-know
 
 import math
 import random
+import sys
 from fractions import Fraction
 
 import numpy as np
@@ -1139,6 +1140,42 @@ def test_tiles_narrower_than_an_ulp_are_named():
             else:
                 assert_that(not named, f"{engine}, points {gap} ulps apart: {warnings}")
 
+
+def test_delaunay_takes_a_window_far_larger_than_its_points():
+    """The header says a window of any finite scale is taken: WindowBounds of +-1e308, or a Padding
+    of 1e308, were refused naming a valid point (it could not be scaled with such a window), and
+    so were points down to 3e-300 in a window of 1e200. The triangulation is the one without a
+    window, and a point outside the window is still rejected."""
+    from vtkmodules.vtkCommonCore import vtkCommand
+
+    coords = [(3e-300, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0), (0.4, 0.7)]
+    plain = vtkDelaunayTriangulation()
+    plain.SetInputData(make_points(coords))
+    plain.Update()
+    expected = sorted(tuple(plain.GetOutput().GetCell(c).GetPointIds().GetId(k) for k in range(3))
+                      for c in range(plain.GetOutput().GetNumberOfCells()))
+    assert_that(len(expected) == 4, f"{expected}")
+    for setting in ("bounds", "huge bounds", "padding", "rejecting"):
+        f = vtkDelaunayTriangulation()
+        errors = messages_of(f, vtkCommand.ErrorEvent)
+        data = coords + ([(-1.0, 0.5)] if setting == "rejecting" else [])
+        f.SetInputData(make_points(data))
+        if setting == "bounds":
+            f.SetWindowBounds(-1e200, 1e200, -1e200, 1e200)
+        elif setting == "huge bounds":
+            f.SetWindowBounds(-sys.float_info.max, sys.float_info.max, -1e308, 1e308)
+        elif setting == "padding":
+            f.SetPadding(1e308)
+        else:
+            f.SetWindowBounds(-0.5, 1e300, -1e300, 1e300)
+        f.Update()
+        out = f.GetOutput()
+        faces = sorted(tuple(out.GetCell(c).GetPointIds().GetId(k) for k in range(3)) for c in range(out.GetNumberOfCells()))
+        assert_that(not errors and faces == expected, f"{setting}: {faces} against {expected}: {errors}")
+        rejected = out.GetFieldData().GetArray("RejectedPointIds")
+        listed = [rejected.GetValue(k) for k in range(rejected.GetNumberOfTuples())] if rejected else []
+        assert_that(listed == ([5] if setting == "rejecting" else []), f"{setting}: rejected {listed}")
+
 if __name__ == "__main__":
     run([test_tiles_are_nearest_point_regions,
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
@@ -1168,4 +1205,5 @@ if __name__ == "__main__":
          test_each_process_piece_gets_the_whole_tessellation_once,
          test_vertex_cell_data_of_one_point_set_is_carried_and_other_cell_data_is_reported,
          test_blocks_with_different_arrays_are_joined_with_a_warning_either_way_round,
-         test_tiles_narrower_than_an_ulp_are_named])
+         test_tiles_narrower_than_an_ulp_are_named,
+         test_delaunay_takes_a_window_far_larger_than_its_points])
