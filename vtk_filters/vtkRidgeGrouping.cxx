@@ -282,30 +282,54 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     imageInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), advertised);
     int made[6];
     ExtentOf(grid, made);
-    if (!std::equal(made, made + 6, advertised))
+    // The image keeps the extent announced: RequestInformation chose it from the points as they
+    // were then, and a change of time alone does not run it again, while consumers ask for that
+    // extent (the made one, advertised instead, failed their next request with VTK's extent
+    // errors, and the filter's outputs stayed at the last time). A grid of another size is given
+    // on the announced pixels from its lower left corner, cropped or padded.
+    const int width = advertised[1] - advertised[0] + 1;
+    const int height = advertised[3] - advertised[2] + 1;
+    const bool fits = std::equal(made, made + 6, advertised);
+    if (!fits && width > 0 && height > 0 && grid.PixelCount() > 0)
     {
-      // RequestInformation chose the grid from the points as they were then (another time step's,
-      // say): consumers may have asked for that extent. The made one is advertised from now on.
-      imageInfo->Set(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), made, 6);
       vtkWarningMacro(<< "the field image's grid (" << grid.Width << " x " << grid.Height
-                      << " pixels) differs from the one announced before it was made, from the "
-                         "points as they were then ("
-                      << advertised[1] + 1 << " x " << advertised[3] + 1
-                      << "); update again to give it to consumers whole");
+                      << " pixels, from the points at this time) differs from the one announced "
+                         "to the pipeline, from the points when it last asked ("
+                      << width << " x " << height
+                      << "): it is given on the announced pixels from its lower left corner, "
+                      << (grid.Width > width || grid.Height > height ? "cropped" : "padded")
+                      << " (Field NaN, ridges 0 where padded); modify the filter to announce "
+                         "the new grid");
     }
-    imageOut->SetDimensions(grid.Width, grid.Height, grid.PixelCount() > 0 ? 1 : 0);
+    const int outWidth = fits || width <= 0 ? grid.Width : width;
+    const int outHeight = fits || height <= 0 ? grid.Height : height;
+    imageOut->SetDimensions(outWidth, outHeight, grid.PixelCount() > 0 ? 1 : 0);
     imageOut->SetOrigin(grid.OriginX, grid.OriginY, 0.0);
     imageOut->SetSpacing(grid.Spacing, grid.Spacing, 1.0);
     if (grid.PixelCount() > 0)
     {
-      vtkNew<vtkDoubleArray> field;
-      field->SetName("Field");
-      field->SetNumberOfValues(static_cast<vtkIdType>(result.Field.size()));
-      std::copy(result.Field.begin(), result.Field.end(), field->GetPointer(0));
-      imageOut->GetPointData()->AddArray(field);
+      const std::size_t pixels = static_cast<std::size_t>(outWidth) * outHeight;
+      std::vector<double> field(pixels, std::numeric_limits<double>::quiet_NaN());
+      std::vector<std::uint8_t> minor(pixels, 0), major(pixels, 0);
+      for (int j = 0; j < std::min(outHeight, grid.Height); ++j)
+      {
+        for (int i = 0; i < std::min(outWidth, grid.Width); ++i)
+        {
+          const std::size_t from = static_cast<std::size_t>(j) * grid.Width + i;
+          const std::size_t to = static_cast<std::size_t>(j) * outWidth + i;
+          field[to] = result.Field[from];
+          minor[to] = result.MinorRidge[from];
+          major[to] = result.MajorRidge[from];
+        }
+      }
+      vtkNew<vtkDoubleArray> fieldArray;
+      fieldArray->SetName("Field");
+      fieldArray->SetNumberOfValues(static_cast<vtkIdType>(pixels));
+      std::copy(field.begin(), field.end(), fieldArray->GetPointer(0));
+      imageOut->GetPointData()->AddArray(fieldArray);
       imageOut->GetPointData()->SetActiveScalars("Field");
-      imageOut->GetPointData()->AddArray(ByteArray("MinorRidge", result.MinorRidge));
-      imageOut->GetPointData()->AddArray(ByteArray("MajorRidge", result.MajorRidge));
+      imageOut->GetPointData()->AddArray(ByteArray("MinorRidge", minor));
+      imageOut->GetPointData()->AddArray(ByteArray("MajorRidge", major));
     }
     return 1;
   }

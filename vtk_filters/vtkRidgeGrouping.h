@@ -15,11 +15,11 @@
  *
  * The grouping is not symmetric under reflection: the ridges' thinning peels borders in a fixed
  * order, so a mirrored data set can give other groups where ridges meet or nearly touch (the
- * field and its ridge pixels are mirrored exactly). A time-varying input: the field image's
- * extent is announced from the points as RequestInformation finds them, which a change of time
- * alone does not rerun. Without a consumer of the image, each time is grouped as asked (a warning
- * says when its grid differs from the announced one); with one, a time whose grid differs stops
- * the pipeline with VTK's extent errors, and the outputs keep the last time that succeeded.
+ * field and its ridge pixels are mirrored exactly). A time-varying input is grouped at each
+ * time asked, but the field image's extent is announced from the points as RequestInformation
+ * finds them, which a change of time alone does not rerun: a time whose grid has another size
+ * gives its image on the announced pixels from the lower left corner, cropped or padded (Field
+ * NaN, ridges 0), with a warning; modifying the filter announces the grid of the time then.
  *
  * The input is a vtkPointSet, or a composite data set of them whose points are joined in block
  * order into one set (a point layer from vtkGDALVectorReader, a block per feature with its

@@ -241,8 +241,64 @@ def test_the_image_is_advertised_from_the_whole_input_when_its_source_gave_a_pie
                 f"announced {announced}, made {made}: {warnings}")
 
 
+
+def test_a_time_varying_input_is_grouped_at_each_time_with_an_image_consumer():
+    """An ellipse whose height changes with time, its field image consumed downstream: each time's
+    points are grouped (at the second time the pipeline stopped on VTK's extent errors and the
+    outputs stayed at the first), and the image keeps the announced extent, a grid of another size
+    given on it with a warning."""
+    import math
+
+    from vtkmodules.util.vtkAlgorithm import VTKPythonAlgorithmBase
+    from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+    from vtkmodules.vtkCommonExecutionModel import vtkStreamingDemandDrivenPipeline as sddp
+    from vtkmodules.vtkImagingCore import vtkImageCast
+
+    class Ellipse(VTKPythonAlgorithmBase):
+        def __init__(self):
+            VTKPythonAlgorithmBase.__init__(self, nInputPorts=0, nOutputPorts=1, outputType="vtkPolyData")
+
+        def RequestInformation(self, request, inInfo, outInfo):
+            info = outInfo.GetInformationObject(0)
+            info.Remove(sddp.TIME_STEPS())
+            for t in (1.0, 2.0, 3.0):
+                info.Append(sddp.TIME_STEPS(), t)
+            info.Set(sddp.TIME_RANGE(), [1.0, 3.0], 2)
+            return 1
+
+        def RequestData(self, request, inInfo, outInfo):
+            info = outInfo.GetInformationObject(0)
+            t = info.Get(sddp.UPDATE_TIME_STEP()) if info.Has(sddp.UPDATE_TIME_STEP()) else 1.0
+            points = vtkPoints()
+            for k in range(300):
+                a = 2 * math.pi * k / 300
+                points.InsertNextPoint(100 * math.cos(a), 30 * t * math.sin(a), 0)
+            vtkPolyData.GetData(outInfo).SetPoints(points)
+            return 1
+
+    source = Ellipse()
+    f = vtkRidgeGrouping()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    errors = messages_of(f, vtkCommand.ErrorEvent)
+    f.SetInputConnection(source.GetOutputPort())
+    consumer = vtkImageCast()
+    consumer.SetOutputScalarTypeToFloat()
+    consumer.SetInputConnection(f.GetOutputPort(3))
+    executive_errors = []
+    consumer.GetExecutive().AddObserver("ErrorEvent", lambda o, e: executive_errors.append(e))
+    for t in (1.0, 3.0, 2.0, 1.0):
+        consumer.UpdateTimeStep(t)
+        height = f.GetOutputDataObject(0).GetBounds()[3]
+        assert_that(abs(height - 30 * t) < 1e-9, f"t = {t}: points up to y = {height}")
+        dims = f.GetOutputDataObject(3).GetDimensions()
+        assert_that(consumer.GetOutput().GetDimensions() == dims == (128, 49, 1), f"t = {t}: image {dims}")
+    assert_that(not errors and not executive_errors, f"{errors} {executive_errors}")
+    assert_that(sum("differs from the one announced" in w for w in warnings) == 2, f"{warnings}")
+
 if __name__ == "__main__":
     run([test_two_noisy_curves_are_grouped_ordered_and_fitted, test_bad_and_degenerate_input,
          test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept,
          test_the_field_image_is_advertised_before_it_is_made,
-         test_the_image_is_advertised_from_the_whole_input_when_its_source_gave_a_piece])
+         test_the_image_is_advertised_from_the_whole_input_when_its_source_gave_a_piece,
+         test_a_time_varying_input_is_grouped_at_each_time_with_an_image_consumer])
