@@ -994,6 +994,16 @@ def test_each_process_piece_gets_the_whole_tessellation_once():
         assert_that(counts == [whole, 0, 0], f"{cls.__name__}: cells per piece {counts}")
         if cls is vtkDirichletTessellation:
             assert_close(areas[0], 100.0, 1e-12, "the first piece's tiles fill the window")
+    # The projection too (one projection fitted to all the points, on the first piece).
+    from tessera import vtkGeographicProjection
+
+    projection = vtkGeographicProjection()
+    projection.SetInputConnection(points.GetOutputPort())
+    counts = []
+    for piece in range(3):
+        projection.UpdatePiece(piece, 3, 0)
+        counts.append(projection.GetOutputDataObject(0).GetNumberOfPoints())
+    assert_that(counts == [100, 0, 0], f"projection: points per piece {counts}")
 
 
 def test_vertex_cell_data_of_one_point_set_is_carried_and_other_cell_data_is_reported():
