@@ -502,6 +502,7 @@ TileSet ComputeTilesOf(const DirichletTessellation& tessellation,
   const std::vector<std::int32_t>& ids,
   FaceMateLists* mates)
 {
+  CheckWindowInExactRange(tessellation);
   return LocalTiles(tessellation, ids, true, mates);
 }
 
@@ -512,6 +513,7 @@ std::size_t VisitTilesOf(const DirichletTessellation& tessellation,
   const TileVisitor& visit,
   LocalTilesWorkspace* workspace)
 {
+  CheckWindowInExactRange(tessellation);
   if (!tessellation.IsTwoDimensional())
   {
     const TileSet tiles = CollinearTilesOf(tessellation, ids, nullptr);

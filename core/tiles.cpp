@@ -65,6 +65,20 @@ namespace
 constexpr std::int64_t MinimumTrianglesPerThread = 2 * TessellationDual::MinimumTilesPerThread;
 } // namespace
 
+void CheckWindowInExactRange(const DirichletTessellation& tessellation)
+{
+  const int exponent = tessellation.GetWindow().RangeScaleExponent();
+  if (exponent != 0)
+  {
+    throw InputError(std::string("the window's coordinates are ") +
+      (exponent < 0 ? "beyond 2^128" : "all below 2^-128") +
+      ", outside the range where tiles are exact: scale points and window into it with "
+      "ScaleIntoExactRange (window.h) before building the tessellation, and the tiles back with "
+      "ScaleByPowerOfTwo (tiles.h) (by 2^" +
+      std::to_string(exponent) + " here)");
+  }
+}
+
 TessellationDual::TessellationDual(const DirichletTessellation& tessellation)
   : Tess(tessellation)
 {
@@ -970,6 +984,7 @@ void MergeSameVertices(TileMesh& mesh,
 // again as the contiguity tests.
 void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* graph) const
 {
+  CheckWindowInExactRange(this->Tess); // (the faces alone need no window: they are exact anywhere)
   using tiles_detail::EstimatedRoom;
   // Half-neighbours: the diagonals of the degenerate faces whose centre is in the window.
   const std::int64_t halfPairs = graph ? this->HalfNeighbourPairCount() : 0;

@@ -112,6 +112,14 @@ TileMesh MeshOfSeparateTiles(TileSet tiles);
 /// points scaled by Window::RangeScaleExponent, brought back to the points' own scale.
 void ScaleByPowerOfTwo(TileMesh& mesh, int exponent);
 
+/// Throws InputError when the tessellation's window lies outside the range where the tiles'
+/// window decisions are exact (Window::RangeScaleExponent is not 0: coordinates beyond about
+/// 2^128, or all below 2^-128): its tiles came out wrong there without a word (corners inf or NaN
+/// at 1e120, collapsed tiles at 1e-120). The derivations of tiles and contiguities call it (not
+/// that of the Delaunay faces, which are exact at any scale);
+/// ScaleIntoExactRange (window.h) before building, and ScaleByPowerOfTwo after, handle any scale.
+void CheckWindowInExactRange(const DirichletTessellation& tessellation);
+
 /// Throws InputError unless the tiles' areas add up to the window's area (within 1e-6 relative):
 /// a check that points lay within the range where the tiles are exact (window_predicates.h).
 /// Necessary, not sufficient: it catches tiles that overlap or leave gaps, not a tile given to the

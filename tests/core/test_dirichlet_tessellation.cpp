@@ -119,7 +119,11 @@ Canonical MakeCanonical(const Tess& t,
   const auto map = [&](std::int32_t id) { return idMap.empty() ? id : idMap[id]; };
   TessellationDual dual(t);
   Canonical c;
-  const ContiguityGraph graph = dual.Contiguities();
+  // (Tiles and contiguities are derived only with the window in the exact range, where their
+  // window decisions are exact: CheckWindowInExactRange; the faces are compared at any scale.)
+  const bool inRange = t.GetWindow().RangeScaleExponent() == 0;
+  tiles = tiles && inRange;
+  const ContiguityGraph graph = inRange ? dual.Contiguities() : ContiguityGraph();
   for (std::size_t k = 0; k < graph.Kinds.size(); ++k)
   {
     std::int32_t i = map(graph.Pairs[2 * k]), j = map(graph.Pairs[2 * k + 1]);

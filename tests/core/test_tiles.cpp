@@ -1307,3 +1307,48 @@ TEST(Tiles, PointsASubnormalDistanceApartGiveFiniteHalves)
     }
   }
 }
+
+// Tiles of a window outside the exact range (coordinates of 2^400 or 2^-400) came out wrong
+// without a word: corners inf or NaN, collapsed tiles. Deriving them is now an InputError that
+// says how to scale; scaled by ScaleIntoExactRange, the tiles are those of the unit square scaled.
+// The Delaunay faces need no window and stay exact at any scale.
+TEST(Tiles, AWindowOutsideTheExactRangeIsAnErrorUnlessScaled)
+{
+  const std::vector<Point2> unit{ { 0.2, 0.3 }, { 0.7, 0.4 }, { 0.4, 0.8 }, { 0.9, 0.9 } };
+  const DirichletTessellation reference(Window::Rectangle(0.0, 1.0, 0.0, 1.0), unit);
+  const TileSet expected = ComputeTiles(reference);
+  for (const int exponent : { 400, -400 })
+  {
+    std::vector<Point2> points = unit;
+    for (Point2& p : points)
+    {
+      p = { std::ldexp(p.x, exponent), std::ldexp(p.y, exponent) };
+    }
+    const double one = std::ldexp(1.0, exponent);
+    Window window = Window::Rectangle(0.0, one, 0.0, one);
+    {
+      const DirichletTessellation raw(window, points);
+      try
+      {
+        ComputeTiles(raw);
+        ADD_FAILURE() << "2^" << exponent << ": tiles derived outside the exact range";
+      }
+      catch (const InputError& e)
+      {
+        EXPECT_NE(std::string(e.what()).find("ScaleIntoExactRange"), std::string::npos) << e.what();
+      }
+      EXPECT_THROW(ComputeTilesOf(raw, { 0, 1 }), InputError);
+      EXPECT_EQ(ComputeDelaunayFaces(raw, false).PointIds.size(),
+        ComputeDelaunayFaces(reference, false).PointIds.size());
+    }
+    const int scale = ScaleIntoExactRange(window, points);
+    TileMesh mesh =
+      TessellationDual(DirichletTessellation(window, points)).TileMeshAndContiguities(false).Tiles;
+    ScaleByPowerOfTwo(mesh, -scale);
+    ASSERT_EQ(mesh.Areas.size(), expected.Areas.size());
+    for (std::size_t k = 0; k < mesh.Areas.size(); ++k)
+    {
+      EXPECT_DOUBLE_EQ(mesh.Areas[k], std::ldexp(expected.Areas[k], 2 * exponent)) << k;
+    }
+  }
+}
