@@ -118,6 +118,28 @@ void DensifyPlanarRing(const Point2* ring, std::size_t count, double step, std::
   }
 }
 
+/// Padding and GeodesicStepMetres in their ranges (ArealAverageSettings), each named: a Padding of
+/// 1e14 times the data's size left a window whose rounding swallowed the catchment's tiles (one
+/// gauge of five weighted, the mean 5.0 for 3.0), a NaN one was named as a rectangle's NaN side,
+/// and a negative one was taken as 0.01; a GeodesicStepMetres of 0.001 ran out of memory, and a
+/// NaN, zero or negative one turned the densification off.
+void CheckSettingsRange(const ArealAverageSettings& settings)
+{
+  if (!(settings.Padding >= 0.0 && settings.Padding <= ArealAverageSettings::MaxPadding))
+  {
+    throw InputError("Padding must be a fraction from 0 to " +
+      NumberText(ArealAverageSettings::MaxPadding) + " of the data's larger side, not " +
+      NumberText(settings.Padding));
+  }
+  if (!(settings.GeodesicStepMetres >= ArealAverageSettings::MinGeodesicStepMetres) ||
+    !std::isfinite(settings.GeodesicStepMetres))
+  {
+    throw InputError("GeodesicStepMetres must be a finite length of at least " +
+      NumberText(ArealAverageSettings::MinGeodesicStepMetres) + " m, not " +
+      NumberText(settings.GeodesicStepMetres));
+  }
+}
+
 } // namespace
 
 struct ThiessenArealAverage::State
@@ -940,6 +962,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     throw InputError("CoLocatedMetres must be a finite distance >= 0, not " +
       NumberText(settings.CoLocatedMetres));
   }
+  CheckSettingsRange(settings);
   if (!settings.GaugeNames.empty() && settings.GaugeNames.size() != gaugesLonLat.size())
   {
     throw InputError("GaugeNames has " + std::to_string(settings.GaugeNames.size()) +

@@ -59,8 +59,11 @@ struct ArealAverageSettings
   ProjectionParameters Projection;
   AreaMethod Areas = AreaMethod::Automatic;
   /// The window: the projected bounding box of gauges and catchment, padded on every side by this
-  /// fraction of its larger side.
+  /// fraction of its larger side (at least 0.01 of it is used). From 0 to MaxPadding, else an
+  /// InputError naming it: a window far larger than the data rounds its tiles (at 1e13 the
+  /// covered fraction was 0.9999).
   double Padding = 0.1;
+  static constexpr double MaxPadding = 1000.0;
   /// Catchment edges are straight in lon/lat: cut into pieces of at most this many degrees before
   /// projecting. An edge whose longitudes differ by more than 270 degrees as written is taken the
   /// shorter way round (179 to -179 across the 180th meridian); one that differs by 180 to 270
@@ -75,8 +78,10 @@ struct ArealAverageSettings
   /// longitudes 360 degrees apart lands some nanometres from itself. 0 groups exact repeats only.
   double CoLocatedMetres = 0.01;
   /// GeodesicPolygon only: spacing, in projected metres, of the points added along clipped ring
-  /// edges before unprojecting.
+  /// edges before unprojecting. At least MinGeodesicStepMetres, and finite, else an InputError
+  /// naming it (a millimetre's step took gigabytes; NaN, 0 or less turned densifying off).
   double GeodesicStepMetres = 1000.0;
+  static constexpr double MinGeodesicStepMetres = 1.0;
   /// Optional names of the gauges for error messages, one per gauge (e.g. their station ids):
   /// gauge g is then "gauge g (station NAME)". Empty: gauges are named by index only.
   std::vector<std::string> GaugeNames;

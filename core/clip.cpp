@@ -840,7 +840,7 @@ double Catchment::ClipInto(const Point2* tile,
   if (tileArea < 0.0)
   {
     throw InputError("tile " + std::to_string(tileId) + " has clockwise vertices (signed area " +
-      std::to_string(tileArea) + "); tiles must be convex and anticlockwise");
+      NumberText(tileArea) + "); tiles must be convex and anticlockwise");
   }
   Box2 box = BoundsOf(tile, count);
   const bool hullBuilt = folded == FoldedTile::IsAnError &&

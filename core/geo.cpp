@@ -244,6 +244,11 @@ GeographicExtent ComputeExtent(const std::vector<Point2>& lonlat)
 
 int UTMZoneOfLongitude(double longitude)
 {
+  if (!std::isfinite(longitude))
+  {
+    // (Cast from NaN to int, the zone was -2147483647.)
+    throw InputError("longitude " + NumberText(longitude) + " has no UTM zone: it is not finite");
+  }
   double lon = std::fmod(longitude + 180.0, 360.0);
   if (lon < 0.0)
   {
@@ -301,14 +306,15 @@ GeographicProjection::GeographicProjection(const ProjectionParameters& parameter
         " is not a latitude in [-90, 90]");
     }
   };
-  if (!std::isfinite(p.CentralLongitude))
-  {
-    throw InputError("projection parameter lon0 = " + NumberText(p.CentralLongitude) +
-      " is not a finite longitude");
-  }
-  Impl->CentralMeridian = p.CentralLongitude;
   try
   {
+    // (Inside the try, whose handler deletes Impl: thrown before it, Impl leaked.)
+    if (!std::isfinite(p.CentralLongitude))
+    {
+      throw InputError("projection parameter lon0 = " + NumberText(p.CentralLongitude) +
+        " is not a finite longitude");
+    }
+    Impl->CentralMeridian = p.CentralLongitude;
     switch (p.Kind)
     {
       case ProjectionKind::AlbersEqualArea:
@@ -497,6 +503,10 @@ int DensifiedPieceCount(const Point2& a, const Point2& b, double maxStep, bool* 
   if (capped)
   {
     *capped = pieces > double(MaxDensifiedPieces);
+  }
+  if (!(pieces >= 1.0))
+  {
+    return 1; // a NaN end (whose count, cast to int, was -2147483648), or a zero-length edge
   }
   return static_cast<int>(std::min(std::max(pieces, 1.0), double(MaxDensifiedPieces)));
 }

@@ -79,7 +79,8 @@ ProjectionParameters ParametersFromExtent(ProjectionKind kind, const GeographicE
 /// The automatic choice: an Albers equal-area conic with ParametersFromExtent.
 ProjectionParameters AutomaticParameters(const std::vector<Point2>& lonlat);
 
-/// UTM zone (1..60) whose central meridian is nearest to a longitude.
+/// UTM zone (1..60) whose central meridian is nearest to a longitude; InputError when it is not
+/// finite.
 int UTMZoneOfLongitude(double longitude);
 
 class GeographicProjection

@@ -359,7 +359,10 @@ double Window::Area() const
     compensation += std::fabs(sum) >= std::fabs(term) ? (sum - t) + term : (term - t) + sum;
     sum = t;
   }
-  return 0.5 * (sum + compensation);
+  // Terms that overflow (corners of some 1e154 and more) sum to inf - inf: the area is infinite,
+  // not NaN.
+  const double area = 0.5 * (sum + compensation);
+  return std::isnan(area) ? std::numeric_limits<double>::infinity() : area;
 }
 
 double Window::Reach() const

@@ -1107,3 +1107,45 @@ TEST(ArealAverage, CoLocatedDistanceMustBeFiniteAndNotNegative)
       << bad;
   }
 }
+
+// Padding and GeodesicStepMetres out of range are InputErrors naming them: a Padding of 1e14
+// rounded the catchment's tiles away (one gauge of four weighted), a negative one was taken as
+// 0.01, a NaN one was named as a rectangle's side; a step of a millimetre ran out of memory and a
+// NaN, zero or negative one turned the densification off.
+TEST(ArealAverage, PaddingAndGeodesicStepOutOfRangeAreNamed)
+{
+  const Square catchment(-1.0, -1.0, 1.0, 1.0);
+  const std::vector<Point2> gauges = { { -0.5, -0.5 }, { 0.5, -0.5 }, { 0.5, 0.5 }, { -0.5, 0.5 } };
+  const auto error = [&](const ArealAverageSettings& settings) -> std::string
+  {
+    try
+    {
+      ThiessenArealAverage average(gauges, catchment.Offsets, catchment.Ring, settings);
+    }
+    catch (const tessera::InputError& e)
+    {
+      return e.what();
+    }
+    return std::string();
+  };
+  for (const double padding : { -1.0, std::nan(""), 1e14, HUGE_VAL })
+  {
+    ArealAverageSettings settings;
+    settings.Padding = padding;
+    EXPECT_NE(error(settings).find("Padding must be a fraction from 0 to 1000"), std::string::npos)
+      << padding << ": " << error(settings);
+  }
+  for (const double step : { std::nan(""), 0.0, -5.0, 1e-300, 0.001 })
+  {
+    ArealAverageSettings settings;
+    settings.Areas = AreaMethod::GeodesicPolygon;
+    settings.GeodesicStepMetres = step;
+    EXPECT_NE(error(settings).find("GeodesicStepMetres must be a finite length of at least 1 m"),
+      std::string::npos)
+      << step << ": " << error(settings);
+  }
+  ArealAverageSettings edges;
+  edges.Padding = 0.0;
+  edges.GeodesicStepMetres = 1.0;
+  EXPECT_EQ(error(edges), "");
+}

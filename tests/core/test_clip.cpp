@@ -1364,3 +1364,21 @@ TEST(Clip, DensifiedOutlineWithTilesThroughItsVertices)
     CheckRings(clipped.Rings, clipped.Area, rings, tile, random);
   }
 }
+
+// A clockwise tile is named with its signed area as a number (%f printed -0.000000 for -5e-9).
+TEST(Clip, AClockwiseTileIsNamedWithItsArea)
+{
+  const Rings rings({ { { 0.0, 0.0 }, { 1.0, 0.0 }, { 1.0, 1.0 }, { 0.0, 1.0 } } });
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  const std::vector<Point2> clockwise{ { 0.5, 0.5 }, { 0.5, 0.5001 }, { 0.5001, 0.5 } };
+  try
+  {
+    catchment.ClipArea(clockwise);
+    ADD_FAILURE() << "a clockwise tile was clipped";
+  }
+  catch (const tessera::InputError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("signed area -4.99999999999"), std::string::npos)
+      << e.what();
+  }
+}

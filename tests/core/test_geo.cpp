@@ -328,3 +328,18 @@ TEST(Geo, SameProjectionIsWhetherPointsLandAlike)
   same.Kind = ProjectionKind::AlbersEqualArea;
   EXPECT_FALSE(SameProjection(other, same));
 }
+
+// Found by a C++ user's review: a NaN longitude's UTM zone was a cast of NaN to int
+// (-2147483647), a NaN edge end gave -2147483648 pieces, a NaN central longitude leaked the
+// projection's engines (a sanitizer build of this test would report it).
+TEST(Geo, NonFiniteValuesAreErrorsOrSafe)
+{
+  EXPECT_THROW(tessera::UTMZoneOfLongitude(std::nan("")), tessera::InputError);
+  EXPECT_THROW(tessera::UTMZoneOfLongitude(HUGE_VAL), tessera::InputError);
+  EXPECT_EQ(tessera::UTMZoneOfLongitude(-105.0), 13);
+  EXPECT_EQ(tessera::DensifiedPieceCount({ 0.0, 0.0 }, { std::nan(""), 1.0 }, 0.01, nullptr), 1);
+  tessera::ProjectionParameters p;
+  p.Kind = tessera::ProjectionKind::AlbersEqualArea;
+  p.CentralLongitude = std::nan("");
+  EXPECT_THROW(tessera::GeographicProjection{ p }, tessera::InputError);
+}

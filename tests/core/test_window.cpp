@@ -692,3 +692,11 @@ TEST(Window, ScalingPointsByAPowerOfTwo)
   EXPECT_EQ(kept[0].x, 0.25);
   EXPECT_EQ(unit.Vertices()[2].x, 1.0);
 }
+
+// An area beyond the doubles is infinite, not NaN (inf - inf in the shoelace): CheckTilesFillWindow
+// said "not the window's area -nan".
+TEST(Window, AnAreaThatOverflowsIsInfinite)
+{
+  EXPECT_EQ(tessera::Window::Rectangle(-1e200, 1e200, -1e200, 1e200).Area(), HUGE_VAL);
+  EXPECT_EQ(tessera::Window::Rectangle(0.0, 2.0, 0.0, 3.0).Area(), 6.0);
+}
