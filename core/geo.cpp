@@ -128,9 +128,10 @@ ProjectionParameters ProjectionParameters::FromString(const std::string& text)
     {
       char* end = nullptr;
       const double v = std::strtod(value.c_str(), &end);
-      if (value.empty() || *end != '\0')
+      if (value.empty() || *end != '\0' || !std::isfinite(v))
       {
-        throw InputError("projection record: " + key + "='" + value + "' is not a number");
+        // (nan and inf parse as numbers: lon0=nan was taken, and failed later elsewhere)
+        throw InputError("projection record: " + key + "='" + value + "' is not a finite number");
       }
       return v;
     };
@@ -164,7 +165,15 @@ ProjectionParameters ProjectionParameters::FromString(const std::string& text)
     else if (key == "lat2")
       result.StandardParallel2 = number();
     else if (key == "zone")
-      result.UTMZone = static_cast<int>(number());
+    {
+      const double zone = number();
+      if (zone != std::floor(zone) || zone < 0.0 || zone > 60.0)
+      {
+        // (a cast of 1e20 to int was -2147483648)
+        throw InputError("projection record: zone='" + value + "' is not a UTM zone (0 to 60)");
+      }
+      result.UTMZone = static_cast<int>(zone);
+    }
     else if (key == "north")
       result.UTMNorth = number() != 0.0;
     else
@@ -321,6 +330,12 @@ GeographicProjection::GeographicProjection(const ProjectionParameters& parameter
       case ProjectionKind::LambertConformalConic:
         requireLatitude(p.StandardParallel1, "lat1");
         requireLatitude(p.StandardParallel2, "lat2");
+        if (std::fabs(p.StandardParallel1) == 90.0 && p.StandardParallel2 == -p.StandardParallel1)
+        {
+          // (GeographicLib took them: every point then projected onto the apex, or off the map)
+          throw InputError("conic standard parallels lat1 = " + NumberText(p.StandardParallel1) +
+            " and lat2 = " + NumberText(p.StandardParallel2) + " lie at opposite poles");
+        }
         if (p.Kind == ProjectionKind::AlbersEqualArea)
         {
           Impl->MirrorAcrossEquator = p.StandardParallel1 + p.StandardParallel2 < 0.0;

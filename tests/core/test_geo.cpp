@@ -343,3 +343,28 @@ TEST(Geo, NonFiniteValuesAreErrorsOrSafe)
   p.CentralLongitude = std::nan("");
   EXPECT_THROW(tessera::GeographicProjection{ p }, tessera::InputError);
 }
+
+// Found by a C++ user's review: FromString took lon0=nan, lat1=inf and zone=1e20 (cast to
+// -2147483648), and conic standard parallels at opposite poles were not refused as documented.
+TEST(Geo, BadRecordsAndOppositePolesAreErrors)
+{
+  for (const char* record : { "projection=AlbersEqualArea lon0=nan lat0=39 lat1=37 lat2=41",
+         "projection=AlbersEqualArea lon0=-105 lat0=39 lat1=inf lat2=41",
+         "projection=UTM lon0=-105 zone=99999999999999999999 north=1",
+         "projection=UTM lon0=-105 zone=13.5 north=1" })
+  {
+    EXPECT_THROW(tessera::ProjectionParameters::FromString(record), tessera::InputError) << record;
+  }
+  EXPECT_EQ(
+    tessera::ProjectionParameters::FromString("projection=UTM lon0=-105 zone=13 north=1").UTMZone,
+    13);
+  for (const tessera::ProjectionKind kind :
+    { tessera::ProjectionKind::AlbersEqualArea, tessera::ProjectionKind::LambertConformalConic })
+  {
+    tessera::ProjectionParameters p;
+    p.Kind = kind;
+    p.StandardParallel1 = 90.0;
+    p.StandardParallel2 = -90.0;
+    EXPECT_THROW(tessera::GeographicProjection{ p }, tessera::InputError);
+  }
+}
