@@ -1,6 +1,7 @@
 #pragma once
 // Errors thrown by the core. A VTK filter catches them and turns them into vtkErrorMacro.
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 
@@ -21,5 +22,23 @@ public:
 /// locale, for messages and records: "39.2", not "39.200000000000003"; "1020.0000001", not
 /// "1020.000000"; "nan", "inf".
 std::string NumberText(double value);
+
+/// The first 20 of count names, nameOf(0), nameOf(1), ..., then ", ... (N in all)" when there are
+/// more: only the names shown are made. For messages that list ids (the core's warnings, the
+/// filters' lists of skipped or unused items).
+template<class NameOf>
+std::string ListNames(std::size_t count, const NameOf& nameOf)
+{
+  std::string out;
+  for (std::size_t k = 0; k < count && k < 20; ++k)
+  {
+    out += (k ? ", " : "") + std::string(nameOf(k));
+  }
+  if (count > 20)
+  {
+    out += ", ... (" + std::to_string(count) + " in all)";
+  }
+  return out;
+}
 
 } // namespace tessera

@@ -168,14 +168,9 @@ void FitCurves(const std::vector<Point2>& points,
   }
   if (!single.empty())
   {
-    std::string ids;
-    for (std::size_t k = 0; k < single.size() && k < 20; ++k)
-    {
-      ids += (k ? ", " : "") + std::to_string(single[k]);
-    }
     result.Warnings.push_back(std::to_string(single.size()) +
-      " group(s) of a single point get no curve (a curve needs two points): group(s) " + ids +
-      (single.size() > 20 ? ", ... (" + std::to_string(single.size()) + " in all)" : ""));
+      " group(s) of a single point get no curve (a curve needs two points): group(s) " +
+      ListNames(single.size(), [&](std::size_t k) { return std::to_string(single[k]); }));
   }
 }
 
@@ -210,17 +205,12 @@ void MeasureContourDistances(const std::vector<Point2>& pixelPoints,
   }
   if (!far.empty())
   {
-    std::string ids;
-    for (std::size_t k = 0; k < far.size() && k < 20; ++k)
-    {
-      ids += (k ? ", " : "") + std::to_string(far[k]);
-    }
     result.Warnings.push_back(std::to_string(far.size()) + " point(s) lie more than " +
       NumberText(RidgeGrouping::FarContourWidths) + " basis widths (" +
       NumberText(RidgeGrouping::FarContourWidths * width * grid.Spacing) +
       " in the points' units) from the contour they are grouped by, whose curve they pull: "
       "point(s) " +
-      ids + (far.size() > 20 ? ", ... (" + std::to_string(far.size()) + " in all)" : "") +
+      ListNames(far.size(), [&](std::size_t k) { return std::to_string(far[k]); }) +
       " (ContourDistance gives every point's distance)");
   }
 }

@@ -65,6 +65,32 @@ namespace
 constexpr std::int64_t MinimumTrianglesPerThread = 2 * TessellationDual::MinimumTilesPerThread;
 } // namespace
 
+std::vector<std::int32_t> CollapsedTilePoints(const TileMesh& tiles)
+{
+  std::vector<std::int32_t> collapsed;
+  for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
+  {
+    std::array<Point2, 3> corners; // (no allocation per tile: a million tiles)
+    std::size_t distinct = 0;
+    for (std::int64_t v = tiles.Offsets[k]; v < tiles.Offsets[k + 1] && distinct < 3; ++v)
+    {
+      const Point2& p = tiles.Vertices[static_cast<std::size_t>(tiles.VertexIds[v])];
+      if (std::none_of(corners.begin(),
+            corners.begin() + static_cast<std::ptrdiff_t>(distinct),
+            [&](const Point2& q) { return q.x == p.x && q.y == p.y; }))
+      {
+        corners[distinct++] = p;
+      }
+    }
+    if (distinct < 3)
+    {
+      collapsed.push_back(tiles.PointIds[k]);
+    }
+  }
+  std::sort(collapsed.begin(), collapsed.end());
+  return collapsed;
+}
+
 void CheckWindowInExactRange(const DirichletTessellation& tessellation)
 {
   const int exponent = tessellation.GetWindow().RangeScaleExponent();

@@ -120,6 +120,12 @@ void ScaleByPowerOfTwo(TileMesh& mesh, int exponent);
 /// ScaleIntoExactRange (window.h) before building, and ScaleByPowerOfTwo after, handle any scale.
 void CheckWindowInExactRange(const DirichletTessellation& tessellation);
 
+/// The points, ascending, whose tiles have fewer than 3 distinct corners: strips narrower than the
+/// coordinates' resolution (points an ulp or so apart), whose corners round onto each other, so
+/// that the polygon has 1 or 2 points and no area in doubles (and which corners are left can
+/// depend on the input's order).
+std::vector<std::int32_t> CollapsedTilePoints(const TileMesh& tiles);
+
 /// Throws InputError unless the tiles' areas add up to the window's area (within 1e-6 relative):
 /// a check that points lay within the range where the tiles are exact (window_predicates.h).
 /// Necessary, not sufficient: it catches tiles that overlap or leave gaps, not a tile given to the

@@ -595,6 +595,15 @@ std::string JoinProblem(const std::vector<PointLeaf>& leaves, const std::string&
   return std::string();
 }
 
+/// Asks, in a request's or an input's information, for the whole data set: piece 0 of 1, no
+/// ghost levels (RequestWholeInputs, UpdatedData).
+void AskForTheWhole(vtkInformation* info)
+{
+  info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
+  info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+  info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+}
+
 /// The path of each leaf below node (child indices joined by '/').
 void CollectLeafPaths(vtkDataObject* node,
   const std::string& path,
@@ -646,10 +655,7 @@ vtkDataObject* UpdatedData(vtkAlgorithmOutput* connection)
   // differed from RequestData's, made from the whole.
   vtkNew<vtkInformationVector> requests;
   requests->SetNumberOfInformationObjects(port + 1);
-  vtkInformation* request = requests->GetInformationObject(port);
-  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-  request->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  AskForTheWhole(requests->GetInformationObject(port));
   source->Update(port, requests);
   return source->GetOutputDataObject(port);
 }
@@ -702,10 +708,7 @@ void RequestWholeInputs(vtkInformationVector** inputVector, int firstPort, int l
   {
     for (int k = 0; k < inputVector[port]->GetNumberOfInformationObjects(); ++k)
     {
-      vtkInformation* info = inputVector[port]->GetInformationObject(k);
-      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
-      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
-      info->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+      AskForTheWhole(inputVector[port]->GetInformationObject(k));
     }
   }
 }
@@ -729,22 +732,17 @@ vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data, std::vector<std::s
   if (auto* points = vtkPointSet::SafeDownCast(data))
   {
     CheckAttributeLengths(points, "the input");
+    // One vertex per point (ParaView's Merge Blocks of a GDAL point layer): the vertices'
+    // attributes are the points'.
     const std::vector<std::string> cellArrays = UncarriedCellArrays(points);
-    if (cellArrays.empty() || points->GetNumberOfPoints() == 0)
-    {
-      return points;
-    }
-    const std::vector<vtkIdType> cellOf = VertexCellOfPoint(points);
-    if (cellOf.empty())
+    vtkSmartPointer<vtkPointSet> carried = VertexArraysAsPointData(points, cellArrays);
+    if (carried == points && !cellArrays.empty() && points->GetNumberOfPoints() > 0)
     {
       warnings.push_back("the input's cell-data arrays (" +
         ListNames(cellArrays.size(), [&](std::size_t k) { return "'" + cellArrays[k] + "'"; }) +
         ") are not carried: its cells are not one vertex per point, so they are no point's");
-      return points;
     }
-    // One vertex per point (ParaView's Merge Blocks of a GDAL point layer): the vertices'
-    // attributes are the points'.
-    return WithVertexAttributes(points, cellOf, cellArrays);
+    return carried;
   }
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
   {

@@ -6,6 +6,7 @@
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
 
+#include "errors.h"
 #include "geometry.h"
 #include "large_pages.h"
 #include "window.h"
@@ -158,22 +159,8 @@ Rings ReadPolygonRings(vtkDataObject* data);
 /// or empty when there are none.
 std::string SkippedCellsWarning(const Rings& rings, const char* what);
 
-/// The first 20 of count names, nameOf(0), nameOf(1), ..., then ", ... (N in all)" when there are
-/// more: only the names shown are made.
-template<class NameOf>
-std::string ListNames(std::size_t count, const NameOf& nameOf)
-{
-  std::string out;
-  for (std::size_t k = 0; k < count && k < 20; ++k)
-  {
-    out += (k ? ", " : "") + std::string(nameOf(k));
-  }
-  if (count > 20)
-  {
-    out += ", ... (" + std::to_string(count) + " in all)";
-  }
-  return out;
-}
+/// The core's (errors.h), under the name the filters have always used.
+using tessera::ListNames;
 
 /// The name of vtkGeographicProjection's field-data record of the projection it applied.
 extern const char* const ProjectionRecordName;

@@ -27,7 +27,6 @@
 #include "tiles.h"
 
 #include <algorithm>
-#include <array>
 #include <climits>
 #include <cstdint>
 #include <exception>
@@ -94,37 +93,14 @@ void CheckFitsInt32(vtkIdType count, const char* what)
 /// one of them is passed under another name (tessera_vtk::RenameArraysNamed).
 const std::vector<const char*> OwnArrayNames{ "PointId", "Area", "NeighborCount" };
 
-/// The warning for accepted points whose tiles have fewer than 3 distinct corners, or "". Such a
-/// tile is a strip narrower than the coordinates' resolution (points an ulp or so apart): its
-/// corners round onto each other, so its polygon has 1 or 2 points and no area in doubles, and
-/// which corners are left can depend on the input's order.
+/// The warning for accepted points whose tiles collapsed (tessera::CollapsedTilePoints), or "".
 std::string CollapsedTilesWarning(const tessera::TileMesh& tiles)
 {
-  std::vector<std::int32_t> collapsed;
-  for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
-  {
-    std::array<tessera::Point2, 3> corners; // (no allocation per tile: a million tiles)
-    std::size_t distinct = 0;
-    for (std::int64_t v = tiles.Offsets[k]; v < tiles.Offsets[k + 1] && distinct < 3; ++v)
-    {
-      const tessera::Point2& p = tiles.Vertices[static_cast<std::size_t>(tiles.VertexIds[v])];
-      if (std::none_of(corners.begin(),
-            corners.begin() + static_cast<std::ptrdiff_t>(distinct),
-            [&](const tessera::Point2& q) { return q.x == p.x && q.y == p.y; }))
-      {
-        corners[distinct++] = p;
-      }
-    }
-    if (distinct < 3)
-    {
-      collapsed.push_back(tiles.PointIds[k]);
-    }
-  }
+  const std::vector<std::int32_t> collapsed = tessera::CollapsedTilePoints(tiles);
   if (collapsed.empty())
   {
     return std::string();
   }
-  std::sort(collapsed.begin(), collapsed.end());
   return std::to_string(collapsed.size()) +
     " tile(s) are narrower than the coordinates can resolve (their points lie an ulp or so from "
     "their neighbours), so their polygons have fewer than 3 corners and no area in doubles: "

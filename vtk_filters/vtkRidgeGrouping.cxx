@@ -87,6 +87,27 @@ void ExtentOf(const tessera::PixelGrid& grid, int extent[6])
   std::copy(bounds, bounds + 6, extent);
 }
 
+/// The grid's pixel values onto an image of width x height pixels from its lower left corner,
+/// straight into the array: the rows that both have, cropped or padded with `fill`.
+template<class T, class ArrayT>
+void CopyOntoImage(const std::vector<T>& values,
+  const tessera::PixelGrid& grid,
+  int width,
+  int height,
+  T fill,
+  ArrayT* array)
+{
+  array->SetNumberOfValues(static_cast<vtkIdType>(width) * height);
+  T* out = array->GetPointer(0);
+  std::fill(out, out + static_cast<std::size_t>(width) * height, fill);
+  const int columns = std::min(width, grid.Width);
+  for (int j = 0; j < std::min(height, grid.Height); ++j)
+  {
+    const T* row = values.data() + static_cast<std::size_t>(j) * grid.Width;
+    std::copy(row, row + columns, out + static_cast<std::size_t>(j) * width);
+  }
+}
+
 /// The core's settings from the filter's.
 tessera::RidgeGroupingSettings CoreSettings(vtkRidgeGrouping* self)
 {
@@ -308,28 +329,20 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     imageOut->SetSpacing(grid.Spacing, grid.Spacing, 1.0);
     if (grid.PixelCount() > 0)
     {
-      const std::size_t pixels = static_cast<std::size_t>(outWidth) * outHeight;
-      std::vector<double> field(pixels, std::numeric_limits<double>::quiet_NaN());
-      std::vector<std::uint8_t> minor(pixels, 0), major(pixels, 0);
-      for (int j = 0; j < std::min(outHeight, grid.Height); ++j)
-      {
-        for (int i = 0; i < std::min(outWidth, grid.Width); ++i)
-        {
-          const std::size_t from = static_cast<std::size_t>(j) * grid.Width + i;
-          const std::size_t to = static_cast<std::size_t>(j) * outWidth + i;
-          field[to] = result.Field[from];
-          minor[to] = result.MinorRidge[from];
-          major[to] = result.MajorRidge[from];
-        }
-      }
-      vtkNew<vtkDoubleArray> fieldArray;
-      fieldArray->SetName("Field");
-      fieldArray->SetNumberOfValues(static_cast<vtkIdType>(pixels));
-      std::copy(field.begin(), field.end(), fieldArray->GetPointer(0));
-      imageOut->GetPointData()->AddArray(fieldArray);
+      vtkNew<vtkDoubleArray> field;
+      field->SetName("Field");
+      CopyOntoImage(
+        result.Field, grid, outWidth, outHeight, std::numeric_limits<double>::quiet_NaN(), field.Get());
+      imageOut->GetPointData()->AddArray(field);
       imageOut->GetPointData()->SetActiveScalars("Field");
-      imageOut->GetPointData()->AddArray(ByteArray("MinorRidge", minor));
-      imageOut->GetPointData()->AddArray(ByteArray("MajorRidge", major));
+      for (const auto& [name, ridge] : { std::make_pair("MinorRidge", &result.MinorRidge),
+             std::make_pair("MajorRidge", &result.MajorRidge) })
+      {
+        vtkNew<vtkUnsignedCharArray> mask;
+        mask->SetName(name);
+        CopyOntoImage(*ridge, grid, outWidth, outHeight, std::uint8_t(0), mask.Get());
+        imageOut->GetPointData()->AddArray(mask);
+      }
     }
     return 1;
   }

@@ -931,48 +931,43 @@ vtkPointSet* vtkThiessenArealAverage::GaugesOf(vtkDataObject* data)
   {
     // (Values and ids are read by gauge id: a short array was read past its end.)
     tessera_vtk::CheckAttributeLengths(points, "the gauges (input 0)");
-    in.ValueProblem.clear();
-    // Attributes of one vertex per point (a GDAL point layer after Merge Blocks) are the points';
-    // a copy made for them is kept while the input is unchanged, as a join is.
-    const vtkMTimeType latest = data->GetMTime();
-    if (in.Joined && in.JoinedFrom == data && in.JoinedAt == latest && in.JoinedArrays == arrays)
-    {
-      return in.Joined;
-    }
-    const vtkSmartPointer<vtkPointSet> carried =
-      tessera_vtk::VertexArraysAsPointData(points, arrays);
-    if (carried == points)
-    {
-      return points;
-    }
-    in.Joined = carried;
-    in.JoinedFrom = data;
-    in.JoinedAt = latest;
-    in.JoinedArrays = arrays;
-    return in.Joined;
   }
   const vtkMTimeType latest = LatestMTime(data);
   if (!in.Joined || in.JoinedFrom != data || in.JoinedAt != latest || in.JoinedArrays != arrays)
   {
     in.Joined = nullptr; // until the join succeeds
-    // The station ids are needed; the value array only without observations, where the reason
-    // it could not be joined is the error (ValueProblem).
-    std::map<std::string, std::string> dropped;
-    vtkSmartPointer<vtkPolyData> joined = tessera_vtk::MergedPoints(composite, arrays, &dropped);
-    const auto stationProblem = dropped.find(this->StationIdArrayName);
-    if (stationProblem != dropped.end())
+    in.ValueProblem.clear();
+    if (points)
     {
-      throw tessera::InputError(stationProblem->second);
+      // Attributes of one vertex per point (a GDAL point layer after Merge Blocks) are the
+      // points' (the point set itself when there are none).
+      in.Joined = tessera_vtk::VertexArraysAsPointData(points, arrays);
     }
-    const auto valueProblem = dropped.find(this->ValueArrayName);
-    in.ValueProblem = valueProblem != dropped.end() ? valueProblem->second : std::string();
-    in.Joined = joined;
+    else
+    {
+      // The station ids are needed; the value array only without observations, where the
+      // reason it could not be joined is the error (ValueProblem).
+      std::map<std::string, std::string> dropped;
+      vtkSmartPointer<vtkPolyData> joined = tessera_vtk::MergedPoints(composite, arrays, &dropped);
+      const auto stationProblem = dropped.find(this->StationIdArrayName);
+      if (stationProblem != dropped.end())
+      {
+        throw tessera::InputError(stationProblem->second);
+      }
+      const auto valueProblem = dropped.find(this->ValueArrayName);
+      in.ValueProblem = valueProblem != dropped.end() ? valueProblem->second : std::string();
+      in.Joined = joined;
+    }
     in.JoinedFrom = data;
     in.JoinedAt = latest;
     in.JoinedArrays = arrays;
   }
-  // The composite's time (of a time-aware source), which the gauges' one step takes without
-  // observations.
+  if (in.Joined.GetPointer() == data)
+  {
+    return points;
+  }
+  // The input's time (of a time-aware source) on the joined or copied gauges, which their one
+  // step takes without observations.
   vtkInformation* time = data->GetInformation();
   if (time->Has(vtkDataObject::DATA_TIME_STEP()))
   {

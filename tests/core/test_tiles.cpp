@@ -1352,3 +1352,21 @@ TEST(Tiles, AWindowOutsideTheExactRangeIsAnErrorUnlessScaled)
     }
   }
 }
+
+// Points an ulp apart: the middle tile's corners round onto each other (a polygon of one or two
+// points); CollapsedTilePoints names it, and a true strip (points 2^20 ulps apart) is not named.
+TEST(Tiles, TilesNarrowerThanAnUlpAreCollapsed)
+{
+  const double x = 4.0;
+  for (const bool ulp : { true, false })
+  {
+    const double left = ulp ? std::nextafter(x, 0.0) : x - std::ldexp(1.0, -30);
+    const double right = ulp ? std::nextafter(x, 9.0) : x + std::ldexp(1.0, -30);
+    const DirichletTessellation t(
+      Window::Rectangle(0.0, 6.0, 4.5, 5.5), { { left, 5.0 }, { x, 5.0 }, { right, 5.0 } });
+    const TileMesh mesh = TessellationDual(t).TileMeshAndContiguities(false).Tiles;
+    EXPECT_EQ(
+      CollapsedTilePoints(mesh), ulp ? std::vector<std::int32_t>{ 1 } : std::vector<std::int32_t>{})
+      << (ulp ? "an ulp apart" : "2^-30 apart");
+  }
+}
