@@ -14,6 +14,7 @@
 #include <cstring>
 #include <numeric>
 #include <random>
+#include <set>
 #include <regex>
 
 using namespace tessera;
@@ -241,6 +242,64 @@ TEST(ArealAverage, IncrementalUpdatesEqualRebuildsAndMissingGaugesHandOverTheirA
     EXPECT_EQ(x.StationsUsed,
       static_cast<int>(
         std::count_if(values.begin(), values.end(), [](double v) { return !std::isnan(v); })));
+  }
+}
+
+// A step finds the gauges that changed, and its weighted gauges, 64 gauges at a time (bitmaps):
+// with 300 gauges (four full words and 44 more), places shared across word ends (63 and 64, 127
+// and 128) and within the last word, every reporting gauge inside the catchment that is the first
+// reporting one of its place must be weighted, and no other gauge but those outside it, on
+// updates as on rebuilds.
+TEST(ArealAverage, WeightedGaugesAcrossBitmapWordEndsAreThoseThatReportAndReachTheCatchment)
+{
+  std::mt19937_64 random(23);
+  std::vector<Point2> gauges = UniformGauges(300, random, -109.0, -102.0, 37.0, 41.0);
+  const std::pair<std::size_t, std::size_t> copies[] = { { 64, 63 }, { 128, 127 }, { 299, 260 } };
+  for (const auto& [copy, original] : copies)
+  {
+    gauges[copy] = gauges[original];
+  }
+  gauges[63] = { -105.0, 39.0 }; // one shared place inside the catchment for certain
+  gauges[64] = gauges[63];
+  const Square catchment(-108.0, 37.5, -103.0, 40.5);
+  ArealAverageSettings rebuild;
+  rebuild.Incremental = false;
+  ThiessenArealAverage a(gauges, catchment.Offsets, catchment.Ring);
+  ThiessenArealAverage b(gauges, catchment.Offsets, catchment.Ring, rebuild);
+  ASSERT_EQ(a.DuplicateGauges().size(), 3u);
+  std::uniform_real_distribution<double> value(0.0, 10.0);
+  std::bernoulli_distribution missing(0.3);
+  std::vector<double> values(gauges.size());
+  for (int t = 0; t < 30; ++t)
+  {
+    for (std::size_t g = 0; g < values.size(); ++g)
+    {
+      // Gauges 60..67 and 124..131 toggle together on odd steps: changes at the words' ends.
+      const bool edge = (g >= 60 && g < 68) || (g >= 124 && g < 132);
+      values[g] = (edge ? t % 2 == 1 : missing(random)) ? NaN : value(random);
+    }
+    const ArealStep x = a.Step(values), y = b.Step(values);
+    ASSERT_NO_FATAL_FAILURE(ExpectSameStep(x, y, t));
+    ASSERT_TRUE(std::is_sorted(x.Gauges.begin(), x.Gauges.end()));
+    std::set<std::size_t> placeTaken;
+    for (std::size_t g = 0; g < gauges.size(); ++g)
+    {
+      std::size_t place = g;
+      for (const auto& [copy, original] : copies)
+      {
+        place = g == copy ? original : place;
+      }
+      const bool used = !std::isnan(values[g]) && placeTaken.insert(place).second;
+      const bool weighted = std::binary_search(x.Gauges.begin(), x.Gauges.end(), int(g));
+      if (used && a.GaugeInsideCatchment(g))
+      {
+        EXPECT_TRUE(weighted) << "step " << t << ": gauge " << g << " inside is not weighted";
+      }
+      if (!used)
+      {
+        EXPECT_FALSE(weighted) << "step " << t << ": unused gauge " << g << " is weighted";
+      }
+    }
   }
 }
 
