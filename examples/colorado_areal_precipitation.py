@@ -24,6 +24,11 @@ Writes into --out:
   map_YYYY_MM.png        the tiles coloured by that month's precipitation, gauges, the outline
                          (each ring of it), over the catchment and the weighted gauges' extent
   areal_mean.png         the areal-mean time series
+  unused_inputs.csv      kind,file,line,station_id,note: every gauge and observation that was valid
+                         but not used (no observed value, a tile that never reaches the catchment,
+                         at the place of an earlier gauge, a repeated observation, an observation of
+                         a station no gauge has, or without a station id or time); the warnings name
+                         only the first 20 of each kind
 Units are those of the data (documented as mm; the magnitudes look like cm: see
 examples/data/README.md).
 
@@ -89,14 +94,16 @@ def read_gauges(path):
     return gauges, lines
 
 
-def read_observations(path, gauge_of, filler):
+def read_observations(path, gauge_of, filler, stations_path):
     """The long-format monthly table as a vtkTable (station_id, time, precip), the set of
     reporting gauges of every (year, month), as gauge indices, and the file's line of each record
     read (table row r, counted from 0, is the record of line lines[r]; the rows after them are the
     filler rows of months without a row of a gauge's station). gauge_of: the gauge that a
     station's observations go to, by station_key() (ids are compared as the filter compares them;
     a month none of whose rows names a gauge's station is a month where no gauge reported).
-    filler: a gauge's station id, given to the rows of those months."""
+    filler: a gauge's station id, given to the rows of those months. Ends the script when no row
+    names a gauge's station (stations_path: the stations file, for the message): ids that do not
+    match at all (a prefix, another numbering) would otherwise give months without a mean."""
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
     from vtkmodules.vtkCommonDataModel import vtkTable
 
@@ -110,12 +117,14 @@ def read_observations(path, gauge_of, filler):
     months = set()  # (year, month) of every row
     present = set()  # (year, month) of every row of a gauge's station
     lines = []  # the file's line of each row read
+    names = set()  # every row's station id, as station_key() gives it
     for line, row in csv_input.rows(path, ("station_id", "year", "month", "precip"), "observations"):
         lines.append(line)
         station = csv_input.text(row, "station_id", path, line)
         year_and_month = (csv_input.integer(row, "year", path, line, 1, 9999),
                           csv_input.integer(row, "month", path, line, 1, 12))
         months.add(year_and_month)
+        names.add(station_key(station))
         gauge = gauge_of.get(station_key(station))
         if gauge is not None:
             present.add(year_and_month)
@@ -134,6 +143,11 @@ def read_observations(path, gauge_of, filler):
         stations.InsertNextValue(station)
         times.InsertNextValue(t)
         values.InsertNextValue(value)
+    if lines and not present:
+        seen = sorted(names)
+        csv_input.fail(f"{path}: none of its {len(lines)} rows names a station of {stations_path} "
+                       f"(ids here: {', '.join(seen[:5])}{', ...' if len(seen) > 5 else ''}; ids there: "
+                       f"{', '.join(sorted(gauge_of)[:5])}{', ...' if len(gauge_of) > 5 else ''})")
     if unrecorded:
         print(f"{path}: {unrecorded} observation(s) without a value ({csv_input.MISSING_TEXT}) "
               "count as missing", file=sys.stderr)
@@ -243,13 +257,18 @@ class InputFiles:
         return re.sub(r"\brow (\d+)\b", line, re.sub(r" \(rows from 0, listed in \w+\)", "", text))
 
     def gauges_as_lines(self, text):
-        """text with "(gauges A and B)" as "(gauges A and B: lines L and M)"."""
+        """text with "(gauges A and B)" as "(gauges A and B: lines L and M)", and "(gauge A)" (a
+        gauge whose station id others have too) as "(gauge A: line L)"."""
         def lines(m):
             a, b = int(m.group(1)), int(m.group(2))
             if max(a, b) >= len(self.gauge_lines):
                 return m.group(0)
             return f"(gauges {a} and {b}: lines {self.gauge_lines[a]} and {self.gauge_lines[b]})"
-        return re.sub(r"\(gauges (\d+) and (\d+)\)", lines, text)
+
+        def line(m):
+            a = int(m.group(1))
+            return f"(gauge {a}: line {self.gauge_lines[a]})" if a < len(self.gauge_lines) else m.group(0)
+        return re.sub(r"\(gauge (\d+)\)", line, re.sub(r"\(gauges (\d+) and (\d+)\)", lines, text))
 
     def error(self, text):
         """The one line that reports the filter's error `text`."""
@@ -334,7 +353,7 @@ def write_all_weights(table, path):
         for r in range(table.GetNumberOfRows()):
             year, month = year_month(times[r])
             out.writerow([year, month, stations.GetValue(r), f"{weights[r]:.15g}",
-                          f"{areas[r] / 1e6:.4f}", f"{values[r]:.15g}"])
+                          f"{areas[r] / 1e6:.15g}", f"{values[r]:.15g}"])
     return table.GetNumberOfRows()
 
 
@@ -348,9 +367,48 @@ def write_summary(table, path):
             mean = table.GetValueByName(r, "ArealMean").ToDouble()
             used = table.GetValueByName(r, "StationsUsed").ToInt()
             weighted = table.GetValueByName(r, "StationsWeighted").ToInt()
-            out.writerow([year, month, used, weighted, "" if math.isnan(mean) else f"{mean:.6f}"])
+            out.writerow([year, month, used, weighted, "" if math.isnan(mean) else f"{mean:.15g}"])
             rows.append((year, month, used, weighted, mean))
     return rows
+
+
+# The filter's lists of valid input it did not use (output 1's field data), as unused_inputs.csv
+# gives them: (array, what it lists, whether it lists observation rows rather than gauges).
+UNUSED_LISTS = (
+    ("UnobservedGaugeIds", "gauge without any observed value", False),
+    ("UnweightedGaugeIds", "gauge whose tile never reaches the catchment", False),
+    ("DuplicateGaugeIds", "gauge at the place of an earlier gauge (the first that reports is used)", False),
+    ("RepeatedObservationRows", "observation repeating the station and month of an earlier one "
+     "with a value (the earlier value is used)", True),
+    ("UnusedObservationRows", "observation without a station id or time, or of a station no gauge has",
+     True),
+)
+
+
+def write_unused(summary, files, station_ids, observations, path):
+    """Every input the filter did not use, one row each (the warnings name the first 20 of each
+    kind): kind, file, line, station_id and, for a gauge at the place of an earlier one, that
+    gauge's line. Returns the number of rows."""
+    fields = summary.GetFieldData()
+    stations = observations.GetColumnByName("station_id")
+    earlier = fields.GetArray("DuplicateOfGaugeIds")
+    written = 0
+    with open(path, "w", newline="") as f:
+        out = csv.writer(f)
+        out.writerow(["kind", "file", "line", "station_id", "note"])
+        for name, kind, of_rows in UNUSED_LISTS:
+            ids = fields.GetArray(name)
+            for k in range(ids.GetNumberOfTuples() if ids else 0):
+                i = int(ids.GetValue(k))
+                if of_rows:
+                    out.writerow([kind, files.observations, files.row_line(i) or "", stations.GetValue(i), ""])
+                else:
+                    note = ""
+                    if name == "DuplicateGaugeIds" and earlier:
+                        note = f"same place as line {files.gauge_lines[int(earlier.GetValue(k))]}"
+                    out.writerow([kind, files.stations, files.gauge_lines[i], station_ids[i], note])
+                written += 1
+    return written
 
 
 def tiles_by_gauge(tiles):
@@ -379,7 +437,7 @@ def write_weights(per_gauge, gauges, path):
             lon, lat, _ = gauges.GetPoint(g)
             e = per_gauge[g]
             out.writerow([ids.GetValue(g), names.GetValue(g), lon, lat, f"{e['weight']:.15g}",
-                          f"{e['area'] / 1e6:.4f}", e["value"]])
+                          f"{e['area'] / 1e6:.15g}", f"{e['value']:.15g}"])
 
 
 def polygon_rings(data):
@@ -419,6 +477,22 @@ def catchment_rings(data):
     return rings
 
 
+def near(lon, reference):
+    """lon moved by whole turns to within 180 degrees of reference."""
+    return lon - 360.0 * round((lon - reference) / 360.0)
+
+
+def unwrapped(ring, reference):
+    """A ring's vertices with their longitudes moved by whole turns so that the first lies within
+    180 degrees of reference and each other within 180 degrees of the one before: a ring across the
+    180th meridian (179.5 then -179.5) stays one small ring instead of one around the globe."""
+    result, last = [], reference
+    for lon, lat in ring:
+        last = near(lon, last)
+        result.append((last, lat))
+    return result
+
+
 def map_extent(rings, points, margin=0.05):
     """(lon_min, lon_max, lat_min, lat_max) of the rings and the points, each side moved out by
     margin times the larger of the two spans, so that the catchment and the gauges that carry
@@ -429,6 +503,21 @@ def map_extent(rings, points, margin=0.05):
     return min(lons) - pad, max(lons) + pad, min(lats) - pad, max(lats) + pad
 
 
+def map_layout(outline, per_gauge, points):
+    """What the map draws, in longitudes near the catchment's first vertex (whole turns apart, so
+    that a catchment across the 180th meridian, or written in 0..360 while the tiles come in
+    -180..180, is drawn in one piece): (outline, per_gauge with its rings moved, the gauges'
+    longitudes, their latitudes, map_extent of the outline and the weighted gauges). points: every
+    gauge's (lon, lat)."""
+    reference = outline[0][0][0] if outline else 0.0
+    outline = [unwrapped(ring, reference) for ring in outline]
+    per_gauge = {g: dict(e, rings=[unwrapped(ring, reference) for ring in e["rings"]])
+                 for g, e in per_gauge.items()}
+    lon = [near(p[0], reference) for p in points]
+    lat = [p[1] for p in points]
+    return outline, per_gauge, lon, lat, map_extent(outline, [(lon[g], lat[g]) for g in per_gauge])
+
+
 def plot_map(per_gauge, gauges, outline, reporting, title, path):
     """outline: the catchment's rings (catchment_rings); the map shows them and the weighted
     gauges (map_extent). A month where no gauge reported has no tiles: the map shows the outline
@@ -437,8 +526,11 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path):
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    import matplotlib.ticker
     from matplotlib.collections import PolyCollection
 
+    outline, per_gauge, lon, lat, (lon_min, lon_max, lat_min, lat_max) = map_layout(
+        outline, per_gauge, [gauges.GetPoint(i)[:2] for i in range(gauges.GetNumberOfPoints())])
     fig, ax = plt.subplots(figsize=(9, 6.5))
     # A tile of one piece is outlined in white; the pieces of a tile in several are drawn without
     # outlines, so that the seams between them do not look like tile boundaries.
@@ -456,17 +548,16 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path):
     for ring in outline:
         xs, ys = zip(*ring)
         ax.plot(xs + xs[:1], ys + ys[:1], color="black", linewidth=1.2)
-    lon = [gauges.GetPoint(i)[0] for i in range(gauges.GetNumberOfPoints())]
-    lat = [gauges.GetPoint(i)[1] for i in range(gauges.GetNumberOfPoints())]
     ax.scatter([lon[i] for i in range(len(lon)) if i not in reporting],
                [lat[i] for i in range(len(lat)) if i not in reporting],
                s=6, facecolors="none", edgecolors="grey", linewidths=0.5, label="gauge, no report")
     ax.scatter([lon[i] for i in reporting], [lat[i] for i in reporting], s=9, color="red",
                label="gauge, reported")
-    lon_min, lon_max, lat_min, lat_max = map_extent(outline, [gauges.GetPoint(g)[:2] for g in per_gauge])
     ax.set_xlim(lon_min, lon_max)
     ax.set_ylim(lat_min, lat_max)
     ax.set_aspect(1.0 / math.cos(math.radians((lat_min + lat_max) / 2)))  # degrees of equal length
+    # (longitudes beyond 180 after unwrapping are labelled as written: 181 as -179)
+    ax.xaxis.set_major_formatter(matplotlib.ticker.FuncFormatter(lambda x, _: f"{near(x, 0.0):g}"))
     ax.set_xlabel("longitude")
     ax.set_ylabel("latitude")
     ax.set_title(title)
@@ -532,14 +623,16 @@ def main(argv=None):
     if not 1 <= year or not 1 <= month <= 12:
         sys.exit(f"--month {args.month!r}: expected YYYY-MM")
 
+    # Tessera first: without VTK (another Python than Debian's) this says how to run the script.
+    vtkThiessenArealAverage = csv_input.import_tessera().vtkThiessenArealAverage
     from vtkmodules.vtkCommonCore import vtkCommand
     from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
-
-    vtkThiessenArealAverage = csv_input.import_tessera().vtkThiessenArealAverage
 
     csv_input.output_directory(args.out)
     started = time.time()
     gauges, gauge_lines = read_gauges(args.stations)
+    if not gauge_lines:
+        csv_input.fail(f"{args.stations}: no gauges (the file has no rows)")
     ids = gauges.GetPointData().GetAbstractArray("station_id")
     station_ids = [ids.GetValue(i) for i in range(ids.GetNumberOfValues())]
     # A station's observations go to the first gauge with its id (station_key), as in the filter.
@@ -547,7 +640,7 @@ def main(argv=None):
     for i, station in enumerate(station_ids):
         gauge_of.setdefault(station_key(station), i)
     observations, reporting, row_lines = read_observations(args.observations, gauge_of,
-                                                           min(station_ids, default=None))
+                                                           min(station_ids, default=None), args.stations)
     catchment, outline = read_catchment(args.catchment)
     # (the observations file's rows: the table also has a row for each month without any)
     print(f"read {gauges.GetNumberOfPoints()} gauges and {len(row_lines)} observations in "
@@ -561,8 +654,8 @@ def main(argv=None):
     progress = Progress("Thiessen areal means")
     progress_tag = average.AddObserver(vtkCommand.ProgressEvent, progress)
     started = time.time()
-    messages = FilterMessages(average, InputFiles(args.stations, gauge_lines, args.observations, row_lines,
-                                                  args.catchment), progress)
+    files = InputFiles(args.stations, gauge_lines, args.observations, row_lines, args.catchment)
+    messages = FilterMessages(average, files, progress)
     average.Update(1)
     summary = average.GetOutputDataObject(1)
     messages.check(summary is None or summary.GetNumberOfRows() == 0)
@@ -571,6 +664,7 @@ def main(argv=None):
     average.RemoveObserver(progress_tag)
     rows = write_summary(summary, os.path.join(args.out, "areal_mean.csv"))
     write_all_weights(average.GetOutputDataObject(2), os.path.join(args.out, "weights_all_months.csv"))
+    unused = write_unused(summary, files, station_ids, observations, os.path.join(args.out, "unused_inputs.csv"))
 
     t = decimal_time(year, month)
     average.UpdateTimeStep(t)
@@ -606,7 +700,8 @@ def main(argv=None):
     print(f"{year}-{month:02d}: areal mean {row[4]:.3f}, {row[2]} gauges reported, "
           f"{row[3]} weighted; weights sum to {sum(e['weight'] for e in per_gauge.values()):.12f}")
     print(f"wrote {args.out}/areal_mean.csv, weights_all_months.csv, weights_{tag}.csv, tiles_{tag}.vtp"
-          + ("" if args.no_plots else f", map_{tag}.png, areal_mean.png"))
+          + ("" if args.no_plots else f", map_{tag}.png, areal_mean.png")
+          + f", unused_inputs.csv ({unused} input(s) not used)")
 
 
 if __name__ == "__main__":

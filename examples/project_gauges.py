@@ -84,10 +84,10 @@ def main(argv=None):
                         help="map projection (default: automatic Albers equal-area)")
     parser.add_argument("--out", default="out", help="output directory (created if missing)")
     args = parser.parse_args(argv)
-    # Imported after parsing so that --help works without VTK on the path.
-    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
-
+    # Imported after parsing so that --help works without VTK on the path; Tessera first, so that
+    # without VTK (another Python than Debian's) this says how to run the script.
     vtkGeographicProjection = csv_input.import_tessera().vtkGeographicProjection
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
     csv_input.output_directory(args.out)
     gauges, lines = read_gauges(args.stations)

@@ -70,9 +70,9 @@ def main(argv=None):
     parser.add_argument("--closest-tangent", action="store_true", help="closest-tangent join rule")
     args = parser.parse_args(argv)
 
-    from vtkmodules.vtkIOXML import vtkXMLImageDataWriter, vtkXMLPolyDataWriter
-
+    # Tessera first: without VTK (another Python than Debian's) this says how to run the script.
     tessera = csv_input.import_tessera()
+    from vtkmodules.vtkIOXML import vtkXMLImageDataWriter, vtkXMLPolyDataWriter
     vtkGeographicProjection, vtkRidgeGrouping = tessera.vtkGeographicProjection, tessera.vtkRidgeGrouping
 
     csv_input.output_directory(args.out)

@@ -1127,11 +1127,21 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   }
 
   // Everything valid but unused is reported by id.
-  // A gauge by its station id, or by its point id when it has none (an empty id named nothing).
+  // A gauge by its station id, or by its point id when it has none (an empty id named nothing);
+  // by both when other gauges have its id ("A (gauge 4)": "A" alone would name them all).
+  std::vector<char> idShared(gaugeCount, 0);
+  for (const tessera::SharedStation& pair : rows->Match.SharedStations)
+  {
+    idShared[static_cast<std::size_t>(pair.FirstGauge)] = 1;
+    idShared[static_cast<std::size_t>(pair.Gauge)] = 1;
+  }
   auto idOf = [&](std::size_t g)
   {
-    return stationIds && !gaugeNames[g].empty() ? gaugeNames[g]
-                                                : "gauge " + std::to_string(g) + " (no station id)";
+    if (!stationIds || gaugeNames[g].empty())
+    {
+      return "gauge " + std::to_string(g) + " (no station id)";
+    }
+    return idShared[g] ? gaugeNames[g] + " (gauge " + std::to_string(g) + ")" : gaugeNames[g];
   };
   std::vector<std::int32_t> unobserved;
   for (std::size_t g = 0; g < gaugeCount; ++g)

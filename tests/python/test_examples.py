@@ -105,8 +105,8 @@ def test_the_colorado_main_job():
         weighted = [w for w in weights if float(w["weight"]) > 0.0]
         assert_that(len(weighted) == int(row["stations_weighted"]),
                     f"{len(weighted)} gauges with a weight, areal_mean.csv says {row['stations_weighted']}")
-        mean = sum(float(w["weight"]) * float(w["precip"]) for w in weighted)
-        assert_close(mean, float(row["areal_mean"]), 1e-6, "sum of weight x precip against areal_mean")
+        mean = math.fsum(float(w["weight"]) * float(w["precip"]) for w in weighted)
+        assert_close(mean, float(row["areal_mean"]), 1e-12, "sum of weight x precip against areal_mean (15 digits)")
 
         tiles = read_polydata(os.path.join(out, f"tiles_{tag}.vtp"))
         cd = tiles.GetCellData()
@@ -142,6 +142,21 @@ def test_the_colorado_main_job():
         for name in (f"map_{tag}.png", "areal_mean.png"):
             assert_that(is_png(os.path.join(out, name)), f"{name} is not a PNG file")
         assert_that("1236 months" in stdout, f"summary line: {stdout}")
+        # unused_inputs.csv lists every gauge with observed values that no month weighs (the
+        # warning names only 20), by its stations file line; from the raw files, independently.
+        stations_file = os.path.join(EXAMPLE_DATA, "colorado_stations.csv")
+        line_of = {row["station_id"].strip(): k + 2 for k, row in enumerate(read_csv(stations_file))}
+        observed = {row["station_id"].strip() for row in read_csv(os.path.join(EXAMPLE_DATA, "colorado_monthly_precip.csv"))
+                    if row["precip"].strip() and row["station_id"].strip() in line_of}
+        ever = {w["station_id"] for rows_of_month in per_month.values() for w in rows_of_month}
+        unused = read_csv(os.path.join(out, "unused_inputs.csv"))
+        listed = {u["station_id"] for u in unused if u["kind"] == "gauge whose tile never reaches the catchment"}
+        assert_that(listed == observed - ever and len(listed) > 20,
+                    f"unused_inputs.csv lists {sorted(listed)}, the data gives {sorted(observed - ever)}")
+        for u in unused:
+            assert_that(u["file"] == stations_file and int(u["line"]) == line_of[u["station_id"]],
+                        f"unused_inputs.csv row {u}")
+        assert_that(f"unused_inputs.csv ({len(unused)} input(s) not used)" in stdout, f"summary line: {stdout}")
 
 
 def test_missing_values_keep_their_months():
@@ -161,7 +176,7 @@ def test_missing_values_keep_their_months():
         assert_that("4 observation(s) without a value" in stderr, f"missing values not reported: {stderr}")
         assert_that("negative" not in stderr, f"no negative value to report: {stderr}")
         got = [(r["month"], r["stations_used"], r["areal_mean"]) for r in rows]
-        assert_that(got == [("1", "0", ""), ("2", "0", ""), ("3", "1", "2.500000")],
+        assert_that(got == [("1", "0", ""), ("2", "0", ""), ("3", "1", "2.5")],
                     f"months with missing values: {got}")
         # Months without any row between the first and the last (1950-12 to 1951-02 here) are
         # months where no gauge reported: they keep their rows.
@@ -170,8 +185,8 @@ def test_missing_values_keep_their_months():
         assert_that("3 month(s) between 1950-11 and 1951-03 have no row of a gauge's station" in stderr,
                     f"gaps not reported: {stderr}")
         got = [(r["year"], r["month"], r["stations_used"], r["areal_mean"]) for r in rows]
-        assert_that(got == [("1950", "11", "1", "1.500000"), ("1950", "12", "0", ""), ("1951", "1", "0", ""),
-                            ("1951", "2", "0", ""), ("1951", "3", "1", "2.500000")], f"every month listed: {got}")
+        assert_that(got == [("1950", "11", "1", "1.5"), ("1950", "12", "0", ""), ("1951", "1", "0", ""),
+                            ("1951", "2", "0", ""), ("1951", "3", "1", "2.5")], f"every month listed: {got}")
         assert_that("1951-01: areal mean nan, 0 gauges reported" in stdout, f"the chosen empty month: {stdout}")
         # A month whose only row names a station that is not in the stations file (the filter
         # makes no step of it) is a month where no gauge reported, and the first row's station
@@ -179,7 +194,7 @@ def test_missing_values_keep_their_months():
         stdout, stderr, rows = run_on("station_id,year,month,precip\nNOSUCH,1950,1,1.0\n050848,1950,2,2.5\n",
                                       "1950-02")
         got = [(r["year"], r["month"], r["stations_used"], r["areal_mean"]) for r in rows]
-        assert_that(got == [("1950", "1", "0", ""), ("1950", "2", "1", "2.500000")],
+        assert_that(got == [("1950", "1", "0", ""), ("1950", "2", "1", "2.5")],
                     f"a month of an unknown station only: {got}")
         # The filter's row 0 is named as the file's line 2.
         assert_that("NOSUCH (1 row: line 2)" in stderr, f"the unknown station not reported: {stderr}")
@@ -462,6 +477,65 @@ def assert_without_vtk_decoration(stderr, what):
                         f"{what}: a message on the progress line {line!r}")
 
 
+def test_small_values_and_a_catchment_across_the_antimeridian():
+    # Means of 1e-5 and 1e-8 (data in metres) keep their digits in areal_mean.csv, and the map of a
+    # catchment across the 180th meridian, its gauges on both sides, spans the catchment, not the
+    # globe: its outline is one small ring near 180.
+    example = import_example()
+    import json
+
+    with tempfile.TemporaryDirectory() as out:
+        gauges = {"A": (179.6, -16.2), "B": (179.7, -16.8), "C": (-179.9, -16.7), "D": (-179.6, -16.4)}
+        stations = os.path.join(out, "stations.csv")
+        write_stations(stations, gauges)
+        observations = write(out, "obs.csv", "station_id,year,month,precip\n" + "".join(
+            f"{s},2000,{m},{v * 10.0 ** -(3 * m + 2)}\n" for m in (1, 2) for s, v in zip("ABCD", (1, 2, 3, 4))))
+        catchment = write(out, "across.geojson", json.dumps({"type": "Polygon", "coordinates": [[
+            [179.5, -17], [-179.5, -17], [-179.5, -16], [179.5, -16], [179.5, -17]]]}))
+        run_colorado(out, stations=stations, observations=observations, catchment=catchment, month="2000-01",
+                     what="across the antimeridian")
+        means = {int(r["month"]): float(r["areal_mean"]) for r in read_csv(os.path.join(out, "areal_mean.csv"))}
+        per_month = {}
+        for w in read_csv(os.path.join(out, "weights_all_months.csv")):
+            per_month.setdefault(int(w["month"]), []).append(float(w["weight"]) * float(w["precip"]))
+        for month, products in per_month.items():
+            assert_close(math.fsum(products), means[month], 1e-12, f"month {month}: areal mean of small values")
+        assert_that(0 < means[2] < 1e-7, f"the second month's mean: {means[2]}")
+        assert_that(is_png(os.path.join(out, "map_2000_01.png")), "map_2000_01.png is not a PNG file")
+        tiles = read_polydata(os.path.join(out, "tiles_2000_01.vtp"))
+        per_gauge = example.tiles_by_gauge(tiles)
+        _, outline = example.read_catchment(catchment)
+        points = list(gauges.values())
+        moved, moved_tiles, lon, _, (lon_min, lon_max, _, _) = example.map_layout(outline, per_gauge, points)
+        assert_that(lon_max - lon_min < 1.5 and lon_min < 180.0 < lon_max,
+                    f"the map spans longitudes {lon_min} .. {lon_max}")
+        for ring in moved + [r for e in moved_tiles.values() for r in e["rings"]]:
+            xs = [p[0] for p in ring]
+            assert_that(max(xs) - min(xs) <= 1.0 + 1e-9, f"a ring spans {min(xs)} .. {max(xs)}")
+        assert_that(all(lon_min < x < lon_max for x in lon), f"gauges at {lon}, map {lon_min} .. {lon_max}")
+
+
+def test_observations_of_no_gauge_end_the_run():
+    # Ids that match no gauge at all (a prefix the stations file has and the observations do not)
+    # end the run naming both files, instead of a run of months without a mean; so does a stations
+    # file without gauges.
+    with tempfile.TemporaryDirectory() as out:
+        catchment, stations, observations = write_lake_basin(out)
+        other = write(out, "other_ids.csv", "station_id,lon,lat\nNZ-N1,175.6,-39.1\nNZ-N2,176.4,-39.1\n")
+        _, stderr = run_colorado(out, stations=other, observations=observations, catchment=catchment, status=1,
+                                 plots=False, what="ids of no gauge")
+        messages = stderr_messages(stderr)
+        assert_that(len(messages) == 1 and messages[0].startswith(f"{observations}: none of its ")
+                    and other in messages[0] and "NZ-N1" in messages[0] and "Traceback" not in stderr,
+                    f"ids of no gauge: {stderr}")
+        assert_that(not os.path.exists(os.path.join(out, "areal_mean.csv")), "areal_mean.csv written")
+        empty = write(out, "empty.csv", "station_id,lon,lat\n")
+        _, stderr = run_colorado(out, stations=empty, observations=observations, catchment=catchment, status=1,
+                                 plots=False, what="no gauges")
+        messages = stderr_messages(stderr)
+        assert_that(messages == [f"{empty}: no gauges (the file has no rows)"], f"no gauges: {stderr}")
+
+
 def test_the_filters_errors_name_the_file_and_line():
     # An input the script passes but vtkThiessenArealAverage rejects ends the run with one line
     # naming the file (and, for a gauge, the stations file's line), not VTK's log and executive dump.
@@ -530,6 +604,9 @@ def test_the_filters_warnings_are_lines_of_their_own():
         unused = [m for m in messages if "never used" in m]
         assert_that(len(unused) == 1 and unused[0].startswith(f"{stations}: 4 gauge(s) have no observed value"),
                     f"the never-used gauges: {messages}")
+        # The second N1 (line 8) is never used, the first is: a shared id is named with its gauge.
+        assert_that("N1 (gauge 6: line 8)" in unused[0] and "N1," not in unused[0] and not unused[0].endswith("N1"),
+                    f"the never-used N1 is not told from the used one: {unused[0]}")
 
 
 def test_rows_of_empty_fields_are_skipped():
@@ -557,13 +634,18 @@ def test_rows_of_empty_fields_are_skipped():
             stdout, stderr = run_colorado(out, catchment=catchment, month="2001-01", plots=False, what=name,
                                           **files)
             with open(os.path.join(out, "areal_mean.csv")) as f:
-                outputs[name] = (f.read(), stdout.replace(out, "OUT"), stderr)
+                # (the blank run's unknown station XX is one more unused input)
+                outputs[name] = (f.read(), re.sub(r"\(\d+ input\(s\) not used\)", "", stdout.replace(out, "OUT")),
+                                 stderr)
         assert_that(outputs["clean"][:2] == outputs["blank"][:2],
                     f"blank rows change the run: {outputs['clean'][:2]} against {outputs['blank'][:2]}")
         stderr = outputs["blank"][2]
         assert_that("read 6 gauges and 8 observations" in stderr, f"the rows read: {stderr}")
         # The unknown station's row is the file's line 12, lines 3-5 being blank.
         assert_that("XX (1 row: line 12)" in stderr, f"the unknown station's line: {stderr}")
+        unused = read_csv(os.path.join(directory, "blank", "unused_inputs.csv"))
+        assert_that([(u["station_id"], u["line"]) for u in unused if u["station_id"] == "XX"] == [("XX", "12")],
+                    f"unused_inputs.csv: {unused}")
 
 
 def test_the_messages_map_to_files_and_lines():
@@ -753,6 +835,17 @@ def test_without_tessera_on_the_path_the_scripts_say_how_to_run():
                           timeout=60)
     assert_that(done.returncode == 1 and "PYTHONPATH=build/python" in done.stderr
                 and "Traceback" not in done.stderr, f"without PYTHONPATH: {done.returncode} {done.stderr}")
+    # A Python without VTK (another than Debian's, first on PATH): a vtkmodules that cannot be
+    # imported stands in for it. Every script says how to run it, none ends in a traceback.
+    with tempfile.TemporaryDirectory() as fake:
+        os.makedirs(os.path.join(fake, "vtkmodules"))
+        write(os.path.join(fake, "vtkmodules"), "__init__.py", "raise ImportError('No module named vtkmodules')\n")
+        environment = dict(os.environ, PYTHONPATH=os.pathsep.join([fake, os.environ.get("PYTHONPATH", "")]))
+        for script in ("colorado_areal_precipitation.py", "project_gauges.py", "ridge_grouping.py"):
+            done = subprocess.run([sys.executable, os.path.join(EXAMPLES, script), "--out", os.path.join(fake, "out")],
+                                  capture_output=True, text=True, env=environment, timeout=60)
+            assert_that(done.returncode == 1 and "run with Debian's /usr/bin/python3" in done.stderr
+                        and "Traceback" not in done.stderr, f"{script} without VTK: {done.returncode} {done.stderr}")
 
 
 if __name__ == "__main__":
@@ -761,6 +854,8 @@ if __name__ == "__main__":
          test_a_month_without_reports_still_gets_its_map,
          test_the_time_series_breaks_at_months_without_a_mean,
          test_ids_without_their_leading_zeros_match_as_in_the_filter,
+         test_small_values_and_a_catchment_across_the_antimeridian,
+         test_observations_of_no_gauge_end_the_run,
          test_the_filters_errors_name_the_file_and_line,
          test_the_filters_warnings_are_lines_of_their_own,
          test_rows_of_empty_fields_are_skipped,
