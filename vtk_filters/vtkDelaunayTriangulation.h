@@ -76,7 +76,9 @@ public:
    * Padding of the automatic window (default 0.1 of the larger bounding-box side; as for
    * vtkDirichletTessellation, points without extent get the unit square centred on them). Used
    * only without WindowBounds and constraints; a negative or NaN padding is then an error at the
-   * update.
+   * update. It changes no face: the automatic window holds every point at any padding (the
+   * triangulation depends on the window only through the points it holds), so ParaView's panel
+   * does not show it.
    */
   vtkSetMacro(Padding, double);
   vtkGetMacro(Padding, double);

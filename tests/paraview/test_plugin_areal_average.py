@@ -75,6 +75,16 @@ if august.keys() != tiled.keys() or any(abs(august[g] - w) > 1e-14 for g, w in t
     failures.append(f"output 2's {len(august)} weights for 1963-08 differ from the tiles' {len(tiled)}")
 if len({times.GetValue(r) for r in range(table.GetNumberOfRows())}) != 1236:
     failures.append("output 2 does not list all 1236 months")
+# Removing the optional Observations input (the GUI's "None") disconnects it: the gauges' own
+# value array is then the one step. (The property once kept the table connected.) Without a value
+# array the gauges give no step at all: the tiles carry no Weight, and no time is advertised.
+average.Observations = None
+average.UpdatePipelineInformation()
+average.UpdatePipeline()
+if average.GetClientSideObject().GetNumberOfInputConnections(2) != 0:
+    failures.append("the Observations input is still connected after it was set to None")
+if len(average.TimestepValues) != 0:
+    failures.append(f"{len(average.TimestepValues)} time steps advertised without observations")
 if failures:
     print("FAIL:\n" + "\n".join(failures))
     sys.exit(1)

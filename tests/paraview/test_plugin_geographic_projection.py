@@ -41,6 +41,11 @@ for i in range(data.GetNumberOfPoints()):
     if abs(y / 1000.0 - lats[i] * 110.9) > 60.0:
         failures.append(f"point {i}: northing {y} far from latitude {lats[i]}")
 
+# The panel's labels: ParaView splits a name at capitals (UTMZone would read "U TMZone").
+for name, label in (("UTMZone", "UTM Zone"), ("UTMNorth", "UTM North")):
+    xml_label = projected.GetProperty(name).GetXMLLabel()
+    if xml_label != label:
+        failures.append(f"{name} is labelled {xml_label!r}, not {label!r}")
 if failures:
     print("FAIL:\n" + "\n".join(failures[:20]))
     sys.exit(1)
