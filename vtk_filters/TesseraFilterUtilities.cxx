@@ -245,7 +245,24 @@ tessera::Window ChooseWindow(const double bounds[4],
       naming.All = "WindowBounds and the " + std::to_string(userCount) + " window constraint" +
         (userCount == 1 ? "" : "s");
     }
-    return Representable(tessera::Window(halfPlanes, naming), needArea);
+    try
+    {
+      return Representable(tessera::Window(halfPlanes, naming), needArea);
+    }
+    catch (const tessera::InputError& error)
+    {
+      // A constraint meant to cut a corner off the automatic window (ParaView's panel shows
+      // WindowBounds empty by default) makes the constraints the whole window.
+      const std::string text = error.what();
+      if (haveBounds || text.rfind("window is unbounded", 0) != 0)
+      {
+        throw;
+      }
+      throw tessera::InputError(text +
+        " (with WindowBounds empty the window is the constraints alone, not the points' padded "
+        "bounding box: set WindowBounds for the constraints to cut, or add constraints that close "
+        "the window)");
+    }
   }
   if (!(padding >= 0.0) || !std::isfinite(padding))
   {
@@ -1067,7 +1084,7 @@ std::string UnusedPointsWarning(std::size_t rejected, std::size_t duplicates, co
   }
   std::ostringstream text;
   text << rejected << " point(s) outside the window and " << duplicates
-       << " exact duplicate(s) were not " << verb
+       << " exact duplicate(s) (the same x and y; z is not used) were not " << verb
        << "; their ids are in the field data arrays RejectedPointIds, DuplicatePointIds and "
           "DuplicateOfPointIds.";
   return text.str();

@@ -268,9 +268,12 @@ int vtkWindowClip::RequestData(vtkInformation*,
       vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
                         renamed, "cell-data", "the clipped tiles", "cell"));
     }
+    // Both lists always (empty or not), as the other filters write theirs: a script reads them
+    // without testing for a missing array.
+    output->GetFieldData()->AddArray(empty);
+    output->GetFieldData()->AddArray(skipped);
     if (empty->GetNumberOfValues() > 0)
     {
-      output->GetFieldData()->AddArray(empty);
       vtkWarningMacro(<< empty->GetNumberOfValues()
                       << " polygon(s) of input 0 lie in the window but have no area to clip "
                          "(collinear corners, or thinner than the clip's rounding), so they give "
@@ -280,7 +283,6 @@ int vtkWindowClip::RequestData(vtkInformation*,
     }
     if (skipped->GetNumberOfValues() > 0)
     {
-      output->GetFieldData()->AddArray(skipped);
       vtkWarningMacro(<< skipped->GetNumberOfValues()
                       << " cell(s) of input 0 are not polygons of 3 or more points, triangles or "
                          "quads (the first is cell "

@@ -32,12 +32,13 @@
  * clipped: a warning counts them and the output's field data array `SkippedCellIds` (vtkIdType)
  * lists them. Polygons that lie in the window but have no area to clip (collinear corners, or a
  * sliver thinner than the clip's rounding) give no piece either, and are counted in a warning and
- * listed in `EmptyTileIds`. A tile whose area overflows (coordinates of some 1e154 or more) is an
- * error naming it. Areas use exact orientation tests and compensated sums, so the clipped areas of
- * a tiling sum to the window's area to round-off. The tiles' point data is not passed (the pieces'
- * vertices are new points; a warning names its arrays). Only x and y are used, in one plane: inputs
- * whose `TesseraProjection` records (vtkGeographicProjection) differ are an error naming both, and
- * a record on one input only gives a warning.
+ * listed in `EmptyTileIds` (both arrays are always written, empty when nothing is listed). A tile
+ * whose area overflows (coordinates of some 1e154 or more) is an error naming it. Areas use exact
+ * orientation tests and compensated sums, so the clipped areas of a tiling sum to the window's area
+ * to round-off. The tiles' point data is not passed (the pieces' vertices are new points; a warning
+ * names its arrays). Only x and y are used, in one plane: inputs whose `TesseraProjection` records
+ * (vtkGeographicProjection) differ are an error naming both, and a record on one input only gives a
+ * warning.
  */
 
 #ifndef vtkWindowClip_h

@@ -7,6 +7,7 @@ import sys
 from fractions import Fraction
 
 import numpy as np
+from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkFiltersCore import vtkDelaunay2D
 
 from tessera import vtkDelaunayTriangulation, vtkDirichletTessellation
@@ -182,6 +183,16 @@ def test_unused_points_are_reported_with_ids():
     assert_that(rejected == [2], f"point 2 outside the window: {rejected}")
     assert_that(pairs == [(3, 0), (5, 1)], f"duplicates reported with their originals: {pairs}")
     assert_that(f.GetOutput(0).GetNumberOfCells() == 3, "three distinct points inside")
+    # Points that differ in z alone are duplicates (z is not used), and the warning says why.
+    data = make_points([(0.2, 0.2), (0.8, 0.3), (0.5, 0.9)])
+    data.GetPoints().InsertNextPoint(0.2, 0.2, 7.0)
+    g = vtkDirichletTessellation()
+    said = messages_of(g, vtkCommand.WarningEvent)
+    g.SetInputData(data)
+    g.Update()
+    assert_that(id_values(g.GetOutput(0).GetFieldData(), "DuplicatePointIds") == [3]
+                and len(said) == 1 and "1 exact duplicate(s) (the same x and y; z is not used)" in said[0],
+                f"a point differing in z only: {said}")
 
 
 def id_values(field_data, name):
@@ -613,6 +624,8 @@ def test_empty_window_bounds_warn_and_leave_the_automatic_window():
         g.Update()
         assert_that(len(said) == 1 and "so it is ignored: the window is the window constraints alone" in said[0]
                     and len(errors) == 1 and "window is unbounded" in errors[0], f"{what}: {said} {errors}")
+        # The error says what to do: one constraint meant to cut the automatic window is the window.
+        assert_that("set WindowBounds for the constraints to cut" in errors[0], f"{what}: {errors}")
     d = vtkDelaunayTriangulation()
     assert_that(d.GetNumberOfWindowConstraints() == 0, "no constraint yet")
     d.AddWindowConstraint(1.0, 0.0, -2.0)

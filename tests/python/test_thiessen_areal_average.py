@@ -440,8 +440,10 @@ def test_window_clip_names_a_non_convex_tile():
     cd = clip.GetOutput().GetCellData()
     areas = [cd.GetArray("ClippedArea").GetValue(c) for c in range(clip.GetOutput().GetNumberOfCells())]
     assert_that(len(messages) == 1 and areas == [1.0, 1.0], f"convex tiles clip: {areas}")
-    skipped = clip.GetOutput().GetFieldData().GetArray("SkippedCellIds")
-    assert_that(skipped is None, "no cell skipped")
+    fields = clip.GetOutput().GetFieldData()
+    for name in ("SkippedCellIds", "EmptyTileIds"):
+        listed = fields.GetArray(name)
+        assert_that(listed is not None and listed.GetNumberOfTuples() == 0, f"{name}: written, and empty")
 
 
 def test_window_clip_reports_cells_that_are_not_polygons():
