@@ -330,12 +330,25 @@ std::vector<Piece> PiecesOf(vtkDataObject* input, vtkDataObject* output)
   return pieces;
 }
 
-/// The projection for all pieces: the inverse's from the input's record (the whole's, or the one
-/// its blocks share), else from the settings and all the pieces' points together.
+/// The projection for all pieces: the filter's ProjectionRecord when set; else the inverse's from
+/// the input's record (the whole's, or the one its blocks share), else from the settings and all
+/// the pieces' points together.
 tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
   vtkDataObject* input,
   const std::vector<Piece>& pieces)
 {
+  const std::string own = self->GetProjectionRecord();
+  if (!own.empty())
+  {
+    try
+    {
+      return tessera::ProjectionParameters::FromString(own);
+    }
+    catch (const tessera::InputError& e)
+    {
+      throw tessera::InputError(std::string("ProjectionRecord '") + own + "': " + e.what());
+    }
+  }
   if (self->GetInverse())
   {
     // The record of the whole, or else the one all its blocks carry.
@@ -595,4 +608,5 @@ void vtkGeographicProjection::PrintSelf(ostream& os, vtkIndent indent)
      << this->StandardParallels[1] << "\n";
   os << indent << "MaximumEdgeLength: " << this->MaximumEdgeLength << "\n";
   os << indent << "Inverse: " << this->Inverse << "\n";
+  os << indent << "ProjectionRecord: " << this->ProjectionRecord << "\n";
 }

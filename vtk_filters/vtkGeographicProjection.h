@@ -37,6 +37,9 @@
  * (add a vertex in between for the straight reading). Other point sets are projected point by
  * point.
  *
+ * ProjectionRecord, when set, is the projection, forward or inverse: the record another data set's
+ * projection wrote, so that both are projected alike (as vtkWindowClip requires).
+ *
  * Field data written (array names are API):
  * - `TesseraProjection` (vtkStringArray, one value): the projection and its parameters as
  *   "projection=AlbersEqualArea lon0=... lat0=... lat1=... lat2=... zone=... north=...",
@@ -56,6 +59,8 @@
 
 #include "tesseraFiltersModule.h" // For export macro
 #include "vtkPointSetAlgorithm.h"
+
+#include <string> // For the record
 
 class TESSERAFILTERS_EXPORT vtkGeographicProjection : public vtkPointSetAlgorithm
 {
@@ -154,6 +159,19 @@ public:
   vtkBooleanMacro(Inverse, bool);
   ///@}
 
+  ///@{
+  /**
+   * A `TesseraProjection` record ("projection=... lon0=... ...", as this filter writes it) to
+   * project with, forward or inverse; empty (default): Projection and the parameters above (and,
+   * inverse, the input's record). Set, it overrides them all: a second data set projected with the
+   * first's record gets the very same projection, as vtkWindowClip requires of its two inputs
+   * (two automatic projections are fitted each to its own data). A record that cannot be read is
+   * an error naming it, at the update.
+   */
+  vtkSetStdStringFromCharMacro(ProjectionRecord);
+  vtkGetCharFromStdStringMacro(ProjectionRecord);
+  ///@}
+
 protected:
   vtkGeographicProjection();
   ~vtkGeographicProjection() override = default;
@@ -175,6 +193,7 @@ protected:
   double StandardParallels[2] = { 30.0, 60.0 };
   double MaximumEdgeLength = 0.1;
   bool Inverse = false;
+  std::string ProjectionRecord;
 
 private:
   vtkGeographicProjection(const vtkGeographicProjection&) = delete;

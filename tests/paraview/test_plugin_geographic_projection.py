@@ -41,6 +41,16 @@ for i in range(data.GetNumberOfPoints()):
     if abs(y / 1000.0 - lats[i] * 110.9) > 60.0:
         failures.append(f"point {i}: northing {y} far from latitude {lats[i]}")
 
+# The panel shows the UTM settings for UTM only, the centre and parallels with ParametersFromData
+# off only; ProjectionRecord is there to project a second data set alike.
+for name, shown_by in (("UTMZone", "Projection"), ("UTMNorth", "Projection"), ("CentralLongitude", "ParametersFromData"),
+                       ("CentralLatitude", "ParametersFromData"), ("StandardParallels", "ParametersFromData")):
+    hints = projected.GetProperty(name).GetHints()
+    decorator = hints.FindNestedElementByName("PropertyWidgetDecorator") if hints else None
+    if decorator is None or decorator.GetAttribute("property") != shown_by:
+        failures.append(f"{name} is not shown by {shown_by}")
+if projected.GetProperty("ProjectionRecord") is None:
+    failures.append("no ProjectionRecord property")
 # The panel's labels: ParaView splits a name at capitals (UTMZone would read "U TMZone").
 for name, label in (("UTMZone", "UTM Zone"), ("UTMNorth", "UTM North")):
     xml_label = projected.GetProperty(name).GetXMLLabel()

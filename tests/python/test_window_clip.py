@@ -329,6 +329,31 @@ def test_tiles_and_window_must_share_their_projection():
     output, errors, warnings = clip_by(tiles_of(same), projected(catchment, False))
     assert_that(not errors and not warnings and output.GetNumberOfCells() == 4, f"one projection: {errors} {warnings}")
     assert_that(projection_record(output) == projection_record(same), f"the output's record: {projection_record(output)}")
+    # The gauges' automatic projection handed to the catchment's filter as its ProjectionRecord:
+    # the same projection (the record's own bits), so the clip goes through; the gauges projected
+    # with their own record land on the same bits as by their automatic projection.
+    automatic = projected(gauges, True)
+    record = projection_record(automatic)
+    f = vtkGeographicProjection()
+    f.SetInputData(catchment)
+    f.SetProjectionRecord(record)
+    f.Update()
+    output, errors, warnings = clip_by(tiles_of(automatic), f.GetOutput())
+    assert_that(not errors and not warnings and output.GetNumberOfCells() == 4
+                and projection_record(f.GetOutput()) == record, f"one record for both: {errors} {warnings}")
+    again = vtkGeographicProjection()  # the gauges again, with the record: the very same points
+    again.SetInputData(gauges)
+    again.SetProjectionRecord(record)
+    again.Update()
+    moved = [again.GetOutput().GetPoint(i) for i in range(4)]
+    fitted = [automatic.GetPoint(i) for i in range(4)]
+    assert_that(moved == fitted, f"the record's projection: {moved} vs {fitted}")
+    # A record that cannot be read is an error naming it, with an empty output.
+    errors = messages_of(f, vtkCommand.ErrorEvent)
+    f.SetProjectionRecord("projection=Mercator lon0=1")
+    f.Update()
+    assert_that(len(errors) == 1 and "ProjectionRecord 'projection=Mercator lon0=1'" in errors[0]
+                and f.GetOutput().GetNumberOfPoints() == 0, f"a bad record: {errors}")
     output, errors, warnings = clip_by(tiles_of(gauges), projected(catchment, False))
     assert_that(not errors and len(warnings) == 1 and "the window (input 1) carries" in warnings[0]
                 and "the tiles (input 0) none" in warnings[0], f"one record: {errors} {warnings}")
