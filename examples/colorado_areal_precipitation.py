@@ -94,14 +94,15 @@ def read_gauges(path):
     return gauges, lines
 
 
-def read_observations(path, gauge_of, filler, stations_path):
+def read_observations(path, gauge_of, filler, stations_path, missing_values=()):
     """The long-format monthly table as a vtkTable (station_id, time, precip), the set of
     reporting gauges of every (year, month), as gauge indices, and the file's line of each record
     read (table row r, counted from 0, is the record of line lines[r]; the rows after them are the
     filler rows of months without a row of a gauge's station). gauge_of: the gauge that a
     station's observations go to, by station_key() (ids are compared as the filter compares them;
     a month none of whose rows names a gauge's station is a month where no gauge reported).
-    filler: a gauge's station id, given to the rows of those months. Ends the script when no row
+    filler: a gauge's station id, given to the rows of those months. missing_values: numbers that
+    mean missing (--missing-value, such as -9999), read as a missing value. Ends the script when no row
     names a gauge's station (stations_path: the stations file, for the message): ids that do not
     match at all (a prefix, another numbering) would otherwise give months without a mean."""
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
@@ -113,6 +114,7 @@ def read_observations(path, gauge_of, filler, stations_path):
     times.SetName("time")
     values.SetName("precip")
     unrecorded = 0
+    coded = 0  # values given with --missing-value
     negative = []  # the lines of negative values
     months = set()  # (year, month) of every row
     present = set()  # (year, month) of every row of a gauge's station
@@ -134,6 +136,8 @@ def read_observations(path, gauge_of, filler, stations_path):
         value = math.nan
         if csv_input.is_missing(row.get("precip")):
             unrecorded += 1
+        elif csv_input.number(row, "precip", path, line) in missing_values:
+            coded += 1
         else:
             value = csv_input.number(row, "precip", path, line)
             if value < 0:
@@ -148,6 +152,9 @@ def read_observations(path, gauge_of, filler, stations_path):
         csv_input.fail(f"{path}: none of its {len(lines)} rows names a station of {stations_path} "
                        f"(ids here: {', '.join(seen[:5])}{', ...' if len(seen) > 5 else ''}; ids there: "
                        f"{', '.join(sorted(gauge_of)[:5])}{', ...' if len(gauge_of) > 5 else ''})")
+    if coded:
+        print(f"{path}: {coded} observation(s) with a --missing-value value "
+              f"({', '.join(f'{v:g}' for v in sorted(missing_values))}) count as missing", file=sys.stderr)
     if unrecorded:
         print(f"{path}: {unrecorded} observation(s) without a value ({csv_input.MISSING_TEXT}) "
               "count as missing", file=sys.stderr)
@@ -157,7 +164,7 @@ def read_observations(path, gauge_of, filler, stations_path):
         shown = ", ".join(str(line) for line in negative[:20])
         more = f" and {len(negative) - 20} more" if len(negative) > 20 else ""
         print(f"{path}: {len(negative)} observation(s) have a negative precipitation, used as given "
-              f"(write a missing value as NA if that is what they mean): line(s) {shown}{more}",
+              f"(write a missing value as NA, or give --missing-value, if that is what they mean): line(s) {shown}{more}",
               file=sys.stderr)
     # A month between the first and the last without a row of any gauge's station is a month where
     # no gauge reported: a row with a missing value (for a gauge's station: the filter makes no
@@ -193,6 +200,12 @@ def read_catchment(path):
                        "shapefile polygon in lon/lat)")
     if not os.path.isfile(path):
         csv_input.fail(f"{path}: no such catchment file")
+    # A shapefile is several files: GDAL's own message for a missing one is a raw log line.
+    stem, extension = os.path.splitext(path)
+    if extension.lower() == ".shp":
+        if not any(os.path.isfile(stem + e) for e in (".shx", ".SHX")):
+            csv_input.fail(f"{path}: the shapefile's {stem}.shx beside it is missing (a shapefile is a .shp "
+                           "with its .shx, .dbf and often .prj; copy them all)")
     reader = vtkGDALVectorReader()
     errors = []
     reader.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: errors.append(event))
@@ -616,6 +629,8 @@ def main(argv=None):
                              f"station_id, year, month, precip ({csv_input.MISSING_TEXT} = missing)")
     parser.add_argument("--catchment", default=os.path.join(DATA, "colorado_boundary.geojson"),
                         help="catchment polygon (GeoJSON or shapefile, lon/lat)")
+    parser.add_argument("--missing-value", action="append", type=float, default=[], metavar="NUMBER",
+                        help="a precip value that means missing, such as -9999 (may be given more than once)")
     parser.add_argument("--no-plots", action="store_true", help="skip the PNG files")
     args = parser.parse_args(argv)
     chosen = re.fullmatch(r"([0-9]{1,4})-([0-9]{1,2})", args.month.strip())
@@ -640,7 +655,8 @@ def main(argv=None):
     for i, station in enumerate(station_ids):
         gauge_of.setdefault(station_key(station), i)
     observations, reporting, row_lines = read_observations(args.observations, gauge_of,
-                                                           min(station_ids, default=None), args.stations)
+                                                           min(station_ids, default=None), args.stations,
+                                                           set(args.missing_value))
     catchment, outline = read_catchment(args.catchment)
     # (the observations file's rows: the table also has a row for each month without any)
     print(f"read {gauges.GetNumberOfPoints()} gauges and {len(row_lines)} observations in "

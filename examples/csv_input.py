@@ -35,6 +35,11 @@ def decoded(path, what):
             data = handle.read()
     except OSError as error:
         fail(f"{path}: cannot read the {what} file ({error.strerror})")
+    # A compressed download read as text gave its binary bytes as the "header".
+    for magic, kind in ((b"\x1f\x8b", "gzip"), (b"PK\x03\x04", "zip"), (b"BZh", "bzip2"),
+                        (b"\xfd7zXZ\x00", "xz")):
+        if data.startswith(magic):
+            fail(f"{path}: the {what} file is {kind}-compressed; decompress it first (a CSV file is text)")
     if data.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
         try:
             return data.decode("utf-16")

@@ -207,6 +207,16 @@ def test_missing_values_keep_their_months():
         got = [(r["month"], r["stations_used"], float(r["areal_mean"])) for r in rows]
         assert_that(got[0] == ("1", "1", -9999.0) and got[1][1] == "2" and got[1][2] < 2.5,
                     f"negative values used as given: {got}")
+        # --missing-value -9999 makes that code a missing value (the other negative stays a value).
+        stdout, stderr = run_colorado(out, "--missing-value", "-9999", observations=observations, month="1950-02",
+                                      plots=False)
+        rows = read_csv(os.path.join(out, "areal_mean.csv"))
+        got = [(r["month"], r["stations_used"], r["areal_mean"]) for r in rows]
+        assert_that(got[0] == ("1", "0", "") and got[1][1] == "2",
+                    f"-9999 as a missing value: {got}")
+        assert_that("1 observation(s) with a --missing-value value (-9999) count as missing" in stderr
+                    and "1 observation(s) have a negative precipitation" in stderr and "line(s) 4" in stderr,
+                    f"the missing-value code and the other negative value: {stderr}")
 
 
 def test_bad_files_are_named():
@@ -236,7 +246,15 @@ def test_bad_files_are_named():
         with open(latin, "w", encoding="cp1252") as f:
             f.write("station_id,name,lon,lat\n050848,Café,-105,39.5\n")
         missing = os.path.join(out, "absent.csv")
+        import gzip
+
+        gzipped = os.path.join(out, "obs.csv.gz")
+        with gzip.open(gzipped, "wt") as f:
+            f.write("station_id,year,month,precip\n050848,1963,8,1.5\n")
+        lone_shp = write(out, "basin.shp", "not read: its .shx is missing\n")
         cases = [
+            (("--observations", gzipped), [gzipped, "gzip-compressed; decompress it first"]),
+            (("--catchment", lone_shp), [lone_shp, "basin.shx beside it is missing"]),
             (("--stations", stations_id), [stations_id, "no column 'station_id'", "id, lon, lat"]),
             (("--stations", stations_lat), [stations_lat + ":3", "'lat'", "'north' is not a number"]),
             (("--stations", missing), [missing, "cannot read the stations file"]),
