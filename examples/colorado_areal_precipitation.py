@@ -216,6 +216,16 @@ def read_catchment(path):
     if errors or not rings:
         csv_input.fail(f"{path}: GDAL read no polygon from the catchment file "
                        "(expected a GeoJSON or shapefile polygon in lon/lat)")
+    # The coordinates are read as lon/lat whatever the file declares: a projected system (a .prj
+    # of UTM, a GeoJSON "crs") is named, as its numbers are either metres (which the filter
+    # refuses as longitudes) or lon/lat under a wrong declaration.
+    for layer in range(reader.GetNumberOfLayers()):
+        declared = reader.GetLayerProjection(layer) or ""
+        if declared.startswith(("PROJCS", "PROJCRS")):
+            name = re.match(r'PROJC(?:RS|S)\["([^"]*)"', declared)
+            print(f"{path}: declares the projected coordinate system "
+                  f"{name.group(1) if name else declared[:60]!r}; its coordinates are read as "
+                  "longitude/latitude in degrees (WGS84)", file=sys.stderr)
     return reader, rings
 
 

@@ -533,6 +533,23 @@ def test_small_values_and_a_catchment_across_the_antimeridian():
         assert_that(all(lon_min < x < lon_max for x in lon), f"gauges at {lon}, map {lon_min} .. {lon_max}")
 
 
+def test_a_catchment_declared_projected_is_named():
+    # Its coordinates are read as lon/lat whatever the file declares; a projected system (here a
+    # GeoJSON "crs" of UTM 60S, as a shapefile's .prj gives it) is named on a line of its own.
+    import json
+
+    with tempfile.TemporaryDirectory() as out:
+        catchment, stations, observations = write_lake_basin(out)
+        declared = dict(LAKE_BASIN, crs={"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::32760"}})
+        utm = write(out, "utm.geojson", json.dumps(declared))
+        _, stderr = run_colorado(out, stations=stations, observations=observations, catchment=utm, plots=False,
+                                 what="a declared UTM system")
+        assert_that(f"{utm}: declares the projected coordinate system 'WGS 84 / UTM zone 60S'; its coordinates are "
+                    "read as longitude/latitude in degrees (WGS84)" in stderr_messages(stderr), f"{stderr}")
+        _, stderr = run_colorado(out, stations=stations, observations=observations, catchment=catchment, plots=False)
+        assert_that("declares" not in stderr, f"the lon/lat basin: {stderr}")
+
+
 def test_observations_of_no_gauge_end_the_run():
     # Ids that match no gauge at all (a prefix the stations file has and the observations do not)
     # end the run naming both files, instead of a run of months without a mean; so does a stations
@@ -874,6 +891,7 @@ if __name__ == "__main__":
          test_ids_without_their_leading_zeros_match_as_in_the_filter,
          test_small_values_and_a_catchment_across_the_antimeridian,
          test_observations_of_no_gauge_end_the_run,
+         test_a_catchment_declared_projected_is_named,
          test_the_filters_errors_name_the_file_and_line,
          test_the_filters_warnings_are_lines_of_their_own,
          test_rows_of_empty_fields_are_skipped,
