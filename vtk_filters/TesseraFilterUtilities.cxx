@@ -11,9 +11,6 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMultiBlockDataSet.h"
-#include "vtkMultiProcessController.h"
-#include "vtkCommunicator.h"
-#include "vtkTable.h"
 #include "vtkPartitionedDataSet.h"
 #include "vtkPartitionedDataSetCollection.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
@@ -745,75 +742,6 @@ bool MakesOutput(vtkInformationVector* outputVector)
     }
   }
   return true;
-}
-
-namespace
-{
-
-/// The points of a data set, or of every data set of a composite; a table's rows.
-double CountPoints(vtkDataObject* data)
-{
-  if (auto* table = vtkTable::SafeDownCast(data))
-  {
-    return static_cast<double>(table->GetNumberOfRows());
-  }
-  if (auto* set = vtkDataSet::SafeDownCast(data))
-  {
-    return static_cast<double>(set->GetNumberOfPoints());
-  }
-  double count = 0.0;
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> leaf;
-    leaf.TakeReference(composite->NewIterator());
-    for (leaf->InitTraversal(); !leaf->IsDoneWithTraversal(); leaf->GoToNextItem())
-    {
-      count += CountPoints(leaf->GetCurrentDataObject());
-    }
-  }
-  return count;
-}
-
-} // namespace
-
-void WarnOfDifferentPieces(vtkObject* filter,
-  vtkInformationVector** inputVector,
-  int firstPort,
-  int lastPort,
-  vtkInformationVector* outputVector)
-{
-  vtkInformation* info = outputVector->GetInformationObject(0);
-  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
-  const int processes = controller ? controller->GetNumberOfProcesses() : 1;
-  if (processes <= 1 || !info ||
-    !info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) ||
-    info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) != processes)
-  {
-    return; // not every process asked for a piece: no collective call
-  }
-  for (int port = firstPort; port <= lastPort; ++port)
-  {
-    for (int k = 0; k < inputVector[port]->GetNumberOfInformationObjects(); ++k)
-    {
-      const double count = CountPoints(vtkDataObject::GetData(inputVector[port], k));
-      // The least count and the least negated one (the greatest), in one call.
-      const double mine[2] = { count, -count };
-      double least[2] = { count, -count };
-      controller->AllReduce(mine, least, 2, vtkCommunicator::MIN_OP);
-      if (MakesOutput(outputVector) && least[0] != -least[1])
-      {
-        vtkWarningWithObjectMacro(filter,
-          << "input " << port << " differs between the " << processes << " processes (from "
-          << least[0] << " to " << -least[1]
-          << " points or rows each): an upstream filter split it although this filter asks "
-             "every process for the whole (ParaView's Redistribute DataSet does so), and only "
-             "this process's "
-          << count
-          << " are used, the other processes' not. Leave out the filter that splits the data, "
-             "or merge it before this one");
-      }
-    }
-  }
 }
 
 vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data, std::vector<std::string>& warnings)

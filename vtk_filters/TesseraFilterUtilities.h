@@ -23,7 +23,6 @@ class vtkCompositeDataIterator;
 class vtkCompositeDataSet;
 class vtkDataSet;
 class vtkInformationVector;
-class vtkObject;
 class vtkDataObject;
 class vtkFieldData;
 class vtkPoints;
@@ -106,22 +105,6 @@ void RequestWholeInputs(vtkInformationVector** inputVector, int firstPort, int l
 
 /// False when an output's requested piece is not the first: that process leaves the outputs empty.
 bool MakesOutput(vtkInformationVector* outputVector);
-
-/// Under MPI (one piece of as many as there are processes asked of the outputs), warns (on the
-/// process that makes the output) when the processes hold different data on an input of ports
-/// firstPort .. lastPort: an upstream filter that splits its output whatever is asked of it
-/// (ParaView's Redistribute DataSet) hands each process its own part, although RequestWholeInputs
-/// asks for the whole, and only the first process's part would be used, the others' dropped
-/// without a word. Compares the processes' counts of points (rows of a table), so parts of equal
-/// size pass unseen; not their coordinates, which differ between processes for a random source
-/// (Point Source) that each process runs in full. A collective call, which every process of such
-/// a request makes at the start of RequestData, before it returns early (MakesOutput). Without
-/// MPI it does nothing.
-void WarnOfDifferentPieces(vtkObject* filter,
-  vtkInformationVector** inputVector,
-  int firstPort,
-  int lastPort,
-  vtkInformationVector* outputVector);
 
 /// The window a filter works in: the rectangle `bounds` (xmin, xmax, ymin, ymax) when it is not
 /// empty, intersected with `constraints` (a, b, c triples: a*x + b*y + c < 0); with neither, the

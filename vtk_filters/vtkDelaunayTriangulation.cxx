@@ -151,7 +151,6 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  tessera_vtk::WarnOfDifferentPieces(this, inputVector, 0, 0, outputVector);
   if (!tessera_vtk::MakesOutput(outputVector))
   {
     return 1; // another process's piece: the first makes the whole output (RequestWholeInputs)

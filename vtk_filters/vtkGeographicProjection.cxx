@@ -501,7 +501,6 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  tessera_vtk::WarnOfDifferentPieces(this, inputVector, 0, 0, outputVector);
   if (!tessera_vtk::MakesOutput(outputVector))
   {
     // Another process's piece: the first makes the whole output (RequestWholeInputs). Blocks keep

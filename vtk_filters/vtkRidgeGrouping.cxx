@@ -198,7 +198,6 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  tessera_vtk::WarnOfDifferentPieces(this, inputVector, 0, 0, outputVector);
   if (!tessera_vtk::MakesOutput(outputVector))
   {
     return 1; // another process's piece: the first makes the whole output (RequestWholeInputs)
@@ -332,12 +331,8 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     {
       vtkNew<vtkDoubleArray> field;
       field->SetName("Field");
-      CopyOntoImage(result.Field,
-        grid,
-        outWidth,
-        outHeight,
-        std::numeric_limits<double>::quiet_NaN(),
-        field.Get());
+      CopyOntoImage(
+        result.Field, grid, outWidth, outHeight, std::numeric_limits<double>::quiet_NaN(), field.Get());
       imageOut->GetPointData()->AddArray(field);
       imageOut->GetPointData()->SetActiveScalars("Field");
       for (const auto& [name, ridge] : { std::make_pair("MinorRidge", &result.MinorRidge),

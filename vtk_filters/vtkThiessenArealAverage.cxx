@@ -845,7 +845,6 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  tessera_vtk::WarnOfDifferentPieces(this, inputVector, 0, 2, outputVector);
   if (!tessera_vtk::MakesOutput(outputVector))
   {
     return 1; // another process's piece: the first makes the whole output (RequestWholeInputs)
