@@ -303,6 +303,51 @@ TEST(ArealAverage, WeightedGaugesAcrossBitmapWordEndsAreThoseThatReportAndReachT
   }
 }
 
+// A gauge with a weight stops reporting (its cached area stays, unused) while a wall of gauges
+// between it and the catchment, and a ring around it, start. When it reports again, its new tile's
+// box is clear of the catchment, so its area is cleared without a derivation (with its bit of the
+// positive areas): it must not be listed with a weight of 0, as a bit left set listed it.
+TEST(ArealAverage, AGaugeBackInATileClearOfTheCatchmentIsNotListed)
+{
+  std::vector<Point2> gauges{ { -104.9, 39.5 }, { -103.5, 39.5 } };
+  const int wall = 29, ring = 6;
+  for (int k = 0; k < wall; ++k)
+  {
+    gauges.push_back({ -103.85, 36.0 + 0.25 * k });
+  }
+  for (int k = 0; k < ring; ++k)
+  {
+    gauges.push_back(
+      { -103.5 + 0.2 * std::cos(k * M_PI / 3), 39.5 + 0.2 * std::sin(k * M_PI / 3) });
+  }
+  for (int k = 0; k < 160; ++k)
+  {
+    gauges.push_back({ -120.0 + 0.01 * k, 30.0 + 0.1 * k }); // far away, always reporting
+  }
+  const Square catchment(-105.0, 39.0, -104.0, 40.0);
+  ArealAverageSettings rebuild;
+  rebuild.Incremental = false;
+  ThiessenArealAverage a(gauges, catchment.Offsets, catchment.Ring);
+  ThiessenArealAverage b(gauges, catchment.Offsets, catchment.Ring, rebuild);
+  std::vector<double> values(gauges.size(), 1.0);
+  std::fill(values.begin() + 2, values.begin() + 2 + wall + ring, NaN);
+  ArealStep x = a.Step(values), y = b.Step(values);
+  ASSERT_NO_FATAL_FAILURE(ExpectSameStep(x, y, 0));
+  ASSERT_TRUE(std::binary_search(x.Gauges.begin(), x.Gauges.end(), 1))
+    << "gauge 1 weighted at first";
+  values[1] = NaN;
+  std::fill(values.begin() + 2, values.begin() + 2 + wall + ring, 2.0);
+  x = a.Step(values);
+  y = b.Step(values);
+  ASSERT_NO_FATAL_FAILURE(ExpectSameStep(x, y, 1));
+  values[1] = 3.0;
+  x = a.Step(values);
+  y = b.Step(values);
+  ASSERT_NO_FATAL_FAILURE(ExpectSameStep(x, y, 2));
+  EXPECT_GE(x.TilesFoundClear, 1) << "gauge 1's tile found clear by its box";
+  EXPECT_FALSE(std::binary_search(x.Gauges.begin(), x.Gauges.end(), 1)) << "gauge 1 listed again";
+}
+
 // The tiles' clipped areas are measured in chunks on the cores (one chunk per 1000 tiles on the
 // equal-area plane, per 4 tiles geodesically): each step's weights and areas must be the same bits
 // on 1 thread and on 3, updating or rebuilding, with gauges dropping out and back at each step.
