@@ -340,14 +340,25 @@ tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
   const std::string own = self->GetProjectionRecord();
   if (!own.empty())
   {
+    tessera::ProjectionParameters parameters;
     try
     {
-      return tessera::ProjectionParameters::FromString(own);
+      parameters = tessera::ProjectionParameters::FromString(own);
     }
     catch (const tessera::InputError& e)
     {
       throw tessera::InputError(std::string("ProjectionRecord '") + own + "': " + e.what());
     }
+    // An inverse whose input carries another record: the points were projected otherwise.
+    const std::string carried =
+      self->GetInverse() ? tessera_vtk::ProjectionRecordOf(input, "the input") : std::string();
+    if (!carried.empty() && carried != parameters.ToString())
+    {
+      vtkWarningWithObjectMacro(self,
+        << "ProjectionRecord '" << own << "' is used, but the input carries another record, '"
+        << carried << "': its points were projected with that one, so they come back elsewhere");
+    }
+    return parameters;
   }
   if (self->GetInverse())
   {
@@ -535,8 +546,10 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
     }
     // Nothing to fit a projection to, or to undo: empty in, empty out (with the structure), no
     // record (an empty forward output has none, so its inverse takes it as it is).
-    const bool fitted = this->ParametersFromData;
-    const bool none = points == 0 && (this->Inverse || fitted);
+    // A ProjectionRecord set is the projection even then (read, so that a bad one is an error,
+    // and written on the forward output, as for points).
+    const bool fitted = this->ParametersFromData && this->ProjectionRecord.empty();
+    const bool none = points == 0 && ((this->Inverse && this->ProjectionRecord.empty()) || fitted);
     std::unique_ptr<tessera::GeographicProjection> projection;
     std::string record;
     if (!none)

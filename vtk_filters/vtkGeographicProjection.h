@@ -166,7 +166,8 @@ public:
    * inverse, the input's record). Set, it overrides them all: a second data set projected with the
    * first's record gets the very same projection, as vtkWindowClip requires of its two inputs
    * (two automatic projections are fitted each to its own data). A record that cannot be read is
-   * an error naming it, at the update.
+   * an error naming it, at the update, even for an input without points (whose forward output then
+   * carries the record). Inverse with an input that carries another record warns, naming both.
    */
   vtkSetStdStringFromCharMacro(ProjectionRecord);
   vtkGetCharFromStdStringMacro(ProjectionRecord);

@@ -348,12 +348,31 @@ def test_tiles_and_window_must_share_their_projection():
     moved = [again.GetOutput().GetPoint(i) for i in range(4)]
     fitted = [automatic.GetPoint(i) for i in range(4)]
     assert_that(moved == fitted, f"the record's projection: {moved} vs {fitted}")
-    # A record that cannot be read is an error naming it, with an empty output.
+    # A record that cannot be read is an error naming it, with an empty output; so it is for an
+    # input without points, whose output carries a good record.
     errors = messages_of(f, vtkCommand.ErrorEvent)
     f.SetProjectionRecord("projection=Mercator lon0=1")
     f.Update()
     assert_that(len(errors) == 1 and "ProjectionRecord 'projection=Mercator lon0=1'" in errors[0]
                 and f.GetOutput().GetNumberOfPoints() == 0, f"a bad record: {errors}")
+    f.SetInputData(make_points([]))
+    f.Update()
+    assert_that(len(errors) == 2 and "ProjectionRecord 'projection=Mercator lon0=1'" in errors[1],
+                f"a bad record, no points: {errors}")
+    f.SetProjectionRecord(record)
+    f.Update()
+    assert_that(len(errors) == 2 and projection_record(f.GetOutput()) == record, f"no points: {errors}")
+    # The inverse of points that carry another record than the one set warns, naming both.
+    back = vtkGeographicProjection()
+    said = messages_of(back, vtkCommand.WarningEvent)
+    back.SetInputData(automatic)
+    back.InverseOn()
+    back.SetProjectionRecord(projection_record(same))
+    back.Update()
+    assert_that(len(said) == 1 and projection_record(same) in said[0] and record in said[0], f"{said}")
+    back.SetProjectionRecord(record)
+    back.Update()
+    assert_that(len(said) == 1, f"the input's own record: {said}")
     output, errors, warnings = clip_by(tiles_of(gauges), projected(catchment, False))
     assert_that(not errors and len(warnings) == 1 and "the window (input 1) carries" in warnings[0]
                 and "the tiles (input 0) none" in warnings[0], f"one record: {errors} {warnings}")
