@@ -32,6 +32,7 @@
 #include "observation_series.h"
 
 #include <algorithm>
+#include <map>
 #include <functional>
 #include <cctype>
 #include <cmath>
@@ -1129,11 +1130,22 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   // Everything valid but unused is reported by id.
   // A gauge by its station id, or by its point id when it has none (an empty id named nothing);
   // by both when other gauges have its id ("A (gauge 4)": "A" alone would name them all).
+  // (Ids shared as written, or as the observations' matching reads them: "050848" and "50848".)
   std::vector<char> idShared(gaugeCount, 0);
   for (const tessera::SharedStation& pair : rows->Match.SharedStations)
   {
     idShared[static_cast<std::size_t>(pair.FirstGauge)] = 1;
     idShared[static_cast<std::size_t>(pair.Gauge)] = 1;
+  }
+  std::map<std::string, std::size_t> firstWithName;
+  for (std::size_t g = 0; stationIds && g < gaugeCount; ++g)
+  {
+    const auto found = firstWithName.emplace(gaugeNames[g], g);
+    if (!found.second && !gaugeNames[g].empty())
+    {
+      idShared[g] = 1;
+      idShared[found.first->second] = 1;
+    }
   }
   auto idOf = [&](std::size_t g)
   {

@@ -185,6 +185,19 @@ def test_an_unobserved_gauge_without_a_station_id_is_named_by_its_point():
     assert_that(len(named) == 1 and "never used: gauge 1 (no station id)" in named[0], f"{warnings}")
 
 
+def test_a_gauge_whose_station_id_others_share_is_named_with_its_index():
+    """Without an observations table too: gauges A, B and a second A without a value; "never used:
+    A" named the used A as well."""
+    f = vtkThiessenArealAverage()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetGaugesData(gauges_polydata([(0.2, 0.2), (0.8, 0.8), (0.5, 0.3)], ["A", "B", "A"], [1.0, 2.0, math.nan]))
+    f.SetCatchmentData(polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]]))
+    f.SetValueArrayName("value")
+    f.Update(1)
+    named = [w for w in warnings if "never used" in w]
+    assert_that(len(named) == 1 and named[0].rstrip().endswith("never used: A (gauge 2)"), f"{warnings}")
+
+
 def test_gauges_never_weighted_and_no_gauge_inside_are_reported():
     """A gauge whose tile never reaches the catchment is named (and listed in UnweightedGaugeIds);
     gauges all outside the catchment (a west longitude without its minus sign) get a warning."""
@@ -1244,6 +1257,7 @@ if __name__ == "__main__":
          test_colorado_months_match_a_brute_force_raster,
          test_missing_steps_and_unused_input_are_reported,
          test_an_unobserved_gauge_without_a_station_id_is_named_by_its_point,
+         test_a_gauge_whose_station_id_others_share_is_named_with_its_index,
          test_gauges_never_weighted_and_no_gauge_inside_are_reported,
          test_a_catchment_ring_inside_another_blocks_ring_is_reported,
          test_gauges_in_blocks_as_a_point_layer_gives_them_are_joined,
