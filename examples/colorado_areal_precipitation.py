@@ -94,7 +94,7 @@ def read_gauges(path):
     return gauges, lines
 
 
-def read_observations(path, gauge_of, filler, stations_path, missing_values=()):
+def read_observations(path, gauge_of, filler, stations_path, missing_values=(), station_ids=()):
     """The long-format monthly table as a vtkTable (station_id, time, precip), the set of
     reporting gauges of every (year, month), as gauge indices, and the file's line of each record
     read (table row r, counted from 0, is the record of line lines[r]; the rows after them are the
@@ -102,7 +102,8 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=()):
     station's observations go to, by station_key() (ids are compared as the filter compares them;
     a month none of whose rows names a gauge's station is a month where no gauge reported).
     filler: a gauge's station id, given to the rows of those months. missing_values: numbers that
-    mean missing (--missing-value, such as -9999), read as a missing value. Ends the script when no row
+    mean missing (--missing-value, such as -9999), read as a missing value. station_ids: the
+    stations file's ids as written, for the message when no row
     names a gauge's station (stations_path: the stations file, for the message): ids that do not
     match at all (a prefix, another numbering) would otherwise give months without a mean."""
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
@@ -119,14 +120,14 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=()):
     months = set()  # (year, month) of every row
     present = set()  # (year, month) of every row of a gauge's station
     lines = []  # the file's line of each row read
-    names = set()  # every row's station id, as station_key() gives it
+    names = {}  # every row's station id, as written, once each in the file's order
     for line, row in csv_input.rows(path, ("station_id", "year", "month", "precip"), "observations"):
         lines.append(line)
         station = csv_input.text(row, "station_id", path, line)
         year_and_month = (csv_input.integer(row, "year", path, line, 1, 9999),
                           csv_input.integer(row, "month", path, line, 1, 12))
         months.add(year_and_month)
-        names.add(station_key(station))
+        names.setdefault(station.strip(" \t\""))
         gauge = gauge_of.get(station_key(station))
         if gauge is not None:
             present.add(year_and_month)
@@ -148,10 +149,11 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=()):
         times.InsertNextValue(t)
         values.InsertNextValue(value)
     if lines and not present:
-        seen = sorted(names)
+        # (the ids as written, each once, in the files' order: they are for comparing by eye)
+        seen, there = list(names), list(dict.fromkeys(station_ids))
         csv_input.fail(f"{path}: none of its {len(lines)} rows names a station of {stations_path} "
                        f"(ids here: {', '.join(seen[:5])}{', ...' if len(seen) > 5 else ''}; ids there: "
-                       f"{', '.join(sorted(gauge_of)[:5])}{', ...' if len(gauge_of) > 5 else ''})")
+                       f"{', '.join(there[:5])}{', ...' if len(there) > 5 else ''})")
     if coded:
         print(f"{path}: {coded} observation(s) with a --missing-value value "
               f"({', '.join(f'{v:g}' for v in sorted(missing_values))}) count as missing", file=sys.stderr)
@@ -666,7 +668,7 @@ def main(argv=None):
         gauge_of.setdefault(station_key(station), i)
     observations, reporting, row_lines = read_observations(args.observations, gauge_of,
                                                            min(station_ids, default=None), args.stations,
-                                                           set(args.missing_value))
+                                                           set(args.missing_value), station_ids)
     catchment, outline = read_catchment(args.catchment)
     # (the observations file's rows: the table also has a row for each month without any)
     print(f"read {gauges.GetNumberOfPoints()} gauges and {len(row_lines)} observations in "

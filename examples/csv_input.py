@@ -35,10 +35,14 @@ def decoded(path, what):
             data = handle.read()
     except OSError as error:
         fail(f"{path}: cannot read the {what} file ({error.strerror})")
-    # A compressed download read as text gave its binary bytes as the "header".
-    for magic, kind in ((b"\x1f\x8b", "gzip"), (b"PK\x03\x04", "zip"), (b"BZh", "bzip2"),
-                        (b"\xfd7zXZ\x00", "xz")):
-        if data.startswith(magic):
+    # A compressed download or a workbook read as text gave its binary bytes as the "header".
+    if data.startswith(b"PK\x03\x04"):
+        fail(f"{path}: the {what} file is a zip archive, not CSV text (an Excel .xlsx or an OpenDocument "
+             "sheet is one: save the sheet as CSV; a zipped CSV: unzip it)")
+    bzip2 = data.startswith(b"BZh") and data[3:4].isdigit() and data[4:10] == b"1AY&SY"
+    for kind, compressed in (("gzip", data.startswith(b"\x1f\x8b")), ("bzip2", bzip2),
+                             ("xz", data.startswith(b"\xfd7zXZ\x00"))):
+        if compressed:
             fail(f"{path}: the {what} file is {kind}-compressed; decompress it first (a CSV file is text)")
     if data.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
         try:

@@ -252,8 +252,16 @@ def test_bad_files_are_named():
         with gzip.open(gzipped, "wt") as f:
             f.write("station_id,year,month,precip\n050848,1963,8,1.5\n")
         lone_shp = write(out, "basin.shp", "not read: its .shx is missing\n")
+        import zipfile
+
+        workbook = os.path.join(out, "obs.xlsx")
+        with zipfile.ZipFile(workbook, "w") as book:
+            book.writestr("xl/workbook.xml", "<workbook/>")
+        bzh = write(out, "bzh.csv", "BZh_id,lon,lat\n1,-105,39\n")  # text that starts like bzip2
         cases = [
             (("--observations", gzipped), [gzipped, "gzip-compressed; decompress it first"]),
+            (("--observations", workbook), [workbook, "a zip archive, not CSV text", "save the sheet as CSV"]),
+            (("--stations", bzh), [bzh, "no column 'station_id'"]),
             (("--catchment", lone_shp), [lone_shp, "basin.shx beside it is missing"]),
             (("--stations", stations_id), [stations_id, "no column 'station_id'", "id, lon, lat"]),
             (("--stations", stations_lat), [stations_lat + ":3", "'lat'", "'north' is not a number"]),
@@ -556,12 +564,13 @@ def test_observations_of_no_gauge_end_the_run():
     # file without gauges.
     with tempfile.TemporaryDirectory() as out:
         catchment, stations, observations = write_lake_basin(out)
-        other = write(out, "other_ids.csv", "station_id,lon,lat\nNZ-N1,175.6,-39.1\nNZ-N2,176.4,-39.1\n")
+        other = write(out, "other_ids.csv", "station_id,lon,lat\nNZ-N1,175.6,-39.1\nNZ-N2,176.4,-39.1\n007,176,-39\n")
         _, stderr = run_colorado(out, stations=other, observations=observations, catchment=catchment, status=1,
                                  plots=False, what="ids of no gauge")
         messages = stderr_messages(stderr)
         assert_that(len(messages) == 1 and messages[0].startswith(f"{observations}: none of its ")
-                    and other in messages[0] and "NZ-N1" in messages[0] and "Traceback" not in stderr,
+                    and other in messages[0] and "ids there: NZ-N1, NZ-N2, 007)" in messages[0]
+                    and "ids here: N1, N2," in messages[0] and "Traceback" not in stderr,
                     f"ids of no gauge: {stderr}")
         assert_that(not os.path.exists(os.path.join(out, "areal_mean.csv")), "areal_mean.csv written")
         empty = write(out, "empty.csv", "station_id,lon,lat\n")
