@@ -94,6 +94,25 @@ double Sum(const std::vector<double>& v)
 
 // Step t of an update against the rebuild's (or of one average against another): the same
 // weighted gauges, weights and mean (to the given tolerances), and the weights sum to 1.
+// An average that updates its tessellation and one that rebuilds it, on the same gauges and
+// catchment, stepped together.
+struct UpdatingAndRebuilding
+{
+  ThiessenArealAverage Updating;
+  ThiessenArealAverage Rebuilding;
+  UpdatingAndRebuilding(const std::vector<Point2>& gauges, const Square& catchment)
+    : Updating(gauges, catchment.Offsets, catchment.Ring)
+    , Rebuilding(gauges, catchment.Offsets, catchment.Ring, RebuildSettings())
+  {
+  }
+  static ArealAverageSettings RebuildSettings()
+  {
+    ArealAverageSettings settings;
+    settings.Incremental = false;
+    return settings;
+  }
+};
+
 void ExpectSameStep(const ArealStep& x,
   const ArealStep& y,
   int t,
@@ -261,11 +280,8 @@ TEST(ArealAverage, WeightedGaugesAcrossBitmapWordEndsAreThoseThatReportAndReachT
   }
   gauges[63] = { -105.0, 39.0 }; // one shared place inside the catchment for certain
   gauges[64] = gauges[63];
-  const Square catchment(-108.0, 37.5, -103.0, 40.5);
-  ArealAverageSettings rebuild;
-  rebuild.Incremental = false;
-  ThiessenArealAverage a(gauges, catchment.Offsets, catchment.Ring);
-  ThiessenArealAverage b(gauges, catchment.Offsets, catchment.Ring, rebuild);
+  UpdatingAndRebuilding both(gauges, Square(-108.0, 37.5, -103.0, 40.5));
+  ThiessenArealAverage &a = both.Updating, &b = both.Rebuilding;
   ASSERT_EQ(a.DuplicateGauges().size(), 3u);
   std::uniform_real_distribution<double> value(0.0, 10.0);
   std::bernoulli_distribution missing(0.3);
@@ -324,11 +340,8 @@ TEST(ArealAverage, AGaugeBackInATileClearOfTheCatchmentIsNotListed)
   {
     gauges.push_back({ -120.0 + 0.01 * k, 30.0 + 0.1 * k }); // far away, always reporting
   }
-  const Square catchment(-105.0, 39.0, -104.0, 40.0);
-  ArealAverageSettings rebuild;
-  rebuild.Incremental = false;
-  ThiessenArealAverage a(gauges, catchment.Offsets, catchment.Ring);
-  ThiessenArealAverage b(gauges, catchment.Offsets, catchment.Ring, rebuild);
+  UpdatingAndRebuilding both(gauges, Square(-105.0, 39.0, -104.0, 40.0));
+  ThiessenArealAverage &a = both.Updating, &b = both.Rebuilding;
   std::vector<double> values(gauges.size(), 1.0);
   std::fill(values.begin() + 2, values.begin() + 2 + wall + ring, NaN);
   ArealStep x = a.Step(values), y = b.Step(values);
