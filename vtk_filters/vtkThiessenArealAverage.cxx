@@ -877,6 +877,14 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
     }
     if (!in.Average || stamp > in.BuiltFor)
     {
+      if (!stationIds && gauges->GetNumberOfPoints() > 0)
+      {
+        // Without observations the ids only name the gauges: a mistyped name was taken silently.
+        // (Once per build, not at every time step.)
+        vtkWarningMacro(<< "the gauges have no point-data array '" << this->StationIdArrayName
+                        << "' (StationIdArrayName): the outputs have no StationId and the gauges "
+                           "are named by their index");
+      }
       this->Build(gauges, stationIds, catchment, observations);
       in.BuiltFor = stamp;
     }

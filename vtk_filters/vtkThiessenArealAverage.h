@@ -159,6 +159,8 @@ public:
   ///@{
   /**
    * Names of the gauges' station id array and, without observations, of their value array.
+   * Without observations the station ids are optional (they name the gauges); an absent one is
+   * said in a warning, once per build, so that a mistyped name is not taken silently.
    */
   vtkSetStdStringFromCharMacro(StationIdArrayName);
   vtkGetCharFromStdStringMacro(StationIdArrayName);

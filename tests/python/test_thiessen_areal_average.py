@@ -196,6 +196,13 @@ def test_a_gauge_whose_station_id_others_share_is_named_with_its_index():
     f.Update(1)
     named = [w for w in warnings if "never used" in w]
     assert_that(len(named) == 1 and named[0].rstrip().endswith("never used: A (gauge 2)"), f"{warnings}")
+    # A mistyped station-id array name (no observations need it) is said, once per build.
+    before = len(warnings)
+    f.SetStationIdArrayName("station")
+    f.Update(1)
+    f.Update(0)
+    told = [w for w in warnings[before:] if "no point-data array 'station' (StationIdArrayName)" in w]
+    assert_that(len(told) == 1 and "named by their index" in told[0], f"{warnings[before:]}")
 
 
 def test_gauges_never_weighted_and_no_gauge_inside_are_reported():
