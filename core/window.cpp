@@ -181,7 +181,7 @@ Window::Window(const std::vector<HalfPlane>& constraints, const ConstraintNames&
   }
   if (n == 0)
   {
-    throw InputError("window is unbounded: no constraints given");
+    throw UnboundedWindowError("window is unbounded: no constraints given");
   }
 
   std::vector<bool> effective(n, false);
@@ -241,7 +241,7 @@ Window::Window(const std::vector<HalfPlane>& constraints, const ConstraintNames&
     {
       // A ray (or the whole line) of L_i satisfies every other constraint strictly; points just
       // inside it are in the window, whose closure then contains a ray.
-      throw InputError("window is unbounded: the boundary line of " + named(i) + " " +
+      throw UnboundedWindowError("window is unbounded: the boundary line of " + named(i) + " " +
         describe(hi) + " is not closed off by the other constraints" +
         (hasEntry || hasExit ? " at one end" : " at either end"));
     }

@@ -1,8 +1,9 @@
 #pragma once
 // A convex window given by strict linear constraints a*x + b*y + c < 0 (Green and Sibson,
 // section 1.2). Redundant constraints are identified and ignored; an empty or unbounded window is
-// an InputError.
+// an InputError (UnboundedWindowError for the latter).
 
+#include "errors.h"
 #include "geometry.h"
 
 #include <cstddef>
@@ -18,6 +19,14 @@ struct HalfPlane
   double a = 0.0;
   double b = 0.0;
   double c = 0.0;
+};
+
+/// The InputError of constraints that leave the window unbounded, as its own type: a caller that
+/// made the constraints up from its settings can add which setting closes the window.
+class UnboundedWindowError : public InputError
+{
+public:
+  using InputError::InputError;
 };
 
 /// How a Window's error messages name the constraints it was given, for a caller that assembles

@@ -246,16 +246,15 @@ tessera::Window ChooseWindow(const double bounds[4],
     {
       return Representable(tessera::Window(halfPlanes, naming), needArea);
     }
-    catch (const tessera::InputError& error)
+    catch (const tessera::UnboundedWindowError& error)
     {
       // A constraint meant to cut a corner off the automatic window (ParaView's panel shows
       // WindowBounds empty by default) makes the constraints the whole window.
-      const std::string text = error.what();
-      if (haveBounds || text.rfind("window is unbounded", 0) != 0)
+      if (haveBounds)
       {
         throw;
       }
-      throw tessera::InputError(text +
+      throw tessera::InputError(std::string(error.what()) +
         " (with WindowBounds empty the window is the constraints alone, not the points' padded "
         "bounding box: set WindowBounds for the constraints to cut, or add constraints that close "
         "the window)");

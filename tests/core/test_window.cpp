@@ -20,6 +20,7 @@ using tessera::ConstraintNames;
 using tessera::HalfPlane;
 using tessera::InputError;
 using tessera::Point2;
+using tessera::UnboundedWindowError;
 using tessera::Window;
 
 namespace
@@ -337,6 +338,22 @@ TEST(Window, UnboundedWindows)
     "unbounded");
   // Three sides of a square.
   expect_input_error([] { Window w({ { -1, 0, 0 }, { 1, 0, -1 }, { 0, -1, 0 } }); }, "unbounded");
+  // Of their own type (an InputError), for a caller that says which setting closes the window;
+  // an empty window is not one.
+  EXPECT_THROW(Window w({ { 1, 0, 0 } }), UnboundedWindowError);
+  EXPECT_THROW(Window w(std::vector<HalfPlane>{}), UnboundedWindowError);
+  try
+  {
+    Window w({ { 1, 0, 1 }, { -1, 0, 1 }, { 0, 1, -1 }, { 0, -1, 0 } }); // x < -1 and x > 1
+    ADD_FAILURE() << "an empty window was taken";
+  }
+  catch (const UnboundedWindowError&)
+  {
+    ADD_FAILURE() << "an empty window called unbounded";
+  }
+  catch (const InputError&)
+  {
+  }
 }
 
 TEST(Window, BadConstraintsNameTheirIndex)
