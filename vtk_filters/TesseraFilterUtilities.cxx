@@ -179,6 +179,37 @@ std::string ProjectionRecordOf(vtkDataObject* data, const std::string& what)
   return record;
 }
 
+tessera::Window CutToPoints(tessera::Window window, const std::vector<tessera::Point2>& points)
+{
+  if (points.empty())
+  {
+    return window;
+  }
+  const tessera::Box2 box = tessera::BoundsOf(points.data(), points.size());
+  const double side = box.LargerSide();
+  const double pad =
+    side > 0.0 ? side : std::max({ 1.0, std::fabs(box.XMin), std::fabs(box.YMin) });
+  const double xmin = Below(box.XMin, pad), xmax = Above(box.XMax, pad);
+  const double ymin = Below(box.YMin, pad), ymax = Above(box.YMax, pad);
+  if (!std::isfinite(xmin) || !std::isfinite(xmax) || !std::isfinite(ymin) || !std::isfinite(ymax))
+  {
+    return window;
+  }
+  std::vector<tessera::HalfPlane> constraints = window.EffectiveConstraints();
+  constraints.push_back({ -1.0, 0.0, xmin });
+  constraints.push_back({ 1.0, 0.0, -xmax });
+  constraints.push_back({ 0.0, -1.0, ymin });
+  constraints.push_back({ 0.0, 1.0, -ymax });
+  try
+  {
+    return tessera::Window(constraints);
+  }
+  catch (const tessera::InputError&)
+  {
+    return window;
+  }
+}
+
 std::string EmptyBoundsWarning(const double bounds[4], bool withConstraints)
 {
   const bool unset = bounds[0] == 0.0 && bounds[1] == 0.0 && bounds[2] == 0.0 && bounds[3] == 0.0;

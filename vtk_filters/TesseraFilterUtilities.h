@@ -120,6 +120,15 @@ tessera::Window ChooseWindow(const double bounds[4],
   const std::vector<tessera::Point2>& points,
   bool needArea = true);
 
+/// The window cut down to the points' bounding box padded by its larger side (by 1 or the
+/// coordinates' size for points without extent): for a triangulation the window only decides
+/// which points are used, and the box holds every point strictly, so the same points are used. A
+/// window of coordinates far larger than the points' (WindowBounds of +-1e308) could not be
+/// scaled into the predicates' exact range together with them, and was refused naming a point.
+/// The window as it is when the cut cannot be made (no points, a box that overflows, or no point
+/// inside the window: its error is then the window's own).
+tessera::Window CutToPoints(tessera::Window window, const std::vector<tessera::Point2>& points);
+
 /// A warning for WindowBounds set to an empty rectangle (xmin >= xmax or ymin >= ymax, most likely
 /// arguments in another order, such as (xmin, ymin, xmax, ymax)), which ChooseWindow ignores;
 /// empty when there is none. The default 0, 0, 0, 0 ("no rectangle") gives none. withConstraints:

@@ -12,11 +12,9 @@
 
 #include "TesseraFilterUtilities.h"
 #include "dirichlet_tessellation.h"
-#include "errors.h"
 #include "tiles.h"
 
 #include <algorithm>
-#include <cmath>
 #include <exception>
 #include <string>
 #include <utility>
@@ -63,45 +61,6 @@ vtkNew<vtkCellArray> FacesOf(const tessera::DirichletTessellation& tessellation,
   return polys;
 }
 
-/// The window cut down to the points' bounding box padded by its larger side (by 1 or the
-/// coordinates' size for points without extent): for a triangulation the window only decides
-/// which points are used, and the box holds every point strictly, so the same points are used. A
-/// window of coordinates far larger than the points' (WindowBounds of +-1e308) could not be
-/// scaled into the predicates' exact range together with them, and was refused naming a point.
-/// The window as it is when the cut cannot be made (no points, a box that overflows, or no point
-/// inside the window: its error is then the window's own).
-tessera::Window CutToPoints(tessera::Window window, const std::vector<tessera::Point2>& points)
-{
-  if (points.empty())
-  {
-    return window;
-  }
-  const tessera::Box2 box = tessera::BoundsOf(points.data(), points.size());
-  const double side = box.LargerSide();
-  const double pad =
-    side > 0.0 ? side : std::max({ 1.0, std::fabs(box.XMin), std::fabs(box.YMin) });
-  const auto below = [pad](double v) { return std::min(v - pad, std::nextafter(v, -HUGE_VAL)); };
-  const auto above = [pad](double v) { return std::max(v + pad, std::nextafter(v, HUGE_VAL)); };
-  const double xmin = below(box.XMin), xmax = above(box.XMax);
-  const double ymin = below(box.YMin), ymax = above(box.YMax);
-  if (!std::isfinite(xmin) || !std::isfinite(xmax) || !std::isfinite(ymin) || !std::isfinite(ymax))
-  {
-    return window;
-  }
-  std::vector<tessera::HalfPlane> constraints = window.EffectiveConstraints();
-  constraints.push_back({ -1.0, 0.0, xmin });
-  constraints.push_back({ 1.0, 0.0, -xmax });
-  constraints.push_back({ 0.0, -1.0, ymin });
-  constraints.push_back({ 0.0, 1.0, -ymax });
-  try
-  {
-    return tessera::Window(constraints);
-  }
-  catch (const tessera::InputError&)
-  {
-    return window;
-  }
-}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -179,7 +138,7 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     // Coordinates of some 1e100 or more, or 1e-100 or less: the triangulation of points and
     // window scaled by a power of two (exactly) is the same, and its faces are ids, so nothing is
     // scaled back; every decision then stays within the predicates' exact range.
-    window = CutToPoints(std::move(window), points);
+    window = tessera_vtk::CutToPoints(std::move(window), points);
     tessera::ScaleIntoExactRange(window, points);
     const tessera::DirichletTessellation tessellation(std::move(window), std::move(points));
     this->UpdateProgress(0.7);

@@ -331,8 +331,12 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     {
       vtkNew<vtkDoubleArray> field;
       field->SetName("Field");
-      CopyOntoImage(
-        result.Field, grid, outWidth, outHeight, std::numeric_limits<double>::quiet_NaN(), field.Get());
+      CopyOntoImage(result.Field,
+        grid,
+        outWidth,
+        outHeight,
+        std::numeric_limits<double>::quiet_NaN(),
+        field.Get());
       imageOut->GetPointData()->AddArray(field);
       imageOut->GetPointData()->SetActiveScalars("Field");
       for (const auto& [name, ridge] : { std::make_pair("MinorRidge", &result.MinorRidge),
