@@ -1138,17 +1138,13 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   // Everything valid but unused is reported by id.
   // A gauge by its station id, or by its point id when it has none (an empty id named nothing);
   // by both when other gauges have its id ("A (gauge 4)": "A" alone would name them all).
-  // (Ids shared as written, or as the observations' matching reads them: "050848" and "50848".)
+  // (Ids shared by the key the observations are matched by, tessera::StationKey: "050848" and
+  // "50848" are one id; with or without observations.)
   std::vector<char> idShared(gaugeCount, 0);
-  for (const tessera::SharedStation& pair : rows->Match.SharedStations)
-  {
-    idShared[static_cast<std::size_t>(pair.FirstGauge)] = 1;
-    idShared[static_cast<std::size_t>(pair.Gauge)] = 1;
-  }
-  std::map<std::string, std::size_t> firstWithName;
+  std::map<std::string, std::size_t> firstWithKey;
   for (std::size_t g = 0; stationIds && g < gaugeCount; ++g)
   {
-    const auto found = firstWithName.emplace(gaugeNames[g], g);
+    const auto found = firstWithKey.emplace(tessera::StationKey(gaugeNames[g]), g);
     if (!found.second && !gaugeNames[g].empty())
     {
       idShared[g] = 1;
