@@ -56,6 +56,22 @@ int SetBitCount(std::uint64_t word)
 #endif
 }
 
+/// The bytes [0, available) of bytes, at most 8, as a word (little-endian order, zeros above):
+/// one 8-byte load when there are 8.
+std::uint64_t BytesAt(const char* bytes, std::size_t available)
+{
+  std::uint64_t word = 0;
+  if (available >= 8)
+  {
+    std::memcpy(&word, bytes, 8); // (a constant size: one load)
+  }
+  else
+  {
+    std::memcpy(&word, bytes, available);
+  }
+  return word;
+}
+
 /// Bits 0..count-1 (count <= 64) of the result: whether bytes[0..count-1] (each 0 or 1) are 1.
 /// Eight bytes per multiplication: for bytes b_i of 0 or 1 at bits 8i, the product with this
 /// constant holds b_i at bit 56 + i, as the one term 8i + 7j + 7 = 56 + i with i + j = 7; the
@@ -64,18 +80,9 @@ std::uint64_t PackedBytes(const char* bytes, std::size_t count)
 {
   constexpr std::uint64_t Gather = 0x0102040810204080ull;
   std::uint64_t word = 0;
-  std::size_t k = 0;
-  for (; k + 8 <= count; k += 8)
+  for (std::size_t k = 0; k < count; k += 8)
   {
-    std::uint64_t eight = 0;
-    std::memcpy(&eight, bytes + k, 8);
-    word |= ((eight * Gather) >> 56) << k;
-  }
-  if (k < count)
-  {
-    std::uint64_t rest = 0;
-    std::memcpy(&rest, bytes + k, count - k);
-    word |= ((rest * Gather) >> 56) << k;
+    word |= ((BytesAt(bytes + k, count - k) * Gather) >> 56) << k;
   }
   return word;
 }
@@ -351,18 +358,8 @@ struct ThiessenArealAverage::State
     const char* const before = this->Used.data();
     for (std::size_t g = first; g < end; g += 8)
     {
-      std::uint64_t a = 0, b = 0;
-      if (g + 8 <= end)
-      {
-        std::memcpy(&a, now + g, 8); // (a constant size: one load)
-        std::memcpy(&b, before + g, 8);
-      }
-      else
-      {
-        std::memcpy(&a, now + g, end - g);
-        std::memcpy(&b, before + g, end - g);
-      }
-      for (std::uint64_t differ = a ^ b; differ != 0; differ &= differ - 1)
+      const std::uint64_t differs = BytesAt(now + g, end - g) ^ BytesAt(before + g, end - g);
+      for (std::uint64_t differ = differs; differ != 0; differ &= differ - 1)
       {
         this->ChangedGauges.push_back(static_cast<std::int32_t>(g + LowestSetBit(differ) / 8));
       }
