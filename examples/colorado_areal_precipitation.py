@@ -102,10 +102,10 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     station's observations go to, by station_key() (ids are compared as the filter compares them;
     a month none of whose rows names a gauge's station is a month where no gauge reported).
     filler: a gauge's station id, given to the rows of those months. missing_values: numbers that
-    mean missing (--missing-value, such as -9999), read as a missing value. station_ids: the
-    stations file's ids as written, for the message when no row
-    names a gauge's station (stations_path: the stations file, for the message): ids that do not
-    match at all (a prefix, another numbering) would otherwise give months without a mean."""
+    mean missing (--missing-value, such as -9999), read as a missing value. Ends the script when no
+    row names a gauge's station, naming the stations file (stations_path) and some of its ids as
+    written (station_ids): ids that do not match at all (a prefix, another numbering) would
+    otherwise give months without a mean."""
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
     from vtkmodules.vtkCommonDataModel import vtkTable
 
@@ -137,10 +137,10 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
         value = math.nan
         if csv_input.is_missing(row.get("precip")):
             unrecorded += 1
-        elif csv_input.number(row, "precip", path, line) in missing_values:
+        elif (number := csv_input.number(row, "precip", path, line)) in missing_values:
             coded += 1
         else:
-            value = csv_input.number(row, "precip", path, line)
+            value = number
             if value < 0:
                 negative.append(line)
             if gauge is not None:
