@@ -1079,7 +1079,8 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
       " names for " + std::to_string(gaugesLonLat.size()) + " gauges");
   }
   CheckCatchmentLonLat(catchmentRingOffsets, catchmentLonLat);
-  const CleanRings rings = ValidateRings(catchmentRingOffsets, catchmentLonLat);
+  const CleanRings rings =
+    WithContactsAsVertices(ValidateRings(catchmentRingOffsets, catchmentLonLat));
 
   if (settings.HaveProjection)
   {

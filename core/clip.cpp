@@ -167,6 +167,13 @@ bool SegmentMeetsBox(const Point2& a, const Point2& b, const Box2& box)
     orient2d_fast(a, b, { box.XMin, box.YMax }) != side;
 }
 
+// Whether p lies on the closed segment ab, exactly.
+bool OnClosedSegment(const Point2& a, const Point2& b, const Point2& p)
+{
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+    p.y <= std::max(a.y, b.y) && orient2d_fast(a, b, p) == 0;
+}
+
 // Winding-number contribution of segment a->b at p, by the signed crossings of the ray from p
 // towards +x. Half-open in y so a vertex on the ray counts once; exact through orient2d.
 int RayCrossing(const Point2& a, const Point2& b, const Point2& p)
@@ -533,6 +540,7 @@ Catchment::Catchment(const std::vector<std::size_t>& ringOffsets,
   const std::vector<Point2>& vertices)
 {
   CleanRings clean = ValidateRings(ringOffsets, vertices);
+  this->ChooseReferencePoints(clean);
   this->Offsets = std::move(clean.RingOffsets);
   this->Points = std::move(clean.Vertices);
   this->EdgeRing.resize(this->Points.size());
@@ -668,21 +676,103 @@ void Catchment::RayCrossings(const Point2& p, std::vector<std::pair<std::uint32_
   }
 }
 
-// Rings do not touch, so a ring's first vertex is strictly inside or outside every other ring,
-// and a ring encloses another exactly when it winds around that vertex.
+// Rings do not cross, so the whole of ring r, less its points on ring s, is strictly inside ring s
+// or strictly outside it, and a vertex of r on no other ring tells for every s at once. A ring
+// may touch others at each of its vertices (the middle square of a checkerboard): then its first
+// vertex is taken, and the rings through it are asked at the contact (EnclosesAt).
+void Catchment::ChooseReferencePoints(const CleanRings& clean)
+{
+  this->References.clear();
+  for (std::size_t r = 0; r + 1 < clean.RingOffsets.size(); ++r)
+  {
+    const std::size_t begin = clean.RingOffsets[r], end = clean.RingOffsets[r + 1];
+    std::size_t v = begin;
+    while (v < end && clean.OnOtherRing[v])
+    {
+      ++v;
+    }
+    const bool free = v < end;
+    v = free ? v : begin;
+    this->References.push_back(
+      { clean.Vertices[v], clean.Vertices[v + 1 == end ? begin : v + 1], !free });
+  }
+}
+
+// Whether ring s, which passes through p, encloses the ring whose ray from p passes through d.
+// s's rays at p point to the vertices before and after p along s; its inside is the angle swept
+// anticlockwise from the ray forwards to the ray backwards when s runs anticlockwise (the inside
+// on its left), and the other angle when it runs clockwise.
+//
+//      backwards                  s anticlockwise, p a corner:
+//          |   inside             the inside is swept anticlockwise
+//          p------ forwards       from "forwards" round to "backwards"
+bool Catchment::EnclosesAt(std::uint32_t s, const Point2& p, const Point2& d) const
+{
+  const std::size_t cell = this->CellX(p.x) + this->CellY(p.y) * this->GridX;
+  for (std::uint32_t k = this->CellStart[cell]; k < this->CellStart[cell + 1]; ++k)
+  {
+    const std::uint32_t v = this->CellEdges[k];
+    const Point2& a = this->Points[v];
+    const Point2& b = this->Points[this->NextVertex(v)];
+    // The segment that p starts is skipped: the one ending at p, in the same cell, is taken.
+    if (this->EdgeRing[v] != s || a == p || !OnClosedSegment(a, b, p))
+    {
+      continue;
+    }
+    const Point2& forwards = b == p ? this->Points[this->NextVertex(this->NextVertex(v))] : b;
+    const std::size_t begin = this->Offsets[s];
+    const bool anticlockwise =
+      RingOrientation(&this->Points[begin], this->Offsets[s + 1] - begin) > 0;
+    return anticlockwise ? InsideAngle(p, forwards, a, d) : InsideAngle(p, a, forwards, d);
+  }
+  return false; // (not reached: s passes through p)
+}
+
+// The rings through p other than r, each once, ascending.
+std::vector<std::uint32_t> Catchment::RingsThrough(const Point2& p, std::size_t r) const
+{
+  std::vector<std::uint32_t> rings;
+  const std::size_t cell = this->CellX(p.x) + this->CellY(p.y) * this->GridX;
+  for (std::uint32_t k = this->CellStart[cell]; k < this->CellStart[cell + 1]; ++k)
+  {
+    const std::uint32_t v = this->CellEdges[k];
+    if (this->EdgeRing[v] != r &&
+      OnClosedSegment(this->Points[v], this->Points[this->NextVertex(v)], p))
+    {
+      rings.push_back(this->EdgeRing[v]);
+    }
+  }
+  std::sort(rings.begin(), rings.end());
+  rings.erase(std::unique(rings.begin(), rings.end()), rings.end());
+  return rings;
+}
+
+// A ring encloses ring r exactly when it winds around r's reference point, or, for a ring through
+// that point, when its inside holds r's ray from there.
 std::vector<std::int32_t> Catchment::EnclosingRings(std::size_t r) const
 {
+  const Reference& reference = this->References[r];
+  const std::vector<std::uint32_t> through =
+    reference.OnOtherRing ? this->RingsThrough(reference.Point, r) : std::vector<std::uint32_t>();
   std::vector<std::pair<std::uint32_t, int>> crossings;
-  this->RayCrossings(this->Points[this->Offsets[r]], crossings);
+  this->RayCrossings(reference.Point, crossings);
   SumByRing(crossings);
   std::vector<std::int32_t> enclosing;
   for (const auto& [ring, winding] : crossings)
   {
-    if (ring != r && winding != 0)
+    if (ring != r && winding != 0 && !std::binary_search(through.begin(), through.end(), ring))
     {
       enclosing.push_back(static_cast<std::int32_t>(ring));
     }
   }
+  for (const std::uint32_t ring : through)
+  {
+    if (this->EnclosesAt(ring, reference.Point, reference.Towards))
+    {
+      enclosing.push_back(static_cast<std::int32_t>(ring));
+    }
+  }
+  std::sort(enclosing.begin(), enclosing.end());
   return enclosing;
 }
 

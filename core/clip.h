@@ -47,6 +47,8 @@
 namespace tessera
 {
 
+struct CleanRings;
+
 /// Polygons as flat rings: ring r has vertices RingOffsets[r] .. RingOffsets[r+1]-1.
 struct ClippedRings
 {
@@ -88,7 +90,9 @@ public:
   /// do not matter: a point is in the catchment when it is inside an odd number of rings. Rings may
   /// repeat their first vertex at the end. Throws InputError (naming ring, vertex and segment
   /// indices) for a NaN or infinite vertex, a ring with fewer than 3 distinct vertices, a ring
-  /// that touches or crosses itself, or two rings that touch or cross.
+  /// that touches or crosses itself, or two rings that cross or share a stretch of boundary. Two
+  /// rings may touch at single points (a hole touching the outer boundary at a vertex, as OGC
+  /// allows), when each ring has a vertex on no other ring.
   Catchment(const std::vector<std::size_t>& ringOffsets, const std::vector<Point2>& vertices);
 
   std::size_t RingCount() const { return this->Offsets.size() - 1; }
@@ -160,6 +164,9 @@ public:
     double coordinateEpsilon = std::numeric_limits<double>::epsilon()) const;
 
 private:
+  void ChooseReferencePoints(const CleanRings& clean);
+  bool EnclosesAt(std::uint32_t s, const Point2& p, const Point2& d) const;
+  std::vector<std::uint32_t> RingsThrough(const Point2& p, std::size_t r) const;
   void BuildGrid();
   void FindDepths();
   void OrientRings();
@@ -186,6 +193,15 @@ private:
   std::vector<Point2> Points;
   std::vector<std::uint32_t> EdgeRing; // ring of the segment starting at each vertex
   std::vector<int> Depths;
+  // Per ring, the point its nesting is decided at: a vertex on no other ring where it has one,
+  // and the next vertex, along one of the ring's rays from there.
+  struct Reference
+  {
+    Point2 Point;
+    Point2 Towards;
+    bool OnOtherRing;
+  };
+  std::vector<Reference> References;
   std::vector<bool> Reversed;
   double TotalArea = 0.0;
   Box2 Box;

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 namespace tessera
 {
@@ -152,28 +153,130 @@ std::string Describe(const CleanRings& clean, const Segment& s)
   return "segment " + std::to_string(clean.SourceIndex[s.Start]);
 }
 
-// Returns whether the pair is a defect; neighbours in one ring may share their common vertex.
-bool PairIntersects(const CleanRings& clean, const Segment& s, const Segment& t)
+std::size_t PreviousVertex(const CleanRings& clean, std::size_t ring, std::size_t v)
+{
+  return v == clean.RingOffsets[ring] ? clean.RingOffsets[ring + 1] - 1 : v - 1;
+}
+
+std::size_t NextVertex(const CleanRings& clean, std::size_t ring, std::size_t v)
+{
+  return v + 1 == clean.RingOffsets[ring + 1] ? clean.RingOffsets[ring] : v + 1;
+}
+
+// What two segments of different rings have in common.
+enum class Contact
+{
+  None,
+  Touch, // one point, where the rings meet without crossing: allowed
+  Cross,
+  Overlap // a stretch of positive length
+};
+
+// The two points that a ring's rays from p pass through, where p is a point of its segment s: the
+// segment's far end and the next segment's, at a vertex; both ends of s inside it.
+std::pair<Point2, Point2> RaysAt(const CleanRings& clean, const Segment& s, const Point2& p)
+{
+  const Point2& a = clean.Vertices[s.Start];
+  const Point2& b = clean.Vertices[s.End];
+  if (p == a)
+  {
+    return { clean.Vertices[PreviousVertex(clean, s.Ring, s.Start)], b };
+  }
+  if (p == b)
+  {
+    return { a, clean.Vertices[NextVertex(clean, s.Ring, s.End)] };
+  }
+  return { a, b };
+}
+
+// Rings A (segment s) and B (segment t) meet at p, a vertex of one of them. Each passes through p
+// once (a ring that meets itself is refused on its own), along two rays; B crosses A there when
+// A's rays separate B's, and the rings share a stretch when a ray of one is a ray of the other:
+//
+//          b1                        b1
+//          |                         |
+//    a1 ---p--- a2   touch     a1 ---p--- a2   cross
+//         / \                        |
+//       b2   (both of B's rays        b2   (one ray each side of A)
+//            on one side of A)
+Contact ContactAt(const CleanRings& clean, const Segment& s, const Segment& t, const Point2& p)
+{
+  const auto [a1, a2] = RaysAt(clean, s, p);
+  const auto [b1, b2] = RaysAt(clean, t, p);
+  for (const Point2& b : { b1, b2 })
+  {
+    for (const Point2& a : { a1, a2 })
+    {
+      if (NeighboursOverlap(a, p, b))
+      {
+        return Contact::Overlap;
+      }
+    }
+  }
+  return InsideAngle(p, a1, a2, b1) == InsideAngle(p, a1, a2, b2) ? Contact::Touch : Contact::Cross;
+}
+
+// Segments s and t of different rings, exactly.
+Contact ContactOf(const CleanRings& clean, const Segment& s, const Segment& t, Point2& where)
 {
   const Point2& a = clean.Vertices[s.Start];
   const Point2& b = clean.Vertices[s.End];
   const Point2& c = clean.Vertices[t.Start];
   const Point2& d = clean.Vertices[t.End];
-  if (s.Ring == t.Ring)
+  const int o1 = orient2d_fast(a, b, c);
+  const int o2 = orient2d_fast(a, b, d);
+  const int o3 = orient2d_fast(c, d, a);
+  const int o4 = orient2d_fast(c, d, b);
+  if (o1 * o2 < 0 && o3 * o4 < 0)
   {
-    if (s.End == t.Start)
-    {
-      return NeighboursOverlap(a, b, d);
-    }
-    if (t.End == s.Start)
-    {
-      return NeighboursOverlap(c, d, b);
-    }
+    return Contact::Cross; // the interiors cross
+  }
+  // Otherwise they meet, if at all, at an end of one of them lying on the other.
+  if (o1 == 0 && OnSegment(a, b, c))
+  {
+    where = c;
+  }
+  else if (o2 == 0 && OnSegment(a, b, d))
+  {
+    where = d;
+  }
+  else if (o3 == 0 && OnSegment(c, d, a))
+  {
+    where = a;
+  }
+  else if (o4 == 0 && OnSegment(c, d, b))
+  {
+    where = b;
+  }
+  else
+  {
+    return Contact::None;
+  }
+  return ContactAt(clean, s, t, where);
+}
+
+// Neighbours in one ring share their common vertex; any other contact within a ring is a defect.
+bool MeetsWithinRing(const CleanRings& clean, const Segment& s, const Segment& t)
+{
+  const Point2& a = clean.Vertices[s.Start];
+  const Point2& b = clean.Vertices[s.End];
+  const Point2& c = clean.Vertices[t.Start];
+  const Point2& d = clean.Vertices[t.End];
+  if (s.End == t.Start)
+  {
+    return NeighboursOverlap(a, b, d);
+  }
+  if (t.End == s.Start)
+  {
+    return NeighboursOverlap(c, d, b);
   }
   return SegmentsIntersect(a, b, c, d);
 }
 
-[[noreturn]] void ReportIntersection(const CleanRings& clean, const Segment& s, const Segment& t)
+[[noreturn]] void ReportContact(const CleanRings& clean,
+  const Segment& s,
+  const Segment& t,
+  Contact contact)
 {
   const Segment& first = s.Start < t.Start ? s : t;
   const Segment& second = s.Start < t.Start ? t : s;
@@ -187,15 +290,41 @@ bool PairIntersects(const CleanRings& clean, const Segment& s, const Segment& t)
   {
     text << "ring " << first.Ring << " " << Describe(clean, first) << " and ring " << second.Ring
          << " " << Describe(clean, second)
-         << " touch or cross (rings must be disjoint; holes and islands are separate rings)";
+         << (contact == Contact::Overlap ? " share a stretch of boundary" : " cross")
+         << " (rings may touch at single points, but not cross or share boundary; holes and "
+            "islands are separate rings)";
   }
   throw InputError(text.str());
 }
 
+// The vertices of s and t at p (a point where their rings touch), marked as lying on another ring;
+// or p listed as inside a segment.
+void MarkTouch(CleanRings& clean, const Segment& s, const Segment& t, const Point2& p)
+{
+  for (const Segment* segment : { &s, &t })
+  {
+    bool atVertex = false;
+    for (const std::size_t v : { segment->Start, segment->End })
+    {
+      if (clean.Vertices[v] == p)
+      {
+        clean.OnOtherRing[v] = true;
+        atVertex = true;
+      }
+    }
+    if (!atVertex)
+    {
+      clean.ContactsInsideSegments.emplace_back(segment->Start, p);
+    }
+  }
+}
+
 // Sweep over segments sorted by their left end: a segment is compared only with those whose
 // x-extents overlap it, then by y-extent, then exactly.
-void CheckIntersections(const CleanRings& clean)
+void CheckIntersections(CleanRings& clean)
 {
+  clean.OnOtherRing.assign(clean.Vertices.size(), false);
+  clean.ContactsInsideSegments.clear();
   std::vector<Segment> segments = CollectSegments(clean);
   std::sort(segments.begin(),
     segments.end(),
@@ -211,15 +340,84 @@ void CheckIntersections(const CleanRings& clean)
       {
         continue;
       }
-      if (PairIntersects(clean, s, t))
+      if (s.Ring == t.Ring)
       {
-        ReportIntersection(clean, s, t);
+        if (MeetsWithinRing(clean, s, t))
+        {
+          ReportContact(clean, s, t, Contact::Cross);
+        }
+        continue;
+      }
+      Point2 where;
+      const Contact contact = ContactOf(clean, s, t, where);
+      if (contact == Contact::Touch)
+      {
+        MarkTouch(clean, s, t, where);
+      }
+      else if (contact != Contact::None)
+      {
+        ReportContact(clean, s, t, contact);
       }
     }
   }
 }
 
 } // namespace
+
+bool InsideAngle(const Point2& p, const Point2& a1, const Point2& a2, const Point2& d)
+{
+  const int turn = orient2d_fast(p, a1, a2);
+  const int fromFirst = orient2d_fast(p, a1, d);
+  const int toSecond = orient2d_fast(p, d, a2);
+  if (turn > 0)
+  {
+    return fromFirst > 0 && toSecond > 0; // an angle below 180 degrees
+  }
+  if (turn < 0)
+  {
+    return fromFirst > 0 || toSecond > 0; // above 180: all but the angle from a2 to a1
+  }
+  return fromFirst > 0; // a1 and a2 opposite: the half-plane left of the ray through a1
+}
+
+CleanRings WithContactsAsVertices(const CleanRings& rings)
+{
+  if (rings.ContactsInsideSegments.empty())
+  {
+    return rings;
+  }
+  // By segment, then along it from its first vertex (both coordinates move monotonically there).
+  std::vector<std::pair<std::size_t, Point2>> contacts = rings.ContactsInsideSegments;
+  const auto along = [&rings](const std::pair<std::size_t, Point2>& c)
+  {
+    const Point2& a = rings.Vertices[c.first];
+    return std::make_tuple(c.first, std::abs(c.second.x - a.x), std::abs(c.second.y - a.y));
+  };
+  std::sort(contacts.begin(),
+    contacts.end(),
+    [&along](const auto& c, const auto& d) { return along(c) < along(d); });
+  contacts.erase(std::unique(contacts.begin(), contacts.end()), contacts.end());
+  CleanRings out;
+  out.RingOffsets.push_back(0);
+  std::size_t next = 0;
+  for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
+  {
+    for (std::size_t v = rings.RingOffsets[r]; v < rings.RingOffsets[r + 1]; ++v)
+    {
+      out.Vertices.push_back(rings.Vertices[v]);
+      out.SourceIndex.push_back(rings.SourceIndex[v]);
+      out.OnOtherRing.push_back(rings.OnOtherRing[v]);
+      for (; next < contacts.size() && contacts[next].first == v; ++next)
+      {
+        out.Vertices.push_back(contacts[next].second);
+        out.SourceIndex.push_back(rings.SourceIndex[v]);
+        out.OnOtherRing.push_back(true);
+      }
+    }
+    out.RingOffsets.push_back(out.Vertices.size());
+  }
+  return out;
+}
 
 bool SegmentsIntersect(const Point2& a, const Point2& b, const Point2& c, const Point2& d)
 {

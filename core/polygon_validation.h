@@ -1,12 +1,16 @@
 #pragma once
 // Validation of a polygon given as rings (flat arrays), before it is used as a region by the
 // even-odd rule: finite coordinates, at least 3 distinct vertices per ring, no ring touching or
-// crossing itself or another ring. Every decision about segments uses the exact orient2d, so a
+// crossing itself, and no two rings crossing or sharing a stretch of boundary. Two rings may touch
+// at single points, as OGC's simple features allow (a hole touching its shell at a vertex, parts of
+// a multipolygon meeting at a corner): the even-odd region is the same whichever side of such a
+// point its rings are taken to pass. Every decision about segments uses the exact orient2d, so a
 // polygon is accepted or rejected the same way whatever its magnitude or offset.
 
 #include "geometry.h"
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace tessera
@@ -23,6 +27,11 @@ struct CleanRings
   /// clean ring runs from vertex k to vertex k+1 (cyclically); in the caller's numbering it is
   /// segment SourceIndex[k], because of a run of repeats the last one is kept.
   std::vector<std::size_t> SourceIndex;
+  /// Per kept vertex, whether it lies on another ring (a point where two rings touch).
+  std::vector<bool> OnOtherRing;
+  /// Where another ring's vertex touches a segment inside it: the segment (its first vertex's
+  /// index in Vertices) and the point, in no particular order, perhaps more than once.
+  std::vector<std::pair<std::size_t, Point2>> ContactsInsideSegments;
 };
 
 /// Checks the rings and returns them without repeated consecutive vertices. ringOffsets has one
@@ -30,13 +39,25 @@ struct CleanRings
 /// Throws InputError naming the ring and vertex or segment indices (the caller's numbering) for:
 /// malformed offsets; a NaN or infinite coordinate; a ring with fewer than 3 distinct vertices;
 /// two segments of one ring that touch or cross other than at their shared vertex (collinear
-/// overlap of neighbouring segments included); two rings that touch or cross.
+/// overlap of neighbouring segments included); two rings that cross, at a point inside segments
+/// or where they meet (one's rays there separating the other's), or that share a stretch of
+/// boundary.
 /// segmentOf, for rings the caller made by cutting its own into pieces (densified edges): per
 /// vertex, the caller's number of the segment that starts there, which messages then use (and
 /// SourceIndex holds).
 CleanRings ValidateRings(const std::vector<std::size_t>& ringOffsets,
   const std::vector<Point2>& vertices,
   const std::vector<std::size_t>* segmentOf = nullptr);
+
+/// The rings with every point of ContactsInsideSegments made a vertex of its segment (SourceIndex
+/// the segment's, OnOtherRing set), so that rings meet at vertices only. A map then applied to
+/// every vertex, with the segments densified (the areal average's projection), keeps them meeting
+/// there: the point of a segment would otherwise land on one side of its image or the other.
+CleanRings WithContactsAsVertices(const CleanRings& rings);
+
+/// Whether the ray from p through d lies strictly inside the angle swept anticlockwise from the ray
+/// through a1 to the ray through a2 (three distinct rays from p), exactly.
+bool InsideAngle(const Point2& p, const Point2& a1, const Point2& a2, const Point2& d);
 
 /// Whether the closed segments ab and cd have a point in common, exactly.
 bool SegmentsIntersect(const Point2& a, const Point2& b, const Point2& c, const Point2& d);

@@ -121,6 +121,48 @@ bool ExactInsideRegion(const QPoint& p, const Rings& rings)
   return inside;
 }
 
+bool ExactOnRing(const QPoint& p, const std::vector<QPoint>& ring)
+{
+  for (std::size_t i = 0; i < ring.size(); ++i)
+  {
+    const QPoint& a = ring[i];
+    const QPoint& b = ring[(i + 1) % ring.size()];
+    if (sgn(Cross(a, b, p)) == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
+      std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// How many other rings enclose ring r, each tested at a point of ring r not on it (rings may touch
+// at points, so a given vertex can lie on another ring): its vertices, then its edges' midpoints.
+int ExactDepth(const Rings& rings, std::size_t r)
+{
+  std::vector<QPoint> ring = ToExact(rings.Ring(r));
+  for (std::size_t i = 0, n = ring.size(); i < n; ++i)
+  {
+    const QPoint& a = ring[i];
+    const QPoint& b = ring[(i + 1) % n];
+    ring.push_back({ (a.x + b.x) / 2, (a.y + b.y) / 2 });
+  }
+  int depth = 0;
+  for (std::size_t s = 0; s < rings.Count(); ++s)
+  {
+    if (s == r)
+    {
+      continue;
+    }
+    const std::vector<QPoint> other = ToExact(rings.Ring(s));
+    const auto off = std::find_if(
+      ring.begin(), ring.end(), [&](const QPoint& p) { return !ExactOnRing(p, other); });
+    EXPECT_NE(off, ring.end()) << "ring " << r << " lies on ring " << s;
+    depth += off != ring.end() && ExactInsideRing(*off, other);
+  }
+  return depth;
+}
+
 // Area of (even-odd region of the rings) & tile: each ring made anticlockwise and clipped whole,
 // with the sign given by how many other rings enclose it.
 mpq_class ExactClippedArea(const Rings& rings, const std::vector<Point2>& tile)
@@ -134,11 +176,7 @@ mpq_class ExactClippedArea(const Rings& rings, const std::vector<Point2>& tile)
     {
       std::reverse(ring.begin(), ring.end());
     }
-    int depth = 0;
-    for (std::size_t s = 0; s < rings.Count(); ++s)
-    {
-      depth += s != r && ExactInsideRing(ring[0], ToExact(rings.Ring(s)));
-    }
+    const int depth = ExactDepth(rings, r);
     const mpq_class piece = ExactArea(ExactClip(ring, window));
     total += depth % 2 == 0 ? piece : mpq_class(-piece);
   }
@@ -173,11 +211,7 @@ mpq_class ExactRegionArea(const Rings& rings)
   for (std::size_t r = 0; r < rings.Count(); ++r)
   {
     const std::vector<QPoint> ring = ToExact(rings.Ring(r));
-    int depth = 0;
-    for (std::size_t s = 0; s < rings.Count(); ++s)
-    {
-      depth += s != r && ExactInsideRing(ring[0], ToExact(rings.Ring(s)));
-    }
+    const int depth = ExactDepth(rings, r);
     const mpq_class area = abs(ExactArea(ring));
     total += depth % 2 == 0 ? area : mpq_class(-area);
   }
@@ -1093,6 +1127,101 @@ TEST(Clip, ProjectedLatticeThiessenTilesSumToCatchmentArea)
   EXPECT_NEAR(sum, exactArea.get_d(), 1e-12 * exactArea.get_d());
 }
 
+// ---- Rings that touch at points (OGC-valid polygons) --------------------------------------------
+
+// A square with two holes and an island, touching at single points: hole 1's vertex on the middle
+// of the square's left edge, hole 2 at hole 1's right vertex, the island at hole 1's bottom
+// vertex. Each touching ring starts at its contact, so the first vertex is on another ring.
+Rings TouchingRings()
+{
+  Rings rings;
+  rings.Add(Rectangle(0, 0, 100, 100));
+  rings.Add({ { 0, 50 }, { 30, 20 }, { 60, 50 }, { 30, 80 } });
+  rings.Add({ { 60, 50 }, { 80, 30 }, { 90, 50 }, { 80, 70 } });
+  rings.Add({ { 30, 20 }, { 40, 45 }, { 30, 60 }, { 20, 45 } });
+  return rings;
+}
+
+TEST(Clip, RingsTouchingAtPointsFollowEvenOdd)
+{
+  const Rings rings = TouchingRings();
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  EXPECT_EQ(catchment.RingDepths(), (std::vector<int>{ 0, 1, 1, 2 }));
+  // 100 * 100 less the two diamonds (60 x 60 / 2 and 30 x 40 / 2), plus the island (20 x 40 / 2).
+  EXPECT_EQ(catchment.Area(), 10000.0 - 1800.0 - 600.0 + 400.0);
+  EXPECT_EQ(mpq_class(catchment.Area()), ExactRegionArea(rings));
+  EXPECT_TRUE(catchment.Contains({ 5, 10 }));
+  EXPECT_FALSE(catchment.Contains({ 10, 50 }));
+  EXPECT_FALSE(catchment.Contains({ 80, 50 }));
+  EXPECT_TRUE(catchment.Contains({ 30, 40 }));
+  for (unsigned seed = 40; seed < 43; ++seed)
+  {
+    CompareRandomTiles(rings, 0.0, seed, 150);
+  }
+  // Tiles with a contact point as a vertex, or on an edge.
+  for (const std::vector<Point2>& tile : { Rectangle(0, 40, 10, 60),
+         Rectangle(50, 40, 70, 60),
+         Rectangle(25, 10, 35, 30),
+         std::vector<Point2>{ { 55, 50 }, { 65, 50 }, { 60, 62 } } })
+  {
+    const mpq_class exact = ExactClippedArea(rings, tile);
+    EXPECT_GT(exact, 0);
+    EXPECT_NEAR(
+      catchment.ClipArea(tile), exact.get_d(), Tolerance(exact, tessera_test::ShoelaceArea(tile)));
+  }
+}
+
+// A ring may touch others at every one of its vertices: a hole inscribed in the outer ring.
+TEST(Clip, AHoleTouchingAtEveryVertexIsAHole)
+{
+  Rings rings;
+  rings.Add({ { 0, 5 }, { 5, 0 }, { 10, 5 } });
+  rings.Add(Rectangle(0, 0, 10, 10));
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  EXPECT_EQ(catchment.RingDepths(), (std::vector<int>{ 1, 0 }));
+  EXPECT_EQ(catchment.Area(), 75.0);
+  EXPECT_EQ(mpq_class(catchment.Area()), ExactRegionArea(rings));
+  EXPECT_FALSE(catchment.Contains({ 5, 2 }));
+  EXPECT_TRUE(catchment.Contains({ 5, 7 }));
+  EXPECT_TRUE(catchment.Contains({ 1, 1 }));
+}
+
+// Parts of a multipolygon meeting at corners (a checkerboard, whose inner squares touch others at
+// all four corners), and the sum of a tiling.
+TEST(Clip, PartsMeetingAtCornersSumToTheirArea)
+{
+  Rings rings;
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      if ((i + j) % 2 == 0)
+      {
+        rings.Add(Rectangle(10.0 * i, 10.0 * j, 10.0 * i + 10, 10.0 * j + 10));
+      }
+    }
+  }
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  EXPECT_EQ(catchment.Area(), 800.0);
+  EXPECT_EQ(catchment.RingDepths(), std::vector<int>(8, 0));
+  std::mt19937 random(44);
+  std::vector<std::size_t> offsets;
+  std::vector<Point2> vertices;
+  TilingOf(catchment.Bounds(), 23, random, offsets, vertices);
+  const tessera::ClippedTiles clipped = catchment.ClipAll(offsets, vertices);
+  double sum = 0.0;
+  for (std::size_t t = 0; t + 1 < offsets.size(); ++t)
+  {
+    const std::vector<Point2> tile(vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t]),
+      vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t + 1]));
+    const mpq_class exact = ExactClippedArea(rings, tile);
+    EXPECT_NEAR(
+      clipped.Areas[t], exact.get_d(), Tolerance(exact, tessera_test::ShoelaceArea(tile)));
+    sum += clipped.Areas[t];
+  }
+  EXPECT_NEAR(sum, 800.0, 1e-12 * 800.0);
+}
+
 // ---- Bad input ---------------------------------------------------------------------------------
 
 TEST(Clip, RejectsBadCatchmentsNamingRingsAndSegments)
@@ -1109,12 +1238,25 @@ TEST(Clip, RejectsBadCatchmentsNamingRingsAndSegments)
   const std::string crossed = build(crossing);
   EXPECT_NE(crossed.find("ring 0 segment 1 and ring 1 segment"), std::string::npos) << crossed;
 
-  Rings touching;
-  touching.Add(Rectangle(0, 0, 4, 4));
-  touching.Add({ { 4, 4 }, { 6, 4 }, { 6, 6 } });
-  EXPECT_NE(build(touching).find("ring 0"), std::string::npos);
-  EXPECT_NE(build(touching).find("ring 1"), std::string::npos);
-
+  // Rings may touch at points, not cross there (the diagonal of ring 1 enters ring 0 at one
+  // corner and leaves at the other) nor share a stretch of boundary.
+  Rings crossingAtCorners;
+  crossingAtCorners.Add(Rectangle(0, 0, 10, 10));
+  crossingAtCorners.Add({ { 0, 0 }, { 10, 10 }, { 20, -5 } });
+  EXPECT_EQ(build(crossingAtCorners).rfind("ring 0 segment 0 and ring 1 segment", 0), 0u)
+    << build(crossingAtCorners);
+  EXPECT_NE(
+    build(crossingAtCorners).find("cross (rings may touch at single points"), std::string::npos);
+  Rings sharingAnEdge;
+  sharingAnEdge.Add(Rectangle(0, 0, 10, 10));
+  sharingAnEdge.Add(Rectangle(10, 2, 20, 8));
+  EXPECT_NE(build(sharingAnEdge).find("share a stretch of boundary"), std::string::npos)
+    << build(sharingAnEdge);
+  Rings alongAnEdge; // a hole whose edge runs along part of the outer boundary
+  alongAnEdge.Add(Rectangle(0, 0, 10, 10));
+  alongAnEdge.Add({ { 2, 0 }, { 6, 0 }, { 4, 3 } });
+  EXPECT_NE(build(alongAnEdge).find("share a stretch of boundary"), std::string::npos)
+    << build(alongAnEdge);
   Rings spike; // goes out and back along the same line
   spike.Add({ { 0, 0 }, { 4, 0 }, { 4, 4 }, { 4, 6 }, { 4, 5 }, { 0, 4 } });
   EXPECT_NE(build(spike).find("ring 0 is self-intersecting"), std::string::npos) << build(spike);

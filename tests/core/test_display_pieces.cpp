@@ -325,3 +325,45 @@ TEST(DisplayPieces, PiecesOfTessellatedTilesAreSimpleInLonLat)
       << "trial " << trial;
   }
 }
+
+// Rings that touch at points (a hole touching the outer boundary and another hole, an island
+// touching its hole; a checkerboard of squares meeting at corners): the pieces of random tiles
+// are simple, and where the region is pinched at a contact they do not run through it.
+TEST(DisplayPieces, RingsTouchingAtPointsGiveSimplePieces)
+{
+  const Catchment touching = MakeCatchment({ Rectangle(0, 0, 10, 10),
+    { { 0, 5 }, { 3, 2 }, { 6, 5 }, { 3, 8 } },
+    { { 6, 5 }, { 8, 3 }, { 9, 5 }, { 8, 7 } },
+    { { 3, 2 }, { 4, 4.5 }, { 3, 6 }, { 2, 4.5 } } });
+  const Catchment checkerboard = MakeCatchment({ Rectangle(0, 0, 5, 5),
+    Rectangle(5, 5, 10, 10),
+    Rectangle(0, 10, 5, 15),
+    Rectangle(10, 0, 15, 5) });
+  // A tile centred on a contact has its pieces on either side of it.
+  EXPECT_EQ(ExpectPiecesOfTheRegion(checkerboard, Rectangle(4, 4, 6, 6)), 2u);
+  std::mt19937 random(8);
+  std::uniform_real_distribution<double> where(-1.0, 11.0), size(0.3, 6.0), angle(0.0, 2 * M_PI);
+  for (int t = 0; t < 200; ++t)
+  {
+    const Point2 centre{ where(random), where(random) };
+    const double radius = size(random);
+    std::vector<double> angles(3 + random() % 6);
+    for (double& a : angles)
+    {
+      a = angle(random);
+    }
+    std::sort(angles.begin(), angles.end());
+    angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
+    std::vector<Point2> tile;
+    for (const double a : angles)
+    {
+      tile.push_back({ centre.x + radius * std::cos(a), centre.y + radius * std::sin(a) });
+    }
+    if (CompensatedPolygonArea(tile.data(), tile.size()) < 1e-3)
+    {
+      continue;
+    }
+    SCOPED_TRACE("tile " + std::to_string(t));
+    ExpectPiecesOfTheRegion(t % 2 == 0 ? touching : checkerboard, tile);
+  }
+}
