@@ -11,7 +11,8 @@ weighted mean. A gauge outside the state still owns the part of the state neares
 Writes into --out:
   areal_mean.csv         year,month,stations_used,stations_weighted,areal_mean (one row a month,
                          from the first to the last month of the observations, months without
-                         any row included; stations_used = gauges that reported,
+                         any row included; stations_used = gauges that reported, gauges
+                         at one place counted once,
                          stations_weighted = those whose tile reaches the catchment; areal_mean
                          is empty where no gauge reported)
   weights_YYYY_MM.csv    station_id,name,lon,lat,weight,area_km2,precip for --month
@@ -26,7 +27,8 @@ Writes into --out:
   areal_mean.png         the areal-mean time series
   unused_inputs.csv      kind,file,line,station_id,note: every gauge and observation that was valid
                          but not used (no observed value, a tile that never reaches the catchment,
-                         at the place of an earlier gauge, a repeated observation, an observation of
+                         at the place of an earlier gauge, an observation of such a gauge in a
+                         month where the earlier one reported, a repeated observation, an observation of
                          a station no gauge has, or without a station id or time); the warnings name
                          only the first 20 of each kind
 Units are those of the data (documented as mm; the magnitudes look like cm: see
@@ -402,7 +404,10 @@ def write_summary(table, path):
 UNUSED_LISTS = (
     ("UnobservedGaugeIds", "gauge without any observed value", False),
     ("UnweightedGaugeIds", "gauge whose tile never reaches the catchment", False),
-    ("DuplicateGaugeIds", "gauge at the place of an earlier gauge (the first that reports is used)", False),
+    ("DuplicateGaugeIds", "gauge at the place of an earlier gauge (used only in months where no "
+     "earlier gauge there reports)", False),
+    ("CoLocatedObservationRows", "observation of a gauge at the place of an earlier gauge that "
+     "reported that month (the earlier gauge's value is used)", True),
     ("RepeatedObservationRows", "observation repeating the station and month of an earlier one "
      "with a value (the earlier value is used)", True),
     ("UnusedObservationRows", "observation without a station id or time, or of a station no gauge has",

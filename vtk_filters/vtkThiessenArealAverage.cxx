@@ -32,14 +32,15 @@
 #include "observation_series.h"
 
 #include <algorithm>
-#include <map>
 #include <functional>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 
 vtkStandardNewMacro(vtkThiessenArealAverage);
@@ -420,6 +421,66 @@ std::string IncompleteRowName(vtkAbstractArray* stations, std::int32_t row)
 
 /// Per row, the value of a used row (NaN for the others, which are not read). Throws InputError
 /// naming the row for a value that is infinite or neither a number nor a missing-value marker.
+/// The observation rows with a value for a gauge whose place (the core's groups of gauges within
+/// CoLocatedMetres: (gauge, first gauge of its place) in duplicates) had another gauge report at
+/// the same step before it in gauge order: the core uses that one's value (the first that
+/// reports), so these values are valid and unused. Repeated rows are listed apart.
+std::vector<std::int32_t> CoLocatedRows(const ObservationRows& rows,
+  const std::vector<double>& rowValues,
+  const std::vector<std::vector<double>>& values,
+  const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates,
+  const std::vector<std::int32_t>& repeatedRows)
+{
+  std::vector<std::int32_t> found;
+  if (duplicates.empty() || rowValues.empty())
+  {
+    return found;
+  }
+  // Each place's gauges, ascending, keyed by its first gauge.
+  std::map<std::int32_t, std::vector<std::int32_t>> gaugesAt;
+  std::map<std::int32_t, std::int32_t> placeOf;
+  for (const auto& [gauge, first] : duplicates)
+  {
+    auto& group = gaugesAt[first];
+    if (group.empty())
+    {
+      group.push_back(first);
+      placeOf[first] = first;
+    }
+    group.push_back(gauge);
+    placeOf[gauge] = first;
+  }
+  for (auto& entry : gaugesAt)
+  {
+    std::sort(entry.second.begin(), entry.second.end());
+  }
+  const std::set<std::int32_t> repeated(repeatedRows.begin(), repeatedRows.end());
+  for (std::size_t r = 0; r < rowValues.size(); ++r)
+  {
+    const std::int32_t gauge = rows.Match.GaugeOfRow[r];
+    const std::int32_t step = rows.Steps.StepOfRow[r];
+    const auto place = placeOf.find(gauge);
+    if (gauge < 0 || step < 0 || place == placeOf.end() || std::isnan(rowValues[r]) ||
+      repeated.count(static_cast<std::int32_t>(r)))
+    {
+      continue;
+    }
+    const std::vector<double>& stepValues = values[static_cast<std::size_t>(step)];
+    for (const std::int32_t other : gaugesAt[place->second])
+    {
+      if (!std::isnan(stepValues[static_cast<std::size_t>(other)]))
+      {
+        if (other != gauge)
+        {
+          found.push_back(static_cast<std::int32_t>(r));
+        }
+        break; // the first that reported
+      }
+    }
+  }
+  return found;
+}
+
 std::vector<double> RowValues(vtkTable* table,
   const tessera::ObservationSteps& steps,
   const std::string& stationColumn,
@@ -1084,6 +1145,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   in.Times.clear();
   in.Values.clear();
   std::vector<std::int32_t> repeatedRows;
+  std::vector<double> rowValues; // per observation row (NaN: missing)
   static const ObservationRows noRows;
   const ObservationRows* rows = &noRows;
   vtkAbstractArray* stations = nullptr; // the observations' station column (for messages)
@@ -1106,10 +1168,9 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
       throw tessera::InputError(NoUsableRowMessage(*rows, stations));
     }
     in.Times = rows->Steps.Times;
-    tessera::StepSeries series = tessera::BuildSeries(rows->Match,
-      rows->Steps,
-      RowValues(observations, rows->Steps, this->StationColumn, this->ValueColumn),
-      gaugeCount);
+    rowValues = RowValues(observations, rows->Steps, this->StationColumn, this->ValueColumn);
+    tessera::StepSeries series =
+      tessera::BuildSeries(rows->Match, rows->Steps, rowValues, gaugeCount);
     in.Values = std::move(series.Values);
     repeatedRows = std::move(series.RepeatedRows);
   }
@@ -1226,6 +1287,16 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
       return idOf(static_cast<std::size_t>(duplicates[k])) + " (same place as " +
         idOf(static_cast<std::size_t>(duplicateOf[k])) + ")";
     });
+  const std::vector<std::int32_t> coLocatedRows =
+    CoLocatedRows(*rows, rowValues, in.Values, in.Average->DuplicateGauges(), repeatedRows);
+  warnOf(coLocatedRows.size(),
+    "observation row(s) have a value for a gauge at the place of another that reported at the "
+    "same time, whose value is used (rows from 0, listed in CoLocatedObservationRows)",
+    [&](std::size_t k)
+    {
+      const auto row = static_cast<std::size_t>(coLocatedRows[k]);
+      return "row " + std::to_string(row) + " (station " + RowStation(stations, row) + ")";
+    });
 
   // The summary: every step in order, each one updating the tessellation of the one before.
   vtkNew<vtkDoubleArray> timeColumn, means, covered;
@@ -1291,6 +1362,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateGaugeIds", duplicates);
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateOfGaugeIds", duplicateOf);
   tessera_vtk::AddIdFieldArray(in.Summary, "RepeatedObservationRows", repeatedRows);
+  tessera_vtk::AddIdFieldArray(in.Summary, "CoLocatedObservationRows", coLocatedRows);
   tessera_vtk::AddIdFieldArray(in.Summary, "UnusedObservationRows", rows->Steps.UnusedRows());
 }
 

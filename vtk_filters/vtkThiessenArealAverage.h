@@ -79,7 +79,7 @@
  * ParaView's time slider re-weights the tiles step by step.
  *
  * Output 1 (vtkTable): one row per time step: `Time`, `ArealMean` (NaN where no gauge reported),
- * `StationsUsed` (gauges reporting), `StationsWeighted` (of those, gauges whose tile reaches the
+ * `StationsUsed` (gauges reporting, co-located ones counted once), `StationsWeighted` (of those, gauges whose tile reaches the
  * catchment), `CoveredFraction` (sum of weights).
  *
  * Output 2 (vtkTable): every gauge's weight at every step, in long format: one row per time step
@@ -93,11 +93,12 @@
  * row), rows without a station id or a time (by row), a station id given to several gauges (its
  * observations go to the first), observation rows repeating the station and time of an earlier
  * row that had a value (the earlier value is used), co-located gauges (within 1 cm once
- * projected; the first is kept and its value used), and gauges with observed values whose tiles
+ * projected; at each step the first that reports is used), rows with a value for such a gauge at
+ * a step where an earlier one at its place reported, and gauges with observed values whose tiles
  * never reach the catchment at any step. Output 1's field data lists the gauges and rows among
  * them: `UnobservedGaugeIds`, `DuplicateGaugeIds`, `DuplicateOfGaugeIds`, `UnweightedGaugeIds`,
- * `RepeatedObservationRows` and `UnusedObservationRows` (rows not used: no station id, no time,
- * or a station no gauge has; table rows, from 0). Two more warnings flag input that is used but
+ * `RepeatedObservationRows`, `CoLocatedObservationRows` and `UnusedObservationRows` (rows not
+ * used: no station id, no time, or a station no gauge has; table rows, from 0). Two more warnings flag input that is used but
  * may not be what was meant: no gauge inside the catchment (a sign of swapped or unsigned
  * coordinates), and a catchment ring inside a ring of another block (in vtkGDALVectorReader's
  * output, a feature inside another feature), which the even-odd rule makes a hole.

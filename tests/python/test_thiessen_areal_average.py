@@ -172,6 +172,33 @@ def test_missing_steps_and_unused_input_are_reported():
           "gauge 3 repeats gauge 0")
 
 
+def test_values_of_a_co_located_gauge_that_are_not_used_are_listed():
+    """Two gauges at one place: at a step where both report, the first's value is used and the
+    second's row is listed in CoLocatedObservationRows and named in a warning; at a step where
+    only the second reports, its value is used and not listed."""
+    f = vtkThiessenArealAverage()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetGaugesData(gauges_polydata([(0.2, 0.2), (0.8, 0.8), (0.2, 0.2)], ["g1", "g2", "g1copy"]))
+    f.SetCatchmentData(polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]]))
+    table = observations_table({(2000, 1): {"g1": 3.0, "g1copy": 100.0, "g2": 1.0},
+                                (2000, 2): {"g1copy": 7.0, "g2": 1.0}})
+    f.SetObservationsData(table)
+    f.Update(1)
+    stations, times = table.GetColumnByName("station_id"), table.GetColumnByName("time")
+    shadowed = [r for r in range(table.GetNumberOfRows())
+                if stations.GetValue(r) == "g1copy" and times.GetValue(r) == 2000.0]
+    listed = f.GetOutputDataObject(1).GetFieldData().GetArray("CoLocatedObservationRows")
+    assert_that([listed.GetValue(i) for i in range(listed.GetNumberOfTuples())] == shadowed,
+                f"the row of g1copy in 2000-01 is listed: {shadowed}")
+    named = [w for w in warnings if "CoLocatedObservationRows" in w]
+    assert_that(len(named) == 1 and f"row {shadowed[0]} (station g1copy)" in named[0], f"{warnings}")
+    # The means: g1's 3 (not g1copy's 100) in January, g1copy's 7 in February, each with g2's 1.
+    means = summary_column(f, "ArealMean")
+    assert_that(abs((means[0] - 1.0) / (3.0 - 1.0) - (means[1] - 1.0) / (7.0 - 1.0)) < 1e-12,
+                f"the same weight for the place in both months: {means}")
+    assert_that(summary_column(f, "StationsUsed") == [2, 2], "co-located gauges counted once")
+
+
 def test_an_unobserved_gauge_without_a_station_id_is_named_by_its_point():
     """A gauge whose station id is empty can never be matched: the warning names it by its point
     id (it listed nothing after the colon)."""
@@ -1263,6 +1290,7 @@ if __name__ == "__main__":
     run([test_four_symmetric_gauges_share_a_square,
          test_colorado_months_match_a_brute_force_raster,
          test_missing_steps_and_unused_input_are_reported,
+         test_values_of_a_co_located_gauge_that_are_not_used_are_listed,
          test_an_unobserved_gauge_without_a_station_id_is_named_by_its_point,
          test_a_gauge_whose_station_id_others_share_is_named_with_its_index,
          test_gauges_never_weighted_and_no_gauge_inside_are_reported,
