@@ -218,8 +218,15 @@ def read_catchment(path):
     output = reader.GetOutput()
     rings = catchment_rings(output) if output else []
     if errors or not rings:
-        csv_input.fail(f"{path}: GDAL read no polygon from the catchment file "
-                       "(expected a GeoJSON or shapefile polygon in lon/lat)")
+        csv_input.fail(f"{path}: VTK's GDAL reader (vtkGDALVectorReader) found no polygon in the "
+                       "catchment file (expected a GeoJSON or shapefile polygon in lon/lat; "
+                       "polygons with measures, such as PolygonM or PolygonZM shapefiles, read as "
+                       "empty: drop the measures first, e.g. with ogr2ogr -dim XY)")
+    features = polygon_blocks(output)
+    if features > 1:
+        print(f"{path}: the catchment is the {features} polygon features of the file taken "
+              "together (even-odd rule: a feature inside another is a hole); give a file with "
+              "only the catchment's feature to average over one of them", file=sys.stderr)
     # The coordinates are read as lon/lat whatever the file declares: a projected system (a .prj
     # of UTM, a GeoJSON "crs") is named, as its numbers are either metres (which the filter
     # refuses as longitudes) or lon/lat under a wrong declaration.
@@ -308,9 +315,15 @@ class InputFiles:
         if row and self.row_line(int(row.group(1))):
             return f"{self.observations}:{self.row_line(int(row.group(1)))}: {row.group(2)}"
         if re.match(r"(catchment )?ring \d+", text):
-            return f"{self.catchment}: {text} (counted from 0, in the file's order)"
-        if text.startswith("the window/catchment input"):
+            hint = ("; sub-catchments given as adjacent features must be dissolved into one polygon "
+                    "first" if "share a stretch of boundary" in text else "")
+            return f"{self.catchment}: {text} (counted from 0, in the file's order){hint}"
+        if text.startswith("the catchment meets itself once projected"):
             return f"{self.catchment}: {text}"
+        if text.startswith("the window/catchment input"):
+            hint = (" (a polygon ring whose last vertex is not its first is read as an open line: "
+                    "close it)" if "holds no polygon" in text else "")
+            return f"{self.catchment}: {text}{hint}"
         if re.match(r"the observations table|none of the \d+ observation rows", text):
             return f"{self.observations}: {self.rows_as_lines(text)}"
         return f"the areal average failed: {text}"
@@ -480,6 +493,20 @@ def polygon_rings(data):
             rings.append([data.GetPoint(connectivity.GetValue(i))[:2]
                           for i in range(offsets.GetValue(c), offsets.GetValue(c + 1))])
     return rings
+
+
+def polygon_blocks(data):
+    """The number of polydata blocks with a polygon or closed line (vtkGDALVectorReader gives a
+    block per feature)."""
+    if not data.IsA("vtkCompositeDataSet"):
+        return 1
+    count, leaves = 0, data.NewIterator()
+    leaves.InitTraversal()
+    while not leaves.IsDoneWithTraversal():
+        block = leaves.GetCurrentDataObject()
+        count += block is not None and block.IsA("vtkPolyData") and bool(catchment_rings(block))
+        leaves.GoToNextItem()
+    return count
 
 
 def catchment_rings(data):

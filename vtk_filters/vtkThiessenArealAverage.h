@@ -79,8 +79,8 @@
  * ParaView's time slider re-weights the tiles step by step.
  *
  * Output 1 (vtkTable): one row per time step: `Time`, `ArealMean` (NaN where no gauge reported),
- * `StationsUsed` (gauges reporting, co-located ones counted once), `StationsWeighted` (of those, gauges whose tile reaches the
- * catchment), `CoveredFraction` (sum of weights).
+ * `StationsUsed` (gauges reporting, co-located ones counted once), `StationsWeighted` (of those,
+ * gauges whose tile reaches the catchment), `CoveredFraction` (sum of weights).
  *
  * Output 2 (vtkTable): every gauge's weight at every step, in long format: one row per time step
  * and weighted gauge (steps in order, gauges ascending within a step): `Time`, `StationId` (when
@@ -98,10 +98,11 @@
  * never reach the catchment at any step. Output 1's field data lists the gauges and rows among
  * them: `UnobservedGaugeIds`, `DuplicateGaugeIds`, `DuplicateOfGaugeIds`, `UnweightedGaugeIds`,
  * `RepeatedObservationRows`, `CoLocatedObservationRows` and `UnusedObservationRows` (rows not
- * used: no station id, no time, or a station no gauge has; table rows, from 0). Two more warnings flag input that is used but
- * may not be what was meant: no gauge inside the catchment (a sign of swapped or unsigned
- * coordinates), and a catchment ring inside a ring of another block (in vtkGDALVectorReader's
- * output, a feature inside another feature), which the even-odd rule makes a hole.
+ * used: no station id, no time, or a station no gauge has; table rows, from 0). Two more warnings
+ * flag input that is used but may not be what was meant: no gauge inside the catchment (a sign of
+ * swapped or unsigned coordinates), and a catchment ring inside a ring of another block (in
+ * vtkGDALVectorReader's output, a feature inside another feature), which the even-odd rule makes a
+ * hole.
  *
  * A gauge with a NaN or out-of-range coordinate (latitude beyond 90 degrees, longitude beyond 360,
  * or beyond what ProjectionRecord's projection represents) and a self-intersecting catchment are

@@ -384,6 +384,52 @@ def test_the_map_of_another_place_with_a_lake():
                     f"extent {lon_min, lon_max, lat_min, lat_max} of {min(xs), max(xs), min(ys), max(ys)}")
 
 
+def test_a_lake_touching_the_outline_and_catchments_of_several_features():
+    """A lake touching the outline at a vertex (valid in OGC's simple features) is a hole: the run
+    succeeds, with less area than without it. A file of several polygon features is taken whole,
+    with a line that says so; adjacent features are refused with a hint to dissolve them."""
+    import json
+
+    outline = LAKE_BASIN["features"][0]["geometry"]["coordinates"][0]
+    lake = [[176.0, -38.6], [175.8, -38.8], [176.2, -38.8], [176.0, -38.6]]
+    far = [[170.0, -45.0], [171.0, -45.0], [171.0, -44.0], [170.0, -44.0], [170.0, -45.0]]
+
+    def feature(rings):
+        return {"type": "Feature", "properties": {}, "geometry": {"type": "Polygon", "coordinates": rings}}
+
+    def total_area(out):
+        return math.fsum(float(w["area_km2"]) for w in read_csv(os.path.join(out, "weights_2001_01.csv")))
+
+    with tempfile.TemporaryDirectory() as out:
+        catchment, stations, observations = write_lake_basin(out)
+        areas = []
+        for name, features in (("touching.geojson", [feature([outline, lake])]), ("whole.geojson", [feature([outline])])):
+            with open(os.path.join(out, name), "w") as f:
+                json.dump({"type": "FeatureCollection", "features": features}, f)
+            run_colorado(out, stations=stations, observations=observations, catchment=os.path.join(out, name),
+                         month="2001-01", plots=False, what=name)
+            weights = read_csv(os.path.join(out, "weights_2001_01.csv"))
+            assert_close(sum(float(w["weight"]) for w in weights), 1.0, 1e-12, f"{name}: weights sum")
+            areas.append(total_area(out))
+        # The lake: a triangle 0.4 degrees wide and 0.2 high, near 38.7 S (about 35 x 22 km).
+        assert_that(0.8 * 0.5 * 34.8 * 22.2 < areas[1] - areas[0] < 1.2 * 0.5 * 34.8 * 22.2,
+                    f"the lake takes its area: {areas}")
+        two = os.path.join(out, "two.geojson")
+        with open(two, "w") as f:
+            json.dump({"type": "FeatureCollection", "features": [feature([outline]), feature([far])]}, f)
+        _, stderr = run_colorado(out, stations=stations, observations=observations, catchment=two,
+                                 month="2001-01", plots=False, what="two features")
+        assert_that(f"{two}: the catchment is the 2 polygon features of the file taken together" in stderr, stderr)
+        adjacent = os.path.join(out, "adjacent.geojson")
+        west = [[175.5, -39.2], [176.0, -39.2], [176.0, -38.6], [175.5, -38.4], [175.5, -39.2]]
+        east = [[176.0, -39.2], [176.5, -39.2], [176.5, -38.4], [176.0, -38.6], [176.0, -39.2]]
+        with open(adjacent, "w") as f:
+            json.dump({"type": "FeatureCollection", "features": [feature([west]), feature([east])]}, f)
+        _, stderr = run_colorado(out, stations=stations, observations=observations, catchment=adjacent,
+                                 month="2001-01", plots=False, status=1, what="adjacent features")
+        assert_that("share a stretch of boundary" in stderr and "dissolved into one polygon" in stderr, stderr)
+
+
 def test_a_month_without_reports_still_gets_its_map():
     # The lake basin with 2001-02 taken out of the observations: the month is in the record (a
     # month where no gauge reported) and, chosen for the map, gives a map of the outline and the
@@ -895,6 +941,7 @@ def test_without_tessera_on_the_path_the_scripts_say_how_to_run():
 if __name__ == "__main__":
     run([test_the_colorado_main_job, test_missing_values_keep_their_months, test_bad_files_are_named,
          test_the_map_of_another_place_with_a_lake,
+         test_a_lake_touching_the_outline_and_catchments_of_several_features,
          test_a_month_without_reports_still_gets_its_map,
          test_the_time_series_breaks_at_months_without_a_mean,
          test_ids_without_their_leading_zeros_match_as_in_the_filter,
