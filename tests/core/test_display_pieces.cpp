@@ -116,6 +116,26 @@ std::size_t ExpectPiecesOfTheRegion(const Catchment& catchment, const std::vecto
   return pieces.RingOffsets.size() - 1;
 }
 
+/// A convex tile: 3 to 8 points at random angles on the circle of radius about centre,
+/// anticlockwise.
+std::vector<Point2> RandomInscribedTile(std::mt19937& random, const Point2& centre, double radius)
+{
+  std::uniform_real_distribution<double> angle(0.0, 2 * M_PI);
+  std::vector<double> angles(3 + random() % 6);
+  for (double& a : angles)
+  {
+    a = angle(random);
+  }
+  std::sort(angles.begin(), angles.end());
+  angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
+  std::vector<Point2> tile;
+  for (const double a : angles)
+  {
+    tile.push_back({ centre.x + radius * std::cos(a), centre.y + radius * std::sin(a) });
+  }
+  return tile;
+}
+
 } // namespace
 
 TEST(DisplayPieces, AHoleInTheTileIsLeftOut)
@@ -193,23 +213,11 @@ TEST(DisplayPieces, RandomTilesOverHolesAndBays)
     Rectangle(3, 3, 4, 4),
     { { 10, 1 }, { 12, 1.5 }, { 11, 3 } } });
   std::mt19937 random(7);
-  std::uniform_real_distribution<double> where(-2.0, 22.0), size(0.5, 9.0), angle(0.0, 2 * M_PI);
+  std::uniform_real_distribution<double> where(-2.0, 22.0), size(0.5, 9.0);
   for (int t = 0; t < 150; ++t)
   {
     const Point2 centre{ where(random), where(random) / 2.0 };
-    const double radius = size(random);
-    std::vector<double> angles(3 + random() % 6);
-    for (double& a : angles)
-    {
-      a = angle(random);
-    }
-    std::sort(angles.begin(), angles.end());
-    angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
-    std::vector<Point2> tile;
-    for (const double a : angles)
-    {
-      tile.push_back({ centre.x + radius * std::cos(a), centre.y + radius * std::sin(a) });
-    }
+    const std::vector<Point2> tile = RandomInscribedTile(random, centre, size(random));
     if (CompensatedPolygonArea(tile.data(), tile.size()) < 1e-3)
     {
       continue;
@@ -342,23 +350,11 @@ TEST(DisplayPieces, RingsTouchingAtPointsGiveSimplePieces)
   // A tile centred on a contact has its pieces on either side of it.
   EXPECT_EQ(ExpectPiecesOfTheRegion(checkerboard, Rectangle(4, 4, 6, 6)), 2u);
   std::mt19937 random(8);
-  std::uniform_real_distribution<double> where(-1.0, 11.0), size(0.3, 6.0), angle(0.0, 2 * M_PI);
+  std::uniform_real_distribution<double> where(-1.0, 11.0), size(0.3, 6.0);
   for (int t = 0; t < 200; ++t)
   {
     const Point2 centre{ where(random), where(random) };
-    const double radius = size(random);
-    std::vector<double> angles(3 + random() % 6);
-    for (double& a : angles)
-    {
-      a = angle(random);
-    }
-    std::sort(angles.begin(), angles.end());
-    angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
-    std::vector<Point2> tile;
-    for (const double a : angles)
-    {
-      tile.push_back({ centre.x + radius * std::cos(a), centre.y + radius * std::sin(a) });
-    }
+    const std::vector<Point2> tile = RandomInscribedTile(random, centre, size(random));
     if (CompensatedPolygonArea(tile.data(), tile.size()) < 1e-3)
     {
       continue;
