@@ -1024,6 +1024,21 @@ void CheckCatchmentLonLat(const std::vector<std::size_t>& offsets,
 /// all: some 100 bytes each once projected and indexed, so such a catchment would take gigabytes
 /// (a comb of thousands of teeth tens of degrees long ran out of memory without a word). A real
 /// outline stays far below: 20 million pieces of 0.01 degrees are 200000 degrees of boundary.
+/// Point i of the n that cut edge a-b into pieces (point 0 is a). The points are interpolated
+/// from the edge's lesser end (x, then y) whichever way the edge runs, so that two rings sharing
+/// an edge (adjacent sub-catchments, running it opposite ways) get the same points to the last
+/// bit, and the shared stretch stays shared once projected rather than becoming slivers.
+Point2 DensifiedPoint(const Point2& a, const Point2& b, int i, int n)
+{
+  if (i == 0)
+  {
+    return a;
+  }
+  const bool forwards = a.x < b.x || (a.x == b.x && a.y < b.y);
+  return forwards ? InterpolateLonLat(a, b, double(i) / n)
+                  : InterpolateLonLat(b, a, double(n - i) / n);
+}
+
 std::vector<int> DensifiedPieceCounts(const CleanRings& rings, double edgeDegrees)
 {
   constexpr std::size_t MaxCatchmentVertices = 20000000;
@@ -1156,7 +1171,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
       const int pieces = pieceCounts[k];
       for (int i = 0; i < pieces; ++i)
       {
-        projected.push_back(s.Projector->Forward(InterpolateLonLat(a, b, double(i) / pieces)));
+        projected.push_back(s.Projector->Forward(DensifiedPoint(a, b, i, pieces)));
         segmentOf.push_back(rings.SourceIndex[k]);
       }
     }
@@ -1168,9 +1183,11 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   }
   catch (const InputError&)
   {
-    // The rings were valid in lon/lat, so they meet only once projected: the usual cause is a
-    // catchment cut in two at the 180th meridian (as GeoJSON writes it), whose halves touch
-    // along it in the plane. Named in the caller's segments, not the densified pieces'.
+    // The rings were valid in lon/lat, so they cross only once projected: the usual cause is a
+    // catchment cut in two at the 180th meridian (as GeoJSON writes it) whose halves, which meet
+    // along it in the plane, have vertices at different latitudes there (halves with the same
+    // ones share the meridian exactly, and are accepted). Named in the caller's segments, not
+    // the densified pieces'.
     try
     {
       ValidateRings(offsets, projected, &segmentOf);
@@ -1179,8 +1196,9 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     {
       throw InputError("the catchment meets itself once projected, though not in lon/lat: " +
         std::string(e.what()) +
-        ". A catchment cut at the 180th meridian must be given as one ring whose longitudes run "
-        "on past 180 (e.g. 179 to 181)");
+        ". The parts of a catchment cut at the 180th meridian need vertices at the same "
+        "latitudes on both sides of it; or give it as one ring whose longitudes run on past 180 "
+        "(e.g. 179 to 181)");
     }
     throw;
   }

@@ -678,8 +678,9 @@ void Catchment::RayCrossings(const Point2& p, std::vector<std::pair<std::uint32_
 
 // Rings do not cross, so the whole of ring r, less its points on ring s, is strictly inside ring s
 // or strictly outside it, and a vertex of r on no other ring tells for every s at once. A ring
-// may touch others at each of its vertices (the middle square of a checkerboard): then its first
-// vertex is taken, and the rings through it are asked at the contact (EnclosesAt).
+// may meet others at each of its vertices (the middle square of a checkerboard): then a vertex is
+// taken with a ray of r that runs along no other ring, and the rings through it are asked at the
+// contact (EnclosesAt). A ring with no such ray runs along other rings all the way round.
 void Catchment::ChooseReferencePoints(const CleanRings& clean)
 {
   this->References.clear();
@@ -692,9 +693,23 @@ void Catchment::ChooseReferencePoints(const CleanRings& clean)
       ++v;
     }
     const bool free = v < end;
-    v = free ? v : begin;
-    this->References.push_back(
-      { clean.Vertices[v], clean.Vertices[v + 1 == end ? begin : v + 1], !free });
+    for (v = free ? v : begin; !free && v < end; ++v)
+    {
+      if ((clean.RaysAlongOtherRing[v] & (RayBackAlong | RayAheadAlong)) !=
+        (RayBackAlong | RayAheadAlong))
+      {
+        break;
+      }
+    }
+    if (v == end)
+    {
+      throw InputError("ring " + std::to_string(r) +
+        " runs along other rings all the way round (a ring given twice?)");
+    }
+    const bool aheadFree = !(clean.RaysAlongOtherRing[v] & RayAheadAlong);
+    const std::size_t towards =
+      aheadFree ? (v + 1 == end ? begin : v + 1) : (v == begin ? end - 1 : v - 1);
+    this->References.push_back({ clean.Vertices[v], clean.Vertices[towards], !free });
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -163,17 +164,8 @@ std::size_t NextVertex(const CleanRings& clean, std::size_t ring, std::size_t v)
   return v + 1 == clean.RingOffsets[ring + 1] ? clean.RingOffsets[ring] : v + 1;
 }
 
-// What two segments of different rings have in common.
-enum class Contact
-{
-  None,
-  Touch, // one point, where the rings meet without crossing: allowed
-  Cross,
-  Overlap // a stretch of positive length
-};
-
 // The two points that a ring's rays from p pass through, where p is a point of its segment s: the
-// segment's far end and the next segment's, at a vertex; both ends of s inside it.
+// one before p along the ring and the one after it (the segment's ends, inside it).
 std::pair<Point2, Point2> RaysAt(const CleanRings& clean, const Segment& s, const Point2& p)
 {
   const Point2& a = clean.Vertices[s.Start];
@@ -189,71 +181,167 @@ std::pair<Point2, Point2> RaysAt(const CleanRings& clean, const Segment& s, cons
   return { a, b };
 }
 
-// Rings A (segment s) and B (segment t) meet at p, a vertex of one of them. Each passes through p
-// once (a ring that meets itself is refused on its own), along two rays; B crosses A there when
-// A's rays separate B's, and the rings share a stretch when a ray of one is a ray of the other:
-//
-//          b1                        b1
-//          |                         |
-//    a1 ---p--- a2   touch     a1 ---p--- a2   cross
-//         / \                        |
-//       b2   (both of B's rays        b2   (one ray each side of A)
-//            on one side of A)
-Contact ContactAt(const CleanRings& clean, const Segment& s, const Segment& t, const Point2& p)
+int RingOrientationOf(const CleanRings& clean, std::size_t ring)
 {
-  const auto [a1, a2] = RaysAt(clean, s, p);
-  const auto [b1, b2] = RaysAt(clean, t, p);
-  for (const Point2& b : { b1, b2 })
+  const std::size_t begin = clean.RingOffsets[ring], end = clean.RingOffsets[ring + 1];
+  std::size_t lowest = begin;
+  for (std::size_t v = begin + 1; v < end; ++v)
   {
-    for (const Point2& a : { a1, a2 })
+    const Point2& p = clean.Vertices[v];
+    const Point2& q = clean.Vertices[lowest];
+    lowest = p.y < q.y || (p.y == q.y && p.x < q.x) ? v : lowest;
+  }
+  return orient2d_fast(clean.Vertices[PreviousVertex(clean, ring, lowest)],
+    clean.Vertices[lowest],
+    clean.Vertices[NextVertex(clean, ring, lowest)]);
+}
+
+// Rings may touch at points and share stretches of boundary, but not cross. Each ring's boundary,
+// less the points it shares with another ring, then lies on one side of that ring: inside it or
+// outside it. A contact point p of rings A and B shows the side of each ray of B from p that does
+// not run along A (inside A when it lies in the angle that A's inside makes at p), and all of
+// them, at all contacts of the two rings, must show the same side; so must A's rays against B.
+//
+//          b1                          b1
+//          |                           |
+//    a1 ---p--- a2   touch       a1 ---p--- a2   cross: b1 on one side of A, b2 on the other
+//         / \                          |
+//       b2   b1, b2 both above A       b2
+//
+// A shared stretch shows the sides at its ends, where the rings part:
+//
+//       B \                 / B       adjacent parts: B leaves A on A's outside at both ends
+//   A ====p================q==== A   (p..q shared; a B that left on the inside at one end and
+//                                     the outside at the other would cross A along the stretch)
+class ContactCheck
+{
+public:
+  explicit ContactCheck(CleanRings& clean)
+    : Clean(clean)
+  {
+    for (std::size_t r = 0; r + 1 < clean.RingOffsets.size(); ++r)
     {
-      if (NeighboursOverlap(a, p, b))
+      this->Orientation.push_back(RingOrientationOf(clean, r));
+    }
+  }
+
+  // Segments s and t of different rings: throws InputError where the rings cross; records where
+  // they meet (CleanRings::OnOtherRing, RaysAlongOtherRing, ContactsInsideSegments).
+  void Check(const Segment& s, const Segment& t)
+  {
+    const Point2& a = this->Clean.Vertices[s.Start];
+    const Point2& b = this->Clean.Vertices[s.End];
+    const Point2& c = this->Clean.Vertices[t.Start];
+    const Point2& d = this->Clean.Vertices[t.End];
+    const int o1 = orient2d_fast(a, b, c);
+    const int o2 = orient2d_fast(a, b, d);
+    const int o3 = orient2d_fast(c, d, a);
+    const int o4 = orient2d_fast(c, d, b);
+    if (o1 * o2 < 0 && o3 * o4 < 0)
+    {
+      this->ReportCrossing(s, t); // the interiors cross
+    }
+    // Otherwise they meet, if at all, at ends of one lying on the other: one point, or the ends
+    // of a stretch they share.
+    Point2 points[4];
+    int count = 0;
+    const auto add = [&](bool on, const Point2& p)
+    {
+      if (on && std::find(points, points + count, p) == points + count)
       {
-        return Contact::Overlap;
+        points[count++] = p;
+      }
+    };
+    add(o1 == 0 && OnSegment(a, b, c), c);
+    add(o2 == 0 && OnSegment(a, b, d), d);
+    add(o3 == 0 && OnSegment(c, d, a), a);
+    add(o4 == 0 && OnSegment(c, d, b), b);
+    for (int k = 0; k < count; ++k)
+    {
+      this->CheckPoint(s, t, points[k]);
+    }
+  }
+
+private:
+  void CheckPoint(const Segment& s, const Segment& t, const Point2& p)
+  {
+    const auto [aBack, aAhead] = RaysAt(this->Clean, s, p);
+    const auto [bBack, bAhead] = RaysAt(this->Clean, t, p);
+    const auto along = [&p](const Point2& ray, const Point2& one, const Point2& other)
+    { return NeighboursOverlap(one, p, ray) || NeighboursOverlap(other, p, ray); };
+    this->Mark(s, p, along(aBack, bBack, bAhead), along(aAhead, bBack, bAhead));
+    this->Mark(t, p, along(bBack, aBack, aAhead), along(bAhead, aBack, aAhead));
+    for (const Point2& ray : { bBack, bAhead })
+    {
+      if (!along(ray, aBack, aAhead))
+      {
+        this->Record(t.Ring, s.Ring, this->Inside(s.Ring, p, aBack, aAhead, ray), s, t);
+      }
+    }
+    for (const Point2& ray : { aBack, aAhead })
+    {
+      if (!along(ray, bBack, bAhead))
+      {
+        this->Record(s.Ring, t.Ring, this->Inside(t.Ring, p, bBack, bAhead, ray), s, t);
       }
     }
   }
-  return InsideAngle(p, a1, a2, b1) == InsideAngle(p, a1, a2, b2) ? Contact::Touch : Contact::Cross;
-}
 
-// Segments s and t of different rings, exactly.
-Contact ContactOf(const CleanRings& clean, const Segment& s, const Segment& t, Point2& where)
-{
-  const Point2& a = clean.Vertices[s.Start];
-  const Point2& b = clean.Vertices[s.End];
-  const Point2& c = clean.Vertices[t.Start];
-  const Point2& d = clean.Vertices[t.End];
-  const int o1 = orient2d_fast(a, b, c);
-  const int o2 = orient2d_fast(a, b, d);
-  const int o3 = orient2d_fast(c, d, a);
-  const int o4 = orient2d_fast(c, d, b);
-  if (o1 * o2 < 0 && o3 * o4 < 0)
+  // Whether the ray from p through d lies inside ring r, whose rays at p pass through back and
+  // ahead: in the angle swept anticlockwise from ahead to back when r runs anticlockwise (its
+  // inside on its left), from back to ahead when it runs clockwise.
+  bool Inside(std::size_t r,
+    const Point2& p,
+    const Point2& back,
+    const Point2& ahead,
+    const Point2& d) const
   {
-    return Contact::Cross; // the interiors cross
+    return this->Orientation[r] > 0 ? InsideAngle(p, ahead, back, d)
+                                    : InsideAngle(p, back, ahead, d);
   }
-  // Otherwise they meet, if at all, at an end of one of them lying on the other.
-  if (o1 == 0 && OnSegment(a, b, c))
+
+  void Record(std::size_t ring, std::size_t other, bool inside, const Segment& s, const Segment& t)
   {
-    where = c;
+    const auto found = this->InsideOther.emplace(std::make_pair(ring, other), inside);
+    if (found.first->second != inside)
+    {
+      this->ReportCrossing(s, t);
+    }
   }
-  else if (o2 == 0 && OnSegment(a, b, d))
+
+  // Segment s's vertex at p is on another ring, with its rays along it flagged; or p is a point
+  // inside s.
+  void Mark(const Segment& s, const Point2& p, bool backAlong, bool aheadAlong)
   {
-    where = d;
+    const auto along =
+      static_cast<unsigned char>((backAlong ? RayBackAlong : 0) | (aheadAlong ? RayAheadAlong : 0));
+    for (const std::size_t v : { s.Start, s.End })
+    {
+      if (this->Clean.Vertices[v] == p)
+      {
+        this->Clean.OnOtherRing[v] = true;
+        this->Clean.RaysAlongOtherRing[v] |= along;
+        return;
+      }
+    }
+    this->Clean.ContactsInsideSegments.emplace_back(s.Start, p);
   }
-  else if (o3 == 0 && OnSegment(c, d, a))
+
+  [[noreturn]] void ReportCrossing(const Segment& s, const Segment& t) const
   {
-    where = a;
+    const Segment& first = s.Ring < t.Ring ? s : t;
+    const Segment& second = s.Ring < t.Ring ? t : s;
+    throw InputError("ring " + std::to_string(first.Ring) + " " + Describe(this->Clean, first) +
+      " and ring " + std::to_string(second.Ring) + " " + Describe(this->Clean, second) +
+      " cross (rings may touch and share stretches of boundary, but not cross; holes and islands "
+      "are separate rings)");
   }
-  else if (o4 == 0 && OnSegment(c, d, b))
-  {
-    where = b;
-  }
-  else
-  {
-    return Contact::None;
-  }
-  return ContactAt(clean, s, t, where);
-}
+
+  CleanRings& Clean;
+  std::vector<int> Orientation;
+  // (ring, other ring): whether the ring's boundary off the other lies inside it, as first seen.
+  std::map<std::pair<std::size_t, std::size_t>, bool> InsideOther;
+};
 
 // Neighbours in one ring share their common vertex; any other contact within a ring is a defect.
 bool MeetsWithinRing(const CleanRings& clean, const Segment& s, const Segment& t)
@@ -273,50 +361,12 @@ bool MeetsWithinRing(const CleanRings& clean, const Segment& s, const Segment& t
   return SegmentsIntersect(a, b, c, d);
 }
 
-[[noreturn]] void ReportContact(const CleanRings& clean,
-  const Segment& s,
-  const Segment& t,
-  Contact contact)
+[[noreturn]] void ReportSelfContact(const CleanRings& clean, const Segment& s, const Segment& t)
 {
   const Segment& first = s.Start < t.Start ? s : t;
   const Segment& second = s.Start < t.Start ? t : s;
-  std::ostringstream text;
-  if (first.Ring == second.Ring)
-  {
-    text << "ring " << first.Ring << " is self-intersecting: " << Describe(clean, first) << " and "
-         << Describe(clean, second) << " touch or cross";
-  }
-  else
-  {
-    text << "ring " << first.Ring << " " << Describe(clean, first) << " and ring " << second.Ring
-         << " " << Describe(clean, second)
-         << (contact == Contact::Overlap ? " share a stretch of boundary" : " cross")
-         << " (rings may touch at single points, but not cross or share boundary; holes and "
-            "islands are separate rings)";
-  }
-  throw InputError(text.str());
-}
-
-// The vertices of s and t at p (a point where their rings touch), marked as lying on another ring;
-// or p listed as inside a segment.
-void MarkTouch(CleanRings& clean, const Segment& s, const Segment& t, const Point2& p)
-{
-  for (const Segment* segment : { &s, &t })
-  {
-    bool atVertex = false;
-    for (const std::size_t v : { segment->Start, segment->End })
-    {
-      if (clean.Vertices[v] == p)
-      {
-        clean.OnOtherRing[v] = true;
-        atVertex = true;
-      }
-    }
-    if (!atVertex)
-    {
-      clean.ContactsInsideSegments.emplace_back(segment->Start, p);
-    }
-  }
+  throw InputError("ring " + std::to_string(first.Ring) + " is self-intersecting: " +
+    Describe(clean, first) + " and " + Describe(clean, second) + " touch or cross");
 }
 
 // Sweep over segments sorted by their left end: a segment is compared only with those whose
@@ -324,7 +374,9 @@ void MarkTouch(CleanRings& clean, const Segment& s, const Segment& t, const Poin
 void CheckIntersections(CleanRings& clean)
 {
   clean.OnOtherRing.assign(clean.Vertices.size(), false);
+  clean.RaysAlongOtherRing.assign(clean.Vertices.size(), 0);
   clean.ContactsInsideSegments.clear();
+  ContactCheck contacts(clean);
   std::vector<Segment> segments = CollectSegments(clean);
   std::sort(segments.begin(),
     segments.end(),
@@ -340,23 +392,13 @@ void CheckIntersections(CleanRings& clean)
       {
         continue;
       }
-      if (s.Ring == t.Ring)
+      if (s.Ring != t.Ring)
       {
-        if (MeetsWithinRing(clean, s, t))
-        {
-          ReportContact(clean, s, t, Contact::Cross);
-        }
-        continue;
+        contacts.Check(s, t);
       }
-      Point2 where;
-      const Contact contact = ContactOf(clean, s, t, where);
-      if (contact == Contact::Touch)
+      else if (MeetsWithinRing(clean, s, t))
       {
-        MarkTouch(clean, s, t, where);
-      }
-      else if (contact != Contact::None)
-      {
-        ReportContact(clean, s, t, contact);
+        ReportSelfContact(clean, s, t);
       }
     }
   }
@@ -407,11 +449,13 @@ CleanRings WithContactsAsVertices(const CleanRings& rings)
       out.Vertices.push_back(rings.Vertices[v]);
       out.SourceIndex.push_back(rings.SourceIndex[v]);
       out.OnOtherRing.push_back(rings.OnOtherRing[v]);
+      out.RaysAlongOtherRing.push_back(rings.RaysAlongOtherRing[v]);
       for (; next < contacts.size() && contacts[next].first == v; ++next)
       {
         out.Vertices.push_back(contacts[next].second);
         out.SourceIndex.push_back(rings.SourceIndex[v]);
         out.OnOtherRing.push_back(true);
+        out.RaysAlongOtherRing.push_back(RayBackAlong | RayAheadAlong); // (not known: not used)
       }
     }
     out.RingOffsets.push_back(out.Vertices.size());

@@ -1,11 +1,13 @@
 #pragma once
 // Validation of a polygon given as rings (flat arrays), before it is used as a region by the
 // even-odd rule: finite coordinates, at least 3 distinct vertices per ring, no ring touching or
-// crossing itself, and no two rings crossing or sharing a stretch of boundary. Two rings may touch
-// at single points, as OGC's simple features allow (a hole touching its shell at a vertex, parts of
-// a multipolygon meeting at a corner): the even-odd region is the same whichever side of such a
-// point its rings are taken to pass. Every decision about segments uses the exact orient2d, so a
-// polygon is accepted or rejected the same way whatever its magnitude or offset.
+// crossing itself, and no two rings crossing. Two rings may touch at points, as OGC's simple
+// features allow (a hole touching its shell at a vertex, parts of a multipolygon meeting at a
+// corner), and share stretches of boundary (sub-catchments given as adjacent polygons, a lake on
+// the outline): as long as no two rings cross, each ring's inside holds another's or is apart from
+// it, and the even-odd region is the sum of the rings' regions with signs by nesting. Every
+// decision about segments uses the exact orient2d, so a polygon is accepted or rejected the same
+// way whatever its magnitude or offset.
 
 #include "geometry.h"
 
@@ -29,10 +31,16 @@ struct CleanRings
   std::vector<std::size_t> SourceIndex;
   /// Per kept vertex, whether it lies on another ring (a point where two rings touch).
   std::vector<bool> OnOtherRing;
+  /// Per kept vertex on another ring: RayBackAlong when the segment ending there runs along
+  /// another ring from it, RayAheadAlong when the segment starting there does.
+  std::vector<unsigned char> RaysAlongOtherRing;
   /// Where another ring's vertex touches a segment inside it: the segment (its first vertex's
   /// index in Vertices) and the point, in no particular order, perhaps more than once.
   std::vector<std::pair<std::size_t, Point2>> ContactsInsideSegments;
 };
+
+constexpr unsigned char RayBackAlong = 1;
+constexpr unsigned char RayAheadAlong = 2;
 
 /// Checks the rings and returns them without repeated consecutive vertices. ringOffsets has one
 /// entry per ring plus a final one equal to vertices.size(), starting at 0 and non-decreasing.
@@ -40,8 +48,8 @@ struct CleanRings
 /// malformed offsets; a NaN or infinite coordinate; a ring with fewer than 3 distinct vertices;
 /// two segments of one ring that touch or cross other than at their shared vertex (collinear
 /// overlap of neighbouring segments included); two rings that cross, at a point inside segments
-/// or where they meet (one's rays there separating the other's), or that share a stretch of
-/// boundary.
+/// or where they meet or part (one ring's boundary off the other lying partly inside the other
+/// and partly outside).
 /// segmentOf, for rings the caller made by cutting its own into pieces (densified edges): per
 /// vertex, the caller's number of the segment that starts there, which messages then use (and
 /// SourceIndex holds).

@@ -315,9 +315,7 @@ class InputFiles:
         if row and self.row_line(int(row.group(1))):
             return f"{self.observations}:{self.row_line(int(row.group(1)))}: {row.group(2)}"
         if re.match(r"(catchment )?ring \d+", text):
-            hint = ("; sub-catchments given as adjacent features must be dissolved into one polygon "
-                    "first" if "share a stretch of boundary" in text else "")
-            return f"{self.catchment}: {text} (counted from 0, in the file's order){hint}"
+            return f"{self.catchment}: {text} (counted from 0, in the file's order)"
         if text.startswith("the catchment meets itself once projected"):
             return f"{self.catchment}: {text}"
         if text.startswith("the window/catchment input"):

@@ -10,10 +10,11 @@
  * hole an island (other cells of input 1, such as lines in no closed ring, are ignored with a
  * warning). Ring orientation
  * and order do not matter. A catchment boundary that touches or crosses itself, or two rings that
- * cross or share a stretch of boundary, is an error naming them; rings may touch at single points
- * (a hole touching the outer boundary at a vertex, as OGC's simple features allow). So is a tile of input 0 that is not convex (beyond the rounding
- * of its vertices, in float or double as its points are stored: its area differing from its convex
- * hull's by more than a millionth), whose clipped area would otherwise be its hull's.
+ * cross, is an error naming them; rings may touch at points and share stretches of boundary (a
+ * hole touching the outer boundary at a vertex, as OGC's simple features allow; adjacent parts). So
+ * is a tile of input 0 that is not convex (beyond the rounding of its vertices, in float or double
+ * as its points are stored: its area differing from its convex hull's by more than a millionth),
+ * whose clipped area would otherwise be its hull's.
  *
  * The output holds each clipped tile as one or more polygons, its display pieces: simple,
  * anticlockwise, without holes, not overlapping one another, inside the window, together filling

@@ -462,12 +462,12 @@ TEST(ArealAverage, CoLocatedGaugesAreReportedAndTheFirstReportingOneIsUsed)
   EXPECT_DOUBLE_EQ(second.Mean, 9.0); // the repeat stands in when the first is missing
 }
 
-TEST(ArealAverage, ACatchmentCutAtTheAntimeridianIsNamedInItsOwnSegments)
+TEST(ArealAverage, ACatchmentCutAtTheAntimeridianIsItsTwoHalvesTogether)
 {
-  // GeoJSON writes a catchment across the 180th meridian as two parts, one ending at 180 and one
-  // starting at -180. They do not meet in lon/lat, but projected they touch along the meridian:
-  // an error, naming the user's segments (each square has 4; the densified pieces are 100 per
-  // edge) and what to do.
+  // GeoJSON (RFC 7946) writes a catchment across the 180th meridian as two parts, one ending at
+  // 180 and one starting at -180. Projected, they share the meridian between them, and the two
+  // together are the catchment: the same areas and weights as the square written as one ring
+  // whose longitudes run on past 180.
   const std::vector<std::size_t> offsets{ 0, 4, 8 };
   const std::vector<Point2> rings{ { 179.0, -1.0 },
     { 180.0, -1.0 },
@@ -477,21 +477,29 @@ TEST(ArealAverage, ACatchmentCutAtTheAntimeridianIsNamedInItsOwnSegments)
     { -179.0, -1.0 },
     { -179.0, 1.0 },
     { -180.0, 1.0 } };
-  const std::vector<Point2> gauges{ { 179.5, -0.5 }, { -179.5, 0.5 } };
-  const std::string message =
-    ErrorOf([&] { ThiessenArealAverage average(gauges, offsets, rings); });
-  EXPECT_NE(message.find("180th meridian"), std::string::npos) << message;
-  // ring 0's segment 1 runs up the meridian at 180, ring 1's segment 3 down it at -180; where
-  // the corners meet, the segments before or after them run along one another too.
-  const std::regex named("ring 0 segment ([0-3]) and ring 1 segment ([0-3]) share a stretch");
-  EXPECT_TRUE(std::regex_search(message, named)) << message;
-  // The same square written with longitudes past 180 is fine.
+  const std::vector<Point2> gauges{ { 179.5, -0.5 }, { -179.5, 0.5 }, { 179.9, 0.8 } };
   const std::vector<std::size_t> one{ 0, 4 };
   const std::vector<Point2> whole{
     { 179.0, -1.0 }, { 181.0, -1.0 }, { 181.0, 1.0 }, { 179.0, 1.0 }
   };
-  ThiessenArealAverage average(gauges, one, whole);
-  EXPECT_NEAR(Sum(average.Step({ 1.0, 2.0 }).Weights), 1.0, 1e-12);
+  for (const AreaMethod method : { AreaMethod::EqualAreaPlane, AreaMethod::GeodesicPolygon })
+  {
+    ArealAverageSettings settings;
+    settings.Areas = method;
+    ThiessenArealAverage joined(gauges, one, whole, settings);
+    settings.HaveProjection = true;
+    settings.Projection = joined.Projection();
+    ThiessenArealAverage halves(gauges, offsets, rings, settings);
+    EXPECT_NEAR(
+      halves.CatchmentAreaM2(), joined.CatchmentAreaM2(), 1e-9 * joined.CatchmentAreaM2());
+    const ArealStep a = halves.Step({ 1.0, 2.0, 4.0 }), b = joined.Step({ 1.0, 2.0, 4.0 });
+    ASSERT_EQ(a.Gauges, b.Gauges);
+    for (std::size_t k = 0; k < a.Weights.size(); ++k)
+    {
+      EXPECT_NEAR(a.Weights[k], b.Weights[k], 1e-9);
+    }
+    EXPECT_NEAR(a.Mean, b.Mean, 1e-9);
+  }
 }
 
 TEST(ArealAverage, AnEdgeThatReadsBothWaysRoundTheGlobeIsRefused)

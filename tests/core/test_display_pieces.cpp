@@ -335,9 +335,10 @@ TEST(DisplayPieces, PiecesOfTessellatedTilesAreSimpleInLonLat)
 }
 
 // Rings that touch at points (a hole touching the outer boundary and another hole, an island
-// touching its hole; a checkerboard of squares meeting at corners): the pieces of random tiles
-// are simple, and where the region is pinched at a contact they do not run through it.
-TEST(DisplayPieces, RingsTouchingAtPointsGiveSimplePieces)
+// touching its hole; a checkerboard of squares meeting at corners) or share stretches (adjacent
+// rectangles, a lake on their outline): the pieces of random tiles are simple, and where the
+// region is pinched at a contact they do not run through it.
+TEST(DisplayPieces, RingsTouchingOrSharingBoundaryGiveSimplePieces)
 {
   const Catchment touching = MakeCatchment({ Rectangle(0, 0, 10, 10),
     { { 0, 5 }, { 3, 2 }, { 6, 5 }, { 3, 8 } },
@@ -347,11 +348,15 @@ TEST(DisplayPieces, RingsTouchingAtPointsGiveSimplePieces)
     Rectangle(5, 5, 10, 10),
     Rectangle(0, 10, 5, 15),
     Rectangle(10, 0, 15, 5) });
+  const Catchment adjacent = MakeCatchment({ Rectangle(0, 0, 5, 10),
+    Rectangle(5, 0, 10, 4),
+    Rectangle(5, 4, 10, 10),
+    { { 7, 10 }, { 6, 8 }, { 9, 8 }, { 8, 10 } } });
   // A tile centred on a contact has its pieces on either side of it.
   EXPECT_EQ(ExpectPiecesOfTheRegion(checkerboard, Rectangle(4, 4, 6, 6)), 2u);
   std::mt19937 random(8);
   std::uniform_real_distribution<double> where(-1.0, 11.0), size(0.3, 6.0);
-  for (int t = 0; t < 200; ++t)
+  for (int t = 0; t < 300; ++t)
   {
     const Point2 centre{ where(random), where(random) };
     const std::vector<Point2> tile = RandomInscribedTile(random, centre, size(random));
@@ -360,6 +365,6 @@ TEST(DisplayPieces, RingsTouchingAtPointsGiveSimplePieces)
       continue;
     }
     SCOPED_TRACE("tile " + std::to_string(t));
-    ExpectPiecesOfTheRegion(t % 2 == 0 ? touching : checkerboard, tile);
+    ExpectPiecesOfTheRegion(t % 3 == 0 ? touching : t % 3 == 1 ? checkerboard : adjacent, tile);
   }
 }
