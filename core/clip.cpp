@@ -167,13 +167,6 @@ bool SegmentMeetsBox(const Point2& a, const Point2& b, const Box2& box)
     orient2d_fast(a, b, { box.XMin, box.YMax }) != side;
 }
 
-// Whether p lies on the closed segment ab, exactly.
-bool OnClosedSegment(const Point2& a, const Point2& b, const Point2& p)
-{
-  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-    p.y <= std::max(a.y, b.y) && orient2d_fast(a, b, p) == 0;
-}
-
 // Winding-number contribution of segment a->b at p, by the signed crossings of the ray from p
 // towards +x. Half-open in y so a vertex on the ray counts once; exact through orient2d.
 int RayCrossing(const Point2& a, const Point2& b, const Point2& p)
@@ -540,7 +533,7 @@ Catchment::Catchment(const std::vector<std::size_t>& ringOffsets,
   const std::vector<Point2>& vertices)
 {
   CleanRings clean = ValidateRings(ringOffsets, vertices);
-  this->ChooseReferencePoints(clean);
+  this->Contacts = std::move(clean.RingContacts);
   this->Offsets = std::move(clean.RingOffsets);
   this->Points = std::move(clean.Vertices);
   this->EdgeRing.resize(this->Points.size());
@@ -677,114 +670,40 @@ void Catchment::RayCrossings(const Point2& p, std::vector<std::pair<std::uint32_
 }
 
 // Rings do not cross, so the whole of ring r, less its points on ring s, is strictly inside ring s
-// or strictly outside it, and a vertex of r on no other ring tells for every s at once. A ring
-// may meet others at each of its vertices (the middle square of a checkerboard): then a vertex is
-// taken with a ray of r that runs along no other ring, and the rings through it are asked at the
-// contact (EnclosesAt). A ring with no such ray runs along other rings all the way round.
-void Catchment::ChooseReferencePoints(const CleanRings& clean)
-{
-  this->References.clear();
-  for (std::size_t r = 0; r + 1 < clean.RingOffsets.size(); ++r)
-  {
-    const std::size_t begin = clean.RingOffsets[r], end = clean.RingOffsets[r + 1];
-    std::size_t v = begin;
-    while (v < end && clean.OnOtherRing[v])
-    {
-      ++v;
-    }
-    const bool free = v < end;
-    for (v = free ? v : begin; !free && v < end; ++v)
-    {
-      if ((clean.RaysAlongOtherRing[v] & (RayBackAlong | RayAheadAlong)) !=
-        (RayBackAlong | RayAheadAlong))
-      {
-        break;
-      }
-    }
-    if (v == end)
-    {
-      throw InputError("ring " + std::to_string(r) +
-        " runs along other rings all the way round (a ring given twice?)");
-    }
-    const bool aheadFree = !(clean.RaysAlongOtherRing[v] & RayAheadAlong);
-    const std::size_t towards =
-      aheadFree ? (v + 1 == end ? begin : v + 1) : (v == begin ? end - 1 : v - 1);
-    this->References.push_back({ clean.Vertices[v], clean.Vertices[towards], !free });
-  }
-}
-
-// Whether ring s, which passes through p, encloses the ring whose ray from p passes through d.
-// s's rays at p point to the vertices before and after p along s; its inside is the angle swept
-// anticlockwise from the ray forwards to the ray backwards when s runs anticlockwise (the inside
-// on its left), and the other angle when it runs clockwise.
-//
-//      backwards                  s anticlockwise, p a corner:
-//          |   inside             the inside is swept anticlockwise
-//          p------ forwards       from "forwards" round to "backwards"
-bool Catchment::EnclosesAt(std::uint32_t s, const Point2& p, const Point2& d) const
-{
-  const std::size_t cell = this->CellX(p.x) + this->CellY(p.y) * this->GridX;
-  for (std::uint32_t k = this->CellStart[cell]; k < this->CellStart[cell + 1]; ++k)
-  {
-    const std::uint32_t v = this->CellEdges[k];
-    const Point2& a = this->Points[v];
-    const Point2& b = this->Points[this->NextVertex(v)];
-    // The segment that p starts is skipped: the one ending at p, in the same cell, is taken.
-    if (this->EdgeRing[v] != s || a == p || !OnClosedSegment(a, b, p))
-    {
-      continue;
-    }
-    const Point2& forwards = b == p ? this->Points[this->NextVertex(this->NextVertex(v))] : b;
-    const std::size_t begin = this->Offsets[s];
-    const bool anticlockwise =
-      RingOrientation(&this->Points[begin], this->Offsets[s + 1] - begin) > 0;
-    return anticlockwise ? InsideAngle(p, forwards, a, d) : InsideAngle(p, a, forwards, d);
-  }
-  return false; // (not reached: s passes through p)
-}
-
-// The rings through p other than r, each once, ascending.
-std::vector<std::uint32_t> Catchment::RingsThrough(const Point2& p, std::size_t r) const
-{
-  std::vector<std::uint32_t> rings;
-  const std::size_t cell = this->CellX(p.x) + this->CellY(p.y) * this->GridX;
-  for (std::uint32_t k = this->CellStart[cell]; k < this->CellStart[cell + 1]; ++k)
-  {
-    const std::uint32_t v = this->CellEdges[k];
-    if (this->EdgeRing[v] != r &&
-      OnClosedSegment(this->Points[v], this->Points[this->NextVertex(v)], p))
-    {
-      rings.push_back(this->EdgeRing[v]);
-    }
-  }
-  std::sort(rings.begin(), rings.end());
-  rings.erase(std::unique(rings.begin(), rings.end()), rings.end());
-  return rings;
-}
-
-// A ring encloses ring r exactly when it winds around r's reference point, or, for a ring through
-// that point, when its inside holds r's ray from there.
+// or strictly outside it. Rings that meet r (touch it or share boundary with it) were found so by
+// the validation (CleanRings::RingContacts); every other ring winds around r's first vertex or not.
 std::vector<std::int32_t> Catchment::EnclosingRings(std::size_t r) const
 {
-  const Reference& reference = this->References[r];
-  const std::vector<std::uint32_t> through =
-    reference.OnOtherRing ? this->RingsThrough(reference.Point, r) : std::vector<std::uint32_t>();
+  const auto first = std::lower_bound(this->Contacts.begin(),
+    this->Contacts.end(),
+    r,
+    [](const CleanRings::RingContact& c, std::size_t ring) { return c.Ring < ring; });
+  auto last = first;
+  while (last != this->Contacts.end() && last->Ring == r)
+  {
+    ++last;
+  }
+  const auto meets = [first, last](std::size_t ring)
+  {
+    return std::any_of(
+      first, last, [ring](const CleanRings::RingContact& c) { return c.Other == ring; });
+  };
   std::vector<std::pair<std::uint32_t, int>> crossings;
-  this->RayCrossings(reference.Point, crossings);
+  this->RayCrossings(this->Points[this->Offsets[r]], crossings);
   SumByRing(crossings);
   std::vector<std::int32_t> enclosing;
   for (const auto& [ring, winding] : crossings)
   {
-    if (ring != r && winding != 0 && !std::binary_search(through.begin(), through.end(), ring))
+    if (ring != r && winding != 0 && !meets(ring))
     {
       enclosing.push_back(static_cast<std::int32_t>(ring));
     }
   }
-  for (const std::uint32_t ring : through)
+  for (auto c = first; c != last; ++c)
   {
-    if (this->EnclosesAt(ring, reference.Point, reference.Towards))
+    if (c->Inside)
     {
-      enclosing.push_back(static_cast<std::int32_t>(ring));
+      enclosing.push_back(static_cast<std::int32_t>(c->Other));
     }
   }
   std::sort(enclosing.begin(), enclosing.end());

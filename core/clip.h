@@ -37,6 +37,7 @@
 // with one Workspace per thread.
 
 #include "geometry.h"
+#include "polygon_validation.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -46,8 +47,6 @@
 
 namespace tessera
 {
-
-struct CleanRings;
 
 /// Polygons as flat rings: ring r has vertices RingOffsets[r] .. RingOffsets[r+1]-1.
 struct ClippedRings
@@ -164,9 +163,6 @@ public:
     double coordinateEpsilon = std::numeric_limits<double>::epsilon()) const;
 
 private:
-  void ChooseReferencePoints(const CleanRings& clean);
-  bool EnclosesAt(std::uint32_t s, const Point2& p, const Point2& d) const;
-  std::vector<std::uint32_t> RingsThrough(const Point2& p, std::size_t r) const;
   void BuildGrid();
   void FindDepths();
   void OrientRings();
@@ -193,15 +189,8 @@ private:
   std::vector<Point2> Points;
   std::vector<std::uint32_t> EdgeRing; // ring of the segment starting at each vertex
   std::vector<int> Depths;
-  // Per ring, the point its nesting is decided at: a vertex on no other ring where it has one,
-  // and the next vertex, along one of the ring's rays from there.
-  struct Reference
-  {
-    Point2 Point;
-    Point2 Towards;
-    bool OnOtherRing;
-  };
-  std::vector<Reference> References;
+  // The pairs of rings that meet, and whether the first lies inside the second (validation's).
+  std::vector<CleanRings::RingContact> Contacts;
   std::vector<bool> Reversed;
   double TotalArea = 0.0;
   Box2 Box;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -216,6 +217,28 @@ int RingOrientationOf(const CleanRings& clean, std::size_t ring)
 class ContactCheck
 {
 public:
+  // Every pair of rings that met has shown a side of each to the other, unless the two run along
+  // each other all the way round (then neither has a ray off the other): into RingContacts.
+  void Finish()
+  {
+    for (const auto& [r, s] : this->Meeting)
+    {
+      const auto rs = this->InsideOther.find({ r, s });
+      const auto sr = this->InsideOther.find({ s, r });
+      if (rs == this->InsideOther.end() || sr == this->InsideOther.end())
+      {
+        throw InputError("ring " + std::to_string(r) + " and ring " + std::to_string(s) +
+          " run along each other all the way round (a ring given twice?)");
+      }
+      this->Clean.RingContacts.push_back({ r, s, rs->second });
+      this->Clean.RingContacts.push_back({ s, r, sr->second });
+    }
+    std::sort(this->Clean.RingContacts.begin(),
+      this->Clean.RingContacts.end(),
+      [](const CleanRings::RingContact& a, const CleanRings::RingContact& b)
+      { return a.Ring < b.Ring || (a.Ring == b.Ring && a.Other < b.Other); });
+  }
+
   explicit ContactCheck(CleanRings& clean)
     : Clean(clean)
   {
@@ -226,7 +249,7 @@ public:
   }
 
   // Segments s and t of different rings: throws InputError where the rings cross; records where
-  // they meet (CleanRings::OnOtherRing, RaysAlongOtherRing, ContactsInsideSegments).
+  // they meet (CleanRings::ContactsInsideSegments) and on which side of each other.
   void Check(const Segment& s, const Segment& t)
   {
     const Point2& a = this->Clean.Vertices[s.Start];
@@ -269,8 +292,9 @@ private:
     const auto [bBack, bAhead] = RaysAt(this->Clean, t, p);
     const auto along = [&p](const Point2& ray, const Point2& one, const Point2& other)
     { return NeighboursOverlap(one, p, ray) || NeighboursOverlap(other, p, ray); };
-    this->Mark(s, p, along(aBack, bBack, bAhead), along(aAhead, bBack, bAhead));
-    this->Mark(t, p, along(bBack, aBack, aAhead), along(bAhead, aBack, aAhead));
+    this->MarkInside(s, p);
+    this->MarkInside(t, p);
+    this->Meeting.insert({ std::min(s.Ring, t.Ring), std::max(s.Ring, t.Ring) });
     for (const Point2& ray : { bBack, bAhead })
     {
       if (!along(ray, aBack, aAhead))
@@ -309,22 +333,13 @@ private:
     }
   }
 
-  // Segment s's vertex at p is on another ring, with its rays along it flagged; or p is a point
-  // inside s.
-  void Mark(const Segment& s, const Point2& p, bool backAlong, bool aheadAlong)
+  // p listed when it is a point inside segment s (not one of its ends).
+  void MarkInside(const Segment& s, const Point2& p)
   {
-    const auto along =
-      static_cast<unsigned char>((backAlong ? RayBackAlong : 0) | (aheadAlong ? RayAheadAlong : 0));
-    for (const std::size_t v : { s.Start, s.End })
+    if (this->Clean.Vertices[s.Start] != p && this->Clean.Vertices[s.End] != p)
     {
-      if (this->Clean.Vertices[v] == p)
-      {
-        this->Clean.OnOtherRing[v] = true;
-        this->Clean.RaysAlongOtherRing[v] |= along;
-        return;
-      }
+      this->Clean.ContactsInsideSegments.emplace_back(s.Start, p);
     }
-    this->Clean.ContactsInsideSegments.emplace_back(s.Start, p);
   }
 
   [[noreturn]] void ReportCrossing(const Segment& s, const Segment& t) const
@@ -341,6 +356,7 @@ private:
   std::vector<int> Orientation;
   // (ring, other ring): whether the ring's boundary off the other lies inside it, as first seen.
   std::map<std::pair<std::size_t, std::size_t>, bool> InsideOther;
+  std::set<std::pair<std::size_t, std::size_t>> Meeting; // (lesser ring, greater ring)
 };
 
 // Neighbours in one ring share their common vertex; any other contact within a ring is a defect.
@@ -373,9 +389,8 @@ bool MeetsWithinRing(const CleanRings& clean, const Segment& s, const Segment& t
 // x-extents overlap it, then by y-extent, then exactly.
 void CheckIntersections(CleanRings& clean)
 {
-  clean.OnOtherRing.assign(clean.Vertices.size(), false);
-  clean.RaysAlongOtherRing.assign(clean.Vertices.size(), 0);
   clean.ContactsInsideSegments.clear();
+  clean.RingContacts.clear();
   ContactCheck contacts(clean);
   std::vector<Segment> segments = CollectSegments(clean);
   std::sort(segments.begin(),
@@ -402,6 +417,7 @@ void CheckIntersections(CleanRings& clean)
       }
     }
   }
+  contacts.Finish();
 }
 
 } // namespace
@@ -440,6 +456,7 @@ CleanRings WithContactsAsVertices(const CleanRings& rings)
     [&along](const auto& c, const auto& d) { return along(c) < along(d); });
   contacts.erase(std::unique(contacts.begin(), contacts.end()), contacts.end());
   CleanRings out;
+  out.RingContacts = rings.RingContacts;
   out.RingOffsets.push_back(0);
   std::size_t next = 0;
   for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
@@ -448,14 +465,10 @@ CleanRings WithContactsAsVertices(const CleanRings& rings)
     {
       out.Vertices.push_back(rings.Vertices[v]);
       out.SourceIndex.push_back(rings.SourceIndex[v]);
-      out.OnOtherRing.push_back(rings.OnOtherRing[v]);
-      out.RaysAlongOtherRing.push_back(rings.RaysAlongOtherRing[v]);
       for (; next < contacts.size() && contacts[next].first == v; ++next)
       {
         out.Vertices.push_back(contacts[next].second);
         out.SourceIndex.push_back(rings.SourceIndex[v]);
-        out.OnOtherRing.push_back(true);
-        out.RaysAlongOtherRing.push_back(RayBackAlong | RayAheadAlong); // (not known: not used)
       }
     }
     out.RingOffsets.push_back(out.Vertices.size());

@@ -29,18 +29,20 @@ struct CleanRings
   /// clean ring runs from vertex k to vertex k+1 (cyclically); in the caller's numbering it is
   /// segment SourceIndex[k], because of a run of repeats the last one is kept.
   std::vector<std::size_t> SourceIndex;
-  /// Per kept vertex, whether it lies on another ring (a point where two rings touch).
-  std::vector<bool> OnOtherRing;
-  /// Per kept vertex on another ring: RayBackAlong when the segment ending there runs along
-  /// another ring from it, RayAheadAlong when the segment starting there does.
-  std::vector<unsigned char> RaysAlongOtherRing;
+  /// Per ordered pair of rings that meet (touch or share boundary), ascending by (Ring, Other):
+  /// whether the boundary of Ring, off Other, lies inside Other (then Ring's inside is within
+  /// Other's: Other encloses it), rather than outside.
+  struct RingContact
+  {
+    std::size_t Ring;
+    std::size_t Other;
+    bool Inside;
+  };
+  std::vector<RingContact> RingContacts;
   /// Where another ring's vertex touches a segment inside it: the segment (its first vertex's
   /// index in Vertices) and the point, in no particular order, perhaps more than once.
   std::vector<std::pair<std::size_t, Point2>> ContactsInsideSegments;
 };
-
-constexpr unsigned char RayBackAlong = 1;
-constexpr unsigned char RayAheadAlong = 2;
 
 /// Checks the rings and returns them without repeated consecutive vertices. ringOffsets has one
 /// entry per ring plus a final one equal to vertices.size(), starting at 0 and non-decreasing.
@@ -49,7 +51,7 @@ constexpr unsigned char RayAheadAlong = 2;
 /// two segments of one ring that touch or cross other than at their shared vertex (collinear
 /// overlap of neighbouring segments included); two rings that cross, at a point inside segments
 /// or where they meet or part (one ring's boundary off the other lying partly inside the other
-/// and partly outside).
+/// and partly outside); two rings that run along each other all the way round (a ring given twice).
 /// segmentOf, for rings the caller made by cutting its own into pieces (densified edges): per
 /// vertex, the caller's number of the segment that starts there, which messages then use (and
 /// SourceIndex holds).
@@ -58,7 +60,7 @@ CleanRings ValidateRings(const std::vector<std::size_t>& ringOffsets,
   const std::vector<std::size_t>* segmentOf = nullptr);
 
 /// The rings with every point of ContactsInsideSegments made a vertex of its segment (SourceIndex
-/// the segment's, OnOtherRing set), so that rings meet at vertices only. A map then applied to
+/// the segment's), so that rings meet at vertices only. A map then applied to
 /// every vertex, with the segments densified (the areal average's projection), keeps them meeting
 /// there: the point of a segment would otherwise land on one side of its image or the other.
 CleanRings WithContactsAsVertices(const CleanRings& rings);

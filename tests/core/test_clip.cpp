@@ -1208,6 +1208,33 @@ TEST(Clip, RingsSharingStretchesOfBoundaryFollowEvenOdd)
   }
 }
 
+// Sub-catchments tiling a basin (a 3 x 3 grid of squares: the middle one shares all its edges with
+// others), and a hole in a corner of the basin's outline, sharing two edges with it.
+TEST(Clip, RingsWhoseEdgesAreAllSharedAreNestedRightly)
+{
+  Rings grid;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      grid.Add(Rectangle(40.0 * i, 40.0 * j, 40.0 * i + 40, 40.0 * j + 40));
+    }
+  }
+  const Catchment tiled(grid.Offsets, grid.Vertices);
+  EXPECT_EQ(tiled.RingDepths(), std::vector<int>(9, 0));
+  EXPECT_EQ(tiled.Area(), 14400.0);
+  EXPECT_TRUE(tiled.Contains({ 60, 60 }));
+  CompareRandomTiles(grid, 0.0, 48, 150);
+  Rings corner;
+  corner.Add(Rectangle(0, 0, 30, 30));
+  corner.Add(Rectangle(0, 0, 10, 10));
+  const Catchment cornered(corner.Offsets, corner.Vertices);
+  EXPECT_EQ(cornered.RingDepths(), (std::vector<int>{ 0, 1 }));
+  EXPECT_EQ(cornered.Area(), 800.0);
+  EXPECT_FALSE(cornered.Contains({ 5, 5 }));
+  EXPECT_TRUE(cornered.Contains({ 15, 5 }));
+}
+
 // Parts of a multipolygon meeting at corners (a checkerboard, whose inner squares touch others at
 // all four corners), and the sum of a tiling.
 TEST(Clip, PartsMeetingAtCornersSumToTheirArea)
@@ -1279,7 +1306,8 @@ TEST(Clip, RejectsBadCatchmentsNamingRingsAndSegments)
   Rings twice;
   twice.Add(Rectangle(0, 0, 10, 10));
   twice.Add(Rectangle(0, 0, 10, 10));
-  EXPECT_EQ(build(twice), "ring 0 runs along other rings all the way round (a ring given twice?)");
+  EXPECT_EQ(
+    build(twice), "ring 0 and ring 1 run along each other all the way round (a ring given twice?)");
   Rings spike; // goes out and back along the same line
   spike.Add({ { 0, 0 }, { 4, 0 }, { 4, 4 }, { 4, 6 }, { 4, 5 }, { 0, 4 } });
   EXPECT_NE(build(spike).find("ring 0 is self-intersecting"), std::string::npos) << build(spike);
