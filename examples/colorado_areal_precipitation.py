@@ -192,10 +192,11 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     return table, reporting, lines
 
 
-def read_catchment(path):
-    """The catchment's reader (a vtkGDALVectorReader, whose output is a multiblock of its
-    polygons) and its rings (catchment_rings); ends the script naming the file when it is
-    missing, unreadable or holds no polygon."""
+def read_catchment(path, feature=None):
+    """The catchment (a vtkGDALVectorReader's output: a multiblock with a block per feature, or the
+    features chosen by `feature`, "ATTRIBUTE=VALUE") and its rings (catchment_rings); ends the
+    script naming the file when it is missing, unreadable or holds no polygon, or when no
+    feature has the value."""
     from vtkmodules.vtkCommonCore import vtkCommand
     from vtkmodules.vtkIOGDAL import vtkGDALVectorReader
 
@@ -222,11 +223,16 @@ def read_catchment(path):
                        "catchment file (expected a GeoJSON or shapefile polygon in lon/lat; "
                        "polygons with measures, such as PolygonM or PolygonZM shapefiles, read as "
                        "empty: drop the measures first, e.g. with ogr2ogr -dim XY)")
+    if feature is not None:
+        output = select_features(output, feature, path)
+        rings = catchment_rings(output)
+        if not rings:
+            csv_input.fail(f"{path}: the features with {feature} have no polygon")
     features = polygon_blocks(output)
-    if features > 1:
+    if features > 1 and feature is None:
         print(f"{path}: the catchment is the {features} polygon features of the file taken "
-              "together (even-odd rule: a feature inside another is a hole); give a file with "
-              "only the catchment's feature to average over one of them", file=sys.stderr)
+              "together (even-odd rule: a feature inside another is a hole); --feature "
+              "ATTRIBUTE=VALUE takes only those with that value", file=sys.stderr)
     # The coordinates are read as lon/lat whatever the file declares: a projected system (a .prj
     # of UTM, a GeoJSON "crs") is named, as its numbers are either metres (which the filter
     # refuses as longitudes) or lon/lat under a wrong declaration.
@@ -237,7 +243,52 @@ def read_catchment(path):
             print(f"{path}: declares the projected coordinate system "
                   f"{name.group(1) if name else declared[:60]!r}; its coordinates are read as "
                   "longitude/latitude in degrees (WGS84)", file=sys.stderr)
-    return reader, rings
+    return output, rings
+
+
+def attribute_text(array, cell=0):
+    """A cell attribute's value as text: numbers that are whole as integers (14010001, not
+    14010001.0), others as written."""
+    if array.IsA("vtkDataArray"):
+        value = array.GetTuple1(cell)
+        return str(int(value)) if value == int(value) else repr(value)
+    return str(array.GetVariantValue(cell).ToString())
+
+
+def select_features(data, feature, path):
+    """The blocks (features) of a vtkGDALVectorReader output whose attribute has the value, for
+    --feature ATTRIBUTE=VALUE, as a new multiblock; ends the script naming the attributes or the
+    values there are when none matches."""
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+
+    name, _, wanted = feature.partition("=")
+    name, wanted = name.strip(), wanted.strip()
+    if not name or not _:
+        csv_input.fail(f"--feature {feature!r}: expected ATTRIBUTE=VALUE, such as HUC8=14010001")
+    chosen, names, values = vtkMultiBlockDataSet(), set(), []
+    leaves = data.NewIterator()
+    leaves.InitTraversal()
+    while not leaves.IsDoneWithTraversal():
+        block = leaves.GetCurrentDataObject()
+        leaves.GoToNextItem()
+        if block is None or not block.IsA("vtkPolyData") or block.GetNumberOfCells() == 0:
+            continue
+        cells = block.GetCellData()
+        names.update(cells.GetArrayName(i) for i in range(cells.GetNumberOfArrays()))
+        array = cells.GetAbstractArray(name)
+        if array is None:
+            continue
+        text = attribute_text(array)
+        values.append(text)
+        if text == wanted:
+            chosen.SetBlock(chosen.GetNumberOfBlocks(), block)
+    if not values:
+        known = ", ".join(sorted(n for n in names if n and not n.startswith("_vtk"))) or "none"
+        csv_input.fail(f"{path}: no feature has the attribute {name!r} (its attributes: {known})")
+    if chosen.GetNumberOfBlocks() == 0:
+        shown = ", ".join(sorted(set(values))[:20]) + (", ..." if len(set(values)) > 20 else "")
+        csv_input.fail(f"{path}: no feature has {name} = {wanted!r} (its values: {shown})")
+    return chosen
 
 
 class Progress:
@@ -670,7 +721,11 @@ def main(argv=None):
                         help="CSV of monthly values, one row per gauge and month: columns "
                              f"station_id, year, month, precip ({csv_input.MISSING_TEXT} = missing)")
     parser.add_argument("--catchment", default=os.path.join(DATA, "colorado_boundary.geojson"),
-                        help="catchment polygon (GeoJSON or shapefile, lon/lat)")
+                        help="catchment polygon (GeoJSON or shapefile, lon/lat); every polygon "
+                             "feature of the file is taken, unless --feature chooses")
+    parser.add_argument("--feature", metavar="ATTRIBUTE=VALUE",
+                        help="take only the catchment file's features whose attribute has this "
+                             "value, such as HUC8=14010001 (whole numbers are written without .0)")
     parser.add_argument("--missing-value", action="append", type=float, default=[], metavar="NUMBER",
                         help="a precip value that means missing, such as -9999 (may be given more than once)")
     parser.add_argument("--no-plots", action="store_true", help="skip the PNG files")
@@ -699,14 +754,14 @@ def main(argv=None):
     observations, reporting, row_lines = read_observations(args.observations, gauge_of,
                                                            min(station_ids, default=None), args.stations,
                                                            set(args.missing_value), station_ids)
-    catchment, outline = read_catchment(args.catchment)
+    catchment, outline = read_catchment(args.catchment, args.feature)
     # (the observations file's rows: the table also has a row for each month without any)
     print(f"read {gauges.GetNumberOfPoints()} gauges and {len(row_lines)} observations in "
           f"{time.time() - started:.1f} s", file=sys.stderr)
 
     average = vtkThiessenArealAverage()
     average.SetGaugesData(gauges)
-    average.SetCatchmentConnection(catchment.GetOutputPort())
+    average.SetCatchmentData(catchment)
     average.SetObservationsData(observations)
     average.SetValueColumn("precip")
     progress = Progress("Thiessen areal means")

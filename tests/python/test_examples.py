@@ -420,6 +420,22 @@ def test_a_lake_touching_the_outline_and_catchments_of_several_features():
         _, stderr = run_colorado(out, stations=stations, observations=observations, catchment=two,
                                  month="2001-01", plots=False, what="two features")
         assert_that(f"{two}: the catchment is the 2 polygon features of the file taken together" in stderr, stderr)
+        # --feature takes the basin alone (its area as without the far feature), or names what there is.
+        named = os.path.join(out, "named.geojson")
+        basin, distant = feature([outline]), feature([far])
+        basin["properties"], distant["properties"] = {"HUC8": 14010001}, {"HUC8": 14010002}
+        with open(named, "w") as f:
+            json.dump({"type": "FeatureCollection", "features": [basin, distant]}, f)
+        _, stderr = run_colorado(out, stations=stations, observations=observations, catchment=named,
+                                 feature="HUC8=14010001", month="2001-01", plots=False, what="--feature")
+        assert_that("polygon features" not in stderr, stderr)
+        assert_close(total_area(out), areas[1], 1e-9 * areas[1], "--feature: the basin alone")
+        for choice, expected in (("HUC8=1", "no feature has HUC8 = '1' (its values: 14010001, 14010002)"),
+                                 ("HUC=14010001", "no feature has the attribute 'HUC' (its attributes: HUC8)"),
+                                 ("HUC8", "--feature 'HUC8': expected ATTRIBUTE=VALUE")):
+            _, stderr = run_colorado(out, stations=stations, observations=observations, catchment=named,
+                                     feature=choice, plots=False, status=1, what=f"--feature {choice}")
+            assert_that(expected in stderr, f"--feature {choice}: {stderr}")
         adjacent = os.path.join(out, "adjacent.geojson")
         west = [[175.5, -39.2], [176.0, -39.2], [176.0, -38.6], [175.5, -38.4], [175.5, -39.2]]
         east = [[176.0, -39.2], [176.5, -39.2], [176.5, -38.4], [176.0, -38.6], [176.0, -39.2]]
