@@ -89,9 +89,10 @@ public:
   /// do not matter: a point is in the catchment when it is inside an odd number of rings. Rings may
   /// repeat their first vertex at the end. Throws InputError (naming ring, vertex and segment
   /// indices) for a NaN or infinite vertex, a ring with fewer than 3 distinct vertices, a ring
-  /// that touches or crosses itself, two rings that cross, or a ring that runs along others all
-  /// the way round. Rings may touch at points (a hole touching the outer boundary at a vertex, as
-  /// OGC allows) and share stretches of boundary (adjacent parts, a lake on the outline).
+  /// that touches or crosses itself, two rings that cross, or two that run along each other all
+  /// the way round (a ring given twice). Rings may touch at points (a hole touching the outer
+  /// boundary at a vertex, as OGC allows) and share stretches of boundary (adjacent parts, a lake
+  /// on the outline).
   Catchment(const std::vector<std::size_t>& ringOffsets, const std::vector<Point2>& vertices);
 
   std::size_t RingCount() const { return this->Offsets.size() - 1; }

@@ -228,7 +228,8 @@ public:
       if (rs == this->InsideOther.end() || sr == this->InsideOther.end())
       {
         throw InputError("ring " + std::to_string(r) + " and ring " + std::to_string(s) +
-          " run along each other all the way round (a ring given twice?)");
+          " run along each other all the way round: a ring given twice, or an island that fills a "
+          "hole exactly (the even-odd rule would cancel them; leave both out instead)");
       }
       this->Clean.RingContacts.push_back({ r, s, rs->second });
       this->Clean.RingContacts.push_back({ s, r, sr->second });
