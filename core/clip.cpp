@@ -457,16 +457,6 @@ void CheckTileOffsets(const std::vector<std::size_t>& offsets, std::size_t verte
   }
 }
 
-// Exact orientation of a simple ring: at its lexicographically smallest vertex the ring turns
-// convexly, and the neighbours cannot be collinear with it (validation rejects such overlaps).
-int RingOrientation(const Point2* ring, std::size_t count)
-{
-  const std::size_t lowest = LowestVertex(ring, count);
-  const Point2& before = ring[lowest == 0 ? count - 1 : lowest - 1];
-  const Point2& after = ring[lowest + 1 == count ? 0 : lowest + 1];
-  return orient2d_fast(before, ring[lowest], after);
-}
-
 // Sorts distinct segment ids below limit. A tile on a detailed outline (3e5 vertices) has
 // thousands of candidate segments, and std::sort took 15% of a step there: from 1024 ids on, a
 // radix sort of 11-bit digits (as many as limit needs) in O(ids) per digit.
@@ -674,15 +664,12 @@ void Catchment::RayCrossings(const Point2& p, std::vector<std::pair<std::uint32_
 // the validation (CleanRings::RingContacts); every other ring winds around r's first vertex or not.
 std::vector<std::int32_t> Catchment::EnclosingRings(std::size_t r) const
 {
-  const auto first = std::lower_bound(this->Contacts.begin(),
+  const CleanRings::RingContact key{ r, 0, false };
+  const auto [first, last] = std::equal_range(this->Contacts.begin(),
     this->Contacts.end(),
-    r,
-    [](const CleanRings::RingContact& c, std::size_t ring) { return c.Ring < ring; });
-  auto last = first;
-  while (last != this->Contacts.end() && last->Ring == r)
-  {
-    ++last;
-  }
+    key,
+    [](const CleanRings::RingContact& a, const CleanRings::RingContact& b)
+    { return a.Ring < b.Ring; });
   const auto meets = [first, last](std::size_t ring)
   {
     return std::any_of(

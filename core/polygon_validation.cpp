@@ -7,7 +7,6 @@
 #include <cmath>
 #include <map>
 #include <set>
-#include <sstream>
 #include <string>
 #include <tuple>
 
@@ -182,19 +181,22 @@ std::pair<Point2, Point2> RaysAt(const CleanRings& clean, const Segment& s, cons
   return { a, b };
 }
 
-int RingOrientationOf(const CleanRings& clean, std::size_t ring)
+// Whether the ray from p through d lies strictly inside the angle swept anticlockwise from the ray
+// through a1 to the ray through a2 (three distinct rays from p), exactly.
+bool InsideAngle(const Point2& p, const Point2& a1, const Point2& a2, const Point2& d)
 {
-  const std::size_t begin = clean.RingOffsets[ring], end = clean.RingOffsets[ring + 1];
-  std::size_t lowest = begin;
-  for (std::size_t v = begin + 1; v < end; ++v)
+  const int turn = orient2d_fast(p, a1, a2);
+  const int fromFirst = orient2d_fast(p, a1, d);
+  const int toSecond = orient2d_fast(p, d, a2);
+  if (turn > 0)
   {
-    const Point2& p = clean.Vertices[v];
-    const Point2& q = clean.Vertices[lowest];
-    lowest = p.y < q.y || (p.y == q.y && p.x < q.x) ? v : lowest;
+    return fromFirst > 0 && toSecond > 0; // an angle below 180 degrees
   }
-  return orient2d_fast(clean.Vertices[PreviousVertex(clean, ring, lowest)],
-    clean.Vertices[lowest],
-    clean.Vertices[NextVertex(clean, ring, lowest)]);
+  if (turn < 0)
+  {
+    return fromFirst > 0 || toSecond > 0; // above 180: all but the angle from a2 to a1
+  }
+  return fromFirst > 0; // a1 and a2 opposite: the half-plane left of the ray through a1
 }
 
 // Rings may touch at points and share stretches of boundary, but not cross. Each ring's boundary,
@@ -245,7 +247,8 @@ public:
   {
     for (std::size_t r = 0; r + 1 < clean.RingOffsets.size(); ++r)
     {
-      this->Orientation.push_back(RingOrientationOf(clean, r));
+      this->Orientation.push_back(RingOrientation(
+        &clean.Vertices[clean.RingOffsets[r]], clean.RingOffsets[r + 1] - clean.RingOffsets[r]));
     }
   }
 
@@ -423,22 +426,6 @@ void CheckIntersections(CleanRings& clean)
 
 } // namespace
 
-bool InsideAngle(const Point2& p, const Point2& a1, const Point2& a2, const Point2& d)
-{
-  const int turn = orient2d_fast(p, a1, a2);
-  const int fromFirst = orient2d_fast(p, a1, d);
-  const int toSecond = orient2d_fast(p, d, a2);
-  if (turn > 0)
-  {
-    return fromFirst > 0 && toSecond > 0; // an angle below 180 degrees
-  }
-  if (turn < 0)
-  {
-    return fromFirst > 0 || toSecond > 0; // above 180: all but the angle from a2 to a1
-  }
-  return fromFirst > 0; // a1 and a2 opposite: the half-plane left of the ray through a1
-}
-
 CleanRings WithContactsAsVertices(const CleanRings& rings)
 {
   if (rings.ContactsInsideSegments.empty())
@@ -475,6 +462,14 @@ CleanRings WithContactsAsVertices(const CleanRings& rings)
     out.RingOffsets.push_back(out.Vertices.size());
   }
   return out;
+}
+
+int RingOrientation(const Point2* ring, std::size_t count)
+{
+  const std::size_t lowest = LowestVertex(ring, count);
+  const Point2& before = ring[lowest == 0 ? count - 1 : lowest - 1];
+  const Point2& after = ring[lowest + 1 == count ? 0 : lowest + 1];
+  return orient2d_fast(before, ring[lowest], after);
 }
 
 bool SegmentsIntersect(const Point2& a, const Point2& b, const Point2& c, const Point2& d)

@@ -65,9 +65,10 @@ CleanRings ValidateRings(const std::vector<std::size_t>& ringOffsets,
 /// there: the point of a segment would otherwise land on one side of its image or the other.
 CleanRings WithContactsAsVertices(const CleanRings& rings);
 
-/// Whether the ray from p through d lies strictly inside the angle swept anticlockwise from the ray
-/// through a1 to the ray through a2 (three distinct rays from p), exactly.
-bool InsideAngle(const Point2& p, const Point2& a1, const Point2& a2, const Point2& d);
+/// Exact orientation of a ring that ValidateRings accepted (1 anticlockwise, -1 clockwise): at its
+/// lexicographically smallest vertex the ring turns convexly, and the neighbours cannot be
+/// collinear with it (validation refuses such overlaps).
+int RingOrientation(const Point2* ring, std::size_t count);
 
 /// Whether the closed segments ab and cd have a point in common, exactly.
 bool SegmentsIntersect(const Point2& a, const Point2& b, const Point2& c, const Point2& d);
