@@ -87,6 +87,30 @@ std::uint64_t PackedBytes(const char* bytes, std::size_t count)
   return word;
 }
 
+/// Marks in wanted (one char per gauge) the gauges whose values are used at a step: those that
+/// reported (a value that is not NaN), each the first of its place to report, in gauge order
+/// (firstAtPlace: per gauge, the smallest gauge id at its place). taken is scratch. Returns their
+/// number; sets infinite when some value is infinite (a reported value, marked as such).
+int MarkFirstAtPlace(const std::vector<double>& values,
+  const std::vector<std::int32_t>& firstAtPlace,
+  char* wanted,
+  std::vector<char>& taken,
+  bool& infinite)
+{
+  const std::size_t n = values.size();
+  taken.assign(n, 0);
+  int used = 0;
+  for (std::size_t g = 0; g < n; ++g)
+  {
+    infinite |= std::isinf(values[g]);
+    char& placeTaken = taken[static_cast<std::size_t>(firstAtPlace[g])];
+    wanted[g] = static_cast<char>(!std::isnan(values[g]) && !placeTaken);
+    placeTaken |= wanted[g];
+    used += wanted[g];
+  }
+  return used;
+}
+
 /// Words of 64 gauges in a gauge bitmap (gauge g is bit g % 64 of word g / 64).
 std::size_t BitmapWords(std::size_t gauges)
 {
@@ -368,24 +392,12 @@ struct ThiessenArealAverage::State
 
   int MarkReportingGrouped(const std::vector<double>& values)
   {
-    const std::size_t n = values.size();
-    std::vector<char>& wanted = this->Wanted;
-    std::fill(wanted.begin(), wanted.end(), 0);
-    this->PlaceTaken.assign(n, 0);
-    int used = 0;
-    for (std::size_t g = 0; g < n; ++g)
+    bool infinite = false;
+    const int used =
+      MarkFirstAtPlace(values, this->FirstAtPlace, this->Wanted.data(), this->PlaceTaken, infinite);
+    if (infinite)
     {
-      if (std::isinf(values[g]))
-      {
-        ThrowAtFirstInfinite(values);
-      }
-      char& taken = this->PlaceTaken[this->FirstAtPlace[g]];
-      if (!std::isnan(values[g]) && !taken)
-      {
-        taken = 1;
-        wanted[g] = 1;
-        ++used;
-      }
+      ThrowAtFirstInfinite(values);
     }
     return used;
   }
@@ -1019,11 +1031,6 @@ void CheckCatchmentLonLat(const std::vector<std::size_t>& offsets,
   }
 }
 
-/// Per catchment segment (ring vertex k to the next), the pieces it is cut into at most
-/// edgeDegrees long. Throws InputError when they make more than MaxCatchmentVertices vertices in
-/// all: some 100 bytes each once projected and indexed, so such a catchment would take gigabytes
-/// (a comb of thousands of teeth tens of degrees long ran out of memory without a word). A real
-/// outline stays far below: 20 million pieces of 0.01 degrees are 200000 degrees of boundary.
 /// Point i of the n that cut edge a-b into pieces (point 0 is a). The points are interpolated
 /// from the edge's lesser end (x, then y) whichever way the edge runs, so that two rings sharing
 /// an edge (adjacent sub-catchments, running it opposite ways) get the same points to the last
@@ -1034,11 +1041,15 @@ Point2 DensifiedPoint(const Point2& a, const Point2& b, int i, int n)
   {
     return a;
   }
-  const bool forwards = a.x < b.x || (a.x == b.x && a.y < b.y);
-  return forwards ? InterpolateLonLat(a, b, double(i) / n)
-                  : InterpolateLonLat(b, a, double(n - i) / n);
+  return ComesFirst(a, b) ? InterpolateLonLat(a, b, double(i) / n)
+                          : InterpolateLonLat(b, a, double(n - i) / n);
 }
 
+/// Per catchment segment (ring vertex k to the next), the pieces it is cut into at most
+/// edgeDegrees long. Throws InputError when they make more than MaxCatchmentVertices vertices in
+/// all: some 100 bytes each once projected and indexed, so such a catchment would take gigabytes
+/// (a comb of thousands of teeth tens of degrees long ran out of memory without a word). A real
+/// outline stays far below: 20 million pieces of 0.01 degrees are 200000 degrees of boundary.
 std::vector<int> DensifiedPieceCounts(const CleanRings& rings, double edgeDegrees)
 {
   constexpr std::size_t MaxCatchmentVertices = 20000000;
@@ -1262,6 +1273,20 @@ const std::vector<std::pair<std::int32_t, std::int32_t>>& ThiessenArealAverage::
   const
 {
   return this->Impl->Duplicates;
+}
+
+std::vector<char> ThiessenArealAverage::GaugesUsed(const std::vector<double>& values) const
+{
+  const State& s = *this->Impl;
+  if (values.size() != s.FirstAtPlace.size())
+  {
+    throw InputError("GaugesUsed: " + std::to_string(values.size()) + " values for " +
+      std::to_string(s.FirstAtPlace.size()) + " gauges");
+  }
+  std::vector<char> used(values.size()), taken;
+  bool infinite = false;
+  MarkFirstAtPlace(values, s.FirstAtPlace, used.data(), taken, infinite);
+  return used;
 }
 
 double ThiessenArealAverage::CatchmentAreaM2() const

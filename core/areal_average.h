@@ -153,6 +153,9 @@ public:
   /// (gauge, first gauge at the same place) for every gauge at the place of an earlier one
   /// (within CoLocatedMetres of it, or of another gauge of that place).
   const std::vector<std::pair<std::int32_t, std::int32_t>>& DuplicateGauges() const;
+  /// Per gauge, 1 when Step would use its value among these values (NaN: missing): it reported,
+  /// and no gauge at its place with a smaller index did.
+  std::vector<char> GaugesUsed(const std::vector<double>& values) const;
   /// The catchment's ellipsoidal area, m^2, measured as the tiles are.
   double CatchmentAreaM2() const;
   /// Projected gauge positions (metres).

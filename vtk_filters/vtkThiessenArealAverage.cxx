@@ -419,68 +419,51 @@ std::string IncompleteRowName(vtkAbstractArray* stations, std::int32_t row)
     (name.empty() ? " (no station id)" : " (station " + name + ": no time)");
 }
 
-/// Per row, the value of a used row (NaN for the others, which are not read). Throws InputError
-/// naming the row for a value that is infinite or neither a number nor a missing-value marker.
-/// The observation rows with a value for a gauge whose place (the core's groups of gauges within
-/// CoLocatedMetres: (gauge, first gauge of its place) in duplicates) had another gauge report at
-/// the same step before it in gauge order: the core uses that one's value (the first that
-/// reports), so these values are valid and unused. Repeated rows are listed apart.
+/// The observation rows with a value for a gauge at the place of others (DuplicateGauges) whose
+/// value the average does not use at that step (ThiessenArealAverage::GaugesUsed: another gauge
+/// there reported first), so these values are valid and unused. Repeated rows are listed apart.
 std::vector<std::int32_t> CoLocatedRows(const ObservationRows& rows,
   const std::vector<double>& rowValues,
   const std::vector<std::vector<double>>& values,
-  const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates,
+  const tessera::ThiessenArealAverage& average,
   const std::vector<std::int32_t>& repeatedRows)
 {
   std::vector<std::int32_t> found;
-  if (duplicates.empty() || rowValues.empty())
+  std::set<std::int32_t> sharing; // the gauges at a place with others
+  for (const auto& [gauge, first] : average.DuplicateGauges())
+  {
+    sharing.insert({ gauge, first });
+  }
+  if (sharing.empty())
   {
     return found;
   }
-  // Each place's gauges, ascending, keyed by its first gauge.
-  std::map<std::int32_t, std::vector<std::int32_t>> gaugesAt;
-  std::map<std::int32_t, std::int32_t> placeOf;
-  for (const auto& [gauge, first] : duplicates)
-  {
-    auto& group = gaugesAt[first];
-    if (group.empty())
-    {
-      group.push_back(first);
-      placeOf[first] = first;
-    }
-    group.push_back(gauge);
-    placeOf[gauge] = first;
-  }
-  for (auto& entry : gaugesAt)
-  {
-    std::sort(entry.second.begin(), entry.second.end());
-  }
   const std::set<std::int32_t> repeated(repeatedRows.begin(), repeatedRows.end());
+  std::map<std::int32_t, std::vector<char>> usedAt; // per step met, GaugesUsed
   for (std::size_t r = 0; r < rowValues.size(); ++r)
   {
     const std::int32_t gauge = rows.Match.GaugeOfRow[r];
     const std::int32_t step = rows.Steps.StepOfRow[r];
-    const auto place = placeOf.find(gauge);
-    if (gauge < 0 || step < 0 || place == placeOf.end() || std::isnan(rowValues[r]) ||
+    if (step < 0 || !sharing.count(gauge) || std::isnan(rowValues[r]) ||
       repeated.count(static_cast<std::int32_t>(r)))
     {
       continue;
     }
-    const std::vector<double>& stepValues = values[static_cast<std::size_t>(step)];
-    for (const std::int32_t other : gaugesAt[place->second])
+    auto used = usedAt.find(step);
+    if (used == usedAt.end())
     {
-      if (!std::isnan(stepValues[static_cast<std::size_t>(other)]))
-      {
-        if (other != gauge)
-        {
-          found.push_back(static_cast<std::int32_t>(r));
-        }
-        break; // the first that reported
-      }
+      used = usedAt.emplace(step, average.GaugesUsed(values[static_cast<std::size_t>(step)])).first;
+    }
+    if (!used->second[static_cast<std::size_t>(gauge)])
+    {
+      found.push_back(static_cast<std::int32_t>(r));
     }
   }
   return found;
 }
 
+/// Per row, the value of a used row (NaN for the others, which are not read). Throws InputError
+/// naming the row for a value that is infinite or neither a number nor a missing-value marker.
 std::vector<double> RowValues(vtkTable* table,
   const tessera::ObservationSteps& steps,
   const std::string& stationColumn,
@@ -1288,7 +1271,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
         idOf(static_cast<std::size_t>(duplicateOf[k])) + ")";
     });
   const std::vector<std::int32_t> coLocatedRows =
-    CoLocatedRows(*rows, rowValues, in.Values, in.Average->DuplicateGauges(), repeatedRows);
+    CoLocatedRows(*rows, rowValues, in.Values, *in.Average, repeatedRows);
   warnOf(coLocatedRows.size(),
     "observation row(s) have a value for a gauge at the place of another that reported at the "
     "same time, whose value is used (rows from 0, listed in CoLocatedObservationRows)",

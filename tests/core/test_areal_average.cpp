@@ -460,6 +460,10 @@ TEST(ArealAverage, CoLocatedGaugesAreReportedAndTheFirstReportingOneIsUsed)
   EXPECT_DOUBLE_EQ(both.Mean, 1.0); // the first one's value
   const ArealStep second = average.Step({ NaN, NaN, 9.0 });
   EXPECT_DOUBLE_EQ(second.Mean, 9.0); // the repeat stands in when the first is missing
+  // GaugesUsed tells the same: whose values those steps used.
+  EXPECT_EQ(average.GaugesUsed({ 1.0, NaN, 9.0 }), (std::vector<char>{ 1, 0, 0 }));
+  EXPECT_EQ(average.GaugesUsed({ NaN, NaN, 9.0 }), (std::vector<char>{ 0, 0, 1 }));
+  EXPECT_EQ(average.GaugesUsed({ NaN, 2.0, NaN }), (std::vector<char>{ 0, 1, 0 }));
 }
 
 TEST(ArealAverage, ACatchmentCutAtTheAntimeridianIsItsTwoHalvesTogether)
