@@ -266,12 +266,8 @@ def select_features(data, feature, path):
     if not name or not _:
         csv_input.fail(f"--feature {feature!r}: expected ATTRIBUTE=VALUE, such as HUC8=14010001")
     chosen, names, values = vtkMultiBlockDataSet(), set(), []
-    leaves = data.NewIterator()
-    leaves.InitTraversal()
-    while not leaves.IsDoneWithTraversal():
-        block = leaves.GetCurrentDataObject()
-        leaves.GoToNextItem()
-        if block is None or not block.IsA("vtkPolyData") or block.GetNumberOfCells() == 0:
+    for block in polydata_blocks(data):
+        if block.GetNumberOfCells() == 0:
             continue
         cells = block.GetCellData()
         names.update(cells.GetArrayName(i) for i in range(cells.GetNumberOfArrays()))
@@ -544,18 +540,25 @@ def polygon_rings(data):
     return rings
 
 
-def polygon_blocks(data):
-    """The number of polydata blocks with a polygon or closed line (vtkGDALVectorReader gives a
-    block per feature)."""
+def polydata_blocks(data):
+    """The vtkPolyData leaves of a composite data set (vtkGDALVectorReader's output has a block per
+    feature), or [data] for a vtkPolyData."""
     if not data.IsA("vtkCompositeDataSet"):
-        return 1
-    count, leaves = 0, data.NewIterator()
+        return [data] if data.IsA("vtkPolyData") else []
+    blocks, leaves = [], data.NewIterator()
     leaves.InitTraversal()
     while not leaves.IsDoneWithTraversal():
         block = leaves.GetCurrentDataObject()
-        count += block is not None and block.IsA("vtkPolyData") and bool(catchment_rings(block))
+        if block is not None and block.IsA("vtkPolyData"):
+            blocks.append(block)
         leaves.GoToNextItem()
-    return count
+    return blocks
+
+
+def polygon_blocks(data):
+    """The number of polydata blocks with a polygon or closed line (features, for a
+    vtkGDALVectorReader's output)."""
+    return sum(1 for block in polydata_blocks(data) if catchment_rings(block))
 
 
 def catchment_rings(data):
@@ -563,17 +566,8 @@ def catchment_rings(data):
     every polydata block (a multiblock such as vtkGDALVectorReader's, or a vtkPolyData), a
     closing point equal to the first dropped: an outline of several rings (islands, holes) is
     drawn ring by ring, not as one line through all its points."""
-    blocks = [data]
-    if data.IsA("vtkCompositeDataSet"):
-        blocks, leaves = [], data.NewIterator()
-        leaves.InitTraversal()
-        while not leaves.IsDoneWithTraversal():
-            blocks.append(leaves.GetCurrentDataObject())
-            leaves.GoToNextItem()
     rings = []
-    for block in blocks:
-        if block is None or not block.IsA("vtkPolyData"):
-            continue
+    for block in polydata_blocks(data):
         # GDAL gives a polygon's rings as polygons or as closed lines; the filter reads both.
         for ring in polygon_rings(block):
             if len(ring) > 1 and ring[0] == ring[-1]:
