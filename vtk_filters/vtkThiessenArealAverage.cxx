@@ -117,6 +117,13 @@ std::string RowStation(vtkAbstractArray* stations, std::size_t row)
   return StationName(stations->GetVariantValue(static_cast<vtkIdType>(row)));
 }
 
+/// A row of the observations table in a warning's list: "row R (station S)".
+std::string RowName(vtkAbstractArray* stations, std::int32_t row)
+{
+  return "row " + std::to_string(row) + " (station " +
+    RowStation(stations, static_cast<std::size_t>(row)) + ")";
+}
+
 /// An InputError for a row of the observations table: "observation row R: what".
 [[noreturn]] void ThrowRowError(vtkIdType row, const std::string& what)
 {
@@ -1258,11 +1265,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   warnOf(repeatedRows.size(),
     "observation row(s) repeat a station and time of an earlier row with a value; the earlier "
     "value is used (rows from 0, listed in RepeatedObservationRows)",
-    [&](std::size_t k)
-    {
-      const auto row = static_cast<std::size_t>(repeatedRows[k]);
-      return "row " + std::to_string(row) + " (station " + RowStation(stations, row) + ")";
-    });
+    [&](std::size_t k) { return RowName(stations, repeatedRows[k]); });
   warnOf(duplicates.size(),
     "gauge(s) stand where an earlier gauge stands; the first that reports is used",
     [&](std::size_t k)
@@ -1275,11 +1278,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   warnOf(coLocatedRows.size(),
     "observation row(s) have a value for a gauge at the place of another that reported at the "
     "same time, whose value is used (rows from 0, listed in CoLocatedObservationRows)",
-    [&](std::size_t k)
-    {
-      const auto row = static_cast<std::size_t>(coLocatedRows[k]);
-      return "row " + std::to_string(row) + " (station " + RowStation(stations, row) + ")";
-    });
+    [&](std::size_t k) { return RowName(stations, coLocatedRows[k]); });
 
   // The summary: every step in order, each one updating the tessellation of the one before.
   vtkNew<vtkDoubleArray> timeColumn, means, covered;
