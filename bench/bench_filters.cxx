@@ -2,16 +2,26 @@
 // CGAL's Delaunay_triangulation_2 (exact predicates, inexact constructions, range insert),
 // vtkDelaunay2D and vtkVoronoi2D (where they finish within a minute).
 //
-//   bench_filters [max_points] [repeats]   (defaults 1000000 and 5) prints three Markdown tables:
+//   bench_filters [max_points] [repeats]   (defaults 1000000 and 5) prints four Markdown tables:
 //   seconds and ratios (of medians), microseconds per point with each column's flatness over the
-//   sizes, and each filter's time over CGAL's run by run (median, range, and the runs that meet
-//   the target: 0.5 for the Delaunay filter, 1.0 for the tiles)
+//   sizes, each filter's time over CGAL's run by run (median, range, and the runs that meet the
+//   issue's target: 0.5 for the Delaunay filter, 1.0 for the tiles), and microseconds per point
+//   again with every run in the same memory condition, back to back and after a pause
 //
 // Tessera's filters and CGAL run `repeats` times each (ten times as often at 10^4 points), in
 // turn, on the same input, and the table shows the median run: this VM's single runs vary by
 // 15-25%. vtkDelaunay2D and vtkVoronoi2D run once (they take seconds to minutes). From 10^6
 // points on, a run's time also depends on how long ago the memory it maps afresh was freed: a
 // guest that reports free memory to its host pays the host's faults on it (README, Benchmarks).
+//
+// A fourth table times each engine at each size in one memory condition at a time, so that the
+// sizes compare like with like: back to back (a run straight after a run of the same engine, the
+// first one unrecorded, so the memory the last run freed is taken again at once) and after a pause
+// of PauseSeconds before each run (memory freed by the last run has been handed back to the host
+// by then, where the guest reports free memory). In the first table the runs at 10^7 points take
+// seconds each and come after other engines' runs: most of their fresh memory was freed long
+// enough before to have gone to the host, while up to 10^6 points it mostly comes back from the
+// heap, which keeps blocks below glibc's 32 MiB mmap threshold.
 //
 // vtkDirichletTessellation is timed twice: "tiles+areas" with ComputeContiguityGraph off (output
 // 0 only: the tiles with their areas, which the tiles target names) and
@@ -36,6 +46,7 @@
 #include <cstdlib>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace
@@ -180,6 +191,103 @@ void PrintPerPoint(const std::vector<vtkIdType>& sizes, const std::vector<std::v
   std::printf("\n");
 }
 
+/// The memory conditions of the fourth table (see the header).
+enum class Condition
+{
+  BackToBack,
+  AfterPause
+};
+
+/// How long the pause before each run is in the AfterPause condition: free page reporting hands
+/// freed memory to the host about two seconds after it was freed.
+constexpr int PauseSeconds = 3;
+
+/// Median seconds of `runs` runs of `timeOnce` (one engine on one input) in `condition`.
+template<typename TimeOnce>
+double MedianInCondition(Condition condition, int runs, TimeOnce timeOnce)
+{
+  std::vector<double> seconds;
+  if (condition == Condition::BackToBack)
+  {
+    timeOnce(); // unrecorded: it takes its memory after whatever ran before
+  }
+  for (int run = 0; run < runs; ++run)
+  {
+    if (condition == Condition::AfterPause)
+    {
+      std::this_thread::sleep_for(std::chrono::seconds(PauseSeconds));
+    }
+    seconds.push_back(timeOnce());
+  }
+  return Median(seconds);
+}
+
+/// The fourth table: microseconds per point of the Delaunay filter, the tiles and CGAL at each size
+/// in each memory condition, with each column's flatness (largest over smallest) over the sizes.
+void PrintPerPointByCondition(vtkIdType maxPoints, int repeats)
+{
+  const char* const names[2] = { "back to back", "after a pause" };
+  std::vector<vtkIdType> sizes;
+  std::vector<std::vector<double>> us(6); // [condition * 3 + engine]
+  for (vtkIdType n = 10000; n <= maxPoints; n *= 10)
+  {
+    auto input = UniformPoints(n, 7);
+    sizes.push_back(n);
+    vtkIdType cells = 0;
+    for (int c = 0; c < 2; ++c)
+    {
+      const Condition condition = c == 0 ? Condition::BackToBack : Condition::AfterPause;
+      // As in the first table, ten times the runs at 10^4 points back to back; three after pauses.
+      const int runs =
+        condition == Condition::AfterPause ? 3 : repeats * int(std::max<vtkIdType>(1, 100000 / n));
+      const double seconds[3] = {
+        MedianInCondition(
+          condition, runs, [&]() { return TimeFilter<vtkDelaunayTriangulation>(input, cells); }),
+        MedianInCondition(condition, runs, [&]() { return TimeTilesOnly(input, cells); }),
+#ifdef TESSERA_HAVE_CGAL
+        MedianInCondition(condition,
+          runs,
+          [&]()
+          {
+            std::size_t faces = 0;
+            return TimeCgal(input, faces);
+          }),
+#else
+        -1.0,
+#endif
+      };
+      for (int e = 0; e < 3; ++e)
+      {
+        us[3 * c + e].push_back(seconds[e] > 0 ? 1e6 * seconds[e] / double(n) : -1.0);
+      }
+    }
+  }
+  std::printf("\n| microseconds per point | Delaunay, %s | tiles+areas, %s | CGAL DT2, %s | "
+              "Delaunay, %s | tiles+areas, %s | CGAL DT2, %s |\n|---|---|---|---|---|---|---|\n",
+    names[0],
+    names[0],
+    names[0],
+    names[1],
+    names[1],
+    names[1]);
+  for (std::size_t k = 0; k < sizes.size(); ++k)
+  {
+    std::printf("| %lld |", static_cast<long long>(sizes[k]));
+    for (const std::vector<double>& column : us)
+    {
+      std::printf(" %s |", Cell(column[k]).c_str());
+    }
+    std::printf("\n");
+  }
+  std::printf("| largest / smallest |");
+  for (const std::vector<double>& column : us)
+  {
+    const auto [low, high] = std::minmax_element(column.begin(), column.end());
+    std::printf(" %s |", Cell(*low > 0 ? *high / *low : -1.0).c_str());
+  }
+  std::printf("\n");
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -190,7 +298,8 @@ int main(int argc, char** argv)
       "usage: bench_filters [max_points] [repeats]   (defaults 1000000 and 5)\n"
       "Times vtkDelaunayTriangulation and vtkDirichletTessellation (without and with its\n"
       "contiguity graph) through Update()\n"
-      "beside CGAL, vtkDelaunay2D and vtkVoronoi2D on 1e4 .. max_points uniform points.\n");
+      "beside CGAL, vtkDelaunay2D and vtkVoronoi2D on 1e4 .. max_points uniform points,\n"
+      "then per point with every run back to back, and with a 3 s pause before each run.\n");
     return 0;
   }
   const vtkIdType maxPoints = argc > 1 ? std::atoll(argv[1]) : 1000000;
@@ -271,5 +380,7 @@ int main(int argc, char** argv)
   {
     std::printf("%s\n", row.c_str());
   }
+  std::fflush(stdout);
+  PrintPerPointByCondition(maxPoints, repeats);
   return 0;
 }
