@@ -115,6 +115,49 @@ ObservationSteps StepsOfRows(const StationMatch& match,
   return steps;
 }
 
+namespace
+{
+/// Per repeated row, the first row of its gauge and step with a value: the one whose value was
+/// kept. A second pass over the rows, taken only when some row repeats (Colorado's record has
+/// none), so that the series keeps no row per step and gauge.
+std::vector<std::int32_t> KeptRowsOf(const std::vector<std::int32_t>& repeated,
+  const StationMatch& match,
+  const ObservationSteps& steps,
+  const std::vector<double>& rowValues,
+  std::size_t gaugeCount)
+{
+  const auto slotOf = [&](std::size_t r)
+  {
+    return static_cast<std::uint64_t>(steps.StepOfRow[r]) * gaugeCount +
+      static_cast<std::uint64_t>(match.GaugeOfRow[r]);
+  };
+  std::unordered_map<std::uint64_t, std::int32_t> kept; // slot -> kept row, -1 until found
+  for (const std::int32_t r : repeated)
+  {
+    kept.emplace(slotOf(static_cast<std::size_t>(r)), -1);
+  }
+  for (std::size_t r = 0; r < steps.StepOfRow.size() && !repeated.empty(); ++r)
+  {
+    if (steps.StepOfRow[r] < 0 || std::isnan(rowValues[r]))
+    {
+      continue;
+    }
+    const auto found = kept.find(slotOf(r));
+    if (found != kept.end() && found->second < 0)
+    {
+      found->second = static_cast<std::int32_t>(r);
+    }
+  }
+  std::vector<std::int32_t> of;
+  of.reserve(repeated.size());
+  for (const std::int32_t r : repeated)
+  {
+    of.push_back(kept.at(slotOf(static_cast<std::size_t>(r))));
+  }
+  return of;
+}
+} // namespace
+
 StepSeries BuildSeries(const StationMatch& match,
   const ObservationSteps& steps,
   const std::vector<double>& rowValues,
@@ -140,6 +183,7 @@ StepSeries BuildSeries(const StationMatch& match,
       series.RepeatedRows.push_back(static_cast<std::int32_t>(r));
     }
   }
+  series.RepeatedRowOf = KeptRowsOf(series.RepeatedRows, match, steps, rowValues, gaugeCount);
   return series;
 }
 

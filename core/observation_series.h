@@ -84,6 +84,9 @@ struct StepSeries
   /// The rows repeating the gauge and step of an earlier row that had a value (not NaN), ascending:
   /// the earlier value is kept.
   std::vector<std::int32_t> RepeatedRows;
+  /// Per repeated row, the earlier row whose value is kept (the first of its gauge and step with a
+  /// value), so that a report can say which row each one repeats.
+  std::vector<std::int32_t> RepeatedRowOf;
 };
 
 /// The step x gauge values of the used rows. rowValues: per row, its value (NaN for a missing

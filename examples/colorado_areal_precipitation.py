@@ -29,8 +29,9 @@ Writes into --out:
                          but not used (no observed value, a tile that never reaches the catchment,
                          at the place of an earlier gauge, an observation of such a gauge in a
                          month where the earlier one reported, a repeated observation, an observation of
-                         a station no gauge has, or without a station id or time); the warnings name
-                         only the first 20 of each kind
+                         a station no gauge has, or without a station id or time); for a gauge at
+                         the place of an earlier one, or a repeated observation, the note gives
+                         the earlier one's line; the warnings name only the first 20 of each kind
 Units are those of the data (documented as mm; the magnitudes look like cm: see
 examples/data/README.md).
 
@@ -335,7 +336,7 @@ class InputFiles:
         def line(m):
             found = self.row_line(int(m.group(1)))
             return f"line {found}" if found else f"{m.group(0)} (a row added for a month without rows)"
-        return re.sub(r"\brow (\d+)\b", line, re.sub(r" \(rows from 0, listed in \w+\)", "", text))
+        return re.sub(r"\brow (\d+)\b", line, re.sub(r" \(rows from 0, listed in [^)]*\)", "", text))
 
     def gauges_as_lines(self, text):
         """text with "(gauges A and B)" as "(gauges A and B: lines L and M)", and "(gauge A)" (a
@@ -475,11 +476,13 @@ UNUSED_LISTS = (
 
 def write_unused(summary, files, station_ids, observations, path):
     """Every input the filter did not use, one row each (the warnings name the first 20 of each
-    kind): kind, file, line, station_id and, for a gauge at the place of an earlier one, that
-    gauge's line. Returns the number of rows."""
+    kind): kind, file, line, station_id and a note: for a gauge at the place of an earlier one,
+    that gauge's line; for an observation repeating an earlier one, the earlier one's line.
+    Returns the number of rows."""
     fields = summary.GetFieldData()
     stations = observations.GetColumnByName("station_id")
     earlier = fields.GetArray("DuplicateOfGaugeIds")
+    repeated_of = fields.GetArray("RepeatedObservationOfRows")
     written = 0
     with open(path, "w", newline="") as f:
         out = csv.writer(f)
@@ -489,7 +492,10 @@ def write_unused(summary, files, station_ids, observations, path):
             for k in range(ids.GetNumberOfTuples() if ids else 0):
                 i = int(ids.GetValue(k))
                 if of_rows:
-                    out.writerow([kind, files.observations, files.row_line(i) or "", stations.GetValue(i), ""])
+                    note = ""
+                    if name == "RepeatedObservationRows" and repeated_of:
+                        note = f"repeats line {files.row_line(int(repeated_of.GetValue(k))) or ''}"
+                    out.writerow([kind, files.observations, files.row_line(i) or "", stations.GetValue(i), note])
                 else:
                     note = ""
                     if name == "DuplicateGaugeIds" and earlier:

@@ -1134,8 +1134,8 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
 
   in.Times.clear();
   in.Values.clear();
-  std::vector<std::int32_t> repeatedRows;
-  std::vector<double> rowValues; // per observation row (NaN: missing)
+  std::vector<std::int32_t> repeatedRows, repeatedRowOf; // and the earlier row each one repeats
+  std::vector<double> rowValues;                         // per observation row (NaN: missing)
   static const ObservationRows noRows;
   const ObservationRows* rows = &noRows;
   vtkAbstractArray* stations = nullptr; // the observations' station column (for messages)
@@ -1163,6 +1163,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
       tessera::BuildSeries(rows->Match, rows->Steps, rowValues, gaugeCount);
     in.Values = std::move(series.Values);
     repeatedRows = std::move(series.RepeatedRows);
+    repeatedRowOf = std::move(series.RepeatedRowOf);
   }
   else
   {
@@ -1264,8 +1265,13 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     });
   warnOf(repeatedRows.size(),
     "observation row(s) repeat a station and time of an earlier row with a value; the earlier "
-    "value is used (rows from 0, listed in RepeatedObservationRows)",
-    [&](std::size_t k) { return RowName(stations, repeatedRows[k]); });
+    "value is used (rows from 0, listed in RepeatedObservationRows, the rows they repeat in "
+    "RepeatedObservationOfRows)",
+    [&](std::size_t k)
+    {
+      return RowName(stations, repeatedRows[k]) + " repeating row " +
+        std::to_string(repeatedRowOf[k]);
+    });
   warnOf(duplicates.size(),
     "gauge(s) stand where an earlier gauge stands; the first that reports is used",
     [&](std::size_t k)
@@ -1344,6 +1350,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateGaugeIds", duplicates);
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateOfGaugeIds", duplicateOf);
   tessera_vtk::AddIdFieldArray(in.Summary, "RepeatedObservationRows", repeatedRows);
+  tessera_vtk::AddIdFieldArray(in.Summary, "RepeatedObservationOfRows", repeatedRowOf);
   tessera_vtk::AddIdFieldArray(in.Summary, "CoLocatedObservationRows", coLocatedRows);
   tessera_vtk::AddIdFieldArray(in.Summary, "UnusedObservationRows", rows->Steps.UnusedRows());
 }

@@ -97,7 +97,8 @@
  * a step where an earlier one at its place reported, and gauges with observed values whose tiles
  * never reach the catchment at any step. Output 1's field data lists the gauges and rows among
  * them: `UnobservedGaugeIds`, `DuplicateGaugeIds`, `DuplicateOfGaugeIds`, `UnweightedGaugeIds`,
- * `RepeatedObservationRows`, `CoLocatedObservationRows` and `UnusedObservationRows` (rows not
+ * `RepeatedObservationRows` (with `RepeatedObservationOfRows`, the earlier row each repeats, whose
+ * value is used), `CoLocatedObservationRows` and `UnusedObservationRows` (rows not
  * used: no station id, no time, or a station no gauge has; table rows, from 0). Two more warnings
  * flag input that is used but may not be what was meant: no gauge inside the catchment (a sign of
  * swapped or unsigned coordinates), and a catchment ring inside a ring of another block (in

@@ -155,6 +155,7 @@ TEST(ObservationSeries, ARepeatedRowKeepsTheEarlierValue)
   EXPECT_TRUE(SameValues(series.Values[0], { 10.0, 5.0 }));
   EXPECT_TRUE(SameValues(series.Values[1], { NaN, 7.0 }));
   EXPECT_EQ(series.RepeatedRows, (Rows{ 1, 4, 8 }));
+  EXPECT_EQ(series.RepeatedRowOf, (Rows{ 0, 3, 7 })); // b's first row was missing: 3 is kept
 }
 
 TEST(ObservationSeries, NoRowsNoSteps)
@@ -310,7 +311,7 @@ TEST(ObservationSeries, RandomTablesAgreeWithABruteForceReading)
     }
     // Values: per step and gauge, the value of the first of its rows that has one (not NaN); a
     // row is a repeat when an earlier row of its gauge and time had one.
-    Rows repeated;
+    Rows repeated, repeatedOf;
     ASSERT_EQ(series.Values.size(), used.size()) << trial;
     std::size_t s = 0;
     for (const double t : used)
@@ -333,11 +334,13 @@ TEST(ObservationSeries, RandomTablesAgreeWithABruteForceReading)
         if (gaugeOf[e] == gaugeOf[r] && times[e] == times[r] && !std::isnan(values[e]))
         {
           repeated.push_back(static_cast<std::int32_t>(r));
+          repeatedOf.push_back(static_cast<std::int32_t>(e)); // the first with a value
           break;
         }
       }
     }
     EXPECT_EQ(series.RepeatedRows, repeated) << trial;
+    EXPECT_EQ(series.RepeatedRowOf, repeatedOf) << trial;
   }
 }
 

@@ -699,7 +699,7 @@ def test_the_filters_warnings_are_lines_of_their_own():
             f"{observations}: 1 station id(s) of the observations that no gauge has: their rows were ignored: "
             "XX (2 rows from line 4)",
             f"{observations}: 1 observation row(s) repeat a station and time of an earlier row with a value; "
-            "the earlier value is used: line 6 (station N1)",
+            "the earlier value is used: line 6 (station N1) repeating line 2",
             f"{stations}: 1 station id(s) are given to more than one gauge; their observations go to the first: "
             "N1 (gauges 0 and 6: lines 2 and 8)",
             f"{stations}: 1 gauge(s) stand where an earlier gauge stands; the first that reports is used: "
@@ -707,6 +707,10 @@ def test_the_filters_warnings_are_lines_of_their_own():
         ]
         for line in expected:
             assert_that(line in messages, f"{line!r} not among {messages}")
+        # unused_inputs.csv gives the repeated row's line and the line whose value is used.
+        repeats = [u for u in read_csv(os.path.join(out, "unused_inputs.csv")) if u["kind"].startswith("observation repeating")]
+        assert_that([(u["line"], u["station_id"], u["note"]) for u in repeats] == [("6", "N1", "repeats line 2")],
+                    f"the repeated row in unused_inputs.csv: {repeats}")
         unused = [m for m in messages if "never used" in m]
         assert_that(len(unused) == 1 and unused[0].startswith(f"{stations}: 4 gauge(s) have no observed value"),
                     f"the never-used gauges: {messages}")

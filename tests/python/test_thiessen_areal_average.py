@@ -1178,7 +1178,11 @@ def test_long_numeric_ids_repeated_rows_and_shared_ids_are_kept_apart_and_report
     assert_that(summary_column(f, "StationsUsed")[0] == 4, "four stations used")
     repeated = f.GetOutputDataObject(1).GetFieldData().GetArray("RepeatedObservationRows")
     assert_that(repeated.GetNumberOfTuples() == 1 and repeated.GetValue(0) == 4, "row 4 listed as a repeat")
-    assert_that(any("row 4 (station 6730200)" in m for m in messages), f"the repeat is reported: {messages}")
+    repeated_of = f.GetOutputDataObject(1).GetFieldData().GetArray("RepeatedObservationOfRows")
+    assert_that(repeated_of.GetNumberOfTuples() == 1 and repeated_of.GetValue(0) == 2,
+                "row 2 listed as the row that row 4 repeats")
+    assert_that(any("row 4 (station 6730200) repeating row 2" in m for m in messages),
+                f"the repeat is reported with the row it repeats: {messages}")
     # One station id on two gauges: reported, its observations go to the first.
     g = vtkThiessenArealAverage()
     messages = messages_of(g, vtkCommand.WarningEvent)
