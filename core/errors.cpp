@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 
 namespace tessera
 {
@@ -35,6 +36,19 @@ std::string NumberText(double value)
     {
       return std::string(buffer, end.ptr);
     }
+  }
+}
+
+void CheckPositiveScale(double value, const std::string& what)
+{
+  if (!(value > 0.0) || !std::isfinite(value))
+  {
+    throw InputError(what + " " + NumberText(value) + " is not a positive number");
+  }
+  if (value < SmallestScale)
+  {
+    throw InputError(what + " " + NumberText(value) + " is below " + NumberText(SmallestScale) +
+      ", where its square underflows to zero (the Gaussian or radial basis would divide 0 by 0)");
   }
 }
 

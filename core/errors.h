@@ -41,4 +41,12 @@ std::string ListNames(std::size_t count, const NameOf& nameOf)
   return out;
 }
 
+/// Below this a width or sigma s is refused (CheckPositiveScale): the 2 s^2 of a Gaussian, or the
+/// s^2 of an inverse multiquadric, underflows to zero, and the field or curve becomes 0/0 = NaN.
+constexpr double SmallestScale = 1e-150;
+
+/// Throws InputError "<what> <value> is not a positive number" unless value is positive and
+/// finite, and "<what> <value> is below 1e-150 ..." when it is below SmallestScale.
+void CheckPositiveScale(double value, const std::string& what);
+
 } // namespace tessera

@@ -30,10 +30,7 @@ void CheckGrid(int gridWidth, int gridHeight, double width)
     throw InputError("field grid " + std::to_string(gridWidth) + " x " +
       std::to_string(gridHeight) + " has no pixels");
   }
-  if (!(width > 0.0) || !std::isfinite(width))
-  {
-    throw InputError("basis width " + NumberText(width) + " is not a positive number");
-  }
+  CheckPositiveScale(width, "basis width");
 }
 
 void CheckPointsInsideGrid(const std::vector<Point2>& pixelPoints, int gridWidth, int gridHeight)

@@ -38,10 +38,7 @@ void CheckInput(const std::vector<double>& nodes,
   {
     throw InputError("RaG curve has no control point");
   }
-  if (!(sigma > 0.0) || !std::isfinite(sigma))
-  {
-    throw InputError("RaG curve sigma " + NumberText(sigma) + " is not a positive number");
-  }
+  CheckPositiveScale(sigma, "RaG curve sigma");
   if (sampleCount < 2)
   {
     throw InputError("RaG curve sample count " + std::to_string(sampleCount) + " is below 2");

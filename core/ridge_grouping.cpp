@@ -75,6 +75,19 @@ void CheckGridIsFinite(const PixelGrid& grid, double width)
   }
 }
 
+/// Points that differ by a few subnormal doubles (an extent below some 1e-305) make a pixel too
+/// small to be a double's step: the spacing underflows to zero or loses its precision, and the
+/// grid's side became infinite, an allocation's "larger than max_size()" error.
+void CheckSpacingIsNormal(double spacing, double extent)
+{
+  if (extent > 0.0 && !(spacing >= std::numeric_limits<double>::min()))
+  {
+    throw InputError("the points' extent " + NumberText(extent) +
+      " is too small to be divided into pixels (a pixel would be below the smallest normal "
+      "double): scale the points");
+  }
+}
+
 Point2 ClampToGrid(Point2 q, const PixelGrid& grid)
 {
   // Rounding in ToPixelUnits can put an extreme point a hair outside the last pixel centre.
@@ -220,7 +233,7 @@ void MeasureContourDistances(const std::vector<Point2>& pixelPoints,
 RidgeGrouping::RidgeGrouping(const RidgeGroupingSettings& settings)
   : Settings(settings)
 {
-  CheckPositive(settings.Width, "basis width");
+  CheckPositiveScale(settings.Width, "basis width");
   // The margins (MarginPixels: ceil(Width) + 2) on both sides of the largest image must leave
   // room inside it: 2 (ceil(Width) + 2) + 3 <= MaxImageSize.
   const double widest = double((MaxImageSize - 3) / 2 - 2);
@@ -230,7 +243,7 @@ RidgeGrouping::RidgeGrouping(const RidgeGroupingSettings& settings)
       " pixels leaves no room inside the largest image (" + std::to_string(MaxImageSize) +
       " pixels, margins of the width on both sides): at most " + NumberText(widest));
   }
-  CheckPositive(settings.CurveSigma, "curve sigma");
+  CheckPositiveScale(settings.CurveSigma, "curve sigma");
   CheckPositive(settings.CurveSamplesPerPixel, "curve samples per pixel");
   if (!(settings.MinimumContourLength >= 0.0) || !std::isfinite(settings.MinimumContourLength))
   {
@@ -276,6 +289,7 @@ PixelGrid RidgeGrouping::MakeGrid(const std::vector<Point2>& points, int imageSi
   const int margin = this->MarginPixels();
   PixelGrid grid;
   grid.Spacing = box.LargerSide() / static_cast<double>(imageSize - 1 - 2 * margin);
+  CheckSpacingIsNormal(grid.Spacing, box.LargerSide());
   auto side = [&](double extent)
   {
     return std::min(imageSize, static_cast<int>(std::ceil(extent / grid.Spacing)) + 1 + 2 * margin);

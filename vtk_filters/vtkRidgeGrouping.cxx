@@ -266,6 +266,14 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     pointsOut->GetPointData()->AddArray(groups);
     pointsOut->GetPointData()->AddArray(nodes);
     pointsOut->GetPointData()->AddArray(distances);
+    // The input's field data (passed on by the pipeline) keeps arrays of these names as NAME_input.
+    const tessera_vtk::RenamedArrays renamedFields = tessera_vtk::RenameArraysNamed(
+      pointsOut->GetFieldData(), { "ImageSize", "PixelSize", "FieldErrorBound" }, true);
+    if (!renamedFields.empty())
+    {
+      vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
+                        renamedFields, "field-data", "output 0", "field"));
+    }
     AddScalar(pointsOut->GetFieldData(), "ImageSize", result.ImageSize);
     AddScalar(pointsOut->GetFieldData(), "PixelSize", result.PixelSize);
     AddScalar(pointsOut->GetFieldData(), "FieldErrorBound", result.FieldErrorBound);

@@ -13,13 +13,15 @@
  * groups of one point are named in a warning). Only x and y are used: points off the plane z = 0
  * are grouped by their x and y, and the contours, curves and image lie at z = 0.
  *
- * The grouping is not symmetric under reflection: the ridges' thinning peels borders in a fixed
- * order, so a mirrored data set can give other groups where ridges meet or nearly touch (the
- * field and its ridge pixels are mirrored exactly). A time-varying input is grouped at each
- * time asked, but the field image's extent is announced from the points as RequestInformation
- * finds them, which a change of time alone does not rerun: a time whose grid has another size
- * gives its image on the announced pixels from the lower left corner, cropped or padded (Field
- * NaN, ridges 0), with a warning; modifying the filter announces the grid of the time then.
+ * The grouping is not invariant under reflection or rotation: the ridges' thinning peels borders
+ * in a fixed order, so a mirrored or rotated data set can give other groups where ridges meet or
+ * nearly touch (the field and its ridge pixels are mirrored or rotated exactly; a quarter turn of
+ * the Fiji epicentres moved a few percent of the points to other groups). A time-varying input is
+ * grouped at each time asked, but the field image's extent is announced from the points as
+ * RequestInformation finds them, which a change of time alone does not rerun: a time whose grid has
+ * another size gives its image on the announced pixels from the lower left corner, cropped or
+ * padded (Field NaN, ridges 0), with a warning; modifying the filter announces the grid of the time
+ * then.
  *
  * The input is a vtkPointSet, or a composite data set of them whose points are joined in block
  * order into one set (a point layer from vtkGDALVectorReader, a block per feature with its
@@ -31,7 +33,8 @@
  * - 0 (vtkPolyData): the input points (one vertex each, point data passed) with point data
  *   `GroupId` (int; the contour of the point, -1 = unassigned), `Node` (double in [0, 1]) and
  *   `ContourDistance` (double; from the point to the contour pixel it is grouped by, in the
- *   points' units, NaN when unassigned: points beyond 10 basis widths are named in a warning);
+ *   points' units, NaN when unassigned or when there is no contour: points beyond 10 basis
+ *   widths are named in a warning);
  *   an input array of one of those names is passed as NAME_input, with a warning.
  *   Field data `ImageSize` (pixels along the longer side, as used), `PixelSize`,
  *   `FieldErrorBound` (bound of |FFT field - direct sum| at any pixel).
@@ -42,10 +45,12 @@
  * - 2 (vtkPolyData): the fitted curves, finely sampled polylines, cell data `GroupId` and
  *   `Closed`.
  * - 3 (vtkImageData): the field image, point data `Field` (double), `MinorRidge` and
- *   `MajorRidge` (unsigned char, 1 on ridge pixels).
+ *   `MajorRidge` (unsigned char, 1 on ridge pixels). GetOutput(3) gives nothing (it casts to
+ *   poly data): use GetOutputDataObject(3).
  *
  * Fewer than 2 points give a warning, output 0 holding them unassigned (GroupId -1) and the
- * other outputs empty; identical points give one group and no curve. ImageSize 0 (default)
+ * other outputs empty; identical points give one group (GroupId 0, Node 0, ContourDistance NaN)
+ * with no contour and no curve, and a warning. ImageSize 0 (default)
  * chooses the size as the paper says (most points in pixels of their own, copies of a point
  * counting once); sizes above 2048 are refused before anything is allocated (the FFT would need
  * more than 512 MiB). NaN or infinite coordinates are an error naming the point.
@@ -77,8 +82,14 @@ public:
 
   ///@{
   /**
-   * The radial basis: inverse multiquadric [d^2 + r^2]^(-1/2) (default) or Gaussian
-   * exp(-d^2 / 2 s^2).
+   * The radial basis: inverse multiquadric [d^2 + r^2]^(-1/2) (default, the paper's first) or
+   * Gaussian exp(-d^2 / 2 s^2). The inverse multiquadric's field falls off slowly, so near other
+   * points its ridges slope along themselves, and where that slope beats the drop across them
+   * few pixels pass the paper's major-ridge test: at the automatic image size, two noisy lines
+   * crossing at a right angle gave no contour (every point unassigned, with a warning), two
+   * noisy concentric circles 50 units apart one group, and a noisy spiral a contour of a fifth
+   * of its length. The Gaussian, whose field falls off fast, or a larger ImageSize (256 there)
+   * grouped all three correctly; try them when groups are missing or merged.
    */
   vtkSetClampMacro(Basis, int, INVERSE_MULTIQUADRIC, GAUSSIAN);
   vtkGetMacro(Basis, int);
@@ -88,8 +99,9 @@ public:
 
   ///@{
   /**
-   * Width of the basis (r or s) in pixels (default 5). A width that is not positive, or whose
-   * margins leave no room inside the largest image (above 1020), is an error at the update.
+   * Width of the basis (r or s) in pixels (default 5). A width that is not positive, below 1e-150
+   * (its square underflows), or whose margins leave no room inside the largest image (above
+   * 1020), is an error at the update.
    */
   vtkSetMacro(Width, double);
   vtkGetMacro(Width, double);
@@ -108,7 +120,8 @@ public:
   ///@{
   /**
    * Smoothness of the fitted rational Gaussian curves, in node units (default 0.04; the paper
-   * uses 0.01 to 0.08). Not positive: an error at the update.
+   * uses 0.01 to 0.08). Not positive, or below 1e-150 (its square underflows): an error at the
+   * update.
    */
   vtkSetMacro(CurveSigma, double);
   vtkGetMacro(CurveSigma, double);
@@ -120,7 +133,8 @@ public:
    * closest tangent. Where two curves cross, the longest contour may turn onto the other curve
    * (two L-shaped groups); closest tangent tends to keep each curve straight through the crossing,
    * but where the two ridges merge before it (a shallow angle, or the inverse multiquadric's wide
-   * ridges at a right angle) the points of both curves can still fall into one or mixed groups.
+   * ridges at a right angle) the points of both curves can still fall into one or mixed groups,
+   * or into none (see Basis).
    */
   vtkSetClampMacro(JoinRule, int, LONGEST, CLOSEST_TANGENT);
   vtkGetMacro(JoinRule, int);

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -74,3 +75,33 @@ TEST(NumberText, GivesBackWhatWasTyped)
 }
 
 } // namespace
+
+TEST(CheckPositiveScale, RefusesScalesWhoseSquareUnderflows)
+{
+  using tessera::SmallestScale;
+  // At the smallest scale taken, a Gaussian's 2 s^2 and an inverse multiquadric's s^2 are normal
+  // doubles: the field and the curves divide by a nonzero number.
+  EXPECT_GE(SmallestScale * SmallestScale, std::numeric_limits<double>::min());
+  EXPECT_NO_THROW(tessera::CheckPositiveScale(SmallestScale, "basis width"));
+  EXPECT_NO_THROW(tessera::CheckPositiveScale(1e300, "basis width"));
+  const auto messageOf = [](double value)
+  {
+    try
+    {
+      tessera::CheckPositiveScale(value, "curve sigma");
+    }
+    catch (const tessera::InputError& error)
+    {
+      return std::string(error.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_NE(
+    messageOf(std::nextafter(SmallestScale, 0.0)).find("is below 1e-150"), std::string::npos);
+  EXPECT_EQ(messageOf(1e-170).rfind("curve sigma 1e-170 is below 1e-150", 0), 0u)
+    << messageOf(1e-170);
+  for (const double bad : { 0.0, -1.0, std::nan(""), HUGE_VAL, -HUGE_VAL })
+  {
+    EXPECT_NE(messageOf(bad).find("is not a positive number"), std::string::npos) << bad;
+  }
+}

@@ -6,7 +6,7 @@ import math
 import random
 
 import numpy as np
-from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray
 
 from tessera import vtkRidgeGrouping
 from tessera_testing import assert_close, assert_that, make_points, messages_of, run
@@ -139,6 +139,9 @@ def test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept():
              ("SetWidth", 1020.25, "basis width 1020.25 pixels leaves no room"),
              ("SetWidth", -1e-9, "basis width -1e-09 is not a positive number"),
              ("SetCurveSigma", 0.0, "curve sigma 0"), ("SetMinimumContourLength", -2.0, "minimum contour length -2"),
+             # A width or sigma whose square underflows made NaN curves (no message) or a NaN pixel.
+             ("SetCurveSigma", 1e-162, "curve sigma 1e-162 is below 1e-150"),
+             ("SetWidth", 1e-170, "basis width 1e-170 is below 1e-150"),
              ("SetImageSize", -1, "image size -1 is negative")]
     for setter, value, expected in cases:
         f = vtkRidgeGrouping()
@@ -182,6 +185,27 @@ def test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept():
                 and out.GetArray("GroupId").GetValue(0) != 7.0, "the input's arrays kept under NAME_input")
     assert_that(any("'GroupId' is passed to output 0 as 'GroupId_input'" in w for w in warnings), f"warned: {warnings}")
     assert_that(data.GetPointData().GetArray("GroupId") is not None, "the input's own array keeps its name")
+    # So are field-data arrays of the names of the filter's own (they were replaced silently).
+    size = vtkDoubleArray()
+    size.SetName("ImageSize")
+    size.InsertNextValue(4096.0)
+    data.GetFieldData().AddArray(size)
+    f = vtkRidgeGrouping()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetInputData(data)
+    f.Update()
+    fields = f.GetOutput(0).GetFieldData()
+    assert_that(fields.GetArray("ImageSize_input").GetValue(0) == 4096.0
+                and fields.GetArray("ImageSize").GetValue(0) <= 1024,  # the automatic size's largest
+                "the input's ImageSize kept as ImageSize_input beside the filter's")
+    assert_that(any("'ImageSize' is passed to output 0 as 'ImageSize_input'" in w for w in warnings),
+                f"warned: {warnings}")
+    # Points a few subnormal doubles apart: an error naming their extent (an allocation's error).
+    f = vtkRidgeGrouping()
+    errors = messages_of(f)
+    f.SetInputData(make_points([(0.0, 0.0), (1e-322, 0.0), (5e-323, 1e-322)]))
+    f.Update()
+    assert_that(len(errors) == 1 and "extent 9.88131291682493e-323 is too small" in errors[0], f"subnormal: {errors}")
 
 
 
