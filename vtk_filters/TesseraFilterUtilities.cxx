@@ -35,6 +35,7 @@
 #include "segment_rings.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -213,7 +214,9 @@ tessera::Window CutToPoints(tessera::Window window, const std::vector<tessera::P
 std::string EmptyBoundsWarning(const double bounds[4], bool withConstraints)
 {
   const bool unset = bounds[0] == 0.0 && bounds[1] == 0.0 && bounds[2] == 0.0 && bounds[3] == 0.0;
-  if (unset || (bounds[0] < bounds[1] && bounds[2] < bounds[3]))
+  const bool nan = std::isnan(bounds[0]) || std::isnan(bounds[1]) || std::isnan(bounds[2]) ||
+    std::isnan(bounds[3]); // an error names it (ChooseWindow): it is not an empty rectangle
+  if (unset || nan || (bounds[0] < bounds[1] && bounds[2] < bounds[3]))
   {
     return std::string();
   }
@@ -306,8 +309,14 @@ tessera::Window ChooseWindow(const double bounds[4],
   // Identical points: a unit square around them (a padding of a zero side would be empty).
   const double pad = side > 0.0 ? padding * side : 0.5;
   const double margin = side > 0.0 && pad == 0.0 ? side * 1e-9 : 0.0; // keep points strictly inside
-  const double lower[2] = { Below(xmin, pad + margin), Below(ymin, pad + margin) };
-  const double upper[2] = { Above(xmax, pad + margin), Above(ymax, pad + margin) };
+  // A triangulation needs no area: its window need only hold the points, so a padding that would
+  // carry it past the largest double (points of 1e308, or a Padding of 1e300) is cut to half the
+  // room there is, which changes no face. Tiles need their areas: for them it stays an error.
+  const double room =
+    0.5 * std::min({ DBL_MAX - xmax, xmin + DBL_MAX, DBL_MAX - ymax, ymin + DBL_MAX });
+  const double usable = needArea ? pad + margin : std::min(pad + margin, room);
+  const double lower[2] = { Below(xmin, usable), Below(ymin, usable) };
+  const double upper[2] = { Above(xmax, usable), Above(ymax, usable) };
   if (!std::isfinite(lower[0]) || !std::isfinite(lower[1]) || !std::isfinite(upper[0]) ||
     !std::isfinite(upper[1]))
   {
@@ -494,9 +503,10 @@ LeafArray FindLeafArray(vtkPointSet* leaf,
   }
   return {};
 }
-/// The names of a leaf's point-data arrays and, with its vertices' cell data, of those cell-data
-/// arrays that no point-data array shares a name with.
-std::vector<std::string> ArrayNames(vtkPointSet* leaf, bool withCellData)
+
+/// The names of a leaf's point-data arrays, then of those cell-data arrays that no point-data
+/// array shares a name with (carried when its cells are one vertex per point, else reported).
+std::vector<std::string> ArrayNames(vtkPointSet* leaf)
 {
   std::vector<std::string> names;
   for (vtkFieldData* data : { static_cast<vtkFieldData*>(leaf->GetPointData()),
@@ -510,10 +520,6 @@ std::vector<std::string> ArrayNames(vtkPointSet* leaf, bool withCellData)
       {
         names.emplace_back(name);
       }
-    }
-    if (!withCellData)
-    {
-      break;
     }
   }
   return names;
@@ -848,7 +854,9 @@ vtkSmartPointer<vtkPolyData> MergedPoints(vtkCompositeDataSet* composite,
   {
     for (const PointLeaf& leaf : leaves)
     {
-      for (const std::string& name : ArrayNames(leaf.Set, !leaf.CellOf.empty()))
+      // Cell data of any leaf: a leaf whose cells are not one vertex per point (a multipoint
+      // feature) cannot carry it, and JoinProblem says so rather than it being left out unsaid.
+      for (const std::string& name : ArrayNames(leaf.Set))
       {
         if (std::find(names.begin(), names.end(), name) == names.end())
         {

@@ -24,7 +24,10 @@
  *
  * Any finite scale: coordinates of some 1e100 or 1e-100 are scaled by a power of two (exactly)
  * before the triangulation, which is the same; the faces are ids, so nothing is scaled back. A
- * window too large for its area to be a double is taken (a triangulation needs no area).
+ * window too large for its area to be a double is taken (a triangulation needs no area), and a
+ * Padding that would carry the automatic window past the largest double is cut to the room there
+ * is (points of 1e308 are triangulated). Points spanning more orders of magnitude than the doubles
+ * hold around one scale (1e300 with 1e-200) are an error naming the point.
  *
  * @sa vtkDirichletTessellation vtkDelaunay2D
  */

@@ -4,15 +4,15 @@
  *
  * vtkDirichletTessellation computes the tile of every point: the part of a convex window nearer
  * to that point than to any other (Green and Sibson 1978). Only x and y of the input points are
- * used. Every topological decision uses exact predicates, so the combinatorics (which tiles there
- * are, which points neighbour which, and each tile's sides) are the same for every insertion
- * order, and exactly co-circular points are handled consistently: at a vertex shared by 4 or more
- * tiles, neither diagonal is recorded as a contiguity; the pairs that meet only there are
- * half-neighbours when that vertex lies strictly inside the window (tiles that meet only at a
- * point of the window's boundary are no pair at all). The corners are rounded constructions
- * (circumcentres, window crossings), each computed from its points taken in coordinate order,
- * and an area is summed from its tile's lowest corner, so the input reordered gives the same
- * corners and areas, bit for bit.
+ * used (z is not read, and output 1 passes the points on as they are, NaN z included). Every
+ * topological decision uses exact predicates, so the combinatorics (which tiles there are, which
+ * points neighbour which, and each tile's sides) are the same for every insertion order, and
+ * exactly co-circular points are handled consistently: at a vertex shared by 4 or more tiles,
+ * neither diagonal is recorded as a contiguity; the pairs that meet only there are half-neighbours
+ * when that vertex lies strictly inside the window (tiles that meet only at a point of the window's
+ * boundary are no pair at all). The corners are rounded constructions (circumcentres, window
+ * crossings), each computed from its points taken in coordinate order, and an area is summed from
+ * its tile's lowest corner, so the input reordered gives the same corners and areas, bit for bit.
  *
  * The window is the intersection of the rectangle SetWindowBounds(xmin, xmax, ymin, ymax) (when
  * xmin < xmax and ymin < ymax) and the strict constraints a*x + b*y + c < 0 added with
@@ -45,7 +45,8 @@
  * own copies). Cell data:
  * - `PointId` (vtkIdType): the index of the point in the input;
  * - `Area` (double): the tile's area, by compensated summation;
- * - `NeighborCount` (int): contiguities of the tile, window edges included (its polygon sides,
+ * - `NeighborCount` (int): contiguities of the tile, window edges included; half-neighbours
+ *   (output 1's Kind 1 lines) share no side and are not counted (its polygon sides,
  *   decided exactly: where distinct corners round to one point, the polygon lists it once, never
  *   twice in a row, and has fewer points than NeighborCount; a corner an ulp off between two that
  *   round to one point is left out, so that the polygon does not go out to it and back);
@@ -75,7 +76,7 @@
  * Both outputs' cell arrays use 32-bit storage (read by VTK like the 64-bit kind).
  *
  * 0, 1 or 2 points and collinear points give valid output: the tiles are the whole window,
- * strips or half-planes within it. A NaN or infinite coordinate is an error naming the point.
+ * strips or half-planes within it. A NaN or infinite x or y is an error naming the point.
  *
  * Range. The Delaunay decisions are exact for any finite coordinates. The window decisions of the
  * tiles (where a Voronoi vertex lies against a window side) are exact for nonzero coordinates

@@ -534,11 +534,14 @@ def test_automatic_window_keeps_every_point_and_bad_windows_are_named():
             ("huge bounds", lambda f: f.SetWindowBounds(-1e200, 1e200, -1e200, 1e200), "area overflows")]:
         f = vtkDirichletTessellation()
         messages = messages_of(f)
+        warnings = messages_of(f, vtkCommand.WarningEvent)
         f.SetInputData(make_points([(0.2, 0.3), (0.7, 0.6), (0.4, 0.9)]))
         setup(f)
         f.Update()
         assert_that(len(messages) == 1 and expected in messages[0] and f.GetOutput(0).GetNumberOfCells() == 0,
                     f"{name}: an error saying '{expected}', not NaN areas: {messages}")
+        # (A NaN bound was also called an empty rectangle, "ymin >= ymax", in a warning.)
+        assert_that(not warnings, f"{name}: no warning beside the error: {warnings}")
 
 
 def test_window_constraint_errors_name_them_as_the_user_added_them():
@@ -833,9 +836,11 @@ def test_delaunay_at_any_scale():
     rng = random.Random(5)
     unit = [(rng.random(), rng.random()) for _ in range(300)]
 
-    def faces(coords):
+    def faces(coords, padding=None):
         t = vtkDelaunayTriangulation()
         messages = messages_of(t)
+        if padding is not None:
+            t.SetPadding(padding)
         t.SetInputData(make_points(coords))
         t.Update()
         out = t.GetOutput()
@@ -851,6 +856,17 @@ def test_delaunay_at_any_scale():
         s = math.ldexp(1.0, exponent)
         got, messages = faces([(x * s, y * s) for x, y in unit])
         assert_that(not messages and got == reference, f"2^{exponent}: {len(got)} faces, {messages}")
+    # Points across the doubles (within +-1.95 2^1022, some +-8.8e307) and a Padding of 1e300: the
+    # padded window would pass the largest double, and was refused ("its area overflows"); the
+    # window of a triangulation is now cut to the room there is. Scaling by 2^1022 is exact, so
+    # the faces are those of the points at scale 1.
+    centred = [((x - 0.5) * 3.9, (y - 0.5) * 3.9) for x, y in unit]
+    expected, _ = faces(centred)
+    s = math.ldexp(1.0, 1022)
+    got, messages = faces([(x * s, y * s) for x, y in centred])
+    assert_that(not messages and got == expected and len(got) > 500, f"across the doubles: {len(got)} faces, {messages}")
+    got, messages = faces(unit, padding=1e300)
+    assert_that(not messages and got == reference, f"Padding 1e300: {len(got)} faces, {messages}")
 
 
 def test_a_coordinate_too_small_for_exact_window_decisions_is_named():
@@ -1137,6 +1153,40 @@ def test_blocks_with_different_arrays_are_joined_with_a_warning_either_way_round
     f.SetInputData(data)
     f.Update()
     assert_that(f.GetOutputDataObject(0).GetCellData().GetArray("vtkGhostType") is None, "no cell ghosts")
+
+
+def test_blocks_of_multipoint_features_name_the_attributes_they_cannot_carry():
+    """Blocks whose cell is one poly-vertex of several points (a MultiPoint layer from
+    vtkGDALVectorReader, its attributes cell data) cannot give their points the attributes: a
+    warning names them, as for one such set alone (they were dropped without a word)."""
+    from vtkmodules.vtkCommonCore import vtkCommand, vtkIntArray
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkMultiBlockDataSet
+
+    def multipoint(coords, station):
+        data = make_points(coords)
+        cell = vtkCellArray()
+        cell.InsertNextCell(len(coords))
+        for k in range(len(coords)):
+            cell.InsertCellPoint(k)
+        data.SetVerts(cell)
+        value = vtkIntArray()
+        value.SetName("station")
+        value.InsertNextValue(station)
+        data.GetCellData().AddArray(value)
+        return data
+
+    blocks = vtkMultiBlockDataSet()
+    blocks.SetBlock(0, multipoint([(0, 0), (1, 0)], 7))
+    blocks.SetBlock(1, multipoint([(0, 1), (1, 1)], 8))
+    f = vtkDirichletTessellation()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetInputData(blocks)
+    f.Update()
+    expected = ("the array 'station' is not carried: block 0 (composite index 1) of the points holds 'station' "
+                "as cell data of cells that are not one vertex per point (a multipoint feature?)")
+    assert_that(len(warnings) == 1 and expected in warnings[0], f"{warnings}")
+    assert_that(f.GetOutputDataObject(0).GetNumberOfCells() == 4
+                and f.GetOutputDataObject(0).GetCellData().GetArray("station") is None, "four tiles, no 'station'")
 
 
 def test_tiles_narrower_than_an_ulp_are_named():
