@@ -149,14 +149,22 @@ def make_points(coords, **arrays):
 
 
 def run(tests):
-    """Runs every test function, prints a summary line ctest users can read, exits 1 on failure."""
-    failed = 0
+    """Runs every test function, prints a summary line ctest users can read, exits 1 on failure.
+    A test_ function of the script that is not in the list fails too (one was written and never
+    run)."""
+    passed = failed = 0
+    script = vars(sys.modules["__main__"])
+    listed = {test.__name__ for test in tests}
+    for name in sorted(n for n, f in script.items() if n.startswith("test_") and callable(f) and n not in listed):
+        failed += 1
+        print(f"FAIL {name}: defined but not in the list given to run()")
     for test in tests:
         try:
             test()
+            passed += 1
             print(f"PASS {test.__name__}")
         except Exception as error:  # report every failing test, not only the first
             failed += 1
             print(f"FAIL {test.__name__}: {error!r}")
-    print(f"{len(tests) - failed} passed, {failed} failed")
+    print(f"{passed} passed, {failed} failed")
     sys.exit(1 if failed else 0)
