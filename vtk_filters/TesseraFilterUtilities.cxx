@@ -326,6 +326,21 @@ tessera::Window ChooseWindow(const double bounds[4],
     tessera::Window::Rectangle(lower[0], upper[0], lower[1], upper[1]), needArea);
 }
 
+void CheckChoice(const char* property, int value, const std::vector<const char*>& names)
+{
+  if (value >= 0 && static_cast<std::size_t>(value) < names.size())
+  {
+    return;
+  }
+  std::string choices;
+  for (std::size_t k = 0; k < names.size(); ++k)
+  {
+    choices += (k ? ", " : "") + std::to_string(k) + " (" + names[k] + ")";
+  }
+  throw tessera::InputError(
+    std::string(property) + " " + std::to_string(value) + " is not one of " + choices);
+}
+
 void AddIdFieldArray(vtkDataObject* data, const char* name, const std::vector<std::int32_t>& ids)
 {
   vtkNew<vtkIdTypeArray> array;

@@ -216,6 +216,12 @@ RenamedArrays AddUnusedPointIds(vtkDataObject* data,
 /// ids are; empty when every point was used.
 std::string UnusedPointsWarning(std::size_t rejected, std::size_t duplicates, const char* verb);
 
+/// Throws tessera::InputError unless value is one of the choices 0 .. names.size() - 1, naming
+/// them: "Basis 5 is not one of 0 (InverseMultiquadric), 1 (Gaussian)". For the filters'
+/// enumerated settings, which are set with vtkSetMacro: vtkSetClampMacro turned a wrong value into
+/// another choice without a word (SetBasis(5) ran the Gaussian).
+void CheckChoice(const char* property, int value, const std::vector<const char*>& names);
+
 /// Sizes array to `tuples` tuples of `components` values, left unwritten. A large array (the
 /// filters' outputs at 10^5 points and more) is allocated on huge pages (core large_pages.h: a
 /// page fault per 2 MiB instead of per 4 KiB, which on a virtual machine halved the tiles

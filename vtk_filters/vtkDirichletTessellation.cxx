@@ -442,6 +442,7 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
   vtkPolyData* graphOutput = vtkPolyData::GetData(outputVector, 1);
   try
   {
+    tessera_vtk::CheckChoice("Algorithm", this->Algorithm, { "GreenSibson", "BrasselReif" });
     std::vector<std::string> notCarried;
     const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(inputData, notCarried);
     for (const std::string& warning : notCarried)

@@ -117,9 +117,10 @@ public:
 
   ///@{
   /**
-   * The engine: GREEN_SIBSON (default) or BRASSEL_REIF (rectangular windows only).
+   * The engine: GREEN_SIBSON (default) or BRASSEL_REIF (rectangular windows only). Another value
+   * is an error at the update.
    */
-  vtkSetClampMacro(Algorithm, int, GREEN_SIBSON, BRASSEL_REIF);
+  vtkSetMacro(Algorithm, int);
   vtkGetMacro(Algorithm, int);
   void SetAlgorithmToGreenSibson() { this->SetAlgorithm(GREEN_SIBSON); }
   void SetAlgorithmToBrasselReif() { this->SetAlgorithm(BRASSEL_REIF); }

@@ -533,6 +533,19 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
   }
   try
   {
+    tessera_vtk::CheckChoice("Projection",
+      this->Projection,
+      { "Automatic",
+        "AlbersEqualArea",
+        "LambertConformalConic",
+        "TransverseMercator",
+        "UTM",
+        "AzimuthalEquidistant" });
+    if (this->UTMZone < 0 || this->UTMZone > 60)
+    {
+      throw tessera::InputError("UTMZone " + std::to_string(this->UTMZone) +
+        " is neither a zone from 1 to 60 nor 0 (the zone of the data's central longitude)");
+    }
     if (std::isnan(this->MaximumEdgeLength))
     {
       // (every comparison with NaN is false: it turned the densification off without a word)

@@ -81,9 +81,10 @@ public:
 
   ///@{
   /**
-   * The projection (default AUTOMATIC: Albers equal-area from the data's extent).
+   * The projection (default AUTOMATIC: Albers equal-area from the data's extent). Another value
+   * is an error at the update.
    */
-  vtkSetClampMacro(Projection, int, AUTOMATIC, AZIMUTHAL_EQUIDISTANT);
+  vtkSetMacro(Projection, int);
   vtkGetMacro(Projection, int);
   void SetProjectionToAutomatic() { this->SetProjection(AUTOMATIC); }
   void SetProjectionToAlbersEqualArea() { this->SetProjection(ALBERS_EQUAL_AREA); }
@@ -95,9 +96,10 @@ public:
 
   ///@{
   /**
-   * UTM zone 1..60; 0 (default) takes the zone of the data's central longitude.
+   * UTM zone 1..60; 0 (default) takes the zone of the data's central longitude. Another value is
+   * an error at the update.
    */
-  vtkSetClampMacro(UTMZone, int, 0, 60);
+  vtkSetMacro(UTMZone, int);
   vtkGetMacro(UTMZone, int);
   ///@}
 

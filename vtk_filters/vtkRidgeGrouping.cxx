@@ -209,6 +209,8 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
   vtkImageData* imageOut = vtkImageData::GetData(outputVector, 3);
   try
   {
+    tessera_vtk::CheckChoice("Basis", this->Basis, { "InverseMultiquadric", "Gaussian" });
+    tessera_vtk::CheckChoice("JoinRule", this->JoinRule, { "Longest", "ClosestTangent" });
     std::vector<std::string> notCarried;
     const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(inputData, notCarried);
     for (const std::string& warning : notCarried)

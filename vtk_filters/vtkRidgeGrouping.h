@@ -89,9 +89,10 @@ public:
    * crossing at a right angle gave no contour (every point unassigned, with a warning), two
    * noisy concentric circles 50 units apart one group, and a noisy spiral a contour of a fifth
    * of its length. The Gaussian, whose field falls off fast, or a larger ImageSize (256 there)
-   * grouped all three correctly; try them when groups are missing or merged.
+   * grouped all three correctly; try them when groups are missing or merged. Another value is an
+   * error at the update.
    */
-  vtkSetClampMacro(Basis, int, INVERSE_MULTIQUADRIC, GAUSSIAN);
+  vtkSetMacro(Basis, int);
   vtkGetMacro(Basis, int);
   void SetBasisToInverseMultiquadric() { this->SetBasis(INVERSE_MULTIQUADRIC); }
   void SetBasisToGaussian() { this->SetBasis(GAUSSIAN); }
@@ -134,9 +135,9 @@ public:
    * (two L-shaped groups); closest tangent tends to keep each curve straight through the crossing,
    * but where the two ridges merge before it (a shallow angle, or the inverse multiquadric's wide
    * ridges at a right angle) the points of both curves can still fall into one or mixed groups,
-   * or into none (see Basis).
+   * or into none (see Basis). Another value is an error at the update.
    */
-  vtkSetClampMacro(JoinRule, int, LONGEST, CLOSEST_TANGENT);
+  vtkSetMacro(JoinRule, int);
   vtkGetMacro(JoinRule, int);
   void SetJoinRuleToLongest() { this->SetJoinRule(LONGEST); }
   void SetJoinRuleToClosestTangent() { this->SetJoinRule(CLOSEST_TANGENT); }

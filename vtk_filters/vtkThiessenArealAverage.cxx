@@ -912,6 +912,8 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
   Internals& in = *this->Internal;
   try
   {
+    tessera_vtk::CheckChoice(
+      "AreaMethod", this->AreaMethod, { "Automatic", "EqualAreaPlane", "GeodesicPolygon" });
     if (observationsData && !observations)
     {
       throw tessera::InputError(std::string("the observations (input 2) are a ") +

@@ -205,9 +205,10 @@ public:
   /**
    * How ellipsoidal areas are measured (default automatic: planar areas for an equal-area
    * projection, GeographicLib::PolygonArea of unprojected rings otherwise). EqualAreaPlane with a
-   * projection that is not equal-area is an error at the update.
+   * projection that is not equal-area, or a value that is none of the three, is an error at the
+   * update.
    */
-  vtkSetClampMacro(AreaMethod, int, AUTOMATIC_AREAS, GEODESIC_POLYGON);
+  vtkSetMacro(AreaMethod, int);
   vtkGetMacro(AreaMethod, int);
   void SetAreaMethodToAutomatic() { this->SetAreaMethod(AUTOMATIC_AREAS); }
   void SetAreaMethodToEqualAreaPlane() { this->SetAreaMethod(EQUAL_AREA_PLANE); }

@@ -1249,6 +1249,18 @@ def test_delaunay_takes_a_window_far_larger_than_its_points():
         listed = [rejected.GetValue(k) for k in range(rejected.GetNumberOfTuples())] if rejected else []
         assert_that(listed == ([5] if setting == "rejecting" else []), f"{setting}: rejected {listed}")
 
+
+def test_an_algorithm_that_is_no_choice_is_named():
+    # SetAlgorithm(7) ran BrasselReif without a word (VTK's clamping setter).
+    f = vtkDirichletTessellation()
+    errors = messages_of(f)
+    f.SetAlgorithm(7)
+    f.SetInputData(make_points([(0.2, 0.3), (0.7, 0.6), (0.4, 0.9)]))
+    f.Update()
+    assert_that(len(errors) == 1 and "Algorithm 7 is not one of 0 (GreenSibson), 1 (BrasselReif)" in errors[0]
+                and f.GetOutput(0).GetNumberOfCells() == 0, f"{errors}")
+
+
 if __name__ == "__main__":
     run([test_tiles_are_nearest_point_regions,
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
@@ -1279,4 +1291,6 @@ if __name__ == "__main__":
          test_vertex_cell_data_of_one_point_set_is_carried_and_other_cell_data_is_reported,
          test_blocks_with_different_arrays_are_joined_with_a_warning_either_way_round,
          test_tiles_narrower_than_an_ulp_are_named,
-         test_delaunay_takes_a_window_far_larger_than_its_points])
+         test_delaunay_takes_a_window_far_larger_than_its_points,
+         test_blocks_of_multipoint_features_name_the_attributes_they_cannot_carry,
+         test_an_algorithm_that_is_no_choice_is_named])

@@ -292,6 +292,20 @@ def test_a_nan_edge_length_is_an_error():
     assert_that(len(errors) == 1 and "MaximumEdgeLength is NaN" in errors[0] and f.GetOutput().GetNumberOfPoints() == 0,
                 f"{errors}")
 
+
+def test_a_projection_or_zone_that_is_no_choice_is_named():
+    # SetProjection(9) and SetUTMZone(61) were clamped to another projection and zone 60, silently.
+    for setup, expected in [(lambda f: f.SetProjection(9), "Projection 9 is not one of 0 (Automatic), 1 (AlbersEqualArea)"),
+                            (lambda f: f.SetUTMZone(61), "UTMZone 61 is neither a zone from 1 to 60 nor 0"),
+                            (lambda f: f.SetUTMZone(-1), "UTMZone -1 is neither a zone from 1 to 60 nor 0")]:
+        f = vtkGeographicProjection()
+        errors = messages_of(f)
+        setup(f)
+        f.SetInputData(make_points([(-105.0, 39.0), (-104.0, 40.0)]))
+        f.Update()
+        assert_that(len(errors) == 1 and expected in errors[0] and f.GetOutput().GetNumberOfPoints() == 0, f"{errors}")
+
+
 if __name__ == "__main__":
     run([test_round_trip_of_the_colorado_gauges,
          test_azimuthal_equidistant_keeps_distances_from_the_centre,
@@ -302,4 +316,5 @@ if __name__ == "__main__":
          test_an_edge_that_reads_both_ways_round_the_globe_is_reported,
          test_automatic_with_parameters_set_is_their_albers_conic,
          test_global_ids_are_kept_where_no_edge_is_cut_and_their_loss_is_said,
-         test_a_nan_edge_length_is_an_error])
+         test_a_nan_edge_length_is_an_error,
+         test_a_projection_or_zone_that_is_no_choice_is_named])

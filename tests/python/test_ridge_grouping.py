@@ -320,9 +320,24 @@ def test_a_time_varying_input_is_grouped_at_each_time_with_an_image_consumer():
     assert_that(not errors and not executive_errors, f"{errors} {executive_errors}")
     assert_that(sum("differs from the one announced" in w for w in warnings) == 2, f"{warnings}")
 
+
+def test_a_basis_or_join_rule_that_is_no_choice_is_named():
+    # SetBasis(5) ran the Gaussian and SetJoinRule(-1) the longest contour, silently (clamped).
+    coords, _, _ = two_noisy_curves()
+    for setup, expected in [(lambda f: f.SetBasis(5), "Basis 5 is not one of 0 (InverseMultiquadric), 1 (Gaussian)"),
+                            (lambda f: f.SetJoinRule(-1), "JoinRule -1 is not one of 0 (Longest), 1 (ClosestTangent)")]:
+        f = vtkRidgeGrouping()
+        errors = messages_of(f)
+        setup(f)
+        f.SetInputData(make_points(coords))
+        f.Update()
+        assert_that(len(errors) == 1 and expected in errors[0] and f.GetOutput(0).GetNumberOfPoints() == 0, f"{errors}")
+
+
 if __name__ == "__main__":
     run([test_two_noisy_curves_are_grouped_ordered_and_fitted, test_bad_and_degenerate_input,
          test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept,
          test_the_field_image_is_advertised_before_it_is_made,
          test_the_image_is_advertised_from_the_whole_input_when_its_source_gave_a_piece,
-         test_a_time_varying_input_is_grouped_at_each_time_with_an_image_consumer])
+         test_a_time_varying_input_is_grouped_at_each_time_with_an_image_consumer,
+         test_a_basis_or_join_rule_that_is_no_choice_is_named])

@@ -1290,6 +1290,19 @@ def test_review_cases_of_times_values_and_time_aware_gauges():
     assert_that(not messages and source.asked[-3:] == [2.0, 3.0, 1.0], f"(4) {messages}, asked {source.asked}")
 
 
+
+def test_an_area_method_that_is_no_choice_is_named():
+    # SetAreaMethod(3) measured geodesically without a word (clamped).
+    f = vtkThiessenArealAverage()
+    errors = messages_of(f)
+    f.SetAreaMethod(3)
+    f.SetGaugesData(gauges_polydata([(-0.5, -0.5), (0.5, 0.5)], ["a", "b"], [1.0, 2.0]))
+    f.SetCatchmentData(polygon([[(-1, -1), (1, -1), (1, 1), (-1, 1)]]))
+    f.Update()
+    assert_that(len(errors) == 1 and "AreaMethod 3 is not one of 0 (Automatic), 1 (EqualAreaPlane), 2 (GeodesicPolygon)"
+                in errors[0] and f.GetOutputDataObject(1).GetNumberOfRows() == 0, f"{errors}")
+
+
 if __name__ == "__main__":
     run([test_four_symmetric_gauges_share_a_square,
          test_colorado_months_match_a_brute_force_raster,
@@ -1320,4 +1333,5 @@ if __name__ == "__main__":
          test_weights_table_lists_every_step,
          test_a_requested_time_picks_the_step_at_or_before_it_and_nan_is_named,
          test_tiles_of_a_catchment_with_a_hole_or_a_bay,
-         test_long_numeric_ids_repeated_rows_and_shared_ids_are_kept_apart_and_reported])
+         test_long_numeric_ids_repeated_rows_and_shared_ids_are_kept_apart_and_reported,
+         test_an_area_method_that_is_no_choice_is_named])
