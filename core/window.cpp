@@ -157,14 +157,10 @@ Box2 CertainInterior(const std::vector<HalfPlane>& effective)
 } // namespace
 
 Window::Window(const std::vector<HalfPlane>& constraints, const ConstraintNames& names)
+  : InputNames(names.Each)
 {
   const std::size_t n = constraints.size();
-  // Constraint i as the caller names it.
-  const auto named = [&](std::size_t i)
-  {
-    const bool given = i < names.Each.size() && !names.Each[i].empty();
-    return given ? names.Each[i] : "window constraint " + std::to_string(i);
-  };
+  const auto named = [this](std::size_t i) { return this->ConstraintName(i); };
   for (std::size_t i = 0; i < n; ++i)
   {
     const HalfPlane& h = constraints[i];
@@ -300,6 +296,22 @@ Window::Window(const std::vector<HalfPlane>& constraints, const ConstraintNames&
   this->Interior = this->IsAxisAlignedRectangle() ? CertainInterior(this->Effective) : EmptyBox();
 }
 
+std::string Window::ConstraintName(std::size_t inputId) const
+{
+  const bool given = inputId < this->InputNames.size() && !this->InputNames[inputId].empty();
+  return given ? this->InputNames[inputId] : "window constraint " + std::to_string(inputId);
+}
+
+ConstraintNames Window::EffectiveNames() const
+{
+  ConstraintNames names;
+  for (const std::size_t id : this->EffectiveInputIds)
+  {
+    names.Each.push_back(this->ConstraintName(id));
+  }
+  return names;
+}
+
 Window Window::Rectangle(double xmin, double xmax, double ymin, double ymax)
 {
   const double bounds[4] = { xmin, xmax, ymin, ymax };
@@ -319,10 +331,16 @@ Window Window::Rectangle(double xmin, double xmax, double ymin, double ymax)
       NumberText(ymax) + ")");
   }
   // Bottom, right, top, left: vertex 0 is the lower-left corner.
+  ConstraintNames sides;
+  sides.Each = { "the rectangle's side y > ymin",
+    "the rectangle's side x < xmax",
+    "the rectangle's side y < ymax",
+    "the rectangle's side x > xmin" };
   return Window({ HalfPlane{ 0.0, -1.0, ymin },
-    HalfPlane{ 1.0, 0.0, -xmax },
-    HalfPlane{ 0.0, 1.0, -ymax },
-    HalfPlane{ -1.0, 0.0, xmin } });
+                  HalfPlane{ 1.0, 0.0, -xmax },
+                  HalfPlane{ 0.0, 1.0, -ymax },
+                  HalfPlane{ -1.0, 0.0, xmin } },
+    sides);
 }
 
 bool Window::Contains(const Point2& p) const
@@ -396,12 +414,15 @@ Window Window::ScaledByPowerOfTwo(int exponent) const
     scaled[k].c = std::ldexp(c, exponent);
     if (std::ldexp(scaled[k].c, -exponent) != c)
     {
-      throw InputError("window constraint " + std::to_string(this->EffectiveInputIds[k]) +
-        " (c = " + NumberText(c) + ") cannot be scaled by 2^" + std::to_string(exponent) +
-        " exactly");
+      throw InputError(this->ConstraintName(this->EffectiveInputIds[k]) +
+        " cannot be scaled by 2^" + std::to_string(exponent) +
+        " exactly, as the window's scale needs: its line passes some " + NumberText(std::fabs(c)) +
+        " from the origin, in a window whose corners reach " + NumberText(this->Reach()) +
+        " (the window and the points span more orders of magnitude than the doubles hold around "
+        "one scale)");
     }
   }
-  return Window(scaled);
+  return Window(scaled, this->EffectiveNames());
 }
 
 void ScalePointsByPowerOfTwo(std::vector<Point2>& points, int exponent)

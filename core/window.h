@@ -48,7 +48,8 @@ public:
   /// default as "window constraint i"), and for an empty or unbounded intersection.
   explicit Window(const std::vector<HalfPlane>& constraints, const ConstraintNames& names = {});
 
-  /// xmin < x < xmax, ymin < y < ymax. Throws InputError unless xmin < xmax and ymin < ymax.
+  /// xmin < x < xmax, ymin < y < ymax, its sides named "the rectangle's side y > ymin" etc.
+  /// Throws InputError unless xmin < xmax and ymin < ymax.
   static Window Rectangle(double xmin, double xmax, double ymin, double ymax);
 
   /// The effective (non-redundant) constraints, ordered so that their edges run anticlockwise
@@ -58,6 +59,12 @@ public:
   const std::vector<HalfPlane>& EffectiveConstraints() const { return this->Effective; }
   /// For each effective constraint, its index in the constructor's input.
   const std::vector<std::size_t>& EffectiveIds() const { return this->EffectiveInputIds; }
+  /// Constraint `inputId` of the constructor's input as the caller named it (ConstraintNames),
+  /// else "window constraint i": for messages.
+  std::string ConstraintName(std::size_t inputId) const;
+  /// The names of the effective constraints, in their order, for a window made of them
+  /// (a scaled copy, or one cut down further) to name them as this one does.
+  ConstraintNames EffectiveNames() const;
   /// Indices (in the constructor's input) of the constraints found redundant.
   const std::vector<std::size_t>& RedundantIds() const { return this->RedundantInputIds; }
   /// Window corners, anticlockwise; vertex k is where constraint k-1 meets constraint k.
@@ -98,6 +105,7 @@ public:
 private:
   std::vector<HalfPlane> Effective;
   std::vector<std::size_t> EffectiveInputIds;
+  std::vector<std::string> InputNames; ///< ConstraintNames::Each as given
   std::vector<std::size_t> RedundantInputIds;
   std::vector<Point2> Corners;
   Box2 Interior; ///< CertainlyContains' box (empty, so that it never passes, if not a rectangle)

@@ -138,6 +138,26 @@ tessera::Window Representable(tessera::Window window, bool needArea)
   return window;
 }
 
+/// The rectangle lower < (x, y) < upper, its sides named for messages as `owner`'s followed by
+/// `note` ("the WindowBounds side y > ymin").
+tessera::Window NamedRectangle(const double lower[2],
+  const double upper[2],
+  const std::string& owner,
+  const std::string& note)
+{
+  const tessera::Window box = tessera::Window::Rectangle(lower[0], upper[0], lower[1], upper[1]);
+  tessera::ConstraintNames names;
+  for (const tessera::HalfPlane& h : box.EffectiveConstraints())
+  {
+    const char* side = h.a < 0 ? "x > xmin"
+      : h.a > 0                ? "x < xmax"
+      : h.b < 0                ? "y > ymin"
+                               : "y < ymax";
+    names.Each.push_back(owner + " side " + side + note);
+  }
+  return tessera::Window(box.EffectiveConstraints(), names);
+}
+
 /// "xmin, xmax, ymin, ymax" of WindowBounds, each as the user gave it.
 std::string BoundsText(const double bounds[4])
 {
@@ -201,9 +221,15 @@ tessera::Window CutToPoints(tessera::Window window, const std::vector<tessera::P
   constraints.push_back({ 1.0, 0.0, -xmax });
   constraints.push_back({ 0.0, -1.0, ymin });
   constraints.push_back({ 0.0, 1.0, -ymax });
+  // The window's own constraints keep their names; the box's sides are named for what they are.
+  tessera::ConstraintNames names = window.EffectiveNames();
+  for (const char* side : { "x > xmin", "x < xmax", "y > ymin", "y < ymax" })
+  {
+    names.Each.push_back(std::string("the side ") + side + " of the box around the points");
+  }
   try
   {
-    return tessera::Window(constraints);
+    return tessera::Window(constraints, names);
   }
   catch (const tessera::InputError&)
   {
@@ -268,8 +294,8 @@ tessera::Window ChooseWindow(const double bounds[4],
   {
     if (haveBounds && userCount == 0)
     {
-      return Representable(
-        tessera::Window::Rectangle(bounds[0], bounds[1], bounds[2], bounds[3]), needArea);
+      const double lower[2] = { bounds[0], bounds[2] }, upper[2] = { bounds[1], bounds[3] };
+      return Representable(NamedRectangle(lower, upper, "the WindowBounds", ""), needArea);
     }
     if (haveBounds)
     {
@@ -323,7 +349,8 @@ tessera::Window ChooseWindow(const double bounds[4],
     ThrowWindowTooLarge(lower[0], upper[0], lower[1], upper[1]); // before Rectangle refuses it
   }
   return Representable(
-    tessera::Window::Rectangle(lower[0], upper[0], lower[1], upper[1]), needArea);
+    NamedRectangle(lower, upper, "the automatic window's", " (the points' bounding box, padded)"),
+    needArea);
 }
 
 void CheckChoice(const char* property, int value, const std::vector<const char*>& names)

@@ -694,6 +694,34 @@ TEST(Window, ScalingPointsByAPowerOfTwo)
     { 0.0, 1.0, -1.0 } });
   EXPECT_THROW(nearOrigin.ScaledByPowerOfTwo(-60), InputError);
   EXPECT_NO_THROW(nearOrigin.ScaledByPowerOfTwo(60));
+  // The error names the constraint as its caller did, also after a scaling that succeeded (the
+  // scaled window keeps the names); without names, by its index in the caller's list.
+  const auto scalingError = [](const Window& window, int exponent)
+  {
+    try
+    {
+      window.ScaledByPowerOfTwo(exponent);
+    }
+    catch (const InputError& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  tessera::ConstraintNames names;
+  names.Each = { "the left side", "the right side", "the bottom", "the top" };
+  const Window named({ { -1.0, 0.0, std::ldexp(1.0 + std::ldexp(1.0, -30), -1000) },
+                       { 1.0, 0.0, -1.0 },
+                       { 0.0, -1.0, 0.0 },
+                       { 0.0, 1.0, -1.0 } },
+    names);
+  EXPECT_EQ(scalingError(named, -60).rfind("the left side cannot be scaled by 2^-60", 0), 0u)
+    << scalingError(named, -60);
+  EXPECT_EQ(scalingError(named.ScaledByPowerOfTwo(60), -120).rfind("the left side", 0), 0u);
+  EXPECT_EQ(scalingError(nearOrigin, -60).rfind("window constraint 0 cannot be scaled", 0), 0u);
+  EXPECT_EQ(named.EffectiveNames().Each.size(), named.EffectiveConstraints().size());
+  EXPECT_EQ(
+    Window::Rectangle(0.0, 1.0, 0.0, 1.0).ConstraintName(0), "the rectangle's side y > ymin");
 
   // ScaleIntoExactRange: both together by the window's exponent, or neither.
   Window big = Window::Rectangle(0.0, std::ldexp(1.0, 300), 0.0, std::ldexp(1.0, 299));

@@ -1261,6 +1261,39 @@ def test_an_algorithm_that_is_no_choice_is_named():
                 and f.GetOutput(0).GetNumberOfCells() == 0, f"{errors}")
 
 
+
+def test_a_window_side_that_cannot_be_scaled_is_named_as_the_user_knows_it():
+    # A window of 1e300 whose side passes 1e-10 from the origin cannot be scaled into the exact
+    # range. The error named "window constraint 2" with no constraint set, "window constraint 3" for
+    # the user's constraint 0, another constraint in the Delaunay filter than in the tiles one, and
+    # the normalised c; now each filter names the side as the user set it.
+    def errors_of(filter_class, setup, coords):
+        f = filter_class()
+        errors = messages_of(f)
+        setup(f)
+        f.SetInputData(make_points(coords))
+        f.Update()
+        return errors
+
+    def four_constraints(f):
+        f.AddWindowConstraint(1.0, 0.0, -1e300)   # 0: x < 1e300
+        f.AddWindowConstraint(-1.0, 0.0, -1e300)  # 1: x > -1e300
+        f.AddWindowConstraint(0.0, 4.0, -4e-10)   # 2: y < 1e-10, which cannot be scaled
+        f.AddWindowConstraint(0.0, -1.0, 0.0)     # 3: y > 0
+
+    one = [(0.5e300, 0.5e-10)]
+    cases = [("automatic", lambda f: None, [(-1e300, 0.0), (-1e300, 1e-10)],
+              "the automatic window's side y > ymin (the points' bounding box, padded) cannot be scaled by 2^-996"),
+             ("bounds", lambda f: f.SetWindowBounds(-1e300, 1e300, 0.0, 1e-10), one,
+              "the WindowBounds side y < ymax cannot be scaled by 2^-996"),
+             ("constraints", four_constraints, one, "window constraint 2 cannot be scaled by 2^-996")]
+    for name, setup, coords, expected in cases:
+        for filter_class in (vtkDirichletTessellation, vtkDelaunayTriangulation):
+            errors = errors_of(filter_class, setup, coords)
+            assert_that(len(errors) == 1 and expected in errors[0] and "span more orders of magnitude" in errors[0],
+                        f"{name}, {filter_class.__name__}: {errors}")
+
+
 if __name__ == "__main__":
     run([test_tiles_are_nearest_point_regions,
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
@@ -1293,4 +1326,5 @@ if __name__ == "__main__":
          test_tiles_narrower_than_an_ulp_are_named,
          test_delaunay_takes_a_window_far_larger_than_its_points,
          test_blocks_of_multipoint_features_name_the_attributes_they_cannot_carry,
-         test_an_algorithm_that_is_no_choice_is_named])
+         test_an_algorithm_that_is_no_choice_is_named,
+         test_a_window_side_that_cannot_be_scaled_is_named_as_the_user_knows_it])
