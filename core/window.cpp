@@ -365,21 +365,23 @@ Point2 Window::Reflect(const Point2& p, std::size_t k) const
 
 double Window::Area() const
 {
-  // Shoelace relative to vertex 0, with Neumaier's compensated summation.
+  // Shoelace relative to vertex 0, with Neumaier's compensated summation, of the halved terms
+  // (halving a normal double is exact): the sum of the whole terms, twice the area, overflowed
+  // for windows whose area is a double (a square of side 1.3e154, area 1.69e308, was "too large").
   const Point2& o = this->Corners.front();
   double sum = 0.0, compensation = 0.0;
   for (std::size_t k = 1; k + 1 < this->Corners.size(); ++k)
   {
     const double ux = this->Corners[k].x - o.x, uy = this->Corners[k].y - o.y;
     const double vx = this->Corners[k + 1].x - o.x, vy = this->Corners[k + 1].y - o.y;
-    const double term = difference_of_products(ux, vy, uy, vx);
+    const double term = 0.5 * difference_of_products(ux, vy, uy, vx);
     const double t = sum + term;
     compensation += std::fabs(sum) >= std::fabs(term) ? (sum - t) + term : (term - t) + sum;
     sum = t;
   }
   // Terms that overflow (corners of some 1e154 and more) sum to inf - inf: the area is infinite,
   // not NaN.
-  const double area = 0.5 * (sum + compensation);
+  const double area = sum + compensation;
   return std::isnan(area) ? std::numeric_limits<double>::infinity() : area;
 }
 

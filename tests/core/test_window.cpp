@@ -301,6 +301,16 @@ TEST(Window, DuplicatedConstraintsKeepTheFirst)
   EXPECT_DOUBLE_EQ(w.Area(), 1.0);
 }
 
+// An area that is a double is given, though twice it is not (the shoelace's terms sum to twice
+// the area: a square of side 1.3e154 was infinite); one that is not is infinite, not NaN.
+TEST(Window, AreaNearTheLargestDouble)
+{
+  const double side = 1.3e154;
+  EXPECT_EQ(Window::Rectangle(0.0, side, 0.0, side).Area(), side * side);
+  EXPECT_EQ(Window::Rectangle(-side, side, -side, side).Area(), HUGE_VAL);
+  EXPECT_EQ(Window::Rectangle(-1e300, 1e300, -1e300, 1e300).Area(), HUGE_VAL);
+}
+
 TEST(Window, EmptyWindows)
 {
   std::vector<HalfPlane> hs = unit_square_constraints();
