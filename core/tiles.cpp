@@ -82,7 +82,9 @@ std::vector<std::int32_t> CollapsedTilePoints(const TileMesh& tiles)
         corners[distinct++] = p;
       }
     }
-    if (distinct < 3)
+    // Three or more distinct corners can still be collinear (an out-and-back sliver an ulp wide):
+    // then the area is 0 as well.
+    if (distinct < 3 || (k < tiles.Areas.size() && tiles.Areas[k] == 0.0))
     {
       collapsed.push_back(tiles.PointIds[k]);
     }

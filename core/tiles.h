@@ -120,10 +120,10 @@ void ScaleByPowerOfTwo(TileMesh& mesh, int exponent);
 /// ScaleIntoExactRange (window.h) before building, and ScaleByPowerOfTwo after, handle any scale.
 void CheckWindowInExactRange(const DirichletTessellation& tessellation);
 
-/// The points, ascending, whose tiles have fewer than 3 distinct corners: strips narrower than the
-/// coordinates' resolution (points an ulp or so apart), whose corners round onto each other, so
-/// that the polygon has 1 or 2 points and no area in doubles (and which corners are left can
-/// depend on the input's order).
+/// The points, ascending, whose tiles have fewer than 3 distinct corners, or an area of 0 (their
+/// corners collinear): strips narrower than the coordinates' resolution (points an ulp or so
+/// apart), whose corners round onto each other or onto one line, so that the polygon has no area
+/// in doubles (and which corners are left can depend on the input's order).
 std::vector<std::int32_t> CollapsedTilePoints(const TileMesh& tiles);
 
 /// Throws InputError unless the tiles' areas add up to the window's area (within 1e-6 relative):

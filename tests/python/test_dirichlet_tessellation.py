@@ -1212,6 +1212,20 @@ def test_tiles_narrower_than_an_ulp_are_named():
                 assert_that(len(named) == 1 and "no area in doubles: points 1\n" in named[0], f"{engine}: {warnings}")
             else:
                 assert_that(not named, f"{engine}, points {gap} ulps apart: {warnings}")
+    # Four points an ulp apart on a vertical line, and one off it: the tile of point 2 is a strip an
+    # ulp wide whose corners are distinct but collinear (Area 0). It was not named.
+    u = math.ulp(0.5)
+    f = vtkDirichletTessellation()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetInputData(make_points([(0.5, 0.5 + k * u) for k in range(4)] + [(0.1, 0.1)]))
+    f.SetWindowBounds(0.0, 1.0, 0.0, 1.0)
+    f.Update()
+    tiles = f.GetOutput(0)
+    ids, areas = tiles.GetCellData().GetArray("PointId"), tiles.GetCellData().GetArray("Area")
+    flat = sorted(ids.GetValue(c) for c in range(tiles.GetNumberOfCells()) if areas.GetValue(c) == 0.0)
+    named = [w for w in warnings if "narrower than the coordinates can resolve" in w]
+    assert_that(2 in flat and len(named) == 1 and f"no area in doubles: points {', '.join(map(str, flat))}\n" in named[0],
+                f"tiles of area 0: {flat}; {warnings}")
 
 
 def test_delaunay_takes_a_window_far_larger_than_its_points():
