@@ -847,6 +847,22 @@ vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data, std::vector<std::s
     {
       warnings.push_back("the array '" + name + "' is not carried: " + problem);
     }
+    // Blocks' arrays are joined by name, so an unnamed one cannot be (it was left out unsaid).
+    for (const PointLeaf& leaf : PointLeaves(composite))
+    {
+      int unnamed = 0;
+      vtkPointData* arrays = leaf.Set->GetPointData();
+      for (int k = 0; k < arrays->GetNumberOfArrays(); ++k)
+      {
+        const char* name = arrays->GetAbstractArray(k)->GetName();
+        unnamed += !name || !*name;
+      }
+      if (unnamed > 0)
+      {
+        warnings.push_back(leaf.Label + " of the points has " + std::to_string(unnamed) +
+          " unnamed point-data array(s), not carried: the blocks' arrays are joined by name");
+      }
+    }
     return joined;
   }
   throw tessera::InputError(std::string("the input is ") +

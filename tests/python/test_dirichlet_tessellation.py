@@ -1187,6 +1187,18 @@ def test_blocks_of_multipoint_features_name_the_attributes_they_cannot_carry():
     assert_that(len(warnings) == 1 and expected in warnings[0], f"{warnings}")
     assert_that(f.GetOutputDataObject(0).GetNumberOfCells() == 4
                 and f.GetOutputDataObject(0).GetCellData().GetArray("station") is None, "four tiles, no 'station'")
+    # An unnamed point-data array of a block cannot be joined by name either: said, not dropped unsaid.
+    from vtkmodules.vtkCommonCore import vtkDoubleArray
+    unnamed = vtkDoubleArray()
+    for k in range(2):
+        unnamed.InsertNextValue(k)
+    blocks.GetBlock(1).GetPointData().AddArray(unnamed)
+    f = vtkDirichletTessellation()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetInputData(blocks)
+    f.Update()
+    assert_that(any("block 1 (composite index 2) of the points has 1 unnamed point-data array(s), not carried" in w
+                    for w in warnings), f"{warnings}")
 
 
 def test_tiles_narrower_than_an_ulp_are_named():
