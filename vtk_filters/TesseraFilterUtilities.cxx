@@ -1107,7 +1107,7 @@ std::string UnusedPointsWarning(std::size_t rejected, std::size_t duplicates, co
     return std::string();
   }
   std::ostringstream text;
-  text << rejected << " point(s) outside the window and " << duplicates
+  text << rejected << " point(s) outside the window or on its boundary and " << duplicates
        << " exact duplicate(s) (the same x and y; z is not used) were not " << verb
        << "; their ids are in the field data arrays RejectedPointIds, DuplicatePointIds and "
           "DuplicateOfPointIds.";

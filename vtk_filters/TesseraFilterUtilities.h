@@ -204,7 +204,7 @@ std::string RenamedArraysWarning(const RenamedArrays& renamed,
   const char* ownKind);
 
 /// The field data arrays every tessellation filter writes for points it did not use:
-/// `RejectedPointIds` (outside the window), `DuplicatePointIds` and `DuplicateOfPointIds`
+/// `RejectedPointIds` (outside the window or on its boundary), `DuplicatePointIds` and `DuplicateOfPointIds`
 /// (exact copies and the accepted point each one copies). An input field-data array with one of
 /// these names is kept under another name (RenameArraysNamed); returns those renamed.
 RenamedArrays AddUnusedPointIds(vtkDataObject* data,
