@@ -35,6 +35,27 @@ def messages_of(algorithm, event=None):
     return messages
 
 
+def warnings_of_update(algorithm, data):
+    """Runs algorithm on data (input 0); returns the warnings it gave."""
+    from vtkmodules.vtkCommonCore import vtkCommand
+
+    warnings = messages_of(algorithm, vtkCommand.WarningEvent)
+    algorithm.SetInputData(data)
+    algorithm.Update()
+    return warnings
+
+
+def double_array(name, values):
+    """A vtkDoubleArray named name holding values."""
+    from vtkmodules.vtkCommonCore import vtkDoubleArray
+
+    array = vtkDoubleArray()
+    array.SetName(name)
+    for value in values:
+        array.InsertNextValue(value)
+    return array
+
+
 def polygon(rings):
     """vtkPolyData with one polygon cell per ring of (x, y) vertices (z = 0, double precision)."""
     from vtkmodules.vtkCommonCore import vtkPoints

@@ -11,7 +11,7 @@ from vtkmodules.vtkCommonCore import vtkCommand
 from vtkmodules.vtkFiltersCore import vtkDelaunay2D
 
 from tessera import vtkDelaunayTriangulation, vtkDirichletTessellation
-from tessera_testing import assert_close, assert_that, make_points, messages_of, run
+from tessera_testing import assert_close, assert_that, double_array, make_points, messages_of, run, warnings_of_update
 
 
 def tessellate(data, bounds=None, algorithm="GreenSibson"):
@@ -1106,14 +1106,8 @@ def test_vertex_cell_data_of_one_point_set_is_carried_and_other_cell_data_is_rep
         cells = vtkCellArray()
         cells.InsertNextCell(2, [0, 1])
         lines.SetLines(cells)
-        tag = vtkDoubleArray()
-        tag.SetName("tag")
-        tag.InsertNextValue(1.0)
-        lines.GetCellData().AddArray(tag)
-        g = cls()
-        warnings = messages_of(g, vtkCommand.WarningEvent)
-        g.SetInputData(lines)
-        g.Update()
+        lines.GetCellData().AddArray(double_array("tag", [1.0]))
+        warnings = warnings_of_update(cls(), lines)
         assert_that(any("cell-data arrays ('tag') are not carried" in w for w in warnings), f"{warnings}")
 
 
@@ -1122,7 +1116,7 @@ def test_blocks_with_different_arrays_are_joined_with_a_warning_either_way_round
     (the grouping needs no array at all); either way the points are now used and a warning names
     the array and the blocks as a script numbers them. The point ghost flags are not copied to the
     tiles (as cell ghosts they hid a tile)."""
-    from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkUnsignedCharArray
+    from vtkmodules.vtkCommonCore import vtkCommand, vtkUnsignedCharArray
     from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
 
     rng = np.random.default_rng(10)
@@ -1188,15 +1182,9 @@ def test_blocks_of_multipoint_features_name_the_attributes_they_cannot_carry():
     assert_that(f.GetOutputDataObject(0).GetNumberOfCells() == 4
                 and f.GetOutputDataObject(0).GetCellData().GetArray("station") is None, "four tiles, no 'station'")
     # An unnamed point-data array of a block cannot be joined by name either: said, not dropped unsaid.
-    from vtkmodules.vtkCommonCore import vtkDoubleArray
-    unnamed = vtkDoubleArray()
-    for k in range(2):
-        unnamed.InsertNextValue(k)
+    unnamed = double_array(None, [0.0, 1.0])
     blocks.GetBlock(1).GetPointData().AddArray(unnamed)
-    f = vtkDirichletTessellation()
-    warnings = messages_of(f, vtkCommand.WarningEvent)
-    f.SetInputData(blocks)
-    f.Update()
+    warnings = warnings_of_update(vtkDirichletTessellation(), blocks)
     assert_that(any("block 1 (composite index 2) of the points has 1 unnamed point-data array(s), not carried" in w
                     for w in warnings), f"{warnings}")
 

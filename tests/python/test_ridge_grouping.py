@@ -6,10 +6,10 @@ import math
 import random
 
 import numpy as np
-from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray
+from vtkmodules.vtkCommonCore import vtkCommand
 
 from tessera import vtkRidgeGrouping
-from tessera_testing import assert_close, assert_that, make_points, messages_of, run
+from tessera_testing import assert_close, assert_that, double_array, make_points, messages_of, run, warnings_of_update
 
 
 def adjusted_rand_index(a, b):
@@ -186,14 +186,9 @@ def test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept():
     assert_that(any("'GroupId' is passed to output 0 as 'GroupId_input'" in w for w in warnings), f"warned: {warnings}")
     assert_that(data.GetPointData().GetArray("GroupId") is not None, "the input's own array keeps its name")
     # So are field-data arrays of the names of the filter's own (they were replaced silently).
-    size = vtkDoubleArray()
-    size.SetName("ImageSize")
-    size.InsertNextValue(4096.0)
-    data.GetFieldData().AddArray(size)
+    data.GetFieldData().AddArray(double_array("ImageSize", [4096.0]))
     f = vtkRidgeGrouping()
-    warnings = messages_of(f, vtkCommand.WarningEvent)
-    f.SetInputData(data)
-    f.Update()
+    warnings = warnings_of_update(f, data)
     fields = f.GetOutput(0).GetFieldData()
     assert_that(fields.GetArray("ImageSize_input").GetValue(0) == 4096.0
                 and fields.GetArray("ImageSize").GetValue(0) <= 1024,  # the automatic size's largest
