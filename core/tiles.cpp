@@ -63,6 +63,20 @@ void AppendTriangleFace(DelaunayFaces& faces, std::int32_t a, std::int32_t b, st
 namespace
 {
 constexpr std::int64_t MinimumTrianglesPerThread = 2 * TessellationDual::MinimumTilesPerThread;
+/// Whether every corner of tile k lies on the line through a and b (two distinct corners of it),
+/// exactly: an out-and-back sliver an ulp wide has three or more distinct corners and no area.
+bool CornersCollinear(const TileMesh& tiles, std::size_t k, const Point2& a, const Point2& b)
+{
+  for (std::int64_t v = tiles.Offsets[k]; v < tiles.Offsets[k + 1]; ++v)
+  {
+    if (orient2d(a, b, tiles.Vertices[static_cast<std::size_t>(tiles.VertexIds[v])]) != 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 } // namespace
 
 std::vector<std::int32_t> CollapsedTilePoints(const TileMesh& tiles)
@@ -82,9 +96,12 @@ std::vector<std::int32_t> CollapsedTilePoints(const TileMesh& tiles)
         corners[distinct++] = p;
       }
     }
-    // Three or more distinct corners can still be collinear (an out-and-back sliver an ulp wide):
-    // then the area is 0 as well.
-    if (distinct < 3 || (k < tiles.Areas.size() && tiles.Areas[k] == 0.0))
+    // Three or more distinct corners can still be collinear. Only a tile of area 0 is looked at
+    // (its area is exactly 0 then), but such an area is not enough: a true tile of points some
+    // 1e-165 apart has an area below the doubles, and is no sliver.
+    const bool flat = distinct >= 3 && k < tiles.Areas.size() && tiles.Areas[k] == 0.0 &&
+      CornersCollinear(tiles, k, corners[0], corners[1]);
+    if (distinct < 3 || flat)
     {
       collapsed.push_back(tiles.PointIds[k]);
     }

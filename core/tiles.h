@@ -120,8 +120,8 @@ void ScaleByPowerOfTwo(TileMesh& mesh, int exponent);
 /// ScaleIntoExactRange (window.h) before building, and ScaleByPowerOfTwo after, handle any scale.
 void CheckWindowInExactRange(const DirichletTessellation& tessellation);
 
-/// The points, ascending, whose tiles have fewer than 3 distinct corners, or an area of 0 (their
-/// corners collinear): strips narrower than the coordinates' resolution (points an ulp or so
+/// The points, ascending, whose tiles have fewer than 3 distinct corners, or only collinear ones
+/// (exactly): strips narrower than the coordinates' resolution (points an ulp or so
 /// apart), whose corners round onto each other or onto one line, so that the polygon has no area
 /// in doubles (and which corners are left can depend on the input's order).
 std::vector<std::int32_t> CollapsedTilePoints(const TileMesh& tiles);

@@ -363,26 +363,44 @@ Point2 Window::Reflect(const Point2& p, std::size_t k) const
   return Point2{ p.x - scale * h.a, p.y - scale * h.b };
 }
 
-double Window::Area() const
+namespace
 {
-  // Shoelace relative to vertex 0, with Neumaier's compensated summation, of the halved terms
-  // (halving a normal double is exact): the sum of the whole terms, twice the area, overflowed
-  // for windows whose area is a double (a square of side 1.3e154, area 1.69e308, was "too large").
-  const Point2& o = this->Corners.front();
+/// The shoelace area of corners (anticlockwise), fanned from corner 0, by Neumaier's compensated
+/// summation, corners taken times 2^exponent (exact while nothing overflows or underflows).
+double FanArea(const std::vector<Point2>& corners, int exponent)
+{
+  const auto at = [&](std::size_t k) {
+    return Point2{ std::ldexp(corners[k].x, exponent), std::ldexp(corners[k].y, exponent) };
+  };
+  const Point2 o = at(0);
   double sum = 0.0, compensation = 0.0;
-  for (std::size_t k = 1; k + 1 < this->Corners.size(); ++k)
+  for (std::size_t k = 1; k + 1 < corners.size(); ++k)
   {
-    const double ux = this->Corners[k].x - o.x, uy = this->Corners[k].y - o.y;
-    const double vx = this->Corners[k + 1].x - o.x, vy = this->Corners[k + 1].y - o.y;
-    const double term = 0.5 * difference_of_products(ux, vy, uy, vx);
+    const Point2 u = at(k), v = at(k + 1);
+    const double term = 0.5 * difference_of_products(u.x - o.x, v.y - o.y, u.y - o.y, v.x - o.x);
     const double t = sum + term;
     compensation += std::fabs(sum) >= std::fabs(term) ? (sum - t) + term : (term - t) + sum;
     sum = t;
   }
-  // Terms that overflow (corners of some 1e154 and more) sum to inf - inf: the area is infinite,
-  // not NaN.
-  const double area = sum + compensation;
-  return std::isnan(area) ? std::numeric_limits<double>::infinity() : area;
+  return sum + compensation;
+}
+} // namespace
+
+double Window::Area() const
+{
+  // A window whose area is a double can have fan terms that are not (twice a triangle's area, of
+  // corners some 1e154 and more): then the corners are scaled down by a power of two first, and
+  // the area back up, which is exact for the sum and overflows only when the area does.
+  const double area = FanArea(this->Corners, 0);
+  if (std::isfinite(area))
+  {
+    return area;
+  }
+  int exponent = 0;
+  std::frexp(this->Reach(), &exponent);
+  const double scaled = std::ldexp(FanArea(this->Corners, -exponent), 2 * exponent);
+  // Terms that still overflow sum to inf - inf: the area is infinite, not NaN.
+  return std::isnan(scaled) ? std::numeric_limits<double>::infinity() : scaled;
 }
 
 double Window::Reach() const

@@ -346,6 +346,14 @@ tessera::Window ChooseWindow(const double bounds[4],
   if (!std::isfinite(lower[0]) || !std::isfinite(lower[1]) || !std::isfinite(upper[0]) ||
     !std::isfinite(upper[1]))
   {
+    if (!needArea)
+    {
+      // (the padding was cut to the room there is: only a point at the largest double is left)
+      throw tessera::InputError("the points reach the largest double (x " +
+        tessera::NumberText(xmin) + " .. " + tessera::NumberText(xmax) + ", y " +
+        tessera::NumberText(ymin) + " .. " + tessera::NumberText(ymax) +
+        "): no window of doubles holds them strictly inside; scale the points");
+    }
     ThrowWindowTooLarge(lower[0], upper[0], lower[1], upper[1]); // before Rectangle refuses it
   }
   return Representable(

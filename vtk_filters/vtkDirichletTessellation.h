@@ -45,11 +45,11 @@
  * own copies). Cell data:
  * - `PointId` (vtkIdType): the index of the point in the input;
  * - `Area` (double): the tile's area, by compensated summation;
- * - `NeighborCount` (int): contiguities of the tile, window edges included; half-neighbours
- *   (output 1's Kind 1 lines) share no side and are not counted (its polygon sides,
+ * - `NeighborCount` (int): contiguities of the tile, window edges included (its polygon sides,
  *   decided exactly: where distinct corners round to one point, the polygon lists it once, never
  *   twice in a row, and has fewer points than NeighborCount; a corner an ulp off between two that
- *   round to one point is left out, so that the polygon does not go out to it and back);
+ *   round to one point is left out, so that the polygon does not go out to it and back).
+ *   Half-neighbours (output 1's Kind 1 lines) share no side and are not counted;
  * - every input point-data array, copied to the tile of its point (a gauge's values follow it),
  *   attributes included: global ids become the tiles' global ids (one tile per point keeps them
  *   unique), pedigree ids their pedigree ids, active scalars etc. stay active.

@@ -308,6 +308,10 @@ TEST(Window, AreaNearTheLargestDouble)
   const double side = 1.3e154;
   EXPECT_EQ(Window::Rectangle(0.0, side, 0.0, side).Area(), side * side);
   EXPECT_EQ(Window::Rectangle(-side, side, -side, side).Area(), HUGE_VAL);
+  // A triangle: its one fan term is twice its area, which is not a double here.
+  const double leg = 1.5e154;
+  const Window triangle({ { -1.0, 0.0, 0.0 }, { 0.0, -1.0, 0.0 }, { 1.0, 1.0, -leg } });
+  EXPECT_DOUBLE_EQ(triangle.Area(), 0.5 * leg * leg);
   EXPECT_EQ(Window::Rectangle(-1e300, 1e300, -1e300, 1e300).Area(), HUGE_VAL);
 }
 

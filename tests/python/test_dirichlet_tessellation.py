@@ -867,6 +867,9 @@ def test_delaunay_at_any_scale():
     assert_that(not messages and got == expected and len(got) > 500, f"across the doubles: {len(got)} faces, {messages}")
     got, messages = faces(unit, padding=1e300)
     assert_that(not messages and got == reference, f"Padding 1e300: {len(got)} faces, {messages}")
+    # A point at the largest double leaves no room for a window: said so, not "set a smaller Padding".
+    got, messages = faces([(0.0, 0.0), (1.0, 0.0), (sys.float_info.max, 1.0)])
+    assert_that(len(messages) == 1 and "the points reach the largest double" in messages[0], f"{messages}")
 
 
 def test_a_coordinate_too_small_for_exact_window_decisions_is_named():
@@ -1226,6 +1229,15 @@ def test_tiles_narrower_than_an_ulp_are_named():
     named = [w for w in warnings if "narrower than the coordinates can resolve" in w]
     assert_that(2 in flat and len(named) == 1 and f"no area in doubles: points {', '.join(map(str, flat))}\n" in named[0],
                 f"tiles of area 0: {flat}; {warnings}")
+    # True tiles of points some 1e-165 apart have areas below the doubles (0), and are no slivers:
+    # they are not named.
+    s = 1e-165
+    f = vtkDirichletTessellation()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetInputData(make_points([(0.2 * s, 0.3 * s), (0.7 * s, 0.6 * s), (0.4 * s, 0.9 * s), (0.8 * s, 0.1 * s)]))
+    f.Update()
+    assert_that(f.GetOutput(0).GetNumberOfCells() == 4
+                and not [w for w in warnings if "narrower than the coordinates can resolve" in w], f"{warnings}")
 
 
 def test_delaunay_takes_a_window_far_larger_than_its_points():
