@@ -109,12 +109,56 @@ std::string ProjectionParameters::ToString() const
     " north=" + (this->UTMNorth ? "1" : "0");
 }
 
+namespace
+{
+/// Throws InputError unless the record gives the parameters its projection needs: a missing one
+/// was 0 without a word ("projection=AlbersEqualArea" alone made standard parallels at the
+/// equator, and a point of Colorado 11700 km from the origin). UTM needs its zone (north defaults
+/// to 1), the conics their central meridian and standard parallels, the others their centre.
+void CheckRecordComplete(const std::string& text,
+  ProjectionKind kind,
+  const std::vector<std::string>& seen)
+{
+  std::vector<const char*> needed;
+  switch (kind)
+  {
+    case ProjectionKind::AlbersEqualArea:
+    case ProjectionKind::LambertConformalConic:
+      needed = { "lon0", "lat1", "lat2" };
+      break;
+    case ProjectionKind::TransverseMercator:
+      needed = { "lon0" };
+      break;
+    case ProjectionKind::UTM:
+      needed = { "zone" };
+      break;
+    case ProjectionKind::AzimuthalEquidistant:
+      needed = { "lon0", "lat0" };
+      break;
+  }
+  std::string missing;
+  for (const char* key : needed)
+  {
+    if (std::find(seen.begin(), seen.end(), key) == seen.end())
+    {
+      missing += (missing.empty() ? "" : ", ") + std::string(key);
+    }
+  }
+  if (!missing.empty())
+  {
+    throw InputError("projection record '" + text + "' lacks " + missing + ", which " +
+      ProjectionKindName(kind) + " needs");
+  }
+}
+} // namespace
+
 ProjectionParameters ProjectionParameters::FromString(const std::string& text)
 {
   ProjectionParameters result;
   std::istringstream in(text);
   std::string item;
   bool sawKind = false;
+  std::vector<std::string> seen; // keys given, each once
   while (in >> item)
   {
     const auto equals = item.find('=');
@@ -124,6 +168,12 @@ ProjectionParameters ProjectionParameters::FromString(const std::string& text)
     }
     const std::string key = item.substr(0, equals);
     const std::string value = item.substr(equals + 1);
+    if (std::find(seen.begin(), seen.end(), key) != seen.end())
+    {
+      // (the later one won: zone=13 zone=14 projected in zone 14 without a word)
+      throw InputError("projection record '" + text + "' gives " + key + " twice");
+    }
+    seen.push_back(key);
     auto number = [&]()
     {
       char* end = nullptr;
@@ -183,6 +233,7 @@ ProjectionParameters ProjectionParameters::FromString(const std::string& text)
   {
     throw InputError("projection record '" + text + "' names no projection");
   }
+  CheckRecordComplete(text, result.Kind, seen);
   return result;
 }
 

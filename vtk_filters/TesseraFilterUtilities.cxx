@@ -988,13 +988,24 @@ Rings ReadPolygonRings(vtkDataObject* data)
         rings.Blocks.resize(rings.Offsets.size() - 1, flat);
         rings.BlockNames.emplace(flat, label);
       }
+      else if (auto* other = vtkDataSet::SafeDownCast(iter->GetCurrentDataObject()))
+      {
+        if (other->GetNumberOfCells() > 0)
+        {
+          rings.SkippedBlocks.push_back(labels.Of(iter) + " (" + other->GetClassName() + ")");
+        }
+      }
     }
   }
   if (rings.Offsets.size() < 2)
   {
     const std::string skipped = SkippedCellsWarning(rings, "input");
+    const bool otherSet = vtkDataSet::SafeDownCast(data) && !vtkPolyData::SafeDownCast(data);
     throw tessera::InputError(std::string("the window/catchment input (") +
       (data ? data->GetClassName() : "nothing") + ") holds no polygon" +
+      (otherSet ? " that is read: only vtkPolyData (or a composite data set of it) is; extract "
+                  "its surface first (ParaView's Extract Surface, vtkGeometryFilter)"
+                : std::string()) +
       (skipped.empty() ? std::string() : ": " + skipped));
   }
   return rings;
@@ -1002,14 +1013,23 @@ Rings ReadPolygonRings(vtkDataObject* data)
 
 std::string SkippedCellsWarning(const Rings& rings, const char* what)
 {
-  if (rings.SkippedCells == 0)
+  std::string text;
+  if (rings.SkippedCells > 0)
   {
-    return std::string();
+    text = std::to_string(rings.SkippedCells) + " cell(s) of the " + what +
+      " are not polygons or closed polylines, nor lines that join end to end into closed rings, "
+      "and were ignored (the first is " +
+      rings.FirstSkipped + ").";
   }
-  return std::to_string(rings.SkippedCells) + " cell(s) of the " + what +
-    " are not polygons or closed polylines, nor lines that join end to end into closed rings, "
-    "and were ignored (the first is " +
-    rings.FirstSkipped + ").";
+  if (!rings.SkippedBlocks.empty())
+  {
+    text += std::string(text.empty() ? "" : " ") + std::to_string(rings.SkippedBlocks.size()) +
+      " block(s) of the " + what +
+      " are not vtkPolyData and were not read (extract their surface first): " +
+      ListNames(rings.SkippedBlocks.size(), [&](std::size_t k) { return rings.SkippedBlocks[k]; }) +
+      ".";
+  }
+  return text;
 }
 
 double OrientAnticlockwise(std::vector<tessera::Point2>& polygon)

@@ -148,6 +148,9 @@ struct Rings
   /// composite data set).
   std::size_t SkippedCells = 0;
   std::string FirstSkipped;
+  /// Blocks of a composite input that are not vtkPolyData and hold cells (an unstructured grid of
+  /// polygons): not read, and named ("block 1 (composite index 2) (vtkUnstructuredGrid)").
+  std::vector<std::string> SkippedBlocks;
   /// Per ring, the flat index of the block it came from in a composite data set (-1 for a
   /// vtkPolyData input): vtkGDALVectorReader gives each feature a block of its own.
   std::vector<std::int64_t> Blocks;
@@ -160,8 +163,9 @@ struct Rings
 /// composite data set, as one ring each (x, y used); then, per block, the closed rings that its
 /// line cells and open polylines form end to end (a contour, as vtkCutter or ParaView's Contour
 /// gives it: core segment_rings.h, ends matched by coordinates). Other cells, and lines in no
-/// closed ring, are counted in SkippedCells.
-/// Throws tessera::InputError when there is no ring.
+/// closed ring, are counted in SkippedCells; blocks of another type with cells are listed in
+/// SkippedBlocks. Throws tessera::InputError when there is no ring (naming the input's type when
+/// it is a data set other than vtkPolyData: only poly data is read).
 Rings ReadPolygonRings(vtkDataObject* data);
 
 /// The warning for the cells of a window/catchment input that are not rings (what names the input),
@@ -204,9 +208,10 @@ std::string RenamedArraysWarning(const RenamedArrays& renamed,
   const char* ownKind);
 
 /// The field data arrays every tessellation filter writes for points it did not use:
-/// `RejectedPointIds` (outside the window or on its boundary), `DuplicatePointIds` and `DuplicateOfPointIds`
-/// (exact copies and the accepted point each one copies). An input field-data array with one of
-/// these names is kept under another name (RenameArraysNamed); returns those renamed.
+/// `RejectedPointIds` (outside the window or on its boundary), `DuplicatePointIds` and
+/// `DuplicateOfPointIds` (exact copies and the accepted point each one copies). An input field-data
+/// array with one of these names is kept under another name (RenameArraysNamed); returns those
+/// renamed.
 RenamedArrays AddUnusedPointIds(vtkDataObject* data,
   const std::vector<std::int32_t>& rejected,
   const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates);

@@ -246,6 +246,17 @@ tessera::ProjectionParameters ChooseForwardParameters(vtkGeographicProjection* s
   else
   {
     p.Kind = KindOf(self->GetProjection());
+    // (a NaN centre was named as "longitude nan has no UTM zone", not as the setting)
+    for (const auto& [name, value] :
+      { std::pair<const char*, double>{ "CentralLongitude", self->GetCentralLongitude() },
+        std::pair<const char*, double>{ "CentralLatitude", self->GetCentralLatitude() } })
+    {
+      if (!std::isfinite(value))
+      {
+        throw tessera::InputError(std::string(name) + " is " + tessera::NumberText(value) +
+          " (ParametersFromData is off, so the projection takes the parameters set)");
+      }
+    }
     p.CentralLongitude = self->GetCentralLongitude();
     p.CentralLatitude = self->GetCentralLatitude();
     p.StandardParallel1 = self->GetStandardParallels()[0];

@@ -147,6 +147,9 @@ int vtkWindowClip::RequestData(vtkInformation*,
     vtkNew<vtkCellArray> polys;
     vtkCellData* outCD = output->GetCellData();
     vtkCellData* inCD = tiles->GetCellData();
+    // The tiles' global ids are passed too (CopyAllocate leaves them out by default), but as an
+    // ordinary array once the pieces are made: a tile in several pieces repeats its id.
+    outCD->CopyGlobalIdsOn();
     outCD->CopyAllocate(inCD);
     // Adding the filter's arrays would replace the input's of the same names silently.
     const tessera_vtk::RenamedArrays renamed =
@@ -259,6 +262,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
     }
     output->SetPoints(points);
     output->SetPolys(polys);
+    outCD->SetActiveAttribute(-1, vtkDataSetAttributes::GLOBALIDS); // (see CopyGlobalIdsOn)
     outCD->AddArray(tileIds);
     outCD->AddArray(clippedAreas);
     outCD->AddArray(fractions);

@@ -21,7 +21,8 @@
  * exactly tile & window, so that vtkTriangleFilter, Integrate Variables and rendering read them as
  * meant. A tile that the window cuts into lobes gives one polygon per lobe or more; a tile around
  * a hole is cut into pieces around it (x-monotone pieces: a vertical line meets each in one
- * interval; an x-monotone part is one piece). Each polygon has the tile's cell data and:
+ * interval; an x-monotone part is one piece). Each polygon has the tile's cell data (the tiles'
+ * global ids as an ordinary array: a tile in several pieces repeats its id) and:
  * - `TileId` (vtkIdType): the input 0 cell the polygon comes from;
  * - `ClippedArea` (double): the area of the whole tile inside the window (same on all its pieces);
  * - `AreaFraction` (double): ClippedArea over the tile's own area;

@@ -263,6 +263,32 @@ TEST(Geo, ParameterRecordRoundTripsExactly)
   EXPECT_EQ(q.UTMNorth, p.UTMNorth);
   EXPECT_THROW(ProjectionParameters::FromString("projection=Mollweide"), InputError);
   EXPECT_THROW(ProjectionParameters::FromString("projection=UTM zone=x"), InputError);
+  // A key given twice, or a parameter the projection needs left out (it was 0, silently), is an
+  // error naming it; a short record with what its projection needs is read.
+  const auto messageOf = [](const char* record)
+  {
+    try
+    {
+      ProjectionParameters::FromString(record);
+    }
+    catch (const InputError& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("read");
+  };
+  EXPECT_NE(
+    messageOf("projection=UTM zone=13 zone=14").find("gives zone twice"), std::string::npos);
+  EXPECT_NE(messageOf("projection=AlbersEqualArea")
+              .find("lacks lon0, lat1, lat2, which "
+                    "AlbersEqualArea needs"),
+    std::string::npos);
+  EXPECT_NE(
+    messageOf("projection=AzimuthalEquidistant lon0=3").find("lacks lat0"), std::string::npos);
+  EXPECT_NE(messageOf("projection=UTM north=1").find("lacks zone"), std::string::npos);
+  EXPECT_EQ(messageOf("projection=UTM zone=13"), "read");
+  EXPECT_EQ(messageOf("projection=TransverseMercator lon0=0.5"), "read");
+  EXPECT_EQ(messageOf("projection=LambertConformalConic lon0=-105 lat1=33 lat2=45"), "read");
 }
 
 // SameProjection against the projections themselves: for each kind, changing one field at a time
