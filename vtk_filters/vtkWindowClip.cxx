@@ -19,6 +19,7 @@
 #include "errors.h"
 #include "geo.h"
 #include "polygon_area.h"
+#include "predicates.h"
 
 #include <algorithm>
 #include <cmath>
@@ -67,6 +68,42 @@ std::string ProjectionWarning(vtkDataObject* tiles, vtkDataObject* window)
 
 /// The tiles' point data is not passed (their cell and field data are): the pieces' vertices are
 /// new points, crossings of tile edges and window rings among them. A warning names its arrays.
+/// Whether a tile that gave no piece lies (partly) in the window, so that EmptyTileIds lists it:
+/// its vertex mean inside; or, for a tile whose corners are all on one line (exactly), any
+/// corner or edge midpoint inside, since its mean can lie outside while half of it is in.
+/// (Contains may answer either way on the window's boundary.)
+bool TileInWindow(const std::vector<tessera::Point2>& tile, const tessera::Catchment& window)
+{
+  tessera::Point2 centre{ 0.0, 0.0 };
+  for (const tessera::Point2& p : tile)
+  {
+    centre.x += p.x / static_cast<double>(tile.size());
+    centre.y += p.y / static_cast<double>(tile.size());
+  }
+  if (window.Contains(centre))
+  {
+    return true;
+  }
+  const std::size_t n = tile.size();
+  for (std::size_t k = 2; k < n; ++k)
+  {
+    if (tessera::orient2d(tile[0], tile[1], tile[k]) != 0)
+    {
+      return false; // a tile with area: the mean decides
+    }
+  }
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    const tessera::Point2& a = tile[k];
+    const tessera::Point2& b = tile[(k + 1) % n];
+    if (window.Contains(a) || window.Contains({ 0.5 * (a.x + b.x), 0.5 * (a.y + b.y) }))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 std::string PointDataWarning(vtkPolyData* tiles)
 {
   vtkPointData* pointData = tiles->GetPointData();
@@ -227,13 +264,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
       {
         // Outside the window, or without area to clip: collinear corners, or a sliver thinner
         // than the clip's rounding. The latter lie in the window, and are reported.
-        tessera::Point2 centre{ 0.0, 0.0 };
-        for (const tessera::Point2& p : tile)
-        {
-          centre.x += p.x / static_cast<double>(tile.size());
-          centre.y += p.y / static_cast<double>(tile.size());
-        }
-        if (catchment.Contains(centre))
+        if (TileInWindow(tile, catchment))
         {
           empty->InsertNextValue(c);
         }

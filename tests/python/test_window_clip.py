@@ -441,6 +441,40 @@ def test_inputs_of_another_type_are_named_and_leave_empty_outputs():
     assert_that(not clip_errors and out.IsA("vtkMultiBlockDataSet") and np.allclose(areas, [0.08, 0.25], rtol=1e-12),
                 f"blocks clipped one by one: {out.GetClassName()}, {areas}, {clip_errors}")
 
+
+def test_review_of_windows_of_other_types_global_ids_and_flat_tiles():
+    """A review's findings. (1) A window block that is not poly data (an unstructured grid of a
+    hole) was skipped without a word: its area counted as window. It is named in a warning, and a
+    window input of that type says only poly data is read. (2) The tiles' global ids were dropped:
+    they are an ordinary array now. (3) A flat (collinear) tile half in the window was in no list:
+    it is in EmptyTileIds, as a flat tile wholly inside is."""
+    from vtkmodules.vtkCommonDataModel import VTK_POLYGON, vtkMultiBlockDataSet, vtkUnstructuredGrid
+
+    square = polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]])
+    hole = vtkUnstructuredGrid()
+    hole.SetPoints(polygon([[(0.25, 0.25), (0.75, 0.25), (0.75, 0.75), (0.25, 0.75)]]).GetPoints())
+    hole.InsertNextCell(VTK_POLYGON, 4, [0, 1, 2, 3])
+    window = vtkMultiBlockDataSet()
+    window.SetBlock(0, square)
+    window.SetBlock(1, hole)
+    tiles = polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]])
+    ids = vtkIntArray()
+    ids.SetName("gids")
+    ids.InsertNextValue(41)
+    tiles.GetCellData().SetGlobalIds(ids)
+    out, errors, warnings = clip_by(tiles, window)
+    assert_that(not errors and any("block 1 (composite index 2) (vtkUnstructuredGrid)" in w and "not read" in w
+                                   for w in warnings), f"{errors} {warnings}")
+    assert_that(cell_values(out, "gids") == [41] and out.GetCellData().GetGlobalIds() is None,
+                f"the global ids as an ordinary array: {cell_values(out, 'gids')}")
+    _, errors, _ = clip_by(tiles, hole)
+    assert_that(len(errors) == 1 and "only vtkPolyData (or a composite data set of it) is" in errors[0], f"{errors}")
+    flat = polygon([[(3, 0.5), (5, 0.5), (7, 0.5)], [(0.2, 0.5), (0.4, 0.5), (0.6, 0.5)], [(3, 3), (4, 3), (5, 3)]])
+    out, errors, warnings = clip_by(flat, polygon([[(0, 0), (4, 0), (4, 1), (0, 1)]]))
+    empty = out.GetFieldData().GetArray("EmptyTileIds")
+    assert_that(not errors and [empty.GetValue(k) for k in range(empty.GetNumberOfTuples())] == [0, 1],
+                f"flat tiles in the window, half or whole, listed; one outside not: {warnings}")
+
 if __name__ == "__main__":
     run([test_cells_are_simple_pieces_that_fill_tile_and_window,
          test_review_cases,
@@ -448,4 +482,5 @@ if __name__ == "__main__":
          test_a_window_of_loose_line_segments_is_joined_into_its_rings,
          test_tiles_and_window_must_share_their_projection,
          test_the_tiles_point_data_is_named_as_not_passed,
-         test_inputs_of_another_type_are_named_and_leave_empty_outputs])
+         test_inputs_of_another_type_are_named_and_leave_empty_outputs,
+         test_review_of_windows_of_other_types_global_ids_and_flat_tiles])
