@@ -68,6 +68,25 @@ std::string ProjectionWarning(vtkDataObject* tiles, vtkDataObject* window)
 
 /// The tiles' point data is not passed (their cell and field data are): the pieces' vertices are
 /// new points, crossings of tile edges and window rings among them. A warning names its arrays.
+/// The power of two 2^e that brings a window whose largest coordinate (in magnitude) is below
+/// 2^-128 to [1, 2): the clip then works as at unit scale. 0 for any other window (a window too
+/// large is an error where a tile's area overflows).
+int UpScaleExponent(const std::vector<tessera::Point2>& vertices)
+{
+  double reach = 0.0;
+  for (const tessera::Point2& p : vertices)
+  {
+    reach = std::max({ reach, std::fabs(p.x), std::fabs(p.y) });
+  }
+  if (reach == 0.0 || reach >= std::ldexp(1.0, -128) || !std::isfinite(reach))
+  {
+    return 0;
+  }
+  int exponent = 0;
+  std::frexp(reach, &exponent); // reach = f 2^exponent, f in [0.5, 1)
+  return 1 - exponent;
+}
+
 /// Whether a tile that gave no piece lies (partly) in the window, so that EmptyTileIds lists it:
 /// its vertex mean inside; or, for a tile whose corners are all on one line (exactly), any
 /// corner or edge midpoint inside, since its mean can lie outside while half of it is in.
@@ -177,7 +196,16 @@ int vtkWindowClip::RequestData(vtkInformation*,
     {
       vtkWarningMacro(<< skippedRings);
     }
-    const tessera::Catchment catchment(window.Offsets, window.Vertices);
+    // A window of tiny coordinates is clipped scaled up by a power of two (exact), tiles alike,
+    // and the results scaled back: below some 1e-150 the clip's products fell below the doubles,
+    // and areas came out wrong (a fraction of 0.945 for 17/18 at 1e-161) or not at all.
+    const int exponent = UpScaleExponent(window.Vertices);
+    std::vector<tessera::Point2> windowVertices = window.Vertices;
+    for (tessera::Point2& p : windowVertices)
+    {
+      p = { std::ldexp(p.x, exponent), std::ldexp(p.y, exponent) };
+    }
+    const tessera::Catchment catchment(window.Offsets, windowVertices);
 
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
@@ -239,7 +267,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
       {
         double p[3];
         tiles->GetPoint(ids->GetId(k), p);
-        tile[k] = { p[0], p[1] };
+        tile[k] = { std::ldexp(p[0], exponent), std::ldexp(p[1], exponent) };
       }
       const double ownArea = tessera_vtk::OrientAnticlockwise(tile);
       const bool finiteCorners = std::all_of(tile.begin(),
@@ -281,14 +309,15 @@ int vtkWindowClip::RequestData(vtkInformation*,
         for (std::size_t k = begin; k < end; ++k)
         {
           const auto& a = pieces.Vertices[k];
-          polys->InsertCellPoint(points->InsertNextPoint(a.x, a.y, 0.0));
+          polys->InsertCellPoint(
+            points->InsertNextPoint(std::ldexp(a.x, -exponent), std::ldexp(a.y, -exponent), 0.0));
         }
         outCD->CopyData(inCD, c, polys->GetNumberOfCells() - 1);
         tileIds->InsertNextValue(c);
-        clippedAreas->InsertNextValue(clipped);
+        clippedAreas->InsertNextValue(std::ldexp(clipped, -2 * exponent));
         fractions->InsertNextValue(ownArea > 0.0 ? clipped / ownArea : 0.0);
-        pieceAreas->InsertNextValue(
-          tessera::CompensatedPolygonArea(&pieces.Vertices[begin], end - begin));
+        pieceAreas->InsertNextValue(std::ldexp(
+          tessera::CompensatedPolygonArea(&pieces.Vertices[begin], end - begin), -2 * exponent));
       }
     }
     output->SetPoints(points);

@@ -36,7 +36,10 @@
  * lists them. Polygons that lie in the window but have no area to clip (collinear corners, or a
  * sliver thinner than the clip's rounding) give no piece either, and are counted in a warning and
  * listed in `EmptyTileIds` (both arrays are always written, empty when nothing is listed). A tile
- * whose area overflows (coordinates of some 1e154 or more) is an error naming it. Areas use exact
+ * whose area overflows (coordinates of some 1e154 or more) is an error naming it; a window of
+ * tiny coordinates (below 2^-128, some 3e-39) is clipped scaled up by a power of two, tiles
+ * alike, so that AreaFraction is as at unit scale (ClippedArea and PieceArea are then as small as
+ * the doubles allow: 0 below some 1e-323). Areas use exact
  * orientation tests and compensated sums, so the clipped areas of a tiling sum to the window's area
  * to round-off. The tiles' point data is not passed (the pieces' vertices are new points; a warning
  * names its arrays). Only x and y are used, in one plane: inputs whose `TesseraProjection` records

@@ -474,6 +474,16 @@ def test_review_of_windows_of_other_types_global_ids_and_flat_tiles():
     empty = out.GetFieldData().GetArray("EmptyTileIds")
     assert_that(not errors and [empty.GetValue(k) for k in range(empty.GetNumberOfTuples())] == [0, 1],
                 f"flat tiles in the window, half or whole, listed; one outside not: {warnings}")
+    # (4) Tiny coordinates: the clip's products fell below the doubles (a fraction of 0.945 for
+    # 17/18 at 1e-161, no piece at 1e-163). The window is scaled up by a power of two now.
+    tile, window = [(0, 0), (3, 0), (3, 3), (0, 3)], [(1, 0), (3, 0), (3, 3), (0, 3), (0, 1)]
+    for s in (1e-158, 1e-161, 1e-163, 1e-250):
+        out = clip(polygon([[(s * x, s * y) for x, y in tile]]), [[(s * x, s * y) for x, y in window]])
+        fraction = cell_values(out, "AreaFraction")
+        points = [out.GetPoint(k)[:2] for k in range(out.GetNumberOfPoints())]
+        assert_that(len(fraction) == 1 and abs(fraction[0] - 17 / 18) < 1e-15
+                    and all(0 <= x <= 3 * s and 0 <= y <= 3 * s for x, y in points),
+                    f"scale {s}: fraction {fraction}, pieces' points at the tiles' scale {points[:3]}")
 
 if __name__ == "__main__":
     run([test_cells_are_simple_pieces_that_fill_tile_and_window,
