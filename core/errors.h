@@ -4,6 +4,8 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace tessera
 {
@@ -16,6 +18,20 @@ public:
     : std::invalid_argument(message)
   {
   }
+};
+
+/// An InputError about rings of a polygon input that names them by their index ("ring 3"); Rings
+/// holds those indices, so that a caller who knows where each ring came from (a cell of a data
+/// set) can say so.
+class RingError : public InputError
+{
+public:
+  RingError(const std::string& message, std::vector<std::size_t> rings)
+    : InputError(message)
+    , Rings(std::move(rings))
+  {
+  }
+  std::vector<std::size_t> Rings;
 };
 
 /// value as the shortest decimal text that reads back as the same double, with "." whatever the

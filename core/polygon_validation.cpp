@@ -51,9 +51,10 @@ void CheckFinite(const std::vector<std::size_t>& ringOffsets, const std::vector<
       if (!std::isfinite(p.x) || !std::isfinite(p.y))
       {
         const bool nan = std::isnan(p.x) || std::isnan(p.y);
-        throw InputError("ring " + std::to_string(r) + " vertex " +
-          std::to_string(v - ringOffsets[r]) + " has " +
-          (nan ? "a NaN coordinate" : "an infinite coordinate"));
+        throw RingError("ring " + std::to_string(r) + " vertex " +
+            std::to_string(v - ringOffsets[r]) + " has " +
+            (nan ? "a NaN coordinate" : "an infinite coordinate"),
+          { r });
       }
     }
   }
@@ -83,8 +84,9 @@ CleanRings DropRepeats(const std::vector<std::size_t>& ringOffsets,
     const std::size_t kept = clean.Vertices.size() - clean.RingOffsets.back();
     if (kept < 3)
     {
-      throw InputError("ring " + std::to_string(r) + " has fewer than 3 distinct vertices (" +
-        std::to_string(kept) + " after dropping repeated consecutive vertices)");
+      throw RingError("ring " + std::to_string(r) + " has fewer than 3 distinct vertices (" +
+          std::to_string(kept) + " after dropping repeated consecutive vertices)",
+        { r });
     }
     clean.RingOffsets.push_back(clean.Vertices.size());
   }
@@ -229,9 +231,10 @@ public:
       const auto sr = this->InsideOther.find({ s, r });
       if (rs == this->InsideOther.end() || sr == this->InsideOther.end())
       {
-        throw InputError("ring " + std::to_string(r) + " and ring " + std::to_string(s) +
-          " run along each other all the way round: a ring given twice, or an island that fills a "
-          "hole exactly (the even-odd rule would cancel them; leave both out instead)");
+        throw RingError("ring " + std::to_string(r) + " and ring " + std::to_string(s) +
+            " run along each other all the way round: a ring given twice, or an island that fills "
+            "a hole exactly (the even-odd rule would cancel them; leave both out instead)",
+          { r, s });
       }
       this->Clean.RingContacts.push_back({ r, s, rs->second });
       this->Clean.RingContacts.push_back({ s, r, sr->second });
@@ -350,10 +353,11 @@ private:
   {
     const Segment& first = s.Ring < t.Ring ? s : t;
     const Segment& second = s.Ring < t.Ring ? t : s;
-    throw InputError("ring " + std::to_string(first.Ring) + " " + Describe(this->Clean, first) +
-      " and ring " + std::to_string(second.Ring) + " " + Describe(this->Clean, second) +
-      " cross (rings may touch and share stretches of boundary, but not cross; holes and islands "
-      "are separate rings)");
+    throw RingError("ring " + std::to_string(first.Ring) + " " + Describe(this->Clean, first) +
+        " and ring " + std::to_string(second.Ring) + " " + Describe(this->Clean, second) +
+        " cross (rings may touch and share stretches of boundary, but not cross; holes and "
+        "islands are separate rings)",
+      { first.Ring, second.Ring });
   }
 
   CleanRings& Clean;
@@ -385,8 +389,9 @@ bool MeetsWithinRing(const CleanRings& clean, const Segment& s, const Segment& t
 {
   const Segment& first = s.Start < t.Start ? s : t;
   const Segment& second = s.Start < t.Start ? t : s;
-  throw InputError("ring " + std::to_string(first.Ring) + " is self-intersecting: " +
-    Describe(clean, first) + " and " + Describe(clean, second) + " touch or cross");
+  throw RingError("ring " + std::to_string(first.Ring) + " is self-intersecting: " +
+      Describe(clean, first) + " and " + Describe(clean, second) + " touch or cross",
+    { first.Ring });
 }
 
 // Sweep over segments sorted by their left end: a segment is compared only with those whose

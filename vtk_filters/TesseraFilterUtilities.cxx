@@ -423,8 +423,9 @@ public:
     }
   }
 
-  /// Appends the closed rings they form to rings; returns the cells with a segment in none.
-  std::vector<vtkIdType> JoinInto(Rings& rings) const
+  /// Appends the closed rings they form to rings (block: the prefix of their source); returns
+  /// the cells with a segment in none.
+  std::vector<vtkIdType> JoinInto(Rings& rings, const std::string& block) const
   {
     const tessera::PointRings joined = tessera::JoinSegmentsAtEqualEnds(this->Ends);
     for (std::size_t r = 0; r + 1 < joined.Offsets.size(); ++r)
@@ -433,6 +434,8 @@ public:
         joined.Vertices.begin() + std::ptrdiff_t(joined.Offsets[r]),
         joined.Vertices.begin() + std::ptrdiff_t(joined.Offsets[r + 1]));
       rings.Offsets.push_back(rings.Vertices.size());
+      rings.Sources.push_back(
+        (block.empty() ? std::string("a ring") : block + "a ring") + " of joined line cells");
     }
     std::vector<vtkIdType> unjoined;
     for (const std::size_t s : joined.Unjoined)
@@ -475,8 +478,9 @@ void AppendPolygonRings(vtkPolyData* poly, const std::string& block, Rings& ring
       rings.Vertices.push_back({ p[0], p[1] });
     }
     rings.Offsets.push_back(rings.Vertices.size());
+    rings.Sources.push_back(block + "cell " + std::to_string(c));
   }
-  const std::vector<vtkIdType> unjoined = loose.JoinInto(rings);
+  const std::vector<vtkIdType> unjoined = loose.JoinInto(rings, block);
   skipped.insert(skipped.end(), unjoined.begin(), unjoined.end());
   std::sort(skipped.begin(), skipped.end());
   skipped.erase(std::unique(skipped.begin(), skipped.end()), skipped.end());
@@ -1009,6 +1013,18 @@ Rings ReadPolygonRings(vtkDataObject* data)
       (skipped.empty() ? std::string() : ": " + skipped));
   }
   return rings;
+}
+
+std::string RingSources(const Rings& rings, const std::vector<std::size_t>& ids, const char* what)
+{
+  std::string text;
+  for (const std::size_t r : ids)
+  {
+    const std::string source = r < rings.Sources.size() ? rings.Sources[r] : "unknown";
+    text += (text.empty() ? "" : "; ") + std::string("ring ") + std::to_string(r) + " is " +
+      source + " of the " + what;
+  }
+  return text;
 }
 
 std::string SkippedCellsWarning(const Rings& rings, const char* what)

@@ -151,6 +151,9 @@ struct Rings
   /// Blocks of a composite input that are not vtkPolyData and hold cells (an unstructured grid of
   /// polygons): not read, and named ("block 1 (composite index 2) (vtkUnstructuredGrid)").
   std::vector<std::string> SkippedBlocks;
+  /// Per ring, where it came from ("cell 2", "block 1 (composite index 2) cell 0", "a ring of
+  /// joined line cells"), for errors about rings (RingSources).
+  std::vector<std::string> Sources;
   /// Per ring, the flat index of the block it came from in a composite data set (-1 for a
   /// vtkPolyData input): vtkGDALVectorReader gives each feature a block of its own.
   std::vector<std::int64_t> Blocks;
@@ -167,6 +170,10 @@ struct Rings
 /// SkippedBlocks. Throws tessera::InputError when there is no ring (naming the input's type when
 /// it is a data set other than vtkPolyData: only poly data is read).
 Rings ReadPolygonRings(vtkDataObject* data);
+
+/// Where the rings of a tessera::RingError came from: "ring 2 is cell 4 of the window (input 1)",
+/// one clause per ring; `what` names the input.
+std::string RingSources(const Rings& rings, const std::vector<std::size_t>& ids, const char* what);
 
 /// The warning for the cells of a window/catchment input that are not rings (what names the input),
 /// or empty when there are none.

@@ -1112,8 +1112,17 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   settings.Areas = this->AreaMethod == EQUAL_AREA_PLANE ? tessera::AreaMethod::EqualAreaPlane
     : this->AreaMethod == GEODESIC_POLYGON              ? tessera::AreaMethod::GeodesicPolygon
                                                         : tessera::AreaMethod::Automatic;
-  in.Average.reset(
-    new tessera::ThiessenArealAverage(lonlat, rings.Offsets, rings.Vertices, settings));
+  try
+  {
+    in.Average.reset(
+      new tessera::ThiessenArealAverage(lonlat, rings.Offsets, rings.Vertices, settings));
+  }
+  catch (const tessera::RingError& error)
+  {
+    // (the core numbers the rings as read: say which cells they are)
+    throw tessera::InputError(std::string(error.what()) + " (" +
+      tessera_vtk::RingSources(rings, error.Rings, "catchment (input 1)") + ")");
+  }
   const std::size_t gaugeCount = lonlat.size();
   const std::string nested = RingsInsideOtherBlocksWarning(rings, *in.Average);
   if (!nested.empty())

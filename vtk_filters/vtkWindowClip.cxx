@@ -87,6 +87,22 @@ int UpScaleExponent(const std::vector<tessera::Point2>& vertices)
   return 1 - exponent;
 }
 
+/// The clip's window from the rings read (vertices: theirs, scaled); an error about rings names
+/// the cells they came from (the core numbers rings, not cells).
+tessera::Catchment WindowOf(const tessera_vtk::Rings& rings,
+  const std::vector<tessera::Point2>& vertices)
+{
+  try
+  {
+    return tessera::Catchment(rings.Offsets, vertices);
+  }
+  catch (const tessera::RingError& error)
+  {
+    throw tessera::InputError(std::string(error.what()) + " (" +
+      tessera_vtk::RingSources(rings, error.Rings, "window (input 1)") + ")");
+  }
+}
+
 /// Whether a tile that gave no piece lies (partly) in the window, so that EmptyTileIds lists it:
 /// its vertex mean inside; or, for a tile whose corners are all on one line (exactly), any
 /// corner or edge midpoint inside, since its mean can lie outside while half of it is in.
@@ -205,7 +221,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
     {
       p = { std::ldexp(p.x, exponent), std::ldexp(p.y, exponent) };
     }
-    const tessera::Catchment catchment(window.Offsets, windowVertices);
+    const tessera::Catchment catchment = WindowOf(window, windowVertices);
 
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();

@@ -1286,6 +1286,21 @@ TEST(Clip, RejectsBadCatchmentsNamingRingsAndSegments)
   crossing.Add(Rectangle(3, 1, 5, 2));
   const std::string crossed = build(crossing);
   EXPECT_NE(crossed.find("ring 0 segment 1 and ring 1 segment"), std::string::npos) << crossed;
+  // The error carries the rings' indices, for a caller to say where they came from.
+  const auto ringsOf = [](const Rings& rings)
+  {
+    try
+    {
+      Catchment catchment(rings.Offsets, rings.Vertices);
+    }
+    catch (const tessera::RingError& error)
+    {
+      return error.Rings;
+    }
+    return std::vector<std::size_t>();
+  };
+  EXPECT_EQ(ringsOf(crossing), (std::vector<std::size_t>{ 0, 1 }));
+  EXPECT_EQ(ringsOf(bowTie), (std::vector<std::size_t>{ 0 }));
 
   // Rings may touch and share stretches of boundary, not cross: ring 1's diagonal enters ring 0
   // at one corner and leaves at the other; ring 3 runs along ring 2's bottom edge and leaves it

@@ -474,6 +474,17 @@ def test_review_of_windows_of_other_types_global_ids_and_flat_tiles():
     empty = out.GetFieldData().GetArray("EmptyTileIds")
     assert_that(not errors and [empty.GetValue(k) for k in range(empty.GetNumberOfTuples())] == [0, 1],
                 f"flat tiles in the window, half or whole, listed; one outside not: {warnings}")
+    # (5) An error about a ring names the cell it came from (the core numbers rings, not cells).
+    from vtkmodules.vtkCommonDataModel import vtkCellArray
+
+    window = polygon([[(0, 0), (2, 0), (0, 2), (2, 2)]])  # a bow tie, after two vertex cells
+    cells = vtkCellArray()
+    for k in (0, 1):
+        cells.InsertNextCell(1, [k])
+    window.SetVerts(cells)
+    _, errors, _ = clip_by(polygon([[(0, 0), (1, 0), (1, 1)]]), window)
+    assert_that(len(errors) == 1 and "ring 0 is self-intersecting" in errors[0]
+                and "(ring 0 is cell 2 of the window (input 1))" in errors[0], f"{errors}")
     # (4) Tiny coordinates: the clip's products fell below the doubles (a fraction of 0.945 for
     # 17/18 at 1e-161, no piece at 1e-163). The window is scaled up by a power of two now.
     tile, window = [(0, 0), (3, 0), (3, 3), (0, 3)], [(1, 0), (3, 0), (3, 3), (0, 3), (0, 1)]
