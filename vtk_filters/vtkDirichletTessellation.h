@@ -121,6 +121,9 @@ public:
    * is an error at the update.
    */
   vtkSetMacro(Algorithm, int);
+  // The range VTK's clamping setter announced (kept: a value outside is an error at the update).
+  virtual int GetAlgorithmMinValue() { return GREEN_SIBSON; }
+  virtual int GetAlgorithmMaxValue() { return BRASSEL_REIF; }
   vtkGetMacro(Algorithm, int);
   void SetAlgorithmToGreenSibson() { this->SetAlgorithm(GREEN_SIBSON); }
   void SetAlgorithmToBrasselReif() { this->SetAlgorithm(BRASSEL_REIF); }

@@ -85,6 +85,9 @@ public:
    * is an error at the update.
    */
   vtkSetMacro(Projection, int);
+  // The range VTK's clamping setter announced (kept: a value outside is an error at the update).
+  virtual int GetProjectionMinValue() { return AUTOMATIC; }
+  virtual int GetProjectionMaxValue() { return AZIMUTHAL_EQUIDISTANT; }
   vtkGetMacro(Projection, int);
   void SetProjectionToAutomatic() { this->SetProjection(AUTOMATIC); }
   void SetProjectionToAlbersEqualArea() { this->SetProjection(ALBERS_EQUAL_AREA); }
@@ -100,6 +103,9 @@ public:
    * an error at the update.
    */
   vtkSetMacro(UTMZone, int);
+  // The range VTK's clamping setter announced (kept: a value outside is an error at the update).
+  virtual int GetUTMZoneMinValue() { return 0; }
+  virtual int GetUTMZoneMaxValue() { return 60; }
   vtkGetMacro(UTMZone, int);
   ///@}
 

@@ -93,6 +93,9 @@ public:
    * error at the update.
    */
   vtkSetMacro(Basis, int);
+  // The range VTK's clamping setter announced (kept: a value outside is an error at the update).
+  virtual int GetBasisMinValue() { return INVERSE_MULTIQUADRIC; }
+  virtual int GetBasisMaxValue() { return GAUSSIAN; }
   vtkGetMacro(Basis, int);
   void SetBasisToInverseMultiquadric() { this->SetBasis(INVERSE_MULTIQUADRIC); }
   void SetBasisToGaussian() { this->SetBasis(GAUSSIAN); }
@@ -138,6 +141,9 @@ public:
    * or into none (see Basis). Another value is an error at the update.
    */
   vtkSetMacro(JoinRule, int);
+  // The range VTK's clamping setter announced (kept: a value outside is an error at the update).
+  virtual int GetJoinRuleMinValue() { return LONGEST; }
+  virtual int GetJoinRuleMaxValue() { return CLOSEST_TANGENT; }
   vtkGetMacro(JoinRule, int);
   void SetJoinRuleToLongest() { this->SetJoinRule(LONGEST); }
   void SetJoinRuleToClosestTangent() { this->SetJoinRule(CLOSEST_TANGENT); }

@@ -209,6 +209,9 @@ public:
    * update.
    */
   vtkSetMacro(AreaMethod, int);
+  // The range VTK's clamping setter announced (kept: a value outside is an error at the update).
+  virtual int GetAreaMethodMinValue() { return AUTOMATIC_AREAS; }
+  virtual int GetAreaMethodMaxValue() { return GEODESIC_POLYGON; }
   vtkGetMacro(AreaMethod, int);
   void SetAreaMethodToAutomatic() { this->SetAreaMethod(AUTOMATIC_AREAS); }
   void SetAreaMethodToEqualAreaPlane() { this->SetAreaMethod(EQUAL_AREA_PLANE); }
