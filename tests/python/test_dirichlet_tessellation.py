@@ -1279,6 +1279,7 @@ def test_delaunay_takes_a_window_far_larger_than_its_points():
 def test_an_algorithm_that_is_no_choice_is_named():
     # SetAlgorithm(7) ran BrasselReif without a word (VTK's clamping setter).
     f = vtkDirichletTessellation()
+    assert_that((f.GetAlgorithmMinValue(), f.GetAlgorithmMaxValue()) == (0, 1), "the range VTK's setter announced")
     errors = messages_of(f)
     f.SetAlgorithm(7)
     f.SetInputData(make_points([(0.2, 0.3), (0.7, 0.6), (0.4, 0.9)]))

@@ -295,7 +295,10 @@ def test_a_nan_edge_length_is_an_error():
 
 def test_a_projection_or_zone_that_is_no_choice_is_named():
     # SetProjection(9) and SetUTMZone(61) were clamped to another projection and zone 60, silently.
-    # A NaN centre set by hand is named too.
+    # A NaN centre set by hand is named too. The ranges the clamping setters announced are kept.
+    g = vtkGeographicProjection()
+    assert_that((g.GetProjectionMinValue(), g.GetProjectionMaxValue(), g.GetUTMZoneMinValue(), g.GetUTMZoneMaxValue())
+                == (0, 5, 0, 60), "the ranges")
     for setup, expected in [(lambda f: f.SetProjection(9), "Projection 9 is not one of 0 (Automatic), 1 (AlbersEqualArea)"),
                             (lambda f: f.SetUTMZone(61), "UTMZone 61 is neither a zone from 1 to 60 nor 0"),
                             (lambda f: f.SetUTMZone(-1), "UTMZone -1 is neither a zone from 1 to 60 nor 0"),

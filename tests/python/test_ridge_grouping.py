@@ -318,7 +318,11 @@ def test_a_time_varying_input_is_grouped_at_each_time_with_an_image_consumer():
 
 def test_a_basis_or_join_rule_that_is_no_choice_is_named():
     # SetBasis(5) ran the Gaussian and SetJoinRule(-1) the longest contour, silently (clamped).
+    # The ranges the clamping setters announced are still there (and the classes' layout with them).
     coords, _, _ = two_noisy_curves()
+    f = vtkRidgeGrouping()
+    assert_that((f.GetBasisMinValue(), f.GetBasisMaxValue(), f.GetJoinRuleMinValue(), f.GetJoinRuleMaxValue())
+                == (0, 1, 0, 1), "the ranges")
     for setup, expected in [(lambda f: f.SetBasis(5), "Basis 5 is not one of 0 (InverseMultiquadric), 1 (Gaussian)"),
                             (lambda f: f.SetJoinRule(-1), "JoinRule -1 is not one of 0 (Longest), 1 (ClosestTangent)")]:
         f = vtkRidgeGrouping()

@@ -1294,6 +1294,7 @@ def test_review_cases_of_times_values_and_time_aware_gauges():
 def test_an_area_method_that_is_no_choice_is_named():
     # SetAreaMethod(3) measured geodesically without a word (clamped).
     f = vtkThiessenArealAverage()
+    assert_that((f.GetAreaMethodMinValue(), f.GetAreaMethodMaxValue()) == (0, 2), "the range")
     errors = messages_of(f)
     f.SetAreaMethod(3)
     f.SetGaugesData(gauges_polydata([(-0.5, -0.5), (0.5, 0.5)], ["a", "b"], [1.0, 2.0]))
