@@ -167,20 +167,20 @@ std::string PairedRatios(const std::vector<double>& ours,
   return text;
 }
 
-/// The medians again in microseconds per point, and the flatness of each column over the sizes
-/// (largest over smallest per-point time; the target is at most 1.3 from 10^4 to 10^7).
-void PrintPerPoint(const std::vector<vtkIdType>& sizes, const std::vector<std::vector<double>>& us)
+/// A per-point table's rows after its header: one per size (us: per column, per size), then each
+/// column's flatness over the sizes (largest over smallest per-point time; the target is
+/// at most 1.3 from 10^4 to 10^7).
+void PrintPerPointRows(const std::vector<vtkIdType>& sizes,
+  const std::vector<std::vector<double>>& us)
 {
-  std::printf("\n| microseconds per point | Tessera Delaunay | Tessera tiles+areas | "
-              "Tessera tiles+areas+graph | CGAL DT2 |\n|---|---|---|---|---|\n");
   for (std::size_t k = 0; k < sizes.size(); ++k)
   {
-    std::printf("| %lld | %s | %s | %s | %s |\n",
-      static_cast<long long>(sizes[k]),
-      Cell(us[0][k]).c_str(),
-      Cell(us[1][k]).c_str(),
-      Cell(us[2][k]).c_str(),
-      Cell(us[3][k]).c_str());
+    std::printf("| %lld |", static_cast<long long>(sizes[k]));
+    for (const std::vector<double>& column : us)
+    {
+      std::printf(" %s |", Cell(column[k]).c_str());
+    }
+    std::printf("\n");
   }
   std::printf("| largest / smallest |");
   for (const std::vector<double>& column : us)
@@ -189,6 +189,14 @@ void PrintPerPoint(const std::vector<vtkIdType>& sizes, const std::vector<std::v
     std::printf(" %s |", Cell(*low > 0 ? *high / *low : -1.0).c_str());
   }
   std::printf("\n");
+}
+
+/// The medians again in microseconds per point, with each column's flatness over the sizes.
+void PrintPerPoint(const std::vector<vtkIdType>& sizes, const std::vector<std::vector<double>>& us)
+{
+  std::printf("\n| microseconds per point | Tessera Delaunay | Tessera tiles+areas | "
+              "Tessera tiles+areas+graph | CGAL DT2 |\n|---|---|---|---|---|\n");
+  PrintPerPointRows(sizes, us);
 }
 
 /// The memory conditions of the fourth table (see the header).
@@ -270,22 +278,7 @@ void PrintPerPointByCondition(vtkIdType maxPoints, int repeats)
     names[1],
     names[1],
     names[1]);
-  for (std::size_t k = 0; k < sizes.size(); ++k)
-  {
-    std::printf("| %lld |", static_cast<long long>(sizes[k]));
-    for (const std::vector<double>& column : us)
-    {
-      std::printf(" %s |", Cell(column[k]).c_str());
-    }
-    std::printf("\n");
-  }
-  std::printf("| largest / smallest |");
-  for (const std::vector<double>& column : us)
-  {
-    const auto [low, high] = std::minmax_element(column.begin(), column.end());
-    std::printf(" %s |", Cell(*low > 0 ? *high / *low : -1.0).c_str());
-  }
-  std::printf("\n");
+  PrintPerPointRows(sizes, us);
 }
 
 } // namespace

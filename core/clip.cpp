@@ -781,6 +781,37 @@ bool Catchment::Contains(const Point2& p) const
   return this->WindingAt(p, work) != 0;
 }
 
+bool Catchment::HoldsPartOf(const Point2* tile, std::size_t count) const
+{
+  Point2 centre{ 0.0, 0.0 };
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    centre.x += tile[k].x / static_cast<double>(count);
+    centre.y += tile[k].y / static_cast<double>(count);
+  }
+  if (count == 0 || this->Contains(centre))
+  {
+    return count > 0;
+  }
+  for (std::size_t k = 2; k < count; ++k)
+  {
+    if (orient2d(tile[0], tile[1], tile[k]) != 0)
+    {
+      return false; // a tile with area: its mean decides
+    }
+  }
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const Point2& a = tile[k];
+    const Point2& b = tile[(k + 1) % count];
+    if (this->Contains(a) || this->Contains({ 0.5 * (a.x + b.x), 0.5 * (a.y + b.y) }))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 int Catchment::WindingAt(const Point2& p, Workspace& work) const
 {
   this->RayCrossings(p, work.Crossings);

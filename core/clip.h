@@ -114,6 +114,12 @@ public:
   /// Even-odd membership, exact for points off the boundary (boundary points get either answer).
   bool Contains(const Point2& p) const;
 
+  /// Whether a tile that clips to no area still lies (partly) in the catchment: a sliver thinner
+  /// than rounding, or collinear corners. Its vertex mean inside; or, for corners all on one line
+  /// (exactly), any corner or edge midpoint inside, since the mean of a flat tile half in the
+  /// catchment can lie outside. (Boundary points get either answer, as in Contains.)
+  bool HoldsPartOf(const Point2* tile, std::size_t count) const;
+
   /// Area of tile & catchment. The tile is a convex polygon with anticlockwise vertices; it is
   /// clipped as the convex hull of its vertices, so repeated and collinear vertices, and the small
   /// non-convexity of rounding (vertices an ulp apart, folds), change the area by ulps. Throws

@@ -126,6 +126,10 @@ std::vector<std::int32_t> KeptRowsOf(const std::vector<std::int32_t>& repeated,
   const std::vector<double>& rowValues,
   std::size_t gaugeCount)
 {
+  if (repeated.empty())
+  {
+    return {};
+  }
   const auto slotOf = [&](std::size_t r)
   {
     return static_cast<std::uint64_t>(steps.StepOfRow[r]) * gaugeCount +
@@ -136,7 +140,7 @@ std::vector<std::int32_t> KeptRowsOf(const std::vector<std::int32_t>& repeated,
   {
     kept.emplace(slotOf(static_cast<std::size_t>(r)), -1);
   }
-  for (std::size_t r = 0; r < steps.StepOfRow.size() && !repeated.empty(); ++r)
+  for (std::size_t r = 0; r < steps.StepOfRow.size(); ++r)
   {
     if (steps.StepOfRow[r] < 0 || std::isnan(rowValues[r]))
     {

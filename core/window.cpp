@@ -312,7 +312,12 @@ ConstraintNames Window::EffectiveNames() const
   return names;
 }
 
-Window Window::Rectangle(double xmin, double xmax, double ymin, double ymax)
+Window Window::Rectangle(double xmin,
+  double xmax,
+  double ymin,
+  double ymax,
+  const std::string& owner,
+  const std::string& note)
 {
   const double bounds[4] = { xmin, xmax, ymin, ymax };
   const char* names[4] = { "xmin", "xmax", "ymin", "ymax" };
@@ -332,10 +337,10 @@ Window Window::Rectangle(double xmin, double xmax, double ymin, double ymax)
   }
   // Bottom, right, top, left: vertex 0 is the lower-left corner.
   ConstraintNames sides;
-  sides.Each = { "the rectangle's side y > ymin",
-    "the rectangle's side x < xmax",
-    "the rectangle's side y < ymax",
-    "the rectangle's side x > xmin" };
+  for (const char* side : { "y > ymin", "x < xmax", "y < ymax", "x > xmin" })
+  {
+    sides.Each.push_back(owner + " side " + side + note);
+  }
   return Window({ HalfPlane{ 0.0, -1.0, ymin },
                   HalfPlane{ 1.0, 0.0, -xmax },
                   HalfPlane{ 0.0, 1.0, -ymax },
@@ -366,7 +371,8 @@ Point2 Window::Reflect(const Point2& p, std::size_t k) const
 namespace
 {
 /// The shoelace area of corners (anticlockwise), fanned from corner 0, by Neumaier's compensated
-/// summation, corners taken times 2^exponent (exact while nothing overflows or underflows).
+/// summation of the fan's terms (twice each triangle's area), corners taken times 2^exponent
+/// (exact while nothing overflows or underflows).
 double FanArea(const std::vector<Point2>& corners, int exponent)
 {
   const auto at = [&](std::size_t k) {
@@ -377,20 +383,21 @@ double FanArea(const std::vector<Point2>& corners, int exponent)
   for (std::size_t k = 1; k + 1 < corners.size(); ++k)
   {
     const Point2 u = at(k), v = at(k + 1);
-    const double term = 0.5 * difference_of_products(u.x - o.x, v.y - o.y, u.y - o.y, v.x - o.x);
+    const double term = difference_of_products(u.x - o.x, v.y - o.y, u.y - o.y, v.x - o.x);
     const double t = sum + term;
     compensation += std::fabs(sum) >= std::fabs(term) ? (sum - t) + term : (term - t) + sum;
     sum = t;
   }
-  return sum + compensation;
+  return 0.5 * (sum + compensation);
 }
 } // namespace
 
 double Window::Area() const
 {
   // A window whose area is a double can have fan terms that are not (twice a triangle's area, of
-  // corners some 1e154 and more): then the corners are scaled down by a power of two first, and
-  // the area back up, which is exact for the sum and overflows only when the area does.
+  // corners some 1e154 and more; a square of side 1.3e154, or a triangle): then the corners are
+  // scaled down by a power of two first, and the area back up, which is exact for the sum and
+  // overflows only when the area does.
   const double area = FanArea(this->Corners, 0);
   if (std::isfinite(area))
   {
@@ -413,16 +420,21 @@ double Window::Reach() const
   return largest;
 }
 
-int Window::RangeScaleExponent() const
+int RangeScaleExponentOf(double reach)
 {
-  const double largest = this->Reach();
-  if (largest == 0.0 || (largest >= std::ldexp(1.0, -128) && largest <= std::ldexp(1.0, 128)))
+  if (!(reach > 0.0) || !std::isfinite(reach) ||
+    (reach >= std::ldexp(1.0, -128) && reach <= std::ldexp(1.0, 128)))
   {
     return 0;
   }
   int exponent = 0;
-  std::frexp(largest, &exponent); // largest = f * 2^exponent, f in [0.5, 1)
+  std::frexp(reach, &exponent); // reach = f * 2^exponent, f in [0.5, 1)
   return 1 - exponent;
+}
+
+int Window::RangeScaleExponent() const
+{
+  return RangeScaleExponentOf(this->Reach());
 }
 
 Window Window::ScaledByPowerOfTwo(int exponent) const

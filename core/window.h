@@ -48,9 +48,15 @@ public:
   /// default as "window constraint i"), and for an empty or unbounded intersection.
   explicit Window(const std::vector<HalfPlane>& constraints, const ConstraintNames& names = {});
 
-  /// xmin < x < xmax, ymin < y < ymax, its sides named "the rectangle's side y > ymin" etc.
+  /// xmin < x < xmax, ymin < y < ymax, its sides named owner + " side y > ymin" + note etc. for
+  /// messages ("the rectangle's side y > ymin", "the WindowBounds side x < xmax").
   /// Throws InputError unless xmin < xmax and ymin < ymax.
-  static Window Rectangle(double xmin, double xmax, double ymin, double ymax);
+  static Window Rectangle(double xmin,
+    double xmax,
+    double ymin,
+    double ymax,
+    const std::string& owner = "the rectangle's",
+    const std::string& note = std::string());
 
   /// The effective (non-redundant) constraints, ordered so that their edges run anticlockwise
   /// around the window: edge k lies on constraint k and runs from vertex k to vertex k+1. Each is
@@ -110,6 +116,10 @@ private:
   std::vector<Point2> Corners;
   Box2 Interior; ///< CertainlyContains' box (empty, so that it never passes, if not a rectangle)
 };
+
+/// The exponent e of the power of two 2^e that brings reach (a largest coordinate magnitude) into
+/// [1, 2) when it lies outside [2^-128, 2^128]; 0 inside, or for 0 (Window::RangeScaleExponent).
+int RangeScaleExponentOf(double reach);
 
 /// Points scaled by 2^exponent beside a window scaled by Window::RangeScaleExponent's exponent
 /// (whose corners then lie within |x|, |y| < 2). Exact, except where it cannot be: a coordinate

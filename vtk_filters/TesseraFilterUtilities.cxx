@@ -138,26 +138,6 @@ tessera::Window Representable(tessera::Window window, bool needArea)
   return window;
 }
 
-/// The rectangle lower < (x, y) < upper, its sides named for messages as `owner`'s followed by
-/// `note` ("the WindowBounds side y > ymin").
-tessera::Window NamedRectangle(const double lower[2],
-  const double upper[2],
-  const std::string& owner,
-  const std::string& note)
-{
-  const tessera::Window box = tessera::Window::Rectangle(lower[0], upper[0], lower[1], upper[1]);
-  tessera::ConstraintNames names;
-  for (const tessera::HalfPlane& h : box.EffectiveConstraints())
-  {
-    const char* side = h.a < 0 ? "x > xmin"
-      : h.a > 0                ? "x < xmax"
-      : h.b < 0                ? "y > ymin"
-                               : "y < ymax";
-    names.Each.push_back(owner + " side " + side + note);
-  }
-  return tessera::Window(box.EffectiveConstraints(), names);
-}
-
 /// "xmin, xmax, ymin, ymax" of WindowBounds, each as the user gave it.
 std::string BoundsText(const double bounds[4])
 {
@@ -294,8 +274,9 @@ tessera::Window ChooseWindow(const double bounds[4],
   {
     if (haveBounds && userCount == 0)
     {
-      const double lower[2] = { bounds[0], bounds[2] }, upper[2] = { bounds[1], bounds[3] };
-      return Representable(NamedRectangle(lower, upper, "the WindowBounds", ""), needArea);
+      return Representable(
+        tessera::Window::Rectangle(bounds[0], bounds[1], bounds[2], bounds[3], "the WindowBounds"),
+        needArea);
     }
     if (haveBounds)
     {
@@ -356,8 +337,12 @@ tessera::Window ChooseWindow(const double bounds[4],
     }
     ThrowWindowTooLarge(lower[0], upper[0], lower[1], upper[1]); // before Rectangle refuses it
   }
-  return Representable(
-    NamedRectangle(lower, upper, "the automatic window's", " (the points' bounding box, padded)"),
+  return Representable(tessera::Window::Rectangle(lower[0],
+                         upper[0],
+                         lower[1],
+                         upper[1],
+                         "the automatic window's",
+                         " (the points' bounding box, padded)"),
     needArea);
 }
 
@@ -657,6 +642,22 @@ std::vector<PointLeaf> PointLeaves(vtkCompositeDataSet* composite)
   return leaves;
 }
 
+/// "block 1 ... of the points has 2 unnamed point-data array(s), not carried: ..." for a leaf
+/// with unnamed point-data arrays (arrays are joined by name), or "".
+std::string UnnamedArraysProblem(const PointLeaf& leaf)
+{
+  int unnamed = 0;
+  vtkPointData* arrays = leaf.Set->GetPointData();
+  for (int k = 0; k < arrays->GetNumberOfArrays(); ++k)
+  {
+    const char* name = arrays->GetAbstractArray(k)->GetName();
+    unnamed += !name || !*name;
+  }
+  return unnamed == 0 ? std::string()
+                      : leaf.Label + " of the points has " + std::to_string(unnamed) +
+      " unnamed point-data array(s), not carried: the blocks' arrays are joined by name";
+}
+
 /// Why the leaves' arrays `name` cannot be joined (a leaf lacks it, or holds it in another type
 /// or number of components than the first that has it), or "" when they can.
 std::string JoinProblem(const std::vector<PointLeaf>& leaves, const std::string& name)
@@ -857,23 +858,8 @@ vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data, std::vector<std::s
     vtkSmartPointer<vtkPolyData> joined = MergedPoints(composite, {}, &dropped);
     for (const auto& [name, problem] : dropped)
     {
-      warnings.push_back("the array '" + name + "' is not carried: " + problem);
-    }
-    // Blocks' arrays are joined by name, so an unnamed one cannot be (it was left out unsaid).
-    for (const PointLeaf& leaf : PointLeaves(composite))
-    {
-      int unnamed = 0;
-      vtkPointData* arrays = leaf.Set->GetPointData();
-      for (int k = 0; k < arrays->GetNumberOfArrays(); ++k)
-      {
-        const char* name = arrays->GetAbstractArray(k)->GetName();
-        unnamed += !name || !*name;
-      }
-      if (unnamed > 0)
-      {
-        warnings.push_back(leaf.Label + " of the points has " + std::to_string(unnamed) +
-          " unnamed point-data array(s), not carried: the blocks' arrays are joined by name");
-      }
+      warnings.push_back(
+        name.empty() ? problem : "the array '" + name + "' is not carried: " + problem);
     }
     return joined;
   }
@@ -932,6 +918,12 @@ vtkSmartPointer<vtkPolyData> MergedPoints(vtkCompositeDataSet* composite,
         {
           names.push_back(name);
         }
+      }
+      const std::string unnamed = UnnamedArraysProblem(leaf);
+      if (dropped && !unnamed.empty())
+      {
+        std::string& all = (*dropped)[std::string()];
+        all += (all.empty() ? "" : "; ") + unnamed;
       }
     }
   }
@@ -1015,16 +1007,18 @@ Rings ReadPolygonRings(vtkDataObject* data)
   return rings;
 }
 
-std::string RingSources(const Rings& rings, const std::vector<std::size_t>& ids, const char* what)
+tessera::InputError WithRingSources(const tessera::RingError& error,
+  const Rings& rings,
+  const char* what)
 {
   std::string text;
-  for (const std::size_t r : ids)
+  for (const std::size_t r : error.Rings)
   {
     const std::string source = r < rings.Sources.size() ? rings.Sources[r] : "unknown";
     text += (text.empty() ? "" : "; ") + std::string("ring ") + std::to_string(r) + " is " +
       source + " of the " + what;
   }
-  return text;
+  return tessera::InputError(std::string(error.what()) + " (" + text + ")");
 }
 
 std::string SkippedCellsWarning(const Rings& rings, const char* what)

@@ -70,8 +70,9 @@ void CheckAttributeLengths(vtkDataSet* data, const std::string& what);
 /// The arrays named in `arrays` (empty: every array some leaf has) are joined where every leaf
 /// with points has them in one type and number of components. One that cannot be joined is left
 /// out, with why (which leaf lacks it, or holds what) in (*dropped)[name]; without `dropped`, it is
-/// an InputError saying why. Throws tessera::InputError naming a leaf that is not a point set, or
-/// whose arrays are short (CheckAttributeLengths).
+/// an InputError saying why. With `arrays` empty, the leaves' unnamed point-data arrays (which
+/// cannot be joined by name) are named in (*dropped)[""]. Throws tessera::InputError naming a leaf
+/// that is not a point set, or whose arrays are short (CheckAttributeLengths).
 vtkSmartPointer<vtkPolyData> MergedPoints(vtkCompositeDataSet* data,
   const std::vector<std::string>& arrays,
   std::map<std::string, std::string>* dropped);
@@ -152,7 +153,7 @@ struct Rings
   /// polygons): not read, and named ("block 1 (composite index 2) (vtkUnstructuredGrid)").
   std::vector<std::string> SkippedBlocks;
   /// Per ring, where it came from ("cell 2", "block 1 (composite index 2) cell 0", "a ring of
-  /// joined line cells"), for errors about rings (RingSources).
+  /// joined line cells"), for errors about rings (WithRingSources).
   std::vector<std::string> Sources;
   /// Per ring, the flat index of the block it came from in a composite data set (-1 for a
   /// vtkPolyData input): vtkGDALVectorReader gives each feature a block of its own.
@@ -171,9 +172,11 @@ struct Rings
 /// it is a data set other than vtkPolyData: only poly data is read).
 Rings ReadPolygonRings(vtkDataObject* data);
 
-/// Where the rings of a tessera::RingError came from: "ring 2 is cell 4 of the window (input 1)",
-/// one clause per ring; `what` names the input.
-std::string RingSources(const Rings& rings, const std::vector<std::size_t>& ids, const char* what);
+/// error's message followed by where its rings came from: "... (ring 2 is cell 4 of the window
+/// (input 1))", one clause per ring; `what` names the input whose rings were read.
+tessera::InputError WithRingSources(const tessera::RingError& error,
+  const Rings& rings,
+  const char* what);
 
 /// The warning for the cells of a window/catchment input that are not rings (what names the input),
 /// or empty when there are none.

@@ -104,9 +104,7 @@ std::string CollapsedTilesWarning(const tessera::TileMesh& tiles)
   return std::to_string(collapsed.size()) +
     " tile(s) are narrower than the coordinates can resolve (their points lie an ulp or so from "
     "their neighbours), so their polygons have fewer than 3 corners, or collinear ones, and no "
-    "area in "
-    "doubles: "
-    "points " +
+    "area in doubles: points " +
     tessera_vtk::ListNames(
       collapsed.size(), [&](std::size_t k) { return std::to_string(collapsed[k]); });
 }

@@ -1120,8 +1120,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   catch (const tessera::RingError& error)
   {
     // (the core numbers the rings as read: say which cells they are)
-    throw tessera::InputError(std::string(error.what()) + " (" +
-      tessera_vtk::RingSources(rings, error.Rings, "catchment (input 1)") + ")");
+    throw tessera_vtk::WithRingSources(error, rings, "catchment (input 1)");
   }
   const std::size_t gaugeCount = lonlat.size();
   const std::string nested = RingsInsideOtherBlocksWarning(rings, *in.Average);

@@ -19,7 +19,7 @@
 #include "errors.h"
 #include "geo.h"
 #include "polygon_area.h"
-#include "predicates.h"
+#include "window.h"
 
 #include <algorithm>
 #include <cmath>
@@ -66,25 +66,15 @@ std::string ProjectionWarning(vtkDataObject* tiles, vtkDataObject* window)
     other + " none: both are taken to be in the same plane";
 }
 
-/// The tiles' point data is not passed (their cell and field data are): the pieces' vertices are
-/// new points, crossings of tile edges and window rings among them. A warning names its arrays.
 /// The power of two 2^e that brings a window whose largest coordinate (in magnitude) is below
 /// 2^-128 to [1, 2): the clip then works as at unit scale. 0 for any other window (a window too
 /// large is an error where a tile's area overflows).
 int UpScaleExponent(const std::vector<tessera::Point2>& vertices)
 {
-  double reach = 0.0;
-  for (const tessera::Point2& p : vertices)
-  {
-    reach = std::max({ reach, std::fabs(p.x), std::fabs(p.y) });
-  }
-  if (reach == 0.0 || reach >= std::ldexp(1.0, -128) || !std::isfinite(reach))
-  {
-    return 0;
-  }
-  int exponent = 0;
-  std::frexp(reach, &exponent); // reach = f 2^exponent, f in [0.5, 1)
-  return 1 - exponent;
+  const tessera::Box2 box = tessera::BoundsOf(vertices.data(), vertices.size());
+  const double reach = std::max(
+    { std::fabs(box.XMin), std::fabs(box.XMax), std::fabs(box.YMin), std::fabs(box.YMax) });
+  return std::max(tessera::RangeScaleExponentOf(reach), 0);
 }
 
 /// The clip's window from the rings read (vertices: theirs, scaled); an error about rings names
@@ -98,47 +88,12 @@ tessera::Catchment WindowOf(const tessera_vtk::Rings& rings,
   }
   catch (const tessera::RingError& error)
   {
-    throw tessera::InputError(std::string(error.what()) + " (" +
-      tessera_vtk::RingSources(rings, error.Rings, "window (input 1)") + ")");
+    throw tessera_vtk::WithRingSources(error, rings, "window (input 1)");
   }
 }
 
-/// Whether a tile that gave no piece lies (partly) in the window, so that EmptyTileIds lists it:
-/// its vertex mean inside; or, for a tile whose corners are all on one line (exactly), any
-/// corner or edge midpoint inside, since its mean can lie outside while half of it is in.
-/// (Contains may answer either way on the window's boundary.)
-bool TileInWindow(const std::vector<tessera::Point2>& tile, const tessera::Catchment& window)
-{
-  tessera::Point2 centre{ 0.0, 0.0 };
-  for (const tessera::Point2& p : tile)
-  {
-    centre.x += p.x / static_cast<double>(tile.size());
-    centre.y += p.y / static_cast<double>(tile.size());
-  }
-  if (window.Contains(centre))
-  {
-    return true;
-  }
-  const std::size_t n = tile.size();
-  for (std::size_t k = 2; k < n; ++k)
-  {
-    if (tessera::orient2d(tile[0], tile[1], tile[k]) != 0)
-    {
-      return false; // a tile with area: the mean decides
-    }
-  }
-  for (std::size_t k = 0; k < n; ++k)
-  {
-    const tessera::Point2& a = tile[k];
-    const tessera::Point2& b = tile[(k + 1) % n];
-    if (window.Contains(a) || window.Contains({ 0.5 * (a.x + b.x), 0.5 * (a.y + b.y) }))
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
+/// The tiles' point data is not passed (their cell and field data are): the pieces' vertices are
+/// new points, crossings of tile edges and window rings among them. A warning names its arrays.
 std::string PointDataWarning(vtkPolyData* tiles)
 {
   vtkPointData* pointData = tiles->GetPointData();
@@ -308,7 +263,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
       {
         // Outside the window, or without area to clip: collinear corners, or a sliver thinner
         // than the clip's rounding. The latter lie in the window, and are reported.
-        if (TileInWindow(tile, catchment))
+        if (catchment.HoldsPartOf(tile.data(), tile.size()))
         {
           empty->InsertNextValue(c);
         }
