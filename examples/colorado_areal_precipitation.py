@@ -716,10 +716,11 @@ def main(argv=None):
     parser.add_argument("--month", default="1963-08", help="month for the weights, tiles and map, YYYY-MM")
     parser.add_argument("--stations", default=os.path.join(DATA, "colorado_stations.csv"),
                         help="CSV of gauges: columns station_id, lon, lat (degrees, WGS84), "
-                             "optional name")
+                             f"optional name; {csv_input.SEPARATORS_TEXT}")
     parser.add_argument("--observations", default=os.path.join(DATA, "colorado_monthly_precip.csv"),
                         help="CSV of monthly values, one row per gauge and month: columns "
-                             f"station_id, year, month, precip ({csv_input.MISSING_TEXT} = missing)")
+                             f"station_id, year, month, precip ({csv_input.MISSING_TEXT} = missing); "
+                             f"{csv_input.SEPARATORS_TEXT}")
     parser.add_argument("--catchment", default=os.path.join(DATA, "colorado_boundary.geojson"),
                         help="catchment polygon (GeoJSON or shapefile, lon/lat); every polygon "
                              "feature of the file is taken, unless --feature chooses")

@@ -1,6 +1,8 @@
 """Reading the examples' CSV files the way a user's own files need: the named columns are checked
 before any row is read, a value that is not a number is named with its file, line and column, and
 missing values (an empty field, NA, N/A, #N/A, NaN, null, in any case) are told apart from bad ones.
+Fields may be separated by commas, or by semicolons or tabs as a spreadsheet set to a European
+locale saves them; in such a file a number may be written with a decimal comma (12,5).
 Every failure ends the script with one line naming what is wrong and where, never a traceback;
 catch_vtk_messages() and vtk_message_text() give a script the VTK filters' messages as text, so
 that it reports a value the filters reject in such a line too, not as VTK's log; output_directory()
@@ -66,18 +68,15 @@ def rows(path, required, what, optional=()):
     if text.lstrip().startswith(("{", "[")):
         fail(f"{path}: the {what} file is not a CSV file (it starts like JSON or GeoJSON; "
              f"expected a header line such as {','.join(required)})")
-    reader = csv.DictReader(io.StringIO(text, newline=""), strict=True)
+    delimiter = header_delimiter(text)
+    reader = csv.DictReader(io.StringIO(text, newline=""), delimiter=delimiter, strict=True)
     try:
         columns = named_columns([name.strip() for name in reader.fieldnames or []],
                                 (*required, *optional), f"{path}:{max(reader.reader.line_num, 1)}")
         absent = [name for name in required if name not in columns]
         if absent:
-            # A spreadsheet set to another locale saves with semicolons; some tools use tabs.
-            other = next((f" (it seems separated by {name}: save it with commas)"
-                          for mark, name in ((";", "semicolons"), ("\t", "tabs"))
-                          if len(columns) == 1 and mark in columns[0]), "")
             fail(f"{path}: the {what} file has no column {', '.join(repr(n) for n in absent)} "
-                 f"(it needs {', '.join(required)}; its header: {', '.join(columns) or 'none'}){other}")
+                 f"(it needs {', '.join(required)}; its header: {', '.join(columns) or 'none'})")
         reader.fieldnames = columns
         for row in reader:
             # A record whose fields are all empty (",,," as a spreadsheet exports a blank row, or
@@ -90,11 +89,41 @@ def rows(path, required, what, optional=()):
                 fields = len(columns) + len(row.get(None) or []) - list(row.values()).count(None)
                 fail(f"{path}:{reader.line_num}: {fields} field(s) where the header has "
                      f"{len(columns)} ({', '.join(columns)})")
-            yield reader.line_num, row
+            yield reader.line_num, Row(row, decimal_comma=delimiter != ",")
     except csv.Error as error:  # e.g. a quote opened and never closed
         # The underlying reader's count: the lines read up to the error (the DictReader's own
         # line_num is that of the last record it returned, 0 while the header is read).
         fail(f"{path}:{max(reader.reader.line_num, 1)}: not well-formed CSV ({error})")
+
+
+DELIMITERS = (",", ";", "\t")  # the first wins a tie
+SEPARATORS_TEXT = "fields separated by commas, or by semicolons or tabs with decimal commas allowed"
+
+
+class Row(dict):
+    """A record of rows(): its header's names to its fields. decimal_comma: whether its numbers
+    may be written with a decimal comma (the file's fields are not separated by commas)."""
+
+    def __init__(self, fields, decimal_comma=False):
+        super().__init__(fields)
+        self.decimal_comma = decimal_comma
+
+
+def header_delimiter(text):
+    """The mark that separates the fields: of a comma, a semicolon (what a spreadsheet set to a
+    locale with a decimal comma saves as CSV) and a tab, the one the header line holds most of; a
+    comma where it holds none (a file of one column)."""
+    header = next((line for line in text.splitlines() if line.strip()), "")
+    return max(DELIMITERS, key=header.count)
+
+
+def decimal_point_text(text, row):
+    """The field's text with a decimal comma made a point, in a row that may have one
+    (Row.decimal_comma; 12,5 is 12.5 there); None for a text that has both marks (1.234,5: digit
+    grouping, which is no number here)."""
+    if getattr(row, "decimal_comma", False) and "," in text:
+        return None if "." in text else text.replace(",", ".")
+    return text
 
 
 def named_columns(columns, names, where):
@@ -119,13 +148,18 @@ def is_missing(text):
 
 
 def number(row, column, path, line):
-    """The field as a finite float; ends the script, naming file, line, column and text, if it is
-    not one (a missing value included: test is_missing first where one is allowed)."""
+    """The field as a finite float (with a decimal comma in a file of semicolons or tabs); ends
+    the script, naming file, line, column and text, if it is not one (a missing value included:
+    test is_missing first where one is allowed)."""
     text = row.get(column)
+    plain = decimal_point_text((text or "").strip(), row)
+    if plain is None:
+        fail(f"{path}:{line}: column {column!r}: {text!r} has both a decimal comma and a point "
+             "(write it without digit grouping: 1234,5)")
     try:
-        if "_" in (text or ""):  # float() takes Python's digit groups: 1_5 would be 15
+        if "_" in plain:  # float() takes Python's digit groups: 1_5 would be 15
             raise ValueError
-        value = float((text or "").strip())
+        value = float(plain)
     except ValueError:
         fail(f"{path}:{line}: column {column!r}: {text!r} is not a number")
     if not math.isfinite(value):  # float() takes inf, 1e999 and nan
@@ -135,10 +169,10 @@ def number(row, column, path, line):
 
 def integer(row, column, path, line, low, high):
     """The field as an int in [low, high] (decimal digits, optionally followed by a point and
-    zeros, as a spreadsheet or pandas writes a whole-number column: 1963.0); ends the script
-    naming it otherwise."""
+    zeros, as a spreadsheet or pandas writes a whole-number column: 1963.0, or 1963,0 where a
+    decimal comma may be used); ends the script naming it otherwise."""
     text = (row.get(column) or "").strip()
-    whole = re.fullmatch(r"([+-]?[0-9]+)(?:\.0*)?", text)
+    whole = re.fullmatch(r"([+-]?[0-9]+)(?:\.0*)?", decimal_point_text(text, row) or "")
     if not whole:
         fail(f"{path}:{line}: column {column!r}: {text!r} is not an integer")
     value = int(whole.group(1))

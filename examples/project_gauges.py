@@ -79,7 +79,8 @@ def projection_error(text, path, gauges, lines):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--stations", default=os.path.join(HERE, "data", "colorado_stations.csv"),
-                        help="CSV of gauges: columns station_id, lon, lat (degrees), optional name, elev_m")
+                        help="CSV of gauges: columns station_id, lon, lat (degrees), optional name, elev_m; "
+                             f"{csv_input.SEPARATORS_TEXT}")
     parser.add_argument("--projection", choices=sorted(PROJECTIONS), default="automatic",
                         help="map projection (default: automatic Albers equal-area)")
     parser.add_argument("--out", default="out", help="output directory (created if missing)")

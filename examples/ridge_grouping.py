@@ -60,7 +60,7 @@ def polylines(data):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--quakes", default=os.path.join(HERE, "data", "fiji_quakes.csv"),
-                        help="CSV of epicentres: columns lat, long (degrees), depth, mag")
+                        help=f"CSV of epicentres: columns lat, long (degrees), depth, mag; {csv_input.SEPARATORS_TEXT}")
     parser.add_argument("--out", default="out", help="output directory (created if missing)")
     parser.add_argument("--width", type=float, default=4.0, help="basis width in pixels")
     parser.add_argument("--image-size", type=int, default=0, help="pixels along the longer side (0 = automatic)")

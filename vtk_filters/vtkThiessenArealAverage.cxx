@@ -369,6 +369,28 @@ ObservationRows ReadRows(vtkTable* table,
   return rows;
 }
 
+/// Whether text (spaces around it aside) is digits, one comma and digits, as a number with a
+/// decimal comma reads: what a CSV file saved in a European locale holds (12,5).
+bool LooksLikeDecimalComma(const std::string& text)
+{
+  const std::size_t first = text.find_first_not_of(' ');
+  const std::size_t last = text.find_last_not_of(' ');
+  if (first == std::string::npos)
+  {
+    return false;
+  }
+  const std::size_t digitsFrom = (text[first] == '-' || text[first] == '+') ? first + 1 : first;
+  const std::size_t comma = text.find(',', digitsFrom);
+  const auto allDigits = [&text](std::size_t from, std::size_t to)
+  {
+    return from < to &&
+      std::all_of(
+        text.begin() + from, text.begin() + to, [](char c) { return c >= '0' && c <= '9'; });
+  };
+  return comma != std::string::npos && comma < last && allDigits(digitsFrom, comma) &&
+    allDigits(comma + 1, last + 1);
+}
+
 /// A row's value: a number, or NaN (missing) for NaN or, in a text column, a missing-value marker
 /// (IsMissingMarker: a CSV reader gives a text column where such markers stand among the numbers).
 /// Other text is an error naming the row.
@@ -384,7 +406,10 @@ double ObservationValue(const NumberColumn& values, vtkIdType row, const std::st
   {
     ThrowRowError(row,
       "'" + text + "' in column '" + column +
-        "' is not a number (a missing value is an empty field, NA, N/A, NaN or null)");
+        "' is not a number (a missing value is an empty field, NA, N/A, NaN or null)" +
+        (LooksLikeDecimalComma(text)
+            ? std::string(": a decimal comma is not read here; write the file with decimal points")
+            : std::string()));
   }
   return std::numeric_limits<double>::quiet_NaN();
 }

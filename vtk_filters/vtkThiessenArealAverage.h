@@ -37,7 +37,8 @@
  *   is, with one caution: those readers turn an empty field of an otherwise numeric column into 0
  *   (a reported zero), so write missing values as NaN or NA, or turn the reader's
  *   DetectNumericColumns off (the columns stay text, which this filter reads itself: an empty value
- *   is then missing).
+ *   is then missing). A text value with a decimal comma (12,5) is an error that says so: only
+ *   decimal points are read.
  *   A row is used only when its station is one of the gauges' and it has a time (or year and
  *   month): a row with an empty or blank station id (or a NaN one), an empty time or month field
  *   (blank text, or NaN), or a station id that no gauge has is not used and makes no time step

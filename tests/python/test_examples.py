@@ -236,7 +236,6 @@ def test_bad_files_are_named():
         pretty_json = write(out, "pretty.json", '{\n  "station_id": "050848"\n}\n')
         twice = write(out, "twice.csv", "station_id,year,month,precip,Precip\n050848,1950,1,1,100\n")
         grouped = write(out, "grouped.csv", "station_id,year,month,precip\n050848,1950,1,1_5\n")
-        semicolons = write(out, "semicolons.csv", "station_id;lon;lat\n050848;-105;39\n")
         directory = os.path.join(out, "catchment.d")
         os.mkdir(directory)
         utf16 = os.path.join(out, "utf16.csv")
@@ -287,7 +286,6 @@ def test_bad_files_are_named():
             # Python's float() reads 1_5 as 15: not a number in a data file.
             (("--observations", grouped), [grouped + ":2", "'precip'", "'1_5' is not a number"]),
             (("--month", "1_963-08"), ["--month", "YYYY-MM"]),
-            (("--stations", semicolons), [semicolons, "no column 'station_id'", "separated by semicolons"]),
         ]
         for arguments, fragments in cases:
             _, stderr = run_colorado(out, *arguments, what=str(arguments), status=1, plots=False)
@@ -545,6 +543,86 @@ def test_ids_without_their_leading_zeros_match_as_in_the_filter():
                                                "gauge's station; they are months where no gauge reported"],
                     f"the months without a gauge's row: {zeros[2]} against {nozeros[2]}")
         assert_that("repeat a station and time" not in nozeros[3], f"rows flagged as repeated: {nozeros[3]}")
+
+
+def test_files_of_semicolons_or_tabs_with_decimal_commas():
+    # A spreadsheet set to a European locale saves CSV with semicolons and decimal commas (some
+    # tools use tabs): the same gauges and values so written give the comma file's outputs byte
+    # for byte, names with a comma inside included; in such a file a value with both a decimal
+    # comma and a point (digit grouping) is named, and whole years may be written 2001,0.
+    rows = [("N1", "2001", 1, "10.25"), ("N2", "2001.0", 1, "20.5"), ("N3", "2001", 1, "30"),
+            ("N4", "2001", 1, "0.125"), ("N5", "2001", 1, "-1.5e-3"), ("N1", "2001", 2, "5.75"),
+            ("N3", "2001", 2, "NA"), ("N6", "2001", 2, "7.5")]
+    names = {"N1": "Lake, north shore", "N2": "Hill", "N3": "Island", "N4": "Ridge", "N5": "Bay", "N6": "Far"}
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, _, _ = write_lake_basin(directory)
+        outputs = {}
+        for kind, mark, decimal in (("commas", ",", "."), ("semicolons", ";", ","), ("tabs", "\t", ",")):
+            def line(fields):
+                return mark.join(f'"{f}"' if mark in f else f for f in fields) + "\n"
+
+            def number(text):
+                return text.replace(".", decimal)
+
+            stations = write(directory, f"{kind}_stations.csv", line(("station_id", "name", "lon", "lat")) + "".join(
+                line((s, names[s], number(str(lon)), number(str(lat)))) for s, (lon, lat) in LAKE_GAUGES.items()))
+            observations = write(directory, f"{kind}_obs.csv", line(("station_id", "year", "month", "precip")) + "".join(
+                line((s, number(y), str(m), number(v))) for s, y, m, v in rows))
+            out = os.path.join(directory, kind)
+            stdout, stderr = run_colorado(out, stations=stations, observations=observations, catchment=catchment,
+                                          month="2001-01", what=kind)
+            files = {}
+            for file in ("areal_mean.csv", "weights_all_months.csv", "weights_2001_01.csv", "map_2001_01.png",
+                         "areal_mean.png"):
+                with open(os.path.join(out, file), "rb") as f:
+                    files[file] = f.read()
+            messages = re.sub(r"in [0-9.]+ s\b", "in T s", stderr.replace(directory, "DIR").replace(kind, "KIND"))
+            outputs[kind] = (files, stdout.replace(out, "OUT"), messages)
+        means = read_csv(os.path.join(directory, "commas", "areal_mean.csv"))
+        assert_that([r["stations_used"] for r in means] == ["5", "2"], f"the comma file's months: {means}")
+        weights = read_csv(os.path.join(directory, "commas", "weights_2001_01.csv"))
+        assert_that(sorted(float(w["precip"]) for w in weights if float(w["weight"]) > 0)
+                    == sorted(float(v) for s, y, m, v in rows if m == 1 and s in ("N1", "N2", "N3", "N4", "N5")),
+                    f"the weighted gauges' values: {weights}")
+        for kind in ("semicolons", "tabs"):
+            for file in outputs["commas"][0]:
+                assert_that(outputs[kind][0][file] == outputs["commas"][0][file], f"{kind}: {file} differs")
+            assert_that(outputs[kind][1:] == outputs["commas"][1:],
+                        f"{kind}: the messages differ: {outputs[kind][1:]} against {outputs['commas'][1:]}")
+        grouped = write(directory, "grouped.csv", "station_id;year;month;precip\nN1;2001;1;1.234,5\n")
+        _, stderr = run_colorado(os.path.join(directory, "grouped"), stations=stations, observations=grouped,
+                                 catchment=catchment, what="digit grouping", status=1, plots=False)
+        assert_that(f"{grouped}:2: column 'precip': '1.234,5' has both a decimal comma and a point" in stderr,
+                    f"digit grouping: {stderr}")
+        # In a file of commas a decimal comma splits the field: the count of fields is named.
+        split = write(directory, "split.csv", "station_id,year,month,precip\nN1,2001,1,12,5\n")
+        _, stderr = run_colorado(os.path.join(directory, "split"), stations=stations, observations=split,
+                                 catchment=catchment, what="a decimal comma in a file of commas", status=1,
+                                 plots=False)
+        assert_that(f"{split}:2: 5 field(s) where the header has 4" in stderr, f"a comma file's 12,5: {stderr}")
+
+
+def test_the_field_separator_is_the_headers_commonest_mark():
+    csv_input = import_example("csv_input")
+    cases = [("a,b;c", ","), ("a;b;c,d", ";"), ("a\tb\tc", "\t"), ("a;b\tc", ";"), ("single", ","),
+             ("\n\n  \nx;y\n1,5;2\n", ";"), ("", ",")]
+    for header, expected in cases:
+        got = csv_input.header_delimiter(header)
+        assert_that(got == expected, f"{header!r}: {got!r}, expected {expected!r}")
+    comma_row, semicolon_row = csv_input.Row({"v": "1,5"}), csv_input.Row({"v": "1,5"}, decimal_comma=True)
+    assert_that(csv_input.decimal_point_text("1,5", semicolon_row) == "1.5", "1,5 in a file of semicolons")
+    assert_that(csv_input.decimal_point_text("1,5", comma_row) == "1,5", "1,5 in a file of commas is left")
+    assert_that(csv_input.decimal_point_text("1.234,5", semicolon_row) is None, "digit grouping is no number")
+    assert_that(csv_input.number(semicolon_row, "v", "f.csv", 2) == 1.5, "number() of 1,5")
+    assert_that(csv_input.integer(csv_input.Row({"y": "1963,0"}, True), "y", "f.csv", 2, 1, 9999) == 1963,
+                "integer() of 1963,0")
+    for row, what in ((comma_row, "a comma file's 1,5"), (csv_input.Row({"v": "1.2,5"}, True), "1.2,5")):
+        try:
+            csv_input.number(row, "v", "f.csv", 2)
+        except SystemExit as error:
+            assert_that("f.csv:2: column 'v'" in str(error), f"{what}: {error}")
+        else:
+            raise AssertionError(f"{what} was read as a number")
 
 
 def stderr_messages(stderr):
@@ -965,6 +1043,8 @@ if __name__ == "__main__":
          test_a_month_without_reports_still_gets_its_map,
          test_the_time_series_breaks_at_months_without_a_mean,
          test_ids_without_their_leading_zeros_match_as_in_the_filter,
+         test_files_of_semicolons_or_tabs_with_decimal_commas,
+         test_the_field_separator_is_the_headers_commonest_mark,
          test_small_values_and_a_catchment_across_the_antimeridian,
          test_observations_of_no_gauge_end_the_run,
          test_a_catchment_declared_projected_is_named,

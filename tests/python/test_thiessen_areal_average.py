@@ -818,8 +818,16 @@ def test_text_values_with_missing_markers():
     f.SetObservationsData(text_table(rows + [("b", "2000-05", "1,5")]))
     f.Update(1)
     assert_that(messages and "observation row 8" in messages[-1] and "'1,5'" in messages[-1]
-                and "column 'value'" in messages[-1] and "not a number" in messages[-1],
+                and "column 'value'" in messages[-1] and "not a number" in messages[-1]
+                and "a decimal comma is not read here" in messages[-1],
                 f"a value that is not a number: {messages}")
+    # The decimal-comma hint only for digits, one comma, digits.
+    for text, hinted in (("-12,25 ", True), ("1,5,5", False), (",5", False), ("1,", False), ("1.2,5", False),
+                         ("a,5", False)):
+        f.SetObservationsData(text_table(rows + [("b", "2000-05", text)]))
+        f.Update(1)
+        assert_that(f"'{text}'" in messages[-1] and ("decimal comma" in messages[-1]) == hinted,
+                    f"{text!r}: {messages[-1]}")
 
 
 def output_sizes(f):
