@@ -1,9 +1,13 @@
 // JoinSegmentsIntoRings: each point's segments found by sorting the segment ends by point id,
-// then each component walked from one of its segments (see segment_rings.h).
+// paired at each point, then each cycle of pairs walked from one of its segments (see
+// segment_rings.h).
 #include "segment_rings.h"
+
+#include "predicates.h"
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 namespace tessera
 {
@@ -19,10 +23,108 @@ struct End
     return this->Point != o.Point ? this->Point < o.Point : this->Segment < o.Segment;
   }
 };
-} // namespace
 
-SegmentRings JoinSegmentsIntoRings(
-  const std::vector<std::pair<std::int64_t, std::int64_t>>& segments)
+/// Whether direction a (from centre) comes before direction b going anticlockwise from the
+/// positive x axis, exactly: first the upper half (the positive axis included), then orient2d.
+bool ComesBeforeAnticlockwise(const Point2& centre, const Point2& a, const Point2& b)
+{
+  const auto lower = [&centre](const Point2& q)
+  { return q.y < centre.y || (q.y == centre.y && q.x < centre.x); };
+  if (lower(a) != lower(b))
+  {
+    return !lower(a);
+  }
+  return orient2d(centre, a, b) > 0;
+}
+
+/// Pairs the ends ends[first, last) of one point (of the segments' point ids: places[point]) where
+/// four, six, ... segments meet: by angle around the point, each end with the next, so that the
+/// rings through it touch there and never cross. False, pairing none, where that point or one
+/// at the far end of its segments has a NaN coordinate, or where two segments leave in one
+/// direction (overlapping: no pairing would make rings that validation accepts).
+bool PairByAngle(const std::vector<std::pair<std::int64_t, std::int64_t>>& segments,
+  const std::vector<Point2>& places,
+  std::vector<End>& ends,
+  std::size_t first,
+  std::size_t last,
+  std::vector<std::int64_t>& across)
+{
+  const std::int64_t point = ends[first].Point;
+  const Point2 centre = places[std::size_t(point)];
+  const auto far = [&](const End& end)
+  {
+    const auto& [a, b] = segments[end.Segment];
+    return places[std::size_t(a == point ? b : a)];
+  };
+  for (std::size_t k = first; k < last; ++k)
+  {
+    const Point2 q = far(ends[k]);
+    if (std::isnan(centre.x) || std::isnan(centre.y) || std::isnan(q.x) || std::isnan(q.y))
+    {
+      return false;
+    }
+  }
+  const auto begin = ends.begin() + std::ptrdiff_t(first);
+  const auto end = ends.begin() + std::ptrdiff_t(last);
+  std::sort(begin,
+    end,
+    [&](const End& a, const End& b) { return ComesBeforeAnticlockwise(centre, far(a), far(b)); });
+  for (std::size_t k = first; k + 1 < last; ++k)
+  {
+    if (!ComesBeforeAnticlockwise(centre, far(ends[k]), far(ends[k + 1])))
+    {
+      return false; // one direction twice
+    }
+  }
+  for (std::size_t k = first; k < last; k += 2)
+  {
+    const std::size_t s = ends[k].Segment, t = ends[k + 1].Segment;
+    across[2 * s + (segments[s].first == point ? 0 : 1)] = std::int64_t(t);
+    across[2 * t + (segments[t].first == point ? 0 : 1)] = std::int64_t(s);
+  }
+  return true;
+}
+
+/// Appends the closed walk `walk` (point ids, the first not repeated) to result as rings in which
+/// no point stands twice: where the walk comes back to a point it stood on, the loop since then
+/// is a ring of its own (the segments, and so the even-odd region, are the same).
+///
+///     a-------b-------e      the walk a b c d b e f g (back to a) stands on b twice:
+///     |      / \      |      b c d is cut off as a ring of its own and a b e f g stays,
+///     |     d---c     |      the two touching at b (a hole touching its outline)
+///     g---------------f
+void AppendSimpleRings(const std::vector<std::int64_t>& walk,
+  std::vector<std::int64_t>& stack,
+  std::unordered_map<std::int64_t, std::size_t>& placeInStack,
+  SegmentRings& result)
+{
+  stack.clear();
+  placeInStack.clear();
+  for (const std::int64_t point : walk)
+  {
+    const auto [it, isNew] = placeInStack.emplace(point, stack.size());
+    if (isNew)
+    {
+      stack.push_back(point);
+      continue;
+    }
+    const std::size_t from = it->second; // the loop stack[from] .. (back to point)
+    result.Ids.insert(result.Ids.end(), stack.begin() + std::ptrdiff_t(from), stack.end());
+    result.Offsets.push_back(result.Ids.size());
+    for (std::size_t k = from + 1; k < stack.size(); ++k)
+    {
+      placeInStack.erase(stack[k]);
+    }
+    stack.resize(from + 1);
+  }
+  result.Ids.insert(result.Ids.end(), stack.begin(), stack.end());
+  result.Offsets.push_back(result.Ids.size());
+}
+
+/// JoinSegmentsIntoRings, and with places (coordinates by point id) JoinSegmentsAtEqualEnds'
+/// pairing of the segments by angle where more than two meet.
+SegmentRings JoinSegments(const std::vector<std::pair<std::int64_t, std::int64_t>>& segments,
+  const std::vector<Point2>* places)
 {
   SegmentRings result;
   const std::size_t count = segments.size();
@@ -39,8 +141,9 @@ SegmentRings JoinSegmentsIntoRings(
   }
   std::sort(ends.begin(), ends.end());
   // Per segment and end (0: first, 1: second), the other segment at that point, or -1 when the
-  // point does not have exactly two segments.
+  // point has not exactly two segments (nor, with places, an even number paired by angle).
   std::vector<std::int64_t> across(2 * count, -1);
+  bool junctions = false; // whether a walk may come back to a point
   for (std::size_t k = 0; k < ends.size();)
   {
     std::size_t last = k;
@@ -57,14 +160,20 @@ SegmentRings JoinSegmentsIntoRings(
         across[2 * t + (segments[t].first == ends[k].Point ? 0 : 1)] = std::int64_t(s);
       }
     }
+    else if (places && last - k >= 4 && (last - k) % 2 == 0)
+    {
+      junctions = PairByAngle(segments, *places, ends, k, last, across) || junctions;
+    }
     k = last;
   }
-  // Walk each component once: from segment `start` along its direction, entering each next
+  // Walk each cycle of pairs once: from segment `start` along its direction, entering each next
   // segment at the shared point. A walk that meets a point without a partner fails; so does every
-  // other segment of its component, which its own walk then meets as already seen.
+  // other segment of its chain, which its own walk then meets as already seen.
   std::vector<char> seen(count, 0);
   std::vector<char> joined(count, 0);
   std::vector<std::size_t> walk;
+  std::vector<std::int64_t> points, stack;
+  std::unordered_map<std::int64_t, std::size_t> placeInStack;
   for (std::size_t start = 0; start < count; ++start)
   {
     if (seen[start] || segments[start].first == segments[start].second)
@@ -103,13 +212,22 @@ SegmentRings JoinSegmentsIntoRings(
       continue;
     }
     std::int64_t point = segments[start].first;
+    points.clear();
     for (const std::size_t w : walk)
     {
       joined[w] = 1;
-      result.Ids.push_back(point);
+      points.push_back(point);
       point = segments[w].first == point ? segments[w].second : segments[w].first;
     }
-    result.Offsets.push_back(result.Ids.size());
+    if (junctions)
+    {
+      AppendSimpleRings(points, stack, placeInStack, result);
+    }
+    else
+    {
+      result.Ids.insert(result.Ids.end(), points.begin(), points.end());
+      result.Offsets.push_back(result.Ids.size());
+    }
   }
   for (std::size_t s = 0; s < count; ++s)
   {
@@ -119,6 +237,14 @@ SegmentRings JoinSegmentsIntoRings(
     }
   }
   return result;
+}
+
+} // namespace
+
+SegmentRings JoinSegmentsIntoRings(
+  const std::vector<std::pair<std::int64_t, std::int64_t>>& segments)
+{
+  return JoinSegments(segments, nullptr);
 }
 
 PointRings JoinSegmentsAtEqualEnds(const std::vector<Point2>& ends)
@@ -157,7 +283,7 @@ PointRings JoinSegmentsAtEqualEnds(const std::vector<Point2>& ends)
   {
     segments[s] = { place[2 * s], place[2 * s + 1] };
   }
-  const SegmentRings joined = JoinSegmentsIntoRings(segments);
+  const SegmentRings joined = JoinSegments(segments, &places);
   PointRings rings;
   rings.Offsets = joined.Offsets;
   rings.Vertices.reserve(joined.Ids.size());

@@ -6,7 +6,17 @@
 //
 //     a---b        segments (a,b) (c,b) (c,d) (d,a), in any order and either direction,
 //     |   |        give the ring a, b, c, d (the first segment's direction);
-//     d---c        a chain that ends, or a point where three or more segments meet, gives none.
+//     d---c        a chain that ends, or a point where three segments meet, gives none.
+//
+// Where four (six, ...) segments meet, as where a contour passes through a saddle point, segments
+// given by their ends are paired by angle, each with the next round the point, so that the rings
+// touch there and never cross; a ring that then comes back to a point is cut there into two:
+//
+//     +---+            the eight segments of two squares meeting at their corner p
+//     |   |            give the two squares, touching at p (by the even-odd rule the region
+//     +---p---+        is the same however the segments are paired: that rule counts
+//         |   |        crossings of segments, not rings)
+//         +---+
 
 #include "geometry.h"
 
@@ -24,14 +34,15 @@ struct SegmentRings
   std::vector<std::size_t> Offsets{ 0 };
   std::vector<std::int64_t> Ids;
   /// Indices (into the segments given) of the segments in no ring, ascending: those of a chain
-  /// that does not close, of a component where a point has other than two segments, and those
+  /// that does not close, and so of every chain through a point of other than two segments
+  /// (JoinSegmentsIntoRings) or of an odd number of them (JoinSegmentsAtEqualEnds), and those
   /// whose two ends are one point.
   std::vector<std::size_t> Unjoined;
 };
 
 /// Joins segments (pairs of point ids) into closed rings. Every point of a ring has exactly two
-/// segments, so a ring is unambiguous; a component with any other point is left unjoined whole.
-/// O(s log s) for s segments.
+/// segments, so a ring is unambiguous; a component with any other point is left unjoined whole
+/// (ids carry no coordinates to pair more by angle). O(s log s) for s segments.
 SegmentRings JoinSegmentsIntoRings(
   const std::vector<std::pair<std::int64_t, std::int64_t>>& segments);
 
@@ -47,8 +58,11 @@ struct PointRings
 
 /// Joins segments given by their ends (segment s from ends[2s] to ends[2s + 1]) into closed rings,
 /// ends meeting where their coordinates are equal: a contour keeps one point id per point, but
-/// line features read from a file may repeat a point under two ids. As JoinSegmentsIntoRings
-/// otherwise.
+/// line features read from a file may repeat a point under two ids. As JoinSegmentsIntoRings,
+/// but where an even number of segments, four or more, meet at a point they are paired by angle
+/// (exactly: orient2d), and no ring stands on a point twice (see the sketch above). A chain stays
+/// unjoined where it passes through a point of an odd number of segments, or through a junction
+/// where two segments leave in one direction or one has a NaN end.
 PointRings JoinSegmentsAtEqualEnds(const std::vector<Point2>& ends);
 
 } // namespace tessera

@@ -5,8 +5,9 @@
  * vtkWindowClip intersects every polygon of input 0 (convex tiles, such as the output of
  * vtkDirichletTessellation; a clockwise one is reversed first) with the region of input 1: the
  * polygons (and closed polylines, as vtkGDALVectorReader gives rings, and lines that join end to
- * end into closed rings, as a contour from vtkCutter or ParaView's Contour is given) of input 1
- * taken as rings under the even-odd rule, so a ring inside another is a hole and a ring inside a
+ * end into closed rings, as a contour from vtkCutter or ParaView's Contour is given; where four or
+ * six lines meet, as at a saddle, the rings touch there) of input 1 taken as rings under the
+ * even-odd rule, so a ring inside another is a hole and a ring inside a
  * hole an island (other cells of input 1, such as lines in no closed ring, are ignored with a
  * warning). Ring orientation
  * and order do not matter. A catchment boundary that touches or crosses itself, or two rings that

@@ -3,6 +3,8 @@
 // a branching point stay unjoined whole.
 #include "segment_rings.h"
 
+#include "polygon_validation.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -179,4 +181,262 @@ TEST(SegmentRings, EndsMeetWhereTheirCoordinatesAreEqual)
   const PointRings partly = JoinSegmentsAtEqualEnds(withNan);
   EXPECT_EQ(partly.Offsets, (std::vector<std::size_t>{ 0, 4 }));
   EXPECT_EQ(partly.Unjoined, (std::vector<std::size_t>{ 4, 5, 6 }));
+}
+
+namespace
+{
+
+// The rings of a PointRings as vectors of points.
+std::vector<std::vector<Point2>> RingsOf(const PointRings& rings)
+{
+  std::vector<std::vector<Point2>> result;
+  for (std::size_t r = 0; r + 1 < rings.Offsets.size(); ++r)
+  {
+    result.emplace_back(rings.Vertices.begin() + std::ptrdiff_t(rings.Offsets[r]),
+      rings.Vertices.begin() + std::ptrdiff_t(rings.Offsets[r + 1]));
+  }
+  return result;
+}
+
+// The segments of the rings, each as its two ends, shuffled and some reversed.
+std::vector<Point2> EndsOfRings(const std::vector<std::vector<Point2>>& rings, std::mt19937& rng)
+{
+  std::vector<std::pair<Point2, Point2>> segments;
+  for (const auto& ring : rings)
+  {
+    for (std::size_t k = 0; k < ring.size(); ++k)
+    {
+      segments.push_back({ ring[k], ring[(k + 1) % ring.size()] });
+    }
+  }
+  std::shuffle(segments.begin(), segments.end(), rng);
+  std::vector<Point2> ends;
+  for (auto [a, b] : segments)
+  {
+    if (rng() % 2)
+    {
+      std::swap(a, b);
+    }
+    ends.push_back(a);
+    ends.push_back(b);
+  }
+  return ends;
+}
+
+// Each ring as the set of its points, the rings as a multiset of those (start and way aside).
+std::multiset<std::set<std::pair<double, double>>> PointSets(
+  const std::vector<std::vector<Point2>>& rings)
+{
+  std::multiset<std::set<std::pair<double, double>>> sets;
+  for (const auto& ring : rings)
+  {
+    std::set<std::pair<double, double>> points;
+    for (const Point2& p : ring)
+    {
+      points.insert({ p.x, p.y });
+    }
+    EXPECT_EQ(points.size(), ring.size()) << "a ring stands on a point twice";
+    sets.insert(points);
+  }
+  return sets;
+}
+
+// Every segment given is in exactly one ring (as an unordered pair of ends).
+void ExpectRingsUseEachSegmentOnce(const std::vector<Point2>& ends, const PointRings& rings)
+{
+  using Key = std::pair<std::pair<double, double>, std::pair<double, double>>;
+  const auto key = [](const Point2& a, const Point2& b)
+  {
+    const std::pair<double, double> p{ a.x, a.y }, q{ b.x, b.y };
+    return p < q ? Key{ p, q } : Key{ q, p };
+  };
+  std::multiset<Key> given;
+  for (std::size_t s = 0; 2 * s < ends.size(); ++s)
+  {
+    given.insert(key(ends[2 * s], ends[2 * s + 1]));
+  }
+  for (const auto& ring : RingsOf(rings))
+  {
+    for (std::size_t k = 0; k < ring.size(); ++k)
+    {
+      const auto it = given.find(key(ring[k], ring[(k + 1) % ring.size()]));
+      ASSERT_NE(it, given.end()) << "a ring side that is no segment given";
+      given.erase(it);
+    }
+  }
+  EXPECT_TRUE(given.empty()) << given.size() << " segment(s) in no ring";
+}
+
+} // namespace
+
+// Where four or six segments meet (a contour through a saddle, squares meeting at a corner, a
+// hole touching its outline), segments given by their ends are paired by angle: the rings touch
+// there, each stands on a point once, and validation accepts them.
+TEST(SegmentRings, RingsMeetingAtAPointAreJoinedTouching)
+{
+  const std::vector<Point2> square1{ { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+  const std::vector<Point2> square2{ { 1, 1 }, { 2, 1 }, { 2, 2 }, { 1, 2 } };
+  // The outline a b e f g and the hole b c d of the sketch in segment_rings.cpp.
+  const std::vector<Point2> outline{ { 0, 4 }, { 2, 4 }, { 4, 4 }, { 4, 0 }, { 0, 0 } };
+  const std::vector<Point2> hole{ { 2, 4 }, { 3, 2 }, { 1, 2 } };
+  // Three triangles round the origin: six segments meet there.
+  const std::vector<Point2> t1{ { 0, 0 }, { 2, 0 }, { 1, 1 } };
+  const std::vector<Point2> t2{ { 0, 0 }, { -1, 1 }, { -2, 0 } };
+  const std::vector<Point2> t3{ { 0, 0 }, { -1, -2 }, { 1, -2 } };
+  const std::vector<std::vector<std::vector<Point2>>> cases{ { square1, square2 },
+    { outline, hole },
+    { t1, t2, t3 },
+    { square1, square2, { { 2, 2 }, { 3, 2 }, { 3, 3 }, { 2, 3 } } } };
+  std::mt19937 rng(3);
+  for (std::size_t c = 0; c < cases.size(); ++c)
+  {
+    for (int trial = 0; trial < 20; ++trial)
+    {
+      const std::vector<Point2> ends = EndsOfRings(cases[c], rng);
+      const PointRings rings = JoinSegmentsAtEqualEnds(ends);
+      EXPECT_TRUE(rings.Unjoined.empty()) << "case " << c;
+      EXPECT_EQ(PointSets(RingsOf(rings)), PointSets(cases[c]))
+        << "case " << c << " trial " << trial;
+      ExpectRingsUseEachSegmentOnce(ends, rings);
+      EXPECT_NO_THROW(ValidateRings(rings.Offsets, rings.Vertices)) << "case " << c;
+    }
+  }
+  // The id-only join has no angles to pair by: it leaves the two squares unjoined.
+  Segments ids;
+  for (std::int64_t k = 0; k < 4; ++k)
+  {
+    ids.push_back({ k, (k + 1) % 4 });
+    ids.push_back({ k == 2 ? 2 : 10 + k, k == 1 ? 2 : 10 + (k + 1) % 4 });
+  }
+  EXPECT_EQ(JoinSegmentsIntoRings(ids).Unjoined.size(), 8u);
+}
+
+// Where three segments meet, or two of four leave in one direction (overlapping), or a far end is
+// NaN, no pairing makes rings that validation accepts: those chains stay unjoined, and a ring
+// elsewhere is still joined.
+TEST(SegmentRings, OddJunctionsOverlapsAndNaNEndsStayUnjoined)
+{
+  const double nan = std::nan("");
+  const std::vector<Point2> ring{
+    { 20, 0 }, { 21, 0 }, { 21, 0 }, { 21, 1 }, { 21, 1 }, { 20, 0 }
+  };
+  // A square (0,0)-(1,1) with a spur from (1,1) to (2,2): three segments at (1,1).
+  const std::vector<Point2> spur{ { 0, 0 },
+    { 1, 0 },
+    { 1, 0 },
+    { 1, 1 },
+    { 1, 1 },
+    { 0, 1 },
+    { 0, 1 },
+    { 0, 0 },
+    { 1, 1 },
+    { 2, 2 } };
+  // Two triangles at (0,0) whose sides from it to (1,0) and (2,0) run along one direction.
+  const std::vector<Point2> overlap{ { 0, 0 },
+    { 1, 0 },
+    { 1, 0 },
+    { 0, 1 },
+    { 0, 1 },
+    { 0, 0 },
+    { 0, 0 },
+    { 2, 0 },
+    { 2, 0 },
+    { 0, -1 },
+    { 0, -1 },
+    { 0, 0 } };
+  // Two triangles at (0,0), one of whose far ends is NaN.
+  const std::vector<Point2> withNaN{ { 0, 0 },
+    { 1, 0 },
+    { 1, 0 },
+    { 0, 1 },
+    { 0, 1 },
+    { 0, 0 },
+    { 0, 0 },
+    { nan, 0 },
+    { nan, 0 },
+    { 0, -1 },
+    { 0, -1 },
+    { 0, 0 } };
+  for (const auto& junk : { spur, overlap, withNaN })
+  {
+    std::vector<Point2> ends = ring;
+    ends.insert(ends.end(), junk.begin(), junk.end());
+    const PointRings rings = JoinSegmentsAtEqualEnds(ends);
+    ASSERT_EQ(rings.Offsets.size(), 2u);
+    EXPECT_EQ(rings.Vertices, (std::vector<Point2>{ { 20, 0 }, { 21, 0 }, { 21, 1 } }));
+    std::vector<std::size_t> expected;
+    for (std::size_t s = 3; s < ends.size() / 2; ++s)
+    {
+      expected.push_back(s);
+    }
+    if (&junk == &withNaN)
+    {
+      // The NaN ends meet nothing: its two segments are chains of their own, as is the rest.
+      EXPECT_EQ(rings.Unjoined.size(), expected.size());
+    }
+    else
+    {
+      EXPECT_EQ(rings.Unjoined, expected);
+    }
+  }
+}
+
+// Random sets of black squares of a checkerboard, which meet only at corners (four segments
+// there, or none): every segment is in one ring, no ring stands on a point twice, validation
+// accepts the rings, and by the even-odd rule each square's centre is inside exactly when it was
+// chosen.
+TEST(SegmentRings, RandomCheckerboardsAgainstTheirSquares)
+{
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 300; ++trial)
+  {
+    const int n = std::uniform_int_distribution<int>(2, 7)(rng);
+    std::vector<std::vector<Point2>> squares;
+    std::set<std::pair<int, int>> chosen;
+    for (int i = 0; i < n; ++i)
+    {
+      for (int j = (i % 2); j < n; j += 2)
+      {
+        if (rng() % 4 != 0)
+        {
+          chosen.insert({ i, j });
+          squares.push_back({ { double(i), double(j) },
+            { double(i + 1), double(j) },
+            { double(i + 1), double(j + 1) },
+            { double(i), double(j + 1) } });
+        }
+      }
+    }
+    const std::vector<Point2> ends = EndsOfRings(squares, rng);
+    const PointRings rings = JoinSegmentsAtEqualEnds(ends);
+    EXPECT_TRUE(rings.Unjoined.empty()) << "trial " << trial;
+    ExpectRingsUseEachSegmentOnce(ends, rings);
+    PointSets(RingsOf(rings)); // (each ring's points distinct)
+    if (!squares.empty())
+    {
+      EXPECT_NO_THROW(ValidateRings(rings.Offsets, rings.Vertices)) << "trial " << trial;
+    }
+    for (int i = 0; i < n; ++i)
+    {
+      for (int j = 0; j < n; ++j)
+      {
+        // Crossings of the ray from the centre to +x with the rings' sides, by the even-odd rule.
+        const double x = i + 0.5, y = j + 0.5;
+        bool inside = false;
+        for (const auto& ring : RingsOf(rings))
+        {
+          for (std::size_t k = 0; k < ring.size(); ++k)
+          {
+            const Point2 a = ring[k], b = ring[(k + 1) % ring.size()];
+            if ((a.y > y) != (b.y > y) && a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y) > x)
+            {
+              inside = !inside;
+            }
+          }
+        }
+        EXPECT_EQ(inside, chosen.count({ i, j }) == 1)
+          << "trial " << trial << " square " << i << "," << j;
+      }
+    }
+  }
 }

@@ -285,6 +285,22 @@ def test_a_window_of_loose_line_segments_is_joined_into_its_rings():
             assert_that(not errors and not warnings, f"{name}: joined without a message: {errors} {warnings}")
             got = cell_values(output, "ClippedArea")
             assert_that(got == expected, f"{name}: the same clipped areas as the polygons ({len(got)} cells)")
+    # Rings meeting at a point (a contour through a saddle: four segments there, six for three
+    # triangles) are joined touching, as the polygons are given.
+    meeting = {"squares at a corner": [[(0.1, 0.1), (0.5, 0.1), (0.5, 0.5), (0.1, 0.5)],
+                                       [(0.5, 0.5), (0.9, 0.5), (0.9, 0.9), (0.5, 0.9)]],
+               "a hole touching its outline": [[(0.1, 0.9), (0.5, 0.9), (0.9, 0.9), (0.9, 0.1), (0.1, 0.1)],
+                                               [(0.5, 0.9), (0.7, 0.5), (0.3, 0.5)]],
+               "three triangles at a point": [[(0.5, 0.5), (0.9, 0.5), (0.7, 0.8)], [(0.5, 0.5), (0.3, 0.8), (0.1, 0.5)],
+                                              [(0.5, 0.5), (0.3, 0.1), (0.7, 0.1)]]}
+    for name, rings in meeting.items():
+        expected = cell_values(clip(tiles, rings), "ClippedArea")
+        for shared_ids in (True, False):
+            output, errors, warnings = clip_by(tiles, line_segments(rings, rng, shared_ids))
+            assert_that(not errors and not warnings, f"{name}: joined without a message: {errors} {warnings}")
+            got = cell_values(output, "ClippedArea")
+            assert_that(sorted(got) == sorted(expected) and len(got) > 0,
+                        f"{name}: the same clipped areas as the polygons ({len(got)} cells)")
     square = [(0.1, 0.1), (0.9, 0.1), (0.9, 0.9), (0.1, 0.9)]
     window = line_segments([square], rng, True)
     tail = window.GetPoints().InsertNextPoint(1.0, 1.0, 0.0)
