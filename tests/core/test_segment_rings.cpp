@@ -317,46 +317,29 @@ TEST(SegmentRings, RingsMeetingAtAPointAreJoinedTouching)
 TEST(SegmentRings, OddJunctionsOverlapsAndNaNEndsStayUnjoined)
 {
   const double nan = std::nan("");
-  const std::vector<Point2> ring{
-    { 20, 0 }, { 21, 0 }, { 21, 0 }, { 21, 1 }, { 21, 1 }, { 20, 0 }
+  // The ends of the sides of closed rings, in order.
+  const auto closed = [](const std::vector<std::vector<Point2>>& rings)
+  {
+    std::vector<Point2> ends;
+    for (const auto& ring : rings)
+    {
+      for (std::size_t k = 0; k < ring.size(); ++k)
+      {
+        ends.insert(ends.end(), { ring[k], ring[(k + 1) % ring.size()] });
+      }
+    }
+    return ends;
   };
+  const std::vector<Point2> ring = closed({ { { 20, 0 }, { 21, 0 }, { 21, 1 } } });
   // A square (0,0)-(1,1) with a spur from (1,1) to (2,2): three segments at (1,1).
-  const std::vector<Point2> spur{ { 0, 0 },
-    { 1, 0 },
-    { 1, 0 },
-    { 1, 1 },
-    { 1, 1 },
-    { 0, 1 },
-    { 0, 1 },
-    { 0, 0 },
-    { 1, 1 },
-    { 2, 2 } };
+  std::vector<Point2> spur = closed({ { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } });
+  spur.insert(spur.end(), { { 1, 1 }, { 2, 2 } });
   // Two triangles at (0,0) whose sides from it to (1,0) and (2,0) run along one direction.
-  const std::vector<Point2> overlap{ { 0, 0 },
-    { 1, 0 },
-    { 1, 0 },
-    { 0, 1 },
-    { 0, 1 },
-    { 0, 0 },
-    { 0, 0 },
-    { 2, 0 },
-    { 2, 0 },
-    { 0, -1 },
-    { 0, -1 },
-    { 0, 0 } };
+  const std::vector<Point2> overlap =
+    closed({ { { 0, 0 }, { 1, 0 }, { 0, 1 } }, { { 0, 0 }, { 2, 0 }, { 0, -1 } } });
   // Two triangles at (0,0), one of whose far ends is NaN.
-  const std::vector<Point2> withNaN{ { 0, 0 },
-    { 1, 0 },
-    { 1, 0 },
-    { 0, 1 },
-    { 0, 1 },
-    { 0, 0 },
-    { 0, 0 },
-    { nan, 0 },
-    { nan, 0 },
-    { 0, -1 },
-    { 0, -1 },
-    { 0, 0 } };
+  const std::vector<Point2> withNaN =
+    closed({ { { 0, 0 }, { 1, 0 }, { 0, 1 } }, { { 0, 0 }, { nan, 0 }, { 0, -1 } } });
   for (const auto& junk : { spur, overlap, withNaN })
   {
     std::vector<Point2> ends = ring;
