@@ -11,7 +11,17 @@ namespace tessera
 
 std::string StationKey(std::string id)
 {
-  if (!id.empty() && std::all_of(id.begin(), id.end(), [](char c) { return c >= '0' && c <= '9'; }))
+  const auto isDigit = [](char c) { return c >= '0' && c <= '9'; };
+  // "102.0" or "102.": a whole-number id as a program writes a numeric column with a gap (pandas
+  // makes such an integer column floating point), the same station as 102 and 0102.
+  const std::size_t point = id.find('.');
+  if (point != std::string::npos && point > 0 &&
+    std::all_of(id.begin(), id.begin() + std::ptrdiff_t(point), isDigit) &&
+    id.find_first_not_of('0', point + 1) == std::string::npos)
+  {
+    id.resize(point);
+  }
+  if (!id.empty() && std::all_of(id.begin(), id.end(), isDigit))
   {
     const auto nonZero = id.find_first_not_of('0');
     id = nonZero == std::string::npos ? "0" : id.substr(nonZero);

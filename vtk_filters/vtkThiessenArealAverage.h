@@ -49,7 +49,7 @@
  * row's time that is not a finite number, a date or a month 1 .. 12, and a value that is not a
  * number or a missing-value marker, are errors naming the row; a table none of whose rows can be
  * used is an error that counts them. Station ids match as text (leading zeros of integer ids are
- * ignored, so "050109" matches 50109; a floating-point id column, as a CSV reader makes, is read in
+ * ignored, so "050109" matches 50109, as does "50109.0"; a floating-point id column, as a CSV reader makes, is read in
  * full, so 6730200 and 6730500 stay two stations; matching and steps: core/observation_series.h).
  *
  * The projection is vtkGeographicProjection's automatic equal-area conic fitted to the catchment

@@ -54,7 +54,17 @@ TEST(ObservationSeries, StationKeyDropsLeadingZerosOfIntegerIdsOnly)
   EXPECT_EQ(StationKey(""), "");
   EXPECT_EQ(StationKey("007A"), "007A"); // not an integer: as written
   EXPECT_EQ(StationKey("-07"), "-07");
-  EXPECT_EQ(StationKey("07.0"), "07.0");
+  // A whole number written with a point and zeros is that integer; other decimals as written.
+  EXPECT_EQ(StationKey("07.0"), "7");
+  EXPECT_EQ(StationKey("050109.000"), "50109");
+  EXPECT_EQ(StationKey("102."), "102");
+  EXPECT_EQ(StationKey("0.0"), "0");
+  EXPECT_EQ(StationKey("7.01"), "7.01");
+  EXPECT_EQ(StationKey("7.0.0"), "7.0.0");
+  EXPECT_EQ(StationKey(".0"), ".0");
+  EXPECT_EQ(StationKey("A7.0"), "A7.0");
+  EXPECT_EQ(StationKey("-7.0"), "-7.0");
+  EXPECT_EQ(StationKey("7.0 "), "7.0 ");
   EXPECT_EQ(StationKey(" 07"), " 07");
   EXPECT_EQ(StationKey("0730020000000000000001"), "730020000000000000001"); // beyond 64 bits
 }
@@ -63,14 +73,14 @@ TEST(ObservationSeries, IdsWithLeadingZerosMatchTheSameNumber)
 {
   const std::vector<std::string> gauges = { "050109", "A01", "0", "7" };
   const std::vector<std::string> rows = {
-    "50109", "0050109", "A1", "A01", "000", "07", "+7", "7.0"
+    "50109", "0050109", "A1", "A01", "000", "07", "+7", "7.0", "7.5", "50109.00"
   };
   const tessera::StationMatch match = MatchStations(gauges, rows);
-  EXPECT_EQ(match.GaugeOfRow, (Rows{ 0, 0, -1, 1, 2, 3, -1, -1 }));
-  ASSERT_EQ(match.UnknownStations.size(), 3u); // A1, +7, 7.0: one row each
+  EXPECT_EQ(match.GaugeOfRow, (Rows{ 0, 0, -1, 1, 2, 3, -1, 3, -1, 0 }));
+  ASSERT_EQ(match.UnknownStations.size(), 3u); // A1, +7, 7.5: one row each
   EXPECT_EQ(match.UnknownStations[0].FirstRow, 2);
   EXPECT_EQ(match.UnknownStations[1].FirstRow, 6);
-  EXPECT_EQ(match.UnknownStations[2].FirstRow, 7);
+  EXPECT_EQ(match.UnknownStations[2].FirstRow, 8);
   for (const tessera::UnknownStation& station : match.UnknownStations)
   {
     EXPECT_EQ(station.Rows, 1);

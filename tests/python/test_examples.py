@@ -519,11 +519,13 @@ def test_ids_without_their_leading_zeros_match_as_in_the_filter():
         catchment, stations, _ = write_lake_basin(directory)
         write_stations(stations, gauges)
         outputs = {}
-        for name, strip in (("zeros", False), ("nozeros", True)):
+        # floats: the integer ids as pandas writes a whole-number column with gaps (101.0).
+        for name, written in (("zeros", "{}"), ("nozeros", "{:d}"), ("floats", "{:.1f}")):
             observations = os.path.join(directory, f"{name}.csv")
             with open(observations, "w") as f:
                 f.write("station_id,year,month,precip\n" + "".join(
-                    f"{int(s) if strip and s.isdigit() else s},2001,{m},{v}\n" for s, m, v in rows))
+                    f"{written.format(int(s) if written != '{}' else s) if s.isdigit() else s},2001,{m},{v}\n"
+                    for s, m, v in rows))
             out = os.path.join(directory, name)
             stdout, stderr = run_colorado(out, stations=stations, observations=observations, catchment=catchment,
                                           month="2001-02", what=name)
@@ -534,6 +536,10 @@ def test_ids_without_their_leading_zeros_match_as_in_the_filter():
             gaps = [line.replace(observations, "OBS") for line in stderr.splitlines() if "have no row of" in line]
             outputs[name] = (files, stdout.replace(out, "OUT"), gaps, stderr)
         zeros, nozeros = outputs["zeros"], outputs["nozeros"]
+        for file in zeros[0]:
+            assert_that(zeros[0][file] == outputs["floats"][0][file], f"{file} differs with ids written 101.0")
+        assert_that(zeros[1:3] == outputs["floats"][1:3],
+                    f"the messages differ with ids written 101.0: {outputs['floats'][1:3]}")
         assert_that(len(read_csv(os.path.join(directory, "zeros", "areal_mean.csv"))) == 4, "4 months expected")
         for file in zeros[0]:
             # The map too: the gauges drawn as reporting are the same.
