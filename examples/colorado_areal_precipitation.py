@@ -32,6 +32,11 @@ Writes into --out:
                          a station no gauge has, or without a station id or time); for a gauge at
                          the place of an earlier one, or a repeated observation, the note gives
                          the earlier one's line; the warnings name only the first 20 of each kind
+Daily observations (columns station_id, year, month, day, precip, or station_id, date, precip
+with dates YYYY-MM-DD) make a step a day: areal_mean.csv and weights_all_days.csv (which
+stands for weights_all_months.csv) gain a day column (year,month,day,...), --day chooses the day
+of the weights, tiles and map (named YYYY_MM_DD), and every day from the first to the last has
+its row. A date column of YYYY-MM gives months.
 Units are those of the data (documented as mm; the magnitudes look like cm: see
 examples/data/README.md).
 
@@ -39,7 +44,9 @@ Run with Debian's /usr/bin/python3 and PYTHONPATH=build/python (scripts/demo doe
 """
 
 import argparse
+import calendar
 import csv
+import datetime
 import math
 import os
 import re
@@ -58,9 +65,37 @@ def decimal_time(year, month):
     return year + (month - 1) / 12.0
 
 
-def year_month(t):
-    index = int(round(t * 12.0))
-    return index // 12, index % 12 + 1
+class Steps:
+    """The time steps of the observations: months, as (year, month), or days, as (year, month,
+    day), when the observations give days (a day column, or a date column of YYYY-MM-DD)."""
+
+    def __init__(self, daily):
+        self.daily = daily
+        self.unit = "day" if daily else "month"
+        self.columns = ["year", "month", "day"] if daily else ["year", "month"]
+        self.of_time = {}  # the step of each time value made by time()
+
+    def time(self, step):
+        """The step as a time value: decimal_time of its month, plus a day's share of its month
+        (of_time maps the value back: the filter gives back the times it was given)."""
+        t = decimal_time(step[0], step[1])
+        if self.daily:
+            t += (step[2] - 1) / (12.0 * calendar.monthrange(step[0], step[1])[1])
+        self.of_time[t] = step
+        return t
+
+    def text(self, step):
+        return "-".join(f"{v:0{4 if k == 0 else 2}d}" for k, v in enumerate(step))
+
+    def tag(self, step):
+        return self.text(step).replace("-", "_")
+
+    def between(self, first, last):
+        """Every step from first to last, both included."""
+        if not self.daily:
+            return [(y, m) for y in range(first[0], last[0] + 1) for m in range(1, 13) if first <= (y, m) <= last]
+        day, end = datetime.date(*first), datetime.date(*last)
+        return [(d.year, d.month, d.day) for d in (day + datetime.timedelta(k) for k in range((end - day).days + 1))]
 
 
 def station_key(station_id):
@@ -101,14 +136,49 @@ def read_gauges(path):
     return gauges, lines
 
 
+DATE = re.compile(r"([0-9]{4})-([0-9]{1,2})(?:-([0-9]{1,2}))?")
+
+
+def observation_step(row, path, line):
+    """The month (year, month) or day (year, month, day) of an observations record: from its year,
+    month and (for days) day columns, or from its date column (YYYY-MM-DD, or YYYY-MM for a
+    month). Ends the script naming file, line and column for a value that is no such date."""
+    if "date" in row and ("year" in row or "month" in row):
+        csv_input.fail(f"{path}: the observations file has both a date column and year/month columns "
+                       "(keep one)")
+    if "date" in row:
+        text = csv_input.text(row, "date", path, line)
+        date = DATE.fullmatch(text)
+        step = tuple(int(v) for v in date.groups() if v is not None) if date else ()
+        where = f"{path}:{line}: column 'date': {text!r}"
+        if not date:
+            csv_input.fail(f"{where} is not a date (YYYY-MM-DD, or YYYY-MM for a month)")
+    elif "year" in row and "month" in row:
+        step = (csv_input.integer(row, "year", path, line, 1, 9999),
+                csv_input.integer(row, "month", path, line, 1, 12))
+        if "day" in row:
+            step += (csv_input.integer(row, "day", path, line, 1, 31),)
+        where = f"{path}:{line}: column 'day': {step[-1]}"
+    else:
+        columns = ", ".join(name for name in row if name is not None)
+        csv_input.fail(f"{path}: the observations file has no columns year and month, nor a date column "
+                       f"(it needs station_id, year, month, precip, with day for daily values, or "
+                       f"station_id, date, precip; its header: {columns})")
+    if not (1 <= step[0] and 1 <= step[1] <= 12) or (
+            len(step) == 3 and not 1 <= step[2] <= calendar.monthrange(step[0], step[1])[1]):
+        csv_input.fail(f"{where} is not a date of the calendar" if "date" in row else f"{where} is not a day of "
+                       f"{step[0]}-{step[1]:02d}")
+    return step
+
+
 def read_observations(path, gauge_of, filler, stations_path, missing_values=(), station_ids=()):
-    """The long-format monthly table as a vtkTable (station_id, time, precip), the set of
-    reporting gauges of every (year, month), as gauge indices, and the file's line of each record
-    read (table row r, counted from 0, is the record of line lines[r]; the rows after them are the
-    filler rows of months without a row of a gauge's station). gauge_of: the gauge that a
+    """The long-format table as a vtkTable (station_id, time, precip), its steps (Steps: months or
+    days), the set of reporting gauges of every step, as gauge indices, and the file's line of
+    each record read (table row r, counted from 0, is the record of line lines[r]; the rows after
+    them are the filler rows of steps without a row of a gauge's station). gauge_of: the gauge that a
     station's observations go to, by station_key() (ids are compared as the filter compares them;
-    a month none of whose rows names a gauge's station is a month where no gauge reported).
-    filler: a gauge's station id, given to the rows of those months. missing_values: numbers that
+    a step none of whose rows names a gauge's station is a step where no gauge reported).
+    filler: a gauge's station id, given to the rows of those steps. missing_values: numbers that
     mean missing (--missing-value, such as -9999), read as a missing value. Ends the script when no
     row names a gauge's station, naming the stations file (stations_path) and some of its ids as
     written (station_ids): ids that do not match at all (a prefix, another numbering) would
@@ -124,21 +194,26 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     unrecorded = 0
     coded = 0  # values given with --missing-value
     negative = []  # the lines of negative values
-    months = set()  # (year, month) of every row
-    present = set()  # (year, month) of every row of a gauge's station
+    months = set()  # the step of every row
+    present = set()  # the step of every row of a gauge's station
     lines = []  # the file's line of each row read
     names = {}  # every row's station id, as written, once each in the file's order
-    for line, row in csv_input.rows(path, ("station_id", "year", "month", "precip"), "observations"):
+    steps = None
+    for line, row in csv_input.rows(path, ("station_id", "precip"), "observations", ("year", "month", "day", "date")):
         lines.append(line)
         station = csv_input.text(row, "station_id", path, line)
-        year_and_month = (csv_input.integer(row, "year", path, line, 1, 9999),
-                          csv_input.integer(row, "month", path, line, 1, 12))
+        year_and_month = observation_step(row, path, line)
+        if steps is None:
+            steps, first_line = Steps(len(year_and_month) == 3), line
+        elif steps.daily != (len(year_and_month) == 3):
+            csv_input.fail(f"{path}:{line}: column 'date': {row['date'].strip()!r} is a {'month' if steps.daily else 'day'}, "
+                           f"where line {first_line} gives a {steps.unit} (the steps are all months or all days)")
         months.add(year_and_month)
         names.setdefault(station.strip(" \t\""))
         gauge = gauge_of.get(station_key(station))
         if gauge is not None:
             present.add(year_and_month)
-        t = decimal_time(*year_and_month)
+        t = steps.time(year_and_month)
         # A missing value stays in the table as NaN: the gauge does not report that month (the
         # filter drops it for that step), and the month remains a step even if no gauge reports.
         value = math.nan
@@ -175,26 +250,26 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
         print(f"{path}: {len(negative)} observation(s) have a negative precipitation, used as given "
               f"(write a missing value as NA, or give --missing-value, if that is what they mean): line(s) {shown}{more}",
               file=sys.stderr)
-    # A month between the first and the last without a row of any gauge's station is a month where
+    # A step between the first and the last without a row of any gauge's station is a step where
     # no gauge reported: a row with a missing value (for a gauge's station: the filter makes no
     # step of a row naming a station no gauge has) keeps it a step of its own, so that
-    # areal_mean.csv has every month, empty where nothing was measured.
+    # areal_mean.csv has every month (or day), empty where nothing was measured.
+    steps = steps or Steps(False)
     if months and gauge_of:
         first, last = min(months), max(months)
-        gaps = [(y, m) for y in range(first[0], last[0] + 1) for m in range(1, 13)
-                if first <= (y, m) <= last and (y, m) not in present]
-        for y, m in gaps:  # (a gauge's id: the month is a step of the filter)
+        gaps = [step for step in steps.between(first, last) if step not in present]
+        for step in gaps:  # (a gauge's id: the step is a step of the filter)
             stations.InsertNextValue(filler)
-            times.InsertNextValue(decimal_time(y, m))
+            times.InsertNextValue(steps.time(step))
             values.InsertNextValue(math.nan)
         if gaps:
-            print(f"{path}: {len(gaps)} month(s) between {first[0]}-{first[1]:02d} and "
-                  f"{last[0]}-{last[1]:02d} have no row of a gauge's station; they are months "
+            print(f"{path}: {len(gaps)} {steps.unit}(s) between {steps.text(first)} and "
+                  f"{steps.text(last)} have no row of a gauge's station; they are {steps.unit}s "
                   "where no gauge reported", file=sys.stderr)
     table = vtkTable()
     for column in (stations, times, values):
         table.AddColumn(column)
-    return table, reporting, lines
+    return table, steps, reporting, lines
 
 
 def read_catchment(path, feature=None):
@@ -326,10 +401,10 @@ class InputFiles:
     the observations file's r-th record (the filler rows after them are never named: they have a
     gauge's id, a time and no value)."""
 
-    def __init__(self, stations, gauge_lines, observations, row_lines, catchment):
+    def __init__(self, stations, gauge_lines, observations, row_lines, catchment, unit="month"):
         self.stations, self.gauge_lines = stations, gauge_lines
         self.observations, self.row_lines = observations, row_lines
-        self.catchment = catchment
+        self.catchment, self.unit = catchment, unit
 
     def row_line(self, row):
         """The observations file's line of table row `row` (as text), or None for a filler row."""
@@ -339,7 +414,7 @@ class InputFiles:
         """text with "row R" as "line L" and without the filter's note on its row numbering."""
         def line(m):
             found = self.row_line(int(m.group(1)))
-            return f"line {found}" if found else f"{m.group(0)} (a row added for a month without rows)"
+            return f"line {found}" if found else f"{m.group(0)} (a row added for a {self.unit} without rows)"
         return re.sub(r"\brow (\d+)\b", line, re.sub(r" \(rows from 0, listed in [^)]*\)", "", text))
 
     def gauges_as_lines(self, text):
@@ -428,8 +503,8 @@ class FilterMessages:
             csv_input.fail("the areal average failed and gave no message")
 
 
-def write_all_weights(table, path):
-    """Output 2 of the filter (a row per month and weighted gauge) as CSV."""
+def write_all_weights(table, steps, path):
+    """Output 2 of the filter (a row per step and weighted gauge) as CSV."""
     from vtkmodules.util.numpy_support import vtk_to_numpy
 
     times = vtk_to_numpy(table.GetColumnByName("Time"))
@@ -439,46 +514,48 @@ def write_all_weights(table, path):
     stations = table.GetColumnByName("StationId")
     with open(path, "w", newline="") as f:
         out = csv.writer(f)
-        out.writerow(["year", "month", "station_id", "weight", "area_km2", "precip"])
+        out.writerow([*steps.columns, "station_id", "weight", "area_km2", "precip"])
         for r in range(table.GetNumberOfRows()):
-            year, month = year_month(times[r])
-            out.writerow([year, month, stations.GetValue(r), f"{weights[r]:.15g}",
+            out.writerow([*steps.of_time[float(times[r])], stations.GetValue(r), f"{weights[r]:.15g}",
                           f"{areas[r] / 1e6:.15g}", f"{values[r]:.15g}"])
     return table.GetNumberOfRows()
 
 
-def write_summary(table, path):
+def write_summary(table, steps, path):
+    """areal_mean.csv from output 1 of the filter; returns its rows as (*step, stations used,
+    stations weighted, areal mean)."""
     rows = []
     with open(path, "w", newline="") as f:
         out = csv.writer(f)
-        out.writerow(["year", "month", "stations_used", "stations_weighted", "areal_mean"])
+        out.writerow([*steps.columns, "stations_used", "stations_weighted", "areal_mean"])
         for r in range(table.GetNumberOfRows()):
-            year, month = year_month(table.GetValueByName(r, "Time").ToDouble())
+            step = steps.of_time[table.GetValueByName(r, "Time").ToDouble()]
             mean = table.GetValueByName(r, "ArealMean").ToDouble()
             used = table.GetValueByName(r, "StationsUsed").ToInt()
             weighted = table.GetValueByName(r, "StationsWeighted").ToInt()
-            out.writerow([year, month, used, weighted, "" if math.isnan(mean) else f"{mean:.15g}"])
-            rows.append((year, month, used, weighted, mean))
+            out.writerow([*step, used, weighted, "" if math.isnan(mean) else f"{mean:.15g}"])
+            rows.append((*step, used, weighted, mean))
     return rows
 
 
 # The filter's lists of valid input it did not use (output 1's field data), as unused_inputs.csv
-# gives them: (array, what it lists, whether it lists observation rows rather than gauges).
+# gives them: (array, what it lists ({unit}: month or day), whether it lists observation rows
+# rather than gauges).
 UNUSED_LISTS = (
     ("UnobservedGaugeIds", "gauge without any observed value", False),
     ("UnweightedGaugeIds", "gauge whose tile never reaches the catchment", False),
-    ("DuplicateGaugeIds", "gauge at the place of an earlier gauge (used only in months where no "
+    ("DuplicateGaugeIds", "gauge at the place of an earlier gauge (used only in {unit}s where no "
      "earlier gauge there reports)", False),
     ("CoLocatedObservationRows", "observation of a gauge at the place of an earlier gauge that "
-     "reported that month (the earlier gauge's value is used)", True),
-    ("RepeatedObservationRows", "observation repeating the station and month of an earlier one "
+     "reported that {unit} (the earlier gauge's value is used)", True),
+    ("RepeatedObservationRows", "observation repeating the station and {unit} of an earlier one "
      "with a value (the earlier value is used)", True),
     ("UnusedObservationRows", "observation without a station id or time, or of a station no gauge has",
      True),
 )
 
 
-def write_unused(summary, files, station_ids, observations, path):
+def write_unused(summary, files, station_ids, observations, unit, path):
     """Every input the filter did not use, one row each (the warnings name the first 20 of each
     kind): kind, file, line, station_id and a note: for a gauge at the place of an earlier one,
     that gauge's line; for an observation repeating an earlier one, the earlier one's line.
@@ -492,6 +569,7 @@ def write_unused(summary, files, station_ids, observations, path):
         out = csv.writer(f)
         out.writerow(["kind", "file", "line", "station_id", "note"])
         for name, kind, of_rows in UNUSED_LISTS:
+            kind = kind.format(unit=unit)
             ids = fields.GetArray(name)
             for k in range(ids.GetNumberOfTuples() if ids else 0):
                 i = int(ids.GetValue(k))
@@ -628,10 +706,10 @@ def map_layout(outline, per_gauge, points):
     return outline, per_gauge, lon, lat, map_extent(outline, [(lon[g], lat[g]) for g in per_gauge])
 
 
-def plot_map(per_gauge, gauges, outline, reporting, title, path):
+def plot_map(per_gauge, gauges, outline, reporting, title, path, unit="month"):
     """outline: the catchment's rings (catchment_rings); the map shows them and the weighted
-    gauges (map_extent). A month where no gauge reported has no tiles: the map shows the outline
-    and the gauges, without tiles or colour bar."""
+    gauges (map_extent). A month (or day) where no gauge reported has no tiles: the map shows the
+    outline and the gauges, without tiles or colour bar."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -654,7 +732,7 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path):
         collection.set_clim(min(values), max(values))
         ax.add_collection(collection)
     if values:
-        fig.colorbar(collection, ax=ax, label="monthly precipitation (data units)")
+        fig.colorbar(collection, ax=ax, label=f"{'daily' if unit == 'day' else 'monthly'} precipitation (data units)")
     for ring in outline:
         xs, ys = zip(*ring)
         ax.plot(xs + xs[:1], ys + ys[:1], color="black", linewidth=1.2)
@@ -677,16 +755,17 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path):
     plt.close(fig)
 
 
-def monthly_series(rows):
-    """The time series areal_mean.png plots, from write_summary's rows: (times, means, gauges
-    reporting), a point for every month from the first row's to the last's. A month without an
-    areal mean (no gauge reported, or no row: 0 gauges) has mean NaN, where matplotlib breaks the
-    line: dropping it would draw the line straight across the gap as if it had been measured."""
-    by_month = {(y, m): (used, mean) for y, m, used, _, mean in rows}
-    first, last = min(by_month), max(by_month)
-    months = [(y, m) for y in range(first[0], last[0] + 1) for m in range(1, 13) if first <= (y, m) <= last]
-    values = [by_month.get(month, (0, math.nan)) for month in months]
-    return [decimal_time(y, m) for y, m in months], [mean for _, mean in values], [used for used, _ in values]
+def step_series(rows):
+    """The time series areal_mean.png plots, from write_summary's rows (months or days): (times,
+    means, gauges reporting), a point for every step from the first row's to the last's. A step
+    without an areal mean (no gauge reported, or no row: 0 gauges) has mean NaN, where matplotlib
+    breaks the line: dropping it would draw the line straight across the gap as if it had been
+    measured."""
+    by_step = {tuple(r[:-3]): (r[-3], r[-1]) for r in rows}
+    steps = Steps(len(rows[0]) == 6)
+    every = steps.between(min(by_step), max(by_step))
+    values = [by_step.get(step, (0, math.nan)) for step in every]
+    return [steps.time(step) for step in every], [mean for _, mean in values], [used for used, _ in values]
 
 
 def plot_series(rows, path):
@@ -695,8 +774,12 @@ def plot_series(rows, path):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    t, v, used = monthly_series(rows)
-    # A month with a mean between two without is no segment of the line: a dot shows it.
+    t, v, used = step_series(rows)
+    daily = len(rows[0]) == 6
+    if daily:  # days: dates on the axis (decimal years of a few days read 0.078 .. 0.083 + 2.001e3)
+        steps = Steps(True)
+        t = [datetime.date(*step) for step in steps.between(tuple(rows[0][:3]), tuple(rows[-1][:3]))]
+    # A step with a mean between two without is no segment of the line: a dot shows it.
     alone = [i for i in range(len(v)) if not math.isnan(v[i])
              and (i == 0 or math.isnan(v[i - 1])) and (i == len(v) - 1 or math.isnan(v[i + 1]))]
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(11, 6), sharex=True,
@@ -705,10 +788,14 @@ def plot_series(rows, path):
     top.plot([t[i] for i in alone], [v[i] for i in alone], linestyle="none", marker=".", markersize=2,
              color="tab:blue")
     top.set_ylabel("Thiessen areal mean (data units)")
-    top.set_title(f"Monthly precipitation, Thiessen areal mean {rows[0][0]}-{rows[-1][0]}")
+    span = (f"{steps.text(tuple(rows[0][:3]))} to {steps.text(tuple(rows[-1][:3]))}" if daily
+            else f"{rows[0][0]}-{rows[-1][0]}")
+    top.set_title(f"{'Daily' if daily else 'Monthly'} precipitation, Thiessen areal mean {span}")
     bottom.plot(t, used, linewidth=0.6, color="tab:grey")
     bottom.set_ylabel("gauges reporting")
-    bottom.set_xlabel("year")
+    bottom.set_xlabel("date" if daily else "year")
+    if daily:
+        fig.autofmt_xdate()
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -718,12 +805,16 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", default="out", help="output directory (created if missing)")
     parser.add_argument("--month", default="1963-08", help="month for the weights, tiles and map, YYYY-MM")
+    parser.add_argument("--day", help="day for the weights, tiles and map when the observations give days, "
+                                      "YYYY-MM-DD (default: the first day of --month)")
     parser.add_argument("--stations", default=os.path.join(DATA, "colorado_stations.csv"),
                         help="CSV of gauges: columns station_id, lon, lat (degrees, WGS84), "
                              f"optional name; {csv_input.SEPARATORS_TEXT}")
     parser.add_argument("--observations", default=os.path.join(DATA, "colorado_monthly_precip.csv"),
                         help="CSV of monthly values, one row per gauge and month: columns "
                              f"station_id, year, month, precip ({csv_input.MISSING_TEXT} = missing); "
+                             "or of daily values: columns station_id, year, month, day, precip, or "
+                             "station_id, date (YYYY-MM-DD), precip; a date column of YYYY-MM gives months; "
                              f"{csv_input.SEPARATORS_TEXT}")
     parser.add_argument("--catchment", default=os.path.join(DATA, "colorado_boundary.geojson"),
                         help="catchment polygon (GeoJSON or shapefile, lon/lat); every polygon "
@@ -739,6 +830,12 @@ def main(argv=None):
     year, month = (int(chosen.group(1)), int(chosen.group(2))) if chosen else (0, 0)
     if not 1 <= year or not 1 <= month <= 12:
         sys.exit(f"--month {args.month!r}: expected YYYY-MM")
+    day = None
+    if args.day is not None:
+        chosen = DATE.fullmatch(args.day.strip())
+        day = tuple(int(v) for v in chosen.groups()) if chosen and chosen.group(3) else None
+        if not day or day[0] < 1 or not 1 <= day[1] <= 12 or not 1 <= day[2] <= calendar.monthrange(*day[:2])[1]:
+            sys.exit(f"--day {args.day!r}: expected a date YYYY-MM-DD")
 
     # Tessera first: without VTK (another Python than Debian's) this says how to run the script.
     vtkThiessenArealAverage = csv_input.import_tessera().vtkThiessenArealAverage
@@ -756,11 +853,14 @@ def main(argv=None):
     gauge_of = {}
     for i, station in enumerate(station_ids):
         gauge_of.setdefault(station_key(station), i)
-    observations, reporting, row_lines = read_observations(args.observations, gauge_of,
-                                                           min(station_ids, default=None), args.stations,
-                                                           set(args.missing_value), station_ids)
+    observations, steps, reporting, row_lines = read_observations(args.observations, gauge_of,
+                                                                  min(station_ids, default=None), args.stations,
+                                                                  set(args.missing_value), station_ids)
+    if day and not steps.daily:
+        csv_input.fail(f"--day {args.day}: the observations of {args.observations} are monthly (use --month)")
+    step = (day or (year, month, 1)) if steps.daily else (year, month)
     catchment, outline = read_catchment(args.catchment, args.feature)
-    # (the observations file's rows: the table also has a row for each month without any)
+    # (the observations file's rows: the table also has a row for each step without any)
     print(f"read {gauges.GetNumberOfPoints()} gauges and {len(row_lines)} observations in "
           f"{time.time() - started:.1f} s", file=sys.stderr)
 
@@ -772,28 +872,28 @@ def main(argv=None):
     progress = Progress("Thiessen areal means")
     progress_tag = average.AddObserver(vtkCommand.ProgressEvent, progress)
     started = time.time()
-    files = InputFiles(args.stations, gauge_lines, args.observations, row_lines, args.catchment)
+    files = InputFiles(args.stations, gauge_lines, args.observations, row_lines, args.catchment, steps.unit)
     messages = FilterMessages(average, files, progress)
     average.Update(1)
     summary = average.GetOutputDataObject(1)
     messages.check(summary is None or summary.GetNumberOfRows() == 0)
-    print(f"{summary.GetNumberOfRows()} months in {time.time() - started:.2f} s", file=sys.stderr)
-    # The month's tiles below re-run the filter for that time only: no second progress bar.
+    print(f"{summary.GetNumberOfRows()} {steps.unit}s in {time.time() - started:.2f} s", file=sys.stderr)
+    # The step's tiles below re-run the filter for that time only: no second progress bar.
     average.RemoveObserver(progress_tag)
-    rows = write_summary(summary, os.path.join(args.out, "areal_mean.csv"))
-    write_all_weights(average.GetOutputDataObject(2), os.path.join(args.out, "weights_all_months.csv"))
-    unused = write_unused(summary, files, station_ids, observations, os.path.join(args.out, "unused_inputs.csv"))
+    rows = write_summary(summary, steps, os.path.join(args.out, "areal_mean.csv"))
+    all_weights = f"weights_all_{steps.unit}s.csv"
+    write_all_weights(average.GetOutputDataObject(2), steps, os.path.join(args.out, all_weights))
+    unused = write_unused(summary, files, station_ids, observations, steps.unit,
+                          os.path.join(args.out, "unused_inputs.csv"))
 
-    t = decimal_time(year, month)
-    average.UpdateTimeStep(t)
+    average.UpdateTimeStep(steps.time(step))
     tiles = average.GetOutputDataObject(0)
     messages.check(tiles is None)
-    chosen = year_month(tiles.GetInformation().Get(tiles.DATA_TIME_STEP()))
-    if chosen != (year, month):
-        print(f"note: {year}-{month:02d} is not in the record; showing {chosen[0]}-{chosen[1]:02d}",
-              file=sys.stderr)
-        year, month = chosen
-    tag = f"{year:04d}_{month:02d}"
+    chosen = steps.of_time[tiles.GetInformation().Get(tiles.DATA_TIME_STEP())]
+    if chosen != step:
+        print(f"note: {steps.text(step)} is not in the record; showing {steps.text(chosen)}", file=sys.stderr)
+        step = chosen
+    tag = steps.tag(step)
     per_gauge = tiles_by_gauge(tiles)
     write_weights(per_gauge, gauges, os.path.join(args.out, f"weights_{tag}.csv"))
     writer = vtkXMLPolyDataWriter()
@@ -801,23 +901,24 @@ def main(argv=None):
     writer.SetInputData(tiles)
     writer.Write()
 
-    row = next(r for r in rows if (r[0], r[1]) == (year, month))
+    used, weighted, mean = next(r[-3:] for r in rows if tuple(r[:-3]) == step)
     if not args.no_plots:
-        if row[2] == 0:
-            title = f"{year}-{month:02d}: no gauge reported (Thiessen areal mean nan)"
+        if used == 0:
+            title = f"{steps.text(step)}: no gauge reported (Thiessen areal mean nan)"
         else:
-            title = (f"{year}-{month:02d}: Thiessen areal mean {row[4]:.3f} from {row[3]} of {row[2]} "
+            title = (f"{steps.text(step)}: Thiessen areal mean {mean:.3f} from {weighted} of {used} "
                      f"reporting gauges")
-        plot_map(per_gauge, gauges, outline, reporting.get((year, month), set()), title,
-                 os.path.join(args.out, f"map_{tag}.png"))
+        plot_map(per_gauge, gauges, outline, reporting.get(step, set()), title,
+                 os.path.join(args.out, f"map_{tag}.png"), steps.unit)
         plot_series(rows, os.path.join(args.out, "areal_mean.png"))
 
-    valid = [r[4] for r in rows if not math.isnan(r[4])]
-    print(f"{len(rows)} months, {len(valid)} with data"
-          + (f"; mean of the monthly areal means {sum(valid) / len(valid):.3f}" if valid else ""))
-    print(f"{year}-{month:02d}: areal mean {row[4]:.3f}, {row[2]} gauges reported, "
-          f"{row[3]} weighted; weights sum to {sum(e['weight'] for e in per_gauge.values()):.12f}")
-    print(f"wrote {args.out}/areal_mean.csv, weights_all_months.csv, weights_{tag}.csv, tiles_{tag}.vtp"
+    valid = [r[-1] for r in rows if not math.isnan(r[-1])]
+    print(f"{len(rows)} {steps.unit}s, {len(valid)} with data"
+          + (f"; mean of the {'daily' if steps.daily else 'monthly'} areal means {sum(valid) / len(valid):.3f}"
+             if valid else ""))
+    print(f"{steps.text(step)}: areal mean {mean:.3f}, {used} gauges reported, "
+          f"{weighted} weighted; weights sum to {sum(e['weight'] for e in per_gauge.values()):.12f}")
+    print(f"wrote {args.out}/areal_mean.csv, {all_weights}, weights_{tag}.csv, tiles_{tag}.vtp"
           + ("" if args.no_plots else f", map_{tag}.png, areal_mean.png")
           + f", unused_inputs.csv ({unused} input(s) not used)")
 

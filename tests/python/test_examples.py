@@ -480,7 +480,7 @@ def test_the_time_series_breaks_at_months_without_a_mean():
     example = import_example()
     rows = [(2001, 11, 2, 2, 1.5), (2001, 12, 0, 0, math.nan), (2002, 1, 1, 1, 2.0), (2002, 3, 1, 1, 3.0),
             (2002, 4, 2, 1, 4.0)]
-    times, means, used = example.monthly_series(rows)
+    times, means, used = example.step_series(rows)
     expected = [example.decimal_time(y, m) for y, m in ((2001, 11), (2001, 12), (2002, 1), (2002, 2), (2002, 3),
                                                          (2002, 4))]
     assert_that(times == expected, f"times {times}, expected {expected}")
@@ -606,6 +606,81 @@ def test_files_of_semicolons_or_tabs_with_decimal_commas():
                                  catchment=catchment, what="a decimal comma in a file of commas", status=1,
                                  plots=False)
         assert_that(f"{split}:2: 5 field(s) where the header has 4" in stderr, f"a comma file's 12,5: {stderr}")
+
+
+def test_daily_observations_give_daily_means():
+    # Observations of days, by a date column or by year, month and day columns, give a mean a
+    # day, every day from the first to the last (2001-01-31 has no row), each that of the day's
+    # values given alone as a month; --day chooses the day of the weights, tiles and map.
+    days = {(2001, 1, 30): {"N1": 1.5, "N2": 2.5, "N3": 4.0, "N5": 0.0},
+            (2001, 2, 1): {"N1": 3.0, "N4": 1.25, "N6": 9.0},
+            (2001, 2, 2): {"N2": 0.5, "N3": 7.0, "N4": 2.0, "N5": 3.5}}
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, _ = write_lake_basin(directory)
+        by_date = write(directory, "by_date.csv", "station_id,date,precip\n" + "".join(
+            f"{s},{y}-{m:02d}-{d:02d},{v}\n" for (y, m, d), values in days.items() for s, v in values.items()))
+        by_columns = write(directory, "by_columns.csv", "station_id,year,month,day,precip\n" + "".join(
+            f"{s},{y},{m},{d},{v}\n" for (y, m, d), values in days.items() for s, v in values.items()))
+        outputs = []
+        for observations in (by_date, by_columns):
+            out = os.path.join(directory, os.path.basename(observations)[:-4])
+            stdout, stderr = run_colorado(out, stations=stations, observations=observations, catchment=catchment,
+                                          day="2001-02-01", what=observations)
+            files = {}
+            for file in ("areal_mean.csv", "weights_all_days.csv", "weights_2001_02_01.csv", "map_2001_02_01.png",
+                         "areal_mean.png", "unused_inputs.csv", "tiles_2001_02_01.vtp"):
+                with open(os.path.join(out, file), "rb") as f:
+                    files[file] = f.read()
+            outputs.append((files, stdout.replace(out, "OUT"), stderr.replace(observations, "OBS")))
+            assert_that("4 days, 3 with data" in stdout and "2001-02-01: areal mean" in stdout, f"stdout: {stdout}")
+            assert_that("1 day(s) between 2001-01-30 and 2001-02-02 have no row of a gauge's station" in stderr,
+                        f"the day without rows: {stderr}")
+        for file in outputs[0][0]:
+            if not file.endswith(".vtp"):  # (the .vtp files hold no path, but compare them as tiles below)
+                assert_that(outputs[0][0][file] == outputs[1][0][file], f"{file} differs between date and day columns")
+        assert_that(outputs[0][1:] == outputs[1][1:], f"the messages differ: {outputs[0][1:]} against {outputs[1][1:]}")
+        out = os.path.join(directory, "by_date")
+        means = read_csv(os.path.join(out, "areal_mean.csv"))
+        assert_that([tuple(int(r[k]) for k in ("year", "month", "day")) for r in means]
+                    == [(2001, 1, 30), (2001, 1, 31), (2001, 2, 1), (2001, 2, 2)], f"the days: {means}")
+        weights = read_csv(os.path.join(out, "weights_all_days.csv"))
+        for r in means:
+            day = tuple(int(r[k]) for k in ("year", "month", "day"))
+            listed = [w for w in weights if tuple(int(w[k]) for k in ("year", "month", "day")) == day]
+            values = days.get(day, {})
+            assert_that(int(r["stations_used"]) == len(values) and int(r["stations_weighted"]) == len(listed),
+                        f"{day}: {r}, {len(listed)} weighted")
+            if not values:
+                assert_that(r["areal_mean"] == "", f"{day}: a mean without a report: {r}")
+                continue
+            assert_close(math.fsum(float(w["weight"]) * float(w["precip"]) for w in listed), float(r["areal_mean"]),
+                         1e-12, f"{day}: weights times values")
+            # The day's values alone, as a month: the same gauges, so the same mean.
+            alone = write(directory, "alone.csv", "station_id,year,month,precip\n" + "".join(
+                f"{s},2001,1,{v}\n" for s, v in values.items()))
+            run_colorado(os.path.join(directory, "alone"), stations=stations, observations=alone, catchment=catchment,
+                         month="2001-01", plots=False, what=f"{day} as a month")
+            month = read_csv(os.path.join(directory, "alone", "areal_mean.csv"))
+            assert_close(float(month[0]["areal_mean"]), float(r["areal_mean"]), 1e-12, f"{day} against its month")
+        tiles = read_polydata(os.path.join(out, "tiles_2001_02_01.vtp"))
+        assert_that(tiles.GetNumberOfCells() > 0, "the day's tiles")
+        # Bad days are named; --day is for days only.
+        cases = [
+            ("station_id,date,precip\nN1,2001-02-29,1\n", {}, "column 'date': '2001-02-29' is not a date of the calendar"),
+            ("station_id,date,precip\nN1,2001-02-28,1\nN2,2001-03,2\n", {},
+             "column 'date': '2001-03' is a month, where line 2 gives a day"),
+            ("station_id,date,precip\nN1,Feb 2 2001,1\n", {}, "'Feb 2 2001' is not a date (YYYY-MM-DD"),
+            ("station_id,year,month,day,precip\nN1,2001,2,29,1\n", {}, "column 'day': 29 is not a day of 2001-02"),
+            ("station_id,date,year,month,precip\nN1,2001-02-03,2001,2,1\n", {}, "both a date column and year/month"),
+            ("station_id,when,precip\nN1,2001-02-03,1\n", {}, "no columns year and month, nor a date column"),
+            ("station_id,year,month,precip\nN1,2001,2,1\n", {"day": "2001-02-01"}, "are monthly (use --month)"),
+            ("station_id,date,precip\nN1,2001-02-03,1\n", {"day": "2001-02-30"}, "--day '2001-02-30': expected a date"),
+        ]
+        for text, options, fragment in cases:
+            bad = write(directory, "bad.csv", text)
+            _, stderr = run_colorado(os.path.join(directory, "bad"), stations=stations, observations=bad,
+                                     catchment=catchment, what=text, status=1, plots=False, **options)
+            assert_that(fragment in stderr and "Traceback" not in stderr, f"{text!r}: {fragment!r} not in {stderr!r}")
 
 
 def test_the_field_separator_is_the_headers_commonest_mark():
@@ -1050,6 +1125,7 @@ if __name__ == "__main__":
          test_the_time_series_breaks_at_months_without_a_mean,
          test_ids_without_their_leading_zeros_match_as_in_the_filter,
          test_files_of_semicolons_or_tabs_with_decimal_commas,
+         test_daily_observations_give_daily_means,
          test_the_field_separator_is_the_headers_commonest_mark,
          test_small_values_and_a_catchment_across_the_antimeridian,
          test_observations_of_no_gauge_end_the_run,
