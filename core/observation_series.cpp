@@ -13,8 +13,9 @@ std::string StationKey(std::string id)
 {
   const auto isDigit = [](char c) { return c >= '0' && c <= '9'; };
   // "102.0" or "102.": a whole-number id as a program writes a numeric column with a gap (pandas
-  // makes such an integer column floating point), the same station as 102 and 0102.
-  const std::size_t point = id.find('.');
+  // makes such an integer column floating point), the same station as 102 and 0102; "102,0" as
+  // it writes one with decimal commas.
+  const std::size_t point = id.find_first_of(".,");
   if (point != std::string::npos && point > 0 &&
     std::all_of(id.begin(), id.begin() + std::ptrdiff_t(point), isDigit) &&
     id.find_first_not_of('0', point + 1) == std::string::npos)

@@ -85,6 +85,67 @@ bool PairByAngle(const std::vector<std::pair<std::int64_t, std::int64_t>>& segme
   return true;
 }
 
+/// Per segment, whether it lies on a closed path of the segments: the others, dead ends and the
+/// chains that lead to them, are cut away from each point left with one segment, point by point.
+/// A contour through a saddle may have closed lobes and open branches there (to the edge of its
+/// domain): pairing by angle among the lobes' segments alone keeps the lobes, whatever the
+/// picture's rotation (a lobe's side was paired with a branch, and both were lost, in some
+/// rotations). ends: both ends of each proper segment, sorted by point.
+std::vector<char> OffDeadEnds(const std::vector<std::pair<std::int64_t, std::int64_t>>& segments,
+  const std::vector<End>& ends)
+{
+  std::vector<char> live(segments.size(), 0);
+  std::vector<std::size_t> groupBegin; // point g's ends: ends[groupBegin[g], groupBegin[g + 1])
+  std::vector<std::size_t> groupOfEnd(ends.size());
+  std::vector<std::size_t> otherEnd(ends.size()); // the place in ends of the segment's other end
+  std::vector<std::size_t> firstEndAt(segments.size());
+  for (std::size_t k = 0; k < ends.size(); ++k)
+  {
+    if (k == 0 || ends[k].Point != ends[k - 1].Point)
+    {
+      groupBegin.push_back(k);
+    }
+    groupOfEnd[k] = groupBegin.size() - 1;
+    const std::size_t s = ends[k].Segment;
+    if (live[s])
+    {
+      otherEnd[k] = firstEndAt[s];
+      otherEnd[firstEndAt[s]] = k;
+    }
+    live[s] = 1;
+    firstEndAt[s] = k;
+  }
+  groupBegin.push_back(ends.size());
+  std::vector<std::size_t> degree(groupBegin.size() - 1), loose;
+  for (std::size_t g = 0; g + 1 < groupBegin.size(); ++g)
+  {
+    degree[g] = groupBegin[g + 1] - groupBegin[g];
+    if (degree[g] == 1)
+    {
+      loose.push_back(g);
+    }
+  }
+  while (!loose.empty())
+  {
+    const std::size_t g = loose.back();
+    loose.pop_back();
+    for (std::size_t k = groupBegin[g]; degree[g] == 1 && k < groupBegin[g + 1]; ++k)
+    {
+      if (live[ends[k].Segment])
+      {
+        live[ends[k].Segment] = 0;
+        degree[g] = 0;
+        const std::size_t h = groupOfEnd[otherEnd[k]];
+        if (--degree[h] == 1)
+        {
+          loose.push_back(h);
+        }
+      }
+    }
+  }
+  return live;
+}
+
 /// Appends the closed walk `walk` (point ids, the first not repeated) to result as rings in which
 /// no point stands twice: where the walk comes back to a point it stood on, the loop since then
 /// is a ring of its own (the segments, and so the even-odd region, are the same).
@@ -140,17 +201,24 @@ SegmentRings JoinSegments(const std::vector<std::pair<std::int64_t, std::int64_t
     }
   }
   std::sort(ends.begin(), ends.end());
+  // With places, only the segments on closed paths are paired (the others stay unjoined).
+  const std::vector<char> live = places ? OffDeadEnds(segments, ends) : std::vector<char>(count, 1);
   // Per segment and end (0: first, 1: second), the other segment at that point, or -1 when the
   // point has not exactly two segments (nor, with places, an even number paired by angle).
   std::vector<std::int64_t> across(2 * count, -1);
   bool junctions = false; // whether a walk may come back to a point
   for (std::size_t k = 0; k < ends.size();)
   {
-    std::size_t last = k;
-    while (last < ends.size() && ends[last].Point == ends[k].Point)
+    std::size_t end = k;
+    while (end < ends.size() && ends[end].Point == ends[k].Point)
     {
-      ++last;
+      ++end;
     }
+    // The point's live ends first: [k, last).
+    const std::size_t last = std::size_t(std::stable_partition(ends.begin() + std::ptrdiff_t(k),
+                                           ends.begin() + std::ptrdiff_t(end),
+                                           [&live](const End& e) { return live[e.Segment] != 0; }) -
+      ends.begin());
     if (last - k == 2)
     {
       const std::size_t s = ends[k].Segment, t = ends[k + 1].Segment;
@@ -164,7 +232,7 @@ SegmentRings JoinSegments(const std::vector<std::pair<std::int64_t, std::int64_t
     {
       junctions = PairByAngle(segments, *places, ends, k, last, across) || junctions;
     }
-    k = last;
+    k = end;
   }
   // Walk each cycle of pairs once: from segment `start` along its direction, entering each next
   // segment at the shared point. A walk that meets a point without a partner fails; so does every

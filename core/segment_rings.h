@@ -8,9 +8,11 @@
 //     |   |        give the ring a, b, c, d (the first segment's direction);
 //     d---c        a chain that ends, or a point where three segments meet, gives none.
 //
-// Where four (six, ...) segments meet, as where a contour passes through a saddle point, segments
-// given by their ends are paired by angle, each with the next round the point, so that the rings
-// touch there and never cross; a ring that then comes back to a point is cut there into two:
+// Segments given by their ends are first cut back to their closed paths: a chain that ends (an
+// open branch of a contour, a spur off a ring) is unjoined, and the rings through the point it
+// left are joined without it. Where four (six, ...) segments meet, as where a contour passes
+// through a saddle point, they are paired by angle, each with the next round the point, so that the
+// rings touch there and never cross; a ring that then comes back to a point is cut there into two:
 //
 //     +---+            the eight segments of two squares meeting at their corner p
 //     |   |            give the two squares, touching at p (by the even-odd rule the region
@@ -34,9 +36,9 @@ struct SegmentRings
   std::vector<std::size_t> Offsets{ 0 };
   std::vector<std::int64_t> Ids;
   /// Indices (into the segments given) of the segments in no ring, ascending: those of a chain
-  /// that does not close, and so of every chain through a point of other than two segments
-  /// (JoinSegmentsIntoRings) or of an odd number of them (JoinSegmentsAtEqualEnds), and those
-  /// whose two ends are one point.
+  /// that does not close, and of every chain through a point of other than two segments
+  /// (JoinSegmentsIntoRings; JoinSegmentsAtEqualEnds: through a point of an odd number of segments
+  /// on closed paths, or a junction it cannot pair), and those whose two ends are one point.
   std::vector<std::size_t> Unjoined;
 };
 
@@ -59,10 +61,11 @@ struct PointRings
 /// Joins segments given by their ends (segment s from ends[2s] to ends[2s + 1]) into closed rings,
 /// ends meeting where their coordinates are equal: a contour keeps one point id per point, but
 /// line features read from a file may repeat a point under two ids. As JoinSegmentsIntoRings,
-/// but where an even number of segments, four or more, meet at a point they are paired by angle
-/// (exactly: orient2d), and no ring stands on a point twice (see the sketch above). A chain stays
-/// unjoined where it passes through a point of an odd number of segments, or through a junction
-/// where two segments leave in one direction or one has a NaN end.
+/// but chains that end are cut away first (unjoined), where an even number of the remaining
+/// segments, four or more, meet at a point they are paired by angle (exactly: orient2d), and no
+/// ring stands on a point twice (see the sketches above). A closed path stays unjoined where it
+/// passes through a point of an odd number of such segments (three paths between two points), or
+/// through a junction where two segments leave in one direction or one has a NaN end.
 PointRings JoinSegmentsAtEqualEnds(const std::vector<Point2>& ends);
 
 } // namespace tessera

@@ -101,10 +101,10 @@ class Steps:
 def station_key(station_id):
     """A station id as vtkThiessenArealAverage matches it: trimmed of spaces, tabs and quotes and,
     for an integer id (digits only), without its leading zeros, so that "050109" and 50109 (the
-    same id after a spreadsheet dropped its zeros) are one station, as is 50109.0 (a whole-number
-    column with gaps as pandas writes it); any other id as its text."""
+    same id after a spreadsheet dropped its zeros) are one station, as is 50109.0 (or 50109,0: a
+    whole-number column with gaps as pandas writes it); any other id as its text."""
     text = station_id.strip(" \t\"")
-    whole = re.fullmatch(r"([0-9]+)\.0*", text)
+    whole = re.fullmatch(r"([0-9]+)[.,]0*", text)
     if whole:
         text = whole.group(1)
     if text and all("0" <= c <= "9" for c in text):

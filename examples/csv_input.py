@@ -2,7 +2,8 @@
 before any row is read, a value that is not a number is named with its file, line and column, and
 missing values (an empty field, NA, N/A, #N/A, NaN, null, in any case) are told apart from bad ones.
 Fields may be separated by commas, or by semicolons or tabs as a spreadsheet set to a European
-locale saves them; in such a file a number may be written with a decimal comma (12,5).
+locale saves them; in such a file numbers may be written with decimal commas (12,5), and then
+none may have a point (1.234 would be digit grouping: named, not read as 1.234).
 Every failure ends the script with one line naming what is wrong and where, never a traceback;
 catch_vtk_messages() and vtk_message_text() give a script the VTK filters' messages as text, so
 that it reports a value the filters reject in such a line too, not as VTK's log; output_directory()
@@ -68,7 +69,8 @@ def rows(path, required, what, optional=()):
     if text.lstrip().startswith(("{", "[")):
         fail(f"{path}: the {what} file is not a CSV file (it starts like JSON or GeoJSON; "
              f"expected a header line such as {','.join(required)})")
-    delimiter = header_delimiter(text)
+    delimiter = header_delimiter(text, (*required,))
+    decimal_comma = delimiter != "," and has_decimal_commas(text, delimiter)
     reader = csv.DictReader(io.StringIO(text, newline=""), delimiter=delimiter, strict=True)
     try:
         columns = named_columns([name.strip() for name in reader.fieldnames or []],
@@ -89,7 +91,7 @@ def rows(path, required, what, optional=()):
                 fields = len(columns) + len(row.get(None) or []) - list(row.values()).count(None)
                 fail(f"{path}:{reader.line_num}: {fields} field(s) where the header has "
                      f"{len(columns)} ({', '.join(columns)})")
-            yield reader.line_num, Row(row, decimal_comma=delimiter != ",")
+            yield reader.line_num, Row(row, decimal_comma=decimal_comma)
     except csv.Error as error:  # e.g. a quote opened and never closed
         # The underlying reader's count: the lines read up to the error (the DictReader's own
         # line_num is that of the last record it returned, 0 while the header is read).
@@ -101,27 +103,46 @@ SEPARATORS_TEXT = "fields separated by commas, or by semicolons or tabs with dec
 
 
 class Row(dict):
-    """A record of rows(): its header's names to its fields. decimal_comma: whether its numbers
-    may be written with a decimal comma (the file's fields are not separated by commas)."""
+    """A record of rows(): its header's names to its fields. decimal_comma: whether its file's
+    numbers are written with decimal commas (has_decimal_commas)."""
 
     def __init__(self, fields, decimal_comma=False):
         super().__init__(fields)
         self.decimal_comma = decimal_comma
 
 
-def header_delimiter(text):
+def header_delimiter(text, required=()):
     """The mark that separates the fields: of a comma, a semicolon (what a spreadsheet set to a
-    locale with a decimal comma saves as CSV) and a tab, the one the header line holds most of; a
-    comma where it holds none (a file of one column)."""
+    locale with a decimal comma saves as CSV) and a tab, the first with which the header line,
+    read as CSV (quotes kept together), has every required column (in any case); else the one it
+    holds most of, a comma where it holds none (a file of one column)."""
     header = next((line for line in text.splitlines() if line.strip()), "")
+    wanted = {name.lower() for name in required}
+    for mark in DELIMITERS:
+        try:
+            names = {name.strip().lower() for name in next(csv.reader([header], delimiter=mark), [])}
+        except csv.Error:
+            continue
+        if wanted and wanted <= names:
+            return mark
     return max(DELIMITERS, key=header.count)
 
 
+def has_decimal_commas(text, delimiter):
+    """Whether a field of the text (separated by delimiter, not a comma) is a number written with a
+    decimal comma (12,5 or -0,25e-3, unquoted): then the file's numbers are read so, and a point in
+    one is named as digit grouping rather than read as a decimal point (1.234 is 1234 where 12,5 is
+    12.5). A file of only points (semicolons or tabs with 12.5) reads them as decimal points."""
+    mark = re.escape(delimiter)
+    field = rf"(?:^|{mark})[ \t]*[+-]?[0-9]*,[0-9]+(?:[eE][+-]?[0-9]+)?[ \t]*(?={mark}|\r?$)"
+    return re.search(field, text, re.MULTILINE) is not None
+
+
 def decimal_point_text(text, row):
-    """The field's text with a decimal comma made a point, in a row that may have one
-    (Row.decimal_comma; 12,5 is 12.5 there); None for a text that has both marks (1.234,5: digit
+    """The field's text with its decimal comma made a point, in a row of a file of decimal commas
+    (Row.decimal_comma; 12,5 is 12.5 there); None for a text with a point there (1.234: digit
     grouping, which is no number here)."""
-    if getattr(row, "decimal_comma", False) and "," in text:
+    if getattr(row, "decimal_comma", False):
         return None if "." in text else text.replace(",", ".")
     return text
 
@@ -154,8 +175,8 @@ def number(row, column, path, line):
     text = row.get(column)
     plain = decimal_point_text((text or "").strip(), row)
     if plain is None:
-        fail(f"{path}:{line}: column {column!r}: {text!r} has both a decimal comma and a point "
-             "(write it without digit grouping: 1234,5)")
+        fail(f"{path}:{line}: column {column!r}: {text!r} has a point, where the file's numbers have "
+             "decimal commas (a point there is digit grouping: write the number without it, 1234,5)")
     try:
         if "_" in plain:  # float() takes Python's digit groups: 1_5 would be 15
             raise ValueError

@@ -168,9 +168,9 @@ struct Rings
 /// line cells and open polylines form end to end (a contour, as vtkCutter or ParaView's Contour
 /// gives it: core segment_rings.h, ends matched by coordinates; where four or six lines meet, as
 /// at a saddle, they are paired by angle into rings that touch there). Other cells, and lines in no
-/// closed ring (a chain through a point of three lines), are counted in SkippedCells; blocks of another type with cells are listed in
-/// SkippedBlocks. Throws tessera::InputError when there is no ring (naming the input's type when
-/// it is a data set other than vtkPolyData: only poly data is read).
+/// closed ring (an open branch, a spur off a ring), are counted in SkippedCells; blocks of another
+/// type with cells are listed in SkippedBlocks. Throws tessera::InputError when there is no ring
+/// (naming the input's type when it is a data set other than vtkPolyData: only poly data is read).
 Rings ReadPolygonRings(vtkDataObject* data);
 
 /// error's message followed by where its rings came from: "... (ring 2 is cell 4 of the window

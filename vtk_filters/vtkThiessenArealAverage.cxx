@@ -369,12 +369,12 @@ ObservationRows ReadRows(vtkTable* table,
   return rows;
 }
 
-/// Whether text (spaces around it aside) is digits, one comma and digits, as a number with a
+/// Whether text (spaces and tabs around it aside) is digits, one comma and digits, as a number with a
 /// decimal comma reads: what a CSV file saved in a European locale holds (12,5).
 bool LooksLikeDecimalComma(const std::string& text)
 {
-  const std::size_t first = text.find_first_not_of(' ');
-  const std::size_t last = text.find_last_not_of(' ');
+  const std::size_t first = text.find_first_not_of(" \t");
+  const std::size_t last = text.find_last_not_of(" \t");
   if (first == std::string::npos)
   {
     return false;

@@ -58,6 +58,9 @@ TEST(ObservationSeries, StationKeyDropsLeadingZerosOfIntegerIdsOnly)
   EXPECT_EQ(StationKey("07.0"), "7");
   EXPECT_EQ(StationKey("050109.000"), "50109");
   EXPECT_EQ(StationKey("102."), "102");
+  EXPECT_EQ(StationKey("0102,00"), "102"); // (decimal comma)
+  EXPECT_EQ(StationKey("7,5"), "7,5");
+  EXPECT_EQ(StationKey("7.,0"), "7.,0");
   EXPECT_EQ(StationKey("0.0"), "0");
   EXPECT_EQ(StationKey("7.01"), "7.01");
   EXPECT_EQ(StationKey("7.0.0"), "7.0.0");

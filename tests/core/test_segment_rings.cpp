@@ -311,10 +311,12 @@ TEST(SegmentRings, RingsMeetingAtAPointAreJoinedTouching)
   EXPECT_EQ(JoinSegmentsIntoRings(ids).Unjoined.size(), 8u);
 }
 
-// Where three segments meet, or two of four leave in one direction (overlapping), or a far end is
-// NaN, no pairing makes rings that validation accepts: those chains stay unjoined, and a ring
-// elsewhere is still joined.
-TEST(SegmentRings, OddJunctionsOverlapsAndNaNEndsStayUnjoined)
+// Dead ends, and the chains that lead to them, stay unjoined, and the closed paths through their
+// points are joined without them: a square with a spur at a corner, or a lobe with two open
+// branches at its corner (as a contour at a saddle's level whose branches reach its domain's edge),
+// in each of four rotations. Where two of four segments leave in one direction (overlapping), or a
+// far end is NaN, the chains through that point stay unjoined; a ring elsewhere is joined.
+TEST(SegmentRings, DeadEndsOverlapsAndNaNEndsStayUnjoined)
 {
   const double nan = std::nan("");
   // The ends of the sides of closed rings, in order.
@@ -330,38 +332,54 @@ TEST(SegmentRings, OddJunctionsOverlapsAndNaNEndsStayUnjoined)
     }
     return ends;
   };
-  const std::vector<Point2> ring = closed({ { { 20, 0 }, { 21, 0 }, { 21, 1 } } });
-  // A square (0,0)-(1,1) with a spur from (1,1) to (2,2): three segments at (1,1).
+  const std::vector<Point2> apart{ { 20, 0 }, { 21, 0 }, { 21, 1 } };
+  const auto joinedWith = [&](std::vector<Point2> junk)
+  {
+    std::vector<Point2> ends = closed({ apart });
+    ends.insert(ends.end(), junk.begin(), junk.end());
+    return JoinSegmentsAtEqualEnds(ends);
+  };
+  const auto rotated = [](std::vector<Point2> points, int quarterTurns)
+  {
+    for (Point2& p : points)
+    {
+      for (int q = 0; q < quarterTurns; ++q)
+      {
+        p = { -p.y, p.x };
+      }
+    }
+    return points;
+  };
+  // A square (0,0)-(1,1) with a spur from (1,1) to (2,2); a lobe with branches to (-3,0), (0,-3).
   std::vector<Point2> spur = closed({ { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } });
   spur.insert(spur.end(), { { 1, 1 }, { 2, 2 } });
-  // Two triangles at (0,0) whose sides from it to (1,0) and (2,0) run along one direction.
-  const std::vector<Point2> overlap =
-    closed({ { { 0, 0 }, { 1, 0 }, { 0, 1 } }, { { 0, 0 }, { 2, 0 }, { 0, -1 } } });
-  // Two triangles at (0,0), one of whose far ends is NaN.
-  const std::vector<Point2> withNaN =
-    closed({ { { 0, 0 }, { 1, 0 }, { 0, 1 } }, { { 0, 0 }, { nan, 0 }, { 0, -1 } } });
-  for (const auto& junk : { spur, overlap, withNaN })
+  std::vector<Point2> branches = closed({ { { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } } });
+  branches.insert(branches.end(), { { -3, 0 }, { 0, 0 }, { 0, 0 }, { 0, -3 } });
+  for (const auto& [junk, deadSegments] : { std::make_pair(spur, std::vector<std::size_t>{ 7 }),
+         std::make_pair(branches, std::vector<std::size_t>{ 7, 8 }) })
   {
-    std::vector<Point2> ends = ring;
-    ends.insert(ends.end(), junk.begin(), junk.end());
-    const PointRings rings = JoinSegmentsAtEqualEnds(ends);
-    ASSERT_EQ(rings.Offsets.size(), 2u);
-    EXPECT_EQ(rings.Vertices, (std::vector<Point2>{ { 20, 0 }, { 21, 0 }, { 21, 1 } }));
-    std::vector<std::size_t> expected;
-    for (std::size_t s = 3; s < ends.size() / 2; ++s)
+    for (int q = 0; q < 4; ++q)
     {
-      expected.push_back(s);
-    }
-    if (&junk == &withNaN)
-    {
-      // The NaN ends meet nothing: its two segments are chains of their own, as is the rest.
-      EXPECT_EQ(rings.Unjoined.size(), expected.size());
-    }
-    else
-    {
-      EXPECT_EQ(rings.Unjoined, expected);
+      const PointRings rings = joinedWith(rotated(junk, q));
+      ASSERT_EQ(rings.Offsets.size(), 3u) << "rotation " << q;
+      EXPECT_EQ(RingsOf(rings)[0], apart);
+      EXPECT_EQ(PointSets({ RingsOf(rings)[1] }),
+        PointSets({ rotated({ { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } }, q) }));
+      EXPECT_EQ(rings.Unjoined, deadSegments) << "rotation " << q;
     }
   }
+  // Two triangles at (0,0) whose sides from it to (1,0) and (2,0) run along one direction.
+  const PointRings overlap =
+    joinedWith(closed({ { { 0, 0 }, { 1, 0 }, { 0, 1 } }, { { 0, 0 }, { 2, 0 }, { 0, -1 } } }));
+  ASSERT_EQ(overlap.Offsets.size(), 2u);
+  EXPECT_EQ(overlap.Unjoined, (std::vector<std::size_t>{ 3, 4, 5, 6, 7, 8 }));
+  // Two triangles at (0,0), one of whose far ends is NaN: its NaN ends meet nothing, so its
+  // three segments are a dead chain, and the other triangle is joined.
+  const PointRings withNaN =
+    joinedWith(closed({ { { 0, 0 }, { 1, 0 }, { 0, 1 } }, { { 0, 0 }, { nan, 0 }, { 0, -1 } } }));
+  ASSERT_EQ(withNaN.Offsets.size(), 3u);
+  EXPECT_EQ(RingsOf(withNaN)[1], (std::vector<Point2>{ { 0, 0 }, { 1, 0 }, { 0, 1 } }));
+  EXPECT_EQ(withNaN.Unjoined, (std::vector<std::size_t>{ 6, 7, 8 }));
 }
 
 // Random sets of black squares of a checkerboard, which meet only at corners (four segments

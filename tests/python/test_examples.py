@@ -595,11 +595,23 @@ def test_files_of_semicolons_or_tabs_with_decimal_commas():
                 assert_that(outputs[kind][0][file] == outputs["commas"][0][file], f"{kind}: {file} differs")
             assert_that(outputs[kind][1:] == outputs["commas"][1:],
                         f"{kind}: the messages differ: {outputs[kind][1:]} against {outputs['commas'][1:]}")
-        grouped = write(directory, "grouped.csv", "station_id;year;month;precip\nN1;2001;1;1.234,5\n")
+        # A file of decimal commas has no decimal points: 1.234 there is digit grouping, named (read
+        # as 1.234 the mean changed without a word); 1.234,5 is no number either.
+        grouped = write(directory, "grouped.csv", "station_id;year;month;precip\nN1;2001;1;12,5\nN2;2001;1;1.234\n")
         _, stderr = run_colorado(os.path.join(directory, "grouped"), stations=stations, observations=grouped,
                                  catchment=catchment, what="digit grouping", status=1, plots=False)
-        assert_that(f"{grouped}:2: column 'precip': '1.234,5' has both a decimal comma and a point" in stderr,
-                    f"digit grouping: {stderr}")
+        assert_that(f"{grouped}:3: column 'precip': '1.234' has a point, where the file's numbers have decimal "
+                    "commas" in stderr, f"digit grouping: {stderr}")
+        both = write(directory, "both.csv", "station_id;year;month;precip\nN1;2001;1;1.234,5\n")
+        _, stderr = run_colorado(os.path.join(directory, "both"), stations=stations, observations=both,
+                                 catchment=catchment, what="both marks", status=1, plots=False)
+        assert_that(f"{both}:2: column 'precip': '1.234,5' is not a number" in stderr, f"both marks: {stderr}")
+        # Semicolons with decimal points (as some agencies publish) read the points as decimal points.
+        points = write(directory, "points.csv", "station_id;year;month;precip\nN1;2001;1;1.234\n")
+        run_colorado(os.path.join(directory, "points"), stations=stations, observations=points,
+                     catchment=catchment, what="semicolons and points", plots=False)
+        means = read_csv(os.path.join(directory, "points", "areal_mean.csv"))
+        assert_that(means[0]["areal_mean"] == "1.234", f"semicolons and points: {means}")
         # In a file of commas a decimal comma splits the field: the count of fields is named.
         split = write(directory, "split.csv", "station_id,year,month,precip\nN1,2001,1,12,5\n")
         _, stderr = run_colorado(os.path.join(directory, "split"), stations=stations, observations=split,
@@ -683,17 +695,31 @@ def test_daily_observations_give_daily_means():
             assert_that(fragment in stderr and "Traceback" not in stderr, f"{text!r}: {fragment!r} not in {stderr!r}")
 
 
-def test_the_field_separator_is_the_headers_commonest_mark():
+def test_the_field_separator_and_the_decimal_mark():
     csv_input = import_example("csv_input")
-    cases = [("a,b;c", ","), ("a;b;c,d", ";"), ("a\tb\tc", "\t"), ("a;b\tc", ";"), ("single", ","),
-             ("\n\n  \nx;y\n1,5;2\n", ";"), ("", ",")]
-    for header, expected in cases:
-        got = csv_input.header_delimiter(header)
+    # The separator with which the header has the required columns (quotes kept together), else
+    # the header's commonest mark.
+    required = ("station_id", "lon", "lat")
+    cases = [("a,b;c", (), ","), ("a;b;c,d", (), ";"), ("a\tb\tc", (), "\t"), ("a;b\tc", (), ";"),
+             ("single", (), ","), ("\n\n  \nx;y\n1,5;2\n", (), ";"), ("", (), ","),
+             ('station_id,lon,lat,"notes; source; qc; flags"', required, ","),
+             ('Station_ID;lon;lat;"elev, m, asl"', required, ";"), ("station_id\tlon\tlat\tname, place", required, "\t"),
+             ("id;lon;lat", required, ";")]
+    for header, wanted, expected in cases:
+        got = csv_input.header_delimiter(header, wanted)
         assert_that(got == expected, f"{header!r}: {got!r}, expected {expected!r}")
+    # A file of semicolons or tabs has decimal commas when a field is a number written with one.
+    for text, delimiter, expected in (("a;b\n1;12,5\n", ";", True), ("a;b\n1;12.5\n", ";", False),
+                                      ("a\tb\n-0,25e-3\t1\r\n", "\t", True), ("a;b\nLake, north;1\n", ";", False),
+                                      ("a;b\n1,5,5;1\n", ";", False), ('a;b\n"1,5";1\n', ";", False),
+                                      ("a;b\n1;1.234,5\n", ";", False)):
+        got = csv_input.has_decimal_commas(text, delimiter)
+        assert_that(got == expected, f"{text!r}: decimal commas {got}, expected {expected}")
     comma_row, semicolon_row = csv_input.Row({"v": "1,5"}), csv_input.Row({"v": "1,5"}, decimal_comma=True)
     assert_that(csv_input.decimal_point_text("1,5", semicolon_row) == "1.5", "1,5 in a file of semicolons")
     assert_that(csv_input.decimal_point_text("1,5", comma_row) == "1,5", "1,5 in a file of commas is left")
     assert_that(csv_input.decimal_point_text("1.234,5", semicolon_row) is None, "digit grouping is no number")
+    assert_that(csv_input.decimal_point_text("1.234", semicolon_row) is None, "a point among decimal commas")
     assert_that(csv_input.number(semicolon_row, "v", "f.csv", 2) == 1.5, "number() of 1,5")
     assert_that(csv_input.integer(csv_input.Row({"y": "1963,0"}, True), "y", "f.csv", 2, 1, 9999) == 1963,
                 "integer() of 1963,0")
@@ -1126,7 +1152,7 @@ if __name__ == "__main__":
          test_ids_without_their_leading_zeros_match_as_in_the_filter,
          test_files_of_semicolons_or_tabs_with_decimal_commas,
          test_daily_observations_give_daily_means,
-         test_the_field_separator_is_the_headers_commonest_mark,
+         test_the_field_separator_and_the_decimal_mark,
          test_small_values_and_a_catchment_across_the_antimeridian,
          test_observations_of_no_gauge_end_the_run,
          test_a_catchment_declared_projected_is_named,

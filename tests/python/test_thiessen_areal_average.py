@@ -822,7 +822,7 @@ def test_text_values_with_missing_markers():
                 and "a decimal comma is not read here" in messages[-1],
                 f"a value that is not a number: {messages}")
     # The decimal-comma hint only for digits, one comma, digits.
-    for text, hinted in (("-12,25 ", True), ("1,5,5", False), (",5", False), ("1,", False), ("1.2,5", False),
+    for text, hinted in (("-12,25 ", True), ("\t12,5\t", True), ("1,5,5", False), (",5", False), ("1,", False), ("1.2,5", False),
                          ("a,5", False)):
         f.SetObservationsData(text_table(rows + [("b", "2000-05", text)]))
         f.Update(1)

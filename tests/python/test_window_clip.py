@@ -307,10 +307,22 @@ def test_a_window_of_loose_line_segments_is_joined_into_its_rings():
     window.GetLines().InsertNextCell(2)
     window.GetLines().InsertCellPoint(2)  # the corner (0.9, 0.9): three segments meet there
     window.GetLines().InsertCellPoint(tail)
-    _, errors, _ = clip_by(tiles, window)
-    assert_that(errors and "no polygon" in errors[0] and "5 cell(s) of the input" in errors[0]
-                and "the first is cell 0" in errors[0],
-                f"nothing left to clip by, the square's and the dangling segment's cells named: {errors}")
+    output, errors, warnings = clip_by(tiles, window)
+    assert_that(not errors and cell_values(output, "ClippedArea") == cell_values(clip(tiles, [square]), "ClippedArea"),
+                f"the square clips without its dangling segment: {errors}")
+    assert_that(len(warnings) == 1 and "1 cell(s)" in warnings[0] and "the first is cell 4" in warnings[0],
+                f"the dangling segment's cell named: {warnings}")
+    # Lines that close no ring: nothing to clip by, their cells named.
+    from vtkmodules.vtkCommonDataModel import vtkCellArray
+
+    chain = line_segments([square], rng, True)
+    lines = vtkCellArray()
+    for a, b in ((0, 1), (1, 2), (2, 3)):  # the square's points 0..3, stored once: three of its sides
+        lines.InsertNextCell(2, [a, b])
+    chain.SetLines(lines)
+    _, errors, _ = clip_by(tiles, chain)
+    assert_that(errors and "no polygon" in errors[0] and "3 cell(s) of the input" in errors[0]
+                and "the first is cell 0" in errors[0], f"an open chain: {errors}")
 
 
 def test_tiles_and_window_must_share_their_projection():
