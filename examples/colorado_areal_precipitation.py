@@ -137,22 +137,29 @@ def read_gauges(path):
 
 
 DATE = re.compile(r"([0-9]{4})-([0-9]{1,2})(?:-([0-9]{1,2}))?")
+# A time of day after a date (2001-02-03T06:00, 2001-02-03 00:00:00), as a spreadsheet or a
+# program writes a day's timestamp.
+TIME_OF_DAY = re.compile(r"[T ]([0-9]{2}):([0-9]{2})(?::([0-9]{2})(?:\.[0-9]+)?)?")
 
 
 def observation_step(row, path, line):
     """The month (year, month) or day (year, month, day) of an observations record: from its year,
     month and (for days) day columns, or from its date column (YYYY-MM-DD, or YYYY-MM for a
     month). Ends the script naming file, line and column for a value that is no such date."""
-    if "date" in row and ("year" in row or "month" in row):
-        csv_input.fail(f"{path}: the observations file has both a date column and year/month columns "
+    if "date" in row and ("year" in row or "month" in row or "day" in row):
+        csv_input.fail(f"{path}: the observations file has both a date column and year/month/day columns "
                        "(keep one)")
     if "date" in row:
         text = csv_input.text(row, "date", path, line)
-        date = DATE.fullmatch(text)
+        date = DATE.match(text)
         step = tuple(int(v) for v in date.groups() if v is not None) if date else ()
         where = f"{path}:{line}: column 'date': {text!r}"
-        if not date:
+        clock = TIME_OF_DAY.fullmatch(text, date.end()) if date and date.group(3) else None
+        if not date or (date.end() < len(text) and not clock):
             csv_input.fail(f"{where} is not a date (YYYY-MM-DD, or YYYY-MM for a month)")
+        if clock and any(int(v or 0) for v in clock.groups()):
+            csv_input.fail(f"{where} has a time of day: the steps are days (or months), so give each day "
+                           "once, without a time (a midnight time, 00:00, is read as the day)")
     elif "year" in row and "month" in row:
         step = (csv_input.integer(row, "year", path, line, 1, 9999),
                 csv_input.integer(row, "month", path, line, 1, 12))
@@ -250,6 +257,16 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
         print(f"{path}: {len(negative)} observation(s) have a negative precipitation, used as given "
               f"(write a missing value as NA, or give --missing-value, if that is what they mean): line(s) {shown}{more}",
               file=sys.stderr)
+    if steps and steps.daily and len({day[:2] for day in months}) > 1:
+        # Monthly values stamped with a day (2001-01-01, 2001-02-01; or month ends) would be read
+        # as days with some 29 days without a report between them: said, since the means of
+        # those days are then the months'.
+        last = all(d == calendar.monthrange(y, m)[1] for y, m, d in months)
+        same = len({d for _, _, d in months}) == 1
+        if last or same:
+            which = "the last day of its month" if last else f"day {next(iter(months))[2]} of its month"
+            print(f"{path}: every date is {which}; if these are monthly values, give the dates as YYYY-MM "
+                  "(or year and month columns): they are read as days", file=sys.stderr)
     # A step between the first and the last without a row of any gauge's station is a step where
     # no gauge reported: a row with a missing value (for a gauge's station: the filter makes no
     # step of a row naming a station no gauge has) keeps it a step of its own, so that
@@ -804,9 +821,10 @@ def plot_series(rows, path):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", default="out", help="output directory (created if missing)")
-    parser.add_argument("--month", default="1963-08", help="month for the weights, tiles and map, YYYY-MM")
+    parser.add_argument("--month", help="month for the weights, tiles and map, YYYY-MM (default: 1963-08, "
+                                        "or the nearest month of the record; with daily observations its first day)")
     parser.add_argument("--day", help="day for the weights, tiles and map when the observations give days, "
-                                      "YYYY-MM-DD (default: the first day of --month)")
+                                      "YYYY-MM-DD (not with --month)")
     parser.add_argument("--stations", default=os.path.join(DATA, "colorado_stations.csv"),
                         help="CSV of gauges: columns station_id, lon, lat (degrees, WGS84), "
                              f"optional name; {csv_input.SEPARATORS_TEXT}")
@@ -826,7 +844,9 @@ def main(argv=None):
                         help="a precip value that means missing, such as -9999 (may be given more than once)")
     parser.add_argument("--no-plots", action="store_true", help="skip the PNG files")
     args = parser.parse_args(argv)
-    chosen = re.fullmatch(r"([0-9]{1,4})-([0-9]{1,2})", args.month.strip())
+    if args.month is not None and args.day is not None:
+        sys.exit(f"--month {args.month} and --day {args.day}: give one of them")
+    chosen = re.fullmatch(r"([0-9]{1,4})-([0-9]{1,2})", (args.month or "1963-08").strip())
     year, month = (int(chosen.group(1)), int(chosen.group(2))) if chosen else (0, 0)
     if not 1 <= year or not 1 <= month <= 12:
         sys.exit(f"--month {args.month!r}: expected YYYY-MM")
@@ -834,8 +854,10 @@ def main(argv=None):
     if args.day is not None:
         chosen = DATE.fullmatch(args.day.strip())
         day = tuple(int(v) for v in chosen.groups()) if chosen and chosen.group(3) else None
-        if not day or day[0] < 1 or not 1 <= day[1] <= 12 or not 1 <= day[2] <= calendar.monthrange(*day[:2])[1]:
+        if not day:
             sys.exit(f"--day {args.day!r}: expected a date YYYY-MM-DD")
+        if day[0] < 1 or not 1 <= day[1] <= 12 or not 1 <= day[2] <= calendar.monthrange(*day[:2])[1]:
+            sys.exit(f"--day {args.day!r}: is not a date of the calendar")
 
     # Tessera first: without VTK (another Python than Debian's) this says how to run the script.
     vtkThiessenArealAverage = csv_input.import_tessera().vtkThiessenArealAverage
@@ -890,9 +912,9 @@ def main(argv=None):
     tiles = average.GetOutputDataObject(0)
     messages.check(tiles is None)
     chosen = steps.of_time[tiles.GetInformation().Get(tiles.DATA_TIME_STEP())]
-    if chosen != step:
+    if chosen != step and (args.month or args.day):  # (the default: the record's nearest step, unsaid)
         print(f"note: {steps.text(step)} is not in the record; showing {steps.text(chosen)}", file=sys.stderr)
-        step = chosen
+    step = chosen
     tag = steps.tag(step)
     per_gauge = tiles_by_gauge(tiles)
     write_weights(per_gauge, gauges, os.path.join(args.out, f"weights_{tag}.csv"))

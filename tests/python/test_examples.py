@@ -633,8 +633,12 @@ def test_daily_observations_give_daily_means():
             f"{s},{y}-{m:02d}-{d:02d},{v}\n" for (y, m, d), values in days.items() for s, v in values.items()))
         by_columns = write(directory, "by_columns.csv", "station_id,year,month,day,precip\n" + "".join(
             f"{s},{y},{m},{d},{v}\n" for (y, m, d), values in days.items() for s, v in values.items()))
+        # Timestamps at midnight, as a spreadsheet may export days, are the days.
+        by_stamp = write(directory, "by_stamp.csv", "station_id,date,precip\n" + "".join(
+            f"{s},{y}-{m:02d}-{d:02d}{' 00:00:00' if k % 2 else 'T00:00'},{v}\n"
+            for (y, m, d), values in days.items() for k, (s, v) in enumerate(values.items())))
         outputs = []
-        for observations in (by_date, by_columns):
+        for observations in (by_date, by_columns, by_stamp):
             out = os.path.join(directory, os.path.basename(observations)[:-4])
             stdout, stderr = run_colorado(out, stations=stations, observations=observations, catchment=catchment,
                                           day="2001-02-01", what=observations)
@@ -643,14 +647,15 @@ def test_daily_observations_give_daily_means():
                          "areal_mean.png", "unused_inputs.csv", "tiles_2001_02_01.vtp"):
                 with open(os.path.join(out, file), "rb") as f:
                     files[file] = f.read()
-            outputs.append((files, stdout.replace(out, "OUT"), stderr.replace(observations, "OBS")))
+            outputs.append((files, stdout.replace(out, "OUT"),
+                            re.sub(r"in [0-9.]+ s\b", "in T s", stderr.replace(observations, "OBS"))))
             assert_that("4 days, 3 with data" in stdout and "2001-02-01: areal mean" in stdout, f"stdout: {stdout}")
             assert_that("1 day(s) between 2001-01-30 and 2001-02-02 have no row of a gauge's station" in stderr,
                         f"the day without rows: {stderr}")
-        for file in outputs[0][0]:
-            if not file.endswith(".vtp"):  # (the .vtp files hold no path, but compare them as tiles below)
-                assert_that(outputs[0][0][file] == outputs[1][0][file], f"{file} differs between date and day columns")
-        assert_that(outputs[0][1:] == outputs[1][1:], f"the messages differ: {outputs[0][1:]} against {outputs[1][1:]}")
+        for other in outputs[1:]:
+            for file in outputs[0][0]:
+                assert_that(outputs[0][0][file] == other[0][file], f"{file} differs between date and day columns")
+            assert_that(outputs[0][1:] == other[1:], f"the messages differ: {outputs[0][1:]} against {other[1:]}")
         out = os.path.join(directory, "by_date")
         means = read_csv(os.path.join(out, "areal_mean.csv"))
         assert_that([tuple(int(r[k]) for k in ("year", "month", "day")) for r in means]
@@ -686,13 +691,32 @@ def test_daily_observations_give_daily_means():
             ("station_id,date,year,month,precip\nN1,2001-02-03,2001,2,1\n", {}, "both a date column and year/month"),
             ("station_id,when,precip\nN1,2001-02-03,1\n", {}, "no columns year and month, nor a date column"),
             ("station_id,year,month,precip\nN1,2001,2,1\n", {"day": "2001-02-01"}, "are monthly (use --month)"),
-            ("station_id,date,precip\nN1,2001-02-03,1\n", {"day": "2001-02-30"}, "--day '2001-02-30': expected a date"),
+            ("station_id,date,precip\nN1,2001-02-03,1\n", {"day": "2001-02-30"},
+             "--day '2001-02-30': is not a date of the calendar"),
+            ("station_id,date,precip\nN1,2001-02-03,1\n", {"day": "2001-02"}, "--day '2001-02': expected a date"),
+            ("station_id,date,precip\nN1,2001-02-03,1\n", {"day": "2001-02-03", "month": "2001-02"},
+             "--month 2001-02 and --day 2001-02-03: give one of them"),
+            ("station_id,date,day,precip\nN1,2001-02,3,1\n", {}, "both a date column and year/month/day columns"),
+            ("station_id,date,precip\nN1,2001-02-03T06:00,1\n", {}, "'2001-02-03T06:00' has a time of day"),
+            ("station_id,date,precip\nN1,2001-02T00:00,1\n", {}, "'2001-02T00:00' is not a date"),
         ]
         for text, options, fragment in cases:
             bad = write(directory, "bad.csv", text)
             _, stderr = run_colorado(os.path.join(directory, "bad"), stations=stations, observations=bad,
                                      catchment=catchment, what=text, status=1, plots=False, **options)
             assert_that(fragment in stderr and "Traceback" not in stderr, f"{text!r}: {fragment!r} not in {stderr!r}")
+        # Monthly values stamped with a day are read as days, and said; the record's nearest day is
+        # shown without a note when no day was asked for.
+        stamped = write(directory, "stamped.csv", "station_id,date,precip\nN1,2001-01-01,1\nN2,2001-02-01,2\n")
+        _, stderr = run_colorado(os.path.join(directory, "stamped"), stations=stations, observations=stamped,
+                                 catchment=catchment, what="month starts", plots=False)
+        assert_that(f"{stamped}: every date is day 1 of its month; if these are monthly values" in stderr
+                    and "note:" not in stderr, f"month starts: {stderr}")
+        ends = write(directory, "ends.csv", "station_id,date,precip\nN1,2001-01-31,1\nN2,2001-02-28,2\n")
+        _, stderr = run_colorado(os.path.join(directory, "ends"), stations=stations, observations=ends,
+                                 catchment=catchment, what="month ends", plots=False, day="2001-03-01")
+        assert_that("every date is the last day of its month" in stderr
+                    and "note: 2001-03-01 is not in the record; showing 2001-02-28" in stderr, f"month ends: {stderr}")
 
 
 def test_the_field_separator_and_the_decimal_mark():
