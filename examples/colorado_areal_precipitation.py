@@ -32,6 +32,12 @@ Writes into --out:
                          a station no gauge has, or without a station id or time); for a gauge at
                          the place of an earlier one, or a repeated observation, the note gives
                          the earlier one's line; the warnings name only the first 20 of each kind
+  areal_mean_by_ATTRIBUTE.csv
+                         with --each ATTRIBUTE: ATTRIBUTE,year,month,stations_used,
+                         stations_weighted,areal_mean,area_km2, the means over each group of the
+                         catchment's features with one value of the attribute (each sub-basin),
+                         in the whole catchment's projection (their means weighted by area_km2
+                         make the whole's)
 Daily observations (columns station_id, year, month, day, precip, or station_id, date, precip
 with dates YYYY-MM-DD) make a step a day: areal_mean.csv and weights_all_days.csv (which
 stands for weights_all_months.csv) gain a day column (year,month,day,...), --day chooses the day
@@ -352,36 +358,42 @@ def attribute_text(array, cell=0):
     return str(array.GetVariantValue(cell).ToString())
 
 
-def select_features(data, feature, path):
-    """The blocks (features) of a vtkGDALVectorReader output whose attribute has the value, for
-    --feature ATTRIBUTE=VALUE, as a new multiblock; ends the script naming the attributes or the
-    values there are when none matches."""
+def features_by_value(data, name, path):
+    """The blocks (features) of a vtkGDALVectorReader output with cells, by the text of their
+    attribute `name` (attribute_text), each value's as a new multiblock; ends the script naming
+    the attributes there are when no feature has that one."""
     from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
 
-    name, _, wanted = feature.partition("=")
-    name, wanted = name.strip(), wanted.strip()
-    if not name or not _:
-        csv_input.fail(f"--feature {feature!r}: expected ATTRIBUTE=VALUE, such as HUC8=14010001")
-    chosen, names, values = vtkMultiBlockDataSet(), set(), []
+    chosen, names = {}, set()
     for block in polydata_blocks(data):
         if block.GetNumberOfCells() == 0:
             continue
         cells = block.GetCellData()
         names.update(cells.GetArrayName(i) for i in range(cells.GetNumberOfArrays()))
         array = cells.GetAbstractArray(name)
-        if array is None:
-            continue
-        text = attribute_text(array)
-        values.append(text)
-        if text == wanted:
-            chosen.SetBlock(chosen.GetNumberOfBlocks(), block)
-    if not values:
+        if array is not None:
+            blocks = chosen.setdefault(attribute_text(array), vtkMultiBlockDataSet())
+            blocks.SetBlock(blocks.GetNumberOfBlocks(), block)
+    if not chosen:
         known = ", ".join(sorted(n for n in names if n and not n.startswith("_vtk"))) or "none"
         csv_input.fail(f"{path}: no feature has the attribute {name!r} (its attributes: {known})")
-    if chosen.GetNumberOfBlocks() == 0:
-        shown = ", ".join(sorted(set(values))[:20]) + (", ..." if len(set(values)) > 20 else "")
-        csv_input.fail(f"{path}: no feature has {name} = {wanted!r} (its values: {shown})")
     return chosen
+
+
+def select_features(data, feature, path):
+    """The blocks (features) of a vtkGDALVectorReader output whose attribute has the value, for
+    --feature ATTRIBUTE=VALUE, as a new multiblock; ends the script naming the attributes or the
+    values there are when none matches."""
+    name, _, wanted = feature.partition("=")
+    name, wanted = name.strip(), wanted.strip()
+    if not name or not _:
+        csv_input.fail(f"--feature {feature!r}: expected ATTRIBUTE=VALUE, such as HUC8=14010001")
+    chosen = features_by_value(data, name, path)
+    if wanted not in chosen:
+        values = sorted(chosen)
+        shown = ", ".join(values[:20]) + (", ..." if len(values) > 20 else "")
+        csv_input.fail(f"{path}: no feature has {name} = {wanted!r} (its values: {shown})")
+    return chosen[wanted]
 
 
 class Progress:
@@ -570,6 +582,63 @@ UNUSED_LISTS = (
     ("UnusedObservationRows", "observation without a station id or time, or of a station no gauge has",
      True),
 )
+
+
+def projection_record(catchment):
+    """The TesseraProjection record of the projection the areal average fits to this catchment
+    (vtkGeographicProjection's automatic choice, which the filter makes)."""
+    projection = csv_input.import_tessera().vtkGeographicProjection()
+    projection.SetInputData(catchment)
+    projection.Update()
+    return projection.GetOutputDataObject(0).GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
+
+
+def write_means_by_feature(features, name, gauges, observations, steps, record, catchment_path, path):
+    """--each ATTRIBUTE: the areal mean of every step over each feature group of the catchment
+    (features: features_by_value's), as CSV: ATTRIBUTE, the step's columns, stations_used,
+    stations_weighted, areal_mean and area_km2 (the group's area the tiles cover: all of it once
+    a gauge reports). Each group is averaged by a filter of its own, with the same gauges and
+    observations and the whole catchment's projection (record: projection_record), so that the
+    tiles are the whole's and the groups' means weighted by their areas are the whole's mean (each
+    group's automatic projection, fitted to it alone, moved weights by some 1e-5); its warnings,
+    said for the whole catchment before, are not repeated; an error ends the script naming the
+    group. Returns the number of groups."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    tessera = csv_input.import_tessera()
+    values = sorted(features, key=lambda v: (0, int(v), v) if re.fullmatch(r"-?[0-9]+", v) else (1, 0, v))
+    with open(path, "w", newline="") as f:
+        out = csv.writer(f)
+        out.writerow([name, *steps.columns, "stations_used", "stations_weighted", "areal_mean", "area_km2"])
+        for k, value in enumerate(values):
+            print(f"\rareal means by {name}: {k + 1} of {len(values)}", end="", file=sys.stderr, flush=True)
+            average = tessera.vtkThiessenArealAverage()
+            average.SetGaugesData(gauges)
+            average.SetCatchmentData(features[value])
+            average.SetObservationsData(observations)
+            average.SetValueColumn("precip")
+            average.SetProjectionRecord(record)
+            errors = []
+            csv_input.catch_vtk_messages(average, errors.append, lambda text: None, errors.append)
+            average.Update(1)
+            summary, weights = average.GetOutputDataObject(1), average.GetOutputDataObject(2)
+            if errors or summary is None or summary.GetNumberOfRows() == 0:
+                print(file=sys.stderr)
+                csv_input.fail(f"{catchment_path}: the features with {name} = {value}: "
+                               + (errors[0] if errors else "the areal average failed"))
+            covered = {}
+            for t, area in zip(vtk_to_numpy(weights.GetColumnByName("Time")),
+                               vtk_to_numpy(weights.GetColumnByName("Area_m2"))):
+                covered[float(t)] = covered.get(float(t), 0.0) + float(area)
+            for r in range(summary.GetNumberOfRows()):
+                t = summary.GetValueByName(r, "Time").ToDouble()
+                mean = summary.GetValueByName(r, "ArealMean").ToDouble()
+                area = covered.get(t)
+                out.writerow([value, *steps.of_time[t], summary.GetValueByName(r, "StationsUsed").ToInt(),
+                              summary.GetValueByName(r, "StationsWeighted").ToInt(),
+                              "" if math.isnan(mean) else f"{mean:.15g}", "" if area is None else f"{area / 1e6:.15g}"])
+    print(file=sys.stderr)
+    return len(values)
 
 
 def write_unused(summary, files, station_ids, observations, unit, path):
@@ -840,12 +909,18 @@ def main(argv=None):
     parser.add_argument("--feature", metavar="ATTRIBUTE=VALUE",
                         help="take only the catchment file's features whose attribute has this "
                              "value, such as HUC8=14010001 (whole numbers are written without .0)")
+    parser.add_argument("--each", metavar="ATTRIBUTE",
+                        help="also average over each group of the catchment file's features that share a "
+                             "value of this attribute (such as HUC8: each sub-basin), into "
+                             "areal_mean_by_ATTRIBUTE.csv")
     parser.add_argument("--missing-value", action="append", type=float, default=[], metavar="NUMBER",
                         help="a precip value that means missing, such as -9999 (may be given more than once)")
     parser.add_argument("--no-plots", action="store_true", help="skip the PNG files")
     args = parser.parse_args(argv)
     if args.month is not None and args.day is not None:
         sys.exit(f"--month {args.month} and --day {args.day}: give one of them")
+    if args.each is not None and args.feature is not None:
+        sys.exit(f"--each {args.each} and --feature {args.feature}: give one of them")
     chosen = re.fullmatch(r"([0-9]{1,4})-([0-9]{1,2})", (args.month or "1963-08").strip())
     year, month = (int(chosen.group(1)), int(chosen.group(2))) if chosen else (0, 0)
     if not 1 <= year or not 1 <= month <= 12:
@@ -882,6 +957,7 @@ def main(argv=None):
         csv_input.fail(f"--day {args.day}: the observations of {args.observations} are monthly (use --month)")
     step = (day or (year, month, 1)) if steps.daily else (year, month)
     catchment, outline = read_catchment(args.catchment, args.feature)
+    groups = features_by_value(catchment, args.each, args.catchment) if args.each else None
     # (the observations file's rows: the table also has a row for each step without any)
     print(f"read {gauges.GetNumberOfPoints()} gauges and {len(row_lines)} observations in "
           f"{time.time() - started:.1f} s", file=sys.stderr)
@@ -907,6 +983,10 @@ def main(argv=None):
     write_all_weights(average.GetOutputDataObject(2), steps, os.path.join(args.out, all_weights))
     unused = write_unused(summary, files, station_ids, observations, steps.unit,
                           os.path.join(args.out, "unused_inputs.csv"))
+    if groups:
+        by_feature = "areal_mean_by_" + re.sub(r"[^A-Za-z0-9_.-]", "_", args.each) + ".csv"
+        write_means_by_feature(groups, args.each, gauges, observations, steps, projection_record(catchment),
+                               args.catchment, os.path.join(args.out, by_feature))
 
     average.UpdateTimeStep(steps.time(step))
     tiles = average.GetOutputDataObject(0)
@@ -942,7 +1022,8 @@ def main(argv=None):
           f"{weighted} weighted; weights sum to {sum(e['weight'] for e in per_gauge.values()):.12f}")
     print(f"wrote {args.out}/areal_mean.csv, {all_weights}, weights_{tag}.csv, tiles_{tag}.vtp"
           + ("" if args.no_plots else f", map_{tag}.png, areal_mean.png")
-          + f", unused_inputs.csv ({unused} input(s) not used)")
+          + f", unused_inputs.csv ({unused} input(s) not used)"
+          + (f", {by_feature} ({len(groups)} groups of features)" if groups else ""))
 
 
 if __name__ == "__main__":

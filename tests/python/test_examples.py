@@ -444,6 +444,65 @@ def test_a_lake_touching_the_outline_and_catchments_of_several_features():
         assert_close(total_area(out), areas[1], 1e-9 * areas[1], "the two halves make the whole basin")
 
 
+def test_each_group_of_features_gets_its_means():
+    # --each ATTRIBUTE: sub-basins averaged one by one, in the whole basin's projection. The same
+    # tiles serve each, so the whole basin's mean is the sub-basins' means weighted by their areas,
+    # at every month; each sub-basin's rows are those of a run with --feature for it alone (which
+    # fits a projection to it alone).
+    import json
+
+    west = [[175.5, -39.2], [176.0, -39.2], [176.0, -38.6], [175.5, -38.4], [175.5, -39.2]]
+    east = [[176.0, -39.2], [176.5, -39.2], [176.5, -38.4], [176.0, -38.6], [176.0, -39.2]]
+    north = [[176.0, -38.6], [176.5, -38.4], [176.5, -38.3], [175.5, -38.3], [175.5, -38.4], [176.0, -38.6]]
+    with tempfile.TemporaryDirectory() as out:
+        _, stations, observations = write_lake_basin(out)
+        with open(observations, "a") as f:
+            f.write("N2,2001,3,4\nN3,2001,3,6\nN5,2001,3,1\n")
+        basins = os.path.join(out, "basins.geojson")
+        features = [{"type": "Feature", "properties": {"HUC8": code}, "geometry": {"type": "Polygon", "coordinates": [r]}}
+                    for code, r in ((14010002, east), (14010001, west), (9, north), (14010002, north[:1] + north[1:]))]
+        features[3]["geometry"]["coordinates"] = [[[176.6, -39.2], [176.8, -39.2], [176.8, -39.0], [176.6, -39.2]]]
+        with open(basins, "w") as f:
+            json.dump({"type": "FeatureCollection", "features": features}, f)
+        whole = os.path.join(out, "whole")
+        stdout, stderr = run_colorado(whole, stations=stations, observations=observations, catchment=basins,
+                                      month="2001-01", plots=False, each="HUC8", what="--each HUC8")
+        assert_that("areal_mean_by_HUC8.csv (3 groups of features)" in stdout, f"stdout: {stdout}")
+        assert_that("areal means by HUC8: 3 of 3" in stderr, f"progress: {stderr}")
+        rows = read_csv(os.path.join(whole, "areal_mean_by_HUC8.csv"))
+        assert_that(list(rows[0]) == ["HUC8", "year", "month", "stations_used", "stations_weighted", "areal_mean",
+                                      "area_km2"], f"columns: {list(rows[0])}")
+        assert_that([r["HUC8"] for r in rows] == ["9"] * 3 + ["14010001"] * 3 + ["14010002"] * 3,
+                    f"groups in numeric order: {[r['HUC8'] for r in rows]}")
+        means = read_csv(os.path.join(whole, "areal_mean.csv"))
+        for month in ("1", "2", "3"):
+            parts = [r for r in rows if r["month"] == month]
+            area = math.fsum(float(r["area_km2"]) for r in parts)
+            mean = math.fsum(float(r["area_km2"]) * float(r["areal_mean"]) for r in parts) / area
+            row = next(r for r in means if r["month"] == month)
+            assert_close(mean, float(row["areal_mean"]), 1e-9 * abs(mean), f"2001-{month}: the area-weighted sub-basin means")
+            assert_that(all(r["stations_used"] == row["stations_used"] for r in parts), f"2001-{month}: {parts}")
+        for code in ("9", "14010001", "14010002"):
+            alone = os.path.join(out, code)
+            run_colorado(alone, stations=stations, observations=observations, catchment=basins, month="2001-01",
+                         plots=False, feature=f"HUC8={code}", what=f"--feature HUC8={code}")
+            # (Alone, the sub-basin gets a projection fitted to it, which moves its tiles' sides by
+            # a little: the means agree to some 1e-5, not to the last bit.)
+            expected = read_csv(os.path.join(alone, "areal_mean.csv"))
+            got = [r for r in rows if r["HUC8"] == code]
+            assert_that([(r["year"], r["month"], r["stations_used"], r["stations_weighted"]) for r in got]
+                        == [(r["year"], r["month"], r["stations_used"], r["stations_weighted"]) for r in expected],
+                        f"HUC8 {code}: {got} against --feature {expected}")
+            for a, b in zip(got, expected):
+                assert_close(float(a["areal_mean"]), float(b["areal_mean"]), 1e-4 * float(b["areal_mean"]),
+                             f"HUC8 {code}, 2001-{a['month']}: against --feature")
+        for options, fragment in (({"each": "HUC"}, "no feature has the attribute 'HUC' (its attributes: HUC8)"),
+                                  ({"each": "HUC8", "feature": "HUC8=9"}, "--each HUC8 and --feature HUC8=9: give one")):
+            _, stderr = run_colorado(os.path.join(out, "bad"), stations=stations, observations=observations,
+                                     catchment=basins, plots=False, status=1, what=str(options), **options)
+            assert_that(fragment in stderr, f"{options}: {stderr}")
+
+
 def test_a_month_without_reports_still_gets_its_map():
     # The lake basin with 2001-02 taken out of the observations: the month is in the record (a
     # month where no gauge reported) and, chosen for the map, gives a map of the outline and the
@@ -1171,6 +1230,7 @@ if __name__ == "__main__":
     run([test_the_colorado_main_job, test_missing_values_keep_their_months, test_bad_files_are_named,
          test_the_map_of_another_place_with_a_lake,
          test_a_lake_touching_the_outline_and_catchments_of_several_features,
+         test_each_group_of_features_gets_its_means,
          test_a_month_without_reports_still_gets_its_map,
          test_the_time_series_breaks_at_months_without_a_mean,
          test_ids_without_their_leading_zeros_match_as_in_the_filter,
