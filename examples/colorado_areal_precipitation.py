@@ -354,7 +354,7 @@ def attribute_text(array, cell=0):
     14010001.0), others as written."""
     if array.IsA("vtkDataArray"):
         value = array.GetTuple1(cell)
-        return str(int(value)) if value == int(value) else repr(value)
+        return str(int(value)) if math.isfinite(value) and value == int(value) else repr(value)
     return str(array.GetVariantValue(cell).ToString())
 
 
@@ -584,29 +584,53 @@ UNUSED_LISTS = (
 )
 
 
-def projection_record(catchment):
-    """The TesseraProjection record of the projection the areal average fits to this catchment
-    (vtkGeographicProjection's automatic choice, which the filter makes)."""
-    projection = csv_input.import_tessera().vtkGeographicProjection()
-    projection.SetInputData(catchment)
-    projection.Update()
-    return projection.GetOutputDataObject(0).GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
+def covered_areas(weights):
+    """Per time value, the area (m2) the tiles cover, from output 2 of the filter."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    covered = {}
+    for t, area in zip(vtk_to_numpy(weights.GetColumnByName("Time")), vtk_to_numpy(weights.GetColumnByName("Area_m2"))):
+        covered[float(t)] = covered.get(float(t), 0.0) + float(area)
+    return covered
 
 
-def write_means_by_feature(features, name, gauges, observations, steps, record, catchment_path, path):
+def polygon_groups(features, name, path):
+    """The groups of features_by_value that hold a polygon; the others (lines or points only) are
+    named on a line of their own, before any work, and get no means."""
+    kept = {value: data for value, data in features.items() if catchment_rings(data)}
+    empty = sorted(set(features) - set(kept))
+    if empty:
+        print(f"{path}: the features with {name} = {', '.join(empty)} have no polygon: no means for them",
+              file=sys.stderr)
+    if not kept:
+        csv_input.fail(f"{path}: no feature with the attribute {name} has a polygon")
+    return kept
+
+
+def write_means_by_feature(features, name, gauges, observations, steps, whole, catchment_path, path):
     """--each ATTRIBUTE: the areal mean of every step over each feature group of the catchment
     (features: features_by_value's), as CSV: ATTRIBUTE, the step's columns, stations_used,
     stations_weighted, areal_mean and area_km2 (the group's area the tiles cover: all of it once
     a gauge reports). Each group is averaged by a filter of its own, with the same gauges and
-    observations and the whole catchment's projection (record: projection_record), so that the
-    tiles are the whole's and the groups' means weighted by their areas are the whole's mean (each
-    group's automatic projection, fitted to it alone, moved weights by some 1e-5); its warnings,
-    said for the whole catchment before, are not repeated; an error ends the script naming the
-    group. Returns the number of groups."""
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-
+    observations and the whole catchment's projection (the record the whole's filter, `whole`,
+    used), so that the tiles are the whole's and the groups' means weighted by their areas are the
+    whole's mean (each group's automatic projection, fitted to it alone, moved weights by some
+    1e-5); where the groups do not make the whole catchment (a group inside or over another's,
+    which the whole's even-odd rule makes a hole), that is said. Its warnings, said for the whole
+    catchment before, are not repeated; an error ends the script naming the group. Returns the
+    number of groups."""
     tessera = csv_input.import_tessera()
-    values = sorted(features, key=lambda v: (0, int(v), v) if re.fullmatch(r"-?[0-9]+", v) else (1, 0, v))
+    record = whole.GetOutputDataObject(1).GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
+    whole_areas = covered_areas(whole.GetOutputDataObject(2))
+    group_areas = {}
+
+    def by_value(v):  # numbers in numeric order first, then text
+        try:
+            number = float(v)
+        except ValueError:
+            number = math.nan
+        return (0, number, v) if math.isfinite(number) else (1, 0.0, v)
+    values = sorted(features, key=by_value)
     with open(path, "w", newline="") as f:
         out = csv.writer(f)
         out.writerow([name, *steps.columns, "stations_used", "stations_weighted", "areal_mean", "area_km2"])
@@ -626,10 +650,9 @@ def write_means_by_feature(features, name, gauges, observations, steps, record, 
                 print(file=sys.stderr)
                 csv_input.fail(f"{catchment_path}: the features with {name} = {value}: "
                                + (errors[0] if errors else "the areal average failed"))
-            covered = {}
-            for t, area in zip(vtk_to_numpy(weights.GetColumnByName("Time")),
-                               vtk_to_numpy(weights.GetColumnByName("Area_m2"))):
-                covered[float(t)] = covered.get(float(t), 0.0) + float(area)
+            covered = covered_areas(weights)
+            for t, area in covered.items():
+                group_areas[t] = group_areas.get(t, 0.0) + area
             for r in range(summary.GetNumberOfRows()):
                 t = summary.GetValueByName(r, "Time").ToDouble()
                 mean = summary.GetValueByName(r, "ArealMean").ToDouble()
@@ -638,6 +661,16 @@ def write_means_by_feature(features, name, gauges, observations, steps, record, 
                               summary.GetValueByName(r, "StationsWeighted").ToInt(),
                               "" if math.isnan(mean) else f"{mean:.15g}", "" if area is None else f"{area / 1e6:.15g}"])
     print(file=sys.stderr)
+    # (Areas the tiles cover: all of a region once a gauge reports; the largest difference of the
+    # steps, relative, beyond what densifying the groups' own edges can make.)
+    off = max((abs(group_areas.get(t, 0.0) - a) / a for t, a in whole_areas.items() if a > 0), default=0.0)
+    if off > 1e-6:
+        t = max(whole_areas, key=lambda t: abs(group_areas.get(t, 0.0) - whole_areas[t]))
+        print(f"{catchment_path}: the groups of {name} do not make the catchment: their areas sum to "
+              f"{group_areas.get(t, 0.0) / 1e6:.6g} km2 where the catchment has {whole_areas[t] / 1e6:.6g} km2 (a "
+              "feature inside or over a feature of another group is a hole of the catchment, by the even-odd "
+              "rule, but a part of its group): their means weighted by area do not make the whole's",
+              file=sys.stderr)
     return len(values)
 
 
@@ -912,7 +945,8 @@ def main(argv=None):
     parser.add_argument("--each", metavar="ATTRIBUTE",
                         help="also average over each group of the catchment file's features that share a "
                              "value of this attribute (such as HUC8: each sub-basin), into "
-                             "areal_mean_by_ATTRIBUTE.csv")
+                             "areal_mean_by_ATTRIBUTE.csv (GDAL reads a feature without the attribute, or "
+                             "with a null one, as 0 or empty text: it is grouped there)")
     parser.add_argument("--missing-value", action="append", type=float, default=[], metavar="NUMBER",
                         help="a precip value that means missing, such as -9999 (may be given more than once)")
     parser.add_argument("--no-plots", action="store_true", help="skip the PNG files")
@@ -921,6 +955,8 @@ def main(argv=None):
         sys.exit(f"--month {args.month} and --day {args.day}: give one of them")
     if args.each is not None and args.feature is not None:
         sys.exit(f"--each {args.each} and --feature {args.feature}: give one of them")
+    if args.each is not None and not args.each.strip():
+        sys.exit("--each: expected the name of an attribute of the catchment's features, such as HUC8")
     chosen = re.fullmatch(r"([0-9]{1,4})-([0-9]{1,2})", (args.month or "1963-08").strip())
     year, month = (int(chosen.group(1)), int(chosen.group(2))) if chosen else (0, 0)
     if not 1 <= year or not 1 <= month <= 12:
@@ -957,7 +993,8 @@ def main(argv=None):
         csv_input.fail(f"--day {args.day}: the observations of {args.observations} are monthly (use --month)")
     step = (day or (year, month, 1)) if steps.daily else (year, month)
     catchment, outline = read_catchment(args.catchment, args.feature)
-    groups = features_by_value(catchment, args.each, args.catchment) if args.each else None
+    groups = polygon_groups(features_by_value(catchment, args.each.strip(), args.catchment), args.each.strip(),
+                            args.catchment) if args.each is not None else None
     # (the observations file's rows: the table also has a row for each step without any)
     print(f"read {gauges.GetNumberOfPoints()} gauges and {len(row_lines)} observations in "
           f"{time.time() - started:.1f} s", file=sys.stderr)
@@ -984,9 +1021,9 @@ def main(argv=None):
     unused = write_unused(summary, files, station_ids, observations, steps.unit,
                           os.path.join(args.out, "unused_inputs.csv"))
     if groups:
-        by_feature = "areal_mean_by_" + re.sub(r"[^A-Za-z0-9_.-]", "_", args.each) + ".csv"
-        write_means_by_feature(groups, args.each, gauges, observations, steps, projection_record(catchment),
-                               args.catchment, os.path.join(args.out, by_feature))
+        by_feature = "areal_mean_by_" + re.sub(r"[^A-Za-z0-9_.-]", "_", args.each.strip()) + ".csv"
+        write_means_by_feature(groups, args.each.strip(), gauges, observations, steps, average, args.catchment,
+                               os.path.join(args.out, by_feature))
 
     average.UpdateTimeStep(steps.time(step))
     tiles = average.GetOutputDataObject(0)
@@ -1023,7 +1060,7 @@ def main(argv=None):
     print(f"wrote {args.out}/areal_mean.csv, {all_weights}, weights_{tag}.csv, tiles_{tag}.vtp"
           + ("" if args.no_plots else f", map_{tag}.png, areal_mean.png")
           + f", unused_inputs.csv ({unused} input(s) not used)"
-          + (f", {by_feature} ({len(groups)} groups of features)" if groups else ""))
+          + (f", {by_feature} ({len(groups)} group(s) of features)" if groups else ""))
 
 
 if __name__ == "__main__":

@@ -148,6 +148,14 @@ std::string BoundsText(const double bounds[4])
 
 const char* const ProjectionRecordName = "TesseraProjection";
 
+void WriteProjectionRecord(vtkDataObject* data, const std::string& record)
+{
+  vtkNew<vtkStringArray> array;
+  array->SetName(ProjectionRecordName);
+  array->InsertNextValue(record);
+  data->GetFieldData()->AddArray(array);
+}
+
 std::string ReadProjectionRecord(vtkDataObject* data)
 {
   vtkFieldData* fd = data ? data->GetFieldData() : nullptr;

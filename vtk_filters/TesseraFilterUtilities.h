@@ -189,6 +189,10 @@ using tessera::ListNames;
 /// The name of vtkGeographicProjection's field-data record of the projection it applied.
 extern const char* const ProjectionRecordName;
 
+/// Adds the record (ProjectionParameters::ToString) to the data object's field data as a one-value
+/// string array named ProjectionRecordName.
+void WriteProjectionRecord(vtkDataObject* data, const std::string& record);
+
 /// The projection record of a data object's own field data, or "" when it has none.
 std::string ReadProjectionRecord(vtkDataObject* data);
 

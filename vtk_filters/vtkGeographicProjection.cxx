@@ -49,14 +49,6 @@ std::vector<tessera::Point2> ReadXY(vtkPoints* points)
   return xy;
 }
 
-void WriteProjectionRecord(vtkDataObject* data, const std::string& record)
-{
-  vtkNew<vtkStringArray> array;
-  array->SetName(ProjectionRecordName);
-  array->InsertNextValue(record);
-  data->GetFieldData()->AddArray(array);
-}
-
 /// What densifying met, over all pieces: edges cut into MaxDensifiedPieces (their pieces may be
 /// longer than the step), and edges that read two ways round the globe (EdgeReadsBothWays), taken
 /// the shorter way round (InterpolateLonLat), the first of them named ("block b points a and c,
@@ -450,7 +442,7 @@ void ProjectPiece(vtkGeographicProjection* self,
   output->GetFieldData()->RemoveArray(ProjectionRecordName);
   if (!record.empty())
   {
-    WriteProjectionRecord(output, record);
+    tessera_vtk::WriteProjectionRecord(output, record);
   }
 }
 
@@ -617,7 +609,7 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
       output->GetFieldData()->RemoveArray(ProjectionRecordName);
       if (!record.empty())
       {
-        WriteProjectionRecord(output, record);
+        tessera_vtk::WriteProjectionRecord(output, record);
       }
     }
     return 1;

@@ -369,8 +369,8 @@ ObservationRows ReadRows(vtkTable* table,
   return rows;
 }
 
-/// Whether text (spaces and tabs around it aside) is digits, one comma and digits, as a number with a
-/// decimal comma reads: what a CSV file saved in a European locale holds (12,5).
+/// Whether text (spaces and tabs around it aside) is digits, one comma and digits, as a number with
+/// a decimal comma reads: what a CSV file saved in a European locale holds (12,5).
 bool LooksLikeDecimalComma(const std::string& text)
 {
   const std::size_t first = text.find_first_not_of(" \t");
@@ -1388,6 +1388,9 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   tessera_vtk::AddIdFieldArray(in.Summary, "RepeatedObservationOfRows", repeatedRowOf);
   tessera_vtk::AddIdFieldArray(in.Summary, "CoLocatedObservationRows", coLocatedRows);
   tessera_vtk::AddIdFieldArray(in.Summary, "UnusedObservationRows", rows->Steps.UnusedRows());
+  // The projection the tiles were made in, as vtkGeographicProjection records it: another average
+  // given it (ProjectionRecord) makes the same tiles, as for a part of this catchment.
+  tessera_vtk::WriteProjectionRecord(in.Summary, in.Average->Projection().ToString());
 }
 
 //------------------------------------------------------------------------------

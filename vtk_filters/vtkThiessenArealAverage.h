@@ -49,8 +49,9 @@
  * row's time that is not a finite number, a date or a month 1 .. 12, and a value that is not a
  * number or a missing-value marker, are errors naming the row; a table none of whose rows can be
  * used is an error that counts them. Station ids match as text (leading zeros of integer ids are
- * ignored, so "050109" matches 50109, as does "50109.0"; a floating-point id column, as a CSV reader makes, is read in
- * full, so 6730200 and 6730500 stay two stations; matching and steps: core/observation_series.h).
+ * ignored, so "050109" matches 50109, as does "50109.0"; a floating-point id column, as a CSV
+ * reader makes, is read in full, so 6730200 and 6730500 stay two stations; matching and steps:
+ * core/observation_series.h).
  *
  * The projection is vtkGeographicProjection's automatic equal-area conic fitted to the catchment
  * (where the tiles are measured, so gauges far from it, such as one that never reports or has a
@@ -100,7 +101,10 @@
  * them: `UnobservedGaugeIds`, `DuplicateGaugeIds`, `DuplicateOfGaugeIds`, `UnweightedGaugeIds`,
  * `RepeatedObservationRows` (with `RepeatedObservationOfRows`, the earlier row each repeats, whose
  * value is used), `CoLocatedObservationRows` and `UnusedObservationRows` (rows not
- * used: no station id, no time, or a station no gauge has; table rows, from 0). Two more warnings
+ * used: no station id, no time, or a station no gauge has; table rows, from 0); it also holds
+ * `TesseraProjection`, the record of the projection the tiles were made in (as
+ * vtkGeographicProjection writes it: given to another average as ProjectionRecord, as for a part
+ * of the catchment, it makes the same tiles). Two more warnings
  * flag input that is used but may not be what was meant: no gauge inside the catchment (a sign of
  * swapped or unsigned coordinates), and a catchment ring inside a ring of another block (in
  * vtkGDALVectorReader's output, a feature inside another feature), which the even-odd rule makes a

@@ -467,7 +467,7 @@ def test_each_group_of_features_gets_its_means():
         whole = os.path.join(out, "whole")
         stdout, stderr = run_colorado(whole, stations=stations, observations=observations, catchment=basins,
                                       month="2001-01", plots=False, each="HUC8", what="--each HUC8")
-        assert_that("areal_mean_by_HUC8.csv (3 groups of features)" in stdout, f"stdout: {stdout}")
+        assert_that("areal_mean_by_HUC8.csv (3 group(s) of features)" in stdout, f"stdout: {stdout}")
         assert_that("areal means by HUC8: 3 of 3" in stderr, f"progress: {stderr}")
         rows = read_csv(os.path.join(whole, "areal_mean_by_HUC8.csv"))
         assert_that(list(rows[0]) == ["HUC8", "year", "month", "stations_used", "stations_weighted", "areal_mean",
@@ -496,7 +496,35 @@ def test_each_group_of_features_gets_its_means():
             for a, b in zip(got, expected):
                 assert_close(float(a["areal_mean"]), float(b["areal_mean"]), 1e-4 * float(b["areal_mean"]),
                              f"HUC8 {code}, 2001-{a['month']}: against --feature")
+        assert_that("do not make the catchment" not in stderr, f"the groups make the basin: {stderr}")
+        # A feature inside a feature of another group is a hole of the catchment (even-odd) but a
+        # part of its group: said. A group of lines only is named, without means, and the run goes on.
+        nested = os.path.join(out, "nested.geojson")
+        inner = [[175.7, -39.0], [175.9, -39.0], [175.9, -38.8], [175.7, -38.8], [175.7, -39.0]]
+        road = {"type": "Feature", "properties": {"HUC8": 5},
+                "geometry": {"type": "LineString", "coordinates": [[175.6, -39.1], [176.4, -38.5]]}}
+        with open(nested, "w") as f:
+            json.dump({"type": "FeatureCollection", "features": features[:3] + [
+                {"type": "Feature", "properties": {"HUC8": 7}, "geometry": {"type": "Polygon", "coordinates": [inner]}},
+                road]}, f)
+        stdout, stderr = run_colorado(os.path.join(out, "nested"), stations=stations, observations=observations,
+                                      catchment=nested, month="2001-01", plots=False, each=" HUC8 ", what="nested")
+        assert_that(f"{nested}: the features with HUC8 = 5 have no polygon: no means for them" in stderr
+                    and f"{nested}: the groups of HUC8 do not make the catchment: their areas sum to" in stderr,
+                    f"a nested group and a group of lines: {stderr}")
+        nested_rows = read_csv(os.path.join(out, "nested", "areal_mean_by_HUC8.csv"))
+        assert_that(sorted({r["HUC8"] for r in nested_rows}) == ["14010001", "14010002", "7", "9"],
+                    f"the groups with polygons: {nested_rows}")
+        example = import_example()
+        from vtkmodules.vtkCommonCore import vtkDoubleArray
+
+        values = vtkDoubleArray()
+        for v in (math.nan, math.inf, 2.5, 14010001.0):
+            values.InsertNextValue(v)
+        assert_that([example.attribute_text(values, c) for c in range(4)] == ["nan", "inf", "2.5", "14010001"],
+                    "attribute values as text")
         for options, fragment in (({"each": "HUC"}, "no feature has the attribute 'HUC' (its attributes: HUC8)"),
+                                  ({"each": " "}, "--each: expected the name of an attribute"),
                                   ({"each": "HUC8", "feature": "HUC8=9"}, "--each HUC8 and --feature HUC8=9: give one")):
             _, stderr = run_colorado(os.path.join(out, "bad"), stations=stations, observations=observations,
                                      catchment=basins, plots=False, status=1, what=str(options), **options)

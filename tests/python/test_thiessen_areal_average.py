@@ -602,6 +602,53 @@ def with_open_polyline(data):
     return data
 
 
+def projection_of(f):
+    """The TesseraProjection record of output 1's field data."""
+    record = f.GetOutputDataObject(1).GetFieldData().GetAbstractArray("TesseraProjection")
+    return record.GetValue(0) if record is not None and record.GetNumberOfValues() == 1 else None
+
+
+def test_the_projection_used_is_recorded_and_makes_the_same_tiles():
+    # Output 1 records the projection the tiles were made in: vtkGeographicProjection's fit to the
+    # catchment's rings (an open polyline of the catchment, far off, ignored with a warning, does
+    # not move it, as it moves vtkGeographicProjection's fit to every point). Given back as
+    # ProjectionRecord, as for a part of the catchment, it makes the same weights, bit for bit.
+    coords = [(10.2, 45.1), (10.9, 45.3), (10.5, 45.8), (11.4, 45.6), (11.8, 45.2)]
+    square = [(10.0, 45.0), (11.5, 45.0), (11.5, 46.0), (10.0, 46.0)]
+    catchment = polygon([square])
+    fit = vtkGeographicProjection()
+    fit.SetInputData(catchment)
+    fit.Update()
+    expected = fit.GetOutputDataObject(0).GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
+    f = vtkThiessenArealAverage()
+    f.SetGaugesData(gauges_polydata(coords, ["a", "b", "c", "d", "e"], [1.0, 2.0, 3.0, 4.0, 5.0]))
+    f.SetCatchmentData(catchment)
+    f.Update(0)
+    assert_that(projection_of(f) == expected, f"the record {projection_of(f)!r}, vtkGeographicProjection's {expected!r}")
+    weights = weights_by_gauge(f.GetOutputDataObject(0))
+    far = polygon([square])
+    far.GetPoints().InsertNextPoint(30.0, 60.0, 0.0)
+    lines = vtkCellArray()
+    lines.InsertNextCell(2, [0, 4])
+    far.SetLines(lines)
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetCatchmentData(far)
+    f.Update(0)
+    assert_that(projection_of(f) == expected and any("not polygons or closed polylines" in w for w in warnings),
+                f"with an open polyline far off: {projection_of(f)!r}, {warnings}")
+    fit.SetInputData(far)
+    fit.Update()
+    moved = fit.GetOutputDataObject(0).GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
+    assert_that(moved != expected, "vtkGeographicProjection's fit to every point moves with the polyline")
+    again = vtkThiessenArealAverage()
+    again.SetGaugesData(gauges_polydata(coords, ["a", "b", "c", "d", "e"], [1.0, 2.0, 3.0, 4.0, 5.0]))
+    again.SetCatchmentData(catchment)
+    again.SetProjectionRecord(projection_of(f))
+    again.Update(0)
+    assert_that(projection_of(again) == expected, f"the record given back: {projection_of(again)!r}")
+    assert_that(weights_by_gauge(again.GetOutputDataObject(0)) == weights, "the same weights, bit for bit")
+
+
 def test_window_cells_that_are_not_rings_are_reported():
     square = [(0, 0), (1, 0), (1, 1), (0, 1)]
     f = vtkThiessenArealAverage()
@@ -1330,6 +1377,7 @@ if __name__ == "__main__":
          test_window_cells_that_are_not_rings_are_reported,
          test_window_clip_of_tiles_stored_in_float,
          test_dates_and_year_month_columns_give_the_same_steps,
+         test_the_projection_used_is_recorded_and_makes_the_same_tiles,
          test_the_monthly_csv_as_a_text_reader_gives_it,
          test_blank_values_read_as_text_are_missing,
          test_bad_dates_and_months_are_named,
