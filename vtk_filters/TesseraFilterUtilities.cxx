@@ -30,6 +30,7 @@
 #include "vtkPointSet.h"
 
 #include "errors.h"
+#include "identical_rings.h"
 #include "large_pages.h"
 #include "polygon_area.h"
 #include "segment_rings.h"
@@ -1048,6 +1049,51 @@ std::string SkippedCellsWarning(const Rings& rings, const char* what)
       ".";
   }
   return text;
+}
+
+std::string CancelIdenticalRings(Rings& rings, const char* what)
+{
+  const auto pairs = tessera::IdenticalRingPairs(rings.Offsets, rings.Vertices);
+  if (pairs.empty())
+  {
+    return std::string();
+  }
+  std::vector<char> cancelled(rings.Sources.size(), 0);
+  for (const auto& [r, s] : pairs)
+  {
+    cancelled[r] = cancelled[s] = 1;
+  }
+  Rings kept;
+  kept.SkippedCells = rings.SkippedCells;
+  kept.FirstSkipped = rings.FirstSkipped;
+  kept.SkippedBlocks = rings.SkippedBlocks;
+  kept.BlockNames = rings.BlockNames;
+  for (std::size_t r = 0; r < cancelled.size(); ++r)
+  {
+    if (!cancelled[r])
+    {
+      kept.Vertices.insert(kept.Vertices.end(),
+        rings.Vertices.begin() + std::ptrdiff_t(rings.Offsets[r]),
+        rings.Vertices.begin() + std::ptrdiff_t(rings.Offsets[r + 1]));
+      kept.Offsets.push_back(kept.Vertices.size());
+      kept.Sources.push_back(rings.Sources[r]);
+      kept.Blocks.push_back(rings.Blocks[r]);
+    }
+  }
+  const std::string named = ListNames(pairs.size(),
+    [&](std::size_t k)
+    { return rings.Sources[pairs[k].first] + " and " + rings.Sources[pairs[k].second]; });
+  if (kept.Sources.empty())
+  {
+    throw tessera::InputError(std::string("every ring of the ") + what +
+      " is given twice, and by the even-odd rule each pair cancels: no region is left (" + named +
+      ")");
+  }
+  rings = std::move(kept);
+  return std::to_string(pairs.size()) + " pair(s) of rings of the " + what +
+    " are the same ring, and by the even-odd rule each pair cancels (an island that fills a hole "
+    "exactly: the region is the two together), so they were left out: " +
+    named + ".";
 }
 
 double OrientAnticlockwise(std::vector<tessera::Point2>& polygon)

@@ -19,7 +19,9 @@
  * - port 1, catchment: polygons or closed polylines in lon/lat (vtkPolyData, or a composite data
  * set such as vtkGDALVectorReader's output), or lines that join end to end into closed rings,
  * taken as rings under the even-odd rule (other cells, such as lines in no closed ring, are
- * ignored with a warning that counts them and names the first); edges are straight in lon/lat,
+ * ignored with a warning that counts them and names the first; two rings that are the same path,
+ * as an enclave given as a basin's hole and as a feature of its own, cancel by that rule and are
+ * left out with a warning naming them); edges are straight in lon/lat,
  * but one whose longitudes differ by more than 270 degrees as written is taken the shorter way
  * round (179 to -179 crosses the 180th meridian) and one that differs by 180 to 270 degrees,
  * which could be meant either way, is an error naming its ring and segment;

@@ -161,11 +161,16 @@ int vtkWindowClip::RequestData(vtkInformation*,
     {
       vtkWarningMacro(<< pointDataWarning);
     }
-    const tessera_vtk::Rings window = tessera_vtk::ReadPolygonRings(windowData);
+    tessera_vtk::Rings window = tessera_vtk::ReadPolygonRings(windowData);
     const std::string skippedRings = tessera_vtk::SkippedCellsWarning(window, "window (input 1)");
     if (!skippedRings.empty())
     {
       vtkWarningMacro(<< skippedRings);
+    }
+    const std::string twice = tessera_vtk::CancelIdenticalRings(window, "window (input 1)");
+    if (!twice.empty())
+    {
+      vtkWarningMacro(<< twice);
     }
     // A window of tiny coordinates is clipped scaled up by a power of two (exact), tiles alike,
     // and the results scaled back: below some 1e-150 the clip's products fell below the doubles,

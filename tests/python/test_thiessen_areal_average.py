@@ -649,6 +649,35 @@ def test_the_projection_used_is_recorded_and_makes_the_same_tiles():
     assert_that(weights_by_gauge(again.GetOutputDataObject(0)) == weights, "the same weights, bit for bit")
 
 
+def test_an_enclave_given_as_a_hole_and_a_feature_of_its_own_is_in_the_catchment():
+    # A basin with an enclave: the basin's feature has a hole, and the enclave is a feature of its
+    # own (a block of its own, as vtkGDALVectorReader gives it) that fills the hole exactly. By the
+    # even-odd rule the two rings cancel: the catchment is the basin's outline, with a warning
+    # naming them (it was refused as a ring given twice).
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+
+    coords = [(10.2, 45.1), (10.9, 45.3), (10.5, 45.8), (11.4, 45.6)]
+    outline = [(10.0, 45.0), (11.5, 45.0), (11.5, 46.0), (10.0, 46.0)]
+    hole = [(10.4, 45.3), (10.4, 45.7), (11.0, 45.7), (11.0, 45.3)]
+    enclave = list(reversed(hole))[2:] + list(reversed(hole))[:2]
+    blocks = vtkMultiBlockDataSet()
+    blocks.SetBlock(0, polygon([outline, hole]))
+    blocks.SetBlock(1, polygon([enclave]))
+    results = []
+    for catchment in (polygon([outline]), blocks):
+        f = vtkThiessenArealAverage()
+        warnings = messages_of(f, vtkCommand.WarningEvent)
+        errors = messages_of(f)
+        f.SetGaugesData(gauges_polydata(coords, ["a", "b", "c", "d"], [1.0, 2.0, 3.0, 4.0]))
+        f.SetCatchmentData(catchment)
+        f.Update(0)
+        assert_that(not errors, f"errors: {errors}")
+        results.append((summary_column(f, "ArealMean"), weights_by_gauge(f.GetOutputDataObject(0)), warnings))
+    assert_that(results[1][:2] == results[0][:2], f"the enclave's basin: {results[1][:2]} against {results[0][:2]}")
+    assert_that(len(results[1][2]) == 1 and "are the same ring" in results[1][2][0]
+                and "block 0" in results[1][2][0] and "block 1" in results[1][2][0], f"the pair named: {results[1][2]}")
+
+
 def test_window_cells_that_are_not_rings_are_reported():
     square = [(0, 0), (1, 0), (1, 1), (0, 1)]
     f = vtkThiessenArealAverage()
@@ -1378,6 +1407,7 @@ if __name__ == "__main__":
          test_window_clip_of_tiles_stored_in_float,
          test_dates_and_year_month_columns_give_the_same_steps,
          test_the_projection_used_is_recorded_and_makes_the_same_tiles,
+         test_an_enclave_given_as_a_hole_and_a_feature_of_its_own_is_in_the_catchment,
          test_the_monthly_csv_as_a_text_reader_gives_it,
          test_blank_values_read_as_text_are_missing,
          test_bad_dates_and_months_are_named,

@@ -325,6 +325,24 @@ def test_a_window_of_loose_line_segments_is_joined_into_its_rings():
                 and "the first is cell 0" in errors[0], f"an open chain: {errors}")
 
 
+def test_an_island_that_fills_a_hole_exactly_cancels_it():
+    # Rings given twice cancel by the even-odd rule: an outline with a hole, and an island that
+    # fills the hole exactly (its path from another start, the other way round), clip as the
+    # outline alone, with a warning naming the two; a window whose every ring is given twice has
+    # no region, an error.
+    tiles = random_tiling(8, 200)
+    outline = [(0.1, 0.1), (0.9, 0.1), (0.9, 0.9), (0.1, 0.9)]
+    hole = [(0.3, 0.3), (0.3, 0.7), (0.7, 0.7), (0.7, 0.3)]
+    island = list(reversed(hole))[1:] + list(reversed(hole))[:1]
+    expected = cell_values(clip(tiles, [outline]), "ClippedArea")
+    output, errors, warnings = clip_by(tiles, polygon([outline, hole, island]))
+    assert_that(not errors and cell_values(output, "ClippedArea") == expected, f"the outline's clip: {errors}")
+    assert_that(len(warnings) == 1 and "1 pair(s) of rings of the window (input 1) are the same ring" in warnings[0]
+                and "cell 1 and cell 2" in warnings[0], f"the pair named: {warnings}")
+    _, errors, _ = clip_by(tiles, polygon([outline, list(reversed(outline))]))
+    assert_that(errors and "every ring of the window (input 1) is given twice" in errors[0], f"no region: {errors}")
+
+
 def test_tiles_and_window_must_share_their_projection():
     """Gauges and catchment projected apart, each with its automatic projection, lie in two
     different planes: clipping one by the other is an error naming both projections. With one
@@ -529,6 +547,7 @@ if __name__ == "__main__":
          test_review_cases,
          test_input_arrays_named_like_the_filters_are_kept_under_another_name,
          test_a_window_of_loose_line_segments_is_joined_into_its_rings,
+         test_an_island_that_fills_a_hole_exactly_cancels_it,
          test_tiles_and_window_must_share_their_projection,
          test_the_tiles_point_data_is_named_as_not_passed,
          test_inputs_of_another_type_are_named_and_leave_empty_outputs,
