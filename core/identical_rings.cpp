@@ -2,6 +2,8 @@
 // comes to the smaller neighbour first), the rings sorted by that order, equal neighbours paired.
 #include "identical_rings.h"
 
+#include "predicates.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -15,14 +17,16 @@ bool Before(const Point2& a, const Point2& b)
 }
 
 /// The ring's vertices without repeated consecutive ones (cyclically), in canonical order: the
-/// lexicographically smallest of the sequences that start at a smallest vertex, either way round.
-/// Empty for a ring with a NaN coordinate or fewer than three vertices left.
+/// sequence that starts at its smallest vertex, the way round that comes to the smaller neighbour
+/// first. Empty for a ring with a coordinate that is not finite, of fewer than three vertices
+/// left, or that passes through its smallest vertex twice (it touches itself, which validation
+/// refuses; reading it from each pass would cost O(n) per pass).
 std::vector<Point2> CanonicalRing(const Point2* ring, std::size_t count)
 {
   std::vector<Point2> kept;
   for (std::size_t k = 0; k < count; ++k)
   {
-    if (std::isnan(ring[k].x) || std::isnan(ring[k].y))
+    if (!std::isfinite(ring[k].x) || !std::isfinite(ring[k].y))
     {
       return {};
     }
@@ -40,29 +44,112 @@ std::vector<Point2> CanonicalRing(const Point2* ring, std::size_t count)
   {
     return {};
   }
-  const Point2 smallest = *std::min_element(kept.begin(), kept.end(), Before);
-  std::vector<Point2> best, candidate(n);
-  for (std::size_t start = 0; start < n; ++start)
+  const std::size_t start =
+    std::size_t(std::min_element(kept.begin(), kept.end(), Before) - kept.begin());
+  if (std::count(kept.begin(), kept.end(), kept[start]) > 1)
   {
-    if (!(kept[start] == smallest))
+    return {};
+  }
+  // From the smallest vertex towards its smaller neighbour; where both neighbours are one point
+  // (the ring goes there and back), the smaller of the two whole readings.
+  std::vector<Point2> canonical(n), backwards(n);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    canonical[k] = kept[(start + k) % n];
+    backwards[k] = kept[(start + n - k) % n];
+  }
+  if (std::lexicographical_compare(
+        backwards.begin(), backwards.end(), canonical.begin(), canonical.end(), Before))
+  {
+    canonical.swap(backwards);
+  }
+  return canonical;
+}
+
+/// Whether p lies inside ring (even-odd crossings of the ray from p towards +x, decided exactly
+/// by orient2d); false for a p on the ring.
+bool Inside(const Point2& p, const Point2* ring, std::size_t count)
+{
+  bool inside = false;
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const Point2& a = ring[k];
+    const Point2& b = ring[(k + 1) % count];
+    if ((a.y > p.y) != (b.y > p.y))
+    {
+      // The edge crosses the line y = p.y: to the right of p when p is on the side of the
+      // upward edge where the ray leaves it (left of a->b going up, right going down).
+      const int side = orient2d(a, b, p);
+      if (side == 0)
+      {
+        return false;
+      }
+      if ((side > 0) == (b.y > a.y))
+      {
+        inside = !inside;
+      }
+    }
+    else if (a.y == p.y && b.y == p.y && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x))
+    {
+      return false; // on a horizontal edge
+    }
+  }
+  return inside;
+}
+
+/// Whether copies of one ring (copies: their indices, ascending) cancel in pairs as a hole and
+/// the island that fills it: the first lies inside an odd number of the other rings (the copies
+/// aside), so its region is outside the rest and each pair adds it back. Copies of an outer
+/// boundary would take their region away instead: not paired, so validation refuses them as a
+/// ring given twice. The point tested is the middle of an edge of the ring that lies on no other
+/// ring (rings may touch and share stretches).
+bool IsHoleAndIsland(const std::vector<std::size_t>& offsets,
+  const std::vector<Point2>& vertices,
+  const std::vector<std::size_t>& copies)
+{
+  const std::size_t r = copies.front();
+  const Point2* ring = vertices.data() + offsets[r];
+  const std::size_t count = offsets[r + 1] - offsets[r];
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const Point2 a = ring[k], b = ring[(k + 1) % count];
+    if (a == b)
     {
       continue;
     }
-    for (const std::size_t step : { std::size_t(1), n - 1 }) // forwards, backwards
+    const Point2 p{ a.x + 0.5 * (b.x - a.x), a.y + 0.5 * (b.y - a.y) };
+    std::size_t around = 0;
+    bool onAnother = false;
+    for (std::size_t t = 0; t + 1 < offsets.size() && !onAnother; ++t)
     {
-      for (std::size_t k = 0; k < n; ++k)
+      if (std::binary_search(copies.begin(), copies.end(), t))
       {
-        candidate[k] = kept[(start + k * step) % n];
+        continue;
       }
-      if (best.empty() ||
-        std::lexicographical_compare(
-          candidate.begin(), candidate.end(), best.begin(), best.end(), Before))
+      const Point2* other = vertices.data() + offsets[t];
+      const std::size_t n = offsets[t + 1] - offsets[t];
+      for (std::size_t j = 0; j < n && !onAnother; ++j)
       {
-        best = candidate;
+        const Point2& c = other[j];
+        const Point2& d = other[(j + 1) % n];
+        // p on c-d, or a-b along c-d (p, rounded, might miss a shared stretch by an ulp)
+        const auto within = [&c, &d](const Point2& q)
+        {
+          return std::min(c.x, d.x) <= q.x && q.x <= std::max(c.x, d.x) &&
+            std::min(c.y, d.y) <= q.y && q.y <= std::max(c.y, d.y);
+        };
+        const bool alongLine = orient2d(c, d, a) == 0 && orient2d(c, d, b) == 0;
+        onAnother = (orient2d(c, d, p) == 0 && within(p)) ||
+          (alongLine && (within(a) || within(b) || within(p)));
       }
+      around += !onAnother && Inside(p, other, n) ? 1 : 0;
+    }
+    if (!onAnother)
+    {
+      return around % 2 == 1;
     }
   }
-  return best;
+  return false; // every edge lies along other rings: left to validation
 }
 } // namespace
 
@@ -93,17 +180,23 @@ std::vector<std::pair<std::size_t, std::size_t>> IdenticalRingPairs(
   // Stable: identical rings stay in ring order, so the first two of each group pair up.
   std::stable_sort(order.begin(), order.end(), less);
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
-  for (std::size_t k = 0; k + 1 < order.size();)
+  std::vector<std::size_t> copies;
+  for (std::size_t k = 0; k < order.size();)
   {
-    if (canonical[order[k]] == canonical[order[k + 1]])
+    std::size_t end = k + 1;
+    while (end < order.size() && canonical[order[end]] == canonical[order[k]])
     {
-      pairs.push_back({ order[k], order[k + 1] });
-      k += 2;
+      ++end;
     }
-    else
+    copies.assign(order.begin() + std::ptrdiff_t(k), order.begin() + std::ptrdiff_t(end));
+    if (copies.size() >= 2 && IsHoleAndIsland(offsets, vertices, copies))
     {
-      ++k;
+      for (std::size_t c = 0; c + 1 < copies.size(); c += 2) // (ascending: a stable sort)
+      {
+        pairs.push_back({ copies[c], copies[c + 1] });
+      }
     }
+    k = end;
   }
   std::sort(pairs.begin(), pairs.end());
   return pairs;

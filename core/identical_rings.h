@@ -20,12 +20,16 @@
 namespace tessera
 {
 
-/// Pairs (r, s), r < s, of rings that are the same closed path: the same vertices in the same
-/// cyclic order, either way round and from any start, repeated consecutive vertices (a closing
-/// vertex equal to the first included) aside. Of three or more identical rings the first two are
-/// paired, then the next two; an odd one is in no pair. A ring with a NaN coordinate, or of fewer
-/// than three distinct vertices, is in none (validation names it). Ring r is
-/// vertices[offsets[r], offsets[r + 1]). Ascending by r. O(v log v) for v vertices.
+/// Pairs (r, s), r < s, of rings that are the same closed path (the same vertices in the same
+/// cyclic order, either way round and from any start, repeated consecutive vertices and a closing
+/// vertex aside) and cancel as a hole and the island that fills it: the ring lies inside an odd
+/// number of the other rings (its copies aside). Copies of an outer boundary would take their
+/// region away, so they are in no pair (validation refuses them as a ring given twice). Of three
+/// or more copies the first two are paired, then the next two; an odd one is in no pair. A ring
+/// with a coordinate that is not finite, of fewer than three distinct vertices, or that passes
+/// through its smallest vertex twice, is in none (validation names it). Ring r is
+/// vertices[offsets[r], offsets[r + 1]). Ascending by r. O(v log v) for v vertices, plus O(v) per
+/// group of copies.
 std::vector<std::pair<std::size_t, std::size_t>> IdenticalRingPairs(
   const std::vector<std::size_t>& offsets,
   const std::vector<Point2>& vertices);

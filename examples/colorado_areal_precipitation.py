@@ -334,8 +334,9 @@ def read_catchment(path, feature=None):
     features = polygon_blocks(output)
     if features > 1 and feature is None:
         print(f"{path}: the catchment is the {features} polygon features of the file taken "
-              "together (even-odd rule: a feature inside another is a hole); --feature "
-              "ATTRIBUTE=VALUE takes only those with that value", file=sys.stderr)
+              "together (even-odd rule: a feature inside another is a hole, and one that fills "
+              "another's hole exactly joins it); --feature ATTRIBUTE=VALUE takes only those with "
+              "that value", file=sys.stderr)
     # The coordinates are read as lon/lat whatever the file declares: a projected system (a .prj
     # of UTM, a GeoJSON "crs") is named, as its numbers are either metres (which the filter
     # refuses as longitudes) or lon/lat under a wrong declaration.

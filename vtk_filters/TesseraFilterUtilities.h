@@ -183,10 +183,11 @@ tessera::InputError WithRingSources(const tessera::RingError& error,
 /// or empty when there are none.
 std::string SkippedCellsWarning(const Rings& rings, const char* what);
 
-/// Leaves out the rings that are given twice (core identical_rings.h: by the even-odd rule each
-/// pair cancels, as an island feature that fills another feature's hole exactly leaves the union
-/// of the two), and returns the warning that names them by their sources (what names the input),
-/// or "" when there are none. Throws tessera::InputError when no ring is left.
+/// Leaves out the pairs of rings that are a hole and the island that fills it exactly (core
+/// identical_rings.h: by the even-odd rule each pair cancels, and the region is the union of the
+/// island's feature and the hole's), and returns the warning that names them by their sources
+/// (what names the input), or "" when there are none. Copies of an outer boundary stay, for
+/// validation to refuse. Throws tessera::InputError when no ring is left.
 std::string CancelIdenticalRings(Rings& rings, const char* what);
 
 /// The core's (errors.h), under the name the filters have always used.

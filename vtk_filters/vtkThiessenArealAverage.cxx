@@ -724,10 +724,10 @@ std::string RingsInsideOtherBlocksWarning(const tessera_vtk::Rings& rings,
     ListNames(inside.size(),
       [&](std::size_t k)
       {
+        // (by their cells: ring numbers shift where a pair of rings given twice was left out)
         const std::size_t r = inside[k].first;
         const auto around = static_cast<std::size_t>(inside[k].second);
-        return "ring " + std::to_string(r) + " of " + rings.BlockNames.at(block[r]) +
-          " inside ring " + std::to_string(around) + " of " + rings.BlockNames.at(block[around]);
+        return rings.Sources[r] + " inside " + rings.Sources[around];
       });
 }
 

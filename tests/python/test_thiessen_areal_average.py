@@ -285,7 +285,7 @@ def test_a_catchment_ring_inside_another_blocks_ring_is_reported():
         if expected:
             # (blocks by their index under the root, with ParaView's composite index beside it)
             assert_that("): 1 catchment ring(s)" in said[0]
-                        and "ring 1 of block 1 (composite index 2) inside ring 0 of block 0 (composite index 1)" in said[0], said[0])
+                        and "block 1 (composite index 2) cell 0 inside block 0 (composite index 1) cell 0" in said[0], said[0])
 
 
 def test_gauges_in_blocks_as_a_point_layer_gives_them_are_joined():
