@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Thiessen areal-average precipitation over Colorado, month by month (Thiessen 1911).
+"""Thiessen areal-average precipitation over Colorado, month by month (Thiessen 1911), or over
+your own catchment, monthly or daily (--stations, --observations, --catchment).
 
 The hydrologist's main job with Tessera: 376 rain gauges given in longitude/latitude (many of
 them outside the state), the state outline as the catchment, and 1236 months (1895-1997) of
@@ -35,7 +36,9 @@ Writes into --out:
   areal_mean_by_ATTRIBUTE.csv
                          with --each ATTRIBUTE: ATTRIBUTE,year,month,stations_used,
                          stations_weighted,areal_mean,area_km2, the means over each group of the
-                         catchment's features with one value of the attribute (each sub-basin),
+                         catchment's features with one value of the attribute (each sub-basin;
+                         stations_used counts all gauges that reported, as in areal_mean.csv,
+                         stations_weighted those whose tiles reach the group),
                          in the whole catchment's projection (their means weighted by area_km2
                          make the whole's)
 Daily observations (columns station_id, year, month, day, precip, or station_id, date, precip
@@ -43,8 +46,8 @@ with dates YYYY-MM-DD) make a step a day: areal_mean.csv and weights_all_days.cs
 stands for weights_all_months.csv) gain a day column (year,month,day,...), --day chooses the day
 of the weights, tiles and map (named YYYY_MM_DD), and every day from the first to the last has
 its row. A date column of YYYY-MM gives months.
-Units are those of the data (documented as mm; the magnitudes look like cm: see
-examples/data/README.md).
+Units are those of the data (for the Colorado data: documented as mm, the magnitudes look like
+cm; see examples/data/README.md).
 
 Run with Debian's /usr/bin/python3 and PYTHONPATH=build/python (scripts/demo does both).
 """

@@ -1090,10 +1090,11 @@ std::string CancelIdenticalRings(Rings& rings, const char* what)
       ")");
   }
   rings = std::move(kept);
-  return std::to_string(pairs.size()) + " pair(s) of rings of the " + what +
-    " are the same ring, and by the even-odd rule each pair cancels (an island that fills a hole "
-    "exactly: the region is the two together), so they were left out: " +
-    named + ".";
+  return std::to_string(pairs.size()) + " hole(s) of the " + what +
+    " are filled exactly by a ring of their own (an enclave given as a hole and as a polygon): by "
+    "the even-odd rule the two rings cancel, so the enclave is part of the region, joined to what "
+    "surrounds it (the rings: " +
+    named + ").";
 }
 
 double OrientAnticlockwise(std::vector<tessera::Point2>& polygon)

@@ -674,7 +674,7 @@ def test_an_enclave_given_as_a_hole_and_a_feature_of_its_own_is_in_the_catchment
         assert_that(not errors, f"errors: {errors}")
         results.append((summary_column(f, "ArealMean"), weights_by_gauge(f.GetOutputDataObject(0)), warnings))
     assert_that(results[1][:2] == results[0][:2], f"the enclave's basin: {results[1][:2]} against {results[0][:2]}")
-    assert_that(len(results[1][2]) == 1 and "are the same ring" in results[1][2][0]
+    assert_that(len(results[1][2]) == 1 and "are filled exactly by a ring of their own" in results[1][2][0]
                 and "block 0" in results[1][2][0] and "block 1" in results[1][2][0], f"the pair named: {results[1][2]}")
 
 

@@ -337,7 +337,7 @@ def test_an_island_that_fills_a_hole_exactly_cancels_it():
     expected = cell_values(clip(tiles, [outline]), "ClippedArea")
     output, errors, warnings = clip_by(tiles, polygon([outline, hole, island]))
     assert_that(not errors and cell_values(output, "ClippedArea") == expected, f"the outline's clip: {errors}")
-    assert_that(len(warnings) == 1 and "1 pair(s) of rings of the window (input 1) are the same ring" in warnings[0]
+    assert_that(len(warnings) == 1 and "1 hole(s) of the window (input 1) are filled exactly by a ring of their own" in warnings[0]
                 and "cell 1 and cell 2" in warnings[0], f"the pair named: {warnings}")
     _, errors, _ = clip_by(tiles, polygon([outline, list(reversed(outline))]))
     assert_that(errors and "run along each other all the way round" in errors[0], f"an outline twice: {errors}")
