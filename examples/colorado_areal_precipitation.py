@@ -400,18 +400,30 @@ def select_features(data, feature, path):
     return chosen[wanted]
 
 
+def interactive():
+    """Whether stderr is a terminal: progress is then redrawn on one line with \\r; into a file
+    or a pipe (a log) that made one long line with the warnings spliced in, so there progress is
+    written as lines of its own, fewer of them."""
+    return sys.stderr.isatty()
+
+
 class Progress:
-    """Prints the filter's progress over the months on one line; end_line() ends that line before
-    another message is printed, stop() ends it for good (the filter failed)."""
+    """Prints the filter's progress over the steps: on one line at a terminal, in steps of 5%
+    (end_line() ends that line before another message is printed), or as a line of its own at 0,
+    25, 50, 75 and 100% into a log; stop() ends it for good (the filter failed)."""
 
     def __init__(self, label):
         self.label, self.last, self.open, self.stopped = label, -1, False, False
+        self.step = 5 if interactive() else 25
 
     def __call__(self, caller, event):
         percent = int(caller.GetProgress() * 100)
-        percent -= percent % 5  # in steps of 5, shown even when the filter reports past one
+        percent -= percent % self.step  # shown even when the filter reports past a step
         if not self.stopped and percent != self.last:
             self.last = percent
+            if self.step == 25:
+                print(f"{self.label}: {percent:3d}%", file=sys.stderr, flush=True)
+                return
             print(f"\r{self.label}: {percent:3d}%", end="", file=sys.stderr, flush=True)
             self.open = True
             if percent == 100:
@@ -639,7 +651,8 @@ def write_means_by_feature(features, name, gauges, observations, steps, whole, c
         out = csv.writer(f)
         out.writerow([name, *steps.columns, "stations_used", "stations_weighted", "areal_mean", "area_km2"])
         for k, value in enumerate(values):
-            print(f"\rareal means by {name}: {k + 1} of {len(values)}", end="", file=sys.stderr, flush=True)
+            if interactive():
+                print(f"\rareal means by {name}: {k + 1} of {len(values)}", end="", file=sys.stderr, flush=True)
             average = tessera.vtkThiessenArealAverage()
             average.SetGaugesData(gauges)
             average.SetCatchmentData(features[value])
@@ -651,7 +664,8 @@ def write_means_by_feature(features, name, gauges, observations, steps, whole, c
             average.Update(1)
             summary, weights = average.GetOutputDataObject(1), average.GetOutputDataObject(2)
             if errors or summary is None or summary.GetNumberOfRows() == 0:
-                print(file=sys.stderr)
+                if interactive():
+                    print(file=sys.stderr)
                 csv_input.fail(f"{catchment_path}: the features with {name} = {value}: "
                                + (errors[0] if errors else "the areal average failed"))
             covered = covered_areas(weights)
@@ -664,7 +678,8 @@ def write_means_by_feature(features, name, gauges, observations, steps, whole, c
                 out.writerow([value, *steps.of_time[t], summary.GetValueByName(r, "StationsUsed").ToInt(),
                               summary.GetValueByName(r, "StationsWeighted").ToInt(),
                               "" if math.isnan(mean) else f"{mean:.15g}", "" if area is None else f"{area / 1e6:.15g}"])
-    print(file=sys.stderr)
+    print(f"\rareal means by {name}: {len(values)} of {len(values)}" if interactive()
+          else f"areal means by {name}: {len(values)} of {len(values)}", file=sys.stderr)
     # (Areas the tiles cover: all of a region once a gauge reports; the largest difference of the
     # steps, relative, beyond what densifying the groups' own edges can make.)
     off = max((abs(group_areas.get(t, 0.0) - a) / a for t, a in whole_areas.items() if a > 0), default=0.0)

@@ -1212,6 +1212,23 @@ def test_project_gauges_names_a_bad_gauge_by_its_line():
             assert_that(not os.path.exists(made) or not os.listdir(made), f"{what}: wrote its outputs")
 
 
+def test_progress_into_a_log_is_lines_of_its_own():
+    # Into a file or a pipe (a log), progress is lines of their own at 0, 25, 50, 75 and 100%, with
+    # no carriage return: redrawn with \r it made one long line with the warnings spliced in.
+    with tempfile.TemporaryDirectory() as out:
+        catchment, stations, observations = write_lake_basin(out)
+        done = subprocess.run([sys.executable, os.path.join(EXAMPLES, "colorado_areal_precipitation.py"), "--out", out,
+                               "--stations", stations, "--observations", observations, "--catchment", catchment,
+                               "--month", "2001-01", "--no-plots"], capture_output=True, timeout=300)
+        assert_that(done.returncode == 0, f"exit status {done.returncode}: {done.stderr!r}")
+        assert_that(b"\r" not in done.stderr, f"a carriage return in the log: {done.stderr!r}")
+        progress = [re.fullmatch(r"Thiessen areal means: +(\d+)%", line)
+                    for line in done.stderr.decode().splitlines() if line.startswith("Thiessen areal means:")]
+        percents = [int(m.group(1)) if m else None for m in progress]
+        assert_that(percents and percents[-1] == 100 and percents == sorted(set(percents))
+                    and set(percents) <= {0, 25, 50, 75, 100}, f"progress lines: {percents}")
+
+
 def test_every_script_takes_help():
     # The README's promise, csv_input.py included: it is imported by the other examples, and run
     # (with --help or without arguments) it says so; imported, it prints nothing.
@@ -1276,5 +1293,6 @@ if __name__ == "__main__":
          test_ridge_grouping_names_a_bad_epicentre_alone,
          test_ridge_grouping_checks_its_out_directory_first,
          test_project_gauges_names_a_bad_gauge_by_its_line,
+         test_progress_into_a_log_is_lines_of_its_own,
          test_every_script_takes_help,
          test_without_tessera_on_the_path_the_scripts_say_how_to_run])
