@@ -167,34 +167,6 @@ bool SegmentMeetsBox(const Point2& a, const Point2& b, const Box2& box)
     orient2d_fast(a, b, { box.XMin, box.YMax }) != side;
 }
 
-// Winding-number contribution of segment a->b at p, by the signed crossings of the ray from p
-// towards +x. Half-open in y so a vertex on the ray counts once; exact through orient2d.
-int RayCrossing(const Point2& a, const Point2& b, const Point2& p)
-{
-  if (a.y <= p.y)
-  {
-    if (b.y > p.y && orient2d_fast(a, b, p) > 0)
-    {
-      return 1;
-    }
-  }
-  else if (b.y <= p.y && orient2d_fast(a, b, p) < 0)
-  {
-    return -1;
-  }
-  return 0;
-}
-
-int RingWinding(const std::vector<Point2>& ring, const Point2& p)
-{
-  int winding = 0;
-  for (std::size_t i = 0; i < ring.size(); ++i)
-  {
-    winding += RayCrossing(ring[i], ring[i + 1 == ring.size() ? 0 : i + 1], p);
-  }
-  return winding;
-}
-
 // Where segment p-q meets the line a->b, interpolated from the endpoint nearer the line, so that
 // the same segment gives the same point in either direction (neighbouring tiles then agree).
 Point2 LineCrossing(const Point2& p, const Point2& q, const Point2& a, const Point2& b)
@@ -1109,7 +1081,7 @@ void Catchment::BuildLocalRing(std::uint32_t ring,
     }
     local.push_back(NearestInBox(box, to));
   }
-  const int turns = winding - RingWinding(local, centre);
+  const int turns = winding - RingWinding(local.data(), local.size(), centre);
   if (turns == 0)
   {
     return;

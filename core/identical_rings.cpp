@@ -2,6 +2,7 @@
 // comes to the smaller neighbour first), the rings sorted by that order, equal neighbours paired.
 #include "identical_rings.h"
 
+#include "polygon_validation.h"
 #include "predicates.h"
 
 #include <algorithm>
@@ -66,37 +67,6 @@ std::vector<Point2> CanonicalRing(const Point2* ring, std::size_t count)
   return canonical;
 }
 
-/// Whether p lies inside ring (even-odd crossings of the ray from p towards +x, decided exactly
-/// by orient2d); false for a p on the ring.
-bool Inside(const Point2& p, const Point2* ring, std::size_t count)
-{
-  bool inside = false;
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    const Point2& a = ring[k];
-    const Point2& b = ring[(k + 1) % count];
-    if ((a.y > p.y) != (b.y > p.y))
-    {
-      // The edge crosses the line y = p.y: to the right of p when p is on the side of the
-      // upward edge where the ray leaves it (left of a->b going up, right going down).
-      const int side = orient2d(a, b, p);
-      if (side == 0)
-      {
-        return false;
-      }
-      if ((side > 0) == (b.y > a.y))
-      {
-        inside = !inside;
-      }
-    }
-    else if (a.y == p.y && b.y == p.y && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x))
-    {
-      return false; // on a horizontal edge
-    }
-  }
-  return inside;
-}
-
 /// Whether copies of one ring (copies: their indices, ascending) cancel in pairs as a hole and
 /// the island that fills it: the first lies inside an odd number of the other rings (the copies
 /// aside), so its region is outside the rest and each pair adds it back. Copies of an outer
@@ -130,19 +100,13 @@ bool IsHoleAndIsland(const std::vector<std::size_t>& offsets,
       const std::size_t n = offsets[t + 1] - offsets[t];
       for (std::size_t j = 0; j < n && !onAnother; ++j)
       {
+        // p on c-d, or a-b along c-d (p, rounded, might miss a shared stretch by an ulp)
         const Point2& c = other[j];
         const Point2& d = other[(j + 1) % n];
-        // p on c-d, or a-b along c-d (p, rounded, might miss a shared stretch by an ulp)
-        const auto within = [&c, &d](const Point2& q)
-        {
-          return std::min(c.x, d.x) <= q.x && q.x <= std::max(c.x, d.x) &&
-            std::min(c.y, d.y) <= q.y && q.y <= std::max(c.y, d.y);
-        };
-        const bool alongLine = orient2d(c, d, a) == 0 && orient2d(c, d, b) == 0;
-        onAnother = (orient2d(c, d, p) == 0 && within(p)) ||
-          (alongLine && (within(a) || within(b) || within(p)));
+        onAnother = SegmentsIntersect(p, p, c, d) ||
+          (orient2d(c, d, a) == 0 && orient2d(c, d, b) == 0 && SegmentsIntersect(a, b, c, d));
       }
-      around += !onAnother && Inside(p, other, n) ? 1 : 0;
+      around += !onAnother && RingWinding(other, n, p) % 2 != 0 ? 1 : 0;
     }
     if (!onAnother)
     {

@@ -26,7 +26,8 @@ namespace tessera
 /// The key by which station ids compare: the id as text, with the leading zeros of an integer id
 /// (digits only) dropped, so that an id read as text ("050109") matches the same id read as a
 /// number (50109); "000" is "0". An integer id written with a point or comma and zeros ("50109.0",
-/// "50109,0", as a program writes a whole-number column that has gaps) is that integer. Empty for an empty id.
+/// "50109,0", as a program writes a whole-number column that has gaps) is that integer. Empty for
+/// an empty id.
 std::string StationKey(std::string id);
 
 /// A station id of the observations that no gauge has: its rows are not used.

@@ -469,6 +469,16 @@ CleanRings WithContactsAsVertices(const CleanRings& rings)
   return out;
 }
 
+int RingWinding(const Point2* ring, std::size_t count, const Point2& p)
+{
+  int winding = 0;
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    winding += RayCrossing(ring[i], ring[i + 1 == count ? 0 : i + 1], p);
+  }
+  return winding;
+}
+
 int RingOrientation(const Point2* ring, std::size_t count)
 {
   const std::size_t lowest = LowestVertex(ring, count);

@@ -73,4 +73,8 @@ int RingOrientation(const Point2* ring, std::size_t count);
 /// Whether the closed segments ab and cd have a point in common, exactly.
 bool SegmentsIntersect(const Point2& a, const Point2& b, const Point2& c, const Point2& d);
 
+/// The winding number of the ring around p (the signed crossings of the ray from p towards +x,
+/// exact); for a p on the ring, either value. Its parity is the even-odd membership.
+int RingWinding(const Point2* ring, std::size_t count, const Point2& p);
+
 } // namespace tessera

@@ -157,4 +157,23 @@ inline int compare_distance_fast(const Point2& p, const Point2& a, const Point2&
 }
 #endif
 
+/// Winding-number contribution of segment a->b at p, by the signed crossings of the ray from p
+/// towards +x. Half-open in y so a vertex on the ray counts once; exact through orient2d. (Inline:
+/// the clip's catchment test runs it for every ring edge near a tile.)
+inline int RayCrossing(const Point2& a, const Point2& b, const Point2& p)
+{
+  if (a.y <= p.y)
+  {
+    if (b.y > p.y && orient2d_fast(a, b, p) > 0)
+    {
+      return 1;
+    }
+  }
+  else if (b.y <= p.y && orient2d_fast(a, b, p) < 0)
+  {
+    return -1;
+  }
+  return 0;
+}
+
 } // namespace tessera

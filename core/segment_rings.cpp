@@ -37,11 +37,22 @@ bool ComesBeforeAnticlockwise(const Point2& centre, const Point2& a, const Point
   return orient2d(centre, a, b) > 0;
 }
 
+/// Records that a walk through `point` goes on from segment s into segment t, and back.
+void Link(const std::vector<std::pair<std::int64_t, std::int64_t>>& segments,
+  std::int64_t point,
+  std::size_t s,
+  std::size_t t,
+  std::vector<std::int64_t>& across)
+{
+  across[2 * s + (segments[s].first == point ? 0 : 1)] = std::int64_t(t);
+  across[2 * t + (segments[t].first == point ? 0 : 1)] = std::int64_t(s);
+}
+
 /// Pairs the ends ends[first, last) of one point (of the segments' point ids: places[point]) where
 /// four, six, ... segments meet: by angle around the point, each end with the next, so that the
-/// rings through it touch there and never cross. False, pairing none, where that point or one
-/// at the far end of its segments has a NaN coordinate, or where two segments leave in one
-/// direction (overlapping: no pairing would make rings that validation accepts).
+/// rings through it touch there and never cross. False, pairing none, where two segments leave in
+/// one direction (overlapping: no pairing would make rings that validation accepts). (No place
+/// here is NaN: a NaN end has a place of its own, so its chain was cut as a dead end.)
 bool PairByAngle(const std::vector<std::pair<std::int64_t, std::int64_t>>& segments,
   const std::vector<Point2>& places,
   std::vector<End>& ends,
@@ -56,14 +67,6 @@ bool PairByAngle(const std::vector<std::pair<std::int64_t, std::int64_t>>& segme
     const auto& [a, b] = segments[end.Segment];
     return places[std::size_t(a == point ? b : a)];
   };
-  for (std::size_t k = first; k < last; ++k)
-  {
-    const Point2 q = far(ends[k]);
-    if (std::isnan(centre.x) || std::isnan(centre.y) || std::isnan(q.x) || std::isnan(q.y))
-    {
-      return false;
-    }
-  }
   const auto begin = ends.begin() + std::ptrdiff_t(first);
   const auto end = ends.begin() + std::ptrdiff_t(last);
   std::sort(begin,
@@ -78,9 +81,7 @@ bool PairByAngle(const std::vector<std::pair<std::int64_t, std::int64_t>>& segme
   }
   for (std::size_t k = first; k < last; k += 2)
   {
-    const std::size_t s = ends[k].Segment, t = ends[k + 1].Segment;
-    across[2 * s + (segments[s].first == point ? 0 : 1)] = std::int64_t(t);
-    across[2 * t + (segments[t].first == point ? 0 : 1)] = std::int64_t(s);
+    Link(segments, point, ends[k].Segment, ends[k + 1].Segment, across);
   }
   return true;
 }
@@ -221,12 +222,8 @@ SegmentRings JoinSegments(const std::vector<std::pair<std::int64_t, std::int64_t
       ends.begin());
     if (last - k == 2)
     {
-      const std::size_t s = ends[k].Segment, t = ends[k + 1].Segment;
-      if (s != t) // (a segment cannot meet itself: its ends differ)
-      {
-        across[2 * s + (segments[s].first == ends[k].Point ? 0 : 1)] = std::int64_t(t);
-        across[2 * t + (segments[t].first == ends[k].Point ? 0 : 1)] = std::int64_t(s);
-      }
+      // (a segment cannot meet itself: its ends differ)
+      Link(segments, ends[k].Point, ends[k].Segment, ends[k + 1].Segment, across);
     }
     else if (places && last - k >= 4 && (last - k) % 2 == 0)
     {

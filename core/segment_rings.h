@@ -65,7 +65,8 @@ struct PointRings
 /// segments, four or more, meet at a point they are paired by angle (exactly: orient2d), and no
 /// ring stands on a point twice (see the sketches above). A closed path stays unjoined where it
 /// passes through a point of an odd number of such segments (three paths between two points), or
-/// through a junction where two segments leave in one direction or one has a NaN end.
+/// through a junction where two segments leave in one direction; an end with a NaN coordinate meets
+/// no other, so its chain is a dead end.
 PointRings JoinSegmentsAtEqualEnds(const std::vector<Point2>& ends);
 
 } // namespace tessera

@@ -971,7 +971,78 @@ vtkSmartPointer<vtkPolyData> MergedPoints(vtkCompositeDataSet* composite,
   return merged;
 }
 
-Rings ReadPolygonRings(vtkDataObject* data)
+namespace
+{
+/// The warning for the cells of a window/catchment input that are not rings (what names the
+/// input), or empty when there are none.
+std::string SkippedCellsWarning(const Rings& rings, const char* what)
+{
+  std::string text;
+  if (rings.SkippedCells > 0)
+  {
+    text = std::to_string(rings.SkippedCells) + " cell(s) of the " + what +
+      " are not polygons or closed polylines, nor lines that join end to end into closed rings, "
+      "and were ignored (the first is " +
+      rings.FirstSkipped + ").";
+  }
+  if (!rings.SkippedBlocks.empty())
+  {
+    text += std::string(text.empty() ? "" : " ") + std::to_string(rings.SkippedBlocks.size()) +
+      " block(s) of the " + what +
+      " are not vtkPolyData and were not read (extract their surface first): " +
+      ListNames(rings.SkippedBlocks.size(), [&](std::size_t k) { return rings.SkippedBlocks[k]; }) +
+      ".";
+  }
+  return text;
+}
+
+/// Leaves out the pairs of rings that are a hole and the island that fills it exactly (core
+/// identical_rings.h: by the even-odd rule each pair cancels, and the region is the union of the
+/// island's feature and the hole's); returns the warning that names them by their sources, or "".
+/// (Some ring always stays: a hole lies inside one.)
+std::string CancelIdenticalRings(Rings& rings, const char* what)
+{
+  const auto pairs = tessera::IdenticalRingPairs(rings.Offsets, rings.Vertices);
+  if (pairs.empty())
+  {
+    return std::string();
+  }
+  const std::string named = ListNames(pairs.size(),
+    [&](std::size_t k)
+    { return rings.Sources[pairs[k].first] + " and " + rings.Sources[pairs[k].second]; });
+  std::vector<char> cancelled(rings.Sources.size(), 0);
+  for (const auto& [r, s] : pairs)
+  {
+    cancelled[r] = cancelled[s] = 1;
+  }
+  Rings kept = rings; // (what is not per ring: skipped cells and blocks, block names)
+  kept.Offsets.assign(1, 0);
+  kept.Vertices.clear();
+  kept.Sources.clear();
+  kept.Blocks.clear();
+  for (std::size_t r = 0; r < cancelled.size(); ++r)
+  {
+    if (!cancelled[r])
+    {
+      kept.Vertices.insert(kept.Vertices.end(),
+        rings.Vertices.begin() + std::ptrdiff_t(rings.Offsets[r]),
+        rings.Vertices.begin() + std::ptrdiff_t(rings.Offsets[r + 1]));
+      kept.Offsets.push_back(kept.Vertices.size());
+      kept.Sources.push_back(rings.Sources[r]);
+      kept.Blocks.push_back(rings.Blocks[r]);
+    }
+  }
+  rings = std::move(kept);
+  return std::to_string(pairs.size()) + " hole(s) of the " + what +
+    " are filled exactly by a ring of their own (an enclave given as a hole and as a polygon): by "
+    "the even-odd rule the two rings cancel, so the enclave is part of the region, joined to what "
+    "surrounds it (the rings: " +
+    named + ").";
+}
+
+} // namespace
+
+Rings ReadPolygonRings(vtkDataObject* data, const char* what, std::vector<std::string>& warnings)
 {
   Rings rings;
   if (auto* poly = vtkPolyData::SafeDownCast(data))
@@ -1013,6 +1084,14 @@ Rings ReadPolygonRings(vtkDataObject* data)
                 : std::string()) +
       (skipped.empty() ? std::string() : ": " + skipped));
   }
+  for (const std::string& warning :
+    { SkippedCellsWarning(rings, what), CancelIdenticalRings(rings, what) })
+  {
+    if (!warning.empty())
+    {
+      warnings.push_back(warning);
+    }
+  }
   return rings;
 }
 
@@ -1028,73 +1107,6 @@ tessera::InputError WithRingSources(const tessera::RingError& error,
       source + " of the " + what;
   }
   return tessera::InputError(std::string(error.what()) + " (" + text + ")");
-}
-
-std::string SkippedCellsWarning(const Rings& rings, const char* what)
-{
-  std::string text;
-  if (rings.SkippedCells > 0)
-  {
-    text = std::to_string(rings.SkippedCells) + " cell(s) of the " + what +
-      " are not polygons or closed polylines, nor lines that join end to end into closed rings, "
-      "and were ignored (the first is " +
-      rings.FirstSkipped + ").";
-  }
-  if (!rings.SkippedBlocks.empty())
-  {
-    text += std::string(text.empty() ? "" : " ") + std::to_string(rings.SkippedBlocks.size()) +
-      " block(s) of the " + what +
-      " are not vtkPolyData and were not read (extract their surface first): " +
-      ListNames(rings.SkippedBlocks.size(), [&](std::size_t k) { return rings.SkippedBlocks[k]; }) +
-      ".";
-  }
-  return text;
-}
-
-std::string CancelIdenticalRings(Rings& rings, const char* what)
-{
-  const auto pairs = tessera::IdenticalRingPairs(rings.Offsets, rings.Vertices);
-  if (pairs.empty())
-  {
-    return std::string();
-  }
-  std::vector<char> cancelled(rings.Sources.size(), 0);
-  for (const auto& [r, s] : pairs)
-  {
-    cancelled[r] = cancelled[s] = 1;
-  }
-  Rings kept;
-  kept.SkippedCells = rings.SkippedCells;
-  kept.FirstSkipped = rings.FirstSkipped;
-  kept.SkippedBlocks = rings.SkippedBlocks;
-  kept.BlockNames = rings.BlockNames;
-  for (std::size_t r = 0; r < cancelled.size(); ++r)
-  {
-    if (!cancelled[r])
-    {
-      kept.Vertices.insert(kept.Vertices.end(),
-        rings.Vertices.begin() + std::ptrdiff_t(rings.Offsets[r]),
-        rings.Vertices.begin() + std::ptrdiff_t(rings.Offsets[r + 1]));
-      kept.Offsets.push_back(kept.Vertices.size());
-      kept.Sources.push_back(rings.Sources[r]);
-      kept.Blocks.push_back(rings.Blocks[r]);
-    }
-  }
-  const std::string named = ListNames(pairs.size(),
-    [&](std::size_t k)
-    { return rings.Sources[pairs[k].first] + " and " + rings.Sources[pairs[k].second]; });
-  if (kept.Sources.empty())
-  {
-    throw tessera::InputError(std::string("every ring of the ") + what +
-      " is given twice, and by the even-odd rule each pair cancels: no region is left (" + named +
-      ")");
-  }
-  rings = std::move(kept);
-  return std::to_string(pairs.size()) + " hole(s) of the " + what +
-    " are filled exactly by a ring of their own (an enclave given as a hole and as a polygon): by "
-    "the even-odd rule the two rings cancel, so the enclave is part of the region, joined to what "
-    "surrounds it (the rings: " +
-    named + ").";
 }
 
 double OrientAnticlockwise(std::vector<tessera::Point2>& polygon)

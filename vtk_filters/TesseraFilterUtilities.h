@@ -169,26 +169,19 @@ struct Rings
 /// gives it: core segment_rings.h, ends matched by coordinates; where four or six lines meet, as
 /// at a saddle, they are paired by angle into rings that touch there). Other cells, and lines in no
 /// closed ring (an open branch, a spur off a ring), are counted in SkippedCells; blocks of another
-/// type with cells are listed in SkippedBlocks. Throws tessera::InputError when there is no ring
-/// (naming the input's type when it is a data set other than vtkPolyData: only poly data is read).
-Rings ReadPolygonRings(vtkDataObject* data);
+/// type with cells are listed in SkippedBlocks, and both are said in a warning. Pairs of rings that
+/// are a hole and the island that fills it exactly (an enclave given as a hole and as a polygon)
+/// are left out, as by the even-odd rule they cancel (core identical_rings.h), with a warning
+/// naming them. Warnings (what names the input: "window (input 1)") are appended to warnings.
+/// Throws tessera::InputError when there is no ring (naming the input's type when it is a data set
+/// other than vtkPolyData: only poly data is read).
+Rings ReadPolygonRings(vtkDataObject* data, const char* what, std::vector<std::string>& warnings);
 
 /// error's message followed by where its rings came from: "... (ring 2 is cell 4 of the window
 /// (input 1))", one clause per ring; `what` names the input whose rings were read.
 tessera::InputError WithRingSources(const tessera::RingError& error,
   const Rings& rings,
   const char* what);
-
-/// The warning for the cells of a window/catchment input that are not rings (what names the input),
-/// or empty when there are none.
-std::string SkippedCellsWarning(const Rings& rings, const char* what);
-
-/// Leaves out the pairs of rings that are a hole and the island that fills it exactly (core
-/// identical_rings.h: by the even-odd rule each pair cancels, and the region is the union of the
-/// island's feature and the hole's), and returns the warning that names them by their sources
-/// (what names the input), or "" when there are none. Copies of an outer boundary stay, for
-/// validation to refuse. Throws tessera::InputError when no ring is left.
-std::string CancelIdenticalRings(Rings& rings, const char* what);
 
 /// The core's (errors.h), under the name the filters have always used.
 using tessera::ListNames;

@@ -1119,16 +1119,12 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   in.Average.reset();
   // (unchecked: the core names a NaN or infinite gauge by index and, via GaugeNames, station id)
   const std::vector<tessera::Point2> lonlat = tessera_vtk::CopyPoints2D(gauges->GetPoints());
-  tessera_vtk::Rings rings = tessera_vtk::ReadPolygonRings(catchment);
-  const std::string skippedRings = tessera_vtk::SkippedCellsWarning(rings, "catchment (input 1)");
-  if (!skippedRings.empty())
+  std::vector<std::string> ringWarnings;
+  const tessera_vtk::Rings rings =
+    tessera_vtk::ReadPolygonRings(catchment, "catchment (input 1)", ringWarnings);
+  for (const std::string& warning : ringWarnings)
   {
-    vtkWarningMacro(<< skippedRings);
-  }
-  const std::string twice = tessera_vtk::CancelIdenticalRings(rings, "catchment (input 1)");
-  if (!twice.empty())
-  {
-    vtkWarningMacro(<< twice);
+    vtkWarningMacro(<< warning);
   }
   tessera::ArealAverageSettings settings;
   if (!this->ProjectionRecord.empty())

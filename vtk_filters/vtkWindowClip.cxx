@@ -161,16 +161,12 @@ int vtkWindowClip::RequestData(vtkInformation*,
     {
       vtkWarningMacro(<< pointDataWarning);
     }
-    tessera_vtk::Rings window = tessera_vtk::ReadPolygonRings(windowData);
-    const std::string skippedRings = tessera_vtk::SkippedCellsWarning(window, "window (input 1)");
-    if (!skippedRings.empty())
+    std::vector<std::string> ringWarnings;
+    const tessera_vtk::Rings window =
+      tessera_vtk::ReadPolygonRings(windowData, "window (input 1)", ringWarnings);
+    for (const std::string& warning : ringWarnings)
     {
-      vtkWarningMacro(<< skippedRings);
-    }
-    const std::string twice = tessera_vtk::CancelIdenticalRings(window, "window (input 1)");
-    if (!twice.empty())
-    {
-      vtkWarningMacro(<< twice);
+      vtkWarningMacro(<< warning);
     }
     // A window of tiny coordinates is clipped scaled up by a power of two (exact), tiles alike,
     // and the results scaled back: below some 1e-150 the clip's products fell below the doubles,
