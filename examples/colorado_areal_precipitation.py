@@ -566,6 +566,19 @@ def write_all_weights(table, steps, path):
     return table.GetNumberOfRows()
 
 
+def summary_rows(table, steps):
+    """Output 1 of the filter as (time, step, stations used, stations weighted, areal mean) rows."""
+    for r in range(table.GetNumberOfRows()):
+        t = table.GetValueByName(r, "Time").ToDouble()
+        yield (t, steps.of_time[t], table.GetValueByName(r, "StationsUsed").ToInt(),
+               table.GetValueByName(r, "StationsWeighted").ToInt(), table.GetValueByName(r, "ArealMean").ToDouble())
+
+
+def mean_text(mean):
+    """An areal mean as the CSV files write it: empty where no gauge reported."""
+    return "" if math.isnan(mean) else f"{mean:.15g}"
+
+
 def write_summary(table, steps, path):
     """areal_mean.csv from output 1 of the filter; returns its rows as (*step, stations used,
     stations weighted, areal mean)."""
@@ -573,12 +586,8 @@ def write_summary(table, steps, path):
     with open(path, "w", newline="") as f:
         out = csv.writer(f)
         out.writerow([*steps.columns, "stations_used", "stations_weighted", "areal_mean"])
-        for r in range(table.GetNumberOfRows()):
-            step = steps.of_time[table.GetValueByName(r, "Time").ToDouble()]
-            mean = table.GetValueByName(r, "ArealMean").ToDouble()
-            used = table.GetValueByName(r, "StationsUsed").ToInt()
-            weighted = table.GetValueByName(r, "StationsWeighted").ToInt()
-            out.writerow([*step, used, weighted, "" if math.isnan(mean) else f"{mean:.15g}"])
+        for _, step, used, weighted, mean in summary_rows(table, steps):
+            out.writerow([*step, used, weighted, mean_text(mean)])
             rows.append((*step, used, weighted, mean))
     return rows
 
@@ -623,6 +632,16 @@ def polygon_groups(features, name, path):
     return kept
 
 
+def areal_average(gauges, catchment, observations):
+    """A vtkThiessenArealAverage of the gauges over the catchment, with the observations' precip."""
+    average = csv_input.import_tessera().vtkThiessenArealAverage()
+    average.SetGaugesData(gauges)
+    average.SetCatchmentData(catchment)
+    average.SetObservationsData(observations)
+    average.SetValueColumn("precip")
+    return average
+
+
 def write_means_by_feature(features, name, gauges, observations, steps, whole, catchment_path, path):
     """--each ATTRIBUTE: the areal mean of every step over each feature group of the catchment
     (features: features_by_value's), as CSV: ATTRIBUTE, the step's columns, stations_used,
@@ -633,9 +652,7 @@ def write_means_by_feature(features, name, gauges, observations, steps, whole, c
     whole's mean (each group's automatic projection, fitted to it alone, moved weights by some
     1e-5); where the groups do not make the whole catchment (a group inside or over another's,
     which the whole's even-odd rule makes a hole), that is said. Its warnings, said for the whole
-    catchment before, are not repeated; an error ends the script naming the group. Returns the
-    number of groups."""
-    tessera = csv_input.import_tessera()
+    catchment before, are not repeated; an error ends the script naming the group."""
     record = whole.GetOutputDataObject(1).GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
     whole_areas = covered_areas(whole.GetOutputDataObject(2))
     group_areas = {}
@@ -653,11 +670,7 @@ def write_means_by_feature(features, name, gauges, observations, steps, whole, c
         for k, value in enumerate(values):
             if interactive():
                 print(f"\rareal means by {name}: {k + 1} of {len(values)}", end="", file=sys.stderr, flush=True)
-            average = tessera.vtkThiessenArealAverage()
-            average.SetGaugesData(gauges)
-            average.SetCatchmentData(features[value])
-            average.SetObservationsData(observations)
-            average.SetValueColumn("precip")
+            average = areal_average(gauges, features[value], observations)
             average.SetProjectionRecord(record)
             errors = []
             csv_input.catch_vtk_messages(average, errors.append, lambda text: None, errors.append)
@@ -671,13 +684,10 @@ def write_means_by_feature(features, name, gauges, observations, steps, whole, c
             covered = covered_areas(weights)
             for t, area in covered.items():
                 group_areas[t] = group_areas.get(t, 0.0) + area
-            for r in range(summary.GetNumberOfRows()):
-                t = summary.GetValueByName(r, "Time").ToDouble()
-                mean = summary.GetValueByName(r, "ArealMean").ToDouble()
+            for t, step, used, weighted, mean in summary_rows(summary, steps):
                 area = covered.get(t)
-                out.writerow([value, *steps.of_time[t], summary.GetValueByName(r, "StationsUsed").ToInt(),
-                              summary.GetValueByName(r, "StationsWeighted").ToInt(),
-                              "" if math.isnan(mean) else f"{mean:.15g}", "" if area is None else f"{area / 1e6:.15g}"])
+                out.writerow([value, *step, used, weighted, mean_text(mean),
+                              "" if area is None else f"{area / 1e6:.15g}"])
     print(f"\rareal means by {name}: {len(values)} of {len(values)}" if interactive()
           else f"areal means by {name}: {len(values)} of {len(values)}", file=sys.stderr)
     # (Areas the tiles cover: all of a region once a gauge reports; the largest difference of the
@@ -690,7 +700,6 @@ def write_means_by_feature(features, name, gauges, observations, steps, whole, c
               "feature inside or over a feature of another group is a hole of the catchment, by the even-odd "
               "rule, but a part of its group): their means weighted by area do not make the whole's",
               file=sys.stderr)
-    return len(values)
 
 
 def write_unused(summary, files, station_ids, observations, unit, path):
@@ -974,7 +983,8 @@ def main(argv=None):
         sys.exit(f"--month {args.month} and --day {args.day}: give one of them")
     if args.each is not None and args.feature is not None:
         sys.exit(f"--each {args.each} and --feature {args.feature}: give one of them")
-    if args.each is not None and not args.each.strip():
+    each = args.each.strip() if args.each is not None else None
+    if each is not None and not each:
         sys.exit("--each: expected the name of an attribute of the catchment's features, such as HUC8")
     chosen = re.fullmatch(r"([0-9]{1,4})-([0-9]{1,2})", (args.month or "1963-08").strip())
     year, month = (int(chosen.group(1)), int(chosen.group(2))) if chosen else (0, 0)
@@ -990,7 +1000,7 @@ def main(argv=None):
             sys.exit(f"--day {args.day!r}: is not a date of the calendar")
 
     # Tessera first: without VTK (another Python than Debian's) this says how to run the script.
-    vtkThiessenArealAverage = csv_input.import_tessera().vtkThiessenArealAverage
+    csv_input.import_tessera()
     from vtkmodules.vtkCommonCore import vtkCommand
     from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
@@ -1012,17 +1022,13 @@ def main(argv=None):
         csv_input.fail(f"--day {args.day}: the observations of {args.observations} are monthly (use --month)")
     step = (day or (year, month, 1)) if steps.daily else (year, month)
     catchment, outline = read_catchment(args.catchment, args.feature)
-    groups = polygon_groups(features_by_value(catchment, args.each.strip(), args.catchment), args.each.strip(),
-                            args.catchment) if args.each is not None else None
+    groups = polygon_groups(features_by_value(catchment, each, args.catchment), each,
+                            args.catchment) if each is not None else None
     # (the observations file's rows: the table also has a row for each step without any)
     print(f"read {gauges.GetNumberOfPoints()} gauges and {len(row_lines)} observations in "
           f"{time.time() - started:.1f} s", file=sys.stderr)
 
-    average = vtkThiessenArealAverage()
-    average.SetGaugesData(gauges)
-    average.SetCatchmentData(catchment)
-    average.SetObservationsData(observations)
-    average.SetValueColumn("precip")
+    average = areal_average(gauges, catchment, observations)
     progress = Progress("Thiessen areal means")
     progress_tag = average.AddObserver(vtkCommand.ProgressEvent, progress)
     started = time.time()
@@ -1040,8 +1046,8 @@ def main(argv=None):
     unused = write_unused(summary, files, station_ids, observations, steps.unit,
                           os.path.join(args.out, "unused_inputs.csv"))
     if groups:
-        by_feature = "areal_mean_by_" + re.sub(r"[^A-Za-z0-9_.-]", "_", args.each.strip()) + ".csv"
-        write_means_by_feature(groups, args.each.strip(), gauges, observations, steps, average, args.catchment,
+        by_feature = "areal_mean_by_" + re.sub(r"[^A-Za-z0-9_.-]", "_", each) + ".csv"
+        write_means_by_feature(groups, each, gauges, observations, steps, average, args.catchment,
                                os.path.join(args.out, by_feature))
 
     average.UpdateTimeStep(steps.time(step))

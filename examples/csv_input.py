@@ -69,7 +69,7 @@ def rows(path, required, what, optional=()):
     if text.lstrip().startswith(("{", "[")):
         fail(f"{path}: the {what} file is not a CSV file (it starts like JSON or GeoJSON; "
              f"expected a header line such as {','.join(required)})")
-    delimiter = header_delimiter(text, (*required,))
+    delimiter = header_delimiter(text, required)
     decimal_comma = delimiter != "," and has_decimal_commas(text, delimiter)
     reader = csv.DictReader(io.StringIO(text, newline=""), delimiter=delimiter, strict=True)
     try:
@@ -91,7 +91,7 @@ def rows(path, required, what, optional=()):
                 fields = len(columns) + len(row.get(None) or []) - list(row.values()).count(None)
                 fail(f"{path}:{reader.line_num}: {fields} field(s) where the header has "
                      f"{len(columns)} ({', '.join(columns)})")
-            yield reader.line_num, Row(row, decimal_comma=decimal_comma)
+            yield reader.line_num, Row(row, decimal_comma=True) if decimal_comma else row
     except csv.Error as error:  # e.g. a quote opened and never closed
         # The underlying reader's count: the lines read up to the error (the DictReader's own
         # line_num is that of the last record it returned, 0 while the header is read).
@@ -103,8 +103,9 @@ SEPARATORS_TEXT = "fields separated by commas, or by semicolons or tabs with dec
 
 
 class Row(dict):
-    """A record of rows(): its header's names to its fields. decimal_comma: whether its file's
-    numbers are written with decimal commas (has_decimal_commas)."""
+    """A record of rows() from a file whose numbers are written with decimal commas
+    (has_decimal_commas; decimal_comma True): its header's names to its fields. rows() gives the
+    other files' records as plain dicts."""
 
     def __init__(self, fields, decimal_comma=False):
         super().__init__(fields)
@@ -116,7 +117,7 @@ def header_delimiter(text, required=()):
     locale with a decimal comma saves as CSV) and a tab, the first with which the header line,
     read as CSV (quotes kept together), has every required column (in any case); else the one it
     holds most of, a comma where it holds none (a file of one column)."""
-    header = next((line for line in text.splitlines() if line.strip()), "")
+    header = next((line for line in io.StringIO(text, newline="") if line.strip()), "").rstrip("\r\n")
     wanted = {name.lower() for name in required}
     for mark in DELIMITERS:
         try:

@@ -460,8 +460,8 @@ def test_each_group_of_features_gets_its_means():
             f.write("N2,2001,3,4\nN3,2001,3,6\nN5,2001,3,1\n")
         basins = os.path.join(out, "basins.geojson")
         features = [{"type": "Feature", "properties": {"HUC8": code}, "geometry": {"type": "Polygon", "coordinates": [r]}}
-                    for code, r in ((14010002, east), (14010001, west), (9, north), (14010002, north[:1] + north[1:]))]
-        features[3]["geometry"]["coordinates"] = [[[176.6, -39.2], [176.8, -39.2], [176.8, -39.0], [176.6, -39.2]]]
+                    for code, r in ((14010002, east), (14010001, west), (9, north),
+                                    (14010002, [[176.6, -39.2], [176.8, -39.2], [176.8, -39.0], [176.6, -39.2]]))]
         with open(basins, "w") as f:
             json.dump({"type": "FeatureCollection", "features": features}, f)
         whole = os.path.join(out, "whole")

@@ -15,7 +15,7 @@ from vtkmodules.vtkIOInfovis import vtkDelimitedTextReader
 from tessera import (vtkDirichletTessellation, vtkGeographicProjection, vtkThiessenArealAverage,
                      vtkWindowClip)
 from tessera_testing import (EXAMPLE_DATA, assert_close, assert_that, cell_rings, colorado_outline,
-                             make_points, messages_of, polygon, run, simplicity_defect)
+                             make_points, messages_of, polygon, projection_record, run, simplicity_defect)
 
 
 def gauges_polydata(coords, ids, values=None):
@@ -604,8 +604,7 @@ def with_open_polyline(data):
 
 def projection_of(f):
     """The TesseraProjection record of output 1's field data."""
-    record = f.GetOutputDataObject(1).GetFieldData().GetAbstractArray("TesseraProjection")
-    return record.GetValue(0) if record is not None and record.GetNumberOfValues() == 1 else None
+    return projection_record(f.GetOutputDataObject(1))
 
 
 def test_the_projection_used_is_recorded_and_makes_the_same_tiles():
@@ -619,7 +618,7 @@ def test_the_projection_used_is_recorded_and_makes_the_same_tiles():
     fit = vtkGeographicProjection()
     fit.SetInputData(catchment)
     fit.Update()
-    expected = fit.GetOutputDataObject(0).GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
+    expected = projection_record(fit.GetOutputDataObject(0))
     f = vtkThiessenArealAverage()
     f.SetGaugesData(gauges_polydata(coords, ["a", "b", "c", "d", "e"], [1.0, 2.0, 3.0, 4.0, 5.0]))
     f.SetCatchmentData(catchment)
@@ -638,7 +637,7 @@ def test_the_projection_used_is_recorded_and_makes_the_same_tiles():
                 f"with an open polyline far off: {projection_of(f)!r}, {warnings}")
     fit.SetInputData(far)
     fit.Update()
-    moved = fit.GetOutputDataObject(0).GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
+    moved = projection_record(fit.GetOutputDataObject(0))
     assert_that(moved != expected, "vtkGeographicProjection's fit to every point moves with the polyline")
     again = vtkThiessenArealAverage()
     again.SetGaugesData(gauges_polydata(coords, ["a", "b", "c", "d", "e"], [1.0, 2.0, 3.0, 4.0, 5.0]))
