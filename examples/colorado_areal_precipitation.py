@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Thiessen areal-average precipitation over Colorado, month by month (Thiessen 1911), or over
-your own catchment, monthly or daily (--stations, --observations, --catchment).
+your own catchment, monthly, daily or hourly (--stations, --observations, --catchment).
 
 The hydrologist's main job with Tessera: 376 rain gauges given in longitude/latitude (many of
 them outside the state), the state outline as the catchment, and 1236 months (1895-1997) of
@@ -46,6 +46,11 @@ with dates YYYY-MM-DD) make a step a day: areal_mean.csv and weights_all_days.cs
 stands for weights_all_months.csv) gain a day column (year,month,day,...), --day chooses the day
 of the weights, tiles and map (named YYYY_MM_DD), and every day from the first to the last has
 its row. A date column of YYYY-MM gives months.
+Hourly observations (an hour column, 0-23, beside year, month and day, or dates with a time on
+the hour, YYYY-MM-DD HH:00) make a step an hour in the same way: an hour column (year,month,day,
+hour,...), weights_all_hours.csv, --hour 'YYYY-MM-DD HH:00' (files named YYYY_MM_DD_HH), every
+hour from the first to the last. Hour 24 (24:00, as hour-ending records write a day's last
+hour) is hour 0 of the next day. Dates whose times are all midnight are days.
 Units are those of the data (for the Colorado data: documented as mm, the magnitudes look like
 cm; see examples/data/README.md).
 
@@ -75,36 +80,49 @@ def decimal_time(year, month):
 
 
 class Steps:
-    """The time steps of the observations: months, as (year, month), or days, as (year, month,
-    day), when the observations give days (a day column, or a date column of YYYY-MM-DD)."""
+    """The time steps of the observations: months, as (year, month), days, as (year, month, day),
+    or hours, as (year, month, day, hour), as the observations give them (observation_step)."""
 
-    def __init__(self, daily):
-        self.daily = daily
-        self.unit = "day" if daily else "month"
-        self.columns = ["year", "month", "day"] if daily else ["year", "month"]
+    UNITS = ("month", "day", "hour")
+    ADJECTIVES = {"month": "monthly", "day": "daily", "hour": "hourly"}
+
+    def __init__(self, unit):
+        self.unit = unit
+        self.fields = 2 + Steps.UNITS.index(unit)  # the numbers of a step
+        self.columns = ["year", "month", "day", "hour"][:self.fields]
+        self.adjective = Steps.ADJECTIVES[unit]
         self.of_time = {}  # the step of each time value made by time()
 
+    @staticmethod
+    def of(step):
+        """The Steps of which step (a tuple of 2, 3 or 4 numbers) is one."""
+        return Steps(Steps.UNITS[len(step) - 2])
+
     def time(self, step):
-        """The step as a time value: decimal_time of its month, plus a day's share of its month
-        (of_time maps the value back: the filter gives back the times it was given)."""
+        """The step as a time value: decimal_time of its month, plus a day's (and an hour's) share
+        of its month (of_time maps the value back: the filter gives back the times it was given)."""
         t = decimal_time(step[0], step[1])
-        if self.daily:
-            t += (step[2] - 1) / (12.0 * calendar.monthrange(step[0], step[1])[1])
+        if self.fields > 2:
+            days = step[2] - 1 + (step[3] / 24.0 if self.fields > 3 else 0)
+            t += days / (12.0 * calendar.monthrange(step[0], step[1])[1])
         self.of_time[t] = step
         return t
 
     def text(self, step):
-        return "-".join(f"{v:0{4 if k == 0 else 2}d}" for k, v in enumerate(step))
+        day = "-".join(f"{v:0{4 if k == 0 else 2}d}" for k, v in enumerate(step[:3]))
+        return day + (f" {step[3]:02d}:00" if self.fields > 3 else "")
 
     def tag(self, step):
-        return self.text(step).replace("-", "_")
+        return "_".join(f"{v:0{4 if k == 0 else 2}d}" for k, v in enumerate(step))
 
     def between(self, first, last):
         """Every step from first to last, both included."""
-        if not self.daily:
+        if self.fields == 2:
             return [(y, m) for y in range(first[0], last[0] + 1) for m in range(1, 13) if first <= (y, m) <= last]
-        day, end = datetime.date(*first), datetime.date(*last)
-        return [(d.year, d.month, d.day) for d in (day + datetime.timedelta(k) for k in range((end - day).days + 1))]
+        start, end = datetime.datetime(*first), datetime.datetime(*last)
+        length = datetime.timedelta(days=1) if self.fields == 3 else datetime.timedelta(hours=1)
+        every = (start + k * length for k in range((end - start) // length + 1))
+        return [(d.year, d.month, d.day, d.hour)[:self.fields] for d in every]
 
 
 def station_key(station_id):
@@ -146,18 +164,22 @@ def read_gauges(path):
 
 
 DATE = re.compile(r"([0-9]{4})-([0-9]{1,2})(?:-([0-9]{1,2}))?")
-# A time of day after a date (2001-02-03T06:00, 2001-02-03 00:00:00), as a spreadsheet or a
-# program writes a day's timestamp.
-TIME_OF_DAY = re.compile(r"[T ]([0-9]{2}):([0-9]{2})(?::([0-9]{2})(?:\.[0-9]+)?)?")
+# A time of day after a date (2001-02-03T06:00, 2001-02-03 06:00:00), as a spreadsheet or a
+# program writes a timestamp.
+TIME_OF_DAY = re.compile(r"[T ]([0-9]{2}):([0-9]{2})(?::([0-9]{2})(?:\.([0-9]+))?)?")
 
 
 def observation_step(row, path, line):
-    """The month (year, month) or day (year, month, day) of an observations record: from its year,
-    month and (for days) day columns, or from its date column (YYYY-MM-DD, or YYYY-MM for a
-    month). Ends the script naming file, line and column for a value that is no such date."""
-    if "date" in row and ("year" in row or "month" in row or "day" in row):
-        csv_input.fail(f"{path}: the observations file has both a date column and year/month/day columns "
+    """The month (year, month), day (year, month, day) or day and hour (year, month, day, hour,
+    the hour 0 to 24) of an observations record: from its year, month, day and hour columns (day
+    and hour where the steps are days or hours), or from its date column (YYYY-MM for a month,
+    YYYY-MM-DD for a day, with a time on the hour, HH:00, for an hour). read_observations makes
+    the file's steps of them (step_reader). Ends the script naming file, line and column for a
+    value that is no such date."""
+    if "date" in row and ("year" in row or "month" in row or "day" in row or "hour" in row):
+        csv_input.fail(f"{path}: the observations file has both a date column and year/month/day/hour columns "
                        "(keep one)")
+    clock = None
     if "date" in row:
         text = csv_input.text(row, "date", path, line)
         date = DATE.match(text)
@@ -165,31 +187,76 @@ def observation_step(row, path, line):
         where = f"{path}:{line}: column 'date': {text!r}"
         clock = TIME_OF_DAY.fullmatch(text, date.end()) if date and date.group(3) else None
         if not date or (date.end() < len(text) and not clock):
-            csv_input.fail(f"{where} is not a date (YYYY-MM-DD, or YYYY-MM for a month)")
-        if clock and any(int(v or 0) for v in clock.groups()):
-            csv_input.fail(f"{where} has a time of day: the steps are days (or months), so give each day "
-                           "once, without a time (a midnight time, 00:00, is read as the day)")
+            csv_input.fail(f"{where} is not a date (YYYY-MM-DD, YYYY-MM-DD HH:00 for an hour, or YYYY-MM for a month)")
+        if clock and any(int(v or 0) for v in clock.groups()[1:]):
+            csv_input.fail(f"{where} is not on the hour: the steps are hours (HH:00), days or months, so give "
+                           "each hour's total at its hour")
     elif "year" in row and "month" in row:
         step = (csv_input.integer(row, "year", path, line, 1, 9999),
                 csv_input.integer(row, "month", path, line, 1, 12))
+        if "hour" in row and "day" not in row:
+            csv_input.fail(f"{path}: the observations file has an hour column but no day column "
+                           "(hours need year, month, day and hour)")
         if "day" in row:
             step += (csv_input.integer(row, "day", path, line, 1, 31),)
         where = f"{path}:{line}: column 'day': {step[-1]}"
     else:
         columns = ", ".join(name for name in row if name is not None)
         csv_input.fail(f"{path}: the observations file has no columns year and month, nor a date column "
-                       f"(it needs station_id, year, month, precip, with day for daily values, or "
-                       f"station_id, date, precip; its header: {columns})")
+                       f"(it needs station_id, year, month, precip, with day for daily values and hour for "
+                       f"hourly ones, or station_id, date, precip; its header: {columns})")
     if not (1 <= step[0] and 1 <= step[1] <= 12) or (
             len(step) == 3 and not 1 <= step[2] <= calendar.monthrange(step[0], step[1])[1]):
         csv_input.fail(f"{where} is not a date of the calendar" if "date" in row else f"{where} is not a day of "
                        f"{step[0]}-{step[1]:02d}")
+    if clock:
+        if int(clock.group(1)) > 24:
+            csv_input.fail(f"{where} is not a time of the day (00:00 to 23:00, or 24:00 for the day's end)")
+        return (*step, int(clock.group(1)))
+    if "hour" in row:
+        return (*step, csv_input.integer(row, "hour", path, line, 0, 24))
     return step
 
 
+# observation_step's steps by their length, and what the messages call them.
+STEP_KINDS = {2: "month", 3: "day", 4: "time"}
+STEP_NAMES = {"month": "a month", "day": "a day", "time": "a day and time", "hour": "an hour"}
+
+
+def file_steps(read, first, hour_column, at_24, path):
+    """The steps of an observations file (Steps), and the step of each one observation_step read
+    (read: all of them; first: the first line of each kind, STEP_KINDS, and of a time other than
+    midnight, "hour"; at_24: the number of records at 24:00). The steps are hours where the file
+    has an hour column or a time other than midnight: hour 24 (24:00) is then hour 0 of the next
+    day, as hour-ending records write a day's last hour, which is said, and a date without a time
+    ends the script. Times all at midnight (00:00, or 24:00 for a day's end) are days, as a
+    spreadsheet may export them: a day at 24:00 is the day it ends."""
+    if not (hour_column or "hour" in first):
+        return Steps("month" if "month" in first or not first else "day"), {m: m[:3] for m in read}
+    if "day" in first:
+        csv_input.fail(f"{path}:{first['day']}: column 'date': a date without a time of day, where line "
+                       f"{first['hour']} gives an hour (the steps are all months, all days or all hours: "
+                       "give each hour as YYYY-MM-DD HH:00)")
+    if at_24:
+        print(f"{path}: {at_24} observation(s) at hour 24 (the end of a day) are read as hour 0 of the next day",
+              file=sys.stderr)
+    if len({m[3] for m in read}) == 1 and len({m[:3] for m in read}) > 1:
+        # Daily values stamped with the time their day ends (a climate day read at 07:00) would be
+        # read as hours with 23 hours without a report between them: said, as for days of months.
+        print(f"{path}: every time is {next(iter(read))[3]:02d}:00; if these are daily values (a day read at that "
+              "time), give the dates without the time (YYYY-MM-DD): they are read as hours", file=sys.stderr)
+
+    def next_day_at_24(m):
+        if m[3] < 24:
+            return m
+        day = datetime.date(*m[:3]) + datetime.timedelta(1)
+        return (day.year, day.month, day.day, 0)
+    return Steps("hour"), {m: next_day_at_24(m) for m in read}
+
+
 def read_observations(path, gauge_of, filler, stations_path, missing_values=(), station_ids=()):
-    """The long-format table as a vtkTable (station_id, time, precip), its steps (Steps: months or
-    days), the set of reporting gauges of every step, as gauge indices, and the file's line of
+    """The long-format table as a vtkTable (station_id, time, precip), its steps (Steps: months,
+    days or hours), the set of reporting gauges of every step, as gauge indices, and the file's line of
     each record read (table row r, counted from 0, is the record of line lines[r]; the rows after
     them are the filler rows of steps without a row of a gauge's station). gauge_of: the gauge that a
     station's observations go to, by station_key() (ids are compared as the filter compares them;
@@ -214,22 +281,31 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     present = set()  # the step of every row of a gauge's station
     lines = []  # the file's line of each row read
     names = {}  # every row's station id, as written, once each in the file's order
-    steps = None
-    for line, row in csv_input.rows(path, ("station_id", "precip"), "observations", ("year", "month", "day", "date")):
+    read = []  # the step of each row as observation_step read it
+    first = {}  # the first line of a month, a day, a day and time, and a time other than midnight
+    hour_column, at_24 = False, 0
+    for line, row in csv_input.rows(path, ("station_id", "precip"), "observations",
+                                    ("year", "month", "day", "hour", "date")):
         lines.append(line)
         station = csv_input.text(row, "station_id", path, line)
         year_and_month = observation_step(row, path, line)
-        if steps is None:
-            steps, first_line = Steps(len(year_and_month) == 3), line
-        elif steps.daily != (len(year_and_month) == 3):
-            csv_input.fail(f"{path}:{line}: column 'date': {row['date'].strip()!r} is a {'month' if steps.daily else 'day'}, "
-                           f"where line {first_line} gives a {steps.unit} (the steps are all months or all days)")
+        kind = STEP_KINDS[len(year_and_month)]
+        first.setdefault(kind, line)
+        if kind == "month" and len(first) > 1 or kind != "month" and "month" in first:
+            other = "month" if kind != "month" else next(k for k in first if k != "month")
+            csv_input.fail(f"{path}:{line}: column 'date': {row['date'].strip()!r} is {STEP_NAMES[kind]}, where "
+                           f"line {first[other]} gives {STEP_NAMES[other]} (the steps are all months, all days or "
+                           "all hours)")
+        if kind == "time" and year_and_month[3] % 24:
+            first.setdefault("hour", line)
+        hour_column = "hour" in row
+        at_24 += kind == "time" and year_and_month[3] == 24
+        read.append(year_and_month)
         months.add(year_and_month)
         names.setdefault(station.strip(" \t\""))
         gauge = gauge_of.get(station_key(station))
         if gauge is not None:
             present.add(year_and_month)
-        t = steps.time(year_and_month)
         # A missing value stays in the table as NaN: the gauge does not report that month (the
         # filter drops it for that step), and the month remains a step even if no gauge reports.
         value = math.nan
@@ -244,8 +320,16 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
             if gauge is not None:
                 reporting.setdefault(year_and_month, set()).add(gauge)
         stations.InsertNextValue(station)
-        times.InsertNextValue(t)
         values.InsertNextValue(value)
+    steps, step_of = file_steps(months, first, hour_column, at_24, path)
+    months, present = {step_of[m] for m in months}, {step_of[m] for m in present}
+    merged = {}
+    for m, gauges in reporting.items():
+        merged.setdefault(step_of[m], set()).update(gauges)
+    reporting = merged
+    time_of = {m: steps.time(step_of[m]) for m in step_of}
+    for m in read:
+        times.InsertNextValue(time_of[m])
     if lines and not present:
         # (the ids as written, each once, in the files' order: they are for comparing by eye)
         seen, there = list(names), list(dict.fromkeys(station_ids))
@@ -266,7 +350,7 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
         print(f"{path}: {len(negative)} observation(s) have a negative precipitation, used as given "
               f"(write a missing value as NA, or give --missing-value, if that is what they mean): line(s) {shown}{more}",
               file=sys.stderr)
-    if steps and steps.daily and len({day[:2] for day in months}) > 1:
+    if steps.unit == "day" and len({day[:2] for day in months}) > 1:
         # Monthly values stamped with a day (2001-01-01, 2001-02-01; or month ends) would be read
         # as days with some 29 days without a report between them: said, since the means of
         # those days are then the months'.
@@ -279,8 +363,7 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     # A step between the first and the last without a row of any gauge's station is a step where
     # no gauge reported: a row with a missing value (for a gauge's station: the filter makes no
     # step of a row naming a station no gauge has) keeps it a step of its own, so that
-    # areal_mean.csv has every month (or day), empty where nothing was measured.
-    steps = steps or Steps(False)
+    # areal_mean.csv has every month (or day, or hour), empty where nothing was measured.
     if months and gauge_of:
         first, last = min(months), max(months)
         gaps = [step for step in steps.between(first, last) if step not in present]
@@ -879,7 +962,7 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path, unit="month"):
         collection.set_clim(min(values), max(values))
         ax.add_collection(collection)
     if values:
-        fig.colorbar(collection, ax=ax, label=f"{'daily' if unit == 'day' else 'monthly'} precipitation (data units)")
+        fig.colorbar(collection, ax=ax, label=f"{Steps.ADJECTIVES[unit]} precipitation (data units)")
     for ring in outline:
         xs, ys = zip(*ring)
         ax.plot(xs + xs[:1], ys + ys[:1], color="black", linewidth=1.2)
@@ -909,7 +992,7 @@ def step_series(rows):
     breaks the line: dropping it would draw the line straight across the gap as if it had been
     measured."""
     by_step = {tuple(r[:-3]): (r[-3], r[-1]) for r in rows}
-    steps = Steps(len(rows[0]) == 6)
+    steps = Steps.of(rows[0][:-3])
     every = steps.between(min(by_step), max(by_step))
     values = [by_step.get(step, (0, math.nan)) for step in every]
     return [steps.time(step) for step in every], [mean for _, mean in values], [used for used, _ in values]
@@ -922,10 +1005,12 @@ def plot_series(rows, path):
     import matplotlib.pyplot as plt
 
     t, v, used = step_series(rows)
-    daily = len(rows[0]) == 6
-    if daily:  # days: dates on the axis (decimal years of a few days read 0.078 .. 0.083 + 2.001e3)
-        steps = Steps(True)
-        t = [datetime.date(*step) for step in steps.between(tuple(rows[0][:3]), tuple(rows[-1][:3]))]
+    steps = Steps.of(rows[0][:-3])
+    first, last = tuple(rows[0][:-3]), tuple(rows[-1][:-3])
+    dated = steps.fields > 2
+    if dated:  # days or hours: dates on the axis (decimal years of a few days read 0.078 .. 0.083 + 2.001e3)
+        moment = datetime.date if steps.unit == "day" else datetime.datetime
+        t = [moment(*step) for step in steps.between(first, last)]
     # A step with a mean between two without is no segment of the line: a dot shows it.
     alone = [i for i in range(len(v)) if not math.isnan(v[i])
              and (i == 0 or math.isnan(v[i - 1])) and (i == len(v) - 1 or math.isnan(v[i + 1]))]
@@ -935,26 +1020,42 @@ def plot_series(rows, path):
     top.plot([t[i] for i in alone], [v[i] for i in alone], linestyle="none", marker=".", markersize=2,
              color="tab:blue")
     top.set_ylabel("Thiessen areal mean (data units)")
-    span = (f"{steps.text(tuple(rows[0][:3]))} to {steps.text(tuple(rows[-1][:3]))}" if daily
-            else f"{rows[0][0]}-{rows[-1][0]}")
-    top.set_title(f"{'Daily' if daily else 'Monthly'} precipitation, Thiessen areal mean {span}")
+    span = f"{steps.text(first)} to {steps.text(last)}" if dated else f"{rows[0][0]}-{rows[-1][0]}"
+    top.set_title(f"{steps.adjective.capitalize()} precipitation, Thiessen areal mean {span}")
     bottom.plot(t, used, linewidth=0.6, color="tab:grey")
     bottom.set_ylabel("gauges reporting")
-    bottom.set_xlabel("date" if daily else "year")
-    if daily:
+    bottom.set_xlabel("date" if dated else "year")
+    if dated:
         fig.autofmt_xdate()
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
 
 
+def chosen_hour(text):
+    """--hour's (year, month, day, hour), from YYYY-MM-DD HH:00, YYYY-MM-DDTHH:00 or YYYY-MM-DDTHH;
+    ends the script naming the value otherwise."""
+    date = DATE.match(text.strip())
+    rest = text.strip()[date.end():] if date and date.group(3) else None
+    clock = re.fullmatch(r"[T ]([0-9]{1,2})(?::00(?::00)?)?", rest) if rest is not None else None
+    if not clock:
+        sys.exit(f"--hour {text!r}: expected a date and hour, YYYY-MM-DD HH:00")
+    step = tuple(int(v) for v in (*date.groups(), clock.group(1)))
+    if step[0] < 1 or not 1 <= step[1] <= 12 or not 1 <= step[2] <= calendar.monthrange(*step[:2])[1] or step[3] > 23:
+        sys.exit(f"--hour {text!r}: is not an hour of the calendar")
+    return step
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", default="out", help="output directory (created if missing)")
     parser.add_argument("--month", help="month for the weights, tiles and map, YYYY-MM (default: 1963-08, "
-                                        "or the nearest month of the record; with daily observations its first day)")
+                                        "or the nearest month of the record; with daily or hourly observations its "
+                                        "first day or hour)")
     parser.add_argument("--day", help="day for the weights, tiles and map when the observations give days, "
-                                      "YYYY-MM-DD (not with --month)")
+                                      "YYYY-MM-DD (with hourly observations its first hour; not with --month)")
+    parser.add_argument("--hour", help="hour for the weights, tiles and map when the observations give hours, "
+                                       "'YYYY-MM-DD HH:00' or YYYY-MM-DDTHH (not with --month or --day)")
     parser.add_argument("--stations", default=os.path.join(DATA, "colorado_stations.csv"),
                         help="CSV of gauges: columns station_id, lon, lat (degrees, WGS84), "
                              f"optional name; {csv_input.SEPARATORS_TEXT}")
@@ -962,7 +1063,9 @@ def main(argv=None):
                         help="CSV of monthly values, one row per gauge and month: columns "
                              f"station_id, year, month, precip ({csv_input.MISSING_TEXT} = missing); "
                              "or of daily values: columns station_id, year, month, day, precip, or "
-                             "station_id, date (YYYY-MM-DD), precip; a date column of YYYY-MM gives months; "
+                             "station_id, date (YYYY-MM-DD), precip; or of hourly values: columns station_id, "
+                             "year, month, day, hour (0-23, or 24 for the end of the day), precip, or station_id, "
+                             "date (YYYY-MM-DD HH:00), precip; a date column of YYYY-MM gives months; "
                              f"{csv_input.SEPARATORS_TEXT}")
     parser.add_argument("--catchment", default=os.path.join(DATA, "colorado_boundary.geojson"),
                         help="catchment polygon (GeoJSON or shapefile, lon/lat); every polygon "
@@ -979,8 +1082,10 @@ def main(argv=None):
                         help="a precip value that means missing, such as -9999 (may be given more than once)")
     parser.add_argument("--no-plots", action="store_true", help="skip the PNG files")
     args = parser.parse_args(argv)
-    if args.month is not None and args.day is not None:
-        sys.exit(f"--month {args.month} and --day {args.day}: give one of them")
+    given = [f"--{name} {value}" for name, value in (("month", args.month), ("day", args.day), ("hour", args.hour))
+             if value is not None]
+    if len(given) > 1:
+        sys.exit(f"{' and '.join(given)}: give one of them")
     if args.each is not None and args.feature is not None:
         sys.exit(f"--each {args.each} and --feature {args.feature}: give one of them")
     each = args.each.strip() if args.each is not None else None
@@ -990,14 +1095,16 @@ def main(argv=None):
     year, month = (int(chosen.group(1)), int(chosen.group(2))) if chosen else (0, 0)
     if not 1 <= year or not 1 <= month <= 12:
         sys.exit(f"--month {args.month!r}: expected YYYY-MM")
-    day = None
+    asked = None  # --day's or --hour's step
     if args.day is not None:
         chosen = DATE.fullmatch(args.day.strip())
-        day = tuple(int(v) for v in chosen.groups()) if chosen and chosen.group(3) else None
-        if not day:
+        asked = tuple(int(v) for v in chosen.groups()) if chosen and chosen.group(3) else None
+        if not asked:
             sys.exit(f"--day {args.day!r}: expected a date YYYY-MM-DD")
-        if day[0] < 1 or not 1 <= day[1] <= 12 or not 1 <= day[2] <= calendar.monthrange(*day[:2])[1]:
+        if asked[0] < 1 or not 1 <= asked[1] <= 12 or not 1 <= asked[2] <= calendar.monthrange(*asked[:2])[1]:
             sys.exit(f"--day {args.day!r}: is not a date of the calendar")
+    if args.hour is not None:
+        asked = chosen_hour(args.hour)
 
     # Tessera first: without VTK (another Python than Debian's) this says how to run the script.
     csv_input.import_tessera()
@@ -1018,9 +1125,12 @@ def main(argv=None):
     observations, steps, reporting, row_lines = read_observations(args.observations, gauge_of,
                                                                   min(station_ids, default=None), args.stations,
                                                                   set(args.missing_value), station_ids)
-    if day and not steps.daily:
+    if asked and len(asked) > steps.fields:
+        csv_input.fail(f"--hour {args.hour}: the observations of {args.observations} are {steps.adjective} "
+                       f"(use --{steps.unit})")
+    if asked and steps.unit == "month":
         csv_input.fail(f"--day {args.day}: the observations of {args.observations} are monthly (use --month)")
-    step = (day or (year, month, 1)) if steps.daily else (year, month)
+    step = (*(asked or (year, month, 1)), 0)[:steps.fields] if steps.fields > 2 else (year, month)
     catchment, outline = read_catchment(args.catchment, args.feature)
     groups = polygon_groups(features_by_value(catchment, each, args.catchment), each,
                             args.catchment) if each is not None else None
@@ -1054,7 +1164,7 @@ def main(argv=None):
     tiles = average.GetOutputDataObject(0)
     messages.check(tiles is None)
     chosen = steps.of_time[tiles.GetInformation().Get(tiles.DATA_TIME_STEP())]
-    if chosen != step and (args.month or args.day):  # (the default: the record's nearest step, unsaid)
+    if chosen != step and (args.month or args.day or args.hour):  # (the default: the record's nearest step, unsaid)
         print(f"note: {steps.text(step)} is not in the record; showing {steps.text(chosen)}", file=sys.stderr)
     step = chosen
     tag = steps.tag(step)
@@ -1078,7 +1188,7 @@ def main(argv=None):
 
     valid = [r[-1] for r in rows if not math.isnan(r[-1])]
     print(f"{len(rows)} {steps.unit}s, {len(valid)} with data"
-          + (f"; mean of the {'daily' if steps.daily else 'monthly'} areal means {sum(valid) / len(valid):.3f}"
+          + (f"; mean of the {steps.adjective} areal means {sum(valid) / len(valid):.3f}"
              if valid else ""))
     print(f"{steps.text(step)}: areal mean {mean:.3f}, {used} gauges reported, "
           f"{weighted} weighted; weights sum to {sum(e['weight'] for e in per_gauge.values()):.12f}")

@@ -783,8 +783,8 @@ def test_daily_observations_give_daily_means():
             ("station_id,date,precip\nN1,2001-02-03,1\n", {"day": "2001-02"}, "--day '2001-02': expected a date"),
             ("station_id,date,precip\nN1,2001-02-03,1\n", {"day": "2001-02-03", "month": "2001-02"},
              "--month 2001-02 and --day 2001-02-03: give one of them"),
-            ("station_id,date,day,precip\nN1,2001-02,3,1\n", {}, "both a date column and year/month/day columns"),
-            ("station_id,date,precip\nN1,2001-02-03T06:00,1\n", {}, "'2001-02-03T06:00' has a time of day"),
+            ("station_id,date,day,precip\nN1,2001-02,3,1\n", {}, "both a date column and year/month/day/hour columns"),
+            ("station_id,date,precip\nN1,2001-02-03T06:15,1\n", {}, "'2001-02-03T06:15' is not on the hour"),
             ("station_id,date,precip\nN1,2001-02T00:00,1\n", {}, "'2001-02T00:00' is not a date"),
         ]
         for text, options, fragment in cases:
@@ -804,6 +804,126 @@ def test_daily_observations_give_daily_means():
                                  catchment=catchment, what="month ends", plots=False, day="2001-03-01")
         assert_that("every date is the last day of its month" in stderr
                     and "note: 2001-03-01 is not in the record; showing 2001-02-28" in stderr, f"month ends: {stderr}")
+
+
+def test_hourly_observations_give_hourly_means():
+    # Observations of hours, by a date column with times on the hour or by an hour column, give a
+    # mean an hour, every hour from the first to the last (2001-03-01 01:00 has no row), across
+    # the end of a month. Hour 24, as hour-ending records write a day's last hour, is hour 0 of
+    # the next day. Each hour's mean is that of the same values given as a day of their own.
+    hours = {(2001, 2, 28, 23): {"N1": 1.5, "N2": 2.5, "N3": 4.0, "N5": 0.0},
+             (2001, 3, 1, 0): {"N1": 3.0, "N4": 1.25, "N6": 9.0},
+             (2001, 3, 1, 2): {"N2": 0.5, "N3": 7.0, "N4": 2.0, "N5": 3.5}}
+    ending = {(2001, 2, 28, 23): (2001, 2, 28, 23), (2001, 3, 1, 0): (2001, 2, 28, 24), (2001, 3, 1, 2): (2001, 3, 1, 2)}
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, _ = write_lake_basin(directory)
+
+        def observations(name, header, when):
+            return write(directory, name, header + "".join(f"{s},{when(step)},{v}\n"
+                                                           for step, values in hours.items() for s, v in values.items()))
+        files = [
+            observations("by_date.csv", "station_id,date,precip\n", lambda s: f"{s[0]}-{s[1]:02d}-{s[2]:02d} {s[3]:02d}:00"),
+            observations("by_iso.csv", "station_id,date,precip\n",
+                         lambda s: f"{s[0]}-{s[1]:02d}-{s[2]:02d}T{s[3]:02d}:00:00"),
+            observations("by_columns.csv", "station_id,year,month,day,hour,precip\n", lambda s: ",".join(map(str, s))),
+            observations("by_ending.csv", "station_id,year,month,day,hour,precip\n",
+                         lambda s: ",".join(map(str, ending[s]))),
+            observations("by_ending_date.csv", "station_id,date,precip\n",
+                         lambda s: "{}-{:02d}-{:02d} {:02d}:00".format(*ending[s])),
+        ]
+        outputs = []
+        for path in files:
+            out = os.path.join(directory, os.path.basename(path)[:-4])
+            stdout, stderr = run_colorado(out, stations=stations, observations=path, catchment=catchment,
+                                          hour="2001-03-01 00:00", what=path)
+            got = {}
+            for file in ("areal_mean.csv", "weights_all_hours.csv", "weights_2001_03_01_00.csv",
+                         "map_2001_03_01_00.png", "areal_mean.png", "unused_inputs.csv", "tiles_2001_03_01_00.vtp"):
+                with open(os.path.join(out, file), "rb") as f:
+                    got[file] = f.read()
+            note = f"{path}: 3 observation(s) at hour 24 (the end of a day) are read as hour 0 of the next day\n"
+            assert_that((note in stderr) == ("ending" in path), f"{path}: the note on hour 24: {stderr}")
+            outputs.append((got, stdout.replace(out, "OUT"),
+                            re.sub(r"in [0-9.]+ s\b", "in T s", stderr.replace(note, "").replace(path, "OBS"))))
+            assert_that("4 hours, 3 with data" in stdout and "2001-03-01 00:00: areal mean" in stdout,
+                        f"stdout: {stdout}")
+            assert_that("1 hour(s) between 2001-02-28 23:00 and 2001-03-01 02:00 have no row of a gauge's station"
+                        in stderr, f"the hour without rows: {stderr}")
+        for path, other in zip(files[1:], outputs[1:]):
+            for file in outputs[0][0]:
+                assert_that(outputs[0][0][file] == other[0][file], f"{file} differs between by_date and {path}")
+            assert_that(outputs[0][1:] == other[1:], f"the messages differ: {outputs[0][1:]} against {other[1:]}")
+        out = os.path.join(directory, "by_date")
+        means = read_csv(os.path.join(out, "areal_mean.csv"))
+        every = [(2001, 2, 28, 23), (2001, 3, 1, 0), (2001, 3, 1, 1), (2001, 3, 1, 2)]
+        assert_that([tuple(int(r[k]) for k in ("year", "month", "day", "hour")) for r in means] == every,
+                    f"the hours: {means}")
+        # The same values with each hour given as a day of its own (the days' path, checked
+        # against months in test_daily_observations_give_daily_means).
+        as_days = write(directory, "as_days.csv", "station_id,year,month,day,precip\n" + "".join(
+            f"{s},2001,1,{every.index(step) + 1},{v}\n" for step, values in hours.items() for s, v in values.items()))
+        run_colorado(os.path.join(directory, "as_days"), stations=stations, observations=as_days, catchment=catchment,
+                     plots=False, what="the hours as days")
+        days = read_csv(os.path.join(directory, "as_days", "areal_mean.csv"))
+        weights = read_csv(os.path.join(out, "weights_all_hours.csv"))
+        for r, d in zip(means, days):
+            hour = tuple(int(r[k]) for k in ("year", "month", "day", "hour"))
+            listed = [w for w in weights if tuple(int(w[k]) for k in ("year", "month", "day", "hour")) == hour]
+            values = hours.get(hour, {})
+            assert_that(int(r["stations_used"]) == len(values) == int(d["stations_used"])
+                        and int(r["stations_weighted"]) == len(listed), f"{hour}: {r}, {len(listed)} weighted, {d}")
+            if not values:
+                assert_that(r["areal_mean"] == "" == d["areal_mean"], f"{hour}: a mean without a report: {r}")
+                continue
+            assert_close(math.fsum(float(w["weight"]) * float(w["precip"]) for w in listed), float(r["areal_mean"]),
+                         1e-12, f"{hour}: weights times values")
+            assert_close(float(d["areal_mean"]), float(r["areal_mean"]), 1e-12, f"{hour} against its day")
+        # --day with hours chooses the day's first hour; no --hour, the record's nearest hour.
+        stdout, stderr = run_colorado(os.path.join(directory, "a_day"), stations=stations, observations=files[0],
+                                      catchment=catchment, day="2001-03-01", plots=False, what="--day of hours")
+        assert_that("2001-03-01 00:00: areal mean" in stdout and "note:" not in stderr, f"--day of hours: {stdout}")
+        # Dates all at midnight are days, 24:00 the day it ends.
+        ends = write(directory, "ends.csv", "station_id,date,precip\nN1,2001-01-30 24:00,1\nN2,2001-01-31 00:00,2\n")
+        run_colorado(os.path.join(directory, "ends"), stations=stations, observations=ends, catchment=catchment,
+                     plots=False, what="days at 24:00")
+        days = read_csv(os.path.join(directory, "ends", "areal_mean.csv"))
+        assert_that([(r["day"], r["stations_used"]) for r in days] == [("30", "1"), ("31", "1")] and "hour" not in days[0],
+                    f"days at 24:00: {days}")
+        # Days stamped with the hour they are read at are read as hours, and said; one hour alone is not.
+        for text, said in (("N1,2001-03-01 07:00,1\nN2,2001-03-02 07:00,2\n", True), ("N1,2001-03-01 07:00,1\n", False),
+                           ("N1,2001-03-01 07:00,1\nN2,2001-03-01 08:00,2\n", False)):
+            stamped = write(directory, "stamped.csv", "station_id,date,precip\n" + text)
+            _, stderr = run_colorado(os.path.join(directory, "stamped"), stations=stations, observations=stamped,
+                                     catchment=catchment, plots=False, what=text)
+            warning = (f"{stamped}: every time is 07:00; if these are daily values (a day read at that time), give "
+                       "the dates without the time (YYYY-MM-DD): they are read as hours")
+            assert_that((warning in stderr) == said, f"{text!r}: {stderr}")
+        # Bad hours are named; --hour is for hours only.
+        hourly = "station_id,date,precip\nN1,2001-03-01 06:00,1\n"
+        cases = [
+            ("station_id,date,precip\nN1,2001-03-01 06:30,1\n", {}, "'2001-03-01 06:30' is not on the hour"),
+            ("station_id,date,precip\nN1,2001-03-01 06:00:30,1\n", {}, "'2001-03-01 06:00:30' is not on the hour"),
+            ("station_id,date,precip\nN1,2001-03-01 25:00,1\n", {}, "'2001-03-01 25:00' is not a time of the day"),
+            (hourly + "N2,2001-03-02,1\n", {},
+             ":3: column 'date': a date without a time of day, where line 2 gives an hour"),
+            ("station_id,date,precip\nN1,2001-03,1\nN2,2001-03-01 06:00,1\n", {},
+             "'2001-03-01 06:00' is a day and time, where line 2 gives a month"),
+            ("station_id,year,month,day,hour,precip\nN1,2001,3,1,25,1\n", {}, "column 'hour': 25 is outside 0..24"),
+            ("station_id,year,month,hour,precip\nN1,2001,3,1,1\n", {}, "an hour column but no day column"),
+            ("station_id,date,hour,precip\nN1,2001-03-01,1,1\n", {}, "both a date column and year/month/day/hour"),
+            ("station_id,date,precip\nN1,2001-03-01,1\n", {"hour": "2001-03-01 01:00"}, "are daily (use --day)"),
+            ("station_id,date,precip\nN1,2001-03,1\n", {"hour": "2001-03-01 01:00"}, "are monthly (use --month)"),
+            (hourly, {"hour": "2001-03-01"}, "--hour '2001-03-01': expected a date and hour"),
+            (hourly, {"hour": "2001-02-30 01:00"}, "--hour '2001-02-30 01:00': is not an hour of the calendar"),
+            (hourly, {"hour": "2001-03-01 24:00"}, "--hour '2001-03-01 24:00': is not an hour of the calendar"),
+            (hourly, {"day": "2001-03-01", "hour": "2001-03-01 06:00"},
+             "--day 2001-03-01 and --hour 2001-03-01 06:00: give one of them"),
+        ]
+        for text, options, fragment in cases:
+            bad = write(directory, "bad.csv", text)
+            _, stderr = run_colorado(os.path.join(directory, "bad"), stations=stations, observations=bad,
+                                     catchment=catchment, what=f"{text!r} {options}", status=1, plots=False, **options)
+            assert_that(fragment in stderr and "Traceback" not in stderr, f"{text!r}: {fragment!r} not in {stderr!r}")
 
 
 def test_the_field_separator_and_the_decimal_mark():
@@ -1281,6 +1401,7 @@ if __name__ == "__main__":
          test_ids_without_their_leading_zeros_match_as_in_the_filter,
          test_files_of_semicolons_or_tabs_with_decimal_commas,
          test_daily_observations_give_daily_means,
+         test_hourly_observations_give_hourly_means,
          test_the_field_separator_and_the_decimal_mark,
          test_small_values_and_a_catchment_across_the_antimeridian,
          test_observations_of_no_gauge_end_the_run,
