@@ -385,12 +385,35 @@ bool MeetsWithinRing(const CleanRings& clean, const Segment& s, const Segment& t
   return SegmentsIntersect(a, b, c, d);
 }
 
+// Whether all of ring r's vertices lie on one line (a ring without area: its segments fold back
+// over each other). DropRepeats left no vertex equal to the next, so the first two differ.
+bool AllOnOneLine(const CleanRings& clean, std::size_t r)
+{
+  const Point2* v = clean.Vertices.data() + clean.RingOffsets[r];
+  const std::size_t count = clean.RingOffsets[r + 1] - clean.RingOffsets[r];
+  for (std::size_t k = 2; k < count; ++k)
+  {
+    if (orient2d_fast(v[0], v[1], v[k]) != 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 [[noreturn]] void ReportSelfContact(const CleanRings& clean, const Segment& s, const Segment& t)
 {
   const Segment& first = s.Start < t.Start ? s : t;
   const Segment& second = s.Start < t.Start ? t : s;
-  throw RingError("ring " + std::to_string(first.Ring) + " is self-intersecting: " +
-      Describe(clean, first) + " and " + Describe(clean, second) + " touch or cross",
+  const std::string ring = "ring " + std::to_string(first.Ring);
+  if (AllOnOneLine(clean, first.Ring))
+  {
+    throw RingError(ring + " has no area: its points lie on one line (" + Describe(clean, first) +
+        " and " + Describe(clean, second) + " overlap)",
+      { first.Ring });
+  }
+  throw RingError(ring + " is self-intersecting: " + Describe(clean, first) + " and " +
+      Describe(clean, second) + " touch or cross",
     { first.Ring });
 }
 

@@ -49,8 +49,9 @@ its row. A date column of YYYY-MM gives months.
 Hourly observations (an hour column, 0-23, beside year, month and day, or dates with a time on
 the hour, YYYY-MM-DD HH:00) make a step an hour in the same way: an hour column (year,month,day,
 hour,...), weights_all_hours.csv, --hour 'YYYY-MM-DD HH:00' (files named YYYY_MM_DD_HH), every
-hour from the first to the last. Hour 24 (24:00, as hour-ending records write a day's last
-hour) is hour 0 of the next day. Dates whose times are all midnight are days.
+hour from the first to the last. Hours keep their labels (hour-ending data: 06:00 is 05:00 to
+06:00), and hour 24 (24:00, as hour-ending records write a day's last hour) is hour 0 of the
+next day. Dates whose times are all midnight are days; a time column beside the date is refused.
 Units are those of the data (for the Colorado data: documented as mm, the magnitudes look like
 cm; see examples/data/README.md).
 
@@ -179,6 +180,11 @@ def observation_step(row, path, line):
     if "date" in row and ("year" in row or "month" in row or "day" in row or "hour" in row):
         csv_input.fail(f"{path}: the observations file has both a date column and year/month/day/hour columns "
                        "(keep one)")
+    if "time" in row and ("date" in row or "day" in row):
+        # (ignored, it made hours of one day the repeats of its first hour)
+        csv_input.fail(f"{path}: the observations file has a time column beside its {'date' if 'date' in row else 'day'} "
+                       "column: give hours as dates with their time in one column (YYYY-MM-DD HH:00) or in an "
+                       "hour column (0-23); if it is the time each day was read, leave it out")
     clock = None
     if "date" in row:
         text = csv_input.text(row, "date", path, line)
@@ -187,7 +193,11 @@ def observation_step(row, path, line):
         where = f"{path}:{line}: column 'date': {text!r}"
         clock = TIME_OF_DAY.fullmatch(text, date.end()) if date and date.group(3) else None
         if not date or (date.end() < len(text) and not clock):
-            csv_input.fail(f"{where} is not a date (YYYY-MM-DD, YYYY-MM-DD HH:00 for an hour, or YYYY-MM for a month)")
+            zone = re.search(r"(Z|[+-][0-9]{2}(:?[0-9]{2})?)$", text) if date and date.group(3) else None
+            csv_input.fail(f"{where} " + (f"has a time zone ({zone.group(1)}), which is not read: give the times "
+                                          "without it, all in one zone" if zone else
+                                          "is not a date (YYYY-MM-DD, YYYY-MM-DD HH:00 for an hour, or YYYY-MM "
+                                          "for a month)"))
         if clock and any(int(v or 0) for v in clock.groups()[1:]):
             csv_input.fail(f"{where} is not on the hour: the steps are hours (HH:00), days or months, so give "
                            "each hour's total at its hour")
@@ -218,25 +228,35 @@ def observation_step(row, path, line):
     return step
 
 
-# observation_step's steps by their length, and what the messages call them.
+# observation_step's steps by their length ("time": a date with a time; "hour" where that time is
+# not midnight), what the messages call them, and the kinds one file cannot mix.
 STEP_KINDS = {2: "month", 3: "day", 4: "time"}
 STEP_NAMES = {"month": "a month", "day": "a day", "time": "a day and time", "hour": "an hour"}
+
+
+def steps_clash(kind, other):
+    return kind != other and ("month" in (kind, other) or {kind, other} == {"day", "hour"})
+
+
+def hour_step(step):
+    """(year, month, day, hour) with hour 24, the end of the day, as hour 0 of the next day."""
+    if step[3] < 24:
+        return step
+    after = datetime.date(*step[:3]) + datetime.timedelta(1)
+    return (after.year, after.month, after.day, 0)
 
 
 def file_steps(read, first, hour_column, at_24, path):
     """The steps of an observations file (Steps), and the step of each one observation_step read
     (read: all of them; first: the first line of each kind, STEP_KINDS, and of a time other than
-    midnight, "hour"; at_24: the number of records at 24:00). The steps are hours where the file
-    has an hour column or a time other than midnight: hour 24 (24:00) is then hour 0 of the next
-    day, as hour-ending records write a day's last hour, which is said, and a date without a time
-    ends the script. Times all at midnight (00:00, or 24:00 for a day's end) are days, as a
-    spreadsheet may export them: a day at 24:00 is the day it ends."""
+    midnight, "hour"; at_24: the number of records at hour 24). The steps are hours where the
+    file has an hour column or a date with a time other than midnight: hour 24 (24:00) is then
+    hour 0 of the next day, as hour-ending records write a day's last hour, which is said. Dates
+    with times all at midnight (00:00, or 24:00 for a day's end) are days, as a spreadsheet may
+    export them: a day at 24:00 is the day it ends. Hours all at one time of day over several
+    days are said (daily values stamped with the hour they are read)."""
     if not (hour_column or "hour" in first):
         return Steps("month" if "month" in first or not first else "day"), {m: m[:3] for m in read}
-    if "day" in first:
-        csv_input.fail(f"{path}:{first['day']}: column 'date': a date without a time of day, where line "
-                       f"{first['hour']} gives an hour (the steps are all months, all days or all hours: "
-                       "give each hour as YYYY-MM-DD HH:00)")
     if at_24:
         print(f"{path}: {at_24} observation(s) at hour 24 (the end of a day) are read as hour 0 of the next day",
               file=sys.stderr)
@@ -244,14 +264,9 @@ def file_steps(read, first, hour_column, at_24, path):
         # Daily values stamped with the time their day ends (a climate day read at 07:00) would be
         # read as hours with 23 hours without a report between them: said, as for days of months.
         print(f"{path}: every time is {next(iter(read))[3]:02d}:00; if these are daily values (a day read at that "
-              "time), give the dates without the time (YYYY-MM-DD): they are read as hours", file=sys.stderr)
-
-    def next_day_at_24(m):
-        if m[3] < 24:
-            return m
-        day = datetime.date(*m[:3]) + datetime.timedelta(1)
-        return (day.year, day.month, day.day, 0)
-    return Steps("hour"), {m: next_day_at_24(m) for m in read}
+              "time), " + ("leave out the hour column" if hour_column else
+                           "give the dates without the time (YYYY-MM-DD)") + ": they are read as hours", file=sys.stderr)
+    return Steps("hour"), {m: hour_step(m) for m in read}
 
 
 def read_observations(path, gauge_of, filler, stations_path, missing_values=(), station_ids=()):
@@ -285,19 +300,19 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     first = {}  # the first line of a month, a day, a day and time, and a time other than midnight
     hour_column, at_24 = False, 0
     for line, row in csv_input.rows(path, ("station_id", "precip"), "observations",
-                                    ("year", "month", "day", "hour", "date")):
+                                    ("year", "month", "day", "hour", "date", "time")):
         lines.append(line)
         station = csv_input.text(row, "station_id", path, line)
         year_and_month = observation_step(row, path, line)
         kind = STEP_KINDS[len(year_and_month)]
-        first.setdefault(kind, line)
-        if kind == "month" and len(first) > 1 or kind != "month" and "month" in first:
-            other = "month" if kind != "month" else next(k for k in first if k != "month")
-            csv_input.fail(f"{path}:{line}: column 'date': {row['date'].strip()!r} is {STEP_NAMES[kind]}, where "
-                           f"line {first[other]} gives {STEP_NAMES[other]} (the steps are all months, all days or "
-                           "all hours)")
         if kind == "time" and year_and_month[3] % 24:
-            first.setdefault("hour", line)
+            kind = "hour"  # (a time at midnight may be a day's or an hour's)
+        first.setdefault(kind, line)
+        clash = next((k for k in first if steps_clash(k, kind)), None)
+        if clash:
+            csv_input.fail(f"{path}:{line}: column 'date': {row['date'].strip()!r} is {STEP_NAMES[kind]}, where "
+                           f"line {first[clash]} gives {STEP_NAMES[clash]} (the steps are all months, all days or "
+                           "all hours)")
         hour_column = "hour" in row
         at_24 += kind == "time" and year_and_month[3] == 24
         read.append(year_and_month)
@@ -1033,17 +1048,18 @@ def plot_series(rows, path):
 
 
 def chosen_hour(text):
-    """--hour's (year, month, day, hour), from YYYY-MM-DD HH:00, YYYY-MM-DDTHH:00 or YYYY-MM-DDTHH;
-    ends the script naming the value otherwise."""
+    """--hour's (year, month, day, hour), from YYYY-MM-DD HH:00, YYYY-MM-DDTHH:00 or YYYY-MM-DDTHH
+    (24:00 is hour 0 of the next day, as in the observations); ends the script naming the value
+    otherwise."""
     date = DATE.match(text.strip())
     rest = text.strip()[date.end():] if date and date.group(3) else None
     clock = re.fullmatch(r"[T ]([0-9]{1,2})(?::00(?::00)?)?", rest) if rest is not None else None
     if not clock:
         sys.exit(f"--hour {text!r}: expected a date and hour, YYYY-MM-DD HH:00")
     step = tuple(int(v) for v in (*date.groups(), clock.group(1)))
-    if step[0] < 1 or not 1 <= step[1] <= 12 or not 1 <= step[2] <= calendar.monthrange(*step[:2])[1] or step[3] > 23:
+    if step[0] < 1 or not 1 <= step[1] <= 12 or not 1 <= step[2] <= calendar.monthrange(*step[:2])[1] or step[3] > 24:
         sys.exit(f"--hour {text!r}: is not an hour of the calendar")
-    return step
+    return hour_step(step)
 
 
 def main(argv=None):
@@ -1126,10 +1142,9 @@ def main(argv=None):
                                                                   min(station_ids, default=None), args.stations,
                                                                   set(args.missing_value), station_ids)
     if asked and len(asked) > steps.fields:
-        csv_input.fail(f"--hour {args.hour}: the observations of {args.observations} are {steps.adjective} "
+        option = f"--hour {args.hour}" if args.hour is not None else f"--day {args.day}"
+        csv_input.fail(f"{option}: the observations of {args.observations} are {steps.adjective} "
                        f"(use --{steps.unit})")
-    if asked and steps.unit == "month":
-        csv_input.fail(f"--day {args.day}: the observations of {args.observations} are monthly (use --month)")
     step = (*(asked or (year, month, 1)), 0)[:steps.fields] if steps.fields > 2 else (year, month)
     catchment, outline = read_catchment(args.catchment, args.feature)
     groups = polygon_groups(features_by_value(catchment, each, args.catchment), each,

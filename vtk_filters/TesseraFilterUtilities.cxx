@@ -251,10 +251,11 @@ tessera::Window ChooseWindow(const double bounds[4],
   const char* names[4] = { "xmin", "xmax", "ymin", "ymax" };
   for (int k = 0; k < 4; ++k)
   {
-    if (std::isnan(bounds[k]))
+    if (!std::isfinite(bounds[k]))
     {
-      throw tessera::InputError(std::string("WindowBounds ") + names[k] +
-        " is NaN (xmin, xmax, ymin, ymax = " + BoundsText(bounds) + ")");
+      throw tessera::InputError(std::string("WindowBounds ") + names[k] + " is " +
+        (std::isnan(bounds[k]) ? "NaN" : tessera::NumberText(bounds[k])) +
+        " (xmin, xmax, ymin, ymax = " + BoundsText(bounds) + ")");
     }
   }
   std::vector<tessera::HalfPlane> halfPlanes;

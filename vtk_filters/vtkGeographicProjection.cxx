@@ -256,7 +256,7 @@ tessera::ProjectionParameters ChooseForwardParameters(vtkGeographicProjection* s
     p.UTMZone = tessera::UTMZoneOfLongitude(self->GetCentralLongitude());
     p.UTMNorth = self->GetCentralLatitude() >= 0.0;
   }
-  if (self->GetUTMZone() != 0)
+  if (self->GetUTMZone() >= 1 && self->GetUTMZone() <= 60)
   {
     p.UTMZone = self->GetUTMZone();
     p.UTMNorth = self->GetUTMNorth();
@@ -544,7 +544,8 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
         "TransverseMercator",
         "UTM",
         "AzimuthalEquidistant" });
-    if (this->UTMZone < 0 || this->UTMZone > 60)
+    // (the zone is a UTM setting: a value left from a UTM choice does not stop another projection)
+    if (this->Projection == UTM && (this->UTMZone < 0 || this->UTMZone > 60))
     {
       throw tessera::InputError("UTMZone " + std::to_string(this->UTMZone) +
         " is neither a zone from 1 to 60 nor 0 (the zone of the data's central longitude)");

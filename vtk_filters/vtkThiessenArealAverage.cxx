@@ -425,11 +425,17 @@ std::string UnknownStationName(vtkAbstractArray* stations, const tessera::Unknow
 }
 
 /// The error for a table none of whose rows can be used: how many lack a station or time, and which
-/// station ids no gauge has.
-std::string NoUsableRowMessage(const ObservationRows& rows, vtkAbstractArray* stations)
+/// station ids no gauge has (all of them, where the gauges input has no points: said first).
+std::string NoUsableRowMessage(const ObservationRows& rows,
+  vtkAbstractArray* stations,
+  vtkIdType gaugeCount)
 {
   const std::vector<tessera::UnknownStation>& unknown = rows.Match.UnknownStations;
   std::ostringstream message;
+  if (gaugeCount == 0)
+  {
+    message << "the gauges input has no points (does the filter before it give none?), so ";
+  }
   message << "none of the " << rows.Steps.StepOfRow.size()
           << " observation rows can be used (no time step to average): "
           << rows.Steps.IncompleteRows.size() << " have no station id or no time";
@@ -1075,7 +1081,13 @@ vtkAbstractArray* vtkThiessenArealAverage::GaugeStationIds(vtkPointSet* gauges, 
     gauges->GetPointData()->GetAbstractArray(this->StationIdArrayName.c_str());
   if (!ids && required)
   {
-    throw tessera::InputError("the gauges have no point-data array '" + this->StationIdArrayName +
+    // (an upstream filter that failed, such as Table To Points without its Z column, gives an
+    // empty data set: that, not the array, is the cause)
+    throw tessera::InputError(std::string(gauges->GetNumberOfPoints() == 0
+                                  ? "the gauges input has no points (does the filter before it "
+                                    "give none?) and "
+                                  : "the gauges have ") +
+      "no point-data array '" + this->StationIdArrayName +
       "' of station ids to match the observations with");
   }
   if (ids && ids->GetNumberOfTuples() != gauges->GetNumberOfPoints())
@@ -1191,7 +1203,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     stations = observations->GetColumnByName(this->StationColumn.c_str());
     if (rows->Steps.Times.empty())
     {
-      throw tessera::InputError(NoUsableRowMessage(*rows, stations));
+      throw tessera::InputError(NoUsableRowMessage(*rows, stations, gauges->GetNumberOfPoints()));
     }
     in.Times = rows->Steps.Times;
     rowValues = RowValues(observations, rows->Steps, this->StationColumn, this->ValueColumn);

@@ -1343,7 +1343,14 @@ TEST(Clip, RejectsBadCatchmentsNamingRingsAndSegments)
 
   Rings collinear;
   collinear.Add({ { 0, 0 }, { 1, 1 }, { 2, 2 } });
-  EXPECT_NE(build(collinear).find("ring 0 is self-intersecting"), std::string::npos);
+  EXPECT_EQ(build(collinear),
+    "ring 0 has no area: its points lie on one line (segment 0 and segment 2 overlap)");
+  Rings collinearAfterARectangle; // named by its own number, its points in any order
+  collinearAfterARectangle.Add(Rectangle(0, 0, 10, 10));
+  collinearAfterARectangle.Add({ { 20, 0 }, { 24, 2 }, { 22, 1 }, { 26, 3 } });
+  EXPECT_NE(build(collinearAfterARectangle).find("ring 1 has no area: its points lie on one line"),
+    std::string::npos)
+    << build(collinearAfterARectangle);
 
   // A closing vertex equal to the first, and repeated vertices, are accepted.
   Rings closed;

@@ -529,6 +529,8 @@ def test_automatic_window_keeps_every_point_and_bad_windows_are_named():
                     f"{name}: {tiles.GetNumberOfCells()} tiles of {distinct}, {rejected} rejected, {messages}")
     for name, setup, expected in [
             ("NaN bound", lambda f: f.SetWindowBounds(math.nan, 1, 0, 1), "WindowBounds xmin is NaN"),
+            # (an infinite one was "rectangle window: xmin = -inf is not finite", not naming WindowBounds)
+            ("infinite bound", lambda f: f.SetWindowBounds(0, 1, -math.inf, 1), "WindowBounds ymin is -inf"),
             ("infinite padding", lambda f: f.SetPadding(math.inf), "Padding inf is not a finite number >= 0"),
             ("huge padding", lambda f: f.SetPadding(1e300), "area overflows"),
             ("huge bounds", lambda f: f.SetWindowBounds(-1e200, 1e200, -1e200, 1e200), "area overflows")]:

@@ -777,6 +777,8 @@ def test_daily_observations_give_daily_means():
             ("station_id,year,month,day,precip\nN1,2001,2,29,1\n", {}, "column 'day': 29 is not a day of 2001-02"),
             ("station_id,date,year,month,precip\nN1,2001-02-03,2001,2,1\n", {}, "both a date column and year/month"),
             ("station_id,when,precip\nN1,2001-02-03,1\n", {}, "no columns year and month, nor a date column"),
+            ("station_id,year,month,precip\nN1,2001,2,1\n", {"day": "2001-02-01"},
+             "--day 2001-02-01: the observations of"),
             ("station_id,year,month,precip\nN1,2001,2,1\n", {"day": "2001-02-01"}, "are monthly (use --month)"),
             ("station_id,date,precip\nN1,2001-02-03,1\n", {"day": "2001-02-30"},
              "--day '2001-02-30': is not a date of the calendar"),
@@ -878,10 +880,11 @@ def test_hourly_observations_give_hourly_means():
             assert_close(math.fsum(float(w["weight"]) * float(w["precip"]) for w in listed), float(r["areal_mean"]),
                          1e-12, f"{hour}: weights times values")
             assert_close(float(d["areal_mean"]), float(r["areal_mean"]), 1e-12, f"{hour} against its day")
-        # --day with hours chooses the day's first hour; no --hour, the record's nearest hour.
-        stdout, stderr = run_colorado(os.path.join(directory, "a_day"), stations=stations, observations=files[0],
-                                      catchment=catchment, day="2001-03-01", plots=False, what="--day of hours")
-        assert_that("2001-03-01 00:00: areal mean" in stdout and "note:" not in stderr, f"--day of hours: {stdout}")
+        # --day with hours chooses the day's first hour; --hour 24:00 is the next day's hour 0.
+        for option in ({"day": "2001-03-01"}, {"hour": "2001-02-28 24:00"}):
+            stdout, stderr = run_colorado(os.path.join(directory, "a_day"), stations=stations, observations=files[0],
+                                          catchment=catchment, plots=False, what=f"{option} of hours", **option)
+            assert_that("2001-03-01 00:00: areal mean" in stdout and "note:" not in stderr, f"{option}: {stdout}")
         # Dates all at midnight are days, 24:00 the day it ends.
         ends = write(directory, "ends.csv", "station_id,date,precip\nN1,2001-01-30 24:00,1\nN2,2001-01-31 00:00,2\n")
         run_colorado(os.path.join(directory, "ends"), stations=stations, observations=ends, catchment=catchment,
@@ -890,32 +893,46 @@ def test_hourly_observations_give_hourly_means():
         assert_that([(r["day"], r["stations_used"]) for r in days] == [("30", "1"), ("31", "1")] and "hour" not in days[0],
                     f"days at 24:00: {days}")
         # Days stamped with the hour they are read at are read as hours, and said; one hour alone is not.
-        for text, said in (("N1,2001-03-01 07:00,1\nN2,2001-03-02 07:00,2\n", True), ("N1,2001-03-01 07:00,1\n", False),
-                           ("N1,2001-03-01 07:00,1\nN2,2001-03-01 08:00,2\n", False)):
-            stamped = write(directory, "stamped.csv", "station_id,date,precip\n" + text)
+        advice = {"date": "give the dates without the time (YYYY-MM-DD)", "hour": "leave out the hour column"}
+        for text, said in (("date\nN1,2001-03-01 07:00,1\nN2,2001-03-02 07:00,2\n", "date"),
+                           ("date\nN1,2001-03-01 07:00,1\n", None),
+                           ("date\nN1,2001-03-01 07:00,1\nN2,2001-03-01 08:00,2\n", None),
+                           ("year,month,day,hour\nN1,2001,3,1,7,1\nN2,2001,3,2,7,2\n", "hour")):
+            stamped = write(directory, "stamped.csv", "station_id," + text.replace("\n", ",precip\n", 1))
             _, stderr = run_colorado(os.path.join(directory, "stamped"), stations=stations, observations=stamped,
                                      catchment=catchment, plots=False, what=text)
-            warning = (f"{stamped}: every time is 07:00; if these are daily values (a day read at that time), give "
-                       "the dates without the time (YYYY-MM-DD): they are read as hours")
-            assert_that((warning in stderr) == said, f"{text!r}: {stderr}")
+            warning = (f"{stamped}: every time is 07:00; if these are daily values (a day read at that time), "
+                       f"{advice.get(said)}: they are read as hours")
+            assert_that((warning in stderr) == (said is not None), f"{text!r}: {stderr}")
         # Bad hours are named; --hour is for hours only.
         hourly = "station_id,date,precip\nN1,2001-03-01 06:00,1\n"
         cases = [
             ("station_id,date,precip\nN1,2001-03-01 06:30,1\n", {}, "'2001-03-01 06:30' is not on the hour"),
             ("station_id,date,precip\nN1,2001-03-01 06:00:30,1\n", {}, "'2001-03-01 06:00:30' is not on the hour"),
             ("station_id,date,precip\nN1,2001-03-01 25:00,1\n", {}, "'2001-03-01 25:00' is not a time of the day"),
-            (hourly + "N2,2001-03-02,1\n", {},
-             ":3: column 'date': a date without a time of day, where line 2 gives an hour"),
+            (hourly + "N2,2001-03-02,1\n", {}, ":3: column 'date': '2001-03-02' is a day, where line 2 gives an hour"),
+            ("station_id,date,precip\nN2,2001-03-02,1\nN2,2001-03-02 00:00,1\nN1,2001-03-01 06:00,1\n", {},
+             ":4: column 'date': '2001-03-01 06:00' is an hour, where line 2 gives a day"),
+            # (a time column was not read: the hours of a day were repeats of its first)
+            ("station_id,date,time,precip\nN1,2001-03-01,06:00,1\n", {},
+             "has a time column beside its date column: give hours as dates with their time in one column"),
+            ("station_id,year,month,day,Time,precip\nN1,2001,3,1,06:00,1\n", {}, "a time column beside its day column"),
+            ("station_id,date,precip\nN1,2001-03-01T06:00Z,1\n", {}, "'2001-03-01T06:00Z' has a time zone (Z), which"),
+            ("station_id,date,precip\nN1,2001-03-01 06:00+01:00,1\n", {}, "has a time zone (+01:00), which is not read"),
             ("station_id,date,precip\nN1,2001-03,1\nN2,2001-03-01 06:00,1\n", {},
-             "'2001-03-01 06:00' is a day and time, where line 2 gives a month"),
+             "'2001-03-01 06:00' is an hour, where line 2 gives a month"),
+            ("station_id,date,precip\nN1,2001-03,1\nN2,2001-03-01 00:00,1\n", {},
+             "'2001-03-01 00:00' is a day and time, where line 2 gives a month"),
             ("station_id,year,month,day,hour,precip\nN1,2001,3,1,25,1\n", {}, "column 'hour': 25 is outside 0..24"),
             ("station_id,year,month,hour,precip\nN1,2001,3,1,1\n", {}, "an hour column but no day column"),
             ("station_id,date,hour,precip\nN1,2001-03-01,1,1\n", {}, "both a date column and year/month/day/hour"),
             ("station_id,date,precip\nN1,2001-03-01,1\n", {"hour": "2001-03-01 01:00"}, "are daily (use --day)"),
+            ("station_id,date,precip\nN1,2001-03,1\n", {"hour": "2001-03-01 01:00"},
+             "--hour 2001-03-01 01:00: the observations of"),
             ("station_id,date,precip\nN1,2001-03,1\n", {"hour": "2001-03-01 01:00"}, "are monthly (use --month)"),
             (hourly, {"hour": "2001-03-01"}, "--hour '2001-03-01': expected a date and hour"),
             (hourly, {"hour": "2001-02-30 01:00"}, "--hour '2001-02-30 01:00': is not an hour of the calendar"),
-            (hourly, {"hour": "2001-03-01 24:00"}, "--hour '2001-03-01 24:00': is not an hour of the calendar"),
+            (hourly, {"hour": "2001-03-01 25:00"}, "--hour '2001-03-01 25:00': is not an hour of the calendar"),
             (hourly, {"day": "2001-03-01", "hour": "2001-03-01 06:00"},
              "--day 2001-03-01 and --hour 2001-03-01 06:00: give one of them"),
         ]
@@ -1349,6 +1366,27 @@ def test_progress_into_a_log_is_lines_of_its_own():
                     and set(percents) <= {0, 25, 50, 75, 100}, f"progress lines: {percents}")
 
 
+def test_the_readme_python_runs():
+    # The README's Python examples, as written, from the source directory: they print the
+    # tiles' total area (the window's), the clipped area (worked out by hand in a comment) and the
+    # number of months of the areal average.
+    with open(os.path.join(SOURCE_DIR, "README.md")) as f:
+        text = f.read()
+    section = text[text.index("## Use from Python"):text.index("## Use from ParaView")]
+    blocks = re.findall(r"```python\n(.*?)```", section, re.S)
+    assert_that(len(blocks) == 2, f"the README's Python blocks: {len(blocks)}")
+    printed = []
+    for block in blocks:
+        done = subprocess.run([sys.executable, "-c", block], cwd=SOURCE_DIR, capture_output=True, text=True, timeout=300)
+        assert_that(done.returncode == 0, f"the README's block failed: {done.stderr}")
+        printed += done.stdout.split()
+    assert_that(len(printed) == 3, f"printed: {printed}")
+    assert_close(float(printed[0]), 0.875, 1e-12, "the tiles' areas")
+    assert_close(float(printed[1]), 0.555, 1e-12, "the clipped areas")
+    months = {(r["year"], r["month"]) for r in read_csv(os.path.join(EXAMPLE_DATA, "colorado_monthly_precip.csv"))}
+    assert_that(printed[2] == str(len(months)), f"the months: {printed[2]}, {len(months)} in the file")
+
+
 def test_every_script_takes_help():
     # The README's promise, csv_input.py included: it is imported by the other examples, and run
     # (with --help or without arguments) it says so; imported, it prints nothing.
@@ -1415,5 +1453,6 @@ if __name__ == "__main__":
          test_ridge_grouping_checks_its_out_directory_first,
          test_project_gauges_names_a_bad_gauge_by_its_line,
          test_progress_into_a_log_is_lines_of_its_own,
+         test_the_readme_python_runs,
          test_every_script_takes_help,
          test_without_tessera_on_the_path_the_scripts_say_how_to_run])

@@ -300,8 +300,10 @@ def test_a_projection_or_zone_that_is_no_choice_is_named():
     assert_that((g.GetProjectionMinValue(), g.GetProjectionMaxValue(), g.GetUTMZoneMinValue(), g.GetUTMZoneMaxValue())
                 == (0, 5, 0, 60), "the ranges")
     for setup, expected in [(lambda f: f.SetProjection(9), "Projection 9 is not one of 0 (Automatic), 1 (AlbersEqualArea)"),
-                            (lambda f: f.SetUTMZone(61), "UTMZone 61 is neither a zone from 1 to 60 nor 0"),
-                            (lambda f: f.SetUTMZone(-1), "UTMZone -1 is neither a zone from 1 to 60 nor 0"),
+                            (lambda f: (f.SetProjectionToUTM(), f.SetUTMZone(61)),
+                             "UTMZone 61 is neither a zone from 1 to 60 nor 0"),
+                            (lambda f: (f.SetProjectionToUTM(), f.SetUTMZone(-1)),
+                             "UTMZone -1 is neither a zone from 1 to 60 nor 0"),
                             # (a NaN centre was named "longitude nan has no UTM zone")
                             (lambda f: (f.SetProjectionToTransverseMercator(), f.ParametersFromDataOff(),
                                         f.SetCentralLongitude(math.nan)), "CentralLongitude is nan")]:
@@ -311,6 +313,21 @@ def test_a_projection_or_zone_that_is_no_choice_is_named():
         f.SetInputData(make_points([(-105.0, 39.0), (-104.0, 40.0)]))
         f.Update()
         assert_that(len(errors) == 1 and expected in errors[0] and f.GetOutput().GetNumberOfPoints() == 0, f"{errors}")
+    # The zone is a UTM setting: a zone left from a UTM choice (a script, a state file) does not
+    # stop another projection, which gives what it gives with zone 0.
+    points = make_points([(-105.0, 39.0), (-104.0, 40.0)])
+    for projection in (g.AUTOMATIC, g.TRANSVERSE_MERCATOR):
+        outputs = []
+        for zone in (61, 0):
+            f = vtkGeographicProjection()
+            errors = messages_of(f)
+            f.SetProjection(projection)
+            f.SetUTMZone(zone)
+            f.SetInputData(points)
+            f.Update()
+            assert_that(not errors and f.GetOutput().GetNumberOfPoints() == 2, f"projection {projection}: {errors}")
+            outputs.append([f.GetOutput().GetPoint(i) for i in range(2)])
+        assert_that(outputs[0] == outputs[1], f"projection {projection}: zone 61 moved the points: {outputs}")
 
 
 if __name__ == "__main__":

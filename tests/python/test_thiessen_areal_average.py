@@ -1087,6 +1087,20 @@ def test_rows_that_cannot_be_used_make_no_step_and_are_listed():
                 and "1 have no station id or no time" in errors[0] and "C (1 row: row 0)" in errors[0],
                 f"no usable row: {errors}")
     assert_that(f.GetOutputDataObject(1).GetNumberOfRows() == 0, "no usable row: output 1 not empty")
+    # Gauges without points (the output of an upstream filter that failed or kept none) are named
+    # as the cause, with and without their station id array.
+    for empty, fragment in ((gauges_polydata([], []), "so none of the 1 observation rows can be used"),
+                            (vtkPolyData(), "and no point-data array 'station_id'")):
+        f = vtkThiessenArealAverage()
+        errors = messages_of(f)
+        f.SetGaugesData(empty)
+        f.SetCatchmentData(polygon(square))
+        f.SetObservationsData(csv_reader_table("station_id,date,value\nA,2000-03,5\n"))
+        f.SetTimeColumn("date")
+        f.Update(1)
+        assert_that(len(errors) == 1 and errors[0].count("the gauges input has no points (does the filter before it "
+                                                         "give none?)") == 1 and fragment in errors[0],
+                    f"no gauges: {errors}")
 
 
 def ellipsoidal_area(ring):

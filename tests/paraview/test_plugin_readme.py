@@ -1,0 +1,44 @@
+"""pvbatch: the README's pvpython block, as written, from the source directory (the plugin from
+the build tree): the areal average advertises the 1236 months and gives August 1963's tiles and
+the table of means."""
+
+import contextlib
+import io
+import os
+import re
+import sys
+
+source = os.environ["TESSERA_SOURCE_DIR"]
+with open(os.path.join(source, "README.md")) as f:
+    text = f.read()
+section = text[text.index("From `pvpython`/`pvbatch`:"):text.index("## Use from C++")]
+block = re.search(r"```python\n(.*?)```", section, re.S).group(1)
+plugin = "build/lib/paraview-plugins/Tessera/Tessera.so"
+failures = []
+if plugin not in block:
+    failures.append(f"the README's block does not load {plugin}")
+os.chdir(source)
+names = {}
+printed = io.StringIO()
+with contextlib.redirect_stdout(printed):
+    exec(block.replace(repr(plugin).replace("'", '"'), repr(os.environ["TESSERA_PLUGIN"])), names)
+if printed.getvalue().split() != ["1236"]:
+    failures.append(f"printed {printed.getvalue()!r}, expected the 1236 months")
+means, tiles = names["means"], names["tiles"]
+if means.GetNumberOfRows() != 1236:
+    failures.append(f"{means.GetNumberOfRows()} rows of means, expected 1236")
+weights = tiles.GetCellData().GetArray("CellWeight")
+total = sum(weights.GetValue(c) for c in range(weights.GetNumberOfTuples())) if weights else 0.0
+if not abs(total - 1.0) < 1e-12:
+    failures.append(f"August 1963's cell weights sum to {total}")
+bounds = tiles.GetBounds()
+if not (-110 < bounds[0] < bounds[1] < -101 and 36 < bounds[2] < bounds[3] < 42):
+    failures.append(f"the tiles are not in lon/lat over Colorado: {bounds}")
+projected = names["projected"]
+projected.UpdatePipeline()
+if projected.GetDataInformation().GetNumberOfPoints() != 376:
+    failures.append(f"{projected.GetDataInformation().GetNumberOfPoints()} projected gauges, expected 376")
+if failures:
+    print("FAIL:\n" + "\n".join(failures))
+    sys.exit(1)
+print("1 passed, 0 failed")
