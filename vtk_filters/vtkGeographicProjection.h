@@ -150,7 +150,9 @@ public:
   ///@{
   /**
    * Longest edge, in degrees of the lon/lat plane, left uncut before projecting (default 0.1).
-   * 0 or less: no densification.
+   * 0 or less: no densification. An edge is cut into at most 10^6 pieces (a warning counts
+   * those), and a step that would add more than 10^7 points in all is an error (a step given in
+   * metres, say), before any point is made.
    */
   vtkSetMacro(MaximumEdgeLength, double);
   vtkGetMacro(MaximumEdgeLength, double);

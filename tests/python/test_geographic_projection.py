@@ -183,6 +183,37 @@ def test_an_edge_cut_into_the_most_pieces_is_reported():
                         f"step {step}: {warnings}")
         else:
             assert_that(not warnings, f"step {step}: {warnings}")
+    # More than 10^7 new points in all (a step in metres rather than degrees) is refused before
+    # any is made: 12 edges of a degree or more at 1e-7 would add 12 (10^6 - 1) (each capped);
+    # two blocks of 6 such edges add up; 11 edges, 10999989 points, too. A step of 1e-5 is made.
+    def ring(edges, lat=39.0):
+        data = make_points([(-105.0 + k, lat) for k in range(edges // 2 + 1)]
+                           + [(-105.0 + k, lat + 1.0) for k in reversed(range(edges - edges // 2 - 1))])
+        cells = vtkCellArray()
+        cells.InsertNextCell(data.GetNumberOfPoints())
+        for i in range(data.GetNumberOfPoints()):
+            cells.InsertCellPoint(i)
+        data.SetPolys(cells)
+        return data
+    blocks = vtkMultiBlockDataSet()
+    blocks.SetBlock(0, ring(6))
+    blocks.SetBlock(1, ring(6, 41.0))
+    for data, step, refused in ((ring(12), 1e-7, "would cut the edges into 11999988 new points, more than 10000000"),
+                                (blocks, 1e-7, "would cut the edges into 11999988 new points"),
+                                (ring(11), 1e-7, "would cut the edges into 10999989 new points"),
+                                (ring(12), 1e-5, None)):
+        f = vtkGeographicProjection()
+        errors = messages_of(f)
+        f.SetMaximumEdgeLength(step)
+        f.SetInputData(data)
+        f.Update()
+        output = f.GetOutputDataObject(0)
+        points = output.GetNumberOfPoints()
+        if refused:
+            assert_that(len(errors) == 1 and f"MaximumEdgeLength {step:g} degrees {refused}" in errors[0]
+                        and "it is in degrees" in errors[0] and points == 0, f"{errors}, {points} points")
+        else:
+            assert_that(not errors and points > 12 * 10 ** 5, f"{errors}, {points} points")
 
 
 def test_an_edge_that_reads_both_ways_round_the_globe_is_reported():
