@@ -85,6 +85,22 @@ if average.GetClientSideObject().GetNumberOfInputConnections(2) != 0:
     failures.append("the Observations input is still connected after it was set to None")
 if len(average.TimestepValues) != 0:
     failures.append(f"{len(average.TimestepValues)} time steps advertised without observations")
+# The column and array properties offer the table's columns and the gauges' point arrays (a list
+# in the panel, not a text box), and keep their defaults where the input lacks such a column.
+columns = servermanager.Fetch(monthly)
+arrays = servermanager.Fetch(stations).GetPointData()
+offered = {"StationColumn": sorted(columns.GetColumnName(c) for c in range(columns.GetNumberOfColumns())),
+           "StationIdArrayName": sorted(arrays.GetArrayName(a) for a in range(arrays.GetNumberOfArrays()))}
+offered.update(TimeColumn=offered["StationColumn"], ValueColumn=offered["StationColumn"],
+               ValueArrayName=offered["StationIdArrayName"])
+for name, expected in offered.items():
+    if sorted(average.GetProperty(name).Available) != expected:
+        failures.append(f"{name} offers {list(average.GetProperty(name).Available)}, expected {expected}")
+fresh = ThiessenArealAverage(Gauges=stations, Catchment=outline, Observations=monthly)  # noqa: F821
+defaults = [fresh.GetPropertyValue(name) for name in ("StationIdArrayName", "ValueArrayName", "StationColumn",
+                                                      "TimeColumn", "MonthColumn", "ValueColumn")]
+if defaults != ["station_id", "value", "station_id", "time", "", "value"]:
+    failures.append(f"a new filter's columns are {defaults}, not the documented defaults")
 if failures:
     print("FAIL:\n" + "\n".join(failures))
     sys.exit(1)
