@@ -765,12 +765,9 @@ bool Catchment::HoldsPartOf(const Point2* tile, std::size_t count) const
   {
     return count > 0;
   }
-  for (std::size_t k = 2; k < count; ++k)
+  if (!AllOnOneLine(tile, count))
   {
-    if (orient2d(tile[0], tile[1], tile[k]) != 0)
-    {
-      return false; // a tile with area: its mean decides
-    }
+    return false; // a tile with area: its mean decides
   }
   for (std::size_t k = 0; k < count; ++k)
   {

@@ -385,29 +385,15 @@ bool MeetsWithinRing(const CleanRings& clean, const Segment& s, const Segment& t
   return SegmentsIntersect(a, b, c, d);
 }
 
-// Whether all of ring r's vertices lie on one line (a ring without area: its segments fold back
-// over each other). DropRepeats left no vertex equal to the next, so the first two differ.
-bool AllOnOneLine(const CleanRings& clean, std::size_t r)
-{
-  const Point2* v = clean.Vertices.data() + clean.RingOffsets[r];
-  const std::size_t count = clean.RingOffsets[r + 1] - clean.RingOffsets[r];
-  for (std::size_t k = 2; k < count; ++k)
-  {
-    if (orient2d_fast(v[0], v[1], v[k]) != 0)
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
 [[noreturn]] void ReportSelfContact(const CleanRings& clean, const Segment& s, const Segment& t)
 {
   const Segment& first = s.Start < t.Start ? s : t;
   const Segment& second = s.Start < t.Start ? t : s;
   const std::string ring = "ring " + std::to_string(first.Ring);
-  if (AllOnOneLine(clean, first.Ring))
+  const std::size_t begin = clean.RingOffsets[first.Ring];
+  if (AllOnOneLine(&clean.Vertices[begin], clean.RingOffsets[first.Ring + 1] - begin))
   {
+    // (a ring without area: its segments fold back over each other)
     throw RingError(ring + " has no area: its points lie on one line (" + Describe(clean, first) +
         " and " + Describe(clean, second) + " overlap)",
       { first.Ring });
@@ -508,6 +494,14 @@ int RingOrientation(const Point2* ring, std::size_t count)
   const Point2& before = ring[lowest == 0 ? count - 1 : lowest - 1];
   const Point2& after = ring[lowest + 1 == count ? 0 : lowest + 1];
   return orient2d_fast(before, ring[lowest], after);
+}
+
+bool AllOnOneLine(const Point2* points, std::size_t count)
+{
+  const Point2* const end = points + count;
+  const Point2* other = std::find_if(points, end, [&](const Point2& p) { return p != points[0]; });
+  return std::all_of(
+    other, end, [&](const Point2& p) { return orient2d_fast(points[0], *other, p) == 0; });
 }
 
 bool SegmentsIntersect(const Point2& a, const Point2& b, const Point2& c, const Point2& d)

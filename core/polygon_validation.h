@@ -70,6 +70,9 @@ CleanRings WithContactsAsVertices(const CleanRings& rings);
 /// collinear with it (validation refuses such overlaps).
 int RingOrientation(const Point2* ring, std::size_t count);
 
+/// Whether all the points lie on one line, exactly (so do fewer than three distinct points).
+bool AllOnOneLine(const Point2* points, std::size_t count);
+
 /// Whether the closed segments ab and cd have a point in common, exactly.
 bool SegmentsIntersect(const Point2& a, const Point2& b, const Point2& c, const Point2& d);
 

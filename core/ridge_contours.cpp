@@ -756,6 +756,11 @@ RidgeContours TraceRidgeContours(const std::vector<std::uint8_t>& minor,
     throw InputError("minimum contour length " + NumberText(settings.MinimumLength) +
       " is not a non-negative number");
   }
+  if (!(settings.MinimumLoopLength >= 0.0) || !std::isfinite(settings.MinimumLoopLength))
+  {
+    throw InputError("minimum loop length " + NumberText(settings.MinimumLoopLength) +
+      " is not a non-negative number");
+  }
   if (settings.TangentPixels < 1)
   {
     throw InputError(
@@ -781,7 +786,7 @@ RidgeContours TraceRidgeContours(const std::vector<std::uint8_t>& minor,
     const std::vector<int>& pixels = contours[c];
     const double length =
       PathLength(pixels, 0, static_cast<int>(pixels.size()), closed[c] != 0, width);
-    if (length < settings.MinimumLength)
+    if (length < settings.MinimumLength || (closed[c] && length < settings.MinimumLoopLength))
     {
       continue;
     }

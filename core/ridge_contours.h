@@ -50,6 +50,9 @@ struct RidgeContourSettings
   JoinRule Join = JoinRule::Longest;
   /// Contours shorter than this (pixels) are dropped.
   double MinimumLength = 10.0;
+  /// Closed contours shorter than this (pixels) are dropped too (RidgeGrouping: a circle of one
+  /// basis width, the smallest loop of the data the field resolves).
+  double MinimumLoopLength = 0.0;
   /// How far (pixels along the segment) the tangent of a segment end is measured.
   int TangentPixels = 6;
   /// Longest segment between two junctions kept without a major-ridge pixel (pixels).

@@ -430,6 +430,12 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
   // two separate ridges is longer (with four widths, noisy lines 4.3 widths apart were joined
   // across into Z-shaped groups).
   contourSettings.MaximumBridgeLength = 2.0 * this->Settings.Width;
+  // A ridge loop shorter than a circle of one basis width is no closed curve of the data: the
+  // field merges such a loop of points into one peak. Such loops come from the field's shape
+  // where a curve ends or bends (11-29 pixel loops at a basis width of 8 took a road's last 60
+  // points into a closed group, and broke an ellipse's tips into small closed groups); dropped,
+  // their points join the contours nearby.
+  contourSettings.MinimumLoopLength = 2.0 * 3.14159265358979323846 * this->Settings.Width;
   const RidgeContours contours =
     TraceRidgeContours(masks.Minor, masks.Major, grid.Width, grid.Height, contourSettings);
   result.MinorRidge = std::move(masks.Minor);

@@ -61,7 +61,8 @@ struct RidgeGroupingSettings
   /// Smoothness of the RaG curves, in node units (the paper uses 0.01 to 0.08).
   double CurveSigma = 0.04;
   JoinRule Join = JoinRule::Longest;
-  /// Ridge contours shorter than this (pixels) are dropped before partitioning.
+  /// Ridge contours shorter than this (pixels) are dropped before partitioning, and so are closed
+  /// ones shorter than 2 pi Width pixels (a loop the field cannot resolve).
   double MinimumContourLength = 10.0;
   /// Samples of each fitted curve per pixel of its ridge contour (at least 16 per curve).
   double CurveSamplesPerPixel = 2.0;

@@ -151,7 +151,9 @@ public:
 
   ///@{
   /**
-   * Ridge contours shorter than this many pixels are dropped before partitioning (default 10).
+   * Ridge contours shorter than this many pixels are dropped before partitioning (default 10),
+   * and so are closed ones shorter than a circle of one basis width (2 pi Width pixels: a loop
+   * the field cannot resolve, made by its shape where a curve ends or bends).
    * Negative: an error at the update.
    */
   vtkSetMacro(MinimumContourLength, double);

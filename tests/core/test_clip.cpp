@@ -1598,3 +1598,34 @@ TEST(Clip, AClockwiseTileIsNamedWithItsArea)
       << e.what();
   }
 }
+
+// AllOnOneLine against exact rational cross products of every triple, on small sets of grid
+// points (many collinear, many repeated, the first often repeated).
+TEST(PolygonValidation, AllOnOneLineMatchesExactTriples)
+{
+  std::mt19937 random(17);
+  std::uniform_int_distribution<int> coordinate(0, 3), size(0, 6);
+  int collinear = 0, notCollinear = 0;
+  for (int trial = 0; trial < 2000; ++trial)
+  {
+    std::vector<Point2> points(static_cast<std::size_t>(size(random)));
+    for (Point2& p : points)
+    {
+      // On the line y = 2x + 1 half the time (scaled by 0.1: not exact in binary), else anywhere.
+      const int x = coordinate(random);
+      p = trial % 2 ? Point2{ 0.1 * x, 0.1 * (2 * x + 1) }
+                    : Point2{ 0.1 * x, 0.1 * coordinate(random) };
+    }
+    bool expected = true;
+    for (const Point2& a : points)
+      for (const Point2& b : points)
+        for (const Point2& c : points)
+        {
+          expected = expected && Cross(ToExact(a), ToExact(b), ToExact(c)) == 0;
+        }
+    EXPECT_EQ(AllOnOneLine(points.data(), points.size()), expected) << "trial " << trial;
+    ++(expected ? collinear : notCollinear);
+  }
+  EXPECT_GT(collinear, 500);
+  EXPECT_GT(notCollinear, 500);
+}

@@ -99,6 +99,49 @@ def test_two_noisy_curves_are_grouped_ordered_and_fitted():
     assert_that(pts.GetFieldData().GetArray("ImageSize").GetValue(0) == 256, "ImageSize recorded")
 
 
+def test_no_loop_smaller_than_the_basis_makes_a_closed_group():
+    # Three noisy sine roads, 250 apart, at a basis width of 8 pixels: where a road ends the field
+    # made a ridge loop of 14.5 pixels, which took the road's last 60 points into a closed group of
+    # their own (4 groups, the road's Node order broken). A loop shorter than a circle of one basis
+    # width is dropped: three open groups, one a road, in order (some 50 points past the end of the
+    # middle road's contour still join the bottom road's group, hence a Rand index of 0.86, not 1).
+    # A circle of points (at the default width) stays one closed group.
+    rng = np.random.default_rng(1)
+    coords, truth, along = [], [], []
+    for k in range(3):
+        t = np.sort(rng.random(300))
+        xy = np.column_stack([1000 * t, 250 * k + 40 * np.sin(2 * np.pi * 1.5 * t + k)])
+        xy += rng.normal(scale=8.0, size=xy.shape)
+        coords += [tuple(p) for p in xy]
+        truth += [k] * 300
+        along += list(t)
+    circle = [(300 * math.cos(a) + rng.normal(0, 8.0), 300 * math.sin(a) + rng.normal(0, 8.0))
+              for a in np.sort(rng.random(600)) * 2 * math.pi]
+    for points, roads in ((coords, True), (circle, False)):
+        f = vtkRidgeGrouping()
+        f.SetInputData(make_points(points))
+        f.SetWidth(8.0 if roads else 5.0)
+        f.Update()
+        contours = f.GetOutput(1).GetCellData()
+        pixel = f.GetOutput(0).GetFieldData().GetArray("PixelSize").GetValue(0)
+        loops = [contours.GetArray("Length").GetValue(c) / pixel for c in range(f.GetOutput(1).GetNumberOfCells())
+                 if contours.GetArray("Closed").GetValue(c)]
+        group = f.GetOutput(0).GetPointData().GetArray("GroupId")
+        groups = [group.GetValue(i) for i in range(len(points))]
+        if not roads:
+            assert_that(len(loops) == 1 and loops[0] > 2 * math.pi * 5 and set(groups) == {0},
+                        f"the circle: loops of {loops} pixels, groups {set(groups)}")
+            continue
+        assert_that(not loops, f"the roads: closed contours of {loops} pixels")
+        assert_that(len(set(groups)) == 3 and adjusted_rand_index(groups, truth) > 0.8,
+                    f"the roads: groups {sorted(set(groups))}, adjusted Rand index {adjusted_rand_index(groups, truth)}")
+        node = f.GetOutput(0).GetPointData().GetArray("Node")
+        for k in range(3):
+            ids = [i for i in range(len(points)) if truth[i] == k and groups[i] == groups[300 * k + 150]]
+            tau = kendall_tau([node.GetValue(i) for i in ids], [along[i] for i in ids])
+            assert_that(abs(tau) > 0.9, f"road {k}: Node against the true parameter, Kendall tau {tau}")
+
+
 def test_bad_and_degenerate_input():
     f = vtkRidgeGrouping()
     warnings = messages_of(f, vtkCommand.WarningEvent)
@@ -334,7 +377,8 @@ def test_a_basis_or_join_rule_that_is_no_choice_is_named():
 
 
 if __name__ == "__main__":
-    run([test_two_noisy_curves_are_grouped_ordered_and_fitted, test_bad_and_degenerate_input,
+    run([test_two_noisy_curves_are_grouped_ordered_and_fitted, test_no_loop_smaller_than_the_basis_makes_a_closed_group,
+         test_bad_and_degenerate_input,
          test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept,
          test_the_field_image_is_advertised_before_it_is_made,
          test_the_image_is_advertised_from_the_whole_input_when_its_source_gave_a_piece,
