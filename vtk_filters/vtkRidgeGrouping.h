@@ -124,7 +124,8 @@ public:
   ///@{
   /**
    * Smoothness of the fitted rational Gaussian curves, in node units (default 0.04; the paper
-   * uses 0.01 to 0.08). Not positive, or below 1e-150 (its square underflows): an error at the
+   * uses 0.01 to 0.08). A group's nodes run from 0 to 1, so the smoothing in data units grows
+   * with the curve's length: 0.04 rounds off long or closed curves, which 0.01-0.02 follows. Not positive, or below 1e-150 (its square underflows): an error at the
    * update.
    */
   vtkSetMacro(CurveSigma, double);

@@ -1367,23 +1367,24 @@ def test_progress_into_a_log_is_lines_of_its_own():
 
 def test_the_readme_python_runs():
     # The README's Python examples, as written, from the source directory: they print the
-    # tiles' total area (the window's), the clipped area (worked out by hand in a comment) and the
-    # number of months of the areal average.
+    # tiles' total area (the window's), the clipped area (worked out by hand in a comment), the
+    # number of months of the areal average and the number of curves the ridge grouping finds.
     with open(os.path.join(SOURCE_DIR, "README.md")) as f:
         text = f.read()
     section = text[text.index("## Use from Python"):text.index("## Use from ParaView")]
     blocks = re.findall(r"```python\n(.*?)```", section, re.S)
-    assert_that(len(blocks) == 2, f"the README's Python blocks: {len(blocks)}")
+    assert_that(len(blocks) == 3, f"the README's Python blocks: {len(blocks)}")
     printed = []
     for block in blocks:
         done = subprocess.run([sys.executable, "-c", block], cwd=SOURCE_DIR, capture_output=True, text=True, timeout=300)
         assert_that(done.returncode == 0, f"the README's block failed: {done.stderr}")
         printed += done.stdout.split()
-    assert_that(len(printed) == 3, f"printed: {printed}")
+    assert_that(len(printed) == 4, f"printed: {printed}")
     assert_close(float(printed[0]), 0.875, 1e-12, "the tiles' areas")
     assert_close(float(printed[1]), 0.555, 1e-12, "the clipped areas")
     months = {(r["year"], r["month"]) for r in read_csv(os.path.join(EXAMPLE_DATA, "colorado_monthly_precip.csv"))}
     assert_that(printed[2] == str(len(months)), f"the months: {printed[2]}, {len(months)} in the file")
+    assert_that(printed[3] == "2", f"the ridge grouping's curves: {printed[3]}, expected the line and the parabola")
 
 
 def test_every_script_takes_help():
