@@ -211,7 +211,12 @@ void MeasureContourDistances(const std::vector<Point2>& pixelPoints,
     const double pixels =
       std::hypot(pixelPoints[k].x - pixel % grid.Width, pixelPoints[k].y - pixel / grid.Width);
     result.ContourDistance[k] = pixels * grid.Spacing;
-    if (pixels > RidgeGrouping::FarContourWidths * width)
+    // A point past an open contour's end that continues it (its node extended along the end
+    // tangent: each such point within two widths of the one before) lies beyond the end pixel by
+    // design, and its curve goes there: not named. Along dense lines the contours stop some
+    // 10-20 widths short of the points' ends, and 1910 of 100,000 points on three roads were
+    // named, every one of them past an end.
+    if (pixels > RidgeGrouping::FarContourWidths * width && !partition.Extended[k])
     {
       far.push_back(k);
     }

@@ -84,7 +84,8 @@ struct RidgeGroupingResult
   /// Distance (input units) from the point to the contour pixel it is grouped by; NaN where there
   /// is none (unassigned, or every point identical: one group without a contour). A point joins the
   /// nearest contour however far it is: those beyond FarContourWidths basis widths are also named
-  /// in a warning.
+  /// in a warning, except points past an open contour's end that continue it (their nodes
+  /// extended: PointPartition), whose distance is to the end pixel.
   std::vector<double> ContourDistance;
 
   // Output 1: ridge contours, pixel centres in input coordinates; ContourId = line index =

@@ -34,7 +34,8 @@
  *   `GroupId` (int; the contour of the point, -1 = unassigned), `Node` (double in [0, 1]) and
  *   `ContourDistance` (double; from the point to the contour pixel it is grouped by, in the
  *   points' units, NaN when unassigned or when there is no contour: points beyond 10 basis
- *   widths are named in a warning);
+ *   widths are named in a warning, except points past an open contour's end that continue it,
+ *   each within two widths of the one before, whose distance is to the end pixel);
  *   an input array of one of those names is passed as NAME_input, with a warning.
  *   Field data `ImageSize` (pixels along the longer side, as used), `PixelSize`,
  *   `FieldErrorBound` (bound of |FFT field - direct sum| at any pixel).
@@ -49,11 +50,12 @@
  *   poly data): use GetOutputDataObject(3).
  *
  * Fewer than 2 points give a warning, output 0 holding them unassigned (GroupId -1) and the
- * other outputs empty; identical points give one group (GroupId 0, Node 0, ContourDistance NaN)
- * with no contour and no curve, and a warning. ImageSize 0 (default)
- * chooses the size as the paper says (most points in pixels of their own, copies of a point
- * counting once); sizes above 2048 are refused before anything is allocated (the FFT would need
- * more than 512 MiB). NaN or infinite coordinates are an error naming the point.
+ * other outputs empty; a few points (2 or 3, or a few distinct places) make no ridge contour of
+ * MinimumContourLength: a warning, and every point unassigned; identical points give one group
+ * (GroupId 0, Node 0, ContourDistance NaN) with no contour and no curve, and a warning. ImageSize 0
+ * (default) chooses the size as the paper says (most points in pixels of their own, copies of a
+ * point counting once); sizes above 2048 are refused before anything is allocated (the FFT would
+ * need more than 512 MiB). NaN or infinite coordinates are an error naming the point.
  */
 
 #ifndef vtkRidgeGrouping_h
@@ -125,8 +127,8 @@ public:
   /**
    * Smoothness of the fitted rational Gaussian curves, in node units (default 0.04; the paper
    * uses 0.01 to 0.08). A group's nodes run from 0 to 1, so the smoothing in data units grows
-   * with the curve's length: 0.04 rounds off long or closed curves, which 0.01-0.02 follows. Not positive, or below 1e-150 (its square underflows): an error at the
-   * update.
+   * with the curve's length: 0.04 rounds off long or closed curves, which 0.01-0.02 follows. Not
+   * positive, or below 1e-150 (its square underflows): an error at the update.
    */
   vtkSetMacro(CurveSigma, double);
   vtkGetMacro(CurveSigma, double);

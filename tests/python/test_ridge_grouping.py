@@ -142,6 +142,32 @@ def test_no_loop_smaller_than_the_basis_makes_a_closed_group():
             assert_that(abs(tau) > 0.9, f"road {k}: Node against the true parameter, Kendall tau {tau}")
 
 
+def test_points_past_a_contour_end_are_not_named_as_far():
+    # 100,000 points on three noisy sine roads: the contours stop short of the roads' ends, and the
+    # points past them continue the curves (their nodes extended), some more than 10 basis widths
+    # from the end pixel. Such points were named as far from their contour (1910 of them); now
+    # only a true outlier is, here one between two roads.
+    rng = np.random.default_rng(1)
+    xy = []
+    for k in range(3):
+        t = np.sort(rng.random(33333))
+        road = np.column_stack([1000 * t, 250 * k + 40 * np.sin(2 * np.pi * 1.5 * t + k)])
+        xy.append(road + rng.normal(scale=8.0, size=road.shape))
+    xy = np.vstack(xy + [np.array([[500.0, 125.0 + 40 * np.sin(2 * np.pi * 0.75 + 0.5)]])])
+    f = vtkRidgeGrouping()
+    warnings = warnings_of_update(f, make_points([tuple(p) for p in xy]))
+    distance = f.GetOutput(0).GetPointData().GetArray("ContourDistance")
+    width = 5.0 * f.GetOutput(0).GetFieldData().GetArray("PixelSize").GetValue(0)
+    far = [i for i in range(len(xy)) if distance.GetValue(i) > 10 * width]
+    outlier = len(xy) - 1
+    assert_that(outlier in far and len(far) > 100, f"{len(far)} points beyond 10 widths: the test checks nothing")
+    assert_that(all(xy[i][0] < 100 or xy[i][0] > 900 for i in far if i != outlier),
+                f"points beyond 10 widths away from the roads' ends: {[tuple(xy[i]) for i in far][:5]}")
+    named = [w for w in warnings if "from the contour they are grouped by" in w]
+    assert_that(len(named) == 1 and f"1 point(s) lie more than 10 basis widths" in named[0]
+                and f"point(s) {outlier} (" in named[0], f"the far points named: {named}")
+
+
 def test_bad_and_degenerate_input():
     f = vtkRidgeGrouping()
     warnings = messages_of(f, vtkCommand.WarningEvent)
@@ -378,6 +404,7 @@ def test_a_basis_or_join_rule_that_is_no_choice_is_named():
 
 if __name__ == "__main__":
     run([test_two_noisy_curves_are_grouped_ordered_and_fitted, test_no_loop_smaller_than_the_basis_makes_a_closed_group,
+         test_points_past_a_contour_end_are_not_named_as_far,
          test_bad_and_degenerate_input,
          test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept,
          test_the_field_image_is_advertised_before_it_is_made,
