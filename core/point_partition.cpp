@@ -97,7 +97,8 @@ double DistanceBeyondEnd(const Point2& p,
 //   ======E   . . .. . .  ----------------------->    x      (x gets the node of the last dot)
 void KeepContinuationsOnly(std::vector<double>& beyond,
   const std::vector<int>& projection,
-  double maximumGap)
+  double maximumGap,
+  std::vector<std::uint8_t>& continues)
 {
   std::vector<std::size_t> past; // the points past an end, by end pixel, then distance
   for (std::size_t k = 0; k < beyond.size(); ++k)
@@ -130,6 +131,7 @@ void KeepContinuationsOnly(std::vector<double>& beyond,
     else
     {
       last = beyond[k];
+      continues[k] = 1;
     }
   }
 }
@@ -184,6 +186,7 @@ PointPartition PartitionPoints(const std::vector<Point2>& pixelPoints,
   }
   const std::vector<int> nearest = NearestFeatureTransform(isContour, width, height);
   result.Extended.assign(pixelPoints.size(), 0);
+  result.Continues.assign(pixelPoints.size(), 0);
   std::vector<double> beyond(pixelPoints.size(), 0.0);
   for (std::size_t k = 0; k < pixelPoints.size(); ++k)
   {
@@ -194,7 +197,8 @@ PointPartition PartitionPoints(const std::vector<Point2>& pixelPoints,
     result.Projection[k] = position;
     beyond[k] = DistanceBeyondEnd(pixelPoints[k], contours, contour, position, width);
   }
-  KeepContinuationsOnly(beyond, result.Projection, maximumGap);
+  KeepContinuationsOnly(beyond, result.Projection, maximumGap, result.Continues);
+  result.Beyond = beyond;
   std::vector<double> extendedArc(pixelPoints.size(), 0.0);
   std::vector<double> lowest(contours.Count(), 0.0);
   std::vector<double> highest(contours.Lengths.begin(), contours.Lengths.end());

@@ -39,6 +39,11 @@ struct PointPartition
   /// Whether the node of the point was extended past an end pixel (it then differs from the
   /// nodes of the other points with the same projection).
   std::vector<std::uint8_t> Extended;
+  /// Whether the point is past an open contour's end and continues it (Extended, and not an
+  /// outlier after a gap, which takes the node of the last continuation), and how far past the
+  /// end it lies along the end tangent (pixels; for an outlier, the last continuation's).
+  std::vector<std::uint8_t> Continues;
+  std::vector<double> Beyond;
   /// Per contour, the node of the arc length 0 (start pixel) and the node length of one pixel.
   std::vector<double> NodeOrigin;
   std::vector<double> NodePerPixel;

@@ -212,11 +212,14 @@ void MeasureContourDistances(const std::vector<Point2>& pixelPoints,
       std::hypot(pixelPoints[k].x - pixel % grid.Width, pixelPoints[k].y - pixel / grid.Width);
     result.ContourDistance[k] = pixels * grid.Spacing;
     // A point past an open contour's end that continues it (its node extended along the end
-    // tangent: each such point within two widths of the one before) lies beyond the end pixel by
-    // design, and its curve goes there: not named. Along dense lines the contours stop some
-    // 10-20 widths short of the points' ends, and 1910 of 100,000 points on three roads were
-    // named, every one of them past an end.
-    if (pixels > RidgeGrouping::FarContourWidths * width && !partition.Extended[k])
+    // tangent, each such point within two widths of the one before) lies beyond the end pixel by
+    // design, and its curve goes there: only its distance off the end tangent's line counts.
+    // Along dense lines the contours stop some 10-20 widths short of the points' ends, and 1910
+    // of 100,000 points on three roads were named, every one of them past an end.
+    const double off = partition.Continues[k]
+      ? std::sqrt(std::max(0.0, pixels * pixels - partition.Beyond[k] * partition.Beyond[k]))
+      : pixels;
+    if (off > RidgeGrouping::FarContourWidths * width)
     {
       far.push_back(k);
     }
@@ -447,7 +450,9 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
   result.MajorRidge = std::move(masks.Major);
   if (contours.Count() == 0)
   {
-    result.Warnings.push_back("no ridge contour reaches the minimum length: no point is grouped");
+    result.Warnings.push_back(
+      "no ridge contour reaches the minimum length (a closed one: the length of a "
+      "circle of one basis width): no point is grouped");
   }
 
   // Points past a contour end continue it while each is within two basis widths of the one

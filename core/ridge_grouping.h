@@ -84,8 +84,9 @@ struct RidgeGroupingResult
   /// Distance (input units) from the point to the contour pixel it is grouped by; NaN where there
   /// is none (unassigned, or every point identical: one group without a contour). A point joins the
   /// nearest contour however far it is: those beyond FarContourWidths basis widths are also named
-  /// in a warning, except points past an open contour's end that continue it (their nodes
-  /// extended: PointPartition), whose distance is to the end pixel.
+  /// in a warning; for a point past an open contour's end that continues it (PointPartition's
+  /// Continues) the distance is still to the end pixel, but only its distance off the end
+  /// tangent's line is held against that limit.
   std::vector<double> ContourDistance;
 
   // Output 1: ridge contours, pixel centres in input coordinates; ContourId = line index =

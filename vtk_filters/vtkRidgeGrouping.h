@@ -34,8 +34,9 @@
  *   `GroupId` (int; the contour of the point, -1 = unassigned), `Node` (double in [0, 1]) and
  *   `ContourDistance` (double; from the point to the contour pixel it is grouped by, in the
  *   points' units, NaN when unassigned or when there is no contour: points beyond 10 basis
- *   widths are named in a warning, except points past an open contour's end that continue it,
- *   each within two widths of the one before, whose distance is to the end pixel);
+ *   widths are named in a warning; for points past an open contour's end that continue it,
+ *   each within two widths of the one before, the distance is to the end pixel, and only their
+ *   distance off the line of the end's tangent counts for the warning);
  *   an input array of one of those names is passed as NAME_input, with a warning.
  *   Field data `ImageSize` (pixels along the longer side, as used), `PixelSize`,
  *   `FieldErrorBound` (bound of |FFT field - direct sum| at any pixel).
