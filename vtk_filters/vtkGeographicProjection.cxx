@@ -24,6 +24,7 @@
 
 #include <cmath>
 #include <map>
+#include <set>
 #include <memory>
 #include <string>
 #include <stdexcept>
@@ -61,14 +62,7 @@ struct DensifyReport
   /// Pieces whose global ids were not carried (new points have none), and the first's label.
   vtkIdType GlobalIdsDropped = 0;
   std::string FirstGlobalIds;
-  /// Points the pieces so far would add (an edge of two cells counted twice).
-  double Planned = 0.0;
 };
-
-/// The most points densifying may add over the whole input: MaximumEdgeLength given in metres
-/// rather than degrees, or a slip of its exponent, cut a state outline of 78 edges into 70 million
-/// points in 37 s, stalling ParaView; such a step is refused before any point is made.
-constexpr double MaxAddedPoints = 1e7;
 
 /// Cuts the line and polygon edges of lon/lat poly data so that no piece is longer than maxStep
 /// degrees. New points are appended after the input's, with point data interpolated; an edge
@@ -99,7 +93,6 @@ public:
 
   void Run()
   {
-    this->CheckAddedPoints();
     this->Output->SetVerts(this->Input->GetVerts());
     this->Output->SetStrips(this->Input->GetStrips());
     this->Output->SetLines(this->DensifyCells(this->Input->GetLines(), false));
@@ -126,39 +119,6 @@ public:
   }
 
 private:
-  /// Counts the points the lines and polygons would gain (into the report, over all pieces) and
-  /// refuses more than MaxAddedPoints: an error names the step and the count.
-  void CheckAddedPoints()
-  {
-    vtkNew<vtkIdList> ids;
-    for (const auto& [cells, closed] : { std::make_pair(this->Input->GetLines(), false),
-           std::make_pair(this->Input->GetPolys(), true) })
-    {
-      auto iter = vtk::TakeSmartPointer(cells ? cells->NewIterator() : nullptr);
-      for (iter ? iter->GoToFirstCell() : void(); iter && !iter->IsDoneWithTraversal();
-           iter->GoToNextCell())
-      {
-        iter->GetCurrentCell(ids);
-        const vtkIdType n = ids->GetNumberOfIds();
-        for (vtkIdType k = 0; k < (closed ? n : n - 1); ++k)
-        {
-          double pa[3], pb[3];
-          this->Input->GetPoint(ids->GetId(k), pa);
-          this->Input->GetPoint(ids->GetId((k + 1) % n), pb);
-          this->Report.Planned +=
-            tessera::DensifiedPieceCount({ pa[0], pa[1] }, { pb[0], pb[1] }, this->MaxStep) - 1;
-        }
-      }
-    }
-    if (this->Report.Planned > MaxAddedPoints)
-    {
-      throw tessera::InputError("MaximumEdgeLength " + tessera::NumberText(this->MaxStep) +
-        " degrees would cut the edges into " + tessera::NumberText(this->Report.Planned) +
-        " new points, more than " + tessera::NumberText(MaxAddedPoints) +
-        " (it is in degrees of longitude and latitude: the default, 0.1, is some 11 km)");
-    }
-  }
-
   vtkSmartPointer<vtkCellArray> DensifyCells(vtkCellArray* cells, bool closed)
   {
     auto result = vtkSmartPointer<vtkCellArray>::New();
@@ -297,7 +257,7 @@ tessera::ProjectionParameters ChooseForwardParameters(vtkGeographicProjection* s
     p.UTMZone = tessera::UTMZoneOfLongitude(self->GetCentralLongitude());
     p.UTMNorth = self->GetCentralLatitude() >= 0.0;
   }
-  if (self->GetUTMZone() >= 1 && self->GetUTMZone() <= 60)
+  if (self->GetProjection() == vtkGeographicProjection::UTM && self->GetUTMZone() != 0)
   {
     p.UTMZone = self->GetUTMZone();
     p.UTMNorth = self->GetUTMNorth();
@@ -313,6 +273,54 @@ struct Piece
   vtkPointSet* Output;
   std::string Label;
 };
+
+/// The most points densifying may add over the whole input: MaximumEdgeLength given in metres
+/// rather than degrees, or a slip of its exponent, cut a state outline of 78 edges into 70 million
+/// points in 37 s, stalling ParaView; such a step is refused before any point is made.
+constexpr double MaxAddedPoints = 1e7;
+
+/// Refuses a step that would add more than MaxAddedPoints points over all the pieces' lines and
+/// polygons, counted before any is made (each edge once, as EdgeDensifier cuts it).
+void CheckAddedPoints(const std::vector<Piece>& pieces, double step)
+{
+  double added = 0.0;
+  vtkNew<vtkIdList> ids;
+  for (const Piece& piece : pieces)
+  {
+    auto* poly = vtkPolyData::SafeDownCast(piece.Input);
+    std::set<std::pair<vtkIdType, vtkIdType>> edges;
+    for (const auto& [cells, closed] : { std::make_pair(poly ? poly->GetLines() : nullptr, false),
+           std::make_pair(poly ? poly->GetPolys() : nullptr, true) })
+    {
+      auto iter = vtk::TakeSmartPointer(cells ? cells->NewIterator() : nullptr);
+      for (iter ? iter->GoToFirstCell() : void(); iter && !iter->IsDoneWithTraversal();
+           iter->GoToNextCell())
+      {
+        iter->GetCurrentCell(ids);
+        const vtkIdType n = ids->GetNumberOfIds();
+        for (vtkIdType k = 0; k < (closed ? n : n - 1); ++k)
+        {
+          const vtkIdType a = ids->GetId(k), b = ids->GetId((k + 1) % n);
+          if (!edges.insert(std::minmax(a, b)).second)
+          {
+            continue;
+          }
+          double pa[3], pb[3];
+          poly->GetPoint(a, pa);
+          poly->GetPoint(b, pb);
+          added += tessera::DensifiedPieceCount({ pa[0], pa[1] }, { pb[0], pb[1] }, step) - 1;
+        }
+      }
+    }
+  }
+  if (added > MaxAddedPoints)
+  {
+    throw tessera::InputError("MaximumEdgeLength " + tessera::NumberText(step) +
+      " degrees would cut the edges into " + tessera::NumberText(added) +
+      " new points, more than " + tessera::NumberText(MaxAddedPoints) +
+      " (it is in degrees of longitude and latitude: the default, 0.1, is some 11 km)");
+  }
+}
 
 /// Runs work; an InputError from it gets the piece's label in front.
 template<typename Work>
@@ -615,6 +623,10 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
       const tessera::ProjectionParameters parameters = ChooseParameters(this, input, pieces);
       projection.reset(new tessera::GeographicProjection(parameters));
       record = this->Inverse ? std::string() : parameters.ToString();
+    }
+    if (!this->Inverse && this->MaximumEdgeLength > 0.0)
+    {
+      CheckAddedPoints(pieces, this->MaximumEdgeLength);
     }
     DensifyReport report;
     for (const Piece& piece : pieces)

@@ -99,8 +99,8 @@ public:
 
   ///@{
   /**
-   * UTM zone 1..60; 0 (default) takes the zone of the data's central longitude. Another value is
-   * an error at the update.
+   * UTM zone 1..60; 0 (default) takes the zone of the data's central longitude. With the UTM
+   * projection another value is an error at the update; the other projections do not read it.
    */
   vtkSetMacro(UTMZone, int);
   // The range VTK's clamping setter announced (kept: a value outside is an error at the update).

@@ -185,7 +185,9 @@ def test_an_edge_cut_into_the_most_pieces_is_reported():
             assert_that(not warnings, f"step {step}: {warnings}")
     # More than 10^7 new points in all (a step in metres rather than degrees) is refused before
     # any is made: 12 edges of a degree or more at 1e-7 would add 12 (10^6 - 1) (each capped);
-    # two blocks of 6 such edges add up; 11 edges, 10999989 points, too. A step of 1e-5 is made.
+    # two blocks of 6 such edges add up (counted over both before either is cut: the message names
+    # no block); 11 edges, 10999989 points, too; four squares in a row have 13 edges, the 3 they
+    # share cut once (16 counted by cell). A step of 1e-5 is made.
     def ring(edges, lat=39.0):
         data = make_points([(-105.0 + k, lat) for k in range(edges // 2 + 1)]
                            + [(-105.0 + k, lat + 1.0) for k in reversed(range(edges - edges // 2 - 1))])
@@ -198,9 +200,17 @@ def test_an_edge_cut_into_the_most_pieces_is_reported():
     blocks = vtkMultiBlockDataSet()
     blocks.SetBlock(0, ring(6))
     blocks.SetBlock(1, ring(6, 41.0))
+    squares = make_points([(-105.0 + k, 39.0 + j) for j in (0, 1) for k in range(5)])
+    cells = vtkCellArray()
+    for k in range(4):
+        cells.InsertNextCell(4)
+        for i in (k, k + 1, k + 6, k + 5):
+            cells.InsertCellPoint(i)
+    squares.SetPolys(cells)
     for data, step, refused in ((ring(12), 1e-7, "would cut the edges into 11999988 new points, more than 10000000"),
                                 (blocks, 1e-7, "would cut the edges into 11999988 new points"),
                                 (ring(11), 1e-7, "would cut the edges into 10999989 new points"),
+                                (squares, 1e-7, "would cut the edges into 12999987 new points"),
                                 (ring(12), 1e-5, None)):
         f = vtkGeographicProjection()
         errors = messages_of(f)
@@ -211,7 +221,8 @@ def test_an_edge_cut_into_the_most_pieces_is_reported():
         points = output.GetNumberOfPoints()
         if refused:
             assert_that(len(errors) == 1 and f"MaximumEdgeLength {step:g} degrees {refused}" in errors[0]
-                        and "it is in degrees" in errors[0] and points == 0, f"{errors}, {points} points")
+                        and "it is in degrees" in errors[0] and "block" not in errors[0] and points == 0,
+                        f"{errors}, {points} points")
         else:
             assert_that(not errors and points > 12 * 10 ** 5, f"{errors}, {points} points")
 
@@ -345,11 +356,12 @@ def test_a_projection_or_zone_that_is_no_choice_is_named():
         f.Update()
         assert_that(len(errors) == 1 and expected in errors[0] and f.GetOutput().GetNumberOfPoints() == 0, f"{errors}")
     # The zone is a UTM setting: a zone left from a UTM choice (a script, a state file) does not
-    # stop another projection, which gives what it gives with zone 0.
+    # stop another projection, nor enter its record (zone 12 did, where the data's is 13): it gives
+    # what it gives with zone 0.
     points = make_points([(-105.0, 39.0), (-104.0, 40.0)])
     for projection in (g.AUTOMATIC, g.TRANSVERSE_MERCATOR):
         outputs = []
-        for zone in (61, 0):
+        for zone in (61, 12, 0):
             f = vtkGeographicProjection()
             errors = messages_of(f)
             f.SetProjection(projection)
@@ -357,8 +369,10 @@ def test_a_projection_or_zone_that_is_no_choice_is_named():
             f.SetInputData(points)
             f.Update()
             assert_that(not errors and f.GetOutput().GetNumberOfPoints() == 2, f"projection {projection}: {errors}")
-            outputs.append([f.GetOutput().GetPoint(i) for i in range(2)])
-        assert_that(outputs[0] == outputs[1], f"projection {projection}: zone 61 moved the points: {outputs}")
+            record = f.GetOutput().GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
+            outputs.append(([f.GetOutput().GetPoint(i) for i in range(2)], record))
+        assert_that(outputs[0] == outputs[1] == outputs[2] and "zone=13" in outputs[0][1],
+                    f"projection {projection}: zones 61 and 12 changed the points or the record: {outputs}")
 
 
 if __name__ == "__main__":
