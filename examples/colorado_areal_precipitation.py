@@ -109,12 +109,19 @@ class Steps:
         self.of_time[t] = step
         return t
 
+    @staticmethod
+    def digits(step):
+        """The step's numbers as written: a year of four digits, the rest of two."""
+        return [f"{v:0{4 if k == 0 else 2}d}" for k, v in enumerate(step)]
+
     def text(self, step):
-        day = "-".join(f"{v:0{4 if k == 0 else 2}d}" for k, v in enumerate(step[:3]))
-        return day + (f" {step[3]:02d}:00" if self.fields > 3 else "")
+        """2001-03, 2001-03-01 or 2001-03-01 06:00."""
+        numbers = Steps.digits(step)
+        return "-".join(numbers[:3]) + "".join(f" {hour}:00" for hour in numbers[3:])
 
     def tag(self, step):
-        return "_".join(f"{v:0{4 if k == 0 else 2}d}" for k, v in enumerate(step))
+        """2001_03, 2001_03_01 or 2001_03_01_06, for file names."""
+        return "_".join(Steps.digits(step))
 
     def between(self, first, last):
         """Every step from first to last, both included."""
@@ -124,6 +131,10 @@ class Steps:
         length = datetime.timedelta(days=1) if self.fields == 3 else datetime.timedelta(hours=1)
         every = (start + k * length for k in range((end - start) // length + 1))
         return [(d.year, d.month, d.day, d.hour)[:self.fields] for d in every]
+
+
+def is_calendar_day(year, month, day):
+    return year >= 1 and 1 <= month <= 12 and 1 <= day <= calendar.monthrange(year, month)[1]
 
 
 def station_key(station_id):
@@ -175,16 +186,18 @@ def observation_step(row, path, line):
     the hour 0 to 24) of an observations record: from its year, month, day and hour columns (day
     and hour where the steps are days or hours), or from its date column (YYYY-MM for a month,
     YYYY-MM-DD for a day, with a time on the hour, HH:00, for an hour). read_observations makes
-    the file's steps of them (step_reader). Ends the script naming file, line and column for a
+    the file's steps of them (file_steps). Ends the script naming file, line and column for a
     value that is no such date."""
     if "date" in row and ("year" in row or "month" in row or "day" in row or "hour" in row):
         csv_input.fail(f"{path}: the observations file has both a date column and year/month/day/hour columns "
                        "(keep one)")
     if "time" in row and ("date" in row or "day" in row):
         # (ignored, it made hours of one day the repeats of its first hour)
-        csv_input.fail(f"{path}: the observations file has a time column beside its {'date' if 'date' in row else 'day'} "
-                       "column: give hours as dates with their time in one column (YYYY-MM-DD HH:00) or in an "
-                       "hour column (0-23); if it is the time each day was read, leave it out")
+        beside = "hour" if "hour" in row else "date" if "date" in row else "day"
+        csv_input.fail(f"{path}: the observations file has a time column beside its {beside} column: " +
+                       ("leave one of them out" if beside == "hour" else
+                        "give hours as dates with their time in one column (YYYY-MM-DD HH:00) or in an hour column "
+                        "(0-23); if it is the time each day was read, leave it out"))
     clock = None
     if "date" in row:
         text = csv_input.text(row, "date", path, line)
@@ -193,8 +206,9 @@ def observation_step(row, path, line):
         where = f"{path}:{line}: column 'date': {text!r}"
         clock = TIME_OF_DAY.fullmatch(text, date.end()) if date and date.group(3) else None
         if not date or (date.end() < len(text) and not clock):
-            zone = re.search(r"(Z|[+-][0-9]{2}(:?[0-9]{2})?)$", text) if date and date.group(3) else None
-            csv_input.fail(f"{where} " + (f"has a time zone ({zone.group(1)}), which is not read: give the times "
+            timed = TIME_OF_DAY.match(text, date.end()) if date and date.group(3) else None
+            zone = re.fullmatch(r"Z|[+-][0-9]{2}(:?[0-9]{2})?", text[timed.end():]) if timed else None
+            csv_input.fail(f"{where} " + (f"has a time zone ({zone.group(0)}), which is not read: give the times "
                                           "without it, all in one zone" if zone else
                                           "is not a date (YYYY-MM-DD, YYYY-MM-DD HH:00 for an hour, or YYYY-MM "
                                           "for a month)"))
@@ -215,8 +229,7 @@ def observation_step(row, path, line):
         csv_input.fail(f"{path}: the observations file has no columns year and month, nor a date column "
                        f"(it needs station_id, year, month, precip, with day for daily values and hour for "
                        f"hourly ones, or station_id, date, precip; its header: {columns})")
-    if not (1 <= step[0] and 1 <= step[1] <= 12) or (
-            len(step) == 3 and not 1 <= step[2] <= calendar.monthrange(step[0], step[1])[1]):
+    if not (1 <= step[0] and 1 <= step[1] <= 12) or (len(step) == 3 and not is_calendar_day(*step)):
         csv_input.fail(f"{where} is not a date of the calendar" if "date" in row else f"{where} is not a day of "
                        f"{step[0]}-{step[1]:02d}")
     if clock:
@@ -292,7 +305,7 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     unrecorded = 0
     coded = 0  # values given with --missing-value
     negative = []  # the lines of negative values
-    months = set()  # the step of every row
+    steps_read = set()  # the step of every row, as observation_step read it
     present = set()  # the step of every row of a gauge's station
     lines = []  # the file's line of each row read
     names = {}  # every row's station id, as written, once each in the file's order
@@ -303,9 +316,9 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
                                     ("year", "month", "day", "hour", "date", "time")):
         lines.append(line)
         station = csv_input.text(row, "station_id", path, line)
-        year_and_month = observation_step(row, path, line)
-        kind = STEP_KINDS[len(year_and_month)]
-        if kind == "time" and year_and_month[3] % 24:
+        step = observation_step(row, path, line)
+        kind = STEP_KINDS[len(step)]
+        if kind == "time" and step[3] % 24:
             kind = "hour"  # (a time at midnight may be a day's or an hour's)
         first.setdefault(kind, line)
         clash = next((k for k in first if steps_clash(k, kind)), None)
@@ -314,13 +327,13 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
                            f"line {first[clash]} gives {STEP_NAMES[clash]} (the steps are all months, all days or "
                            "all hours)")
         hour_column = "hour" in row
-        at_24 += kind == "time" and year_and_month[3] == 24
-        read.append(year_and_month)
-        months.add(year_and_month)
+        at_24 += kind == "time" and step[3] == 24
+        read.append(step)
+        steps_read.add(step)
         names.setdefault(station.strip(" \t\""))
         gauge = gauge_of.get(station_key(station))
         if gauge is not None:
-            present.add(year_and_month)
+            present.add(step)
         # A missing value stays in the table as NaN: the gauge does not report that month (the
         # filter drops it for that step), and the month remains a step even if no gauge reports.
         value = math.nan
@@ -333,11 +346,11 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
             if value < 0:
                 negative.append(line)
             if gauge is not None:
-                reporting.setdefault(year_and_month, set()).add(gauge)
+                reporting.setdefault(step, set()).add(gauge)
         stations.InsertNextValue(station)
         values.InsertNextValue(value)
-    steps, step_of = file_steps(months, first, hour_column, at_24, path)
-    months, present = {step_of[m] for m in months}, {step_of[m] for m in present}
+    steps, step_of = file_steps(steps_read, first, hour_column, at_24, path)
+    every_step, present = {step_of[m] for m in steps_read}, {step_of[m] for m in present}
     merged = {}
     for m, gauges in reporting.items():
         merged.setdefault(step_of[m], set()).update(gauges)
@@ -365,22 +378,22 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
         print(f"{path}: {len(negative)} observation(s) have a negative precipitation, used as given "
               f"(write a missing value as NA, or give --missing-value, if that is what they mean): line(s) {shown}{more}",
               file=sys.stderr)
-    if steps.unit == "day" and len({day[:2] for day in months}) > 1:
+    if steps.unit == "day" and len({day[:2] for day in every_step}) > 1:
         # Monthly values stamped with a day (2001-01-01, 2001-02-01; or month ends) would be read
         # as days with some 29 days without a report between them: said, since the means of
         # those days are then the months'.
-        last = all(d == calendar.monthrange(y, m)[1] for y, m, d in months)
-        same = len({d for _, _, d in months}) == 1
+        last = all(d == calendar.monthrange(y, m)[1] for y, m, d in every_step)
+        same = len({d for _, _, d in every_step}) == 1
         if last or same:
-            which = "the last day of its month" if last else f"day {next(iter(months))[2]} of its month"
+            which = "the last day of its month" if last else f"day {next(iter(every_step))[2]} of its month"
             print(f"{path}: every date is {which}; if these are monthly values, give the dates as YYYY-MM "
                   "(or year and month columns): they are read as days", file=sys.stderr)
     # A step between the first and the last without a row of any gauge's station is a step where
     # no gauge reported: a row with a missing value (for a gauge's station: the filter makes no
     # step of a row naming a station no gauge has) keeps it a step of its own, so that
     # areal_mean.csv has every month (or day, or hour), empty where nothing was measured.
-    if months and gauge_of:
-        first, last = min(months), max(months)
+    if every_step and gauge_of:
+        first, last = min(every_step), max(every_step)
         gaps = [step for step in steps.between(first, last) if step not in present]
         for step in gaps:  # (a gauge's id: the step is a step of the filter)
             stations.InsertNextValue(filler)
@@ -1048,16 +1061,15 @@ def plot_series(rows, path):
 
 
 def chosen_hour(text):
-    """--hour's (year, month, day, hour), from YYYY-MM-DD HH:00, YYYY-MM-DDTHH:00 or YYYY-MM-DDTHH
-    (24:00 is hour 0 of the next day, as in the observations); ends the script naming the value
+    """--hour's (year, month, day, hour), written as the observations write an hour (YYYY-MM-DD
+    HH:00, or with a T; 24:00 is hour 0 of the next day); ends the script naming the value
     otherwise."""
     date = DATE.match(text.strip())
-    rest = text.strip()[date.end():] if date and date.group(3) else None
-    clock = re.fullmatch(r"[T ]([0-9]{1,2})(?::00(?::00)?)?", rest) if rest is not None else None
-    if not clock:
+    clock = TIME_OF_DAY.fullmatch(text.strip(), date.end()) if date and date.group(3) else None
+    if not clock or any(int(v or 0) for v in clock.groups()[1:]):
         sys.exit(f"--hour {text!r}: expected a date and hour, YYYY-MM-DD HH:00")
     step = tuple(int(v) for v in (*date.groups(), clock.group(1)))
-    if step[0] < 1 or not 1 <= step[1] <= 12 or not 1 <= step[2] <= calendar.monthrange(*step[:2])[1] or step[3] > 24:
+    if not is_calendar_day(*step[:3]) or step[3] > 24:
         sys.exit(f"--hour {text!r}: is not an hour of the calendar")
     return hour_step(step)
 
@@ -1069,9 +1081,11 @@ def main(argv=None):
                                         "or the nearest month of the record; with daily or hourly observations its "
                                         "first day or hour)")
     parser.add_argument("--day", help="day for the weights, tiles and map when the observations give days, "
-                                      "YYYY-MM-DD (with hourly observations its first hour; not with --month)")
+                                      "YYYY-MM-DD (with hourly observations its 00:00 hour, which for hour-ending "
+                                      "data is the day before's last; not with --month)")
     parser.add_argument("--hour", help="hour for the weights, tiles and map when the observations give hours, "
-                                       "'YYYY-MM-DD HH:00' or YYYY-MM-DDTHH (not with --month or --day)")
+                                       "'YYYY-MM-DD HH:00' (or with a T: YYYY-MM-DDTHH:00; 24:00 is the next "
+                                       "day's 00:00; not with --month or --day)")
     parser.add_argument("--stations", default=os.path.join(DATA, "colorado_stations.csv"),
                         help="CSV of gauges: columns station_id, lon, lat (degrees, WGS84), "
                              f"optional name; {csv_input.SEPARATORS_TEXT}")
@@ -1117,7 +1131,7 @@ def main(argv=None):
         asked = tuple(int(v) for v in chosen.groups()) if chosen and chosen.group(3) else None
         if not asked:
             sys.exit(f"--day {args.day!r}: expected a date YYYY-MM-DD")
-        if asked[0] < 1 or not 1 <= asked[1] <= 12 or not 1 <= asked[2] <= calendar.monthrange(*asked[:2])[1]:
+        if not is_calendar_day(*asked):
             sys.exit(f"--day {args.day!r}: is not a date of the calendar")
     if args.hour is not None:
         asked = chosen_hour(args.hour)

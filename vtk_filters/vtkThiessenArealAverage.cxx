@@ -424,6 +424,12 @@ std::string UnknownStationName(vtkAbstractArray* stations, const tessera::Unknow
     std::to_string(station.FirstRow) + ")";
 }
 
+/// The cause an error names first when the gauges have no points (an upstream filter that failed,
+/// such as Table To Points without its Z column, or kept none): the array or the stations the
+/// error is about are missing because of it.
+const char* const NoGaugePoints =
+  "the gauges input has no points (does the filter before it give none?)";
+
 /// The error for a table none of whose rows can be used: how many lack a station or time, and which
 /// station ids no gauge has (all of them, where the gauges input has no points: said first).
 std::string NoUsableRowMessage(const ObservationRows& rows,
@@ -434,7 +440,7 @@ std::string NoUsableRowMessage(const ObservationRows& rows,
   std::ostringstream message;
   if (gaugeCount == 0)
   {
-    message << "the gauges input has no points (does the filter before it give none?), so ";
+    message << NoGaugePoints << ", so ";
   }
   message << "none of the " << rows.Steps.StepOfRow.size()
           << " observation rows can be used (no time step to average): "
@@ -1081,12 +1087,9 @@ vtkAbstractArray* vtkThiessenArealAverage::GaugeStationIds(vtkPointSet* gauges, 
     gauges->GetPointData()->GetAbstractArray(this->StationIdArrayName.c_str());
   if (!ids && required)
   {
-    // (an upstream filter that failed, such as Table To Points without its Z column, gives an
-    // empty data set: that, not the array, is the cause)
-    throw tessera::InputError(std::string(gauges->GetNumberOfPoints() == 0
-                                  ? "the gauges input has no points (does the filter before it "
-                                    "give none?) and "
-                                  : "the gauges have ") +
+    throw tessera::InputError(
+      (gauges->GetNumberOfPoints() == 0 ? std::string(NoGaugePoints) + " and "
+                                        : std::string("the gauges have ")) +
       "no point-data array '" + this->StationIdArrayName +
       "' of station ids to match the observations with");
   }

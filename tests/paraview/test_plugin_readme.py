@@ -20,8 +20,12 @@ if plugin not in block:
 os.chdir(source)
 names = {}
 printed = io.StringIO()
+# (the block's literal path to the plugin becomes the build tree's: that it was found is checked)
+runnable = block.replace(f'"{plugin}"', repr(os.environ["TESSERA_PLUGIN"]))
+if runnable == block:
+    failures.append(f'the README\'s block does not load "{plugin}" as a literal')
 with contextlib.redirect_stdout(printed):
-    exec(block.replace(repr(plugin).replace("'", '"'), repr(os.environ["TESSERA_PLUGIN"])), names)
+    exec(runnable, names)
 if printed.getvalue().split() != ["1236"]:
     failures.append(f"printed {printed.getvalue()!r}, expected the 1236 months")
 means, tiles = names["means"], names["tiles"]

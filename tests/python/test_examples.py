@@ -880,7 +880,7 @@ def test_hourly_observations_give_hourly_means():
                          1e-12, f"{hour}: weights times values")
             assert_close(float(d["areal_mean"]), float(r["areal_mean"]), 1e-12, f"{hour} against its day")
         # --day with hours chooses the day's first hour; --hour 24:00 is the next day's hour 0.
-        for option in ({"day": "2001-03-01"}, {"hour": "2001-02-28 24:00"}):
+        for option in ({"day": "2001-03-01"}, {"hour": "2001-02-28 24:00"}, {"hour": "2001-03-01T00:00:00"}):
             stdout, stderr = run_colorado(os.path.join(directory, "a_day"), stations=stations, observations=files[0],
                                           catchment=catchment, plots=False, what=f"{option} of hours", **option)
             assert_that("2001-03-01 00:00: areal mean" in stdout and "note:" not in stderr, f"{option}: {stdout}")
@@ -918,6 +918,11 @@ def test_hourly_observations_give_hourly_means():
             ("station_id,year,month,day,Time,precip\nN1,2001,3,1,06:00,1\n", {}, "a time column beside its day column"),
             ("station_id,date,precip\nN1,2001-03-01T06:00Z,1\n", {}, "'2001-03-01T06:00Z' has a time zone (Z), which"),
             ("station_id,date,precip\nN1,2001-03-01 06:00+01:00,1\n", {}, "has a time zone (+01:00), which is not read"),
+            # (a day with a fourth number is no date with a zone)
+            ("station_id,date,precip\nN1,2001-03-01-05,1\n", {}, "'2001-03-01-05' is not a date (YYYY-MM-DD"),
+            ("station_id,year,month,day,hour,time,precip\nN1,2001,3,1,6,06:00,1\n", {},
+             "has a time column beside its hour column: leave one of them out"),
+            (hourly, {"hour": "2001-03-01T6"}, "--hour '2001-03-01T6': expected a date and hour"),
             ("station_id,date,precip\nN1,2001-03,1\nN2,2001-03-01 06:00,1\n", {},
              "'2001-03-01 06:00' is an hour, where line 2 gives a month"),
             ("station_id,date,precip\nN1,2001-03,1\nN2,2001-03-01 00:00,1\n", {},
