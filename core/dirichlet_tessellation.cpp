@@ -44,30 +44,38 @@ bool AllFiniteAndInside(const std::vector<Point2>& points,
   const Window& window,
   const std::vector<std::int32_t>& bounds,
   std::vector<std::int32_t>& inside,
-  Box2& box)
+  Box2& box,
+  double tinyBelow,
+  bool& anyTiny)
 {
   const std::size_t chunks = bounds.size() - 1;
+  anyTiny = false;
   if (bounds.back() == 0)
   {
     return true;
   }
   std::vector<Box2> boxes(chunks);
-  std::vector<char> finite(chunks);
+  std::vector<char> finite(chunks), tiny(chunks);
   parallel::RunChunks(chunks,
     [&](std::size_t c)
     {
       Box2 chunkBox = BoundsOf(&points[bounds[c]], 1);
-      bool allFinite = true;
+      bool allFinite = true, someTiny = false;
       for (std::int32_t k = bounds[c]; k < bounds[c + 1]; ++k)
       {
         const Point2& p = points[k];
         allFinite &= (p.x - p.x == 0.0) & (p.y - p.y == 0.0); // false for NaN and infinities
+        // (while the points are read anyway: a nonzero coordinate below the exact range)
+        someTiny |= ((p.x != 0.0) & (std::fabs(p.x) < tinyBelow)) |
+          ((p.y != 0.0) & (std::fabs(p.y) < tinyBelow));
         chunkBox.Extend(p);
         inside[k] = k;
       }
       boxes[c] = chunkBox;
       finite[c] = allFinite;
+      tiny[c] = someTiny;
     });
+  anyTiny = std::find(tiny.begin(), tiny.end(), 1) != tiny.end();
   if (std::find(finite.begin(), finite.end(), 0) != finite.end())
   {
     return false;
@@ -126,6 +134,7 @@ constexpr std::uint8_t HasDuplicates = 0x80;
 
 DirichletTessellation::DirichletTessellation(Window window)
   : TheWindow(std::move(window))
+  , TinyBelow(std::ldexp(this->TheWindow.Reach(), -200))
   , NoCocircularTriangles(true) // no triangles yet
 {
 }
@@ -133,6 +142,7 @@ DirichletTessellation::DirichletTessellation(Window window)
 DirichletTessellation::DirichletTessellation(Window window, std::vector<Point2> points)
   : TheWindow(std::move(window))
   , Coordinates(std::move(points))
+  , TinyBelow(std::ldexp(this->TheWindow.Reach(), -200))
 {
   if (this->Coordinates.size() > std::size_t(INT32_MAX / 8))
   {
@@ -143,7 +153,14 @@ DirichletTessellation::DirichletTessellation(Window window, std::vector<Point2> 
   std::vector<std::int32_t> inside;
   ResizeOnLargePages(inside, static_cast<std::size_t>(n));
   Box2 box;
-  if (AllFiniteAndInside(this->Coordinates, this->TheWindow, bounds, inside, box))
+  bool anyTiny = true; // (unless the fast pass below finds none)
+  const bool allInside = AllFiniteAndInside(
+    this->Coordinates, this->TheWindow, bounds, inside, box, this->TinyBelow, anyTiny);
+  for (std::int32_t id = 0; anyTiny && id < n; ++id)
+  {
+    this->NoteIfTiny(id);
+  }
+  if (allInside)
   {
     this->BuildFrom(inside, &box);
     return;
@@ -296,6 +313,28 @@ bool DirichletTessellation::StarIsCocircular(std::int32_t start) const
   return false;
 }
 
+void DirichletTessellation::NoteIfTiny(std::int32_t id)
+{
+  const Point2& p = this->Coordinates[id];
+  const auto tiny = [this](double v) { return v != 0.0 && std::fabs(v) < this->TinyBelow; };
+  if ((tiny(p.x) || tiny(p.y)) && this->TheWindow.Contains(p))
+  {
+    this->TinyIds.push_back(id);
+  }
+}
+
+void DirichletTessellation::CheckPointsInExactRange() const
+{
+  for (const std::int32_t id : this->TinyIds)
+  {
+    if (this->Status(id) == PointStatus::Accepted)
+    {
+      throw InputError(
+        BelowExactRangeMessage(this->TheWindow, this->Coordinates[id], std::size_t(id), 0));
+    }
+  }
+}
+
 void DirichletTessellation::Validate(const Point2& p, std::size_t id, const char* after) const
 {
   if (std::isnan(p.x) || std::isnan(p.y))
@@ -319,6 +358,7 @@ std::int32_t DirichletTessellation::Insert(const Point2& p, std::int32_t nearId)
   this->EnableStatusBytes();
   this->Coordinates.push_back(p);
   this->StatusBytes.push_back(std::uint8_t(PointStatus::Accepted));
+  this->NoteIfTiny(std::int32_t(id));
   if (this->VertexEdgesOn)
   {
     this->VertexEdges.push_back(-1);

@@ -92,6 +92,11 @@ public:
   void Remove(std::int32_t id);
 
   const Window& GetWindow() const { return this->TheWindow; }
+  /// Throws InputError naming the first accepted point that has a nonzero coordinate below 2^-200
+  /// of the window's reach (CheckPointsInExactRange, window.h): the tiles' window decisions are
+  /// not exact for it, and its tiles came out wrong without a word. The derivations (tiles.h) call
+  /// it; such points are noted as they come (O(1) each), so a call costs O(their number).
+  void CheckPointsInExactRange() const;
   /// Every point ever given, by id (removed and rejected ones included).
   const std::vector<Point2>& Points() const { return this->Coordinates; }
   std::size_t PointCount() const { return this->Coordinates.size(); }
@@ -293,6 +298,11 @@ private:
 
   Window TheWindow;
   std::vector<Point2> Coordinates;
+  /// Ids of the points inside the window with a coordinate below TinyBelow but not 0, in order
+  /// (rare; CheckPointsInExactRange reads their status).
+  std::vector<std::int32_t> TinyIds;
+  double TinyBelow = 0.0; ///< 2^-200 of the window's reach
+  void NoteIfTiny(std::int32_t id);
   HalfEdgeArray Origins;
   HalfEdgeArray Twins;
   std::vector<std::int32_t> FreeTriangles;

@@ -122,6 +122,7 @@ void CheckWindowInExactRange(const DirichletTessellation& tessellation)
       "ScaleByPowerOfTwo (tiles.h) (by 2^" +
       std::to_string(exponent) + " here)");
   }
+  tessellation.CheckPointsInExactRange();
 }
 
 TessellationDual::TessellationDual(const DirichletTessellation& tessellation)

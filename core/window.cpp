@@ -495,24 +495,35 @@ int ScaleIntoExactRange(Window& window, std::vector<Point2>& points)
   return exponent;
 }
 
+bool BelowExactRange(const Window& window, const Point2& p)
+{
+  const double smallest = std::ldexp(window.Reach(), -200);
+  const auto tiny = [smallest](double v) { return v != 0.0 && std::fabs(v) < smallest; };
+  return (tiny(p.x) || tiny(p.y)) && window.Contains(p);
+}
+
+std::string BelowExactRangeMessage(const Window& window,
+  const Point2& p,
+  std::size_t k,
+  int exponent)
+{
+  return "point " + std::to_string(k) + " (" + NumberText(std::ldexp(p.x, -exponent)) + ", " +
+    NumberText(std::ldexp(p.y, -exponent)) +
+    ") has a coordinate below 2^-200 (some 6e-61) of the window's reach (its largest corner "
+    "coordinate, " +
+    NumberText(std::ldexp(window.Reach(), -exponent)) +
+    "), though not 0: the tiles' window decisions are exact only from there up, whatever the "
+    "scale; set that coordinate to 0, or move the origin (the BrasselReif algorithm takes "
+    "such points)";
+}
+
 void CheckPointsInExactRange(const Window& window, const std::vector<Point2>& points, int exponent)
 {
-  const double reach = window.Reach();
-  const double smallest = std::ldexp(reach, -200);
-  const auto tiny = [smallest](double v) { return v != 0.0 && std::fabs(v) < smallest; };
   for (std::size_t k = 0; k < points.size(); ++k)
   {
-    const Point2& p = points[k];
-    if ((tiny(p.x) || tiny(p.y)) && window.Contains(p))
+    if (BelowExactRange(window, points[k]))
     {
-      throw InputError("point " + std::to_string(k) + " (" +
-        NumberText(std::ldexp(p.x, -exponent)) + ", " + NumberText(std::ldexp(p.y, -exponent)) +
-        ") has a coordinate below 2^-200 (some 6e-61) of the window's reach (its largest corner "
-        "coordinate, " +
-        NumberText(std::ldexp(reach, -exponent)) +
-        "), though not 0: the tiles' window decisions are exact only from there up, whatever the "
-        "scale; set that coordinate to 0, or move the origin (the BrasselReif algorithm takes "
-        "such points)");
+      throw InputError(BelowExactRangeMessage(window, points[k], k, exponent));
     }
   }
 }

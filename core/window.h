@@ -143,4 +143,13 @@ int ScaleIntoExactRange(Window& window, std::vector<Point2>& points);
 /// magnitude beside the window). Points outside the window are rejected anyway and not checked.
 void CheckPointsInExactRange(const Window& window, const std::vector<Point2>& points, int exponent);
 
+/// Whether p, inside the window, has such a coordinate (CheckPointsInExactRange's test).
+bool BelowExactRange(const Window& window, const Point2& p);
+
+/// CheckPointsInExactRange's message for point k at p (in the scaled units; exponent as there).
+std::string BelowExactRangeMessage(const Window& window,
+  const Point2& p,
+  std::size_t k,
+  int exponent);
+
 } // namespace tessera

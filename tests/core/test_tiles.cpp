@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -1210,9 +1211,10 @@ TEST(Tiles, IllConditionedCircumcentresAreAccurateInBothEngines)
   // origin of very different exponents (the rounded differences moved a Voronoi vertex 2.66 along
   // the sliver, and a tile lost 6% of its area to a fold), and points a subnormal distance apart
   // (their squared sides underflowed: a vertex 12.6 off, or NaN). Found by a fuzzer feeding the
-  // engine's tiles to the clip's convexity check. (Case 1's coordinates are subnormal, below the
-  // range of Green-Sibson's exact window predicates, window_predicates.h, whose products
-  // underflow: there only the sweep's tiles are checked.)
+  // engine's tiles to the clip's convexity check. (Cases 1 and 2 have subnormal coordinates,
+  // below the range of Green-Sibson's exact window predicates, window_predicates.h, whose products
+  // underflow: its derivations refuse them, naming a point, and only the sweep's tiles are
+  // checked.)
   struct Case
   {
     Window TheWindow;
@@ -1238,7 +1240,8 @@ TEST(Tiles, IllConditionedCircumcentresAreAccurateInBothEngines)
       { { 0.0008638645354608574, 0.00016253665080513281 },
         { 4.0118130442309219e-321, -1.7489923862780128e-321 },
         { -3.8932372892290228e-321, -3.6017385581826873e-321 },
-        { 15500000000.001797, 15499999999.999725 } } },
+        { 15500000000.001797, 15499999999.999725 } },
+      false },
   };
   for (std::size_t c = 0; c < cases.size(); ++c)
   {
@@ -1252,7 +1255,12 @@ TEST(Tiles, IllConditionedCircumcentresAreAccurateInBothEngines)
       ((box.XMax - box.XMin) + (box.YMax - box.YMin));
     const std::vector<std::size_t> ringOffsets{ 0, window.Vertices().size() };
     const Catchment catchment(ringOffsets, window.Vertices());
-    const TileSet green = ComputeTiles(DirichletTessellation(window, points));
+    const DirichletTessellation tessellation(window, points);
+    if (!cases[c].InWindowPredicateRange)
+    {
+      EXPECT_THROW(ComputeTiles(tessellation), InputError) << "case " << c;
+    }
+    const TileSet green = cases[c].InWindowPredicateRange ? ComputeTiles(tessellation) : TileSet();
     const TileSet sweep = ComputeThiessenSweep(window, points).Tiles;
     for (const TileSet* tiles : { &green, &sweep })
     {
@@ -1287,18 +1295,32 @@ TEST(Tiles, PointsASubnormalDistanceApartGiveFiniteHalves)
   // Two points 4.94e-324 apart split the window ±1 along their bisector (x = 2.47e-324, so
   // halves of area 2 each). The bisector's direction was of subnormal size: its crossing with a
   // window side had an infinite parameter, and t * 0 made a NaN vertex. Both engines, and the
-  // exact areas. (In a window of ±1e-9 the exact window predicates underflow: out of their
-  // documented range, window_predicates.h, and not tested here.)
+  // exact areas. (A coordinate of 4.94e-324 is below the range of Green-Sibson's exact window
+  // predicates, window_predicates.h, whatever the window: its derivations refuse it, naming the
+  // point, and the sweep is checked; the engine's finite halves are kept for points just above
+  // that range, 2^-200 of the window, here 1e-61 apart.)
   const Window window = Window::Rectangle(-1, 1, -1, 1);
   const std::vector<Point2> points{ { 0.0, 0.0 }, { 4.94e-324, 0.0 } };
-  const TileSet green = ComputeTiles(DirichletTessellation(window, points));
+  try
+  {
+    ComputeTiles(DirichletTessellation(window, points));
+    ADD_FAILURE() << "tiles derived for a point below the exact range";
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("point 1 (4.94065645841247e-324, 0)"), std::string::npos)
+      << e.what();
+  }
+  const std::vector<Point2> above{ { 0.0, 0.0 }, { 1e-60, 0.0 } };
+  const TileSet green = ComputeTiles(DirichletTessellation(window, above));
   const TileSet sweep = ComputeThiessenSweep(window, points).Tiles;
   for (const TileSet* tiles : { &green, &sweep })
   {
+    const std::vector<Point2>& given = tiles == &green ? above : points;
     ASSERT_EQ(tiles->PointIds.size(), 2u);
     for (std::size_t k = 0; k < 2; ++k)
     {
-      EXPECT_NEAR(tiles->Areas[k], ExactTileArea(window, points, std::size_t(k)).get_d(), 1e-15)
+      EXPECT_NEAR(tiles->Areas[k], ExactTileArea(window, given, std::size_t(k)).get_d(), 1e-15)
         << k;
       for (std::int64_t v = tiles->Offsets[k]; v < tiles->Offsets[k + 1]; ++v)
       {
@@ -1351,6 +1373,64 @@ TEST(Tiles, AWindowOutsideTheExactRangeIsAnErrorUnlessScaled)
       EXPECT_DOUBLE_EQ(mesh.Areas[k], std::ldexp(expected.Areas[k], 2 * exponent)) << k;
     }
   }
+}
+
+// A point with a nonzero coordinate below 2^-200 of the window's reach: the window decisions of
+// its tiles are not exact, and the core's derivations gave wrong tiles without a word (from the C++
+// user's review: 50 points within 1e-200 of a corner made tiles whose areas summed to 44.9 times
+// the window's, and a tile of 3 sides for one of 4). Every derivation names the first such point
+// that is accepted, whether it came in a batch or was inserted; once it is removed the tiles are
+// derived again, and equal those of the points without it. The faces need no window, and
+// Brassel-Reif takes such points.
+TEST(Tiles, APointBelowTheExactRangeIsNamedByEveryDerivation)
+{
+  const Window window = Window::Rectangle(0.0, 0.1, 0.0, 0.1);
+  const std::vector<Point2> points{
+    { 0.05, 0.05 }, { 1e-200, 0.0375 }, { 0.0375, 5e-201 }, { 0.08, 0.02 }
+  };
+  const auto named = [](const std::function<void()>& derive, const std::string& fragment)
+  {
+    try
+    {
+      derive();
+      return std::string("no error");
+    }
+    catch (const InputError& e)
+    {
+      return std::string(e.what()).find(fragment) != std::string::npos ? std::string()
+                                                                       : std::string(e.what());
+    }
+  };
+  DirichletTessellation batch(window, points);
+  DirichletTessellation streamed(window);
+  for (const Point2& p : points)
+  {
+    streamed.Insert(p);
+  }
+  for (DirichletTessellation* t : { &batch, &streamed })
+  {
+    const std::string first = "point 1 (1e-200, 0.0375) has a coordinate below 2^-200";
+    EXPECT_EQ(named([&] { ComputeTiles(*t); }, first), "");
+    EXPECT_EQ(named([&] { ComputeContiguityGraph(*t); }, first), "");
+    EXPECT_EQ(named([&] { ComputeTilesOf(*t, { 0 }); }, first), "");
+    EXPECT_EQ(named([&] { TessellationDual(*t).TileMeshAndContiguities(); }, first), "");
+    EXPECT_EQ(ComputeDelaunayFaces(*t, false).PointIds.size(), 6u);
+    t->Remove(1);
+    EXPECT_EQ(named([&] { ComputeTiles(*t); }, "point 2 (0.0375, 5e-201)"), "");
+    t->Remove(2);
+    const TileSet tiles = ComputeTiles(*t);
+    const TileSet without = ComputeTiles(
+      DirichletTessellation(window, { points[0], { 0.0, 0.0 }, { 0.0, 0.0 }, points[3] }));
+    EXPECT_EQ(tiles.PointIds, (std::vector<std::int32_t>{ 0, 3 }));
+    EXPECT_EQ(tiles.Areas, without.Areas);
+  }
+  const TileSet sweep = ComputeThiessenSweep(window, points).Tiles;
+  double total = 0.0;
+  for (const double area : sweep.Areas)
+  {
+    total += area;
+  }
+  EXPECT_NEAR(total, 0.01, 1e-17);
 }
 
 // Points an ulp apart: the middle tile's corners round onto each other (a polygon of one or two
