@@ -76,7 +76,8 @@ public:
   /// point is then not appended, and the next point inserted gets that id.
   /// nearId: an accepted point near p, where the walk to p starts when vertex edges are tracked
   /// (TrackVertexEdges); otherwise, or for -1, it starts at the triangle made last. The result
-  /// is the same either way: only the walk's length differs.
+  /// is the same either way: only the walk's length differs (so an id that is no accepted point,
+  /// out of range included, is not an error: the walk starts as for -1).
   std::int32_t Insert(const Point2& p, std::int32_t nearId = -1);
   /// Inserts a removed point again under its id, as Insert would insert its coordinates (nearId
   /// likewise; the window may reject it again, and it may be an exact copy of an accepted point).
@@ -105,8 +106,9 @@ public:
   /// O(1) once Insert or Remove has been called (a status byte per id); before that (a batch
   /// build only) a binary search among the rejected and duplicate ids.
   PointStatus Status(std::int32_t id) const;
-  /// For a Duplicate, the accepted id it copies; -1 otherwise. O(1) for a non-duplicate once
-  /// Insert or Remove has been called, else a binary search among the duplicates.
+  /// For a Duplicate, the accepted id it copies; -1 otherwise (an id out of range included, where
+  /// Status throws). O(1) for a non-duplicate once Insert or Remove has been called, else a
+  /// binary search among the duplicates.
   std::int32_t DuplicateOf(std::int32_t id) const;
   /// Rejected (outside the window) ids, ascending.
   std::vector<std::int32_t> RejectedIds() const;

@@ -1,7 +1,9 @@
 #pragma once
 // Brassel and Reif's procedure for Thiessen polygons (Geographical Analysis 11(3), 1979): an
 // engine independent of Green and Sibson's, giving the same results (tiles.h types) for a
-// rectangular window.
+// rectangular window: the same contiguities, rejected and duplicate points, and tiles up to
+// rounding where a tile edge crosses the window (such a corner may differ by an ulp, an area by
+// some 1e-15 relative; each engine's tiles share their corners).
 //
 // The paper's procedure, as done here:
 //  - The window is a rectangle (the paper's border). For the centroid being processed, four dummy

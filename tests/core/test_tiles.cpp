@@ -1450,3 +1450,26 @@ TEST(Tiles, TilesNarrowerThanAnUlpAreCollapsed)
       << (ulp ? "an ulp apart" : "2^-30 apart");
   }
 }
+
+// A window whose area is inf or 0 (1e308 or 1e-200 on a side) cannot be compared with the tiles'
+// areas: said so, not "the points lie too close together" (from the C++ user's review).
+TEST(Tiles, AWindowAreaBeyondTheDoublesIsNamedAsSuch)
+{
+  TileMesh mesh;
+  mesh.Areas = { 1.0, 2.0 };
+  for (const double area : { HUGE_VAL, 0.0 })
+  {
+    try
+    {
+      CheckTilesFillWindow(mesh, area);
+      ADD_FAILURE() << "window area " << area << ": no error";
+    }
+    catch (const InputError& e)
+    {
+      EXPECT_NE(std::string(e.what()).find("is beyond the doubles' range"), std::string::npos)
+        << e.what();
+    }
+  }
+  EXPECT_NO_THROW(CheckTilesFillWindow(mesh, 3.0));
+  EXPECT_THROW(CheckTilesFillWindow(mesh, 4.0), InputError);
+}
