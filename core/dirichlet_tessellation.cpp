@@ -65,9 +65,7 @@ bool AllFiniteAndInside(const std::vector<Point2>& points,
       {
         const Point2& p = points[k];
         allFinite &= (p.x - p.x == 0.0) & (p.y - p.y == 0.0); // false for NaN and infinities
-        // (while the points are read anyway: a nonzero coordinate below the exact range)
-        someTiny |= ((p.x != 0.0) & (std::fabs(p.x) < tinyBelow)) |
-          ((p.y != 0.0) & (std::fabs(p.y) < tinyBelow));
+        someTiny |= HasCoordinateBelow(p, tinyBelow);         // (while the points are read anyway)
         chunkBox.Extend(p);
         inside[k] = k;
       }
@@ -134,7 +132,7 @@ constexpr std::uint8_t HasDuplicates = 0x80;
 
 DirichletTessellation::DirichletTessellation(Window window)
   : TheWindow(std::move(window))
-  , TinyBelow(std::ldexp(this->TheWindow.Reach(), -200))
+  , TinyBelow(ExactRangeFloor(this->TheWindow))
   , NoCocircularTriangles(true) // no triangles yet
 {
 }
@@ -142,7 +140,7 @@ DirichletTessellation::DirichletTessellation(Window window)
 DirichletTessellation::DirichletTessellation(Window window, std::vector<Point2> points)
   : TheWindow(std::move(window))
   , Coordinates(std::move(points))
-  , TinyBelow(std::ldexp(this->TheWindow.Reach(), -200))
+  , TinyBelow(ExactRangeFloor(this->TheWindow))
 {
   if (this->Coordinates.size() > std::size_t(INT32_MAX / 8))
   {
@@ -316,8 +314,7 @@ bool DirichletTessellation::StarIsCocircular(std::int32_t start) const
 void DirichletTessellation::NoteIfTiny(std::int32_t id)
 {
   const Point2& p = this->Coordinates[id];
-  const auto tiny = [this](double v) { return v != 0.0 && std::fabs(v) < this->TinyBelow; };
-  if ((tiny(p.x) || tiny(p.y)) && this->TheWindow.Contains(p))
+  if (HasCoordinateBelow(p, this->TinyBelow) && this->TheWindow.Contains(p))
   {
     this->TinyIds.push_back(id);
   }

@@ -1,6 +1,7 @@
 #include "fft.h"
 
 #include "errors.h"
+#include "geometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -34,11 +35,10 @@ FftPlan::FftPlan(std::size_t n)
   }
   // Twiddles from cos/sin of each angle directly (not by repeated multiplication), so their
   // error stays at one rounding and does not grow with n.
-  const double pi = std::acos(-1.0);
   this->Twiddles.resize(n / 2);
   for (std::size_t k = 0; k < n / 2; ++k)
   {
-    const double angle = -2.0 * pi * static_cast<double>(k) / static_cast<double>(n);
+    const double angle = -2.0 * Pi * static_cast<double>(k) / static_cast<double>(n);
     this->Twiddles[k] = { std::cos(angle), std::sin(angle) };
   }
   this->BitReversed.resize(n);

@@ -11,6 +11,9 @@
 namespace tessera
 {
 
+/// pi, as the double nearest it (what std::acos(-1.0) gives).
+constexpr double Pi = 3.14159265358979323846;
+
 struct Point2
 {
   double x = 0.0;

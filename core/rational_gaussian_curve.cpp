@@ -163,7 +163,6 @@ Point2 PeriodicFourierSum(const std::vector<double>& nodes,
   double u,
   double sigma)
 {
-  constexpr double Pi = 3.14159265358979323846;
   // The terms beyond exp(-40) (4e-18) of the first are dropped: m up to sqrt(40 / 2 pi^2) / sigma.
   // (At most 3 terms from sigma 1/2 on: no allocation per sample.)
   const int terms = static_cast<int>(std::ceil(std::sqrt(40.0 / (2.0 * Pi * Pi)) / sigma));

@@ -443,7 +443,7 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
   // where a curve ends or bends (11-29 pixel loops at a basis width of 8 took a road's last 60
   // points into a closed group, and broke an ellipse's tips into small closed groups); dropped,
   // their points join the contours nearby.
-  contourSettings.MinimumLoopLength = 2.0 * 3.14159265358979323846 * this->Settings.Width;
+  contourSettings.MinimumLoopLength = 2.0 * Pi * this->Settings.Width;
   const RidgeContours contours =
     TraceRidgeContours(masks.Minor, masks.Major, grid.Width, grid.Height, contourSettings);
   result.MinorRidge = std::move(masks.Minor);

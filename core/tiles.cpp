@@ -902,8 +902,6 @@ void CheckTilesFillWindow(const TileMesh& tiles, double windowArea)
   {
     return;
   }
-  // (a plain sum: its rounding, some n ulps at most, is far inside the 1e-6 tolerance)
-  const double total = std::accumulate(tiles.Areas.begin(), tiles.Areas.end(), 0.0);
   if (!std::isfinite(windowArea) || windowArea == 0.0)
   {
     // (a window of 1e308 or 1e-200 on a side: no sum of areas can be compared with it)
@@ -911,6 +909,8 @@ void CheckTilesFillWindow(const TileMesh& tiles, double windowArea)
       " is beyond the doubles' range, so the tiles' areas cannot be checked against it: scale the "
       "points and the window (ScaleIntoExactRange) and measure the scaled tiles");
   }
+  // (a plain sum: its rounding, some n ulps at most, is far inside the 1e-6 tolerance)
+  const double total = std::accumulate(tiles.Areas.begin(), tiles.Areas.end(), 0.0);
   if (!(std::fabs(total - windowArea) <= 1e-6 * windowArea))
   {
     throw InputError("the tiles' areas add up to " + NumberText(total) +

@@ -495,11 +495,14 @@ int ScaleIntoExactRange(Window& window, std::vector<Point2>& points)
   return exponent;
 }
 
+double ExactRangeFloor(const Window& window)
+{
+  return std::ldexp(window.Reach(), -200);
+}
+
 bool BelowExactRange(const Window& window, const Point2& p)
 {
-  const double smallest = std::ldexp(window.Reach(), -200);
-  const auto tiny = [smallest](double v) { return v != 0.0 && std::fabs(v) < smallest; };
-  return (tiny(p.x) || tiny(p.y)) && window.Contains(p);
+  return HasCoordinateBelow(p, ExactRangeFloor(window)) && window.Contains(p);
 }
 
 std::string BelowExactRangeMessage(const Window& window,

@@ -6,6 +6,7 @@
 #include "errors.h"
 #include "geometry.h"
 
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -142,6 +143,16 @@ int ScaleIntoExactRange(Window& window, std::vector<Point2>& points);
 /// instead of 4, with no message. No scaling helps (the point spans too many orders of
 /// magnitude beside the window). Points outside the window are rejected anyway and not checked.
 void CheckPointsInExactRange(const Window& window, const std::vector<Point2>& points, int exponent);
+
+/// 2^-200 of the window's reach: CheckPointsInExactRange's floor.
+double ExactRangeFloor(const Window& window);
+
+/// Whether p has a nonzero coordinate below floor in magnitude (without branches: the batch build
+/// tests every point with it while it reads them anyway).
+inline bool HasCoordinateBelow(const Point2& p, double floor)
+{
+  return ((p.x != 0.0) & (std::fabs(p.x) < floor)) | ((p.y != 0.0) & (std::fabs(p.y) < floor));
+}
 
 /// Whether p, inside the window, has such a coordinate (CheckPointsInExactRange's test).
 bool BelowExactRange(const Window& window, const Point2& p);

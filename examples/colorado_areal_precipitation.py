@@ -305,7 +305,6 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     unrecorded = 0
     coded = 0  # values given with --missing-value
     negative = []  # the lines of negative values
-    steps_read = set()  # the step of every row, as observation_step read it
     present = set()  # the step of every row of a gauge's station
     lines = []  # the file's line of each row read
     names = {}  # every row's station id, as written, once each in the file's order
@@ -329,7 +328,6 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
         hour_column = "hour" in row
         at_24 += kind == "time" and step[3] == 24
         read.append(step)
-        steps_read.add(step)
         names.setdefault(station.strip(" \t\""))
         gauge = gauge_of.get(station_key(station))
         if gauge is not None:
@@ -349,8 +347,8 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
                 reporting.setdefault(step, set()).add(gauge)
         stations.InsertNextValue(station)
         values.InsertNextValue(value)
-    steps, step_of = file_steps(steps_read, first, hour_column, at_24, path)
-    every_step, present = {step_of[m] for m in steps_read}, {step_of[m] for m in present}
+    steps, step_of = file_steps(set(read), first, hour_column, at_24, path)
+    every_step, present = set(step_of.values()), {step_of[m] for m in present}
     merged = {}
     for m, gauges in reporting.items():
         merged.setdefault(step_of[m], set()).update(gauges)

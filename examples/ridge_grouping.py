@@ -62,16 +62,18 @@ def main(argv=None):
     parser.add_argument("--quakes", default=os.path.join(HERE, "data", "fiji_quakes.csv"),
                         help=f"CSV of epicentres: columns lat, long (degrees), depth, mag; {csv_input.SEPARATORS_TEXT}")
     parser.add_argument("--out", default="out", help="output directory (created if missing)")
-    parser.add_argument("--width", type=float, default=4.0, help="basis width in pixels (the filter's default is 5, which merges the "
-                                                                      "southern half of the trench with the cluster north of it; "
-                                                                      "4 gives it a group of its own)")
+    # (why the example's settings differ from the filter's defaults)
+    parser.add_argument("--width", type=float, default=4.0,
+                        help="basis width in pixels (the filter's default is 5, which merges the southern half of "
+                             "the trench with the cluster north of it; 4 gives it a group of its own)")
     parser.add_argument("--image-size", type=int, default=0, help="pixels along the longer side (0 = automatic)")
-    parser.add_argument("--curve-sigma", type=float, default=0.1, help="RaG curve smoothness (node units: a share of each curve's "
-                                                                           "length; 0.1 draws the arcs' course through the scattered "
-                                                                           "epicentres, where the filter's default, the paper's 0.04, "
-                                                                           "follows more of their scatter)")
-    parser.add_argument("--minimum-contour-length", type=float, default=15.0, help="pixels (the filter's default is 10; 15 leaves out the shorter "
-                                                                            "ridges of scattered events)")
+    parser.add_argument("--curve-sigma", type=float, default=0.1,
+                        help="RaG curve smoothness (node units: a share of each curve's length; 0.1 draws the "
+                             "arcs' course through the scattered epicentres, where the filter's default, the "
+                             "paper's 0.04, follows more of their scatter)")
+    parser.add_argument("--minimum-contour-length", type=float, default=15.0,
+                        help="pixels (the filter's default is 10; 15 leaves out the shorter ridges of scattered "
+                             "events)")
     parser.add_argument("--gaussian", action="store_true", help="Gaussian basis instead of inverse multiquadric")
     parser.add_argument("--closest-tangent", action="store_true", help="closest-tangent join rule")
     args = parser.parse_args(argv)
