@@ -1076,6 +1076,28 @@ std::vector<int> DensifiedPieceCounts(const CleanRings& rings, double edgeDegree
   return pieces;
 }
 
+/// Throws InputError when the catchment's rings cancel out under the even-odd rule (a file
+/// holding a basin and its sub-basins: each sub-basin becomes a hole, and with all of them
+/// nothing is left). Every weight would then be 0 / 0 and every mean empty, without an error.
+void CheckCatchmentHasArea(const Catchment& region)
+{
+  double ringAreas = 0.0;
+  const std::vector<std::size_t>& offsets = region.RingOffsets();
+  for (std::size_t r = 0; r < region.RingCount(); ++r)
+  {
+    ringAreas +=
+      std::abs(CompensatedPolygonArea(&region.Vertices()[offsets[r]], offsets[r + 1] - offsets[r]));
+  }
+  // Rounding of the projected vertices leaves slivers of some 1e-16 of the rings' areas.
+  if (!(std::abs(region.Area()) > 1e-9 * ringAreas))
+  {
+    throw InputError("the catchment has no area: its " + std::to_string(region.RingCount()) +
+      " rings cancel out, as a point inside an even number of them is outside it (each ring "
+      "inside another is a hole in it). A basin given together with its sub-basins does this: "
+      "give the basin alone, or each sub-basin as a catchment of its own");
+  }
+}
+
 } // namespace
 
 ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonLat,
@@ -1105,8 +1127,9 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
       " names for " + std::to_string(gaugesLonLat.size()) + " gauges");
   }
   CheckCatchmentLonLat(catchmentRingOffsets, catchmentLonLat);
-  const CleanRings rings =
-    WithContactsAsVertices(ValidateRings(catchmentRingOffsets, catchmentLonLat));
+  // Validated as the edges are read: a ring that jumps the 180th meridian runs on past it.
+  const CleanRings rings = WithContactsAsVertices(
+    ValidateRings(catchmentRingOffsets, RingsInOneTurn(catchmentRingOffsets, catchmentLonLat)));
 
   if (settings.HaveProjection)
   {
@@ -1213,6 +1236,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     }
     throw;
   }
+  CheckCatchmentHasArea(*s.Region);
   if (s.Method == AreaMethod::EqualAreaPlane)
   {
     s.CatchmentArea = s.Region->Area();

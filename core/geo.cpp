@@ -582,6 +582,69 @@ Point2 InterpolateLonLat(const Point2& a, const Point2& b, double t)
   return { a.x + t * LongitudeDifference(a.x, b.x), a.y + t * (b.y - a.y) };
 }
 
+namespace
+{
+/// Throws InputError if ring r (vertices [begin, end) of lonlat) goes round a pole.
+void CheckRingAvoidsPoles(const std::vector<Point2>& lonlat,
+  std::size_t begin,
+  std::size_t end,
+  std::size_t r)
+{
+  double turn = 0.0, latitudes = 0.0;
+  for (std::size_t k = begin; k < end; ++k)
+  {
+    turn += LongitudeDifference(lonlat[k].x, lonlat[k + 1 < end ? k + 1 : begin].x);
+    latitudes += lonlat[k].y;
+  }
+  // A closed ring turns through a whole number of turns: 0 unless it goes round a pole.
+  if (std::abs(turn) > 180.0)
+  {
+    throw InputError("catchment ring " + std::to_string(r) + " goes round the " +
+      (latitudes > 0.0 ? "North" : "South") + " Pole (its edges, read the shorter way round in " +
+      "longitude, turn through " + NumberText(std::round(turn)) +
+      " degrees): a catchment containing a pole cannot be projected onto one conic, and "
+      "Thiessen areal averages over one are not supported");
+  }
+}
+} // namespace
+
+std::vector<Point2> RingsInOneTurn(const std::vector<std::size_t>& offsets,
+  const std::vector<Point2>& lonlat)
+{
+  for (std::size_t r = 0; r + 1 < offsets.size(); ++r)
+  {
+    CheckRingAvoidsPoles(lonlat, offsets[r], std::min(offsets[r + 1], lonlat.size()), r);
+  }
+  std::vector<Point2> turned = lonlat;
+  const bool allFinite = std::all_of(lonlat.begin(),
+    lonlat.end(),
+    [](const Point2& p) { return std::isfinite(p.x) && std::isfinite(p.y); });
+  if (lonlat.empty() || !allFinite)
+  {
+    return turned; // (ring validation names a NaN or infinite vertex)
+  }
+  const GeographicExtent extent = ComputeExtent(lonlat);
+  const double gap = 360.0 - extent.LongitudeSpan;
+  if (gap <= 180.0)
+  {
+    return turned; // (no meridian is clearly clear of the catchment)
+  }
+  // The turn [cut, cut + 360) starts halfway across the gap west of the vertices' arc.
+  const double cut = extent.WestLongitude - 0.5 * gap;
+  for (Point2& p : turned)
+  {
+    while (p.x < cut)
+    {
+      p.x += 360.0;
+    }
+    while (p.x >= cut + 360.0)
+    {
+      p.x -= 360.0;
+    }
+  }
+  return turned;
+}
+
 double EllipsoidalRingArea(const std::vector<Point2>& lonlat)
 {
   GeographicLib::PolygonArea polygon(GeographicLib::Geodesic::WGS84());

@@ -130,6 +130,19 @@ bool EdgeReadsBothWays(const Point2& a, const Point2& b);
 /// way round, continuing from a's longitude, so it may leave [-180, 180]).
 Point2 InterpolateLonLat(const Point2& a, const Point2& b, double t);
 
+/// The rings (offsets into lonlat, as a catchment gives them) with their longitudes in one turn of
+/// the globe as their edges are read: each vertex moved by whole turns of 360 degrees into the
+/// turn that starts at the meridian halfway across the widest gap between the vertices'
+/// longitudes. A ring that jumps the 180th meridian (179.5 to -179.6, as DensifiedPieceCount reads
+/// it) then runs on past it (to 180.4), so that a test made on the lon/lat coordinates (a ring
+/// crossing itself) sees the edges that are meant, not one across the whole map. A vertex already
+/// in that turn is kept bit for bit, and equal vertices stay equal (rings sharing a boundary keep
+/// sharing it). Unchanged when the vertices leave no gap wider than 180 degrees. Throws InputError
+/// naming a ring whose edges, read so, turn through 360 degrees of longitude: it goes round a
+/// pole, and no conic projection holds a catchment containing one.
+std::vector<Point2> RingsInOneTurn(const std::vector<std::size_t>& offsets,
+  const std::vector<Point2>& lonlat);
+
 /// Area in square metres of a ring of lon/lat vertices on WGS84, joined by geodesics (GeographicLib
 /// PolygonArea); densify edges first where they should follow parallels. Positive for
 /// anticlockwise rings, negative for clockwise.

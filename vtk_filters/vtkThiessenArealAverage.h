@@ -24,7 +24,9 @@
  * left out with a warning naming them); edges are straight in lon/lat,
  * but one whose longitudes differ by more than 270 degrees as written is taken the shorter way
  * round (179 to -179 crosses the 180th meridian) and one that differs by 180 to 270 degrees,
- * which could be meant either way, is an error naming its ring and segment;
+ * which could be meant either way, is an error naming its ring and segment; a ring that goes
+ * round a pole (its longitudes, so read, turn through 360 degrees) and rings that cancel out
+ * into no area (a basin given with all its sub-basins, each then a hole) are errors too;
  * - port 2 (optional), observations: a vtkTable in long format with a station id column, a time
  *   column and a value column (StationColumn, TimeColumn, ValueColumn: defaults "station_id",
  *   "time", "value"). Without it, the gauges' point-data array ValueArrayName is one time step, at
