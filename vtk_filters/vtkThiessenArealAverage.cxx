@@ -533,6 +533,48 @@ std::vector<double> RowValues(vtkTable* table,
   return rowValues;
 }
 
+/// Values exactly equal to a common missing-value code, for a warning when no MissingValue is
+/// used: the code met most often, how many values have it, and the first one's index.
+struct CodeSightings
+{
+  double Code = 0.0;
+  std::size_t Count = 0;
+  std::size_t First = 0;
+};
+
+/// With `use`, sets the values equal to `missing` to NaN (missing). Without, finds the values
+/// exactly equal to a common missing-value code, which would be averaged as measurements.
+CodeSightings TakeMissingValues(std::vector<double>& values, bool use, double missing)
+{
+  CodeSightings most;
+  if (use)
+  {
+    std::replace(values.begin(), values.end(), missing, std::numeric_limits<double>::quiet_NaN());
+    return most;
+  }
+  for (const double code : { -9999.0, -999.0, 9999.0, 99999.0 })
+  {
+    const auto first = std::find(values.begin(), values.end(), code);
+    const std::size_t count = static_cast<std::size_t>(std::count(first, values.end(), code));
+    if (count > most.Count)
+    {
+      most = { code, count, static_cast<std::size_t>(first - values.begin()) };
+    }
+  }
+  return most;
+}
+
+/// The warning for values that look like a missing-value code; `first` names where the first is.
+std::string MissingCodeWarning(const CodeSightings& seen,
+  const std::string& what,
+  const std::string& first)
+{
+  const std::string code = tessera::NumberText(seen.Code);
+  return std::to_string(seen.Count) + " " + what + " exactly " + code +
+    ", a common missing-value code, and averaged as measured values (the first " + first +
+    "): if " + code + " marks missing values, turn UseMissingValue on with MissingValue " + code;
+}
+
 /// The StationId array of an output: the gauges' id for each entry, in their id array's type
 /// and components; none when the gauges have no ids.
 class StationIdColumn
@@ -1210,6 +1252,15 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     }
     in.Times = rows->Steps.Times;
     rowValues = RowValues(observations, rows->Steps, this->StationColumn, this->ValueColumn);
+    const CodeSightings seen =
+      TakeMissingValues(rowValues, this->UseMissingValue, this->MissingValue);
+    if (seen.Count > 0)
+    {
+      vtkWarningMacro(<< MissingCodeWarning(seen,
+                        "observation value(s) are",
+                        "in row " + std::to_string(seen.First) + ", station " +
+                          RowStation(stations, seen.First)));
+    }
     tessera::StepSeries series =
       tessera::BuildSeries(rows->Match, rows->Steps, rowValues, gaugeCount);
     in.Values = std::move(series.Values);
@@ -1235,6 +1286,16 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     for (std::size_t g = 0; g < gaugeCount; ++g)
     {
       in.Values[0][g] = values->GetTuple1(static_cast<vtkIdType>(g));
+    }
+    const CodeSightings seen =
+      TakeMissingValues(in.Values[0], this->UseMissingValue, this->MissingValue);
+    if (seen.Count > 0)
+    {
+      const std::string name = seen.First < gaugeNames.size() ? gaugeNames[seen.First] : "";
+      vtkWarningMacro(<< MissingCodeWarning(seen,
+                        "gauge value(s) in '" + this->ValueArrayName + "' are",
+                        "of gauge " + std::to_string(seen.First) +
+                          (name.empty() ? std::string() : " (" + name + ")")));
     }
   }
 
@@ -1468,4 +1529,6 @@ void vtkThiessenArealAverage::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ProjectionRecord: " << this->ProjectionRecord << "\n";
   os << indent << "AreaMethod: " << this->AreaMethod << "\n";
   os << indent << "WeightsTable: " << (this->WeightsTable ? "on" : "off") << "\n";
+  os << indent << "UseMissingValue: " << (this->UseMissingValue ? "on" : "off") << "\n";
+  os << indent << "MissingValue: " << this->MissingValue << "\n";
 }

@@ -237,6 +237,21 @@ public:
   vtkBooleanMacro(WeightsTable, bool);
   ///@}
 
+  ///@{
+  /**
+   * A number that marks missing values, such as -9999 in many gauge records, taken as missing
+   * (as NaN is) in the value column of the observations or, without them, in the gauges' value
+   * array, when UseMissingValue is on (default off, MissingValue default -9999). Left off, a
+   * value of exactly -9999, -999, 9999 or 99999 (common codes) is averaged as a measurement
+   * and a warning counts them and names the first.
+   */
+  vtkSetMacro(UseMissingValue, bool);
+  vtkGetMacro(UseMissingValue, bool);
+  vtkBooleanMacro(UseMissingValue, bool);
+  vtkSetMacro(MissingValue, double);
+  vtkGetMacro(MissingValue, double);
+  ///@}
+
   /**
    * Number of time steps found in the last update (1 without observations).
    */
@@ -258,6 +273,8 @@ protected:
   std::string TimeColumn = "time";
   std::string ValueColumn = "value";
   std::string MonthColumn;
+  bool UseMissingValue = false;
+  double MissingValue = -9999.0;
   std::string ProjectionRecord;
   int AreaMethod = AUTOMATIC_AREAS;
   bool WeightsTable = true;

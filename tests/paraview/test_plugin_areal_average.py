@@ -101,6 +101,18 @@ defaults = [fresh.GetPropertyValue(name) for name in ("StationIdArrayName", "Val
                                                       "TimeColumn", "MonthColumn", "ValueColumn")]
 if defaults != ["station_id", "value", "station_id", "time", "", "value"]:
     failures.append(f"a new filter's columns are {defaults}, not the documented defaults")
+# Use Missing Value (off) and Missing Value (-9999) reach the filter as set.
+if [fresh.UseMissingValue, fresh.MissingValue] != [0, -9999]:
+    failures.append(f"missing-value defaults {fresh.UseMissingValue}, {fresh.MissingValue}")
+# (A command the filter lacks is an error from the server as the values are pushed.)
+creation_errors.clear()
+observer = output_window.AddObserver(vtkCommand.ErrorEvent, on_error)
+fresh.UseMissingValue = 1
+fresh.MissingValue = -999
+fresh.UpdateVTKObjects()
+output_window.RemoveObserver(observer)
+if creation_errors:
+    failures.append(f"errors as the missing-value properties were pushed: {creation_errors}")
 if failures:
     print("FAIL:\n" + "\n".join(failures))
     sys.exit(1)

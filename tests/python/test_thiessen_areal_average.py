@@ -803,6 +803,60 @@ def test_blank_values_read_as_text_are_missing():
         assert_close(got, want, 1e-12 * abs(want), "areal mean with blanks as missing")
 
 
+def test_a_missing_value_code_is_missing_when_set_and_named_when_not():
+    """Many gauge records write -9999 where a value is missing. Averaged as a measurement, one such
+    value made a mean of -2548 without a word. With UseMissingValue on (MissingValue -9999) every
+    month's mean and StationsUsed must equal those of the table without those rows; left off, a
+    warning must count them and name the first row. The same for the gauges' own value array."""
+    coords, ids, ring, months = read_colorado()
+    coded, kept_months = {}, {}
+    for (year, month), values in sorted(months.items()):
+        coded[(year, month)] = {sid: (-9999.0 if k % 4 == 1 else v)
+                                for k, (sid, v) in enumerate(sorted(values.items()))}
+        kept_months[(year, month)] = {sid: v for sid, v in coded[(year, month)].items() if v != -9999.0}
+    count = sum(v == -9999.0 for values in coded.values() for v in values.values())
+    without, _ = summary_of(coords, ids, ring, observations_table(kept_months))
+    used, messages = summary_of(coords, ids, ring, observations_table(coded),
+                                UseMissingValue=True, MissingValue=-9999.0)
+    assert_that(not messages, f"errors: {messages}")
+    for name in ("Time", "StationsUsed", "StationsWeighted", "ArealMean"):
+        got, want = summary_column(used, name), summary_column(without, name)
+        assert_that(len(got) == len(want) and all(
+            abs(a - b) <= 1e-12 * max(1.0, abs(b)) for a, b in zip(got, want)),
+            f"{name} with -9999 as missing differs from the table without those rows")
+    f = vtkThiessenArealAverage()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetGaugesData(gauges_polydata(coords, ids))
+    f.SetCatchmentData(polygon([ring]))
+    f.SetObservationsData(observations_table(coded))
+    f.Update(1)
+    first_sid = sorted(months[min(months)].items())[1][0]
+    said = [w for w in warnings if "a common missing-value code" in w]
+    assert_that(len(said) == 1 and f"{count} observation value(s) are exactly -9999" in said[0]
+                and f"(the first in row 1, station {first_sid})" in said[0]
+                and "turn UseMissingValue on with MissingValue -9999" in said[0], f"warnings: {warnings}")
+    assert_that(min(summary_column(f, "ArealMean")) < -100, "left off, -9999 is averaged as a value")
+    # Without observations: the gauges' value array, one step.
+    values = [2.0] * len(coords)
+    values[3] = 9999.0
+    for use in (False, True):
+        g = vtkThiessenArealAverage()
+        warned = messages_of(g, vtkCommand.WarningEvent)
+        g.SetGaugesData(gauges_polydata(coords, ids, values))
+        g.SetCatchmentData(polygon([ring]))
+        g.SetUseMissingValue(use)
+        g.SetMissingValue(9999.0)
+        g.Update(1)
+        mean = summary_column(g, "ArealMean")[0]
+        coded_said = [w for w in warned if "exactly 9999" in w]
+        if use:
+            assert_close(mean, 2.0, 1e-12, "the gauge at 9999 is missing")
+            assert_that(not coded_said, f"no warning when it is used: {warned}")
+        else:
+            assert_that(len(coded_said) == 1 and f"of gauge 3 ({ids[3]})" in coded_said[0],
+                        f"warnings: {warned}")
+
+
 def test_bad_dates_and_months_are_named():
     coords, ids, ring, months = read_colorado()
     one = {(1963, 8): months[(1963, 8)]}
@@ -1403,6 +1457,7 @@ def test_an_area_method_that_is_no_choice_is_named():
 
 if __name__ == "__main__":
     run([test_four_symmetric_gauges_share_a_square,
+         test_a_missing_value_code_is_missing_when_set_and_named_when_not,
          test_colorado_months_match_a_brute_force_raster,
          test_missing_steps_and_unused_input_are_reported,
          test_values_of_a_co_located_gauge_that_are_not_used_are_listed,
