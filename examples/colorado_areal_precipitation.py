@@ -611,6 +611,10 @@ class InputFiles:
         """The line that reports the filter's warning `text`."""
         if re.match(r"\d+ (station id\(s\) of the observations|observation row\(s\))", text):
             return f"{self.observations}: {self.rows_as_lines(text)}"
+        if re.match(r"\d+ observation value\(s\) are exactly", text):
+            # (the script's option for the filter's UseMissingValue)
+            text = re.sub(r"turn UseMissingValue on with MissingValue (\S+)", r"give --missing-value \1", text)
+            return f"{self.observations}: {self.rows_as_lines(text)}"
         if re.match(r"\d+ (gauge\(s\)|station id\(s\) are given to more than one gauge)", text):
             return f"{self.stations}: {self.gauges_as_lines(text)}"
         if re.match(r"none of the \d+ gauges", text):

@@ -204,6 +204,10 @@ def test_missing_values_keep_their_months():
                                       "051294,1950,2,-0.5\n", "1950-02")
         assert_that("obs.csv: 2 observation(s) have a negative precipitation, used as given" in stderr
                     and "line(s) 2, 4" in stderr, f"negative values not named: {stderr}")
+        # -9999 is also named as a common missing-value code, by its line, with the script's option.
+        assert_that("obs.csv: 1 observation value(s) are exactly -9999, a common missing-value code, and "
+                    "averaged as measured values (the first in line 2, station 050848): if -9999 marks "
+                    "missing values, give --missing-value -9999" in stderr, f"the code not named: {stderr}")
         got = [(r["month"], r["stations_used"], float(r["areal_mean"])) for r in rows]
         assert_that(got[0] == ("1", "1", -9999.0) and got[1][1] == "2" and got[1][2] < 2.5,
                     f"negative values used as given: {got}")
