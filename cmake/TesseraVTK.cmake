@@ -3,11 +3,6 @@
 find_package(ParaView REQUIRED)
 find_package(Python3 REQUIRED COMPONENTS Interpreter Development)
 
-include(GNUInstallDirs)
-# Everything lands in build/lib and build/bin so that tests and examples find it in place.
-set(CMAKE_LIBRARY_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/lib)
-set(CMAKE_RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/bin)
-set(CMAKE_ARCHIVE_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/lib)
 set(BUILD_SHARED_LIBS ON)
 
 vtk_module_scan(
@@ -19,7 +14,7 @@ vtk_module_scan(
 vtk_module_build(
   MODULES ${tessera_modules}
   INSTALL_EXPORT TesseraFilters
-  CMAKE_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/tessera
+  CMAKE_DESTINATION ${TESSERA_CMAKE_DESTINATION}
   LIBRARY_DESTINATION ${CMAKE_INSTALL_LIBDIR}
   HEADERS_DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tessera)
 
@@ -31,12 +26,14 @@ vtk_module_wrap_python(
   WRAPPED_MODULES tessera_wrapped_modules
   PYTHON_PACKAGE tessera
   MODULE_DESTINATION ${TESSERA_PYTHON_DESTINATION}
-  CMAKE_DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/tessera
+  CMAKE_DESTINATION ${TESSERA_CMAKE_DESTINATION}
   LIBRARY_DESTINATION ${CMAKE_INSTALL_LIBDIR}
   INSTALL_HEADERS OFF
   BUILD_STATIC OFF)
 configure_file(${CMAKE_SOURCE_DIR}/vtk_filters/python/__init__.py
   ${CMAKE_BINARY_DIR}/${TESSERA_PYTHON_DESTINATION}/tessera/__init__.py COPYONLY)
+install(FILES ${CMAKE_SOURCE_DIR}/vtk_filters/python/__init__.py
+  DESTINATION ${TESSERA_PYTHON_DESTINATION}/tessera)
 set(TESSERA_PYTHONPATH ${CMAKE_BINARY_DIR}/${TESSERA_PYTHON_DESTINATION})
 
 # The ParaView plugin: build/lib/paraview-plugins/Tessera/Tessera.so

@@ -1,0 +1,78 @@
+// Uses both installed targets: the core's tessellation and the VTK filter, on the same points, and
+// checks them against each other and against the window's area. Prints "ok" and returns 0, or
+// names what failed and returns 1.
+#include "dirichlet_tessellation.h" // Tessera::core
+#include "tiles.h"
+#include "window.h"
+
+#include "vtkDirichletTessellation.h" // Tessera::Filters
+#include "vtkDoubleArray.h"
+#include "vtkCellData.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+int main()
+{
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<tessera::Point2> points(500);
+  vtkNew<vtkPoints> vtkPts;
+  vtkPts->SetDataTypeToDouble();
+  for (tessera::Point2& p : points)
+  {
+    p = { u(random), u(random) };
+    vtkPts->InsertNextPoint(p.x, p.y, 0.0);
+  }
+  tessera::DirichletTessellation core(tessera::Window::Rectangle(0.0, 1.0, 0.0, 1.0), points);
+  const tessera::TileSet tiles = tessera::ComputeTiles(core);
+
+  vtkNew<vtkPolyData> input;
+  input->SetPoints(vtkPts);
+  vtkNew<vtkDirichletTessellation> filter;
+  filter->SetInputData(input);
+  filter->SetWindowBounds(0.0, 1.0, 0.0, 1.0);
+  filter->Update();
+  vtkCellData* cells = filter->GetOutput()->GetCellData();
+  auto* areas = vtkDoubleArray::SafeDownCast(cells->GetArray("Area"));
+  vtkDataArray* ids = cells->GetArray("PointId");
+  if (!areas || !ids || areas->GetNumberOfTuples() != static_cast<vtkIdType>(tiles.Areas.size()))
+  {
+    std::printf("the filter gave %lld tiles, the core %zu\n",
+      areas ? static_cast<long long>(areas->GetNumberOfTuples()) : -1LL,
+      tiles.Areas.size());
+    return 1;
+  }
+  std::vector<double> coreArea(points.size(), -1.0);
+  for (std::size_t t = 0; t < tiles.Areas.size(); ++t)
+  {
+    coreArea[static_cast<std::size_t>(tiles.PointIds[t])] = tiles.Areas[t];
+  }
+  double sum = 0.0;
+  for (vtkIdType c = 0; c < areas->GetNumberOfTuples(); ++c)
+  {
+    const double area = areas->GetValue(c);
+    const auto id = static_cast<std::size_t>(ids->GetTuple1(c));
+    sum += area;
+    if (id >= points.size() || std::abs(area - coreArea[id]) > 1e-12 * area)
+    {
+      std::printf("point %zu: the filter's tile area %.17g, the core's %.17g\n",
+        id,
+        area,
+        id < points.size() ? coreArea[id] : -1.0);
+      return 1;
+    }
+  }
+  if (std::abs(sum - 1.0) > 1e-12)
+  {
+    std::printf("the tiles' areas sum to %.17g, not the window's 1\n", sum);
+    return 1;
+  }
+  std::printf("ok\n");
+  return 0;
+}

@@ -1,0 +1,33 @@
+# ctest `filters.install`: cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DPYTHON=... -P
+# Installs the build tree into WORK_DIR/prefix, then builds and runs tests/install (a project of a
+# user's own that finds the installed Tessera) and imports the installed Python package.
+function(run what)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "${what} failed (${status}):\n${out}\n${err}")
+  endif()
+  set(output "${out}" PARENT_SCOPE)
+endfunction()
+
+file(REMOVE_RECURSE ${WORK_DIR})
+set(prefix ${WORK_DIR}/prefix)
+run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+run("configuring the consumer" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/install -B ${WORK_DIR}/build
+  -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix})
+run("building the consumer" ${CMAKE_COMMAND} --build ${WORK_DIR}/build)
+run("running the consumer" ${WORK_DIR}/build/consumer)
+if(NOT output STREQUAL "ok\n")
+  message(FATAL_ERROR "the consumer printed: ${output}")
+endif()
+# The installed Python package, alone on the path (not the build tree's).
+# (A script file: a semicolon in an argument would split it as a CMake list.)
+file(WRITE ${WORK_DIR}/import.py "import os\nimport tessera\n"
+  "from tessera import vtkDirichletTessellation\n"
+  "vtkDirichletTessellation()\nprint(os.path.dirname(tessera.__file__))\n")
+run("importing the installed package" ${CMAKE_COMMAND} -E env PYTHONPATH=${prefix}/python
+  ${PYTHON} ${WORK_DIR}/import.py)
+string(STRIP "${output}" where)
+if(NOT where STREQUAL "${prefix}/python/tessera")
+  message(FATAL_ERROR "tessera was imported from ${where}, not ${prefix}/python/tessera")
+endif()
+message(STATUS "installed, found, built and run from ${prefix}")
