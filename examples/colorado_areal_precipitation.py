@@ -226,7 +226,9 @@ def observation_step(row, path, line):
         where = f"{path}:{line}: column 'day': {step[-1]}"
     else:
         columns = ", ".join(name for name in row if name is not None)
-        csv_input.fail(f"{path}: the observations file has no columns year and month, nor a date column "
+        lacking = " and ".join(name for name in ("year", "month") if name not in row)
+        csv_input.fail(f"{path}: the observations file has no column{'s' if ' and ' in lacking else ''} {lacking}, "
+                       "nor a date column "
                        f"(it needs station_id, year, month, precip, with day for daily values and hour for "
                        f"hourly ones, or station_id, date, precip; its header: {columns})")
     if not (1 <= step[0] and 1 <= step[1] <= 12) or (len(step) == 3 and not is_calendar_day(*step)):
@@ -590,8 +592,11 @@ class InputFiles:
         gauge = re.match(r"gauge (\d+)\b", text)
         if gauge:
             g = int(gauge.group(1))
-            where = f":{self.gauge_lines[g]}" if g < len(self.gauge_lines) else ""
-            return f"{self.stations}{where}: {text}"
+            if g >= len(self.gauge_lines):
+                return f"{self.stations}: {text}"
+            # (the filter's gauge index counts from 0; the file's line is what to look at)
+            text = re.sub(r"^gauge \d+ \(station ([^)]*)\)", r"station \1", text)
+            return f"{self.stations}:{self.gauge_lines[g]}: {text}"
         row = re.match(r"observation row (\d+): (.*)", text)
         if row and self.row_line(int(row.group(1))):
             return f"{self.observations}:{self.row_line(int(row.group(1)))}: {row.group(2)}"

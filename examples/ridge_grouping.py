@@ -8,7 +8,7 @@ along each ridge contour (Node) and described by rational Gaussian curves.
 
 Writes into --out:
   fiji_groups.png        points coloured by group, ridge contours, fitted curves (km)
-  fiji_points.vtp        output 0: points with GroupId and Node (+ depth, mag)
+  fiji_points.vtp        output 0: points with GroupId, Node and ContourDistance (+ depth_km, mag)
   fiji_contours.vtp      output 1: ridge contours (ContourId, Closed, Length)
   fiji_curves.vtp        output 2: fitted curves (GroupId, Closed)
   fiji_field.vti         output 3: the field image (Field, MinorRidge, MajorRidge)

@@ -781,6 +781,7 @@ def test_daily_observations_give_daily_means():
             ("station_id,year,month,day,precip\nN1,2001,2,29,1\n", {}, "column 'day': 29 is not a day of 2001-02"),
             ("station_id,date,year,month,precip\nN1,2001-02-03,2001,2,1\n", {}, "both a date column and year/month"),
             ("station_id,when,precip\nN1,2001-02-03,1\n", {}, "no columns year and month, nor a date column"),
+            ("station_id,year,precip\nN1,2001,1\n", {}, "no column month, nor a date column"),
             ("station_id,year,month,precip\nN1,2001,2,1\n", {"day": "2001-02-01"},
              f"--day 2001-02-01: the observations of {os.path.join(directory, 'bad.csv')} are monthly (use --month)"),
             ("station_id,date,precip\nN1,2001-02-03,1\n", {"day": "2001-02-30"},
@@ -1104,7 +1105,7 @@ def test_the_filters_errors_name_the_file_and_line():
         header_only = write(out, "header_only.csv", "station_id,year,month,precip\n")
         cases = [
             (("--stations", bad_gauge),
-             f"{bad_gauge}:5: gauge 3 (station 004) has an invalid longitude/latitude (-0.5, 95)"),
+             f"{bad_gauge}:5: station 004 has an invalid longitude/latitude (-0.5, 95)"),
             (("--catchment", bow_tie),
              f"{bow_tie}: ring 0 is self-intersecting: segment 0 and segment 2 touch or cross"),
             (("--catchment", metres),
@@ -1208,7 +1209,7 @@ def test_the_messages_map_to_files_and_lines():
         (files.error("observation row 1: 'x' in column 'precip' is not a number"),
          "o.csv:4: 'x' in column 'precip' is not a number"),
         (files.error("gauge 2 (station C): point (200, 10) is 60 degrees of longitude from the central meridian"),
-         "s.csv:5: gauge 2 (station C): point (200, 10) is 60 degrees of longitude from the central meridian"),
+         "s.csv:5: station C: point (200, 10) is 60 degrees of longitude from the central meridian"),
         (files.error("none of the 2 observation rows can be used (no time step to average): 0 have no station id "
                      "or no time, the others name station ids that no gauge has: A (2 rows from row 0)"),
          "o.csv: none of the 2 observation rows can be used (no time step to average): 0 have no station id "
@@ -1418,6 +1419,37 @@ def test_every_script_takes_help():
                 f"importing csv_input: {done.returncode} {done.stdout!r} {done.stderr!r}")
 
 
+def test_the_shell_scripts_take_help_anywhere_before_any_work():
+    # scripts/demo --no-plots --help ran the setup (root's apt-get) and the whole build before the
+    # example printed its help. Each script answers --help (or -h) wherever it stands, at once
+    # (a PATH without apt-get, cmake or ninja: any work would fail); demo adds the example's help.
+    root = os.path.dirname(EXAMPLES)
+    environment = dict(os.environ, PATH="/nonexistent")
+    for script in ("build", "demo", "setup", "test"):
+        for args in (["--help"], ["--out", "x", "-h"]):
+            done = subprocess.run(["/bin/bash", os.path.join(root, "scripts", script)] + args,
+                                  capture_output=True, text=True, env=environment, timeout=60)
+            assert_that(done.returncode == 0 and done.stdout.startswith(f"usage: scripts/{script}"),
+                        f"scripts/{script} {args}: {done.returncode} {done.stdout!r} {done.stderr!r}")
+            if script == "demo":
+                assert_that("usage: colorado_areal_precipitation.py" in done.stdout,
+                            f"demo's help lacks the example's: {done.stdout!r}")
+
+
+def test_every_benchmark_says_what_it_measures():
+    # bench_tessellation and bench_ridge_grouping --help printed only Google Benchmark's flags.
+    # Each benchmark program answers --help (and -h) with what it measures, at once, running none.
+    programs = os.path.join(os.environ["TESSERA_BUILD_DIR"], "bin")
+    benches = sorted(name for name in os.listdir(programs) if name.startswith("bench_"))
+    for name in benches:
+        for flag in ("--help", "-h"):
+            done = subprocess.run([os.path.join(programs, name), flag], capture_output=True, text=True,
+                                  timeout=60)
+            first = done.stdout.splitlines()[0] if done.stdout else ""
+            assert_that(done.returncode == 0 and first and not first.startswith("benchmark ["),
+                        f"{name} {flag}: {done.returncode} {done.stdout[:200]!r} {done.stderr[:200]!r}")
+
+
 def test_without_tessera_on_the_path_the_scripts_say_how_to_run():
     environment = dict(os.environ, PYTHONPATH="")
     done = subprocess.run([sys.executable, os.path.join(EXAMPLES, "project_gauges.py"), "--out",
@@ -1464,4 +1496,6 @@ if __name__ == "__main__":
          test_progress_into_a_log_is_lines_of_its_own,
          test_the_readme_python_runs,
          test_every_script_takes_help,
+         test_the_shell_scripts_take_help_anywhere_before_any_work,
+         test_every_benchmark_says_what_it_measures,
          test_without_tessera_on_the_path_the_scripts_say_how_to_run])
