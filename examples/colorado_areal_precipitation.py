@@ -461,6 +461,16 @@ def read_catchment(path, feature=None):
             print(f"{path}: declares the projected coordinate system "
                   f"{name.group(1) if name else declared[:60]!r}; its coordinates are read as "
                   "longitude/latitude in degrees (WGS84)", file=sys.stderr)
+        # A geographic system on an older datum (NAD27, ED50, ...: an ellipsoid other than WGS84's
+        # or GRS80's, whose semi-major axis modern datums share) differs from WGS84 by tens to
+        # hundreds of metres, which reading its lon/lat as WGS84's leaves in place.
+        ellipsoid = re.search(r'(?:SPHEROID|ELLIPSOID)\["([^"]*)",\s*([0-9.eE+]+)', declared)
+        if ellipsoid and abs(float(ellipsoid.group(2)) - 6378137.0) > 0.5:
+            datum = re.search(r'DATUM\["([^"]*)"', declared)
+            print(f"{path}: declares the datum {datum.group(1) if datum else ellipsoid.group(1)!r} (ellipsoid "
+                  f"{ellipsoid.group(1)!r}); its longitudes/latitudes are read as WGS84 ones, without the "
+                  "datum shift of tens to hundreds of metres: reproject the file to WGS84 (e.g. ogr2ogr "
+                  "-t_srs EPSG:4326) where that matters", file=sys.stderr)
     return output, rings
 
 

@@ -1060,6 +1060,19 @@ def test_a_catchment_declared_projected_is_named():
                     "read as longitude/latitude in degrees (WGS84)" in stderr_messages(stderr), f"{stderr}")
         _, stderr = run_colorado(out, stations=stations, observations=observations, catchment=catchment, plots=False)
         assert_that("declares" not in stderr, f"the lon/lat basin: {stderr}")
+        # A geographic system on an older datum (NAD27, Clarke 1866) is named, with the shift it
+        # leaves; one on NAD83 (GRS80, within a metre or two of WGS84) is not.
+        for code, named in (("4267", True), ("4269", False), ("4326", False)):
+            declared = dict(LAKE_BASIN, crs={"type": "name", "properties": {"name": f"urn:ogc:def:crs:EPSG::{code}"}})
+            geographic = write(out, f"epsg{code}.geojson", json.dumps(declared))
+            _, stderr = run_colorado(out, stations=stations, observations=observations, catchment=geographic,
+                                     plots=False, what=f"EPSG:{code}")
+            said = [m for m in stderr_messages(stderr) if "declares the datum" in m]
+            assert_that(len(said) == int(named), f"EPSG:{code}: {stderr}")
+            if named:
+                assert_that(said[0].startswith(f"{geographic}: declares the datum 'North_American_Datum_1927' "
+                                               "(ellipsoid 'Clarke 1866'); its longitudes/latitudes are read as "
+                                               "WGS84 ones"), f"{said[0]}")
 
 
 def test_observations_of_no_gauge_end_the_run():
