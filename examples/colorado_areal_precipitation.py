@@ -216,6 +216,11 @@ def observation_step(row, path, line):
             csv_input.fail(f"{where} is not on the hour: the steps are hours (HH:00), days or months, so give "
                            "each hour's total at its hour")
     elif "year" in row and "month" in row:
+        year = (row.get("year") or "").strip()
+        if re.fullmatch(r"[0-9]{1,2}(?:[.,]0*)?", year):
+            # (99 would be AD 99, and 00 no year at all: most likely a year shortened to two digits)
+            csv_input.fail(f"{path}:{line}: column 'year': {year!r} has {len(year.split('.')[0].split(',')[0])} "
+                           "digit(s): write years in full (1999, 2000)")
         step = (csv_input.integer(row, "year", path, line, 1, 9999),
                 csv_input.integer(row, "month", path, line, 1, 12))
         if "hour" in row and "day" not in row:
