@@ -414,6 +414,32 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     return table, steps, reporting, lines
 
 
+def zip_member(path):
+    """The GDAL path of the catchment in a zip file, as such files are often downloaded: the one
+    GeoJSON, KML or GeoPackage file in it, or else the zip as a folder of shapefiles (/vsizip/);
+    ends the script naming the files when it holds several of one kind or none."""
+    import zipfile
+
+    try:
+        names = [n for n in zipfile.ZipFile(path).namelist() if not n.endswith("/")]
+    except (OSError, zipfile.BadZipFile) as e:
+        csv_input.fail(f"{path}: cannot be read as a zip file ({e})")
+    kinds = {}
+    for name in names:
+        extension = os.path.splitext(name)[1].lower()
+        kinds.setdefault(".json" if extension == ".geojson" else extension, []).append(name)
+    root = "/vsizip/" + os.path.abspath(path)
+    for extension in (".json", ".kml", ".gpkg"):
+        found = kinds.get(extension, [])
+        if len(found) == 1 and not kinds.get(".shp"):
+            return f"{root}/{found[0]}"
+    if len(kinds.get(".shp", [])) == 1:
+        return f"{root}/{kinds['.shp'][0]}"
+    shown = ", ".join(names[:10]) + (", ..." if len(names) > 10 else "")
+    csv_input.fail(f"{path}: holds no single catchment file (one shapefile, GeoJSON, KML or GeoPackage) "
+                   f"to read: {shown or 'no files'}; unzip it and give the file")
+
+
 def read_catchment(path, feature=None):
     """The catchment (a vtkGDALVectorReader's output: a multiblock with a block per feature, or the
     features chosen by `feature`, "ATTRIBUTE=VALUE") and its rings (catchment_rings); ends the
@@ -427,6 +453,7 @@ def read_catchment(path, feature=None):
                        "shapefile polygon in lon/lat)")
     if not os.path.isfile(path):
         csv_input.fail(f"{path}: no such catchment file")
+    source = zip_member(path) if path.lower().endswith(".zip") else path
     # A shapefile is several files: GDAL's own message for a missing one is a raw log line.
     stem, extension = os.path.splitext(path)
     if extension.lower() == ".shp":
@@ -436,7 +463,7 @@ def read_catchment(path, feature=None):
     reader = vtkGDALVectorReader()
     errors = []
     reader.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: errors.append(event))
-    reader.SetFileName(path)
+    reader.SetFileName(source)
     reader.Update()
     output = reader.GetOutput()
     rings = catchment_rings(output) if output else []
@@ -1120,8 +1147,9 @@ def main(argv=None):
                              "date (YYYY-MM-DD HH:00), precip; a date column of YYYY-MM gives months; "
                              f"{csv_input.SEPARATORS_TEXT}")
     parser.add_argument("--catchment", default=os.path.join(DATA, "colorado_boundary.geojson"),
-                        help="catchment polygon (GeoJSON or shapefile, lon/lat); every polygon "
-                             "feature of the file is taken, unless --feature chooses")
+                        help="catchment polygon (GeoJSON or shapefile, lon/lat, or a zip file "
+                             "holding one); every polygon feature of the file is taken, unless "
+                             "--feature chooses")
     parser.add_argument("--feature", metavar="ATTRIBUTE=VALUE",
                         help="take only the catchment file's features whose attribute has this "
                              "value, such as HUC8=14010001 (whole numbers are written without .0)")

@@ -1048,6 +1048,34 @@ def test_small_values_and_a_catchment_across_the_antimeridian():
         assert_that(all(lon_min < x < lon_max for x in lon), f"gauges at {lon}, map {lon_min} .. {lon_max}")
 
 
+def test_a_catchment_in_a_zip_file_is_read_from_it():
+    # A zipped catchment (a shapefile's files or a GeoJSON, as downloads come) was "no polygon,
+    # drop the measures". It gives the same means as the file itself; a zip of several candidate
+    # files, or of none, names what it holds.
+    import zipfile
+
+    with tempfile.TemporaryDirectory() as out:
+        catchment, stations, observations = write_lake_basin(out)
+        run_colorado(os.path.join(out, "plain"), stations=stations, observations=observations, catchment=catchment,
+                     plots=False)
+        zipped = os.path.join(out, "basin.zip")
+        with zipfile.ZipFile(zipped, "w") as z:
+            z.write(catchment, "data/basin.geojson")
+            z.writestr("data/README.txt", "the basin\n")
+        run_colorado(os.path.join(out, "zipped"), stations=stations, observations=observations, catchment=zipped,
+                     plots=False, what="a zipped GeoJSON")
+        plain, read = (open(os.path.join(out, d, "areal_mean.csv")).read() for d in ("plain", "zipped"))
+        assert_that(plain == read and plain.count("\n") == 3, f"zipped {read!r} against plain {plain!r}")
+        two = os.path.join(out, "two.zip")
+        with zipfile.ZipFile(two, "w") as z:
+            z.write(catchment, "a.geojson")
+            z.write(catchment, "b.json")
+        _, stderr = run_colorado(os.path.join(out, "two"), stations=stations, observations=observations,
+                                 catchment=two, status=1, plots=False, what="two GeoJSON files zipped")
+        assert_that(f"{two}: holds no single catchment file (one shapefile, GeoJSON, KML or GeoPackage) to read: "
+                    "a.geojson, b.json; unzip it and give the file" in stderr, f"{stderr}")
+
+
 def test_a_catchment_declared_projected_is_named():
     # Its coordinates are read as lon/lat whatever the file declares; a projected system (here a
     # GeoJSON "crs" of UTM 60S, as a shapefile's .prj gives it) is named on a line of its own.
@@ -1500,6 +1528,7 @@ if __name__ == "__main__":
          test_the_field_separator_and_the_decimal_mark,
          test_small_values_and_a_catchment_across_the_antimeridian,
          test_observations_of_no_gauge_end_the_run,
+         test_a_catchment_in_a_zip_file_is_read_from_it,
          test_a_catchment_declared_projected_is_named,
          test_the_filters_errors_name_the_file_and_line,
          test_the_filters_warnings_are_lines_of_their_own,
