@@ -5,11 +5,11 @@
 #include "radial_field.h"
 #include "ridge_grouping.h"
 
+#include "benchmark_main.h"
+
 #include <benchmark/benchmark.h>
 
 #include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <random>
 #include <vector>
 
@@ -108,28 +108,12 @@ void Sizes(benchmark::internal::Benchmark* b)
 
 BENCHMARK(BM_FastField)->Apply(Sizes)->Unit(benchmark::kMillisecond)->Iterations(3);
 BENCHMARK(BM_RidgeGroupingTotal)->Apply(Sizes)->Unit(benchmark::kMillisecond)->Iterations(3);
-// --help says what this program measures before Google Benchmark lists its options.
 int main(int argc, char** argv)
 {
-  for (int i = 1; i < argc; ++i)
-  {
-    if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0)
-    {
-      static char help[] = "--help"; // (Google Benchmark knows only the long form)
-      argv[i] = help;
-      std::printf("%s\n\n",
-        "Ridge grouping speed: the FFT field alone and the whole pipeline (field, ridges, "
-        "contours,\npartition, RaG curves) against the number of points and the image size "
-        "(target: 1M points on\n1024 x 1024 in at most 2 s). Run a Release build. Google "
-        "Benchmark's options follow.");
-    }
-  }
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv))
-  {
-    return 1;
-  }
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return RunBenchmarks(argc,
+    argv,
+    "Ridge grouping speed: the FFT field alone and the whole pipeline (field, ridges, "
+    "contours,\npartition, RaG curves) against the number of points and the image size "
+    "(target: 1M points on\n1024 x 1024 in at most 2 s). Run a Release build. Google "
+    "Benchmark's options follow.");
 }

@@ -17,11 +17,11 @@
 
 #include "test_support.h" // the point sets the tests use
 
+#include "benchmark_main.h"
+
 #include <benchmark/benchmark.h>
 
 #include <cmath>
-#include <cstdio>
-#include <cstring>
 #include <random>
 #include <vector>
 
@@ -273,29 +273,13 @@ BENCHMARK(CgalDelaunay)->Apply(Sizes);
 BENCHMARK(CgalDelaunay)->Apply(Large);
 #endif
 
-// --help says what this program measures before Google Benchmark lists its options.
 int main(int argc, char** argv)
 {
-  for (int i = 1; i < argc; ++i)
-  {
-    if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0)
-    {
-      static char help[] = "--help"; // (Google Benchmark knows only the long form)
-      argv[i] = help;
-      std::printf("%s\n\n",
-        "The Green-Sibson core against CGAL's Delaunay_triangulation_2 in one run: "
-        "Delaunay\nconstruction, tiles with areas, contiguity graph and bytes per point, for 1e4 "
-        ".. 1e7 uniform\npoints and a 1000 x 1000 lattice (ns/pt: wall time per point; B/pt: bytes "
-        "of structure).\nRun a Release build. Google Benchmark's options follow "
-        "(--benchmark_filter=Cgal|Tessera ...).");
-    }
-  }
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv))
-  {
-    return 1;
-  }
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return RunBenchmarks(argc,
+    argv,
+    "The Green-Sibson core against CGAL's Delaunay_triangulation_2 in one run: "
+    "Delaunay\nconstruction, tiles with areas, contiguity graph and bytes per point, for 1e4 "
+    ".. 1e7 uniform\npoints and a 1000 x 1000 lattice (ns/pt: wall time per point; B/pt: bytes "
+    "of structure).\nRun a Release build. Google Benchmark's options follow "
+    "(--benchmark_filter=Cgal|Tessera ...).");
 }
