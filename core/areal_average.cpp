@@ -1217,11 +1217,10 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   }
   catch (const InputError&)
   {
-    // The rings were valid in lon/lat, so they cross only once projected: the usual cause is a
-    // catchment cut in two at the 180th meridian (as GeoJSON writes it) whose halves, which meet
-    // along it in the plane, have vertices at different latitudes there (halves with the same
-    // ones share the meridian exactly, and are accepted). Named in the caller's segments, not
-    // the densified pieces'.
+    // The rings were valid in lon/lat (in one turn of the globe, RingsInOneTurn, with contacts
+    // made vertices), so they cross only once projected: edges straight in lon/lat, cut into
+    // pieces and projected, that pass within rounding of each other. Named in the caller's
+    // segments, not the densified pieces'.
     try
     {
       ValidateRings(offsets, projected, &segmentOf);
@@ -1230,9 +1229,9 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     {
       throw InputError("the catchment meets itself once projected, though not in lon/lat: " +
         std::string(e.what()) +
-        ". The parts of a catchment cut at the 180th meridian need vertices at the same "
-        "latitudes on both sides of it; or give it as one ring whose longitudes run on past 180 "
-        "(e.g. 179 to 181)");
+        ". Its edges, straight in lon/lat, are cut into pieces and projected: rings or edges "
+        "that pass within rounding of each other can meet so; make them meet at a vertex, or "
+        "move them apart");
     }
     throw;
   }

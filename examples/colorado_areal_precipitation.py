@@ -217,10 +217,10 @@ def observation_step(row, path, line):
                            "each hour's total at its hour")
     elif "year" in row and "month" in row:
         year = (row.get("year") or "").strip()
-        if re.fullmatch(r"[0-9]{1,2}(?:[.,]0*)?", year):
+        if re.fullmatch(r"\+?0*[0-9]{1,2}(?:[.,]0*)?", year):
             # (99 would be AD 99, and 00 no year at all: most likely a year shortened to two digits)
-            csv_input.fail(f"{path}:{line}: column 'year': {year!r} has {len(year.split('.')[0].split(',')[0])} "
-                           "digit(s): write years in full (1999, 2000)")
+            csv_input.fail(f"{path}:{line}: column 'year': {year!r} is a year below 100: write years in full "
+                           "(1999, 2000)")
         step = (csv_input.integer(row, "year", path, line, 1, 9999),
                 csv_input.integer(row, "month", path, line, 1, 12))
         if "hour" in row and "day" not in row:
@@ -415,27 +415,22 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
 
 
 def zip_member(path):
-    """The GDAL path of the catchment in a zip file, as such files are often downloaded: the one
-    GeoJSON, KML or GeoPackage file in it, or else the zip as a folder of shapefiles (/vsizip/);
-    ends the script naming the files when it holds several of one kind or none."""
+    """The GDAL path (/vsizip/) of the catchment file in a zip file, as catchments are often
+    downloaded: its one shapefile, GeoJSON, KML or GeoPackage file (a shapefile's .shx, .dbf and
+    .prj beside it; macOS's __MACOSX copies and hidden files left aside); ends the script naming
+    the files when it holds several such files or none."""
     import zipfile
 
     try:
-        names = [n for n in zipfile.ZipFile(path).namelist() if not n.endswith("/")]
+        names = [n for n in zipfile.ZipFile(path).namelist() if not n.endswith("/")
+                 and not n.startswith("__MACOSX/") and not os.path.basename(n).startswith(".")]
     except (OSError, zipfile.BadZipFile) as e:
         csv_input.fail(f"{path}: cannot be read as a zip file ({e})")
-    kinds = {}
-    for name in names:
-        extension = os.path.splitext(name)[1].lower()
-        kinds.setdefault(".json" if extension == ".geojson" else extension, []).append(name)
-    root = "/vsizip/" + os.path.abspath(path)
-    for extension in (".json", ".kml", ".gpkg"):
-        found = kinds.get(extension, [])
-        if len(found) == 1 and not kinds.get(".shp"):
-            return f"{root}/{found[0]}"
-    if len(kinds.get(".shp", [])) == 1:
-        return f"{root}/{kinds['.shp'][0]}"
-    shown = ", ".join(names[:10]) + (", ..." if len(names) > 10 else "")
+    candidates = [n for n in names if os.path.splitext(n)[1].lower() in (".shp", ".geojson", ".json", ".kml", ".gpkg")]
+    if len(candidates) == 1:
+        return f"/vsizip/{os.path.abspath(path)}/{candidates[0]}"
+    listed = candidates or names
+    shown = ", ".join(listed[:10]) + (", ..." if len(listed) > 10 else "")
     csv_input.fail(f"{path}: holds no single catchment file (one shapefile, GeoJSON, KML or GeoPackage) "
                    f"to read: {shown or 'no files'}; unzip it and give the file")
 

@@ -542,16 +542,24 @@ struct CodeSightings
   std::size_t First = 0;
 };
 
-/// With `use`, sets the values equal to `missing` to NaN (missing). Without, finds the values
-/// exactly equal to a common missing-value code, which would be averaged as measurements.
+/// With `use`, sets the values equal to `missing` to NaN (missing); throws InputError for a
+/// MissingValue of 0 (every dry step would be missing) or NaN (missing anyway: nothing would
+/// change). Then finds the values exactly equal to a common missing-value code (other than the
+/// one used), which would be averaged as measurements.
 CodeSightings TakeMissingValues(std::vector<double>& values, bool use, double missing)
 {
-  CodeSightings most;
+  if (use && (missing == 0.0 || std::isnan(missing)))
+  {
+    throw tessera::InputError("MissingValue " + tessera::NumberText(missing) +
+      (missing == 0.0 ? " would make every zero value (a dry step) missing"
+                      : " changes nothing: NaN values are missing anyway") +
+      "; give the number that marks missing values, or turn UseMissingValue off");
+  }
   if (use)
   {
     std::replace(values.begin(), values.end(), missing, std::numeric_limits<double>::quiet_NaN());
-    return most;
   }
+  CodeSightings most;
   for (const double code : { -9999.0, -999.0, 9999.0, 99999.0 })
   {
     const auto first = std::find(values.begin(), values.end(), code);

@@ -241,9 +241,9 @@ public:
   /**
    * A number that marks missing values, such as -9999 in many gauge records, taken as missing
    * (as NaN is) in the value column of the observations or, without them, in the gauges' value
-   * array, when UseMissingValue is on (default off, MissingValue default -9999). Left off, a
-   * value of exactly -9999, -999, 9999 or 99999 (common codes) is averaged as a measurement
-   * and a warning counts them and names the first.
+   * array, when UseMissingValue is on (default off, MissingValue default -9999; 0 and NaN are
+   * errors). A value of exactly -9999, -999, 9999 or 99999 (common codes) that is not the one
+   * used is averaged as a measurement, and a warning counts them and names the first.
    */
   vtkSetMacro(UseMissingValue, bool);
   vtkGetMacro(UseMissingValue, bool);

@@ -504,6 +504,25 @@ TEST(ArealAverage, ACatchmentCutAtTheAntimeridianIsItsTwoHalvesTogether)
     }
     EXPECT_NEAR(a.Mean, b.Mean, 1e-9);
   }
+  // Halves with vertices at different latitudes along the meridian (the western half has two
+  // more there) were refused as meeting themselves once projected; in one turn of the globe they
+  // share the meridian in lon/lat, each one's vertices become the other's, and they are the
+  // square again.
+  const std::vector<std::size_t> uneven{ 0, 4, 10 };
+  const std::vector<Point2> unevenRings{ { 179.0, -1.0 },
+    { 180.0, -1.0 },
+    { 180.0, 1.0 },
+    { 179.0, 1.0 },
+    { -180.0, -1.0 },
+    { -179.0, -1.0 },
+    { -179.0, 1.0 },
+    { -180.0, 1.0 },
+    { -180.0, 0.3 },
+    { -180.0, -0.2 } };
+  ThiessenArealAverage joined(gauges, one, whole);
+  ThiessenArealAverage halves(gauges, uneven, unevenRings);
+  EXPECT_NEAR(halves.CatchmentAreaM2(), joined.CatchmentAreaM2(), 1e-9 * joined.CatchmentAreaM2());
+  EXPECT_NEAR(halves.Step({ 1.0, 2.0, 4.0 }).Mean, joined.Step({ 1.0, 2.0, 4.0 }).Mean, 1e-9);
 }
 
 TEST(ArealAverage, ARingThatJumpsTheAntimeridianIsTheRingRunningOnPastIt)

@@ -1,4 +1,6 @@
-# ctest `filters.install`: cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DPYTHON=... -P
+# ctest `filters.install`: cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DPYTHON=...
+# -DGENERATOR=... -P
+cmake_minimum_required(VERSION 3.16) # (policies: if() compares quoted strings as strings)
 # Installs the build tree into WORK_DIR/prefix, then builds and runs tests/install (a project of a
 # user's own that finds the installed Tessera) and imports the installed Python package.
 function(run what)
@@ -12,13 +14,21 @@ endfunction()
 file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
 run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
-run("configuring the consumer" ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/install -B ${WORK_DIR}/build
-  -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix})
-run("building the consumer" ${CMAKE_COMMAND} --build ${WORK_DIR}/build)
-run("running the consumer" ${WORK_DIR}/build/consumer)
-if(NOT output STREQUAL "ok\n")
-  message(FATAL_ERROR "the consumer printed: ${output}")
-endif()
+# Both targets; then the core alone, from a C++-only project that must not need ParaView.
+foreach(consumer IN ITEMS consumer core_consumer)
+  if(consumer STREQUAL "consumer")
+    set(project ${SOURCE_DIR}/tests/install)
+  else()
+    set(project ${SOURCE_DIR}/tests/install/core_only)
+  endif()
+  run("configuring ${consumer}" ${CMAKE_COMMAND} -S ${project} -B ${WORK_DIR}/${consumer}
+    -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix})
+  run("building ${consumer}" ${CMAKE_COMMAND} --build ${WORK_DIR}/${consumer})
+  run("running ${consumer}" ${WORK_DIR}/${consumer}/${consumer})
+  if(NOT output STREQUAL "ok\n")
+    message(FATAL_ERROR "${consumer} printed: ${output}")
+  endif()
+endforeach()
 # The installed Python package, alone on the path (not the build tree's).
 # (A script file: a semicolon in an argument would split it as a CMake list.)
 file(WRITE ${WORK_DIR}/import.py "import os\nimport tessera\n"

@@ -783,8 +783,9 @@ def test_daily_observations_give_daily_means():
             ("station_id,when,precip\nN1,2001-02-03,1\n", {}, "no columns year and month, nor a date column"),
             ("station_id,year,precip\nN1,2001,1\n", {}, "no column month, nor a date column"),
             ("station_id,year,month,precip\nN1,00,1,1\n", {},
-             "column 'year': '00' has 2 digit(s): write years in full (1999, 2000)"),
-            ("station_id,year,month,precip\nN1,99,1,1\n", {}, "column 'year': '99' has 2 digit(s)"),
+             "column 'year': '00' is a year below 100: write years in full (1999, 2000)"),
+            ("station_id,year,month,precip\nN1,99,1,1\n", {}, "column 'year': '99' is a year below 100"),
+            ("station_id,year,month,precip\nN1,099,1,1\n", {}, "column 'year': '099' is a year below 100"),
             ("station_id,year,month,precip\nN1,2001,2,1\n", {"day": "2001-02-01"},
              f"--day 2001-02-01: the observations of {os.path.join(directory, 'bad.csv')} are monthly (use --month)"),
             ("station_id,date,precip\nN1,2001-02-03,1\n", {"day": "2001-02-30"},
@@ -1049,9 +1050,9 @@ def test_small_values_and_a_catchment_across_the_antimeridian():
 
 
 def test_a_catchment_in_a_zip_file_is_read_from_it():
-    # A zipped catchment (a shapefile's files or a GeoJSON, as downloads come) was "no polygon,
-    # drop the measures". It gives the same means as the file itself; a zip of several candidate
-    # files, or of none, names what it holds.
+    # A zipped catchment (as downloads come) was "no polygon, drop the measures". A zipped GeoJSON
+    # (with macOS's __MACOSX copy beside it) gives the same means as the file itself; a zip of
+    # several candidate files names them.
     import zipfile
 
     with tempfile.TemporaryDirectory() as out:
@@ -1062,6 +1063,7 @@ def test_a_catchment_in_a_zip_file_is_read_from_it():
         with zipfile.ZipFile(zipped, "w") as z:
             z.write(catchment, "data/basin.geojson")
             z.writestr("data/README.txt", "the basin\n")
+            z.writestr("__MACOSX/data/._basin.geojson", "macOS's resource fork\n")
         run_colorado(os.path.join(out, "zipped"), stations=stations, observations=observations, catchment=zipped,
                      plots=False, what="a zipped GeoJSON")
         plain, read = (open(os.path.join(out, d, "areal_mean.csv")).read() for d in ("plain", "zipped"))
@@ -1478,6 +1480,15 @@ def test_the_shell_scripts_take_help_anywhere_before_any_work():
             if script == "demo":
                 assert_that("usage: colorado_areal_precipitation.py" in done.stdout,
                             f"demo's help lacks the example's: {done.stdout!r}")
+        # An argument that only contains " -h " is no help flag (the script then starts its work,
+        # which fails here at once); demo run from its own folder finds the example.
+        done = subprocess.run(["/bin/bash", os.path.join(root, "scripts", script), "--out", "a -h b"],
+                              capture_output=True, text=True, env=environment, timeout=60)
+        assert_that(not done.stdout.startswith("usage:"), f"scripts/{script} took 'a -h b' for -h")
+    done = subprocess.run(["/bin/bash", "demo", "--help"], capture_output=True, text=True, env=environment,
+                          timeout=60, cwd=os.path.join(root, "scripts"))
+    assert_that(done.returncode == 0 and "usage: colorado_areal_precipitation.py" in done.stdout,
+                f"demo --help from scripts/: {done.returncode} {done.stderr!r}")
 
 
 def test_every_benchmark_says_what_it_measures():
@@ -1485,6 +1496,9 @@ def test_every_benchmark_says_what_it_measures():
     # Each benchmark program answers --help (and -h) with what it measures, at once, running none.
     programs = os.path.join(os.environ["TESSERA_BUILD_DIR"], "bin")
     benches = sorted(name for name in os.listdir(programs) if name.startswith("bench_"))
+    with open(os.path.join(os.environ["TESSERA_BUILD_DIR"], "CMakeCache.txt")) as cache:
+        built = "TESSERA_BUILD_BENCH:BOOL=ON" in cache.read()
+    assert_that(len(benches) >= 7 or not built, f"benchmarks built: {benches}")
     for name in benches:
         for flag in ("--help", "-h"):
             done = subprocess.run([os.path.join(programs, name), flag], capture_output=True, text=True,

@@ -855,6 +855,17 @@ def test_a_missing_value_code_is_missing_when_set_and_named_when_not():
         else:
             assert_that(len(coded_said) == 1 and f"of gauge 3 ({ids[3]})" in coded_said[0],
                         f"warnings: {warned}")
+    # With another code used (-999), the 9999 left is still named; 0 and NaN are no codes.
+    for missing, said in ((-999.0, "exactly 9999"), (0.0, "MissingValue 0 would make every zero value"),
+                          (math.nan, "MissingValue nan changes nothing")):
+        g = vtkThiessenArealAverage()
+        warned, errors = messages_of(g, vtkCommand.WarningEvent), messages_of(g)
+        g.SetGaugesData(gauges_polydata(coords, ids, values))
+        g.SetCatchmentData(polygon([ring]))
+        g.SetUseMissingValue(True)
+        g.SetMissingValue(missing)
+        g.Update(1)
+        assert_that(any(said in m for m in warned + errors), f"MissingValue {missing}: {warned} {errors}")
 
 
 def test_bad_dates_and_months_are_named():
