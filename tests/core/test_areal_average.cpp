@@ -509,16 +509,8 @@ TEST(ArealAverage, ACatchmentCutAtTheAntimeridianIsItsTwoHalvesTogether)
   // share the meridian in lon/lat, each one's vertices become the other's, and they are the
   // square again.
   const std::vector<std::size_t> uneven{ 0, 4, 10 };
-  const std::vector<Point2> unevenRings{ { 179.0, -1.0 },
-    { 180.0, -1.0 },
-    { 180.0, 1.0 },
-    { 179.0, 1.0 },
-    { -180.0, -1.0 },
-    { -179.0, -1.0 },
-    { -179.0, 1.0 },
-    { -180.0, 1.0 },
-    { -180.0, 0.3 },
-    { -180.0, -0.2 } };
+  std::vector<Point2> unevenRings = rings;
+  unevenRings.insert(unevenRings.end(), { { -180.0, 0.3 }, { -180.0, -0.2 } });
   ThiessenArealAverage joined(gauges, one, whole);
   ThiessenArealAverage halves(gauges, uneven, unevenRings);
   EXPECT_NEAR(halves.CatchmentAreaM2(), joined.CatchmentAreaM2(), 1e-9 * joined.CatchmentAreaM2());
