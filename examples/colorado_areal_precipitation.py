@@ -59,6 +59,7 @@ Run with Debian's /usr/bin/python3 and PYTHONPATH=build/python (scripts/demo doe
 """
 
 import argparse
+import array
 import calendar
 import csv
 import datetime
@@ -313,14 +314,20 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     coded = 0  # values given with --missing-value
     negative = []  # the lines of negative values
     present = set()  # the step of every row of a gauge's station
-    lines = []  # the file's line of each row read
+    # Per row, two machine integers (arrays, not lists of Python objects: a large file has
+    # millions of rows): its line, and the index of its step as observation_step read it.
+    lines = array.array("l")  # the file's line of each row read
     names = {}  # every row's station id, as written, once each in the file's order
-    read = []  # the step of each row as observation_step read it
+    read = array.array("l")  # the index of each row's step in step_index
+    step_index = {}  # each step read, by first appearance
     first = {}  # the first line of a month, a day, a day and time, and a time other than midnight
     hour_column, at_24 = False, 0
+    reading = ReadingProgress(path)
     for line, row in csv_input.rows(path, ("station_id", "precip"), "observations",
                                     ("year", "month", "day", "hour", "date", "time")):
         lines.append(line)
+        if not len(lines) & 0xFFFF:
+            reading.tick(len(lines))
         station = csv_input.text(row, "station_id", path, line)
         step = observation_step(row, path, line)
         kind = STEP_KINDS[len(step)]
@@ -334,7 +341,7 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
                            "all hours)")
         hour_column = "hour" in row
         at_24 += kind == "time" and step[3] == 24
-        read.append(step)
+        read.append(step_index.setdefault(step, len(step_index)))
         names.setdefault(station.strip(" \t\""))
         gauge = gauge_of.get(station_key(station))
         if gauge is not None:
@@ -354,15 +361,15 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
                 reporting.setdefault(step, set()).add(gauge)
         stations.InsertNextValue(station)
         values.InsertNextValue(value)
-    steps, step_of = file_steps(set(read), first, hour_column, at_24, path)
+    steps, step_of = file_steps(set(step_index), first, hour_column, at_24, path)
     every_step, present = set(step_of.values()), {step_of[m] for m in present}
     merged = {}
     for m, gauges in reporting.items():
         merged.setdefault(step_of[m], set()).update(gauges)
     reporting = merged
-    time_of = {m: steps.time(step_of[m]) for m in step_of}
-    for m in read:
-        times.InsertNextValue(time_of[m])
+    time_of = [steps.time(step_of[m]) for m in step_index]  # (by index)
+    for k in read:
+        times.InsertNextValue(time_of[k])
     if lines and not present:
         # (the ids as written, each once, in the files' order: they are for comparing by eye)
         seen, there = list(names), list(dict.fromkeys(station_ids))
@@ -546,6 +553,22 @@ def select_features(data, feature, path):
         shown = ", ".join(values[:20]) + (", ..." if len(values) > 20 else "")
         csv_input.fail(f"{path}: no feature has {name} = {wanted!r} (its values: {shown})")
     return chosen[wanted]
+
+
+class ReadingProgress:
+    """A line every ReadingProgress.EVERY seconds while a large file is read (millions of rows take
+    a minute or more, before any other output)."""
+
+    EVERY = 10.0
+
+    def __init__(self, path):
+        self.path, self.last = path, time.monotonic()
+
+    def tick(self, rows):
+        now = time.monotonic()
+        if now - self.last >= self.EVERY:
+            self.last = now
+            print(f"reading {self.path}: {rows:,} rows so far", file=sys.stderr, flush=True)
 
 
 def interactive():
@@ -1156,6 +1179,9 @@ def main(argv=None):
     parser.add_argument("--missing-value", action="append", type=float, default=[], metavar="NUMBER",
                         help="a precip value that means missing, such as -9999 (may be given more than once)")
     parser.add_argument("--no-plots", action="store_true", help="skip the PNG files")
+    parser.add_argument("--no-all-weights", action="store_true",
+                        help="skip weights_all_*.csv (every step's weights: with thousands of gauges and "
+                             "years of days, as large as the observations) and the memory it takes")
     args = parser.parse_args(argv)
     given = [f"--{name} {value}" for name, value in (("month", args.month), ("day", args.day), ("hour", args.hour))
              if value is not None]
@@ -1213,6 +1239,8 @@ def main(argv=None):
           f"{time.time() - started:.1f} s", file=sys.stderr)
 
     average = areal_average(gauges, catchment, observations)
+    # (--each measures its groups from that table)
+    average.SetWeightsTable(not args.no_all_weights or groups is not None)
     progress = Progress("Thiessen areal means")
     progress_tag = average.AddObserver(vtkCommand.ProgressEvent, progress)
     started = time.time()
@@ -1226,7 +1254,12 @@ def main(argv=None):
     average.RemoveObserver(progress_tag)
     rows = write_summary(summary, steps, os.path.join(args.out, "areal_mean.csv"))
     all_weights = f"weights_all_{steps.unit}s.csv"
-    write_all_weights(average.GetOutputDataObject(2), steps, os.path.join(args.out, all_weights))
+    if args.no_all_weights:
+        stale = os.path.join(args.out, all_weights)
+        if os.path.exists(stale):
+            os.remove(stale)  # (an earlier run's, which would no longer match the other files)
+    else:
+        write_all_weights(average.GetOutputDataObject(2), steps, os.path.join(args.out, all_weights))
     unused = write_unused(summary, files, station_ids, observations, steps.unit,
                           os.path.join(args.out, "unused_inputs.csv"))
     if groups:
@@ -1266,7 +1299,8 @@ def main(argv=None):
              if valid else ""))
     print(f"{steps.text(step)}: areal mean {mean:.3f}, {used} gauges reported, "
           f"{weighted} weighted; weights sum to {sum(e['weight'] for e in per_gauge.values()):.12f}")
-    print(f"wrote {args.out}/areal_mean.csv, {all_weights}, weights_{tag}.csv, tiles_{tag}.vtp"
+    print(f"wrote {args.out}/areal_mean.csv, " + ("" if args.no_all_weights else f"{all_weights}, ")
+          + f"weights_{tag}.csv, tiles_{tag}.vtp"
           + ("" if args.no_plots else f", map_{tag}.png, areal_mean.png")
           + f", unused_inputs.csv ({unused} input(s) not used)"
           + (f", {by_feature} ({len(groups)} group(s) of features)" if groups else ""))

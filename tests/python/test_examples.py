@@ -252,8 +252,8 @@ def test_bad_files_are_named():
         import gzip
 
         gzipped = os.path.join(out, "obs.csv.gz")
-        with gzip.open(gzipped, "wt") as f:
-            f.write("station_id,year,month,precip\n050848,1963,8,1.5\n")
+        with open(gzipped, "wb") as f:  # (cut short: a download that stopped)
+            f.write(gzip.compress(b"station_id,year,month,precip\n050848,1963,8,1.5\n")[:25])
         lone_shp = write(out, "basin.shp", "not read: its .shx is missing\n")
         import zipfile
 
@@ -262,7 +262,7 @@ def test_bad_files_are_named():
             book.writestr("xl/workbook.xml", "<workbook/>")
         bzh = write(out, "bzh.csv", "BZh_id,lon,lat\n1,-105,39\n")  # text that starts like bzip2
         cases = [
-            (("--observations", gzipped), [gzipped, "gzip-compressed; decompress it first"]),
+            (("--observations", gzipped), [gzipped, "gzip-compressed but cannot be decompressed"]),
             (("--observations", workbook), [workbook, "a zip archive, not CSV text", "save the sheet as CSV"]),
             (("--stations", bzh), [bzh, "no column 'station_id'"]),
             (("--catchment", lone_shp), [lone_shp, "basin.shx beside it is missing"]),
@@ -1049,6 +1049,62 @@ def test_small_values_and_a_catchment_across_the_antimeridian():
         assert_that(all(lon_min < x < lon_max for x in lon), f"gauges at {lon}, map {lon_min} .. {lon_max}")
 
 
+def test_compressed_observations_are_read_and_all_weights_can_be_skipped():
+    # A large record is often kept compressed: gzip, bzip2 and xz files were refused ("decompress it
+    # first"); each gives the plain file's outputs byte for byte. --no-all-weights leaves out
+    # weights_all_months.csv (and an earlier run's), nothing else.
+    import bz2
+    import gzip
+    import lzma
+
+    with tempfile.TemporaryDirectory() as out:
+        catchment, stations, observations = write_lake_basin(out)
+        plain = os.path.join(out, "plain")
+        run_colorado(plain, stations=stations, observations=observations, catchment=catchment, plots=False)
+        with open(observations, "rb") as f:
+            text = f.read()
+        names = sorted(os.listdir(plain))
+        for module, extension in ((gzip, ".gz"), (bz2, ".bz2"), (lzma, ".xz")):
+            packed = observations + extension
+            with open(packed, "wb") as f:
+                f.write(module.compress(text))
+            unpacked = os.path.join(out, extension[1:])
+            run_colorado(unpacked, stations=stations, observations=packed, catchment=catchment, plots=False,
+                         what=f"observations{extension}")
+            for name in ("areal_mean.csv", "weights_all_months.csv", "unused_inputs.csv"):
+                same = open(os.path.join(plain, name)).read() == open(os.path.join(unpacked, name)).read()
+                assert_that(same, f"{name} from observations{extension} differs from the plain file's")
+        stdout, _ = run_colorado(plain, "--no-all-weights", stations=stations, observations=observations,
+                                 catchment=catchment, plots=False, what="--no-all-weights")
+        left = sorted(os.listdir(plain))
+        assert_that(left == [n for n in names if n != "weights_all_months.csv"] and "weights_all" not in stdout,
+                    f"--no-all-weights: {left} (before {names}), {stdout!r}")
+
+
+def test_reading_a_large_file_says_how_far_it_got():
+    # Reading millions of rows took a minute or more with no output at all. read_observations says
+    # how many rows it has read every ReadingProgress.EVERY seconds (0 here: at every check, which
+    # it makes every 65536 rows).
+    import contextlib
+    import io
+
+    example = import_example()
+    stations = [f"N{k}" for k in range(70)]
+    with tempfile.TemporaryDirectory() as out:
+        path = write(out, "obs.csv", "station_id,year,month,precip\n" + "".join(
+            f"{s},{1900 + m // 12},{m % 12 + 1},1\n" for m in range(1000) for s in stations))
+        every, example.ReadingProgress.EVERY = example.ReadingProgress.EVERY, 0.0
+        said = io.StringIO()
+        try:
+            with contextlib.redirect_stderr(said):
+                example.read_observations(path, {example.station_key(s): k for k, s in enumerate(stations)},
+                                          stations[0], "stations.csv", set(), stations)
+        finally:
+            example.ReadingProgress.EVERY = every
+        lines = [line for line in said.getvalue().splitlines() if line.startswith(f"reading {path}:")]
+        assert_that(lines == [f"reading {path}: 65,536 rows so far"], f"progress lines: {said.getvalue()!r}")
+
+
 def test_a_catchment_in_a_zip_file_is_read_from_it():
     # A zipped catchment (as downloads come) was "no polygon, drop the measures". A zipped GeoJSON
     # (with macOS's __MACOSX copy beside it) gives the same means as the file itself; a zip of
@@ -1542,6 +1598,8 @@ if __name__ == "__main__":
          test_the_field_separator_and_the_decimal_mark,
          test_small_values_and_a_catchment_across_the_antimeridian,
          test_observations_of_no_gauge_end_the_run,
+         test_compressed_observations_are_read_and_all_weights_can_be_skipped,
+         test_reading_a_large_file_says_how_far_it_got,
          test_a_catchment_in_a_zip_file_is_read_from_it,
          test_a_catchment_declared_projected_is_named,
          test_the_filters_errors_name_the_file_and_line,
