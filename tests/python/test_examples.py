@@ -1117,6 +1117,32 @@ def test_reading_a_large_file_says_how_far_it_got():
         assert_that(lines == [f"reading {path}: 65,536 rows so far"], f"progress lines: {said.getvalue()!r}")
 
 
+def shapefile_of(rings):
+    """The .shp and .shx bytes of one polygon record with the given rings (lists of (x, y), first
+    point repeated last), as ESRI's shapefile specification lays them out (no .dbf: GDAL reads the
+    geometry without it)."""
+    import struct
+
+    points = [p for ring in rings for p in ring]
+    xs, ys = [p[0] for p in points], [p[1] for p in points]
+    box = struct.pack("<4d", min(xs), min(ys), max(xs), max(ys))
+    parts, start = [], 0
+    for ring in rings:
+        parts.append(start)
+        start += len(ring)
+    content = (struct.pack("<i", 5) + box + struct.pack("<2i", len(rings), len(points))
+               + struct.pack(f"<{len(parts)}i", *parts) + b"".join(struct.pack("<2d", *p) for p in points))
+
+    def header(length_bytes):
+        return (struct.pack(">7i", 9994, 0, 0, 0, 0, 0, length_bytes // 2) + struct.pack("<2i", 1000, 5) + box
+                + struct.pack("<4d", 0, 0, 0, 0))
+
+    record = struct.pack(">2i", 1, len(content) // 2) + content
+    shp = header(100 + len(record)) + record
+    shx = header(108) + struct.pack(">2i", 50, len(content) // 2)
+    return shp, shx
+
+
 def test_a_catchment_in_a_zip_file_is_read_from_it():
     # A zipped catchment (as downloads come) was "no polygon, drop the measures". A zipped GeoJSON
     # (with macOS's __MACOSX copy beside it) gives the same means as the file itself; a zip of
@@ -1136,6 +1162,21 @@ def test_a_catchment_in_a_zip_file_is_read_from_it():
                      plots=False, what="a zipped GeoJSON")
         plain, read = (open(os.path.join(out, d, "areal_mean.csv")).read() for d in ("plain", "zipped"))
         assert_that(plain == read and plain.count("\n") == 3, f"zipped {read!r} against plain {plain!r}")
+        # The same basin as a zipped shapefile (outline clockwise, lake anticlockwise, as the format
+        # orders them): the same means to 12 digits (GDAL may start the rings elsewhere).
+        outline, lake = LAKE_BASIN["features"][0]["geometry"]["coordinates"]
+        shp, shx = shapefile_of([outline[::-1], lake[::-1]])
+        shapefile = os.path.join(out, "basin_shp.zip")
+        with zipfile.ZipFile(shapefile, "w") as z:
+            z.writestr("basin/basin.shp", shp)
+            z.writestr("basin/basin.shx", shx)
+        run_colorado(os.path.join(out, "shp"), stations=stations, observations=observations, catchment=shapefile,
+                     plots=False, what="a zipped shapefile")
+        got, want = (read_csv(os.path.join(out, d, "areal_mean.csv")) for d in ("shp", "plain"))
+        assert_that(len(got) == len(want) == 2 and all(
+            abs(float(a["areal_mean"]) - float(b["areal_mean"])) <= 1e-12 * abs(float(b["areal_mean"]))
+            and a["stations_weighted"] == b["stations_weighted"] for a, b in zip(got, want)),
+            f"the zipped shapefile's means {got} against {want}")
         two = os.path.join(out, "two.zip")
         with zipfile.ZipFile(two, "w") as z:
             z.write(catchment, "a.geojson")
