@@ -1,6 +1,8 @@
 // Uses both installed targets: the core's tessellation and the VTK filter, on the same points, and
-// checks them against each other and against the window's area. Prints "ok" and returns 0, or
-// names what failed and returns 1.
+// requires them to agree with each other and with the window's area (Require, require.h). Prints
+// "ok" when every requirement held.
+#include "require.h"
+
 #include "dirichlet_tessellation.h" // Tessera::core
 #include "tiles.h"
 #include "window.h"
@@ -41,13 +43,11 @@ int main()
   vtkCellData* cells = filter->GetOutput()->GetCellData();
   auto* areas = vtkDoubleArray::SafeDownCast(cells->GetArray("Area"));
   vtkDataArray* ids = cells->GetArray("PointId");
-  if (!areas || !ids || areas->GetNumberOfTuples() != static_cast<vtkIdType>(tiles.Areas.size()))
-  {
-    std::printf("the filter gave %lld tiles, the core %zu\n",
-      areas ? static_cast<long long>(areas->GetNumberOfTuples()) : -1LL,
-      tiles.Areas.size());
-    return 1;
-  }
+  Require(areas && ids, "the filter's output lacks its Area or PointId array");
+  Require(areas->GetNumberOfTuples() == static_cast<vtkIdType>(tiles.Areas.size()),
+    "the filter gave %lld tiles, the core %zu",
+    static_cast<long long>(areas->GetNumberOfTuples()),
+    tiles.Areas.size());
   std::vector<double> coreArea(points.size(), -1.0);
   for (std::size_t t = 0; t < tiles.Areas.size(); ++t)
   {
@@ -59,20 +59,14 @@ int main()
     const double area = areas->GetValue(c);
     const auto id = static_cast<std::size_t>(ids->GetTuple1(c));
     sum += area;
-    if (id >= points.size() || std::abs(area - coreArea[id]) > 1e-12 * area)
-    {
-      std::printf("point %zu: the filter's tile area %.17g, the core's %.17g\n",
-        id,
-        area,
-        id < points.size() ? coreArea[id] : -1.0);
-      return 1;
-    }
+    Require(id < points.size(), "a tile's PointId %zu is no input point", id);
+    Require(std::abs(area - coreArea[id]) <= 1e-12 * area,
+      "point %zu: the filter's tile area %.17g, the core's %.17g",
+      id,
+      area,
+      coreArea[id]);
   }
-  if (std::abs(sum - 1.0) > 1e-12)
-  {
-    std::printf("the tiles' areas sum to %.17g, not the window's 1\n", sum);
-    return 1;
-  }
+  Require(std::abs(sum - 1.0) <= 1e-12, "the tiles' areas sum to %.17g, not the window's 1", sum);
   std::printf("ok\n");
   return 0;
 }

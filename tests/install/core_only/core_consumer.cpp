@@ -1,5 +1,7 @@
-// The core alone: four points in the unit square, whose tiles are its quarters. Prints "ok" and
-// returns 0, or names what failed and returns 1.
+// The core alone: four points in the unit square, whose tiles must be its quarters (Require,
+// require.h). Prints "ok" when every requirement held.
+#include "../require.h"
+
 #include "dirichlet_tessellation.h"
 #include "tiles.h"
 #include "window.h"
@@ -16,14 +18,11 @@ int main()
   const tessera::DirichletTessellation tessellation(
     tessera::Window::Rectangle(0.0, 1.0, 0.0, 1.0), points);
   const tessera::TileSet tiles = tessera::ComputeTiles(tessellation);
+  Require(tiles.Areas.size() == 4, "%zu tiles, not four", tiles.Areas.size());
   for (const double area : tiles.Areas)
   {
-    if (std::abs(area - 0.25) > 1e-15)
-    {
-      std::printf("a tile's area is %.17g, not a quarter\n", area);
-      return 1;
-    }
+    Require(std::abs(area - 0.25) <= 1e-15, "a tile's area is %.17g, not a quarter", area);
   }
-  std::printf(tiles.Areas.size() == 4 ? "ok\n" : "not four tiles\n");
-  return tiles.Areas.size() == 4 ? 0 : 1;
+  std::printf("ok\n");
+  return 0;
 }
