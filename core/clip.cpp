@@ -510,12 +510,16 @@ Catchment::Catchment(const std::vector<std::size_t>& ringOffsets,
   this->FindDepths();
   this->OrientRings();
   this->ClassifyEmptyCells();
-  CompensatedSum area;
+  CompensatedSum area, ringAreas;
   for (std::size_t r = 0; r < this->RingCount(); ++r)
   {
-    area.Add(SignedArea(&this->Points[this->Offsets[r]], this->Offsets[r + 1] - this->Offsets[r]));
+    const double ringArea =
+      SignedArea(&this->Points[this->Offsets[r]], this->Offsets[r + 1] - this->Offsets[r]);
+    area.Add(ringArea);
+    ringAreas.Add(std::abs(ringArea));
   }
   this->TotalArea = area.Value();
+  this->RingAreas = ringAreas.Value();
 }
 
 // (Inline, and through int, which holds any count up to 4096: as calls converting to an unsigned

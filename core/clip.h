@@ -109,6 +109,9 @@ public:
   const std::vector<bool>& RingReversed() const { return this->Reversed; }
 
   double Area() const { return this->TotalArea; }
+  /// The rings' areas summed without their signs (each ring's whole area): Area() is this less
+  /// twice the holes'.
+  double RingAreaSum() const { return this->RingAreas; }
   const Box2& Bounds() const { return this->Box; }
 
   /// Even-odd membership, exact for points off the boundary (boundary points get either answer).
@@ -200,6 +203,7 @@ private:
   std::vector<CleanRings::RingContact> Contacts;
   std::vector<bool> Reversed;
   double TotalArea = 0.0;
+  double RingAreas = 0.0;
   Box2 Box;
   // Uniform grid over the segments: segment v (from vertex v) is listed in every cell its bounding
   // box meets. Cell (i, j) is i + j * GridX.

@@ -1,5 +1,7 @@
 #include "observation_series.h"
 
+#include "errors.h"
+
 #include <algorithm>
 #include <cmath>
 #include <iterator>
@@ -200,6 +202,32 @@ StepSeries BuildSeries(const StationMatch& match,
   }
   series.RepeatedRowOf = KeptRowsOf(series.RepeatedRows, match, steps, rowValues, gaugeCount);
   return series;
+}
+
+MissingCodeSightings TakeMissingValues(std::vector<double>& values, bool use, double missing)
+{
+  if (use && (missing == 0.0 || std::isnan(missing)))
+  {
+    throw InputError("MissingValue " + NumberText(missing) +
+      (missing == 0.0 ? " would make every zero value (a dry step) missing"
+                      : " changes nothing: NaN values are missing anyway") +
+      "; give the number that marks missing values, or turn UseMissingValue off");
+  }
+  if (use)
+  {
+    std::replace(values.begin(), values.end(), missing, std::numeric_limits<double>::quiet_NaN());
+  }
+  MissingCodeSightings most;
+  for (const double code : { -9999.0, -999.0, 9999.0, 99999.0 })
+  {
+    const auto first = std::find(values.begin(), values.end(), code);
+    const std::size_t count = static_cast<std::size_t>(std::count(first, values.end(), code));
+    if (count > most.Count)
+    {
+      most = { code, count, static_cast<std::size_t>(first - values.begin()) };
+    }
+  }
+  return most;
 }
 
 } // namespace tessera

@@ -187,7 +187,8 @@ PointPartition PartitionPoints(const std::vector<Point2>& pixelPoints,
   const std::vector<int> nearest = NearestFeatureTransform(isContour, width, height);
   result.Extended.assign(pixelPoints.size(), 0);
   result.Continues.assign(pixelPoints.size(), 0);
-  std::vector<double> beyond(pixelPoints.size(), 0.0);
+  std::vector<double>& beyond = result.Beyond;
+  beyond.assign(pixelPoints.size(), 0.0);
   for (std::size_t k = 0; k < pixelPoints.size(); ++k)
   {
     const int pixel = NearestContourPixel(pixelPoints[k], nearest, width, height);
@@ -198,7 +199,6 @@ PointPartition PartitionPoints(const std::vector<Point2>& pixelPoints,
     beyond[k] = DistanceBeyondEnd(pixelPoints[k], contours, contour, position, width);
   }
   KeepContinuationsOnly(beyond, result.Projection, maximumGap, result.Continues);
-  result.Beyond = beyond;
   std::vector<double> extendedArc(pixelPoints.size(), 0.0);
   std::vector<double> lowest(contours.Count(), 0.0);
   std::vector<double> highest(contours.Lengths.begin(), contours.Lengths.end());

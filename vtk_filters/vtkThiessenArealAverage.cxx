@@ -533,47 +533,8 @@ std::vector<double> RowValues(vtkTable* table,
   return rowValues;
 }
 
-/// Values exactly equal to a common missing-value code, for a warning when no MissingValue is
-/// used: the code met most often, how many values have it, and the first one's index.
-struct CodeSightings
-{
-  double Code = 0.0;
-  std::size_t Count = 0;
-  std::size_t First = 0;
-};
-
-/// With `use`, sets the values equal to `missing` to NaN (missing); throws InputError for a
-/// MissingValue of 0 (every dry step would be missing) or NaN (missing anyway: nothing would
-/// change). Then finds the values exactly equal to a common missing-value code (other than the
-/// one used), which would be averaged as measurements.
-CodeSightings TakeMissingValues(std::vector<double>& values, bool use, double missing)
-{
-  if (use && (missing == 0.0 || std::isnan(missing)))
-  {
-    throw tessera::InputError("MissingValue " + tessera::NumberText(missing) +
-      (missing == 0.0 ? " would make every zero value (a dry step) missing"
-                      : " changes nothing: NaN values are missing anyway") +
-      "; give the number that marks missing values, or turn UseMissingValue off");
-  }
-  if (use)
-  {
-    std::replace(values.begin(), values.end(), missing, std::numeric_limits<double>::quiet_NaN());
-  }
-  CodeSightings most;
-  for (const double code : { -9999.0, -999.0, 9999.0, 99999.0 })
-  {
-    const auto first = std::find(values.begin(), values.end(), code);
-    const std::size_t count = static_cast<std::size_t>(std::count(first, values.end(), code));
-    if (count > most.Count)
-    {
-      most = { code, count, static_cast<std::size_t>(first - values.begin()) };
-    }
-  }
-  return most;
-}
-
 /// The warning for values that look like a missing-value code; `first` names where the first is.
-std::string MissingCodeWarning(const CodeSightings& seen,
+std::string MissingCodeWarning(const tessera::MissingCodeSightings& seen,
   const std::string& what,
   const std::string& first)
 {
@@ -1260,8 +1221,8 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     }
     in.Times = rows->Steps.Times;
     rowValues = RowValues(observations, rows->Steps, this->StationColumn, this->ValueColumn);
-    const CodeSightings seen =
-      TakeMissingValues(rowValues, this->UseMissingValue, this->MissingValue);
+    const tessera::MissingCodeSightings seen =
+      tessera::TakeMissingValues(rowValues, this->UseMissingValue, this->MissingValue);
     if (seen.Count > 0)
     {
       vtkWarningMacro(<< MissingCodeWarning(seen,
@@ -1295,8 +1256,8 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     {
       in.Values[0][g] = values->GetTuple1(static_cast<vtkIdType>(g));
     }
-    const CodeSightings seen =
-      TakeMissingValues(in.Values[0], this->UseMissingValue, this->MissingValue);
+    const tessera::MissingCodeSightings seen =
+      tessera::TakeMissingValues(in.Values[0], this->UseMissingValue, this->MissingValue);
     if (seen.Count > 0)
     {
       const std::string name = seen.First < gaugeNames.size() ? gaugeNames[seen.First] : "";

@@ -3,6 +3,7 @@
 // gauges, rows without a station id or a time, repeated rows, and steps sorted and distinct. Small
 // cases are checked against values written out by hand; random tables against a brute-force
 // reading of the rules (integer ids compared as numbers, every row against every earlier row).
+#include "errors.h"
 #include "observation_series.h"
 
 #include <gtest/gtest.h>
@@ -18,9 +19,12 @@
 #include <vector>
 
 using tessera::BuildSeries;
+using tessera::InputError;
 using tessera::MatchStations;
+using tessera::MissingCodeSightings;
 using tessera::StationKey;
 using tessera::StepsOfRows;
+using tessera::TakeMissingValues;
 
 namespace
 {
@@ -354,6 +358,47 @@ TEST(ObservationSeries, RandomTablesAgreeWithABruteForceReading)
     }
     EXPECT_EQ(series.RepeatedRows, repeated) << trial;
     EXPECT_EQ(series.RepeatedRowOf, repeatedOf) << trial;
+  }
+}
+
+TEST(ObservationSeries, AMissingValueCodeIsMissingWhenUsedAndCountedWhenNot)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<double> given{ 1.0, -9999.0, 0.0, 9999.0, -9999.0, 2.5, nan };
+  // Not used: nothing changes; -9999 (twice, first at 1) outnumbers 9999 (once).
+  std::vector<double> values = given;
+  MissingCodeSightings seen = TakeMissingValues(values, false, -9999.0);
+  EXPECT_EQ(seen.Code, -9999.0);
+  EXPECT_EQ(seen.Count, 2u);
+  EXPECT_EQ(seen.First, 1u);
+  EXPECT_TRUE(std::equal(values.begin(), values.end() - 1, given.begin()));
+  // Used: the -9999s are NaN, the rest as given (0 a value), and 9999, at 3, is counted.
+  seen = TakeMissingValues(values, true, -9999.0);
+  for (std::size_t k = 0; k < given.size(); ++k)
+  {
+    EXPECT_EQ(std::isnan(values[k]), given[k] == -9999.0 || std::isnan(given[k])) << k;
+    if (!std::isnan(values[k]))
+    {
+      EXPECT_EQ(values[k], given[k]) << k;
+    }
+  }
+  EXPECT_EQ(seen.Code, 9999.0);
+  EXPECT_EQ(seen.Count, 1u);
+  EXPECT_EQ(seen.First, 3u);
+  // 0 and NaN are no codes: named, before anything changes.
+  for (const double missing : { 0.0, -0.0, nan })
+  {
+    std::vector<double> kept = given;
+    try
+    {
+      TakeMissingValues(kept, true, missing);
+      ADD_FAILURE() << "MissingValue " << missing << " accepted";
+    }
+    catch (const InputError& e)
+    {
+      EXPECT_NE(std::string(e.what()).find("MissingValue"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(kept[2], 0.0);
   }
 }
 

@@ -36,6 +36,16 @@ def run_colorado(out, *arguments, what="the run", status=0, plots=True, **option
     return stdout, stderr
 
 
+def assert_observations_refused(directory, stations, catchment, cases):
+    """Runs the example on each case's observations text (written to directory/bad.csv) with its
+    options; each run must end with status 1, its message holding the case's fragment."""
+    for text, options, fragment in cases:
+        bad = write(directory, "bad.csv", text)
+        _, stderr = run_colorado(os.path.join(directory, "bad"), stations=stations, observations=bad,
+                                 catchment=catchment, what=f"{text!r} {options}", status=1, plots=False, **options)
+        assert_that(fragment in stderr and "Traceback" not in stderr, f"{text!r}: {fragment!r} not in {stderr!r}")
+
+
 def write(directory, name, text):
     """Writes text into directory/name; returns its path."""
     path = os.path.join(directory, name)
@@ -797,11 +807,7 @@ def test_daily_observations_give_daily_means():
             ("station_id,date,precip\nN1,2001-02-03T06:15,1\n", {}, "'2001-02-03T06:15' is not on the hour"),
             ("station_id,date,precip\nN1,2001-02T00:00,1\n", {}, "'2001-02T00:00' is not a date"),
         ]
-        for text, options, fragment in cases:
-            bad = write(directory, "bad.csv", text)
-            _, stderr = run_colorado(os.path.join(directory, "bad"), stations=stations, observations=bad,
-                                     catchment=catchment, what=text, status=1, plots=False, **options)
-            assert_that(fragment in stderr and "Traceback" not in stderr, f"{text!r}: {fragment!r} not in {stderr!r}")
+        assert_observations_refused(directory, stations, catchment, cases)
         # Monthly values stamped with a day are read as days, and said; the record's nearest day is
         # shown without a note when no day was asked for.
         stamped = write(directory, "stamped.csv", "station_id,date,precip\nN1,2001-01-01,1\nN2,2001-02-01,2\n")
@@ -949,11 +955,7 @@ def test_hourly_observations_give_hourly_means():
             (hourly, {"day": "2001-03-01", "hour": "2001-03-01 06:00"},
              "--day 2001-03-01 and --hour 2001-03-01 06:00: give one of them"),
         ]
-        for text, options, fragment in cases:
-            bad = write(directory, "bad.csv", text)
-            _, stderr = run_colorado(os.path.join(directory, "bad"), stations=stations, observations=bad,
-                                     catchment=catchment, what=f"{text!r} {options}", status=1, plots=False, **options)
-            assert_that(fragment in stderr and "Traceback" not in stderr, f"{text!r}: {fragment!r} not in {stderr!r}")
+        assert_observations_refused(directory, stations, catchment, cases)
 
 
 def test_the_field_separator_and_the_decimal_mark():
