@@ -52,6 +52,9 @@ hour,...), weights_all_hours.csv, --hour 'YYYY-MM-DD HH:00' (files named YYYY_MM
 hour from the first to the last. Hours keep their labels (hour-ending data: 06:00 is 05:00 to
 06:00), and hour 24 (24:00, as hour-ending records write a day's last hour) is hour 0 of the
 next day. Dates whose times are all midnight are days; a time column beside the date is refused.
+Observations may also be wide: a row per time (date, or year and month, with day and hour as
+above) and a column per station named by its station_id (date,050109,050114,...), without
+station_id and precip columns; a column that names no gauge's station is named and not read.
 Units are those of the data (for the Colorado data: documented as mm, the magnitudes look like
 cm; see examples/data/README.md).
 
@@ -63,6 +66,7 @@ import array
 import calendar
 import csv
 import datetime
+import itertools
 import math
 import os
 import re
@@ -290,11 +294,67 @@ def file_steps(read, first, hour_column, at_24, path):
     return Steps("hour"), {m: hour_step(m) for m in read}
 
 
+TIME_COLUMNS = ("year", "month", "day", "hour", "date", "time")  # (observation_step's)
+
+
+def observation_records(path, gauge_of, stations_path, station_ids, unmatched):
+    """Yields (line, row, station_id, value column) for each observation of the file at path, in
+    either of two layouts:
+    - long: a record per station and time, with columns station_id and precip (the value column);
+    - wide: a record per time, with a column per station named by its id (as a spreadsheet or a
+      data portal gives a record: date,05-1234,05-2345,...) beside the time columns, and no
+      station_id or precip column. The station columns whose id a gauge has (station_key) give
+      one observation each per record, in the header's order, the column being the value column;
+      those whose id no gauge has are not read, but appended to unmatched as (column number from 1,
+      name). Ends the script when none of them is a gauge's, naming the stations
+      file (stations_path) and some of its ids as written (station_ids), or when two columns
+      name one station, which of them holds its values being a guess.
+    A file with only one of station_id and precip is a long file lacking the other (named)."""
+    header = []
+    records = csv_input.rows(path, (), "observations", ("station_id", "precip", *TIME_COLUMNS), header,
+                             ("station_id", "precip"))
+    first = next(records, None)  # (the header is read with it)
+    records = itertools.chain((first,) if first else (), records)
+    if "station_id" in header or "precip" in header:
+        csv_input.check_columns(path, "observations", ("station_id", "precip"), header)
+        for line, row in records:
+            yield line, row, csv_input.text(row, "station_id", path, line), "precip"
+        return
+    columns, named = [], {}  # (the value columns, and the first column of each station)
+    for number, name in enumerate(header, 1):
+        if name in TIME_COLUMNS:
+            continue
+        key = station_key(name)
+        if not key:  # (an empty name: a trailing separator, or a column left unnamed)
+            unmatched.append((number, name))
+            continue
+        if key in named:
+            csv_input.fail(f"{path}: header: columns {named[key]} and {number} both name station {name!r}: keep one")
+        named[key] = number
+        if key in gauge_of:
+            columns.append(name)
+        else:
+            unmatched.append((number, name))
+    if not columns:
+        there = list(dict.fromkeys(station_ids))
+        csv_input.fail(f"{path}: the observations file has no station_id and precip columns, and none of its "
+                       f"other columns names a station of {stations_path} (columns here: "
+                       f"{', '.join(header) or 'none'}; ids there: {', '.join(there[:5])}"
+                       f"{', ...' if len(there) > 5 else ''}): give a row per station and time (columns "
+                       "station_id, year, month, precip, or station_id, date, precip), or a row per time "
+                       "with a column per station named by its station_id (date,ID1,ID2,...)")
+    for line, row in records:
+        for column in columns:
+            yield line, row, column, column
+
+
 def read_observations(path, gauge_of, filler, stations_path, missing_values=(), station_ids=()):
-    """The long-format table as a vtkTable (station_id, time, precip), its steps (Steps: months,
-    days or hours), the set of reporting gauges of every step, as gauge indices, and the file's line of
-    each record read (table row r, counted from 0, is the record of line lines[r]; the rows after
-    them are the filler rows of steps without a row of a gauge's station). gauge_of: the gauge that a
+    """The observations (a long or a wide file, observation_records) as a long-format vtkTable
+    (station_id, time, precip), its steps (Steps: months, days or hours), the set of reporting
+    gauges of every step, as gauge indices, the file's line of each observation read (table row r,
+    counted from 0, is the observation of line lines[r]; the rows after them are the filler rows
+    of steps without a row of a gauge's station), and a wide file's columns that are no gauge's
+    station, not read, as (column number, name). gauge_of: the gauge that a
     station's observations go to, by station_key() (ids are compared as the filter compares them;
     a step none of whose rows names a gauge's station is a step where no gauge reported).
     filler: a gauge's station id, given to the rows of those steps. missing_values: numbers that
@@ -322,14 +382,15 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     step_index = {}  # each step read, by first appearance
     first = {}  # the first line of a month, a day, a day and time, and a time other than midnight
     hour_column, at_24 = False, 0
+    unmatched = []  # a wide file's columns that are no gauge's station
     reading = ReadingProgress(path)
-    for line, row in csv_input.rows(path, ("station_id", "precip"), "observations",
-                                    ("year", "month", "day", "hour", "date", "time")):
+    step_line = None  # the line of `step` (a wide file's line gives several records)
+    for line, row, station, column in observation_records(path, gauge_of, stations_path, station_ids, unmatched):
         lines.append(line)
         if not len(lines) & 0xFFFF:
             reading.tick(len(lines))
-        station = csv_input.text(row, "station_id", path, line)
-        step = observation_step(row, path, line)
+        if line != step_line:
+            step, step_line = observation_step(row, path, line), line
         kind = STEP_KINDS[len(step)]
         if kind == "time" and step[3] % 24:
             kind = "hour"  # (a time at midnight may be a day's or an hour's)
@@ -349,14 +410,14 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
         # A missing value stays in the table as NaN: the gauge does not report that month (the
         # filter drops it for that step), and the month remains a step even if no gauge reports.
         value = math.nan
-        if csv_input.is_missing(row.get("precip")):
+        if csv_input.is_missing(row.get(column)):
             unrecorded += 1
-        elif (number := csv_input.number(row, "precip", path, line)) in missing_values:
+        elif (number := csv_input.number(row, column, path, line)) in missing_values:
             coded += 1
         else:
             value = number
             if value < 0:
-                negative.append(line)
+                negative.append(line if column == "precip" else f"{line} ({column})")
             if gauge is not None:
                 reporting.setdefault(step, set()).add(gauge)
         stations.InsertNextValue(station)
@@ -376,6 +437,10 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
         csv_input.fail(f"{path}: none of its {len(lines)} rows names a station of {stations_path} "
                        f"(ids here: {', '.join(seen[:5])}{', ...' if len(seen) > 5 else ''}; ids there: "
                        f"{', '.join(there[:5])}{', ...' if len(there) > 5 else ''})")
+    if unmatched:
+        shown = ", ".join(f"{name!r} (column {number})" for number, name in unmatched[:20])
+        print(f"{path}: {len(unmatched)} column(s) name no station of {stations_path} and are not read: {shown}"
+              f"{f' and {len(unmatched) - 20} more' if len(unmatched) > 20 else ''}", file=sys.stderr)
     if coded:
         print(f"{path}: {coded} observation(s) with a --missing-value value "
               f"({', '.join(f'{v:g}' for v in sorted(missing_values))}) count as missing", file=sys.stderr)
@@ -418,7 +483,7 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     table = vtkTable()
     for column in (stations, times, values):
         table.AddColumn(column)
-    return table, steps, reporting, lines
+    return table, steps, reporting, lines, unmatched
 
 
 def zip_member(path):
@@ -880,11 +945,13 @@ def write_means_by_feature(features, name, gauges, observations, steps, whole, c
               file=sys.stderr)
 
 
-def write_unused(summary, files, station_ids, observations, unit, path):
+def write_unused(summary, files, station_ids, observations, unit, path, unmatched_columns=()):
     """Every input the filter did not use, one row each (the warnings name the first 20 of each
     kind): kind, file, line, station_id and a note: for a gauge at the place of an earlier one,
-    that gauge's line; for an observation repeating an earlier one, the earlier one's line.
-    Returns the number of rows."""
+    that gauge's line; for an observation repeating an earlier one, the earlier one's line; and
+    a row for each column of a wide observations file that names no gauge's station
+    (unmatched_columns: (column number, name), read_observations), at the header's line, its
+    number in the note. Returns the number of rows."""
     fields = summary.GetFieldData()
     stations = observations.GetColumnByName("station_id")
     earlier = fields.GetArray("DuplicateOfGaugeIds")
@@ -909,6 +976,10 @@ def write_unused(summary, files, station_ids, observations, unit, path):
                         note = f"same place as line {files.gauge_lines[int(earlier.GetValue(k))]}"
                     out.writerow([kind, files.stations, files.gauge_lines[i], station_ids[i], note])
                 written += 1
+        for number, name in unmatched_columns:
+            out.writerow(["observations column naming no gauge's station (not read)", files.observations, 1, name,
+                          f"column {number}"])
+            written += 1
     return written
 
 
@@ -1162,8 +1233,9 @@ def main(argv=None):
                              "or of daily values: columns station_id, year, month, day, precip, or "
                              "station_id, date (YYYY-MM-DD), precip; or of hourly values: columns station_id, "
                              "year, month, day, hour (0-23, or 24 for the end of the day), precip, or station_id, "
-                             "date (YYYY-MM-DD HH:00), precip; a date column of YYYY-MM gives months; "
-                             f"{csv_input.SEPARATORS_TEXT}")
+                             "date (YYYY-MM-DD HH:00), precip; a date column of YYYY-MM gives months; or "
+                             "wide: a row per time (date, or year, month, ...) with a column per station named "
+                             f"by its station_id; {csv_input.SEPARATORS_TEXT}")
     parser.add_argument("--catchment", default=os.path.join(DATA, "colorado_boundary.geojson"),
                         help="catchment polygon (GeoJSON or shapefile, lon/lat, or a zip file "
                              "holding one); every polygon feature of the file is taken, unless "
@@ -1223,9 +1295,9 @@ def main(argv=None):
     gauge_of = {}
     for i, station in enumerate(station_ids):
         gauge_of.setdefault(station_key(station), i)
-    observations, steps, reporting, row_lines = read_observations(args.observations, gauge_of,
-                                                                  min(station_ids, default=None), args.stations,
-                                                                  set(args.missing_value), station_ids)
+    observations, steps, reporting, row_lines, unmatched = read_observations(
+        args.observations, gauge_of, min(station_ids, default=None), args.stations, set(args.missing_value),
+        station_ids)
     if asked and len(asked) > steps.fields:
         option = f"--hour {args.hour}" if args.hour is not None else f"--day {args.day}"
         csv_input.fail(f"{option}: the observations of {args.observations} are {steps.adjective} "
@@ -1261,7 +1333,7 @@ def main(argv=None):
     else:
         write_all_weights(average.GetOutputDataObject(2), steps, os.path.join(args.out, all_weights))
     unused = write_unused(summary, files, station_ids, observations, steps.unit,
-                          os.path.join(args.out, "unused_inputs.csv"))
+                          os.path.join(args.out, "unused_inputs.csv"), unmatched)
     if groups:
         by_feature = "areal_mean_by_" + re.sub(r"[^A-Za-z0-9_.-]", "_", each) + ".csv"
         write_means_by_feature(groups, each, gauges, observations, steps, average, args.catchment,

@@ -62,27 +62,30 @@ def decoded(path, what):
         return data.decode("cp1252", errors="replace")
 
 
-def rows(path, required, what, optional=()):
+def rows(path, required, what, optional=(), header=None, delimiter_columns=None):
     """Yields (line, row) for each record of the CSV file at path (a header line first; row maps
     the header's names, stripped of spaces, to the fields); blank lines and records whose fields
     are all empty are skipped. A required or optional column may be named in another case
     (STATION_ID, Lon). Ends the script, naming the file, when it cannot be read, is not a CSV
     file, lacks one of the required columns, has one of them (or an optional one) twice, or is not
-    well-formed CSV; what says what the file holds."""
+    well-formed CSV; what says what the file holds. header: a list that is given the header's
+    columns (as the rows name them) before the first record, for a caller whose required columns
+    depend on it (check_columns); delimiter_columns: the columns that choose the field separator
+    (header_delimiter), the required ones unless given."""
     text = decoded(path, what)
+    wanted = required if delimiter_columns is None else delimiter_columns
     if text.lstrip().startswith(("{", "[")):
         fail(f"{path}: the {what} file is not a CSV file (it starts like JSON or GeoJSON; "
-             f"expected a header line such as {','.join(required)})")
-    delimiter = header_delimiter(text, required)
+             f"expected a header line such as {','.join(wanted)})")
+    delimiter = header_delimiter(text, wanted)
     decimal_comma = delimiter != "," and has_decimal_commas(text, delimiter)
     reader = csv.DictReader(text_lines(text), delimiter=delimiter, strict=True)
     try:
         columns = named_columns([name.strip() for name in reader.fieldnames or []],
                                 (*required, *optional), f"{path}:{max(reader.reader.line_num, 1)}")
-        absent = [name for name in required if name not in columns]
-        if absent:
-            fail(f"{path}: the {what} file has no column {', '.join(repr(n) for n in absent)} "
-                 f"(it needs {', '.join(required)}; its header: {', '.join(columns) or 'none'})")
+        check_columns(path, what, required, columns)
+        if header is not None:
+            header[:] = columns
         reader.fieldnames = columns
         for row in reader:
             # A record whose fields are all empty (",,," as a spreadsheet exports a blank row, or
@@ -100,6 +103,15 @@ def rows(path, required, what, optional=()):
         # The underlying reader's count: the lines read up to the error (the DictReader's own
         # line_num is that of the last record it returned, 0 while the header is read).
         fail(f"{path}:{max(reader.reader.line_num, 1)}: not well-formed CSV ({error})")
+
+
+def check_columns(path, what, required, columns):
+    """Ends the script, naming the file, its header and what it needs, when columns (a header's,
+    as named_columns gives them) lack one of the required names."""
+    absent = [name for name in required if name not in columns]
+    if absent:
+        fail(f"{path}: the {what} file has no column {', '.join(repr(n) for n in absent)} "
+             f"(it needs {', '.join(required)}; its header: {', '.join(columns) or 'none'})")
 
 
 LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+$")

@@ -822,6 +822,51 @@ def test_daily_observations_give_daily_means():
                     and "note: 2001-03-01 is not in the record; showing 2001-02-28" in stderr, f"month ends: {stderr}")
 
 
+def test_a_wide_file_of_a_column_per_station_gives_the_long_files_means():
+    # A record as a spreadsheet or a data portal gives it: a row per time, a column per station
+    # named by its id. It gives the long file's outputs byte for byte (days here; the ids written
+    # with and without leading zeros, as they match in the filter, and in another order), with a
+    # column of no gauge's station named (warning, unused_inputs.csv) and not read; a bad value is
+    # named by its line and column; no column of a gauge's station, or two columns of one station,
+    # end the run.
+    days = {(2001, 1, 30): {"N1": 1.5, "N2": 2.5, "N3": 4.0, "N5": 0.0},
+            (2001, 2, 1): {"N1": 3.0, "N4": 1.25, "N6": 9.0},
+            (2001, 2, 2): {"N2": 0.5, "N3": 7.0, "N4": 2.0, "N5": 3.5}}
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, _ = write_lake_basin(directory)
+        long = write(directory, "long.csv", "station_id,date,precip\n" + "".join(
+            f"{s},{y}-{m:02d}-{d:02d},{v}\n" for (y, m, d), values in days.items() for s, v in values.items()))
+        columns = ["N5", "N1", "N3", "N2", "N6", "N4"]
+        wide = write(directory, "wide.csv", "date," + ",".join(columns) + ",RIVER_LEVEL\n" + "".join(
+            f"{y}-{m:02d}-{d:02d}," + ",".join(str(values.get(s, "")) for s in columns) + ",3.5\n"
+            for (y, m, d), values in days.items()))
+        outputs = {}
+        for observations in (long, wide):
+            out = os.path.join(directory, os.path.basename(observations)[:-4])
+            _, stderr = run_colorado(out, stations=stations, observations=observations, catchment=catchment,
+                                     plots=False, what=observations)
+            outputs[observations] = {name: read_csv(os.path.join(out, name))
+                                     for name in ("areal_mean.csv", "weights_all_days.csv", "unused_inputs.csv")}
+            outputs[observations]["stderr"] = stderr
+        for name in ("areal_mean.csv", "weights_all_days.csv"):
+            assert_that(outputs[long][name] == outputs[wide][name] and len(outputs[long][name]) >= 4,
+                        f"{name}: {outputs[wide][name]} against {outputs[long][name]}")
+        column = [r for r in outputs[wide]["unused_inputs.csv"] if r["station_id"] == "RIVER_LEVEL"]
+        assert_that(column == [{"kind": "observations column naming no gauge's station (not read)", "file": wide,
+                                "line": "1", "station_id": "RIVER_LEVEL", "note": "column 8"}]
+                    and [r for r in outputs[wide]["unused_inputs.csv"] if r not in column]
+                    == outputs[long]["unused_inputs.csv"], f"unused inputs: {outputs[wide]['unused_inputs.csv']}")
+        said = f"{wide}: 1 column(s) name no station of {stations} and are not read: 'RIVER_LEVEL' (column 8)"
+        assert_that(said in stderr_messages(outputs[wide]["stderr"]), f"the column of no gauge: {outputs[wide]}")
+        assert_observations_refused(directory, stations, catchment, [
+            ("date,N1,N2\n2001-01,1,x\n", {}, "bad.csv:2: column 'N2': 'x' is not a number"),
+            ("date,N1, N1 \n2001-01,1,2\n", {}, "bad.csv: header: columns 2 and 3 both name station 'N1'"),
+            ("date,A1,A2\n2001-01,1,2\n", {}, "bad.csv: the observations file has no station_id and precip "
+             "columns, and none of its other columns names a station of"),
+            ("station_id,date\nN1,2001-01\n", {}, "bad.csv: the observations file has no column 'precip'"),
+        ])
+
+
 def test_hourly_observations_give_hourly_means():
     # Observations of hours, by a date column with times on the hour or by an hour column, give a
     # mean an hour, every hour from the first to the last (2001-03-01 01:00 has no row), across
@@ -1650,6 +1695,7 @@ if __name__ == "__main__":
          test_files_of_semicolons_or_tabs_with_decimal_commas,
          test_daily_observations_give_daily_means,
          test_hourly_observations_give_hourly_means,
+         test_a_wide_file_of_a_column_per_station_gives_the_long_files_means,
          test_the_field_separator_and_the_decimal_mark,
          test_small_values_and_a_catchment_across_the_antimeridian,
          test_observations_of_no_gauge_end_the_run,
