@@ -28,7 +28,8 @@
  * global ids as an ordinary array: a tile in several pieces repeats its id) and:
  * - `TileId` (vtkIdType): the input 0 cell the polygon comes from;
  * - `ClippedArea` (double): the area of the whole tile inside the window (same on all its pieces);
- * - `AreaFraction` (double): ClippedArea over the tile's own area;
+ * - `AreaFraction` (double): ClippedArea over the tile's own area (at most 1: a tile inside the
+ *   window has 1, not 1 + 2^-52 from the two areas' rounding);
  * - `PieceArea` (double): the area of this polygon; a tile's PieceArea values add up to its
  *   ClippedArea (to rounding).
  * An input cell-data array with one of these four names is passed under the first free name of
@@ -43,8 +44,12 @@
  * tiny coordinates (below 2^-128, some 3e-39) is clipped scaled up by a power of two, tiles
  * alike, so that AreaFraction is as at unit scale (ClippedArea and PieceArea are then as small as
  * the doubles allow: 0 below some 1e-323). Areas use exact
- * orientation tests and compensated sums, so the clipped areas of a tiling sum to the window's area
- * to round-off. The tiles' point data is not passed (the pieces' vertices are new points; a warning
+ * orientation tests and compensated sums, so the clipped areas of a tiling that covers the window
+ * sum to the window's area to round-off. The field data arrays `WindowArea` (the window's area)
+ * and `CoveredFraction` (the tiles' clipped areas summed, over WindowArea) say whether they do: a
+ * warning gives both when the fraction differs from 1 by more than 1e-9, as when the tiles come
+ * from a tessellation whose window (vtkDirichletTessellation's default box about its points) is
+ * smaller than this one, or when tiles overlap. The tiles' point data is not passed (the pieces' vertices are new points; a warning
  * names its arrays). Only x and y are used, in one plane: inputs whose `TesseraProjection` records
  * (vtkGeographicProjection) differ are an error naming both, and a record on one input only gives a
  * warning.

@@ -12,8 +12,8 @@ from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkIntArray
 from vtkmodules.vtkFiltersCore import vtkTriangleFilter
 
 from tessera import vtkDirichletTessellation, vtkGeographicProjection, vtkWindowClip
-from tessera_testing import (assert_close, assert_that, cell_rings, exact_area, make_points, messages_of, projection_record,
-                             polygon, run, simplicity_defect)
+from tessera_testing import (assert_close, assert_that, beside_coverage, cell_rings, exact_area, make_points,
+                             messages_of, projection_record, polygon, run, simplicity_defect)
 
 
 def clip_by(tiles, window):
@@ -215,7 +215,7 @@ def test_input_arrays_named_like_the_filters_are_kept_under_another_name():
     warnings = messages_of(f, vtkCommand.WarningEvent)
     errors = messages_of(f)
     f.SetInputData(tiles)
-    f.SetWindowData(polygon([[(0.5, -1), (3.5, -1), (3.5, 2), (0.5, 2)]]))  # cuts tiles 0 and 3
+    f.SetWindowData(polygon([[(0.5, 0), (3.5, 0), (3.5, 1), (0.5, 1)]]))  # cuts tiles 0 and 3, covered
     f.Update()
     out = f.GetOutput()
     assert_that(not errors and out.GetNumberOfCells() == 4, f"four cells: {errors}")
@@ -238,7 +238,7 @@ def test_input_arrays_named_like_the_filters_are_kept_under_another_name():
     plain = vtkWindowClip()
     plain_warnings = messages_of(plain, vtkCommand.WarningEvent)
     plain.SetInputData(polygon(squares))
-    plain.SetWindowData(polygon([[(0.5, -1), (3.5, -1), (3.5, 2), (0.5, 2)]]))
+    plain.SetWindowData(polygon([[(0.5, 0), (3.5, 0), (3.5, 1), (0.5, 1)]]))
     plain.Update()
     assert_that(plain_warnings == [], f"no warning without a clash: {plain_warnings}")
 
@@ -368,12 +368,15 @@ def test_tiles_and_window_must_share_their_projection():
         t.Update()
         return t.GetOutput()
 
+    # (The catchment reaches past the gauges' tiles, made in the default window about them: the
+    # clips below warn that the tiles do not cover it.)
     output, errors, warnings = clip_by(tiles_of(projected(gauges, True)), projected(catchment, True))
     assert_that(len(errors) == 1 and "projected differently" in errors[0] and errors[0].count("lon0=") == 2
                 and output.GetNumberOfCells() == 0, f"two automatic projections: {errors}")
     same = projected(gauges, False)
     output, errors, warnings = clip_by(tiles_of(same), projected(catchment, False))
-    assert_that(not errors and not warnings and output.GetNumberOfCells() == 4, f"one projection: {errors} {warnings}")
+    assert_that(not errors and beside_coverage(warnings) == [] and output.GetNumberOfCells() == 4,
+                f"one projection: {errors} {warnings}")
     assert_that(projection_record(output) == projection_record(same), f"the output's record: {projection_record(output)}")
     # The gauges' automatic projection handed to the catchment's filter as its ProjectionRecord:
     # the same projection (the record's own bits), so the clip goes through; the gauges projected
@@ -385,7 +388,7 @@ def test_tiles_and_window_must_share_their_projection():
     f.SetProjectionRecord(record)
     f.Update()
     output, errors, warnings = clip_by(tiles_of(automatic), f.GetOutput())
-    assert_that(not errors and not warnings and output.GetNumberOfCells() == 4
+    assert_that(not errors and beside_coverage(warnings) == [] and output.GetNumberOfCells() == 4
                 and projection_record(f.GetOutput()) == record, f"one record for both: {errors} {warnings}")
     again = vtkGeographicProjection()  # the gauges again, with the record: the very same points
     again.SetInputData(gauges)
@@ -420,6 +423,7 @@ def test_tiles_and_window_must_share_their_projection():
     back.Update()
     assert_that(len(said) == 1, f"the input's own record: {said}")
     output, errors, warnings = clip_by(tiles_of(gauges), projected(catchment, False))
+    warnings = beside_coverage(warnings)
     assert_that(not errors and len(warnings) == 1 and "the window (input 1) carries" in warnings[0]
                 and "the tiles (input 0) none" in warnings[0], f"one record: {errors} {warnings}")
     # A window of blocks projected apart (each with its own automatic projection) is refused.
@@ -542,6 +546,63 @@ def test_review_of_windows_of_other_types_global_ids_and_flat_tiles():
                     and all(0 <= x <= 3 * s and 0 <= y <= 3 * s for x, y in points),
                     f"scale {s}: fraction {fraction}, pieces' points at the tiles' scale {points[:3]}")
 
+def left_of(ring, x_max):
+    """The convex ring cut to x <= x_max (Sutherland-Hodgman, one edge)."""
+    cut = []
+    for a, b in zip(ring, ring[1:] + ring[:1]):
+        if a[0] <= x_max:
+            cut.append(a)
+        if (a[0] - x_max) * (b[0] - x_max) < 0:
+            t = (x_max - a[0]) / (b[0] - a[0])
+            cut.append((x_max, a[1] + t * (b[1] - a[1])))
+    return cut
+
+
+def field_value(data, name):
+    array = data.GetFieldData().GetArray(name)
+    assert_that(array is not None and array.GetNumberOfTuples() == 1, f"field data {name}")
+    return array.GetValue(0)
+
+
+def test_the_field_data_says_how_much_of_the_window_the_tiles_cover():
+    # Tiles made in a window smaller than the clip's (vtkDirichletTessellation's default box about
+    # its points) covered a quarter of it without a word; AreaFraction came out 1 + 2^-52 for
+    # tiles inside the window. WindowArea and CoveredFraction against the shoelace areas of the
+    # window and of its overlap with the tiles' window (rectangles), a warning where the tiles do
+    # not cover the window once, and every AreaFraction at most 1.
+    from vtkmodules.vtkFiltersCore import vtkAppendPolyData
+
+    rng = np.random.default_rng(11)
+    points = make_points([tuple(p) for p in 100000.0 + 1000.0 * rng.random((800, 2))])
+    window = [[(100100.0, 100050.0), (100950.0, 100120.0), (100900.0, 100980.0), (100020.0, 100900.0)]]
+    for bounds, label in (((99990.0, 101010.0, 99990.0, 101010.0), "covering"),
+                          ((100000.0, 100600.0, 100000.0, 101000.0), "narrower")):
+        tess = vtkDirichletTessellation()
+        tess.SetInputData(points)
+        tess.SetWindowBounds(*bounds)
+        tess.Update()
+        output, errors, warnings = clip_by(tess.GetOutput(0), polygon(window))
+        expected = abs(shoelace(left_of(window[0], bounds[1]))) / abs(shoelace(window[0]))
+        fractions = cell_values(output, "AreaFraction")
+        assert_that(not errors and all(0.0 < f <= 1.0 for f in fractions) and fractions.count(1.0) > 100,
+                    f"{label}: AreaFraction in (0, 1], {fractions.count(1.0)} tiles inside: {errors}")
+        assert_close(field_value(output, "WindowArea"), abs(shoelace(window[0])), 1e-13, f"{label}: WindowArea")
+        assert_close(field_value(output, "CoveredFraction"), expected, 1e-11, f"{label}: CoveredFraction")
+        said = [w for w in warnings if "of the window's area" in w]
+        assert_that(len(said) == (label == "narrower") and all(f"cover {expected:.6g} of" in w
+                                                               and "has no polygon of input 0" in w for w in said),
+                    f"{label}: the warning {warnings}")
+        if label == "covering":
+            both = vtkAppendPolyData()
+            both.AddInputData(tess.GetOutput(0))
+            both.AddInputData(tess.GetOutput(0))
+            both.Update()
+            output, errors, warnings = clip_by(both.GetOutput(), polygon(window))
+            assert_close(field_value(output, "CoveredFraction"), 2.0, 1e-11, "twice the tiles")
+            assert_that(not errors and any("polygons of input 0 overlap" in w for w in warnings),
+                        f"overlapping tiles named: {warnings}")
+
+
 if __name__ == "__main__":
     run([test_cells_are_simple_pieces_that_fill_tile_and_window,
          test_review_cases,
@@ -551,4 +612,5 @@ if __name__ == "__main__":
          test_tiles_and_window_must_share_their_projection,
          test_the_tiles_point_data_is_named_as_not_passed,
          test_inputs_of_another_type_are_named_and_leave_empty_outputs,
-         test_review_of_windows_of_other_types_global_ids_and_flat_tiles])
+         test_review_of_windows_of_other_types_global_ids_and_flat_tiles,
+         test_the_field_data_says_how_much_of_the_window_the_tiles_cover])
