@@ -402,7 +402,7 @@ bool CheckConvex(const Point2* tile,
   // Both ways: a ring wound twice around its hull has twice its area.
   if (std::abs(hullArea - tileArea) > 1e-6 * hullArea + rounding)
   {
-    throw InputError("tile " + std::to_string(tileId) + " is not convex: its area " +
+    throw NotConvexError("tile " + std::to_string(tileId) + " is not convex: its area " +
       NumberText(tileArea) + " differs from its convex hull's " + NumberText(hullArea) +
       "; tiles must be convex (split it into convex parts)");
   }

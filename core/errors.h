@@ -34,6 +34,14 @@ public:
   std::vector<std::size_t> Rings;
 };
 
+/// An InputError about a tile given to a clip that is not convex (clip.h): a caller that knows
+/// where such tiles come from can say what to do instead.
+class NotConvexError : public InputError
+{
+public:
+  using InputError::InputError;
+};
+
 /// value as the shortest decimal text that reads back as the same double, with "." whatever the
 /// locale, for messages and records: "39.2", not "39.200000000000003"; "1020.0000001", not
 /// "1020.000000"; "nan", "inf".

@@ -599,10 +599,13 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
       throw tessera::InputError("UTMZone " + std::to_string(this->UTMZone) +
         " is neither a zone from 1 to 60 nor 0 (the zone of the data's central longitude)");
     }
-    if (std::isnan(this->MaximumEdgeLength))
+    if (!(this->MaximumEdgeLength >= 0.0))
     {
-      // (every comparison with NaN is false: it turned the densification off without a word)
-      throw tessera::InputError("MaximumEdgeLength is NaN (0 or less turns the densification off)");
+      // (every comparison with NaN is false: it turned the densification off without a word, as
+      // a negative length did)
+      throw tessera::InputError("MaximumEdgeLength " +
+        tessera::NumberText(this->MaximumEdgeLength) +
+        " is not a length of 0 or more degrees (0 turns the densification off)");
     }
     std::vector<Piece> pieces = PiecesOf(input, output);
     std::size_t points = 0;

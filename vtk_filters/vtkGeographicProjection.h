@@ -30,7 +30,7 @@
  * For vtkPolyData input, line and polygon edges are straight in lon/lat (RFC 7946): before
  * projecting, every edge longer than MaximumEdgeLength degrees is cut into equal pieces (point
  * data interpolated linearly; an edge shared by two cells is cut once), so a boundary along a
- * parallel stays on it. MaximumEdgeLength <= 0 turns this off (NaN is an error). An edge whose
+ * parallel stays on it. MaximumEdgeLength 0 turns this off (a negative or NaN one is an error). An edge whose
  * longitudes differ by more than 180 degrees as written is cut the shorter way round, across the
  * 180th meridian (179 to -179) or, in 0 .. 360 data, the prime meridian; where they differ by 180
  * to 270 degrees it could be meant either way, and a warning counts such edges and names the first

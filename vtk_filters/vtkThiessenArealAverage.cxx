@@ -200,14 +200,20 @@ private:
   vtkDataArray* Numbers;
 };
 
+/// text in lower case (ASCII letters).
+std::string LowerCase(std::string text)
+{
+  std::transform(text.begin(),
+    text.end(),
+    text.begin(),
+    [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  return text;
+}
+
 /// Whether text marks a missing value: empty, NA, N/A, NaN or null (any case, spaces around).
 bool IsMissingMarker(const std::string& text)
 {
-  std::string lower = Trimmed(text);
-  std::transform(lower.begin(),
-    lower.end(),
-    lower.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string lower = LowerCase(Trimmed(text));
   return lower.empty() || lower == "na" || lower == "n/a" || lower == "nan" || lower == "null";
 }
 
@@ -452,6 +458,36 @@ std::string NoUsableRowMessage(const ObservationRows& rows,
                  [&](std::size_t k) { return UnknownStationName(stations, unknown[k]); });
   }
   return message.str();
+}
+
+/// A warning, or "", when most observation rows repeat a station and time: times coarser than the
+/// rows, as a table of years and months read with TimeColumn 'year' and no MonthColumn gives (in
+/// ParaView, Month Column is a text box easily left empty). Each station's first row of a year was
+/// used, January's, and the other 11 set aside as repeats, with no word on why.
+std::string CoarseTimesWarning(vtkTable* observations,
+  std::size_t repeated,
+  const std::string& timeColumn,
+  const std::string& monthColumn)
+{
+  const vtkIdType rows = observations->GetNumberOfRows();
+  if (2 * static_cast<vtkIdType>(repeated) <= rows || !monthColumn.empty())
+  {
+    return std::string();
+  }
+  std::ostringstream text;
+  text << repeated << " of the " << rows << " observation rows repeat a station and time of an "
+       << "earlier row: the times of column '" << timeColumn
+       << "' may be coarser than the rows (years, with the months in another column?)";
+  for (vtkIdType c = 0; c < observations->GetNumberOfColumns(); ++c)
+  {
+    const char* name = observations->GetColumnName(c);
+    if (name && LowerCase(name) == "month")
+    {
+      text << ": set MonthColumn to '" << name << "'";
+      break;
+    }
+  }
+  return text.str();
 }
 
 /// An incomplete row (observation_series.h) of the station column: "row 12 (no station id)",
@@ -1353,6 +1389,15 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
       return RowName(stations, repeatedRows[k]) + " repeating row " +
         std::to_string(repeatedRowOf[k]);
     });
+  if (observations)
+  {
+    const std::string coarse =
+      CoarseTimesWarning(observations, repeatedRows.size(), this->TimeColumn, this->MonthColumn);
+    if (!coarse.empty())
+    {
+      vtkWarningMacro(<< coarse);
+    }
+  }
   warnOf(duplicates.size(),
     "gauge(s) stand where an earlier gauge stands; the first that reports is used",
     [&](std::size_t k)

@@ -94,6 +94,23 @@ tessera::Catchment WindowOf(const tessera_vtk::Rings& rings,
   }
 }
 
+/// For a tile that is not convex: where the tiles are vtkThiessenArealAverage's (its cell arrays
+/// Area_m2 and CellWeight), what to do instead. Its tiles come in lon/lat, their edges densified:
+/// convex in the plane where they were made, not in lon/lat, so splitting them (what the error
+/// advises) was no help to a user clipping them to a sub-basin.
+std::string ThiessenTilesNote(vtkPolyData* tiles)
+{
+  vtkCellData* data = tiles ? tiles->GetCellData() : nullptr;
+  if (!data || !data->GetAbstractArray("Area_m2") || !data->GetAbstractArray("CellWeight"))
+  {
+    return std::string();
+  }
+  return ". These look like Thiessen Areal Average's tiles, which are convex in its projected "
+         "plane, not in lon/lat: for the weights over a sub-basin, give it the sub-basin as its "
+         "catchment; to clip tiles, clip Dirichlet Tessellation's tiles of the projected gauges "
+         "by the projected sub-basin (one ProjectionRecord for both)";
+}
+
 /// A field-data array of one double.
 vtkSmartPointer<vtkDoubleArray> OneValue(const char* name, double value)
 {
@@ -381,6 +398,12 @@ int vtkWindowClip::RequestData(vtkInformation*,
                          "SkippedCellIds.");
     }
     return 1;
+  }
+  catch (const tessera::NotConvexError& e)
+  {
+    vtkErrorMacro(<< e.what() << ThiessenTilesNote(tiles));
+    output->Initialize();
+    return 0;
   }
   catch (const std::exception& e)
   {

@@ -773,8 +773,15 @@ TEST(ArealAverage, BadInputIsNamed)
   // catchment; 0 .. 360 and -180 .. 180 are both fine.
   const auto errorOf = [&](const std::vector<Point2>& gauges, const std::vector<Point2>& ring)
   { return ErrorOf([&] { ThiessenArealAverage average(gauges, catchment.Offsets, ring); }); };
-  EXPECT_NE(
-    errorOf({ { 0.2, 0.2 }, { -1031.5, 0.5 } }, catchment.Ring).find("gauge 1"), std::string::npos);
+  const std::string typo = errorOf({ { 0.2, 0.2 }, { -1031.5, 0.5 } }, catchment.Ring);
+  EXPECT_NE(typo.find("gauge 1"), std::string::npos) << typo;
+  // Metres of a projection (UTM) fed as degrees are named as such; a typo is not.
+  EXPECT_EQ(typo.find("projected"), std::string::npos) << typo;
+  const std::string utm = errorOf({ { 500000.0, 4400000.0 } }, catchment.Ring);
+  EXPECT_NE(utm.find("gauge 0 has an invalid longitude/latitude (500000, 4400000): these look like "
+                     "projected coordinates (metres); give longitude and latitude in degrees"),
+    std::string::npos)
+    << utm;
   const Square far(359.0, 0.0, 360.5, 1.0);
   const std::string farError = errorOf({ { 359.5, 0.5 } }, far.Ring);
   EXPECT_NE(farError.find("catchment ring 0 vertex 1"), std::string::npos) << farError;

@@ -6,7 +6,7 @@ import os
 import sys
 
 from paraview import servermanager
-from paraview.simple import CSVReader, LoadPlugin, TableToPoints
+from paraview.simple import CSVReader, Delete, LoadPlugin, TableToPoints
 
 plugin = os.environ["TESSERA_PLUGIN"]
 source_dir = os.environ["TESSERA_SOURCE_DIR"]
@@ -41,14 +41,60 @@ for i in range(data.GetNumberOfPoints()):
     if abs(y / 1000.0 - lats[i] * 110.9) > 60.0:
         failures.append(f"point {i}: northing {y} far from latitude {lats[i]}")
 
-# The panel shows the UTM settings for UTM only, the centre and parallels with ParametersFromData
-# off only; ProjectionRecord is there to project a second data set alike.
-for name, shown_by in (("UTMZone", "Projection"), ("UTMNorth", "Projection"), ("CentralLongitude", "ParametersFromData"),
-                       ("CentralLatitude", "ParametersFromData"), ("StandardParallels", "ParametersFromData")):
-    hints = projected.GetProperty(name).GetHints()
-    decorator = hints.FindNestedElementByName("PropertyWidgetDecorator") if hints else None
-    if decorator is None or decorator.GetAttribute("property") != shown_by:
-        failures.append(f"{name} is not shown by {shown_by}")
+# The panel shows a setting only where it is read: UTMZone and UTMNorth for UTM; the centre and
+# parallels with ParametersFromData off, each for the projections that read it (a Central Latitude
+# shown for a conic did nothing). Checked against the filter: with ParametersFromData off, under
+# each projection, a setting is shown (its decorators, evaluated here as ParaView's panel does)
+# exactly when changing it moves the points.
+
+
+def shown(element, values):
+    """Whether a property whose Hints element this is would be shown, the other properties holding
+    values ({name: int}): GenericDecorator (mode visibility: property == value, or != with
+    inverse="1") and CompositeDecorator (Expression and/or)."""
+    kind = element.GetName()
+    if kind == "PropertyWidgetDecorator" and element.GetAttribute("type") == "GenericDecorator":
+        equal = values[element.GetAttribute("property")] == int(element.GetAttribute("value"))
+        return equal != (element.GetAttribute("inverse") == "1")
+    children = [element.GetNestedElement(k) for k in range(element.GetNumberOfNestedElements())]
+    children = [c for c in children if c.GetName() in ("PropertyWidgetDecorator", "Expression")]
+    if kind == "Expression" and element.GetAttribute("type") == "or":
+        return any(shown(c, values) for c in children)
+    return all(shown(c, values) for c in children)  # (Hints, a composite, an "and")
+
+
+def moves_points(settings, name, value):
+    """Whether setting name to value (ParametersFromData off) moves the projected gauges."""
+    outputs = []
+    for changed in (False, True):
+        f = GeographicProjection(Input=points)  # noqa: F821
+        f.ParametersFromData = 0
+        f.CentralLongitude, f.CentralLatitude, f.StandardParallels = -105.0, 39.0, [37.0, 41.0]
+        f.Projection = settings["Projection"]
+        if changed:
+            setattr(f, name, value)
+        f.UpdatePipeline()
+        data = servermanager.Fetch(f)
+        outputs.append([data.GetPoint(i) for i in range(0, data.GetNumberOfPoints(), 25)])
+        Delete(f)
+    return outputs[0] != outputs[1]
+
+
+for projection in range(6):
+    settings = {"Projection": projection, "ParametersFromData": 0}
+    for name, value in (("CentralLongitude", -104.0), ("CentralLatitude", 38.0), ("StandardParallels", [36.0, 42.0])):
+        visible = shown(projected.GetProperty(name).GetHints(), settings)
+        if visible != moves_points(settings, name, value):
+            failures.append(f"projection {projection}: {name} is {'shown' if visible else 'hidden'} but "
+                            f"{'does not move' if visible else 'moves'} the points")
+    for name in ("UTMZone", "UTMNorth"):
+        if shown(projected.GetProperty(name).GetHints(), settings) != (projection == 4):
+            failures.append(f"projection {projection}: {name} shown {not projection == 4}")
+    for name in ("CentralLongitude", "CentralLatitude", "StandardParallels"):
+        if shown(projected.GetProperty(name).GetHints(), {"Projection": projection, "ParametersFromData": 1}):
+            failures.append(f"projection {projection}: {name} shown with ParametersFromData on")
+    if shown(projected.GetProperty("ParametersFromData").GetHints(), settings) != (projection != 4):
+        failures.append(f"projection {projection}: ParametersFromData shown {projection == 4} (UTM takes its zone)")
 if projected.GetProperty("ProjectionRecord") is None:
     failures.append("no ProjectionRecord property")
 # The panel's labels: ParaView splits a name at capitals (UTMZone would read "U TMZone").

@@ -1311,7 +1311,8 @@ def test_the_filters_errors_name_the_file_and_line():
             (("--catchment", bow_tie),
              f"{bow_tie}: ring 0 is self-intersecting: segment 0 and segment 2 touch or cross"),
             (("--catchment", metres),
-             f"{metres}: catchment ring 0 vertex 0 has an invalid longitude/latitude (500000, "),
+             f"{metres}: catchment ring 0 vertex 0 has an invalid longitude/latitude (500000, 4100000): these "
+             "look like projected coordinates (metres)"),
             (("--observations", header_only), f"{header_only}: the observations table has no rows"),
         ]
         for arguments, expected in cases:

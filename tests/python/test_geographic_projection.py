@@ -323,16 +323,23 @@ def test_global_ids_are_kept_where_no_edge_is_cut_and_their_loss_is_said():
                 f"{warned}")
 
 
-def test_a_nan_edge_length_is_an_error():
+def test_a_nan_or_negative_edge_length_is_an_error():
     """MaximumEdgeLength NaN turned the densification off without a word (every comparison with
-    NaN is false): an error saying how to turn it off."""
+    NaN is false), and so did a negative length: an error naming it and saying how to turn it off;
+    0 turns it off (the square's 4 corners stay 4 points)."""
     f = vtkGeographicProjection()
     errors = messages_of(f)
     f.SetInputData(polygon([[(-109, 37), (-102, 37), (-102, 41), (-109, 41)]]))
-    f.SetMaximumEdgeLength(float("nan"))
+    for length, text in ((float("nan"), "nan"), (-1.0, "-1")):
+        f.SetMaximumEdgeLength(length)
+        f.Update()
+        assert_that(len(errors) == 1 and f"MaximumEdgeLength {text} is not a length of 0 or more degrees (0 turns "
+                    "the densification off)" in errors[0] and f.GetOutput().GetNumberOfPoints() == 0,
+                    f"{length}: {errors}")
+        errors.clear()
+    f.SetMaximumEdgeLength(0.0)
     f.Update()
-    assert_that(len(errors) == 1 and "MaximumEdgeLength is NaN" in errors[0] and f.GetOutput().GetNumberOfPoints() == 0,
-                f"{errors}")
+    assert_that(not errors and f.GetOutput().GetNumberOfPoints() == 4, f"0: {errors}")
 
 
 def test_a_projection_or_zone_that_is_no_choice_is_named():
@@ -385,5 +392,5 @@ if __name__ == "__main__":
          test_an_edge_that_reads_both_ways_round_the_globe_is_reported,
          test_automatic_with_parameters_set_is_their_albers_conic,
          test_global_ids_are_kept_where_no_edge_is_cut_and_their_loss_is_said,
-         test_a_nan_edge_length_is_an_error,
+         test_a_nan_or_negative_edge_length_is_an_error,
          test_a_projection_or_zone_that_is_no_choice_is_named])

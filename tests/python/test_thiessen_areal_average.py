@@ -493,6 +493,32 @@ def test_window_clip_names_a_non_convex_tile():
         assert_that(listed is not None and listed.GetNumberOfTuples() == 0, f"{name}: written, and empty")
 
 
+def test_clipping_the_averages_lon_lat_tiles_says_what_to_do_instead():
+    # The areal average's tiles come in lon/lat with densified edges: convex where they were made
+    # (the projected plane), not in lon/lat. Clipping them to a sub-basin is a natural next step in
+    # ParaView; the error advised splitting the tile into convex parts, no help here. It now says
+    # what to do instead; a tile of other origin gets the error alone.
+    coords, ids, ring, _ = read_colorado()
+    average = vtkThiessenArealAverage()
+    average.SetGaugesData(gauges_polydata(coords, ids, [1.0] * len(ids)))
+    average.SetCatchmentData(polygon([ring]))
+    average.Update(0)
+    tiles = average.GetOutputDataObject(0)
+    clip = vtkWindowClip()
+    errors = messages_of(clip)
+    clip.SetInputData(tiles)
+    clip.SetWindowData(polygon([[(-106.0, 38.0), (-104.0, 38.0), (-104.0, 40.0), (-106.0, 40.0)]]))
+    clip.Update()
+    assert_that(len(errors) == 1 and " is not convex: " in errors[0] and "These look like Thiessen Areal Average's "
+                "tiles, which are convex in its projected plane, not in lon/lat: for the weights over a sub-basin, "
+                "give it the sub-basin as its catchment" in errors[0], f"the areal average's tiles: {errors}")
+    tiles.GetCellData().RemoveArray("CellWeight")  # (no longer the areal average's)
+    clip.Modified()
+    clip.Update()
+    assert_that(len(errors) == 2 and " is not convex: " in errors[1] and "Thiessen" not in errors[1],
+                f"other tiles: {errors}")
+
+
 def test_window_clip_reports_cells_that_are_not_polygons():
     tiles = polygon([[(1, 1), (2, 1), (2, 2), (1, 2)]])
     lines = vtkCellArray()
@@ -775,6 +801,28 @@ def test_the_monthly_csv_as_a_text_reader_gives_it():
     for t, mean in zip(summary_column(numeric, "Time"), summary_column(numeric, "ArealMean")):
         k = times.index(t)
         assert_close(means[k], mean, 1e-12 * abs(mean), f"month {t}: the whole CSV against 3 months")
+    # Month Column left empty (in ParaView a text box beside drop-downs): years as the steps, each
+    # station's January used and the other months set aside as repeats. A warning says why and
+    # names the column to set; there is none with the months given.
+    for month_column in ("", "month"):
+        f = vtkThiessenArealAverage()
+        warnings = messages_of(f, "WarningEvent")
+        f.SetGaugesData(gauges_polydata(coords, ids))
+        f.SetCatchmentData(polygon([ring]))
+        f.SetObservationsData(reader.GetOutput())
+        f.SetTimeColumn("year")
+        f.SetMonthColumn(month_column)
+        f.SetValueColumn("precip")
+        f.Update(1)
+        coarse = [w for w in warnings if "observation rows repeat a station and time" in w]
+        rows = reader.GetOutput().GetNumberOfRows()
+        repeats = f.GetOutputDataObject(1).GetFieldData().GetArray("RepeatedObservationRows").GetNumberOfTuples()
+        if month_column:
+            assert_that(coarse == [] and repeats == 0, f"with the months: {coarse}, {repeats} repeats")
+        else:
+            assert_that(len(coarse) == 1 and f"{repeats} of the {rows} observation rows" in coarse[0]
+                        and "set MonthColumn to 'month'" in coarse[0] and 2 * repeats > rows,
+                        f"without the months: {warnings}")
 
 
 def test_blank_values_read_as_text_are_missing():
@@ -1483,6 +1531,7 @@ if __name__ == "__main__":
          test_bad_gauge_and_self_intersecting_catchment_are_named,
          test_window_clip_of_projected_tiles_sums_to_the_catchment,
          test_window_clip_names_a_non_convex_tile,
+         test_clipping_the_averages_lon_lat_tiles_says_what_to_do_instead,
          test_window_clip_reports_cells_that_are_not_polygons,
          test_window_clip_reports_tiles_without_area_and_names_an_overflow,
          test_window_cells_that_are_not_rings_are_reported,
