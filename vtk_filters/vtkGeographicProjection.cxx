@@ -420,10 +420,21 @@ tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
     {
       return tessera::ProjectionParameters::FromString(record);
     }
+    if (self->GetProjection() == vtkGeographicProjection::UTM && self->GetUTMZone() != 0)
+    {
+      // A zone and a hemisphere are the whole of a UTM projection: nothing to take from the data
+      // (ParametersFromData, on by default, made a scripter turn it off to go back from UTM).
+      tessera::ProjectionParameters utm;
+      utm.Kind = KindOf(vtkGeographicProjection::UTM);
+      utm.UTMZone = self->GetUTMZone();
+      utm.UTMNorth = self->GetUTMNorth();
+      return utm;
+    }
     if (self->GetParametersFromData())
     {
-      throw tessera::InputError("Inverse needs the input's TesseraProjection field data, or "
-                                "ParametersFromData off and the projection's parameters set");
+      throw tessera::InputError("Inverse needs the input's TesseraProjection field data, a UTM "
+                                "zone (UTMZone 1 to 60), or ParametersFromData off and the "
+                                "projection's parameters set");
     }
   }
   std::vector<tessera::Point2> lonlat;

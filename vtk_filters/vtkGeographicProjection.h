@@ -161,8 +161,9 @@ public:
   ///@{
   /**
    * Off (default): lon/lat to x/y. On: x/y back to lon/lat, with the parameters read from the
-   * input's `TesseraProjection` field data when present, else from this filter's settings
-   * (ParametersFromData must then be off).
+   * input's `TesseraProjection` field data when present, else from this filter's settings: a
+   * UTM zone (UTMZone 1 to 60 with UTMNorth: the whole of a UTM projection), or the parameters
+   * set with ParametersFromData off.
    */
   vtkSetMacro(Inverse, bool);
   vtkGetMacro(Inverse, bool);

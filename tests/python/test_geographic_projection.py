@@ -140,6 +140,36 @@ def test_the_blocks_of_a_composite_share_one_projection():
                 f"the bad point named with its block: {messages}")
 
 
+def test_utm_metres_without_a_record_go_back_by_their_zone():
+    """UTM points from elsewhere (no TesseraProjection record) go back to lon/lat by the zone and
+    hemisphere alone: a scripter had to turn ParametersFromData off as well, which a UTM projection
+    does not read (the panel hides it for UTM). Against the forward projection of the same places
+    in that zone; without a zone (0) the error says what to give."""
+    places = [(-105.0, 40.0), (-106.3, 37.2), (-103.1, 41.9)]
+    forward = vtkGeographicProjection()
+    forward.SetInputData(make_points(places))
+    forward.SetProjectionToUTM()
+    forward.SetUTMZone(13)
+    forward.Update()
+    metres = [forward.GetOutput().GetPoint(i)[:2] for i in range(len(places))]
+    inverse = vtkGeographicProjection()
+    errors = messages_of(inverse)
+    inverse.SetInputData(make_points(metres))  # (plain points: no record)
+    inverse.InverseOn()
+    inverse.SetProjectionToUTM()
+    inverse.SetUTMZone(13)
+    inverse.Update()
+    back = inverse.GetOutput()
+    assert_that(not errors and back.GetNumberOfPoints() == 3, f"zone 13: {errors}")
+    for i, (lon, lat) in enumerate(places):
+        assert_close(back.GetPoint(i)[0], lon, 1e-9, f"longitude {i} back")
+        assert_close(back.GetPoint(i)[1], lat, 1e-9, f"latitude {i} back")
+    inverse.SetUTMZone(0)
+    inverse.Update()
+    assert_that(len(errors) == 1 and "Inverse needs the input's TesseraProjection field data, a UTM zone (UTMZone "
+                "1 to 60)" in errors[0] and inverse.GetOutput().GetNumberOfPoints() == 0, f"zone 0: {errors}")
+
+
 def test_no_points_give_an_empty_output_without_error():
     f = vtkGeographicProjection()
     messages = messages_of(f)
@@ -387,6 +417,7 @@ if __name__ == "__main__":
          test_azimuthal_equidistant_keeps_distances_from_the_centre,
          test_nan_point_is_named_and_output_is_empty,
          test_the_blocks_of_a_composite_share_one_projection,
+         test_utm_metres_without_a_record_go_back_by_their_zone,
          test_no_points_give_an_empty_output_without_error,
          test_an_edge_cut_into_the_most_pieces_is_reported,
          test_an_edge_that_reads_both_ways_round_the_globe_is_reported,
