@@ -977,14 +977,8 @@ std::vector<std::int32_t> GroupByPlace(const std::vector<Point2>& xy, double met
 
 [[noreturn]] void ThrowInvalidLonLat(const std::string& what, const Point2& p)
 {
-  // Tens of thousands or more: metres of a projection (UTM's eastings are 1.6e5 to 8.4e5), not
-  // degrees (-1031.5 is a typo of -103.15, not metres).
-  const bool metres = std::abs(p.x) >= 1e4 || std::abs(p.y) >= 1e4;
   throw InputError(what + " has an invalid longitude/latitude (" + NumberText(p.x) + ", " +
-    NumberText(p.y) + ")" +
-    (metres ? ": these look like projected coordinates (metres); give longitude and latitude "
-              "in degrees (a projection's inverse gives them back)"
-            : ""));
+    NumberText(p.y) + ")" + ProjectedCoordinatesNote(p));
 }
 
 /// An edge that reads two ways round the globe (EdgeReadsBothWays) makes two different

@@ -1,5 +1,6 @@
 #include "clip.h"
 
+#include "compensated_sum.h"
 #include "errors.h"
 #include "polygon_validation.h"
 #include "predicates_inline.h"
@@ -14,29 +15,6 @@ namespace tessera
 {
 namespace
 {
-
-// Neumaier-style running sum: the rounding error of every addition is kept and added back at the
-// end, so a sum of many terms of mixed sign loses no more than one rounding.
-struct CompensatedSum
-{
-  double Sum = 0.0;
-  double Error = 0.0;
-  void Add(double value)
-  {
-    const double sum = this->Sum + value;
-    const double virtualValue = sum - this->Sum;
-    this->Error += (this->Sum - (sum - virtualValue)) + (value - virtualValue);
-    this->Sum = sum;
-  }
-  // a * b with its rounding error recovered exactly by fma (Ogita, Rump and Oishi's Dot2).
-  void AddProduct(double a, double b)
-  {
-    const double product = a * b;
-    this->Error += std::fma(a, b, -product);
-    this->Add(product);
-  }
-  double Value() const { return this->Sum + this->Error; }
-};
 
 // Whether a - b is exact: its rounding error (Knuth's TwoSum) is zero.
 bool DifferenceIsExact(double a, double b)

@@ -126,9 +126,10 @@ public:
   /// Area of tile & catchment. The tile is a convex polygon with anticlockwise vertices; it is
   /// clipped as the convex hull of its vertices, so repeated and collinear vertices, and the small
   /// non-convexity of rounding (vertices an ulp apart, folds), change the area by ulps. Throws
-  /// InputError for fewer than 3 vertices, a NaN or infinite vertex, clockwise vertices, or a tile
-  /// that is not convex (its area differing from its convex hull's by more than a millionth,
-  /// beyond the rounding of double coordinates; see ClipInto for others); a tile of zero area
+  /// InputError for fewer than 3 vertices, a NaN or infinite vertex, clockwise vertices, or (a
+  /// NotConvexError) a tile that is not convex (its area differing from its convex hull's by more
+  /// than a millionth, beyond the rounding of double coordinates; see ClipInto for others); a
+  /// tile of zero area
   /// gives 0.
   double ClipArea(const std::vector<Point2>& tile) const;
   /// Area and rings of tile & catchment (see ClippedTile).

@@ -256,9 +256,19 @@ void ValidateLonLat(const std::vector<Point2>& lonlat)
     {
       throw InputError(DescribePoint("point", static_cast<long long>(i), p) +
         (std::abs(p.y) > 90.0 ? " has a latitude beyond 90 degrees"
-                              : " has a longitude beyond 360 degrees"));
+                              : " has a longitude beyond 360 degrees") +
+        ProjectedCoordinatesNote(p));
     }
   }
+}
+
+std::string ProjectedCoordinatesNote(const Point2& p)
+{
+  const bool metres =
+    std::isfinite(p.x) && std::isfinite(p.y) && (std::abs(p.x) >= 1e4 || std::abs(p.y) >= 1e4);
+  return metres ? ": these look like projected coordinates (metres); give longitude and latitude "
+                  "in degrees (a projection's inverse gives them back)"
+                : std::string();
 }
 
 GeographicExtent ComputeExtent(const std::vector<Point2>& lonlat)

@@ -68,6 +68,12 @@ struct GeographicExtent
 bool InLonLatRange(const Point2& p);
 /// Throws InputError naming the first point with a NaN/Inf coordinate or out of InLonLatRange.
 void ValidateLonLat(const std::vector<Point2>& lonlat);
+
+/// For a finite point out of the lon/lat ranges: ": these look like projected coordinates ..."
+/// when a coordinate is 10^4 or more (metres of a projection, as UTM's eastings of 1.6e5 to
+/// 8.4e5, fed as degrees), else "" (-1031.5 is a typo of -103.15, not metres). Appended to the
+/// errors that name such a point.
+std::string ProjectedCoordinatesNote(const Point2& p);
 /// Extent of valid lon/lat points (validated first). Throws InputError if there are none.
 GeographicExtent ComputeExtent(const std::vector<Point2>& lonlat);
 

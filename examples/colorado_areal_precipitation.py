@@ -304,11 +304,13 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched):
     - wide: a record per time, with a column per station named by its id (as a spreadsheet or a
       data portal gives a record: date,05-1234,05-2345,...) beside the time columns, and no
       station_id or precip column. The station columns whose id a gauge has (station_key) give
-      one observation each per record, in the header's order, the column being the value column;
+      an observation per record where they hold a value (a record without any gives its first
+      column's, missing), in the header's order, the column being the value column;
       those whose id no gauge has are not read, but appended to unmatched as (column number from 1,
       name). Ends the script when none of them is a gauge's, naming the stations
-      file (stations_path) and some of its ids as written (station_ids), or when two columns
-      name one station, which of them holds its values being a guess.
+      file (stations_path) and some of its ids as written (station_ids), when two columns name
+      one gauge's station (which of them holds its values would be a guess), or when it has no
+      time column.
     A file with only one of station_id and precip is a long file lacking the other (named)."""
     header = []
     records = csv_input.rows(path, (), "observations", ("station_id", "precip", *TIME_COLUMNS), header,
@@ -320,21 +322,23 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched):
         for line, row in records:
             yield line, row, csv_input.text(row, "station_id", path, line), "precip"
         return
-    columns, named = [], {}  # (the value columns, and the first column of each station)
+    if not any(name in TIME_COLUMNS for name in header):
+        unnamed = " (its first column has no name: if it holds the times, name it date)" if header[:1] == [""] else ""
+        csv_input.fail(f"{path}: the observations file has no station_id and precip columns, so it is read as a "
+                       "wide file (a row per time, a column per station), but it has no time column: date, or "
+                       f"year and month{unnamed}; its header: {', '.join(header) or 'none'}")
+    columns, named = [], {}  # (the value columns, and the first column of each gauge's station)
     for number, name in enumerate(header, 1):
         if name in TIME_COLUMNS:
             continue
         key = station_key(name)
-        if not key:  # (an empty name: a trailing separator, or a column left unnamed)
+        if key not in gauge_of:  # (an empty name too: a trailing separator, or a column left unnamed)
             unmatched.append((number, name))
             continue
         if key in named:
-            csv_input.fail(f"{path}: header: columns {named[key]} and {number} both name station {name!r}: keep one")
+            csv_input.fail(f"{path}:1: columns {named[key]} and {number} both name station {name!r}: keep one")
         named[key] = number
-        if key in gauge_of:
-            columns.append(name)
-        else:
-            unmatched.append((number, name))
+        columns.append(name)
     if not columns:
         there = list(dict.fromkeys(station_ids))
         csv_input.fail(f"{path}: the observations file has no station_id and precip columns, and none of its "
@@ -344,7 +348,10 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched):
                        "station_id, year, month, precip, or station_id, date, precip), or a row per time "
                        "with a column per station named by its station_id (date,ID1,ID2,...)")
     for line, row in records:
-        for column in columns:
+        # Only the cells with a value (a wide record is mostly gaps: 58% of Colorado's cells), and
+        # the first cell of a row without any, whose time stays a step where no gauge reported.
+        reported = [column for column in columns if not csv_input.is_missing(row.get(column))]
+        for column in reported or columns[:1]:
             yield line, row, column, column
 
 
@@ -738,7 +745,11 @@ class InputFiles:
         return f"the areal average failed: {text}"
 
     def warning(self, text):
-        """The line that reports the filter's warning `text`."""
+        """The line that reports the filter's warning `text`, or None for one the script's table
+        makes untrue: the times may be coarser than the rows (the script gives every row its
+        step's time; repeated rows are warned of on their own)."""
+        if re.match(r"\d+ of the \d+ observation rows repeat a station and time", text):
+            return None
         if re.match(r"\d+ (station id\(s\) of the observations|observation row\(s\))", text):
             return f"{self.observations}: {self.rows_as_lines(text)}"
         if re.match(r"\d+ observation value\(s\) are exactly", text):
@@ -770,8 +781,10 @@ class FilterMessages:
             self.errors.append(text)
 
         def on_warning(text):
-            progress.end_line()
-            print(files.warning(text), file=sys.stderr, flush=True)
+            line = files.warning(text)
+            if line:
+                progress.end_line()
+                print(line, file=sys.stderr, flush=True)
 
         def on_executive_error(text):
             progress.stop()

@@ -610,7 +610,7 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
       throw tessera::InputError("UTMZone " + std::to_string(this->UTMZone) +
         " is neither a zone from 1 to 60 nor 0 (the zone of the data's central longitude)");
     }
-    if (!(this->MaximumEdgeLength >= 0.0))
+    if (!this->Inverse && !(this->MaximumEdgeLength >= 0.0)) // (an inverse does not densify)
     {
       // (every comparison with NaN is false: it turned the densification off without a word, as
       // a negative length did)

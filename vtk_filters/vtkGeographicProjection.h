@@ -16,7 +16,8 @@
  *   extent. Equal-area, so tile areas in the plane are areas on the ellipsoid.
  * - AlbersEqualArea, LambertConformalConic: conics with two standard parallels.
  * - TransverseMercator (scale 1 on the central meridian) and UTM (zone from SetUTMZone, 0 = the
- *   zone of the data's central longitude; false easting 500 km, false northing 10000 km south).
+ *   zone of the central longitude: the data's, or CentralLongitude with ParametersFromData off,
+ *   the hemisphere then CentralLatitude's; false easting 500 km, false northing 10000 km south).
  * - AzimuthalEquidistant about (CentralLongitude, CentralLatitude).
  * With ParametersFromData on (default) the centre and standard parallels come from the data as
  * for Automatic; off, the values set with SetCentralLongitude, SetCentralLatitude and
@@ -30,7 +31,8 @@
  * For vtkPolyData input, line and polygon edges are straight in lon/lat (RFC 7946): before
  * projecting, every edge longer than MaximumEdgeLength degrees is cut into equal pieces (point
  * data interpolated linearly; an edge shared by two cells is cut once), so a boundary along a
- * parallel stays on it. MaximumEdgeLength 0 turns this off (a negative or NaN one is an error). An edge whose
+ * parallel stays on it. MaximumEdgeLength 0 turns this off (a negative or NaN one is an
+ * error). An edge whose
  * longitudes differ by more than 180 degrees as written is cut the shorter way round, across the
  * 180th meridian (179 to -179) or, in 0 .. 360 data, the prime meridian; where they differ by 180
  * to 270 degrees it could be meant either way, and a warning counts such edges and names the first
@@ -150,9 +152,9 @@ public:
   ///@{
   /**
    * Longest edge, in degrees of the lon/lat plane, left uncut before projecting (default 0.1).
-   * 0 or less: no densification. An edge is cut into at most 10^6 pieces (a warning counts
-   * those), and a step that would add more than 10^7 points in all is an error (a step given in
-   * metres, say), before any point is made.
+   * 0: no densification (a negative or NaN length is an error). An edge is cut into at most
+   * 10^6 pieces (a warning counts those), and a step that would add more than 10^7 points in all
+   * is an error (a step given in metres, say), before any point is made.
    */
   vtkSetMacro(MaximumEdgeLength, double);
   vtkGetMacro(MaximumEdgeLength, double);

@@ -16,6 +16,7 @@
 
 #include "TesseraFilterUtilities.h"
 #include "clip.h"
+#include "compensated_sum.h"
 #include "display_pieces.h"
 #include "errors.h"
 #include "geo.h"
@@ -26,7 +27,6 @@
 #include <cmath>
 #include <exception>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -118,35 +118,6 @@ vtkSmartPointer<vtkDoubleArray> OneValue(const char* name, double value)
   array->SetName(name);
   array->InsertNextValue(value);
   return array;
-}
-
-/// A warning when the clipped tiles do not cover the window once (covered: the sum of the tiles'
-/// clipped areas; window: the window's area), or "". Left uncovered, areas read off the pieces
-/// (a share of a catchment) came out too small without a word: tiles of a tessellation whose
-/// window is smaller than this one cover only its part. Beyond rounding (a plain sum of the
-/// tiles' exact areas is within n ulps): a relative 1e-9.
-std::string CoverageWarning(double covered, double window)
-{
-  if (!(window > 0.0) || std::abs(covered - window) <= 1e-9 * window)
-  {
-    return std::string();
-  }
-  std::ostringstream text;
-  text.precision(6);
-  text << "the clipped polygons of input 0 cover " << covered / window << " of the window's area ("
-       << covered << " of " << window << "; field data "
-       << "CoveredFraction): ";
-  if (covered < window)
-  {
-    text << "part of the window has no polygon of input 0 (tiles made in a smaller window, such "
-            "as vtkDirichletTessellation's default box about its points: give it WindowBounds "
-            "that hold this window)";
-  }
-  else
-  {
-    text << "polygons of input 0 overlap (two tessellations in one input?)";
-  }
-  return text.str();
 }
 
 /// The tiles' point data is not passed (their cell and field data are): the pieces' vertices are
@@ -267,7 +238,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
     empty->SetName("EmptyTileIds");
     // Tiles whose points are floats are convex up to a float's rounding (the clip's convexity
     // check allows for it).
-    double covered = 0.0; // the clipped areas summed (scaled as the window is)
+    tessera::CompensatedSum covered; // the clipped areas (scaled as the window is)
     const bool floatPoints = tiles->GetPoints() && tiles->GetPoints()->GetDataType() == VTK_FLOAT;
     const double epsilon =
       floatPoints ? std::numeric_limits<float>::epsilon() : std::numeric_limits<double>::epsilon();
@@ -328,7 +299,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
         }
         continue;
       }
-      covered += clipped;
+      covered.Add(clipped);
       // ClipInto's rings are right for areas, not for display (zero-width spikes and bridges,
       // lobes joined into one ring, holes as clockwise rings): one cell per display piece instead,
       // each a simple polygon, the pieces disjoint and filling tile & window.
@@ -370,15 +341,10 @@ int vtkWindowClip::RequestData(vtkInformation*,
     output->GetFieldData()->AddArray(empty);
     output->GetFieldData()->AddArray(skipped);
     const double windowArea = std::ldexp(catchment.Area(), -2 * exponent);
-    const double coveredArea = std::ldexp(covered, -2 * exponent);
+    const double coveredArea = std::ldexp(covered.Value(), -2 * exponent);
     output->GetFieldData()->AddArray(OneValue("WindowArea", windowArea));
     output->GetFieldData()->AddArray(
       OneValue("CoveredFraction", windowArea > 0.0 ? coveredArea / windowArea : 0.0));
-    const std::string coverageWarning = CoverageWarning(coveredArea, windowArea);
-    if (!coverageWarning.empty())
-    {
-      vtkWarningMacro(<< coverageWarning);
-    }
     if (empty->GetNumberOfValues() > 0)
     {
       vtkWarningMacro(<< empty->GetNumberOfValues()

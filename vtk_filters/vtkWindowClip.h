@@ -46,13 +46,15 @@
  * the doubles allow: 0 below some 1e-323). Areas use exact
  * orientation tests and compensated sums, so the clipped areas of a tiling that covers the window
  * sum to the window's area to round-off. The field data arrays `WindowArea` (the window's area)
- * and `CoveredFraction` (the tiles' clipped areas summed, over WindowArea) say whether they do: a
- * warning gives both when the fraction differs from 1 by more than 1e-9, as when the tiles come
- * from a tessellation whose window (vtkDirichletTessellation's default box about its points) is
- * smaller than this one, or when tiles overlap. The tiles' point data is not passed (the pieces' vertices are new points; a warning
- * names its arrays). Only x and y are used, in one plane: inputs whose `TesseraProjection` records
- * (vtkGeographicProjection) differ are an error naming both, and a record on one input only gives a
- * warning.
+ * and `CoveredFraction` (the tiles' clipped areas summed, over WindowArea) say whether they do:
+ * below 1 where part of the window has no tile (tiles of a tessellation made in a smaller window,
+ * such as vtkDirichletTessellation's default box about its points: areas over the window then
+ * count only the covered part), above 1 where tiles overlap. (Not a warning: a clip of a few
+ * tiles, or of a composite's blocks and a parallel run's pieces, each clipped alone, covers a
+ * share of the window by design.) The tiles' point data is not passed (the pieces' vertices are
+ * new points; a warning names its arrays). Only x and y are used, in one plane: inputs whose
+ * `TesseraProjection` records (vtkGeographicProjection) differ are an error naming both, and a
+ * record on one input only gives a warning.
  */
 
 #ifndef vtkWindowClip_h

@@ -43,9 +43,10 @@ for i in range(data.GetNumberOfPoints()):
 
 # The panel shows a setting only where it is read: UTMZone and UTMNorth for UTM; the centre and
 # parallels with ParametersFromData off, each for the projections that read it (a Central Latitude
-# shown for a conic did nothing). Checked against the filter: with ParametersFromData off, under
-# each projection, a setting is shown (its decorators, evaluated here as ParaView's panel does)
-# exactly when changing it moves the points.
+# shown for a conic did nothing; UTM with zone 0 takes its zone and hemisphere from them), and
+# ParametersFromData except for UTM with a zone set. Checked against the filter: under each
+# projection (and UTM zone), a setting is shown (its decorators, evaluated here as ParaView's panel
+# does) exactly when changing it moves the points.
 
 
 def shown(element, values):
@@ -64,13 +65,15 @@ def shown(element, values):
 
 
 def moves_points(settings, name, value):
-    """Whether setting name to value (ParametersFromData off) moves the projected gauges."""
+    """Whether setting name to value moves the projected gauges (or makes them unprojectable), the
+    other settings as given (ParametersFromData off unless given), the centre at the gauges'
+    (-105, 39), parallels 37 and 41."""
     outputs = []
     for changed in (False, True):
         f = GeographicProjection(Input=points)  # noqa: F821
-        f.ParametersFromData = 0
         f.CentralLongitude, f.CentralLatitude, f.StandardParallels = -105.0, 39.0, [37.0, 41.0]
-        f.Projection = settings["Projection"]
+        for key, setting in settings.items():
+            setattr(f, key, setting)
         if changed:
             setattr(f, name, value)
         f.UpdatePipeline()
@@ -80,21 +83,30 @@ def moves_points(settings, name, value):
     return outputs[0] != outputs[1]
 
 
+# Values that change what each setting can change: another UTM zone (-111 is zone 12) and
+# hemisphere (-38), another centre for the others.
+CHANGES = (("CentralLongitude", -111.0), ("CentralLatitude", -38.0), ("StandardParallels", [36.0, 42.0]))
 for projection in range(6):
-    settings = {"Projection": projection, "ParametersFromData": 0}
-    for name, value in (("CentralLongitude", -104.0), ("CentralLatitude", 38.0), ("StandardParallels", [36.0, 42.0])):
-        visible = shown(projected.GetProperty(name).GetHints(), settings)
-        if visible != moves_points(settings, name, value):
-            failures.append(f"projection {projection}: {name} is {'shown' if visible else 'hidden'} but "
-                            f"{'does not move' if visible else 'moves'} the points")
+    for zone in ((0, 13) if projection == 4 else (0,)):
+        settings = {"Projection": projection, "UTMZone": zone, "ParametersFromData": 0}
+        for name, value in CHANGES:
+            visible = shown(projected.GetProperty(name).GetHints(), settings)
+            if visible != moves_points(settings, name, value):
+                failures.append(f"projection {projection} zone {zone}: {name} is {'shown' if visible else 'hidden'} "
+                                f"but {'does not move' if visible else 'moves'} the points")
+        for name, _ in CHANGES:
+            if shown(projected.GetProperty(name).GetHints(), {**settings, "ParametersFromData": 1}):
+                failures.append(f"projection {projection}: {name} shown with ParametersFromData on")
+        # ParametersFromData itself: shown exactly where turning it on moves the points (with the
+        # centre set away from the gauges' own).
+        visible = shown(projected.GetProperty("ParametersFromData").GetHints(), settings)
+        away = {**settings, "CentralLongitude": -111.0, "CentralLatitude": -38.0}
+        if visible != moves_points(away, "ParametersFromData", 1):
+            failures.append(f"projection {projection} zone {zone}: ParametersFromData is "
+                            f"{'shown' if visible else 'hidden'} but {'does not move' if visible else 'moves'} the points")
     for name in ("UTMZone", "UTMNorth"):
-        if shown(projected.GetProperty(name).GetHints(), settings) != (projection == 4):
+        if shown(projected.GetProperty(name).GetHints(), {"Projection": projection}) != (projection == 4):
             failures.append(f"projection {projection}: {name} shown {not projection == 4}")
-    for name in ("CentralLongitude", "CentralLatitude", "StandardParallels"):
-        if shown(projected.GetProperty(name).GetHints(), {"Projection": projection, "ParametersFromData": 1}):
-            failures.append(f"projection {projection}: {name} shown with ParametersFromData on")
-    if shown(projected.GetProperty("ParametersFromData").GetHints(), settings) != (projection != 4):
-        failures.append(f"projection {projection}: ParametersFromData shown {projection == 4} (UTM takes its zone)")
 if projected.GetProperty("ProjectionRecord") is None:
     failures.append("no ProjectionRecord property")
 # The panel's labels: ParaView splits a name at capitals (UTMZone would read "U TMZone").

@@ -35,12 +35,6 @@ def messages_of(algorithm, event=None):
     return messages
 
 
-def beside_coverage(warnings):
-    """The warnings other than vtkWindowClip's for a window its tiles do not cover once (tests of
-    other things clip a few tiles by a larger window)."""
-    return [w for w in warnings if "of the window's area" not in w]
-
-
 def warnings_of_update(algorithm, data):
     """Runs algorithm on data (input 0); returns the warnings it gave."""
     from vtkmodules.vtkCommonCore import vtkCommand

@@ -824,21 +824,27 @@ def test_daily_observations_give_daily_means():
 
 def test_a_wide_file_of_a_column_per_station_gives_the_long_files_means():
     # A record as a spreadsheet or a data portal gives it: a row per time, a column per station
-    # named by its id. It gives the long file's outputs byte for byte (days here; the ids written
-    # with and without leading zeros, as they match in the filter, and in another order), with a
-    # column of no gauge's station named (warning, unused_inputs.csv) and not read; a bad value is
-    # named by its line and column; no column of a gauge's station, or two columns of one station,
-    # end the run.
+    # named by its id. It gives the long file's outputs (days here; the stations numbered 0101 ..
+    # 0106, the long file writing them so, the wide header as 101, "0102", 103.0, ... in another
+    # order, as they match in the filter), with the columns of no gauge's station (two of one name
+    # among them) named in a warning and unused_inputs.csv and not read; a day whose cells are all
+    # empty stays a day without reports. A bad value is named by its line and column; two columns
+    # of one gauge's station, no column of a gauge's, or no time column end the run.
+    ids = {name: f"01{k:02d}" for k, name in enumerate(LAKE_GAUGES, 1)}
     days = {(2001, 1, 30): {"N1": 1.5, "N2": 2.5, "N3": 4.0, "N5": 0.0},
+            (2001, 1, 31): {},
             (2001, 2, 1): {"N1": 3.0, "N4": 1.25, "N6": 9.0},
             (2001, 2, 2): {"N2": 0.5, "N3": 7.0, "N4": 2.0, "N5": 3.5}}
     with tempfile.TemporaryDirectory() as directory:
-        catchment, stations, _ = write_lake_basin(directory)
+        catchment, _, _ = write_lake_basin(directory)
+        stations = os.path.join(directory, "numbered.csv")
+        write_stations(stations, {ids[name]: place for name, place in LAKE_GAUGES.items()})
         long = write(directory, "long.csv", "station_id,date,precip\n" + "".join(
-            f"{s},{y}-{m:02d}-{d:02d},{v}\n" for (y, m, d), values in days.items() for s, v in values.items()))
-        columns = ["N5", "N1", "N3", "N2", "N6", "N4"]
-        wide = write(directory, "wide.csv", "date," + ",".join(columns) + ",RIVER_LEVEL\n" + "".join(
-            f"{y}-{m:02d}-{d:02d}," + ",".join(str(values.get(s, "")) for s in columns) + ",3.5\n"
+            f"{ids[s]},{y}-{m:02d}-{d:02d},{values.get(s, '')}\n" for (y, m, d), values in days.items()
+            for s in (values or ["N1"])))
+        columns = {"N5": "105", "N1": "101", "N3": '"0103"', "N2": "102.0", "N6": "106", "N4": "0104"}
+        wide = write(directory, "wide.csv", "date," + ",".join(columns.values()) + ",RIVER_LEVEL,RIVER_LEVEL\n" + "".join(
+            f"{y}-{m:02d}-{d:02d}," + ",".join(str(values.get(s, "")) for s in columns) + ",3.5,\n"
             for (y, m, d), values in days.items()))
         outputs = {}
         for observations in (long, wide):
@@ -848,22 +854,30 @@ def test_a_wide_file_of_a_column_per_station_gives_the_long_files_means():
             outputs[observations] = {name: read_csv(os.path.join(out, name))
                                      for name in ("areal_mean.csv", "weights_all_days.csv", "unused_inputs.csv")}
             outputs[observations]["stderr"] = stderr
+        means = outputs[long]["areal_mean.csv"]
+        assert_that([r["areal_mean"] == "" for r in means] == [False, True, False, False],
+                    f"the long file's days, 2001-01-31 without reports: {means}")
         for name in ("areal_mean.csv", "weights_all_days.csv"):
-            assert_that(outputs[long][name] == outputs[wide][name] and len(outputs[long][name]) >= 4,
+            assert_that(outputs[long][name] == outputs[wide][name],
                         f"{name}: {outputs[wide][name]} against {outputs[long][name]}")
-        column = [r for r in outputs[wide]["unused_inputs.csv"] if r["station_id"] == "RIVER_LEVEL"]
-        assert_that(column == [{"kind": "observations column naming no gauge's station (not read)", "file": wide,
-                                "line": "1", "station_id": "RIVER_LEVEL", "note": "column 8"}]
-                    and [r for r in outputs[wide]["unused_inputs.csv"] if r not in column]
+        kind = "observations column naming no gauge's station (not read)"
+        listed = [r for r in outputs[wide]["unused_inputs.csv"] if r["kind"] == kind]
+        assert_that(listed == [{"kind": kind, "file": wide, "line": "1", "station_id": "RIVER_LEVEL", "note": note}
+                               for note in ("column 8", "column 9")]
+                    and [r for r in outputs[wide]["unused_inputs.csv"] if r not in listed]
                     == outputs[long]["unused_inputs.csv"], f"unused inputs: {outputs[wide]['unused_inputs.csv']}")
-        said = f"{wide}: 1 column(s) name no station of {stations} and are not read: 'RIVER_LEVEL' (column 8)"
-        assert_that(said in stderr_messages(outputs[wide]["stderr"]), f"the column of no gauge: {outputs[wide]}")
+        said = (f"{wide}: 2 column(s) name no station of {stations} and are not read: 'RIVER_LEVEL' (column 8), "
+                "'RIVER_LEVEL' (column 9)")
+        assert_that(said in stderr_messages(outputs[wide]["stderr"]), f"the columns of no gauge: {outputs[wide]}")
         assert_observations_refused(directory, stations, catchment, [
-            ("date,N1,N2\n2001-01,1,x\n", {}, "bad.csv:2: column 'N2': 'x' is not a number"),
-            ("date,N1, N1 \n2001-01,1,2\n", {}, "bad.csv: header: columns 2 and 3 both name station 'N1'"),
+            ("date,101,102\n2001-01,1,x\n", {}, "bad.csv:2: column '102': 'x' is not a number"),
+            ("date,101,0101\n2001-01,1,2\n", {}, "bad.csv:1: columns 2 and 3 both name station '0101'"),
             ("date,A1,A2\n2001-01,1,2\n", {}, "bad.csv: the observations file has no station_id and precip "
              "columns, and none of its other columns names a station of"),
-            ("station_id,date\nN1,2001-01\n", {}, "bad.csv: the observations file has no column 'precip'"),
+            (",101,102\n2001-01,1,2\n", {}, "bad.csv: the observations file has no station_id and precip columns, "
+             "so it is read as a wide file (a row per time, a column per station), but it has no time column: date, "
+             "or year and month (its first column has no name: if it holds the times, name it date)"),
+            ("station_id,date\n101,2001-01\n", {}, "bad.csv: the observations file has no column 'precip'"),
         ])
 
 
@@ -1580,8 +1594,9 @@ def test_progress_into_a_log_is_lines_of_its_own():
 
 def test_the_readme_python_runs():
     # The README's Python examples, as written, from the source directory: they print the
-    # tiles' total area (the window's), the clipped area (worked out by hand in a comment), the
-    # number of months of the areal average and the number of curves the ridge grouping finds.
+    # tiles' total area (the window's), the clipped area (worked out by hand in a comment) and the
+    # share of the clip's window the tiles cover, the number of months of the areal average and
+    # the number of curves the ridge grouping finds.
     with open(os.path.join(SOURCE_DIR, "README.md")) as f:
         text = f.read()
     section = text[text.index("## Use from Python"):text.index("## Use from ParaView")]
@@ -1592,12 +1607,13 @@ def test_the_readme_python_runs():
         done = subprocess.run([sys.executable, "-c", block], cwd=SOURCE_DIR, capture_output=True, text=True, timeout=300)
         assert_that(done.returncode == 0, f"the README's block failed: {done.stderr}")
         printed += done.stdout.split()
-    assert_that(len(printed) == 4, f"printed: {printed}")
+    assert_that(len(printed) == 5, f"printed: {printed}")
     assert_close(float(printed[0]), 0.875, 1e-12, "the tiles' areas")
     assert_close(float(printed[1]), 0.555, 1e-12, "the clipped areas")
+    assert_close(float(printed[2]), 0.555 / 0.6, 1e-12, "the covered share of the clip's window")
     months = {(r["year"], r["month"]) for r in read_csv(os.path.join(EXAMPLE_DATA, "colorado_monthly_precip.csv"))}
-    assert_that(printed[2] == str(len(months)), f"the months: {printed[2]}, {len(months)} in the file")
-    assert_that(printed[3] == "2", f"the ridge grouping's curves: {printed[3]}, expected the line and the parabola")
+    assert_that(printed[3] == str(len(months)), f"the months: {printed[3]}, {len(months)} in the file")
+    assert_that(printed[4] == "2", f"the ridge grouping's curves: {printed[4]}, expected the line and the parabola")
 
 
 def test_every_script_takes_help():

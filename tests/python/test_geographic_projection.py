@@ -142,9 +142,9 @@ def test_the_blocks_of_a_composite_share_one_projection():
 
 def test_utm_metres_without_a_record_go_back_by_their_zone():
     """UTM points from elsewhere (no TesseraProjection record) go back to lon/lat by the zone and
-    hemisphere alone: a scripter had to turn ParametersFromData off as well, which a UTM projection
-    does not read (the panel hides it for UTM). Against the forward projection of the same places
-    in that zone; without a zone (0) the error says what to give."""
+    hemisphere alone: a scripter had to turn ParametersFromData off as well, which a UTM zone set
+    by hand makes needless (the panel hides it then). Against the forward projection of the same
+    places in that zone, north and south; without a zone (0) the error says what to give."""
     places = [(-105.0, 40.0), (-106.3, 37.2), (-103.1, 41.9)]
     forward = vtkGeographicProjection()
     forward.SetInputData(make_points(places))
@@ -164,6 +164,18 @@ def test_utm_metres_without_a_record_go_back_by_their_zone():
     for i, (lon, lat) in enumerate(places):
         assert_close(back.GetPoint(i)[0], lon, 1e-9, f"longitude {i} back")
         assert_close(back.GetPoint(i)[1], lat, 1e-9, f"latitude {i} back")
+    # South of the equator, with UTMNorth off (the false northing of 10000 km).
+    south = [(-105.0, -40.0), (-103.5, -33.2)]
+    forward.SetInputData(make_points(south))
+    forward.SetUTMNorth(False)
+    forward.Update()
+    assert_that(all(forward.GetOutput().GetPoint(i)[1] > 5e6 for i in range(2)), "southern northings")
+    inverse.SetInputData(make_points([forward.GetOutput().GetPoint(i)[:2] for i in range(2)]))
+    inverse.SetUTMNorth(False)
+    inverse.Update()
+    for i, (lon, lat) in enumerate(south):
+        assert_close(inverse.GetOutput().GetPoint(i)[0], lon, 1e-9, f"south: longitude {i} back")
+        assert_close(inverse.GetOutput().GetPoint(i)[1], lat, 1e-9, f"south: latitude {i} back")
     inverse.SetUTMZone(0)
     inverse.Update()
     assert_that(len(errors) == 1 and "Inverse needs the input's TesseraProjection field data, a UTM zone (UTMZone "

@@ -12,7 +12,7 @@ from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray, vtkIntArray
 from vtkmodules.vtkFiltersCore import vtkTriangleFilter
 
 from tessera import vtkDirichletTessellation, vtkGeographicProjection, vtkWindowClip
-from tessera_testing import (assert_close, assert_that, beside_coverage, cell_rings, exact_area, make_points,
+from tessera_testing import (assert_close, assert_that, cell_rings, exact_area, make_points,
                              messages_of, projection_record, polygon, run, simplicity_defect)
 
 
@@ -24,7 +24,7 @@ def clip_by(tiles, window):
     f.SetInputData(tiles)
     f.SetWindowData(window)
     f.Update()
-    return f.GetOutput(), errors, warnings
+    return f.GetOutputDataObject(0), errors, warnings  # (a composite for tiles in blocks)
 
 
 def clip(tiles, window_rings):
@@ -368,15 +368,12 @@ def test_tiles_and_window_must_share_their_projection():
         t.Update()
         return t.GetOutput()
 
-    # (The catchment reaches past the gauges' tiles, made in the default window about them: the
-    # clips below warn that the tiles do not cover it.)
     output, errors, warnings = clip_by(tiles_of(projected(gauges, True)), projected(catchment, True))
     assert_that(len(errors) == 1 and "projected differently" in errors[0] and errors[0].count("lon0=") == 2
                 and output.GetNumberOfCells() == 0, f"two automatic projections: {errors}")
     same = projected(gauges, False)
     output, errors, warnings = clip_by(tiles_of(same), projected(catchment, False))
-    assert_that(not errors and beside_coverage(warnings) == [] and output.GetNumberOfCells() == 4,
-                f"one projection: {errors} {warnings}")
+    assert_that(not errors and not warnings and output.GetNumberOfCells() == 4, f"one projection: {errors} {warnings}")
     assert_that(projection_record(output) == projection_record(same), f"the output's record: {projection_record(output)}")
     # The gauges' automatic projection handed to the catchment's filter as its ProjectionRecord:
     # the same projection (the record's own bits), so the clip goes through; the gauges projected
@@ -388,7 +385,7 @@ def test_tiles_and_window_must_share_their_projection():
     f.SetProjectionRecord(record)
     f.Update()
     output, errors, warnings = clip_by(tiles_of(automatic), f.GetOutput())
-    assert_that(not errors and beside_coverage(warnings) == [] and output.GetNumberOfCells() == 4
+    assert_that(not errors and not warnings and output.GetNumberOfCells() == 4
                 and projection_record(f.GetOutput()) == record, f"one record for both: {errors} {warnings}")
     again = vtkGeographicProjection()  # the gauges again, with the record: the very same points
     again.SetInputData(gauges)
@@ -423,7 +420,6 @@ def test_tiles_and_window_must_share_their_projection():
     back.Update()
     assert_that(len(said) == 1, f"the input's own record: {said}")
     output, errors, warnings = clip_by(tiles_of(gauges), projected(catchment, False))
-    warnings = beside_coverage(warnings)
     assert_that(not errors and len(warnings) == 1 and "the window (input 1) carries" in warnings[0]
                 and "the tiles (input 0) none" in warnings[0], f"one record: {errors} {warnings}")
     # A window of blocks projected apart (each with its own automatic projection) is refused.
@@ -546,6 +542,7 @@ def test_review_of_windows_of_other_types_global_ids_and_flat_tiles():
                     and all(0 <= x <= 3 * s and 0 <= y <= 3 * s for x, y in points),
                     f"scale {s}: fraction {fraction}, pieces' points at the tiles' scale {points[:3]}")
 
+
 def left_of(ring, x_max):
     """The convex ring cut to x <= x_max (Sutherland-Hodgman, one edge)."""
     cut = []
@@ -568,40 +565,58 @@ def test_the_field_data_says_how_much_of_the_window_the_tiles_cover():
     # Tiles made in a window smaller than the clip's (vtkDirichletTessellation's default box about
     # its points) covered a quarter of it without a word; AreaFraction came out 1 + 2^-52 for
     # tiles inside the window. WindowArea and CoveredFraction against the shoelace areas of the
-    # window and of its overlap with the tiles' window (rectangles), a warning where the tiles do
-    # not cover the window once, and every AreaFraction at most 1.
+    # window and of its overlap with the tiles' window (rectangles), 2 for a tiling given twice,
+    # and every AreaFraction at most 1.
     from vtkmodules.vtkFiltersCore import vtkAppendPolyData
 
     rng = np.random.default_rng(11)
     points = make_points([tuple(p) for p in 100000.0 + 1000.0 * rng.random((800, 2))])
     window = [[(100100.0, 100050.0), (100950.0, 100120.0), (100900.0, 100980.0), (100020.0, 100900.0)]]
-    for bounds, label in (((99990.0, 101010.0, 99990.0, 101010.0), "covering"),
-                          ((100000.0, 100600.0, 100000.0, 101000.0), "narrower")):
+    for bounds in ((99990.0, 101010.0, 99990.0, 101010.0), (100000.0, 100600.0, 100000.0, 101000.0)):
         tess = vtkDirichletTessellation()
         tess.SetInputData(points)
         tess.SetWindowBounds(*bounds)
         tess.Update()
-        output, errors, warnings = clip_by(tess.GetOutput(0), polygon(window))
+        output, errors, _ = clip_by(tess.GetOutput(0), polygon(window))
         expected = abs(shoelace(left_of(window[0], bounds[1]))) / abs(shoelace(window[0]))
         fractions = cell_values(output, "AreaFraction")
         assert_that(not errors and all(0.0 < f <= 1.0 for f in fractions) and fractions.count(1.0) > 100,
-                    f"{label}: AreaFraction in (0, 1], {fractions.count(1.0)} tiles inside: {errors}")
-        assert_close(field_value(output, "WindowArea"), abs(shoelace(window[0])), 1e-13, f"{label}: WindowArea")
-        assert_close(field_value(output, "CoveredFraction"), expected, 1e-11, f"{label}: CoveredFraction")
-        said = [w for w in warnings if "of the window's area" in w]
-        assert_that(len(said) == (label == "narrower") and all(f"cover {expected:.6g} of" in w
-                                                               and "has no polygon of input 0" in w for w in said),
-                    f"{label}: the warning {warnings}")
-        if label == "covering":
-            both = vtkAppendPolyData()
-            both.AddInputData(tess.GetOutput(0))
-            both.AddInputData(tess.GetOutput(0))
-            both.Update()
-            output, errors, warnings = clip_by(both.GetOutput(), polygon(window))
-            assert_close(field_value(output, "CoveredFraction"), 2.0, 1e-11, "twice the tiles")
-            assert_that(not errors and any("polygons of input 0 overlap" in w for w in warnings),
-                        f"overlapping tiles named: {warnings}")
+                    f"{bounds}: AreaFraction in (0, 1], {fractions.count(1.0)} tiles inside: {errors}")
+        assert_close(field_value(output, "WindowArea"), abs(shoelace(window[0])), 1e-13, f"{bounds}: WindowArea")
+        assert_close(field_value(output, "CoveredFraction"), expected, 1e-11, f"{bounds}: CoveredFraction")
+    both = vtkAppendPolyData()
+    both.AddInputData(tess.GetOutput(0))
+    both.AddInputData(tess.GetOutput(0))
+    both.Update()
+    output, errors, _ = clip_by(both.GetOutput(), polygon(window))
+    assert_close(field_value(output, "CoveredFraction"), 2 * expected, 1e-11, "twice the tiles")
 
+
+def test_each_block_of_tiles_gives_its_share_of_the_window():
+    """A composite's blocks are clipped one by one: each block's CoveredFraction is its share (0.5
+    for each half of a square); tiles stored in float that tile a double window exactly cover it
+    to a float's rounding."""
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+
+    window = polygon([[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]])
+    halves = [[(0.0, 0.0), (0.5, 0.0), (0.5, 1.0), (0.0, 1.0)], [(0.5, 0.0), (1.0, 0.0), (1.0, 1.0), (0.5, 1.0)]]
+    blocks = vtkMultiBlockDataSet()
+    for k, half in enumerate(halves):
+        blocks.SetBlock(k, polygon([half]))
+    output, errors, _ = clip_by(blocks, window)
+    shares = [field_value(output.GetBlock(k), "CoveredFraction") for k in range(2)]
+    assert_that(not errors and shares == [0.5, 0.5], f"blocks: {shares}, {errors}")
+    for x in (0.1, 0.3):  # a float tiling of a window whose cut is not a float
+        cut = polygon([[(x, 0.0), (1.0, 0.0), (1.0, 1.0), (x, 1.0)], [(0.0, 0.0), (x, 0.0), (x, 1.0), (0.0, 1.0)]])
+        floats = vtkPoints()
+        floats.SetDataTypeToFloat()
+        for i in range(cut.GetNumberOfPoints()):
+            floats.InsertNextPoint(cut.GetPoint(i))
+        cut.SetPoints(floats)
+        output, errors, _ = clip_by(cut, window)
+        assert_that(not errors and abs(field_value(output, "CoveredFraction") - 1.0) < 1e-15,
+                    f"float tiles at {x}: {field_value(output, 'CoveredFraction')}")
 
 if __name__ == "__main__":
     run([test_cells_are_simple_pieces_that_fill_tile_and_window,
@@ -613,4 +628,5 @@ if __name__ == "__main__":
          test_the_tiles_point_data_is_named_as_not_passed,
          test_inputs_of_another_type_are_named_and_leave_empty_outputs,
          test_review_of_windows_of_other_types_global_ids_and_flat_tiles,
-         test_the_field_data_says_how_much_of_the_window_the_tiles_cover])
+         test_the_field_data_says_how_much_of_the_window_the_tiles_cover,
+         test_each_block_of_tiles_gives_its_share_of_the_window])
