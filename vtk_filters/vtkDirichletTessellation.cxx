@@ -250,6 +250,12 @@ public:
     cellData->AddArray(this->PointIds);
     cellData->AddArray(this->Areas);
     cellData->AddArray(this->NeighborCounts);
+    // Area is what a view colours the tiles by (ParaView colours by the active scalars on Show;
+    // they were one solid colour), unless the input's active scalars came with its point data.
+    if (!cellData->GetScalars())
+    {
+      cellData->SetActiveScalars(this->Areas->GetName());
+    }
   }
 
 private:
@@ -361,6 +367,7 @@ public:
     lines->SetData(this->Offsets, this->Connectivity);
     output->SetLines(lines);
     output->GetCellData()->AddArray(this->Kinds);
+    output->GetCellData()->SetActiveScalars(this->Kinds->GetName()); // (neighbours by colour)
   }
 
 private:

@@ -680,6 +680,8 @@ public:
     this->Gauges.AddTo(cellData);
     cellData->AddArray(this->CellAreas);
     cellData->AddArray(this->CellWeights);
+    // The step's values colour the tiles in a view (ParaView colours by the active scalars).
+    cellData->SetActiveScalars("Value");
   }
 
 private:

@@ -77,7 +77,8 @@
  * edge (a tile across a bay) gives several, so a gauge can have several cells. Cell data:
  * `StationId` (the gauge's id, its array type kept), `GaugeId` (index into the gauges), `Weight`
  * and `Area_m2` (the gauge's weight and clipped ellipsoidal area, m^2: per gauge, repeated on
- * each of its cells, so sum them once per station, not over cells), `Value` (the gauge's value),
+ * each of its cells, so sum them once per station, not over cells), `Value` (the gauge's value;
+ * the active scalars, which ParaView colours the tiles by),
  * `CellArea_m2` (this cell's own ellipsoidal area, m^2) and `CellWeight` (CellArea_m2 over the
  * catchment's area). Summed over all cells, `CellArea_m2` gives the covered catchment area and
  * `CellWeight` the CoveredFraction (1); over a gauge's cells, its `Area_m2` and `Weight` (to

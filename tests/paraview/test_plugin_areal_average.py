@@ -7,7 +7,7 @@ import os
 import sys
 
 from paraview import servermanager
-from paraview.simple import CSVReader, GetTimeKeeper, LoadPlugin, OpenDataFile, TableToPoints
+from paraview.simple import CreateRenderView, CSVReader, GetTimeKeeper, LoadPlugin, OpenDataFile, Show, TableToPoints
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkOutputWindow
 
@@ -65,6 +65,10 @@ mean = math.fsum(per_gauge[gauge.GetValue(c)] * values.GetValue(c) for c in
            {gauge.GetValue(c): c for c in range(tiles.GetNumberOfCells())}.values())
 if not 7.0 < mean < 9.5:
     failures.append(f"1963-08 areal mean {mean} far from the 8.17 the example computes")
+# Shown, the tiles are coloured by the step's Value (they were one solid colour).
+shown = list(Show(average, CreateRenderView()).ColorArrayName)
+if shown != ["CELLS", "Value"]:
+    failures.append(f"the tiles are coloured by {shown}, not by Value")
 # Output 2: every step's weights; the rows of 1963-08 are the tiles' weights.
 table = servermanager.Fetch(average, idx=2)
 times, gauges, listed = (table.GetColumnByName(n) for n in ("Time", "GaugeId", "Weight"))

@@ -6,7 +6,7 @@ import os
 import sys
 
 from paraview import servermanager
-from paraview.simple import CSVReader, LoadPlugin, TableToPoints
+from paraview.simple import CreateRenderView, CSVReader, LoadPlugin, OutputPort, Show, TableToPoints
 
 LoadPlugin(os.environ["TESSERA_PLUGIN"], remote=False, ns=globals())
 stations = os.path.join(os.environ["TESSERA_SOURCE_DIR"], "examples", "data", "colorado_stations.csv")
@@ -62,6 +62,15 @@ if without.GetNumberOfCells() != tiles.GetNumberOfCells() or any(
         without.GetCellData().GetArray("Area").GetValue(c) != areas.GetValue(c)
         for c in range(tiles.GetNumberOfCells())):
     failures.append("graph off changed the tiles")
+
+# Shown, the tiles are coloured by Area and the graph by Kind (they were one solid colour): the
+# outputs' active scalars, which ParaView colours by (not rendered here: no display needed).
+tess.ComputeContiguityGraph = 1
+view = CreateRenderView()
+for port, expected in ((0, ["CELLS", "Area"]), (1, ["CELLS", "Kind"])):
+    shown = Show(OutputPort(tess, port), view).ColorArrayName
+    if list(shown) != expected:
+        failures.append(f"output {port} is coloured by {list(shown)}, not {expected}")
 
 tri = DelaunayTriangulation(Input=projected)  # noqa: F821
 tri.UpdatePipeline()

@@ -68,6 +68,10 @@ def test_tiles_are_nearest_point_regions():
             d = np.hypot(*(pts - corner).T)
             assert_that(abs(d[pid] - d.min()) <= 1e-9 * 12, f"corner of tile {c} equidistant")
     assert_close(total, 144.0, 144.0 * 1e-12, "tile areas sum to the window area")
+    # The active scalars (what a view colours by): Area on the tiles, whose input had none, and
+    # Kind on the graph.
+    scalars = (tiles.GetCellData().GetScalars(), f.GetOutput(1).GetCellData().GetScalars())
+    assert_that([a.GetName() if a else None for a in scalars] == ["Area", "Kind"], f"active scalars {scalars}")
 
 
 def delaunay2d_triangles(coords):
