@@ -6,6 +6,7 @@
 #include "parallel_chunks.h"
 #include "polygon_area.h"
 #include "polygon_validation.h"
+#include "snap_to_segments.h"
 #include "spatial_order.h"
 #include "tiles.h"
 #include "window.h"
@@ -235,6 +236,7 @@ struct ThiessenArealAverage::State
     return !this->PlaceShared.empty() && this->PlaceShared[g];
   }
   std::vector<std::pair<std::int32_t, std::int32_t>> Duplicates;
+  std::size_t SnappedVertices = 0; // catchment vertices put onto other rings' edges
 
   std::unique_ptr<Catchment> Region;
   double CatchmentArea = 0.0;
@@ -1120,9 +1122,15 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
       " names for " + std::to_string(gaugesLonLat.size()) + " gauges");
   }
   CheckCatchmentLonLat(catchmentRingOffsets, catchmentLonLat);
-  // Validated as the edges are read: a ring that jumps the 180th meridian runs on past it.
-  const CleanRings rings = WithContactsAsVertices(
-    ValidateRings(catchmentRingOffsets, RingsInOneTurn(catchmentRingOffsets, catchmentLonLat)));
+  // Validated as the edges are read: a ring that jumps the 180th meridian runs on past it; a
+  // vertex a hair off another ring's edge (a sub-basin border's T-junction, rounded) is put on it.
+  const SnappedRings snapped = SnapVerticesOntoSegments(catchmentRingOffsets,
+    RingsInOneTurn(catchmentRingOffsets, catchmentLonLat),
+    ArealAverageSettings::SharedBorderDegrees);
+  s.SnappedVertices = snapped.Inserted;
+  const CleanRings rings = WithContactsAsVertices(snapped.Inserted == 0
+      ? ValidateRings(snapped.Offsets, snapped.Vertices)
+      : ValidateRings(snapped.Offsets, snapped.Vertices, &snapped.SegmentOf));
 
   if (settings.HaveProjection)
   {
@@ -1303,6 +1311,11 @@ std::vector<char> ThiessenArealAverage::GaugesUsed(const std::vector<double>& va
   bool infinite = false;
   MarkFirstAtPlace(values, s.FirstAtPlace, used.data(), taken, infinite);
   return used;
+}
+
+std::size_t ThiessenArealAverage::CatchmentVerticesPutOnEdges() const
+{
+  return this->Impl->SnappedVertices;
 }
 
 double ThiessenArealAverage::CatchmentAreaM2() const

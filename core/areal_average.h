@@ -77,6 +77,11 @@ struct ArealAverageSettings
   /// nanometres wide folds), whose clipped areas are unreliable; the same gauge written with
   /// longitudes 360 degrees apart lands some nanometres from itself. 0 groups exact repeats only.
   double CoLocatedMetres = 0.01;
+  /// A catchment vertex this close (degrees) to another ring's edge, and farther from its ends, is
+  /// on that edge: made a vertex of it too (SnapVerticesOntoSegments). 1e-6 degrees (about 11 cm)
+  /// holds a vertex of a shared border rounded to the 6 decimals GeoJSON writers use (RFC 7946:
+  /// up to some 7e-7 degrees off the other side's edge).
+  static constexpr double SharedBorderDegrees = 1e-6;
   /// GeodesicPolygon only: spacing, in projected metres, of the points added along clipped ring
   /// edges before unprojecting. At least MinGeodesicStepMetres, and finite, else an InputError
   /// naming it (a millimetre's step took gigabytes; NaN, 0 or less turned densifying off).
@@ -158,6 +163,10 @@ public:
   std::vector<char> GaugesUsed(const std::vector<double>& values) const;
   /// The catchment's ellipsoidal area, m^2, measured as the tiles are.
   double CatchmentAreaM2() const;
+  /// How many catchment vertices lay within SharedBorderDegrees of another ring's edge and were
+  /// made vertices of it too (snap_to_segments.h): T-junctions of shared sub-basin borders,
+  /// written with rounded coordinates, which made the rings cross.
+  std::size_t CatchmentVerticesPutOnEdges() const;
   /// Projected gauge positions (metres).
   const std::vector<Point2>& ProjectedGauges() const;
   /// Whether gauge g lies inside the catchment (even-odd; on its boundary: either answer).

@@ -297,7 +297,7 @@ def file_steps(read, first, hour_column, at_24, path):
 TIME_COLUMNS = ("year", "month", "day", "hour", "date", "time")  # (observation_step's)
 
 
-def observation_records(path, gauge_of, stations_path, station_ids, unmatched):
+def observation_records(path, gauge_of, stations_path, station_ids, unmatched, gaps):
     """Yields (line, row, station_id, value column) for each observation of the file at path, in
     either of two layouts:
     - long: a record per station and time, with columns station_id and precip (the value column);
@@ -310,7 +310,7 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched):
       name). Ends the script when none of them is a gauge's, naming the stations
       file (stations_path) and some of its ids as written (station_ids), when two columns name
       one gauge's station (which of them holds its values would be a guess), or when it has no
-      time column.
+      time column. gaps[0] counts the cells without a value passed over.
     A file with only one of station_id and precip is a long file lacking the other (named)."""
     header = []
     records = csv_input.rows(path, (), "observations", ("station_id", "precip", *TIME_COLUMNS), header,
@@ -351,6 +351,7 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched):
         # Only the cells with a value (a wide record is mostly gaps: 58% of Colorado's cells), and
         # the first cell of a row without any, whose time stays a step where no gauge reported.
         reported = [column for column in columns if not csv_input.is_missing(row.get(column))]
+        gaps[0] += len(columns) - max(len(reported), 1)  # (the cells passed over, for the count)
         for column in reported or columns[:1]:
             yield line, row, column, column
 
@@ -390,9 +391,11 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     first = {}  # the first line of a month, a day, a day and time, and a time other than midnight
     hour_column, at_24 = False, 0
     unmatched = []  # a wide file's columns that are no gauge's station
+    gaps = [0]  # a wide file's cells without a value, not made rows
     reading = ReadingProgress(path)
     step_line = None  # the line of `step` (a wide file's line gives several records)
-    for line, row, station, column in observation_records(path, gauge_of, stations_path, station_ids, unmatched):
+    for line, row, station, column in observation_records(path, gauge_of, stations_path, station_ids, unmatched,
+                                                          gaps):
         lines.append(line)
         if not len(lines) & 0xFFFF:
             reading.tick(len(lines))
@@ -451,6 +454,7 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     if coded:
         print(f"{path}: {coded} observation(s) with a --missing-value value "
               f"({', '.join(f'{v:g}' for v in sorted(missing_values))}) count as missing", file=sys.stderr)
+    unrecorded += gaps[0]
     if unrecorded:
         print(f"{path}: {unrecorded} observation(s) without a value ({csv_input.MISSING_TEXT}) "
               "count as missing", file=sys.stderr)
@@ -760,7 +764,7 @@ class InputFiles:
             return f"{self.stations}: {self.gauges_as_lines(text)}"
         if re.match(r"none of the \d+ gauges", text):
             return f"{self.stations}: {text}"
-        if re.match(r"\d+ (cell\(s\) of the catchment|catchment ring\(s\))", text):
+        if re.match(r"\d+ (cell\(s\) of the catchment|catchment ring\(s\)|catchment vertex)", text):
             return f"{self.catchment}: {text}"
         return f"warning: {text}"
 

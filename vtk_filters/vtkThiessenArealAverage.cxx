@@ -1218,6 +1218,13 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   {
     vtkWarningMacro(<< nested);
   }
+  if (const std::size_t snapped = in.Average->CatchmentVerticesPutOnEdges())
+  {
+    vtkWarningMacro(<< snapped << " catchment vertex(es) lay within "
+                    << tessera::ArealAverageSettings::SharedBorderDegrees
+                    << " degrees of another ring's edge (a shared border with vertices that only "
+                       "one side has, their coordinates rounded) and were put on that edge too");
+  }
   std::size_t gaugesInside = 0;
   for (std::size_t g = 0; g < gaugeCount; ++g)
   {

@@ -757,6 +757,48 @@ TEST(ArealAverage, PlanarAreasNeedAnEqualAreaProjection)
     "");
 }
 
+TEST(ArealAverage, SubBasinsWithRoundedJunctionsAverageAsTheirUnion)
+{
+  // Two sub-basins sharing a slanted border; the west one's side of it carries junctions (T
+  // vertices the east one lacks), rounded to 6 decimals as GeoJSON writers round them, so they
+  // lie up to 7e-7 degrees off the east one's straight edge: the catchment was refused (rings
+  // crossing in lon/lat, or once projected). Put onto that edge, the pair averages as the union's
+  // outline does (an independent catchment: one ring), step by step, to rounding.
+  const Point2 south{ -104.0, 39.0 }, north{ -103.7, 40.0 };
+  const auto rounded = [](double v) { return std::round(v * 1e6) / 1e6; };
+  std::vector<Point2> west{ { -105.0, 39.0 }, south };
+  for (const double t : { 0.13, 0.37, 0.52, 0.81 })
+  {
+    west.push_back(
+      { rounded(south.x + t * (north.x - south.x)), rounded(south.y + t * (north.y - south.y)) });
+  }
+  west.insert(west.end(), { north, { -105.0, 40.0 } });
+  const std::vector<Point2> east{ south, { -103.0, 39.0 }, { -103.0, 40.0 }, north };
+  std::vector<Point2> both = west;
+  both.insert(both.end(), east.begin(), east.end());
+  const std::vector<std::size_t> offsets{ 0, west.size(), west.size() + east.size() };
+  const Square united(-105.0, 39.0, -103.0, 40.0);
+  std::mt19937_64 random(3);
+  const std::vector<Point2> gauges = UniformGauges(40, random, -105.5, -102.5, 38.5, 40.5);
+  ThiessenArealAverage parts(gauges, offsets, both);
+  ThiessenArealAverage whole(gauges, united.Offsets, united.Ring);
+  EXPECT_EQ(parts.CatchmentVerticesPutOnEdges(), 4u);
+  EXPECT_EQ(whole.CatchmentVerticesPutOnEdges(), 0u);
+  EXPECT_NEAR(parts.CatchmentAreaM2(), whole.CatchmentAreaM2(), 1e-9 * whole.CatchmentAreaM2());
+  std::uniform_real_distribution<double> value(0.0, 20.0), missing(0.0, 1.0);
+  for (int step = 0; step < 10; ++step)
+  {
+    std::vector<double> values(gauges.size());
+    for (double& v : values)
+    {
+      v = missing(random) < 0.3 ? NaN : value(random);
+    }
+    const ArealStep a = parts.Step(values), b = whole.Step(values);
+    EXPECT_NEAR(a.Mean, b.Mean, 1e-9 * std::abs(b.Mean)) << "step " << step;
+    EXPECT_EQ(a.Gauges, b.Gauges) << "step " << step;
+  }
+}
+
 TEST(ArealAverage, BadInputIsNamed)
 {
   const Square catchment(0.0, 0.0, 1.0, 1.0);

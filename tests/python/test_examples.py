@@ -869,6 +869,14 @@ def test_a_wide_file_of_a_column_per_station_gives_the_long_files_means():
         said = (f"{wide}: 2 column(s) name no station of {stations} and are not read: 'RIVER_LEVEL' (column 8), "
                 "'RIVER_LEVEL' (column 9)")
         assert_that(said in stderr_messages(outputs[wide]["stderr"]), f"the columns of no gauge: {outputs[wide]}")
+        # Each counts its observations without a value: the long file's one empty row, and every
+        # empty cell of a gauge's station in the wide file (2 + 6 + 3 + 2 by day), though only
+        # the whole day without a value becomes a row.
+        for observations, file in ((long, "long"), (wide, "wide")):
+            missing = [m for m in stderr_messages(outputs[observations]["stderr"]) if "without a value" in m]
+            count = 1 if file == "long" else 13
+            assert_that(len(missing) == 1 and f": {count} observation(s) without a value" in missing[0],
+                        f"{file}: {missing}")
         assert_observations_refused(directory, stations, catchment, [
             ("date,101,102\n2001-01,1,x\n", {}, "bad.csv:2: column '102': 'x' is not a number"),
             ("date,101,0101\n2001-01,1,2\n", {}, "bad.csv:1: columns 2 and 3 both name station '0101'"),

@@ -493,6 +493,35 @@ def test_window_clip_names_a_non_convex_tile():
         assert_that(listed is not None and listed.GetNumberOfTuples() == 0, f"{name}: written, and empty")
 
 
+def test_sub_basins_with_rounded_junctions_average_as_their_union():
+    # Two sub-basins whose shared border has vertices only the west one has, rounded to 6
+    # decimals (off the east one's edge by up to 7e-7 degrees): refused as crossing rings. Now put
+    # on that edge, with a warning that counts them, and the means are the union outline's.
+    south, north = (-104.0, 39.0), (-103.7, 40.0)
+    junctions = [(round(south[0] + t * (north[0] - south[0]), 6), round(south[1] + t * (north[1] - south[1]), 6))
+                 for t in (0.13, 0.37, 0.52, 0.81)]
+    west = [(-105.0, 39.0), south, *junctions, north, (-105.0, 40.0)]
+    east = [south, (-103.0, 39.0), (-103.0, 40.0), north]
+    rng = np.random.default_rng(8)
+    coords = [(float(x), float(y)) for x, y in zip(rng.uniform(-105.5, -102.5, 30), rng.uniform(38.5, 40.5, 30))]
+    ids = [f"G{k}" for k in range(len(coords))]
+    values = [float(v) for v in rng.uniform(0, 10, len(coords))]
+    means = []
+    for rings in ([west, east], [[(-105.0, 39.0), (-103.0, 39.0), (-103.0, 40.0), (-105.0, 40.0)]]):
+        f = vtkThiessenArealAverage()
+        warnings = messages_of(f, "WarningEvent")
+        errors = messages_of(f)
+        f.SetGaugesData(gauges_polydata(coords, ids, values))
+        f.SetCatchmentData(polygon(rings))
+        f.Update(1)
+        assert_that(not errors, f"{len(rings)} ring(s): {errors}")
+        said = [w for w in warnings if "catchment vertex(es) lay within 1e-06 degrees of another ring's edge" in w]
+        assert_that(len(said) == (len(rings) == 2) and all(w.count("4 catchment vertex(es)") for w in said),
+                    f"{len(rings)} ring(s): {warnings}")
+        means.append(summary_column(f, "ArealMean")[0])
+    assert_close(means[0], means[1], 1e-9 * abs(means[1]), "the sub-basins' mean against the union's")
+
+
 def test_clipping_the_averages_lon_lat_tiles_says_what_to_do_instead():
     # The areal average's tiles come in lon/lat with densified edges: convex where they were made
     # (the projected plane), not in lon/lat. Clipping them to a sub-basin is a natural next step in
@@ -1534,6 +1563,7 @@ if __name__ == "__main__":
          test_window_clip_of_projected_tiles_sums_to_the_catchment,
          test_window_clip_names_a_non_convex_tile,
          test_clipping_the_averages_lon_lat_tiles_says_what_to_do_instead,
+         test_sub_basins_with_rounded_junctions_average_as_their_union,
          test_window_clip_reports_cells_that_are_not_polygons,
          test_window_clip_reports_tiles_without_area_and_names_an_overflow,
          test_window_cells_that_are_not_rings_are_reported,

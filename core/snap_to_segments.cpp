@@ -1,0 +1,253 @@
+#include "snap_to_segments.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+#include <utility>
+
+namespace tessera
+{
+namespace
+{
+
+struct Segment
+{
+  std::size_t Ring;
+  std::size_t First; ///< index of its first vertex in the caller's array
+  Point2 A, B;
+};
+
+/// A vertex to put onto segment Target at parameter T (0 at its first vertex, 1 at its second).
+struct Insertion
+{
+  std::size_t Target;
+  double T;
+  Point2 Point;
+};
+
+bool Finite(const Point2& p)
+{
+  return std::isfinite(p.x) && std::isfinite(p.y);
+}
+
+/// Segments indexed by the grid cells they pass near: each is registered in the 3 x 3 cells
+/// about points along it no farther apart than half a cell, so a point within the tolerance (far
+/// below a cell) of a segment finds it in the point's own cell.
+class SegmentGrid
+{
+public:
+  SegmentGrid(const std::vector<Segment>& segments, double cell, const Point2& origin)
+    : Cell(cell)
+    , Origin(origin)
+  {
+    for (std::size_t s = 0; s < segments.size(); ++s)
+    {
+      const Segment& seg = segments[s];
+      const double length = std::hypot(seg.B.x - seg.A.x, seg.B.y - seg.A.y);
+      const std::int64_t steps =
+        std::max<std::int64_t>(1, std::int64_t(std::ceil(2.0 * length / cell)));
+      std::int64_t lastKey = -1;
+      for (std::int64_t i = 0; i <= steps; ++i)
+      {
+        const double t = double(i) / double(steps);
+        const Point2 p{ seg.A.x + t * (seg.B.x - seg.A.x), seg.A.y + t * (seg.B.y - seg.A.y) };
+        const auto [cx, cy] = this->CellOf(p);
+        const std::int64_t key = Key(cx, cy);
+        if (key == lastKey)
+        {
+          continue;
+        }
+        lastKey = key;
+        for (std::int64_t dx = -1; dx <= 1; ++dx)
+        {
+          for (std::int64_t dy = -1; dy <= 1; ++dy)
+          {
+            std::vector<std::size_t>& list = this->Cells[Key(cx + dx, cy + dy)];
+            if (list.empty() || list.back() != s)
+            {
+              list.push_back(s);
+            }
+          }
+        }
+      }
+    }
+  }
+
+  const std::vector<std::size_t>* Near(const Point2& p) const
+  {
+    const auto [cx, cy] = this->CellOf(p);
+    const auto found = this->Cells.find(Key(cx, cy));
+    return found == this->Cells.end() ? nullptr : &found->second;
+  }
+
+private:
+  std::pair<std::int64_t, std::int64_t> CellOf(const Point2& p) const
+  {
+    return { std::int64_t(std::floor((p.x - this->Origin.x) / this->Cell)),
+      std::int64_t(std::floor((p.y - this->Origin.y) / this->Cell)) };
+  }
+  static std::int64_t Key(std::int64_t cx, std::int64_t cy) { return cx * 4194304 + cy; }
+
+  double Cell;
+  Point2 Origin;
+  std::unordered_map<std::int64_t, std::vector<std::size_t>> Cells;
+};
+
+/// The parameter along segment s at which p lies within tolerance of it (strictly between its
+/// ends and farther than the tolerance from both), or a negative number.
+double SnapParameter(const Segment& s, const Point2& p, double tolerance)
+{
+  const double dx = s.B.x - s.A.x, dy = s.B.y - s.A.y;
+  const double lengthSquared = dx * dx + dy * dy;
+  const double t = ((p.x - s.A.x) * dx + (p.y - s.A.y) * dy) / lengthSquared;
+  if (!(t > 0.0 && t < 1.0))
+  {
+    return -1.0;
+  }
+  const double offLine =
+    std::abs(dx * (p.y - s.A.y) - dy * (p.x - s.A.x)) / std::sqrt(lengthSquared);
+  const bool nearEnd = std::hypot(p.x - s.A.x, p.y - s.A.y) <= tolerance ||
+    std::hypot(p.x - s.B.x, p.y - s.B.y) <= tolerance;
+  return offLine <= tolerance && !nearEnd ? t : -1.0;
+}
+
+/// Per ring, whether its box (of finite vertices, grown by the tolerance) meets another ring's:
+/// only such rings can hold junctions. (A catchment of one ring, the common case, has none, and
+/// a 3 10^5-vertex outline was indexed for nothing: a third of its construction.)
+std::vector<char> RingsNearOthers(const std::vector<std::size_t>& offsets,
+  const std::vector<Point2>& vertices,
+  double tolerance)
+{
+  const std::size_t rings = offsets.empty() ? 0 : offsets.size() - 1;
+  std::vector<Point2> low(rings, { HUGE_VAL, HUGE_VAL }), high(rings, { -HUGE_VAL, -HUGE_VAL });
+  for (std::size_t r = 0; r < rings; ++r)
+  {
+    for (std::size_t k = offsets[r]; k < offsets[r + 1]; ++k)
+    {
+      if (Finite(vertices[k]))
+      {
+        low[r] = { std::min(low[r].x, vertices[k].x), std::min(low[r].y, vertices[k].y) };
+        high[r] = { std::max(high[r].x, vertices[k].x), std::max(high[r].y, vertices[k].y) };
+      }
+    }
+  }
+  // Boxes by their west sides: each meets only boxes that start before its east side.
+  std::vector<std::size_t> order(rings);
+  for (std::size_t r = 0; r < rings; ++r)
+  {
+    order[r] = r;
+  }
+  std::sort(order.begin(),
+    order.end(),
+    [&low](std::size_t a, std::size_t b) { return low[a].x < low[b].x; });
+  std::vector<char> near(rings, 0);
+  for (std::size_t i = 0; i < rings; ++i)
+  {
+    const std::size_t a = order[i];
+    for (std::size_t j = i + 1; j < rings && low[order[j]].x <= high[a].x + 2 * tolerance; ++j)
+    {
+      const std::size_t b = order[j];
+      if (low[b].y <= high[a].y + 2 * tolerance && low[a].y <= high[b].y + 2 * tolerance)
+      {
+        near[a] = near[b] = 1;
+      }
+    }
+  }
+  return near;
+}
+
+} // namespace
+
+SnappedRings SnapVerticesOntoSegments(const std::vector<std::size_t>& offsets,
+  const std::vector<Point2>& vertices,
+  double tolerance)
+{
+  // The segments of rings near others, and the box of their finite vertices.
+  const std::vector<char> nearOthers = RingsNearOthers(offsets, vertices, tolerance);
+  std::vector<Segment> segments;
+  std::vector<std::size_t> ringOf(vertices.size(), 0);
+  Point2 low{ HUGE_VAL, HUGE_VAL }, high{ -HUGE_VAL, -HUGE_VAL };
+  for (std::size_t r = 0; r + 1 < offsets.size(); ++r)
+  {
+    const std::size_t begin = offsets[r], end = offsets[r + 1];
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      ringOf[k] = r;
+      if (!nearOthers[r])
+      {
+        continue;
+      }
+      const Point2& a = vertices[k];
+      const Point2& b = vertices[k + 1 < end ? k + 1 : begin];
+      if (Finite(a))
+      {
+        low = { std::min(low.x, a.x), std::min(low.y, a.y) };
+        high = { std::max(high.x, a.x), std::max(high.y, a.y) };
+      }
+      if (Finite(a) && Finite(b) && !(a == b))
+      {
+        segments.push_back({ r, k, a, b });
+      }
+    }
+  }
+  std::vector<Insertion> insertions;
+  if (!segments.empty() && tolerance > 0.0)
+  {
+    // Cells about as wide as a segment on average (each segment in a few cells), and far wider
+    // than the tolerance.
+    const double span = std::max(high.x - low.x, high.y - low.y);
+    const double cell =
+      std::max({ 16.0 * tolerance, span / std::sqrt(double(segments.size())), 1e-300 });
+    const SegmentGrid grid(segments, cell, low);
+    const std::vector<std::size_t> none;
+    for (std::size_t v = 0; v < vertices.size(); ++v)
+    {
+      const Point2& p = vertices[v];
+      const std::vector<std::size_t>* near =
+        Finite(p) && nearOthers[ringOf[v]] ? grid.Near(p) : nullptr;
+      for (const std::size_t s : near ? *near : none)
+      {
+        if (segments[s].Ring == ringOf[v])
+        {
+          continue;
+        }
+        const double t = SnapParameter(segments[s], p, tolerance);
+        if (t > 0.0)
+        {
+          insertions.push_back({ segments[s].First, t, p });
+        }
+      }
+    }
+  }
+  std::sort(insertions.begin(),
+    insertions.end(),
+    [](const Insertion& a, const Insertion& b)
+    { return a.Target != b.Target ? a.Target < b.Target : a.T < b.T; });
+
+  SnappedRings out;
+  out.Offsets.push_back(0);
+  std::size_t next = 0; // the first insertion not yet placed
+  for (std::size_t r = 0; r + 1 < offsets.size(); ++r)
+  {
+    const std::size_t begin = offsets[r], end = offsets[r + 1];
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      out.Vertices.push_back(vertices[k]);
+      out.SegmentOf.push_back(k - begin);
+      for (; next < insertions.size() && insertions[next].Target == k; ++next)
+      {
+        if (!(insertions[next].Point == out.Vertices.back())) // (one vertex of two rings: once)
+        {
+          out.Vertices.push_back(insertions[next].Point);
+          out.SegmentOf.push_back(k - begin);
+          ++out.Inserted;
+        }
+      }
+    }
+    out.Offsets.push_back(out.Vertices.size());
+  }
+  return out;
+}
+
+} // namespace tessera
