@@ -347,13 +347,26 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
                        f"{', ...' if len(there) > 5 else ''}): give a row per station and time (columns "
                        "station_id, year, month, precip, or station_id, date, precip), or a row per time "
                        "with a column per station named by its station_id (date,ID1,ID2,...)")
+    times = [name for name in header if name in TIME_COLUMNS]
+    first_line = {}  # each row's time as written, and the line that first gave it
+    repeats = []  # (line, the earlier line of its time)
     for line, row in records:
+        written = tuple((row.get(name) or "").strip() for name in times)
+        if first_line.setdefault(written, line) != line:
+            repeats.append((line, first_line[written]))
         # Only the cells with a value (a wide record is mostly gaps: 58% of Colorado's cells), and
         # the first cell of a row without any, whose time stays a step where no gauge reported.
         reported = [column for column in columns if not csv_input.is_missing(row.get(column))]
         gaps[0] += len(columns) - max(len(reported), 1)  # (the cells passed over, for the count)
         for column in reported or columns[:1]:
             yield line, row, column, column
+    if repeats:
+        # (A repeated time is a repeated observation for each station, as in a long file: the
+        # earlier value is used, a repeat's fills an earlier empty cell; said here by row.)
+        shown = ", ".join(f"line {line} (as line {earlier})" for line, earlier in repeats[:20])
+        print(f"{path}: {len(repeats)} row(s) repeat the time of an earlier row: {shown}"
+              f"{f' and {len(repeats) - 20} more' if len(repeats) > 20 else ''}; where both have a value the "
+              "earlier one is used, and a repeat's value fills an earlier empty cell", file=sys.stderr)
 
 
 def read_observations(path, gauge_of, filler, stations_path, missing_values=(), station_ids=()):

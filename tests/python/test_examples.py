@@ -877,6 +877,13 @@ def test_a_wide_file_of_a_column_per_station_gives_the_long_files_means():
             count = 1 if file == "long" else 13
             assert_that(len(missing) == 1 and f": {count} observation(s) without a value" in missing[0],
                         f"{file}: {missing}")
+        # A date given on two rows is named, by its lines.
+        twice = write(directory, "twice.csv", "date,101,102\n2001-01-30,1,\n2001-01-31,2,3\n2001-01-30,4,5\n")
+        _, stderr = run_colorado(os.path.join(directory, "twice"), stations=stations, observations=twice,
+                                 catchment=catchment, plots=False, what="a repeated date")
+        said = [m for m in stderr_messages(stderr) if "repeat the time of an earlier row" in m]
+        assert_that(len(said) == 1 and said[0].startswith(f"{twice}: 1 row(s) repeat the time of an earlier row: "
+                                                          "line 4 (as line 2);"), f"the repeated date: {stderr}")
         assert_observations_refused(directory, stations, catchment, [
             ("date,101,102\n2001-01,1,x\n", {}, "bad.csv:2: column '102': 'x' is not a number"),
             ("date,101,0101\n2001-01,1,2\n", {}, "bad.csv:1: columns 2 and 3 both name station '0101'"),
