@@ -236,9 +236,9 @@ int vtkWindowClip::RequestData(vtkInformation*,
     skipped->SetName("SkippedCellIds");
     vtkNew<vtkIdTypeArray> empty; // polygons in the window without area to clip: reported
     empty->SetName("EmptyTileIds");
+    tessera::CompensatedSum covered; // the clipped areas (scaled as the window is)
     // Tiles whose points are floats are convex up to a float's rounding (the clip's convexity
     // check allows for it).
-    tessera::CompensatedSum covered; // the clipped areas (scaled as the window is)
     const bool floatPoints = tiles->GetPoints() && tiles->GetPoints()->GetDataType() == VTK_FLOAT;
     const double epsilon =
       floatPoints ? std::numeric_limits<float>::epsilon() : std::numeric_limits<double>::epsilon();
