@@ -1,5 +1,5 @@
 // Uses both installed targets: the core's tessellation and the VTK filter, on the same points, and
-// requires them to agree with each other and with the window's area (Require, require.h). Prints
+// requires them to agree with each other and with the window's area (REQUIRE, require.h). Prints
 // "ok" when every requirement held.
 #include "require.h"
 
@@ -43,8 +43,8 @@ int main()
   vtkCellData* cells = filter->GetOutput()->GetCellData();
   auto* areas = vtkDoubleArray::SafeDownCast(cells->GetArray("Area"));
   vtkDataArray* ids = cells->GetArray("PointId");
-  Require(areas && ids, "the filter's output lacks its Area or PointId array");
-  Require(areas->GetNumberOfTuples() == static_cast<vtkIdType>(tiles.Areas.size()),
+  REQUIRE(areas && ids, "the filter's output lacks its Area or PointId array");
+  REQUIRE(areas->GetNumberOfTuples() == static_cast<vtkIdType>(tiles.Areas.size()),
     "the filter gave %lld tiles, the core %zu",
     static_cast<long long>(areas->GetNumberOfTuples()),
     tiles.Areas.size());
@@ -59,14 +59,14 @@ int main()
     const double area = areas->GetValue(c);
     const auto id = static_cast<std::size_t>(ids->GetTuple1(c));
     sum += area;
-    Require(id < points.size(), "a tile's PointId %zu is no input point", id);
-    Require(std::abs(area - coreArea[id]) <= 1e-12 * area,
+    REQUIRE(id < points.size(), "a tile's PointId %zu is no input point", id);
+    REQUIRE(std::abs(area - coreArea[id]) <= 1e-12 * area,
       "point %zu: the filter's tile area %.17g, the core's %.17g",
       id,
       area,
       coreArea[id]);
   }
-  Require(std::abs(sum - 1.0) <= 1e-12, "the tiles' areas sum to %.17g, not the window's 1", sum);
+  REQUIRE(std::abs(sum - 1.0) <= 1e-12, "the tiles' areas sum to %.17g, not the window's 1", sum);
   std::printf("ok\n");
   return 0;
 }

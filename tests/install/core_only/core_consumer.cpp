@@ -1,4 +1,4 @@
-// The core alone: four points in the unit square, whose tiles must be its quarters (Require,
+// The core alone: four points in the unit square, whose tiles must be its quarters (REQUIRE,
 // require.h). Prints "ok" when every requirement held.
 #include "../require.h"
 
@@ -18,10 +18,10 @@ int main()
   const tessera::DirichletTessellation tessellation(
     tessera::Window::Rectangle(0.0, 1.0, 0.0, 1.0), points);
   const tessera::TileSet tiles = tessera::ComputeTiles(tessellation);
-  Require(tiles.Areas.size() == 4, "%zu tiles, not four", tiles.Areas.size());
+  REQUIRE(tiles.Areas.size() == 4, "%zu tiles, not four", tiles.Areas.size());
   for (const double area : tiles.Areas)
   {
-    Require(std::abs(area - 0.25) <= 1e-15, "a tile's area is %.17g, not a quarter", area);
+    REQUIRE(std::abs(area - 0.25) <= 1e-15, "a tile's area is %.17g, not a quarter", area);
   }
   std::printf("ok\n");
   return 0;
