@@ -1,7 +1,8 @@
 #pragma once
 // A running sum that keeps the rounding error of every addition (Neumaier's compensation, each
 // error found by Knuth's TwoSum) and adds it back at the end: a sum of many terms of mixed sign
-// loses no more than one rounding. For the clip's areas and for sums of many tiles' areas.
+// loses no more than one rounding. Every shoelace area of the core (tiles, windows, clipped
+// pieces) and sums of many tiles' areas are summed so.
 
 #include <cmath>
 

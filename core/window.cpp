@@ -18,6 +18,7 @@
 
 #include "window.h"
 
+#include "compensated_sum.h"
 #include "errors.h"
 #include "predicates.h"
 
@@ -379,16 +380,13 @@ double FanArea(const std::vector<Point2>& corners, int exponent)
     return Point2{ std::ldexp(corners[k].x, exponent), std::ldexp(corners[k].y, exponent) };
   };
   const Point2 o = at(0);
-  double sum = 0.0, compensation = 0.0;
+  CompensatedSum area;
   for (std::size_t k = 1; k + 1 < corners.size(); ++k)
   {
     const Point2 u = at(k), v = at(k + 1);
-    const double term = difference_of_products(u.x - o.x, v.y - o.y, u.y - o.y, v.x - o.x);
-    const double t = sum + term;
-    compensation += std::fabs(sum) >= std::fabs(term) ? (sum - t) + term : (term - t) + sum;
-    sum = t;
+    area.Add(difference_of_products(u.x - o.x, v.y - o.y, u.y - o.y, v.x - o.x));
   }
-  return 0.5 * (sum + compensation);
+  return 0.5 * area.Value();
 }
 } // namespace
 

@@ -220,6 +220,19 @@ tessera::ProjectionKind KindOf(int projection)
       return tessera::ProjectionKind::AlbersEqualArea;
   }
 }
+/// Whether a UTM zone is set by hand (UTMZone 1 to 60): with the hemisphere, the whole of the
+/// projection, whatever the data or the other settings say. Then sets p's zone and hemisphere.
+bool TakeUTMZoneSet(vtkGeographicProjection* self, tessera::ProjectionParameters& p)
+{
+  if (self->GetProjection() != vtkGeographicProjection::UTM || self->GetUTMZone() == 0)
+  {
+    return false;
+  }
+  p.UTMZone = self->GetUTMZone();
+  p.UTMNorth = self->GetUTMNorth();
+  return true;
+}
+
 /// The forward projection's parameters from the filter's settings and the data.
 tessera::ProjectionParameters ChooseForwardParameters(vtkGeographicProjection* self,
   const std::vector<tessera::Point2>& lonlat)
@@ -257,11 +270,7 @@ tessera::ProjectionParameters ChooseForwardParameters(vtkGeographicProjection* s
     p.UTMZone = tessera::UTMZoneOfLongitude(self->GetCentralLongitude());
     p.UTMNorth = self->GetCentralLatitude() >= 0.0;
   }
-  if (self->GetProjection() == vtkGeographicProjection::UTM && self->GetUTMZone() != 0)
-  {
-    p.UTMZone = self->GetUTMZone();
-    p.UTMNorth = self->GetUTMNorth();
-  }
+  TakeUTMZoneSet(self, p);
   return p;
 }
 
@@ -420,14 +429,11 @@ tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
     {
       return tessera::ProjectionParameters::FromString(record);
     }
-    if (self->GetProjection() == vtkGeographicProjection::UTM && self->GetUTMZone() != 0)
+    // (ParametersFromData, on by default, made a scripter turn it off to go back from UTM.)
+    tessera::ProjectionParameters utm;
+    utm.Kind = KindOf(vtkGeographicProjection::UTM);
+    if (TakeUTMZoneSet(self, utm))
     {
-      // A zone and a hemisphere are the whole of a UTM projection: nothing to take from the data
-      // (ParametersFromData, on by default, made a scripter turn it off to go back from UTM).
-      tessera::ProjectionParameters utm;
-      utm.Kind = KindOf(vtkGeographicProjection::UTM);
-      utm.UTMZone = self->GetUTMZone();
-      utm.UTMNorth = self->GetUTMNorth();
       return utm;
     }
     if (self->GetParametersFromData())
