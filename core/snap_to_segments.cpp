@@ -112,45 +112,50 @@ double SnapParameter(const Segment& s, const Point2& p, double tolerance)
   return offLine <= tolerance && !nearEnd ? t : -1.0;
 }
 
-/// Per ring, whether its box (of finite vertices, grown by the tolerance) meets another ring's:
-/// only such rings can hold junctions. (A catchment of one ring, the common case, has none, and
-/// a 3 10^5-vertex outline was indexed for nothing: a third of its construction.)
-std::vector<char> RingsNearOthers(const std::vector<std::size_t>& offsets,
-  const std::vector<Point2>& vertices,
-  double tolerance)
+/// Per ring, the box of its finite vertices (empty, XMin > XMax, where it has none).
+std::vector<Box2> RingBoxes(const std::vector<std::size_t>& offsets,
+  const std::vector<Point2>& vertices)
 {
   const std::size_t rings = offsets.empty() ? 0 : offsets.size() - 1;
-  std::vector<Point2> low(rings, { HUGE_VAL, HUGE_VAL }), high(rings, { -HUGE_VAL, -HUGE_VAL });
+  std::vector<Box2> boxes(rings, Box2{ HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL });
   for (std::size_t r = 0; r < rings; ++r)
   {
     for (std::size_t k = offsets[r]; k < offsets[r + 1]; ++k)
     {
       if (Finite(vertices[k]))
       {
-        low[r] = { std::min(low[r].x, vertices[k].x), std::min(low[r].y, vertices[k].y) };
-        high[r] = { std::max(high[r].x, vertices[k].x), std::max(high[r].y, vertices[k].y) };
+        boxes[r].Extend(vertices[k]);
       }
     }
   }
+  return boxes;
+}
+
+/// Per ring, whether its box, grown by the tolerance, meets another ring's: only such rings can
+/// hold junctions. (A catchment of one ring, the common case, has none, and a 3 10^5-vertex
+/// outline was indexed for nothing: a third of its construction.)
+std::vector<char> RingsNearOthers(const std::vector<Box2>& boxes, double tolerance)
+{
   // Boxes by their west sides: each meets only boxes that start before its east side.
-  std::vector<std::size_t> order(rings);
-  for (std::size_t r = 0; r < rings; ++r)
+  std::vector<std::size_t> order(boxes.size());
+  for (std::size_t r = 0; r < boxes.size(); ++r)
   {
     order[r] = r;
   }
   std::sort(order.begin(),
     order.end(),
-    [&low](std::size_t a, std::size_t b) { return low[a].x < low[b].x; });
-  std::vector<char> near(rings, 0);
-  for (std::size_t i = 0; i < rings; ++i)
+    [&boxes](std::size_t a, std::size_t b) { return boxes[a].XMin < boxes[b].XMin; });
+  std::vector<char> near(boxes.size(), 0);
+  for (std::size_t i = 0; i < boxes.size(); ++i)
   {
-    const std::size_t a = order[i];
-    for (std::size_t j = i + 1; j < rings && low[order[j]].x <= high[a].x + 2 * tolerance; ++j)
+    const Box2& a = boxes[order[i]];
+    for (std::size_t j = i + 1; j < boxes.size() && boxes[order[j]].XMin <= a.XMax + 2 * tolerance;
+         ++j)
     {
-      const std::size_t b = order[j];
-      if (low[b].y <= high[a].y + 2 * tolerance && low[a].y <= high[b].y + 2 * tolerance)
+      const Box2& b = boxes[order[j]];
+      if (b.YMin <= a.YMax + 2 * tolerance && a.YMin <= b.YMax + 2 * tolerance)
       {
-        near[a] = near[b] = 1;
+        near[order[i]] = near[order[j]] = 1;
       }
     }
   }
@@ -163,29 +168,25 @@ SnappedRings SnapVerticesOntoSegments(const std::vector<std::size_t>& offsets,
   const std::vector<Point2>& vertices,
   double tolerance)
 {
-  // The segments of rings near others, and the box of their finite vertices.
-  const std::vector<char> nearOthers = RingsNearOthers(offsets, vertices, tolerance);
+  // The segments of rings near others, and the box of those rings.
+  const std::vector<Box2> boxes = RingBoxes(offsets, vertices);
+  const std::vector<char> nearOthers = RingsNearOthers(boxes, tolerance);
   std::vector<Segment> segments;
   std::vector<std::size_t> ringOf(vertices.size(), 0);
-  Point2 low{ HUGE_VAL, HUGE_VAL }, high{ -HUGE_VAL, -HUGE_VAL };
+  Box2 box{ HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL };
   for (std::size_t r = 0; r + 1 < offsets.size(); ++r)
   {
     const std::size_t begin = offsets[r], end = offsets[r + 1];
+    if (nearOthers[r])
+    {
+      box.Extend(boxes[r]);
+    }
     for (std::size_t k = begin; k < end; ++k)
     {
       ringOf[k] = r;
-      if (!nearOthers[r])
-      {
-        continue;
-      }
       const Point2& a = vertices[k];
       const Point2& b = vertices[k + 1 < end ? k + 1 : begin];
-      if (Finite(a))
-      {
-        low = { std::min(low.x, a.x), std::min(low.y, a.y) };
-        high = { std::max(high.x, a.x), std::max(high.y, a.y) };
-      }
-      if (Finite(a) && Finite(b) && !(a == b))
+      if (nearOthers[r] && Finite(a) && Finite(b) && !(a == b))
       {
         segments.push_back({ r, k, a, b });
       }
@@ -196,10 +197,9 @@ SnappedRings SnapVerticesOntoSegments(const std::vector<std::size_t>& offsets,
   {
     // Cells about as wide as a segment on average (each segment in a few cells), and far wider
     // than the tolerance.
-    const double span = std::max(high.x - low.x, high.y - low.y);
     const double cell =
-      std::max({ 16.0 * tolerance, span / std::sqrt(double(segments.size())), 1e-300 });
-    const SegmentGrid grid(segments, cell, low);
+      std::max({ 16.0 * tolerance, box.LargerSide() / std::sqrt(double(segments.size())), 1e-300 });
+    const SegmentGrid grid(segments, cell, Point2{ box.XMin, box.YMin });
     const std::vector<std::size_t> none;
     for (std::size_t v = 0; v < vertices.size(); ++v)
     {
