@@ -26,12 +26,26 @@ public:
 class RingError : public InputError
 {
 public:
-  RingError(const std::string& message, std::vector<std::size_t> rings)
+  /// Segment k of a ring, numbered as the caller gave the ring: from its vertex k to vertex k + 1
+  /// (the last one back to vertex 0).
+  struct Segment
+  {
+    std::size_t Ring;
+    std::size_t Index;
+  };
+
+  RingError(const std::string& message,
+    std::vector<std::size_t> rings,
+    std::vector<Segment> segments = {})
     : InputError(message)
     , Rings(std::move(rings))
+    , Segments(std::move(segments))
   {
   }
   std::vector<std::size_t> Rings;
+  /// The segments the message names, in its order: a caller who has the rings' coordinates can
+  /// say where they run.
+  std::vector<Segment> Segments;
 };
 
 /// An InputError about a tile given to a clip that is not convex (clip.h): a caller that knows

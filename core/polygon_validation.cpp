@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <tuple>
@@ -225,6 +226,10 @@ public:
   // each other all the way round (then neither has a ray off the other): into RingContacts.
   void Finish()
   {
+    if (this->Parted)
+    {
+      this->ReportCrossingAlongShared(*this->Parted);
+    }
     for (const auto& [r, s] : this->Meeting)
     {
       const auto rs = this->InsideOther.find({ r, s });
@@ -236,8 +241,8 @@ public:
             "a hole exactly (the even-odd rule would cancel them; leave both out instead)",
           { r, s });
       }
-      this->Clean.RingContacts.push_back({ r, s, rs->second });
-      this->Clean.RingContacts.push_back({ s, r, sr->second });
+      this->Clean.RingContacts.push_back({ r, s, rs->second.Inside });
+      this->Clean.RingContacts.push_back({ s, r, sr->second.Inside });
     }
     std::sort(this->Clean.RingContacts.begin(),
       this->Clean.RingContacts.end(),
@@ -302,18 +307,29 @@ private:
     this->MarkInside(s, p);
     this->MarkInside(t, p);
     this->Meeting.insert({ std::min(s.Ring, t.Ring), std::max(s.Ring, t.Ring) });
-    for (const Point2& ray : { bBack, bAhead })
+    // The sides that the rays of each ring off the other show at p (-1: along the other).
+    int bSides[2], aSides[2];
+    for (int k = 0; k < 2; ++k)
     {
-      if (!along(ray, aBack, aAhead))
-      {
-        this->Record(t.Ring, s.Ring, this->Inside(s.Ring, p, aBack, aAhead, ray), s, t);
-      }
+      const Point2& bRay = k == 0 ? bBack : bAhead;
+      const Point2& aRay = k == 0 ? aBack : aAhead;
+      bSides[k] = along(bRay, aBack, aAhead) ? -1 : this->Inside(s.Ring, p, aBack, aAhead, bRay);
+      aSides[k] = along(aRay, bBack, bAhead) ? -1 : this->Inside(t.Ring, p, bBack, bAhead, aRay);
     }
-    for (const Point2& ray : { aBack, aAhead })
+    if ((bSides[0] >= 0 && bSides[1] >= 0 && bSides[0] != bSides[1]) ||
+      (aSides[0] >= 0 && aSides[1] >= 0 && aSides[0] != aSides[1]))
     {
-      if (!along(ray, bBack, bAhead))
+      this->ReportCrossing(s, t); // one ring passes through the other at p
+    }
+    for (int k = 0; k < 2; ++k)
+    {
+      if (bSides[k] >= 0)
       {
-        this->Record(s.Ring, t.Ring, this->Inside(t.Ring, p, bBack, bAhead, ray), s, t);
+        this->Record(t.Ring, s.Ring, bSides[k] == 1, s, t);
+      }
+      if (aSides[k] >= 0)
+      {
+        this->Record(s.Ring, t.Ring, aSides[k] == 1, s, t);
       }
     }
   }
@@ -331,12 +347,15 @@ private:
                                     : InsideAngle(p, back, ahead, d);
   }
 
+  // A side of ring off other, seen where segments s and t meet. One that differs from the side
+  // first seen is kept until the sweep ends (Parted): the rings then cross, but a crossing found
+  // at a point by then names the place better than the two contacts do.
   void Record(std::size_t ring, std::size_t other, bool inside, const Segment& s, const Segment& t)
   {
-    const auto found = this->InsideOther.emplace(std::make_pair(ring, other), inside);
-    if (found.first->second != inside)
+    const auto found = this->InsideOther.emplace(std::make_pair(ring, other), Side{ inside, s, t });
+    if (found.first->second.Inside != inside && !this->Parted)
     {
-      this->ReportCrossing(s, t);
+      this->Parted = PartedSides{ ring, other, found.first->second, Side{ inside, s, t } };
     }
   }
 
@@ -349,21 +368,101 @@ private:
     }
   }
 
+  // The side a ring's boundary off another lies on, and the segments where it was seen.
+  struct Side
+  {
+    bool Inside;
+    Segment S, T;
+  };
+  struct PartedSides
+  {
+    std::size_t Ring, Other;
+    Side First, Then;
+  };
+
   [[noreturn]] void ReportCrossing(const Segment& s, const Segment& t) const
   {
     const Segment& first = s.Ring < t.Ring ? s : t;
     const Segment& second = s.Ring < t.Ring ? t : s;
     throw RingError("ring " + std::to_string(first.Ring) + " " + Describe(this->Clean, first) +
         " and ring " + std::to_string(second.Ring) + " " + Describe(this->Clean, second) +
-        " cross (rings may touch and share stretches of boundary, but not cross; holes and "
-        "islands are separate rings)",
-      { first.Ring, second.Ring });
+        " cross" + NotCrossingRule(),
+      { first.Ring, second.Ring },
+      { this->Named(first), this->Named(second) });
+  }
+
+  // Ring's boundary off the other lay inside it at one contact and outside at another, and the two
+  // crossed nowhere at a point: they cross along a stretch of boundary they share, whose ends the
+  // two contacts are (or lead to).
+  [[noreturn]] void ReportCrossingAlongShared(const PartedSides& parted) const
+  {
+    const std::string ring = "ring " + std::to_string(parted.Ring);
+    const std::string other = "ring " + std::to_string(parted.Other);
+    const auto side = [](const Side& s) { return std::string(s.Inside ? "inside" : "outside"); };
+    const std::vector<RingError::Segment> first = this->NamedInOrder(parted.First);
+    const std::vector<RingError::Segment> then = this->NamedInOrder(parted.Then);
+    std::string message = "ring " + std::to_string(std::min(parted.Ring, parted.Other)) +
+      " and ring " + std::to_string(std::max(parted.Ring, parted.Other)) +
+      " cross along boundary they share";
+    std::vector<RingError::Segment> named = first;
+    if (SameSegments(first, then))
+    {
+      message += ", where " + MeetingText(first) + ": " + ring + " leaves " + other + " on its " +
+        side(parted.First) + " at one end and on its " + side(parted.Then) + " at the other";
+    }
+    else
+    {
+      message += ": off " + other + ", " + ring + " lies " + side(parted.First) + " it where " +
+        MeetingText(first) + ", and " + side(parted.Then) + " it where " + MeetingText(then);
+      named.insert(named.end(), then.begin(), then.end());
+    }
+    throw RingError(message + NotCrossingRule(),
+      { std::min(parted.Ring, parted.Other), std::max(parted.Ring, parted.Other) },
+      named);
+  }
+
+  // The segments where a side was seen, the lesser ring's first.
+  std::vector<RingError::Segment> NamedInOrder(const Side& side) const
+  {
+    const bool sFirst = side.S.Ring < side.T.Ring;
+    return { this->Named(sFirst ? side.S : side.T), this->Named(sFirst ? side.T : side.S) };
+  }
+
+  static bool SameSegments(const std::vector<RingError::Segment>& a,
+    const std::vector<RingError::Segment>& b)
+  {
+    return std::equal(a.begin(),
+      a.end(),
+      b.begin(),
+      b.end(),
+      [](const RingError::Segment& x, const RingError::Segment& y)
+      { return x.Ring == y.Ring && x.Index == y.Index; });
+  }
+
+  // "ring 0 segment 2 meets ring 1 segment 5"
+  static std::string MeetingText(const std::vector<RingError::Segment>& pair)
+  {
+    const auto name = [](const RingError::Segment& s)
+    { return "ring " + std::to_string(s.Ring) + " segment " + std::to_string(s.Index); };
+    return name(pair[0]) + " meets " + name(pair[1]);
+  }
+
+  static std::string NotCrossingRule()
+  {
+    return " (rings may touch and share stretches of boundary, but not cross; holes and islands "
+           "are separate rings)";
+  }
+
+  RingError::Segment Named(const Segment& s) const
+  {
+    return { s.Ring, this->Clean.SourceIndex[s.Start] };
   }
 
   CleanRings& Clean;
   std::vector<int> Orientation;
-  // (ring, other ring): whether the ring's boundary off the other lies inside it, as first seen.
-  std::map<std::pair<std::size_t, std::size_t>, bool> InsideOther;
+  // (ring, other ring): the side the ring's boundary off the other lies on, as first seen.
+  std::map<std::pair<std::size_t, std::size_t>, Side> InsideOther;
+  std::optional<PartedSides> Parted; // the first pair of rings seen on both sides
   std::set<std::pair<std::size_t, std::size_t>> Meeting; // (lesser ring, greater ring)
 };
 
@@ -390,17 +489,21 @@ bool MeetsWithinRing(const CleanRings& clean, const Segment& s, const Segment& t
   const Segment& first = s.Start < t.Start ? s : t;
   const Segment& second = s.Start < t.Start ? t : s;
   const std::string ring = "ring " + std::to_string(first.Ring);
+  const std::vector<RingError::Segment> named{ { first.Ring, clean.SourceIndex[first.Start] },
+    { second.Ring, clean.SourceIndex[second.Start] } };
   const std::size_t begin = clean.RingOffsets[first.Ring];
   if (AllOnOneLine(&clean.Vertices[begin], clean.RingOffsets[first.Ring + 1] - begin))
   {
     // (a ring without area: its segments fold back over each other)
     throw RingError(ring + " has no area: its points lie on one line (" + Describe(clean, first) +
         " and " + Describe(clean, second) + " overlap)",
-      { first.Ring });
+      { first.Ring },
+      named);
   }
   throw RingError(ring + " is self-intersecting: " + Describe(clean, first) + " and " +
       Describe(clean, second) + " touch or cross",
-    { first.Ring });
+    { first.Ring },
+    named);
 }
 
 // Sweep over segments sorted by their left end: a segment is compared only with those whose

@@ -1096,6 +1096,34 @@ Rings ReadPolygonRings(vtkDataObject* data, const char* what, std::vector<std::s
   return rings;
 }
 
+namespace
+{
+std::string PointText(const tessera::Point2& p)
+{
+  return "(" + tessera::NumberText(p.x) + ", " + tessera::NumberText(p.y) + ")";
+}
+
+/// "ring 2 segment 5 runs from (3, 1) to (4, 1)": segment k from the ring's vertex k to k + 1.
+std::string SegmentPlace(const Rings& rings, const tessera::RingError::Segment& segment)
+{
+  const std::string name =
+    "ring " + std::to_string(segment.Ring) + " segment " + std::to_string(segment.Index);
+  if (segment.Ring + 1 >= rings.Offsets.size())
+  {
+    return name + " (not a ring read)";
+  }
+  const std::size_t begin = rings.Offsets[segment.Ring];
+  const std::size_t count = rings.Offsets[segment.Ring + 1] - begin;
+  if (segment.Index >= count)
+  {
+    return name + " (not a segment of the ring read)";
+  }
+  const std::size_t next = segment.Index + 1 == count ? 0 : segment.Index + 1;
+  return name + " runs from " + PointText(rings.Vertices[begin + segment.Index]) + " to " +
+    PointText(rings.Vertices[begin + next]);
+}
+} // namespace
+
 tessera::InputError WithRingSources(const tessera::RingError& error,
   const Rings& rings,
   const char* what)
@@ -1106,6 +1134,10 @@ tessera::InputError WithRingSources(const tessera::RingError& error,
     const std::string source = r < rings.Sources.size() ? rings.Sources[r] : "unknown";
     text += (text.empty() ? "" : "; ") + std::string("ring ") + std::to_string(r) + " is " +
       source + " of the " + what;
+  }
+  for (const tessera::RingError::Segment& segment : error.Segments)
+  {
+    text += "; " + SegmentPlace(rings, segment);
   }
   return tessera::InputError(std::string(error.what()) + " (" + text + ")");
 }

@@ -177,8 +177,10 @@ struct Rings
 /// other than vtkPolyData: only poly data is read).
 Rings ReadPolygonRings(vtkDataObject* data, const char* what, std::vector<std::string>& warnings);
 
-/// error's message followed by where its rings came from: "... (ring 2 is cell 4 of the window
-/// (input 1))", one clause per ring; `what` names the input whose rings were read.
+/// error's message followed by where its rings came from and where the segments it names run, in
+/// the input's coordinates: "... (ring 2 is cell 4 of the window (input 1); ring 2 segment 5 runs
+/// from (3, 1) to (4, 1))", one clause per ring and per segment; `what` names the input whose
+/// rings were read.
 tessera::InputError WithRingSources(const tessera::RingError& error,
   const Rings& rings,
   const char* what);

@@ -1301,6 +1301,24 @@ TEST(Clip, RejectsBadCatchmentsNamingRingsAndSegments)
   };
   EXPECT_EQ(ringsOf(crossing), (std::vector<std::size_t>{ 0, 1 }));
   EXPECT_EQ(ringsOf(bowTie), (std::vector<std::size_t>{ 0 }));
+  // and the segments it names ("ring:segment"), for a caller to say where they run.
+  const auto segmentsOf = [](const Rings& rings)
+  {
+    std::string named;
+    try
+    {
+      Catchment catchment(rings.Offsets, rings.Vertices);
+    }
+    catch (const tessera::RingError& error)
+    {
+      for (const tessera::RingError::Segment& s : error.Segments)
+      {
+        named +=
+          (named.empty() ? "" : " ") + std::to_string(s.Ring) + ":" + std::to_string(s.Index);
+      }
+    }
+    return named;
+  };
 
   // Rings may touch and share stretches of boundary, not cross: ring 1's diagonal enters ring 0
   // at one corner and leaves at the other; ring 3 runs along ring 2's bottom edge and leaves it
@@ -1316,8 +1334,43 @@ TEST(Clip, RejectsBadCatchmentsNamingRingsAndSegments)
   crossingAlongStretches.Add(Rectangle(0, 0, 10, 10));
   crossingAlongStretches.Add(
     { { 2, 0 }, { 4, 0 }, { 4, 10 }, { 2, 10 }, { 2, 12 }, { -2, 12 }, { -2, -2 }, { 2, -2 } });
-  EXPECT_NE(build(crossingAlongStretches).find(" cross (rings may touch"), std::string::npos)
-    << build(crossingAlongStretches);
+  EXPECT_EQ(build(crossingAlongStretches),
+    "ring 0 and ring 1 cross along boundary they share, where ring 0 segment 0 meets ring 1 "
+    "segment 0: ring 1 leaves ring 0 on its outside at one end and on its inside at the other "
+    "(rings may touch and share stretches of boundary, but not cross; holes and islands are "
+    "separate rings)");
+  EXPECT_EQ(segmentsOf(crossingAlongStretches), "0:0 1:0");
+  // Ring 1 touches ring 0 from inside at (0, 5), from outside at (2, 0), and crosses its right
+  // edge at (10, 8) and (10, 9). The contacts, swept first, show both sides; the crossing named
+  // is the first of the two where they cross, not a contact.
+  //
+  //          +-----------+ (10,10)
+  //          |       .-----x----.  (9,9) to (12,9): crossing at (10,9)
+  //          |   .---------x--. |  (9,8) to (11,8): crossing at (10,8), the one named
+  //   (0,5)  +<            |  | |
+  //          |             |  | |  ring 1 runs (0,5) (9,8) (11,8) (11,-2) (3,-2) (2,0) (1,-2)
+  //   (0,0)  +--v----------+  | |  (1,-3) (12,-3) (12,9) (9,9); it touches ring 0 at (0,5)
+  //           / \ ..........'  |  from inside, at (2,0) from outside
+  //          '   '..............'
+  Rings crossingBeyondContacts;
+  crossingBeyondContacts.Add(Rectangle(0, 0, 10, 10));
+  crossingBeyondContacts.Add({ { 0, 5 },
+    { 9, 8 },
+    { 11, 8 },
+    { 11, -2 },
+    { 3, -2 },
+    { 2, 0 },
+    { 1, -2 },
+    { 1, -3 },
+    { 12, -3 },
+    { 12, 9 },
+    { 9, 9 } });
+  EXPECT_EQ(build(crossingBeyondContacts),
+    "ring 0 segment 1 and ring 1 segment 1 cross (rings may touch and share stretches of "
+    "boundary, but not cross; holes and islands are separate rings)");
+  EXPECT_EQ(segmentsOf(crossingBeyondContacts), "0:1 1:1");
+  EXPECT_EQ(segmentsOf(crossing), "0:1 1:0"); // (3, 1)-(5, 1) across x = 4
+  EXPECT_EQ(segmentsOf(bowTie), "0:1 0:3");
   Rings twice;
   twice.Add(Rectangle(0, 0, 10, 10));
   twice.Add(Rectangle(0, 0, 10, 10));

@@ -530,7 +530,13 @@ def test_review_of_windows_of_other_types_global_ids_and_flat_tiles():
     window.SetVerts(cells)
     _, errors, _ = clip_by(polygon([[(0, 0), (1, 0), (1, 1)]]), window)
     assert_that(len(errors) == 1 and "ring 0 is self-intersecting" in errors[0]
-                and "(ring 0 is cell 2 of the window (input 1))" in errors[0], f"{errors}")
+                and "(ring 0 is cell 2 of the window (input 1); ring 0 segment 1 runs from (2, 0) to (0, 2); "
+                    "ring 0 segment 3 runs from (2, 2) to (0, 0))" in errors[0], f"{errors}")
+    # The segments' ends are the input's coordinates, not the scaled ones the clip works in.
+    _, errors, _ = clip_by(polygon([[(0, 0), (1e-200, 0), (1e-200, 1e-200)]]),
+                           polygon([[(0, 0), (2e-200, 0), (0, 2e-200), (2e-200, 2e-200)]]))
+    assert_that(len(errors) == 1 and "ring 0 segment 1 runs from (2e-200, 0) to (0, 2e-200); "
+                "ring 0 segment 3 runs from (2e-200, 2e-200) to (0, 0))" in errors[0], f"{errors}")
     # (4) Tiny coordinates: the clip's products fell below the doubles (a fraction of 0.945 for
     # 17/18 at 1e-161, no piece at 1e-163). The window is scaled up by a power of two now.
     tile, window = [(0, 0), (3, 0), (3, 3), (0, 3)], [(1, 0), (3, 0), (3, 3), (0, 3), (0, 1)]
