@@ -179,6 +179,8 @@ int vtkWindowClip::RequestData(vtkInformation*,
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   try
   {
+    // (the tiles' arrays are copied by cell id: a short one was read past its end)
+    tessera_vtk::CheckAttributeLengths(tiles, "the tiles (input 0)");
     const std::string projectionWarning = ProjectionWarning(tiles, windowData);
     if (!projectionWarning.empty())
     {
@@ -206,6 +208,11 @@ int vtkWindowClip::RequestData(vtkInformation*,
       p = { std::ldexp(p.x, exponent), std::ldexp(p.y, exponent) };
     }
     const tessera::Catchment catchment = WindowOf(window, windowVertices);
+    if (!std::isfinite(catchment.Area()))
+    {
+      throw tessera::InputError("the window (input 1): its area overflows (coordinates of some "
+                                "1e154 or more); scale the tiles and the window down");
+    }
 
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
@@ -341,10 +348,10 @@ int vtkWindowClip::RequestData(vtkInformation*,
     output->GetFieldData()->AddArray(empty);
     output->GetFieldData()->AddArray(skipped);
     const double windowArea = std::ldexp(catchment.Area(), -2 * exponent);
-    const double coveredArea = std::ldexp(covered.Value(), -2 * exponent);
     output->GetFieldData()->AddArray(OneValue("WindowArea", windowArea));
-    output->GetFieldData()->AddArray(
-      OneValue("CoveredFraction", windowArea > 0.0 ? coveredArea / windowArea : 0.0));
+    // (of the scaled areas: a window of 1e-300 has an area below the doubles, 0 once scaled back)
+    output->GetFieldData()->AddArray(OneValue(
+      "CoveredFraction", catchment.Area() > 0.0 ? covered.Value() / catchment.Area() : 0.0));
     if (empty->GetNumberOfValues() > 0)
     {
       vtkWarningMacro(<< empty->GetNumberOfValues()

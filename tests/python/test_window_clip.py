@@ -624,6 +624,36 @@ def test_each_block_of_tiles_gives_its_share_of_the_window():
         assert_that(not errors and abs(field_value(output, "CoveredFraction") - 1.0) < 1e-15,
                     f"float tiles at {x}: {field_value(output, 'CoveredFraction')}")
 
+
+def test_short_arrays_and_windows_beyond_the_doubles_are_named():
+    """From an error audit: a tile cell-data array shorter than the tiles was read past its end (a
+    crash for text, garbage values for numbers); a window of 1e200 gave WindowArea NaN and one of
+    1e-300 a CoveredFraction of 0 though the tiles cover it."""
+    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
+
+    square = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+    for array in (vtkStringArray(), vtkDoubleArray()):
+        tiles = polygon([square, [(1.0, 0.0), (2.0, 0.0), (2.0, 1.0), (1.0, 1.0)]])
+        array.SetName("v")
+        array.InsertNextValue("a" if isinstance(array, vtkStringArray) else 1.0)
+        tiles.GetCellData().AddArray(array)
+        output, errors, _ = clip_by(tiles, polygon([square]))
+        assert_that(len(errors) == 1
+                    and "the tiles (input 0): its cell-data array 'v' has 1 value(s) for 2 cells" in errors[0]
+                    and output.GetNumberOfCells() == 0, f"{array.GetClassName()}: {errors}")
+    huge = [[(1e200 * x, 1e200 * y) for x, y in square]]
+    output, errors, _ = clip_by(polygon([[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0)]]), polygon(huge))
+    assert_that(len(errors) == 1 and "the window (input 1): its area overflows" in errors[0],
+                f"1e200: {errors}")
+    tiny = [[(1e-300 * x, 1e-300 * y) for x, y in square]]
+    halves = polygon([[(1e-300 * x, 1e-300 * y) for x, y in ring]
+                      for ring in ([(0, 0), (0.5, 0), (0.5, 1), (0, 1)], [(0.5, 0), (1, 0), (1, 1), (0.5, 1)])])
+    output = clip(halves, tiny)
+    assert_that(field_value(output, "CoveredFraction") == 1.0 and field_value(output, "WindowArea") == 0.0,
+                f"1e-300: covered {field_value(output, 'CoveredFraction')} of an area below the doubles "
+                f"({field_value(output, 'WindowArea')})")
+
+
 if __name__ == "__main__":
     run([test_cells_are_simple_pieces_that_fill_tile_and_window,
          test_review_cases,
@@ -635,4 +665,5 @@ if __name__ == "__main__":
          test_inputs_of_another_type_are_named_and_leave_empty_outputs,
          test_review_of_windows_of_other_types_global_ids_and_flat_tiles,
          test_the_field_data_says_how_much_of_the_window_the_tiles_cover,
-         test_each_block_of_tiles_gives_its_share_of_the_window])
+         test_each_block_of_tiles_gives_its_share_of_the_window,
+         test_short_arrays_and_windows_beyond_the_doubles_are_named])
