@@ -111,6 +111,29 @@ vtkAbstractArray* ObservationColumn(vtkTable* table,
   return array;
 }
 
+/// An InputError when the observations table's columns differ in length: the table's rows are its
+/// first column's, and a shorter column was read past its end (garbage means, or a crash for
+/// text), a longer one's rows beyond them left out without a word.
+void CheckColumnLengths(vtkTable* table)
+{
+  const vtkIdType rows = table->GetNumberOfRows();
+  for (vtkIdType c = 0; c < table->GetNumberOfColumns(); ++c)
+  {
+    vtkAbstractArray* column = table->GetColumn(c);
+    if (column && column->GetNumberOfTuples() != rows)
+    {
+      const auto name = [](vtkAbstractArray* array)
+      {
+        const char* text = array->GetName();
+        return text && *text ? "'" + std::string(text) + "'" : std::string("(without a name)");
+      };
+      throw tessera::InputError("the observations table's columns differ in length: column " +
+        name(column) + " has " + std::to_string(column->GetNumberOfTuples()) +
+        " value(s), the first column, " + name(table->GetColumn(0)) + ", " + std::to_string(rows));
+    }
+  }
+}
+
 /// The station id of a row of the observations table's station column, as written (StationName).
 std::string RowStation(vtkAbstractArray* stations, std::size_t row)
 {
@@ -854,6 +877,7 @@ struct vtkThiessenArealAverage::Internals
     }
     if (!(source == this->ClassifiedFrom))
     {
+      CheckColumnLengths(table);           // (before any column is read)
       this->ClassifiedFrom = RowsSource(); // until the read succeeds (it throws on bad times)
       this->Classified = ReadRows(table, gaugeNames, stationColumn, timeColumn, monthColumn);
       this->ClassifiedFrom = source;
@@ -1248,6 +1272,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   vtkAbstractArray* stations = nullptr; // the observations' station column (for messages)
   if (observations)
   {
+    CheckColumnLengths(observations);
     if (observations->GetNumberOfRows() == 0)
     {
       throw tessera::InputError("the observations table has no rows (no time step to average)");

@@ -972,6 +972,30 @@ def test_bad_dates_and_months_are_named():
         assert_that(f.GetOutputDataObject(1).GetNumberOfRows() == 0, f"{settings}: output not empty")
 
 
+def test_columns_of_different_lengths_are_named():
+    # From an error audit: the table's rows are its first column's; a shorter column was read past
+    # its end (a mean of 1.8e150, made-up times, a crash for text), a longer one cut short silently.
+    coords, ids, ring, months = read_colorado()
+    rows = {key: months[key] for key in ((1963, 8), (1990, 7))}
+    count = sum(len(values) for values in rows.values())
+    for column, length, numeric in (("value", 5, True), ("date", count - 3, False), ("value", count + 4, True),
+                                    ("station_id", 5, False), ("date", count + 1, False)):
+        table = dated_table(rows, lambda y, m: {"date": f"{y}-{m:02d}"})
+        table.GetColumnByName(column).SetNumberOfValues(length)
+        if length > count:  # (the new values set, so that only the length is wrong)
+            for k in range(count, length):
+                table.GetColumnByName(column).SetValue(k, 1.0 if numeric else "1963-08")
+        first = "station_id"
+        expected = (f"the observations table's columns differ in length: column '{column}' has {length} value(s), "
+                    f"the first column, '{first}', {count}") if column != first else (
+            f"the observations table's columns differ in length: column 'value' has {count} value(s), "
+            f"the first column, '{first}', {length}")
+        f, messages = summary_of(coords, ids, ring, table, TimeColumn="date")
+        assert_that(len(messages) == 1 and expected in messages[0], f"{column} of {length}: {messages}")
+        assert_that(f.GetOutputDataObject(1).GetNumberOfRows() == 0, f"{column} of {length}: output not empty")
+
+
+
 def test_columns_not_yet_set_give_no_error_until_the_update():
     """ParaView asks for the pipeline information as soon as the filter is made, before its
     columns are set: that gives no error and no time step. The update then names the missing
@@ -1550,6 +1574,7 @@ def test_an_area_method_that_is_no_choice_is_named():
 
 if __name__ == "__main__":
     run([test_four_symmetric_gauges_share_a_square,
+         test_columns_of_different_lengths_are_named,
          test_a_missing_value_code_is_missing_when_set_and_named_when_not,
          test_colorado_months_match_a_brute_force_raster,
          test_missing_steps_and_unused_input_are_reported,
