@@ -379,11 +379,14 @@ GeographicProjection::GeographicProjection(const ProjectionParameters& parameter
   try
   {
     // (Inside the try, whose handler deletes Impl: thrown before it, Impl leaked.)
-    if (!std::isfinite(p.CentralLongitude))
+    if (!(std::fabs(p.CentralLongitude) <= 360.0))
     {
+      // (1e20 was taken, and every x came out 0)
       throw InputError("projection parameter lon0 = " + NumberText(p.CentralLongitude) +
-        " is not a finite longitude");
+        " is not a longitude in [-360, 360]");
     }
+    // (unused by the conics and UTM, but written into the record; 100 was taken there)
+    requireLatitude(p.CentralLatitude, "lat0");
     Impl->CentralMeridian = p.CentralLongitude;
     switch (p.Kind)
     {
@@ -422,7 +425,6 @@ GeographicProjection::GeographicProjection(const ProjectionParameters& parameter
         Impl->CentralMeridian = 6.0 * p.UTMZone - 183.0;
         break;
       case ProjectionKind::AzimuthalEquidistant:
-        requireLatitude(p.CentralLatitude, "lat0");
         Impl->Azimuthal.reset(
           new GeographicLib::AzimuthalEquidistant(GeographicLib::Geodesic::WGS84()));
         break;

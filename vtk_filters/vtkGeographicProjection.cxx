@@ -27,6 +27,7 @@
 #include <set>
 #include <memory>
 #include <string>
+#include <tuple>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -252,15 +253,17 @@ tessera::ProjectionParameters ChooseForwardParameters(vtkGeographicProjection* s
   else
   {
     p.Kind = KindOf(self->GetProjection());
-    // (a NaN centre was named as "longitude nan has no UTM zone", not as the setting)
-    for (const auto& [name, value] :
-      { std::pair<const char*, double>{ "CentralLongitude", self->GetCentralLongitude() },
-        std::pair<const char*, double>{ "CentralLatitude", self->GetCentralLatitude() } })
+    // (a NaN centre was named as "longitude nan has no UTM zone", not as the setting; 1e20 was
+    // taken, and every x came out 0)
+    for (const auto& [name, value, limit] :
+      { std::make_tuple("CentralLongitude", self->GetCentralLongitude(), 360.0),
+        std::make_tuple("CentralLatitude", self->GetCentralLatitude(), 90.0) })
     {
-      if (!std::isfinite(value))
+      if (!(std::fabs(value) <= limit))
       {
         throw tessera::InputError(std::string(name) + " is " + tessera::NumberText(value) +
-          " (ParametersFromData is off, so the projection takes the parameters set)");
+          ", not in [-" + tessera::NumberText(limit) + ", " + tessera::NumberText(limit) +
+          "] (ParametersFromData is off, so the projection takes the parameters set)");
       }
     }
     p.CentralLongitude = self->GetCentralLongitude();

@@ -11,6 +11,7 @@
 #include <random>
 
 using namespace tessera;
+using tessera_test::ErrorOf;
 using tessera_test::ShoelaceArea;
 
 namespace
@@ -368,6 +369,20 @@ TEST(Geo, NonFiniteValuesAreErrorsOrSafe)
   p.Kind = tessera::ProjectionKind::AlbersEqualArea;
   p.CentralLongitude = std::nan("");
   EXPECT_THROW(tessera::GeographicProjection{ p }, tessera::InputError);
+  // Finite but no longitude or latitude (1e20 gave every x 0; a lat0 of 100 was taken where the
+  // projection does not use it, and written into its record).
+  p.CentralLongitude = 1e20;
+  EXPECT_EQ(ErrorOf([&] { tessera::GeographicProjection{ p }; }),
+    "projection parameter lon0 = 1e+20 is not a longitude in [-360, 360]");
+  p.CentralLongitude = -105.0;
+  p.CentralLatitude = 100.0;
+  for (const auto kind : { tessera::ProjectionKind::AlbersEqualArea, tessera::ProjectionKind::UTM })
+  {
+    p.Kind = kind;
+    p.UTMZone = 13;
+    EXPECT_EQ(ErrorOf([&] { tessera::GeographicProjection{ p }; }),
+      "projection parameter lat0 = 100 is not a latitude in [-90, 90]");
+  }
 }
 
 // Found by a C++ user's review: FromString took lon0=nan, lat1=inf and zone=1e20 (cast to

@@ -397,7 +397,13 @@ def test_a_projection_or_zone_that_is_no_choice_is_named():
                              "UTMZone -1 is neither a zone from 1 to 60 nor 0"),
                             # (a NaN centre was named "longitude nan has no UTM zone")
                             (lambda f: (f.SetProjectionToTransverseMercator(), f.ParametersFromDataOff(),
-                                        f.SetCentralLongitude(math.nan)), "CentralLongitude is nan")]:
+                                        f.SetCentralLongitude(math.nan)), "CentralLongitude is nan"),
+                            # (1e20 was taken, and every x came out 0; a latitude of 100 was taken
+                            # where unused, and written into the record)
+                            (lambda f: (f.SetProjectionToTransverseMercator(), f.ParametersFromDataOff(),
+                                        f.SetCentralLongitude(1e20)), "CentralLongitude is 1e+20, not in [-360, 360]"),
+                            (lambda f: (f.SetProjectionToAlbersEqualArea(), f.ParametersFromDataOff(),
+                                        f.SetCentralLatitude(100)), "CentralLatitude is 100, not in [-90, 90]")]:
         f = vtkGeographicProjection()
         errors = messages_of(f)
         setup(f)
