@@ -1379,10 +1379,7 @@ def main(argv=None):
     tag = steps.tag(step)
     per_gauge = tiles_by_gauge(tiles)
     write_weights(per_gauge, gauges, os.path.join(args.out, f"weights_{tag}.csv"))
-    writer = vtkXMLPolyDataWriter()
-    writer.SetFileName(os.path.join(args.out, f"tiles_{tag}.vtp"))
-    writer.SetInputData(tiles)
-    writer.Write()
+    csv_input.write_vtk(vtkXMLPolyDataWriter(), tiles, os.path.join(args.out, f"tiles_{tag}.vtp"))
 
     used, weighted, mean = next(r[-3:] for r in rows if tuple(r[:-3]) == step)
     if not args.no_plots:
@@ -1409,4 +1406,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    csv_input.run(main)

@@ -260,6 +260,33 @@ def output_directory(path):
         fail(f"--out {path}: cannot create the directory ({error.strerror or error})")
 
 
+def write_vtk(writer, data, path):
+    """Writes data with the VTK writer to path; ends the script naming the file and why when it
+    cannot be written (a directory of that name, no permission, a full disk): VTK's writers log
+    such an error and go on, and the script said it wrote the file."""
+    errors = []
+    catch_vtk_messages(writer, errors.append)
+    writer.SetFileName(path)
+    writer.SetInputData(data)
+    writer.Write()
+    if errors or writer.GetErrorCode():
+        reason = ("a directory of that name exists" if os.path.isdir(path)
+                  else errors[0] if errors else f"VTK error code {writer.GetErrorCode()}")
+        fail(f"{path}: cannot write ({reason})")
+
+
+def run(main):
+    """Runs a script's main(); an OSError about a file that it did not expect (an output path that
+    is a directory, no permission, a full disk) ends the script with one line naming the file and
+    why, not a traceback after the work is done."""
+    try:
+        main()
+    except OSError as error:
+        if error.filename is None:
+            raise
+        fail(f"{error.filename}: {error.strerror or error}")
+
+
 def import_tessera():
     """The tessera package; ends the script with how to run it when Python cannot find it."""
     try:

@@ -111,10 +111,7 @@ def main(argv=None):
     if projected.GetNumberOfPoints() != gauges.GetNumberOfPoints():
         csv_input.fail("the projection failed and gave no message")
 
-    writer = vtkXMLPolyDataWriter()
-    writer.SetFileName(os.path.join(args.out, "gauges_projected.vtp"))
-    writer.SetInputData(projected)
-    writer.Write()
+    csv_input.write_vtk(vtkXMLPolyDataWriter(), projected, os.path.join(args.out, "gauges_projected.vtp"))
     ids = projected.GetPointData().GetAbstractArray("StationId")
     names = projected.GetPointData().GetAbstractArray("Name")
     with open(os.path.join(args.out, "gauges_projected.csv"), "w", newline="") as f:
@@ -130,4 +127,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    csv_input.run(main)

@@ -18,6 +18,7 @@ Run with Debian's /usr/bin/python3 and PYTHONPATH=build/python.
 
 import argparse
 import os
+import re
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -49,6 +50,40 @@ def read_quakes(path):
     return data, lines
 
 
+def image_size(text):
+    """--image-size's value: an int the filter's setter takes (it raised OverflowError beyond)."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number of pixels")
+    if not -2**31 <= value < 2**31:
+        raise argparse.ArgumentTypeError(f"{text} pixels is out of range (the largest image is 2048)")
+    return value
+
+
+# The filter's errors about a setting begin with its name in words: the option that sets it.
+OPTION_OF_SETTING = {"basis width": "--width", "image size": "--image-size", "curve sigma": "--curve-sigma",
+                     "minimum contour length": "--minimum-contour-length"}
+
+
+def grouping_error(text):
+    """The grouping filter's error as one line, naming the script's option for a bad setting."""
+    for setting, option in OPTION_OF_SETTING.items():
+        if text.startswith(setting + " "):
+            return f"{option}: {text}"
+    return f"ridge grouping failed: {text}"
+
+
+def with_lines(text, path, lines):
+    """A warning that lists points by id ("point(s) 69, 397"), with their lines in the file."""
+    def lines_of(match):
+        ids = [int(k) for k in re.findall(r"\d+", match.group(1))]
+        if not ids or max(ids) >= len(lines):
+            return match.group(0)
+        return f"{match.group(0)} (line(s) {', '.join(str(lines[k]) for k in ids)} of {path})"
+    return re.sub(r"point\(s\) (\d+(?:, \d+)*)", lines_of, text)
+
+
 def polylines(data):
     lines = []
     for c in range(data.GetNumberOfCells()):
@@ -64,16 +99,18 @@ def main(argv=None):
     parser.add_argument("--out", default="out", help="output directory (created if missing)")
     # (why the example's settings differ from the filter's defaults)
     parser.add_argument("--width", type=float, default=4.0,
-                        help="basis width in pixels (the filter's default is 5, which merges the southern half of "
-                             "the trench with the cluster north of it; 4 gives it a group of its own)")
-    parser.add_argument("--image-size", type=int, default=0, help="pixels along the longer side (0 = automatic)")
+                        help="basis width in pixels, at most 1020 (default %(default)s; the filter's is 5, which "
+                             "merges the southern half of the trench with the cluster north of it; 4 gives it a "
+                             "group of its own)")
+    parser.add_argument("--image-size", type=image_size, default=0,
+                        help="pixels along the longer side, 15 to 2048, or 0 for automatic (default %(default)s)")
     parser.add_argument("--curve-sigma", type=float, default=0.1,
-                        help="RaG curve smoothness (node units: a share of each curve's length; 0.1 draws the "
-                             "arcs' course through the scattered epicentres, where the filter's default, the "
-                             "paper's 0.04, follows more of their scatter)")
+                        help="RaG curve smoothness (node units: a share of each curve's length; default "
+                             "%(default)s, which draws the arcs' course through the scattered epicentres, where "
+                             "the filter's default, the paper's 0.04, follows more of their scatter)")
     parser.add_argument("--minimum-contour-length", type=float, default=15.0,
-                        help="pixels (the filter's default is 10; 15 leaves out the shorter ridges of scattered "
-                             "events)")
+                        help="pixels (default %(default)s; the filter's is 10; 15 leaves out the shorter ridges "
+                             "of scattered events)")
     parser.add_argument("--gaussian", action="store_true", help="Gaussian basis instead of inverse multiquadric")
     parser.add_argument("--closest-tangent", action="store_true", help="closest-tangent join rule")
     args = parser.parse_args(argv)
@@ -103,8 +140,9 @@ def main(argv=None):
     if projection.GetOutput().GetNumberOfPoints() != quakes.GetNumberOfPoints():
         csv_input.fail(f"{args.quakes}: the projection of the epicentres failed and gave no message")
     grouping = vtkRidgeGrouping()
-    csv_input.catch_vtk_messages(grouping, lambda text: errors.append(f"ridge grouping failed: {text}"),
-                                 lambda text: print(f"warning: {text}", file=sys.stderr))
+    csv_input.catch_vtk_messages(grouping, lambda text: errors.append(grouping_error(text)),
+                                 lambda text: print(f"warning: {with_lines(text, args.quakes, lines)}",
+                                                    file=sys.stderr))
     grouping.SetInputConnection(projection.GetOutputPort())
     grouping.SetWidth(args.width)
     grouping.SetImageSize(args.image_size)
@@ -122,14 +160,9 @@ def main(argv=None):
         csv_input.fail("ridge grouping failed and gave no message")
 
     for port, name in ((0, "fiji_points.vtp"), (1, "fiji_contours.vtp"), (2, "fiji_curves.vtp")):
-        writer = vtkXMLPolyDataWriter()
-        writer.SetFileName(os.path.join(args.out, name))
-        writer.SetInputData(grouping.GetOutputDataObject(port))
-        writer.Write()
-    image_writer = vtkXMLImageDataWriter()
-    image_writer.SetFileName(os.path.join(args.out, "fiji_field.vti"))
-    image_writer.SetInputData(grouping.GetOutputDataObject(3))
-    image_writer.Write()
+        csv_input.write_vtk(vtkXMLPolyDataWriter(), grouping.GetOutputDataObject(port), os.path.join(args.out, name))
+    csv_input.write_vtk(vtkXMLImageDataWriter(), grouping.GetOutputDataObject(3),
+                        os.path.join(args.out, "fiji_field.vti"))
 
     groups = points.GetPointData().GetArray("GroupId")
     ids = [groups.GetValue(i) for i in range(points.GetNumberOfPoints())]
@@ -168,4 +201,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    main()
+    csv_input.run(main)

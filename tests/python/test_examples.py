@@ -1483,6 +1483,12 @@ def test_the_other_examples_run_on_their_data():
         found = {groups.GetValue(i) for i in range(points.GetNumberOfPoints())} - {-1}
         assert_that(len(found) >= 2, f"the epicentres fall into {len(found)} group(s)")
         assert_that(is_png(os.path.join(out, "fiji_groups.png")), "fiji_groups.png is not a PNG file")
+        # A warning that lists epicentres by id gives their lines too (the file has a header and
+        # no blank line: epicentre k is on line k + 2).
+        far = re.search(r"point\(s\) ([\d, ]+) \(line\(s\) ([\d, ]+) of ([^)]+)\)", stderr)
+        assert_that(far is not None and far.group(3) == os.path.join(EXAMPLE_DATA, "fiji_quakes.csv")
+                    and [int(k) + 2 for k in far.group(1).split(", ")] == [int(k) for k in far.group(2).split(", ")],
+                    f"the far epicentres' lines: {stderr}")
         quakes = os.path.join(out, "quakes.csv")
         with open(quakes, "w") as f:
             f.write("lat,lon\n1,2\n")
@@ -1496,17 +1502,43 @@ def test_the_other_examples_run_on_their_data():
         for extra, expected in (
                 (("--quakes", north), f"{north}:4: epicentre at (181, 95) has a latitude beyond 90 degrees"),
                 (("--quakes", empty), f"{empty}: no epicentres to group (the file has no rows)"),
-                (("--quakes", two, "--image-size", "100000"), "ridge grouping failed: image size 100000 exceeds")):
+                (("--quakes", two, "--image-size", "100000"), "--image-size: image size 100000 exceeds"),
+                (("--quakes", two, "--width", "0"), "--width: basis width 0 is not a positive number")):
             status, _, stderr = run_example("ridge_grouping.py", "--out", os.path.join(out, "bad"), *extra)
             what = f"ridge_grouping.py {extra}"
             assert_without_vtk_decoration(stderr, what)  # (a VTK log line names vtkRidgeGrouping.cxx)
             lines = stderr.strip().splitlines()
             assert_that(status == 1 and len(lines) == 1 and lines[0].startswith(expected),
                         f"{what}: expected one line starting {expected!r}, got {lines}")
+        # (beyond an int it was an OverflowError's traceback)
+        status, _, stderr = run_example("ridge_grouping.py", "--out", out, "--image-size", "99999999999")
+        assert_that(status == 2 and stderr.strip().endswith(
+            "argument --image-size: 99999999999 pixels is out of range (the largest image is 2048)"), stderr)
         status, _, stderr = run_example("ridge_grouping.py", "--out", os.path.join(out, "two"), "--quakes", two)
         assert_without_vtk_decoration(stderr, "ridge_grouping.py's warning")
         assert_that(status == 0 and stderr.strip().startswith("warning: no ridge contour reaches"),
                     f"a warning as a line of its own: {stderr}")
+
+
+def test_outputs_that_cannot_be_written_are_named():
+    # From an error audit: a directory where an output file goes. VTK's writers logged an error
+    # and the scripts said they wrote the file, exit status 0; a CSV there was a traceback.
+    with tempfile.TemporaryDirectory() as out:
+        cases = [(("colorado_areal_precipitation.py", "--no-plots"), "tiles_1963_08.vtp",
+                  "cannot write (a directory of that name exists)"),
+                 (("colorado_areal_precipitation.py", "--no-plots"), "areal_mean.csv", "Is a directory"),
+                 (("ridge_grouping.py",), "fiji_field.vti", "cannot write (a directory of that name exists)"),
+                 (("project_gauges.py",), "gauges_projected.vtp", "cannot write (a directory of that name exists)"),
+                 (("project_gauges.py",), "gauges_projected.csv", "Is a directory")]
+        for k, (command, name, reason) in enumerate(cases):
+            target = os.path.join(out, str(k))
+            os.makedirs(os.path.join(target, name))
+            status, _, stderr = run_example(command[0], "--out", target, *command[1:])
+            assert_without_vtk_decoration(stderr, f"{command} {name}")
+            last = stderr.strip().splitlines()[-1]
+            assert_that(status == 1 and last == f"{os.path.join(target, name)}: {reason}" and "Traceback" not in stderr,
+                        f"{command} with a directory {name}: status {status}, {stderr}")
+
 
 
 def test_ridge_grouping_names_a_bad_epicentre_alone():
@@ -1718,6 +1750,7 @@ def test_without_tessera_on_the_path_the_scripts_say_how_to_run():
 
 if __name__ == "__main__":
     run([test_the_colorado_main_job, test_missing_values_keep_their_months, test_bad_files_are_named,
+         test_outputs_that_cannot_be_written_are_named,
          test_the_map_of_another_place_with_a_lake,
          test_a_lake_touching_the_outline_and_catchments_of_several_features,
          test_each_group_of_features_gets_its_means,
