@@ -979,8 +979,10 @@ std::vector<std::int32_t> GroupByPlace(const std::vector<Point2>& xy, double met
 
 [[noreturn]] void ThrowInvalidLonLat(const std::string& what, const Point2& p)
 {
+  // (metres say what is wrong themselves; a typo is told which coordinate is out of range)
+  const std::string note = ProjectedCoordinatesNote(p);
   throw InputError(what + " has an invalid longitude/latitude (" + NumberText(p.x) + ", " +
-    NumberText(p.y) + ")" + ProjectedCoordinatesNote(p));
+    NumberText(p.y) + ")" + (note.empty() ? ": " + LonLatFault(p) : note));
 }
 
 /// An edge that reads two ways round the globe (EdgeReadsBothWays) makes two different

@@ -242,22 +242,28 @@ bool InLonLatRange(const Point2& p)
   return std::abs(p.y) <= 90.0 && std::abs(p.x) <= 360.0;
 }
 
+std::string LonLatFault(const Point2& p)
+{
+  if (!std::isfinite(p.x) || !std::isfinite(p.y))
+  {
+    return "a NaN or infinite coordinate";
+  }
+  if (std::abs(p.y) > 90.0)
+  {
+    return "a latitude beyond 90 degrees";
+  }
+  return std::abs(p.x) > 360.0 ? "a longitude beyond 360 degrees" : std::string();
+}
+
 void ValidateLonLat(const std::vector<Point2>& lonlat)
 {
   for (std::size_t i = 0; i < lonlat.size(); ++i)
   {
-    const Point2& p = lonlat[i];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+    const std::string fault = LonLatFault(lonlat[i]);
+    if (!fault.empty())
     {
-      throw InputError(
-        DescribePoint("point", static_cast<long long>(i), p) + " has a NaN or infinite coordinate");
-    }
-    if (!InLonLatRange(p))
-    {
-      throw InputError(DescribePoint("point", static_cast<long long>(i), p) +
-        (std::abs(p.y) > 90.0 ? " has a latitude beyond 90 degrees"
-                              : " has a longitude beyond 360 degrees") +
-        ProjectedCoordinatesNote(p));
+      throw InputError(DescribePoint("point", static_cast<long long>(i), lonlat[i]) + " has " +
+        fault + ProjectedCoordinatesNote(lonlat[i]));
     }
   }
 }

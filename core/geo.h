@@ -66,6 +66,9 @@ struct GeographicExtent
 /// NaN). Wider longitudes are typos (-1031.5 for -103.15): a gauge would wrap round the globe, a
 /// catchment span some 10^6 km^2, and one of 1e20 has no digit left below a turn of the globe.
 bool InLonLatRange(const Point2& p);
+/// What is wrong with p as a longitude/latitude: "a NaN or infinite coordinate", "a latitude
+/// beyond 90 degrees" or "a longitude beyond 360 degrees"; empty when it is InLonLatRange.
+std::string LonLatFault(const Point2& p);
 /// Throws InputError naming the first point with a NaN/Inf coordinate or out of InLonLatRange.
 void ValidateLonLat(const std::vector<Point2>& lonlat);
 

@@ -816,7 +816,16 @@ TEST(ArealAverage, BadInputIsNamed)
   const auto errorOf = [&](const std::vector<Point2>& gauges, const std::vector<Point2>& ring)
   { return ErrorOf([&] { ThiessenArealAverage average(gauges, catchment.Offsets, ring); }); };
   const std::string typo = errorOf({ { 0.2, 0.2 }, { -1031.5, 0.5 } }, catchment.Ring);
-  EXPECT_NE(typo.find("gauge 1"), std::string::npos) << typo;
+  EXPECT_NE(
+    typo.find("gauge 1 has an invalid longitude/latitude (-1031.5, 0.5): a longitude beyond "
+              "360 degrees"),
+    std::string::npos)
+    << typo;
+  const std::string north = errorOf({ { 0.2, 0.2 }, { 0.5, 95.0 } }, catchment.Ring);
+  EXPECT_NE(north.find("gauge 1 has an invalid longitude/latitude (0.5, 95): a latitude beyond 90 "
+                       "degrees"),
+    std::string::npos)
+    << north;
   // Metres of a projection (UTM) fed as degrees are named as such; a typo is not.
   EXPECT_EQ(typo.find("projected"), std::string::npos) << typo;
   const std::string utm = errorOf({ { 500000.0, 4400000.0 } }, catchment.Ring);

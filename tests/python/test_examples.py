@@ -1336,7 +1336,7 @@ def test_the_filters_errors_name_the_file_and_line():
         header_only = write(out, "header_only.csv", "station_id,year,month,precip\n")
         cases = [
             (("--stations", bad_gauge),
-             f"{bad_gauge}:5: station 004 has an invalid longitude/latitude (-0.5, 95)"),
+             f"{bad_gauge}:5: station 004 has an invalid longitude/latitude (-0.5, 95): a latitude beyond 90 degrees"),
             (("--catchment", bow_tie),
              f"{bow_tie}: ring 0 is self-intersecting: segment 0 and segment 2 touch or cross"),
             (("--catchment", metres),
