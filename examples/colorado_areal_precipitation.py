@@ -531,6 +531,55 @@ def zip_member(path):
                    f"to read: {shown or 'no files'}; unzip it and give the file")
 
 
+class GdalMessages:
+    """GDAL's messages (parse errors, "Non closed ring detected") as lines to read, where GDAL
+    prints them to stderr as "ERROR 1: ..." beside the script's own one-line errors: CPL_LOG, set
+    before GDAL's first message, sends them to a temporary file (unless the user set it)."""
+
+    def __init__(self):
+        import atexit
+        import tempfile
+
+        self.path = None
+        if "CPL_LOG" not in os.environ:
+            handle, self.path = tempfile.mkstemp(prefix="tessera_gdal_", suffix=".log")
+            os.close(handle)
+            os.environ["CPL_LOG"] = self.path
+            atexit.register(os.remove, self.path)
+        self.seen = self.size()
+
+    def size(self):
+        return os.path.getsize(self.path) if self.path and os.path.exists(self.path) else 0
+
+    def new(self):
+        """The messages since the last call, each once, without GDAL's "ERROR 1: " prefixes."""
+        if not self.path:
+            return []
+        with open(self.path, errors="replace") as f:
+            f.seek(self.seen)
+            text = f.read()
+        self.seen += len(text.encode(errors="replace"))
+        lines = [re.sub(r"^(ERROR|Warning) \d+: ", "", line).strip() for line in text.splitlines()]
+        return list(dict.fromkeys(line for line in lines if line))
+
+
+def cell_kinds(data):
+    """What the cells of data's polydata blocks are, for a file that holds no polygon: "3 point(s),
+    1 line(s)"."""
+    from vtkmodules.vtkCommonDataModel import VTK_LINE, VTK_POLY_LINE, VTK_POLY_VERTEX, VTK_VERTEX
+
+    counts = {"point": 0, "line": 0, "other cell": 0}
+    for block in polydata_blocks(data):
+        for c in range(block.GetNumberOfCells()):
+            kind = block.GetCellType(c)
+            counts["point" if kind in (VTK_VERTEX, VTK_POLY_VERTEX) else
+                   "line" if kind in (VTK_LINE, VTK_POLY_LINE) else "other cell"] += 1
+    return ", ".join(f"{n} {kind}(s)" for kind, n in counts.items() if n) or "nothing"
+
+
+GDAL_MESSAGES = None
+
+
 def read_catchment(path, feature=None):
     """The catchment (a vtkGDALVectorReader's output: a multiblock with a block per feature, or the
     features chosen by `feature`, "ATTRIBUTE=VALUE") and its rings (catchment_rings); ends the
@@ -551,6 +600,8 @@ def read_catchment(path, feature=None):
         if not any(os.path.isfile(stem + e) for e in (".shx", ".SHX")):
             csv_input.fail(f"{path}: the shapefile's {stem}.shx beside it is missing (a shapefile is a .shp "
                            "with its .shx, .dbf and often .prj; copy them all)")
+    global GDAL_MESSAGES
+    GDAL_MESSAGES = GDAL_MESSAGES or GdalMessages()
     reader = vtkGDALVectorReader()
     errors = []
     reader.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: errors.append(event))
@@ -558,11 +609,18 @@ def read_catchment(path, feature=None):
     reader.Update()
     output = reader.GetOutput()
     rings = catchment_rings(output) if output else []
+    gdal = GDAL_MESSAGES.new()
     if errors or not rings:
+        if gdal:
+            csv_input.fail(f"{path}: GDAL cannot read the catchment file: {gdal[0]}")
         csv_input.fail(f"{path}: VTK's GDAL reader (vtkGDALVectorReader) found no polygon in the "
-                       "catchment file (expected a GeoJSON or shapefile polygon in lon/lat; "
-                       "polygons with measures, such as PolygonM or PolygonZM shapefiles, read as "
-                       "empty: drop the measures first, e.g. with ogr2ogr -dim XY)")
+                       f"catchment file, only {cell_kinds(output) if output else 'nothing'} (expected a "
+                       "GeoJSON or shapefile polygon in lon/lat; polygons with measures, such as PolygonM "
+                       "or PolygonZM shapefiles, read as empty: drop the measures first, e.g. with "
+                       "ogr2ogr -dim XY)")
+    for message in gdal:
+        if not message.startswith("Non closed ring detected"):  # (the filter names such a ring)
+            print(f"{path}: GDAL: {message}", file=sys.stderr)
     if feature is not None:
         output = select_features(output, feature, path)
         rings = catchment_rings(output)

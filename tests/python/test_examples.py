@@ -1334,7 +1334,20 @@ def test_the_filters_errors_name_the_file_and_line():
         metres = polygon("metres.geojson", [[500000, 4100000], [800000, 4100000], [800000, 4500000],
                                             [500000, 4500000], [500000, 4100000]])
         header_only = write(out, "header_only.csv", "station_id,year,month,precip\n")
+        # GDAL's own lines ("ERROR 1: ...", "Warning 1: Non closed ring detected") went to stderr
+        # beside the script's, and a file of points or lines was only "found no polygon".
+        square = [[175.5, -39.2], [176.5, -39.2], [176.5, -38.4], [175.5, -38.4]]
+        cut_short = write(out, "cut_short.geojson", json.dumps({"type": "Polygon", "coordinates": [square]})[:-3])
+        unclosed = polygon("unclosed.geojson", square)
+        points_and_lines = write(out, "points.geojson", json.dumps({"type": "FeatureCollection", "features": [
+            {"type": "Feature", "properties": {}, "geometry": {"type": "Point", "coordinates": square[0]}},
+            {"type": "Feature", "properties": {}, "geometry": {"type": "LineString", "coordinates": square}}]}))
         cases = [
+            (("--catchment", cut_short), f"{cut_short}: GDAL cannot read the catchment file: At line 1, character"),
+            (("--catchment", unclosed), f"{unclosed}: the window/catchment input (vtkMultiBlockDataSet) holds no "
+                                        "polygon"),
+            (("--catchment", points_and_lines), f"{points_and_lines}: VTK's GDAL reader (vtkGDALVectorReader) found "
+                                                "no polygon in the catchment file, only 1 point(s), 1 line(s)"),
             (("--stations", bad_gauge),
              f"{bad_gauge}:5: station 004 has an invalid longitude/latitude (-0.5, 95): a latitude beyond 90 degrees"),
             (("--catchment", bow_tie),
