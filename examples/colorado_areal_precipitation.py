@@ -563,6 +563,53 @@ class GdalMessages:
         return list(dict.fromkeys(line for line in lines if line))
 
 
+def side_of_ring(point, ring):
+    """1 inside the ring (even-odd), -1 outside, 0 on its boundary."""
+    x, y = point
+    inside = False
+    for (ax, ay), (bx, by) in zip(ring, ring[1:] + ring[:1]):
+        cross = (bx - ax) * (y - ay) - (by - ay) * (x - ax)
+        if cross == 0 and min(ax, bx) <= x <= max(ax, bx) and min(ay, by) <= y <= max(ay, by):
+            return 0
+        if (ay > y) != (by > y) and x < ax + (y - ay) * (bx - ax) / (by - ay):
+            inside = not inside
+    return 1 if inside else -1
+
+
+def holes_outside_their_polygons(path):
+    """For a GeoJSON file: (feature, ring) of each hole (a polygon's ring after its first, counted
+    over the feature's polygons) with vertices outside its polygon's outer ring and none inside it.
+    The even-odd rule takes such a ring as an island, adding its area, where the file means a hole
+    (a hole that crosses its outline is named by the filter). Empty for other files."""
+    import json
+
+    if os.path.splitext(path)[1].lower() not in (".geojson", ".json"):
+        return []
+    try:
+        with open(path, encoding="utf-8-sig") as f:
+            document = json.load(f)
+    except (OSError, ValueError):
+        return []  # (GDAL's reading says what is wrong)
+    features = document.get("features", [document]) if isinstance(document, dict) else []
+    found = []
+    for k, feature in enumerate(features):
+        geometry = feature.get("geometry", feature) if isinstance(feature, dict) else None
+        if not isinstance(geometry, dict):
+            continue
+        kind, coordinates = geometry.get("type"), geometry.get("coordinates") or []
+        polygons = [coordinates] if kind == "Polygon" else coordinates if kind == "MultiPolygon" else []
+        ring_number = 0
+        for polygon in polygons:
+            outer = [tuple(p[:2]) for p in polygon[0]] if polygon else []
+            for hole in polygon[1:]:
+                ring_number += 1
+                sides = {side_of_ring(tuple(p[:2]), outer) for p in hole}
+                if -1 in sides and 1 not in sides:
+                    found.append((k, ring_number))
+            ring_number += 1 if polygon else 0
+    return found
+
+
 def cell_kinds(data):
     """What the cells of data's polydata blocks are, for a file that holds no polygon: "3 point(s),
     1 line(s)"."""
@@ -621,6 +668,10 @@ def read_catchment(path, feature=None):
     for message in gdal:
         if not message.startswith("Non closed ring detected"):  # (the filter names such a ring)
             print(f"{path}: GDAL: {message}", file=sys.stderr)
+    for k, ring in holes_outside_their_polygons(path):
+        print(f"{path}: feature {k} ring {ring} is a hole (a polygon's ring after its first) but lies outside "
+              "its polygon's outer ring: the even-odd rule takes it as an island, adding its area (GeoJSON's "
+              "holes lie inside their polygon; counted from 0)", file=sys.stderr)
     if feature is not None:
         output = select_features(output, feature, path)
         rings = catchment_rings(output)

@@ -1553,6 +1553,33 @@ def test_outputs_that_cannot_be_written_are_named():
                         f"{command} with a directory {name}: status {status}, {stderr}")
 
 
+def test_a_hole_outside_its_polygon_is_named():
+    # From an error audit: a GeoJSON hole that lies outside its polygon's outer ring is an island by
+    # the even-odd rule: the catchment grew by its area without a word. Named now (feature, ring),
+    # with the MultiPolygon's rings counted over its polygons; a hole inside and one that touches
+    # its outline from inside are not named.
+    import copy
+    import json
+
+    with tempfile.TemporaryDirectory() as out:
+        catchment, stations, observations = write_lake_basin(out)
+        basin = copy.deepcopy(LAKE_BASIN)
+        outer, lake = basin["features"][0]["geometry"]["coordinates"]
+        outside = [[x + 1.0, y] for x, y in lake]
+        touching = [[175.5, -39.0], [175.7, -39.0], [175.7, -38.9], [175.5, -39.0]]  # (touches at a vertex)
+        basin["features"][0]["geometry"]["coordinates"] = [outer, lake, touching]
+        basin["features"].append({"type": "Feature", "properties": {}, "geometry": {"type": "MultiPolygon", "coordinates": [
+            [[[x + 2.0, y] for x, y in outer]], [[[x + 4.0, y] for x, y in outer], [[x + 4.0, y] for x, y in lake], outside]]}})
+        path = write(out, "holes.geojson", json.dumps(basin))
+        _, stderr = run_colorado(out, catchment=path, stations=stations, observations=observations, plots=False)
+        named = [line for line in stderr.splitlines() if "is a hole (a polygon" in line]
+        expected = (f"{path}: feature 1 ring 3 is a hole (a polygon's ring after its first) but lies outside its "
+                    "polygon's outer ring: the even-odd rule takes it as an island, adding its area")
+        assert_that(len(named) == 1 and named[0].startswith(expected), f"{named}")
+        _, stderr = run_colorado(out, catchment=catchment, stations=stations, observations=observations, plots=False)
+        assert_that("is a hole (a polygon" not in stderr, stderr)
+
+
 
 def test_ridge_grouping_names_a_bad_epicentre_alone():
     # An epicentre the projection rejects ends the run with the one line naming it, whether the
@@ -1763,7 +1790,7 @@ def test_without_tessera_on_the_path_the_scripts_say_how_to_run():
 
 if __name__ == "__main__":
     run([test_the_colorado_main_job, test_missing_values_keep_their_months, test_bad_files_are_named,
-         test_outputs_that_cannot_be_written_are_named,
+         test_outputs_that_cannot_be_written_are_named, test_a_hole_outside_its_polygon_is_named,
          test_the_map_of_another_place_with_a_lake,
          test_a_lake_touching_the_outline_and_catchments_of_several_features,
          test_each_group_of_features_gets_its_means,
