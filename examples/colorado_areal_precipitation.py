@@ -128,6 +128,13 @@ class Steps:
         """2001_03, 2001_03_01 or 2001_03_01_06, for file names."""
         return "_".join(Steps.digits(step))
 
+    def count(self, first, last):
+        """The number of steps from first to last, both included (between's length, not made)."""
+        if self.fields == 2:
+            return 12 * (last[0] - first[0]) + last[1] - first[1] + 1
+        start, end = datetime.datetime(*first), datetime.datetime(*last)
+        return (end - start) // (datetime.timedelta(days=1) if self.fields == 3 else datetime.timedelta(hours=1)) + 1
+
     def between(self, first, last):
         """Every step from first to last, both included."""
         if self.fields == 2:
@@ -369,6 +376,12 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
               "earlier one is used, and a repeat's value fills an earlier empty cell", file=sys.stderr)
 
 
+# The most steps (months, days or hours) from the first observation's to the last's: every step
+# between is a row of areal_mean.csv, and a million hours took 0.9 GB (a mistyped year of 1900
+# in a 2020 record of hours made 1,051,896 empty hours without a word but a count).
+MOST_STEPS = 2_000_000
+
+
 def read_observations(path, gauge_of, filler, stations_path, missing_values=(), station_ids=()):
     """The observations (a long or a wide file, observation_records) as a long-format vtkTable
     (station_id, time, precip), its steps (Steps: months, days or hours), the set of reporting
@@ -495,15 +508,26 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     # areal_mean.csv has every month (or day, or hour), empty where nothing was measured.
     if every_step and gauge_of:
         first, last = min(every_step), max(every_step)
+        # (the lines of the first and the last step: a mistyped year there makes the span)
+        read_steps = list(step_index)
+        line_of = {}
+        for row, k in enumerate(read):
+            line_of.setdefault(step_of[read_steps[k]], lines[row])
+        span = (f"between {steps.text(first)} (line {line_of[first]}) and {steps.text(last)} "
+                f"(line {line_of[last]})")
+        count = steps.count(first, last)
+        if count > MOST_STEPS:
+            csv_input.fail(f"{path}: the observations span {count} {steps.unit}s {span}, more than "
+                           f"{MOST_STEPS} (each a row of areal_mean.csv, and some 1 GB of memory a "
+                           f"million); is a date mistyped?")
         gaps = [step for step in steps.between(first, last) if step not in present]
         for step in gaps:  # (a gauge's id: the step is a step of the filter)
             stations.InsertNextValue(filler)
             times.InsertNextValue(steps.time(step))
             values.InsertNextValue(math.nan)
         if gaps:
-            print(f"{path}: {len(gaps)} {steps.unit}(s) between {steps.text(first)} and "
-                  f"{steps.text(last)} have no row of a gauge's station; they are {steps.unit}s "
-                  "where no gauge reported", file=sys.stderr)
+            print(f"{path}: {len(gaps)} {steps.unit}(s) {span} have no row of a gauge's station; they are "
+                  f"{steps.unit}s where no gauge reported", file=sys.stderr)
     table = vtkTable()
     for column in (stations, times, values):
         table.AddColumn(column)
@@ -541,10 +565,11 @@ class GdalMessages:
         import tempfile
 
         self.path = None
-        if "CPL_LOG" not in os.environ:
+        # (not the user's: unset, or a parent's, a script run from one that imported this module)
+        if os.environ.get("CPL_LOG") in (None, os.environ.get("TESSERA_GDAL_LOG")):
             handle, self.path = tempfile.mkstemp(prefix="tessera_gdal_", suffix=".log")
             os.close(handle)
-            os.environ["CPL_LOG"] = self.path
+            os.environ["CPL_LOG"] = os.environ["TESSERA_GDAL_LOG"] = self.path
             atexit.register(os.remove, self.path)
         self.seen = self.size()
 
