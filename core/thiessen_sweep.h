@@ -40,8 +40,14 @@
 //    another: every search circle is nearly that circle and holds every point in its range (2k
 //    points on a circle take 2.7 s, 10k about a minute). A transect with some
 //    scatter is fine (40k points within 1e-3 of a line: 0.07 s; within 1e-7: 0.6 s, ten times
-//    the Green-Sibson engine). Any scale works alike: the sweep runs on coordinates rescaled by a
-//    power of two to a unit-sized window, which changes no decision and no rounding.
+//    the Green-Sibson engine). The same holds wherever long stretches of points lie exactly on
+//    lines or circles (measured at 1e5 points, against the Green-Sibson engine): 20 parallel
+//    slanted survey lines 15 s (over 50 times; jittered by 1e-9 some 15 times), one straight
+//    transect among 1000 scattered gauges some 30 times, 10 concentric rings some 70 times. Long
+//    tiles cost time as well, as every search then meets every strip: points on two horizontal
+//    lines 10 apart 2.6 s (8 times), on one line in a tall window 0.9 s. Any scale works alike: the
+//    sweep runs on coordinates rescaled by a power of two to a unit-sized window, which changes no
+//    decision and no rounding.
 //  - Neighbour records (Fig. 6): every vertex found is stored once and entered in the records of
 //    all its (unprocessed) centroids, so a later polygon uses its known vertices and searches only
 //    the missing ones; a record is dropped when its polygon is completed.
