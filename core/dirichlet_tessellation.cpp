@@ -552,7 +552,9 @@ void DirichletTessellation::InsertIntoTriangulation(std::int32_t id)
 }
 
 // Inserts vertex id unless it is a copy of a vertex (OnVertex, edge leaves that vertex) or its
-// insertion would change a triangle the region does not own (Foreign, nothing changed).
+// insertion would change a triangle the region does not own (Foreign, nothing changed; edge, if
+// set, is a half-edge of the triangle the region owns that holds id on its edge: id was found,
+// but the triangle across that edge is another's or a ghost, a hull edge to split).
 DirichletTessellation::Location DirichletTessellation::InsertInRegion(Region& region,
   std::int32_t id,
   std::int32_t& edge)
@@ -664,8 +666,12 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Region& regi
     const std::int32_t apex = org[base + k2];
     if (apex == Ghost)
     {
+      if (!region.GrowsHull())
+      {
+        return Location::Foreign; // (edge untouched: see InsertInRegion)
+      }
       edge = f;
-      return region.GrowsHull() ? Location::InGhost : Location::Foreign;
+      return Location::InGhost;
     }
     const Point2& c = pts[apex];
     if (!region.Owns(c) || ++steps > region.MaxWalk)

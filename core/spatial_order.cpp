@@ -247,6 +247,61 @@ private:
 };
 } // namespace
 
+namespace
+{
+// A run of more than this many points of one round in one grid cell is sorted along the finest
+// curve (16 levels).
+constexpr std::size_t CrowdedCell = 8;
+
+// The grid is sized for points that fill the box (about 4 cells a point); points on a few lines
+// fill a few cells of it, some 2.5 sqrt(N) points each, left in their random order: the walk
+// between two of them then crossed some sqrt(N) triangles (points on two lines 10 apart: 190
+// million steps for 10^6 points, ten times the build of uniform points; even the finest grid
+// over the whole box left 75 points a cell). Each such run of order[begin, end), which shares
+// one cell, is sorted along the finest curve over the box of its own points: the order is then
+// the coarse curve's from cell to cell and a finer one's within a crowded cell.
+void SortCrowdedCell(const Point2* points, std::int32_t* begin, std::int32_t* end)
+{
+  Box2 box = BoundsOf(&points[*begin], 1);
+  for (const std::int32_t* id = begin; id != end; ++id)
+  {
+    box.Extend(points[*id]);
+  }
+  const CurveIndex fine(box, 16);
+  std::vector<std::pair<std::uint32_t, std::int32_t>> keyed;
+  keyed.reserve(std::size_t(end - begin));
+  for (const std::int32_t* id = begin; id != end; ++id)
+  {
+    keyed.emplace_back(fine(points[*id]), *id);
+  }
+  std::stable_sort(
+    keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (std::size_t k = 0; k < keyed.size(); ++k)
+  {
+    begin[k] = keyed[k].second;
+  }
+}
+
+// Sorts each crowded run of order along a curve of its own; keyOf(k) is the (round, cell) key
+// of order[k].
+template<typename KeyOf>
+void SortCrowdedCells(const Point2* points, std::vector<std::int32_t>& order, const KeyOf& keyOf)
+{
+  std::size_t begin = 0;
+  for (std::size_t k = 1; k <= order.size(); ++k)
+  {
+    if (k == order.size() || keyOf(k) != keyOf(begin))
+    {
+      if (k - begin > CrowdedCell)
+      {
+        SortCrowdedCell(points, order.data() + begin, order.data() + k);
+      }
+      begin = k;
+    }
+  }
+}
+} // namespace
+
 void SortAlongHilbertCurve(const Point2* points, const Box2& box, std::vector<std::int32_t>& ids)
 {
   const CurveIndex index(box, 16);
@@ -262,6 +317,7 @@ void SortAlongHilbertCurve(const Point2* points, const Box2& box, std::vector<st
   {
     ids[k] = keyed[k].second;
   }
+  SortCrowdedCells(points, ids, [&keyed](std::size_t k) { return keyed[k].first; });
 }
 
 Box2 BoundsOfIds(const std::vector<Point2>& points, const std::vector<std::int32_t>& ids)
@@ -350,6 +406,8 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
     {
       order[k] = std::int32_t(packed[k] & idMask);
     }
+    SortCrowdedCells(
+      points.data(), order, [&packed, idBits](std::size_t k) { return packed[k] >> idBits; });
     return order;
   }
   std::vector<KeyedId> items(n);
@@ -362,6 +420,7 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
   {
     order[k] = items[k].Id;
   }
+  SortCrowdedCells(points.data(), order, [&items](std::size_t k) { return items[k].Key; });
   return order;
 }
 

@@ -264,7 +264,15 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first,
       std::int32_t edge = -1;
       std::int32_t& restart = restarts[side].At(pts[id]);
       Location location = this->InsertInRegion(region, id, edge);
-      if (location == Location::Foreign && restart >= 0 && restart != region.LastTriangle)
+      if (location == Location::Foreign && edge >= 0)
+      {
+        // Found, on an edge whose far triangle the region may not change (a hull edge: points
+        // on the hull's lines, as on two parallel lines, all are): deferred at once, and the next
+        // walk starts here. Retried from the cell's restart triangle, each such point walked
+        // there and back (two lines of 10^6 points: 170 million steps, 3.5 s against 0.3).
+        region.LastTriangle = edge / 3;
+      }
+      else if (location == Location::Foreign && restart >= 0 && restart != region.LastTriangle)
       {
         region.LastTriangle = restart;
         location = this->InsertInRegion(region, id, edge);

@@ -1737,6 +1737,24 @@ TEST(DirichletTessellation, TwoRegionBuildOfUniformPointsEqualsSerialInsertion)
   }
 }
 
+// Every point on the hull: two parallel lines (survey lines, transects), where each region
+// defers every point (a hull edge to split), now without walking to its restart cell and back.
+TEST(DirichletTessellation, TwoRegionBuildOfPointsOnTwoLinesEqualsSerialInsertion)
+{
+  std::mt19937_64 random(21);
+  std::uniform_real_distribution<double> along(0.05, 0.95);
+  std::vector<Point2> points(30000);
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    points[k] = { along(random), k % 2 ? 0.9 : 0.1 };
+  }
+  ExpectSameAsStreaming(points);
+  const Tess batch(UnitWindow(), points);
+  // Every point on the hull, no four co-circular: n - 2 real triangles.
+  EXPECT_EQ(HullSize(batch), points.size());
+  EXPECT_EQ(CheckStructure(batch), points.size() - 2);
+}
+
 // Every face degenerate, and lattice points exactly on the seam.
 TEST(DirichletTessellation, TwoRegionBuildOfALatticeEqualsSerialInsertion)
 {
