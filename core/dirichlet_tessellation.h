@@ -88,8 +88,10 @@ public:
   /// Removes an accepted point (the result equals the tessellation built without it; if it had
   /// exact duplicates, the smallest of them takes its place). A duplicate or rejected point is
   /// only marked removed. Throws InputError for an unknown or already removed id. The hole left
-  /// by an interior or hull vertex is re-triangulated in place (O(degree^3), O(1) expected); only
-  /// a removal that leaves the points collinear rebuilds.
+  /// by an interior or hull vertex is re-triangulated in place (O(1) expected): cut into Delaunay
+  /// ears (O(degree^2)), or, for an interior vertex of degree above 64, by a batch build of its
+  /// neighbours (O(degree log degree): the centre of 4000 points on a circle in 6 ms, where ears
+  /// took 4.5 s); only a removal that leaves the points collinear rebuilds.
   void Remove(std::int32_t id);
 
   const Window& GetWindow() const { return this->TheWindow; }
@@ -290,6 +292,10 @@ private:
     std::size_t i,
     std::size_t b,
     std::size_t c) const;
+  bool TriangulateLinkByBuild(const std::vector<std::int32_t>& ring,
+    const std::vector<std::int32_t>& outer,
+    const std::vector<std::int32_t>& slots,
+    std::vector<Ear>& plan) const;
   void ApplyPlan(const std::vector<Ear>& plan, const std::vector<std::int32_t>& slots);
   bool RemoveInteriorVertex(std::int32_t edge);
   bool RemoveHullVertex(std::int32_t edge);
