@@ -3,6 +3,7 @@
 #include "errors.h"
 #include "large_pages.h"
 #include "parallel_chunks.h"
+#include "predicates.h"
 #include "predicates_inline.h"
 #include "spatial_order.h"
 
@@ -1578,6 +1579,86 @@ bool DirichletTessellation::TriangulateLinkByBuild(const std::vector<std::int32_
     plan.push_back({ vertex[0], vertex[1], vertex[2], twins[0], twins[1], twins[2] });
   }
   return true;
+}
+
+std::int32_t DirichletTessellation::NearestPoint(const Point2& q) const
+{
+  if (!std::isfinite(q.x) || !std::isfinite(q.y))
+  {
+    throw InputError(
+      "the query point (" + NumberText(q.x) + ", " + NumberText(q.y) + ") is not finite");
+  }
+  const Point2* const pts = this->Coordinates.data();
+  // (the nearer of two candidates, the smaller id at equal distance)
+  const auto nearer = [&](std::int32_t a, std::int32_t b)
+  {
+    const int c = compare_distance(q, pts[a], pts[b]);
+    return c < 0 || (c == 0 && a < b);
+  };
+  if (!this->IsTwoDimensional())
+  {
+    std::int32_t best = -1;
+    for (const std::int32_t id : this->Collinear)
+    {
+      best = best < 0 || nearer(id, best) ? id : best;
+    }
+    return best;
+  }
+  std::int32_t edge = -1;
+  if (this->Locate(this->Serial, q, edge) == Location::InGhost)
+  {
+    edge = this->Twins[edge]; // (the hull edge's real side)
+  }
+  // Greedy: step to the nearest neighbour while one is strictly nearer (e leaves v).
+  std::int32_t v = this->Origins[edge];
+  for (bool moved = true; moved;)
+  {
+    moved = false;
+    std::int32_t step = -1;
+    for (std::int32_t e = edge;;)
+    {
+      const std::int32_t w = this->Origins[Next(e)];
+      if (w != Ghost && compare_distance(q, pts[w], pts[v]) < 0 &&
+        (step < 0 || nearer(w, this->Origins[Next(step)])))
+      {
+        step = e;
+      }
+      e = this->RingNext(e);
+      if (e == edge)
+      {
+        break;
+      }
+    }
+    if (step >= 0)
+    {
+      v = this->Origins[Next(step)];
+      edge = this->Twins[step]; // (leaves v)
+      moved = true;
+    }
+  }
+  // Points as near as v lie with it on a circle about q that holds no point: a face of the
+  // triangulation, whose points are joined around it; the smallest id among them.
+  std::int32_t best = v;
+  std::vector<std::pair<std::int32_t, std::int32_t>> tied{ { v, edge } };
+  for (std::size_t k = 0; k < tied.size(); ++k)
+  {
+    for (std::int32_t e = tied[k].second;;)
+    {
+      const std::int32_t w = this->Origins[Next(e)];
+      if (w != Ghost && compare_distance(q, pts[w], pts[v]) == 0 &&
+        std::none_of(tied.begin(), tied.end(), [w](const auto& t) { return t.first == w; }))
+      {
+        tied.push_back({ w, this->Twins[e] });
+        best = std::min(best, w);
+      }
+      e = this->RingNext(e);
+      if (e == tied[k].second)
+      {
+        break;
+      }
+    }
+  }
+  return best;
 }
 
 // Writes plan[k] into slots[k] and recycles the slots left over.

@@ -112,6 +112,13 @@ public:
   /// Status throws). O(1) for a non-duplicate once Insert or Remove has been called, else a
   /// binary search among the duplicates.
   std::int32_t DuplicateOf(std::int32_t id) const;
+  /// The accepted point nearest q (any finite point, in the window or not), by exact distance
+  /// comparisons; of points equally near, the smallest id; -1 when no point is accepted. The
+  /// walk of section 2.3 as a query: from q's triangle (found by the walk from the last triangle
+  /// made) to a neighbour nearer q while there is one, which in a Delaunay triangulation ends at
+  /// a nearest point. Throws InputError for a NaN or infinite q. O(walk length): short for q near
+  /// the last point inserted; a scan of the points while they are collinear.
+  std::int32_t NearestPoint(const Point2& q) const;
   /// Rejected (outside the window) ids, ascending.
   std::vector<std::int32_t> RejectedIds() const;
   /// (duplicate id, accepted id it copies) pairs, ascending by duplicate id.

@@ -697,6 +697,66 @@ TEST(DirichletTessellation, RemovingTheCentreOfLargeLinksEqualsNeverInserted)
   }
 }
 
+// The nearest accepted point against brute force (exact distance comparisons, the smallest id of
+// those equally near): uniform points, a lattice (queries at cell centres and lattice points:
+// four-way and two-way ties), duplicates and removed points, queries outside the window, and the
+// collinear and empty cases.
+TEST(DirichletTessellation, NearestPointIsTheBruteForceNearest)
+{
+  const auto bruteForce = [](const Tess& t, const Point2& q)
+  {
+    std::int32_t best = -1;
+    for (std::int32_t id = 0; id < std::int32_t(t.PointCount()); ++id)
+    {
+      if (t.Status(id) != PointStatus::Accepted)
+      {
+        continue;
+      }
+      const int c = best < 0 ? -1 : compare_distance(q, t.Points()[id], t.Points()[best]);
+      best = c < 0 || (c == 0 && id < best) ? id : best;
+    }
+    return best;
+  };
+  std::mt19937_64 random(17);
+  std::uniform_real_distribution<double> u(-0.5, 1.5);
+  std::vector<Point2> points = UniformPoints(3000, 9);
+  for (int i = 0; i < 30; ++i)
+  {
+    for (int j = 0; j < 30; ++j)
+    {
+      points.push_back({ 0.125 + i / 64.0, 0.125 + j / 64.0 }); // a lattice among them, exact
+    }
+  }
+  points.push_back(points[5]); // a duplicate
+  Tess t(UnitWindow(), points);
+  for (std::int32_t id = 0; id < 3000; id += 7)
+  {
+    t.Remove(id);
+  }
+  std::vector<Point2> queries;
+  for (int k = 0; k < 2000; ++k)
+  {
+    queries.push_back({ u(random), u(random) });
+  }
+  for (int i = 0; i < 29; ++i)
+  {
+    queries.push_back({ 0.125 + (i + 0.5) / 64.0, 0.125 + (i + 0.5) / 64.0 }); // four equally near
+    queries.push_back({ 0.125 + i / 64.0, 0.125 + (i + 0.5) / 64.0 });         // two equally near
+  }
+  queries.push_back(points[12]); // on a point
+  for (const Point2& q : queries)
+  {
+    EXPECT_EQ(t.NearestPoint(q), bruteForce(t, q)) << q.x << " " << q.y;
+  }
+  EXPECT_THROW(t.NearestPoint({ std::nan(""), 0.5 }), tessera::InputError);
+  // Collinear and empty.
+  Tess line(UnitWindow(), { { 0.125, 0.125 }, { 0.5, 0.5 }, { 0.375, 0.375 } });
+  EXPECT_EQ(line.NearestPoint({ 0.9, 0.2 }), bruteForce(line, { 0.9, 0.2 }));
+  EXPECT_EQ(line.NearestPoint({ 0.25, 0.25 }), 0); // (exactly as near 0 as 2)
+  Tess empty(UnitWindow(), std::vector<Point2>{});
+  EXPECT_EQ(empty.NearestPoint({ 0.5, 0.5 }), -1);
+}
+
 TEST(DirichletTessellation, RemovingAPointWithDuplicatesKeepsTheCopy)
 {
   std::vector<Point2> points = UniformPoints(30, 19);
