@@ -1230,11 +1230,17 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     }
     catch (const InputError& e)
     {
-      throw InputError("the catchment meets itself once projected, though not in lon/lat: " +
+      const std::string message = "the catchment meets itself once projected, though not in "
+                                  "lon/lat: " +
         std::string(e.what()) +
         ". Its edges, straight in lon/lat, are cut into pieces and projected: rings or edges "
         "that pass within rounding of each other can meet so; make them meet at a vertex, or "
-        "move them apart");
+        "move them apart";
+      if (const auto* rings = dynamic_cast<const RingError*>(&e))
+      {
+        throw RingError(message, rings->Rings, rings->Segments); // (a caller names them)
+      }
+      throw InputError(message);
     }
     throw;
   }

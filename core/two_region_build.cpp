@@ -78,11 +78,13 @@ double SeamStripHalfWidth(const Point2* pts, std::int32_t first, std::int32_t en
 // Where a region's walk restarts when the straight walk from its last triangle runs into a
 // triangle it does not own. The points of one side, taken in Hilbert order, leave the side and
 // come back wherever the curve crosses the seam, and the straight walk between two such points
-// may pass through the straddling band. A failed walk also left the region's last triangle where
-// it was, so the points after it failed too: with 1M uniform points from one generator 7% were
-// deferred, against 1.3% from another. Now the walk is tried once more from the triangle the
-// region last made in the point's cell of a coarse grid (seeded with its sample triangles): a
-// short walk that meets the band only near the seam. About 0.9% are deferred with either input.
+// may pass through the straddling band. A walk that failed there also left the region's last
+// triangle where it was, so the points after it failed too: with 1M uniform points from one
+// generator 7% were deferred, against 1.3% from another. Now the walk is tried once more from the
+// triangle the region last made in the point's cell of a coarse grid (seeded with its sample
+// triangles): a short walk that meets the band only near the seam. About 0.9% are deferred with
+// either input. (A point the walk found, on an edge the region may not split, is deferred without
+// a second walk, and the region's last triangle moves to where it was found: see insertSide.)
 //
 // A slot the region has written holds a triangle it owns until both regions finish (it alone
 // changes such triangles, and its splits and flips keep their vertices on its side), and so does

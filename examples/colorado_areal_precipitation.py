@@ -64,6 +64,7 @@ Run with Debian's /usr/bin/python3 and PYTHONPATH=build/python (scripts/demo doe
 import argparse
 import array
 import calendar
+import contextlib
 import csv
 import datetime
 import itertools
@@ -376,9 +377,11 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
               "earlier one is used, and a repeat's value fills an earlier empty cell", file=sys.stderr)
 
 
-# The most steps (months, days or hours) from the first observation's to the last's: every step
-# between is a row of areal_mean.csv, and a million hours took 0.9 GB (a mistyped year of 1900
-# in a 2020 record of hours made 1,051,896 empty hours without a word but a count).
+# The most steps (hours, in practice) from the first observation's to the last's: every step
+# between is a row of areal_mean.csv, and a million took 0.9 GB. A mistyped year 1000 in a 2020
+# record of hours would make 8.9 million (some 8 GB): refused. A mistyped 1900 makes 1,051,896
+# (0.9 GB, 8 s), which a century of hours also is: taken, and the warning on steps without any
+# row names the lines of the first and the last step.
 MOST_STEPS = 2_000_000
 
 
@@ -508,14 +511,20 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     # areal_mean.csv has every month (or day, or hour), empty where nothing was measured.
     if every_step and gauge_of:
         first, last = min(every_step), max(every_step)
-        # (the lines of the first and the last step: a mistyped year there makes the span)
-        read_steps = list(step_index)
-        line_of = {}
-        for row, k in enumerate(read):
-            line_of.setdefault(step_of[read_steps[k]], lines[row])
-        span = (f"between {steps.text(first)} (line {line_of[first]}) and {steps.text(last)} "
-                f"(line {line_of[last]})")
         count = steps.count(first, last)
+        span = ""
+        if count > len(present):
+            # (the lines of the first and the last step, where a mistyped year makes the span;
+            # looked for only when there are steps without rows)
+            read_steps, wanted, line_of = list(step_index), {first, last}, {}
+            for row, k in enumerate(read):
+                step = step_of[read_steps[k]]
+                if step in wanted and step not in line_of:
+                    line_of[step] = lines[row]
+                    if len(line_of) == len(wanted):
+                        break
+            span = (f"between {steps.text(first)} (line {line_of[first]}) and {steps.text(last)} "
+                    f"(line {line_of[last]})")
         if count > MOST_STEPS:
             csv_input.fail(f"{path}: the observations span {count} {steps.unit}s {span}, more than "
                            f"{MOST_STEPS} (each a row of areal_mean.csv, and some 1 GB of memory a "
@@ -556,57 +565,76 @@ def zip_member(path):
 
 
 class GdalMessages:
-    """GDAL's messages (parse errors, "Non closed ring detected") as lines to read, where GDAL
-    prints them to stderr as "ERROR 1: ..." beside the script's own one-line errors: CPL_LOG, set
-    before GDAL's first message, sends them to a temporary file (unless the user set it)."""
+    """GDAL's messages while the catchment is read (parse errors, "Non closed ring detected"),
+    which GDAL prints to stderr as "ERROR 1: ..." beside the script's own one-line errors: CPL_LOG,
+    set while GDAL reads, sends them to a temporary file to read back. A CPL_LOG the user set is
+    left alone (their file gets them)."""
 
     def __init__(self):
         import atexit
         import tempfile
 
-        self.path = None
-        # (not the user's: unset, or a parent's, a script run from one that imported this module)
-        if os.environ.get("CPL_LOG") in (None, os.environ.get("TESSERA_GDAL_LOG")):
+        self.path, self.seen = None, 0
+        if "CPL_LOG" not in os.environ:
             handle, self.path = tempfile.mkstemp(prefix="tessera_gdal_", suffix=".log")
             os.close(handle)
-            os.environ["CPL_LOG"] = os.environ["TESSERA_GDAL_LOG"] = self.path
-            atexit.register(os.remove, self.path)
-        self.seen = self.size()
+            atexit.register(lambda path=self.path: os.path.exists(path) and os.remove(path))
 
-    def size(self):
-        return os.path.getsize(self.path) if self.path and os.path.exists(self.path) else 0
+    @contextlib.contextmanager
+    def capturing(self):
+        """CPL_LOG names the file while GDAL reads (GDAL opens it at its first message and keeps
+        it), and is unset after: child processes print GDAL's messages as usual."""
+        if self.path:
+            os.environ["CPL_LOG"] = self.path
+        try:
+            yield
+        finally:
+            if self.path:
+                os.environ.pop("CPL_LOG", None)
 
     def new(self):
-        """The messages since the last call, each once, without GDAL's "ERROR 1: " prefixes."""
+        """(level, text) of each message since the last call, each once: level "ERROR" or
+        "Warning", or "" for other lines (CPL_DEBUG's)."""
         if not self.path:
             return []
-        with open(self.path, errors="replace") as f:
+        with open(self.path, "rb") as f:
             f.seek(self.seen)
-            text = f.read()
-        self.seen += len(text.encode(errors="replace"))
-        lines = [re.sub(r"^(ERROR|Warning) \d+: ", "", line).strip() for line in text.splitlines()]
-        return list(dict.fromkeys(line for line in lines if line))
+            data = f.read()
+        self.seen += len(data)
+        messages = []
+        for line in data.decode("utf-8", errors="replace").splitlines():
+            found = re.match(r"(ERROR|Warning) \d+: (.*)", line.strip())
+            messages.append((found.group(1), found.group(2).strip()) if found else ("", line.strip()))
+        return list(dict.fromkeys(m for m in messages if m[1]))
 
 
 def side_of_ring(point, ring):
-    """1 inside the ring (even-odd), -1 outside, 0 on its boundary."""
+    """1 inside the ring (even-odd), -1 outside, 0 on its boundary; ring an (n, 2) array."""
+    import numpy as np
+
     x, y = point
-    inside = False
-    for (ax, ay), (bx, by) in zip(ring, ring[1:] + ring[:1]):
-        cross = (bx - ax) * (y - ay) - (by - ay) * (x - ax)
-        if cross == 0 and min(ax, bx) <= x <= max(ax, bx) and min(ay, by) <= y <= max(ay, by):
-            return 0
-        if (ay > y) != (by > y) and x < ax + (y - ay) * (bx - ax) / (by - ay):
-            inside = not inside
-    return 1 if inside else -1
+    a, b = ring, np.roll(ring, -1, axis=0)
+    cross = (b[:, 0] - a[:, 0]) * (y - a[:, 1]) - (b[:, 1] - a[:, 1]) * (x - a[:, 0])
+    on = ((cross == 0) & (np.minimum(a[:, 0], b[:, 0]) <= x) & (x <= np.maximum(a[:, 0], b[:, 0]))
+          & (np.minimum(a[:, 1], b[:, 1]) <= y) & (y <= np.maximum(a[:, 1], b[:, 1])))
+    if on.any():
+        return 0
+    straddles = (a[:, 1] > y) != (b[:, 1] > y)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        meets = a[:, 0] + (y - a[:, 1]) * (b[:, 0] - a[:, 0]) / (b[:, 1] - a[:, 1])
+    return 1 if np.count_nonzero(straddles & (x < meets)) % 2 else -1
 
 
-def holes_outside_their_polygons(path):
+def holes_outside_their_polygons(path, feature=None):
     """For a GeoJSON file: (feature, ring) of each hole (a polygon's ring after its first, counted
-    over the feature's polygons) with vertices outside its polygon's outer ring and none inside it.
+    over the feature's polygons) whose first vertex off its polygon's outer ring lies outside it.
     The even-odd rule takes such a ring as an island, adding its area, where the file means a hole
-    (a hole that crosses its outline is named by the filter). Empty for other files."""
+    (a hole that crosses its outline is refused by the filter). Only the features with
+    `feature`'s ATTRIBUTE=VALUE when given; a malformed feature (which GDAL names or skips) is
+    passed over. Empty for other files."""
     import json
+
+    import numpy as np
 
     if os.path.splitext(path)[1].lower() not in (".geojson", ".json"):
         return []
@@ -615,23 +643,27 @@ def holes_outside_their_polygons(path):
             document = json.load(f)
     except (OSError, ValueError):
         return []  # (GDAL's reading says what is wrong)
+    name, _, wanted = (feature or "").partition("=")
     features = document.get("features", [document]) if isinstance(document, dict) else []
     found = []
-    for k, feature in enumerate(features):
-        geometry = feature.get("geometry", feature) if isinstance(feature, dict) else None
-        if not isinstance(geometry, dict):
-            continue
-        kind, coordinates = geometry.get("type"), geometry.get("coordinates") or []
-        polygons = [coordinates] if kind == "Polygon" else coordinates if kind == "MultiPolygon" else []
-        ring_number = 0
-        for polygon in polygons:
-            outer = [tuple(p[:2]) for p in polygon[0]] if polygon else []
-            for hole in polygon[1:]:
+    for k, item in enumerate(features):
+        try:
+            if feature is not None and str((item.get("properties") or {}).get(name.strip())) != wanted.strip():
+                continue
+            geometry = item.get("geometry", item)
+            kind, coordinates = geometry.get("type"), geometry.get("coordinates") or []
+            polygons = [coordinates] if kind == "Polygon" else coordinates if kind == "MultiPolygon" else []
+            ring_number = 0
+            for polygon in polygons:
+                outer = np.asarray([p[:2] for p in polygon[0]], dtype=float)
+                for hole in polygon[1:]:
+                    ring_number += 1
+                    side = next((s for s in (side_of_ring(p[:2], outer) for p in hole) if s != 0), 0)
+                    if side < 0:
+                        found.append((k, ring_number))
                 ring_number += 1
-                sides = {side_of_ring(tuple(p[:2]), outer) for p in hole}
-                if -1 in sides and 1 not in sides:
-                    found.append((k, ring_number))
-            ring_number += 1 if polygon else 0
+        except (AttributeError, TypeError, ValueError, IndexError):
+            continue
     return found
 
 
@@ -678,22 +710,27 @@ def read_catchment(path, feature=None):
     errors = []
     reader.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: errors.append(event))
     reader.SetFileName(source)
-    reader.Update()
+    with GDAL_MESSAGES.capturing():
+        reader.Update()
     output = reader.GetOutput()
     rings = catchment_rings(output) if output else []
     gdal = GDAL_MESSAGES.new()
     if errors or not rings:
-        if gdal:
-            csv_input.fail(f"{path}: GDAL cannot read the catchment file: {gdal[0]}")
+        # GDAL's error is the reason where nothing was read (a file it cannot parse); where
+        # points or lines were, they are (an unknown "crs" is an error of GDAL's too).
+        reasons = [text for level, text in gdal if level == "ERROR"]
+        kinds = cell_kinds(output) if output else "nothing"
+        if reasons and kinds == "nothing":
+            csv_input.fail(f"{path}: GDAL cannot read the catchment file: {reasons[0]}")
         csv_input.fail(f"{path}: VTK's GDAL reader (vtkGDALVectorReader) found no polygon in the "
-                       f"catchment file, only {cell_kinds(output) if output else 'nothing'} (expected a "
-                       "GeoJSON or shapefile polygon in lon/lat; polygons with measures, such as PolygonM "
-                       "or PolygonZM shapefiles, read as empty: drop the measures first, e.g. with "
-                       "ogr2ogr -dim XY)")
-    for message in gdal:
-        if not message.startswith("Non closed ring detected"):  # (the filter names such a ring)
+                       f"catchment file, only {kinds} (expected a GeoJSON or shapefile polygon in lon/lat; "
+                       "polygons with measures, such as PolygonM or PolygonZM shapefiles, read as empty: drop "
+                       "the measures first, e.g. with ogr2ogr -dim XY)"
+                       + (f"; GDAL: {reasons[0]}" if reasons else ""))
+    for level, message in gdal:
+        if level and not message.startswith("Non closed ring detected"):  # (the filter names it)
             print(f"{path}: GDAL: {message}", file=sys.stderr)
-    for k, ring in holes_outside_their_polygons(path):
+    for k, ring in holes_outside_their_polygons(path, feature):
         print(f"{path}: feature {k} ring {ring} is a hole (a polygon's ring after its first) but lies outside "
               "its polygon's outer ring: the even-odd rule takes it as an island, adding its area (GeoJSON's "
               "holes lie inside their polygon; counted from 0)", file=sys.stderr)

@@ -39,6 +39,7 @@
 #include <cfloat>
 #include <cmath>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace tessera_vtk
@@ -1135,9 +1136,13 @@ tessera::InputError WithRingSources(const tessera::RingError& error,
     text += (text.empty() ? "" : "; ") + std::string("ring ") + std::to_string(r) + " is " +
       source + " of the " + what;
   }
+  std::set<std::pair<std::size_t, std::size_t>> placed; // (a segment named twice, said once)
   for (const tessera::RingError::Segment& segment : error.Segments)
   {
-    text += "; " + SegmentPlace(rings, segment);
+    if (placed.insert({ segment.Ring, segment.Index }).second)
+    {
+      text += "; " + SegmentPlace(rings, segment);
+    }
   }
   return tessera::InputError(std::string(error.what()) + " (" + text + ")");
 }

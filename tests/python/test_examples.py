@@ -1583,6 +1583,24 @@ def test_a_hole_outside_its_polygon_is_named():
         assert_that(len(named) == 1 and named[0].startswith(expected), f"{named}")
         _, stderr = run_colorado(out, catchment=catchment, stations=stations, observations=observations, plots=False)
         assert_that("is a hole (a polygon" not in stderr, stderr)
+        # From a code review: only the features --feature takes are looked at, and a malformed
+        # feature that GDAL passes over made a traceback here.
+        basin["features"][1]["properties"] = {"HUC8": "2"}
+        basin["features"][0]["properties"] = {"HUC8": "1"}
+        basin["features"].append({"type": "Feature", "properties": {"HUC8": "3"},
+                                  "geometry": {"type": "Polygon", "coordinates": [[1, 2]]}})
+        path = write(out, "holes.geojson", json.dumps(basin))
+        _, stderr = run_colorado(out, "--feature", "HUC8=1", catchment=path, stations=stations,
+                                 observations=observations, plots=False)
+        assert_that("is a hole (a polygon" not in stderr and "Traceback" not in stderr, stderr)
+        _, stderr = run_colorado(out, "--feature", "HUC8=2", catchment=path, stations=stations,
+                                 observations=observations, plots=False)
+        assert_that("feature 1 ring 3 is a hole" in stderr and "Traceback" not in stderr, stderr)
+        # GDAL's log goes to the script's file while it reads, not for the rest of the process
+        # (a host program's, or its children's, GDAL messages went there too).
+        example = import_example()
+        example.read_catchment(catchment)
+        assert_that("CPL_LOG" not in os.environ, "CPL_LOG left set after reading")
 
 
 
