@@ -1,5 +1,5 @@
 // Uses both installed targets: the core's tessellation and the VTK filter, on the same points, and
-// requires them to agree with each other and with the window's area (REQUIRE, require.h). Prints
+// requires them to agree with each other and with the window's area (Failed, require.h). Prints
 // "ok" when every requirement held.
 #include "require.h"
 
@@ -43,11 +43,16 @@ int main()
   vtkCellData* cells = filter->GetOutput()->GetCellData();
   auto* areas = vtkDoubleArray::SafeDownCast(cells->GetArray("Area"));
   vtkDataArray* ids = cells->GetArray("PointId");
-  REQUIRE(areas && ids, "the filter's output lacks its Area or PointId array");
-  REQUIRE(areas->GetNumberOfTuples() == static_cast<vtkIdType>(tiles.Areas.size()),
-    "the filter gave %lld tiles, the core %zu",
-    static_cast<long long>(areas->GetNumberOfTuples()),
-    tiles.Areas.size());
+  if (!(areas && ids))
+  {
+    return Failed("the filter's output lacks its Area or PointId array");
+  }
+  if (!(areas->GetNumberOfTuples() == static_cast<vtkIdType>(tiles.Areas.size())))
+  {
+    return Failed("the filter gave %lld tiles, the core %zu",
+      static_cast<long long>(areas->GetNumberOfTuples()),
+      tiles.Areas.size());
+  }
   std::vector<double> coreArea(points.size(), -1.0);
   for (std::size_t t = 0; t < tiles.Areas.size(); ++t)
   {
@@ -59,14 +64,20 @@ int main()
     const double area = areas->GetValue(c);
     const auto id = static_cast<std::size_t>(ids->GetTuple1(c));
     sum += area;
-    REQUIRE(id < points.size(), "a tile's PointId %zu is no input point", id);
-    REQUIRE(std::abs(area - coreArea[id]) <= 1e-12 * area,
-      "point %zu: the filter's tile area %.17g, the core's %.17g",
-      id,
-      area,
-      coreArea[id]);
+    if (!(id < points.size()))
+    {
+      return Failed("a tile's PointId %zu is no input point", id);
+    }
+    if (!(std::abs(area - coreArea[id]) <= 1e-12 * area))
+    {
+      return Failed(
+        "point %zu: the filter's tile area %.17g, the core's %.17g", id, area, coreArea[id]);
+    }
   }
-  REQUIRE(std::abs(sum - 1.0) <= 1e-12, "the tiles' areas sum to %.17g, not the window's 1", sum);
+  if (!(std::abs(sum - 1.0) <= 1e-12))
+  {
+    return Failed("the tiles' areas sum to %.17g, not the window's 1", sum);
+  }
   std::printf("ok\n");
   return 0;
 }
