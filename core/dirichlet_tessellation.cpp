@@ -1609,54 +1609,56 @@ std::int32_t DirichletTessellation::NearestPoint(const Point2& q) const
   {
     edge = this->Twins[edge]; // (the hull edge's real side)
   }
-  // Greedy: step to the nearest neighbour while one is strictly nearer (e leaves v).
-  std::int32_t v = this->Origins[edge];
-  for (bool moved = true; moved;)
+  // visit(e, w) for each half-edge e leaving Origins[start], w its other (real) end.
+  const auto eachNeighbour = [this](std::int32_t start, const auto& visit)
   {
-    moved = false;
-    std::int32_t step = -1;
-    for (std::int32_t e = edge;;)
+    std::int32_t e = start;
+    do
     {
-      const std::int32_t w = this->Origins[Next(e)];
-      if (w != Ghost && compare_distance(q, pts[w], pts[v]) < 0 &&
-        (step < 0 || nearer(w, this->Origins[Next(step)])))
+      if (const std::int32_t w = this->Origins[Next(e)]; w != Ghost)
       {
-        step = e;
+        visit(e, w);
       }
       e = this->RingNext(e);
-      if (e == edge)
+    } while (e != start);
+  };
+  // Greedy: step to the nearest neighbour while one is strictly nearer (edge leaves v).
+  std::int32_t v = this->Origins[edge];
+  for (;;)
+  {
+    std::int32_t step = -1;
+    eachNeighbour(edge,
+      [&](std::int32_t e, std::int32_t w)
       {
-        break;
-      }
-    }
-    if (step >= 0)
+        if (compare_distance(q, pts[w], pts[v]) < 0 &&
+          (step < 0 || nearer(w, this->Origins[Next(step)])))
+        {
+          step = e;
+        }
+      });
+    if (step < 0)
     {
-      v = this->Origins[Next(step)];
-      edge = this->Twins[step]; // (leaves v)
-      moved = true;
+      break;
     }
+    v = this->Origins[Next(step)];
+    edge = this->Twins[step];
   }
   // Points as near as v lie with it on a circle about q that holds no point: a face of the
   // triangulation, whose points are joined around it; the smallest id among them.
   std::int32_t best = v;
-  std::vector<std::pair<std::int32_t, std::int32_t>> tied{ { v, edge } };
+  std::vector<std::pair<std::int32_t, std::int32_t>> tied{ { v, edge } }; // (point, edge leaving)
   for (std::size_t k = 0; k < tied.size(); ++k)
   {
-    for (std::int32_t e = tied[k].second;;)
-    {
-      const std::int32_t w = this->Origins[Next(e)];
-      if (w != Ghost && compare_distance(q, pts[w], pts[v]) == 0 &&
-        std::none_of(tied.begin(), tied.end(), [w](const auto& t) { return t.first == w; }))
+    eachNeighbour(tied[k].second,
+      [&](std::int32_t e, std::int32_t w)
       {
-        tied.push_back({ w, this->Twins[e] });
-        best = std::min(best, w);
-      }
-      e = this->RingNext(e);
-      if (e == tied[k].second)
-      {
-        break;
-      }
-    }
+        if (compare_distance(q, pts[w], pts[v]) == 0 &&
+          std::none_of(tied.begin(), tied.end(), [w](const auto& t) { return t.first == w; }))
+        {
+          tied.push_back({ w, this->Twins[e] });
+          best = std::min(best, w);
+        }
+      });
   }
   return best;
 }

@@ -32,6 +32,11 @@ public:
   {
     std::size_t Ring;
     std::size_t Index;
+    /// "ring 2 segment 5", as messages name it.
+    std::string Name() const
+    {
+      return "ring " + std::to_string(this->Ring) + " segment " + std::to_string(this->Index);
+    }
   };
 
   RingError(const std::string& message,

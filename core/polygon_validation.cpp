@@ -157,6 +157,12 @@ std::string Describe(const CleanRings& clean, const Segment& s)
   return "segment " + std::to_string(clean.SourceIndex[s.Start]);
 }
 
+// Clean segment s as the caller numbers it.
+RingError::Segment Named(const CleanRings& clean, const Segment& s)
+{
+  return { s.Ring, clean.SourceIndex[s.Start] };
+}
+
 std::size_t PreviousVertex(const CleanRings& clean, std::size_t ring, std::size_t v)
 {
   return v == clean.RingOffsets[ring] ? clean.RingOffsets[ring + 1] - 1 : v - 1;
@@ -382,13 +388,10 @@ private:
 
   [[noreturn]] void ReportCrossing(const Segment& s, const Segment& t) const
   {
-    const Segment& first = s.Ring < t.Ring ? s : t;
-    const Segment& second = s.Ring < t.Ring ? t : s;
-    throw RingError("ring " + std::to_string(first.Ring) + " " + Describe(this->Clean, first) +
-        " and ring " + std::to_string(second.Ring) + " " + Describe(this->Clean, second) +
-        " cross" + NotCrossingRule(),
-      { first.Ring, second.Ring },
-      { this->Named(first), this->Named(second) });
+    const std::vector<RingError::Segment> named = this->NamedInOrder(s, t);
+    throw RingError(named[0].Name() + " and " + named[1].Name() + " cross" + NotCrossingRule(),
+      { named[0].Ring, named[1].Ring },
+      named);
   }
 
   // Ring's boundary off the other lay inside it at one contact and outside at another, and the two
@@ -399,8 +402,9 @@ private:
     const std::string ring = "ring " + std::to_string(parted.Ring);
     const std::string other = "ring " + std::to_string(parted.Other);
     const auto side = [](const Side& s) { return std::string(s.Inside ? "inside" : "outside"); };
-    const std::vector<RingError::Segment> first = this->NamedInOrder(parted.First);
-    const std::vector<RingError::Segment> then = this->NamedInOrder(parted.Then);
+    const std::vector<RingError::Segment> first =
+      this->NamedInOrder(parted.First.S, parted.First.T);
+    const std::vector<RingError::Segment> then = this->NamedInOrder(parted.Then.S, parted.Then.T);
     std::string message = "ring " + std::to_string(std::min(parted.Ring, parted.Other)) +
       " and ring " + std::to_string(std::max(parted.Ring, parted.Other)) +
       " cross along boundary they share";
@@ -421,11 +425,11 @@ private:
       named);
   }
 
-  // The segments where a side was seen, the lesser ring's first.
-  std::vector<RingError::Segment> NamedInOrder(const Side& side) const
+  // Segments s and t of two rings as the caller numbers them, the lesser ring's first.
+  std::vector<RingError::Segment> NamedInOrder(const Segment& s, const Segment& t) const
   {
-    const bool sFirst = side.S.Ring < side.T.Ring;
-    return { this->Named(sFirst ? side.S : side.T), this->Named(sFirst ? side.T : side.S) };
+    const bool sFirst = s.Ring < t.Ring;
+    return { Named(this->Clean, sFirst ? s : t), Named(this->Clean, sFirst ? t : s) };
   }
 
   static bool SameSegments(const std::vector<RingError::Segment>& a,
@@ -442,20 +446,13 @@ private:
   // "ring 0 segment 2 meets ring 1 segment 5"
   static std::string MeetingText(const std::vector<RingError::Segment>& pair)
   {
-    const auto name = [](const RingError::Segment& s)
-    { return "ring " + std::to_string(s.Ring) + " segment " + std::to_string(s.Index); };
-    return name(pair[0]) + " meets " + name(pair[1]);
+    return pair[0].Name() + " meets " + pair[1].Name();
   }
 
   static std::string NotCrossingRule()
   {
     return " (rings may touch and share stretches of boundary, but not cross; holes and islands "
            "are separate rings)";
-  }
-
-  RingError::Segment Named(const Segment& s) const
-  {
-    return { s.Ring, this->Clean.SourceIndex[s.Start] };
   }
 
   CleanRings& Clean;
@@ -489,8 +486,7 @@ bool MeetsWithinRing(const CleanRings& clean, const Segment& s, const Segment& t
   const Segment& first = s.Start < t.Start ? s : t;
   const Segment& second = s.Start < t.Start ? t : s;
   const std::string ring = "ring " + std::to_string(first.Ring);
-  const std::vector<RingError::Segment> named{ { first.Ring, clean.SourceIndex[first.Start] },
-    { second.Ring, clean.SourceIndex[second.Start] } };
+  const std::vector<RingError::Segment> named{ Named(clean, first), Named(clean, second) };
   const std::size_t begin = clean.RingOffsets[first.Ring];
   if (AllOnOneLine(&clean.Vertices[begin], clean.RingOffsets[first.Ring + 1] - begin))
   {

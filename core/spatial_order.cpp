@@ -253,6 +253,29 @@ namespace
 // curve (16 levels).
 constexpr std::size_t CrowdedCell = 8;
 
+// ids[begin, end) sorted along the finest curve over box (ties keep their order); returns each
+// one's (curve index, id), in the new order.
+std::vector<std::pair<std::uint32_t, std::int32_t>> SortByFinestCurve(const Point2* points,
+  const Box2& box,
+  std::int32_t* begin,
+  std::int32_t* end)
+{
+  const CurveIndex index(box, 16);
+  std::vector<std::pair<std::uint32_t, std::int32_t>> keyed;
+  keyed.reserve(std::size_t(end - begin));
+  for (const std::int32_t* id = begin; id != end; ++id)
+  {
+    keyed.emplace_back(index(points[*id]), *id);
+  }
+  std::stable_sort(
+    keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (std::size_t k = 0; k < keyed.size(); ++k)
+  {
+    begin[k] = keyed[k].second;
+  }
+  return keyed;
+}
+
 // The grid is sized for points that fill the box (about 4 cells a point); points on a few lines
 // fill a few cells of it, some 2.5 sqrt(N) points each, left in their random order: the walk
 // between two of them then crossed some sqrt(N) triangles (points on two lines 10 apart: 190
@@ -267,19 +290,7 @@ void SortCrowdedCell(const Point2* points, std::int32_t* begin, std::int32_t* en
   {
     box.Extend(points[*id]);
   }
-  const CurveIndex fine(box, 16);
-  std::vector<std::pair<std::uint32_t, std::int32_t>> keyed;
-  keyed.reserve(std::size_t(end - begin));
-  for (const std::int32_t* id = begin; id != end; ++id)
-  {
-    keyed.emplace_back(fine(points[*id]), *id);
-  }
-  std::stable_sort(
-    keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (std::size_t k = 0; k < keyed.size(); ++k)
-  {
-    begin[k] = keyed[k].second;
-  }
+  SortByFinestCurve(points, box, begin, end);
 }
 
 // Sorts each crowded run of order along a curve of its own; keyOf(k) is the (round, cell) key
@@ -304,19 +315,7 @@ void SortCrowdedCells(const Point2* points, std::vector<std::int32_t>& order, co
 
 void SortAlongHilbertCurve(const Point2* points, const Box2& box, std::vector<std::int32_t>& ids)
 {
-  const CurveIndex index(box, 16);
-  std::vector<std::pair<std::uint32_t, std::int32_t>> keyed;
-  keyed.reserve(ids.size());
-  for (const std::int32_t id : ids)
-  {
-    keyed.emplace_back(index(points[id]), id);
-  }
-  std::stable_sort(
-    keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-  for (std::size_t k = 0; k < ids.size(); ++k)
-  {
-    ids[k] = keyed[k].second;
-  }
+  const auto keyed = SortByFinestCurve(points, box, ids.data(), ids.data() + ids.size());
   SortCrowdedCells(points, ids, [&keyed](std::size_t k) { return keyed[k].first; });
 }
 

@@ -799,6 +799,12 @@ std::string BlockLabels::Of(vtkCompositeDataIterator* it) const
   return found != this->Paths.end() ? label + ")" : label;
 }
 
+std::string ArrayLabel(vtkAbstractArray* array)
+{
+  const char* name = array->GetName();
+  return name && *name ? "'" + std::string(name) + "'" : std::string("without a name");
+}
+
 void CheckAttributeLengths(vtkDataSet* data, const std::string& what)
 {
   for (const bool points : { true, false })
@@ -811,11 +817,9 @@ void CheckAttributeLengths(vtkDataSet* data, const std::string& what)
       vtkAbstractArray* array = arrays->GetAbstractArray(k);
       if (array && array->GetNumberOfTuples() < needed)
       {
-        const char* name = array->GetName();
         throw tessera::InputError(what + ": its " + (points ? "point" : "cell") + "-data array " +
-          (name && *name ? "'" + std::string(name) + "'" : std::string("without a name")) +
-          " has " + std::to_string(array->GetNumberOfTuples()) + " value(s) for " +
-          std::to_string(needed) + (points ? " points" : " cells"));
+          ArrayLabel(array) + " has " + std::to_string(array->GetNumberOfTuples()) +
+          " value(s) for " + std::to_string(needed) + (points ? " points" : " cells"));
       }
     }
   }
@@ -1107,8 +1111,7 @@ std::string PointText(const tessera::Point2& p)
 /// "ring 2 segment 5 runs from (3, 1) to (4, 1)": segment k from the ring's vertex k to k + 1.
 std::string SegmentPlace(const Rings& rings, const tessera::RingError::Segment& segment)
 {
-  const std::string name =
-    "ring " + std::to_string(segment.Ring) + " segment " + std::to_string(segment.Index);
+  const std::string name = segment.Name();
   if (segment.Ring + 1 >= rings.Offsets.size())
   {
     return name + " (not a ring read)";

@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+class vtkAbstractArray;
 class vtkAlgorithmOutput;
 class vtkCompositeDataIterator;
 class vtkCompositeDataSet;
@@ -61,6 +62,9 @@ private:
 /// fewer values than it has points, or a cell-data array fewer than cells: the filters copy them
 /// by point and cell id, and a short one was read past its end (a crash, or garbage in the tiles).
 void CheckAttributeLengths(vtkDataSet* data, const std::string& what);
+
+/// An array as messages name it: "'Area'", or "without a name".
+std::string ArrayLabel(vtkAbstractArray* array);
 
 /// The points of every vtkPointSet leaf of a composite data set, in the leaves' order, as one
 /// vtkPolyData (points only, no cells), with their arrays joined over the leaves. A leaf whose

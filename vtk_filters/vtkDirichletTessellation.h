@@ -54,9 +54,10 @@
  *   attributes included: global ids become the tiles' global ids (one tile per point keeps them
  *   unique), pedigree ids their pedigree ids, active scalars etc. stay active.
  * Without active scalars from the input, `Area` is the active scalars (a view such as ParaView's
- * colours the tiles by it); output 1's `Kind` is its active scalars. The three names above are the filter's API and always hold its own arrays. An input array
- * with one of them is still passed, renamed NAME_input (or NAME_input_2, _3 ... if the input
- * has that name too), and a warning names it (e.g. an input `Area` becomes `Area_input`).
+ * colours the tiles by it); output 1's `Kind` is its active scalars. The three names above are
+ * the filter's API and always hold its own arrays. An input array with one of them is still
+ * passed, renamed NAME_input (or NAME_input_2, _3 ... if the input has that name too), and a
+ * warning names it (e.g. an input `Area` becomes `Area_input`).
  * Field data (on both outputs):
  * - `RejectedPointIds` (vtkIdType): points not strictly inside the window;
  * - `DuplicatePointIds` and `DuplicateOfPointIds` (vtkIdType, same length): exact copies of an

@@ -122,14 +122,10 @@ void CheckColumnLengths(vtkTable* table)
     vtkAbstractArray* column = table->GetColumn(c);
     if (column && column->GetNumberOfTuples() != rows)
     {
-      const auto name = [](vtkAbstractArray* array)
-      {
-        const char* text = array->GetName();
-        return text && *text ? "'" + std::string(text) + "'" : std::string("(without a name)");
-      };
       throw tessera::InputError("the observations table's columns differ in length: column " +
-        name(column) + " has " + std::to_string(column->GetNumberOfTuples()) +
-        " value(s), the first column, " + name(table->GetColumn(0)) + ", " + std::to_string(rows));
+        tessera_vtk::ArrayLabel(column) + " has " + std::to_string(column->GetNumberOfTuples()) +
+        " value(s), the first column, " + tessera_vtk::ArrayLabel(table->GetColumn(0)) + ", " +
+        std::to_string(rows));
     }
   }
 }
