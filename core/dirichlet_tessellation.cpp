@@ -1439,11 +1439,6 @@ bool DirichletTessellation::IsDelaunayEar(const std::vector<std::int32_t>& ring,
 //      d---v---a     ->      d   /   a     ear (a, b, c) cut first; then the smaller polygon
 //       \ / \ /               \ /   /
 //        e---f                 e---f
-// Above this degree a vertex's link is triangulated by a batch build of its vertices
-// (TriangulateLinkByBuild) rather than cut into ears: each ear test reads the whole link, so
-// cutting is quadratic in the degree (the centre of 4000 points on a circle took 7.6 s to remove,
-// every test exact there).
-constexpr std::size_t EarCuttingDegree = 64;
 
 bool DirichletTessellation::RemoveInteriorVertex(std::int32_t edge)
 {
@@ -1469,13 +1464,9 @@ bool DirichletTessellation::RemoveInteriorVertex(std::int32_t edge)
 
   std::vector<Ear>& plan = this->Removal.Plan;
   plan.clear();
-  if (ring.size() <= EarCuttingDegree || !this->TriangulateLinkByBuild(ring, outer, slots, plan))
+  if (!this->TriangulateHole(ring, outer, slots, 0, plan))
   {
-    plan.clear();
-    if (!this->CutDelaunayEars(ring, outer, slots, 0, plan))
-    {
-      return false; // rebuilding is always correct
-    }
+    return false; // rebuilding is always correct
   }
   this->ApplyPlan(plan, slots);
   if (this->TrackingCocircular)
@@ -1485,13 +1476,39 @@ bool DirichletTessellation::RemoveInteriorVertex(std::int32_t edge)
   return true;
 }
 
-// Triangulates the link polygon of a vertex of high degree (ring, anticlockwise; outer[i] the twin
-// of its edge ring[i] -> ring[i + 1]) by a batch build of its vertices alone, into plan (a
-// triangle per slot, twins set): the polygon's edges are Delaunay edges of the points without the
-// vertex, so they are edges of that build, and its triangles inside the polygon, reached from
-// the polygon's edges without crossing one, are the hole's Delaunay triangles. O(d log d), where
-// cutting ears reads the whole link for each candidate ear. Returns false (plan undefined) where
-// the build does not hold the polygon as expected; cutting ears then decides.
+// Above this many vertices a hole left by a removal is triangulated by a batch build of its
+// vertices (TriangulateLinkByBuild) rather than cut into ears: each ear test reads the whole
+// polygon, so cutting is quadratic in its size (the centre of 4000 points on a circle took 7.6 s
+// to remove, every test exact there; a hull vertex before 4000 points on a half circle, 8.6 s).
+constexpr std::size_t EarCuttingDegree = 64;
+
+// Triangulates the hole ring (an anticlockwise polygon whose edges are Delaunay edges of the
+// points without the removed vertex; outer[i] the twin of its edge ring[i] -> ring[i + 1]) into
+// plan[first ..], the k-th new triangle going to slots[first + k]: by a batch build where the
+// polygon is large, else (or where the build does not hold it) by cutting Delaunay ears, which
+// shortens ring and outer. False only if no ear is found, which exact predicates exclude.
+bool DirichletTessellation::TriangulateHole(std::vector<std::int32_t>& ring,
+  std::vector<std::int32_t>& outer,
+  const std::vector<std::int32_t>& slots,
+  std::size_t first,
+  std::vector<Ear>& plan) const
+{
+  if (ring.size() > EarCuttingDegree &&
+    this->TriangulateLinkByBuild(ring, outer, slots, first, plan))
+  {
+    return true;
+  }
+  plan.resize(first);
+  return this->CutDelaunayEars(ring, outer, slots, first, plan);
+}
+
+// Triangulates a large hole polygon (as TriangulateHole) by a batch build of its vertices alone,
+// into plan[first ..] (a triangle per slot, twins set): the polygon's edges are Delaunay edges of
+// the points without the vertex, so they are edges of that build, and its triangles inside the
+// polygon, reached from the polygon's edges without crossing one, are the hole's Delaunay
+// triangles. O(d log d), where cutting ears reads the whole link for each candidate ear. Returns
+// false (plan undefined) where the build does not hold the polygon as expected; cutting ears then
+// decides.
 //
 //         r3 ------- r2        The build of r0..r4 covers their convex hull, so it also
 //        /  \        /  \       has the triangle r4 r0 r1 outside the polygon, beyond its reflex
@@ -1501,6 +1518,7 @@ bool DirichletTessellation::RemoveInteriorVertex(std::int32_t edge)
 bool DirichletTessellation::TriangulateLinkByBuild(const std::vector<std::int32_t>& ring,
   const std::vector<std::int32_t>& outer,
   const std::vector<std::int32_t>& slots,
+  std::size_t first,
   std::vector<Ear>& plan) const
 {
   const std::int32_t d = std::int32_t(ring.size());
@@ -1563,7 +1581,7 @@ bool DirichletTessellation::TriangulateLinkByBuild(const std::vector<std::int32_
       }
     }
   }
-  if (order.size() != std::size_t(d - 2) || slots.size() < order.size())
+  if (order.size() != std::size_t(d - 2) || slots.size() < first + order.size())
   {
     return false;
   }
@@ -1574,7 +1592,8 @@ bool DirichletTessellation::TriangulateLinkByBuild(const std::vector<std::int32_
     {
       const std::int32_t e = 3 * t + i;
       vertex[i] = ring[org[e]];
-      twins[i] = edgeOf[e] >= 0 ? outer[edgeOf[e]] : 3 * slots[indexOf[twin[e] / 3]] + twin[e] % 3;
+      twins[i] =
+        edgeOf[e] >= 0 ? outer[edgeOf[e]] : 3 * slots[first + indexOf[twin[e] / 3]] + twin[e] % 3;
     }
     plan.push_back({ vertex[0], vertex[1], vertex[2], twins[0], twins[1], twins[2] });
   }
@@ -1689,7 +1708,7 @@ void DirichletTessellation::ApplyPlan(const std::vector<Ear>& plan,
 // vertex where the chain turns left (strictly: collinear chain vertices stay hull vertices, as
 // every point on a hull edge is a vertex here). Each pair of consecutive new hull vertices h, h'
 // gets a ghost triangle (h, h', G); where they are not neighbours on the chain, the pocket between
-// the chain and the new hull edge h -> h' is an anticlockwise polygon cut into Delaunay ears. A
+// the chain and the new hull edge h -> h' is an anticlockwise polygon (TriangulateHole). A
 // pocket's edges are Delaunay edges without v (chain edges stay Delaunay, the closing edge is a
 // hull edge), so its Delaunay triangulation is that of all the points there. Returns false
 // (nothing changed) when the points left are collinear: then some chain edge would become a hull
@@ -1786,7 +1805,7 @@ bool DirichletTessellation::RemoveHullVertex(std::int32_t edge)
     std::vector<std::int32_t> ringOuter(
       outer.begin() + std::ptrdiff_t(i), outer.begin() + std::ptrdiff_t(j));
     ringOuter.push_back(3 * ghost);
-    if (!this->CutDelaunayEars(ring, ringOuter, slots, plan.size(), plan))
+    if (!this->TriangulateHole(ring, ringOuter, slots, plan.size(), plan))
     {
       return false; // rebuilding is always correct
     }

@@ -89,8 +89,8 @@ public:
   /// exact duplicates, the smallest of them takes its place). A duplicate or rejected point is
   /// only marked removed. Throws InputError for an unknown or already removed id. The hole left
   /// by an interior or hull vertex is re-triangulated in place (O(1) expected): cut into Delaunay
-  /// ears (O(degree^2)), or, for an interior vertex of degree above 64, by a batch build of its
-  /// neighbours (O(degree log degree): the centre of 4000 points on a circle in 6 ms, where ears
+  /// ears (O(degree^2)), or, for a hole of more than 64 vertices, by a batch build of its
+  /// vertices (O(degree log degree): the centre of 4000 points on a circle in 6 ms, where ears
   /// took 4.5 s); only a removal that leaves the points collinear rebuilds.
   void Remove(std::int32_t id);
 
@@ -299,9 +299,15 @@ private:
     std::size_t i,
     std::size_t b,
     std::size_t c) const;
+  bool TriangulateHole(std::vector<std::int32_t>& ring,
+    std::vector<std::int32_t>& outer,
+    const std::vector<std::int32_t>& slots,
+    std::size_t first,
+    std::vector<Ear>& plan) const;
   bool TriangulateLinkByBuild(const std::vector<std::int32_t>& ring,
     const std::vector<std::int32_t>& outer,
     const std::vector<std::int32_t>& slots,
+    std::size_t first,
     std::vector<Ear>& plan) const;
   void ApplyPlan(const std::vector<Ear>& plan, const std::vector<std::int32_t>& slots);
   bool RemoveInteriorVertex(std::int32_t edge);

@@ -697,6 +697,42 @@ TEST(DirichletTessellation, RemovingTheCentreOfLargeLinksEqualsNeverInserted)
   }
 }
 
+// A hull vertex before a large pocket: the centre of points on a half circle (the pocket between
+// the arc and its chord is all co-circular), of a half flower (reflex pocket vertices), and of two
+// arcs split by a point that stays on the hull (two pockets, each above 64 vertices). The pockets
+// are triangulated by a batch build as interior links are (cutting ears was quadratic: the centre
+// of 4000 points on a half circle took 8.6 s); each removal equals never inserted.
+TEST(DirichletTessellation, RemovingAHullVertexBeforeLargePocketsEqualsNeverInserted)
+{
+  for (const int shape : { 0, 1, 2 })
+  {
+    const int count = 400;
+    std::vector<Point2> points;
+    for (int k = 0; k < count; ++k)
+    {
+      const double a = M_PI * (k + 0.5) / count;
+      const double r = shape == 1 ? 0.38 + 0.02 * (k % 2) : 0.4;
+      points.push_back({ 0.5 + r * std::cos(a), 0.1 + r * std::sin(a) });
+    }
+    if (shape == 2)
+    {
+      points.push_back({ 0.5, 0.6 }); // beyond the arc's top: a hull vertex between two pockets
+    }
+    const std::int32_t centre = std::int32_t(points.size());
+    const Canonical expected = MakeCanonical(Tess(UnitWindow(), points));
+    points.push_back({ 0.5, 0.1 });
+    Tess t(UnitWindow(), points);
+    std::vector<std::int32_t> around;
+    t.AppendNeighbours(centre, around);
+    ASSERT_GE(around.size(), shape == 1 ? 200u : 400u) << "shape " << shape;
+    t.Remove(centre);
+    CheckStructure(t);
+    CheckEmptyCircles(t);
+    EXPECT_TRUE(MakeCanonical(t) == expected) << "shape " << shape;
+    t.Reinsert(centre);
+    EXPECT_TRUE(MakeCanonical(t) == MakeCanonical(Tess(UnitWindow(), points))) << "shape " << shape;
+  }
+}
 // The nearest accepted point against brute force (exact distance comparisons, the smallest id of
 // those equally near): uniform points, a lattice (queries at cell centres and lattice points:
 // four-way and two-way ties), duplicates and removed points, queries outside the window, and the
