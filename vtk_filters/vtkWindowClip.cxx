@@ -2,6 +2,8 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
@@ -40,10 +42,53 @@ const std::vector<const char*> OwnArrayNames{ "TileId",
   "ClippedArea",
   "AreaFraction",
   "PieceArea" };
+/// The x-y bounds of a data set or of a composite's blocks; false when it has no points.
+bool PlaneBoundsOf(vtkDataObject* data, double bounds[6])
+{
+  if (auto* set = vtkDataSet::SafeDownCast(data))
+  {
+    set->GetBounds(bounds);
+  }
+  else if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    composite->GetBounds(bounds);
+  }
+  else
+  {
+    return false;
+  }
+  return bounds[0] <= bounds[1] && bounds[2] <= bounds[3];
+}
+
+/// Whether bounds lie within the degrees a longitude and a latitude take (longitudes up to 360,
+/// as a catchment across the 180th meridian may run on past 180).
+bool WithinDegrees(const double bounds[6])
+{
+  return bounds[0] >= -360.0 && bounds[1] <= 360.0 && bounds[2] >= -90.0 && bounds[3] <= 90.0;
+}
+
+/// Whether bounds reach 1e4 or more from the origin: metres, not degrees (geo.h's
+/// ProjectedCoordinatesNote draws the same line).
+bool ReachesMetres(const double bounds[6])
+{
+  return std::max({ std::fabs(bounds[0]),
+           std::fabs(bounds[1]),
+           std::fabs(bounds[2]),
+           std::fabs(bounds[3]) }) >= 1e4;
+}
+
+std::string BoundsText(const double bounds[6])
+{
+  return "x " + tessera::NumberText(bounds[0]) + " to " + tessera::NumberText(bounds[1]) + ", y " +
+    tessera::NumberText(bounds[2]) + " to " + tessera::NumberText(bounds[3]);
+}
+
 /// Tiles and window in two different planes would be clipped as if in one, the areas wrong by
 /// the projections' difference, silently: two automatic projections of different data (gauges
 /// and catchment projected apart) differ. Throws when the inputs' TesseraProjection records
-/// differ; returns a warning when only one input has one, else "".
+/// differ, and when one input has a record in metres and the other none, in degrees (tiles of
+/// lon/lat gauges clipped to a projected catchment came out whole, covering 2.5e-10 of it, with
+/// a warning only); returns a warning when only one input has a record otherwise, else "".
 std::string ProjectionWarning(vtkDataObject* tiles, vtkDataObject* window)
 {
   const std::string ofTiles = tessera_vtk::ProjectionRecordOf(tiles, "input 0 (the tiles)");
@@ -55,8 +100,10 @@ std::string ProjectionWarning(vtkDataObject* tiles, vtkDataObject* window)
     throw tessera::InputError("the tiles (input 0) and the window (input 1) were projected "
                               "differently (tiles: " +
       ofTiles + "; window: " + ofWindow +
-      "): project both with one projection (the same settings with ParametersFromData off), "
-      "or use Thiessen Areal Average, which projects gauges and catchment together");
+      "): project both with one projection (give the window's Geographic Projection the tiles' "
+      "record as its Projection Record, copied from the tiles' TesseraProjection field data, or "
+      "Group Datasets the gauges and the catchment before one Geographic Projection), or use "
+      "Thiessen Areal Average, which projects gauges and catchment together");
   }
   if (ofTiles.empty() == ofWindow.empty())
   {
@@ -64,6 +111,20 @@ std::string ProjectionWarning(vtkDataObject* tiles, vtkDataObject* window)
   }
   const std::string projected = ofTiles.empty() ? "the window (input 1)" : "the tiles (input 0)";
   const std::string other = ofTiles.empty() ? "the tiles (input 0)" : "the window (input 1)";
+  double projectedBounds[6], otherBounds[6];
+  if (PlaneBoundsOf(ofTiles.empty() ? window : tiles, projectedBounds) &&
+    PlaneBoundsOf(ofTiles.empty() ? tiles : window, otherBounds) &&
+    ReachesMetres(projectedBounds) && WithinDegrees(otherBounds))
+  {
+    throw tessera::InputError(projected + " is projected (TesseraProjection " + ofTiles + ofWindow +
+      "; " + BoundsText(projectedBounds) + ") and " + other +
+      " carries no record and looks like longitude and latitude in degrees (" +
+      BoundsText(otherBounds) +
+      "): project it too, with Geographic Projection's Projection Record set to that record (or "
+      "Group Datasets the gauges and the catchment before one Geographic Projection); if it is "
+      "in that plane already, remove the TesseraProjection field data of " +
+      projected);
+  }
   return projected + " carries a TesseraProjection record (" + ofTiles + ofWindow + ") and " +
     other + " none: both are taken to be in the same plane";
 }

@@ -53,8 +53,9 @@
  * tiles, or of a composite's blocks and a parallel run's pieces, each clipped alone, covers a
  * share of the window by design.) The tiles' point data is not passed (the pieces' vertices are
  * new points; a warning names its arrays). Only x and y are used, in one plane: inputs whose
- * `TesseraProjection` records (vtkGeographicProjection) differ are an error naming both, and a
- * record on one input only gives a warning.
+ * `TesseraProjection` records (vtkGeographicProjection) differ are an error naming both; a record
+ * on one input only is an error where that input reaches metres (1e4 or more) and the other lies
+ * within degrees (|x| <= 360, |y| <= 90: lon/lat tiles and a projected window), else a warning.
  */
 
 #ifndef vtkWindowClip_h

@@ -347,7 +347,8 @@ def test_tiles_and_window_must_share_their_projection():
     """Gauges and catchment projected apart, each with its automatic projection, lie in two
     different planes: clipping one by the other is an error naming both projections. With one
     projection for both it clips, and the output keeps the record (so an inverse finds it). A
-    record on one input only gives a warning."""
+    record on one input only is an error where the other lies in degrees and it in metres, else a
+    warning."""
     gauges = make_points([(-105.0, 39.0), (-104.0, 40.0), (-103.0, 38.5), (-106.0, 40.5)])
     catchment = polygon([[(-106.0, 38.0), (-103.0, 38.0), (-103.0, 41.0), (-106.0, 41.0)]])
 
@@ -419,9 +420,26 @@ def test_tiles_and_window_must_share_their_projection():
     back.SetProjectionRecord(record)
     back.Update()
     assert_that(len(said) == 1, f"the input's own record: {said}")
+    # Tiles of lon/lat gauges and a projected window, either way round: degrees against metres,
+    # an error naming both extents (the tiles came out whole, covering 2.5e-10 of the window).
     output, errors, warnings = clip_by(tiles_of(gauges), projected(catchment, False))
+    assert_that(len(errors) == 1 and "the window (input 1) is projected" in errors[0]
+                and "the tiles (input 0) carries no record and looks like longitude and latitude" in errors[0]
+                and "x -106.3 to -102.7" in errors[0] and output.GetNumberOfCells() == 0,
+                f"lon/lat tiles, a projected window: {errors} {warnings}")
+    output, errors, warnings = clip_by(tiles_of(same), catchment)
+    assert_that(len(errors) == 1 and "the tiles (input 0) is projected" in errors[0]
+                and "the window (input 1) carries no record" in errors[0], f"projected tiles: {errors}")
+    # Without a record but in metres (another tool's projection, say): one plane is taken, warned.
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+    unrecorded = vtkPolyData()
+    unrecorded.DeepCopy(tiles_of(same))
+    unrecorded.GetFieldData().RemoveArray("TesseraProjection")
+    output, errors, warnings = clip_by(unrecorded, projected(catchment, False))
     assert_that(not errors and len(warnings) == 1 and "the window (input 1) carries" in warnings[0]
-                and "the tiles (input 0) none" in warnings[0], f"one record: {errors} {warnings}")
+                and "the tiles (input 0) none" in warnings[0] and output.GetNumberOfCells() == 4,
+                f"one record, both in metres: {errors} {warnings}")
     # A window of blocks projected apart (each with its own automatic projection) is refused.
     from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
 
