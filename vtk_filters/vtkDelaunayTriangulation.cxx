@@ -165,6 +165,16 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     {
       vtkWarningMacro(<< unused);
     }
+    // An output of points and no face, said (a ParaView user saw nothing and no message).
+    const std::size_t accepted = tessellation.AcceptedCount();
+    if (accepted > 0 && !tessellation.IsTwoDimensional())
+    {
+      vtkWarningMacro(<< "no Delaunay triangle: "
+                      << (accepted < 3 ? "fewer than three distinct points are"
+                                       : "the " + std::to_string(accepted) + " distinct points")
+                      << (accepted < 3 ? " triangulated" : " triangulated all lie on one line")
+                      << " (Dirichlet Tessellation gives their tiles, strips across the window)");
+    }
     return 1;
   }
   catch (const std::exception& e)

@@ -268,6 +268,7 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     pointsOut->GetPointData()->AddArray(groups);
     pointsOut->GetPointData()->AddArray(nodes);
     pointsOut->GetPointData()->AddArray(distances);
+    pointsOut->GetPointData()->SetActiveScalars("GroupId"); // (ParaView colours the groups)
     // The input's field data (passed on by the pipeline) keeps arrays of these names as NAME_input.
     const tessera_vtk::RenamedArrays renamedFields = tessera_vtk::RenameArraysNamed(
       pointsOut->GetFieldData(), { "ImageSize", "PixelSize", "FieldErrorBound" }, true);
@@ -294,6 +295,7 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     contoursOut->GetCellData()->AddArray(contourIds);
     contoursOut->GetCellData()->AddArray(ByteArray("Closed", result.ContourClosed));
     contoursOut->GetCellData()->AddArray(lengths);
+    contoursOut->GetCellData()->SetActiveScalars(contourIds->GetName());
 
     // Output 2: fitted curves.
     WritePolylines(result.Curves, result.CurveClosed, curvesOut);
@@ -305,6 +307,7 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     }
     curvesOut->GetCellData()->AddArray(curveGroups);
     curvesOut->GetCellData()->AddArray(ByteArray("Closed", result.CurveClosed));
+    curvesOut->GetCellData()->SetActiveScalars("GroupId");
 
     // Output 3: the field image.
     const tessera::PixelGrid& grid = result.Grid;

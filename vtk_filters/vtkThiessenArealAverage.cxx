@@ -95,6 +95,19 @@ std::string ColumnNames(vtkTable* table)
   return names.empty() ? "none" : names;
 }
 
+/// The names of the gauges' point-data arrays, for messages: "a, b, c", or "none".
+std::string PointArrayNames(vtkPointSet* gauges)
+{
+  vtkPointData* data = gauges->GetPointData();
+  const std::string names = ListNames(static_cast<std::size_t>(data->GetNumberOfArrays()),
+    [data](std::size_t a)
+    {
+      const char* name = data->GetArrayName(static_cast<int>(a));
+      return std::string(name ? name : "(unnamed)");
+    });
+  return names.empty() ? "none" : names;
+}
+
 /// The column of the observations table, or an InputError naming it, the property that names it
 /// and what it should hold, and the columns the table has (the usual mistake is a name).
 vtkAbstractArray* ObservationColumn(vtkTable* table,
@@ -1042,7 +1055,8 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
         // (Once per build, not at every time step.)
         vtkWarningMacro(<< "the gauges have no point-data array '" << this->StationIdArrayName
                         << "' (StationIdArrayName): the outputs have no StationId and the gauges "
-                           "are named by their index");
+                           "are named by their index; their arrays are "
+                        << PointArrayNames(gauges));
       }
       this->Build(gauges, stationIds, catchment, observations);
       in.BuiltFor = stamp;
@@ -1160,7 +1174,8 @@ vtkAbstractArray* vtkThiessenArealAverage::GaugeStationIds(vtkPointSet* gauges, 
       (gauges->GetNumberOfPoints() == 0 ? std::string(NoGaugePoints) + " and "
                                         : std::string("the gauges have ")) +
       "no point-data array '" + this->StationIdArrayName +
-      "' of station ids to match the observations with");
+      "' (StationIdArrayName) of station ids to match the observations with; their arrays are " +
+      PointArrayNames(gauges));
   }
   if (ids && ids->GetNumberOfTuples() != gauges->GetNumberOfPoints())
   {
@@ -1310,7 +1325,8 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     {
       throw tessera::InputError(
         "without observations the gauges need a numeric point-data array '" + this->ValueArrayName +
-        "'" + (in.ValueProblem.empty() ? std::string() : ": " + in.ValueProblem));
+        "' (ValueArrayName)" + (in.ValueProblem.empty() ? std::string() : ": " + in.ValueProblem) +
+        "; their arrays are " + PointArrayNames(gauges));
     }
     // The one step's time: the gauges' own (from a time-aware source), else 0.
     vtkInformation* gaugesInfo = gauges->GetInformation();

@@ -399,6 +399,9 @@ int vtkWindowClip::RequestData(vtkInformation*,
     outCD->AddArray(clippedAreas);
     outCD->AddArray(fractions);
     outCD->AddArray(pieceAreas);
+    // Coloured by the share of each tile inside the window (not by an input's active scalars,
+    // such as the tessellation's Area of the whole, unclipped tile).
+    outCD->SetActiveScalars(fractions->GetName());
     if (!renamed.empty())
     {
       vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(

@@ -254,9 +254,15 @@ def test_degenerate_inputs_give_valid_output():
         if cells:
             assert_close(total, 1.0, 1e-12, f"{len(coords)} points: tiles fill the window")
         t = vtkDelaunayTriangulation()
+        said = messages_of(t, vtkCommand.WarningEvent)
         t.SetInputData(make_points(coords))
         t.Update()
         assert_that(t.GetOutput().GetNumberOfCells() == 0, f"{len(coords)} collinear/few points: no face")
+        # No face is said, for points there are (none: nothing to say).
+        expected = ([] if not coords else ["fewer than three distinct points"] if len(coords) < 3
+                    else ["the 4 distinct points triangulated all lie on one line"])
+        assert_that(len(said) == len(expected) and all(e in w for e, w in zip(expected, said)),
+                    f"{len(coords)} points: {said}")
     # Without a window, points without extent get the square of side 1 centred on them (the
     # header's rule: a padding of a zero side would leave no window).
     for coords in ([(5e6, 7e6)], [(5e6, 7e6)] * 3):

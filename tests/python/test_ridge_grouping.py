@@ -80,6 +80,10 @@ def test_two_noisy_curves_are_grouped_ordered_and_fitted():
     assert_that(contours.GetCellData().GetArray("ContourId") is not None, "ContourId")
     assert_that(contours.GetCellData().GetArray("Closed") is not None, "Closed")
     curves = f.GetOutputDataObject(2)
+    # Each output is coloured by its groups (ParaView colours by the active scalars).
+    active = [pts.GetPointData().GetScalars(), contours.GetCellData().GetScalars(), curves.GetCellData().GetScalars()]
+    assert_that([a.GetName() if a else None for a in active] == ["GroupId", "ContourId", "GroupId"],
+                f"active scalars {[a.GetName() if a else None for a in active]}")
     assert_that(curves.GetNumberOfCells() >= 2, f"{curves.GetNumberOfCells()} fitted curves")
     # Every sample of the fitted curves lies near one of the true curves (within 6 noise sigmas,
     # the open-end and bend allowance of the core's own tests).

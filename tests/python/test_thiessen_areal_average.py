@@ -229,7 +229,15 @@ def test_a_gauge_whose_station_id_others_share_is_named_with_its_index():
     f.Update(1)
     f.Update(0)
     told = [w for w in warnings[before:] if "no point-data array 'station' (StationIdArrayName)" in w]
-    assert_that(len(told) == 1 and "named by their index" in told[0], f"{warnings[before:]}")
+    assert_that(len(told) == 1 and "named by their index; their arrays are station_id, value" in told[0],
+                f"{warnings[before:]}")
+    # The arrays the gauges have are listed where a name matches none (a ParaView user typing it
+    # into the panel otherwise had to look them up).
+    errors = messages_of(f)
+    f.SetValueArrayName("precip")
+    f.Update(1)
+    assert_that(len(errors) == 1 and "numeric point-data array 'precip' (ValueArrayName)" in errors[0]
+                and errors[0].rstrip().endswith("their arrays are station_id, value"), f"{errors}")
 
 
 def test_gauges_never_weighted_and_no_gauge_inside_are_reported():
@@ -367,8 +375,9 @@ def test_gauges_in_blocks_as_a_point_layer_gives_them_are_joined():
     g.Modified()
     errors = messages_of(g)
     g.Update(1)
-    assert_that(len(errors) == 1 and "need a numeric point-data array 'value': block 2 (composite index 3) of the points "
-                "has no array 'value', which block 0 (composite index 1) has" in errors[0], f"{errors}")
+    assert_that(len(errors) == 1 and "need a numeric point-data array 'value' (ValueArrayName): block 2 (composite "
+                "index 3) of the points has no array 'value', which block 0 (composite index 1) has" in errors[0],
+                f"{errors}")
     # A value array shorter than the gauges of one point set was read past its end (a mean of
     # garbage): an error naming it.
     short = gauges_polydata(coords, names, [1.0, 2.0, 3.0, 4.0, 5.0])

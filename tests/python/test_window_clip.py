@@ -194,6 +194,8 @@ def test_review_cases():
     assert_that(sorted(cell_values(out, "PieceArea")) == [0.5, 0.5] and cell_values(out, "ClippedArea") == [1.0, 1.0]
                 and cell_values(out, "TileId") == [0, 0] and cell_values(out, "AreaFraction") == [0.4, 0.4],
                 "PieceArea 0.5 each, ClippedArea 1 and AreaFraction 1 / 2.5 on both")
+    scalars = out.GetCellData().GetScalars()
+    assert_that(scalars is not None and scalars.GetName() == "AreaFraction", "coloured by AreaFraction")
 
 
 def test_input_arrays_named_like_the_filters_are_kept_under_another_name():
