@@ -32,6 +32,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -1300,6 +1301,44 @@ void Sweep::ProcessCentroid(std::int32_t a)
   this->Processed[a] = 1;
 }
 
+/// Renumbers the corners' Thiessen vertices (ids below vertexCount) from 0 in the order they first
+/// come, each group of vertices that some tile merged (pairs at one rounded point) as one.
+void NumberCornerVertices(std::size_t vertexCount,
+  const std::vector<std::pair<std::int32_t, std::int32_t>>& merged,
+  std::vector<std::int32_t>& corners)
+{
+  std::vector<std::int32_t> parent; // union-find over the merged vertices only (rare)
+  const auto root = [&parent](std::int32_t v)
+  {
+    while (parent[v] != v)
+    {
+      v = parent[v] = parent[parent[v]];
+    }
+    return v;
+  };
+  if (!merged.empty())
+  {
+    parent.resize(vertexCount);
+    std::iota(parent.begin(), parent.end(), 0);
+    for (const auto& [kept, dropped] : merged)
+    {
+      const std::int32_t a = root(kept), b = root(dropped);
+      parent[std::max(a, b)] = std::min(a, b);
+    }
+  }
+  std::vector<std::int32_t> number(vertexCount, -1);
+  std::int32_t next = 0;
+  for (std::int32_t& v : corners)
+  {
+    const std::int32_t r = parent.empty() ? v : root(v);
+    if (number[r] < 0)
+    {
+      number[r] = next++;
+    }
+    v = number[r];
+  }
+}
+
 } // namespace
 
 ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector<Point2>& points)
@@ -1485,7 +1524,10 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
   // vertices' coordinates.
   constexpr std::size_t kAhead = 4;
   const std::int32_t* vertexIds = sweep.PackedVertexIds.data();
-  std::vector<Point2> polygon; // a tile's vertices (scratch)
+  std::vector<Point2> polygon;                               // a tile's vertices (scratch)
+  std::vector<std::int32_t> corners;                         // and the Thiessen vertex of each
+  std::vector<std::pair<std::int32_t, std::int32_t>> merged; // vertices that round to one point
+  result.CornerVertexIds.reserve(sweep.PackedVertexIds.size());
   for (std::size_t r = 0; r < accepted; ++r)
   {
     if (r + 3 * kAhead < accepted)
@@ -1510,17 +1552,24 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
     const auto& record = sweep.Records[sortedOf[id]];
     tiles.PointIds.push_back(id);
     polygon.clear();
+    corners.clear();
     for (std::int32_t k = 0; k < record.Size; ++k)
     {
       const Point2& v = sweep.Vertices[vertexIds[record.Start + k]];
       polygon.push_back(
         scale == 0 ? v : Point2{ std::ldexp(v.x, -scale), std::ldexp(v.y, -scale) });
+      corners.push_back(vertexIds[record.Start + k]);
     }
     // Distinct Thiessen vertices can round to one point (the circumcentres of nearly co-circular
     // points, a window crossing within rounding of a corner): the polygon lists it once, as the
-    // Green-Sibson engine's does. Its area and NeighborCount (the exact sides) stay as they are.
-    DropRepeatedVertices(polygon);
+    // Green-Sibson engine's does, and the vertices are made one. Its area and NeighborCount (the
+    // exact sides) stay as they are.
+    if (HasRepeatedVertex(polygon))
+    {
+      DropRepeatedVertices(polygon, corners, &merged);
+    }
     tiles.Vertices.insert(tiles.Vertices.end(), polygon.begin(), polygon.end());
+    result.CornerVertexIds.insert(result.CornerVertexIds.end(), corners.begin(), corners.end());
     tiles.Offsets.push_back(static_cast<std::int64_t>(tiles.Vertices.size()));
     tiles.Areas.push_back(scale == 0 ? record.Area : std::ldexp(record.Area, -2 * scale));
     tiles.NeighborCounts.push_back(record.Size);
@@ -1546,6 +1595,7 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
       graph.Kinds.push_back(g.second);
     }
   }
+  NumberCornerVertices(sweep.Vertices.size(), merged, result.CornerVertexIds);
   return result;
 }
 

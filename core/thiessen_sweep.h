@@ -93,6 +93,11 @@ struct SweepSearchCounts
 struct ThiessenSweepResult
 {
   TileSet Tiles; ///< same layout as ComputeTiles (one tile per accepted id, ascending)
+  /// Per corner of Tiles.Vertices, the Thiessen vertex it is, numbered from 0 in the order the
+  /// corners first come: tiles that meet at a vertex name it alike (a mesh, MeshOfNumberedCorners
+  /// in tiles.h), and distinct vertices that a tile lists once, as they round to one point, are
+  /// one.
+  std::vector<std::int32_t> CornerVertexIds;
   ContiguityGraph Contiguities;          ///< same layout as ComputeContiguityGraph
   std::vector<std::int32_t> RejectedIds; ///< ascending
   std::vector<std::pair<std::int32_t, std::int32_t>> Duplicates; ///< (duplicate, kept), ascending

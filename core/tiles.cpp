@@ -14,6 +14,7 @@
 #include <cstring>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -863,19 +864,24 @@ void TessellationDual::NumberFaceVertices(UninitializedVector<Point2>& vertices)
     });
 }
 
-TileMesh MeshOfSeparateTiles(TileSet tiles)
+TileMesh MeshOfNumberedCorners(TileSet tiles, const std::vector<std::int32_t>& cornerVertexIds)
 {
-  if (tiles.Vertices.size() > std::size_t(INT32_MAX))
+  if (cornerVertexIds.size() != tiles.Vertices.size())
   {
-    throw InputError(
-      "too many tile vertices for 32-bit vertex ids: " + std::to_string(tiles.Vertices.size()));
+    throw std::logic_error("MeshOfNumberedCorners: " + std::to_string(cornerVertexIds.size()) +
+      " vertex ids for " + std::to_string(tiles.Vertices.size()) + " corners");
   }
   TileMesh mesh;
   mesh.PointIds.assign(tiles.PointIds.begin(), tiles.PointIds.end());
   mesh.Offsets.assign(tiles.Offsets.begin(), tiles.Offsets.end());
-  mesh.VertexIds.resize(tiles.Vertices.size());
-  std::iota(mesh.VertexIds.begin(), mesh.VertexIds.end(), 0);
-  mesh.Vertices.assign(tiles.Vertices.begin(), tiles.Vertices.end());
+  mesh.VertexIds.assign(cornerVertexIds.begin(), cornerVertexIds.end());
+  for (std::size_t k = 0; k < cornerVertexIds.size(); ++k)
+  {
+    if (std::size_t(cornerVertexIds[k]) == mesh.Vertices.size()) // (first come: the next id)
+    {
+      mesh.Vertices.push_back(tiles.Vertices[k]);
+    }
+  }
   mesh.Areas.assign(tiles.Areas.begin(), tiles.Areas.end());
   mesh.NeighborCounts.assign(tiles.NeighborCounts.begin(), tiles.NeighborCounts.end());
   return mesh;

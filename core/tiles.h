@@ -104,9 +104,11 @@ struct TileMeshAndGraph
   ContiguityGraph Graph;
 };
 
-/// A TileSet as a TileMesh in which every tile has its own vertices (nothing is shared): for a
-/// caller that writes either engine's tiles one way.
-TileMesh MeshOfSeparateTiles(TileSet tiles);
+/// A TileSet as a TileMesh whose vertices are numbered by the caller: cornerVertexIds[k] is the
+/// vertex of corner k (tiles.Vertices[k]), ids from 0 without gaps, in the order they first come,
+/// equal ids only for equal corners. For the Brassel-Reif engine (ThiessenSweepResult's
+/// CornerVertexIds), so that its tiles make a conforming mesh as TessellationDual's do.
+TileMesh MeshOfNumberedCorners(TileSet tiles, const std::vector<std::int32_t>& cornerVertexIds);
 
 /// Scales a mesh's vertices by 2^exponent and its areas by 2^(2 exponent), exactly: the tiles of
 /// points scaled by Window::RangeScaleExponent, brought back to the points' own scale.

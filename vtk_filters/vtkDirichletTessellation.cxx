@@ -67,12 +67,13 @@ TessellationResult RunBrasselReif(const tessera::Window& window,
 {
   if (!window.IsAxisAlignedRectangle())
   {
-    throw tessera::InputError("the BrasselReif algorithm needs a window that is a rectangle with "
-                              "sides parallel to the axes (WindowBounds, or constraints that make "
-                              "one); use GreenSibson for other windows");
+    throw tessera::InputError("the Brassel-Reif algorithm (BrasselReif) needs a window that is a "
+                              "rectangle with sides parallel to the axes (WindowBounds, or "
+                              "constraints that make one); use Green-Sibson (GreenSibson) for "
+                              "other windows");
   }
   tessera::ThiessenSweepResult sweep = tessera::ComputeThiessenSweep(window, points);
-  return { tessera::MeshOfSeparateTiles(std::move(sweep.Tiles)),
+  return { tessera::MeshOfNumberedCorners(std::move(sweep.Tiles), sweep.CornerVertexIds),
     std::move(sweep.Contiguities),
     std::move(sweep.RejectedIds),
     std::move(sweep.Duplicates) };

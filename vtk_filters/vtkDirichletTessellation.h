@@ -40,9 +40,9 @@
  *
  * Output 0 (vtkPolyData): one polygon per accepted point (anticlockwise), in ascending point id.
  * Its points are the tile corners: circumcentres inside the window, window corners and the points
- * where tile edges cross the window boundary. Tiles that meet share the point there (with the
- * GreenSibson algorithm: the tiles form a conforming mesh; with BrasselReif each tile has its
- * own copies). Cell data:
+ * where tile edges cross the window boundary. Tiles that meet share the point there: the tiles
+ * form a conforming mesh (with BrasselReif, tiles share a point where their corners are equal,
+ * as the sweep makes them). Cell data:
  * - `PointId` (vtkIdType): the index of the point in the input;
  * - `Area` (double): the tile's area, by compensated summation;
  * - `NeighborCount` (int): contiguities of the tile, window edges included (its polygon sides,
