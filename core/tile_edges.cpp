@@ -230,15 +230,19 @@ bool ClipCanonical(const Tess& tess,
     const double dx = std::ldexp(-(pb.y - pa.y), scale), dy = std::ldexp(pb.x - pa.x, scale);
     // An axis-aligned side keeps its coordinate exactly (-c/a or -c/b, one rounding), so a
     // rectangle's tiles have straight sides; only the other coordinate comes from the bisector.
+    // The distance from the midpoint is taken as the mean of the distances from the two points
+    // (exact differences where the points are near the side), not from the rounded midpoint:
+    // that rounding, times a steep bisector's slope, put a crossing 2^26 ulps off (points 2e-9
+    // apart across, 2^-54 along; the Brassel-Reif sweep, which writes it so, was an ulp off).
     if (h.b == 0.0 && dx != 0.0)
     {
       const double x = -h.c / h.a;
-      return Point2{ x, my + (x - mx) / dx * dy };
+      return Point2{ x, my + 0.5 * ((x - pa.x) + (x - pb.x)) / dx * dy };
     }
     if (h.a == 0.0 && dy != 0.0)
     {
       const double y = -h.c / h.b;
-      return Point2{ mx + (y - my) / dy * dx, y };
+      return Point2{ mx + 0.5 * ((y - pa.y) + (y - pb.y)) / dy * dx, y };
     }
     const double t = -(h.a * mx + h.b * my + h.c) / (h.a * dx + h.b * dy);
     return Point2{ mx + t * dx, my + t * dy };

@@ -945,6 +945,26 @@ TEST(ThiessenSweep, NoTileRepeatsAVertex)
     SCOPED_TRACE(c.Name);
     const ThiessenSweepResult r = expect_engines_agree(c.Points, c.Region);
     const TileSet& t = r.Tiles;
+    // The corners' vertex numbers (the mesh the filter writes): from 0 in first-use order, one
+    // number for one place, and every tile's corners numbered apart (merged vertices are one).
+    ASSERT_EQ(r.CornerVertexIds.size(), t.Vertices.size());
+    std::vector<Point2> placeOf;
+    for (std::size_t k = 0; k < t.Vertices.size(); ++k)
+    {
+      const std::size_t id = std::size_t(r.CornerVertexIds[k]);
+      ASSERT_LE(id, placeOf.size()) << "corner " << k;
+      if (id == placeOf.size())
+      {
+        placeOf.push_back(t.Vertices[k]);
+      }
+      EXPECT_TRUE(placeOf[id] == t.Vertices[k]) << "corner " << k << " of vertex " << id;
+    }
+    for (std::size_t k = 0; k < t.PointIds.size(); ++k)
+    {
+      std::set<std::int32_t> ids(
+        r.CornerVertexIds.begin() + t.Offsets[k], r.CornerVertexIds.begin() + t.Offsets[k + 1]);
+      EXPECT_EQ(std::int64_t(ids.size()), t.Offsets[k + 1] - t.Offsets[k]) << "tile " << k;
+    }
     for (std::size_t k = 0; k < t.PointIds.size(); ++k)
     {
       const std::vector<Point2> polygon(
@@ -959,4 +979,35 @@ TEST(ThiessenSweep, NoTileRepeatsAVertex)
     }
   }
   EXPECT_GT(merged, 0u);
+}
+
+// Where a steep bisector crosses a side of the window, both engines give the crossing to an ulp or
+// two of the exact point (exact rationals): two points 2e-9 apart across the side x = 1 and 2^-54
+// along it. The Green-Sibson engine took the distance to the side from the rounded midpoint, and
+// that rounding, times the bisector's slope (3.6e7), put its crossing 2^26 ulps off.
+TEST(ThiessenSweep, SteepBisectorsCrossTheWindowWithinUlpsOfExact)
+{
+  const std::vector<Point2> points{ { 1.0 - 3e-9, 0.25 }, { 1.0 - 1e-9, 0.25 + 0x1p-54 } };
+  const Window window = Window::Rectangle(0.0, 1.0, 0.0, 1.0);
+  // The bisector's y on x = 1, exactly: |(1, y) - a|^2 = |(1, y) - b|^2.
+  const mpq_class ax = points[0].x, ay = points[0].y, bx = points[1].x, by = points[1].y;
+  const mpq_class exact =
+    ((1 - bx) * (1 - bx) - (1 - ax) * (1 - ax) + by * by - ay * ay) / (2 * (by - ay));
+  const double y = exact.get_d();
+  const double ulp = std::nextafter(y, 1.0) - y;
+  const TileSet engines[] = { ComputeTiles(DirichletTessellation(window, points)),
+    ComputeThiessenSweep(window, points).Tiles };
+  for (const TileSet& tiles : engines)
+  {
+    int found = 0;
+    for (const Point2& v : tiles.Vertices)
+    {
+      if (v.x == 1.0 && v.y > 0.0 && v.y < 1.0)
+      {
+        ++found;
+        EXPECT_LE(std::fabs(v.y - y), 2 * ulp) << "crossing at y = " << v.y << ", exactly " << y;
+      }
+    }
+    EXPECT_EQ(found, 2); // one corner of each tile
+  }
 }
