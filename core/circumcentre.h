@@ -22,9 +22,12 @@
 // origin with very different exponents), amplified by a nearly collinear triple (a vertex 2.66
 // off along a sliver 20 long), and squared sides that underflow (points a subnormal distance
 // apart: a vertex 12.6 off, or NaN). When the area's condition (the size of its products over
-// their difference) exceeds 2^16, or the squares or the area leave the safe range, the offset is
+// their difference) exceeds 2^6, or the squares or the area leave the safe range, the offset is
 // recomputed from exact sides, scaled by a power of two, with exact numerators and denominator
-// (expansions), each rounded to a few ulps (ExactCircumcentreOffset, circumcentre.cpp).
+// (expansions), each rounded to a few ulps (ExactCircumcentreOffset, circumcentre.cpp). The
+// rounded formula loses about the condition's bits: at 2^16 (the line once drawn) flat
+// triangles and slivers came some 16 bits off (8.7e-12 of the circumradius); at 2^6, some 1 in
+// 8000 triangles of uniform points take the exact path, and the worst measured is 2.4e-13.
 
 #include "geometry.h"
 
@@ -88,12 +91,12 @@ inline CircumcentreTerms CircumcentreOffset(const Point2& a, const Point2& b, co
   {
     SidesFrom(b, c, a, t); // a cyclic turn: the orientation is kept
   }
-  // The area's products, once: a difference above 2^-16 of their size is well conditioned (and
+  // The area's products, once: a difference above 2^-6 of their size is well conditioned (and
   // is what TwiceSignedArea would return). Written so that NaN and infinities fail the test.
   const double p = t.bx * t.cy, q = t.by * t.cx;
   const double twice = p - q;
   t.products = std::fabs(p) + std::fabs(q);
-  const bool wellConditioned = std::fabs(twice) > 0x1p-16 * t.products &&
+  const bool wellConditioned = std::fabs(twice) > 0x1p-6 * t.products &&
     std::fabs(twice) >= 0x1p-900 && std::min(t.b2, t.c2) >= 0x1p-900 &&
     std::max(t.b2, t.c2) <= 0x1p900;
   if (wellConditioned)
