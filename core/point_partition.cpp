@@ -136,6 +136,24 @@ void KeepContinuationsOnly(std::vector<double>& beyond,
   }
 }
 
+/// The unit tangent of contour c at position (pixel units), over up to 3 pixels either side
+/// (wrapping round a closed contour); (0, 0) for a contour of one pixel.
+Point2 ContourTangent(const RidgeContours& contours, int c, int position, int imageWidth)
+{
+  const int first = contours.Offsets[c], count = contours.Offsets[c + 1] - first;
+  const int reach = std::min(3, count / 2);
+  const auto at = [&](int offset)
+  {
+    int k = position - first + offset;
+    k = contours.Closed[c] ? ((k % count) + count) % count : std::clamp(k, 0, count - 1);
+    const int pixel = contours.Pixels[std::size_t(first + k)];
+    return Point2{ double(pixel % imageWidth), double(pixel / imageWidth) };
+  };
+  const Point2 a = at(-reach), b = at(reach);
+  const double length = std::hypot(b.x - a.x, b.y - a.y);
+  return length > 0.0 ? Point2{ (b.x - a.x) / length, (b.y - a.y) / length } : Point2{ 0.0, 0.0 };
+}
+
 } // namespace
 
 std::vector<double> ContourArcLengths(const RidgeContours& contours, int width)
@@ -230,6 +248,32 @@ PointPartition PartitionPoints(const std::vector<Point2>& pixelPoints,
       std::clamp(result.NodeOrigin[c] + extendedArc[k] * result.NodePerPixel[c], 0.0, 1.0);
   }
   return result;
+}
+
+std::vector<std::size_t> PointsWithoutOrder(const std::vector<Point2>& pixelPoints,
+  const RidgeContours& contours,
+  const PointPartition& partition,
+  int width,
+  double maximumGap)
+{
+  std::vector<std::size_t> tied;
+  for (std::size_t k = 0; k < pixelPoints.size(); ++k)
+  {
+    const int position = partition.Projection[k];
+    if (position < 0 || partition.Continues[k])
+    {
+      continue;
+    }
+    const int pixel = contours.Pixels[std::size_t(position)];
+    const Point2 t = ContourTangent(contours, partition.GroupId[k], position, width);
+    const double along =
+      (pixelPoints[k].x - pixel % width) * t.x + (pixelPoints[k].y - pixel / width) * t.y;
+    if (std::fabs(along) > maximumGap)
+    {
+      tied.push_back(k);
+    }
+  }
+  return tied;
 }
 
 } // namespace tessera

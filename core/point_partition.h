@@ -62,4 +62,16 @@ PointPartition PartitionPoints(const std::vector<Point2>& pixelPoints,
   int height,
   double maximumGap);
 
+/// The points (indices) whose node says nothing of their order: not continuing a contour past its
+/// end (Continues), and more than maximumGap (pixels) from their projection pixel along the
+/// contour's tangent there (over up to 3 pixels either side). A point's nearest pixel is within
+/// half a pixel of it along the contour except past an end or beyond a bend, so these lie past an
+/// end after a gap, or along a stretch where the ridge turns away from the points or stops; each
+/// shares its pixel's node with the points there.
+std::vector<std::size_t> PointsWithoutOrder(const std::vector<Point2>& pixelPoints,
+  const RidgeContours& contours,
+  const PointPartition& partition,
+  int width,
+  double maximumGap);
+
 } // namespace tessera

@@ -181,9 +181,23 @@ void FitCurves(const std::vector<Point2>& points,
   }
   if (!single.empty())
   {
+    // Each named with its point, which a caller can trace to its input (a file's line).
+    std::vector<std::size_t> pointOf(std::size_t(contours.Count()), 0);
+    for (std::size_t k = 0; k < points.size(); ++k)
+    {
+      if (partition.Projection[k] >= 0)
+      {
+        pointOf[std::size_t(partition.GroupId[k])] = k;
+      }
+    }
     result.Warnings.push_back(std::to_string(single.size()) +
       " group(s) of a single point get no curve (a curve needs two points): group(s) " +
-      ListNames(single.size(), [&](std::size_t k) { return std::to_string(single[k]); }));
+      ListNames(single.size(),
+        [&](std::size_t k)
+        {
+          return std::to_string(single[k]) + " (point " +
+            std::to_string(pointOf[std::size_t(single[k])]) + ")";
+        }));
   }
 }
 
@@ -236,6 +250,34 @@ void MeasureContourDistances(const std::vector<Point2>& pixelPoints,
   }
 }
 
+/// A warning naming the points that share the node of their projection pixel with no order among
+/// them: not continuing a contour past its end (PointPartition's Continues), and more than 2 basis
+/// widths from their pixel along the contour's tangent there (a point's nearest pixel is within
+/// half a pixel of it along the contour, except past an end or beyond a bend). They lie past an
+/// end, or along a stretch where the points go on and the ridge turns away or stops: on the Fiji
+/// epicentres at a width of 5, 247 of a trench's 793 points had one node, spread over 1775 km
+/// beyond a hooked end, and nothing said so.
+void NameUnorderedPoints(const std::vector<Point2>& pixelPoints,
+  const RidgeContours& contours,
+  const PointPartition& partition,
+  const PixelGrid& grid,
+  double width,
+  RidgeGroupingResult& result)
+{
+  const std::vector<std::size_t> tied =
+    PointsWithoutOrder(pixelPoints, contours, partition, grid.Width, 2.0 * width);
+  if (!tied.empty())
+  {
+    result.Warnings.push_back(std::to_string(tied.size()) +
+      " point(s) lie more than 2 basis widths (" + NumberText(2.0 * width * grid.Spacing) +
+      " in the points' units) along their contour beyond the pixel they are projected on (past an "
+      "end, or where the ridge turns away from the points): each shares that pixel's node, so "
+      "their order along the curve is not known and the curve does not follow them (another "
+      "Width, or the Gaussian basis, may give the ridge their stretch): point(s) " +
+      ListNames(tied.size(), [&](std::size_t k) { return std::to_string(tied[k]); }));
+  }
+}
+
 } // namespace
 
 RidgeGrouping::RidgeGrouping(const RidgeGroupingSettings& settings)
@@ -252,6 +294,14 @@ RidgeGrouping::RidgeGrouping(const RidgeGroupingSettings& settings)
       " pixels, margins of the width on both sides): at most " + NumberText(widest));
   }
   CheckPositiveScale(settings.CurveSigma, "curve sigma");
+  if (settings.CurveSigma > MaxCurveSigma)
+  {
+    throw InputError("curve sigma " + NumberText(settings.CurveSigma) + " is above " +
+      NumberText(MaxCurveSigma) +
+      " (node units: a share of each curve's length): each point would pull on the whole curve, "
+      "which shrinks towards the points' mean (a closed curve keeps exp(-2 pi^2 sigma^2) of its "
+      "radius); the paper uses 0.01 to 0.08");
+  }
   CheckPositive(settings.CurveSamplesPerPixel, "curve samples per pixel");
   if (!(settings.MinimumContourLength >= 0.0) || !std::isfinite(settings.MinimumContourLength))
   {
@@ -462,6 +512,7 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
   result.GroupId = partition.GroupId;
   result.Node = partition.Node;
   MeasureContourDistances(pixelPoints, contours, partition, grid, this->Settings.Width, result);
+  NameUnorderedPoints(pixelPoints, contours, partition, grid, this->Settings.Width, result);
   for (int c = 0; c < contours.Count(); ++c)
   {
     AppendPixelPolyline(contours, c, grid, result.Contours);

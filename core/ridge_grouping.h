@@ -58,7 +58,10 @@ struct RidgeGroupingSettings
   double Width = 5.0;
   /// Pixels along the longer side of the image (margins included); 0 = automatic.
   int ImageSize = 0;
-  /// Smoothness of the RaG curves, in node units (the paper uses 0.01 to 0.08).
+  /// Smoothness of the RaG curves, in node units (the paper uses 0.01 to 0.08), at most
+  /// RidgeGrouping::MaxCurveSigma. Smoothing pulls a curve in: a closed one's radius shrinks by
+  /// exp(-2 pi^2 sigma^2) (3% at 0.04, 18% at 0.1), and an open one stops short of its points' ends
+  /// by some sigma times its length.
   double CurveSigma = 0.04;
   JoinRule Join = JoinRule::Longest;
   /// Ridge contours shorter than this (pixels) are dropped before partitioning, and so are closed
@@ -119,6 +122,9 @@ class RidgeGrouping
 public:
   static constexpr int MaxImageSize = 2048;
   static constexpr int MaxAutomaticImageSize = 1024;
+  /// Above this CurveSigma a curve is mostly its points' mean: a closed one keeps under 30% of its
+  /// radius (exp(-2 pi^2 0.25^2) = 0.29), and at 0.3 it collapsed to a point. An InputError.
+  static constexpr double MaxCurveSigma = 0.25;
   /// Points further than this many basis widths from their contour are named in a warning: a
   /// point that far adds almost nothing to the ridge it joins (a Gaussian basis is e^-50 of its
   /// peak there, the inverse multiquadric a tenth), so it joined only for want of a nearer contour,

@@ -17,6 +17,7 @@ Run with Debian's /usr/bin/python3 and PYTHONPATH=build/python.
 """
 
 import argparse
+import math
 import os
 import re
 import sys
@@ -37,12 +38,18 @@ def read_quakes(path):
     depth.SetName("depth_km")
     mag.SetName("mag")
     lines = []
-    for line, row in csv_input.rows(path, ("lat", "long", "depth", "mag"), "epicentres"):
+    def passenger(row, column, line):
+        """depth and mag only ride along (the grouping uses neither): absent or missing is NaN."""
+        if csv_input.is_missing(row.get(column)):
+            return math.nan
+        return csv_input.number(row, column, path, line)
+
+    for line, row in csv_input.rows(path, ("lat", "long"), "epicentres", optional=("depth", "mag")):
         lines.append(line)
         lon, lat = csv_input.number(row, "long", path, line), csv_input.number(row, "lat", path, line)
         points.InsertNextPoint(lon, lat, 0.0)
-        depth.InsertNextValue(csv_input.number(row, "depth", path, line))
-        mag.InsertNextValue(csv_input.number(row, "mag", path, line))
+        depth.InsertNextValue(passenger(row, "depth", line))
+        mag.InsertNextValue(passenger(row, "mag", line))
     data = vtkPolyData()
     data.SetPoints(points)
     data.GetPointData().AddArray(depth)
@@ -75,13 +82,13 @@ def grouping_error(text):
 
 
 def with_lines(text, path, lines):
-    """A warning that lists points by id ("point(s) 69, 397"), with their lines in the file."""
+    """A warning that lists points by id ("point(s) 69, 397", "point 12"), with their lines in the file."""
     def lines_of(match):
         ids = [int(k) for k in re.findall(r"\d+", match.group(1))]
         if not ids or max(ids) >= len(lines):
             return match.group(0)
         return f"{match.group(0)} (line(s) {', '.join(str(lines[k]) for k in ids)} of {path})"
-    return re.sub(r"point\(s\) (\d+(?:, \d+)*)", lines_of, text)
+    return re.sub(r"point(?:\(s\))? (\d+(?:, \d+)*)", lines_of, text)
 
 
 def polylines(data):
@@ -95,8 +102,10 @@ def polylines(data):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--quakes", default=os.path.join(HERE, "data", "fiji_quakes.csv"),
-                        help=f"CSV of epicentres: columns lat, long (degrees), depth, mag; {csv_input.SEPARATORS_TEXT}")
-    parser.add_argument("--out", default="out", help="output directory (created if missing)")
+                        help=f"CSV of epicentres: columns lat, long (degrees), and optionally depth and mag "
+                             f"(carried to the output, not used; empty or missing values are NaN); "
+                             f"{csv_input.SEPARATORS_TEXT} (default: examples/data/fiji_quakes.csv)")
+    parser.add_argument("--out", default="out", help="output directory, created if missing (default: out)")
     # (why the example's settings differ from the filter's defaults)
     parser.add_argument("--width", type=float, default=4.0,
                         help="basis width in pixels, at most 1020 (default %(default)s; the filter's is 5, which "

@@ -239,6 +239,50 @@ TEST(PointPartition, AFarPointPastAnEndDoesNotStretchTheNodes)
   EXPECT_FALSE(alone.Extended[2]);
 }
 
+// Points without order (PointsWithoutOrder): those further than the gap from their projection
+// pixel along the contour (past an end after a gap, beyond a bend) and not continuing it, against
+// points on the contour, beside it far off (their order is their pixel's: not named), continuing
+// past its end, and just beyond the bend.
+TEST(PointPartition, PointsAlongTheContourBeyondTheirPixelAreNamedAsWithoutOrder)
+{
+  // An L: row 5 from x = 10 to 30, then column 30 from y = 6 to 25 (the bend at (30, 5)).
+  const int width = 80, height = 60;
+  tessera::RidgeContours contour;
+  for (int i = 10; i <= 30; ++i)
+  {
+    contour.Pixels.push_back(5 * width + i);
+  }
+  for (int j = 6; j <= 25; ++j)
+  {
+    contour.Pixels.push_back(j * width + 30);
+  }
+  contour.Offsets.push_back(static_cast<int>(contour.Pixels.size()));
+  contour.Closed.push_back(0);
+  contour.Lengths.push_back(40.0);
+  const std::vector<Point2> points{
+    { 15.0, 5.2 },  // 0: on the row
+    { 20.0, 0.0 },  // 1: beside the row, 5 pixels off (its x is its pixel's): ordered
+    { 10.0, 5.0 },  // 2: the start
+    { 8.0, 5.0 },   // 3: 2 pixels before the start: continues it
+    { 0.5, 5.0 },   // 4: 7.5 pixels before that, after a gap: without order
+    { 30.0, 27.0 }, // 5: past the far end, 2 pixels: continues
+    { 30.0, 45.0 }, // 6: 18 pixels further: without order
+    { 40.0, 2.0 },  // 7: beyond the bend, nearest (30, 5), 10 pixels along the row's line
+    { 32.0, 4.0 },  // 8: just beyond the bend: its pixel's place
+  };
+  const double gap = 4.0;
+  const tessera::PointPartition partition =
+    tessera::PartitionPoints(points, contour, width, height, gap);
+  ASSERT_EQ(partition.Projection[7], 20); // (30, 5), the bend
+  EXPECT_EQ(tessera::PointsWithoutOrder(points, contour, partition, width, gap),
+    (std::vector<std::size_t>{ 4, 6, 7 }));
+  // Without a gap limit every point past an end continues it: only the bend's is named.
+  const tessera::PointPartition continuing =
+    tessera::PartitionPoints(points, contour, width, height, NoGapLimit);
+  EXPECT_EQ(tessera::PointsWithoutOrder(points, contour, continuing, width, gap),
+    (std::vector<std::size_t>{ 7 }));
+}
+
 TEST(PointPartition, NoContourLeavesEveryPointUnassigned)
 {
   tessera::RidgeContours none;

@@ -617,10 +617,12 @@ TEST(RidgeGrouping, GroupsOfOnePointAreNamedAsHavingNoCurve)
     ASSERT_EQ(warning != result.Warnings.end(), !alone.empty()) << "seed " << seed;
     if (!alone.empty())
     {
-      std::string ids;
+      std::string ids; // each group with its one point
       for (std::size_t k = 0; k < alone.size(); ++k)
       {
-        ids += (k ? ", " : "") + std::to_string(alone[k]);
+        const auto member = std::find(result.GroupId.begin(), result.GroupId.end(), alone[k]);
+        ids += (k ? ", " : "") + std::to_string(alone[k]) + " (point " +
+          std::to_string(member - result.GroupId.begin()) + ")";
       }
       EXPECT_NE(warning->find(std::to_string(alone.size()) + " group(s) of a single point"),
         std::string::npos)

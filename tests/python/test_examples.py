@@ -1511,7 +1511,23 @@ def test_the_other_examples_run_on_their_data():
         with open(quakes, "w") as f:
             f.write("lat,lon\n1,2\n")
         status, _, stderr = run_example("ridge_grouping.py", "--out", out, "--quakes", quakes)
-        assert_that(status == 1 and "no column 'long', 'depth', 'mag'" in stderr, f"ridge_grouping.py: {stderr}")
+        assert_that(status == 1 and "no column 'long' (it needs lat, long" in stderr, f"ridge_grouping.py: {stderr}")
+        # depth and mag only ride along: a file without them, or with a value missing, is grouped
+        # (a missing depth stopped the run), the missing values NaN in the points' arrays.
+        from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+
+        rows = [line.split(",") for line in open(os.path.join(EXAMPLE_DATA, "fiji_quakes.csv")).read().split()[1:301]]
+        for header, row_text in (("lat,long", lambda r: f"{r[0]},{r[1]}"),
+                                 ("lat,long,depth,mag", lambda r: f"{r[0]},{r[1]},,{r[3]}")):
+            with open(quakes, "w") as f:
+                f.write(header + "\n" + "\n".join(row_text(r) for r in rows) + "\n")
+            status, _, stderr = run_example("ridge_grouping.py", "--out", out, "--quakes", quakes)
+            reader = vtkXMLPolyDataReader()
+            reader.SetFileName(os.path.join(out, "fiji_points.vtp"))
+            reader.Update()
+            depth = reader.GetOutput().GetPointData().GetArray("depth_km")
+            assert_that(status == 0 and depth is not None and depth.GetNumberOfTuples() == 300
+                        and all(math.isnan(depth.GetValue(k)) for k in range(300)), f"{header}: {status} {stderr}")
         # An epicentre the projection rejects, a file without rows and a grouping error: one line
         # each (the file's line of the epicentre), no VTK log, no traceback.
         north = write(out, "north.csv", "lat,long,depth,mag\n-20.4,181.6,562,4.8\n\n95,181,100,4.5\n")

@@ -218,6 +218,8 @@ def test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept():
              ("SetCurveSigma", 0.0, "curve sigma 0"), ("SetMinimumContourLength", -2.0, "minimum contour length -2"),
              # A width or sigma whose square underflows made NaN curves (no message) or a NaN pixel.
              ("SetCurveSigma", 1e-162, "curve sigma 1e-162 is below 1e-150"),
+             # A sigma of half the curve or more made every curve a point near its points' mean.
+             ("SetCurveSigma", 5.0, "curve sigma 5 is above 0.25"),
              ("SetWidth", 1e-170, "basis width 1e-170 is below 1e-150"),
              ("SetImageSize", -1, "image size -1 is negative")]
     for setter, value, expected in cases:
