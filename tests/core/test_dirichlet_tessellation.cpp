@@ -665,6 +665,26 @@ TEST(DirichletTessellation, RemovingAVertexOfHighDegreeEqualsNeverInserted)
   EXPECT_TRUE(MakeCanonical(t) == expected);
 }
 
+/// Removes the last of points (a vertex of at least minimumDegree neighbours): the result equals
+/// the tessellation built without it, and reinserted, the one built with it.
+void ExpectRemovingTheLastEqualsNeverInserted(const std::vector<Point2>& points,
+  std::size_t minimumDegree)
+{
+  const std::int32_t last = std::int32_t(points.size() - 1);
+  const Canonical expected =
+    MakeCanonical(Tess(UnitWindow(), std::vector<Point2>(points.begin(), points.end() - 1)));
+  Tess t(UnitWindow(), points);
+  std::vector<std::int32_t> around;
+  t.AppendNeighbours(last, around);
+  ASSERT_GE(around.size(), minimumDegree);
+  t.Remove(last);
+  CheckStructure(t);
+  CheckEmptyCircles(t);
+  EXPECT_TRUE(MakeCanonical(t) == expected);
+  t.Reinsert(last);
+  EXPECT_TRUE(MakeCanonical(t) == MakeCanonical(Tess(UnitWindow(), points)));
+}
+
 // Links above 64 vertices are triangulated by a batch build of their vertices (cutting ears was
 // quadratic in the degree: the centre of 4000 points on a circle took 7.6 s): all co-circular (a
 // circle of 600 and its centre), and a link with reflex vertices (a flower of alternating radii,
@@ -681,19 +701,9 @@ TEST(DirichletTessellation, RemovingTheCentreOfLargeLinksEqualsNeverInserted)
       const double r = shape == 0 ? 0.4 : 0.3 + 0.05 * (k % 2);
       points.push_back({ 0.5 + r * std::cos(a), 0.5 + r * std::sin(a) });
     }
-    const Canonical expected = MakeCanonical(Tess(UnitWindow(), points));
     points.push_back({ 0.5, 0.5 });
-    Tess t(UnitWindow(), points);
-    std::vector<std::int32_t> around;
-    t.AppendNeighbours(count, around);
-    ASSERT_GE(around.size(), shape == 0 ? 600u : 200u) << "shape " << shape;
-    t.Remove(count);
-    CheckStructure(t);
-    CheckEmptyCircles(t);
-    EXPECT_TRUE(MakeCanonical(t) == expected) << "shape " << shape;
-    // And back: reinserted, it is the tessellation built with it.
-    t.Reinsert(count);
-    EXPECT_TRUE(MakeCanonical(t) == MakeCanonical(Tess(UnitWindow(), points))) << "shape " << shape;
+    SCOPED_TRACE("shape " + std::to_string(shape));
+    ExpectRemovingTheLastEqualsNeverInserted(points, shape == 0 ? 600u : 200u);
   }
 }
 
@@ -718,21 +728,12 @@ TEST(DirichletTessellation, RemovingAHullVertexBeforeLargePocketsEqualsNeverInse
     {
       points.push_back({ 0.5, 0.6 }); // beyond the arc's top: a hull vertex between two pockets
     }
-    const std::int32_t centre = std::int32_t(points.size());
-    const Canonical expected = MakeCanonical(Tess(UnitWindow(), points));
     points.push_back({ 0.5, 0.1 });
-    Tess t(UnitWindow(), points);
-    std::vector<std::int32_t> around;
-    t.AppendNeighbours(centre, around);
-    ASSERT_GE(around.size(), shape == 1 ? 200u : 400u) << "shape " << shape;
-    t.Remove(centre);
-    CheckStructure(t);
-    CheckEmptyCircles(t);
-    EXPECT_TRUE(MakeCanonical(t) == expected) << "shape " << shape;
-    t.Reinsert(centre);
-    EXPECT_TRUE(MakeCanonical(t) == MakeCanonical(Tess(UnitWindow(), points))) << "shape " << shape;
+    SCOPED_TRACE("shape " + std::to_string(shape));
+    ExpectRemovingTheLastEqualsNeverInserted(points, shape == 1 ? 200u : 400u);
   }
 }
+
 // The nearest accepted point against brute force (exact distance comparisons, the smallest id of
 // those equally near): uniform points, a lattice (queries at cell centres and lattice points:
 // four-way and two-way ties), duplicates and removed points, queries outside the window, and the
