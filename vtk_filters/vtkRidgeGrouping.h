@@ -36,7 +36,9 @@
  *   points' units, NaN when unassigned or when there is no contour: points beyond 10 basis
  *   widths are named in a warning; for points past an open contour's end that continue it,
  *   each within two widths of the one before, the distance is to the end pixel, and only their
- *   distance off the line of the end's tangent counts for the warning);
+ *   distance off the line of the end's tangent counts for the warning; points more than two
+ *   widths beyond their contour pixel along the contour, past an end after a gap or where the
+ *   ridge turns away from them, share that pixel's Node with no order, and a warning names them);
  *   an input array of one of those names is passed as NAME_input, with a warning.
  *   Field data `ImageSize` (pixels along the longer side, as used), `PixelSize`,
  *   `FieldErrorBound` (bound of |FFT field - direct sum| at any pixel).
