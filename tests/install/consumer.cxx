@@ -1,25 +1,22 @@
-// Uses both installed targets: the core's tessellation and the VTK filter, on the same points, and
-// requires them to agree with each other and with the window's area (Failed, require.h). Prints
-// "ok" when every requirement held.
-#include "require.h"
-
+// Uses both installed targets, as a GoogleTest of a user's own: the core's tessellation and the
+// VTK filter, on the same points, must agree with each other and with the window's area.
 #include "dirichlet_tessellation.h" // Tessera::core
 #include "tiles.h"
 #include "window.h"
 
+#include "vtkCellData.h"
 #include "vtkDirichletTessellation.h" // Tessera::Filters
 #include "vtkDoubleArray.h"
-#include "vtkCellData.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
-#include <cmath>
-#include <cstdio>
+#include <gtest/gtest.h>
+
 #include <random>
 #include <vector>
 
-int main()
+TEST(InstalledTessera, TheFilterAndTheCoreGiveTheSameTiles)
 {
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> u(0.0, 1.0);
@@ -43,16 +40,9 @@ int main()
   vtkCellData* cells = filter->GetOutput()->GetCellData();
   auto* areas = vtkDoubleArray::SafeDownCast(cells->GetArray("Area"));
   vtkDataArray* ids = cells->GetArray("PointId");
-  if (!(areas && ids))
-  {
-    return Failed("the filter's output lacks its Area or PointId array");
-  }
-  if (!(areas->GetNumberOfTuples() == static_cast<vtkIdType>(tiles.Areas.size())))
-  {
-    return Failed("the filter gave %lld tiles, the core %zu",
-      static_cast<long long>(areas->GetNumberOfTuples()),
-      tiles.Areas.size());
-  }
+  ASSERT_TRUE(areas && ids) << "the filter's output lacks its Area or PointId array";
+  ASSERT_EQ(areas->GetNumberOfTuples(), static_cast<vtkIdType>(tiles.Areas.size()))
+    << "tiles of the filter and of the core";
   std::vector<double> coreArea(points.size(), -1.0);
   for (std::size_t t = 0; t < tiles.Areas.size(); ++t)
   {
@@ -64,20 +54,8 @@ int main()
     const double area = areas->GetValue(c);
     const auto id = static_cast<std::size_t>(ids->GetTuple1(c));
     sum += area;
-    if (!(id < points.size()))
-    {
-      return Failed("a tile's PointId %zu is no input point", id);
-    }
-    if (!(std::abs(area - coreArea[id]) <= 1e-12 * area))
-    {
-      return Failed(
-        "point %zu: the filter's tile area %.17g, the core's %.17g", id, area, coreArea[id]);
-    }
+    ASSERT_LT(id, points.size()) << "a tile's PointId is no input point";
+    EXPECT_NEAR(area, coreArea[id], 1e-12 * area) << "the tile of point " << id;
   }
-  if (!(std::abs(sum - 1.0) <= 1e-12))
-  {
-    return Failed("the tiles' areas sum to %.17g, not the window's 1", sum);
-  }
-  std::printf("ok\n");
-  return 0;
+  EXPECT_NEAR(sum, 1.0, 1e-12) << "the tiles' areas against the window's";
 }

@@ -24,9 +24,10 @@ foreach(consumer IN ITEMS consumer core_consumer)
   run("configuring ${consumer}" ${CMAKE_COMMAND} -S ${project} -B ${WORK_DIR}/${consumer}
     -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix})
   run("building ${consumer}" ${CMAKE_COMMAND} --build ${WORK_DIR}/${consumer})
+  # A GoogleTest program: a failed check exits non-zero (run fails); one that ran no test, too.
   run("running ${consumer}" ${WORK_DIR}/${consumer}/${consumer})
-  if(NOT output STREQUAL "ok\n")
-    message(FATAL_ERROR "${consumer} printed: ${output}")
+  if(NOT output MATCHES "\\[  PASSED  \\] 1 test")
+    message(FATAL_ERROR "${consumer} did not pass its one test:\n${output}")
   endif()
 endforeach()
 # The installed Python package, alone on the path (not the build tree's).

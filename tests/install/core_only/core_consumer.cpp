@@ -1,16 +1,14 @@
-// The core alone: four points in the unit square, whose tiles must be its quarters (Failed,
-// require.h). Prints "ok" when every requirement held.
-#include "../require.h"
-
+// The core alone, as a GoogleTest of a user's own: four points in the unit square, whose tiles
+// must be its quarters.
 #include "dirichlet_tessellation.h"
 #include "tiles.h"
 #include "window.h"
 
-#include <cmath>
-#include <cstdio>
+#include <gtest/gtest.h>
+
 #include <vector>
 
-int main()
+TEST(InstalledCore, FourPointsInTheUnitSquareGetItsQuarters)
 {
   const std::vector<tessera::Point2> points{
     { 0.25, 0.25 }, { 0.75, 0.25 }, { 0.25, 0.75 }, { 0.75, 0.75 }
@@ -18,17 +16,9 @@ int main()
   const tessera::DirichletTessellation tessellation(
     tessera::Window::Rectangle(0.0, 1.0, 0.0, 1.0), points);
   const tessera::TileSet tiles = tessera::ComputeTiles(tessellation);
-  if (!(tiles.Areas.size() == 4))
-  {
-    return Failed("%zu tiles, not four", tiles.Areas.size());
-  }
+  ASSERT_EQ(tiles.Areas.size(), 4u);
   for (const double area : tiles.Areas)
   {
-    if (!(std::abs(area - 0.25) <= 1e-15))
-    {
-      return Failed("a tile's area is %.17g, not a quarter", area);
-    }
+    EXPECT_NEAR(area, 0.25, 1e-15);
   }
-  std::printf("ok\n");
-  return 0;
 }
