@@ -268,13 +268,17 @@ void ValidateLonLat(const std::vector<Point2>& lonlat)
   }
 }
 
+bool LooksProjected(const Point2& p)
+{
+  return std::isfinite(p.x) && std::isfinite(p.y) && (std::abs(p.x) >= 1e4 || std::abs(p.y) >= 1e4);
+}
+
 std::string ProjectedCoordinatesNote(const Point2& p)
 {
-  const bool metres =
-    std::isfinite(p.x) && std::isfinite(p.y) && (std::abs(p.x) >= 1e4 || std::abs(p.y) >= 1e4);
-  return metres ? ": these look like projected coordinates (metres); give longitude and latitude "
-                  "in degrees (a projection's inverse gives them back)"
-                : std::string();
+  return LooksProjected(p)
+    ? ": these look like projected coordinates (metres); give longitude and latitude "
+      "in degrees (a projection's inverse gives them back)"
+    : std::string();
 }
 
 GeographicExtent ComputeExtent(const std::vector<Point2>& lonlat)

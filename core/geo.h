@@ -72,6 +72,9 @@ std::string LonLatFault(const Point2& p);
 /// Throws InputError naming the first point with a NaN/Inf coordinate or out of InLonLatRange.
 void ValidateLonLat(const std::vector<Point2>& lonlat);
 
+/// Whether a finite p has a coordinate of 10^4 or more: metres of a projection (UTM's eastings
+/// run 1.6e5 to 8.4e5), not degrees.
+bool LooksProjected(const Point2& p);
 /// For a finite point out of the lon/lat ranges: ": these look like projected coordinates ..."
 /// when a coordinate is 10^4 or more (metres of a projection, as UTM's eastings of 1.6e5 to
 /// 8.4e5, fed as degrees), else "" (-1031.5 is a typo of -103.15, not metres). Appended to the

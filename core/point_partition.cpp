@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace tessera
 {
@@ -62,6 +63,16 @@ int NearestContourPixel(const Point2& p, const std::vector<int>& nearest, int wi
   return best;
 }
 
+// How far p lies beyond pixel `at` in the direction from pixel `from` to pixel `to` (pixel
+// indices of an image `width` wide); 0 where from and to are one pixel.
+double DistanceAlong(const Point2& p, int at, int from, int to, int width)
+{
+  const double tx = to % width - from % width;
+  const double ty = to / width - from / width;
+  const double norm = std::hypot(tx, ty);
+  return norm > 0.0 ? ((p.x - at % width) * tx + (p.y - at / width) * ty) / norm : 0.0;
+}
+
 // How far p lies past the end pixel `position` of an open contour, along the contour's direction
 // at that end (0 if it is not an end pixel, the contour is closed, or p is not past it).
 double DistanceBeyondEnd(const Point2& p,
@@ -80,11 +91,7 @@ double DistanceBeyondEnd(const Point2& p,
   const int reach = std::min(5, last - first);
   const int inner = contours.Pixels[position == first ? first + reach : last - reach];
   const int end = contours.Pixels[position];
-  const double tx = end % width - inner % width;
-  const double ty = end / width - inner / width;
-  const double norm = std::hypot(tx, ty);
-  const double along = ((p.x - end % width) * tx + (p.y - end / width) * ty) / norm;
-  return std::max(0.0, along);
+  return std::max(0.0, DistanceAlong(p, end, inner, end, width));
 }
 
 // The points past one contour end, in order of their distance beyond it (along the end tangent),
@@ -136,22 +143,19 @@ void KeepContinuationsOnly(std::vector<double>& beyond,
   }
 }
 
-/// The unit tangent of contour c at position (pixel units), over up to 3 pixels either side
-/// (wrapping round a closed contour); (0, 0) for a contour of one pixel.
-Point2 ContourTangent(const RidgeContours& contours, int c, int position, int imageWidth)
+/// The pixels up to 3 before and after position along contour c (wrapping round a closed
+/// contour, stopping at an open one's ends), between which its tangent there is taken.
+std::pair<int, int> TangentPixels(const RidgeContours& contours, int c, int position)
 {
   const int first = contours.Offsets[c], count = contours.Offsets[c + 1] - first;
   const int reach = std::min(3, count / 2);
   const auto at = [&](int offset)
   {
-    int k = position - first + offset;
-    k = contours.Closed[c] ? ((k % count) + count) % count : std::clamp(k, 0, count - 1);
-    const int pixel = contours.Pixels[std::size_t(first + k)];
-    return Point2{ double(pixel % imageWidth), double(pixel / imageWidth) };
+    const int k = position - first + offset;
+    return contours.Pixels[std::size_t(
+      first + (contours.Closed[c] ? ((k % count) + count) % count : std::clamp(k, 0, count - 1)))];
   };
-  const Point2 a = at(-reach), b = at(reach);
-  const double length = std::hypot(b.x - a.x, b.y - a.y);
-  return length > 0.0 ? Point2{ (b.x - a.x) / length, (b.y - a.y) / length } : Point2{ 0.0, 0.0 };
+  return { at(-reach), at(reach) };
 }
 
 } // namespace
@@ -264,11 +268,9 @@ std::vector<std::size_t> PointsWithoutOrder(const std::vector<Point2>& pixelPoin
     {
       continue;
     }
+    const auto [before, after] = TangentPixels(contours, partition.GroupId[k], position);
     const int pixel = contours.Pixels[std::size_t(position)];
-    const Point2 t = ContourTangent(contours, partition.GroupId[k], position, width);
-    const double along =
-      (pixelPoints[k].x - pixel % width) * t.x + (pixelPoints[k].y - pixel / width) * t.y;
-    if (std::fabs(along) > maximumGap)
+    if (std::fabs(DistanceAlong(pixelPoints[k], pixel, before, after, width)) > maximumGap)
     {
       tied.push_back(k);
     }

@@ -250,26 +250,19 @@ void MeasureContourDistances(const std::vector<Point2>& pixelPoints,
   }
 }
 
-/// A warning naming the points that share the node of their projection pixel with no order among
-/// them: not continuing a contour past its end (PointPartition's Continues), and more than 2 basis
-/// widths from their pixel along the contour's tangent there (a point's nearest pixel is within
-/// half a pixel of it along the contour, except past an end or beyond a bend). They lie past an
-/// end, or along a stretch where the points go on and the ridge turns away or stops: on the Fiji
-/// epicentres at a width of 5, 247 of a trench's 793 points had one node, spread over 1775 km
-/// beyond a hooked end, and nothing said so.
-void NameUnorderedPoints(const std::vector<Point2>& pixelPoints,
-  const RidgeContours& contours,
-  const PointPartition& partition,
+/// A warning naming the points without order (PointsWithoutOrder, maximumGap pixels being 2 basis
+/// widths): each shares its projection pixel's node. On the Fiji epicentres at a width of 5, 247
+/// of a trench's 793 points had one node, spread over 1775 km beyond a hooked end, and nothing
+/// said so.
+void NameUnorderedPoints(const std::vector<std::size_t>& tied,
   const PixelGrid& grid,
-  double width,
+  double maximumGap,
   RidgeGroupingResult& result)
 {
-  const std::vector<std::size_t> tied =
-    PointsWithoutOrder(pixelPoints, contours, partition, grid.Width, 2.0 * width);
   if (!tied.empty())
   {
     result.Warnings.push_back(std::to_string(tied.size()) +
-      " point(s) lie more than 2 basis widths (" + NumberText(2.0 * width * grid.Spacing) +
+      " point(s) lie more than 2 basis widths (" + NumberText(maximumGap * grid.Spacing) +
       " in the points' units) along their contour beyond the pixel they are projected on (past an "
       "end, or where the ridge turns away from the points): each shares that pixel's node, so "
       "their order along the curve is not known and the curve does not follow them (another "
@@ -507,12 +500,16 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
 
   // Points past a contour end continue it while each is within two basis widths of the one
   // before: points further apart along a curve no longer make one ridge of the field.
+  const double maximumGap = 2.0 * this->Settings.Width;
   const PointPartition partition =
-    PartitionPoints(pixelPoints, contours, grid.Width, grid.Height, 2.0 * this->Settings.Width);
+    PartitionPoints(pixelPoints, contours, grid.Width, grid.Height, maximumGap);
   result.GroupId = partition.GroupId;
   result.Node = partition.Node;
   MeasureContourDistances(pixelPoints, contours, partition, grid, this->Settings.Width, result);
-  NameUnorderedPoints(pixelPoints, contours, partition, grid, this->Settings.Width, result);
+  NameUnorderedPoints(PointsWithoutOrder(pixelPoints, contours, partition, grid.Width, maximumGap),
+    grid,
+    maximumGap,
+    result);
   for (int c = 0; c < contours.Count(); ++c)
   {
     AppendPixelPolyline(contours, c, grid, result.Contours);

@@ -169,10 +169,10 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     const std::size_t accepted = tessellation.AcceptedCount();
     if (accepted > 0 && !tessellation.IsTwoDimensional())
     {
-      vtkWarningMacro(<< "no Delaunay triangle: "
-                      << (accepted < 3 ? "fewer than three distinct points are"
-                                       : "the " + std::to_string(accepted) + " distinct points")
-                      << (accepted < 3 ? " triangulated" : " triangulated all lie on one line")
+      const std::string why = accepted < 3
+        ? "fewer than three distinct points are triangulated"
+        : "the " + std::to_string(accepted) + " distinct points triangulated all lie on one line";
+      vtkWarningMacro(<< "no Delaunay triangle: " << why
                       << " (Dirichlet Tessellation gives their tiles, strips across the window)");
     }
     return 1;

@@ -83,22 +83,9 @@ std::string StationName(const vtkVariant& value)
 
 using tessera_vtk::ListNames;
 
-/// The names of a table's columns, for messages: "a, b, c", or "none".
-std::string ColumnNames(vtkTable* table)
+/// The names of a table's columns or of point data's arrays, for messages: "a, b, c", or "none".
+std::string ArrayNames(vtkFieldData* data)
 {
-  const std::string names = ListNames(static_cast<std::size_t>(table->GetNumberOfColumns()),
-    [table](std::size_t c)
-    {
-      const char* name = table->GetColumnName(static_cast<vtkIdType>(c));
-      return std::string(name ? name : "(unnamed)");
-    });
-  return names.empty() ? "none" : names;
-}
-
-/// The names of the gauges' point-data arrays, for messages: "a, b, c", or "none".
-std::string PointArrayNames(vtkPointSet* gauges)
-{
-  vtkPointData* data = gauges->GetPointData();
   const std::string names = ListNames(static_cast<std::size_t>(data->GetNumberOfArrays()),
     [data](std::size_t a)
     {
@@ -119,7 +106,7 @@ vtkAbstractArray* ObservationColumn(vtkTable* table,
   if (!array || array->GetNumberOfComponents() != 1)
   {
     throw tessera::InputError("the observations table has no column '" + column + "' (" + property +
-      ": " + holds + "); its columns are " + ColumnNames(table));
+      ": " + holds + "); its columns are " + ArrayNames(table->GetRowData()));
   }
   return array;
 }
@@ -1056,7 +1043,7 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
         vtkWarningMacro(<< "the gauges have no point-data array '" << this->StationIdArrayName
                         << "' (StationIdArrayName): the outputs have no StationId and the gauges "
                            "are named by their index; their arrays are "
-                        << PointArrayNames(gauges));
+                        << ArrayNames(gauges->GetPointData()));
       }
       this->Build(gauges, stationIds, catchment, observations);
       in.BuiltFor = stamp;
@@ -1175,7 +1162,7 @@ vtkAbstractArray* vtkThiessenArealAverage::GaugeStationIds(vtkPointSet* gauges, 
                                         : std::string("the gauges have ")) +
       "no point-data array '" + this->StationIdArrayName +
       "' (StationIdArrayName) of station ids to match the observations with; their arrays are " +
-      PointArrayNames(gauges));
+      ArrayNames(gauges->GetPointData()));
   }
   if (ids && ids->GetNumberOfTuples() != gauges->GetNumberOfPoints())
   {
@@ -1326,7 +1313,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
       throw tessera::InputError(
         "without observations the gauges need a numeric point-data array '" + this->ValueArrayName +
         "' (ValueArrayName)" + (in.ValueProblem.empty() ? std::string() : ": " + in.ValueProblem) +
-        "; their arrays are " + PointArrayNames(gauges));
+        "; their arrays are " + ArrayNames(gauges->GetPointData()));
     }
     // The one step's time: the gauges' own (from a time-aware source), else 0.
     vtkInformation* gaugesInfo = gauges->GetInformation();

@@ -60,21 +60,19 @@ bool PlaneBoundsOf(vtkDataObject* data, double bounds[6])
   return bounds[0] <= bounds[1] && bounds[2] <= bounds[3];
 }
 
-/// Whether bounds lie within the degrees a longitude and a latitude take (longitudes up to 360,
-/// as a catchment across the 180th meridian may run on past 180).
+/// Whether bounds lie within the degrees a longitude and a latitude take (tessera::InLonLatRange
+/// at two opposite corners).
 bool WithinDegrees(const double bounds[6])
 {
-  return bounds[0] >= -360.0 && bounds[1] <= 360.0 && bounds[2] >= -90.0 && bounds[3] <= 90.0;
+  return tessera::InLonLatRange({ bounds[0], bounds[2] }) &&
+    tessera::InLonLatRange({ bounds[1], bounds[3] });
 }
 
-/// Whether bounds reach 1e4 or more from the origin: metres, not degrees (geo.h's
-/// ProjectedCoordinatesNote draws the same line).
+/// Whether bounds reach metres (tessera::LooksProjected at the corner farthest out).
 bool ReachesMetres(const double bounds[6])
 {
-  return std::max({ std::fabs(bounds[0]),
-           std::fabs(bounds[1]),
-           std::fabs(bounds[2]),
-           std::fabs(bounds[3]) }) >= 1e4;
+  return tessera::LooksProjected({ std::max(std::fabs(bounds[0]), std::fabs(bounds[1])),
+    std::max(std::fabs(bounds[2]), std::fabs(bounds[3])) });
 }
 
 std::string BoundsText(const double bounds[6])
