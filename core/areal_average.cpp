@@ -1,5 +1,6 @@
 #include "areal_average.h"
 
+#include "cache_line.h"
 #include "dirichlet_tessellation.h"
 #include "display_pieces.h"
 #include "errors.h"
@@ -270,8 +271,9 @@ struct ThiessenArealAverage::State
   // margin, and then the derived tile itself is off by as much.
   double ClearMargin = 0.0;
   std::vector<std::int32_t> Neighbours; // Apply's scratch
-  /// What clipping and measuring a tile needs besides the tile: one per thread of a clipping pass.
-  struct ClipScratch
+  /// What clipping and measuring a tile needs besides the tile: one per thread of a clipping pass,
+  /// written at every tile by that thread, on cache lines of its own (cache_line.h).
+  struct alignas(CacheLineBytes) ClipScratch
   {
     Catchment::Workspace Work;
     ClippedRings Rings;

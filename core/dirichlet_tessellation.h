@@ -30,6 +30,7 @@
 // the accepted points are kept sorted along their line (CollinearPoints) and there are no
 // triangles.
 
+#include "cache_line.h"
 #include "geometry.h"
 #include "uninitialized_allocator.h"
 #include "window.h"
@@ -198,8 +199,9 @@ private:
   /// Serial) owns every triangle. The two regions of a parallel batch build each own the
   /// triangles whose vertices all lie on their side of a vertical seam (ghosts count for neither
   /// side), and defer a point whose insertion would touch any other triangle
-  /// (two_region_build.cpp).
-  struct Region
+  /// (two_region_build.cpp). Each region has cache lines of its own: two threads write the two
+  /// at every insertion (cache_line.h).
+  struct alignas(CacheLineBytes) Region
   {
     double SeamX = std::numeric_limits<double>::infinity();
     bool Upper = false; ///< owns the points with x >= SeamX rather than x < SeamX

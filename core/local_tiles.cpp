@@ -2,6 +2,7 @@
 // chosen points only, labelling just the faces around them, bit for bit as TessellationDual.
 #include "tiles.h"
 
+#include "cache_line.h"
 #include "predicates_inline.h"
 #include "parallel_chunks.h"
 #include "tile_edges.h"
@@ -466,31 +467,36 @@ TileSet LocalTiles(const Tess& tess,
   const std::vector<std::int32_t> bounds =
     parallel::ChunkBounds(std::int32_t(starts.size()), parallel::ThreadCount(starts.size(), 250));
   const std::size_t chunks = bounds.size() - 1;
-  std::vector<TileSet> partTiles(chunks);
-  std::vector<FaceMateLists> partMates(mates ? chunks : 0);
+  // Each chunk's results, chunk 0's too, on cache lines of their own (cache_line.h): a chunk
+  // writes its vectors' ends at every tile.
+  std::vector<OwnCacheLines<TileSet>> partTiles(chunks);
+  std::vector<OwnCacheLines<FaceMateLists>> partMates(mates ? chunks : 0);
   parallel::RunChunks(chunks,
     [&](std::size_t k)
     {
-      TileSet& out = k == 0 ? tiles : partTiles[k];
-      FaceMateLists* outMates = !mates ? nullptr : k == 0 ? mates : &partMates[k];
-      if (k > 0)
+      TileSet& out = partTiles[k].Value;
+      FaceMateLists* outMates = mates ? &partMates[k].Value : nullptr;
+      out.Offsets.push_back(0);
+      if (outMates)
       {
-        out.Offsets.push_back(0);
-        if (outMates)
-        {
-          outMates->Offsets.push_back(0);
-        }
+        outMates->Offsets.push_back(0);
       }
       LocalTilesOfRange(tess, starts, bounds[k], bounds[k + 1], wantTiles, out, outMates);
     });
+  tiles = std::move(partTiles[0].Value);
+  if (mates)
+  {
+    *mates = std::move(partMates[0].Value);
+  }
   for (std::size_t k = 1; k < chunks; ++k)
   {
-    AppendTileSet(tiles, partTiles[k]);
+    AppendTileSet(tiles, partTiles[k].Value);
     if (mates)
     {
-      Append(mates->PointIds, partMates[k].PointIds);
-      AppendOffsets(mates->Offsets, partMates[k].Offsets, std::int64_t(mates->Ids.size()));
-      Append(mates->Ids, partMates[k].Ids);
+      const FaceMateLists& part = partMates[k].Value;
+      Append(mates->PointIds, part.PointIds);
+      AppendOffsets(mates->Offsets, part.Offsets, std::int64_t(mates->Ids.size()));
+      Append(mates->Ids, part.Ids);
     }
   }
   return tiles;
