@@ -11,7 +11,8 @@ weighted mean. A gauge outside the state still owns the part of the state neares
 
 Writes into --out:
   areal_mean.csv         year,month,stations_used,stations_weighted,areal_mean (one row a month,
-                         from the first to the last month of the observations, months without
+                         from the first to the last month of the observations, or from --start
+                         to --end, months without
                          any row included; stations_used = gauges that reported, gauges
                          at one place counted once,
                          stations_weighted = those whose tile reaches the catchment; areal_mean
@@ -30,7 +31,8 @@ Writes into --out:
                          but not used (no observed value, a tile that never reaches the catchment,
                          at the place of an earlier gauge, an observation of such a gauge in a
                          month where the earlier one reported, a repeated observation, an observation of
-                         a station no gauge has, or without a station id or time); for a gauge at
+                         a station no gauge has, or without a station id or time, and an
+                         observation before --start or after --end); for a gauge at
                          the place of an earlier one, or a repeated observation, the note gives
                          the earlier one's line; the warnings name only the first 20 of each kind
   areal_mean_by_ATTRIBUTE.csv
@@ -385,7 +387,8 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
 MOST_STEPS = 2_000_000
 
 
-def read_observations(path, gauge_of, filler, stations_path, missing_values=(), station_ids=()):
+def read_observations(path, gauge_of, filler, stations_path, missing_values=(), station_ids=(), bounds=(None, None),
+                      bound_texts=(None, None)):
     """The observations (a long or a wide file, observation_records) as a long-format vtkTable
     (station_id, time, precip), its steps (Steps: months, days or hours), the set of reporting
     gauges of every step, as gauge indices, the file's line of each observation read (table row r,
@@ -398,7 +401,10 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     mean missing (--missing-value, such as -9999), read as a missing value. Ends the script when no
     row names a gauge's station, naming the stations file (stations_path) and some of its ids as
     written (station_ids): ids that do not match at all (a prefix, another numbering) would
-    otherwise give months without a mean."""
+    otherwise give months without a mean. bounds: --start's and --end's steps (period_bound's, or
+    None), as bound_texts gives them: only the observations between them are in the table (the
+    others are returned, as (line, station id) each), and the table's steps run from the one to the
+    other."""
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
     from vtkmodules.vtkCommonDataModel import vtkTable
 
@@ -467,15 +473,28 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     for m, gauges in reporting.items():
         merged.setdefault(step_of[m], set()).update(gauges)
     reporting = merged
-    time_of = [steps.time(step_of[m]) for m in step_index]  # (by index)
-    for k in read:
-        times.InsertNextValue(time_of[k])
+    period = Period(steps, *bounds, bound_texts, path)
+    outside = []  # (line, station id) of each observation before --start or after --end
     if lines and not present:
         # (the ids as written, each once, in the files' order: they are for comparing by eye)
         seen, there = list(names), list(dict.fromkeys(station_ids))
         csv_input.fail(f"{path}: none of its {len(lines)} rows names a station of {stations_path} "
                        f"(ids here: {', '.join(seen[:5])}{', ...' if len(seen) > 5 else ''}; ids there: "
                        f"{', '.join(there[:5])}{', ...' if len(there) > 5 else ''})")
+    if period.given():
+        stations, values, lines, read, outside = rows_in_period(stations, values, lines, read,
+                                                                [step_of[m] in period for m in step_index])
+        every_step = {step for step in every_step if step in period}
+        present = {step for step in present if step in period}
+        reporting = {step: gauges for step, gauges in reporting.items() if step in period}
+        if outside:
+            print(f"{path}: {len(outside)} observation(s) outside --start/--end are not used (unused_inputs.csv "
+                  "lists them)", file=sys.stderr)
+        if not present:
+            given = " and ".join(f"--{name} {text}" for name, text in zip(("start", "end"), bound_texts)
+                                 if text is not None)
+            csv_input.fail(f"{path}: no observation of a gauge's station is within {given} (its {steps.unit}s run "
+                           f"from {steps.text(min(step_of.values()))} to {steps.text(max(step_of.values()))})")
     if unmatched:
         shown = ", ".join(f"{name!r} (column {number})" for number, name in unmatched[:20])
         print(f"{path}: {len(unmatched)} column(s) name no station of {stations_path} and are not read: {shown}"
@@ -509,22 +528,27 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     # no gauge reported: a row with a missing value (for a gauge's station: the filter makes no
     # step of a row naming a station no gauge has) keeps it a step of its own, so that
     # areal_mean.csv has every month (or day, or hour), empty where nothing was measured.
+    time_of = [steps.time(step_of[m]) for m in step_index]  # (by index)
+    for k in read:
+        times.InsertNextValue(time_of[k])
     if every_step and gauge_of:
-        first, last = min(every_step), max(every_step)
+        first, last = period.start or min(every_step), period.end or max(every_step)
         count = steps.count(first, last)
         span = ""
         if count > len(present):
             # (the lines of the first and the last step, where a mistyped year makes the span;
-            # looked for only when there are steps without rows)
-            read_steps, wanted, line_of = list(step_index), {first, last}, {}
-            for row, k in enumerate(read):
+            # looked for only when there are steps without rows; --start and --end say themselves)
+            named = {step: option for step, option in ((first, "--start"), (last, "--end"))
+                     if getattr(period, option[2:]) is not None}
+            read_steps, wanted, line_of = list(step_index), {first, last} - set(named), {}
+            for row, k in enumerate(read if wanted else ()):
                 step = step_of[read_steps[k]]
                 if step in wanted and step not in line_of:
                     line_of[step] = lines[row]
                     if len(line_of) == len(wanted):
                         break
-            span = (f"between {steps.text(first)} (line {line_of[first]}) and {steps.text(last)} "
-                    f"(line {line_of[last]})")
+            named.update((step, f"line {line}") for step, line in line_of.items())
+            span = f"between {steps.text(first)} ({named[first]}) and {steps.text(last)} ({named[last]})"
         if count > MOST_STEPS:
             csv_input.fail(f"{path}: the observations span {count} {steps.unit}s {span}, more than "
                            f"{MOST_STEPS} (each a row of areal_mean.csv, and some 1 GB of memory a "
@@ -540,7 +564,28 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     table = vtkTable()
     for column in (stations, times, values):
         table.AddColumn(column)
-    return table, steps, reporting, lines, unmatched
+    return table, steps, reporting, lines, unmatched, outside
+
+
+def rows_in_period(stations, values, lines, read, keep):
+    """The observation rows whose step is in --start/--end (keep: by step index, as read holds
+    them): their station ids, values, lines and step indices, and the (line, station id) of each
+    of the others."""
+    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
+
+    kept_stations, kept_values = vtkStringArray(), vtkDoubleArray()
+    kept_stations.SetName(stations.GetName())
+    kept_values.SetName(values.GetName())
+    kept_lines, kept_read, outside = array.array("l"), array.array("l"), []
+    for row, k in enumerate(read):
+        if keep[k]:
+            kept_stations.InsertNextValue(stations.GetValue(row))
+            kept_values.InsertNextValue(values.GetValue(row))
+            kept_lines.append(lines[row])
+            kept_read.append(k)
+        else:
+            outside.append((lines[row], stations.GetValue(row)))
+    return kept_stations, kept_values, kept_lines, kept_read, outside
 
 
 def zip_member(path):
@@ -1039,6 +1084,7 @@ def write_summary(table, steps, path):
 # The filter's lists of valid input it did not use (output 1's field data), as unused_inputs.csv
 # gives them: (array, what it lists ({unit}: month or day), whether it lists observation rows
 # rather than gauges).
+OUTSIDE_PERIOD = "observation before --start or after --end"
 UNUSED_LISTS = (
     ("UnobservedGaugeIds", "gauge without any observed value", False),
     ("UnweightedGaugeIds", "gauge whose tile never reaches the catchment", False),
@@ -1146,13 +1192,14 @@ def write_means_by_feature(features, name, gauges, observations, steps, whole, c
               file=sys.stderr)
 
 
-def write_unused(summary, files, station_ids, observations, unit, path, unmatched_columns=()):
+def write_unused(summary, files, station_ids, observations, unit, path, unmatched_columns=(), outside=()):
     """Every input the filter did not use, one row each (the warnings name the first 20 of each
     kind): kind, file, line, station_id and a note: for a gauge at the place of an earlier one,
-    that gauge's line; for an observation repeating an earlier one, the earlier one's line; and
-    a row for each column of a wide observations file that names no gauge's station
+    that gauge's line; for an observation repeating an earlier one, the earlier one's line; a
+    row for each column of a wide observations file that names no gauge's station
     (unmatched_columns: (column number, name), read_observations), at the header's line, its
-    number in the note. Returns the number of rows."""
+    number in the note; and a row for each observation outside --start/--end (outside: (line,
+    station id), read_observations), which the filter never saw. Returns the number of rows."""
     fields = summary.GetFieldData()
     stations = observations.GetColumnByName("station_id")
     earlier = fields.GetArray("DuplicateOfGaugeIds")
@@ -1180,6 +1227,9 @@ def write_unused(summary, files, station_ids, observations, unit, path, unmatche
         for number, name in unmatched_columns:
             out.writerow(["observations column naming no gauge's station (not read)", files.observations, 1, name,
                           f"column {number}"])
+            written += 1
+        for line, station in outside:
+            out.writerow([OUTSIDE_PERIOD, files.observations, line, station, ""])
             written += 1
     return written
 
@@ -1399,18 +1449,67 @@ def plot_series(rows, path):
     plt.close(fig)
 
 
-def chosen_hour(text):
+def chosen_hour(text, option="--hour"):
     """--hour's (year, month, day, hour), written as the observations write an hour (YYYY-MM-DD
     HH:00, or with a T; 24:00 is hour 0 of the next day); ends the script naming the value
-    otherwise."""
+    otherwise (as the option's, option)."""
     date = DATE.match(text.strip())
     clock = TIME_OF_DAY.fullmatch(text.strip(), date.end()) if date and date.group(3) else None
     if not clock or any(int(v or 0) for v in clock.groups()[1:]):
-        sys.exit(f"--hour {text!r}: expected a date and hour, YYYY-MM-DD HH:00")
+        sys.exit(f"{option} {text!r}: expected a date and hour, YYYY-MM-DD HH:00")
     step = tuple(int(v) for v in (*date.groups(), clock.group(1)))
     if not is_calendar_day(*step[:3]) or step[3] > 24:
-        sys.exit(f"--hour {text!r}: is not an hour of the calendar")
+        sys.exit(f"{option} {text!r}: is not an hour of the calendar")
     return hour_step(step)
+
+
+def period_bound(text, option):
+    """--start's or --end's (option's) step as written: (year, month), (year, month, day) or (year,
+    month, day, hour), or None when not given; ends the script naming the value otherwise."""
+    if text is None:
+        return None
+    date = DATE.match(text.strip())
+    if date and date.group(3) and date.end() < len(text.strip()):
+        return chosen_hour(text, option)
+    if not date or date.end() < len(text.strip()):
+        sys.exit(f"{option} {text!r}: expected YYYY-MM, YYYY-MM-DD or 'YYYY-MM-DD HH:00'")
+    step = tuple(int(v) for v in date.groups() if v is not None)
+    if step[0] < 1 or not 1 <= step[1] <= 12 or (len(step) == 3 and not is_calendar_day(*step)):
+        sys.exit(f"{option} {text!r}: is not a date of the calendar")
+    return step
+
+
+class Period:
+    """--start and --end (period_bound's steps, or None), made steps of the observations' unit
+    (steps): a month given for days or hours is its first or last day or hour, a day given for
+    hours its first or last hour. Ends the script for a bound finer than the observations' steps,
+    or a start after the end."""
+
+    def __init__(self, steps, start, end, texts, path):
+        self.start = self.unit_step(steps, start, False, texts[0], path)
+        self.end = self.unit_step(steps, end, True, texts[1], path)
+        if self.start and self.end and self.start > self.end:
+            csv_input.fail(f"--start {texts[0]} is after --end {texts[1]}")
+
+    @staticmethod
+    def unit_step(steps, bound, last, text, path):
+        if bound is None:
+            return None
+        option = "--end" if last else "--start"
+        if len(bound) > steps.fields:
+            csv_input.fail(f"{option} {text}: the observations of {path} are {steps.adjective}: give a "
+                           f"{steps.unit} ({'YYYY-MM' if steps.fields == 2 else 'YYYY-MM-DD'})")
+        if len(bound) == 2 and steps.fields > 2:
+            bound = (*bound, calendar.monthrange(*bound)[1] if last else 1)
+        if len(bound) == 3 and steps.fields > 3:
+            bound = (*bound, 23 if last else 0)
+        return bound
+
+    def __contains__(self, step):
+        return (self.start is None or self.start <= step) and (self.end is None or step <= self.end)
+
+    def given(self):
+        return self.start is not None or self.end is not None
 
 
 def main(argv=None):
@@ -1425,6 +1524,13 @@ def main(argv=None):
     parser.add_argument("--hour", help="hour for the weights, tiles and map when the observations give hours, "
                                        "'YYYY-MM-DD HH:00' (or with a T: YYYY-MM-DDTHH:00; 24:00 is the next "
                                        "day's 00:00; not with --month or --day)")
+    parser.add_argument("--start", help="the first step to average: YYYY-MM, YYYY-MM-DD or 'YYYY-MM-DD HH:00', no "
+                                        "finer than the observations' steps (a month is its first day or hour with "
+                                        "daily or hourly observations; default: the observations' first); "
+                                        "areal_mean.csv starts there, and unused_inputs.csv lists the observations "
+                                        "before it")
+    parser.add_argument("--end", help="the last step to average, as --start (a month is its last day or hour with "
+                                      "daily or hourly observations; default: the observations' last)")
     parser.add_argument("--stations", default=os.path.join(DATA, "colorado_stations.csv"),
                         help="CSV of gauges: columns station_id, lon, lat (degrees, WGS84), "
                              f"optional name; {csv_input.SEPARATORS_TEXT}")
@@ -1479,6 +1585,7 @@ def main(argv=None):
             sys.exit(f"--day {args.day!r}: is not a date of the calendar")
     if args.hour is not None:
         asked = chosen_hour(args.hour)
+    bounds = (period_bound(args.start, "--start"), period_bound(args.end, "--end"))
 
     # Tessera first: without VTK (another Python than Debian's) this says how to run the script.
     csv_input.import_tessera()
@@ -1496,9 +1603,9 @@ def main(argv=None):
     gauge_of = {}
     for i, station in enumerate(station_ids):
         gauge_of.setdefault(station_key(station), i)
-    observations, steps, reporting, row_lines, unmatched = read_observations(
+    observations, steps, reporting, row_lines, unmatched, outside = read_observations(
         args.observations, gauge_of, min(station_ids, default=None), args.stations, set(args.missing_value),
-        station_ids)
+        station_ids, bounds, (args.start, args.end))
     if asked and len(asked) > steps.fields:
         option = f"--hour {args.hour}" if args.hour is not None else f"--day {args.day}"
         csv_input.fail(f"{option}: the observations of {args.observations} are {steps.adjective} "
@@ -1534,7 +1641,7 @@ def main(argv=None):
     else:
         write_all_weights(average.GetOutputDataObject(2), steps, os.path.join(args.out, all_weights))
     unused = write_unused(summary, files, station_ids, observations, steps.unit,
-                          os.path.join(args.out, "unused_inputs.csv"), unmatched)
+                          os.path.join(args.out, "unused_inputs.csv"), unmatched, outside)
     if groups:
         by_feature = "areal_mean_by_" + re.sub(r"[^A-Za-z0-9_.-]", "_", each) + ".csv"
         write_means_by_feature(groups, each, gauges, observations, steps, average, args.catchment,

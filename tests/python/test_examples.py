@@ -823,6 +823,70 @@ def test_daily_observations_give_daily_means():
                     and "note: 2001-03-01 is not in the record; showing 2001-02-28" in stderr, f"month ends: {stderr}")
 
 
+def test_start_and_end_choose_the_period():
+    # --start and --end restrict the steps: areal_mean.csv runs from the one to the other, each
+    # month as in the whole record's run, months before the data included (without a mean), and
+    # unused_inputs.csv lists every observation outside by its line, counted from the raw file.
+    outside_kind = "observation before --start or after --end"
+    observations_file = os.path.join(EXAMPLE_DATA, "colorado_monthly_precip.csv")
+    raw = read_csv(observations_file)
+    with tempfile.TemporaryDirectory() as directory:
+        run_colorado(os.path.join(directory, "all"), plots=False, what="the whole record")
+        whole = {(int(r["year"]), int(r["month"])): r for r in read_csv(os.path.join(directory, "all", "areal_mean.csv"))}
+        for start, end, months in (("1960-03", "1961-02", [(1960, m) for m in range(3, 13)] + [(1961, 1), (1961, 2)]),
+                                   ("1894-11", "1895-02", [(1894, 11), (1894, 12), (1895, 1), (1895, 2)])):
+            out = os.path.join(directory, start)
+            _, stderr = run_colorado(out, "--start", start, "--end", end, plots=False, what=f"{start} to {end}")
+            rows = read_csv(os.path.join(out, "areal_mean.csv"))
+            got = [(int(r["year"]), int(r["month"])) for r in rows]
+            assert_that(got == months, f"{start} to {end}: the months {got}")
+            for r, month in zip(rows, months):
+                expected = whole.get(month, {"stations_used": "0", "stations_weighted": "0", "areal_mean": ""})
+                for column in ("stations_used", "stations_weighted", "areal_mean"):
+                    assert_that(r[column] == expected[column],
+                                f"{month}: {column} {r[column]!r}, the whole record's run gives {expected[column]!r}")
+            first, last = months[0], months[-1]
+            outside = {(k + 2, row["station_id"]) for k, row in enumerate(raw)
+                       if not first <= (int(row["year"]), int(row["month"])) <= last}
+            listed = {(int(u["line"]), u["station_id"]) for u in read_csv(os.path.join(out, "unused_inputs.csv"))
+                      if u["kind"] == outside_kind}
+            assert_that(listed == outside and outside, f"{start} to {end}: {len(listed)} observations listed outside, "
+                        f"the file has {len(outside)}")
+            assert_that(f"{len(outside)} observation(s) outside --start/--end are not used" in stderr, stderr)
+
+        # Daily observations: a month given is its first or last day; a day is a day.
+        days = {(2001, 1, 30): {"N1": 1.5, "N2": 2.5}, (2001, 2, 1): {"N1": 3.0, "N4": 1.25},
+                (2001, 2, 2): {"N2": 0.5, "N3": 7.0}}
+        catchment, stations, _ = write_lake_basin(directory)
+        daily = write(directory, "daily.csv", "station_id,date,precip\n" + "".join(
+            f"{s},{y}-{m:02d}-{d:02d},{v}\n" for (y, m, d), values in days.items() for s, v in values.items()))
+        for options, expected in (({"start": "2001-02"}, [(2001, 2, 1), (2001, 2, 2)]),
+                                  ({"end": "2001-01"}, [(2001, 1, 30), (2001, 1, 31)]),
+                                  ({"start": "2001-01-31", "end": "2001-02-01"}, [(2001, 1, 31), (2001, 2, 1)])):
+            out = os.path.join(directory, "daily_" + "_".join(options.values()))
+            run_colorado(out, stations=stations, observations=daily, catchment=catchment, plots=False,
+                         what=f"daily {options}", **options)
+            got = [tuple(int(r[k]) for k in ("year", "month", "day")) for r in read_csv(os.path.join(out, "areal_mean.csv"))]
+            assert_that(got == expected, f"daily {options}: the days {got}")
+            lines = sorted(int(u["line"]) for u in read_csv(os.path.join(out, "unused_inputs.csv"))
+                           if u["kind"] == outside_kind)
+            day_of_line = [day for day, values in days.items() for _ in values]  # (line k + 2)
+            assert_that(lines == [k + 2 for k, day in enumerate(day_of_line) if not expected[0] <= day <= expected[-1]],
+                        f"daily {options}: lines listed outside {lines}")
+
+        # Bad bounds are named.
+        for options, fragment in ((("--start", "1961-01", "--end", "1960-01"), "--start 1961-01 is after --end 1960-01"),
+                                  (("--start", "1960-13"), "--start '1960-13': is not a date of the calendar"),
+                                  (("--end", "1960-02-30"), "--end '1960-02-30': is not a date of the calendar"),
+                                  (("--start", "1960-01-05"), "are monthly: give a month (YYYY-MM)"),
+                                  (("--start", "60-01"), "--start '60-01': expected YYYY-MM, YYYY-MM-DD"),
+                                  (("--start", "1800-01", "--end", "1801-12"),
+                                   "no observation of a gauge's station is within --start 1800-01 and --end 1801-12 "
+                                   "(its months run from 1895-01 to 1997-12)")):
+            _, stderr = run_colorado(os.path.join(directory, "bad"), *options, plots=False, status=1, what=str(options))
+            assert_that(fragment in stderr and "Traceback" not in stderr, f"{options}: {fragment!r} not in {stderr!r}")
+
+
 def test_a_wide_file_of_a_column_per_station_gives_the_long_files_means():
     # A record as a spreadsheet or a data portal gives it: a row per time, a column per station
     # named by its id. It gives the long file's outputs (days here; the stations numbered 0101 ..
@@ -1838,7 +1902,7 @@ if __name__ == "__main__":
          test_ids_without_their_leading_zeros_match_as_in_the_filter,
          test_files_of_semicolons_or_tabs_with_decimal_commas,
          test_daily_observations_give_daily_means,
-         test_hourly_observations_give_hourly_means,
+         test_hourly_observations_give_hourly_means, test_start_and_end_choose_the_period,
          test_a_wide_file_of_a_column_per_station_gives_the_long_files_means,
          test_the_field_separator_and_the_decimal_mark,
          test_small_values_and_a_catchment_across_the_antimeridian,
