@@ -413,9 +413,10 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     stations.SetName("station_id")
     times.SetName("time")
     values.SetName("precip")
-    unrecorded = 0
-    coded = 0  # values given with --missing-value
-    negative = []  # the lines of negative values
+    # Per row: 1 without a value, 2 with a --missing-value value, else 0 (counted once the period
+    # is known: the rows outside --start/--end are not used, so not counted).
+    missing_kind = array.array("b")
+    negative = []  # (row, line) of the negative values
     present = set()  # the step of every row of a gauge's station
     # Per row, two machine integers (arrays, not lists of Python objects: a large file has
     # millions of rows): its line, and the index of its step as observation_step read it.
@@ -456,13 +457,14 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
         # filter drops it for that step), and the month remains a step even if no gauge reports.
         value = math.nan
         if csv_input.is_missing(row.get(column)):
-            unrecorded += 1
+            missing_kind.append(1)
         elif (number := csv_input.number(row, column, path, line)) in missing_values:
-            coded += 1
+            missing_kind.append(2)
         else:
+            missing_kind.append(0)
             value = number
             if value < 0:
-                negative.append(line if column == "precip" else f"{line} ({column})")
+                negative.append((len(lines) - 1, line if column == "precip" else f"{line} ({column})"))
             if gauge is not None:
                 reporting.setdefault(step, set()).add(gauge)
         stations.InsertNextValue(station)
@@ -481,9 +483,14 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
         csv_input.fail(f"{path}: none of its {len(lines)} rows names a station of {stations_path} "
                        f"(ids here: {', '.join(seen[:5])}{', ...' if len(seen) > 5 else ''}; ids there: "
                        f"{', '.join(there[:5])}{', ...' if len(there) > 5 else ''})")
+    unrecorded, coded = missing_kind.count(1), missing_kind.count(2)
     if period.given():
-        stations, values, lines, read, outside = rows_in_period(stations, values, lines, read,
-                                                                [step_of[m] in period for m in step_index])
+        kept = array.array("b", (step_of[m] in period for m in step_index))  # (by step index)
+        row_kept = array.array("b", (kept[k] for k in read))
+        stations, values, lines, read, outside = rows_in_period(stations, values, lines, read, row_kept)
+        unrecorded = sum(1 for kind, used in zip(missing_kind, row_kept) if kind == 1 and used)
+        coded = sum(1 for kind, used in zip(missing_kind, row_kept) if kind == 2 and used)
+        negative = [(row, line) for row, line in negative if row_kept[row]]
         every_step = {step for step in every_step if step in period}
         present = {step for step in present if step in period}
         reporting = {step: gauges for step, gauges in reporting.items() if step in period}
@@ -509,7 +516,7 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     if negative:
         # Precipitation is never negative: these are most often a missing-value code (-99, -9999)
         # that would drag the means down. They are used as given, and named.
-        shown = ", ".join(str(line) for line in negative[:20])
+        shown = ", ".join(str(line) for _, line in negative[:20])
         more = f" and {len(negative) - 20} more" if len(negative) > 20 else ""
         print(f"{path}: {len(negative)} observation(s) have a negative precipitation, used as given "
               f"(write a missing value as NA, or give --missing-value, if that is what they mean): line(s) {shown}{more}",
@@ -550,7 +557,8 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
             named.update((step, f"line {line}") for step, line in line_of.items())
             span = f"between {steps.text(first)} ({named[first]}) and {steps.text(last)} ({named[last]})"
         if count > MOST_STEPS:
-            csv_input.fail(f"{path}: the observations span {count} {steps.unit}s {span}, more than "
+            spanning = "the period (--start, --end) spans" if period.given() else "the observations span"
+            csv_input.fail(f"{path}: {spanning} {count} {steps.unit}s {span}, more than "
                            f"{MOST_STEPS} (each a row of areal_mean.csv, and some 1 GB of memory a "
                            f"million); is a date mistyped?")
         gaps = [step for step in steps.between(first, last) if step not in present]
@@ -564,13 +572,13 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     table = vtkTable()
     for column in (stations, times, values):
         table.AddColumn(column)
-    return table, steps, reporting, lines, unmatched, outside
+    return table, steps, reporting, lines, unmatched, outside, period
 
 
 def rows_in_period(stations, values, lines, read, keep):
-    """The observation rows whose step is in --start/--end (keep: by step index, as read holds
-    them): their station ids, values, lines and step indices, and the (line, station id) of each
-    of the others."""
+    """The observation rows whose step is in --start/--end (keep: 1 for each such row): their
+    station ids, values, lines and step indices, and the (line, station id) of each of the
+    others."""
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
 
     kept_stations, kept_values = vtkStringArray(), vtkDoubleArray()
@@ -578,7 +586,7 @@ def rows_in_period(stations, values, lines, read, keep):
     kept_values.SetName(values.GetName())
     kept_lines, kept_read, outside = array.array("l"), array.array("l"), []
     for row, k in enumerate(read):
-        if keep[k]:
+        if keep[row]:
             kept_stations.InsertNextValue(stations.GetValue(row))
             kept_values.InsertNextValue(values.GetValue(row))
             kept_lines.append(lines[row])
@@ -1460,7 +1468,10 @@ def chosen_hour(text, option="--hour"):
     step = tuple(int(v) for v in (*date.groups(), clock.group(1)))
     if not is_calendar_day(*step[:3]) or step[3] > 24:
         sys.exit(f"{option} {text!r}: is not an hour of the calendar")
-    return hour_step(step)
+    try:
+        return hour_step(step)
+    except OverflowError:  # (24:00 of 9999-12-31)
+        sys.exit(f"{option} {text!r}: is after the calendar's last hour")
 
 
 def period_bound(text, option):
@@ -1479,17 +1490,26 @@ def period_bound(text, option):
     return step
 
 
+def check_period(start, end, texts):
+    """Ends the script when --start (period_bound's) comes after --end, each taken as widely as it
+    reads (a month from its first hour, to its last)."""
+    if start is None or end is None:
+        return
+    first = (*start, 1, 0)[:4] if len(start) == 2 else (*start, 0)[:4]
+    last = (*end, calendar.monthrange(*end[:2])[1], 23)[:4] if len(end) == 2 else (*end, 23)[:4]
+    if first > last:
+        sys.exit(f"--start {texts[0].strip()} is after --end {texts[1].strip()}")
+
+
 class Period:
     """--start and --end (period_bound's steps, or None), made steps of the observations' unit
     (steps): a month given for days or hours is its first or last day or hour, a day given for
-    hours its first or last hour. Ends the script for a bound finer than the observations' steps,
-    or a start after the end."""
+    hours its first or last hour. Ends the script for a bound finer than the observations' steps
+    (a start after the end is refused before the file is read: check_period)."""
 
     def __init__(self, steps, start, end, texts, path):
         self.start = self.unit_step(steps, start, False, texts[0], path)
         self.end = self.unit_step(steps, end, True, texts[1], path)
-        if self.start and self.end and self.start > self.end:
-            csv_input.fail(f"--start {texts[0]} is after --end {texts[1]}")
 
     @staticmethod
     def unit_step(steps, bound, last, text, path):
@@ -1528,7 +1548,9 @@ def main(argv=None):
                                         "finer than the observations' steps (a month is its first day or hour with "
                                         "daily or hourly observations; default: the observations' first); "
                                         "areal_mean.csv starts there, and unused_inputs.csv lists the observations "
-                                        "before it")
+                                        "before it; hours keep their labels, so for hour-ending data a day's last hour "
+                                        "is its 24:00, the next day's 00:00: give --end 'YYYY-MM-DD 24:00' to end with "
+                                        "it, and --start 'YYYY-MM-DD 01:00' to start a day")
     parser.add_argument("--end", help="the last step to average, as --start (a month is its last day or hour with "
                                       "daily or hourly observations; default: the observations' last)")
     parser.add_argument("--stations", default=os.path.join(DATA, "colorado_stations.csv"),
@@ -1586,6 +1608,7 @@ def main(argv=None):
     if args.hour is not None:
         asked = chosen_hour(args.hour)
     bounds = (period_bound(args.start, "--start"), period_bound(args.end, "--end"))
+    check_period(*bounds, (args.start, args.end))
 
     # Tessera first: without VTK (another Python than Debian's) this says how to run the script.
     csv_input.import_tessera()
@@ -1603,7 +1626,7 @@ def main(argv=None):
     gauge_of = {}
     for i, station in enumerate(station_ids):
         gauge_of.setdefault(station_key(station), i)
-    observations, steps, reporting, row_lines, unmatched, outside = read_observations(
+    observations, steps, reporting, row_lines, unmatched, outside, period = read_observations(
         args.observations, gauge_of, min(station_ids, default=None), args.stations, set(args.missing_value),
         station_ids, bounds, (args.start, args.end))
     if asked and len(asked) > steps.fields:
@@ -1652,7 +1675,8 @@ def main(argv=None):
     messages.check(tiles is None)
     chosen = steps.of_time[tiles.GetInformation().Get(tiles.DATA_TIME_STEP())]
     if chosen != step and (args.month or args.day or args.hour):  # (the default: the record's nearest step, unsaid)
-        print(f"note: {steps.text(step)} is not in the record; showing {steps.text(chosen)}", file=sys.stderr)
+        where = "outside --start/--end" if step not in period else "not in the record"
+        print(f"note: {steps.text(step)} is {where}; showing {steps.text(chosen)}", file=sys.stderr)
     step = chosen
     tag = steps.tag(step)
     per_gauge = tiles_by_gauge(tiles)
@@ -1679,7 +1703,8 @@ def main(argv=None):
     print(f"wrote {args.out}/areal_mean.csv, " + ("" if args.no_all_weights else f"{all_weights}, ")
           + f"weights_{tag}.csv, tiles_{tag}.vtp"
           + ("" if args.no_plots else f", map_{tag}.png, areal_mean.png")
-          + f", unused_inputs.csv ({unused} input(s) not used)"
+          + f", unused_inputs.csv ({unused} input(s) not used"
+          + (f", {len(outside)} of them outside --start/--end)" if outside else ")")
           + (f", {by_feature} ({len(groups)} group(s) of features)" if groups else ""))
 
 

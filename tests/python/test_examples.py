@@ -836,7 +836,7 @@ def test_start_and_end_choose_the_period():
         for start, end, months in (("1960-03", "1961-02", [(1960, m) for m in range(3, 13)] + [(1961, 1), (1961, 2)]),
                                    ("1894-11", "1895-02", [(1894, 11), (1894, 12), (1895, 1), (1895, 2)])):
             out = os.path.join(directory, start)
-            _, stderr = run_colorado(out, "--start", start, "--end", end, plots=False, what=f"{start} to {end}")
+            stdout, stderr = run_colorado(out, "--start", start, "--end", end, plots=False, what=f"{start} to {end}")
             rows = read_csv(os.path.join(out, "areal_mean.csv"))
             got = [(int(r["year"]), int(r["month"])) for r in rows]
             assert_that(got == months, f"{start} to {end}: the months {got}")
@@ -853,6 +853,10 @@ def test_start_and_end_choose_the_period():
             assert_that(listed == outside and outside, f"{start} to {end}: {len(listed)} observations listed outside, "
                         f"the file has {len(outside)}")
             assert_that(f"{len(outside)} observation(s) outside --start/--end are not used" in stderr, stderr)
+            assert_that(f"{len(outside)} of them outside --start/--end)" in stdout, stdout)
+        _, stderr = run_colorado(os.path.join(directory, "later"), "--start", "1960-03", "--end", "1961-02",
+                                 month="1970-05", plots=False, what="a month after the period")
+        assert_that("note: 1970-05 is outside --start/--end; showing 1961-02" in stderr, stderr)
 
         # Daily observations: a month given is its first or last day; a day is a day.
         days = {(2001, 1, 30): {"N1": 1.5, "N2": 2.5}, (2001, 2, 1): {"N1": 3.0, "N4": 1.25},
@@ -874,12 +878,22 @@ def test_start_and_end_choose_the_period():
             assert_that(lines == [k + 2 for k, day in enumerate(day_of_line) if not expected[0] <= day <= expected[-1]],
                         f"daily {options}: lines listed outside {lines}")
 
+        # Missing and negative values outside the period are not counted as read: only inside.
+        odd = write(directory, "odd.csv", "station_id,date,precip\nN1,2001-01-30,NA\nN2,2001-01-30,-5\n"
+                    "N1,2001-02-01,3\nN4,2001-02-01,1.25\n")
+        for options, said in (({}, True), ({"start": "2001-02"}, False)):
+            _, stderr = run_colorado(os.path.join(directory, "odd"), stations=stations, observations=odd,
+                                     catchment=catchment, plots=False, what=f"odd values {options}", **options)
+            for fragment in ("1 observation(s) without a value", "1 observation(s) have a negative precipitation"):
+                assert_that((fragment in stderr) == said, f"odd values {options}: {fragment!r} in {stderr!r}")
+
         # Bad bounds are named.
         for options, fragment in ((("--start", "1961-01", "--end", "1960-01"), "--start 1961-01 is after --end 1960-01"),
                                   (("--start", "1960-13"), "--start '1960-13': is not a date of the calendar"),
                                   (("--end", "1960-02-30"), "--end '1960-02-30': is not a date of the calendar"),
                                   (("--start", "1960-01-05"), "are monthly: give a month (YYYY-MM)"),
                                   (("--start", "60-01"), "--start '60-01': expected YYYY-MM, YYYY-MM-DD"),
+                                  (("--end", "9999-12-31 24:00"), "is after the calendar's last hour"),
                                   (("--start", "1800-01", "--end", "1801-12"),
                                    "no observation of a gauge's station is within --start 1800-01 and --end 1801-12 "
                                    "(its months run from 1895-01 to 1997-12)")):
