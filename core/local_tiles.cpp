@@ -483,15 +483,10 @@ TileSet LocalTiles(const Tess& tess,
       }
       LocalTilesOfRange(tess, starts, bounds[k], bounds[k + 1], wantTiles, out, outMates);
     });
-  tiles = std::move(partTiles[0].Value);
   if (mates)
   {
     *mates = std::move(partMates[0].Value);
-  }
-  for (std::size_t k = 1; k < chunks; ++k)
-  {
-    AppendTileSet(tiles, partTiles[k].Value);
-    if (mates)
+    for (std::size_t k = 1; k < chunks; ++k)
     {
       const FaceMateLists& part = partMates[k].Value;
       Append(mates->PointIds, part.PointIds);
@@ -499,7 +494,7 @@ TileSet LocalTiles(const Tess& tess,
       Append(mates->Ids, part.Ids);
     }
   }
-  return tiles;
+  return JoinTileParts(partTiles);
 }
 
 } // namespace

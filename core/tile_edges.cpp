@@ -366,5 +366,15 @@ void AppendTileSet(TileSet& tiles, const TileSet& from)
   tiles.Vertices.insert(tiles.Vertices.end(), from.Vertices.begin(), from.Vertices.end());
 }
 
+TileSet JoinTileParts(std::vector<OwnCacheLines<TileSet>>& parts)
+{
+  TileSet tiles = std::move(parts.front().Value);
+  for (std::size_t k = 1; k < parts.size(); ++k)
+  {
+    AppendTileSet(tiles, parts[k].Value);
+  }
+  return tiles;
+}
+
 } // namespace tiles_detail
 } // namespace tessera

@@ -3,6 +3,7 @@
 // points): a tile edge clipped to the window, the faces it joins, and the polygon assembled from
 // a ring of such edges. See tiles.h for the rules (exact decisions, rounded coordinates only).
 
+#include "cache_line.h"
 #include "dirichlet_tessellation.h"
 #include "geometry.h"
 #include "tiles.h"
@@ -116,6 +117,10 @@ void AppendTile(TileSet& tiles,
 
 /// Appends every tile of from to tiles (joining chunks computed apart, in order).
 void AppendTileSet(TileSet& tiles, const TileSet& from);
+
+/// The chunks' tiles in chunk order, as one set: part 0 moved in (its room reserved for all, as
+/// the derivations do), the others appended. The parts are left moved from.
+TileSet JoinTileParts(std::vector<OwnCacheLines<TileSet>>& parts);
 
 /// The per-tile columns TileSet and TileMesh share: one tile's (its offset is where its vertices
 /// end, vertexEnd) ...

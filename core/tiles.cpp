@@ -1133,11 +1133,7 @@ void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* g
   {
     if (tiles)
     {
-      *tiles = std::move(tileParts[0].Value); // (room for all reserved: see ReserveTiles above)
-      for (std::size_t k = 1; k < chunks; ++k)
-      {
-        AppendTileSet(*tiles, tileParts[k].Value);
-      }
+      *tiles = tiles_detail::JoinTileParts(tileParts);
     }
     if (mesh)
     {

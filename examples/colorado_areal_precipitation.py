@@ -545,8 +545,11 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
         if count > len(present):
             # (the lines of the first and the last step, where a mistyped year makes the span;
             # looked for only when there are steps without rows; --start and --end say themselves)
-            named = {step: option for step, option in ((first, "--start"), (last, "--end"))
-                     if getattr(period, option[2:]) is not None}
+            named = {}  # the bounds given as options, which name themselves
+            if period.start:
+                named[first] = "--start"
+            if period.end:
+                named[last] = "--end"
             read_steps, wanted, line_of = list(step_index), {first, last} - set(named), {}
             for row, k in enumerate(read if wanted else ()):
                 step = step_of[read_steps[k]]
@@ -1479,10 +1482,11 @@ def period_bound(text, option):
     month, day, hour), or None when not given; ends the script naming the value otherwise."""
     if text is None:
         return None
-    date = DATE.match(text.strip())
-    if date and date.group(3) and date.end() < len(text.strip()):
+    text = text.strip()
+    date = DATE.match(text)
+    if date and date.group(3) and date.end() < len(text):
         return chosen_hour(text, option)
-    if not date or date.end() < len(text.strip()):
+    if not date or date.end() < len(text):
         sys.exit(f"{option} {text!r}: expected YYYY-MM, YYYY-MM-DD or 'YYYY-MM-DD HH:00'")
     step = tuple(int(v) for v in date.groups() if v is not None)
     if step[0] < 1 or not 1 <= step[1] <= 12 or (len(step) == 3 and not is_calendar_day(*step)):
@@ -1490,14 +1494,20 @@ def period_bound(text, option):
     return step
 
 
+def widened(bound, fields, last):
+    """A period bound (period_bound's) as a step of `fields` numbers: a month is its first day (its
+    last, for last), a day its first hour (its last); a bound as fine is itself."""
+    if len(bound) == 2 and fields > 2:
+        bound = (*bound, calendar.monthrange(*bound)[1] if last else 1)
+    if len(bound) == 3 and fields > 3:
+        bound = (*bound, 23 if last else 0)
+    return bound
+
+
 def check_period(start, end, texts):
     """Ends the script when --start (period_bound's) comes after --end, each taken as widely as it
     reads (a month from its first hour, to its last)."""
-    if start is None or end is None:
-        return
-    first = (*start, 1, 0)[:4] if len(start) == 2 else (*start, 0)[:4]
-    last = (*end, calendar.monthrange(*end[:2])[1], 23)[:4] if len(end) == 2 else (*end, 23)[:4]
-    if first > last:
+    if start is not None and end is not None and widened(start, 4, False) > widened(end, 4, True):
         sys.exit(f"--start {texts[0].strip()} is after --end {texts[1].strip()}")
 
 
@@ -1519,11 +1529,7 @@ class Period:
         if len(bound) > steps.fields:
             csv_input.fail(f"{option} {text}: the observations of {path} are {steps.adjective}: give a "
                            f"{steps.unit} ({'YYYY-MM' if steps.fields == 2 else 'YYYY-MM-DD'})")
-        if len(bound) == 2 and steps.fields > 2:
-            bound = (*bound, calendar.monthrange(*bound)[1] if last else 1)
-        if len(bound) == 3 and steps.fields > 3:
-            bound = (*bound, 23 if last else 0)
-        return bound
+        return widened(bound, steps.fields, last)
 
     def __contains__(self, step):
         return (self.start is None or self.start <= step) and (self.end is None or step <= self.end)
