@@ -307,7 +307,7 @@ def file_steps(read, first, hour_column, at_24, path):
 TIME_COLUMNS = ("year", "month", "day", "hour", "date", "time")  # (observation_step's)
 
 
-def observation_records(path, gauge_of, stations_path, station_ids, unmatched, gaps):
+def observation_records(path, gauge_of, stations_path, station_ids, unmatched, gaps, repeats):
     """Yields (line, row, station_id, value column) for each observation of the file at path, in
     either of two layouts:
     - long: a record per station and time, with columns station_id and precip (the value column);
@@ -320,7 +320,9 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
       name). Ends the script when none of them is a gauge's, naming the stations
       file (stations_path) and some of its ids as written (station_ids), when two columns name
       one gauge's station (which of them holds its values would be a guess), or when it has no
-      time column. gaps[0] counts the cells without a value passed over.
+      time column. The cells without a value passed over are appended to gaps as (line, how
+      many), a row repeating the time of an earlier one to repeats as (line, the earlier line):
+      the caller names them once it knows which lines lie within --start/--end.
     A file with only one of station_id and precip is a long file lacking the other (named)."""
     header = []
     records = csv_input.rows(path, (), "observations", ("station_id", "precip", *TIME_COLUMNS), header,
@@ -359,7 +361,6 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
                        "with a column per station named by its station_id (date,ID1,ID2,...)")
     times = [name for name in header if name in TIME_COLUMNS]
     first_line = {}  # each row's time as written, and the line that first gave it
-    repeats = []  # (line, the earlier line of its time)
     for line, row in records:
         written = tuple((row.get(name) or "").strip() for name in times)
         if first_line.setdefault(written, line) != line:
@@ -367,16 +368,28 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
         # Only the cells with a value (a wide record is mostly gaps: 58% of Colorado's cells), and
         # the first cell of a row without any, whose time stays a step where no gauge reported.
         reported = [column for column in columns if not csv_input.is_missing(row.get(column))]
-        gaps[0] += len(columns) - max(len(reported), 1)  # (the cells passed over, for the count)
+        if len(columns) > max(len(reported), 1):  # (the cells passed over, for the count)
+            gaps.append((line, len(columns) - max(len(reported), 1)))
         for column in reported or columns[:1]:
             yield line, row, column, column
+
+
+def say_repeated_times(path, repeats):
+    """Names a wide file's rows that repeat the time of an earlier row (repeats: (line, the earlier
+    line)). A repeated time is a repeated observation for each station, as in a long file: the
+    earlier value is used, a repeat's fills an earlier empty cell; said here by row."""
     if repeats:
-        # (A repeated time is a repeated observation for each station, as in a long file: the
-        # earlier value is used, a repeat's fills an earlier empty cell; said here by row.)
         shown = ", ".join(f"line {line} (as line {earlier})" for line, earlier in repeats[:20])
         print(f"{path}: {len(repeats)} row(s) repeat the time of an earlier row: {shown}"
               f"{f' and {len(repeats) - 20} more' if len(repeats) > 20 else ''}; where both have a value the "
               "earlier one is used, and a repeat's value fills an earlier empty cell", file=sys.stderr)
+
+
+def lines_kept(lines, row_kept, wanted):
+    """Of the file's lines in wanted, those whose observation rows lie within --start/--end (lines
+    and row_kept: per row, its line and 1 if kept; a wide file's line gives rows all of one time,
+    so all of them are kept or none)."""
+    return {line for line, kept in zip(lines, row_kept) if kept and line in wanted}
 
 
 # The most steps (hours, in practice) from the first observation's to the last's: every step
@@ -427,11 +440,12 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     first = {}  # the first line of a month, a day, a day and time, and a time other than midnight
     hour_column, at_24 = False, 0
     unmatched = []  # a wide file's columns that are no gauge's station
-    gaps = [0]  # a wide file's cells without a value, not made rows
+    gaps = []  # (line, how many) of a wide file's cells without a value, not made rows
+    repeats = []  # (line, the earlier line) of a wide file's rows repeating an earlier row's time
     reading = ReadingProgress(path)
     step_line = None  # the line of `step` (a wide file's line gives several records)
     for line, row, station, column in observation_records(path, gauge_of, stations_path, station_ids, unmatched,
-                                                          gaps):
+                                                          gaps, repeats):
         lines.append(line)
         if not len(lines) & 0xFFFF:
             reading.tick(len(lines))
@@ -487,6 +501,10 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     if period.given():
         kept = array.array("b", (step_of[m] in period for m in step_index))  # (by step index)
         row_kept = array.array("b", (kept[k] for k in read))
+        if gaps or repeats:  # (a wide file's empty cells and repeated times: those within only)
+            inside = lines_kept(lines, row_kept, {line for line, _ in gaps} | {line for line, _ in repeats})
+            gaps = [(line, count) for line, count in gaps if line in inside]
+            repeats = [(line, earlier) for line, earlier in repeats if line in inside]
         stations, values, lines, read, outside = rows_in_period(stations, values, lines, read, row_kept)
         unrecorded = sum(1 for kind, used in zip(missing_kind, row_kept) if kind == 1 and used)
         coded = sum(1 for kind, used in zip(missing_kind, row_kept) if kind == 2 and used)
@@ -509,7 +527,8 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     if coded:
         print(f"{path}: {coded} observation(s) with a --missing-value value "
               f"({', '.join(f'{v:g}' for v in sorted(missing_values))}) count as missing", file=sys.stderr)
-    unrecorded += gaps[0]
+    say_repeated_times(path, repeats)
+    unrecorded += sum(count for _, count in gaps)
     if unrecorded:
         print(f"{path}: {unrecorded} observation(s) without a value ({csv_input.MISSING_TEXT}) "
               "count as missing", file=sys.stderr)

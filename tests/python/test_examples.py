@@ -963,6 +963,17 @@ def test_a_wide_file_of_a_column_per_station_gives_the_long_files_means():
         said = [m for m in stderr_messages(stderr) if "repeat the time of an earlier row" in m]
         assert_that(len(said) == 1 and said[0].startswith(f"{twice}: 1 row(s) repeat the time of an earlier row: "
                                                           "line 4 (as line 2);"), f"the repeated date: {stderr}")
+        # With --start/--end only the rows within are counted and named: line 2's empty cell and
+        # line 4's repeat of 2001-01-30 are outside --start 2001-01-31, line 5's empty cell inside.
+        late = write(directory, "late.csv", "date,101,102\n2001-01-30,1,\n2001-01-31,2,3\n2001-01-30,4,5\n"
+                     "2001-02-01,,6\n")
+        for options, empty, repeat in (({}, 2, True), ({"start": "2001-01-31"}, 1, False)):
+            _, stderr = run_colorado(os.path.join(directory, "late"), stations=stations, observations=late,
+                                     catchment=catchment, plots=False, what=f"a wide file {options}", **options)
+            said = stderr_messages(stderr)
+            assert_that(any(f"{late}: {empty} observation(s) without a value" in m for m in said)
+                        and any("repeat the time of an earlier row: line 4 (as line 2)" in m for m in said) == repeat,
+                        f"a wide file {options}: {said}")
         assert_observations_refused(directory, stations, catchment, [
             # (a mistyped year made a million empty hours, 0.9 GB; the span's ends are named)
             ("date,101,102\n1000-01-01 01:00,1,2\n2001-01-01 03:00,1,2\n", {},
