@@ -59,6 +59,8 @@ above) and a column per station named by its station_id (date,050109,050114,...)
 station_id and precip columns; a column that names no gauge's station is named and not read.
 Units are those of the data (for the Colorado data: documented as mm, the magnitudes look like
 cm; see examples/data/README.md).
+Files of an earlier run in --out that this run does not write (another month's map, weights and
+tiles, another --each's means, areal_mean.png after --no-plots) are kept and named in a note.
 
 Run with Debian's /usr/bin/python3 and PYTHONPATH=build/python (scripts/demo does both).
 """
@@ -616,6 +618,23 @@ def rows_in_period(stations, values, lines, read, keep):
         else:
             outside.append((lines[row], stations.GetValue(row)))
     return kept_stations, kept_values, kept_lines, kept_read, outside
+
+
+# The names this script gives its outputs (the module docstring's list): a file in --out named so
+# that this run did not write is an earlier run's.
+OUTPUT_NAME = re.compile(r"(areal_mean(\.csv|\.png|_by_.+\.csv)|unused_inputs\.csv|weights_.+\.csv|tiles_.+\.vtp"
+                         r"|map_.+\.png)")
+
+
+def say_earlier_outputs(out, written):
+    """Names the files in out that look like this script's outputs but were not written by this
+    run (written: their names): an earlier run's, with other options or other data, which could
+    be taken for this run's. They are left in place (they may be wanted)."""
+    earlier = sorted(name for name in os.listdir(out) if OUTPUT_NAME.fullmatch(name) and name not in written)
+    if earlier:
+        print(f"note: {out} also holds {len(earlier)} file(s) that this run did not write (an earlier run's, "
+              f"kept): {', '.join(earlier[:10])}{f' and {len(earlier) - 10} more' if len(earlier) > 10 else ''}",
+              file=sys.stderr)
 
 
 def zip_member(path):
@@ -1719,6 +1738,10 @@ def main(argv=None):
                  os.path.join(args.out, f"map_{tag}.png"), steps.unit)
         plot_series(rows, os.path.join(args.out, "areal_mean.png"))
 
+    say_earlier_outputs(args.out, {"areal_mean.csv", "unused_inputs.csv", f"weights_{tag}.csv", f"tiles_{tag}.vtp"}
+                        | (set() if args.no_all_weights else {all_weights})
+                        | (set() if args.no_plots else {f"map_{tag}.png", "areal_mean.png"})
+                        | ({by_feature} if groups else set()))
     valid = [r[-1] for r in rows if not math.isnan(r[-1])]
     print(f"{len(rows)} {steps.unit}s, {len(valid)} with data"
           + (f"; mean of the {steps.adjective} areal means {sum(valid) / len(valid):.3f}"

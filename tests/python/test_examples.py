@@ -990,6 +990,29 @@ def test_a_wide_file_of_a_column_per_station_gives_the_long_files_means():
         ])
 
 
+def test_an_earlier_runs_files_in_out_are_named():
+    # A second run into the same --out, for another day and without plots, names the first run's
+    # files that it does not write (its day's weights, tiles and map, and the series' plot), and
+    # keeps them; the files it writes again are not named. A third run like the second names them
+    # still, and a first run into an empty directory names nothing.
+    days = {(2001, 1, 30): {"N1": 1.5, "N2": 2.5}, (2001, 2, 1): {"N1": 3.0, "N4": 1.25}}
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, _ = write_lake_basin(directory)
+        daily = write(directory, "daily.csv", "station_id,date,precip\n" + "".join(
+            f"{s},{y}-{m:02d}-{d:02d},{v}\n" for (y, m, d), values in days.items() for s, v in values.items()))
+        out = os.path.join(directory, "out")
+        earlier = ["areal_mean.png", "map_2001_01_30.png", "tiles_2001_01_30.vtp", "weights_2001_01_30.csv"]
+        for day, plots, named in (("2001-01-30", True, []), ("2001-02-01", False, earlier),
+                                  ("2001-02-01", False, earlier)):
+            _, stderr = run_colorado(out, stations=stations, observations=daily, catchment=catchment, day=day,
+                                     plots=plots, what=f"the run for {day}")
+            said = [m for m in stderr_messages(stderr) if "that this run did not write" in m]
+            expected = [f"note: {out} also holds {len(named)} file(s) that this run did not write (an earlier "
+                        f"run's, kept): {', '.join(named)}"] if named else []
+            assert_that(said == expected, f"{day}: {said}, expected {expected}")
+            assert_that(all(os.path.exists(os.path.join(out, name)) for name in named), f"{day}: {os.listdir(out)}")
+
+
 def test_hourly_observations_give_hourly_means():
     # Observations of hours, by a date column with times on the hour or by an hour column, give a
     # mean an hour, every hour from the first to the last (2001-03-01 01:00 has no row), across
@@ -1929,6 +1952,7 @@ if __name__ == "__main__":
          test_daily_observations_give_daily_means,
          test_hourly_observations_give_hourly_means, test_start_and_end_choose_the_period,
          test_a_wide_file_of_a_column_per_station_gives_the_long_files_means,
+         test_an_earlier_runs_files_in_out_are_named,
          test_the_field_separator_and_the_decimal_mark,
          test_small_values_and_a_catchment_across_the_antimeridian,
          test_observations_of_no_gauge_end_the_run,
