@@ -17,7 +17,8 @@ Writes into --out:
                          at one place counted once,
                          stations_weighted = those whose tile reaches the catchment; areal_mean
                          is empty where no gauge reported)
-  weights_YYYY_MM.csv    station_id,name,lon,lat,weight,area_km2,precip for --month
+  weights_YYYY_MM.csv    station_id,name,lon,lat,weight,area_km2,precip for --month (for each
+                         --month when it is given more than once; so for the tiles and the map)
   weights_all_months.csv year,month,station_id,weight,area_km2,precip: every month's weights (a row
                          per month and gauge with a weight)
   tiles_YYYY_MM.vtp      that month's tiles clipped to the catchment, in lon/lat: simple
@@ -1579,15 +1580,18 @@ class Period:
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", default="out", help="output directory (created if missing)")
-    parser.add_argument("--month", help="month for the weights, tiles and map, YYYY-MM (default: 1963-08, "
-                                        "or the nearest month of the record; with daily or hourly observations its "
-                                        "first day or hour)")
-    parser.add_argument("--day", help="day for the weights, tiles and map when the observations give days, "
-                                      "YYYY-MM-DD (with hourly observations its 00:00 hour, which for hour-ending "
-                                      "data is the day before's last; not with --month)")
-    parser.add_argument("--hour", help="hour for the weights, tiles and map when the observations give hours, "
-                                       "'YYYY-MM-DD HH:00' (or with a T: YYYY-MM-DDTHH:00; 24:00 is the next "
-                                       "day's 00:00; not with --month or --day)")
+    parser.add_argument("--month", action="append", help="month for the weights, tiles and map, YYYY-MM (may be "
+                                                         "given more than once: each month's files; default: 1963-08, "
+                                                         "or the nearest month of the record; with daily or hourly "
+                                                         "observations its first day or hour)")
+    parser.add_argument("--day", action="append", help="day for the weights, tiles and map when the observations "
+                                                       "give days, YYYY-MM-DD (may be given more than once; with "
+                                                       "hourly observations its 00:00 hour, which for hour-ending "
+                                                       "data is the day before's last; not with --month)")
+    parser.add_argument("--hour", action="append", help="hour for the weights, tiles and map when the observations "
+                                                        "give hours, 'YYYY-MM-DD HH:00' (or with a T: "
+                                                        "YYYY-MM-DDTHH:00; 24:00 is the next day's 00:00; may be "
+                                                        "given more than once; not with --month or --day)")
     parser.add_argument("--start", help="the first step to average: YYYY-MM, YYYY-MM-DD or 'YYYY-MM-DD HH:00', no "
                                         "finer than the observations' steps (a month is its first day or hour with "
                                         "daily or hourly observations; default: the observations' first); "
@@ -1628,8 +1632,8 @@ def main(argv=None):
                         help="skip weights_all_*.csv (every step's weights: with thousands of gauges and "
                              "years of days, as large as the observations) and the memory it takes")
     args = parser.parse_args(argv)
-    given = [f"--{name} {value}" for name, value in (("month", args.month), ("day", args.day), ("hour", args.hour))
-             if value is not None]
+    given = [f"--{name} {values[0]}" for name, values in (("month", args.month), ("day", args.day),
+                                                           ("hour", args.hour)) if values]
     if len(given) > 1:
         sys.exit(f"{' and '.join(given)}: give one of them")
     if args.each is not None and args.feature is not None:
@@ -1637,20 +1641,7 @@ def main(argv=None):
     each = args.each.strip() if args.each is not None else None
     if each is not None and not each:
         sys.exit("--each: expected the name of an attribute of the catchment's features, such as HUC8")
-    chosen = re.fullmatch(r"([0-9]{1,4})-([0-9]{1,2})", (args.month or "1963-08").strip())
-    year, month = (int(chosen.group(1)), int(chosen.group(2))) if chosen else (0, 0)
-    if not 1 <= year or not 1 <= month <= 12:
-        sys.exit(f"--month {args.month!r}: expected YYYY-MM")
-    asked = None  # --day's or --hour's step
-    if args.day is not None:
-        chosen = DATE.fullmatch(args.day.strip())
-        asked = tuple(int(v) for v in chosen.groups()) if chosen and chosen.group(3) else None
-        if not asked:
-            sys.exit(f"--day {args.day!r}: expected a date YYYY-MM-DD")
-        if not is_calendar_day(*asked):
-            sys.exit(f"--day {args.day!r}: is not a date of the calendar")
-    if args.hour is not None:
-        asked = chosen_hour(args.hour)
+    asked = asked_steps(args)
     bounds = (period_bound(args.start, "--start"), period_bound(args.end, "--end"))
     check_period(*bounds, (args.start, args.end))
 
@@ -1673,11 +1664,13 @@ def main(argv=None):
     observations, steps, reporting, row_lines, unmatched, outside, period = read_observations(
         args.observations, gauge_of, min(station_ids, default=None), args.stations, set(args.missing_value),
         station_ids, bounds, (args.start, args.end))
-    if asked and len(asked) > steps.fields:
-        option = f"--hour {args.hour}" if args.hour is not None else f"--day {args.day}"
-        csv_input.fail(f"{option}: the observations of {args.observations} are {steps.adjective} "
-                       f"(use --{steps.unit})")
-    step = (*(asked or (year, month, 1)), 0)[:steps.fields] if steps.fields > 2 else (year, month)
+    for option, when in asked:
+        if len(when) > steps.fields:
+            csv_input.fail(f"{option}: the observations of {args.observations} are {steps.adjective} "
+                           f"(use --{steps.unit})")
+    # (a month is its first day or hour with daily or hourly steps; a day, its 00:00 hour)
+    wanted = [(option, (*when, 1, 0)[:steps.fields] if len(when) == 2 else (*when, 0)[:steps.fields])
+              for option, when in asked]
     catchment, outline = read_catchment(args.catchment, args.feature)
     groups = polygon_groups(features_by_value(catchment, each, args.catchment), each,
                             args.catchment) if each is not None else None
@@ -1714,46 +1707,83 @@ def main(argv=None):
         write_means_by_feature(groups, each, gauges, observations, steps, average, args.catchment,
                                os.path.join(args.out, by_feature))
 
-    average.UpdateTimeStep(steps.time(step))
-    tiles = average.GetOutputDataObject(0)
-    messages.check(tiles is None)
-    chosen = steps.of_time[tiles.GetInformation().Get(tiles.DATA_TIME_STEP())]
-    if chosen != step and (args.month or args.day or args.hour):  # (the default: the record's nearest step, unsaid)
-        where = "outside --start/--end" if step not in period else "not in the record"
-        print(f"note: {steps.text(step)} is {where}; showing {steps.text(chosen)}", file=sys.stderr)
-    step = chosen
-    tag = steps.tag(step)
-    per_gauge = tiles_by_gauge(tiles)
-    write_weights(per_gauge, gauges, os.path.join(args.out, f"weights_{tag}.csv"))
-    csv_input.write_vtk(vtkXMLPolyDataWriter(), tiles, os.path.join(args.out, f"tiles_{tag}.vtp"))
-
-    used, weighted, mean = next(r[-3:] for r in rows if tuple(r[:-3]) == step)
+    shown = []  # per step shown: (step, its tag, per_gauge)
+    for option, step in wanted:
+        average.UpdateTimeStep(steps.time(step))
+        tiles = average.GetOutputDataObject(0)
+        messages.check(tiles is None)
+        chosen = steps.of_time[tiles.GetInformation().Get(tiles.DATA_TIME_STEP())]
+        if chosen != step and option:  # (the default: the record's nearest step, unsaid)
+            where = "outside --start/--end" if step not in period else "not in the record"
+            print(f"note: {steps.text(step)} is {where}; showing {steps.text(chosen)}", file=sys.stderr)
+        if any(chosen == earlier for earlier, _, _ in shown):
+            continue  # (its files are written: another option gave the same step)
+        tag = steps.tag(chosen)
+        per_gauge = tiles_by_gauge(tiles)
+        write_weights(per_gauge, gauges, os.path.join(args.out, f"weights_{tag}.csv"))
+        csv_input.write_vtk(vtkXMLPolyDataWriter(), tiles, os.path.join(args.out, f"tiles_{tag}.vtp"))
+        if not args.no_plots:
+            used, weighted, mean = step_counts(rows, chosen)
+            if used == 0:
+                title = f"{steps.text(chosen)}: no gauge reported (Thiessen areal mean nan)"
+            else:
+                title = (f"{steps.text(chosen)}: Thiessen areal mean {mean:.3f} from {weighted} of {used} "
+                         f"reporting gauges")
+            plot_map(per_gauge, gauges, outline, reporting.get(chosen, set()), title,
+                     os.path.join(args.out, f"map_{tag}.png"), steps.unit)
+        shown.append((chosen, tag, per_gauge))
     if not args.no_plots:
-        if used == 0:
-            title = f"{steps.text(step)}: no gauge reported (Thiessen areal mean nan)"
-        else:
-            title = (f"{steps.text(step)}: Thiessen areal mean {mean:.3f} from {weighted} of {used} "
-                     f"reporting gauges")
-        plot_map(per_gauge, gauges, outline, reporting.get(step, set()), title,
-                 os.path.join(args.out, f"map_{tag}.png"), steps.unit)
         plot_series(rows, os.path.join(args.out, "areal_mean.png"))
 
-    say_earlier_outputs(args.out, {"areal_mean.csv", "unused_inputs.csv", f"weights_{tag}.csv", f"tiles_{tag}.vtp"}
+    tags = [tag for _, tag, _ in shown]
+    step_files = [name for tag in tags for name in (f"weights_{tag}.csv", f"tiles_{tag}.vtp")]
+    plot_files = [] if args.no_plots else [f"map_{tag}.png" for tag in tags] + ["areal_mean.png"]
+    say_earlier_outputs(args.out, {"areal_mean.csv", "unused_inputs.csv", *step_files, *plot_files}
                         | (set() if args.no_all_weights else {all_weights})
-                        | (set() if args.no_plots else {f"map_{tag}.png", "areal_mean.png"})
                         | ({by_feature} if groups else set()))
     valid = [r[-1] for r in rows if not math.isnan(r[-1])]
     print(f"{len(rows)} {steps.unit}s, {len(valid)} with data"
           + (f"; mean of the {steps.adjective} areal means {sum(valid) / len(valid):.3f}"
              if valid else ""))
-    print(f"{steps.text(step)}: areal mean {mean:.3f}, {used} gauges reported, "
-          f"{weighted} weighted; weights sum to {sum(e['weight'] for e in per_gauge.values()):.12f}")
+    for step, _, per_gauge in shown:
+        used, weighted, mean = step_counts(rows, step)
+        print(f"{steps.text(step)}: areal mean {mean:.3f}, {used} gauges reported, "
+              f"{weighted} weighted; weights sum to {sum(e['weight'] for e in per_gauge.values()):.12f}")
     print(f"wrote {args.out}/areal_mean.csv, " + ("" if args.no_all_weights else f"{all_weights}, ")
-          + f"weights_{tag}.csv, tiles_{tag}.vtp"
-          + ("" if args.no_plots else f", map_{tag}.png, areal_mean.png")
+          + ", ".join(step_files + plot_files)
           + f", unused_inputs.csv ({unused} input(s) not used"
           + (f", {len(outside)} of them outside --start/--end)" if outside else ")")
           + (f", {by_feature} ({len(groups)} group(s) of features)" if groups else ""))
+
+
+def step_counts(rows, step):
+    """areal_mean.csv's stations_used, stations_weighted and areal_mean of a step (rows:
+    write_summary's)."""
+    return next(r[-3:] for r in rows if tuple(r[:-3]) == step)
+
+
+def asked_steps(args):
+    """The steps --month, --day or --hour ask for, as (the option as given, the step: (year, month),
+    (year, month, day) or (year, month, day, hour)), in the order given: the default month 1963-08
+    (option "") when none is given. Ends the script naming a value that is not one."""
+    asked = []
+    for text in args.month or []:
+        chosen = re.fullmatch(r"([0-9]{1,4})-([0-9]{1,2})", text.strip())
+        year, month = (int(chosen.group(1)), int(chosen.group(2))) if chosen else (0, 0)
+        if not 1 <= year or not 1 <= month <= 12:
+            sys.exit(f"--month {text!r}: expected YYYY-MM")
+        asked.append((f"--month {text}", (year, month)))
+    for text in args.day or []:
+        chosen = DATE.fullmatch(text.strip())
+        day = tuple(int(v) for v in chosen.groups()) if chosen and chosen.group(3) else None
+        if not day:
+            sys.exit(f"--day {text!r}: expected a date YYYY-MM-DD")
+        if not is_calendar_day(*day):
+            sys.exit(f"--day {text!r}: is not a date of the calendar")
+        asked.append((f"--day {text}", day))
+    for text in args.hour or []:
+        asked.append((f"--hour {text}", chosen_hour(text)))
+    return asked or [("", (1963, 8))]
 
 
 if __name__ == "__main__":

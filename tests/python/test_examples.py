@@ -1013,6 +1013,43 @@ def test_an_earlier_runs_files_in_out_are_named():
             assert_that(all(os.path.exists(os.path.join(out, name)) for name in named), f"{day}: {os.listdir(out)}")
 
 
+def test_several_days_get_the_files_each_gets_alone():
+    # --day given twice writes each day's weights, tiles and map as a run for that day alone does
+    # (the same bytes), says each day's line as that run does, and lists both days' files; a day
+    # given twice, or one whose nearest day of the record is another given day, is written once.
+    days = {(2001, 1, 30): {"N1": 1.5, "N2": 2.5}, (2001, 2, 1): {"N1": 3.0, "N4": 1.25},
+            (2001, 2, 2): {"N2": 0.5, "N3": 7.0}}
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, _ = write_lake_basin(directory)
+        daily = write(directory, "daily.csv", "station_id,date,precip\n" + "".join(
+            f"{s},{y}-{m:02d}-{d:02d},{v}\n" for (y, m, d), values in days.items() for s, v in values.items()))
+        common = {"stations": stations, "observations": daily, "catchment": catchment}
+        alone = {}
+        for day in ("2001-01-30", "2001-02-02"):
+            out = os.path.join(directory, day)
+            stdout, _ = run_colorado(out, plots=True, day=day, what=f"{day} alone", **common)
+            alone[day] = (out, stdout.splitlines())
+        both = os.path.join(directory, "both")
+        stdout, stderr = run_colorado(both, "--day", "2001-02-02", "--day", "2001-01-30", "--day", "2002-01-01",
+                                      plots=True, day="2001-01-30", what="three days", **common)
+        lines = stdout.splitlines()
+        for day, (out, said) in alone.items():
+            tag = day.replace("-", "_")
+            for name in (f"weights_{tag}.csv", f"tiles_{tag}.vtp", f"map_{tag}.png"):
+                with open(os.path.join(out, name), "rb") as a, open(os.path.join(both, name), "rb") as b:
+                    assert_that(a.read() == b.read(), f"{name}: differs from the run for {day} alone")
+            assert_that(said[1] in lines, f"{day}: {said[1]!r} not in {lines}")
+        assert_that("note: 2002-01-01 is not in the record; showing 2001-02-02" in stderr, stderr)
+        assert_that(len(lines) == 4 and [line[:10] for line in lines[1:3]] == ["2001-01-30", "2001-02-02"]
+                    and "weights_2001_01_30.csv, tiles_2001_01_30.vtp, weights_2001_02_02.csv, tiles_2001_02_02.vtp, "
+                    "map_2001_01_30.png, map_2001_02_02.png, areal_mean.png, unused_inputs.csv" in lines[3],
+                    f"the three days' lines: {lines}")
+        files = sorted(name for name in os.listdir(both) if name.startswith(("weights_2", "tiles_", "map_")))
+        assert_that(files == ["map_2001_01_30.png", "map_2001_02_02.png", "tiles_2001_01_30.vtp",
+                              "tiles_2001_02_02.vtp", "weights_2001_01_30.csv", "weights_2001_02_02.csv"],
+                    f"the three days' files: {files}")
+
+
 def test_hourly_observations_give_hourly_means():
     # Observations of hours, by a date column with times on the hour or by an hour column, give a
     # mean an hour, every hour from the first to the last (2001-03-01 01:00 has no row), across
@@ -1953,6 +1990,7 @@ if __name__ == "__main__":
          test_hourly_observations_give_hourly_means, test_start_and_end_choose_the_period,
          test_a_wide_file_of_a_column_per_station_gives_the_long_files_means,
          test_an_earlier_runs_files_in_out_are_named,
+         test_several_days_get_the_files_each_gets_alone,
          test_the_field_separator_and_the_decimal_mark,
          test_small_values_and_a_catchment_across_the_antimeridian,
          test_observations_of_no_gauge_end_the_run,
