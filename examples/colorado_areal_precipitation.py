@@ -18,7 +18,8 @@ Writes into --out:
                          stations_weighted = those whose tile reaches the catchment; areal_mean
                          is empty where no gauge reported)
   weights_YYYY_MM.csv    station_id,name,lon,lat,weight,area_km2,precip for --month (for each
-                         --month when it is given more than once; so for the tiles and the map)
+                         --month when it is given more than once; so for the tiles and the map;
+                         without --month, the month nearest 1963-08 where a gauge reported)
   weights_all_months.csv year,month,station_id,weight,area_km2,precip: every month's weights (a row
                          per month and gauge with a weight)
   tiles_YYYY_MM.vtp      that month's tiles clipped to the catchment, in lon/lat: simple
@@ -1582,7 +1583,8 @@ def main(argv=None):
     parser.add_argument("--out", default="out", help="output directory (created if missing)")
     parser.add_argument("--month", action="append", help="month for the weights, tiles and map, YYYY-MM (may be "
                                                          "given more than once: each month's files; default: 1963-08, "
-                                                         "or the nearest month of the record; with daily or hourly "
+                                                         "or the nearest month of the record where a gauge reported; "
+                                                         "with daily or hourly "
                                                          "observations its first day or hour)")
     parser.add_argument("--day", action="append", help="day for the weights, tiles and map when the observations "
                                                        "give days, YYYY-MM-DD (may be given more than once; with "
@@ -1709,6 +1711,8 @@ def main(argv=None):
 
     shown = []  # per step shown: (step, its tag, per_gauge)
     for option, step in wanted:
+        if not option:
+            step = nearest_reported(rows, steps, step)
         average.UpdateTimeStep(steps.time(step))
         tiles = average.GetOutputDataObject(0)
         messages.check(tiles is None)
@@ -1754,6 +1758,15 @@ def main(argv=None):
           + f", unused_inputs.csv ({unused} input(s) not used"
           + (f", {len(outside)} of them outside --start/--end)" if outside else ")")
           + (f", {by_feature} ({len(groups)} group(s) of features)" if groups else ""))
+
+
+def nearest_reported(rows, steps, step):
+    """The step nearest to step (the earlier of two as near) where a gauge reported (rows:
+    write_summary's), for the default: a --start before the data, or a gap in the record, would
+    otherwise show a map without any gauge. step itself when none reported."""
+    reported = [tuple(r[:-3]) for r in rows if r[-3] > 0]
+    target = steps.time(step)
+    return min(reported, key=lambda s: (abs(steps.time(s) - target), steps.time(s)), default=step)
 
 
 def step_counts(rows, step):

@@ -1044,6 +1044,11 @@ def test_several_days_get_the_files_each_gets_alone():
                     and "weights_2001_01_30.csv, tiles_2001_01_30.vtp, weights_2001_02_02.csv, tiles_2001_02_02.vtp, "
                     "map_2001_01_30.png, map_2001_02_02.png, areal_mean.png, unused_inputs.csv" in lines[3],
                     f"the three days' lines: {lines}")
+        # Without --day the day nearest 1963-08 where a gauge reported: 2001-01-30, not --start's day
+        # before the data.
+        stdout, _ = run_colorado(os.path.join(directory, "early"), plots=False, start="2001-01-28",
+                                 what="a --start before the data", **common)
+        assert_that(stdout.splitlines()[1] == alone["2001-01-30"][1][1], f"the default day: {stdout}")
         files = sorted(name for name in os.listdir(both) if name.startswith(("weights_2", "tiles_", "map_")))
         assert_that(files == ["map_2001_01_30.png", "map_2001_02_02.png", "tiles_2001_01_30.vtp",
                               "tiles_2001_02_02.vtp", "weights_2001_01_30.csv", "weights_2001_02_02.csv"],
