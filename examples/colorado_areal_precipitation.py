@@ -1584,8 +1584,7 @@ def main(argv=None):
     parser.add_argument("--month", action="append", help="month for the weights, tiles and map, YYYY-MM (may be "
                                                          "given more than once: each month's files; default: 1963-08, "
                                                          "or the nearest month of the record where a gauge reported; "
-                                                         "with daily or hourly "
-                                                         "observations its first day or hour)")
+                                                         "with daily or hourly observations its first day or hour)")
     parser.add_argument("--day", action="append", help="day for the weights, tiles and map when the observations "
                                                        "give days, YYYY-MM-DD (may be given more than once; with "
                                                        "hourly observations its 00:00 hour, which for hour-ending "
@@ -1727,13 +1726,7 @@ def main(argv=None):
         write_weights(per_gauge, gauges, os.path.join(args.out, f"weights_{tag}.csv"))
         csv_input.write_vtk(vtkXMLPolyDataWriter(), tiles, os.path.join(args.out, f"tiles_{tag}.vtp"))
         if not args.no_plots:
-            used, weighted, mean = step_counts(rows, chosen)
-            if used == 0:
-                title = f"{steps.text(chosen)}: no gauge reported (Thiessen areal mean nan)"
-            else:
-                title = (f"{steps.text(chosen)}: Thiessen areal mean {mean:.3f} from {weighted} of {used} "
-                         f"reporting gauges")
-            plot_map(per_gauge, gauges, outline, reporting.get(chosen, set()), title,
+            plot_map(per_gauge, gauges, outline, reporting.get(chosen, set()), map_title(rows, steps, chosen),
                      os.path.join(args.out, f"map_{tag}.png"), steps.unit)
         shown.append((chosen, tag, per_gauge))
     if not args.no_plots:
@@ -1767,6 +1760,14 @@ def nearest_reported(rows, steps, step):
     reported = [tuple(r[:-3]) for r in rows if r[-3] > 0]
     target = steps.time(step)
     return min(reported, key=lambda s: (abs(steps.time(s) - target), steps.time(s)), default=step)
+
+
+def map_title(rows, steps, step):
+    """The map's title: the step, its areal mean and how many gauges gave it."""
+    used, weighted, mean = step_counts(rows, step)
+    if used == 0:
+        return f"{steps.text(step)}: no gauge reported (Thiessen areal mean nan)"
+    return f"{steps.text(step)}: Thiessen areal mean {mean:.3f} from {weighted} of {used} reporting gauges"
 
 
 def step_counts(rows, step):
