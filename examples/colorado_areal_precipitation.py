@@ -36,7 +36,10 @@ Writes into --out:
                          a station no gauge has, or without a station id or time, and an
                          observation before --start or after --end); for a gauge at
                          the place of an earlier one, or a repeated observation, the note gives
-                         the earlier one's line; the warnings name only the first 20 of each kind
+                         the earlier one's line; observations outside --start/--end one after
+                         the other make one row: its lines first-last, and in the note how
+                         many (of how many stations); the warnings name only the first 20 of
+                         each kind
   areal_mean_by_ATTRIBUTE.csv
                          with --each ATTRIBUTE: ATTRIBUTE,year,month,stations_used,
                          stations_weighted,areal_mean,area_km2, the means over each group of the
@@ -494,7 +497,7 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
         merged.setdefault(step_of[m], set()).update(gauges)
     reporting = merged
     period = Period(steps, *bounds, bound_texts, path)
-    outside = []  # (line, station id) of each observation before --start or after --end
+    outside = []  # the observations before --start or after --end, in runs (rows_in_period)
     if lines and not present:
         # (the ids as written, each once, in the files' order: they are for comparing by eye)
         seen, there = list(names), list(dict.fromkeys(station_ids))
@@ -517,7 +520,7 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
         present = {step for step in present if step in period}
         reporting = {step: gauges for step, gauges in reporting.items() if step in period}
         if outside:
-            print(f"{path}: {len(outside)} observation(s) outside --start/--end are not used (unused_inputs.csv "
+            print(f"{path}: {outside_count(outside)} observation(s) outside --start/--end are not used (unused_inputs.csv "
                   "lists them)", file=sys.stderr)
         if not present:
             given = " and ".join(f"--{name} {text}" for name, text in zip(("start", "end"), bound_texts)
@@ -603,23 +606,37 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
 
 def rows_in_period(stations, values, lines, read, keep):
     """The observation rows whose step is in --start/--end (keep: 1 for each such row): their
-    station ids, values, lines and step indices, and the (line, station id) of each of the
-    others."""
+    station ids, values, lines and step indices, and the others in runs of rows one after the other
+    (no kept row between), each as [first line, last line, how many, {station ids}]: a record
+    trimmed to a few of its years has millions of rows outside, in a few runs (one before and one
+    after when the file is in time order, two per station when it is in station order)."""
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
 
     kept_stations, kept_values = vtkStringArray(), vtkDoubleArray()
     kept_stations.SetName(stations.GetName())
     kept_values.SetName(values.GetName())
     kept_lines, kept_read, outside = array.array("l"), array.array("l"), []
+    run_end = -1  # the row after the last run's last row
     for row, k in enumerate(read):
         if keep[row]:
             kept_stations.InsertNextValue(stations.GetValue(row))
             kept_values.InsertNextValue(values.GetValue(row))
             kept_lines.append(lines[row])
             kept_read.append(k)
-        else:
-            outside.append((lines[row], stations.GetValue(row)))
+            continue
+        if row != run_end:
+            outside.append([lines[row], lines[row], 0, set()])
+        run = outside[-1]
+        run[1] = lines[row]
+        run[2] += 1
+        run[3].add(stations.GetValue(row))
+        run_end = row + 1
     return kept_stations, kept_values, kept_lines, kept_read, outside
+
+
+def outside_count(outside):
+    """How many observations the runs of rows_in_period hold."""
+    return sum(count for _, _, count, _ in outside)
 
 
 # The names this script gives its outputs (the module docstring's list): a file in --out named so
@@ -1249,8 +1266,10 @@ def write_unused(summary, files, station_ids, observations, unit, path, unmatche
     that gauge's line; for an observation repeating an earlier one, the earlier one's line; a
     row for each column of a wide observations file that names no gauge's station
     (unmatched_columns: (column number, name), read_observations), at the header's line, its
-    number in the note; and a row for each observation outside --start/--end (outside: (line,
-    station id), read_observations), which the filter never saw. Returns the number of rows."""
+    number in the note; and a row for each run of observations outside --start/--end (outside:
+    rows_in_period's runs), which the filter never saw: its lines (first-last), its station, or
+    when it holds several, how many observations of how many stations. Returns the number of
+    inputs listed."""
     fields = summary.GetFieldData()
     stations = observations.GetColumnByName("station_id")
     earlier = fields.GetArray("DuplicateOfGaugeIds")
@@ -1279,9 +1298,12 @@ def write_unused(summary, files, station_ids, observations, unit, path, unmatche
             out.writerow(["observations column naming no gauge's station (not read)", files.observations, 1, name,
                           f"column {number}"])
             written += 1
-        for line, station in outside:
-            out.writerow([OUTSIDE_PERIOD, files.observations, line, station, ""])
-            written += 1
+        for first, last, count, names in outside:
+            several = f" of {len(names)} stations" if len(names) > 1 else ""
+            out.writerow([OUTSIDE_PERIOD, files.observations, first if first == last else f"{first}-{last}",
+                          next(iter(names)) if len(names) == 1 else "",
+                          f"{count} observations{several}" if count > 1 else ""])
+            written += count
     return written
 
 
@@ -1749,7 +1771,7 @@ def main(argv=None):
     print(f"wrote {args.out}/areal_mean.csv, " + ("" if args.no_all_weights else f"{all_weights}, ")
           + ", ".join(step_files + plot_files)
           + f", unused_inputs.csv ({unused} input(s) not used"
-          + (f", {len(outside)} of them outside --start/--end)" if outside else ")")
+          + (f", {outside_count(outside)} of them outside --start/--end)" if outside else ")")
           + (f", {by_feature} ({len(groups)} group(s) of features)" if groups else ""))
 
 

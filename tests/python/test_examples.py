@@ -823,6 +823,16 @@ def test_daily_observations_give_daily_means():
                     and "note: 2001-03-01 is not in the record; showing 2001-02-28" in stderr, f"month ends: {stderr}")
 
 
+def outside_lines(runs):
+    """The lines of unused_inputs.csv's rows of observations outside --start/--end (a line, or
+    first-last for a run of them), ascending."""
+    lines = []
+    for run in runs:
+        first, _, last = run["line"].partition("-")
+        lines.extend(range(int(first), int(last or first) + 1))
+    return sorted(lines)
+
+
 def test_start_and_end_choose_the_period():
     # --start and --end restrict the steps: areal_mean.csv runs from the one to the other, each
     # month as in the whole record's run, months before the data included (without a mean), and
@@ -846,12 +856,20 @@ def test_start_and_end_choose_the_period():
                     assert_that(r[column] == expected[column],
                                 f"{month}: {column} {r[column]!r}, the whole record's run gives {expected[column]!r}")
             first, last = months[0], months[-1]
-            outside = {(k + 2, row["station_id"]) for k, row in enumerate(raw)
+            outside = {k + 2: row["station_id"] for k, row in enumerate(raw)
                        if not first <= (int(row["year"]), int(row["month"])) <= last}
-            listed = {(int(u["line"]), u["station_id"]) for u in read_csv(os.path.join(out, "unused_inputs.csv"))
-                      if u["kind"] == outside_kind}
-            assert_that(listed == outside and outside, f"{start} to {end}: {len(listed)} observations listed outside, "
-                        f"the file has {len(outside)}")
+            runs = [u for u in read_csv(os.path.join(out, "unused_inputs.csv")) if u["kind"] == outside_kind]
+            listed = outside_lines(runs)
+            assert_that(sorted(listed) == sorted(outside) and outside, f"{start} to {end}: {len(listed)} observations "
+                        f"listed outside, the file has {len(outside)}")
+            for run in runs:  # (the file is in time order: a run of several stations before, one after)
+                lines = outside_lines([run])
+                names = {outside[line] for line in lines}
+                said = (run["station_id"], run["note"])
+                expected = ((names.pop(), "") if len(lines) == 1 else (next(iter(names)), f"{len(lines)} observations")
+                            if len(names) == 1 else ("", f"{len(lines)} observations of {len(names)} stations"))
+                assert_that(said == expected, f"{start} to {end}: the run {run}, expected {expected}")
+            assert_that(len(runs) == (1 if start == "1894-11" else 2), f"{start} to {end}: the runs {runs}")
             assert_that(f"{len(outside)} observation(s) outside --start/--end are not used" in stderr, stderr)
             assert_that(f"{len(outside)} of them outside --start/--end)" in stdout, stdout)
         _, stderr = run_colorado(os.path.join(directory, "later"), "--start", "1960-03", "--end", "1961-02",
@@ -872,8 +890,8 @@ def test_start_and_end_choose_the_period():
                          what=f"daily {options}", **options)
             got = [tuple(int(r[k]) for k in ("year", "month", "day")) for r in read_csv(os.path.join(out, "areal_mean.csv"))]
             assert_that(got == expected, f"daily {options}: the days {got}")
-            lines = sorted(int(u["line"]) for u in read_csv(os.path.join(out, "unused_inputs.csv"))
-                           if u["kind"] == outside_kind)
+            lines = outside_lines([u for u in read_csv(os.path.join(out, "unused_inputs.csv"))
+                                   if u["kind"] == outside_kind])
             day_of_line = [day for day, values in days.items() for _ in values]  # (line k + 2)
             assert_that(lines == [k + 2 for k, day in enumerate(day_of_line) if not expected[0] <= day <= expected[-1]],
                         f"daily {options}: lines listed outside {lines}")
