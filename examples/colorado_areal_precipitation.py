@@ -19,7 +19,7 @@ Writes into --out:
                          is empty where no gauge reported)
   weights_YYYY_MM.csv    station_id,name,lon,lat,weight,area_km2,precip for --month (for each
                          --month when it is given more than once; so for the tiles and the map;
-                         without --month, the month nearest 1963-08 where a gauge reported)
+                         without --month, 1963-08 or the month nearest it where a gauge reported)
   weights_all_months.csv year,month,station_id,weight,area_km2,precip: every month's weights (a row
                          per month and gauge with a weight)
   tiles_YYYY_MM.vtp      that month's tiles clipped to the catchment, in lon/lat: simple
@@ -65,7 +65,8 @@ station_id and precip columns; a column that names no gauge's station is named a
 Units are those of the data (for the Colorado data: documented as mm, the magnitudes look like
 cm; see examples/data/README.md).
 Files of an earlier run in --out that this run does not write (another month's map, weights and
-tiles, another --each's means, areal_mean.png after --no-plots) are kept and named in a note.
+tiles, another --each's means, areal_mean.png after --no-plots) are kept and named in a note;
+--no-all-weights removes an earlier weights_all_*.csv of the same steps, and says so.
 
 Run with Debian's /usr/bin/python3 and PYTHONPATH=build/python (scripts/demo does both).
 """
@@ -639,21 +640,23 @@ def outside_count(outside):
     return sum(count for _, _, count, _ in outside)
 
 
-# The names this script gives its outputs (the module docstring's list): a file in --out named so
-# that this run did not write is an earlier run's.
-OUTPUT_NAME = re.compile(r"(areal_mean(\.csv|\.png|_by_.+\.csv)|unused_inputs\.csv|weights_.+\.csv|tiles_.+\.vtp"
-                         r"|map_.+\.png)")
+# The names this script gives its outputs (the module docstring's list; a step's tag is Steps.tag's
+# 2001_03, 2001_03_01 or 2001_03_01_06): a file in --out named so that this run did not write is
+# most likely an earlier run's.
+TAG = r"[0-9]{4}_[0-9]{2}(_[0-9]{2}(_[0-9]{2})?)?"
+OUTPUT_NAME = re.compile(rf"areal_mean\.(csv|png)|areal_mean_by_.+\.csv|unused_inputs\.csv"
+                         rf"|weights_all_(months|days|hours)\.csv|weights_{TAG}\.csv|tiles_{TAG}\.vtp|map_{TAG}\.png")
 
 
 def say_earlier_outputs(out, written):
-    """Names the files in out that look like this script's outputs but were not written by this
-    run (written: their names): an earlier run's, with other options or other data, which could
-    be taken for this run's. They are left in place (they may be wanted)."""
+    """Names the files in out named as this script names its outputs but not written by this run
+    (written: their names): most likely an earlier run's, with other options or other data, which
+    could be taken for this run's. They are left in place (they may be wanted)."""
     earlier = sorted(name for name in os.listdir(out) if OUTPUT_NAME.fullmatch(name) and name not in written)
     if earlier:
-        print(f"note: {out} also holds {len(earlier)} file(s) that this run did not write (an earlier run's, "
-              f"kept): {', '.join(earlier[:10])}{f' and {len(earlier) - 10} more' if len(earlier) > 10 else ''}",
-              file=sys.stderr)
+        print(f"note: {out} also holds {len(earlier)} file(s) named as this script's outputs that this run did "
+              f"not write (an earlier run's?), kept: {', '.join(earlier[:10])}"
+              f"{f' and {len(earlier) - 10} more' if len(earlier) > 10 else ''}", file=sys.stderr)
 
 
 def zip_member(path):
@@ -1721,6 +1724,8 @@ def main(argv=None):
         stale = os.path.join(args.out, all_weights)
         if os.path.exists(stale):
             os.remove(stale)  # (an earlier run's, which would no longer match the other files)
+            print(f"note: removed {stale}, an earlier run's: with --no-all-weights it would not match this run's "
+                  "files", file=sys.stderr)
     else:
         write_all_weights(average.GetOutputDataObject(2), steps, os.path.join(args.out, all_weights))
     unused = write_unused(summary, files, station_ids, observations, steps.unit,
@@ -1776,12 +1781,14 @@ def main(argv=None):
 
 
 def nearest_reported(rows, steps, step):
-    """The step nearest to step (the earlier of two as near) where a gauge reported (rows:
-    write_summary's), for the default: a --start before the data, or a gap in the record, would
-    otherwise show a map without any gauge. step itself when none reported."""
+    """The first step of step's month where a gauge reported, else the step nearest to step (the
+    earlier of two as near) where one did (rows: write_summary's), for the default: a --start
+    before the data, or a gap in the record, would otherwise show a map without any gauge. step
+    itself when none reported."""
     reported = [tuple(r[:-3]) for r in rows if r[-3] > 0]
     target = steps.time(step)
-    return min(reported, key=lambda s: (abs(steps.time(s) - target), steps.time(s)), default=step)
+    return min(reported, key=lambda s: (s[:2] != step[:2], abs(steps.time(s) - target), steps.time(s)),
+               default=step)
 
 
 def map_title(rows, steps, step):

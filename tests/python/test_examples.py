@@ -1019,14 +1019,17 @@ def test_an_earlier_runs_files_in_out_are_named():
         daily = write(directory, "daily.csv", "station_id,date,precip\n" + "".join(
             f"{s},{y}-{m:02d}-{d:02d},{v}\n" for (y, m, d), values in days.items() for s, v in values.items()))
         out = os.path.join(directory, "out")
+        os.makedirs(out)
+        for own in ("weights_by_hand.csv", "map_of_the_basin.png", "notes.txt"):  # (the user's: not named)
+            write(out, own, "")
         earlier = ["areal_mean.png", "map_2001_01_30.png", "tiles_2001_01_30.vtp", "weights_2001_01_30.csv"]
         for day, plots, named in (("2001-01-30", True, []), ("2001-02-01", False, earlier),
                                   ("2001-02-01", False, earlier)):
             _, stderr = run_colorado(out, stations=stations, observations=daily, catchment=catchment, day=day,
                                      plots=plots, what=f"the run for {day}")
             said = [m for m in stderr_messages(stderr) if "that this run did not write" in m]
-            expected = [f"note: {out} also holds {len(named)} file(s) that this run did not write (an earlier "
-                        f"run's, kept): {', '.join(named)}"] if named else []
+            expected = [f"note: {out} also holds {len(named)} file(s) named as this script's outputs that this run "
+                        f"did not write (an earlier run's?), kept: {', '.join(named)}"] if named else []
             assert_that(said == expected, f"{day}: {said}, expected {expected}")
             assert_that(all(os.path.exists(os.path.join(out, name)) for name in named), f"{day}: {os.listdir(out)}")
 
@@ -1067,6 +1070,11 @@ def test_several_days_get_the_files_each_gets_alone():
         stdout, _ = run_colorado(os.path.join(directory, "early"), plots=False, start="2001-01-28",
                                  what="a --start before the data", **common)
         assert_that(stdout.splitlines()[1] == alone["2001-01-30"][1][1], f"the default day: {stdout}")
+        # A day of 1963-08 with data is shown before a day as near outside it: 1963-08-02, not 07-31.
+        august = write(directory, "august.csv", "station_id,date,precip\nN1,1963-07-31,1\nN2,1963-08-02,2\n")
+        stdout, _ = run_colorado(os.path.join(directory, "august"), plots=False, what="days around 1963-08-01",
+                                 **dict(common, observations=august))
+        assert_that(stdout.splitlines()[1].startswith("1963-08-02: "), f"the default day: {stdout}")
         files = sorted(name for name in os.listdir(both) if name.startswith(("weights_2", "tiles_", "map_")))
         assert_that(files == ["map_2001_01_30.png", "map_2001_02_02.png", "tiles_2001_01_30.vtp",
                               "tiles_2001_02_02.vtp", "weights_2001_01_30.csv", "weights_2001_02_02.csv"],
@@ -1327,11 +1335,14 @@ def test_compressed_observations_are_read_and_all_weights_can_be_skipped():
             for name in ("areal_mean.csv", "weights_all_months.csv", "unused_inputs.csv"):
                 same = open(os.path.join(plain, name)).read() == open(os.path.join(unpacked, name)).read()
                 assert_that(same, f"{name} from observations{extension} differs from the plain file's")
-        stdout, _ = run_colorado(plain, "--no-all-weights", stations=stations, observations=observations,
-                                 catchment=catchment, plots=False, what="--no-all-weights")
+        stdout, stderr = run_colorado(plain, "--no-all-weights", stations=stations, observations=observations,
+                                      catchment=catchment, plots=False, what="--no-all-weights")
         left = sorted(os.listdir(plain))
         assert_that(left == [n for n in names if n != "weights_all_months.csv"] and "weights_all" not in stdout,
                     f"--no-all-weights: {left} (before {names}), {stdout!r}")
+        removed = os.path.join(plain, "weights_all_months.csv")
+        assert_that(f"note: removed {removed}, an earlier run's: with --no-all-weights it would not match this "
+                    "run's files" in stderr_messages(stderr), f"--no-all-weights: {stderr}")
 
 
 def test_text_lines_split_as_a_string_io_does():
