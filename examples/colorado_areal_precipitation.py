@@ -1745,7 +1745,10 @@ def main(argv=None):
         chosen = steps.of_time[tiles.GetInformation().Get(tiles.DATA_TIME_STEP())]
         if chosen != step and option:  # (the default: the record's nearest step, unsaid)
             where = "outside --start/--end" if step not in period else "not in the record"
-            print(f"note: {steps.text(step)} is {where}; showing {steps.text(chosen)}", file=sys.stderr)
+            # (the step as given, and as the step it stands for where they differ: a month of days)
+            given = option.split(" ", 1)[1].strip()
+            label = steps.text(step) if given == steps.text(step) else f"{given} ({steps.text(step)})"
+            print(f"note: {label} is {where}; showing {steps.text(chosen)}", file=sys.stderr)
         if any(chosen == earlier for earlier, _, _ in shown):
             continue  # (its files are written: another option gave the same step)
         tag = steps.tag(chosen)
@@ -1812,9 +1815,11 @@ def asked_steps(args):
     asked = []
     for text in args.month or []:
         chosen = re.fullmatch(r"([0-9]{1,4})-([0-9]{1,2})", text.strip())
-        year, month = (int(chosen.group(1)), int(chosen.group(2))) if chosen else (0, 0)
-        if not 1 <= year or not 1 <= month <= 12:
+        if not chosen:
             sys.exit(f"--month {text!r}: expected YYYY-MM")
+        year, month = int(chosen.group(1)), int(chosen.group(2))
+        if not 1 <= year or not 1 <= month <= 12:
+            sys.exit(f"--month {text!r}: {'the year must be 1 or later' if year < 1 else 'the month must be 01 to 12'}")
         asked.append((f"--month {text}", (year, month)))
     for text in args.day or []:
         chosen = DATE.fullmatch(text.strip())

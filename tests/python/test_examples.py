@@ -284,7 +284,8 @@ def test_bad_files_are_named():
             (("--observations", empty_id), [empty_id + ":2", "'station_id' is empty"]),
             (("--catchment", not_polygon), [not_polygon, "no polygon"]),
             (("--catchment", missing), [missing, "no such catchment file"]),
-            (("--month", "1963-13"), ["--month", "YYYY-MM"]),
+            (("--month", "1963-13"), ["--month '1963-13': the month must be 01 to 12"]),
+            (("--month", "1963/08"), ["--month '1963/08': expected YYYY-MM"]),
             (("--observations", header_only), ["the observations table has no rows"]),
             (("--observations", infinite), [infinite + ":3", "'precip'", "'1e999' is not a finite number"]),
             # The line the malformed record ends on (the unclosed quote runs to the end of line 3).
@@ -895,6 +896,11 @@ def test_start_and_end_choose_the_period():
             day_of_line = [day for day, values in days.items() for _ in values]  # (line k + 2)
             assert_that(lines == [k + 2 for k, day in enumerate(day_of_line) if not expected[0] <= day <= expected[-1]],
                         f"daily {options}: lines listed outside {lines}")
+        # A month given for days is named as given, with the day it stands for.
+        _, stderr = run_colorado(os.path.join(directory, "daily_month"), stations=stations, observations=daily,
+                                 catchment=catchment, plots=False, what="--month of days", start="2001-02",
+                                 month="2001-01")
+        assert_that("note: 2001-01 (2001-01-01) is outside --start/--end; showing 2001-02-01" in stderr, stderr)
 
         # Missing and negative values outside the period are not counted as read: only inside.
         odd = write(directory, "odd.csv", "station_id,date,precip\nN1,2001-01-30,NA\nN2,2001-01-30,-5\n"
