@@ -387,10 +387,16 @@ def say_repeated_times(path, repeats):
     line)). A repeated time is a repeated observation for each station, as in a long file: the
     earlier value is used, a repeat's fills an earlier empty cell; said here by row."""
     if repeats:
-        shown = ", ".join(f"line {line} (as line {earlier})" for line, earlier in repeats[:20])
-        print(f"{path}: {len(repeats)} row(s) repeat the time of an earlier row: {shown}"
-              f"{f' and {len(repeats) - 20} more' if len(repeats) > 20 else ''}; where both have a value the "
-              "earlier one is used, and a repeat's value fills an earlier empty cell", file=sys.stderr)
+        shown = first_and_more(repeats, lambda repeat: "line {} (as line {})".format(*repeat))
+        print(f"{path}: {len(repeats)} row(s) repeat the time of an earlier row: {shown}; where both have a value "
+              "the earlier one is used, and a repeat's value fills an earlier empty cell", file=sys.stderr)
+
+
+def first_and_more(items, describe, count=20):
+    """The first count items, each as describe gives it, joined by commas, then ' and N more' for
+    the rest (a warning names a few of what may be millions)."""
+    more = f" and {len(items) - count} more" if len(items) > count else ""
+    return ", ".join(describe(item) for item in items[:count]) + more
 
 
 def lines_kept(lines, row_kept, wanted):
@@ -529,9 +535,9 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
             csv_input.fail(f"{path}: no observation of a gauge's station is within {given} (its {steps.unit}s run "
                            f"from {steps.text(min(step_of.values()))} to {steps.text(max(step_of.values()))})")
     if unmatched:
-        shown = ", ".join(f"{name!r} (column {number})" for number, name in unmatched[:20])
-        print(f"{path}: {len(unmatched)} column(s) name no station of {stations_path} and are not read: {shown}"
-              f"{f' and {len(unmatched) - 20} more' if len(unmatched) > 20 else ''}", file=sys.stderr)
+        shown = first_and_more(unmatched, lambda column: f"{column[1]!r} (column {column[0]})")
+        print(f"{path}: {len(unmatched)} column(s) name no station of {stations_path} and are not read: {shown}",
+              file=sys.stderr)
     if coded:
         print(f"{path}: {coded} observation(s) with a --missing-value value "
               f"({', '.join(f'{v:g}' for v in sorted(missing_values))}) count as missing", file=sys.stderr)
@@ -543,10 +549,9 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     if negative:
         # Precipitation is never negative: these are most often a missing-value code (-99, -9999)
         # that would drag the means down. They are used as given, and named.
-        shown = ", ".join(str(line) for _, line in negative[:20])
-        more = f" and {len(negative) - 20} more" if len(negative) > 20 else ""
+        shown = first_and_more(negative, lambda negative: str(negative[1]))
         print(f"{path}: {len(negative)} observation(s) have a negative precipitation, used as given "
-              f"(write a missing value as NA, or give --missing-value, if that is what they mean): line(s) {shown}{more}",
+              f"(write a missing value as NA, or give --missing-value, if that is what they mean): line(s) {shown}",
               file=sys.stderr)
     if steps.unit == "day" and len({day[:2] for day in every_step}) > 1:
         # Monthly values stamped with a day (2001-01-01, 2001-02-01; or month ends) would be read
@@ -655,8 +660,7 @@ def say_earlier_outputs(out, written):
     earlier = sorted(name for name in os.listdir(out) if OUTPUT_NAME.fullmatch(name) and name not in written)
     if earlier:
         print(f"note: {out} also holds {len(earlier)} file(s) named as this script's outputs that this run did "
-              f"not write (an earlier run's?), kept: {', '.join(earlier[:10])}"
-              f"{f' and {len(earlier) - 10} more' if len(earlier) > 10 else ''}", file=sys.stderr)
+              f"not write (an earlier run's?), kept: {first_and_more(earlier, str, 10)}", file=sys.stderr)
 
 
 def zip_member(path):

@@ -54,6 +54,13 @@ def write(directory, name, text):
     return path
 
 
+def write_daily(directory, name, days):
+    """A long file of daily observations ({(year, month, day): {station: value}}) as
+    station_id,date,precip in directory/name; returns its path."""
+    return write(directory, name, "station_id,date,precip\n" + "".join(
+        f"{s},{y}-{m:02d}-{d:02d},{v}\n" for (y, m, d), values in days.items() for s, v in values.items()))
+
+
 def write_stations(path, gauges):
     """A stations file of gauges ({station_id: (lon, lat)})."""
     with open(path, "w") as f:
@@ -732,8 +739,7 @@ def test_daily_observations_give_daily_means():
             (2001, 2, 2): {"N2": 0.5, "N3": 7.0, "N4": 2.0, "N5": 3.5}}
     with tempfile.TemporaryDirectory() as directory:
         catchment, stations, _ = write_lake_basin(directory)
-        by_date = write(directory, "by_date.csv", "station_id,date,precip\n" + "".join(
-            f"{s},{y}-{m:02d}-{d:02d},{v}\n" for (y, m, d), values in days.items() for s, v in values.items()))
+        by_date = write_daily(directory, "by_date.csv", days)
         by_columns = write(directory, "by_columns.csv", "station_id,year,month,day,precip\n" + "".join(
             f"{s},{y},{m},{d},{v}\n" for (y, m, d), values in days.items() for s, v in values.items()))
         # Timestamps at midnight, as a spreadsheet may export days, are the days.
@@ -881,8 +887,7 @@ def test_start_and_end_choose_the_period():
         days = {(2001, 1, 30): {"N1": 1.5, "N2": 2.5}, (2001, 2, 1): {"N1": 3.0, "N4": 1.25},
                 (2001, 2, 2): {"N2": 0.5, "N3": 7.0}}
         catchment, stations, _ = write_lake_basin(directory)
-        daily = write(directory, "daily.csv", "station_id,date,precip\n" + "".join(
-            f"{s},{y}-{m:02d}-{d:02d},{v}\n" for (y, m, d), values in days.items() for s, v in values.items()))
+        daily = write_daily(directory, "daily.csv", days)
         for options, expected in (({"start": "2001-02"}, [(2001, 2, 1), (2001, 2, 2)]),
                                   ({"end": "2001-01"}, [(2001, 1, 30), (2001, 1, 31)]),
                                   ({"start": "2001-01-31", "end": "2001-02-01"}, [(2001, 1, 31), (2001, 2, 1)])):
@@ -1022,8 +1027,7 @@ def test_an_earlier_runs_files_in_out_are_named():
     days = {(2001, 1, 30): {"N1": 1.5, "N2": 2.5}, (2001, 2, 1): {"N1": 3.0, "N4": 1.25}}
     with tempfile.TemporaryDirectory() as directory:
         catchment, stations, _ = write_lake_basin(directory)
-        daily = write(directory, "daily.csv", "station_id,date,precip\n" + "".join(
-            f"{s},{y}-{m:02d}-{d:02d},{v}\n" for (y, m, d), values in days.items() for s, v in values.items()))
+        daily = write_daily(directory, "daily.csv", days)
         out = os.path.join(directory, "out")
         os.makedirs(out)
         for own in ("weights_by_hand.csv", "map_of_the_basin.png", "notes.txt"):  # (the user's: not named)
@@ -1048,8 +1052,7 @@ def test_several_days_get_the_files_each_gets_alone():
             (2001, 2, 2): {"N2": 0.5, "N3": 7.0}}
     with tempfile.TemporaryDirectory() as directory:
         catchment, stations, _ = write_lake_basin(directory)
-        daily = write(directory, "daily.csv", "station_id,date,precip\n" + "".join(
-            f"{s},{y}-{m:02d}-{d:02d},{v}\n" for (y, m, d), values in days.items() for s, v in values.items()))
+        daily = write_daily(directory, "daily.csv", days)
         common = {"stations": stations, "observations": daily, "catchment": catchment}
         alone = {}
         for day in ("2001-01-30", "2001-02-02"):
