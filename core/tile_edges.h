@@ -118,8 +118,8 @@ void AppendTile(TileSet& tiles,
 /// Appends every tile of from to tiles (joining chunks computed apart, in order).
 void AppendTileSet(TileSet& tiles, const TileSet& from);
 
-/// The chunks' tiles in chunk order, as one set: part 0 moved in (its room reserved for all, as
-/// the derivations do), the others appended. The parts are left moved from.
+/// The chunks' tiles in chunk order, as one set: part 0 moved in (no copy; the full derivation
+/// reserves room for all tiles in it), the others appended. The parts are left moved from.
 TileSet JoinTileParts(std::vector<OwnCacheLines<TileSet>>& parts);
 
 /// The per-tile columns TileSet and TileMesh share: one tile's (its offset is where its vertices

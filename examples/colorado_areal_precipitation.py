@@ -328,9 +328,10 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
       name). Ends the script when none of them is a gauge's, naming the stations
       file (stations_path) and some of its ids as written (station_ids), when two columns name
       one gauge's station (which of them holds its values would be a guess), or when it has no
-      time column. The cells without a value passed over are appended to gaps as (line, how
-      many), a row repeating the time of an earlier one to repeats as (line, the earlier line):
-      the caller names them once it knows which lines lie within --start/--end.
+      time column. The cells without a value passed over are appended to gaps as (the index of
+      the line's first record yielded, how many), a row repeating the time of an earlier one to
+      repeats as (that index, line, the earlier line): the caller names those within --start/--end
+      once it knows which records are, as it does its own records' odd values.
     A file with only one of station_id and precip is a long file lacking the other (named)."""
     header = []
     records = csv_input.rows(path, (), "observations", ("station_id", "precip", *TIME_COLUMNS), header,
@@ -369,25 +370,27 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
                        "with a column per station named by its station_id (date,ID1,ID2,...)")
     times = [name for name in header if name in TIME_COLUMNS]
     first_line = {}  # each row's time as written, and the line that first gave it
+    yielded = 0  # the records yielded so far
     for line, row in records:
         written = tuple((row.get(name) or "").strip() for name in times)
         if first_line.setdefault(written, line) != line:
-            repeats.append((line, first_line[written]))
+            repeats.append((yielded, line, first_line[written]))
         # Only the cells with a value (a wide record is mostly gaps: 58% of Colorado's cells), and
         # the first cell of a row without any, whose time stays a step where no gauge reported.
         reported = [column for column in columns if not csv_input.is_missing(row.get(column))]
         if len(columns) > max(len(reported), 1):  # (the cells passed over, for the count)
-            gaps.append((line, len(columns) - max(len(reported), 1)))
+            gaps.append((yielded, len(columns) - max(len(reported), 1)))
         for column in reported or columns[:1]:
             yield line, row, column, column
+        yielded += max(len(reported), 1)
 
 
 def say_repeated_times(path, repeats):
-    """Names a wide file's rows that repeat the time of an earlier row (repeats: (line, the earlier
-    line)). A repeated time is a repeated observation for each station, as in a long file: the
+    """Names a wide file's rows that repeat the time of an earlier row (repeats: observation_records'
+    (record, line, the earlier line)). A repeated time is a repeated observation for each station, as in a long file: the
     earlier value is used, a repeat's fills an earlier empty cell; said here by row."""
     if repeats:
-        shown = first_and_more(repeats, lambda repeat: "line {} (as line {})".format(*repeat))
+        shown = first_and_more(repeats, lambda repeat: f"line {repeat[1]} (as line {repeat[2]})")
         print(f"{path}: {len(repeats)} row(s) repeat the time of an earlier row: {shown}; where both have a value "
               "the earlier one is used, and a repeat's value fills an earlier empty cell", file=sys.stderr)
 
@@ -397,13 +400,6 @@ def first_and_more(items, describe, count=20):
     the rest (a warning names a few of what may be millions)."""
     more = f" and {len(items) - count} more" if len(items) > count else ""
     return ", ".join(describe(item) for item in items[:count]) + more
-
-
-def lines_kept(lines, row_kept, wanted):
-    """Of the file's lines in wanted, those whose observation rows lie within --start/--end (lines
-    and row_kept: per row, its line and 1 if kept; a wide file's line gives rows all of one time,
-    so all of them are kept or none)."""
-    return {line for line, kept in zip(lines, row_kept) if kept and line in wanted}
 
 
 # The most steps (hours, in practice) from the first observation's to the last's: every step
@@ -454,8 +450,8 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     first = {}  # the first line of a month, a day, a day and time, and a time other than midnight
     hour_column, at_24 = False, 0
     unmatched = []  # a wide file's columns that are no gauge's station
-    gaps = []  # (line, how many) of a wide file's cells without a value, not made rows
-    repeats = []  # (line, the earlier line) of a wide file's rows repeating an earlier row's time
+    gaps = []  # (row, how many) of a wide file's cells without a value, not made rows
+    repeats = []  # (row, line, the earlier line) of a wide file's rows repeating an earlier row's time
     reading = ReadingProgress(path)
     step_line = None  # the line of `step` (a wide file's line gives several records)
     for line, row, station, column in observation_records(path, gauge_of, stations_path, station_ids, unmatched,
@@ -515,10 +511,9 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     if period.given():
         kept = array.array("b", (step_of[m] in period for m in step_index))  # (by step index)
         row_kept = array.array("b", (kept[k] for k in read))
-        if gaps or repeats:  # (a wide file's empty cells and repeated times: those within only)
-            inside = lines_kept(lines, row_kept, {line for line, _ in gaps} | {line for line, _ in repeats})
-            gaps = [(line, count) for line, count in gaps if line in inside]
-            repeats = [(line, earlier) for line, earlier in repeats if line in inside]
+        # (a wide file's empty cells and repeated times by the row of their line: those within only)
+        gaps = [gap for gap in gaps if row_kept[gap[0]]]
+        repeats = [repeat for repeat in repeats if row_kept[repeat[0]]]
         stations, values, lines, read, outside = rows_in_period(stations, values, lines, read, row_kept)
         unrecorded = sum(1 for kind, used in zip(missing_kind, row_kept) if kind == 1 and used)
         coded = sum(1 for kind, used in zip(missing_kind, row_kept) if kind == 2 and used)
@@ -1699,8 +1694,7 @@ def main(argv=None):
             csv_input.fail(f"{option}: the observations of {args.observations} are {steps.adjective} "
                            f"(use --{steps.unit})")
     # (a month is its first day or hour with daily or hourly steps; a day, its 00:00 hour)
-    wanted = [(option, (*when, 1, 0)[:steps.fields] if len(when) == 2 else (*when, 0)[:steps.fields])
-              for option, when in asked]
+    wanted = [(option, when, widened(when, steps.fields, False)) for option, when in asked]
     catchment, outline = read_catchment(args.catchment, args.feature)
     groups = polygon_groups(features_by_value(catchment, each, args.catchment), each,
                             args.catchment) if each is not None else None
@@ -1740,7 +1734,7 @@ def main(argv=None):
                                os.path.join(args.out, by_feature))
 
     shown = []  # per step shown: (step, its tag, per_gauge)
-    for option, step in wanted:
+    for option, when, step in wanted:
         if not option:
             step = nearest_reported(rows, steps, step)
         average.UpdateTimeStep(steps.time(step))
@@ -1749,9 +1743,8 @@ def main(argv=None):
         chosen = steps.of_time[tiles.GetInformation().Get(tiles.DATA_TIME_STEP())]
         if chosen != step and option:  # (the default: the record's nearest step, unsaid)
             where = "outside --start/--end" if step not in period else "not in the record"
-            # (the step as given, and as the step it stands for where they differ: a month of days)
-            given = option.split(" ", 1)[1].strip()
-            label = steps.text(step) if given == steps.text(step) else f"{given} ({steps.text(step)})"
+            # (the step as given, and the step it stands for where they differ: a month of days)
+            label = steps.text(when) + (f" ({steps.text(step)})" if when != step else "")
             print(f"note: {label} is {where}; showing {steps.text(chosen)}", file=sys.stderr)
         if any(chosen == earlier for earlier, _, _ in shown):
             continue  # (its files are written: another option gave the same step)
