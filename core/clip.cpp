@@ -130,10 +130,21 @@ void WidenUntilCentreIsInside(Box2& box)
   WidenUntilMiddleIsInside(box.YMin, box.YMax);
 }
 
-// Whether segment ab meets the closed box, exactly: their boxes overlap and the segment's line
-// does not leave all four corners strictly on one side.
+bool InBox(const Point2& p, const Box2& box)
+{
+  return p.x >= box.XMin && p.x <= box.XMax && p.y >= box.YMin && p.y <= box.YMax;
+}
+
+// Whether segment ab meets the closed box, exactly: an endpoint is in it, or their boxes overlap
+// and the segment's line does not leave all four corners strictly on one side. (The endpoint test
+// first: along a detailed outline most candidates lie wholly inside the tile's box, and their
+// orientations were a fifth of a step's time.)
 bool SegmentMeetsBox(const Point2& a, const Point2& b, const Box2& box)
 {
+  if (InBox(a, box) || InBox(b, box))
+  {
+    return true;
+  }
   if (std::max(a.x, b.x) < box.XMin || std::min(a.x, b.x) > box.XMax ||
     std::max(a.y, b.y) < box.YMin || std::min(a.y, b.y) > box.YMax)
   {
