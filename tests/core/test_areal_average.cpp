@@ -799,6 +799,53 @@ TEST(ArealAverage, SubBasinsWithRoundedJunctionsAverageAsTheirUnion)
   }
 }
 
+TEST(ArealAverage, RingsThatMeetOnlyOnceProjectedAreNamedInTheCallersSegments)
+{
+  // A square and a triangle whose apex lies 1e-3 degrees (some 110 m, far beyond the shared-border
+  // snap) north of the square's northern edge, on lat 40, halfway along a piece: in lon/lat they
+  // are apart. Cut into pieces of 1 degree (85 km) and projected, the piece is a chord some
+  // hundreds of metres north of the parallel, and the apex falls south of it. Named by the
+  // caller's segments: the square's northern edge (ring 0 segment 2) and the triangle's first.
+  const std::vector<std::size_t> offsets{ 0, 4, 7 };
+  const std::vector<Point2> rings{ { -106.0, 38.0 },
+    { -104.0, 38.0 },
+    { -104.0, 40.0 },
+    { -106.0, 40.0 },
+    { -104.5, 40.001 },
+    { -105.0, 40.5 },
+    { -104.2, 40.5 } };
+  const std::vector<Point2> gauges{ { -105.0, 39.0 }, { -104.5, 40.2 } };
+  ArealAverageSettings coarse;
+  coarse.CatchmentEdgeDegrees = 1.0;
+  try
+  {
+    ThiessenArealAverage average(gauges, offsets, rings, coarse);
+    FAIL() << "rings crossing once projected accepted";
+  }
+  catch (const RingError& e)
+  {
+    const std::string message = e.what();
+    EXPECT_EQ(message.find("the catchment meets itself once projected, though not in lon/lat: "
+                           "ring 0 segment 2 and ring 1 segment 0 cross"),
+      0u)
+      << message;
+    EXPECT_EQ(e.Rings, (std::vector<std::size_t>{ 0, 1 }));
+    ASSERT_EQ(e.Segments.size(), 2u);
+    EXPECT_EQ(e.Segments[0].Name(), "ring 0 segment 2");
+    EXPECT_EQ(e.Segments[1].Name(), "ring 1 segment 0");
+  }
+  // Cut finely (the default 0.01 degrees: chords within a few centimetres of the parallel) the
+  // two stay apart: two parts, whose areas add up to the catchment's.
+  ThiessenArealAverage parts(gauges, offsets, rings);
+  const std::vector<std::size_t> one{ 0, 4 };
+  ThiessenArealAverage square(gauges, one, { rings.begin(), rings.begin() + 4 });
+  const std::vector<std::size_t> apexOnly{ 0, 3 };
+  ThiessenArealAverage triangle(gauges, apexOnly, { rings.begin() + 4, rings.end() });
+  EXPECT_NEAR(parts.CatchmentAreaM2(),
+    square.CatchmentAreaM2() + triangle.CatchmentAreaM2(),
+    1e-9 * parts.CatchmentAreaM2());
+}
+
 TEST(ArealAverage, BadInputIsNamed)
 {
   const Square catchment(0.0, 0.0, 1.0, 1.0);
