@@ -74,6 +74,7 @@ Run with Debian's /usr/bin/python3 and PYTHONPATH=build/python (scripts/demo doe
 import argparse
 import array
 import calendar
+import collections
 import contextlib
 import csv
 import datetime
@@ -410,199 +411,255 @@ def first_and_more(items, describe, count=20):
 MOST_STEPS = 2_000_000
 
 
+# What read_observations gives: the observations as a long-format vtkTable (station_id, time,
+# precip); their steps (Steps: months, days or hours); the set of reporting gauges of every step,
+# as gauge indices; the file's line of each observation read (table row r, counted from 0, is the
+# observation of line lines[r]; the rows after them are the filler rows of steps without a row of
+# a gauge's station); a wide file's columns that are no gauge's station, not read, as (column
+# number, name); the observations outside --start/--end, in runs (rows_in_period); the Period.
+Observations = collections.namedtuple("Observations", "table steps reporting lines unmatched outside period")
+
+
 def read_observations(path, gauge_of, filler, stations_path, missing_values=(), station_ids=(), bounds=(None, None),
                       bound_texts=(None, None)):
-    """The observations (a long or a wide file, observation_records) as a long-format vtkTable
-    (station_id, time, precip), its steps (Steps: months, days or hours), the set of reporting
-    gauges of every step, as gauge indices, the file's line of each observation read (table row r,
-    counted from 0, is the observation of line lines[r]; the rows after them are the filler rows
-    of steps without a row of a gauge's station), and a wide file's columns that are no gauge's
-    station, not read, as (column number, name). gauge_of: the gauge that a
-    station's observations go to, by station_key() (ids are compared as the filter compares them;
-    a step none of whose rows names a gauge's station is a step where no gauge reported).
-    filler: a gauge's station id, given to the rows of those steps. missing_values: numbers that
-    mean missing (--missing-value, such as -9999), read as a missing value. Ends the script when no
-    row names a gauge's station, naming the stations file (stations_path) and some of its ids as
-    written (station_ids): ids that do not match at all (a prefix, another numbering) would
-    otherwise give months without a mean. bounds: --start's and --end's steps (period_bound's, or
-    None), as bound_texts gives them: only the observations between them are in the table (the
-    others are returned, as (line, station id) each), and the table's steps run from the one to the
-    other."""
-    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
+    """The observations of a long or a wide file (observation_records), as Observations. gauge_of:
+    the gauge that a station's observations go to, by station_key() (ids are compared as the filter
+    compares them; a step none of whose rows names a gauge's station is a step where no gauge
+    reported). filler: a gauge's station id, given to the rows of those steps. missing_values:
+    numbers that mean missing (--missing-value, such as -9999), read as a missing value. Ends the
+    script when no row names a gauge's station, naming the stations file (stations_path) and some
+    of its ids as written (station_ids): ids that do not match at all (a prefix, another numbering)
+    would otherwise give months without a mean. bounds: --start's and --end's steps
+    (period_bound's, or None), as bound_texts gives them: only the observations between them are
+    in the table (the others are in Observations.outside), and the table's steps run from the one
+    to the other."""
     from vtkmodules.vtkCommonDataModel import vtkTable
 
-    stations, times, values = vtkStringArray(), vtkDoubleArray(), vtkDoubleArray()
-    reporting = {}
-    stations.SetName("station_id")
-    times.SetName("time")
-    values.SetName("precip")
-    # Per row: 1 without a value, 2 with a --missing-value value, else 0 (counted once the period
-    # is known: the rows outside --start/--end are not used, so not counted).
-    missing_kind = array.array("b")
-    negative = []  # (row, line) of the negative values
-    present = set()  # the step of every row of a gauge's station
-    # Per row, two machine integers (arrays, not lists of Python objects: a large file has
-    # millions of rows): its line, and the index of its step as observation_step read it.
-    lines = array.array("l")  # the file's line of each row read
-    names = {}  # every row's station id, as written, once each in the file's order
-    read = array.array("l")  # the index of each row's step in step_index
-    step_index = {}  # each step read, by first appearance
-    first = {}  # the first line of a month, a day, a day and time, and a time other than midnight
-    hour_column, at_24 = False, 0
-    unmatched = []  # a wide file's columns that are no gauge's station
-    gaps = []  # (row, how many) of a wide file's cells without a value, not made rows
-    repeats = []  # (row, line, the earlier line) of a wide file's rows repeating an earlier row's time
+    rows = scan_observations(path, gauge_of, stations_path, station_ids, missing_values)
+    steps, step_of = file_steps(set(rows.step_index), rows.first, rows.hour_column, rows.at_24, path)
+    rows.take_steps(step_of)
+    period = Period(steps, *bounds, bound_texts, path)
+    if rows.lines and not rows.present:
+        # (the ids as written, each once, in the files' order: they are for comparing by eye)
+        seen, there = list(rows.names), list(dict.fromkeys(station_ids))
+        csv_input.fail(f"{path}: none of its {len(rows.lines)} rows names a station of {stations_path} "
+                       f"(ids here: {', '.join(seen[:5])}{', ...' if len(seen) > 5 else ''}; ids there: "
+                       f"{', '.join(there[:5])}{', ...' if len(there) > 5 else ''})")
+    outside = keep_period(rows, period, steps, step_of, path, bound_texts) if period.given() else []
+    say_odd_observations(rows, path, stations_path, missing_values, steps)
+    # A step between the first and the last without a row of any gauge's station is a step where
+    # no gauge reported: a row with a missing value (for a gauge's station: the filter makes no
+    # step of a row naming a station no gauge has) keeps it a step of its own, so that
+    # areal_mean.csv has every month (or day, or hour), empty where nothing was measured.
+    times = rows.times(steps, step_of)
+    if rows.every_step and gauge_of:
+        add_steps_without_rows(rows, times, steps, step_of, period, filler, path)
+    table = vtkTable()
+    for column in (rows.stations, times, rows.values):
+        table.AddColumn(column)
+    return Observations(table, steps, rows.reporting, rows.lines, rows.unmatched, outside, period)
+
+
+class ObservationRows:
+    """The records of an observations file, a row each, as scan_observations reads them (before
+    file_steps makes their steps the file's): station ids and values (vtk arrays, the table's
+    columns), and per row, in machine integers (arrays, not lists of Python objects: a large file
+    has millions of rows), its line, the index of its step in step_index, and whether its value is
+    missing (1: no value, 2: a --missing-value value, 0: a value); with what was noticed on the
+    way, named once the period is known (only the rows within --start/--end are used)."""
+
+    def __init__(self):
+        from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
+
+        self.stations, self.values = vtkStringArray(), vtkDoubleArray()
+        self.stations.SetName("station_id")
+        self.values.SetName("precip")
+        self.lines = array.array("l")  # the file's line of each row read
+        self.read = array.array("l")  # the index of each row's step in step_index
+        self.missing_kind = array.array("b")
+        self.step_index = {}  # each step read, by first appearance
+        self.negative = []  # (row, line) of the negative values
+        self.present = set()  # the step of every row of a gauge's station
+        self.reporting = {}  # step: the gauges with a value then
+        self.every_step = set()  # (take_steps: the file's steps)
+        self.names = {}  # every row's station id, as written, once each in the file's order
+        self.first = {}  # the first line of a month, a day, a day and time, and a time other than midnight
+        self.hour_column, self.at_24 = False, 0
+        self.unmatched = []  # a wide file's columns that are no gauge's station
+        self.gaps = []  # (row, how many) of a wide file's cells without a value, not made rows
+        self.repeats = []  # (row, line, the earlier line) of a wide file's rows repeating an earlier row's time
+
+    def take_steps(self, step_of):
+        """The steps read made the file's steps (file_steps' step_of)."""
+        self.every_step, self.present = set(step_of.values()), {step_of[m] for m in self.present}
+        merged = {}
+        for m, gauges in self.reporting.items():
+            merged.setdefault(step_of[m], set()).update(gauges)
+        self.reporting = merged
+
+    def times(self, steps, step_of):
+        """The time column: each row's step as a time value (Steps.time)."""
+        from vtkmodules.vtkCommonCore import vtkDoubleArray
+
+        times = vtkDoubleArray()
+        times.SetName("time")
+        time_of = [steps.time(step_of[m]) for m in self.step_index]  # (by index)
+        for k in self.read:
+            times.InsertNextValue(time_of[k])
+        return times
+
+
+def scan_observations(path, gauge_of, stations_path, station_ids, missing_values):
+    """The ObservationRows of every record of the file (observation_records), with each record's
+    step as observation_step reads it; ends the script where a record's step is of another length
+    than an earlier one's (all months, all days or all hours)."""
+    rows = ObservationRows()
     reading = ReadingProgress(path)
     step_line = None  # the line of `step` (a wide file's line gives several records)
-    for line, row, station, column in observation_records(path, gauge_of, stations_path, station_ids, unmatched,
-                                                          gaps, repeats):
-        lines.append(line)
-        if not len(lines) & 0xFFFF:
-            reading.tick(len(lines))
+    for line, row, station, column in observation_records(path, gauge_of, stations_path, station_ids, rows.unmatched,
+                                                          rows.gaps, rows.repeats):
+        rows.lines.append(line)
+        if not len(rows.lines) & 0xFFFF:
+            reading.tick(len(rows.lines))
         if line != step_line:
             step, step_line = observation_step(row, path, line), line
         kind = STEP_KINDS[len(step)]
         if kind == "time" and step[3] % 24:
             kind = "hour"  # (a time at midnight may be a day's or an hour's)
-        first.setdefault(kind, line)
-        clash = next((k for k in first if steps_clash(k, kind)), None)
+        rows.first.setdefault(kind, line)
+        clash = next((k for k in rows.first if steps_clash(k, kind)), None)
         if clash:
             csv_input.fail(f"{path}:{line}: column 'date': {row['date'].strip()!r} is {STEP_NAMES[kind]}, where "
-                           f"line {first[clash]} gives {STEP_NAMES[clash]} (the steps are all months, all days or "
-                           "all hours)")
-        hour_column = "hour" in row
-        at_24 += kind == "time" and step[3] == 24
-        read.append(step_index.setdefault(step, len(step_index)))
-        names.setdefault(station.strip(" \t\""))
+                           f"line {rows.first[clash]} gives {STEP_NAMES[clash]} (the steps are all months, all days "
+                           "or all hours)")
+        rows.hour_column = "hour" in row
+        rows.at_24 += kind == "time" and step[3] == 24
+        rows.read.append(rows.step_index.setdefault(step, len(rows.step_index)))
+        rows.names.setdefault(station.strip(" \t\""))
         gauge = gauge_of.get(station_key(station))
         if gauge is not None:
-            present.add(step)
+            rows.present.add(step)
         # A missing value stays in the table as NaN: the gauge does not report that month (the
         # filter drops it for that step), and the month remains a step even if no gauge reports.
         value = math.nan
         if csv_input.is_missing(row.get(column)):
-            missing_kind.append(1)
+            rows.missing_kind.append(1)
         elif (number := csv_input.number(row, column, path, line)) in missing_values:
-            missing_kind.append(2)
+            rows.missing_kind.append(2)
         else:
-            missing_kind.append(0)
+            rows.missing_kind.append(0)
             value = number
             if value < 0:
-                negative.append((len(lines) - 1, line if column == "precip" else f"{line} ({column})"))
+                rows.negative.append((len(rows.lines) - 1, line if column == "precip" else f"{line} ({column})"))
             if gauge is not None:
-                reporting.setdefault(step, set()).add(gauge)
-        stations.InsertNextValue(station)
-        values.InsertNextValue(value)
-    steps, step_of = file_steps(set(step_index), first, hour_column, at_24, path)
-    every_step, present = set(step_of.values()), {step_of[m] for m in present}
-    merged = {}
-    for m, gauges in reporting.items():
-        merged.setdefault(step_of[m], set()).update(gauges)
-    reporting = merged
-    period = Period(steps, *bounds, bound_texts, path)
-    outside = []  # the observations before --start or after --end, in runs (rows_in_period)
-    if lines and not present:
-        # (the ids as written, each once, in the files' order: they are for comparing by eye)
-        seen, there = list(names), list(dict.fromkeys(station_ids))
-        csv_input.fail(f"{path}: none of its {len(lines)} rows names a station of {stations_path} "
-                       f"(ids here: {', '.join(seen[:5])}{', ...' if len(seen) > 5 else ''}; ids there: "
-                       f"{', '.join(there[:5])}{', ...' if len(there) > 5 else ''})")
-    unrecorded, coded = missing_kind.count(1), missing_kind.count(2)
-    if period.given():
-        kept = array.array("b", (step_of[m] in period for m in step_index))  # (by step index)
-        row_kept = array.array("b", (kept[k] for k in read))
-        # (a wide file's empty cells and repeated times by the row of their line: those within only)
-        gaps = [gap for gap in gaps if row_kept[gap[0]]]
-        repeats = [repeat for repeat in repeats if row_kept[repeat[0]]]
-        stations, values, lines, read, outside = rows_in_period(stations, values, lines, read, row_kept)
-        unrecorded = sum(1 for kind, used in zip(missing_kind, row_kept) if kind == 1 and used)
-        coded = sum(1 for kind, used in zip(missing_kind, row_kept) if kind == 2 and used)
-        negative = [(row, line) for row, line in negative if row_kept[row]]
-        every_step = {step for step in every_step if step in period}
-        present = {step for step in present if step in period}
-        reporting = {step: gauges for step, gauges in reporting.items() if step in period}
-        if outside:
-            print(f"{path}: {outside_count(outside)} observation(s) outside --start/--end are not used (unused_inputs.csv "
-                  "lists them)", file=sys.stderr)
-        if not present:
-            given = " and ".join(f"--{name} {text}" for name, text in zip(("start", "end"), bound_texts)
-                                 if text is not None)
-            csv_input.fail(f"{path}: no observation of a gauge's station is within {given} (its {steps.unit}s run "
-                           f"from {steps.text(min(step_of.values()))} to {steps.text(max(step_of.values()))})")
-    if unmatched:
-        shown = first_and_more(unmatched, lambda column: f"{column[1]!r} (column {column[0]})")
-        print(f"{path}: {len(unmatched)} column(s) name no station of {stations_path} and are not read: {shown}",
+                rows.reporting.setdefault(step, set()).add(gauge)
+        rows.stations.InsertNextValue(station)
+        rows.values.InsertNextValue(value)
+    return rows
+
+
+def keep_period(rows, period, steps, step_of, path, bound_texts):
+    """Keeps the rows within --start/--end (period, given), and what was noticed of them; returns
+    the others in runs (rows_in_period), which it says. Ends the script when no observation of a
+    gauge's station is within."""
+    kept = array.array("b", (step_of[m] in period for m in rows.step_index))  # (by step index)
+    row_kept = array.array("b", (kept[k] for k in rows.read))
+    # (a wide file's empty cells and repeated times by the row of their line: those within only)
+    rows.gaps = [gap for gap in rows.gaps if row_kept[gap[0]]]
+    rows.repeats = [repeat for repeat in rows.repeats if row_kept[repeat[0]]]
+    rows.negative = [(row, line) for row, line in rows.negative if row_kept[row]]
+    rows.missing_kind = array.array("b", (kind for kind, used in zip(rows.missing_kind, row_kept) if used))
+    rows.stations, rows.values, rows.lines, rows.read, outside = rows_in_period(
+        rows.stations, rows.values, rows.lines, rows.read, row_kept)
+    every_steps = rows.every_step
+    rows.every_step = {step for step in rows.every_step if step in period}
+    rows.present = {step for step in rows.present if step in period}
+    rows.reporting = {step: gauges for step, gauges in rows.reporting.items() if step in period}
+    if outside:
+        print(f"{path}: {outside_count(outside)} observation(s) outside --start/--end are not used (unused_inputs.csv "
+              "lists them)", file=sys.stderr)
+    if not rows.present:
+        given = " and ".join(f"--{name} {text}" for name, text in zip(("start", "end"), bound_texts)
+                             if text is not None)
+        csv_input.fail(f"{path}: no observation of a gauge's station is within {given} (its {steps.unit}s run "
+                       f"from {steps.text(min(every_steps))} to {steps.text(max(every_steps))})")
+    return outside
+
+
+def say_odd_observations(rows, path, stations_path, missing_values, steps):
+    """Warns of what the rows kept hold that may not be what the file means: a wide file's columns
+    of no station, --missing-value values, repeated times, values missing or negative, and daily
+    values that look monthly."""
+    if rows.unmatched:
+        shown = first_and_more(rows.unmatched, lambda column: f"{column[1]!r} (column {column[0]})")
+        print(f"{path}: {len(rows.unmatched)} column(s) name no station of {stations_path} and are not read: {shown}",
               file=sys.stderr)
-    if coded:
+    if coded := rows.missing_kind.count(2):
         print(f"{path}: {coded} observation(s) with a --missing-value value "
               f"({', '.join(f'{v:g}' for v in sorted(missing_values))}) count as missing", file=sys.stderr)
-    say_repeated_times(path, repeats)
-    unrecorded += sum(count for _, count in gaps)
-    if unrecorded:
+    say_repeated_times(path, rows.repeats)
+    if unrecorded := rows.missing_kind.count(1) + sum(count for _, count in rows.gaps):
         print(f"{path}: {unrecorded} observation(s) without a value ({csv_input.MISSING_TEXT}) "
               "count as missing", file=sys.stderr)
-    if negative:
+    if rows.negative:
         # Precipitation is never negative: these are most often a missing-value code (-99, -9999)
         # that would drag the means down. They are used as given, and named.
-        shown = first_and_more(negative, lambda negative: str(negative[1]))
-        print(f"{path}: {len(negative)} observation(s) have a negative precipitation, used as given "
+        shown = first_and_more(rows.negative, lambda negative: str(negative[1]))
+        print(f"{path}: {len(rows.negative)} observation(s) have a negative precipitation, used as given "
               f"(write a missing value as NA, or give --missing-value, if that is what they mean): line(s) {shown}",
               file=sys.stderr)
-    if steps.unit == "day" and len({day[:2] for day in every_step}) > 1:
+    days = rows.every_step
+    if steps.unit == "day" and len({day[:2] for day in days}) > 1:
         # Monthly values stamped with a day (2001-01-01, 2001-02-01; or month ends) would be read
         # as days with some 29 days without a report between them: said, since the means of
         # those days are then the months'.
-        last = all(d == calendar.monthrange(y, m)[1] for y, m, d in every_step)
-        same = len({d for _, _, d in every_step}) == 1
+        last = all(d == calendar.monthrange(y, m)[1] for y, m, d in days)
+        same = len({d for _, _, d in days}) == 1
         if last or same:
-            which = "the last day of its month" if last else f"day {next(iter(every_step))[2]} of its month"
+            which = "the last day of its month" if last else f"day {next(iter(days))[2]} of its month"
             print(f"{path}: every date is {which}; if these are monthly values, give the dates as YYYY-MM "
                   "(or year and month columns): they are read as days", file=sys.stderr)
-    # A step between the first and the last without a row of any gauge's station is a step where
-    # no gauge reported: a row with a missing value (for a gauge's station: the filter makes no
-    # step of a row naming a station no gauge has) keeps it a step of its own, so that
-    # areal_mean.csv has every month (or day, or hour), empty where nothing was measured.
-    time_of = [steps.time(step_of[m]) for m in step_index]  # (by index)
-    for k in read:
-        times.InsertNextValue(time_of[k])
-    if every_step and gauge_of:
-        first, last = period.start or min(every_step), period.end or max(every_step)
-        count = steps.count(first, last)
-        span = ""
-        if count > len(present):
-            # (the lines of the first and the last step, where a mistyped year makes the span;
-            # looked for only when there are steps without rows; --start and --end say themselves)
-            named = {}  # the bounds given as options, which name themselves
-            if period.start:
-                named[first] = "--start"
-            if period.end:
-                named[last] = "--end"
-            read_steps, wanted, line_of = list(step_index), {first, last} - set(named), {}
-            for row, k in enumerate(read if wanted else ()):
-                step = step_of[read_steps[k]]
-                if step in wanted and step not in line_of:
-                    line_of[step] = lines[row]
-                    if len(line_of) == len(wanted):
-                        break
-            named.update((step, f"line {line}") for step, line in line_of.items())
-            span = f"between {steps.text(first)} ({named[first]}) and {steps.text(last)} ({named[last]})"
-        if count > MOST_STEPS:
-            spanning = "the period (--start, --end) spans" if period.given() else "the observations span"
-            csv_input.fail(f"{path}: {spanning} {count} {steps.unit}s {span}, more than "
-                           f"{MOST_STEPS} (each a row of areal_mean.csv, and some 1 GB of memory a "
-                           f"million); is a date mistyped?")
-        gaps = [step for step in steps.between(first, last) if step not in present]
-        for step in gaps:  # (a gauge's id: the step is a step of the filter)
-            stations.InsertNextValue(filler)
-            times.InsertNextValue(steps.time(step))
-            values.InsertNextValue(math.nan)
-        if gaps:
-            print(f"{path}: {len(gaps)} {steps.unit}(s) {span} have no row of a gauge's station; they are "
-                  f"{steps.unit}s where no gauge reported", file=sys.stderr)
-    table = vtkTable()
-    for column in (stations, times, values):
-        table.AddColumn(column)
-    return table, steps, reporting, lines, unmatched, outside, period
+
+
+def add_steps_without_rows(rows, times, steps, step_of, period, filler, path):
+    """Appends a row (filler's station, no value) for each step from the first to the last (the
+    period's, where given) that no row of a gauge's station has, and says how many. Ends the
+    script when there are more than MOST_STEPS steps, naming the first and the last."""
+    first, last = period.start or min(rows.every_step), period.end or max(rows.every_step)
+    count = steps.count(first, last)
+    span = steps_span(rows, steps, step_of, period, first, last) if count > len(rows.present) else ""
+    if count > MOST_STEPS:
+        spanning = "the period (--start, --end) spans" if period.given() else "the observations span"
+        csv_input.fail(f"{path}: {spanning} {count} {steps.unit}s {span}, more than "
+                       f"{MOST_STEPS} (each a row of areal_mean.csv, and some 1 GB of memory a "
+                       f"million); is a date mistyped?")
+    missing = [step for step in steps.between(first, last) if step not in rows.present]
+    for step in missing:  # (a gauge's id: the step is a step of the filter)
+        rows.stations.InsertNextValue(filler)
+        times.InsertNextValue(steps.time(step))
+        rows.values.InsertNextValue(math.nan)
+    if missing:
+        print(f"{path}: {len(missing)} {steps.unit}(s) {span} have no row of a gauge's station; they are "
+              f"{steps.unit}s where no gauge reported", file=sys.stderr)
+
+
+def steps_span(rows, steps, step_of, period, first, last):
+    """'between FIRST (where) and LAST (where)': where is --start or --end for a bound given as an
+    option, else the line of the step's first row, where a mistyped year makes the span."""
+    named = {}  # the bounds given as options, which name themselves
+    if period.start:
+        named[first] = "--start"
+    if period.end:
+        named[last] = "--end"
+    read_steps, wanted, line_of = list(rows.step_index), {first, last} - set(named), {}
+    for row, k in enumerate(rows.read if wanted else ()):
+        step = step_of[read_steps[k]]
+        if step in wanted and step not in line_of:
+            line_of[step] = rows.lines[row]
+            if len(line_of) == len(wanted):
+                break
+    named.update((step, f"line {line}") for step, line in line_of.items())
+    return f"between {steps.text(first)} ({named[first]}) and {steps.text(last)} ({named[last]})"
 
 
 def rows_in_period(stations, values, lines, read, keep):
@@ -1686,9 +1743,10 @@ def main(argv=None):
     gauge_of = {}
     for i, station in enumerate(station_ids):
         gauge_of.setdefault(station_key(station), i)
-    observations, steps, reporting, row_lines, unmatched, outside, period = read_observations(
+    record = read_observations(
         args.observations, gauge_of, min(station_ids, default=None), args.stations, set(args.missing_value),
         station_ids, bounds, (args.start, args.end))
+    observations, steps = record.table, record.steps
     for option, when in asked:
         if len(when) > steps.fields:
             csv_input.fail(f"{option}: the observations of {args.observations} are {steps.adjective} "
@@ -1699,7 +1757,7 @@ def main(argv=None):
     groups = polygon_groups(features_by_value(catchment, each, args.catchment), each,
                             args.catchment) if each is not None else None
     # (the observations file's rows: the table also has a row for each step without any)
-    print(f"read {gauges.GetNumberOfPoints()} gauges and {len(row_lines)} observations in "
+    print(f"read {gauges.GetNumberOfPoints()} gauges and {len(record.lines)} observations in "
           f"{time.time() - started:.1f} s", file=sys.stderr)
 
     average = areal_average(gauges, catchment, observations)
@@ -1708,7 +1766,7 @@ def main(argv=None):
     progress = Progress("Thiessen areal means")
     progress_tag = average.AddObserver(vtkCommand.ProgressEvent, progress)
     started = time.time()
-    files = InputFiles(args.stations, gauge_lines, args.observations, row_lines, args.catchment, steps.unit)
+    files = InputFiles(args.stations, gauge_lines, args.observations, record.lines, args.catchment, steps.unit)
     messages = FilterMessages(average, files, progress)
     average.Update(1)
     summary = average.GetOutputDataObject(1)
@@ -1727,7 +1785,7 @@ def main(argv=None):
     else:
         write_all_weights(average.GetOutputDataObject(2), steps, os.path.join(args.out, all_weights))
     unused = write_unused(summary, files, station_ids, observations, steps.unit,
-                          os.path.join(args.out, "unused_inputs.csv"), unmatched, outside)
+                          os.path.join(args.out, "unused_inputs.csv"), record.unmatched, record.outside)
     if groups:
         by_feature = "areal_mean_by_" + re.sub(r"[^A-Za-z0-9_.-]", "_", each) + ".csv"
         write_means_by_feature(groups, each, gauges, observations, steps, average, args.catchment,
@@ -1742,7 +1800,7 @@ def main(argv=None):
         messages.check(tiles is None)
         chosen = steps.of_time[tiles.GetInformation().Get(tiles.DATA_TIME_STEP())]
         if chosen != step and option:  # (the default: the record's nearest step, unsaid)
-            where = "outside --start/--end" if step not in period else "not in the record"
+            where = "outside --start/--end" if step not in record.period else "not in the record"
             # (the step as given, and the step it stands for where they differ: a month of days)
             label = steps.text(when) + (f" ({steps.text(step)})" if when != step else "")
             print(f"note: {label} is {where}; showing {steps.text(chosen)}", file=sys.stderr)
@@ -1753,7 +1811,7 @@ def main(argv=None):
         write_weights(per_gauge, gauges, os.path.join(args.out, f"weights_{tag}.csv"))
         csv_input.write_vtk(vtkXMLPolyDataWriter(), tiles, os.path.join(args.out, f"tiles_{tag}.vtp"))
         if not args.no_plots:
-            plot_map(per_gauge, gauges, outline, reporting.get(chosen, set()), map_title(rows, steps, chosen),
+            plot_map(per_gauge, gauges, outline, record.reporting.get(chosen, set()), map_title(rows, steps, chosen),
                      os.path.join(args.out, f"map_{tag}.png"), steps.unit)
         shown.append((chosen, tag, per_gauge))
     if not args.no_plots:
@@ -1776,7 +1834,7 @@ def main(argv=None):
     print(f"wrote {args.out}/areal_mean.csv, " + ("" if args.no_all_weights else f"{all_weights}, ")
           + ", ".join(step_files + plot_files)
           + f", unused_inputs.csv ({unused} input(s) not used"
-          + (f", {outside_count(outside)} of them outside --start/--end)" if outside else ")")
+          + (f", {outside_count(record.outside)} of them outside --start/--end)" if record.outside else ")")
           + (f", {by_feature} ({len(groups)} group(s) of features)" if groups else ""))
 
 
