@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Thiessen areal-average precipitation over Colorado, month by month (Thiessen 1911), or over
-your own catchment, monthly, daily or hourly (--stations, --observations, --catchment).
+your own catchment, monthly, daily, hourly or by minutes (--stations, --observations,
+--catchment).
 
 The hydrologist's main job with Tessera: 376 rain gauges given in longitude/latitude (many of
 them outside the state), the state outline as the catchment, and 1236 months (1895-1997) of
@@ -59,8 +60,13 @@ hour,...), weights_all_hours.csv, --hour 'YYYY-MM-DD HH:00' (files named YYYY_MM
 hour from the first to the last. Hours keep their labels (hour-ending data: 06:00 is 05:00 to
 06:00), and hour 24 (24:00, as hour-ending records write a day's last hour) is hour 0 of the
 next day. Dates whose times are all midnight are days; a time column beside the date is refused.
-Observations may also be wide: a row per time (date, or year and month, with day and hour as
-above) and a column per station named by its station_id (date,050109,050114,...), without
+Observations of minutes (tipping buckets, loggers: dates with times YYYY-MM-DD HH:MM, or a minute
+column beside the hour) make a step some minutes long: the most minutes that divide 60 and every
+time's minute (15 for times at :00, :15, :30 and :45), each step labelled by its time as hours
+are; a minute column (year,month,day,hour,minute,...), weights_all_minutes.csv, --minute
+'YYYY-MM-DD HH:MM' (files named YYYY_MM_DD_HH_MM), every step from the first to the last.
+Observations may also be wide: a row per time (date, or year and month, with day, hour and minute
+as above) and a column per station named by its station_id (date,050109,050114,...), without
 station_id and precip columns; a column that names no gauge's station is named and not read.
 Units are those of the data (for the Colorado data: documented as mm, the magnitudes look like
 cm; see examples/data/README.md).
@@ -99,29 +105,38 @@ def decimal_time(year, month):
 
 class Steps:
     """The time steps of the observations: months, as (year, month), days, as (year, month, day),
-    or hours, as (year, month, day, hour), as the observations give them (observation_step)."""
+    hours, as (year, month, day, hour), or steps of some minutes (minutes: 1 to 30, a divisor of
+    60, so that every hour starts a step), as (year, month, day, hour, minute), as the observations
+    give them (observation_step, file_steps)."""
 
-    UNITS = ("month", "day", "hour")
+    UNITS = ("month", "day", "hour", "minute")
     ADJECTIVES = {"month": "monthly", "day": "daily", "hour": "hourly"}
 
-    def __init__(self, unit):
+    def __init__(self, unit, minutes=60):
         self.unit = unit
+        self.minutes = minutes  # (a step of minutes: its length)
         self.fields = 2 + Steps.UNITS.index(unit)  # the numbers of a step
-        self.columns = ["year", "month", "day", "hour"][:self.fields]
-        self.adjective = Steps.ADJECTIVES[unit]
+        self.columns = ["year", "month", "day", "hour", "minute"][:self.fields]
+        self.adjective = Steps.ADJECTIVES.get(unit, f"{minutes}-minute")
+        # What the messages count (a month, a day, an hour, or a 15-minute step), and say the
+        # observations are (monthly, daily, hourly, or in 15-minute steps).
+        self.noun = unit if unit in Steps.ADJECTIVES else f"{self.adjective} step"
+        self.described = self.adjective if unit in Steps.ADJECTIVES else f"in {self.noun}s"
         self.of_time = {}  # the step of each time value made by time()
 
     @staticmethod
     def of(step):
-        """The Steps of which step (a tuple of 2, 3 or 4 numbers) is one."""
+        """The Steps of which step (a tuple of 2, 3 or 4 numbers: months, days or hours) is one."""
         return Steps(Steps.UNITS[len(step) - 2])
 
     def time(self, step):
-        """The step as a time value: decimal_time of its month, plus a day's (and an hour's) share
-        of its month (of_time maps the value back: the filter gives back the times it was given)."""
+        """The step as a time value: decimal_time of its month, plus a day's (and an hour's and a
+        minute's) share of its month (of_time maps the value back: the filter gives back the times
+        it was given)."""
         t = decimal_time(step[0], step[1])
         if self.fields > 2:
-            days = step[2] - 1 + (step[3] / 24.0 if self.fields > 3 else 0)
+            days = step[2] - 1 + (step[3] / 24.0 if self.fields > 3 else 0) + (
+                step[4] / 1440.0 if self.fields > 4 else 0)
             t += days / (12.0 * calendar.monthrange(step[0], step[1])[1])
         self.of_time[t] = step
         return t
@@ -132,29 +147,38 @@ class Steps:
         return [f"{v:0{4 if k == 0 else 2}d}" for k, v in enumerate(step)]
 
     def text(self, step):
-        """2001-03, 2001-03-01 or 2001-03-01 06:00."""
+        """2001-03, 2001-03-01, 2001-03-01 06:00 or 2001-03-01 06:15."""
         numbers = Steps.digits(step)
-        return "-".join(numbers[:3]) + "".join(f" {hour}:00" for hour in numbers[3:])
+        text = "-".join(numbers[:3])
+        if len(numbers) > 3:
+            text += f" {numbers[3]}:{numbers[4] if len(numbers) > 4 else '00'}"
+        return text
 
     def tag(self, step):
-        """2001_03, 2001_03_01 or 2001_03_01_06, for file names."""
+        """2001_03, 2001_03_01, 2001_03_01_06 or 2001_03_01_06_15, for file names."""
         return "_".join(Steps.digits(step))
+
+    def length(self):
+        """A step's length, for days and finer (a timedelta)."""
+        return datetime.timedelta(days=1) if self.fields == 3 else datetime.timedelta(minutes=self.minutes)
 
     def count(self, first, last):
         """The number of steps from first to last, both included (between's length, not made)."""
         if self.fields == 2:
             return 12 * (last[0] - first[0]) + last[1] - first[1] + 1
-        start, end = datetime.datetime(*first), datetime.datetime(*last)
-        return (end - start) // (datetime.timedelta(days=1) if self.fields == 3 else datetime.timedelta(hours=1)) + 1
+        return (datetime.datetime(*last) - datetime.datetime(*first)) // self.length() + 1
 
     def between(self, first, last):
         """Every step from first to last, both included."""
         if self.fields == 2:
             return [(y, m) for y in range(first[0], last[0] + 1) for m in range(1, 13) if first <= (y, m) <= last]
-        start, end = datetime.datetime(*first), datetime.datetime(*last)
-        length = datetime.timedelta(days=1) if self.fields == 3 else datetime.timedelta(hours=1)
+        start, end, length = datetime.datetime(*first), datetime.datetime(*last), self.length()
         every = (start + k * length for k in range((end - start) // length + 1))
-        return [(d.year, d.month, d.day, d.hour)[:self.fields] for d in every]
+        return [(d.year, d.month, d.day, d.hour, d.minute)[:self.fields] for d in every]
+
+    def on_grid(self, step):
+        """Whether a step of these fields is one of these steps (a minute a multiple of minutes)."""
+        return self.fields < 5 or step[4] % self.minutes == 0
 
 
 def is_calendar_day(year, month, day):
@@ -206,13 +230,13 @@ TIME_OF_DAY = re.compile(r"[T ]([0-9]{2}):([0-9]{2})(?::([0-9]{2})(?:\.([0-9]+))
 
 
 def observation_step(row, path, line):
-    """The month (year, month), day (year, month, day) or day and hour (year, month, day, hour,
-    the hour 0 to 24) of an observations record: from its year, month, day and hour columns (day
-    and hour where the steps are days or hours), or from its date column (YYYY-MM for a month,
-    YYYY-MM-DD for a day, with a time on the hour, HH:00, for an hour). read_observations makes
-    the file's steps of them (file_steps). Ends the script naming file, line and column for a
-    value that is no such date."""
-    if "date" in row and ("year" in row or "month" in row or "day" in row or "hour" in row):
+    """The month (year, month), day (year, month, day) or day and time (year, month, day, hour,
+    minute: the hour 0 to 24, 24 only at minute 0) of an observations record: from its year,
+    month, day, hour and minute columns (day, hour and minute where given), or from its date column
+    (YYYY-MM for a month, YYYY-MM-DD for a day, with a time HH:MM for a time of the day).
+    read_observations makes the file's steps of them (file_steps). Ends the script naming file,
+    line and column for a value that is no such date."""
+    if "date" in row and any(name in row for name in ("year", "month", "day", "hour", "minute")):
         csv_input.fail(f"{path}: the observations file has both a date column and year/month/day/hour columns "
                        "(keep one)")
     if "time" in row and ("date" in row or "day" in row):
@@ -234,11 +258,11 @@ def observation_step(row, path, line):
             zone = re.fullmatch(r"Z|[+-][0-9]{2}(:?[0-9]{2})?", text[timed.end():]) if timed else None
             csv_input.fail(f"{where} " + (f"has a time zone ({zone.group(0)}), which is not read: give the times "
                                           "without it, all in one zone" if zone else
-                                          "is not a date (YYYY-MM-DD, YYYY-MM-DD HH:00 for an hour, or YYYY-MM "
-                                          "for a month)"))
-        if clock and any(int(v or 0) for v in clock.groups()[1:]):
-            csv_input.fail(f"{where} is not on the hour: the steps are hours (HH:00), days or months, so give "
-                           "each hour's total at its hour")
+                                          "is not a date (YYYY-MM-DD, YYYY-MM-DD HH:00 for an hour, YYYY-MM-DD "
+                                          "HH:MM for a step of minutes, or YYYY-MM for a month)"))
+        if clock and any(int(v or 0) for v in clock.groups()[2:]):
+            csv_input.fail(f"{where} is not on the minute: the steps are minutes (HH:MM), hours, days or months, so "
+                           "give each step's total at its minute")
     elif "year" in row and "month" in row:
         year = (row.get("year") or "").strip()
         if re.fullmatch(r"\+?0*[0-9]{1,2}(?:[.,]0*)?", year):
@@ -250,6 +274,9 @@ def observation_step(row, path, line):
         if "hour" in row and "day" not in row:
             csv_input.fail(f"{path}: the observations file has an hour column but no day column "
                            "(hours need year, month, day and hour)")
+        if "minute" in row and "hour" not in row:
+            csv_input.fail(f"{path}: the observations file has a minute column but no hour column "
+                           "(minutes need year, month, day, hour and minute)")
         if "day" in row:
             step += (csv_input.integer(row, "day", path, line, 1, 31),)
         where = f"{path}:{line}: column 'day': {step[-1]}"
@@ -264,56 +291,79 @@ def observation_step(row, path, line):
         csv_input.fail(f"{where} is not a date of the calendar" if "date" in row else f"{where} is not a day of "
                        f"{step[0]}-{step[1]:02d}")
     if clock:
-        if int(clock.group(1)) > 24:
-            csv_input.fail(f"{where} is not a time of the day (00:00 to 23:00, or 24:00 for the day's end)")
-        return (*step, int(clock.group(1)))
+        hour, minute = int(clock.group(1)), int(clock.group(2))
+        if hour > 24 or minute > 59 or (hour == 24 and minute):
+            csv_input.fail(f"{where} is not a time of the day (00:00 to 23:59, or 24:00 for the day's end)")
+        return (*step, hour, minute)
     if "hour" in row:
-        return (*step, csv_input.integer(row, "hour", path, line, 0, 24))
+        hour = csv_input.integer(row, "hour", path, line, 0, 24)
+        minute = csv_input.integer(row, "minute", path, line, 0, 59) if "minute" in row else 0
+        if hour == 24 and minute:
+            csv_input.fail(f"{path}:{line}: columns 'hour' and 'minute': 24:{minute:02d} is not a time of the day "
+                           "(hour 24 is the day's end, 24:00)")
+        return (*step, hour, minute)
     return step
 
 
 # observation_step's steps by their length ("time": a date with a time; "hour" where that time is
-# not midnight), what the messages call them, and the kinds one file cannot mix.
-STEP_KINDS = {2: "month", 3: "day", 4: "time"}
-STEP_NAMES = {"month": "a month", "day": "a day", "time": "a day and time", "hour": "an hour"}
+# not midnight, "minute" where it is not on the hour), what the messages call them, and the kinds
+# one file cannot mix.
+STEP_KINDS = {2: "month", 3: "day", 5: "time"}
+STEP_NAMES = {"month": "a month", "day": "a day", "time": "a day and time", "hour": "an hour",
+              "minute": "a time of day"}
+
+
+def step_kind(step):
+    kind = STEP_KINDS[len(step)]
+    if kind == "time" and step[4]:
+        return "minute"
+    return "hour" if kind == "time" and step[3] % 24 else kind
 
 
 def steps_clash(kind, other):
-    return kind != other and ("month" in (kind, other) or {kind, other} == {"day", "hour"})
+    return kind != other and ("month" in (kind, other) or (
+        "day" in (kind, other) and bool({kind, other} & {"hour", "minute"})))
 
 
 def hour_step(step):
-    """(year, month, day, hour) with hour 24, the end of the day, as hour 0 of the next day."""
+    """A time (year, month, day, hour, and a minute where given) with hour 24, the end of the day,
+    as hour 0 of the next day."""
     if step[3] < 24:
         return step
     after = datetime.date(*step[:3]) + datetime.timedelta(1)
-    return (after.year, after.month, after.day, 0)
+    return (after.year, after.month, after.day, 0, *step[4:])
 
 
 def file_steps(read, first, hour_column, at_24, path):
     """The steps of an observations file (Steps), and the step of each one observation_step read
     (read: all of them; first: the first line of each kind, STEP_KINDS, and of a time other than
-    midnight, "hour"; at_24: the number of records at hour 24). The steps are hours where the
-    file has an hour column or a date with a time other than midnight: hour 24 (24:00) is then
-    hour 0 of the next day, as hour-ending records write a day's last hour, which is said. Dates
-    with times all at midnight (00:00, or 24:00 for a day's end) are days, as a spreadsheet may
-    export them: a day at 24:00 is the day it ends. Hours all at one time of day over several
-    days are said (daily values stamped with the hour they are read)."""
-    if not (hour_column or "hour" in first):
+    midnight, "hour"; at_24: the number of records at hour 24). The steps are times of the day
+    where the file has an hour column or a date with a time other than midnight: hours when every
+    time is on the hour, else steps of the largest number of minutes that divides every time's
+    minute and 60 (15 for times at :00, :15, :30 and :45), each step the total of the minutes up to
+    its time, as tipping-bucket and logger records give them. Hour 24 (24:00) is hour 0 of the next
+    day, as hour-ending records write a day's last hour, which is said. Dates with times all at
+    midnight (00:00, or 24:00 for a day's end) are days, as a spreadsheet may export them: a day at
+    24:00 is the day it ends. Times all at one time of day over several days are said (daily
+    values stamped with the hour they are read)."""
+    if not (hour_column or "hour" in first or "minute" in first):
         return Steps("month" if "month" in first or not first else "day"), {m: m[:3] for m in read}
     if at_24:
         print(f"{path}: {at_24} observation(s) at hour 24 (the end of a day) are read as hour 0 of the next day",
               file=sys.stderr)
-    if len({m[3] for m in read}) == 1 and len({m[:3] for m in read}) > 1:
+    minutes = math.gcd(60, *(m[4] for m in read))
+    steps = Steps("hour") if minutes == 60 else Steps("minute", minutes)
+    if len({m[3:] for m in read}) == 1 and len({m[:3] for m in read}) > 1:
         # Daily values stamped with the time their day ends (a climate day read at 07:00) would be
         # read as hours with 23 hours without a report between them: said, as for days of months.
-        print(f"{path}: every time is {next(iter(read))[3]:02d}:00; if these are daily values (a day read at that "
-              "time), " + ("leave out the hour column" if hour_column else
-                           "give the dates without the time (YYYY-MM-DD)") + ": they are read as hours", file=sys.stderr)
-    return Steps("hour"), {m: hour_step(m) for m in read}
+        print(f"{path}: every time is {'{:02d}:{:02d}'.format(*next(iter(read))[3:])}; if these are daily values "
+              "(a day read at that time), " + ("leave out the hour column" if hour_column else
+                                "give the dates without the time (YYYY-MM-DD)") +
+              f": they are read as {steps.noun}s", file=sys.stderr)
+    return steps, {m: hour_step(m)[:steps.fields] for m in read}
 
 
-TIME_COLUMNS = ("year", "month", "day", "hour", "date", "time")  # (observation_step's)
+TIME_COLUMNS = ("year", "month", "day", "hour", "minute", "date", "time")  # (observation_step's)
 
 
 def observation_records(path, gauge_of, stations_path, station_ids, unmatched, gaps, repeats):
@@ -412,7 +462,7 @@ MOST_STEPS = 2_000_000
 
 
 # What read_observations gives: the observations as a long-format vtkTable (station_id, time,
-# precip); their steps (Steps: months, days or hours); the set of reporting gauges of every step,
+# precip); their steps (Steps: months, days, hours or minutes); the set of reporting gauges of every step,
 # as gauge indices; the file's line of each observation read (table row r, counted from 0, is the
 # observation of line lines[r]; the rows after them are the filler rows of steps without a row of
 # a gauge's station); a wide file's columns that are no gauge's station, not read, as (column
@@ -523,15 +573,13 @@ def scan_observations(path, gauge_of, stations_path, station_ids, missing_values
             reading.tick(len(rows.lines))
         if line != step_line:
             step, step_line = observation_step(row, path, line), line
-        kind = STEP_KINDS[len(step)]
-        if kind == "time" and step[3] % 24:
-            kind = "hour"  # (a time at midnight may be a day's or an hour's)
+        kind = step_kind(step)  # (a time at midnight may be a day's or an hour's)
         rows.first.setdefault(kind, line)
         clash = next((k for k in rows.first if steps_clash(k, kind)), None)
         if clash:
             csv_input.fail(f"{path}:{line}: column 'date': {row['date'].strip()!r} is {STEP_NAMES[kind]}, where "
                            f"line {rows.first[clash]} gives {STEP_NAMES[clash]} (the steps are all months, all days "
-                           "or all hours)")
+                           "or all times of day)")
         rows.hour_column = "hour" in row
         rows.at_24 += kind == "time" and step[3] == 24
         rows.read.append(rows.step_index.setdefault(step, len(rows.step_index)))
@@ -581,7 +629,7 @@ def keep_period(rows, period, steps, step_of, path, bound_texts):
     if not rows.present:
         given = " and ".join(f"--{name} {text}" for name, text in zip(("start", "end"), bound_texts)
                              if text is not None)
-        csv_input.fail(f"{path}: no observation of a gauge's station is within {given} (its {steps.unit}s run "
+        csv_input.fail(f"{path}: no observation of a gauge's station is within {given} (its {steps.noun}s run "
                        f"from {steps.text(min(every_steps))} to {steps.text(max(every_steps))})")
     return outside
 
@@ -630,7 +678,7 @@ def add_steps_without_rows(rows, times, steps, step_of, period, filler, path):
     span = steps_span(rows, steps, step_of, period, first, last) if count > len(rows.present) else ""
     if count > MOST_STEPS:
         spanning = "the period (--start, --end) spans" if period.given() else "the observations span"
-        csv_input.fail(f"{path}: {spanning} {count} {steps.unit}s {span}, more than "
+        csv_input.fail(f"{path}: {spanning} {count} {steps.noun}s {span}, more than "
                        f"{MOST_STEPS} (each a row of areal_mean.csv, and some 1 GB of memory a "
                        f"million); is a date mistyped?")
     missing = [step for step in steps.between(first, last) if step not in rows.present]
@@ -639,8 +687,8 @@ def add_steps_without_rows(rows, times, steps, step_of, period, filler, path):
         times.InsertNextValue(steps.time(step))
         rows.values.InsertNextValue(math.nan)
     if missing:
-        print(f"{path}: {len(missing)} {steps.unit}(s) {span} have no row of a gauge's station; they are "
-              f"{steps.unit}s where no gauge reported", file=sys.stderr)
+        print(f"{path}: {len(missing)} {steps.noun}(s) {span} have no row of a gauge's station; they are "
+              f"{steps.noun}s where no gauge reported", file=sys.stderr)
 
 
 def steps_span(rows, steps, step_of, period, first, last):
@@ -698,11 +746,12 @@ def outside_count(outside):
 
 
 # The names this script gives its outputs (the module docstring's list; a step's tag is Steps.tag's
-# 2001_03, 2001_03_01 or 2001_03_01_06): a file in --out named so that this run did not write is
+# 2001_03, 2001_03_01, 2001_03_01_06 or 2001_03_01_06_15): a file in --out named so that this run did not write is
 # most likely an earlier run's.
-TAG = r"[0-9]{4}_[0-9]{2}(_[0-9]{2}(_[0-9]{2})?)?"
+TAG = r"[0-9]{4}_[0-9]{2}(_[0-9]{2}(_[0-9]{2}(_[0-9]{2})?)?)?"
 OUTPUT_NAME = re.compile(rf"areal_mean\.(csv|png)|areal_mean_by_.+\.csv|unused_inputs\.csv"
-                         rf"|weights_all_(months|days|hours)\.csv|weights_{TAG}\.csv|tiles_{TAG}\.vtp|map_{TAG}\.png")
+                         rf"|weights_all_(months|days|hours|minutes)\.csv"
+                         rf"|weights_{TAG}\.csv|tiles_{TAG}\.vtp|map_{TAG}\.png")
 
 
 def say_earlier_outputs(out, written):
@@ -1485,7 +1534,7 @@ def map_layout(outline, per_gauge, points):
     return outline, per_gauge, lon, lat, map_extent(outline, [(lon[g], lat[g]) for g in per_gauge])
 
 
-def plot_map(per_gauge, gauges, outline, reporting, title, path, unit="month"):
+def plot_map(per_gauge, gauges, outline, reporting, title, path, adjective="monthly"):
     """outline: the catchment's rings (catchment_rings); the map shows them and the weighted
     gauges (map_extent). A month (or day) where no gauge reported has no tiles: the map shows the
     outline and the gauges, without tiles or colour bar."""
@@ -1511,7 +1560,7 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path, unit="month"):
         collection.set_clim(min(values), max(values))
         ax.add_collection(collection)
     if values:
-        fig.colorbar(collection, ax=ax, label=f"{Steps.ADJECTIVES[unit]} precipitation (data units)")
+        fig.colorbar(collection, ax=ax, label=f"{adjective} precipitation (data units)")
     for ring in outline:
         xs, ys = zip(*ring)
         ax.plot(xs + xs[:1], ys + ys[:1], color="black", linewidth=1.2)
@@ -1534,30 +1583,31 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path, unit="month"):
     plt.close(fig)
 
 
-def step_series(rows):
-    """The time series areal_mean.png plots, from write_summary's rows (months or days): (times,
+def step_series(rows, steps=None):
+    """The time series areal_mean.png plots, from write_summary's rows (of steps, Steps; by
+    default months, days or hours as the rows' fields say): (times,
     means, gauges reporting), a point for every step from the first row's to the last's. A step
     without an areal mean (no gauge reported, or no row: 0 gauges) has mean NaN, where matplotlib
     breaks the line: dropping it would draw the line straight across the gap as if it had been
     measured."""
     by_step = {tuple(r[:-3]): (r[-3], r[-1]) for r in rows}
-    steps = Steps.of(rows[0][:-3])
+    steps = steps or Steps.of(rows[0][:-3])
     every = steps.between(min(by_step), max(by_step))
     values = [by_step.get(step, (0, math.nan)) for step in every]
     return [steps.time(step) for step in every], [mean for _, mean in values], [used for used, _ in values]
 
 
-def plot_series(rows, path):
+def plot_series(rows, path, steps=None):
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    t, v, used = step_series(rows)
-    steps = Steps.of(rows[0][:-3])
+    steps = steps or Steps.of(rows[0][:-3])
+    t, v, used = step_series(rows, steps)
     first, last = tuple(rows[0][:-3]), tuple(rows[-1][:-3])
     dated = steps.fields > 2
-    if dated:  # days or hours: dates on the axis (decimal years of a few days read 0.078 .. 0.083 + 2.001e3)
+    if dated:  # days or times: dates on the axis (decimal years of a few days read 0.078 .. 0.083 + 2.001e3)
         moment = datetime.date if steps.unit == "day" else datetime.datetime
         t = [moment(*step) for step in steps.between(first, last)]
     # A step with a mean between two without is no segment of the line: a dot shows it.
@@ -1581,21 +1631,26 @@ def plot_series(rows, path):
     plt.close(fig)
 
 
-def chosen_hour(text, option="--hour"):
-    """--hour's (year, month, day, hour), written as the observations write an hour (YYYY-MM-DD
-    HH:00, or with a T; 24:00 is hour 0 of the next day); ends the script naming the value
-    otherwise (as the option's, option)."""
+def chosen_time(text, option="--hour"):
+    """--hour's (year, month, day, hour), or for another option (--minute, --start, --end) the
+    time as (year, month, day, hour, minute), written as the observations write a time
+    (YYYY-MM-DD HH:00 for an hour, HH:MM otherwise, or with a T; 24:00 is hour 0 of the next day);
+    ends the script naming the value otherwise (as the option's, option)."""
     date = DATE.match(text.strip())
     clock = TIME_OF_DAY.fullmatch(text.strip(), date.end()) if date and date.group(3) else None
-    if not clock or any(int(v or 0) for v in clock.groups()[1:]):
-        sys.exit(f"{option} {text!r}: expected a date and hour, YYYY-MM-DD HH:00")
-    step = tuple(int(v) for v in (*date.groups(), clock.group(1)))
-    if not is_calendar_day(*step[:3]) or step[3] > 24:
-        sys.exit(f"{option} {text!r}: is not an hour of the calendar")
+    hour = option == "--hour"
+    zero = clock.groups()[1 if hour else 2:] if clock else ()  # (minutes for an hour; seconds)
+    if not clock or any(int(v or 0) for v in zero):
+        sys.exit(f"{option} {text!r}: expected a date and " + ("hour, YYYY-MM-DD HH:00" if hour else
+                                                              "time, YYYY-MM-DD HH:MM"))
+    step = tuple(int(v) for v in (*date.groups(), *clock.groups()[:2]))
+    if not is_calendar_day(*step[:3]) or step[3] > 24 or step[4] > 59 or (step[3] == 24 and step[4]):
+        sys.exit(f"{option} {text!r}: is not {'an hour' if hour else 'a time'} of the calendar")
     try:
-        return hour_step(step)
+        step = hour_step(step)
     except OverflowError:  # (24:00 of 9999-12-31)
         sys.exit(f"{option} {text!r}: is after the calendar's last hour")
+    return step[:4] if hour else step
 
 
 def period_bound(text, option):
@@ -1606,29 +1661,32 @@ def period_bound(text, option):
     text = text.strip()
     date = DATE.match(text)
     if date and date.group(3) and date.end() < len(text):
-        return chosen_hour(text, option)
+        return chosen_time(text, option)
     if not date or date.end() < len(text):
-        sys.exit(f"{option} {text!r}: expected YYYY-MM, YYYY-MM-DD or 'YYYY-MM-DD HH:00'")
+        sys.exit(f"{option} {text!r}: expected YYYY-MM, YYYY-MM-DD or 'YYYY-MM-DD HH:MM'")
     step = tuple(int(v) for v in date.groups() if v is not None)
     if step[0] < 1 or not 1 <= step[1] <= 12 or (len(step) == 3 and not is_calendar_day(*step)):
         sys.exit(f"{option} {text!r}: is not a date of the calendar")
     return step
 
 
-def widened(bound, fields, last):
+def widened(bound, fields, last, minutes=1):
     """A period bound (period_bound's) as a step of `fields` numbers: a month is its first day (its
-    last, for last), a day its first hour (its last); a bound as fine is itself."""
+    last, for last), a day its first hour (its last), an hour its first step of minutes (its last,
+    of steps of minutes long); a bound as fine is itself."""
     if len(bound) == 2 and fields > 2:
         bound = (*bound, calendar.monthrange(*bound)[1] if last else 1)
     if len(bound) == 3 and fields > 3:
         bound = (*bound, 23 if last else 0)
+    if len(bound) == 4 and fields > 4:
+        bound = (*bound, 60 - minutes if last else 0)
     return bound
 
 
 def check_period(start, end, texts):
     """Ends the script when --start (period_bound's) comes after --end, each taken as widely as it
     reads (a month from its first hour, to its last)."""
-    if start is not None and end is not None and widened(start, 4, False) > widened(end, 4, True):
+    if start is not None and end is not None and widened(start, 5, False) > widened(end, 5, True):
         sys.exit(f"--start {texts[0].strip()} is after --end {texts[1].strip()}")
 
 
@@ -1647,10 +1705,16 @@ class Period:
         if bound is None:
             return None
         option = "--end" if last else "--start"
+        if len(bound) == 5 and steps.fields == 4 and not bound[4]:
+            bound = bound[:4]  # (a time on the hour is the hour)
         if len(bound) > steps.fields:
-            csv_input.fail(f"{option} {text}: the observations of {path} are {steps.adjective}: give a "
-                           f"{steps.unit} ({'YYYY-MM' if steps.fields == 2 else 'YYYY-MM-DD'})")
-        return widened(bound, steps.fields, last)
+            written = {2: "YYYY-MM", 3: "YYYY-MM-DD", 4: "YYYY-MM-DD HH:00"}[steps.fields]
+            csv_input.fail(f"{option} {text}: the observations of {path} are {steps.described}: give "
+                           f"{'an' if steps.unit == 'hour' else 'a'} {steps.unit} ({written})")
+        if not steps.on_grid(bound):
+            csv_input.fail(f"{option} {text}: the observations of {path} are {steps.described}: give a time whose "
+                           f"minute is a multiple of {steps.minutes}")
+        return widened(bound, steps.fields, last, steps.minutes)
 
     def __contains__(self, step):
         return (self.start is None or self.start <= step) and (self.end is None or step <= self.end)
@@ -1674,7 +1738,11 @@ def main(argv=None):
                                                         "give hours, 'YYYY-MM-DD HH:00' (or with a T: "
                                                         "YYYY-MM-DDTHH:00; 24:00 is the next day's 00:00; may be "
                                                         "given more than once; not with --month or --day)")
-    parser.add_argument("--start", help="the first step to average: YYYY-MM, YYYY-MM-DD or 'YYYY-MM-DD HH:00', no "
+    parser.add_argument("--minute", action="append", help="time for the weights, tiles and map when the observations "
+                                                          "give steps of minutes, 'YYYY-MM-DD HH:MM' (or with a T; "
+                                                          "may be given more than once; not with --month, --day or "
+                                                          "--hour)")
+    parser.add_argument("--start", help="the first step to average: YYYY-MM, YYYY-MM-DD or 'YYYY-MM-DD HH:MM', no "
                                         "finer than the observations' steps (a month is its first day or hour with "
                                         "daily or hourly observations; default: the observations' first); "
                                         "areal_mean.csv starts there, and unused_inputs.csv lists the observations "
@@ -1715,7 +1783,7 @@ def main(argv=None):
                              "years of days, as large as the observations) and the memory it takes")
     args = parser.parse_args(argv)
     given = [f"--{name} {values[0]}" for name, values in (("month", args.month), ("day", args.day),
-                                                           ("hour", args.hour)) if values]
+                                                           ("hour", args.hour), ("minute", args.minute)) if values]
     if len(given) > 1:
         sys.exit(f"{' and '.join(given)}: give one of them")
     if args.each is not None and args.feature is not None:
@@ -1749,10 +1817,10 @@ def main(argv=None):
     observations, steps = record.table, record.steps
     for option, when in asked:
         if len(when) > steps.fields:
-            csv_input.fail(f"{option}: the observations of {args.observations} are {steps.adjective} "
+            csv_input.fail(f"{option}: the observations of {args.observations} are {steps.described} "
                            f"(use --{steps.unit})")
     # (a month is its first day or hour with daily or hourly steps; a day, its 00:00 hour)
-    wanted = [(option, when, widened(when, steps.fields, False)) for option, when in asked]
+    wanted = [(option, when, widened(when, steps.fields, False, steps.minutes)) for option, when in asked]
     catchment, outline = read_catchment(args.catchment, args.feature)
     groups = polygon_groups(features_by_value(catchment, each, args.catchment), each,
                             args.catchment) if each is not None else None
@@ -1766,12 +1834,12 @@ def main(argv=None):
     progress = Progress("Thiessen areal means")
     progress_tag = average.AddObserver(vtkCommand.ProgressEvent, progress)
     started = time.time()
-    files = InputFiles(args.stations, gauge_lines, args.observations, record.lines, args.catchment, steps.unit)
+    files = InputFiles(args.stations, gauge_lines, args.observations, record.lines, args.catchment, steps.noun)
     messages = FilterMessages(average, files, progress)
     average.Update(1)
     summary = average.GetOutputDataObject(1)
     messages.check(summary is None or summary.GetNumberOfRows() == 0)
-    print(f"{summary.GetNumberOfRows()} {steps.unit}s in {time.time() - started:.2f} s", file=sys.stderr)
+    print(f"{summary.GetNumberOfRows()} {steps.noun}s in {time.time() - started:.2f} s", file=sys.stderr)
     # The step's tiles below re-run the filter for that time only: no second progress bar.
     average.RemoveObserver(progress_tag)
     rows = write_summary(summary, steps, os.path.join(args.out, "areal_mean.csv"))
@@ -1784,7 +1852,7 @@ def main(argv=None):
                   "files", file=sys.stderr)
     else:
         write_all_weights(average.GetOutputDataObject(2), steps, os.path.join(args.out, all_weights))
-    unused = write_unused(summary, files, station_ids, observations, steps.unit,
+    unused = write_unused(summary, files, station_ids, observations, steps.noun,
                           os.path.join(args.out, "unused_inputs.csv"), record.unmatched, record.outside)
     if groups:
         by_feature = "areal_mean_by_" + re.sub(r"[^A-Za-z0-9_.-]", "_", each) + ".csv"
@@ -1812,10 +1880,10 @@ def main(argv=None):
         csv_input.write_vtk(vtkXMLPolyDataWriter(), tiles, os.path.join(args.out, f"tiles_{tag}.vtp"))
         if not args.no_plots:
             plot_map(per_gauge, gauges, outline, record.reporting.get(chosen, set()), map_title(rows, steps, chosen),
-                     os.path.join(args.out, f"map_{tag}.png"), steps.unit)
+                     os.path.join(args.out, f"map_{tag}.png"), steps.adjective)
         shown.append((chosen, tag, per_gauge))
     if not args.no_plots:
-        plot_series(rows, os.path.join(args.out, "areal_mean.png"))
+        plot_series(rows, os.path.join(args.out, "areal_mean.png"), steps)
 
     tags = [tag for _, tag, _ in shown]
     step_files = [name for tag in tags for name in (f"weights_{tag}.csv", f"tiles_{tag}.vtp")]
@@ -1824,7 +1892,7 @@ def main(argv=None):
                         | (set() if args.no_all_weights else {all_weights})
                         | ({by_feature} if groups else set()))
     valid = [r[-1] for r in rows if not math.isnan(r[-1])]
-    print(f"{len(rows)} {steps.unit}s, {len(valid)} with data"
+    print(f"{len(rows)} {steps.noun}s, {len(valid)} with data"
           + (f"; mean of the {steps.adjective} areal means {sum(valid) / len(valid):.3f}"
              if valid else ""))
     for step, _, per_gauge in shown:
@@ -1885,7 +1953,9 @@ def asked_steps(args):
             sys.exit(f"--day {text!r}: is not a date of the calendar")
         asked.append((f"--day {text}", day))
     for text in args.hour or []:
-        asked.append((f"--hour {text}", chosen_hour(text)))
+        asked.append((f"--hour {text}", chosen_time(text)))
+    for text in args.minute or []:
+        asked.append((f"--minute {text}", chosen_time(text, "--minute")))
     return asked or [("", (1963, 8))]
 
 

@@ -812,7 +812,7 @@ def test_daily_observations_give_daily_means():
             ("station_id,date,precip\nN1,2001-02-03,1\n", {"day": "2001-02-03", "month": "2001-02"},
              "--month 2001-02 and --day 2001-02-03: give one of them"),
             ("station_id,date,day,precip\nN1,2001-02,3,1\n", {}, "both a date column and year/month/day/hour columns"),
-            ("station_id,date,precip\nN1,2001-02-03T06:15,1\n", {}, "'2001-02-03T06:15' is not on the hour"),
+            ("station_id,date,precip\nN1,2001-02-03T06:15:20,1\n", {}, "'2001-02-03T06:15:20' is not on the minute"),
             ("station_id,date,precip\nN1,2001-02T00:00,1\n", {}, "'2001-02T00:00' is not a date"),
         ]
         assert_observations_refused(directory, stations, catchment, cases)
@@ -1189,8 +1189,8 @@ def test_hourly_observations_give_hourly_means():
         # Bad hours are named; --hour is for hours only.
         hourly = "station_id,date,precip\nN1,2001-03-01 06:00,1\n"
         cases = [
-            ("station_id,date,precip\nN1,2001-03-01 06:30,1\n", {}, "'2001-03-01 06:30' is not on the hour"),
-            ("station_id,date,precip\nN1,2001-03-01 06:00:30,1\n", {}, "'2001-03-01 06:00:30' is not on the hour"),
+            ("station_id,date,precip\nN1,2001-03-01 24:30,1\n", {}, "'2001-03-01 24:30' is not a time of the day"),
+            ("station_id,date,precip\nN1,2001-03-01 06:00:30,1\n", {}, "'2001-03-01 06:00:30' is not on the minute"),
             ("station_id,date,precip\nN1,2001-03-01 25:00,1\n", {}, "'2001-03-01 25:00' is not a time of the day"),
             (hourly + "N2,2001-03-02,1\n", {}, ":3: column 'date': '2001-03-02' is a day, where line 2 gives an hour"),
             ("station_id,date,precip\nN2,2001-03-02,1\nN2,2001-03-02 00:00,1\nN1,2001-03-01 06:00,1\n", {},
@@ -1206,6 +1206,7 @@ def test_hourly_observations_give_hourly_means():
             ("station_id,year,month,day,hour,time,precip\nN1,2001,3,1,6,06:00,1\n", {},
              "has a time column beside its hour column: leave one of them out"),
             (hourly, {"hour": "2001-03-01T6"}, "--hour '2001-03-01T6': expected a date and hour"),
+            (hourly, {"hour": "2001-03-01 06:30"}, "--hour '2001-03-01 06:30': expected a date and hour"),
             ("station_id,date,precip\nN1,2001-03,1\nN2,2001-03-01 06:00,1\n", {},
              "'2001-03-01 06:00' is an hour, where line 2 gives a month"),
             ("station_id,date,precip\nN1,2001-03,1\nN2,2001-03-01 00:00,1\n", {},
@@ -1222,6 +1223,97 @@ def test_hourly_observations_give_hourly_means():
             (hourly, {"hour": "2001-03-01 25:00"}, "--hour '2001-03-01 25:00': is not an hour of the calendar"),
             (hourly, {"day": "2001-03-01", "hour": "2001-03-01 06:00"},
              "--day 2001-03-01 and --hour 2001-03-01 06:00: give one of them"),
+        ]
+        assert_observations_refused(directory, stations, catchment, cases)
+
+
+def test_observations_of_minutes_give_a_mean_each_step():
+    # Tipping-bucket records at :00, :15 and :45 (by a date column, and by hour and minute columns)
+    # give a mean every 15 minutes, every step from the first to the last (10:30 has no row). Each
+    # step's counts and mean are those of the same values given as hours of their own (the hours'
+    # path, checked against days in test_hourly_observations_give_hourly_means), and --minute
+    # chooses a step whose weights are that hour's. Times at :00 and :40 give 20-minute steps.
+    minutes = {(2001, 3, 1, 10, 0): {"N1": 1.5, "N2": 2.5, "N3": 4.0},
+               (2001, 3, 1, 10, 15): {"N1": 3.0, "N4": 1.25, "N6": 9.0},
+               (2001, 3, 1, 10, 45): {"N2": 0.5, "N3": 7.0, "N4": 2.0, "N5": 3.5},
+               (2001, 3, 1, 11, 0): {"N5": 1.0, "N6": 2.0}}
+    every = [(2001, 3, 1, 10, 0), (2001, 3, 1, 10, 15), (2001, 3, 1, 10, 30), (2001, 3, 1, 10, 45),
+             (2001, 3, 1, 11, 0)]
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, _ = write_lake_basin(directory)
+
+        def observations(name, header, when):
+            return write(directory, name, header + "".join(
+                f"{s},{when(step)},{v}\n" for step, values in minutes.items() for s, v in values.items()))
+        by_date = observations("by_date.csv", "station_id,date,precip\n",
+                               lambda s: "{}-{:02d}-{:02d} {:02d}:{:02d}".format(*s))
+        by_columns = observations("by_columns.csv", "station_id,year,month,day,hour,minute,precip\n",
+                                  lambda s: ",".join(map(str, s)))
+        as_hours = observations("as_hours.csv", "station_id,year,month,day,hour,precip\n",
+                                lambda s: f"2001,1,1,{every.index(s)}")
+        outputs = []
+        for path in (by_date, by_columns):
+            out = os.path.join(directory, os.path.basename(path)[:-4])
+            stdout, stderr = run_colorado(out, stations=stations, observations=path, catchment=catchment,
+                                          minute="2001-03-01 10:15", what=path)
+            got = {}
+            for file in ("areal_mean.csv", "weights_all_minutes.csv", "weights_2001_03_01_10_15.csv",
+                         "map_2001_03_01_10_15.png", "areal_mean.png", "unused_inputs.csv",
+                         "tiles_2001_03_01_10_15.vtp"):
+                with open(os.path.join(out, file), "rb") as f:
+                    got[file] = f.read()
+            outputs.append(got)
+            assert_that("5 15-minute steps, 4 with data" in stdout and "2001-03-01 10:15: areal mean" in stdout,
+                        f"{path}: {stdout}")
+            assert_that("1 15-minute step(s) between 2001-03-01 10:00 (line 2) and 2001-03-01 11:00 (line " in stderr
+                        and "they are 15-minute steps where no gauge reported" in stderr, f"{path}: {stderr}")
+        for file in outputs[0]:
+            assert_that(outputs[0][file] == outputs[1][file], f"{file} differs between dates and columns")
+        means = read_csv(os.path.join(directory, "by_date", "areal_mean.csv"))
+        assert_that([tuple(int(r[k]) for k in ("year", "month", "day", "hour", "minute")) for r in means] == every,
+                    f"the steps: {means}")
+        run_colorado(os.path.join(directory, "as_hours"), stations=stations, observations=as_hours,
+                     catchment=catchment, plots=False, hour="2001-01-01 01:00", what="the steps as hours")
+        hours = read_csv(os.path.join(directory, "as_hours", "areal_mean.csv"))
+        assert_that(len(hours) == len(means), f"hours {hours} against steps {means}")
+        for r, h in zip(means, hours):
+            assert_that((r["stations_used"], r["stations_weighted"]) == (h["stations_used"], h["stations_weighted"]),
+                        f"{r} against {h}")
+            if r["areal_mean"] or h["areal_mean"]:
+                assert_close(float(h["areal_mean"]), float(r["areal_mean"]), 1e-12, f"{r} against its hour")
+        step = read_csv(os.path.join(directory, "by_date", "weights_2001_03_01_10_15.csv"))
+        hour = read_csv(os.path.join(directory, "as_hours", "weights_2001_01_01_01.csv"))
+        assert_that([(w["station_id"], w["weight"]) for w in step] == [(w["station_id"], w["weight"]) for w in hour]
+                    and step, f"--minute's weights {step} against the hour's {hour}")
+        # --start and --end as times; 20-minute steps.
+        stdout, _ = run_colorado(os.path.join(directory, "period"), stations=stations, observations=by_date,
+                                 catchment=catchment, plots=False, start="2001-03-01 10:15", end="2001-03-01 10:45",
+                                 what="a period of minutes")
+        assert_that("3 15-minute steps, 2 with data" in stdout, f"a period of minutes: {stdout}")
+        twenty = write(directory, "twenty.csv",
+                       "station_id,date,precip\nN1,2001-03-01 10:00,1\nN2,2001-03-01 10:40,2\n")
+        stdout, _ = run_colorado(os.path.join(directory, "twenty"), stations=stations, observations=twenty,
+                                 catchment=catchment, plots=False, what="20-minute steps")
+        assert_that("3 20-minute steps, 2 with data" in stdout, f"20-minute steps: {stdout}")
+        # Bad times are named.
+        with open(by_date) as f:
+            steps_of_15 = f.read()
+        cases = [
+            (steps_of_15, {"start": "2001-03-01 10:10"},
+             "are in 15-minute steps: give a time whose minute is a multiple of 15"),
+            (steps_of_15, {"minute": "2001-03-01 10:15:30"},
+             "--minute '2001-03-01 10:15:30': expected a date and time"),
+            ("station_id,date,precip\nN1,2001-03-01 06:00,1\n", {"minute": "2001-03-01 06:00"},
+             "are hourly (use --hour)"),
+            ("station_id,date,precip\nN1,2001-03-01 06:00,1\n", {"start": "2001-03-01 06:30"},
+             "are hourly: give an hour (YYYY-MM-DD HH:00)"),
+            ("station_id,year,month,day,hour,minute,precip\nN1,2001,3,1,24,15,1\n", {},
+             "columns 'hour' and 'minute': 24:15 is not a time of the day"),
+            ("station_id,year,month,day,hour,minute,precip\nN1,2001,3,1,6,60,1\n", {},
+             "column 'minute': 60 is outside 0..59"),
+            ("station_id,year,month,day,minute,precip\nN1,2001,3,1,15,1\n", {}, "a minute column but no hour column"),
+            ("station_id,date,precip\nN1,2001-03-01,1\nN2,2001-03-01 06:15,1\n", {},
+             ":3: column 'date': '2001-03-01 06:15' is a time of day, where line 2 gives a day"),
         ]
         assert_observations_refused(directory, stations, catchment, cases)
 
@@ -2030,7 +2122,8 @@ if __name__ == "__main__":
          test_ids_without_their_leading_zeros_match_as_in_the_filter,
          test_files_of_semicolons_or_tabs_with_decimal_commas,
          test_daily_observations_give_daily_means,
-         test_hourly_observations_give_hourly_means, test_start_and_end_choose_the_period,
+         test_hourly_observations_give_hourly_means, test_observations_of_minutes_give_a_mean_each_step,
+         test_start_and_end_choose_the_period,
          test_a_wide_file_of_a_column_per_station_gives_the_long_files_means,
          test_an_earlier_runs_files_in_out_are_named,
          test_several_days_get_the_files_each_gets_alone,
