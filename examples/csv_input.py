@@ -238,13 +238,27 @@ def text(row, column, path, line):
     return value
 
 
-def gauges(path, optional=()):
+def gauges(path, optional=(), coordinates=("lon", "lat")):
     """Yields (line, row, station_id, name, lon, lat) for each gauge of a stations file: columns
-    station_id, lon, lat (degrees), an optional name, the other optional columns named (checked as
-    rows() checks them), and any others (left in row)."""
-    for line, row in rows(path, ("station_id", "lon", "lat"), "stations", ("name", *optional)):
+    station_id, lon, lat (degrees; or the columns named by coordinates, such as x, y), an optional
+    name, the other optional columns named (checked as rows() checks them), and any others (left
+    in row)."""
+    x, y = coordinates
+    for line, row in rows(path, ("station_id", x, y), "stations", ("name", *optional)):
         yield (line, row, text(row, "station_id", path, line), (row.get("name") or "").strip(),
-               number(row, "lon", path, line), number(row, "lat", path, line))
+               number(row, x, path, line), number(row, y, path, line))
+
+
+def has_columns(path, names, what):
+    """Whether the header of the CSV file at path (what it holds: "stations") has every one of
+    names (in any case)."""
+    header = decoded(path, what).lstrip().split("\n", 1)[0]
+    mark = header_delimiter(header, names)
+    try:
+        columns = {name.strip().lower() for name in next(csv.reader([header], delimiter=mark), [])}
+    except csv.Error:
+        return False
+    return {name.lower() for name in names} <= columns
 
 
 def output_directory(path):

@@ -1553,7 +1553,8 @@ def test_a_catchment_in_a_zip_file_is_read_from_it():
 
 
 def test_a_catchment_declared_projected_is_named():
-    # Its coordinates are read as lon/lat whatever the file declares; a projected system (here a
+    # Its coordinates are lon/lat (a UTM declaration over them does not make them metres: see
+    # test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means); a projected system (here a
     # GeoJSON "crs" of UTM 60S, as a shapefile's .prj gives it) is named on a line of its own.
     import json
 
@@ -1564,7 +1565,9 @@ def test_a_catchment_declared_projected_is_named():
         _, stderr = run_colorado(out, stations=stations, observations=observations, catchment=utm, plots=False,
                                  what="a declared UTM system")
         assert_that(f"{utm}: declares the projected coordinate system 'WGS 84 / UTM zone 60S'; its coordinates are "
-                    "read as longitude/latitude in degrees (WGS84)" in stderr_messages(stderr), f"{stderr}")
+                    "read as longitude/latitude in degrees (WGS84), which they must be (else reproject the file, "
+                    "e.g. ogr2ogr -t_srs EPSG:4326 out.shp in.shp; a UTM zone's metres are made lon/lat here)"
+                    in stderr_messages(stderr), f"{stderr}")
         _, stderr = run_colorado(out, stations=stations, observations=observations, catchment=catchment, plots=False)
         assert_that("declares" not in stderr, f"the lon/lat basin: {stderr}")
         # A geographic system on an older datum (NAD27, Clarke 1866) is named, with the shift it
@@ -1580,6 +1583,111 @@ def test_a_catchment_declared_projected_is_named():
                 assert_that(said[0].startswith(f"{geographic}: declares the datum 'North_American_Datum_1927' "
                                                "(ellipsoid 'Clarke 1866'); its longitudes/latitudes are read as "
                                                "WGS84 ones"), f"{said[0]}")
+
+
+def test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means():
+    # The lake basin and its gauges given in UTM zone 60S (the catchment as a shapefile whose .prj
+    # declares the zone, its edges cut every 0.001 degrees in lon/lat before projecting, so that it
+    # holds the lon/lat shape to a millimetre; the gauges as x, y with --stations-utm 60S) give the
+    # counts and means of the lon/lat files, the outline cut alike (its vertices move the automatic
+    # projection, and the means with it, by 1e-7): the coordinates are made lon/lat first, and
+    # that is said.
+    import json
+
+    from tessera import vtkGeographicProjection
+    from vtkmodules.vtkCommonCore import vtkIdList, vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+
+    def in_utm_60s(rings, closed):
+        """rings of (lon, lat) projected to UTM 60S, as lists of (x, y); closed: polygon rings with
+        their edges cut every 0.001 degrees and the first point repeated last."""
+        points, cells = vtkPoints(), vtkCellArray()
+        points.SetDataTypeToDouble()
+        for ring in rings:
+            cells.InsertNextCell(len(ring), [points.InsertNextPoint(x, y, 0.0) for x, y in ring])
+        data = vtkPolyData()
+        data.SetPoints(points)
+        data.SetPolys(cells) if closed else data.SetVerts(cells)
+        projection = vtkGeographicProjection()
+        projection.SetInputData(data)
+        projection.SetProjectionToUTM()
+        projection.SetUTMZone(60)
+        projection.SetUTMNorth(False)
+        projection.SetMaximumEdgeLength(0.001 if closed else 0.0)
+        projection.Update()
+        projected, cell, cells = [], vtkIdList(), projection.GetOutput().GetPolys() if closed else None
+        if not closed:
+            return [[projection.GetOutput().GetPoint(k)[:2] for k in range(points.GetNumberOfPoints())]]
+        cells.InitTraversal()
+        while cells.GetNextCell(cell):
+            ring = [projection.GetOutput().GetPoint(cell.GetId(k))[:2] for k in range(cell.GetNumberOfIds())]
+            projected.append(ring + ring[:1])
+        return projected
+
+    with tempfile.TemporaryDirectory() as out:
+        catchment, stations, observations = write_lake_basin(out)
+        rings = LAKE_BASIN["features"][0]["geometry"]["coordinates"]
+
+        def write_shapefile(name, utm_rings):
+            shp, shx = shapefile_of(utm_rings)
+            for extension, data in ((".shp", shp), (".shx", shx)):
+                with open(os.path.join(out, name + extension), "wb") as f:
+                    f.write(data)
+            with open(os.path.join(out, name + ".prj"), "w") as f:
+                f.write('PROJCS["WGS_1984_UTM_Zone_60S",GEOGCS["GCS_WGS_1984",DATUM["D_WGS_1984",SPHEROID['
+                        '"WGS_1984",6378137.0,298.257223563]],PRIMEM["Greenwich",0.0],UNIT["Degree",'
+                        '0.0174532925199433]],PROJECTION["Transverse_Mercator"],PARAMETER["False_Easting",500000.0],'
+                        'PARAMETER["False_Northing",10000000.0],PARAMETER["Central_Meridian",177.0],'
+                        'PARAMETER["Scale_Factor",0.9996],PARAMETER["Latitude_Of_Origin",0.0],UNIT["Meter",1.0]]')
+            return os.path.join(out, name + ".shp")
+        utm = write_shapefile("basin_utm", in_utm_60s([ring[:-1] for ring in rings], True))[:-4]
+        gauges = in_utm_60s([list(LAKE_GAUGES.values())], False)[0]
+        xy = write(out, "stations_xy.csv", "station_id,x,y\n" + "".join(
+            f"{s},{x!r},{y!r}\n" for s, (x, y) in zip(LAKE_GAUGES, gauges)))
+        cut = json.loads(json.dumps(LAKE_BASIN))
+        cut["features"][0]["geometry"]["coordinates"] = [
+            [[a[0] + (b[0] - a[0]) * i / 1000, a[1] + (b[1] - a[1]) * i / 1000] for a, b in zip(ring, ring[1:])
+             for i in range(1000)] + ring[-1:] for ring in rings]
+        run_colorado(os.path.join(out, "lonlat"), stations=stations, observations=observations,
+                     catchment=write(out, "cut.geojson", json.dumps(cut)), plots=False, what="lon/lat")
+        _, stderr = run_colorado(os.path.join(out, "utm"), stations=xy, observations=observations,
+                                 catchment=utm + ".shp", plots=False, what="UTM", **{"stations-utm": "60S"})
+        assert_that(f"{utm}.shp: declares the projected coordinate system 'WGS 84 / UTM zone 60S', whose eastings "
+                    "and northings are made longitude/latitude (UTM zone 60S, WGS84)" in stderr_messages(stderr),
+                    f"the UTM catchment: {stderr}")
+        want, got = (read_csv(os.path.join(out, d, "areal_mean.csv")) for d in ("lonlat", "utm"))
+        assert_that(len(got) == len(want) == 2, f"{got} against {want}")
+        for a, b in zip(got, want):
+            assert_that((a["stations_used"], a["stations_weighted"]) == (b["stations_used"], b["stations_weighted"]),
+                        f"{a} against {b}")
+            assert_close(float(b["areal_mean"]), float(a["areal_mean"]), 1e-8 * float(b["areal_mean"]),
+                         f"the UTM files' mean {a}")
+        # A UTM outline of a few vertices (edges of up to 85 km, which bow some 100 m from the lon/lat
+        # lines between their ends) is the polygon straight in metres: the means of the same outline
+        # cut every 500th of an edge in metres, to 1e-6 (not cutting it moved them by 1e-4).
+        corners = [in_utm_60s([ring[:-1]], False)[0] for ring in rings]
+        few = write_shapefile("few", [ring + ring[:1] for ring in corners])
+        many = write_shapefile("many", [[(a[0] + (b[0] - a[0]) * i / 500, a[1] + (b[1] - a[1]) * i / 500)
+                                         for a, b in zip(ring, ring[1:] + ring[:1]) for i in range(500)] + ring[:1]
+                                        for ring in corners])
+        for name, path in (("few", few), ("many", many)):
+            run_colorado(os.path.join(out, name), stations=xy, observations=observations, catchment=path,
+                         plots=False, what=name, **{"stations-utm": "60S"})
+        coarse, fine = (read_csv(os.path.join(out, name, "areal_mean.csv")) for name in ("few", "many"))
+        assert_close(float(fine[0]["areal_mean"]), float(coarse[0]["areal_mean"]), 1e-6 * float(fine[0]["areal_mean"]),
+                     "a few vertices in metres against many")
+        # Eastings and northings without the zone, a zone that is none, and a northing no zone has
+        # are named.
+        far = write(out, "far.csv", "station_id,x,y\nN1,400000,4e9\n")
+        cases = [({}, xy, f"{xy}: the stations file has columns x and y, not lon and lat: if they are eastings and "
+                          "northings of a UTM zone, give the zone with --stations-utm (such as 13N)"),
+                 ({"stations-utm": "61S"}, xy, "--stations-utm '61S': expected a UTM zone 1 to 60 with N or S"),
+                 ({"stations-utm": "60S"}, far,
+                  f"{far}:2: (400000, 4000000000) is not an easting and northing of a UTM zone")]
+        for options, path, message in cases:
+            _, stderr = run_colorado(os.path.join(out, "bad"), stations=path, observations=observations,
+                                     catchment=catchment, plots=False, status=1, what=message, **options)
+            assert_that(message in stderr and "Traceback" not in stderr, f"{message!r} not in {stderr!r}")
 
 
 def test_observations_of_no_gauge_end_the_run():
@@ -2134,7 +2242,7 @@ if __name__ == "__main__":
          test_text_lines_split_as_a_string_io_does,
          test_reading_a_large_file_says_how_far_it_got,
          test_a_catchment_in_a_zip_file_is_read_from_it,
-         test_a_catchment_declared_projected_is_named,
+         test_a_catchment_declared_projected_is_named, test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means,
          test_the_filters_errors_name_the_file_and_line,
          test_the_filters_warnings_are_lines_of_their_own,
          test_rows_of_empty_fields_are_skipped,
