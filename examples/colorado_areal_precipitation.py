@@ -177,8 +177,9 @@ class Steps:
         return [(d.year, d.month, d.day, d.hour, d.minute)[:self.fields] for d in every]
 
     def on_grid(self, step):
-        """Whether a step of these fields is one of these steps (a minute a multiple of minutes)."""
-        return self.fields < 5 or step[4] % self.minutes == 0
+        """Whether a step (or a coarser bound: a day, a month) is on these steps' grid (a minute a
+        multiple of minutes)."""
+        return len(step) < 5 or step[4] % self.minutes == 0
 
 
 def is_calendar_day(year, month, day):

@@ -1290,6 +1290,12 @@ def test_observations_of_minutes_give_a_mean_each_step():
                                  catchment=catchment, plots=False, start="2001-03-01 10:15", end="2001-03-01 10:45",
                                  what="a period of minutes")
         assert_that("3 15-minute steps, 2 with data" in stdout, f"a period of minutes: {stdout}")
+        # A day or a month as a bound is its first step and its last (it ended in a traceback).
+        for bounds in ({"start": "2001-03-01", "end": "2001-03-01"}, {"start": "2001-03"}):
+            stdout, _ = run_colorado(os.path.join(directory, "period"), stations=stations, observations=by_date,
+                                     catchment=catchment, plots=False, what=f"{bounds} of minutes", **bounds)
+            steps = 96 if "end" in bounds else 5
+            assert_that(f"{steps} 15-minute steps, 4 with data" in stdout, f"{bounds}: {stdout}")
         twenty = write(directory, "twenty.csv",
                        "station_id,date,precip\nN1,2001-03-01 10:00,1\nN2,2001-03-01 10:40,2\n")
         stdout, _ = run_colorado(os.path.join(directory, "twenty"), stations=stations, observations=twenty,
