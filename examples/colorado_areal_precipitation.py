@@ -215,8 +215,8 @@ def read_gauges(path, utm=None):
     ids.SetName("station_id")
     names.SetName("name")
     lines = []
-    if utm is None and csv_input.has_columns(path, ("x", "y"), "stations") and not csv_input.has_columns(
-            path, ("lon", "lat"), "stations"):
+    columns = csv_input.header_columns(path, "stations", ("station_id", "lon", "lat")) if utm is None else set()
+    if {"x", "y"} <= columns and not {"lon", "lat"} <= columns:
         csv_input.fail(f"{path}: the stations file has columns x and y, not lon and lat: if they are eastings and "
                        "northings of a UTM zone, give the zone with --stations-utm (such as 13N)")
     for line, _, station, name, lon, lat in csv_input.gauges(path, coordinates=("x", "y") if utm else ("lon", "lat")):

@@ -249,16 +249,16 @@ def gauges(path, optional=(), coordinates=("lon", "lat")):
                number(row, x, path, line), number(row, y, path, line))
 
 
-def has_columns(path, names, what):
-    """Whether the header of the CSV file at path (what it holds: "stations") has every one of
-    names (in any case)."""
+def header_columns(path, what, wanted):
+    """The column names of the header of the CSV file at path (what it holds: "stations"), in
+    lower case, its separator chosen by the wanted columns as rows() chooses it; none for a
+    header that is not well-formed CSV (rows() names it)."""
     header = decoded(path, what).lstrip().split("\n", 1)[0]
-    mark = header_delimiter(header, names)
     try:
-        columns = {name.strip().lower() for name in next(csv.reader([header], delimiter=mark), [])}
+        return {name.strip().lower() for name in next(csv.reader([header], delimiter=header_delimiter(
+            header, wanted)), [])}
     except csv.Error:
-        return False
-    return {name.lower() for name in names} <= columns
+        return set()
 
 
 def output_directory(path):
