@@ -345,7 +345,7 @@ def from_utm(data, zone, north, where):
 DATE = re.compile(r"([0-9]{4})-([0-9]{1,2})(?:-([0-9]{1,2}))?")
 # A time of day after a date (2001-02-03T06:00, 2001-02-03 06:00:00), as a spreadsheet or a
 # program writes a timestamp.
-TIME_OF_DAY = re.compile(r"[T ]([0-9]{2}):([0-9]{2})(?::([0-9]{2})(?:\.([0-9]+))?)?")
+TIME_OF_DAY = re.compile(r"[T ]([0-9]{1,2}):([0-9]{2})(?::([0-9]{2})(?:\.([0-9]+))?)?")
 
 
 def observation_step(row, path, line):
@@ -453,33 +453,129 @@ def hour_step(step):
     return (after.year, after.month, after.day, 0, *step[4:])
 
 
-def file_steps(read, first, hour_column, at_24, path):
+def file_steps(rows, bounds, path, station_ids):
     """The steps of an observations file (Steps), and the step of each one observation_step read
-    (read: all of them; first: the first line of each kind, STEP_KINDS, and of a time other than
-    midnight, "hour"; at_24: the number of records at hour 24). The steps are times of the day
-    where the file has an hour column or a date with a time other than midnight: hours when every
-    time is on the hour, else steps of the largest number of minutes that divides every time's
-    minute and 60 (15 for times at :00, :15, :30 and :45), each step the total of the minutes up to
-    its time, as tipping-bucket and logger records give them. Hour 24 (24:00) is hour 0 of the next
-    day, as hour-ending records write a day's last hour, which is said. Dates with times all at
-    midnight (00:00, or 24:00 for a day's end) are days, as a spreadsheet may export them: a day at
-    24:00 is the day it ends. Times all at one time of day over several days are said (daily
-    values stamped with the hour they are read)."""
-    if not (hour_column or "hour" in first or "minute" in first):
+    (rows: scan_observations'; bounds: --start's and --end's period_bound). The steps are times of
+    the day where the file has an hour column or a date with a time other than midnight: hours when
+    every time used is on the hour, else steps of the largest number of minutes that divides 60 and
+    every used time's minute (15 for times at :00, :15, :30 and :45), each step the total of the
+    minutes up to its time, as tipping-bucket and logger records give them. A time is used where a
+    gauge's station has a value then within --start/--end (used_times): a row without a value, of
+    no gauge's station or outside the period does not make the steps finer, and goes to the step
+    that ends after its time (step_at_grid). Hour 24 (24:00) is hour 0 of the next day, as
+    hour-ending records write a day's last hour, which is said. Dates with times all at midnight
+    (00:00, or 24:00 for a day's end) are days, as a spreadsheet may export them: a day at 24:00 is
+    the day it ends. Times all at one time of day over several days are said (daily values stamped
+    with the hour they are read), and so are the times that make the steps finer than most times
+    are apart and gauges whose times keep to different steps (say_step_grids)."""
+    read, first = set(rows.step_index), rows.first
+    if not (rows.hour_column or "hour" in first or "minute" in first):
         return Steps("month" if "month" in first or not first else "day"), {m: m[:3] for m in read}
-    if at_24:
-        print(f"{path}: {at_24} observation(s) at hour 24 (the end of a day) are read as hour 0 of the next day",
+    if rows.at_24:
+        print(f"{path}: {rows.at_24} observation(s) at hour 24 (the end of a day) are read as hour 0 of the next day",
               file=sys.stderr)
-    minutes = math.gcd(60, *(m[4] for m in read))
+    used = used_times(rows.reporting, bounds) or dict.fromkeys(read, set())
+    minutes = math.gcd(60, *(m[4] for m in used))
     steps = Steps("hour") if minutes == 60 else Steps("minute", minutes)
     if len({m[3:] for m in read}) == 1 and len({m[:3] for m in read}) > 1:
         # Daily values stamped with the time their day ends (a climate day read at 07:00) would be
         # read as hours with 23 hours without a report between them: said, as for days of months.
         print(f"{path}: every time is {'{:02d}:{:02d}'.format(*next(iter(read))[3:])}; if these are daily values "
-              "(a day read at that time), " + ("leave out the hour column" if hour_column else
+              "(a day read at that time), " + ("leave out the hour column" if rows.hour_column else
                                 "give the dates without the time (YYYY-MM-DD)") +
               f": they are read as {steps.noun}s", file=sys.stderr)
-    return steps, {m: hour_step(m)[:steps.fields] for m in read}
+    say_step_grids(rows, used, steps, path, station_ids)
+    return steps, {m: step_at_grid(hour_step(m), minutes)[:steps.fields] for m in read}
+
+
+def used_times(reporting, bounds):
+    """The times (observation_step's) at which a gauge's station has a value within --start/--end
+    (bounds: period_bound's, or None), each with those gauges (reporting: ObservationRows')."""
+    start, end = (widened(bound, 5, last) if bound else None for bound, last in zip(bounds, (False, True)))
+    return {m: gauges for m, gauges in reporting.items()
+            if (start is None or start <= hour_step(m)) and (end is None or hour_step(m) <= end)}
+
+
+def step_at_grid(time, minutes):
+    """A time (year, month, day, hour, minute; hour below 24) as the step of minutes that holds it:
+    itself on the grid, else the step that ends after it (a step is the total of the minutes up to
+    its time)."""
+    late = time[4] % minutes
+    if not late:
+        return time
+    try:
+        after = datetime.datetime(*time) + datetime.timedelta(minutes=minutes - late)
+    except OverflowError:  # (after 9999-12-31 23:00: the step before, the calendar's last)
+        return (*time[:4], time[4] - late)
+    return (after.year, after.month, after.day, after.hour, after.minute)
+
+
+# The times that make a pattern of steps: a gauge's, or those of most rows of a file. Fewer may
+# keep to a coarser grid by chance: 4 times of 5-minute steps are all at multiples of 15 minutes
+# once in 81, 8 of them once in 6561.
+PATTERN_TIMES = 8
+
+
+def say_step_grids(rows, used, steps, path, station_ids):
+    """Names what made steps of minutes finer than the times mostly are, and the times off the
+    steps' grid (used: used_times'; station_ids: the gauges' ids)."""
+    if steps.minutes < 60:
+        say_few_times_off_a_grid(rows, used, steps, path)
+    unused = sorted(m for m in rows.step_index if m not in used and m[4] % steps.minutes)
+    if unused:
+        print(f"{path}: {len(unused)} time(s) of rows without a value, of no gauge's station or outside --start/--end "
+              f"are not {at_multiples(steps.minutes)}, as the steps are, and are read at the step after them: "
+              f"{times_and_lines(rows, unused)}", file=sys.stderr)
+    say_gauges_of_other_steps(used, steps, path, station_ids)
+
+
+def say_few_times_off_a_grid(rows, used, steps, path):
+    """Names the few used times off the grid of all the others (at most 1 in 100, or 1), where a
+    mistyped :07 among quarter hours makes 1-minute steps."""
+    coarser = [d for d in range(60, steps.minutes, -1) if 60 % d == 0 and d % steps.minutes == 0]
+    grid = next((d for d in coarser if len(used) - PATTERN_TIMES >= sum(1 for m in used if m[4] % d)
+                 <= max(1, len(used) // 100)), None)
+    if grid:
+        off = sorted(m for m in used if m[4] % grid)
+        print(f"{path}: read {steps.described} because of {len(off)} time(s) not {at_multiples(grid)} as the others "
+              f"are: {times_and_lines(rows, off)}; if they are mistyped, mend them", file=sys.stderr)
+
+
+def say_gauges_of_other_steps(used, steps, path, station_ids):
+    """Warns when gauges' times keep to different steps (each gauge of PATTERN_TIMES times or
+    more): their values may be totals over different lengths of time."""
+    grids, times = {}, collections.Counter()
+    for m, gauges in used.items():
+        for gauge in gauges:
+            grids[gauge] = math.gcd(grids.get(gauge, 60), m[4])
+            times[gauge] += 1
+    by_grid = {}
+    for gauge in sorted(grids):
+        if times[gauge] >= PATTERN_TIMES:
+            by_grid.setdefault(grids[gauge], []).append(station_ids[gauge])
+    if len(by_grid) > 1:
+        listed = "; ".join(f"{at_multiples(grid)} for {len(ids)} gauge(s) ({first_and_more(ids, str, 5)})"
+                           for grid, ids in sorted(by_grid.items()))
+        print(f"{path}: the gauges' times keep to different steps: {listed}. The file is read {steps.described}, "
+              "and a gauge is taken as not reporting at a step without its row: where a gauge's values are totals "
+              "over its longer step, the means add totals of different lengths (sum the other gauges' values to "
+              "that step first)", file=sys.stderr)
+
+
+def times_and_lines(rows, times):
+    """'line 62 (2001-03-01 10:07), ...': each time (observation_step's) with its first row's line."""
+    return first_and_more(times, lambda m: f"line {first_line(rows, m)} ({Steps.of(m).text(m)})")
+
+
+def at_multiples(minutes):
+    """Where the times of steps of minutes fall: 'on the hour', 'at multiples of 15 minutes'."""
+    return "on the hour" if minutes == 60 else f"at multiples of {minutes} minutes"
+
+
+def first_line(rows, time):
+    """The file's line of the first row at time (a step as observation_step read it)."""
+    index = rows.step_index[time]
+    return rows.lines[rows.read.index(index)]
 
 
 TIME_COLUMNS = ("year", "month", "day", "hour", "minute", "date", "time")  # (observation_step's)
@@ -605,7 +701,7 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     from vtkmodules.vtkCommonDataModel import vtkTable
 
     rows = scan_observations(path, gauge_of, stations_path, station_ids, missing_values)
-    steps, step_of = file_steps(set(rows.step_index), rows.first, rows.hour_column, rows.at_24, path)
+    steps, step_of = file_steps(rows, bounds, path, station_ids)
     rows.take_steps(step_of)
     period = Period(steps, *bounds, bound_texts, path)
     if rows.lines and not rows.present:
@@ -801,12 +897,13 @@ def add_steps_without_rows(rows, times, steps, step_of, period, filler, path):
                        f"{MOST_STEPS} (each a row of areal_mean.csv, and some 1 GB of memory a "
                        f"million); is a date mistyped?")
     missing = [step for step in steps.between(first, last) if step not in rows.present]
+    shown = first_and_more(missing, steps.text, 5)
     for step in missing:  # (a gauge's id: the step is a step of the filter)
         rows.stations.InsertNextValue(filler)
         times.InsertNextValue(steps.time(step))
         rows.values.InsertNextValue(math.nan)
     if missing:
-        print(f"{path}: {len(missing)} {steps.noun}(s) {span} have no row of a gauge's station; they are "
+        print(f"{path}: {len(missing)} {steps.noun}(s) {span} have no row of a gauge's station ({shown}); they are "
               f"{steps.noun}s where no gauge reported", file=sys.stderr)
 
 
@@ -1819,6 +1916,12 @@ def check_period(start, end, texts):
         sys.exit(f"--start {texts[0].strip()} is after --end {texts[1].strip()}")
 
 
+def off_grid(given, steps, path):
+    """The message for an option's time (given: the option and its value) off the steps' grid."""
+    return (f"{given}: the observations of {path} are {steps.described}: give a time whose minute is a multiple of "
+            f"{steps.minutes}")
+
+
 class Period:
     """--start and --end (period_bound's steps, or None), made steps of the observations' unit
     (steps): a month given for days or hours is its first or last day or hour, a day given for
@@ -1841,8 +1944,7 @@ class Period:
             csv_input.fail(f"{option} {text}: the observations of {path} are {steps.described}: give "
                            f"{'an' if steps.unit == 'hour' else 'a'} {steps.unit} ({written})")
         if not steps.on_grid(bound):
-            csv_input.fail(f"{option} {text}: the observations of {path} are {steps.described}: give a time whose "
-                           f"minute is a multiple of {steps.minutes}")
+            csv_input.fail(off_grid(f"{option} {text}", steps, path))
         return widened(bound, steps.fields, last, steps.minutes)
 
     def __contains__(self, step):
@@ -1858,7 +1960,8 @@ def main(argv=None):
     parser.add_argument("--month", action="append", help="month for the weights, tiles and map, YYYY-MM (may be "
                                                          "given more than once: each month's files; default: 1963-08, "
                                                          "or the nearest month of the record where a gauge reported; "
-                                                         "with daily or hourly observations its first day or hour)")
+                                                         "with daily, hourly or sub-hourly observations its first "
+                                                         "day, hour or step)")
     parser.add_argument("--day", action="append", help="day for the weights, tiles and map when the observations "
                                                        "give days, YYYY-MM-DD (may be given more than once; with "
                                                        "hourly observations its 00:00 hour, which for hour-ending "
@@ -1894,7 +1997,10 @@ def main(argv=None):
                              "or of daily values: columns station_id, year, month, day, precip, or "
                              "station_id, date (YYYY-MM-DD), precip; or of hourly values: columns station_id, "
                              "year, month, day, hour (0-23, or 24 for the end of the day), precip, or station_id, "
-                             "date (YYYY-MM-DD HH:00), precip; a date column of YYYY-MM gives months; or "
+                             "date (YYYY-MM-DD HH:00), precip; or of steps of minutes (tipping buckets, loggers): "
+                             "dates YYYY-MM-DD HH:MM, or hour and minute columns, each value the total up to its "
+                             "time, the step the largest that divides 60 and every time's minute; a date column of "
+                             "YYYY-MM gives months; or "
                              "wide: a row per time (date, or year, month, ...) with a column per station named "
                              f"by its station_id; {csv_input.SEPARATORS_TEXT}")
     parser.add_argument("--catchment", default=os.path.join(DATA, "colorado_boundary.geojson"),
@@ -1953,6 +2059,8 @@ def main(argv=None):
         if len(when) > steps.fields:
             csv_input.fail(f"{option}: the observations of {args.observations} are {steps.described} "
                            f"(use --{steps.unit})")
+        if not steps.on_grid(when):
+            csv_input.fail(off_grid(option, steps, args.observations))
     # (a month is its first day or hour with daily or hourly steps; a day, its 00:00 hour)
     wanted = [(option, when, widened(when, steps.fields, False, steps.minutes)) for option, when in asked]
     catchment, outline = read_catchment(args.catchment, args.feature)

@@ -655,7 +655,7 @@ def test_ids_without_their_leading_zeros_match_as_in_the_filter():
             assert_that(zeros[0][file] == nozeros[0][file], f"{file} differs without the leading zeros")
         assert_that(zeros[1] == nozeros[1], f"stdout differs: {zeros[1]!r} against {nozeros[1]!r}")
         assert_that(zeros[2] == nozeros[2] == ["OBS: 1 month(s) between 2001-01 (line 2) and 2001-04 (line 10) have "
-                                               "no row of a gauge's station; they are months where no gauge "
+                                               "no row of a gauge's station (2001-03); they are months where no gauge "
                                                "reported"],
                     f"the months without a gauge's row: {zeros[2]} against {nozeros[2]}")
         assert_that("repeat a station and time" not in nozeros[3], f"rows flagged as repeated: {nozeros[3]}")
@@ -1322,6 +1322,56 @@ def test_observations_of_minutes_give_a_mean_each_step():
              ":3: column 'date': '2001-03-01 06:15' is a time of day, where line 2 gives a day"),
         ]
         assert_observations_refused(directory, stations, catchment, cases)
+
+
+def quarter_hours(gauges, count, step=15, hour="{:02d}"):
+    """Rows 'station,date,value' of each gauge every step minutes from 2001-03-01 10:00, count times."""
+    return "".join(f"{s},2001-03-01 {hour.format(10 + k * step // 60)}:{k * step % 60:02d},{k % 3 + 0.5}\n"
+                   for s in gauges for k in range(count))
+
+
+def test_times_off_the_steps_and_gauges_of_other_steps_are_named():
+    # Times of 15-minute steps, one of them mistyped :07, are read in 1-minute steps, and that time
+    # is named with its line; a row at :07 without a value (or of no gauge, or outside the
+    # period) leaves the steps 15 minutes, goes to the step after it, and is named; the means are
+    # then those of the file without it. Gauges every 5 minutes beside gauges every 15 are named
+    # (not gauges of too few times to tell). --minute off the steps is refused as --start is. A
+    # single-digit hour (6:15) reads as 06:15.
+    header = "station_id,date,precip\n"
+    quarters = quarter_hours(("N1", "N2", "N3", "N4", "N5"), 12)
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, _ = write_lake_basin(directory)
+
+        def run(name, text, what, **options):
+            out = os.path.join(directory, name)
+            stdout, stderr = run_colorado(out, stations=stations, observations=write(directory, name + ".csv", text),
+                                          catchment=catchment, plots=False, what=what, **options)
+            return stdout, stderr, read_csv(os.path.join(out, "areal_mean.csv"))
+
+        stdout, stderr, _ = run("typo", header + quarters + "N6,2001-03-01 10:07,1.5\n", "a mistyped :07")
+        assert_that("read in 1-minute steps because of 1 time(s) not at multiples of 15 minutes as the others are: "
+                    "line 62 (2001-03-01 10:07)" in stderr and "166 1-minute steps" in stdout, f"a :07: {stderr}")
+        _, _, clean = run("clean", header + quarters, "quarter hours")
+        assert_that(len(clean) == 12 and clean[-1]["hour"] == "12" and clean[-1]["minute"] == "45", f"{clean}")
+        for extra, where in (("N6,2001-03-01 10:07,NA\n", "without a value"), ("X9,2001-03-01 10:22,3\n", "of no gauge"),
+                             ("N6,2001-03-01 13:07,3\n", "outside --end")):
+            _, stderr, means = run("unused", header + quarters + extra, where, end="2001-03-01 12:45")
+            assert_that(means == clean and "1 time(s) of rows without a value, of no gauge's station or outside "
+                        "--start/--end are not at multiples of 15 minutes, as the steps are, and are read at the step "
+                        "after them: line 62 (2001-03-01 " in stderr, f"a row at :07 {where}: {stderr} {means}")
+        fives = quarter_hours(("N1", "N2", "N3"), 36, step=5)
+        _, stderr, _ = run("mixed", header + fives + quarter_hours(("N4", "N5"), 12), "5 and 15 minutes")
+        assert_that("the gauges' times keep to different steps: at multiples of 5 minutes for 3 gauge(s) (N1, N2, "
+                    "N3); at multiples of 15 minutes for 2 gauge(s) (N4, N5). The file is read in 5-minute steps"
+                    in stderr, f"5 and 15 minutes: {stderr}")
+        _, stderr, _ = run("few", header + fives + quarter_hours(("N4", "N5"), 4), "15 minutes four times")
+        assert_that("keep to different steps" not in stderr and "because of" not in stderr, f"four times: {stderr}")
+        _, _, single = run("single", header + quarter_hours(("N1", "N2", "N3", "N4", "N5"), 12, hour="{}"), "6:15")
+        assert_that(single == clean, f"single-digit hours {single} against {clean}")
+        assert_observations_refused(directory, stations, catchment, [
+            (header + quarters, {"minute": "2001-03-01 10:07"},
+             "--minute 2001-03-01 10:07: the observations of " + os.path.join(directory, "bad.csv") +
+             " are in 15-minute steps: give a time whose minute is a multiple of 15")])
 
 
 def test_the_field_separator_and_the_decimal_mark():
@@ -2237,6 +2287,7 @@ if __name__ == "__main__":
          test_files_of_semicolons_or_tabs_with_decimal_commas,
          test_daily_observations_give_daily_means,
          test_hourly_observations_give_hourly_means, test_observations_of_minutes_give_a_mean_each_step,
+         test_times_off_the_steps_and_gauges_of_other_steps_are_named,
          test_start_and_end_choose_the_period,
          test_a_wide_file_of_a_column_per_station_gives_the_long_files_means,
          test_an_earlier_runs_files_in_out_are_named,
