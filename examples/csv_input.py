@@ -88,6 +88,10 @@ def rows(path, required, what, optional=(), header=None, delimiter_columns=None)
             header[:] = columns
         reader.fieldnames = columns
         for row in reader:
+            if None not in row and None not in row.values():  # (as many fields as the header: most records)
+                if any(map(str.strip, row.values())):
+                    yield reader.line_num, Row(row, decimal_comma=True) if decimal_comma else row
+                continue  # (all empty)
             # A record whose fields are all empty (",,," as a spreadsheet exports a blank row, or
             # a line of spaces) holds nothing: skipped, like a blank line.
             fields = [value for key, value in row.items() if key is not None] + (row.get(None) or [])
