@@ -1349,12 +1349,14 @@ class InputFiles:
     observation rows by table row (both from 0), become lines naming the file and, for a gauge or a
     row, its line. The mapping is simple: gauge g is the stations file's g-th record, table row r
     the observations file's r-th record (the filler rows after them are never named: they have a
-    gauge's id, a time and no value)."""
+    gauge's id, a time and no value). within: where a period is given (period_given), what a
+    gauge without an observed value lacks it within (the filter sees only the period's rows)."""
 
-    def __init__(self, stations, gauge_lines, observations, row_lines, catchment, unit="month"):
+    def __init__(self, stations, gauge_lines, observations, row_lines, catchment, unit="month", period_given=False):
         self.stations, self.gauge_lines = stations, gauge_lines
         self.observations, self.row_lines = observations, row_lines
         self.catchment, self.unit = catchment, unit
+        self.within = " within --start/--end" if period_given else ""
 
     def row_line(self, row):
         """The observations file's line of table row `row` (as text), or None for a filler row."""
@@ -1419,6 +1421,7 @@ class InputFiles:
             text = re.sub(r"turn UseMissingValue on with MissingValue (\S+)", r"give --missing-value \1", text)
             return f"{self.observations}: {self.rows_as_lines(text)}"
         if re.match(r"\d+ (gauge\(s\)|station id\(s\) are given to more than one gauge)", text):
+            text = text.replace("have no observed value", "have no observed value" + self.within, 1)
             return f"{self.stations}: {self.gauges_as_lines(text)}"
         if re.match(r"none of the \d+ gauges", text):
             return f"{self.stations}: {text}"
@@ -1640,7 +1643,7 @@ def write_unused(summary, files, station_ids, observations, unit, path, unmatche
         out = csv.writer(f)
         out.writerow(["kind", "file", "line", "station_id", "note"])
         for name, kind, of_rows in UNUSED_LISTS:
-            kind = kind.format(unit=unit)
+            kind = kind.format(unit=unit) + (files.within if name == "UnobservedGaugeIds" else "")
             ids = fields.GetArray(name)
             for k in range(ids.GetNumberOfTuples() if ids else 0):
                 i = int(ids.GetValue(k))
@@ -2103,7 +2106,8 @@ def main(argv=None):
     progress = Progress("Thiessen areal means")
     progress_tag = average.AddObserver(vtkCommand.ProgressEvent, progress)
     started = time.time()
-    files = InputFiles(args.stations, gauge_lines, args.observations, record.lines, args.catchment, steps.noun)
+    files = InputFiles(args.stations, gauge_lines, args.observations, record.lines, args.catchment, steps.noun,
+                       record.period.given())
     messages = FilterMessages(average, files, progress)
     average.Update(1)
     summary = average.GetOutputDataObject(1)

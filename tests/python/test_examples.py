@@ -892,10 +892,20 @@ def test_start_and_end_choose_the_period():
                                   ({"end": "2001-01"}, [(2001, 1, 30), (2001, 1, 31)]),
                                   ({"start": "2001-01-31", "end": "2001-02-01"}, [(2001, 1, 31), (2001, 2, 1)])):
             out = os.path.join(directory, "daily_" + "_".join(options.values()))
-            run_colorado(out, stations=stations, observations=daily, catchment=catchment, plots=False,
-                         what=f"daily {options}", **options)
+            _, stderr = run_colorado(out, stations=stations, observations=daily, catchment=catchment, plots=False,
+                                     what=f"daily {options}", **options)
             got = [tuple(int(r[k]) for k in ("year", "month", "day")) for r in read_csv(os.path.join(out, "areal_mean.csv"))]
             assert_that(got == expected, f"daily {options}: the days {got}")
+            # Gauges whose values are all outside the period are said to have none within it.
+            unobserved = sorted(set(LAKE_GAUGES) - {s for day, values in days.items()
+                                                    if expected[0] <= day <= expected[-1] for s in values})
+            listed = [(u["station_id"], u["kind"]) for u in read_csv(os.path.join(out, "unused_inputs.csv"))
+                      if u["kind"].startswith("gauge without")]
+            assert_that(sorted(listed) == [(s, "gauge without any observed value within --start/--end")
+                                           for s in unobserved]
+                        and f"{len(unobserved)} gauge(s) have no observed value within --start/--end (no row, or only "
+                        f"missing values) and are never used: {', '.join(unobserved)}" in stderr,
+                        f"daily {options}: gauges unobserved within {listed} {stderr}")
             lines = outside_lines([u for u in read_csv(os.path.join(out, "unused_inputs.csv"))
                                    if u["kind"] == outside_kind])
             day_of_line = [day for day, values in days.items() for _ in values]  # (line k + 2)
