@@ -453,7 +453,7 @@ def hour_step(step):
     return (after.year, after.month, after.day, 0, *step[4:])
 
 
-def file_steps(rows, bounds, path, station_ids):
+def file_steps(rows, bounds, path, station_ids, sum_to=None):
     """The steps of an observations file (Steps), and the step of each one observation_step read
     (rows: scan_observations'; bounds: --start's and --end's period_bound). The steps are times of
     the day where the file has an hour column or a date with a time other than midnight: hours when
@@ -467,7 +467,8 @@ def file_steps(rows, bounds, path, station_ids):
     (00:00, or 24:00 for a day's end) are days, as a spreadsheet may export them: a day at 24:00 is
     the day it ends. Times all at one time of day over several days are said (daily values stamped
     with the hour they are read), and so are the times that make the steps finer than most times
-    are apart and gauges whose times keep to different steps (say_step_grids)."""
+    are apart and gauges whose times keep to different steps than the means' (say_step_grids; sum_to:
+    --sum-to's minutes, the means' steps where given)."""
     read, first = set(rows.step_index), rows.first
     if not (rows.hour_column or "hour" in first or "minute" in first):
         return Steps("month" if "month" in first or not first else "day"), {m: m[:3] for m in read}
@@ -484,7 +485,7 @@ def file_steps(rows, bounds, path, station_ids):
               "(a day read at that time), " + ("leave out the hour column" if rows.hour_column else
                                 "give the dates without the time (YYYY-MM-DD)") +
               f": they are read as {steps.noun}s", file=sys.stderr)
-    say_step_grids(rows, used, steps, path, station_ids)
+    say_step_grids(rows, used, steps, path, station_ids, sum_to)
     return steps, {m: step_at_grid(hour_step(m), minutes)[:steps.fields] for m in read}
 
 
@@ -516,7 +517,7 @@ def step_at_grid(time, minutes):
 PATTERN_TIMES = 8
 
 
-def say_step_grids(rows, used, steps, path, station_ids):
+def say_step_grids(rows, used, steps, path, station_ids, sum_to):
     """Names what made steps of minutes finer than the times mostly are, and the times off the
     steps' grid (used: used_times'; station_ids: the gauges' ids)."""
     if steps.minutes < 60:
@@ -526,7 +527,7 @@ def say_step_grids(rows, used, steps, path, station_ids):
         print(f"{path}: {len(unused)} time(s) of rows without a value, of no gauge's station or outside --start/--end "
               f"are not {at_multiples(steps.minutes)}, as the steps are, and are read at the step after them: "
               f"{times_and_lines(rows, unused)}", file=sys.stderr)
-    say_gauges_of_other_steps(used, steps, path, station_ids)
+    say_gauges_of_other_steps(used, sum_to or steps.minutes, path, station_ids)
 
 
 def say_few_times_off_a_grid(rows, used, steps, path):
@@ -541,9 +542,10 @@ def say_few_times_off_a_grid(rows, used, steps, path):
               f"are: {times_and_lines(rows, off)}; if they are mistyped, mend them", file=sys.stderr)
 
 
-def say_gauges_of_other_steps(used, steps, path, station_ids):
+def say_gauges_of_other_steps(used, minutes, path, station_ids):
     """Warns when gauges' times keep to different steps (each gauge of PATTERN_TIMES times or
-    more): their values may be totals over different lengths of time."""
+    more), some longer than the means' (minutes): their values may be totals over different
+    lengths of time."""
     grids, times = {}, collections.Counter()
     for m, gauges in used.items():
         for gauge in gauges:
@@ -553,13 +555,13 @@ def say_gauges_of_other_steps(used, steps, path, station_ids):
     for gauge in sorted(grids):
         if times[gauge] >= PATTERN_TIMES:
             by_grid.setdefault(grids[gauge], []).append(station_ids[gauge])
-    if len(by_grid) > 1:
+    if len(by_grid) > 1 and max(by_grid) > minutes:
         listed = "; ".join(f"{at_multiples(grid)} for {len(ids)} gauge(s) ({first_and_more(ids, str, 5)})"
                            for grid, ids in sorted(by_grid.items()))
-        print(f"{path}: the gauges' times keep to different steps: {listed}. The file is read {steps.described}, "
-              "and a gauge is taken as not reporting at a step without its row: where a gauge's values are totals "
-              "over its longer step, the means add totals of different lengths (sum the other gauges' values to "
-              "that step first)", file=sys.stderr)
+        print(f"{path}: the gauges' times keep to different steps: {listed}. The means are of {minutes}-minute "
+              "steps, and a gauge is taken as not reporting at a step without its row: where a gauge's values are totals "
+              "over its longer step, the means add totals of different lengths (--sum-to MINUTES sums every "
+              "gauge's values to steps of that length)", file=sys.stderr)
 
 
 def times_and_lines(rows, times):
@@ -682,11 +684,13 @@ MOST_STEPS = 2_000_000
 # observation of line lines[r]; the rows after them are the filler rows of steps without a row of
 # a gauge's station); a wide file's columns that are no gauge's station, not read, as (column
 # number, name); the observations outside --start/--end, in runs (rows_in_period); the Period.
-Observations = collections.namedtuple("Observations", "table steps reporting lines unmatched outside period")
+# read: the number of observations the file gave (more than the table's rows where --sum-to summed
+# them).
+Observations = collections.namedtuple("Observations", "table steps reporting lines unmatched outside period read")
 
 
 def read_observations(path, gauge_of, filler, stations_path, missing_values=(), station_ids=(), bounds=(None, None),
-                      bound_texts=(None, None)):
+                      bound_texts=(None, None), sum_to=None):
     """The observations of a long or a wide file (observation_records), as Observations. gauge_of:
     the gauge that a station's observations go to, by station_key() (ids are compared as the filter
     compares them; a step none of whose rows names a gauge's station is a step where no gauge
@@ -697,11 +701,15 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     would otherwise give months without a mean. bounds: --start's and --end's steps
     (period_bound's, or None), as bound_texts gives them: only the observations between them are
     in the table (the others are in Observations.outside), and the table's steps run from the one
-    to the other."""
+    to the other. sum_to: --sum-to's minutes, or None: each gauge's values are summed into steps of
+    that many minutes (sum_rows)."""
     from vtkmodules.vtkCommonDataModel import vtkTable
 
     rows = scan_observations(path, gauge_of, stations_path, station_ids, missing_values)
-    steps, step_of = file_steps(rows, bounds, path, station_ids)
+    steps, step_of = file_steps(rows, bounds, path, station_ids, sum_to)
+    if sum_to:
+        fine = (steps.minutes, step_of)  # (the file's steps, for sum_rows)
+        steps, step_of = summed_steps(steps, step_of, sum_to, path)
     rows.take_steps(step_of)
     period = Period(steps, *bounds, bound_texts, path)
     if rows.lines and not rows.present:
@@ -712,6 +720,9 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
                        f"{', '.join(there[:5])}{', ...' if len(there) > 5 else ''})")
     outside = keep_period(rows, period, steps, step_of, path, bound_texts) if period.given() else []
     say_odd_observations(rows, path, stations_path, missing_values, steps)
+    read = len(rows.lines)
+    if sum_to:
+        sum_rows(rows, steps, step_of, fine, path)
     # A step between the first and the last without a row of any gauge's station is a step where
     # no gauge reported: a row with a missing value (for a gauge's station: the filter makes no
     # step of a row naming a station no gauge has) keeps it a step of its own, so that
@@ -722,7 +733,84 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     table = vtkTable()
     for column in (rows.stations, times, rows.values):
         table.AddColumn(column)
-    return Observations(table, steps, rows.reporting, rows.lines, rows.unmatched, outside, period)
+    return Observations(table, steps, rows.reporting, rows.lines, rows.unmatched, outside, period, read)
+
+
+def summed_steps(steps, step_of, minutes, path):
+    """--sum-to's steps (minutes: a divisor of 60, 60 for hours) for a file of finer steps of
+    minutes (steps), and the step each time read (step_of: the file's steps of them) goes to: the
+    step that holds it (step_at_grid: 10:05 and 10:15 go to 10:15 in 15-minute steps); ends the
+    script, naming the file's steps, where they are not minutes of which minutes is a multiple."""
+    if steps.unit != "minute" or minutes % steps.minutes:
+        finer = [m for m in range(steps.minutes * 2, 61, steps.minutes) if 60 % m == 0]
+        csv_input.fail(f"--sum-to {minutes}: the observations of {path} are {steps.described}" + (
+            f": give a multiple of {steps.minutes} that divides 60 ({', '.join(map(str, finer))})"
+            if steps.unit == "minute" else " (--sum-to sums steps of minutes into longer ones)"))
+    summed = Steps("hour") if minutes == 60 else Steps("minute", minutes)
+    return summed, {m: step_at_grid(step, minutes)[:summed.fields] for m, step in step_of.items()}
+
+
+def sum_rows(rows, steps, step_of, fine, path):
+    """Sums the rows (ObservationRows, after keep_period) of each station and step (steps,
+    step_of: summed_steps') into one row with the first row's station id as written, line and
+    time: the sum of its values, missing where none has one (fine: the file's steps' minutes, and
+    the file's step of each time read). A row repeating a station and time of the file's steps is
+    left out, as the filter leaves one out (the earlier value is used); say_sums names those."""
+    from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
+
+    stations, values = vtkStringArray(), vtkDoubleArray()
+    stations.SetName(rows.stations.GetName())
+    values.SetName(rows.values.GetName())
+    lines, read, missing_kind = array.array("l"), array.array("l"), array.array("b")
+    times = list(rows.step_index)  # (by index)
+    # Each time read as the coarse step it goes to and its place within it (from 0: the step of
+    # the file that ends the coarse step), for the bits of a sum's filled places.
+    length, fine_of = datetime.timedelta(minutes=fine[0]), fine[1]
+    place = [(as_datetime(step_of[m]) - as_datetime(fine_of[m])) // length for m in times]
+    slot, filled, key_of = {}, [], {}  # (station key, step): its sum's row; the places summed
+    repeated, with_missing = [], set()
+    for r, k in enumerate(rows.read):
+        station = rows.stations.GetValue(r)
+        key = key_of.get(station) or key_of.setdefault(station, station_key(station))
+        at = slot.setdefault((key, step_of[times[k]]), len(slot))
+        if at == len(filled):
+            filled.append(0)
+            stations.InsertNextValue(station)
+            values.InsertNextValue(math.nan)
+            lines.append(rows.lines[r])
+            read.append(k)
+            missing_kind.append(rows.missing_kind[r])
+        bit = 1 << place[k]
+        if filled[at] & bit:
+            repeated.append(rows.lines[r])
+            continue
+        filled[at] |= bit
+        if rows.missing_kind[r]:
+            with_missing.add(at)
+            continue
+        value = rows.values.GetValue(r)
+        values.SetValue(at, value if math.isnan(values.GetValue(at)) else values.GetValue(at) + value)
+        missing_kind[at] = 0
+    say_sums(len(rows.lines), len(slot), repeated, sum(1 for at in with_missing if not missing_kind[at]), steps,
+             path)
+    rows.stations, rows.values, rows.lines, rows.read, rows.missing_kind = stations, values, lines, read, missing_kind
+
+
+def say_sums(count, sums, repeated, partial, steps, path):
+    """Says how many observations (count) sum_rows summed into how many sums, the lines of those
+    it left out as repeats, and how many sums (partial) left out a missing value."""
+    print(f"{path}: {count} observation(s) summed into {sums} total(s) of a station {steps.described} (--sum-to)",
+          file=sys.stderr)
+    if repeated:
+        print(f"{path}: {len(repeated)} observation(s) repeat a station and time of an earlier one and are left out "
+              f"of the sums (the earlier value is used): line(s) {first_and_more(repeated, str)}", file=sys.stderr)
+    if partial:
+        print(f"{path}: {partial} total(s) leave out a missing value and sum the others", file=sys.stderr)
+
+
+def as_datetime(step):
+    """A time step (year, month, day, hour, and a minute where given) as a datetime."""
+    return datetime.datetime(*step)
 
 
 class ObservationRows:
@@ -2004,6 +2092,12 @@ def main(argv=None):
                                                           "give steps of minutes, 'YYYY-MM-DD HH:MM' (or with a T; "
                                                           "may be given more than once; not with --month, --day or "
                                                           "--hour)")
+    parser.add_argument("--sum-to", type=int, metavar="MINUTES",
+                        help="sum each station's values of steps of minutes into steps of MINUTES minutes (a "
+                             "multiple of the observations' steps that divides 60; 60 gives hours), each the total "
+                             "of the minutes up to its time (a value at 10:05 goes to 10:15 with --sum-to 15), "
+                             "missing where none of its values is given: for gauges of 5-minute steps beside "
+                             "gauges of 15, or to average hours")
     parser.add_argument("--start", help="the first step to average: YYYY-MM, YYYY-MM-DD or 'YYYY-MM-DD HH:MM', no "
                                         "finer than the observations' steps (a month is its first day or hour with "
                                         "daily or hourly observations; default: the observations' first); "
@@ -2061,6 +2155,9 @@ def main(argv=None):
     each = args.each.strip() if args.each is not None else None
     if each is not None and not each:
         sys.exit("--each: expected the name of an attribute of the catchment's features, such as HUC8")
+    if args.sum_to is not None and (args.sum_to < 1 or 60 % args.sum_to):
+        sys.exit(f"--sum-to {args.sum_to}: expected a number of minutes that divides 60 (2, 3, 4, 5, 6, 10, 12, 15, "
+                 "20, 30 or 60)")
     asked = asked_steps(args)
     bounds = (period_bound(args.start, "--start"), period_bound(args.end, "--end"))
     check_period(*bounds, (args.start, args.end))
@@ -2083,7 +2180,7 @@ def main(argv=None):
         gauge_of.setdefault(station_key(station), i)
     record = read_observations(
         args.observations, gauge_of, min(station_ids, default=None), args.stations, set(args.missing_value),
-        station_ids, bounds, (args.start, args.end))
+        station_ids, bounds, (args.start, args.end), args.sum_to)
     observations, steps = record.table, record.steps
     for option, when in asked:
         if len(when) > steps.fields:
@@ -2097,7 +2194,7 @@ def main(argv=None):
     groups = polygon_groups(features_by_value(catchment, each, args.catchment), each,
                             args.catchment) if each is not None else None
     # (the observations file's rows: the table also has a row for each step without any)
-    print(f"read {gauges.GetNumberOfPoints()} gauges and {len(record.lines)} observations in "
+    print(f"read {gauges.GetNumberOfPoints()} gauges and {record.read} observations in "
           f"{time.time() - started:.1f} s", file=sys.stderr)
 
     average = areal_average(gauges, catchment, observations)

@@ -1372,7 +1372,7 @@ def test_times_off_the_steps_and_gauges_of_other_steps_are_named():
         fives = quarter_hours(("N1", "N2", "N3"), 36, step=5)
         _, stderr, _ = run("mixed", header + fives + quarter_hours(("N4", "N5"), 12), "5 and 15 minutes")
         assert_that("the gauges' times keep to different steps: at multiples of 5 minutes for 3 gauge(s) (N1, N2, "
-                    "N3); at multiples of 15 minutes for 2 gauge(s) (N4, N5). The file is read in 5-minute steps"
+                    "N3); at multiples of 15 minutes for 2 gauge(s) (N4, N5). The means are of 5-minute steps"
                     in stderr, f"5 and 15 minutes: {stderr}")
         _, stderr, _ = run("few", header + fives + quarter_hours(("N4", "N5"), 4), "15 minutes four times")
         assert_that("keep to different steps" not in stderr and "because of" not in stderr, f"four times: {stderr}")
@@ -1382,6 +1382,71 @@ def test_times_off_the_steps_and_gauges_of_other_steps_are_named():
             (header + quarters, {"minute": "2001-03-01 10:07"},
              "--minute 2001-03-01 10:07: the observations of " + os.path.join(directory, "bad.csv") +
              " are in 15-minute steps: give a time whose minute is a multiple of 15")])
+
+
+def test_sum_to_sums_each_gauges_values_into_longer_steps():
+    # Gauges of 5-minute steps beside gauges of 15, summed with --sum-to 15 (and 60), give the means
+    # of a file of those sums written by hand: each 15-minute step the total of the values up to its
+    # time (10:05, 10:10 and 10:15 go to 10:15); a missing value is left out of its sum (named), a
+    # step whose values are all missing is missing, and a repeated station and time is left out
+    # (the earlier value is used, as the filter does) and named. Bad --sum-to values are named.
+    import datetime
+
+    start = datetime.datetime(2001, 3, 1, 10, 0)
+    values = {}  # (station, time): value, None for missing
+    for k in range(36):
+        for n, station in enumerate(("N1", "N2", "N3")):
+            values[(station, start + datetime.timedelta(minutes=5 * k))] = (k * (n + 2)) % 7 * 0.25
+    for k in range(12):
+        for n, station in enumerate(("N4", "N5")):
+            values[(station, start + datetime.timedelta(minutes=15 * k))] = (k + n) % 4 + 0.5
+    values[("N1", start + datetime.timedelta(minutes=5))] = None
+    values[("N4", start + datetime.timedelta(minutes=30))] = None
+    text = "station_id,date,precip\n" + "".join(
+        f"{s},{t:%Y-%m-%d %H:%M},{'NA' if v is None else v}\n" for (s, t), v in values.items())
+    text += f"N2,{start + datetime.timedelta(minutes=10):%Y-%m-%d %H:%M},99\n"  # (a repeat, left out)
+    repeat_line = len(text.splitlines())
+
+    def by_hand(minutes):
+        sums = {}
+        for (s, t), v in values.items():
+            end = t + datetime.timedelta(minutes=(minutes - t.minute % minutes) % minutes)
+            sums.setdefault((s, end), [])
+            if v is not None:
+                sums[(s, end)].append(v)
+        return "station_id,date,precip\n" + "".join(
+            f"{s},{t:%Y-%m-%d %H:%M},{sum(v) if v else 'NA'}\n" for (s, t), v in sorted(sums.items(), key=lambda e: e[0][1]))
+
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, _ = write_lake_basin(directory)
+        mixed = write(directory, "mixed.csv", text)
+        for minutes, name in ((15, "minutes"), (60, "hours")):
+            got, expected = os.path.join(directory, f"sum_{minutes}"), os.path.join(directory, f"hand_{minutes}")
+            stdout, stderr = run_colorado(got, stations=stations, observations=mixed, catchment=catchment, plots=False,
+                                          what=f"--sum-to {minutes}", **{"sum-to": str(minutes)})
+            run_colorado(expected, stations=stations, observations=write(directory, f"hand_{minutes}.csv",
+                                                                         by_hand(minutes)),
+                         catchment=catchment, plots=False, what=f"sums by hand of {minutes} minutes")
+            for file in ("areal_mean.csv", f"weights_all_{name}.csv"):
+                with open(os.path.join(got, file)) as a, open(os.path.join(expected, file)) as b:
+                    assert_that(a.read() == b.read(), f"--sum-to {minutes}: {file} differs from the sums by hand")
+            means = read_csv(os.path.join(got, "areal_mean.csv"))
+            assert_that(len(means) == (13 if minutes == 15 else 4) and all(m["areal_mean"] for m in means),
+                        f"--sum-to {minutes}: {means}")
+            assert_that(f"{len(values) + 1} observation(s) summed into " in stderr
+                        and f"1 observation(s) repeat a station and time of an earlier one and are left out of the "
+                        f"sums (the earlier value is used): line(s) {repeat_line}" in stderr
+                        and "keep to different steps" not in stderr
+                        and f"read 6 gauges and {len(values) + 1} observations" in stderr, f"{minutes}: {stderr}")
+            # (N1's 10:05 is missing beside values; N4's 10:30 is alone in its quarter, not in its hour)
+            assert_that(f"{1 if minutes == 15 else 2} total(s) leave out a missing value" in stderr,
+                        f"{minutes}: {stderr}")
+        quarters = "station_id,date,precip\n" + quarter_hours(("N1", "N2"), 8)
+        assert_observations_refused(directory, stations, catchment, [
+            (quarters, {"sum-to": "7"}, "--sum-to 7: expected a number of minutes that divides 60"),
+            (quarters, {"sum-to": "10"}, "are in 15-minute steps: give a multiple of 15 that divides 60 (30, 60)"),
+            ("station_id,year,month,precip\nN1,2001,3,1\n", {"sum-to": "60"},
+             "are monthly (--sum-to sums steps of minutes into longer ones)")])
 
 
 def test_the_field_separator_and_the_decimal_mark():
@@ -2298,6 +2363,7 @@ if __name__ == "__main__":
          test_daily_observations_give_daily_means,
          test_hourly_observations_give_hourly_means, test_observations_of_minutes_give_a_mean_each_step,
          test_times_off_the_steps_and_gauges_of_other_steps_are_named,
+         test_sum_to_sums_each_gauges_values_into_longer_steps,
          test_start_and_end_choose_the_period,
          test_a_wide_file_of_a_column_per_station_gives_the_long_files_means,
          test_an_earlier_runs_files_in_out_are_named,
