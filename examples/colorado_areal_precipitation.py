@@ -754,8 +754,10 @@ def sum_rows(rows, steps, step_of, fine, path):
     """Sums the rows (ObservationRows, after keep_period) of each station and step (steps,
     step_of: summed_steps') into one row with the first row's station id as written, line and
     time: the sum of its values, missing where none has one (fine: the file's steps' minutes, and
-    the file's step of each time read). A row repeating a station and time of the file's steps is
-    left out, as the filter leaves one out (the earlier value is used); say_sums names those."""
+    the file's step of each time read). A row repeating a station and time of the file's steps
+    where an earlier row has a value is left out, as the filter leaves one out (the earlier value
+    is used); say_sums names those, and counts the sums without a value for a time whose rows are
+    all missing."""
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
 
     stations, values = vtkStringArray(), vtkDoubleArray()
@@ -767,32 +769,34 @@ def sum_rows(rows, steps, step_of, fine, path):
     # the file that ends the coarse step), for the bits of a sum's filled places.
     length, fine_of = datetime.timedelta(minutes=fine[0]), fine[1]
     place = [(as_datetime(step_of[m]) - as_datetime(fine_of[m])) // length for m in times]
-    slot, filled, key_of = {}, [], {}  # (station key, step): its sum's row; the places summed
-    repeated, with_missing = [], set()
+    slot, key_of = {}, {}  # (station key, step): its sum's row
+    filled, gaps = [], []  # per sum, the bits of its places with a value, and with a missing one
+    repeated = []
     for r, k in enumerate(rows.read):
         station = rows.stations.GetValue(r)
         key = key_of.get(station) or key_of.setdefault(station, station_key(station))
         at = slot.setdefault((key, step_of[times[k]]), len(slot))
         if at == len(filled):
             filled.append(0)
+            gaps.append(0)
             stations.InsertNextValue(station)
             values.InsertNextValue(math.nan)
             lines.append(rows.lines[r])
             read.append(k)
             missing_kind.append(rows.missing_kind[r])
         bit = 1 << place[k]
-        if filled[at] & bit:
-            repeated.append(rows.lines[r])
+        if rows.missing_kind[r] or filled[at] & bit:
+            if rows.missing_kind[r]:
+                gaps[at] |= bit
+            else:
+                repeated.append(rows.lines[r])
             continue
         filled[at] |= bit
-        if rows.missing_kind[r]:
-            with_missing.add(at)
-            continue
         value = rows.values.GetValue(r)
         values.SetValue(at, value if math.isnan(values.GetValue(at)) else values.GetValue(at) + value)
         missing_kind[at] = 0
-    say_sums(len(rows.lines), len(slot), repeated, sum(1 for at in with_missing if not missing_kind[at]), steps,
-             path)
+    partial = sum(1 for have, lack in zip(filled, gaps) if have and lack & ~have)
+    say_sums(len(rows.lines), len(slot), repeated, partial, steps, path)
     rows.stations, rows.values, rows.lines, rows.read, rows.missing_kind = stations, values, lines, read, missing_kind
 
 

@@ -1402,7 +1402,8 @@ def test_sum_to_sums_each_gauges_values_into_longer_steps():
             values[(station, start + datetime.timedelta(minutes=15 * k))] = (k + n) % 4 + 0.5
     values[("N1", start + datetime.timedelta(minutes=5))] = None
     values[("N4", start + datetime.timedelta(minutes=30))] = None
-    text = "station_id,date,precip\n" + "".join(
+    # (N3 at 10:20 missing, then its value: a value after a missing one is no repeat, and used)
+    text = f"station_id,date,precip\nN3,{start + datetime.timedelta(minutes=20):%Y-%m-%d %H:%M},NA\n" + "".join(
         f"{s},{t:%Y-%m-%d %H:%M},{'NA' if v is None else v}\n" for (s, t), v in values.items())
     text += f"N2,{start + datetime.timedelta(minutes=10):%Y-%m-%d %H:%M},99\n"  # (a repeat, left out)
     repeat_line = len(text.splitlines())
@@ -1433,12 +1434,13 @@ def test_sum_to_sums_each_gauges_values_into_longer_steps():
             means = read_csv(os.path.join(got, "areal_mean.csv"))
             assert_that(len(means) == (13 if minutes == 15 else 4) and all(m["areal_mean"] for m in means),
                         f"--sum-to {minutes}: {means}")
-            assert_that(f"{len(values) + 1} observation(s) summed into " in stderr
+            assert_that(f"{len(values) + 2} observation(s) summed into " in stderr
                         and f"1 observation(s) repeat a station and time of an earlier one and are left out of the "
                         f"sums (the earlier value is used): line(s) {repeat_line}" in stderr
                         and "keep to different steps" not in stderr
-                        and f"read 6 gauges and {len(values) + 1} observations" in stderr, f"{minutes}: {stderr}")
-            # (N1's 10:05 is missing beside values; N4's 10:30 is alone in its quarter, not in its hour)
+                        and f"read 6 gauges and {len(values) + 2} observations" in stderr, f"{minutes}: {stderr}")
+            # (N1's 10:05 is missing beside values; N4's 10:30 is alone in its quarter, not in its hour;
+            # N3's 10:20 has its value too)
             assert_that(f"{1 if minutes == 15 else 2} total(s) leave out a missing value" in stderr,
                         f"{minutes}: {stderr}")
         quarters = "station_id,date,precip\n" + quarter_hours(("N1", "N2"), 8)
