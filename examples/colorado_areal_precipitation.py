@@ -65,6 +65,10 @@ column beside the hour) make a step some minutes long: the most minutes that div
 time's minute (15 for times at :00, :15, :30 and :45), each step labelled by its time as hours
 are; a minute column (year,month,day,hour,minute,...), weights_all_minutes.csv, --minute
 'YYYY-MM-DD HH:MM' (files named YYYY_MM_DD_HH_MM), every step from the first to the last.
+Only gauges' values within --start/--end set the step; the times that make it finer than most
+are apart, and gauges of different steps (5 minutes beside 15), are named. --sum-to MINUTES
+sums each station's values into steps of that many minutes first (60: hours, with hour columns
+and weights_all_hours.csv), such as 5-minute records into quarter hours or hours.
 Observations may also be wide: a row per time (date, or year and month, with day, hour and minute
 as above) and a column per station named by its station_id (date,050109,050114,...), without
 station_id and precip columns; a column that names no gauge's station is named and not read.
