@@ -65,8 +65,8 @@ column beside the hour) make a step some minutes long: the most minutes that div
 time's minute (15 for times at :00, :15, :30 and :45), each step labelled by its time as hours
 are; a minute column (year,month,day,hour,minute,...), weights_all_minutes.csv, --minute
 'YYYY-MM-DD HH:MM' (files named YYYY_MM_DD_HH_MM), every step from the first to the last.
-Only gauges' values within --start/--end set the step; the times that make it finer than most
-are apart, and gauges of different steps (5 minutes beside 15), are named. --sum-to MINUTES
+Only gauges' values set the step; the times that make it finer than most are apart, and gauges
+of different steps (5 minutes beside 15), are named. --sum-to MINUTES
 sums each station's values into steps of that many minutes first (60: hours, with hour columns
 and weights_all_hours.csv), such as 5-minute records into quarter hours or hours.
 Observations may also be wide: a row per time (date, or year and month, with day, hour and minute
@@ -457,29 +457,29 @@ def hour_step(step):
     return (after.year, after.month, after.day, 0, *step[4:])
 
 
-def file_steps(rows, bounds, path, station_ids, sum_to=None):
+def file_steps(rows, path, station_ids, sum_to=None):
     """The steps of an observations file (Steps), and the step of each one observation_step read
-    (rows: scan_observations'; bounds: --start's and --end's period_bound). The steps are times of
-    the day where the file has an hour column or a date with a time other than midnight: hours when
-    every time used is on the hour, else steps of the largest number of minutes that divides 60 and
-    every used time's minute (15 for times at :00, :15, :30 and :45), each step the total of the
-    minutes up to its time, as tipping-bucket and logger records give them. A time is used where a
-    gauge's station has a value then within --start/--end (used_times): a row without a value, of
-    no gauge's station or outside the period does not make the steps finer, and goes to the step
-    that ends after its time (step_at_grid). Hour 24 (24:00) is hour 0 of the next day, as
-    hour-ending records write a day's last hour, which is said. Dates with times all at midnight
-    (00:00, or 24:00 for a day's end) are days, as a spreadsheet may export them: a day at 24:00 is
-    the day it ends. Times all at one time of day over several days are said (daily values stamped
-    with the hour they are read), and so are the times that make the steps finer than most times
-    are apart and gauges whose times keep to different steps than the means' (say_step_grids; sum_to:
-    --sum-to's minutes, the means' steps where given)."""
+    (rows: scan_observations'). The steps are times of the day where the file has an hour column
+    or a date with a time other than midnight: hours when every time used is on the hour, else
+    steps of the largest number of minutes that divides 60 and every used time's minute (15 for
+    times at :00, :15, :30 and :45), each step the total of the minutes up to its time, as
+    tipping-bucket and logger records give them. A time is used where a gauge's station has a
+    value then (rows.reporting; --start/--end aside, as the period is one of the steps made of the
+    times): a row without a value or of no gauge's station does not make the steps finer, and goes
+    to the step that ends after its time (step_at_grid). Hour 24 (24:00) is hour 0 of the next
+    day, as hour-ending records write a day's last hour, which is said. Dates with times all at
+    midnight (00:00, or 24:00 for a day's end) are days, as a spreadsheet may export them: a day
+    at 24:00 is the day it ends. Times all at one time of day over several days are said (daily
+    values stamped with the hour they are read), and so are the times that make the steps finer
+    than most times are apart and gauges whose times keep to different steps than the means'
+    (say_step_grids; sum_to: --sum-to's minutes, the means' steps where given)."""
     read, first = set(rows.step_index), rows.first
     if not (rows.hour_column or "hour" in first or "minute" in first):
         return Steps("month" if "month" in first or not first else "day"), {m: m[:3] for m in read}
     if rows.at_24:
         print(f"{path}: {rows.at_24} observation(s) at hour 24 (the end of a day) are read as hour 0 of the next day",
               file=sys.stderr)
-    used = used_times(rows.reporting, bounds) or dict.fromkeys(read, set())
+    used = rows.reporting or dict.fromkeys(read, set())
     minutes = math.gcd(60, *(m[4] for m in used))
     steps = Steps("hour") if minutes == 60 else Steps("minute", minutes)
     if len({m[3:] for m in read}) == 1 and len({m[:3] for m in read}) > 1:
@@ -491,14 +491,6 @@ def file_steps(rows, bounds, path, station_ids, sum_to=None):
               f": they are read as {steps.noun}s", file=sys.stderr)
     say_step_grids(rows, used, steps, path, station_ids, sum_to)
     return steps, {m: step_at_grid(hour_step(m), minutes)[:steps.fields] for m in read}
-
-
-def used_times(reporting, bounds):
-    """The times (observation_step's) at which a gauge's station has a value within --start/--end
-    (bounds: period_bound's, or None), each with those gauges (reporting: ObservationRows')."""
-    start, end = (widened(bound, 5, last) if bound else None for bound, last in zip(bounds, (False, True)))
-    return {m: gauges for m, gauges in reporting.items()
-            if (start is None or start <= hour_step(m)) and (end is None or hour_step(m) <= end)}
 
 
 def step_at_grid(time, minutes):
@@ -523,27 +515,31 @@ PATTERN_TIMES = 8
 
 def say_step_grids(rows, used, steps, path, station_ids, sum_to):
     """Names what made steps of minutes finer than the times mostly are, and the times off the
-    steps' grid (used: used_times'; station_ids: the gauges' ids)."""
-    if steps.minutes < 60:
-        say_few_times_off_a_grid(rows, used, steps, path)
+    steps' grid (used: the times with a gauge's value, and those gauges; station_ids: the gauges'
+    ids; sum_to: --sum-to's minutes, or None)."""
+    off = say_few_times_off_a_grid(rows, used, steps, path) if steps.minutes < 60 else ()
     unused = sorted(m for m in rows.step_index if m not in used and m[4] % steps.minutes)
     if unused:
-        print(f"{path}: {len(unused)} time(s) of rows without a value, of no gauge's station or outside --start/--end "
-              f"are not {at_multiples(steps.minutes)}, as the steps are, and are read at the step after them: "
-              f"{times_and_lines(rows, unused)}", file=sys.stderr)
-    say_gauges_of_other_steps(used, sum_to or steps.minutes, path, station_ids)
+        print(f"{path}: {len(unused)} time(s) of rows without a value or of no gauge's station are not "
+              f"{at_multiples(steps.minutes)}, as the steps are, and are read at the step after them: "
+              f"{times_and_lines(rows, unused, rows.first_line)}", file=sys.stderr)
+    say_gauges_of_other_steps({m: gauges for m, gauges in used.items() if m not in off}, sum_to or steps.minutes,
+                              path, station_ids)
 
 
 def say_few_times_off_a_grid(rows, used, steps, path):
     """Names the few used times off the grid of all the others (at most 1 in 100, or 1), where a
-    mistyped :07 among quarter hours makes 1-minute steps."""
+    mistyped :07 among quarter hours makes 1-minute steps, each by the line of its first value;
+    returns them (a set)."""
     coarser = [d for d in range(60, steps.minutes, -1) if 60 % d == 0 and d % steps.minutes == 0]
     grid = next((d for d in coarser if len(used) - PATTERN_TIMES >= sum(1 for m in used if m[4] % d)
                  <= max(1, len(used) // 100)), None)
-    if grid:
-        off = sorted(m for m in used if m[4] % grid)
-        print(f"{path}: read {steps.described} because of {len(off)} time(s) not {at_multiples(grid)} as the others "
-              f"are: {times_and_lines(rows, off)}; if they are mistyped, mend them", file=sys.stderr)
+    if not grid:
+        return set()
+    off = sorted(m for m in used if m[4] % grid)
+    print(f"{path}: read {steps.described} because of {len(off)} time(s) not {at_multiples(grid)} as the others "
+          f"are: {times_and_lines(rows, off, rows.valued_line)}; if they are mistyped, mend them", file=sys.stderr)
+    return set(off)
 
 
 def say_gauges_of_other_steps(used, minutes, path, station_ids):
@@ -562,26 +558,22 @@ def say_gauges_of_other_steps(used, minutes, path, station_ids):
     if len(by_grid) > 1 and max(by_grid) > minutes:
         listed = "; ".join(f"{at_multiples(grid)} for {len(ids)} gauge(s) ({first_and_more(ids, str, 5)})"
                            for grid, ids in sorted(by_grid.items()))
+        longest = max(by_grid)
         print(f"{path}: the gauges' times keep to different steps: {listed}. The means are of {minutes}-minute "
-              "steps, and a gauge is taken as not reporting at a step without its row: where a gauge's values are totals "
-              "over its longer step, the means add totals of different lengths (--sum-to MINUTES sums every "
-              "gauge's values to steps of that length)", file=sys.stderr)
+              "steps, and a gauge is taken as not reporting at a step without its row: where a gauge's values are "
+              "totals over its longer step, the means add totals of different lengths (--sum-to "
+              f"{longest} sums every gauge's values to steps of {longest} minutes)", file=sys.stderr)
 
 
-def times_and_lines(rows, times):
-    """'line 62 (2001-03-01 10:07), ...': each time (observation_step's) with its first row's line."""
-    return first_and_more(times, lambda m: f"line {first_line(rows, m)} ({Steps.of(m).text(m)})")
+def times_and_lines(rows, times, line_of):
+    """'line 62 (2001-03-01 10:07), ...': each time (observation_step's) with its line (line_of:
+    rows.first_line or rows.valued_line)."""
+    return first_and_more(times, lambda m: f"line {line_of[m]} ({Steps.of(m).text(m)})")
 
 
 def at_multiples(minutes):
     """Where the times of steps of minutes fall: 'on the hour', 'at multiples of 15 minutes'."""
-    return "on the hour" if minutes == 60 else f"at multiples of {minutes} minutes"
-
-
-def first_line(rows, time):
-    """The file's line of the first row at time (a step as observation_step read it)."""
-    index = rows.step_index[time]
-    return rows.lines[rows.read.index(index)]
+    return "on the hour" if minutes == 60 else "at any minute" if minutes == 1 else f"at multiples of {minutes} minutes"
 
 
 TIME_COLUMNS = ("year", "month", "day", "hour", "minute", "date", "time")  # (observation_step's)
@@ -690,7 +682,9 @@ MOST_STEPS = 2_000_000
 # number, name); the observations outside --start/--end, in runs (rows_in_period); the Period.
 # read: the number of observations the file gave (more than the table's rows where --sum-to summed
 # them).
-Observations = collections.namedtuple("Observations", "table steps reporting lines unmatched outside period read")
+# summed_repeats: the rows --sum-to left out as repeats (sum_rows').
+Observations = collections.namedtuple("Observations",
+                                      "table steps reporting lines unmatched outside period read summed_repeats")
 
 
 def read_observations(path, gauge_of, filler, stations_path, missing_values=(), station_ids=(), bounds=(None, None),
@@ -710,7 +704,7 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     from vtkmodules.vtkCommonDataModel import vtkTable
 
     rows = scan_observations(path, gauge_of, stations_path, station_ids, missing_values)
-    steps, step_of = file_steps(rows, bounds, path, station_ids, sum_to)
+    steps, step_of = file_steps(rows, path, station_ids, sum_to)
     if sum_to:
         fine = (steps.minutes, step_of)  # (the file's steps, for sum_rows)
         steps, step_of = summed_steps(steps, step_of, sum_to, path)
@@ -737,14 +731,18 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     table = vtkTable()
     for column in (rows.stations, times, rows.values):
         table.AddColumn(column)
-    return Observations(table, steps, rows.reporting, rows.lines, rows.unmatched, outside, period, read)
+    return Observations(table, steps, rows.reporting, rows.lines, rows.unmatched, outside, period, read,
+                        rows.summed_repeats)
 
 
 def summed_steps(steps, step_of, minutes, path):
     """--sum-to's steps (minutes: a divisor of 60, 60 for hours) for a file of finer steps of
     minutes (steps), and the step each time read (step_of: the file's steps of them) goes to: the
     step that holds it (step_at_grid: 10:05 and 10:15 go to 10:15 in 15-minute steps); ends the
-    script, naming the file's steps, where they are not minutes of which minutes is a multiple."""
+    script, naming the file's steps, where they are not minutes of which minutes is a multiple
+    (or hours, for 60)."""
+    if steps.unit == "hour" and minutes == 60:
+        return steps, step_of
     if steps.unit != "minute" or minutes % steps.minutes:
         finer = [m for m in range(steps.minutes * 2, 61, steps.minutes) if 60 % m == 0]
         csv_input.fail(f"--sum-to {minutes}: the observations of {path} are {steps.described}" + (
@@ -760,8 +758,9 @@ def sum_rows(rows, steps, step_of, fine, path):
     time: the sum of its values, missing where none has one (fine: the file's steps' minutes, and
     the file's step of each time read). A row repeating a station and time of the file's steps
     where an earlier row has a value is left out, as the filter leaves one out (the earlier value
-    is used); say_sums names those, and counts the sums without a value for a time whose rows are
-    all missing."""
+    is used), and kept in rows.summed_repeats as (line, the earlier row's line, station id);
+    say_sums names those, counts the sums without a value for a time whose rows are all missing,
+    and names a first or last step that holds only part of its minutes."""
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
 
     stations, values = vtkStringArray(), vtkDoubleArray()
@@ -769,49 +768,87 @@ def sum_rows(rows, steps, step_of, fine, path):
     values.SetName(rows.values.GetName())
     lines, read, missing_kind = array.array("l"), array.array("l"), array.array("b")
     times = list(rows.step_index)  # (by index)
-    # Each time read as the coarse step it goes to and its place within it (from 0: the step of
-    # the file that ends the coarse step), for the bits of a sum's filled places.
+    # Each time read as its place within the step it goes to (from 0: the step of the file that
+    # ends the summed step), for the bits of a sum's places.
     length, fine_of = datetime.timedelta(minutes=fine[0]), fine[1]
     place = [(as_datetime(step_of[m]) - as_datetime(fine_of[m])) // length for m in times]
-    slot, key_of = {}, {}  # (station key, step): its sum's row
     filled, gaps = [], []  # per sum, the bits of its places with a value, and with a missing one
-    repeated = []
-    for r, k in enumerate(rows.read):
-        station = rows.stations.GetValue(r)
-        key = key_of.get(station) or key_of.setdefault(station, station_key(station))
-        at = slot.setdefault((key, step_of[times[k]]), len(slot))
+    repeated, valued = [], set()  # (row, sum, bit) of the repeats; the step indices with a value
+    for r, at, bit in sum_places(rows, step_of, place):
         if at == len(filled):
             filled.append(0)
             gaps.append(0)
-            stations.InsertNextValue(station)
+            stations.InsertNextValue(rows.stations.GetValue(r))
             values.InsertNextValue(math.nan)
             lines.append(rows.lines[r])
-            read.append(k)
+            read.append(rows.read[r])
             missing_kind.append(rows.missing_kind[r])
-        bit = 1 << place[k]
-        if rows.missing_kind[r] or filled[at] & bit:
-            if rows.missing_kind[r]:
-                gaps[at] |= bit
-            else:
-                repeated.append(rows.lines[r])
+        if rows.missing_kind[r]:
+            gaps[at] |= bit
+            continue
+        if filled[at] & bit:
+            repeated.append((r, at, bit))
             continue
         filled[at] |= bit
+        valued.add(rows.read[r])
         value = rows.values.GetValue(r)
         values.SetValue(at, value if math.isnan(values.GetValue(at)) else values.GetValue(at) + value)
         missing_kind[at] = 0
+    rows.summed_repeats = earlier_lines(rows, step_of, place, repeated)
     partial = sum(1 for have, lack in zip(filled, gaps) if have and lack & ~have)
-    say_sums(len(rows.lines), len(slot), repeated, partial, steps, path)
+    say_sums(len(rows.lines), len(filled), rows.summed_repeats, partial, steps, path)
+    if valued:
+        say_partial_ends(sorted(fine_of[times[k]] for k in valued), steps, fine[0], path)
     rows.stations, rows.values, rows.lines, rows.read, rows.missing_kind = stations, values, lines, read, missing_kind
+
+
+def sum_places(rows, step_of, place):
+    """Yields (row, the index of its sum, its place's bit) for each of the rows (sum_rows'): a sum
+    per station (station_key) and step (step_of), numbered as they first come."""
+    times = list(rows.step_index)  # (by index)
+    slot, key_of = {}, {}
+    for r, k in enumerate(rows.read):
+        station = rows.stations.GetValue(r)
+        key = key_of.get(station) or key_of.setdefault(station, station_key(station))
+        yield r, slot.setdefault((key, step_of[times[k]]), len(slot)), 1 << place[k]
+
+
+def earlier_lines(rows, step_of, place, repeated):
+    """(line, the line of the first row with a value of its station and time, station id) for each
+    repeated row (sum_rows' (row, sum, bit))."""
+    earlier = dict.fromkeys(((at, bit) for _, at, bit in repeated), None)
+    for r, at, bit in sum_places(rows, step_of, place) if repeated else ():
+        if earlier.get((at, bit), 0) is None and not rows.missing_kind[r]:
+            earlier[(at, bit)] = rows.lines[r]
+    return [(rows.lines[r], earlier[(at, bit)], rows.stations.GetValue(r)) for r, at, bit in repeated]
+
+
+def say_partial_ends(fine_times, steps, fine_minutes, path):
+    """Names the first summed step when the first time with a value (fine_times: the file's steps
+    with a value, in order) is after its step's first minutes, and the last when the last is
+    before its end: a record that starts or ends there gives them only part of their minutes."""
+    first, last = fine_times[0], fine_times[-1]
+    first_step, last_step = (step_at_grid(t, steps.minutes)[:steps.fields] if len(t) == 5 else t
+                             for t in (first, last))
+    span = datetime.timedelta(minutes=steps.minutes - fine_minutes)
+    if as_datetime(first) > as_datetime(first_step) - span:
+        print(f"{path}: the first {steps.noun} ({steps.text(first_step)}) sums the values from "
+              f"{Steps.of(first).text(first)} on: part of its minutes, if the record starts there", file=sys.stderr)
+    if as_datetime(last) < as_datetime(last_step):
+        print(f"{path}: the last {steps.noun} ({steps.text(last_step)}) sums the values up to "
+              f"{Steps.of(last).text(last)}: part of its minutes, if the record ends there", file=sys.stderr)
 
 
 def say_sums(count, sums, repeated, partial, steps, path):
     """Says how many observations (count) sum_rows summed into how many sums, the lines of those
-    it left out as repeats, and how many sums (partial) left out a missing value."""
+    it left out as repeats (repeated: sum_rows' summed_repeats), and how many sums (partial) left
+    out a missing value."""
     print(f"{path}: {count} observation(s) summed into {sums} total(s) of a station {steps.described} (--sum-to)",
           file=sys.stderr)
     if repeated:
         print(f"{path}: {len(repeated)} observation(s) repeat a station and time of an earlier one and are left out "
-              f"of the sums (the earlier value is used): line(s) {first_and_more(repeated, str)}", file=sys.stderr)
+              "of the sums (the earlier value is used; unused_inputs.csv lists them): line(s) "
+              f"{first_and_more(repeated, lambda repeat: f'{repeat[0]} (as line {repeat[1]})')}", file=sys.stderr)
     if partial:
         print(f"{path}: {partial} total(s) leave out a missing value and sum the others", file=sys.stderr)
 
@@ -839,6 +876,7 @@ class ObservationRows:
         self.read = array.array("l")  # the index of each row's step in step_index
         self.missing_kind = array.array("b")
         self.step_index = {}  # each step read, by first appearance
+        self.first_line, self.valued_line = {}, {}  # each step's first line, and first with a gauge's value
         self.negative = []  # (row, line) of the negative values
         self.present = set()  # the step of every row of a gauge's station
         self.reporting = {}  # step: the gauges with a value then
@@ -849,6 +887,7 @@ class ObservationRows:
         self.unmatched = []  # a wide file's columns that are no gauge's station
         self.gaps = []  # (row, how many) of a wide file's cells without a value, not made rows
         self.repeats = []  # (row, line, the earlier line) of a wide file's rows repeating an earlier row's time
+        self.summed_repeats = []  # (sum_rows')
 
     def take_steps(self, step_of):
         """The steps read made the file's steps (file_steps' step_of)."""
@@ -882,6 +921,7 @@ def scan_observations(path, gauge_of, stations_path, station_ids, missing_values
     index_of = {}  # each time as written (its time fields): its step's index in step_index
     gauge_by_id = {}  # each station id as written: its gauge, None for no gauge's station
     present, reporting = set(), {}  # (by step index: ObservationRows' present and reporting)
+    first_line, valued_line = [], {}  # (by step index: ObservationRows' first_line and valued_line)
     for line, row, station, column in observation_records(path, gauge_of, stations_path, station_ids, rows.unmatched,
                                                           rows.gaps, rows.repeats):
         rows.lines.append(line)
@@ -891,6 +931,8 @@ def scan_observations(path, gauge_of, stations_path, station_ids, missing_values
         index = index_of.get(written)
         if index is None:
             index = index_of[written] = new_step(rows, row, path, line)
+            if index == len(first_line):
+                first_line.append(line)
         rows.read.append(index)
         if station in gauge_by_id:
             gauge = gauge_by_id[station]
@@ -912,11 +954,15 @@ def scan_observations(path, gauge_of, stations_path, station_ids, missing_values
             if value < 0:
                 rows.negative.append((len(rows.lines) - 1, line if column == "precip" else f"{line} ({column})"))
             if gauge is not None:
+                if index not in reporting:
+                    valued_line[index] = line
                 reporting.setdefault(index, set()).add(gauge)
         rows.stations.InsertNextValue(station)
         rows.values.InsertNextValue(value)
     steps = list(rows.step_index)  # (by index)
     rows.present = {steps[k] for k in present}
+    rows.first_line = dict(zip(steps, first_line))
+    rows.valued_line = {steps[k]: line for k, line in valued_line.items()}
     # (one frozenset for each set of gauges: most steps of a year of 5-minute steps have the same
     # gauges, and 105,120 sets of 20 gauges took 137 MB)
     alike = {}
@@ -1613,6 +1659,7 @@ def write_summary(table, steps, path):
 # gives them: (array, what it lists ({unit}: month or day), whether it lists observation rows
 # rather than gauges).
 OUTSIDE_PERIOD = "observation before --start or after --end"
+SUMMED_REPEAT = "observation repeating the station and time of an earlier one with a value (left out of --sum-to's sum)"
 UNUSED_LISTS = (
     ("UnobservedGaugeIds", "gauge without any observed value", False),
     ("UnweightedGaugeIds", "gauge whose tile never reaches the catchment", False),
@@ -1720,7 +1767,8 @@ def write_means_by_feature(features, name, gauges, observations, steps, whole, c
               file=sys.stderr)
 
 
-def write_unused(summary, files, station_ids, observations, unit, path, unmatched_columns=(), outside=()):
+def write_unused(summary, files, station_ids, observations, unit, path, unmatched_columns=(), outside=(),
+                 summed_repeats=()):
     """Every input the filter did not use, one row each (the warnings name the first 20 of each
     kind): kind, file, line, station_id and a note: for a gauge at the place of an earlier one,
     that gauge's line; for an observation repeating an earlier one, the earlier one's line; a
@@ -1728,8 +1776,9 @@ def write_unused(summary, files, station_ids, observations, unit, path, unmatche
     (unmatched_columns: (column number, name), read_observations), at the header's line, its
     number in the note; and a row for each run of observations outside --start/--end (outside:
     rows_in_period's runs), which the filter never saw: its lines (first-last), its station, or
-    when it holds several, how many observations of how many stations. Returns the number of
-    inputs listed."""
+    when it holds several, how many observations of how many stations; and a row for each
+    observation --sum-to left out as a repeat (summed_repeats: sum_rows'), the earlier one's line
+    in the note. Returns the number of inputs listed."""
     fields = summary.GetFieldData()
     stations = observations.GetColumnByName("station_id")
     earlier = fields.GetArray("DuplicateOfGaugeIds")
@@ -1757,6 +1806,9 @@ def write_unused(summary, files, station_ids, observations, unit, path, unmatche
         for number, name in unmatched_columns:
             out.writerow(["observations column naming no gauge's station (not read)", files.observations, 1, name,
                           f"column {number}"])
+            written += 1
+        for line, earlier, station in summed_repeats:
+            out.writerow([SUMMED_REPEAT, files.observations, line, station, f"repeats line {earlier}"])
             written += 1
         for first, last, count, names in outside:
             several = f" of {len(names)} stations" if len(names) > 1 else ""
@@ -2231,7 +2283,8 @@ def main(argv=None):
     else:
         write_all_weights(average.GetOutputDataObject(2), steps, os.path.join(args.out, all_weights))
     unused = write_unused(summary, files, station_ids, observations, steps.noun,
-                          os.path.join(args.out, "unused_inputs.csv"), record.unmatched, record.outside)
+                          os.path.join(args.out, "unused_inputs.csv"), record.unmatched, record.outside,
+                          record.summed_repeats)
     if groups:
         by_feature = "areal_mean_by_" + re.sub(r"[^A-Za-z0-9_.-]", "_", each) + ".csv"
         write_means_by_feature(groups, each, gauges, observations, steps, average, args.catchment,

@@ -1358,17 +1358,29 @@ def test_times_off_the_steps_and_gauges_of_other_steps_are_named():
                                           catchment=catchment, plots=False, what=what, **options)
             return stdout, stderr, read_csv(os.path.join(out, "areal_mean.csv"))
 
-        stdout, stderr, _ = run("typo", header + quarters + "N6,2001-03-01 10:07,1.5\n", "a mistyped :07")
+        # (named by the line of its value, not of the missing one before it; N2 is no 1-minute gauge)
+        stdout, stderr, _ = run("typo", header + quarters + "N1,2001-03-01 10:07,NA\nN2,2001-03-01 10:07,1.5\n",
+                                "a mistyped :07")
         assert_that("read in 1-minute steps because of 1 time(s) not at multiples of 15 minutes as the others are: "
-                    "line 62 (2001-03-01 10:07)" in stderr and "166 1-minute steps" in stdout, f"a :07: {stderr}")
+                    "line 63 (2001-03-01 10:07)" in stderr and "166 1-minute steps" in stdout
+                    and "keep to different steps" not in stderr, f"a :07: {stderr}")
         _, _, clean = run("clean", header + quarters, "quarter hours")
         assert_that(len(clean) == 12 and clean[-1]["hour"] == "12" and clean[-1]["minute"] == "45", f"{clean}")
-        for extra, where in (("N6,2001-03-01 10:07,NA\n", "without a value"), ("X9,2001-03-01 10:22,3\n", "of no gauge"),
-                             ("N6,2001-03-01 13:07,3\n", "outside --end")):
-            _, stderr, means = run("unused", header + quarters + extra, where, end="2001-03-01 12:45")
-            assert_that(means == clean and "1 time(s) of rows without a value, of no gauge's station or outside "
-                        "--start/--end are not at multiples of 15 minutes, as the steps are, and are read at the step "
-                        "after them: line 62 (2001-03-01 " in stderr, f"a row at :07 {where}: {stderr} {means}")
+        for extra, where in (("N6,2001-03-01 10:07,NA\n", "without a value"), ("X9,2001-03-01 10:22,3\n", "of no gauge")):
+            _, stderr, means = run("unused", header + quarters + extra, where)
+            assert_that(means == clean and "1 time(s) of rows without a value or of no gauge's station are not at "
+                        "multiples of 15 minutes, as the steps are, and are read at the step after them: line 62 "
+                        "(2001-03-01 " in stderr, f"a row at :07 {where}: {stderr} {means}")
+        # A value at 13:07 outside --end still sets the steps (the period is one of steps), and is
+        # named; --sum-to 15 then gives the quarter hours, and lists it as outside.
+        late = header + quarters + "N6,2001-03-01 13:07,3\n"
+        _, stderr, _ = run("late", late, "a value outside --end", end="2001-03-01 12:45")
+        assert_that("read in 1-minute steps because of 1 time(s) not at multiples of 15 minutes as the others are: "
+                    "line 62 (2001-03-01 13:07)" in stderr, f"a value at 13:07 outside --end: {stderr}")
+        _, stderr, means = run("late", late, "summed, outside --end", end="2001-03-01 12:45", **{"sum-to": "15"})
+        outside = [u["line"] for u in read_csv(os.path.join(directory, "late", "unused_inputs.csv"))
+                   if u["kind"] == "observation before --start or after --end"]
+        assert_that(means == clean and outside == ["62"], f"--sum-to 15 with 13:07 outside --end: {means} {outside}")
         fives = quarter_hours(("N1", "N2", "N3"), 36, step=5)
         _, stderr, _ = run("mixed", header + fives + quarter_hours(("N4", "N5"), 12), "5 and 15 minutes")
         assert_that("the gauges' times keep to different steps: at multiples of 5 minutes for 3 gauge(s) (N1, N2, "
@@ -1407,6 +1419,7 @@ def test_sum_to_sums_each_gauges_values_into_longer_steps():
         f"{s},{t:%Y-%m-%d %H:%M},{'NA' if v is None else v}\n" for (s, t), v in values.items())
     text += f"N2,{start + datetime.timedelta(minutes=10):%Y-%m-%d %H:%M},99\n"  # (a repeat, left out)
     repeat_line = len(text.splitlines())
+    earlier_line = next(k for k, line in enumerate(text.splitlines(), 1) if line.startswith(text.splitlines()[-1][:19]))
 
     def by_hand(minutes):
         sums = {}
@@ -1436,13 +1449,29 @@ def test_sum_to_sums_each_gauges_values_into_longer_steps():
                         f"--sum-to {minutes}: {means}")
             assert_that(f"{len(values) + 2} observation(s) summed into " in stderr
                         and f"1 observation(s) repeat a station and time of an earlier one and are left out of the "
-                        f"sums (the earlier value is used): line(s) {repeat_line}" in stderr
+                        f"sums (the earlier value is used; unused_inputs.csv lists them): line(s) {repeat_line} (as line "
+                        f"{earlier_line})" in stderr
                         and "keep to different steps" not in stderr
                         and f"read 6 gauges and {len(values) + 2} observations" in stderr, f"{minutes}: {stderr}")
             # (N1's 10:05 is missing beside values; N4's 10:30 is alone in its quarter, not in its hour;
             # N3's 10:20 has its value too)
             assert_that(f"{1 if minutes == 15 else 2} total(s) leave out a missing value" in stderr,
                         f"{minutes}: {stderr}")
+            # The record starts at 10:00 and ends at 12:55: its first and last sums hold part of their minutes.
+            noun = "hour" if minutes == 60 else "15-minute step"
+            assert_that(f"the first {noun} (2001-03-01 10:00) sums the values from 2001-03-01 10:00 on" in stderr
+                        and f"the last {noun} (2001-03-01 13:00) sums the values up to 2001-03-01 12:55" in stderr,
+                        f"{minutes}: the ends: {stderr}")
+            repeats = [(u["line"], u["station_id"], u["note"]) for u in read_csv(os.path.join(got, "unused_inputs.csv"))
+                       if u["kind"].startswith("observation repeating")]
+            assert_that(repeats == [(str(repeat_line), "N2", f"repeats line {earlier_line}")], f"{minutes}: {repeats}")
+        # Hours summed to hours are themselves.
+        stdout, _ = run_colorado(os.path.join(directory, "hours"), stations=stations, catchment=catchment, plots=False,
+                                 observations=os.path.join(directory, "hand_60.csv"), what="--sum-to 60 of hours",
+                                 **{"sum-to": "60"})
+        with open(os.path.join(directory, "hours", "areal_mean.csv")) as a:
+            with open(os.path.join(directory, "hand_60", "areal_mean.csv")) as b:
+                assert_that(a.read() == b.read(), "--sum-to 60 of hours changed the means")
         quarters = "station_id,date,precip\n" + quarter_hours(("N1", "N2"), 8)
         assert_observations_refused(directory, stations, catchment, [
             (quarters, {"sum-to": "7"}, "--sum-to 7: expected a number of minutes that divides 60"),
