@@ -884,6 +884,7 @@ class ObservationRows:
         self.names = {}  # every row's station id, as written, once each in the file's order
         self.first = {}  # the first line of a month, a day, a day and time, and a time other than midnight
         self.hour_column, self.at_24 = False, 0
+        self.wide = False  # a wide file's rows (a column per station)
         self.unmatched = []  # a wide file's columns that are no gauge's station
         self.gaps = []  # (row, how many) of a wide file's cells without a value, not made rows
         self.repeats = []  # (row, line, the earlier line) of a wide file's rows repeating an earlier row's time
@@ -931,6 +932,7 @@ def scan_observations(path, gauge_of, stations_path, station_ids, missing_values
         index = index_of.get(written)
         if index is None:
             index = index_of[written] = new_step(rows, row, path, line)
+            rows.wide = column != "precip"
             if index == len(first_line):
                 first_line.append(line)
         rows.read.append(index)
@@ -1000,9 +1002,12 @@ def keep_period(rows, period, steps, step_of, path, bound_texts):
     rows.gaps = [gap for gap in rows.gaps if row_kept[gap[0]]]
     rows.repeats = [repeat for repeat in rows.repeats if row_kept[repeat[0]]]
     rows.negative = [(row, line) for row, line in rows.negative if row_kept[row]]
+    # (a wide file's row without any value gives a record without one, only to keep its time a
+    # step: no observation)
+    counted = array.array("b", (kind != 1 for kind in rows.missing_kind)) if rows.wide else None
     rows.missing_kind = array.array("b", (kind for kind, used in zip(rows.missing_kind, row_kept) if used))
     rows.stations, rows.values, rows.lines, rows.read, outside = rows_in_period(
-        rows.stations, rows.values, rows.lines, rows.read, row_kept)
+        rows.stations, rows.values, rows.lines, rows.read, row_kept, counted)
     every_steps = rows.every_step
     rows.every_step = {step for step in rows.every_step if step in period}
     rows.present = {step for step in rows.present if step in period}
@@ -1095,12 +1100,13 @@ def steps_span(rows, steps, step_of, period, first, last):
     return f"between {steps.text(first)} ({named[first]}) and {steps.text(last)} ({named[last]})"
 
 
-def rows_in_period(stations, values, lines, read, keep):
+def rows_in_period(stations, values, lines, read, keep, counted=None):
     """The observation rows whose step is in --start/--end (keep: 1 for each such row): their
     station ids, values, lines and step indices, and the others in runs of rows one after the other
     (no kept row between), each as [first line, last line, how many, {station ids}]: a record
     trimmed to a few of its years has millions of rows outside, in a few runs (one before and one
-    after when the file is in time order, two per station when it is in station order)."""
+    after when the file is in time order, two per station when it is in station order). counted:
+    1 for each row that is an observation (all, where None); a run without one is left out."""
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkStringArray
 
     kept_stations, kept_values = vtkStringArray(), vtkDoubleArray()
@@ -1119,10 +1125,11 @@ def rows_in_period(stations, values, lines, read, keep):
             outside.append([lines[row], lines[row], 0, set()])
         run = outside[-1]
         run[1] = lines[row]
-        run[2] += 1
-        run[3].add(stations.GetValue(row))
+        if counted is None or counted[row]:
+            run[2] += 1
+            run[3].add(stations.GetValue(row))
         run_end = row + 1
-    return kept_stations, kept_values, kept_lines, kept_read, outside
+    return kept_stations, kept_values, kept_lines, kept_read, [run for run in outside if run[2]]
 
 
 def outside_count(outside):

@@ -995,6 +995,14 @@ def test_a_wide_file_of_a_column_per_station_gives_the_long_files_means():
             count = 1 if file == "long" else 13
             assert_that(len(missing) == 1 and f": {count} observation(s) without a value" in missing[0],
                         f"{file}: {missing}")
+        # Before --start, the day whose cells are all empty holds no observation.
+        _, stderr = run_colorado(os.path.join(directory, "later"), stations=stations, observations=wide,
+                                 catchment=catchment, plots=False, what="a wide file from 2001-02-01",
+                                 start="2001-02-01")
+        runs = [(r["line"], r["note"]) for r in read_csv(os.path.join(directory, "later", "unused_inputs.csv"))
+                if r["kind"] == "observation before --start or after --end"]
+        assert_that("4 observation(s) outside --start/--end are not used" in stderr
+                    and runs == [("2-3", "4 observations of 4 stations")], f"before --start: {runs} {stderr}")
         # A date given on two rows is named, by its lines.
         twice = write(directory, "twice.csv", "date,101,102\n2001-01-30,1,\n2001-01-31,2,3\n2001-01-30,4,5\n")
         _, stderr = run_colorado(os.path.join(directory, "twice"), stations=stations, observations=twice,
