@@ -531,12 +531,12 @@ def say_few_times_off_a_grid(rows, used, steps, path):
     """Names the few used times off the grid of all the others (at most 1 in 100, or 1), where a
     mistyped :07 among quarter hours makes 1-minute steps, each by the line of its first value;
     returns them (a set)."""
-    coarser = [d for d in range(60, steps.minutes, -1) if 60 % d == 0 and d % steps.minutes == 0]
-    grid = next((d for d in coarser if len(used) - PATTERN_TIMES >= sum(1 for m in used if m[4] % d)
-                 <= max(1, len(used) // 100)), None)
+    coarser = (d for d in range(60, steps.minutes, -1) if 60 % d == 0 and d % steps.minutes == 0)
+    off_grid = ((d, sorted(m for m in used if m[4] % d)) for d in coarser)
+    grid, off = next(((d, off) for d, off in off_grid
+                      if len(used) - PATTERN_TIMES >= len(off) <= max(1, len(used) // 100)), (None, []))
     if not grid:
         return set()
-    off = sorted(m for m in used if m[4] % grid)
     print(f"{path}: read {steps.described} because of {len(off)} time(s) not {at_multiples(grid)} as the others "
           f"are: {times_and_lines(rows, off, rows.valued_line)}; if they are mistyped, mend them", file=sys.stderr)
     return set(off)
@@ -774,7 +774,7 @@ def sum_rows(rows, steps, step_of, fine, path):
     place = [(as_datetime(step_of[m]) - as_datetime(fine_of[m])) // length for m in times]
     filled, gaps = [], []  # per sum, the bits of its places with a value, and with a missing one
     repeated, valued = [], set()  # (row, sum, bit) of the repeats; the step indices with a value
-    for r, at, bit in sum_places(rows, step_of, place):
+    for r, at, bit in sum_places(rows, times, step_of, place):
         if at == len(filled):
             filled.append(0)
             gaps.append(0)
@@ -794,18 +794,19 @@ def sum_rows(rows, steps, step_of, fine, path):
         value = rows.values.GetValue(r)
         values.SetValue(at, value if math.isnan(values.GetValue(at)) else values.GetValue(at) + value)
         missing_kind[at] = 0
-    rows.summed_repeats = earlier_lines(rows, step_of, place, repeated)
+    rows.summed_repeats = earlier_lines(rows, times, step_of, place, repeated)
     partial = sum(1 for have, lack in zip(filled, gaps) if have and lack & ~have)
     say_sums(len(rows.lines), len(filled), rows.summed_repeats, partial, steps, path)
     if valued:
-        say_partial_ends(sorted(fine_of[times[k]] for k in valued), steps, fine[0], path)
+        ends = sorted((fine_of[times[k]], step_of[times[k]]) for k in valued)
+        say_partial_ends(ends[0], ends[-1], steps, fine[0], path)
     rows.stations, rows.values, rows.lines, rows.read, rows.missing_kind = stations, values, lines, read, missing_kind
 
 
-def sum_places(rows, step_of, place):
-    """Yields (row, the index of its sum, its place's bit) for each of the rows (sum_rows'): a sum
-    per station (station_key) and step (step_of), numbered as they first come."""
-    times = list(rows.step_index)  # (by index)
+def sum_places(rows, times, step_of, place):
+    """Yields (row, the index of its sum, its place's bit) for each of the rows (sum_rows'; times:
+    the times read, by index): a sum per station (station_key) and step (step_of), numbered as
+    they first come."""
     slot, key_of = {}, {}
     for r, k in enumerate(rows.read):
         station = rows.stations.GetValue(r)
@@ -813,23 +814,22 @@ def sum_places(rows, step_of, place):
         yield r, slot.setdefault((key, step_of[times[k]]), len(slot)), 1 << place[k]
 
 
-def earlier_lines(rows, step_of, place, repeated):
+def earlier_lines(rows, times, step_of, place, repeated):
     """(line, the line of the first row with a value of its station and time, station id) for each
     repeated row (sum_rows' (row, sum, bit))."""
     earlier = dict.fromkeys(((at, bit) for _, at, bit in repeated), None)
-    for r, at, bit in sum_places(rows, step_of, place) if repeated else ():
+    for r, at, bit in sum_places(rows, times, step_of, place) if repeated else ():
         if earlier.get((at, bit), 0) is None and not rows.missing_kind[r]:
             earlier[(at, bit)] = rows.lines[r]
     return [(rows.lines[r], earlier[(at, bit)], rows.stations.GetValue(r)) for r, at, bit in repeated]
 
 
-def say_partial_ends(fine_times, steps, fine_minutes, path):
-    """Names the first summed step when the first time with a value (fine_times: the file's steps
-    with a value, in order) is after its step's first minutes, and the last when the last is
-    before its end: a record that starts or ends there gives them only part of their minutes."""
-    first, last = fine_times[0], fine_times[-1]
-    first_step, last_step = (step_at_grid(t, steps.minutes)[:steps.fields] if len(t) == 5 else t
-                             for t in (first, last))
+def say_partial_ends(first_end, last_end, steps, fine_minutes, path):
+    """Names the first summed step when the first time with a value is after its step's first
+    minutes, and the last when the last is before its end (first_end, last_end: each time, the
+    file's step, with its summed step): a record that starts or ends there gives them only part
+    of their minutes."""
+    (first, first_step), (last, last_step) = first_end, last_end
     span = datetime.timedelta(minutes=steps.minutes - fine_minutes)
     if as_datetime(first) > as_datetime(first_step) - span:
         print(f"{path}: the first {steps.noun} ({steps.text(first_step)}) sums the values from "
