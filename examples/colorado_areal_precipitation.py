@@ -100,6 +100,7 @@ DATA = os.path.join(HERE, "data")
 sys.path.insert(0, HERE)
 
 import csv_input  # noqa: E402 (the examples' CSV reading, beside this script)
+import projected_input  # noqa: E402 (projected coordinates made lon/lat, beside this script)
 
 
 def decimal_time(year, month):
@@ -204,12 +205,12 @@ def station_key(station_id):
     return text
 
 
-def read_gauges(path, utm=None):
+def read_gauges(path, system=None):
     """The gauges as a vtkPolyData (points in lon/lat, point data station_id and name), and the
-    stations file's line of each gauge (gauge i is the file's i-th record). utm: (zone, north) of
-    --stations-utm, for a file of eastings and northings in that UTM zone (columns x, y), made
-    lon/lat by the projection's inverse; without it, a file of x and y columns and no lon and lat
-    ends the script saying to give the zone."""
+    stations file's line of each gauge (gauge i is the file's i-th record). system: the
+    projected_input.PlaneSystem of --stations-utm or --stations-crs, for a file of x and y
+    columns in it, made lon/lat by the projection's inverse; without it, a file of x and y columns
+    and no lon and lat ends the script saying to give the system."""
     from vtkmodules.vtkCommonCore import vtkPoints, vtkStringArray
     from vtkmodules.vtkCommonDataModel import vtkPolyData
 
@@ -219,14 +220,16 @@ def read_gauges(path, utm=None):
     ids.SetName("station_id")
     names.SetName("name")
     lines = []
-    columns = csv_input.header_columns(path, "stations", ("station_id", "lon", "lat")) if utm is None else set()
+    columns = csv_input.header_columns(path, "stations", ("station_id", "lon", "lat")) if system is None else set()
     if {"x", "y"} <= columns and not {"lon", "lat"} <= columns:
         csv_input.fail(f"{path}: the stations file has columns x and y, not lon and lat: if they are eastings and "
-                       "northings of a UTM zone, give the zone with --stations-utm (such as 13N)")
-    for line, _, station, name, lon, lat in csv_input.gauges(path, coordinates=("x", "y") if utm else ("lon", "lat")):
-        if utm and not in_utm_range(lon, lat):
+                       "northings of a UTM zone, give the zone with --stations-utm (such as 13N); of another "
+                       "projected system, give it with --stations-crs (such as EPSG:5070)")
+    coordinates = ("x", "y") if system else ("lon", "lat")
+    for line, _, station, name, lon, lat in csv_input.gauges(path, coordinates=coordinates):
+        if system and system.kind == "utm" and not projected_input.in_utm_range(lon, lat):
             csv_input.fail(f"{path}:{line}: ({lon:.15g}, {lat:.15g}) is not an easting and northing of a UTM zone "
-                           f"({UTM_RANGE})")
+                           f"({projected_input.UTM_RANGE})")
         lines.append(line)
         points.InsertNextPoint(lon, lat, 0.0)
         ids.InsertNextValue(station)
@@ -235,115 +238,10 @@ def read_gauges(path, utm=None):
     gauges.SetPoints(points)
     gauges.GetPointData().AddArray(ids)
     gauges.GetPointData().AddArray(names)
-    if utm:
-        gauges = from_utm(gauges, *utm, lambda g: f"{path}:{lines[g]}" if 0 <= g < len(lines) else path)
+    if system:
+        gauges = projected_input.to_lonlat(gauges, system,
+                                           lambda g: f"{path}:{lines[g]}" if 0 <= g < len(lines) else path)
     return gauges, lines
-
-
-def declared_utm(reader, rings, path):
-    """(zone, north) where the catchment file (reader: its vtkGDALVectorReader, updated) declares
-    one UTM zone for all its layers and its coordinates (rings) are metres, none of them a
-    longitude/latitude (a file of lon/lat under a UTM declaration is read as lon/lat, and said);
-    else None."""
-    zones = set()
-    for layer in range(reader.GetNumberOfLayers()):
-        proj4 = (reader.GetLayerProjectionAsProj4(layer) or "").split()
-        zone = next((int(term[6:]) for term in proj4 if re.fullmatch(r"\+zone=[0-9]{1,2}", term)), None)
-        zones.add((zone, "+south" not in proj4) if "+proj=utm" in proj4 and zone else None)
-    metres = all(abs(x) > 360.0 or abs(y) > 90.0 for ring in rings for x, y in ring)
-    if len(zones) != 1 or None in zones or not metres:
-        return None
-    outside = next(((r, k, p) for r, ring in enumerate(rings) for k, p in enumerate(ring) if not in_utm_range(*p)), None)
-    if outside:
-        csv_input.fail(f"{path}: ring {outside[0]} vertex {outside[1]} ({outside[2][0]:.15g}, {outside[2][1]:.15g}) "
-                       f"is not an easting and northing of a UTM zone ({UTM_RANGE}), as the file declares "
-                       "(counted from 0)")
-    return zones.pop()
-
-
-UTM_RANGE = "eastings 0 to 1,000,000 m, northings 0 to 10,000,000 m"
-
-
-def in_utm_range(x, y):
-    """Whether (x, y) can be an easting and northing of a UTM zone (UTM_RANGE; beyond it the
-    projection's inverse gives a place, but not one the zone holds)."""
-    return 0.0 < x < 1e6 and 0.0 <= y <= 1e7
-
-
-# A UTM file's edges are straight in metres, which unprojected to lon/lat they are not: an edge of
-# 10 km at 40N bows some 2 m from the lon/lat line between its ends, one of 1 km 2 cm. Cut into
-# pieces of 1 km before the inverse, the catchment keeps its shape to centimetres.
-UTM_EDGE_METRES = 1000.0
-
-
-def densify_edges(data, step):
-    """Cuts every edge of data's polygons and lines (a vtkPolyData or a multiblock of them, changed
-    in place) into pieces of at most step, in its coordinates' units; the cells and their data stay
-    as they are (vtkGDALVectorReader's output has no point data, and gets none)."""
-    from vtkmodules.vtkCommonCore import vtkIdList, vtkPoints
-    from vtkmodules.vtkCommonDataModel import vtkCellArray
-
-    leaves = [data] if data.IsA("vtkPolyData") else [
-        data.GetBlock(k) for k in range(data.GetNumberOfBlocks()) if data.GetBlock(k) is not None]
-    for leaf in leaves:
-        if not leaf.IsA("vtkPolyData"):
-            densify_edges(leaf, step)  # (a multiblock within)
-            continue
-        points = leaf.GetPoints()
-        if points is None:
-            continue
-        cut = vtkPoints()
-        cut.SetDataTypeToDouble()
-        cut.DeepCopy(points)  # (the old points keep their ids; the new ones follow)
-        ids = vtkIdList()
-        for cells, closed, assign in ((leaf.GetPolys(), True, leaf.SetPolys), (leaf.GetLines(), False, leaf.SetLines)):
-            pieces = vtkCellArray()
-            cells.InitTraversal()
-            while cells.GetNextCell(ids):
-                count = ids.GetNumberOfIds()
-                kept = []
-                for k in range(count if closed else count - 1):
-                    a, b = points.GetPoint(ids.GetId(k)), points.GetPoint(ids.GetId((k + 1) % count))
-                    kept.append(ids.GetId(k))
-                    n = math.ceil(math.hypot(b[0] - a[0], b[1] - a[1]) / step)
-                    kept.extend(cut.InsertNextPoint(a[0] + i / n * (b[0] - a[0]), a[1] + i / n * (b[1] - a[1]), 0.0)
-                                for i in range(1, n))
-                if not closed and count:
-                    kept.append(ids.GetId(count - 1))
-                pieces.InsertNextCell(len(kept), kept)
-            assign(pieces)
-        leaf.GetPointData().Initialize()
-        leaf.SetPoints(cut)
-
-
-def utm_zone(text, option):
-    """--stations-utm's (zone, north) from ZONE[N|S] (13N, 33S; a zone alone is north); ends the
-    script naming the value otherwise."""
-    zone = re.fullmatch(r"([0-9]{1,2})([NnSs]?)", text.strip())
-    if not zone or not 1 <= int(zone.group(1)) <= 60:
-        sys.exit(f"{option} {text!r}: expected a UTM zone 1 to 60 with N or S (such as 13N)")
-    return int(zone.group(1)), zone.group(2).upper() != "S"
-
-
-def from_utm(data, zone, north, where):
-    """data (a vtkPolyData or a multiblock of them) with its points made lon/lat from eastings and
-    northings of UTM zone `zone` (WGS84; NAD83 and ETRS89 lie within a metre or two of it), by
-    vtkGeographicProjection's inverse; an error (a point the zone cannot hold) ends the script,
-    where(point index) naming where that point came from."""
-    projection = csv_input.import_tessera().vtkGeographicProjection()
-    projection.SetInputData(data)
-    projection.SetProjectionToUTM()
-    projection.SetUTMZone(zone)
-    projection.SetUTMNorth(north)
-    projection.SetInverse(True)
-    errors = []
-    csv_input.catch_vtk_messages(projection, errors.append, lambda text: None, errors.append)
-    projection.Update()
-    if errors:
-        point = re.search(r"\bpoint (\d+)", errors[0])
-        csv_input.fail(f"{where(int(point.group(1))) if point else where(-1)}: as UTM zone {zone}"
-                       f"{'N' if north else 'S'}: {errors[0]}")
-    return projection.GetOutputDataObject(0)
 
 
 DATE = re.compile(r"([0-9]{4})-([0-9]{1,2})(?:-([0-9]{1,2}))?")
@@ -1297,6 +1195,13 @@ def cell_kinds(data):
 GDAL_MESSAGES = None
 
 
+def gdal_messages():
+    """The script's GdalMessages, made at the first call."""
+    global GDAL_MESSAGES
+    GDAL_MESSAGES = GDAL_MESSAGES or GdalMessages()
+    return GDAL_MESSAGES
+
+
 def read_catchment(path, feature=None):
     """The catchment (a vtkGDALVectorReader's output: a multiblock with a block per feature, or the
     features chosen by `feature`, "ATTRIBUTE=VALUE") and its rings (catchment_rings); ends the
@@ -1317,17 +1222,15 @@ def read_catchment(path, feature=None):
         if not any(os.path.isfile(stem + e) for e in (".shx", ".SHX")):
             csv_input.fail(f"{path}: the shapefile's {stem}.shx beside it is missing (a shapefile is a .shp "
                            "with its .shx, .dbf and often .prj; copy them all)")
-    global GDAL_MESSAGES
-    GDAL_MESSAGES = GDAL_MESSAGES or GdalMessages()
     reader = vtkGDALVectorReader()
     errors = []
     reader.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: errors.append(event))
     reader.SetFileName(source)
-    with GDAL_MESSAGES.capturing():
+    with gdal_messages().capturing():
         reader.Update()
     output = reader.GetOutput()
     rings = catchment_rings(output) if output else []
-    gdal = GDAL_MESSAGES.new()
+    gdal = gdal_messages().new()
     if errors or not rings:
         # GDAL's error is the reason where nothing was read (a file it cannot parse); where
         # points or lines were, they are (an unknown "crs" is an error of GDAL's too).
@@ -1343,10 +1246,9 @@ def read_catchment(path, feature=None):
     for level, message in gdal:
         if level and not message.startswith("Non closed ring detected"):  # (the filter names it)
             print(f"{path}: GDAL: {message}", file=sys.stderr)
-    utm = declared_utm(reader, rings, path)
-    if utm:
-        densify_edges(output, UTM_EDGE_METRES)
-        output = from_utm(output, *utm, lambda point: path)
+    system = projected_input.declared_system(reader, rings, path)
+    if system:
+        output = projected_input.to_lonlat(output, system, lambda point: path, densify=True)
         rings = catchment_rings(output)
     for k, ring in holes_outside_their_polygons(path, feature):
         print(f"{path}: feature {k} ring {ring} is a hole (a polygon's ring after its first) but lies outside "
@@ -1363,20 +1265,20 @@ def read_catchment(path, feature=None):
               "together (even-odd rule: a feature inside another is a hole, and one that fills "
               "another's hole exactly joins it); --feature ATTRIBUTE=VALUE takes only those with "
               "that value", file=sys.stderr)
-    # The coordinates are read as lon/lat whatever the file declares, but for a UTM zone's metres:
-    # another projected system (a .prj, a GeoJSON "crs") is named, as its numbers are either
-    # metres (which the filter refuses as longitudes) or lon/lat under a wrong declaration.
+    # The coordinates are read as lon/lat whatever the file declares, but for the metres of a
+    # projected system read (projected_input): a projected declaration over lon/lat is named.
     for layer in range(reader.GetNumberOfLayers()):
         declared = reader.GetLayerProjection(layer) or ""
         name = re.match(r'PROJC(?:RS|S)\["([^"]*)"', declared)
         name = name.group(1) if name else declared[:60]
-        if utm:
+        if system:
             print(f"{path}: declares the projected coordinate system {name!r}, whose eastings and northings are "
-                  f"made longitude/latitude (UTM zone {utm[0]}{'N' if utm[1] else 'S'}, WGS84)", file=sys.stderr)
+                  f"made longitude/latitude ({system.describe()})", file=sys.stderr)
         elif declared.startswith(("PROJCS", "PROJCRS")):
             print(f"{path}: declares the projected coordinate system {name!r}; its coordinates are read as "
                   "longitude/latitude in degrees (WGS84), which they must be (else reproject the file, e.g. "
-                  "ogr2ogr -t_srs EPSG:4326 out.shp in.shp; a UTM zone's metres are made lon/lat here)",
+                  f"ogr2ogr -t_srs EPSG:4326 out.shp in.shp; the metres of {projected_input.READ} are made "
+                  "lon/lat here)",
                   file=sys.stderr)
         # A geographic system on an older datum (NAD27, ED50, ...: an ellipsoid other than WGS84's
         # or GRS80's, whose semi-major axis modern datums share) differs from WGS84 by tens to
@@ -2183,6 +2085,12 @@ def main(argv=None):
                              "with N or S, such as 13N; WGS84, within a metre or two of NAD83 and ETRS89), in "
                              "columns x and y instead of lon and lat: they are made lon/lat first (the outputs "
                              "give lon/lat)")
+    parser.add_argument("--stations-crs", metavar="CRS",
+                        help="the stations file gives x and y (columns x, y) in this projected system: EPSG:CODE "
+                             "(such as EPSG:5070, NAD83 / Conus Albers, or EPSG:2232, Colorado Central in US feet) "
+                             "or PROJ terms ('+proj=aea +lat_0=23 +lon_0=-96 +lat_1=29.5 +lat_2=45.5 +x_0=0 "
+                             f"+y_0=0 +units=m'); read: {projected_input.READ}, on WGS84 or GRS80; they are "
+                             "made lon/lat first")
     parser.add_argument("--observations", default=os.path.join(DATA, "colorado_monthly_precip.csv"),
                         help="CSV of monthly values, one row per gauge and month: columns "
                              f"station_id, year, month, precip ({csv_input.MISSING_TEXT} = missing); "
@@ -2197,7 +2105,8 @@ def main(argv=None):
                              f"by its station_id; {csv_input.SEPARATORS_TEXT}")
     parser.add_argument("--catchment", default=os.path.join(DATA, "colorado_boundary.geojson"),
                         help="catchment polygon (GeoJSON or shapefile, lon/lat, or a zip file "
-                             "holding one; a file declaring a UTM zone, in metres, is made lon/lat); "
+                             "holding one; a file declaring a projected system in metres or feet, "
+                             f"{projected_input.READ}, is made lon/lat); "
                              "every polygon feature of the file is taken, unless --feature chooses")
     parser.add_argument("--feature", metavar="ATTRIBUTE=VALUE",
                         help="take only the catchment file's features whose attribute has this "
@@ -2237,7 +2146,8 @@ def main(argv=None):
 
     csv_input.output_directory(args.out)
     started = time.time()
-    gauges, gauge_lines = read_gauges(args.stations, args.stations_utm and utm_zone(args.stations_utm, "--stations-utm"))
+    stations_system = projected_input.stations_system(args.stations_utm, args.stations_crs, gdal_messages())
+    gauges, gauge_lines = read_gauges(args.stations, stations_system)
     if not gauge_lines:
         csv_input.fail(f"{args.stations}: no gauges (the file has no rows)")
     ids = gauges.GetPointData().GetAbstractArray("station_id")

@@ -1736,7 +1736,8 @@ def test_a_catchment_declared_projected_is_named():
                                  what="a declared UTM system")
         assert_that(f"{utm}: declares the projected coordinate system 'WGS 84 / UTM zone 60S'; its coordinates are "
                     "read as longitude/latitude in degrees (WGS84), which they must be (else reproject the file, "
-                    "e.g. ogr2ogr -t_srs EPSG:4326 out.shp in.shp; a UTM zone's metres are made lon/lat here)"
+                    "e.g. ogr2ogr -t_srs EPSG:4326 out.shp in.shp; the metres of UTM, transverse Mercator (tmerc), "
+                    "Albers equal-area (aea) and Lambert conformal conic (lcc) are made lon/lat here)"
                     in stderr_messages(stderr), f"{stderr}")
         _, stderr = run_colorado(out, stations=stations, observations=observations, catchment=catchment, plots=False)
         assert_that("declares" not in stderr, f"the lon/lat basin: {stderr}")
@@ -1850,7 +1851,8 @@ def test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means():
         # are named.
         far = write(out, "far.csv", "station_id,x,y\nN1,400000,4e9\n")
         cases = [({}, xy, f"{xy}: the stations file has columns x and y, not lon and lat: if they are eastings and "
-                          "northings of a UTM zone, give the zone with --stations-utm (such as 13N)"),
+                          "northings of a UTM zone, give the zone with --stations-utm (such as 13N); of another "
+                          "projected system, give it with --stations-crs (such as EPSG:5070)"),
                  ({"stations-utm": "61S"}, xy, "--stations-utm '61S': expected a UTM zone 1 to 60 with N or S"),
                  ({"stations-utm": "60S"}, far,
                   f"{far}:2: (400000, 4000000000) is not an easting and northing of a UTM zone")]
@@ -1858,6 +1860,157 @@ def test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means():
             _, stderr = run_colorado(os.path.join(out, "bad"), stations=path, observations=observations,
                                      catchment=catchment, plots=False, status=1, what=message, **options)
             assert_that(message in stderr and "Traceback" not in stderr, f"{message!r} not in {stderr!r}")
+
+
+# Snyder's ellipsoidal forward formulas for the two conics (Map Projections: A Working Manual, 1987,
+# eqs. 14-12 to 14-19 and 15-7 to 15-11), on WGS84, as PROJ defines +proj=aea and +proj=lcc: written
+# here apart from the script's path, which inverts with GeographicLib.
+WGS84_A, WGS84_F = 6378137.0, 1 / 298.257223563
+
+
+def snyder_conic(kind, lon, lat, lon0, lat0, lat1, lat2, x0=0.0, y0=0.0, k0=1.0):
+    """(x, y) in metres of (lon, lat) in PROJ's kind ("aea" or "lcc") with these terms."""
+    e2 = WGS84_F * (2 - WGS84_F)
+    e = math.sqrt(e2)
+
+    def m(p):
+        return math.cos(p) / math.sqrt(1 - e2 * math.sin(p) ** 2)
+
+    def q(p):
+        s = math.sin(p)
+        return (1 - e2) * (s / (1 - e2 * s * s) - math.log((1 - e * s) / (1 + e * s)) / (2 * e))
+
+    def t(p):
+        s = math.sin(p)
+        return math.tan(math.pi / 4 - p / 2) / ((1 - e * s) / (1 + e * s)) ** (e / 2)
+
+    p, p0, p1, p2 = (math.radians(v) for v in (lat, lat0, lat1, lat2))
+    if kind == "aea":
+        n = (m(p1) ** 2 - m(p2) ** 2) / (q(p2) - q(p1))
+        c = m(p1) ** 2 + n * q(p1)
+        rho, rho0 = (WGS84_A * math.sqrt(c - n * q(v)) / n for v in (p, p0))
+    else:
+        n = math.sin(p1) if lat1 == lat2 else (math.log(m(p1) / m(p2)) / math.log(t(p1) / t(p2)))
+        f = m(p1) / (n * t(p1) ** n)
+        rho, rho0 = (WGS84_A * k0 * f * t(v) ** n for v in (p, p0))
+    theta = n * math.radians(lon - lon0)
+    return x0 + rho * math.sin(theta), y0 + rho0 - rho * math.cos(theta)
+
+
+def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_lat_means():
+    # The lake basin (its edges cut every 0.001 degrees in lon/lat) and its gauges given in three
+    # projected systems: a southern Albers conic, a Lambert conic in US feet with false origins
+    # (Snyder's formulas above) and a transverse Mercator with a latitude of origin, scale and
+    # false origins (from UTM 60S's eastings and northings, by the filter's UTM path). Catchment
+    # (a GeoJSON "crs" of PROJ terms, a shapefile's ESRI .prj) and gauges (--stations-crs) each
+    # in another system than the other: every run gives the lon/lat files' counts and means to
+    # 1e-8. The gauges in UTM 60S given as --stations-crs EPSG:32760 do too. A system that is not
+    # read, an EPSG code GDAL does not know and both station options end the run naming them.
+    import json
+
+    from tessera import vtkGeographicProjection
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+    def utm_60s(points):
+        data, projected = vtkPolyData(), vtkPoints()
+        projected.SetDataTypeToDouble()
+        for lon, lat in points:
+            projected.InsertNextPoint(lon, lat, 0.0)
+        data.SetPoints(projected)
+        projection = vtkGeographicProjection()
+        projection.SetInputData(data)
+        projection.SetProjectionToUTM()
+        projection.SetUTMZone(60)
+        projection.SetUTMNorth(False)
+        projection.Update()
+        return [projection.GetOutput().GetPoint(k)[:2] for k in range(len(points))]
+
+    us_foot = 1200 / 3937
+    origin_utm = utm_60s([(177.0, -39.0)])[0]
+    systems = {
+        "aea": ("+proj=aea +lat_0=-39 +lon_0=176 +lat_1=-38 +lat_2=-40 +x_0=1000000 +y_0=2000000 +datum=WGS84 +units=m",
+                lambda ps: [snyder_conic("aea", x, y, 176, -39, -38, -40, 1e6, 2e6) for x, y in ps]),
+        "lcc": ("+proj=lcc +lat_0=-41 +lon_0=175 +lat_1=-37.5 +lat_2=-40.5 +x_0=2510000 +y_0=6023150 +datum=WGS84 "
+                "+units=us-ft",
+                lambda ps: [tuple(v / us_foot for v in snyder_conic("lcc", x, y, 175, -41, -37.5, -40.5, 2510000,
+                                                                    6023150)) for x, y in ps]),
+        "tmerc": ("+proj=tmerc +lat_0=-39 +lon_0=177 +k=0.9996 +x_0=1600000 +y_0=800000 +datum=WGS84 +units=m",
+                  lambda ps: [(x - 500000 + 1600000, y - origin_utm[1] + 800000) for x, y in utm_60s(ps)])}
+    lcc_prj = ('PROJCS["lake_lcc",GEOGCS["GCS_WGS_1984",DATUM["D_WGS_1984",SPHEROID["WGS_1984",6378137.0,'
+               '298.257223563]],PRIMEM["Greenwich",0.0],UNIT["Degree",0.0174532925199433]],PROJECTION['
+               f'"Lambert_Conformal_Conic"],PARAMETER["False_Easting",{2510000 / us_foot!r}],PARAMETER['
+               f'"False_Northing",{6023150 / us_foot!r}],PARAMETER["Central_Meridian",175.0],PARAMETER['
+               '"Standard_Parallel_1",-37.5],PARAMETER["Standard_Parallel_2",-40.5],PARAMETER["Latitude_Of_Origin",'
+               '-41.0],UNIT["Foot_US",0.3048006096012192]]')
+
+    with tempfile.TemporaryDirectory() as out:
+        catchment, stations, observations = write_lake_basin(out)
+        rings = [[[a[0] + (b[0] - a[0]) * i / 1000, a[1] + (b[1] - a[1]) * i / 1000] for a, b in zip(ring, ring[1:])
+                  for i in range(1000)] + ring[-1:] for ring in LAKE_BASIN["features"][0]["geometry"]["coordinates"]]
+        cut = json.loads(json.dumps(LAKE_BASIN))
+        cut["features"][0]["geometry"]["coordinates"] = rings
+        run_colorado(os.path.join(out, "lonlat"), stations=stations, observations=observations,
+                     catchment=write(out, "cut.geojson", json.dumps(cut)), plots=False, what="lon/lat")
+        want = read_csv(os.path.join(out, "lonlat", "areal_mean.csv"))
+
+        def catchment_in(name):
+            terms, forward = systems[name]
+            if name == "lcc":  # (a shapefile whose .prj gives the system in ESRI's words)
+                shp, shx = shapefile_of([forward(ring) for ring in rings])
+                for extension, data in ((".shp", shp), (".shx", shx), (".prj", lcc_prj.encode())):
+                    with open(os.path.join(out, "basin_lcc" + extension), "wb") as f:
+                        f.write(data)
+                return os.path.join(out, "basin_lcc.shp")
+            declared = json.loads(json.dumps(cut))
+            declared["crs"] = {"type": "name", "properties": {"name": terms}}
+            declared["features"][0]["geometry"]["coordinates"] = [[list(p) for p in forward(ring)] for ring in rings]
+            return write(out, f"basin_{name}.geojson", json.dumps(declared))
+
+        def stations_in(forward, name):
+            xy = forward(list(LAKE_GAUGES.values()))
+            return write(out, f"stations_{name}.csv", "station_id,x,y\n" + "".join(
+                f"{s},{x!r},{y!r}\n" for s, (x, y) in zip(LAKE_GAUGES, xy)))
+
+        runs = [(c, systems[g][0], stations_in(systems[g][1], g)) for c, g in
+                (("aea", "lcc"), ("lcc", "tmerc"), ("tmerc", "aea"))]
+        runs.append(("aea", "EPSG:32760", stations_in(utm_60s, "utm")))
+        for name, crs, xy in runs:
+            path = catchment_in(name)
+            _, stderr = run_colorado(os.path.join(out, name), stations=xy, observations=observations, catchment=path,
+                                     plots=False, what=f"{name} with stations in {crs}", **{"stations-crs": crs})
+            assert_that(any(m.startswith(f"{path}: declares the projected coordinate system ") and
+                            "whose eastings and northings are made longitude/latitude" in m
+                            for m in stderr_messages(stderr)), f"{name}: {stderr}")
+            got = read_csv(os.path.join(out, name, "areal_mean.csv"))
+            assert_that(len(got) == len(want) == 2, f"{got} against {want}")
+            for a, b in zip(got, want):
+                assert_that((a["stations_used"], a["stations_weighted"]) == (b["stations_used"], b["stations_weighted"]),
+                            f"{name}, {crs}: {a} against {b}")
+                assert_close(float(b["areal_mean"]), float(a["areal_mean"]), 1e-8 * float(b["areal_mean"]),
+                             f"{name}, {crs}: the mean {a}")
+        laea = dict(LAKE_BASIN, crs={"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::3035"}})
+        laea["features"] = json.loads(json.dumps(cut["features"]))
+        laea["features"][0]["geometry"]["coordinates"] = [[[x * 1e4, y * 1e4] for x, y in r] for r in rings]
+        laea_path = write(out, "laea.geojson", json.dumps(laea))
+        xy = runs[0][2]
+        cases = [({"catchment": laea_path, "stations": stations},
+                  f"{laea_path}: declares a projected coordinate system with the projection +proj=laea (read here: "
+                  "UTM, transverse Mercator (tmerc), Albers equal-area (aea) and Lambert conformal conic (lcc)); "
+                  "its coordinates are metres"),
+                 ({"catchment": catchment, "stations": xy, "stations-crs": "EPSG:99999"},
+                  "--stations-crs 'EPSG:99999': GDAL's database has no such EPSG code"),
+                 ({"catchment": catchment, "stations": xy, "stations-crs": "+proj=lcc +lat_1=north"},
+                  "--stations-crs '+proj=lcc +lat_1=north': +lat_1=north, which is not a number"),
+                 ({"catchment": catchment, "stations": xy, "stations-crs": "EPSG:4326"},
+                  "--stations-crs 'EPSG:4326': a geographic system (longitude/latitude)"),
+                 ({"catchment": catchment, "stations": xy, "stations-crs": "EPSG:32760", "stations-utm": "60S"},
+                  "--stations-utm and --stations-crs: give one of them")]
+        for options, message in cases:
+            _, stderr = run_colorado(os.path.join(out, "bad"), observations=observations, plots=False, status=1,
+                                     what=message, **options)
+            assert_that(message in stderr and "Traceback" not in stderr and "ERROR 1" not in stderr,
+                        f"{message!r} not in {stderr!r}")
 
 
 def test_observations_of_no_gauge_end_the_run():
@@ -2320,6 +2473,9 @@ def test_every_script_takes_help():
     for fragment in ("module imported by the other examples", "colorado_areal_precipitation.py",
                      "project_gauges.py", "ridge_grouping.py"):
         assert_that(fragment in text, f"csv_input.py does not say {fragment!r}: {stdout!r}")
+    status, stdout, stderr = run_example("projected_input.py")
+    assert_that(status == 0 and "A module imported by colorado_areal_precipitation.py" in " ".join(stdout.split())
+                and not stderr, f"projected_input.py without arguments: exit status {status}, {stdout!r}, {stderr!r}")
     done = subprocess.run([sys.executable, "-c", f"import sys; sys.path.insert(0, {EXAMPLES!r}); import csv_input"],
                           capture_output=True, text=True, timeout=60)
     assert_that(done.returncode == 0 and not done.stdout and not done.stderr,
@@ -2415,6 +2571,7 @@ if __name__ == "__main__":
          test_reading_a_large_file_says_how_far_it_got,
          test_a_catchment_in_a_zip_file_is_read_from_it,
          test_a_catchment_declared_projected_is_named, test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means,
+         test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_lat_means,
          test_the_filters_errors_name_the_file_and_line,
          test_the_filters_warnings_are_lines_of_their_own,
          test_rows_of_empty_fields_are_skipped,

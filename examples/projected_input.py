@@ -1,0 +1,318 @@
+"""Projected coordinates made longitude/latitude, for the main job (colorado_areal_precipitation.py):
+a catchment file that declares a projected coordinate system (a shapefile's .prj, a GeoJSON
+"crs"), and a stations file of x and y columns given --stations-utm or --stations-crs.
+
+The systems read are those GDAL writes in PROJ's terms as +proj=utm, tmerc (transverse Mercator),
+aea (Albers equal-area conic) and lcc (Lambert conformal conic, with one or two standard
+parallels), in metres or feet. Each is made lon/lat by vtkGeographicProjection's inverse. That
+filter's planes have no false easting or northing, a scale of 1 and their own origin, so the
+file's x, y are first moved into the filter's plane:
+
+    filter x = (file x * metres per unit - x_0) / k_0 + X,  and alike for y,
+
+where (X, Y) is the filter's image of the file's origin (lon_0, lat_0): both planes are the same
+map of the ellipsoid up to that shift and scale (for a conic, the same cone radius and angle
+about the same apex; for the transverse Mercator, the same meridian distance).
+
+The filter's ellipsoid is WGS84's. NAD83 and ETRS89 (GRS80) lie within a metre or two of it;
+another datum (NAD27, ED50, OSGB36) is warned of where the catchment is read.
+"""
+
+import math
+import re
+
+import csv_input
+
+# What each PROJ projection is in vtkGeographicProjection (SetProjection's values).
+KINDS = {"tmerc": ("TransverseMercator", 3), "aea": ("AlbersEqualArea", 1), "lcc": ("LambertConformalConic", 2)}
+READ = "UTM, transverse Mercator (tmerc), Albers equal-area (aea) and Lambert conformal conic (lcc)"
+
+# Metres per unit of PROJ's +units (GDAL writes +to_meter for others).
+UNITS = {"m": 1.0, "km": 1000.0, "ft": 0.3048, "us-ft": 1200.0 / 3937.0}
+
+UTM_RANGE = "eastings 0 to 1,000,000 m, northings 0 to 10,000,000 m"
+
+# A projected file's edges are straight in metres, which unprojected to lon/lat they are not: an
+# edge of 10 km at 40N bows some 2 m from the lon/lat line between its ends, one of 1 km 2 cm. Cut
+# into pieces of 1 km before the inverse, the catchment keeps its shape to centimetres.
+EDGE_METRES = 1000.0
+
+
+class PlaneSystem:
+    """A projected coordinate system that is read here: the filter's projection (kind: a key of
+    KINDS, or "utm") and PROJ's parameters: origin (lon0, lat0), standard parallels (lat1, lat2),
+    scale k0, false easting and northing (x0, y0, metres) and metres per unit."""
+
+    def __init__(self, kind, lon0=0.0, lat0=0.0, lat1=0.0, lat2=0.0, k0=1.0, x0=0.0, y0=0.0, metres=1.0,
+                 zone=0, north=True):
+        self.kind, self.lon0, self.lat0, self.lat1, self.lat2 = kind, lon0, lat0, lat1, lat2
+        self.k0, self.x0, self.y0, self.metres, self.zone, self.north = k0, x0, y0, metres, zone, north
+
+    @classmethod
+    def utm(cls, zone, north):
+        return cls("utm", zone=zone, north=north)
+
+    def describe(self):
+        """As the messages name it: "UTM zone 13N, WGS84" or "AlbersEqualArea lon_0=-96 lat_0=23
+        lat_1=29.5 lat_2=45.5 x_0=0 y_0=0, WGS84"."""
+        if self.kind == "utm":
+            return f"UTM zone {self.zone}{'N' if self.north else 'S'}, WGS84"
+        terms = [f"lon_0={self.lon0:g}", f"lat_0={self.lat0:g}"]
+        if self.kind != "tmerc":
+            terms += [f"lat_1={self.lat1:g}", f"lat_2={self.lat2:g}"]
+        if self.k0 != 1.0:
+            terms.append(f"k_0={self.k0:.10g}")
+        terms += [f"x_0={self.x0:.10g}", f"y_0={self.y0:.10g}"]
+        if self.metres != 1.0:
+            terms.append(f"{self.metres:.10g} m per unit")
+        return f"{KINDS[self.kind][0]} {' '.join(terms)}, WGS84"
+
+
+def proj4_system(text):
+    """The PlaneSystem of PROJ terms as GDAL writes them (GetLayerProjectionAsProj4), or the
+    reason it is not read here (a str): another projection, a unit of no known length, a term
+    that is not a number."""
+    terms = dict(term[1:].partition("=")[::2] for term in text.split() if term.startswith("+"))
+    name = terms.get("proj", "")
+    if name == "utm":
+        zone = terms.get("zone", "")
+        if not re.fullmatch(r"[0-9]{1,2}", zone) or not 1 <= int(zone) <= 60:
+            return f"a UTM zone {zone!r} (expected 1 to 60)"
+        return PlaneSystem.utm(int(zone), "south" not in terms)
+    if name not in KINDS:
+        return f"the projection +proj={name} (read here: {READ})"
+    wanted = {"lon_0": "0", "lat_0": "0", "lat_1": "0", "lat_2": terms.get("lat_1", "0"), "x_0": "0", "y_0": "0",
+              "k_0": terms.get("k", "1"), "to_meter": "1"}  # (one standard parallel: both at it)
+    number = {}
+    for key, default in wanted.items():
+        try:
+            number[key] = float(terms.get(key, default))
+        except ValueError:
+            return f"+{key}={terms[key]}, which is not a number"
+    metres = number["to_meter"] if "to_meter" in terms else UNITS.get(terms.get("units", "m"))
+    if metres is None:
+        return f"the unit +units={terms['units']} (read here: {', '.join(UNITS)}, or +to_meter)"
+    bad = next((key for key, value in number.items() if not math.isfinite(value)), None)
+    if bad or not (number["k_0"] > 0 and metres > 0):
+        return f"+{bad}={terms.get(bad, wanted[bad])}, which is not finite" if bad else "a scale or unit of 0 or less"
+    return PlaneSystem(name, number["lon_0"], number["lat_0"], number["lat_1"], number["lat_2"], number["k_0"],
+                       number["x_0"], number["y_0"], metres)
+
+
+def in_utm_range(x, y):
+    """Whether (x, y) can be an easting and northing of a UTM zone (UTM_RANGE; beyond it the
+    projection's inverse gives a place, but not one the zone holds)."""
+    return 0.0 < x < 1e6 and 0.0 <= y <= 1e7
+
+
+def declared_system(reader, rings, path):
+    """The PlaneSystem that the catchment file (reader: its vtkGDALVectorReader, updated) declares
+    for all its layers, where its coordinates (rings) are metres, none of them a longitude/latitude
+    (a file of lon/lat under a projected declaration is read as lon/lat, and said); else None. A
+    projected system that is not read here ends the script naming it, and so does a UTM vertex
+    that no zone holds."""
+    systems = set()
+    for layer in range(reader.GetNumberOfLayers()):
+        proj4 = reader.GetLayerProjectionAsProj4(layer) or ""
+        systems.add(proj4 if "+proj=" in proj4 and "+proj=longlat" not in proj4 else None)
+    metres = all(abs(x) > 360.0 or abs(y) > 90.0 for ring in rings for x, y in ring)
+    if len(systems) != 1 or None in systems or not metres:
+        return None
+    proj4 = systems.pop()
+    system = proj4_system(proj4)
+    if isinstance(system, str):
+        csv_input.fail(f"{path}: declares a projected coordinate system with {system}; its coordinates are metres, "
+                       f"not longitude/latitude: reproject the file (e.g. ogr2ogr -t_srs EPSG:4326 out.shp in.shp) "
+                       f"(the file's system: {proj4.strip()})")
+    outside = next(((r, k, p) for r, ring in enumerate(rings) for k, p in enumerate(ring) if not in_utm_range(*p)),
+                   None) if system.kind == "utm" else None
+    if outside:
+        csv_input.fail(f"{path}: ring {outside[0]} vertex {outside[1]} ({outside[2][0]:.15g}, {outside[2][1]:.15g}) "
+                       f"is not an easting and northing of a UTM zone ({UTM_RANGE}), as the file declares "
+                       "(counted from 0)")
+    return system
+
+
+def stations_system(utm, crs, gdal_messages):
+    """The PlaneSystem of a stations file of x, y: --stations-utm's ZONE[N|S] (13N, 33S; a zone
+    alone is north) or --stations-crs's EPSG:CODE or PROJ terms (+proj=aea ...); None when neither
+    is given. A bad value ends the script naming it. gdal_messages: the script's GdalMessages,
+    which keep GDAL's own lines off stderr while an EPSG code is looked up."""
+    if utm and crs:
+        csv_input.fail("--stations-utm and --stations-crs: give one of them")
+    if utm:
+        zone = re.fullmatch(r"([0-9]{1,2})([NnSs]?)", utm.strip())
+        if not zone or not 1 <= int(zone.group(1)) <= 60:
+            csv_input.fail(f"--stations-utm {utm!r}: expected a UTM zone 1 to 60 with N or S (such as 13N)")
+        return PlaneSystem.utm(int(zone.group(1)), zone.group(2).upper() != "S")
+    if not crs:
+        return None
+    text = crs.strip()
+    code = re.fullmatch(r"(?i)epsg:([0-9]+)", text)
+    if code:
+        with gdal_messages.capturing():
+            text = epsg_proj4(int(code.group(1)))
+        gdal_messages.new()  # (read: they are not the catchment's)
+        if not text:
+            csv_input.fail(f"--stations-crs {crs!r}: GDAL's database has no such EPSG code")
+    system = proj4_system(text)
+    if isinstance(system, str) and "+proj=longlat" in text.split():
+        system = "a geographic system (longitude/latitude): give the file lon and lat columns, without --stations-crs"
+    if isinstance(system, str):
+        csv_input.fail(f"--stations-crs {crs!r}: {system} (give EPSG:CODE or PROJ terms such as "
+                       "'+proj=aea +lat_0=23 +lon_0=-96 +lat_1=29.5 +lat_2=45.5 +x_0=0 +y_0=0 +units=m')")
+    return system
+
+
+def epsg_proj4(code):
+    """The PROJ terms of an EPSG code from GDAL's database (through vtkGDALVectorReader: a GeoJSON
+    of one point that declares the code); "" for a code that GDAL does not know (it then reads the
+    file as lon/lat, without the code's authority)."""
+    import json
+    import os
+    import tempfile
+    from vtkmodules.vtkIOGDAL import vtkGDALVectorReader
+
+    with tempfile.TemporaryDirectory() as directory:
+        path = os.path.join(directory, "crs.geojson")
+        with open(path, "w") as f:
+            json.dump({"type": "FeatureCollection", "crs": {"type": "name", "properties": {"name": f"EPSG:{code}"}},
+                       "features": [{"type": "Feature", "properties": {},
+                                     "geometry": {"type": "Point", "coordinates": [0, 0]}}]}, f)
+        reader = vtkGDALVectorReader()
+        reader.SetFileName(path)
+        reader.Update()
+        if reader.GetNumberOfLayers() != 1 or f'AUTHORITY["EPSG","{code}"]' not in (reader.GetLayerProjection(0) or ""):
+            return ""
+        return reader.GetLayerProjectionAsProj4(0) or ""
+
+
+def leaves(data):
+    """The vtkPolyData blocks of data (a vtkPolyData, or a multiblock of them, nested or not)."""
+    if data.IsA("vtkPolyData"):
+        return [data]
+    return [leaf for k in range(data.GetNumberOfBlocks()) if data.GetBlock(k) is not None
+            for leaf in leaves(data.GetBlock(k))]
+
+
+def densify_edges(data, step):
+    """Cuts every edge of data's polygons and lines (a vtkPolyData or a multiblock of them, changed
+    in place) into pieces of at most step, in its coordinates' units; the cells and their data stay
+    as they are (vtkGDALVectorReader's output has no point data, and gets none)."""
+    from vtkmodules.vtkCommonCore import vtkIdList, vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray
+
+    for leaf in leaves(data):
+        points = leaf.GetPoints()
+        if points is None:
+            continue
+        cut = vtkPoints()
+        cut.SetDataTypeToDouble()
+        cut.DeepCopy(points)  # (the old points keep their ids; the new ones follow)
+        ids = vtkIdList()
+        for cells, closed, assign in ((leaf.GetPolys(), True, leaf.SetPolys), (leaf.GetLines(), False, leaf.SetLines)):
+            pieces = vtkCellArray()
+            cells.InitTraversal()
+            while cells.GetNextCell(ids):
+                count = ids.GetNumberOfIds()
+                kept = []
+                for k in range(count if closed else count - 1):
+                    a, b = points.GetPoint(ids.GetId(k)), points.GetPoint(ids.GetId((k + 1) % count))
+                    kept.append(ids.GetId(k))
+                    n = math.ceil(math.hypot(b[0] - a[0], b[1] - a[1]) / step)
+                    kept.extend(cut.InsertNextPoint(a[0] + i / n * (b[0] - a[0]), a[1] + i / n * (b[1] - a[1]), 0.0)
+                                for i in range(1, n))
+                if not closed and count:
+                    kept.append(ids.GetId(count - 1))
+                pieces.InsertNextCell(len(kept), kept)
+            assign(pieces)
+        leaf.GetPointData().Initialize()
+        leaf.SetPoints(cut)
+
+
+def projection_filter(system, inverse):
+    """A vtkGeographicProjection set to system's projection in the filter's own plane."""
+    projection = csv_input.import_tessera().vtkGeographicProjection()
+    if system.kind == "utm":
+        projection.SetProjectionToUTM()
+        projection.SetUTMZone(system.zone)
+        projection.SetUTMNorth(system.north)
+    else:
+        projection.SetProjection(KINDS[system.kind][1])
+        projection.SetParametersFromData(False)
+        projection.SetCentralLongitude(system.lon0)
+        projection.SetCentralLatitude(system.lat0)
+        projection.SetStandardParallels(system.lat1, system.lat2)
+    projection.SetInverse(inverse)
+    return projection
+
+
+def origin_in_filter_plane(system):
+    """(X, Y): the filter's image of system's origin (lon0, lat0)."""
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    points.InsertNextPoint(system.lon0, system.lat0, 0.0)
+    origin = vtkPolyData()
+    origin.SetPoints(points)
+    projection = projection_filter(system, False)
+    projection.SetInputData(origin)
+    projection.Update()
+    return projection.GetOutput().GetPoint(0)[:2]
+
+
+def into_filter_plane(data, system):
+    """Moves data's points (changed in place) from system's plane to the filter's (the module's
+    formula)."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+    from vtkmodules.vtkCommonCore import vtkPoints
+
+    if system.kind == "utm":
+        return
+    origin = origin_in_filter_plane(system)
+    for leaf in leaves(data):
+        if leaf.GetPoints() is None:
+            continue
+        xyz = vtk_to_numpy(leaf.GetPoints().GetData()).astype(float)  # (a copy, in doubles)
+        for axis, false_origin in ((0, system.x0), (1, system.y0)):
+            xyz[:, axis] = (xyz[:, axis] * system.metres - false_origin) / system.k0 + origin[axis]
+        moved = vtkPoints()
+        moved.SetData(numpy_to_vtk(xyz, deep=True))
+        leaf.SetPoints(moved)
+
+
+def to_lonlat(data, system, where, densify=False):
+    """data (a vtkPolyData or a multiblock of them) with its points made lon/lat from x, y of
+    system (a PlaneSystem), by vtkGeographicProjection's inverse; its edges cut every EDGE_METRES
+    first when densify is set. An error (a point the projection cannot hold) ends the script,
+    where(point index) naming where that point came from."""
+    into_filter_plane(data, system)
+    if densify:
+        densify_edges(data, EDGE_METRES)
+    projection = projection_filter(system, True)
+    projection.SetInputData(data)
+    errors = []
+    csv_input.catch_vtk_messages(projection, errors.append, lambda text: None, errors.append)
+    projection.Update()
+    if errors:
+        point = re.search(r"\bpoint (\d+)", errors[0])
+        csv_input.fail(f"{where(int(point.group(1))) if point else where(-1)}: as {system.describe()}: {errors[0]}")
+    return projection.GetOutputDataObject(0)
+
+
+def main(argv=None):
+    # `python3 projected_input.py` with or without --help: what the module is for (the README's
+    # "every script takes --help" reaches this file too).
+    import argparse
+
+    parser = argparse.ArgumentParser(description=__doc__ + "\nA module imported by colorado_areal_precipitation.py; "
+                                     "it does nothing run on its own.",
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.parse_args(argv)
+    parser.print_help()
+
+
+if __name__ == "__main__":
+    main()
