@@ -20,6 +20,7 @@ another datum (NAD27, ED50, OSGB36) is warned of where the catchment is read.
 
 import math
 import re
+import sys
 
 import csv_input
 
@@ -161,7 +162,25 @@ def stations_system(utm, crs, gdal_messages):
     if isinstance(system, str):
         csv_input.fail(f"--stations-crs {crs!r}: {system} (give EPSG:CODE or PROJ terms such as "
                        "'+proj=aea +lat_0=23 +lon_0=-96 +lat_1=29.5 +lat_2=45.5 +x_0=0 +y_0=0 +units=m')")
+    other = other_ellipsoid(text)
+    if other:
+        print(f"--stations-crs {crs!r}: {other}; the gauges' x, y are made longitude/latitude on WGS84's, without the "
+              "datum shift: they may lie tens to hundreds of metres off (reproject them to WGS84 where that "
+              "matters)", file=sys.stderr)
     return system
+
+
+def other_ellipsoid(proj4):
+    """"the datum NAD27" or "the ellipsoid airy" where PROJ terms name a datum or ellipsoid other
+    than WGS84's or GRS80's (NAD83, ETRS89: within a metre or two of WGS84); else ""."""
+    terms = dict(term[1:].partition("=")[::2] for term in proj4.split() if term.startswith("+"))
+    if terms.get("datum", "WGS84") not in ("WGS84", "NAD83"):
+        return f"the datum {terms['datum']}"
+    if terms.get("ellps", "WGS84") not in ("WGS84", "GRS80"):
+        return f"the ellipsoid {terms['ellps']}"
+    if "a" in terms and terms["a"] != "6378137":
+        return f"an ellipsoid of semi-major axis {terms['a']} m"
+    return ""
 
 
 def epsg_proj4(code):

@@ -1989,6 +1989,12 @@ def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_la
                             f"{name}, {crs}: {a} against {b}")
                 assert_close(float(b["areal_mean"]), float(a["areal_mean"]), 1e-8 * float(b["areal_mean"]),
                              f"{name}, {crs}: the mean {a}")
+        # A system on another ellipsoid is read, and said to leave the datum shift.
+        airy = systems["tmerc"][0].replace("+datum=WGS84", "+ellps=airy")
+        _, stderr = run_colorado(os.path.join(out, "airy"), stations=runs[1][2], observations=observations,
+                                 catchment=catchment, plots=False, what="airy", **{"stations-crs": airy})
+        assert_that(f"--stations-crs {airy!r}: the ellipsoid airy; the gauges' x, y are made longitude/latitude on "
+                    "WGS84's, without the datum shift" in stderr, f"airy: {stderr}")
         laea = dict(LAKE_BASIN, crs={"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::3035"}})
         laea["features"] = json.loads(json.dumps(cut["features"]))
         laea["features"][0]["geometry"]["coordinates"] = [[[x * 1e4, y * 1e4] for x, y in r] for r in rings]
