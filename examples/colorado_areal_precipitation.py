@@ -205,9 +205,13 @@ def station_key(station_id):
     return text
 
 
-def read_gauges(path, system=None):
+def read_gauges(path, system=None, combined=False):
     """The gauges as a vtkPolyData (points in lon/lat, point data station_id and name), and the
-    stations file's line of each gauge (gauge i is the file's i-th record). system: the
+    stations file's line of each gauge (gauge i is the file's i-th record; with combined, its
+    i-th station). combined: the file is the observations file too (as NOAA's Climate Data Online
+    writes one, a row per station and day with the station's place on each): a row repeating an
+    earlier row's station at its place is that gauge's observation, not another gauge, and one
+    at another place ends the script naming both lines. system: the
     projected_input.PlaneSystem of --stations-utm or --stations-crs, for a file of x and y
     columns in it, made lon/lat by the projection's inverse; without it, a file of x and y columns
     and no lon and lat ends the script saying to give the system."""
@@ -226,7 +230,16 @@ def read_gauges(path, system=None):
                        "northings of a UTM zone, give the zone with --stations-utm (such as 13N); of another "
                        "projected system, give it with --stations-crs (such as EPSG:5070)")
     coordinates = ("x", "y") if system else ("lon", "lat")
+    place_of = {}  # (combined) station id: (its place, its first line)
     for line, _, station, name, lon, lat in csv_input.gauges(path, coordinates=coordinates):
+        if combined:
+            place, first = place_of.setdefault(station, ((lon, lat), line))
+            if first != line:
+                if place != (lon, lat):
+                    csv_input.fail(f"{path}:{line}: station {station} at ({lon:.15g}, {lat:.15g}), where line {first} "
+                                   f"puts it at ({place[0]:.15g}, {place[1]:.15g}): a file of both stations and "
+                                   "observations gives each station one place")
+                continue
         if system and system.kind == "utm" and not projected_input.in_utm_range(lon, lat):
             csv_input.fail(f"{path}:{line}: ({lon:.15g}, {lat:.15g}) is not an easting and northing of a UTM zone "
                            f"({projected_input.UTM_RANGE})")
@@ -242,6 +255,16 @@ def read_gauges(path, system=None):
         gauges = projected_input.to_lonlat(gauges, system,
                                            lambda g: f"{path}:{lines[g]}" if 0 <= g < len(lines) else path)
     return gauges, lines
+
+
+def stations_path(observations):
+    """--stations' default: the observations file where its header has station_id, lon and lat
+    (or names ALIAS_OF reads as them), else the Colorado gauges."""
+    if observations and os.path.isfile(observations):
+        if {"station_id", "lon", "lat"} <= csv_input.header_columns(observations, "observations",
+                                                                  ("station_id", "lon", "lat")):
+            return observations
+    return os.path.join(DATA, "colorado_stations.csv")
 
 
 DATE = re.compile(r"([0-9]{4})-([0-9]{1,2})(?:-([0-9]{1,2}))?")
@@ -477,7 +500,7 @@ def at_multiples(minutes):
 TIME_COLUMNS = ("year", "month", "day", "hour", "minute", "date", "time")  # (observation_step's)
 
 
-def observation_records(path, gauge_of, stations_path, station_ids, unmatched, gaps, repeats):
+def observation_records(path, gauge_of, stations_path, station_ids, unmatched, gaps, repeats, flagged):
     """Yields (line, row, station_id, value column) for each observation of the file at path, in
     either of two layouts:
     - long: a record per station and time, with columns station_id and precip (the value column);
@@ -494,7 +517,9 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
       the line's first record yielded, how many), a row repeating the time of an earlier one to
       repeats as (that index, line, the earlier line): the caller names those within --start/--end
       once it knows which records are, as it does its own records' odd values.
-    A file with only one of station_id and precip is a long file lacking the other (named)."""
+    A file with only one of station_id and precip is a long file lacking the other (named). A long
+    file's records whose quality flag (noaa_quality_flag) is set are appended to flagged as (line,
+    flag), and read as given."""
     header = []
     records = csv_input.rows(path, (), "observations", ("station_id", "precip", *TIME_COLUMNS), header,
                              ("station_id", "precip"))
@@ -502,7 +527,10 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
     records = itertools.chain((first,) if first else (), records)
     if "station_id" in header or "precip" in header:
         csv_input.check_columns(path, "observations", ("station_id", "precip"), header)
+        attributes = next((name for name in header if name.lower() in NOAA_ATTRIBUTES), None)
         for line, row in records:
+            if attributes and (flag := noaa_quality_flag(row.get(attributes))):
+                flagged.append((line, flag))
             yield line, row, csv_input.text(row, "station_id", path, line), "precip"
         return
     if not any(name in TIME_COLUMNS for name in header):
@@ -545,6 +573,29 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
         for column in reported or columns[:1]:
             yield line, row, column, column
         yielded += max(len(reported), 1)
+
+
+# The column of NOAA's Climate Data Online CSV beside PRCP: "MFLAG,QFLAG,SFLAG,OBSTIME" for GHCN-Daily.
+NOAA_ATTRIBUTES = ("prcp_attributes", "precip_attributes")
+
+
+def noaa_quality_flag(attributes):
+    """The quality flag (QFLAG, the second field) of NOAA's GHCN-Daily attributes text
+    ("MFLAG,QFLAG,SFLAG" with OBSTIME after, such as ",I,7,0700": I, a value that failed the
+    internal consistency check); "" where it is blank (the value passed every check) or the text
+    has not that form."""
+    fields = (attributes or "").split(",")
+    return fields[1].strip() if len(fields) >= 3 else ""
+
+
+def say_quality_flags(path, flagged):
+    """Names the observations whose NOAA quality flag is set (flagged: (line, flag)): they are
+    read as given, as the file gives them, which may not be what the user wants."""
+    if flagged:
+        shown = first_and_more(flagged, lambda item: f"line {item[0]} ({item[1]})")
+        print(f"{path}: {len(flagged)} observation(s) have a NOAA quality flag (QFLAG, the second field of "
+              f"PRCP_ATTRIBUTES: the value failed a quality check) and are used as given: {shown}; leave them out "
+              "of the file, or blank their values, where they should not count", file=sys.stderr)
 
 
 def say_repeated_times(path, repeats):
@@ -786,6 +837,7 @@ class ObservationRows:
         self.unmatched = []  # a wide file's columns that are no gauge's station
         self.gaps = []  # (row, how many) of a wide file's cells without a value, not made rows
         self.repeats = []  # (row, line, the earlier line) of a wide file's rows repeating an earlier row's time
+        self.flagged = []  # (line, flag) of the rows with a NOAA quality flag (noaa_quality_flag)
         self.summed_repeats = []  # (sum_rows')
 
     def take_steps(self, step_of):
@@ -822,7 +874,7 @@ def scan_observations(path, gauge_of, stations_path, station_ids, missing_values
     present, reporting = set(), {}  # (by step index: ObservationRows' present and reporting)
     first_line, valued_line = [], {}  # (by step index: ObservationRows' first_line and valued_line)
     for line, row, station, column in observation_records(path, gauge_of, stations_path, station_ids, rows.unmatched,
-                                                          rows.gaps, rows.repeats):
+                                                          rows.gaps, rows.repeats, rows.flagged):
         rows.lines.append(line)
         if not len(rows.lines) & 0xFFFF:
             reading.tick(len(rows.lines))
@@ -933,6 +985,7 @@ def say_odd_observations(rows, path, stations_path, missing_values, steps):
         print(f"{path}: {coded} observation(s) with a --missing-value value "
               f"({', '.join(f'{v:g}' for v in sorted(missing_values))}) count as missing", file=sys.stderr)
     say_repeated_times(path, rows.repeats)
+    say_quality_flags(path, rows.flagged)
     if unrecorded := rows.missing_kind.count(1) + sum(count for _, count in rows.gaps):
         print(f"{path}: {unrecorded} observation(s) without a value ({csv_input.MISSING_TEXT}) "
               "count as missing", file=sys.stderr)
@@ -2077,9 +2130,13 @@ def main(argv=None):
                                         "it, and --start 'YYYY-MM-DD 01:00' to start a day")
     parser.add_argument("--end", help="the last step to average, as --start (a month is its last day or hour with "
                                       "daily or hourly observations; default: the observations' last)")
-    parser.add_argument("--stations", default=os.path.join(DATA, "colorado_stations.csv"),
+    parser.add_argument("--stations",
                         help="CSV of gauges: columns station_id, lon, lat (degrees, WGS84), "
-                             f"optional name; {csv_input.SEPARATORS_TEXT}")
+                             f"optional name; {csv_input.SEPARATORS_TEXT}; STATION, LATITUDE, LONGITUDE (as "
+                             "NOAA's Climate Data Online writes them) and other names in ALIAS_OF of csv_input.py "
+                             "are read too. It may be the observations file, with the station's place on each row "
+                             "(as NOAA's CSV has it); default: the observations file where it has such columns, "
+                             "else examples/data/colorado_stations.csv")
     parser.add_argument("--stations-utm", metavar="ZONE",
                         help="the stations file gives eastings and northings in metres of this UTM zone (1 to 60 "
                              "with N or S, such as 13N; WGS84, within a metre or two of NAD83 and ETRS89), in "
@@ -2147,7 +2204,11 @@ def main(argv=None):
     csv_input.output_directory(args.out)
     started = time.time()
     stations_system = projected_input.stations_system(args.stations_utm, args.stations_crs, gdal_messages())
-    gauges, gauge_lines = read_gauges(args.stations, stations_system)
+    if args.stations is None:
+        args.stations = stations_path(args.observations)
+    combined = os.path.isfile(args.stations) and os.path.isfile(args.observations) and os.path.samefile(
+        args.stations, args.observations)
+    gauges, gauge_lines = read_gauges(args.stations, stations_system, combined)
     if not gauge_lines:
         csv_input.fail(f"{args.stations}: no gauges (the file has no rows)")
     ids = gauges.GetPointData().GetAbstractArray("station_id")

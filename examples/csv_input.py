@@ -81,8 +81,11 @@ def rows(path, required, what, optional=(), header=None, delimiter_columns=None)
     decimal_comma = delimiter != "," and has_decimal_commas(text, delimiter)
     reader = csv.DictReader(text_lines(text), delimiter=delimiter, strict=True)
     try:
+        renamed = []
         columns = named_columns([name.strip() for name in reader.fieldnames or []],
-                                (*required, *optional), f"{path}:{max(reader.reader.line_num, 1)}")
+                                (*required, *optional), f"{path}:{max(reader.reader.line_num, 1)}", renamed)
+        if renamed:
+            print(f"{path}: reads column {', '.join(f'{a!r} as {b!r}' for a, b in renamed)}", file=sys.stderr)
         check_columns(path, what, required, columns)
         if header is not None:
             header[:] = columns
@@ -152,7 +155,7 @@ def header_delimiter(text, required=()):
     wanted = {name.lower() for name in required}
     for mark in DELIMITERS:
         try:
-            names = {name.strip().lower() for name in next(csv.reader([header], delimiter=mark), [])}
+            names = {alias_free(name.strip().lower()) for name in next(csv.reader([header], delimiter=mark), [])}
         except csv.Error:
             continue
         if wanted and wanted <= names:
@@ -179,19 +182,38 @@ def decimal_point_text(text, row):
     return text
 
 
-def named_columns(columns, names, where):
+# Other names of the columns, in any case, as downloaded files write them: NOAA's Climate Data
+# Online CSV (STATION, LATITUDE, LONGITUDE, PRCP), and spelt out. A column is read under another
+# name only where the file has none of its own name.
+ALIAS_OF = {"station": "station_id", "latitude": "lat", "longitude": "lon", "long": "lon", "lng": "lon",
+            "prcp": "precip", "precipitation": "precip"}
+
+
+def alias_free(name):
+    """The column name that name (in lower case) stands for: itself, or the one ALIAS_OF gives."""
+    return ALIAS_OF.get(name, name)
+
+
+def named_columns(columns, names, where, renamed=None):
     """The header's columns with each of names in its own spelling where the header has it in
-    another case; ends the script, naming where (file:line of the header), when one of names
-    appears twice (in any case): which of them holds the values would be a guess (a reader of a
-    dict keeps the last)."""
+    another case, or has instead one other name of it (ALIAS_OF), given in renamed (a list of
+    (the header's name, the name read)); ends the script, naming where (file:line of the header),
+    when one of names appears twice (in any case, or as two other names): which of them holds the
+    values would be a guess (a reader of a dict keeps the last)."""
     columns = list(columns)
     for name in names:
         same = [k for k, column in enumerate(columns) if column.lower() == name.lower()]
+        other = [] if same else [k for k, column in enumerate(columns) if ALIAS_OF.get(column.lower()) == name]
         if len(same) > 1:
             fail(f"{where}: column {name!r} appears {len(same)} times (columns "
                  f"{', '.join(str(k + 1) for k in same)}): keep one")
-        if same:
-            columns[same[0]] = name
+        if len(other) > 1:
+            fail(f"{where}: columns {', '.join(repr(columns[k]) for k in other)} could each be {name!r}: keep one, "
+                 f"or name it {name}")
+        for k in same or other:
+            if other and renamed is not None:
+                renamed.append((columns[k], name))
+            columns[k] = name
     return columns
 
 
@@ -255,11 +277,12 @@ def gauges(path, optional=(), coordinates=("lon", "lat")):
 
 def header_columns(path, what, wanted):
     """The column names of the header of the CSV file at path (what it holds: "stations"), in
-    lower case, its separator chosen by the wanted columns as rows() chooses it; none for a
-    header that is not well-formed CSV (rows() names it)."""
+    lower case and for the names they stand for (ALIAS_OF), its separator chosen by the wanted
+    columns as rows() chooses it; none for a header that is not well-formed CSV (rows() names
+    it)."""
     header = decoded(path, what).lstrip().split("\n", 1)[0]
     try:
-        return {name.strip().lower() for name in next(csv.reader([header], delimiter=header_delimiter(
+        return {alias_free(name.strip().lower()) for name in next(csv.reader([header], delimiter=header_delimiter(
             header, wanted)), [])}
     except csv.Error:
         return set()

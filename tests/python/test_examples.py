@@ -2019,6 +2019,60 @@ def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_la
                         f"{message!r} not in {stderr!r}")
 
 
+def test_a_noaa_climate_data_online_file_is_both_stations_and_observations():
+    # NOAA's Climate Data Online CSV: a row per station and day, the station's place on each,
+    # columns STATION, NAME (with commas, quoted), LATITUDE, LONGITUDE, ELEVATION, DATE, PRCP and
+    # PRCP_ATTRIBUTES (MFLAG,QFLAG,SFLAG,OBSTIME). Given as --observations alone, it is the
+    # stations file too: one gauge per station, the columns said to be read under their names,
+    # the flagged value named (and used), and the same means, bit for bit, as a plain stations
+    # file and observations file of the same values. A station at two places, and two columns that
+    # could each be lon, end the run naming them.
+    import itertools
+
+    with tempfile.TemporaryDirectory() as out:
+        catchment, _, _ = write_lake_basin(out)
+        gauges = {s: p for s, p in LAKE_GAUGES.items() if s != "N6"}
+        days = ("2001-01-01", "2001-01-02", "2001-01-03")
+        value = {(s, d): round(1.5 * k + 0.7 * j, 2) for k, s in enumerate(gauges) for j, d in enumerate(days)}
+        value[("N2", days[1])] = None  # (an empty PRCP)
+        header = '"STATION","NAME","LATITUDE","LONGITUDE","ELEVATION","DATE","PRCP","PRCP_ATTRIBUTES"\n'
+        lines = [f'"{s}","{s} GAUGE, NZ","{lat}","{lon}","12.5","{d}","{"" if value[s, d] is None else value[s, d]}",'
+                 f'"{",I,7,0700" if (s, d) == ("N3", days[2]) else ",,7,0700"}"\n'
+                 for (s, (lon, lat)), d in itertools.product(gauges.items(), days)]
+        noaa = write(out, "noaa.csv", header + "".join(lines))
+        flagged_line = 2 + list(itertools.product(gauges, days)).index(("N3", days[2]))
+        _, stderr = run_colorado(os.path.join(out, "noaa"), observations=noaa, catchment=catchment, plots=False,
+                                 what="the NOAA file")
+        said = stderr_messages(stderr)
+        for message in (f"{noaa}: reads column 'STATION' as 'station_id', 'LONGITUDE' as 'lon', 'LATITUDE' as 'lat'",
+                        f"{noaa}: reads column 'STATION' as 'station_id', 'PRCP' as 'precip'",
+                        f"{noaa}: 1 observation(s) have a NOAA quality flag (QFLAG, the second field of "
+                        f"PRCP_ATTRIBUTES: the value failed a quality check) and are used as given: line "
+                        f"{flagged_line} (I)"):
+            assert_that(any(m.startswith(message) for m in said), f"{message!r} not in {said}")
+        assert_that(f"read {len(gauges)} gauges and {len(lines)} observations" in stderr, f"{stderr}")
+        stations = os.path.join(out, "stations.csv")
+        write_stations(stations, gauges)
+        plain = write(out, "plain.csv", "station_id,date,precip\n" + "".join(
+            f"{s},{d},{'' if value[s, d] is None else value[s, d]}\n" for s, d in itertools.product(gauges, days)))
+        run_colorado(os.path.join(out, "plain"), stations=stations, observations=plain, catchment=catchment,
+                     plots=False, what="the plain files")
+        got, want = (read_csv(os.path.join(out, d, "areal_mean.csv")) for d in ("noaa", "plain"))
+        assert_that(got == want and len(got) == len(days), f"the NOAA file's means {got} against {want}")
+        moved = write(out, "moved.csv", header + "".join(lines[:4]) + lines[4].replace('"-39.1"', '"-39.2"', 1)
+                      + "".join(lines[5:]))
+        long = write(out, "long.csv", "station_id,longitude,long,lat\nN1,175.6,175.6,-39.1\n")
+        for options, message in (
+                ({"observations": moved}, f"{moved}:6: station N2 at (176.4, -39.2), where line 5 puts it at "
+                                          "(176.4, -39.1): a file of both stations and observations gives each "
+                                          "station one place"),
+                ({"observations": plain, "stations": long},
+                 f"{long}:1: columns 'longitude', 'long' could each be 'lon': keep one, or name it lon")):
+            _, stderr = run_colorado(os.path.join(out, "bad"), catchment=catchment, plots=False, status=1,
+                                     what=message, **options)
+            assert_that(message in stderr and "Traceback" not in stderr, f"{message!r} not in {stderr!r}")
+
+
 def test_observations_of_no_gauge_end_the_run():
     # Ids that match no gauge at all (a prefix the stations file has and the observations do not)
     # end the run naming both files, instead of a run of months without a mean; so does a stations
@@ -2578,6 +2632,7 @@ if __name__ == "__main__":
          test_a_catchment_in_a_zip_file_is_read_from_it,
          test_a_catchment_declared_projected_is_named, test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means,
          test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_lat_means,
+         test_a_noaa_climate_data_online_file_is_both_stations_and_observations,
          test_the_filters_errors_name_the_file_and_line,
          test_the_filters_warnings_are_lines_of_their_own,
          test_rows_of_empty_fields_are_skipped,
