@@ -27,6 +27,9 @@ Writes into --out:
                          polygons, several for a tile around a lake or across a bay (cell data
                          StationId, GaugeId, Weight, Area_m2 and Value per gauge, CellArea_m2
                          and CellWeight per cell)
+  tiles_YYYY_MM.geojson  the same tiles for a GIS (RFC 7946): a feature per piece with the gauge's
+                         station_id, name, weight, area_km2, precip, and piece_area_km2 and
+                         piece_weight (dissolve by station_id to join a tile's pieces)
   map_YYYY_MM.png        the tiles coloured by that month's precipitation, gauges, the outline
                          (each ring of it), over the catchment and the weighted gauges' extent
   areal_mean.png         the areal-mean time series
@@ -231,7 +234,7 @@ def read_gauges(path, system=None, combined=False):
                        "projected system, give it with --stations-crs (such as EPSG:5070)")
     coordinates = ("x", "y") if system else ("lon", "lat")
     place_of = {}  # (combined) station id: (its place, its first line)
-    for line, _, station, name, lon, lat in csv_input.gauges(path, coordinates=coordinates):
+    for line, _, station, name, lon, lat in csv_input.gauges(path, coordinates=coordinates, distinct=combined):
         if combined:
             place, first = place_of.setdefault(station, ((lon, lat), line))
             if first != line:
@@ -1094,7 +1097,7 @@ def outside_count(outside):
 TAG = r"[0-9]{4}_[0-9]{2}(_[0-9]{2}(_[0-9]{2}(_[0-9]{2})?)?)?"
 OUTPUT_NAME = re.compile(rf"areal_mean\.(csv|png)|areal_mean_by_.+\.csv|unused_inputs\.csv"
                          rf"|weights_all_(months|days|hours|minutes)\.csv"
-                         rf"|weights_{TAG}\.csv|tiles_{TAG}\.vtp|map_{TAG}\.png")
+                         rf"|weights_{TAG}\.csv|tiles_{TAG}\.(vtp|geojson)|map_{TAG}\.png")
 
 
 def say_earlier_outputs(out, written):
@@ -1798,6 +1801,38 @@ def tiles_by_gauge(tiles):
     return result
 
 
+def write_tiles_geojson(tiles, gauges, path):
+    """The step's clipped tiles (the filter's output) as GeoJSON (RFC 7946) at path, for a GIS: a
+    Feature per piece (a Polygon, in lon/lat, anticlockwise, its first vertex repeated last) with
+    the gauge's station_id, name, weight, area_km2 and precip as weights_TAG.csv gives them, and the
+    piece's own piece_area_km2 and piece_weight. A tile whose part of the catchment has a hole or
+    comes in parts is several pieces, each a simple polygon (dissolve by station_id to join them):
+    one feature of rings with holes would need the pieces joined back. Ends the script naming the
+    file when it cannot be written."""
+    import json
+
+    ids = gauges.GetPointData().GetAbstractArray("station_id")
+    names = gauges.GetPointData().GetAbstractArray("name")
+    cd = tiles.GetCellData()
+    gauge_ids, weights, areas, values = (cd.GetArray(n) for n in ("GaugeId", "Weight", "Area_m2", "Value"))
+    piece_areas, piece_weights = cd.GetArray("CellArea_m2"), cd.GetArray("CellWeight")
+    features = []
+    for c, ring in enumerate(polygon_rings(tiles)):  # (the tiles are polygon cells only)
+        g = gauge_ids.GetValue(c)
+        twice_area = sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(ring, ring[1:] + ring[:1]))
+        ring = ring if twice_area >= 0 else ring[::-1]
+        features.append({"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [
+            [list(p) for p in ring + ring[:1]]]}, "properties": {
+            "station_id": ids.GetValue(g), "name": names.GetValue(g), "weight": weights.GetValue(c),
+            "area_km2": areas.GetValue(c) / 1e6, "precip": values.GetValue(c),
+            "piece_area_km2": piece_areas.GetValue(c) / 1e6, "piece_weight": piece_weights.GetValue(c)}})
+    try:
+        with open(path, "w") as f:
+            json.dump({"type": "FeatureCollection", "features": features}, f)
+    except OSError as error:
+        csv_input.fail(f"{path}: cannot write the tiles ({error.strerror or error})")
+
+
 def write_weights(per_gauge, gauges, path):
     ids = gauges.GetPointData().GetAbstractArray("station_id")
     names = gauges.GetPointData().GetAbstractArray("name")
@@ -2288,6 +2323,7 @@ def main(argv=None):
         per_gauge = tiles_by_gauge(tiles)
         write_weights(per_gauge, gauges, os.path.join(args.out, f"weights_{tag}.csv"))
         csv_input.write_vtk(vtkXMLPolyDataWriter(), tiles, os.path.join(args.out, f"tiles_{tag}.vtp"))
+        write_tiles_geojson(tiles, gauges, os.path.join(args.out, f"tiles_{tag}.geojson"))
         if not args.no_plots:
             plot_map(per_gauge, gauges, outline, record.reporting.get(chosen, set()), map_title(rows, steps, chosen),
                      os.path.join(args.out, f"map_{tag}.png"), steps.adjective)
@@ -2296,7 +2332,7 @@ def main(argv=None):
         plot_series(rows, os.path.join(args.out, "areal_mean.png"), steps)
 
     tags = [tag for _, tag, _ in shown]
-    step_files = [name for tag in tags for name in (f"weights_{tag}.csv", f"tiles_{tag}.vtp")]
+    step_files = [name for tag in tags for name in (f"weights_{tag}.csv", f"tiles_{tag}.vtp", f"tiles_{tag}.geojson")]
     plot_files = [] if args.no_plots else [f"map_{tag}.png" for tag in tags] + ["areal_mean.png"]
     say_earlier_outputs(args.out, {"areal_mean.csv", "unused_inputs.csv", *step_files, *plot_files}
                         | (set() if args.no_all_weights else {all_weights})

@@ -29,12 +29,18 @@ def fail(message):
     sys.exit(message)
 
 
-def decoded(path, what):
+def decoded(path, what, head=False):
     """The text of the file: UTF-8 (with or without a byte-order mark), UTF-16 with its mark, or
-    else Windows-1252, which is what a spreadsheet saves as CSV on Windows."""
+    else Windows-1252, which is what a spreadsheet saves as CSV on Windows. head: only its start,
+    up to a line end after some non-blank text or the whole file (a header, without decoding an
+    observations file of 100 MB)."""
     try:
         with open(path, "rb") as handle:
-            data = handle.read()
+            data = handle.read(HEAD_BYTES if head else -1)
+            compressed = data.startswith((b"\x1f\x8b", b"BZh", b"\xfd7zXZ\x00"))
+            has_line = re.search(rb"\S[^\n]*\n", data[:HEAD_BYTES // 2])
+            if head and len(data) == HEAD_BYTES and (compressed or not has_line):
+                data += handle.read()  # (a compressed file, or a header line of more than 32 kB)
     except OSError as error:
         fail(f"{path}: cannot read the {what} file ({error.strerror})")
     # A compressed download or a workbook read as text gave its binary bytes as the "header".
@@ -58,8 +64,13 @@ def decoded(path, what):
             fail(f"{path}: the {what} file is not valid UTF-16 text ({error.reason})")
     try:
         return data.decode("utf-8-sig")
-    except UnicodeDecodeError:
+    except UnicodeDecodeError as error:
+        if head and error.start >= len(data) - 3:  # (a character cut at the head's end)
+            return data[:error.start].decode("utf-8-sig")
         return data.decode("cp1252", errors="replace")
+
+
+HEAD_BYTES = 65536  # (decoded's head: read whole where its first half has no line end after text)
 
 
 def rows(path, required, what, optional=(), header=None, delimiter_columns=None):
@@ -264,13 +275,21 @@ def text(row, column, path, line):
     return value
 
 
-def gauges(path, optional=(), coordinates=("lon", "lat")):
+def gauges(path, optional=(), coordinates=("lon", "lat"), distinct=False):
     """Yields (line, row, station_id, name, lon, lat) for each gauge of a stations file: columns
     station_id, lon, lat (degrees; or the columns named by coordinates, such as x, y), an optional
     name, the other optional columns named (checked as rows() checks them), and any others (left
-    in row)."""
+    in row). distinct: a record whose station id and coordinates are written as an earlier one's
+    is passed over (a file of observations with the station's place on each row: millions of
+    rows, a few hundred stations)."""
     x, y = coordinates
+    seen = set()
     for line, row in rows(path, ("station_id", x, y), "stations", ("name", *optional)):
+        if distinct:
+            written = (row["station_id"], row[x], row[y])
+            if written in seen:
+                continue
+            seen.add(written)
         yield (line, row, text(row, "station_id", path, line), (row.get("name") or "").strip(),
                number(row, x, path, line), number(row, y, path, line))
 
@@ -280,7 +299,7 @@ def header_columns(path, what, wanted):
     lower case and for the names they stand for (ALIAS_OF), its separator chosen by the wanted
     columns as rows() chooses it; none for a header that is not well-formed CSV (rows() names
     it)."""
-    header = decoded(path, what).lstrip().split("\n", 1)[0]
+    header = decoded(path, what, head=True).lstrip().split("\n", 1)[0]
     try:
         return {alias_free(name.strip().lower()) for name in next(csv.reader([header], delimiter=header_delimiter(
             header, wanted)), [])}

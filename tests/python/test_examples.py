@@ -67,6 +67,46 @@ def write_stations(path, gauges):
         f.write("station_id,lon,lat\n" + "".join(f"{s},{lon},{lat}\n" for s, (lon, lat) in gauges.items()))
 
 
+def assert_geojson_tiles(path, tiles, weighted):
+    """Asserts that tiles_TAG.geojson at path holds tiles (the .vtp's vtkPolyData) as the script
+    documents it: a Polygon feature per cell in order, whose one ring is the cell's vertices
+    closed and anticlockwise (reversed where the cell's are not), with the properties of the
+    gauge's row of weighted (weights_TAG.csv's rows) and the cell's area and weight; GDAL's
+    reader gets a ring per feature."""
+    import json
+
+    from vtkmodules.vtkIOGDAL import vtkGDALVectorReader
+
+    with open(path) as f:
+        features = json.load(f)["features"]
+    assert_that(len(features) == tiles.GetNumberOfCells(), f"{path}: {len(features)} features")
+    cd, row_of = tiles.GetCellData(), {w["station_id"]: w for w in weighted}
+    for c, feature in enumerate(features):
+        ring, properties = feature["geometry"]["coordinates"], feature["properties"]
+        assert_that(feature["geometry"]["type"] == "Polygon" and len(ring) == 1, f"{path}: feature {c}")
+        points = [tuple(p) for p in ring[0]]
+        cell = tiles.GetCell(c)
+        vertices = [tiles.GetPoint(cell.GetPointId(k))[:2] for k in range(cell.GetNumberOfPoints())]
+        twice_area = sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(points, points[1:]))
+        assert_that(points[0] == points[-1] and twice_area > 0 and points[:-1] in (vertices, vertices[::-1]),
+                    f"{path}: feature {c}'s ring against the cell's vertices")
+        row = row_of[properties["station_id"]]
+        for name in ("weight", "area_km2", "precip"):
+            assert_close(properties[name], float(row[name]), 1e-14 * abs(float(row[name])),
+                         f"{path}: feature {c}'s {name}")
+        assert_that(properties["name"] == row["name"], f"{path}: feature {c}'s name {properties['name']!r}")
+        assert_close(properties["piece_area_km2"] * 1e6, cd.GetArray("CellArea_m2").GetValue(c),
+                     1e-9 * properties["piece_area_km2"] * 1e6, f"{path}: feature {c}'s piece_area_km2")
+        assert_that(properties["piece_weight"] == cd.GetArray("CellWeight").GetValue(c),
+                    f"{path}: feature {c}'s piece_weight")
+    reader = vtkGDALVectorReader()
+    reader.SetFileName(path)
+    reader.Update()
+    output = reader.GetOutput()  # (a block per feature, a polygon's ring a polygon or a closed line)
+    rings = [output.GetBlock(k).GetNumberOfCells() for k in range(output.GetNumberOfBlocks())]
+    assert_that(rings == [1] * len(features), f"{path}: GDAL reads rings {rings} of {len(features)} features")
+
+
 def read_polydata(path):
     """A .vtp file's vtkPolyData."""
     from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
@@ -140,6 +180,9 @@ def test_the_colorado_main_job():
                          f"station {w['station_id']}: tiles' Weight against weights_{tag}.csv")
             assert_close(cells, float(w["weight"]), 1e-12,
                          f"station {w['station_id']}: its cells' CellWeight against weights_{tag}.csv")
+        # The same tiles as GeoJSON for a GIS: a feature per cell, its ring the cell's closed and
+        # anticlockwise, its properties the weights file's and the cell's; GDAL reads it.
+        assert_geojson_tiles(os.path.join(out, f"tiles_{tag}.geojson"), tiles, weighted)
         # Every month's weights: a month's rows are its weighted gauges, summing to 1, and their
         # weight x precip sums to the month's areal mean.
         per_month = {}
@@ -386,6 +429,11 @@ def test_the_map_of_another_place_with_a_lake():
         cell_weight = tiles.GetCellData().GetArray("CellWeight")
         assert_close(math.fsum(cell_weight.GetValue(c) for c in range(tiles.GetNumberOfCells())), 1.0, 1e-12,
                      "the lake basin's cells' CellWeight")
+        # Its GeoJSON: the tile round the lake in pieces, each a feature of its own.
+        geojson = os.path.join(out, "tiles_2001_01.geojson")
+        assert_geojson_tiles(geojson, tiles, weights)
+        stations = [tiles.GetCellData().GetAbstractArray("StationId").GetValue(c) for c in range(len(cells))]
+        assert_that(len(cells) > len(set(stations)) == len(weights), f"the lake basin's pieces: {stations}")
         # The outline, ring by ring: GDAL's reading of the file gives back the file's two rings.
         _, rings = example.read_catchment(catchment)
         expected = [[tuple(p) for p in ring[:-1]] for ring in LAKE_BASIN["features"][0]["geometry"]["coordinates"]]
@@ -1050,7 +1098,8 @@ def test_an_earlier_runs_files_in_out_are_named():
         os.makedirs(out)
         for own in ("weights_by_hand.csv", "map_of_the_basin.png", "notes.txt"):  # (the user's: not named)
             write(out, own, "")
-        earlier = ["areal_mean.png", "map_2001_01_30.png", "tiles_2001_01_30.vtp", "weights_2001_01_30.csv"]
+        earlier = ["areal_mean.png", "map_2001_01_30.png", "tiles_2001_01_30.geojson", "tiles_2001_01_30.vtp",
+                   "weights_2001_01_30.csv"]
         for day, plots, named in (("2001-01-30", True, []), ("2001-02-01", False, earlier),
                                   ("2001-02-01", False, earlier)):
             _, stderr = run_colorado(out, stations=stations, observations=daily, catchment=catchment, day=day,
@@ -1083,13 +1132,14 @@ def test_several_days_get_the_files_each_gets_alone():
         lines = stdout.splitlines()
         for day, (out, said) in alone.items():
             tag = day.replace("-", "_")
-            for name in (f"weights_{tag}.csv", f"tiles_{tag}.vtp", f"map_{tag}.png"):
+            for name in (f"weights_{tag}.csv", f"tiles_{tag}.vtp", f"tiles_{tag}.geojson", f"map_{tag}.png"):
                 with open(os.path.join(out, name), "rb") as a, open(os.path.join(both, name), "rb") as b:
                     assert_that(a.read() == b.read(), f"{name}: differs from the run for {day} alone")
             assert_that(said[1] in lines, f"{day}: {said[1]!r} not in {lines}")
         assert_that("note: 2002-01-01 is not in the record; showing 2001-02-02" in stderr, stderr)
         assert_that(len(lines) == 4 and [line[:10] for line in lines[1:3]] == ["2001-01-30", "2001-02-02"]
-                    and "weights_2001_01_30.csv, tiles_2001_01_30.vtp, weights_2001_02_02.csv, tiles_2001_02_02.vtp, "
+                    and "weights_2001_01_30.csv, tiles_2001_01_30.vtp, tiles_2001_01_30.geojson, weights_2001_02_02.csv, "
+                    "tiles_2001_02_02.vtp, tiles_2001_02_02.geojson, "
                     "map_2001_01_30.png, map_2001_02_02.png, areal_mean.png, unused_inputs.csv" in lines[3],
                     f"the three days' lines: {lines}")
         # Without --day the day nearest 1963-08 where a gauge reported: 2001-01-30, not --start's day
@@ -1103,8 +1153,9 @@ def test_several_days_get_the_files_each_gets_alone():
                                  **dict(common, observations=august))
         assert_that(stdout.splitlines()[1].startswith("1963-08-02: "), f"the default day: {stdout}")
         files = sorted(name for name in os.listdir(both) if name.startswith(("weights_2", "tiles_", "map_")))
-        assert_that(files == ["map_2001_01_30.png", "map_2001_02_02.png", "tiles_2001_01_30.vtp",
-                              "tiles_2001_02_02.vtp", "weights_2001_01_30.csv", "weights_2001_02_02.csv"],
+        assert_that(files == ["map_2001_01_30.png", "map_2001_02_02.png", "tiles_2001_01_30.geojson",
+                              "tiles_2001_01_30.vtp", "tiles_2001_02_02.geojson", "tiles_2001_02_02.vtp",
+                              "weights_2001_01_30.csv", "weights_2001_02_02.csv"],
                     f"the three days' files: {files}")
 
 
@@ -2027,6 +2078,7 @@ def test_a_noaa_climate_data_online_file_is_both_stations_and_observations():
     # the flagged value named (and used), and the same means, bit for bit, as a plain stations
     # file and observations file of the same values. A station at two places, and two columns that
     # could each be lon, end the run naming them.
+    import gzip
     import itertools
 
     with tempfile.TemporaryDirectory() as out:
@@ -2057,8 +2109,13 @@ def test_a_noaa_climate_data_online_file_is_both_stations_and_observations():
             f"{s},{d},{'' if value[s, d] is None else value[s, d]}\n" for s, d in itertools.product(gauges, days)))
         run_colorado(os.path.join(out, "plain"), stations=stations, observations=plain, catchment=catchment,
                      plots=False, what="the plain files")
-        got, want = (read_csv(os.path.join(out, d, "areal_mean.csv")) for d in ("noaa", "plain"))
-        assert_that(got == want and len(got) == len(days), f"the NOAA file's means {got} against {want}")
+        # The file gzipped, as a large one is kept: the same (its header is read decompressed).
+        with open(noaa, "rb") as f, gzip.open(noaa + ".gz", "wb") as z:
+            z.write(f.read())
+        run_colorado(os.path.join(out, "gz"), observations=noaa + ".gz", catchment=catchment, plots=False,
+                     what="the NOAA file gzipped")
+        got, zipped, want = (read_csv(os.path.join(out, d, "areal_mean.csv")) for d in ("noaa", "gz", "plain"))
+        assert_that(got == want == zipped and len(got) == len(days), f"the NOAA file's means {got} against {want}")
         moved = write(out, "moved.csv", header + "".join(lines[:4]) + lines[4].replace('"-39.1"', '"-39.2"', 1)
                       + "".join(lines[5:]))
         long = write(out, "long.csv", "station_id,longitude,long,lat\nN1,175.6,175.6,-39.1\n")
