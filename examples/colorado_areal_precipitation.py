@@ -522,7 +522,7 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
       once it knows which records are, as it does its own records' odd values.
     A file with only one of station_id and precip is a long file lacking the other (named). A long
     file's records whose quality flag (noaa_quality_flag) is set are appended to flagged as (line,
-    flag), and read as given."""
+    flag, station_id), before the record is yielded."""
     header = []
     records = csv_input.rows(path, (), "observations", ("station_id", "precip", *TIME_COLUMNS), header,
                              ("station_id", "precip"))
@@ -532,9 +532,10 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
         csv_input.check_columns(path, "observations", ("station_id", "precip"), header)
         attributes = next((name for name in header if name.lower() in NOAA_ATTRIBUTES), None)
         for line, row in records:
+            station = csv_input.text(row, "station_id", path, line)
             if attributes and (flag := noaa_quality_flag(row.get(attributes))):
-                flagged.append((line, flag))
-            yield line, row, csv_input.text(row, "station_id", path, line), "precip"
+                flagged.append((line, flag, station))
+            yield line, row, station, "precip"
         return
     if not any(name in TIME_COLUMNS for name in header):
         unnamed = " (its first column has no name: if it holds the times, name it date)" if header[:1] == [""] else ""
@@ -591,14 +592,15 @@ def noaa_quality_flag(attributes):
     return fields[1].strip() if len(fields) >= 3 else ""
 
 
-def say_quality_flags(path, flagged):
-    """Names the observations whose NOAA quality flag is set (flagged: (line, flag)): they are
-    read as given, as the file gives them, which may not be what the user wants."""
+def say_quality_flags(path, flagged, dropped):
+    """Names the observations whose NOAA quality flag is set (flagged: (line, flag, station_id)):
+    used as given, or with dropped (--drop-flagged) read as missing."""
     if flagged:
         shown = first_and_more(flagged, lambda item: f"line {item[0]} ({item[1]})")
+        done = ("are left out, read as missing (--drop-flagged; unused_inputs.csv lists them)" if dropped else
+                "are used as given (--drop-flagged leaves them out)")
         print(f"{path}: {len(flagged)} observation(s) have a NOAA quality flag (QFLAG, the second field of "
-              f"PRCP_ATTRIBUTES: the value failed a quality check) and are used as given: {shown}; leave them out "
-              "of the file, or blank their values, where they should not count", file=sys.stderr)
+              f"PRCP_ATTRIBUTES: the value failed a quality check) and {done}: {shown}", file=sys.stderr)
 
 
 def say_repeated_times(path, repeats):
@@ -634,13 +636,15 @@ MOST_STEPS = 2_000_000
 # number, name); the observations outside --start/--end, in runs (rows_in_period); the Period.
 # read: the number of observations the file gave (more than the table's rows where --sum-to summed
 # them).
-# summed_repeats: the rows --sum-to left out as repeats (sum_rows').
+# summed_repeats: the rows --sum-to left out as repeats (sum_rows'). dropped: the rows --drop-flagged
+# read as missing, as (line, flag, station_id).
 Observations = collections.namedtuple("Observations",
-                                      "table steps reporting lines unmatched outside period read summed_repeats")
+                                      "table steps reporting lines unmatched outside period read summed_repeats "
+                                      "dropped")
 
 
 def read_observations(path, gauge_of, filler, stations_path, missing_values=(), station_ids=(), bounds=(None, None),
-                      bound_texts=(None, None), sum_to=None):
+                      bound_texts=(None, None), sum_to=None, drop_flagged=False):
     """The observations of a long or a wide file (observation_records), as Observations. gauge_of:
     the gauge that a station's observations go to, by station_key() (ids are compared as the filter
     compares them; a step none of whose rows names a gauge's station is a step where no gauge
@@ -652,10 +656,11 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     (period_bound's, or None), as bound_texts gives them: only the observations between them are
     in the table (the others are in Observations.outside), and the table's steps run from the one
     to the other. sum_to: --sum-to's minutes, or None: each gauge's values are summed into steps of
-    that many minutes (sum_rows)."""
+    that many minutes (sum_rows). drop_flagged: values with a NOAA quality flag are read as
+    missing."""
     from vtkmodules.vtkCommonDataModel import vtkTable
 
-    rows = scan_observations(path, gauge_of, stations_path, station_ids, missing_values)
+    rows = scan_observations(path, gauge_of, stations_path, station_ids, missing_values, drop_flagged)
     steps, step_of = file_steps(rows, path, station_ids, sum_to)
     if sum_to:
         fine = (steps.minutes, step_of)  # (the file's steps, for sum_rows)
@@ -669,7 +674,10 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
                        f"(ids here: {', '.join(seen[:5])}{', ...' if len(seen) > 5 else ''}; ids there: "
                        f"{', '.join(there[:5])}{', ...' if len(there) > 5 else ''})")
     outside = keep_period(rows, period, steps, step_of, path, bound_texts) if period.given() else []
-    say_odd_observations(rows, path, stations_path, missing_values, steps)
+    if rows.flagged:  # (those outside --start/--end are listed as such)
+        kept = set(rows.lines)
+        rows.flagged = [item for item in rows.flagged if item[0] in kept]
+    say_odd_observations(rows, path, stations_path, missing_values, steps, drop_flagged)
     read = len(rows.lines)
     if sum_to:
         sum_rows(rows, steps, step_of, fine, path)
@@ -684,7 +692,7 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
     for column in (rows.stations, times, rows.values):
         table.AddColumn(column)
     return Observations(table, steps, rows.reporting, rows.lines, rows.unmatched, outside, period, read,
-                        rows.summed_repeats)
+                        rows.summed_repeats, rows.flagged if drop_flagged else [])
 
 
 def summed_steps(steps, step_of, minutes, path):
@@ -826,7 +834,7 @@ class ObservationRows:
         self.values.SetName("precip")
         self.lines = array.array("l")  # the file's line of each row read
         self.read = array.array("l")  # the index of each row's step in step_index
-        self.missing_kind = array.array("b")
+        self.missing_kind = array.array("b")  # per row: 0 a value, 1 none, 2 --missing-value's, 3 dropped flagged
         self.step_index = {}  # each step read, by first appearance
         self.first_line, self.valued_line = {}, {}  # each step's first line, and first with a gauge's value
         self.negative = []  # (row, line) of the negative values
@@ -864,7 +872,7 @@ class ObservationRows:
         return times
 
 
-def scan_observations(path, gauge_of, stations_path, station_ids, missing_values):
+def scan_observations(path, gauge_of, stations_path, station_ids, missing_values, drop_flagged=False):
     """The ObservationRows of every record of the file (observation_records), with each record's
     step as observation_step reads it (once per time as written, and each station id's gauge once
     per id as written: a file of 5-minute steps has 20 rows of each time, and millions of rows);
@@ -899,7 +907,9 @@ def scan_observations(path, gauge_of, stations_path, station_ids, missing_values
         # A missing value stays in the table as NaN: the gauge does not report that month (the
         # filter drops it for that step), and the month remains a step even if no gauge reports.
         value = math.nan
-        if csv_input.is_missing(row.get(column)):
+        if drop_flagged and rows.flagged and rows.flagged[-1][0] == line:  # (observation_records' last)
+            rows.missing_kind.append(3)
+        elif csv_input.is_missing(row.get(column)):
             rows.missing_kind.append(1)
         elif (number := csv_input.number(row, column, path, line)) in missing_values:
             rows.missing_kind.append(2)
@@ -976,10 +986,10 @@ def keep_period(rows, period, steps, step_of, path, bound_texts):
     return outside
 
 
-def say_odd_observations(rows, path, stations_path, missing_values, steps):
+def say_odd_observations(rows, path, stations_path, missing_values, steps, dropped=False):
     """Warns of what the rows kept hold that may not be what the file means: a wide file's columns
-    of no station, --missing-value values, repeated times, values missing or negative, and daily
-    values that look monthly."""
+    of no station, --missing-value values, repeated times, values with a NOAA quality flag (left
+    out where dropped), values missing or negative, and daily values that look monthly."""
     if rows.unmatched:
         shown = first_and_more(rows.unmatched, lambda column: f"{column[1]!r} (column {column[0]})")
         print(f"{path}: {len(rows.unmatched)} column(s) name no station of {stations_path} and are not read: {shown}",
@@ -988,7 +998,7 @@ def say_odd_observations(rows, path, stations_path, missing_values, steps):
         print(f"{path}: {coded} observation(s) with a --missing-value value "
               f"({', '.join(f'{v:g}' for v in sorted(missing_values))}) count as missing", file=sys.stderr)
     say_repeated_times(path, rows.repeats)
-    say_quality_flags(path, rows.flagged)
+    say_quality_flags(path, rows.flagged, dropped)
     if unrecorded := rows.missing_kind.count(1) + sum(count for _, count in rows.gaps):
         print(f"{path}: {unrecorded} observation(s) without a value ({csv_input.MISSING_TEXT}) "
               "count as missing", file=sys.stderr)
@@ -1624,6 +1634,7 @@ def write_summary(table, steps, path):
 # gives them: (array, what it lists ({unit}: month or day), whether it lists observation rows
 # rather than gauges).
 OUTSIDE_PERIOD = "observation before --start or after --end"
+DROPPED_FLAGGED = "observation with a NOAA quality flag (left out: --drop-flagged)"
 SUMMED_REPEAT = "observation repeating the station and time of an earlier one with a value (left out of --sum-to's sum)"
 UNUSED_LISTS = (
     ("UnobservedGaugeIds", "gauge without any observed value", False),
@@ -1734,7 +1745,7 @@ def write_means_by_feature(features, name, gauges, observations, steps, whole, c
 
 
 def write_unused(summary, files, station_ids, observations, unit, path, unmatched_columns=(), outside=(),
-                 summed_repeats=()):
+                 summed_repeats=(), dropped=()):
     """Every input the filter did not use, one row each (the warnings name the first 20 of each
     kind): kind, file, line, station_id and a note: for a gauge at the place of an earlier one,
     that gauge's line; for an observation repeating an earlier one, the earlier one's line; a
@@ -1744,7 +1755,8 @@ def write_unused(summary, files, station_ids, observations, unit, path, unmatche
     rows_in_period's runs), which the filter never saw: its lines (first-last), its station, or
     when it holds several, how many observations of how many stations; and a row for each
     observation --sum-to left out as a repeat (summed_repeats: sum_rows'), the earlier one's line
-    in the note. Returns the number of inputs listed."""
+    in the note; and a row for each value --drop-flagged left out (dropped: (line, flag,
+    station_id)), its flag in the note. Returns the number of inputs listed."""
     fields = summary.GetFieldData()
     stations = observations.GetColumnByName("station_id")
     earlier = fields.GetArray("DuplicateOfGaugeIds")
@@ -1775,6 +1787,9 @@ def write_unused(summary, files, station_ids, observations, unit, path, unmatche
             written += 1
         for line, earlier, station in summed_repeats:
             out.writerow([SUMMED_REPEAT, files.observations, line, station, f"repeats line {earlier}"])
+            written += 1
+        for line, flag, station in dropped:
+            out.writerow([DROPPED_FLAGGED, files.observations, line, station, f"QFLAG {flag}"])
             written += 1
         for first, last, count, names in outside:
             several = f" of {len(names)} stations" if len(names) > 1 else ""
@@ -2210,6 +2225,11 @@ def main(argv=None):
                              "with a null one, as 0 or empty text: it is grouped there)")
     parser.add_argument("--missing-value", action="append", type=float, default=[], metavar="NUMBER",
                         help="a precip value that means missing, such as -9999 (may be given more than once)")
+    parser.add_argument("--drop-flagged", action="store_true",
+                        help="leave out the values that have a NOAA quality flag (QFLAG, the second field of "
+                             "PRCP_ATTRIBUTES in NOAA's Climate Data Online CSV: the value failed a quality check), "
+                             "reading them as missing and listing them in unused_inputs.csv; without it they are "
+                             "used as given, and named")
     parser.add_argument("--no-plots", action="store_true", help="skip the PNG files")
     parser.add_argument("--no-all-weights", action="store_true",
                         help="skip weights_all_*.csv (every step's weights: with thousands of gauges and "
@@ -2254,7 +2274,7 @@ def main(argv=None):
         gauge_of.setdefault(station_key(station), i)
     record = read_observations(
         args.observations, gauge_of, min(station_ids, default=None), args.stations, set(args.missing_value),
-        station_ids, bounds, (args.start, args.end), args.sum_to)
+        station_ids, bounds, (args.start, args.end), args.sum_to, args.drop_flagged)
     observations, steps = record.table, record.steps
     for option, when in asked:
         if len(when) > steps.fields:
@@ -2298,7 +2318,7 @@ def main(argv=None):
         write_all_weights(average.GetOutputDataObject(2), steps, os.path.join(args.out, all_weights))
     unused = write_unused(summary, files, station_ids, observations, steps.noun,
                           os.path.join(args.out, "unused_inputs.csv"), record.unmatched, record.outside,
-                          record.summed_repeats)
+                          record.summed_repeats, record.dropped)
     if groups:
         by_feature = "areal_mean_by_" + re.sub(r"[^A-Za-z0-9_.-]", "_", each) + ".csv"
         write_means_by_feature(groups, each, gauges, observations, steps, average, args.catchment,

@@ -2099,8 +2099,8 @@ def test_a_noaa_climate_data_online_file_is_both_stations_and_observations():
         for message in (f"{noaa}: reads column 'STATION' as 'station_id', 'LONGITUDE' as 'lon', 'LATITUDE' as 'lat'",
                         f"{noaa}: reads column 'STATION' as 'station_id', 'PRCP' as 'precip'",
                         f"{noaa}: 1 observation(s) have a NOAA quality flag (QFLAG, the second field of "
-                        f"PRCP_ATTRIBUTES: the value failed a quality check) and are used as given: line "
-                        f"{flagged_line} (I)"):
+                        f"PRCP_ATTRIBUTES: the value failed a quality check) and are used as given (--drop-flagged "
+                        f"leaves them out): line {flagged_line} (I)"):
             assert_that(any(m.startswith(message) for m in said), f"{message!r} not in {said}")
         assert_that(f"read {len(gauges)} gauges and {len(lines)} observations" in stderr, f"{stderr}")
         stations = os.path.join(out, "stations.csv")
@@ -2116,6 +2116,25 @@ def test_a_noaa_climate_data_online_file_is_both_stations_and_observations():
                      what="the NOAA file gzipped")
         got, zipped, want = (read_csv(os.path.join(out, d, "areal_mean.csv")) for d in ("noaa", "gz", "plain"))
         assert_that(got == want == zipped and len(got) == len(days), f"the NOAA file's means {got} against {want}")
+        # --drop-flagged: the flagged value read as missing, as a plain file without it gives, and
+        # listed as unused with its flag.
+        _, stderr = run_colorado(os.path.join(out, "dropped"), "--drop-flagged", observations=noaa, catchment=catchment,
+                                 plots=False, what="--drop-flagged")
+        assert_that(f"and are left out, read as missing (--drop-flagged; unused_inputs.csv lists them): line "
+                    f"{flagged_line} (I)" in stderr, f"--drop-flagged: {stderr}")
+        _, stderr = run_colorado(os.path.join(out, "before"), "--drop-flagged", observations=noaa, catchment=catchment,
+                                 plots=False, what="--end before the flagged day", end=days[1])
+        assert_that("quality flag" not in stderr, f"the flagged value outside --end is named: {stderr}")
+        value[("N3", days[2])] = None
+        blank = write(out, "blank.csv", "station_id,date,precip\n" + "".join(
+            f"{s},{d},{'' if value[s, d] is None else value[s, d]}\n" for s, d in itertools.product(gauges, days)))
+        run_colorado(os.path.join(out, "blank"), stations=stations, observations=blank, catchment=catchment,
+                     plots=False, what="the plain file without the flagged value")
+        got, want = (read_csv(os.path.join(out, d, "areal_mean.csv")) for d in ("dropped", "blank"))
+        assert_that(got == want and got[2] != zipped[2], f"--drop-flagged's means {got} against {want}")
+        unused = [r for r in read_csv(os.path.join(out, "dropped", "unused_inputs.csv")) if "quality flag" in r["kind"]]
+        assert_that(unused == [{"kind": "observation with a NOAA quality flag (left out: --drop-flagged)", "file": noaa,
+                                "line": str(flagged_line), "station_id": "N3", "note": "QFLAG I"}], f"{unused}")
         moved = write(out, "moved.csv", header + "".join(lines[:4]) + lines[4].replace('"-39.1"', '"-39.2"', 1)
                       + "".join(lines[5:]))
         long = write(out, "long.csv", "station_id,longitude,long,lat\nN1,175.6,175.6,-39.1\n")
