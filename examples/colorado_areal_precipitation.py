@@ -208,7 +208,7 @@ def station_key(station_id):
     return text
 
 
-def read_gauges(path, system=None, combined=False):
+def read_gauges(path, system=None, combined=False, id_field=None):
     """The gauges as a vtkPolyData (points in lon/lat, point data station_id and name), and the
     stations file's line of each gauge (gauge i is the file's i-th record; with combined, its
     i-th station). combined: the file is the observations file too (as NOAA's Climate Data Online
@@ -217,9 +217,19 @@ def read_gauges(path, system=None, combined=False):
     at another place ends the script naming both lines. system: the
     projected_input.PlaneSystem of --stations-utm or --stations-crs, for a file of x and y
     columns in it, made lon/lat by the projection's inverse; without it, a file of x and y columns
-    and no lon and lat ends the script saying to give the system."""
+    and no lon and lat ends the script saying to give the system. A GIS file of points
+    (GIS_SUFFIXES) is read by read_gauge_points (id_field: --stations-id)."""
     from vtkmodules.vtkCommonCore import vtkPoints, vtkStringArray
     from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+    if path.lower().endswith(GIS_SUFFIXES):
+        if system:
+            csv_input.fail(f"{path}: --stations-utm and --stations-crs are for a CSV file's x and y; a GIS file "
+                           "declares its own coordinate system")
+        return read_gauge_points(path, id_field)
+    if id_field:
+        csv_input.fail(f"--stations-id {id_field}: is for a GIS file of points (a CSV file's ids are its "
+                       "station_id column)")
 
     points = vtkPoints()
     points.SetDataTypeToDouble()
@@ -258,6 +268,70 @@ def read_gauges(path, system=None, combined=False):
         gauges = projected_input.to_lonlat(gauges, system,
                                            lambda g: f"{path}:{lines[g]}" if 0 <= g < len(lines) else path)
     return gauges, lines
+
+
+GIS_SUFFIXES = (".geojson", ".json", ".shp", ".kml", ".gpkg", ".zip")
+STATION_FIELDS = ("station_id", "station", "site_no", "id")  # (a GIS file's id attribute, in this order)
+
+
+def read_gauge_points(path, id_field=None):
+    """The gauges of a GIS file of points (as read_gis_file reads it): the vtkPolyData that
+    read_gauges gives, and each gauge's feature number (from 1), which stands for its line in the
+    messages and in unused_inputs.csv. The station id is the attribute id_field (--stations-id),
+    else the first of STATION_FIELDS that the file has (in any case); the name, a "name"
+    attribute where there is one. A file declaring a projected system (projected_input) is made
+    lon/lat. Ends the script naming the file (and the feature) where GDAL reads no feature, a
+    feature is not one point, or no attribute holds the ids."""
+    from vtkmodules.vtkCommonCore import vtkPoints, vtkStringArray
+    from vtkmodules.vtkCommonDataModel import VTK_VERTEX, vtkPolyData
+
+    reader, output, errors, gdal = read_gis_file(path, "stations", "a GeoJSON or shapefile of points")
+    blocks = polydata_blocks(output) if output else []
+    reasons = [text for level, text in gdal if level == "ERROR"]
+    if errors or not blocks:
+        csv_input.fail(f"{path}: GDAL read no feature from the stations file (expected a GeoJSON or shapefile of "
+                       "points, or a CSV file with a header such as station_id,lon,lat)"
+                       + (f"; GDAL: {reasons[0]}" if reasons else ""))
+    for level, message in gdal:
+        if level:
+            print(f"{path}: GDAL: {message}", file=sys.stderr)
+    for k, block in enumerate(blocks, 1):
+        if block.GetNumberOfCells() != 1 or block.GetCellType(0) != VTK_VERTEX:
+            csv_input.fail(f"{path}: feature {k} is not one point ({cell_kinds(block)}): a stations file holds a point "
+                           "per gauge")
+    data = blocks[0].GetCellData()
+    fields = [data.GetAbstractArray(i).GetName() for i in range(data.GetNumberOfArrays())]
+    lower = {}
+    for name in fields:
+        lower.setdefault(name.lower(), name)
+    field = id_field if id_field else next((lower[f] for f in STATION_FIELDS if f in lower), None)
+    if field not in fields:
+        wanted = f"named {id_field!r}" if id_field else f"holds the station ids ({', '.join(STATION_FIELDS)})"
+        csv_input.fail(f"{path}: no attribute {wanted}; its attributes: {', '.join(fields) or 'none'} (give the one "
+                       "holding the ids with --stations-id)")
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    ids, names = vtkStringArray(), vtkStringArray()
+    ids.SetName("station_id")
+    names.SetName("name")
+    for k, block in enumerate(blocks, 1):
+        values = block.GetCellData().GetAbstractArray(field)
+        station = attribute_text(values).strip() if values else ""
+        if not station:
+            csv_input.fail(f"{path}: feature {k}: its attribute {field!r} (the station id) is empty")
+        name = block.GetCellData().GetAbstractArray(lower.get("name", ""))
+        points.InsertNextPoint(block.GetPoint(block.GetCell(0).GetPointId(0)))
+        ids.InsertNextValue(station)
+        names.InsertNextValue(attribute_text(name).strip() if name else "")
+    gauges = vtkPolyData()
+    gauges.SetPoints(points)
+    gauges.GetPointData().AddArray(ids)
+    gauges.GetPointData().AddArray(names)
+    xy = [points.GetPoint(g)[:2] for g in range(points.GetNumberOfPoints())]
+    system = projected_input.declared_system(reader, [xy], path)
+    if system:
+        gauges = projected_input.to_lonlat(gauges, system, lambda g: f"{path}: feature {g + 1}")
+    return gauges, list(range(1, len(xy) + 1))
 
 
 def stations_path(observations):
@@ -1268,19 +1342,19 @@ def gdal_messages():
     return GDAL_MESSAGES
 
 
-def read_catchment(path, feature=None):
-    """The catchment (a vtkGDALVectorReader's output: a multiblock with a block per feature, or the
-    features chosen by `feature`, "ATTRIBUTE=VALUE") and its rings (catchment_rings); ends the
-    script naming the file when it is missing, unreadable or holds no polygon, or when no
-    feature has the value."""
+def read_gis_file(path, what, expected):
+    """(reader, output, errors, gdal) of a GIS file (GeoJSON, shapefile, KML, GeoPackage, or a zip
+    file holding one) read by vtkGDALVectorReader (updated; output: a multiblock with a block per
+    feature), with VTK's error events and GDAL's messages (GdalMessages.new's) while it read; ends
+    the script naming the file when it is a directory, missing, or a shapefile without its .shx.
+    what: what the file holds ("catchment"), expected: what it should be (for the messages)."""
     from vtkmodules.vtkCommonCore import vtkCommand
     from vtkmodules.vtkIOGDAL import vtkGDALVectorReader
 
     if os.path.isdir(path):
-        csv_input.fail(f"{path}: is a directory, not a catchment file (expected a GeoJSON or "
-                       "shapefile polygon in lon/lat)")
+        csv_input.fail(f"{path}: is a directory, not a {what} file (expected {expected})")
     if not os.path.isfile(path):
-        csv_input.fail(f"{path}: no such catchment file")
+        csv_input.fail(f"{path}: no such {what} file")
     source = zip_member(path) if path.lower().endswith(".zip") else path
     # A shapefile is several files: GDAL's own message for a missing one is a raw log line.
     stem, extension = os.path.splitext(path)
@@ -1294,9 +1368,16 @@ def read_catchment(path, feature=None):
     reader.SetFileName(source)
     with gdal_messages().capturing():
         reader.Update()
-    output = reader.GetOutput()
+    return reader, reader.GetOutput(), errors, gdal_messages().new()
+
+
+def read_catchment(path, feature=None):
+    """The catchment (a vtkGDALVectorReader's output: a multiblock with a block per feature, or the
+    features chosen by `feature`, "ATTRIBUTE=VALUE") and its rings (catchment_rings); ends the
+    script naming the file when it is missing, unreadable or holds no polygon, or when no
+    feature has the value."""
+    reader, output, errors, gdal = read_gis_file(path, "catchment", "a GeoJSON or shapefile polygon in lon/lat")
     rings = catchment_rings(output) if output else []
-    gdal = gdal_messages().new()
     if errors or not rings:
         # GDAL's error is the reason where nothing was read (a file it cannot parse); where
         # points or lines were, they are (an unknown "crs" is an error of GDAL's too).
@@ -2186,7 +2267,13 @@ def main(argv=None):
                              "NOAA's Climate Data Online writes them) and other names in ALIAS_OF of csv_input.py "
                              "are read too. It may be the observations file, with the station's place on each row "
                              "(as NOAA's CSV has it); default: the observations file where it has such columns, "
-                             "else examples/data/colorado_stations.csv")
+                             "else examples/data/colorado_stations.csv. Or a GIS file of points (GeoJSON, "
+                             "shapefile, KML, GeoPackage, or a zip file holding one), an id attribute on each "
+                             "(--stations-id), in lon/lat or a projected system it declares; the messages and "
+                             "unused_inputs.csv then give a gauge's feature number (from 1) as its line")
+    parser.add_argument("--stations-id", metavar="ATTRIBUTE",
+                        help="with a GIS file of points as --stations: the attribute holding the station ids "
+                             f"(default: the first of {', '.join(STATION_FIELDS)} it has, in any case)")
     parser.add_argument("--stations-utm", metavar="ZONE",
                         help="the stations file gives eastings and northings in metres of this UTM zone (1 to 60 "
                              "with N or S, such as 13N; WGS84, within a metre or two of NAD83 and ETRS89), in "
@@ -2263,7 +2350,7 @@ def main(argv=None):
         args.stations = stations_path(args.observations)
     combined = os.path.isfile(args.stations) and os.path.isfile(args.observations) and os.path.samefile(
         args.stations, args.observations)
-    gauges, gauge_lines = read_gauges(args.stations, stations_system, combined)
+    gauges, gauge_lines = read_gauges(args.stations, stations_system, combined, args.stations_id)
     if not gauge_lines:
         csv_input.fail(f"{args.stations}: no gauges (the file has no rows)")
     ids = gauges.GetPointData().GetAbstractArray("station_id")

@@ -340,10 +340,13 @@ def test_bad_files_are_named():
             (("--observations", infinite), [infinite + ":3", "'precip'", "'1e999' is not a finite number"]),
             # The line the malformed record ends on (the unclosed quote runs to the end of line 3).
             (("--observations", quote), [quote + ":3: not well-formed CSV"]),
-            # A bad header is on line 1, not "line 0"; a JSON file is no CSV file.
+            # A bad header is on line 1, not "line 0"; a GeoJSON file of no feature, or a JSON file
+            # that is no GeoJSON, holds no gauge.
             (("--stations", bad_header), [bad_header + ":1: not well-formed CSV"]),
-            (("--stations", geojson), [geojson + ": the stations file is not a CSV file"]),
-            (("--stations", pretty_json), [pretty_json + ": the stations file is not a CSV file"]),
+            (("--stations", geojson), [geojson + ": GDAL read no feature from the stations file (expected a GeoJSON "
+                                       "or shapefile of points, or a CSV file with a header such as "
+                                       "station_id,lon,lat)"]),
+            (("--stations", pretty_json), [pretty_json + ": GDAL read no feature from the stations file"]),
             (("--catchment", directory), [directory + ": is a directory"]),
             (("--out", stations_id), [f"--out {stations_id}: exists and is not a directory"]),
             # A column twice (in any case): which holds the values would be a guess.
@@ -2149,6 +2152,72 @@ def test_a_noaa_climate_data_online_file_is_both_stations_and_observations():
             assert_that(message in stderr and "Traceback" not in stderr, f"{message!r} not in {stderr!r}")
 
 
+def test_gauges_from_a_gis_file_of_points_give_the_csv_means():
+    # The lake gauges as a GeoJSON of points (ids in a Station_ID attribute, names in Name) give
+    # the stations CSV's counts and means bit for bit; in UTM 60S (a "crs", ids in site_no) to
+    # 1e-8; with ids in an attribute of another name, --stations-id names it. A file without an id
+    # attribute, a polygon for a gauge, and --stations-id with a CSV file end the run naming them.
+    import json
+
+    from tessera import vtkGeographicProjection
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+    def points_file(directory, name, coordinates, field, crs=None):
+        collection = {"type": "FeatureCollection", "features": [
+            {"type": "Feature", "properties": {field: s, "Name": f"{s} gauge"},
+             "geometry": {"type": "Point", "coordinates": list(p)}} for s, p in zip(LAKE_GAUGES, coordinates)]}
+        if crs:
+            collection["crs"] = {"type": "name", "properties": {"name": crs}}
+        return write(directory, name, json.dumps(collection))
+
+    with tempfile.TemporaryDirectory() as out:
+        catchment, stations, observations = write_lake_basin(out)
+        run_colorado(os.path.join(out, "csv"), stations=stations, observations=observations, catchment=catchment,
+                     plots=False, what="the CSV gauges")
+        want = read_csv(os.path.join(out, "csv", "areal_mean.csv"))
+        lonlat = points_file(out, "gauges.geojson", LAKE_GAUGES.values(), "Station_ID")
+        run_colorado(os.path.join(out, "points"), stations=lonlat, observations=observations, catchment=catchment,
+                     plots=False, what="the GeoJSON gauges")
+        got = read_csv(os.path.join(out, "points", "areal_mean.csv"))
+        assert_that(got == want and len(got) == 2, f"the GeoJSON gauges' means {got} against {want}")
+        names = {w["station_id"]: w["name"] for w in read_csv(os.path.join(out, "points", "weights_2001_01.csv"))}
+        assert_that(names and all(names[s] == f"{s} gauge" for s in names), f"the names: {names}")
+        points, data = vtkPoints(), vtkPolyData()
+        points.SetDataTypeToDouble()
+        for lon, lat in LAKE_GAUGES.values():
+            points.InsertNextPoint(lon, lat, 0.0)
+        data.SetPoints(points)
+        projection = vtkGeographicProjection()
+        projection.SetInputData(data)
+        projection.SetProjectionToUTM()
+        projection.SetUTMZone(60)
+        projection.SetUTMNorth(False)
+        projection.Update()
+        utm = [projection.GetOutput().GetPoint(k)[:2] for k in range(len(LAKE_GAUGES))]
+        for name, path, options in (
+                ("utm", points_file(out, "utm.geojson", utm, "site_no", "urn:ogc:def:crs:EPSG::32760"), {}),
+                ("code", points_file(out, "code.geojson", LAKE_GAUGES.values(), "code"), {"stations-id": "code"})):
+            _, stderr = run_colorado(os.path.join(out, name), stations=path, observations=observations,
+                                     catchment=catchment, plots=False, what=name, **options)
+            got = read_csv(os.path.join(out, name, "areal_mean.csv"))
+            for a, b in zip(got, want):
+                assert_that((a["stations_used"], a["stations_weighted"]) == (b["stations_used"], b["stations_weighted"]),
+                            f"{name}: {a} against {b}")
+                assert_close(float(b["areal_mean"]), float(a["areal_mean"]), 1e-8 * float(b["areal_mean"]),
+                             f"{name}: the mean {a}")
+        code = os.path.join(out, "code.geojson")
+        for options, message in (
+                ({"stations": code}, f"{code}: no attribute holds the station ids (station_id, station, site_no, id); "
+                                     "its attributes: code, Name (give the one holding the ids with --stations-id)"),
+                ({"stations": code, "stations-id": "CODE"}, f"{code}: no attribute named 'CODE'"),
+                ({"stations": catchment}, f"{catchment}: feature 1 is not one point"),
+                ({"stations": stations, "stations-id": "code"}, "--stations-id code: is for a GIS file of points")):
+            _, stderr = run_colorado(os.path.join(out, "bad"), observations=observations, catchment=catchment,
+                                     plots=False, status=1, what=message, **options)
+            assert_that(message in stderr and "Traceback" not in stderr, f"{message!r} not in {stderr!r}")
+
+
 def test_observations_of_no_gauge_end_the_run():
     # Ids that match no gauge at all (a prefix the stations file has and the observations do not)
     # end the run naming both files, instead of a run of months without a mean; so does a stations
@@ -2709,6 +2778,7 @@ if __name__ == "__main__":
          test_a_catchment_declared_projected_is_named, test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means,
          test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_lat_means,
          test_a_noaa_climate_data_online_file_is_both_stations_and_observations,
+         test_gauges_from_a_gis_file_of_points_give_the_csv_means,
          test_the_filters_errors_name_the_file_and_line,
          test_the_filters_warnings_are_lines_of_their_own,
          test_rows_of_empty_fields_are_skipped,
