@@ -1194,8 +1194,8 @@ def say_earlier_outputs(out, written):
               f"not write (an earlier run's?), kept: {first_and_more(earlier, str, 10)}", file=sys.stderr)
 
 
-def zip_member(path):
-    """The GDAL path (/vsizip/) of the catchment file in a zip file, as catchments are often
+def zip_member(path, what="catchment"):
+    """The GDAL path (/vsizip/) of the catchment (what) file in a zip file, as such files are often
     downloaded: its one shapefile, GeoJSON, KML or GeoPackage file (a shapefile's .shx, .dbf and
     .prj beside it; macOS's __MACOSX copies and hidden files left aside); ends the script naming
     the files when it holds several such files or none."""
@@ -1211,12 +1211,12 @@ def zip_member(path):
         return f"/vsizip/{os.path.abspath(path)}/{candidates[0]}"
     listed = candidates or names
     shown = ", ".join(listed[:10]) + (", ..." if len(listed) > 10 else "")
-    csv_input.fail(f"{path}: holds no single catchment file (one shapefile, GeoJSON, KML or GeoPackage) "
+    csv_input.fail(f"{path}: holds no single {what} file (one shapefile, GeoJSON, KML or GeoPackage) "
                    f"to read: {shown or 'no files'}; unzip it and give the file")
 
 
 class GdalMessages:
-    """GDAL's messages while the catchment is read (parse errors, "Non closed ring detected"),
+    """GDAL's messages while a GIS file is read (parse errors, "Non closed ring detected"),
     which GDAL prints to stderr as "ERROR 1: ..." beside the script's own one-line errors: CPL_LOG,
     set while GDAL reads, sends them to a temporary file to read back. A CPL_LOG the user set is
     left alone (their file gets them)."""
@@ -1355,7 +1355,7 @@ def read_gis_file(path, what, expected):
         csv_input.fail(f"{path}: is a directory, not a {what} file (expected {expected})")
     if not os.path.isfile(path):
         csv_input.fail(f"{path}: no such {what} file")
-    source = zip_member(path) if path.lower().endswith(".zip") else path
+    source = zip_member(path, what) if path.lower().endswith(".zip") else path
     # A shapefile is several files: GDAL's own message for a missing one is a raw log line.
     stem, extension = os.path.splitext(path)
     if extension.lower() == ".shp":

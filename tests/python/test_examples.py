@@ -2158,6 +2158,7 @@ def test_gauges_from_a_gis_file_of_points_give_the_csv_means():
     # 1e-8; with ids in an attribute of another name, --stations-id names it. A file without an id
     # attribute, a polygon for a gauge, and --stations-id with a CSV file end the run naming them.
     import json
+    import zipfile
 
     from tessera import vtkGeographicProjection
     from vtkmodules.vtkCommonCore import vtkPoints
@@ -2179,8 +2180,13 @@ def test_gauges_from_a_gis_file_of_points_give_the_csv_means():
         lonlat = points_file(out, "gauges.geojson", LAKE_GAUGES.values(), "Station_ID")
         run_colorado(os.path.join(out, "points"), stations=lonlat, observations=observations, catchment=catchment,
                      plots=False, what="the GeoJSON gauges")
-        got = read_csv(os.path.join(out, "points", "areal_mean.csv"))
-        assert_that(got == want and len(got) == 2, f"the GeoJSON gauges' means {got} against {want}")
+        zipped = os.path.join(out, "gauges.zip")  # (as GIS files are downloaded)
+        with zipfile.ZipFile(zipped, "w") as z:
+            z.write(lonlat, "gauges/gauges.geojson")
+        run_colorado(os.path.join(out, "zipped"), stations=zipped, observations=observations, catchment=catchment,
+                     plots=False, what="the zipped GeoJSON gauges")
+        got, from_zip = (read_csv(os.path.join(out, d, "areal_mean.csv")) for d in ("points", "zipped"))
+        assert_that(got == want == from_zip and len(got) == 2, f"the GeoJSON gauges' means {got} against {want}")
         names = {w["station_id"]: w["name"] for w in read_csv(os.path.join(out, "points", "weights_2001_01.csv"))}
         assert_that(names and all(names[s] == f"{s} gauge" for s in names), f"the names: {names}")
         points, data = vtkPoints(), vtkPolyData()
