@@ -37,10 +37,8 @@ def decoded(path, what, head=False):
     try:
         with open(path, "rb") as handle:
             data = handle.read(HEAD_BYTES if head else -1)
-            compressed = data.startswith((b"\x1f\x8b", b"BZh", b"\xfd7zXZ\x00"))
-            has_line = re.search(rb"\S[^\n]*\n", data[:HEAD_BYTES // 2])
-            if head and len(data) == HEAD_BYTES and (compressed or not has_line):
-                data += handle.read()  # (a compressed file, or a header line of more than 32 kB)
+            if head and len(data) == HEAD_BYTES and not has_plain_header(data):
+                data += handle.read()
     except OSError as error:
         fail(f"{path}: cannot read the {what} file ({error.strerror})")
     # A compressed download or a workbook read as text gave its binary bytes as the "header".
@@ -70,7 +68,15 @@ def decoded(path, what, head=False):
         return data.decode("cp1252", errors="replace")
 
 
-HEAD_BYTES = 65536  # (decoded's head: read whole where its first half has no line end after text)
+HEAD_BYTES = 65536  # (decoded's head)
+
+
+def has_plain_header(data):
+    """Whether the first half of data (a file's first HEAD_BYTES) holds a whole line of text, not
+    compressed: else decoded's head reads the whole file (a compressed file is decompressed whole;
+    a header line may run to hundreds of kB in a wide file of thousands of stations)."""
+    compressed = data.startswith((b"\x1f\x8b", b"BZh", b"\xfd7zXZ\x00"))
+    return not compressed and re.search(rb"\S[^\n]*\n", data[:HEAD_BYTES // 2]) is not None
 
 
 def rows(path, required, what, optional=(), header=None, delimiter_columns=None):
@@ -166,7 +172,7 @@ def header_delimiter(text, required=()):
     wanted = {name.lower() for name in required}
     for mark in DELIMITERS:
         try:
-            names = {alias_free(name.strip().lower()) for name in next(csv.reader([header], delimiter=mark), [])}
+            names = header_names(next(csv.reader([header], delimiter=mark), []))
         except csv.Error:
             continue
         if wanted and wanted <= names:
@@ -200,9 +206,11 @@ ALIAS_OF = {"station": "station_id", "latitude": "lat", "longitude": "lon", "lon
             "prcp": "precip", "precipitation": "precip"}
 
 
-def alias_free(name):
-    """The column name that name (in lower case) stands for: itself, or the one ALIAS_OF gives."""
-    return ALIAS_OF.get(name, name)
+def header_names(fields):
+    """A header's names (its fields), stripped and in lower case, with the names they stand for
+    (ALIAS_OF): {"station", "station_id", "lat", ...} for STATION, LAT."""
+    names = {field.strip().lower() for field in fields}
+    return names | {ALIAS_OF[name] for name in names if name in ALIAS_OF}
 
 
 def named_columns(columns, names, where, renamed=None):
@@ -295,14 +303,12 @@ def gauges(path, optional=(), coordinates=("lon", "lat"), distinct=False):
 
 
 def header_columns(path, what, wanted):
-    """The column names of the header of the CSV file at path (what it holds: "stations"), in
-    lower case and for the names they stand for (ALIAS_OF), its separator chosen by the wanted
-    columns as rows() chooses it; none for a header that is not well-formed CSV (rows() names
-    it)."""
+    """The column names of the header of the CSV file at path (what it holds: "stations") as
+    header_names gives them, its separator chosen by the wanted columns as rows() chooses it; none
+    for a header that is not well-formed CSV (rows() names it)."""
     header = decoded(path, what, head=True).lstrip().split("\n", 1)[0]
     try:
-        return {alias_free(name.strip().lower()) for name in next(csv.reader([header], delimiter=header_delimiter(
-            header, wanted)), [])}
+        return header_names(next(csv.reader([header], delimiter=header_delimiter(header, wanted)), []))
     except csv.Error:
         return set()
 
