@@ -297,14 +297,14 @@ def read_gauge_points(path, id_field=None):
             print(f"{path}: GDAL: {message}", file=sys.stderr)
     for k, block in enumerate(blocks, 1):
         if block.GetNumberOfCells() != 1 or block.GetCellType(0) != VTK_VERTEX:
-            csv_input.fail(f"{path}: feature {k} is not one point ({cell_kinds(block)}): a stations file holds a point "
-                           "per gauge")
+            csv_input.fail(f"{path}: feature {k} is not one point (GDAL reads it as {cell_kinds(block)}, a polygon's "
+                           "rings as lines): a stations file holds a point per gauge")
     data = blocks[0].GetCellData()
     fields = [data.GetAbstractArray(i).GetName() for i in range(data.GetNumberOfArrays())]
     lower = {}
     for name in fields:
         lower.setdefault(name.lower(), name)
-    field = id_field if id_field else next((lower[f] for f in STATION_FIELDS if f in lower), None)
+    field = lower.get(id_field.lower()) if id_field else next((lower[f] for f in STATION_FIELDS if f in lower), None)
     if field not in fields:
         wanted = f"named {id_field!r}" if id_field else f"holds the station ids ({', '.join(STATION_FIELDS)})"
         csv_input.fail(f"{path}: no attribute {wanted}; its attributes: {', '.join(fields) or 'none'} (give the one "
@@ -331,7 +331,19 @@ def read_gauge_points(path, id_field=None):
     system = projected_input.declared_system(reader, [xy], path)
     if system:
         gauges = projected_input.to_lonlat(gauges, system, lambda g: f"{path}: feature {g + 1}")
+    say_declared_systems(reader, path, system)
     return gauges, list(range(1, len(xy) + 1))
+
+
+def holds_observations(stations, observations):
+    """Whether the stations file is a file of observations too, a row per station and time with the
+    station's place on each (as NOAA's Climate Data Online writes one): the observations file
+    itself, or a CSV file with a precip column (or PRCP, ALIAS_OF)."""
+    if not (os.path.isfile(stations) and not stations.lower().endswith(GIS_SUFFIXES)):
+        return False
+    if os.path.isfile(observations) and os.path.samefile(stations, observations):
+        return True
+    return "precip" in csv_input.header_columns(stations, "stations", ("station_id", "lon", "lat"))
 
 
 def stations_path(observations):
@@ -577,7 +589,8 @@ def at_multiples(minutes):
 TIME_COLUMNS = ("year", "month", "day", "hour", "minute", "date", "time")  # (observation_step's)
 
 
-def observation_records(path, gauge_of, stations_path, station_ids, unmatched, gaps, repeats, flagged):
+def observation_records(path, gauge_of, stations_path, station_ids, unmatched, gaps, repeats, flagged,
+                        drop_flagged=False):
     """Yields (line, row, station_id, value column) for each observation of the file at path, in
     either of two layouts:
     - long: a record per station and time, with columns station_id and precip (the value column);
@@ -605,6 +618,9 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
     if "station_id" in header or "precip" in header:
         csv_input.check_columns(path, "observations", ("station_id", "precip"), header)
         attributes = next((name for name in header if name.lower() in NOAA_ATTRIBUTES), None)
+        if drop_flagged and not attributes:
+            print(f"{path}: --drop-flagged: the file has no PRCP_ATTRIBUTES column (NOAA's quality flags), so no "
+                  "value is left out", file=sys.stderr)
         for line, row in records:
             station = csv_input.text(row, "station_id", path, line)
             if attributes and (flag := noaa_quality_flag(row.get(attributes))):
@@ -959,7 +975,7 @@ def scan_observations(path, gauge_of, stations_path, station_ids, missing_values
     present, reporting = set(), {}  # (by step index: ObservationRows' present and reporting)
     first_line, valued_line = [], {}  # (by step index: ObservationRows' first_line and valued_line)
     for line, row, station, column in observation_records(path, gauge_of, stations_path, station_ids, rows.unmatched,
-                                                          rows.gaps, rows.repeats, rows.flagged):
+                                                          rows.gaps, rows.repeats, rows.flagged, drop_flagged):
         rows.lines.append(line)
         if not len(rows.lines) & 0xFFFF:
             reading.tick(len(rows.lines))
@@ -1412,8 +1428,15 @@ def read_catchment(path, feature=None):
               "together (even-odd rule: a feature inside another is a hole, and one that fills "
               "another's hole exactly joins it); --feature ATTRIBUTE=VALUE takes only those with "
               "that value", file=sys.stderr)
-    # The coordinates are read as lon/lat whatever the file declares, but for the metres of a
-    # projected system read (projected_input): a projected declaration over lon/lat is named.
+    say_declared_systems(reader, path, system)
+    return output, rings
+
+
+def say_declared_systems(reader, path, system):
+    """Says what a GIS file (reader: its vtkGDALVectorReader, updated) declares: the projected
+    system (projected_input.PlaneSystem, or None) its metres were made lon/lat from, or a projected
+    system over coordinates read as lon/lat, and an older datum. The coordinates are read as
+    lon/lat whatever the file declares, but for the metres of a projected system read."""
     for layer in range(reader.GetNumberOfLayers()):
         declared = reader.GetLayerProjection(layer) or ""
         name = re.match(r'PROJC(?:RS|S)\["([^"]*)"', declared)
@@ -1437,7 +1460,6 @@ def read_catchment(path, feature=None):
                   f"{ellipsoid.group(1)!r}); its longitudes/latitudes are read as WGS84 ones, without the "
                   "datum shift of tens to hundreds of metres: reproject the file to WGS84 (e.g. ogr2ogr "
                   "-t_srs EPSG:4326) where that matters", file=sys.stderr)
-    return output, rings
 
 
 def attribute_text(array, cell=0):
@@ -2261,6 +2283,7 @@ def main(argv=None):
                                         "it, and --start 'YYYY-MM-DD 01:00' to start a day")
     parser.add_argument("--end", help="the last step to average, as --start (a month is its last day or hour with "
                                       "daily or hourly observations; default: the observations' last)")
+    default_observations = os.path.join(DATA, "colorado_monthly_precip.csv")
     parser.add_argument("--stations",
                         help="CSV of gauges: columns station_id, lon, lat (degrees, WGS84), "
                              f"optional name; {csv_input.SEPARATORS_TEXT}; STATION, LATITUDE, LONGITUDE (as "
@@ -2285,7 +2308,7 @@ def main(argv=None):
                              "or PROJ terms ('+proj=aea +lat_0=23 +lon_0=-96 +lat_1=29.5 +lat_2=45.5 +x_0=0 "
                              f"+y_0=0 +units=m'); read: {projected_input.READ}, on WGS84 or GRS80; they are "
                              "made lon/lat first")
-    parser.add_argument("--observations", default=os.path.join(DATA, "colorado_monthly_precip.csv"),
+    parser.add_argument("--observations", default=default_observations,
                         help="CSV of monthly values, one row per gauge and month: columns "
                              f"station_id, year, month, precip ({csv_input.MISSING_TEXT} = missing); "
                              "or of daily values: columns station_id, year, month, day, precip, or "
@@ -2348,8 +2371,11 @@ def main(argv=None):
     stations_system = projected_input.stations_system(args.stations_utm, args.stations_crs, gdal_messages())
     if args.stations is None:
         args.stations = stations_path(args.observations)
-    combined = os.path.isfile(args.stations) and os.path.isfile(args.observations) and os.path.samefile(
-        args.stations, args.observations)
+        if args.observations != default_observations and args.stations != args.observations:
+            print(f"note: without --stations, the gauges are the Colorado example's ({args.stations}): "
+                  f"{args.observations} has no place columns (lon and lat, or LONGITUDE and LATITUDE) to read "
+                  "its stations from; give your stations file with --stations", file=sys.stderr)
+    combined = holds_observations(args.stations, args.observations)
     gauges, gauge_lines = read_gauges(args.stations, stations_system, combined, args.stations_id)
     if not gauge_lines:
         csv_input.fail(f"{args.stations}: no gauges (the file has no rows)")

@@ -246,6 +246,8 @@ def number(row, column, path, line):
     the script, naming file, line, column and text, if it is not one (a missing value included:
     test is_missing first where one is allowed)."""
     text = row.get(column)
+    if not (text or "").strip():
+        fail(f"{path}:{line}: column {column!r} is empty (a number is needed there)")
     plain = decimal_point_text((text or "").strip(), row)
     if plain is None:
         fail(f"{path}:{line}: column {column!r}: {text!r} has a point, where the file's numbers have "

@@ -145,11 +145,18 @@ def stations_system(utm, crs, gdal_messages):
         zone = re.fullmatch(r"([0-9]{1,2})([NnSs]?)", utm.strip())
         if not zone or not 1 <= int(zone.group(1)) <= 60:
             csv_input.fail(f"--stations-utm {utm!r}: expected a UTM zone 1 to 60 with N or S (such as 13N)")
+        if not zone.group(2):
+            print(f"--stations-utm {utm}: read as zone {int(zone.group(1))}N, in the northern hemisphere (give "
+                  f"{int(zone.group(1))}S for the southern)", file=sys.stderr)
         return PlaneSystem.utm(int(zone.group(1)), zone.group(2).upper() != "S")
     if not crs:
         return None
     text = crs.strip()
-    code = re.fullmatch(r"(?i)epsg:([0-9]+)", text)
+    code = re.fullmatch(r"(?i)(?:epsg:\s*|urn:ogc:def:crs:epsg:[0-9.]*:)?([0-9]+)", text)
+    if not code and not text.startswith("+proj="):
+        csv_input.fail(f"--stations-crs {crs!r}: expected EPSG:CODE (such as EPSG:5070) or PROJ terms starting "
+                       "+proj= (such as '+proj=aea +lat_0=23 +lon_0=-96 +lat_1=29.5 +lat_2=45.5 +x_0=0 +y_0=0 "
+                       "+units=m')")
     if code:
         with gdal_messages.capturing():
             text = epsg_proj4(int(code.group(1)))
@@ -302,12 +309,26 @@ def into_filter_plane(data, system):
         leaf.SetPoints(moved)
 
 
+# The most a coordinate of the filter's plane can be, in metres: the Earth's circumference. A
+# transverse Mercator or a conic holds places to some 2e7 m from its origin; beyond this, a point
+# is a typo (-1e9 for -1e6), whose inverse would still give a place.
+MOST_METRES = 4.0e7
+
+
 def to_lonlat(data, system, where, densify=False):
     """data (a vtkPolyData or a multiblock of them) with its points made lon/lat from x, y of
     system (a PlaneSystem), by vtkGeographicProjection's inverse; its edges cut every EDGE_METRES
-    first when densify is set. An error (a point the projection cannot hold) ends the script,
-    where(point index) naming where that point came from."""
+    first when densify is set. An error (a point the projection cannot hold, or one beyond
+    MOST_METRES in the filter's plane) ends the script, where(point index) naming where that point
+    came from."""
     into_filter_plane(data, system)
+    for leaf in leaves(data) if system.kind != "utm" else []:  # (UTM's range is checked where read)
+        points = leaf.GetPoints()
+        for k in range(points.GetNumberOfPoints() if points else 0):
+            x, y, _ = points.GetPoint(k)
+            if not (abs(x) <= MOST_METRES and abs(y) <= MOST_METRES):
+                csv_input.fail(f"{where(k)}: as {system.describe()}: a point {max(abs(x), abs(y)):.3g} m from the "
+                               "projection's origin, beyond any place on the Earth (a typo?)")
     if densify:
         densify_edges(data, EDGE_METRES)
     projection = projection_filter(system, True)

@@ -2054,6 +2054,19 @@ def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_la
         laea["features"][0]["geometry"]["coordinates"] = [[[x * 1e4, y * 1e4] for x, y in r] for r in rings]
         laea_path = write(out, "laea.geojson", json.dumps(laea))
         xy = runs[0][2]
+        typo = write(out, "typo.csv", "station_id,x,y\nN1,1000000,2000000\nN2,-1e9,2000000\n")
+        # A UTM zone without N or S is read as north, and said.
+        _, stderr = run_colorado(os.path.join(out, "north"), stations=runs[3][2], observations=observations,
+                                 catchment=catchment, plots=False, what="--stations-utm 60", **{"stations-utm": "60"})
+        assert_that("--stations-utm 60: read as zone 60N, in the northern hemisphere (give 60S for the southern)"
+                    in stderr, f"--stations-utm 60: {stderr}")
+        # An EPSG code as it is written elsewhere: the same means as EPSG:CODE, bit for bit.
+        for code in ("EPSG:32760", "epsg: 32760", "32760", "urn:ogc:def:crs:EPSG::32760"):
+            run_colorado(os.path.join(out, code.replace(":", "_")), stations=runs[3][2], observations=observations,
+                         catchment=catchment, plots=False, what=code, **{"stations-crs": code})
+        spelt = [read_csv(os.path.join(out, code.replace(":", "_"), "areal_mean.csv"))
+                 for code in ("EPSG:32760", "epsg: 32760", "32760", "urn:ogc:def:crs:EPSG::32760")]
+        assert_that(len(spelt[0]) == 2 and all(got == spelt[0] for got in spelt), f"EPSG codes: {spelt}")
         cases = [({"catchment": laea_path, "stations": stations},
                   f"{laea_path}: declares a projected coordinate system with the projection +proj=laea (read here: "
                   "UTM, transverse Mercator (tmerc), Albers equal-area (aea) and Lambert conformal conic (lcc)); "
@@ -2065,7 +2078,13 @@ def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_la
                  ({"catchment": catchment, "stations": xy, "stations-crs": "EPSG:4326"},
                   "--stations-crs 'EPSG:4326': a geographic system (longitude/latitude)"),
                  ({"catchment": catchment, "stations": xy, "stations-crs": "EPSG:32760", "stations-utm": "60S"},
-                  "--stations-utm and --stations-crs: give one of them")]
+                  "--stations-utm and --stations-crs: give one of them"),
+                 ({"catchment": catchment, "stations": xy, "stations-crs": "proj=tmerc lon_0=173"},
+                  "--stations-crs 'proj=tmerc lon_0=173': expected EPSG:CODE (such as EPSG:5070) or PROJ terms "
+                  "starting +proj="),
+                 ({"catchment": catchment, "stations": typo, "stations-crs": systems["aea"][0]},
+                  f"{typo}:3: as AlbersEqualArea lon_0=176 lat_0=-39 lat_1=-38 lat_2=-40 x_0=1000000 y_0=2000000, "
+                  "WGS84: a point 1e+09 m from the projection's origin, beyond any place on the Earth")]
         for options, message in cases:
             _, stderr = run_colorado(os.path.join(out, "bad"), observations=observations, plots=False, status=1,
                                      what=message, **options)
@@ -2138,6 +2157,19 @@ def test_a_noaa_climate_data_online_file_is_both_stations_and_observations():
         unused = [r for r in read_csv(os.path.join(out, "dropped", "unused_inputs.csv")) if "quality flag" in r["kind"]]
         assert_that(unused == [{"kind": "observation with a NOAA quality flag (left out: --drop-flagged)", "file": noaa,
                                 "line": str(flagged_line), "station_id": "N3", "note": "QFLAG I"}], f"{unused}")
+        # --drop-flagged with a file without NOAA's flags says so; a file of observations without
+        # places, given without --stations, is said to leave the Colorado gauges.
+        _, stderr = run_colorado(os.path.join(out, "noflags"), "--drop-flagged", stations=stations, observations=plain,
+                                 catchment=catchment, plots=False, what="--drop-flagged without flags")
+        assert_that(f"{plain}: --drop-flagged: the file has no PRCP_ATTRIBUTES column" in stderr, f"{stderr}")
+        _, stderr = run_colorado(os.path.join(out, "nostations"), observations=plain, catchment=catchment, plots=False,
+                                 status=1, what="no --stations")
+        assert_that("note: without --stations, the gauges are the Colorado example's" in stderr
+                    and f"{plain} has no place columns" in stderr, f"no --stations: {stderr}")
+        # The NOAA file as --stations beside another observations file: a gauge per station too.
+        _, stderr = run_colorado(os.path.join(out, "beside"), stations=noaa, observations=plain, catchment=catchment,
+                                 plots=False, what="the NOAA file as --stations")
+        assert_that(f"read {len(gauges)} gauges" in stderr and "more than one gauge" not in stderr, f"{stderr}")
         moved = write(out, "moved.csv", header + "".join(lines[:4]) + lines[4].replace('"-39.1"', '"-39.2"', 1)
                       + "".join(lines[5:]))
         long = write(out, "long.csv", "station_id,longitude,long,lat\nN1,175.6,175.6,-39.1\n")
@@ -2180,6 +2212,13 @@ def test_gauges_from_a_gis_file_of_points_give_the_csv_means():
         lonlat = points_file(out, "gauges.geojson", LAKE_GAUGES.values(), "Station_ID")
         run_colorado(os.path.join(out, "points"), stations=lonlat, observations=observations, catchment=catchment,
                      plots=False, what="the GeoJSON gauges")
+        # A projected declaration over lon/lat is said, and the points read as lon/lat.
+        declared = points_file(out, "declared.geojson", LAKE_GAUGES.values(), "station_id", "EPSG:2193")
+        _, stderr = run_colorado(os.path.join(out, "declared"), stations=declared, observations=observations,
+                                 catchment=catchment, plots=False, what="a projected declaration over lon/lat")
+        assert_that(f"{declared}: declares the projected coordinate system 'NZGD2000 / New Zealand Transverse "
+                    "Mercator 2000'; its coordinates are read as longitude/latitude" in stderr, f"{stderr}")
+        assert_that(read_csv(os.path.join(out, "declared", "areal_mean.csv")) == want, "the declared file's means")
         zipped = os.path.join(out, "gauges.zip")  # (as GIS files are downloaded)
         with zipfile.ZipFile(zipped, "w") as z:
             z.write(lonlat, "gauges/gauges.geojson")
@@ -2203,7 +2242,7 @@ def test_gauges_from_a_gis_file_of_points_give_the_csv_means():
         utm = [projection.GetOutput().GetPoint(k)[:2] for k in range(len(LAKE_GAUGES))]
         for name, path, options in (
                 ("utm", points_file(out, "utm.geojson", utm, "site_no", "urn:ogc:def:crs:EPSG::32760"), {}),
-                ("code", points_file(out, "code.geojson", LAKE_GAUGES.values(), "code"), {"stations-id": "code"})):
+                ("code", points_file(out, "code.geojson", LAKE_GAUGES.values(), "code"), {"stations-id": "CODE"})):
             _, stderr = run_colorado(os.path.join(out, name), stations=path, observations=observations,
                                      catchment=catchment, plots=False, what=name, **options)
             got = read_csv(os.path.join(out, name, "areal_mean.csv"))
@@ -2216,7 +2255,7 @@ def test_gauges_from_a_gis_file_of_points_give_the_csv_means():
         for options, message in (
                 ({"stations": code}, f"{code}: no attribute holds the station ids (station_id, station, site_no, id); "
                                      "its attributes: code, Name (give the one holding the ids with --stations-id)"),
-                ({"stations": code, "stations-id": "CODE"}, f"{code}: no attribute named 'CODE'"),
+                ({"stations": code, "stations-id": "kode"}, f"{code}: no attribute named 'kode'"),
                 ({"stations": catchment}, f"{catchment}: feature 1 is not one point"),
                 ({"stations": stations, "stations-id": "code"}, "--stations-id code: is for a GIS file of points")):
             _, stderr = run_colorado(os.path.join(out, "bad"), observations=observations, catchment=catchment,
