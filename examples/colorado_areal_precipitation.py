@@ -1921,7 +1921,8 @@ def tiles_by_gauge(tiles):
 
 def write_tiles_geojson(tiles, gauges, path):
     """The step's clipped tiles (the filter's output) as GeoJSON (RFC 7946) at path, for a GIS: a
-    Feature per piece (a Polygon, in lon/lat, anticlockwise, its first vertex repeated last) with
+    Feature per piece (a Polygon, in lon/lat, anticlockwise, its first vertex repeated last; a
+    MultiPolygon of its two parts where it crosses the 180th meridian, meridian_parts) with
     the gauge's station_id, name, weight, area_km2 and precip as weights_TAG.csv gives them, and the
     piece's own piece_area_km2 and piece_weight. A tile whose part of the catchment has a hole or
     comes in parts is several pieces, each a simple polygon (dissolve by station_id to join them):
@@ -1938,9 +1939,10 @@ def write_tiles_geojson(tiles, gauges, path):
     for c, ring in enumerate(polygon_rings(tiles)):  # (the tiles are polygon cells only)
         g = gauge_ids.GetValue(c)
         twice_area = sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(ring, ring[1:] + ring[:1]))
-        ring = ring if twice_area >= 0 else ring[::-1]
-        features.append({"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [
-            [list(p) for p in ring + ring[:1]]]}, "properties": {
+        parts = [[list(p) for p in part + part[:1]] for part in meridian_parts(ring if twice_area >= 0 else ring[::-1])]
+        geometry = ({"type": "Polygon", "coordinates": parts} if len(parts) == 1 else
+                    {"type": "MultiPolygon", "coordinates": [[part] for part in parts]})
+        features.append({"type": "Feature", "geometry": geometry, "properties": {
             "station_id": ids.GetValue(g), "name": names.GetValue(g), "weight": weights.GetValue(c),
             "area_km2": areas.GetValue(c) / 1e6, "precip": values.GetValue(c),
             "piece_area_km2": piece_areas.GetValue(c) / 1e6, "piece_weight": piece_weights.GetValue(c)}})
@@ -1949,6 +1951,32 @@ def write_tiles_geojson(tiles, gauges, path):
             json.dump({"type": "FeatureCollection", "features": features}, f)
     except OSError as error:
         csv_input.fail(f"{path}: cannot write the tiles ({error.strerror or error})")
+
+
+def meridian_parts(ring):
+    """A tile piece's ring (lon/lat, anticlockwise, its longitudes continuous: 179.5 to 180.5
+    across the antimeridian) as GeoJSON wants it (RFC 7946, 3.1.9): its longitudes within -180 to
+    180, and a ring across the 180th meridian cut there into a western and an eastern part (the
+    edges are straight in lon/lat, so the cut is exact). A list of one or two rings, not closed."""
+    turns = math.floor((min(p[0] for p in ring) + 180.0) / 360.0)
+    ring = [(x - 360.0 * turns, y) for x, y in ring]
+    if max(p[0] for p in ring) <= 180.0:
+        return [ring]
+    west, east = (meridian_side(ring, side) for side in (-1.0, 1.0))
+    return [part for part in (west, [(x - 360.0, y) for x, y in east]) if len(part) >= 3]
+
+
+def meridian_side(ring, side):
+    """The part of ring on one side of longitude 180 (side -1: west of it, 1: east), by
+    Sutherland-Hodgman: each edge that crosses it is cut at it, latitude linear in longitude."""
+    part = []
+    for a, b in zip(ring, ring[1:] + ring[:1]):
+        a_in, b_in = side * (a[0] - 180.0) >= 0.0, side * (b[0] - 180.0) >= 0.0
+        if a_in:
+            part.append(a)
+        if a_in != b_in and a[0] != 180.0 and b[0] != 180.0:
+            part.append((180.0, a[1] + (180.0 - a[0]) / (b[0] - a[0]) * (b[1] - a[1])))
+    return part
 
 
 def write_weights(per_gauge, gauges, path):

@@ -1633,6 +1633,31 @@ def test_small_values_and_a_catchment_across_the_antimeridian():
             xs = [p[0] for p in ring]
             assert_that(max(xs) - min(xs) <= 1.0 + 1e-9, f"a ring spans {min(xs)} .. {max(xs)}")
         assert_that(all(lon_min < x < lon_max for x in lon), f"gauges at {lon}, map {lon_min} .. {lon_max}")
+        # The GeoJSON tiles keep to -180..180 (RFC 7946): a piece across the meridian is a
+        # MultiPolygon of its two parts, cut there, whose areas in lon/lat (the eastern part moved
+        # back by 360) sum to the piece's, each part on its side.
+        with open(os.path.join(out, "tiles_2000_01.geojson")) as f:
+            features = json.load(f)["features"]
+        cells = cell_rings(tiles)
+        assert_that(len(features) == len(cells), f"{len(features)} features for {len(cells)} cells")
+        kinds = [feature["geometry"]["type"] for feature in features]
+        assert_that("MultiPolygon" in kinds and "Polygon" in kinds, f"the pieces' kinds: {kinds}")
+
+        def twice_area(ring):
+            return sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(ring, ring[1:] + ring[:1]))
+
+        for feature, cell in zip(features, cells):
+            geometry = feature["geometry"]
+            parts = [polygon[0] for polygon in geometry["coordinates"]] if geometry["type"] == "MultiPolygon" else \
+                geometry["coordinates"]
+            assert_that(all(-180.0 <= p[0] <= 180.0 for part in parts for p in part), f"longitudes of {parts}")
+            if len(parts) == 2:
+                west, east = parts
+                assert_that(min(p[0] for p in west) < 180.0 == max(p[0] for p in west)
+                            and max(p[0] for p in east) > -180.0 == min(p[0] for p in east), f"the parts {parts}")
+                parts = [west, [(x + 360.0, y) for x, y in east]]
+            total = math.fsum(twice_area(part[:-1]) for part in parts)
+            assert_close(total, abs(twice_area(cell)), 1e-9 * abs(total), f"the parts' area of {parts}")
 
 
 def test_compressed_observations_are_read_and_all_weights_can_be_skipped():
