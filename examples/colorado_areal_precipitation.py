@@ -219,9 +219,6 @@ def read_gauges(path, system=None, combined=False, id_field=None):
     columns in it, made lon/lat by the projection's inverse; without it, a file of x and y columns
     and no lon and lat ends the script saying to give the system. A GIS file of points
     (GIS_SUFFIXES) is read by read_gauge_points (id_field: --stations-id)."""
-    from vtkmodules.vtkCommonCore import vtkPoints, vtkStringArray
-    from vtkmodules.vtkCommonDataModel import vtkPolyData
-
     if path.lower().endswith(GIS_SUFFIXES):
         if system:
             csv_input.fail(f"{path}: --stations-utm and --stations-crs are for a CSV file's x and y; a GIS file "
@@ -231,11 +228,7 @@ def read_gauges(path, system=None, combined=False, id_field=None):
         csv_input.fail(f"--stations-id {id_field}: is for a GIS file of points (a CSV file's ids are its "
                        "station_id column)")
 
-    points = vtkPoints()
-    points.SetDataTypeToDouble()
-    ids, names = vtkStringArray(), vtkStringArray()
-    ids.SetName("station_id")
-    names.SetName("name")
+    gauges = GaugeTable()
     lines = []
     columns = csv_input.header_columns(path, "stations", ("station_id", "lon", "lat")) if system is None else set()
     if {"x", "y"} <= columns and not {"lon", "lat"} <= columns:
@@ -257,17 +250,36 @@ def read_gauges(path, system=None, combined=False, id_field=None):
             csv_input.fail(f"{path}:{line}: ({lon:.15g}, {lat:.15g}) is not an easting and northing of a UTM zone "
                            f"({projected_input.UTM_RANGE})")
         lines.append(line)
-        points.InsertNextPoint(lon, lat, 0.0)
-        ids.InsertNextValue(station)
-        names.InsertNextValue(name)
-    gauges = vtkPolyData()
-    gauges.SetPoints(points)
-    gauges.GetPointData().AddArray(ids)
-    gauges.GetPointData().AddArray(names)
+        gauges.add((lon, lat), station, name)
+    gauges = gauges.data
     if system:
         gauges = projected_input.to_lonlat(gauges, system,
                                            lambda g: f"{path}:{lines[g]}" if 0 <= g < len(lines) else path)
     return gauges, lines
+
+
+class GaugeTable:
+    """The gauges as read_gauges gives them, made a gauge at a time: data, a vtkPolyData of their
+    places (x, y, z 0, in doubles) with point data station_id and name."""
+
+    def __init__(self):
+        from vtkmodules.vtkCommonCore import vtkPoints, vtkStringArray
+        from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+        self.points = vtkPoints()
+        self.points.SetDataTypeToDouble()
+        self.ids, self.names = vtkStringArray(), vtkStringArray()
+        self.ids.SetName("station_id")
+        self.names.SetName("name")
+        self.data = vtkPolyData()
+        self.data.SetPoints(self.points)
+        self.data.GetPointData().AddArray(self.ids)
+        self.data.GetPointData().AddArray(self.names)
+
+    def add(self, place, station, name):
+        self.points.InsertNextPoint(place[0], place[1], 0.0)
+        self.ids.InsertNextValue(station)
+        self.names.InsertNextValue(name)
 
 
 GIS_SUFFIXES = (".geojson", ".json", ".shp", ".kml", ".gpkg", ".zip")
@@ -282,8 +294,7 @@ def read_gauge_points(path, id_field=None):
     attribute where there is one. A file declaring a projected system (projected_input) is made
     lon/lat. Ends the script naming the file (and the feature) where GDAL reads no feature, a
     feature is not one point, or no attribute holds the ids."""
-    from vtkmodules.vtkCommonCore import vtkPoints, vtkStringArray
-    from vtkmodules.vtkCommonDataModel import VTK_VERTEX, vtkPolyData
+    from vtkmodules.vtkCommonDataModel import VTK_VERTEX
 
     reader, output, errors, gdal = read_gis_file(path, "stations", "a GeoJSON or shapefile of points")
     blocks = polydata_blocks(output) if output else []
@@ -309,25 +320,16 @@ def read_gauge_points(path, id_field=None):
         wanted = f"named {id_field!r}" if id_field else f"holds the station ids ({', '.join(STATION_FIELDS)})"
         csv_input.fail(f"{path}: no attribute {wanted}; its attributes: {', '.join(fields) or 'none'} (give the one "
                        "holding the ids with --stations-id)")
-    points = vtkPoints()
-    points.SetDataTypeToDouble()
-    ids, names = vtkStringArray(), vtkStringArray()
-    ids.SetName("station_id")
-    names.SetName("name")
+    table = GaugeTable()
     for k, block in enumerate(blocks, 1):
         values = block.GetCellData().GetAbstractArray(field)
         station = attribute_text(values).strip() if values else ""
         if not station:
             csv_input.fail(f"{path}: feature {k}: its attribute {field!r} (the station id) is empty")
         name = block.GetCellData().GetAbstractArray(lower.get("name", ""))
-        points.InsertNextPoint(block.GetPoint(block.GetCell(0).GetPointId(0)))
-        ids.InsertNextValue(station)
-        names.InsertNextValue(attribute_text(name).strip() if name else "")
-    gauges = vtkPolyData()
-    gauges.SetPoints(points)
-    gauges.GetPointData().AddArray(ids)
-    gauges.GetPointData().AddArray(names)
-    xy = [points.GetPoint(g)[:2] for g in range(points.GetNumberOfPoints())]
+        table.add(block.GetPoint(block.GetCell(0).GetPointId(0)), station, attribute_text(name).strip() if name else "")
+    gauges = table.data
+    xy = [gauges.GetPoint(g)[:2] for g in range(gauges.GetNumberOfPoints())]
     system = projected_input.declared_system(reader, [xy], path)
     if system:
         gauges = projected_input.to_lonlat(gauges, system, lambda g: f"{path}: feature {g + 1}")

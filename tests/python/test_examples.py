@@ -1906,12 +1906,7 @@ def test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means():
                     "and northings are made longitude/latitude (UTM zone 60S, WGS84)" in stderr_messages(stderr),
                     f"the UTM catchment: {stderr}")
         want, got = (read_csv(os.path.join(out, d, "areal_mean.csv")) for d in ("lonlat", "utm"))
-        assert_that(len(got) == len(want) == 2, f"{got} against {want}")
-        for a, b in zip(got, want):
-            assert_that((a["stations_used"], a["stations_weighted"]) == (b["stations_used"], b["stations_weighted"]),
-                        f"{a} against {b}")
-            assert_close(float(b["areal_mean"]), float(a["areal_mean"]), 1e-8 * float(b["areal_mean"]),
-                         f"the UTM files' mean {a}")
+        assert_same_means(got, want, "the UTM files")
         # A UTM outline of a few vertices (edges of up to 85 km, which bow some 100 m from the lon/lat
         # lines between their ends) is the polygon straight in metres: the means of the same outline
         # cut every 500th of an edge in metres, to 1e-6 (not cutting it moved them by 1e-4).
@@ -1976,6 +1971,38 @@ def snyder_conic(kind, lon, lat, lon0, lat0, lat1, lat2, x0=0.0, y0=0.0, k0=1.0)
     return x0 + rho * math.sin(theta), y0 + rho0 - rho * math.cos(theta)
 
 
+def assert_same_means(got, want, what):
+    """Asserts that two areal_mean.csv's rows (read_csv's) are as many, of two steps, with the
+    same counts and the same means to 1e-8 (the same data given in another coordinate system)."""
+    assert_that(len(got) == len(want) == 2, f"{what}: {got} against {want}")
+    for a, b in zip(got, want):
+        assert_that((a["stations_used"], a["stations_weighted"]) == (b["stations_used"], b["stations_weighted"]),
+                    f"{what}: {a} against {b}")
+        assert_close(float(b["areal_mean"]), float(a["areal_mean"]), 1e-8 * float(b["areal_mean"]),
+                     f"{what}: the mean {a}")
+
+
+def utm_60s(points):
+    """points ((lon, lat)) as eastings and northings of UTM zone 60S, by vtkGeographicProjection's
+    UTM path (GeographicLib's)."""
+    from tessera import vtkGeographicProjection
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+    data, projected = vtkPolyData(), vtkPoints()
+    projected.SetDataTypeToDouble()
+    for lon, lat in points:
+        projected.InsertNextPoint(lon, lat, 0.0)
+    data.SetPoints(projected)
+    projection = vtkGeographicProjection()
+    projection.SetInputData(data)
+    projection.SetProjectionToUTM()
+    projection.SetUTMZone(60)
+    projection.SetUTMNorth(False)
+    projection.Update()
+    return [projection.GetOutput().GetPoint(k)[:2] for k in range(len(points))]
+
+
 def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_lat_means():
     # The lake basin (its edges cut every 0.001 degrees in lon/lat) and its gauges given in three
     # projected systems: a southern Albers conic, a Lambert conic in US feet with false origins
@@ -1986,24 +2013,6 @@ def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_la
     # 1e-8. The gauges in UTM 60S given as --stations-crs EPSG:32760 do too. A system that is not
     # read, an EPSG code GDAL does not know and both station options end the run naming them.
     import json
-
-    from tessera import vtkGeographicProjection
-    from vtkmodules.vtkCommonCore import vtkPoints
-    from vtkmodules.vtkCommonDataModel import vtkPolyData
-
-    def utm_60s(points):
-        data, projected = vtkPolyData(), vtkPoints()
-        projected.SetDataTypeToDouble()
-        for lon, lat in points:
-            projected.InsertNextPoint(lon, lat, 0.0)
-        data.SetPoints(projected)
-        projection = vtkGeographicProjection()
-        projection.SetInputData(data)
-        projection.SetProjectionToUTM()
-        projection.SetUTMZone(60)
-        projection.SetUTMNorth(False)
-        projection.Update()
-        return [projection.GetOutput().GetPoint(k)[:2] for k in range(len(points))]
 
     us_foot = 1200 / 3937
     origin_utm = utm_60s([(177.0, -39.0)])[0]
@@ -2061,13 +2070,7 @@ def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_la
             assert_that(any(m.startswith(f"{path}: declares the projected coordinate system ") and
                             "whose eastings and northings are made longitude/latitude" in m
                             for m in stderr_messages(stderr)), f"{name}: {stderr}")
-            got = read_csv(os.path.join(out, name, "areal_mean.csv"))
-            assert_that(len(got) == len(want) == 2, f"{got} against {want}")
-            for a, b in zip(got, want):
-                assert_that((a["stations_used"], a["stations_weighted"]) == (b["stations_used"], b["stations_weighted"]),
-                            f"{name}, {crs}: {a} against {b}")
-                assert_close(float(b["areal_mean"]), float(a["areal_mean"]), 1e-8 * float(b["areal_mean"]),
-                             f"{name}, {crs}: the mean {a}")
+            assert_same_means(read_csv(os.path.join(out, name, "areal_mean.csv")), want, f"{name}, {crs}")
         # A system on another ellipsoid is read, and said to leave the datum shift.
         airy = systems["tmerc"][0].replace("+datum=WGS84", "+ellps=airy")
         _, stderr = run_colorado(os.path.join(out, "airy"), stations=runs[1][2], observations=observations,
@@ -2217,10 +2220,6 @@ def test_gauges_from_a_gis_file_of_points_give_the_csv_means():
     import json
     import zipfile
 
-    from tessera import vtkGeographicProjection
-    from vtkmodules.vtkCommonCore import vtkPoints
-    from vtkmodules.vtkCommonDataModel import vtkPolyData
-
     def points_file(directory, name, coordinates, field, crs=None):
         collection = {"type": "FeatureCollection", "features": [
             {"type": "Feature", "properties": {field: s, "Name": f"{s} gauge"},
@@ -2253,29 +2252,13 @@ def test_gauges_from_a_gis_file_of_points_give_the_csv_means():
         assert_that(got == want == from_zip and len(got) == 2, f"the GeoJSON gauges' means {got} against {want}")
         names = {w["station_id"]: w["name"] for w in read_csv(os.path.join(out, "points", "weights_2001_01.csv"))}
         assert_that(names and all(names[s] == f"{s} gauge" for s in names), f"the names: {names}")
-        points, data = vtkPoints(), vtkPolyData()
-        points.SetDataTypeToDouble()
-        for lon, lat in LAKE_GAUGES.values():
-            points.InsertNextPoint(lon, lat, 0.0)
-        data.SetPoints(points)
-        projection = vtkGeographicProjection()
-        projection.SetInputData(data)
-        projection.SetProjectionToUTM()
-        projection.SetUTMZone(60)
-        projection.SetUTMNorth(False)
-        projection.Update()
-        utm = [projection.GetOutput().GetPoint(k)[:2] for k in range(len(LAKE_GAUGES))]
+        utm = utm_60s(list(LAKE_GAUGES.values()))
         for name, path, options in (
                 ("utm", points_file(out, "utm.geojson", utm, "site_no", "urn:ogc:def:crs:EPSG::32760"), {}),
                 ("code", points_file(out, "code.geojson", LAKE_GAUGES.values(), "code"), {"stations-id": "CODE"})):
             _, stderr = run_colorado(os.path.join(out, name), stations=path, observations=observations,
                                      catchment=catchment, plots=False, what=name, **options)
-            got = read_csv(os.path.join(out, name, "areal_mean.csv"))
-            for a, b in zip(got, want):
-                assert_that((a["stations_used"], a["stations_weighted"]) == (b["stations_used"], b["stations_weighted"]),
-                            f"{name}: {a} against {b}")
-                assert_close(float(b["areal_mean"]), float(a["areal_mean"]), 1e-8 * float(b["areal_mean"]),
-                             f"{name}: the mean {a}")
+            assert_same_means(read_csv(os.path.join(out, name, "areal_mean.csv")), want, name)
         code = os.path.join(out, "code.geojson")
         for options, message in (
                 ({"stations": code}, f"{code}: no attribute holds the station ids (station_id, station, site_no, id); "
