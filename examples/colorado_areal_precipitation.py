@@ -297,7 +297,7 @@ def read_gauge_points(path, id_field=None):
     from vtkmodules.vtkCommonDataModel import VTK_VERTEX
 
     reader, output, errors, gdal = read_gis_file(path, "stations", "a GeoJSON or shapefile of points")
-    blocks = polydata_blocks(output) if output else []
+    blocks = projected_input.polydata_blocks(output) if output else []
     reasons = [text for level, text in gdal if level == "ERROR"]
     if errors or not blocks:
         csv_input.fail(f"{path}: GDAL read no feature from the stations file (expected a GeoJSON or shapefile of "
@@ -1342,7 +1342,7 @@ def cell_kinds(data):
     from vtkmodules.vtkCommonDataModel import VTK_LINE, VTK_POLY_LINE, VTK_POLY_VERTEX, VTK_VERTEX
 
     counts = {"point": 0, "line": 0, "other cell": 0}
-    for block in polydata_blocks(data):
+    for block in projected_input.polydata_blocks(data):
         for c in range(block.GetNumberOfCells()):
             kind = block.GetCellType(c)
             counts["point" if kind in (VTK_VERTEX, VTK_POLY_VERTEX) else
@@ -1480,7 +1480,7 @@ def features_by_value(data, name, path):
     from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
 
     chosen, names = {}, set()
-    for block in polydata_blocks(data):
+    for block in projected_input.polydata_blocks(data):
         if block.GetNumberOfCells() == 0:
             continue
         cells = block.GetCellData()
@@ -2006,25 +2006,10 @@ def polygon_rings(data):
     return rings
 
 
-def polydata_blocks(data):
-    """The vtkPolyData leaves of a composite data set (vtkGDALVectorReader's output has a block per
-    feature), or [data] for a vtkPolyData."""
-    if not data.IsA("vtkCompositeDataSet"):
-        return [data] if data.IsA("vtkPolyData") else []
-    blocks, leaves = [], data.NewIterator()
-    leaves.InitTraversal()
-    while not leaves.IsDoneWithTraversal():
-        block = leaves.GetCurrentDataObject()
-        if block is not None and block.IsA("vtkPolyData"):
-            blocks.append(block)
-        leaves.GoToNextItem()
-    return blocks
-
-
 def polygon_blocks(data):
     """The number of polydata blocks with a polygon or closed line (features, for a
     vtkGDALVectorReader's output)."""
-    return sum(1 for block in polydata_blocks(data) if catchment_rings(block))
+    return sum(1 for block in projected_input.polydata_blocks(data) if catchment_rings(block))
 
 
 def catchment_rings(data):
@@ -2033,7 +2018,7 @@ def catchment_rings(data):
     closing point equal to the first dropped: an outline of several rings (islands, holes) is
     drawn ring by ring, not as one line through all its points."""
     rings = []
-    for block in polydata_blocks(data):
+    for block in projected_input.polydata_blocks(data):
         # GDAL gives a polygon's rings as polygons or as closed lines; the filter reads both.
         for ring in polygon_rings(block):
             if len(ring) > 1 and ring[0] == ring[-1]:

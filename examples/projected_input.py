@@ -69,11 +69,17 @@ class PlaneSystem:
         return f"{KINDS[self.kind][0]} {' '.join(terms)}, WGS84"
 
 
+def proj_terms(text):
+    """PROJ terms ("+proj=aea +lat_1=29.5 +no_defs") as a dict: {"proj": "aea", "lat_1": "29.5",
+    "no_defs": ""}."""
+    return dict(term[1:].partition("=")[::2] for term in text.split() if term.startswith("+"))
+
+
 def proj4_system(text):
     """The PlaneSystem of PROJ terms as GDAL writes them (GetLayerProjectionAsProj4), or the
     reason it is not read here (a str): another projection, a unit of no known length, a term
     that is not a number."""
-    terms = dict(term[1:].partition("=")[::2] for term in text.split() if term.startswith("+"))
+    terms = proj_terms(text)
     name = terms.get("proj", "")
     if name == "utm":
         zone = terms.get("zone", "")
@@ -180,7 +186,7 @@ def stations_system(utm, crs, gdal_messages):
 def other_ellipsoid(proj4):
     """"the datum NAD27" or "the ellipsoid airy" where PROJ terms name a datum or ellipsoid other
     than WGS84's or GRS80's (NAD83, ETRS89: within a metre or two of WGS84); else ""."""
-    terms = dict(term[1:].partition("=")[::2] for term in proj4.split() if term.startswith("+"))
+    terms = proj_terms(proj4)
     if terms.get("datum", "WGS84") not in ("WGS84", "NAD83"):
         return f"the datum {terms['datum']}"
     if terms.get("ellps", "WGS84") not in ("WGS84", "GRS80"):
@@ -213,12 +219,19 @@ def epsg_proj4(code):
         return reader.GetLayerProjectionAsProj4(0) or ""
 
 
-def leaves(data):
-    """The vtkPolyData blocks of data (a vtkPolyData, or a multiblock of them, nested or not)."""
-    if data.IsA("vtkPolyData"):
-        return [data]
-    return [leaf for k in range(data.GetNumberOfBlocks()) if data.GetBlock(k) is not None
-            for leaf in leaves(data.GetBlock(k))]
+def polydata_blocks(data):
+    """The vtkPolyData leaves of a composite data set (vtkGDALVectorReader's output has a block per
+    feature), or [data] for a vtkPolyData."""
+    if not data.IsA("vtkCompositeDataSet"):
+        return [data] if data.IsA("vtkPolyData") else []
+    blocks, leaves = [], data.NewIterator()
+    leaves.InitTraversal()
+    while not leaves.IsDoneWithTraversal():
+        block = leaves.GetCurrentDataObject()
+        if block is not None and block.IsA("vtkPolyData"):
+            blocks.append(block)
+        leaves.GoToNextItem()
+    return blocks
 
 
 def densify_edges(data, step):
@@ -228,7 +241,7 @@ def densify_edges(data, step):
     from vtkmodules.vtkCommonCore import vtkIdList, vtkPoints
     from vtkmodules.vtkCommonDataModel import vtkCellArray
 
-    for leaf in leaves(data):
+    for leaf in polydata_blocks(data):
         points = leaf.GetPoints()
         if points is None:
             continue
@@ -289,30 +302,36 @@ def origin_in_filter_plane(system):
     return projection.GetOutput().GetPoint(0)[:2]
 
 
-def into_filter_plane(data, system):
+# The most a coordinate of the filter's plane can be, in metres: the Earth's circumference. A
+# transverse Mercator or a conic holds places to some 2e7 m from its origin; beyond this, a point
+# is a typo (-1e9 for -1e6), whose inverse would still give a place.
+MOST_METRES = 4.0e7
+
+
+def into_filter_plane(data, system, where):
     """Moves data's points (changed in place) from system's plane to the filter's (the module's
-    formula)."""
+    formula). A point beyond MOST_METRES there ends the script, where(point index) naming where it
+    came from (UTM's range is checked where its file is read)."""
     from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
     from vtkmodules.vtkCommonCore import vtkPoints
 
     if system.kind == "utm":
         return
     origin = origin_in_filter_plane(system)
-    for leaf in leaves(data):
+    for leaf in polydata_blocks(data):
         if leaf.GetPoints() is None:
             continue
         xyz = vtk_to_numpy(leaf.GetPoints().GetData()).astype(float)  # (a copy, in doubles)
         for axis, false_origin in ((0, system.x0), (1, system.y0)):
             xyz[:, axis] = (xyz[:, axis] * system.metres - false_origin) / system.k0 + origin[axis]
+        far = (~(abs(xyz[:, :2]) <= MOST_METRES)).any(axis=1).nonzero()[0]  # (NaN too)
+        if len(far):
+            x, y = xyz[far[0], :2]
+            csv_input.fail(f"{where(int(far[0]))}: as {system.describe()}: a point {max(abs(x), abs(y)):.3g} m from "
+                           "the projection's origin, beyond any place on the Earth (a typo?)")
         moved = vtkPoints()
         moved.SetData(numpy_to_vtk(xyz, deep=True))
         leaf.SetPoints(moved)
-
-
-# The most a coordinate of the filter's plane can be, in metres: the Earth's circumference. A
-# transverse Mercator or a conic holds places to some 2e7 m from its origin; beyond this, a point
-# is a typo (-1e9 for -1e6), whose inverse would still give a place.
-MOST_METRES = 4.0e7
 
 
 def to_lonlat(data, system, where, densify=False):
@@ -321,14 +340,7 @@ def to_lonlat(data, system, where, densify=False):
     first when densify is set. An error (a point the projection cannot hold, or one beyond
     MOST_METRES in the filter's plane) ends the script, where(point index) naming where that point
     came from."""
-    into_filter_plane(data, system)
-    for leaf in leaves(data) if system.kind != "utm" else []:  # (UTM's range is checked where read)
-        points = leaf.GetPoints()
-        for k in range(points.GetNumberOfPoints() if points else 0):
-            x, y, _ = points.GetPoint(k)
-            if not (abs(x) <= MOST_METRES and abs(y) <= MOST_METRES):
-                csv_input.fail(f"{where(k)}: as {system.describe()}: a point {max(abs(x), abs(y)):.3g} m from the "
-                               "projection's origin, beyond any place on the Earth (a typo?)")
+    into_filter_plane(data, system, where)
     if densify:
         densify_edges(data, EDGE_METRES)
     projection = projection_filter(system, True)
