@@ -1150,8 +1150,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   }
   s.Projector.reset(new GeographicProjection(s.Parameters));
   s.Method = settings.Areas;
-  // Of the projections offered, only Albers keeps areas.
-  const bool equalArea = s.Parameters.Kind == ProjectionKind::AlbersEqualArea;
+  const bool equalArea = KeepsAreas(s.Parameters.Kind);
   if (s.Method == AreaMethod::EqualAreaPlane && !equalArea)
   {
     throw InputError(std::string("areas in the projected plane (EqualAreaPlane) are ellipsoidal "

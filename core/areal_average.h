@@ -24,9 +24,10 @@
 //
 // Areas on the ellipsoid. The weight of a gauge is the ellipsoidal area of its tile inside the
 // catchment over the catchment's ellipsoidal area. Two ways, chosen by AreaMethod:
-// - EqualAreaPlane (default when the projection is Albers equal-area, as the automatic choice
-//   is): the projection's area scale is exactly 1, so the planar area of a clipped tile IS the
-//   ellipsoidal area of its preimage. Exact, additive (weights sum to 1 to round-off), fast.
+// - EqualAreaPlane (default when the projection is equal-area: Albers, as the automatic choice
+//   is, or Lambert azimuthal): the projection's area scale is exactly 1, so the planar area of a
+//   clipped tile IS the ellipsoidal area of its preimage. Exact, additive (weights sum to 1 to
+//   round-off), fast.
 // - GeodesicPolygon (any projection): the clipped rings are densified in the plane, unprojected
 //   and measured with GeographicLib::PolygonArea (edges become geodesic chords: the sum over the
 //   pieces matches the catchment to about 1e-9 at the default 1 km spacing).
@@ -46,7 +47,7 @@ namespace tessera
 
 enum class AreaMethod
 {
-  Automatic,       ///< EqualAreaPlane for Albers equal-area, GeodesicPolygon otherwise
+  Automatic,       ///< EqualAreaPlane for an equal-area projection, else GeodesicPolygon
   EqualAreaPlane,  ///< planar areas; only with an equal-area projection (else an InputError)
   GeodesicPolygon, ///< unprojected, densified rings measured with GeographicLib::PolygonArea
 };

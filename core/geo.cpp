@@ -1,6 +1,7 @@
 #include "geo.h"
 
 #include "errors.h"
+#include "lambert_azimuthal_equal_area.h"
 
 #include <GeographicLib/AlbersEqualArea.hpp>
 #include <GeographicLib/AzimuthalEquidistant.hpp>
@@ -74,8 +75,16 @@ const char* ProjectionKindName(ProjectionKind kind)
       return "UTM";
     case ProjectionKind::AzimuthalEquidistant:
       return "AzimuthalEquidistant";
+    case ProjectionKind::LambertAzimuthalEqualArea:
+      return "LambertAzimuthalEqualArea";
   }
   return "Unknown";
+}
+
+bool KeepsAreas(ProjectionKind kind)
+{
+  return kind == ProjectionKind::AlbersEqualArea ||
+    kind == ProjectionKind::LambertAzimuthalEqualArea;
 }
 
 bool SameProjection(const ProjectionParameters& a, const ProjectionParameters& b)
@@ -95,6 +104,7 @@ bool SameProjection(const ProjectionParameters& a, const ProjectionParameters& b
     case ProjectionKind::UTM:
       return a.UTMZone == b.UTMZone && a.UTMNorth == b.UTMNorth;
     case ProjectionKind::AzimuthalEquidistant:
+    case ProjectionKind::LambertAzimuthalEqualArea:
       return a.CentralLongitude == b.CentralLongitude && a.CentralLatitude == b.CentralLatitude;
   }
   return false;
@@ -133,6 +143,7 @@ void CheckRecordComplete(const std::string& text,
       needed = { "zone" };
       break;
     case ProjectionKind::AzimuthalEquidistant:
+    case ProjectionKind::LambertAzimuthalEqualArea:
       needed = { "lon0", "lat0" };
       break;
   }
@@ -192,7 +203,8 @@ ProjectionParameters ProjectionParameters::FromString(const std::string& text)
              ProjectionKind::LambertConformalConic,
              ProjectionKind::TransverseMercator,
              ProjectionKind::UTM,
-             ProjectionKind::AzimuthalEquidistant })
+             ProjectionKind::AzimuthalEquidistant,
+             ProjectionKind::LambertAzimuthalEqualArea })
       {
         if (value == ProjectionKindName(kind))
         {
@@ -362,6 +374,7 @@ struct GeographicProjection::Engines
   std::unique_ptr<GeographicLib::LambertConformalConic> Lambert;
   std::unique_ptr<GeographicLib::TransverseMercator> Mercator;
   std::unique_ptr<GeographicLib::AzimuthalEquidistant> Azimuthal;
+  std::unique_ptr<LambertAzimuthalEqualArea> AzimuthalEqualArea;
   double CentralMeridian = 0.0; // for UTM: the zone's
   // GeographicLib 2.1's AlbersEqualArea given two southern standard parallels builds the
   // northern cone and flips y, which mirrors the map and puts the true-scale parallels in the
@@ -438,6 +451,9 @@ GeographicProjection::GeographicProjection(const ProjectionParameters& parameter
         Impl->Azimuthal.reset(
           new GeographicLib::AzimuthalEquidistant(GeographicLib::Geodesic::WGS84()));
         break;
+      case ProjectionKind::LambertAzimuthalEqualArea:
+        Impl->AzimuthalEqualArea.reset(new LambertAzimuthalEqualArea(a, f, p.CentralLatitude));
+        break;
     }
   }
   catch (const GeographicLib::GeographicErr& e)
@@ -513,6 +529,9 @@ Point2 GeographicProjection::Forward(const Point2& lonlat, long long id) const
     case ProjectionKind::AzimuthalEquidistant:
       Impl->Azimuthal->Forward(Params.CentralLatitude, lon0, lonlat.y, lon, xy.x, xy.y);
       break;
+    case ProjectionKind::LambertAzimuthalEqualArea:
+      Impl->AzimuthalEqualArea->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
+      break;
   }
   if (!(std::abs(xy.x) <= MaxProjectedMagnitude) || !(std::abs(xy.y) <= MaxProjectedMagnitude))
   {
@@ -558,6 +577,9 @@ Point2 GeographicProjection::Inverse(const Point2& xy, long long id) const
       break;
     case ProjectionKind::AzimuthalEquidistant:
       Impl->Azimuthal->Reverse(Params.CentralLatitude, lon0, xy.x, xy.y, lonlat.y, lonlat.x);
+      break;
+    case ProjectionKind::LambertAzimuthalEqualArea:
+      Impl->AzimuthalEqualArea->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
       break;
   }
   if (!std::isfinite(lonlat.x) || !std::isfinite(lonlat.y))

@@ -22,18 +22,22 @@ enum class ProjectionKind
   LambertConformalConic,
   TransverseMercator,
   UTM,
-  AzimuthalEquidistant
+  AzimuthalEquidistant,
+  LambertAzimuthalEqualArea
 };
 
 const char* ProjectionKindName(ProjectionKind kind);
+/// Whether a projection keeps areas (the two equal-area ones: Albers, Lambert azimuthal), so
+/// that plane areas are ellipsoidal areas.
+bool KeepsAreas(ProjectionKind kind);
 
 /// Everything needed to repeat a projection. Unused fields are ignored by a kind
 /// (e.g. StandardParallel1/2 only matter to the two conics).
 struct ProjectionParameters
 {
   ProjectionKind Kind = ProjectionKind::AlbersEqualArea;
-  double CentralLongitude = 0.0;  ///< central meridian (conics, transverse Mercator, azimuthal)
-  double CentralLatitude = 0.0;   ///< centre latitude of the azimuthal projection
+  double CentralLongitude = 0.0;  ///< central meridian (conics, transverse Mercator, azimuthals)
+  double CentralLatitude = 0.0;   ///< centre latitude of the azimuthal projections
   double StandardParallel1 = 0.0; ///< conics
   double StandardParallel2 = 0.0; ///< conics
   int UTMZone = 0;                ///< 1..60 for UTM

@@ -29,6 +29,7 @@ PROJECTIONS = {
     "tmerc": "SetProjectionToTransverseMercator",
     "utm": "SetProjectionToUTM",
     "azimuthal": "SetProjectionToAzimuthalEquidistant",
+    "laea": "SetProjectionToLambertAzimuthalEqualArea",
 }
 
 

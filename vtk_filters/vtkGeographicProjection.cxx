@@ -217,6 +217,8 @@ tessera::ProjectionKind KindOf(int projection)
       return tessera::ProjectionKind::UTM;
     case vtkGeographicProjection::AZIMUTHAL_EQUIDISTANT:
       return tessera::ProjectionKind::AzimuthalEquidistant;
+    case vtkGeographicProjection::LAMBERT_AZIMUTHAL_EQUAL_AREA:
+      return tessera::ProjectionKind::LambertAzimuthalEqualArea;
     default:
       return tessera::ProjectionKind::AlbersEqualArea;
   }
@@ -612,7 +614,8 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
         "LambertConformalConic",
         "TransverseMercator",
         "UTM",
-        "AzimuthalEquidistant" });
+        "AzimuthalEquidistant",
+        "LambertAzimuthalEqualArea" });
     // (the zone is a UTM setting: a value left from a UTM choice does not stop another projection)
     if (this->Projection == UTM && (this->UTMZone < 0 || this->UTMZone > 60))
     {

@@ -19,6 +19,9 @@
  *   zone of the central longitude: the data's, or CentralLongitude with ParametersFromData off,
  *   the hemisphere then CentralLatitude's; false easting 500 km, false northing 10000 km south).
  * - AzimuthalEquidistant about (CentralLongitude, CentralLatitude).
+ * - LambertAzimuthalEqualArea about (CentralLongitude, CentralLatitude), on the ellipsoid (EPSG
+ *   method 9820, as EPSG:3035, LAEA Europe, without its false easting and northing).
+ *   Equal-area, as Albers is.
  * With ParametersFromData on (default) the centre and standard parallels come from the data as
  * for Automatic; off, the values set with SetCentralLongitude, SetCentralLatitude and
  * SetStandardParallels are used, by Automatic too (it is then the Albers equal-area conic with
@@ -78,7 +81,8 @@ public:
     LAMBERT_CONFORMAL_CONIC = 2,
     TRANSVERSE_MERCATOR = 3,
     UTM = 4,
-    AZIMUTHAL_EQUIDISTANT = 5
+    AZIMUTHAL_EQUIDISTANT = 5,
+    LAMBERT_AZIMUTHAL_EQUAL_AREA = 6
   };
 
   ///@{
@@ -89,7 +93,7 @@ public:
   vtkSetMacro(Projection, int);
   // The range VTK's clamping setter announced (kept: a value outside is an error at the update).
   virtual int GetProjectionMinValue() { return AUTOMATIC; }
-  virtual int GetProjectionMaxValue() { return AZIMUTHAL_EQUIDISTANT; }
+  virtual int GetProjectionMaxValue() { return LAMBERT_AZIMUTHAL_EQUAL_AREA; }
   vtkGetMacro(Projection, int);
   void SetProjectionToAutomatic() { this->SetProjection(AUTOMATIC); }
   void SetProjectionToAlbersEqualArea() { this->SetProjection(ALBERS_EQUAL_AREA); }
@@ -97,6 +101,10 @@ public:
   void SetProjectionToTransverseMercator() { this->SetProjection(TRANSVERSE_MERCATOR); }
   void SetProjectionToUTM() { this->SetProjection(UTM); }
   void SetProjectionToAzimuthalEquidistant() { this->SetProjection(AZIMUTHAL_EQUIDISTANT); }
+  void SetProjectionToLambertAzimuthalEqualArea()
+  {
+    this->SetProjection(LAMBERT_AZIMUTHAL_EQUAL_AREA);
+  }
   ///@}
 
   ///@{

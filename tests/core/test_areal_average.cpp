@@ -419,18 +419,28 @@ TEST(ArealAverage, EqualAreaPlaneAgreesWithGeodesicPolygons)
   std::mt19937_64 random(5);
   const std::vector<Point2> gauges = UniformGauges(40, random, -109.0, -102.0, 37.0, 41.0);
   const Square catchment(-108.0, 37.5, -103.0, 40.5);
-  ArealAverageSettings plane, geodesic;
-  plane.Areas = AreaMethod::EqualAreaPlane;
-  geodesic.Areas = AreaMethod::GeodesicPolygon;
-  ThiessenArealAverage a(gauges, catchment.Offsets, catchment.Ring, plane);
-  ThiessenArealAverage b(gauges, catchment.Offsets, catchment.Ring, geodesic);
-  EXPECT_NEAR(a.CatchmentAreaM2() / b.CatchmentAreaM2(), 1.0, 1e-7);
-  const std::vector<double> values(gauges.size(), 1.0);
-  const ArealStep x = a.Step(values), y = b.Step(values);
-  ASSERT_EQ(x.Gauges, y.Gauges);
-  for (std::size_t k = 0; k < x.Weights.size(); ++k)
+  // The automatic Albers conic, and the Lambert azimuthal equal-area projection, which the
+  // automatic area method also measures in its plane.
+  for (const char* record : { "", "projection=LambertAzimuthalEqualArea lon0=-105 lat0=39" })
   {
-    EXPECT_NEAR(x.AreasM2[k], y.AreasM2[k], 1e-6 * a.CatchmentAreaM2() / gauges.size());
+    ArealAverageSettings plane, geodesic;
+    plane.HaveProjection = geodesic.HaveProjection = *record != '\0';
+    if (plane.HaveProjection)
+    {
+      plane.Projection = geodesic.Projection = ProjectionParameters::FromString(record);
+    }
+    geodesic.Areas = AreaMethod::GeodesicPolygon;
+    ThiessenArealAverage a(gauges, catchment.Offsets, catchment.Ring, plane);
+    ThiessenArealAverage b(gauges, catchment.Offsets, catchment.Ring, geodesic);
+    EXPECT_EQ(a.Method(), AreaMethod::EqualAreaPlane) << record;
+    EXPECT_NEAR(a.CatchmentAreaM2() / b.CatchmentAreaM2(), 1.0, 1e-7) << record;
+    const std::vector<double> values(gauges.size(), 1.0);
+    const ArealStep x = a.Step(values), y = b.Step(values);
+    ASSERT_EQ(x.Gauges, y.Gauges);
+    for (std::size_t k = 0; k < x.Weights.size(); ++k)
+    {
+      EXPECT_NEAR(x.AreasM2[k], y.AreasM2[k], 1e-6 * a.CatchmentAreaM2() / gauges.size()) << record;
+    }
   }
 }
 

@@ -85,7 +85,8 @@ TEST(Geo, RoundTripsToANanodegreeForEveryProjection)
          ProjectionKind::LambertConformalConic,
          ProjectionKind::TransverseMercator,
          ProjectionKind::UTM,
-         ProjectionKind::AzimuthalEquidistant })
+         ProjectionKind::AzimuthalEquidistant,
+         ProjectionKind::LambertAzimuthalEqualArea })
   {
     GeographicProjection projection(ParametersFromExtent(kind, extent));
     for (std::size_t i = 0; i < points.size(); ++i)
@@ -286,6 +287,8 @@ TEST(Geo, ParameterRecordRoundTripsExactly)
     std::string::npos);
   EXPECT_NE(
     messageOf("projection=AzimuthalEquidistant lon0=3").find("lacks lat0"), std::string::npos);
+  EXPECT_NE(messageOf("projection=LambertAzimuthalEqualArea lat0=52").find("lacks lon0"),
+    std::string::npos);
   EXPECT_NE(messageOf("projection=UTM north=1").find("lacks zone"), std::string::npos);
   EXPECT_EQ(messageOf("projection=UTM zone=13"), "read");
   EXPECT_EQ(messageOf("projection=TransverseMercator lon0=0.5"), "read");
@@ -312,7 +315,8 @@ TEST(Geo, SameProjectionIsWhetherPointsLandAlike)
     ProjectionKind::LambertConformalConic,
     ProjectionKind::TransverseMercator,
     ProjectionKind::UTM,
-    ProjectionKind::AzimuthalEquidistant };
+    ProjectionKind::AzimuthalEquidistant,
+    ProjectionKind::LambertAzimuthalEqualArea };
   int different = 0;
   for (const ProjectionKind kind : kinds)
   {
@@ -347,8 +351,8 @@ TEST(Geo, SameProjectionIsWhetherPointsLandAlike)
       different += alike ? 0 : 1;
     }
   }
-  // Each kind uses some of the six fields: 3 + 3 + 1 + 2 + 2.
-  EXPECT_EQ(different, 11);
+  // Each kind uses some of the six fields: 3 + 3 + 1 + 2 + 2 + 2.
+  EXPECT_EQ(different, 13);
   ProjectionParameters other;
   other.Kind = ProjectionKind::LambertConformalConic;
   ProjectionParameters same = other;
@@ -408,4 +412,162 @@ TEST(Geo, BadRecordsAndOppositePolesAreErrors)
     p.StandardParallel2 = -90.0;
     EXPECT_THROW(tessera::GeographicProjection{ p }, tessera::InputError);
   }
+}
+
+namespace
+{
+/// The angle between two lon/lat directions on the sphere (degrees).
+double GreatCircleDegrees(const Point2& a, const Point2& b)
+{
+  const double d = M_PI / 180.0;
+  const double c = std::sin(a.y * d) * std::sin(b.y * d) +
+    std::cos(a.y * d) * std::cos(b.y * d) * std::cos((a.x - b.x) * d);
+  return std::acos(std::min(1.0, std::max(-1.0, c))) / d;
+}
+
+tessera::GeographicProjection LambertAzimuthal(double lat0, double lon0)
+{
+  tessera::ProjectionParameters p;
+  p.Kind = tessera::ProjectionKind::LambertAzimuthalEqualArea;
+  p.CentralLatitude = lat0;
+  p.CentralLongitude = lon0;
+  return tessera::GeographicProjection(p);
+}
+} // namespace
+
+// Against PROJ 9.1.1, an independent implementation (cs2cs -f %.6f +proj=lonlat +datum=WGS84
+// +to +proj=laea +lat_0=LAT0 +lon_0=LON0 +datum=WGS84), in every aspect: oblique (LAEA Europe's
+// centre; EPSG Guidance Note 7-2's example, 50 N 5 E, is E 3962799.45 N 2999718.85 with its false
+// origin 4321000, 3210000), north and south polar, equatorial, and far from the centre. A metre
+// from the pole, PROJ's polar formula loses 1.5 mm to cancellation (a sqrt(q_p - q) gives
+// -11.170932): there the value is the exact one, from that formula in 40-digit arithmetic.
+TEST(Geo, LambertAzimuthalEqualAreaMatchesProjInEveryAspect)
+{
+  struct Case
+  {
+    double Lat0, Lon0, Lon, Lat, X, Y;
+  };
+  const Case cases[] = {
+    { 52, 10, 5, 50, -358200.549042, -210281.146841 },
+    { 52, 10, -10, 35, -1822462.000392, -1644428.233992 },
+    { 52, 10, 40, 70, 1116144.602579, 2246815.649100 },
+    { 52, 10, 10, 52, 0, 0 },
+    { 90, -40, -60, 80, -381492.363476, -1048141.654344 },
+    { 90, -40, 100, 60.5, 2092901.780708, 2494223.216106 },
+    { 90, -40, -40, 89.9999, 0, -11.169397955911 },
+    { -90, 0, -60, -80, -965972.573742, 557704.525480 },
+    { -90, 0, 135, -55, 2718393.549057, -2718393.549057 },
+    { 0, 10, 30, -20, 2113450.793159, -2234031.895832 },
+    { 0, 10, -70, 10, -8085103.626888, 1437923.676135 },
+    { 0, 10, 100, 1, 9018686.302373, 156367.914071 },
+    { 45, 10, 170, -75, 2099833.092261, -12081707.594796 },
+    { 45, 10, -170, 30, 0, 10119420.782086 },
+  };
+  for (const Case& c : cases)
+  {
+    const auto projection = LambertAzimuthal(c.Lat0, c.Lon0);
+    const Point2 xy = projection.Forward({ c.Lon, c.Lat });
+    EXPECT_NEAR(xy.x, c.X, 2e-6) << c.Lat0 << " " << c.Lon0 << ": " << c.Lon << " " << c.Lat;
+    EXPECT_NEAR(xy.y, c.Y, 2e-6) << c.Lat0 << " " << c.Lon0 << ": " << c.Lon << " " << c.Lat;
+    const Point2 back = projection.Inverse({ c.X, c.Y });
+    EXPECT_LT(AngularDistance(back.x, c.Lon), 1e-9) << c.Lat0 << " " << c.Lon0 << ": " << c.Lon;
+    EXPECT_NEAR(back.y, c.Lat, 1e-9) << c.Lat0 << " " << c.Lon0 << ": " << c.Lat;
+  }
+}
+
+// Round trips to 1e-9 degrees (0.1 mm) up to 170 degrees from the centre (nearer its antipode,
+// where the plane's rim is, the inverse is ill-conditioned), in the polar, equatorial and oblique
+// aspects, including points a nanometre from the centre and from the pole.
+TEST(Geo, LambertAzimuthalEqualAreaRoundTripsInEveryAspect)
+{
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (const double lat0 : { 90.0, 89.99, 52.0, 0.0, -33.0, -90.0 })
+  {
+    const double lon0 = 17.0;
+    const auto projection = LambertAzimuthal(lat0, lon0);
+    std::vector<Point2> points = {
+      { lon0, lat0 }, { lon0 + 1e-14, lat0 }, { lon0, 90.0 }, { lon0 + 30.0, -90.0 + 1e-12 }
+    };
+    for (int i = 0; i < 2000; ++i)
+    {
+      // Uniform on the sphere: sine of the latitude uniform.
+      points.push_back({ lon0 + 180.0 * unit(random), std::asin(unit(random)) * 180.0 / M_PI });
+    }
+    for (const Point2& q : points)
+    {
+      if (GreatCircleDegrees(q, { lon0, lat0 }) > 170.0)
+      {
+        continue;
+      }
+      const Point2 xy = projection.Forward(q);
+      const Point2 back = projection.Inverse(xy);
+      const double lonError = std::abs(q.y) > 90.0 - 1e-9 ? 0.0 : AngularDistance(back.x, q.x);
+      EXPECT_LT(lonError * std::cos(q.y * M_PI / 180.0), 1e-9) << lat0 << ": " << q.x << " " << q.y;
+      EXPECT_NEAR(back.y, q.y, 1e-9) << lat0 << ": " << q.x << " " << q.y;
+    }
+  }
+}
+
+// Equal area: the planar area of a projected cell is its ellipsoidal area (GeographicLib's
+// PolygonArea), near and far from the centre, in each aspect; and the scale at the centre is
+// true along the meridian and the parallel (from the ellipsoid's radii of curvature).
+TEST(Geo, LambertAzimuthalEqualAreaKeepsAreasAndTrueScaleAtTheCentre)
+{
+  struct Cell
+  {
+    double Lat0, Lon0, West, South;
+  };
+  for (const Cell& c : { Cell{ 52, 10, 5, 50 },
+         Cell{ 52, 10, -30, 20 },
+         Cell{ 90, 0, 100, 70 },
+         Cell{ -90, 0, -60, -80 },
+         Cell{ 0, 10, 60, -40 },
+         Cell{ -33, 150, 140, -10 } })
+  {
+    const std::vector<Point2> cell = DensifiedCell(c.West, c.South, 1.0, 400);
+    const auto projection = LambertAzimuthal(c.Lat0, c.Lon0);
+    std::vector<Point2> projected;
+    for (const Point2& q : cell)
+    {
+      projected.push_back(projection.Forward(q));
+    }
+    EXPECT_NEAR(ShoelaceArea(projected) / EllipsoidalRingArea(cell), 1.0, 1e-7)
+      << "centre " << c.Lat0 << " " << c.Lon0 << ", cell " << c.West << " " << c.South;
+  }
+  const double a = 6378137.0, f = 1.0 / 298.257223563, e2 = f * (2.0 - f);
+  for (const double lat0 : { 52.0, 0.0, -33.0 })
+  {
+    const auto projection = LambertAzimuthal(lat0, 10.0);
+    const double s = std::sin(lat0 * M_PI / 180.0), w = std::sqrt(1.0 - e2 * s * s);
+    const double meridianRadius = a * (1.0 - e2) / (w * w * w);
+    const double parallelRadius = a * std::cos(lat0 * M_PI / 180.0) / w;
+    const double step = 1e-3, radians = step * M_PI / 180.0; // (111 m: y keeps 1e-9 m)
+    const Point2 north = projection.Forward({ 10.0, lat0 + step });
+    const Point2 south = projection.Forward({ 10.0, lat0 - step });
+    const Point2 east = projection.Forward({ 10.0 + step, lat0 });
+    const Point2 west = projection.Forward({ 10.0 - step, lat0 });
+    EXPECT_NEAR((north.y - south.y) / (2.0 * meridianRadius * radians), 1.0, 1e-9) << lat0;
+    EXPECT_NEAR((east.x - west.x) / (2.0 * parallelRadius * radians), 1.0, 1e-9) << lat0;
+  }
+}
+
+// The centre's antipode has no image, and a plane point beyond the image's rim no preimage: both
+// are errors naming the point, not NaN coordinates.
+TEST(Geo, LambertAzimuthalEqualAreaRefusesTheAntipodeAndPointsBeyondTheRim)
+{
+  const auto projection = LambertAzimuthal(52.0, 10.0);
+  EXPECT_NE(ErrorOf(
+              [&] {
+                projection.Forward({ -170.0, -52.0 }, 7);
+              })
+              .find("cannot be represented by the LambertAzimuthalEqualArea projection"),
+    std::string::npos);
+  EXPECT_NE(ErrorOf(
+              [&] {
+                projection.Inverse({ 0.0, 1.3e7 }, 8);
+              })
+              .find("has no inverse"),
+    std::string::npos);
+  EXPECT_NE(ErrorOf([&] { projection.Inverse({ 0.0, 1.3e7 }, 8); }).find("8"), std::string::npos);
 }

@@ -76,6 +76,32 @@ def test_azimuthal_equidistant_keeps_distances_from_the_centre():
         assert_close(math.hypot(x, y) / expected, 1.0, 0.006, f"distance ratio of point {i}")
 
 
+def test_lambert_azimuthal_equal_area_is_laea_europe_and_goes_back_by_its_record():
+    # EPSG Guidance Note 7-2's example of LAEA Europe (EPSG:3035: centre 52 N 10 E, false origin
+    # 4321000, 3210000): 50 N 5 E is E 3962799.45, N 2999718.85. The record takes the inverse back.
+    data = make_points([(5.0, 50.0), (10.0, 52.0), (-9.5, 38.7)])
+    f = vtkGeographicProjection()
+    f.SetInputData(data)
+    f.SetProjectionToLambertAzimuthalEqualArea()
+    f.ParametersFromDataOff()
+    f.SetCentralLongitude(10.0)
+    f.SetCentralLatitude(52.0)
+    f.Update()
+    out = f.GetOutput()
+    assert_close(out.GetPoint(0)[0] + 4321000.0, 3962799.45, 0.005, "easting of 50 N 5 E")
+    assert_close(out.GetPoint(0)[1] + 3210000.0, 2999718.85, 0.005, "northing of 50 N 5 E")
+    assert_that(out.GetPoint(1)[:2] == (0.0, 0.0), f"the centre maps to the origin: {out.GetPoint(1)}")
+    assert_that(projection_record(out).startswith("projection=LambertAzimuthalEqualArea lon0=10 lat0=52 "),
+                projection_record(out))
+    inverse = vtkGeographicProjection()
+    inverse.SetInputConnection(f.GetOutputPort())
+    inverse.InverseOn()
+    inverse.Update()
+    for i in range(3):
+        for axis in range(2):
+            assert_close(inverse.GetOutput().GetPoint(i)[axis], data.GetPoint(i)[axis], 1e-9, f"point {i} back")
+
+
 def test_nan_point_is_named_and_output_is_empty():
     points = vtkPoints()
     points.InsertNextPoint(-105.0, 39.0, 0.0)
@@ -389,7 +415,7 @@ def test_a_projection_or_zone_that_is_no_choice_is_named():
     # A NaN centre set by hand is named too. The ranges the clamping setters announced are kept.
     g = vtkGeographicProjection()
     assert_that((g.GetProjectionMinValue(), g.GetProjectionMaxValue(), g.GetUTMZoneMinValue(), g.GetUTMZoneMaxValue())
-                == (0, 5, 0, 60), "the ranges")
+                == (0, 6, 0, 60), "the ranges")
     for setup, expected in [(lambda f: f.SetProjection(9), "Projection 9 is not one of 0 (Automatic), 1 (AlbersEqualArea)"),
                             (lambda f: (f.SetProjectionToUTM(), f.SetUTMZone(61)),
                              "UTMZone 61 is neither a zone from 1 to 60 nor 0"),
@@ -433,6 +459,7 @@ def test_a_projection_or_zone_that_is_no_choice_is_named():
 if __name__ == "__main__":
     run([test_round_trip_of_the_colorado_gauges,
          test_azimuthal_equidistant_keeps_distances_from_the_centre,
+         test_lambert_azimuthal_equal_area_is_laea_europe_and_goes_back_by_its_record,
          test_nan_point_is_named_and_output_is_empty,
          test_the_blocks_of_a_composite_share_one_projection,
          test_utm_metres_without_a_record_go_back_by_their_zone,
