@@ -3,8 +3,10 @@ a catchment file that declares a projected coordinate system (a shapefile's .prj
 "crs"), and a stations file of x and y columns given --stations-utm or --stations-crs.
 
 The systems read are those GDAL writes in PROJ's terms as +proj=utm, tmerc (transverse Mercator),
-aea (Albers equal-area conic) and lcc (Lambert conformal conic, with one or two standard
-parallels), in metres or feet. Each is made lon/lat by vtkGeographicProjection's inverse. That
+aea (Albers equal-area conic), lcc (Lambert conformal conic, with one or two standard parallels)
+and laea (Lambert azimuthal equal-area, as LAEA Europe, EPSG:3035), in metres or feet, on an
+ellipsoid (a sphere's +R= is refused: its inverse differs by kilometres). Each is made lon/lat by
+vtkGeographicProjection's inverse. That
 filter's planes have no false easting or northing, a scale of 1 and their own origin, so the
 file's x, y are first moved into the filter's plane:
 
@@ -12,7 +14,8 @@ file's x, y are first moved into the filter's plane:
 
 where (X, Y) is the filter's image of the file's origin (lon_0, lat_0): both planes are the same
 map of the ellipsoid up to that shift and scale (for a conic, the same cone radius and angle
-about the same apex; for the transverse Mercator, the same meridian distance).
+about the same apex; for the transverse Mercator, the same meridian distance; for the azimuthal
+projection, the same centre).
 
 The filter's ellipsoid is WGS84's. NAD83 and ETRS89 (GRS80) lie within a metre or two of it;
 another datum (NAD27, ED50, OSGB36) is warned of where the catchment is read.
@@ -25,8 +28,10 @@ import sys
 import csv_input
 
 # What each PROJ projection is in vtkGeographicProjection (SetProjection's values).
-KINDS = {"tmerc": ("TransverseMercator", 3), "aea": ("AlbersEqualArea", 1), "lcc": ("LambertConformalConic", 2)}
-READ = "UTM, transverse Mercator (tmerc), Albers equal-area (aea) and Lambert conformal conic (lcc)"
+KINDS = {"tmerc": ("TransverseMercator", 3), "aea": ("AlbersEqualArea", 1), "lcc": ("LambertConformalConic", 2),
+         "laea": ("LambertAzimuthalEqualArea", 6)}
+READ = ("UTM, transverse Mercator (tmerc), Albers equal-area (aea), Lambert conformal conic (lcc) and Lambert "
+        "azimuthal equal-area (laea)")
 
 # Metres per unit of PROJ's +units (GDAL writes +to_meter for others).
 UNITS = {"m": 1.0, "km": 1000.0, "ft": 0.3048, "us-ft": 1200.0 / 3937.0}
@@ -59,7 +64,7 @@ class PlaneSystem:
         if self.kind == "utm":
             return f"UTM zone {self.zone}{'N' if self.north else 'S'}, WGS84"
         terms = [f"lon_0={self.lon0:g}", f"lat_0={self.lat0:g}"]
-        if self.kind != "tmerc":
+        if self.kind in ("aea", "lcc"):
             terms += [f"lat_1={self.lat1:g}", f"lat_2={self.lat2:g}"]
         if self.k0 != 1.0:
             terms.append(f"k_0={self.k0:.10g}")
@@ -88,6 +93,10 @@ def proj4_system(text):
         return PlaneSystem.utm(int(zone), "south" not in terms)
     if name not in KINDS:
         return f"the projection +proj={name} (read here: {READ})"
+    sphere = spherical(terms)
+    if sphere:
+        return (f"{sphere}: a projection of the sphere, whose inverse differs from the ellipsoid's by up to "
+                "kilometres (read here: systems on WGS84, GRS80 or another ellipsoid)")
     wanted = {"lon_0": "0", "lat_0": "0", "lat_1": "0", "lat_2": terms.get("lat_1", "0"), "x_0": "0", "y_0": "0",
               "k_0": terms.get("k", "1"), "to_meter": "1"}  # (one standard parallel: both at it)
     number = {}
@@ -181,6 +190,22 @@ def stations_system(utm, crs, gdal_messages):
               "datum shift: they may lie tens to hundreds of metres off (reproject them to WGS84 where that "
               "matters)", file=sys.stderr)
     return system
+
+
+def spherical(terms):
+    """The term that makes PROJ terms (proj_terms') a sphere's ("+R=6370997", "+ellps=sphere",
+    "+a=6378137 +b=6378137"); else ""."""
+    if "R" in terms:
+        return f"+R={terms['R']}"
+    if terms.get("ellps") == "sphere":
+        return "+ellps=sphere"
+    for key, sphere in (("b", terms.get("a")), ("rf", "0"), ("f", "0")):
+        try:
+            if "a" in terms and key in terms and float(terms[key]) == float(sphere):
+                return f"+a={terms['a']} +{key}={terms[key]}"
+        except ValueError:
+            pass  # (a term that is not a number is named where it is read)
+    return ""
 
 
 def other_ellipsoid(proj4):

@@ -1816,7 +1816,8 @@ def test_a_catchment_declared_projected_is_named():
         assert_that(f"{utm}: declares the projected coordinate system 'WGS 84 / UTM zone 60S'; its coordinates are "
                     "read as longitude/latitude in degrees (WGS84), which they must be (else reproject the file, "
                     "e.g. ogr2ogr -t_srs EPSG:4326 out.shp in.shp; the metres of UTM, transverse Mercator (tmerc), "
-                    "Albers equal-area (aea) and Lambert conformal conic (lcc) are made lon/lat here)"
+                    "Albers equal-area (aea), Lambert conformal conic (lcc) and Lambert azimuthal equal-area (laea) "
+                    "are made lon/lat here)"
                     in stderr_messages(stderr), f"{stderr}")
         _, stderr = run_colorado(out, stations=stations, observations=observations, catchment=catchment, plots=False)
         assert_that("declares" not in stderr, f"the lon/lat basin: {stderr}")
@@ -1936,23 +1937,39 @@ def test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means():
             assert_that(message in stderr and "Traceback" not in stderr, f"{message!r} not in {stderr!r}")
 
 
-# Snyder's ellipsoidal forward formulas for the two conics (Map Projections: A Working Manual, 1987,
-# eqs. 14-12 to 14-19 and 15-7 to 15-11), on WGS84, as PROJ defines +proj=aea and +proj=lcc: written
-# here apart from the script's path, which inverts with GeographicLib.
+# Snyder's ellipsoidal forward formulas for the two conics and the azimuthal equal-area projection
+# (Map Projections: A Working Manual, 1987, eqs. 14-12 to 14-19, 15-7 to 15-11 and 24-13 to 24-17),
+# on WGS84, as PROJ defines +proj=aea, lcc and laea: written here apart from the script's path,
+# which inverts with GeographicLib's and core/lambert_azimuthal_equal_area's.
 WGS84_A, WGS84_F = 6378137.0, 1 / 298.257223563
+WGS84_E2 = WGS84_F * (2 - WGS84_F)
+
+
+def snyder_m(p):
+    return math.cos(p) / math.sqrt(1 - WGS84_E2 * math.sin(p) ** 2)
+
+
+def snyder_q(p):
+    e, s = math.sqrt(WGS84_E2), math.sin(p)
+    return (1 - WGS84_E2) * (s / (1 - WGS84_E2 * s * s) - math.log((1 - e * s) / (1 + e * s)) / (2 * e))
+
+
+def snyder_laea(lon, lat, lon0, lat0, x0=0.0, y0=0.0):
+    """(x, y) in metres of (lon, lat) in PROJ's laea about (lon0, lat0), oblique aspect."""
+    qp = snyder_q(math.pi / 2)
+    beta, beta0 = (math.asin(snyder_q(math.radians(v)) / qp) for v in (lat, lat0))
+    rq = WGS84_A * math.sqrt(qp / 2)
+    d = WGS84_A * snyder_m(math.radians(lat0)) / (rq * math.cos(beta0))
+    dl = math.radians(lon - lon0)
+    b = rq * math.sqrt(2 / (1 + math.sin(beta0) * math.sin(beta) + math.cos(beta0) * math.cos(beta) * math.cos(dl)))
+    return (x0 + b * d * math.cos(beta) * math.sin(dl),
+            y0 + b / d * (math.cos(beta0) * math.sin(beta) - math.sin(beta0) * math.cos(beta) * math.cos(dl)))
 
 
 def snyder_conic(kind, lon, lat, lon0, lat0, lat1, lat2, x0=0.0, y0=0.0, k0=1.0):
     """(x, y) in metres of (lon, lat) in PROJ's kind ("aea" or "lcc") with these terms."""
-    e2 = WGS84_F * (2 - WGS84_F)
-    e = math.sqrt(e2)
-
-    def m(p):
-        return math.cos(p) / math.sqrt(1 - e2 * math.sin(p) ** 2)
-
-    def q(p):
-        s = math.sin(p)
-        return (1 - e2) * (s / (1 - e2 * s * s) - math.log((1 - e * s) / (1 + e * s)) / (2 * e))
+    e = math.sqrt(WGS84_E2)
+    m, q = snyder_m, snyder_q
 
     def t(p):
         s = math.sin(p)
@@ -2007,11 +2024,14 @@ def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_la
     # The lake basin (its edges cut every 0.001 degrees in lon/lat) and its gauges given in three
     # projected systems: a southern Albers conic, a Lambert conic in US feet with false origins
     # (Snyder's formulas above) and a transverse Mercator with a latitude of origin, scale and
-    # false origins (from UTM 60S's eastings and northings, by the filter's UTM path). Catchment
+    # false origins (from UTM 60S's eastings and northings, by the filter's UTM path), and a Lambert
+    # azimuthal equal-area projection about the basin (Snyder's formulas) with the gauges in LAEA
+    # Europe (EPSG:3035, looked up by GDAL: the basin lies some 164 degrees from its centre). Catchment
     # (a GeoJSON "crs" of PROJ terms, a shapefile's ESRI .prj) and gauges (--stations-crs) each
     # in another system than the other: every run gives the lon/lat files' counts and means to
     # 1e-8. The gauges in UTM 60S given as --stations-crs EPSG:32760 do too. A system that is not
-    # read, an EPSG code GDAL does not know and both station options end the run naming them.
+    # read, a sphere's, an EPSG code GDAL does not know and both station options end the run naming
+    # them.
     import json
 
     us_foot = 1200 / 3937
@@ -2024,7 +2044,10 @@ def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_la
                 lambda ps: [tuple(v / us_foot for v in snyder_conic("lcc", x, y, 175, -41, -37.5, -40.5, 2510000,
                                                                     6023150)) for x, y in ps]),
         "tmerc": ("+proj=tmerc +lat_0=-39 +lon_0=177 +k=0.9996 +x_0=1600000 +y_0=800000 +datum=WGS84 +units=m",
-                  lambda ps: [(x - 500000 + 1600000, y - origin_utm[1] + 800000) for x, y in utm_60s(ps)])}
+                  lambda ps: [(x - 500000 + 1600000, y - origin_utm[1] + 800000) for x, y in utm_60s(ps)]),
+        "laea": ("+proj=laea +lat_0=-40 +lon_0=176 +x_0=500000 +y_0=700000 +datum=WGS84 +units=m",
+                 lambda ps: [snyder_laea(x, y, 176, -40, 500000, 700000) for x, y in ps]),
+        "EPSG:3035": ("EPSG:3035", lambda ps: [snyder_laea(x, y, 10, 52, 4321000, 3210000) for x, y in ps])}
     lcc_prj = ('PROJCS["lake_lcc",GEOGCS["GCS_WGS_1984",DATUM["D_WGS_1984",SPHEROID["WGS_1984",6378137.0,'
                '298.257223563]],PRIMEM["Greenwich",0.0],UNIT["Degree",0.0174532925199433]],PROJECTION['
                f'"Lambert_Conformal_Conic"],PARAMETER["False_Easting",{2510000 / us_foot!r}],PARAMETER['
@@ -2060,8 +2083,8 @@ def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_la
             return write(out, f"stations_{name}.csv", "station_id,x,y\n" + "".join(
                 f"{s},{x!r},{y!r}\n" for s, (x, y) in zip(LAKE_GAUGES, xy)))
 
-        runs = [(c, systems[g][0], stations_in(systems[g][1], g)) for c, g in
-                (("aea", "lcc"), ("lcc", "tmerc"), ("tmerc", "aea"))]
+        runs = [(c, systems[g][0], stations_in(systems[g][1], g.replace(":", "_"))) for c, g in
+                (("aea", "lcc"), ("lcc", "tmerc"), ("tmerc", "aea"), ("laea", "EPSG:3035"))]
         runs.append(("aea", "EPSG:32760", stations_in(utm_60s, "utm")))
         for name, crs, xy in runs:
             path = catchment_in(name)
@@ -2077,28 +2100,32 @@ def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_la
                                  catchment=catchment, plots=False, what="airy", **{"stations-crs": airy})
         assert_that(f"--stations-crs {airy!r}: the ellipsoid airy; the gauges' x, y are made longitude/latitude on "
                     "WGS84's, without the datum shift" in stderr, f"airy: {stderr}")
-        laea = dict(LAKE_BASIN, crs={"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::3035"}})
-        laea["features"] = json.loads(json.dumps(cut["features"]))
-        laea["features"][0]["geometry"]["coordinates"] = [[[x * 1e4, y * 1e4] for x, y in r] for r in rings]
-        laea_path = write(out, "laea.geojson", json.dumps(laea))
+        eqc = dict(LAKE_BASIN, crs={"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::4087"}})
+        eqc["features"] = json.loads(json.dumps(cut["features"]))
+        eqc["features"][0]["geometry"]["coordinates"] = [[[x * 1e4, y * 1e4] for x, y in r] for r in rings]
+        eqc_path = write(out, "eqc.geojson", json.dumps(eqc))
         xy = runs[0][2]
         typo = write(out, "typo.csv", "station_id,x,y\nN1,1000000,2000000\nN2,-1e9,2000000\n")
         # A UTM zone without N or S is read as north, and said.
-        _, stderr = run_colorado(os.path.join(out, "north"), stations=runs[3][2], observations=observations,
+        _, stderr = run_colorado(os.path.join(out, "north"), stations=runs[4][2], observations=observations,
                                  catchment=catchment, plots=False, what="--stations-utm 60", **{"stations-utm": "60"})
         assert_that("--stations-utm 60: read as zone 60N, in the northern hemisphere (give 60S for the southern)"
                     in stderr, f"--stations-utm 60: {stderr}")
         # An EPSG code as it is written elsewhere: the same means as EPSG:CODE, bit for bit.
         for code in ("EPSG:32760", "epsg: 32760", "32760", "urn:ogc:def:crs:EPSG::32760"):
-            run_colorado(os.path.join(out, code.replace(":", "_")), stations=runs[3][2], observations=observations,
+            run_colorado(os.path.join(out, code.replace(":", "_")), stations=runs[4][2], observations=observations,
                          catchment=catchment, plots=False, what=code, **{"stations-crs": code})
         spelt = [read_csv(os.path.join(out, code.replace(":", "_"), "areal_mean.csv"))
                  for code in ("EPSG:32760", "epsg: 32760", "32760", "urn:ogc:def:crs:EPSG::32760")]
         assert_that(len(spelt[0]) == 2 and all(got == spelt[0] for got in spelt), f"EPSG codes: {spelt}")
-        cases = [({"catchment": laea_path, "stations": stations},
-                  f"{laea_path}: declares a projected coordinate system with the projection +proj=laea (read here: "
-                  "UTM, transverse Mercator (tmerc), Albers equal-area (aea) and Lambert conformal conic (lcc)); "
-                  "its coordinates are metres"),
+        sphere = systems["laea"][0].replace("+datum=WGS84", "+R=6371007")
+        cases = [({"catchment": eqc_path, "stations": stations},
+                  f"{eqc_path}: declares a projected coordinate system with the projection +proj=eqc (read here: "
+                  "UTM, transverse Mercator (tmerc), Albers equal-area (aea), Lambert conformal conic (lcc) and "
+                  "Lambert azimuthal equal-area (laea)); its coordinates are metres"),
+                 ({"catchment": catchment, "stations": xy, "stations-crs": sphere},
+                  f"--stations-crs {sphere!r}: +R=6371007: a projection of the sphere, whose inverse differs from the "
+                  "ellipsoid's by up to kilometres"),
                  ({"catchment": catchment, "stations": xy, "stations-crs": "EPSG:99999"},
                   "--stations-crs 'EPSG:99999': GDAL's database has no such EPSG code"),
                  ({"catchment": catchment, "stations": xy, "stations-crs": "+proj=lcc +lat_1=north"},
