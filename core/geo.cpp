@@ -2,6 +2,7 @@
 
 #include "errors.h"
 #include "lambert_azimuthal_equal_area.h"
+#include "mercator.h"
 
 #include <GeographicLib/AlbersEqualArea.hpp>
 #include <GeographicLib/AzimuthalEquidistant.hpp>
@@ -77,6 +78,10 @@ const char* ProjectionKindName(ProjectionKind kind)
       return "AzimuthalEquidistant";
     case ProjectionKind::LambertAzimuthalEqualArea:
       return "LambertAzimuthalEqualArea";
+    case ProjectionKind::Mercator:
+      return "Mercator";
+    case ProjectionKind::WebMercator:
+      return "WebMercator";
   }
   return "Unknown";
 }
@@ -100,6 +105,8 @@ bool SameProjection(const ProjectionParameters& a, const ProjectionParameters& b
       return a.CentralLongitude == b.CentralLongitude &&
         a.StandardParallel1 == b.StandardParallel1 && a.StandardParallel2 == b.StandardParallel2;
     case ProjectionKind::TransverseMercator:
+    case ProjectionKind::Mercator:
+    case ProjectionKind::WebMercator:
       return a.CentralLongitude == b.CentralLongitude;
     case ProjectionKind::UTM:
       return a.UTMZone == b.UTMZone && a.UTMNorth == b.UTMNorth;
@@ -137,6 +144,8 @@ void CheckRecordComplete(const std::string& text,
       needed = { "lon0", "lat1", "lat2" };
       break;
     case ProjectionKind::TransverseMercator:
+    case ProjectionKind::Mercator:
+    case ProjectionKind::WebMercator:
       needed = { "lon0" };
       break;
     case ProjectionKind::UTM:
@@ -204,7 +213,9 @@ ProjectionParameters ProjectionParameters::FromString(const std::string& text)
              ProjectionKind::TransverseMercator,
              ProjectionKind::UTM,
              ProjectionKind::AzimuthalEquidistant,
-             ProjectionKind::LambertAzimuthalEqualArea })
+             ProjectionKind::LambertAzimuthalEqualArea,
+             ProjectionKind::Mercator,
+             ProjectionKind::WebMercator })
       {
         if (value == ProjectionKindName(kind))
         {
@@ -372,10 +383,11 @@ struct GeographicProjection::Engines
 {
   std::unique_ptr<GeographicLib::AlbersEqualArea> Albers;
   std::unique_ptr<GeographicLib::LambertConformalConic> Lambert;
-  std::unique_ptr<GeographicLib::TransverseMercator> Mercator;
+  std::unique_ptr<GeographicLib::TransverseMercator> Transverse;
   std::unique_ptr<GeographicLib::AzimuthalEquidistant> Azimuthal;
   std::unique_ptr<LambertAzimuthalEqualArea> AzimuthalEqualArea;
-  double CentralMeridian = 0.0; // for UTM: the zone's
+  std::unique_ptr<Mercator> Cylinder; // Mercator and Web Mercator
+  double CentralMeridian = 0.0;       // for UTM: the zone's
   // GeographicLib 2.1's AlbersEqualArea given two southern standard parallels builds the
   // northern cone and flips y, which mirrors the map and puts the true-scale parallels in the
   // wrong hemisphere. A southern Albers is therefore computed as the northern one of the data
@@ -437,14 +449,14 @@ GeographicProjection::GeographicProjection(const ProjectionParameters& parameter
         }
         break;
       case ProjectionKind::TransverseMercator:
-        Impl->Mercator.reset(new GeographicLib::TransverseMercator(a, f, 1.0));
+        Impl->Transverse.reset(new GeographicLib::TransverseMercator(a, f, 1.0));
         break;
       case ProjectionKind::UTM:
         if (p.UTMZone < 1 || p.UTMZone > 60)
         {
           throw InputError("UTM zone " + std::to_string(p.UTMZone) + " is not in 1..60");
         }
-        Impl->Mercator.reset(new GeographicLib::TransverseMercator(a, f, UTMScale));
+        Impl->Transverse.reset(new GeographicLib::TransverseMercator(a, f, UTMScale));
         Impl->CentralMeridian = 6.0 * p.UTMZone - 183.0;
         break;
       case ProjectionKind::AzimuthalEquidistant:
@@ -453,6 +465,10 @@ GeographicProjection::GeographicProjection(const ProjectionParameters& parameter
         break;
       case ProjectionKind::LambertAzimuthalEqualArea:
         Impl->AzimuthalEqualArea.reset(new LambertAzimuthalEqualArea(a, f, p.CentralLatitude));
+        break;
+      case ProjectionKind::Mercator:
+      case ProjectionKind::WebMercator:
+        Impl->Cylinder.reset(new Mercator(a, p.Kind == ProjectionKind::Mercator ? f : 0.0));
         break;
     }
   }
@@ -513,7 +529,7 @@ Point2 GeographicProjection::Forward(const Point2& lonlat, long long id) const
           NumberText(lon0) + "; " + ProjectionKindName(Params.Kind) +
           " represents at most 45 degrees");
       }
-      Impl->Mercator->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
+      Impl->Transverse->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
       if (Params.Kind == ProjectionKind::UTM)
       {
         if (std::abs(xy.x) > UTMMaxEastingOffset)
@@ -531,6 +547,10 @@ Point2 GeographicProjection::Forward(const Point2& lonlat, long long id) const
       break;
     case ProjectionKind::LambertAzimuthalEqualArea:
       Impl->AzimuthalEqualArea->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
+      break;
+    case ProjectionKind::Mercator:
+    case ProjectionKind::WebMercator:
+      Impl->Cylinder->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
       break;
   }
   if (!(std::abs(xy.x) <= MaxProjectedMagnitude) || !(std::abs(xy.y) <= MaxProjectedMagnitude))
@@ -566,10 +586,10 @@ Point2 GeographicProjection::Inverse(const Point2& xy, long long id) const
       Impl->Lambert->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
       break;
     case ProjectionKind::TransverseMercator:
-      Impl->Mercator->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
+      Impl->Transverse->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
       break;
     case ProjectionKind::UTM:
-      Impl->Mercator->Reverse(lon0,
+      Impl->Transverse->Reverse(lon0,
         xy.x - UTMFalseEasting,
         xy.y - (Params.UTMNorth ? 0.0 : UTMSouthFalseNorthing),
         lonlat.y,
@@ -580,6 +600,10 @@ Point2 GeographicProjection::Inverse(const Point2& xy, long long id) const
       break;
     case ProjectionKind::LambertAzimuthalEqualArea:
       Impl->AzimuthalEqualArea->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
+      break;
+    case ProjectionKind::Mercator:
+    case ProjectionKind::WebMercator:
+      Impl->Cylinder->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
       break;
   }
   if (!std::isfinite(lonlat.x) || !std::isfinite(lonlat.y))

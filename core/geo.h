@@ -23,7 +23,9 @@ enum class ProjectionKind
   TransverseMercator,
   UTM,
   AzimuthalEquidistant,
-  LambertAzimuthalEqualArea
+  LambertAzimuthalEqualArea,
+  Mercator,   ///< on the ellipsoid, scale 1 on the equator (EPSG:3395 about lon0 0)
+  WebMercator ///< WGS84 latitudes by the sphere's formulas (EPSG:3857 about lon0 0)
 };
 
 const char* ProjectionKindName(ProjectionKind kind);
@@ -36,7 +38,7 @@ bool KeepsAreas(ProjectionKind kind);
 struct ProjectionParameters
 {
   ProjectionKind Kind = ProjectionKind::AlbersEqualArea;
-  double CentralLongitude = 0.0;  ///< central meridian (conics, transverse Mercator, azimuthals)
+  double CentralLongitude = 0.0;  ///< central meridian (all but UTM, whose zone has its own)
   double CentralLatitude = 0.0;   ///< centre latitude of the azimuthal projections
   double StandardParallel1 = 0.0; ///< conics
   double StandardParallel2 = 0.0; ///< conics

@@ -30,6 +30,8 @@ PROJECTIONS = {
     "utm": "SetProjectionToUTM",
     "azimuthal": "SetProjectionToAzimuthalEquidistant",
     "laea": "SetProjectionToLambertAzimuthalEqualArea",
+    "mercator": "SetProjectionToMercator",
+    "webmercator": "SetProjectionToWebMercator",
 }
 
 

@@ -3,9 +3,10 @@ a catchment file that declares a projected coordinate system (a shapefile's .prj
 "crs"), and a stations file of x and y columns given --stations-utm or --stations-crs.
 
 The systems read are those GDAL writes in PROJ's terms as +proj=utm, tmerc (transverse Mercator),
-aea (Albers equal-area conic), lcc (Lambert conformal conic, with one or two standard parallels)
-and laea (Lambert azimuthal equal-area, as LAEA Europe, EPSG:3035), in metres or feet, on an
-ellipsoid (a sphere's +R= is refused: its inverse differs by kilometres). Each is made lon/lat by
+aea (Albers equal-area conic), lcc (Lambert conformal conic, with one or two standard parallels),
+laea (Lambert azimuthal equal-area, as LAEA Europe, EPSG:3035) and merc (Mercator, as EPSG:3395,
+or on the sphere of WGS84's radius, the web maps' EPSG:3857), in metres or feet, on an ellipsoid
+(another sphere's, +R=, is refused: its inverse differs by kilometres). Each is made lon/lat by
 vtkGeographicProjection's inverse. That
 filter's planes have no false easting or northing, a scale of 1 and their own origin, so the
 file's x, y are first moved into the filter's plane:
@@ -29,9 +30,14 @@ import csv_input
 
 # What each PROJ projection is in vtkGeographicProjection (SetProjection's values).
 KINDS = {"tmerc": ("TransverseMercator", 3), "aea": ("AlbersEqualArea", 1), "lcc": ("LambertConformalConic", 2),
-         "laea": ("LambertAzimuthalEqualArea", 6)}
-READ = ("UTM, transverse Mercator (tmerc), Albers equal-area (aea), Lambert conformal conic (lcc) and Lambert "
-        "azimuthal equal-area (laea)")
+         "laea": ("LambertAzimuthalEqualArea", 6), "merc": ("Mercator", 7), "webmerc": ("WebMercator", 8)}
+READ = ("UTM, transverse Mercator (tmerc), Albers equal-area (aea), Lambert conformal conic (lcc), Lambert "
+        "azimuthal equal-area (laea) and Mercator (merc, and the web maps' EPSG:3857)")
+
+# The web maps' Mercator (EPSG:3857) is the sphere's formulas on a sphere of WGS84's equatorial
+# radius, applied to WGS84 latitudes; GDAL writes it +proj=merc +a=6378137 +b=6378137.
+WEB_RADIUS = 6378137.0
+WGS84_E2 = 0.0066943799901413165  # (f (2 - f), f = 1 / 298.257223563)
 
 # Metres per unit of PROJ's +units (GDAL writes +to_meter for others).
 UNITS = {"m": 1.0, "km": 1000.0, "ft": 0.3048, "us-ft": 1200.0 / 3937.0}
@@ -66,6 +72,8 @@ class PlaneSystem:
         terms = [f"lon_0={self.lon0:g}", f"lat_0={self.lat0:g}"]
         if self.kind in ("aea", "lcc"):
             terms += [f"lat_1={self.lat1:g}", f"lat_2={self.lat2:g}"]
+        if self.kind in ("merc", "webmerc"):
+            terms = terms[:1]  # (the origin is on the equator)
         if self.k0 != 1.0:
             terms.append(f"k_0={self.k0:.10g}")
         terms += [f"x_0={self.x0:.10g}", f"y_0={self.y0:.10g}"]
@@ -91,14 +99,16 @@ def proj4_system(text):
         if not re.fullmatch(r"[0-9]{1,2}", zone) or not 1 <= int(zone) <= 60:
             return f"a UTM zone {zone!r} (expected 1 to 60)"
         return PlaneSystem.utm(int(zone), "south" not in terms)
+    sphere = spherical(terms)
+    if name == "merc" and sphere and sphere_radius(terms) == WEB_RADIUS:
+        name, sphere = "webmerc", ""
     if name not in KINDS:
         return f"the projection +proj={name} (read here: {READ})"
-    sphere = spherical(terms)
     if sphere:
         return (f"{sphere}: a projection of the sphere, whose inverse differs from the ellipsoid's by up to "
-                "kilometres (read here: systems on WGS84, GRS80 or another ellipsoid)")
+                "kilometres (read here: systems on WGS84, GRS80 or another ellipsoid, and the web maps' Mercator)")
     wanted = {"lon_0": "0", "lat_0": "0", "lat_1": "0", "lat_2": terms.get("lat_1", "0"), "x_0": "0", "y_0": "0",
-              "k_0": terms.get("k", "1"), "to_meter": "1"}  # (one standard parallel: both at it)
+              "k_0": terms.get("k", "1"), "lat_ts": "0", "to_meter": "1"}  # (one standard parallel: both at it)
     number = {}
     for key, default in wanted.items():
         try:
@@ -111,6 +121,13 @@ def proj4_system(text):
     bad = next((key for key, value in number.items() if not math.isfinite(value)), None)
     if bad or not (number["k_0"] > 0 and metres > 0):
         return f"+{bad}={terms.get(bad, wanted[bad])}, which is not finite" if bad else "a scale or unit of 0 or less"
+    if name in ("merc", "webmerc"):
+        # The origin is on the equator whatever +lat_0 says; true scale on +lat_ts, where the
+        # parallel's radius over the equator's is the scale on the equator.
+        e2 = WGS84_E2 if name == "merc" else 0.0
+        sin_ts = math.sin(math.radians(number["lat_ts"]))
+        number["lat_0"] = 0.0
+        number["k_0"] *= math.cos(math.radians(number["lat_ts"])) / math.sqrt(1 - e2 * sin_ts * sin_ts)
     return PlaneSystem(name, number["lon_0"], number["lat_0"], number["lat_1"], number["lat_2"], number["k_0"],
                        number["x_0"], number["y_0"], metres)
 
@@ -206,6 +223,14 @@ def spherical(terms):
         except ValueError:
             pass  # (a term that is not a number is named where it is read)
     return ""
+
+
+def sphere_radius(terms):
+    """The radius (m) of a sphere's PROJ terms (+R, else +a), or None where it is not a number."""
+    try:
+        return float(terms.get("R", terms.get("a")))
+    except (TypeError, ValueError):
+        return None
 
 
 def other_ellipsoid(proj4):

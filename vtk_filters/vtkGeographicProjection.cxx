@@ -219,6 +219,10 @@ tessera::ProjectionKind KindOf(int projection)
       return tessera::ProjectionKind::AzimuthalEquidistant;
     case vtkGeographicProjection::LAMBERT_AZIMUTHAL_EQUAL_AREA:
       return tessera::ProjectionKind::LambertAzimuthalEqualArea;
+    case vtkGeographicProjection::MERCATOR:
+      return tessera::ProjectionKind::Mercator;
+    case vtkGeographicProjection::WEB_MERCATOR:
+      return tessera::ProjectionKind::WebMercator;
     default:
       return tessera::ProjectionKind::AlbersEqualArea;
   }
@@ -615,7 +619,9 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
         "TransverseMercator",
         "UTM",
         "AzimuthalEquidistant",
-        "LambertAzimuthalEqualArea" });
+        "LambertAzimuthalEqualArea",
+        "Mercator",
+        "WebMercator" });
     // (the zone is a UTM setting: a value left from a UTM choice does not stop another projection)
     if (this->Projection == UTM && (this->UTMZone < 0 || this->UTMZone > 60))
     {

@@ -22,6 +22,10 @@
  * - LambertAzimuthalEqualArea about (CentralLongitude, CentralLatitude), on the ellipsoid (EPSG
  *   method 9820, as EPSG:3035, LAEA Europe, without its false easting and northing).
  *   Equal-area, as Albers is.
+ * - Mercator about CentralLongitude, on the ellipsoid, scale 1 on the equator (EPSG:3395, World
+ *   Mercator, about 0), and WebMercator: WGS84 latitudes by the sphere's formulas (EPSG:3857,
+ *   the web maps' Pseudo-Mercator, about 0). Neither reaches the poles (beyond 1e8 m: about
+ *   89.99999 degrees).
  * With ParametersFromData on (default) the centre and standard parallels come from the data as
  * for Automatic; off, the values set with SetCentralLongitude, SetCentralLatitude and
  * SetStandardParallels are used, by Automatic too (it is then the Albers equal-area conic with
@@ -82,7 +86,9 @@ public:
     TRANSVERSE_MERCATOR = 3,
     UTM = 4,
     AZIMUTHAL_EQUIDISTANT = 5,
-    LAMBERT_AZIMUTHAL_EQUAL_AREA = 6
+    LAMBERT_AZIMUTHAL_EQUAL_AREA = 6,
+    MERCATOR = 7,
+    WEB_MERCATOR = 8
   };
 
   ///@{
@@ -93,7 +99,7 @@ public:
   vtkSetMacro(Projection, int);
   // The range VTK's clamping setter announced (kept: a value outside is an error at the update).
   virtual int GetProjectionMinValue() { return AUTOMATIC; }
-  virtual int GetProjectionMaxValue() { return LAMBERT_AZIMUTHAL_EQUAL_AREA; }
+  virtual int GetProjectionMaxValue() { return WEB_MERCATOR; }
   vtkGetMacro(Projection, int);
   void SetProjectionToAutomatic() { this->SetProjection(AUTOMATIC); }
   void SetProjectionToAlbersEqualArea() { this->SetProjection(ALBERS_EQUAL_AREA); }
@@ -105,6 +111,8 @@ public:
   {
     this->SetProjection(LAMBERT_AZIMUTHAL_EQUAL_AREA);
   }
+  void SetProjectionToMercator() { this->SetProjection(MERCATOR); }
+  void SetProjectionToWebMercator() { this->SetProjection(WEB_MERCATOR); }
   ///@}
 
   ///@{

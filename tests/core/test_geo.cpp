@@ -86,7 +86,9 @@ TEST(Geo, RoundTripsToANanodegreeForEveryProjection)
          ProjectionKind::TransverseMercator,
          ProjectionKind::UTM,
          ProjectionKind::AzimuthalEquidistant,
-         ProjectionKind::LambertAzimuthalEqualArea })
+         ProjectionKind::LambertAzimuthalEqualArea,
+         ProjectionKind::Mercator,
+         ProjectionKind::WebMercator })
   {
     GeographicProjection projection(ParametersFromExtent(kind, extent));
     for (std::size_t i = 0; i < points.size(); ++i)
@@ -316,7 +318,9 @@ TEST(Geo, SameProjectionIsWhetherPointsLandAlike)
     ProjectionKind::TransverseMercator,
     ProjectionKind::UTM,
     ProjectionKind::AzimuthalEquidistant,
-    ProjectionKind::LambertAzimuthalEqualArea };
+    ProjectionKind::LambertAzimuthalEqualArea,
+    ProjectionKind::Mercator,
+    ProjectionKind::WebMercator };
   int different = 0;
   for (const ProjectionKind kind : kinds)
   {
@@ -351,8 +355,8 @@ TEST(Geo, SameProjectionIsWhetherPointsLandAlike)
       different += alike ? 0 : 1;
     }
   }
-  // Each kind uses some of the six fields: 3 + 3 + 1 + 2 + 2 + 2.
-  EXPECT_EQ(different, 13);
+  // Each kind uses some of the six fields: 3 + 3 + 1 + 2 + 2 + 2 + 1 + 1.
+  EXPECT_EQ(different, 15);
   ProjectionParameters other;
   other.Kind = ProjectionKind::LambertConformalConic;
   ProjectionParameters same = other;
@@ -570,4 +574,93 @@ TEST(Geo, LambertAzimuthalEqualAreaRefusesTheAntipodeAndPointsBeyondTheRim)
               .find("has no inverse"),
     std::string::npos);
   EXPECT_NE(ErrorOf([&] { projection.Inverse({ 0.0, 1.3e7 }, 8); }).find("8"), std::string::npos);
+}
+
+// Against PROJ 9.1.1 (cs2cs -f %.6f EPSG:4326 EPSG:3395, EPSG:3857, and +proj=merc +lon_0=-100
+// +datum=WGS84): the ellipsoid's Mercator and the web maps' one, about meridian 0 and another;
+// the inverse gives the point back. Web Mercator's y is the sphere's: 28 km north of the
+// ellipsoid's at 50 N.
+TEST(Geo, MercatorsMatchProj)
+{
+  struct Case
+  {
+    ProjectionKind Kind;
+    double Lon0, Lon, Lat, X, Y;
+  };
+  const Case cases[] = {
+    { ProjectionKind::Mercator, 0, 5, 50, 556597.453966, 6413524.594164 },
+    { ProjectionKind::Mercator, 0, -105, 39, -11688546.533294, 4694777.271649 },
+    { ProjectionKind::Mercator, 0, 176, -39, 19592230.379616, -4694777.271649 },
+    { ProjectionKind::Mercator, 0, 179.9, 85, 20026376.393710, 19929239.113379 },
+    { ProjectionKind::Mercator, 0, -120, -80, -13358338.895193, -15496570.739724 },
+    { ProjectionKind::Mercator, 0, 10, 89.999, 1113194.907933, 74256950.065168 },
+    { ProjectionKind::Mercator, -100, -105, 39, -556597.453966, 4694777.271649 },
+    { ProjectionKind::WebMercator, 0, 5, 50, 556597.453966, 6446275.841017 },
+    { ProjectionKind::WebMercator, 0, -105, 39, -11688546.533294, 4721671.572580 },
+    { ProjectionKind::WebMercator, 0, 176, -39, 19592230.379616, -4721671.572580 },
+    { ProjectionKind::WebMercator, 0, 179.9, 85, 20026376.393710, 19971868.880409 },
+    { ProjectionKind::WebMercator, 0, -120, -80, -13358338.895193, -15538711.096309 },
+    { ProjectionKind::WebMercator, 0, 10, 89.999, 1113194.907933, 74299743.400553 },
+  };
+  for (const Case& c : cases)
+  {
+    ProjectionParameters p;
+    p.Kind = c.Kind;
+    p.CentralLongitude = c.Lon0;
+    const GeographicProjection projection(p);
+    const Point2 xy = projection.Forward({ c.Lon, c.Lat });
+    const std::string where = std::string(ProjectionKindName(c.Kind)) + " " +
+      std::to_string(c.Lon) + " " + std::to_string(c.Lat);
+    EXPECT_NEAR(xy.x, c.X, 2e-6) << where;
+    // (y moves a / cos(lat) metres a radian: the last bits of 89.999 are some 4e-5 m of y)
+    const double lastBits = 4e-16 * 6378137.0 / std::cos(c.Lat * M_PI / 180.0);
+    EXPECT_NEAR(xy.y, c.Y, 2e-6 + lastBits) << where;
+    const Point2 back = projection.Inverse({ c.X, c.Y });
+    EXPECT_LT(AngularDistance(back.x, c.Lon), 1e-9) << where;
+    EXPECT_NEAR(back.y, c.Lat, 1e-9) << where;
+  }
+}
+
+// The ellipsoid's Mercator is conformal: along the parallel and along the meridian the scale is
+// the same (from the ellipsoid's radii of curvature), a / (N cos lat), 1 on the equator. Neither
+// Mercator reaches a pole: the point is named.
+TEST(Geo, MercatorIsConformalAndRefusesThePoles)
+{
+  ProjectionParameters p;
+  p.Kind = ProjectionKind::Mercator;
+  p.CentralLongitude = 20.0;
+  const GeographicProjection mercator(p);
+  const double a = 6378137.0, f = 1.0 / 298.257223563, e2 = f * (2.0 - f);
+  for (const double lat : { 0.0, 23.5, -47.0, 71.0 })
+  {
+    const double s = std::sin(lat * M_PI / 180.0), w = std::sqrt(1.0 - e2 * s * s);
+    const double meridianRadius = a * (1.0 - e2) / (w * w * w);
+    const double parallelRadius = a * std::cos(lat * M_PI / 180.0) / w;
+    const double step = 1e-3, radians = step * M_PI / 180.0;
+    const double alongMeridian =
+      (mercator.Forward({ 20.0, lat + step }).y - mercator.Forward({ 20.0, lat - step }).y) /
+      (2.0 * meridianRadius * radians);
+    const double alongParallel =
+      (mercator.Forward({ 20.0 + step, lat }).x - mercator.Forward({ 20.0 - step, lat }).x) /
+      (2.0 * parallelRadius * radians);
+    EXPECT_NEAR(alongMeridian / alongParallel, 1.0, 1e-9) << lat;
+    EXPECT_NEAR(alongParallel, a / parallelRadius, 1e-9 * alongParallel) << lat;
+  }
+  for (const ProjectionKind kind : { ProjectionKind::Mercator, ProjectionKind::WebMercator })
+  {
+    p.Kind = kind;
+    const GeographicProjection projection(p);
+    EXPECT_NE(ErrorOf(
+                [&] {
+                  projection.Forward({ 3.0, 90.0 }, 4);
+                })
+                .find("cannot be represented by the " + std::string(ProjectionKindName(kind))),
+      std::string::npos);
+    EXPECT_NE(ErrorOf(
+                [&] {
+                  projection.Forward({ 3.0, -90.0 }, 4);
+                })
+                .find("point 4"),
+      std::string::npos);
+  }
 }

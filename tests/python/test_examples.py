@@ -1816,8 +1816,8 @@ def test_a_catchment_declared_projected_is_named():
         assert_that(f"{utm}: declares the projected coordinate system 'WGS 84 / UTM zone 60S'; its coordinates are "
                     "read as longitude/latitude in degrees (WGS84), which they must be (else reproject the file, "
                     "e.g. ogr2ogr -t_srs EPSG:4326 out.shp in.shp; the metres of UTM, transverse Mercator (tmerc), "
-                    "Albers equal-area (aea), Lambert conformal conic (lcc) and Lambert azimuthal equal-area (laea) "
-                    "are made lon/lat here)"
+                    "Albers equal-area (aea), Lambert conformal conic (lcc), Lambert azimuthal equal-area (laea) "
+                    "and Mercator (merc, and the web maps' EPSG:3857) are made lon/lat here)"
                     in stderr_messages(stderr), f"{stderr}")
         _, stderr = run_colorado(out, stations=stations, observations=observations, catchment=catchment, plots=False)
         assert_that("declares" not in stderr, f"the lon/lat basin: {stderr}")
@@ -1966,6 +1966,16 @@ def snyder_laea(lon, lat, lon0, lat0, x0=0.0, y0=0.0):
             y0 + b / d * (math.cos(beta0) * math.sin(beta) - math.sin(beta0) * math.cos(beta) * math.cos(dl)))
 
 
+def snyder_mercator(lon, lat, lon0, lat_ts=0.0, x0=0.0, y0=0.0, sphere=False):
+    """(x, y) in metres of (lon, lat) in PROJ's merc with these terms, on WGS84, or on the sphere of
+    its equatorial radius (the web maps' EPSG:3857)."""
+    e2 = 0.0 if sphere else WGS84_E2
+    e, s = math.sqrt(e2), math.sin(math.radians(lat))
+    k0 = snyder_m(math.radians(lat_ts)) if not sphere else math.cos(math.radians(lat_ts))
+    psi = math.asinh(math.tan(math.radians(lat))) - e * math.atanh(e * s)
+    return x0 + WGS84_A * k0 * math.radians(lon - lon0), y0 + WGS84_A * k0 * psi
+
+
 def snyder_conic(kind, lon, lat, lon0, lat0, lat1, lat2, x0=0.0, y0=0.0, k0=1.0):
     """(x, y) in metres of (lon, lat) in PROJ's kind ("aea" or "lcc") with these terms."""
     e = math.sqrt(WGS84_E2)
@@ -2020,13 +2030,14 @@ def utm_60s(points):
     return [projection.GetOutput().GetPoint(k)[:2] for k in range(len(points))]
 
 
-def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_lat_means():
+def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
     # The lake basin (its edges cut every 0.001 degrees in lon/lat) and its gauges given in three
     # projected systems: a southern Albers conic, a Lambert conic in US feet with false origins
     # (Snyder's formulas above) and a transverse Mercator with a latitude of origin, scale and
     # false origins (from UTM 60S's eastings and northings, by the filter's UTM path), and a Lambert
     # azimuthal equal-area projection about the basin (Snyder's formulas) with the gauges in LAEA
-    # Europe (EPSG:3035, looked up by GDAL: the basin lies some 164 degrees from its centre). Catchment
+    # Europe (EPSG:3035, looked up by GDAL: the basin lies some 164 degrees from its centre), and
+    # the web maps' Mercator (EPSG:3857) with the gauges in an ellipsoid's Mercator. Catchment
     # (a GeoJSON "crs" of PROJ terms, a shapefile's ESRI .prj) and gauges (--stations-crs) each
     # in another system than the other: every run gives the lon/lat files' counts and means to
     # 1e-8. The gauges in UTM 60S given as --stations-crs EPSG:32760 do too. A system that is not
@@ -2047,7 +2058,10 @@ def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_la
                   lambda ps: [(x - 500000 + 1600000, y - origin_utm[1] + 800000) for x, y in utm_60s(ps)]),
         "laea": ("+proj=laea +lat_0=-40 +lon_0=176 +x_0=500000 +y_0=700000 +datum=WGS84 +units=m",
                  lambda ps: [snyder_laea(x, y, 176, -40, 500000, 700000) for x, y in ps]),
-        "EPSG:3035": ("EPSG:3035", lambda ps: [snyder_laea(x, y, 10, 52, 4321000, 3210000) for x, y in ps])}
+        "EPSG:3035": ("EPSG:3035", lambda ps: [snyder_laea(x, y, 10, 52, 4321000, 3210000) for x, y in ps]),
+        "EPSG:3857": ("EPSG:3857", lambda ps: [snyder_mercator(x, y, 0, sphere=True) for x, y in ps]),
+        "merc": ("+proj=merc +lon_0=170 +lat_ts=-30 +x_0=100000 +y_0=200000 +datum=WGS84 +units=m",
+                 lambda ps: [snyder_mercator(x, y, 170, -30, 100000, 200000) for x, y in ps])}
     lcc_prj = ('PROJCS["lake_lcc",GEOGCS["GCS_WGS_1984",DATUM["D_WGS_1984",SPHEROID["WGS_1984",6378137.0,'
                '298.257223563]],PRIMEM["Greenwich",0.0],UNIT["Degree",0.0174532925199433]],PROJECTION['
                f'"Lambert_Conformal_Conic"],PARAMETER["False_Easting",{2510000 / us_foot!r}],PARAMETER['
@@ -2076,7 +2090,7 @@ def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_la
             declared = json.loads(json.dumps(cut))
             declared["crs"] = {"type": "name", "properties": {"name": terms}}
             declared["features"][0]["geometry"]["coordinates"] = [[list(p) for p in forward(ring)] for ring in rings]
-            return write(out, f"basin_{name}.geojson", json.dumps(declared))
+            return write(out, f"basin_{name.replace(':', '_')}.geojson", json.dumps(declared))
 
         def stations_in(forward, name):
             xy = forward(list(LAKE_GAUGES.values()))
@@ -2084,16 +2098,17 @@ def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_la
                 f"{s},{x!r},{y!r}\n" for s, (x, y) in zip(LAKE_GAUGES, xy)))
 
         runs = [(c, systems[g][0], stations_in(systems[g][1], g.replace(":", "_"))) for c, g in
-                (("aea", "lcc"), ("lcc", "tmerc"), ("tmerc", "aea"), ("laea", "EPSG:3035"))]
+                (("aea", "lcc"), ("lcc", "tmerc"), ("tmerc", "aea"), ("laea", "EPSG:3035"), ("EPSG:3857", "merc"))]
         runs.append(("aea", "EPSG:32760", stations_in(utm_60s, "utm")))
         for name, crs, xy in runs:
             path = catchment_in(name)
-            _, stderr = run_colorado(os.path.join(out, name), stations=xy, observations=observations, catchment=path,
+            folder = os.path.join(out, name.replace(":", "_"))
+            _, stderr = run_colorado(folder, stations=xy, observations=observations, catchment=path,
                                      plots=False, what=f"{name} with stations in {crs}", **{"stations-crs": crs})
             assert_that(any(m.startswith(f"{path}: declares the projected coordinate system ") and
                             "whose eastings and northings are made longitude/latitude" in m
                             for m in stderr_messages(stderr)), f"{name}: {stderr}")
-            assert_same_means(read_csv(os.path.join(out, name, "areal_mean.csv")), want, f"{name}, {crs}")
+            assert_same_means(read_csv(os.path.join(folder, "areal_mean.csv")), want, f"{name}, {crs}")
         # A system on another ellipsoid is read, and said to leave the datum shift.
         airy = systems["tmerc"][0].replace("+datum=WGS84", "+ellps=airy")
         _, stderr = run_colorado(os.path.join(out, "airy"), stations=runs[1][2], observations=observations,
@@ -2107,13 +2122,13 @@ def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_la
         xy = runs[0][2]
         typo = write(out, "typo.csv", "station_id,x,y\nN1,1000000,2000000\nN2,-1e9,2000000\n")
         # A UTM zone without N or S is read as north, and said.
-        _, stderr = run_colorado(os.path.join(out, "north"), stations=runs[4][2], observations=observations,
+        _, stderr = run_colorado(os.path.join(out, "north"), stations=runs[5][2], observations=observations,
                                  catchment=catchment, plots=False, what="--stations-utm 60", **{"stations-utm": "60"})
         assert_that("--stations-utm 60: read as zone 60N, in the northern hemisphere (give 60S for the southern)"
                     in stderr, f"--stations-utm 60: {stderr}")
         # An EPSG code as it is written elsewhere: the same means as EPSG:CODE, bit for bit.
         for code in ("EPSG:32760", "epsg: 32760", "32760", "urn:ogc:def:crs:EPSG::32760"):
-            run_colorado(os.path.join(out, code.replace(":", "_")), stations=runs[4][2], observations=observations,
+            run_colorado(os.path.join(out, code.replace(":", "_")), stations=runs[5][2], observations=observations,
                          catchment=catchment, plots=False, what=code, **{"stations-crs": code})
         spelt = [read_csv(os.path.join(out, code.replace(":", "_"), "areal_mean.csv"))
                  for code in ("EPSG:32760", "epsg: 32760", "32760", "urn:ogc:def:crs:EPSG::32760")]
@@ -2121,8 +2136,9 @@ def test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_la
         sphere = systems["laea"][0].replace("+datum=WGS84", "+R=6371007")
         cases = [({"catchment": eqc_path, "stations": stations},
                   f"{eqc_path}: declares a projected coordinate system with the projection +proj=eqc (read here: "
-                  "UTM, transverse Mercator (tmerc), Albers equal-area (aea), Lambert conformal conic (lcc) and "
-                  "Lambert azimuthal equal-area (laea)); its coordinates are metres"),
+                  "UTM, transverse Mercator (tmerc), Albers equal-area (aea), Lambert conformal conic (lcc), "
+                  "Lambert azimuthal equal-area (laea) and Mercator (merc, and the web maps' EPSG:3857)); its "
+                  "coordinates are metres"),
                  ({"catchment": catchment, "stations": xy, "stations-crs": sphere},
                   f"--stations-crs {sphere!r}: +R=6371007: a projection of the sphere, whose inverse differs from the "
                   "ellipsoid's by up to kilometres"),
@@ -2856,7 +2872,7 @@ if __name__ == "__main__":
          test_reading_a_large_file_says_how_far_it_got,
          test_a_catchment_in_a_zip_file_is_read_from_it,
          test_a_catchment_declared_projected_is_named, test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means,
-         test_catchments_and_gauges_in_conics_and_transverse_mercator_give_the_lon_lat_means,
+         test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means,
          test_a_noaa_climate_data_online_file_is_both_stations_and_observations,
          test_gauges_from_a_gis_file_of_points_give_the_csv_means,
          test_the_filters_errors_name_the_file_and_line,

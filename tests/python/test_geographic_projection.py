@@ -102,6 +102,21 @@ def test_lambert_azimuthal_equal_area_is_laea_europe_and_goes_back_by_its_record
             assert_close(inverse.GetOutput().GetPoint(i)[axis], data.GetPoint(i)[axis], 1e-9, f"point {i} back")
 
 
+def test_mercator_and_web_mercator_are_epsg_3395_and_3857():
+    # PROJ 9.1.1's (cs2cs EPSG:4326 EPSG:3395, EPSG:3857) eastings and northings of 50 N 5 E: the web
+    # maps' northing is the sphere's, 32.75 km north of the ellipsoid's.
+    for choose, north in ((vtkGeographicProjection.SetProjectionToMercator, 6413524.594164),
+                          (vtkGeographicProjection.SetProjectionToWebMercator, 6446275.841017)):
+        f = vtkGeographicProjection()
+        f.SetInputData(make_points([(5.0, 50.0)]))
+        choose(f)
+        f.ParametersFromDataOff()
+        f.Update()
+        x, y, _ = f.GetOutput().GetPoint(0)
+        assert_close(x, 556597.453966, 1e-5, f"{projection_record(f.GetOutput())}: easting")
+        assert_close(y, north, 1e-5, f"{projection_record(f.GetOutput())}: northing")
+
+
 def test_nan_point_is_named_and_output_is_empty():
     points = vtkPoints()
     points.InsertNextPoint(-105.0, 39.0, 0.0)
@@ -415,7 +430,7 @@ def test_a_projection_or_zone_that_is_no_choice_is_named():
     # A NaN centre set by hand is named too. The ranges the clamping setters announced are kept.
     g = vtkGeographicProjection()
     assert_that((g.GetProjectionMinValue(), g.GetProjectionMaxValue(), g.GetUTMZoneMinValue(), g.GetUTMZoneMaxValue())
-                == (0, 6, 0, 60), "the ranges")
+                == (0, 8, 0, 60), "the ranges")
     for setup, expected in [(lambda f: f.SetProjection(9), "Projection 9 is not one of 0 (Automatic), 1 (AlbersEqualArea)"),
                             (lambda f: (f.SetProjectionToUTM(), f.SetUTMZone(61)),
                              "UTMZone 61 is neither a zone from 1 to 60 nor 0"),
@@ -460,6 +475,7 @@ if __name__ == "__main__":
     run([test_round_trip_of_the_colorado_gauges,
          test_azimuthal_equidistant_keeps_distances_from_the_centre,
          test_lambert_azimuthal_equal_area_is_laea_europe_and_goes_back_by_its_record,
+         test_mercator_and_web_mercator_are_epsg_3395_and_3857,
          test_nan_point_is_named_and_output_is_empty,
          test_the_blocks_of_a_composite_share_one_projection,
          test_utm_metres_without_a_record_go_back_by_their_zone,

@@ -1,0 +1,28 @@
+#include "mercator.h"
+
+#include <GeographicLib/Math.hpp>
+
+namespace tessera
+{
+
+using GeographicLib::Math;
+
+Mercator::Mercator(double a, double f)
+  : Earth(a, f)
+  , A(a)
+{
+}
+
+void Mercator::Forward(double lon0, double lat, double lon, double& x, double& y) const
+{
+  x = this->A * Math::AngDiff(lon0, lon) * Math::degree();
+  y = this->A * this->Earth.IsometricLatitude(lat) * Math::degree();
+}
+
+void Mercator::Reverse(double lon0, double x, double y, double& lat, double& lon) const
+{
+  lon = lon0 + x / this->A / Math::degree();
+  lat = this->Earth.InverseIsometricLatitude(y / this->A / Math::degree());
+}
+
+} // namespace tessera
