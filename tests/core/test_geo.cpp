@@ -429,6 +429,30 @@ double GreatCircleDegrees(const Point2& a, const Point2& b)
   return std::acos(std::min(1.0, std::max(-1.0, c))) / d;
 }
 
+/// A projection's scale at a point along the meridian and along the parallel: its plane
+/// distances over 111 m steps (y keeps 1e-9 m there, where steps of a metre lose it to rounding)
+/// against the arcs of the WGS84 ellipsoid's radii of curvature.
+struct Scales
+{
+  double AlongMeridian, AlongParallel, ParallelRadius;
+};
+
+Scales ScalesAt(const tessera::GeographicProjection& projection, const Point2& at)
+{
+  const double a = 6378137.0, f = 1.0 / 298.257223563, e2 = f * (2.0 - f);
+  const double s = std::sin(at.y * M_PI / 180.0), w = std::sqrt(1.0 - e2 * s * s);
+  const double meridianRadius = a * (1.0 - e2) / (w * w * w);
+  const double parallelRadius = a * std::cos(at.y * M_PI / 180.0) / w;
+  const double step = 1e-3, radians = step * M_PI / 180.0;
+  const Point2 north = projection.Forward({ at.x, at.y + step });
+  const Point2 south = projection.Forward({ at.x, at.y - step });
+  const Point2 east = projection.Forward({ at.x + step, at.y });
+  const Point2 west = projection.Forward({ at.x - step, at.y });
+  return { std::hypot(north.x - south.x, north.y - south.y) / (2.0 * meridianRadius * radians),
+    std::hypot(east.x - west.x, east.y - west.y) / (2.0 * parallelRadius * radians),
+    parallelRadius };
+}
+
 tessera::GeographicProjection LambertAzimuthal(double lat0, double lon0)
 {
   tessera::ProjectionParameters p;
@@ -539,20 +563,11 @@ TEST(Geo, LambertAzimuthalEqualAreaKeepsAreasAndTrueScaleAtTheCentre)
     EXPECT_NEAR(ShoelaceArea(projected) / EllipsoidalRingArea(cell), 1.0, 1e-7)
       << "centre " << c.Lat0 << " " << c.Lon0 << ", cell " << c.West << " " << c.South;
   }
-  const double a = 6378137.0, f = 1.0 / 298.257223563, e2 = f * (2.0 - f);
   for (const double lat0 : { 52.0, 0.0, -33.0 })
   {
-    const auto projection = LambertAzimuthal(lat0, 10.0);
-    const double s = std::sin(lat0 * M_PI / 180.0), w = std::sqrt(1.0 - e2 * s * s);
-    const double meridianRadius = a * (1.0 - e2) / (w * w * w);
-    const double parallelRadius = a * std::cos(lat0 * M_PI / 180.0) / w;
-    const double step = 1e-3, radians = step * M_PI / 180.0; // (111 m: y keeps 1e-9 m)
-    const Point2 north = projection.Forward({ 10.0, lat0 + step });
-    const Point2 south = projection.Forward({ 10.0, lat0 - step });
-    const Point2 east = projection.Forward({ 10.0 + step, lat0 });
-    const Point2 west = projection.Forward({ 10.0 - step, lat0 });
-    EXPECT_NEAR((north.y - south.y) / (2.0 * meridianRadius * radians), 1.0, 1e-9) << lat0;
-    EXPECT_NEAR((east.x - west.x) / (2.0 * parallelRadius * radians), 1.0, 1e-9) << lat0;
+    const Scales scales = ScalesAt(LambertAzimuthal(lat0, 10.0), { 10.0, lat0 });
+    EXPECT_NEAR(scales.AlongMeridian, 1.0, 1e-9) << lat0;
+    EXPECT_NEAR(scales.AlongParallel, 1.0, 1e-9) << lat0;
   }
 }
 
@@ -630,21 +645,11 @@ TEST(Geo, MercatorIsConformalAndRefusesThePoles)
   p.Kind = ProjectionKind::Mercator;
   p.CentralLongitude = 20.0;
   const GeographicProjection mercator(p);
-  const double a = 6378137.0, f = 1.0 / 298.257223563, e2 = f * (2.0 - f);
   for (const double lat : { 0.0, 23.5, -47.0, 71.0 })
   {
-    const double s = std::sin(lat * M_PI / 180.0), w = std::sqrt(1.0 - e2 * s * s);
-    const double meridianRadius = a * (1.0 - e2) / (w * w * w);
-    const double parallelRadius = a * std::cos(lat * M_PI / 180.0) / w;
-    const double step = 1e-3, radians = step * M_PI / 180.0;
-    const double alongMeridian =
-      (mercator.Forward({ 20.0, lat + step }).y - mercator.Forward({ 20.0, lat - step }).y) /
-      (2.0 * meridianRadius * radians);
-    const double alongParallel =
-      (mercator.Forward({ 20.0 + step, lat }).x - mercator.Forward({ 20.0 - step, lat }).x) /
-      (2.0 * parallelRadius * radians);
-    EXPECT_NEAR(alongMeridian / alongParallel, 1.0, 1e-9) << lat;
-    EXPECT_NEAR(alongParallel, a / parallelRadius, 1e-9 * alongParallel) << lat;
+    const Scales scales = ScalesAt(mercator, { 20.0, lat });
+    EXPECT_NEAR(scales.AlongMeridian / scales.AlongParallel, 1.0, 1e-9) << lat;
+    EXPECT_NEAR(scales.AlongParallel * scales.ParallelRadius, 6378137.0, 1e-9 * 6378137.0) << lat;
   }
   for (const ProjectionKind kind : { ProjectionKind::Mercator, ProjectionKind::WebMercator })
   {
