@@ -291,17 +291,40 @@ def gauges(path, optional=(), coordinates=("lon", "lat"), distinct=False):
     name, the other optional columns named (checked as rows() checks them), and any others (left
     in row). distinct: a record whose station id and coordinates are written as an earlier one's
     is passed over (a file of observations with the station's place on each row: millions of
-    rows, a few hundred stations)."""
+    rows, a few hundred stations), and so is one whose coordinates are empty where another row of
+    its station gives them (said once; a station that no row places ends the script, naming its
+    first such line)."""
     x, y = coordinates
-    seen = set()
+    seen, placed, unplaced = set(), set(), {}  # (distinct) unplaced: station id: [first line, rows]
     for line, row in rows(path, ("station_id", x, y), "stations", ("name", *optional)):
         if distinct:
+            station = (row["station_id"] or "").strip()
+            if station and not ((row[x] or "").strip() and (row[y] or "").strip()):
+                unplaced.setdefault(station, [line, 0])[1] += 1
+                continue
             written = (row["station_id"], row[x], row[y])
             if written in seen:
                 continue
             seen.add(written)
+            placed.add(station)
         yield (line, row, text(row, "station_id", path, line), (row.get("name") or "").strip(),
                number(row, x, path, line), number(row, y, path, line))
+    say_unplaced_rows(path, unplaced, placed, coordinates)
+
+
+def say_unplaced_rows(path, unplaced, placed, coordinates):
+    """Says that rows of a file of stations and observations without coordinates (unplaced:
+    station id: [first line, rows]) take their station's place from its other rows (placed: the
+    stations that have one); a station of no such row ends the script."""
+    lost = next(((station, line) for station, (line, _) in unplaced.items() if station not in placed), None)
+    if lost:
+        fail(f"{path}:{lost[1]}: station {lost[0]} lacks its {coordinates[0]} or {coordinates[1]} here and on every "
+             "other row (each station needs its place on one row at least)")
+    if unplaced:
+        station, (line, count) = min(unplaced.items(), key=lambda item: item[1][0])
+        total = sum(count for _, count in unplaced.values())
+        print(f"{path}:{line}: station {station} lacks its {coordinates[0]} or {coordinates[1]} on this row: its place "
+              f"is taken from its other rows ({total} row(s) of {len(unplaced)} station(s) so)", file=sys.stderr)
 
 
 def header_columns(path, what, wanted):

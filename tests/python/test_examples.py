@@ -2169,8 +2169,9 @@ def test_a_noaa_climate_data_online_file_is_both_stations_and_observations():
     # PRCP_ATTRIBUTES (MFLAG,QFLAG,SFLAG,OBSTIME). Given as --observations alone, it is the
     # stations file too: one gauge per station, the columns said to be read under their names,
     # the flagged value named (and used), and the same means, bit for bit, as a plain stations
-    # file and observations file of the same values. A station at two places, and two columns that
-    # could each be lon, end the run naming them.
+    # file and observations file of the same values; a row without its station's place takes the
+    # station's other rows'. A station at two places or at none, and two columns that could each
+    # be lon, end the run naming them.
     import gzip
     import itertools
 
@@ -2244,7 +2245,21 @@ def test_a_noaa_climate_data_online_file_is_both_stations_and_observations():
         moved = write(out, "moved.csv", header + "".join(lines[:4]) + lines[4].replace('"-39.1"', '"-39.2"', 1)
                       + "".join(lines[5:]))
         long = write(out, "long.csv", "station_id,longitude,long,lat\nN1,175.6,175.6,-39.1\n")
+        # A row without its station's place (an empty LATITUDE) takes it from the station's other
+        # rows, and is said; a station that no row places ends the run naming its first row.
+        placeless = write(out, "placeless.csv", header + "".join(lines[:4]) + lines[4].replace('"-39.1"', '""', 1)
+                          + "".join(lines[5:]))
+        _, stderr = run_colorado(os.path.join(out, "placeless"), observations=placeless, catchment=catchment,
+                                 plots=False, what="a row without its place")
+        assert_that(f"{placeless}:6: station N2 lacks its lon or lat on this row: its place is taken from its other "
+                    "rows (1 row(s) of 1 station(s) so)" in stderr, f"{stderr}")
+        got_placeless = read_csv(os.path.join(out, "placeless", "areal_mean.csv"))
+        assert_that(got_placeless == zipped, f"a row without its place: {got_placeless} against {zipped}")
+        unplaced = write(out, "unplaced.csv", header + "".join(lines[:3])
+                         + "".join(line.replace('"-39.1"', '""', 1) for line in lines[3:6]) + "".join(lines[6:]))
         for options, message in (
+                ({"observations": unplaced}, f"{unplaced}:5: station N2 lacks its lon or lat here and on every other "
+                                             "row (each station needs its place on one row at least)"),
                 ({"observations": moved}, f"{moved}:6: station N2 at (176.4, -39.2), where line 5 puts it at "
                                           "(176.4, -39.1): a file of both stations and observations gives each "
                                           "station one place"),
