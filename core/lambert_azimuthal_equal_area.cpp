@@ -2,6 +2,7 @@
 
 #include <GeographicLib/Math.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace tessera
@@ -15,19 +16,30 @@ using GeographicLib::Math;
 /// meridian's scale vanish together and D is their limit, 1.
 constexpr double PolarAspectDegrees = 1e-10;
 
-/// 1 + cos(c) below this is the centre's antipode, to rounding: within some 2e-8 radians (0.1 m)
-/// of it, where 1 + cos(c) = c'^2 / 2 for the distance c' to the antipode is lost in the sum's
-/// rounding.
+/// 1 + cos(c) below this is the centre's antipode: within some 4e-8 radians (0.3 m) of it, where
+/// B = Rq sqrt(2 / (1 + cos(c))) passes 1e8 Rq and x, y lose their last bits to its rounding.
 constexpr double AntipodeOnePlusCos = 1e-15;
+
+/// A plane point up to this much (relative) beyond the image's rim, 2 Rq from the centre, is on
+/// it: the rim is the antipode's image, and rounding puts points within a metre of the antipode
+/// a few ulps outside.
+constexpr double RimRoundingAllowance = 1e-12;
+
+double Squared(double v)
+{
+  return v * v;
+}
 } // namespace
 
 LambertAzimuthalEqualArea::LambertAzimuthalEqualArea(double a, double f, double lat0)
   : Earth(a, f)
 {
   this->Rq = std::sqrt(this->Earth.Area() / (4.0 * Math::pi()));
-  Math::sincosd(this->Earth.AuthalicLatitude(lat0), this->SinXi0, this->CosXi0);
+  this->Xi0 = this->Earth.AuthalicLatitude(lat0);
+  Math::sincosd(this->Xi0, this->SinXi0, this->CosXi0);
   if (90.0 - std::abs(lat0) < PolarAspectDegrees)
   {
+    this->Xi0 = lat0 > 0.0 ? 90.0 : -90.0;
     this->SinXi0 = lat0 > 0.0 ? 1.0 : -1.0;
     this->CosXi0 = 0.0;
     this->D = 1.0;
@@ -47,20 +59,38 @@ void LambertAzimuthalEqualArea::Forward(double lon0,
   double& x,
   double& y) const
 {
-  double sinXi = 0.0, cosXi = 0.0, sinDLon = 0.0, cosDLon = 0.0;
-  Math::sincosd(this->Earth.AuthalicLatitude(lat), sinXi, cosXi);
-  Math::sincosd(Math::AngDiff(lon0, lon), sinDLon, cosDLon);
-  // 1 + cos(c), c the angular distance from the centre on the authalic sphere (0 at the antipode).
-  const double onePlusCos = 1.0 + this->SinXi0 * sinXi + this->CosXi0 * cosXi * cosDLon;
+  const double xi = this->Earth.AuthalicLatitude(lat);
+  const double dLon = Math::AngDiff(lon0, lon);
+  double sinXi = 0.0, cosXi = 0.0, sinDLon = 0.0, cosDLon = 0.0, sinHalf = 0.0, cosHalf = 0.0;
+  Math::sincosd(xi, sinXi, cosXi);
+  Math::sincosd(dLon, sinDLon, cosDLon);
+  Math::sincosd(0.5 * dLon, sinHalf, cosHalf);
+  // 1 + cos(c), c the angular distance from the centre on the authalic sphere, and the northing's
+  // factor cos xi0 sin xi - sin xi0 cos xi cos dLon, in the half-angle forms that keep their
+  // digits: about the centre, 1 + cos(c) = 2 (1 - hav(c)) and the factor is
+  // sin(xi - xi0) + 2 sin xi0 cos xi sin^2(dLon / 2); about the antipode (latitude -xi0, longitude
+  // lon0 + 180), 1 + cos(c) = 2 hav(pi - c) and the factor is
+  // sin(xi + xi0) - 2 sin xi0 cos xi cos^2(dLon / 2). (The plain forms cancel where they are small:
+  // points 0.1 degree from the antipode came back 3 m off, and within a metre of it beyond the
+  // rim.)
+  const double cosProduct = this->CosXi0 * cosXi;
+  const double havC = Squared(Math::sind(0.5 * (xi - this->Xi0))) + cosProduct * Squared(sinHalf);
+  const bool nearCentre = havC <= 0.5;
+  const double onePlusCos = nearCentre
+    ? 2.0 * (1.0 - havC)
+    : 2.0 * (Squared(Math::sind(0.5 * (xi + this->Xi0))) + cosProduct * Squared(cosHalf));
   if (onePlusCos < AntipodeOnePlusCos)
   {
-    // (rounded, the antipode itself gave 1 + cos(c) of 1e-17 and a finite point near the centre)
+    // (the antipode itself once gave 1 + cos(c) of 1e-17 and a finite point near the centre)
     x = y = Math::NaN();
     return;
   }
+  const double northing = nearCentre
+    ? Math::sind(xi - this->Xi0) + 2.0 * this->SinXi0 * cosXi * Squared(sinHalf)
+    : Math::sind(xi + this->Xi0) - 2.0 * this->SinXi0 * cosXi * Squared(cosHalf);
   const double b = this->Rq * std::sqrt(2.0 / onePlusCos);
   x = b * this->D * cosXi * sinDLon;
-  y = b / this->D * (this->CosXi0 * sinXi - this->SinXi0 * cosXi * cosDLon);
+  y = b / this->D * northing;
 }
 
 void LambertAzimuthalEqualArea::Reverse(double lon0,
@@ -79,14 +109,15 @@ void LambertAzimuthalEqualArea::Reverse(double lon0,
     lon = lon0;
     return;
   }
-  const double half = rho / (2.0 * this->Rq); // sin(c / 2)
-  if (!(half <= 1.0))
+  double half = rho / (2.0 * this->Rq); // sin(c / 2)
+  if (!(half <= 1.0 + RimRoundingAllowance))
   {
     lat = lon = Math::NaN();
     return;
   }
-  const double c = 2.0 * std::asin(half);
-  const double sinC = std::sin(c), cosC = std::cos(c);
+  half = std::min(half, 1.0);
+  const double cosHalf = std::sqrt((1.0 - half) * (1.0 + half)); // cos(c / 2)
+  const double sinC = 2.0 * half * cosHalf, cosC = (cosHalf - half) * (cosHalf + half);
   const double sinAz = xs / rho, cosAz = ys / rho;
   // The point's unit vector: the centre (cos xi0, 0, sin xi0) turned by c towards the azimuth,
   // north being (-sin xi0, 0, cos xi0) and east (0, 1, 0).

@@ -27,10 +27,10 @@ public:
   LambertAzimuthalEqualArea(double a, double f, double lat0);
 
   /// lat, lon (degrees) to x, y (metres) about the centre (lat0, lon0). The centre's antipode
-  /// (to within some 0.1 m) has no image: x and y are then NaN, for the caller to refuse.
+  /// (to within some 0.3 m) has no image: x and y are then NaN, for the caller to refuse.
   void Forward(double lon0, double lat, double lon, double& x, double& y) const;
   /// x, y (metres) to lat, lon (degrees, lon within 180 of lon0). A point beyond the image's rim
-  /// (2 Rq from the centre on the sphere) gives NaN.
+  /// (2 Rq from the centre on the sphere, past rounding) gives NaN.
   void Reverse(double lon0, double x, double y, double& lat, double& lon) const;
 
   /// The authalic sphere's radius (m): the sphere of the ellipsoid's area.
@@ -40,6 +40,7 @@ private:
   GeographicLib::Ellipsoid Earth;
   double Rq;
   double D;      ///< x stretch (1 in the polar aspect)
+  double Xi0;    ///< the centre's authalic latitude (degrees)
   double SinXi0; ///< sine of the centre's authalic latitude
   double CosXi0; ///< its cosine
 };

@@ -1612,14 +1612,20 @@ class InputFiles:
             g = int(gauge.group(1))
             if g >= len(self.gauge_lines):
                 return f"{self.stations}: {text}"
-            # (the filter's gauge index counts from 0; the file's line is what to look at)
+            # (the filter's gauge index counts from 0; the file's line, or a GIS file's feature
+            # number, is what to look at)
             text = re.sub(r"^gauge \d+ \(station ([^)]*)\)", r"station \1", text)
+            if str(self.stations).lower().endswith(GIS_SUFFIXES):
+                return f"{self.stations}: feature {self.gauge_lines[g]}: {text}"
             return f"{self.stations}:{self.gauge_lines[g]}: {text}"
         row = re.match(r"observation row (\d+): (.*)", text)
         if row and self.row_line(int(row.group(1))):
             return f"{self.observations}:{self.row_line(int(row.group(1)))}: {row.group(2)}"
         if re.match(r"(catchment )?ring \d+", text):
-            return f"{self.catchment}: {text} (counted from 0, in the file's order)"
+            metres = ("; if they are metres of a projected system, the file must declare it in a form GDAL reads (a "
+                      "shapefile's .prj, a GeoJSON crs) to be made lon/lat here"
+                      if "look like projected coordinates" in text else "")
+            return f"{self.catchment}: {text} (counted from 0, in the file's order){metres}"
         if text.startswith("the catchment meets itself once projected"):
             return f"{self.catchment}: {text}"
         if text.startswith("the window/catchment input"):

@@ -115,12 +115,20 @@ def proj4_system(text):
             number[key] = float(terms.get(key, default))
         except ValueError:
             return f"+{key}={terms[key]}, which is not a number"
-    metres = number["to_meter"] if "to_meter" in terms else UNITS.get(terms.get("units", "m"))
+    # (+units before +to_meter, as PROJ reads them)
+    metres = UNITS.get(terms["units"]) if "units" in terms else number["to_meter"]
     if metres is None:
         return f"the unit +units={terms['units']} (read here: {', '.join(UNITS)}, or +to_meter)"
     bad = next((key for key, value in number.items() if not math.isfinite(value)), None)
     if bad or not (number["k_0"] > 0 and metres > 0):
         return f"+{bad}={terms.get(bad, wanted[bad])}, which is not finite" if bad else "a scale or unit of 0 or less"
+    beyond = next((key for key in ("lat_0", "lat_1", "lat_2", "lat_ts") if not abs(number[key]) <= 90), None)
+    if beyond or not abs(number["lon_0"]) <= 360:
+        key = beyond or "lon_0"
+        what = "a latitude (within 90)" if beyond else "a longitude (within 360)"
+        return f"+{key}={terms[key]}, which is not {what}"
+    if name in ("merc", "webmerc") and abs(number["lat_ts"]) == 90:
+        return f"+lat_ts={terms['lat_ts']}, where a Mercator's scale is 0 (its true-scale parallel must miss the poles)"
     if name in ("merc", "webmerc"):
         # The origin is on the equator whatever +lat_0 says; true scale on +lat_ts, where the
         # parallel's radius over the equator's is the scale on the equator.
@@ -195,6 +203,11 @@ def stations_system(utm, crs, gdal_messages):
         gdal_messages.new()  # (read: they are not the catchment's)
         if not text:
             csv_input.fail(f"--stations-crs {crs!r}: GDAL's database has no such EPSG code")
+        if isinstance(text, tuple):
+            csv_input.fail(f"--stations-crs {crs!r}: GDAL gives another system in its place, EPSG:{text[0]} "
+                           f"({text[1]!r}), as it does for a deprecated code, and the two may differ (as EPSG:2163, "
+                           "on a sphere, and its successor EPSG:9311, on the Clarke 1866 ellipsoid, do): give the "
+                           "file's system as PROJ terms (+proj=...)")
     system = proj4_system(text)
     if isinstance(system, str) and "+proj=longlat" in text.split():
         system = "a geographic system (longitude/latitude): give the file lon and lat columns, without --stations-crs"
@@ -249,7 +262,8 @@ def other_ellipsoid(proj4):
 def epsg_proj4(code):
     """The PROJ terms of an EPSG code from GDAL's database (through vtkGDALVectorReader: a GeoJSON
     of one point that declares the code); "" for a code that GDAL does not know (it then reads the
-    file as lon/lat, without the code's authority)."""
+    file as lon/lat, without the code's authority); (other code, its name) where GDAL gives
+    another code's system in its place (a deprecated code's successor)."""
     import json
     import os
     import tempfile
@@ -264,8 +278,13 @@ def epsg_proj4(code):
         reader = vtkGDALVectorReader()
         reader.SetFileName(path)
         reader.Update()
-        if reader.GetNumberOfLayers() != 1 or f'AUTHORITY["EPSG","{code}"]' not in (reader.GetLayerProjection(0) or ""):
-            return ""
+        declared = reader.GetLayerProjection(0) or "" if reader.GetNumberOfLayers() == 1 else ""
+        authority = re.findall(r'AUTHORITY\["EPSG","([0-9]+)"\]\]$', declared)
+        if authority and authority[0] != str(code) and declared.startswith("PROJCS"):
+            name = re.match(r'[A-Z]+\["([^"]*)"', declared)
+            return authority[0], name.group(1) if name else ""
+        if authority != [str(code)]:
+            return ""  # (a code GDAL does not know gives its default, WGS84's lon/lat)
         return reader.GetLayerProjectionAsProj4(0) or ""
 
 
@@ -348,7 +367,13 @@ def origin_in_filter_plane(system):
     origin.SetPoints(points)
     projection = projection_filter(system, False)
     projection.SetInputData(origin)
+    errors = []
+    csv_input.catch_vtk_messages(projection, errors.append, lambda text: None, errors.append)
     projection.Update()
+    if errors or projection.GetOutput().GetNumberOfPoints() != 1:
+        # (the empty output's GetPoint(0) crashed the interpreter)
+        csv_input.fail(f"{system.describe()}: its origin (lon_0, lat_0) has no place in the projection: "
+                       f"{errors[0] if errors else 'no point came out'}")
     return projection.GetOutput().GetPoint(0)[:2]
 
 
@@ -360,13 +385,14 @@ MOST_METRES = 4.0e7
 
 def into_filter_plane(data, system, where):
     """Moves data's points (changed in place) from system's plane to the filter's (the module's
-    formula). A point beyond MOST_METRES there ends the script, where(point index) naming where it
-    came from (UTM's range is checked where its file is read)."""
+    formula), and returns the filter's image of system's origin (None for UTM, which is moved by
+    the filter itself). A point beyond MOST_METRES there ends the script, where(point index)
+    naming where it came from (UTM's range is checked where its file is read)."""
     from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
     from vtkmodules.vtkCommonCore import vtkPoints
 
     if system.kind == "utm":
-        return
+        return None
     origin = origin_in_filter_plane(system)
     for leaf in polydata_blocks(data):
         if leaf.GetPoints() is None:
@@ -382,6 +408,7 @@ def into_filter_plane(data, system, where):
         moved = vtkPoints()
         moved.SetData(numpy_to_vtk(xyz, deep=True))
         leaf.SetPoints(moved)
+    return origin
 
 
 def to_lonlat(data, system, where, densify=False):
@@ -390,7 +417,7 @@ def to_lonlat(data, system, where, densify=False):
     first when densify is set. An error (a point the projection cannot hold, or one beyond
     MOST_METRES in the filter's plane) ends the script, where(point index) naming where that point
     came from."""
-    into_filter_plane(data, system, where)
+    origin = into_filter_plane(data, system, where)
     if densify:
         densify_edges(data, EDGE_METRES)
     projection = projection_filter(system, True)
@@ -399,8 +426,15 @@ def to_lonlat(data, system, where, densify=False):
     csv_input.catch_vtk_messages(projection, errors.append, lambda text: None, errors.append)
     projection.Update()
     if errors:
-        point = re.search(r"\bpoint (\d+)", errors[0])
-        csv_input.fail(f"{where(int(point.group(1))) if point else where(-1)}: as {system.describe()}: {errors[0]}")
+        point = re.search(r"\bpoint (\d+) \(([^,()]+), ([^,()]+)\)", errors[0]) or re.search(r"\bpoint (\d+)",
+                                                                                           errors[0])
+        message = errors[0]
+        if point and point.lastindex == 3 and origin:
+            # (the filter names the point by its place in the filter's plane: said in the file's)
+            x, y = (((float(point.group(axis + 2)) - origin[axis]) * system.k0 + false) / system.metres
+                    for axis, false in ((0, system.x0), (1, system.y0)))
+            message = message.replace(point.group(0), f"the point ({x:.15g}, {y:.15g})")
+        csv_input.fail(f"{where(int(point.group(1))) if point else where(-1)}: as {system.describe()}: {message}")
     return projection.GetOutputDataObject(0)
 
 

@@ -1804,7 +1804,8 @@ def test_a_catchment_in_a_zip_file_is_read_from_it():
 def test_a_catchment_declared_projected_is_named():
     # Its coordinates are lon/lat (a UTM declaration over them does not make them metres: see
     # test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means); a projected system (here a
-    # GeoJSON "crs" of UTM 60S, as a shapefile's .prj gives it) is named on a line of its own.
+    # GeoJSON "crs" of UTM 60S, as a shapefile's .prj gives it) is named on a line of its own. Metres
+    # under a .prj that GDAL cannot read are said to need a declaration it reads.
     import json
 
     with tempfile.TemporaryDirectory() as out:
@@ -1834,6 +1835,18 @@ def test_a_catchment_declared_projected_is_named():
                 assert_that(said[0].startswith(f"{geographic}: declares the datum 'North_American_Datum_1927' "
                                                "(ellipsoid 'Clarke 1866'); its longitudes/latitudes are read as "
                                                "WGS84 ones"), f"{said[0]}")
+        # Metres in a shapefile whose .prj GDAL cannot read: the vertex is named, and that the file
+        # must declare its system in a form GDAL reads.
+        shp, shx = shapefile_of([utm_60s(ring) for ring in LAKE_BASIN["features"][0]["geometry"]["coordinates"]])
+        for extension, data in ((".shp", shp), (".shx", shx), (".prj", b"not a coordinate system")):
+            with open(os.path.join(out, "garbled" + extension), "wb") as f:
+                f.write(data)
+        garbled = os.path.join(out, "garbled.shp")
+        _, stderr = run_colorado(out, stations=stations, observations=observations, catchment=garbled, plots=False,
+                                 status=1, what="a garbled .prj")
+        assert_that(f"{garbled}: catchment ring 0 vertex 0 has an invalid longitude/latitude" in stderr and
+                    "look like projected coordinates" in stderr and "; if they are metres of a projected system, "
+                    "the file must declare it in a form GDAL reads" in stderr, f"a garbled .prj: {stderr}")
 
 
 def test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means():
@@ -2134,7 +2147,21 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
                  for code in ("EPSG:32760", "epsg: 32760", "32760", "urn:ogc:def:crs:EPSG::32760")]
         assert_that(len(spelt[0]) == 2 and all(got == spelt[0] for got in spelt), f"EPSG codes: {spelt}")
         sphere = systems["laea"][0].replace("+datum=WGS84", "+R=6371007")
-        cases = [({"catchment": eqc_path, "stations": stations},
+        rim = write(out, "rim.csv", "station_id,x,y\nN1,4321000,3210000\nN2,30000000,3210000\n")
+        # A unit given both ways is +units', as PROJ reads it (+to_meter was taken: 6.6 times off).
+        both = import_example("projected_input").proj4_system("+proj=tmerc +lon_0=177 +units=ft +to_meter=2")
+        assert_that(both.metres == 0.3048, f"+units=ft +to_meter=2: {both.metres} m per unit")
+        cases = [({"catchment": catchment, "stations": xy, "stations-crs": "+proj=laea +lat_0=95"},
+                  "--stations-crs '+proj=laea +lat_0=95': +lat_0=95, which is not a latitude (within 90)"),
+                 ({"catchment": catchment, "stations": xy, "stations-crs": "+proj=merc +lat_ts=90"},
+                  "--stations-crs '+proj=merc +lat_ts=90': +lat_ts=90, where a Mercator's scale is 0"),
+                 ({"catchment": catchment, "stations": xy, "stations-crs": "EPSG:2163"},
+                  "--stations-crs 'EPSG:2163': GDAL gives another system in its place, EPSG:9311 ('NAD27 / US "
+                  "National Atlas Equal Area'), as it does for a deprecated code"),
+                 ({"catchment": catchment, "stations": rim, "stations-crs": "EPSG:3035"},
+                  f"{rim}:3: as LambertAzimuthalEqualArea lon_0=10 lat_0=52 x_0=4321000 y_0=3210000, WGS84: the point "
+                  "(30000000, 3210000) has no inverse"),
+                 ({"catchment": eqc_path, "stations": stations},
                   f"{eqc_path}: declares a projected coordinate system with the projection +proj=eqc (read here: "
                   "UTM, transverse Mercator (tmerc), Albers equal-area (aea), Lambert conformal conic (lcc), "
                   "Lambert azimuthal equal-area (laea) and Mercator (merc, and the web maps' EPSG:3857)); its "
@@ -2273,8 +2300,9 @@ def test_a_noaa_climate_data_online_file_is_both_stations_and_observations():
 def test_gauges_from_a_gis_file_of_points_give_the_csv_means():
     # The lake gauges as a GeoJSON of points (ids in a Station_ID attribute, names in Name) give
     # the stations CSV's counts and means bit for bit; in UTM 60S (a "crs", ids in site_no) to
-    # 1e-8; with ids in an attribute of another name, --stations-id names it. A file without an id
-    # attribute, a polygon for a gauge, and --stations-id with a CSV file end the run naming them.
+    # 1e-8; with ids in an attribute of another name, --stations-id names it. A gauge off the
+    # globe (named by its feature number), a file without an id attribute, a polygon for a gauge,
+    # and --stations-id with a CSV file end the run naming them.
     import json
     import zipfile
 
@@ -2318,7 +2346,9 @@ def test_gauges_from_a_gis_file_of_points_give_the_csv_means():
                                      catchment=catchment, plots=False, what=name, **options)
             assert_same_means(read_csv(os.path.join(out, name, "areal_mean.csv")), want, name)
         code = os.path.join(out, "code.geojson")
+        far = points_file(out, "far.geojson", [(175.6, -39.1), (176.4, 95.0)], "station_id")
         for options, message in (
+                ({"stations": far}, f"{far}: feature 2: station N2 has an invalid longitude/latitude (176.4, 95)"),
                 ({"stations": code}, f"{code}: no attribute holds the station ids (station_id, station, site_no, id); "
                                      "its attributes: code, Name (give the one holding the ids with --stations-id)"),
                 ({"stations": code, "stations-id": "kode"}, f"{code}: no attribute named 'kode'"),
