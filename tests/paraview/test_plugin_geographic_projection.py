@@ -86,7 +86,7 @@ def moves_points(settings, name, value):
 # Values that change what each setting can change: another UTM zone (-111 is zone 12) and
 # hemisphere (-38), another centre for the others.
 CHANGES = (("CentralLongitude", -111.0), ("CentralLatitude", -38.0), ("StandardParallels", [36.0, 42.0]))
-for projection in range(6):
+for projection in range(9):  # (every entry of the Projection menu)
     for zone in ((0, 13) if projection == 4 else (0,)):
         settings = {"Projection": projection, "UTMZone": zone, "ParametersFromData": 0}
         for name, value in CHANGES:
