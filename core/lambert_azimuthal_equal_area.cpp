@@ -16,8 +16,8 @@ using GeographicLib::Math;
 /// meridian's scale vanish together and D is their limit, 1.
 constexpr double PolarAspectDegrees = 1e-10;
 
-/// 1 + cos(c) below this is the centre's antipode: within some 4e-8 radians (0.3 m) of it, where
-/// B = Rq sqrt(2 / (1 + cos(c))) passes 1e8 Rq and x, y lose their last bits to its rounding.
+/// 1 + cos(c) below this is the centre's antipode: within some 4.5e-8 radians (0.3 m) of it,
+/// where B = Rq sqrt(2 / (1 + cos(c))) passes 4e7 Rq and the image is a rim of no width.
 constexpr double AntipodeOnePlusCos = 1e-15;
 
 /// A plane point up to this much (relative) beyond the image's rim, 2 Rq from the centre, is on
