@@ -303,9 +303,7 @@ def read_gauge_points(path, id_field=None):
         csv_input.fail(f"{path}: GDAL read no feature from the stations file (expected a GeoJSON or shapefile of "
                        "points, or a CSV file with a header such as station_id,lon,lat)"
                        + (f"; GDAL: {reasons[0]}" if reasons else ""))
-    for level, message in gdal:
-        if level:
-            print(f"{path}: GDAL: {message}", file=sys.stderr)
+    say_gdal_messages(path, gdal)
     for k, block in enumerate(blocks, 1):
         if block.GetNumberOfCells() != 1 or block.GetCellType(0) != VTK_VERTEX:
             csv_input.fail(f"{path}: feature {k} is not one point (GDAL reads it as {cell_kinds(block)}, a polygon's "
@@ -1389,6 +1387,14 @@ def read_gis_file(path, what, expected):
     return reader, reader.GetOutput(), errors, gdal_messages().new()
 
 
+def say_gdal_messages(path, gdal, passed_over=()):
+    """Prints GDAL's warnings and errors (read_gis_file's gdal: (level, text)) on stderr under the
+    file's name, but for those starting with passed_over (a str or tuple of them)."""
+    for level, message in gdal:
+        if level and not message.startswith(passed_over):
+            print(f"{path}: GDAL: {message}", file=sys.stderr)
+
+
 def read_catchment(path, feature=None):
     """The catchment (a vtkGDALVectorReader's output: a multiblock with a block per feature, or the
     features chosen by `feature`, "ATTRIBUTE=VALUE") and its rings (catchment_rings); ends the
@@ -1408,9 +1414,7 @@ def read_catchment(path, feature=None):
                        "polygons with measures, such as PolygonM or PolygonZM shapefiles, read as empty: drop "
                        "the measures first, e.g. with ogr2ogr -dim XY)"
                        + (f"; GDAL: {reasons[0]}" if reasons else ""))
-    for level, message in gdal:
-        if level and not message.startswith("Non closed ring detected"):  # (the filter names it)
-            print(f"{path}: GDAL: {message}", file=sys.stderr)
+    say_gdal_messages(path, gdal, "Non closed ring detected")  # (the filter names an open ring)
     system = projected_input.declared_system(reader, rings, path)
     if system:
         output = projected_input.to_lonlat(output, system, lambda point: path, densify=True)
