@@ -181,7 +181,11 @@ public:
    * Off (default): lon/lat to x/y. On: x/y back to lon/lat, with the parameters read from the
    * input's `TesseraProjection` field data when present, else from this filter's settings: a
    * UTM zone (UTMZone 1 to 60 with UTMNorth: the whole of a UTM projection), or the parameters
-   * set with ParametersFromData off.
+   * set with ParametersFromData off. The planes have no false easting or northing and scale 1
+   * (but UTM's): a file's x, y in a system with them (EPSG:3035's 4321000, 3210000; a state
+   * plane's feet) are taken back to them first, x' = (x * metres per unit - x_0) / k_0 and alike
+   * for y (ParaView's Transform: Scale by metres per unit / k_0, Translate by -x_0 / k_0,
+   * -y_0 / k_0), as examples/projected_input.py does.
    */
   vtkSetMacro(Inverse, bool);
   vtkGetMacro(Inverse, bool);
