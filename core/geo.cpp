@@ -567,6 +567,12 @@ Point2 GeographicProjection::Inverse(const Point2& xy, long long id) const
   {
     throw InputError(DescribePoint("point", id, xy) + " has a NaN or infinite coordinate");
   }
+  if (!(std::abs(xy.x) <= MaxProjectedMagnitude) || !(std::abs(xy.y) <= MaxProjectedMagnitude))
+  {
+    // (Forward refuses such points, so none is an image; the Mercators took y = 1e300 for a pole)
+    throw InputError(DescribePoint("point", id, xy) + " lies beyond 1e8 m of the " +
+      ProjectionKindName(Params.Kind) + " projection's origin, where no place projects");
+  }
   const double lon0 = Impl->CentralMeridian;
   Point2 lonlat;
   switch (Params.Kind)

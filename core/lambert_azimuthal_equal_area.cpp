@@ -29,6 +29,27 @@ double Squared(double v)
 {
   return v * v;
 }
+
+/// cos(xi), xi the authalic latitude of lat, from q(lat) = (1 - e^2) (s / (1 - e^2 s^2) +
+/// atanh(e s) / e), s = sin(lat), with q_p - q written in 1 - s = 2 sin^2(colatitude / 2): near a
+/// pole, cos(xi) through xi in degrees kept some 1e-14 degree of it, and D then erred by 1.4e-14
+/// over the centre's distance from the pole in degrees (95 m at 2e-10 degree, 5 m at 1e-8).
+double AuthalicCosine(double e2, double lat)
+{
+  double s = 0.0, c = 0.0;
+  Math::sincosd(std::abs(lat), s, c);
+  if (e2 == 0.0)
+  {
+    return c;
+  }
+  const double e = std::sqrt(e2);
+  const double oneMinusS = 2.0 * Squared(Math::sind(0.5 * (90.0 - std::abs(lat))));
+  const double q = (1.0 - e2) * (s / (1.0 - e2 * s * s) + std::atanh(e * s) / e);
+  const double qp = (1.0 - e2) * (1.0 / (1.0 - e2) + std::atanh(e) / e);
+  const double qpMinusQ = oneMinusS * (1.0 + e2 * s) / (1.0 - e2 * s * s) +
+    (1.0 - e2) * std::atanh(e * oneMinusS / (1.0 - e2 * s)) / e;
+  return std::sqrt(qpMinusQ * (qp + q)) / qp;
+}
 } // namespace
 
 LambertAzimuthalEqualArea::LambertAzimuthalEqualArea(double a, double f, double lat0)
@@ -36,6 +57,8 @@ LambertAzimuthalEqualArea::LambertAzimuthalEqualArea(double a, double f, double 
 {
   this->Rq = std::sqrt(this->Earth.Area() / (4.0 * Math::pi()));
   this->Xi0 = this->Earth.AuthalicLatitude(lat0);
+  // (cos xi0 from xi0 as rounded, as the forward's half angles take xi0: the two agree, which the
+  // inverse near the antipode needs to 1e-13; D alone takes the true cosine)
   Math::sincosd(this->Xi0, this->SinXi0, this->CosXi0);
   if (90.0 - std::abs(lat0) < PolarAspectDegrees)
   {
@@ -50,7 +73,7 @@ LambertAzimuthalEqualArea::LambertAzimuthalEqualArea(double a, double f, double 
   Math::sincosd(lat0, sinLat0, cosLat0);
   const double e2 = f * (2.0 - f);
   const double m0 = cosLat0 / std::sqrt(1.0 - e2 * sinLat0 * sinLat0);
-  this->D = a * m0 / (this->Rq * this->CosXi0);
+  this->D = a * m0 / (this->Rq * AuthalicCosine(e2, lat0));
 }
 
 void LambertAzimuthalEqualArea::Forward(double lon0,

@@ -2,6 +2,8 @@
 
 #include <GeographicLib/Math.hpp>
 
+#include <cmath>
+
 namespace tessera
 {
 
@@ -21,6 +23,12 @@ void Mercator::Forward(double lon0, double lat, double lon, double& x, double& y
 
 void Mercator::Reverse(double lon0, double x, double y, double& lat, double& lon) const
 {
+  if (!(std::abs(x) <= this->A * Math::pi() * (1.0 + 1e-12)))
+  {
+    // (beyond 180 degrees from lon0, where Forward puts nothing: x = 1e12 wrapped to a longitude)
+    lat = lon = Math::NaN();
+    return;
+  }
   lon = lon0 + x / this->A / Math::degree();
   lat = this->Earth.InverseIsometricLatitude(y / this->A / Math::degree());
 }

@@ -23,7 +23,8 @@ public:
 
   /// lat, lon (degrees) to x, y (metres), x from the central meridian lon0.
   void Forward(double lon0, double lat, double lon, double& x, double& y) const;
-  /// x, y (metres) to lat, lon (degrees, lon = lon0 + x / a: the caller reduces it).
+  /// x, y (metres) to lat, lon (degrees, lon = lon0 + x / a, within 180 degrees of lon0); NaN
+  /// for an x beyond pi a, where Forward puts nothing.
   void Reverse(double lon0, double x, double y, double& lat, double& lon) const;
 
 private:

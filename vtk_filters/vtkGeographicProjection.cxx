@@ -227,6 +227,19 @@ tessera::ProjectionKind KindOf(int projection)
       return tessera::ProjectionKind::AlbersEqualArea;
   }
 }
+/// The Projection values' names, by their index: Automatic, then each projection's own name.
+std::vector<const char*> ProjectionChoices()
+{
+  std::vector<const char*> names = { "Automatic" };
+  for (int p = vtkGeographicProjection::ALBERS_EQUAL_AREA;
+       p <= vtkGeographicProjection::WEB_MERCATOR;
+       ++p)
+  {
+    names.push_back(tessera::ProjectionKindName(KindOf(p)));
+  }
+  return names;
+}
+
 /// Whether a UTM zone is set by hand (UTMZone 1 to 60): with the hemisphere, the whole of the
 /// projection, whatever the data or the other settings say. Then sets p's zone and hemisphere.
 bool TakeUTMZoneSet(vtkGeographicProjection* self, tessera::ProjectionParameters& p)
@@ -611,17 +624,7 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
   }
   try
   {
-    tessera_vtk::CheckChoice("Projection",
-      this->Projection,
-      { "Automatic",
-        "AlbersEqualArea",
-        "LambertConformalConic",
-        "TransverseMercator",
-        "UTM",
-        "AzimuthalEquidistant",
-        "LambertAzimuthalEqualArea",
-        "Mercator",
-        "WebMercator" });
+    tessera_vtk::CheckChoice("Projection", this->Projection, ProjectionChoices());
     // (the zone is a UTM setting: a value left from a UTM choice does not stop another projection)
     if (this->Projection == UTM && (this->UTMZone < 0 || this->UTMZone > 60))
     {

@@ -567,6 +567,29 @@ TEST(Geo, LambertAzimuthalEqualAreaRoundTripsInEveryAspect)
   }
 }
 
+// A centre a hair from a pole projects as the polar aspect does, to within what moving the centre
+// by that hair moves the points (at most twice the hair's angle times the image's 1.3e7 m): D's
+// cos(xi0), taken through xi0 in degrees, once put points 33 m off at 1e-9 degree from the pole.
+TEST(Geo, LambertAzimuthalEqualAreaNearAPoleIsThePolarAspect)
+{
+  for (const double pole : { 90.0, -90.0 })
+  {
+    const auto polar = LambertAzimuthal(pole, 30.0);
+    for (const double hair : { 1e-10, 1e-9, 1e-8, 1e-6, 1e-4 })
+    {
+      const auto near = LambertAzimuthal(pole - std::copysign(hair, pole), 30.0);
+      const double bound = 2.0 * hair * M_PI / 180.0 * 1.3e7 + 1e-6;
+      for (const Point2& q :
+        { Point2{ 120.0, 0.0 }, Point2{ -45.0, pole / 2.0 }, Point2{ 30.0, -pole / 3.0 } })
+      {
+        const Point2 a = polar.Forward(q), b = near.Forward(q);
+        EXPECT_LT(std::hypot(a.x - b.x, a.y - b.y), bound)
+          << pole << " " << hair << ": " << q.x << " " << q.y;
+      }
+    }
+  }
+}
+
 // Equal area: the planar area of a projected cell is its ellipsoidal area (GeographicLib's
 // PolygonArea), near and far from the centre, in each aspect; and the scale at the centre is
 // true along the meridian and the parallel (from the ellipsoid's radii of curvature).
@@ -618,13 +641,18 @@ TEST(Geo, LambertAzimuthalEqualAreaRefusesTheAntipodeAndPointsBeyondTheRim)
               })
               .find("has no inverse"),
     std::string::npos);
-  EXPECT_NE(ErrorOf([&] { projection.Inverse({ 0.0, 1.3e7 }, 8); }).find("8"), std::string::npos);
+  EXPECT_NE(ErrorOf(
+              [&] {
+                projection.Inverse({ 0.0, 1.3e7 }, 8);
+              })
+              .find("point 8"),
+    std::string::npos);
 }
 
 // Against PROJ 9.1.1 (cs2cs -f %.6f EPSG:4326 EPSG:3395, EPSG:3857, and +proj=merc +lon_0=-100
 // +datum=WGS84): the ellipsoid's Mercator and the web maps' one, about meridian 0 and another;
-// the inverse gives the point back. Web Mercator's y is the sphere's: 28 km north of the
-// ellipsoid's at 50 N.
+// the inverse gives the point back. Web Mercator's y is the sphere's: 32.75 km north of
+// the ellipsoid's at 50 N.
 TEST(Geo, MercatorsMatchProj)
 {
   struct Case
@@ -697,5 +725,15 @@ TEST(Geo, MercatorIsConformalAndRefusesThePoles)
                 })
                 .find("point 4"),
       std::string::npos);
+    // Nor does anything beyond the poles' 1e8 m or half a turn from the central meridian invert
+    // (y = 1e300 came back as the pole, x = 1e12 as longitude 72.84).
+    for (const Point2& far :
+      { Point2{ 0.0, 1e300 }, Point2{ 0.0, -1.5e8 }, Point2{ 1e12, 0.0 }, Point2{ 2.1e7, 0.0 } })
+    {
+      EXPECT_NE(ErrorOf([&] { projection.Inverse(far, 5); }).find("point 5"), std::string::npos)
+        << far.x << " " << far.y;
+    }
+    const Point2 edge = projection.Forward({ 20.0 + 180.0, 10.0 });
+    EXPECT_NEAR(std::abs(projection.Inverse(edge).x - 20.0), 180.0, 1e-9);
   }
 }
