@@ -1595,18 +1595,24 @@ class InputFiles:
             return f"line {found}" if found else f"{m.group(0)} (a row added for a {self.unit} without rows)"
         return re.sub(r"\brow (\d+)\b", line, re.sub(r" \(rows from 0, listed in [^)]*\)", "", text))
 
+    def place_word(self):
+        """What a gauge's number in gauge_lines is: "line" of a CSV file, "feature" of a GIS file."""
+        return "feature" if str(self.stations).lower().endswith(GIS_SUFFIXES) else "line"
+
     def gauges_as_lines(self, text):
         """text with "(gauges A and B)" as "(gauges A and B: lines L and M)", and "(gauge A)" (a
-        gauge whose station id others have too) as "(gauge A: line L)"."""
+        gauge whose station id others have too) as "(gauge A: line L)" (features of a GIS file)."""
+        word = self.place_word()
+
         def lines(m):
             a, b = int(m.group(1)), int(m.group(2))
             if max(a, b) >= len(self.gauge_lines):
                 return m.group(0)
-            return f"(gauges {a} and {b}: lines {self.gauge_lines[a]} and {self.gauge_lines[b]})"
+            return f"(gauges {a} and {b}: {word}s {self.gauge_lines[a]} and {self.gauge_lines[b]})"
 
         def line(m):
             a = int(m.group(1))
-            return f"(gauge {a}: line {self.gauge_lines[a]})" if a < len(self.gauge_lines) else m.group(0)
+            return f"(gauge {a}: {word} {self.gauge_lines[a]})" if a < len(self.gauge_lines) else m.group(0)
         return re.sub(r"\(gauge (\d+)\)", line, re.sub(r"\(gauges (\d+) and (\d+)\)", lines, text))
 
     def error(self, text):
@@ -1619,7 +1625,7 @@ class InputFiles:
             # (the filter's gauge index counts from 0; the file's line, or a GIS file's feature
             # number, is what to look at)
             text = re.sub(r"^gauge \d+ \(station ([^)]*)\)", r"station \1", text)
-            if str(self.stations).lower().endswith(GIS_SUFFIXES):
+            if self.place_word() == "feature":
                 return f"{self.stations}: feature {self.gauge_lines[g]}: {text}"
             return f"{self.stations}:{self.gauge_lines[g]}: {text}"
         row = re.match(r"observation row (\d+): (.*)", text)
@@ -1893,7 +1899,7 @@ def write_unused(summary, files, station_ids, observations, unit, path, unmatche
                 else:
                     note = ""
                     if name == "DuplicateGaugeIds" and earlier:
-                        note = f"same place as line {files.gauge_lines[int(earlier.GetValue(k))]}"
+                        note = f"same place as {files.place_word()} {files.gauge_lines[int(earlier.GetValue(k))]}"
                     out.writerow([kind, files.stations, files.gauge_lines[i], station_ids[i], note])
                 written += 1
         for number, name in unmatched_columns:

@@ -28,9 +28,9 @@ import sys
 
 import csv_input
 
-# What each PROJ projection is in vtkGeographicProjection (SetProjection's values).
-KINDS = {"tmerc": ("TransverseMercator", 3), "aea": ("AlbersEqualArea", 1), "lcc": ("LambertConformalConic", 2),
-         "laea": ("LambertAzimuthalEqualArea", 6), "merc": ("Mercator", 7), "webmerc": ("WebMercator", 8)}
+# What each PROJ projection is in vtkGeographicProjection (SetProjectionTo<name>).
+KINDS = {"tmerc": "TransverseMercator", "aea": "AlbersEqualArea", "lcc": "LambertConformalConic",
+         "laea": "LambertAzimuthalEqualArea", "merc": "Mercator", "webmerc": "WebMercator"}
 READ = ("UTM, transverse Mercator (tmerc), Albers equal-area (aea), Lambert conformal conic (lcc), Lambert "
         "azimuthal equal-area (laea) and Mercator (merc, and the web maps' EPSG:3857)")
 
@@ -79,7 +79,7 @@ class PlaneSystem:
         terms += [f"x_0={self.x0:.10g}", f"y_0={self.y0:.10g}"]
         if self.metres != 1.0:
             terms.append(f"{self.metres:.10g} m per unit")
-        return f"{KINDS[self.kind][0]} {' '.join(terms)}, WGS84"
+        return f"{KINDS[self.kind]} {' '.join(terms)}, WGS84"
 
 
 def proj_terms(text):
@@ -127,15 +127,18 @@ def proj4_system(text):
         key = beyond or "lon_0"
         what = "a latitude (within 90)" if beyond else "a longitude (within 360)"
         return f"+{key}={terms[key]}, which is not {what}"
-    if name in ("merc", "webmerc") and abs(number["lat_ts"]) == 90:
+    if terms["proj"] == "merc" and abs(number["lat_ts"]) == 90:
         return f"+lat_ts={terms['lat_ts']}, where a Mercator's scale is 0 (its true-scale parallel must miss the poles)"
+    if name in ("laea", "webmerc") and terms["proj"] != "merc":
+        number["k_0"] = 1.0  # (PROJ's laea and webmerc take no +k, webmerc no +lat_ts)
     if name in ("merc", "webmerc"):
-        # The origin is on the equator whatever +lat_0 says; true scale on +lat_ts, where the
-        # parallel's radius over the equator's is the scale on the equator.
-        e2 = WGS84_E2 if name == "merc" else 0.0
-        sin_ts = math.sin(math.radians(number["lat_ts"]))
-        number["lat_0"] = 0.0
-        number["k_0"] *= math.cos(math.radians(number["lat_ts"])) / math.sqrt(1 - e2 * sin_ts * sin_ts)
+        number["lat_0"] = 0.0  # (the origin is on the equator whatever +lat_0 says)
+        if terms["proj"] == "merc" and "lat_ts" in terms:
+            # True scale on +lat_ts, in place of +k (as PROJ takes them): the scale on the equator
+            # is that parallel's radius over the equator's.
+            e2 = WGS84_E2 if name == "merc" else 0.0
+            sin_ts = math.sin(math.radians(number["lat_ts"]))
+            number["k_0"] = math.cos(math.radians(number["lat_ts"])) / math.sqrt(1 - e2 * sin_ts * sin_ts)
     return PlaneSystem(name, number["lon_0"], number["lat_0"], number["lat_1"], number["lat_2"], number["k_0"],
                        number["x_0"], number["y_0"], metres)
 
@@ -156,7 +159,10 @@ def declared_system(reader, rings, path):
     for layer in range(reader.GetNumberOfLayers()):
         proj4 = reader.GetLayerProjectionAsProj4(layer) or ""
         systems.add(proj4 if "+proj=" in proj4 and "+proj=longlat" not in proj4 else None)
-    metres = all(abs(x) > 360.0 or abs(y) > 90.0 for ring in rings for x, y in ring)
+    # (most vertices, not all: a system about the catchment itself puts some within 360 m of its
+    # origin, and a vertex of a lon/lat file mistyped must not make the file metres)
+    vertices = [p for ring in rings for p in ring]
+    metres = 2 * sum(abs(x) > 360.0 or abs(y) > 90.0 for x, y in vertices) > len(vertices)
     if len(systems) != 1 or None in systems or not metres:
         return None
     proj4 = systems.pop()
@@ -223,17 +229,20 @@ def stations_system(utm, crs, gdal_messages):
 
 
 def spherical(terms):
-    """The term that makes PROJ terms (proj_terms') a sphere's ("+R=6370997", "+ellps=sphere",
-    "+a=6378137 +b=6378137"); else ""."""
-    if "R" in terms:
-        return f"+R={terms['R']}"
+    """The terms that make PROJ terms (proj_terms') a sphere's, as PROJ reads them ("+R=6370997",
+    "+R_A", "+ellps=sphere", "+a=6378137 +b=6378137", "+es=0", or +a with no shape); else ""."""
+    radius = next((key for key in terms if key == "R" or key.startswith("R_")), None)
+    if radius:
+        return f"+{radius}" + (f"={terms[radius]}" if terms[radius] else "")
     if terms.get("ellps") == "sphere":
         return "+ellps=sphere"
-    for key, sphere in (("b", terms.get("a")), ("rf", "0"), ("f", "0")):
+    if "a" in terms and not any(key in terms for key in ("b", "rf", "f", "es", "e", "ellps", "datum")):
+        return f"+a={terms['a']} without a flattening"
+    for key, sphere in (("b", terms.get("a")), ("rf", "0"), ("f", "0"), ("es", "0"), ("e", "0")):
         try:
-            if "a" in terms and key in terms and float(terms[key]) == float(sphere):
-                return f"+a={terms['a']} +{key}={terms[key]}"
-        except ValueError:
+            if key in terms and float(terms[key]) == float(sphere):
+                return f"+a={terms['a']} +{key}={terms[key]}" if key == "b" else f"+{key}={terms[key]}"
+        except (TypeError, ValueError):
             pass  # (a term that is not a number is named where it is read)
     return ""
 
@@ -346,7 +355,7 @@ def projection_filter(system, inverse):
         projection.SetUTMZone(system.zone)
         projection.SetUTMNorth(system.north)
     else:
-        projection.SetProjection(KINDS[system.kind][1])
+        getattr(projection, "SetProjectionTo" + KINDS[system.kind])()
         projection.SetParametersFromData(False)
         projection.SetCentralLongitude(system.lon0)
         projection.SetCentralLatitude(system.lat0)

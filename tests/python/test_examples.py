@@ -2074,7 +2074,10 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
         "EPSG:3035": ("EPSG:3035", lambda ps: [snyder_laea(x, y, 10, 52, 4321000, 3210000) for x, y in ps]),
         "EPSG:3857": ("EPSG:3857", lambda ps: [snyder_mercator(x, y, 0, sphere=True) for x, y in ps]),
         "merc": ("+proj=merc +lon_0=170 +lat_ts=-30 +x_0=100000 +y_0=200000 +datum=WGS84 +units=m",
-                 lambda ps: [snyder_mercator(x, y, 170, -30, 100000, 200000) for x, y in ps])}
+                 lambda ps: [snyder_mercator(x, y, 170, -30, 100000, 200000) for x, y in ps]),
+        # (about the basin's corner itself, without a false origin: that vertex is at 0, 0)
+        "laea_corner": ("+proj=laea +lat_0=-39.2 +lon_0=175.5 +datum=WGS84 +units=m",
+                        lambda ps: [snyder_laea(x, y, 175.5, -39.2) for x, y in ps])}
     lcc_prj = ('PROJCS["lake_lcc",GEOGCS["GCS_WGS_1984",DATUM["D_WGS_1984",SPHEROID["WGS_1984",6378137.0,'
                '298.257223563]],PRIMEM["Greenwich",0.0],UNIT["Degree",0.0174532925199433]],PROJECTION['
                f'"Lambert_Conformal_Conic"],PARAMETER["False_Easting",{2510000 / us_foot!r}],PARAMETER['
@@ -2111,8 +2114,10 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
                 f"{s},{x!r},{y!r}\n" for s, (x, y) in zip(LAKE_GAUGES, xy)))
 
         runs = [(c, systems[g][0], stations_in(systems[g][1], g.replace(":", "_"))) for c, g in
-                (("aea", "lcc"), ("lcc", "tmerc"), ("tmerc", "aea"), ("laea", "EPSG:3035"), ("EPSG:3857", "merc"))]
-        runs.append(("aea", "EPSG:32760", stations_in(utm_60s, "utm")))
+                (("aea", "lcc"), ("lcc", "tmerc"), ("tmerc", "aea"), ("laea", "EPSG:3035"), ("EPSG:3857", "merc"),
+                 ("laea_corner", "aea"))]
+        utm_xy = stations_in(utm_60s, "utm")
+        runs.append(("aea", "EPSG:32760", utm_xy))
         for name, crs, xy in runs:
             path = catchment_in(name)
             folder = os.path.join(out, name.replace(":", "_"))
@@ -2135,22 +2140,30 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
         xy = runs[0][2]
         typo = write(out, "typo.csv", "station_id,x,y\nN1,1000000,2000000\nN2,-1e9,2000000\n")
         # A UTM zone without N or S is read as north, and said.
-        _, stderr = run_colorado(os.path.join(out, "north"), stations=runs[5][2], observations=observations,
+        _, stderr = run_colorado(os.path.join(out, "north"), stations=utm_xy, observations=observations,
                                  catchment=catchment, plots=False, what="--stations-utm 60", **{"stations-utm": "60"})
         assert_that("--stations-utm 60: read as zone 60N, in the northern hemisphere (give 60S for the southern)"
                     in stderr, f"--stations-utm 60: {stderr}")
         # An EPSG code as it is written elsewhere: the same means as EPSG:CODE, bit for bit.
         for code in ("EPSG:32760", "epsg: 32760", "32760", "urn:ogc:def:crs:EPSG::32760"):
-            run_colorado(os.path.join(out, code.replace(":", "_")), stations=runs[5][2], observations=observations,
+            run_colorado(os.path.join(out, code.replace(":", "_")), stations=utm_xy, observations=observations,
                          catchment=catchment, plots=False, what=code, **{"stations-crs": code})
         spelt = [read_csv(os.path.join(out, code.replace(":", "_"), "areal_mean.csv"))
                  for code in ("EPSG:32760", "epsg: 32760", "32760", "urn:ogc:def:crs:EPSG::32760")]
         assert_that(len(spelt[0]) == 2 and all(got == spelt[0] for got in spelt), f"EPSG codes: {spelt}")
         sphere = systems["laea"][0].replace("+datum=WGS84", "+R=6371007")
         rim = write(out, "rim.csv", "station_id,x,y\nN1,4321000,3210000\nN2,30000000,3210000\n")
-        # A unit given both ways is +units', as PROJ reads it (+to_meter was taken: 6.6 times off).
-        both = import_example("projected_input").proj4_system("+proj=tmerc +lon_0=177 +units=ft +to_meter=2")
-        assert_that(both.metres == 0.3048, f"+units=ft +to_meter=2: {both.metres} m per unit")
+        # PROJ terms read as PROJ reads them: +units before +to_meter (+to_meter was taken: 6.6 times
+        # off); a Mercator's +lat_ts in place of +k (they were multiplied), laea and webmerc without
+        # +k; +a alone, +es=0 and +R_A are spheres, and a Mercator on WGS84's radius is the web's.
+        system = import_example("projected_input").proj4_system
+        assert_that(system("+proj=tmerc +lon_0=177 +units=ft +to_meter=2").metres == 0.3048, "+units, +to_meter")
+        assert_close(system("+proj=merc +lat_ts=30 +k=0.5 +datum=WGS84").k0, 0.8667510026, 1e-10, "+lat_ts, +k")
+        assert_that(system("+proj=laea +lat_0=52 +k=0.5 +datum=WGS84").k0 == 1.0, "laea's +k")
+        assert_that(system("+proj=webmerc +k=0.5 +lat_ts=30").k0 == 1.0, "webmerc's +k and +lat_ts")
+        for terms in ("+proj=laea +lat_0=52 +a=6378137", "+proj=aea +a=6371000 +es=0", "+proj=laea +R_A +ellps=GRS80"):
+            assert_that("a projection of the sphere" in system(terms), f"{terms}: {system(terms)}")
+        assert_that(system("+proj=merc +a=6378137").kind == "webmerc", "+proj=merc +a=6378137")
         cases = [({"catchment": catchment, "stations": xy, "stations-crs": "+proj=laea +lat_0=95"},
                   "--stations-crs '+proj=laea +lat_0=95': +lat_0=95, which is not a latitude (within 90)"),
                  ({"catchment": catchment, "stations": xy, "stations-crs": "+proj=merc +lat_ts=90"},
@@ -2345,6 +2358,15 @@ def test_gauges_from_a_gis_file_of_points_give_the_csv_means():
             _, stderr = run_colorado(os.path.join(out, name), stations=path, observations=observations,
                                      catchment=catchment, plots=False, what=name, **options)
             assert_same_means(read_csv(os.path.join(out, name, "areal_mean.csv")), want, name)
+        # A gauge at an earlier one's place is listed with that one's feature number (not "line").
+        twice = write(out, "twice.geojson", json.dumps({"type": "FeatureCollection", "features": [
+            {"type": "Feature", "properties": {"station_id": s}, "geometry": {"type": "Point", "coordinates": list(p)}}
+            for s, p in [*LAKE_GAUGES.items(), ("N7", LAKE_GAUGES["N3"])]]}))
+        run_colorado(os.path.join(out, "twice"), stations=twice, observations=observations, catchment=catchment,
+                     plots=False, what="a gauge at another's place")
+        unused = [r for r in read_csv(os.path.join(out, "twice", "unused_inputs.csv"))
+                  if r["station_id"] == "N7" and r["kind"].startswith("gauge at the place")]
+        assert_that([(r["line"], r["note"]) for r in unused] == [("7", "same place as feature 3")], f"{unused}")
         code = os.path.join(out, "code.geojson")
         far = points_file(out, "far.geojson", [(175.6, -39.1), (176.4, 95.0)], "station_id")
         for options, message in (

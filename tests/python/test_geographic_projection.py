@@ -104,7 +104,7 @@ def test_lambert_azimuthal_equal_area_is_laea_europe_and_goes_back_by_its_record
 
 def test_mercator_and_web_mercator_are_epsg_3395_and_3857():
     # PROJ 9.1.1's (cs2cs EPSG:4326 EPSG:3395, EPSG:3857) eastings and northings of 50 N 5 E: the web
-    # maps' northing is the sphere's, 32.75 km north of the ellipsoid's.
+    # maps' northing is the sphere's, 32.75 km north of the ellipsoid's. Each goes back by its record.
     for choose, north in ((vtkGeographicProjection.SetProjectionToMercator, 6413524.594164),
                           (vtkGeographicProjection.SetProjectionToWebMercator, 6446275.841017)):
         f = vtkGeographicProjection()
@@ -115,6 +115,13 @@ def test_mercator_and_web_mercator_are_epsg_3395_and_3857():
         x, y, _ = f.GetOutput().GetPoint(0)
         assert_close(x, 556597.453966, 1e-5, f"{projection_record(f.GetOutput())}: easting")
         assert_close(y, north, 1e-5, f"{projection_record(f.GetOutput())}: northing")
+        inverse = vtkGeographicProjection()  # (by the record the forward wrote)
+        inverse.SetInputConnection(f.GetOutputPort())
+        inverse.InverseOn()
+        inverse.Update()
+        lon, lat, _ = inverse.GetOutput().GetPoint(0)
+        assert_that(abs(lon - 5.0) < 1e-12 and abs(lat - 50.0) < 1e-12, f"{projection_record(f.GetOutput())}: back "
+                    f"at {lon!r}, {lat!r}")
 
 
 def test_nan_point_is_named_and_output_is_empty():
