@@ -1835,9 +1835,7 @@ def write_means_by_feature(features, name, gauges, observations, steps, whole, c
                 print(f"\rareal means by {name}: {k + 1} of {len(values)}", end="", file=sys.stderr, flush=True)
             average = areal_average(gauges, features[value], observations)
             average.SetProjectionRecord(record)
-            errors = []
-            csv_input.catch_vtk_messages(average, errors.append, lambda text: None, errors.append)
-            average.Update(1)
+            errors = csv_input.errors_of_update(average, 1)
             summary, weights = average.GetOutputDataObject(1), average.GetOutputDataObject(2)
             if errors or summary is None or summary.GetNumberOfRows() == 0:
                 if interactive():

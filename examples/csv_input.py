@@ -321,7 +321,7 @@ def say_unplaced_rows(path, unplaced, placed, coordinates):
         fail(f"{path}:{lost[1]}: station {lost[0]} lacks its {coordinates[0]} or {coordinates[1]} here and on every "
              "other row (each station needs its place on one row at least)")
     if unplaced:
-        station, (line, count) = min(unplaced.items(), key=lambda item: item[1][0])
+        station, (line, count) = next(iter(unplaced.items()))  # (the first met: the smallest line)
         total = sum(count for _, count in unplaced.values())
         print(f"{path}:{line}: station {station} lacks its {coordinates[0]} or {coordinates[1]} on this row: its place "
               f"is taken from its other rows ({total} row(s) of {len(unplaced)} station(s) so)", file=sys.stderr)
@@ -421,6 +421,15 @@ def catch_vtk_messages(algorithm, on_error, on_warning=None, on_executive_error=
     if on_warning is not None:
         algorithm.AddObserver(vtkCommand.WarningEvent, observer(on_warning))
     algorithm.GetExecutive().AddObserver(vtkCommand.ErrorEvent, observer(on_executive_error))
+
+
+def errors_of_update(algorithm, *port):
+    """Updates the algorithm (its output port, where one is given) and returns the texts of its
+    errors and its executive's, its warnings dropped (the callers end the script on an error)."""
+    errors = []
+    catch_vtk_messages(algorithm, errors.append, lambda text: None, errors.append)
+    algorithm.Update(*port)
+    return errors
 
 
 def point_error(text, path, lines, name):

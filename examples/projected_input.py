@@ -7,9 +7,8 @@ aea (Albers equal-area conic), lcc (Lambert conformal conic, with one or two sta
 laea (Lambert azimuthal equal-area, as LAEA Europe, EPSG:3035) and merc (Mercator, as EPSG:3395,
 or on the sphere of WGS84's radius, the web maps' EPSG:3857), in metres or feet, on an ellipsoid
 (another sphere's, +R=, is refused: its inverse differs by kilometres). Each is made lon/lat by
-vtkGeographicProjection's inverse. That
-filter's planes have no false easting or northing, a scale of 1 and their own origin, so the
-file's x, y are first moved into the filter's plane:
+vtkGeographicProjection's inverse. That filter's planes have no false easting or northing, a
+scale of 1 and their own origin, so the file's x, y are first moved into the filter's plane:
 
     filter x = (file x * metres per unit - x_0) / k_0 + X,  and alike for y,
 
@@ -151,10 +150,10 @@ def in_utm_range(x, y):
 
 def declared_system(reader, rings, path):
     """The PlaneSystem that the catchment file (reader: its vtkGDALVectorReader, updated) declares
-    for all its layers, where its coordinates (rings) are metres, none of them a longitude/latitude
-    (a file of lon/lat under a projected declaration is read as lon/lat, and said); else None. A
-    projected system that is not read here ends the script naming it, and so does a UTM vertex
-    that no zone holds."""
+    for all its layers, where its coordinates (rings) are metres, most of them out of lon/lat's
+    range (a file of lon/lat under a projected declaration is read as lon/lat, and said); else
+    None. A projected system that is not read here ends the script naming it, and so does a UTM
+    vertex that no zone holds."""
     systems = set()
     for layer in range(reader.GetNumberOfLayers()):
         proj4 = reader.GetLayerProjectionAsProj4(layer) or ""
@@ -376,9 +375,7 @@ def origin_in_filter_plane(system):
     origin.SetPoints(points)
     projection = projection_filter(system, False)
     projection.SetInputData(origin)
-    errors = []
-    csv_input.catch_vtk_messages(projection, errors.append, lambda text: None, errors.append)
-    projection.Update()
+    errors = csv_input.errors_of_update(projection)
     if errors or projection.GetOutput().GetNumberOfPoints() != 1:
         # (the empty output's GetPoint(0) crashed the interpreter)
         csv_input.fail(f"{system.describe()}: its origin (lon_0, lat_0) has no place in the projection: "
@@ -431,14 +428,11 @@ def to_lonlat(data, system, where, densify=False):
         densify_edges(data, EDGE_METRES)
     projection = projection_filter(system, True)
     projection.SetInputData(data)
-    errors = []
-    csv_input.catch_vtk_messages(projection, errors.append, lambda text: None, errors.append)
-    projection.Update()
+    errors = csv_input.errors_of_update(projection)
     if errors:
-        point = re.search(r"\bpoint (\d+) \(([^,()]+), ([^,()]+)\)", errors[0]) or re.search(r"\bpoint (\d+)",
-                                                                                           errors[0])
+        point = re.search(r"\bpoint (\d+)(?: \(([^,()]+), ([^,()]+)\))?", errors[0])
         message = errors[0]
-        if point and point.lastindex == 3 and origin:
+        if point and point.group(3) and origin:
             # (the filter names the point by its place in the filter's plane: said in the file's)
             x, y = (((float(point.group(axis + 2)) - origin[axis]) * system.k0 + false) / system.metres
                     for axis, false in ((0, system.x0), (1, system.y0)))

@@ -227,6 +227,7 @@ tessera::ProjectionKind KindOf(int projection)
       return tessera::ProjectionKind::AlbersEqualArea;
   }
 }
+
 /// The Projection values' names, by their index: Automatic, then each projection's own name.
 std::vector<const char*> ProjectionChoices()
 {
