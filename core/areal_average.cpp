@@ -1150,13 +1150,16 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   }
   s.Projector.reset(new GeographicProjection(s.Parameters));
   s.Method = settings.Areas;
-  const bool equalArea = KeepsAreas(s.Parameters.Kind);
+  const bool equalArea = KeepsAreas(s.Parameters);
   if (s.Method == AreaMethod::EqualAreaPlane && !equalArea)
   {
     throw InputError(std::string("areas in the projected plane (EqualAreaPlane) are ellipsoidal "
-                                 "areas only in an equal-area projection, and ") +
+                                 "areas only in an equal-area projection at scale 1, and ") +
       ProjectionKindName(s.Parameters.Kind) +
-      " is not one: use the GeodesicPolygon or Automatic area method");
+      (KeepsAreas(s.Parameters.Kind)
+          ? " with scale factor k0 = " + NumberText(s.Parameters.ScaleFactor) + " is not one"
+          : " is not one") +
+      ": use the GeodesicPolygon or Automatic area method");
   }
   if (s.Method == AreaMethod::Automatic)
   {

@@ -92,9 +92,45 @@ bool KeepsAreas(ProjectionKind kind)
     kind == ProjectionKind::LambertAzimuthalEqualArea;
 }
 
+bool ProjectionParameters::PlaneWithoutGrid() const
+{
+  return this->FalseEasting == 0.0 && this->FalseNorthing == 0.0 && this->ScaleFactor == 1.0 &&
+    !this->HasOriginLatitude;
+}
+
+bool KeepsAreas(const ProjectionParameters& parameters)
+{
+  return KeepsAreas(parameters.Kind) && parameters.ScaleFactor == 1.0;
+}
+
+namespace
+{
+bool SameGrid(const ProjectionParameters& a, const ProjectionParameters& b)
+{
+  return a.FalseEasting == b.FalseEasting && a.FalseNorthing == b.FalseNorthing &&
+    a.ScaleFactor == b.ScaleFactor && a.HasOriginLatitude == b.HasOriginLatitude &&
+    (!a.HasOriginLatitude || a.OriginLatitude == b.OriginLatitude);
+}
+
+/// The record's grid keys, those that differ from the defaults (" x0=4321000 y0=3210000").
+std::string GridText(const ProjectionParameters& p)
+{
+  std::string text;
+  if (p.FalseEasting != 0.0)
+    text += " x0=" + NumberText(p.FalseEasting);
+  if (p.FalseNorthing != 0.0)
+    text += " y0=" + NumberText(p.FalseNorthing);
+  if (p.ScaleFactor != 1.0)
+    text += " k0=" + NumberText(p.ScaleFactor);
+  if (p.HasOriginLatitude)
+    text += " origin_lat=" + NumberText(p.OriginLatitude);
+  return text;
+}
+} // namespace
+
 bool SameProjection(const ProjectionParameters& a, const ProjectionParameters& b)
 {
-  if (a.Kind != b.Kind)
+  if (a.Kind != b.Kind || !SameGrid(a, b))
   {
     return false;
   }
@@ -123,7 +159,7 @@ std::string ProjectionParameters::ToString() const
     " lon0=" + NumberText(this->CentralLongitude) + " lat0=" + NumberText(this->CentralLatitude) +
     " lat1=" + NumberText(this->StandardParallel1) +
     " lat2=" + NumberText(this->StandardParallel2) + " zone=" + std::to_string(this->UTMZone) +
-    " north=" + (this->UTMNorth ? "1" : "0");
+    " north=" + (this->UTMNorth ? "1" : "0") + GridText(*this);
 }
 
 namespace
@@ -249,6 +285,17 @@ ProjectionParameters ProjectionParameters::FromString(const std::string& text)
     }
     else if (key == "north")
       result.UTMNorth = number() != 0.0;
+    else if (key == "x0")
+      result.FalseEasting = number();
+    else if (key == "y0")
+      result.FalseNorthing = number();
+    else if (key == "k0")
+      result.ScaleFactor = number();
+    else if (key == "origin_lat")
+    {
+      result.HasOriginLatitude = true;
+      result.OriginLatitude = number();
+    }
     else
       throw InputError("projection record: unknown key '" + key + "'");
   }
@@ -394,7 +441,51 @@ struct GeographicProjection::Engines
   // mirrored across the equator, mirrored back: (lon, lat) -> (lon, -lat) -> cone -> (x, -y).
   // Two reflections: orientation and areas are kept.
   bool MirrorAcrossEquator = false;
+  bool Grid = false;   // whether the parameters lay a grid on the plane (PlaneWithoutGrid)
+  Point2 GridOrigin{}; // the plane's image of the grid's origin, (x_O, y_O) in geo.h
 };
+
+namespace
+{
+/// Throws InputError naming a grid term out of range, or an origin latitude set for a kind
+/// whose origin is fixed.
+void CheckGridTerms(const ProjectionParameters& p)
+{
+  for (const auto& [key, value] :
+    { std::make_pair("x0", p.FalseEasting), std::make_pair("y0", p.FalseNorthing) })
+  {
+    if (!(std::abs(value) <= MaxProjectedMagnitude))
+    {
+      // (a grid 1e9 m off holds no coordinate a file gives: a typo, or degrees for metres)
+      throw InputError(std::string("projection parameter ") + key + " = " + NumberText(value) +
+        " is not a false easting or northing within 1e8 m");
+    }
+  }
+  if (!(p.ScaleFactor > 0.0) || !std::isfinite(p.ScaleFactor))
+  {
+    throw InputError(
+      "projection parameter k0 = " + NumberText(p.ScaleFactor) + " is not a scale above 0");
+  }
+  if (!p.HasOriginLatitude)
+  {
+    return;
+  }
+  if (!IsValidLatitude(p.OriginLatitude))
+  {
+    throw InputError("projection parameter origin_lat = " + NumberText(p.OriginLatitude) +
+      " is not a latitude in [-90, 90]");
+  }
+  if (p.Kind == ProjectionKind::UTM || p.Kind == ProjectionKind::AzimuthalEquidistant ||
+    p.Kind == ProjectionKind::LambertAzimuthalEqualArea)
+  {
+    throw InputError(std::string("projection parameter origin_lat: ") + ProjectionKindName(p.Kind) +
+      " takes no latitude of origin (" +
+      (p.Kind == ProjectionKind::UTM ? "a UTM zone's grid is fixed"
+                                     : "its origin is its centre, lat0") +
+      ")");
+  }
+}
+} // namespace
 
 GeographicProjection::GeographicProjection(const ProjectionParameters& parameters)
   : Params(parameters)
@@ -471,6 +562,12 @@ GeographicProjection::GeographicProjection(const ProjectionParameters& parameter
         Impl->Cylinder.reset(new Mercator(a, p.Kind == ProjectionKind::Mercator ? f : 0.0));
         break;
     }
+    CheckGridTerms(p);
+    if (p.HasOriginLatitude)
+    {
+      Impl->GridOrigin = this->OriginInPlane();
+    }
+    Impl->Grid = !p.PlaneWithoutGrid();
   }
   catch (const GeographicLib::GeographicErr& e)
   {
@@ -488,6 +585,21 @@ GeographicProjection::GeographicProjection(const ProjectionParameters& parameter
 GeographicProjection::~GeographicProjection()
 {
   delete Impl;
+}
+
+Point2 GeographicProjection::OriginInPlane() const
+{
+  try
+  {
+    return this->Forward({ Impl->CentralMeridian, Params.OriginLatitude });
+  }
+  catch (const InputError& e)
+  {
+    // (the Lambert cone's far pole: its apex is at infinity)
+    throw InputError("projection parameter origin_lat = " + NumberText(Params.OriginLatitude) +
+      " puts the grid's origin where the " + ProjectionKindName(Params.Kind) +
+      " projection has no place: " + e.what());
+  }
 }
 
 Point2 GeographicProjection::Forward(const Point2& lonlat, long long id) const
@@ -558,19 +670,29 @@ Point2 GeographicProjection::Forward(const Point2& lonlat, long long id) const
     throw InputError(DescribePoint("point", id, lonlat) + " cannot be represented by the " +
       ProjectionKindName(Params.Kind) + " projection (" + Params.ToString() + ")");
   }
-  return xy;
+  if (!Impl->Grid)
+  {
+    return xy;
+  }
+  const double k = Params.ScaleFactor;
+  return { k * (xy.x - Impl->GridOrigin.x) + Params.FalseEasting,
+    k * (xy.y - Impl->GridOrigin.y) + Params.FalseNorthing };
 }
 
-Point2 GeographicProjection::Inverse(const Point2& xy, long long id) const
+Point2 GeographicProjection::Inverse(const Point2& grid, long long id) const
 {
-  if (!std::isfinite(xy.x) || !std::isfinite(xy.y))
+  if (!std::isfinite(grid.x) || !std::isfinite(grid.y))
   {
-    throw InputError(DescribePoint("point", id, xy) + " has a NaN or infinite coordinate");
+    throw InputError(DescribePoint("point", id, grid) + " has a NaN or infinite coordinate");
   }
+  const double k = Params.ScaleFactor;
+  const Point2 xy = !Impl->Grid ? grid
+                                : Point2{ (grid.x - Params.FalseEasting) / k + Impl->GridOrigin.x,
+                                    (grid.y - Params.FalseNorthing) / k + Impl->GridOrigin.y };
   if (!(std::abs(xy.x) <= MaxProjectedMagnitude) || !(std::abs(xy.y) <= MaxProjectedMagnitude))
   {
     // (Forward refuses such points, so none is an image; the Mercators took y = 1e300 for a pole)
-    throw InputError(DescribePoint("point", id, xy) + " lies beyond 1e8 m of the " +
+    throw InputError(DescribePoint("point", id, grid) + " lies beyond 1e8 m of the " +
       ProjectionKindName(Params.Kind) + " projection's origin, where no place projects");
   }
   const double lon0 = Impl->CentralMeridian;
@@ -614,7 +736,7 @@ Point2 GeographicProjection::Inverse(const Point2& xy, long long id) const
   }
   if (!std::isfinite(lonlat.x) || !std::isfinite(lonlat.y))
   {
-    throw InputError(DescribePoint("point", id, xy) + " has no inverse under the " +
+    throw InputError(DescribePoint("point", id, grid) + " has no inverse under the " +
       ProjectionKindName(Params.Kind) + " projection");
   }
   lonlat.x = lon0 + LongitudeDifference(lon0, lonlat.x);

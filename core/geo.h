@@ -45,12 +45,37 @@ struct ProjectionParameters
   int UTMZone = 0;                ///< 1..60 for UTM
   bool UTMNorth = true;           ///< UTM hemisphere (false northing 0 in the north, 1e7 m south)
 
+  /// The grid a projected coordinate system lays on the plane above (PROJ's +x_0, +y_0, +k_0,
+  /// +lat_0; EPSG's false easting and northing, scale factor at the natural origin and latitude of
+  /// natural origin): grid x = ScaleFactor * (x - x_O) + FalseEasting, and alike for y, where
+  /// (x_O, y_O) is the plane's image of (CentralLongitude, OriginLatitude) when HasOriginLatitude,
+  /// else (0, 0): each plane's own origin, which for the conics is a latitude GeographicLib
+  /// chooses between the standard parallels (EPSG:5070, the USGS Albers, puts it at 23 N, so its
+  /// northings need OriginLatitude 23). The defaults leave the plane as it is. An origin latitude
+  /// is read by the conics, the transverse Mercator and the Mercators only: UTM has its own grid,
+  /// and the azimuthal projections' origin is their centre (CentralLatitude). The grid applies on
+  /// top of UTM's false easting and northing and scale. Records write these keys only when they
+  /// differ from the defaults, so a record without them is a plane without a grid.
+  double FalseEasting = 0.0;  ///< metres (record key x0)
+  double FalseNorthing = 0.0; ///< metres (record key y0)
+  double ScaleFactor = 1.0;   ///< > 0 (record key k0)
+  bool HasOriginLatitude = false;
+  double OriginLatitude = 0.0; ///< degrees, with HasOriginLatitude (record key origin_lat)
+  /// Whether the grid terms leave the plane as it is (all at their defaults).
+  bool PlaneWithoutGrid() const;
+
   /// A one-line "key=value" record, exact to the last bit (%.17g), e.g.
-  /// "projection=AlbersEqualArea lon0=-105.5 lat0=39 lat1=37.33 lat2=40.67 zone=0 north=1".
+  /// "projection=AlbersEqualArea lon0=-105.5 lat0=39 lat1=37.33 lat2=40.67 zone=0 north=1",
+  /// followed by the grid's keys that differ from the defaults (" x0=... y0=... k0=...
+  /// origin_lat=...").
   std::string ToString() const;
   /// Parses ToString's format; throws InputError naming the bad key or value.
   static ProjectionParameters FromString(const std::string& text);
 };
+
+/// Whether areas in the projection's grid are areas on the ellipsoid: an equal-area kind
+/// (KeepsAreas) whose grid keeps scale 1.
+bool KeepsAreas(const ProjectionParameters& parameters);
 
 /// Whether two projections map every point alike: the same kind, and the same values of the
 /// fields that kind uses (records of one projection may differ in the others, e.g. lat0 of a
@@ -113,16 +138,21 @@ public:
 
   const ProjectionParameters& Parameters() const { return this->Params; }
 
-  /// lon/lat (degrees) to x/y (metres). Throws InputError naming `id` and the value when the
-  /// point is invalid or the projection cannot represent it (e.g. a transverse Mercator point
-  /// more than 45 degrees of longitude from the central meridian, a UTM point more than 500 km from
-  /// its zone's meridian, or any point whose projected coordinate exceeds 1e8 m: a singularity
-  /// such as the Lambert cone's far pole).
+  /// lon/lat (degrees) to x/y (metres), in the parameters' grid. Throws InputError naming `id` and
+  /// the value when the point is invalid or the projection cannot represent it (e.g. a transverse
+  /// Mercator point more than 45 degrees of longitude from the central meridian, a UTM point more
+  /// than 500 km from its zone's meridian, or any point whose projected coordinate exceeds 1e8 m: a
+  /// singularity such as the Lambert cone's far pole).
   Point2 Forward(const Point2& lonlat, long long id = -1) const;
-  /// x/y (metres) to lon/lat; longitude within 180 degrees of the central meridian.
+  /// x/y (metres) to lon/lat; longitude within 180 degrees of the central meridian. Throws
+  /// InputError naming `id` and the value for a point no place projects to.
   Point2 Inverse(const Point2& xy, long long id = -1) const;
 
 private:
+  /// The plane's image of the grid's origin, (CentralLongitude, OriginLatitude); throws
+  /// InputError naming origin_lat where the projection has no place for it.
+  Point2 OriginInPlane() const;
+
   struct Engines;
   ProjectionParameters Params;
   Engines* Impl = nullptr;

@@ -737,3 +737,179 @@ TEST(Geo, MercatorIsConformalAndRefusesThePoles)
     EXPECT_NEAR(std::abs(projection.Inverse(edge).x - 20.0), 180.0, 1e-9);
   }
 }
+
+// Grids on the planes (false easting and northing, scale, latitude of origin) against PROJ 9.1.1
+// (cs2cs -f %.6f +proj=longlat +ellps=WGS84 +to ... +ellps=WGS84): the USGS Albers of the
+// conterminous US (EPSG:5070's terms: its northings start at 23 N, not at GeographicLib's origin
+// between the standard parallels), LAEA Europe (EPSG:3035's false origin; EPSG Guidance Note 7-2's
+// example, 50 N 5 E, is E 3962799.45 N 2999718.85), a Lambert conic of Europe (EPSG:3034's
+// terms), a transverse Mercator with the British grid's origin, scale and false origin, and a
+// Mercator with a scale (EPSG:3002's terms). The inverse gives each point back.
+TEST(Geo, GridsOnThePlanesMatchProj)
+{
+  struct Case
+  {
+    const char* Record;
+    double Lon, Lat, X, Y;
+  };
+  const char* albers =
+    "projection=AlbersEqualArea lon0=-96 lat1=29.5 lat2=45.5 origin_lat=23"; // EPSG:5070
+  const char* laea = "projection=LambertAzimuthalEqualArea lon0=10 lat0=52 x0=4321000 y0=3210000";
+  const char* lcc =
+    "projection=LambertConformalConic lon0=10 lat1=35 lat2=65 x0=4000000 y0=2800000 origin_lat=52";
+  const char* tmerc =
+    "projection=TransverseMercator lon0=-2 x0=400000 y0=-100000 k0=0.9996012717 origin_lat=49";
+  const char* merc = "projection=Mercator lon0=110 x0=3900000 y0=900000 k0=0.997";
+  const Case cases[] = {
+    { albers, -105.5, 39.0, -813760.923180, 1815617.850413 },
+    { albers, -96, 23, 0, 0 },
+    { albers, -80.25, 25.75, 1588474.302999, 432229.562263 },
+    { albers, -122.5, 47.6, -1980402.161020, 3011940.646637 },
+    { laea, 5, 50, 3962799.450958, 2999718.853159 },
+    { lcc, 5, 50, 3654072.121868, 2596848.659964 },
+    { lcc, -20, 70, 2847036.070927, 5019300.355375 },
+    { lcc, 30, 36, 5773951.303690, 1308064.247455 },
+    { tmerc, -2, 49, 400000, -100000 },
+    { tmerc, -3.2, 55.9, 324967.427522, 668145.822544 },
+    { tmerc, 1.5, 51.1, 645033.470671, 139317.598411 },
+    { merc, 120, -3, 5009855.323209, 569119.095390 },
+  };
+  for (const Case& c : cases)
+  {
+    const GeographicProjection projection(ProjectionParameters::FromString(c.Record));
+    const Point2 xy = projection.Forward({ c.Lon, c.Lat });
+    EXPECT_NEAR(xy.x, c.X, 2e-6) << c.Record << ": " << c.Lon << " " << c.Lat;
+    EXPECT_NEAR(xy.y, c.Y, 2e-6) << c.Record << ": " << c.Lon << " " << c.Lat;
+    const Point2 back = projection.Inverse({ c.X, c.Y });
+    EXPECT_LT(AngularDistance(back.x, c.Lon), 1e-9) << c.Record << ": " << c.Lon;
+    EXPECT_NEAR(back.y, c.Lat, 1e-9) << c.Record << ": " << c.Lat;
+  }
+}
+
+// The grid is the plane moved and scaled: for every kind, a grid's coordinates are
+// k0 * (plane - plane's image of the origin) + false origin, checked against the plane without a
+// grid; the defaults leave the plane's coordinates bit for bit (a record without grid keys is
+// the plane it always was); records carry the grid exactly, and SameProjection tells grids apart.
+TEST(Geo, GridIsThePlaneMovedAndScaled)
+{
+  const std::vector<std::string> planes = {
+    "projection=AlbersEqualArea lon0=-105.5 lat0=39 lat1=37.33 lat2=40.67",
+    "projection=AlbersEqualArea lon0=147 lat1=-40 lat2=-20", // GeographicLib's cone, mirrored
+    "projection=LambertConformalConic lon0=-105 lat1=33 lat2=45",
+    "projection=TransverseMercator lon0=-105",
+    "projection=UTM zone=13 north=1",
+    "projection=AzimuthalEquidistant lon0=-105 lat0=40",
+    "projection=LambertAzimuthalEqualArea lon0=-105 lat0=40",
+    "projection=Mercator lon0=-100",
+    "projection=WebMercator lon0=0",
+  };
+  const std::vector<Point2> places = { { -105.5, 39.0 }, { -103.1, 41.9 }, { -108.0, 36.6 } };
+  for (const std::string& record : planes)
+  {
+    const ProjectionParameters plain = ProjectionParameters::FromString(record);
+    EXPECT_TRUE(plain.PlaneWithoutGrid()) << record;
+    EXPECT_EQ(plain.ToString().find("x0="), std::string::npos) << record;
+    const GeographicProjection plane(plain);
+    ProjectionParameters gridded = plain;
+    gridded.FalseEasting = 4321000.25;
+    gridded.FalseNorthing = -1e5 / 3.0;
+    gridded.ScaleFactor = 0.9996;
+    const bool takesOrigin = plain.Kind != ProjectionKind::UTM &&
+      plain.Kind != ProjectionKind::AzimuthalEquidistant &&
+      plain.Kind != ProjectionKind::LambertAzimuthalEqualArea;
+    gridded.HasOriginLatitude = takesOrigin;
+    gridded.OriginLatitude = takesOrigin ? 37.5 : 0.0;
+    const ProjectionParameters read = ProjectionParameters::FromString(gridded.ToString());
+    EXPECT_EQ(read.FalseEasting, gridded.FalseEasting) << record;
+    EXPECT_EQ(read.FalseNorthing, gridded.FalseNorthing) << record;
+    EXPECT_EQ(read.ScaleFactor, gridded.ScaleFactor) << record;
+    EXPECT_EQ(read.HasOriginLatitude, gridded.HasOriginLatitude) << record;
+    EXPECT_EQ(read.OriginLatitude, gridded.OriginLatitude) << record;
+    EXPECT_TRUE(SameProjection(read, gridded)) << record;
+    EXPECT_FALSE(SameProjection(plain, gridded)) << record;
+    ProjectionParameters otherOrigin = gridded;
+    otherOrigin.OriginLatitude += 1.0;
+    EXPECT_EQ(SameProjection(otherOrigin, gridded), !takesOrigin) << record;
+
+    const GeographicProjection grid(read);
+    const Point2 origin = takesOrigin
+      ? plane.Forward({ plain.Kind == ProjectionKind::UTM ? -105.0 : plain.CentralLongitude, 37.5 })
+      : Point2{ 0.0, 0.0 };
+    for (const Point2& place : places)
+    {
+      const Point2 xy = plane.Forward(place);
+      const Point2 onGrid = grid.Forward(place);
+      EXPECT_NEAR(onGrid.x, 0.9996 * (xy.x - origin.x) + 4321000.25, 1e-8) << record;
+      EXPECT_NEAR(onGrid.y, 0.9996 * (xy.y - origin.y) - 1e5 / 3.0, 1e-8) << record;
+      const Point2 back = grid.Inverse(onGrid);
+      EXPECT_LT(AngularDistance(back.x, place.x), 1e-11) << record;
+      EXPECT_NEAR(back.y, place.y, 1e-11) << record;
+      // (the default terms: the very same bits, -0 included)
+      const Point2 again =
+        GeographicProjection(ProjectionParameters::FromString(record + " x0=0 y0=0 k0=1"))
+          .Forward(place);
+      EXPECT_EQ(std::signbit(again.x), std::signbit(xy.x)) << record;
+      EXPECT_EQ(again.x, xy.x) << record;
+      EXPECT_EQ(again.y, xy.y) << record;
+    }
+  }
+  // Equal-area grids keep areas only at scale 1.
+  ProjectionParameters scaled = ProjectionParameters::FromString(planes[0]);
+  EXPECT_TRUE(KeepsAreas(scaled));
+  scaled.FalseEasting = 1e6;
+  scaled.HasOriginLatitude = true;
+  EXPECT_TRUE(KeepsAreas(scaled));
+  scaled.ScaleFactor = 0.9996;
+  EXPECT_FALSE(KeepsAreas(scaled));
+}
+
+// Grid terms out of range, and an origin latitude where the kind's origin is fixed or where the
+// projection has no place, are errors naming the term.
+TEST(Geo, BadGridTermsAreNamed)
+{
+  const auto messageOf = [](const std::string& record)
+  {
+    try
+    {
+      GeographicProjection projection(ProjectionParameters::FromString(record));
+    }
+    catch (const InputError& e)
+    {
+      return std::string(e.what());
+    }
+    return std::string("built");
+  };
+  const std::string albers = "projection=AlbersEqualArea lon0=-96 lat1=29.5 lat2=45.5";
+  EXPECT_NE(messageOf(albers + " k0=0").find("k0 = 0 is not a scale above 0"), std::string::npos);
+  EXPECT_NE(messageOf(albers + " k0=-1").find("k0 = -1"), std::string::npos);
+  EXPECT_NE(
+    messageOf(albers + " k0=nan").find("k0='nan' is not a finite number"), std::string::npos);
+  EXPECT_NE(messageOf(albers + " x0=1e9").find("x0 = 1000000000 is not a false easting"),
+    std::string::npos);
+  EXPECT_NE(messageOf(albers + " y0=-2e8").find("y0 = -200000000"), std::string::npos);
+  EXPECT_NE(messageOf(albers + " origin_lat=91").find("origin_lat = 91 is not a latitude"),
+    std::string::npos);
+  EXPECT_NE(
+    messageOf("projection=UTM zone=13 origin_lat=0").find("UTM takes no latitude of origin"),
+    std::string::npos);
+  EXPECT_NE(messageOf("projection=LambertAzimuthalEqualArea lon0=10 lat0=52 origin_lat=52")
+              .find("its origin is its centre, lat0"),
+    std::string::npos);
+  EXPECT_NE(messageOf("projection=AzimuthalEquidistant lon0=10 lat0=52 origin_lat=0")
+              .find("AzimuthalEquidistant takes no latitude of origin"),
+    std::string::npos);
+  // The Lambert cone's far pole is at infinity: no grid can start there.
+  EXPECT_NE(messageOf("projection=LambertConformalConic lon0=10 lat1=35 lat2=65 origin_lat=-90")
+              .find("origin_lat = -90 puts the grid's origin where the LambertConformalConic "
+                    "projection has no place"),
+    std::string::npos);
+  EXPECT_EQ(messageOf(albers + " x0=-1e8 y0=1e8 k0=1e-3 origin_lat=-90"), "built");
+  // A grid point whose plane point lies beyond 1e8 m is named by its grid coordinates.
+  const GeographicProjection small(ProjectionParameters::FromString(albers + " k0=1e-3"));
+  EXPECT_NE(ErrorOf(
+              [&small]() {
+                small.Inverse({ 2e5, 0.0 }, 4);
+              })
+              .find("point 4 (200000, 0)"),
+    std::string::npos);
+}
