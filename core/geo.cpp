@@ -451,20 +451,20 @@ namespace
 /// whose origin is fixed.
 void CheckGridTerms(const ProjectionParameters& p)
 {
-  for (const auto& [key, value] :
-    { std::make_pair("x0", p.FalseEasting), std::make_pair("y0", p.FalseNorthing) })
+  for (const auto& [key, value] : { std::make_pair("false easting x0", p.FalseEasting),
+         std::make_pair("false northing y0", p.FalseNorthing) })
   {
     if (!(std::abs(value) <= MaxProjectedMagnitude))
     {
       // (a grid 1e9 m off holds no coordinate a file gives: a typo, or degrees for metres)
-      throw InputError(std::string("projection parameter ") + key + " = " + NumberText(value) +
-        " is not a false easting or northing within 1e8 m");
+      throw InputError(std::string("the projection's ") + key + " = " + NumberText(value) +
+        " is not within 1e8 m");
     }
   }
   if (!(p.ScaleFactor > 0.0) || !std::isfinite(p.ScaleFactor))
   {
     throw InputError(
-      "projection parameter k0 = " + NumberText(p.ScaleFactor) + " is not a scale above 0");
+      "the projection's scale factor k0 = " + NumberText(p.ScaleFactor) + " is not above 0");
   }
   if (!p.HasOriginLatitude)
   {
@@ -472,14 +472,14 @@ void CheckGridTerms(const ProjectionParameters& p)
   }
   if (!IsValidLatitude(p.OriginLatitude))
   {
-    throw InputError("projection parameter origin_lat = " + NumberText(p.OriginLatitude) +
-      " is not a latitude in [-90, 90]");
+    throw InputError("the projection's latitude of origin origin_lat = " +
+      NumberText(p.OriginLatitude) + " is not a latitude in [-90, 90]");
   }
   if (p.Kind == ProjectionKind::UTM || p.Kind == ProjectionKind::AzimuthalEquidistant ||
     p.Kind == ProjectionKind::LambertAzimuthalEqualArea)
   {
-    throw InputError(std::string("projection parameter origin_lat: ") + ProjectionKindName(p.Kind) +
-      " takes no latitude of origin (" +
+    throw InputError(std::string("the projection's latitude of origin origin_lat: ") +
+      ProjectionKindName(p.Kind) + " takes none (" +
       (p.Kind == ProjectionKind::UTM ? "a UTM zone's grid is fixed"
                                      : "its origin is its centre, lat0") +
       ")");
@@ -596,9 +596,9 @@ Point2 GeographicProjection::OriginInPlane() const
   catch (const InputError& e)
   {
     // (the Lambert cone's far pole: its apex is at infinity)
-    throw InputError("projection parameter origin_lat = " + NumberText(Params.OriginLatitude) +
-      " puts the grid's origin where the " + ProjectionKindName(Params.Kind) +
-      " projection has no place: " + e.what());
+    throw InputError("the projection's latitude of origin origin_lat = " +
+      NumberText(Params.OriginLatitude) + " puts the grid's origin where the " +
+      ProjectionKindName(Params.Kind) + " projection has no place: " + e.what());
   }
 }
 

@@ -444,6 +444,52 @@ TEST(ArealAverage, EqualAreaPlaneAgreesWithGeodesicPolygons)
   }
 }
 
+// A grid on the projection's plane (EPSG:5070's origin at 23 N, a false origin, a scale) moves
+// and scales the tiles alike: the same weights and areas as without it. At a scale other than 1
+// the plane's areas are not the ellipsoid's, so EqualAreaPlane is refused naming k0 and the
+// automatic method measures geodesically.
+TEST(ArealAverage, AGridOnThePlaneGivesTheSameWeights)
+{
+  std::mt19937_64 random(8);
+  const std::vector<Point2> gauges = UniformGauges(30, random, -109.0, -102.0, 37.0, 41.0);
+  const Square catchment(-108.0, 37.5, -103.0, 40.5);
+  const std::string albers = "projection=AlbersEqualArea lon0=-96 lat1=29.5 lat2=45.5";
+  const auto settingsFor = [](const std::string& record)
+  {
+    ArealAverageSettings settings;
+    settings.HaveProjection = true;
+    settings.Projection = ProjectionParameters::FromString(record);
+    return settings;
+  };
+  ThiessenArealAverage plain(gauges, catchment.Offsets, catchment.Ring, settingsFor(albers));
+  for (const std::string grid : { " origin_lat=23",
+         " x0=4321000 y0=-3210000 origin_lat=23",
+         " k0=0.9996 x0=500000 origin_lat=40" })
+  {
+    ThiessenArealAverage gridded(
+      gauges, catchment.Offsets, catchment.Ring, settingsFor(albers + grid));
+    EXPECT_EQ(gridded.Method(),
+      grid.find("k0") == std::string::npos ? AreaMethod::EqualAreaPlane
+                                           : AreaMethod::GeodesicPolygon)
+      << grid;
+    const std::vector<double> values(gauges.size(), 1.0);
+    const ArealStep x = plain.Step(values), y = gridded.Step(values);
+    ASSERT_EQ(x.Gauges, y.Gauges) << grid;
+    for (std::size_t k = 0; k < x.Weights.size(); ++k)
+    {
+      EXPECT_NEAR(x.Weights[k], y.Weights[k], 1e-9) << grid;
+      EXPECT_NEAR(x.AreasM2[k], y.AreasM2[k], 1e-6 * plain.CatchmentAreaM2() / gauges.size())
+        << grid;
+    }
+  }
+  ArealAverageSettings scaled = settingsFor(albers + " k0=0.9996");
+  scaled.Areas = AreaMethod::EqualAreaPlane;
+  EXPECT_NE(
+    ErrorOf([&]() { ThiessenArealAverage(gauges, catchment.Offsets, catchment.Ring, scaled); })
+      .find("AlbersEqualArea with scale factor k0 = 0.9996 is not one"),
+    std::string::npos);
+}
+
 TEST(ArealAverage, NoReportingGaugeGivesNaNAndZeroStations)
 {
   const Square catchment(0.0, 0.0, 1.0, 1.0);

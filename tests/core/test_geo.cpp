@@ -880,23 +880,26 @@ TEST(Geo, BadGridTermsAreNamed)
     return std::string("built");
   };
   const std::string albers = "projection=AlbersEqualArea lon0=-96 lat1=29.5 lat2=45.5";
-  EXPECT_NE(messageOf(albers + " k0=0").find("k0 = 0 is not a scale above 0"), std::string::npos);
+  EXPECT_NE(
+    messageOf(albers + " k0=0").find("scale factor k0 = 0 is not above 0"), std::string::npos);
   EXPECT_NE(messageOf(albers + " k0=-1").find("k0 = -1"), std::string::npos);
   EXPECT_NE(
     messageOf(albers + " k0=nan").find("k0='nan' is not a finite number"), std::string::npos);
-  EXPECT_NE(messageOf(albers + " x0=1e9").find("x0 = 1000000000 is not a false easting"),
-    std::string::npos);
-  EXPECT_NE(messageOf(albers + " y0=-2e8").find("y0 = -200000000"), std::string::npos);
-  EXPECT_NE(messageOf(albers + " origin_lat=91").find("origin_lat = 91 is not a latitude"),
+  EXPECT_NE(messageOf(albers + " x0=1e9").find("false easting x0 = 1000000000 is not within 1e8 m"),
     std::string::npos);
   EXPECT_NE(
-    messageOf("projection=UTM zone=13 origin_lat=0").find("UTM takes no latitude of origin"),
+    messageOf(albers + " y0=-2e8").find("false northing y0 = -200000000"), std::string::npos);
+  EXPECT_NE(messageOf(albers + " origin_lat=91")
+              .find("latitude of origin origin_lat = 91 is not a latitude"),
+    std::string::npos);
+  EXPECT_NE(messageOf("projection=UTM zone=13 origin_lat=0")
+              .find("origin_lat: UTM takes none (a UTM zone's grid is fixed)"),
     std::string::npos);
   EXPECT_NE(messageOf("projection=LambertAzimuthalEqualArea lon0=10 lat0=52 origin_lat=52")
               .find("its origin is its centre, lat0"),
     std::string::npos);
   EXPECT_NE(messageOf("projection=AzimuthalEquidistant lon0=10 lat0=52 origin_lat=0")
-              .find("AzimuthalEquidistant takes no latitude of origin"),
+              .find("AzimuthalEquidistant takes none"),
     std::string::npos);
   // The Lambert cone's far pole is at infinity: no grid can start there.
   EXPECT_NE(messageOf("projection=LambertConformalConic lon0=10 lat1=35 lat2=65 origin_lat=-90")
