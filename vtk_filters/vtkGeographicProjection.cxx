@@ -254,18 +254,28 @@ bool TakeUTMZoneSet(vtkGeographicProjection* self, tessera::ProjectionParameters
   return true;
 }
 
+/// Lays the grid set on the filter (FalseEasting, ..., LatitudeOfOrigin) on p's plane.
+void TakeGridTerms(vtkGeographicProjection* self, tessera::ProjectionParameters& p)
+{
+  p.FalseEasting = self->GetFalseEasting();
+  p.FalseNorthing = self->GetFalseNorthing();
+  p.ScaleFactor = self->GetScaleFactor();
+  p.HasOriginLatitude = self->GetUseLatitudeOfOrigin();
+  p.OriginLatitude = p.HasOriginLatitude ? self->GetLatitudeOfOrigin() : 0.0;
+}
+
 /// The forward projection's parameters from the filter's settings and the data.
 tessera::ProjectionParameters ChooseForwardParameters(vtkGeographicProjection* self,
   const std::vector<tessera::Point2>& lonlat)
 {
   // Automatic is the Albers equal-area conic fitted to the data; with ParametersFromData off it
   // takes the parameters set, as AlbersEqualArea does (they were ignored).
+  tessera::ProjectionParameters p;
   if (self->GetProjection() == vtkGeographicProjection::AUTOMATIC && self->GetParametersFromData())
   {
-    return tessera::AutomaticParameters(lonlat);
+    p = tessera::AutomaticParameters(lonlat);
   }
-  tessera::ProjectionParameters p;
-  if (self->GetParametersFromData())
+  else if (self->GetParametersFromData())
   {
     p =
       tessera::ParametersFromExtent(KindOf(self->GetProjection()), tessera::ComputeExtent(lonlat));
@@ -294,6 +304,7 @@ tessera::ProjectionParameters ChooseForwardParameters(vtkGeographicProjection* s
     p.UTMNorth = self->GetCentralLatitude() >= 0.0;
   }
   TakeUTMZoneSet(self, p);
+  TakeGridTerms(self, p);
   return p;
 }
 
@@ -457,6 +468,7 @@ tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
     utm.Kind = KindOf(vtkGeographicProjection::UTM);
     if (TakeUTMZoneSet(self, utm))
     {
+      TakeGridTerms(self, utm);
       return utm;
     }
     if (self->GetParametersFromData())
@@ -724,6 +736,11 @@ void vtkGeographicProjection::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CentralLatitude: " << this->CentralLatitude << "\n";
   os << indent << "StandardParallels: " << this->StandardParallels[0] << ", "
      << this->StandardParallels[1] << "\n";
+  os << indent << "FalseEasting: " << this->FalseEasting << "\n";
+  os << indent << "FalseNorthing: " << this->FalseNorthing << "\n";
+  os << indent << "ScaleFactor: " << this->ScaleFactor << "\n";
+  os << indent << "LatitudeOfOrigin: " << this->LatitudeOfOrigin << "\n";
+  os << indent << "UseLatitudeOfOrigin: " << this->UseLatitudeOfOrigin << "\n";
   os << indent << "MaximumEdgeLength: " << this->MaximumEdgeLength << "\n";
   os << indent << "Inverse: " << this->Inverse << "\n";
   os << indent << "ProjectionRecord: " << this->ProjectionRecord << "\n";

@@ -20,7 +20,7 @@
  *   the hemisphere then CentralLatitude's; false easting 500 km, false northing 10000 km south).
  * - AzimuthalEquidistant about (CentralLongitude, CentralLatitude).
  * - LambertAzimuthalEqualArea about (CentralLongitude, CentralLatitude), on the ellipsoid (EPSG
- *   method 9820, as EPSG:3035, LAEA Europe, without its false easting and northing).
+ *   method 9820, as EPSG:3035, LAEA Europe, whose false easting and northing are set below).
  *   Equal-area, as Albers is.
  * - Mercator about CentralLongitude, on the ellipsoid, scale 1 on the equator (EPSG:3395, World
  *   Mercator, about 0), and WebMercator: WGS84 latitudes by the sphere's formulas (EPSG:3857,
@@ -29,7 +29,8 @@
  * With ParametersFromData on (default) the centre and standard parallels come from the data as
  * for Automatic; off, the values set with SetCentralLongitude, SetCentralLatitude and
  * SetStandardParallels are used, by Automatic too (it is then the Albers equal-area conic with
- * them).
+ * them). A projected coordinate system's grid (false easting and northing, scale factor, latitude
+ * of origin) is laid on any of these planes with SetFalseEasting and the others below.
  *
  * Longitudes are angles: the data's extent is the shortest longitude arc that holds it, so a set
  * crossing the antimeridian (e.g. 165..181.6) is handled, and the inverse returns longitudes
@@ -51,11 +52,12 @@
  *
  * Field data written (array names are API):
  * - `TesseraProjection` (vtkStringArray, one value): the projection and its parameters as
- *   "projection=AlbersEqualArea lon0=... lat0=... lat1=... lat2=... zone=... north=...",
- *   exact to the last bit. With Inverse on, the filter reads it from its input (so nobody retypes
- *   parameters) and removes it from the output. vtkWindowClip compares its two inputs'
- *   records: tiles and window projected differently (e.g. each with its own automatic
- *   projection) are an error. On a composite the record is written on the whole and each block.
+ *   "projection=AlbersEqualArea lon0=... lat0=... lat1=... lat2=... zone=... north=..." and the
+ *   grid's terms that are set (" x0=... y0=... k0=... origin_lat=..."), exact to the last bit. With
+ * Inverse on, the filter reads it from its input (so nobody retypes parameters) and removes it from
+ * the output. vtkWindowClip compares its two inputs' records: tiles and window projected
+ * differently (e.g. each with its own automatic projection) are an error. On a composite the record
+ * is written on the whole and each block.
  *
  * Bad input (NaN/Inf, |latitude| > 90, a point the projection cannot represent such as a UTM
  * point beyond 500 km from the zone's meridian, a transverse Mercator point beyond 45 degrees
@@ -167,6 +169,39 @@ public:
 
   ///@{
   /**
+   * The grid a projected coordinate system lays on the plane, as PROJ's +x_0, +y_0, +k_0 and
+   * +lat_0 (EPSG's false easting and northing, scale factor and latitude of natural origin), so
+   * that coordinates come out, and go back in, in that system's own numbers: x = ScaleFactor *
+   * (plane x - x_O) + FalseEasting, and alike for y, where (x_O, y_O) is the plane's image of
+   * (central longitude, LatitudeOfOrigin) with UseLatitudeOfOrigin on, else (0, 0), the plane's
+   * own origin (the conics': a latitude between the standard parallels). For EPSG:5070 (USGS
+   * Albers): AlbersEqualArea, CentralLongitude -96, StandardParallels 29.5, 45.5,
+   * UseLatitudeOfOrigin on with LatitudeOfOrigin 23; for EPSG:3035 (LAEA Europe):
+   * LambertAzimuthalEqualArea about 10 E 52 N with FalseEasting 4321000, FalseNorthing 3210000.
+   * FalseEasting and FalseNorthing in metres (default 0, within 1e8), ScaleFactor above 0
+   * (default 1), LatitudeOfOrigin in degrees (default 0, read only with UseLatitudeOfOrigin on,
+   * default off). A latitude of origin is taken by the conics, the transverse Mercator and the
+   * Mercators (at the update, another projection with UseLatitudeOfOrigin on is an error: UTM's
+   * grid is fixed, the azimuthal projections' origin is their centre); the grid applies on top of
+   * UTM's own. They are used with ParametersFromData on or off, and written into the record (keys
+   * x0, y0, k0, origin_lat); with Inverse on and a record on the input, the record's are used.
+   * Files in feet are scaled to metres first (ParaView's Transform), as PROJ's +x_0 is in metres.
+   */
+  vtkSetMacro(FalseEasting, double);
+  vtkGetMacro(FalseEasting, double);
+  vtkSetMacro(FalseNorthing, double);
+  vtkGetMacro(FalseNorthing, double);
+  vtkSetMacro(ScaleFactor, double);
+  vtkGetMacro(ScaleFactor, double);
+  vtkSetMacro(LatitudeOfOrigin, double);
+  vtkGetMacro(LatitudeOfOrigin, double);
+  vtkSetMacro(UseLatitudeOfOrigin, bool);
+  vtkGetMacro(UseLatitudeOfOrigin, bool);
+  vtkBooleanMacro(UseLatitudeOfOrigin, bool);
+  ///@}
+
+  ///@{
+  /**
    * Longest edge, in degrees of the lon/lat plane, left uncut before projecting (default 0.1).
    * 0: no densification (a negative or NaN length is an error). An edge is cut into at most
    * 10^6 pieces (a warning counts those), and a step that would add more than 10^7 points in all
@@ -181,11 +216,9 @@ public:
    * Off (default): lon/lat to x/y. On: x/y back to lon/lat, with the parameters read from the
    * input's `TesseraProjection` field data when present, else from this filter's settings: a
    * UTM zone (UTMZone 1 to 60 with UTMNorth: the whole of a UTM projection), or the parameters
-   * set with ParametersFromData off. The planes have no false easting or northing and scale 1
-   * (but UTM's): a file's x, y in a system with them (EPSG:3035's 4321000, 3210000; a state
-   * plane's feet) are taken back to them first, x' = (x * metres per unit - x_0) / k_0 and alike
-   * for y (ParaView's Transform: Scale by metres per unit / k_0, Translate by -x_0 / k_0,
-   * -y_0 / k_0), as examples/projected_input.py does.
+   * set with ParametersFromData off, with the grid set above (FalseEasting, FalseNorthing,
+   * ScaleFactor, LatitudeOfOrigin): a file's x, y in EPSG:3035 or EPSG:5070 go back as they
+   * are, with those set. A file in feet is scaled to metres first (ParaView's Transform).
    */
   vtkSetMacro(Inverse, bool);
   vtkGetMacro(Inverse, bool);
@@ -225,6 +258,11 @@ protected:
   double CentralLongitude = 0.0;
   double CentralLatitude = 0.0;
   double StandardParallels[2] = { 30.0, 60.0 };
+  double FalseEasting = 0.0;
+  double FalseNorthing = 0.0;
+  double ScaleFactor = 1.0;
+  double LatitudeOfOrigin = 0.0;
+  bool UseLatitudeOfOrigin = false;
   double MaximumEdgeLength = 0.1;
   bool Inverse = false;
   std::string ProjectionRecord;

@@ -102,6 +102,55 @@ def test_lambert_azimuthal_equal_area_is_laea_europe_and_goes_back_by_its_record
             assert_close(inverse.GetOutput().GetPoint(i)[axis], data.GetPoint(i)[axis], 1e-9, f"point {i} back")
 
 
+def test_a_grid_gives_a_projected_systems_own_numbers_and_takes_them_back():
+    # PROJ 9.1.1 (cs2cs +proj=longlat +ellps=WGS84 +to ...): the USGS Albers (EPSG:5070: northings from 23 N,
+    # which GeographicLib's cone does not start at) and LAEA Europe with its false origin (EPSG:3035; EPSG
+    # Guidance Note 7-2's example: 50 N 5 E is E 3962799.45, N 2999718.85). Each goes back by its record,
+    # and by the settings alone (ParametersFromData off) from the file's numbers.
+    systems = [("Albers", (-105.5, 39.0), (-813760.923180, 1815617.850413), "origin_lat=23",
+                lambda f: (f.SetProjectionToAlbersEqualArea(), f.SetCentralLongitude(-96.0),
+                           f.SetStandardParallels(29.5, 45.5), f.UseLatitudeOfOriginOn(), f.SetLatitudeOfOrigin(23.0))),
+               ("LAEA", (5.0, 50.0), (3962799.450958, 2999718.853159), "x0=4321000 y0=3210000",
+                lambda f: (f.SetProjectionToLambertAzimuthalEqualArea(), f.SetCentralLongitude(10.0),
+                           f.SetCentralLatitude(52.0), f.SetFalseEasting(4321000.0), f.SetFalseNorthing(3210000.0)))]
+    for name, lonlat, expected, keys, settle in systems:
+        f = vtkGeographicProjection()
+        f.SetInputData(make_points([lonlat]))
+        f.ParametersFromDataOff()
+        settle(f)
+        f.Update()
+        x, y, _ = f.GetOutput().GetPoint(0)
+        assert_close(x, expected[0], 1e-5, f"{name}: easting")
+        assert_close(y, expected[1], 1e-5, f"{name}: northing")
+        assert_that(projection_record(f.GetOutput()).endswith(keys), f"{name}: {projection_record(f.GetOutput())}")
+        by_record = vtkGeographicProjection()
+        by_record.SetInputConnection(f.GetOutputPort())
+        by_record.InverseOn()
+        by_settings = vtkGeographicProjection()
+        by_settings.SetInputData(make_points([expected]))  # (the file's numbers, no record)
+        by_settings.ParametersFromDataOff()
+        settle(by_settings)
+        by_settings.InverseOn()
+        for inverse in (by_record, by_settings):
+            inverse.Update()
+            lon, lat, _ = inverse.GetOutput().GetPoint(0)
+            assert_that(abs(lon - lonlat[0]) < 1e-9 and abs(lat - lonlat[1]) < 1e-9,
+                        f"{name}: back at {lon!r}, {lat!r}")
+    # A latitude of origin where the projection's origin is fixed, and a scale of 0, are errors naming the term.
+    for settle, words in (
+            (lambda f: (f.SetProjectionToLambertAzimuthalEqualArea(), f.UseLatitudeOfOriginOn()),
+             "latitude of origin origin_lat: LambertAzimuthalEqualArea takes none"),
+            (lambda f: (f.SetProjectionToUTM(), f.UseLatitudeOfOriginOn()), "UTM takes none"),
+            (lambda f: f.SetScaleFactor(0.0), "scale factor k0 = 0 is not above 0"),
+            (lambda f: f.SetFalseNorthing(float("nan")), "false northing y0 = nan")):
+        f = vtkGeographicProjection()
+        errors = messages_of(f)
+        f.SetInputData(make_points([(5.0, 50.0)]))
+        settle(f)
+        f.Update()
+        assert_that(f.GetOutput().GetNumberOfPoints() == 0 and any(words in e for e in errors), f"{words}: {errors}")
+
+
 def test_mercator_and_web_mercator_are_epsg_3395_and_3857():
     # PROJ 9.1.1's (cs2cs EPSG:4326 EPSG:3395, EPSG:3857) eastings and northings of 50 N 5 E: the web
     # maps' northing is the sphere's, 32.75 km north of the ellipsoid's. Each goes back by its record.
@@ -482,6 +531,7 @@ if __name__ == "__main__":
     run([test_round_trip_of_the_colorado_gauges,
          test_azimuthal_equidistant_keeps_distances_from_the_centre,
          test_lambert_azimuthal_equal_area_is_laea_europe_and_goes_back_by_its_record,
+         test_a_grid_gives_a_projected_systems_own_numbers_and_takes_them_back,
          test_mercator_and_web_mercator_are_epsg_3395_and_3857,
          test_nan_point_is_named_and_output_is_empty,
          test_the_blocks_of_a_composite_share_one_projection,
