@@ -7,15 +7,9 @@ aea (Albers equal-area conic), lcc (Lambert conformal conic, with one or two sta
 laea (Lambert azimuthal equal-area, as LAEA Europe, EPSG:3035) and merc (Mercator, as EPSG:3395,
 or on the sphere of WGS84's radius, the web maps' EPSG:3857), in metres or feet, on an ellipsoid
 (another sphere's, +R=, is refused: its inverse differs by kilometres). Each is made lon/lat by
-vtkGeographicProjection's inverse. That filter's planes have no false easting or northing, a
-scale of 1 and their own origin, so the file's x, y are first moved into the filter's plane:
-
-    filter x = (file x * metres per unit - x_0) / k_0 + X,  and alike for y,
-
-where (X, Y) is the filter's image of the file's origin (lon_0, lat_0): both planes are the same
-map of the ellipsoid up to that shift and scale (for a conic, the same cone radius and angle
-about the same apex; for the transverse Mercator, the same meridian distance; for the azimuthal
-projection, the same centre).
+vtkGeographicProjection's inverse, given the system's grid: its false easting and northing
+(+x_0, +y_0), scale (+k_0, or a Mercator's +lat_ts) and, for the conics and the transverse
+Mercator, its latitude of origin (+lat_0). The file's x, y are only scaled to metres first.
 
 The filter's ellipsoid is WGS84's. NAD83 and ETRS89 (GRS80) lie within a metre or two of it;
 another datum (NAD27, ED50, OSGB36) is warned of where the catchment is read.
@@ -347,7 +341,7 @@ def densify_edges(data, step):
 
 
 def projection_filter(system, inverse):
-    """A vtkGeographicProjection set to system's projection in the filter's own plane."""
+    """A vtkGeographicProjection set to system's projection and grid (false origin, scale, latitude of origin)."""
     projection = csv_input.import_tessera().vtkGeographicProjection()
     if system.kind == "utm":
         projection.SetProjectionToUTM()
@@ -359,71 +353,53 @@ def projection_filter(system, inverse):
         projection.SetCentralLongitude(system.lon0)
         projection.SetCentralLatitude(system.lat0)
         projection.SetStandardParallels(system.lat1, system.lat2)
+        projection.SetFalseEasting(system.x0)
+        projection.SetFalseNorthing(system.y0)
+        projection.SetScaleFactor(system.k0)
+        # (laea's lat_0 is its centre, set above; PROJ's Mercators start at the equator whatever lat_0 says)
+        projection.SetUseLatitudeOfOrigin(system.kind in ("aea", "lcc", "tmerc"))
+        projection.SetLatitudeOfOrigin(system.lat0)
     projection.SetInverse(inverse)
     return projection
 
 
-def origin_in_filter_plane(system):
-    """(X, Y): the filter's image of system's origin (lon0, lat0)."""
-    from vtkmodules.vtkCommonCore import vtkPoints
-    from vtkmodules.vtkCommonDataModel import vtkPolyData
-
-    points = vtkPoints()
-    points.SetDataTypeToDouble()
-    points.InsertNextPoint(system.lon0, system.lat0, 0.0)
-    origin = vtkPolyData()
-    origin.SetPoints(points)
-    projection = projection_filter(system, False)
-    projection.SetInputData(origin)
-    errors = csv_input.errors_of_update(projection)
-    if errors or projection.GetOutput().GetNumberOfPoints() != 1:
-        # (the empty output's GetPoint(0) crashed the interpreter)
-        csv_input.fail(f"{system.describe()}: its origin (lon_0, lat_0) has no place in the projection: "
-                       f"{errors[0] if errors else 'no point came out'}")
-    return projection.GetOutput().GetPoint(0)[:2]
-
-
-# The most a coordinate of the filter's plane can be, in metres: the Earth's circumference. A
-# transverse Mercator or a conic holds places to some 2e7 m from its origin; beyond this, a point
+# The most a coordinate can be from a system's false origin, in metres: the Earth's circumference.
+# A transverse Mercator or a conic holds places to some 2e7 m from its origin; beyond this, a point
 # is a typo (-1e9 for -1e6), whose inverse would still give a place.
 MOST_METRES = 4.0e7
 
 
-def into_filter_plane(data, system, where):
-    """Moves data's points (changed in place) from system's plane to the filter's (the module's
-    formula), and returns the filter's image of system's origin (None for UTM, which is moved by
-    the filter itself). A point beyond MOST_METRES there ends the script, where(point index)
-    naming where it came from (UTM's range is checked where its file is read)."""
+def into_metres(data, system, where):
+    """Scales data's points (changed in place) from system's unit to metres, the unit of the filter's grid.
+    A point beyond MOST_METRES from the false origin ends the script, where(point index) naming where it
+    came from (UTM, in metres, is checked for its range where its file is read)."""
     from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
     from vtkmodules.vtkCommonCore import vtkPoints
 
     if system.kind == "utm":
-        return None
-    origin = origin_in_filter_plane(system)
+        return
     for leaf in polydata_blocks(data):
         if leaf.GetPoints() is None:
             continue
         xyz = vtk_to_numpy(leaf.GetPoints().GetData()).astype(float)  # (a copy, in doubles)
-        for axis, false_origin in ((0, system.x0), (1, system.y0)):
-            xyz[:, axis] = (xyz[:, axis] * system.metres - false_origin) / system.k0 + origin[axis]
-        far = (~(abs(xyz[:, :2]) <= MOST_METRES)).any(axis=1).nonzero()[0]  # (NaN too)
+        xyz[:, :2] *= system.metres
+        off = abs(xyz[:, :2] - (system.x0, system.y0)) / system.k0
+        far = (~(off <= MOST_METRES)).any(axis=1).nonzero()[0]  # (NaN too)
         if len(far):
-            x, y = xyz[far[0], :2]
-            csv_input.fail(f"{where(int(far[0]))}: as {system.describe()}: a point {max(abs(x), abs(y)):.3g} m from "
+            csv_input.fail(f"{where(int(far[0]))}: as {system.describe()}: a point {off[far[0]].max():.3g} m from "
                            "the projection's origin, beyond any place on the Earth (a typo?)")
         moved = vtkPoints()
         moved.SetData(numpy_to_vtk(xyz, deep=True))
         leaf.SetPoints(moved)
-    return origin
 
 
 def to_lonlat(data, system, where, densify=False):
     """data (a vtkPolyData or a multiblock of them) with its points made lon/lat from x, y of
     system (a PlaneSystem), by vtkGeographicProjection's inverse; its edges cut every EDGE_METRES
     first when densify is set. An error (a point the projection cannot hold, or one beyond
-    MOST_METRES in the filter's plane) ends the script, where(point index) naming where that point
+    MOST_METRES from the false origin) ends the script, where(point index) naming where that point
     came from."""
-    origin = into_filter_plane(data, system, where)
+    into_metres(data, system, where)
     if densify:
         densify_edges(data, EDGE_METRES)
     projection = projection_filter(system, True)
@@ -432,10 +408,9 @@ def to_lonlat(data, system, where, densify=False):
     if errors:
         point = re.search(r"\bpoint (\d+)(?: \(([^,()]+), ([^,()]+)\))?", errors[0])
         message = errors[0]
-        if point and point.group(3) and origin:
-            # (the filter names the point by its place in the filter's plane: said in the file's)
-            x, y = (((float(point.group(axis + 2)) - origin[axis]) * system.k0 + false) / system.metres
-                    for axis, false in ((0, system.x0), (1, system.y0)))
+        if point and point.group(3):
+            # (the filter names the point by its index there, and in metres: said in the file's unit)
+            x, y = (float(point.group(axis + 2)) / system.metres for axis in (0, 1))
             message = message.replace(point.group(0), f"the point ({x:.15g}, {y:.15g})")
         csv_input.fail(f"{where(int(point.group(1))) if point else where(-1)}: as {system.describe()}: {message}")
     return projection.GetOutputDataObject(0)

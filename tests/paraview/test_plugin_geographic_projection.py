@@ -107,6 +107,19 @@ for projection in range(9):  # (every entry of the Projection menu)
     for name in ("UTMZone", "UTMNorth"):
         if shown(projected.GetProperty(name).GetHints(), {"Projection": projection}) != (projection == 4):
             failures.append(f"projection {projection}: {name} shown {not projection == 4}")
+# The grid (a projected system's false origin and scale): shown for every projection, where each term moves the
+# points; Latitude Of Origin shown with Use Latitude Of Origin on, where it moves the points of every projection
+# that takes one (UTM and the azimuthal ones, 4 to 6, take none: an error names it).
+for projection in range(9):
+    settings = {"Projection": projection, "ParametersFromData": 0}
+    for name, value in (("FalseEasting", 1000.0), ("FalseNorthing", -1000.0), ("ScaleFactor", 0.9996)):
+        if projected.GetProperty(name).GetHints() is not None or not moves_points(settings, name, value):
+            failures.append(f"projection {projection}: {name} hidden or moving no point")
+    if projection not in (4, 5, 6) and not moves_points({**settings, "UseLatitudeOfOrigin": 1}, "LatitudeOfOrigin", 30):
+        failures.append(f"projection {projection}: LatitudeOfOrigin moves no point")
+origin_hints = projected.GetProperty("LatitudeOfOrigin").GetHints()
+if shown(origin_hints, {"UseLatitudeOfOrigin": 0}) or not shown(origin_hints, {"UseLatitudeOfOrigin": 1}):
+    failures.append("LatitudeOfOrigin is not shown exactly with UseLatitudeOfOrigin on")
 if projected.GetProperty("ProjectionRecord") is None:
     failures.append("no ProjectionRecord property")
 # The panel's labels: ParaView splits a name at capitals (UTMZone would read "U TMZone").

@@ -8,6 +8,8 @@ import os
 import re
 import sys
 
+from paraview import servermanager
+
 source = os.environ["TESSERA_SOURCE_DIR"]
 with open(os.path.join(source, "README.md")) as f:
     text = f.read()
@@ -42,6 +44,28 @@ projected = names["projected"]
 projected.UpdatePipeline()
 if projected.GetDataInformation().GetNumberOfPoints() != 376:
     failures.append(f"{projected.GetDataInformation().GetNumberOfPoints()} projected gauges, expected 376")
+
+
+def first_leaf(data):
+    """The first point set of a fetched data object (a GDAL file's multiblock, or a point set)."""
+    if not data.IsA("vtkCompositeDataSet"):
+        return data
+    iterator = data.NewIterator()
+    iterator.InitTraversal()
+    return iterator.GetCurrentDataObject()
+
+
+# The outline in EPSG:5070's own metres: its first vertex (102.055244 W, 40.009644 N) where PROJ 9.1.1 puts it
+# (cs2cs +proj=longlat +ellps=WGS84 +to +proj=aea +lat_0=23 +lon_0=-96 +lat_1=29.5 +lat_2=45.5 +ellps=WGS84),
+# and back where it was.
+in_5070 = first_leaf(servermanager.Fetch(names["outline_5070"]))
+back = first_leaf(servermanager.Fetch(names["back"]))
+x, y = in_5070.GetPoint(0)[:2] if in_5070.GetNumberOfPoints() else (None, None)
+if x is None or abs(x - -511995.224709) > 1e-5 or abs(y - 1904375.096779) > 1e-5:
+    failures.append(f"the outline's first vertex in EPSG:5070 is {x}, {y}")
+lon, lat = back.GetPoint(0)[:2] if back.GetNumberOfPoints() else (None, None)
+if lon is None or abs(lon - -102.055244) > 1e-9 or abs(lat - 40.009644) > 1e-9:
+    failures.append(f"the outline's first vertex came back at {lon}, {lat}")
 if failures:
     print("FAIL:\n" + "\n".join(failures))
     sys.exit(1)
