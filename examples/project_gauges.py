@@ -6,7 +6,13 @@ Reads a CSV with columns station_id, lon, lat and optional name, elev_m (default
 examples/data/colorado_stations.csv) and writes into --out:
   gauges_projected.vtp   the gauges as VTK points (x, y in metres, z = elevation), with point data
                          StationId, Name, Longitude, Latitude, and field data TesseraProjection;
-  gauges_projected.csv   station_id, name, lon, lat, x_m, y_m.
+  gauges_projected.csv   station_id, name, lon, lat, x_m, y_m; with --crs also x_crs, y_crs: the
+                         coordinates in that system's own unit (its feet, for a state plane in feet).
+
+--projection picks one of the filter's projections, fitted to the gauges; --crs gives a projected
+coordinate system by its EPSG code or PROJ terms (as the main job's --stations-crs reads them: UTM,
+tmerc, aea, lcc, laea, merc, in metres or feet), whose own numbers then come out: EPSG:5070 (NAD83 /
+Conus Albers) gives that system's eastings and northings, false origin and all.
 
 Run it with Debian's /usr/bin/python3 and PYTHONPATH pointing to build/python (scripts/demo does).
 """
@@ -21,6 +27,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
 import csv_input  # noqa: E402 (the examples' CSV reading, beside this script)
+import projected_input  # noqa: E402 (the projected systems read, beside this script)
 
 PROJECTIONS = {
     "automatic": "SetProjectionToAutomatic",
@@ -84,8 +91,12 @@ def main(argv=None):
     parser.add_argument("--stations", default=os.path.join(HERE, "data", "colorado_stations.csv"),
                         help="CSV of gauges: columns station_id, lon, lat (degrees), optional name, elev_m; "
                              f"{csv_input.SEPARATORS_TEXT}")
-    parser.add_argument("--projection", choices=sorted(PROJECTIONS), default="automatic",
+    chosen = parser.add_mutually_exclusive_group()
+    chosen.add_argument("--projection", choices=sorted(PROJECTIONS), default="automatic",
                         help="map projection (default: automatic Albers equal-area)")
+    chosen.add_argument("--crs", metavar="CRS",
+                        help="a projected coordinate system: EPSG:CODE (such as EPSG:5070) or PROJ terms "
+                             "(such as '+proj=aea +lat_0=23 +lon_0=-96 +lat_1=29.5 +lat_2=45.5 +x_0=0 +y_0=0')")
     parser.add_argument("--out", default="out", help="output directory (created if missing)")
     args = parser.parse_args(argv)
     # Imported after parsing so that --help works without VTK on the path; Tessera first, so that
@@ -93,12 +104,17 @@ def main(argv=None):
     vtkGeographicProjection = csv_input.import_tessera().vtkGeographicProjection
     from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
+    system = projected_input.crs_system(args.crs, "--crs", lonlat="the gauges are in it already; give a projected "
+                                        "system", datum="the gauges' lon/lat are taken as on WGS84's") if args.crs else None
     csv_input.output_directory(args.out)
     gauges, lines = read_gauges(args.stations)
     if gauges.GetNumberOfPoints() == 0:
         csv_input.fail(f"{args.stations}: no gauges to project (the file has no rows)")
-    projection = vtkGeographicProjection()
-    getattr(projection, PROJECTIONS[args.projection])()
+    if system:
+        projection = projected_input.projection_filter(system, False)
+    else:
+        projection = vtkGeographicProjection()
+        getattr(projection, PROJECTIONS[args.projection])()
     # A gauge the projection rejects (a latitude beyond 90, too far from a UTM zone) ends the run
     # with one line naming its line in the file, as the main example does, not VTK's log and the
     # executive's dump of its request.
@@ -119,13 +135,15 @@ def main(argv=None):
     names = projected.GetPointData().GetAbstractArray("Name")
     with open(os.path.join(args.out, "gauges_projected.csv"), "w", newline="") as f:
         out = csv.writer(f)
-        out.writerow(["station_id", "name", "lon", "lat", "x_m", "y_m"])
+        out.writerow(["station_id", "name", "lon", "lat", "x_m", "y_m"] + (["x_crs", "y_crs"] if system else []))
         for i in range(projected.GetNumberOfPoints()):
             lon, lat, _ = gauges.GetPoint(i)
             x, y, _ = projected.GetPoint(i)
-            out.writerow([ids.GetValue(i), names.GetValue(i), lon, lat, f"{x:.3f}", f"{y:.3f}"])
+            own = [f"{x / system.metres:.3f}", f"{y / system.metres:.3f}"] if system else []
+            out.writerow([ids.GetValue(i), names.GetValue(i), lon, lat, f"{x:.3f}", f"{y:.3f}"] + own)
     record = projected.GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
-    print(f"projected {projected.GetNumberOfPoints()} gauges with {record}")
+    print(f"projected {projected.GetNumberOfPoints()} gauges with {record}"
+          + (f" ({system.describe()})" if system else ""))
     print(f"wrote {args.out}/gauges_projected.vtp and {args.out}/gauges_projected.csv")
 
 

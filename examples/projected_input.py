@@ -190,34 +190,45 @@ def stations_system(utm, crs, gdal_messages):
         return PlaneSystem.utm(int(zone.group(1)), zone.group(2).upper() != "S")
     if not crs:
         return None
+    return crs_system(crs, "--stations-crs", gdal_messages,
+                      lonlat="give the file lon and lat columns, without --stations-crs",
+                      datum="the gauges' x, y are made longitude/latitude on WGS84's")
+
+
+def crs_system(crs, option, gdal_messages=None, lonlat="", datum=""):
+    """The PlaneSystem of `option`'s value crs, EPSG:CODE or PROJ terms (+proj=aea ...); a bad value ends the
+    script naming it. gdal_messages: the script's GdalMessages, or None to let GDAL's own lines through while an
+    EPSG code is looked up. lonlat: what to do when crs is a geographic system; datum: what is made of
+    coordinates on another datum (said, with a warning, for such a system)."""
     text = crs.strip()
     code = re.fullmatch(r"(?i)(?:epsg:\s*|urn:ogc:def:crs:epsg:[0-9.]*:)?([0-9]+)", text)
+    example = "'+proj=aea +lat_0=23 +lon_0=-96 +lat_1=29.5 +lat_2=45.5 +x_0=0 +y_0=0 +units=m'"
     if not code and not text.startswith("+proj="):
-        csv_input.fail(f"--stations-crs {crs!r}: expected EPSG:CODE (such as EPSG:5070) or PROJ terms starting "
-                       "+proj= (such as '+proj=aea +lat_0=23 +lon_0=-96 +lat_1=29.5 +lat_2=45.5 +x_0=0 +y_0=0 "
-                       "+units=m')")
+        csv_input.fail(f"{option} {crs!r}: expected EPSG:CODE (such as EPSG:5070) or PROJ terms starting "
+                       f"+proj= (such as {example})")
     if code:
-        with gdal_messages.capturing():
+        if gdal_messages:
+            with gdal_messages.capturing():
+                text = epsg_proj4(int(code.group(1)))
+            gdal_messages.new()  # (read: they are not the catchment's)
+        else:
             text = epsg_proj4(int(code.group(1)))
-        gdal_messages.new()  # (read: they are not the catchment's)
         if not text:
-            csv_input.fail(f"--stations-crs {crs!r}: GDAL's database has no such EPSG code")
+            csv_input.fail(f"{option} {crs!r}: GDAL's database has no such EPSG code")
         if isinstance(text, tuple):
-            csv_input.fail(f"--stations-crs {crs!r}: GDAL gives another system in its place, EPSG:{text[0]} "
+            csv_input.fail(f"{option} {crs!r}: GDAL gives another system in its place, EPSG:{text[0]} "
                            f"({text[1]!r}), as it does for a deprecated code, and the two may differ (as EPSG:2163, "
                            "on a sphere, and its successor EPSG:9311, on the Clarke 1866 ellipsoid, do): give the "
-                           "file's system as PROJ terms (+proj=...)")
+                           "system as PROJ terms (+proj=...)")
     system = proj4_system(text)
     if isinstance(system, str) and "+proj=longlat" in text.split():
-        system = "a geographic system (longitude/latitude): give the file lon and lat columns, without --stations-crs"
+        system = f"a geographic system (longitude/latitude): {lonlat}"
     if isinstance(system, str):
-        csv_input.fail(f"--stations-crs {crs!r}: {system} (give EPSG:CODE or PROJ terms such as "
-                       "'+proj=aea +lat_0=23 +lon_0=-96 +lat_1=29.5 +lat_2=45.5 +x_0=0 +y_0=0 +units=m')")
+        csv_input.fail(f"{option} {crs!r}: {system} (give EPSG:CODE or PROJ terms such as {example})")
     other = other_ellipsoid(text)
     if other:
-        print(f"--stations-crs {crs!r}: {other}; the gauges' x, y are made longitude/latitude on WGS84's, without the "
-              "datum shift: they may lie tens to hundreds of metres off (reproject them to WGS84 where that "
-              "matters)", file=sys.stderr)
+        print(f"{option} {crs!r}: {other}; {datum}, without the datum shift: they may lie tens to hundreds of metres "
+              "off (reproject them to WGS84 where that matters)", file=sys.stderr)
     return system
 
 

@@ -2784,6 +2784,35 @@ def test_project_gauges_names_a_bad_gauge_by_its_line():
             assert_that(not os.path.exists(made) or not os.listdir(made), f"{what}: wrote its outputs")
 
 
+def test_project_gauges_writes_a_projected_systems_own_numbers():
+    # --crs gives the gauges in a projected system's own numbers, false origin, scale and unit included, as
+    # PROJ 9.1.1 gives them (cs2cs EPSG:4326 EPSG:5070, and EPSG:2232, Colorado Central in US feet, whose
+    # NAD83 PROJ takes as WGS84): the first two Colorado gauges, TEEC NOS POS (109.1 W, 36.9 N) and AKRON 4 E
+    # (103.15 W, 40.15 N). EPSG:2232 goes in by its code and by its PROJ terms alike.
+    state_plane = ("+proj=lcc +lat_0=37.8333333333333 +lon_0=-105.5 +lat_1=39.75 +lat_2=38.45 "
+                   "+x_0=914401.828803658 +y_0=304800.609601219 +datum=NAD83 +units=us-ft +no_defs")
+    cases = [("EPSG:5070", [(-1152789.024, 1619131.577), (-603217.884, 1926486.744)], 1.0),
+             ("EPSG:2232", [(1946885.106, 680886.132), (3656935.053, 1852284.842)], 1200.0 / 3937.0),
+             (state_plane, [(1946885.106, 680886.132), (3656935.053, 1852284.842)], 1200.0 / 3937.0)]
+    with tempfile.TemporaryDirectory() as out:
+        for crs, expected, metres in cases:
+            status, stdout, stderr = run_example("project_gauges.py", "--out", out, "--crs", crs)
+            assert_that(status == 0, f"--crs {crs}: exit status {status}: {stderr}")
+            with open(os.path.join(out, "gauges_projected.csv")) as f:
+                rows = list(csv.DictReader(f))[:2]
+            for row, (x, y) in zip(rows, expected):
+                got = [float(row[key]) for key in ("x_crs", "y_crs", "x_m", "y_m")]
+                assert_that(abs(got[0] - x) < 2e-3 and abs(got[1] - y) < 2e-3
+                            and abs(got[2] - x * metres) < 2e-3 and abs(got[3] - y * metres) < 2e-3,
+                            f"--crs {crs}: {row['name']} at {got}, PROJ's {x}, {y} (units of {metres} m)")
+        # A geographic system, an unknown code, and --crs with --projection are named.
+        for arguments, expected in ((("--crs", "EPSG:4326"), "--crs 'EPSG:4326': a geographic system"),
+                                    (("--crs", "EPSG:999999"), "--crs 'EPSG:999999': GDAL's database has no such"),
+                                    (("--crs", "EPSG:5070", "--projection", "utm"), "not allowed with argument")):
+            status, _, stderr = run_example("project_gauges.py", "--out", os.path.join(out, "o"), *arguments)
+            assert_that(status != 0 and expected in stderr, f"{arguments}: exit status {status}: {stderr}")
+
+
 def test_progress_into_a_log_is_lines_of_its_own():
     # Into a file or a pipe (a log), progress is lines of their own at 0, 25, 50, 75 and 100%, with
     # no carriage return: redrawn with \r it made one long line with the warnings spliced in.
@@ -2950,6 +2979,7 @@ if __name__ == "__main__":
          test_ridge_grouping_names_a_bad_epicentre_alone,
          test_ridge_grouping_checks_its_out_directory_first,
          test_project_gauges_names_a_bad_gauge_by_its_line,
+         test_project_gauges_writes_a_projected_systems_own_numbers,
          test_progress_into_a_log_is_lines_of_its_own,
          test_the_readme_python_runs,
          test_every_script_takes_help,
