@@ -33,6 +33,9 @@ constexpr double UTMScale = 0.9996;
 // A projected coordinate beyond 2.5 Earth circumferences means the point sits at (or next to) a
 // singularity of the projection, such as the far pole of a Lambert cone: refused, not returned.
 constexpr double MaxProjectedMagnitude = 1.0e8;
+// The scale factors a grid may have (ProjectionParameters::ScaleFactor).
+constexpr double MinGridScale = 0.1;
+constexpr double MaxGridScale = 10.0;
 
 std::string DescribePoint(const char* what, long long id, const Point2& p)
 {
@@ -461,10 +464,12 @@ void CheckGridTerms(const ProjectionParameters& p)
         " is not within 1e8 m");
     }
   }
-  if (!(p.ScaleFactor > 0.0) || !std::isfinite(p.ScaleFactor))
+  if (!(p.ScaleFactor >= MinGridScale && p.ScaleFactor <= MaxGridScale))
   {
-    throw InputError(
-      "the projection's scale factor k0 = " + NumberText(p.ScaleFactor) + " is not above 0");
+    // (1e301 made coordinates infinite, 1e-300 every place one point; a real system's scale is
+    // within a few parts in a thousand of 1)
+    throw InputError("the projection's scale factor k0 = " + NumberText(p.ScaleFactor) +
+      " is not within " + NumberText(MinGridScale) + " to " + NumberText(MaxGridScale));
   }
   if (!p.HasOriginLatitude)
   {
@@ -693,7 +698,9 @@ Point2 GeographicProjection::Inverse(const Point2& grid, long long id) const
   {
     // (Forward refuses such points, so none is an image; the Mercators took y = 1e300 for a pole)
     throw InputError(DescribePoint("point", id, grid) + " lies beyond 1e8 m of the " +
-      ProjectionKindName(Params.Kind) + " projection's origin, where no place projects");
+      ProjectionKindName(Params.Kind) + " projection's origin" +
+      (Impl->Grid ? " once its grid (false origin, scale) is undone" : "") +
+      ", where no place projects");
   }
   const double lon0 = Impl->CentralMeridian;
   Point2 lonlat;

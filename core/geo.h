@@ -58,7 +58,7 @@ struct ProjectionParameters
   /// differ from the defaults, so a record without them is a plane without a grid.
   double FalseEasting = 0.0;  ///< metres (record key x0)
   double FalseNorthing = 0.0; ///< metres (record key y0)
-  double ScaleFactor = 1.0;   ///< > 0 (record key k0)
+  double ScaleFactor = 1.0;   ///< 0.1 to 10 (record key k0)
   bool HasOriginLatitude = false;
   double OriginLatitude = 0.0; ///< degrees, with HasOriginLatitude (record key origin_lat)
   /// Whether the grid terms leave the plane as it is (all at their defaults).

@@ -122,8 +122,8 @@ def proj4_system(text):
         return f"+{key}={terms[key]}, which is not {what}"
     if terms["proj"] == "merc" and abs(number["lat_ts"]) == 90:
         return f"+lat_ts={terms['lat_ts']}, where a Mercator's scale is 0 (its true-scale parallel must miss the poles)"
-    if name in ("laea", "webmerc") and terms["proj"] != "merc":
-        number["k_0"] = 1.0  # (PROJ's laea and webmerc take no +k, webmerc no +lat_ts)
+    if name in ("aea", "laea", "webmerc") and terms["proj"] != "merc":
+        number["k_0"] = 1.0  # (PROJ's aea, laea and webmerc take no +k, webmerc no +lat_ts)
     if name in ("merc", "webmerc"):
         number["lat_0"] = 0.0  # (the origin is on the equator whatever +lat_0 says)
         if terms["proj"] == "merc" and "lat_ts" in terms:

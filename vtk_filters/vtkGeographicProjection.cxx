@@ -262,6 +262,13 @@ void TakeGridTerms(vtkGeographicProjection* self, tessera::ProjectionParameters&
   p.ScaleFactor = self->GetScaleFactor();
   p.HasOriginLatitude = self->GetUseLatitudeOfOrigin();
   p.OriginLatitude = p.HasOriginLatitude ? self->GetLatitudeOfOrigin() : 0.0;
+  if (!p.HasOriginLatitude && self->GetLatitudeOfOrigin() != 0.0)
+  {
+    // (a scripter who set it alone got northings millions of metres off without a word)
+    vtkWarningWithObjectMacro(self,
+      << "LatitudeOfOrigin " << tessera::NumberText(self->GetLatitudeOfOrigin())
+      << " is not used: UseLatitudeOfOrigin is off, so the grid starts at the plane's own origin");
+  }
 }
 
 /// The forward projection's parameters from the filter's settings and the data.

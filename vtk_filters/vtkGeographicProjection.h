@@ -178,14 +178,16 @@ public:
    * Albers): AlbersEqualArea, CentralLongitude -96, StandardParallels 29.5, 45.5,
    * UseLatitudeOfOrigin on with LatitudeOfOrigin 23; for EPSG:3035 (LAEA Europe):
    * LambertAzimuthalEqualArea about 10 E 52 N with FalseEasting 4321000, FalseNorthing 3210000.
-   * FalseEasting and FalseNorthing in metres (default 0, within 1e8), ScaleFactor above 0
-   * (default 1), LatitudeOfOrigin in degrees (default 0, read only with UseLatitudeOfOrigin on,
-   * default off). A latitude of origin is taken by the conics, the transverse Mercator and the
-   * Mercators (at the update, another projection with UseLatitudeOfOrigin on is an error: UTM's
-   * grid is fixed, the azimuthal projections' origin is their centre); the grid applies on top of
-   * UTM's own. They are used with ParametersFromData on or off, and written into the record (keys
-   * x0, y0, k0, origin_lat); with Inverse on and a record on the input, the record's are used.
-   * Files in feet are scaled to metres first (ParaView's Transform), as PROJ's +x_0 is in metres.
+   * FalseEasting and FalseNorthing in metres (default 0, within 1e8), ScaleFactor 0.1 to 10
+   * (default 1; real systems' are within a few parts in a thousand of 1), LatitudeOfOrigin in
+   * degrees (default 0, read only with UseLatitudeOfOrigin on, default off: a LatitudeOfOrigin
+   * other than 0 set then is warned of, unused). A latitude of origin is taken by the conics, the
+   * transverse Mercator and the Mercators (at the update, another projection with
+   * UseLatitudeOfOrigin on is an error: UTM's grid is fixed, the azimuthal projections' origin is
+   * their centre); the grid applies on top of UTM's own. They are used with ParametersFromData on
+   * or off, and written into the record (keys x0, y0, k0, origin_lat); with Inverse on and a record
+   * on the input, the record's are used. Files in feet are scaled to metres first (ParaView's
+   * Transform), as PROJ's +x_0 is in metres.
    */
   vtkSetMacro(FalseEasting, double);
   vtkGetMacro(FalseEasting, double);

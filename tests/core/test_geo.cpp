@@ -880,9 +880,15 @@ TEST(Geo, BadGridTermsAreNamed)
     return std::string("built");
   };
   const std::string albers = "projection=AlbersEqualArea lon0=-96 lat1=29.5 lat2=45.5";
-  EXPECT_NE(
-    messageOf(albers + " k0=0").find("scale factor k0 = 0 is not above 0"), std::string::npos);
-  EXPECT_NE(messageOf(albers + " k0=-1").find("k0 = -1"), std::string::npos);
+  // (a scale of 1e301 made coordinates infinite, one of 1e-300 every place one point)
+  for (const char* k0 : { "0", "-1", "1e301", "1e-300", "0.09" })
+  {
+    EXPECT_NE(
+      messageOf(albers + " k0=" + k0)
+        .find("scale factor k0 = " + NumberText(std::stod(k0)) + " is not within 0.1 to 10"),
+      std::string::npos)
+      << k0;
+  }
   EXPECT_NE(
     messageOf(albers + " k0=nan").find("k0='nan' is not a finite number"), std::string::npos);
   EXPECT_NE(messageOf(albers + " x0=1e9").find("false easting x0 = 1000000000 is not within 1e8 m"),
@@ -906,13 +912,16 @@ TEST(Geo, BadGridTermsAreNamed)
               .find("origin_lat = -90 puts the grid's origin where the LambertConformalConic "
                     "projection has no place"),
     std::string::npos);
-  EXPECT_EQ(messageOf(albers + " x0=-1e8 y0=1e8 k0=1e-3 origin_lat=-90"), "built");
-  // A grid point whose plane point lies beyond 1e8 m is named by its grid coordinates.
-  const GeographicProjection small(ProjectionParameters::FromString(albers + " k0=1e-3"));
+  EXPECT_EQ(messageOf(albers + " x0=-1e8 y0=1e8 k0=0.1 origin_lat=-90"), "built");
+  EXPECT_EQ(messageOf(albers + " k0=10"), "built");
+  // A grid point whose plane point lies beyond 1e8 m is named by its grid coordinates, and the
+  // distance said to be the plane's.
+  const GeographicProjection small(ProjectionParameters::FromString(albers + " k0=0.1"));
   EXPECT_NE(ErrorOf(
               [&small]() {
-                small.Inverse({ 2e5, 0.0 }, 4);
+                small.Inverse({ 2e7, 0.0 }, 4);
               })
-              .find("point 4 (200000, 0)"),
+              .find("point 4 (20000000, 0) lies beyond 1e8 m of the AlbersEqualArea projection's "
+                    "origin once its grid (false origin, scale) is undone"),
     std::string::npos);
 }

@@ -2160,6 +2160,7 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
         assert_that(system("+proj=tmerc +lon_0=177 +units=ft +to_meter=2").metres == 0.3048, "+units, +to_meter")
         assert_close(system("+proj=merc +lat_ts=30 +k=0.5 +datum=WGS84").k0, 0.8667510026, 1e-10, "+lat_ts, +k")
         assert_that(system("+proj=laea +lat_0=52 +k=0.5 +datum=WGS84").k0 == 1.0, "laea's +k")
+        assert_that(system("+proj=aea +lat_1=29.5 +lat_2=45.5 +k_0=0.9 +datum=WGS84").k0 == 1.0, "aea's +k_0")
         assert_that(system("+proj=webmerc +k=0.5 +lat_ts=30").k0 == 1.0, "webmerc's +k and +lat_ts")
         for terms in ("+proj=laea +lat_0=52 +a=6378137", "+proj=aea +a=6371000 +es=0", "+proj=laea +R_A +ellps=GRS80"):
             assert_that("a projection of the sphere" in system(terms), f"{terms}: {system(terms)}")

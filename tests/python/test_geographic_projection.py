@@ -5,7 +5,7 @@ import csv
 import math
 import os
 
-from vtkmodules.vtkCommonCore import vtkPoints
+from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkMultiBlockDataSet, vtkPolyData
 
 from tessera import vtkGeographicProjection
@@ -136,12 +136,20 @@ def test_a_grid_gives_a_projected_systems_own_numbers_and_takes_them_back():
             lon, lat, _ = inverse.GetOutput().GetPoint(0)
             assert_that(abs(lon - lonlat[0]) < 1e-9 and abs(lat - lonlat[1]) < 1e-9,
                         f"{name}: back at {lon!r}, {lat!r}")
+    # A latitude of origin set while UseLatitudeOfOrigin is off is warned of, unused.
+    f = vtkGeographicProjection()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetInputData(make_points([(-105.5, 39.0)]))
+    f.SetLatitudeOfOrigin(23.0)
+    f.Update()
+    assert_that(f.GetOutput().GetNumberOfPoints() == 1 and any(
+        "LatitudeOfOrigin 23 is not used: UseLatitudeOfOrigin is off" in w for w in warnings), f"{warnings}")
     # A latitude of origin where the projection's origin is fixed, and a scale of 0, are errors naming the term.
     for settle, words in (
             (lambda f: (f.SetProjectionToLambertAzimuthalEqualArea(), f.UseLatitudeOfOriginOn()),
              "latitude of origin origin_lat: LambertAzimuthalEqualArea takes none"),
             (lambda f: (f.SetProjectionToUTM(), f.UseLatitudeOfOriginOn()), "UTM takes none"),
-            (lambda f: f.SetScaleFactor(0.0), "scale factor k0 = 0 is not above 0"),
+            (lambda f: f.SetScaleFactor(0.0), "scale factor k0 = 0 is not within 0.1 to 10"),
             (lambda f: f.SetFalseNorthing(float("nan")), "false northing y0 = nan")):
         f = vtkGeographicProjection()
         errors = messages_of(f)
