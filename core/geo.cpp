@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <sstream>
 
@@ -33,9 +34,22 @@ constexpr double UTMScale = 0.9996;
 // A projected coordinate beyond 2.5 Earth circumferences means the point sits at (or next to) a
 // singularity of the projection, such as the far pole of a Lambert cone: refused, not returned.
 constexpr double MaxProjectedMagnitude = 1.0e8;
+// How far the forward projection of an inverse may land from the point inverted (GeographicLib's
+// and the Mercators' round trips are good to nanometres): beyond, the point lies past the
+// projection's edge (an Albers point past the pole's arc, a transverse Mercator easting of 3e7 m),
+// whose inverse GeographicLib still gives as a place (a pole, a meridian 90 degrees away).
+constexpr double InverseRoundTripMetres = 1e-3;
 // The scale factors a grid may have (ProjectionParameters::ScaleFactor).
 constexpr double MinGridScale = 0.1;
 constexpr double MaxGridScale = 10.0;
+
+/// A distance to a tenth ("683.3"): NumberText's 17 digits are noise in a message.
+std::string TenthsText(double value)
+{
+  char text[64];
+  std::snprintf(text, sizeof text, "%.1f", value);
+  return text;
+}
 
 std::string DescribePoint(const char* what, long long id, const Point2& p)
 {
@@ -592,6 +606,40 @@ GeographicProjection::~GeographicProjection()
   delete Impl;
 }
 
+void GeographicProjection::CheckProjectsBack(const Point2& grid,
+  const Point2& lonlat,
+  long long id) const
+{
+  // The azimuthal projections refuse what lies beyond their rims themselves (and near the
+  // antipode their forward is too ill-conditioned for this test); the Mercators refuse what lies
+  // beyond half a turn of the meridian, and every y of theirs is a latitude.
+  if (Params.Kind != ProjectionKind::AlbersEqualArea &&
+    Params.Kind != ProjectionKind::LambertConformalConic &&
+    Params.Kind != ProjectionKind::TransverseMercator && Params.Kind != ProjectionKind::UTM)
+  {
+    return;
+  }
+  Point2 back;
+  try
+  {
+    back = this->Forward(lonlat);
+  }
+  catch (const InputError&)
+  {
+    back = { HUGE_VAL, HUGE_VAL }; // (beyond 45 degrees of a transverse Mercator's meridian)
+  }
+  // (a conic's cut, half a turn from the meridian, has two edges: lon0 + 180 goes to one)
+  const bool onCut = std::abs(LongitudeDifference(Impl->CentralMeridian, lonlat.x)) == 180.0;
+  const double mirroredX = 2.0 * Params.FalseEasting - back.x; // (about the meridian's x)
+  if (!(std::hypot(back.x - grid.x, back.y - grid.y) <= InverseRoundTripMetres) &&
+    !(onCut && std::hypot(mirroredX - grid.x, back.y - grid.y) <= InverseRoundTripMetres))
+  {
+    throw InputError(DescribePoint("point", id, grid) + " lies where no place projects in the " +
+      ProjectionKindName(Params.Kind) + " projection: beyond its edge, its inverse (" +
+      NumberText(lonlat.x) + ", " + NumberText(lonlat.y) + ") does not project back to it");
+  }
+}
+
 Point2 GeographicProjection::OriginInPlane() const
 {
   try
@@ -652,7 +700,7 @@ Point2 GeographicProjection::Forward(const Point2& lonlat, long long id) const
         if (std::abs(xy.x) > UTMMaxEastingOffset)
         {
           throw InputError(DescribePoint("point", id, lonlat) + " lies " +
-            NumberText(std::abs(xy.x) / 1000.0) + " km from the central meridian of UTM zone " +
+            TenthsText(std::abs(xy.x) / 1000.0) + " km from the central meridian of UTM zone " +
             std::to_string(Params.UTMZone) + "; UTM eastings stop at 500 km");
         }
         xy.x += UTMFalseEasting;
@@ -747,6 +795,7 @@ Point2 GeographicProjection::Inverse(const Point2& grid, long long id) const
       ProjectionKindName(Params.Kind) + " projection");
   }
   lonlat.x = lon0 + LongitudeDifference(lon0, lonlat.x);
+  this->CheckProjectsBack(grid, lonlat, id);
   return lonlat;
 }
 

@@ -145,10 +145,15 @@ public:
   /// singularity such as the Lambert cone's far pole).
   Point2 Forward(const Point2& lonlat, long long id = -1) const;
   /// x/y (metres) to lon/lat; longitude within 180 degrees of the central meridian. Throws
-  /// InputError naming `id` and the value for a point no place projects to.
+  /// InputError naming `id` and the value for a point no place projects to (one whose place would
+  /// not project back to it: an Albers point past the pole's arc, a transverse Mercator point
+  /// beyond 45 degrees of the central meridian).
   Point2 Inverse(const Point2& xy, long long id = -1) const;
 
 private:
+  /// Throws InputError naming the point when the forward projection of its inverse, lonlat, does
+  /// not come back to grid: it lies past the projection's edge.
+  void CheckProjectsBack(const Point2& grid, const Point2& lonlat, long long id) const;
   /// The plane's image of the grid's origin, (CentralLongitude, OriginLatitude); throws
   /// InputError naming origin_lat where the projection has no place for it.
   Point2 OriginInPlane() const;

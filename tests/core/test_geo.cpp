@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <random>
+#include <regex>
 
 using namespace tessera;
 using tessera_test::ErrorOf;
@@ -924,4 +925,48 @@ TEST(Geo, BadGridTermsAreNamed)
               .find("point 4 (20000000, 0) lies beyond 1e8 m of the AlbersEqualArea projection's "
                     "origin once its grid (false origin, scale) is undone"),
     std::string::npos);
+}
+
+// A point past a projection's edge has no place, though GeographicLib's inverse gives one: an
+// Albers point past the arc its pole projects to came back as the pole, a transverse Mercator
+// easting of 3e7 m as a meridian 90 degrees away (PROJ refuses both). Each is named; points on
+// the edge itself (the pole's arc, both edges of the conic's cut half a turn from the meridian)
+// go back.
+TEST(Geo, PointsPastAProjectionsEdgeHaveNoPlace)
+{
+  const GeographicProjection albers(ProjectionParameters::FromString(
+    "projection=AlbersEqualArea lon0=-96 lat1=29.5 lat2=45.5 origin_lat=23"));
+  const GeographicProjection tmerc(
+    ProjectionParameters::FromString("projection=TransverseMercator lon0=-96"));
+  const GeographicProjection utm(
+    ProjectionParameters::FromString("projection=UTM zone=13 north=1"));
+  for (const auto& [projection, point] : { std::make_pair(&albers, Point2{ 0.0, -2e7 }),
+         std::make_pair(&tmerc, Point2{ 3e7, 0.0 }),
+         std::make_pair(&tmerc, Point2{ 3e7, 8e6 }),
+         std::make_pair(&tmerc, Point2{ 2e7, 0.0 }),
+         std::make_pair(&utm, Point2{ 2.05e7, 4e6 }) })
+  {
+    const std::string error = ErrorOf([&]() { projection->Inverse(point, 7); });
+    EXPECT_NE(error.find("point 7 (" + NumberText(point.x) + ", " + NumberText(point.y) +
+                ") lies where no place projects"),
+      std::string::npos)
+      << error;
+  }
+  for (const double lon : { -96.0, -50.0, 84.0 - 1e-9, -276.0 + 1e-9 })
+  {
+    const Point2 pole = albers.Forward({ lon, -90.0 });
+    EXPECT_NEAR(albers.Inverse(pole).y, -90.0, 1e-5) << lon; // (ill-conditioned: 0.2 m)
+  }
+  // (the distance of a point beyond a UTM zone to a tenth of a km, not to 17 digits)
+  const std::string far = ErrorOf([&]() { utm.Forward({ -96.0, 40.0 }); });
+  EXPECT_TRUE(
+    std::regex_search(far, std::regex(" lies [0-9]+\\.[0-9] km from the central meridian")))
+    << far;
+  const Point2 cut = albers.Forward({ 84.0, 40.0 }); // (half a turn from -96)
+  for (const Point2& edge : { cut, Point2{ -cut.x, cut.y } })
+  {
+    const Point2 back = albers.Inverse(edge);
+    EXPECT_LT(std::abs(std::remainder(back.x - 84.0, 360.0)), 1e-9);
+    EXPECT_NEAR(back.y, 40.0, 1e-9);
+  }
 }
