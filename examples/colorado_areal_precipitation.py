@@ -246,9 +246,9 @@ def read_gauges(path, system=None, combined=False, id_field=None):
                                    f"puts it at ({place[0]:.15g}, {place[1]:.15g}): a file of both stations and "
                                    "observations gives each station one place")
                 continue
-        if system and system.kind == "utm" and not projected_input.in_utm_range(lon, lat):
+        if system and system.kind == "utm" and not projected_input.in_utm_range(system, lon, lat):
             csv_input.fail(f"{path}:{line}: ({lon:.15g}, {lat:.15g}) is not an easting and northing of a UTM zone "
-                           f"({projected_input.UTM_RANGE})")
+                           f"({projected_input.UTM_RANGE}), as {system.describe()}")
         lines.append(line)
         gauges.add((lon, lat), station, name)
     gauges = gauges.data
@@ -1456,14 +1456,12 @@ def say_declared_systems(reader, path, system):
                   f"ogr2ogr -t_srs EPSG:4326 out.shp in.shp; the metres of {projected_input.READ} are made "
                   "lon/lat here)",
                   file=sys.stderr)
-        # A geographic system on an older datum (NAD27, ED50, ...: an ellipsoid other than WGS84's
-        # or GRS80's, whose semi-major axis modern datums share) differs from WGS84 by tens to
-        # hundreds of metres, which reading its lon/lat as WGS84's leaves in place.
-        ellipsoid = re.search(r'(?:SPHEROID|ELLIPSOID)\["([^"]*)",\s*([0-9.eE+]+)', declared)
-        if ellipsoid and abs(float(ellipsoid.group(2)) - 6378137.0) > 0.5:
-            datum = re.search(r'DATUM\["([^"]*)"', declared)
-            print(f"{path}: declares the datum {datum.group(1) if datum else ellipsoid.group(1)!r} (ellipsoid "
-                  f"{ellipsoid.group(1)!r}); its longitudes/latitudes are read as WGS84 ones, without the "
+        # A system on an older datum (NAD27, ED50, ...) or one some way from WGS84 (Israel 1993)
+        # differs from WGS84 by tens to hundreds of metres, which reading its lon/lat as WGS84's
+        # leaves in place.
+        other = projected_input.other_datum(declared)
+        if other:
+            print(f"{path}: declares {other}; its longitudes/latitudes are read as WGS84 ones, without the "
                   "datum shift of tens to hundreds of metres: reproject the file to WGS84 (e.g. ogr2ogr "
                   "-t_srs EPSG:4326) where that matters", file=sys.stderr)
 

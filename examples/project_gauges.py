@@ -139,7 +139,7 @@ def main(argv=None):
         for i in range(projected.GetNumberOfPoints()):
             lon, lat, _ = gauges.GetPoint(i)
             x, y, _ = projected.GetPoint(i)
-            own = [f"{x / system.metres:.3f}", f"{y / system.metres:.3f}"] if system else []
+            own = [f"{value:.3f}" for value in system.from_grid(x, y)] if system else []
             out.writerow([ids.GetValue(i), names.GetValue(i), lon, lat, f"{x:.3f}", f"{y:.3f}"] + own)
     record = projected.GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
     print(f"projected {projected.GetNumberOfPoints()} gauges with {record}"

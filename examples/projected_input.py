@@ -15,6 +15,7 @@ The filter's ellipsoid is WGS84's. NAD83 and ETRS89 (GRS80) lie within a metre o
 another datum (NAD27, ED50, OSGB36) is warned of where the catchment is read.
 """
 
+import collections
 import math
 import re
 import sys
@@ -35,6 +36,13 @@ WGS84_E2 = 0.0066943799901413165  # (f (2 - f), f = 1 / 298.257223563)
 # Metres per unit of PROJ's +units (GDAL writes +to_meter for others).
 UNITS = {"m": 1.0, "km": 1000.0, "ft": 0.3048, "us-ft": 1200.0 / 3937.0}
 
+# PROJ's named prime meridians (+pm), in degrees east of Greenwich (PROJ's pj_prime_meridians).
+PRIME_MERIDIANS = {"greenwich": 0.0, "lisbon": -9.131906111111, "paris": 2.337229166667,
+                   "bogota": -74.080916666667, "madrid": -3.687938888889, "rome": 12.452333333333,
+                   "bern": 7.439583333333, "jakarta": 106.807719444444, "ferro": -17.666666666667,
+                   "brussels": 4.367975, "stockholm": 18.058277777778, "athens": 23.7163375,
+                   "oslo": 10.722916666667, "copenhagen": 12.57788}
+
 UTM_RANGE = "eastings 0 to 1,000,000 m, northings 0 to 10,000,000 m"
 
 # A projected file's edges are straight in metres, which unprojected to lon/lat they are not: an
@@ -46,22 +54,42 @@ EDGE_METRES = 1000.0
 class PlaneSystem:
     """A projected coordinate system that is read here: the filter's projection (kind: a key of
     KINDS, or "utm") and PROJ's parameters: origin (lon0, lat0), standard parallels (lat1, lat2),
-    scale k0, false easting and northing (x0, y0, metres) and metres per unit."""
+    scale k0, false easting and northing (x0, y0, metres), metres per unit, and the axes (PROJ's
+    +axis: "enu", x east and y north; "wsu", westings and southings; "neu", northings first). lon0 is
+    east of Greenwich (a +pm is added in)."""
 
     def __init__(self, kind, lon0=0.0, lat0=0.0, lat1=0.0, lat2=0.0, k0=1.0, x0=0.0, y0=0.0, metres=1.0,
-                 zone=0, north=True):
+                 zone=0, north=True, axis="enu"):
         self.kind, self.lon0, self.lat0, self.lat1, self.lat2 = kind, lon0, lat0, lat1, lat2
         self.k0, self.x0, self.y0, self.metres, self.zone, self.north = k0, x0, y0, metres, zone, north
+        self.axis = axis
 
     @classmethod
-    def utm(cls, zone, north):
-        return cls("utm", zone=zone, north=north)
+    def utm(cls, zone, north, metres=1.0, axis="enu"):
+        return cls("utm", zone=zone, north=north, metres=metres, axis=axis)
+
+    def to_grid(self, x, y):
+        """A file's (x, y) (numbers or numpy arrays) as the filter's grid takes them: eastings and northings in
+        metres."""
+        a, b = x * self.metres, y * self.metres
+        first = -a if self.axis[0] in "ws" else a
+        second = -b if self.axis[1] in "ws" else b
+        return (first, second) if self.axis[0] in "ew" else (second, first)
+
+    def from_grid(self, east, north):
+        """The file's (x, y) of the filter grid's (east, north) in metres: to_grid undone."""
+        first, second = (east, north) if self.axis[0] in "ew" else (north, east)
+        a = -first if self.axis[0] in "ws" else first
+        b = -second if self.axis[1] in "ws" else second
+        return a / self.metres, b / self.metres
 
     def describe(self):
         """As the messages name it: "UTM zone 13N, WGS84" or "AlbersEqualArea lon_0=-96 lat_0=23
         lat_1=29.5 lat_2=45.5 x_0=0 y_0=0, WGS84"."""
+        extra = (f", {self.metres:.10g} m per unit" if self.metres != 1.0 else "") + (
+            f", axes {self.axis}" if self.axis != "enu" else "")
         if self.kind == "utm":
-            return f"UTM zone {self.zone}{'N' if self.north else 'S'}, WGS84"
+            return f"UTM zone {self.zone}{'N' if self.north else 'S'}{extra}, WGS84"
         terms = [f"lon_0={self.lon0:g}", f"lat_0={self.lat0:g}"]
         if self.kind in ("aea", "lcc"):
             terms += [f"lat_1={self.lat1:g}", f"lat_2={self.lat2:g}"]
@@ -70,9 +98,7 @@ class PlaneSystem:
         if self.k0 != 1.0:
             terms.append(f"k_0={self.k0:.10g}")
         terms += [f"x_0={self.x0:.10g}", f"y_0={self.y0:.10g}"]
-        if self.metres != 1.0:
-            terms.append(f"{self.metres:.10g} m per unit")
-        return f"{KINDS[self.kind]} {' '.join(terms)}, WGS84"
+        return f"{KINDS[self.kind]} {' '.join(terms)}{extra}, WGS84"
 
 
 def proj_terms(text):
@@ -81,17 +107,50 @@ def proj_terms(text):
     return dict(term[1:].partition("=")[::2] for term in text.split() if term.startswith("+"))
 
 
+def unit_axes_meridian(terms):
+    """(metres per unit, axes, prime meridian in degrees east of Greenwich) of PROJ terms (proj_terms'), or the
+    reason one of them is not read here (a str)."""
+    try:
+        to_meter = float(terms.get("to_meter", "1"))
+    except ValueError:
+        return f"+to_meter={terms['to_meter']}, which is not a number"
+    # (+units before +to_meter, as PROJ reads them)
+    metres = UNITS.get(terms["units"]) if "units" in terms else to_meter
+    if metres is None:
+        return f"the unit +units={terms['units']} (read here: {', '.join(UNITS)}, or +to_meter)"
+    if not (math.isfinite(metres) and metres > 0):
+        return f"+to_meter={terms['to_meter']}, a unit that is not a finite length above 0"
+    axis = terms.get("axis", "enu")
+    if not (len(axis) == 3 and axis[2] == "u" and sorted(c in "ew" for c in axis[:2]) == [False, True]
+            and all(c in "ewns" for c in axis[:2])):
+        return f"+axis={axis} (read here: an east or west axis and a north or south one, then u: enu, wsu, neu ...)"
+    meridian = terms.get("pm", "greenwich")
+    try:
+        pm = PRIME_MERIDIANS[meridian.lower()] if meridian.lower() in PRIME_MERIDIANS else float(meridian)
+    except ValueError:
+        return f"the prime meridian +pm={meridian} (read here: {', '.join(PRIME_MERIDIANS)}, or degrees)"
+    if not abs(pm) <= 180:
+        return f"the prime meridian +pm={meridian}, which is not a longitude (within 180)"
+    return metres, axis, pm
+
+
 def proj4_system(text):
     """The PlaneSystem of PROJ terms as GDAL writes them (GetLayerProjectionAsProj4), or the
     reason it is not read here (a str): another projection, a unit of no known length, a term
     that is not a number."""
     terms = proj_terms(text)
     name = terms.get("proj", "")
+    read = unit_axes_meridian(terms)
+    if isinstance(read, str):
+        return read
+    metres, axis, pm = read
     if name == "utm":
         zone = terms.get("zone", "")
         if not re.fullmatch(r"[0-9]{1,2}", zone) or not 1 <= int(zone) <= 60:
             return f"a UTM zone {zone!r} (expected 1 to 60)"
-        return PlaneSystem.utm(int(zone), "south" not in terms)
+        if pm:
+            return f"a UTM zone about the prime meridian +pm={terms['pm']} (read here: UTM about Greenwich's)"
+        return PlaneSystem.utm(int(zone), "south" not in terms, metres, axis)
     sphere = spherical(terms)
     if name == "merc" and sphere and sphere_radius(terms) == WEB_RADIUS:
         name, sphere = "webmerc", ""
@@ -101,20 +160,16 @@ def proj4_system(text):
         return (f"{sphere}: a projection of the sphere, whose inverse differs from the ellipsoid's by up to "
                 "kilometres (read here: systems on WGS84, GRS80 or another ellipsoid, and the web maps' Mercator)")
     wanted = {"lon_0": "0", "lat_0": "0", "lat_1": "0", "lat_2": terms.get("lat_1", "0"), "x_0": "0", "y_0": "0",
-              "k_0": terms.get("k", "1"), "lat_ts": "0", "to_meter": "1"}  # (one standard parallel: both at it)
+              "k_0": terms.get("k", "1"), "lat_ts": "0"}  # (one standard parallel: both at it)
     number = {}
     for key, default in wanted.items():
         try:
             number[key] = float(terms.get(key, default))
         except ValueError:
             return f"+{key}={terms[key]}, which is not a number"
-    # (+units before +to_meter, as PROJ reads them)
-    metres = UNITS.get(terms["units"]) if "units" in terms else number["to_meter"]
-    if metres is None:
-        return f"the unit +units={terms['units']} (read here: {', '.join(UNITS)}, or +to_meter)"
     bad = next((key for key, value in number.items() if not math.isfinite(value)), None)
-    if bad or not (number["k_0"] > 0 and metres > 0):
-        return f"+{bad}={terms.get(bad, wanted[bad])}, which is not finite" if bad else "a scale or unit of 0 or less"
+    if bad or not number["k_0"] > 0:
+        return f"+{bad}={terms.get(bad, wanted[bad])}, which is not finite" if bad else "a scale of 0 or less"
     beyond = next((key for key in ("lat_0", "lat_1", "lat_2", "lat_ts") if not abs(number[key]) <= 90), None)
     if beyond or not abs(number["lon_0"]) <= 360:
         key = beyond or "lon_0"
@@ -132,14 +187,16 @@ def proj4_system(text):
             e2 = WGS84_E2 if name == "merc" else 0.0
             sin_ts = math.sin(math.radians(number["lat_ts"]))
             number["k_0"] = math.cos(math.radians(number["lat_ts"])) / math.sqrt(1 - e2 * sin_ts * sin_ts)
-    return PlaneSystem(name, number["lon_0"], number["lat_0"], number["lat_1"], number["lat_2"], number["k_0"],
-                       number["x_0"], number["y_0"], metres)
+    # (+lon_0 is counted from +pm: Paris's NTF Lambert zones have lon_0=0 there, 2.337 degrees east of Greenwich)
+    return PlaneSystem(name, number["lon_0"] + pm, number["lat_0"], number["lat_1"], number["lat_2"], number["k_0"],
+                       number["x_0"], number["y_0"], metres, axis=axis)
 
 
-def in_utm_range(x, y):
-    """Whether (x, y) can be an easting and northing of a UTM zone (UTM_RANGE; beyond it the
-    projection's inverse gives a place, but not one the zone holds)."""
-    return 0.0 < x < 1e6 and 0.0 <= y <= 1e7
+def in_utm_range(system, x, y):
+    """Whether a file's (x, y) in system (a UTM zone's PlaneSystem: its unit and axes) can be an easting and northing
+    of the zone (UTM_RANGE; beyond it the projection's inverse gives a place, but not one the zone holds)."""
+    east, north = system.to_grid(x, y)
+    return 0.0 < east < 1e6 and 0.0 <= north <= 1e7
 
 
 def declared_system(reader, rings, path):
@@ -164,12 +221,13 @@ def declared_system(reader, rings, path):
         csv_input.fail(f"{path}: declares a projected coordinate system with {system}; its coordinates are metres, "
                        f"not longitude/latitude: reproject the file (e.g. ogr2ogr -t_srs EPSG:4326 out.shp in.shp) "
                        f"(the file's system: {proj4.strip()})")
-    outside = next(((r, k, p) for r, ring in enumerate(rings) for k, p in enumerate(ring) if not in_utm_range(*p)),
+    outside = next(((r, k, p) for r, ring in enumerate(rings) for k, p in enumerate(ring)
+                    if not in_utm_range(system, *p)),
                    None) if system.kind == "utm" else None
     if outside:
         csv_input.fail(f"{path}: ring {outside[0]} vertex {outside[1]} ({outside[2][0]:.15g}, {outside[2][1]:.15g}) "
                        f"is not an easting and northing of a UTM zone ({UTM_RANGE}), as the file declares "
-                       "(counted from 0)")
+                       f"({system.describe()}; counted from 0)")
     return system
 
 
@@ -206,26 +264,28 @@ def crs_system(crs, option, gdal_messages=None, lonlat="", datum=""):
     if not code and not text.startswith("+proj="):
         csv_input.fail(f"{option} {crs!r}: expected EPSG:CODE (such as EPSG:5070) or PROJ terms starting "
                        f"+proj= (such as {example})")
+    wkt = ""
     if code:
         if gdal_messages:
             with gdal_messages.capturing():
-                text = epsg_proj4(int(code.group(1)))
+                found = epsg_system(int(code.group(1)))
             gdal_messages.new()  # (read: they are not the catchment's)
         else:
-            text = epsg_proj4(int(code.group(1)))
-        if not text:
+            found = epsg_system(int(code.group(1)))
+        if found.successor:
+            csv_input.fail(f"{option} {crs!r}: GDAL gives another system in its place, EPSG:{found.successor[0]} "
+                           f"({found.successor[1]!r}), as it does for a deprecated code, and the two may differ (as "
+                           "EPSG:2163, on a sphere, and its successor EPSG:9311, on the Clarke 1866 ellipsoid, do): "
+                           "give the system as PROJ terms (+proj=...)")
+        if not found.proj4:
             csv_input.fail(f"{option} {crs!r}: GDAL's database has no such EPSG code")
-        if isinstance(text, tuple):
-            csv_input.fail(f"{option} {crs!r}: GDAL gives another system in its place, EPSG:{text[0]} "
-                           f"({text[1]!r}), as it does for a deprecated code, and the two may differ (as EPSG:2163, "
-                           "on a sphere, and its successor EPSG:9311, on the Clarke 1866 ellipsoid, do): give the "
-                           "system as PROJ terms (+proj=...)")
+        text, wkt = found.proj4, found.wkt
     system = proj4_system(text)
     if isinstance(system, str) and "+proj=longlat" in text.split():
         system = f"a geographic system (longitude/latitude): {lonlat}"
     if isinstance(system, str):
         csv_input.fail(f"{option} {crs!r}: {system} (give EPSG:CODE or PROJ terms such as {example})")
-    other = other_ellipsoid(text)
+    other = other_ellipsoid(text) or other_datum(wkt)
     if other:
         print(f"{option} {crs!r}: {other}; {datum}, without the datum shift: they may lie tens to hundreds of metres "
               "off (reproject them to WGS84 where that matters)", file=sys.stderr)
@@ -259,9 +319,36 @@ def sphere_radius(terms):
         return None
 
 
+# Datums that lie within a metre or two of WGS84 (so a file's coordinates on them are taken as WGS84's), as GDAL's
+# WKT names them: the ITRF-aligned national realisations.
+WGS84_LIKE_DATUMS = ("WGS_1984", "North_American_Datum_1983", "NAD83", "European_Terrestrial_Reference",
+                     "ETRS", "ETRF", "International_Terrestrial_Reference", "ITRF", "IGS",
+                     "Geocentric_Datum_of_Australia", "GDA", "New_Zealand_Geodetic_Datum_2000", "Hartebeesthoek94",
+                     "China_2000", "Reseau_Geodesique_Francais_1993", "RGF93", "SIRGAS",
+                     "Sistema_de_Referencia_Geocentrico", "Japanese_Geodetic_Datum_20", "Korea_Geodetic_Datum_2002",
+                     "Geodetic_Datum_of_Malaysia_2000")
+
+
+def other_datum(wkt):
+    """"the datum 'Israel_1993' (ellipsoid 'GRS 1980')" where a WKT declares a datum on an ellipsoid other than
+    WGS84's or GRS80's (an older datum: NAD27, ED50, ...), or one not known here to lie within a metre or two of
+    WGS84 (Israel 1993 is on GRS80 but some 80 m away); else ""."""
+    datum = re.search(r'DATUM\["([^"]*)"', wkt)
+    ellipsoid = re.search(r'(?:SPHEROID|ELLIPSOID)\["([^"]*)",\s*([0-9.eE+]+)', wkt)
+    older = ellipsoid and abs(float(ellipsoid.group(2)) - 6378137.0) > 0.5
+    # (an ESRI .prj names them D_WGS_1984, D_North_American_1983)
+    unknown = datum and not re.sub(r"^D_", "", datum.group(1)).startswith(WGS84_LIKE_DATUMS + ("North_American_1983",))
+    if not (older or unknown):
+        return ""
+    name = datum.group(1) if datum else ellipsoid.group(1)
+    return f"the datum {name!r}" + (f" (ellipsoid {ellipsoid.group(1)!r})" if ellipsoid else "") + (
+        "" if older else ", not one known here to lie within a metre or two of WGS84's")
+
+
 def other_ellipsoid(proj4):
     """"the datum NAD27" or "the ellipsoid airy" where PROJ terms name a datum or ellipsoid other
-    than WGS84's or GRS80's (NAD83, ETRS89: within a metre or two of WGS84); else ""."""
+    than WGS84's or GRS80's (NAD83, ETRS89: within a metre or two of WGS84), or a shift from WGS84
+    (+towgs84 other than zeros); else ""."""
     terms = proj_terms(proj4)
     if terms.get("datum", "WGS84") not in ("WGS84", "NAD83"):
         return f"the datum {terms['datum']}"
@@ -269,14 +356,24 @@ def other_ellipsoid(proj4):
         return f"the ellipsoid {terms['ellps']}"
     if "a" in terms and terms["a"] != "6378137":
         return f"an ellipsoid of semi-major axis {terms['a']} m"
+    try:
+        shifted = any(float(value) != 0.0 for value in terms.get("towgs84", "0").split(","))
+    except ValueError:
+        shifted = True
+    if shifted:
+        # (Israel 1993, EPSG:2039, is on GRS80 but some 80 m from WGS84)
+        return f"a datum shifted from WGS84's by +towgs84={terms['towgs84']}"
     return ""
 
 
-def epsg_proj4(code):
-    """The PROJ terms of an EPSG code from GDAL's database (through vtkGDALVectorReader: a GeoJSON
-    of one point that declares the code); "" for a code that GDAL does not know (it then reads the
-    file as lon/lat, without the code's authority); (other code, its name) where GDAL gives
-    another code's system in its place (a deprecated code's successor)."""
+# What GDAL's database gives for an EPSG code: its PROJ terms and WKT ("" for a code it does not know), and
+# successor: (code, name) where it gives another code's system in its place (a deprecated code's successor).
+EpsgSystem = collections.namedtuple("EpsgSystem", "proj4 wkt successor")
+
+
+def epsg_system(code):
+    """The EpsgSystem of an EPSG code, from GDAL's database (through vtkGDALVectorReader: a GeoJSON of one point
+    that declares the code)."""
     import json
     import os
     import tempfile
@@ -295,10 +392,10 @@ def epsg_proj4(code):
         authority = re.findall(r'AUTHORITY\["EPSG","([0-9]+)"\]\]$', declared)
         if authority and authority[0] != str(code) and declared.startswith("PROJCS"):
             name = re.match(r'[A-Z]+\["([^"]*)"', declared)
-            return authority[0], name.group(1) if name else ""
+            return EpsgSystem("", declared, (authority[0], name.group(1) if name else ""))
         if authority != [str(code)]:
-            return ""  # (a code GDAL does not know gives its default, WGS84's lon/lat)
-        return reader.GetLayerProjectionAsProj4(0) or ""
+            return EpsgSystem("", "", None)  # (a code GDAL does not know gives its default, WGS84's lon/lat)
+        return EpsgSystem(reader.GetLayerProjectionAsProj4(0) or "", declared, None)
 
 
 def polydata_blocks(data):
@@ -368,8 +465,9 @@ def projection_filter(system, inverse):
         projection.SetFalseNorthing(system.y0)
         projection.SetScaleFactor(system.k0)
         # (laea's lat_0 is its centre, set above; PROJ's Mercators start at the equator whatever lat_0 says)
-        projection.SetUseLatitudeOfOrigin(system.kind in ("aea", "lcc", "tmerc"))
-        projection.SetLatitudeOfOrigin(system.lat0)
+        if system.kind in ("aea", "lcc", "tmerc"):
+            projection.UseLatitudeOfOriginOn()
+            projection.SetLatitudeOfOrigin(system.lat0)
     projection.SetInverse(inverse)
     return projection
 
@@ -380,20 +478,18 @@ def projection_filter(system, inverse):
 MOST_METRES = 4.0e7
 
 
-def into_metres(data, system, where):
-    """Scales data's points (changed in place) from system's unit to metres, the unit of the filter's grid.
-    A point beyond MOST_METRES from the false origin ends the script, where(point index) naming where it
-    came from (UTM, in metres, is checked for its range where its file is read)."""
+def into_grid(data, system, where):
+    """Moves data's points (changed in place) from system's unit and axes to the filter's grid: eastings and
+    northings in metres. A point beyond MOST_METRES from the false origin ends the script, where(point index)
+    naming where it came from (UTM's range is checked where its file is read)."""
     from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
     from vtkmodules.vtkCommonCore import vtkPoints
 
-    if system.kind == "utm":
-        return
     for leaf in polydata_blocks(data):
         if leaf.GetPoints() is None:
             continue
         xyz = vtk_to_numpy(leaf.GetPoints().GetData()).astype(float)  # (a copy, in doubles)
-        xyz[:, :2] *= system.metres
+        xyz[:, 0], xyz[:, 1] = system.to_grid(xyz[:, 0].copy(), xyz[:, 1].copy())
         off = abs(xyz[:, :2] - (system.x0, system.y0)) / system.k0
         far = (~(off <= MOST_METRES)).any(axis=1).nonzero()[0]  # (NaN too)
         if len(far):
@@ -410,7 +506,7 @@ def to_lonlat(data, system, where, densify=False):
     first when densify is set. An error (a point the projection cannot hold, or one beyond
     MOST_METRES from the false origin) ends the script, where(point index) naming where that point
     came from."""
-    into_metres(data, system, where)
+    into_grid(data, system, where)
     if densify:
         densify_edges(data, EDGE_METRES)
     projection = projection_filter(system, True)
@@ -420,8 +516,8 @@ def to_lonlat(data, system, where, densify=False):
         point = re.search(r"\bpoint (\d+)(?: \(([^,()]+), ([^,()]+)\))?", errors[0])
         message = errors[0]
         if point and point.group(3):
-            # (the filter names the point by its index there, and in metres: said in the file's unit)
-            x, y = (float(point.group(axis + 2)) / system.metres for axis in (0, 1))
+            # (the filter names the point by its index there, and in its grid: said in the file's unit and axes)
+            x, y = system.from_grid(float(point.group(2)), float(point.group(3)))
             message = message.replace(point.group(0), f"the point ({x:.15g}, {y:.15g})")
         csv_input.fail(f"{where(int(point.group(1))) if point else where(-1)}: as {system.describe()}: {message}")
     return projection.GetOutputDataObject(0)

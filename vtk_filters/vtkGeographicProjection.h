@@ -182,7 +182,8 @@ public:
    * (default 1; real systems' are within a few parts in a thousand of 1), LatitudeOfOrigin in
    * degrees (default 0, read only with UseLatitudeOfOrigin on, default off: a LatitudeOfOrigin
    * other than 0 set then is warned of, unused). A latitude of origin is taken by the conics, the
-   * transverse Mercator and the Mercators (at the update, another projection with
+   * transverse Mercator and the Mercators (PROJ's merc ignores +lat_0: leave it off for a PROJ
+   * Mercator; at the update, another projection with
    * UseLatitudeOfOrigin on is an error: UTM's grid is fixed, the azimuthal projections' origin is
    * their centre); the grid applies on top of UTM's own. They are used with ParametersFromData on
    * or off, and written into the record (keys x0, y0, k0, origin_lat); with Inverse on and a record

@@ -2161,6 +2161,15 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
         assert_close(system("+proj=merc +lat_ts=30 +k=0.5 +datum=WGS84").k0, 0.8667510026, 1e-10, "+lat_ts, +k")
         assert_that(system("+proj=laea +lat_0=52 +k=0.5 +datum=WGS84").k0 == 1.0, "laea's +k")
         assert_that(system("+proj=aea +lat_1=29.5 +lat_2=45.5 +k_0=0.9 +datum=WGS84").k0 == 1.0, "aea's +k_0")
+        # +axis: a file's (3, 4) as eastings and northings (westings and southings; northings first), and back;
+        # +pm: +lon_0 counted from the prime meridian.
+        for axis, grid in (("enu", (3, 4)), ("wsu", (-3, -4)), ("neu", (4, 3)), ("nwu", (-4, 3)), ("swu", (-4, -3))):
+            plane = system(f"+proj=tmerc +lon_0=10 +axis={axis} +units=km +datum=WGS84")
+            moved = plane.to_grid(3.0, 4.0)
+            assert_that(moved == (grid[0] * 1e3, grid[1] * 1e3) and plane.from_grid(*moved) == (3.0, 4.0),
+                        f"+axis={axis}: {moved}, back {plane.from_grid(*moved)}")
+        assert_close(system("+proj=tmerc +lon_0=1 +pm=paris +ellps=WGS84").lon0, 3.337229166667, 1e-12, "+pm")
+        assert_close(system("+proj=tmerc +lon_0=1 +pm=-3.5 +ellps=WGS84").lon0, -2.5, 1e-12, "+pm in degrees")
         assert_that(system("+proj=webmerc +k=0.5 +lat_ts=30").k0 == 1.0, "webmerc's +k and +lat_ts")
         for terms in ("+proj=laea +lat_0=52 +a=6378137", "+proj=aea +a=6371000 +es=0", "+proj=laea +R_A +ellps=GRS80"):
             assert_that("a projection of the sphere" in system(terms), f"{terms}: {system(terms)}")
@@ -2786,19 +2795,29 @@ def test_project_gauges_names_a_bad_gauge_by_its_line():
 
 
 def test_project_gauges_writes_a_projected_systems_own_numbers():
-    # --crs gives the gauges in a projected system's own numbers, false origin, scale and unit included, as
-    # PROJ 9.1.1 gives them (cs2cs EPSG:4326 EPSG:5070, and EPSG:2232, Colorado Central in US feet, whose
-    # NAD83 PROJ takes as WGS84): the first two Colorado gauges, TEEC NOS POS (109.1 W, 36.9 N) and AKRON 4 E
-    # (103.15 W, 40.15 N). EPSG:2232 goes in by its code and by its PROJ terms alike.
+    # --crs gives the gauges in a projected system's own numbers, false origin, scale, unit, axes and prime meridian
+    # included, as PROJ 9.1.1 gives them (cs2cs EPSG:4326 EPSG:5070, EPSG:2232, Colorado Central in US feet, whose
+    # NAD83 PROJ takes as WGS84, and EPSG:2053, South Africa's Lo29 in westings and southings; PROJ terms on
+    # WGS84 for the rest): the first two Colorado gauges, TEEC NOS POS (109.1 W, 36.9 N) and AKRON 4 E (103.15 W,
+    # 40.15 N), or a gauge of each system's own. EPSG:2232 goes in by its code and by its PROJ terms alike.
     state_plane = ("+proj=lcc +lat_0=37.8333333333333 +lon_0=-105.5 +lat_1=39.75 +lat_2=38.45 "
                    "+x_0=914401.828803658 +y_0=304800.609601219 +datum=NAD83 +units=us-ft +no_defs")
-    cases = [("EPSG:5070", [(-1152789.024, 1619131.577), (-603217.884, 1926486.744)], 1.0),
-             ("EPSG:2232", [(1946885.106, 680886.132), (3656935.053, 1852284.842)], 1200.0 / 3937.0),
-             (state_plane, [(1946885.106, 680886.132), (3656935.053, 1852284.842)], 1200.0 / 3937.0)]
+    colorado = [(-1152789.024, 1619131.577), (-603217.884, 1926486.744)]
+    feet = [(1946885.106, 680886.132), (3656935.053, 1852284.842)]
+    cases = [("EPSG:5070", None, colorado, 1.0),
+             ("EPSG:2232", None, feet, 1200.0 / 3937.0),
+             (state_plane, None, feet, 1200.0 / 3937.0),
+             ("EPSG:2053", "A,29.5,-26.0", [(-50059.251, 2876930.325)], -1.0),  # (westings and southings)
+             ("+proj=utm +zone=13 +ellps=GRS80 +units=us-ft", "A,-104.99,39.74", [(1643227.769, 14432059.254)],
+              1200.0 / 3937.0),
+             # (Paris's NTF Lambert zone II's terms on WGS84: its +lon_0=0 is the Paris meridian, 2.337 E)
+             ("+proj=lcc +lat_1=46.8 +lat_0=46.8 +lon_0=0 +k_0=0.99987742 +x_0=600000 +y_0=2200000 +pm=paris "
+              "+ellps=WGS84", "A,2.35,48.85", [(600937.759, 2427954.266)], 1.0)]
     with tempfile.TemporaryDirectory() as out:
-        for crs, expected, metres in cases:
-            status, stdout, stderr = run_example("project_gauges.py", "--out", out, "--crs", crs)
-            assert_that(status == 0, f"--crs {crs}: exit status {status}: {stderr}")
+        for crs, row, expected, metres in cases:
+            stations = ["--stations", write(out, "one.csv", f"station_id,lon,lat\n{row}\n")] if row else []
+            status, stdout, stderr = run_example("project_gauges.py", "--out", out, "--crs", crs, *stations)
+            assert_that(status == 0 and not stderr, f"--crs {crs}: exit status {status}: {stderr}")
             with open(os.path.join(out, "gauges_projected.csv")) as f:
                 rows = list(csv.DictReader(f))[:2]
             for row, (x, y) in zip(rows, expected):
@@ -2806,12 +2825,20 @@ def test_project_gauges_writes_a_projected_systems_own_numbers():
                 assert_that(abs(got[0] - x) < 2e-3 and abs(got[1] - y) < 2e-3
                             and abs(got[2] - x * metres) < 2e-3 and abs(got[3] - y * metres) < 2e-3,
                             f"--crs {crs}: {row['name']} at {got}, PROJ's {x}, {y} (units of {metres} m)")
-        # A geographic system, an unknown code, and --crs with --projection are named.
+        # A geographic system, an unknown code, --crs with --projection and an axis or meridian not read are
+        # named; a datum some way from WGS84 on its ellipsoid (Israel 1993, EPSG:2039: 78 m) is warned of.
+        israel = write(out, "israel.csv", "station_id,lon,lat\nA,34.78,32.08\n")
         for arguments, expected in ((("--crs", "EPSG:4326"), "--crs 'EPSG:4326': a geographic system"),
                                     (("--crs", "EPSG:999999"), "--crs 'EPSG:999999': GDAL's database has no such"),
-                                    (("--crs", "EPSG:5070", "--projection", "utm"), "not allowed with argument")):
+                                    (("--crs", "EPSG:5070", "--projection", "utm"), "not allowed with argument"),
+                                    (("--crs", "+proj=tmerc +axis=eeu"), "+axis=eeu (read here: an east or west"),
+                                    (("--crs", "+proj=tmerc +pm=mars"), "the prime meridian +pm=mars (read here:"),
+                                    (("--crs", "EPSG:2039", "--stations", israel),
+                                     "--crs 'EPSG:2039': the datum 'Israel_1993' (ellipsoid 'GRS 1980'), not one "
+                                     "known here to lie within a metre or two of WGS84's")):
             status, _, stderr = run_example("project_gauges.py", "--out", os.path.join(out, "o"), *arguments)
-            assert_that(status != 0 and expected in stderr, f"{arguments}: exit status {status}: {stderr}")
+            assert_that((status != 0) == (arguments[1] != "EPSG:2039") and expected in stderr,
+                        f"{arguments}: exit status {status}: {stderr}")
 
 
 def test_progress_into_a_log_is_lines_of_its_own():
