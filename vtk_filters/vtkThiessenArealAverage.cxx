@@ -1258,7 +1258,8 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
                     << " gauges lies inside the catchment: every weight goes to gauges outside "
                        "it, as Thiessen's rule gives them. If that is unexpected, check that the "
                        "gauges are longitude, latitude in degrees (a west longitude without its "
-                       "minus sign, or the two swapped).");
+                       "minus sign, or the two swapped; for gauges made longitude, latitude from "
+                       "projected coordinates, the projection and its grid those of their system).");
   }
 
   in.Times.clear();
