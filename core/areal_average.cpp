@@ -415,13 +415,14 @@ struct ThiessenArealAverage::State
       " has an infinite value");
   }
 
-  /// The plane's points in lon/lat.
+  /// The plane's points in lon/lat (points of the catchment's clipped tiles: within the image of
+  /// the catchment, so each has its place).
   void Unproject(const std::vector<Point2>& plane, std::vector<Point2>& lonlat) const
   {
     lonlat.resize(plane.size());
     for (std::size_t i = 0; i < plane.size(); ++i)
     {
-      lonlat[i] = this->Projector->Inverse(plane[i]);
+      lonlat[i] = this->Projector->InverseOfImage(plane[i]);
     }
   }
 

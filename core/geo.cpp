@@ -734,6 +734,13 @@ Point2 GeographicProjection::Forward(const Point2& lonlat, long long id) const
 
 Point2 GeographicProjection::Inverse(const Point2& grid, long long id) const
 {
+  const Point2 lonlat = this->InverseOfImage(grid, id);
+  this->CheckProjectsBack(grid, lonlat, id);
+  return lonlat;
+}
+
+Point2 GeographicProjection::InverseOfImage(const Point2& grid, long long id) const
+{
   if (!std::isfinite(grid.x) || !std::isfinite(grid.y))
   {
     throw InputError(DescribePoint("point", id, grid) + " has a NaN or infinite coordinate");
@@ -795,7 +802,6 @@ Point2 GeographicProjection::Inverse(const Point2& grid, long long id) const
       ProjectionKindName(Params.Kind) + " projection");
   }
   lonlat.x = lon0 + LongitudeDifference(lon0, lonlat.x);
-  this->CheckProjectsBack(grid, lonlat, id);
   return lonlat;
 }
 

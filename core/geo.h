@@ -149,6 +149,10 @@ public:
   /// not project back to it: an Albers point past the pole's arc, a transverse Mercator point
   /// beyond 45 degrees of the central meridian).
   Point2 Inverse(const Point2& xy, long long id = -1) const;
+  /// Inverse without the test that the place projects back, for points known to have one: those
+  /// within a polygon of projected places (a catchment's clipped tiles), where the test would
+  /// double the cost. Still throws for a NaN point or one beyond 1e8 m.
+  Point2 InverseOfImage(const Point2& xy, long long id = -1) const;
 
 private:
   /// Throws InputError naming the point when the forward projection of its inverse, lonlat, does

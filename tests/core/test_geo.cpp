@@ -962,6 +962,10 @@ TEST(Geo, PointsPastAProjectionsEdgeHaveNoPlace)
   EXPECT_TRUE(
     std::regex_search(far, std::regex(" lies [0-9]+\\.[0-9] km from the central meridian")))
     << far;
+  // InverseOfImage, for points known to have a place, is the inverse without that test.
+  const Point2 boulder = albers.Forward({ -105.27, 40.01 });
+  EXPECT_EQ(albers.InverseOfImage(boulder).x, albers.Inverse(boulder).x);
+  EXPECT_EQ(albers.InverseOfImage(boulder).y, albers.Inverse(boulder).y);
   const Point2 cut = albers.Forward({ 84.0, 40.0 }); // (half a turn from -96)
   for (const Point2& edge : { cut, Point2{ -cut.x, cut.y } })
   {
