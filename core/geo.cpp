@@ -39,6 +39,9 @@ constexpr double MaxProjectedMagnitude = 1.0e8;
 // projection's edge (an Albers point past the pole's arc, a transverse Mercator easting of 3e7 m),
 // whose inverse GeographicLib still gives as a place (a pole, a meridian 90 degrees away).
 constexpr double InverseRoundTripMetres = 1e-3;
+// How near a projection's edge (the transverse Mercator's 45 degrees, a conic's cut) an inverse's
+// longitude counts as on it: its rounding is some ulps of 180.
+constexpr double EdgeDegrees = 1e-9;
 // The scale factors a grid may have (ProjectionParameters::ScaleFactor).
 constexpr double MinGridScale = 0.1;
 constexpr double MaxGridScale = 10.0;
@@ -619,17 +622,33 @@ void GeographicProjection::CheckProjectsBack(const Point2& grid,
   {
     return;
   }
+  const double lon0 = Impl->CentralMeridian;
+  const double offset = LongitudeDifference(lon0, lonlat.x);
+  Point2 probe = lonlat;
+  const bool transverse =
+    Params.Kind == ProjectionKind::TransverseMercator || Params.Kind == ProjectionKind::UTM;
+  if (transverse && std::abs(lonlat.y) > 90.0 - EdgeDegrees)
+  {
+    probe.x = lon0; // (the pole is one point, whose longitude the inverse may give as lon0 + 180)
+  }
+  else if (transverse && std::abs(offset) > TransverseMercatorMaxLongitudeOffset &&
+    std::abs(offset) < TransverseMercatorMaxLongitudeOffset + EdgeDegrees)
+  {
+    // (a point Forward made on the 45-degree edge may come back some ulps beyond it)
+    probe.x = lon0 + std::copysign(TransverseMercatorMaxLongitudeOffset, offset);
+  }
   Point2 back;
   try
   {
-    back = this->Forward(lonlat);
+    back = this->Forward(probe);
   }
   catch (const InputError&)
   {
     back = { HUGE_VAL, HUGE_VAL }; // (beyond 45 degrees of a transverse Mercator's meridian)
   }
-  // (a conic's cut, half a turn from the meridian, has two edges: lon0 + 180 goes to one)
-  const bool onCut = std::abs(LongitudeDifference(Impl->CentralMeridian, lonlat.x)) == 180.0;
+  // (a conic's cut, half a turn from the meridian, has two edges, and an inverse there may come
+  // back some ulps to either side: its forward may land on the other edge)
+  const bool onCut = std::abs(offset) > 180.0 - EdgeDegrees;
   const double mirroredX = 2.0 * Params.FalseEasting - back.x; // (about the meridian's x)
   if (!(std::hypot(back.x - grid.x, back.y - grid.y) <= InverseRoundTripMetres) &&
     !(onCut && std::hypot(mirroredX - grid.x, back.y - grid.y) <= InverseRoundTripMetres))

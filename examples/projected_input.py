@@ -41,7 +41,7 @@ PRIME_MERIDIANS = {"greenwich": 0.0, "lisbon": -9.131906111111, "paris": 2.33722
                    "bogota": -74.080916666667, "madrid": -3.687938888889, "rome": 12.452333333333,
                    "bern": 7.439583333333, "jakarta": 106.807719444444, "ferro": -17.666666666667,
                    "brussels": 4.367975, "stockholm": 18.058277777778, "athens": 23.7163375,
-                   "oslo": 10.722916666667, "copenhagen": 12.57788}
+                   "oslo": 10.722916666667, "copenhagen": 12.577875}
 
 UTM_RANGE = "eastings 0 to 1,000,000 m, northings 0 to 10,000,000 m"
 
@@ -320,13 +320,15 @@ def sphere_radius(terms):
 
 
 # Datums that lie within a metre or two of WGS84 (so a file's coordinates on them are taken as WGS84's), as GDAL's
-# WKT names them: the ITRF-aligned national realisations.
-WGS84_LIKE_DATUMS = ("WGS_1984", "North_American_Datum_1983", "NAD83", "European_Terrestrial_Reference",
-                     "ETRS", "ETRF", "International_Terrestrial_Reference", "ITRF", "IGS",
-                     "Geocentric_Datum_of_Australia", "GDA", "New_Zealand_Geodetic_Datum_2000", "Hartebeesthoek94",
-                     "China_2000", "Reseau_Geodesique_Francais_1993", "RGF93", "SIRGAS",
-                     "Sistema_de_Referencia_Geocentrico", "Japanese_Geodetic_Datum_20", "Korea_Geodetic_Datum_2002",
-                     "Geodetic_Datum_of_Malaysia_2000")
+# WKT names them: the ITRF-aligned national realisations (PROJ takes each as WGS84 without a shift). A name holding
+# one of these is such a datum.
+WGS84_LIKE_DATUMS = ("WGS_1984", "North_American_Datum_1983", "North_American_1983", "NAD83", "ETRS", "ETRF",
+                     "European_Terrestrial_Reference", "Terrestrial_Reference", "ITRF", "IGS", "SIRGAS",
+                     "Sistema_de_Referencia", "Geocentric_Datum_of_Australia", "GDA", "Geocentric_datum_of_Korea",
+                     "Korea_2000", "Marco_Geocentrico", "New_Zealand_Geodetic_Datum_2000", "Hartebeesthoek94",
+                     "China_2000", "Reseau_Geodesique_Francais_1993", "RGF93", "Japanese_Geodetic_Datum_20",
+                     "Geodetic_Datum_of_Malaysia_2000", "SWEREF99", "SVY21", "Latvia_1992", "Estonia_1997",
+                     "Lithuania_1994")
 
 
 def other_datum(wkt):
@@ -336,8 +338,8 @@ def other_datum(wkt):
     datum = re.search(r'DATUM\["([^"]*)"', wkt)
     ellipsoid = re.search(r'(?:SPHEROID|ELLIPSOID)\["([^"]*)",\s*([0-9.eE+]+)', wkt)
     older = ellipsoid and abs(float(ellipsoid.group(2)) - 6378137.0) > 0.5
-    # (an ESRI .prj names them D_WGS_1984, D_North_American_1983)
-    unknown = datum and not re.sub(r"^D_", "", datum.group(1)).startswith(WGS84_LIKE_DATUMS + ("North_American_1983",))
+    # (an ESRI .prj names them D_WGS_1984, D_North_American_1983; Mexico_ITRF2008 holds its frame's name)
+    unknown = datum and not any(name in datum.group(1) for name in WGS84_LIKE_DATUMS)
     if not (older or unknown):
         return ""
     name = datum.group(1) if datum else ellipsoid.group(1)

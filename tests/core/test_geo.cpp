@@ -962,6 +962,43 @@ TEST(Geo, PointsPastAProjectionsEdgeHaveNoPlace)
   EXPECT_TRUE(
     std::regex_search(far, std::regex(" lies [0-9]+\\.[0-9] km from the central meridian")))
     << far;
+  // Points Forward makes on the edges go back: on a conic's cut (an inverse there may come back
+  // some ulps to either side of it, whose forward lands on the other edge), on the transverse
+  // Mercator's 45 degrees, and at its pole (whose longitude the inverse may give as lon0 + 180).
+  const std::vector<std::pair<std::string, double>> edges = {
+    { "projection=LambertConformalConic lon0=0 lat1=30 lat2=60", 180.0 },
+    { "projection=LambertConformalConic lon0=10 lat1=35 lat2=65 x0=4000000 y0=2800000 "
+      "origin_lat=52",
+      -170.0 },
+    { "projection=LambertConformalConic lon0=145 lat1=-18 lat2=-36", -35.0 },
+    { "projection=AlbersEqualArea lon0=0 lat1=30 lat2=60", 180.0 },
+    { "projection=AlbersEqualArea lon0=-96 lat1=29.5 lat2=45.5 origin_lat=23", 84.0 },
+    { "projection=AlbersEqualArea lon0=147 lat1=-40 lat2=-20 k0=0.9996", -33.0 },
+    { "projection=TransverseMercator lon0=-96", -51.0 },
+    { "projection=TransverseMercator lon0=-96", -141.0 },
+  };
+  for (const auto& [record, lon] : edges)
+  {
+    const GeographicProjection projection(ProjectionParameters::FromString(record));
+    int refused = 0;
+    for (double lat = -80.0; lat <= 80.0; lat += 0.1)
+    {
+      refused += ErrorOf(
+                   [&]() {
+                     projection.Inverse(projection.Forward({ lon, lat }));
+                   })
+                   .empty()
+        ? 0
+        : 1;
+    }
+    EXPECT_EQ(refused, 0) << record << " at longitude " << lon;
+  }
+  for (const auto& [record, lon0] : { std::make_pair("projection=UTM zone=33 north=1", 15.0),
+         std::make_pair("projection=TransverseMercator lon0=173", 173.0) })
+  {
+    const GeographicProjection projection(ProjectionParameters::FromString(record));
+    EXPECT_NEAR(projection.Inverse(projection.Forward({ lon0, 90.0 })).y, 90.0, 1e-9) << record;
+  }
   // InverseOfImage, for points known to have a place, is the inverse without that test.
   const Point2 boulder = albers.Forward({ -105.27, 40.01 });
   EXPECT_EQ(albers.InverseOfImage(boulder).x, albers.Inverse(boulder).x);

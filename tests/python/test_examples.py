@@ -2170,6 +2170,17 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
                         f"+axis={axis}: {moved}, back {plane.from_grid(*moved)}")
         assert_close(system("+proj=tmerc +lon_0=1 +pm=paris +ellps=WGS84").lon0, 3.337229166667, 1e-12, "+pm")
         assert_close(system("+proj=tmerc +lon_0=1 +pm=-3.5 +ellps=WGS84").lon0, -2.5, 1e-12, "+pm in degrees")
+        # Datums as GDAL's WKT names them: those PROJ takes as WGS84 are not warned of, older and shifted ones are.
+        other_datum = import_example("projected_input").other_datum
+        for datum, ellipsoid, warned in (("SWEREF99", "GRS 1980\",6378137", False),
+                                         ("Mexico_ITRF2008", "GRS 1980\",6378137", False),
+                                         ("Geocentric_datum_of_Korea", "GRS 1980\",6378137", False),
+                                         ("D_North_American_1983", "GRS_1980\",6378137", False),
+                                         ("Israel_1993", "GRS 1980\",6378137", True),
+                                         ("CH1903+", "Bessel 1841\",6377397.155", True),
+                                         ("Amersfoort", "Bessel 1841\",6377397.155", True)):
+            said = other_datum(f'GEOGCS["x",DATUM["{datum}",SPHEROID["{ellipsoid},298.25]]]')
+            assert_that(bool(said) == warned and (not said or datum in said), f"datum {datum}: {said!r}")
         assert_that(system("+proj=webmerc +k=0.5 +lat_ts=30").k0 == 1.0, "webmerc's +k and +lat_ts")
         for terms in ("+proj=laea +lat_0=52 +a=6378137", "+proj=aea +a=6371000 +es=0", "+proj=laea +R_A +ellps=GRS80"):
             assert_that("a projection of the sphere" in system(terms), f"{terms}: {system(terms)}")
