@@ -104,8 +104,10 @@ def main(argv=None):
     vtkGeographicProjection = csv_input.import_tessera().vtkGeographicProjection
     from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
-    system = projected_input.crs_system(args.crs, "--crs", lonlat="the gauges are in it already; give a projected "
-                                        "system", datum="the gauges' lon/lat are taken as on WGS84's") if args.crs else None
+    system = None
+    if args.crs:
+        system = projected_input.crs_system(args.crs, "--crs", lonlat="the gauges are in it already; give a "
+                                            "projected system", datum="the gauges' lon/lat are taken as on WGS84's")
     csv_input.output_directory(args.out)
     gauges, lines = read_gauges(args.stations)
     if gauges.GetNumberOfPoints() == 0:

@@ -7,10 +7,11 @@ aea (Albers equal-area conic), lcc (Lambert conformal conic, with one or two sta
 laea (Lambert azimuthal equal-area, as LAEA Europe, EPSG:3035) and merc (Mercator, as EPSG:3395,
 or on the sphere of WGS84's radius, the web maps' EPSG:3857), in metres or feet, with any order
 and direction of axes (+axis: EPSG:2053's westings and southings) and prime meridian (+pm: Paris's
-NTF zones), on an ellipsoid (another sphere's, +R=, is refused: its inverse differs by kilometres). Each is made lon/lat by
-vtkGeographicProjection's inverse, given the system's grid: its false easting and northing
-(+x_0, +y_0), scale (+k_0, or a Mercator's +lat_ts) and, for the conics and the transverse
-Mercator, its latitude of origin (+lat_0). The file's x, y are only scaled to metres first.
+NTF zones), on an ellipsoid (another sphere's, +R=, is refused: its inverse differs by
+kilometres). Each is made lon/lat by vtkGeographicProjection's inverse, given the system's grid:
+its false easting and northing (+x_0, +y_0), scale (+k_0, or a Mercator's +lat_ts) and, for the
+conics and the transverse Mercator, its latitude of origin (+lat_0). The file's x, y are only
+made eastings and northings in metres first (its unit and axes).
 
 The filter's ellipsoid is WGS84's. NAD83 and ETRS89 (GRS80) lie within a metre or two of it;
 another datum (NAD27, ED50, OSGB36, or Israel 1993 on GRS80 but 78 m away) is warned of.
