@@ -264,14 +264,7 @@ ProjectionParameters ProjectionParameters::FromString(const std::string& text)
     if (key == "projection")
     {
       bool known = false;
-      for (auto kind : { ProjectionKind::AlbersEqualArea,
-             ProjectionKind::LambertConformalConic,
-             ProjectionKind::TransverseMercator,
-             ProjectionKind::UTM,
-             ProjectionKind::AzimuthalEquidistant,
-             ProjectionKind::LambertAzimuthalEqualArea,
-             ProjectionKind::Mercator,
-             ProjectionKind::WebMercator })
+      for (const ProjectionKind kind : ProjectionKinds)
       {
         if (value == ProjectionKindName(kind))
         {
@@ -631,12 +624,6 @@ void GeographicProjection::CheckProjectsBack(const Point2& grid,
   {
     probe.x = lon0; // (the pole is one point, whose longitude the inverse may give as lon0 + 180)
   }
-  else if (transverse && std::abs(offset) > TransverseMercatorMaxLongitudeOffset &&
-    std::abs(offset) < TransverseMercatorMaxLongitudeOffset + EdgeDegrees)
-  {
-    // (a point Forward made on the 45-degree edge may come back some ulps beyond it)
-    probe.x = lon0 + std::copysign(TransverseMercatorMaxLongitudeOffset, offset);
-  }
   Point2 back;
   try
   {
@@ -706,7 +693,9 @@ Point2 GeographicProjection::Forward(const Point2& lonlat, long long id) const
       break;
     case ProjectionKind::TransverseMercator:
     case ProjectionKind::UTM:
-      if (std::abs(lon - lon0) > TransverseMercatorMaxLongitudeOffset)
+      // (EdgeDegrees beyond: a point Forward made on the 45-degree edge may come back from the
+      // inverse some ulps beyond it, and must project back)
+      if (std::abs(lon - lon0) > TransverseMercatorMaxLongitudeOffset + EdgeDegrees)
       {
         throw InputError(DescribePoint("point", id, lonlat) + " is " +
           NumberText(std::abs(lon - lon0)) + " degrees of longitude from the central meridian " +

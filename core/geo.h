@@ -28,6 +28,17 @@ enum class ProjectionKind
   WebMercator ///< WGS84 latitudes by the sphere's formulas (EPSG:3857 about lon0 0)
 };
 
+/// Every kind, in the enum's order: a record's name is read by it (FromString), and the VTK
+/// filter's Projection values after Automatic follow it.
+constexpr ProjectionKind ProjectionKinds[] = { ProjectionKind::AlbersEqualArea,
+  ProjectionKind::LambertConformalConic,
+  ProjectionKind::TransverseMercator,
+  ProjectionKind::UTM,
+  ProjectionKind::AzimuthalEquidistant,
+  ProjectionKind::LambertAzimuthalEqualArea,
+  ProjectionKind::Mercator,
+  ProjectionKind::WebMercator };
+
 const char* ProjectionKindName(ProjectionKind kind);
 /// Whether a projection keeps areas (the two equal-area ones: Albers, Lambert azimuthal), so
 /// that plane areas are ellipsoidal areas.

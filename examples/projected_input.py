@@ -365,7 +365,7 @@ def other_ellipsoid(proj4):
     except ValueError:
         shifted = True
     if shifted:
-        # (Israel 1993, EPSG:2039, is on GRS80 but some 80 m from WGS84)
+        # (PROJ terms typed with their shift, as epsg.io writes Israel 1993's: on GRS80 but some 80 m from WGS84)
         return f"a datum shifted from WGS84's by +towgs84={terms['towgs84']}"
     return ""
 

@@ -23,6 +23,7 @@
 #include "geo.h"
 
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <set>
 #include <memory>
@@ -207,25 +208,19 @@ private:
 
 tessera::ProjectionKind KindOf(int projection)
 {
-  switch (projection)
-  {
-    case vtkGeographicProjection::LAMBERT_CONFORMAL_CONIC:
-      return tessera::ProjectionKind::LambertConformalConic;
-    case vtkGeographicProjection::TRANSVERSE_MERCATOR:
-      return tessera::ProjectionKind::TransverseMercator;
-    case vtkGeographicProjection::UTM:
-      return tessera::ProjectionKind::UTM;
-    case vtkGeographicProjection::AZIMUTHAL_EQUIDISTANT:
-      return tessera::ProjectionKind::AzimuthalEquidistant;
-    case vtkGeographicProjection::LAMBERT_AZIMUTHAL_EQUAL_AREA:
-      return tessera::ProjectionKind::LambertAzimuthalEqualArea;
-    case vtkGeographicProjection::MERCATOR:
-      return tessera::ProjectionKind::Mercator;
-    case vtkGeographicProjection::WEB_MERCATOR:
-      return tessera::ProjectionKind::WebMercator;
-    default:
-      return tessera::ProjectionKind::AlbersEqualArea;
-  }
+  // The values after Automatic name the core's kinds in their order (Automatic and a value out of
+  // range: Albers, whose Automatic variant is fitted to the data).
+  static_assert(std::size(tessera::ProjectionKinds) ==
+      vtkGeographicProjection::WEB_MERCATOR - vtkGeographicProjection::ALBERS_EQUAL_AREA + 1,
+    "a Projection value for each kind");
+  static_assert(
+    tessera::ProjectionKinds[vtkGeographicProjection::WEB_MERCATOR -
+      vtkGeographicProjection::ALBERS_EQUAL_AREA] == tessera::ProjectionKind::WebMercator,
+    "the kinds in the Projection values' order");
+  const bool named = projection >= vtkGeographicProjection::ALBERS_EQUAL_AREA &&
+    projection <= vtkGeographicProjection::WEB_MERCATOR;
+  return named ? tessera::ProjectionKinds[projection - vtkGeographicProjection::ALBERS_EQUAL_AREA]
+               : tessera::ProjectionKind::AlbersEqualArea;
 }
 
 /// The Projection values' names, by their index: Automatic, then each projection's own name.
