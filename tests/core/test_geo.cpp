@@ -314,16 +314,8 @@ TEST(Geo, SameProjectionIsWhetherPointsLandAlike)
     }
     return xy;
   };
-  const ProjectionKind kinds[] = { ProjectionKind::AlbersEqualArea,
-    ProjectionKind::LambertConformalConic,
-    ProjectionKind::TransverseMercator,
-    ProjectionKind::UTM,
-    ProjectionKind::AzimuthalEquidistant,
-    ProjectionKind::LambertAzimuthalEqualArea,
-    ProjectionKind::Mercator,
-    ProjectionKind::WebMercator };
   int different = 0;
-  for (const ProjectionKind kind : kinds)
+  for (const ProjectionKind kind : ProjectionKinds) // (every kind)
   {
     ProjectionParameters base;
     base.Kind = kind;
