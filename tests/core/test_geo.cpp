@@ -82,14 +82,7 @@ TEST(Geo, RoundTripsToANanodegreeForEveryProjection)
     p = { lon(random), lat(random) };
   }
   const GeographicExtent extent = ComputeExtent(points);
-  for (auto kind : { ProjectionKind::AlbersEqualArea,
-         ProjectionKind::LambertConformalConic,
-         ProjectionKind::TransverseMercator,
-         ProjectionKind::UTM,
-         ProjectionKind::AzimuthalEquidistant,
-         ProjectionKind::LambertAzimuthalEqualArea,
-         ProjectionKind::Mercator,
-         ProjectionKind::WebMercator })
+  for (const ProjectionKind kind : ProjectionKinds) // (every kind)
   {
     GeographicProjection projection(ParametersFromExtent(kind, extent));
     for (std::size_t i = 0; i < points.size(); ++i)
