@@ -310,6 +310,64 @@ tessera::ProjectionParameters ChooseForwardParameters(vtkGeographicProjection* s
   return p;
 }
 
+/// Whether any grid term is set away from its default (FalseEasting 0, FalseNorthing 0,
+/// ScaleFactor 1, UseLatitudeOfOrigin off).
+bool GridTermsSet(vtkGeographicProjection* self)
+{
+  return self->GetFalseEasting() != 0.0 || self->GetFalseNorthing() != 0.0 ||
+    self->GetScaleFactor() != 1.0 || self->GetUseLatitudeOfOrigin();
+}
+
+/// Inverse with a record on the input: the record is how the points were projected, so it is
+/// used. Settings that describe a projection of their own (a UTM zone, ParametersFromData off, a
+/// grid) and describe another one are named as unused: a scripter who set a false easting on the
+/// inverse saw it have no effect, without a word. Settings that only leave the choice to the data
+/// (the defaults) describe nothing, and are not named.
+void WarnOfSettingsTheRecordOverrides(vtkGeographicProjection* self,
+  const tessera::ProjectionParameters& carried)
+{
+  const bool zoneSet =
+    self->GetProjection() == vtkGeographicProjection::UTM && self->GetUTMZone() != 0;
+  if (!zoneSet && self->GetParametersFromData() && !GridTermsSet(self))
+  {
+    return;
+  }
+  std::string described;
+  try
+  {
+    tessera::ProjectionParameters own = carried; // (only a grid set: the record's with that grid)
+    if (zoneSet)
+    {
+      own = tessera::ProjectionParameters();
+      own.Kind = KindOf(vtkGeographicProjection::UTM);
+      TakeUTMZoneSet(self, own);
+      TakeGridTerms(self, own);
+    }
+    else if (!self->GetParametersFromData())
+    {
+      own = ChooseForwardParameters(self, {});
+    }
+    else
+    {
+      TakeGridTerms(self, own);
+    }
+    if (tessera::SameProjection(own, carried))
+    {
+      return;
+    }
+    described = "('" + own.ToString() + "') are not (to project back with them instead, give " +
+      "that record as ProjectionRecord)";
+  }
+  catch (const tessera::InputError& e)
+  {
+    described = std::string("are not used, and are no projection: ") + e.what();
+  }
+  vtkWarningWithObjectMacro(self,
+    << "Inverse: the input carries the projection record '" << carried.ToString()
+    << "', with which its points were projected, so it is used; this filter's settings "
+    << described);
+}
+
 /// A point set to project and its output; Label names a composite's block in messages ("" for
 /// a lone data set).
 struct Piece
@@ -463,7 +521,10 @@ tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
     const std::string record = tessera_vtk::ProjectionRecordOf(input, "the input");
     if (!record.empty())
     {
-      return tessera::ProjectionParameters::FromString(record);
+      const tessera::ProjectionParameters carried =
+        tessera::ProjectionParameters::FromString(record);
+      WarnOfSettingsTheRecordOverrides(self, carried);
+      return carried;
     }
     // (ParametersFromData, on by default, made a scripter turn it off to go back from UTM.)
     tessera::ProjectionParameters utm;

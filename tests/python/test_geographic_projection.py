@@ -535,6 +535,57 @@ def test_a_projection_or_zone_that_is_no_choice_is_named():
                     f"projection {projection}: zones 61 and 12 changed the points or the record: {outputs}")
 
 
+def test_settings_an_inverse_does_not_use_for_the_inputs_record_are_named():
+    """Inverse with a record on the input uses the record (the points were projected with it).
+    Settings that describe another projection (a grid, a UTM zone, ParametersFromData off) are
+    then unused, and a warning names them beside the record; defaults, or settings that describe
+    the record's own projection, give none. The points come back by the record in every case."""
+    places = [(-105.0, 40.0), (-106.3, 37.2), (-103.1, 41.9)]
+    forward = vtkGeographicProjection()
+    forward.SetInputData(make_points(places))
+    forward.SetProjectionToUTM()
+    forward.SetUTMZone(13)
+    forward.SetFalseNorthing(1000.0)
+    forward.Update()
+    record = projection_record(forward.GetOutput())
+
+    def inverse_warnings(configure):
+        inverse = vtkGeographicProjection()
+        inverse.SetInputConnection(forward.GetOutputPort())
+        inverse.InverseOn()
+        configure(inverse)
+        warnings = messages_of(inverse, vtkCommand.WarningEvent)
+        errors = messages_of(inverse)
+        inverse.Update()
+        assert_that(not errors, f"errors: {errors}")
+        for i, (lon, lat) in enumerate(places):
+            assert_close(inverse.GetOutput().GetPoint(i)[0], lon, 1e-9, f"longitude {i} back by the record")
+            assert_close(inverse.GetOutput().GetPoint(i)[1], lat, 1e-9, f"latitude {i} back by the record")
+        return warnings
+
+    def zone(number, false_northing):
+        def configure(f):
+            f.SetProjectionToUTM()
+            f.SetUTMZone(number)
+            f.SetFalseNorthing(false_northing)
+        return configure
+
+    assert_that(inverse_warnings(lambda f: None) == [], "defaults describe no projection")
+    assert_that(inverse_warnings(zone(13, 1000.0)) == [], "the record's own zone and grid")
+    unused = {
+        "another false northing": (lambda f: f.SetFalseNorthing(2000.0), "y0=2000"),
+        "another zone": (zone(12, 1000.0), "zone=12"),
+        "parameters set": (lambda f: (f.SetProjectionToAzimuthalEquidistant(), f.ParametersFromDataOff(),
+                                      f.SetCentralLongitude(-100.0)), "projection=AzimuthalEquidistant lon0=-100"),
+        "parameters that are no projection": (lambda f: (f.ParametersFromDataOff(), f.SetCentralLatitude(95.0)),
+                                              "are no projection: CentralLatitude is 95"),
+    }
+    for case, (configure, named) in unused.items():
+        warnings = inverse_warnings(configure)
+        assert_that(len(warnings) == 1 and f"the input carries the projection record '{record}'" in warnings[0]
+                    and named in warnings[0], f"{case}: {warnings}")
+
+
 if __name__ == "__main__":
     run([test_round_trip_of_the_colorado_gauges,
          test_azimuthal_equidistant_keeps_distances_from_the_centre,
@@ -544,6 +595,7 @@ if __name__ == "__main__":
          test_nan_point_is_named_and_output_is_empty,
          test_the_blocks_of_a_composite_share_one_projection,
          test_utm_metres_without_a_record_go_back_by_their_zone,
+         test_settings_an_inverse_does_not_use_for_the_inputs_record_are_named,
          test_no_points_give_an_empty_output_without_error,
          test_an_edge_cut_into_the_most_pieces_is_reported,
          test_an_edge_that_reads_both_ways_round_the_globe_is_reported,
