@@ -28,6 +28,7 @@
 #include "polygon_area.h"
 #include "predicates.h"
 #include "predicates_inline.h"
+#include "window_predicates.h"
 
 #include <algorithm>
 #include <cmath>
@@ -1339,6 +1340,36 @@ void NumberCornerVertices(std::size_t vertexCount,
   }
 }
 
+/// The sweep's border is the rectangle of the window's corners, which are doubles. A side given by
+/// a constraint such as 3x - 1 < 0 lies at x = 1/3, which no double is: the border drawn at the
+/// rounded corner would accept and reject points, and place Thiessen vertices, otherwise than the
+/// window does (a point at the double nearest 1/3, strictly inside, was rejected), and the two
+/// engines would disagree. So every corner must lie exactly (MidpointSide) on both its sides.
+void CheckSidesAreDoubles(const Window& window)
+{
+  const std::vector<HalfPlane>& sides = window.EffectiveConstraints();
+  const std::vector<Point2>& corners = window.Vertices();
+  for (std::size_t k = 0; k < sides.size(); ++k)
+  {
+    // Edge k lies on constraint k and runs from corner k to corner k + 1.
+    for (const Point2& corner : { corners[k], corners[(k + 1) % corners.size()] })
+    {
+      if (MidpointSide(sides[k], corner, corner) != 0)
+      {
+        const bool vertical = sides[k].b == 0.0;
+        throw InputError("the Brassel-Reif sweep needs the window's sides at coordinates that are "
+                         "doubles, and " +
+          window.ConstraintName(window.EffectiveIds()[k]) + " puts one at " +
+          (vertical ? "x = " : "y = ") +
+          NumberText(-sides[k].c / (vertical ? sides[k].a : sides[k].b)) +
+          " (rounded), which no double is: give its coefficient as 1 or -1 (or a power of two), "
+          "and the side's double as c, as WindowBounds gives its sides, or use the Green-Sibson "
+          "engine");
+      }
+    }
+  }
+}
+
 } // namespace
 
 ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector<Point2>& points)
@@ -1349,6 +1380,7 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
                      "has " +
       std::to_string(window.Vertices().size()) + " sides or slanted ones");
   }
+  CheckSidesAreDoubles(window);
   const Box2 bounds = BoundsOf(window.Vertices().data(), window.Vertices().size());
   const double xmin = bounds.XMin, xmax = bounds.XMax, ymin = bounds.YMin, ymax = bounds.YMax;
   if (points.size() >= std::size_t(std::numeric_limits<std::int32_t>::max() / 4))

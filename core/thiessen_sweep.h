@@ -107,7 +107,8 @@ struct ThiessenSweepResult
 };
 
 /// Runs the procedure on all points (ids are their indices). Throws InputError if the window is
-/// not an axis-aligned rectangle, or naming the first point with a NaN or infinite coordinate.
+/// not an axis-aligned rectangle whose sides lie at doubles (x < 1/3, as 3x - 1 < 0, lies at none:
+/// see CheckSidesAreDoubles), or naming the first point with a NaN or infinite coordinate.
 ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector<Point2>& points);
 
 } // namespace tessera

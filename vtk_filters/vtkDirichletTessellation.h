@@ -32,7 +32,9 @@
  * it, with the outputs emptied.
  *
  * Algorithms: GreenSibson (default), the incremental engine; BrasselReif, the Thiessen sweep of
- * Brassel and Reif (1979), which needs a rectangular window. Both give the same combinatorics;
+ * Brassel and Reif (1979), which needs a rectangular window whose sides lie at doubles (any
+ * WindowBounds; a constraint 3x - 1 < 0, at x = 1/3, is an error naming it). Both give the same
+ * combinatorics;
  * corners and areas agree to rounding (an ulp or so). The sweep has the paper's bad cases: when
  * the points lie on one slanted line or on one circle, its search circles meet nearly every point
  * and its time grows like N^1.5 to N^2 (10^4 points on a circle: about a minute, against 0.03 s

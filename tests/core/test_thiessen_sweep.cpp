@@ -738,6 +738,42 @@ TEST(ThiessenSweep, Errors)
   EXPECT_THROW(ComputeThiessenSweep(triangle, { { 0.2, 0.2 } }), InputError);
 }
 
+// A window whose side lies at no double (3x - 1 < 0: x < 1/3) is refused, naming the constraint:
+// the sweep's border at the rounded corner rejected a point the window holds (x the double below
+// 1/3: 3x - 1 < 0 exactly), where the Green-Sibson engine keeps it. A side at a double given by
+// a coefficient other than 1 (2x - 1 < 0, scaled 3x - 1.5 < 0) is a rectangle like any other, and
+// the engines agree on it, the point just inside its side included.
+TEST(ThiessenSweep, SidesAtNoDoubleAreRefusedAndSidesAtDoublesAgree)
+{
+  const double third = 1.0 / 3.0;
+  ASSERT_LT(mpq_class(3) * mpq_class(third) - 1, 0); // strictly inside x < 1/3
+  const std::vector<Point2> pts = { { 0.1, 0.2 }, { 0.2, 0.7 }, { third, 0.5 } };
+  const Window atThird({ { -1, 0, 0 }, { 0, -1, 0 }, { 0, 1, -1 }, { 3, 0, -1 } },
+    ConstraintNames{ { "x > 0", "y > 0", "y < 1", "3x - 1 < 0" }, "" });
+  ASSERT_TRUE(atThird.Contains(pts[2]));
+  try
+  {
+    ComputeThiessenSweep(atThird, pts);
+    ADD_FAILURE() << "no error for a side at x = 1/3";
+  }
+  catch (const InputError& e)
+  {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("3x - 1 < 0 puts one at x = 0.3333333333333333"), std::string::npos)
+      << message;
+  }
+  const double half = std::nextafter(0.5, 0.0);
+  for (const double a : { 2.0, 3.0, 6.0 })
+  {
+    const Window window({ { -1, 0, 0 }, { 0, -1, 0 }, { 0, 1, -1 }, { a, 0, -a / 2 } });
+    const std::vector<Point2> near = { { 0.1, 0.2 }, { 0.2, 0.7 }, { half, 0.5 } };
+    const ThiessenSweepResult r = ComputeThiessenSweep(window, near);
+    EXPECT_TRUE(r.RejectedIds.empty()) << a;
+    EXPECT_EQ(r.Tiles.PointIds.size(), 3u) << a;
+    expect_engines_agree(near, window);
+  }
+}
+
 TEST(ThiessenSweep, LargerSetsAreaAndSymmetry)
 {
   const std::vector<Point2> pts = gaussian_clusters(20000, 3);
