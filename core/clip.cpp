@@ -246,6 +246,33 @@ void ConvexHull(std::vector<Point2>& points, std::vector<Point2>& hull)
   std::swap(points, hull);
 }
 
+// Whether p lies in the convex tile or on its boundary, exactly: left of or on every edge's line
+// (a tile not quite convex, by rounding, then holds p too: p lies in its kernel). Repeated
+// vertices give no edge.
+// Strictly: left of every edge's line.
+bool TileHoldsPoint(const Point2* tile, std::size_t count, const Point2& p, bool strictly = false)
+{
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const Point2& a = tile[k];
+    const Point2& b = tile[k + 1 == count ? 0 : k + 1];
+    if ((a.x != b.x || a.y != b.y) && orient2d_fast(a, b, p) < (strictly ? 1 : 0))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Whether the tile holds the whole box: its four corners (the tile is convex).
+bool TileHoldsBox(const Point2* tile, std::size_t count, const Box2& box)
+{
+  return TileHoldsPoint(tile, count, { box.XMin, box.YMin }) &&
+    TileHoldsPoint(tile, count, { box.XMax, box.YMin }) &&
+    TileHoldsPoint(tile, count, { box.XMax, box.YMax }) &&
+    TileHoldsPoint(tile, count, { box.XMin, box.YMax });
+}
+
 void AppendRing(ClippedRings& rings, const Point2* begin, std::size_t count, bool reversed)
 {
   if (reversed)
@@ -760,7 +787,9 @@ bool Catchment::HoldsPartOf(const Point2* tile, std::size_t count) const
   }
   if (!AllOnOneLine(tile, count))
   {
-    return false; // a tile with area: its mean decides
+    // A tile with area: its mean decides, or a vertex of the catchment strictly inside it (a
+    // catchment some 10^-14 of the tile, whose piece measured below the clip's rounding bound).
+    return this->HasVertexStrictlyIn(tile, count);
   }
   for (std::size_t k = 0; k < count; ++k)
   {
@@ -769,6 +798,33 @@ bool Catchment::HoldsPartOf(const Point2* tile, std::size_t count) const
     if (this->Contains(a) || this->Contains({ 0.5 * (a.x + b.x), 0.5 * (a.y + b.y) }))
     {
       return true;
+    }
+  }
+  return false;
+}
+
+bool Catchment::HasVertexStrictlyIn(const Point2* tile, std::size_t count) const
+{
+  const Box2 box = BoundsOf(tile, count);
+  if (box.XMax < this->Box.XMin || box.XMin > this->Box.XMax || box.YMax < this->Box.YMin ||
+    box.YMin > this->Box.YMax)
+  {
+    return false;
+  }
+  // A vertex in the box lies in one of its cells, where the segment it starts is listed.
+  for (std::size_t j = this->CellY(box.YMin); j <= this->CellY(box.YMax); ++j)
+  {
+    for (std::size_t i = this->CellX(box.XMin); i <= this->CellX(box.XMax); ++i)
+    {
+      const std::size_t cell = i + j * this->GridX;
+      for (std::uint32_t k = this->CellStart[cell]; k < this->CellStart[cell + 1]; ++k)
+      {
+        const Point2& vertex = this->Points[this->CellEdges[k]];
+        if (InBox(vertex, box) && TileHoldsPoint(tile, count, vertex, true))
+        {
+          return true;
+        }
+      }
     }
   }
   return false;
@@ -853,6 +909,22 @@ double Catchment::ClipInto(const Point2* tile,
     box.YMax < this->Box.YMin || box.YMin > this->Box.YMax)
   {
     return 0.0;
+  }
+  if (box.XMin <= this->Box.XMin && box.XMax >= this->Box.XMax && box.YMin <= this->Box.YMin &&
+    box.YMax >= this->Box.YMax && TileHoldsBox(tile, count, this->Box))
+  {
+    // The whole catchment lies in the tile: the intersection is the catchment itself, exactly.
+    // (Clipped as below, relative to the tile's first vertex, a catchment 10^-14 of a huge tile
+    // measured less than the rounding bound of that shift, and was dropped as empty.)
+    if (rings)
+    {
+      for (std::size_t r = 0; r < this->RingCount(); ++r)
+      {
+        AppendRing(
+          *rings, &this->Points[this->Offsets[r]], this->Offsets[r + 1] - this->Offsets[r], false);
+      }
+    }
+    return std::min(this->TotalArea, tileArea);
   }
   WidenUntilCentreIsInside(box);
   const std::size_t x0 = this->CellX(box.XMin);

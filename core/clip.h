@@ -16,7 +16,8 @@
 // whole number of turns, found exactly by counting signed crossings of a horizontal ray from B's
 // centre with the whole ring (the grid's row) and with the replaced ring, and repaid with whole
 // loops around B. Rings with no segment near the tile contribute a constant over B: the tile
-// itself, or nothing.
+// itself, or nothing. A tile that holds the catchment's whole bounding box (exactly) gives the
+// catchment itself, its rings and area, without clipping.
 //
 // Which segments are near, and every winding number, are decided exactly (orient2d) on the input
 // coordinates. The clipping runs on coordinates relative to the tile's first vertex (its
@@ -118,9 +119,11 @@ public:
   bool Contains(const Point2& p) const;
 
   /// Whether a tile that clips to no area still lies (partly) in the catchment: a sliver thinner
-  /// than rounding, or collinear corners. Its vertex mean inside; or, for corners all on one line
-  /// (exactly), any corner or edge midpoint inside, since the mean of a flat tile half in the
-  /// catchment can lie outside. (Boundary points get either answer, as in Contains.)
+  /// than rounding, or collinear corners. Its vertex mean inside, or a vertex of the catchment
+  /// strictly inside it (a catchment some 10^-14 of the tile's size, partly in it, whose piece
+  /// measures below the clip's rounding); or, for corners all on one line (exactly), any corner or
+  /// edge midpoint inside, since the mean of a flat tile half in the catchment can lie outside.
+  /// (Boundary points get either answer, as in Contains.)
   bool HoldsPartOf(const Point2* tile, std::size_t count) const;
 
   /// Area of tile & catchment. The tile is a convex polygon with anticlockwise vertices; it is
@@ -174,6 +177,8 @@ public:
     double coordinateEpsilon = std::numeric_limits<double>::epsilon()) const;
 
 private:
+  // Whether a vertex of the catchment lies strictly inside the convex tile (found by the grid).
+  bool HasVertexStrictlyIn(const Point2* tile, std::size_t count) const;
   void BuildGrid();
   void FindDepths();
   void OrientRings();

@@ -418,8 +418,9 @@ int vtkWindowClip::RequestData(vtkInformation*,
     {
       vtkWarningMacro(<< empty->GetNumberOfValues()
                       << " polygon(s) of input 0 lie in the window but have no area to clip "
-                         "(collinear corners, or thinner than the clip's rounding), so they give "
-                         "no piece (the first is cell "
+                         "(collinear corners, or thinner than the clip's rounding, or some 10^14 "
+                         "times the window's size, its part in them below that rounding), so "
+                         "they give no piece (the first is cell "
                       << empty->GetValue(0) << "); their ids are in the field data array "
                       << "EmptyTileIds.");
     }

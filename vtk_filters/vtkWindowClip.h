@@ -37,9 +37,11 @@
  * Tiles entirely outside the window give no polygon. Cells of input 0 that are not polygons,
  * triangles or quads (lines, vertices, strips), and polygons of fewer than 3 points, are not
  * clipped: a warning counts them and the output's field data array `SkippedCellIds` (vtkIdType)
- * lists them. Polygons that lie in the window but have no area to clip (collinear corners, or a
- * sliver thinner than the clip's rounding) give no piece either, and are counted in a warning and
- * listed in `EmptyTileIds` (both arrays are always written, empty when nothing is listed). A tile
+ * lists them. Polygons that lie in the window but have no area to clip (collinear corners, a
+ * sliver thinner than the clip's rounding, or a polygon some 10^14 times the window's size that
+ * holds part of it, its rounding larger than that part) give no piece either, and are counted in
+ * a warning and listed in `EmptyTileIds` (both arrays are always written, empty when nothing is
+ * listed); one that holds the whole window gives the window. A tile
  * whose area overflows (coordinates of some 1e154 or more) is an error naming it; a window of
  * tiny coordinates (below 2^-128, some 3e-39) is clipped scaled up by a power of two, tiles
  * alike, so that AreaFraction is as at unit scale (ClippedArea and PieceArea are then as small as

@@ -584,6 +584,45 @@ TEST(Clip, SmallTilesBesideLongSlantedEdgesMatchExactClipping)
 // A sliver (a triangle 1e-13 high, some ulps at 50) is as thin as the clipping's rounding: it has
 // no area to clip wherever it lies, whether a catchment segment's cell holds it or not (in an
 // empty cell its area was kept).
+// A tile that holds the whole catchment gives the catchment, its area and rings, however much
+// larger it is: clipped relative to its first vertex, a unit catchment in a tile of 1e14 measured
+// less than the rounding bound of that shift and was dropped as empty. A tile that large holding
+// part of the catchment may still measure nothing (the shift's rounding is larger than the part),
+// and HoldsPartOf then says that it holds some (a catchment vertex strictly inside it), so that
+// it is reported, not lost; tiles beside the catchment do not.
+TEST(Clip, HugeTilesHoldingTheCatchmentGiveItOrAreReported)
+{
+  Rings rings;
+  rings.Add(Rectangle(0, 0, 1, 1));
+  rings.Add(Rectangle(0.25, 0.25, 0.5, 0.75)); // a hole
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  for (const double s : { 1e3, 1e10, 1e14, 1e15, 1e16, 1e100 })
+  {
+    const std::vector<Point2> holding{ { -s, -s }, { s, -s }, { 0.5, s } };
+    const tessera::ClippedTile clipped = catchment.Clip(holding);
+    EXPECT_EQ(mpq_class(clipped.Area), ExactClippedArea(rings, holding)) << s;
+    EXPECT_EQ(clipped.Area, 0.875) << s;
+    EXPECT_EQ(clipped.Rings.RingOffsets, catchment.RingOffsets()) << s;
+    EXPECT_EQ(clipped.Rings.Vertices, catchment.Vertices()) << s;
+
+    const std::vector<Point2> leftHalf{ { -s, -s }, { 0.75, -s }, { 0.75, s } };
+    const double area = catchment.ClipArea(leftHalf);
+    const mpq_class exact = ExactClippedArea(rings, leftHalf);
+    ASSERT_GT(exact, 0) << s;
+    if (area == 0.0)
+    {
+      EXPECT_TRUE(catchment.HoldsPartOf(leftHalf.data(), leftHalf.size())) << s;
+    }
+    else
+    {
+      EXPECT_NEAR(area, exact.get_d(), 1e-9 * s) << s;
+    }
+    const std::vector<Point2> beside{ { -s, -s }, { -0.5, -s }, { -0.5, s } };
+    EXPECT_EQ(catchment.ClipArea(beside), 0.0) << s;
+    EXPECT_FALSE(catchment.HoldsPartOf(beside.data(), beside.size())) << s;
+  }
+}
+
 TEST(Clip, SliverTilesHaveNoAreaWhateverTheirCell)
 {
   const Rings rings({ { { 0.0, 0.0 }, { 100.0, 0.0 }, { 100.0, 100.0 }, { 0.0, 100.0 } } });
