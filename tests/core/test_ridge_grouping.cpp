@@ -569,6 +569,127 @@ TEST(RidgeGrouping, IdenticalPointsGiveOneGroupAndNoCurve)
   EXPECT_FALSE(result.Warnings.empty());
 }
 
+namespace
+{
+// The warnings of result that contain text.
+std::vector<std::string> WarningsWith(const RidgeGroupingResult& result, const std::string& text)
+{
+  std::vector<std::string> found;
+  for (const std::string& warning : result.Warnings)
+  {
+    if (warning.find(text) != std::string::npos)
+    {
+      found.push_back(warning);
+    }
+  }
+  return found;
+}
+
+// Pairs of open contour ends within widths basis widths of each other, counted here from the
+// contour polylines (the warning's count, found independently).
+int NearOpenEnds(const RidgeGroupingResult& result, double widths, double width)
+{
+  std::vector<std::pair<int, Point2>> ends;
+  for (int c = 0; c < result.Contours.Count(); ++c)
+  {
+    if (!result.ContourClosed[std::size_t(c)])
+    {
+      ends.push_back({ c, result.Contours.Points[std::size_t(result.Contours.Offsets[c])] });
+      ends.push_back(
+        { c, result.Contours.Points[std::size_t(result.Contours.Offsets[c + 1] - 1)] });
+    }
+  }
+  const double reach = widths * width * result.PixelSize;
+  int near = 0;
+  for (std::size_t a = 0; a < ends.size(); ++a)
+  {
+    for (std::size_t b = a + 1; b < ends.size(); ++b)
+    {
+      const double apart =
+        std::hypot(ends[a].second.x - ends[b].second.x, ends[a].second.y - ends[b].second.y);
+      const bool own = ends[a].first == ends[b].first;
+      near += apart <= reach * (1 + 1e-12) &&
+        (!own || result.ContourLength[std::size_t(ends[a].first)] >= 4 * reach);
+    }
+  }
+  return near;
+}
+} // namespace
+
+// Points without noise at random places on one circle, dense enough that most need a pixel of
+// their own: the automatic image is large, the basis narrow in the points' units, and the
+// Gaussian basis breaks the circle where the random gaps are widest. The groups whose contour
+// ends lie within four widths of each other are named (the count checked against the contours'
+// own ends); a noisy circle, whose image is coarser, stays closed and names none, and neither
+// do two segments of a line ten widths apart. A Width below one pixel is warned of.
+TEST(RidgeGrouping, ContoursEndingNearEachOtherAreNamedAsPiecesOfOneCurve)
+{
+  RidgeGroupingSettings gaussian;
+  gaussian.Basis = tessera::RadialBasis::Gaussian;
+  int broken = 0;
+  for (unsigned seed = 0; seed < 3; ++seed)
+  {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<double> angle(0.0, 2 * Pi);
+    std::vector<Point2> clean(1000);
+    for (Point2& p : clean)
+    {
+      const double t = angle(random);
+      p = { 50 * std::cos(t), 50 * std::sin(t) };
+    }
+    const RidgeGroupingResult result = RidgeGrouping(gaussian).Run(clean);
+    const int near = NearOpenEnds(result, 4.0, gaussian.Width);
+    const std::vector<std::string> named = WarningsWith(result, "pair(s) of open contour ends");
+    broken += near > 0;
+    if (near == 0)
+    {
+      EXPECT_TRUE(named.empty()) << "seed " << seed << ": " << named.front();
+    }
+    else
+    {
+      ASSERT_EQ(named.size(), 1u) << "seed " << seed;
+      EXPECT_EQ(named.front().rfind(std::to_string(near) + " pair(s)", 0), 0u)
+        << "seed " << seed << ": " << near << " pairs: " << named.front();
+    }
+  }
+  EXPECT_GT(broken, 0) << "no seed broke the clean circle: the case tests nothing";
+
+  std::mt19937 random(7);
+  std::normal_distribution<double> noise(0.0, 0.5);
+  std::uniform_real_distribution<double> angle(0.0, 2 * Pi);
+  std::vector<Point2> noisy(1000);
+  for (Point2& p : noisy)
+  {
+    const double t = angle(random);
+    p = { 50 * std::cos(t) + noise(random), 50 * std::sin(t) + noise(random) };
+  }
+  const RidgeGroupingResult closed = RidgeGrouping().Run(noisy);
+  ASSERT_EQ(closed.Contours.Count(), 1);
+  EXPECT_TRUE(closed.ContourClosed[0]);
+  EXPECT_TRUE(WarningsWith(closed, "open contour ends").empty());
+
+  // Two segments of one line, 10 widths apart in a 128-pixel image.
+  RidgeGroupingSettings fixed;
+  fixed.ImageSize = 128;
+  std::vector<Point2> segments;
+  for (int k = 0; k < 200; ++k)
+  {
+    segments.push_back({ 0.2 * k + 0.05 * std::sin(k), 0.3 * std::cos(3 * k) });
+    segments.push_back({ 40.0 + 0.2 * k + 0.05 * std::sin(k), 0.3 * std::cos(3 * k) });
+  }
+  const RidgeGroupingResult apart = RidgeGrouping(fixed).Run(segments);
+  EXPECT_EQ(NearOpenEnds(apart, 4.0, fixed.Width), 0);
+  EXPECT_TRUE(WarningsWith(apart, "open contour ends").empty());
+
+  for (const double width : { 0.5, 1.0 })
+  {
+    RidgeGroupingSettings settings;
+    settings.Width = width;
+    const RidgeGroupingResult result = RidgeGrouping(settings).Run(noisy);
+    EXPECT_EQ(WarningsWith(result, "is below one pixel").size(), width < 1.0 ? 1u : 0u) << width;
+  }
+}
+
 // A group of one point gets no curve (a curve needs two): such groups are named in a warning, and
 // every group of two or more points has its curve. A noisy circle on a fine image breaks into
 // short contours, some of which take a single point.
