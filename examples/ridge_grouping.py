@@ -112,7 +112,8 @@ def main(argv=None):
                              "merges the southern half of the trench with the cluster north of it; 4 gives it a "
                              "group of its own)")
     parser.add_argument("--image-size", type=image_size, default=0,
-                        help="pixels along the longer side, 15 to 2048, or 0 for automatic (default %(default)s)")
+                        help="pixels along the longer side, 0 for automatic (default %(default)s), else at most 2048 "
+                             "and at least 2 (ceil(width) + 2) + 3 (15 at the default --width 4)")
     parser.add_argument("--curve-sigma", type=float, default=0.1,
                         help="RaG curve smoothness (node units: a share of each curve's length; default "
                              "%(default)s, which draws the arcs' course through the scattered epicentres, where "
