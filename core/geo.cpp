@@ -458,10 +458,6 @@ struct GeographicProjection::Engines
   Point2 GridOrigin{}; // the plane's image of the grid's origin, (x_O, y_O) in geo.h
 };
 
-namespace
-{
-/// Throws InputError naming a grid term out of range, or an origin latitude set for a kind
-/// whose origin is fixed.
 void CheckGridTerms(const ProjectionParameters& p)
 {
   for (const auto& [key, value] : { std::make_pair("false easting x0", p.FalseEasting),
@@ -500,7 +496,6 @@ void CheckGridTerms(const ProjectionParameters& p)
       ")");
   }
 }
-} // namespace
 
 GeographicProjection::GeographicProjection(const ProjectionParameters& parameters)
   : Params(parameters)

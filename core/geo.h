@@ -84,6 +84,12 @@ struct ProjectionParameters
   static ProjectionParameters FromString(const std::string& text);
 };
 
+/// Throws InputError naming a grid term out of range (FalseEasting, FalseNorthing within 1e8 m,
+/// ScaleFactor within 0.1 to 10, OriginLatitude a latitude), or an origin latitude set for a kind
+/// whose origin is fixed (UTM, the azimuthal projections). GeographicProjection checks them; this
+/// is for a caller that has a grid but no projection to make (no points to fit one to).
+void CheckGridTerms(const ProjectionParameters& p);
+
 /// Whether areas in the projection's grid are areas on the ellipsoid: an equal-area kind
 /// (KeepsAreas) whose grid keeps scale 1.
 bool KeepsAreas(const ProjectionParameters& parameters);

@@ -729,7 +729,16 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
     const bool none = points == 0 && ((this->Inverse && this->ProjectionRecord.empty()) || fitted);
     std::unique_ptr<tessera::GeographicProjection> projection;
     std::string record;
-    if (!none)
+    if (none && !this->Inverse)
+    {
+      // No projection is fitted, but a grid set out of range is still named (a ScaleFactor of
+      // 100 passed unseen on an empty input, and failed only when points came).
+      tessera::ProjectionParameters grid;
+      grid.Kind = KindOf(this->Projection);
+      TakeGridTerms(this, grid);
+      tessera::CheckGridTerms(grid);
+    }
+    else if (!none)
     {
       const tessera::ProjectionParameters parameters = ChooseParameters(this, input, pieces);
       projection.reset(new tessera::GeographicProjection(parameters));

@@ -8,7 +8,8 @@
  * given in lon/lat pass through this filter first. A composite data set of point sets (such as
  * vtkGDALVectorReader's layers) gives a composite of the same structure, all its blocks projected
  * with one projection fitted to them all (its errors name the block). An input without points
- * gives an empty output, without a record when the projection would be fitted to the data.
+ * gives an empty output, without a record when the projection would be fitted to the data (a
+ * grid set out of range is an error then too).
  *
  * Projections (SetProjectionTo...):
  * - Automatic (default): an Albers equal-area conic whose standard parallels sit at 1/6 and 5/6

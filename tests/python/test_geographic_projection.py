@@ -301,6 +301,19 @@ def test_no_points_give_an_empty_output_without_error():
     inverse.Update()
     assert_that(not inverse_messages and inverse.GetOutput().GetNumberOfPoints() == 0,
                 f"the empty output's inverse: {inverse_messages}")
+    # A grid set out of range is named even with no points to fit a projection to (it was named
+    # only once points came); a good one gives no message.
+    for configure, named in ((lambda g: g.SetScaleFactor(100.0), "scale factor k0 = 100 is not within 0.1 to 10"),
+                             (lambda g: g.SetFalseEasting(1e9), "false easting x0 = 1000000000 is not within 1e8 m"),
+                             (lambda g: (g.SetProjectionToUTM(), g.UseLatitudeOfOriginOn()), "UTM takes none"),
+                             (lambda g: g.SetScaleFactor(0.9996), None)):
+        gridded = vtkGeographicProjection()
+        errors = messages_of(gridded)
+        gridded.SetInputData(make_points([]))
+        configure(gridded)
+        gridded.Update()
+        assert_that(len(errors) == (named is not None) and (named is None or named in errors[0]),
+                    f"{named}: {errors}")
 
 
 def test_an_edge_cut_into_the_most_pieces_is_reported():
