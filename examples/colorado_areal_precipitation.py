@@ -37,10 +37,12 @@ Writes into --out:
                          but not used (no observed value, a tile that never reaches the catchment,
                          at the place of an earlier gauge, an observation of such a gauge in a
                          month where the earlier one reported, a repeated observation, an observation of
-                         a station no gauge has, or without a station id or time, and an
-                         observation before --start or after --end); for a gauge at
-                         the place of an earlier one, or a repeated observation, the note gives
-                         the earlier one's line; observations outside --start/--end one after
+                         a station no gauge has, and an observation before --start or after
+                         --end); for a gauge at the place of an earlier one, or a repeated
+                         observation, the note gives the earlier one's line, for a gauge whose
+                         station id an earlier gauge has, that gauge's line, and for an
+                         observation of a gauge at the place of an earlier one, the line of the
+                         observation used instead; observations outside --start/--end one after
                          the other make one row: its lines first-last, and in the note how
                          many (of how many stations); the warnings name only the first 20 of
                          each kind
@@ -237,7 +239,8 @@ def read_gauges(path, system=None, combined=False, id_field=None):
                        "projected system, give it with --stations-crs (such as EPSG:5070)")
     coordinates = ("x", "y") if system else ("lon", "lat")
     place_of = {}  # (combined) station id: (its place, its first line)
-    for line, _, station, name, lon, lat in csv_input.gauges(path, coordinates=coordinates, distinct=combined):
+    for line, _, station, name, lon, lat in csv_input.gauges(path, coordinates=coordinates, distinct=combined,
+                                                             numbers=OBSERVATION_NUMBERS if combined else ()):
         if combined:
             place, first = place_of.setdefault(station, ((lon, lat), line))
             if first != line:
@@ -587,6 +590,21 @@ def at_multiples(minutes):
 
 
 TIME_COLUMNS = ("year", "month", "day", "hour", "minute", "date", "time")  # (observation_step's)
+# The columns of a long observations file read as numbers, with the place of a file of both stations
+# and observations: their fields alone tell whether the file's numbers have decimal commas
+# (csv_input.rows' numbers), read as stations or as observations (a name 3,5 or a height 5,280
+# with digit grouping in another column does not).
+OBSERVATION_NUMBERS = ("precip", "year", "month", "day", "hour", "minute", "lon", "lat", "x", "y")
+
+
+def observation_numbers(columns, gauge_of):
+    """The columns of an observations file (its header's, as csv_input.rows names them) that are
+    read as numbers: OBSERVATION_NUMBERS, and in a wide file (without station_id and precip) the
+    columns that name a gauge's station (gauge_of, by station_key)."""
+    if "station_id" in columns or "precip" in columns:
+        return OBSERVATION_NUMBERS
+    return (*OBSERVATION_NUMBERS, *(name for name in columns
+                                    if name not in TIME_COLUMNS and station_key(name) in gauge_of))
 
 
 def observation_records(path, gauge_of, stations_path, station_ids, unmatched, gaps, repeats, flagged,
@@ -612,7 +630,7 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
     flag, station_id), before the record is yielded."""
     header = []
     records = csv_input.rows(path, (), "observations", ("station_id", "precip", *TIME_COLUMNS), header,
-                             ("station_id", "precip"))
+                             ("station_id", "precip"), lambda columns: observation_numbers(columns, gauge_of))
     first = next(records, None)  # (the header is read with it)
     records = itertools.chain((first,) if first else (), records)
     if "station_id" in header or "precip" in header:
@@ -1764,8 +1782,8 @@ UNUSED_LISTS = (
      "reported that {unit} (the earlier gauge's value is used)", True),
     ("RepeatedObservationRows", "observation repeating the station and {unit} of an earlier one "
      "with a value (the earlier value is used)", True),
-    ("UnusedObservationRows", "observation without a station id or time, or of a station no gauge has",
-     True),
+    # (the filter lists rows without a station id or time here too: the script ends naming those)
+    ("UnusedObservationRows", "observation of a station no gauge has", True),
 )
 
 
@@ -1865,7 +1883,11 @@ def write_unused(summary, files, station_ids, observations, unit, path, unmatche
                  summed_repeats=(), dropped=()):
     """Every input the filter did not use, one row each (the warnings name the first 20 of each
     kind): kind, file, line, station_id and a note: for a gauge at the place of an earlier one,
-    that gauge's line; for an observation repeating an earlier one, the earlier one's line; a
+    that gauge's line; for a gauge without an observed value whose station id an earlier gauge has
+    (station_key: 0102 and 102), that gauge's line (its observations went there); for an
+    observation repeating an earlier one, the earlier one's line; for an observation of a gauge at
+    the place of an earlier one that reported, the line of the observation used (the filter's
+    CoLocatedObservationOfRows); a
     row for each column of a wide observations file that names no gauge's station
     (unmatched_columns: (column number, name), read_observations), at the header's line, its
     number in the note; and a row for each run of observations outside --start/--end (outside:
@@ -1878,6 +1900,12 @@ def write_unused(summary, files, station_ids, observations, unit, path, unmatche
     stations = observations.GetColumnByName("station_id")
     earlier = fields.GetArray("DuplicateOfGaugeIds")
     repeated_of = fields.GetArray("RepeatedObservationOfRows")
+    first_with_id, shared_of = {}, {}  # (station_key: its first gauge; a later gauge with it: that gauge)
+    for g, station in enumerate(station_ids):
+        first = first_with_id.setdefault(station_key(station), g)
+        if first != g:
+            shared_of[g] = first
+    used_instead = fields.GetArray("CoLocatedObservationOfRows")
     written = 0
     with open(path, "w", newline="") as f:
         out = csv.writer(f)
@@ -1891,11 +1919,20 @@ def write_unused(summary, files, station_ids, observations, unit, path, unmatche
                     note = ""
                     if name == "RepeatedObservationRows" and repeated_of:
                         note = f"repeats line {files.row_line(int(repeated_of.GetValue(k))) or ''}"
+                    elif name == "CoLocatedObservationRows" and used_instead:
+                        used = int(used_instead.GetValue(k))
+                        if used >= 0 and files.row_line(used):
+                            note = (f"the value of line {files.row_line(used)} (station {stations.GetValue(used)} "
+                                    "at the same place) is used")
                     out.writerow([kind, files.observations, files.row_line(i) or "", stations.GetValue(i), note])
                 else:
                     note = ""
                     if name == "DuplicateGaugeIds" and earlier:
                         note = f"same place as {files.place_word()} {files.gauge_lines[int(earlier.GetValue(k))]}"
+                    elif name == "UnobservedGaugeIds" and i in shared_of:
+                        first = shared_of[i]
+                        note = (f"station id of {files.place_word()} {files.gauge_lines[first]} "
+                                f"({station_ids[first]}): its observations go to that gauge")
                     out.writerow([kind, files.stations, files.gauge_lines[i], station_ids[i], note])
                 written += 1
         for number, name in unmatched_columns:

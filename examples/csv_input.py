@@ -79,27 +79,33 @@ def has_plain_header(data):
     return not compressed and re.search(rb"\S[^\n]*\n", data[:HEAD_BYTES // 2]) is not None
 
 
-def rows(path, required, what, optional=(), header=None, delimiter_columns=None):
+def rows(path, required, what, optional=(), header=None, delimiter_columns=None, numbers=None):
     """Yields (line, row) for each record of the CSV file at path (a header line first; row maps
-    the header's names, stripped of spaces, to the fields); blank lines and records whose fields
-    are all empty are skipped. A required or optional column may be named in another case
-    (STATION_ID, Lon). Ends the script, naming the file, when it cannot be read, is not a CSV
-    file, lacks one of the required columns, has one of them (or an optional one) twice, or is not
-    well-formed CSV; what says what the file holds. header: a list that is given the header's
-    columns (as the rows name them) before the first record, for a caller whose required columns
-    depend on it (check_columns); delimiter_columns: the columns that choose the field separator
-    (header_delimiter), the required ones unless given."""
+    the header's names, stripped of spaces and of a pair of quotes round them (header_name), to the
+    fields); blank lines and records whose fields are all empty are skipped. A required or
+    optional column may be named in another case (STATION_ID, Lon). Ends the script, naming the
+    file, when it cannot be read, is not a CSV file, lacks one of the required columns, has one of
+    them (or an optional one) twice, or is not well-formed CSV; what says what the file holds.
+    header: a list that is given the header's columns (as the rows name them) before the first
+    record, for a caller whose required columns depend on it (check_columns); delimiter_columns:
+    the columns that choose the field separator (header_delimiter), the required ones unless given;
+    numbers: the columns read as numbers (in any case, or by another name of ALIAS_OF), or a
+    function of the header's columns giving them: only their fields decide whether the file's
+    numbers have decimal commas (decimal_comma_evidence); every field where None. A file whose
+    fields follow their separator with spaces and a quote (a, "b, c") is read with those spaces
+    skipped, so that the quotes hold the field."""
     text = decoded(path, what)
     wanted = required if delimiter_columns is None else delimiter_columns
     if text.lstrip().startswith(("{", "[")):
         fail(f"{path}: the {what} file is not a CSV file (it starts like JSON or GeoJSON; "
              f"expected a header line such as {','.join(wanted)})")
     delimiter = header_delimiter(text, wanted)
-    decimal_comma = delimiter != "," and has_decimal_commas(text, delimiter)
-    reader = csv.DictReader(text_lines(text), delimiter=delimiter, strict=True)
+    # (a, "b" as some programs write CSV: the csv module would keep the space and the quotes)
+    spaced = re.search(rf'{re.escape(delimiter)} +"', text) is not None
+    reader = csv.DictReader(text_lines(text), delimiter=delimiter, strict=True, skipinitialspace=spaced)
     try:
         renamed = []
-        columns = named_columns([name.strip() for name in reader.fieldnames or []],
+        columns = named_columns([header_name(name) for name in reader.fieldnames or []],
                                 (*required, *optional), f"{path}:{max(reader.reader.line_num, 1)}", renamed)
         if renamed:
             print(f"{path}: reads column {', '.join(f'{a!r} as {b!r}' for a, b in renamed)}", file=sys.stderr)
@@ -107,10 +113,11 @@ def rows(path, required, what, optional=(), header=None, delimiter_columns=None)
         if header is not None:
             header[:] = columns
         reader.fieldnames = columns
+        decimal_comma = delimiter != "," and decimal_comma_evidence(text, delimiter, columns, numbers)
         for row in reader:
             if None not in row and None not in row.values():  # (as many fields as the header: most records)
                 if any(map(str.strip, row.values())):
-                    yield reader.line_num, Row(row, decimal_comma=True) if decimal_comma else row
+                    yield reader.line_num, Row(row, decimal_comma) if decimal_comma else row
                 continue  # (all empty)
             # A record whose fields are all empty (",,," as a spreadsheet exports a blank row, or
             # a line of spaces) holds nothing: skipped, like a blank line.
@@ -122,7 +129,7 @@ def rows(path, required, what, optional=(), header=None, delimiter_columns=None)
                 fields = len(columns) + len(row.get(None) or []) - list(row.values()).count(None)
                 fail(f"{path}:{reader.line_num}: {fields} field(s) where the header has "
                      f"{len(columns)} ({', '.join(columns)})")
-            yield reader.line_num, Row(row, decimal_comma=True) if decimal_comma else row
+            yield reader.line_num, Row(row, decimal_comma) if decimal_comma else row
     except csv.Error as error:  # e.g. a quote opened and never closed
         # The underlying reader's count: the lines read up to the error (the DictReader's own
         # line_num is that of the last record it returned, 0 while the header is read).
@@ -155,8 +162,9 @@ SEPARATORS_TEXT = "fields separated by commas, or by semicolons or tabs with dec
 
 class Row(dict):
     """A record of rows() from a file whose numbers are written with decimal commas
-    (has_decimal_commas; decimal_comma True): its header's names to its fields. rows() gives the
-    other files' records as plain dicts."""
+    (has_decimal_commas): its header's names to its fields; decimal_comma is True, or the text
+    that says where the file shows one (decimal_comma_evidence). rows() gives the other files'
+    records as plain dicts."""
 
     def __init__(self, fields, decimal_comma=False):
         super().__init__(fields)
@@ -180,14 +188,75 @@ def header_delimiter(text, required=()):
     return max(DELIMITERS, key=header.count)
 
 
-def has_decimal_commas(text, delimiter):
+def has_decimal_commas(text, delimiter, read=None):
     """Whether a field of the text (separated by delimiter, not a comma) is a number written with a
-    decimal comma (12,5 or -0,25e-3, unquoted): then the file's numbers are read so, and a point in
+    decimal comma (12,5 or -0,25e-3, quoted or not: "12,5"), in one of the columns read (their
+    positions, from 0; any column where None): then the file's numbers are read so, and a point in
     one is named as digit grouping rather than read as a decimal point (1.234 is 1234 where 12,5 is
-    12.5). A file of only points (semicolons or tabs with 12.5) reads them as decimal points."""
+    12.5). A file of only points (semicolons or tabs with 12.5) reads them as decimal points, and
+    so does one whose decimal commas are all in columns not read as numbers (a name 3,5, a height
+    5,280 with digit grouping)."""
+    return decimal_comma_field(text, delimiter, read) is not None
+
+
+DECIMAL_COMMA = r"[+-]?[0-9]*,[0-9]+(?:[eE][+-]?[0-9]+)?"
+
+
+def decimal_comma_field(text, delimiter, read=None):
+    """The first field of the text as has_decimal_commas finds it, as (its line, its column's
+    position from 0, its text), or None. A field starts after the delimiter or a line end
+    (\\n, \\r\\n, or \\r alone, as old spreadsheets for the Mac end lines) and ends before either."""
+    wanted = None if read is None else set(read)
+    if wanted is not None and not wanted:
+        return None
     mark = re.escape(delimiter)
-    field = rf"(?:^|{mark})[ \t]*[+-]?[0-9]*,[0-9]+(?:[eE][+-]?[0-9]+)?[ \t]*(?={mark}|\r?$)"
-    return re.search(field, text, re.MULTILINE) is not None
+    number = rf'[ \t]*(?:{DECIMAL_COMMA}|"[ \t]*{DECIMAL_COMMA}[ \t]*")[ \t]*'
+    fields = re.compile(rf"(?<![^\r\n{mark}]){number}(?={mark}|[\r\n]|\Z)")
+    start, searched = 0, 0  # (the line start of the last field met, and where it was met)
+    for found in fields.finditer(text):
+        p = found.start()
+        start = max(start, text.rfind("\n", searched, p) + 1, text.rfind("\r", searched, p) + 1)
+        searched = p
+        before = text[start:p]  # (the fields before it on its line, each with its delimiter)
+        if '"' not in before:
+            column = before.count(delimiter)
+        else:
+            try:
+                column = len(next(csv.reader([before], delimiter=delimiter), [])) - 1
+            except csv.Error:
+                continue
+        if wanted is None or column in wanted:
+            line = 1 + text.count("\n", 0, p) + text.count("\r", 0, p) - text.count("\r\n", 0, p)
+            return line, column, found.group().strip(" \t")
+    return None
+
+
+def decimal_comma_evidence(text, delimiter, columns, numbers=None):
+    """Where the text (a CSV file's, its header's columns given) shows that its numbers have decimal
+    commas (decimal_comma_field, in the columns numbers names as rows() takes it, or in any column
+    where None): "'12,5' in column 'precip' on line 3"; None where it shows none."""
+    if callable(numbers):
+        numbers = numbers(columns)
+    read = None
+    if numbers is not None:
+        names = {name.lower() for name in numbers}
+        read = [k for k, column in enumerate(columns)
+                if column.lower() in names or ALIAS_OF.get(column.lower()) in names]
+    found = decimal_comma_field(text, delimiter, read)
+    if found is None:
+        return None
+    line, column, field = found
+    where = f"column {columns[column]!r}" if column < len(columns) else f"field {column + 1}"
+    shown = field.strip('"').strip()
+    return f"{shown!r} in {where} on line {line}"
+
+
+def decimal_comma_note(row, before="", after=""):
+    """Where the decimal commas of the row's file were seen (decimal_comma_evidence), as the fail
+    messages of number() and integer() say it: "as '12,5' in column 'precip' on line 3 shows",
+    between before and after; nothing where the row does not say."""
+    evidence = getattr(row, "decimal_comma", None)
+    return f"{before}as {evidence} shows{after}" if isinstance(evidence, str) else ""
 
 
 def decimal_point_text(text, row):
@@ -206,10 +275,20 @@ ALIAS_OF = {"station": "station_id", "latitude": "lat", "longitude": "lon", "lon
             "prcp": "precip", "precipitation": "precip"}
 
 
+def header_name(field):
+    """A header's field as a column's name: stripped of spaces, and then of a pair of double quotes
+    round it ("station_id", "lon" as a program writes a header: the csv module keeps the quotes of a
+    field after a space)."""
+    name = field.strip()
+    if len(name) >= 2 and name[0] == name[-1] == '"':
+        name = name[1:-1].strip()
+    return name
+
+
 def header_names(fields):
-    """A header's names (its fields), stripped and in lower case, with the names they stand for
-    (ALIAS_OF): {"station", "station_id", "lat", ...} for STATION, LAT."""
-    names = {field.strip().lower() for field in fields}
+    """A header's names (its fields), stripped (header_name) and in lower case, with the names they
+    stand for (ALIAS_OF): {"station", "station_id", "lat", ...} for STATION, LAT."""
+    names = {header_name(field).lower() for field in fields}
     return names | {ALIAS_OF[name] for name in names if name in ALIAS_OF}
 
 
@@ -251,7 +330,8 @@ def number(row, column, path, line):
     plain = decimal_point_text((text or "").strip(), row)
     if plain is None:
         fail(f"{path}:{line}: column {column!r}: {text!r} has a point, where the file's numbers have "
-             "decimal commas (a point there is digit grouping: write the number without it, 1234,5)")
+             f"decimal commas ({decimal_comma_note(row, after='; ')}a point there is digit grouping: write the "
+             "number without it, 1234,5)")
     try:
         if "_" in plain:  # float() takes Python's digit groups: 1_5 would be 15
             raise ValueError
@@ -270,7 +350,10 @@ def integer(row, column, path, line, low, high):
     text = (row.get(column) or "").strip()
     whole = re.fullmatch(r"([+-]?[0-9]+)(?:\.0*)?", decimal_point_text(text, row) or "")
     if not whole:
-        fail(f"{path}:{line}: column {column!r}: {text!r} is not an integer")
+        pointed = getattr(row, "decimal_comma", False) and "." in text
+        fail(f"{path}:{line}: column {column!r}: {text!r} is not an integer" + (
+             f" (the file's numbers have decimal commas{decimal_comma_note(row, ', ')}: write it without the "
+             "point, or with a decimal comma)" if pointed else ""))
     value = int(whole.group(1))
     if not low <= value <= high:
         fail(f"{path}:{line}: column {column!r}: {value} is outside {low}..{high}")
@@ -285,18 +368,21 @@ def text(row, column, path, line):
     return value
 
 
-def gauges(path, optional=(), coordinates=("lon", "lat"), distinct=False):
+def gauges(path, optional=(), coordinates=("lon", "lat"), distinct=False, numbers=()):
     """Yields (line, row, station_id, name, lon, lat) for each gauge of a stations file: columns
     station_id, lon, lat (degrees; or the columns named by coordinates, such as x, y), an optional
     name, the other optional columns named (checked as rows() checks them), and any others (left
-    in row). distinct: a record whose station id and coordinates are written as an earlier one's
-    is passed over (a file of observations with the station's place on each row: millions of
-    rows, a few hundred stations), and so is one whose coordinates are empty where another row of
-    its station gives them (said once; a station that no row places ends the script, naming its
-    first such line)."""
+    in row). The coordinates, the optional columns but name, and the columns numbers names (read
+    as numbers by another reader of the same file) decide whether the file's numbers have decimal
+    commas (rows()' numbers). distinct: a record whose station id and coordinates are written as
+    an earlier one's is passed over (a file of observations with the station's place on each row:
+    millions of rows, a few hundred stations), and so is one whose coordinates are empty where
+    another row of its station gives them (said once; a station that no row places ends the
+    script, naming its first such line)."""
     x, y = coordinates
     seen, placed, unplaced = set(), set(), {}  # (distinct) unplaced: station id: [first line, rows]
-    for line, row in rows(path, ("station_id", x, y), "stations", ("name", *optional)):
+    for line, row in rows(path, ("station_id", x, y), "stations", ("name", *optional),
+                          numbers=(x, y, *optional, *numbers)):
         if distinct:
             station = (row["station_id"] or "").strip()
             if station and not ((row[x] or "").strip() and (row[y] or "").strip()):
@@ -331,7 +417,7 @@ def header_columns(path, what, wanted):
     """The column names of the header of the CSV file at path (what it holds: "stations") as
     header_names gives them, its separator chosen by the wanted columns as rows() chooses it; none
     for a header that is not well-formed CSV (rows() names it)."""
-    header = decoded(path, what, head=True).lstrip().split("\n", 1)[0]
+    header = next(text_lines(decoded(path, what, head=True).lstrip()), "").rstrip("\r\n")  # (\r alone too)
     try:
         return header_names(next(csv.reader([header], delimiter=header_delimiter(header, wanted)), []))
     except csv.Error:

@@ -520,30 +520,40 @@ std::string IncompleteRowName(vtkAbstractArray* stations, std::int32_t row)
 
 /// The observation rows with a value for a gauge at the place of others (DuplicateGauges) whose
 /// value the average does not use at that step (ThiessenArealAverage::GaugesUsed: another gauge
-/// there reported first), so these values are valid and unused. Repeated rows are listed apart.
-std::vector<std::int32_t> CoLocatedRows(const ObservationRows& rows,
+/// there reported first), so these values are valid and unused, with the row whose value is used
+/// in their place (-1 where none is known). Repeated rows are listed apart.
+struct CoLocated
+{
+  std::vector<std::int32_t> Rows;
+  std::vector<std::int32_t> UsedRows;
+};
+
+CoLocated CoLocatedRows(const ObservationRows& rows,
   const std::vector<double>& rowValues,
   const std::vector<std::vector<double>>& values,
   const tessera::ThiessenArealAverage& average,
   const std::vector<std::int32_t>& repeatedRows)
 {
-  std::vector<std::int32_t> found;
-  std::set<std::int32_t> sharing; // the gauges at a place with others
+  CoLocated found;
+  std::map<std::int32_t, std::int32_t> placeOf; // a gauge at a place with others: the place's first
   for (const auto& [gauge, first] : average.DuplicateGauges())
   {
-    sharing.insert({ gauge, first });
+    placeOf[gauge] = first;
+    placeOf[first] = first;
   }
-  if (sharing.empty())
+  if (placeOf.empty())
   {
     return found;
   }
   const std::set<std::int32_t> repeated(repeatedRows.begin(), repeatedRows.end());
   std::map<std::int32_t, std::vector<char>> usedAt; // per step met, GaugesUsed
+  std::map<std::pair<std::int32_t, std::int32_t>, std::int32_t> usedRowAt; // (place, step): row
+  std::vector<std::int32_t> unused;
   for (std::size_t r = 0; r < rowValues.size(); ++r)
   {
     const std::int32_t gauge = rows.Match.GaugeOfRow[r];
     const std::int32_t step = rows.Steps.StepOfRow[r];
-    if (step < 0 || !sharing.count(gauge) || std::isnan(rowValues[r]) ||
+    if (step < 0 || !placeOf.count(gauge) || std::isnan(rowValues[r]) ||
       repeated.count(static_cast<std::int32_t>(r)))
     {
       continue;
@@ -553,10 +563,22 @@ std::vector<std::int32_t> CoLocatedRows(const ObservationRows& rows,
     {
       used = usedAt.emplace(step, average.GaugesUsed(values[static_cast<std::size_t>(step)])).first;
     }
-    if (!used->second[static_cast<std::size_t>(gauge)])
+    if (used->second[static_cast<std::size_t>(gauge)])
     {
-      found.push_back(static_cast<std::int32_t>(r));
+      usedRowAt[{ placeOf[gauge], step }] = static_cast<std::int32_t>(r);
     }
+    else
+    {
+      unused.push_back(static_cast<std::int32_t>(r));
+    }
+  }
+  for (const std::int32_t r : unused)
+  {
+    const auto row = static_cast<std::size_t>(r);
+    const auto used =
+      usedRowAt.find({ placeOf[rows.Match.GaugeOfRow[row]], rows.Steps.StepOfRow[row] });
+    found.Rows.push_back(r);
+    found.UsedRows.push_back(used == usedRowAt.end() ? -1 : used->second);
   }
   return found;
 }
@@ -1254,12 +1276,13 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   }
   if (gaugeCount > 0 && gaugesInside == 0)
   {
-    vtkWarningMacro(<< "none of the " << gaugeCount
-                    << " gauges lies inside the catchment: every weight goes to gauges outside "
-                       "it, as Thiessen's rule gives them. If that is unexpected, check that the "
-                       "gauges are longitude, latitude in degrees (a west longitude without its "
-                       "minus sign, or the two swapped; for gauges made longitude, latitude from "
-                       "projected coordinates, the projection and its grid those of their system).");
+    vtkWarningMacro(
+      << "none of the " << gaugeCount
+      << " gauges lies inside the catchment: every weight goes to gauges outside "
+         "it, as Thiessen's rule gives them. If that is unexpected, check that the "
+         "gauges are longitude, latitude in degrees (a west longitude without its "
+         "minus sign, or the two swapped; for gauges made longitude, latitude from "
+         "projected coordinates, the projection and its grid those of their system).");
   }
 
   in.Times.clear();
@@ -1439,12 +1462,16 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
       return idOf(static_cast<std::size_t>(duplicates[k])) + " (same place as " +
         idOf(static_cast<std::size_t>(duplicateOf[k])) + ")";
     });
-  const std::vector<std::int32_t> coLocatedRows =
-    CoLocatedRows(*rows, rowValues, in.Values, *in.Average, repeatedRows);
-  warnOf(coLocatedRows.size(),
+  const CoLocated coLocated = CoLocatedRows(*rows, rowValues, in.Values, *in.Average, repeatedRows);
+  warnOf(coLocated.Rows.size(),
     "observation row(s) have a value for a gauge at the place of another that reported at the "
-    "same time, whose value is used (rows from 0, listed in CoLocatedObservationRows)",
-    [&](std::size_t k) { return RowName(stations, coLocatedRows[k]); });
+    "same time, whose value is used (rows from 0, listed in CoLocatedObservationRows, the rows "
+    "used in their place in CoLocatedObservationOfRows)",
+    [&](std::size_t k)
+    {
+      return RowName(stations, coLocated.Rows[k]) + " (row " +
+        std::to_string(coLocated.UsedRows[k]) + " used)";
+    });
 
   // The summary: every step in order, each one updating the tessellation of the one before.
   vtkNew<vtkDoubleArray> timeColumn, means, covered;
@@ -1511,7 +1538,8 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateOfGaugeIds", duplicateOf);
   tessera_vtk::AddIdFieldArray(in.Summary, "RepeatedObservationRows", repeatedRows);
   tessera_vtk::AddIdFieldArray(in.Summary, "RepeatedObservationOfRows", repeatedRowOf);
-  tessera_vtk::AddIdFieldArray(in.Summary, "CoLocatedObservationRows", coLocatedRows);
+  tessera_vtk::AddIdFieldArray(in.Summary, "CoLocatedObservationRows", coLocated.Rows);
+  tessera_vtk::AddIdFieldArray(in.Summary, "CoLocatedObservationOfRows", coLocated.UsedRows);
   tessera_vtk::AddIdFieldArray(in.Summary, "UnusedObservationRows", rows->Steps.UnusedRows());
   // The projection the tiles were made in, as vtkGeographicProjection records it: another average
   // given it (ProjectionRecord) makes the same tiles, as for a part of this catchment.

@@ -105,7 +105,8 @@
  * never reach the catchment at any step. Output 1's field data lists the gauges and rows among
  * them: `UnobservedGaugeIds`, `DuplicateGaugeIds`, `DuplicateOfGaugeIds`, `UnweightedGaugeIds`,
  * `RepeatedObservationRows` (with `RepeatedObservationOfRows`, the earlier row each repeats, whose
- * value is used), `CoLocatedObservationRows` and `UnusedObservationRows` (rows not
+ * value is used), `CoLocatedObservationRows` (with `CoLocatedObservationOfRows`, the row used in
+ * each one's place, -1 where none is known) and `UnusedObservationRows` (rows not
  * used: no station id, no time, or a station no gauge has; table rows, from 0); it also holds
  * `TesseraProjection`, the record of the projection the tiles were made in (as
  * vtkGeographicProjection writes it: given to another average as ProjectionRecord, as for a part

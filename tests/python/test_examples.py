@@ -1558,7 +1558,8 @@ def test_the_field_separator_and_the_decimal_mark():
     # A file of semicolons or tabs has decimal commas when a field is a number written with one.
     for text, delimiter, expected in (("a;b\n1;12,5\n", ";", True), ("a;b\n1;12.5\n", ";", False),
                                       ("a\tb\n-0,25e-3\t1\r\n", "\t", True), ("a;b\nLake, north;1\n", ";", False),
-                                      ("a;b\n1,5,5;1\n", ";", False), ('a;b\n"1,5";1\n', ";", False),
+                                      ("a;b\n1,5,5;1\n", ";", False), ('a;b\n"1,5";1\n', ";", True),
+                                      ("a;b\r1;2,5\r", ";", True), ('a;b\n1; " 2,5 " \n', ";", True),
                                       ("a;b\n1;1.234,5\n", ";", False)):
         got = csv_input.has_decimal_commas(text, delimiter)
         assert_that(got == expected, f"{text!r}: decimal commas {got}, expected {expected}")
@@ -1577,6 +1578,204 @@ def test_the_field_separator_and_the_decimal_mark():
             assert_that("f.csv:2: column 'v'" in str(error), f"{what}: {error}")
         else:
             raise AssertionError(f"{what} was read as a number")
+
+
+def dialect_means(directory, name, catchment, stations, observations, **options):
+    """Runs the example on the stations and observations files into directory/name (without plots);
+    returns its areal_mean.csv rows and its stderr."""
+    _, stderr = run_colorado(os.path.join(directory, name), stations=stations, observations=observations,
+                             catchment=catchment, what=name, plots=False, **options)
+    return read_csv(os.path.join(directory, name, "areal_mean.csv")), stderr
+
+
+# The lake basin's observations with decimals (station, year, month, value), for the files of
+# decimal commas below, each of which must give the means of these written plainly.
+DECIMAL_ROWS = [("N1", 2001, 1, "10.5"), ("N2", 2001, 1, "20.25"), ("N3", 2001, 1, "30"), ("N4", 2001, 1, "0.125"),
+                ("N5", 2001, 1, "-1.5e-3"), ("N1", 2001, 2, "5.75"), ("N6", 2001, 2, "7.5")]
+
+
+def write_decimal_rows(directory, name, line, comma=False, rows=DECIMAL_ROWS):
+    """The rows (DECIMAL_ROWS) as directory/name, each record (the header's too) as line gives it
+    from its fields, with decimal commas where comma; returns the path."""
+    def decimal(text):
+        return text.replace(".", ",") if comma else text
+    return write(directory, name, line(("station_id", "year", "month", "precip")) + "".join(
+        line((s, str(y), str(m), decimal(v))) for s, y, m, v in rows))
+
+
+def test_decimal_commas_are_told_by_the_columns_read_as_numbers():
+    # A comma in a column that is not read as a number (a height 5,280 with digit grouping in a US
+    # file of tabs, a name 3,5 in a file of semicolons) made the file one of decimal commas, and
+    # then its correct lon -105.2 was named as digit grouping: now only the columns read decide,
+    # and such files give the plain file's means. Where a column read has a decimal comma, a point
+    # in another number is named with the field that showed the comma.
+    csv_input = import_example("csv_input")
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, observations = write_lake_basin(directory)
+        plain, _ = dialect_means(directory, "plain", catchment, stations, observations)
+        tabs = write(directory, "tabs.txt", "station_id\tname\tlon\tlat\televation_ft\n" + "".join(
+            f"{s}\tGauge {s}\t{lon}\t{lat}\t{5 + k},280\n" for k, (s, (lon, lat)) in enumerate(LAKE_GAUGES.items())))
+        named = write(directory, "named.csv", "station_id;name;lon;lat\n" + "".join(
+            f"{s};{k},5;{lon};{lat}\n" for k, (s, (lon, lat)) in enumerate(LAKE_GAUGES.items())))
+        for name, path in (("tabs", tabs), ("named", named)):
+            means, stderr = dialect_means(directory, name, catchment, path, observations)
+            assert_that(means == plain, f"{name}: {means} against the plain file's {plain}: {stderr}")
+        # (values with points beside a note 1,5)
+        points = write_decimal_rows(directory, "points.csv", lambda fields: ",".join(fields) + "\n")
+        noted = write(directory, "noted.csv", "station_id;year;month;precip;note\n" + "".join(
+            f"{s};{y};{m};{v};1,5\n" for s, y, m, v in DECIMAL_ROWS))
+        want, _ = dialect_means(directory, "points", catchment, stations, points)
+        got, stderr = dialect_means(directory, "noted", catchment, stations, noted)
+        assert_that(got == want and want[0]["areal_mean"], f"noted: {got} against {want}: {stderr}")
+        mixed = write(directory, "mixed.csv", "station_id;name;lon;lat\nN1;Lake, north;175,6;-39,1\n"
+                      "N2;3,5;176.4;-39.1\n")
+        _, stderr = run_colorado(os.path.join(directory, "mixed"), stations=mixed, observations=observations,
+                                 catchment=catchment, what="a point among decimal commas", status=1, plots=False)
+        assert_that(f"{mixed}:3: column 'lon': '176.4' has a point, where the file's numbers have decimal commas "
+                    "(as '175,6' in column 'lon' on line 2 shows; a point there is digit grouping" in stderr,
+                    f"a point among decimal commas: {stderr}")
+    # (line, column, field) of the first decimal comma in the columns read (any where None).
+    for text, read, expected in (("a;b;c\n1;2,5;x\n", [0], None), ("a;b;c\n1;2,5;x\n", [1], (2, 1, "2,5")),
+                                 ("a;b;c\n1;2,5;x\n", None, (2, 1, "2,5")), ("a;b;c\n1;2;3,5\n", [0, 1], None),
+                                 ('a;b\n"x;1,5";2,5\n', [1], (2, 1, "2,5")), ('a;b\n"x;1,5";2\n', [1], None),
+                                 ("a\tb\n0,5\t1\n2\t3,5\n", [1], (3, 1, "3,5")), ("a;b\n1;2\n", [], None)):
+        got = csv_input.decimal_comma_field(text, "\t" if "\t" in text else ";", read)
+        assert_that(got == expected, f"{text!r} {read}: {got}, expected {expected}")
+
+
+def test_decimal_commas_in_quoted_fields_are_read():
+    # R's write.csv2 and pandas' QUOTE_ALL quote fields: "A";"2000";"1";"10,5" gave "'10,5' is
+    # not a number". Quoted decimal commas make the file's numbers decimal commas as bare ones do.
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, _ = write_lake_basin(directory)
+        plain = write_decimal_rows(directory, "plain.csv", lambda fields: ",".join(fields) + "\n")
+        quoted = write_decimal_rows(directory, "quoted.csv", lambda fields: ";".join(f'"{f}"' for f in fields) + "\r\n",
+                                    comma=True)
+        want, _ = dialect_means(directory, "plain", catchment, stations, plain)
+        got, stderr = dialect_means(directory, "quoted", catchment, stations, quoted)
+        assert_that(got == want and want[0]["areal_mean"], f"quoted decimal commas: {got} against {want}: {stderr}")
+        grouped = write(directory, "grouped.csv", '"station_id";"year";"month";"precip"\n"N1";"2001";"1";"10,5"\n'
+                        '"N2";"2001";"1";"1.234"\n')
+        _, stderr = run_colorado(os.path.join(directory, "grouped"), stations=stations, observations=grouped,
+                                 catchment=catchment, what="a quoted point", status=1, plots=False)
+        assert_that(f"{grouped}:3: column 'precip': '1.234' has a point, where the file's numbers have decimal "
+                    "commas (as '10,5' in column 'precip' on line 2 shows" in stderr, f"a quoted point: {stderr}")
+
+
+def test_lines_ending_in_a_lone_cr_read_decimal_commas():
+    # Old Excel for Mac ends lines with \r alone: a decimal comma in the last column was not seen
+    # (the pattern's end of line was \n's, or the file's end), and 10,5 was "not a number".
+    rows = [row for row in DECIMAL_ROWS if row[3] != "30"] + [("N3", 2001, 1, "30")]  # (the last without one)
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, _ = write_lake_basin(directory)
+        plain = write_decimal_rows(directory, "plain.csv", lambda fields: ",".join(fields) + "\n")
+        mac = write_decimal_rows(directory, "mac.csv", lambda fields: ";".join(fields) + "\r", True, rows)
+        mac_stations = write(directory, "mac_stations.csv", "station_id;lon;lat\r" + "".join(
+            f"{s};{lon};{lat}\r".replace(".", ",") for s, (lon, lat) in LAKE_GAUGES.items()))
+        want, _ = dialect_means(directory, "plain", catchment, stations, plain)
+        got, stderr = dialect_means(directory, "mac", catchment, mac_stations, mac)
+        assert_that(got == want and want[0]["areal_mean"], f"lines ending in \\r: {got} against {want}: {stderr}")
+        # A file of both stations and observations so written is read as both (its header was not
+        # found: it ran to the file's end).
+        both = write(directory, "mac_both.csv", "STATION;LONGITUDE;LATITUDE;DATE;PRCP\r" + "".join(
+            f"{s};{LAKE_GAUGES[s][0]};{LAKE_GAUGES[s][1]};{y}-{m:02d};{v}\r".replace(".", ",") for s, y, m, v in rows))
+        _, stderr = run_colorado(os.path.join(directory, "mac_both"), observations=both, catchment=catchment,
+                                 what="stations and observations in a file of \\r", plots=False)
+        got = read_csv(os.path.join(directory, "mac_both", "areal_mean.csv"))
+        assert_that(got == want, f"stations and observations in a file of \\r: {got} against {want}: {stderr}")
+
+
+def test_fields_after_a_comma_and_a_space_may_be_quoted():
+    # "station_id", "name", "lon", "lat" (a comma and a space, then a quoted name, as some programs
+    # write CSV) was refused: the csv module keeps the space and the quotes of such a field. The
+    # spaces are skipped, so the quotes hold the field (a comma inside included), in the header and
+    # in the records.
+    csv_input = import_example("csv_input")
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, observations = write_lake_basin(directory)
+        names = {s: f"Gauge {s}, lake" for s in LAKE_GAUGES}
+        named = write(directory, "named.csv", "station_id,name,lon,lat\n" + "".join(
+            f'{s},"{names[s]}",{lon},{lat}\n' for s, (lon, lat) in LAKE_GAUGES.items()))
+        spaced = write(directory, "spaced.csv", '"station_id", "name", "lon", "lat"\n' + "".join(
+            f'"{s}", "{names[s]}", {lon}, "{lat}"\n' for s, (lon, lat) in LAKE_GAUGES.items()))
+        spaced_obs = write(directory, "spaced_obs.csv", '"station_id", "year", "month", "precip"\n' + "".join(
+            '"' + '", "'.join(line.rstrip().split(",")) + '"\n' for line in open(observations).readlines()[1:]))
+        want, _ = dialect_means(directory, "plain", catchment, named, observations, month="2001-01")
+        got, stderr = dialect_means(directory, "spaced", catchment, spaced, spaced_obs, month="2001-01")
+        assert_that(got == want, f"quoted fields after spaces: {got} against {want}: {stderr}")
+        weights = read_csv(os.path.join(directory, "spaced", "weights_2001_01.csv"))
+        assert_that(weights == read_csv(os.path.join(directory, "plain", "weights_2001_01.csv"))
+                    and {w["name"] for w in weights} <= set(names.values()), f"the names read: {weights}")
+    assert_that([csv_input.header_name(f) for f in (' "lon"', '"lat" ', ' " x " ', '"', 'a"b"')]
+                == ["lon", "lat", "x", '"', 'a"b"'], "header names stripped of their quotes")
+
+
+def write_shared_and_co_located(directory):
+    """The lake basin with gauges 0102 and 102 (one station id by station_key) and N7 at N4's
+    place, and observations of both ids and of N4 and N7 in one month; returns (catchment,
+    stations, observations)."""
+    catchment, _, _ = write_lake_basin(directory)
+    gauges = {"0102": LAKE_GAUGES["N1"], "102": LAKE_GAUGES["N2"], "N3": LAKE_GAUGES["N3"], "N4": LAKE_GAUGES["N4"],
+              "N5": LAKE_GAUGES["N5"], "N7": LAKE_GAUGES["N4"]}
+    stations = os.path.join(directory, "shared.csv")
+    write_stations(stations, gauges)
+    observations = write(directory, "shared_obs.csv", "station_id,year,month,precip\n102,2001,1,10\nN3,2001,1,30\n"
+                         "N4,2001,1,40\nN5,2001,1,50\nN7,2001,1,45\n0102,2001,2,10\nN3,2001,2,30\nN7,2001,2,47\n")
+    return catchment, stations, observations
+
+
+def test_unused_inputs_notes_name_where_the_values_went():
+    # A gauge whose station id an earlier gauge has (0102 and 102) is listed as without any
+    # observed value: its note names the gauge its id's observations went to, as the warning does;
+    # a value set aside for a gauge at the same place that reported names the value used.
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, observations = write_shared_and_co_located(directory)
+        _, stderr = dialect_means(directory, "out", catchment, stations, observations)
+        assert_that("their observations go to the first: 102 (gauges 0 and 1: lines 2 and 3)" in stderr,
+                    f"the warning of the shared id: {stderr}")
+        notes = {(row["file"], row["line"]): (row["kind"], row["note"])
+                 for row in read_csv(os.path.join(directory, "out", "unused_inputs.csv"))}
+        assert_that(notes.get((stations, "3")) == ("gauge without any observed value",
+                                                   "station id of line 2 (0102): its observations go to that gauge"),
+                    f"the gauge of the shared id: {notes}")
+        assert_that(notes.get((stations, "7"), ("", ""))[1] == "same place as line 5", f"the gauge N7: {notes}")
+        kind = ("observation of a gauge at the place of an earlier gauge that reported that month (the earlier "
+                "gauge's value is used)")
+        assert_that(notes.get((observations, "6")) == (kind, "the value of line 4 (station N4 at the same place) is "
+                                                             "used"), f"N7's value of 2001-01: {notes}")
+        assert_that((observations, "9") not in notes, f"N7's value of 2001-02 (N4 had none) is used: {notes}")
+
+
+def test_the_help_says_what_unused_inputs_lists():
+    # --help listed "an observation ... without a station id or time" in unused_inputs.csv, but
+    # the script ends naming such a row; the file's kind said so too. And unused_inputs.csv ends
+    # its lines as the other CSV outputs do (the csv module's \r\n, each of them).
+    status, stdout, _ = run_example("colorado_areal_precipitation.py", "--help")
+    text = " ".join(stdout.split())
+    assert_that(status == 0 and "without a station id or time" not in text
+                and "an observation of a station no gauge has, and an observation before --start" in text,
+                f"--help on unused_inputs.csv: {text}")
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, observations = write_shared_and_co_located(directory)
+        write(directory, "unknown.csv", open(observations).read() + "N9,2001,1,3\n")
+        _, stderr = dialect_means(directory, "out", catchment, stations, os.path.join(directory, "unknown.csv"))
+        rows = read_csv(os.path.join(directory, "out", "unused_inputs.csv"))
+        assert_that(["observation of a station no gauge has"] == [r["kind"] for r in rows if r["station_id"] == "N9"],
+                    f"the row of N9: {rows}")
+        ends = {}
+        for name in sorted(os.listdir(os.path.join(directory, "out"))):
+            if name.endswith(".csv"):
+                with open(os.path.join(directory, "out", name), "rb") as f:
+                    data = f.read()
+                ends[name] = (data.count(b"\r\n"), data.count(b"\n"))
+        assert_that(len(ends) >= 4 and all(crlf == lf for crlf, lf in ends.values()),
+                    f"line ends differ between the CSV outputs: {ends}")
+        # (a row without its station id or its time ends the run, naming it: it is never listed)
+        for name, row in (("no_id", ",2001,1,3"), ("no_time", "N3,,1,3")):
+            bad = write(directory, f"{name}.csv", f"station_id,year,month,precip\n{row}\n")
+            _, stderr = run_colorado(os.path.join(directory, name), stations=stations, observations=bad,
+                                     catchment=catchment, what=name, status=1, plots=False)
+            assert_that(f"{bad}:2: column" in stderr and "Traceback" not in stderr, f"{name}: {stderr}")
 
 
 def stderr_messages(stderr):
@@ -3000,6 +3199,10 @@ if __name__ == "__main__":
          test_an_earlier_runs_files_in_out_are_named,
          test_several_days_get_the_files_each_gets_alone,
          test_the_field_separator_and_the_decimal_mark,
+         test_decimal_commas_are_told_by_the_columns_read_as_numbers,
+         test_decimal_commas_in_quoted_fields_are_read, test_lines_ending_in_a_lone_cr_read_decimal_commas,
+         test_fields_after_a_comma_and_a_space_may_be_quoted, test_unused_inputs_notes_name_where_the_values_went,
+         test_the_help_says_what_unused_inputs_lists,
          test_small_values_and_a_catchment_across_the_antimeridian,
          test_observations_of_no_gauge_end_the_run,
          test_compressed_observations_are_read_and_all_weights_can_be_skipped,

@@ -190,8 +190,14 @@ def test_values_of_a_co_located_gauge_that_are_not_used_are_listed():
     listed = f.GetOutputDataObject(1).GetFieldData().GetArray("CoLocatedObservationRows")
     assert_that([listed.GetValue(i) for i in range(listed.GetNumberOfTuples())] == shadowed,
                 f"the row of g1copy in 2000-01 is listed: {shadowed}")
+    # The row used in its place: g1's of 2000-01 (CoLocatedObservationOfRows, and the warning).
+    used = [r for r in range(table.GetNumberOfRows()) if stations.GetValue(r) == "g1" and times.GetValue(r) == 2000.0]
+    instead = f.GetOutputDataObject(1).GetFieldData().GetArray("CoLocatedObservationOfRows")
+    assert_that([instead.GetValue(i) for i in range(instead.GetNumberOfTuples())] == used,
+                f"g1's row of 2000-01 is used in its place: {used}")
     named = [w for w in warnings if "CoLocatedObservationRows" in w]
-    assert_that(len(named) == 1 and f"row {shadowed[0]} (station g1copy)" in named[0], f"{warnings}")
+    assert_that(len(named) == 1 and f"row {shadowed[0]} (station g1copy) (row {used[0]} used)" in named[0],
+                f"{warnings}")
     # The means: g1's 3 (not g1copy's 100) in January, g1copy's 7 in February, each with g2's 1.
     means = summary_column(f, "ArealMean")
     assert_that(abs((means[0] - 1.0) / (3.0 - 1.0) - (means[1] - 1.0) / (7.0 - 1.0)) < 1e-12,
