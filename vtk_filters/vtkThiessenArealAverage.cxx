@@ -59,6 +59,12 @@ std::string Trimmed(const std::string& text, const char* characters = " \t")
 /// A station id as text, trimmed; empty for NaN (what a reader may make of an empty field).
 std::string StationName(const vtkVariant& value)
 {
+  if (value.IsChar() || value.IsSignedChar())
+  {
+    // Numbers, as numpy's int8 makes them (vtkCharArray), not characters: ToString() gave 'A'
+    // for 65, which then matched no observation's 65.
+    return std::to_string(value.ToInt());
+  }
   if (!(value.IsFloat() || value.IsDouble()))
   {
     return Trimmed(value.ToString(), " \t\"");
@@ -103,10 +109,16 @@ vtkAbstractArray* ObservationColumn(vtkTable* table,
   const char* holds)
 {
   vtkAbstractArray* array = table->GetColumnByName(column.c_str());
-  if (!array || array->GetNumberOfComponents() != 1)
+  if (!array)
   {
     throw tessera::InputError("the observations table has no column '" + column + "' (" + property +
       ": " + holds + "); its columns are " + ArrayNames(table->GetRowData()));
+  }
+  if (array->GetNumberOfComponents() != 1)
+  {
+    throw tessera::InputError("the observations table's column '" + column + "' (" + property +
+      ": " + holds + ") has " + std::to_string(array->GetNumberOfComponents()) +
+      " components, where one value a row is read");
   }
   return array;
 }
@@ -1186,6 +1198,14 @@ vtkAbstractArray* vtkThiessenArealAverage::GaugeStationIds(vtkPointSet* gauges, 
       "' (StationIdArrayName) of station ids to match the observations with; their arrays are " +
       ArrayNames(gauges->GetPointData()));
   }
+  if (ids && ids->GetNumberOfComponents() != 1)
+  {
+    // (read value by value, a 2-component array's (101, 0), (102, 0) gave the second gauge the
+    // id 0 and the third 102, the second's station)
+    throw tessera::InputError("the gauges' station id array '" + this->StationIdArrayName +
+      "' has " + std::to_string(ids->GetNumberOfComponents()) +
+      " components, where one id a gauge is read");
+  }
   if (ids && ids->GetNumberOfTuples() != gauges->GetNumberOfPoints())
   {
     throw tessera::InputError("the gauges' station id array '" + this->StationIdArrayName +
@@ -1338,6 +1358,13 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
         "without observations the gauges need a numeric point-data array '" + this->ValueArrayName +
         "' (ValueArrayName)" + (in.ValueProblem.empty() ? std::string() : ": " + in.ValueProblem) +
         "; their arrays are " + ArrayNames(gauges->GetPointData()));
+    }
+    if (values->GetNumberOfComponents() != 1)
+    {
+      throw tessera::InputError("the gauges' value array '" + this->ValueArrayName + "' has " +
+        std::to_string(values->GetNumberOfComponents()) +
+        " components, where one value a gauge is read (ValueArrayName; ParaView's Calculator "
+        "makes an array of one component)");
     }
     // The one step's time: the gauges' own (from a time-aware source), else 0.
     vtkInformation* gaugesInfo = gauges->GetInformation();

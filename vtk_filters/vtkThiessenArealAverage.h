@@ -54,8 +54,10 @@
  * number or a missing-value marker, are errors naming the row; a table none of whose rows can be
  * used is an error that counts them. Station ids match as text (leading zeros of integer ids are
  * ignored, so "050109" matches 50109, as does "50109.0"; a floating-point id column, as a CSV
- * reader makes, is read in full, so 6730200 and 6730500 stay two stations; matching and steps:
- * core/observation_series.h).
+ * reader makes, is read in full, so 6730200 and 6730500 stay two stations; 8-bit integers, as
+ * numpy's int8 makes them, are numbers, not characters; matching and steps:
+ * core/observation_series.h). Station id and value arrays, and the table's columns, hold one
+ * component (another count is an error naming the array).
  *
  * The projection is vtkGeographicProjection's automatic equal-area conic fitted to the catchment
  * (where the tiles are measured, so gauges far from it, such as one that never reports or has a

@@ -1587,8 +1587,67 @@ def test_an_area_method_that_is_no_choice_is_named():
                 in errors[0] and f.GetOutputDataObject(1).GetNumberOfRows() == 0, f"{errors}")
 
 
+def test_ids_and_values_are_read_one_a_gauge_or_row():
+    """A station id or value array of two components was read value by value (the second gauge got
+    the id 0, the third the second's station) or by its first component, and a table column of
+    two was called missing: each is an error naming the array and its components. Ids of 8-bit
+    integers (numpy's int8, a vtkCharArray) are numbers, not characters: 65 matches 65, not 'A'."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+
+    square = polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]])
+    coords = [(0.2, 0.2), (0.8, 0.3), (0.5, 0.8)]
+
+    def run_with(ids, table=None, values=None):
+        gauges = gauges_polydata(coords, ["x", "y", "z"], values)
+        gauges.GetPointData().RemoveArray("station_id")
+        ids.SetName("station_id")
+        gauges.GetPointData().AddArray(ids)
+        f = vtkThiessenArealAverage()
+        errors = messages_of(f)
+        f.SetGaugesData(gauges)
+        f.SetCatchmentData(square)
+        if table is not None:
+            f.SetObservationsData(table)
+        f.Update(1)
+        return f, errors
+
+    pairs = numpy_to_vtk(np.array([[101, 0], [102, 0], [103, 0]], dtype=np.int32), deep=True)
+    months = observations_table({(2000, 1): {"101": 1.0, "102": 2.0, "103": 3.0}})
+    _, errors = run_with(pairs, months)
+    assert_that(len(errors) == 1 and "station id array 'station_id' has 2 components" in errors[0], f"{errors}")
+    two_values = gauges_polydata(coords, ["x", "y", "z"])
+    doubled = numpy_to_vtk(np.array([[1.0, 9.0], [2.0, 9.0], [3.0, 9.0]]), deep=True)
+    doubled.SetName("value")
+    two_values.GetPointData().AddArray(doubled)
+    f = vtkThiessenArealAverage()
+    errors = messages_of(f)
+    f.SetGaugesData(two_values)
+    f.SetCatchmentData(square)
+    f.Update(1)
+    assert_that(len(errors) == 1 and "value array 'value' has 2 components" in errors[0], f"{errors}")
+    table = observations_table({(2000, 1): {"x": 1.0, "y": 2.0, "z": 3.0}})
+    time = table.GetColumnByName("time")
+    paired = numpy_to_vtk(np.array([[time.GetValue(r), 0.0] for r in range(table.GetNumberOfRows())]), deep=True)
+    paired.SetName("time")
+    table.RemoveColumnByName("time")
+    table.AddColumn(paired)
+    ids = vtkStringArray()
+    for sid in ("x", "y", "z"):
+        ids.InsertNextValue(sid)
+    _, errors = run_with(ids, table)
+    assert_that(len(errors) == 1 and "column 'time'" in errors[0] and "has 2 components" in errors[0], f"{errors}")
+
+    small = numpy_to_vtk(np.array([65, 66, 67], dtype=np.int8), deep=True)
+    f, errors = run_with(small, observations_table({(2000, 1): {"65": 1.0, "66": 2.0, "67": 3.0}}))
+    assert_that(not errors and summary_column(f, "StationsUsed") == [3], f"int8 ids: {errors}")
+    _, errors = run_with(numpy_to_vtk(np.array([65, 66, 67], dtype=np.int8), deep=True),
+                         observations_table({(2000, 1): {"A": 1.0, "B": 2.0, "C": 3.0}}))
+    assert_that(len(errors) == 1 and "station ids that no gauge has: A" in errors[0], f"letters: {errors}")
+
+
 if __name__ == "__main__":
     run([test_four_symmetric_gauges_share_a_square,
+         test_ids_and_values_are_read_one_a_gauge_or_row,
          test_columns_of_different_lengths_are_named,
          test_a_missing_value_code_is_missing_when_set_and_named_when_not,
          test_colorado_months_match_a_brute_force_raster,
