@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <set>
 #include <string>
 
 namespace tessera
@@ -275,12 +276,22 @@ void NameUnorderedPoints(const std::vector<std::size_t>& tied,
 constexpr double NearEndWidths = 4.0;
 
 /// A warning naming pairs of open contour ends that lie within NearEndWidths basis widths of each
-/// other (the two ends of one long contour included): where a curve's points lie further apart
-/// than the basis reaches, its ridge breaks, and the curve comes out as pieces, or a closed one
-/// open, without a word. Clean, dense points make it likely: most of them need pixels of their
-/// own, so the automatic image is large and the basis narrow in the points' units (1000 points
-/// at random on a circle, without noise, gave 4 open groups with the Gaussian basis at 512 pixels,
-/// their ends 1-3 widths apart; separate curves and crossing lines ended 7 widths apart or more).
+/// other and face each other (the two ends of one long contour included): where a curve's points
+/// lie further apart than the basis reaches, its ridge breaks, and the curve comes out as pieces,
+/// or a closed one open, without a word. Clean, dense points make it likely: most of them need
+/// pixels of their own, so the automatic image is large and the basis narrow in the points' units
+/// (1000 points at random on a circle, without noise, gave 4 open groups with the Gaussian basis
+/// at 512 pixels, their ends 1-3 widths apart). One of the ends must look towards the other, the
+/// gap within 45 degrees of its own direction (not both: a short piece's end often hooks back):
+/// the ends of two lines side by side (24 units apart, 3.8 widths), of crossing lines and of a
+/// spiral's neighbouring turns are near each other too, but the gap runs across them, and a larger
+/// Width would merge those curves.
+///
+///    piece A  ====>  . . gap . .  <====  piece B      named: the ends look at each other
+///
+///    line 1   ====>
+///                 |  gap across                       not named
+///    line 2   ====>
 void NameNearContourEnds(const RidgeContours& contours,
   const PixelGrid& grid,
   double width,
@@ -289,18 +300,38 @@ void NameNearContourEnds(const RidgeContours& contours,
   struct End
   {
     int Contour;
-    int Pixel;
+    Point2 At;
+    Point2 Outward; // from a pixel a width or so inside the contour towards the end
+  };
+  const auto pixelPoint = [&](int pixel) {
+    return Point2{ double(pixel % grid.Width), double(pixel / grid.Width) };
   };
   std::vector<End> ends;
   for (int c = 0; c < contours.Count(); ++c)
   {
-    if (!contours.Closed[c])
+    const int first = contours.Offsets[c], last = contours.Offsets[c + 1] - 1;
+    if (contours.Closed[c] || last <= first)
     {
-      ends.push_back({ c, contours.Pixels[std::size_t(contours.Offsets[c])] });
-      ends.push_back({ c, contours.Pixels[std::size_t(contours.Offsets[c + 1] - 1)] });
+      continue;
+    }
+    const int back = std::min(last - first, std::max(2, static_cast<int>(std::lround(width))));
+    for (const auto& [end, inner] :
+      { std::make_pair(first, first + back), std::make_pair(last, last - back) })
+    {
+      const Point2 at = pixelPoint(contours.Pixels[std::size_t(end)]);
+      const Point2 from = pixelPoint(contours.Pixels[std::size_t(inner)]);
+      ends.push_back({ c, at, { at.x - from.x, at.y - from.y } });
     }
   }
   const double reach = NearEndWidths * width;
+  const double cos45 = std::sqrt(0.5);
+  // Whether the end looks towards the point `to` (within 45 degrees).
+  const auto looksAt = [cos45](const End& end, const Point2& to)
+  {
+    const double dx = to.x - end.At.x, dy = to.y - end.At.y;
+    const double dot = dx * end.Outward.x + dy * end.Outward.y;
+    return dot > cos45 * std::hypot(dx, dy) * std::hypot(end.Outward.x, end.Outward.y);
+  };
   struct Near
   {
     End A, B;
@@ -313,32 +344,41 @@ void NameNearContourEnds(const RidgeContours& contours,
     {
       const End& u = ends[a];
       const End& v = ends[b];
-      const double pixels = std::hypot(
-        u.Pixel % grid.Width - v.Pixel % grid.Width, u.Pixel / grid.Width - v.Pixel / grid.Width);
+      const double pixels = std::hypot(u.At.x - v.At.x, u.At.y - v.At.y);
       // One contour's own ends: only a contour long enough to be a curve bent back on itself
       // (a short one's ends are near by its shortness).
       const bool own = u.Contour == v.Contour;
-      if (pixels <= reach && (!own || contours.Lengths[std::size_t(u.Contour)] >= 4.0 * reach))
+      if (pixels <= reach && (looksAt(u, v.At) || looksAt(v, u.At)) &&
+        (!own || contours.Lengths[std::size_t(u.Contour)] >= 4.0 * reach))
       {
         near.push_back({ u, v, pixels });
       }
     }
   }
+  // One pair of ends per pair of contours (the nearest): a piece near another names it once.
+  std::sort(
+    near.begin(), near.end(), [](const Near& x, const Near& y) { return x.Pixels < y.Pixels; });
+  std::set<std::pair<int, int>> named;
+  near.erase(std::remove_if(near.begin(),
+               near.end(),
+               [&](const Near& n) {
+                 return !named.insert({ n.A.Contour, n.B.Contour }).second;
+               }),
+    near.end());
   if (near.empty())
   {
     return;
   }
-  std::sort(
-    near.begin(), near.end(), [](const Near& x, const Near& y) { return x.Pixels < y.Pixels; });
-  const auto where = [&](int pixel)
+  const auto where = [&](const Point2& pixel)
   {
-    const Point2 p = grid.PixelCentre(pixel % grid.Width, pixel / grid.Width);
+    const Point2 p = grid.PixelCentre(static_cast<int>(pixel.x), static_cast<int>(pixel.y));
     return "(" + NumberText(p.x) + ", " + NumberText(p.y) + ")";
   };
   result.Warnings.push_back(std::to_string(near.size()) +
     " pair(s) of open contour ends lie within " + NumberText(NearEndWidths) + " basis widths (" +
     NumberText(reach * grid.Spacing) +
-    " in the points' units) of each other: a curve may be broken there, where its points lie "
+    " in the points' units) of each other, one looking towards the other: a curve may be broken "
+    "there, where its points lie "
     "further apart than the basis reaches (a sparse stretch; or clean, dense points, which take a "
     "large automatic ImageSize, in whose pixels the basis is narrow); a larger Width, or a "
     "smaller ImageSize, may join the pieces: " +
@@ -349,8 +389,8 @@ void NameNearContourEnds(const RidgeContours& contours,
         return (n.A.Contour == n.B.Contour ? "group " + std::to_string(n.A.Contour) + "'s two ends"
                                            : "groups " + std::to_string(n.A.Contour) + " and " +
                      std::to_string(n.B.Contour)) +
-          ", " + NumberText(n.Pixels / width) + " widths apart at " + where(n.A.Pixel) + " and " +
-          where(n.B.Pixel);
+          ", " + NumberText(n.Pixels / width) + " widths apart at " + where(n.A.At) + " and " +
+          where(n.B.At);
       }));
 }
 

@@ -59,9 +59,9 @@
  * (default) chooses the size as the paper says (most points in pixels of their own, copies of a
  * point counting once); sizes above 2048 are refused before anything is allocated (the FFT would
  * need more than 512 MiB). NaN or infinite coordinates are an error naming the point. Open
- * contours whose ends lie within 4 basis widths of each other (a curve broken where its points
- * lie further apart than the basis reaches) are named in a warning with the places, and so is a
- * Width below one pixel.
+ * contours whose ends lie within 4 basis widths of each other, one looking towards the other (a
+ * curve broken where its points lie further apart than the basis reaches), are named in a warning
+ * with the places, and so is a Width below one pixel.
  */
 
 #ifndef vtkRidgeGrouping_h

@@ -14,6 +14,7 @@
 #include <functional>
 #include <map>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -585,43 +586,68 @@ std::vector<std::string> WarningsWith(const RidgeGroupingResult& result, const s
   return found;
 }
 
-// Pairs of open contour ends within widths basis widths of each other, counted here from the
-// contour polylines (the warning's count, found independently).
+// Pairs of contours with open ends within widths basis widths of each other, one of the two
+// looking towards the other (the gap within 45 degrees of its direction from a point some width
+// back along its contour), counted here from the contour polylines: the warning's count, found
+// independently.
 int NearOpenEnds(const RidgeGroupingResult& result, double widths, double width)
 {
-  std::vector<std::pair<int, Point2>> ends;
-  for (int c = 0; c < result.Contours.Count(); ++c)
+  struct End
   {
-    if (!result.ContourClosed[std::size_t(c)])
+    int Contour;
+    Point2 At, Outward;
+  };
+  std::vector<End> ends;
+  const tessera::Polylines& lines = result.Contours;
+  for (int c = 0; c < lines.Count(); ++c)
+  {
+    const int first = lines.Offsets[c], last = lines.Offsets[c + 1] - 1;
+    if (result.ContourClosed[std::size_t(c)] || last <= first)
     {
-      ends.push_back({ c, result.Contours.Points[std::size_t(result.Contours.Offsets[c])] });
-      ends.push_back(
-        { c, result.Contours.Points[std::size_t(result.Contours.Offsets[c + 1] - 1)] });
+      continue;
+    }
+    const int back = std::min(last - first, std::max(2, int(std::lround(width))));
+    for (const auto& [end, inner] :
+      { std::make_pair(first, first + back), std::make_pair(last, last - back) })
+    {
+      const Point2 at = lines.Points[std::size_t(end)], from = lines.Points[std::size_t(inner)];
+      ends.push_back({ c, at, { at.x - from.x, at.y - from.y } });
     }
   }
   const double reach = widths * width * result.PixelSize;
-  int near = 0;
+  const auto looks = [](const End& e, const Point2& to)
+  {
+    const double dx = to.x - e.At.x, dy = to.y - e.At.y;
+    return dx * e.Outward.x + dy * e.Outward.y >
+      std::sqrt(0.5) * std::hypot(dx, dy) * std::hypot(e.Outward.x, e.Outward.y);
+  };
+  std::set<std::pair<int, int>> pairs;
   for (std::size_t a = 0; a < ends.size(); ++a)
   {
     for (std::size_t b = a + 1; b < ends.size(); ++b)
     {
-      const double apart =
-        std::hypot(ends[a].second.x - ends[b].second.x, ends[a].second.y - ends[b].second.y);
-      const bool own = ends[a].first == ends[b].first;
-      near += apart <= reach * (1 + 1e-12) &&
-        (!own || result.ContourLength[std::size_t(ends[a].first)] >= 4 * reach);
+      const End& u = ends[a];
+      const End& v = ends[b];
+      const bool own = u.Contour == v.Contour;
+      if (std::hypot(u.At.x - v.At.x, u.At.y - v.At.y) <= reach * (1 + 1e-12) &&
+        (looks(u, v.At) || looks(v, u.At)) &&
+        (!own || result.ContourLength[std::size_t(u.Contour)] >= 4 * reach))
+      {
+        pairs.insert({ u.Contour, v.Contour });
+      }
     }
   }
-  return near;
+  return int(pairs.size());
 }
 } // namespace
 
 // Points without noise at random places on one circle, dense enough that most need a pixel of
 // their own: the automatic image is large, the basis narrow in the points' units, and the
 // Gaussian basis breaks the circle where the random gaps are widest. The groups whose contour
-// ends lie within four widths of each other are named (the count checked against the contours'
-// own ends); a noisy circle, whose image is coarser, stays closed and names none, and neither
-// do two segments of a line ten widths apart. A Width below one pixel is warned of.
+// ends lie within four widths of each other, one looking at the other, are named (the count
+// checked against the contours' own ends); a noisy circle, whose image is coarser, stays closed
+// and names none, and neither do two segments of a line seven widths apart, or two lines side by
+// side whose ends are near but across them. A Width below one pixel is warned of.
 TEST(RidgeGrouping, ContoursEndingNearEachOtherAreNamedAsPiecesOfOneCurve)
 {
   RidgeGroupingSettings gaussian;
@@ -668,18 +694,37 @@ TEST(RidgeGrouping, ContoursEndingNearEachOtherAreNamedAsPiecesOfOneCurve)
   EXPECT_TRUE(closed.ContourClosed[0]);
   EXPECT_TRUE(WarningsWith(closed, "open contour ends").empty());
 
-  // Two segments of one line, 10 widths apart in a 128-pixel image.
-  RidgeGroupingSettings fixed;
-  fixed.ImageSize = 128;
+  // Two segments of one line, many widths apart: two contours, not named.
+  const RidgeGroupingSettings automatic;
   std::vector<Point2> segments;
   for (int k = 0; k < 200; ++k)
   {
     segments.push_back({ 0.2 * k + 0.05 * std::sin(k), 0.3 * std::cos(3 * k) });
-    segments.push_back({ 40.0 + 0.2 * k + 0.05 * std::sin(k), 0.3 * std::cos(3 * k) });
+    segments.push_back({ 75.0 + 0.2 * k + 0.05 * std::sin(k), 0.3 * std::cos(3 * k) });
   }
-  const RidgeGroupingResult apart = RidgeGrouping(fixed).Run(segments);
-  EXPECT_EQ(NearOpenEnds(apart, 4.0, fixed.Width), 0);
+  const RidgeGroupingResult apart = RidgeGrouping(automatic).Run(segments);
+  ASSERT_EQ(apart.Contours.Count(), 2);
   EXPECT_TRUE(WarningsWith(apart, "open contour ends").empty());
+
+  // Two noisy lines 24 units apart, side by side (ParallelLinesCloseTogetherAreNotJoinedAcross):
+  // their ends lie 3.8 widths apart, but across the lines, and a larger Width would merge them.
+  const std::vector<TrueCurve> lines = { { [](double t) {
+                                            return Point2{ 200 * t, 12 };
+                                          },
+                                           false },
+    { [](double t) {
+       return Point2{ 200 * t, -12 };
+     },
+      false } };
+  RidgeGroupingSettings sideBySide;
+  sideBySide.CurveSigma = 0.02;
+  for (unsigned seed : { 1U, 2U, 3U })
+  {
+    const RidgeGroupingResult result =
+      RidgeGrouping(sideBySide).Run(Positions(SampleCurves(lines, { 300, 300 }, 1.0, seed)));
+    EXPECT_EQ(NearOpenEnds(result, 4.0, sideBySide.Width), 0) << "seed " << seed;
+    EXPECT_TRUE(WarningsWith(result, "open contour ends").empty()) << "seed " << seed;
+  }
 
   for (const double width : { 0.5, 1.0 })
   {
