@@ -264,6 +264,27 @@ bool TileHoldsPoint(const Point2* tile, std::size_t count, const Point2& p, bool
   return true;
 }
 
+// Whether segment a-b passes through the convex tile's interior, exactly: no line of a tile edge,
+// nor the segment's own line, separates them (a segment that only touches the tile's boundary is
+// separated, weakly, by one of those lines).
+bool SegmentEntersTile(const Point2& a, const Point2& b, const Point2* tile, std::size_t count)
+{
+  int above = 0, below = 0;
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const Point2& p = tile[k];
+    const Point2& q = tile[k + 1 == count ? 0 : k + 1];
+    if ((p.x != q.x || p.y != q.y) && orient2d_fast(p, q, a) <= 0 && orient2d_fast(p, q, b) <= 0)
+    {
+      return false;
+    }
+    const int side = orient2d_fast(a, b, p);
+    above += side > 0;
+    below += side < 0;
+  }
+  return above > 0 && below > 0;
+}
+
 // Whether the tile holds the whole box: its four corners (the tile is convex).
 bool TileHoldsBox(const Point2* tile, std::size_t count, const Box2& box)
 {
@@ -787,9 +808,9 @@ bool Catchment::HoldsPartOf(const Point2* tile, std::size_t count) const
   }
   if (!AllOnOneLine(tile, count))
   {
-    // A tile with area: its mean decides, or a vertex of the catchment strictly inside it (a
-    // catchment some 10^-14 of the tile, whose piece measured below the clip's rounding bound).
-    return this->HasVertexStrictlyIn(tile, count);
+    // A tile with area: its mean decides, or the catchment's boundary entering it (a catchment
+    // some 10^-14 of the tile, whose piece measured below the clip's rounding bound).
+    return this->BoundaryEntersTile(tile, count);
   }
   for (std::size_t k = 0; k < count; ++k)
   {
@@ -803,7 +824,7 @@ bool Catchment::HoldsPartOf(const Point2* tile, std::size_t count) const
   return false;
 }
 
-bool Catchment::HasVertexStrictlyIn(const Point2* tile, std::size_t count) const
+bool Catchment::BoundaryEntersTile(const Point2* tile, std::size_t count) const
 {
   const Box2 box = BoundsOf(tile, count);
   if (box.XMax < this->Box.XMin || box.XMin > this->Box.XMax || box.YMax < this->Box.YMin ||
@@ -811,7 +832,8 @@ bool Catchment::HasVertexStrictlyIn(const Point2* tile, std::size_t count) const
   {
     return false;
   }
-  // A vertex in the box lies in one of its cells, where the segment it starts is listed.
+  // A vertex in the box lies in one of its cells, where the segment it starts is listed, and a
+  // segment through the tile is listed in the cells it crosses, one of which the box holds.
   for (std::size_t j = this->CellY(box.YMin); j <= this->CellY(box.YMax); ++j)
   {
     for (std::size_t i = this->CellX(box.XMin); i <= this->CellX(box.XMax); ++i)
@@ -819,8 +841,10 @@ bool Catchment::HasVertexStrictlyIn(const Point2* tile, std::size_t count) const
       const std::size_t cell = i + j * this->GridX;
       for (std::uint32_t k = this->CellStart[cell]; k < this->CellStart[cell + 1]; ++k)
       {
-        const Point2& vertex = this->Points[this->CellEdges[k]];
-        if (InBox(vertex, box) && TileHoldsPoint(tile, count, vertex, true))
+        const std::uint32_t v = this->CellEdges[k];
+        const Point2& vertex = this->Points[v];
+        if ((InBox(vertex, box) && TileHoldsPoint(tile, count, vertex, true)) ||
+          SegmentEntersTile(vertex, this->Points[this->NextVertex(v)], tile, count))
         {
           return true;
         }

@@ -119,9 +119,10 @@ public:
   bool Contains(const Point2& p) const;
 
   /// Whether a tile that clips to no area still lies (partly) in the catchment: a sliver thinner
-  /// than rounding, or collinear corners. Its vertex mean inside, or a vertex of the catchment
-  /// strictly inside it (a catchment some 10^-14 of the tile's size, partly in it, whose piece
-  /// measures below the clip's rounding); or, for corners all on one line (exactly), any corner or
+  /// than rounding, or collinear corners. Its vertex mean inside, or the catchment's boundary
+  /// entering it, a vertex strictly inside or a segment through its interior (a catchment some
+  /// 10^-14 of the tile's size, partly in it, whose piece measures below the clip's rounding); or,
+  /// for corners all on one line (exactly), any corner or
   /// edge midpoint inside, since the mean of a flat tile half in the catchment can lie outside.
   /// (Boundary points get either answer, as in Contains.)
   bool HoldsPartOf(const Point2* tile, std::size_t count) const;
@@ -177,8 +178,9 @@ public:
     double coordinateEpsilon = std::numeric_limits<double>::epsilon()) const;
 
 private:
-  // Whether a vertex of the catchment lies strictly inside the convex tile (found by the grid).
-  bool HasVertexStrictlyIn(const Point2* tile, std::size_t count) const;
+  // Whether the catchment's boundary enters the convex tile: a vertex strictly inside it, or a
+  // segment through its interior (found by the grid).
+  bool BoundaryEntersTile(const Point2* tile, std::size_t count) const;
   void BuildGrid();
   void FindDepths();
   void OrientRings();

@@ -588,8 +588,8 @@ TEST(Clip, SmallTilesBesideLongSlantedEdgesMatchExactClipping)
 // larger it is: clipped relative to its first vertex, a unit catchment in a tile of 1e14 measured
 // less than the rounding bound of that shift and was dropped as empty. A tile that large holding
 // part of the catchment may still measure nothing (the shift's rounding is larger than the part),
-// and HoldsPartOf then says that it holds some (a catchment vertex strictly inside it), so that
-// it is reported, not lost; tiles beside the catchment do not.
+// and HoldsPartOf then says that it holds some (a catchment vertex strictly inside it, or a
+// segment through it), so that it is reported, not lost; tiles beside the catchment do not.
 TEST(Clip, HugeTilesHoldingTheCatchmentGiveItOrAreReported)
 {
   Rings rings;
@@ -605,17 +605,24 @@ TEST(Clip, HugeTilesHoldingTheCatchmentGiveItOrAreReported)
     EXPECT_EQ(clipped.Rings.RingOffsets, catchment.RingOffsets()) << s;
     EXPECT_EQ(clipped.Rings.Vertices, catchment.Vertices()) << s;
 
+    // A tile over the left of the catchment (holding some of its vertices), and a strip through
+    // its middle (holding none: only segments cross it).
     const std::vector<Point2> leftHalf{ { -s, -s }, { 0.75, -s }, { 0.75, s } };
-    const double area = catchment.ClipArea(leftHalf);
-    const mpq_class exact = ExactClippedArea(rings, leftHalf);
-    ASSERT_GT(exact, 0) << s;
-    if (area == 0.0)
+    const std::vector<Point2> strip{ { 0.4, -s }, { 0.6, -s }, { 0.5, s } };
+    for (const auto& part : { leftHalf, strip })
     {
-      EXPECT_TRUE(catchment.HoldsPartOf(leftHalf.data(), leftHalf.size())) << s;
-    }
-    else
-    {
-      EXPECT_NEAR(area, exact.get_d(), 1e-9 * s) << s;
+      const double area = catchment.ClipArea(part);
+      const mpq_class exact = ExactClippedArea(rings, part);
+      ASSERT_GT(exact, 0) << s;
+      if (area == 0.0)
+      {
+        EXPECT_TRUE(catchment.HoldsPartOf(part.data(), part.size())) << s;
+      }
+      else
+      {
+        // The clip's rounding: ulps of the tile's size (RoundingAreaBound) over a perimeter of 4.
+        EXPECT_NEAR(area, exact.get_d(), 128 * std::numeric_limits<double>::epsilon() * s) << s;
+      }
     }
     const std::vector<Point2> beside{ { -s, -s }, { -0.5, -s }, { -0.5, s } };
     EXPECT_EQ(catchment.ClipArea(beside), 0.0) << s;
