@@ -320,22 +320,31 @@ bool GridTermsSet(vtkGeographicProjection* self)
 
 /// Inverse with a record on the input: the record is how the points were projected, so it is
 /// used. Settings that describe a projection of their own (a UTM zone, ParametersFromData off, a
-/// grid) and describe another one are named as unused: a scripter who set a false easting on the
-/// inverse saw it have no effect, without a word. Settings that only leave the choice to the data
-/// (the defaults) describe nothing, and are not named.
-void WarnOfSettingsTheRecordOverrides(vtkGeographicProjection* self,
+/// kind other than the record's, a grid) and describe another one are named as unused: a scripter
+/// who set a false easting on the inverse saw it have no effect, without a word. Settings that
+/// only leave the choice to the data (the defaults) describe nothing, and are not named. This is
+/// how the settings differ, for the warning ("" where they do not).
+std::string SettingsUnlikeRecord(vtkGeographicProjection* self,
   const tessera::ProjectionParameters& carried)
 {
   const bool zoneSet =
     self->GetProjection() == vtkGeographicProjection::UTM && self->GetUTMZone() != 0;
-  if (!zoneSet && self->GetParametersFromData() && !GridTermsSet(self))
+  // A kind chosen other than the record's (its parameters left to the data, which are projected).
+  const bool otherKind = self->GetProjection() != vtkGeographicProjection::AUTOMATIC &&
+    KindOf(self->GetProjection()) != carried.Kind;
+  if (!zoneSet && !otherKind && self->GetParametersFromData() && !GridTermsSet(self))
   {
-    return;
+    return std::string();
   }
-  std::string described;
+  if (otherKind && !zoneSet && self->GetParametersFromData())
+  {
+    return std::string("(Projection ") +
+      tessera::ProjectionKindName(KindOf(self->GetProjection())) +
+      ", fitted to the data) are not used";
+  }
+  tessera::ProjectionParameters own = carried; // (only a grid set: the record's with that grid)
   try
   {
-    tessera::ProjectionParameters own = carried; // (only a grid set: the record's with that grid)
     if (zoneSet)
     {
       own = tessera::ProjectionParameters();
@@ -351,21 +360,28 @@ void WarnOfSettingsTheRecordOverrides(vtkGeographicProjection* self,
     {
       TakeGridTerms(self, own);
     }
-    if (tessera::SameProjection(own, carried))
-    {
-      return;
-    }
-    described = "('" + own.ToString() + "') are not (to project back with them instead, give " +
-      "that record as ProjectionRecord)";
   }
   catch (const tessera::InputError& e)
   {
-    described = std::string("are not used, and are no projection: ") + e.what();
+    return std::string("are not used, and are no projection: ") + e.what();
   }
-  vtkWarningWithObjectMacro(self,
-    << "Inverse: the input carries the projection record '" << carried.ToString()
-    << "', with which its points were projected, so it is used; this filter's settings "
-    << described);
+  return tessera::SameProjection(own, carried)
+    ? std::string()
+    : "('" + own.ToString() + "') are not used (to project back with them instead, give that " +
+      "record as ProjectionRecord)";
+}
+
+void WarnOfSettingsTheRecordOverrides(vtkGeographicProjection* self,
+  const tessera::ProjectionParameters& carried)
+{
+  const std::string unlike = SettingsUnlikeRecord(self, carried);
+  if (!unlike.empty())
+  {
+    vtkWarningWithObjectMacro(self,
+      << "Inverse: the input carries the projection record '" << carried.ToString()
+      << "', with which its points were projected, so it is used; this filter's settings "
+      << unlike);
+  }
 }
 
 /// A point set to project and its output; Label names a composite's block in messages ("" for

@@ -222,7 +222,10 @@ public:
    * UTM zone (UTMZone 1 to 60 with UTMNorth: the whole of a UTM projection), or the parameters
    * set with ParametersFromData off, with the grid set above (FalseEasting, FalseNorthing,
    * ScaleFactor, LatitudeOfOrigin): a file's x, y in EPSG:3035 or EPSG:5070 go back as they
-   * are, with those set. A file in feet is scaled to metres first (ParaView's Transform).
+   * are, with those set. A file in feet is scaled to metres first (ParaView's Transform). With a
+   * record on the input, settings that describe another projection (a UTM zone, a Projection
+   * other than the record's, ParametersFromData off, a grid) are not used, and a warning names
+   * them beside the record.
    */
   vtkSetMacro(Inverse, bool);
   vtkGetMacro(Inverse, bool);

@@ -550,7 +550,7 @@ def test_a_projection_or_zone_that_is_no_choice_is_named():
 
 def test_settings_an_inverse_does_not_use_for_the_inputs_record_are_named():
     """Inverse with a record on the input uses the record (the points were projected with it).
-    Settings that describe another projection (a grid, a UTM zone, ParametersFromData off) are
+    Settings that describe another projection (a grid, a UTM zone, another kind, ParametersFromData off) are
     then unused, and a warning names them beside the record; defaults, or settings that describe
     the record's own projection, give none. The points come back by the record in every case."""
     places = [(-105.0, 40.0), (-106.3, 37.2), (-103.1, 41.9)]
@@ -585,9 +585,12 @@ def test_settings_an_inverse_does_not_use_for_the_inputs_record_are_named():
 
     assert_that(inverse_warnings(lambda f: None) == [], "defaults describe no projection")
     assert_that(inverse_warnings(zone(13, 1000.0)) == [], "the record's own zone and grid")
+    assert_that(inverse_warnings(zone(0, 1000.0)) == [], "the record's kind, fitted, and grid")
     unused = {
         "another false northing": (lambda f: f.SetFalseNorthing(2000.0), "y0=2000"),
         "another zone": (zone(12, 1000.0), "zone=12"),
+        "another kind": (lambda f: f.SetProjectionToMercator(),
+                         "(Projection Mercator, fitted to the data) are not used"),
         "parameters set": (lambda f: (f.SetProjectionToAzimuthalEquidistant(), f.ParametersFromDataOff(),
                                       f.SetCentralLongitude(-100.0)), "projection=AzimuthalEquidistant lon0=-100"),
         "parameters that are no projection": (lambda f: (f.ParametersFromDataOff(), f.SetCentralLatitude(95.0)),
