@@ -28,7 +28,6 @@
 #include "polygon_area.h"
 #include "predicates.h"
 #include "predicates_inline.h"
-#include "window_predicates.h"
 
 #include <algorithm>
 #include <cmath>
@@ -1340,11 +1339,33 @@ void NumberCornerVertices(std::size_t vertexCount,
   }
 }
 
+/// Whether coefficient * coordinate + c is exactly 0 (coefficient in [1, 2) in magnitude, as a
+/// window's sides have them), at any magnitude: fma gives the sum with one rounding, exact at 0,
+/// once coordinate and c are scaled by one power of two near 1 (exactly: they are within a factor
+/// of 4 of each other, or the sum cannot vanish), so that no product falls below the doubles'
+/// range (a side at a subnormal coordinate was taken for one at a double).
+bool LiesAt(double coefficient, double coordinate, double c)
+{
+  if (coordinate == 0.0 || c == 0.0)
+  {
+    return coordinate == 0.0 && c == 0.0;
+  }
+  const int ex = std::ilogb(coordinate), ec = std::ilogb(c);
+  if (std::abs(ex - ec) > 2)
+  {
+    return false;
+  }
+  const int e = std::max(ex, ec);
+  return std::fma(coefficient, std::ldexp(coordinate, -e), std::ldexp(c, -e)) == 0.0;
+}
+
+} // namespace
+
 /// The sweep's border is the rectangle of the window's corners, which are doubles. A side given by
 /// a constraint such as 3x - 1 < 0 lies at x = 1/3, which no double is: the border drawn at the
 /// rounded corner would accept and reject points, and place Thiessen vertices, otherwise than the
 /// window does (a point at the double nearest 1/3, strictly inside, was rejected), and the two
-/// engines would disagree. So every corner must lie exactly (MidpointSide) on both its sides.
+/// engines would disagree. So every corner must lie exactly on both its sides.
 void CheckSidesAreDoubles(const Window& window)
 {
   const std::vector<HalfPlane>& sides = window.EffectiveConstraints();
@@ -1352,16 +1373,16 @@ void CheckSidesAreDoubles(const Window& window)
   for (std::size_t k = 0; k < sides.size(); ++k)
   {
     // Edge k lies on constraint k and runs from corner k to corner k + 1.
+    const HalfPlane& side = sides[k];
+    const bool vertical = side.b == 0.0;
     for (const Point2& corner : { corners[k], corners[(k + 1) % corners.size()] })
     {
-      if (MidpointSide(sides[k], corner, corner) != 0)
+      if (vertical ? !LiesAt(side.a, corner.x, side.c) : !LiesAt(side.b, corner.y, side.c))
       {
-        const bool vertical = sides[k].b == 0.0;
         throw InputError("the Brassel-Reif sweep needs the window's sides at coordinates that are "
                          "doubles, and " +
           window.ConstraintName(window.EffectiveIds()[k]) + " puts one at " +
-          (vertical ? "x = " : "y = ") +
-          NumberText(-sides[k].c / (vertical ? sides[k].a : sides[k].b)) +
+          (vertical ? "x = " : "y = ") + NumberText(-side.c / (vertical ? side.a : side.b)) +
           " (rounded), which no double is: give its coefficient as 1 or -1 (or a power of two), "
           "and the side's double as c, as WindowBounds gives its sides, or use the Green-Sibson "
           "engine");
@@ -1369,8 +1390,6 @@ void CheckSidesAreDoubles(const Window& window)
     }
   }
 }
-
-} // namespace
 
 ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector<Point2>& points)
 {

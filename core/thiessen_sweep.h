@@ -106,6 +106,13 @@ struct ThiessenSweepResult
   std::size_t DegenerateVertexCount = 0; ///< vertices with 4 or more centroids and dummies
 };
 
+/// Throws InputError, naming the constraint, unless every side of the (axis-aligned, rectangular)
+/// window lies at a double, exactly (x < 1/3, as 3x - 1 < 0, lies at none): the sweep's border is
+/// the rectangle of the window's corners. ComputeThiessenSweep checks it; a caller that scales
+/// the window first (ScaleIntoExactRange) checks it before, so that the message gives the side
+/// as the user gave it.
+void CheckSidesAreDoubles(const Window& window);
+
 /// Runs the procedure on all points (ids are their indices). Throws InputError if the window is
 /// not an axis-aligned rectangle whose sides lie at doubles (x < 1/3, as 3x - 1 < 0, lies at none:
 /// see CheckSidesAreDoubles), or naming the first point with a NaN or infinite coordinate.

@@ -471,6 +471,10 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     // Coordinates of some 1e100 or 1e-100: both engines work on points and window scaled by a
     // power of two (exactly) into the range where the tiles' window decisions are exact
     // (window_predicates.h), and the tiles are scaled back.
+    if (this->Algorithm == BRASSEL_REIF && window.IsAxisAlignedRectangle())
+    {
+      tessera::CheckSidesAreDoubles(window); // (before scaling: its message gives the side as set)
+    }
     const int exponent = tessera::ScaleIntoExactRange(window, points);
     if (this->Algorithm != BRASSEL_REIF) // (its sweep's tests keep their range)
     {

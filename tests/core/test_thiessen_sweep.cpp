@@ -772,6 +772,19 @@ TEST(ThiessenSweep, SidesAtNoDoubleAreRefusedAndSidesAtDoublesAgree)
     EXPECT_EQ(r.Tiles.PointIds.size(), 3u) << a;
     expect_engines_agree(near, window);
   }
+  // Sides at subnormal coordinates are told exactly too (products there lose bits): x < c with c
+  // the double 1e-320 is a side at a double, 1.1 x < 1.73e-322 (-c / 1.1 rounded) is not.
+  EXPECT_NO_THROW(
+    CheckSidesAreDoubles(Window({ { -1, 0, 0 }, { 0, -1, 0 }, { 0, 1, -1 }, { 1, 0, -1e-320 } })));
+  EXPECT_THROW(CheckSidesAreDoubles(
+                 Window({ { -1, 0, 0 }, { 0, -1, 0 }, { 0, 1, -1 }, { 1.1, 0, -1.73e-322 } })),
+    InputError);
+  // And at huge ones: 3x < 3 2^1000 lies at 2^1000, a double; 3x < 2^1000 at no double.
+  EXPECT_NO_THROW(CheckSidesAreDoubles(
+    Window({ { -1, 0, 0 }, { 0, -1, 0 }, { 0, 1, -1 }, { 3, 0, -3 * std::ldexp(1.0, 1000) } })));
+  EXPECT_THROW(CheckSidesAreDoubles(Window(
+                 { { -1, 0, 0 }, { 0, -1, 0 }, { 0, 1, -1 }, { 3, 0, -std::ldexp(1.0, 1000) } })),
+    InputError);
 }
 
 TEST(ThiessenSweep, LargerSetsAreaAndSymmetry)

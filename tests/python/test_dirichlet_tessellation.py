@@ -1347,8 +1347,28 @@ def test_a_window_side_that_cannot_be_scaled_is_named_as_the_user_knows_it():
                         f"{name}, {filter_class.__name__}: {errors}")
 
 
+def test_brassel_reif_names_a_side_that_lies_at_no_double_as_it_was_given():
+    """The sweep's border is the rectangle of the window's corners: a side at no double (3x - s < 0,
+    at s / 3) is an error naming the constraint and the side as the user gave it (at 1e100 it named
+    the window scaled into range, x = 0.38), and Green-Sibson takes the same window."""
+    for s in (1.0, 1e100, 1e-100):
+        f = vtkDirichletTessellation()
+        errors = messages_of(f)
+        f.SetInputData(make_points([(0.1 * s, 0.2 * s), (0.2 * s, 0.7 * s)]))
+        f.SetWindowBounds(0, s, 0, s)
+        f.AddWindowConstraint(3, 0, -s)
+        f.SetAlgorithmToBrasselReif()
+        f.Update()
+        side = f"x = {s / 3!r}" if s != 1.0 else "x = 0.3333333333333333"
+        assert_that(len(errors) == 1 and "window constraint 0 puts one at " + side in errors[0], f"{s}: {errors}")
+        f.SetAlgorithmToGreenSibson()
+        f.Update()
+        assert_that(len(errors) == 1 and f.GetOutput(0).GetNumberOfCells() == 2, f"{s}: Green-Sibson: {errors}")
+
+
 if __name__ == "__main__":
     run([test_tiles_are_nearest_point_regions,
+         test_brassel_reif_names_a_side_that_lies_at_no_double_as_it_was_given,
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
          test_square_lattice_has_square_tiles_and_diagonal_half_neighbours,
          test_unused_points_are_reported_with_ids,
