@@ -450,6 +450,20 @@ TEST(RidgeGrouping, TwoOpenCurvesWithClosestTangentRule)
   EXPECT_GT(s.Tau[1], 0.95);
 }
 
+// Two lines 24 units apart, side by side (some 21 pixels, four basis widths, in the automatic
+// image of 300 noisy points each).
+std::vector<TrueCurve> LinesSideBySide()
+{
+  return { { [](double t) {
+              return Point2{ 200 * t, 12 };
+            },
+             false },
+    { [](double t) {
+       return Point2{ 200 * t, -12 };
+     },
+      false } };
+}
+
 TEST(RidgeGrouping, ParallelLinesCloseTogetherAreNotJoinedAcross)
 {
   // Two noisy lines 24 units (some 21 pixels, four basis widths) apart in the automatic image:
@@ -458,14 +472,7 @@ TEST(RidgeGrouping, ParallelLinesCloseTogetherAreNotJoinedAcross)
   // for the three seeds, curves up to 98 sigma off). Each line is now a group of its own, up to
   // points near an end where one line's contour stops short and the other's is nearer (the
   // paper's nearest-pixel rule; measured ARI 1.0, 0.88 and 1.0).
-  const std::vector<TrueCurve> lines = { { [](double t) {
-                                            return Point2{ 200 * t, 12 };
-                                          },
-                                           false },
-    { [](double t) {
-       return Point2{ 200 * t, -12 };
-     },
-      false } };
+  const std::vector<TrueCurve> lines = LinesSideBySide();
   RidgeGroupingSettings settings;
   settings.CurveSigma = 0.02;
   for (unsigned seed : { 1U, 2U, 3U })
@@ -708,14 +715,7 @@ TEST(RidgeGrouping, ContoursEndingNearEachOtherAreNamedAsPiecesOfOneCurve)
 
   // Two noisy lines 24 units apart, side by side (ParallelLinesCloseTogetherAreNotJoinedAcross):
   // their ends lie 3.8 widths apart, but across the lines, and a larger Width would merge them.
-  const std::vector<TrueCurve> lines = { { [](double t) {
-                                            return Point2{ 200 * t, 12 };
-                                          },
-                                           false },
-    { [](double t) {
-       return Point2{ 200 * t, -12 };
-     },
-      false } };
+  const std::vector<TrueCurve> lines = LinesSideBySide();
   RidgeGroupingSettings sideBySide;
   sideBySide.CurveSigma = 0.02;
   for (unsigned seed : { 1U, 2U, 3U })

@@ -1580,6 +1580,13 @@ def test_the_field_separator_and_the_decimal_mark():
             raise AssertionError(f"{what} was read as a number")
 
 
+def refusal(directory, name, catchment, stations, observations, what):
+    """Runs the example on files it must refuse (exit status 1) into directory/name; returns its stderr."""
+    _, stderr = run_colorado(os.path.join(directory, name), stations=stations, observations=observations,
+                             catchment=catchment, what=what, status=1, plots=False)
+    return stderr
+
+
 def dialect_means(directory, name, catchment, stations, observations, **options):
     """Runs the example on the stations and observations files into directory/name (without plots);
     returns its areal_mean.csv rows and its stderr."""
@@ -1629,8 +1636,7 @@ def test_decimal_commas_are_told_by_the_columns_read_as_numbers():
         assert_that(got == want and want[0]["areal_mean"], f"noted: {got} against {want}: {stderr}")
         mixed = write(directory, "mixed.csv", "station_id;name;lon;lat\nN1;Lake, north;175,6;-39,1\n"
                       "N2;3,5;176.4;-39.1\n")
-        _, stderr = run_colorado(os.path.join(directory, "mixed"), stations=mixed, observations=observations,
-                                 catchment=catchment, what="a point among decimal commas", status=1, plots=False)
+        stderr = refusal(directory, "mixed", catchment, mixed, observations, "a point among decimal commas")
         assert_that(f"{mixed}:3: column 'lon': '176.4' has a point, where the file's numbers have decimal commas "
                     "(as '175,6' in column 'lon' on line 2 shows; a point there is digit grouping" in stderr,
                     f"a point among decimal commas: {stderr}")
@@ -1656,8 +1662,7 @@ def test_decimal_commas_in_quoted_fields_are_read():
         assert_that(got == want and want[0]["areal_mean"], f"quoted decimal commas: {got} against {want}: {stderr}")
         grouped = write(directory, "grouped.csv", '"station_id";"year";"month";"precip"\n"N1";"2001";"1";"10,5"\n'
                         '"N2";"2001";"1";"1.234"\n')
-        _, stderr = run_colorado(os.path.join(directory, "grouped"), stations=stations, observations=grouped,
-                                 catchment=catchment, what="a quoted point", status=1, plots=False)
+        stderr = refusal(directory, "grouped", catchment, stations, grouped, "a quoted point")
         assert_that(f"{grouped}:3: column 'precip': '1.234' has a point, where the file's numbers have decimal "
                     "commas (as '10,5' in column 'precip' on line 2 shows" in stderr, f"a quoted point: {stderr}")
 

@@ -1597,11 +1597,12 @@ def test_ids_and_values_are_read_one_a_gauge_or_row():
     square = polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]])
     coords = [(0.2, 0.2), (0.8, 0.3), (0.5, 0.8)]
 
-    def run_with(ids, table=None, values=None):
-        gauges = gauges_polydata(coords, ["x", "y", "z"], values)
-        gauges.GetPointData().RemoveArray("station_id")
-        ids.SetName("station_id")
-        gauges.GetPointData().AddArray(ids)
+    def run_with(ids, table=None, gauges=None):
+        if gauges is None:
+            gauges = gauges_polydata(coords, ["x", "y", "z"])
+            gauges.GetPointData().RemoveArray("station_id")
+            ids.SetName("station_id")
+            gauges.GetPointData().AddArray(ids)
         f = vtkThiessenArealAverage()
         errors = messages_of(f)
         f.SetGaugesData(gauges)
@@ -1619,11 +1620,7 @@ def test_ids_and_values_are_read_one_a_gauge_or_row():
     doubled = numpy_to_vtk(np.array([[1.0, 9.0], [2.0, 9.0], [3.0, 9.0]]), deep=True)
     doubled.SetName("value")
     two_values.GetPointData().AddArray(doubled)
-    f = vtkThiessenArealAverage()
-    errors = messages_of(f)
-    f.SetGaugesData(two_values)
-    f.SetCatchmentData(square)
-    f.Update(1)
+    _, errors = run_with(None, gauges=two_values)
     assert_that(len(errors) == 1 and "value array 'value' has 2 components" in errors[0], f"{errors}")
     table = observations_table({(2000, 1): {"x": 1.0, "y": 2.0, "z": 3.0}})
     time = table.GetColumnByName("time")
