@@ -26,7 +26,8 @@
  * - Mercator about CentralLongitude, on the ellipsoid, scale 1 on the equator (EPSG:3395, World
  *   Mercator, about 0), and WebMercator: WGS84 latitudes by the sphere's formulas (EPSG:3857,
  *   the web maps' Pseudo-Mercator, about 0). Neither reaches the poles (beyond 1e8 m: about
- *   89.99999 degrees).
+ *   89.99999 degrees). With ParametersFromData on (default), they are about the data's middle
+ *   meridian: EPSG:3395 and EPSG:3857 themselves need it off, with CentralLongitude 0.
  * With ParametersFromData on (default) the centre and standard parallels come from the data as
  * for Automatic; off, the values set with SetCentralLongitude, SetCentralLatitude and
  * SetStandardParallels are used, by Automatic too (it is then the Albers equal-area conic with
