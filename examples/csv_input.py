@@ -100,9 +100,8 @@ def rows(path, required, what, optional=(), header=None, delimiter_columns=None,
         fail(f"{path}: the {what} file is not a CSV file (it starts like JSON or GeoJSON; "
              f"expected a header line such as {','.join(wanted)})")
     delimiter = header_delimiter(text, wanted)
-    # (a, "b" as some programs write CSV: the csv module would keep the space and the quotes)
-    spaced = re.search(rf'{re.escape(delimiter)} +"', text) is not None
-    reader = csv.DictReader(text_lines(text), delimiter=delimiter, strict=True, skipinitialspace=spaced)
+    reader = csv.DictReader(text_lines(text), delimiter=delimiter, strict=True,
+                            skipinitialspace=spaced_quotes(text, delimiter))
     try:
         renamed = []
         columns = named_columns([header_name(name) for name in reader.fieldnames or []],
@@ -188,6 +187,24 @@ def header_delimiter(text, required=()):
     return max(DELIMITERS, key=header.count)
 
 
+def spaced_quotes(text, delimiter):
+    """Whether the file is read with the spaces after its separators skipped: its header quotes
+    its names after a separator and spaces ("station_id", "lon", as some programs write CSV,
+    whose quotes and spaces the csv module would keep), and the whole file reads so as
+    well-formed CSV (a quoted field followed by a space before its separator, "Boulder" , or a
+    quote inside a field after a space, 101, "Dry" Creek, is not: such a file is read as before,
+    its quotes kept)."""
+    header = next(text_lines(text.lstrip("\ufeff")), "")
+    if not re.search(rf'{re.escape(delimiter)} +"', header):
+        return False
+    try:
+        for _ in csv.reader(text_lines(text), delimiter=delimiter, strict=True, skipinitialspace=True):
+            pass
+    except csv.Error:
+        return False
+    return True
+
+
 def has_decimal_commas(text, delimiter, read=None):
     """Whether a field of the text (separated by delimiter, not a comma) is a number written with a
     decimal comma (12,5 or -0,25e-3, quoted or not: "12,5"), in one of the columns read (their
@@ -204,30 +221,48 @@ DECIMAL_COMMA = r"[+-]?[0-9]*,[0-9]+(?:[eE][+-]?[0-9]+)?"
 
 def decimal_comma_field(text, delimiter, read=None):
     """The first field of the text as has_decimal_commas finds it, as (its line, its column's
-    position from 0, its text), or None. A field starts after the delimiter or a line end
-    (\\n, \\r\\n, or \\r alone, as old spreadsheets for the Mac end lines) and ends before either."""
+    position from 0, its text), or None. A file with quotes is read record by record (a quoted
+    field may hold the separator, or a line break: "Fort\nCollins" is one field); one without is
+    searched for numbers with a decimal comma, each field starting after the separator or a line
+    end (\n, \r\n, or \r alone, as old spreadsheets for the Mac end lines), and a hit's column
+    counted from the hit before it on its line (a file of thousands of columns is read once)."""
     wanted = None if read is None else set(read)
     if wanted is not None and not wanted:
         return None
+    if '"' in text:
+        return decimal_comma_record(text, delimiter, wanted)
     mark = re.escape(delimiter)
-    number = rf'[ \t]*(?:{DECIMAL_COMMA}|"[ \t]*{DECIMAL_COMMA}[ \t]*")[ \t]*'
-    fields = re.compile(rf"(?<![^\r\n{mark}]){number}(?={mark}|[\r\n]|\Z)")
-    start, searched = 0, 0  # (the line start of the last field met, and where it was met)
+    fields = re.compile(rf"(?<![^\r\n{mark}])[ \t]*{DECIMAL_COMMA}[ \t]*(?={mark}|[\r\n]|\Z)")
+    start, column, at = -1, 0, 0  # (the line start of the last hit, its column, its place)
     for found in fields.finditer(text):
         p = found.start()
-        start = max(start, text.rfind("\n", searched, p) + 1, text.rfind("\r", searched, p) + 1)
-        searched = p
-        before = text[start:p]  # (the fields before it on its line, each with its delimiter)
-        if '"' not in before:
-            column = before.count(delimiter)
+        line_start = max(text.rfind("\n", at, p), text.rfind("\r", at, p)) + 1
+        if line_start == 0 and start >= 0:
+            column += text.count(delimiter, at, p)  # (the last hit's line)
         else:
-            try:
-                column = len(next(csv.reader([before], delimiter=delimiter), [])) - 1
-            except csv.Error:
-                continue
+            start, column = line_start, text.count(delimiter, line_start, p)
+        at = p
         if wanted is None or column in wanted:
             line = 1 + text.count("\n", 0, p) + text.count("\r", 0, p) - text.count("\r\n", 0, p)
             return line, column, found.group().strip(" \t")
+    return None
+
+
+def decimal_comma_record(text, delimiter, wanted):
+    """decimal_comma_field for a file with quotes: its records as the csv module reads them (the
+    line is that of the record's end), each field of a column wanted (any where None) stripped of
+    spaces and of a pair of quotes round it ("10,5" after a space, which the reader keeps)."""
+    number = re.compile(DECIMAL_COMMA)
+    reader = csv.reader(text_lines(text), delimiter=delimiter)
+    try:
+        for record in reader:
+            for column, field in enumerate(record):
+                if wanted is None or column in wanted:
+                    value = header_name(field)
+                    if number.fullmatch(value):
+                        return reader.line_num, column, value
+    except csv.Error:
+        return None  # (rows() names the malformed record)
     return None
 
 

@@ -1644,7 +1644,13 @@ def test_decimal_commas_are_told_by_the_columns_read_as_numbers():
     for text, read, expected in (("a;b;c\n1;2,5;x\n", [0], None), ("a;b;c\n1;2,5;x\n", [1], (2, 1, "2,5")),
                                  ("a;b;c\n1;2,5;x\n", None, (2, 1, "2,5")), ("a;b;c\n1;2;3,5\n", [0, 1], None),
                                  ('a;b\n"x;1,5";2,5\n', [1], (2, 1, "2,5")), ('a;b\n"x;1,5";2\n', [1], None),
-                                 ("a\tb\n0,5\t1\n2\t3,5\n", [1], (3, 1, "3,5")), ("a;b\n1;2\n", [], None)):
+                                 ("a\tb\n0,5\t1\n2\t3,5\n", [1], (3, 1, "3,5")), ("a;b\n1;2\n", [], None),
+                                 # (a quoted field holding a line break is one field: "x\n2,5" is column 1's)
+                                 ('a;b;c\n1;"x\n2,5";3\n', [0, 2], None),
+                                 ('a;b;c\n1;"x\n2,5";3,5\n', [2], (3, 2, "3,5")),
+                                 # (a wide file's hits are counted along their line)
+                                 ("a;b;c;d\n1,5;2,5;3;4,5\n", [3], (2, 3, "4,5")),
+                                 ("a;b\n1,5;2\n3;4,5\n", [1], (3, 1, "4,5"))):
         got = csv_input.decimal_comma_field(text, "\t" if "\t" in text else ";", read)
         assert_that(got == expected, f"{text!r} {read}: {got}, expected {expected}")
 
@@ -1713,6 +1719,16 @@ def test_fields_after_a_comma_and_a_space_may_be_quoted():
                     and {w["name"] for w in weights} <= set(names.values()), f"the names read: {weights}")
     assert_that([csv_input.header_name(f) for f in (' "lon"', '"lat" ', ' " x " ', '"', 'a"b"')]
                 == ["lon", "lat", "x", '"', 'a"b"'], "header names stripped of their quotes")
+    # Spaces are skipped only where the header quotes its names so and the whole file then reads:
+    # a quoted field padded on both sides ("Boulder" ,) or a quote after a space inside a field
+    # (101, "Dry" Creek) ended the script as not well-formed; such files read as before.
+    for header, record, name in (('station_id, name, lon, lat', '101, "Boulder" ,-105.1,40.5', '"Boulder"'),
+                                 ('station_id , "name" , lon , lat', '101 , "Boulder" , -105.1 , 40.5', '"Boulder"'),
+                                 ('station_id,name,lon,lat', '101, "Dry" Creek, -105.1, 40.5', '"Dry" Creek')):
+        with tempfile.TemporaryDirectory() as directory:
+            path = write(directory, "padded.csv", f"{header}\n{record}\n")
+            read = [(station, got, lon, lat) for _, _, station, got, lon, lat in csv_input.gauges(path)]
+            assert_that(read == [("101", name, -105.1, 40.5)], f"{record!r}: {read}")
 
 
 def write_shared_and_co_located(directory):
