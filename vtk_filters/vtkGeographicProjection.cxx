@@ -338,9 +338,21 @@ std::string SettingsUnlikeRecord(vtkGeographicProjection* self,
   }
   if (otherKind && !zoneSet && self->GetParametersFromData())
   {
+    std::string grid;
+    for (const auto& [name, value, unset] :
+      { std::make_tuple("FalseEasting", self->GetFalseEasting(), 0.0),
+        std::make_tuple("FalseNorthing", self->GetFalseNorthing(), 0.0),
+        std::make_tuple("ScaleFactor", self->GetScaleFactor(), 1.0) })
+    {
+      grid += value != unset ? std::string(", ") + name + " " + tessera::NumberText(value) : "";
+    }
+    if (self->GetUseLatitudeOfOrigin())
+    {
+      grid += ", LatitudeOfOrigin " + tessera::NumberText(self->GetLatitudeOfOrigin());
+    }
     return std::string("(Projection ") +
-      tessera::ProjectionKindName(KindOf(self->GetProjection())) +
-      ", fitted to the data) are not used";
+      tessera::ProjectionKindName(KindOf(self->GetProjection())) + ", fitted to the data" + grid +
+      ") are not used";
   }
   tessera::ProjectionParameters own = carried; // (only a grid set: the record's with that grid)
   try

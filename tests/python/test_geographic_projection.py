@@ -591,6 +591,8 @@ def test_settings_an_inverse_does_not_use_for_the_inputs_record_are_named():
         "another zone": (zone(12, 1000.0), "zone=12"),
         "another kind": (lambda f: f.SetProjectionToMercator(),
                          "(Projection Mercator, fitted to the data) are not used"),
+        "another kind and grid": (lambda f: (f.SetProjectionToMercator(), f.SetFalseEasting(1000.0)),
+                                  "(Projection Mercator, fitted to the data, FalseEasting 1000) are not used"),
         "parameters set": (lambda f: (f.SetProjectionToAzimuthalEquidistant(), f.ParametersFromDataOff(),
                                       f.SetCentralLongitude(-100.0)), "projection=AzimuthalEquidistant lon0=-100"),
         "parameters that are no projection": (lambda f: (f.ParametersFromDataOff(), f.SetCentralLatitude(95.0)),
