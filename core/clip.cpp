@@ -247,9 +247,8 @@ void ConvexHull(std::vector<Point2>& points, std::vector<Point2>& hull)
 }
 
 // Whether p lies in the convex tile or on its boundary, exactly: left of or on every edge's line
-// (a tile not quite convex, by rounding, then holds p too: p lies in its kernel). Repeated
-// vertices give no edge.
-// Strictly: left of every edge's line.
+// (strictly: left of every one), repeated vertices giving no edge. A tile not quite convex, by
+// rounding, then holds p too: p lies in its kernel.
 bool TileHoldsPoint(const Point2* tile, std::size_t count, const Point2& p, bool strictly = false)
 {
   for (std::size_t k = 0; k < count; ++k)

@@ -276,18 +276,18 @@ void NameUnorderedPoints(const std::vector<std::size_t>& tied,
 constexpr double NearEndWidths = 4.0;
 
 /// A warning naming pairs of open contour ends that lie within NearEndWidths basis widths of each
-/// other and face each other (the two ends of one long contour included): where a curve's points
-/// lie further apart than the basis reaches, its ridge breaks, and the curve comes out as pieces,
-/// or a closed one open, without a word. Clean, dense points make it likely: most of them need
-/// pixels of their own, so the automatic image is large and the basis narrow in the points' units
-/// (1000 points at random on a circle, without noise, gave 4 open groups with the Gaussian basis
-/// at 512 pixels, their ends 1-3 widths apart). One of the ends must look towards the other, the
-/// gap within 45 degrees of its own direction (not both: a short piece's end often hooks back):
-/// the ends of two lines side by side (24 units apart, 3.8 widths), of crossing lines and of a
-/// spiral's neighbouring turns are near each other too, but the gap runs across them, and a larger
-/// Width would merge those curves.
+/// other, one looking towards the other (the two ends of one long contour included): where a
+/// curve's points lie further apart than the basis reaches, its ridge breaks, and the curve comes
+/// out as pieces, or a closed one open, without a word. Clean, dense points make it likely: most of
+/// them need pixels of their own, so the automatic image is large and the basis narrow in the
+/// points' units (1000 points at random on a circle, without noise, gave 4 open groups with the
+/// Gaussian basis at 512 pixels, their ends 1-3 widths apart). One of the ends must look towards
+/// the other, the gap within 45 degrees of its own direction (not both: a short piece's end often
+/// hooks back): the ends of two lines side by side (24 units apart, 3.8 widths), of crossing lines
+/// and of a spiral's neighbouring turns are near each other too, but the gap runs across them, and
+/// a larger Width would merge those curves.
 ///
-///    piece A  ====>  . . gap . .  <====  piece B      named: the ends look at each other
+///    piece A  ====>  . . gap . .  <====  piece B      named: an end looks at the other
 ///
 ///    line 1   ====>
 ///                 |  gap across                       not named
@@ -389,8 +389,8 @@ void NameNearContourEnds(const RidgeContours& contours,
         return (n.A.Contour == n.B.Contour ? "group " + std::to_string(n.A.Contour) + "'s two ends"
                                            : "groups " + std::to_string(n.A.Contour) + " and " +
                      std::to_string(n.B.Contour)) +
-          ", " + NumberText(n.Pixels / width) + " widths apart at " + where(n.A.At) + " and " +
-          where(n.B.At);
+          ", " + NumberText(std::round(100.0 * n.Pixels / width) / 100.0) + " widths apart at " +
+          where(n.A.At) + " and " + where(n.B.At);
       }));
 }
 
