@@ -1887,9 +1887,8 @@ def write_unused(summary, files, station_ids, observations, unit, path, unmatche
     (station_key: 0102 and 102), that gauge's line (its observations went there); for an
     observation repeating an earlier one, the earlier one's line; for an observation of a gauge at
     the place of an earlier one that reported, the line of the observation used (the filter's
-    CoLocatedObservationOfRows); a
-    row for each column of a wide observations file that names no gauge's station
-    (unmatched_columns: (column number, name), read_observations), at the header's line, its
+    CoLocatedObservationOfRows); a row for each column of a wide observations file that names no
+    gauge's station (unmatched_columns: (column number, name), read_observations), at the header's line, its
     number in the note; and a row for each run of observations outside --start/--end (outside:
     rows_in_period's runs), which the filter never saw: its lines (first-last), its station, or
     when it holds several, how many observations of how many stations; and a row for each
