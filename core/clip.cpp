@@ -832,18 +832,21 @@ bool Catchment::BoundaryEntersTile(const Point2* tile, std::size_t count) const
     return false;
   }
   // A vertex in the box lies in one of its cells, where the segment it starts is listed, and a
-  // segment through the tile is listed in the cells it crosses, one of which the box holds.
-  for (std::size_t j = this->CellY(box.YMin); j <= this->CellY(box.YMax); ++j)
+  // segment through the tile is listed in the cells it crosses, one of which the box holds: each
+  // segment is tested once, in the first of them.
+  const std::size_t x0 = this->CellX(box.XMin), y0 = this->CellY(box.YMin);
+  for (std::size_t j = y0; j <= this->CellY(box.YMax); ++j)
   {
-    for (std::size_t i = this->CellX(box.XMin); i <= this->CellX(box.XMax); ++i)
+    for (std::size_t i = x0; i <= this->CellX(box.XMax); ++i)
     {
       const std::size_t cell = i + j * this->GridX;
       for (std::uint32_t k = this->CellStart[cell]; k < this->CellStart[cell + 1]; ++k)
       {
         const std::uint32_t v = this->CellEdges[k];
         const Point2& vertex = this->Points[v];
-        if ((InBox(vertex, box) && TileHoldsPoint(tile, count, vertex, true)) ||
-          SegmentEntersTile(vertex, this->Points[this->NextVertex(v)], tile, count))
+        if (this->FirstListedAt(v, i, j, x0, y0) &&
+          ((InBox(vertex, box) && TileHoldsPoint(tile, count, vertex, true)) ||
+            SegmentEntersTile(vertex, this->Points[this->NextVertex(v)], tile, count)))
         {
           return true;
         }
@@ -969,9 +972,7 @@ double Catchment::ClipInto(const Point2* tile,
       for (std::uint32_t k = this->CellStart[cell]; k < this->CellStart[cell + 1]; ++k)
       {
         const std::uint32_t v = this->CellEdges[k];
-        const std::uint32_t firstCell = this->FirstCell[v];
-        if (std::max<std::size_t>(firstCell >> 16, x0) == i &&
-          std::max<std::size_t>(firstCell & 0xffff, y0) == j &&
+        if (this->FirstListedAt(v, i, j, x0, y0) &&
           SegmentMeetsBox(this->Points[v], this->Points[this->NextVertex(v)], box))
         {
           work.Candidates.push_back(v);

@@ -40,6 +40,7 @@
 #include "geometry.h"
 #include "polygon_validation.h"
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -178,6 +179,18 @@ public:
     double coordinateEpsilon = std::numeric_limits<double>::epsilon()) const;
 
 private:
+  // Whether cell (i, j) is the first cell of segment v's that lies in the box of cells from
+  // (x0, y0) on: a walk over the box's cells meets each segment there once.
+  bool FirstListedAt(std::uint32_t v,
+    std::size_t i,
+    std::size_t j,
+    std::size_t x0,
+    std::size_t y0) const
+  {
+    const std::uint32_t first = this->FirstCell[v];
+    return std::max<std::size_t>(first >> 16, x0) == i &&
+      std::max<std::size_t>(first & 0xffff, y0) == j;
+  }
   // Whether the catchment's boundary enters the convex tile: a vertex strictly inside it, or a
   // segment through its interior (found by the grid).
   bool BoundaryEntersTile(const Point2* tile, std::size_t count) const;

@@ -24,6 +24,7 @@
 
 #include <cmath>
 #include <iterator>
+#include <optional>
 #include <map>
 #include <set>
 #include <memory>
@@ -249,14 +250,24 @@ bool TakeUTMZoneSet(vtkGeographicProjection* self, tessera::ProjectionParameters
   return true;
 }
 
-/// Lays the grid set on the filter (FalseEasting, ..., LatitudeOfOrigin) on p's plane.
-void TakeGridTerms(vtkGeographicProjection* self, tessera::ProjectionParameters& p)
+/// The grid set on the filter (FalseEasting, ..., LatitudeOfOrigin) laid on p's plane, p as given
+/// otherwise.
+tessera::ProjectionParameters WithGridSet(vtkGeographicProjection* self,
+  tessera::ProjectionParameters p)
 {
   p.FalseEasting = self->GetFalseEasting();
   p.FalseNorthing = self->GetFalseNorthing();
   p.ScaleFactor = self->GetScaleFactor();
   p.HasOriginLatitude = self->GetUseLatitudeOfOrigin();
   p.OriginLatitude = p.HasOriginLatitude ? self->GetLatitudeOfOrigin() : 0.0;
+  return p;
+}
+
+/// Lays the grid set on the filter on p's plane (WithGridSet), warning of a LatitudeOfOrigin set
+/// but not used.
+void TakeGridTerms(vtkGeographicProjection* self, tessera::ProjectionParameters& p)
+{
+  p = WithGridSet(self, p);
   if (!p.HasOriginLatitude && self->GetLatitudeOfOrigin() != 0.0)
   {
     // (a scripter who set it alone got northings millions of metres off without a word)
@@ -264,6 +275,20 @@ void TakeGridTerms(vtkGeographicProjection* self, tessera::ProjectionParameters&
       << "LatitudeOfOrigin " << tessera::NumberText(self->GetLatitudeOfOrigin())
       << " is not used: UseLatitudeOfOrigin is off, so the grid starts at the plane's own origin");
   }
+}
+
+/// The whole UTM projection the settings give (Projection UTM, a zone set: TakeUTMZoneSet), with
+/// the grid set; nothing where they give none.
+std::optional<tessera::ProjectionParameters> UTMZoneSetWithGrid(vtkGeographicProjection* self)
+{
+  tessera::ProjectionParameters utm;
+  utm.Kind = KindOf(vtkGeographicProjection::UTM);
+  if (!TakeUTMZoneSet(self, utm))
+  {
+    return std::nullopt;
+  }
+  TakeGridTerms(self, utm);
+  return utm;
 }
 
 /// The forward projection's parameters from the filter's settings and the data.
@@ -310,14 +335,6 @@ tessera::ProjectionParameters ChooseForwardParameters(vtkGeographicProjection* s
   return p;
 }
 
-/// Whether any grid term is set away from its default (FalseEasting 0, FalseNorthing 0,
-/// ScaleFactor 1, UseLatitudeOfOrigin off).
-bool GridTermsSet(vtkGeographicProjection* self)
-{
-  return self->GetFalseEasting() != 0.0 || self->GetFalseNorthing() != 0.0 ||
-    self->GetScaleFactor() != 1.0 || self->GetUseLatitudeOfOrigin();
-}
-
 /// Inverse with a record on the input: the record is how the points were projected, so it is
 /// used. Settings that describe a projection of their own (a UTM zone, ParametersFromData off, a
 /// kind other than the record's, a grid) and describe another one are named as unused: a scripter
@@ -332,7 +349,8 @@ std::string SettingsUnlikeRecord(vtkGeographicProjection* self,
   // A kind chosen other than the record's (its parameters left to the data, which are projected).
   const bool otherKind = self->GetProjection() != vtkGeographicProjection::AUTOMATIC &&
     KindOf(self->GetProjection()) != carried.Kind;
-  if (!zoneSet && !otherKind && self->GetParametersFromData() && !GridTermsSet(self))
+  const bool gridSet = !WithGridSet(self, tessera::ProjectionParameters()).PlaneWithoutGrid();
+  if (!zoneSet && !otherKind && self->GetParametersFromData() && !gridSet)
   {
     return std::string();
   }
@@ -359,10 +377,7 @@ std::string SettingsUnlikeRecord(vtkGeographicProjection* self,
   {
     if (zoneSet)
     {
-      own = tessera::ProjectionParameters();
-      own.Kind = KindOf(vtkGeographicProjection::UTM);
-      TakeUTMZoneSet(self, own);
-      TakeGridTerms(self, own);
+      own = *UTMZoneSetWithGrid(self);
     }
     else if (!self->GetParametersFromData())
     {
@@ -555,12 +570,9 @@ tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
       return carried;
     }
     // (ParametersFromData, on by default, made a scripter turn it off to go back from UTM.)
-    tessera::ProjectionParameters utm;
-    utm.Kind = KindOf(vtkGeographicProjection::UTM);
-    if (TakeUTMZoneSet(self, utm))
+    if (const auto utm = UTMZoneSetWithGrid(self))
     {
-      TakeGridTerms(self, utm);
-      return utm;
+      return *utm;
     }
     if (self->GetParametersFromData())
     {
