@@ -1587,6 +1587,14 @@ def refusal(directory, name, catchment, stations, observations, what):
     return stderr
 
 
+def assert_dialect_means(directory, catchment, stations, plain, dialect):
+    """The example's means from two observations files, plain and dialect ((name, path) each), are
+    equal and not empty."""
+    want, _ = dialect_means(directory, plain[0], catchment, stations, plain[1])
+    got, stderr = dialect_means(directory, dialect[0], catchment, stations, dialect[1])
+    assert_that(got == want and want[0]["areal_mean"], f"{dialect[0]}: {got} against {want}: {stderr}")
+
+
 def dialect_means(directory, name, catchment, stations, observations, **options):
     """Runs the example on the stations and observations files into directory/name (without plots);
     returns its areal_mean.csv rows and its stderr."""
@@ -1631,9 +1639,7 @@ def test_decimal_commas_are_told_by_the_columns_read_as_numbers():
         points = write_decimal_rows(directory, "points.csv", lambda fields: ",".join(fields) + "\n")
         noted = write(directory, "noted.csv", "station_id;year;month;precip;note\n" + "".join(
             f"{s};{y};{m};{v};1,5\n" for s, y, m, v in DECIMAL_ROWS))
-        want, _ = dialect_means(directory, "points", catchment, stations, points)
-        got, stderr = dialect_means(directory, "noted", catchment, stations, noted)
-        assert_that(got == want and want[0]["areal_mean"], f"noted: {got} against {want}: {stderr}")
+        assert_dialect_means(directory, catchment, stations, ("points", points), ("noted", noted))
         mixed = write(directory, "mixed.csv", "station_id;name;lon;lat\nN1;Lake, north;175,6;-39,1\n"
                       "N2;3,5;176.4;-39.1\n")
         stderr = refusal(directory, "mixed", catchment, mixed, observations, "a point among decimal commas")
@@ -1663,9 +1669,7 @@ def test_decimal_commas_in_quoted_fields_are_read():
         plain = write_decimal_rows(directory, "plain.csv", lambda fields: ",".join(fields) + "\n")
         quoted = write_decimal_rows(directory, "quoted.csv", lambda fields: ";".join(f'"{f}"' for f in fields) + "\r\n",
                                     comma=True)
-        want, _ = dialect_means(directory, "plain", catchment, stations, plain)
-        got, stderr = dialect_means(directory, "quoted", catchment, stations, quoted)
-        assert_that(got == want and want[0]["areal_mean"], f"quoted decimal commas: {got} against {want}: {stderr}")
+        assert_dialect_means(directory, catchment, stations, ("plain", plain), ("quoted", quoted))
         grouped = write(directory, "grouped.csv", '"station_id";"year";"month";"precip"\n"N1";"2001";"1";"10,5"\n'
                         '"N2";"2001";"1";"1.234"\n')
         stderr = refusal(directory, "grouped", catchment, stations, grouped, "a quoted point")
