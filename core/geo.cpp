@@ -75,6 +75,16 @@ double LongitudeDifference(double a, double b)
   return d;
 }
 
+/// The longitude x as one value in (-180, 180], exactly (IEEE remainder is exact): 181.5 and
+/// -178.5, or 180 and -180, become one number, so that whatever is computed from them next is the
+/// same for both. (Reducing b - a instead rounded the difference first: the two copies of a place
+/// projected some 1e-9 m apart and were not found duplicates.)
+double CanonicalLongitude(double x)
+{
+  const double r = std::remainder(x, 360.0);
+  return r == -180.0 ? 180.0 : r;
+}
+
 bool IsValidLatitude(double lat)
 {
   return std::isfinite(lat) && std::abs(lat) <= 90.0;
@@ -400,6 +410,12 @@ GeographicExtent ComputeExtent(const std::vector<Point2>& lonlat)
   {
     west -= 360.0;
   }
+  if (west + (360.0 - largestGap) > 360.0)
+  {
+    // The arc would end beyond 360 degrees (data round the globe from 120 east: its centre at
+    // 300), and the inverse, within 180 degrees of the centre, gave longitudes of 450 back.
+    west -= 360.0;
+  }
   extent.WestLongitude = west;
   extent.LongitudeSpan = std::max(0.0, 360.0 - largestGap);
   return extent;
@@ -668,7 +684,7 @@ Point2 GeographicProjection::Forward(const Point2& lonlat, long long id) const
   }
   const double lon0 = Impl->CentralMeridian;
   // Reduce first so that a longitude of 181.6 and one of -178.4 project to the same place.
-  const double lon = lon0 + LongitudeDifference(lon0, lonlat.x);
+  const double lon = lon0 + LongitudeDifference(lon0, CanonicalLongitude(lonlat.x));
   Point2 xy;
   switch (Params.Kind)
   {
@@ -805,6 +821,12 @@ Point2 GeographicProjection::InverseOfImage(const Point2& grid, long long id) co
       ProjectionKindName(Params.Kind) + " projection");
   }
   lonlat.x = lon0 + LongitudeDifference(lon0, lonlat.x);
+  // A meridian set beyond 180 (lon0 = 300 by hand) put places east of it beyond 360 degrees,
+  // which every reader of longitudes, this one included, refuses: those come back a turn west.
+  if (std::abs(lonlat.x) > 360.0)
+  {
+    lonlat.x -= std::copysign(360.0, lonlat.x);
+  }
   return lonlat;
 }
 

@@ -67,23 +67,36 @@ struct DensifyReport
   std::string FirstGlobalIds;
 };
 
-/// Cuts the line and polygon edges of lon/lat poly data so that no piece is longer than maxStep
-/// degrees. New points are appended after the input's, with point data interpolated; an edge
-/// shared by two cells is cut once, so neighbouring polygons stay conforming.
+/// A forward's piece counts are exact; an inverse's are taken with this much slack, so that an
+/// edge a forward cut into pieces of exactly maxStep degrees, projected and back, is not cut again
+/// for the rounding of its ends.
+constexpr double InverseStepSlack = 1.0 + 1e-9;
+
+/// Cuts the line and polygon edges of poly data so that no piece is longer than maxStep degrees
+/// of longitude and latitude. A forward's input is in lon/lat, its edges straight there (RFC 7946),
+/// and cut there. An inverse's is in the plane, its edges straight there: each is cut straight,
+/// into pieces spanning at most maxStep degrees between the places of its ends (the places of the
+/// input's points given), so that its lon/lat output, read with edges straight in lon/lat, keeps
+/// the plane's shapes and areas. New points are appended after the input's, with point data
+/// interpolated; an edge shared by two cells is cut once, so neighbouring polygons stay
+/// conforming.
 class EdgeDensifier
 {
 public:
-  /// label: the piece's, put before the first wrapped edge's name; report: added to.
+  /// label: the piece's, put before the first wrapped edge's name; report: added to;
+  /// placesOfPoints: an inverse's, the lon/lat of each input point (null for a forward).
   EdgeDensifier(vtkPolyData* input,
     vtkPolyData* output,
     double maxStep,
     const std::string& label,
-    DensifyReport& report)
+    DensifyReport& report,
+    const std::vector<tessera::Point2>* placesOfPoints = nullptr)
     : Input(input)
     , Output(output)
     , MaxStep(maxStep)
     , Label(label)
     , Report(report)
+    , Places(placesOfPoints)
   {
     this->Points->SetDataTypeToDouble();
     this->Points->DeepCopy(input->GetPoints());
@@ -177,10 +190,13 @@ private:
     this->Input->GetPoint(a, pa);
     this->Input->GetPoint(b, pb);
     bool capped = false;
-    const int pieces =
-      tessera::DensifiedPieceCount({ pa[0], pa[1] }, { pb[0], pb[1] }, this->MaxStep, &capped);
+    const tessera::Point2 ends[2] = { { pa[0], pa[1] }, { pb[0], pb[1] } };
+    const int pieces = this->Places
+      ? tessera::DensifiedPieceCount(
+          (*this->Places)[a], (*this->Places)[b], this->MaxStep * InverseStepSlack, &capped)
+      : tessera::DensifiedPieceCount(ends[0], ends[1], this->MaxStep, &capped);
     this->Report.Capped += capped ? 1 : 0;
-    if (tessera::EdgeReadsBothWays({ pa[0], pa[1] }, { pb[0], pb[1] }) &&
+    if (!this->Places && tessera::EdgeReadsBothWays(ends[0], ends[1]) &&
       this->Report.Wrapped++ == 0)
     {
       this->Report.FirstWrapped = (this->Label.empty() ? std::string() : this->Label + " ") +
@@ -191,7 +207,9 @@ private:
     for (int k = 1; k < pieces; ++k)
     {
       const double t = static_cast<double>(k) / pieces;
-      const tessera::Point2 q = tessera::InterpolateLonLat({ pa[0], pa[1] }, { pb[0], pb[1] }, t);
+      const tessera::Point2 q = this->Places
+        ? tessera::Point2{ pa[0] + t * (pb[0] - pa[0]), pa[1] + t * (pb[1] - pa[1]) }
+        : tessera::InterpolateLonLat(ends[0], ends[1], t);
       const vtkIdType id = this->Points->InsertNextPoint(q.x, q.y, pa[2] + t * (pb[2] - pa[2]));
       this->Output->GetPointData()->InterpolateEdge(this->Input->GetPointData(), id, a, b, t);
     }
@@ -203,6 +221,7 @@ private:
   double MaxStep;
   const std::string& Label;
   DensifyReport& Report;
+  const std::vector<tessera::Point2>* Places;
   vtkNew<vtkPoints> Points;
   std::map<std::pair<vtkIdType, vtkIdType>, std::pair<vtkIdType, int>> Cuts;
 };
@@ -291,6 +310,39 @@ std::optional<tessera::ProjectionParameters> UTMZoneSetWithGrid(vtkGeographicPro
   return utm;
 }
 
+/// The widest longitude span a projection cut at a meridian takes without a warning: beyond it
+/// the data's largest empty gap in longitude, where the cut runs, is under a quarter turn.
+constexpr double WidestSpanWithoutWarning = 270.0;
+
+/// Warns where the data go (nearly) round the globe and p's projection is cut at a meridian (all
+/// but the azimuthal ones): places either side of the cut, close on the ground, lie far apart in
+/// the plane. (Stations all round Antarctica were cut at one meridian without a word, and the
+/// tiles of neighbours 359 km apart did not meet.)
+void WarnOfDataRoundTheGlobe(vtkGeographicProjection* self,
+  const tessera::ProjectionParameters& p,
+  const tessera::GeographicExtent& extent)
+{
+  // (a transverse Mercator refuses what lies beyond 45 degrees of its meridian itself)
+  if (p.Kind == tessera::ProjectionKind::AzimuthalEquidistant ||
+    p.Kind == tessera::ProjectionKind::LambertAzimuthalEqualArea ||
+    p.Kind == tessera::ProjectionKind::TransverseMercator ||
+    p.Kind == tessera::ProjectionKind::UTM || !(extent.LongitudeSpan > WidestSpanWithoutWarning))
+  {
+    return;
+  }
+  const double cut = p.CentralLongitude + 180.0;
+  const auto tenths = [](double degrees)
+  { return tessera::NumberText(std::round(degrees * 10) / 10); };
+  vtkWarningWithObjectMacro(self,
+    << "the data span " << tenths(extent.LongitudeSpan) << " degrees of longitude: the "
+    << tessera::ProjectionKindName(p.Kind) << " projection is cut at longitude "
+    << tenths(cut > 360.0 ? cut - 360.0 : cut) << ", in their largest gap ("
+    << tenths(360.0 - extent.LongitudeSpan)
+    << " degrees), and places either side of it lie far apart in the plane, so their tiles do "
+       "not meet; for data round a pole, LambertAzimuthalEqualArea with ParametersFromData off "
+       "and CentralLatitude 90 or -90 keeps them together");
+}
+
 /// The forward projection's parameters from the filter's settings and the data.
 tessera::ProjectionParameters ChooseForwardParameters(vtkGeographicProjection* self,
   const std::vector<tessera::Point2>& lonlat)
@@ -298,14 +350,12 @@ tessera::ProjectionParameters ChooseForwardParameters(vtkGeographicProjection* s
   // Automatic is the Albers equal-area conic fitted to the data; with ParametersFromData off it
   // takes the parameters set, as AlbersEqualArea does (they were ignored).
   tessera::ProjectionParameters p;
-  if (self->GetProjection() == vtkGeographicProjection::AUTOMATIC && self->GetParametersFromData())
+  if (self->GetParametersFromData())
   {
-    p = tessera::AutomaticParameters(lonlat);
-  }
-  else if (self->GetParametersFromData())
-  {
-    p =
-      tessera::ParametersFromExtent(KindOf(self->GetProjection()), tessera::ComputeExtent(lonlat));
+    // (KindOf(AUTOMATIC) is Albers: tessera::AutomaticParameters)
+    const tessera::GeographicExtent extent = tessera::ComputeExtent(lonlat);
+    p = tessera::ParametersFromExtent(KindOf(self->GetProjection()), extent);
+    WarnOfDataRoundTheGlobe(self, p, extent);
   }
   else
   {
@@ -426,14 +476,17 @@ struct Piece
 constexpr double MaxAddedPoints = 1e7;
 
 /// Refuses a step that would add more than MaxAddedPoints points over all the pieces' lines and
-/// polygons, counted before any is made (each edge once, as EdgeDensifier cuts it).
-void CheckAddedPoints(const std::vector<Piece>& pieces, double step)
+/// polygons, counted before any is made (each edge once, as EdgeDensifier cuts it). places: an
+/// inverse's, the lon/lat of each piece's points (empty for a forward).
+void CheckAddedPoints(const std::vector<Piece>& pieces,
+  double step,
+  const std::vector<std::vector<tessera::Point2>>& places)
 {
   double added = 0.0;
   vtkNew<vtkIdList> ids;
-  for (const Piece& piece : pieces)
+  for (std::size_t p = 0; p < pieces.size(); ++p)
   {
-    auto* poly = vtkPolyData::SafeDownCast(piece.Input);
+    auto* poly = vtkPolyData::SafeDownCast(pieces[p].Input);
     std::set<std::pair<vtkIdType, vtkIdType>> edges;
     for (const auto& [cells, closed] : { std::make_pair(poly ? poly->GetLines() : nullptr, false),
            std::make_pair(poly ? poly->GetPolys() : nullptr, true) })
@@ -449,6 +502,12 @@ void CheckAddedPoints(const std::vector<Piece>& pieces, double step)
           const vtkIdType a = ids->GetId(k), b = ids->GetId((k + 1) % n);
           if (!edges.insert(std::minmax(a, b)).second)
           {
+            continue;
+          }
+          if (!places.empty())
+          {
+            added +=
+              tessera::DensifiedPieceCount(places[p][a], places[p][b], step * InverseStepSlack) - 1;
             continue;
           }
           double pa[3], pb[3];
@@ -535,6 +594,15 @@ tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
   vtkDataObject* input,
   const std::vector<Piece>& pieces)
 {
+  if (!self->GetInverse())
+  {
+    // Whatever gives the projection (a longitude of 1000 was wrapped to 280 without a word when
+    // a ProjectionRecord was set, and refused otherwise).
+    for (const Piece& piece : pieces)
+    {
+      WithLabel(piece, [&piece]() { tessera::ValidateLonLat(ReadXY(piece.Input->GetPoints())); });
+    }
+  }
   const std::string own = self->GetProjectionRecord();
   if (!own.empty())
   {
@@ -585,10 +653,6 @@ tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
   for (const Piece& piece : pieces)
   {
     std::vector<tessera::Point2> own = ReadXY(piece.Input->GetPoints());
-    if (!self->GetInverse())
-    {
-      WithLabel(piece, [&own]() { tessera::ValidateLonLat(own); });
-    }
     if (lonlat.empty())
     {
       lonlat = std::move(own); // (a lone data set's points, not copied again)
@@ -601,23 +665,48 @@ tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
   return ChooseForwardParameters(self, lonlat);
 }
 
+/// The places (lon/lat) of the points of each piece of an inverse's input; throws InputError
+/// naming a point that has none. Computed once: the densifier counts an edge's pieces from its
+/// ends' places, and they are the output's first points.
+std::vector<std::vector<tessera::Point2>> InversePlaces(const std::vector<Piece>& pieces,
+  const tessera::GeographicProjection& projection)
+{
+  std::vector<std::vector<tessera::Point2>> places(pieces.size());
+  for (std::size_t p = 0; p < pieces.size(); ++p)
+  {
+    WithLabel(pieces[p],
+      [&]()
+      {
+        places[p] = ReadXY(pieces[p].Input->GetPoints());
+        for (std::size_t i = 0; i < places[p].size(); ++i)
+        {
+          places[p][i] = projection.Inverse(places[p][i], static_cast<long long>(i));
+        }
+      });
+  }
+  return places;
+}
+
 /// Projects one piece into its output, with the record (none when empty), adding to report.
+/// places: an inverse's, the lon/lat of the piece's points (InversePlaces), else empty.
 void ProjectPiece(vtkGeographicProjection* self,
   const Piece& piece,
   const tessera::GeographicProjection* projection,
   const std::string& record,
+  const std::vector<tessera::Point2>& places,
   DensifyReport& report)
 {
   vtkPointSet* input = piece.Input;
   vtkPointSet* output = piece.Output;
   auto polyInput = vtkPolyData::SafeDownCast(input);
-  if (!self->GetInverse() && polyInput && self->GetMaximumEdgeLength() > 0.0)
+  if (polyInput && self->GetMaximumEdgeLength() > 0.0)
   {
     EdgeDensifier densifier(polyInput,
       vtkPolyData::SafeDownCast(output),
       self->GetMaximumEdgeLength(),
       piece.Label,
-      report);
+      report,
+      self->GetInverse() ? &places : nullptr);
     densifier.Run();
     output->GetFieldData()->PassData(input->GetFieldData());
   }
@@ -638,8 +727,9 @@ void ProjectPiece(vtkGeographicProjection* self,
   {
     double p[3];
     source->GetPoint(i, p);
-    const tessera::Point2 q = self->GetInverse() ? projection->Inverse({ p[0], p[1] }, i)
-                                                 : projection->Forward({ p[0], p[1] }, i);
+    const tessera::Point2 q = !self->GetInverse()   ? projection->Forward({ p[0], p[1] }, i)
+      : static_cast<std::size_t>(i) < places.size() ? places[i]
+                                                    : projection->Inverse({ p[0], p[1] }, i);
     projected->SetPoint(i, q.x, q.y, p[2]);
   }
   output->SetPoints(projected);
@@ -747,7 +837,7 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
       throw tessera::InputError("UTMZone " + std::to_string(this->UTMZone) +
         " is neither a zone from 1 to 60 nor 0 (the zone of the data's central longitude)");
     }
-    if (!this->Inverse && !(this->MaximumEdgeLength >= 0.0)) // (an inverse does not densify)
+    if (!(this->MaximumEdgeLength >= 0.0))
     {
       // (every comparison with NaN is false: it turned the densification off without a word, as
       // a negative length did)
@@ -784,14 +874,27 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
       projection.reset(new tessera::GeographicProjection(parameters));
       record = this->Inverse ? std::string() : parameters.ToString();
     }
-    if (!this->Inverse && this->MaximumEdgeLength > 0.0)
+    const std::vector<std::vector<tessera::Point2>> places = this->Inverse && projection
+      ? InversePlaces(pieces, *projection)
+      : std::vector<std::vector<tessera::Point2>>();
+    if (this->MaximumEdgeLength > 0.0)
     {
-      CheckAddedPoints(pieces, this->MaximumEdgeLength);
+      CheckAddedPoints(pieces, this->MaximumEdgeLength, places);
     }
     DensifyReport report;
-    for (const Piece& piece : pieces)
+    const std::vector<tessera::Point2> noPlaces; // (a forward's)
+    for (std::size_t p = 0; p < pieces.size(); ++p)
     {
-      WithLabel(piece, [&]() { ProjectPiece(this, piece, projection.get(), record, report); });
+      WithLabel(pieces[p],
+        [&]()
+        {
+          ProjectPiece(this,
+            pieces[p],
+            projection.get(),
+            record,
+            places.empty() ? noPlaces : places[p],
+            report);
+        });
     }
     if (report.Capped > 0)
     {

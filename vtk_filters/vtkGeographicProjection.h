@@ -36,7 +36,13 @@
  *
  * Longitudes are angles: the data's extent is the shortest longitude arc that holds it, so a set
  * crossing the antimeridian (e.g. 165..181.6) is handled, and the inverse returns longitudes
- * within 180 degrees of the central meridian.
+ * within 180 degrees of the central meridian (continuous across the antimeridian), never beyond
+ * 360 (a meridian set beyond 180 by hand gives places more than 360 east a turn west). One place
+ * written two ways (181.5 and -178.5, 180 and -180) projects to one point, bit for bit. Data that
+ * span more than 270 degrees of longitude get a warning under a projection cut at a meridian (all
+ * but the azimuthal ones): places either side of the cut lie far apart in the plane; data round a
+ * pole want LambertAzimuthalEqualArea about it. A longitude beyond 360 or a latitude beyond 90 is
+ * an error naming the point, whatever gives the projection.
  *
  * For vtkPolyData input, line and polygon edges are straight in lon/lat (RFC 7946): before
  * projecting, every edge longer than MaximumEdgeLength degrees is cut into equal pieces (point
@@ -46,8 +52,12 @@
  * longitudes differ by more than 180 degrees as written is cut the shorter way round, across the
  * 180th meridian (179 to -179) or, in 0 .. 360 data, the prime meridian; where they differ by 180
  * to 270 degrees it could be meant either way, and a warning counts such edges and names the first
- * (add a vertex in between for the straight reading). Other point sets are projected point by
- * point.
+ * (add a vertex in between for the straight reading). The inverse's edges are straight in the
+ * plane: each is cut there into equal pieces, so that none spans more than about
+ * MaximumEdgeLength degrees between the places of its ends, and the lon/lat output, read with
+ * edges straight in lon/lat, keeps the plane's shapes and areas (an uncut 600 km square of an
+ * Albers plane came back 5e-4 off in area, cut at 0.1 degree 4e-7). Other point sets are
+ * projected point by point.
  *
  * ProjectionRecord, when set, is the projection, forward or inverse: the record another data set's
  * projection wrote, so that both are projected alike (as vtkWindowClip requires).
@@ -207,7 +217,8 @@ public:
 
   ///@{
   /**
-   * Longest edge, in degrees of the lon/lat plane, left uncut before projecting (default 0.1).
+   * Longest edge, in degrees of the lon/lat plane, left uncut before projecting (default 0.1);
+   * inverse, the longest (about) that a plane edge's pieces span in lon/lat after it.
    * 0: no densification (a negative or NaN length is an error). An edge is cut into at most
    * 10^6 pieces (a warning counts those), and a step that would add more than 10^7 points in all
    * is an error (a step given in metres, say), before any point is made.

@@ -179,6 +179,71 @@ TEST(Geo, ExtentCrossingTheAntimeridianIsTheShortArc)
   EXPECT_NEAR(InterpolateLonLat({ 179.5, 0.0 }, { -179.5, 0.0 }, 0.5).x, 180.0, 1e-12);
 }
 
+TEST(Geo, OnePlaceWrittenTwoWaysProjectsToOnePointExactly)
+{
+  // Exactly one place (the differences are whole turns): the same point, bit for bit, under
+  // meridians whose differences from them round (the reduction of b - a did, and the two copies of
+  // a gauge came out some 1e-9 m apart, not duplicates).
+  const std::pair<double, double> pairs[] = { { 181.5, -178.5 },
+    { 180.0, -180.0 },
+    { 359.5, -0.5 },
+    { 190.123456789, 190.123456789 - 360.0 },
+    { -350.7, 9.3 } };
+  for (const double lon0 : { 176.5, -170.25, 183.3, 0.1, -359.9 })
+  {
+    ProjectionParameters p;
+    p.Kind = ProjectionKind::AlbersEqualArea;
+    p.CentralLongitude = lon0;
+    p.CentralLatitude = -20.0;
+    p.StandardParallel1 = -25.0;
+    p.StandardParallel2 = -15.0;
+    const GeographicProjection projection(p);
+    for (const auto& [east, west] : pairs)
+    {
+      if (std::remainder(east, 360.0) != std::remainder(west, 360.0)) // (exact)
+      {
+        continue; // (-350.7 and 9.3 differ in their last bits: two places)
+      }
+      const Point2 a = projection.Forward({ east, -20.0 });
+      const Point2 b = projection.Forward({ west, -20.0 });
+      EXPECT_TRUE(a.x == b.x && a.y == b.y) << lon0 << ": " << east << ", " << west;
+    }
+  }
+}
+
+TEST(Geo, DataRoundTheGlobeComeBackWithinATurn)
+{
+  // Stations all round the globe from 120 east: the arc held them to 480 degrees, its centre at
+  // 300, and the inverse gave longitudes of 450 back, which every reader refuses.
+  const std::vector<Point2> stations = { { 150.0, 5.0 },
+    { 200.0, 10.0 },
+    { 250.0, 15.0 },
+    { 300.0, 5.0 },
+    { 350.0, 10.0 },
+    { 40.0, 15.0 },
+    { 90.0, 5.0 } };
+  const GeographicExtent extent = ComputeExtent(stations);
+  EXPECT_LE(extent.WestLongitude + extent.LongitudeSpan, 360.0);
+  EXPECT_NEAR(extent.LongitudeSpan, 300.0, 1e-12);
+  const GeographicProjection projection(AutomaticParameters(stations));
+  for (const Point2& s : stations)
+  {
+    const Point2 back = projection.Inverse(projection.Forward(s));
+    EXPECT_LE(std::abs(back.x), 360.0) << s.x;
+    EXPECT_NEAR(std::remainder(back.x - s.x, 360.0), 0.0, 1e-9) << s.x;
+  }
+  // A meridian set at 300 by hand: places more than 60 degrees east of it come back a turn west.
+  ProjectionParameters byHand = AutomaticParameters(stations);
+  byHand.CentralLongitude = 300.0;
+  const GeographicProjection set(byHand);
+  for (const Point2& s : stations)
+  {
+    const Point2 back = set.Inverse(set.Forward(s));
+    EXPECT_LE(std::abs(back.x), 360.0) << s.x;
+    EXPECT_NEAR(std::remainder(back.x - s.x, 360.0), 0.0, 1e-9) << s.x;
+  }
+}
+
 TEST(Geo, BadPointsAreNamedById)
 {
   GeographicProjection albers(AutomaticParameters({ { 0.0, 0.0 }, { 1.0, 1.0 } }));

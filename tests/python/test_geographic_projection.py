@@ -5,12 +5,12 @@ import csv
 import math
 import os
 
-from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints
+from vtkmodules.vtkCommonCore import vtkCommand, vtkPoints, vtkStringArray
 from vtkmodules.vtkCommonDataModel import vtkCompositeDataSet, vtkMultiBlockDataSet, vtkPolyData
 
 from tessera import vtkGeographicProjection
-from tessera_testing import (EXAMPLE_DATA, assert_close, assert_that, make_points, messages_of, polygon,
-                             projection_record, run)
+from tessera_testing import (EXAMPLE_DATA, assert_close, assert_that, cell_rings, colorado_outline, make_points, messages_of,
+                             polygon, projection_record, run)
 
 
 def colorado_gauges():
@@ -604,6 +604,158 @@ def test_settings_an_inverse_does_not_use_for_the_inputs_record_are_named():
                     and named in warnings[0], f"{case}: {warnings}")
 
 
+def project(data, configure=None, inverse_of=None):
+    """The output of a vtkGeographicProjection on data (configure(f) first, if given), with its
+    warnings and errors."""
+    f = vtkGeographicProjection()
+    warnings, errors = messages_of(f, vtkCommand.WarningEvent), messages_of(f)
+    if configure:
+        configure(f)
+    f.SetInputData(data)
+    f.Update()
+    return f.GetOutput(), warnings, errors
+
+
+def test_one_place_in_two_longitude_conventions_projects_to_one_point():
+    """181.5 and -178.5, or 180 and -180, are one place: they project to the same x and y, bit for
+    bit, whatever the record (they were some 1e-9 m apart, and a tessellation kept both copies and
+    split one tile between them), and the Fiji epicentres give the same points in 0 .. 360 as in
+    -180 .. 180."""
+    for lon0 in ("176.5", "-170.25", "183.3", "0.1"):
+        record = f"projection=AlbersEqualArea lon0={lon0} lat0=-20 lat1=-25 lat2=-15 zone=1 north=0"
+        for east, west in ((181.5, -178.5), (180.0, -180.0), (359.5, -0.5), (190.123456789, 190.123456789 - 360)):
+            out, _, errors = project(make_points([(east, -20.0), (west, -20.0)]),
+                                     lambda f: f.SetProjectionRecord(record))
+            a, b = out.GetPoint(0), out.GetPoint(1)
+            assert_that(not errors and a == b, f"lon0 {lon0}: {east} at {a}, {west} at {b}")
+    with open(os.path.join(EXAMPLE_DATA, "fiji_quakes.csv")) as f:
+        quakes = [(float(row["long"]), float(row["lat"])) for row in csv.DictReader(f)]
+    assert_that(any(lon > 180.0 for lon, _ in quakes), "the file has longitudes beyond 180")
+    first, _, _ = project(make_points(quakes))
+    record = projection_record(first)
+    wrapped = [(lon - 360.0 if lon > 180.0 else lon, lat) for lon, lat in quakes]
+    second, _, _ = project(make_points(wrapped), lambda f: f.SetProjectionRecord(record))
+    moved = [i for i in range(len(quakes)) if first.GetPoint(i) != second.GetPoint(i)]
+    assert_that(not moved, f"{len(moved)} of {len(quakes)} epicentres moved, e.g. {moved[:5]}")
+
+
+def area_straight_in_lonlat(ring):
+    """Ellipsoidal (WGS84) area of a lon/lat ring whose edges are straight in lon/lat, anticlockwise
+    positive: minus the integral of the area from the equator to each latitude, a^2 q / 2 per
+    radian of longitude (Snyder's q, 3-12), along the boundary, by Simpson's rule on each edge."""
+    a, f = 6378137.0, 1 / 298.257223563
+    e2 = f * (2 - f)
+    e = math.sqrt(e2)
+
+    def zone(lat):
+        s = math.sin(math.radians(lat))
+        return a * a / 2 * (1 - e2) * (s / (1 - e2 * s * s) - math.log((1 - e * s) / (1 + e * s)) / (2 * e))
+
+    total = 0.0
+    for (lon1, lat1), (lon2, lat2) in zip(ring, ring[1:] + ring[:1]):
+        steps = 16
+        weights = [1 if k in (0, steps) else 4 if k % 2 else 2 for k in range(steps + 1)]
+        mean = sum(w * zone(lat1 + (lat2 - lat1) * k / steps) for k, w in enumerate(weights)) / (3 * steps)
+        total -= mean * math.radians(lon2 - lon1)
+    return total
+
+
+def test_the_inverse_cuts_plane_edges_so_that_lonlat_keeps_their_shape():
+    """An inverse's polygon edges are straight in the plane; read straight in lon/lat (RFC 7946, as
+    the forward reads them) they would be other lines. The inverse cuts them, so that no piece
+    spans more than MaximumEdgeLength degrees: a square of 600 km in an Albers plane (equal-area)
+    then comes back as a lon/lat ring whose ellipsoidal area, computed here apart, is the square's
+    to 1e-6; uncut (MaximumEdgeLength 0, or before) it was 1e-3 off. Points of a forward's densified
+    output, projected back, are not cut again."""
+    record = "projection=AlbersEqualArea lon0=-105.5 lat0=39 lat1=37.67 lat2=40.33 zone=13 north=1"
+    side = 600000.0
+    square = polygon([[(-side / 2, -side / 2), (side / 2, -side / 2), (side / 2, side / 2), (-side / 2, side / 2)]])
+    stamp = vtkStringArray()
+    stamp.SetName("TesseraProjection")
+    stamp.InsertNextValue(record)
+    square.GetFieldData().AddArray(stamp)
+    errors_of = {}
+    for step in (0.1, 0.0):
+        out, warnings, errors = project(square, lambda f: (f.InverseOn(), f.SetMaximumEdgeLength(step)))
+        ring = [p[:2] for p in cell_rings(out)[0]]
+        errors_of[step] = abs(area_straight_in_lonlat(ring) / side ** 2 - 1)
+        assert_that(not warnings and not errors, f"step {step}: {warnings} {errors}")
+        if step:
+            longest = max(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(ring, ring[1:] + ring[:1]))
+            assert_that(longest <= step * 1.01 and len(ring) > 4, f"{len(ring)} points, a piece of {longest}")
+        else:
+            assert_that(len(ring) == 4, f"MaximumEdgeLength 0 keeps the 4 corners: {len(ring)}")
+    assert_that(errors_of[0.1] < 1e-6 and errors_of[0.0] > 1e-4, f"relative area errors {errors_of}")
+    # Projected and back: the forward's pieces of at most 0.1 degree are not cut again.
+    forward = vtkGeographicProjection()
+    forward.SetInputData(polygon([colorado_outline()]))
+    inverse = vtkGeographicProjection()
+    inverse.InverseOn()
+    inverse.SetInputConnection(forward.GetOutputPort())
+    inverse.Update()
+    there, back = forward.GetOutput(), inverse.GetOutput()
+    assert_that(there.GetNumberOfPoints() > 2 * len(colorado_outline()) and back.GetNumberOfPoints() == there.GetNumberOfPoints(),
+                f"{there.GetNumberOfPoints()} points projected, {back.GetNumberOfPoints()} back")
+
+
+def test_the_inverse_gives_longitudes_a_reader_takes_back():
+    """Stations all round the globe gave an automatic central meridian of 300, and the inverse gave
+    longitudes of 400 and 450 back, which the forward (and the areal average) then refused: the
+    inverse's longitudes are within 360 degrees, each a whole number of turns from the input's,
+    and continuous along the data's arc. A meridian set beyond 180 by hand gives no longitude beyond
+    360 either."""
+    lons = [150.0, 200.0, 250.0, 300.0, 350.0, 40.0, 90.0]
+    stations = make_points([(lon, 5.0 + (k % 3) * 5.0) for k, lon in enumerate(lons)])
+    there, warnings, _ = project(stations)
+    back, _, errors = project(there, lambda f: f.InverseOn())
+    got = [back.GetPoint(i)[0] for i in range(len(lons))]
+    assert_that(not errors and all(abs(lon) <= 360.0 for lon in got), f"{errors} {got}")
+    assert_that(all(abs(math.remainder(g - lon, 360.0)) < 1e-9 for g, lon in zip(got, lons)), f"{got} for {lons}")
+    assert_that(max(got) - min(got) < 360.0, f"continuous along the arc: {got}")
+    again, _, errors = project(back)
+    assert_that(not errors and again.GetNumberOfPoints() == len(lons), f"{errors}")
+    record = "projection=AlbersEqualArea lon0=300 lat0=5 lat1=0 lat2=10 zone=1 north=1"
+    there, _, _ = project(stations, lambda f: f.SetProjectionRecord(record))
+    back, _, errors = project(there, lambda f: f.InverseOn())
+    got = [back.GetPoint(i)[0] for i in range(len(lons))]
+    assert_that(not errors and all(abs(lon) <= 360.0 for lon in got)
+                and all(abs(math.remainder(g - lon, 360.0)) < 1e-9 for g, lon in zip(got, lons)), f"{errors} {got}")
+
+
+def test_data_round_the_globe_warn_that_the_projection_cuts_them():
+    """Stations all round Antarctica, every 5 degrees of longitude: a conic cut in their largest gap
+    puts neighbours 359 km apart some 6000 km apart in the plane, and their tiles do not meet. A
+    warning says so and names the azimuthal way; data spanning up to 270 degrees, and an azimuthal
+    projection, give none."""
+    ring = [(5.0 * k, -50.0 - 6.0 * (k % 2)) for k in range(72)]
+    for coords, configure, warned in (
+            (ring, None, "the data span 355 degrees of longitude: the AlbersEqualArea projection is cut at "
+                         "longitude 357.5, in their largest gap (5 degrees)"),
+            (ring, lambda f: f.SetProjectionToLambertConformalConic(), "the LambertConformalConic projection"),
+            (ring[:55], None, None),
+            (ring, lambda f: (f.SetProjectionToLambertAzimuthalEqualArea(), f.ParametersFromDataOff(),
+                              f.SetCentralLatitude(-90.0)), None)):
+        out, warnings, errors = project(make_points(coords), configure)
+        if warned:
+            assert_that(len(warnings) == 1 and warned in warnings[0] and "LambertAzimuthalEqualArea" in warnings[0],
+                        f"{warnings}")
+        else:
+            assert_that(not warnings and not errors, f"{len(coords)} points: {warnings} {errors}")
+        assert_that(out.GetNumberOfPoints() == len(coords), f"{out.GetNumberOfPoints()} points")
+
+
+def test_a_longitude_beyond_360_is_refused_whatever_gives_the_projection():
+    """A typo of longitude 1000 was wrapped to 280 and projected without a word when a
+    ProjectionRecord was set, and refused otherwise: now refused with the point named either way."""
+    record = "projection=AlbersEqualArea lon0=178 lat0=-20 lat1=-25 lat2=-15 zone=1 north=0"
+    points = make_points([(178.0, -20.0), (179.0, -21.0), (1000.0, -28.11)])
+    for configure in (None, lambda f: f.SetProjectionRecord(record),
+                      lambda f: (f.ParametersFromDataOff(), f.SetCentralLongitude(178.0))):
+        out, _, errors = project(points, configure)
+        assert_that(len(errors) == 1 and "point 2 (1000, -28.11) has a longitude beyond 360 degrees" in errors[0]
+                    and out.GetNumberOfPoints() == 0, f"{errors}")
+
+
 if __name__ == "__main__":
     run([test_round_trip_of_the_colorado_gauges,
          test_azimuthal_equidistant_keeps_distances_from_the_centre,
@@ -620,4 +772,9 @@ if __name__ == "__main__":
          test_automatic_with_parameters_set_is_their_albers_conic,
          test_global_ids_are_kept_where_no_edge_is_cut_and_their_loss_is_said,
          test_a_nan_or_negative_edge_length_is_an_error,
-         test_a_projection_or_zone_that_is_no_choice_is_named])
+         test_a_projection_or_zone_that_is_no_choice_is_named,
+         test_one_place_in_two_longitude_conventions_projects_to_one_point,
+         test_the_inverse_cuts_plane_edges_so_that_lonlat_keeps_their_shape,
+         test_the_inverse_gives_longitudes_a_reader_takes_back,
+         test_data_round_the_globe_warn_that_the_projection_cuts_them,
+         test_a_longitude_beyond_360_is_refused_whatever_gives_the_projection])
