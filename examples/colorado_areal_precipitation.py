@@ -2038,8 +2038,9 @@ def write_weights(per_gauge, gauges, path):
         for g in sorted(per_gauge, key=lambda g: -per_gauge[g]["weight"]):
             lon, lat, _ = gauges.GetPoint(g)
             e = per_gauge[g]
-            out.writerow([ids.GetValue(g), names.GetValue(g), lon, lat, f"{e['weight']:.15g}",
-                          f"{e['area'] / 1e6:.15g}", f"{e['value']:.15g}"])
+            # (15 digits as the other values: a UTM gauge's inverse gave -108.07999999999866)
+            out.writerow([ids.GetValue(g), names.GetValue(g), f"{lon:.15g}", f"{lat:.15g}",
+                          f"{e['weight']:.15g}", f"{e['area'] / 1e6:.15g}", f"{e['value']:.15g}"])
 
 
 def polygon_rings(data):
