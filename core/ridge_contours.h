@@ -18,7 +18,11 @@
 //    path from one ridge to another, while a shorter one lies where ridges cross (the paper
 //    removes every segment without a major pixel; major pixels are sparse on noisy crests, see
 //    ridge_extraction.h, and removing the pieces between noise branches before the branches
-//    would cut the crest). The whole step repeats until nothing changes.
+//    would cut the crest). Given the field, a segment between two junctions longer than
+//    MaximumBridgeLength without a major pixel, along which the field falls below a quarter of
+//    its ends', is a saddle path from the start and goes with the branches (once the branches
+//    beyond its junctions went, it merged into the ridges and joined them). The whole step
+//    repeats until nothing changes.
 // 4. At each junction the remaining segment ends are joined in pairs, best pair first:
 //    Longest joins the two ends whose contours (so far) give the longest contour;
 //    ClosestTangent joins the two ends whose tangents at the junction are most nearly opposite
@@ -88,12 +92,15 @@ int ConnectivityNumber(const std::vector<std::uint8_t>& mask, int width, int hei
 /// 1 between 4-neighbours, sqrt(2) between diagonal neighbours.
 double StepLength(int a, int b, int width);
 
-/// Steps 1-5. Throws InputError if the masks do not match width x height or the settings are
-/// invalid (negative minimum length, TangentPixels < 1).
+/// Steps 1-5. field (optional): the field the masks were taken from, width x height, which finds
+/// the saddle paths of step 3 while the branches still hold their junctions. Throws InputError if
+/// the masks or the field do not match width x height or the settings are invalid (negative
+/// minimum length, TangentPixels < 1).
 RidgeContours TraceRidgeContours(const std::vector<std::uint8_t>& minor,
   const std::vector<std::uint8_t>& major,
   int width,
   int height,
-  const RidgeContourSettings& settings);
+  const RidgeContourSettings& settings,
+  const std::vector<double>* field = nullptr);
 
 } // namespace tessera

@@ -620,8 +620,8 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
   // points into a closed group, and broke an ellipse's tips into small closed groups); dropped,
   // their points join the contours nearby.
   contourSettings.MinimumLoopLength = 2.0 * Pi * this->Settings.Width;
-  const RidgeContours contours =
-    TraceRidgeContours(masks.Minor, masks.Major, grid.Width, grid.Height, contourSettings);
+  const RidgeContours contours = TraceRidgeContours(
+    masks.Minor, masks.Major, grid.Width, grid.Height, contourSettings, &result.Field);
   result.MinorRidge = std::move(masks.Minor);
   result.MajorRidge = std::move(masks.Major);
   if (contours.Count() == 0)
