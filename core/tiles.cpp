@@ -905,7 +905,7 @@ void ScaleByPowerOfTwo(TileMesh& mesh, int exponent)
 /// The tiles fill the window, so their areas add up to its area. Points closer together than the
 /// tile derivation's exact range allows (some 1e-60 of the window's size, where the products of
 /// its window decisions underflow) can break that: an error then, rather than wrong tiles.
-void CheckTilesFillWindow(const TileMesh& tiles, double windowArea)
+void CheckTilesFillWindow(const TileMesh& tiles, double windowArea, double cornerRounding)
 {
   if (tiles.Areas.empty())
   {
@@ -920,13 +920,31 @@ void CheckTilesFillWindow(const TileMesh& tiles, double windowArea)
   }
   // (a plain sum: its rounding, some n ulps at most, is far inside the 1e-6 tolerance)
   const double total = std::accumulate(tiles.Areas.begin(), tiles.Areas.end(), 0.0);
-  if (!(std::fabs(total - windowArea) <= 1e-6 * windowArea))
+  if (!(std::fabs(total - windowArea) <= 1e-6 * windowArea + cornerRounding))
   {
     throw InputError("the tiles' areas add up to " + NumberText(total) +
       ", not the window's area " + NumberText(windowArea) +
       ": the points lie too close together, for the window's size, for exact tiles (their "
       "coordinates differ by some 1e-60 of it or less)");
   }
+}
+
+double CornerRoundingOfTiles(const Window& window)
+{
+  if (window.IsAxisAlignedRectangle())
+  {
+    return 0.0;
+  }
+  const std::vector<Point2>& corners = window.Vertices();
+  double perimeter = 0.0;
+  for (std::size_t k = 0; k < corners.size(); ++k)
+  {
+    const Point2& a = corners[k];
+    const Point2& b = corners[(k + 1) % corners.size()];
+    perimeter += std::hypot(b.x - a.x, b.y - a.y);
+  }
+  const double reach = window.Reach();
+  return perimeter * (std::nextafter(reach, HUGE_VAL) - reach);
 }
 
 namespace

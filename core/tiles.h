@@ -131,11 +131,19 @@ void CheckWindowInExactRange(const DirichletTessellation& tessellation);
 /// in doubles (and which corners are left can depend on the input's order).
 std::vector<std::int32_t> CollapsedTilePoints(const TileMesh& tiles);
 
-/// Throws InputError unless the tiles' areas add up to the window's area (within 1e-6 relative):
-/// a check that points lay within the range where the tiles are exact (window_predicates.h).
-/// Necessary, not sufficient: it catches tiles that overlap or leave gaps, not a tile given to the
-/// wrong point. No tiles pass.
-void CheckTilesFillWindow(const TileMesh& tiles, double windowArea);
+/// Throws InputError unless the tiles' areas add up to the window's area (within 1e-6 relative,
+/// plus cornerRounding): a check that points lay within the range where the tiles are exact
+/// (window_predicates.h). Necessary, not sufficient: it catches tiles that overlap or leave gaps,
+/// not a tile given to the wrong point. No tiles pass.
+void CheckTilesFillWindow(const TileMesh& tiles, double windowArea, double cornerRounding = 0.0);
+
+/// How far the tiles' areas can add up from the window's exact area because their corners are
+/// rounded to doubles: a corner on a slanted side moves off it by up to an ulp of the coordinates,
+/// and the tiles' outer boundary, which is what their areas add up to (inner corners are shared),
+/// by up to the window's perimeter times that ulp. Negligible unless the window is small beside
+/// its distance from the origin: a triangle 2^-40 wide at 0.5 sums 8e-6 off (a rectangle's sides
+/// hold their rounded corners exactly).
+double CornerRoundingOfTiles(const Window& window);
 
 /// Delaunay faces, each anticlockwise and starting at its smallest point id, listed in the order
 /// of the triangle arrays. The set of faces, and each face, do not depend on the insertion order;

@@ -481,11 +481,12 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
       tessera::CheckPointsInExactRange(window, points, exponent);
     }
     const double windowArea = window.Area();
+    const double cornerRounding = tessera::CornerRoundingOfTiles(window);
     this->UpdateProgress(0.1);
     TessellationResult result = this->Algorithm == BRASSEL_REIF
       ? RunBrasselReif(window, std::move(points))
       : RunGreenSibson(std::move(window), std::move(points), this->ComputeContiguityGraph);
-    tessera::CheckTilesFillWindow(result.Tiles, windowArea);
+    tessera::CheckTilesFillWindow(result.Tiles, windowArea, cornerRounding);
     if (exponent != 0)
     {
       tessera::ScaleByPowerOfTwo(result.Tiles, -exponent);

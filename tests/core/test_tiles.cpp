@@ -1531,3 +1531,39 @@ TEST(Tiles, AWindowAreaBeyondTheDoublesIsNamedAsSuch)
   EXPECT_NO_THROW(CheckTilesFillWindow(mesh, 3.0));
   EXPECT_THROW(CheckTilesFillWindow(mesh, 4.0), InputError);
 }
+
+// A triangle 2^-40 wide at 0.5: the tiles' corners on its slanted side are rounded off the side,
+// and their areas add up some 1e-5 from the window's, which CheckTilesFillWindow took for points
+// too close together and refused (the filter with it). CornerRoundingOfTiles bounds the drift;
+// the sum, taken here exactly over the rounded boundary, lies within it, and a rectangle's is 0.
+TEST(Tiles, RoundedCornersOnASlantedSideStayWithinTheirBound)
+{
+  for (const int k : { 40, 44 })
+  {
+    const double e = std::ldexp(1.0, -k);
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<Point2> points;
+    for (int i = 0; i < 2000; ++i)
+    {
+      points.push_back({ 0.5 + e * unit(random), 0.5 + e * unit(random) });
+    }
+    const Window triangle({ { -1.0, 0.0, 0.5 }, { 0.0, -1.0, 0.5 }, { 1.0, 1.0, -(1.0 + e) } });
+    const Window square = Window::Rectangle(0.5, 0.5 + e, 0.5, 0.5 + e);
+    EXPECT_EQ(CornerRoundingOfTiles(square), 0.0);
+    const double bound = CornerRoundingOfTiles(triangle);
+    EXPECT_GT(bound, 1e-6 * triangle.Area()) << "2^-" << k << ": the drift the check allows";
+    EXPECT_LT(bound, 0.05 * triangle.Area()) << "2^-" << k; // (not so loose as to pass anything)
+    const DirichletTessellation t(triangle, points);
+    const TileMesh mesh = TessellationDual(t).TileMeshAndContiguities(false).Tiles;
+    long double sum = 0.0L;
+    for (const double area : mesh.Areas)
+    {
+      sum += area;
+    }
+    EXPECT_LE(std::fabs(double(sum) - triangle.Area()), bound) << "2^-" << k;
+    EXPECT_NO_THROW(CheckTilesFillWindow(mesh, triangle.Area(), bound)) << "2^-" << k;
+    // (the points too close together this check is for give sums many times the window's)
+    EXPECT_THROW(CheckTilesFillWindow(mesh, 2.0 * triangle.Area(), bound), InputError);
+  }
+}
