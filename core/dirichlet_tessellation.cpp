@@ -387,17 +387,95 @@ void DirichletTessellation::InsertKnownPoint(std::int32_t id, std::int32_t nearI
     this->StatusBytes[id] = std::uint8_t(PointStatus::OutsideWindow);
     return;
   }
+  bool hinted = false;
   if (nearId >= 0 && this->TracksVertexEdges())
   {
     const std::int32_t e = this->EdgeLeaving(nearId); // -1 unless an accepted vertex
     if (e >= 0)
     {
       this->Serial.LastTriangle = e / 3;
+      hinted = true;
     }
+  }
+  if (!hinted && this->IsTwoDimensional())
+  {
+    this->JumpTowards(p);
   }
   this->BeginTrackedChange();
   this->InsertAcceptedPoint(id);
   this->EndTrackedChange();
+}
+
+// Jump and walk (Muecke, Saias and Zhu 1996), while walks run long: the walk to p starts at
+// whichever is nearest p of the triangle made last and triangles sampled at random (by their
+// vertices). From the last triangle alone, points streamed in random order walked O(sqrt n)
+// triangles each, and points along a line that doubles only approximate (y = x/3: a fan of
+// slivers) O(n): 10000 of them took 2.35 s, where a batch took 0.11 s (0.13 s now). A stream in
+// spatial order must not pay for it (each sample is a cache miss or two at 10^6 points: sampling
+// at every point made one 5 times slower), so:
+//
+//   Off --walk of 2 cube roots of the triangles or more--> Probe (16 samples)
+//   Probe --a sample nearer than the last triangle--> On (a quarter as many samples as the last
+//            walk's steps, from a cube root to a square root of the triangles); else --> Off
+//   On --JumpMissesToStop jumps in a row finding none nearer--> Off
+void DirichletTessellation::JumpTowards(const Point2& p)
+{
+  constexpr int ProbeSamples = 16;
+  constexpr int JumpMissesToStop = 2;
+  const std::int32_t triangles = std::int32_t(this->Origins.size() / 3);
+  const double fewest = std::cbrt(double(triangles)), most = std::sqrt(double(triangles));
+  if (this->JumpMode == Jumping::Off && triangles >= 64 &&
+    double(this->Serial.LastWalk) >= 2.0 * fewest)
+  {
+    this->JumpMode = Jumping::Probe;
+  }
+  if (this->JumpMode == Jumping::Off)
+  {
+    return;
+  }
+  const auto distanceTo = [&](std::int32_t t)
+  {
+    double nearest = HUGE_VAL;
+    for (std::int32_t k = 0; k < 3; ++k)
+    {
+      const std::int32_t v = this->Origins[3 * t + k];
+      if (v >= 0)
+      {
+        const Point2& q = this->Coordinates[v];
+        nearest = std::min(nearest, (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y));
+      }
+    }
+    return nearest; // (HUGE_VAL for a free triangle, whose origins are all Free)
+  };
+  std::int32_t best = this->Serial.LastTriangle;
+  double bestDistance = distanceTo(best);
+  const int samples = this->JumpMode == Jumping::Probe
+    ? ProbeSamples
+    : int(std::clamp(double(this->Serial.LastWalk) / 4.0, fewest, most));
+  for (int k = 0; k < samples; ++k)
+  {
+    // xorshift64: a fixed sequence, so that a stream gives the same walks every run
+    this->JumpState ^= this->JumpState << 13;
+    this->JumpState ^= this->JumpState >> 7;
+    this->JumpState ^= this->JumpState << 17;
+    const std::int32_t t = std::int32_t(this->JumpState % std::uint64_t(triangles));
+    const double d = distanceTo(t);
+    if (d < bestDistance)
+    {
+      best = t;
+      bestDistance = d;
+    }
+  }
+  if (best != this->Serial.LastTriangle)
+  {
+    this->JumpMode = Jumping::On;
+    this->JumpMisses = 0;
+  }
+  else if (this->JumpMode == Jumping::Probe || ++this->JumpMisses >= JumpMissesToStop)
+  {
+    this->JumpMode = Jumping::Off;
+  }
+  this->Serial.LastTriangle = best;
 }
 
 void DirichletTessellation::InsertAcceptedPoint(std::int32_t id)
@@ -658,6 +736,12 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Region& regi
   // and the edge to cross is selected without a branch on the (unpredictable) side signs; only
   // the end of the walk is a branch.
   std::int64_t steps = 0;
+  const struct KeepWalkLength // (one store at whichever return ends the walk)
+  {
+    const std::int64_t& Steps;
+    std::int64_t& Kept;
+    ~KeepWalkLength() { this->Kept = this->Steps; }
+  } keep{ steps, region.LastWalk };
   while (crossed >= 0)
   {
     const std::int32_t f = twin[crossed];

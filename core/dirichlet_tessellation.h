@@ -76,7 +76,9 @@ public:
   /// whether it was accepted. Throws InputError (naming that id) for a NaN/Inf coordinate; the
   /// point is then not appended, and the next point inserted gets that id.
   /// nearId: an accepted point near p, where the walk to p starts when vertex edges are tracked
-  /// (TrackVertexEdges); otherwise, or for -1, it starts at the triangle made last. The result
+  /// (TrackVertexEdges); otherwise, or for -1, at the triangle made last, or, while walks from
+  /// it run long (points in random order), at the nearest to p of it and triangles sampled at
+  /// random (jump and walk). The result
   /// is the same either way: only the walk's length differs (so an id that is no accepted point,
   /// out of range included, is not an error: the walk starts as for -1).
   std::int32_t Insert(const Point2& p, std::int32_t nearId = -1);
@@ -218,6 +220,8 @@ private:
     /// A walk longer than this gives up (Foreign): a safety net where the triangulation outside
     /// the region is not yet Delaunay.
     std::int64_t MaxWalk = std::numeric_limits<std::int64_t>::max();
+    /// Steps of the last walk (Locate): a streaming insertion after a long one jumps first.
+    mutable std::int64_t LastWalk = 0;
     std::vector<std::int32_t> FlipStack;
     std::vector<std::int32_t> Deferred; ///< points left for the serial insertion
     std::size_t Inserted = 0;
@@ -236,6 +240,16 @@ private:
     return this->BuildOrder ? (*this->BuildOrder)[v] : v;
   }
   void InsertKnownPoint(std::int32_t id, std::int32_t nearId);
+  /// JumpTowards: off; probing with a few samples after a long walk; on, with many.
+  enum class Jumping : std::uint8_t
+  {
+    Off,
+    Probe,
+    On
+  };
+  Jumping JumpMode = Jumping::Off;
+  int JumpMisses = 0; ///< jumps in a row, while on, that found no nearer start
+  void JumpTowards(const Point2& p);
   void InsertAcceptedPoint(std::int32_t id);
   void InsertCollinear(std::int32_t id);
   void SortCollinearBatch();
@@ -329,6 +343,7 @@ private:
   HalfEdgeArray Origins;
   HalfEdgeArray Twins;
   std::vector<std::int32_t> FreeTriangles;
+  std::uint64_t JumpState = 0x9E3779B97F4A7C15ULL; ///< JumpTowards's random samples
   std::vector<std::int32_t> Collinear;
   /// During BuildFrom: Collinear[2..] were appended in build order, to be sorted at the end.
   bool CollinearUnsorted = false;

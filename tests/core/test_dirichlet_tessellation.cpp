@@ -484,6 +484,36 @@ TEST(DirichletTessellation, StreamingEqualsBatch)
   EXPECT_TRUE(MakeCanonical(batch) == MakeCanonical(streaming));
 }
 
+// Streams whose walks run long jump (JumpTowards): points in random order, then points in
+// random order along a line that doubles only approximate (y = x/3: slivers), then points in
+// rows, whose walks are short again. The jumps change where walks start, never the result.
+TEST(DirichletTessellation, StreamingWithJumpsEqualsBatch)
+{
+  std::vector<Point2> points = UniformPoints(3000, 5);
+  std::mt19937_64 random(17);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int k = 0; k < 3000; ++k)
+  {
+    const double t = unit(random);
+    points.push_back({ t, t * (1.0 / 3.0) });
+  }
+  for (int row = 0; row < 40; ++row)
+  {
+    for (int k = 0; k < 40; ++k)
+    {
+      points.push_back({ (k + 0.5 * (row % 2)) / 40.0, (row + 0.25) / 40.0 });
+    }
+  }
+  Tess batch(UnitWindow(), points);
+  Tess streaming(UnitWindow());
+  for (const Point2& p : points)
+  {
+    streaming.Insert(p);
+  }
+  CheckStructure(streaming);
+  EXPECT_TRUE(MakeCanonical(batch) == MakeCanonical(streaming));
+}
+
 // A streamed point with a NaN or infinite coordinate is refused, named by the id it would have
 // had, and not appended: the next point gets that id, and the result equals the batch of the
 // valid points.
