@@ -22,6 +22,26 @@
 // pixel. A point after a larger gap is an outlier and gets the node of the last continuation (the
 // end pixel's if there is none); otherwise one far point would stretch the node range and squeeze
 // every other node.
+//
+// Continuations are also taken from other contours. A contour often stops short of its points
+// (above, or where the field of a nearby line pulls its crest down), and past its end the nearest
+// pixel can be another contour's: with two parallel lines 5-7 basis widths apart, the points of
+// one line past its contour's end went, as a dense chain, to the other line's contour and bent its
+// curve. So a point far from every contour (more than maximumGap from its nearest pixel) that a
+// chain reaches from an open contour's end joins that contour. A chain starts at a point of the
+// contour continuing it past that end (a far point is more than maximumGap from the end pixel
+// too), and steps at most maximumGap at a time over far points lying beyond the end (along the end
+// tangent). Chains from all ends grow at once in order of their length (sum of steps), and a point
+// joins the first to reach it. Points within maximumGap of their nearest contour are never taken:
+// in a T, the line ending at another's middle does not take the other's points. Points beside a
+// contour are not taken to its end either. A reached point is projected on the end pixel, its
+// distance beyond the end being the largest along its chain (the nodes do not run back where a
+// chain turns; a point that came back more than maximumGap gets that node as an outlier would).
+// Far points no chain reaches keep their nearest contour.
+//
+//   A ==========E  . . . . . . .      dots: far from A's end (past its first maximumGap), nearer
+//                                     to B's pixels below them, but each within maximumGap of the
+//   B ============================    one before: they continue A, not B.
 
 #include "geometry.h"
 #include "ridge_contours.h"

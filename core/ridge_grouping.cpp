@@ -203,9 +203,9 @@ void FitCurves(const std::vector<Point2>& points,
 }
 
 /// ContourDistance per point, and a warning naming the points beyond FarContourWidths basis
-/// widths of their contour: the partition gives every point to the nearest contour, so an outlier
-/// far from every ridge joins a group silently and pulls its curve (a point 1e4 away from a circle
-/// of radius 100 put a spike of 468 into its curve).
+/// widths of their contour: the partition gives every point not continuing a contour past its end
+/// to the nearest contour, so an outlier far from every ridge joins a group silently and pulls its
+/// curve (a point 1e4 away from a circle of radius 100 put a spike of 468 into its curve).
 void MeasureContourDistances(const std::vector<Point2>& pixelPoints,
   const RidgeContours& contours,
   const PointPartition& partition,

@@ -86,7 +86,8 @@ struct RidgeGroupingResult
   std::vector<double> Node; ///< in [0, 1]; 0 when unassigned
   /// Distance (input units) from the point to the contour pixel it is grouped by; NaN where there
   /// is none (unassigned, or every point identical: one group without a contour). A point joins the
-  /// nearest contour however far it is: those beyond FarContourWidths basis widths are also named
+  /// nearest contour however far it is (unless a chain of points continues another contour past its
+  /// end to it, see point_partition.h): those beyond FarContourWidths basis widths are also named
   /// in a warning; for a point past an open contour's end that continues it (PointPartition's
   /// Continues) the distance is still to the end pixel, but only its distance off the end
   /// tangent's line is held against that limit.

@@ -9,6 +9,8 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace
@@ -281,6 +283,398 @@ TEST(PointPartition, PointsAlongTheContourBeyondTheirPixelAreNamedAsWithoutOrder
     tessera::PartitionPoints(points, contour, width, height, NoGapLimit);
   EXPECT_EQ(tessera::PointsWithoutOrder(points, contour, continuing, width, gap),
     (std::vector<std::size_t>{ 7 }));
+}
+
+// Contours from pixel lists (i, j), each open; lengths as sums of the steps.
+tessera::RidgeContours OpenContours(const std::vector<std::vector<std::pair<int, int>>>& lines,
+  int width)
+{
+  tessera::RidgeContours contours;
+  for (const auto& line : lines)
+  {
+    double length = 0.0;
+    for (std::size_t m = 0; m < line.size(); ++m)
+    {
+      contours.Pixels.push_back(line[m].second * width + line[m].first);
+      if (m > 0)
+      {
+        length +=
+          std::hypot(line[m].first - line[m - 1].first, line[m].second - line[m - 1].second);
+      }
+    }
+    contours.Offsets.push_back(static_cast<int>(contours.Pixels.size()));
+    contours.Closed.push_back(0);
+    contours.Lengths.push_back(length);
+  }
+  return contours;
+}
+
+std::vector<std::pair<int, int>> Row(int j, int from, int to)
+{
+  std::vector<std::pair<int, int>> pixels;
+  for (int i = from; i <= to; ++i)
+  {
+    pixels.push_back({ i, j });
+  }
+  return pixels;
+}
+
+// The distance from p to the nearest pixel of any contour, and that pixel's contour (brute force).
+std::pair<double, int> NearestContour(const Point2& p,
+  const tessera::RidgeContours& contours,
+  int width)
+{
+  std::pair<double, int> best{ std::numeric_limits<double>::infinity(), -1 };
+  for (int c = 0; c < contours.Count(); ++c)
+  {
+    for (int k = contours.Offsets[c]; k < contours.Offsets[c + 1]; ++k)
+    {
+      const int pixel = contours.Pixels[k];
+      const double d = std::hypot(p.x - pixel % width, p.y - pixel / width);
+      if (d < best.first)
+      {
+        best = { d, c };
+      }
+    }
+  }
+  return best;
+}
+
+// Two parallel lines 10 pixels (2.5 gaps) apart: the lower's contour (0) runs their whole length,
+// the upper's (1) stops at x = 50 while its points run on to x = 90, a chain 1.5 pixels apart.
+// Past x = 60 those points are nearer to the lower contour; they continue the upper one, with
+// nodes increasing along x. A point of the upper line after a gap of 15 pixels (x = 105), and one
+// beside the upper contour's middle (6 pixels above it), keep their nearest contour.
+TEST(PointPartition, AChainPastAnEndContinuesItsContourNotTheNearestOne)
+{
+  const int width = 120, height = 40;
+  const tessera::RidgeContours contours = OpenContours({ Row(10, 5, 110), Row(20, 5, 50) }, width);
+  const double gap = 4.0;
+  std::vector<Point2> points;
+  for (double x = 5.0; x <= 110.0; x += 1.5)
+  {
+    points.push_back({ x, 10.3 });
+  }
+  const std::size_t firstUpper = points.size();
+  for (double x = 5.0; x <= 90.0; x += 1.5)
+  {
+    // a little noise across the line: y = 19.6 .. 20.4
+    points.push_back({ x, 20.0 + 0.4 * std::sin(1.7 * x) });
+  }
+  const std::size_t lone = points.size();
+  points.push_back({ 105.0, 20.0 });
+  const std::size_t beside = points.size();
+  points.push_back({ 30.0, 26.0 });
+  const tessera::PointPartition partition =
+    tessera::PartitionPoints(points, contours, width, height, gap);
+  int taken = 0; // upper points whose nearest contour is the lower one
+  for (std::size_t k = 0; k < lone; ++k)
+  {
+    const int line = k < firstUpper ? 0 : 1;
+    EXPECT_EQ(partition.GroupId[k], line) << "x = " << points[k].x << ", y = " << points[k].y;
+    taken += line == 1 && NearestContour(points[k], contours, width).second == 0;
+  }
+  EXPECT_GT(taken, 15) << "no upper point is nearer to the lower contour: the test checks nothing";
+  for (std::size_t k = firstUpper + 1; k < lone; ++k)
+  {
+    EXPECT_GE(partition.Node[k], partition.Node[k - 1]) << "x = " << points[k].x;
+    if (points[k].x > 50.0)
+    {
+      EXPECT_GT(partition.Node[k], partition.Node[k - 1]) << "x = " << points[k].x;
+      EXPECT_TRUE(partition.Continues[k]) << "x = " << points[k].x;
+      EXPECT_NEAR(partition.Beyond[k], points[k].x - 50.0, 1e-12) << "x = " << points[k].x;
+    }
+  }
+  EXPECT_NEAR(partition.Node[lone - 1], 1.0, 1e-12);
+  // After the gap: the lower contour, nearest (10 pixels below, the upper end 55 away).
+  EXPECT_EQ(partition.GroupId[lone], 0);
+  EXPECT_EQ(partition.Projection[lone], 100); // (105, 10)
+  EXPECT_EQ(partition.GroupId[beside], 1);
+  EXPECT_EQ(partition.Projection[beside], contours.Offsets[1] + 25); // (30, 20)
+  // Without a gap limit no point is far: the paper's nearest contour.
+  const tessera::PointPartition nearest =
+    tessera::PartitionPoints(points, contours, width, height, NoGapLimit);
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    EXPECT_EQ(nearest.GroupId[k], NearestContour(points[k], contours, width).second) << k;
+  }
+}
+
+// Chains only run past the end: a row of far points beside the contour (4.5 pixels off, the gap
+// being 4), joined by a chain to the points continuing it past its end, keeps its nearest pixels
+// where it lies beside the contour (its chain from the end would make it the end's).
+TEST(PointPartition, FarPointsBesideAContourAreNotTakenToItsEnd)
+{
+  const int width = 80, height = 40;
+  const tessera::RidgeContours contours = OpenContours({ Row(20, 5, 50) }, width);
+  const double gap = 4.0;
+  std::vector<Point2> points;
+  for (double x = 5.0; x <= 70.0; x += 1.5)
+  {
+    points.push_back({ x, 20.0 });
+  }
+  points.push_back({ 56.0, 22.5 }); // from the chain past the end to the row beside
+  const std::size_t firstBeside = points.size();
+  for (double x = 20.0; x <= 56.0; x += 2.0)
+  {
+    points.push_back({ x, 24.5 });
+  }
+  const tessera::PointPartition partition =
+    tessera::PartitionPoints(points, contours, width, height, gap);
+  for (std::size_t k = firstBeside; k < points.size(); ++k)
+  {
+    if (points[k].x <= 50.0)
+    {
+      EXPECT_EQ(partition.Projection[k], static_cast<int>(points[k].x) - 5) << points[k].x;
+      EXPECT_FALSE(partition.Extended[k]) << points[k].x;
+    }
+    else
+    {
+      EXPECT_TRUE(partition.Continues[k]) << points[k].x;
+    }
+  }
+}
+
+// A T: the stem's contour (1) stops 5 pixels short of the bar's (0) middle, pointing at it, and
+// the stem's points continue it to 1.5 pixels past its end, within the gap (4) of bar points. The
+// bar's points lie within the gap of their contour and stay with it, and so do the points of the
+// stem's line beyond the bar (far from every contour, but no chain reaches them over far points:
+// the bar's points in between are near theirs).
+TEST(PointPartition, AContourEndingAtAnotherTakesNoneOfItsPoints)
+{
+  const int width = 80, height = 70;
+  std::vector<std::pair<int, int>> stem;
+  for (int j = 5; j <= 25; ++j)
+  {
+    stem.push_back({ 40, j });
+  }
+  const tessera::RidgeContours contours = OpenContours({ Row(30, 10, 70), stem }, width);
+  const double gap = 4.0;
+  std::vector<Point2> points;
+  for (double x = 10.0; x <= 70.0; x += 0.5)
+  {
+    points.push_back({ x, 30.0 + 1.5 * std::sin(x) }); // the bar's line, within 1.5 pixels
+  }
+  const std::size_t firstStem = points.size();
+  for (double y = 5.5; y <= 60.0; y += 1.0)
+  {
+    if (y < 27.0 || y > 34.0) // the stem's line, on both sides of the bar
+    {
+      points.push_back({ 40.2, y });
+    }
+  }
+  const tessera::PointPartition partition =
+    tessera::PartitionPoints(points, contours, width, height, gap);
+  int farBeyond = 0;
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    const auto [distance, contour] = NearestContour(points[k], contours, width);
+    EXPECT_EQ(partition.GroupId[k], contour) << "x = " << points[k].x << ", y = " << points[k].y;
+    farBeyond += k >= firstStem && distance > gap;
+  }
+  EXPECT_GT(farBeyond, 10) << "no far point beyond the bar: the test checks nothing";
+}
+
+// A chain that turns back past an end: the contour runs along row 20 to x = 30 (tangent +x), its
+// points on to x = 40, then up and back at 120 degrees to x = 32. The points after the turn keep
+// a distance beyond the end within the gap of the turn's (10): it is the largest along their
+// chain from the end (steps of at most the gap: each chain passes within the gap of the turn),
+// not the point's own, which falls to 2, so their nodes do not run back along the curve. The
+// points that came back by more than the gap do not count as continuing.
+TEST(PointPartition, NodesDoNotRunBackAlongAChainThatTurnsBack)
+{
+  const int width = 60, height = 40;
+  const tessera::RidgeContours contours = OpenContours({ Row(20, 10, 30) }, width);
+  const double gap = 4.0;
+  std::vector<Point2> points;
+  for (double x = 10.0; x <= 40.0; x += 1.0)
+  {
+    points.push_back({ x, 20.0 });
+  }
+  const std::size_t turn = points.size() - 1;
+  std::vector<double> own; // distance beyond the end along +x, per point after the turn
+  int backwards = 0;       // points after the turn not continuing
+  for (int t = 1; t <= 16; ++t)
+  {
+    points.push_back({ 40.0 - 0.5 * t, 20.0 - 0.8660254037844386 * t });
+    own.push_back(points.back().x - 30.0);
+  }
+  const tessera::PointPartition partition =
+    tessera::PartitionPoints(points, contours, width, height, gap);
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    EXPECT_EQ(partition.GroupId[k], 0);
+    if (k > 0 && k <= turn)
+    {
+      EXPECT_GT(partition.Node[k], partition.Node[k - 1]) << "x = " << points[k].x;
+    }
+  }
+  EXPECT_NEAR(partition.Beyond[turn], 10.0, 1e-12);
+  for (std::size_t m = 0; m < own.size(); ++m)
+  {
+    const std::size_t k = turn + 1 + m;
+    EXPECT_GE(partition.Beyond[k], own[m]) << "point " << k;
+    EXPECT_GE(partition.Beyond[k], 10.0 - gap) << "point " << k;
+    EXPECT_EQ(partition.Continues[k], own[m] >= partition.Beyond[k] - gap) << "point " << k;
+    backwards += !partition.Continues[k];
+  }
+  EXPECT_GE(backwards, 3);
+}
+
+// Random open contours (digital lines) and points (noisy lines, some past the contours' ends, and
+// scattered points), against independent computations: a point within the gap of its nearest
+// contour keeps a nearest pixel; any other point whose pixel is not a nearest one is far, projected
+// on an end pixel of an open contour, past it (extended), and joined to it by a chain of far
+// points with steps of at most the gap (from the end pixel, or from a point of that contour within
+// the gap of the end pixel).
+TEST(PointPartition, ReassignedPointsAreChainedToTheirEndOverFarPoints)
+{
+  std::mt19937 rng(21);
+  const int width = 60, height = 60;
+  std::uniform_int_distribution<int> coordinate(3, 56);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::normal_distribution<double> noise(0.0, 0.5);
+  int reassigned = 0;
+  for (int trial = 0; trial < 60; ++trial)
+  {
+    // 2-4 digital lines (Bresenham) of 8 pixels or more, sharing no pixel.
+    std::vector<std::vector<std::pair<int, int>>> lines;
+    std::vector<std::uint8_t> used(width * height, 0);
+    const int wanted = 2 + trial % 3;
+    while (static_cast<int>(lines.size()) < wanted)
+    {
+      int x0 = coordinate(rng), y0 = coordinate(rng);
+      const int x1 = coordinate(rng), y1 = coordinate(rng);
+      if (std::max(std::abs(x1 - x0), std::abs(y1 - y0)) < 8)
+      {
+        continue;
+      }
+      std::vector<std::pair<int, int>> line;
+      const int dx = std::abs(x1 - x0), dy = -std::abs(y1 - y0);
+      const int sx = x0 < x1 ? 1 : -1, sy = y0 < y1 ? 1 : -1;
+      int error = dx + dy;
+      bool free = true;
+      while (true)
+      {
+        line.push_back({ x0, y0 });
+        free = free && !used[y0 * width + x0];
+        if (x0 == x1 && y0 == y1)
+        {
+          break;
+        }
+        const int e2 = 2 * error;
+        if (e2 >= dy)
+        {
+          error += dy;
+          x0 += sx;
+        }
+        if (e2 <= dx)
+        {
+          error += dx;
+          y0 += sy;
+        }
+      }
+      if (free)
+      {
+        for (auto [i, j] : line)
+        {
+          used[j * width + i] = 1;
+        }
+        lines.push_back(line);
+      }
+    }
+    const tessera::RidgeContours contours = OpenContours(lines, width);
+    // Points along lines through random points (one past a contour end most times), and scatter.
+    std::vector<Point2> points;
+    const auto inside = [&](const Point2& p)
+    { return p.x >= -0.5 && p.y >= -0.5 && p.x <= width - 0.5 && p.y <= height - 0.5; };
+    for (int l = 0; l < 4; ++l)
+    {
+      Point2 a{ coordinate(rng) * 1.0, coordinate(rng) * 1.0 };
+      if (l < static_cast<int>(lines.size()))
+      {
+        const auto [i, j] = lines[l].back(); // start at a contour end
+        a = { double(i), double(j) };
+      }
+      const double angle = 2.0 * 3.14159265358979 * unit(rng);
+      const double step = 0.8 + 2.5 * unit(rng);
+      for (int m = 0; m < 40; ++m)
+      {
+        const Point2 p{ a.x + m * step * std::cos(angle) + noise(rng),
+          a.y + m * step * std::sin(angle) + noise(rng) };
+        if (inside(p))
+        {
+          points.push_back(p);
+        }
+      }
+    }
+    for (int m = 0; m < 40; ++m)
+    {
+      points.push_back({ unit(rng) * (width - 1), unit(rng) * (height - 1) });
+    }
+    const double gap = 2.5 + 2.0 * unit(rng);
+    const tessera::PointPartition partition =
+      tessera::PartitionPoints(points, contours, width, height, gap);
+    std::vector<double> nearest(points.size());
+    for (std::size_t k = 0; k < points.size(); ++k)
+    {
+      nearest[k] = NearestContour(points[k], contours, width).first;
+    }
+    const auto distanceTo = [&](std::size_t k, int position)
+    {
+      const int pixel = contours.Pixels[position];
+      return std::hypot(points[k].x - pixel % width, points[k].y - pixel / width);
+    };
+    for (std::size_t k = 0; k < points.size(); ++k)
+    {
+      const int position = partition.Projection[k];
+      ASSERT_GE(position, 0);
+      const int c = partition.GroupId[k];
+      ASSERT_TRUE(position >= contours.Offsets[c] && position < contours.Offsets[c + 1]) << k;
+      EXPECT_GE(partition.Node[k], 0.0);
+      EXPECT_LE(partition.Node[k], 1.0);
+      // A nearest pixel (up to the near-ties of point_partition.h).
+      if (distanceTo(k, position) <= nearest[k] + 0.1)
+      {
+        continue;
+      }
+      ++reassigned;
+      const std::string where = "trial " + std::to_string(trial) + ", point " + std::to_string(k);
+      EXPECT_GT(nearest[k], gap - 0.1) << where << ": a near point was taken";
+      const bool first = position == contours.Offsets[c];
+      ASSERT_TRUE(first || position == contours.Offsets[c + 1] - 1) << where << ": not an end";
+      EXPECT_TRUE(partition.Extended[k]) << where;
+      EXPECT_GT(partition.Beyond[k], 0.0) << where;
+      // Breadth-first search from the end over far points (and the contour's points near it).
+      std::vector<std::uint8_t> reached(points.size(), 0);
+      std::vector<std::size_t> queue;
+      for (std::size_t q = 0; q < points.size(); ++q)
+      {
+        const bool start =
+          distanceTo(q, position) <= gap && (nearest[q] > gap - 0.1 || partition.GroupId[q] == c);
+        if (start)
+        {
+          reached[q] = 1;
+          queue.push_back(q);
+        }
+      }
+      for (std::size_t m = 0; m < queue.size() && !reached[k]; ++m)
+      {
+        const std::size_t p = queue[m];
+        for (std::size_t q = 0; q < points.size(); ++q)
+        {
+          if (!reached[q] && nearest[q] > gap - 0.1 &&
+            std::hypot(points[q].x - points[p].x, points[q].y - points[p].y) <= gap)
+          {
+            reached[q] = 1;
+            queue.push_back(q);
+          }
+        }
+      }
+      EXPECT_TRUE(reached[k]) << where << ": no chain of far points from its end";
+    }
+  }
+  EXPECT_GT(reassigned, 20) << "hardly a point reassigned: the test checks little";
 }
 
 TEST(PointPartition, NoContourLeavesEveryPointUnassigned)
