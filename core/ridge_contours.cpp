@@ -784,12 +784,12 @@ RidgeContours TraceRidgeContours(const std::vector<std::uint8_t>& minor,
   if (!(settings.MinimumLength >= 0.0) || !std::isfinite(settings.MinimumLength))
   {
     throw InputError("minimum contour length " + NumberText(settings.MinimumLength) +
-      " is not a non-negative number");
+      " is not a finite non-negative number");
   }
   if (!(settings.MinimumLoopLength >= 0.0) || !std::isfinite(settings.MinimumLoopLength))
   {
     throw InputError("minimum loop length " + NumberText(settings.MinimumLoopLength) +
-      " is not a non-negative number");
+      " is not a finite non-negative number");
   }
   if (settings.TangentPixels < 1)
   {

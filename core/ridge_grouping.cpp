@@ -422,7 +422,7 @@ RidgeGrouping::RidgeGrouping(const RidgeGroupingSettings& settings)
   if (!(settings.MinimumContourLength >= 0.0) || !std::isfinite(settings.MinimumContourLength))
   {
     throw InputError("minimum contour length " + NumberText(settings.MinimumContourLength) +
-      " is not a non-negative number");
+      " is not a finite non-negative number");
   }
   if (settings.ImageSize < 0)
   {

@@ -665,6 +665,34 @@ tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
   return ChooseForwardParameters(self, lonlat);
 }
 
+/// Warns where every point of an inverse's input lies within the ranges of longitude and latitude
+/// (|x| <= 360, |y| <= 90): degrees, most likely, not metres of a plane (lon/lat given with
+/// ParametersFromData off came back as places within metres of the projection's origin without a
+/// word). A plane's own data so near its origin is rare.
+void WarnOfDegreesGivenToTheInverse(vtkGeographicProjection* self, const std::vector<Piece>& pieces)
+{
+  std::size_t count = 0;
+  for (const Piece& piece : pieces)
+  {
+    for (const tessera::Point2& p : ReadXY(piece.Input->GetPoints()))
+    {
+      if (!tessera::InLonLatRange(p))
+      {
+        return;
+      }
+      ++count;
+    }
+  }
+  if (count > 0)
+  {
+    vtkWarningWithObjectMacro(self,
+      << "Inverse: all " << count
+      << " input point(s) lie within longitude and latitude ranges (|x| <= 360, |y| <= 90): "
+         "if they are degrees, turn Inverse off; the inverse takes metres of the projection's "
+         "plane, and these come back within metres of its origin");
+  }
+}
+
 /// The places (lon/lat) of the points of each piece of an inverse's input; throws InputError
 /// naming a point that has none. Computed once: the densifier counts an edge's pieces from its
 /// ends' places, and they are the output's first points.
@@ -873,6 +901,10 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
       const tessera::ProjectionParameters parameters = ChooseParameters(this, input, pieces);
       projection.reset(new tessera::GeographicProjection(parameters));
       record = this->Inverse ? std::string() : parameters.ToString();
+    }
+    if (this->Inverse && projection)
+    {
+      WarnOfDegreesGivenToTheInverse(this, pieces);
     }
     const std::vector<std::vector<tessera::Point2>> places = this->Inverse && projection
       ? InversePlaces(pieces, *projection)

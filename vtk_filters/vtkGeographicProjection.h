@@ -237,7 +237,8 @@ public:
    * are, with those set. A file in feet is scaled to metres first (ParaView's Transform). With a
    * record on the input, settings that describe another projection (a UTM zone, a Projection
    * other than the record's, ParametersFromData off, a grid) are not used, and a warning names
-   * them beside the record.
+   * them beside the record. An input whose points all lie within longitude and latitude ranges
+   * (|x| <= 360, |y| <= 90) gets a warning: degrees, most likely, where metres are taken.
    */
   vtkSetMacro(Inverse, bool);
   vtkGetMacro(Inverse, bool);

@@ -291,12 +291,17 @@ public:
     {
       return std::nullopt;
     }
-    const double year = this->Finite(row, time);
-    if (year != std::floor(year))
+    const std::optional<double> number = time.Number();
+    const double year = number.value_or(std::nan(""));
+    // (a date column given as the time with a month column was "not a finite number", and a
+    // year-month number such as 200001 was taken for the year 200001 without a word)
+    if (!(std::fabs(year) <= 9999.0) || year != std::floor(year))
     {
       ThrowRowError(row,
         "the year '" + this->Times.Text(row) + "' in column '" + this->TimeColumn +
-          "' is not a whole number (with the month in column '" + this->MonthColumn + "')");
+          "' is not a whole number of -9999 .. 9999: with a MonthColumn ('" + this->MonthColumn +
+          "'), TimeColumn names a column of years such as 1963 (clear MonthColumn for dates such "
+          "as 1963-08 or times as numbers)");
     }
     const double month = monthCell.Number().value_or(0.0);
     if (!(month >= 1.0 && month <= 12.0 && month == std::floor(month)))

@@ -756,6 +756,27 @@ def test_a_longitude_beyond_360_is_refused_whatever_gives_the_projection():
                     and out.GetNumberOfPoints() == 0, f"{errors}")
 
 
+def test_degrees_given_to_the_inverse_are_warned_of():
+    """The inverse takes metres of the plane: lon/lat given to it with ParametersFromData off came
+    back as places within metres of the projection's origin without a word. Points all within the
+    lon/lat ranges now give a warning; the same places in metres give none."""
+    gauges = make_points([(-105.0, 39.0), (-104.0, 39.5), (-108.0, 37.0)])
+
+    def inverse(f):
+        f.InverseOn()
+        f.ParametersFromDataOff()
+        f.SetCentralLongitude(-105.0)
+        f.SetCentralLatitude(39.0)
+
+    out, warnings, errors = project(gauges, inverse)
+    assert_that(not errors and len(warnings) == 1 and "all 3 input point(s) lie within longitude and latitude ranges"
+                in warnings[0] and "turn Inverse off" in warnings[0], f"{warnings} {errors}")
+    projected, _, _ = project(gauges, lambda f: (f.ParametersFromDataOff(), f.SetCentralLongitude(-105.0),
+                                                 f.SetCentralLatitude(39.0)))
+    back, warnings, errors = project(projected, inverse)
+    assert_that(not warnings and not errors and abs(back.GetPoint(2)[0] + 108.0) < 1e-9, f"{warnings} {errors}")
+
+
 if __name__ == "__main__":
     run([test_round_trip_of_the_colorado_gauges,
          test_azimuthal_equidistant_keeps_distances_from_the_centre,
@@ -777,4 +798,5 @@ if __name__ == "__main__":
          test_the_inverse_cuts_plane_edges_so_that_lonlat_keeps_their_shape,
          test_the_inverse_gives_longitudes_a_reader_takes_back,
          test_data_round_the_globe_warn_that_the_projection_cuts_them,
-         test_a_longitude_beyond_360_is_refused_whatever_gives_the_projection])
+         test_a_longitude_beyond_360_is_refused_whatever_gives_the_projection,
+         test_degrees_given_to_the_inverse_are_warned_of])

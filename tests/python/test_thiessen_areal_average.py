@@ -1511,24 +1511,35 @@ def test_review_cases_of_times_values_and_time_aware_gauges():
     assert_that(len(messages) == 1 and "'mid-1963' in column 'date' is not a date" in messages[0]
                 and "or a finite number" in messages[0], f"(1) neither a date nor a number: {messages}")
 
-    table = vtkTable()
-    for name, values in (("station_id", ["a", "b"]), ("year", ["1963.5", "1963"]), ("month", ["8", "8"]),
-                         ("value", ["1", "2"])):
-        column = vtkStringArray()
-        column.SetName(name)
-        for v in values:
-            column.InsertNextValue(v)
-        table.AddColumn(column)
-    f = vtkThiessenArealAverage()
-    messages = messages_of(f)
-    f.SetGaugesData(gauges_polydata(coords, ["a", "b"]))
-    f.SetCatchmentData(square)
-    f.SetObservationsData(table)
-    f.SetTimeColumn("year")
-    f.SetMonthColumn("month")
-    f.Update(1)
-    assert_that(len(messages) == 1 and "the year '1963.5' in column 'year' is not a whole number" in messages[0],
-                f"(2) a fractional year with a month: {messages}")
+    def run_with_month(years):
+        table = vtkTable()
+        for name, values in (("station_id", ["a", "b"]), ("year", years), ("month", ["8", "8"]),
+                             ("value", ["1", "2"])):
+            column = vtkStringArray()
+            column.SetName(name)
+            for v in values:
+                column.InsertNextValue(v)
+            table.AddColumn(column)
+        f = vtkThiessenArealAverage()
+        messages = messages_of(f)
+        f.SetGaugesData(gauges_polydata(coords, ["a", "b"]))
+        f.SetCatchmentData(square)
+        f.SetObservationsData(table)
+        f.SetTimeColumn("year")
+        f.SetMonthColumn("month")
+        f.Update(1)
+        return f, messages
+
+    # (a date, or a year and month as one number, given as the year was "not a finite number", or
+    # taken for the year 200001)
+    for years, bad in ((["1963.5", "1963"], "1963.5"), (["2000-01", "2000-01"], "2000-01"),
+                       (["200001", "200001"], "200001")):
+        f, messages = run_with_month(years)
+        assert_that(len(messages) == 1 and f"the year '{bad}' in column 'year' is not a whole number of -9999 .. 9999"
+                    in messages[0] and "TimeColumn names a column of years" in messages[0],
+                    f"(2) {bad} as a year with a month: {messages}")
+    f, messages = run_with_month(["1963", "1963"])
+    assert_that(not messages and summary_column(f, "ArealMean") == [1.5], f"(2) a year: {messages}")
 
     f, messages = run_table([("a", "2000-01", "0x10"), ("b", "2000-01", "2")])
     assert_that(len(messages) == 1 and "'0x10'" in messages[0] and "not a number" in messages[0],
