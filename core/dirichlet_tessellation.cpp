@@ -639,7 +639,7 @@ DirichletTessellation::Location DirichletTessellation::InsertInRegion(Region& re
   std::int32_t id,
   std::int32_t& edge)
 {
-  const Location location = this->Locate(region, this->Coordinates[id], edge);
+  const Location location = this->Locate(region, this->Coordinates[id], edge, &region.LastWalk);
   switch (location)
   {
     case Location::OnVertex:
@@ -669,14 +669,16 @@ bool DirichletTessellation::IsGhostTriangle(std::int32_t t) const
     this->Origins[3 * t + 2] == Ghost;
 }
 
-// Visibility walk from the region's last triangle created: cross any edge that has p strictly on
+// Visibility walk from the region's last triangle (made last, or where a hint or a jump put it: see
+// InsertKnownPoint): cross any edge that has p strictly on
 // its far side. In a Delaunay triangulation this walk cannot cycle. Reaching a ghost triangle means
 // p is strictly outside the hull edge just crossed. The walk stays in triangles the region owns:
 // it enters a triangle across an edge it owns, so only the apex needs checking, and it reads no
 // other triangle (in a two-region build another thread may be writing those).
 DirichletTessellation::Location DirichletTessellation::Locate(const Region& region,
   const Point2& p,
-  std::int32_t& edge) const
+  std::int32_t& edge,
+  std::int64_t* walked) const
 {
   const Point2* const pts = this->Coordinates.data();
   const std::int32_t* const org = this->Origins.data();
@@ -736,12 +738,19 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Region& regi
   // and the edge to cross is selected without a branch on the (unpredictable) side signs; only
   // the end of the walk is a branch.
   std::int64_t steps = 0;
-  const struct KeepWalkLength // (one store at whichever return ends the walk)
+  // (an insertion keeps its walk's length, at whichever return ends it; a query, const, does not)
+  const struct KeepWalkLength
   {
     const std::int64_t& Steps;
-    std::int64_t& Kept;
-    ~KeepWalkLength() { this->Kept = this->Steps; }
-  } keep{ steps, region.LastWalk };
+    std::int64_t* Kept;
+    ~KeepWalkLength()
+    {
+      if (this->Kept)
+      {
+        *this->Kept = this->Steps;
+      }
+    }
+  } keep{ steps, walked };
   while (crossed >= 0)
   {
     const std::int32_t f = twin[crossed];

@@ -220,8 +220,9 @@ private:
     /// A walk longer than this gives up (Foreign): a safety net where the triangulation outside
     /// the region is not yet Delaunay.
     std::int64_t MaxWalk = std::numeric_limits<std::int64_t>::max();
-    /// Steps of the last walk (Locate): a streaming insertion after a long one jumps first.
-    mutable std::int64_t LastWalk = 0;
+    /// Steps of the last insertion's walk (Locate): a streaming insertion after a long one jumps
+    /// first.
+    std::int64_t LastWalk = 0;
     std::vector<std::int32_t> FlipStack;
     std::vector<std::int32_t> Deferred; ///< points left for the serial insertion
     std::size_t Inserted = 0;
@@ -256,7 +257,11 @@ private:
   void LeaveCollinearPhase(std::int32_t id);
   void InsertIntoTriangulation(std::int32_t id);
   Location InsertInRegion(Region& region, std::int32_t id, std::int32_t& edge);
-  Location Locate(const Region& region, const Point2& p, std::int32_t& edge) const;
+  /// walked: where an insertion keeps the walk's length (steps), for JumpTowards.
+  Location Locate(const Region& region,
+    const Point2& p,
+    std::int32_t& edge,
+    std::int64_t* walked = nullptr) const;
   void SplitTriangle(Region& region, std::int32_t t, std::int32_t p);
   void SplitEdge(Region& region, std::int32_t e, std::int32_t p);
   int EdgeTest(std::int32_t x, std::int32_t y, std::int32_t p, std::int32_t q) const;

@@ -821,12 +821,6 @@ Point2 GeographicProjection::InverseOfImage(const Point2& grid, long long id) co
       ProjectionKindName(Params.Kind) + " projection");
   }
   lonlat.x = lon0 + LongitudeDifference(lon0, lonlat.x);
-  // A meridian set beyond 180 (lon0 = 300 by hand) put places east of it beyond 360 degrees,
-  // which every reader of longitudes, this one included, refuses: those come back a turn west.
-  if (std::abs(lonlat.x) > 360.0)
-  {
-    lonlat.x -= std::copysign(360.0, lonlat.x);
-  }
   return lonlat;
 }
 
@@ -836,7 +830,11 @@ bool EdgeReadsBothWays(const Point2& a, const Point2& b)
   return written >= 180.0 && written <= 270.0;
 }
 
-int DensifiedPieceCount(const Point2& a, const Point2& b, double maxStep, bool* capped)
+int DensifiedPieceCount(const Point2& a,
+  const Point2& b,
+  double maxStep,
+  bool* capped,
+  bool asWritten)
 {
   if (capped)
   {
@@ -846,7 +844,7 @@ int DensifiedPieceCount(const Point2& a, const Point2& b, double maxStep, bool* 
   {
     return 1;
   }
-  const double dx = LongitudeDifference(a.x, b.x);
+  const double dx = asWritten ? b.x - a.x : LongitudeDifference(a.x, b.x);
   const double dy = b.y - a.y;
   const double pieces = std::ceil(std::hypot(dx, dy) / maxStep);
   if (capped)

@@ -161,7 +161,9 @@ public:
   /// than 500 km from its zone's meridian, or any point whose projected coordinate exceeds 1e8 m: a
   /// singularity such as the Lambert cone's far pole).
   Point2 Forward(const Point2& lonlat, long long id = -1) const;
-  /// x/y (metres) to lon/lat; longitude within 180 degrees of the central meridian. Throws
+  /// x/y (metres) to lon/lat; longitude within 180 degrees of the central meridian (beyond 360
+  /// east of a meridian beyond 180: vtkGeographicProjection moves such a data set a turn west,
+  /// whole, and an automatic meridian keeps the data's own longitudes within 360). Throws
   /// InputError naming `id` and the value for a point no place projects to (one whose place would
   /// not project back to it: an Albers point past the pole's arc, a transverse Mercator point
   /// beyond 45 degrees of the central meridian).
@@ -192,7 +194,14 @@ constexpr int MaxDensifiedPieces = 1000000;
 /// into so that no piece is longer than maxStep degrees (in the lon/lat plane). maxStep <= 0 or
 /// non-finite means no densification (1 piece).
 /// With capped, also says whether the count was cut down to MaxDensifiedPieces.
-int DensifiedPieceCount(const Point2& a, const Point2& b, double maxStep, bool* capped = nullptr);
+/// With asWritten, the longitudes' difference is taken as written, not the shorter way round: for
+/// places that are continuous as written, as an inverse's are about its meridian (a plane edge
+/// whose ends come back 240 degrees apart spans 240, not 120).
+int DensifiedPieceCount(const Point2& a,
+  const Point2& b,
+  double maxStep,
+  bool* capped = nullptr,
+  bool asWritten = false);
 /// Whether the edge from a to b (lon/lat) can be read two ways round the globe: its longitudes
 /// differ by 180 to 270 degrees as written, so straight in lon/lat (RFC 7946) it spans that much,
 /// and the shorter way round (DensifiedPieceCount, InterpolateLonLat) 90 to 180 degrees the other

@@ -943,8 +943,10 @@ double CornerRoundingOfTiles(const Window& window)
     const Point2& b = corners[(k + 1) % corners.size()];
     perimeter += std::hypot(b.x - a.x, b.y - a.y);
   }
+  // (four ulps: a crossing of a slanted side is computed, t = -h(m) / h(d) then m + t d, and may
+  // lie some two ulps off it, not only the half ulp of a correctly rounded corner)
   const double reach = window.Reach();
-  return perimeter * (std::nextafter(reach, HUGE_VAL) - reach);
+  return 4.0 * perimeter * (std::nextafter(reach, HUGE_VAL) - reach);
 }
 
 namespace

@@ -138,9 +138,10 @@ std::vector<std::int32_t> CollapsedTilePoints(const TileMesh& tiles);
 void CheckTilesFillWindow(const TileMesh& tiles, double windowArea, double cornerRounding = 0.0);
 
 /// How far the tiles' areas can add up from the window's exact area because their corners are
-/// rounded to doubles: a corner on a slanted side moves off it by up to an ulp of the coordinates,
-/// and the tiles' outer boundary, which is what their areas add up to (inner corners are shared),
-/// by up to the window's perimeter times that ulp. Negligible unless the window is small beside
+/// rounded to doubles: a corner on a slanted side lies off it by some ulps of the coordinates (a
+/// computed crossing, not a correctly rounded one), and the tiles' outer boundary, which is what
+/// their areas add up to (inner corners are shared), moves by up to the window's perimeter times
+/// that: an estimate, four ulps. Negligible unless the window is small beside
 /// its distance from the origin: a triangle 2^-40 wide at 0.5 sums 8e-6 off (a rectangle's sides
 /// hold their rounded corners exactly).
 double CornerRoundingOfTiles(const Window& window);

@@ -193,7 +193,7 @@ private:
     const tessera::Point2 ends[2] = { { pa[0], pa[1] }, { pb[0], pb[1] } };
     const int pieces = this->Places
       ? tessera::DensifiedPieceCount(
-          (*this->Places)[a], (*this->Places)[b], this->MaxStep * InverseStepSlack, &capped)
+          (*this->Places)[a], (*this->Places)[b], this->MaxStep * InverseStepSlack, &capped, true)
       : tessera::DensifiedPieceCount(ends[0], ends[1], this->MaxStep, &capped);
     this->Report.Capped += capped ? 1 : 0;
     if (!this->Places && tessera::EdgeReadsBothWays(ends[0], ends[1]) &&
@@ -506,8 +506,9 @@ void CheckAddedPoints(const std::vector<Piece>& pieces,
           }
           if (!places.empty())
           {
-            added +=
-              tessera::DensifiedPieceCount(places[p][a], places[p][b], step * InverseStepSlack) - 1;
+            added += tessera::DensifiedPieceCount(
+                       places[p][a], places[p][b], step * InverseStepSlack, nullptr, true) -
+              1;
             continue;
           }
           double pa[3], pb[3];
@@ -674,11 +675,14 @@ void WarnOfDegreesGivenToTheInverse(vtkGeographicProjection* self, const std::ve
   std::size_t count = 0;
   for (const Piece& piece : pieces)
   {
-    for (const tessera::Point2& p : ReadXY(piece.Input->GetPoints()))
+    vtkPoints* points = piece.Input->GetPoints();
+    for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
     {
-      if (!tessera::InLonLatRange(p))
+      double p[3];
+      points->GetPoint(i, p);
+      if (!tessera::InLonLatRange({ p[0], p[1] }))
       {
-        return;
+        return; // (at the first point in metres: a plane's data pays for one point)
       }
       ++count;
     }
@@ -693,35 +697,84 @@ void WarnOfDegreesGivenToTheInverse(vtkGeographicProjection* self, const std::ve
   }
 }
 
-/// The places (lon/lat) of the points of each piece of an inverse's input; throws InputError
-/// naming a point that has none. Computed once: the densifier counts an edge's pieces from its
-/// ends' places, and they are the output's first points.
-std::vector<std::vector<tessera::Point2>> InversePlaces(const std::vector<Piece>& pieces,
+/// The places (lon/lat) of an inverse's input points, per piece, and the turn (0 or -360 or 360
+/// degrees) added to every longitude of the output.
+struct InversePlaces
+{
+  std::vector<std::vector<tessera::Point2>> Places;
+  double Turn = 0.0;
+};
+
+/// The places of the points of each piece of an inverse's input; throws InputError naming a point
+/// that has none. Computed once: the densifier counts an edge's pieces from its ends' places, and
+/// they are the output's first points. The inverse gives longitudes within 180 degrees of the
+/// meridian; east of one beyond 180 (lon0 = 300, set by hand) they go beyond 360, which every
+/// reader of longitudes refuses (this filter's forward included): the whole output then moves a
+/// turn west, so that it stays continuous (a point at a time, a polygon about 0 East came back
+/// from 355 to 5, an edge round the globe).
+InversePlaces PlacesOfInverse(const std::vector<Piece>& pieces,
   const tessera::GeographicProjection& projection)
 {
-  std::vector<std::vector<tessera::Point2>> places(pieces.size());
+  InversePlaces result;
+  result.Places.resize(pieces.size());
+  double west = HUGE_VAL, east = -HUGE_VAL;
   for (std::size_t p = 0; p < pieces.size(); ++p)
   {
+    std::vector<tessera::Point2>& places = result.Places[p];
     WithLabel(pieces[p],
       [&]()
       {
-        places[p] = ReadXY(pieces[p].Input->GetPoints());
-        for (std::size_t i = 0; i < places[p].size(); ++i)
+        places = ReadXY(pieces[p].Input->GetPoints());
+        for (std::size_t i = 0; i < places.size(); ++i)
         {
-          places[p][i] = projection.Inverse(places[p][i], static_cast<long long>(i));
+          places[i] = projection.Inverse(places[i], static_cast<long long>(i));
+          west = std::min(west, places[i].x);
+          east = std::max(east, places[i].x);
         }
       });
   }
-  return places;
+  result.Turn = east > 360.0 ? -360.0 : west < -360.0 ? 360.0 : 0.0;
+  for (std::vector<tessera::Point2>& places : result.Places)
+  {
+    for (tessera::Point2& place : places)
+    {
+      place.x += result.Turn;
+    }
+  }
+  return result;
+}
+
+/// The place of point i, cut on a plane edge by the inverse's densifying, a turn added: an error
+/// names it as such (a chord across a conic's hole about its pole leaves the projection's domain,
+/// and the error named a point the input does not have).
+tessera::Point2 InverseOfCutPoint(const tessera::GeographicProjection& projection,
+  const double p[3],
+  vtkIdType i,
+  double turn)
+{
+  try
+  {
+    tessera::Point2 place = projection.Inverse({ p[0], p[1] });
+    place.x += turn;
+    return place;
+  }
+  catch (const tessera::InputError& e)
+  {
+    throw tessera::InputError("point " + std::to_string(i) +
+      " of the output, made where an edge was cut (MaximumEdgeLength), has no place: " + e.what() +
+      "; MaximumEdgeLength 0 keeps the input's points only");
+  }
 }
 
 /// Projects one piece into its output, with the record (none when empty), adding to report.
-/// places: an inverse's, the lon/lat of the piece's points (InversePlaces), else empty.
+/// places: an inverse's, the lon/lat of the piece's points (PlacesOfInverse), else empty; turn:
+/// the inverse's, added to the longitudes of the points cut on its edges.
 void ProjectPiece(vtkGeographicProjection* self,
   const Piece& piece,
   const tessera::GeographicProjection* projection,
   const std::string& record,
   const std::vector<tessera::Point2>& places,
+  double turn,
   DensifyReport& report)
 {
   vtkPointSet* input = piece.Input;
@@ -757,7 +810,7 @@ void ProjectPiece(vtkGeographicProjection* self,
     source->GetPoint(i, p);
     const tessera::Point2 q = !self->GetInverse()   ? projection->Forward({ p[0], p[1] }, i)
       : static_cast<std::size_t>(i) < places.size() ? places[i]
-                                                    : projection->Inverse({ p[0], p[1] }, i);
+                                                    : InverseOfCutPoint(*projection, p, i, turn);
     projected->SetPoint(i, q.x, q.y, p[2]);
   }
   output->SetPoints(projected);
@@ -906,9 +959,9 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
     {
       WarnOfDegreesGivenToTheInverse(this, pieces);
     }
-    const std::vector<std::vector<tessera::Point2>> places = this->Inverse && projection
-      ? InversePlaces(pieces, *projection)
-      : std::vector<std::vector<tessera::Point2>>();
+    const InversePlaces inverse =
+      this->Inverse && projection ? PlacesOfInverse(pieces, *projection) : InversePlaces();
+    const std::vector<std::vector<tessera::Point2>>& places = inverse.Places;
     if (this->MaximumEdgeLength > 0.0)
     {
       CheckAddedPoints(pieces, this->MaximumEdgeLength, places);
@@ -925,6 +978,7 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
             projection.get(),
             record,
             places.empty() ? noPlaces : places[p],
+            inverse.Turn,
             report);
         });
     }

@@ -218,7 +218,9 @@ public:
   ///@{
   /**
    * Longest edge, in degrees of the lon/lat plane, left uncut before projecting (default 0.1);
-   * inverse, the longest (about) that a plane edge's pieces span in lon/lat after it.
+   * inverse, about the longest that a plane edge's pieces span in lon/lat after it (equal pieces
+   * in the plane, as many as the ends' places are MaximumEdgeLength apart: where the image bends
+   * strongly they span more, 1.6 times on an edge across 240 degrees of a cone).
    * 0: no densification (a negative or NaN length is an error). An edge is cut into at most
    * 10^6 pieces (a warning counts those), and a step that would add more than 10^7 points in all
    * is an error (a step given in metres, say), before any point is made.

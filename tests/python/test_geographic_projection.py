@@ -718,8 +718,38 @@ def test_the_inverse_gives_longitudes_a_reader_takes_back():
     there, _, _ = project(stations, lambda f: f.SetProjectionRecord(record))
     back, _, errors = project(there, lambda f: f.InverseOn())
     got = [back.GetPoint(i)[0] for i in range(len(lons))]
-    assert_that(not errors and all(abs(lon) <= 360.0 for lon in got)
+    assert_that(not errors and all(abs(lon) <= 360.0 for lon in got) and max(got) - min(got) < 360.0
                 and all(abs(math.remainder(g - lon, 360.0)) < 1e-9 for g, lon in zip(got, lons)), f"{errors} {got}")
+    # A line about 0 East under that meridian: the whole output moves a turn west, not the points
+    # beyond 360 alone (it came back from 355 to 5, an edge round the globe).
+    from vtkmodules.vtkCommonDataModel import vtkCellArray
+    line = make_points([(355.0, 5.0), (5.0, 5.0)])
+    cells = vtkCellArray()
+    cells.InsertNextCell(2, [0, 1])
+    line.SetLines(cells)
+    there, _, _ = project(line, lambda f: f.SetProjectionRecord(record))
+    back, _, errors = project(there, lambda f: f.InverseOn())
+    got = sorted(back.GetPoint(i)[0] for i in range(back.GetNumberOfPoints()))
+    assert_that(not errors and back.GetNumberOfPoints() > 90 and got[-1] - got[0] < 10.0 + 1e-6
+                and all(abs(lon) <= 360.0 for lon in got), f"{errors} {got[:2]} .. {got[-2:]}")
+
+
+def test_a_wide_plane_edge_is_cut_by_the_degrees_it_spans():
+    """A plane edge whose ends come back 240 degrees of longitude apart spans 240 (the inverse's
+    longitudes are continuous about its meridian), not the 120 of the shorter way round: it is cut
+    into 2400 pieces at 0.1 degree, not 1200."""
+    record = "projection=AlbersEqualArea lon0=0 lat0=30 lat1=20 lat2=40 zone=31 north=1"
+    ends, _, _ = project(make_points([(-120.0, -30.0), (120.0, -30.0)]), lambda f: f.SetProjectionRecord(record))
+    from vtkmodules.vtkCommonDataModel import vtkCellArray
+    cells = vtkCellArray()
+    cells.InsertNextCell(2, [0, 1])
+    ends.SetLines(cells)
+    back, _, errors = project(ends, lambda f: f.InverseOn())
+    ring = [p for p in cell_rings(back)[0]]
+    assert_that(not errors and len(ring) >= 2401, f"{errors}: {len(ring)} points")
+    longest = max(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in zip(ring, ring[1:]))
+    # (equal in the plane, the pieces span up to 1.6 times the step where the image bends most)
+    assert_that(longest <= 0.1 * 2.0, f"a piece spans {longest} degrees")
 
 
 def test_data_round_the_globe_warn_that_the_projection_cuts_them():
@@ -799,4 +829,5 @@ if __name__ == "__main__":
          test_the_inverse_gives_longitudes_a_reader_takes_back,
          test_data_round_the_globe_warn_that_the_projection_cuts_them,
          test_a_longitude_beyond_360_is_refused_whatever_gives_the_projection,
-         test_degrees_given_to_the_inverse_are_warned_of])
+         test_degrees_given_to_the_inverse_are_warned_of,
+         test_a_wide_plane_edge_is_cut_by_the_degrees_it_spans])
