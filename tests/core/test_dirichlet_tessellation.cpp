@@ -471,9 +471,9 @@ TEST(DirichletTessellation, ACollinearBatchWithCopiesEqualsStreaming)
   }
 }
 
-TEST(DirichletTessellation, StreamingEqualsBatch)
+/// Inserts points one by one into the unit window and expects the batch build's result.
+void ExpectStreamingEqualsBatch(const std::vector<Point2>& points)
 {
-  const std::vector<Point2> points = UniformPoints(150, 11);
   Tess batch(UnitWindow(), points);
   Tess streaming(UnitWindow());
   for (const Point2& p : points)
@@ -482,6 +482,11 @@ TEST(DirichletTessellation, StreamingEqualsBatch)
   }
   CheckStructure(streaming);
   EXPECT_TRUE(MakeCanonical(batch) == MakeCanonical(streaming));
+}
+
+TEST(DirichletTessellation, StreamingEqualsBatch)
+{
+  ExpectStreamingEqualsBatch(UniformPoints(150, 11));
 }
 
 // Streams whose walks run long jump (JumpTowards): points in random order, then points in
@@ -504,14 +509,7 @@ TEST(DirichletTessellation, StreamingWithJumpsEqualsBatch)
       points.push_back({ (k + 0.5 * (row % 2)) / 40.0, (row + 0.25) / 40.0 });
     }
   }
-  Tess batch(UnitWindow(), points);
-  Tess streaming(UnitWindow());
-  for (const Point2& p : points)
-  {
-    streaming.Insert(p);
-  }
-  CheckStructure(streaming);
-  EXPECT_TRUE(MakeCanonical(batch) == MakeCanonical(streaming));
+  ExpectStreamingEqualsBatch(points);
 }
 
 // A streamed point with a NaN or infinite coordinate is refused, named by the id it would have
