@@ -330,12 +330,15 @@ std::vector<std::uint8_t> FollowChainsPastEnds(const std::vector<Point2>& points
     return Point2{ double(pixel % width), double(pixel / width) };
   };
   std::vector<std::uint8_t> far(points.size(), 0);
-  bool anyFar = false;
+  std::vector<std::size_t> farPoints;
   for (std::size_t k = 0; k < points.size(); ++k)
   {
     const Point2 nearest = pixelPoint(result.Projection[k]);
     far[k] = std::hypot(points[k].x - nearest.x, points[k].y - nearest.y) > maximumGap;
-    anyFar = anyFar || far[k];
+    if (far[k])
+    {
+      farPoints.push_back(k);
+    }
   }
   // Ends: 2c (first pixel) and 2c + 1 (last pixel) of each open contour of two pixels or more.
   const auto endPosition = [&](int end)
@@ -349,17 +352,9 @@ std::vector<std::uint8_t> FollowChainsPastEnds(const std::vector<Point2>& points
       ends.push_back(2 * c + 1);
     }
   }
-  if (!anyFar || ends.empty())
+  if (farPoints.empty() || ends.empty())
   {
     return chained;
-  }
-  std::vector<std::size_t> farPoints;
-  for (std::size_t k = 0; k < points.size(); ++k)
-  {
-    if (far[k])
-    {
-      farPoints.push_back(k);
-    }
   }
   FarPointTree tree(points, std::move(farPoints));
   std::vector<int> endOf(points.size(), -1);
@@ -395,12 +390,12 @@ std::vector<std::uint8_t> FollowChainsPastEnds(const std::vector<Point2>& points
     const int end = place < 0 ? int(-1 - place) : endOf[std::size_t(place)];
     const int contour = end / 2;
     const int position = endPosition(end);
-    const Point2 from = place < 0 ? pixelPoint(position) : points[std::size_t(place)];
+    const Point2 endPixel = pixelPoint(position);
+    const Point2 from = place < 0 ? endPixel : points[std::size_t(place)];
     if (place >= 0 && far[std::size_t(place)])
     {
       order.push_back(std::size_t(place));
     }
-    const Point2 endPixel = pixelPoint(position);
     const int inner = EndTangentPixel(contours, contour, position);
     const Point2 tangent{ endPixel.x - inner % width, endPixel.y - inner / width };
     taken.clear();
@@ -423,21 +418,19 @@ std::vector<std::uint8_t> FollowChainsPastEnds(const std::vector<Point2>& points
         { distance + std::hypot(points[q].x - from.x, points[q].y - from.y), std::ptrdiff_t(q) });
     }
   }
-  // In settling order a chain's earlier points come first; near points that started a chain keep
-  // their own distance beyond the end.
-  std::vector<double> chainBeyond = result.Beyond;
+  // In settling order a chain's earlier points come first, so a parent's Beyond is its chain's
+  // when its children read it; near points that started a chain keep their own distance.
   for (const std::size_t k : order)
   {
     const int end = endOf[k];
     const int contour = end / 2;
     const int position = endPosition(end);
     const double own = DistanceBeyondEnd(points[k], contours, contour, position, width);
-    const double before = parent[k] < 0 ? 0.0 : chainBeyond[std::size_t(parent[k])];
-    chainBeyond[k] = std::max(own, before);
+    const double before = parent[k] < 0 ? 0.0 : result.Beyond[std::size_t(parent[k])];
     result.GroupId[k] = contour;
     result.Projection[k] = position;
-    result.Beyond[k] = chainBeyond[k];
-    result.Continues[k] = own >= chainBeyond[k] - maximumGap;
+    result.Beyond[k] = std::max(own, before);
+    result.Continues[k] = own >= result.Beyond[k] - maximumGap;
     chained[k] = 1;
   }
   return chained;

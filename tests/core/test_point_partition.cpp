@@ -319,6 +319,15 @@ std::vector<std::pair<int, int>> Row(int j, int from, int to)
   return pixels;
 }
 
+// Appends points (x, y) for x = from, from + step, ... up to to.
+void AppendRowOfPoints(std::vector<Point2>& points, double y, double from, double to, double step)
+{
+  for (double x = from; x <= to; x += step)
+  {
+    points.push_back({ x, y });
+  }
+}
+
 // The distance from p to the nearest pixel of any contour, and that pixel's contour (brute force).
 std::pair<double, int> NearestContour(const Point2& p,
   const tessera::RidgeContours& contours,
@@ -351,10 +360,7 @@ TEST(PointPartition, AChainPastAnEndContinuesItsContourNotTheNearestOne)
   const tessera::RidgeContours contours = OpenContours({ Row(10, 5, 110), Row(20, 5, 50) }, width);
   const double gap = 4.0;
   std::vector<Point2> points;
-  for (double x = 5.0; x <= 110.0; x += 1.5)
-  {
-    points.push_back({ x, 10.3 });
-  }
+  AppendRowOfPoints(points, 10.3, 5.0, 110.0, 1.5);
   const std::size_t firstUpper = points.size();
   for (double x = 5.0; x <= 90.0; x += 1.5)
   {
@@ -409,16 +415,10 @@ TEST(PointPartition, FarPointsBesideAContourAreNotTakenToItsEnd)
   const tessera::RidgeContours contours = OpenContours({ Row(20, 5, 50) }, width);
   const double gap = 4.0;
   std::vector<Point2> points;
-  for (double x = 5.0; x <= 70.0; x += 1.5)
-  {
-    points.push_back({ x, 20.0 });
-  }
+  AppendRowOfPoints(points, 20.0, 5.0, 70.0, 1.5);
   points.push_back({ 56.0, 22.5 }); // from the chain past the end to the row beside
   const std::size_t firstBeside = points.size();
-  for (double x = 20.0; x <= 56.0; x += 2.0)
-  {
-    points.push_back({ x, 24.5 });
-  }
+  AppendRowOfPoints(points, 24.5, 20.0, 56.0, 2.0);
   const tessera::PointPartition partition =
     tessera::PartitionPoints(points, contours, width, height, gap);
   for (std::size_t k = firstBeside; k < points.size(); ++k)
@@ -487,10 +487,7 @@ TEST(PointPartition, NodesDoNotRunBackAlongAChainThatTurnsBack)
   const tessera::RidgeContours contours = OpenContours({ Row(20, 10, 30) }, width);
   const double gap = 4.0;
   std::vector<Point2> points;
-  for (double x = 10.0; x <= 40.0; x += 1.0)
-  {
-    points.push_back({ x, 20.0 });
-  }
+  AppendRowOfPoints(points, 20.0, 10.0, 40.0, 1.0);
   const std::size_t turn = points.size() - 1;
   std::vector<double> own; // distance beyond the end along +x, per point after the turn
   int backwards = 0;       // points after the turn not continuing
