@@ -72,6 +72,27 @@ struct DensifyReport
 /// for the rounding of its ends.
 constexpr double InverseStepSlack = 1.0 + 1e-9;
 
+/// The pieces edge a-b of poly is cut into (EdgeDensifier; CheckAddedPoints counts them first): a
+/// forward's by its lon/lat ends, the shorter way round; an inverse's by its ends' places as
+/// written (places: the lon/lat of poly's points, null for a forward).
+int PiecesOfEdge(vtkPolyData* poly,
+  vtkIdType a,
+  vtkIdType b,
+  const std::vector<tessera::Point2>* places,
+  double maxStep,
+  bool* capped = nullptr)
+{
+  if (places)
+  {
+    return tessera::DensifiedPieceCount(
+      (*places)[a], (*places)[b], maxStep * InverseStepSlack, capped, true);
+  }
+  double pa[3], pb[3];
+  poly->GetPoint(a, pa);
+  poly->GetPoint(b, pb);
+  return tessera::DensifiedPieceCount({ pa[0], pa[1] }, { pb[0], pb[1] }, maxStep, capped);
+}
+
 /// Cuts the line and polygon edges of poly data so that no piece is longer than maxStep degrees
 /// of longitude and latitude. A forward's input is in lon/lat, its edges straight there (RFC 7946),
 /// and cut there. An inverse's is in the plane, its edges straight there: each is cut straight,
@@ -191,10 +212,7 @@ private:
     this->Input->GetPoint(b, pb);
     bool capped = false;
     const tessera::Point2 ends[2] = { { pa[0], pa[1] }, { pb[0], pb[1] } };
-    const int pieces = this->Places
-      ? tessera::DensifiedPieceCount(
-          (*this->Places)[a], (*this->Places)[b], this->MaxStep * InverseStepSlack, &capped, true)
-      : tessera::DensifiedPieceCount(ends[0], ends[1], this->MaxStep, &capped);
+    const int pieces = PiecesOfEdge(this->Input, a, b, this->Places, this->MaxStep, &capped);
     this->Report.Capped += capped ? 1 : 0;
     if (!this->Places && tessera::EdgeReadsBothWays(ends[0], ends[1]) &&
       this->Report.Wrapped++ == 0)
@@ -504,17 +522,7 @@ void CheckAddedPoints(const std::vector<Piece>& pieces,
           {
             continue;
           }
-          if (!places.empty())
-          {
-            added += tessera::DensifiedPieceCount(
-                       places[p][a], places[p][b], step * InverseStepSlack, nullptr, true) -
-              1;
-            continue;
-          }
-          double pa[3], pb[3];
-          poly->GetPoint(a, pa);
-          poly->GetPoint(b, pb);
-          added += tessera::DensifiedPieceCount({ pa[0], pa[1] }, { pb[0], pb[1] }, step) - 1;
+          added += PiecesOfEdge(poly, a, b, places.empty() ? nullptr : &places[p], step) - 1;
         }
       }
     }
@@ -588,6 +596,26 @@ std::vector<Piece> PiecesOf(vtkDataObject* input, vtkDataObject* output)
   return pieces;
 }
 
+/// The points of all the pieces, each piece's validated as lon/lat (InputError with its label).
+std::vector<tessera::Point2> ValidLonLatOf(const std::vector<Piece>& pieces)
+{
+  std::vector<tessera::Point2> lonlat;
+  for (const Piece& piece : pieces)
+  {
+    std::vector<tessera::Point2> own = ReadXY(piece.Input->GetPoints());
+    WithLabel(piece, [&own]() { tessera::ValidateLonLat(own); });
+    if (lonlat.empty())
+    {
+      lonlat = std::move(own); // (a lone data set's points, not copied again)
+    }
+    else
+    {
+      lonlat.insert(lonlat.end(), own.begin(), own.end());
+    }
+  }
+  return lonlat;
+}
+
 /// The projection for all pieces: the filter's ProjectionRecord when set; else the inverse's from
 /// the input's record (the whole's, or the one its blocks share), else from the settings and all
 /// the pieces' points together.
@@ -595,15 +623,11 @@ tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
   vtkDataObject* input,
   const std::vector<Piece>& pieces)
 {
-  if (!self->GetInverse())
-  {
-    // Whatever gives the projection (a longitude of 1000 was wrapped to 280 without a word when
-    // a ProjectionRecord was set, and refused otherwise).
-    for (const Piece& piece : pieces)
-    {
-      WithLabel(piece, [&piece]() { tessera::ValidateLonLat(ReadXY(piece.Input->GetPoints())); });
-    }
-  }
+  // A forward's points are validated whatever gives the projection (a longitude of 1000 was
+  // wrapped to 280 without a word when a ProjectionRecord was set, and refused otherwise), and
+  // fitted to below when nothing else gives it. An inverse fits nothing to its points.
+  const std::vector<tessera::Point2> lonlat =
+    self->GetInverse() ? std::vector<tessera::Point2>() : ValidLonLatOf(pieces);
   const std::string own = self->GetProjectionRecord();
   if (!own.empty())
   {
@@ -650,51 +674,7 @@ tessera::ProjectionParameters ChooseParameters(vtkGeographicProjection* self,
                                 "projection's parameters set");
     }
   }
-  std::vector<tessera::Point2> lonlat;
-  for (const Piece& piece : pieces)
-  {
-    std::vector<tessera::Point2> own = ReadXY(piece.Input->GetPoints());
-    if (lonlat.empty())
-    {
-      lonlat = std::move(own); // (a lone data set's points, not copied again)
-    }
-    else
-    {
-      lonlat.insert(lonlat.end(), own.begin(), own.end());
-    }
-  }
   return ChooseForwardParameters(self, lonlat);
-}
-
-/// Warns where every point of an inverse's input lies within the ranges of longitude and latitude
-/// (|x| <= 360, |y| <= 90): degrees, most likely, not metres of a plane (lon/lat given with
-/// ParametersFromData off came back as places within metres of the projection's origin without a
-/// word). A plane's own data so near its origin is rare.
-void WarnOfDegreesGivenToTheInverse(vtkGeographicProjection* self, const std::vector<Piece>& pieces)
-{
-  std::size_t count = 0;
-  for (const Piece& piece : pieces)
-  {
-    vtkPoints* points = piece.Input->GetPoints();
-    for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i)
-    {
-      double p[3];
-      points->GetPoint(i, p);
-      if (!tessera::InLonLatRange({ p[0], p[1] }))
-      {
-        return; // (at the first point in metres: a plane's data pays for one point)
-      }
-      ++count;
-    }
-  }
-  if (count > 0)
-  {
-    vtkWarningWithObjectMacro(self,
-      << "Inverse: all " << count
-      << " input point(s) lie within longitude and latitude ranges (|x| <= 360, |y| <= 90): "
-         "if they are degrees, turn Inverse off; the inverse takes metres of the projection's "
-         "plane, and these come back within metres of its origin");
-  }
 }
 
 /// The places (lon/lat) of an inverse's input points, per piece, and the turn (0 or -360 or 360
@@ -703,6 +683,8 @@ struct InversePlaces
 {
   std::vector<std::vector<tessera::Point2>> Places;
   double Turn = 0.0;
+  std::size_t Count = 0;        ///< input points
+  bool AllInLonLatRange = true; ///< whether every input point lies within lon/lat ranges
 };
 
 /// The places of the points of each piece of an inverse's input; throws InputError naming a point
@@ -725,8 +707,10 @@ InversePlaces PlacesOfInverse(const std::vector<Piece>& pieces,
       [&]()
       {
         places = ReadXY(pieces[p].Input->GetPoints());
+        result.Count += places.size();
         for (std::size_t i = 0; i < places.size(); ++i)
         {
+          result.AllInLonLatRange = result.AllInLonLatRange && tessera::InLonLatRange(places[i]);
           places[i] = projection.Inverse(places[i], static_cast<long long>(i));
           west = std::min(west, places[i].x);
           east = std::max(east, places[i].x);
@@ -742,6 +726,22 @@ InversePlaces PlacesOfInverse(const std::vector<Piece>& pieces,
     }
   }
   return result;
+}
+
+/// Warns where every point of an inverse's input lies within the ranges of longitude and latitude
+/// (|x| <= 360, |y| <= 90): degrees, most likely, not metres of a plane (lon/lat given with
+/// ParametersFromData off came back as places within metres of the projection's origin without a
+/// word). A plane's own data so near its origin is rare.
+void WarnOfDegreesGivenToTheInverse(vtkGeographicProjection* self, const InversePlaces& inverse)
+{
+  if (inverse.Count > 0 && inverse.AllInLonLatRange)
+  {
+    vtkWarningWithObjectMacro(self,
+      << "Inverse: all " << inverse.Count
+      << " input point(s) lie within longitude and latitude ranges (|x| <= 360, |y| <= 90): "
+         "if they are degrees, turn Inverse off; the inverse takes metres of the projection's "
+         "plane, and these come back within metres of its origin");
+  }
 }
 
 /// The place of point i, cut on a plane edge by the inverse's densifying, a turn added: an error
@@ -955,12 +955,9 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
       projection.reset(new tessera::GeographicProjection(parameters));
       record = this->Inverse ? std::string() : parameters.ToString();
     }
-    if (this->Inverse && projection)
-    {
-      WarnOfDegreesGivenToTheInverse(this, pieces);
-    }
     const InversePlaces inverse =
       this->Inverse && projection ? PlacesOfInverse(pieces, *projection) : InversePlaces();
+    WarnOfDegreesGivenToTheInverse(this, inverse);
     const std::vector<std::vector<tessera::Point2>>& places = inverse.Places;
     if (this->MaximumEdgeLength > 0.0)
     {
