@@ -423,9 +423,9 @@ void DirichletTessellation::JumpTowards(const Point2& p)
   constexpr int ProbeSamples = 16;
   constexpr int JumpMissesToStop = 2;
   const std::int32_t triangles = std::int32_t(this->Origins.size() / 3);
-  const double fewest = std::cbrt(double(triangles)), most = std::sqrt(double(triangles));
-  if (this->JumpMode == Jumping::Off && triangles >= 64 &&
-    double(this->Serial.LastWalk) >= 2.0 * fewest)
+  // (walk >= 2 cbrt(triangles), cubed: most insertions stop here, and need no root)
+  const double walk = double(this->Serial.LastWalk);
+  if (this->JumpMode == Jumping::Off && triangles >= 64 && walk * walk * walk >= 8.0 * triangles)
   {
     this->JumpMode = Jumping::Probe;
   }
@@ -433,6 +433,7 @@ void DirichletTessellation::JumpTowards(const Point2& p)
   {
     return;
   }
+  const double fewest = std::cbrt(double(triangles)), most = std::sqrt(double(triangles));
   const auto distanceTo = [&](std::int32_t t)
   {
     double nearest = HUGE_VAL;
