@@ -16,6 +16,8 @@
 //     absolute term covering gradual underflow. Overflow produces Inf/NaN, which never passes.
 //  1b. orient2d and incircle only: points on a common power-of-two grid (lattices, integers), where
 //     the double evaluation is itself exact (GridOrient, GridInCircle below).
+//  1c. orient2d only: Shewchuk's adaptive stages B and C (AdaptiveOrient below), for coordinates
+//     between 2^-300 and 2^300 in magnitude: nearly collinear points off any grid.
 //  2. Expansion arithmetic: each difference of coordinates is an exact two-term expansion
 //     (two_diff), and the determinant is evaluated exactly as a sum of nonoverlapping doubles
 //     (two_product, scale_expansion, merge-based expansion sum with zero elimination), its sign
@@ -531,6 +533,72 @@ bool GridInCircle(const Point2& a, const Point2& b, const Point2& c, const Point
   return true;
 }
 
+// Tier 1c, orient2d only: Shewchuk's adaptive stages B and C (1997, section 4.3), between the
+// filter and the expansions. Nearly collinear points that are not on a grid (a transect's
+// gauges, y = x / 3 rounded) fail the filter at nearly every walk step of an insertion, and the
+// full expansion took some 120 ns a call there, most of an insertion's time.
+//  B: the determinant of the rounded differences, exactly (two products, each an exact pair):
+//     if its estimate clears bound B, or the differences were exact, its sign is the answer.
+//  C: the first-order effect of the differences' roundings (their tails) added to B's estimate:
+//     the rest is second order (bound C).
+// The bounds hold without underflow: every coordinate lies in [2^-300, 2^300] in magnitude or is
+// 0, so every nonzero difference, tail and product is a normal number far from the limits
+// (a tail's ulp is at least 2^-352, a product of two tails at least 2^-704). Otherwise, and
+// when C cannot decide, the expansions (or tier 1b) do. Returns false when undecided.
+constexpr double kOrientBoundB = (2.0 + 12.0 * detail::kEpsilon) * detail::kEpsilon;
+constexpr double kOrientBoundC =
+  (9.0 + 64.0 * detail::kEpsilon) * detail::kEpsilon * detail::kEpsilon;
+constexpr double kResultBound = (3.0 + 8.0 * detail::kEpsilon) * detail::kEpsilon;
+
+inline bool InAdaptiveRange(double v)
+{
+  const double m = std::fabs(v);
+  return v == 0.0 || (m >= 0x1p-300 && m <= 0x1p300);
+}
+
+bool AdaptiveOrient(const Point2& a, const Point2& b, const Point2& c, int& sign)
+{
+  if (!InAdaptiveRange(a.x) || !InAdaptiveRange(a.y) || !InAdaptiveRange(b.x) ||
+    !InAdaptiveRange(b.y) || !InAdaptiveRange(c.x) || !InAdaptiveRange(c.y))
+  {
+    return false;
+  }
+  double acx, acxTail, bcx, bcxTail, acy, acyTail, bcy, bcyTail;
+  two_diff(a.x, c.x, acx, acxTail);
+  two_diff(b.x, c.x, bcx, bcxTail);
+  two_diff(a.y, c.y, acy, acyTail);
+  two_diff(b.y, c.y, bcy, bcyTail);
+  double left, leftTail, right, rightTail;
+  two_product(acx, bcy, left, leftTail);
+  two_product(acy, bcx, right, rightTail);
+  // B = (left + leftTail) - (right + rightTail) exactly, as four nonoverlapping components of
+  // increasing magnitude, some maybe 0 (Shewchuk's Two-Two-Diff: the tail subtracted, then the
+  // head, each as one step of Grow-Expansion). Its sign is the largest nonzero component's.
+  double i, j, k, b0, b1, b2, b3;
+  two_diff(leftTail, rightTail, i, b0);
+  two_sum(left, i, j, k);
+  two_diff(k, right, i, b1);
+  two_sum(j, i, b3, b2);
+  const double estimate = ((b0 + b1) + b2) + b3;
+  const double permanent = std::fabs(left) + std::fabs(right);
+  if (std::fabs(estimate) >= kOrientBoundB * permanent ||
+    (acxTail == 0.0 && bcxTail == 0.0 && acyTail == 0.0 && bcyTail == 0.0))
+  {
+    const double largest = b3 != 0.0 ? b3 : (b2 != 0.0 ? b2 : (b1 != 0.0 ? b1 : b0));
+    sign = int(largest > 0.0) - int(largest < 0.0);
+    return true;
+  }
+  const double corrected =
+    estimate + ((acx * bcyTail + bcy * acxTail) - (acy * bcxTail + bcx * acyTail));
+  const double bound = kOrientBoundC * permanent + kResultBound * std::fabs(estimate);
+  if (std::fabs(corrected) >= bound)
+  {
+    sign = int(corrected > 0.0) - int(corrected < 0.0);
+    return true;
+  }
+  return false;
+}
+
 } // namespace
 
 namespace detail
@@ -539,7 +607,7 @@ namespace detail
 int orient2d_exact(const Point2& a, const Point2& b, const Point2& c)
 {
   int sign = 0;
-  if (GridOrient(a, b, c, sign))
+  if (AdaptiveOrient(a, b, c, sign) || GridOrient(a, b, c, sign))
   {
     return sign;
   }

@@ -226,8 +226,21 @@ Point2 PeriodicFullSum(const std::vector<double>& nodes,
   return { sumX / sumW, sumY / sumW };
 }
 
+// The exponent e of a power of two 2^e above every |value| (0 when all are 0), by which values
+// are scaled exactly into (-1, 1).
+int ScaleExponent(double largest)
+{
+  return largest > 0.0 ? std::ilogb(largest) + 1 : 0;
+}
+
 } // namespace
 
+// The sums of weight x coordinate overflow for finite input: 2000 points about 9e305 (within the
+// +-1e306 RidgeGrouping takes) gave NaN samples, and so did weights of 1e300 on coordinates of 10.
+// The controls are scaled into (-1, 1) and the weights to a largest of [1, 2) by powers of two,
+// which are exact (the curve is the same to the bit wherever nothing overflowed): the sums are
+// then at most the number of controls. A weight below 2^-1074 of the largest (which would become
+// 0) is kept at the smallest double.
 std::vector<Point2> SampleRationalGaussianCurve(const std::vector<double>& nodes,
   const std::vector<Point2>& controls,
   const std::vector<double>& weights,
@@ -236,16 +249,33 @@ std::vector<Point2> SampleRationalGaussianCurve(const std::vector<double>& nodes
   int sampleCount)
 {
   CheckInput(nodes, controls, weights, sigma, sampleCount);
-  const std::vector<ControlPoint> sorted = SortedControls(nodes, controls, weights, closed);
+  double largest = 0.0;
+  for (const Point2& c : controls)
+  {
+    largest = std::max({ largest, std::fabs(c.x), std::fabs(c.y) });
+  }
+  const int exponent = ScaleExponent(largest);
+  const int weightExponent = ScaleExponent(*std::max_element(weights.begin(), weights.end())) - 1;
+  std::vector<Point2> scaled(controls.size());
+  std::vector<double> scaledWeights(weights.size());
+  for (std::size_t k = 0; k < controls.size(); ++k)
+  {
+    scaled[k] = { std::ldexp(controls[k].x, -exponent), std::ldexp(controls[k].y, -exponent) };
+    scaledWeights[k] =
+      std::max(std::ldexp(weights[k], -weightExponent), std::numeric_limits<double>::denorm_min());
+  }
+  const std::vector<ControlPoint> sorted = SortedControls(nodes, scaled, scaledWeights, closed);
   std::vector<Point2> samples(static_cast<std::size_t>(sampleCount));
   const double denominator = closed ? sampleCount : sampleCount - 1;
   for (int s = 0; s < sampleCount; ++s)
   {
     const double u = s / denominator;
-    if (!WindowedAverage(sorted, u, sigma, closed, samples[s]))
+    Point2 sample;
+    if (!WindowedAverage(sorted, u, sigma, closed, sample))
     {
-      samples[s] = PeriodicFullSum(nodes, controls, weights, u, sigma);
+      sample = PeriodicFullSum(nodes, scaled, scaledWeights, u, sigma);
     }
+    samples[s] = { std::ldexp(sample.x, exponent), std::ldexp(sample.y, exponent) };
   }
   return samples;
 }

@@ -112,7 +112,9 @@ void AppendPixelPolyline(const RidgeContours& contours,
 
 // One RaG curve per contour. Points sharing a projection pixel share a node, so they enter as
 // their mean with their count as weight (the same curve, evaluated per pixel instead of per
-// point); points whose node was extended past a contour end enter one by one.
+// point); points whose node was extended past a contour end enter one by one. The means are summed
+// scaled into (-1, 1) by a power of two (exact): 300 copies of a point at 9e305 summed to
+// infinity, and the run failed on a "RaG control point" with an infinite coordinate.
 void FitCurves(const std::vector<Point2>& points,
   const RidgeContours& contours,
   const PointPartition& partition,
@@ -124,6 +126,12 @@ void FitCurves(const std::vector<Point2>& points,
   std::vector<double> sumY(positions, 0.0);
   std::vector<double> count(positions, 0.0);
   std::vector<std::vector<std::size_t>> extended(contours.Count());
+  double largest = 0.0;
+  for (const Point2& p : points)
+  {
+    largest = std::max({ largest, std::fabs(p.x), std::fabs(p.y) });
+  }
+  const int exponent = largest > 0.0 ? std::ilogb(largest) + 1 : 0;
   for (std::size_t k = 0; k < points.size(); ++k)
   {
     const int position = partition.Projection[k];
@@ -136,8 +144,8 @@ void FitCurves(const std::vector<Point2>& points,
       extended[partition.GroupId[k]].push_back(k);
       continue;
     }
-    sumX[position] += points[k].x;
-    sumY[position] += points[k].y;
+    sumX[position] += std::ldexp(points[k].x, -exponent);
+    sumY[position] += std::ldexp(points[k].y, -exponent);
     count[position] += 1.0;
   }
   std::vector<int> single; // groups of one point: no curve to fit
@@ -152,7 +160,8 @@ void FitCurves(const std::vector<Point2>& points,
       {
         nodes.push_back(std::clamp(
           partition.NodeOrigin[c] + partition.ArcLength[k] * partition.NodePerPixel[c], 0.0, 1.0));
-        controls.push_back({ sumX[k] / count[k], sumY[k] / count[k] });
+        controls.push_back(
+          { std::ldexp(sumX[k] / count[k], exponent), std::ldexp(sumY[k] / count[k], exponent) });
         weights.push_back(count[k]);
       }
     }

@@ -331,10 +331,10 @@ def read_gauge_points(path, id_field=None):
         table.add(block.GetPoint(block.GetCell(0).GetPointId(0)), station, attribute_text(name).strip() if name else "")
     gauges = table.data
     xy = [gauges.GetPoint(g)[:2] for g in range(gauges.GetNumberOfPoints())]
-    system = projected_input.declared_system(reader, [xy], path)
+    system = projected_input.declared_system(reader, [xy], path, points=True)
     if system:
         gauges = projected_input.to_lonlat(gauges, system, lambda g: f"{path}: feature {g + 1}")
-    say_declared_systems(reader, path, system)
+    say_declared_systems(reader, path, system, points=True)
     return gauges, list(range(1, len(xy) + 1))
 
 
@@ -1456,12 +1456,13 @@ def read_catchment(path, feature=None):
     return output, rings
 
 
-def say_declared_systems(reader, path, system):
-    """Says what a GIS file (reader: its vtkGDALVectorReader, updated) declares: the projected
-    system (projected_input.PlaneSystem, or None) its metres were made lon/lat from, or a projected
-    system over coordinates read as lon/lat, and an older datum. The coordinates are read as
-    lon/lat whatever the file declares, but for the metres of a projected system read."""
-    for layer in range(reader.GetNumberOfLayers()):
+def say_declared_systems(reader, path, system, points=False):
+    """Says what a GIS file (reader: its vtkGDALVectorReader, updated) declares for its layers that
+    hold what is read (projected_input.layers_of): the projected system (projected_input.PlaneSystem,
+    or None) its metres were made lon/lat from, or a projected system over coordinates read as
+    lon/lat, and an older datum. The coordinates are read as lon/lat whatever the file declares,
+    but for the metres of a projected system read."""
+    for layer in projected_input.layers_of(reader, points):
         declared = reader.GetLayerProjection(layer) or ""
         name = re.match(r'PROJC(?:RS|S)\["([^"]*)"', declared)
         name = name.group(1) if name else declared[:60]
@@ -2385,7 +2386,7 @@ def main(argv=None):
                              "wide: a row per time (date, or year, month, ...) with a column per station named "
                              f"by its station_id; {csv_input.SEPARATORS_TEXT}")
     parser.add_argument("--catchment", default=os.path.join(DATA, "colorado_boundary.geojson"),
-                        help="catchment polygon (GeoJSON or shapefile, lon/lat, or a zip file "
+                        help="catchment polygon (GeoJSON or shapefile, or KML or GeoPackage, lon/lat, or a zip file "
                              "holding one; a file declaring a projected system in metres or feet, "
                              f"{projected_input.READ}, is made lon/lat); "
                              "every polygon feature of the file is taken, unless --feature chooses")

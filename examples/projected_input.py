@@ -201,14 +201,28 @@ def in_utm_range(system, x, y):
     return 0.0 < east < 1e6 and 0.0 <= north <= 1e7
 
 
-def declared_system(reader, rings, path):
-    """The PlaneSystem that the catchment file (reader: its vtkGDALVectorReader, updated) declares
-    for all its layers, where its coordinates (rings) are metres, most of them out of lon/lat's
-    range (a file of lon/lat under a projected declaration is read as lon/lat, and said); else
-    None. A projected system that is not read here ends the script naming it, and so does a UTM
-    vertex that no zone holds."""
+POINT_LAYER_TYPES = (1, 4)  # OGR's wkbPoint and wkbMultiPoint
+
+
+def layers_of(reader, points):
+    """The layers of a GIS file (reader: its vtkGDALVectorReader, updated) that can hold what is
+    read from it: with points True, every layer; else those whose geometry is not points (a
+    catchment GeoPackage's layer of gauges adds no ring, and its system must not be the
+    catchment's). OGR's 2.5D flag and ISO Z/M codes are taken off the geometry type."""
+    layers = range(reader.GetNumberOfLayers())
+    return list(layers) if points else [
+        layer for layer in layers if (reader.GetLayerType(layer) & 0x7FFFFFFF) % 1000 not in POINT_LAYER_TYPES]
+
+
+def declared_system(reader, rings, path, points=False):
+    """The PlaneSystem that the GIS file (reader: its vtkGDALVectorReader, updated) declares for
+    all its layers that hold what is read (layers_of: with points False, a catchment's, a layer of
+    points aside), where its coordinates (rings) are metres, most of them out of lon/lat's range (a
+    file of lon/lat under a projected declaration is read as lon/lat, and said); else None. A
+    projected system that is not read here ends the script naming it, and so does a UTM vertex
+    that no zone holds."""
     systems = set()
-    for layer in range(reader.GetNumberOfLayers()):
+    for layer in layers_of(reader, points):
         proj4 = reader.GetLayerProjectionAsProj4(layer) or ""
         systems.add(proj4 if "+proj=" in proj4 and "+proj=longlat" not in proj4 else None)
     # (most vertices, not all: a system about the catchment itself puts some within 360 m of its

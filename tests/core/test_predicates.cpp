@@ -230,6 +230,37 @@ TEST(Predicates, NearlyCollinearOneUlp)
     t);
 }
 
+// A transect's points, y = x / 3 rounded, with x whole and up to 10^6 apart: their differences
+// are inexact where they cross binades, so orient2d's filter fails and the adaptive stages (B, C)
+// decide, the full expansions rarely. Scaled by 2^k across and beyond the stages' range
+// (2^-300 to 2^300), with one point's coordinates at the range's edge or just past it, where the
+// expansions decide.
+TEST(Predicates, TransectPointsAtEveryScale)
+{
+  Tally t;
+  run(
+    20000,
+    17,
+    [](std::mt19937_64& rng)
+    {
+      const int k = int(uniform(rng, -330, 330));
+      std::vector<Point2> p(4);
+      for (Point2& q : p)
+      {
+        const double x = std::floor(uniform(rng, 0, 1e6));
+        q = { std::ldexp(x, k), std::ldexp(x / 3.0, k) };
+      }
+      if (uniform(rng, 0, 1) < 0.2)
+      {
+        const int edge = uniform(rng, 0, 1) < 0.5 ? -300 : 300;
+        p[2] = { std::ldexp(nudge(1.0, int(uniform(rng, -2, 3))), edge), p[2].y };
+      }
+      return p;
+    },
+    t);
+  EXPECT_GT(t.zeros, 0); // (x a multiple of 3 on both ends: exactly collinear triples occur)
+}
+
 TEST(Predicates, ExactlyCollinearIntegers)
 {
   Tally t;

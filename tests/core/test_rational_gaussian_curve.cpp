@@ -188,6 +188,42 @@ TEST(RationalGaussianCurve, ClosedCurvesWithAWideSigmaMatchTheImageSum)
   }
 }
 
+// Finite controls and weights whose products overflow: the curve is the one of the controls
+// scaled down, scaled back (an affine map: RaG basis functions sum to 1). 2000 controls about
+// 9e305, or weights of 1e300 on coordinates of 10, gave NaN samples.
+TEST(RationalGaussianCurve, LargeCoordinatesAndWeightsDoNotOverflow)
+{
+  std::vector<double> nodes;
+  std::vector<Point2> points;
+  RandomControls(2000, 7, nodes, points);
+  const std::vector<double> ones(nodes.size(), 1.0);
+  for (bool closed : { false, true })
+  {
+    for (double sigma : { 0.04, 0.3, 0.7 })
+    {
+      const auto curve =
+        tessera::SampleRationalGaussianCurve(nodes, points, ones, sigma, closed, 64);
+      std::vector<Point2> far(points.size());
+      for (std::size_t i = 0; i < points.size(); ++i)
+      {
+        far[i] = { 9e305 + 1e304 * points[i].x, -9e305 + 1e304 * points[i].y };
+      }
+      const auto farCurve =
+        tessera::SampleRationalGaussianCurve(nodes, far, ones, sigma, closed, 64);
+      const std::vector<double> heavy(nodes.size(), 1e300);
+      const auto heavyCurve =
+        tessera::SampleRationalGaussianCurve(nodes, points, heavy, sigma, closed, 64);
+      for (std::size_t s = 0; s < curve.size(); ++s)
+      {
+        EXPECT_NEAR((farCurve[s].x - 9e305) / 1e304, curve[s].x, 1e-6) << "sigma " << sigma;
+        EXPECT_NEAR((farCurve[s].y + 9e305) / 1e304, curve[s].y, 1e-6) << "sigma " << sigma;
+        EXPECT_NEAR(heavyCurve[s].x, curve[s].x, 1e-12) << "sigma " << sigma;
+        EXPECT_NEAR(heavyCurve[s].y, curve[s].y, 1e-12) << "sigma " << sigma;
+      }
+    }
+  }
+}
+
 TEST(RationalGaussianCurve, RejectsBadInput)
 {
   const std::vector<double> nodes = { 0.0, 0.5 };

@@ -2267,6 +2267,86 @@ def utm_60s(points):
     return [projection.GetOutput().GetPoint(k)[:2] for k in range(len(points))]
 
 
+def geopackage_of(path, layers):
+    """Writes a GeoPackage (OGC 12-128r18: an SQLite file with its three tables and a table per
+    layer) at path. layers: (name, WKT of its system, "POLYGON" or "POINT", geometries: lists of
+    rings, lists of (x, y) each with the first point repeated last, or (x, y) points)."""
+    import sqlite3
+    import struct
+
+    def wkb(kind, geometry):
+        if kind == "POINT":
+            return struct.pack("<BIdd", 1, 1, *geometry)
+        body = b"".join(struct.pack("<I", len(ring)) + b"".join(struct.pack("<dd", *p) for p in ring)
+                        for ring in geometry)
+        return struct.pack("<BII", 1, 3, len(geometry)) + body
+
+    db = sqlite3.connect(path)
+    db.execute("PRAGMA application_id = 1196444487")  # 'GPKG'
+    db.execute("PRAGMA user_version = 10200")
+    db.execute("CREATE TABLE gpkg_spatial_ref_sys (srs_name TEXT NOT NULL, srs_id INTEGER PRIMARY KEY, "
+               "organization TEXT NOT NULL, organization_coordsys_id INTEGER NOT NULL, definition TEXT NOT NULL, "
+               "description TEXT)")
+    db.execute("CREATE TABLE gpkg_contents (table_name TEXT PRIMARY KEY, data_type TEXT NOT NULL, identifier TEXT, "
+               "description TEXT DEFAULT '', last_change DATETIME NOT NULL DEFAULT "
+               "(strftime('%Y-%m-%dT%H:%M:%fZ','now')), min_x DOUBLE, min_y DOUBLE, max_x DOUBLE, max_y DOUBLE, "
+               "srs_id INTEGER)")
+    db.execute("CREATE TABLE gpkg_geometry_columns (table_name TEXT NOT NULL, column_name TEXT NOT NULL, "
+               "geometry_type_name TEXT NOT NULL, srs_id INTEGER NOT NULL, z TINYINT NOT NULL, m TINYINT NOT NULL)")
+    db.execute("INSERT INTO gpkg_spatial_ref_sys VALUES ('Undefined cartesian SRS', -1, 'NONE', -1, 'undefined', "
+               "''), ('Undefined geographic SRS', 0, 'NONE', 0, 'undefined', '')")
+    for srs, (name, wkt, kind, geometries) in enumerate(layers, start=100000):
+        db.execute("INSERT INTO gpkg_spatial_ref_sys VALUES (?, ?, 'NONE', ?, ?, '')", (name, srs, srs, wkt))
+        db.execute(f"CREATE TABLE {name} (fid INTEGER PRIMARY KEY AUTOINCREMENT, geom {kind})")
+        db.execute("INSERT INTO gpkg_contents (table_name, data_type, identifier, srs_id) VALUES (?, 'features', ?, ?)",
+                   (name, name, srs))
+        db.execute("INSERT INTO gpkg_geometry_columns VALUES (?, 'geom', ?, ?, 0, 0)", (name, kind, srs))
+        for geometry in geometries:  # (the header: magic, version 0, flags: little-endian, no envelope; srs)
+            db.execute(f"INSERT INTO {name} (geom) VALUES (?)",
+                       (b"GP\x00\x01" + struct.pack("<i", srs) + wkb(kind, geometry),))
+    db.commit()
+    db.close()
+    return path
+
+
+def test_catchment_geopackage_in_metres_beside_a_layer_of_lon_lat_points():
+    # A GeoPackage whose catchment layer is in metres of an Albers conic and which also holds the
+    # gauges as a layer of points in lon/lat (as a GIS project is often saved): the points layer
+    # adds no ring, so its system is not the catchment's, and the run gives the lon/lat files'
+    # means to 1e-8. It was refused, told at once that the metres were read as lon/lat and that
+    # they looked projected.
+    import json
+
+    wgs84 = ('GEOGCS["WGS 84",DATUM["WGS_1984",SPHEROID["WGS 84",6378137,298.257223563]],PRIMEM["Greenwich",0],'
+             'UNIT["degree",0.0174532925199433]]')
+    albers = (f'PROJCS["lake_aea",{wgs84},PROJECTION["Albers_Conic_Equal_Area"],PARAMETER["latitude_of_center",-39],'
+              'PARAMETER["longitude_of_center",176],PARAMETER["standard_parallel_1",-38],PARAMETER['
+              '"standard_parallel_2",-40],PARAMETER["false_easting",1000000],PARAMETER["false_northing",2000000],'
+              'UNIT["metre",1]]')
+    with tempfile.TemporaryDirectory() as out:
+        catchment, stations, observations = write_lake_basin(out)
+        rings = [[[a[0] + (b[0] - a[0]) * i / 1000, a[1] + (b[1] - a[1]) * i / 1000] for a, b in zip(ring, ring[1:])
+                  for i in range(1000)] + ring[-1:] for ring in LAKE_BASIN["features"][0]["geometry"]["coordinates"]]
+        metres = [[snyder_conic("aea", x, y, 176, -39, -38, -40, 1e6, 2e6) for x, y in ring] for ring in rings]
+        for name, layers in (("alone", [("basin", albers, "POLYGON", [metres])]),
+                             ("beside_points", [("basin", albers, "POLYGON", [metres]),
+                                                ("gauges", wgs84, "POINT", list(LAKE_GAUGES.values()))])):
+            path = geopackage_of(os.path.join(out, f"{name}.gpkg"), layers)
+            _, stderr = run_colorado(os.path.join(out, name), stations=stations, observations=observations,
+                                     catchment=path, plots=False, what=name)
+            made = [m for m in stderr_messages(stderr) if m.startswith(f"{path}: declares ")]
+            assert_that(len(made) == 1 and "'lake_aea', whose eastings and northings are made longitude/latitude" in
+                        made[0], f"{name}: {stderr}")
+            lonlat = os.path.join(out, f"lonlat_{name}")
+            if name == "alone":
+                cut = dict(LAKE_BASIN, features=[dict(LAKE_BASIN["features"][0], geometry={
+                    "type": "Polygon", "coordinates": rings})])
+                run_colorado(lonlat, stations=stations, observations=observations, plots=False, what="lon/lat",
+                             catchment=write(out, "cut.geojson", json.dumps(cut)))
+                want = read_csv(os.path.join(lonlat, "areal_mean.csv"))
+            assert_same_means(read_csv(os.path.join(out, name, "areal_mean.csv")), want, name)
+
+
 def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
     # The lake basin (its edges cut every 0.001 degrees in lon/lat) and its gauges given in three
     # projected systems: a southern Albers conic, a Lambert conic in US feet with false origins
@@ -3236,6 +3316,7 @@ if __name__ == "__main__":
          test_a_catchment_in_a_zip_file_is_read_from_it,
          test_a_catchment_declared_projected_is_named, test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means,
          test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means,
+         test_catchment_geopackage_in_metres_beside_a_layer_of_lon_lat_points,
          test_a_noaa_climate_data_online_file_is_both_stations_and_observations,
          test_gauges_from_a_gis_file_of_points_give_the_csv_means,
          test_the_filters_errors_name_the_file_and_line,
