@@ -7,6 +7,7 @@
 #include "parallel_chunks.h"
 #include "polygon_area.h"
 #include "polygon_validation.h"
+#include "shared_borders.h"
 #include "snap_to_segments.h"
 #include "spatial_order.h"
 #include "tiles.h"
@@ -1453,6 +1454,7 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
 {
   State& s = *this->Impl;
   ClippedTilesLonLat out;
+  ClippedRings plane; // the pieces in the plane, in out's order
   // The gauges in the tessellation, ascending, with their tiles (derived again here: the steps
   // keep only the clipped areas).
   const TileSet tiles = TessellationDual(*s.Tessellation).Tiles();
@@ -1493,14 +1495,26 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
       const Point2* piece = &pieces.Vertices[pieces.RingOffsets[r]];
       const std::size_t size = pieces.RingOffsets[r + 1] - pieces.RingOffsets[r];
       out.PieceAreasM2.push_back(s.PieceArea(piece, size, scratch));
-      DensifyPlanarRing(piece, size, maxStepMetres, scratch.Dense);
-      s.Unproject(scratch.Dense, scratch.LonLat);
-      DropRepeatedVertices(scratch.LonLat); // points an ulp apart in the plane can come back as one
-      out.Pieces.Vertices.insert(
-        out.Pieces.Vertices.end(), scratch.LonLat.begin(), scratch.LonLat.end());
-      out.Pieces.RingOffsets.push_back(out.Pieces.Vertices.size());
+      plane.Vertices.insert(plane.Vertices.end(), piece, piece + size);
+      plane.RingOffsets.push_back(plane.Vertices.size());
     }
-    out.TilePieceOffsets.push_back(out.Pieces.RingOffsets.size() - 1);
+    out.TilePieceOffsets.push_back(plane.RingOffsets.size() - 1);
+  }
+  // Neighbouring tiles' pieces take each other's vertices on their common borders, and every
+  // edge is cut at the same points from either side, so that they still meet exactly in lon/lat
+  // (shared_borders.h).
+  const ClippedRings shared = ShareBorderVertices(plane);
+  State::ClipScratch& scratch = s.Scratch[0];
+  for (std::size_t r = 0; r + 1 < shared.RingOffsets.size(); ++r)
+  {
+    const std::size_t begin = shared.RingOffsets[r];
+    DensifyRingSymmetrically(
+      &shared.Vertices[begin], shared.RingOffsets[r + 1] - begin, maxStepMetres, scratch.Dense);
+    s.Unproject(scratch.Dense, scratch.LonLat);
+    DropRepeatedVertices(scratch.LonLat); // points an ulp apart in the plane can come back as one
+    out.Pieces.Vertices.insert(
+      out.Pieces.Vertices.end(), scratch.LonLat.begin(), scratch.LonLat.end());
+    out.Pieces.RingOffsets.push_back(out.Pieces.Vertices.size());
   }
   return out;
 }

@@ -76,7 +76,10 @@
  * cut by vertical lines (in the projected plane) into x-monotone pieces, a cell each
  * (core/display_pieces.h). Most tiles, concave ones included, are one piece; a part with a hole
  * (a lake in the tile: two pieces around it) or made of lobes that meet only along the tile's
- * edge (a tile across a bay) gives several, so a gauge can have several cells. Cell data:
+ * edge (a tile across a bay) gives several, so a gauge can have several cells. Neighbouring cells
+ * share their borders vertex for vertex, the points that cut the borders into steps of 2 km
+ * included (core/shared_borders.h), so that in lon/lat too they meet without gaps or overlaps
+ * (to rounding) for a GIS's topology check or union. Cell data:
  * `StationId` (the gauge's id, its array type kept), `GaugeId` (index into the gauges), `Weight`
  * and `Area_m2` (the gauge's weight and clipped ellipsoidal area, m^2: per gauge, repeated on
  * each of its cells, so sum them once per station, not over cells), `Value` (the gauge's value;

@@ -1,0 +1,218 @@
+// Shared borders (core/shared_borders.h): display pieces of a tessellation's tiles clipped by a
+// catchment with holes meet vertex for vertex once shared, and their edges, cut into steps and
+// carried through a curving map (as the inverse projection carries them to lon/lat), still meet
+// exactly; without sharing they leave T-junctions that the map moves off the neighbour's chords.
+
+#include "clip.h"
+#include "dirichlet_tessellation.h"
+#include "display_pieces.h"
+#include "shared_borders.h"
+#include "tiles.h"
+#include "window.h"
+
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+using namespace tessera;
+using tessera_test::MakeCatchment;
+using tessera_test::Rectangle;
+
+namespace
+{
+
+// The number of (vertex, edge) pairs of different pieces where the vertex lies within `near` of
+// the edge's line, between its ends and farther than `same` from both: T-junctions.
+int CountTJunctions(const ClippedRings& pieces, double near, double same)
+{
+  const std::vector<Point2>& v = pieces.Vertices;
+  const std::vector<std::size_t>& at = pieces.RingOffsets;
+  int found = 0;
+  for (std::size_t q = 0; q + 1 < at.size(); ++q)
+  {
+    Point2 low{ HUGE_VAL, HUGE_VAL }, high{ -HUGE_VAL, -HUGE_VAL };
+    for (std::size_t k = at[q]; k < at[q + 1]; ++k)
+    {
+      low = { std::min(low.x, v[k].x), std::min(low.y, v[k].y) };
+      high = { std::max(high.x, v[k].x), std::max(high.y, v[k].y) };
+    }
+    for (std::size_t i = 0; i < v.size(); ++i)
+    {
+      const Point2& p = v[i];
+      if ((i >= at[q] && i < at[q + 1]) || p.x < low.x - near || p.x > high.x + near ||
+        p.y < low.y - near || p.y > high.y + near)
+      {
+        continue;
+      }
+      for (std::size_t k = at[q]; k < at[q + 1]; ++k)
+      {
+        const Point2& a = v[k];
+        const Point2& b = v[k + 1 < at[q + 1] ? k + 1 : at[q]];
+        const double length = std::hypot(b.x - a.x, b.y - a.y);
+        const double along = ((p.x - a.x) * (b.x - a.x) + (p.y - a.y) * (b.y - a.y)) / length;
+        const double off =
+          std::fabs((p.x - a.x) * (b.y - a.y) - (p.y - a.y) * (b.x - a.x)) / length;
+        found += off <= near && along > same && along < length - same;
+      }
+    }
+  }
+  return found;
+}
+
+// The pieces of all tiles of random points in the unit square clipped by a catchment with a bay
+// and holes (every tile over a hole or the bay's end is cut vertically into several pieces).
+ClippedRings PiecesOfAllTiles(std::mt19937& random, int pointCount)
+{
+  // (small holes and a narrow bay: tiles hold them whole, and are cut on either side of them)
+  const Catchment comb = MakeCatchment({ { { 0, 0 },
+                                           { 1, 0 },
+                                           { 1, 1 },
+                                           { 0.72, 1 },
+                                           { 0.72, 0.4 },
+                                           { 0.7, 0.4 },
+                                           { 0.7, 1 },
+                                           { 0, 1 } },
+    Rectangle(0.2, 0.2, 0.23, 0.22),
+    Rectangle(0.4, 0.6, 0.42, 0.63),
+    Rectangle(0.5, 0.3, 0.51, 0.32),
+    Rectangle(0.85, 0.7, 0.87, 0.71),
+    Rectangle(0.3, 0.8, 0.32, 0.81) });
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Point2> points(static_cast<std::size_t>(pointCount));
+  for (Point2& p : points)
+  {
+    p = { u(random), u(random) };
+  }
+  const TileSet tiles =
+    ComputeTiles(DirichletTessellation(Window::Rectangle(-0.01, 1.01, -0.02, 1.03), points));
+  ClippedRings all;
+  for (std::size_t t = 0; t + 1 < tiles.Offsets.size(); ++t)
+  {
+    const std::vector<Point2> tile(
+      tiles.Vertices.begin() + tiles.Offsets[t], tiles.Vertices.begin() + tiles.Offsets[t + 1]);
+    const ClippedRings pieces = DisplayPieces(comb.Clip(tile).Rings);
+    all.Vertices.insert(all.Vertices.end(), pieces.Vertices.begin(), pieces.Vertices.end());
+    for (std::size_t r = 1; r < pieces.RingOffsets.size(); ++r)
+    {
+      all.RingOffsets.push_back(
+        all.RingOffsets.back() + pieces.RingOffsets[r] - pieces.RingOffsets[r - 1]);
+    }
+  }
+  return all;
+}
+
+// Each ring cut into steps (DensifyRingSymmetrically), then bent by a smooth map that turns
+// straight lines into curves bulging by about 1e-4 over a step of 0.02.
+ClippedRings DensifiedAndBent(const ClippedRings& rings)
+{
+  ClippedRings out;
+  std::vector<Point2> dense;
+  for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
+  {
+    const std::size_t begin = rings.RingOffsets[r];
+    DensifyRingSymmetrically(&rings.Vertices[begin], rings.RingOffsets[r + 1] - begin, 0.02, dense);
+    for (const Point2& p : dense)
+    {
+      out.Vertices.push_back({ p.x + 0.5 * p.y * p.y, p.y + 0.5 * p.x * p.x });
+    }
+    out.RingOffsets.push_back(out.Vertices.size());
+  }
+  return out;
+}
+
+double Area(const ClippedRings& rings)
+{
+  double twice = 0.0;
+  for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
+  {
+    for (std::size_t k = rings.RingOffsets[r]; k < rings.RingOffsets[r + 1]; ++k)
+    {
+      const Point2& a = rings.Vertices[k];
+      const Point2& b =
+        rings.Vertices[k + 1 < rings.RingOffsets[r + 1] ? k + 1 : rings.RingOffsets[r]];
+      twice += a.x * b.y - b.x * a.y;
+    }
+  }
+  return twice / 2.0;
+}
+
+} // namespace
+
+TEST(SharedBorders, PiecesMeetVertexForVertexOnceShared)
+{
+  std::mt19937 random(5);
+  int junctionsBefore = 0;
+  for (int trial = 0; trial < 6; ++trial)
+  {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const ClippedRings pieces = PiecesOfAllTiles(random, 40 + 60 * trial);
+    const ClippedRings shared = ShareBorderVertices(pieces);
+    // The same pieces, in the same order, each with the vertices of its neighbours added: in the
+    // plane, nothing moves (the same area to rounding).
+    ASSERT_EQ(shared.RingOffsets.size(), pieces.RingOffsets.size());
+    EXPECT_GE(shared.Vertices.size(), pieces.Vertices.size());
+    EXPECT_NEAR(Area(shared), Area(pieces), 1e-14);
+    junctionsBefore += CountTJunctions(pieces, 1e-12, 1e-12);
+    EXPECT_EQ(CountTJunctions(shared, 1e-12, 1e-12), 0);
+    // Bent, the shared pieces still meet vertex for vertex, where the unshared ones' T-junctions
+    // lie off their neighbours' chords by up to some 1e-5.
+    EXPECT_EQ(CountTJunctions(DensifiedAndBent(shared), 1e-6, 1e-12), 0);
+    EXPECT_GT(CountTJunctions(DensifiedAndBent(pieces), 1e-6, 1e-12) + (trial > 0), 0);
+  }
+  EXPECT_GT(junctionsBefore, 20); // (the vertical cuts of tiles over the hole and the bay)
+}
+
+TEST(SharedBorders, EdgesAreCutAtTheSamePointsEitherWay)
+{
+  const std::vector<Point2> ring{ { 0.1, 0.3 }, { 7.3, 1.9 }, { 2.2, 5.7 } };
+  const std::vector<Point2> reversed{ ring[2], ring[1], ring[0] };
+  std::vector<Point2> forward, backward;
+  DensifyRingSymmetrically(ring.data(), ring.size(), 0.37, forward);
+  DensifyRingSymmetrically(reversed.data(), reversed.size(), 0.37, backward);
+  ASSERT_EQ(forward.size(), backward.size());
+  // The same points to the bit (backward runs the ring the other way).
+  const auto byCoordinates = [](const Point2& a, const Point2& b)
+  { return a.x != b.x ? a.x < b.x : a.y < b.y; };
+  std::sort(forward.begin(), forward.end(), byCoordinates);
+  std::sort(backward.begin(), backward.end(), byCoordinates);
+  for (std::size_t k = 0; k < forward.size(); ++k)
+  {
+    EXPECT_EQ(backward[k].x, forward[k].x) << k;
+    EXPECT_EQ(backward[k].y, forward[k].y) << k;
+  }
+  DensifyRingSymmetrically(ring.data(), ring.size(), 0.37, forward);
+  // No step longer than 0.37, and every point on its edge.
+  for (std::size_t k = 0; k < forward.size(); ++k)
+  {
+    const Point2& a = forward[k];
+    const Point2& b = forward[(k + 1) % forward.size()];
+    EXPECT_LE(std::hypot(b.x - a.x, b.y - a.y), 0.37 * (1 + 1e-12)) << k;
+  }
+}
+
+TEST(SharedBorders, NothingToShare)
+{
+  ClippedRings none;
+  EXPECT_TRUE(ShareBorderVertices(none).Vertices.empty());
+  ClippedRings one;
+  one.Vertices = Rectangle(0, 0, 1, 1);
+  one.RingOffsets.push_back(4);
+  const ClippedRings same = ShareBorderVertices(one);
+  EXPECT_EQ(same.Vertices.size(), 4U);
+  // Two squares side by side, the right one's left side cut at y = 0.5: the left one takes it.
+  ClippedRings two = one;
+  for (const Point2& p : std::vector<Point2>{ { 1, 0 }, { 2, 0 }, { 2, 1 }, { 1, 1 }, { 1, 0.5 } })
+  {
+    two.Vertices.push_back(p);
+  }
+  two.RingOffsets.push_back(two.Vertices.size());
+  const ClippedRings shared = ShareBorderVertices(two);
+  ASSERT_EQ(shared.RingOffsets[1], 5U);
+  EXPECT_EQ(shared.Vertices[2].x, 1.0);
+  EXPECT_EQ(shared.Vertices[2].y, 0.5);
+}
