@@ -392,6 +392,23 @@ LAKE_GAUGES = {"N1": (175.6, -39.1), "N2": (176.4, -39.1), "N3": (175.95, -38.82
                "N5": (176.3, -38.55), "N6": (177.5, -37.0)}
 
 
+def lake_rings_cut():
+    """The lake basin's rings (LAKE_BASIN's, first point repeated last) with each edge cut into
+    1000 straight pieces in lon/lat (every 0.001 degrees or less): the outline that a projected
+    file's edges, cut every kilometre and made lon/lat, follow to within rounding."""
+    return [[[a[0] + (b[0] - a[0]) * i / 1000, a[1] + (b[1] - a[1]) * i / 1000] for a, b in zip(ring, ring[1:])
+             for i in range(1000)] + ring[-1:] for ring in LAKE_BASIN["features"][0]["geometry"]["coordinates"]]
+
+
+def write_lake_basin_cut(directory):
+    """lake_rings_cut's basin as cut.geojson in directory; returns its path."""
+    import json
+
+    cut = json.loads(json.dumps(LAKE_BASIN))
+    cut["features"][0]["geometry"]["coordinates"] = lake_rings_cut()
+    return write(directory, "cut.geojson", json.dumps(cut))
+
+
 def write_lake_basin(directory):
     """The basin's catchment, stations and observations files; returns their paths."""
     import json
@@ -2080,8 +2097,6 @@ def test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means():
     # counts and means of the lon/lat files, the outline cut alike (its vertices move the automatic
     # projection, and the means with it, by 1e-7): the coordinates are made lon/lat first, and
     # that is said.
-    import json
-
     from tessera import vtkGeographicProjection
     from vtkmodules.vtkCommonCore import vtkIdList, vtkPoints
     from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
@@ -2132,12 +2147,8 @@ def test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means():
         gauges = in_utm_60s([list(LAKE_GAUGES.values())], False)[0]
         xy = write(out, "stations_xy.csv", "station_id,x,y\n" + "".join(
             f"{s},{x!r},{y!r}\n" for s, (x, y) in zip(LAKE_GAUGES, gauges)))
-        cut = json.loads(json.dumps(LAKE_BASIN))
-        cut["features"][0]["geometry"]["coordinates"] = [
-            [[a[0] + (b[0] - a[0]) * i / 1000, a[1] + (b[1] - a[1]) * i / 1000] for a, b in zip(ring, ring[1:])
-             for i in range(1000)] + ring[-1:] for ring in rings]
         run_colorado(os.path.join(out, "lonlat"), stations=stations, observations=observations,
-                     catchment=write(out, "cut.geojson", json.dumps(cut)), plots=False, what="lon/lat")
+                     catchment=write_lake_basin_cut(out), plots=False, what="lon/lat")
         _, stderr = run_colorado(os.path.join(out, "utm"), stations=xy, observations=observations,
                                  catchment=utm + ".shp", plots=False, what="UTM", **{"stations-utm": "60S"})
         assert_that(f"{utm}.shp: declares the projected coordinate system 'WGS 84 / UTM zone 60S', whose eastings "
@@ -2315,8 +2326,6 @@ def test_catchment_geopackage_in_metres_beside_a_layer_of_lon_lat_points():
     # adds no ring, so its system is not the catchment's, and the run gives the lon/lat files'
     # means to 1e-8. It was refused, told at once that the metres were read as lon/lat and that
     # they looked projected.
-    import json
-
     wgs84 = ('GEOGCS["WGS 84",DATUM["WGS_1984",SPHEROID["WGS 84",6378137,298.257223563]],PRIMEM["Greenwich",0],'
              'UNIT["degree",0.0174532925199433]]')
     albers = (f'PROJCS["lake_aea",{wgs84},PROJECTION["Albers_Conic_Equal_Area"],PARAMETER["latitude_of_center",-39],'
@@ -2325,9 +2334,8 @@ def test_catchment_geopackage_in_metres_beside_a_layer_of_lon_lat_points():
               'UNIT["metre",1]]')
     with tempfile.TemporaryDirectory() as out:
         catchment, stations, observations = write_lake_basin(out)
-        rings = [[[a[0] + (b[0] - a[0]) * i / 1000, a[1] + (b[1] - a[1]) * i / 1000] for a, b in zip(ring, ring[1:])
-                  for i in range(1000)] + ring[-1:] for ring in LAKE_BASIN["features"][0]["geometry"]["coordinates"]]
-        metres = [[snyder_conic("aea", x, y, 176, -39, -38, -40, 1e6, 2e6) for x, y in ring] for ring in rings]
+        metres = [[snyder_conic("aea", x, y, 176, -39, -38, -40, 1e6, 2e6) for x, y in ring]
+                  for ring in lake_rings_cut()]
         for name, layers in (("alone", [("basin", albers, "POLYGON", [metres])]),
                              ("beside_points", [("basin", albers, "POLYGON", [metres]),
                                                 ("gauges", wgs84, "POINT", list(LAKE_GAUGES.values()))])):
@@ -2339,10 +2347,8 @@ def test_catchment_geopackage_in_metres_beside_a_layer_of_lon_lat_points():
                         made[0], f"{name}: {stderr}")
             lonlat = os.path.join(out, f"lonlat_{name}")
             if name == "alone":
-                cut = dict(LAKE_BASIN, features=[dict(LAKE_BASIN["features"][0], geometry={
-                    "type": "Polygon", "coordinates": rings})])
                 run_colorado(lonlat, stations=stations, observations=observations, plots=False, what="lon/lat",
-                             catchment=write(out, "cut.geojson", json.dumps(cut)))
+                             catchment=write_lake_basin_cut(out))
                 want = read_csv(os.path.join(lonlat, "areal_mean.csv"))
             assert_same_means(read_csv(os.path.join(out, name, "areal_mean.csv")), want, name)
 
@@ -2391,12 +2397,11 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
 
     with tempfile.TemporaryDirectory() as out:
         catchment, stations, observations = write_lake_basin(out)
-        rings = [[[a[0] + (b[0] - a[0]) * i / 1000, a[1] + (b[1] - a[1]) * i / 1000] for a, b in zip(ring, ring[1:])
-                  for i in range(1000)] + ring[-1:] for ring in LAKE_BASIN["features"][0]["geometry"]["coordinates"]]
+        rings = lake_rings_cut()
         cut = json.loads(json.dumps(LAKE_BASIN))
         cut["features"][0]["geometry"]["coordinates"] = rings
         run_colorado(os.path.join(out, "lonlat"), stations=stations, observations=observations,
-                     catchment=write(out, "cut.geojson", json.dumps(cut)), plots=False, what="lon/lat")
+                     catchment=write_lake_basin_cut(out), plots=False, what="lon/lat")
         want = read_csv(os.path.join(out, "lonlat", "areal_mean.csv"))
 
         def catchment_in(name):
