@@ -233,14 +233,45 @@ int ScaleExponent(double largest)
   return largest > 0.0 ? std::ilogb(largest) + 1 : 0;
 }
 
+// The samples of the curve of these controls and weights at the indices where samples is not
+// finite (all of them, at first), scaled by 2^xExponent and 2^yExponent.
+void SampleWhereNotFinite(const std::vector<double>& nodes,
+  const std::vector<Point2>& controls,
+  const std::vector<double>& weights,
+  double sigma,
+  bool closed,
+  int xExponent,
+  int yExponent,
+  std::vector<Point2>& samples)
+{
+  const std::vector<ControlPoint> sorted = SortedControls(nodes, controls, weights, closed);
+  const double denominator = closed ? samples.size() : samples.size() - 1;
+  for (std::size_t s = 0; s < samples.size(); ++s)
+  {
+    if (std::isfinite(samples[s].x) && std::isfinite(samples[s].y))
+    {
+      continue;
+    }
+    const double u = double(s) / denominator;
+    Point2 sample;
+    if (!WindowedAverage(sorted, u, sigma, closed, sample))
+    {
+      sample = PeriodicFullSum(nodes, controls, weights, u, sigma);
+    }
+    samples[s] = { std::ldexp(sample.x, xExponent), std::ldexp(sample.y, yExponent) };
+  }
+}
+
 } // namespace
 
 // The sums of weight x coordinate overflow for finite input: 2000 points about 9e305 (within the
 // +-1e306 RidgeGrouping takes) gave NaN samples, and so did weights of 1e300 on coordinates of 10.
-// The controls are scaled into (-1, 1) and the weights to a largest of [1, 2) by powers of two,
-// which are exact (the curve is the same to the bit wherever nothing overflowed): the sums are
-// then at most the number of controls. A weight below 2^-1074 of the largest (which would become
-// 0) is kept at the smallest double.
+// A sample that does not come out finite is computed again from the controls' x and y, each
+// scaled into (-1, 1) by a power of two (exact; the sums are then at most the number of controls),
+// and where that is not enough, from the weights too scaled to a largest of [1, 2). The samples
+// that came out finite are the unscaled sums' (scaling every sample lost the weights below 2^-1074
+// of the largest, which decide the curve far from that control's node, and made tiny y subnormal
+// beside huge x).
 std::vector<Point2> SampleRationalGaussianCurve(const std::vector<double>& nodes,
   const std::vector<Point2>& controls,
   const std::vector<double>& weights,
@@ -249,34 +280,35 @@ std::vector<Point2> SampleRationalGaussianCurve(const std::vector<double>& nodes
   int sampleCount)
 {
   CheckInput(nodes, controls, weights, sigma, sampleCount);
-  double largest = 0.0;
+  constexpr double NotYet = std::numeric_limits<double>::quiet_NaN();
+  std::vector<Point2> samples(static_cast<std::size_t>(sampleCount), Point2{ NotYet, NotYet });
+  SampleWhereNotFinite(nodes, controls, weights, sigma, closed, 0, 0, samples);
+  if (std::all_of(samples.begin(),
+        samples.end(),
+        [](const Point2& p) { return std::isfinite(p.x) && std::isfinite(p.y); }))
+  {
+    return samples;
+  }
+  double largestX = 0.0, largestY = 0.0;
   for (const Point2& c : controls)
   {
-    largest = std::max({ largest, std::fabs(c.x), std::fabs(c.y) });
+    largestX = std::max(largestX, std::fabs(c.x));
+    largestY = std::max(largestY, std::fabs(c.y));
   }
-  const int exponent = ScaleExponent(largest);
-  const int weightExponent = ScaleExponent(*std::max_element(weights.begin(), weights.end())) - 1;
+  const int xExponent = ScaleExponent(largestX), yExponent = ScaleExponent(largestY);
   std::vector<Point2> scaled(controls.size());
-  std::vector<double> scaledWeights(weights.size());
   for (std::size_t k = 0; k < controls.size(); ++k)
   {
-    scaled[k] = { std::ldexp(controls[k].x, -exponent), std::ldexp(controls[k].y, -exponent) };
-    scaledWeights[k] =
-      std::max(std::ldexp(weights[k], -weightExponent), std::numeric_limits<double>::denorm_min());
+    scaled[k] = { std::ldexp(controls[k].x, -xExponent), std::ldexp(controls[k].y, -yExponent) };
   }
-  const std::vector<ControlPoint> sorted = SortedControls(nodes, scaled, scaledWeights, closed);
-  std::vector<Point2> samples(static_cast<std::size_t>(sampleCount));
-  const double denominator = closed ? sampleCount : sampleCount - 1;
-  for (int s = 0; s < sampleCount; ++s)
+  SampleWhereNotFinite(nodes, scaled, weights, sigma, closed, xExponent, yExponent, samples);
+  const int weightExponent = ScaleExponent(*std::max_element(weights.begin(), weights.end())) - 1;
+  std::vector<double> scaledWeights(weights.size());
+  for (std::size_t k = 0; k < weights.size(); ++k)
   {
-    const double u = s / denominator;
-    Point2 sample;
-    if (!WindowedAverage(sorted, u, sigma, closed, sample))
-    {
-      sample = PeriodicFullSum(nodes, scaled, scaledWeights, u, sigma);
-    }
-    samples[s] = { std::ldexp(sample.x, exponent), std::ldexp(sample.y, exponent) };
+    scaledWeights[k] = std::ldexp(weights[k], -weightExponent);
   }
+  SampleWhereNotFinite(nodes, scaled, scaledWeights, sigma, closed, xExponent, yExponent, samples);
   return samples;
 }
 

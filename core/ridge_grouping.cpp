@@ -113,8 +113,9 @@ void AppendPixelPolyline(const RidgeContours& contours,
 // One RaG curve per contour. Points sharing a projection pixel share a node, so they enter as
 // their mean with their count as weight (the same curve, evaluated per pixel instead of per
 // point); points whose node was extended past a contour end enter one by one. The means are summed
-// scaled into (-1, 1) by a power of two (exact): 300 copies of a point at 9e305 summed to
-// infinity, and the run failed on a "RaG control point" with an infinite coordinate.
+// scaled into (-1, 1) by a power of two for x and one for y (exact but where a coordinate falls
+// below 2^-1022 of its axis's largest): 300 copies of a point at 9e305 summed to infinity, and the
+// run failed on a "RaG control point" with an infinite coordinate.
 void FitCurves(const std::vector<Point2>& points,
   const RidgeContours& contours,
   const PointPartition& partition,
@@ -126,12 +127,14 @@ void FitCurves(const std::vector<Point2>& points,
   std::vector<double> sumY(positions, 0.0);
   std::vector<double> count(positions, 0.0);
   std::vector<std::vector<std::size_t>> extended(contours.Count());
-  double largest = 0.0;
+  double largestX = 0.0, largestY = 0.0;
   for (const Point2& p : points)
   {
-    largest = std::max({ largest, std::fabs(p.x), std::fabs(p.y) });
+    largestX = std::max(largestX, std::fabs(p.x));
+    largestY = std::max(largestY, std::fabs(p.y));
   }
-  const int exponent = largest > 0.0 ? std::ilogb(largest) + 1 : 0;
+  const int xExponent = largestX > 0.0 ? std::ilogb(largestX) + 1 : 0;
+  const int yExponent = largestY > 0.0 ? std::ilogb(largestY) + 1 : 0;
   for (std::size_t k = 0; k < points.size(); ++k)
   {
     const int position = partition.Projection[k];
@@ -144,8 +147,8 @@ void FitCurves(const std::vector<Point2>& points,
       extended[partition.GroupId[k]].push_back(k);
       continue;
     }
-    sumX[position] += std::ldexp(points[k].x, -exponent);
-    sumY[position] += std::ldexp(points[k].y, -exponent);
+    sumX[position] += std::ldexp(points[k].x, -xExponent);
+    sumY[position] += std::ldexp(points[k].y, -yExponent);
     count[position] += 1.0;
   }
   std::vector<int> single; // groups of one point: no curve to fit
@@ -161,7 +164,7 @@ void FitCurves(const std::vector<Point2>& points,
         nodes.push_back(std::clamp(
           partition.NodeOrigin[c] + partition.ArcLength[k] * partition.NodePerPixel[c], 0.0, 1.0));
         controls.push_back(
-          { std::ldexp(sumX[k] / count[k], exponent), std::ldexp(sumY[k] / count[k], exponent) });
+          { std::ldexp(sumX[k] / count[k], xExponent), std::ldexp(sumY[k] / count[k], yExponent) });
         weights.push_back(count[k]);
       }
     }

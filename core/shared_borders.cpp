@@ -48,14 +48,14 @@ double InsideParameter(const Point2& a, const Point2& b, const Point2& v)
   return along / length;
 }
 
-// A grid over the vertices' box whose cells list the edges whose boxes (widened by their
-// tolerance) meet them: about one edge a cell.
+// A grid over the vertices' box whose cells list the edges that pass through them (widened by
+// their tolerance): about one vertex a cell, and an edge listed only in the cells along it, so that
+// long slanted edges (the tiles of a transect's gauges) cost their length in cells, not their box.
 class EdgeGrid
 {
 public:
-  EdgeGrid(const ClippedRings& rings, const std::vector<std::size_t>& ringOf)
+  EdgeGrid(const std::vector<Point2>& v, const std::vector<std::size_t>& next)
   {
-    const std::vector<Point2>& v = rings.Vertices;
     for (const Point2& p : v)
     {
       this->Low = { std::min(this->Low.x, p.x), std::min(this->Low.y, p.y) };
@@ -64,32 +64,24 @@ public:
     this->Side = std::clamp(static_cast<int>(std::ceil(std::sqrt(double(v.size())))), 1, 1024);
     this->Starts.assign(std::size_t(this->Side) * this->Side + 1, 0);
     // Two passes: count each cell's edges, then fill them in (a flat array, cell by cell).
+    std::vector<std::size_t> fill;
     for (int pass = 0; pass < 2; ++pass)
     {
-      std::vector<std::size_t> next(this->Starts.begin(), this->Starts.end() - 1);
       for (std::size_t e = 0; e < v.size(); ++e)
       {
-        const Point2& a = v[e];
-        const Point2& b = v[NextVertex(rings, ringOf, e)];
-        const double tolerance = Tolerance(a, b);
-        int x0, y0, x1, y1;
-        this->CellOf({ std::min(a.x, b.x) - tolerance, std::min(a.y, b.y) - tolerance }, x0, y0);
-        this->CellOf({ std::max(a.x, b.x) + tolerance, std::max(a.y, b.y) + tolerance }, x1, y1);
-        for (int y = y0; y <= y1; ++y)
-        {
-          for (int x = x0; x <= x1; ++x)
+        this->ForEachCellAlong(v[e],
+          v[next[e]],
+          [&](std::size_t cell)
           {
-            const std::size_t cell = std::size_t(y) * this->Side + x;
             if (pass == 0)
             {
               ++this->Starts[cell + 1];
             }
             else
             {
-              this->Edges[next[cell]++] = e;
+              this->Edges[fill[cell]++] = e;
             }
-          }
-        }
+          });
       }
       if (pass == 0)
       {
@@ -98,22 +90,9 @@ public:
           this->Starts[c] += this->Starts[c - 1];
         }
         this->Edges.resize(this->Starts.back());
+        fill.assign(this->Starts.begin(), this->Starts.end() - 1);
       }
     }
-  }
-
-  static std::size_t NextVertex(const ClippedRings& rings,
-    const std::vector<std::size_t>& ringOf,
-    std::size_t e)
-  {
-    const std::size_t r = ringOf[e];
-    return e + 1 < rings.RingOffsets[r + 1] ? e + 1 : rings.RingOffsets[r];
-  }
-
-  void CellOf(const Point2& p, int& x, int& y) const
-  {
-    x = Index(p.x, this->Low.x, this->High.x);
-    y = Index(p.y, this->Low.y, this->High.y);
   }
 
   // The edges listed in the cell of p.
@@ -127,6 +106,37 @@ public:
   }
 
 private:
+  // Calls f(cell) for each cell that a -> b, widened by twice its tolerance, meets: column by
+  // column, the rows of the edge's stretch over that column.
+  template<typename F>
+  void ForEachCellAlong(const Point2& a, const Point2& b, F&& f) const
+  {
+    const double margin = 2.0 * Tolerance(a, b);
+    const double left = std::min(a.x, b.x), right = std::max(a.x, b.x);
+    const int x0 = Index(left - margin, this->Low.x, this->High.x);
+    const int x1 = Index(right + margin, this->Low.x, this->High.x);
+    const double columnWidth = (this->High.x - this->Low.x) / this->Side;
+    for (int x = x0; x <= x1; ++x)
+    {
+      double yLow = std::min(a.y, b.y), yHigh = std::max(a.y, b.y);
+      if (a.x != b.x && x0 != x1)
+      {
+        const double from = std::max(left, this->Low.x + x * columnWidth - margin);
+        const double to = std::min(right, this->Low.x + (x + 1) * columnWidth + margin);
+        const double slope = (b.y - a.y) / (b.x - a.x);
+        const double yFrom = a.y + (from - a.x) * slope, yTo = a.y + (to - a.x) * slope;
+        yLow = std::max(yLow, std::min(yFrom, yTo));
+        yHigh = std::min(yHigh, std::max(yFrom, yTo));
+      }
+      const int y0 = Index(yLow - margin, this->Low.y, this->High.y);
+      const int y1 = Index(yHigh + margin, this->Low.y, this->High.y);
+      for (int y = y0; y <= y1; ++y)
+      {
+        f(std::size_t(y) * this->Side + x);
+      }
+    }
+  }
+
   int Index(double c, double low, double high) const
   {
     const double width = high - low;
@@ -140,9 +150,8 @@ private:
 
   std::size_t Cell(const Point2& p) const
   {
-    int x, y;
-    this->CellOf(p, x, y);
-    return std::size_t(y) * this->Side + x;
+    return std::size_t(Index(p.y, this->Low.y, this->High.y)) * this->Side +
+      Index(p.x, this->Low.x, this->High.x);
   }
 
   Point2 Low{ HUGE_VAL, HUGE_VAL };
@@ -156,18 +165,37 @@ private:
 
 ClippedRings ShareBorderVertices(const ClippedRings& pieces)
 {
-  const std::vector<Point2>& v = pieces.Vertices;
-  if (v.empty())
+  // The tests run on the vertices scaled by a power of two to a largest coordinate below 1
+  // (exact): coordinates of 1e308 overflowed the grid's box, and beyond some 1e154 the products
+  // of InsideParameter did. Vertices that are not finite are left as they are, unshared.
+  double largest = 0.0;
+  for (const Point2& p : pieces.Vertices)
+  {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+    {
+      return pieces;
+    }
+    largest = std::max({ largest, std::fabs(p.x), std::fabs(p.y) });
+  }
+  if (largest == 0.0)
   {
     return pieces;
   }
-  std::vector<std::size_t> ringOf(v.size());
+  const int exponent = std::ilogb(largest) + 1;
+  std::vector<Point2> v(pieces.Vertices.size());
+  std::vector<std::size_t> ringOf(v.size()), next(v.size());
   for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
   {
-    std::fill(
-      ringOf.begin() + pieces.RingOffsets[r], ringOf.begin() + pieces.RingOffsets[r + 1], r);
+    const std::size_t begin = pieces.RingOffsets[r], end = pieces.RingOffsets[r + 1];
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      v[k] = { std::ldexp(pieces.Vertices[k].x, -exponent),
+        std::ldexp(pieces.Vertices[k].y, -exponent) };
+      ringOf[k] = r;
+      next[k] = k + 1 < end ? k + 1 : begin;
+    }
   }
-  const EdgeGrid grid(pieces, ringOf);
+  const EdgeGrid grid(v, next);
   std::vector<Insertion> insertions;
   for (std::size_t k = 0; k < v.size(); ++k)
   {
@@ -177,10 +205,10 @@ ClippedRings ShareBorderVertices(const ClippedRings& pieces)
       {
         continue; // (a piece's own vertex is never inside its own edge: its ring is simple)
       }
-      const double t = InsideParameter(v[*e], v[EdgeGrid::NextVertex(pieces, ringOf, *e)], v[k]);
+      const double t = InsideParameter(v[*e], v[next[*e]], v[k]);
       if (t > 0.0)
       {
-        insertions.push_back({ *e, t, v[k] });
+        insertions.push_back({ *e, t, pieces.Vertices[k] });
       }
     }
   }
@@ -194,17 +222,17 @@ ClippedRings ShareBorderVertices(const ClippedRings& pieces)
     { return a.Edge != b.Edge ? a.Edge < b.Edge : a.T < b.T; });
   ClippedRings out;
   out.Vertices.reserve(v.size() + insertions.size());
-  auto next = insertions.begin();
+  auto inserted = insertions.begin();
   for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
   {
     for (std::size_t k = pieces.RingOffsets[r]; k < pieces.RingOffsets[r + 1]; ++k)
     {
-      out.Vertices.push_back(v[k]);
-      for (; next != insertions.end() && next->Edge == k; ++next)
+      out.Vertices.push_back(pieces.Vertices[k]);
+      for (; inserted != insertions.end() && inserted->Edge == k; ++inserted)
       {
-        if (!(next->Vertex == out.Vertices.back())) // (the same point from two pieces: once)
+        if (!(inserted->Vertex == out.Vertices.back())) // (the same point from two pieces: once)
         {
-          out.Vertices.push_back(next->Vertex);
+          out.Vertices.push_back(inserted->Vertex);
         }
       }
     }

@@ -1435,6 +1435,10 @@ def read_catchment(path, feature=None):
     say_gdal_messages(path, gdal, "Non closed ring detected")  # (the filter names an open ring)
     system = projected_input.declared_system(reader, rings, path)
     if system:
+        output, points = without_point_blocks(output)
+        if points:  # (a GeoPackage's layer of gauges: lon/lat, which the system's inverse would refuse)
+            print(f"{path}: {points} feature(s) of points are not polygons, and are left out of the catchment",
+                  file=sys.stderr)
         output = projected_input.to_lonlat(output, system, lambda point: path, densify=True)
         rings = catchment_rings(output)
     for k, ring in holes_outside_their_polygons(path, feature):
@@ -1454,6 +1458,20 @@ def read_catchment(path, feature=None):
               "that value", file=sys.stderr)
     say_declared_systems(reader, path, system)
     return output, rings
+
+
+def without_point_blocks(data):
+    """(blocks, count): the polydata blocks of a vtkGDALVectorReader's output that have polygons or
+    lines, as a new multiblock, and the number of blocks left out (points only)."""
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+
+    kept, left_out = vtkMultiBlockDataSet(), 0
+    for block in projected_input.polydata_blocks(data):
+        if block.GetNumberOfPolys() or block.GetNumberOfLines() or not block.GetNumberOfVerts():
+            kept.SetBlock(kept.GetNumberOfBlocks(), block)
+        else:
+            left_out += 1
+    return kept, left_out
 
 
 def say_declared_systems(reader, path, system, points=False):

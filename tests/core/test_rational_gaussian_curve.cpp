@@ -224,6 +224,41 @@ TEST(RationalGaussianCurve, LargeCoordinatesAndWeightsDoNotOverflow)
   }
 }
 
+// Where nothing overflows, nothing is scaled: weights far below the largest decide the curve far
+// from that control's node (at u = 0.95 with sigma 0.01 the weight of 1e300 at node 0 counts
+// e^-4512 of itself, nothing, and the sample is the mean of the controls at 0.9 and 1 weighted
+// 1 : 3), and a tiny y beside a huge x keeps its digits. Scaling every sample gave (0, 16) for
+// (4, 17.5), and y wrong in the 4th digit.
+TEST(RationalGaussianCurve, SmallWeightsAndCoordinatesKeepTheirDigits)
+{
+  const std::vector<double> nodes{ 0.0, 0.9, 1.0 };
+  const std::vector<Point2> controls{ { 0, 0 }, { 1, 10 }, { 5, 20 } };
+  for (const double small : { 1e-10, 1e-30, 1e-200 })
+  {
+    const auto curve = tessera::SampleRationalGaussianCurve(
+      nodes, controls, { 1e300, small, 3 * small }, 0.01, false, 21);
+    EXPECT_NEAR(curve[19].x, 4.0, 1e-12) << small;
+    EXPECT_NEAR(curve[19].y, 17.5, 1e-12) << small;
+  }
+  std::vector<double> randomNodes;
+  std::vector<Point2> points;
+  RandomControls(200, 9, randomNodes, points);
+  std::vector<Point2> tinyY(points.size()), largeY(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    tinyY[i] = { 1e20 * (1 + points[i].x), 1e-300 * (20 + points[i].y) };
+    largeY[i] = { tinyY[i].x, std::ldexp(tinyY[i].y, 1000) }; // (y scaled alone: an affine map)
+  }
+  const std::vector<double> ones(points.size(), 1.0);
+  const auto tiny = tessera::SampleRationalGaussianCurve(randomNodes, tinyY, ones, 0.04, false, 50);
+  const auto large =
+    tessera::SampleRationalGaussianCurve(randomNodes, largeY, ones, 0.04, false, 50);
+  for (std::size_t s = 0; s < tiny.size(); ++s)
+  {
+    EXPECT_NEAR(std::ldexp(tiny[s].y, 1000), large[s].y, 1e-14 * std::fabs(large[s].y)) << s;
+  }
+}
+
 TEST(RationalGaussianCurve, RejectsBadInput)
 {
   const std::vector<double> nodes = { 0.0, 0.5 };

@@ -215,4 +215,23 @@ TEST(SharedBorders, NothingToShare)
   ASSERT_EQ(shared.RingOffsets[1], 5U);
   EXPECT_EQ(shared.Vertices[2].x, 1.0);
   EXPECT_EQ(shared.Vertices[2].y, 0.5);
+  // The same at any scale (1e308 overflowed the grid's box and crashed; beyond 1e154 nothing was
+  // shared), and unshared, unchanged, with a coordinate that is not finite.
+  for (const double scale : { 1e-300, 1e-150, 1e150, 1e300, 0x1p1020 })
+  {
+    ClippedRings scaled = two;
+    for (Point2& p : scaled.Vertices)
+    {
+      p = { p.x * scale, p.y * scale };
+    }
+    const ClippedRings sharedScaled = ShareBorderVertices(scaled);
+    ASSERT_EQ(sharedScaled.Vertices.size(), shared.Vertices.size()) << scale;
+    EXPECT_EQ(sharedScaled.Vertices[2].y, 0.5 * scale) << scale;
+  }
+  for (const double bad : { HUGE_VAL, -HUGE_VAL, std::nan("") })
+  {
+    ClippedRings withBad = two;
+    withBad.Vertices[6].x = bad;
+    EXPECT_EQ(ShareBorderVertices(withBad).Vertices.size(), two.Vertices.size()) << bad;
+  }
 }

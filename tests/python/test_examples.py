@@ -2321,36 +2321,43 @@ def geopackage_of(path, layers):
 
 
 def test_catchment_geopackage_in_metres_beside_a_layer_of_lon_lat_points():
-    # A GeoPackage whose catchment layer is in metres of an Albers conic and which also holds the
-    # gauges as a layer of points in lon/lat (as a GIS project is often saved): the points layer
-    # adds no ring, so its system is not the catchment's, and the run gives the lon/lat files'
-    # means to 1e-8. It was refused, told at once that the metres were read as lon/lat and that
-    # they looked projected.
+    # A GeoPackage whose catchment layer is in metres (of an Albers conic, of UTM 60S) and which
+    # also holds the gauges as a layer of points in lon/lat (as a GIS project is often saved): the
+    # points layer adds no ring, so its system is not the catchment's, it is left out (and said)
+    # before the metres are made lon/lat, and the run gives the lon/lat files' means to 1e-8. It
+    # was refused, told at once that the metres were read as lon/lat and that they looked
+    # projected; then, in UTM, its lon/lat points were refused as UTM points no place projects to.
     wgs84 = ('GEOGCS["WGS 84",DATUM["WGS_1984",SPHEROID["WGS 84",6378137,298.257223563]],PRIMEM["Greenwich",0],'
              'UNIT["degree",0.0174532925199433]]')
-    albers = (f'PROJCS["lake_aea",{wgs84},PROJECTION["Albers_Conic_Equal_Area"],PARAMETER["latitude_of_center",-39],'
-              'PARAMETER["longitude_of_center",176],PARAMETER["standard_parallel_1",-38],PARAMETER['
-              '"standard_parallel_2",-40],PARAMETER["false_easting",1000000],PARAMETER["false_northing",2000000],'
-              'UNIT["metre",1]]')
+    systems = {
+        "lake_aea": ('PROJECTION["Albers_Conic_Equal_Area"],PARAMETER["latitude_of_center",-39],PARAMETER['
+                     '"longitude_of_center",176],PARAMETER["standard_parallel_1",-38],PARAMETER["standard_parallel_2",'
+                     '-40],PARAMETER["false_easting",1000000],PARAMETER["false_northing",2000000]',
+                     lambda ring: [snyder_conic("aea", x, y, 176, -39, -38, -40, 1e6, 2e6) for x, y in ring]),
+        "lake_utm": ('PROJECTION["Transverse_Mercator"],PARAMETER["latitude_of_origin",0],PARAMETER['
+                     '"central_meridian",177],PARAMETER["scale_factor",0.9996],PARAMETER["false_easting",500000],'
+                     'PARAMETER["false_northing",10000000]', utm_60s)}
     with tempfile.TemporaryDirectory() as out:
         catchment, stations, observations = write_lake_basin(out)
-        metres = [[snyder_conic("aea", x, y, 176, -39, -38, -40, 1e6, 2e6) for x, y in ring]
-                  for ring in lake_rings_cut()]
-        for name, layers in (("alone", [("basin", albers, "POLYGON", [metres])]),
-                             ("beside_points", [("basin", albers, "POLYGON", [metres]),
-                                                ("gauges", wgs84, "POINT", list(LAKE_GAUGES.values()))])):
-            path = geopackage_of(os.path.join(out, f"{name}.gpkg"), layers)
-            _, stderr = run_colorado(os.path.join(out, name), stations=stations, observations=observations,
-                                     catchment=path, plots=False, what=name)
-            made = [m for m in stderr_messages(stderr) if m.startswith(f"{path}: declares ")]
-            assert_that(len(made) == 1 and "'lake_aea', whose eastings and northings are made longitude/latitude" in
-                        made[0], f"{name}: {stderr}")
-            lonlat = os.path.join(out, f"lonlat_{name}")
-            if name == "alone":
-                run_colorado(lonlat, stations=stations, observations=observations, plots=False, what="lon/lat",
-                             catchment=write_lake_basin_cut(out))
-                want = read_csv(os.path.join(lonlat, "areal_mean.csv"))
-            assert_same_means(read_csv(os.path.join(out, name, "areal_mean.csv")), want, name)
+        run_colorado(os.path.join(out, "lonlat"), stations=stations, observations=observations, plots=False,
+                     what="lon/lat", catchment=write_lake_basin_cut(out))
+        want = read_csv(os.path.join(out, "lonlat", "areal_mean.csv"))
+        for system, (terms, forward) in systems.items():
+            wkt = f'PROJCS["{system}",{wgs84},{terms},UNIT["metre",1]]'
+            basin = ("basin", wkt, "POLYGON", [[forward(ring) for ring in lake_rings_cut()]])
+            for name, layers in (("alone", [basin]),
+                                 ("beside_points", [basin, ("gauges", wgs84, "POINT", list(LAKE_GAUGES.values()))])):
+                path = geopackage_of(os.path.join(out, f"{system}_{name}.gpkg"), layers)
+                _, stderr = run_colorado(os.path.join(out, f"{system}_{name}"), stations=stations,
+                                         observations=observations, catchment=path, plots=False, what=name)
+                said = [m for m in stderr_messages(stderr) if m.startswith(f"{path}: ")]
+                assert_that(f"{path}: declares the projected coordinate system '{system}', whose eastings and "
+                            "northings are made longitude/latitude" in " ".join(said) and
+                            (f"{path}: 6 feature(s) of points are not polygons, and are left out of the catchment"
+                             in said) == (name == "beside_points") and len(said) == 1 + (name == "beside_points"),
+                            f"{system}, {name}: {stderr}")
+                assert_same_means(read_csv(os.path.join(out, f"{system}_{name}", "areal_mean.csv")), want,
+                                  f"{system}, {name}")
 
 
 def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
