@@ -294,6 +294,7 @@ private:
   void RecomputeStatusBytes();
   void RecomputeVertexEdges();
   void AddDuplicatePair(std::int32_t duplicate, std::int32_t kept);
+  void ResolveDuplicateChains();
   std::vector<std::pair<std::int32_t, std::int32_t>>::const_iterator FindDuplicatePair(
     std::int32_t id) const;
   /// One triangle of a re-triangulated hole: its vertices and the twins of its three half-edges
@@ -354,6 +355,9 @@ private:
   bool CollinearUnsorted = false;
   std::vector<std::int32_t> Rejected;
   std::vector<std::pair<std::int32_t, std::int32_t>> DuplicatePairs;
+  /// During BuildFrom: a kept point gave way to a copy with a smaller input id, so pairs may name
+  /// a point that is now a duplicate as kept (ResolveDuplicateChains follows them at the end).
+  bool DuplicateChains = false;
   /// Per id, a PointStatus in the low bits plus HasDuplicates for an accepted point that exact
   /// copies point to; empty until the first Insert or Remove (a batch build does not pay for it).
   std::vector<std::uint8_t> StatusBytes;
