@@ -33,6 +33,7 @@
 #include "cache_line.h"
 #include "geometry.h"
 #include "uninitialized_allocator.h"
+#include "walk_hints.h"
 #include "window.h"
 
 #include <cstddef>
@@ -77,8 +78,8 @@ public:
   /// point is then not appended, and the next point inserted gets that id.
   /// nearId: an accepted point near p, where the walk to p starts when vertex edges are tracked
   /// (TrackVertexEdges); otherwise, or for -1, at the triangle made last, or, while walks from
-  /// it run long (points in random order), at the nearest to p of it and triangles sampled at
-  /// random (jump and walk). The result
+  /// it run long (points in random order), at the nearest to p of it and the triangles an index
+  /// along a Hilbert curve holds beside p (jump and walk, walk_hints.h). The result
   /// is the same either way: only the walk's length differs (so an id that is no accepted point,
   /// out of range included, is not an error: the walk starts as for -1).
   std::int32_t Insert(const Point2& p, std::int32_t nearId = -1);
@@ -173,8 +174,9 @@ public:
   /// Bytes held by the structure (capacities of all arrays, coordinates included). A batch build
   /// holds no per-id arrays besides the coordinates; the first Insert adds a status byte per id
   /// and the first Remove an incident half-edge per id (4 bytes, so that Remove finds its
-  /// vertex in O(1)): 69 bytes per point in streaming use. OrderTrianglesByVertex keeps its
-  /// arrays (about 60 bytes per point more) once called.
+  /// vertex in O(1)): 69 bytes per point in streaming use, and a stream in no spatial order
+  /// builds the walk hints (8 bytes a triangle, some 16 a point). OrderTrianglesByVertex keeps
+  /// its arrays (about 60 bytes per point more) once called.
   std::size_t StructureBytes() const;
 
   /// Triangles made (new or from freed slots) since the build or the last
@@ -250,6 +252,7 @@ private:
   };
   Jumping JumpMode = Jumping::Off;
   int JumpMisses = 0; ///< jumps in a row, while on, that found no nearer start
+  WalkHints Hints;    ///< JumpTowards's index of the triangles (built on first need)
   void JumpTowards(const Point2& p);
   void InsertAcceptedPoint(std::int32_t id);
   void InsertCollinear(std::int32_t id);
