@@ -409,15 +409,15 @@ void DirichletTessellation::InsertKnownPoint(std::int32_t id, std::int32_t nearI
 
 // Jump and walk (Muecke, Saias and Zhu 1996), while walks run long: the walk to p starts at
 // whichever is nearest p (by their vertices) of the triangle made last and the triangles indexed
-// beside p along a Hilbert curve (walk_hints.h; built on first need, again whenever the triangles
-// have doubled), or, where there is no index (the points' box has no extent), triangles sampled
-// at random. With random samples alone every sample and step was a cache miss: 10^6 uniform points
-// in random order took 18.8 s (3.1 s now, the batch 0.3 s), 10^5 along a parabola 1.3 s (0.10 s).
-// From the last triangle alone, points streamed in random order walked O(sqrt n) triangles each,
-// and points along a line that doubles only approximate (y = x/3: a fan of slivers) O(n): 10000 of
-// them took 2.35 s, where a batch took 0.11 s (0.13 s now). A stream in spatial order must not pay
-// for it (each sample is a cache miss or two at 10^6 points: sampling at every point made one 5
-// times slower), so:
+// beside p along a Hilbert curve (walk_hints.h; built on first need, again once as many points
+// were inserted since, cleared where triangles are renumbered or made again), or, where there is no
+// index (the points' box has no extent), triangles sampled at random. With random samples alone
+// every sample and step was a cache miss: 10^6 uniform points in random order took 18.8 s (3.1 s
+// now, the batch 0.3 s), 10^5 along a parabola 1.3 s (0.10 s). From the last triangle alone, points
+// streamed in random order walked O(sqrt n) triangles each, and points along a line that doubles
+// only approximate (y = x/3: a fan of slivers) O(n): 10000 of them took 2.35 s, where a batch took
+// 0.11 s (0.13 s now). A stream in spatial order must not pay for it (each sample is a cache miss
+// or two at 10^6 points: sampling at every point made one 5 times slower), so:
 //
 //   Off --walk of 2 cube roots of the triangles or more--> Probe (the index, or 16 samples)
 //   Probe --a start nearer than the last triangle--> On (the index, or a quarter as many samples
@@ -456,9 +456,16 @@ void DirichletTessellation::JumpTowards(const Point2& p)
   };
   std::int32_t best = this->Serial.LastTriangle;
   double bestDistance = distanceTo(best);
-  if (this->Hints.BuiltFor() == 0 || std::size_t(triangles) > 2 * this->Hints.BuiltFor())
+  // (again once as many points were inserted or removed since as it held, about half its
+  // triangles: when they have doubled, and after a churn that freed and reused its triangles
+  // elsewhere: 90% of 2x10^5 points removed, the stream after took 2.5 s, 0.18 s fresh)
+  if (this->Hints.BuiltFor() == 0 ||
+    this->Serial.Inserted - this->HintsInsertedMark + this->RemovalsSinceHints >=
+      this->Hints.BuiltFor() / 2)
   {
     this->Hints.Build(this->Origins.data(), this->Origins.size(), this->Coordinates);
+    this->HintsInsertedMark = this->Serial.Inserted;
+    this->RemovalsSinceHints = 0;
   }
   std::int32_t near[3];
   const int hints = this->Hints.Near(p, near);
@@ -1466,6 +1473,7 @@ void DirichletTessellation::Remove(std::int32_t id)
     this->Collinear.erase(onLine);
     return;
   }
+  ++this->RemovalsSinceHints;
   // The paths above change no triangle and keep the co-circularity flag; an in-place removal
   // tests its new triangles against their neighbours (AnyCocircularNeighbour); a rebuild sets
   // the flag afresh.
@@ -2012,6 +2020,7 @@ bool DirichletTessellation::RemoveHullVertex(std::int32_t edge)
 // tessellation built without the point.
 void DirichletTessellation::RebuildWithout(std::int32_t id)
 {
+  this->Hints.Clear();
   std::vector<char> isVertex(this->Coordinates.size(), 0);
   for (const std::int32_t v : this->Origins)
   {

@@ -386,6 +386,7 @@ void DirichletTessellation::FlipEdge(std::int32_t e)
 // triangulation (2n - 2 triangles) as a serial build would.
 void DirichletTessellation::CompactFreeTriangles()
 {
+  this->Hints.Clear(); // (its triangles are renumbered)
   std::vector<std::int32_t>& holes = this->FreeTriangles;
   std::sort(holes.begin(), holes.end());
   const std::int32_t count = std::int32_t(this->Origins.size() / 3);

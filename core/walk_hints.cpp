@@ -35,8 +35,10 @@ void WalkHints::Build(const std::int32_t* origins,
     }
   }
   const double side = std::max(this->Box.XMax - this->Box.XMin, this->Box.YMax - this->Box.YMin);
-  // (one scale for both axes, as the batch's curve; a side that overflows gives no index)
-  this->Scale = side > 0.0 && std::isfinite(side) ? Cells / side : 0.0;
+  // (one scale for both axes, as the batch's curve; a side that overflows, or one so small that
+  // the scale does, gives no index: 0 * inf at the box's edge made a NaN cell)
+  const double scale = Cells / side;
+  this->Scale = side > 0.0 && std::isfinite(side) && std::isfinite(scale) ? scale : 0.0;
   if (first || this->Scale == 0.0)
   {
     return;

@@ -26,8 +26,15 @@ public:
   /// origins; a negative entry is the ghost vertex or a free triangle's mark) by their first real
   /// vertex.
   void Build(const std::int32_t* origins, std::size_t halfEdges, const std::vector<Point2>& points);
-  /// The triangle count at the last Build (0: never built).
+  /// The triangle count at the last Build (0: never built, or cleared).
   std::size_t BuiltFor() const { return this->Built; }
+  /// Forgets the index: for a triangulation whose triangles were renumbered or made again, where
+  /// it would name triangles elsewhere (a walk from the last triangle then ran O(sqrt n) again).
+  void Clear()
+  {
+    this->Built = 0;
+    this->Entries.clear();
+  }
   /// Writes up to 3 triangles indexed beside p along the curve into near; returns how many (0
   /// before a Build). They may since have been changed or freed: the caller checks.
   int Near(const Point2& p, std::int32_t near[3]) const;

@@ -67,3 +67,26 @@ TEST(WalkHints, TrianglesBesidePointsLieNearThem)
   // Points far outside the indexed box take its edge's cells and still get triangles.
   EXPECT_GE(hints.Near({ -50.0, 1e9 }, near), 1);
 }
+
+// A box so small that its scale overflows (a side below 65536 / DBL_MAX) gives no index: the
+// point at the box's edge made 0 * inf, a NaN cell (undefined behaviour, caught by the sanitizer
+// build's float-cast-overflow); streaming such points, copies included, still equals the batch.
+TEST(WalkHints, ABoxTooSmallToScaleGivesNoIndex)
+{
+  std::vector<Point2> points = tessera_test::UniformPoints(3000, 5, 0.0, 1e-305);
+  points.push_back(*std::min_element(
+    points.begin(), points.end(), [](const Point2& a, const Point2& b) { return a.x < b.x; }));
+  const Window window = Window::Rectangle(-1e-305, 2e-305, -1e-305, 2e-305);
+  const DirichletTessellation batch(window, points);
+  WalkHints hints;
+  hints.Build(batch.Origin().data(), batch.Origin().size(), batch.Points());
+  std::int32_t near[3];
+  EXPECT_EQ(hints.Near(points.back(), near), 0);
+  DirichletTessellation streamed(window);
+  for (const Point2& p : points)
+  {
+    streamed.Insert(p);
+  }
+  EXPECT_EQ(streamed.AcceptedCount(), batch.AcceptedCount());
+  EXPECT_EQ(streamed.Duplicates(), batch.Duplicates());
+}
