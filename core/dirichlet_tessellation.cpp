@@ -409,8 +409,8 @@ void DirichletTessellation::InsertKnownPoint(std::int32_t id, std::int32_t nearI
 
 // Jump and walk (Muecke, Saias and Zhu 1996), while walks run long: the walk to p starts at
 // whichever is nearest p (by their vertices) of the triangle made last and the triangles indexed
-// beside p along a Hilbert curve (walk_hints.h; built on first need, again once as many points
-// were inserted since, cleared where triangles are renumbered or made again), or, where there is no
+// beside p along a Hilbert curve (walk_hints.h; built on first need, again once stale, cleared
+// where triangles are renumbered or made again), or, where there is no
 // index (the points' box has no extent), triangles sampled at random. With random samples alone
 // every sample and step was a cache miss: 10^6 uniform points in random order took 18.8 s (3.1 s
 // now, the batch 0.3 s), 10^5 along a parabola 1.3 s (0.10 s). From the last triangle alone, points
@@ -456,16 +456,10 @@ void DirichletTessellation::JumpTowards(const Point2& p)
   };
   std::int32_t best = this->Serial.LastTriangle;
   double bestDistance = distanceTo(best);
-  // (again once as many points were inserted or removed since as it held, about half its
-  // triangles: when they have doubled, and after a churn that freed and reused its triangles
-  // elsewhere: 90% of 2x10^5 points removed, the stream after took 2.5 s, 0.18 s fresh)
-  if (this->Hints.BuiltFor() == 0 ||
-    this->Serial.Inserted - this->HintsInsertedMark + this->RemovalsSinceHints >=
-      this->Hints.BuiltFor() / 2)
+  const std::size_t changes = this->Serial.Inserted + this->Removals;
+  if (this->Hints.Stale(changes))
   {
-    this->Hints.Build(this->Origins.data(), this->Origins.size(), this->Coordinates);
-    this->HintsInsertedMark = this->Serial.Inserted;
-    this->RemovalsSinceHints = 0;
+    this->Hints.Build(this->Origins.data(), this->Origins.size(), this->Coordinates, changes);
   }
   std::int32_t near[3];
   const int hints = this->Hints.Near(p, near);
@@ -1473,7 +1467,7 @@ void DirichletTessellation::Remove(std::int32_t id)
     this->Collinear.erase(onLine);
     return;
   }
-  ++this->RemovalsSinceHints;
+  ++this->Removals;
   // The paths above change no triangle and keep the co-circularity flag; an in-place removal
   // tests its new triangles against their neighbours (AnyCocircularNeighbour); a rebuild sets
   // the flag afresh.

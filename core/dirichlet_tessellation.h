@@ -251,10 +251,9 @@ private:
     On
   };
   Jumping JumpMode = Jumping::Off;
-  int JumpMisses = 0;                ///< jumps in a row, while on, that found no nearer start
-  WalkHints Hints;                   ///< JumpTowards's index of the triangles (built on first need)
-  std::size_t HintsInsertedMark = 0; ///< Serial.Inserted when Hints was built
-  std::size_t RemovalsSinceHints = 0; ///< removals of accepted points since Hints was built
+  int JumpMisses = 0;       ///< jumps in a row, while on, that found no nearer start
+  WalkHints Hints;          ///< JumpTowards's index of the triangles (built on first need)
+  std::size_t Removals = 0; ///< removals of accepted points so far (with Serial.Inserted: Hints)
   void JumpTowards(const Point2& p);
   void InsertAcceptedPoint(std::int32_t id);
   void InsertCollinear(std::int32_t id);

@@ -10,62 +10,62 @@ namespace tessera
 namespace
 {
 constexpr int Levels = 16;
-constexpr double Cells = 65536.0; // 2^Levels a side
+constexpr std::uint32_t Cells = 1U << Levels; // a side
 } // namespace
 
 void WalkHints::Build(const std::int32_t* origins,
   std::size_t halfEdges,
-  const std::vector<Point2>& points)
+  const std::vector<Point2>& points,
+  std::size_t changes)
 {
   const std::size_t triangles = halfEdges / 3;
   this->Built = triangles;
+  this->ChangesAtBuild = changes;
   this->Entries.clear();
-  bool first = true;
+  // Each real triangle's first real vertex: the triangle's entry, and the box it is keyed over.
+  std::vector<Entry> firsts;
+  firsts.reserve(triangles);
   for (std::size_t t = 0; t < triangles; ++t)
   {
-    for (std::size_t k = 0; k < 3; ++k)
+    const std::int32_t* v = origins + 3 * t;
+    const std::int32_t first = v[0] >= 0 ? v[0] : v[1] >= 0 ? v[1] : v[2];
+    if (first >= 0)
     {
-      if (origins[3 * t + k] >= 0)
-      {
-        const Point2& p = points[std::size_t(origins[3 * t + k])];
-        this->Box = first ? Box2{ p.x, p.x, p.y, p.y } : this->Box;
-        this->Box.Extend(p);
-        first = false;
-      }
+      firsts.emplace_back(std::uint32_t(first), std::int32_t(t));
     }
   }
-  const double side = std::max(this->Box.XMax - this->Box.XMin, this->Box.YMax - this->Box.YMin);
-  // (one scale for both axes, as the batch's curve; a side that overflows, or one so small that
-  // the scale does, gives no index: 0 * inf at the box's edge made a NaN cell)
-  const double scale = Cells / side;
-  this->Scale = side > 0.0 && std::isfinite(side) && std::isfinite(scale) ? scale : 0.0;
-  if (first || this->Scale == 0.0)
+  if (firsts.empty())
   {
     return;
   }
-  this->Entries.reserve(triangles);
-  for (std::size_t t = 0; t < triangles; ++t)
+  this->Box = BoundsOf(&points[firsts[0].first], 1);
+  for (const Entry& e : firsts)
   {
-    for (std::size_t k = 0; k < 3; ++k)
-    {
-      if (origins[3 * t + k] >= 0)
-      {
-        this->Entries.emplace_back(
-          this->Key(points[std::size_t(origins[3 * t + k])]), std::int32_t(t));
-        break;
-      }
-    }
+    this->Box.Extend(points[e.first]);
   }
-  std::sort(this->Entries.begin(), this->Entries.end());
+  // (one scale for both axes, as the batch's curve; a side that overflows, or one so small that
+  // the scale does, gives no index: 0 * inf at the box's edge made a NaN cell)
+  const double side = this->Box.LargerSide();
+  const double scale = double(Cells) / side;
+  this->Scale = side > 0.0 && std::isfinite(side) && std::isfinite(scale) ? scale : 0.0;
+  if (this->Scale == 0.0)
+  {
+    return;
+  }
+  for (Entry& e : firsts)
+  {
+    e.first = this->Key(points[e.first]);
+  }
+  std::sort(firsts.begin(), firsts.end());
+  this->Entries.swap(firsts);
 }
 
 std::uint32_t WalkHints::Key(const Point2& p) const
 {
-  // (NaN-free: Insert refuses points that are not finite; a point outside the box takes the cell
-  // at its edge)
-  const double x = std::clamp((p.x - this->Box.XMin) * this->Scale, 0.0, Cells - 1.0);
-  const double y = std::clamp((p.y - this->Box.YMin) * this->Scale, 0.0, Cells - 1.0);
-  return HilbertIndex(std::uint32_t(x), std::uint32_t(y), Levels);
+  // (a point outside the box takes the cell at its edge: GridCell)
+  return HilbertIndex(GridCell((p.x - this->Box.XMin) * this->Scale, Cells),
+    GridCell((p.y - this->Box.YMin) * this->Scale, Cells),
+    Levels);
 }
 
 int WalkHints::Near(const Point2& p, std::int32_t near[3]) const

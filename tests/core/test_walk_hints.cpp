@@ -53,7 +53,7 @@ TEST(WalkHints, TrianglesBesidePointsLieNearThem)
   WalkHints hints;
   std::int32_t near[3];
   EXPECT_EQ(hints.Near({ 0.5, 0.5 }, near), 0); // (before a Build)
-  hints.Build(t.Origin().data(), t.Origin().size(), t.Points());
+  hints.Build(t.Origin().data(), t.Origin().size(), t.Points(), 0);
   EXPECT_EQ(hints.BuiltFor(), t.Origin().size() / 3);
   int close = 0;
   for (std::size_t k = 10000; k < points.size(); ++k)
@@ -79,7 +79,7 @@ TEST(WalkHints, ABoxTooSmallToScaleGivesNoIndex)
   const Window window = Window::Rectangle(-1e-305, 2e-305, -1e-305, 2e-305);
   const DirichletTessellation batch(window, points);
   WalkHints hints;
-  hints.Build(batch.Origin().data(), batch.Origin().size(), batch.Points());
+  hints.Build(batch.Origin().data(), batch.Origin().size(), batch.Points(), 0);
   std::int32_t near[3];
   EXPECT_EQ(hints.Near(points.back(), near), 0);
   DirichletTessellation streamed(window);
