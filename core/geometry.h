@@ -106,6 +106,15 @@ inline std::size_t LowestVertex(const Point2* ring, std::size_t count)
   return lowest;
 }
 
+/// The exponent e of a power of two above a finite magnitude (0 for 0): values of at most that
+/// magnitude divided by 2^e lie in (-1, 1), exactly unless they fall below the normal doubles. For
+/// sums that would overflow (RaG curves and pixel means of points near 1e306) and for tests that
+/// multiply coordinates (shared borders at 1e308).
+inline int ExponentAbove(double magnitude)
+{
+  return magnitude > 0.0 ? std::ilogb(magnitude) + 1 : 0;
+}
+
 /// The cell, 0 .. cells - 1, of a coordinate already scaled to cell units (spatial grids and
 /// curves). NaN and everything below 0 go to cell 0, everything beyond to the last: a box of
 /// subnormal width, or wider than the largest double, makes scales infinite or zero and scaled

@@ -226,13 +226,6 @@ Point2 PeriodicFullSum(const std::vector<double>& nodes,
   return { sumX / sumW, sumY / sumW };
 }
 
-// The exponent e of a power of two 2^e above every |value| (0 when all are 0), by which values
-// are scaled exactly into (-1, 1).
-int ScaleExponent(double largest)
-{
-  return largest > 0.0 ? std::ilogb(largest) + 1 : 0;
-}
-
 // The samples of the curve of these controls and weights at the indices where samples is not
 // finite (all of them, at first), scaled by 2^xExponent and 2^yExponent.
 void SampleWhereNotFinite(const std::vector<double>& nodes,
@@ -295,14 +288,14 @@ std::vector<Point2> SampleRationalGaussianCurve(const std::vector<double>& nodes
     largestX = std::max(largestX, std::fabs(c.x));
     largestY = std::max(largestY, std::fabs(c.y));
   }
-  const int xExponent = ScaleExponent(largestX), yExponent = ScaleExponent(largestY);
+  const int xExponent = ExponentAbove(largestX), yExponent = ExponentAbove(largestY);
   std::vector<Point2> scaled(controls.size());
   for (std::size_t k = 0; k < controls.size(); ++k)
   {
     scaled[k] = { std::ldexp(controls[k].x, -xExponent), std::ldexp(controls[k].y, -yExponent) };
   }
   SampleWhereNotFinite(nodes, scaled, weights, sigma, closed, xExponent, yExponent, samples);
-  const int weightExponent = ScaleExponent(*std::max_element(weights.begin(), weights.end())) - 1;
+  const int weightExponent = ExponentAbove(*std::max_element(weights.begin(), weights.end())) - 1;
   std::vector<double> scaledWeights(weights.size());
   for (std::size_t k = 0; k < weights.size(); ++k)
   {

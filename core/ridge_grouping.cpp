@@ -133,8 +133,7 @@ void FitCurves(const std::vector<Point2>& points,
     largestX = std::max(largestX, std::fabs(p.x));
     largestY = std::max(largestY, std::fabs(p.y));
   }
-  const int xExponent = largestX > 0.0 ? std::ilogb(largestX) + 1 : 0;
-  const int yExponent = largestY > 0.0 ? std::ilogb(largestY) + 1 : 0;
+  const int xExponent = ExponentAbove(largestX), yExponent = ExponentAbove(largestY);
   for (std::size_t k = 0; k < points.size(); ++k)
   {
     const int position = partition.Projection[k];

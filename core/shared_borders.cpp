@@ -181,7 +181,7 @@ ClippedRings ShareBorderVertices(const ClippedRings& pieces)
   {
     return pieces;
   }
-  const int exponent = std::ilogb(largest) + 1;
+  const int exponent = ExponentAbove(largest);
   std::vector<Point2> v(pieces.Vertices.size());
   std::vector<std::size_t> ringOf(v.size()), next(v.size());
   for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
