@@ -179,25 +179,6 @@ std::string GaugeLabel(std::size_t gauge, const std::vector<std::string>& names)
   return label;
 }
 
-/// Points along a ring's edges in the plane so that no piece is longer than step (closing edge
-/// included; the first vertex is not repeated).
-void DensifyPlanarRing(const Point2* ring, std::size_t count, double step, std::vector<Point2>& out)
-{
-  out.clear();
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    const Point2& a = ring[k];
-    const Point2& b = ring[(k + 1) % count];
-    const double length = std::hypot(b.x - a.x, b.y - a.y);
-    const int pieces = step > 0.0 ? std::max(1, static_cast<int>(std::ceil(length / step))) : 1;
-    for (int i = 0; i < pieces; ++i)
-    {
-      const double t = static_cast<double>(i) / pieces;
-      out.push_back({ a.x + t * (b.x - a.x), a.y + t * (b.y - a.y) });
-    }
-  }
-}
-
 /// Padding and GeodesicStepMetres in their ranges (ArealAverageSettings), each named: a Padding of
 /// 1e14 times the data's size left a window whose rounding swallowed the catchment's tiles (one
 /// gauge of five weighted, the mean 5.0 for 3.0), a NaN one was named as a rectangle's NaN side,
@@ -434,7 +415,7 @@ struct ThiessenArealAverage::State
     {
       return 0.0;
     }
-    DensifyPlanarRing(ring, count, this->Settings.GeodesicStepMetres, scratch.Dense);
+    DensifyRingSymmetrically(ring, count, this->Settings.GeodesicStepMetres, scratch.Dense);
     this->Unproject(scratch.Dense, scratch.LonLat);
     return EllipsoidalRingArea(scratch.LonLat);
   }
