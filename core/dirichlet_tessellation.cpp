@@ -384,7 +384,8 @@ void DirichletTessellation::InsertKnownPoint(std::int32_t id, std::int32_t nearI
   const Point2& p = this->Coordinates[id];
   if (!this->TheWindow.Contains(p))
   {
-    this->Rejected.insert(std::lower_bound(this->Rejected.begin(), this->Rejected.end(), id), id);
+    this->Rejected.push_back(id);
+    ++this->RejectedLive;
     this->StatusBytes[id] = std::uint8_t(PointStatus::OutsideWindow);
     return;
   }
@@ -1096,22 +1097,17 @@ void DirichletTessellation::RecordDuplicate(std::int32_t id,
   {
     this->Relabel(keptEdge, id);
   }
-  if (this->BuildOrder)
+  if (!this->BuildOrder)
   {
-    // The pairs naming kept are repointed once, at the end: scanning them all here made a batch
-    // with many copies quadratic (10^6 points, half of them copies: 12.8 s).
-    this->DuplicateChains = true;
+    // Streaming: the place's other copies name it, not kept, so they follow by themselves.
+    this->Places.GiveWay(kept, id);
+    this->StatusBytes[kept] = std::uint8_t(PointStatus::Duplicate);
+    this->StatusBytes[id] = std::uint8_t(PointStatus::Accepted) | HasDuplicates;
+    return;
   }
-  else
-  {
-    for (auto& pair : this->DuplicatePairs)
-    {
-      if (pair.second == kept)
-      {
-        pair.second = id;
-      }
-    }
-  }
+  // The pairs naming kept are repointed once, at the end: scanning them all here made a batch
+  // with many copies quadratic (10^6 points, half of them copies: 12.8 s).
+  this->DuplicateChains = true;
   this->AddDuplicatePair(kept, id);
 }
 
@@ -1146,8 +1142,8 @@ void DirichletTessellation::ResolveDuplicateChains()
   }
 }
 
-// During BuildFrom the ids are local and the pairs are sorted at its end; otherwise the pair goes
-// to its sorted place (in streaming the new id is the largest, so that is the end).
+// During BuildFrom the ids are local and the pairs are sorted at its end; otherwise (streaming:
+// Insert and Reinsert have made the status bytes) the copy joins its place.
 void DirichletTessellation::AddDuplicatePair(std::int32_t duplicate, std::int32_t kept)
 {
   if (this->BuildOrder)
@@ -1155,14 +1151,9 @@ void DirichletTessellation::AddDuplicatePair(std::int32_t duplicate, std::int32_
     this->DuplicatePairs.emplace_back(duplicate, kept);
     return;
   }
-  const std::pair<std::int32_t, std::int32_t> pair(duplicate, kept);
-  this->DuplicatePairs.insert(
-    std::lower_bound(this->DuplicatePairs.begin(), this->DuplicatePairs.end(), pair), pair);
-  if (!this->StatusBytes.empty())
-  {
-    this->StatusBytes[duplicate] = std::uint8_t(PointStatus::Duplicate);
-    this->StatusBytes[kept] = std::uint8_t(PointStatus::Accepted) | HasDuplicates;
-  }
+  this->Places.AddCopy(duplicate, kept);
+  this->StatusBytes[duplicate] = std::uint8_t(PointStatus::Duplicate);
+  this->StatusBytes[kept] = std::uint8_t(PointStatus::Accepted) | HasDuplicates;
 }
 
 void DirichletTessellation::Relabel(std::int32_t edge, std::int32_t newId)
@@ -1216,6 +1207,10 @@ std::int32_t DirichletTessellation::DuplicateOf(std::int32_t id) const
   {
     return -1;
   }
+  if (this->StatusBytes.size() == this->Coordinates.size())
+  {
+    return this->Places.KeptOf(id);
+  }
   const auto it = this->FindDuplicatePair(id);
   return it != this->DuplicatePairs.end() ? it->second : -1;
 }
@@ -1242,10 +1237,27 @@ void DirichletTessellation::EnableStatusBytes()
 }
 
 // Removed points are known by their bytes alone (no list): those keep theirs.
+// From a batch build's lists (before is empty), or after a rebuild (before holds the status
+// bytes of every id, which tell the live entries of Rejected apart). Either way the pairs the
+// build found join the places.
 void DirichletTessellation::RecomputeStatusBytes()
 {
   std::vector<std::uint8_t> before;
   before.swap(this->StatusBytes);
+  if (before.size() == this->Coordinates.size())
+  {
+    this->CompactRejected(before);
+  }
+  else
+  {
+    this->RejectedLive = this->Rejected.size();
+  }
+  for (const auto& pair : this->DuplicatePairs)
+  {
+    this->Places.AddCopy(pair.first, pair.second);
+  }
+  this->DuplicatePairs.clear();
+  this->DuplicatePairs.shrink_to_fit();
   this->StatusBytes.assign(this->Coordinates.size(), std::uint8_t(PointStatus::Accepted));
   for (std::size_t id = 0; id < before.size() && id < this->StatusBytes.size(); ++id)
   {
@@ -1258,11 +1270,25 @@ void DirichletTessellation::RecomputeStatusBytes()
   {
     this->StatusBytes[id] = std::uint8_t(PointStatus::OutsideWindow);
   }
-  for (const auto& pair : this->DuplicatePairs)
-  {
-    this->StatusBytes[pair.first] = std::uint8_t(PointStatus::Duplicate);
-    this->StatusBytes[pair.second] = std::uint8_t(PointStatus::Accepted) | HasDuplicates;
-  }
+  this->Places.ForEachPair(
+    [this](std::int32_t copy, std::int32_t kept)
+    {
+      this->StatusBytes[copy] = std::uint8_t(PointStatus::Duplicate);
+      this->StatusBytes[kept] = std::uint8_t(PointStatus::Accepted) | HasDuplicates;
+    });
+}
+
+// Keeps the entries of Rejected whose status is still OutsideWindow, once each, ascending.
+void DirichletTessellation::CompactRejected(const std::vector<std::uint8_t>& status)
+{
+  const auto stale = [&status](std::int32_t id)
+  { return (status[id] & StatusMask) != std::uint8_t(PointStatus::OutsideWindow); };
+  this->Rejected.erase(
+    std::remove_if(this->Rejected.begin(), this->Rejected.end(), stale), this->Rejected.end());
+  std::sort(this->Rejected.begin(), this->Rejected.end());
+  this->Rejected.erase(
+    std::unique(this->Rejected.begin(), this->Rejected.end()), this->Rejected.end());
+  this->RejectedLive = this->Rejected.size();
 }
 
 void DirichletTessellation::EnableVertexEdges()
@@ -1288,16 +1314,28 @@ void DirichletTessellation::RecomputeVertexEdges()
 
 std::vector<std::int32_t> DirichletTessellation::RejectedIds() const
 {
-  std::vector<std::int32_t> ids = this->Rejected;
+  if (this->StatusBytes.size() != this->Coordinates.size())
+  {
+    return this->Rejected; // a batch build's, ascending
+  }
+  std::vector<std::int32_t> ids;
+  ids.reserve(this->RejectedLive);
+  for (const std::int32_t id : this->Rejected)
+  {
+    if ((this->StatusBytes[id] & StatusMask) == std::uint8_t(PointStatus::OutsideWindow))
+    {
+      ids.push_back(id);
+    }
+  }
   std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   return ids;
 }
 
 std::vector<std::pair<std::int32_t, std::int32_t>> DirichletTessellation::Duplicates() const
 {
-  auto pairs = this->DuplicatePairs;
-  std::sort(pairs.begin(), pairs.end());
-  return pairs;
+  return this->StatusBytes.size() == this->Coordinates.size() ? this->Places.Pairs()
+                                                              : this->DuplicatePairs;
 }
 
 // Removed points are known by their status bytes alone (Remove makes them, and they stay in step
@@ -1325,6 +1363,7 @@ std::size_t DirichletTessellation::StructureBytes() const
     sizeof(std::int32_t) +
     this->StatusBytes.capacity() +
     this->DuplicatePairs.capacity() * sizeof(std::pair<std::int32_t, std::int32_t>) +
+    this->Places.Bytes() +
     (this->Ordering.First.capacity() + this->Ordering.NewIndex.capacity() +
       this->Ordering.Origins.capacity() + this->Ordering.Twins.capacity()) *
     sizeof(std::int32_t) +
@@ -1400,13 +1439,17 @@ void DirichletTessellation::Remove(std::int32_t id)
   this->StatusBytes[id] = std::uint8_t(PointStatus::Removed);
   if (status == PointStatus::OutsideWindow)
   {
-    this->Rejected.erase(std::lower_bound(this->Rejected.begin(), this->Rejected.end(), id));
+    --this->RejectedLive;
+    if (this->Rejected.size() > 2 * this->RejectedLive + 64)
+    {
+      this->CompactRejected(this->StatusBytes);
+    }
     return;
   }
   if (status == PointStatus::Duplicate)
   {
     // The copied point keeps its HasDuplicates mark (a hint; see StatusMask).
-    this->DuplicatePairs.erase(this->FindDuplicatePair(id));
+    this->Places.RemoveCopy(id);
     return;
   }
   std::int32_t edge = -1;
@@ -1426,29 +1469,10 @@ void DirichletTessellation::Remove(std::int32_t id)
   this->VertexEdges[id] = -1;
 
   // A duplicate takes the removed point's place: the structure does not change.
-  std::int32_t heir = -1;
-  if (flags & HasDuplicates)
-  {
-    for (const auto& pair : this->DuplicatePairs)
-    {
-      if (pair.second == id && (heir < 0 || pair.first < heir))
-      {
-        heir = pair.first;
-      }
-    }
-  }
+  bool copied = false;
+  const std::int32_t heir = (flags & HasDuplicates) ? this->Places.PromoteHeir(id, copied) : -1;
   if (heir >= 0)
   {
-    this->DuplicatePairs.erase(this->FindDuplicatePair(heir));
-    bool copied = false;
-    for (auto& pair : this->DuplicatePairs)
-    {
-      if (pair.second == id)
-      {
-        pair.second = heir;
-        copied = true;
-      }
-    }
     this->StatusBytes[heir] = std::uint8_t(PointStatus::Accepted) | (copied ? HasDuplicates : 0);
     if (edge >= 0)
     {

@@ -1615,6 +1615,117 @@ TEST(DirichletTessellation, StatusQueriesTrackStreamingChanges)
   }
 }
 
+// Random insertions, removals and reinsertions at a few places, many ids each, inside and outside
+// the window, against bookkeeping kept here: at each place the smallest live id is kept and the
+// others copy it, live ids outside are rejected. Also a batch of the live points has the same
+// copies, and the structure stays Delaunay. Hundreds of removals of rejected ids compact their
+// list more than once.
+TEST(DirichletTessellation, StatusesFollowRandomChurnAtFewPlaces)
+{
+  const std::vector<Point2> inside = UniformPoints(24, 31);
+  std::vector<Point2> places = inside;
+  for (int k = 0; k < 8; ++k)
+  {
+    places.push_back({ 2.0 + k, -1.0 }); // outside the window
+  }
+  std::mt19937 rng(77);
+  Tess t(UnitWindow());
+  std::vector<int> placeOf; // by id
+  std::vector<bool> live;   // by id
+  const auto expectStatuses = [&]()
+  {
+    std::map<int, std::int32_t> keptAt; // place -> smallest live id
+    for (std::int32_t id = 0; id < std::int32_t(live.size()); ++id)
+    {
+      if (live[id] && placeOf[id] < int(inside.size()) && !keptAt.count(placeOf[id]))
+      {
+        keptAt[placeOf[id]] = id;
+      }
+    }
+    std::vector<std::pair<std::int32_t, std::int32_t>> copies;
+    std::vector<std::int32_t> rejected;
+    for (std::int32_t id = 0; id < std::int32_t(live.size()); ++id)
+    {
+      const bool out = placeOf[id] >= int(inside.size());
+      const std::int32_t kept = out || !live[id] ? -1 : keptAt[placeOf[id]];
+      const PointStatus expected = !live[id] ? PointStatus::Removed
+        : out                                ? PointStatus::OutsideWindow
+        : kept == id                         ? PointStatus::Accepted
+                                             : PointStatus::Duplicate;
+      ASSERT_EQ(t.Status(id), expected) << "id " << id;
+      ASSERT_EQ(t.DuplicateOf(id), expected == PointStatus::Duplicate ? kept : -1) << "id " << id;
+      if (expected == PointStatus::Duplicate)
+      {
+        copies.emplace_back(id, kept);
+      }
+      if (expected == PointStatus::OutsideWindow)
+      {
+        rejected.push_back(id);
+      }
+    }
+    ASSERT_EQ(t.Duplicates(), copies);
+    ASSERT_EQ(t.RejectedIds(), rejected);
+    ASSERT_EQ(t.AcceptedCount(), keptAt.size());
+  };
+  for (int step = 0; step < 3000; ++step)
+  {
+    const int action = int(rng() % 3);
+    std::vector<std::int32_t> candidates;
+    for (std::int32_t id = 0; id < std::int32_t(live.size()); ++id)
+    {
+      if (live[id] == (action == 1))
+      {
+        candidates.push_back(id);
+      }
+    }
+    if (action == 0 || candidates.empty())
+    {
+      placeOf.push_back(int(rng() % places.size()));
+      live.push_back(true);
+      ASSERT_EQ(t.Insert(places[placeOf.back()]), std::int32_t(live.size() - 1));
+    }
+    else
+    {
+      const std::int32_t id = candidates[rng() % candidates.size()];
+      if (action == 1)
+      {
+        t.Remove(id);
+      }
+      else
+      {
+        t.Reinsert(id);
+      }
+      live[id] = action == 2;
+    }
+    if (step % 100 == 0 || step > 2950)
+    {
+      expectStatuses();
+      if (t.IsTwoDimensional())
+      {
+        CheckStructure(t);
+        CheckEmptyCircles(t);
+      }
+    }
+  }
+  std::vector<Point2> livePoints;
+  std::vector<std::int32_t> idOfLive;
+  for (std::int32_t id = 0; id < std::int32_t(live.size()); ++id)
+  {
+    if (live[id])
+    {
+      livePoints.push_back(places[placeOf[id]]);
+      idOfLive.push_back(id);
+    }
+  }
+  const Tess batch(UnitWindow(), livePoints);
+  std::vector<std::pair<std::int32_t, std::int32_t>> renamed;
+  for (const auto& pair : batch.Duplicates())
+  {
+    renamed.emplace_back(idOfLive[pair.first], idOfLive[pair.second]);
+  }
+  EXPECT_EQ(t.Duplicates(), renamed); // (ids keep their order when renamed)
+}
+
 TEST(DirichletTessellation, EdgeLeavingNamesAnEdgeOfEveryVertexOnly)
 {
   std::vector<Point2> points = UniformPoints(200, 17);
