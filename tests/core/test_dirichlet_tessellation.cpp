@@ -820,6 +820,33 @@ TEST(DirichletTessellation, NearestPointIsTheBruteForceNearest)
   EXPECT_EQ(line.NearestPoint({ 0.25, 0.25 }), 0); // (exactly as near 0 as 2)
   Tess empty(UnitWindow(), std::vector<Point2>{});
   EXPECT_EQ(empty.NearestPoint({ 0.5, 0.5 }), -1);
+  // Many ties (past the few looked up in the list): the integer points of x^2 + y^2 = 1105^2 (108
+  // of them, exactly co-circular) in shuffled order, the query at their centre, and points
+  // outside the circle; the smallest id of the circle's is the nearest.
+  std::vector<Point2> ring;
+  const long long r2 = 1105LL * 1105LL;
+  for (long long x = -1105; x <= 1105; ++x)
+  {
+    const long long y = std::llround(std::sqrt(double(r2 - x * x)));
+    if (x * x + y * y == r2)
+    {
+      ring.push_back({ double(x), double(y) });
+      if (y != 0)
+      {
+        ring.push_back({ double(x), double(-y) });
+      }
+    }
+  }
+  ASSERT_EQ(ring.size(), 108u);
+  for (int order = 0; order < 8; ++order) // (wherever the smallest id lies from the walk's end)
+  {
+    std::shuffle(ring.begin(), ring.end(), random);
+    std::vector<Point2> around = { { 3000.0, 0.0 }, { 0.0, -2900.0 }, { -2000.0, 2500.0 } };
+    around.insert(around.end(), ring.begin(), ring.end());
+    const Tess circle(Window::Rectangle(-4000, 4000, -4000, 4000), around);
+    EXPECT_EQ(circle.NearestPoint({ 0.0, 0.0 }), 3);
+    EXPECT_EQ(circle.NearestPoint({ 0.0, 0.0 }), bruteForce(circle, { 0.0, 0.0 }));
+  }
 }
 
 TEST(DirichletTessellation, RemovingAPointWithDuplicatesKeepsTheCopy)
