@@ -1,5 +1,6 @@
 #include "ridge_grouping.h"
 
+#include "distance_transform.h"
 #include "errors.h"
 #include "point_partition.h"
 #include "rational_gaussian_curve.h"
@@ -259,6 +260,90 @@ void MeasureContourDistances(const std::vector<Point2>& pixelPoints,
       "point(s) " +
       ListNames(far.size(), [&](std::size_t k) { return std::to_string(far[k]); }) +
       " (ContourDistance gives every point's distance)");
+  }
+}
+
+/// Contour pixels further than this many basis widths from every point are named
+/// (NameContoursAwayFromPoints).
+constexpr double EmptyStretchWidths = 3.0;
+
+/// Warnings naming the contours that no point is grouped by (no curve is fitted to them), and the
+/// contours that run more than EmptyStretchWidths basis widths from every point: the field of a
+/// long-reaching basis has ridges across empty space, and such a contour's group can join points
+/// of curves that lie far apart. With the default basis, a noisy line and a small ring 14 widths
+/// above it made one ridge through the gap, the line cut in two, half of it grouped with the ring
+/// and its curve drawn 24 units from every point, and nothing said so. Distances are to the
+/// nearest pixel holding a point (exact on the grid: the nearest-feature transform).
+void NameContoursAwayFromPoints(const std::vector<Point2>& pixelPoints,
+  const RidgeContours& contours,
+  const PointPartition& partition,
+  const PixelGrid& grid,
+  double width,
+  RidgeGroupingResult& result)
+{
+  std::vector<std::size_t> members(static_cast<std::size_t>(contours.Count()), 0);
+  for (const int group : partition.GroupId)
+  {
+    if (group >= 0 && group < contours.Count())
+    {
+      ++members[static_cast<std::size_t>(group)];
+    }
+  }
+  std::vector<int> pointless;
+  for (int c = 0; c < contours.Count(); ++c)
+  {
+    if (members[static_cast<std::size_t>(c)] == 0)
+    {
+      pointless.push_back(c);
+    }
+  }
+  if (!pointless.empty())
+  {
+    result.Warnings.push_back(std::to_string(pointless.size()) +
+      " ridge contour(s) have no point grouped by them (other contours are nearer every point), "
+      "so no group and no curve: ContourId " +
+      ListNames(pointless.size(), [&](std::size_t k) { return std::to_string(pointless[k]); }));
+  }
+  std::vector<std::uint8_t> occupied(grid.PixelCount(), 0);
+  for (const Point2& p : pixelPoints)
+  {
+    occupied[grid.Index(static_cast<int>(std::lround(p.x)), static_cast<int>(std::lround(p.y)))] =
+      1;
+  }
+  const std::vector<int> nearest = NearestFeatureTransform(occupied, grid.Width, grid.Height);
+  const double reach = EmptyStretchWidths * width;
+  std::vector<std::string> stretches;
+  for (int c = 0; c < contours.Count(); ++c)
+  {
+    int away = 0;
+    double farthest = 0.0;
+    for (int k = contours.Offsets[c]; k < contours.Offsets[c + 1]; ++k)
+    {
+      const int pixel = contours.Pixels[static_cast<std::size_t>(k)];
+      const int to = nearest[static_cast<std::size_t>(pixel)];
+      const double d = std::hypot(
+        double(pixel % grid.Width - to % grid.Width), double(pixel / grid.Width - to / grid.Width));
+      if (d > reach)
+      {
+        ++away;
+        farthest = std::max(farthest, d);
+      }
+    }
+    if (away > 0)
+    {
+      stretches.push_back("contour " + std::to_string(c) + " (" + std::to_string(away) +
+        " pixels, up to " + NumberText(farthest * grid.Spacing) + " from every point)");
+    }
+  }
+  if (!stretches.empty())
+  {
+    result.Warnings.push_back(std::to_string(stretches.size()) +
+      " ridge contour(s) run more than " + NumberText(EmptyStretchWidths) + " basis widths (" +
+      NumberText(reach * grid.Spacing) +
+      " in the points' units) from every point: the field's ridge crosses empty space there, so "
+      "the group may join points of curves that lie apart, and its curve is drawn where there "
+      "are no points (a smaller Width, or the Gaussian basis, may part them): " +
+      ListNames(stretches.size(), [&](std::size_t k) { return stretches[k]; }));
   }
 }
 
@@ -655,6 +740,7 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
     maximumGap,
     result);
   NameNearContourEnds(contours, grid, this->Settings.Width, result);
+  NameContoursAwayFromPoints(pixelPoints, contours, partition, grid, this->Settings.Width, result);
   for (int c = 0; c < contours.Count(); ++c)
   {
     AppendPixelPolyline(contours, c, grid, result.Contours);

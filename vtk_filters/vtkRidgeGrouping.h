@@ -43,8 +43,8 @@
  *   Field data `ImageSize` (pixels along the longer side, as used), `PixelSize`,
  *   `FieldErrorBound` (bound of |FFT field - direct sum| at any pixel).
  * - 1 (vtkPolyData): the ridge contours as polylines through pixel centres (a closed contour
- *   repeats its first point), cell data `ContourId` (int, = GroupId of its points), `Closed`
- *   (unsigned char) and `Length` (double: the length of the pixel path, in input units, which
+ *   repeats its first point), cell data `ContourId` (int, = GroupId of its points, if any),
+ *   `Closed` (unsigned char) and `Length` (double: the length of the pixel path, in input units, which
  *   exceeds a smooth curve's by a few percent).
  * - 2 (vtkPolyData): the fitted curves, finely sampled polylines, cell data `GroupId` and
  *   `Closed`.
@@ -61,7 +61,10 @@
  * need more than 512 MiB). NaN or infinite coordinates are an error naming the point. Open
  * contours whose ends lie within 4 basis widths of each other, one looking towards the other (a
  * curve broken where its points lie further apart than the basis reaches), are named in a warning
- * with the places, and so is a Width below one pixel.
+ * with the places, and so is a Width below one pixel. Contours that run more than 3 basis widths
+ * from every point (the field's ridge across empty space, which can join points of curves far
+ * apart into one group) are named with the stretch, and so are contours that no point is grouped
+ * by (they are in output 1 with no group and no curve).
  */
 
 #ifndef vtkRidgeGrouping_h

@@ -765,6 +765,64 @@ TEST(RidgeGrouping, ContoursEndingNearEachOtherAreNamedAsPiecesOfOneCurve)
   }
 }
 
+// A contour that runs through empty space, more than three basis widths from every point, is
+// named with its stretch, where the distance to the nearest point is measured here by brute force
+// over the contour's pixels: a noisy line and a small ring 10 widths above it (with the default
+// basis the ridge joins them across the gap); the line alone or the ring alone gives no such
+// warning.
+TEST(RidgeGrouping, ContoursAcrossEmptySpaceAreNamed)
+{
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> along(0.0, 200.0), turn(0.0, 2 * Pi);
+  std::normal_distribution<double> noise(0.0, 0.3), ringNoise(0.0, 0.2);
+  std::vector<Point2> line(400), ring(150);
+  for (Point2& p : line)
+  {
+    p = { along(random), noise(random) };
+  }
+  for (Point2& p : ring)
+  {
+    const double t = turn(random);
+    p = { 100.0 + 4.1 * std::cos(t) + ringNoise(random),
+      40.0 + 4.1 * std::sin(t) + ringNoise(random) };
+  }
+  std::vector<Point2> both = line;
+  both.insert(both.end(), ring.begin(), ring.end());
+  RidgeGroupingSettings settings;
+  settings.ImageSize = 256;
+  const auto farthestContourPixel =
+    [](const RidgeGroupingResult& result, const std::vector<Point2>& points)
+  {
+    double farthest = 0.0;
+    for (const Point2& c : result.Contours.Points)
+    {
+      double nearest = HUGE_VAL;
+      for (const Point2& p : points)
+      {
+        nearest = std::min(nearest, std::hypot(c.x - p.x, c.y - p.y));
+      }
+      farthest = std::max(farthest, nearest);
+    }
+    return farthest;
+  };
+  for (const std::vector<Point2>* points : { &both, &line, &ring })
+  {
+    const RidgeGroupingResult result = RidgeGrouping(settings).Run(*points);
+    const double reach = 3.0 * settings.Width * result.PixelSize;
+    const double farthest = farthestContourPixel(result, *points);
+    const std::vector<std::string> named = WarningsWith(result, "from every point");
+    // (a pixel within one pixel's diagonal of the reach may fall either way: the warning
+    // measures to the pixel holding the nearest point)
+    if (std::abs(farthest - reach) > 1.5 * result.PixelSize)
+    {
+      EXPECT_EQ(named.size(), farthest > reach ? 1u : 0u) << farthest << " " << reach;
+    }
+  }
+  const RidgeGroupingResult joined = RidgeGrouping(settings).Run(both);
+  EXPECT_GT(farthestContourPixel(joined, both), 4.0 * settings.Width * joined.PixelSize);
+  ASSERT_EQ(WarningsWith(joined, "from every point").size(), 1u);
+}
+
 // A group of one point gets no curve (a curve needs two): such groups are named in a warning, and
 // every group of two or more points has its curve. A noisy circle on a fine image breaks into
 // short contours, some of which take a single point.
