@@ -44,8 +44,8 @@
  *   `FieldErrorBound` (bound of |FFT field - direct sum| at any pixel).
  * - 1 (vtkPolyData): the ridge contours as polylines through pixel centres (a closed contour
  *   repeats its first point), cell data `ContourId` (int, = GroupId of its points, if any),
- *   `Closed` (unsigned char) and `Length` (double: the length of the pixel path, in input units, which
- *   exceeds a smooth curve's by a few percent).
+ *   `Closed` (unsigned char) and `Length` (double: the length of the pixel path, in input units,
+ *   which exceeds a smooth curve's by a few percent).
  * - 2 (vtkPolyData): the fitted curves, finely sampled polylines, cell data `GroupId` and
  *   `Closed`.
  * - 3 (vtkImageData): the field image, point data `Field` (double), `MinorRidge` and
