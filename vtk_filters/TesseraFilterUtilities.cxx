@@ -591,6 +591,34 @@ std::vector<std::string> UncarriedCellArrays(vtkPointSet* set)
   return names;
 }
 
+/// The cell-data arrays of a point set that a point-data array of the same name hides (the point
+/// data's is the one carried; the cell data's was left out without a word).
+std::vector<std::string> HiddenCellArrays(vtkPointSet* set)
+{
+  std::vector<std::string> names;
+  vtkCellData* cells = set->GetCellData();
+  for (int k = 0; k < cells->GetNumberOfArrays(); ++k)
+  {
+    const char* name = cells->GetAbstractArray(k)->GetName();
+    if (name && *name && set->GetPointData()->GetAbstractArray(name) && !IsGhostArray(name))
+    {
+      names.emplace_back(name);
+    }
+  }
+  return names;
+}
+
+/// "... cell-data array(s) 'a', 'b' ... not carried ..." for the arrays HiddenCellArrays names in
+/// a point set called `label`, or "".
+std::string HiddenCellArraysProblem(vtkPointSet* set, const std::string& label)
+{
+  const std::vector<std::string> hidden = HiddenCellArrays(set);
+  return hidden.empty() || set->GetNumberOfCells() == 0 ? std::string()
+                                                        : label + "'s cell-data array(s) " +
+      ListNames(hidden.size(), [&](std::size_t k) { return "'" + hidden[k] + "'"; }) +
+      " are not carried: its point data has arrays of the same names, which are";
+}
+
 /// A point set whose cells are one vertex per point (cellOf: VertexCellOfPoint) with its
 /// vertices' cell-data arrays `names` added to its point data, each point given its vertex's
 /// value: a shallow copy, so that the point data's roles (scalars, global ids, ...) and unnamed
@@ -859,6 +887,11 @@ vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data, std::vector<std::s
     // attributes are the points'.
     const std::vector<std::string> cellArrays = UncarriedCellArrays(points);
     vtkSmartPointer<vtkPointSet> carried = VertexArraysAsPointData(points, cellArrays);
+    const std::string hidden = HiddenCellArraysProblem(points, "the input");
+    if (!hidden.empty() && points->GetNumberOfPoints() > 0)
+    {
+      warnings.push_back(hidden);
+    }
     if (carried == points && !cellArrays.empty() && points->GetNumberOfPoints() > 0)
     {
       warnings.push_back("the input's cell-data arrays (" +
@@ -934,11 +967,14 @@ vtkSmartPointer<vtkPolyData> MergedPoints(vtkCompositeDataSet* composite,
           names.push_back(name);
         }
       }
-      const std::string unnamed = UnnamedArraysProblem(leaf);
-      if (dropped && !unnamed.empty())
+      for (const std::string& problem :
+        { UnnamedArraysProblem(leaf), HiddenCellArraysProblem(leaf.Set, leaf.Label) })
       {
-        std::string& all = (*dropped)[std::string()];
-        all += (all.empty() ? "" : "; ") + unnamed;
+        if (dropped && !problem.empty())
+        {
+          std::string& all = (*dropped)[std::string()];
+          all += (all.empty() ? "" : "; ") + problem;
+        }
       }
     }
   }

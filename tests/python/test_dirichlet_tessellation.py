@@ -1138,6 +1138,27 @@ def test_vertex_cell_data_of_one_point_set_is_carried_and_other_cell_data_is_rep
         lines.GetCellData().AddArray(double_array("tag", [1.0]))
         warnings = warnings_of_update(cls(), lines)
         assert_that(any("cell-data arrays ('tag') are not carried" in w for w in warnings), f"{warnings}")
+        # A vertex attribute hidden by a point-data array of its name: the point data's is carried,
+        # and a warning names the other (it was left out without a word), alone and in a block.
+        hiding = make_points(coords)
+        vertices = vtkCellArray()
+        for k in range(40):
+            vertices.InsertNextCell(1, [k])
+        hiding.SetVerts(vertices)
+        hiding.GetPointData().AddArray(double_array("rain", [1.0] * 40))
+        hiding.GetCellData().AddArray(double_array("rain", [2.0] * 40))
+        from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+
+        block = vtkMultiBlockDataSet()
+        block.SetBlock(0, hiding)
+        for data_set, who in ((hiding, "the input's"), (block, "block 0 (composite index 1)'s")):
+            f = cls()
+            warnings = warnings_of_update(f, data_set)
+            assert_that(any(f"{who} cell-data array(s) 'rain' are not carried" in w for w in warnings),
+                        f"{warnings}")
+            carried = f.GetOutput().GetPointData().GetArray("rain") if cls is vtkDelaunayTriangulation \
+                else f.GetOutput().GetCellData().GetArray("rain")
+            assert_that(carried is not None and carried.GetValue(0) == 1.0, "the point data's 'rain' carried")
 
 
 def test_blocks_with_different_arrays_are_joined_with_a_warning_either_way_round():
