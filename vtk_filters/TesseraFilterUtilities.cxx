@@ -575,44 +575,35 @@ std::vector<std::string> ArrayNames(vtkPointSet* leaf)
   return names;
 }
 
-/// The cell-data arrays of a point set that have no point-data array of their name.
+/// The named cell-data arrays of a point set (ghost flags aside) that have no point-data array
+/// of their name (hidden false), or that a point-data array of their name hides (hidden true: the
+/// point data's is the one carried; the cell data's was left out without a word).
+std::vector<std::string> CellArrays(vtkPointSet* set, bool hidden)
+{
+  std::vector<std::string> names;
+  vtkCellData* cells = set->GetCellData();
+  for (int k = 0; k < cells->GetNumberOfArrays(); ++k)
+  {
+    const char* name = cells->GetAbstractArray(k)->GetName();
+    if (name && *name && (set->GetPointData()->GetAbstractArray(name) != nullptr) == hidden &&
+      !IsGhostArray(name))
+    {
+      names.emplace_back(name);
+    }
+  }
+  return names;
+}
+
 std::vector<std::string> UncarriedCellArrays(vtkPointSet* set)
 {
-  std::vector<std::string> names;
-  vtkCellData* cells = set->GetCellData();
-  for (int k = 0; k < cells->GetNumberOfArrays(); ++k)
-  {
-    const char* name = cells->GetAbstractArray(k)->GetName();
-    if (name && *name && !set->GetPointData()->GetAbstractArray(name) && !IsGhostArray(name))
-    {
-      names.emplace_back(name);
-    }
-  }
-  return names;
+  return CellArrays(set, false);
 }
 
-/// The cell-data arrays of a point set that a point-data array of the same name hides (the point
-/// data's is the one carried; the cell data's was left out without a word).
-std::vector<std::string> HiddenCellArrays(vtkPointSet* set)
-{
-  std::vector<std::string> names;
-  vtkCellData* cells = set->GetCellData();
-  for (int k = 0; k < cells->GetNumberOfArrays(); ++k)
-  {
-    const char* name = cells->GetAbstractArray(k)->GetName();
-    if (name && *name && set->GetPointData()->GetAbstractArray(name) && !IsGhostArray(name))
-    {
-      names.emplace_back(name);
-    }
-  }
-  return names;
-}
-
-/// "... cell-data array(s) 'a', 'b' ... not carried ..." for the arrays HiddenCellArrays names in
-/// a point set called `label`, or "".
+/// "... cell-data array(s) 'a', 'b' ... not carried ..." for the arrays a point-data array of the
+/// same name hides in a point set called `label`, or "".
 std::string HiddenCellArraysProblem(vtkPointSet* set, const std::string& label)
 {
-  const std::vector<std::string> hidden = HiddenCellArrays(set);
+  const std::vector<std::string> hidden = CellArrays(set, true);
   return hidden.empty() || set->GetNumberOfCells() == 0 ? std::string()
                                                         : label + "'s cell-data array(s) " +
       ListNames(hidden.size(), [&](std::size_t k) { return "'" + hidden[k] + "'"; }) +
