@@ -38,9 +38,11 @@ public:
     }
     this->Hashed = true;
     std::size_t capacity = 64;
+    this->Shift = 26;
     while (capacity < 2 * expected)
     {
       capacity *= 2;
+      --this->Shift;
     }
     this->Keys.assign(capacity, -1);
     this->Values.resize(capacity);
@@ -96,8 +98,9 @@ private:
   // The slot holding t, or the empty one where it would go (linear probing; never full).
   std::size_t SlotOf(std::int32_t t) const
   {
+    // (Fibonacci hashing: the product's high bits, which depend on all of t's)
     const std::size_t mask = this->Keys.size() - 1;
-    std::size_t slot = (std::uint32_t(t) * 0x9E3779B1u) & mask;
+    std::size_t slot = (std::uint32_t(t) * 0x9E3779B1u) >> this->Shift;
     while (this->Keys[slot] != -1 && this->Keys[slot] != t)
     {
       slot = (slot + 1) & mask;
@@ -108,6 +111,7 @@ private:
   void Grow()
   {
     std::vector<std::int32_t> keys(2 * this->Keys.size(), -1);
+    --this->Shift;
     std::vector<std::int32_t> values(keys.size());
     keys.swap(this->Keys);
     values.swap(this->Values);
@@ -129,6 +133,7 @@ private:
   std::vector<std::int32_t> Keys; // triangle, -1 for an empty slot
   std::vector<std::int32_t> Values;
   std::size_t Count = 0;
+  int Shift = 26; ///< 32 - log2 of the capacity
 };
 
 // Faces around chosen points, labelled on demand with the full derivation's rules: a face is the

@@ -304,6 +304,10 @@ void NameContoursAwayFromPoints(const std::vector<Point2>& pixelPoints,
       "so no group and no curve: ContourId " +
       ListNames(pointless.size(), [&](std::size_t k) { return std::to_string(pointless[k]); }));
   }
+  if (contours.Count() == 0)
+  {
+    return;
+  }
   std::vector<std::uint8_t> occupied(grid.PixelCount(), 0);
   for (const Point2& p : pixelPoints)
   {

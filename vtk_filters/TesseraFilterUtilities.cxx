@@ -607,7 +607,7 @@ std::string HiddenCellArraysProblem(vtkPointSet* set, const std::string& label)
   return hidden.empty() || set->GetNumberOfCells() == 0 ? std::string()
                                                         : label + "'s cell-data array(s) " +
       ListNames(hidden.size(), [&](std::size_t k) { return "'" + hidden[k] + "'"; }) +
-      " are not carried: its point data has arrays of the same names, which are";
+      " are not carried: its point data has arrays of the same names, which are carried instead";
 }
 
 /// A point set whose cells are one vertex per point (cellOf: VertexCellOfPoint) with its

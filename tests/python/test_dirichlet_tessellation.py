@@ -1154,7 +1154,8 @@ def test_vertex_cell_data_of_one_point_set_is_carried_and_other_cell_data_is_rep
         for data_set, who in ((hiding, "the input's"), (block, "block 0 (composite index 1)'s")):
             f = cls()
             warnings = warnings_of_update(f, data_set)
-            assert_that(any(f"{who} cell-data array(s) 'rain' are not carried" in w for w in warnings),
+            assert_that(any(f"{who} cell-data array(s) 'rain' are not carried: its point data has arrays of the "
+                            "same names, which are carried instead" in w for w in warnings),
                         f"{warnings}")
             carried = f.GetOutput().GetPointData().GetArray("rain") if cls is vtkDelaunayTriangulation \
                 else f.GetOutput().GetCellData().GetArray("rain")
