@@ -908,6 +908,43 @@ vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data, std::vector<std::s
     "of them is needed");
 }
 
+std::vector<std::string> HiddenVertexArrayWarnings(vtkDataObject* data,
+  const std::vector<std::string>& names,
+  const std::string& what)
+{
+  std::vector<std::pair<vtkPointSet*, std::string>> sets;
+  if (auto* points = vtkPointSet::SafeDownCast(data))
+  {
+    sets.emplace_back(points, what);
+  }
+  else if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    for (const PointLeaf& leaf : PointLeaves(composite))
+    {
+      sets.emplace_back(leaf.Set, leaf.Label + " of " + what);
+    }
+  }
+  std::vector<std::string> warnings;
+  for (const auto& [set, label] : sets)
+  {
+    std::vector<std::string> hidden;
+    for (const std::string& name : CellArrays(set, true))
+    {
+      if (std::find(names.begin(), names.end(), name) != names.end())
+      {
+        hidden.push_back(name);
+      }
+    }
+    if (!hidden.empty() && set->GetNumberOfCells() > 0)
+    {
+      warnings.push_back("the cell-data array(s) " +
+        ListNames(hidden.size(), [&](std::size_t k) { return "'" + hidden[k] + "'"; }) + " of " +
+        label + " are not used: point-data arrays of the same names are");
+    }
+  }
+  return warnings;
+}
+
 vtkSmartPointer<vtkPointSet> VertexArraysAsPointData(vtkPointSet* points,
   const std::vector<std::string>& names)
 {

@@ -94,6 +94,13 @@ vtkSmartPointer<vtkPolyData> MergedPoints(vtkCompositeDataSet* data,
 /// attribute arrays (CheckAttributeLengths).
 vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data, std::vector<std::string>& warnings);
 
+/// Lines naming, for a point set or each block of a composite data set of them (`what`: how the
+/// messages call the input, e.g. "the gauges (input 0)"), the cell-data arrays among `names`
+/// that a point-data array of the same name hides: the point data's is the one used.
+std::vector<std::string> HiddenVertexArrayWarnings(vtkDataObject* data,
+  const std::vector<std::string>& names,
+  const std::string& what);
+
 /// points itself, or, when its cells are one vertex per point and some of the arrays `names` are
 /// its vertices' cell data only, a shallow copy with those given to its points as point data.
 vtkSmartPointer<vtkPointSet> VertexArraysAsPointData(vtkPointSet* points,

@@ -1166,6 +1166,11 @@ vtkPointSet* vtkThiessenArealAverage::GaugesOf(vtkDataObject* data)
       in.ValueProblem = valueProblem != dropped.end() ? valueProblem->second : std::string();
       in.Joined = joined;
     }
+    for (const std::string& warning :
+      tessera_vtk::HiddenVertexArrayWarnings(data, arrays, "the gauges (input 0)"))
+    {
+      vtkWarningMacro(<< warning);
+    }
     in.JoinedFrom = data;
     in.JoinedAt = latest;
     in.JoinedArrays = arrays;

@@ -360,6 +360,32 @@ def test_gauges_in_blocks_as_a_point_layer_gives_them_are_joined():
         results.append((summary_column(f, "ArealMean"), sorted(weights_by_gauge(f.GetOutputDataObject(0)).items())))
     assert_that(results[0] == results[1] == results[2] and len(results[0][1]) == 5,
                 f"point set {results[0]}, blocks {results[1]}, vertices' cell data {results[2]}")
+    # A point-data 'station_id' beside the vertices' one (here with the same ids): the point
+    # data's is used, and a warning names the hidden one, for a point set and for a block.
+    hiding_set = vtkPolyData()
+    hiding_set.DeepCopy(merged)
+    point_ids = vtkStringArray()
+    point_ids.SetName("station_id")
+    for name in names:
+        point_ids.InsertNextValue(name)
+    hiding_set.GetPointData().AddArray(point_ids)
+    hiding_blocks = vtkMultiBlockDataSet()
+    hiding_blocks.DeepCopy(blocks)
+    first_id = vtkStringArray()
+    first_id.SetName("station_id")
+    first_id.InsertNextValue("a")
+    hiding_blocks.GetBlock(0).GetPointData().AddArray(first_id)
+    for gauges, label in ((hiding_set, "the gauges (input 0)"),
+                          (hiding_blocks, "block 0 (composite index 1) of the gauges (input 0)")):
+        f = vtkThiessenArealAverage()
+        warnings = messages_of(f, vtkCommand.WarningEvent)
+        f.SetGaugesData(gauges)
+        f.SetCatchmentData(polygon([[(-1, -1), (1, -1), (1, 1), (-1, 1)]]))
+        f.SetObservationsData(observations_table(months))
+        f.Update(1)
+        expected = f"the cell-data array(s) 'station_id' of {label} are not used: point-data arrays of the same names are"
+        assert_that(any(expected in w for w in warnings), f"{warnings}")
+        assert_that(summary_column(f, "ArealMean") == results[0][0], "the point data's ids give the same means")
     # Without observations, the blocks' value arrays make the one step, at the composite's time.
     from vtkmodules.vtkCommonDataModel import vtkDataObject
 
