@@ -362,19 +362,20 @@ def test_gauges_in_blocks_as_a_point_layer_gives_them_are_joined():
                 f"point set {results[0]}, blocks {results[1]}, vertices' cell data {results[2]}")
     # A point-data 'station_id' beside the vertices' one (here with the same ids): the point
     # data's is used, and a warning names the hidden one, for a point set and for a block.
+    def station_ids(values):
+        """A point-data 'station_id' array of these ids."""
+        array = vtkStringArray()
+        array.SetName("station_id")
+        for v in values:
+            array.InsertNextValue(v)
+        return array
+
     hiding_set = vtkPolyData()
     hiding_set.DeepCopy(merged)
-    point_ids = vtkStringArray()
-    point_ids.SetName("station_id")
-    for name in names:
-        point_ids.InsertNextValue(name)
-    hiding_set.GetPointData().AddArray(point_ids)
+    hiding_set.GetPointData().AddArray(station_ids(names))
     hiding_blocks = vtkMultiBlockDataSet()
     hiding_blocks.DeepCopy(blocks)
-    first_id = vtkStringArray()
-    first_id.SetName("station_id")
-    first_id.InsertNextValue("a")
-    hiding_blocks.GetBlock(0).GetPointData().AddArray(first_id)
+    hiding_blocks.GetBlock(0).GetPointData().AddArray(station_ids(["a"]))
     for gauges, label in ((hiding_set, "the gauges (input 0)"),
                           (hiding_blocks, "block 0 (composite index 1) of the gauges (input 0)")):
         f = vtkThiessenArealAverage()
