@@ -376,6 +376,9 @@ private:
   /// Per id, a PointStatus in the low bits plus HasDuplicates for an accepted point that exact
   /// copies point to; empty until the first Insert or Remove (a batch build does not pay for it).
   std::vector<std::uint8_t> StatusBytes;
+  /// Whether the status bytes are made (streaming): Status and the copies' queries read them and
+  /// the places; before, a batch build's sorted lists.
+  bool HasStatusBytes() const { return this->StatusBytes.size() == this->Coordinates.size(); }
   /// Per id, one half-edge leaving that vertex (-1 for ids that are not vertices); empty until
   /// the first Remove, then kept up to date wherever a triangle's vertices are written.
   std::vector<std::int32_t> VertexEdges;

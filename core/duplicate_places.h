@@ -51,7 +51,6 @@ public:
       }
     }
   }
-  bool Empty() const { return this->Places.empty(); }
   std::size_t Bytes() const;
 
 private:
