@@ -8,6 +8,7 @@
 #include "tile_edges.h"
 
 #include <algorithm>
+#include <unordered_map>
 #include <utility>
 
 namespace tessera
@@ -22,30 +23,23 @@ using namespace tiles_detail;
 // each, is far cheaper than the cache misses of hashing when many tiles are derived, and the
 // caller may keep one all -1 between calls (entries set back one by one). Without one, a table
 // made for the call cost O(triangles) however few tiles it derived (one tile took 226 us at 10^6
-// points, 7 us at 10^4): a call that labels few of many triangles hashes them instead, in a table
-// of its own that grows with what it labels.
+// points, 7 us at 10^4): a call that labels few of many triangles hashes them instead.
 class TriangleEntries
 {
 public:
   /// expected: about how many triangles will be labelled (the table is flat beyond 1/64 of them).
   TriangleEntries(std::vector<std::int32_t>* table, std::size_t triangles, std::size_t expected)
     : Flat(table ? *table : this->OwnTable)
+    , Hashed(!table && expected * 64 < triangles)
   {
-    if (table || expected * 64 >= triangles)
+    if (this->Hashed)
+    {
+      this->Hash.reserve(expected);
+    }
+    else
     {
       this->Flat.resize(triangles, -1);
-      return;
     }
-    this->Hashed = true;
-    std::size_t capacity = 64;
-    this->Shift = 26;
-    while (capacity < 2 * expected)
-    {
-      capacity *= 2;
-      --this->Shift;
-    }
-    this->Keys.assign(capacity, -1);
-    this->Values.resize(capacity);
   }
 
   ~TriangleEntries()
@@ -65,75 +59,30 @@ public:
     {
       return this->Flat[t];
     }
-    const std::size_t slot = this->SlotOf(t);
-    return this->Keys[slot] == t ? this->Values[slot] : -1;
+    const auto found = this->Hash.find(t);
+    return found != this->Hash.end() ? found->second : -1;
   }
 
   void Set(std::int32_t t, std::int32_t value)
   {
-    if (!this->Hashed)
+    if (this->Hashed)
     {
-      if (this->Flat[t] == -1)
-      {
-        this->Written.push_back(t);
-      }
-      this->Flat[t] = value;
+      this->Hash[t] = value;
       return;
     }
-    std::size_t slot = this->SlotOf(t);
-    if (this->Keys[slot] != t)
+    if (this->Flat[t] == -1)
     {
-      if (2 * (this->Count + 1) > this->Keys.size())
-      {
-        this->Grow();
-        slot = this->SlotOf(t);
-      }
-      this->Keys[slot] = t;
-      ++this->Count;
+      this->Written.push_back(t);
     }
-    this->Values[slot] = value;
+    this->Flat[t] = value;
   }
 
 private:
-  // The slot holding t, or the empty one where it would go (linear probing; never full).
-  std::size_t SlotOf(std::int32_t t) const
-  {
-    // (Fibonacci hashing: the product's high bits, which depend on all of t's)
-    const std::size_t mask = this->Keys.size() - 1;
-    std::size_t slot = (std::uint32_t(t) * 0x9E3779B1u) >> this->Shift;
-    while (this->Keys[slot] != -1 && this->Keys[slot] != t)
-    {
-      slot = (slot + 1) & mask;
-    }
-    return slot;
-  }
-
-  void Grow()
-  {
-    std::vector<std::int32_t> keys(2 * this->Keys.size(), -1);
-    --this->Shift;
-    std::vector<std::int32_t> values(keys.size());
-    keys.swap(this->Keys);
-    values.swap(this->Values);
-    for (std::size_t k = 0; k < keys.size(); ++k)
-    {
-      if (keys[k] != -1)
-      {
-        const std::size_t slot = this->SlotOf(keys[k]);
-        this->Keys[slot] = keys[k];
-        this->Values[slot] = values[k];
-      }
-    }
-  }
-
   std::vector<std::int32_t> OwnTable; // (declared before Flat, which may refer to it)
   std::vector<std::int32_t>& Flat;
   std::vector<std::int32_t> Written; // the flat table's entries that are not -1
-  bool Hashed = false;
-  std::vector<std::int32_t> Keys; // triangle, -1 for an empty slot
-  std::vector<std::int32_t> Values;
-  std::size_t Count = 0;
-  int Shift = 26; ///< 32 - log2 of the capacity
+  const bool Hashed;
+  std::unordered_map<std::int32_t, std::int32_t> Hash;
 };
 
 // Faces around chosen points, labelled on demand with the full derivation's rules: a face is the
@@ -324,47 +273,12 @@ private:
   std::vector<std::int32_t> Cluster;
 };
 
-// For each accepted id (first occurrence), a half-edge leaving it: one pass over the half-edge
-// arrays, stopped once every id is found. Returns (id, edge) pairs in the order of ids; ids that
-// are not vertices (rejected, duplicate, removed) never occur in the arrays and are dropped.
-// (Status() is not asked: it costs O(removed points) per call.)
-std::vector<std::pair<std::int32_t, std::int32_t>> VertexEdges(const Tess& tess,
-  const std::vector<std::int32_t>& ids)
+// VertexEdges without tracked vertex edges: one pass over the half-edge arrays, stopped once every
+// id is found. Appends (id, edge) for each id's first occurrence; ids never found keep edge -1.
+void FindVertexEdgesByScan(const Tess& tess,
+  const std::vector<std::int32_t>& ids,
+  std::vector<std::pair<std::int32_t, std::int32_t>>& found)
 {
-  std::vector<std::pair<std::int32_t, std::int32_t>> found;
-  if (tess.TracksVertexEdges())
-  {
-    // O(1) per id; repeats are dropped by sorting the ids found (a table of the points cost
-    // O(points) a call, however few ids were asked for).
-    std::vector<std::pair<std::int32_t, std::int32_t>> byId; // (id, its place in found)
-    for (const std::int32_t id : ids)
-    {
-      const std::int32_t e = tess.EdgeLeaving(id);
-      if (e >= 0)
-      {
-        byId.emplace_back(id, std::int32_t(found.size()));
-        found.emplace_back(id, e);
-      }
-    }
-    std::sort(byId.begin(), byId.end());
-    bool repeats = false;
-    for (std::size_t k = 1; k < byId.size(); ++k)
-    {
-      if (byId[k].first == byId[k - 1].first)
-      {
-        found[byId[k].second].second = -1; // a later occurrence: dropped below
-        repeats = true;
-      }
-    }
-    if (repeats)
-    {
-      found.erase(std::remove_if(found.begin(),
-                    found.end(),
-                    [](const std::pair<std::int32_t, std::int32_t>& f) { return f.second < 0; }),
-        found.end());
-    }
-    return found;
-  }
   std::vector<std::int32_t> slot(tess.PointCount(), -1);
   for (const std::int32_t id : ids)
   {
@@ -384,6 +298,38 @@ std::vector<std::pair<std::int32_t, std::int32_t>> VertexEdges(const Tess& tess,
       found[slot[v]].second = std::int32_t(e);
       --missing;
     }
+  }
+}
+
+// For each accepted id (first occurrence), a half-edge leaving it. Returns (id, edge) pairs in the
+// order of ids; ids that are not vertices (rejected, duplicate, removed, unknown) are dropped.
+// (Status() is not asked: it costs O(removed points) per call.)
+std::vector<std::pair<std::int32_t, std::int32_t>> VertexEdges(const Tess& tess,
+  const std::vector<std::int32_t>& ids)
+{
+  std::vector<std::pair<std::int32_t, std::int32_t>> found;
+  if (tess.TracksVertexEdges())
+  {
+    // O(1) per id (-1 for one that is no vertex); repeats are found by sorting the ids (a table
+    // of the points cost O(points) a call, however few ids were asked for).
+    std::vector<std::pair<std::int32_t, std::int32_t>> byId; // (id, its place in found)
+    for (const std::int32_t id : ids)
+    {
+      byId.emplace_back(id, std::int32_t(found.size()));
+      found.emplace_back(id, tess.EdgeLeaving(id));
+    }
+    std::sort(byId.begin(), byId.end());
+    for (std::size_t k = 1; k < byId.size(); ++k)
+    {
+      if (byId[k].first == byId[k - 1].first)
+      {
+        found[byId[k].second].second = -1; // a later occurrence
+      }
+    }
+  }
+  else
+  {
+    FindVertexEdgesByScan(tess, ids, found);
   }
   found.erase(std::remove_if(found.begin(),
                 found.end(),
