@@ -599,14 +599,37 @@ std::vector<std::string> UncarriedCellArrays(vtkPointSet* set)
   return CellArrays(set, false);
 }
 
+/// 'a', 'b', ... (ListNames of the names, quoted).
+std::string QuotedNames(const std::vector<std::string>& names)
+{
+  return ListNames(names.size(), [&](std::size_t k) { return "'" + names[k] + "'"; });
+}
+
+/// The cell-data arrays (among `names`; all when it is empty) that a point-data array of the same
+/// name hides in a point set with cells.
+std::vector<std::string> HiddenCellArrays(vtkPointSet* set, const std::vector<std::string>& names)
+{
+  std::vector<std::string> hidden;
+  if (set->GetNumberOfCells() > 0)
+  {
+    for (const std::string& name : CellArrays(set, true))
+    {
+      if (names.empty() || std::find(names.begin(), names.end(), name) != names.end())
+      {
+        hidden.push_back(name);
+      }
+    }
+  }
+  return hidden;
+}
+
 /// "... cell-data array(s) 'a', 'b' ... not carried ..." for the arrays a point-data array of the
 /// same name hides in a point set called `label`, or "".
 std::string HiddenCellArraysProblem(vtkPointSet* set, const std::string& label)
 {
-  const std::vector<std::string> hidden = CellArrays(set, true);
-  return hidden.empty() || set->GetNumberOfCells() == 0 ? std::string()
-                                                        : label + "'s cell-data array(s) " +
-      ListNames(hidden.size(), [&](std::size_t k) { return "'" + hidden[k] + "'"; }) +
+  const std::vector<std::string> hidden = HiddenCellArrays(set, {});
+  return hidden.empty() ? std::string()
+                        : label + "'s cell-data array(s) " + QuotedNames(hidden) +
       " are not carried: its point data has arrays of the same names, which are carried instead";
 }
 
@@ -885,8 +908,7 @@ vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data, std::vector<std::s
     }
     if (carried == points && !cellArrays.empty() && points->GetNumberOfPoints() > 0)
     {
-      warnings.push_back("the input's cell-data arrays (" +
-        ListNames(cellArrays.size(), [&](std::size_t k) { return "'" + cellArrays[k] + "'"; }) +
+      warnings.push_back("the input's cell-data arrays (" + QuotedNames(cellArrays) +
         ") are not carried: its cells are not one vertex per point, so they are no point's");
     }
     return carried;
@@ -927,19 +949,11 @@ std::vector<std::string> HiddenVertexArrayWarnings(vtkDataObject* data,
   std::vector<std::string> warnings;
   for (const auto& [set, label] : sets)
   {
-    std::vector<std::string> hidden;
-    for (const std::string& name : CellArrays(set, true))
+    const std::vector<std::string> hidden = HiddenCellArrays(set, names);
+    if (!hidden.empty())
     {
-      if (std::find(names.begin(), names.end(), name) != names.end())
-      {
-        hidden.push_back(name);
-      }
-    }
-    if (!hidden.empty() && set->GetNumberOfCells() > 0)
-    {
-      warnings.push_back("the cell-data array(s) " +
-        ListNames(hidden.size(), [&](std::size_t k) { return "'" + hidden[k] + "'"; }) + " of " +
-        label + " are not used: point-data arrays of the same names are");
+      warnings.push_back("the cell-data array(s) " + QuotedNames(hidden) + " of " + label +
+        " are not used: point-data arrays of the same names are");
     }
   }
   return warnings;
