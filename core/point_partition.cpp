@@ -8,6 +8,7 @@
 #include <functional>
 #include <limits>
 #include <queue>
+#include <tuple>
 #include <string>
 #include <utility>
 
@@ -76,13 +77,19 @@ double DistanceAlong(const Point2& p, int at, int from, int to, int width)
   return norm > 0.0 ? ((p.x - at % width) * tx + (p.y - at / width) * ty) / norm : 0.0;
 }
 
-// The pixel from which the tangent at the end pixel `position` of an open contour of two pixels or
-// more is taken: over up to 5 pixels, as one pixel step only gives the 8 chain-code directions.
+// How many pixels before an end of an open contour (of two pixels or more) its tangent there is
+// taken over: up to 5, as one pixel step only gives the 8 chain-code directions.
+int EndTangentReach(const RidgeContours& contours, int contour)
+{
+  return std::min(5, contours.Offsets[contour + 1] - 1 - contours.Offsets[contour]);
+}
+
+// The pixel from which the tangent at the end pixel `position` of an open contour is taken.
 int EndTangentPixel(const RidgeContours& contours, int contour, int position)
 {
   const int first = contours.Offsets[contour];
   const int last = contours.Offsets[contour + 1] - 1;
-  const int reach = std::min(5, last - first);
+  const int reach = EndTangentReach(contours, contour);
   return contours.Pixels[position == first ? first + reach : last - reach];
 }
 
@@ -103,6 +110,48 @@ double DistanceBeyondEnd(const Point2& p,
   const int end = contours.Pixels[position];
   return std::max(
     0.0, DistanceAlong(p, end, EndTangentPixel(contours, contour, position), end, width));
+}
+
+// The projection of p, whose nearest pixel is at `position` of `contour`, and its distance beyond
+// that pixel's end (DistanceBeyondEnd; 0 when not past an end). A point nearest to one of the
+// pixels an end's tangent is taken over, but lying beyond the end pixel along that tangent, is
+// past the end too: it is projected on the end pixel. Ridge contours often hook at an end (the
+// crest bends where the points stop), and the points continuing the curve were then nearer to a
+// pixel just before the end than to the end pixel: they all took that pixel's node, in no order.
+//
+//   = = = = = = 1                 contour hooking at its end E; the points x continue it
+//                E    x   x   x   beyond E along the end tangent, but are nearer to pixel 1
+//
+// Where both ends qualify (a contour of a few pixels), the nearer end pixel is taken.
+std::pair<int, double> ProjectionPastEnds(const Point2& p,
+  const RidgeContours& contours,
+  int contour,
+  int position,
+  int width)
+{
+  std::pair<int, double> projection{ position, 0.0 };
+  const int first = contours.Offsets[contour];
+  const int last = contours.Offsets[contour + 1] - 1;
+  if (contours.Closed[contour] || last == first)
+  {
+    return projection;
+  }
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const int end : { first, last })
+  {
+    if (std::abs(position - end) > EndTangentReach(contours, contour))
+    {
+      continue;
+    }
+    const double beyond = DistanceBeyondEnd(p, contours, contour, end, width);
+    const double distance = SquaredDistanceToPixel(p, contours.Pixels[end], width);
+    if (beyond > 0.0 && distance < nearest)
+    {
+      projection = { end, beyond };
+      nearest = distance;
+    }
+  }
+  return projection;
 }
 
 // The points past one contour end, in order of their distance beyond it (along the end tangent),
@@ -507,11 +556,10 @@ PointPartition PartitionPoints(const std::vector<Point2>& pixelPoints,
   for (std::size_t k = 0; k < pixelPoints.size(); ++k)
   {
     const int pixel = NearestContourPixel(pixelPoints[k], nearest, width, height);
-    const int position = positionOf[pixel];
-    const int contour = contourOfPosition[position];
+    const int contour = contourOfPosition[positionOf[pixel]];
     result.GroupId[k] = contour;
-    result.Projection[k] = position;
-    beyond[k] = DistanceBeyondEnd(pixelPoints[k], contours, contour, position, width);
+    std::tie(result.Projection[k], beyond[k]) =
+      ProjectionPastEnds(pixelPoints[k], contours, contour, positionOf[pixel], width);
   }
   const std::vector<std::uint8_t> chained =
     FollowChainsPastEnds(pixelPoints, contours, width, maximumGap, result);

@@ -13,15 +13,16 @@
 // Addition to the paper: the major-ridge test stops a ridge contour a few pixels before the end
 // of the points along it (the crest near a data end slopes along itself), and every point past
 // the end would then share the end pixel's node, collapsing the end of the fitted curve onto
-// their mean. A point whose projection is an end pixel of an open contour and that lies beyond
-// it along the end tangent (measured over the last few pixels) gets the arc length extended by
-// that tangent distance; the nodes of the contour's points are then the extended arc lengths
-// rescaled to [0, 1]. For contours whose ends are not passed the nodes are the paper's. Only
-// points that continue the curve are extended: taken by distance beyond the end (along the end
-// tangent), each at most maximumGap (pixels) further than the one before, the first than the end
-// pixel. A point after a larger gap is an outlier and gets the node of the last continuation (the
-// end pixel's if there is none); otherwise one far point would stretch the node range and squeeze
-// every other node.
+// their mean. A point whose nearest pixel is an end pixel of an open contour, or one of the last
+// few pixels before it (over which the end tangent is measured: contours often hook at an end),
+// and that lies beyond the end pixel along the end tangent, is projected on the end pixel and gets
+// the arc length extended by that tangent distance; the nodes of the contour's points are then
+// the extended arc lengths rescaled to [0, 1]. For contours whose ends are not passed the nodes
+// are the paper's. Only points that continue the curve are extended: taken by distance beyond the
+// end (along the end tangent), each at most maximumGap (pixels) further than the one before, the
+// first than the end pixel. A point after a larger gap is an outlier and gets the node of the last
+// continuation (the end pixel's if there is none); otherwise one far point would stretch the node
+// range and squeeze every other node.
 //
 // Continuations are also taken from other contours. A contour often stops short of its points
 // (above, or where the field of a nearby line pulls its crest down), and past its end the nearest

@@ -518,12 +518,77 @@ TEST(PointPartition, NodesDoNotRunBackAlongAChainThatTurnsBack)
   EXPECT_GE(backwards, 3);
 }
 
+// Whether p is past the end pixel at `end` of open contour c (brute force): some pixel of c at most
+// `within` from p is one of the 5 before the end (fewer on a short contour), and p lies beyond the
+// end pixel in the direction from the fifth pixel before it to it.
+bool PastAHookedEnd(const Point2& p,
+  const tessera::RidgeContours& contours,
+  int c,
+  int end,
+  double within,
+  int width)
+{
+  const int first = contours.Offsets[c], last = contours.Offsets[c + 1] - 1;
+  const int reach = std::min(5, last - first);
+  const auto at = [&](int position)
+  {
+    const int pixel = contours.Pixels[position];
+    return Point2{ double(pixel % width), double(pixel / width) };
+  };
+  bool nearTheEnd = false;
+  for (int position = first; position <= last; ++position)
+  {
+    const Point2 q = at(position);
+    nearTheEnd = nearTheEnd ||
+      (std::abs(position - end) <= reach && std::hypot(p.x - q.x, p.y - q.y) <= within);
+  }
+  const Point2 e = at(end), inner = at(end == first ? first + reach : last - reach);
+  return nearTheEnd && (p.x - e.x) * (e.x - inner.x) + (p.y - e.y) * (e.y - inner.y) > 0.0;
+}
+
+// A contour hooking at its end: row 20 from x = 10 to 40, then its end pixel one row down, at
+// (40, 21) (its end tangent, from (36, 20), points along (4, 1)). The points continuing the row
+// past x = 40 are nearer to pixel (40, 20) than to the end pixel: they are past the end all the
+// same, and take increasing nodes along x (they all took the node of (40, 20)). A point beside the
+// contour before the end keeps its nearest pixel.
+TEST(PointPartition, PointsPastAHookedEndAreOrderedAlongIt)
+{
+  const int width = 60, height = 40;
+  std::vector<std::pair<int, int>> hooked = Row(20, 10, 40);
+  hooked.push_back({ 40, 21 });
+  const tessera::RidgeContours contours = OpenContours({ hooked }, width);
+  const int end = contours.Offsets[1] - 1;
+  std::vector<Point2> points;
+  AppendRowOfPoints(points, 20.0, 10.0, 40.0, 1.0);
+  const std::size_t firstPast = points.size();
+  AppendRowOfPoints(points, 20.0, 41.0, 50.0, 1.0);
+  points.push_back({ 37.0, 22.5 }); // beside the contour, before the end
+  const tessera::PointPartition partition =
+    tessera::PartitionPoints(points, contours, width, height, 4.0);
+  for (std::size_t k = 1; k < points.size() - 1; ++k)
+  {
+    EXPECT_GE(partition.Node[k], partition.Node[k - 1]) << "x = " << points[k].x;
+  }
+  for (std::size_t k = firstPast; k < points.size() - 1; ++k)
+  {
+    EXPECT_EQ(partition.Projection[k], end) << "x = " << points[k].x;
+    EXPECT_TRUE(partition.Extended[k]) << "x = " << points[k].x;
+    EXPECT_GT(partition.Node[k], partition.Node[k - 1]) << "x = " << points[k].x;
+    // Beyond the end along (4, 1) / sqrt(17), from (40, 21).
+    const double along = ((points[k].x - 40.0) * 4.0 + (20.0 - 21.0)) / std::sqrt(17.0);
+    EXPECT_NEAR(partition.Beyond[k], along, 1e-12) << "x = " << points[k].x;
+  }
+  EXPECT_EQ(partition.Node[points.size() - 2], 1.0);
+  EXPECT_EQ(contours.Pixels[partition.Projection.back()], 20 * width + 37); // (37, 20)
+  EXPECT_FALSE(partition.Extended.back());
+}
+
 // Random open contours (digital lines) and points (noisy lines, some past the contours' ends, and
-// scattered points), against independent computations: a point within the gap of its nearest
-// contour keeps a nearest pixel; any other point whose pixel is not a nearest one is far, projected
-// on an end pixel of an open contour, past it (extended), and joined to it by a chain of far
-// points with steps of at most the gap (from the end pixel, or from a point of that contour within
-// the gap of the end pixel).
+// scattered points), against independent computations: a point whose pixel is not a nearest one
+// is projected on an end pixel of an open contour, and is either past that end with a nearest
+// pixel among the few before it (PastAHookedEnd), or far (beyond the gap from every contour),
+// past the end (extended) and joined to it by a chain of far points with steps of at most the gap
+// (from the end pixel, or from a point of that contour within the gap of the end pixel).
 TEST(PointPartition, ReassignedPointsAreChainedToTheirEndOverFarPoints)
 {
   std::mt19937 rng(21);
@@ -531,7 +596,7 @@ TEST(PointPartition, ReassignedPointsAreChainedToTheirEndOverFarPoints)
   std::uniform_int_distribution<int> coordinate(3, 56);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::normal_distribution<double> noise(0.0, 0.5);
-  int reassigned = 0;
+  int reassigned = 0, movedToEnd = 0;
   for (int trial = 0; trial < 60; ++trial)
   {
     // 2-4 digital lines (Bresenham) of 8 pixels or more, sharing no pixel.
@@ -635,11 +700,16 @@ TEST(PointPartition, ReassignedPointsAreChainedToTheirEndOverFarPoints)
       {
         continue;
       }
-      ++reassigned;
       const std::string where = "trial " + std::to_string(trial) + ", point " + std::to_string(k);
-      EXPECT_GT(nearest[k], gap - 0.1) << where << ": a near point was taken";
       const bool first = position == contours.Offsets[c];
       ASSERT_TRUE(first || position == contours.Offsets[c + 1] - 1) << where << ": not an end";
+      if (PastAHookedEnd(points[k], contours, c, position, nearest[k] + 0.1, width))
+      {
+        ++movedToEnd;
+        continue;
+      }
+      ++reassigned;
+      EXPECT_GT(nearest[k], gap - 0.1) << where << ": a near point was taken";
       EXPECT_TRUE(partition.Extended[k]) << where;
       EXPECT_GT(partition.Beyond[k], 0.0) << where;
       // Breadth-first search from the end over far points (and the contour's points near it).
@@ -672,6 +742,7 @@ TEST(PointPartition, ReassignedPointsAreChainedToTheirEndOverFarPoints)
     }
   }
   EXPECT_GT(reassigned, 20) << "hardly a point reassigned: the test checks little";
+  EXPECT_GT(movedToEnd, 5) << "hardly a point moved to a hooked end: the test checks little";
 }
 
 TEST(PointPartition, NoContourLeavesEveryPointUnassigned)
