@@ -9,6 +9,9 @@
 // BuildTilesAndGraph the build plus tiles and contiguity graph (what vtkDirichletTessellation
 // asks of the core).
 //
+// Nearest-point queries (NearestPoint one by one, the batch NearestPoints, CGAL's hinted
+// nearest_vertex) are timed per query (ns/q) for 10^4 queries among 10^4 .. 10^6 points.
+//
 // Columns: ns/pt = wall time per input point; B/pt = bytes held by the structure per point
 // (coordinates included); each benchmark's counters are printed in Google Benchmark's table.
 
@@ -28,6 +31,7 @@
 #ifdef TESSERA_HAVE_CGAL
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/spatial_sort.h>
 #endif
 
 namespace
@@ -190,6 +194,49 @@ void TesseraBuildTilesAndGraph(benchmark::State& state)
   SetPerPoint(state, points.size());
 }
 
+// Nearest points of 10^4 uniform queries among n uniform points (the tessellation built outside
+// the timing): one NearestPoint call per query in random order (each walk from the last triangle
+// made), the batch NearestPoints (queries along a Hilbert curve, each descent from the point found
+// before), and the peer, CGAL's nearest_vertex with the queries spatially sorted, each hinted by
+// the face of the vertex found before. ns/q: wall time per query.
+const std::vector<Point2>& NearestQueries()
+{
+  static const std::vector<Point2> queries = tessera_test::UniformPoints(10000, 777);
+  return queries;
+}
+
+void SetPerQuery(benchmark::State& state, std::size_t queries)
+{
+  state.counters["ns/q"] = benchmark::Counter(double(state.iterations()) * double(queries) * 1e-9,
+    benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void TesseraNearestPointEach(benchmark::State& state)
+{
+  const tessera::DirichletTessellation t(WindowFor(false), Input(state.range(0)));
+  for (auto _ : state)
+  {
+    std::int64_t sum = 0;
+    for (const Point2& q : NearestQueries())
+    {
+      sum += t.NearestPoint(q);
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+  SetPerQuery(state, NearestQueries().size());
+}
+
+void TesseraNearestPoints(benchmark::State& state)
+{
+  const tessera::DirichletTessellation t(WindowFor(false), Input(state.range(0)));
+  for (auto _ : state)
+  {
+    const std::vector<std::int32_t> nearest = t.NearestPoints(NearestQueries());
+    benchmark::DoNotOptimize(nearest.data());
+  }
+  SetPerQuery(state, NearestQueries().size());
+}
+
 #ifdef TESSERA_HAVE_CGAL
 void CgalDelaunay(benchmark::State& state)
 {
@@ -208,6 +255,37 @@ void CgalDelaunay(benchmark::State& state)
     benchmark::DoNotOptimize(dt.number_of_faces());
   }
   SetPerPoint(state, points.size());
+}
+void CgalNearestVertex(benchmark::State& state)
+{
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Delaunay = CGAL::Delaunay_triangulation_2<Kernel>;
+  std::vector<Kernel::Point_2> input;
+  for (const Point2& p : Input(state.range(0)))
+  {
+    input.emplace_back(p.x, p.y);
+  }
+  Delaunay dt;
+  dt.insert(input.begin(), input.end());
+  for (auto _ : state)
+  {
+    std::vector<Kernel::Point_2> queries;
+    for (const Point2& q : NearestQueries())
+    {
+      queries.emplace_back(q.x, q.y);
+    }
+    CGAL::spatial_sort(queries.begin(), queries.end());
+    Delaunay::Face_handle hint;
+    double sum = 0.0;
+    for (const Kernel::Point_2& q : queries)
+    {
+      const Delaunay::Vertex_handle v = dt.nearest_vertex(q, hint);
+      hint = v->face();
+      sum += v->point().x();
+    }
+    benchmark::DoNotOptimize(sum);
+  }
+  SetPerQuery(state, NearestQueries().size());
 }
 #endif
 
@@ -240,6 +318,11 @@ void Sizes(benchmark::internal::Benchmark* b)
   b->Unit(benchmark::kMillisecond)->UseRealTime()->Arg(10000)->Arg(100000)->Arg(1000000)->Arg(0);
 }
 
+void UniformSizes(benchmark::internal::Benchmark* b)
+{
+  b->Unit(benchmark::kMillisecond)->UseRealTime()->Arg(10000)->Arg(100000)->Arg(1000000);
+}
+
 void Large(benchmark::internal::Benchmark* b)
 {
   b->Unit(benchmark::kMillisecond)->UseRealTime()->Arg(10000000)->Iterations(1);
@@ -268,9 +351,12 @@ BENCHMARK(TesseraRemoveHighDegreeVertex)
   ->Arg(2000)
   ->Arg(4000)
   ->Arg(8000);
+BENCHMARK(TesseraNearestPointEach)->Apply(UniformSizes);
+BENCHMARK(TesseraNearestPoints)->Apply(UniformSizes);
 #ifdef TESSERA_HAVE_CGAL
 BENCHMARK(CgalDelaunay)->Apply(Sizes);
 BENCHMARK(CgalDelaunay)->Apply(Large);
+BENCHMARK(CgalNearestVertex)->Apply(UniformSizes);
 #endif
 
 int main(int argc, char** argv)

@@ -13,7 +13,6 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <unordered_set>
 
 namespace tessera
 {
@@ -1779,98 +1778,6 @@ bool DirichletTessellation::TriangulateLinkByBuild(const std::vector<std::int32_
     plan.push_back({ vertex[0], vertex[1], vertex[2], twins[0], twins[1], twins[2] });
   }
   return true;
-}
-
-std::int32_t DirichletTessellation::NearestPoint(const Point2& q) const
-{
-  if (!std::isfinite(q.x) || !std::isfinite(q.y))
-  {
-    throw InputError(
-      "the query point (" + NumberText(q.x) + ", " + NumberText(q.y) + ") is not finite");
-  }
-  const Point2* const pts = this->Coordinates.data();
-  // (the nearer of two candidates, the smaller id at equal distance)
-  const auto nearer = [&](std::int32_t a, std::int32_t b)
-  {
-    const int c = compare_distance(q, pts[a], pts[b]);
-    return c < 0 || (c == 0 && a < b);
-  };
-  if (!this->IsTwoDimensional())
-  {
-    std::int32_t best = -1;
-    for (const std::int32_t id : this->Collinear)
-    {
-      best = best < 0 || nearer(id, best) ? id : best;
-    }
-    return best;
-  }
-  std::int32_t edge = -1;
-  if (this->Locate(this->Serial, q, edge) == Location::InGhost)
-  {
-    edge = this->Twins[edge]; // (the hull edge's real side)
-  }
-  // visit(e, w) for each half-edge e leaving Origins[start], w its other (real) end.
-  const auto eachNeighbour = [this](std::int32_t start, const auto& visit)
-  {
-    std::int32_t e = start;
-    do
-    {
-      if (const std::int32_t w = this->Origins[Next(e)]; w != Ghost)
-      {
-        visit(e, w);
-      }
-      e = this->RingNext(e);
-    } while (e != start);
-  };
-  // Greedy: step to the nearest neighbour while one is strictly nearer (edge leaves v).
-  std::int32_t v = this->Origins[edge];
-  for (;;)
-  {
-    std::int32_t step = -1;
-    eachNeighbour(edge,
-      [&](std::int32_t e, std::int32_t w)
-      {
-        if (compare_distance(q, pts[w], pts[v]) < 0 &&
-          (step < 0 || nearer(w, this->Origins[Next(step)])))
-        {
-          step = e;
-        }
-      });
-    if (step < 0)
-    {
-      break;
-    }
-    v = this->Origins[Next(step)];
-    edge = this->Twins[step];
-  }
-  // Points as near as v lie with it on a circle about q that holds no point: a face of the
-  // triangulation, whose points are joined around it; the smallest id among them.
-  std::int32_t best = v;
-  std::vector<std::pair<std::int32_t, std::int32_t>> tied{ { v, edge } }; // (point, edge leaving)
-  // The ties found, in a set made at the first one (a query without ties allocates nothing): a
-  // scan of the list made the centre of m points on a circle O(m^2), 0.24 s at m = 26244.
-  std::unordered_set<std::int32_t> seen;
-  const auto firstTie = [&](std::int32_t w)
-  {
-    if (seen.empty())
-    {
-      seen.insert(v);
-    }
-    return seen.insert(w).second;
-  };
-  for (std::size_t k = 0; k < tied.size(); ++k)
-  {
-    eachNeighbour(tied[k].second,
-      [&](std::int32_t e, std::int32_t w)
-      {
-        if (compare_distance(q, pts[w], pts[v]) == 0 && firstTie(w))
-        {
-          tied.push_back({ w, this->Twins[e] });
-          best = std::min(best, w);
-        }
-      });
-  }
-  return best;
 }
 
 // Writes plan[k] into slots[k] and recycles the slots left over.

@@ -124,6 +124,13 @@ public:
   /// a nearest point. Throws InputError for a NaN or infinite q. O(walk length): short for q near
   /// the last point inserted; a scan of the points while they are collinear.
   std::int32_t NearestPoint(const Point2& q) const;
+  /// The accepted point nearest each query, as NearestPoint answers it (the same ids), for many
+  /// queries at once (nearest_point.cpp): they are taken along a Hilbert curve, each descent
+  /// starting at the point found for the query before, so that queries spread like the points
+  /// cost O(1) steps each after an O(m log m) sort, where NearestPoint's walk from the last
+  /// triangle made is O(sqrt n) for a query anywhere. Throws InputError naming the first query
+  /// (by index) that is not finite. While the points are collinear, a scan per query.
+  std::vector<std::int32_t> NearestPoints(const std::vector<Point2>& queries) const;
   /// Rejected (outside the window) ids, ascending.
   std::vector<std::int32_t> RejectedIds() const;
   /// (duplicate id, accepted id it copies) pairs, ascending by duplicate id.

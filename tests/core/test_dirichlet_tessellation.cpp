@@ -766,30 +766,32 @@ TEST(DirichletTessellation, RemovingAHullVertexBeforeLargePocketsEqualsNeverInse
 // those equally near): uniform points, a lattice (queries at cell centres and lattice points:
 // four-way and two-way ties), duplicates and removed points, queries outside the window, and the
 // collinear and empty cases.
-TEST(DirichletTessellation, NearestPointIsTheBruteForceNearest)
+// The accepted point nearest q by a scan with exact comparisons (the smallest id of those
+// equally near), -1 when there is none.
+std::int32_t BruteForceNearest(const Tess& t, const Point2& q)
 {
-  const auto bruteForce = [](const Tess& t, const Point2& q)
+  std::int32_t best = -1;
+  for (std::int32_t id = 0; id < std::int32_t(t.PointCount()); ++id)
   {
-    std::int32_t best = -1;
-    for (std::int32_t id = 0; id < std::int32_t(t.PointCount()); ++id)
+    if (t.Status(id) != PointStatus::Accepted)
     {
-      if (t.Status(id) != PointStatus::Accepted)
-      {
-        continue;
-      }
-      const int c = best < 0 ? -1 : compare_distance(q, t.Points()[id], t.Points()[best]);
-      best = c < 0 || (c == 0 && id < best) ? id : best;
+      continue;
     }
-    return best;
-  };
-  std::mt19937_64 random(17);
-  std::uniform_real_distribution<double> u(-0.5, 1.5);
+    const int c = best < 0 ? -1 : compare_distance(q, t.Points()[id], t.Points()[best]);
+    best = c < 0 || (c == 0 && id < best) ? id : best;
+  }
+  return best;
+}
+
+// Uniform points with a lattice among them (exact coordinates), some removed, one duplicated.
+Tess PointsWithALattice()
+{
   std::vector<Point2> points = UniformPoints(3000, 9);
   for (int i = 0; i < 30; ++i)
   {
     for (int j = 0; j < 30; ++j)
     {
-      points.push_back({ 0.125 + i / 64.0, 0.125 + j / 64.0 }); // a lattice among them, exact
+      points.push_back({ 0.125 + i / 64.0, 0.125 + j / 64.0 });
     }
   }
   points.push_back(points[5]); // a duplicate
@@ -798,6 +800,15 @@ TEST(DirichletTessellation, NearestPointIsTheBruteForceNearest)
   {
     t.Remove(id);
   }
+  return t;
+}
+
+// Random queries in and around the window, queries at the lattice's cell centres (four points
+// equally near) and edge middles (two), and one on a point.
+std::vector<Point2> QueriesWithTies(const Tess& t, std::uint64_t seed)
+{
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> u(-0.5, 1.5);
   std::vector<Point2> queries;
   for (int k = 0; k < 2000; ++k)
   {
@@ -808,8 +819,16 @@ TEST(DirichletTessellation, NearestPointIsTheBruteForceNearest)
     queries.push_back({ 0.125 + (i + 0.5) / 64.0, 0.125 + (i + 0.5) / 64.0 }); // four equally near
     queries.push_back({ 0.125 + i / 64.0, 0.125 + (i + 0.5) / 64.0 });         // two equally near
   }
-  queries.push_back(points[12]); // on a point
-  for (const Point2& q : queries)
+  queries.push_back(t.Points()[12]); // on a point
+  return queries;
+}
+
+TEST(DirichletTessellation, NearestPointIsTheBruteForceNearest)
+{
+  const auto bruteForce = BruteForceNearest;
+  std::mt19937_64 random(17);
+  const Tess t = PointsWithALattice();
+  for (const Point2& q : QueriesWithTies(t, 17))
   {
     EXPECT_EQ(t.NearestPoint(q), bruteForce(t, q)) << q.x << " " << q.y;
   }
@@ -846,6 +865,47 @@ TEST(DirichletTessellation, NearestPointIsTheBruteForceNearest)
     const Tess circle(Window::Rectangle(-4000, 4000, -4000, 4000), around);
     EXPECT_EQ(circle.NearestPoint({ 0.0, 0.0 }), 3);
     EXPECT_EQ(circle.NearestPoint({ 0.0, 0.0 }), bruteForce(circle, { 0.0, 0.0 }));
+    EXPECT_EQ(circle.NearestPoints({ { 0.0, 0.0 }, { 3000.0, 1.0 }, { 0.0, 0.0 } }),
+      (std::vector<std::int32_t>{ 3, 0, 3 }));
+  }
+}
+
+// The batch of queries (each descent starting at the point found for the query before, along a
+// Hilbert curve) answers as the brute force does, queries in any order and repeated; with queries
+// spread over almost the whole range of doubles (no curve over them); collinear and empty cases;
+// the first query that is not finite is named.
+TEST(DirichletTessellation, NearestPointsAreTheBruteForceNearest)
+{
+  const Tess t = PointsWithALattice();
+  std::vector<Point2> queries = QueriesWithTies(t, 23);
+  queries.insert(queries.end(), queries.begin(), queries.begin() + 100); // repeated
+  std::vector<std::int32_t> expected;
+  for (const Point2& q : queries)
+  {
+    expected.push_back(BruteForceNearest(t, q));
+  }
+  EXPECT_EQ(t.NearestPoints(queries), expected);
+  const std::vector<Point2> spread = { { 1e308, -1e308 }, { 0.5, 0.5 }, { -1e308, 1e308 } };
+  EXPECT_EQ(t.NearestPoints(spread),
+    (std::vector<std::int32_t>{ BruteForceNearest(t, spread[0]),
+      BruteForceNearest(t, spread[1]),
+      BruteForceNearest(t, spread[2]) }));
+  EXPECT_TRUE(t.NearestPoints({}).empty());
+  const Tess line(UnitWindow(), { { 0.125, 0.125 }, { 0.5, 0.5 }, { 0.375, 0.375 } });
+  EXPECT_EQ(line.NearestPoints({ { 0.9, 0.2 }, { 0.25, 0.25 } }),
+    (std::vector<std::int32_t>{ BruteForceNearest(line, { 0.9, 0.2 }), 0 }));
+  const Tess empty(UnitWindow(), std::vector<Point2>{});
+  EXPECT_EQ(empty.NearestPoints({ { 0.5, 0.5 } }), (std::vector<std::int32_t>{ -1 }));
+  try
+  {
+    t.NearestPoints({ { 0.5, 0.5 }, { 0.25, 0.5 }, { 0.5, HUGE_VAL }, { std::nan(""), 0.0 } });
+    ADD_FAILURE() << "no error for an infinite query";
+  }
+  catch (const tessera::InputError& e)
+  {
+    EXPECT_NE(
+      std::string(e.what()).find("query point 2 (0.5, inf) is not finite"), std::string::npos)
+      << e.what();
   }
 }
 
