@@ -45,7 +45,12 @@ PRIME_MERIDIANS = {"greenwich": 0.0, "lisbon": -9.131906111111, "paris": 2.33722
                    "brussels": 4.367975, "stockholm": 18.058277777778, "athens": 23.7163375,
                    "oslo": 10.722916666667, "copenhagen": 12.577875}
 
-UTM_RANGE = "eastings 0 to 1,000,000 m, northings 0 to 10,000,000 m"
+# GeographicLib's UTM limits (UTMUPS, without MGRS's): a zone's grid reaches across the equator, so
+# a northern zone's northings go below 0 and a southern zone's above 10,000,000 m (GDAL and PROJ
+# write them so for a catchment on the equator).
+UTM_RANGE = ("eastings 0 to 1,000,000 m; northings -9,100,000 to 9,600,000 m in a northern zone, "
+             "900,000 to 19,600,000 m in a southern one")
+UTM_NORTHINGS = {True: (-9.1e6, 9.6e6), False: (0.9e6, 19.6e6)}  # by hemisphere: north is True
 
 # A projected file's edges are straight in metres, which unprojected to lon/lat they are not: an
 # edge of 10 km at 40N bows some 2 m from the lon/lat line between its ends, one of 1 km 2 cm. Cut
@@ -198,7 +203,8 @@ def in_utm_range(system, x, y):
     """Whether a file's (x, y) in system (a UTM zone's PlaneSystem: its unit and axes) can be an easting and northing
     of the zone (UTM_RANGE; beyond it the projection's inverse gives a place, but not one the zone holds)."""
     east, north = system.to_grid(x, y)
-    return 0.0 < east < 1e6 and 0.0 <= north <= 1e7
+    low, high = UTM_NORTHINGS[system.north]
+    return 0.0 < east < 1e6 and low <= north <= high
 
 
 POINT_LAYER_TYPES = (1, 4)  # OGR's wkbPoint and wkbMultiPoint

@@ -12,7 +12,8 @@
  * when that vertex lies strictly inside the window (tiles that meet only at a point of the window's
  * boundary are no pair at all). The corners are rounded constructions (circumcentres, window
  * crossings), each computed from its points taken in coordinate order, and an area is summed from
- * its tile's lowest corner, so the input reordered gives the same corners and areas, bit for bit.
+ * its tile's lowest corner, so the input reordered gives the same corners and areas, bit for bit
+ * (except where corners of a tile round onto one another: points some ulps apart).
  *
  * The window is the intersection of the rectangle SetWindowBounds(xmin, xmax, ymin, ymax) (when
  * xmin < xmax and ymin < ymax) and the strict constraints a*x + b*y + c < 0 added with

@@ -2078,7 +2078,7 @@ def test_a_catchment_declared_projected_is_named():
                                                "WGS84 ones"), f"{said[0]}")
         # Metres in a shapefile whose .prj GDAL cannot read: the vertex is named, and that the file
         # must declare its system in a form GDAL reads.
-        shp, shx = shapefile_of([utm_60s(ring) for ring in LAKE_BASIN["features"][0]["geometry"]["coordinates"]])
+        shp, shx = shapefile_of([utm_of(ring) for ring in LAKE_BASIN["features"][0]["geometry"]["coordinates"]])
         for extension, data in ((".shp", shp), (".shx", shx), (".prj", b"not a coordinate system")):
             with open(os.path.join(out, "garbled" + extension), "wb") as f:
                 f.write(data)
@@ -2257,9 +2257,9 @@ def assert_same_means(got, want, what):
                      f"{what}: the mean {a}")
 
 
-def utm_60s(points):
-    """points ((lon, lat)) as eastings and northings of UTM zone 60S, by vtkGeographicProjection's
-    UTM path (GeographicLib's)."""
+def utm_of(points, zone=60, north=False):
+    """points ((lon, lat)) as eastings and northings of UTM zone 60S (or of another zone and
+    hemisphere), by vtkGeographicProjection's UTM path (GeographicLib's)."""
     from tessera import vtkGeographicProjection
     from vtkmodules.vtkCommonCore import vtkPoints
     from vtkmodules.vtkCommonDataModel import vtkPolyData
@@ -2272,10 +2272,42 @@ def utm_60s(points):
     projection = vtkGeographicProjection()
     projection.SetInputData(data)
     projection.SetProjectionToUTM()
-    projection.SetUTMZone(60)
-    projection.SetUTMNorth(False)
+    projection.SetUTMZone(zone)
+    projection.SetUTMNorth(north)
     projection.Update()
     return [projection.GetOutput().GetPoint(k)[:2] for k in range(len(points))]
+
+
+def test_utm_gauges_across_the_equator_give_the_lon_lat_means():
+    # Four gauges about (10.5E, 0) as eastings and northings of zone 32N (negative northings south
+    # of the equator) and of 32S (northings above 10,000,000 m north of it), as GDAL and PROJ write
+    # them: the means of the lon/lat file. A northing beyond the zone's grid is still named.
+    import json
+
+    with tempfile.TemporaryDirectory() as out:
+        places = {"A": (10.25, -0.25), "B": (10.75, -0.25), "C": (10.75, 0.25), "D": (10.25, 0.35)}
+        lonlat = write(out, "lonlat.csv", "station_id,lon,lat\n" + "".join(
+            f"{s},{lon},{lat}\n" for s, (lon, lat) in places.items()))
+        observations = write(out, "obs.csv", "station_id,year,month,precip\nA,2000,1,10\nB,2000,1,20\n"
+                             "C,2000,1,30\nD,2000,1,40\nA,2000,2,10\nB,2000,2,20\nC,2000,2,30\n")
+        catchment = write(out, "square.geojson", json.dumps({"type": "Polygon", "coordinates": [
+            [[10, -0.5], [11, -0.5], [11, 0.5], [10, 0.5], [10, -0.5]]]}))
+        run_colorado(os.path.join(out, "lonlat"), stations=lonlat, observations=observations,
+                     catchment=catchment, plots=False, what="lon/lat")
+        want = read_csv(os.path.join(out, "lonlat", "areal_mean.csv"))
+        for zone, north in (("32N", True), ("32S", False)):
+            xy = utm_of(list(places.values()), 32, north)
+            assert_that(min(y for _, y in xy) < 0 if north else max(y for _, y in xy) > 1e7, f"{zone}: {xy}")
+            path = write(out, f"{zone}.csv", "station_id,x,y\n" + "".join(
+                f"{s},{x!r},{y!r}\n" for s, (x, y) in zip(places, xy)))
+            run_colorado(os.path.join(out, zone), stations=path, observations=observations, catchment=catchment,
+                         plots=False, what=zone, **{"stations-utm": zone})
+            assert_same_means(read_csv(os.path.join(out, zone, "areal_mean.csv")), want, zone)
+        far = write(out, "far.csv", "station_id,x,y\nA,600000,-9200000\n")
+        _, stderr = run_colorado(os.path.join(out, "far"), stations=far, observations=observations,
+                                 catchment=catchment, plots=False, status=1, what="far", **{"stations-utm": "32N"})
+        message = f"{far}:2: (600000, -9200000) is not an easting and northing of a UTM zone"
+        assert_that(message in stderr and "Traceback" not in stderr, f"{message!r} not in {stderr!r}")
 
 
 def geopackage_of(path, layers):
@@ -2336,7 +2368,7 @@ def test_catchment_geopackage_in_metres_beside_a_layer_of_lon_lat_points():
                      lambda ring: [snyder_conic("aea", x, y, 176, -39, -38, -40, 1e6, 2e6) for x, y in ring]),
         "lake_utm": ('PROJECTION["Transverse_Mercator"],PARAMETER["latitude_of_origin",0],PARAMETER['
                      '"central_meridian",177],PARAMETER["scale_factor",0.9996],PARAMETER["false_easting",500000],'
-                     'PARAMETER["false_northing",10000000]', utm_60s)}
+                     'PARAMETER["false_northing",10000000]', utm_of)}
     with tempfile.TemporaryDirectory() as out:
         catchment, stations, observations = write_lake_basin(out)
         run_colorado(os.path.join(out, "lonlat"), stations=stations, observations=observations, plots=False,
@@ -2376,7 +2408,7 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
     import json
 
     us_foot = 1200 / 3937
-    origin_utm = utm_60s([(177.0, -39.0)])[0]
+    origin_utm = utm_of([(177.0, -39.0)])[0]
     systems = {
         "aea": ("+proj=aea +lat_0=-39 +lon_0=176 +lat_1=-38 +lat_2=-40 +x_0=1000000 +y_0=2000000 +datum=WGS84 +units=m",
                 lambda ps: [snyder_conic("aea", x, y, 176, -39, -38, -40, 1e6, 2e6) for x, y in ps]),
@@ -2385,7 +2417,7 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
                 lambda ps: [tuple(v / us_foot for v in snyder_conic("lcc", x, y, 175, -41, -37.5, -40.5, 2510000,
                                                                     6023150)) for x, y in ps]),
         "tmerc": ("+proj=tmerc +lat_0=-39 +lon_0=177 +k=0.9996 +x_0=1600000 +y_0=800000 +datum=WGS84 +units=m",
-                  lambda ps: [(x - 500000 + 1600000, y - origin_utm[1] + 800000) for x, y in utm_60s(ps)]),
+                  lambda ps: [(x - 500000 + 1600000, y - origin_utm[1] + 800000) for x, y in utm_of(ps)]),
         "laea": ("+proj=laea +lat_0=-40 +lon_0=176 +x_0=500000 +y_0=700000 +datum=WGS84 +units=m",
                  lambda ps: [snyder_laea(x, y, 176, -40, 500000, 700000) for x, y in ps]),
         "EPSG:3035": ("EPSG:3035", lambda ps: [snyder_laea(x, y, 10, 52, 4321000, 3210000) for x, y in ps]),
@@ -2432,7 +2464,7 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
         runs = [(c, systems[g][0], stations_in(systems[g][1], g.replace(":", "_"))) for c, g in
                 (("aea", "lcc"), ("lcc", "tmerc"), ("tmerc", "aea"), ("laea", "EPSG:3035"), ("EPSG:3857", "merc"),
                  ("laea_corner", "aea"))]
-        utm_xy = stations_in(utm_60s, "utm")
+        utm_xy = stations_in(utm_of, "utm")
         runs.append(("aea", "EPSG:32760", utm_xy))
         for name, crs, xy in runs:
             path = catchment_in(name)
@@ -2688,7 +2720,7 @@ def test_gauges_from_a_gis_file_of_points_give_the_csv_means():
         assert_that(got == want == from_zip and len(got) == 2, f"the GeoJSON gauges' means {got} against {want}")
         names = {w["station_id"]: w["name"] for w in read_csv(os.path.join(out, "points", "weights_2001_01.csv"))}
         assert_that(names and all(names[s] == f"{s} gauge" for s in names), f"the names: {names}")
-        utm = utm_60s(list(LAKE_GAUGES.values()))
+        utm = utm_of(list(LAKE_GAUGES.values()))
         for name, path, options in (
                 ("utm", points_file(out, "utm.geojson", utm, "site_no", "urn:ogc:def:crs:EPSG::32760"), {}),
                 ("code", points_file(out, "code.geojson", LAKE_GAUGES.values(), "code"), {"stations-id": "CODE"})):
@@ -3298,7 +3330,7 @@ def test_without_tessera_on_the_path_the_scripts_say_how_to_run():
 
 
 if __name__ == "__main__":
-    run([test_the_colorado_main_job, test_missing_values_keep_their_months, test_bad_files_are_named,
+    run([test_utm_gauges_across_the_equator_give_the_lon_lat_means, test_the_colorado_main_job, test_missing_values_keep_their_months, test_bad_files_are_named,
          test_outputs_that_cannot_be_written_are_named, test_a_hole_outside_its_polygon_is_named,
          test_the_map_of_another_place_with_a_lake,
          test_a_lake_touching_the_outline_and_catchments_of_several_features,
