@@ -386,6 +386,49 @@ void AddIdFieldArray(vtkDataObject* data, const char* name, const std::vector<st
 
 namespace
 {
+void ListNonEmptyArraysFirst(vtkFieldData* field)
+{
+  const int count = field ? field->GetNumberOfArrays() : 0;
+  if (count < 2 || field->GetAbstractArray(0)->GetNumberOfTuples() > 0)
+  {
+    return;
+  }
+  std::vector<vtkSmartPointer<vtkAbstractArray>> arrays;
+  for (int k = 0; k < count; ++k)
+  {
+    arrays.emplace_back(field->GetAbstractArray(k));
+  }
+  std::stable_partition(arrays.begin(),
+    arrays.end(),
+    [](const vtkSmartPointer<vtkAbstractArray>& array) { return array->GetNumberOfTuples() > 0; });
+  field->Initialize();
+  for (const vtkSmartPointer<vtkAbstractArray>& array : arrays)
+  {
+    field->AddArray(array);
+  }
+}
+} // namespace
+
+void ListNonEmptyFieldArraysFirst(vtkDataObject* data)
+{
+  if (!data)
+  {
+    return;
+  }
+  ListNonEmptyArraysFirst(data->GetFieldData());
+  if (vtkCompositeDataSet* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> block;
+    block.TakeReference(composite->NewIterator());
+    for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem())
+    {
+      ListNonEmptyArraysFirst(block->GetCurrentDataObject()->GetFieldData());
+    }
+  }
+}
+
+namespace
+{
 /// vtkGDALVectorReader gives a polygon's rings as closed polylines (last point = first point).
 bool IsClosedLine(vtkPolyData* poly, vtkIdList* ids)
 {

@@ -150,6 +150,12 @@ std::string EmptyBoundsWarning(const double bounds[4], bool withConstraints);
 /// Adds an id array (vtkIdTypeArray, one component) named `name` to the data object's field data.
 void AddIdFieldArray(vtkDataObject* data, const char* name, const std::vector<std::int32_t>& ids);
 
+/// Moves the empty field-data arrays of data (and of each block of a composite) after the others,
+/// keeping their order otherwise. ParaView lists no field data at all when the first array is
+/// empty (it counts the field's tuples by its first array): the lists of rejected or duplicate
+/// points, often empty, came first and hid vtkWindowClip's WindowArea and CoveredFraction.
+void ListNonEmptyFieldArraysFirst(vtkDataObject* data);
+
 /// Polygon rings as flat arrays (ring r is Vertices[Offsets[r] .. Offsets[r+1])).
 struct Rings
 {

@@ -175,6 +175,7 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
       vtkWarningMacro(<< "no Delaunay triangle: " << why
                       << " (Dirichlet Tessellation gives their tiles, strips across the window)");
     }
+    tessera_vtk::ListNonEmptyFieldArraysFirst(output);
     return 1;
   }
   catch (const std::exception& e)

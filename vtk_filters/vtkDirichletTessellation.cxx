@@ -569,6 +569,8 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
       vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
                         renamedFields, "field-data", "both outputs", "field"));
     }
+    tessera_vtk::ListNonEmptyFieldArraysFirst(tilesOutput);
+    tessera_vtk::ListNonEmptyFieldArraysFirst(graphOutput);
     return 1;
   }
   catch (const std::exception& e)

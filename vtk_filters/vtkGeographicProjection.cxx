@@ -1012,6 +1012,7 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
         tessera_vtk::WriteProjectionRecord(output, record);
       }
     }
+    tessera_vtk::ListNonEmptyFieldArraysFirst(output);
     return 1;
   }
   catch (const std::exception& e)

@@ -361,6 +361,13 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
         imageOut->GetPointData()->AddArray(mask);
       }
     }
+    for (vtkDataObject* output : { static_cast<vtkDataObject*>(pointsOut),
+           static_cast<vtkDataObject*>(contoursOut),
+           static_cast<vtkDataObject*>(curvesOut),
+           static_cast<vtkDataObject*>(imageOut) })
+    {
+      tessera_vtk::ListNonEmptyFieldArraysFirst(output);
+    }
     return 1;
   }
   catch (const std::exception& e)

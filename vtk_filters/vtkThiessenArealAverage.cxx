@@ -1113,6 +1113,7 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
     {
       tilesOutput->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), in.Times[step]);
     }
+    tessera_vtk::ListNonEmptyFieldArraysFirst(tilesOutput);
     return 1;
   }
   catch (const std::exception& e)
@@ -1581,6 +1582,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   // The projection the tiles were made in, as vtkGeographicProjection records it: another average
   // given it (ProjectionRecord) makes the same tiles, as for a part of this catchment.
   tessera_vtk::WriteProjectionRecord(in.Summary, in.Average->Projection().ToString());
+  tessera_vtk::ListNonEmptyFieldArraysFirst(in.Summary);
 }
 
 //------------------------------------------------------------------------------

@@ -433,6 +433,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
                       << ") and were not clipped; their ids are in the field data array "
                          "SkippedCellIds.");
     }
+    tessera_vtk::ListNonEmptyFieldArraysFirst(output);
     return 1;
   }
   catch (const tessera::NotConvexError& e)

@@ -6,7 +6,7 @@ import os
 import sys
 
 from paraview import servermanager
-from paraview.simple import CreateRenderView, CSVReader, LoadPlugin, OutputPort, Show, TableToPoints
+from paraview.simple import CreateRenderView, CSVReader, LoadPlugin, OutputPort, Plane, Show, TableToPoints
 
 LoadPlugin(os.environ["TESSERA_PLUGIN"], remote=False, ns=globals())
 stations = os.path.join(os.environ["TESSERA_SOURCE_DIR"], "examples", "data", "colorado_stations.csv")
@@ -77,6 +77,21 @@ tri.UpdatePipeline()
 faces = servermanager.Fetch(tri)
 if faces.GetNumberOfPoints() != n or faces.GetNumberOfCells() < n:
     failures.append(f"Delaunay: {faces.GetNumberOfPoints()} points, {faces.GetNumberOfCells()} faces")
+
+# Field data in the Information panel: ParaView lists none when the first array is empty, and the
+# lists of rejected and duplicate points often are. The tiles' lists are shown when one is not
+# empty (the gauges have duplicates), and Window Clip's WindowArea and CoveredFraction always
+# (after the tiles' empty RejectedPointIds, passed on, they were hidden).
+if dups > 0 and "RejectedPointIds" not in tess.FieldData.keys():
+    failures.append(f"the tiles' field data listed: {tess.FieldData.keys()}")
+quarter = [0.25 * (b[1] - b[0]), 0.25 * (b[3] - b[2])]
+window = Plane(Origin=[b[0] + quarter[0], b[2] + quarter[1], 0.0], Point1=[b[1] - quarter[0], b[2] + quarter[1], 0.0],
+               Point2=[b[0] + quarter[0], b[3] - quarter[1], 0.0])
+clip = WindowClip(Input=tess, Window=window)  # noqa: F821
+clip.UpdatePipeline()
+for name in ("WindowArea", "CoveredFraction", "EmptyTileIds", "SkippedCellIds", "RejectedPointIds"):
+    if name not in clip.FieldData.keys():
+        failures.append(f"Window Clip's field data listed: {clip.FieldData.keys()}, without {name}")
 
 if failures:
     print("FAIL:\n" + "\n".join(failures[:20]))
