@@ -2,13 +2,16 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
+#include "vtkDemandDrivenPipeline.h"
 #include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
@@ -28,6 +31,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -200,6 +204,187 @@ std::string PointDataWarning(vtkPolyData* tiles)
     "passed)";
 }
 
+/// Clips the tiles (one vtkPolyData: the input, or a block of it) by the window (catchment, its
+/// coordinates scaled by 2^exponent) into output, with the tiles' field data and the clip's own.
+/// Throws tessera::InputError for bad tiles; appends its warnings; progress(fraction done).
+void ClipBlock(vtkPolyData* tiles,
+  const tessera::Catchment& catchment,
+  int exponent,
+  vtkPolyData* output,
+  const std::function<void(double)>& progress,
+  std::vector<std::string>& warnings)
+{
+  // (the tiles' arrays are copied by cell id: a short one was read past its end)
+  tessera_vtk::CheckAttributeLengths(tiles, "the tiles (input 0)");
+  const std::string pointDataWarning = PointDataWarning(tiles);
+  if (!pointDataWarning.empty())
+  {
+    warnings.push_back(pointDataWarning);
+  }
+  if (output->GetFieldData()->GetNumberOfArrays() == 0)
+  {
+    output->GetFieldData()->PassData(tiles->GetFieldData()); // (a block's: the pipeline's is not)
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polys;
+  vtkCellData* outCD = output->GetCellData();
+  vtkCellData* inCD = tiles->GetCellData();
+  // The tiles' global ids are passed too (CopyAllocate leaves them out by default), but as an
+  // ordinary array once the pieces are made: a tile in several pieces repeats its id.
+  outCD->CopyGlobalIdsOn();
+  outCD->CopyAllocate(inCD);
+  // Adding the filter's arrays would replace the input's of the same names silently.
+  const tessera_vtk::RenamedArrays renamed =
+    tessera_vtk::RenameArraysNamed(outCD, OwnArrayNames, false);
+  vtkNew<vtkIdTypeArray> tileIds;
+  tileIds->SetName(OwnArrayNames[0]);
+  vtkNew<vtkDoubleArray> clippedAreas;
+  clippedAreas->SetName(OwnArrayNames[1]);
+  vtkNew<vtkDoubleArray> fractions;
+  fractions->SetName(OwnArrayNames[2]);
+  vtkNew<vtkDoubleArray> pieceAreas;
+  pieceAreas->SetName(OwnArrayNames[3]);
+
+  tessera::Catchment::Workspace work;
+  std::vector<tessera::Point2> tile;
+  vtkNew<vtkIdList> ids;
+  tessera::ClippedRings rings;    // reused: ClipInto appends to it
+  vtkNew<vtkIdTypeArray> skipped; // cells that are not polygons: reported, not clipped
+  skipped->SetName("SkippedCellIds");
+  vtkNew<vtkIdTypeArray> empty; // polygons in the window without area to clip: reported
+  empty->SetName("EmptyTileIds");
+  tessera::CompensatedSum covered; // the clipped areas (scaled as the window is)
+  // Tiles whose points are floats are convex up to a float's rounding (the clip's convexity
+  // check allows for it).
+  const bool floatPoints = tiles->GetPoints() && tiles->GetPoints()->GetDataType() == VTK_FLOAT;
+  const double epsilon =
+    floatPoints ? std::numeric_limits<float>::epsilon() : std::numeric_limits<double>::epsilon();
+  const vtkIdType cellCount = tiles->GetNumberOfCells();
+  for (vtkIdType c = 0; c < cellCount; ++c)
+  {
+    if (c % 4096 == 0)
+    {
+      progress(static_cast<double>(c) / std::max<vtkIdType>(cellCount, 1));
+    }
+    const int type = tiles->GetCellType(c);
+    if (type != VTK_POLYGON && type != VTK_TRIANGLE && type != VTK_QUAD)
+    {
+      skipped->InsertNextValue(c);
+      continue;
+    }
+    tiles->GetCellPoints(c, ids);
+    if (ids->GetNumberOfIds() < 3)
+    {
+      // A polygon collapsed to 1 or 2 points (a tessellation's tile between points some
+      // nanometres apart can be): nothing to clip.
+      skipped->InsertNextValue(c);
+      continue;
+    }
+    tile.resize(ids->GetNumberOfIds());
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      double p[3];
+      tiles->GetPoint(ids->GetId(k), p);
+      tile[k] = { std::ldexp(p[0], exponent), std::ldexp(p[1], exponent) };
+    }
+    const double ownArea = tessera_vtk::OrientAnticlockwise(tile);
+    const bool finiteCorners = std::all_of(tile.begin(),
+      tile.end(),
+      [](const tessera::Point2& p) { return std::isfinite(p.x) && std::isfinite(p.y); });
+    if (finiteCorners && !std::isfinite(ownArea)) // (a NaN corner is named by the clip below)
+    {
+      throw tessera::InputError("cell " + std::to_string(c) +
+        " of input 0: its area overflows (coordinates of some 1e154 or more); scale the tiles "
+        "and the window down");
+    }
+    rings.RingOffsets.assign(1, 0);
+    rings.Vertices.clear();
+    const double clipped = catchment.ClipInto(tile.data(),
+      tile.size(),
+      static_cast<std::size_t>(c),
+      work,
+      &rings,
+      tessera::Catchment::FoldedTile::IsAnError,
+      epsilon);
+    if (clipped <= 0.0)
+    {
+      // Outside the window, or without area to clip: collinear corners, or a sliver thinner
+      // than the clip's rounding. The latter lie in the window, and are reported.
+      if (catchment.HoldsPartOf(tile.data(), tile.size()))
+      {
+        empty->InsertNextValue(c);
+      }
+      continue;
+    }
+    covered.Add(clipped);
+    // ClipInto's rings are right for areas, not for display (zero-width spikes and bridges,
+    // lobes joined into one ring, holes as clockwise rings): one cell per display piece instead,
+    // each a simple polygon, the pieces disjoint and filling tile & window.
+    const tessera::ClippedRings pieces = tessera::DisplayPieces(rings);
+    for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
+    {
+      const std::size_t begin = pieces.RingOffsets[r], end = pieces.RingOffsets[r + 1];
+      polys->InsertNextCell(static_cast<vtkIdType>(end - begin));
+      for (std::size_t k = begin; k < end; ++k)
+      {
+        const auto& a = pieces.Vertices[k];
+        polys->InsertCellPoint(
+          points->InsertNextPoint(std::ldexp(a.x, -exponent), std::ldexp(a.y, -exponent), 0.0));
+      }
+      outCD->CopyData(inCD, c, polys->GetNumberOfCells() - 1);
+      tileIds->InsertNextValue(c);
+      clippedAreas->InsertNextValue(std::ldexp(clipped, -2 * exponent));
+      // (At most 1: the two areas are summed differently, and a tile inside the window gave
+      // 1 + 2^-52.)
+      fractions->InsertNextValue(ownArea > 0.0 ? std::min(1.0, clipped / ownArea) : 0.0);
+      pieceAreas->InsertNextValue(std::ldexp(
+        tessera::CompensatedPolygonArea(&pieces.Vertices[begin], end - begin), -2 * exponent));
+    }
+  }
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  outCD->SetActiveAttribute(-1, vtkDataSetAttributes::GLOBALIDS); // (see CopyGlobalIdsOn)
+  outCD->AddArray(tileIds);
+  outCD->AddArray(clippedAreas);
+  outCD->AddArray(fractions);
+  outCD->AddArray(pieceAreas);
+  // Coloured by the share of each tile inside the window (not by an input's active scalars,
+  // such as the tessellation's Area of the whole, unclipped tile).
+  outCD->SetActiveScalars(fractions->GetName());
+  if (!renamed.empty())
+  {
+    warnings.push_back(
+      tessera_vtk::RenamedArraysWarning(renamed, "cell-data", "the clipped tiles", "cell"));
+  }
+  // Both lists always (empty or not), as the other filters write theirs: a script reads them
+  // without testing for a missing array.
+  output->GetFieldData()->AddArray(empty);
+  output->GetFieldData()->AddArray(skipped);
+  const double windowArea = std::ldexp(catchment.Area(), -2 * exponent);
+  output->GetFieldData()->AddArray(OneValue("WindowArea", windowArea));
+  // (of the scaled areas: a window of 1e-300 has an area below the doubles, 0 once scaled back)
+  output->GetFieldData()->AddArray(
+    OneValue("CoveredFraction", catchment.Area() > 0.0 ? covered.Value() / catchment.Area() : 0.0));
+  if (empty->GetNumberOfValues() > 0)
+  {
+    warnings.push_back(std::to_string(empty->GetNumberOfValues()) +
+      " polygon(s) of input 0 lie in the window but have no area to clip (collinear corners, or "
+      "thinner than the clip's rounding, or some 10^14 times the window's size, its part in them "
+      "below that rounding), so they give no piece (the first is cell " +
+      std::to_string(empty->GetValue(0)) +
+      "); their ids are in the field data array EmptyTileIds.");
+  }
+  if (skipped->GetNumberOfValues() > 0)
+  {
+    warnings.push_back(std::to_string(skipped->GetNumberOfValues()) +
+      " cell(s) of input 0 are not polygons of 3 or more points, triangles or quads (the first is "
+      "cell " +
+      std::to_string(skipped->GetValue(0)) +
+      ") and were not clipped; their ids are in the field data array SkippedCellIds.");
+  }
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -211,9 +396,18 @@ vtkWindowClip::vtkWindowClip()
 //------------------------------------------------------------------------------
 int vtkWindowClip::FillInputPortInformation(int port, vtkInformation* info)
 {
-  // Tiles as vtkPolyData: a composite of them is clipped block by block by the composite
-  // pipeline (a shapefile's polygons read by vtkGDALVectorReader, say).
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkPolyData" : "vtkDataObject");
+  // Tiles as vtkPolyData, or a composite of them (a shapefile's polygons read by
+  // vtkGDALVectorReader, say), clipped here block by block (not by the composite pipeline, which
+  // kept the other blocks' pieces after an error, and whose messages could not name the block).
+  if (port == 0)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
+  }
+  else
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+  }
   return 1;
 }
 
@@ -233,22 +427,15 @@ int vtkWindowClip::RequestData(vtkInformation*,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
-  vtkPolyData* tiles = vtkPolyData::GetData(inputVector[0]);
+  vtkDataObject* tilesData = vtkDataObject::GetData(inputVector[0]);
   vtkDataObject* windowData = vtkDataObject::GetData(inputVector[1]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  vtkDataObject* output = vtkDataObject::GetData(outputVector);
   try
   {
-    // (the tiles' arrays are copied by cell id: a short one was read past its end)
-    tessera_vtk::CheckAttributeLengths(tiles, "the tiles (input 0)");
-    const std::string projectionWarning = ProjectionWarning(tiles, windowData);
+    const std::string projectionWarning = ProjectionWarning(tilesData, windowData);
     if (!projectionWarning.empty())
     {
       vtkWarningMacro(<< projectionWarning);
-    }
-    const std::string pointDataWarning = PointDataWarning(tiles);
-    if (!pointDataWarning.empty())
-    {
-      vtkWarningMacro(<< pointDataWarning);
     }
     std::vector<std::string> ringWarnings;
     const tessera_vtk::Rings window =
@@ -272,175 +459,53 @@ int vtkWindowClip::RequestData(vtkInformation*,
       throw tessera::InputError("the window (input 1): its area overflows (coordinates of some "
                                 "1e154 or more); scale the tiles and the window down");
     }
-
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    vtkNew<vtkCellArray> polys;
-    vtkCellData* outCD = output->GetCellData();
-    vtkCellData* inCD = tiles->GetCellData();
-    // The tiles' global ids are passed too (CopyAllocate leaves them out by default), but as an
-    // ordinary array once the pieces are made: a tile in several pieces repeats its id.
-    outCD->CopyGlobalIdsOn();
-    outCD->CopyAllocate(inCD);
-    // Adding the filter's arrays would replace the input's of the same names silently.
-    const tessera_vtk::RenamedArrays renamed =
-      tessera_vtk::RenameArraysNamed(outCD, OwnArrayNames, false);
-    vtkNew<vtkIdTypeArray> tileIds;
-    tileIds->SetName(OwnArrayNames[0]);
-    vtkNew<vtkDoubleArray> clippedAreas;
-    clippedAreas->SetName(OwnArrayNames[1]);
-    vtkNew<vtkDoubleArray> fractions;
-    fractions->SetName(OwnArrayNames[2]);
-    vtkNew<vtkDoubleArray> pieceAreas;
-    pieceAreas->SetName(OwnArrayNames[3]);
-
-    tessera::Catchment::Workspace work;
-    std::vector<tessera::Point2> tile;
-    vtkNew<vtkIdList> ids;
-    tessera::ClippedRings rings;    // reused: ClipInto appends to it
-    vtkNew<vtkIdTypeArray> skipped; // cells that are not polygons: reported, not clipped
-    skipped->SetName("SkippedCellIds");
-    vtkNew<vtkIdTypeArray> empty; // polygons in the window without area to clip: reported
-    empty->SetName("EmptyTileIds");
-    tessera::CompensatedSum covered; // the clipped areas (scaled as the window is)
-    // Tiles whose points are floats are convex up to a float's rounding (the clip's convexity
-    // check allows for it).
-    const bool floatPoints = tiles->GetPoints() && tiles->GetPoints()->GetDataType() == VTK_FLOAT;
-    const double epsilon =
-      floatPoints ? std::numeric_limits<float>::epsilon() : std::numeric_limits<double>::epsilon();
-    const vtkIdType cellCount = tiles->GetNumberOfCells();
-    for (vtkIdType c = 0; c < cellCount; ++c)
+    auto* blocks = vtkCompositeDataSet::SafeDownCast(tilesData);
+    if (!blocks)
     {
-      if (c % 4096 == 0)
+      this->ClipTilesOf(vtkPolyData::SafeDownCast(tilesData),
+        catchment,
+        exponent,
+        vtkPolyData::SafeDownCast(output),
+        std::string(),
+        0.0,
+        1.0);
+    }
+    else
+    {
+      // Block by block, each clipped alone (its CoveredFraction its share of the window); an
+      // error names its block and leaves the whole output empty.
+      auto* outBlocks = vtkCompositeDataSet::SafeDownCast(output);
+      outBlocks->CopyStructure(blocks);
+      outBlocks->GetFieldData()->PassData(blocks->GetFieldData());
+      const tessera_vtk::BlockLabels labels(blocks);
+      vtkSmartPointer<vtkCompositeDataIterator> block;
+      block.TakeReference(blocks->NewIterator());
+      const double count = std::max(1.0, static_cast<double>(blocks->GetNumberOfCells()));
+      double done = 0.0;
+      for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem())
       {
-        this->UpdateProgress(static_cast<double>(c) / std::max<vtkIdType>(cellCount, 1));
-      }
-      const int type = tiles->GetCellType(c);
-      if (type != VTK_POLYGON && type != VTK_TRIANGLE && type != VTK_QUAD)
-      {
-        skipped->InsertNextValue(c);
-        continue;
-      }
-      tiles->GetCellPoints(c, ids);
-      if (ids->GetNumberOfIds() < 3)
-      {
-        // A polygon collapsed to 1 or 2 points (a tessellation's tile between points some
-        // nanometres apart can be): nothing to clip.
-        skipped->InsertNextValue(c);
-        continue;
-      }
-      tile.resize(ids->GetNumberOfIds());
-      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
-      {
-        double p[3];
-        tiles->GetPoint(ids->GetId(k), p);
-        tile[k] = { std::ldexp(p[0], exponent), std::ldexp(p[1], exponent) };
-      }
-      const double ownArea = tessera_vtk::OrientAnticlockwise(tile);
-      const bool finiteCorners = std::all_of(tile.begin(),
-        tile.end(),
-        [](const tessera::Point2& p) { return std::isfinite(p.x) && std::isfinite(p.y); });
-      if (finiteCorners && !std::isfinite(ownArea)) // (a NaN corner is named by the clip below)
-      {
-        throw tessera::InputError("cell " + std::to_string(c) +
-          " of input 0: its area overflows (coordinates of some 1e154 or more); scale the tiles "
-          "and the window down");
-      }
-      rings.RingOffsets.assign(1, 0);
-      rings.Vertices.clear();
-      const double clipped = catchment.ClipInto(tile.data(),
-        tile.size(),
-        static_cast<std::size_t>(c),
-        work,
-        &rings,
-        tessera::Catchment::FoldedTile::IsAnError,
-        epsilon);
-      if (clipped <= 0.0)
-      {
-        // Outside the window, or without area to clip: collinear corners, or a sliver thinner
-        // than the clip's rounding. The latter lie in the window, and are reported.
-        if (catchment.HoldsPartOf(tile.data(), tile.size()))
+        vtkDataObject* leaf = block->GetCurrentDataObject();
+        auto* tiles = vtkPolyData::SafeDownCast(leaf);
+        if (!tiles)
         {
-          empty->InsertNextValue(c);
+          throw tessera::InputError(labels.Of(block) + " of input 0 (the tiles) is a " +
+            leaf->GetClassName() + ": only vtkPolyData (or a composite data set of it) is clipped");
         }
-        continue;
+        vtkNew<vtkPolyData> clipped;
+        const double cells = static_cast<double>(tiles->GetNumberOfCells());
+        this->ClipTilesOf(tiles,
+          catchment,
+          exponent,
+          clipped,
+          labels.Of(block) + " of input 0: ",
+          done / count,
+          (done + cells) / count);
+        done += cells;
+        outBlocks->SetDataSet(block, clipped);
       }
-      covered.Add(clipped);
-      // ClipInto's rings are right for areas, not for display (zero-width spikes and bridges,
-      // lobes joined into one ring, holes as clockwise rings): one cell per display piece instead,
-      // each a simple polygon, the pieces disjoint and filling tile & window.
-      const tessera::ClippedRings pieces = tessera::DisplayPieces(rings);
-      for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
-      {
-        const std::size_t begin = pieces.RingOffsets[r], end = pieces.RingOffsets[r + 1];
-        polys->InsertNextCell(static_cast<vtkIdType>(end - begin));
-        for (std::size_t k = begin; k < end; ++k)
-        {
-          const auto& a = pieces.Vertices[k];
-          polys->InsertCellPoint(
-            points->InsertNextPoint(std::ldexp(a.x, -exponent), std::ldexp(a.y, -exponent), 0.0));
-        }
-        outCD->CopyData(inCD, c, polys->GetNumberOfCells() - 1);
-        tileIds->InsertNextValue(c);
-        clippedAreas->InsertNextValue(std::ldexp(clipped, -2 * exponent));
-        // (At most 1: the two areas are summed differently, and a tile inside the window gave
-        // 1 + 2^-52.)
-        fractions->InsertNextValue(ownArea > 0.0 ? std::min(1.0, clipped / ownArea) : 0.0);
-        pieceAreas->InsertNextValue(std::ldexp(
-          tessera::CompensatedPolygonArea(&pieces.Vertices[begin], end - begin), -2 * exponent));
-      }
-    }
-    output->SetPoints(points);
-    output->SetPolys(polys);
-    outCD->SetActiveAttribute(-1, vtkDataSetAttributes::GLOBALIDS); // (see CopyGlobalIdsOn)
-    outCD->AddArray(tileIds);
-    outCD->AddArray(clippedAreas);
-    outCD->AddArray(fractions);
-    outCD->AddArray(pieceAreas);
-    // Coloured by the share of each tile inside the window (not by an input's active scalars,
-    // such as the tessellation's Area of the whole, unclipped tile).
-    outCD->SetActiveScalars(fractions->GetName());
-    if (!renamed.empty())
-    {
-      vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
-                        renamed, "cell-data", "the clipped tiles", "cell"));
-    }
-    // Both lists always (empty or not), as the other filters write theirs: a script reads them
-    // without testing for a missing array.
-    output->GetFieldData()->AddArray(empty);
-    output->GetFieldData()->AddArray(skipped);
-    const double windowArea = std::ldexp(catchment.Area(), -2 * exponent);
-    output->GetFieldData()->AddArray(OneValue("WindowArea", windowArea));
-    // (of the scaled areas: a window of 1e-300 has an area below the doubles, 0 once scaled back)
-    output->GetFieldData()->AddArray(OneValue(
-      "CoveredFraction", catchment.Area() > 0.0 ? covered.Value() / catchment.Area() : 0.0));
-    if (empty->GetNumberOfValues() > 0)
-    {
-      vtkWarningMacro(<< empty->GetNumberOfValues()
-                      << " polygon(s) of input 0 lie in the window but have no area to clip "
-                         "(collinear corners, or thinner than the clip's rounding, or some 10^14 "
-                         "times the window's size, its part in them below that rounding), so "
-                         "they give no piece (the first is cell "
-                      << empty->GetValue(0) << "); their ids are in the field data array "
-                      << "EmptyTileIds.");
-    }
-    if (skipped->GetNumberOfValues() > 0)
-    {
-      vtkWarningMacro(<< skipped->GetNumberOfValues()
-                      << " cell(s) of input 0 are not polygons of 3 or more points, triangles or "
-                         "quads (the first is cell "
-                      << skipped->GetValue(0)
-                      << ") and were not clipped; their ids are in the field data array "
-                         "SkippedCellIds.");
     }
     tessera_vtk::ListNonEmptyFieldArraysFirst(output);
     return 1;
-  }
-  catch (const tessera::NotConvexError& e)
-  {
-    vtkErrorMacro(<< e.what() << ThiessenTilesNote(tiles));
-    output->Initialize();
-    return 0;
   }
   catch (const std::exception& e)
   {
@@ -448,6 +513,83 @@ int vtkWindowClip::RequestData(vtkInformation*,
     output->Initialize();
     return 0;
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkWindowClip::ClipTilesOf(vtkPolyData* tiles,
+  const tessera::Catchment& catchment,
+  int exponent,
+  vtkPolyData* output,
+  const std::string& block,
+  double progressFrom,
+  double progressTo)
+{
+  std::vector<std::string> warnings;
+  try
+  {
+    ClipBlock(
+      tiles,
+      catchment,
+      exponent,
+      output,
+      [&](double fraction)
+      { this->UpdateProgress(progressFrom + fraction * (progressTo - progressFrom)); },
+      warnings);
+  }
+  catch (const tessera::NotConvexError& e)
+  {
+    throw tessera::InputError(block + e.what() + ThiessenTilesNote(tiles));
+  }
+  catch (const tessera::InputError& e)
+  {
+    throw tessera::InputError(block + e.what());
+  }
+  for (const std::string& warning : warnings)
+  {
+    vtkWarningMacro(<< block << warning);
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkWindowClip::FillOutputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), "vtkDataObject");
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+vtkTypeBool vtkWindowClip::ProcessRequest(vtkInformation* request,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA_OBJECT()))
+  {
+    return this->RequestDataObject(request, inputVector, outputVector);
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+//------------------------------------------------------------------------------
+int vtkWindowClip::RequestDataObject(vtkInformation*,
+  vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector)
+{
+  // The tiles' kind: a vtkPolyData, or a composite of the same class as the tiles' (a
+  // vtkPolyData too for no input yet, or one of another type, which the pipeline refuses).
+  auto* blocks = vtkCompositeDataSet::GetData(inputVector[0], 0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
+  if (blocks && (!output || !output->IsA(blocks->GetClassName())))
+  {
+    vtkSmartPointer<vtkDataObject> made;
+    made.TakeReference(blocks->NewInstance());
+    outInfo->Set(vtkDataObject::DATA_OBJECT(), made);
+  }
+  else if (!blocks && !vtkPolyData::SafeDownCast(output))
+  {
+    outInfo->Set(vtkDataObject::DATA_OBJECT(), vtkSmartPointer<vtkPolyData>::New());
+  }
+  return 1;
 }
 
 //------------------------------------------------------------------------------

@@ -17,7 +17,11 @@
  * exactly; they are left out with a warning naming them, an error when no ring is left). An error
  * too is a tile of input 0 that is not convex (beyond the rounding of its vertices, in float or
  * double as its points are stored: its area differing from its convex hull's by more than a
- * millionth), whose clipped area would otherwise be its hull's.
+ * millionth), whose clipped area would otherwise be its hull's. Tiles given as a composite data set
+ * (a shapefile's polygons from vtkGDALVectorReader) are clipped block by block into a composite of
+ * the same structure, each block with its own field data and summary arrays; a message about a
+ * block's tiles names the block ("block 1 (composite index 2) of input 0: tile 0 is not convex"),
+ * and an error leaves the whole output empty.
  *
  * The output holds each clipped tile as one or more polygons, its display pieces: simple,
  * anticlockwise, without holes, not overlapping one another, inside the window, together filling
@@ -66,6 +70,13 @@
 #include "tesseraFiltersModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <string> // For ClipTilesOf
+
+namespace tessera
+{
+class Catchment;
+}
+
 class TESSERAFILTERS_EXPORT vtkWindowClip : public vtkPolyDataAlgorithm
 {
 public:
@@ -83,11 +94,27 @@ protected:
   vtkWindowClip();
   ~vtkWindowClip() override = default;
 
+  vtkTypeBool ProcessRequest(vtkInformation*,
+    vtkInformationVector**,
+    vtkInformationVector*) override;
+  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int FillOutputPortInformation(int port, vtkInformation* info) override;
 
 private:
+  /// Clips one vtkPolyData of tiles into output, its messages prefixed by block ("" for a
+  /// vtkPolyData input; "block 1 (composite index 2) of input 0: " for a block), its progress
+  /// running from progressFrom to progressTo.
+  void ClipTilesOf(vtkPolyData* tiles,
+    const tessera::Catchment& catchment,
+    int exponent,
+    vtkPolyData* output,
+    const std::string& block,
+    double progressFrom,
+    double progressTo);
+
   vtkWindowClip(const vtkWindowClip&) = delete;
   void operator=(const vtkWindowClip&) = delete;
 };

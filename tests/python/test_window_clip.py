@@ -620,8 +620,9 @@ def test_the_field_data_says_how_much_of_the_window_the_tiles_cover():
 
 def test_each_block_of_tiles_gives_its_share_of_the_window():
     """A composite's blocks are clipped one by one: each block's CoveredFraction is its share (0.5
-    for each half of a square); tiles stored in float that tile a double window exactly cover it
-    to a float's rounding."""
+    for each half of a square), each keeps its own field data, and a bad block is named in the error,
+    which leaves no block; tiles stored in float that tile a double window exactly cover it to a
+    float's rounding."""
     from vtkmodules.vtkCommonCore import vtkPoints
     from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
 
@@ -630,9 +631,25 @@ def test_each_block_of_tiles_gives_its_share_of_the_window():
     blocks = vtkMultiBlockDataSet()
     for k, half in enumerate(halves):
         blocks.SetBlock(k, polygon([half]))
+    tag = vtkIntArray()
+    tag.SetName("BlockTag")
+    tag.InsertNextValue(7)
+    blocks.GetBlock(1).GetFieldData().AddArray(tag)
     output, errors, _ = clip_by(blocks, window)
     shares = [field_value(output.GetBlock(k), "CoveredFraction") for k in range(2)]
     assert_that(not errors and shares == [0.5, 0.5], f"blocks: {shares}, {errors}")
+    assert_that(field_value(output.GetBlock(1), "BlockTag") == 7 and
+                output.GetBlock(0).GetFieldData().GetArray("BlockTag") is None, "a block's field data is its own")
+    # A bad block: the error names it (the tiles' cell ids are the block's), and no block is kept.
+    from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid
+    for bad, fragment in ((polygon([[(0.5, 0.0), (1.0, 0.0), (0.6, 0.2), (1.0, 1.0), (0.5, 1.0)]]),
+                           "block 1 (composite index 2) of input 0: tile 0 is not convex"),
+                          (vtkUnstructuredGrid(), "block 1 (composite index 2) of input 0 (the tiles) is a "
+                                                  "vtkUnstructuredGrid: only vtkPolyData")):
+        blocks.SetBlock(1, bad)
+        output, errors, _ = clip_by(blocks, window)
+        assert_that(len(errors) == 1 and fragment in errors[0], f"{fragment!r} not in {errors}")
+        assert_that(output.GetNumberOfBlocks() == 0, f"{output.GetNumberOfBlocks()} blocks left after an error")
     for x in (0.1, 0.3):  # a float tiling of a window whose cut is not a float
         cut = polygon([[(x, 0.0), (1.0, 0.0), (1.0, 1.0), (x, 1.0)], [(0.0, 0.0), (x, 0.0), (x, 1.0), (0.0, 1.0)]])
         floats = vtkPoints()
