@@ -243,8 +243,9 @@ public:
       if (rs == this->InsideOther.end() || sr == this->InsideOther.end())
       {
         throw RingError("ring " + std::to_string(r) + " and ring " + std::to_string(s) +
-            " run along each other all the way round: a ring given twice, or an island that fills "
-            "a hole exactly (the even-odd rule would cancel them; leave both out instead)",
+            " run along each other all the way round: a ring given twice (give it once: by the "
+            "even-odd rule the two copies cancel, taking its region away), or an island that "
+            "fills a hole exactly (leave both out: they cancel)",
           { r, s });
       }
       this->Clean.RingContacts.push_back({ r, s, rs->second.Inside });

@@ -12,16 +12,17 @@
  * warning). Ring orientation
  * and order do not matter. A catchment boundary that touches or crosses itself, or two rings that
  * cross, is an error naming them; rings may touch at points and share stretches of boundary (a
- * hole touching the outer boundary at a vertex, as OGC's simple features allow; adjacent parts),
- * and two rings that are the same path cancel by the even-odd rule (an island that fills a hole
- * exactly; they are left out with a warning naming them, an error when no ring is left). An error
- * too is a tile of input 0 that is not convex (beyond the rounding of its vertices, in float or
- * double as its points are stored: its area differing from its convex hull's by more than a
- * millionth), whose clipped area would otherwise be its hull's. Tiles given as a composite data set
- * (a shapefile's polygons from vtkGDALVectorReader) are clipped block by block into a composite of
- * the same structure, each block with its own field data and summary arrays; a message about a
- * block's tiles names the block ("block 1 (composite index 2) of input 0: tile 0 is not convex"),
- * and an error leaves the whole output empty.
+ * hole touching the outer boundary at a vertex, as OGC's simple features allow; adjacent parts).
+ * An island that fills a hole exactly (an enclave given as a hole and as a polygon) cancels it by
+ * the even-odd rule: both are left out with a warning naming them. An outer ring given twice (a
+ * feature repeated) is an error naming both copies: cancelled, it would take its region away.
+ * An error too is a tile of input 0 that is not convex (beyond the rounding of its vertices, in
+ * float or double as its points are stored: its area differing from its convex hull's by more
+ * than a millionth), whose clipped area would otherwise be its hull's. Tiles given as a composite
+ * data set (a shapefile's polygons from vtkGDALVectorReader) are clipped block by block into a
+ * composite of the same structure, each block with its own field data and summary arrays; a
+ * message about a block's tiles names the block ("block 1 (composite index 2) of input 0: tile 0
+ * is not convex"), and an error leaves the whole output empty.
  *
  * The output holds each clipped tile as one or more polygons, its display pieces: simple,
  * anticlockwise, without holes, not overlapping one another, inside the window, together filling

@@ -1421,8 +1421,9 @@ TEST(Clip, RejectsBadCatchmentsNamingRingsAndSegments)
   twice.Add(Rectangle(0, 0, 10, 10));
   twice.Add(Rectangle(0, 0, 10, 10));
   EXPECT_EQ(build(twice),
-    "ring 0 and ring 1 run along each other all the way round: a ring given twice, or an island "
-    "that fills a hole exactly (the even-odd rule would cancel them; leave both out instead)");
+    "ring 0 and ring 1 run along each other all the way round: a ring given twice (give it once: "
+    "by the even-odd rule the two copies cancel, taking its region away), or an island that fills "
+    "a hole exactly (leave both out: they cancel)");
   Rings spike; // goes out and back along the same line
   spike.Add({ { 0, 0 }, { 4, 0 }, { 4, 4 }, { 4, 6 }, { 4, 5 }, { 0, 4 } });
   EXPECT_NE(build(spike).find("ring 0 is self-intersecting"), std::string::npos) << build(spike);
