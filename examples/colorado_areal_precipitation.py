@@ -1314,7 +1314,8 @@ def holes_outside_their_polygons(path, feature=None):
     """For a GeoJSON file: (feature, ring) of each hole (a polygon's ring after its first, counted
     over the feature's polygons) whose first vertex off its polygon's outer ring lies outside it.
     The even-odd rule takes such a ring as an island, adding its area, where the file means a hole
-    (a hole that crosses its outline is refused by the filter). Only the features with
+    (a hole that crosses its outline, with vertices on both sides, is refused by the filter, and
+    not listed here). Only the features with
     `feature`'s ATTRIBUTE=VALUE when given; a malformed feature (which GDAL names or skips) is
     passed over. Empty for other files."""
     import json
@@ -1343,8 +1344,9 @@ def holes_outside_their_polygons(path, feature=None):
                 outer = np.asarray([p[:2] for p in polygon[0]], dtype=float)
                 for hole in polygon[1:]:
                     ring_number += 1
-                    side = next((s for s in (side_of_ring(p[:2], outer) for p in hole) if s != 0), 0)
-                    if side < 0:
+                    # (a hole with vertices on both sides crosses its outline: the filter names it)
+                    sides = [side_of_ring(p[:2], outer) for p in hole]
+                    if min(sides) < 0 and max(sides) <= 0:
                         found.append((k, ring_number))
                 ring_number += 1
         except (AttributeError, TypeError, ValueError, IndexError):
@@ -1427,12 +1429,18 @@ def read_catchment(path, feature=None):
         kinds = cell_kinds(output) if output else "nothing"
         if reasons and kinds == "nothing":
             csv_input.fail(f"{path}: GDAL cannot read the catchment file: {reasons[0]}")
+        found = f"only {kinds}" if kinds != "nothing" else "no geometry at all (a table, such as a CSV file, has none)"
         csv_input.fail(f"{path}: VTK's GDAL reader (vtkGDALVectorReader) found no polygon in the "
-                       f"catchment file, only {kinds} (expected a GeoJSON or shapefile polygon in lon/lat; "
+                       f"catchment file, {found} (expected a GeoJSON or shapefile polygon in lon/lat; "
                        "polygons with measures, such as PolygonM or PolygonZM shapefiles, read as empty: drop "
                        "the measures first, e.g. with ogr2ogr -dim XY)"
                        + (f"; GDAL: {reasons[0]}" if reasons else ""))
     say_gdal_messages(path, gdal, "Non closed ring detected")  # (the filter names an open ring)
+    empty = [k for k, block in enumerate(projected_input.polydata_blocks(output)) if block.GetNumberOfCells() == 0]
+    if empty:
+        print(f"{path}: {len(empty)} feature(s) have no geometry that VTK's GDAL reader reads (a null geometry, "
+              f"or one with measures; the first is feature {empty[0]}, counted from 0), and are left out of the "
+              "catchment", file=sys.stderr)
     system = projected_input.declared_system(reader, rings, path)
     if system:
         output, points = without_point_blocks(output)

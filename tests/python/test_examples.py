@@ -2278,6 +2278,34 @@ def utm_of(points, zone=60, north=False):
     return [projection.GetOutput().GetPoint(k)[:2] for k in range(len(points))]
 
 
+def test_catchment_features_without_geometry_or_crossing_holes_are_named_as_such():
+    # From a user trial: a feature with a null geometry was left out without a word; a CSV given as
+    # the catchment was "no polygon ..., only nothing"; a hole crossing its outline was first
+    # warned of as lying outside it (the filter's error, which names the crossing, follows).
+    import json
+
+    with tempfile.TemporaryDirectory() as out:
+        stations = write(out, "st.csv", "station_id,lon,lat\nA,10.25,-0.25\nB,10.75,0.25\n")
+        observations = write(out, "obs.csv", "station_id,year,month,precip\nA,2000,1,10\nB,2000,1,20\n")
+        square = [[10, -0.5], [11, -0.5], [11, 0.5], [10, 0.5], [10, -0.5]]
+        features = [{"type": "Feature", "properties": {"n": 1}, "geometry": {"type": "Polygon", "coordinates": [square]}},
+                    {"type": "Feature", "properties": {"n": 2}, "geometry": None}]
+        null = write(out, "null.geojson", json.dumps({"type": "FeatureCollection", "features": features}))
+        _, stderr = run_colorado(os.path.join(out, "null"), stations=stations, observations=observations,
+                                 catchment=null, plots=False, what="a null geometry")
+        assert_that("1 feature(s) have no geometry that VTK's GDAL reader reads" in stderr and
+                    "the first is feature 1, counted from 0" in stderr, stderr)
+        _, stderr = run_colorado(os.path.join(out, "csv"), stations=stations, observations=observations,
+                                 catchment=stations, plots=False, status=1, what="a CSV catchment")
+        assert_that("found no polygon in the catchment file, no geometry at all" in stderr and
+                    "only nothing" not in stderr, stderr)
+        crossing = write(out, "crossing.geojson", json.dumps({"type": "Polygon", "coordinates": [
+            square, [[10.3, 0.0], [10.6, 0.0], [10.6, -0.6], [10.3, -0.6], [10.3, 0.0]]]}))
+        _, stderr = run_colorado(os.path.join(out, "crossing"), stations=stations, observations=observations,
+                                 catchment=crossing, plots=False, status=1, what="a crossing hole")
+        assert_that("lies outside" not in stderr and "cross (rings may touch" in stderr, stderr)
+
+
 def test_utm_gauges_across_the_equator_give_the_lon_lat_means():
     # Four gauges about (10.5E, 0) as eastings and northings of zone 32N (negative northings south
     # of the equator) and of 32S (northings above 10,000,000 m north of it), as GDAL and PROJ write
@@ -3330,7 +3358,8 @@ def test_without_tessera_on_the_path_the_scripts_say_how_to_run():
 
 
 if __name__ == "__main__":
-    run([test_utm_gauges_across_the_equator_give_the_lon_lat_means, test_the_colorado_main_job, test_missing_values_keep_their_months, test_bad_files_are_named,
+    run([test_utm_gauges_across_the_equator_give_the_lon_lat_means,
+         test_catchment_features_without_geometry_or_crossing_holes_are_named_as_such, test_the_colorado_main_job, test_missing_values_keep_their_months, test_bad_files_are_named,
          test_outputs_that_cannot_be_written_are_named, test_a_hole_outside_its_polygon_is_named,
          test_the_map_of_another_place_with_a_lake,
          test_a_lake_touching_the_outline_and_catchments_of_several_features,
