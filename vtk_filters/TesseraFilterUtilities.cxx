@@ -1169,6 +1169,34 @@ std::string CancelIdenticalRings(Rings& rings, const char* what)
 
 } // namespace
 
+namespace
+{
+/// Where data spans z but lies flat in x or y (drawn in a vertical plane), why its rings come out
+/// as lines: only x and y are read (a window in the x-z plane was refused as rings of "fewer than
+/// 3 distinct vertices", with no word of z). "" otherwise.
+std::string VerticalPlaneWarning(vtkDataObject* data, const char* what)
+{
+  double bounds[6] = { 0, -1, 0, -1, 0, -1 };
+  if (auto* set = vtkDataSet::SafeDownCast(data))
+  {
+    set->GetBounds(bounds);
+  }
+  else if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    composite->GetBounds(bounds);
+  }
+  if (!(bounds[5] > bounds[4]) || (bounds[1] > bounds[0] && bounds[3] > bounds[2]))
+  {
+    return std::string();
+  }
+  return std::string("the ") + what + " lies in a vertical plane (x from " +
+    tessera::NumberText(bounds[0]) + " to " + tessera::NumberText(bounds[1]) + ", y from " +
+    tessera::NumberText(bounds[2]) + " to " + tessera::NumberText(bounds[3]) + ", z from " +
+    tessera::NumberText(bounds[4]) + " to " + tessera::NumberText(bounds[5]) +
+    "): only x and y are read, so its rings are flat; give it in the x-y plane";
+}
+} // namespace
+
 Rings ReadPolygonRings(vtkDataObject* data, const char* what, std::vector<std::string>& warnings)
 {
   Rings rings;
@@ -1211,8 +1239,9 @@ Rings ReadPolygonRings(vtkDataObject* data, const char* what, std::vector<std::s
                 : std::string()) +
       (skipped.empty() ? std::string() : ": " + skipped));
   }
-  for (const std::string& warning :
-    { SkippedCellsWarning(rings, what), CancelIdenticalRings(rings, what) })
+  for (const std::string& warning : { SkippedCellsWarning(rings, what),
+         CancelIdenticalRings(rings, what),
+         VerticalPlaneWarning(data, what) })
   {
     if (!warning.empty())
     {

@@ -691,8 +691,31 @@ def test_short_arrays_and_windows_beyond_the_doubles_are_named():
                 f"({field_value(output, 'WindowArea')})")
 
 
+def test_a_window_in_a_vertical_plane_is_said_to_be_read_in_x_and_y():
+    # From a user trial: a window drawn in the x-z plane was refused for rings of "fewer than 3
+    # distinct vertices", without a word of why.
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import VTK_POLYGON, vtkPolyData
+
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    for x, z in ((0, 0), (10, 0), (10, 10), (0, 10)):
+        points.InsertNextPoint(x, 5, z)
+    upright = vtkPolyData()
+    upright.SetPoints(points)
+    upright.Allocate()
+    upright.InsertNextCell(VTK_POLYGON, 4, [0, 1, 2, 3])
+    _, errors, warnings = clip_by(polygon([[(1, 1), (3, 1), (3, 3), (1, 3)]]), upright)
+    assert_that(any("the window (input 1) lies in a vertical plane (x from 0 to 10, y from 5 to 5, z from 0 to 10)"
+                    in w for w in warnings) and len(errors) == 1, f"{warnings} {errors}")
+    _, errors, warnings = clip_by(polygon([[(1, 1), (3, 1), (3, 3), (1, 3)]]),
+                                  polygon([[(0, 0), (10, 0), (10, 10), (0, 10)]]))
+    assert_that(not errors and not any("vertical" in w for w in warnings), f"a flat window: {warnings}")
+
+
 if __name__ == "__main__":
-    run([test_cells_are_simple_pieces_that_fill_tile_and_window,
+    run([test_a_window_in_a_vertical_plane_is_said_to_be_read_in_x_and_y,
+         test_cells_are_simple_pieces_that_fill_tile_and_window,
          test_review_cases,
          test_input_arrays_named_like_the_filters_are_kept_under_another_name,
          test_a_window_of_loose_line_segments_is_joined_into_its_rings,
