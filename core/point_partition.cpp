@@ -112,6 +112,17 @@ double DistanceBeyondEnd(const Point2& p,
     0.0, DistanceAlong(p, end, EndTangentPixel(contours, contour, position), end, width));
 }
 
+// Whether the pixel at `position` of an open contour lies behind its end pixel at `end` along the
+// end tangent (strictly).
+bool PixelBehindEnd(const RidgeContours& contours, int contour, int position, int end, int width)
+{
+  const int pixel = contours.Pixels[position];
+  const int endPixel = contours.Pixels[end];
+  const Point2 at{ double(pixel % width), double(pixel / width) };
+  return DistanceAlong(at, endPixel, EndTangentPixel(contours, contour, end), endPixel, width) <
+    0.0;
+}
+
 // The projection of p, whose nearest pixel is at `position` of `contour`, and its distance beyond
 // that pixel's end (DistanceBeyondEnd; 0 when not past an end). A point nearest to one of the
 // pixels an end's tangent is taken over, but lying beyond the end pixel along that tangent, is
@@ -121,6 +132,13 @@ double DistanceBeyondEnd(const Point2& p,
 //
 //   = = = = = = 1                 contour hooking at its end E; the points x continue it
 //                E    x   x   x   beyond E along the end tangent, but are nearer to pixel 1
+//
+// Only where the nearest pixel lies behind the end pixel along that tangent: a contour that turns
+// back within those pixels (U-shaped at its end) has pixels beyond its end pixel, and a point
+// beside them is beside the contour, not past it (moved, it took the largest node, out of order).
+//
+//   = = = = = = 1                 a U-turn: pixels 1 and 2 lie beyond E along the end tangent
+//             E   2   y           (measured from 5 pixels back); y, nearest to 2, keeps 2
 //
 // Where both ends qualify (a contour of a few pixels), the nearer end pixel is taken.
 std::pair<int, double> ProjectionPastEnds(const Point2& p,
@@ -139,7 +157,8 @@ std::pair<int, double> ProjectionPastEnds(const Point2& p,
   double nearest = std::numeric_limits<double>::infinity();
   for (const int end : { first, last })
   {
-    if (std::abs(position - end) > EndTangentReach(contours, contour))
+    if (std::abs(position - end) > EndTangentReach(contours, contour) ||
+      (position != end && !PixelBehindEnd(contours, contour, position, end, width)))
     {
       continue;
     }
@@ -360,9 +379,11 @@ private:
 // that the nodes do not run back where the chain turns; if that is more than maximumGap beyond the
 // point's own distance (the chain came back), its order is not known and it does not count as
 // continuing (as an outlier after a gap). Returns which points were reached; the others keep their
-// nearest contour.
+// nearest contour. nearestPositions: each point's nearest pixel (its projection may be an end
+// pixel beyond it, ProjectionPastEnds), by which a point is near or far.
 std::vector<std::uint8_t> FollowChainsPastEnds(const std::vector<Point2>& points,
   const RidgeContours& contours,
+  const std::vector<int>& nearestPositions,
   int width,
   double maximumGap,
   PointPartition& result)
@@ -382,7 +403,7 @@ std::vector<std::uint8_t> FollowChainsPastEnds(const std::vector<Point2>& points
   std::vector<std::size_t> farPoints;
   for (std::size_t k = 0; k < points.size(); ++k)
   {
-    const Point2 nearest = pixelPoint(result.Projection[k]);
+    const Point2 nearest = pixelPoint(nearestPositions[k]);
     far[k] = std::hypot(points[k].x - nearest.x, points[k].y - nearest.y) > maximumGap;
     if (far[k])
     {
@@ -553,16 +574,18 @@ PointPartition PartitionPoints(const std::vector<Point2>& pixelPoints,
   result.Continues.assign(pixelPoints.size(), 0);
   std::vector<double>& beyond = result.Beyond;
   beyond.assign(pixelPoints.size(), 0.0);
+  std::vector<int> nearestPositions(pixelPoints.size());
   for (std::size_t k = 0; k < pixelPoints.size(); ++k)
   {
     const int pixel = NearestContourPixel(pixelPoints[k], nearest, width, height);
     const int contour = contourOfPosition[positionOf[pixel]];
+    nearestPositions[k] = positionOf[pixel];
     result.GroupId[k] = contour;
     std::tie(result.Projection[k], beyond[k]) =
       ProjectionPastEnds(pixelPoints[k], contours, contour, positionOf[pixel], width);
   }
   const std::vector<std::uint8_t> chained =
-    FollowChainsPastEnds(pixelPoints, contours, width, maximumGap, result);
+    FollowChainsPastEnds(pixelPoints, contours, nearestPositions, width, maximumGap, result);
   KeepContinuationsOnly(beyond, result.Projection, chained, maximumGap, result.Continues);
   std::vector<double> extendedArc(pixelPoints.size(), 0.0);
   std::vector<double> lowest(contours.Count(), 0.0);

@@ -14,9 +14,10 @@
 // of the points along it (the crest near a data end slopes along itself), and every point past
 // the end would then share the end pixel's node, collapsing the end of the fitted curve onto
 // their mean. A point whose nearest pixel is an end pixel of an open contour, or one of the last
-// few pixels before it (over which the end tangent is measured: contours often hook at an end),
-// and that lies beyond the end pixel along the end tangent, is projected on the end pixel and gets
-// the arc length extended by that tangent distance; the nodes of the contour's points are then
+// few pixels before it (over which the end tangent is measured: contours often hook at an end)
+// lying behind the end pixel along that tangent (not where the contour turns back), and that lies
+// beyond the end pixel along the end tangent, is projected on the end pixel and gets the arc
+// length extended by that tangent distance; the nodes of the contour's points are then
 // the extended arc lengths rescaled to [0, 1]. For contours whose ends are not passed the nodes
 // are the paper's. Only points that continue the curve are extended: taken by distance beyond the
 // end (along the end tangent), each at most maximumGap (pixels) further than the one before, the

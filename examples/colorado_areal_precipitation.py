@@ -1346,7 +1346,7 @@ def holes_outside_their_polygons(path, feature=None):
                     ring_number += 1
                     # (a hole with vertices on both sides crosses its outline: the filter names it)
                     sides = [side_of_ring(p[:2], outer) for p in hole]
-                    if min(sides) < 0 and max(sides) <= 0:
+                    if sides and min(sides) < 0 and max(sides) <= 0:
                         found.append((k, ring_number))
                 ring_number += 1
         except (AttributeError, TypeError, ValueError, IndexError):
@@ -1436,8 +1436,9 @@ def read_catchment(path, feature=None):
                        "the measures first, e.g. with ogr2ogr -dim XY)"
                        + (f"; GDAL: {reasons[0]}" if reasons else ""))
     say_gdal_messages(path, gdal, "Non closed ring detected")  # (the filter names an open ring)
+    # (with --feature, only the chosen features count: their having no polygon is an error below)
     empty = [k for k, block in enumerate(projected_input.polydata_blocks(output)) if block.GetNumberOfCells() == 0]
-    if empty:
+    if empty and feature is None:
         print(f"{path}: {len(empty)} feature(s) have no geometry that VTK's GDAL reader reads (a null geometry, "
               f"or one with measures; the first is feature {empty[0]}, counted from 0), and are left out of the "
               "catchment", file=sys.stderr)

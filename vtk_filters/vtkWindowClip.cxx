@@ -131,6 +131,24 @@ std::string ProjectionWarning(vtkDataObject* tiles, vtkDataObject* window)
     other + " none: both are taken to be in the same plane";
 }
 
+/// A block of tiles with a TesseraProjection record of its own, against the window's (the whole
+/// composite's record, checked first, hides the blocks' when it has one); throws naming the block.
+void CheckBlockProjection(vtkPolyData* tiles, vtkDataObject* window, const std::string& block)
+{
+  if (tessera_vtk::ProjectionRecordOf(tiles, "input 0 (the tiles)").empty())
+  {
+    return;
+  }
+  try
+  {
+    ProjectionWarning(tiles, window); // (its warning, if any, was given for the whole input)
+  }
+  catch (const tessera::InputError& e)
+  {
+    throw tessera::InputError(block + " of input 0: " + e.what());
+  }
+}
+
 /// The power of two 2^e that brings a window whose largest coordinate (in magnitude) is below
 /// 2^-128 to [1, 2): the clip then works as at unit scale. 0 for any other window (a window too
 /// large is an error where a tile's area overflows).
@@ -491,6 +509,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
           throw tessera::InputError(labels.Of(block) + " of input 0 (the tiles) is a " +
             leaf->GetClassName() + ": only vtkPolyData (or a composite data set of it) is clipped");
         }
+        CheckBlockProjection(tiles, windowData, labels.Of(block));
         vtkNew<vtkPolyData> clipped;
         const double cells = static_cast<double>(tiles->GetNumberOfCells());
         this->ClipTilesOf(tiles,

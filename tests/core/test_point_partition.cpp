@@ -519,8 +519,9 @@ TEST(PointPartition, NodesDoNotRunBackAlongAChainThatTurnsBack)
 }
 
 // Whether p is past the end pixel at `end` of open contour c (brute force): some pixel of c at most
-// `within` from p is one of the 5 before the end (fewer on a short contour), and p lies beyond the
-// end pixel in the direction from the fifth pixel before it to it.
+// `within` from p is one of the 5 before the end (fewer on a short contour) and lies behind the end
+// pixel in the direction from the fifth pixel before it to it (or is the end pixel), and p lies
+// beyond the end pixel in that direction.
 bool PastAHookedEnd(const Point2& p,
   const tessera::RidgeContours& contours,
   int c,
@@ -535,15 +536,18 @@ bool PastAHookedEnd(const Point2& p,
     const int pixel = contours.Pixels[position];
     return Point2{ double(pixel % width), double(pixel / width) };
   };
+  const Point2 e = at(end), inner = at(end == first ? first + reach : last - reach);
+  const auto along = [&](const Point2& q)
+  { return (q.x - e.x) * (e.x - inner.x) + (q.y - e.y) * (e.y - inner.y); };
   bool nearTheEnd = false;
   for (int position = first; position <= last; ++position)
   {
     const Point2 q = at(position);
     nearTheEnd = nearTheEnd ||
-      (std::abs(position - end) <= reach && std::hypot(p.x - q.x, p.y - q.y) <= within);
+      (std::abs(position - end) <= reach && (position == end || along(q) < 0.0) &&
+        std::hypot(p.x - q.x, p.y - q.y) <= within);
   }
-  const Point2 e = at(end), inner = at(end == first ? first + reach : last - reach);
-  return nearTheEnd && (p.x - e.x) * (e.x - inner.x) + (p.y - e.y) * (e.y - inner.y) > 0.0;
+  return nearTheEnd && along(p) > 0.0;
 }
 
 // A contour hooking at its end: row 20 from x = 10 to 40, then its end pixel one row down, at
@@ -581,6 +585,42 @@ TEST(PointPartition, PointsPastAHookedEndAreOrderedAlongIt)
   EXPECT_EQ(partition.Node[points.size() - 2], 1.0);
   EXPECT_EQ(contours.Pixels[partition.Projection.back()], 20 * width + 37); // (37, 20)
   EXPECT_FALSE(partition.Extended.back());
+}
+
+// Hooks that are no ends: a contour that turns back at its end (row 20 to x = 40, then (41, 21),
+// (40, 22) and the end pixel (39, 22)) has pixels beyond its end along the end tangent; points
+// beside them keep those pixels, in order along the contour (moved to the end, the middle one took
+// the largest node). And a point within the gap of a pixel before a hooked end is near, so another
+// contour's chain past its end does not take it.
+TEST(PointPartition, PointsBesideAContourTurningBackAtItsEndKeepTheirPixels)
+{
+  const int width = 60, height = 40;
+  std::vector<std::pair<int, int>> turning = Row(20, 10, 40);
+  for (const auto& pixel :
+    { std::make_pair(41, 21), std::make_pair(40, 22), std::make_pair(39, 22) })
+  {
+    turning.push_back(pixel);
+  }
+  const tessera::RidgeContours contours = OpenContours({ turning }, width);
+  const std::vector<Point2> points = { { 41.45, 21.0 }, { 40.0, 22.4 }, { 39.0, 22.4 } };
+  const tessera::PointPartition partition =
+    tessera::PartitionPoints(points, contours, width, height, 10.0);
+  const int last = contours.Offsets[1] - 1;
+  EXPECT_EQ(partition.Projection, (std::vector<int>{ last - 2, last - 1, last }));
+  EXPECT_LT(partition.Node[0], partition.Node[1]);
+  EXPECT_LT(partition.Node[1], partition.Node[2]);
+
+  std::vector<std::pair<int, int>> hooked = Row(20, 10, 40);
+  hooked.push_back({ 40, 21 });
+  std::vector<std::pair<int, int>> column;
+  for (int j = 5; j <= 18; ++j)
+  {
+    column.push_back({ 40, j });
+  }
+  const tessera::RidgeContours two = OpenContours({ hooked, column }, width);
+  const std::vector<Point2> between = { { 40.3, 18.8 }, { 40.6, 19.6 } };
+  const tessera::PointPartition kept = tessera::PartitionPoints(between, two, width, height, 1.0);
+  EXPECT_EQ(kept.GroupId, (std::vector<int>{ 1, 0 })); // (0.72 from (40, 20): near the hooked row)
 }
 
 // Random open contours (digital lines) and points (noisy lines, some past the contours' ends, and
@@ -705,7 +745,26 @@ TEST(PointPartition, ReassignedPointsAreChainedToTheirEndOverFarPoints)
       ASSERT_TRUE(first || position == contours.Offsets[c + 1] - 1) << where << ": not an end";
       if (PastAHookedEnd(points[k], contours, c, position, nearest[k] + 0.1, width))
       {
+        // Past the end by its own distance along the end tangent, unless an outlier after a gap
+        // (then by less) or reached by a chain (its largest distance, so more).
         ++movedToEnd;
+        const int inner =
+          contours.Pixels[first ? position + std::min(5, contours.Offsets[c + 1] - 1 - position)
+                                : position - std::min(5, position - contours.Offsets[c])];
+        const int pixel = contours.Pixels[position];
+        const double tx = pixel % width - inner % width, ty = pixel / width - inner / width;
+        const double own =
+          ((points[k].x - pixel % width) * tx + (points[k].y - pixel / width) * ty) /
+          std::hypot(tx, ty);
+        if (partition.Continues[k])
+        {
+          EXPECT_TRUE(partition.Extended[k]) << where;
+          EXPECT_GE(partition.Beyond[k], own - 1e-9) << where;
+        }
+        else
+        {
+          EXPECT_LE(partition.Beyond[k], own + 1e-9) << where;
+        }
         continue;
       }
       ++reassigned;

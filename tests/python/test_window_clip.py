@@ -451,6 +451,21 @@ def test_tiles_and_window_must_share_their_projection():
     output, errors, warnings = clip_by(tiles_of(same), blocks)
     assert_that(len(errors) == 1 and "input 1 (the window) mixes blocks projected differently" in errors[0],
                 f"a window of differently projected blocks: {errors}")
+    # Tiles in blocks under a record of the whole, one block with another record of its own: that
+    # block is named (the whole's record hid the blocks').
+    from vtkmodules.vtkCommonCore import vtkStringArray
+
+    tiles = vtkMultiBlockDataSet()
+    tiles.SetBlock(0, tiles_of(same))
+    tiles.SetBlock(1, tiles_of(automatic))
+    whole = vtkStringArray()
+    whole.SetName("TesseraProjection")
+    whole.InsertNextValue(projection_record(same))
+    tiles.GetFieldData().AddArray(whole)
+    output, errors, _ = clip_by(tiles, projected(catchment, False))
+    assert_that(len(errors) == 1 and ("): block 1 (composite index 2) of input 0: the tiles (input 0) "
+                                      "and the window (input 1) were projected differently") in errors[0]
+                and output.GetNumberOfBlocks() == 0, f"a block of another record: {errors}")
 
 
 def test_the_tiles_point_data_is_named_as_not_passed():
