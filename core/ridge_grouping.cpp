@@ -372,11 +372,15 @@ void NameUnorderedPoints(const std::vector<std::size_t>& tied,
   }
 }
 
-/// Open contour ends within this many basis widths of another end are named (NameNearContourEnds).
+/// Open groups' ends within this many basis widths of another end are named (NameNearContourEnds).
 constexpr double NearEndWidths = 4.0;
 
-/// A warning naming pairs of open contour ends that lie within NearEndWidths basis widths of each
-/// other, one looking towards the other (the two ends of one long contour included): where a
+/// A warning naming pairs of open groups' ends that lie within NearEndWidths basis widths of each
+/// other, one looking towards the other (the two ends of one long contour included). A group's end
+/// is where its points end: its point of the smallest node for the contour's first end, of the
+/// largest for its last (the contour's end pixel for a contour without points). A contour stops
+/// some basis widths before the points along it (point_partition.h), so its end pixels were 9.4
+/// widths apart across a gap of 2.2 in a line's points, and the line split silently. Where a
 /// curve's points lie further apart than the basis reaches, its ridge breaks, and the curve comes
 /// out as pieces, or a closed one open, without a word. Clean, dense points make it likely: most of
 /// them need pixels of their own, so the automatic image is large and the basis narrow in the
@@ -393,15 +397,33 @@ constexpr double NearEndWidths = 4.0;
 ///                 |  gap across                       not named
 ///    line 2   ====>
 void NameNearContourEnds(const RidgeContours& contours,
+  const std::vector<Point2>& pixelPoints,
+  const PointPartition& partition,
   const PixelGrid& grid,
   double width,
   RidgeGroupingResult& result)
 {
+  // Per contour, its points of the smallest and of the largest node (-1: none).
+  std::vector<std::ptrdiff_t> lowest(std::size_t(contours.Count()), -1);
+  std::vector<std::ptrdiff_t> highest(std::size_t(contours.Count()), -1);
+  for (std::size_t k = 0; k < pixelPoints.size(); ++k)
+  {
+    const int c = partition.GroupId[k];
+    if (c < 0)
+    {
+      continue;
+    }
+    std::ptrdiff_t& low = lowest[std::size_t(c)];
+    std::ptrdiff_t& high = highest[std::size_t(c)];
+    low = low < 0 || partition.Node[k] < partition.Node[std::size_t(low)] ? std::ptrdiff_t(k) : low;
+    high =
+      high < 0 || partition.Node[k] > partition.Node[std::size_t(high)] ? std::ptrdiff_t(k) : high;
+  }
   struct End
   {
     int Contour;
-    Point2 At;
-    Point2 Outward; // from a pixel a width or so inside the contour towards the end
+    Point2 At;      // where the group's points end (pixel units)
+    Point2 Outward; // from a pixel a width or so inside the contour towards its end pixel
   };
   const auto pixelPoint = [&](int pixel) {
     return Point2{ double(pixel % grid.Width), double(pixel / grid.Width) };
@@ -418,9 +440,12 @@ void NameNearContourEnds(const RidgeContours& contours,
     for (const auto& [end, inner] :
       { std::make_pair(first, first + back), std::make_pair(last, last - back) })
     {
-      const Point2 at = pixelPoint(contours.Pixels[std::size_t(end)]);
+      const Point2 pixel = pixelPoint(contours.Pixels[std::size_t(end)]);
       const Point2 from = pixelPoint(contours.Pixels[std::size_t(inner)]);
-      ends.push_back({ c, at, { at.x - from.x, at.y - from.y } });
+      const std::ptrdiff_t point = (end == first ? lowest : highest)[std::size_t(c)];
+      ends.push_back({ c,
+        point < 0 ? pixel : pixelPoints[std::size_t(point)],
+        { pixel.x - from.x, pixel.y - from.y } });
     }
   }
   const double reach = NearEndWidths * width;
@@ -469,14 +494,14 @@ void NameNearContourEnds(const RidgeContours& contours,
   {
     return;
   }
-  const auto where = [&](const Point2& pixel)
+  const auto where = [&](const Point2& at)
   {
-    const Point2 p = grid.PixelCentre(static_cast<int>(pixel.x), static_cast<int>(pixel.y));
-    return "(" + NumberText(p.x) + ", " + NumberText(p.y) + ")";
+    return "(" + NumberText(grid.OriginX + at.x * grid.Spacing) + ", " +
+      NumberText(grid.OriginY + at.y * grid.Spacing) + ")";
   };
   result.Warnings.push_back(std::to_string(near.size()) +
-    " pair(s) of open contour ends lie within " + NumberText(NearEndWidths) + " basis widths (" +
-    NumberText(reach * grid.Spacing) +
+    " pair(s) of open contour ends (where their groups' points end) lie within " +
+    NumberText(NearEndWidths) + " basis widths (" + NumberText(reach * grid.Spacing) +
     " in the points' units) of each other, one looking towards the other: a curve may be broken "
     "there, where its points lie "
     "further apart than the basis reaches (a sparse stretch; or clean, dense points, which take a "
@@ -743,7 +768,7 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
     grid,
     maximumGap,
     result);
-  NameNearContourEnds(contours, grid, this->Settings.Width, result);
+  NameNearContourEnds(contours, pixelPoints, partition, grid, this->Settings.Width, result);
   NameContoursAwayFromPoints(pixelPoints, contours, partition, grid, this->Settings.Width, result);
   for (int c = 0; c < contours.Count(); ++c)
   {

@@ -623,12 +623,35 @@ std::vector<std::string> WarningsWith(const RidgeGroupingResult& result, const s
   return found;
 }
 
-// Pairs of contours with open ends within widths basis widths of each other, one of the two
-// looking towards the other (the gap within 45 degrees of its direction from a point some width
-// back along its contour), counted here from the contour polylines: the warning's count, found
-// independently.
-int NearOpenEnds(const RidgeGroupingResult& result, double widths, double width)
+// Pairs of open groups whose ends lie within widths basis widths of each other, one of the two
+// looking towards the other (the gap within 45 degrees of its contour's direction at that end, from
+// a point some width back), counted here from the outputs: a group's end is its point of node 0 or
+// 1 (the first such point; the contour's end where the group has no point), the directions come
+// from the contour polylines. The warning's count, found independently.
+int NearOpenEnds(const RidgeGroupingResult& result,
+  const std::vector<Point2>& points,
+  double widths,
+  double width)
 {
+  // Per group, its first point with the smallest and with the largest node.
+  std::map<int, std::pair<std::size_t, std::size_t>> extremes;
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    const int g = result.GroupId[k];
+    const auto found = extremes.find(g);
+    if (g < 0)
+    {
+      continue;
+    }
+    if (found == extremes.end())
+    {
+      extremes[g] = { k, k };
+      continue;
+    }
+    auto& [low, high] = found->second;
+    low = result.Node[k] < result.Node[low] ? k : low;
+    high = result.Node[k] > result.Node[high] ? k : high;
+  }
   struct End
   {
     int Contour;
@@ -647,8 +670,12 @@ int NearOpenEnds(const RidgeGroupingResult& result, double widths, double width)
     for (const auto& [end, inner] :
       { std::make_pair(first, first + back), std::make_pair(last, last - back) })
     {
-      const Point2 at = lines.Points[std::size_t(end)], from = lines.Points[std::size_t(inner)];
-      ends.push_back({ c, at, { at.x - from.x, at.y - from.y } });
+      const Point2 pixel = lines.Points[std::size_t(end)], from = lines.Points[std::size_t(inner)];
+      const auto group = extremes.find(c);
+      const Point2 at = group == extremes.end()
+        ? pixel
+        : points[end == first ? group->second.first : group->second.second];
+      ends.push_back({ c, at, { pixel.x - from.x, pixel.y - from.y } });
     }
   }
   const double reach = widths * width * result.PixelSize;
@@ -701,7 +728,7 @@ TEST(RidgeGrouping, ContoursEndingNearEachOtherAreNamedAsPiecesOfOneCurve)
       p = { 50 * std::cos(t), 50 * std::sin(t) };
     }
     const RidgeGroupingResult result = RidgeGrouping(gaussian).Run(clean);
-    const int near = NearOpenEnds(result, 4.0, gaussian.Width);
+    const int near = NearOpenEnds(result, clean, 4.0, gaussian.Width);
     const std::vector<std::string> named = WarningsWith(result, "pair(s) of open contour ends");
     broken += near > 0;
     if (near == 0)
@@ -750,9 +777,9 @@ TEST(RidgeGrouping, ContoursEndingNearEachOtherAreNamedAsPiecesOfOneCurve)
   sideBySide.CurveSigma = 0.02;
   for (unsigned seed : { 1U, 2U, 3U })
   {
-    const RidgeGroupingResult result =
-      RidgeGrouping(sideBySide).Run(Positions(SampleCurves(lines, { 300, 300 }, 1.0, seed)));
-    EXPECT_EQ(NearOpenEnds(result, 4.0, sideBySide.Width), 0) << "seed " << seed;
+    const std::vector<Point2> sampled = Positions(SampleCurves(lines, { 300, 300 }, 1.0, seed));
+    const RidgeGroupingResult result = RidgeGrouping(sideBySide).Run(sampled);
+    EXPECT_EQ(NearOpenEnds(result, sampled, 4.0, sideBySide.Width), 0) << "seed " << seed;
     EXPECT_TRUE(WarningsWith(result, "open contour ends").empty()) << "seed " << seed;
   }
 
