@@ -403,9 +403,26 @@ void NameNearContourEnds(const RidgeContours& contours,
   double width,
   RidgeGroupingResult& result)
 {
-  // Per contour, its points of the smallest and of the largest node (-1: none).
+  // Per contour, its points of the smallest and of the largest node (-1: none); of points with
+  // the same node, the nearest to that end's pixel: an outlier past an end takes the node of the
+  // last point continuing it (point_partition.h), and must not stand for where the points end
+  // (taken by index, one stray point gave or hid the warning by its place in the input).
   std::vector<std::ptrdiff_t> lowest(std::size_t(contours.Count()), -1);
   std::vector<std::ptrdiff_t> highest(std::size_t(contours.Count()), -1);
+  const auto endward = [&](std::size_t k, std::ptrdiff_t best, int end, double sign)
+  {
+    if (best < 0)
+    {
+      return true;
+    }
+    const std::size_t b = std::size_t(best);
+    const double dk = sign * partition.Node[k], db = sign * partition.Node[b];
+    const int pixel = contours.Pixels[std::size_t(end)];
+    return dk > db ||
+      (dk == db &&
+        std::hypot(pixelPoints[k].x - pixel % grid.Width, pixelPoints[k].y - pixel / grid.Width) <
+          std::hypot(pixelPoints[b].x - pixel % grid.Width, pixelPoints[b].y - pixel / grid.Width));
+  };
   for (std::size_t k = 0; k < pixelPoints.size(); ++k)
   {
     const int c = partition.GroupId[k];
@@ -415,9 +432,8 @@ void NameNearContourEnds(const RidgeContours& contours,
     }
     std::ptrdiff_t& low = lowest[std::size_t(c)];
     std::ptrdiff_t& high = highest[std::size_t(c)];
-    low = low < 0 || partition.Node[k] < partition.Node[std::size_t(low)] ? std::ptrdiff_t(k) : low;
-    high =
-      high < 0 || partition.Node[k] > partition.Node[std::size_t(high)] ? std::ptrdiff_t(k) : high;
+    low = endward(k, low, contours.Offsets[c], -1.0) ? std::ptrdiff_t(k) : low;
+    high = endward(k, high, contours.Offsets[c + 1] - 1, 1.0) ? std::ptrdiff_t(k) : high;
   }
   struct End
   {

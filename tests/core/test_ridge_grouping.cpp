@@ -633,7 +633,13 @@ int NearOpenEnds(const RidgeGroupingResult& result,
   double widths,
   double width)
 {
-  // Per group, its first point with the smallest and with the largest node.
+  // Per group, its point with the smallest and with the largest node, of equal nodes the nearest
+  // to the contour's end (its first or last polyline point).
+  const auto distance = [&](std::size_t k, int end)
+  {
+    const Point2& e = result.Contours.Points[std::size_t(end)];
+    return std::hypot(points[k].x - e.x, points[k].y - e.y);
+  };
   std::map<int, std::pair<std::size_t, std::size_t>> extremes;
   for (std::size_t k = 0; k < points.size(); ++k)
   {
@@ -649,8 +655,15 @@ int NearOpenEnds(const RidgeGroupingResult& result,
       continue;
     }
     auto& [low, high] = found->second;
-    low = result.Node[k] < result.Node[low] ? k : low;
-    high = result.Node[k] > result.Node[high] ? k : high;
+    const int first = result.Contours.Offsets[g], last = result.Contours.Offsets[g + 1] - 1;
+    low = result.Node[k] < result.Node[low] ||
+        (result.Node[k] == result.Node[low] && distance(k, first) < distance(low, first))
+      ? k
+      : low;
+    high = result.Node[k] > result.Node[high] ||
+        (result.Node[k] == result.Node[high] && distance(k, last) < distance(high, last))
+      ? k
+      : high;
   }
   struct End
   {
@@ -709,9 +722,10 @@ int NearOpenEnds(const RidgeGroupingResult& result,
 // their own: the automatic image is large, the basis narrow in the points' units, and the
 // Gaussian basis breaks the circle where the random gaps are widest. The groups whose contour
 // ends lie within four widths of each other, one looking at the other, are named (the count
-// checked against the contours' own ends); a noisy circle, whose image is coarser, stays closed
-// and names none, and neither do two segments of a line seven widths apart, or two lines side by
-// side whose ends are near but across them. A Width below one pixel is warned of.
+// checked against the groups' own ends, found from the outputs); a noisy circle, whose image is
+// coarser, stays closed and names none, and neither do two segments of a line seven widths apart,
+// or two lines side by side whose ends are near but across them. A Width below one pixel is warned
+// of.
 TEST(RidgeGrouping, ContoursEndingNearEachOtherAreNamedAsPiecesOfOneCurve)
 {
   RidgeGroupingSettings gaussian;
@@ -797,6 +811,66 @@ TEST(RidgeGrouping, ContoursEndingNearEachOtherAreNamedAsPiecesOfOneCurve)
 // over the contour's pixels: a noisy line and a small ring 10 widths above it (with the default
 // basis the ridge joins them across the gap); the line alone or the ring alone gives no such
 // warning.
+// A line broken by a gap of 6 or 8 units (3 or 4 Gaussian widths of some 2.2 units): two
+// contours, each stopping some widths short of its points, so their end pixels lie further apart
+// than the points' ends; the pieces are named by where their points end (they were not). A gap of
+// 14 units is no break of one curve. And a stray point past the end of a line, before a line at
+// right angles, names or hides nothing by its place in the input (the end's outlier shares the
+// last node; taken by index, it stood for where the points end when it came first).
+TEST(RidgeGrouping, PiecesOfABrokenLineAreNamedWhereTheirPointsEnd)
+{
+  RidgeGroupingSettings gaussian;
+  gaussian.Basis = tessera::RadialBasis::Gaussian;
+  for (const double gap : { 6.0, 8.0, 14.0 })
+  {
+    std::mt19937 random(3);
+    std::normal_distribution<double> noise(0.0, 0.02);
+    std::vector<Point2> points;
+    for (double x = 0.0; x < 50.0; x += 0.25)
+    {
+      points.push_back({ x, noise(random) });
+    }
+    for (double x = 50.0 + gap; x < 100.0 + gap; x += 0.25)
+    {
+      points.push_back({ x, noise(random) });
+    }
+    const RidgeGroupingResult result = RidgeGrouping(gaussian).Run(points);
+    ASSERT_EQ(result.Contours.Count(), 2) << "gap " << gap;
+    EXPECT_EQ(NearOpenEnds(result, points, 4.0, gaussian.Width), gap < 10.0 ? 1 : 0)
+      << "gap " << gap;
+    EXPECT_EQ(WarningsWith(result, "pair(s) of open contour ends").size(), gap < 10.0 ? 1u : 0u)
+      << "gap " << gap;
+  }
+  std::vector<std::size_t> named;
+  for (const bool strayFirst : { true, false })
+  {
+    std::mt19937 random(3);
+    std::normal_distribution<double> noise(0.0, 0.02);
+    std::vector<Point2> points;
+    const Point2 stray{ 52.5, 0.0 };
+    if (strayFirst)
+    {
+      points.push_back(stray);
+    }
+    for (double x = 0.0; x < 50.0; x += 0.25)
+    {
+      points.push_back({ x, noise(random) });
+    }
+    for (double y = 3.0; y < 60.0; y += 0.25)
+    {
+      points.push_back({ 56.0 + noise(random), y });
+    }
+    if (!strayFirst)
+    {
+      points.push_back(stray);
+    }
+    const RidgeGroupingResult result = RidgeGrouping(gaussian).Run(points);
+    named.push_back(WarningsWith(result, "pair(s) of open contour ends").size());
+    EXPECT_EQ(std::size_t(NearOpenEnds(result, points, 4.0, gaussian.Width)), named.back());
+  }
+  EXPECT_EQ(named[0], named[1]);
+}
+
 TEST(RidgeGrouping, ContoursAcrossEmptySpaceAreNamed)
 {
   std::mt19937 random(3);
