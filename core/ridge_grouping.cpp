@@ -519,10 +519,10 @@ void NameNearContourEnds(const RidgeContours& contours,
     " pair(s) of open contour ends (where their groups' points end) lie within " +
     NumberText(NearEndWidths) + " basis widths (" + NumberText(reach * grid.Spacing) +
     " in the points' units) of each other, one looking towards the other: a curve may be broken "
-    "there, where its points lie "
-    "further apart than the basis reaches (a sparse stretch; or clean, dense points, which take a "
-    "large automatic ImageSize, in whose pixels the basis is narrow); a larger Width, or a "
-    "smaller ImageSize, may join the pieces: " +
+    "there, where its points lie further apart than the basis reaches (a sparse stretch; or "
+    "clean, dense points, which take a large automatic ImageSize, in whose pixels the basis is "
+    "narrow), or where another curve's field close by bends its crest; a larger Width, or a "
+    "smaller ImageSize, may join the pieces of the first kind: " +
     ListNames(near.size(),
       [&](std::size_t k)
       {
