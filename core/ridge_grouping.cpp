@@ -214,17 +214,36 @@ void FitCurves(const std::vector<Point2>& points,
   }
 }
 
+/// What the checks after the partition read: the points (pixel units), the contours, the
+/// partition, the grid, and the basis width (pixels).
+struct GroupedPoints
+{
+  const std::vector<Point2>& PixelPoints;
+  const RidgeContours& Contours;
+  const PointPartition& Partition;
+  const PixelGrid& Grid;
+  double Width;
+
+  /// The centre of the grid's pixel of index `pixel` (pixel units).
+  Point2 PixelPoint(int pixel) const
+  {
+    return { double(pixel % this->Grid.Width), double(pixel / this->Grid.Width) };
+  }
+  /// The distance (pixels) from point k to the centre of pixel `pixel`.
+  double DistanceToPixel(std::size_t k, int pixel) const
+  {
+    const Point2 centre = this->PixelPoint(pixel);
+    return std::hypot(this->PixelPoints[k].x - centre.x, this->PixelPoints[k].y - centre.y);
+  }
+};
+
 /// ContourDistance per point, and a warning naming the points beyond FarContourWidths basis
 /// widths of their contour: the partition gives every point not continuing a contour past its end
 /// to the nearest contour, so an outlier far from every ridge joins a group silently and pulls its
 /// curve (a point 1e4 away from a circle of radius 100 put a spike of 468 into its curve).
-void MeasureContourDistances(const std::vector<Point2>& pixelPoints,
-  const RidgeContours& contours,
-  const PointPartition& partition,
-  const PixelGrid& grid,
-  double width,
-  RidgeGroupingResult& result)
+void MeasureContourDistances(const GroupedPoints& grouped, RidgeGroupingResult& result)
 {
+  const auto& [pixelPoints, contours, partition, grid, width] = grouped;
   result.ContourDistance.assign(pixelPoints.size(), std::numeric_limits<double>::quiet_NaN());
   std::vector<std::size_t> far;
   for (std::size_t k = 0; k < pixelPoints.size(); ++k)
@@ -234,9 +253,8 @@ void MeasureContourDistances(const std::vector<Point2>& pixelPoints,
     {
       continue;
     }
-    const int pixel = contours.Pixels[static_cast<std::size_t>(position)];
     const double pixels =
-      std::hypot(pixelPoints[k].x - pixel % grid.Width, pixelPoints[k].y - pixel / grid.Width);
+      grouped.DistanceToPixel(k, contours.Pixels[static_cast<std::size_t>(position)]);
     result.ContourDistance[k] = pixels * grid.Spacing;
     // A point past an open contour's end that continues it (its node extended along the end
     // tangent, each such point within two widths of the one before) lies beyond the end pixel by
@@ -274,13 +292,9 @@ constexpr double EmptyStretchWidths = 3.0;
 /// above it made one ridge through the gap, the line cut in two, half of it grouped with the ring
 /// and its curve drawn 24 units from every point, and nothing said so. Distances are to the
 /// nearest pixel holding a point (exact on the grid: the nearest-feature transform).
-void NameContoursAwayFromPoints(const std::vector<Point2>& pixelPoints,
-  const RidgeContours& contours,
-  const PointPartition& partition,
-  const PixelGrid& grid,
-  double width,
-  RidgeGroupingResult& result)
+void NameContoursAwayFromPoints(const GroupedPoints& grouped, RidgeGroupingResult& result)
 {
+  const auto& [pixelPoints, contours, partition, grid, width] = grouped;
   std::vector<std::size_t> members(static_cast<std::size_t>(contours.Count()), 0);
   for (const int group : partition.GroupId)
   {
@@ -324,9 +338,9 @@ void NameContoursAwayFromPoints(const std::vector<Point2>& pixelPoints,
     for (int k = contours.Offsets[c]; k < contours.Offsets[c + 1]; ++k)
     {
       const int pixel = contours.Pixels[static_cast<std::size_t>(k)];
-      const int to = nearest[static_cast<std::size_t>(pixel)];
-      const double d = std::hypot(
-        double(pixel % grid.Width - to % grid.Width), double(pixel / grid.Width - to / grid.Width));
+      const Point2 at = grouped.PixelPoint(pixel);
+      const Point2 to = grouped.PixelPoint(nearest[static_cast<std::size_t>(pixel)]);
+      const double d = std::hypot(at.x - to.x, at.y - to.y);
       if (d > reach)
       {
         ++away;
@@ -396,13 +410,9 @@ constexpr double NearEndWidths = 4.0;
 ///    line 1   ====>
 ///                 |  gap across                       not named
 ///    line 2   ====>
-void NameNearContourEnds(const RidgeContours& contours,
-  const std::vector<Point2>& pixelPoints,
-  const PointPartition& partition,
-  const PixelGrid& grid,
-  double width,
-  RidgeGroupingResult& result)
+void NameNearContourEnds(const GroupedPoints& grouped, RidgeGroupingResult& result)
 {
+  const auto& [pixelPoints, contours, partition, grid, width] = grouped;
   // Per contour, its points of the smallest and of the largest node (-1: none); of points with
   // the same node, the nearest to that end's pixel: an outlier past an end takes the node of the
   // last point continuing it (point_partition.h), and must not stand for where the points end
@@ -419,9 +429,7 @@ void NameNearContourEnds(const RidgeContours& contours,
     const double dk = sign * partition.Node[k], db = sign * partition.Node[b];
     const int pixel = contours.Pixels[std::size_t(end)];
     return dk > db ||
-      (dk == db &&
-        std::hypot(pixelPoints[k].x - pixel % grid.Width, pixelPoints[k].y - pixel / grid.Width) <
-          std::hypot(pixelPoints[b].x - pixel % grid.Width, pixelPoints[b].y - pixel / grid.Width));
+      (dk == db && grouped.DistanceToPixel(k, pixel) < grouped.DistanceToPixel(b, pixel));
   };
   for (std::size_t k = 0; k < pixelPoints.size(); ++k)
   {
@@ -441,9 +449,6 @@ void NameNearContourEnds(const RidgeContours& contours,
     Point2 At;      // where the group's points end (pixel units)
     Point2 Outward; // from a pixel a width or so inside the contour towards its end pixel
   };
-  const auto pixelPoint = [&](int pixel) {
-    return Point2{ double(pixel % grid.Width), double(pixel / grid.Width) };
-  };
   std::vector<End> ends;
   for (int c = 0; c < contours.Count(); ++c)
   {
@@ -456,8 +461,8 @@ void NameNearContourEnds(const RidgeContours& contours,
     for (const auto& [end, inner] :
       { std::make_pair(first, first + back), std::make_pair(last, last - back) })
     {
-      const Point2 pixel = pixelPoint(contours.Pixels[std::size_t(end)]);
-      const Point2 from = pixelPoint(contours.Pixels[std::size_t(inner)]);
+      const Point2 pixel = grouped.PixelPoint(contours.Pixels[std::size_t(end)]);
+      const Point2 from = grouped.PixelPoint(contours.Pixels[std::size_t(inner)]);
       const std::ptrdiff_t point = (end == first ? lowest : highest)[std::size_t(c)];
       ends.push_back({ c,
         point < 0 ? pixel : pixelPoints[std::size_t(point)],
@@ -779,13 +784,14 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
     PartitionPoints(pixelPoints, contours, grid.Width, grid.Height, maximumGap);
   result.GroupId = partition.GroupId;
   result.Node = partition.Node;
-  MeasureContourDistances(pixelPoints, contours, partition, grid, this->Settings.Width, result);
+  const GroupedPoints grouped{ pixelPoints, contours, partition, grid, this->Settings.Width };
+  MeasureContourDistances(grouped, result);
   NameUnorderedPoints(PointsWithoutOrder(pixelPoints, contours, partition, grid.Width, maximumGap),
     grid,
     maximumGap,
     result);
-  NameNearContourEnds(contours, pixelPoints, partition, grid, this->Settings.Width, result);
-  NameContoursAwayFromPoints(pixelPoints, contours, partition, grid, this->Settings.Width, result);
+  NameNearContourEnds(grouped, result);
+  NameContoursAwayFromPoints(grouped, result);
   for (int c = 0; c < contours.Count(); ++c)
   {
     AppendPixelPolyline(contours, c, grid, result.Contours);
