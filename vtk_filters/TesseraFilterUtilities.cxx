@@ -409,6 +409,40 @@ void ListNonEmptyArraysFirst(vtkFieldData* field)
 }
 } // namespace
 
+bool DataBounds(vtkDataObject* data, double bounds[6])
+{
+  if (auto* set = vtkDataSet::SafeDownCast(data))
+  {
+    set->GetBounds(bounds);
+  }
+  else if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    composite->GetBounds(bounds);
+  }
+  else
+  {
+    return false;
+  }
+  return bounds[0] <= bounds[1] && bounds[2] <= bounds[3];
+}
+
+void MakeCompositeOrPolyDataOutput(vtkCompositeDataSet* composite,
+  vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
+  if (composite && (!output || !output->IsA(composite->GetClassName())))
+  {
+    vtkSmartPointer<vtkDataObject> made;
+    made.TakeReference(composite->NewInstance());
+    outInfo->Set(vtkDataObject::DATA_OBJECT(), made);
+  }
+  else if (!composite && !vtkPolyData::SafeDownCast(output))
+  {
+    outInfo->Set(vtkDataObject::DATA_OBJECT(), vtkSmartPointer<vtkPolyData>::New());
+  }
+}
+
 void ListNonEmptyFieldArraysFirst(vtkDataObject* data)
 {
   if (!data)
@@ -1176,16 +1210,9 @@ namespace
 /// 3 distinct vertices", with no word of z). "" otherwise.
 std::string VerticalPlaneWarning(vtkDataObject* data, const char* what)
 {
-  double bounds[6] = { 0, -1, 0, -1, 0, -1 };
-  if (auto* set = vtkDataSet::SafeDownCast(data))
-  {
-    set->GetBounds(bounds);
-  }
-  else if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
-  {
-    composite->GetBounds(bounds);
-  }
-  if (!(bounds[5] > bounds[4]) || (bounds[1] > bounds[0] && bounds[3] > bounds[2]))
+  double bounds[6];
+  if (!DataBounds(data, bounds) || !(bounds[5] > bounds[4]) ||
+    (bounds[1] > bounds[0] && bounds[3] > bounds[2]))
   {
     return std::string();
   }

@@ -150,6 +150,16 @@ std::string EmptyBoundsWarning(const double bounds[4], bool withConstraints);
 /// Adds an id array (vtkIdTypeArray, one component) named `name` to the data object's field data.
 void AddIdFieldArray(vtkDataObject* data, const char* name, const std::vector<std::int32_t>& ids);
 
+/// The bounds of a data set or of a composite's blocks (xmin, xmax, ymin, ymax, zmin, zmax);
+/// false when it has no points (or is neither).
+bool DataBounds(vtkDataObject* data, double bounds[6]);
+
+/// For a filter whose output 0 is the input's kind (REQUEST_DATA_OBJECT): an instance of the
+/// composite's class when composite is given (the input's, the output kept when it is one
+/// already), else a vtkPolyData.
+void MakeCompositeOrPolyDataOutput(vtkCompositeDataSet* composite,
+  vtkInformationVector* outputVector);
+
 /// Moves the empty field-data arrays of data (and of each block of a composite) after the others,
 /// keeping their order otherwise. ParaView lists no field data at all when the first array is
 /// empty (it counts the field's tuples by its first array): the lists of rejected or duplicate

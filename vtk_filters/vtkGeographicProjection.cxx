@@ -853,24 +853,9 @@ int vtkGeographicProjection::RequestDataObject(vtkInformation* request,
   {
     return this->Superclass::RequestDataObject(request, inputVector, outputVector);
   }
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
-  if (!composite)
-  {
-    // Neither points nor a composite: a vtkPolyData, which RequestData leaves empty with an error
-    // naming the input's type.
-    if (!vtkPolyData::SafeDownCast(output))
-    {
-      outInfo->Set(vtkDataObject::DATA_OBJECT(), vtkSmartPointer<vtkPolyData>::New());
-    }
-    return 1;
-  }
-  if (!output || !output->IsA(composite->GetClassName()))
-  {
-    vtkSmartPointer<vtkDataObject> made;
-    made.TakeReference(composite->NewInstance());
-    outInfo->Set(vtkDataObject::DATA_OBJECT(), made);
-  }
+  // A composite's kind, or for neither points nor a composite a vtkPolyData, which RequestData
+  // leaves empty with an error naming the input's type.
+  tessera_vtk::MakeCompositeOrPolyDataOutput(composite, outputVector);
   return 1;
 }
 

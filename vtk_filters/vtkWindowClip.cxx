@@ -46,24 +46,6 @@ const std::vector<const char*> OwnArrayNames{ "TileId",
   "ClippedArea",
   "AreaFraction",
   "PieceArea" };
-/// The x-y bounds of a data set or of a composite's blocks; false when it has no points.
-bool PlaneBoundsOf(vtkDataObject* data, double bounds[6])
-{
-  if (auto* set = vtkDataSet::SafeDownCast(data))
-  {
-    set->GetBounds(bounds);
-  }
-  else if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
-  {
-    composite->GetBounds(bounds);
-  }
-  else
-  {
-    return false;
-  }
-  return bounds[0] <= bounds[1] && bounds[2] <= bounds[3];
-}
-
 /// Whether bounds lie within the degrees a longitude and a latitude take (tessera::InLonLatRange
 /// at two opposite corners).
 bool WithinDegrees(const double bounds[6])
@@ -114,8 +96,8 @@ std::string ProjectionWarning(vtkDataObject* tiles, vtkDataObject* window)
   const std::string projected = ofTiles.empty() ? "the window (input 1)" : "the tiles (input 0)";
   const std::string other = ofTiles.empty() ? "the tiles (input 0)" : "the window (input 1)";
   double projectedBounds[6], otherBounds[6];
-  if (PlaneBoundsOf(ofTiles.empty() ? window : tiles, projectedBounds) &&
-    PlaneBoundsOf(ofTiles.empty() ? tiles : window, otherBounds) &&
+  if (tessera_vtk::DataBounds(ofTiles.empty() ? window : tiles, projectedBounds) &&
+    tessera_vtk::DataBounds(ofTiles.empty() ? tiles : window, otherBounds) &&
     ReachesMetres(projectedBounds) && WithinDegrees(otherBounds))
   {
     throw tessera::InputError(projected + " is projected (TesseraProjection " + ofTiles + ofWindow +
@@ -503,20 +485,21 @@ int vtkWindowClip::RequestData(vtkInformation*,
       for (block->InitTraversal(); !block->IsDoneWithTraversal(); block->GoToNextItem())
       {
         vtkDataObject* leaf = block->GetCurrentDataObject();
+        const std::string label = labels.Of(block);
         auto* tiles = vtkPolyData::SafeDownCast(leaf);
         if (!tiles)
         {
-          throw tessera::InputError(labels.Of(block) + " of input 0 (the tiles) is a " +
-            leaf->GetClassName() + ": only vtkPolyData (or a composite data set of it) is clipped");
+          throw tessera::InputError(label + " of input 0 (the tiles) is a " + leaf->GetClassName() +
+            ": only vtkPolyData (or a composite data set of it) is clipped");
         }
-        CheckBlockProjection(tiles, windowData, labels.Of(block));
+        CheckBlockProjection(tiles, windowData, label);
         vtkNew<vtkPolyData> clipped;
         const double cells = static_cast<double>(tiles->GetNumberOfCells());
         this->ClipTilesOf(tiles,
           catchment,
           exponent,
           clipped,
-          labels.Of(block) + " of input 0: ",
+          label + " of input 0: ",
           done / count,
           (done + cells) / count);
         done += cells;
@@ -595,19 +578,8 @@ int vtkWindowClip::RequestDataObject(vtkInformation*,
 {
   // The tiles' kind: a vtkPolyData, or a composite of the same class as the tiles' (a
   // vtkPolyData too for no input yet, or one of another type, which the pipeline refuses).
-  auto* blocks = vtkCompositeDataSet::GetData(inputVector[0], 0);
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
-  if (blocks && (!output || !output->IsA(blocks->GetClassName())))
-  {
-    vtkSmartPointer<vtkDataObject> made;
-    made.TakeReference(blocks->NewInstance());
-    outInfo->Set(vtkDataObject::DATA_OBJECT(), made);
-  }
-  else if (!blocks && !vtkPolyData::SafeDownCast(output))
-  {
-    outInfo->Set(vtkDataObject::DATA_OBJECT(), vtkSmartPointer<vtkPolyData>::New());
-  }
+  tessera_vtk::MakeCompositeOrPolyDataOutput(
+    vtkCompositeDataSet::GetData(inputVector[0], 0), outputVector);
   return 1;
 }
 
