@@ -31,6 +31,12 @@ void CheckPoint(const Point2& p, std::size_t index, int width, int height)
   }
 }
 
+// The centre of the image's pixel of index `pixel` (pixel units).
+Point2 PixelCentre(int pixel, int width)
+{
+  return { double(pixel % width), double(pixel / width) };
+}
+
 double SquaredDistanceToPixel(const Point2& p, int pixel, int width)
 {
   const double dx = p.x - pixel % width;
@@ -116,11 +122,12 @@ double DistanceBeyondEnd(const Point2& p,
 // end tangent (strictly).
 bool PixelBehindEnd(const RidgeContours& contours, int contour, int position, int end, int width)
 {
-  const int pixel = contours.Pixels[position];
   const int endPixel = contours.Pixels[end];
-  const Point2 at{ double(pixel % width), double(pixel / width) };
-  return DistanceAlong(at, endPixel, EndTangentPixel(contours, contour, end), endPixel, width) <
-    0.0;
+  return DistanceAlong(PixelCentre(contours.Pixels[position], width),
+           endPixel,
+           EndTangentPixel(contours, contour, end),
+           endPixel,
+           width) < 0.0;
 }
 
 // The projection of p, whose nearest pixel is at `position` of `contour`, and its distance beyond
@@ -395,10 +402,7 @@ std::vector<std::uint8_t> FollowChainsPastEnds(const std::vector<Point2>& points
     return chained;
   }
   const auto pixelPoint = [&](int position)
-  {
-    const int pixel = contours.Pixels[std::size_t(position)];
-    return Point2{ double(pixel % width), double(pixel / width) };
-  };
+  { return PixelCentre(contours.Pixels[std::size_t(position)], width); };
   std::vector<std::uint8_t> far(points.size(), 0);
   std::vector<std::size_t> farPoints;
   for (std::size_t k = 0; k < points.size(); ++k)
