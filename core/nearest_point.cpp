@@ -30,11 +30,14 @@ namespace tessera
 namespace
 {
 
-void CheckQuery(const Point2& q, const std::string& which)
+/// Throws InputError naming q (which: "the query point", "query point 3") when it is not finite;
+/// the name is made only then (a batch of 10^6 queries built a string each).
+template<typename Which>
+void CheckQuery(const Point2& q, const Which& which)
 {
   if (!std::isfinite(q.x) || !std::isfinite(q.y))
   {
-    throw InputError(which + " (" + NumberText(q.x) + ", " + NumberText(q.y) + ") is not finite");
+    throw InputError(which() + " (" + NumberText(q.x) + ", " + NumberText(q.y) + ") is not finite");
   }
 }
 
@@ -135,7 +138,7 @@ std::int32_t DescendToNearest(const DirichletTessellation& t, const Point2& q, s
 
 std::int32_t DirichletTessellation::NearestPoint(const Point2& q) const
 {
-  CheckQuery(q, "the query point");
+  CheckQuery(q, [] { return std::string("the query point"); });
   if (!this->IsTwoDimensional())
   {
     return NearestCollinear(*this, q);
@@ -153,7 +156,7 @@ std::vector<std::int32_t> DirichletTessellation::NearestPoints(
 {
   for (std::size_t k = 0; k < queries.size(); ++k)
   {
-    CheckQuery(queries[k], "query point " + std::to_string(k));
+    CheckQuery(queries[k], [k] { return "query point " + std::to_string(k); });
   }
   std::vector<std::int32_t> nearest(queries.size(), -1);
   if (queries.empty() || !this->IsTwoDimensional())
