@@ -140,8 +140,16 @@ def check_columns(path, what, required, columns):
     as named_columns gives them) lack one of the required names."""
     absent = [name for name in required if name not in columns]
     if absent:
+        others = "; ".join(f"{name} may be named {', '.join(other_names(name))}"
+                           for name in absent if other_names(name))
         fail(f"{path}: the {what} file has no column {', '.join(repr(n) for n in absent)} "
-             f"(it needs {', '.join(required)}; its header: {', '.join(columns) or 'none'})")
+             f"(it needs {', '.join(required)}; its header: {', '.join(columns) or 'none'}"
+             f"{'; ' + others if others else ''})")
+
+
+def other_names(name):
+    """The other names a column is read by (ALIAS_OF, then FALLBACKS_OF), as a list."""
+    return [other for other, wanted in ALIAS_OF.items() if wanted == name] + list(FALLBACKS_OF.get(name, ()))
 
 
 LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+$")
@@ -308,6 +316,16 @@ def decimal_point_text(text, row):
 # name only where the file has none of its own name.
 ALIAS_OF = {"station": "station_id", "latitude": "lat", "longitude": "lon", "long": "lon", "lng": "lon",
             "prcp": "precip", "precipitation": "precip"}
+# Names read as a column only where the file has neither its name nor one of ALIAS_OF, the first
+# of them it has: USGS's site_no, and a plain id (a file of id, lon, lat, as a GIS file's gauges
+# are read by the same names). A file with STATION and an ID of its rows reads STATION.
+FALLBACKS_OF = {"station_id": ("site_no", "id")}
+
+
+def other_name_of(column):
+    """The column's name (any case) that it stands for (ALIAS_OF or FALLBACKS_OF), else None."""
+    name = column.lower()
+    return ALIAS_OF.get(name) or next((wanted for wanted, names in FALLBACKS_OF.items() if name in names), None)
 
 
 def header_name(field):
@@ -324,19 +342,22 @@ def header_names(fields):
     """A header's names (its fields), stripped (header_name) and in lower case, with the names they
     stand for (ALIAS_OF): {"station", "station_id", "lat", ...} for STATION, LAT."""
     names = {header_name(field).lower() for field in fields}
-    return names | {ALIAS_OF[name] for name in names if name in ALIAS_OF}
+    return names | {other_name_of(name) for name in names if other_name_of(name)}
 
 
 def named_columns(columns, names, where, renamed=None):
     """The header's columns with each of names in its own spelling where the header has it in
-    another case, or has instead one other name of it (ALIAS_OF), given in renamed (a list of
-    (the header's name, the name read)); ends the script, naming where (file:line of the header),
-    when one of names appears twice (in any case, or as two other names): which of them holds the
-    values would be a guess (a reader of a dict keeps the last)."""
+    another case, or has instead one other name of it (ALIAS_OF; else the first of FALLBACKS_OF it
+    has), given in renamed (a list of (the header's name, the name read)); ends the script, naming
+    where (file:line of the header), when one of names appears twice (in any case, or as two other
+    names): which of them holds the values would be a guess (a reader of a dict keeps the last)."""
     columns = list(columns)
     for name in names:
         same = [k for k, column in enumerate(columns) if column.lower() == name.lower()]
         other = [] if same else [k for k, column in enumerate(columns) if ALIAS_OF.get(column.lower()) == name]
+        if not same and not other:
+            other = next(([k for k, column in enumerate(columns) if column.lower() == fallback]
+                          for fallback in FALLBACKS_OF.get(name, ()) if fallback in map(str.lower, columns)), [])
         if len(same) > 1:
             fail(f"{where}: column {name!r} appears {len(same)} times (columns "
                  f"{', '.join(str(k + 1) for k in same)}): keep one")

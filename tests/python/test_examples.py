@@ -285,7 +285,7 @@ def test_missing_values_keep_their_months():
 
 def test_bad_files_are_named():
     with tempfile.TemporaryDirectory() as out:
-        stations_id = write(out, "id.csv", "id,lon,lat\n1,-105,39\n")
+        stations_id = write(out, "id.csv", "gauge,lon,lat\n1,-105,39\n")
         stations_lat = write(out, "lat.csv", "station_id,lon,lat\nA,-105,39\nB,-104,north\n")
         month = write(out, "month.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,13,1\n")
         value = write(out, "value.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,1,5\n")
@@ -326,7 +326,7 @@ def test_bad_files_are_named():
             (("--observations", workbook), [workbook, "a zip archive, not CSV text", "save the sheet as CSV"]),
             (("--stations", bzh), [bzh, "no column 'station_id'"]),
             (("--catchment", lone_shp), [lone_shp, "basin.shx beside it is missing"]),
-            (("--stations", stations_id), [stations_id, "no column 'station_id'", "id, lon, lat"]),
+            (("--stations", stations_id), [stations_id, "no column 'station_id'", "gauge, lon, lat"]),
             (("--stations", stations_lat), [stations_lat + ":3", "'lat'", "'north' is not a number"]),
             (("--stations", missing), [missing, "cannot read the stations file"]),
             (("--observations", month), [month + ":3", "'month'", "13 is outside 1..12"]),
@@ -2600,6 +2600,44 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
                         f"{message!r} not in {stderr!r}")
 
 
+def test_a_plain_id_or_site_no_column_is_the_station_id_where_no_station_column_is():
+    # A CSV of gauges (id, lon, lat) or observations (site_no, date, precip) names its stations by
+    # the names a GIS file's gauges are read by: the first of site_no and id it has, said, where
+    # it has no station_id or station column; the same means as with station_id. A file with
+    # station beside a row id reads station; two columns of one name in two cases are refused.
+    import itertools
+
+    with tempfile.TemporaryDirectory() as out:
+        catchment, _, _ = write_lake_basin(out)
+        days = ("2001-01-01", "2001-01-02")
+        rows = [(s, d, round(1.5 * k + 0.7 * j, 2)) for (k, s), (j, d)
+                in itertools.product(enumerate(LAKE_GAUGES), enumerate(days))]
+        stations = os.path.join(out, "stations.csv")
+        write_stations(stations, LAKE_GAUGES)
+        plain = write(out, "plain.csv", "station_id,date,precip\n" + "".join(f"{s},{d},{v}\n" for s, d, v in rows))
+        ids = write(out, "ids.csv", "id,lon,lat\n" + "".join(f"{s},{lon},{lat}\n" for s, (lon, lat) in LAKE_GAUGES.items()))
+        site = write(out, "site.csv", "ID,site_no,date,precip\n" + "".join(
+            f"{k},{s},{d},{v}\n" for k, (s, d, v) in enumerate(rows)))
+        both = write(out, "both.csv", "id,station,lon,lat\n" + "".join(
+            f"{k},{s},{lon},{lat}\n" for k, (s, (lon, lat)) in enumerate(LAKE_GAUGES.items())))
+        run_colorado(os.path.join(out, "plain"), stations=stations, observations=plain, catchment=catchment,
+                     plots=False, what="station_id columns")
+        _, stderr = run_colorado(os.path.join(out, "ids"), stations=ids, observations=site, catchment=catchment,
+                                 plots=False, what="id and site_no columns")
+        for message in (f"{ids}: reads column 'id' as 'station_id'", f"{site}: reads column 'site_no' as 'station_id'"):
+            assert_that(message in stderr, f"{message!r} not in {stderr!r}")
+        run_colorado(os.path.join(out, "both"), stations=both, observations=plain, catchment=catchment,
+                     plots=False, what="a row id beside station")
+        want = read_csv(os.path.join(out, "plain", "areal_mean.csv"))
+        for name in ("ids", "both"):
+            got = read_csv(os.path.join(out, name, "areal_mean.csv"))
+            assert_that(got == want and len(got) == len(days), f"{name}: {got} against {want}")
+        twice = write(out, "twice.csv", "id,ID,lon,lat\nN1,N1,175.6,-39.1\n")
+        _, stderr = run_colorado(os.path.join(out, "twice"), stations=twice, observations=plain, catchment=catchment,
+                                 plots=False, status=1, what="id twice")
+        assert_that(f"{twice}:1: columns 'id', 'ID' could each be 'station_id'" in stderr, f"{stderr}")
+
+
 def test_a_noaa_climate_data_online_file_is_both_stations_and_observations():
     # NOAA's Climate Data Online CSV: a row per station and day, the station's place on each,
     # columns STATION, NAME (with commas, quoted), LATITUDE, LONGITUDE, ELEVATION, DATE, PRCP and
@@ -3390,6 +3428,7 @@ if __name__ == "__main__":
          test_a_catchment_declared_projected_is_named, test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means,
          test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means,
          test_catchment_geopackage_in_metres_beside_a_layer_of_lon_lat_points,
+         test_a_plain_id_or_site_no_column_is_the_station_id_where_no_station_column_is,
          test_a_noaa_climate_data_online_file_is_both_stations_and_observations,
          test_gauges_from_a_gis_file_of_points_give_the_csv_means,
          test_the_filters_errors_name_the_file_and_line,
