@@ -816,8 +816,14 @@ RidgeContours TraceRidgeContours(const std::vector<std::uint8_t>& minor,
     const std::vector<int>& pixels = contours[c];
     const double length =
       PathLength(pixels, 0, static_cast<int>(pixels.size()), closed[c] != 0, width);
-    if (length < settings.MinimumLength || (closed[c] && length < settings.MinimumLoopLength))
+    if (length < settings.MinimumLength)
     {
+      ++result.ShortContourCount;
+      continue;
+    }
+    if (closed[c] && length < settings.MinimumLoopLength)
+    {
+      ++result.ShortLoopCount;
       continue;
     }
     result.Pixels.insert(result.Pixels.end(), pixels.begin(), pixels.end());

@@ -77,8 +77,10 @@ struct RidgeContours
   // Diagnostics of the intermediate steps, for tests and reports.
   std::vector<std::uint8_t> Skeleton; ///< thinned minor ridges
   int BranchPixelCount = 0;
-  int SegmentCount = 0;     ///< minor-ridge segments before removal
-  int KeptSegmentCount = 0; ///< segments holding a major-ridge pixel
+  int SegmentCount = 0;      ///< minor-ridge segments before removal
+  int KeptSegmentCount = 0;  ///< segments holding a major-ridge pixel
+  int ShortContourCount = 0; ///< contours dropped as shorter than MinimumLength
+  int ShortLoopCount = 0;    ///< closed ones not so dropped, but shorter than MinimumLoopLength
 };
 
 /// Thins a binary mask in place as in step 1 above. O(mask pixels x passes).

@@ -386,6 +386,114 @@ void NameUnorderedPoints(const std::vector<std::size_t>& tied,
   }
 }
 
+/// A warning naming the points that stretch the image far beyond the bulk of the points. The
+/// image spans the points' bounding box at ImageSize pixels (at most 1024 automatic), so one
+/// stray point 200 radii from a noisy circle of 500 shrank the circle to 10 pixels, 2 basis
+/// widths across, and left every point ungrouped, with no word of the stray point. The bulk is
+/// the box of the points without the 1% most extreme on each side (at least 1, from 20 points);
+/// named when it spans less than a quarter of the image's larger side, for each point further
+/// outside it than its own larger side.
+///
+///    +--------------------------------------+   the image: the points' bounding box
+///    | +--+                                 |
+///    | |##|  bulk (98% of the points)       * stray point: named
+///    | +--+                                 |
+///    +--------------------------------------+
+void NameStretchingPoints(const std::vector<Point2>& points,
+  const PixelGrid& grid,
+  double width,
+  RidgeGroupingResult& result)
+{
+  const std::size_t n = points.size();
+  if (n < 20)
+  {
+    return;
+  }
+  const std::size_t trimmed = std::max<std::size_t>(1, n / 100);
+  const auto bulkRange = [&](double Point2::*axis)
+  {
+    std::vector<double> values(n);
+    std::transform(
+      points.begin(), points.end(), values.begin(), [axis](const Point2& p) { return p.*axis; });
+    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(trimmed), values.end());
+    const double low = values[trimmed];
+    std::nth_element(values.begin(), values.end() - 1 - std::ptrdiff_t(trimmed), values.end());
+    return std::make_pair(low, values[n - 1 - trimmed]);
+  };
+  const auto [xLow, xHigh] = bulkRange(&Point2::x);
+  const auto [yLow, yHigh] = bulkRange(&Point2::y);
+  const double bulk = std::max(xHigh - xLow, yHigh - yLow);
+  const double whole = BoundsOf(points.data(), n).LargerSide();
+  if (!(4.0 * bulk < whole))
+  {
+    return;
+  }
+  std::vector<std::size_t> stretching;
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    const double dx = std::max({ xLow - points[k].x, points[k].x - xHigh, 0.0 });
+    const double dy = std::max({ yLow - points[k].y, points[k].y - yHigh, 0.0 });
+    if (std::hypot(dx, dy) > std::max(bulk, 0.125 * whole))
+    {
+      stretching.push_back(k);
+    }
+  }
+  if (stretching.empty())
+  {
+    return;
+  }
+  const double pixels = bulk / grid.Spacing;
+  result.Warnings.push_back(std::to_string(stretching.size()) +
+    " point(s) lie far outside the box of the other points (98% of them, " + NumberText(bulk) +
+    " across in the points' units, against the image's " + NumberText(whole) +
+    "): the image spans them all, so the other points' box takes " +
+    NumberText(std::round(10.0 * pixels) / 10.0) + " pixels across (" +
+    NumberText(std::round(10.0 * pixels / width) / 10.0) +
+    " basis widths), and their groups come out coarse, or not at all; group the stray points "
+    "apart: point(s) " +
+    ListNames(stretching.size(),
+      [&](std::size_t k)
+      {
+        const Point2& p = points[stretching[k]];
+        return std::to_string(stretching[k]) + " (" + NumberText(p.x) + ", " + NumberText(p.y) +
+          ")";
+      }));
+}
+
+/// Why the field gave no contour, at which step of TraceRidgeContours the ridges were lost: all
+/// contours too short, or too short a loop; no crest (segments without a major-ridge pixel); or
+/// no ridge at all. (It blamed the minimum length alone, and so misled at a minimum of 0: four
+/// points on an arc left 12 major-ridge pixels and no contour.)
+std::string NoContourWarning(const RidgeContours& contours, const RidgeContourSettings& settings)
+{
+  std::string why;
+  if (contours.ShortContourCount > 0 || contours.ShortLoopCount > 0)
+  {
+    why = "the field's ridges made " +
+      std::to_string(contours.ShortContourCount + contours.ShortLoopCount) + " contour(s), " +
+      (contours.ShortContourCount > 0 ? std::to_string(contours.ShortContourCount) +
+            " shorter than the minimum length (" + NumberText(settings.MinimumLength) + " pixels)"
+                                      : std::string()) +
+      (contours.ShortContourCount > 0 && contours.ShortLoopCount > 0 ? " and " : "") +
+      (contours.ShortLoopCount > 0 ? std::to_string(contours.ShortLoopCount) +
+            " closed, shorter than a circle of one basis width (" +
+            NumberText(std::round(10.0 * settings.MinimumLoopLength) / 10.0) + " pixels)"
+                                   : std::string());
+  }
+  else if (contours.SegmentCount > 0)
+  {
+    why = "the field's " + std::to_string(contours.SegmentCount) +
+      " ridge segment(s) hold no crest (major-ridge pixel) that joins them into a contour";
+  }
+  else
+  {
+    why = "the field has no ridge line";
+  }
+  return "no ridge contour: " + why +
+    "; no point is grouped (too few points, or points further apart than the basis reaches: a "
+    "larger Width may join them)";
+}
+
 /// Open groups' ends within this many basis widths of another end are named (NameNearContourEnds).
 constexpr double NearEndWidths = 4.0;
 
@@ -737,6 +845,7 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
   const PixelGrid grid = this->MakeGrid(points, result.ImageSize);
   result.Grid = grid;
   result.PixelSize = grid.Spacing;
+  NameStretchingPoints(points, grid, this->Settings.Width, result);
 
   std::vector<Point2> pixelPoints(points.size());
   for (std::size_t k = 0; k < points.size(); ++k)
@@ -772,9 +881,7 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
   result.MajorRidge = std::move(masks.Major);
   if (contours.Count() == 0)
   {
-    result.Warnings.push_back(
-      "no ridge contour reaches the minimum length (a closed one: the length of a "
-      "circle of one basis width): no point is grouped");
+    result.Warnings.push_back(NoContourWarning(contours, contourSettings));
   }
 
   // Points past a contour end continue it while each is within two basis widths of the one

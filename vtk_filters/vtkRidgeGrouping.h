@@ -54,7 +54,8 @@
  *
  * Fewer than 2 points give a warning, output 0 holding them unassigned (GroupId -1) and the
  * other outputs empty; a few points (2 or 3, or a few distinct places) make no ridge contour of
- * MinimumContourLength: a warning, and every point unassigned; identical points give one group
+ * MinimumContourLength: a warning (saying where the ridges were lost: contours too short, too
+ * short a loop, no crest, no ridge), and every point unassigned; identical points give one group
  * (GroupId 0, Node 0, ContourDistance NaN) with no contour and no curve, and a warning. ImageSize 0
  * (default) chooses the size as the paper says (most points in pixels of their own, copies of a
  * point counting once); sizes above 2048 are refused before anything is allocated (the FFT would
@@ -64,7 +65,11 @@
  * with the places, and so is a Width below one pixel. Contours that run more than 3 basis widths
  * from every point (the field's ridge across empty space, which can join points of curves far
  * apart into one group) are named with the stretch, and so are contours that no point is grouped
- * by (they are in output 1 with no group and no curve).
+ * by (they are in output 1 with no group and no curve). The image spans every point, so a few
+ * stray points far from the rest leave the rest few pixels: points further outside the box of 98%
+ * of the points than its size, where that box spans under a quarter of the image, are named with
+ * their places (one point 200 radii from a circle of 500 left the circle 2 basis widths across,
+ * and nothing grouped).
  */
 
 #ifndef vtkRidgeGrouping_h

@@ -334,8 +334,19 @@ TEST(RidgeContours, RingIsOneClosedContourAndShortPiecesAreDropped)
   ASSERT_EQ(c.Count(), 1);
   EXPECT_TRUE(c.Closed[0]);
   EXPECT_NEAR(c.Lengths[0], 2 * Pi * 20, 0.1 * 2 * Pi * 20);
+  EXPECT_EQ(c.ShortContourCount, 1); // the piece, counted as dropped for its length
+  EXPECT_EQ(c.ShortLoopCount, 0);
   settings.MinimumLength = 0;
-  EXPECT_EQ(tessera::TraceRidgeContours(minor, major, w, h, settings).Count(), 2);
+  const tessera::RidgeContours all = tessera::TraceRidgeContours(minor, major, w, h, settings);
+  EXPECT_EQ(all.Count(), 2);
+  EXPECT_EQ(all.ShortContourCount + all.ShortLoopCount, 0);
+  // A loop shorter than MinimumLoopLength goes, counted apart from the short pieces.
+  settings.MinimumLength = 10;
+  settings.MinimumLoopLength = 2 * Pi * 20 * 1.2;
+  const tessera::RidgeContours noLoop = tessera::TraceRidgeContours(minor, major, w, h, settings);
+  EXPECT_EQ(noLoop.Count(), 0);
+  EXPECT_EQ(noLoop.ShortContourCount, 1);
+  EXPECT_EQ(noLoop.ShortLoopCount, 1);
   settings.MinimumLength = -1;
   EXPECT_THROW(tessera::TraceRidgeContours(minor, major, w, h, settings), tessera::InputError);
 }

@@ -1256,4 +1256,66 @@ TEST(RidgeGrouping, OutputsAreConsistent)
   EXPECT_LE(result.FieldErrorBound, 0.25 / 125.0 * samples.size() * 1.01);
 }
 
+TEST(RidgeGrouping, AStrayPointThatStretchesTheImageIsNamed)
+{
+  // A noisy circle of radius 100 and one point 200 radii away: the automatic image (at most 1024
+  // pixels) spans both, the circle takes 10 pixels, and nothing is grouped. The stray point is
+  // named with its place, and the circle's box is given in basis widths; without it, or with the
+  // circle's points split into two clusters far apart (each half of them), nothing is named.
+  std::mt19937 random(1);
+  std::normal_distribution<double> noise(0.0, 1.0);
+  std::uniform_real_distribution<double> angle(0.0, 2 * Pi);
+  std::vector<Point2> circle(500);
+  for (Point2& p : circle)
+  {
+    const double t = angle(random);
+    p = { 100 * std::cos(t) + noise(random), 100 * std::sin(t) + noise(random) };
+  }
+  const std::string stretching = "lie far outside the box of the other points";
+  EXPECT_TRUE(WarningsWith(RidgeGrouping().Run(circle), stretching).empty());
+  std::vector<Point2> stray = circle;
+  stray.push_back({ 20000.0, 0.0 });
+  const RidgeGroupingResult result = RidgeGrouping().Run(stray);
+  const std::vector<std::string> named = WarningsWith(result, stretching);
+  ASSERT_EQ(named.size(), 1u);
+  EXPECT_EQ(named[0].rfind("1 point(s)", 0), 0u) << named[0];
+  EXPECT_NE(named[0].find("point(s) 500 (20000, 0)"), std::string::npos) << named[0];
+  // The circle's box (some 200 units) over the pixel size, in pixels and in basis widths.
+  const double pixels = 200.0 / result.PixelSize;
+  EXPECT_NEAR(pixels, 10.0, 0.5);
+  EXPECT_NE(named[0].find("(2 basis widths)"), std::string::npos) << named[0];
+
+  std::vector<Point2> clusters = circle;
+  for (std::size_t k = 0; k < clusters.size(); k += 2)
+  {
+    clusters[k].x += 20000.0;
+  }
+  EXPECT_TRUE(WarningsWith(RidgeGrouping().Run(clusters), stretching).empty());
+}
+
+TEST(RidgeGrouping, NoContourWarningSaysWhereTheRidgesWereLost)
+{
+  // Four points on an arc: their field's ridge is one small loop, shorter than a circle of one
+  // basis width. With a minimum contour length of 0 the warning must not blame that minimum.
+  std::vector<Point2> arc;
+  for (int k = 0; k < 4; ++k)
+  {
+    arc.push_back({ 100 * std::cos(k * Pi / 9), 100 * std::sin(k * Pi / 9) });
+  }
+  RidgeGroupingSettings settings;
+  settings.MinimumContourLength = 0.0;
+  const RidgeGroupingResult result = RidgeGrouping(settings).Run(arc);
+  ASSERT_EQ(result.Contours.Count(), 0);
+  const std::vector<std::string> named = WarningsWith(result, "no ridge contour: ");
+  ASSERT_EQ(named.size(), 1u);
+  EXPECT_NE(named[0].find("closed, shorter than a circle of one basis width (31.4 pixels)"),
+    std::string::npos)
+    << named[0];
+  EXPECT_EQ(named[0].find("minimum length"), std::string::npos) << named[0];
+  for (int g : result.GroupId)
+  {
+    EXPECT_EQ(g, -1);
+  }
+}
+
 } // namespace
