@@ -179,7 +179,21 @@ std::string GaugeLabel(std::size_t gauge, const std::vector<std::string>& names)
   return label;
 }
 
-/// Padding and GeodesicStepMetres in their ranges (ArealAverageSettings), each named: a Padding of
+/// Throws InputError naming what (a setting, or an argument) unless step, metres between points
+/// added along edges, is finite and at least MinGeodesicStepMetres: NaN, 0 or less turned the
+/// densifying off without a word, and a step below a nanometre made a count of pieces no int holds.
+void CheckStepMetres(double step, const char* what)
+{
+  if (!(step >= ArealAverageSettings::MinGeodesicStepMetres) || !std::isfinite(step))
+  {
+    throw InputError(std::string(what) + " must be a finite length of at least " +
+      NumberText(ArealAverageSettings::MinGeodesicStepMetres) + " m, not " + NumberText(step));
+  }
+}
+
+/// Padding, GeodesicStepMetres and CatchmentEdgeDegrees in their ranges (ArealAverageSettings),
+/// each named (an edge step of NaN, 0 or less turned densifying off, and 1% of a 20-degree
+/// catchment's area went without a word). A Padding of
 /// 1e14 times the data's size left a window whose rounding swallowed the catchment's tiles (one
 /// gauge of five weighted, the mean 5.0 for 3.0), a NaN one was named as a rectangle's NaN side,
 /// and a negative one was taken as 0.01; a GeodesicStepMetres of 0.001 ran out of memory, and a
@@ -192,12 +206,11 @@ void CheckSettingsRange(const ArealAverageSettings& settings)
       NumberText(ArealAverageSettings::MaxPadding) + " of the data's larger side, not " +
       NumberText(settings.Padding));
   }
-  if (!(settings.GeodesicStepMetres >= ArealAverageSettings::MinGeodesicStepMetres) ||
-    !std::isfinite(settings.GeodesicStepMetres))
+  CheckStepMetres(settings.GeodesicStepMetres, "GeodesicStepMetres");
+  if (!(settings.CatchmentEdgeDegrees > 0.0) || !std::isfinite(settings.CatchmentEdgeDegrees))
   {
-    throw InputError("GeodesicStepMetres must be a finite length of at least " +
-      NumberText(ArealAverageSettings::MinGeodesicStepMetres) + " m, not " +
-      NumberText(settings.GeodesicStepMetres));
+    throw InputError("CatchmentEdgeDegrees must be a finite angle above 0, not " +
+      NumberText(settings.CatchmentEdgeDegrees));
   }
 }
 
@@ -1049,16 +1062,18 @@ std::vector<int> DensifiedPieceCounts(const CleanRings& rings, double edgeDegree
     const std::size_t begin = rings.RingOffsets[r], end = rings.RingOffsets[r + 1];
     for (std::size_t k = begin; k < end; ++k)
     {
+      bool capped = false;
       pieces[k] = DensifiedPieceCount(
-        rings.Vertices[k], rings.Vertices[k + 1 < end ? k + 1 : begin], edgeDegrees);
-      total += std::size_t(pieces[k]);
+        rings.Vertices[k], rings.Vertices[k + 1 < end ? k + 1 : begin], edgeDegrees, &capped);
+      total += capped ? MaxCatchmentVertices + 1 : std::size_t(pieces[k]);
     }
   }
   if (total > MaxCatchmentVertices)
   {
     throw InputError("the catchment's edges, cut into pieces of at most " +
       NumberText(edgeDegrees) + " degrees to follow their lon/lat lines once projected, make " +
-      std::to_string(total) + " vertices, more than " + std::to_string(MaxCatchmentVertices) +
+      (total > 2 * MaxCatchmentVertices ? std::string("far") : std::to_string(total)) +
+      " vertices, more than " + std::to_string(MaxCatchmentVertices) +
       " (some 100 bytes each): simplify the outline, or cut its edges more coarsely "
       "(ArealAverageSettings::CatchmentEdgeDegrees, in the core's C++ API)");
   }
@@ -1107,6 +1122,14 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   {
     throw InputError("GaugeNames has " + std::to_string(settings.GaugeNames.size()) +
       " names for " + std::to_string(gaugesLonLat.size()) + " gauges");
+  }
+  try
+  {
+    CheckRingOffsets(catchmentRingOffsets, catchmentLonLat.size());
+  }
+  catch (const InputError& e) // (an offset beyond the vertices was read past their end)
+  {
+    throw InputError(std::string("catchment: ") + e.what());
   }
   CheckCatchmentLonLat(catchmentRingOffsets, catchmentLonLat);
   // Validated as the edges are read: a ring that jumps the 180th meridian runs on past it; a
@@ -1325,7 +1348,12 @@ const std::vector<Point2>& ThiessenArealAverage::ProjectedGauges() const
 
 bool ThiessenArealAverage::GaugeInsideCatchment(std::size_t g) const
 {
-  return this->Impl->Region->Contains(this->Impl->GaugesXY.at(g));
+  if (g >= this->Impl->GaugesXY.size())
+  {
+    throw InputError("GaugeInsideCatchment: no gauge " + std::to_string(g) + " (there are " +
+      std::to_string(this->Impl->GaugesXY.size()) + ")");
+  }
+  return this->Impl->Region->Contains(this->Impl->GaugesXY[g]);
 }
 
 std::vector<std::int32_t> ThiessenArealAverage::CatchmentRingsAround(std::size_t r) const
@@ -1333,7 +1361,8 @@ std::vector<std::int32_t> ThiessenArealAverage::CatchmentRingsAround(std::size_t
   const Catchment& region = *this->Impl->Region;
   if (r + 1 >= region.RingOffsets().size())
   {
-    throw std::out_of_range("CatchmentRingsAround: no ring " + std::to_string(r));
+    throw InputError("CatchmentRingsAround: no ring " + std::to_string(r) + " (there are " +
+      std::to_string(region.RingOffsets().size() - 1) + ")");
   }
   return region.EnclosingRings(r);
 }
@@ -1433,6 +1462,7 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
 
 ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetres) const
 {
+  CheckStepMetres(maxStepMetres, "CurrentClippedTiles' step");
   State& s = *this->Impl;
   ClippedTilesLonLat out;
   ClippedRings plane; // the pieces in the plane, in out's order

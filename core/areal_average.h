@@ -34,6 +34,7 @@
 
 #include "clip.h"
 #include "geo.h"
+#include "errors.h" // InputError, which the constructor and Step throw
 #include "geometry.h"
 
 #include <cstdint>
@@ -66,11 +67,12 @@ struct ArealAverageSettings
   double Padding = 0.1;
   static constexpr double MaxPadding = 1000.0;
   /// Catchment edges are straight in lon/lat: cut into pieces of at most this many degrees before
-  /// projecting. An edge whose longitudes differ by more than 270 degrees as written is taken the
-  /// shorter way round (179 to -179 across the 180th meridian); one that differs by 180 to 270
-  /// degrees could be meant either way and is an InputError naming its ring and segment
-  /// (EdgeReadsBothWays, geo.h). More than 20 million pieces in all (200000 degrees of boundary
-  /// at 0.01) is an InputError giving the count: they would take gigabytes.
+  /// projecting. Finite and above 0, else an InputError naming it. An edge whose longitudes differ
+  /// by more than 270 degrees as written is taken the shorter way round (179 to -179 across the
+  /// 180th meridian); one that differs by 180 to 270 degrees could be meant either way and is an
+  /// InputError naming its ring and segment (EdgeReadsBothWays, geo.h). More than 20 million pieces
+  /// in all (200000 degrees of boundary at 0.01) is an InputError giving the count: they would take
+  /// gigabytes.
   double CatchmentEdgeDegrees = 0.01;
   /// Gauges closer than this (projected metres) are at one place, as exact repeats are: at each
   /// step the first of them that reported is used (DuplicateGauges lists them). Gauges much
@@ -170,10 +172,11 @@ public:
   std::size_t CatchmentVerticesPutOnEdges() const;
   /// Projected gauge positions (metres).
   const std::vector<Point2>& ProjectedGauges() const;
-  /// Whether gauge g lies inside the catchment (even-odd; on its boundary: either answer).
+  /// Whether gauge g lies inside the catchment (even-odd; on its boundary: either answer). An
+  /// InputError naming g when there is no gauge g.
   bool GaugeInsideCatchment(std::size_t g) const;
   /// The catchment rings (numbered as given) that enclose ring r, ascending: r is a hole when
-  /// their number is odd.
+  /// their number is odd. An InputError naming r when there is no ring r.
   std::vector<std::int32_t> CatchmentRingsAround(std::size_t r) const;
 
   /// Advances to a step: values[g] is gauge g's value, NaN where it did not report. Throws
@@ -181,7 +184,8 @@ public:
   ArealStep Step(const std::vector<double>& values);
 
   /// The current step's clipped tiles in lon/lat, edges densified every maxStepMetres (projected)
-  /// so that they follow the planar tile edges when drawn in lon/lat.
+  /// so that they follow the planar tile edges when drawn in lon/lat. maxStepMetres: finite and
+  /// at least ArealAverageSettings::MinGeodesicStepMetres, else an InputError naming it.
   ClippedTilesLonLat CurrentClippedTiles(double maxStepMetres = 2000.0) const;
 
 private:

@@ -37,6 +37,7 @@
 // A Catchment is immutable after construction: concurrent clipping from several threads is safe
 // with one Workspace per thread.
 
+#include "errors.h" // InputError, which the functions below throw
 #include "geometry.h"
 #include "polygon_validation.h"
 

@@ -8,6 +8,7 @@
 // 177..181.6, has a 4.6 degree extent, not 358), and Inverse returns longitudes within 180 degrees
 // of the central meridian, so data that crossed the antimeridian comes back continuous.
 
+#include "errors.h" // InputError, which the functions below throw
 #include "geometry.h"
 
 #include <string>

@@ -13,10 +13,8 @@
 
 namespace tessera
 {
-namespace
-{
 
-void CheckOffsets(const std::vector<std::size_t>& ringOffsets, std::size_t vertexCount)
+void CheckRingOffsets(const std::vector<std::size_t>& ringOffsets, std::size_t vertexCount)
 {
   if (ringOffsets.size() < 2)
   {
@@ -41,6 +39,9 @@ void CheckOffsets(const std::vector<std::size_t>& ringOffsets, std::size_t verte
       ", expected the vertex count " + std::to_string(vertexCount));
   }
 }
+
+namespace
+{
 
 void CheckFinite(const std::vector<std::size_t>& ringOffsets, const std::vector<Point2>& vertices)
 {
@@ -622,7 +623,7 @@ CleanRings ValidateRings(const std::vector<std::size_t>& ringOffsets,
   const std::vector<Point2>& vertices,
   const std::vector<std::size_t>* segmentOf)
 {
-  CheckOffsets(ringOffsets, vertices.size());
+  CheckRingOffsets(ringOffsets, vertices.size());
   if (segmentOf && segmentOf->size() != vertices.size())
   {
     throw InputError("ValidateRings: " + std::to_string(segmentOf->size()) +

@@ -44,6 +44,11 @@ struct CleanRings
   std::vector<std::pair<std::size_t, Point2>> ContactsInsideSegments;
 };
 
+/// Throws InputError, naming the offset, unless ringOffsets has one entry per ring plus a final one
+/// equal to vertexCount, starting at 0 and non-decreasing: what every reader of flat rings needs
+/// before it reads a vertex (ValidateRings checks it first).
+void CheckRingOffsets(const std::vector<std::size_t>& ringOffsets, std::size_t vertexCount);
+
 /// Checks the rings and returns them without repeated consecutive vertices. ringOffsets has one
 /// entry per ring plus a final one equal to vertices.size(), starting at 0 and non-decreasing.
 /// Throws InputError naming the ring and vertex or segment indices (the caller's numbering) for:

@@ -1568,10 +1568,64 @@ TEST(ArealAverage, PaddingAndGeodesicStepOutOfRangeAreNamed)
       std::string::npos)
       << step << ": " << error(settings);
   }
+  // A catchment edge step of NaN, 0 or less turned densifying off (1% of a 20-degree box's area
+  // went); one of 1e-300 degrees was capped at a million pieces an edge without a word.
+  for (const double degrees : { std::nan(""), 0.0, -1.0, HUGE_VAL })
+  {
+    ArealAverageSettings settings;
+    settings.CatchmentEdgeDegrees = degrees;
+    EXPECT_NE(error(settings).find("CatchmentEdgeDegrees must be a finite angle above 0, not " +
+                tessera::NumberText(degrees)),
+      std::string::npos)
+      << degrees << ": " << error(settings);
+  }
+  ArealAverageSettings fine;
+  fine.CatchmentEdgeDegrees = 1e-300;
+  EXPECT_NE(error(fine).find("make far vertices, more than 20000000"), std::string::npos)
+    << error(fine);
   ArealAverageSettings edges;
   edges.Padding = 0.0;
   edges.GeodesicStepMetres = 1.0;
   EXPECT_EQ(error(edges), "");
+  // The display's step, likewise (it turned densifying off, or made a count no int holds).
+  ThiessenArealAverage average(gauges, catchment.Offsets, catchment.Ring);
+  average.Step({ 1.0, 2.0, 3.0, 4.0 });
+  for (const double step : { std::nan(""), 0.0, -5.0, 1e-300, HUGE_VAL })
+  {
+    const std::string message = ErrorOf([&] { average.CurrentClippedTiles(step); });
+    EXPECT_NE(message.find("CurrentClippedTiles' step must be a finite length of at least 1 m, "
+                           "not " +
+                tessera::NumberText(step)),
+      std::string::npos)
+      << step << ": " << message;
+  }
+  EXPECT_EQ(ErrorOf([&] { average.CurrentClippedTiles(1.0); }), "");
+}
+
+// Ring offsets that do not fit the vertices are named before a vertex is read: {0, 5} with four
+// vertices read a fifth past their end (an area of 7e10 m^2 for 1.2e10), {0, 3} and {1, 4} left
+// a vertex out without a word. Indices of no gauge or ring are InputErrors naming them.
+TEST(ArealAverage, CatchmentOffsetsAndIndicesOutOfRangeAreNamed)
+{
+  const Square catchment(0.0, 0.0, 1.0, 1.0);
+  const std::vector<Point2> gauges = { { 0.2, 0.2 }, { 0.8, 0.7 }, { 0.5, 0.9 } };
+  const auto errorOf = [&](const std::vector<std::size_t>& offsets)
+  { return ErrorOf([&] { ThiessenArealAverage average(gauges, offsets, catchment.Ring); }); };
+  EXPECT_EQ(errorOf({ 0, 5 }), "catchment: last ring offset is 5, expected the vertex count 4");
+  EXPECT_EQ(errorOf({ 0, 3 }), "catchment: last ring offset is 3, expected the vertex count 4");
+  EXPECT_EQ(errorOf({ 1, 4 }), "catchment: ring offset 0 is 1, expected 0");
+  EXPECT_EQ(errorOf({ 0, 100 }), "catchment: last ring offset is 100, expected the vertex count 4");
+  EXPECT_EQ(
+    errorOf({ 0, 3, 2, 4 }), "catchment: ring offset 2 (2) is smaller than the one before it");
+  EXPECT_EQ(errorOf({ 4 }), "catchment: ring offsets need at least 2 entries (one ring), got 1");
+  EXPECT_EQ(errorOf(catchment.Offsets), "");
+  const ThiessenArealAverage average(gauges, catchment.Offsets, catchment.Ring);
+  EXPECT_TRUE(average.GaugeInsideCatchment(2));
+  EXPECT_EQ(ErrorOf([&] { average.GaugeInsideCatchment(3); }),
+    "GaugeInsideCatchment: no gauge 3 (there are 3)");
+  EXPECT_TRUE(average.CatchmentRingsAround(0).empty());
+  EXPECT_EQ(ErrorOf([&] { average.CatchmentRingsAround(1); }),
+    "CatchmentRingsAround: no ring 1 (there are 1)");
 }
 
 // OGC-valid catchments whose rings touch at points: a lake touching the west boundary (a meridian)
