@@ -461,9 +461,6 @@ void ListNonEmptyFieldArraysFirst(vtkDataObject* data)
   }
 }
 
-namespace
-{
-/// vtkGDALVectorReader gives a polygon's rings as closed polylines (last point = first point).
 bool IsClosedLine(vtkPolyData* poly, vtkIdList* ids)
 {
   const vtkIdType n = ids->GetNumberOfIds();
@@ -476,6 +473,9 @@ bool IsClosedLine(vtkPolyData* poly, vtkIdList* ids)
   poly->GetPoint(ids->GetId(n - 1), last);
   return ids->GetId(0) == ids->GetId(n - 1) || (first[0] == last[0] && first[1] == last[1]);
 }
+
+namespace
+{
 
 /// Loose line segments (line cells, open polylines) of one vtkPolyData, by their ends, and their
 /// cells: the core joins them into rings (JoinSegmentsAtEqualEnds).

@@ -26,6 +26,7 @@ class vtkDataSet;
 class vtkInformationVector;
 class vtkDataObject;
 class vtkFieldData;
+class vtkIdList;
 class vtkPoints;
 class vtkPointSet;
 class vtkPolyData;
@@ -188,6 +189,10 @@ struct Rings
   /// The blocks' names in messages (BlockLabels), by flat index.
   std::map<std::int64_t, std::string> BlockNames;
 };
+
+/// Whether a line cell's point ids (ids) close a ring of 3 or more points: the last point is the
+/// first, by id or by x and y, as vtkGDALVectorReader gives a polygon's rings.
+bool IsClosedLine(vtkPolyData* poly, vtkIdList* ids);
 
 /// Every polygon, triangle and quad cell, and every closed polyline (last point = first, as
 /// vtkGDALVectorReader gives polygon rings), of a vtkPolyData or of every vtkPolyData block of a

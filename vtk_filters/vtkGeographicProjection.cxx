@@ -305,7 +305,7 @@ tessera::ProjectionParameters WithGridSet(vtkGeographicProjection* self,
 void TakeGridTerms(vtkGeographicProjection* self, tessera::ProjectionParameters& p)
 {
   p = WithGridSet(self, p);
-  if (!p.HasOriginLatitude && self->GetLatitudeOfOrigin() != 0.0)
+  if (self->WarnOfUnusedLatitudeOfOrigin() && !p.HasOriginLatitude) // (asked first: it keeps count)
   {
     // (a scripter who set it alone got northings millions of metres off without a word)
     vtkWarningWithObjectMacro(self,
@@ -868,6 +868,15 @@ int vtkGeographicProjection::ComputeInputUpdateExtent(vtkInformation*,
   // to all of them (RequestWholeInputs; ParaView under MPI asks each process for a piece).
   tessera_vtk::RequestWholeInputs(inputVector, 0, 0);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkGeographicProjection::WarnOfUnusedLatitudeOfOrigin()
+{
+  const bool unused = !this->UseLatitudeOfOrigin && this->LatitudeOfOrigin != 0.0;
+  const bool warn = unused && this->LatitudeOfOrigin != this->UnusedLatitudeWarnedOf;
+  this->UnusedLatitudeWarnedOf = unused ? this->LatitudeOfOrigin : 0.0;
+  return warn;
 }
 
 //------------------------------------------------------------------------------

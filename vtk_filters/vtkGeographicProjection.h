@@ -261,6 +261,13 @@ public:
   vtkGetCharFromStdStringMacro(ProjectionRecord);
   ///@}
 
+  /**
+   * Internal, for the update: whether to warn of a LatitudeOfOrigin other than 0 set while
+   * UseLatitudeOfOrigin is off. True once per such value, not at every update: in ParaView the
+   * value is hidden with the box off, and a user who unticked the box could not stop the warning.
+   */
+  bool WarnOfUnusedLatitudeOfOrigin();
+
 protected:
   vtkGeographicProjection();
   ~vtkGeographicProjection() override = default;
@@ -290,6 +297,8 @@ protected:
   std::string ProjectionRecord;
 
 private:
+  double UnusedLatitudeWarnedOf = 0.0; // (WarnOfUnusedLatitudeOfOrigin; 0: none)
+
   vtkGeographicProjection(const vtkGeographicProjection&) = delete;
   void operator=(const vtkGeographicProjection&) = delete;
 };

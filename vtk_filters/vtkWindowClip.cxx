@@ -268,12 +268,24 @@ void ClipBlock(vtkPolyData* tiles,
       progress(static_cast<double>(c) / std::max<vtkIdType>(cellCount, 1));
     }
     const int type = tiles->GetCellType(c);
-    if (type != VTK_POLYGON && type != VTK_TRIANGLE && type != VTK_QUAD)
+    const bool polygon = type == VTK_POLYGON || type == VTK_TRIANGLE || type == VTK_QUAD;
+    if (!polygon && type != VTK_POLY_LINE)
     {
       skipped->InsertNextValue(c);
       continue;
     }
     tiles->GetCellPoints(c, ids);
+    if (!polygon)
+    {
+      // A closed polyline is a polygon's ring as vtkGDALVectorReader gives it (a shapefile's
+      // tiles): its last point, the first again, is dropped. An open one is no tile.
+      if (!tessera_vtk::IsClosedLine(tiles, ids))
+      {
+        skipped->InsertNextValue(c);
+        continue;
+      }
+      ids->SetNumberOfIds(ids->GetNumberOfIds() - 1);
+    }
     if (ids->GetNumberOfIds() < 3)
     {
       // A polygon collapsed to 1 or 2 points (a tessellation's tile between points some
@@ -378,8 +390,8 @@ void ClipBlock(vtkPolyData* tiles,
   if (skipped->GetNumberOfValues() > 0)
   {
     warnings.push_back(std::to_string(skipped->GetNumberOfValues()) +
-      " cell(s) of input 0 are not polygons of 3 or more points, triangles or quads (the first is "
-      "cell " +
+      " cell(s) of input 0 are not polygons of 3 or more points, triangles, quads or closed "
+      "polylines (the first is cell " +
       std::to_string(skipped->GetValue(0)) +
       ") and were not clipped; their ids are in the field data array SkippedCellIds.");
   }
@@ -474,6 +486,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
     {
       // Block by block, each clipped alone (its CoveredFraction its share of the window); an
       // error names its block and leaves the whole output empty.
+      this->BlockWarnings = 0;
       auto* outBlocks = vtkCompositeDataSet::SafeDownCast(output);
       outBlocks->CopyStructure(blocks);
       outBlocks->GetFieldData()->PassData(blocks->GetFieldData());
@@ -504,6 +517,12 @@ int vtkWindowClip::RequestData(vtkInformation*,
           (done + cells) / count);
         done += cells;
         outBlocks->SetDataSet(block, clipped);
+      }
+      if (this->BlockWarnings > MaxBlockWarnings)
+      {
+        vtkWarningMacro(<< this->BlockWarnings - MaxBlockWarnings
+                        << " more warning(s) about blocks of input 0, like those above, are not "
+                           "shown");
       }
     }
     tessera_vtk::ListNonEmptyFieldArraysFirst(output);
@@ -548,7 +567,11 @@ void vtkWindowClip::ClipTilesOf(vtkPolyData* tiles,
   }
   for (const std::string& warning : warnings)
   {
-    vtkWarningMacro(<< block << warning);
+    if (this->BlockWarnings < MaxBlockWarnings || block.empty())
+    {
+      vtkWarningMacro(<< block << warning);
+    }
+    this->BlockWarnings += block.empty() ? 0 : 1;
   }
 }
 

@@ -3,7 +3,8 @@
  * @brief   clip convex tiles by a polygon window with holes (even-odd), with exact areas
  *
  * vtkWindowClip intersects every polygon of input 0 (convex tiles, such as the output of
- * vtkDirichletTessellation; a clockwise one is reversed first) with the region of input 1: the
+ * vtkDirichletTessellation, or closed polylines, as vtkGDALVectorReader gives a shapefile's
+ * polygons; a clockwise one is reversed first) with the region of input 1: the
  * polygons (and closed polylines, as vtkGDALVectorReader gives rings, and lines that join end to
  * end into closed rings, as a contour from vtkCutter or ParaView's Contour is given; where four or
  * six lines meet, as at a saddle, the rings touch there) of input 1 taken as rings under the
@@ -22,7 +23,8 @@
  * data set (a shapefile's polygons from vtkGDALVectorReader) are clipped block by block into a
  * composite of the same structure, each block with its own field data and summary arrays; a
  * message about a block's tiles names the block ("block 1 (composite index 2) of input 0: tile 0
- * is not convex"), and an error leaves the whole output empty.
+ * is not convex"), and an error leaves the whole output empty. Of the blocks' warnings, the first
+ * 5 are given, then one counting the rest (a layer of 10000 features gave 10000).
  *
  * The output holds each clipped tile as one or more polygons, its display pieces: simple,
  * anticlockwise, without holes, not overlapping one another, inside the window, together filling
@@ -40,7 +42,8 @@
  * An input cell-data array with one of these four names is passed under the first free name of
  * NAME_input, NAME_input_2, ..., with a warning naming it.
  * Tiles entirely outside the window give no polygon. Cells of input 0 that are not polygons,
- * triangles or quads (lines, vertices, strips), and polygons of fewer than 3 points, are not
+ * triangles, quads or closed polylines (open lines, vertices, strips), and polygons of fewer
+ * than 3 points, are not
  * clipped: a warning counts them and the output's field data array `SkippedCellIds` (vtkIdType)
  * lists them. Polygons that lie in the window but have no area to clip (collinear corners, a
  * sliver thinner than the clip's rounding, or a polygon some 10^14 times the window's size that
@@ -115,6 +118,10 @@ private:
     const std::string& block,
     double progressFrom,
     double progressTo);
+
+  /// Block warnings given in this RequestData: past MaxBlockWarnings they are counted, not given.
+  int BlockWarnings = 0;
+  static constexpr int MaxBlockWarnings = 5;
 
   vtkWindowClip(const vtkWindowClip&) = delete;
   void operator=(const vtkWindowClip&) = delete;

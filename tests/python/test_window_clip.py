@@ -677,6 +677,64 @@ def test_each_block_of_tiles_gives_its_share_of_the_window():
                     f"float tiles at {x}: {field_value(output, 'CoveredFraction')}")
 
 
+def test_a_shapefiles_polygons_read_by_gdal_are_clipped_as_tiles():
+    """vtkGDALVectorReader gives a GeoJSON's (or shapefile's) polygons as closed polylines, a block
+    each: they are tiles (16 unit squares clipped by a triangle of area 8 give 10 pieces, area 8,
+    as the same squares as polygons do), with their attributes; an open polyline is skipped and
+    listed. Of the blocks' warnings, 5 are given and the rest counted (one per block was given)."""
+    import json
+    import os
+    import tempfile
+
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkMultiBlockDataSet, vtkPolyData
+    from vtkmodules.vtkIOGDAL import vtkGDALVectorReader
+
+    squares = [[(i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1)] for i in range(4) for j in range(4)]
+    window = polygon([[(0.0, 0.0), (4.0, 0.0), (0.0, 4.0)]])
+    with tempfile.TemporaryDirectory() as out:
+        path = os.path.join(out, "grid.geojson")
+        with open(path, "w") as f:
+            json.dump({"type": "FeatureCollection", "features": [
+                {"type": "Feature", "properties": {"cell": k},
+                 "geometry": {"type": "Polygon", "coordinates": [[list(p) for p in ring + ring[:1]]]}}
+                for k, ring in enumerate(squares)]}, f)
+        reader = vtkGDALVectorReader()
+        reader.SetFileName(path)
+        reader.Update()
+        read = reader.GetOutput()
+        first = read.GetBlock(0)
+        assert_that(first.GetCellType(0) == 4, f"GDAL gives a polyline (4), not {first.GetCellType(0)}")
+        output, errors, warnings = clip_by(read, window)
+    assert_that(not errors and not warnings, f"{errors} {warnings}")
+    pieces = [output.GetBlock(k) for k in range(output.GetNumberOfBlocks())]
+    areas = [a for block in pieces for a in cell_values(block, "PieceArea")]
+    plain = clip(polygon([squares[0]]), [[(0.0, 0.0), (4.0, 0.0), (0.0, 4.0)]])
+    assert_that(len(areas) == 10 and math.isclose(math.fsum(areas), 8.0, rel_tol=1e-14),
+                f"{len(areas)} pieces, area {math.fsum(areas)}")
+    assert_close(cell_values(pieces[0], "ClippedArea")[0], cell_values(plain, "ClippedArea")[0], 1e-15, "square 0")
+    kept = sorted(int(block.GetCellData().GetArray("cell").GetValue(0)) for block in pieces if block.GetNumberOfCells())
+    assert_that(kept == [k for k, ring in enumerate(squares) if ring[0][0] + ring[0][1] < 4], f"{kept}")
+    # An open polyline in each of 8 blocks: skipped and listed, 5 warnings given, the rest counted.
+    blocks = vtkMultiBlockDataSet()
+    for k in range(8):
+        data = vtkPolyData()
+        points = vtkPoints()
+        for p in [(0.1, 0.1), (0.9, 0.1), (0.5, 0.8), (0.2, 0.5)]:
+            points.InsertNextPoint(p[0], p[1], 0.0)
+        lines = vtkCellArray()
+        lines.InsertNextCell(4, [0, 1, 2, 3])
+        data.SetPoints(points)
+        data.SetLines(lines)
+        blocks.SetBlock(k, data)
+    output, errors, warnings = clip_by(blocks, window)
+    skipped = output.GetBlock(7).GetFieldData().GetArray("SkippedCellIds")
+    assert_that(not errors and skipped.GetNumberOfValues() == 1 and output.GetBlock(7).GetNumberOfCells() == 0,
+                f"{errors}")
+    assert_that(len(warnings) == 6 and all("closed polylines" in w for w in warnings[:5])
+                and "3 more warning(s) about blocks of input 0" in warnings[5], f"{warnings}")
+
+
 def test_short_arrays_and_windows_beyond_the_doubles_are_named():
     """From an error audit: a tile cell-data array shorter than the tiles was read past its end (a
     crash for text, garbage values for numbers); a window of 1e200 gave WindowArea NaN and one of
@@ -741,4 +799,5 @@ if __name__ == "__main__":
          test_review_of_windows_of_other_types_global_ids_and_flat_tiles,
          test_the_field_data_says_how_much_of_the_window_the_tiles_cover,
          test_each_block_of_tiles_gives_its_share_of_the_window,
+         test_a_shapefiles_polygons_read_by_gdal_are_clipped_as_tiles,
          test_short_arrays_and_windows_beyond_the_doubles_are_named])
