@@ -45,7 +45,9 @@
  * - 1 (vtkPolyData): the ridge contours as polylines through pixel centres (a closed contour
  *   repeats its first point), cell data `ContourId` (int, = GroupId of its points, if any),
  *   `Closed` (unsigned char) and `Length` (double: the length of the pixel path, in input units,
- *   which exceeds a smooth curve's by a few percent).
+ *   steps of 1 and sqrt(2) pixels, which exceeds a smooth curve's where it runs slanted: by 8% on
+ *   a circle, 10% on an ellipse, 1% on an axis-aligned square; an open contour stops some basis
+ *   widths short of its points' ends, and came out 2-6% shorter than a line's or a sine's).
  * - 2 (vtkPolyData): the fitted curves, finely sampled polylines, cell data `GroupId` and
  *   `Closed`.
  * - 3 (vtkImageData): the field image, point data `Field` (double), `MinorRidge` and
