@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <map>
@@ -1016,7 +1017,7 @@ void CheckCatchmentLonLat(const std::vector<std::size_t>& offsets,
 {
   for (std::size_t r = 0; r + 1 < offsets.size(); ++r)
   {
-    const std::size_t begin = offsets[r], end = std::min(offsets[r + 1], lonlat.size());
+    const std::size_t begin = offsets[r], end = offsets[r + 1]; // (CheckRingOffsets first)
     for (std::size_t k = begin; k < end; ++k)
     {
       const Point2& p = lonlat[k];
@@ -1047,6 +1048,18 @@ Point2 DensifiedPoint(const Point2& a, const Point2& b, int i, int n)
                           : InterpolateLonLat(b, a, double(n - i) / n);
 }
 
+/// A count held in a double as a whole number, or to 3 figures beyond 1e15 ("8e+300").
+std::string CountText(double count)
+{
+  if (count < 1e15)
+  {
+    return std::to_string(static_cast<long long>(count));
+  }
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3g", count);
+  return text;
+}
+
 /// Per catchment segment (ring vertex k to the next), the pieces it is cut into at most
 /// edgeDegrees long. Throws InputError when they make more than MaxCatchmentVertices vertices in
 /// all: some 100 bytes each once projected and indexed, so such a catchment would take gigabytes
@@ -1056,24 +1069,23 @@ std::vector<int> DensifiedPieceCounts(const CleanRings& rings, double edgeDegree
 {
   constexpr std::size_t MaxCatchmentVertices = 20000000;
   std::vector<int> pieces(rings.Vertices.size());
-  std::size_t total = 0;
+  double total = 0.0; // the pieces wanted, before DensifiedPieceCount's cap of an edge
   for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
   {
     const std::size_t begin = rings.RingOffsets[r], end = rings.RingOffsets[r + 1];
     for (std::size_t k = begin; k < end; ++k)
     {
-      bool capped = false;
-      pieces[k] = DensifiedPieceCount(
-        rings.Vertices[k], rings.Vertices[k + 1 < end ? k + 1 : begin], edgeDegrees, &capped);
-      total += capped ? MaxCatchmentVertices + 1 : std::size_t(pieces[k]);
+      const Point2& a = rings.Vertices[k];
+      const Point2& b = rings.Vertices[k + 1 < end ? k + 1 : begin];
+      pieces[k] = DensifiedPieceCount(a, b, edgeDegrees);
+      total += WantedPieceCount(a, b, edgeDegrees);
     }
   }
-  if (total > MaxCatchmentVertices)
+  if (total > double(MaxCatchmentVertices))
   {
     throw InputError("the catchment's edges, cut into pieces of at most " +
       NumberText(edgeDegrees) + " degrees to follow their lon/lat lines once projected, make " +
-      (total > 2 * MaxCatchmentVertices ? std::string("far") : std::to_string(total)) +
-      " vertices, more than " + std::to_string(MaxCatchmentVertices) +
+      CountText(total) + " vertices, more than " + std::to_string(MaxCatchmentVertices) +
       " (some 100 bytes each): simplify the outline, or cut its edges more coarsely "
       "(ArealAverageSettings::CatchmentEdgeDegrees, in the core's C++ API)");
   }
@@ -1359,7 +1371,7 @@ bool ThiessenArealAverage::GaugeInsideCatchment(std::size_t g) const
 std::vector<std::int32_t> ThiessenArealAverage::CatchmentRingsAround(std::size_t r) const
 {
   const Catchment& region = *this->Impl->Region;
-  if (r + 1 >= region.RingOffsets().size())
+  if (r >= region.RingOffsets().size() - 1) // (r + 1 wrapped round at SIZE_MAX)
   {
     throw InputError("CatchmentRingsAround: no ring " + std::to_string(r) + " (there are " +
       std::to_string(region.RingOffsets().size() - 1) + ")");

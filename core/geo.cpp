@@ -3,6 +3,7 @@
 #include "errors.h"
 #include "lambert_azimuthal_equal_area.h"
 #include "mercator.h"
+#include "polygon_validation.h"
 
 #include <GeographicLib/AlbersEqualArea.hpp>
 #include <GeographicLib/AzimuthalEquidistant.hpp>
@@ -830,32 +831,31 @@ bool EdgeReadsBothWays(const Point2& a, const Point2& b)
   return written >= 180.0 && written <= 270.0;
 }
 
+double WantedPieceCount(const Point2& a, const Point2& b, double maxStep, bool asWritten)
+{
+  if (!(maxStep > 0.0) || !std::isfinite(maxStep))
+  {
+    return 1.0;
+  }
+  const double dx = asWritten ? b.x - a.x : LongitudeDifference(a.x, b.x);
+  const double dy = b.y - a.y;
+  const double pieces = std::ceil(std::hypot(dx, dy) / maxStep);
+  // (a NaN end, whose count cast to int was -2147483648, or a zero-length edge: 1)
+  return pieces >= 1.0 ? pieces : 1.0;
+}
+
 int DensifiedPieceCount(const Point2& a,
   const Point2& b,
   double maxStep,
   bool* capped,
   bool asWritten)
 {
-  if (capped)
-  {
-    *capped = false;
-  }
-  if (!(maxStep > 0.0) || !std::isfinite(maxStep))
-  {
-    return 1;
-  }
-  const double dx = asWritten ? b.x - a.x : LongitudeDifference(a.x, b.x);
-  const double dy = b.y - a.y;
-  const double pieces = std::ceil(std::hypot(dx, dy) / maxStep);
+  const double pieces = WantedPieceCount(a, b, maxStep, asWritten);
   if (capped)
   {
     *capped = pieces > double(MaxDensifiedPieces);
   }
-  if (!(pieces >= 1.0))
-  {
-    return 1; // a NaN end (whose count, cast to int, was -2147483648), or a zero-length edge
-  }
-  return static_cast<int>(std::min(std::max(pieces, 1.0), double(MaxDensifiedPieces)));
+  return static_cast<int>(std::min(pieces, double(MaxDensifiedPieces)));
 }
 
 Point2 InterpolateLonLat(const Point2& a, const Point2& b, double t)
@@ -892,9 +892,10 @@ void CheckRingAvoidsPoles(const std::vector<Point2>& lonlat,
 std::vector<Point2> RingsInOneTurn(const std::vector<std::size_t>& offsets,
   const std::vector<Point2>& lonlat)
 {
+  CheckRingOffsets(offsets, lonlat.size());
   for (std::size_t r = 0; r + 1 < offsets.size(); ++r)
   {
-    CheckRingAvoidsPoles(lonlat, offsets[r], std::min(offsets[r + 1], lonlat.size()), r);
+    CheckRingAvoidsPoles(lonlat, offsets[r], offsets[r + 1], r);
   }
   std::vector<Point2> turned = lonlat;
   const bool allFinite = std::all_of(lonlat.begin(),

@@ -203,6 +203,9 @@ int DensifiedPieceCount(const Point2& a,
   double maxStep,
   bool* capped = nullptr,
   bool asWritten = false);
+/// DensifiedPieceCount's count before the cap, as a double (at least 1): for a caller that limits
+/// the pieces of many edges in all, and names how many it would take.
+double WantedPieceCount(const Point2& a, const Point2& b, double maxStep, bool asWritten = false);
 /// Whether the edge from a to b (lon/lat) can be read two ways round the globe: its longitudes
 /// differ by 180 to 270 degrees as written, so straight in lon/lat (RFC 7946) it spans that much,
 /// and the shorter way round (DensifiedPieceCount, InterpolateLonLat) 90 to 180 degrees the other
@@ -223,7 +226,8 @@ Point2 InterpolateLonLat(const Point2& a, const Point2& b, double t);
 /// in that turn is kept bit for bit, and equal vertices stay equal (rings sharing a boundary keep
 /// sharing it). Unchanged when the vertices leave no gap wider than 180 degrees. Throws InputError
 /// naming a ring whose edges, read so, turn through 360 degrees of longitude: it goes round a
-/// pole, and no conic projection holds a catchment containing one.
+/// pole, and no conic projection holds a catchment containing one; and naming an offset that does
+/// not fit the vertices (CheckRingOffsets, polygon_validation.h).
 std::vector<Point2> RingsInOneTurn(const std::vector<std::size_t>& offsets,
   const std::vector<Point2>& lonlat);
 

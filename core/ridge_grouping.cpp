@@ -386,13 +386,20 @@ void NameUnorderedPoints(const std::vector<std::size_t>& tied,
   }
 }
 
+/// Below this many basis widths across, the bulk of the points is too small in the image for its
+/// curves (NameStretchingPoints): a circle of 500 points 4 widths across was grouped, pulled by
+/// the stray point, one 2 widths across was not; at 8 widths it came out whole.
+constexpr double SqueezedBulkWidths = 6.0;
+
 /// A warning naming the points that stretch the image far beyond the bulk of the points. The
 /// image spans the points' bounding box at ImageSize pixels (at most 1024 automatic), so one
 /// stray point 200 radii from a noisy circle of 500 shrank the circle to 10 pixels, 2 basis
 /// widths across, and left every point ungrouped, with no word of the stray point. The bulk is
-/// the box of the points without the 1% most extreme on each side (at least 1, from 20 points);
-/// named when it spans less than a quarter of the image's larger side, for each point further
-/// outside it than its own larger side.
+/// the box of the points without the most extreme 1% on each side of each axis (at least 1 point,
+/// from 20 points on); named when it spans less than SqueezedBulkWidths basis widths and less than
+/// a quarter of the image's larger side (the stray points are what squeezes it), for each point
+/// further outside it than its own size and an eighth of the image's. More stray points than that
+/// 1% make the bulk's box themselves, and are not named.
 ///
 ///    +--------------------------------------+   the image: the points' bounding box
 ///    | +--+                                 |
@@ -424,7 +431,9 @@ void NameStretchingPoints(const std::vector<Point2>& points,
   const auto [yLow, yHigh] = bulkRange(&Point2::y);
   const double bulk = std::max(xHigh - xLow, yHigh - yLow);
   const double whole = BoundsOf(points.data(), n).LargerSide();
-  if (!(4.0 * bulk < whole))
+  const double pixels = bulk / grid.Spacing;
+  // (a bulk of one place, copies of a point, is no curve: the identical points' own warnings)
+  if (!(4.0 * bulk < whole) || !(pixels < SqueezedBulkWidths * width) || bulk == 0.0)
   {
     return;
   }
@@ -442,9 +451,9 @@ void NameStretchingPoints(const std::vector<Point2>& points,
   {
     return;
   }
-  const double pixels = bulk / grid.Spacing;
   result.Warnings.push_back(std::to_string(stretching.size()) +
-    " point(s) lie far outside the box of the other points (98% of them, " + NumberText(bulk) +
+    " point(s) lie far outside the box of the other points (without the " +
+    std::to_string(trimmed) + " most extreme on each side: " + NumberText(bulk) +
     " across in the points' units, against the image's " + NumberText(whole) +
     "): the image spans them all, so the other points' box takes " +
     NumberText(std::round(10.0 * pixels) / 10.0) + " pixels across (" +

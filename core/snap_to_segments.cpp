@@ -1,5 +1,7 @@
 #include "snap_to_segments.h"
 
+#include "polygon_validation.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -168,6 +170,7 @@ SnappedRings SnapVerticesOntoSegments(const std::vector<std::size_t>& offsets,
   const std::vector<Point2>& vertices,
   double tolerance)
 {
+  CheckRingOffsets(offsets, vertices.size());
   // The segments of rings near others, and the box of those rings.
   const std::vector<Box2> boxes = RingBoxes(offsets, vertices);
   const std::vector<char> nearOthers = RingsNearOthers(boxes, tolerance);

@@ -41,7 +41,8 @@ struct SnappedRings
 /// `tolerance` of another ring's segment (strictly between its ends, and farther than the
 /// tolerance from both) made a vertex of that segment, in order along it, with its own
 /// coordinates. Non-finite vertices and segments of zero length are passed over (ValidateRings
-/// names them). Near-linear in the vertices: segments are indexed on a grid.
+/// names them). Near-linear in the vertices: segments are indexed on a grid. Throws InputError
+/// naming an offset that does not fit the vertices (CheckRingOffsets, polygon_validation.h).
 SnappedRings SnapVerticesOntoSegments(const std::vector<std::size_t>& offsets,
   const std::vector<Point2>& vertices,
   double tolerance);

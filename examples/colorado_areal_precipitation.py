@@ -2381,7 +2381,7 @@ def main(argv=None):
                              f"optional name; {csv_input.SEPARATORS_TEXT}; STATION, LATITUDE, LONGITUDE (as "
                              "NOAA's Climate Data Online writes them) and other names in ALIAS_OF of csv_input.py "
                              "are read too, and site_no or id as station_id in a file without station_id or "
-                             "station. It may be the observations file, with the station's place on each row "
+                             "station (site_no only in --observations). It may be the observations file, with the station's place on each row "
                              "(as NOAA's CSV has it); default: the observations file where it has such columns, "
                              "else examples/data/colorado_stations.csv. Or a GIS file of points (GeoJSON, "
                              "shapefile, KML, GeoPackage, or a zip file holding one), an id attribute on each "

@@ -105,7 +105,7 @@ def rows(path, required, what, optional=(), header=None, delimiter_columns=None,
     try:
         renamed = []
         columns = named_columns([header_name(name) for name in reader.fieldnames or []],
-                                (*required, *optional), f"{path}:{max(reader.reader.line_num, 1)}", renamed)
+                                (*required, *optional), f"{path}:{max(reader.reader.line_num, 1)}", renamed, what)
         if renamed:
             print(f"{path}: reads column {', '.join(f'{a!r} as {b!r}' for a, b in renamed)}", file=sys.stderr)
         check_columns(path, what, required, columns)
@@ -140,16 +140,16 @@ def check_columns(path, what, required, columns):
     as named_columns gives them) lack one of the required names."""
     absent = [name for name in required if name not in columns]
     if absent:
-        others = "; ".join(f"{name} may be named {', '.join(other_names(name))}"
-                           for name in absent if other_names(name))
+        others = "; ".join(f"{name} may be named {', '.join(other_names(name, what))}"
+                           for name in absent if other_names(name, what))
         fail(f"{path}: the {what} file has no column {', '.join(repr(n) for n in absent)} "
              f"(it needs {', '.join(required)}; its header: {', '.join(columns) or 'none'}"
              f"{'; ' + others if others else ''})")
 
 
-def other_names(name):
-    """The other names a column is read by (ALIAS_OF, then FALLBACKS_OF), as a list."""
-    return [other for other, wanted in ALIAS_OF.items() if wanted == name] + list(FALLBACKS_OF.get(name, ()))
+def other_names(name, what=None):
+    """The other names a column is read by in a file of what (ALIAS_OF, then its fallbacks)."""
+    return [other for other, wanted in ALIAS_OF.items() if wanted == name] + fallbacks(name, what)
 
 
 LINE = re.compile(r"[^\r\n]*(?:\r\n|\r|\n)|[^\r\n]+$")
@@ -317,15 +317,24 @@ def decimal_point_text(text, row):
 ALIAS_OF = {"station": "station_id", "latitude": "lat", "longitude": "lon", "long": "lon", "lng": "lon",
             "prcp": "precip", "precipitation": "precip"}
 # Names read as a column only where the file has neither its name nor one of ALIAS_OF, the first
-# of them it has: USGS's site_no, and a plain id (a file of id, lon, lat, as a GIS file's gauges
-# are read by the same names). A file with STATION and an ID of its rows reads STATION.
-FALLBACKS_OF = {"station_id": ("site_no", "id")}
+# of them it has, each with the kind of file it is read in (None: any): USGS's site_no, and in a
+# stations file a plain id (id, lon, lat, as a GIS file's gauges are read by the same names). An
+# id in a file of observations is as likely the number of its row, and read so it matched a
+# stations file's row numbers and gave wrong means without a word. A file with STATION and an ID
+# of its rows reads STATION.
+FALLBACKS_OF = {"station_id": (("site_no", None), ("id", "stations"))}
 
 
-def other_name_of(column):
-    """The column's name (any case) that it stands for (ALIAS_OF or FALLBACKS_OF), else None."""
+def fallbacks(name, what=None):
+    """The names that column name may have instead in a file of what ("stations"), in order."""
+    return [other for other, kind in FALLBACKS_OF.get(name, ()) if kind in (None, what)]
+
+
+def other_name_of(column, what=None):
+    """The column's name (any case) that it stands for in a file of what (ALIAS_OF or
+    FALLBACKS_OF), else None."""
     name = column.lower()
-    return ALIAS_OF.get(name) or next((wanted for wanted, names in FALLBACKS_OF.items() if name in names), None)
+    return ALIAS_OF.get(name) or next((wanted for wanted in FALLBACKS_OF if name in fallbacks(wanted, what)), None)
 
 
 def header_name(field):
@@ -338,17 +347,18 @@ def header_name(field):
     return name
 
 
-def header_names(fields):
+def header_names(fields, what=None):
     """A header's names (its fields), stripped (header_name) and in lower case, with the names they
-    stand for (ALIAS_OF): {"station", "station_id", "lat", ...} for STATION, LAT."""
+    stand for in a file of what (other_name_of): {"station", "station_id", "lat", ...} for STATION,
+    LAT."""
     names = {header_name(field).lower() for field in fields}
-    return names | {other_name_of(name) for name in names if other_name_of(name)}
+    return names | {other_name_of(name, what) for name in names if other_name_of(name, what)}
 
 
-def named_columns(columns, names, where, renamed=None):
+def named_columns(columns, names, where, renamed=None, what=None):
     """The header's columns with each of names in its own spelling where the header has it in
-    another case, or has instead one other name of it (ALIAS_OF; else the first of FALLBACKS_OF it
-    has), given in renamed (a list of (the header's name, the name read)); ends the script, naming
+    another case, or has instead one other name of it (ALIAS_OF; else the first of its fallbacks in
+    a file of what it has), given in renamed (a list of (the header's name, the name read)); ends the script, naming
     where (file:line of the header), when one of names appears twice (in any case, or as two other
     names): which of them holds the values would be a guess (a reader of a dict keeps the last)."""
     columns = list(columns)
@@ -357,7 +367,7 @@ def named_columns(columns, names, where, renamed=None):
         other = [] if same else [k for k, column in enumerate(columns) if ALIAS_OF.get(column.lower()) == name]
         if not same and not other:
             other = next(([k for k, column in enumerate(columns) if column.lower() == fallback]
-                          for fallback in FALLBACKS_OF.get(name, ()) if fallback in map(str.lower, columns)), [])
+                          for fallback in fallbacks(name, what) if fallback in map(str.lower, columns)), [])
         if len(same) > 1:
             fail(f"{where}: column {name!r} appears {len(same)} times (columns "
                  f"{', '.join(str(k + 1) for k in same)}): keep one")
@@ -475,7 +485,7 @@ def header_columns(path, what, wanted):
     for a header that is not well-formed CSV (rows() names it)."""
     header = next(text_lines(decoded(path, what, head=True).lstrip()), "").rstrip("\r\n")  # (\r alone too)
     try:
-        return header_names(next(csv.reader([header], delimiter=header_delimiter(header, wanted)), []))
+        return header_names(next(csv.reader([header], delimiter=header_delimiter(header, wanted)), []), what)
     except csv.Error:
         return set()
 

@@ -300,12 +300,35 @@ tessera::ProjectionParameters WithGridSet(vtkGeographicProjection* self,
   return p;
 }
 
+} // namespace
+
+/// The filter's state that its update keeps (the friend of vtkGeographicProjection).
+class vtkGeographicProjectionInternals
+{
+public:
+  /// Whether to warn of a LatitudeOfOrigin other than 0 set while UseLatitudeOfOrigin is off:
+  /// once per value (NaN included, which equals nothing), and again after the box was on.
+  static bool WarnOfUnusedLatitudeOfOrigin(vtkGeographicProjection* self)
+  {
+    const double latitude = self->LatitudeOfOrigin;
+    const bool unused = !self->UseLatitudeOfOrigin && latitude != 0.0;
+    const double last = self->UnusedLatitudeWarnedOf;
+    const bool same = latitude == last || (std::isnan(latitude) && std::isnan(last));
+    self->UnusedLatitudeWarnedOf = unused ? latitude : 0.0;
+    return unused && !same;
+  }
+};
+
+namespace
+{
+
 /// Lays the grid set on the filter on p's plane (WithGridSet), warning of a LatitudeOfOrigin set
 /// but not used.
 void TakeGridTerms(vtkGeographicProjection* self, tessera::ProjectionParameters& p)
 {
   p = WithGridSet(self, p);
-  if (self->WarnOfUnusedLatitudeOfOrigin() && !p.HasOriginLatitude) // (asked first: it keeps count)
+  if (vtkGeographicProjectionInternals::WarnOfUnusedLatitudeOfOrigin(self) &&
+    !p.HasOriginLatitude) // (asked first: it keeps count)
   {
     // (a scripter who set it alone got northings millions of metres off without a word)
     vtkWarningWithObjectMacro(self,
@@ -868,15 +891,6 @@ int vtkGeographicProjection::ComputeInputUpdateExtent(vtkInformation*,
   // to all of them (RequestWholeInputs; ParaView under MPI asks each process for a piece).
   tessera_vtk::RequestWholeInputs(inputVector, 0, 0);
   return 1;
-}
-
-//------------------------------------------------------------------------------
-bool vtkGeographicProjection::WarnOfUnusedLatitudeOfOrigin()
-{
-  const bool unused = !this->UseLatitudeOfOrigin && this->LatitudeOfOrigin != 0.0;
-  const bool warn = unused && this->LatitudeOfOrigin != this->UnusedLatitudeWarnedOf;
-  this->UnusedLatitudeWarnedOf = unused ? this->LatitudeOfOrigin : 0.0;
-  return warn;
 }
 
 //------------------------------------------------------------------------------

@@ -261,13 +261,6 @@ public:
   vtkGetCharFromStdStringMacro(ProjectionRecord);
   ///@}
 
-  /**
-   * Internal, for the update: whether to warn of a LatitudeOfOrigin other than 0 set while
-   * UseLatitudeOfOrigin is off. True once per such value, not at every update: in ParaView the
-   * value is hidden with the box off, and a user who unticked the box could not stop the warning.
-   */
-  bool WarnOfUnusedLatitudeOfOrigin();
-
 protected:
   vtkGeographicProjection();
   ~vtkGeographicProjection() override = default;
@@ -297,7 +290,11 @@ protected:
   std::string ProjectionRecord;
 
 private:
-  double UnusedLatitudeWarnedOf = 0.0; // (WarnOfUnusedLatitudeOfOrigin; 0: none)
+  friend class vtkGeographicProjectionInternals;
+  // The LatitudeOfOrigin last warned of as unused (UseLatitudeOfOrigin off), 0 for none: the
+  // warning comes once per value, not at every update (in ParaView the value is hidden with the
+  // box off, and a user who unticked the box could not stop it).
+  double UnusedLatitudeWarnedOf = 0.0;
 
   vtkGeographicProjection(const vtkGeographicProjection&) = delete;
   void operator=(const vtkGeographicProjection&) = delete;

@@ -68,10 +68,11 @@
  * from every point (the field's ridge across empty space, which can join points of curves far
  * apart into one group) are named with the stretch, and so are contours that no point is grouped
  * by (they are in output 1 with no group and no curve). The image spans every point, so a few
- * stray points far from the rest leave the rest few pixels: points further outside the box of 98%
- * of the points than its size, where that box spans under a quarter of the image, are named with
- * their places (one point 200 radii from a circle of 500 left the circle 2 basis widths across,
- * and nothing grouped).
+ * stray points far from the rest leave the rest few pixels: where the box of the points without
+ * the most extreme 1% on each side spans under 6 basis widths and under a quarter of the image,
+ * the points further outside it than its size (and an eighth of the image) are named with their
+ * places (one point 200 radii from a circle of 500 left the circle 2 basis widths across, and
+ * nothing grouped).
  */
 
 #ifndef vtkRidgeGrouping_h

@@ -25,6 +25,7 @@
 #include "display_pieces.h"
 #include "errors.h"
 #include "geo.h"
+#include "nested_rings.h"
 #include "polygon_area.h"
 #include "window.h"
 
@@ -204,6 +205,27 @@ std::string PointDataWarning(vtkPolyData* tiles)
     "passed)";
 }
 
+/// Throws InputError naming the cells where a tile given as a closed polyline lies inside another:
+/// the GDAL reader gives a polygon's outline and each of its holes as a closed polyline of their
+/// own, and the hole, clipped as a tile, counted twice (a 4 x 4 square with a 2 x 2 hole gave
+/// clipped areas 16 and 4, with no word).
+void ThrowForHolesAmong(const tessera::ClippedRings& lineTiles, const std::vector<vtkIdType>& cells)
+{
+  if (cells.size() < 2)
+  {
+    return;
+  }
+  const auto nested = tessera::FindRingInsideAnother(lineTiles.RingOffsets, lineTiles.Vertices);
+  if (nested)
+  {
+    throw tessera::InputError("cell " + std::to_string(cells[nested->second]) +
+      " of input 0, a closed polyline, lies inside cell " + std::to_string(cells[nested->first]) +
+      ", another: a polygon with a hole, as the GDAL reader gives one (a cell a ring), is no "
+      "convex tile, and its hole would be clipped as a tile of its own; split such polygons "
+      "into convex parts without holes first");
+  }
+}
+
 /// Clips the tiles (one vtkPolyData: the input, or a block of it) by the window (catchment, its
 /// coordinates scaled by 2^exponent) into output, with the tiles' field data and the clip's own.
 /// Throws tessera::InputError for bad tiles; appends its warnings; progress(fraction done).
@@ -249,7 +271,9 @@ void ClipBlock(vtkPolyData* tiles,
   tessera::Catchment::Workspace work;
   std::vector<tessera::Point2> tile;
   vtkNew<vtkIdList> ids;
-  tessera::ClippedRings rings;    // reused: ClipInto appends to it
+  tessera::ClippedRings rings;     // reused: ClipInto appends to it
+  tessera::ClippedRings lineTiles; // the tiles given as closed polylines, and their cells
+  std::vector<vtkIdType> lineTileCells;
   vtkNew<vtkIdTypeArray> skipped; // cells that are not polygons: reported, not clipped
   skipped->SetName("SkippedCellIds");
   vtkNew<vtkIdTypeArray> empty; // polygons in the window without area to clip: reported
@@ -299,6 +323,12 @@ void ClipBlock(vtkPolyData* tiles,
       double p[3];
       tiles->GetPoint(ids->GetId(k), p);
       tile[k] = { std::ldexp(p[0], exponent), std::ldexp(p[1], exponent) };
+    }
+    if (!polygon)
+    {
+      lineTiles.Vertices.insert(lineTiles.Vertices.end(), tile.begin(), tile.end());
+      lineTiles.RingOffsets.push_back(lineTiles.Vertices.size());
+      lineTileCells.push_back(c);
     }
     const double ownArea = tessera_vtk::OrientAnticlockwise(tile);
     const bool finiteCorners = std::all_of(tile.begin(),
@@ -354,6 +384,7 @@ void ClipBlock(vtkPolyData* tiles,
         tessera::CompensatedPolygonArea(&pieces.Vertices[begin], end - begin), -2 * exponent));
     }
   }
+  ThrowForHolesAmong(lineTiles, lineTileCells);
   output->SetPoints(points);
   output->SetPolys(polys);
   outCD->SetActiveAttribute(-1, vtkDataSetAttributes::GLOBALIDS); // (see CopyGlobalIdsOn)
@@ -521,8 +552,8 @@ int vtkWindowClip::RequestData(vtkInformation*,
       if (this->BlockWarnings > MaxBlockWarnings)
       {
         vtkWarningMacro(<< this->BlockWarnings - MaxBlockWarnings
-                        << " more warning(s) about blocks of input 0, like those above, are not "
-                           "shown");
+                        << " more warning(s) about blocks of input 0 are not shown (the first "
+                        << MaxBlockWarnings << " are)");
       }
     }
     tessera_vtk::ListNonEmptyFieldArraysFirst(output);

@@ -4,7 +4,9 @@
  *
  * vtkWindowClip intersects every polygon of input 0 (convex tiles, such as the output of
  * vtkDirichletTessellation, or closed polylines, as vtkGDALVectorReader gives a shapefile's
- * polygons; a clockwise one is reversed first) with the region of input 1: the
+ * polygons; a clockwise one is reversed first; a closed polyline inside another of the same
+ * block, which is how that reader gives a polygon's hole, is an error naming both cells, as the
+ * hole would be clipped as a tile) with the region of input 1: the
  * polygons (and closed polylines, as vtkGDALVectorReader gives rings, and lines that join end to
  * end into closed rings, as a contour from vtkCutter or ParaView's Contour is given; where four or
  * six lines meet, as at a saddle, the rings touch there) of input 1 taken as rings under the

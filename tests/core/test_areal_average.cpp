@@ -3,6 +3,7 @@
 #include "areal_average.h"
 #include "dirichlet_tessellation.h"
 #include "errors.h"
+#include "snap_to_segments.h"
 #include "test_support.h"
 #include "tiles.h"
 
@@ -1581,7 +1582,9 @@ TEST(ArealAverage, PaddingAndGeodesicStepOutOfRangeAreNamed)
   }
   ArealAverageSettings fine;
   fine.CatchmentEdgeDegrees = 1e-300;
-  EXPECT_NE(error(fine).find("make far vertices, more than 20000000"), std::string::npos)
+  // The count is the pieces wanted, not those of edges capped at a million each: the square's
+  // 8 degrees of boundary in pieces of 1e-300 degrees.
+  EXPECT_NE(error(fine).find("make 8e+300 vertices, more than 20000000"), std::string::npos)
     << error(fine);
   ArealAverageSettings edges;
   edges.Padding = 0.0;
@@ -1624,8 +1627,22 @@ TEST(ArealAverage, CatchmentOffsetsAndIndicesOutOfRangeAreNamed)
   EXPECT_EQ(ErrorOf([&] { average.GaugeInsideCatchment(3); }),
     "GaugeInsideCatchment: no gauge 3 (there are 3)");
   EXPECT_TRUE(average.CatchmentRingsAround(0).empty());
-  EXPECT_EQ(ErrorOf([&] { average.CatchmentRingsAround(1); }),
-    "CatchmentRingsAround: no ring 1 (there are 1)");
+  for (const std::size_t r : { std::size_t(1), SIZE_MAX })
+  {
+    EXPECT_EQ(ErrorOf([&] { average.CatchmentRingsAround(r); }),
+      "CatchmentRingsAround: no ring " + std::to_string(r) + " (there are 1)");
+  }
+  // The lower-level readers of flat rings check them too.
+  EXPECT_EQ(ErrorOf(
+              [&] {
+                tessera::RingsInOneTurn({ 0, 3 }, catchment.Ring);
+              }),
+    "last ring offset is 3, expected the vertex count 4");
+  EXPECT_EQ(ErrorOf(
+              [&] {
+                tessera::SnapVerticesOntoSegments({ 0, 2, 1, 4 }, catchment.Ring, 0.1);
+              }),
+    "ring offset 2 (1) is smaller than the one before it");
 }
 
 // OGC-valid catchments whose rings touch at points: a lake touching the west boundary (a meridian)

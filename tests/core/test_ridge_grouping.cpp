@@ -609,6 +609,21 @@ TEST(RidgeGrouping, IdenticalPointsGiveOneGroupAndNoCurve)
 
 namespace
 {
+// count points at uniformly random angles on a circle about the origin, with Gaussian noise.
+std::vector<Point2> NoisyCircle(std::size_t count, double radius, double sigma, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::normal_distribution<double> noise(0.0, sigma);
+  std::uniform_real_distribution<double> angle(0.0, 2 * Pi);
+  std::vector<Point2> points(count);
+  for (Point2& p : points)
+  {
+    const double t = angle(random);
+    p = { radius * std::cos(t) + noise(random), radius * std::sin(t) + noise(random) };
+  }
+  return points;
+}
+
 // The warnings of result that contain text.
 std::vector<std::string> WarningsWith(const RidgeGroupingResult& result, const std::string& text)
 {
@@ -758,15 +773,7 @@ TEST(RidgeGrouping, ContoursEndingNearEachOtherAreNamedAsPiecesOfOneCurve)
   }
   EXPECT_GT(broken, 0) << "no seed broke the clean circle: the case tests nothing";
 
-  std::mt19937 random(7);
-  std::normal_distribution<double> noise(0.0, 0.5);
-  std::uniform_real_distribution<double> angle(0.0, 2 * Pi);
-  std::vector<Point2> noisy(1000);
-  for (Point2& p : noisy)
-  {
-    const double t = angle(random);
-    p = { 50 * std::cos(t) + noise(random), 50 * std::sin(t) + noise(random) };
-  }
+  const std::vector<Point2> noisy = NoisyCircle(1000, 50.0, 0.5, 7);
   const RidgeGroupingResult closed = RidgeGrouping().Run(noisy);
   ASSERT_EQ(closed.Contours.Count(), 1);
   EXPECT_TRUE(closed.ContourClosed[0]);
@@ -1260,19 +1267,24 @@ TEST(RidgeGrouping, AStrayPointThatStretchesTheImageIsNamed)
 {
   // A noisy circle of radius 100 and one point 200 radii away: the automatic image (at most 1024
   // pixels) spans both, the circle takes 10 pixels, and nothing is grouped. The stray point is
-  // named with its place, and the circle's box is given in basis widths; without it, or with the
-  // circle's points split into two clusters far apart (each half of them), nothing is named.
-  std::mt19937 random(1);
-  std::normal_distribution<double> noise(0.0, 1.0);
-  std::uniform_real_distribution<double> angle(0.0, 2 * Pi);
-  std::vector<Point2> circle(500);
-  for (Point2& p : circle)
-  {
-    const double t = angle(random);
-    p = { 100 * std::cos(t) + noise(random), 100 * std::sin(t) + noise(random) };
-  }
+  // named with its place, and the circle's box is given in basis widths; without it, with it 10
+  // or 50 radii away (the circle 27 and 8 widths across, grouped whole), with the circle's points
+  // split into two clusters far apart (each half of them), or with the other points at one place,
+  // nothing is named.
+  const std::vector<Point2> circle = NoisyCircle(500, 100.0, 1.0, 1);
   const std::string stretching = "lie far outside the box of the other points";
   EXPECT_TRUE(WarningsWith(RidgeGrouping().Run(circle), stretching).empty());
+  for (const double x : { 1000.0, 5000.0 })
+  {
+    std::vector<Point2> near = circle;
+    near.push_back({ x, 0.0 });
+    const RidgeGroupingResult grouped = RidgeGrouping().Run(near);
+    EXPECT_TRUE(WarningsWith(grouped, stretching).empty()) << x;
+    EXPECT_EQ(std::count(grouped.GroupId.begin(), grouped.GroupId.end() - 1, 0), 500) << x;
+  }
+  std::vector<Point2> oneOff(199, Point2{ 3.0, 4.0 });
+  oneOff.push_back({ 5000.0, 0.0 });
+  EXPECT_TRUE(WarningsWith(RidgeGrouping().Run(oneOff), stretching).empty());
   std::vector<Point2> stray = circle;
   stray.push_back({ 20000.0, 0.0 });
   const RidgeGroupingResult result = RidgeGrouping().Run(stray);
@@ -1280,6 +1292,8 @@ TEST(RidgeGrouping, AStrayPointThatStretchesTheImageIsNamed)
   ASSERT_EQ(named.size(), 1u);
   EXPECT_EQ(named[0].rfind("1 point(s)", 0), 0u) << named[0];
   EXPECT_NE(named[0].find("point(s) 500 (20000, 0)"), std::string::npos) << named[0];
+  EXPECT_NE(named[0].find("(without the 5 most extreme on each side: "), std::string::npos)
+    << named[0];
   // The circle's box (some 200 units) over the pixel size, in pixels and in basis widths.
   const double pixels = 200.0 / result.PixelSize;
   EXPECT_NEAR(pixels, 10.0, 0.5);

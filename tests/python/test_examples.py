@@ -2602,9 +2602,10 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
 
 def test_a_plain_id_or_site_no_column_is_the_station_id_where_no_station_column_is():
     # A CSV of gauges (id, lon, lat) or observations (site_no, date, precip) names its stations by
-    # the names a GIS file's gauges are read by: the first of site_no and id it has, said, where
-    # it has no station_id or station column; the same means as with station_id. A file with
-    # station beside a row id reads station; two columns of one name in two cases are refused.
+    # the names a GIS file's gauges are read by: the first of site_no and (in a stations file) id
+    # it has, said, where it has no station_id or station column; the same means as with
+    # station_id. A file with station beside a row id reads station; two columns of one name in
+    # two cases are refused.
     import itertools
 
     with tempfile.TemporaryDirectory() as out:
@@ -2636,6 +2637,14 @@ def test_a_plain_id_or_site_no_column_is_the_station_id_where_no_station_column_
         _, stderr = run_colorado(os.path.join(out, "twice"), stations=twice, observations=plain, catchment=catchment,
                                  plots=False, status=1, what="id twice")
         assert_that(f"{twice}:1: columns 'id', 'ID' could each be 'station_id'" in stderr, f"{stderr}")
+        # In observations an id is as likely a row's number: not read as the station, and the
+        # message names the names that are.
+        numbered = write(out, "numbered.csv", "id,gauge,date,precip\n" + "".join(
+            f"{k + 1},{s},{d},{v}\n" for k, (s, d, v) in enumerate(rows)))
+        _, stderr = run_colorado(os.path.join(out, "numbered"), stations=ids, observations=numbered,
+                                 catchment=catchment, plots=False, status=1, what="a row number id")
+        assert_that(f"{numbered}: the observations file has no column 'station_id'" in stderr
+                    and "station_id may be named station, site_no)" in stderr, f"{stderr}")
 
 
 def test_a_noaa_climate_data_online_file_is_both_stations_and_observations():

@@ -144,14 +144,15 @@ def test_a_grid_gives_a_projected_systems_own_numbers_and_takes_them_back():
     f.Update()
     assert_that(f.GetOutput().GetNumberOfPoints() == 1 and any(
         "LatitudeOfOrigin 23 is not used: UseLatitudeOfOrigin is off" in w for w in warnings), f"{warnings}")
-    # Once per value: not again at the next update (ParaView hides the value with the box off),
-    # again for another value, and again after the box was on and off.
+    # Once per value (NaN too): not again at the next update (ParaView hides the value with the
+    # box off), again for another value, and again after the box was on and off.
     def unused_warnings():
         return sum("is not used: UseLatitudeOfOrigin is off" in w for w in warnings)
 
     for settle, expected in ((lambda: f.Modified(), 1), (lambda: f.SetLatitudeOfOrigin(24.0), 2),
                              (lambda: f.Modified(), 2), (lambda: f.UseLatitudeOfOriginOn(), 2),
-                             (lambda: f.UseLatitudeOfOriginOff(), 3)):
+                             (lambda: f.UseLatitudeOfOriginOff(), 3),
+                             (lambda: f.SetLatitudeOfOrigin(float("nan")), 4), (lambda: f.Modified(), 4)):
         settle()
         f.Update()
         assert_that(unused_warnings() == expected, f"{expected} warnings expected: {warnings}")
