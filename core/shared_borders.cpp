@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 
 namespace tessera
 {
@@ -161,39 +162,138 @@ private:
   std::vector<std::size_t> Edges;
 };
 
+// The representative of k's group (union-find with path halving).
+std::size_t Root(std::vector<std::size_t>& parent, std::size_t k)
+{
+  while (parent[k] != k)
+  {
+    parent[k] = parent[parent[k]];
+    k = parent[k];
+  }
+  return k;
+}
+
+// Per vertex, the vertex it is made (itself, or the smallest, by x then y, of a group of copies
+// of one point in different pieces within the tolerance of each other). Each piece computed its
+// own copy (both tiles cut at one x, a crossing computed from either end), and copies an ulp or
+// two apart stayed apart in lon/lat: a GIS's union of the pieces kept zero-width slivers there,
+// 2 to 10 a month in Colorado. A group in which one piece has two vertices is left as it is: made
+// one point, they would fold that piece's ring.
+std::vector<std::size_t> NearCopiesMadeOne(const std::vector<Point2>& v,
+  const std::vector<std::size_t>& ringOf)
+{
+  std::vector<std::size_t> order(v.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  const auto smaller = [&](std::size_t a, std::size_t b)
+  { return v[a].x != v[b].x ? v[a].x < v[b].x : v[a].y < v[b].y; };
+  std::sort(order.begin(), order.end(), smaller);
+  std::vector<std::size_t> parent(v.size());
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  bool joined = false;
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    const Point2& p = v[order[i]];
+    const double tolerance = Tolerance(p, p);
+    for (std::size_t j = i + 1; j < order.size() && v[order[j]].x - p.x <= tolerance; ++j)
+    {
+      const std::size_t a = order[i], b = order[j];
+      if (ringOf[a] != ringOf[b] && std::fabs(v[b].y - p.y) <= tolerance)
+      {
+        parent[Root(parent, a)] = Root(parent, b);
+        joined = true;
+      }
+    }
+  }
+  std::vector<std::size_t> made(v.size());
+  std::iota(made.begin(), made.end(), std::size_t(0));
+  if (!joined)
+  {
+    return made;
+  }
+  // Per group (by its root): its smallest vertex, and whether a piece has two vertices in it
+  // (copies of one point in one piece, as a ring through a point twice has, do not fold it).
+  std::vector<std::size_t> smallest(v.size(), SIZE_MAX), size(v.size(), 0);
+  for (const std::size_t k : order) // (ascending: a group's first is its smallest)
+  {
+    const std::size_t root = Root(parent, k);
+    smallest[root] = smallest[root] == SIZE_MAX ? k : smallest[root];
+    ++size[root];
+  }
+  std::vector<std::size_t> grouped; // the vertices in groups of two or more, by group and piece
+  for (std::size_t k = 0; k < v.size(); ++k)
+  {
+    if (size[Root(parent, k)] > 1)
+    {
+      grouped.push_back(k);
+    }
+  }
+  const auto byGroupAndPiece = [&](std::size_t a, std::size_t b)
+  {
+    const std::size_t ra = Root(parent, a), rb = Root(parent, b);
+    return ra != rb ? ra < rb : ringOf[a] < ringOf[b];
+  };
+  std::sort(grouped.begin(), grouped.end(), byGroupAndPiece);
+  std::vector<char> folds(v.size(), 0);
+  for (std::size_t i = 1; i < grouped.size(); ++i)
+  {
+    const std::size_t a = grouped[i - 1], b = grouped[i];
+    if (Root(parent, a) == Root(parent, b) && ringOf[a] == ringOf[b] && !(v[a] == v[b]))
+    {
+      folds[Root(parent, a)] = 1;
+    }
+  }
+  for (std::size_t k = 0; k < v.size(); ++k)
+  {
+    const std::size_t root = Root(parent, k);
+    made[k] = folds[root] ? k : smallest[root];
+  }
+  return made;
+}
+
 } // namespace
 
-ClippedRings ShareBorderVertices(const ClippedRings& pieces)
+ClippedRings ShareBorderVertices(const ClippedRings& given)
 {
   // The tests run on the vertices scaled by a power of two to a largest coordinate below 1
   // (exact): coordinates of 1e308 overflowed the grid's box, and beyond some 1e154 the products
   // of InsideParameter did. Vertices that are not finite are left as they are, unshared.
   double largest = 0.0;
-  for (const Point2& p : pieces.Vertices)
+  for (const Point2& p : given.Vertices)
   {
     if (!std::isfinite(p.x) || !std::isfinite(p.y))
     {
-      return pieces;
+      return given;
     }
     largest = std::max({ largest, std::fabs(p.x), std::fabs(p.y) });
   }
   if (largest == 0.0)
   {
-    return pieces;
+    return given;
   }
   const int exponent = ExponentAbove(largest);
-  std::vector<Point2> v(pieces.Vertices.size());
+  std::vector<Point2> v(given.Vertices.size());
   std::vector<std::size_t> ringOf(v.size()), next(v.size());
-  for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
+  for (std::size_t r = 0; r + 1 < given.RingOffsets.size(); ++r)
   {
-    const std::size_t begin = pieces.RingOffsets[r], end = pieces.RingOffsets[r + 1];
+    const std::size_t begin = given.RingOffsets[r], end = given.RingOffsets[r + 1];
     for (std::size_t k = begin; k < end; ++k)
     {
-      v[k] = { std::ldexp(pieces.Vertices[k].x, -exponent),
-        std::ldexp(pieces.Vertices[k].y, -exponent) };
+      v[k] = { std::ldexp(given.Vertices[k].x, -exponent),
+        std::ldexp(given.Vertices[k].y, -exponent) };
       ringOf[k] = r;
       next[k] = k + 1 < end ? k + 1 : begin;
     }
+  }
+  ClippedRings pieces = given;
+  const std::vector<std::size_t> made = NearCopiesMadeOne(v, ringOf);
+  for (std::size_t k = 0; k < v.size(); ++k)
+  {
+    pieces.Vertices[k] = given.Vertices[made[k]];
+  }
+  std::vector<Point2> scaled = v; // (v, made one)
+  for (std::size_t k = 0; k < v.size(); ++k)
+  {
+    v[k] = scaled[made[k]];
   }
   const EdgeGrid grid(v, next);
   std::vector<Insertion> insertions;

@@ -27,10 +27,13 @@ namespace tessera
 /// pieces (simple rings, as DisplayPieces gives them, of any number of tiles) with each vertex of
 /// a piece that lies inside an edge of another piece added to that edge, in order along it. "Lies
 /// inside": within 64 ulps of the largest coordinate of the edge from its line, between its ends
-/// and not within that distance of either end (two pieces' own copies of a point an ulp apart stay
-/// as they are). Any finite coordinates (the tests run on them scaled by a power of two); pieces
-/// with a NaN or infinite coordinate are returned as they are. By a grid of about one vertex a
-/// cell, each edge listed in the cells along it: O(V + cells the edges cross) for V vertices.
+/// and not within that distance of either end. First, copies of one point in different pieces
+/// within 64 ulps of each other (each piece computed its own: a cut of both tiles at one x, a
+/// crossing computed from either end) are made one, the smallest by x then y, unless a piece has
+/// two vertices among them (made one, they would fold its ring). Any finite coordinates (the tests
+/// run on them scaled by a power of two); pieces with a NaN or infinite coordinate are returned as
+/// they are. By a grid of about one vertex a cell, each edge listed in the cells along it: O(V +
+/// cells the edges cross) for V vertices.
 ClippedRings ShareBorderVertices(const ClippedRings& pieces);
 
 /// Points along a ring's edges in the plane so that no piece is longer than step (closing edge

@@ -64,6 +64,30 @@ int CountTJunctions(const ClippedRings& pieces, double near, double same)
   return found;
 }
 
+// The number of pairs of vertices of different pieces that are distinct but within `near` of each
+// other: copies of one point that would stay apart once mapped.
+int CountNearCopies(const ClippedRings& pieces, double near)
+{
+  std::vector<std::size_t> ringOf(pieces.Vertices.size());
+  for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
+  {
+    std::fill(
+      ringOf.begin() + pieces.RingOffsets[r], ringOf.begin() + pieces.RingOffsets[r + 1], r);
+  }
+  int found = 0;
+  for (std::size_t i = 0; i < pieces.Vertices.size(); ++i)
+  {
+    for (std::size_t j = i + 1; j < pieces.Vertices.size(); ++j)
+    {
+      const Point2& a = pieces.Vertices[i];
+      const Point2& b = pieces.Vertices[j];
+      found += ringOf[i] != ringOf[j] && !(a == b) && std::fabs(a.x - b.x) <= near &&
+        std::fabs(a.y - b.y) <= near;
+    }
+  }
+  return found;
+}
+
 // The pieces of all tiles of random points in the unit square clipped by a catchment with a bay
 // and holes (every tile over a hole or the bay's end is cut vertically into several pieces).
 ClippedRings PiecesOfAllTiles(std::mt19937& random, int pointCount)
@@ -146,7 +170,7 @@ double Area(const ClippedRings& rings)
 TEST(SharedBorders, PiecesMeetVertexForVertexOnceShared)
 {
   std::mt19937 random(5);
-  int junctionsBefore = 0;
+  int junctionsBefore = 0, nearCopiesBefore = 0;
   for (int trial = 0; trial < 6; ++trial)
   {
     SCOPED_TRACE("trial " + std::to_string(trial));
@@ -159,12 +183,15 @@ TEST(SharedBorders, PiecesMeetVertexForVertexOnceShared)
     EXPECT_NEAR(Area(shared), Area(pieces), 1e-14);
     junctionsBefore += CountTJunctions(pieces, 1e-12, 1e-12);
     EXPECT_EQ(CountTJunctions(shared, 1e-12, 1e-12), 0);
+    EXPECT_EQ(CountNearCopies(shared, 1e-13), 0);
+    nearCopiesBefore += CountNearCopies(pieces, 1e-13);
     // Bent, the shared pieces still meet vertex for vertex, where the unshared ones' T-junctions
     // lie off their neighbours' chords by up to some 1e-5.
     EXPECT_EQ(CountTJunctions(DensifiedAndBent(shared), 1e-6, 1e-12), 0);
     EXPECT_GT(CountTJunctions(DensifiedAndBent(pieces), 1e-6, 1e-12) + (trial > 0), 0);
   }
   EXPECT_GT(junctionsBefore, 20); // (the vertical cuts of tiles over the hole and the bay)
+  EXPECT_GT(nearCopiesBefore, 20); // (cut points and crossings both pieces computed: 296)
 }
 
 TEST(SharedBorders, EdgesAreCutAtTheSamePointsEitherWay)
@@ -193,6 +220,38 @@ TEST(SharedBorders, EdgesAreCutAtTheSamePointsEitherWay)
     const Point2& b = forward[(k + 1) % forward.size()];
     EXPECT_LE(std::hypot(b.x - a.x, b.y - a.y), 0.37 * (1 + 1e-12)) << k;
   }
+}
+
+// Two pieces' own copies of a corner an ulp or two apart are made one point, the smaller (each
+// piece computed its own: in lon/lat they stayed apart, and a GIS's union kept zero-width slivers
+// there); two vertices of one piece that close are left apart (made one they would fold it).
+TEST(SharedBorders, CopiesOfACornerUlpsApartAreMadeOne)
+{
+  const double up = std::nextafter(1.0, 2.0), up2 = std::nextafter(up, 2.0);
+  ClippedRings two;
+  two.Vertices = {
+    { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 }, { up, 0 }, { 2, 0 }, { 2, 1 }, { up2, 1 }
+  };
+  two.RingOffsets = { 0, 4, 8 };
+  EXPECT_EQ(CountNearCopies(two, 1e-12), 2);
+  const ClippedRings shared = ShareBorderVertices(two);
+  ASSERT_EQ(shared.RingOffsets, two.RingOffsets);
+  EXPECT_EQ(CountNearCopies(shared, 1e-12), 0);
+  EXPECT_EQ(shared.Vertices[4].x, 1.0);
+  EXPECT_EQ(shared.Vertices[7].x, 1.0);
+  EXPECT_EQ(shared.Vertices[1].x, 1.0);
+  // One piece with two vertices an ulp apart beside another piece's copy: all left as they are.
+  ClippedRings folded;
+  folded.Vertices = {
+    { 0, 0 }, { 1, 0 }, { up, 0.5 }, { 1, 1 }, { 0, 1 }, { up2, 0.5 }, { 2, 0 }, { 2, 1 }
+  };
+  folded.Vertices[2] = { 1, 0.5 };
+  folded.Vertices.insert(folded.Vertices.begin() + 3, Point2{ up, 0.5 });
+  folded.RingOffsets = { 0, 6, 9 };
+  const ClippedRings kept = ShareBorderVertices(folded);
+  EXPECT_EQ(kept.Vertices[2].x, 1.0);
+  EXPECT_EQ(kept.Vertices[3].x, up);
+  EXPECT_EQ(kept.Vertices[6].x, up2);
 }
 
 TEST(SharedBorders, NothingToShare)
