@@ -62,8 +62,8 @@ public:
       this->Low = { std::min(this->Low.x, p.x), std::min(this->Low.y, p.y) };
       this->High = { std::max(this->High.x, p.x), std::max(this->High.y, p.y) };
     }
-    this->Side = std::clamp(static_cast<int>(std::ceil(std::sqrt(double(v.size())))), 1, 1024);
-    this->Starts.assign(std::size_t(this->Side) * this->Side + 1, 0);
+    this->ChooseCells(v.size());
+    this->Starts.assign(std::size_t(this->Columns) * this->Rows + 1, 0);
     // Two passes: count each cell's edges, then fill them in (a flat array, cell by cell).
     std::vector<std::size_t> fill;
     for (int pass = 0; pass < 2; ++pass)
@@ -107,6 +107,19 @@ public:
   }
 
 private:
+  // About one cell a vertex, at most 2^20, the cells about square: with as many columns as rows,
+  // 10^5 pieces stacked in a column made every horizontal edge cross hundreds of cells (7.8 s).
+  void ChooseCells(std::size_t vertices)
+  {
+    constexpr double MaxCells = 1048576.0;
+    const double cells = std::clamp(double(vertices), 1.0, MaxCells);
+    const double width = this->High.x - this->Low.x, height = this->High.y - this->Low.y;
+    const double aspect = width > 0.0 && height > 0.0 ? width / height : 1.0;
+    const double columns = std::clamp(std::round(std::sqrt(cells * aspect)), 1.0, cells);
+    this->Columns = static_cast<int>(columns);
+    this->Rows = static_cast<int>(std::clamp(std::round(cells / columns), 1.0, cells));
+  }
+
   // Calls f(cell) for each cell that a -> b, widened by twice its tolerance, meets: column by
   // column, the rows of the edge's stretch over that column.
   template<typename F>
@@ -114,9 +127,9 @@ private:
   {
     const double margin = 2.0 * Tolerance(a, b);
     const double left = std::min(a.x, b.x), right = std::max(a.x, b.x);
-    const int x0 = Index(left - margin, this->Low.x, this->High.x);
-    const int x1 = Index(right + margin, this->Low.x, this->High.x);
-    const double columnWidth = (this->High.x - this->Low.x) / this->Side;
+    const int x0 = Index(left - margin, this->Low.x, this->High.x, this->Columns);
+    const int x1 = Index(right + margin, this->Low.x, this->High.x, this->Columns);
+    const double columnWidth = (this->High.x - this->Low.x) / this->Columns;
     for (int x = x0; x <= x1; ++x)
     {
       double yLow = std::min(a.y, b.y), yHigh = std::max(a.y, b.y);
@@ -129,35 +142,36 @@ private:
         yLow = std::max(yLow, std::min(yFrom, yTo));
         yHigh = std::min(yHigh, std::max(yFrom, yTo));
       }
-      const int y0 = Index(yLow - margin, this->Low.y, this->High.y);
-      const int y1 = Index(yHigh + margin, this->Low.y, this->High.y);
+      const int y0 = Index(yLow - margin, this->Low.y, this->High.y, this->Rows);
+      const int y1 = Index(yHigh + margin, this->Low.y, this->High.y, this->Rows);
       for (int y = y0; y <= y1; ++y)
       {
-        f(std::size_t(y) * this->Side + x);
+        f(std::size_t(y) * this->Columns + x);
       }
     }
   }
 
-  int Index(double c, double low, double high) const
+  static int Index(double c, double low, double high, int count)
   {
     const double width = high - low;
     if (!(width > 0.0))
     {
       return 0;
     }
-    const double cell = std::floor((c - low) / width * this->Side);
-    return static_cast<int>(std::clamp(cell, 0.0, double(this->Side - 1)));
+    const double cell = std::floor((c - low) / width * count);
+    return static_cast<int>(std::clamp(cell, 0.0, double(count - 1)));
   }
 
   std::size_t Cell(const Point2& p) const
   {
-    return std::size_t(Index(p.y, this->Low.y, this->High.y)) * this->Side +
-      Index(p.x, this->Low.x, this->High.x);
+    return std::size_t(Index(p.y, this->Low.y, this->High.y, this->Rows)) * this->Columns +
+      Index(p.x, this->Low.x, this->High.x, this->Columns);
   }
 
   Point2 Low{ HUGE_VAL, HUGE_VAL };
   Point2 High{ -HUGE_VAL, -HUGE_VAL };
-  int Side = 1;
+  int Columns = 1;
+  int Rows = 1;
   std::vector<std::size_t> Starts;
   std::vector<std::size_t> Edges;
 };
@@ -190,17 +204,33 @@ std::vector<std::size_t> NearCopiesMadeOne(const std::vector<Point2>& v,
   std::vector<std::size_t> parent(v.size());
   std::iota(parent.begin(), parent.end(), std::size_t(0));
   bool joined = false;
+  // Runs of one x, ascending y within each: a vertex looks at the runs within the tolerance to
+  // its right, and in each at the stretch within the tolerance of its y only (the pieces' vertical
+  // cuts, and a catchment edge on the central meridian, put thousands of vertices on one x).
+  std::vector<std::size_t> runEnd(order.size());
+  for (std::size_t i = order.size(); i-- > 0;)
+  {
+    runEnd[i] = i + 1 < order.size() && v[order[i + 1]].x == v[order[i]].x ? runEnd[i + 1] : i + 1;
+  }
+  const auto yOf = [&](std::size_t k, double y) { return v[k].y < y; };
   for (std::size_t i = 0; i < order.size(); ++i)
   {
     const Point2& p = v[order[i]];
     const double tolerance = Tolerance(p, p);
-    for (std::size_t j = i + 1; j < order.size() && v[order[j]].x - p.x <= tolerance; ++j)
+    for (std::size_t run = i + 1; run < order.size() && v[order[run]].x - p.x <= tolerance;
+         run = runEnd[run])
     {
-      const std::size_t a = order[i], b = order[j];
-      if (ringOf[a] != ringOf[b] && std::fabs(v[b].y - p.y) <= tolerance)
+      const auto end = order.begin() + std::ptrdiff_t(runEnd[run]);
+      for (auto b =
+             std::lower_bound(order.begin() + std::ptrdiff_t(run), end, p.y - tolerance, yOf);
+           b != end && v[*b].y <= p.y + tolerance;
+           ++b)
       {
-        parent[Root(parent, a)] = Root(parent, b);
-        joined = true;
+        if (ringOf[order[i]] != ringOf[*b])
+        {
+          parent[Root(parent, order[i])] = Root(parent, *b);
+          joined = true;
+        }
       }
     }
   }
