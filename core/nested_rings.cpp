@@ -83,8 +83,15 @@ public:
       all.Extend(ring.Box);
     }
     this->Bounds = all;
-    this->Side = std::max<std::size_t>(1, std::size_t(std::ceil(std::sqrt(double(rings.size())))));
-    this->Cells.resize(this->Side * this->Side);
+    // About one cell a ring, the cells about square (rings stacked in a column would otherwise
+    // each span every column).
+    const double cells = double(rings.size());
+    const double width = all.XMax - all.XMin, height = all.YMax - all.YMin;
+    const double aspect = width > 0.0 && height > 0.0 ? width / height : 1.0;
+    const double columns = std::clamp(std::round(std::sqrt(cells * aspect)), 1.0, cells);
+    this->Columns = std::size_t(columns);
+    this->Rows = std::size_t(std::clamp(std::round(cells / columns), 1.0, cells));
+    this->Cells.resize(this->Columns * this->Rows);
     for (std::size_t r = 0; r < rings.size(); ++r)
     {
       const Box2& box = rings[r].Box;
@@ -94,7 +101,7 @@ public:
       {
         for (std::size_t i = i0; i <= i1; ++i)
         {
-          this->Cells[j * this->Side + i].push_back(r);
+          this->Cells[j * this->Columns + i].push_back(r);
         }
       }
     }
@@ -102,24 +109,28 @@ public:
 
   const std::vector<std::size_t>& RingsAt(const Point2& p) const
   {
-    return this->Cells[this->Row(p.y) * this->Side + this->Column(p.x)];
+    return this->Cells[this->Row(p.y) * this->Columns + this->Column(p.x)];
   }
 
 private:
-  std::size_t Index(double value, double low, double high) const
+  static std::size_t Index(double value, double low, double high, std::size_t count)
   {
     const double t = high > low ? (value - low) / (high - low) : 0.0;
-    const double cell = std::floor(t * double(this->Side));
-    return std::size_t(std::clamp(cell, 0.0, double(this->Side - 1)));
+    const double cell = std::floor(t * double(count));
+    return std::size_t(std::clamp(cell, 0.0, double(count - 1)));
   }
   std::size_t Column(double x) const
   {
-    return this->Index(x, this->Bounds.XMin, this->Bounds.XMax);
+    return Index(x, this->Bounds.XMin, this->Bounds.XMax, this->Columns);
   }
-  std::size_t Row(double y) const { return this->Index(y, this->Bounds.YMin, this->Bounds.YMax); }
+  std::size_t Row(double y) const
+  {
+    return Index(y, this->Bounds.YMin, this->Bounds.YMax, this->Rows);
+  }
 
   Box2 Bounds;
-  std::size_t Side = 1;
+  std::size_t Columns = 1;
+  std::size_t Rows = 1;
   std::vector<std::vector<std::size_t>> Cells;
 };
 
