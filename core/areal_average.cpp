@@ -1048,9 +1048,14 @@ Point2 DensifiedPoint(const Point2& a, const Point2& b, int i, int n)
                           : InterpolateLonLat(b, a, double(n - i) / n);
 }
 
-/// A count held in a double as a whole number, or to 3 figures beyond 1e15 ("8e+300").
+/// A count held in a double as a whole number, or to 3 figures beyond 1e15 ("8e+300"; one that
+/// overflowed, "more than 1e308").
 std::string CountText(double count)
 {
+  if (!std::isfinite(count))
+  {
+    return "more than 1e308";
+  }
   if (count < 1e15)
   {
     return std::to_string(static_cast<long long>(count));
@@ -1077,8 +1082,19 @@ std::vector<int> DensifiedPieceCounts(const CleanRings& rings, double edgeDegree
     {
       const Point2& a = rings.Vertices[k];
       const Point2& b = rings.Vertices[k + 1 < end ? k + 1 : begin];
+      const double wanted = WantedPieceCount(a, b, edgeDegrees);
+      if (wanted > double(MaxDensifiedPieces))
+      {
+        // (cut into fewer, its pieces would be longer than asked, without a word)
+        throw InputError("catchment ring " + std::to_string(r) + " segment " +
+          std::to_string(k - begin) + ", cut into pieces of at most " + NumberText(edgeDegrees) +
+          " degrees, makes " + CountText(wanted) + " pieces, more than an edge may (" +
+          std::to_string(MaxDensifiedPieces) +
+          "): cut the edges more coarsely (ArealAverageSettings::CatchmentEdgeDegrees, in the "
+          "core's C++ API)");
+      }
       pieces[k] = DensifiedPieceCount(a, b, edgeDegrees);
-      total += WantedPieceCount(a, b, edgeDegrees);
+      total += wanted;
     }
   }
   if (total > double(MaxCatchmentVertices))

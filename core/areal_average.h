@@ -72,7 +72,7 @@ struct ArealAverageSettings
   /// 180th meridian); one that differs by 180 to 270 degrees could be meant either way and is an
   /// InputError naming its ring and segment (EdgeReadsBothWays, geo.h). More than 20 million pieces
   /// in all (200000 degrees of boundary at 0.01) is an InputError giving the count: they would take
-  /// gigabytes.
+  /// gigabytes; so is an edge of more than a million (MaxDensifiedPieces, geo.h), naming it.
   double CatchmentEdgeDegrees = 0.01;
   /// Gauges closer than this (projected metres) are at one place, as exact repeats are: at each
   /// step the first of them that reported is used (DuplicateGauges lists them). Gauges much

@@ -1,5 +1,7 @@
 #include "shared_borders.h"
 
+#include "predicates.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -188,13 +190,16 @@ std::size_t Root(std::vector<std::size_t>& parent, std::size_t k)
 }
 
 // Per vertex, the vertex it is made (itself, or the smallest, by x then y, of a group of copies
-// of one point in different pieces within the tolerance of each other). Each piece computed its
+// of one point in different pieces within the tolerance of each other; prev and next: each
+// vertex's neighbours in its ring). Each piece computed its
 // own copy (both tiles cut at one x, a crossing computed from either end), and copies an ulp or
 // two apart stayed apart in lon/lat: a GIS's union of the pieces kept zero-width slivers there,
 // 2 to 10 a month in Colorado. A group in which one piece has two vertices is left as it is: made
 // one point, they would fold that piece's ring.
 std::vector<std::size_t> NearCopiesMadeOne(const std::vector<Point2>& v,
-  const std::vector<std::size_t>& ringOf)
+  const std::vector<std::size_t>& ringOf,
+  const std::vector<std::size_t>& prev,
+  const std::vector<std::size_t>& next)
 {
   std::vector<std::size_t> order(v.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
@@ -272,6 +277,19 @@ std::vector<std::size_t> NearCopiesMadeOne(const std::vector<Point2>& v,
       folds[Root(parent, a)] = 1;
     }
   }
+  // Nor is a group made one where a vertex would move beyond the tolerance (a chain of copies
+  // each near the next: five 50 ulps apart moved the last by 200), or turn its corner the other
+  // way (a sliver piece's apex, moved onto a copy across its opposite edge, folded it flat).
+  for (const std::size_t k : grouped)
+  {
+    const std::size_t root = Root(parent, k);
+    const Point2& to = v[smallest[root]];
+    const double tolerance = Tolerance(v[k], v[k]);
+    const bool far = std::fabs(to.x - v[k].x) > tolerance || std::fabs(to.y - v[k].y) > tolerance;
+    const bool turns =
+      orient2d(v[prev[k]], to, v[next[k]]) != orient2d(v[prev[k]], v[k], v[next[k]]);
+    folds[root] |= far || turns;
+  }
   for (std::size_t k = 0; k < v.size(); ++k)
   {
     const std::size_t root = Root(parent, k);
@@ -302,7 +320,7 @@ ClippedRings ShareBorderVertices(const ClippedRings& given)
   }
   const int exponent = ExponentAbove(largest);
   std::vector<Point2> v(given.Vertices.size());
-  std::vector<std::size_t> ringOf(v.size()), next(v.size());
+  std::vector<std::size_t> ringOf(v.size()), next(v.size()), prev(v.size());
   for (std::size_t r = 0; r + 1 < given.RingOffsets.size(); ++r)
   {
     const std::size_t begin = given.RingOffsets[r], end = given.RingOffsets[r + 1];
@@ -312,10 +330,11 @@ ClippedRings ShareBorderVertices(const ClippedRings& given)
         std::ldexp(given.Vertices[k].y, -exponent) };
       ringOf[k] = r;
       next[k] = k + 1 < end ? k + 1 : begin;
+      prev[k] = k > begin ? k - 1 : end - 1;
     }
   }
   ClippedRings pieces = given;
-  const std::vector<std::size_t> made = NearCopiesMadeOne(v, ringOf);
+  const std::vector<std::size_t> made = NearCopiesMadeOne(v, ringOf, prev, next);
   for (std::size_t k = 0; k < v.size(); ++k)
   {
     pieces.Vertices[k] = given.Vertices[made[k]];

@@ -30,10 +30,11 @@ namespace tessera
 /// and not within that distance of either end. First, copies of one point in different pieces
 /// within 64 ulps of each other (each piece computed its own: a cut of both tiles at one x, a
 /// crossing computed from either end) are made one, the smallest by x then y, unless a piece has
-/// two vertices among them (made one, they would fold its ring). Any finite coordinates (the tests
-/// run on them scaled by a power of two); pieces with a NaN or infinite coordinate are returned as
-/// they are. By a grid of about one vertex a cell, each edge listed in the cells along it: O(V +
-/// cells the edges cross) for V vertices.
+/// two vertices among them or a vertex would turn its corner the other way (made one, they would
+/// fold its ring), or one lies beyond 64 ulps of the smallest (a chain of near copies). Any finite
+/// coordinates (the tests run on them scaled by a power of two); pieces with a NaN or infinite
+/// coordinate are returned as they are. By a grid of about one vertex a cell, each edge listed in
+/// the cells along it: O(V + cells the edges cross) for V vertices.
 ClippedRings ShareBorderVertices(const ClippedRings& pieces);
 
 /// Points along a ring's edges in the plane so that no piece is longer than step (closing edge

@@ -205,7 +205,8 @@ std::string PointDataWarning(vtkPolyData* tiles)
     "passed)";
 }
 
-/// Throws InputError naming the cells where a tile given as a closed polyline lies inside another:
+/// Throws InputError naming the cells where a tile given as a closed polyline, with a part in the
+/// window, lies inside another:
 /// the GDAL reader gives a polygon's outline and each of its holes as a closed polyline of their
 /// own, and the hole, clipped as a tile, counted twice (a 4 x 4 square with a 2 x 2 hole gave
 /// clipped areas 16 and 4, with no word).
@@ -324,12 +325,6 @@ void ClipBlock(vtkPolyData* tiles,
       tiles->GetPoint(ids->GetId(k), p);
       tile[k] = { std::ldexp(p[0], exponent), std::ldexp(p[1], exponent) };
     }
-    if (!polygon)
-    {
-      lineTiles.Vertices.insert(lineTiles.Vertices.end(), tile.begin(), tile.end());
-      lineTiles.RingOffsets.push_back(lineTiles.Vertices.size());
-      lineTileCells.push_back(c);
-    }
     const double ownArea = tessera_vtk::OrientAnticlockwise(tile);
     const bool finiteCorners = std::all_of(tile.begin(),
       tile.end(),
@@ -358,6 +353,13 @@ void ClipBlock(vtkPolyData* tiles,
         empty->InsertNextValue(c);
       }
       continue;
+    }
+    if (!polygon)
+    {
+      // (only those with a part in the window: a holed polygon outside it counts nothing twice)
+      lineTiles.Vertices.insert(lineTiles.Vertices.end(), tile.begin(), tile.end());
+      lineTiles.RingOffsets.push_back(lineTiles.Vertices.size());
+      lineTileCells.push_back(c);
     }
     covered.Add(clipped);
     // ClipInto's rings are right for areas, not for display (zero-width spikes and bridges,

@@ -1582,10 +1582,14 @@ TEST(ArealAverage, PaddingAndGeodesicStepOutOfRangeAreNamed)
   }
   ArealAverageSettings fine;
   fine.CatchmentEdgeDegrees = 1e-300;
-  // The count is the pieces wanted, not those of edges capped at a million each: the square's
-  // 8 degrees of boundary in pieces of 1e-300 degrees.
-  EXPECT_NE(error(fine).find("make 8e+300 vertices, more than 20000000"), std::string::npos)
+  // An edge is named when it would need more than a million pieces (it was capped at a million
+  // without a word, its pieces longer than asked): the square's 2-degree side in pieces of 1e-300.
+  EXPECT_NE(error(fine).find("catchment ring 0 segment 0, cut into pieces of at most 1e-300 "
+                             "degrees, makes 2e+300 pieces, more than an edge may (1000000)"),
+    std::string::npos)
     << error(fine);
+  fine.CatchmentEdgeDegrees = 4.9e-324; // (its count overflows)
+  EXPECT_NE(error(fine).find("makes more than 1e308 pieces"), std::string::npos) << error(fine);
   ArealAverageSettings edges;
   edges.Padding = 0.0;
   edges.GeodesicStepMetres = 1.0;

@@ -190,7 +190,7 @@ TEST(SharedBorders, PiecesMeetVertexForVertexOnceShared)
     EXPECT_EQ(CountTJunctions(DensifiedAndBent(shared), 1e-6, 1e-12), 0);
     EXPECT_GT(CountTJunctions(DensifiedAndBent(pieces), 1e-6, 1e-12) + (trial > 0), 0);
   }
-  EXPECT_GT(junctionsBefore, 20); // (the vertical cuts of tiles over the hole and the bay)
+  EXPECT_GT(junctionsBefore, 20);  // (the vertical cuts of tiles over the hole and the bay)
   EXPECT_GT(nearCopiesBefore, 20); // (cut points and crossings both pieces computed: 296)
 }
 
@@ -252,6 +252,38 @@ TEST(SharedBorders, CopiesOfACornerUlpsApartAreMadeOne)
   EXPECT_EQ(kept.Vertices[2].x, 1.0);
   EXPECT_EQ(kept.Vertices[3].x, up);
   EXPECT_EQ(kept.Vertices[6].x, up2);
+  // A sliver's apex 10 ulps above its base, a neighbour's copy of it 20 ulps below: moved there,
+  // the apex would turn the other way and fold the sliver flat. Left as it is.
+  const double ulp = std::nextafter(0.5, 1.0) - 0.5;
+  ClippedRings sliver;
+  sliver.Vertices = { { 0, 0 },
+    { 1, 0 },
+    { 0.5, 10 * ulp },
+    { std::nextafter(0.5, 0.0), -20 * ulp },
+    { 0.3, -1 },
+    { 0.7, -1 } };
+  sliver.RingOffsets = { 0, 3, 6 };
+  const ClippedRings unfolded = ShareBorderVertices(sliver);
+  const Point2 apex = sliver.Vertices[2];
+  EXPECT_TRUE(std::find(unfolded.Vertices.begin(),
+                unfolded.Vertices.begin() + unfolded.RingOffsets[1],
+                apex) != unfolded.Vertices.begin() + unfolded.RingOffsets[1]);
+  EXPECT_GT(Area(unfolded), Area(sliver) - 1e-9);
+  // Five copies each 50 ulps from the next (a chain within the tolerance link by link, 200 ulps
+  // end to end): none moved.
+  ClippedRings chain;
+  for (int k = 0; k < 5; ++k)
+  {
+    const double x = 0.5 + 50 * k * ulp;
+    chain.Vertices.insert(
+      chain.Vertices.end(), { { x, 0.5 }, { x + 3, 0.5 + k + 1 }, { x - 3, 0.5 + k + 1 } });
+    chain.RingOffsets.push_back(chain.Vertices.size());
+  }
+  const ClippedRings unchained = ShareBorderVertices(chain);
+  for (int k = 0; k < 5; ++k)
+  {
+    EXPECT_EQ(unchained.Vertices[unchained.RingOffsets[k]].x, 0.5 + 50 * k * ulp) << k;
+  }
 }
 
 TEST(SharedBorders, NothingToShare)
