@@ -1,6 +1,7 @@
 // IdenticalRingPairs against a brute-force reading: two rings are paired exactly when one is the
 // other's closed path, read from some start either way round.
 #include "identical_rings.h"
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -14,16 +15,7 @@ using Pairs = std::vector<std::pair<std::size_t, std::size_t>>;
 
 namespace
 {
-struct RingSet
-{
-  std::vector<std::size_t> Offsets{ 0 };
-  std::vector<Point2> Vertices;
-  void Add(const std::vector<Point2>& ring)
-  {
-    this->Vertices.insert(this->Vertices.end(), ring.begin(), ring.end());
-    this->Offsets.push_back(this->Vertices.size());
-  }
-};
+using tessera_test::RingSet;
 
 std::vector<Point2> Rotated(std::vector<Point2> ring, std::size_t by)
 {

@@ -15,16 +15,7 @@ namespace
 using tessera::Point2;
 using tessera_test::ErrorOf;
 
-struct Rings
-{
-  std::vector<std::size_t> Offsets{ 0 };
-  std::vector<Point2> Vertices;
-  void Add(const std::vector<Point2>& ring)
-  {
-    this->Vertices.insert(this->Vertices.end(), ring.begin(), ring.end());
-    this->Offsets.push_back(this->Vertices.size());
-  }
-};
+using Rings = tessera_test::RingSet;
 
 std::vector<Point2> Square(double x0, double y0, double side, bool clockwise = false)
 {
