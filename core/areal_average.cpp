@@ -1087,9 +1087,9 @@ std::vector<int> DensifiedPieceCounts(const CleanRings& rings, double edgeDegree
       {
         // (cut into fewer, its pieces would be longer than asked, without a word)
         throw InputError("catchment ring " + std::to_string(r) + " segment " +
-          std::to_string(k - begin) + ", cut into pieces of at most " + NumberText(edgeDegrees) +
-          " degrees, makes " + CountText(wanted) + " pieces, more than an edge may (" +
-          std::to_string(MaxDensifiedPieces) +
+          std::to_string(rings.SourceIndex[k]) + ", cut into pieces of at most " +
+          NumberText(edgeDegrees) + " degrees, makes " + CountText(wanted) +
+          " pieces, more than an edge may (" + std::to_string(MaxDensifiedPieces) +
           "): cut the edges more coarsely (ArealAverageSettings::CatchmentEdgeDegrees, in the "
           "core's C++ API)");
       }

@@ -83,10 +83,14 @@ class BoxGrid
 public:
   explicit BoxGrid(const std::vector<RingView>& rings)
   {
-    const std::size_t side =
-      std::max<std::size_t>(1, std::size_t(std::ceil(std::sqrt(double(rings.size())))));
+    // As many rows as leave about one ring a cell with the columns the x cuts gave (rings in one
+    // column, their x cuts all one, take n / 2 rows, not sqrt(n)).
+    const double n = double(rings.size());
+    const std::size_t side = std::max<std::size_t>(1, std::size_t(std::ceil(std::sqrt(n))));
     this->XCuts = QuantileCuts(rings, side, [](const Box2& b) { return b.XMin / 2 + b.XMax / 2; });
-    this->YCuts = QuantileCuts(rings, side, [](const Box2& b) { return b.YMin / 2 + b.YMax / 2; });
+    const std::size_t rows =
+      std::max<std::size_t>(1, std::size_t(std::ceil(n / double(this->XCuts.size() + 1))));
+    this->YCuts = QuantileCuts(rings, rows, [](const Box2& b) { return b.YMin / 2 + b.YMax / 2; });
     this->Columns = this->XCuts.size() + 1;
     this->Cells.resize(this->Columns * (this->YCuts.size() + 1));
     for (std::size_t r = 0; r < rings.size(); ++r)

@@ -277,23 +277,53 @@ std::vector<std::size_t> NearCopiesMadeOne(const std::vector<Point2>& v,
       folds[Root(parent, a)] = 1;
     }
   }
-  // Nor is a group made one where a vertex would move beyond the tolerance (a chain of copies
-  // each near the next: five 50 ulps apart moved the last by 200), or turn its corner the other
-  // way (a sliver piece's apex, moved onto a copy across its opposite edge, folded it flat).
+  // Nor is a group made one where a vertex would move beyond the tolerance of the two points (a
+  // chain of copies each near the next: five 50 ulps apart moved the last by 200).
   for (const std::size_t k : grouped)
   {
     const std::size_t root = Root(parent, k);
     const Point2& to = v[smallest[root]];
-    const double tolerance = Tolerance(v[k], v[k]);
-    const bool far = std::fabs(to.x - v[k].x) > tolerance || std::fabs(to.y - v[k].y) > tolerance;
-    const bool turns =
-      orient2d(v[prev[k]], to, v[next[k]]) != orient2d(v[prev[k]], v[k], v[next[k]]);
-    folds[root] |= far || turns;
+    const double tolerance = Tolerance(to, v[k]);
+    folds[root] |= std::fabs(to.x - v[k].x) > tolerance || std::fabs(to.y - v[k].y) > tolerance;
   }
-  for (std::size_t k = 0; k < v.size(); ++k)
+  const auto place = [&]
   {
-    const std::size_t root = Root(parent, k);
-    made[k] = folds[root] ? k : smallest[root];
+    for (std::size_t k = 0; k < v.size(); ++k)
+    {
+      const std::size_t root = Root(parent, k);
+      made[k] = folds[root] ? k : smallest[root];
+    }
+  };
+  place();
+  // Nor where a corner would turn the other way, its vertex or a neighbour moved (a sliver
+  // piece's apex, moved onto a copy across its opposite edge, folded it flat): the groups of the
+  // three are left, and the corners are looked at again until none turns. A straight corner may
+  // bend (a vertex on its piece's edge, welded to a copy an ulp off it).
+  for (bool turned = true; turned;)
+  {
+    turned = false;
+    for (std::size_t k = 0; k < v.size(); ++k)
+    {
+      const std::size_t a = prev[k], b = next[k];
+      if (made[a] == a && made[k] == k && made[b] == b)
+      {
+        continue;
+      }
+      const int before = orient2d(v[a], v[k], v[b]);
+      if (before != 0 && orient2d(v[made[a]], v[made[k]], v[made[b]]) != before)
+      {
+        for (const std::size_t moved : { a, k, b })
+        {
+          const std::size_t root = Root(parent, moved);
+          turned |= made[moved] != moved && !folds[root];
+          folds[root] = 1;
+        }
+      }
+    }
+    if (turned)
+    {
+      place();
+    }
   }
   return made;
 }

@@ -15,7 +15,7 @@ using Pairs = std::vector<std::pair<std::size_t, std::size_t>>;
 
 namespace
 {
-using tessera_test::RingSet;
+using RingSet = tessera_test::Rings;
 
 std::vector<Point2> Rotated(std::vector<Point2> ring, std::size_t by)
 {

@@ -15,7 +15,7 @@ namespace
 using tessera::Point2;
 using tessera_test::ErrorOf;
 
-using Rings = tessera_test::RingSet;
+using tessera_test::Rings;
 
 std::vector<Point2> Square(double x0, double y0, double side, bool clockwise = false)
 {

@@ -20,18 +20,6 @@
 namespace tessera_test
 {
 
-/// Rings as the core's flat arrays take them: ring r is Vertices[Offsets[r], Offsets[r + 1]).
-struct RingSet
-{
-  std::vector<std::size_t> Offsets{ 0 };
-  std::vector<tessera::Point2> Vertices;
-  void Add(const std::vector<tessera::Point2>& ring)
-  {
-    this->Vertices.insert(this->Vertices.end(), ring.begin(), ring.end());
-    this->Offsets.push_back(this->Vertices.size());
-  }
-};
-
 // Sets TESSERA_THREADS (parallel_chunks.h) for its lifetime, then puts back what was there.
 class ThreadLimitOverride
 {
