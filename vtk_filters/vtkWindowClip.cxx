@@ -507,19 +507,22 @@ int vtkWindowClip::RequestData(vtkInformation*,
     auto* blocks = vtkCompositeDataSet::SafeDownCast(tilesData);
     if (!blocks)
     {
-      this->ClipTilesOf(vtkPolyData::SafeDownCast(tilesData),
-        catchment,
-        exponent,
-        vtkPolyData::SafeDownCast(output),
-        std::string(),
-        0.0,
-        1.0);
+      for (const std::string& warning : this->ClipTilesOf(vtkPolyData::SafeDownCast(tilesData),
+             catchment,
+             exponent,
+             vtkPolyData::SafeDownCast(output),
+             std::string(),
+             0.0,
+             1.0))
+      {
+        vtkWarningMacro(<< warning);
+      }
     }
     else
     {
       // Block by block, each clipped alone (its CoveredFraction its share of the window); an
       // error names its block and leaves the whole output empty.
-      this->BlockWarnings = 0;
+      std::vector<std::string> warnings;
       auto* outBlocks = vtkCompositeDataSet::SafeDownCast(output);
       outBlocks->CopyStructure(blocks);
       outBlocks->GetFieldData()->PassData(blocks->GetFieldData());
@@ -541,21 +544,28 @@ int vtkWindowClip::RequestData(vtkInformation*,
         CheckBlockProjection(tiles, windowData, label);
         vtkNew<vtkPolyData> clipped;
         const double cells = static_cast<double>(tiles->GetNumberOfCells());
-        this->ClipTilesOf(tiles,
+        const std::vector<std::string> said = this->ClipTilesOf(tiles,
           catchment,
           exponent,
           clipped,
           label + " of input 0: ",
           done / count,
           (done + cells) / count);
+        warnings.insert(warnings.end(), said.begin(), said.end());
         done += cells;
         outBlocks->SetDataSet(block, clipped);
       }
-      if (this->BlockWarnings > MaxBlockWarnings)
+      // The first few (a layer of 10,000 features gave 10,000), then their count.
+      constexpr std::size_t shown = 5;
+      for (std::size_t k = 0; k < std::min(shown, warnings.size()); ++k)
       {
-        vtkWarningMacro(<< this->BlockWarnings - MaxBlockWarnings
+        vtkWarningMacro(<< warnings[k]);
+      }
+      if (warnings.size() > shown)
+      {
+        vtkWarningMacro(<< warnings.size() - shown
                         << " more warning(s) about blocks of input 0 are not shown (the first "
-                        << MaxBlockWarnings << " are)");
+                        << shown << " are)");
       }
     }
     tessera_vtk::ListNonEmptyFieldArraysFirst(output);
@@ -570,7 +580,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
-void vtkWindowClip::ClipTilesOf(vtkPolyData* tiles,
+std::vector<std::string> vtkWindowClip::ClipTilesOf(vtkPolyData* tiles,
   const tessera::Catchment& catchment,
   int exponent,
   vtkPolyData* output,
@@ -598,14 +608,11 @@ void vtkWindowClip::ClipTilesOf(vtkPolyData* tiles,
   {
     throw tessera::InputError(block + e.what());
   }
-  for (const std::string& warning : warnings)
+  for (std::string& warning : warnings)
   {
-    if (this->BlockWarnings < MaxBlockWarnings || block.empty())
-    {
-      vtkWarningMacro(<< block << warning);
-    }
-    this->BlockWarnings += block.empty() ? 0 : 1;
+    warning.insert(0, block);
   }
+  return warnings;
 }
 
 //------------------------------------------------------------------------------

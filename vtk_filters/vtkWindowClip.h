@@ -77,6 +77,7 @@
 #include "vtkPolyDataAlgorithm.h"
 
 #include <string> // For ClipTilesOf
+#include <vector> // For ClipTilesOf
 
 namespace tessera
 {
@@ -112,18 +113,14 @@ protected:
 private:
   /// Clips one vtkPolyData of tiles into output, its messages prefixed by block ("" for a
   /// vtkPolyData input; "block 1 (composite index 2) of input 0: " for a block), its progress
-  /// running from progressFrom to progressTo.
-  void ClipTilesOf(vtkPolyData* tiles,
+  /// running from progressFrom to progressTo. Returns its warnings, so prefixed; throws its error.
+  std::vector<std::string> ClipTilesOf(vtkPolyData* tiles,
     const tessera::Catchment& catchment,
     int exponent,
     vtkPolyData* output,
     const std::string& block,
     double progressFrom,
     double progressTo);
-
-  /// Block warnings given in this RequestData: past MaxBlockWarnings they are counted, not given.
-  int BlockWarnings = 0;
-  static constexpr int MaxBlockWarnings = 5;
 
   vtkWindowClip(const vtkWindowClip&) = delete;
   void operator=(const vtkWindowClip&) = delete;
