@@ -1,5 +1,6 @@
 #include "nested_rings.h"
 
+#include "polygon_area.h"
 #include "polygon_validation.h"
 #include "predicates.h"
 
@@ -19,21 +20,6 @@ struct RingView
   double Area = 0.0; // signed: positive anticlockwise
 };
 
-// About the first vertex: a small ring far from the origin lost its area to rounding about it
-// (a hole of side 0.02 at 1e7 was missed).
-double SignedArea(const Point2* ring, std::size_t count)
-{
-  double twice = 0.0;
-  const Point2& o = ring[0];
-  for (std::size_t k = 1; k + 1 < count; ++k)
-  {
-    const Point2& a = ring[k];
-    const Point2& b = ring[k + 1];
-    twice += (a.x - o.x) * (b.y - o.y) - (b.x - o.x) * (a.y - o.y);
-  }
-  return 0.5 * twice;
-}
-
 bool Usable(const Point2* ring, std::size_t count)
 {
   return count >= 3 &&
@@ -49,28 +35,28 @@ bool BoxHolds(const Box2& outer, const Box2& inner)
 
 // Whether the convex ring outer holds inner: every vertex of inner on the inner side of every
 // edge of outer, or on it; and inner is not outer again (one of its vertices strictly inside, or
-// its area smaller beyond rounding: a copy starting at another vertex sums its area in another
-// order).
+// its area smaller beyond rounding; a copy listed from another vertex has the same area to the
+// bit, summed from its lowest vertex by CompensatedPolygonArea).
 bool ConvexRingHolds(const RingView& outer, const RingView& inner)
 {
   const int inside = outer.Area > 0.0 ? 1 : -1;
-  std::vector<char> strictly(inner.Count, 1);
-  for (std::size_t k = 0; k < outer.Count; ++k)
+  bool someStrictlyInside = false;
+  for (std::size_t j = 0; j < inner.Count; ++j)
   {
-    const Point2& a = outer.Vertices[k];
-    const Point2& b = outer.Vertices[(k + 1) % outer.Count];
-    for (std::size_t j = 0; j < inner.Count; ++j)
+    bool strictly = true;
+    for (std::size_t k = 0; k < outer.Count; ++k)
     {
-      const int side = orient2d(a, b, inner.Vertices[j]);
+      const int side =
+        orient2d(outer.Vertices[k], outer.Vertices[(k + 1) % outer.Count], inner.Vertices[j]);
       if (side == -inside)
       {
         return false;
       }
-      strictly[j] = strictly[j] && side == inside;
+      strictly = strictly && side == inside;
     }
+    someStrictlyInside = someStrictlyInside || strictly;
   }
-  const bool smaller = std::fabs(inner.Area) < (1.0 - 1e-12) * std::fabs(outer.Area);
-  return smaller || std::find(strictly.begin(), strictly.end(), 1) != strictly.end();
+  return someStrictlyInside || std::fabs(inner.Area) < (1.0 - 1e-12) * std::fabs(outer.Area);
 }
 
 // About one cell a ring, the cells' sides at quantiles of the rings' centres (as many rings
@@ -163,7 +149,8 @@ std::optional<std::pair<std::size_t, std::size_t>> FindRingInsideAnother(
     {
       continue;
     }
-    const double area = SignedArea(ring, count);
+    // (summed from a vertex: a small ring far from the origin keeps its area)
+    const double area = CompensatedPolygonArea(ring, count);
     if (area != 0.0 && std::isfinite(area))
     {
       rings.push_back({ ring, count, BoundsOf(ring, count), area });
