@@ -1093,7 +1093,7 @@ std::vector<int> DensifiedPieceCounts(const CleanRings& rings, double edgeDegree
           "): cut the edges more coarsely (ArealAverageSettings::CatchmentEdgeDegrees, in the "
           "core's C++ API)");
       }
-      pieces[k] = DensifiedPieceCount(a, b, edgeDegrees);
+      pieces[k] = static_cast<int>(wanted); // (DensifiedPieceCount's, within its cap)
       total += wanted;
     }
   }
