@@ -189,35 +189,23 @@ std::size_t Root(std::vector<std::size_t>& parent, std::size_t k)
   return k;
 }
 
-// Per vertex, the vertex it is made (itself, or the smallest, by x then y, of a group of copies
-// of one point in different pieces within the tolerance of each other; prev and next: each
-// vertex's neighbours in its ring). Each piece computed its
-// own copy (both tiles cut at one x, a crossing computed from either end), and copies an ulp or
-// two apart stayed apart in lon/lat: a GIS's union of the pieces kept zero-width slivers there,
-// 2 to 10 a month in Colorado. A group in which one piece has two vertices is left as it is: made
-// one point, they would fold that piece's ring.
-std::vector<std::size_t> NearCopiesMadeOne(const std::vector<Point2>& v,
+// Links (union-find, parent) each vertex to the vertices of other pieces within the tolerance
+// of it; order: the vertices by ComesFirst. Runs of one x, ascending y within each: a vertex
+// looks at the runs within the tolerance to its right, and in each at the stretch within the
+// tolerance of its y only (the pieces' vertical cuts, and a catchment edge on the central
+// meridian, put thousands of vertices on one x). Whether any were linked.
+bool LinkNearCopies(const std::vector<Point2>& v,
   const std::vector<std::size_t>& ringOf,
-  const std::vector<std::size_t>& prev,
-  const std::vector<std::size_t>& next)
+  const std::vector<std::size_t>& order,
+  std::vector<std::size_t>& parent)
 {
-  std::vector<std::size_t> order(v.size());
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  const auto smaller = [&](std::size_t a, std::size_t b)
-  { return v[a].x != v[b].x ? v[a].x < v[b].x : v[a].y < v[b].y; };
-  std::sort(order.begin(), order.end(), smaller);
-  std::vector<std::size_t> parent(v.size());
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  bool joined = false;
-  // Runs of one x, ascending y within each: a vertex looks at the runs within the tolerance to
-  // its right, and in each at the stretch within the tolerance of its y only (the pieces' vertical
-  // cuts, and a catchment edge on the central meridian, put thousands of vertices on one x).
   std::vector<std::size_t> runEnd(order.size());
   for (std::size_t i = order.size(); i-- > 0;)
   {
     runEnd[i] = i + 1 < order.size() && v[order[i + 1]].x == v[order[i]].x ? runEnd[i + 1] : i + 1;
   }
   const auto yOf = [&](std::size_t k, double y) { return v[k].y < y; };
+  bool joined = false;
   for (std::size_t i = 0; i < order.size(); ++i)
   {
     const Point2& p = v[order[i]];
@@ -239,14 +227,71 @@ std::vector<std::size_t> NearCopiesMadeOne(const std::vector<Point2>& v,
       }
     }
   }
+  return joined;
+}
+
+// Per group root, 1 for a group left apart: a piece has two distinct vertices in it (made one,
+// they would fold its ring; copies of one point in one piece, as a ring through a point twice
+// has, do not), or a vertex lies beyond the tolerance of the group's smallest (a chain of copies
+// each near the next: five 50 ulps apart moved the last by 200).
+std::vector<char> GroupsLeftApart(const std::vector<Point2>& v,
+  const std::vector<std::size_t>& ringOf,
+  std::vector<std::size_t>& parent,
+  const std::vector<std::size_t>& smallest,
+  std::vector<std::size_t> grouped)
+{
+  std::sort(grouped.begin(),
+    grouped.end(),
+    [&](std::size_t a, std::size_t b)
+    {
+      const std::size_t ra = Root(parent, a), rb = Root(parent, b);
+      return ra != rb ? ra < rb : ringOf[a] < ringOf[b];
+    });
+  std::vector<char> apart(v.size(), 0);
+  for (std::size_t i = 1; i < grouped.size(); ++i)
+  {
+    const std::size_t a = grouped[i - 1], b = grouped[i];
+    if (Root(parent, a) == Root(parent, b) && ringOf[a] == ringOf[b] && !(v[a] == v[b]))
+    {
+      apart[Root(parent, a)] = 1;
+    }
+  }
+  for (const std::size_t k : grouped)
+  {
+    const std::size_t root = Root(parent, k);
+    const Point2& to = v[smallest[root]];
+    const double tolerance = Tolerance(to, v[k]);
+    apart[root] |= std::fabs(to.x - v[k].x) > tolerance || std::fabs(to.y - v[k].y) > tolerance;
+  }
+  return apart;
+}
+
+// Per vertex, the vertex it is made (itself, or the smallest, by ComesFirst, of a group of copies
+// of one point in different pieces within the tolerance of each other; prev and next: each
+// vertex's neighbours in its ring). Each piece computed its own copy (both tiles cut at one x, a
+// crossing computed from either end), and copies an ulp or two apart stayed apart in lon/lat: a
+// GIS's union of the pieces kept zero-width slivers there, 2 to 10 a month in Colorado. Groups
+// that would fold a piece are left apart (GroupsLeftApart, and below, corners that would turn).
+std::vector<std::size_t> NearCopiesMadeOne(const std::vector<Point2>& v,
+  const std::vector<std::size_t>& ringOf,
+  const std::vector<std::size_t>& prev,
+  const std::vector<std::size_t>& next)
+{
+  std::vector<std::size_t> order(v.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::sort(order.begin(),
+    order.end(),
+    [&](std::size_t a, std::size_t b) { return ComesFirst(v[a], v[b]); });
+  std::vector<std::size_t> parent(v.size());
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
   std::vector<std::size_t> made(v.size());
   std::iota(made.begin(), made.end(), std::size_t(0));
-  if (!joined)
+  if (!LinkNearCopies(v, ringOf, order, parent))
   {
     return made;
   }
-  // Per group (by its root): its smallest vertex, and whether a piece has two vertices in it
-  // (copies of one point in one piece, as a ring through a point twice has, do not fold it).
+  // Per group (by its root): its smallest vertex and its size; the vertices in groups of two or
+  // more.
   std::vector<std::size_t> smallest(v.size(), SIZE_MAX), size(v.size(), 0);
   for (const std::size_t k : order) // (ascending: a group's first is its smallest)
   {
@@ -254,7 +299,7 @@ std::vector<std::size_t> NearCopiesMadeOne(const std::vector<Point2>& v,
     smallest[root] = smallest[root] == SIZE_MAX ? k : smallest[root];
     ++size[root];
   }
-  std::vector<std::size_t> grouped; // the vertices in groups of two or more, by group and piece
+  std::vector<std::size_t> grouped;
   for (std::size_t k = 0; k < v.size(); ++k)
   {
     if (size[Root(parent, k)] > 1)
@@ -262,36 +307,13 @@ std::vector<std::size_t> NearCopiesMadeOne(const std::vector<Point2>& v,
       grouped.push_back(k);
     }
   }
-  const auto byGroupAndPiece = [&](std::size_t a, std::size_t b)
-  {
-    const std::size_t ra = Root(parent, a), rb = Root(parent, b);
-    return ra != rb ? ra < rb : ringOf[a] < ringOf[b];
-  };
-  std::sort(grouped.begin(), grouped.end(), byGroupAndPiece);
-  std::vector<char> folds(v.size(), 0);
-  for (std::size_t i = 1; i < grouped.size(); ++i)
-  {
-    const std::size_t a = grouped[i - 1], b = grouped[i];
-    if (Root(parent, a) == Root(parent, b) && ringOf[a] == ringOf[b] && !(v[a] == v[b]))
-    {
-      folds[Root(parent, a)] = 1;
-    }
-  }
-  // Nor is a group made one where a vertex would move beyond the tolerance of the two points (a
-  // chain of copies each near the next: five 50 ulps apart moved the last by 200).
-  for (const std::size_t k : grouped)
-  {
-    const std::size_t root = Root(parent, k);
-    const Point2& to = v[smallest[root]];
-    const double tolerance = Tolerance(to, v[k]);
-    folds[root] |= std::fabs(to.x - v[k].x) > tolerance || std::fabs(to.y - v[k].y) > tolerance;
-  }
+  std::vector<char> apart = GroupsLeftApart(v, ringOf, parent, smallest, grouped);
   const auto place = [&]
   {
     for (std::size_t k = 0; k < v.size(); ++k)
     {
       const std::size_t root = Root(parent, k);
-      made[k] = folds[root] ? k : smallest[root];
+      made[k] = apart[root] ? k : smallest[root];
     }
   };
   place();
@@ -315,8 +337,8 @@ std::vector<std::size_t> NearCopiesMadeOne(const std::vector<Point2>& v,
         for (const std::size_t moved : { a, k, b })
         {
           const std::size_t root = Root(parent, moved);
-          turned |= made[moved] != moved && !folds[root];
-          folds[root] = 1;
+          turned |= made[moved] != moved && !apart[root];
+          apart[root] = 1;
         }
       }
     }
@@ -365,14 +387,11 @@ ClippedRings ShareBorderVertices(const ClippedRings& given)
   }
   ClippedRings pieces = given;
   const std::vector<std::size_t> made = NearCopiesMadeOne(v, ringOf, prev, next);
+  const std::vector<Point2> unmoved = v;
   for (std::size_t k = 0; k < v.size(); ++k)
   {
     pieces.Vertices[k] = given.Vertices[made[k]];
-  }
-  std::vector<Point2> scaled = v; // (v, made one)
-  for (std::size_t k = 0; k < v.size(); ++k)
-  {
-    v[k] = scaled[made[k]];
+    v[k] = unmoved[made[k]];
   }
   const EdgeGrid grid(v, next);
   std::vector<Insertion> insertions;
