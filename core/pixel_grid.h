@@ -27,9 +27,11 @@ struct PixelGrid
     return static_cast<std::size_t>(j) * static_cast<std::size_t>(this->Width) +
       static_cast<std::size_t>(i);
   }
-  Point2 PixelCentre(int i, int j) const
+  Point2 PixelCentre(int i, int j) const { return this->FromPixelUnits({ double(i), double(j) }); }
+  /// Continuous pixel coordinates to input coordinates (ToPixelUnits' inverse).
+  Point2 FromPixelUnits(const Point2& p) const
   {
-    return { this->OriginX + i * this->Spacing, this->OriginY + j * this->Spacing };
+    return { this->OriginX + p.x * this->Spacing, this->OriginY + p.y * this->Spacing };
   }
   /// Input coordinates to continuous pixel coordinates (pixel centres at integers).
   Point2 ToPixelUnits(const Point2& p) const

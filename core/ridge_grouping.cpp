@@ -391,15 +391,16 @@ void NameUnorderedPoints(const std::vector<std::size_t>& tied,
 /// the stray point, one 2 widths across was not; at 8 widths it came out whole.
 constexpr double SqueezedBulkWidths = 6.0;
 
-/// A warning naming the points that stretch the image far beyond the bulk of the points. The
-/// image spans the points' bounding box at ImageSize pixels (at most 1024 automatic), so one
-/// stray point 200 radii from a noisy circle of 500 shrank the circle to 10 pixels, 2 basis
-/// widths across, and left every point ungrouped, with no word of the stray point. The bulk is
-/// the box of the points without the most extreme 1% on each side of each axis (at least 1 point,
-/// from 20 points on); named when it spans less than SqueezedBulkWidths basis widths and less than
-/// a quarter of the image's larger side (the stray points are what squeezes it), for each point
-/// further outside it than its own size and an eighth of the image's. More stray points than that
-/// 1% make the bulk's box themselves, and are not named.
+/// A warning naming the points that stretch the image far beyond the bulk of the points (whole:
+/// the larger side of their bounding box). The image spans the points' bounding box at ImageSize
+/// pixels (at most 1024 automatic), so one stray point 200 radii from a noisy circle of 500 shrank
+/// the circle to 10 pixels, 2 basis widths across, and left every point ungrouped, with no word of
+/// the stray point. The bulk is the box of the points without the most extreme 1% on each side of
+/// each axis (at least 1 point, from 20 points on); named when it spans less than
+/// SqueezedBulkWidths basis widths and less than a quarter of the image's larger side (the stray
+/// points are what squeezes it), for each point further outside it than its own size and an eighth
+/// of the image's. More stray points than that 1% make the bulk's box themselves, and are not
+/// named.
 ///
 ///    +--------------------------------------+   the image: the points' bounding box
 ///    | +--+                                 |
@@ -407,6 +408,7 @@ constexpr double SqueezedBulkWidths = 6.0;
 ///    | +--+                                 |
 ///    +--------------------------------------+
 void NameStretchingPoints(const std::vector<Point2>& points,
+  double whole,
   const PixelGrid& grid,
   double width,
   RidgeGroupingResult& result)
@@ -430,7 +432,6 @@ void NameStretchingPoints(const std::vector<Point2>& points,
   const auto [xLow, xHigh] = bulkRange(&Point2::x);
   const auto [yLow, yHigh] = bulkRange(&Point2::y);
   const double bulk = std::max(xHigh - xLow, yHigh - yLow);
-  const double whole = BoundsOf(points.data(), n).LargerSide();
   const double pixels = bulk / grid.Spacing;
   // (a bulk of one place, copies of a point, is no curve: the identical points' own warnings)
   if (!(4.0 * bulk < whole) || !(pixels < SqueezedBulkWidths * width) || bulk == 0.0)
@@ -634,8 +635,8 @@ void NameNearContourEnds(const GroupedPoints& grouped, RidgeGroupingResult& resu
   }
   const auto where = [&](const Point2& at)
   {
-    return "(" + NumberText(grid.OriginX + at.x * grid.Spacing) + ", " +
-      NumberText(grid.OriginY + at.y * grid.Spacing) + ")";
+    const Point2 p = grid.FromPixelUnits(at);
+    return "(" + NumberText(p.x) + ", " + NumberText(p.y) + ")";
   };
   result.Warnings.push_back(std::to_string(near.size()) +
     " pair(s) of open contour ends (where their groups' points end) lie within " +
@@ -821,7 +822,8 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
       ": no group, contour or curve (the points are output 0, unassigned)");
     return result;
   }
-  if (BoundsOf(points.data(), points.size()).LargerSide() == 0.0)
+  const double extent = BoundsOf(points.data(), points.size()).LargerSide();
+  if (extent == 0.0)
   {
     std::fill(result.GroupId.begin(), result.GroupId.end(), 0);
     result.Warnings.push_back("all points are identical: one group, no ridge and no curve");
@@ -854,7 +856,7 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
   const PixelGrid grid = this->MakeGrid(points, result.ImageSize);
   result.Grid = grid;
   result.PixelSize = grid.Spacing;
-  NameStretchingPoints(points, grid, this->Settings.Width, result);
+  NameStretchingPoints(points, extent, grid, this->Settings.Width, result);
 
   std::vector<Point2> pixelPoints(points.size());
   for (std::size_t k = 0; k < points.size(); ++k)
