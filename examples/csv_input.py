@@ -352,15 +352,16 @@ def header_names(fields, what=None):
     stand for in a file of what (other_name_of): {"station", "station_id", "lat", ...} for STATION,
     LAT."""
     names = {header_name(field).lower() for field in fields}
-    return names | {other_name_of(name, what) for name in names if other_name_of(name, what)}
+    return names | ({other_name_of(name, what) for name in names} - {None})
 
 
 def named_columns(columns, names, where, renamed=None, what=None):
     """The header's columns with each of names in its own spelling where the header has it in
     another case, or has instead one other name of it (ALIAS_OF; else the first of its fallbacks in
-    a file of what it has), given in renamed (a list of (the header's name, the name read)); ends the script, naming
-    where (file:line of the header), when one of names appears twice (in any case, or as two other
-    names): which of them holds the values would be a guess (a reader of a dict keeps the last)."""
+    a file of what it has), given in renamed (a list of (the header's name, the name read)); ends
+    the script, naming where (file:line of the header), when one of names appears twice (in any
+    case, or as two other names): which of them holds the values would be a guess (a reader of a
+    dict keeps the last)."""
     columns = list(columns)
     for name in names:
         same = [k for k, column in enumerate(columns) if column.lower() == name.lower()]
