@@ -1201,10 +1201,6 @@ std::string CancelIdenticalRings(Rings& rings, const char* what)
     named + ").";
 }
 
-} // namespace
-
-namespace
-{
 /// Where data spans z but lies flat in x or y (drawn in a vertical plane), why its rings come out
 /// as lines: only x and y are read (a window in the x-z plane was refused as rings of "fewer than
 /// 3 distinct vertices", with no word of z). "" otherwise.
