@@ -461,7 +461,7 @@ void ListNonEmptyFieldArraysFirst(vtkDataObject* data)
   }
 }
 
-bool IsClosedLine(vtkPolyData* poly, vtkIdList* ids)
+bool IsClosedLine(vtkDataSet* data, vtkIdList* ids)
 {
   const vtkIdType n = ids->GetNumberOfIds();
   if (n < 4)
@@ -469,8 +469,8 @@ bool IsClosedLine(vtkPolyData* poly, vtkIdList* ids)
     return false;
   }
   double first[3], last[3];
-  poly->GetPoint(ids->GetId(0), first);
-  poly->GetPoint(ids->GetId(n - 1), last);
+  data->GetPoint(ids->GetId(0), first);
+  data->GetPoint(ids->GetId(n - 1), last);
   return ids->GetId(0) == ids->GetId(n - 1) || (first[0] == last[0] && first[1] == last[1]);
 }
 

@@ -192,7 +192,7 @@ struct Rings
 
 /// Whether a line cell's point ids (ids) close a ring of 3 or more points: the last point is the
 /// first, by id or by x and y, as vtkGDALVectorReader gives a polygon's rings.
-bool IsClosedLine(vtkPolyData* poly, vtkIdList* ids);
+bool IsClosedLine(vtkDataSet* data, vtkIdList* ids);
 
 /// Every polygon, triangle and quad cell, and every closed polyline (last point = first, as
 /// vtkGDALVectorReader gives polygon rings), of a vtkPolyData or of every vtkPolyData block of a

@@ -15,6 +15,7 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
+#include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
@@ -116,7 +117,7 @@ std::string ProjectionWarning(vtkDataObject* tiles, vtkDataObject* window)
 
 /// A block of tiles with a TesseraProjection record of its own, against the window's (the whole
 /// composite's record, checked first, hides the blocks' when it has one); throws naming the block.
-void CheckBlockProjection(vtkPolyData* tiles, vtkDataObject* window, const std::string& block)
+void CheckBlockProjection(vtkPointSet* tiles, vtkDataObject* window, const std::string& block)
 {
   if (tessera_vtk::ProjectionRecordOf(tiles, "input 0 (the tiles)").empty())
   {
@@ -162,7 +163,7 @@ tessera::Catchment WindowOf(const tessera_vtk::Rings& rings,
 /// Area_m2 and CellWeight), what to do instead. Its tiles come in lon/lat, their edges densified:
 /// convex in the plane where they were made, not in lon/lat, so splitting them (what the error
 /// advises) was no help to a user clipping them to a sub-basin.
-std::string ThiessenTilesNote(vtkPolyData* tiles)
+std::string ThiessenTilesNote(vtkPointSet* tiles)
 {
   vtkCellData* data = tiles ? tiles->GetCellData() : nullptr;
   if (!data || !data->GetAbstractArray("Area_m2") || !data->GetAbstractArray("CellWeight"))
@@ -186,7 +187,7 @@ vtkSmartPointer<vtkDoubleArray> OneValue(const char* name, double value)
 
 /// The tiles' point data is not passed (their cell and field data are): the pieces' vertices are
 /// new points, crossings of tile edges and window rings among them. A warning names its arrays.
-std::string PointDataWarning(vtkPolyData* tiles)
+std::string PointDataWarning(vtkPointSet* tiles)
 {
   vtkPointData* pointData = tiles->GetPointData();
   const int count = pointData->GetNumberOfArrays();
@@ -227,10 +228,10 @@ void ThrowForHolesAmong(const tessera::ClippedRings& lineTiles, const std::vecto
   }
 }
 
-/// Clips the tiles (one vtkPolyData: the input, or a block of it) by the window (catchment, its
+/// Clips the tiles (one point set: the input, or a block of it) by the window (catchment, its
 /// coordinates scaled by 2^exponent) into output, with the tiles' field data and the clip's own.
 /// Throws tessera::InputError for bad tiles; appends its warnings; progress(fraction done).
-void ClipBlock(vtkPolyData* tiles,
+void ClipBlock(vtkPointSet* tiles,
   const tessera::Catchment& catchment,
   int exponent,
   vtkPolyData* output,
@@ -293,13 +294,21 @@ void ClipBlock(vtkPolyData* tiles,
       progress(static_cast<double>(c) / std::max<vtkIdType>(cellCount, 1));
     }
     const int type = tiles->GetCellType(c);
-    const bool polygon = type == VTK_POLYGON || type == VTK_TRIANGLE || type == VTK_QUAD;
+    const bool polygon =
+      type == VTK_POLYGON || type == VTK_TRIANGLE || type == VTK_QUAD || type == VTK_PIXEL;
     if (!polygon && type != VTK_POLY_LINE)
     {
       skipped->InsertNextValue(c);
       continue;
     }
     tiles->GetCellPoints(c, ids);
+    if (type == VTK_PIXEL)
+    {
+      // A pixel's points go row by row (0 1 / 2 3): its ring is 0 1 3 2.
+      const vtkIdType third = ids->GetId(2);
+      ids->SetId(2, ids->GetId(3));
+      ids->SetId(3, third);
+    }
     if (!polygon)
     {
       // A closed polyline is a polygon's ring as vtkGDALVectorReader gives it (a shapefile's
@@ -441,12 +450,13 @@ vtkWindowClip::vtkWindowClip()
 //------------------------------------------------------------------------------
 int vtkWindowClip::FillInputPortInformation(int port, vtkInformation* info)
 {
-  // Tiles as vtkPolyData, or a composite of them (a shapefile's polygons read by
+  // Tiles as a point set (vtkPolyData; vtkUnstructuredGrid, as ParaView's Threshold gives a
+  // selection of tiles), or a composite of them (a shapefile's polygons read by
   // vtkGDALVectorReader, say), clipped here block by block (not by the composite pipeline, which
   // kept the other blocks' pieces after an error, and whose messages could not name the block).
   if (port == 0)
   {
-    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
     info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   }
   else
@@ -507,7 +517,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
     auto* blocks = vtkCompositeDataSet::SafeDownCast(tilesData);
     if (!blocks)
     {
-      for (const std::string& warning : this->ClipTilesOf(vtkPolyData::SafeDownCast(tilesData),
+      for (const std::string& warning : this->ClipTilesOf(vtkPointSet::SafeDownCast(tilesData),
              catchment,
              exponent,
              vtkPolyData::SafeDownCast(output),
@@ -535,11 +545,11 @@ int vtkWindowClip::RequestData(vtkInformation*,
       {
         vtkDataObject* leaf = block->GetCurrentDataObject();
         const std::string label = labels.Of(block);
-        auto* tiles = vtkPolyData::SafeDownCast(leaf);
+        auto* tiles = vtkPointSet::SafeDownCast(leaf);
         if (!tiles)
         {
           throw tessera::InputError(label + " of input 0 (the tiles) is a " + leaf->GetClassName() +
-            ": only vtkPolyData (or a composite data set of it) is clipped");
+            ": only point sets (vtkPolyData, vtkUnstructuredGrid, ...) are clipped");
         }
         CheckBlockProjection(tiles, windowData, label);
         vtkNew<vtkPolyData> clipped;
@@ -580,7 +590,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
-std::vector<std::string> vtkWindowClip::ClipTilesOf(vtkPolyData* tiles,
+std::vector<std::string> vtkWindowClip::ClipTilesOf(vtkPointSet* tiles,
   const tessera::Catchment& catchment,
   int exponent,
   vtkPolyData* output,

@@ -2,8 +2,9 @@
  * @class   vtkWindowClip
  * @brief   clip convex tiles by a polygon window with holes (even-odd), with exact areas
  *
- * vtkWindowClip intersects every polygon of input 0 (convex tiles, such as the output of
- * vtkDirichletTessellation, or closed polylines, as vtkGDALVectorReader gives a shapefile's
+ * vtkWindowClip intersects every polygon of input 0 (a point set: convex tiles, such as the
+ * output of vtkDirichletTessellation or a vtkUnstructuredGrid of some of them, as ParaView's
+ * Threshold gives; or closed polylines, as vtkGDALVectorReader gives a shapefile's
  * polygons; a clockwise one is reversed first; a closed polyline inside another of the same
  * block, which is how that reader gives a polygon's hole, is an error naming both cells, as the
  * hole would be clipped as a tile) with the region of input 1: the
@@ -44,7 +45,8 @@
  * An input cell-data array with one of these four names is passed under the first free name of
  * NAME_input, NAME_input_2, ..., with a warning naming it.
  * Tiles entirely outside the window give no polygon. Cells of input 0 that are not polygons,
- * triangles, quads or closed polylines (open lines, vertices, strips), and polygons of fewer
+ * triangles, quads, pixels or closed polylines (open lines, vertices, strips, 3D cells), and
+ * polygons of fewer
  * than 3 points, are not
  * clipped: a warning counts them and the output's field data array `SkippedCellIds` (vtkIdType)
  * lists them. Polygons that lie in the window but have no area to clip (collinear corners, a
@@ -79,6 +81,8 @@
 #include <string> // For ClipTilesOf
 #include <vector> // For ClipTilesOf
 
+class vtkPointSet;
+
 namespace tessera
 {
 class Catchment;
@@ -111,10 +115,10 @@ protected:
   int FillOutputPortInformation(int port, vtkInformation* info) override;
 
 private:
-  /// Clips one vtkPolyData of tiles into output, its messages prefixed by block ("" for a
-  /// vtkPolyData input; "block 1 (composite index 2) of input 0: " for a block), its progress
+  /// Clips one point set of tiles into output, its messages prefixed by block ("" for a
+  /// point set input; "block 1 (composite index 2) of input 0: " for a block), its progress
   /// running from progressFrom to progressTo. Returns its warnings, so prefixed; throws its error.
-  std::vector<std::string> ClipTilesOf(vtkPolyData* tiles,
+  std::vector<std::string> ClipTilesOf(vtkPointSet* tiles,
     const tessera::Catchment& catchment,
     int exponent,
     vtkPolyData* output,

@@ -493,7 +493,7 @@ def test_inputs_of_another_type_are_named_and_leave_empty_outputs():
     """An image or a table in place of the points of the projection, after a good run: an error
     naming its type, and an empty output (the pipeline's own type check stopped before
     RequestData and left the last result in place). Tiles in blocks are still clipped block by
-    block (the clip's tiles port keeps vtkPolyData, for the composite pipeline)."""
+    block (the clip's tiles port takes composites itself, for the composite pipeline)."""
     from vtkmodules.vtkCommonDataModel import vtkImageData, vtkMultiBlockDataSet, vtkTable
 
     image = vtkImageData()
@@ -656,11 +656,11 @@ def test_each_block_of_tiles_gives_its_share_of_the_window():
     assert_that(field_value(output.GetBlock(1), "BlockTag") == 7 and
                 output.GetBlock(0).GetFieldData().GetArray("BlockTag") is None, "a block's field data is its own")
     # A bad block: the error names it (the tiles' cell ids are the block's), and no block is kept.
-    from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid
+    from vtkmodules.vtkCommonDataModel import vtkImageData
     for bad, fragment in ((polygon([[(0.5, 0.0), (1.0, 0.0), (0.6, 0.2), (1.0, 1.0), (0.5, 1.0)]]),
                            "block 1 (composite index 2) of input 0: tile 0 is not convex"),
-                          (vtkUnstructuredGrid(), "block 1 (composite index 2) of input 0 (the tiles) is a "
-                                                  "vtkUnstructuredGrid: only vtkPolyData")):
+                          (vtkImageData(), "block 1 (composite index 2) of input 0 (the tiles) is a "
+                                           "vtkImageData: only point sets")):
         blocks.SetBlock(1, bad)
         output, errors, _ = clip_by(blocks, window)
         assert_that(len(errors) == 1 and fragment in errors[0], f"{fragment!r} not in {errors}")
@@ -814,8 +814,54 @@ def test_a_window_in_a_vertical_plane_is_said_to_be_read_in_x_and_y():
     assert_that(not errors and not any("vertical" in w for w in warnings), f"a flat window: {warnings}")
 
 
+def test_tiles_in_an_unstructured_grid_are_clipped_as_in_polydata():
+    """ParaView's Threshold gives a selection of tiles as a vtkUnstructuredGrid: clipped as the
+    same tiles in a vtkPolyData are (same pieces, areas and cell data; cell ids are the grid's),
+    its pixels too (their points row by row: the ring is 0 1 3 2), and its 3D cells skipped and
+    listed. The window is the unit square, the tiles those of 30 random points in a box 1.6 wide."""
+    from vtkmodules.vtkCommonDataModel import (VTK_PIXEL, VTK_POLYGON, VTK_TETRA, vtkPolyData,
+                                               vtkUnstructuredGrid)
+    from vtkmodules.vtkCommonCore import vtkIdList
+
+    rng = random.Random(5)
+    tessellation = vtkDirichletTessellation()
+    tessellation.SetInputData(make_points([(rng.uniform(-0.3, 1.3), rng.uniform(-0.3, 1.3)) for _ in range(30)]))
+    tessellation.SetWindowBounds(-0.3, 1.3, -0.3, 1.3)
+    tessellation.Update()
+    tiles = tessellation.GetOutput()
+    window = polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]])
+    grid = vtkUnstructuredGrid()
+    grid.SetPoints(tiles.GetPoints())
+    grid.GetCellData().ShallowCopy(tiles.GetCellData())
+    ids = vtkIdList()
+    for c in range(tiles.GetNumberOfCells()):
+        tiles.GetCellPoints(c, ids)
+        grid.InsertNextCell(VTK_POLYGON, ids)
+    from_poly, errors, _ = clip_by(tiles, window)
+    from_grid, grid_errors, _ = clip_by(grid, window)
+    assert_that(not errors and not grid_errors and from_grid.IsA("vtkPolyData"), f"{errors} {grid_errors}")
+    for name in ("TileId", "ClippedArea", "PieceArea", "PointId", "Area"):
+        assert_that(cell_values(from_grid, name) == cell_values(from_poly, name), f"{name} differs")
+    assert_that(cell_rings(from_grid) == cell_rings(from_poly), "the pieces differ")
+    assert_close(field_value(from_grid, "CoveredFraction"), 1.0, 1e-14, "the tiles cover the window")
+
+    # A pixel of [0.5, 1.5] x [0.5, 1.5] (a quarter inside) and a tetrahedron (skipped, listed).
+    mixed = vtkUnstructuredGrid()
+    mixed.SetPoints(polygon([[(0.5, 0.5), (1.5, 0.5), (0.5, 1.5), (1.5, 1.5)]]).GetPoints())
+    mixed.GetPoints().InsertNextPoint(0.2, 0.2, 1.0)
+    mixed.InsertNextCell(VTK_TETRA, 4, [0, 1, 2, 4])
+    mixed.InsertNextCell(VTK_PIXEL, 4, [0, 1, 2, 3])
+    out, errors, warnings = clip_by(mixed, window)
+    skipped = out.GetFieldData().GetArray("SkippedCellIds")
+    assert_that(not errors and cell_values(out, "TileId") == [1] and cell_values(out, "AreaFraction") == [0.25],
+                f"the pixel: {errors} {cell_values(out, 'AreaFraction')}")
+    assert_that(skipped.GetNumberOfTuples() == 1 and skipped.GetValue(0) == 0, "the tetrahedron is listed")
+    assert_that(isinstance(out, vtkPolyData), "polygons out")
+
+
 if __name__ == "__main__":
-    run([test_a_window_in_a_vertical_plane_is_said_to_be_read_in_x_and_y,
+    run([test_tiles_in_an_unstructured_grid_are_clipped_as_in_polydata,
+         test_a_window_in_a_vertical_plane_is_said_to_be_read_in_x_and_y,
          test_cells_are_simple_pieces_that_fill_tile_and_window,
          test_review_cases,
          test_input_arrays_named_like_the_filters_are_kept_under_another_name,
