@@ -16,7 +16,7 @@
 // shares a stretch with the right side of a piece of the slab before continues that piece (the
 // lowest such one not yet taken); where the stack changes (a hole or a bay begins or ends) pieces
 // end and new ones begin. A region that is already x-monotone (most clipped tiles, concave ones
-// included) comes out as one piece, its own ring:
+// included) comes out as one piece, its own ring, if it is a fan (below):
 //
 //   tile with a hole          slabs at the vertices' x        pieces
 //   +---------------+         +----+-------+------+           +----+-------+------+
@@ -26,8 +26,23 @@
 //   |               |         |    |       |      |           |    |   1   |      |
 //   +---------------+         +----+-------+------+           +----+-------+------+
 //
-// A hole inside a tile thus gives two pieces (a U around it and the part above it), whatever its
-// number of vertices (convex pieces would need about half of them). Pieces do not overlap and their
+// Each piece is then made a fan about its first vertex: VTK draws a polygon, and its Cell Size and
+// Integrate Variables measure it, as the triangles of its first point and each edge not at it,
+// so a piece drawn from a vertex that does not see all of it (an L from an outer corner) was
+// drawn over its concave corners and measured too large. A piece is started at a vertex that sees
+// it all (exact orientation tests: every such triangle anticlockwise or flat), if one is found;
+// otherwise it is cut in two by the vertical line through the middle of its vertices' x, and the
+// parts are made fans in turn:
+//
+//   U round a hole: a fan about no vertex        cut at the middle x: two Ls, each started at
+//   +---+   +---+                                its inner corner (*)
+//   |   |   |   |                                +---+   +---+
+//   |   +---+   |                                |   *---+   |
+//   +-----------+                                +-----+*----+
+//
+// A hole inside a tile thus gives three pieces (the U round it cut in two, and the part above it),
+// whatever its number of vertices (convex pieces would need about half of them); a tile under a
+// wavy shore a piece a wave or so. Pieces do not overlap and their
 // areas sum to the region's (each trapezoid is exactly the region inside its slab); their vertices
 // are the rings' own, plus the points where a piece's vertical side meets an edge. Rounding is
 // allowed for: rings of no area (ClipInto's leftovers of a ring that only runs along the tile's
@@ -42,7 +57,16 @@ namespace tessera
 
 /// The region of rings (ClippedRings as Catchment::ClipInto leaves them: each ring oriented with
 /// the region on its left, the region where the sum of their winding numbers is positive) as
-/// pieces: simple anticlockwise rings without holes, disjoint, covering the region.
+/// pieces: simple anticlockwise rings without holes, disjoint, covering the region, each a fan
+/// about its first vertex.
 ClippedRings DisplayPieces(const ClippedRings& rings);
+
+/// A simple anticlockwise ring rotated to start at a vertex about which it is a fan (every
+/// triangle of that vertex and an edge not at it anticlockwise or flat, exactly), if it has one
+/// that a search of some 8 times its size tests finds; left as it is otherwise. Returns whether
+/// it starts at one. (For a piece whose edges were bent after DisplayPieces made it a fan: its
+/// edges densified and taken to lon/lat, where a side that bows inwards leaves the first vertex
+/// short of seeing the whole piece.)
+bool StartAtFanApex(std::vector<Point2>& ring);
 
 } // namespace tessera

@@ -31,11 +31,15 @@
  *
  * The output holds each clipped tile as one or more polygons, its display pieces: simple,
  * anticlockwise, without holes, not overlapping one another, inside the window, together filling
- * exactly tile & window, so that vtkTriangleFilter, Integrate Variables and rendering read them as
- * meant. A tile that the window cuts into lobes gives one polygon per lobe or more; a tile around
- * a hole is cut into pieces around it (x-monotone pieces: a vertical line meets each in one
- * interval; an x-monotone part is one piece). Each polygon has the tile's cell data (the tiles'
- * global ids as an ordinary array: a tile in several pieces repeats its id) and:
+ * exactly tile & window, and each a fan about its first point (every triangle of that point and
+ * an edge not at it anticlockwise or flat), which is how VTK draws a polygon and how
+ * vtkCellSizeFilter and Integrate Variables measure it: so rendering, those filters and
+ * vtkTriangleFilter read them as meant. A tile that the window cuts into lobes gives one polygon
+ * per lobe or more; a tile around a hole is cut into pieces around it (x-monotone pieces: a
+ * vertical line meets each in one interval; an x-monotone part is one piece if it is a fan about
+ * one of its points, else it is cut by vertical lines into fans: an L is one piece, a U two). Each
+ * polygon has the tile's cell data (the tiles' global ids as an ordinary array: a tile in several
+ * pieces repeats its id) and:
  * - `TileId` (vtkIdType): the input 0 cell the polygon comes from;
  * - `ClippedArea` (double): the area of the whole tile inside the window (same on all its pieces);
  * - `AreaFraction` (double): ClippedArea over the tile's own area (at most 1: a tile inside the
