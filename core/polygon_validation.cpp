@@ -483,6 +483,12 @@ bool MeetsWithinRing(const CleanRings& clean, const Segment& s, const Segment& t
   return SegmentsIntersect(a, b, c, d);
 }
 
+/// Rings may touch other rings at points, not themselves: a file from ArcGIS may give a lake
+/// touching the outline as one ring that touches itself (a trial's catchment did).
+const char* const SelfContactHint =
+  " (a ring may touch other rings at points, not itself: a ring that touches itself to enclose a "
+  "lake is made an outer ring and a hole by GDAL's ogr2ogr -makevalid or QGIS's Fix Geometries)";
+
 [[noreturn]] void ReportSelfContact(const CleanRings& clean, const Segment& s, const Segment& t)
 {
   const Segment& first = s.Start < t.Start ? s : t;
@@ -499,7 +505,7 @@ bool MeetsWithinRing(const CleanRings& clean, const Segment& s, const Segment& t
       named);
   }
   throw RingError(ring + " is self-intersecting: " + Describe(clean, first) + " and " +
-      Describe(clean, second) + " touch or cross",
+      Describe(clean, second) + " touch or cross" + SelfContactHint,
     { first.Ring },
     named);
 }

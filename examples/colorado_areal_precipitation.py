@@ -307,11 +307,20 @@ def read_gauge_points(path, id_field=None):
                        "points, or a CSV file with a header such as station_id,lon,lat)"
                        + (f"; GDAL: {reasons[0]}" if reasons else ""))
     say_gdal_messages(path, gdal)
-    for k, block in enumerate(blocks, 1):
+    numbered = list(enumerate(blocks, 1))
+    points = [(k, block) for k, block in numbered if block.GetNumberOfCells() == 1 and block.GetCellType(0) == VTK_VERTEX]
+    if reader.GetNumberOfLayers() > 1 and points and len(points) < len(numbered):
+        # A GeoPackage of the gauges beside the catchment: the layers of points are the gauges.
+        others = [k for k, _ in numbered if (k, _) not in points]
+        print(f"note: {path}: the gauges are its {len(points)} point feature(s); its other layers' "
+              f"{len(others)} feature(s) ({first_and_more(others, str)}; counted from 1) are not read as gauges",
+              file=sys.stderr)
+        numbered = points
+    for k, block in numbered:
         if block.GetNumberOfCells() != 1 or block.GetCellType(0) != VTK_VERTEX:
             csv_input.fail(f"{path}: feature {k} is not one point (GDAL reads it as {cell_kinds(block)}, a polygon's "
                            "rings as lines): a stations file holds a point per gauge")
-    data = blocks[0].GetCellData()
+    data = numbered[0][1].GetCellData()
     fields = [data.GetAbstractArray(i).GetName() for i in range(data.GetNumberOfArrays())]
     lower = {}
     for name in fields:
@@ -322,7 +331,7 @@ def read_gauge_points(path, id_field=None):
         csv_input.fail(f"{path}: no attribute {wanted}; its attributes: {', '.join(fields) or 'none'} (give the one "
                        "holding the ids with --stations-id)")
     table = GaugeTable()
-    for k, block in enumerate(blocks, 1):
+    for k, block in numbered:
         values = block.GetCellData().GetAbstractArray(field)
         station = attribute_text(values).strip() if values else ""
         if not station:
@@ -335,7 +344,7 @@ def read_gauge_points(path, id_field=None):
     if system:
         gauges = projected_input.to_lonlat(gauges, system, lambda g: f"{path}: feature {g + 1}")
     say_declared_systems(reader, path, system, points=True)
-    return gauges, list(range(1, len(xy) + 1))
+    return gauges, [k for k, _ in numbered]
 
 
 def holds_observations(stations, observations):
@@ -1443,11 +1452,13 @@ def read_catchment(path, feature=None):
               f"or one with measures; the first is feature {empty[0]}, counted from 0), and are left out of the "
               "catchment", file=sys.stderr)
     system = projected_input.declared_system(reader, rings, path)
+    # (a GeoPackage's layer of gauges: the filter would warn of each point as a cell it cannot
+    # read, and the system's inverse, of metres, would refuse their lon/lat)
+    output, points = without_point_blocks(output)
+    if points:
+        print(f"{path}: {points} feature(s) of points are not polygons, and are left out of the catchment",
+              file=sys.stderr)
     if system:
-        output, points = without_point_blocks(output)
-        if points:  # (a GeoPackage's layer of gauges: lon/lat, which the system's inverse would refuse)
-            print(f"{path}: {points} feature(s) of points are not polygons, and are left out of the catchment",
-                  file=sys.stderr)
         output = projected_input.to_lonlat(output, system, lambda point: path, densify=True)
         rings = catchment_rings(output)
     for k, ring in holes_outside_their_polygons(path, feature):
@@ -2378,10 +2389,12 @@ def main(argv=None):
     default_observations = os.path.join(DATA, "colorado_monthly_precip.csv")
     parser.add_argument("--stations",
                         help="CSV of gauges: columns station_id, lon, lat (degrees, WGS84), "
-                             f"optional name; {csv_input.SEPARATORS_TEXT}; STATION, LATITUDE, LONGITUDE (as "
-                             "NOAA's Climate Data Online writes them) and other names in ALIAS_OF of csv_input.py "
+                             f"optional name; {csv_input.SEPARATORS_TEXT}; "
+                             f"{', '.join(f'{other} as {name}' for other, name in csv_input.ALIAS_OF.items())} "
+                             "(in any case, as NOAA's Climate Data Online writes STATION, LATITUDE, LONGITUDE) "
                              "are read too, and site_no or id as station_id in a file without station_id or "
-                             "station (site_no only in --observations). It may be the observations file, with the station's place on each row "
+                             "station (site_no in --observations too, id not: there it is as likely a row's "
+                             "number). It may be the observations file, with the station's place on each row "
                              "(as NOAA's CSV has it); default: the observations file where it has such columns, "
                              "else examples/data/colorado_stations.csv. Or a GIS file of points (GeoJSON, "
                              "shapefile, KML, GeoPackage, or a zip file holding one), an id attribute on each "
@@ -2412,12 +2425,15 @@ def main(argv=None):
                              "time, the step the largest that divides 60 and every time's minute; a date column of "
                              "YYYY-MM gives months; or "
                              "wide: a row per time (date, or year, month, ...) with a column per station named "
-                             f"by its station_id; {csv_input.SEPARATORS_TEXT}")
-    parser.add_argument("--catchment", default=os.path.join(DATA, "colorado_boundary.geojson"),
+                             f"by its station_id; {csv_input.SEPARATORS_TEXT}; default: the Colorado example's "
+                             "record, examples/data/colorado_monthly_precip.csv")
+    parser.add_argument("--catchment",
                         help="catchment polygon (GeoJSON or shapefile, or KML or GeoPackage, lon/lat, or a zip file "
                              "holding one; a file declaring a projected system in metres or feet, "
                              f"{projected_input.READ}, is made lon/lat); "
-                             "every polygon feature of the file is taken, unless --feature chooses")
+                             "every polygon feature of the file is taken, unless --feature chooses; default: "
+                             "the Colorado example's outline, examples/data/colorado_boundary.geojson (said in a "
+                             "note when the gauges are not the example's)")
     parser.add_argument("--feature", metavar="ATTRIBUTE=VALUE",
                         help="take only the catchment file's features whose attribute has this "
                              "value, such as HUC8=14010001 (whole numbers are written without .0)")
@@ -2468,6 +2484,11 @@ def main(argv=None):
             print(f"note: without --stations, the gauges are the Colorado example's ({args.stations}): "
                   f"{args.observations} has no place columns (lon and lat, or LONGITUDE and LATITUDE) to read "
                   "its stations from; give your stations file with --stations", file=sys.stderr)
+    if args.catchment is None:
+        args.catchment = os.path.join(DATA, "colorado_boundary.geojson")
+        if os.path.abspath(args.stations) != os.path.join(os.path.abspath(DATA), "colorado_stations.csv"):
+            print(f"note: without --catchment, the catchment is the Colorado example's outline ({args.catchment}); "
+                  "give yours with --catchment", file=sys.stderr)
     combined = holds_observations(args.stations, args.observations)
     gauges, gauge_lines = read_gauges(args.stations, stations_system, combined, args.stations_id)
     if not gauge_lines:

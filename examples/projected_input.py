@@ -212,12 +212,15 @@ POINT_LAYER_TYPES = (1, 4)  # OGR's wkbPoint and wkbMultiPoint
 
 def layers_of(reader, points):
     """The layers of a GIS file (reader: its vtkGDALVectorReader, updated) that can hold what is
-    read from it: with points True, every layer; else those whose geometry is not points (a
-    catchment GeoPackage's layer of gauges adds no ring, and its system must not be the
+    read from it: with points True, the layers of points, or every layer where none is (the
+    gauges of a GeoPackage that holds the catchment too); else those whose geometry is not points
+    (a catchment GeoPackage's layer of gauges adds no ring, and its system must not be the
     catchment's). OGR's 2.5D flag and ISO Z/M codes are taken off the geometry type."""
     layers = range(reader.GetNumberOfLayers())
-    return list(layers) if points else [
-        layer for layer in layers if (reader.GetLayerType(layer) & 0x7FFFFFFF) % 1000 not in POINT_LAYER_TYPES]
+    of_points = [layer for layer in layers if (reader.GetLayerType(layer) & 0x7FFFFFFF) % 1000 in POINT_LAYER_TYPES]
+    if points:
+        return of_points or list(layers)
+    return [layer for layer in layers if layer not in of_points]
 
 
 def declared_system(reader, rings, path, points=False):

@@ -1564,6 +1564,28 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     "gauge(s) have observed values, but their tiles never reach the catchment at any step, so "
     "they are never weighted (listed in UnweightedGaugeIds)",
     [&](std::size_t k) { return idOf(static_cast<std::size_t>(unweighted[k])); });
+  // Of those, the ones at a longitude or latitude of exactly 0: an empty field of a CSV read by
+  // vtkDelimitedTextReader with DetectNumericColumns is 0 (a trial's gauge inside the catchment
+  // went to the equator so, named only among the gauges never weighted).
+  std::vector<std::int32_t> atZero;
+  for (const std::int32_t g : unweighted)
+  {
+    const tessera::Point2& p = lonlat[static_cast<std::size_t>(g)];
+    if (p.x == 0.0 || p.y == 0.0)
+    {
+      atZero.push_back(g);
+    }
+  }
+  warnOf(atZero.size(),
+    "of the gauge(s) never weighted have a longitude or latitude of exactly 0: an empty lon or "
+    "lat of a CSV file read with numbers detected (vtkDelimitedTextReader's "
+    "DetectNumericColumns) is 0",
+    [&](std::size_t k)
+    {
+      const tessera::Point2& p = lonlat[static_cast<std::size_t>(atZero[k])];
+      return idOf(static_cast<std::size_t>(atZero[k])) + " at (" + tessera::NumberText(p.x) + ", " +
+        tessera::NumberText(p.y) + ")";
+    });
   in.Summary->Initialize();
   in.Summary->AddColumn(timeColumn);
   in.Summary->AddColumn(means);

@@ -32,6 +32,10 @@ using tessera::Point2;
 namespace
 {
 
+const std::string SelfContactHint =
+  " (a ring may touch other rings at points, not itself: a ring that touches itself to enclose a "
+  "lake is made an outer ring and a hole by GDAL's ogr2ogr -makevalid or QGIS's Fix Geometries)";
+
 // ---- Exact rational reference ------------------------------------------------------------------
 
 using tessera_test::ErrorOf;
@@ -1325,7 +1329,8 @@ TEST(Clip, RejectsBadCatchmentsNamingRingsAndSegments)
   { return ErrorOf([&] { Catchment catchment(rings.Offsets, rings.Vertices); }); };
   Rings bowTie;
   bowTie.Add({ { 0, 0 }, { 2, 0 }, { 0, 2 }, { 2, 2 } });
-  EXPECT_EQ(build(bowTie), "ring 0 is self-intersecting: segment 1 and segment 3 touch or cross");
+  EXPECT_EQ(build(bowTie),
+    "ring 0 is self-intersecting: segment 1 and segment 3 touch or cross" + SelfContactHint);
 
   Rings crossing;
   crossing.Add(Rectangle(0, 0, 4, 4));
@@ -1602,7 +1607,7 @@ TEST(Clip, RejectsTheBowTieOfTheColoradoOutline)
     { -109.056786, 40.657085 },
     { -107.9, 40.6 } });
   EXPECT_EQ(ErrorOf([&] { Catchment catchment(corner.Offsets, corner.Vertices); }),
-    "ring 0 is self-intersecting: segment 0 and segment 2 touch or cross");
+    "ring 0 is self-intersecting: segment 0 and segment 2 touch or cross" + SelfContactHint);
   // Without vertex 21 (here 2) the ring is simple.
   Rings fixed;
   fixed.Add({ { -107.922333, 41.018047 },

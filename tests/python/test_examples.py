@@ -2341,7 +2341,8 @@ def test_utm_gauges_across_the_equator_give_the_lon_lat_means():
 def geopackage_of(path, layers):
     """Writes a GeoPackage (OGC 12-128r18: an SQLite file with its three tables and a table per
     layer) at path. layers: (name, WKT of its system, "POLYGON" or "POINT", geometries: lists of
-    rings, lists of (x, y) each with the first point repeated last, or (x, y) points)."""
+    rings, lists of (x, y) each with the first point repeated last, or (x, y) points, or
+    (station_id, (x, y)) pairs for points with a station_id attribute)."""
     import sqlite3
     import struct
 
@@ -2368,13 +2369,16 @@ def geopackage_of(path, layers):
                "''), ('Undefined geographic SRS', 0, 'NONE', 0, 'undefined', '')")
     for srs, (name, wkt, kind, geometries) in enumerate(layers, start=100000):
         db.execute("INSERT INTO gpkg_spatial_ref_sys VALUES (?, ?, 'NONE', ?, ?, '')", (name, srs, srs, wkt))
-        db.execute(f"CREATE TABLE {name} (fid INTEGER PRIMARY KEY AUTOINCREMENT, geom {kind})")
+        named = kind == "POINT" and geometries and isinstance(geometries[0][0], str)
+        db.execute(f"CREATE TABLE {name} (fid INTEGER PRIMARY KEY AUTOINCREMENT, geom {kind}"
+                   + (", station_id TEXT)" if named else ")"))
         db.execute("INSERT INTO gpkg_contents (table_name, data_type, identifier, srs_id) VALUES (?, 'features', ?, ?)",
                    (name, name, srs))
         db.execute("INSERT INTO gpkg_geometry_columns VALUES (?, 'geom', ?, ?, 0, 0)", (name, kind, srs))
         for geometry in geometries:  # (the header: magic, version 0, flags: little-endian, no envelope; srs)
-            db.execute(f"INSERT INTO {name} (geom) VALUES (?)",
-                       (b"GP\x00\x01" + struct.pack("<i", srs) + wkb(kind, geometry),))
+            station, geometry = geometry if named else (None, geometry)
+            db.execute(f"INSERT INTO {name} (geom{', station_id' if named else ''}) VALUES (?{', ?' if named else ''})",
+                       (b"GP\x00\x01" + struct.pack("<i", srs) + wkb(kind, geometry),) + ((station,) if named else ()))
     db.commit()
     db.close()
     return path
@@ -2418,6 +2422,18 @@ def test_catchment_geopackage_in_metres_beside_a_layer_of_lon_lat_points():
                             f"{system}, {name}: {stderr}")
                 assert_same_means(read_csv(os.path.join(out, f"{system}_{name}", "areal_mean.csv")), want,
                                   f"{system}, {name}")
+        # The gauges of such a file, with their ids, read from it too: its layer of points is the
+        # gauges, the catchment's layer is left out of them (and said); it ended the run, its
+        # polygon "not one point".
+        wkt = f'PROJCS["lake_aea",{wgs84},{systems["lake_aea"][0]},UNIT["metre",1]]'
+        both = geopackage_of(os.path.join(out, "both.gpkg"), [
+            ("basin", wkt, "POLYGON", [[systems["lake_aea"][1](ring) for ring in lake_rings_cut()]]),
+            ("gauges", wgs84, "POINT", list(LAKE_GAUGES.items()))])
+        _, stderr = run_colorado(os.path.join(out, "both"), stations=both, observations=observations, catchment=both,
+                                 plots=False, what="both")
+        said = f"note: {both}: the gauges are its 6 point feature(s); its other layers' 1 feature(s) (1; counted from 1)"
+        assert_that(said in stderr and "not one point" not in stderr, f"{stderr}")
+        assert_same_means(read_csv(os.path.join(out, "both", "areal_mean.csv")), want, "gauges and basin in one file")
 
 
 def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
@@ -2722,6 +2738,12 @@ def test_a_noaa_climate_data_online_file_is_both_stations_and_observations():
                                  status=1, what="no --stations")
         assert_that("note: without --stations, the gauges are the Colorado example's" in stderr
                     and f"{plain} has no place columns" in stderr, f"no --stations: {stderr}")
+        # Own gauges without --catchment: the Colorado outline is the catchment, and it is said (a
+        # trial's Oregon gauges were averaged over Colorado with no word but "none inside").
+        _, stderr = run_colorado(os.path.join(out, "nocatchment"), stations=stations, observations=plain, plots=False,
+                                 what="no --catchment")
+        assert_that("note: without --catchment, the catchment is the Colorado example's outline" in stderr,
+                    f"no --catchment: {stderr}")
         # The NOAA file as --stations beside another observations file: a gauge per station too.
         _, stderr = run_colorado(os.path.join(out, "beside"), stations=noaa, observations=plain, catchment=catchment,
                                  plots=False, what="the NOAA file as --stations")

@@ -247,7 +247,8 @@ def test_a_gauge_whose_station_id_others_share_is_named_with_its_index():
 
 
 def test_gauges_never_weighted_and_no_gauge_inside_are_reported():
-    """A gauge whose tile never reaches the catchment is named (and listed in UnweightedGaugeIds);
+    """A gauge whose tile never reaches the catchment is named (and listed in UnweightedGaugeIds),
+    and again with its place where a coordinate is exactly 0 (an empty CSV field read as a number);
     gauges all outside the catchment (a west longitude without its minus sign) get a warning."""
     f = vtkThiessenArealAverage()
     warnings = messages_of(f, vtkCommand.WarningEvent)
@@ -261,9 +262,12 @@ def test_gauges_never_weighted_and_no_gauge_inside_are_reported():
     assert_that(summary_column(f, "ArealMean") == [2.5, 1.0], f"means {summary_column(f, 'ArealMean')}")
     ids = f.GetOutputDataObject(1).GetFieldData().GetArray("UnweightedGaugeIds")
     assert_that([ids.GetValue(i) for i in range(ids.GetNumberOfTuples())] == [4], "far never weighted")
-    named = [w for w in warnings if "never weighted" in w]
+    named = [w for w in warnings if "never reach the catchment" in w]
     assert_that(len(named) == 1 and named[0].rstrip().endswith("(listed in UnweightedGaugeIds): far"),
                 f"{warnings}")
+    # far lies at a latitude of exactly 0, where an empty lat read as a number puts a gauge: said.
+    at_zero = [w for w in warnings if "longitude or latitude of exactly 0" in w]
+    assert_that(len(at_zero) == 1 and at_zero[0].rstrip().endswith("is 0: far at (6, 0)"), f"{warnings}")
     assert_that(not any("none of the" in w for w in warnings), f"gauges are inside: {warnings}")
     # Every gauge east of the catchment: the means come from gauges outside it, and it is said.
     g = vtkThiessenArealAverage()
@@ -273,6 +277,7 @@ def test_gauges_never_weighted_and_no_gauge_inside_are_reported():
     g.Update(1)
     said = [w for w in outside if "none of the 2 gauges lies inside the catchment" in w]
     assert_that(len(said) == 1 and "minus sign" in said[0], f"{outside}")
+    assert_that(not any("exactly 0" in w for w in outside), f"no gauge at 0: {outside}")
 
 
 def test_a_catchment_ring_inside_another_blocks_ring_is_reported():
