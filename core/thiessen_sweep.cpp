@@ -1391,13 +1391,34 @@ void CheckSidesAreDoubles(const Window& window)
   }
 }
 
+std::string WhyNotAnAxisAlignedRectangle(const Window& window)
+{
+  if (window.IsAxisAlignedRectangle())
+  {
+    return std::string();
+  }
+  const std::vector<HalfPlane>& sides = window.EffectiveConstraints();
+  for (std::size_t k = 0; k < sides.size(); ++k)
+  {
+    const HalfPlane& h = sides[k];
+    if (h.a != 0.0 && h.b != 0.0)
+    {
+      const auto signed_ = [](double v)
+      { return (v < 0.0 ? " - " : " + ") + NumberText(std::fabs(v)); };
+      return window.ConstraintName(window.EffectiveIds()[k]) + " gives a slanted side, " +
+        NumberText(h.a) + " x" + signed_(h.b) + " y" + signed_(h.c) + " < 0 (as scaled)";
+    }
+  }
+  return "it has " + std::to_string(sides.size()) + " sides";
+}
+
 ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector<Point2>& points)
 {
-  if (!window.IsAxisAlignedRectangle())
+  const std::string notRectangle = WhyNotAnAxisAlignedRectangle(window);
+  if (!notRectangle.empty())
   {
-    throw InputError("the Brassel-Reif sweep needs an axis-aligned rectangular window; this one "
-                     "has " +
-      std::to_string(window.Vertices().size()) + " sides or slanted ones");
+    throw InputError(
+      "the Brassel-Reif sweep needs an axis-aligned rectangular window: " + notRectangle);
   }
   CheckSidesAreDoubles(window);
   const Box2 bounds = BoundsOf(window.Vertices().data(), window.Vertices().size());
@@ -1434,7 +1455,9 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
   // floating-point ranges of the search, which give up outside 1e-70 .. 1e70, effective.
   int scale = 0;
   {
-    const double extent = bounds.LargerSide();
+    // (a window wider than the doubles reach, such as x from -9e307 to 9e307: its magnitude)
+    const double side = bounds.LargerSide();
+    const double extent = std::isfinite(side) ? side : bounds.LargestMagnitude();
     if (std::isfinite(extent) && extent > 0.0)
     {
       const int e = std::ilogb(extent);
@@ -1452,6 +1475,16 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
     std::ldexp(xmax, scale),
     std::ldexp(ymin, scale),
     std::ldexp(ymax, scale) };
+  // The dummy points are the points reflected across the sides, 2 side - p: beyond a quarter of
+  // the largest double they overflow (the sweep then found no dummy point, a logic_error).
+  if (!(scaled.LargestMagnitude() < std::numeric_limits<double>::max() / 4))
+  {
+    throw InputError("the Brassel-Reif sweep reflects the points across the window's sides, "
+                     "which overflows for a window reaching " +
+      NumberText(bounds.LargestMagnitude()) +
+      " (beyond some 4e307) that cannot be scaled down exactly with its points: scale them down "
+      "(the filter vtkDirichletTessellation does)");
+  }
   for (std::size_t i = 0; i < points.size(); ++i)
   {
     const Point2& p = points[i];

@@ -80,6 +80,7 @@
 #include "window.h"
 
 #include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -97,14 +98,19 @@ struct SweepSearchCounts
 
 struct ThiessenSweepResult
 {
-  TileSet Tiles; ///< same layout as ComputeTiles (one tile per accepted id, ascending)
+  /// One tile per accepted id, in ascending id order, as a TileSet (tiles.h). ComputeTiles gives
+  /// the Green-Sibson engine's tiles in its spatial order, and each tile may start at another
+  /// corner: compare the two by PointIds, each ring up to its first corner.
+  TileSet Tiles;
   /// Per corner of Tiles.Vertices, the Thiessen vertex it is, numbered from 0 in the order the
   /// corners first come: tiles that meet at a vertex name it alike (a mesh, MeshOfNumberedCorners
   /// in tiles.h), and distinct vertices that a tile lists once, as they round to one point, are
   /// one.
   std::vector<std::int32_t> CornerVertexIds;
-  ContiguityGraph Contiguities;          ///< same layout as ComputeContiguityGraph
-  std::vector<std::int32_t> RejectedIds; ///< ascending
+  /// As ComputeContiguityGraph's (each pair once, its kind), sorted by the pair's first id, where
+  /// ComputeContiguityGraph's come in the engine's order: compare them as sets.
+  ContiguityGraph Contiguities;
+  std::vector<std::int32_t> RejectedIds;                         ///< ascending
   std::vector<std::pair<std::int32_t, std::int32_t>> Duplicates; ///< (duplicate, kept), ascending
   std::vector<SweepSearchCounts> Counts; ///< per tile, in the order of Tiles.PointIds
   std::size_t VertexCount = 0;           ///< Thiessen vertices stored (each once)
@@ -118,9 +124,16 @@ struct ThiessenSweepResult
 /// as the user gave it.
 void CheckSidesAreDoubles(const Window& window);
 
+/// Why the window is no axis-aligned rectangle, for a message: the first of its effective
+/// constraints whose side is slanted, by its name ("window constraint 2 gives a slanted side,
+/// 1 x + 1 y - 1.9 < 0 (as scaled)"), or its number of sides; empty for an axis-aligned rectangle.
+std::string WhyNotAnAxisAlignedRectangle(const Window& window);
+
 /// Runs the procedure on all points (ids are their indices). Throws InputError if the window is
-/// not an axis-aligned rectangle whose sides lie at doubles (x < 1/3, as 3x - 1 < 0, lies at none:
-/// see CheckSidesAreDoubles), or naming the first point with a NaN or infinite coordinate.
+/// not an axis-aligned rectangle (WhyNotAnAxisAlignedRectangle) whose sides lie at doubles (x <
+/// 1/3, as 3x - 1 < 0, lies at none: see CheckSidesAreDoubles), when its points reflected across
+/// its sides would overflow (coordinates beyond some 4e307 that cannot be scaled down exactly), or
+/// naming the first point with a NaN or infinite coordinate.
 ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector<Point2>& points);
 
 } // namespace tessera

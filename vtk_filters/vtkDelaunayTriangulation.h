@@ -4,11 +4,13 @@
  *
  * vtkDelaunayTriangulation computes the Delaunay faces of the input points (x, y used), the dual
  * of vtkDirichletTessellation's tiles, with exact predicates. The output keeps every input point
- * in input order (point data passed as it is, global ids included), with one polygon per Delaunay
+ * in input order (point data passed as it is, global ids included), with one cell per Delaunay
  * face of the accepted, distinct points: a face whose 4 or more points are exactly co-circular is
- * one polygon, unless SplitDegenerateFaces is on, when it becomes a fan of triangles from its
- * smallest point id. The result does not depend on the order of the points. The cell array uses
- * 32-bit storage (read by VTK like the 64-bit kind).
+ * one cell, unless SplitDegenerateFaces is on, when it becomes a fan of triangles from its
+ * smallest point id. A face's cell type is by its size: VTK_TRIANGLE for 3 points, VTK_QUAD for 4
+ * (a square lattice's faces), VTK_POLYGON for more; count faces by cells, not by one type. The
+ * result does not depend on the order of the points. The cell array uses 32-bit storage (read by
+ * VTK like the 64-bit kind).
  *
  * Only points strictly inside the window take part (see vtkDirichletTessellation for the window:
  * WindowBounds, constraints, Padding); the rest are listed, never dropped silently. Field data:

@@ -65,12 +65,13 @@ TessellationResult RunGreenSibson(tessera::Window window,
 TessellationResult RunBrasselReif(const tessera::Window& window,
   std::vector<tessera::Point2> points)
 {
-  if (!window.IsAxisAlignedRectangle())
+  const std::string notRectangle = tessera::WhyNotAnAxisAlignedRectangle(window);
+  if (!notRectangle.empty())
   {
     throw tessera::InputError("the Brassel-Reif algorithm (BrasselReif) needs a window that is a "
                               "rectangle with sides parallel to the axes (WindowBounds, or "
-                              "constraints that make one); use Green-Sibson (GreenSibson) for "
-                              "other windows");
+                              "constraints that make one), and " +
+      notRectangle + "; use Green-Sibson (GreenSibson) for other windows");
   }
   tessera::ThiessenSweepResult sweep = tessera::ComputeThiessenSweep(window, points);
   return { tessera::MeshOfNumberedCorners(std::move(sweep.Tiles), sweep.CornerVertexIds),
@@ -586,8 +587,11 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
 void vtkDirichletTessellation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Algorithm: " << (this->Algorithm == BRASSEL_REIF ? "BrasselReif" : "GreenSibson")
-     << "\n";
+  os << indent << "Algorithm: "
+     << (this->Algorithm == BRASSEL_REIF      ? "BrasselReif"
+            : this->Algorithm == GREEN_SIBSON ? "GreenSibson"
+                                              : "(not one of them)")
+     << " (" << this->Algorithm << ")\n";
   os << indent << "WindowBounds: " << this->WindowBounds[0] << ", " << this->WindowBounds[1] << ", "
      << this->WindowBounds[2] << ", " << this->WindowBounds[3] << "\n";
   os << indent << "WindowConstraints: " << this->GetNumberOfWindowConstraints() << "\n";

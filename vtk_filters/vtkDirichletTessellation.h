@@ -87,8 +87,9 @@
  * tiles (where a Voronoi vertex lies against a window side) are exact for nonzero coordinates
  * within about 1e-60 .. 1e60 in magnitude: coordinates of some 1e100 or 1e-100 are therefore
  * scaled by a power of two (exactly) into that range and the tiles scaled back, so the tiles of
- * points scaled by s are those of the points, scaled (areas by s^2, which overflow beyond about
- * 1e154 and underflow to 0 below about 1e-154). A point inside the window with a coordinate
+ * points scaled by s are those of the points, scaled (areas by s^2: a window whose area
+ * overflows, of sides beyond about 1e154, is an error saying so, and areas underflow to 0 below
+ * about 1e-154). A point inside the window with a coordinate
  * nonzero but below 2^-200 (some 6e-61) of the window's reach (its largest corner coordinate),
  * where those products underflow whatever the scale, is an error naming it (GreenSibson; the
  * BrasselReif sweep's tests keep their range), and so is one that cannot be scaled exactly

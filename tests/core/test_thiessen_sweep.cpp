@@ -734,8 +734,29 @@ TEST(ThiessenSweep, Errors)
   {
     EXPECT_NE(std::string(e.what()).find("point 1"), std::string::npos) << e.what();
   }
+  // A window of slanted sides: the message names the first.
   const Window triangle({ { -1, 0, 0 }, { 0, -1, 0 }, { 1, 1, -1 } });
-  EXPECT_THROW(ComputeThiessenSweep(triangle, { { 0.2, 0.2 } }), InputError);
+  try
+  {
+    ComputeThiessenSweep(triangle, { { 0.2, 0.2 } });
+    ADD_FAILURE() << "no error for a triangle";
+  }
+  catch (const InputError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find(
+                "window constraint 2 gives a slanted side, 1 x + 1 y - 1 < 0 (as scaled)"),
+      std::string::npos)
+      << e.what();
+  }
+  // Windows whose points reflected across a side overflow: wider than the doubles reach (scaled
+  // down exactly, then swept), or reaching 1.7e308 with a height of 1e-20, which cannot be scaled
+  // down exactly (an InputError). Both threw a logic_error, no dummy point being found.
+  const ThiessenSweepResult wide =
+    ComputeThiessenSweep(Window::Rectangle(-9e307, 9e307, -1, 1), { { 0.5, 0 }, { -0.5, 0 } });
+  ASSERT_EQ(wide.Tiles.PointIds.size(), 2U);
+  EXPECT_EQ(wide.Contiguities.Kinds.size(), 1U);
+  EXPECT_THROW(ComputeThiessenSweep(Window::Rectangle(0, 1.7e308, 0, 1e-20), { { 1e300, 5e-21 } }),
+    InputError);
 }
 
 // A window whose side lies at no double (3x - 1 < 0: x < 1/3) is refused, naming the constraint:

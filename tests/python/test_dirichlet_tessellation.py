@@ -337,7 +337,9 @@ def test_brassel_reif_refuses_a_non_rectangular_window():
     f.AddWindowConstraint(1, 1, -1.5)  # x + y < 1.5 cuts a corner
     f.SetAlgorithmToBrasselReif()
     f.Update()
-    assert_that(len(messages) == 1 and "a rectangle with sides parallel to the axes" in messages[0], f"clear error: {messages}")
+    assert_that(len(messages) == 1 and "a rectangle with sides parallel to the axes" in messages[0]
+                and "window constraint 0 gives a slanted side, 1 x + 1 y - 1.5 < 0" in messages[0],
+                f"clear error naming the constraint: {messages}")
     # Constraints that leave a rectangle (x < 0.5 here) are taken, as the message says.
     f.RemoveAllWindowConstraints()
     f.AddWindowConstraint(1, 0, -0.5)
@@ -1334,6 +1336,10 @@ def test_an_algorithm_that_is_no_choice_is_named():
     f.Update()
     assert_that(len(errors) == 1 and "Algorithm 7 is not one of 0 (GreenSibson), 1 (BrasselReif)" in errors[0]
                 and f.GetOutput(0).GetNumberOfCells() == 0, f"{errors}")
+    # and PrintSelf says what it holds (it said GreenSibson)
+    assert_that("Algorithm: (not one of them) (7)" in str(f), "PrintSelf")
+    f.SetAlgorithmToBrasselReif()
+    assert_that("Algorithm: BrasselReif (1)" in str(f), "PrintSelf")
 
 
 
