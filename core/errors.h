@@ -10,6 +10,17 @@
 namespace tessera
 {
 
+/// A long computation stopped at its caller's request (its progress callback returned false):
+/// not an error; the caller drops what was made.
+class Cancelled : public std::runtime_error
+{
+public:
+  Cancelled()
+    : std::runtime_error("stopped at the caller's request")
+  {
+  }
+};
+
 /// Bad input: the message names the bad value and where it is ("point 17 has a NaN coordinate").
 class InputError : public std::invalid_argument
 {

@@ -30,6 +30,7 @@
 #include "predicates_inline.h"
 
 #include <algorithm>
+#include <functional>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -133,7 +134,8 @@ public:
     std::vector<double> ys,
     std::vector<std::int32_t> ids);
 
-  void Run();
+  /// Sweeps every centroid; progress (if any) as ComputeThiessenSweep's.
+  void Run(const std::function<bool(double)>& progress);
 
   // Results. Every Thiessen vertex is stored once, in Vertices; tiles refer to them by index.
   std::vector<Point2> Vertices;
@@ -475,7 +477,7 @@ void Sweep::AddRecord(std::int32_t c, std::int32_t in, std::int32_t out, std::in
   this->Head[c] = e;
 }
 
-void Sweep::Run()
+void Sweep::Run(const std::function<bool(double)>& progress)
 {
   this->BuildIndex();
   this->Head.assign(this->M, -1);
@@ -516,6 +518,10 @@ void Sweep::Run()
   this->ProcessCentroid(first);
   for (std::int32_t s = 0; s < this->M; ++s)
   {
+    if (progress && s % 64 == 0 && !progress(static_cast<double>(s) / this->M))
+    {
+      throw Cancelled();
+    }
     if (s != first)
     {
       this->ProcessCentroid(s);
@@ -1412,7 +1418,9 @@ std::string WhyNotAnAxisAlignedRectangle(const Window& window)
   return "it has " + std::to_string(sides.size()) + " sides";
 }
 
-ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector<Point2>& points)
+ThiessenSweepResult ComputeThiessenSweep(const Window& window,
+  const std::vector<Point2>& points,
+  const std::function<bool(double)>& progress)
 {
   const std::string notRectangle = WhyNotAnAxisAlignedRectangle(window);
   if (!notRectangle.empty())
@@ -1560,7 +1568,7 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector
     std::move(xs),
     std::move(ys),
     std::move(ids));
-  sweep.Run();
+  sweep.Run(progress);
   result.VertexCount = sweep.Vertices.size();
   result.DegenerateVertexCount = sweep.DegenerateVertices;
 

@@ -80,6 +80,7 @@
 #include "window.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -134,6 +135,11 @@ std::string WhyNotAnAxisAlignedRectangle(const Window& window);
 /// 1/3, as 3x - 1 < 0, lies at none: see CheckSidesAreDoubles), when its points reflected across
 /// its sides would overflow (coordinates beyond some 4e307 that cannot be scaled down exactly), or
 /// naming the first point with a NaN or infinite coordinate.
-ThiessenSweepResult ComputeThiessenSweep(const Window& window, const std::vector<Point2>& points);
+/// progress, if given, is called with the fraction of the points swept, every 64 points; when it
+/// returns false the sweep stops and throws Cancelled (the sweep's bad cases, points along one
+/// slanted line or circle, take a minute at 10^4 points: a viewer can offer to stop them).
+ThiessenSweepResult ComputeThiessenSweep(const Window& window,
+  const std::vector<Point2>& points,
+  const std::function<bool(double)>& progress = nullptr);
 
 } // namespace tessera

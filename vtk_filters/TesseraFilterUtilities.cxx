@@ -461,6 +461,24 @@ void ListNonEmptyFieldArraysFirst(vtkDataObject* data)
   }
 }
 
+std::function<bool(double)> StageProgress(vtkAlgorithm* algorithm, double from, double to)
+{
+  return [algorithm, from, to](double fraction)
+  {
+    algorithm->UpdateProgress(from + fraction * (to - from));
+    return !algorithm->GetAbortExecute();
+  };
+}
+
+void ProgressOrStop(vtkAlgorithm* algorithm, double fraction)
+{
+  algorithm->UpdateProgress(fraction);
+  if (algorithm->GetAbortExecute())
+  {
+    throw tessera::Cancelled();
+  }
+}
+
 bool IsClosedLine(vtkDataSet* data, vtkIdList* ids)
 {
   const vtkIdType n = ids->GetNumberOfIds();

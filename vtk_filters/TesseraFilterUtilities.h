@@ -13,12 +13,14 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
 class vtkAbstractArray;
+class vtkAlgorithm;
 class vtkAlgorithmOutput;
 class vtkCompositeDataIterator;
 class vtkCompositeDataSet;
@@ -40,6 +42,15 @@ std::vector<tessera::Point2> CopyPoints2D(vtkPoints* points);
 
 /// CopyPoints2D, throwing tessera::InputError naming the first point with a NaN or infinite x or y.
 std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points);
+
+/// A core progress callback for a stage of algorithm's run, from fraction `from` to `to` of it:
+/// it updates the algorithm's progress and returns false once its AbortExecute is set (a
+/// progress observer asked it to stop; the core then throws tessera::Cancelled).
+std::function<bool(double)> StageProgress(vtkAlgorithm* algorithm, double from, double to);
+
+/// Sets algorithm's progress to fraction and throws tessera::Cancelled when its AbortExecute is
+/// set: between stages of a run, where nothing is left half made.
+void ProgressOrStop(vtkAlgorithm* algorithm, double fraction);
 
 /// The data of an upstream connection, brought up to date (for a RequestInformation that needs
 /// the input's data: the areal average's time steps, the ridge grouping's image extent).

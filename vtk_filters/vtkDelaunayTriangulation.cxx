@@ -140,8 +140,9 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     // scaled back; every decision then stays within the predicates' exact range.
     window = tessera_vtk::CutToPoints(std::move(window), points);
     tessera::ScaleIntoExactRange(window, points);
+    tessera_vtk::ProgressOrStop(this, 0.1);
     const tessera::DirichletTessellation tessellation(std::move(window), std::move(points));
-    this->UpdateProgress(0.7);
+    tessera_vtk::ProgressOrStop(this, 0.7);
 
     if (input->GetPoints())
     {
@@ -176,6 +177,11 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
                       << " (Dirichlet Tessellation gives their tiles, strips across the window)");
     }
     tessera_vtk::ListNonEmptyFieldArraysFirst(output);
+    return 1;
+  }
+  catch (const tessera::Cancelled&)
+  {
+    output->Initialize(); // (AbortExecute set by a progress observer: no error)
     return 1;
   }
   catch (const std::exception& e)

@@ -1116,6 +1116,11 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
     tessera_vtk::ListNonEmptyFieldArraysFirst(tilesOutput);
     return 1;
   }
+  catch (const tessera::Cancelled&)
+  {
+    this->DiscardResults(outputVector); // (AbortExecute set by a progress observer: no error)
+    return 1;
+  }
   catch (const std::exception& e)
   {
     vtkErrorMacro(<< e.what());
@@ -1525,7 +1530,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   {
     if (step % 16 == 0)
     {
-      this->UpdateProgress(0.9 * static_cast<double>(step) / in.Times.size());
+      tessera_vtk::ProgressOrStop(this, 0.9 * static_cast<double>(step) / in.Times.size());
     }
     const tessera::ArealStep result = in.Average->Step(in.Values[step]);
     timeColumn->InsertNextValue(in.Times[step]);

@@ -581,6 +581,11 @@ int vtkWindowClip::RequestData(vtkInformation*,
     tessera_vtk::ListNonEmptyFieldArraysFirst(output);
     return 1;
   }
+  catch (const tessera::Cancelled&)
+  {
+    output->Initialize(); // (AbortExecute set by a progress observer: no error)
+    return 1;
+  }
   catch (const std::exception& e)
   {
     vtkErrorMacro(<< e.what());
@@ -607,7 +612,7 @@ std::vector<std::string> vtkWindowClip::ClipTilesOf(vtkPointSet* tiles,
       exponent,
       output,
       [&](double fraction)
-      { this->UpdateProgress(progressFrom + fraction * (progressTo - progressFrom)); },
+      { tessera_vtk::ProgressOrStop(this, progressFrom + fraction * (progressTo - progressFrom)); },
       warnings);
   }
   catch (const tessera::NotConvexError& e)

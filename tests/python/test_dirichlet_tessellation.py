@@ -10,8 +10,9 @@ import numpy as np
 from vtkmodules.vtkCommonCore import vtkCommand, vtkIdList
 from vtkmodules.vtkFiltersCore import vtkDelaunay2D
 
-from tessera import vtkDelaunayTriangulation, vtkDirichletTessellation
-from tessera_testing import assert_close, assert_that, double_array, make_points, messages_of, run, warnings_of_update
+from tessera import vtkDelaunayTriangulation, vtkDirichletTessellation, vtkWindowClip
+from tessera_testing import (assert_close, assert_that, double_array, make_points, messages_of, polygon, run,
+                             warnings_of_update)
 
 
 def tessellate(data, bounds=None, algorithm="GreenSibson"):
@@ -1394,8 +1395,69 @@ def test_brassel_reif_names_a_side_that_lies_at_no_double_as_it_was_given():
         assert_that(len(errors) == 1 and f.GetOutput(0).GetNumberOfCells() == 2, f"{s}: Green-Sibson: {errors}")
 
 
+def stopped_then_rerun(f, stop_after):
+    """Runs f with a progress observer that sets AbortExecute at the first progress above
+    stop_after (below 1); returns (the progress values of that run, the errors, the output's cell
+    count), then resets AbortExecute, runs f again after Modified() and returns its cell count."""
+    seen, errors = [], messages_of(f)
+
+    def on_progress(caller, _):
+        seen.append(caller.GetProgress())
+        if stop_after < caller.GetProgress() < 1.0 and len(seen) < 1000:
+            caller.SetAbortExecute(1)
+
+    tag = f.AddObserver(vtkCommand.ProgressEvent, on_progress)
+    f.Update()
+    stopped = (list(seen), list(errors), f.GetOutputDataObject(0).GetNumberOfCells())
+    f.RemoveObserver(tag)
+    f.SetAbortExecute(0)  # (this VTK keeps the flag set: the caller clears it)
+    f.Modified()
+    f.Update()
+    return stopped, f.GetOutputDataObject(0).GetNumberOfCells()
+
+
+def test_a_progress_observer_can_stop_a_run():
+    """Progress goes up by stages (the Brassel-Reif sweep every 64 points: its bad case, points on
+    one circle, took a minute at 10^4 without a word between 0.1 and 0.8), and AbortExecute, set
+    by a progress observer, stops each filter at its next stage: empty outputs, no error (it ran
+    to the end whatever was asked); cleared, the next run gives the whole output."""
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+    circle = make_points([(0.5 + 0.4 * math.cos(2 * math.pi * k / 1500), 0.5 + 0.4 * math.sin(2 * math.pi * k / 1500))
+                          for k in range(1500)])
+    sweep = vtkDirichletTessellation()
+    sweep.SetInputData(circle)
+    sweep.SetWindowBounds(0, 1, 0, 1)
+    sweep.SetAlgorithmToBrasselReif()
+    (seen, errors, cells), rerun = stopped_then_rerun(sweep, 0.2)
+    assert_that(not errors and cells == 0 and rerun == 1500, f"sweep: {errors}, {cells}, {rerun}")
+    assert_that(seen[-1] == 1.0 and 0.2 < seen[-2] < 0.3 and len(seen) < 15, f"stopped at once: {seen}")
+    full = []
+    sweep.AddObserver(vtkCommand.ProgressEvent, lambda caller, _: full.append(caller.GetProgress()))
+    sweep.Modified()
+    sweep.Update()
+    inner = [p for p in full if 0.1 < p < 0.75]
+    assert_that(len(inner) >= 20 and inner == sorted(inner), f"the sweep's progress: {len(inner)} steps")
+
+    rng = random.Random(4)
+    points = make_points([(rng.random(), rng.random()) for _ in range(5000)])
+    tiles = vtkDirichletTessellation()
+    tiles.SetInputData(points)
+    triangles = vtkDelaunayTriangulation()
+    triangles.SetInputData(points)
+    clip = vtkWindowClip()  # (progress every 4096 tiles)
+    clip.SetInputConnection(tiles.GetOutputPort(0))
+    clip.SetWindowData(polygon([[(0.1, 0.1), (0.9, 0.1), (0.9, 0.9), (0.1, 0.9)]]))
+    for name, f, count in (("tiles", tiles, 5000), ("triangles", triangles, None), ("clip", clip, None)):
+        (seen, errors, cells), rerun = stopped_then_rerun(f, 0.05)
+        assert_that(not errors and cells == 0 and rerun > 0 and rerun == (count or rerun),
+                    f"{name}: {errors}, {cells}, {rerun}")
+    assert_that(isinstance(tiles.GetOutputDataObject(1), vtkPolyData), "the graph's output kept its type")
+
+
 if __name__ == "__main__":
-    run([test_tiles_are_nearest_point_regions,
+    run([test_a_progress_observer_can_stop_a_run,
+         test_tiles_are_nearest_point_regions,
          test_brassel_reif_names_a_side_that_lies_at_no_double_as_it_was_given,
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
          test_square_lattice_has_square_tiles_and_diagonal_half_neighbours,
