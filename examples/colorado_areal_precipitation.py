@@ -1648,7 +1648,10 @@ class InputFiles:
         def line(m):
             found = self.row_line(int(m.group(1)))
             return f"line {found}" if found else f"{m.group(0)} (a row added for a {self.unit} without rows)"
-        return re.sub(r"\brow (\d+)\b", line, re.sub(r" \(rows from 0, listed in [^)]*\)", "", text))
+        text = re.sub(r"\brow (\d+)\b", line, re.sub(r" \(rows from 0, listed in [^)]*\)", "", text))
+        # (a wide file's line holds the value used too: "line 3 (station B) (line 3 used)")
+        return re.sub(r"line (\d+) \(station ([^)]*)\) \(line \1 used\)",
+                      r"line \1 (station \2; the line's value of the earlier gauge at its place used)", text)
 
     def place_word(self):
         """What a gauge's number in gauge_lines is: "line" of a CSV file, "feature" of a GIS file."""

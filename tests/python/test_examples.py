@@ -1071,6 +1071,16 @@ def test_a_wide_file_of_a_column_per_station_gives_the_long_files_means():
                 if r["kind"] == "observation before --start or after --end"]
         assert_that("4 observation(s) outside --start/--end are not used" in stderr
                     and runs == [("2-3", "4 observations of 4 stations")], f"before --start: {runs} {stderr}")
+        # A gauge at the place of another, both reporting on a line: the line holds the value used
+        # too (it read "line 2 (station 107) (line 2 used)").
+        shared = os.path.join(directory, "shared.csv")
+        write_stations(shared, {**{ids[name]: place for name, place in LAKE_GAUGES.items()}, "0107": LAKE_GAUGES["N1"]})
+        two = write(directory, "two.csv", "date,101,107\n2001-01-30,1,2\n")
+        _, stderr = run_colorado(os.path.join(directory, "two"), stations=shared, observations=two,
+                                 catchment=catchment, plots=False, what="two gauges at one place")
+        said = [m for m in stderr_messages(stderr) if "at the place of another" in m]
+        assert_that(len(said) == 1 and said[0].endswith(
+            ": line 2 (station 107; the line's value of the earlier gauge at its place used)"), f"{said}")
         # A date given on two rows is named, by its lines.
         twice = write(directory, "twice.csv", "date,101,102\n2001-01-30,1,\n2001-01-31,2,3\n2001-01-30,4,5\n")
         _, stderr = run_colorado(os.path.join(directory, "twice"), stations=stations, observations=twice,
