@@ -2593,6 +2593,9 @@ def main(argv=None):
              if valid else ""))
     for step, _, per_gauge in shown:
         used, weighted, mean = step_counts(rows, step)
+        if used == 0:  # (its weights file and tiles are empty: said, not "areal mean nan")
+            print(f"{steps.text(step)}: no gauge reported, so no areal mean; its weights and tiles files are empty")
+            continue
         print(f"{steps.text(step)}: areal mean {mean:.3f}, {used} gauges reported, "
               f"{weighted} weighted; weights sum to {sum(e['weight'] for e in per_gauge.values()):.12f}")
     print(f"wrote {args.out}/areal_mean.csv, " + ("" if args.no_all_weights else f"{all_weights}, ")

@@ -247,7 +247,7 @@ def test_missing_values_keep_their_months():
         got = [(r["year"], r["month"], r["stations_used"], r["areal_mean"]) for r in rows]
         assert_that(got == [("1950", "11", "1", "1.5"), ("1950", "12", "0", ""), ("1951", "1", "0", ""),
                             ("1951", "2", "0", ""), ("1951", "3", "1", "2.5")], f"every month listed: {got}")
-        assert_that("1951-01: areal mean nan, 0 gauges reported" in stdout, f"the chosen empty month: {stdout}")
+        assert_that("1951-01: no gauge reported, so no areal mean" in stdout, f"the chosen empty month: {stdout}")
         # A month whose only row names a station that is not in the stations file (the filter
         # makes no step of it) is a month where no gauge reported, and the first row's station
         # may be such a one.
@@ -642,7 +642,8 @@ def test_a_month_without_reports_still_gets_its_map():
         got = [(r["month"], r["stations_used"], r["areal_mean"]) for r in read_csv(os.path.join(out, "areal_mean.csv"))]
         assert_that(got == [("1", "2", got[0][2]), ("2", "0", ""), ("3", "2", got[2][2])] and got[0][2] and got[2][2],
                     f"areal_mean.csv: {got}")
-        assert_that("2001-02: areal mean nan, 0 gauges reported, 0 weighted" in stdout, f"the empty month: {stdout}")
+        assert_that("2001-02: no gauge reported, so no areal mean; its weights and tiles files are empty" in stdout,
+                    f"the empty month: {stdout}")
 
 
 def test_the_time_series_breaks_at_months_without_a_mean():
