@@ -219,9 +219,9 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     }
     const std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
     const tessera::RidgeGrouping grouping(CoreSettings(this));
-    this->UpdateProgress(0.05);
+    tessera_vtk::ProgressOrStop(this, 0.05);
     const tessera::RidgeGroupingResult result = grouping.Run(points);
-    this->UpdateProgress(0.9);
+    tessera_vtk::ProgressOrStop(this, 0.9);
     for (const std::string& warning : result.Warnings)
     {
       vtkWarningMacro(<< warning);
@@ -368,6 +368,15 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     {
       tessera_vtk::ListNonEmptyFieldArraysFirst(output);
     }
+    return 1;
+  }
+  catch (const tessera::Cancelled&)
+  {
+    // (AbortExecute set by a progress observer: empty outputs, and no error)
+    pointsOut->Initialize();
+    contoursOut->Initialize();
+    curvesOut->Initialize();
+    imageOut->Initialize();
     return 1;
   }
   catch (const std::exception& e)

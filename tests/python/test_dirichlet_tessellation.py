@@ -1395,10 +1395,10 @@ def test_brassel_reif_names_a_side_that_lies_at_no_double_as_it_was_given():
         assert_that(len(errors) == 1 and f.GetOutput(0).GetNumberOfCells() == 2, f"{s}: Green-Sibson: {errors}")
 
 
-def stopped_then_rerun(f, stop_after):
+def stopped_then_rerun(f, stop_after, size=lambda data: data.GetNumberOfCells()):
     """Runs f with a progress observer that sets AbortExecute at the first progress above
-    stop_after (below 1); returns (the progress values of that run, the errors, the output's cell
-    count), then resets AbortExecute, runs f again after Modified() and returns its cell count."""
+    stop_after (below 1); returns (the progress values of that run, the errors, the size of output
+    0: its cells), then resets AbortExecute, runs f again after Modified() and returns its size."""
     seen, errors = [], messages_of(f)
 
     def on_progress(caller, _):
@@ -1408,12 +1408,12 @@ def stopped_then_rerun(f, stop_after):
 
     tag = f.AddObserver(vtkCommand.ProgressEvent, on_progress)
     f.Update()
-    stopped = (list(seen), list(errors), f.GetOutputDataObject(0).GetNumberOfCells())
+    stopped = (list(seen), list(errors), size(f.GetOutputDataObject(0)))
     f.RemoveObserver(tag)
     f.SetAbortExecute(0)  # (this VTK keeps the flag set: the caller clears it)
     f.Modified()
     f.Update()
-    return stopped, f.GetOutputDataObject(0).GetNumberOfCells()
+    return stopped, size(f.GetOutputDataObject(0))
 
 
 def test_a_progress_observer_can_stop_a_run():
@@ -1453,6 +1453,12 @@ def test_a_progress_observer_can_stop_a_run():
         assert_that(not errors and cells == 0 and rerun > 0 and rerun == (count or rerun),
                     f"{name}: {errors}, {cells}, {rerun}")
     assert_that(isinstance(tiles.GetOutputDataObject(1), vtkPolyData), "the graph's output kept its type")
+    from tessera import vtkRidgeGrouping
+
+    grouping = vtkRidgeGrouping()  # (progress before and after its core)
+    grouping.SetInputData(make_points([(0.01 * k, 0.3 * math.sin(0.05 * k) + rng.gauss(0, 0.01)) for k in range(300)]))
+    (seen, errors, points), rerun = stopped_then_rerun(grouping, 0.01, lambda data: data.GetNumberOfPoints())
+    assert_that(not errors and points == 0 and rerun == 300, f"grouping: {errors}, {points}, {rerun}")
 
 
 if __name__ == "__main__":
