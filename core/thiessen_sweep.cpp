@@ -1409,10 +1409,7 @@ std::string WhyNotAnAxisAlignedRectangle(const Window& window)
     const HalfPlane& h = sides[k];
     if (h.a != 0.0 && h.b != 0.0)
     {
-      const auto signed_ = [](double v)
-      { return (v < 0.0 ? " - " : " + ") + NumberText(std::fabs(v)); };
-      return window.ConstraintName(window.EffectiveIds()[k]) + " gives a slanted side, " +
-        NumberText(h.a) + " x" + signed_(h.b) + " y" + signed_(h.c) + " < 0 (as scaled)";
+      return window.ConstraintName(window.EffectiveIds()[k]) + " gives a slanted side";
     }
   }
   return "it has " + std::to_string(sides.size()) + " sides";

@@ -126,8 +126,8 @@ struct ThiessenSweepResult
 void CheckSidesAreDoubles(const Window& window);
 
 /// Why the window is no axis-aligned rectangle, for a message: the first of its effective
-/// constraints whose side is slanted, by its name ("window constraint 2 gives a slanted side,
-/// 1 x + 1 y - 1.9 < 0 (as scaled)"), or its number of sides; empty for an axis-aligned rectangle.
+/// constraints whose side is slanted, by its name ("window constraint 2 gives a slanted side"),
+/// or its number of sides; empty for an axis-aligned rectangle.
 std::string WhyNotAnAxisAlignedRectangle(const Window& window);
 
 /// Runs the procedure on all points (ids are their indices). Throws InputError if the window is

@@ -308,14 +308,17 @@ def read_gauge_points(path, id_field=None):
                        + (f"; GDAL: {reasons[0]}" if reasons else ""))
     say_gdal_messages(path, gdal)
     numbered = list(enumerate(blocks, 1))
-    points = [(k, block) for k, block in numbered if block.GetNumberOfCells() == 1 and block.GetCellType(0) == VTK_VERTEX]
-    if reader.GetNumberOfLayers() > 1 and points and len(points) < len(numbered):
-        # A GeoPackage of the gauges beside the catchment: the layers of points are the gauges.
-        others = [k for k, _ in numbered if (k, _) not in points]
-        print(f"note: {path}: the gauges are its {len(points)} point feature(s); its other layers' "
+    layers = range(reader.GetNumberOfLayers())
+    point_layers = set(projected_input.layers_of(reader, True))  # (every layer where none is of points)
+    layer_of = [layer for layer in layers for _ in range(reader.GetFeatureCount(layer))]
+    if len(point_layers) < len(layers) and len(layer_of) == len(numbered):
+        # A GeoPackage of the gauges beside the catchment: the layers of points are the gauges
+        # (their features numbered in the whole file, as GDAL gives them).
+        others = [k for k, _ in numbered if layer_of[k - 1] not in point_layers]
+        numbered = [(k, block) for k, block in numbered if layer_of[k - 1] in point_layers]
+        print(f"note: {path}: the gauges are its {len(numbered)} feature(s) of points; its other layers' "
               f"{len(others)} feature(s) ({first_and_more(others, str)}; counted from 1) are not read as gauges",
               file=sys.stderr)
-        numbered = points
     for k, block in numbered:
         if block.GetNumberOfCells() != 1 or block.GetCellType(0) != VTK_VERTEX:
             csv_input.fail(f"{path}: feature {k} is not one point (GDAL reads it as {cell_kinds(block)}, a polygon's "
@@ -340,9 +343,10 @@ def read_gauge_points(path, id_field=None):
         table.add(block.GetPoint(block.GetCell(0).GetPointId(0)), station, attribute_text(name).strip() if name else "")
     gauges = table.data
     xy = [gauges.GetPoint(g)[:2] for g in range(gauges.GetNumberOfPoints())]
-    system = projected_input.declared_system(reader, [xy], path, points=True)
+    system = projected_input.declared_system(reader, [xy], path, points=True,
+                                             point_name=lambda g: f"feature {numbered[g][0]}")
     if system:
-        gauges = projected_input.to_lonlat(gauges, system, lambda g: f"{path}: feature {g + 1}")
+        gauges = projected_input.to_lonlat(gauges, system, lambda g: f"{path}: feature {numbered[g][0]}")
     say_declared_systems(reader, path, system, points=True)
     return gauges, [k for k, _ in numbered]
 
@@ -1481,15 +1485,17 @@ def read_catchment(path, feature=None):
 
 
 def without_point_blocks(data):
-    """(blocks, count): the polydata blocks of a vtkGDALVectorReader's output that have polygons or
-    lines, as a new multiblock, and the number of blocks left out (points only)."""
-    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+    """(blocks, count): the polydata blocks of a vtkGDALVectorReader's output as a new multiblock,
+    each block of points only made an empty one (in its place: the filter's messages number the
+    blocks as the file's features), and the number of those."""
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet, vtkPolyData
 
     kept, left_out = vtkMultiBlockDataSet(), 0
     for block in projected_input.polydata_blocks(data):
         if block.GetNumberOfPolys() or block.GetNumberOfLines() or not block.GetNumberOfVerts():
             kept.SetBlock(kept.GetNumberOfBlocks(), block)
         else:
+            kept.SetBlock(kept.GetNumberOfBlocks(), vtkPolyData())
             left_out += 1
     return kept, left_out
 
@@ -2489,7 +2495,7 @@ def main(argv=None):
                   "its stations from; give your stations file with --stations", file=sys.stderr)
     if args.catchment is None:
         args.catchment = os.path.join(DATA, "colorado_boundary.geojson")
-        if os.path.abspath(args.stations) != os.path.join(os.path.abspath(DATA), "colorado_stations.csv"):
+        if os.path.realpath(args.stations) != os.path.realpath(os.path.join(DATA, "colorado_stations.csv")):
             print(f"note: without --catchment, the catchment is the Colorado example's outline ({args.catchment}); "
                   "give yours with --catchment", file=sys.stderr)
     combined = holds_observations(args.stations, args.observations)

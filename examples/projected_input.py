@@ -223,13 +223,13 @@ def layers_of(reader, points):
     return [layer for layer in layers if layer not in of_points]
 
 
-def declared_system(reader, rings, path, points=False):
+def declared_system(reader, rings, path, points=False, point_name=None):
     """The PlaneSystem that the GIS file (reader: its vtkGDALVectorReader, updated) declares for
     all its layers that hold what is read (layers_of: with points False, a catchment's, a layer of
     points aside), where its coordinates (rings) are metres, most of them out of lon/lat's range (a
     file of lon/lat under a projected declaration is read as lon/lat, and said); else None. A
     projected system that is not read here ends the script naming it, and so does a UTM vertex
-    that no zone holds."""
+    that no zone holds (point_name(k), for points, names the k-th of rings[0])."""
     systems = set()
     for layer in layers_of(reader, points):
         proj4 = reader.GetLayerProjectionAsProj4(layer) or ""
@@ -250,9 +250,10 @@ def declared_system(reader, rings, path, points=False):
                     if not in_utm_range(system, *p)),
                    None) if system.kind == "utm" else None
     if outside:
-        csv_input.fail(f"{path}: ring {outside[0]} vertex {outside[1]} ({outside[2][0]:.15g}, {outside[2][1]:.15g}) "
+        where = point_name(outside[1]) if point_name else f"ring {outside[0]} vertex {outside[1]}"
+        csv_input.fail(f"{path}: {where} ({outside[2][0]:.15g}, {outside[2][1]:.15g}) "
                        f"is not an easting and northing of a UTM zone ({UTM_RANGE}), as the file declares "
-                       f"({system.describe()}; counted from 0)")
+                       f"({system.describe()}{'' if point_name else '; counted from 0'})")
     return system
 
 

@@ -743,9 +743,8 @@ TEST(ThiessenSweep, Errors)
   }
   catch (const InputError& e)
   {
-    EXPECT_NE(std::string(e.what()).find(
-                "window constraint 2 gives a slanted side, 1 x + 1 y - 1 < 0 (as scaled)"),
-      std::string::npos)
+    EXPECT_NE(
+      std::string(e.what()).find("window constraint 2 gives a slanted side"), std::string::npos)
       << e.what();
   }
   // Windows whose points reflected across a side overflow: wider than the doubles reach (scaled

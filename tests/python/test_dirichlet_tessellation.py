@@ -339,7 +339,7 @@ def test_brassel_reif_refuses_a_non_rectangular_window():
     f.SetAlgorithmToBrasselReif()
     f.Update()
     assert_that(len(messages) == 1 and "a rectangle with sides parallel to the axes" in messages[0]
-                and "window constraint 0 gives a slanted side, 1 x + 1 y - 1.5 < 0" in messages[0],
+                and "window constraint 0 gives a slanted side;" in messages[0],
                 f"clear error naming the constraint: {messages}")
     # Constraints that leave a rectangle (x < 0.5 here) are taken, as the message says.
     f.RemoveAllWindowConstraints()
@@ -1441,18 +1441,30 @@ def test_a_progress_observer_can_stop_a_run():
 
     rng = random.Random(4)
     points = make_points([(rng.random(), rng.random()) for _ in range(5000)])
-    tiles = vtkDirichletTessellation()
-    tiles.SetInputData(points)
-    triangles = vtkDelaunayTriangulation()
-    triangles.SetInputData(points)
-    clip = vtkWindowClip()  # (progress every 4096 tiles)
-    clip.SetInputConnection(tiles.GetOutputPort(0))
-    clip.SetWindowData(polygon([[(0.1, 0.1), (0.9, 0.1), (0.9, 0.9), (0.1, 0.9)]]))
-    for name, f, count in (("tiles", tiles, 5000), ("triangles", triangles, None), ("clip", clip, None)):
-        (seen, errors, cells), rerun = stopped_then_rerun(f, 0.05)
-        assert_that(not errors and cells == 0 and rerun > 0 and rerun == (count or rerun),
-                    f"{name}: {errors}, {cells}, {rerun}")
-    assert_that(isinstance(tiles.GetOutputDataObject(1), vtkPolyData), "the graph's output kept its type")
+    window = polygon([[(0.1, 0.1), (0.9, 0.1), (0.9, 0.9), (0.1, 0.9)]])
+
+    def made(name):
+        """The filter of that name on the points, new (the clip's tiles from a tessellation)."""
+        f = {"tiles": vtkDirichletTessellation, "triangles": vtkDelaunayTriangulation, "clip": vtkWindowClip}[name]()
+        if name == "clip":  # (progress every 4096 tiles)
+            tiles = made("tiles")
+            tiles.Update()
+            f.SetInputData(tiles.GetOutput(0))
+            f.SetWindowData(window)
+        else:
+            f.SetInputData(points)
+        return f
+
+    for name in ("tiles", "triangles", "clip"):
+        never_stopped = made(name)
+        never_stopped.Update()
+        count = never_stopped.GetOutputDataObject(0).GetNumberOfCells()
+        (seen, errors, cells), rerun = stopped_then_rerun(made(name), 0.05)
+        assert_that(not errors and cells == 0 and count > 0 and rerun == count,
+                    f"{name}: {errors}, {cells}, {rerun} of {count}")
+    stopped = made("tiles")
+    stopped_then_rerun(stopped, 0.05)
+    assert_that(isinstance(stopped.GetOutputDataObject(1), vtkPolyData), "the graph's output kept its type")
     from tessera import vtkRidgeGrouping
 
     grouping = vtkRidgeGrouping()  # (progress before and after its core)

@@ -141,6 +141,7 @@ def raw_reporting_counts():
 def test_the_colorado_main_job():
     with tempfile.TemporaryDirectory() as out:
         stdout, stderr = run_colorado(out, month="%04d-%02d" % MONTH, what="the main job")
+        assert_that("without --catchment" not in stderr, f"the example's own gauges: no note ({stderr})")
         rows = read_csv(os.path.join(out, "areal_mean.csv"))
         assert_that(list(rows[0]) == ["year", "month", "stations_used", "stations_weighted", "areal_mean"],
                     f"areal_mean.csv columns: {list(rows[0])}")
@@ -2353,7 +2354,7 @@ def geopackage_of(path, layers):
     """Writes a GeoPackage (OGC 12-128r18: an SQLite file with its three tables and a table per
     layer) at path. layers: (name, WKT of its system, "POLYGON" or "POINT", geometries: lists of
     rings, lists of (x, y) each with the first point repeated last, or (x, y) points, or
-    (station_id, (x, y)) pairs for points with a station_id attribute)."""
+    (station_id, (x, y)) pairs for points with a station_id attribute; a geometry None is NULL)."""
     import sqlite3
     import struct
 
@@ -2388,8 +2389,9 @@ def geopackage_of(path, layers):
         db.execute("INSERT INTO gpkg_geometry_columns VALUES (?, 'geom', ?, ?, 0, 0)", (name, kind, srs))
         for geometry in geometries:  # (the header: magic, version 0, flags: little-endian, no envelope; srs)
             station, geometry = geometry if named else (None, geometry)
+            blob = None if geometry is None else b"GP\x00\x01" + struct.pack("<i", srs) + wkb(kind, geometry)
             db.execute(f"INSERT INTO {name} (geom{', station_id' if named else ''}) VALUES (?{', ?' if named else ''})",
-                       (b"GP\x00\x01" + struct.pack("<i", srs) + wkb(kind, geometry),) + ((station,) if named else ()))
+                       (blob,) + ((station,) if named else ()))
     db.commit()
     db.close()
     return path
@@ -2442,9 +2444,22 @@ def test_catchment_geopackage_in_metres_beside_a_layer_of_lon_lat_points():
             ("gauges", wgs84, "POINT", list(LAKE_GAUGES.items()))])
         _, stderr = run_colorado(os.path.join(out, "both"), stations=both, observations=observations, catchment=both,
                                  plots=False, what="both")
-        said = f"note: {both}: the gauges are its 6 point feature(s); its other layers' 1 feature(s) (1; counted from 1)"
+        said = f"note: {both}: the gauges are its 6 feature(s) of points; its other layers' 1 feature(s) (1; counted from 1)"
         assert_that(said in stderr and "not one point" not in stderr, f"{stderr}")
         assert_same_means(read_csv(os.path.join(out, "both", "areal_mean.csv")), want, "gauges and basin in one file")
+        # Its gauges are named by their feature numbers in the whole file (the basin is feature 1):
+        # a gauge 9e7 m off is feature 4, and a gauge without a geometry in the layer of points is
+        # named too, not taken for another layer's feature.
+        far = dict(LAKE_GAUGES, N3=(175.95, 8e2))
+        for name, gauges, fragment in (
+                ("far", list(far.items()), "feature 4: "),
+                ("null", list(LAKE_GAUGES.items()) + [("N7", None)], "feature 8 is not one point")):
+            bad = geopackage_of(os.path.join(out, f"{name}.gpkg"), [
+                ("basin", wkt, "POLYGON", [[systems["lake_aea"][1](ring) for ring in lake_rings_cut()]]),
+                ("gauges", wgs84, "POINT", gauges)])
+            _, stderr = run_colorado(os.path.join(out, name), stations=bad, observations=observations, catchment=bad,
+                                     plots=False, what=name, status=1)
+            assert_that(f"{bad}: {fragment}" in stderr, f"{name}: {stderr}")
 
 
 def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
@@ -2904,6 +2919,10 @@ def test_the_filters_errors_name_the_file_and_line():
         square = [[175.5, -39.2], [176.5, -39.2], [176.5, -38.4], [175.5, -38.4]]
         cut_short = write(out, "cut_short.geojson", json.dumps({"type": "Polygon", "coordinates": [square]})[:-3])
         unclosed = polygon("unclosed.geojson", square)
+        point_then_bow_tie = write(out, "point_bow_tie.geojson", json.dumps({"type": "FeatureCollection", "features": [
+            {"type": "Feature", "properties": {}, "geometry": {"type": "Point", "coordinates": [176.0, -38.9]}},
+            {"type": "Feature", "properties": {}, "geometry": {"type": "Polygon", "coordinates": [
+                [[175.5, -39.2], [176.5, -38.4], [176.5, -39.2], [175.5, -38.4], [175.5, -39.2]]]}}]}))
         points_and_lines = write(out, "points.geojson", json.dumps({"type": "FeatureCollection", "features": [
             {"type": "Feature", "properties": {}, "geometry": {"type": "Point", "coordinates": square[0]}},
             {"type": "Feature", "properties": {}, "geometry": {"type": "LineString", "coordinates": square[:2]}}]}))
@@ -2930,6 +2949,11 @@ def test_the_filters_errors_name_the_file_and_line():
             messages = stderr_messages(stderr)
             assert_that(len(messages) == 1 and messages[0].startswith(expected),
                         f"{arguments}: expected one line starting {expected!r}, got {messages}")
+        # A point feature before the bow tie is left out of the catchment in its place, so that the
+        # blocks named are still the file's features (the bow tie was named block 0).
+        _, stderr = run_colorado(out, what="a point, then the bow tie", status=1, plots=False, stations=stations,
+                                 observations=observations, catchment=point_then_bow_tie)
+        assert_that("(ring 0 is block 1 (composite index 2) cell 0 of the catchment" in stderr, f"{stderr}")
 
 
 def test_the_filters_warnings_are_lines_of_their_own():
