@@ -308,8 +308,8 @@ bool IsFanAbout(const std::vector<Point2>& ring,
 }
 
 /// A vertex about which the ring is a fan (IsFanAbout), vertex 0 first, then the reflex
-/// vertices (a bay's or a hole's corner sees most), then the rest; n if none is found within some
-/// 8 n tests (then the ring is cut, which is never wrong, only more pieces).
+/// vertices (a bay's or a hole's corner sees most), then the rest; n if none is found within
+/// 8 n + 64 orientation tests (then the ring is cut, which is never wrong, only more pieces).
 std::size_t FanApex(const std::vector<Point2>& ring)
 {
   const std::size_t n = ring.size();
@@ -348,10 +348,11 @@ double CrossingHeight(const Point2& a, const Point2& b, double x)
 /// into its parts left and right of it, both anticlockwise, x-monotone, sharing the cut:
 ///
 ///        upper chain  <---+--------              where the line meets a chain at vertices
-///      /                  |         \             (a vertical step of it), the left part takes
-///     +                cut at x       +          the first of them along the chain and the right
-///      \                  |         /             part the last; elsewhere both take the point
-///        lower chain  ----+-------->             interpolated on the edge it crosses
+///      /                  |         \             (a vertical step of it), each part takes the
+///     +                cut at x       +          one nearest to it along the ring: on the lower
+///      \                  |         /             chain the left part the first, on the upper
+///        lower chain  ----+-------->             chain (walked leftwards) the last; elsewhere
+///                                                both take the point interpolated on the edge
 ///
 /// Walking on from a vertex left of the line, the ring first crosses it on its lower chain
 /// (rightwards), then on its upper chain (leftwards).
@@ -644,11 +645,7 @@ private:
     {
       ring.pop_back();
     }
-    if (ring.size() < 3 || CompensatedPolygonArea(ring.data(), ring.size()) <= 0.0)
-    {
-      return;
-    }
-    AppendFans(std::move(ring), this->Done);
+    AppendFans(std::move(ring), this->Done); // (dropped there if it has no area)
   }
 
   double Tolerance;

@@ -40,15 +40,15 @@
 //   |   +---+   |                                |   *---+   |
 //   +-----------+                                +-----+*----+
 //
-// A hole inside a tile thus gives three pieces (the U round it cut in two, and the part above it),
-// whatever its number of vertices (convex pieces would need about half of them); a tile under a
-// wavy shore a piece a wave or so. Pieces do not overlap and their
-// areas sum to the region's (each trapezoid is exactly the region inside its slab); their vertices
-// are the rings' own, plus the points where a piece's vertical side meets an edge. Rounding is
-// allowed for: rings of no area (ClipInto's leftovers of a ring that only runs along the tile's
-// boundary) are dropped first, and slivers between edges that run along one line, no higher than a
-// few ulps of the coordinates (times the edges' steepness), are no part of any piece, so that no
-// piece has a spike along such a line that would cross itself once drawn.
+// A hole inside a tile thus gives three or four pieces (the U round it cut in two, and the part
+// above it, cut too where the hole is round), whatever its number of vertices (convex pieces
+// would need about half of them); a tile under a wavy shore a piece a wave or so. Pieces do not
+// overlap and their areas sum to the region's (each trapezoid is exactly the region inside its
+// slab); their vertices are the rings' own, plus the points where a piece's vertical side meets an
+// edge. Rounding is allowed for: rings of no area (ClipInto's leftovers of a ring that only runs
+// along the tile's boundary) are dropped first, and slivers between edges that run along one line,
+// no higher than a few ulps of the coordinates (times the edges' steepness), are no part of any
+// piece, so that no piece has a spike along such a line that would cross itself once drawn.
 
 #include "clip.h"
 
@@ -62,11 +62,11 @@ namespace tessera
 ClippedRings DisplayPieces(const ClippedRings& rings);
 
 /// A simple anticlockwise ring rotated to start at a vertex about which it is a fan (every
-/// triangle of that vertex and an edge not at it anticlockwise or flat, exactly), if it has one
-/// that a search of some 8 times its size tests finds; left as it is otherwise. Returns whether
-/// it starts at one. (For a piece whose edges were bent after DisplayPieces made it a fan: its
-/// edges densified and taken to lon/lat, where a side that bows inwards leaves the first vertex
-/// short of seeing the whole piece.)
+/// triangle of that vertex and an edge not at it anticlockwise or flat, exactly), if the search
+/// finds one within 8 n + 64 orientation tests for n vertices; left as it is otherwise. Returns
+/// whether it now starts at such a vertex. (For a piece whose edges were bent after DisplayPieces
+/// made it a fan: its edges densified and taken to lon/lat, where a side that bows inwards leaves
+/// the first vertex short of seeing the whole piece.)
 bool StartAtFanApex(std::vector<Point2>& ring);
 
 } // namespace tessera

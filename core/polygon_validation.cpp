@@ -486,8 +486,9 @@ bool MeetsWithinRing(const CleanRings& clean, const Segment& s, const Segment& t
 /// Rings may touch other rings at points, not themselves: a file from ArcGIS may give a lake
 /// touching the outline as one ring that touches itself (a trial's catchment did).
 const char* const SelfContactHint =
-  " (a ring may touch other rings at points, not itself: a ring that touches itself to enclose a "
-  "lake is made an outer ring and a hole by GDAL's ogr2ogr -makevalid or QGIS's Fix Geometries)";
+  " (a ring may touch other rings at points, not itself; a ring that touches itself to enclose a "
+  "lake, as some ArcGIS files have, is made an outer ring and a hole by GDAL's ogr2ogr -makevalid "
+  "or QGIS's Fix Geometries)";
 
 [[noreturn]] void ReportSelfContact(const CleanRings& clean, const Segment& s, const Segment& t)
 {

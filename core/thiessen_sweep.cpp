@@ -1460,21 +1460,31 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window,
   // floating-point ranges of the search, which give up outside 1e-70 .. 1e70, effective.
   int scale = 0;
   {
-    // (a window wider than the doubles reach, such as x from -9e307 to 9e307: its magnitude)
-    const double side = bounds.LargerSide();
-    const double extent = std::isfinite(side) ? side : bounds.LargestMagnitude();
+    const double extent = bounds.LargerSide();
     if (std::isfinite(extent) && extent > 0.0)
     {
       const int e = std::ilogb(extent);
       scale = (e > 64 || e < -64) ? -e : 0;
     }
-    auto exact = [scale](double v) { return std::ldexp(std::ldexp(v, scale), -scale) == v; };
-    bool ok = exact(xmin) && exact(xmax) && exact(ymin) && exact(ymax);
-    for (std::size_t i = 0; i < points.size() && ok && scale != 0; ++i)
+    const auto exactAt = [&](int s)
     {
-      ok = exact(points[i].x) && exact(points[i].y);
+      const auto exact = [s](double v) { return std::ldexp(std::ldexp(v, s), -s) == v; };
+      bool ok = exact(xmin) && exact(xmax) && exact(ymin) && exact(ymax);
+      for (std::size_t i = 0; i < points.size() && ok && s != 0; ++i)
+      {
+        ok = exact(points[i].x) && exact(points[i].y);
+      }
+      return ok;
+    };
+    // A window reaching beyond a quarter of the largest double (its sides wider than the doubles
+    // reach, x from -9e307 to 9e307): a quarter of it is enough for the reflections below, and
+    // loses no bit where scaling it to unit size would (y of 0.3 beside x of 9e307).
+    const bool farReach = !(bounds.LargestMagnitude() < std::numeric_limits<double>::max() / 4);
+    scale = exactAt(scale) ? scale : 0;
+    if (farReach && scale > -2 && exactAt(-2))
+    {
+      scale = -2;
     }
-    scale = ok ? scale : 0;
   }
   const Box2 scaled{ std::ldexp(xmin, scale),
     std::ldexp(xmax, scale),
@@ -1487,8 +1497,8 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window,
     throw InputError("the Brassel-Reif sweep reflects the points across the window's sides, "
                      "which overflows for a window reaching " +
       NumberText(bounds.LargestMagnitude()) +
-      " (beyond some 4e307) that cannot be scaled down exactly with its points: scale them down "
-      "(the filter vtkDirichletTessellation does)");
+      " (beyond some 4e307) that cannot be scaled down exactly with its points (numbers below "
+      "some 1e-308 among them): scale them down (the filter vtkDirichletTessellation does)");
   }
   for (std::size_t i = 0; i < points.size(); ++i)
   {

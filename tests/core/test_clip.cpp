@@ -33,8 +33,9 @@ namespace
 {
 
 const std::string SelfContactHint =
-  " (a ring may touch other rings at points, not itself: a ring that touches itself to enclose a "
-  "lake is made an outer ring and a hole by GDAL's ogr2ogr -makevalid or QGIS's Fix Geometries)";
+  " (a ring may touch other rings at points, not itself; a ring that touches itself to enclose a "
+  "lake, as some ArcGIS files have, is made an outer ring and a hole by GDAL's ogr2ogr -makevalid "
+  "or QGIS's Fix Geometries)";
 
 // ---- Exact rational reference ------------------------------------------------------------------
 

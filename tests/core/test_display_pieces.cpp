@@ -429,3 +429,30 @@ TEST(DisplayPieces, RingsTouchingOrSharingBoundaryGiveSimplePieces)
     ExpectPiecesOfTheRegion(t % 3 == 0 ? touching : t % 3 == 1 ? checkerboard : adjacent, tile);
   }
 }
+
+// A ring started where it is no fan is rotated to a vertex about which it is one (an L from an
+// outer corner to its inner corner, the one vertex that sees it whole, or to the outer corner
+// opposite); a U, which no vertex sees whole, is left as it is, and said.
+TEST(DisplayPieces, StartAtFanApexRotatesToAVertexThatSeesTheWholeRing)
+{
+  std::vector<Point2> l{ { 0, 2 }, { 0, 0 }, { 2, 0 }, { 2, 1 }, { 1, 1 }, { 1, 2 } };
+  const std::vector<Point2> given = l;
+  ASSERT_TRUE(StartAtFanApex(l));
+  ClippedRings one;
+  one.Vertices = l;
+  one.RingOffsets = { 0, l.size() };
+  ExpectFansAboutTheFirstVertex(one, "the L: ");
+  EXPECT_TRUE(std::is_permutation(l.begin(),
+    l.end(),
+    given.begin(),
+    [](const Point2& a, const Point2& b) { return a.x == b.x && a.y == b.y; }));
+  std::vector<Point2> u{
+    { 0, 0 }, { 3, 0 }, { 3, 2 }, { 2, 2 }, { 2, 1 }, { 1, 1 }, { 1, 2 }, { 0, 2 }
+  };
+  const std::vector<Point2> before = u;
+  EXPECT_FALSE(StartAtFanApex(u));
+  EXPECT_TRUE(std::equal(u.begin(),
+    u.end(),
+    before.begin(),
+    [](const Point2& a, const Point2& b) { return a.x == b.x && a.y == b.y; }));
+}

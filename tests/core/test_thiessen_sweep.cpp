@@ -748,13 +748,19 @@ TEST(ThiessenSweep, Errors)
       << e.what();
   }
   // Windows whose points reflected across a side overflow: wider than the doubles reach (scaled
-  // down exactly, then swept), or reaching 1.7e308 with a height of 1e-20, which cannot be scaled
-  // down exactly (an InputError). Both threw a logic_error, no dummy point being found.
+  // down exactly, a quarter, then swept: as a window 4 times smaller, the same tiles and
+  // neighbours), or reaching 1.7e308 with a height of 1e-308, which cannot be scaled down exactly
+  // (an InputError). Both threw a logic_error, no dummy point being found.
+  const std::vector<Point2> pair{ { 0.5, 0.3 }, { -0.5, 0.7 } };
   const ThiessenSweepResult wide =
-    ComputeThiessenSweep(Window::Rectangle(-9e307, 9e307, -1, 1), { { 0.5, 0 }, { -0.5, 0 } });
+    ComputeThiessenSweep(Window::Rectangle(-9e307, 9e307, -1, 1), pair);
+  const ThiessenSweepResult narrower =
+    ComputeThiessenSweep(Window::Rectangle(-2e307, 2e307, -1, 1), pair);
   ASSERT_EQ(wide.Tiles.PointIds.size(), 2U);
   EXPECT_EQ(wide.Contiguities.Kinds.size(), 1U);
-  EXPECT_THROW(ComputeThiessenSweep(Window::Rectangle(0, 1.7e308, 0, 1e-20), { { 1e300, 5e-21 } }),
+  EXPECT_EQ(wide.Tiles.NeighborCounts, narrower.Tiles.NeighborCounts);
+  EXPECT_THROW(
+    ComputeThiessenSweep(Window::Rectangle(0, 1.7e308, 0, 1e-308), { { 1e300, 5e-309 } }),
     InputError);
 }
 
@@ -1079,4 +1085,34 @@ TEST(ThiessenSweep, SteepBisectorsCrossTheWindowWithinUlpsOfExact)
     }
     EXPECT_EQ(found, 2); // one corner of each tile
   }
+}
+
+// The sweep reports the fraction of points swept every 64 points, rising, and stops with
+// Cancelled when its callback says so; it stops at the next report, and the result of a run
+// whose callback never says so is that of a run without one.
+TEST(ThiessenSweep, ProgressRisesAndCanStopTheSweep)
+{
+  std::mt19937 random(6);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<Point2> points(1000);
+  for (Point2& p : points)
+  {
+    p = { u(random), u(random) };
+  }
+  const Window window = Window::Rectangle(0, 1, 0, 1);
+  std::vector<double> seen;
+  const ThiessenSweepResult watched = ComputeThiessenSweep(window,
+    points,
+    [&](double fraction)
+    {
+      seen.push_back(fraction);
+      return true;
+    });
+  EXPECT_EQ(seen.size(), 16U); // (points 0, 64, ..., 960)
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_EQ(watched.Tiles.Areas, ComputeThiessenSweep(window, points).Tiles.Areas);
+  int calls = 0;
+  EXPECT_THROW(
+    ComputeThiessenSweep(window, points, [&](double) { return ++calls < 3; }), Cancelled);
+  EXPECT_EQ(calls, 3);
 }
