@@ -373,37 +373,28 @@ void CutAtX(const std::vector<Point2>& ring,
   {
     left.push_back(at(k));
   }
-  Point2 lowerLeft, lowerRight; // the cut's lower ends in the left and the right part
-  if (at(k).x == x)
+  // Where the walk meets the line at vertex k: the first and the last of its vertices on it (a
+  // vertical step), or twice the point interpolated on the edge into k; k is left past them.
+  const auto crossing = [&](std::size_t& k)
   {
-    lowerLeft = at(k);
+    if (at(k).x != x)
+    {
+      const Point2 p{ x, CrossingHeight(at(k - 1), at(k), x) };
+      return std::make_pair(p, p);
+    }
+    const Point2 first = at(k);
     for (; at(k + 1).x == x; ++k)
     {
     }
-    lowerRight = at(k++);
-  }
-  else
-  {
-    lowerLeft = lowerRight = { x, CrossingHeight(at(k - 1), at(k), x) };
-  }
+    return std::make_pair(first, at(k++));
+  };
+  auto [lowerLeft, lowerRight] = crossing(k); // the cut's lower ends in the left and right part
   right.push_back(lowerRight);
   for (; at(k).x > x; ++k) // the right part
   {
     right.push_back(at(k));
   }
-  Point2 upperRight, upperLeft;
-  if (at(k).x == x)
-  {
-    upperRight = at(k);
-    for (; at(k + 1).x == x; ++k)
-    {
-    }
-    upperLeft = at(k++);
-  }
-  else
-  {
-    upperRight = upperLeft = { x, CrossingHeight(at(k - 1), at(k), x) };
-  }
+  auto [upperRight, upperLeft] = crossing(k);
   // (an interpolated end rounded past the other: the cut no lower than a point)
   upperRight.y = std::max(upperRight.y, lowerRight.y);
   lowerLeft.y = std::min(lowerLeft.y, upperLeft.y);
