@@ -373,20 +373,20 @@ void CutAtX(const std::vector<Point2>& ring,
   {
     left.push_back(at(k));
   }
-  // Where the walk meets the line at vertex k: the first and the last of its vertices on it (a
-  // vertical step), or twice the point interpolated on the edge into k; k is left past them.
-  const auto crossing = [&](std::size_t& k)
+  // Where the walk meets the line at vertex j: the first and the last of its vertices on it (a
+  // vertical step), or twice the point interpolated on the edge into j; j is left past them.
+  const auto crossing = [&](std::size_t& j)
   {
-    if (at(k).x != x)
+    if (at(j).x != x)
     {
-      const Point2 p{ x, CrossingHeight(at(k - 1), at(k), x) };
+      const Point2 p{ x, CrossingHeight(at(j - 1), at(j), x) };
       return std::make_pair(p, p);
     }
-    const Point2 first = at(k);
-    for (; at(k + 1).x == x; ++k)
+    const Point2 first = at(j);
+    for (; at(j + 1).x == x; ++j)
     {
     }
-    return std::make_pair(first, at(k++));
+    return std::make_pair(first, at(j++));
   };
   auto [lowerLeft, lowerRight] = crossing(k); // the cut's lower ends in the left and right part
   right.push_back(lowerRight);
