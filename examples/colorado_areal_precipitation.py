@@ -24,7 +24,8 @@ Writes into --out:
   weights_all_months.csv year,month,station_id,weight,area_km2,precip: every month's weights (a row
                          per month and gauge with a weight)
   tiles_YYYY_MM.vtp      that month's tiles clipped to the catchment, in lon/lat: simple
-                         polygons, several for a tile around a lake or across a bay (cell data
+                         polygons, several for a tile around a lake, across a bay or under a wavy
+                         outline (cell data
                          StationId, GaugeId, Weight, Area_m2 and Value per gauge, CellArea_m2
                          and CellWeight per cell)
   tiles_YYYY_MM.geojson  the same tiles for a GIS (RFC 7946): a feature per piece with the gauge's
@@ -2094,12 +2095,18 @@ def write_weights(per_gauge, gauges, path):
 def polygon_rings(data):
     """The vertices, as lists of (x, y), of each polygon cell of a vtkPolyData, then of each of its
     polylines."""
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
     rings = []
+    if data.GetPoints() is None:
+        return rings
+    # (as arrays: a point at a time, 10^6 points of a detailed catchment's tiles took seconds)
+    xy = vtk_to_numpy(data.GetPoints().GetData())[:, :2].tolist()
     for cells in (data.GetPolys(), data.GetLines()):
-        offsets, connectivity = cells.GetOffsetsArray(), cells.GetConnectivityArray()
+        offsets = vtk_to_numpy(cells.GetOffsetsArray()).tolist()
+        connectivity = vtk_to_numpy(cells.GetConnectivityArray()).tolist()
         for c in range(cells.GetNumberOfCells()):
-            rings.append([data.GetPoint(connectivity.GetValue(i))[:2]
-                          for i in range(offsets.GetValue(c), offsets.GetValue(c + 1))])
+            rings.append([tuple(xy[i]) for i in connectivity[offsets[c]:offsets[c + 1]]])
     return rings
 
 
