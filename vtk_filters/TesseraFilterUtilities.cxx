@@ -479,6 +479,11 @@ void ProgressOrStop(vtkAlgorithm* algorithm, double fraction)
   }
 }
 
+bool IsStop(const std::exception& e)
+{
+  return dynamic_cast<const tessera::Cancelled*>(&e) != nullptr;
+}
+
 bool IsClosedLine(vtkDataSet* data, vtkIdList* ids)
 {
   const vtkIdType n = ids->GetNumberOfIds();

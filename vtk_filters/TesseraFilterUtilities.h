@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <map>
 #include <string>
@@ -51,6 +52,11 @@ std::function<bool(double)> StageProgress(vtkAlgorithm* algorithm, double from, 
 /// Sets algorithm's progress to fraction and throws tessera::Cancelled when its AbortExecute is
 /// set: between stages of a run, where nothing is left half made.
 void ProgressOrStop(vtkAlgorithm* algorithm, double fraction);
+
+/// Whether an exception caught in a RequestData is a stop that a progress observer asked for
+/// (tessera::Cancelled): the outputs are emptied as for an error, but no error is reported and
+/// RequestData returns 1.
+bool IsStop(const std::exception& e);
 
 /// The data of an upstream connection, brought up to date (for a RequestInformation that needs
 /// the input's data: the areal average's time steps, the ridge grouping's image extent).

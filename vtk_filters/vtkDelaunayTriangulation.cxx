@@ -179,16 +179,16 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     tessera_vtk::ListNonEmptyFieldArraysFirst(output);
     return 1;
   }
-  catch (const tessera::Cancelled&)
-  {
-    output->Initialize(); // (AbortExecute set by a progress observer: no error)
-    return 1;
-  }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< e.what());
+    // (a stop that a progress observer asked for empties the outputs too, without an error)
+    const bool stop = tessera_vtk::IsStop(e);
+    if (!stop)
+    {
+      vtkErrorMacro(<< e.what());
+    }
     output->Initialize();
-    return 0;
+    return stop ? 1 : 0;
   }
 }
 

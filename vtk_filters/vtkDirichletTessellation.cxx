@@ -578,19 +578,17 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     tessera_vtk::ListNonEmptyFieldArraysFirst(graphOutput);
     return 1;
   }
-  catch (const tessera::Cancelled&)
-  {
-    // (AbortExecute set by a progress observer: empty outputs, and no error)
-    tilesOutput->Initialize();
-    graphOutput->Initialize();
-    return 1;
-  }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< e.what());
+    // (a stop that a progress observer asked for empties the outputs too, without an error)
+    const bool stop = tessera_vtk::IsStop(e);
+    if (!stop)
+    {
+      vtkErrorMacro(<< e.what());
+    }
     tilesOutput->Initialize();
     graphOutput->Initialize();
-    return 0;
+    return stop ? 1 : 0;
   }
 }
 

@@ -370,23 +370,19 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     }
     return 1;
   }
-  catch (const tessera::Cancelled&)
-  {
-    // (AbortExecute set by a progress observer: empty outputs, and no error)
-    pointsOut->Initialize();
-    contoursOut->Initialize();
-    curvesOut->Initialize();
-    imageOut->Initialize();
-    return 1;
-  }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< e.what());
+    // (a stop that a progress observer asked for empties the outputs too, without an error)
+    const bool stop = tessera_vtk::IsStop(e);
+    if (!stop)
+    {
+      vtkErrorMacro(<< e.what());
+    }
     pointsOut->Initialize();
     contoursOut->Initialize();
     curvesOut->Initialize();
     imageOut->Initialize();
-    return 0;
+    return stop ? 1 : 0;
   }
 }
 

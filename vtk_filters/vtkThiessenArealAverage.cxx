@@ -1116,16 +1116,16 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
     tessera_vtk::ListNonEmptyFieldArraysFirst(tilesOutput);
     return 1;
   }
-  catch (const tessera::Cancelled&)
-  {
-    this->DiscardResults(outputVector); // (AbortExecute set by a progress observer: no error)
-    return 1;
-  }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< e.what());
+    // (a stop that a progress observer asked for empties the outputs too, without an error)
+    const bool stop = tessera_vtk::IsStop(e);
+    if (!stop)
+    {
+      vtkErrorMacro(<< e.what());
+    }
     this->DiscardResults(outputVector);
-    return 0;
+    return stop ? 1 : 0;
   }
 }
 
