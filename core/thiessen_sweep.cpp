@@ -30,8 +30,8 @@
 #include "predicates_inline.h"
 
 #include <algorithm>
-#include <functional>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
@@ -1415,6 +1415,10 @@ std::string WhyNotAnAxisAlignedRectangle(const Window& window)
   return "it has " + std::to_string(sides.size()) + " sides";
 }
 
+/// The largest coordinate the sweep works on: it reflects points across the window's sides
+/// (2 side - p, its dummy points), which overflows beyond a quarter of the largest double.
+constexpr double ReflectionReach = std::numeric_limits<double>::max() / 4;
+
 ThiessenSweepResult ComputeThiessenSweep(const Window& window,
   const std::vector<Point2>& points,
   const std::function<bool(double)>& progress)
@@ -1479,7 +1483,7 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window,
     // A window reaching beyond a quarter of the largest double (its sides wider than the doubles
     // reach, x from -9e307 to 9e307): a quarter of it is enough for the reflections below, and
     // loses no bit where scaling it to unit size would (y of 0.3 beside x of 9e307).
-    const bool farReach = !(bounds.LargestMagnitude() < std::numeric_limits<double>::max() / 4);
+    const bool farReach = !(bounds.LargestMagnitude() < ReflectionReach);
     scale = exactAt(scale) ? scale : 0;
     if (farReach && scale > -2 && exactAt(-2))
     {
@@ -1490,9 +1494,8 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window,
     std::ldexp(xmax, scale),
     std::ldexp(ymin, scale),
     std::ldexp(ymax, scale) };
-  // The dummy points are the points reflected across the sides, 2 side - p: beyond a quarter of
-  // the largest double they overflow (the sweep then found no dummy point, a logic_error).
-  if (!(scaled.LargestMagnitude() < std::numeric_limits<double>::max() / 4))
+  // (overflowing, the dummy points left the sweep without one, a logic_error)
+  if (!(scaled.LargestMagnitude() < ReflectionReach))
   {
     throw InputError("the Brassel-Reif sweep reflects the points across the window's sides, "
                      "which overflows for a window reaching " +
