@@ -103,6 +103,8 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "data")
+EXAMPLE_STATIONS = os.path.join(DATA, "colorado_stations.csv")  # (the defaults, the example's own)
+EXAMPLE_CATCHMENT = os.path.join(DATA, "colorado_boundary.geojson")
 sys.path.insert(0, HERE)
 
 import csv_input  # noqa: E402 (the examples' CSV reading, beside this script)
@@ -370,7 +372,7 @@ def stations_path(observations):
         if {"station_id", "lon", "lat"} <= csv_input.header_columns(observations, "observations",
                                                                   ("station_id", "lon", "lat")):
             return observations
-    return os.path.join(DATA, "colorado_stations.csv")
+    return EXAMPLE_STATIONS
 
 
 DATE = re.compile(r"([0-9]{4})-([0-9]{1,2})(?:-([0-9]{1,2}))?")
@@ -2501,8 +2503,8 @@ def main(argv=None):
                   f"{args.observations} has no place columns (lon and lat, or LONGITUDE and LATITUDE) to read "
                   "its stations from; give your stations file with --stations", file=sys.stderr)
     if args.catchment is None:
-        args.catchment = os.path.join(DATA, "colorado_boundary.geojson")
-        if os.path.realpath(args.stations) != os.path.realpath(os.path.join(DATA, "colorado_stations.csv")):
+        args.catchment = EXAMPLE_CATCHMENT
+        if os.path.realpath(args.stations) != os.path.realpath(EXAMPLE_STATIONS):
             print(f"note: without --catchment, the catchment is the Colorado example's outline ({args.catchment}); "
                   "give yours with --catchment", file=sys.stderr)
     combined = holds_observations(args.stations, args.observations)
