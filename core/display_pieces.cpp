@@ -420,19 +420,6 @@ double MiddleInnerX(const std::vector<Point2>& ring)
   return xs.size() < 3 ? std::numeric_limits<double>::quiet_NaN() : xs[xs.size() / 2];
 }
 
-/// The ring without repeated consecutive points.
-void DropRepeats(std::vector<Point2>& ring)
-{
-  ring.erase(std::unique(ring.begin(),
-               ring.end(),
-               [](const Point2& a, const Point2& b) { return a.x == b.x && a.y == b.y; }),
-    ring.end());
-  while (ring.size() > 1 && ring.front().x == ring.back().x && ring.front().y == ring.back().y)
-  {
-    ring.pop_back();
-  }
-}
-
 /// Appends an x-monotone piece to done as fans: rings that start at a vertex about which they are
 /// a fan (FanApex). VTK draws a polygon, and its Cell Size and Integrate Variables measure it, as
 /// the fan of triangles about its first point: a piece that is no fan about it (an L, a U round a
@@ -441,7 +428,7 @@ void DropRepeats(std::vector<Point2>& ring)
 /// x, and each part made fans in turn.
 void AppendFans(std::vector<Point2> ring, ClippedRings& done)
 {
-  DropRepeats(ring);
+  DropRepeatedVertices(ring); // (a cut's point can fall on a vertex)
   if (ring.size() < 3 || CompensatedPolygonArea(ring.data(), ring.size()) <= 0.0)
   {
     return;
