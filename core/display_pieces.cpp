@@ -313,7 +313,13 @@ bool IsFanAbout(const std::vector<Point2>& ring,
 std::size_t FanApex(const std::vector<Point2>& ring)
 {
   const std::size_t n = ring.size();
-  std::vector<std::size_t> candidates{ 0 };
+  std::vector<std::size_t> killers;
+  std::size_t budget = 8 * n + 64;
+  if (IsFanAbout(ring, 0, killers, budget))
+  {
+    return 0; // (most pieces, convex ones: no need to sort the vertices)
+  }
+  std::vector<std::size_t> candidates;
   std::vector<std::size_t> rest;
   for (std::size_t v = 1; v < n; ++v)
   {
@@ -321,8 +327,6 @@ std::size_t FanApex(const std::vector<Point2>& ring)
     (reflex ? candidates : rest).push_back(v);
   }
   candidates.insert(candidates.end(), rest.begin(), rest.end());
-  std::vector<std::size_t> killers;
-  std::size_t budget = 8 * n + 64;
   for (const std::size_t v : candidates)
   {
     if (IsFanAbout(ring, v, killers, budget))
