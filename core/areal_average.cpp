@@ -1558,6 +1558,13 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
       out.Pieces.Vertices.end(), scratch.LonLat.begin(), scratch.LonLat.end());
     out.Pieces.RingOffsets.push_back(out.Pieces.Vertices.size());
   }
+  for (std::size_t k = 0; k < out.Gauges.size(); ++k)
+  {
+    AppendOutlines(
+      OutlinesOfPieces(out.Pieces, out.TilePieceOffsets[k], out.TilePieceOffsets[k + 1]),
+      out.Outlines);
+    out.TileOutlineOffsets.push_back(out.Outlines.PolygonOffsets.size() - 1);
+  }
   return out;
 }
 

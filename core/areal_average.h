@@ -35,6 +35,7 @@
 #include "clip.h"
 #include "geo.h"
 #include "errors.h" // InputError, which the constructor and Step throw
+#include "piece_outlines.h" // RegionOutlines
 #include "geometry.h"
 
 #include <cstdint>
@@ -136,6 +137,13 @@ struct ClippedTilesLonLat
   std::vector<std::size_t> TilePieceOffsets{ 0 }; ///< pieces of tile k: [k], [k+1]
   ClippedRings Pieces;                            ///< one ring per piece, lon/lat degrees
   std::vector<double> PieceAreasM2; ///< per piece: ellipsoidal area, m^2, measured as weights are
+  /// The same parts of the catchment as polygons with holes, for a GIS (piece_outlines.h): tile
+  /// k's are polygons TileOutlineOffsets[k] .. TileOutlineOffsets[k + 1] - 1 of Outlines, joined
+  /// from its pieces in lon/lat (one polygon for most tiles; a polygon with a hole for a tile
+  /// round a lake, several for lobes across a bay). Their edges are the pieces' outer edges,
+  /// vertex for vertex, so neighbouring tiles' outlines still share their borders.
+  std::vector<std::size_t> TileOutlineOffsets{ 0 };
+  RegionOutlines Outlines;
 };
 
 class ThiessenArealAverage

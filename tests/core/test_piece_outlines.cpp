@@ -1,0 +1,414 @@
+// OutlinesOfPieces: a clipped tile's display pieces joined back into polygons with holes. Checked
+// against the clip itself: the outline's signed area is the clipped area, every ring is simple,
+// and point by point the polygons hold exactly the tile's part of the catchment; no edge of the
+// outline is a cut between pieces.
+
+#include "areal_average.h"
+#include "clip.h"
+#include "display_pieces.h"
+#include "piece_outlines.h"
+#include "polygon_area.h"
+#include "polygon_validation.h"
+#include "shared_borders.h"
+
+#include "test_support.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace tessera;
+using tessera_test::MakeCatchment;
+using tessera_test::Rectangle;
+
+namespace
+{
+
+/// Crossing-number membership of p in ring r (p is never on a boundary here).
+bool InRing(const ClippedRings& rings, std::size_t r, const Point2& p)
+{
+  bool inside = false;
+  const std::size_t begin = rings.RingOffsets[r], end = rings.RingOffsets[r + 1];
+  for (std::size_t i = begin, j = end - 1; i < end; j = i++)
+  {
+    const Point2& a = rings.Vertices[i];
+    const Point2& b = rings.Vertices[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x))
+    {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
+
+/// Polygons of outlines that hold p: inside the outer ring and in none of its holes.
+int PolygonsHolding(const RegionOutlines& outlines, const Point2& p)
+{
+  int holding = 0;
+  for (std::size_t k = 0; k + 1 < outlines.PolygonOffsets.size(); ++k)
+  {
+    const std::size_t outer = outlines.PolygonOffsets[k];
+    bool inside = InRing(outlines.Rings, outer, p);
+    for (std::size_t h = outer + 1; inside && h < outlines.PolygonOffsets[k + 1]; ++h)
+    {
+      inside = !InRing(outlines.Rings, h, p);
+    }
+    holding += inside;
+  }
+  return holding;
+}
+
+double RingArea(const ClippedRings& rings, std::size_t r)
+{
+  return CompensatedPolygonArea(
+    &rings.Vertices[rings.RingOffsets[r]], rings.RingOffsets[r + 1] - rings.RingOffsets[r]);
+}
+
+/// The tile's part of the catchment as pieces, their borders made alike (as the areal average
+/// does before it joins them), and their outline. Checks that each ring is simple, each polygon's
+/// first ring anticlockwise and the others clockwise, the signed areas sum to the clip's, no edge
+/// is walked both ways (a cut left in), and each sample point of a grid over the tile's box lies
+/// in one polygon when it is in one piece, in none otherwise. Returns the outline.
+RegionOutlines ExpectOutlineOfTheRegion(const Catchment& catchment, const std::vector<Point2>& tile)
+{
+  const ClippedTile clipped = catchment.Clip(tile);
+  const ClippedRings pieces = ShareBorderVertices(DisplayPieces(clipped.Rings));
+  const RegionOutlines outlines = OutlinesOfPieces(pieces, 0, pieces.RingOffsets.size() - 1);
+  const ClippedRings& rings = outlines.Rings;
+  EXPECT_EQ(outlines.PolygonOffsets.back(), rings.RingOffsets.size() - 1);
+  double total = 0.0;
+  std::vector<std::pair<Point2, Point2>> edges;
+  for (std::size_t k = 0; k + 1 < outlines.PolygonOffsets.size(); ++k)
+  {
+    for (std::size_t r = outlines.PolygonOffsets[k]; r < outlines.PolygonOffsets[k + 1]; ++r)
+    {
+      const std::vector<Point2> ring(
+        rings.Vertices.begin() + static_cast<std::ptrdiff_t>(rings.RingOffsets[r]),
+        rings.Vertices.begin() + static_cast<std::ptrdiff_t>(rings.RingOffsets[r + 1]));
+      EXPECT_NO_THROW(ValidateRings({ 0, ring.size() }, ring)) << "ring " << r << " is not simple";
+      const double area = RingArea(rings, r);
+      if (r == outlines.PolygonOffsets[k])
+      {
+        EXPECT_GT(area, 0.0) << "outer ring " << r;
+      }
+      else
+      {
+        EXPECT_LT(area, 0.0) << "hole " << r;
+      }
+      total += area;
+      for (std::size_t v = 0; v < ring.size(); ++v)
+      {
+        edges.emplace_back(ring[v], ring[(v + 1) % ring.size()]);
+      }
+    }
+  }
+  EXPECT_NEAR(total, clipped.Area, 1e-12 * std::max(1.0, clipped.Area));
+  for (const auto& [a, b] : edges)
+  {
+    EXPECT_EQ(
+      std::count_if(
+        edges.begin(), edges.end(), [&](const auto& e) { return e.first == b && e.second == a; }),
+      0)
+      << "edge (" << a.x << ", " << a.y << ") - (" << b.x << ", " << b.y << ") walked both ways";
+  }
+  const Box2 box = BoundsOf(tile.data(), tile.size());
+  const int n = 50;
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      // (irrational offsets: no sample on an edge)
+      const Point2 p{ box.XMin + (i + 0.5 * std::sqrt(2.0) - 0.2) / n * (box.XMax - box.XMin),
+        box.YMin + (j + 0.5 * std::sqrt(3.0) - 0.4) / n * (box.YMax - box.YMin) };
+      int inPieces = 0;
+      for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
+      {
+        inPieces += InRing(pieces, r, p);
+      }
+      EXPECT_EQ(PolygonsHolding(outlines, p), inPieces) << "at (" << p.x << ", " << p.y << ")";
+    }
+  }
+  return outlines;
+}
+
+std::size_t PolygonCount(const RegionOutlines& outlines)
+{
+  return outlines.PolygonOffsets.size() - 1;
+}
+
+std::size_t RingCount(const RegionOutlines& outlines)
+{
+  return outlines.Rings.RingOffsets.size() - 1;
+}
+
+/// A convex tile: 3 to 8 points at random angles on the circle of radius about centre,
+/// anticlockwise.
+std::vector<Point2> RandomInscribedTile(std::mt19937& random, const Point2& centre, double radius)
+{
+  std::uniform_real_distribution<double> angle(0.0, 2 * M_PI);
+  std::vector<double> angles(3 + random() % 6);
+  for (double& a : angles)
+  {
+    a = angle(random);
+  }
+  std::sort(angles.begin(), angles.end());
+  angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
+  std::vector<Point2> tile;
+  for (const double a : angles)
+  {
+    tile.push_back({ centre.x + radius * std::cos(a), centre.y + radius * std::sin(a) });
+  }
+  return tile;
+}
+
+} // namespace
+
+TEST(PieceOutlines, ATileRoundALakeIsOnePolygonWithAHole)
+{
+  const Catchment lake = MakeCatchment({ Rectangle(0, 0, 10, 10), Rectangle(4, 4, 6, 6) });
+  const RegionOutlines outlines = ExpectOutlineOfTheRegion(lake, Rectangle(1, 1, 9, 9));
+  ASSERT_EQ(PolygonCount(outlines), 1U); // (from three pieces)
+  ASSERT_EQ(RingCount(outlines), 2U);
+  EXPECT_EQ(RingArea(outlines.Rings, 0), 64.0);
+  EXPECT_EQ(RingArea(outlines.Rings, 1), -4.0);
+}
+
+TEST(PieceOutlines, LobesOfABayAreTwoPolygons)
+{
+  const Catchment bay = MakeCatchment(
+    { { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 6, 10 }, { 6, 3 }, { 4, 3 }, { 4, 10 }, { 0, 10 } } });
+  EXPECT_EQ(PolygonCount(ExpectOutlineOfTheRegion(bay, Rectangle(2, 5, 8, 12))), 2U);
+  // a U, two pieces joined again into one polygon without a hole
+  const RegionOutlines u = ExpectOutlineOfTheRegion(bay, Rectangle(2, 1, 8, 12));
+  EXPECT_EQ(PolygonCount(u), 1U);
+  EXPECT_EQ(RingCount(u), 1U);
+}
+
+TEST(PieceOutlines, AnIslandInALakeIsAPolygonOfItsOwn)
+{
+  const Catchment lake = MakeCatchment(
+    { Rectangle(0, 0, 10, 10), Rectangle(3, 3, 7, 7), Rectangle(4.5, 4.5, 5.5, 5.5) });
+  const RegionOutlines outlines = ExpectOutlineOfTheRegion(lake, Rectangle(1, 1, 9, 9));
+  ASSERT_EQ(PolygonCount(outlines), 2U);
+  EXPECT_EQ(RingCount(outlines), 3U);
+  // polygons in the order of their lowest vertices: the tile's part round the lake, then the island
+  EXPECT_EQ(outlines.PolygonOffsets[1], 2U);
+  EXPECT_EQ(RingArea(outlines.Rings, 2), 1.0);
+}
+
+// Rings that touch at a point come out as separate simple rings: a hole touching the outline
+// (which the chaining's turn first joins to it) and two lobes meeting at a corner.
+TEST(PieceOutlines, RingsTouchingAtAPointAreSeparateRings)
+{
+  const Catchment touching = MakeCatchment(
+    { Rectangle(0, 0, 10, 10), { { 5, 0 }, { 7, 3 }, { 3, 3 } } }); // a hole from the bottom edge
+  const RegionOutlines hole = ExpectOutlineOfTheRegion(touching, Rectangle(-1, -1, 11, 11));
+  ASSERT_EQ(PolygonCount(hole), 1U);
+  ASSERT_EQ(RingCount(hole), 2U);
+  EXPECT_EQ(RingArea(hole.Rings, 1), -6.0);
+
+  ClippedRings bowTie;
+  for (const auto& square : { Rectangle(0, 0, 1, 1), Rectangle(1, 1, 2, 2) })
+  {
+    bowTie.Vertices.insert(bowTie.Vertices.end(), square.begin(), square.end());
+    bowTie.RingOffsets.push_back(bowTie.Vertices.size());
+  }
+  const RegionOutlines lobes = OutlinesOfPieces(bowTie, 0, 2);
+  ASSERT_EQ(PolygonCount(lobes), 2U);
+  EXPECT_EQ(RingArea(lobes.Rings, 0), 1.0);
+  EXPECT_EQ(RingArea(lobes.Rings, 1), 1.0);
+}
+
+// Pieces given by the caller: a range of rings only, repeated vertices passed over, and a
+// T-junction (a vertex on a neighbour's edge that the neighbour lacks) leaving both edges.
+TEST(PieceOutlines, TakesARangeOfRings)
+{
+  ClippedRings pieces;
+  for (const auto& square : { Rectangle(5, 5, 6, 6), Rectangle(0, 0, 1, 1), Rectangle(1, 0, 2, 1) })
+  {
+    pieces.Vertices.insert(pieces.Vertices.end(), square.begin(), square.end());
+    pieces.RingOffsets.push_back(pieces.Vertices.size());
+  }
+  pieces.Vertices.insert(pieces.Vertices.begin() + 5, pieces.Vertices[4]); // a repeated vertex
+  for (std::size_t r = 2; r < pieces.RingOffsets.size(); ++r)
+  {
+    ++pieces.RingOffsets[r];
+  }
+  const RegionOutlines joined = OutlinesOfPieces(pieces, 1, 3);
+  ASSERT_EQ(PolygonCount(joined), 1U);
+  EXPECT_EQ(RingArea(joined.Rings, 0), 2.0);
+  EXPECT_EQ(joined.Rings.Vertices.size(), 6U); // (the shared side's ends stay vertices)
+  EXPECT_EQ(PolygonCount(OutlinesOfPieces(pieces, 0, 0)), 0U);
+}
+
+// Random convex tiles over a comb with bays, two holes and an island in one of them, and over a
+// wavy shore: the polygons hold exactly the pieces' points, their areas sum to the clip's, and no
+// cut between pieces is left in.
+TEST(PieceOutlines, RandomTilesOverHolesBaysAndAWavyShore)
+{
+  const Catchment comb = MakeCatchment({ { { 0, 0 },
+                                           { 20, 0 },
+                                           { 20, 10 },
+                                           { 16, 10 },
+                                           { 16, 4 },
+                                           { 14, 4 },
+                                           { 14, 10 },
+                                           { 9, 10 },
+                                           { 8.5, 5 },
+                                           { 8, 10 },
+                                           { 0, 10 } },
+    Rectangle(2, 2, 6, 7),
+    Rectangle(3, 3, 4, 4),
+    { { 10, 1 }, { 12, 1.5 }, { 11, 3 } } });
+  std::vector<Point2> shore{ { 20, -5 } };
+  for (int k = 400; k >= 0; --k)
+  {
+    const double x = 20.0 * k / 400;
+    shore.push_back({ x, 5 + 0.3 * std::sin(30 * 2 * M_PI * x / 10) });
+  }
+  shore.push_back({ 0, -5 });
+  const Catchment wavy = MakeCatchment({ shore });
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> where(-2.0, 22.0), size(0.5, 9.0);
+  std::size_t joined = 0;
+  for (int t = 0; t < 120; ++t)
+  {
+    const Point2 centre{ where(random), where(random) / 2.0 };
+    const std::vector<Point2> tile = RandomInscribedTile(random, centre, size(random));
+    if (CompensatedPolygonArea(tile.data(), tile.size()) < 1e-3)
+    {
+      continue;
+    }
+    SCOPED_TRACE("tile " + std::to_string(t));
+    for (const Catchment* catchment : { &comb, &wavy })
+    {
+      const ClippedRings pieces = DisplayPieces(catchment->Clip(tile).Rings);
+      const RegionOutlines outlines = ExpectOutlineOfTheRegion(*catchment, tile);
+      joined += PolygonCount(outlines) < pieces.RingOffsets.size() - 1;
+    }
+  }
+  EXPECT_GT(joined, 40U); // (tiles whose pieces were joined)
+}
+
+// Outlines of the areal average's tiles in lon/lat (tiles round a lake, across a bay with an
+// island-hole, on lattices and at random): every ring is simple, outer rings anticlockwise and
+// holes clockwise, a tile's outline holds its pieces' area, and across all tiles every outline
+// edge is either walked the other way by a neighbour's outline (a shared border, vertex for
+// vertex) or lies on the catchment's boundary: their union is the catchment, as a GIS's dissolve
+// would find.
+TEST(PieceOutlines, OutlinesOfLonLatTilesShareTheirBordersAndFillTheCatchment)
+{
+  const std::vector<Point2> square{ { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+  const std::vector<Point2> lake{
+    { 0.35, 0.35 }, { 0.35, 0.65 }, { 0.5, 0.7 }, { 0.65, 0.65 }, { 0.65, 0.35 }
+  };
+  const std::vector<Point2> bay{
+    { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0.6, 1 }, { 0.6, 0.3 }, { 0.4, 0.3 }, { 0.4, 1 }, { 0, 1 }
+  };
+  const std::vector<Point2> hole{ { 0.1, 0.1 }, { 0.1, 0.2 }, { 0.2, 0.2 }, { 0.2, 0.1 } };
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> where(-0.2, 1.2);
+  int withHoles = 0, joined = 0;
+  for (int trial = 0; trial < 12; ++trial)
+  {
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    const bool withLake = trial % 2 == 0;
+    std::vector<Point2> ring = withLake ? square : bay;
+    const std::vector<Point2>& inner = withLake ? lake : hole;
+    ring.insert(ring.end(), inner.begin(), inner.end());
+    const std::vector<std::size_t> offsets{ 0, ring.size() - inner.size(), ring.size() };
+    std::vector<Point2> gauges;
+    const double step = trial < 4 ? 0.25 : 0.0; // lattices, then random gauges
+    for (int k = 0; step > 0.0 ? k < 36 : k < 3 + 2 * trial; ++k)
+    {
+      gauges.push_back(step > 0.0
+          ? Point2{ (trial % 2 ? 0.05 : 0.0) + step * (k % 6) - 0.1, step * (k / 6) - 0.1 }
+          : Point2{ where(random), where(random) });
+    }
+    ThiessenArealAverage average(gauges, offsets, ring);
+    average.Step(std::vector<double>(gauges.size(), 1.0));
+    const ClippedTilesLonLat tiles = average.CurrentClippedTiles(5000.0);
+    const RegionOutlines& outlines = tiles.Outlines;
+    ASSERT_EQ(tiles.TileOutlineOffsets.size(), tiles.Gauges.size() + 1);
+    std::vector<std::pair<std::size_t, std::pair<Point2, Point2>>> edges; // (tile, edge)
+    for (std::size_t k = 0; k < tiles.Gauges.size(); ++k)
+    {
+      double pieceArea = 0.0, outlineArea = 0.0;
+      for (std::size_t r = tiles.TilePieceOffsets[k]; r < tiles.TilePieceOffsets[k + 1]; ++r)
+      {
+        pieceArea += RingArea(tiles.Pieces, r);
+      }
+      const std::size_t firstRing = outlines.PolygonOffsets[tiles.TileOutlineOffsets[k]];
+      const std::size_t endRing = outlines.PolygonOffsets[tiles.TileOutlineOffsets[k + 1]];
+      for (std::size_t p = tiles.TileOutlineOffsets[k]; p < tiles.TileOutlineOffsets[k + 1]; ++p)
+      {
+        withHoles += outlines.PolygonOffsets[p + 1] - outlines.PolygonOffsets[p] > 1;
+        EXPECT_GT(RingArea(outlines.Rings, outlines.PolygonOffsets[p]), 0.0) << "tile " << k;
+      }
+      for (std::size_t r = firstRing; r < endRing; ++r)
+      {
+        const std::vector<Point2> one(outlines.Rings.Vertices.begin() +
+            static_cast<std::ptrdiff_t>(outlines.Rings.RingOffsets[r]),
+          outlines.Rings.Vertices.begin() +
+            static_cast<std::ptrdiff_t>(outlines.Rings.RingOffsets[r + 1]));
+        EXPECT_NO_THROW(ValidateRings({ 0, one.size() }, one)) << "tile " << k << " ring " << r;
+        outlineArea += RingArea(outlines.Rings, r);
+        for (std::size_t v = 0; v < one.size(); ++v)
+        {
+          edges.push_back({ k, { one[v], one[(v + 1) % one.size()] } });
+        }
+      }
+      EXPECT_NEAR(outlineArea, pieceArea, 1e-13) << "tile " << k;
+      joined += endRing - firstRing < tiles.TilePieceOffsets[k + 1] - tiles.TilePieceOffsets[k];
+    }
+    // An edge that no other tile's outline walks the other way (within 1e-9 degrees: a border's
+    // vertices are one point in the plane only to rounding, shared_borders.h) lies on the
+    // catchment's boundary, to the sagitta of a step (the tiles' edges are straight in the plane,
+    // the catchment's in lon/lat); and no tile's outline walks an edge both ways (a cut between
+    // its pieces left in).
+    const auto near = [](const Point2& p, const Point2& q)
+    { return std::abs(p.x - q.x) <= 1e-9 && std::abs(p.y - q.y) <= 1e-9; };
+    for (std::size_t e = 0; e < edges.size(); ++e)
+    {
+      const auto& [a, b] = edges[e].second;
+      bool shared = false;
+      for (std::size_t f = 0; f < edges.size(); ++f)
+      {
+        if (near(edges[f].second.first, b) && near(edges[f].second.second, a))
+        {
+          EXPECT_NE(edges[f].first, edges[e].first)
+            << "tile " << edges[e].first << " walks its edge (" << a.x << ", " << a.y << ") - ("
+            << b.x << ", " << b.y << ") both ways";
+          shared = true;
+        }
+      }
+      if (shared)
+      {
+        continue;
+      }
+      const Point2 mid{ 0.5 * (a.x + b.x), 0.5 * (a.y + b.y) };
+      double nearest = 1e300;
+      for (std::size_t r = 0; r < 2; ++r)
+      {
+        for (std::size_t v = offsets[r]; v < offsets[r + 1]; ++v)
+        {
+          const Point2& p = ring[v];
+          const Point2& q = ring[v + 1 < offsets[r + 1] ? v + 1 : offsets[r]];
+          const double dx = q.x - p.x, dy = q.y - p.y;
+          const double t =
+            std::clamp(((mid.x - p.x) * dx + (mid.y - p.y) * dy) / (dx * dx + dy * dy), 0.0, 1.0);
+          nearest = std::min(nearest, std::hypot(mid.x - p.x - t * dx, mid.y - p.y - t * dy));
+        }
+      }
+      EXPECT_LT(nearest, 1e-4) << "an edge of tile " << edges[e].first
+                               << " that no neighbour shares, inside the catchment at (" << mid.x
+                               << ", " << mid.y << ")";
+    }
+  }
+  EXPECT_GT(withHoles, 2);
+  EXPECT_GT(joined, 10);
+}
