@@ -3,6 +3,7 @@
 #include "cache_line.h"
 #include "dirichlet_tessellation.h"
 #include "display_pieces.h"
+#include "meridian_cut.h"
 #include "errors.h"
 #include "parallel_chunks.h"
 #include "polygon_area.h"
@@ -1560,9 +1561,24 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
   }
   for (std::size_t k = 0; k < out.Gauges.size(); ++k)
   {
-    AppendOutlines(
-      OutlinesOfPieces(out.Pieces, out.TilePieceOffsets[k], out.TilePieceOffsets[k + 1]),
-      out.Outlines);
+    const std::size_t first = out.TilePieceOffsets[k], last = out.TilePieceOffsets[k + 1];
+    // A tile across the 180th meridian (or its copy 360 degrees on, as its longitudes run) is cut
+    // there, so that each polygon lies on one side of it (meridian_cut.h).
+    const std::size_t begin = out.Pieces.RingOffsets[first], end = out.Pieces.RingOffsets[last];
+    const Box2 box = BoundsOf(&out.Pieces.Vertices[begin], end - begin);
+    const double meridian = 180.0 + 360.0 * std::ceil((box.XMin - 180.0) / 360.0);
+    const bool across = box.XMin < meridian && meridian < box.XMax;
+    if (across)
+    {
+      for (const ClippedRings& side : CutAtMeridian(out.Pieces, first, last, meridian))
+      {
+        AppendOutlines(OutlinesOfPieces(side, 0, side.RingOffsets.size() - 1), out.Outlines);
+      }
+    }
+    else
+    {
+      AppendOutlines(OutlinesOfPieces(out.Pieces, first, last), out.Outlines);
+    }
     out.TileOutlineOffsets.push_back(out.Outlines.PolygonOffsets.size() - 1);
   }
   return out;

@@ -19,10 +19,12 @@
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataObjectTreeIterator.h"
+#include "vtkExecutive.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTable.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtkVariant.h"
 
 #include "TesseraFilterUtilities.h"
@@ -748,6 +750,63 @@ private:
   vtkNew<vtkDoubleArray> CellAreas, CellWeights;
 };
 
+/// Output 3: each clipped tile's outline (core/piece_outlines.h) as closed polylines, a cell per
+/// ring (its first point repeated last), with GaugeColumns and PolygonId (the polygon the ring
+/// bounds, numbered over the output) and Hole (0: the polygon's outer ring, anticlockwise; 1: a
+/// hole, clockwise). No active scalars: ParaView draws the lines in one colour over the tiles.
+void WriteOutlines(const tessera::ClippedTilesLonLat& clipped,
+  const tessera::ArealStep& result,
+  const std::vector<double>& values,
+  vtkAbstractArray* stationIds,
+  vtkPolyData* output)
+{
+  const tessera::RegionOutlines& outlines = clipped.Outlines;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (const auto& p : outlines.Rings.Vertices)
+  {
+    points->InsertNextPoint(p.x, p.y, 0.0);
+  }
+  vtkNew<vtkCellArray> lines;
+  GaugeColumns cells(stationIds);
+  vtkNew<vtkIdTypeArray> polygonIds;
+  polygonIds->SetName("PolygonId");
+  vtkNew<vtkUnsignedCharArray> holes;
+  holes->SetName("Hole");
+  for (std::size_t k = 0; k < clipped.Gauges.size(); ++k)
+  {
+    const std::int32_t g = clipped.Gauges[k];
+    const auto found = std::lower_bound(result.Gauges.begin(), result.Gauges.end(), g);
+    const std::size_t index = static_cast<std::size_t>(found - result.Gauges.begin());
+    const bool isWeighted = found != result.Gauges.end() && *found == g;
+    for (std::size_t p = clipped.TileOutlineOffsets[k]; p < clipped.TileOutlineOffsets[k + 1]; ++p)
+    {
+      for (std::size_t r = outlines.PolygonOffsets[p]; r < outlines.PolygonOffsets[p + 1]; ++r)
+      {
+        const std::size_t begin = outlines.Rings.RingOffsets[r],
+                          end = outlines.Rings.RingOffsets[r + 1];
+        lines->InsertNextCell(static_cast<vtkIdType>(end - begin + 1));
+        for (std::size_t v = begin; v < end; ++v)
+        {
+          lines->InsertCellPoint(static_cast<vtkIdType>(v));
+        }
+        lines->InsertCellPoint(static_cast<vtkIdType>(begin));
+        cells.Append(g,
+          isWeighted ? result.Weights[index] : 0.0,
+          isWeighted ? result.AreasM2[index] : 0.0,
+          values[static_cast<std::size_t>(g)]);
+        polygonIds->InsertNextValue(static_cast<vtkIdType>(p));
+        holes->InsertNextValue(r == outlines.PolygonOffsets[p] ? 0 : 1);
+      }
+    }
+  }
+  output->SetPoints(points);
+  output->SetLines(lines);
+  cells.AddTo(output->GetCellData());
+  output->GetCellData()->AddArray(polygonIds);
+  output->GetCellData()->AddArray(holes);
+}
+
 /// The latest modification time of a data object and, for a composite one, of its blocks.
 vtkMTimeType LatestMTime(vtkDataObject* data)
 {
@@ -926,7 +985,7 @@ vtkThiessenArealAverage::vtkThiessenArealAverage()
   : Internal(new Internals)
 {
   this->SetNumberOfInputPorts(3);
-  this->SetNumberOfOutputPorts(3);
+  this->SetNumberOfOutputPorts(4);
 }
 
 vtkThiessenArealAverage::~vtkThiessenArealAverage() = default;
@@ -960,7 +1019,7 @@ int vtkThiessenArealAverage::FillInputPortInformation(int port, vtkInformation* 
 
 int vtkThiessenArealAverage::FillOutputPortInformation(int port, vtkInformation* info)
 {
-  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 ? "vtkPolyData" : "vtkTable");
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 0 || port == 3 ? "vtkPolyData" : "vtkTable");
   return 1;
 }
 
@@ -977,8 +1036,11 @@ int vtkThiessenArealAverage::RequestInformation(vtkInformation*,
     // filter's, and a requested time goes up to the gauges.
     return 1;
   }
-  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
-  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  for (vtkInformation* info : { outInfo, outputVector->GetInformationObject(3) })
+  {
+    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    info->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  }
   if (this->GetNumberOfInputConnections(0) == 0)
   {
     return 1;
@@ -1007,11 +1069,15 @@ int vtkThiessenArealAverage::RequestInformation(vtkInformation*,
                                          .Steps.Times;
     if (!times.empty())
     {
-      outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(),
-        times.data(),
-        static_cast<int>(times.size()));
-      const double range[2] = { times.front(), times.back() };
-      outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+      for (vtkInformation* info : { outInfo, outputVector->GetInformationObject(3) })
+      {
+        // (both the tiles and their outlines follow the time)
+        info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(),
+          times.data(),
+          static_cast<int>(times.size()));
+        const double range[2] = { times.front(), times.back() };
+        info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+      }
     }
   }
   catch (const std::exception&)
@@ -1038,7 +1104,7 @@ int vtkThiessenArealAverage::RequestUpdateExtent(vtkInformation*,
 }
 
 //------------------------------------------------------------------------------
-int vtkThiessenArealAverage::RequestData(vtkInformation*,
+int vtkThiessenArealAverage::RequestData(vtkInformation* request,
   vtkInformationVector** inputVector,
   vtkInformationVector* outputVector)
 {
@@ -1050,10 +1116,16 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
   vtkDataObject* catchment = vtkDataObject::GetData(inputVector[1]);
   vtkDataObject* observationsData = vtkDataObject::GetData(inputVector[2]);
   vtkTable* observations = vtkTable::SafeDownCast(observationsData);
-  vtkInformation* tilesInfo = outputVector->GetInformationObject(0);
+  // The time asked for by the output that asked (the tiles or their outlines; the tables have
+  // none): ParaView's view of the outlines alone asks through output 3.
+  const int asking = request->Has(vtkExecutive::FROM_OUTPUT_PORT())
+    ? request->Get(vtkExecutive::FROM_OUTPUT_PORT())
+    : 0;
+  vtkInformation* tilesInfo = outputVector->GetInformationObject(asking == 3 ? 3 : 0);
   vtkPolyData* tilesOutput = vtkPolyData::GetData(outputVector, 0);
   vtkTable* summaryOutput = vtkTable::GetData(outputVector, 1);
   vtkTable* weightsOutput = vtkTable::GetData(outputVector, 2);
+  vtkPolyData* outlinesOutput = vtkPolyData::GetData(outputVector, 3);
   Internals& in = *this->Internal;
   try
   {
@@ -1103,17 +1175,21 @@ int vtkThiessenArealAverage::RequestData(vtkInformation*,
                       << tessera::NumberText(in.Times.front()) << " to "
                       << tessera::NumberText(in.Times.back()));
         tilesOutput->Initialize();
+        outlinesOutput->Initialize();
         return 0;
       }
       const auto after = std::upper_bound(in.Times.begin(), in.Times.end(), t);
       step = after == in.Times.begin() ? 0 : static_cast<std::size_t>(after - in.Times.begin() - 1);
     }
-    this->WriteTiles(step, stationIds, tilesOutput);
-    if (!in.Times.empty())
+    this->WriteTiles(step, stationIds, tilesOutput, outlinesOutput);
+    for (vtkPolyData* output : { tilesOutput, outlinesOutput })
     {
-      tilesOutput->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), in.Times[step]);
+      if (!in.Times.empty())
+      {
+        output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), in.Times[step]);
+      }
+      tessera_vtk::ListNonEmptyFieldArraysFirst(output);
     }
-    tessera_vtk::ListNonEmptyFieldArraysFirst(tilesOutput);
     return 1;
   }
   catch (const std::exception& e)
@@ -1615,7 +1691,8 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
 //------------------------------------------------------------------------------
 void vtkThiessenArealAverage::WriteTiles(std::size_t step,
   vtkAbstractArray* stationIds,
-  vtkPolyData* output)
+  vtkPolyData* output,
+  vtkPolyData* outlines)
 {
   Internals& in = *this->Internal;
   const tessera::ArealStep result = in.Average->Step(in.Values[step]);
@@ -1656,6 +1733,7 @@ void vtkThiessenArealAverage::WriteTiles(std::size_t step,
   output->SetPoints(points);
   output->SetPolys(polys);
   cells.AddTo(output->GetCellData());
+  WriteOutlines(clipped, result, in.Values[step], stationIds, outlines);
 }
 
 //------------------------------------------------------------------------------

@@ -307,8 +307,11 @@ private:
   /// Forgets the last build and empties every output: after an error nothing is shown as a result
   /// of the failed input.
   void DiscardResults(vtkInformationVector* outputVector);
-  /// Output 0 for one step.
-  void WriteTiles(std::size_t step, vtkAbstractArray* stationIds, vtkPolyData* output);
+  /// Outputs 0 and 3 (the tiles and their outlines) for one step.
+  void WriteTiles(std::size_t step,
+    vtkAbstractArray* stationIds,
+    vtkPolyData* output,
+    vtkPolyData* outlines);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

@@ -6,6 +6,7 @@
 #include "areal_average.h"
 #include "clip.h"
 #include "display_pieces.h"
+#include "meridian_cut.h"
 #include "piece_outlines.h"
 #include "polygon_area.h"
 #include "polygon_validation.h"
@@ -16,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <string>
@@ -411,4 +413,97 @@ TEST(PieceOutlines, OutlinesOfLonLatTilesShareTheirBordersAndFillTheCatchment)
   }
   EXPECT_GT(withHoles, 2);
   EXPECT_GT(joined, 10);
+}
+
+// Two pieces sharing a slanted edge, cut at a vertical line: the edge's crossing point is the
+// same from either piece, so the parts on each side join into one polygon each, and nothing of
+// the pieces' area is lost or gained.
+TEST(PieceOutlines, PiecesCutAtAMeridianJoinOnEachSide)
+{
+  ClippedRings pieces;
+  const std::vector<std::vector<Point2>> quads{ { { 0, 0 }, { 1, 0 }, { 1, 1.3 }, { 0, 1 } },
+    { { 0, 1 }, { 1, 1.3 }, { 1, 2 }, { 0, 2 } } };
+  for (const auto& quad : quads)
+  {
+    pieces.Vertices.insert(pieces.Vertices.end(), quad.begin(), quad.end());
+    pieces.RingOffsets.push_back(pieces.Vertices.size());
+  }
+  const std::array<ClippedRings, 2> sides = CutAtMeridian(pieces, 0, 2, 0.3);
+  RegionOutlines outlines;
+  for (const ClippedRings& side : sides)
+  {
+    ASSERT_EQ(side.RingOffsets.size(), 3U); // a part of each piece
+    AppendOutlines(OutlinesOfPieces(side, 0, 2), outlines);
+  }
+  ASSERT_EQ(PolygonCount(outlines), 2U);
+  ASSERT_EQ(RingCount(outlines), 2U);
+  EXPECT_NEAR(RingArea(outlines.Rings, 0), 0.6, 1e-15); // west: 0.3 wide, 2 high
+  EXPECT_NEAR(RingArea(outlines.Rings, 1), 1.4, 1e-15);
+  EXPECT_EQ(outlines.Rings.Vertices.size(), 12U); // (each side: its shared edge gone, 6 vertices)
+  for (std::size_t r = 0; r < 2; ++r)
+  {
+    const Box2 box = BoundsOf(&outlines.Rings.Vertices[outlines.Rings.RingOffsets[r]],
+      outlines.Rings.RingOffsets[r + 1] - outlines.Rings.RingOffsets[r]);
+    EXPECT_TRUE(box.XMax <= 0.3 || box.XMin >= 0.3) << "polygon " << r << " spans the line";
+  }
+  // A piece that only touches the line keeps one part.
+  const std::array<ClippedRings, 2> touching = CutAtMeridian(pieces, 0, 1, 1.0);
+  EXPECT_EQ(touching[0].RingOffsets.size(), 2U);
+  EXPECT_EQ(touching[1].RingOffsets.size(), 1U);
+}
+
+// Tiles of an island across the 180th meridian (longitudes written 179.5 to 180.5, and as
+// -180.5 to -179.5): every polygon of the outlines lies on one side of the meridian, and a tile's
+// polygons hold its pieces' area.
+TEST(PieceOutlines, TilesAcrossTheAntimeridianAreCutThere)
+{
+  for (const double shift : { 0.0, -360.0 })
+  {
+    SCOPED_TRACE("shift " + std::to_string(shift));
+    const std::vector<Point2> island{
+      { 179.5 + shift, -17 }, { 180.5 + shift, -17 }, { 180.5 + shift, -16 }, { 179.5 + shift, -16 }
+    };
+    const std::vector<Point2> gauges{ { 179.6 + shift, -16.2 },
+      { 179.7 + shift, -16.8 },
+      { 180.1 + shift, -16.7 },
+      { 180.4 + shift, -16.4 },
+      { 179.98 + shift, -16.5 } };
+    ThiessenArealAverage average(gauges, { 0, 4 }, island);
+    average.Step(std::vector<double>(gauges.size(), 1.0));
+    const ClippedTilesLonLat tiles = average.CurrentClippedTiles();
+    int across = 0;
+    for (std::size_t k = 0; k < tiles.Gauges.size(); ++k)
+    {
+      double pieceArea = 0.0, outlineArea = 0.0;
+      for (std::size_t r = tiles.TilePieceOffsets[k]; r < tiles.TilePieceOffsets[k + 1]; ++r)
+      {
+        pieceArea += RingArea(tiles.Pieces, r);
+      }
+      // (the pieces' longitudes run on across the meridian, from either side: 180 or -180)
+      const std::size_t begin = tiles.Pieces.RingOffsets[tiles.TilePieceOffsets[k]];
+      const Box2 tileBox = BoundsOf(&tiles.Pieces.Vertices[begin],
+        tiles.Pieces.RingOffsets[tiles.TilePieceOffsets[k + 1]] - begin);
+      const double meridian = tileBox.XMax > 0.0 ? 180.0 : -180.0;
+      bool west = false, east = false;
+      for (std::size_t p = tiles.TileOutlineOffsets[k]; p < tiles.TileOutlineOffsets[k + 1]; ++p)
+      {
+        for (std::size_t r = tiles.Outlines.PolygonOffsets[p];
+             r < tiles.Outlines.PolygonOffsets[p + 1];
+             ++r)
+        {
+          const std::size_t begin = tiles.Outlines.Rings.RingOffsets[r];
+          const Box2 box = BoundsOf(
+            &tiles.Outlines.Rings.Vertices[begin], tiles.Outlines.Rings.RingOffsets[r + 1] - begin);
+          EXPECT_TRUE(box.XMax <= meridian || box.XMin >= meridian)
+            << "tile " << k << " ring " << r << " spans " << box.XMin << " .. " << box.XMax;
+          west = west || box.XMax <= meridian;
+          east = east || box.XMin >= meridian;
+          outlineArea += RingArea(tiles.Outlines.Rings, r);
+        }
+      }
+      EXPECT_NEAR(outlineArea, pieceArea, 1e-12 * pieceArea) << "tile " << k;
+      across += west && east;
+    }
+    EXPECT_GE(across, 2);
+  }
 }

@@ -1396,6 +1396,94 @@ def test_tiles_of_a_catchment_with_a_hole_or_a_bay():
                                      f"inside {inside[wrong[:5]]}: {samples[wrong[:5]].tolist()}")
 
 
+def outline_polygons(outlines):
+    """Output 3 as {GaugeId: [[outer ring, hole, ...], ...]}: rings as (lon, lat) lists without the
+    repeated first point, after checking that each cell is closed, a polygon's rings are
+    consecutive with its outer ring (Hole 0) first, and Hole agrees with the ring's orientation."""
+    cd = outlines.GetCellData()
+    gauge_ids, polygon_ids, holes = (cd.GetArray(n) for n in ("GaugeId", "PolygonId", "Hole"))
+    by_gauge, polygons = {}, {}
+    for c, ring in enumerate(cell_rings(outlines)):
+        assert_that(len(ring) >= 4 and ring[0] == ring[-1], f"outline cell {c} is not a closed ring")
+        ring = ring[:-1]
+        twice_area = sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(ring, ring[1:] + ring[:1]))
+        hole = holes.GetValue(c)
+        assert_that((twice_area < 0) == (hole == 1), f"outline cell {c}: Hole {hole}, signed area {twice_area / 2}")
+        p = polygon_ids.GetValue(c)
+        if p not in polygons:
+            assert_that(hole == 0, f"outline cell {c}: polygon {p} begins with a hole")
+            polygons[p] = [ring]
+            by_gauge.setdefault(gauge_ids.GetValue(c), []).append(polygons[p])
+        else:
+            assert_that(hole == 1 and polygon_ids.GetValue(c - 1) == p, f"outline cell {c}: polygon {p}'s rings")
+            polygons[p].append(ring)
+    return by_gauge
+
+
+def test_tile_outlines_are_the_tiles_as_polygons_with_holes():
+    # Output 3 joins each gauge's cells back into polygons with holes, for a GIS and for drawing the
+    # tiles' borders: over a lake, the tile of the gauge in it is one polygon with a hole; across a
+    # bay, the tile that meets both shores is two polygons. Each gauge's polygons hold the same
+    # points as its cells, and their ellipsoidal area (outer rings less holes) is its cells'.
+    square = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]
+    lake = [(0.35, 0.35), (0.35, 0.65), (0.65, 0.65), (0.65, 0.35)]
+    bay = [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.6, 1.0), (0.6, 0.3), (0.4, 0.3), (0.4, 1.0), (0.0, 1.0)]
+    cases = [("lake", [square, lake], [(0.5, 0.5), (0.1, 0.1), (0.9, 0.1), (0.9, 0.9), (0.1, 0.9)], (0, [2])),
+             ("bay", [bay], [(0.5, 0.9), (0.5, 0.1), (0.1, 0.5), (0.9, 0.5)], (0, [1, 1]))]
+    n = 40
+    samples = np.array([((i + 0.5 * math.sqrt(2) - 0.2) / n, (j + 0.5 * math.sqrt(3) - 0.4) / n)
+                        for i in range(n) for j in range(n)])
+    for name, rings, coords, (gauge, ring_counts) in cases:
+        f = vtkThiessenArealAverage()
+        errors = messages_of(f)
+        f.SetGaugesData(gauges_polydata(coords, [f"{name}{k}" for k in range(len(coords))],
+                                        [float(k + 1) for k in range(len(coords))]))
+        f.SetCatchmentData(polygon(rings))
+        f.Update()
+        tiles, outlines = f.GetOutputDataObject(0), f.GetOutputDataObject(3)
+        assert_that(not errors and outlines.GetNumberOfLines() == outlines.GetNumberOfCells() > 0,
+                    f"{name}: {errors}")
+        assert_that(outlines.GetCellData().GetScalars() is None, f"{name}: outlines have no active scalars")
+        by_gauge = outline_polygons(outlines)
+        assert_that([len(p) for p in by_gauge[gauge]] == ring_counts,
+                    f"{name}: gauge {gauge}'s polygons have {[len(p) for p in by_gauge[gauge]]} rings")
+        cd = tiles.GetCellData()
+        cells_of = {}
+        for c, ring in enumerate(cell_rings(tiles)):
+            cells_of.setdefault(cd.GetArray("GaugeId").GetValue(c), []).append(ring)
+        assert_that(sorted(by_gauge) == sorted(cells_of), f"{name}: gauges with outlines and with cells")
+        for g, polygons in by_gauge.items():
+            area = math.fsum(ellipsoidal_area(r) for p in polygons for r in p)
+            cells_area = math.fsum(ellipsoidal_area(r) for r in cells_of[g])
+            assert_close(area, cells_area, 1e-12 * cells_area, f"{name}: gauge {g}'s outline area against its cells'")
+            in_cells = sum(Path(r).contains_points(samples).astype(int) for r in cells_of[g])
+            in_polygons = sum(sum(Path(r).contains_points(samples).astype(int) for r in p) % 2 for p in polygons)
+            wrong = np.nonzero(in_cells != in_polygons)[0]
+            assert_that(len(wrong) == 0, f"{name}: gauge {g}: {len(wrong)} samples in its cells and outlines "
+                                         f"differ: {samples[wrong[:5]].tolist()}")
+
+
+def test_tile_outlines_follow_the_time_asked_through_their_port():
+    # A view of the outlines alone asks through output 3: the step is the one asked there, and
+    # output 0 and 3 show the same step's gauges.
+    coords = [(0.25, 0.5), (0.75, 0.5), (0.5, 0.8)]
+    months = {(2000, 1): {"a": 1.0, "b": 3.0, "c": 2.0}, (2000, 2): {"a": 5.0}}
+    f, messages = summary_of(coords, ["a", "b", "c"], [(0, 0), (1, 0), (1, 1), (0, 1)],
+                             observations_table(months))
+    times = summary_column(f, "Time")
+    steps = f.GetOutputInformation(3).Get(vtkStreamingDemandDrivenPipeline.TIME_STEPS())
+    assert_that(not messages and steps is not None and list(steps) == times, f"output 3's steps: {steps}")
+    for t, gauges in ((times[1], {0}), (times[0], {0, 1, 2})):
+        f.GetOutputInformation(3).Set(vtkStreamingDemandDrivenPipeline.UPDATE_TIME_STEP(), t)
+        f.Update(3)
+        outlines, tiles = f.GetOutputDataObject(3), f.GetOutputDataObject(0)
+        seen = {outlines.GetCellData().GetArray("GaugeId").GetValue(c) for c in range(outlines.GetNumberOfCells())}
+        assert_that(not messages and seen == gauges
+                    and outlines.GetInformation().Get(vtkPolyData.DATA_TIME_STEP()) == t
+                    and tiles.GetInformation().Get(vtkPolyData.DATA_TIME_STEP()) == t,
+                    f"time {t}: gauges {seen}, {messages}")
+
+
 def test_weights_table_lists_every_step():
     coords, ids, ring, months = read_colorado()
     f, messages = summary_of(coords, ids, ring, observations_table(months))
@@ -1718,6 +1806,8 @@ if __name__ == "__main__":
          test_review_cases_of_gauges_and_errors,
          test_columns_not_yet_set_give_no_error_until_the_update,
          test_review_cases_of_times_values_and_time_aware_gauges,
+         test_tile_outlines_are_the_tiles_as_polygons_with_holes,
+         test_tile_outlines_follow_the_time_asked_through_their_port,
          test_rows_that_cannot_be_used_make_no_step_and_are_listed,
          test_weights_table_lists_every_step,
          test_a_requested_time_picks_the_step_at_or_before_it_and_nan_is_named,

@@ -1,0 +1,33 @@
+#pragma once
+// Pieces cut at a meridian: a GIS reads a polygon in lon/lat within -180 .. 180 degrees (RFC 7946,
+// 3.1.9), so a tile across the 180th meridian (its longitudes continuous here, 179.5 to 180.5)
+// must be written as a western and an eastern part. Each piece is cut by the vertical line
+// x = at (the edges are straight in lon/lat, so the cut is exact):
+//
+//   piece across x = at       west part   east part
+//   +-----|-----+             +----+      +-----+
+//   |     |     |      ->     |    |      |     |
+//   +-----|-----+             +----+      +-----+
+//
+// A crossing point is computed from the edge's lower end (by x, then y), so that two pieces that
+// share an edge share its crossing point too, and their parts still meet vertex for vertex
+// (piece_outlines.h joins them). A piece that dips across the line and back is cut by
+// Sutherland-Hodgman into one ring with zero-width bridges along the line, which cancel there.
+
+#include "clip.h"
+
+#include <array>
+#include <cstddef>
+
+namespace tessera
+{
+
+/// Rings first .. last - 1 of pieces cut at x = at: [0] their parts with x <= at, [1] those with
+/// x >= at (a vertex on the line is in both), parts of fewer than 3 vertices left out. (Two
+/// sets: joined, a piece's two parts would join again across the line.)
+std::array<ClippedRings, 2> CutAtMeridian(const ClippedRings& pieces,
+  std::size_t first,
+  std::size_t last,
+  double at);
+
+} // namespace tessera
