@@ -344,7 +344,10 @@ std::string LonLatFault(const Point2& p)
   }
   if (std::abs(p.y) > 90.0)
   {
-    return "a latitude beyond 90 degrees";
+    // (a longitude that would be a valid latitude: a file of lat, lon read as lon, lat)
+    return std::abs(p.x) <= 90.0 && std::abs(p.y) <= 180.0
+      ? "a latitude beyond 90 degrees (are longitude and latitude swapped?)"
+      : "a latitude beyond 90 degrees";
   }
   return std::abs(p.x) > 360.0 ? "a longitude beyond 360 degrees" : std::string();
 }
@@ -681,7 +684,7 @@ Point2 GeographicProjection::Forward(const Point2& lonlat, long long id) const
   }
   if (std::abs(lonlat.y) > 90.0)
   {
-    throw InputError(DescribePoint("point", id, lonlat) + " has a latitude beyond 90 degrees");
+    throw InputError(DescribePoint("point", id, lonlat) + " has " + LonLatFault(lonlat));
   }
   const double lon0 = Impl->CentralMeridian;
   // Reduce first so that a longitude of 181.6 and one of -178.4 project to the same place.

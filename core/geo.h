@@ -116,7 +116,9 @@ struct GeographicExtent
 /// catchment span some 10^6 km^2, and one of 1e20 has no digit left below a turn of the globe.
 bool InLonLatRange(const Point2& p);
 /// What is wrong with p as a longitude/latitude: "a NaN or infinite coordinate", "a latitude
-/// beyond 90 degrees" or "a longitude beyond 360 degrees"; empty when it is InLonLatRange.
+/// beyond 90 degrees" (asking whether the two are swapped where the longitude would be a valid
+/// latitude and the latitude a longitude) or "a longitude beyond 360 degrees"; empty when it is
+/// InLonLatRange.
 std::string LonLatFault(const Point2& p);
 /// Throws InputError naming the first point with a NaN/Inf coordinate or out of InLonLatRange.
 void ValidateLonLat(const std::vector<Point2>& lonlat);

@@ -28,9 +28,9 @@ Writes into --out:
                          outline (cell data
                          StationId, GaugeId, Weight, Area_m2 and Value per gauge, CellArea_m2
                          and CellWeight per cell)
-  tiles_YYYY_MM.geojson  the same tiles for a GIS (RFC 7946): a feature per piece with the gauge's
-                         station_id, name, weight, area_km2, precip, and piece_area_km2 and
-                         piece_weight (dissolve by station_id to join a tile's pieces)
+  tiles_YYYY_MM.geojson  the same tiles for a GIS (RFC 7946): a feature per gauge, its part of the
+                         catchment a polygon with holes (several for a tile across a bay), with
+                         station_id, name, weight, area_km2, precip
   map_YYYY_MM.png        the tiles coloured by that month's precipitation, gauges, the outline
                          (each ring of it), over the catchment and the weighted gauges' extent
   areal_mean.png         the areal-mean time series
@@ -2020,64 +2020,42 @@ def tiles_by_gauge(tiles):
     return result
 
 
-def write_tiles_geojson(tiles, gauges, path):
-    """The step's clipped tiles (the filter's output) as GeoJSON (RFC 7946) at path, for a GIS: a
-    Feature per piece (a Polygon, in lon/lat, anticlockwise, its first vertex repeated last; a
-    MultiPolygon of its two parts where it crosses the 180th meridian, meridian_parts) with
-    the gauge's station_id, name, weight, area_km2 and precip as weights_TAG.csv gives them, and the
-    piece's own piece_area_km2 and piece_weight. A tile whose part of the catchment has a hole or
-    comes in parts is several pieces, each a simple polygon (dissolve by station_id to join them):
-    one feature of rings with holes would need the pieces joined back. Ends the script naming the
-    file when it cannot be written."""
+def write_tiles_geojson(outlines, gauges, path):
+    """The step's tiles as GeoJSON (RFC 7946) at path, for a GIS: a Feature per gauge whose tile
+    reaches the catchment, with its station_id, name, weight, area_km2 and precip as
+    weights_TAG.csv gives them. Its geometry is its part of the catchment (the filter's output 3,
+    the tiles' outlines) in lon/lat: a Polygon (the outer ring anticlockwise, then its holes
+    clockwise, each closed), or a MultiPolygon of several (a tile across a bay; a tile across the
+    180th meridian, cut there), longitudes within -180 to 180. Ends the script naming the file when
+    it cannot be written."""
     import json
 
     ids = gauges.GetPointData().GetAbstractArray("station_id")
     names = gauges.GetPointData().GetAbstractArray("name")
-    cd = tiles.GetCellData()
-    gauge_ids, weights, areas, values = (cd.GetArray(n) for n in ("GaugeId", "Weight", "Area_m2", "Value"))
-    piece_areas, piece_weights = cd.GetArray("CellArea_m2"), cd.GetArray("CellWeight")
-    features = []
-    for c, ring in enumerate(polygon_rings(tiles)):  # (the tiles are polygon cells only)
-        g = gauge_ids.GetValue(c)
-        twice_area = sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(ring, ring[1:] + ring[:1]))
-        parts = [[list(p) for p in part + part[:1]] for part in meridian_parts(ring if twice_area >= 0 else ring[::-1])]
-        geometry = ({"type": "Polygon", "coordinates": parts} if len(parts) == 1 else
-                    {"type": "MultiPolygon", "coordinates": [[part] for part in parts]})
-        features.append({"type": "Feature", "geometry": geometry, "properties": {
-            "station_id": ids.GetValue(g), "name": names.GetValue(g), "weight": weights.GetValue(c),
-            "area_km2": areas.GetValue(c) / 1e6, "precip": values.GetValue(c),
-            "piece_area_km2": piece_areas.GetValue(c) / 1e6, "piece_weight": piece_weights.GetValue(c)}})
+    cd = outlines.GetCellData()
+    gauge_ids, polygon_ids, weights, areas, values = (
+        cd.GetArray(n) for n in ("GaugeId", "PolygonId", "Weight", "Area_m2", "Value"))
+    features, polygons = {}, {}  # by gauge: the feature; by polygon id: its rings
+    for c, ring in enumerate(polygon_rings(outlines)):  # (closed lines, the first point repeated)
+        g, p = gauge_ids.GetValue(c), polygon_ids.GetValue(c)
+        if g not in features:
+            features[g] = {"type": "Feature", "geometry": [], "properties": {
+                "station_id": ids.GetValue(g), "name": names.GetValue(g), "weight": weights.GetValue(c),
+                "area_km2": areas.GetValue(c) / 1e6, "precip": values.GetValue(c)}}
+        if p not in polygons:  # (its outer ring, which comes first): the turns that bring it to -180 .. 180
+            polygons[p] = (math.floor((min(x for x, _ in ring) + 180.0) / 360.0), [])
+            features[g]["geometry"].append(polygons[p][1])
+        turns, rings = polygons[p]
+        rings.append([[x - 360.0 * turns, y] for x, y in ring])
+    for feature in features.values():
+        parts = feature["geometry"]
+        feature["geometry"] = ({"type": "Polygon", "coordinates": parts[0]} if len(parts) == 1 else
+                               {"type": "MultiPolygon", "coordinates": parts})
     try:
         with open(path, "w") as f:
-            json.dump({"type": "FeatureCollection", "features": features}, f)
+            json.dump({"type": "FeatureCollection", "features": list(features.values())}, f)
     except OSError as error:
         csv_input.fail(f"{path}: cannot write the tiles ({error.strerror or error})")
-
-
-def meridian_parts(ring):
-    """A tile piece's ring (lon/lat, anticlockwise, its longitudes continuous: 179.5 to 180.5
-    across the antimeridian) as GeoJSON wants it (RFC 7946, 3.1.9): its longitudes within -180 to
-    180, and a ring across the 180th meridian cut there into a western and an eastern part (the
-    edges are straight in lon/lat, so the cut is exact). A list of one or two rings, not closed."""
-    turns = math.floor((min(p[0] for p in ring) + 180.0) / 360.0)
-    ring = [(x - 360.0 * turns, y) for x, y in ring]
-    if max(p[0] for p in ring) <= 180.0:
-        return [ring]
-    west, east = (meridian_side(ring, side) for side in (-1.0, 1.0))
-    return [part for part in (west, [(x - 360.0, y) for x, y in east]) if len(part) >= 3]
-
-
-def meridian_side(ring, side):
-    """The part of ring on one side of longitude 180 (side -1: west of it, 1: east), by
-    Sutherland-Hodgman: each edge that crosses it is cut at it, latitude linear in longitude."""
-    part = []
-    for a, b in zip(ring, ring[1:] + ring[:1]):
-        a_in, b_in = side * (a[0] - 180.0) >= 0.0, side * (b[0] - 180.0) >= 0.0
-        if a_in:
-            part.append(a)
-        if a_in != b_in and a[0] != 180.0 and b[0] != 180.0:
-            part.append((180.0, a[1] + (180.0 - a[0]) / (b[0] - a[0]) * (b[1] - a[1])))
-    return part
 
 
 def write_weights(per_gauge, gauges, path):
@@ -2588,7 +2566,7 @@ def main(argv=None):
         per_gauge = tiles_by_gauge(tiles)
         write_weights(per_gauge, gauges, os.path.join(args.out, f"weights_{tag}.csv"))
         csv_input.write_vtk(vtkXMLPolyDataWriter(), tiles, os.path.join(args.out, f"tiles_{tag}.vtp"))
-        write_tiles_geojson(tiles, gauges, os.path.join(args.out, f"tiles_{tag}.geojson"))
+        write_tiles_geojson(average.GetOutputDataObject(3), gauges, os.path.join(args.out, f"tiles_{tag}.geojson"))
         if not args.no_plots:
             plot_map(per_gauge, gauges, outline, record.reporting.get(chosen, set()), map_title(rows, steps, chosen),
                      os.path.join(args.out, f"map_{tag}.png"), steps.adjective)

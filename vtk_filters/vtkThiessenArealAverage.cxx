@@ -1117,11 +1117,18 @@ int vtkThiessenArealAverage::RequestData(vtkInformation* request,
   vtkDataObject* observationsData = vtkDataObject::GetData(inputVector[2]);
   vtkTable* observations = vtkTable::SafeDownCast(observationsData);
   // The time asked for by the output that asked (the tiles or their outlines; the tables have
-  // none): ParaView's view of the outlines alone asks through output 3.
+  // none): ParaView's view of the outlines alone asks through output 3. A request without a time
+  // goes by output 0's.
   const int asking = request->Has(vtkExecutive::FROM_OUTPUT_PORT())
     ? request->Get(vtkExecutive::FROM_OUTPUT_PORT())
     : 0;
-  vtkInformation* tilesInfo = outputVector->GetInformationObject(asking == 3 ? 3 : 0);
+  vtkInformation* tilesInfo = outputVector->GetInformationObject(0);
+  if (asking == 3 &&
+    outputVector->GetInformationObject(3)->Has(
+      vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+  {
+    tilesInfo = outputVector->GetInformationObject(3);
+  }
   vtkPolyData* tilesOutput = vtkPolyData::GetData(outputVector, 0);
   vtkTable* summaryOutput = vtkTable::GetData(outputVector, 1);
   vtkTable* weightsOutput = vtkTable::GetData(outputVector, 2);
@@ -1392,9 +1399,10 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
       << "none of the " << gaugeCount
       << " gauges lies inside the catchment: every weight goes to gauges outside "
          "it, as Thiessen's rule gives them. If that is unexpected, check that the "
-         "gauges are longitude, latitude in degrees (a west longitude without its "
-         "minus sign, or the two swapped; for gauges made longitude, latitude from "
-         "projected coordinates, the projection and its grid those of their system).");
+         "gauges and the catchment are both longitude, latitude in degrees (a west "
+         "longitude without its minus sign, or the two swapped in either; for "
+         "coordinates made longitude, latitude from projected ones, the projection and "
+         "its grid those of their system).");
   }
 
   in.Times.clear();

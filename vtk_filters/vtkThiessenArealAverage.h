@@ -103,6 +103,17 @@
  * its `CoveredFraction` and its areal mean is the sum of `Weight` x `Value`. WeightsTable off
  * leaves it empty.
  *
+ * Output 3 (vtkPolyData, time-dependent like output 0): the same tiles' outlines, each gauge's
+ * part of the catchment joined back from its cells into polygons with holes
+ * (core/piece_outlines.h), as a GIS wants a Thiessen polygon and as a view draws the tiles'
+ * borders without the cuts between cells: one closed polyline per ring (its first point repeated
+ * last), in lon/lat. Cell data: `StationId`, `GaugeId`, `Weight`, `Area_m2` and `Value` as in
+ * output 0, `PolygonId` (the polygon the ring bounds, numbered over the output: most gauges have
+ * one, a tile across a bay two) and `Hole` (0: the polygon's outer ring, anticlockwise, listed
+ * first; 1: a hole in it, clockwise, such as a lake inside the tile). A polygon of a tile across
+ * the 180th meridian is cut there, so that each lies on one side of it. No active scalars, so
+ * ParaView draws the lines in one colour over the coloured tiles.
+ *
  * Unused input is reported, never dropped silently, in a warning: gauges with no observation,
  * observation rows of station ids that no gauge has (each id with its number of rows and first
  * row), rows without a station id or a time (by row), a station id given to several gauges (its
@@ -130,7 +141,7 @@
  * ("gauge 7 (station 050848)").
  *
  * An error (bad input, whether found while reading the times or while averaging) is reported with
- * vtkErrorMacro and leaves all three outputs empty, with no time steps advertised: an earlier
+ * vtkErrorMacro and leaves all four outputs empty, with no time steps advertised: an earlier
  * input's results are never left in place to be taken for this one's.
  */
 

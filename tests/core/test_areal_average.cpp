@@ -927,9 +927,13 @@ TEST(ArealAverage, BadInputIsNamed)
     << typo;
   const std::string north = errorOf({ { 0.2, 0.2 }, { 0.5, 95.0 } }, catchment.Ring);
   EXPECT_NE(north.find("gauge 1 has an invalid longitude/latitude (0.5, 95): a latitude beyond 90 "
-                       "degrees"),
+                       "degrees (are longitude and latitude swapped?)"),
     std::string::npos)
     << north;
+  // (not asked where the longitude could not be a latitude)
+  const std::string wide = errorOf({ { 0.2, 0.2 }, { 105.0, 95.0 } }, catchment.Ring);
+  EXPECT_NE(wide.find("(105, 95): a latitude beyond 90 degrees"), std::string::npos) << wide;
+  EXPECT_EQ(wide.find("swapped"), std::string::npos) << wide;
   // Metres of a projection (UTM) fed as degrees are named as such; a typo is not.
   EXPECT_EQ(typo.find("projected"), std::string::npos) << typo;
   const std::string utm = errorOf({ { 500000.0, 4400000.0 } }, catchment.Ring);

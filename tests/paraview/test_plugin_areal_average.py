@@ -7,7 +7,8 @@ import os
 import sys
 
 from paraview import servermanager
-from paraview.simple import CreateRenderView, CSVReader, GetTimeKeeper, LoadPlugin, OpenDataFile, Show, TableToPoints
+from paraview.simple import (CreateRenderView, CSVReader, GetTimeKeeper, LoadPlugin, OpenDataFile, OutputPort, Show,
+                             TableToPoints)
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkOutputWindow
 
@@ -65,6 +66,22 @@ mean = math.fsum(per_gauge[gauge.GetValue(c)] * values.GetValue(c) for c in
            {gauge.GetValue(c): c for c in range(tiles.GetNumberOfCells())}.values())
 if not 7.0 < mean < 9.5:
     failures.append(f"1963-08 areal mean {mean} far from the 8.17 the example computes")
+# Output 3, the tiles' outlines: the same gauges' rings, drawn in one colour over the tiles (no
+# array to colour by), following the time asked for through it.
+outlines = servermanager.Fetch(average, idx=3)
+ringed = {outlines.GetCellData().GetArray("GaugeId").GetValue(c) for c in range(outlines.GetNumberOfCells())}
+if ringed != set(per_gauge) or outlines.GetNumberOfLines() != outlines.GetNumberOfCells():
+    failures.append(f"output 3 has rings of {len(ringed)} gauges, the tiles {len(per_gauge)}")
+outline_colour = list(Show(OutputPort(average, 3), CreateRenderView()).ColorArrayName)
+if outline_colour[1]:
+    failures.append(f"the outlines are coloured by {outline_colour}")
+average.UpdatePipeline(1920.0)
+tiles_1920 = servermanager.Fetch(average)
+outlines_1920 = servermanager.Fetch(average, idx=3)
+gauges_of = [{data.GetCellData().GetArray("GaugeId").GetValue(c) for c in range(data.GetNumberOfCells())}
+             for data in (tiles_1920, outlines_1920)]
+if gauges_of[0] != gauges_of[1] or gauges_of[0] == ringed:
+    failures.append(f"at 1920, output 3's {len(gauges_of[1])} gauges against the tiles' {len(gauges_of[0])}")
 # Shown, the tiles are coloured by the step's Value (they were one solid colour).
 shown = list(Show(average, CreateRenderView()).ColorArrayName)
 if shown != ["CELLS", "Value"]:

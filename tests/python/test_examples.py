@@ -4,6 +4,7 @@ data, and a user's bad files end the run with one line naming the file, line and
 traceback."""
 
 import csv
+import json
 import math
 import os
 import re
@@ -69,42 +70,67 @@ def write_stations(path, gauges):
 
 def assert_geojson_tiles(path, tiles, weighted):
     """Asserts that tiles_TAG.geojson at path holds tiles (the .vtp's vtkPolyData) as the script
-    documents it: a Polygon feature per cell in order, whose one ring is the cell's vertices
-    closed and anticlockwise (reversed where the cell's are not), with the properties of the
-    gauge's row of weighted (weights_TAG.csv's rows) and the cell's area and weight; GDAL's
-    reader gets a ring per feature."""
-    import json
-
+    documents it: a feature per gauge with cells, in GaugeId order, with the properties of the
+    gauge's row of weighted (weights_TAG.csv's rows); its geometry a Polygon or MultiPolygon of
+    closed rings within -180 .. 180, each polygon's outer ring anticlockwise and its holes
+    clockwise, holding the area of the gauge's cells (in lon/lat) and a point inside each of
+    them. GDAL's reader gets a block per feature
+    and a cell per ring."""
+    from matplotlib.path import Path
     from vtkmodules.vtkIOGDAL import vtkGDALVectorReader
+
+    def twice_area(ring):
+        return sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(ring, ring[1:] + ring[:1]))
 
     with open(path) as f:
         features = json.load(f)["features"]
-    assert_that(len(features) == tiles.GetNumberOfCells(), f"{path}: {len(features)} features")
     cd, row_of = tiles.GetCellData(), {w["station_id"]: w for w in weighted}
-    for c, feature in enumerate(features):
-        ring, properties = feature["geometry"]["coordinates"], feature["properties"]
-        assert_that(feature["geometry"]["type"] == "Polygon" and len(ring) == 1, f"{path}: feature {c}")
-        points = [tuple(p) for p in ring[0]]
-        cell = tiles.GetCell(c)
-        vertices = [tiles.GetPoint(cell.GetPointId(k))[:2] for k in range(cell.GetNumberOfPoints())]
-        twice_area = sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(points, points[1:]))
-        assert_that(points[0] == points[-1] and twice_area > 0 and points[:-1] in (vertices, vertices[::-1]),
-                    f"{path}: feature {c}'s ring against the cell's vertices")
+    cells_of = {}
+    for c, ring in enumerate(cell_rings(tiles)):
+        cells_of.setdefault(cd.GetArray("GaugeId").GetValue(c), []).append(ring)
+    assert_that(len(features) == len(cells_of), f"{path}: {len(features)} features for {len(cells_of)} gauges")
+    ring_counts = []
+    for feature, (gauge, cells) in zip(features, sorted(cells_of.items())):
+        geometry, properties = feature["geometry"], feature["properties"]
+        assert_that(geometry["type"] in ("Polygon", "MultiPolygon"), f"{path}: gauge {gauge}'s {geometry['type']}")
+        polygons = [geometry["coordinates"]] if geometry["type"] == "Polygon" else geometry["coordinates"]
+        assert_that(geometry["type"] == "Polygon" or len(polygons) > 1,
+                    f"{path}: gauge {gauge}'s MultiPolygon of one polygon")
+        area = 0.0
+        for polygon in polygons:
+            for k, ring in enumerate(polygon):
+                points = [tuple(p) for p in ring]
+                assert_that(len(points) >= 4 and points[0] == points[-1]
+                            and all(-180.0 <= x <= 180.0 for x, _ in points)
+                            and (twice_area(points[:-1]) > 0) == (k == 0),
+                            f"{path}: gauge {gauge}'s ring {k}: closed, within -180 .. 180, outer first "
+                            f"anticlockwise, holes clockwise")
+                area += twice_area(points[:-1]) / 2
+        ring_counts.append(sum(len(polygon) for polygon in polygons))
+        moved = [[(x - 360.0 * math.floor((min(p[0] for p in cell) + 180.0) / 360.0), y) for x, y in cell]
+                 for cell in cells]
+        cell_area = math.fsum(twice_area(cell) / 2 for cell in moved)
+        assert_close(area, cell_area, 1e-9 * cell_area, f"{path}: gauge {gauge}'s polygons' area against its cells'")
+        for cell in moved:
+            # A point inside the cell: the centroid of its first triangle with area from its first
+            # vertex (the cells are fans about it).
+            a = cell[0]
+            b, c = next((b, c) for b, c in zip(cell[1:], cell[2:]) if twice_area([a, b, c]) > 0)
+            x = (a[0] + b[0] + c[0]) / 3
+            inside = (x - 360.0 * math.floor((x + 180.0) / 360.0), (a[1] + b[1] + c[1]) / 3)  # (-180 .. 180)
+            held = sum(sum(Path(r).contains_point(inside) for r in polygon) % 2 for polygon in polygons)
+            assert_that(held == 1, f"{path}: gauge {gauge}'s polygons hold {inside} {held} times")
         row = row_of[properties["station_id"]]
         for name in ("weight", "area_km2", "precip"):
             assert_close(properties[name], float(row[name]), 1e-14 * abs(float(row[name])),
-                         f"{path}: feature {c}'s {name}")
-        assert_that(properties["name"] == row["name"], f"{path}: feature {c}'s name {properties['name']!r}")
-        assert_close(properties["piece_area_km2"] * 1e6, cd.GetArray("CellArea_m2").GetValue(c),
-                     1e-9 * properties["piece_area_km2"] * 1e6, f"{path}: feature {c}'s piece_area_km2")
-        assert_that(properties["piece_weight"] == cd.GetArray("CellWeight").GetValue(c),
-                    f"{path}: feature {c}'s piece_weight")
+                         f"{path}: gauge {gauge}'s {name}")
+        assert_that(properties["name"] == row["name"], f"{path}: gauge {gauge}'s name {properties['name']!r}")
     reader = vtkGDALVectorReader()
     reader.SetFileName(path)
     reader.Update()
     output = reader.GetOutput()  # (a block per feature, a polygon's ring a polygon or a closed line)
     rings = [output.GetBlock(k).GetNumberOfCells() for k in range(output.GetNumberOfBlocks())]
-    assert_that(rings == [1] * len(features), f"{path}: GDAL reads rings {rings} of {len(features)} features")
+    assert_that(rings == ring_counts, f"{path}: GDAL reads rings {rings} of features with {ring_counts}")
 
 
 def read_polydata(path):
@@ -403,8 +429,6 @@ def lake_rings_cut():
 
 def write_lake_basin_cut(directory):
     """lake_rings_cut's basin as cut.geojson in directory; returns its path."""
-    import json
-
     cut = json.loads(json.dumps(LAKE_BASIN))
     cut["features"][0]["geometry"]["coordinates"] = lake_rings_cut()
     return write(directory, "cut.geojson", json.dumps(cut))
@@ -412,8 +436,6 @@ def write_lake_basin_cut(directory):
 
 def write_lake_basin(directory):
     """The basin's catchment, stations and observations files; returns their paths."""
-    import json
-
     paths = [os.path.join(directory, name) for name in ("basin.geojson", "stations.csv", "obs.csv")]
     with open(paths[0], "w") as f:
         json.dump(LAKE_BASIN, f)
@@ -450,11 +472,16 @@ def test_the_map_of_another_place_with_a_lake():
         cell_weight = tiles.GetCellData().GetArray("CellWeight")
         assert_close(math.fsum(cell_weight.GetValue(c) for c in range(tiles.GetNumberOfCells())), 1.0, 1e-12,
                      "the lake basin's cells' CellWeight")
-        # Its GeoJSON: the tile round the lake in pieces, each a feature of its own.
+        # Its GeoJSON: a feature per gauge, the tile round the lake (several cells in the .vtp) one
+        # polygon with the lake as its hole.
         geojson = os.path.join(out, "tiles_2001_01.geojson")
         assert_geojson_tiles(geojson, tiles, weights)
         stations = [tiles.GetCellData().GetAbstractArray("StationId").GetValue(c) for c in range(len(cells))]
         assert_that(len(cells) > len(set(stations)) == len(weights), f"the lake basin's pieces: {stations}")
+        with open(geojson) as f:
+            shapes = [(feature["geometry"]["type"], len(feature["geometry"]["coordinates"]))
+                      for feature in json.load(f)["features"]]
+        assert_that(("Polygon", 2) in shapes, f"no polygon with a hole among {shapes}")
         # The outline, ring by ring: GDAL's reading of the file gives back the file's two rings.
         _, rings = example.read_catchment(catchment)
         expected = [[tuple(p) for p in ring[:-1]] for ring in LAKE_BASIN["features"][0]["geometry"]["coordinates"]]
@@ -477,8 +504,6 @@ def test_a_lake_touching_the_outline_and_catchments_of_several_features():
     """A lake touching the outline at a vertex (valid in OGC's simple features) is a hole: the run
     succeeds, with less area than without it. A file of several polygon features is taken whole,
     with a line that says so; two adjacent features (sub-catchments) make the whole basin."""
-    import json
-
     outline = LAKE_BASIN["features"][0]["geometry"]["coordinates"][0]
     lake = [[176.0, -38.6], [175.8, -38.8], [176.2, -38.8], [176.0, -38.6]]
     far = [[170.0, -45.0], [171.0, -45.0], [171.0, -44.0], [170.0, -44.0], [170.0, -45.0]]
@@ -540,8 +565,6 @@ def test_each_group_of_features_gets_its_means():
     # tiles serve each, so the whole basin's mean is the sub-basins' means weighted by their areas,
     # at every month; each sub-basin's rows are those of a run with --feature for it alone (which
     # fits a projection to it alone).
-    import json
-
     west = [[175.5, -39.2], [176.0, -39.2], [176.0, -38.6], [175.5, -38.4], [175.5, -39.2]]
     east = [[176.0, -39.2], [176.5, -39.2], [176.5, -38.4], [176.0, -38.6], [176.0, -39.2]]
     north = [[176.0, -38.6], [176.5, -38.4], [176.5, -38.3], [175.5, -38.3], [175.5, -38.4], [176.0, -38.6]]
@@ -1855,8 +1878,6 @@ def test_small_values_and_a_catchment_across_the_antimeridian():
     # catchment across the 180th meridian, its gauges on both sides, spans the catchment, not the
     # globe: its outline is one small ring near 180.
     example = import_example()
-    import json
-
     with tempfile.TemporaryDirectory() as out:
         gauges = {"A": (179.6, -16.2), "B": (179.7, -16.8), "C": (-179.9, -16.7), "D": (-179.6, -16.4)}
         stations = os.path.join(out, "stations.csv")
@@ -1886,31 +1907,21 @@ def test_small_values_and_a_catchment_across_the_antimeridian():
             xs = [p[0] for p in ring]
             assert_that(max(xs) - min(xs) <= 1.0 + 1e-9, f"a ring spans {min(xs)} .. {max(xs)}")
         assert_that(all(lon_min < x < lon_max for x in lon), f"gauges at {lon}, map {lon_min} .. {lon_max}")
-        # The GeoJSON tiles keep to -180..180 (RFC 7946): a piece across the meridian is a
-        # MultiPolygon of its two parts, cut there, whose areas in lon/lat (the eastern part moved
-        # back by 360) sum to the piece's, each part on its side.
+        # The GeoJSON tiles keep to -180..180 (RFC 7946): a tile across the meridian is a
+        # MultiPolygon of its parts, cut there, each on its side and together holding its cells'
+        # area (checked with the rest by assert_geojson_tiles).
+        assert_geojson_tiles(os.path.join(out, "tiles_2000_01.geojson"), tiles,
+                             read_csv(os.path.join(out, "weights_2000_01.csv")))
         with open(os.path.join(out, "tiles_2000_01.geojson")) as f:
             features = json.load(f)["features"]
-        cells = cell_rings(tiles)
-        assert_that(len(features) == len(cells), f"{len(features)} features for {len(cells)} cells")
         kinds = [feature["geometry"]["type"] for feature in features]
-        assert_that("MultiPolygon" in kinds and "Polygon" in kinds, f"the pieces' kinds: {kinds}")
-
-        def twice_area(ring):
-            return sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(ring, ring[1:] + ring[:1]))
-
-        for feature, cell in zip(features, cells):
-            geometry = feature["geometry"]
-            parts = [polygon[0] for polygon in geometry["coordinates"]] if geometry["type"] == "MultiPolygon" else \
-                geometry["coordinates"]
-            assert_that(all(-180.0 <= p[0] <= 180.0 for part in parts for p in part), f"longitudes of {parts}")
-            if len(parts) == 2:
-                west, east = parts
-                assert_that(min(p[0] for p in west) < 180.0 == max(p[0] for p in west)
-                            and max(p[0] for p in east) > -180.0 == min(p[0] for p in east), f"the parts {parts}")
-                parts = [west, [(x + 360.0, y) for x, y in east]]
-            total = math.fsum(twice_area(part[:-1]) for part in parts)
-            assert_close(total, abs(twice_area(cell)), 1e-9 * abs(total), f"the parts' area of {parts}")
+        assert_that("MultiPolygon" in kinds and "Polygon" in kinds, f"the tiles' kinds: {kinds}")
+        for feature in features:
+            if feature["geometry"]["type"] == "MultiPolygon":
+                sides = sorted((min(p[0] for p in polygon[0]), max(p[0] for p in polygon[0]))
+                               for polygon in feature["geometry"]["coordinates"])
+                assert_that(len(sides) == 2 and sides[0][0] == -180.0 and sides[1][1] == 180.0,
+                            f"{feature['properties']['station_id']}: the parts span {sides}")
 
 
 def test_compressed_observations_are_read_and_all_weights_can_be_skipped():
@@ -2059,8 +2070,6 @@ def test_a_catchment_declared_projected_is_named():
     # test_gauges_and_a_catchment_in_a_utm_zone_give_the_lon_lat_means); a projected system (here a
     # GeoJSON "crs" of UTM 60S, as a shapefile's .prj gives it) is named on a line of its own. Metres
     # under a .prj that GDAL cannot read are said to need a declaration it reads.
-    import json
-
     with tempfile.TemporaryDirectory() as out:
         catchment, stations, observations = write_lake_basin(out)
         declared = dict(LAKE_BASIN, crs={"type": "name", "properties": {"name": "urn:ogc:def:crs:EPSG::32760"}})
@@ -2294,8 +2303,6 @@ def test_catchment_features_without_geometry_or_crossing_holes_are_named_as_such
     # From a user trial: a feature with a null geometry was left out without a word; a CSV given as
     # the catchment was "no polygon ..., only nothing"; a hole crossing its outline was first
     # warned of as lying outside it (the filter's error, which names the crossing, follows).
-    import json
-
     with tempfile.TemporaryDirectory() as out:
         stations = write(out, "st.csv", "station_id,lon,lat\nA,10.25,-0.25\nB,10.75,0.25\n")
         observations = write(out, "obs.csv", "station_id,year,month,precip\nA,2000,1,10\nB,2000,1,20\n")
@@ -2322,8 +2329,6 @@ def test_utm_gauges_across_the_equator_give_the_lon_lat_means():
     # Four gauges about (10.5E, 0) as eastings and northings of zone 32N (negative northings south
     # of the equator) and of 32S (northings above 10,000,000 m north of it), as GDAL and PROJ write
     # them: the means of the lon/lat file. A northing beyond the zone's grid is still named.
-    import json
-
     with tempfile.TemporaryDirectory() as out:
         places = {"A": (10.25, -0.25), "B": (10.75, -0.25), "C": (10.75, 0.25), "D": (10.25, 0.35)}
         lonlat = write(out, "lonlat.csv", "station_id,lon,lat\n" + "".join(
@@ -2475,8 +2480,6 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
     # 1e-8. The gauges in UTM 60S given as --stations-crs EPSG:32760 do too. A system that is not
     # read, a sphere's, an EPSG code GDAL does not know and both station options end the run naming
     # them.
-    import json
-
     us_foot = 1200 / 3937
     origin_utm = utm_of([(177.0, -39.0)])[0]
     systems = {
@@ -2808,7 +2811,6 @@ def test_gauges_from_a_gis_file_of_points_give_the_csv_means():
     # 1e-8; with ids in an attribute of another name, --stations-id names it. A gauge off the
     # globe (named by its feature number), a file without an id attribute, a polygon for a gauge,
     # and --stations-id with a CSV file end the run naming them.
-    import json
     import zipfile
 
     def points_file(directory, name, coordinates, field, crs=None):
@@ -2898,8 +2900,6 @@ def test_observations_of_no_gauge_end_the_run():
 def test_the_filters_errors_name_the_file_and_line():
     # An input the script passes but vtkThiessenArealAverage rejects ends the run with one line
     # naming the file (and, for a gauge, the stations file's line), not VTK's log and executive dump.
-    import json
-
     with tempfile.TemporaryDirectory() as out:
         catchment, stations, observations = write_lake_basin(out)
 
@@ -3164,7 +3164,6 @@ def test_a_hole_outside_its_polygon_is_named():
     # with the MultiPolygon's rings counted over its polygons; a hole inside and one that touches
     # its outline from inside are not named.
     import copy
-    import json
 
     with tempfile.TemporaryDirectory() as out:
         catchment, stations, observations = write_lake_basin(out)

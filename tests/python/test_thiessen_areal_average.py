@@ -276,7 +276,7 @@ def test_gauges_never_weighted_and_no_gauge_inside_are_reported():
     g.SetCatchmentData(polygon([[(-109, 37), (-102, 37), (-102, 41), (-109, 41)]]))
     g.Update(1)
     said = [w for w in outside if "none of the 2 gauges lies inside the catchment" in w]
-    assert_that(len(said) == 1 and "minus sign" in said[0], f"{outside}")
+    assert_that(len(said) == 1 and "minus sign" in said[0] and "the gauges and the catchment" in said[0], f"{outside}")
     assert_that(not any("exactly 0" in w for w in outside), f"no gauge at 0: {outside}")
 
 
