@@ -661,6 +661,10 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
                 flagged.append((line, flag, station))
             yield line, row, station, "precip"
         return
+    if not header:
+        csv_input.fail(f"{path}: the observations file is empty (no header, no rows); expected a long file "
+                       "(station_id, a time column such as date, precip) or a wide one (a time column, a column "
+                       "per station)")
     if not any(name in TIME_COLUMNS for name in header):
         unnamed = " (its first column has no name: if it holds the times, name it date)" if header[:1] == [""] else ""
         csv_input.fail(f"{path}: the observations file has no station_id and precip columns, so it is read as a "
@@ -802,7 +806,8 @@ def read_observations(path, gauge_of, filler, stations_path, missing_values=(), 
         kept = set(rows.lines)
         rows.flagged = [item for item in rows.flagged if item[0] in kept]
     say_odd_observations(rows, path, stations_path, missing_values, steps, drop_flagged)
-    read = len(rows.lines)
+    # (a wide file's empty cells, which make no row, counted as a long file's rows without a value)
+    read = len(rows.lines) + sum(count for _, count in rows.gaps)
     if sum_to:
         sum_rows(rows, steps, step_of, fine, path)
     # A step between the first and the last without a row of any gauge's station is a step where
@@ -2135,17 +2140,21 @@ def map_extent(rings, points, margin=0.05):
     lons = [p[0] for ring in rings for p in ring] + [p[0] for p in points]
     lats = [p[1] for ring in rings for p in ring] + [p[1] for p in points]
     pad = margin * max(max(lons) - min(lons), max(lats) - min(lats), 1e-6)
-    return min(lons) - pad, max(lons) + pad, min(lats) - pad, max(lats) + pad
+    # (no latitude beyond a pole: a catchment wide in longitude near one padded them to -110)
+    return min(lons) - pad, max(lons) + pad, max(min(lats) - pad, -90.0), min(max(lats) + pad, 90.0)
 
 
 def map_layout(outline, per_gauge, points):
-    """What the map draws, in longitudes near the catchment's first vertex (whole turns apart, so
-    that a catchment across the 180th meridian, or written in 0..360 while the tiles come in
-    -180..180, is drawn in one piece): (outline, per_gauge with its rings moved, the gauges'
-    longitudes, their latitudes, map_extent of the outline and the weighted gauges). points: every
-    gauge's (lon, lat)."""
-    reference = outline[0][0][0] if outline else 0.0
-    outline = [unwrapped(ring, reference) for ring in outline]
+    """What the map draws, in longitudes near the catchment's (whole turns apart, so that a
+    catchment across the 180th meridian, or written in 0..360 while the tiles come in -180..180,
+    is drawn in one piece): the outline unwrapped from its first vertex, then the tiles and the
+    gauges within 180 degrees of the middle of its longitudes (of its first vertex, a catchment
+    wide in longitude had the tiles beyond 180 degrees from it drawn a turn away from it). Returns
+    (outline, per_gauge with its rings moved, the gauges' longitudes, their latitudes, map_extent of
+    the outline and the weighted gauges). points: every gauge's (lon, lat)."""
+    outline = [unwrapped(ring, outline[0][0][0]) for ring in outline]
+    lons = [p[0] for ring in outline for p in ring]
+    reference = (min(lons) + max(lons)) / 2 if lons else 0.0
     per_gauge = {g: dict(e, rings=[unwrapped(ring, reference) for ring in e["rings"]])
                  for g, e in per_gauge.items()}
     lon = [near(p[0], reference) for p in points]
@@ -2196,7 +2205,7 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path, adjective="mont
     ax.set_xlabel("longitude")
     ax.set_ylabel("latitude")
     ax.set_title(title)
-    ax.legend(loc="lower left", fontsize=8)
+    ax.legend(loc="best", fontsize=8)  # (where it hides the fewest tiles and gauges)
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
@@ -2225,10 +2234,12 @@ def plot_series(rows, path, steps=None):
     steps = steps or Steps.of(rows[0][:-3])
     t, v, used = step_series(rows, steps)
     first, last = tuple(rows[0][:-3]), tuple(rows[-1][:-3])
-    dated = steps.fields > 2
-    if dated:  # days or times: dates on the axis (decimal years of a few days read 0.078 .. 0.083 + 2.001e3)
-        moment = datetime.date if steps.unit == "day" else datetime.datetime
-        t = [moment(*step) for step in steps.between(first, last)]
+    # Days or times, or months of a few years: dates on the axis (decimal years of a few days read
+    # 0.078 .. 0.083 + 2.001e3, and of three months 0.000 .. 0.175 + 2.02e3).
+    dated = steps.fields > 2 or (steps.fields == 2 and last[0] - first[0] < 5)
+    if dated:
+        moment = datetime.datetime if steps.fields > 3 else datetime.date
+        t = [moment(*step, *(1,) * (3 - len(step))) for step in steps.between(first, last)]
     # A step with a mean between two without is no segment of the line: a dot shows it.
     alone = [i for i in range(len(v)) if not math.isnan(v[i])
              and (i == 0 or math.isnan(v[i - 1])) and (i == len(v) - 1 or math.isnan(v[i + 1]))]
@@ -2238,7 +2249,8 @@ def plot_series(rows, path, steps=None):
     top.plot([t[i] for i in alone], [v[i] for i in alone], linestyle="none", marker=".", markersize=2,
              color="tab:blue")
     top.set_ylabel("Thiessen areal mean (data units)")
-    span = f"{steps.text(first)} to {steps.text(last)}" if dated else f"{rows[0][0]}-{rows[-1][0]}"
+    span = (steps.text(first) if first == last else f"{steps.text(first)} to {steps.text(last)}" if dated
+            else f"{rows[0][0]}-{rows[-1][0]}")
     top.set_title(f"{steps.adjective.capitalize()} precipitation, Thiessen areal mean {span}")
     bottom.plot(t, used, linewidth=0.6, color="tab:grey")
     bottom.set_ylabel("gauges reporting")
@@ -2526,7 +2538,8 @@ def main(argv=None):
     average.Update(1)
     summary = average.GetOutputDataObject(1)
     messages.check(summary is None or summary.GetNumberOfRows() == 0)
-    print(f"{summary.GetNumberOfRows()} {steps.noun}s in {time.time() - started:.2f} s", file=sys.stderr)
+    count = summary.GetNumberOfRows()
+    print(f"{count} {steps.noun}{'s' if count != 1 else ''} in {time.time() - started:.2f} s", file=sys.stderr)
     # The step's tiles below re-run the filter for that time only: no second progress bar.
     average.RemoveObserver(progress_tag)
     rows = write_summary(summary, steps, os.path.join(args.out, "areal_mean.csv"))
@@ -2581,7 +2594,7 @@ def main(argv=None):
                         | (set() if args.no_all_weights else {all_weights})
                         | ({by_feature} if groups else set()))
     valid = [r[-1] for r in rows if not math.isnan(r[-1])]
-    print(f"{len(rows)} {steps.noun}s, {len(valid)} with data"
+    print(f"{len(rows)} {steps.noun}{'s' if len(rows) != 1 else ''}, {len(valid)} with data"
           + (f"; mean of the {steps.adjective} areal means {sum(valid) / len(valid):.3f}"
              if valid else ""))
     for step, _, per_gauge in shown:

@@ -320,6 +320,7 @@ def test_bad_files_are_named():
         empty_id = write(out, "empty_id.csv", "station_id,year,month,precip\n ,1950,1,1\n")
         not_polygon = write(out, "catchment.geojson", "{}\n")
         header_only = write(out, "header.csv", "station_id,year,month,precip\n")
+        empty_file = write(out, "empty.csv", "")
         infinite = write(out, "inf.csv", "station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,1e999\n")
         quote = write(out, "quote.csv", 'station_id,year,month,precip\n050848,1950,1,1\n050848,1950,2,"1.2\n')
         bad_header = write(out, "bad_header.csv", 'station_id,"lon"x,lat\n050848,-105,39\n')
@@ -364,6 +365,9 @@ def test_bad_files_are_named():
             (("--month", "1963-13"), ["--month '1963-13': the month must be 01 to 12"]),
             (("--month", "1963/08"), ["--month '1963/08': expected YYYY-MM"]),
             (("--observations", header_only), ["the observations table has no rows"]),
+            # An empty file is said to be one (it was read as a wide file without a time column).
+            (("--observations", empty_file), [empty_file + ": the observations file is empty"]),
+            (("--stations", empty_file), [empty_file + ": the stations file is empty"]),
             (("--observations", infinite), [infinite + ":3", "'precip'", "'1e999' is not a finite number"]),
             # The line the malformed record ends on (the unclosed quote runs to the end of line 3).
             (("--observations", quote), [quote + ":3: not well-formed CSV"]),
@@ -1088,6 +1092,15 @@ def test_a_wide_file_of_a_column_per_station_gives_the_long_files_means():
             count = 1 if file == "long" else 13
             assert_that(len(missing) == 1 and f": {count} observation(s) without a value" in missing[0],
                         f"{file}: {missing}")
+        # The observations read count those without a value in either layout alike: the wide file's
+        # 24 cells of gauges' stations, and a long file of the same cells (it counted 11 of them).
+        every = write(directory, "every.csv", "station_id,date,precip\n" + "".join(
+            f"{ids[s]},{y}-{m:02d}-{d:02d},{values.get(s, '')}\n" for (y, m, d), values in days.items()
+            for s in LAKE_GAUGES))
+        _, stderr = run_colorado(os.path.join(directory, "every"), stations=stations, observations=every,
+                                 catchment=catchment, plots=False, what=every)
+        for file, said in (("wide", outputs[wide]["stderr"]), ("long", stderr)):
+            assert_that("read 6 gauges and 24 observations in" in said, f"{file}: {said}")
         # Before --start, the day whose cells are all empty holds no observation.
         _, stderr = run_colorado(os.path.join(directory, "later"), stations=stations, observations=wide,
                                  catchment=catchment, plots=False, what="a wide file from 2001-02-01",
@@ -1922,6 +1935,22 @@ def test_small_values_and_a_catchment_across_the_antimeridian():
                                for polygon in feature["geometry"]["coordinates"])
                 assert_that(len(sides) == 2 and sides[0][0] == -180.0 and sides[1][1] == 180.0,
                             f"{feature['properties']['station_id']}: the parts span {sides}")
+
+
+def test_the_map_of_a_catchment_wide_in_longitude_keeps_its_tiles_over_it():
+    # A band round the South Pole from -150 to 150 degrees: its tiles and gauges were moved to
+    # within 180 degrees of its first vertex, so those east of 30 were drawn a turn away, and its
+    # latitudes were padded beyond the pole, to -103.
+    example = import_example()
+    band = [[(lon, -86.0) for lon in range(-150, 151, 5)] + [(lon, -88.5) for lon in range(150, -151, -5)]]
+    per_gauge = {g: {"value": 1.0, "rings": [[(lon - 5, -87.0), (lon + 5, -87.0), (lon, -86.5)]]}
+                 for g, lon in enumerate((-120.0, 0.0, 60.0, 140.0))}
+    points = [(-120.0, -87.2), (0.0, -87.2), (60.0, -87.2), (140.0, -87.2)]
+    _, tiles, lon, _, (lon_min, lon_max, lat_min, lat_max) = example.map_layout(band, per_gauge, points)
+    assert_that(lon == [p[0] for p in points], f"gauges moved to {lon}")
+    assert_that(all(tiles[g]["rings"] == per_gauge[g]["rings"] for g in per_gauge), f"tiles moved: {tiles}")
+    assert_that(lon_min < -150 and lon_max > 150 and lat_min == -90.0 and -86 < lat_max <= 90,
+                f"the map's extent {lon_min} .. {lon_max}, {lat_min} .. {lat_max}")
 
 
 def test_compressed_observations_are_read_and_all_weights_can_be_skipped():
@@ -3465,6 +3494,7 @@ if __name__ == "__main__":
          test_catchment_features_without_geometry_or_crossing_holes_are_named_as_such, test_the_colorado_main_job, test_missing_values_keep_their_months, test_bad_files_are_named,
          test_outputs_that_cannot_be_written_are_named, test_a_hole_outside_its_polygon_is_named,
          test_the_map_of_another_place_with_a_lake,
+         test_the_map_of_a_catchment_wide_in_longitude_keeps_its_tiles_over_it,
          test_a_lake_touching_the_outline_and_catchments_of_several_features,
          test_each_group_of_features_gets_its_means,
          test_a_month_without_reports_still_gets_its_map,
