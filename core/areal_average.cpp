@@ -1051,6 +1051,16 @@ Point2 DensifiedPoint(const Point2& a, const Point2& b, int i, int n)
 
 /// A count held in a double as a whole number, or to 3 figures beyond 1e15 ("8e+300"; one that
 /// overflowed, "more than 1e308").
+/// A gauge's lon/lat as projected: at a pole, whatever its longitude, at the central meridian.
+/// Every longitude names the pole (a file may give the South Pole's station as 0, -90 and another
+/// as 139.27, -90), but a conic projection makes the pole an arc: two such gauges were two places
+/// some 20 km apart, each weighted, and not reported as co-located. At the central meridian, they
+/// are one place, at the middle of the arc.
+Point2 GaugePlace(const Point2& lonlat, const GeographicProjection& projection)
+{
+  return std::abs(lonlat.y) == 90.0 ? Point2{ projection.CentralMeridian(), lonlat.y } : lonlat;
+}
+
 std::string CountText(double count)
 {
   if (!std::isfinite(count))
@@ -1207,7 +1217,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
   {
     try
     {
-      s.GaugesXY[g] = s.Projector->Forward(gaugesLonLat[g]);
+      s.GaugesXY[g] = s.Projector->Forward(GaugePlace(gaugesLonLat[g], *s.Projector));
     }
     catch (const InputError& e) // it names the place ("point (lon, lat) ..."), not the gauge
     {

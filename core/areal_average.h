@@ -155,8 +155,9 @@ public:
   /// |longitude| > 360 or a place the projection cannot represent, and naming the ring and vertex
   /// for a catchment vertex out of those ranges. The catchment: rings in lon/lat (flat offsets,
   /// even-odd rule); throws InputError naming ring, vertex or segments when a ring is degenerate or
-  /// self-intersecting or two rings cross. Gauges at one place (within CoLocatedMetres) are
-  /// grouped: at each step the first of a group that reported is used (see DuplicateGauges).
+  /// self-intersecting or two rings cross. Gauges at one place (within CoLocatedMetres; a gauge
+  /// at a pole is at the pole whatever its longitude) are grouped: at each step the first of a
+  /// group that reported is used (see DuplicateGauges).
   ThiessenArealAverage(const std::vector<Point2>& gaugesLonLat,
     const std::vector<std::size_t>& catchmentRingOffsets,
     const std::vector<Point2>& catchmentLonLat,

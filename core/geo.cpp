@@ -676,6 +676,11 @@ Point2 GeographicProjection::OriginInPlane() const
   }
 }
 
+double GeographicProjection::CentralMeridian() const
+{
+  return Impl->CentralMeridian;
+}
+
 Point2 GeographicProjection::Forward(const Point2& lonlat, long long id) const
 {
   if (!std::isfinite(lonlat.x) || !std::isfinite(lonlat.y))

@@ -157,6 +157,8 @@ public:
   GeographicProjection& operator=(const GeographicProjection&) = delete;
 
   const ProjectionParameters& Parameters() const { return this->Params; }
+  /// The central meridian, degrees (a UTM zone's own for UTM).
+  double CentralMeridian() const;
 
   /// lon/lat (degrees) to x/y (metres), in the parameters' grid. Throws InputError naming `id` and
   /// the value when the point is invalid or the projection cannot represent it (e.g. a transverse

@@ -523,6 +523,30 @@ TEST(ArealAverage, CoLocatedGaugesAreReportedAndTheFirstReportingOneIsUsed)
   EXPECT_EQ(average.GaugesUsed({ NaN, 2.0, NaN }), (std::vector<char>{ 0, 1, 0 }));
 }
 
+// Every longitude names a pole: two gauges there (0, -90 and 40, -90) are one place, reported as
+// co-located, and a pole gauge of any longitude gets the same weight. (A conic projection makes the
+// pole an arc: they were two places 20 km apart, each weighted.)
+TEST(ArealAverage, GaugesAtAPoleAreOnePlaceWhateverTheirLongitude)
+{
+  const std::vector<Point2> wedge{ { -30, -85 }, { 30, -85 }, { 30, -89 }, { -30, -89 } };
+  const std::vector<std::size_t> offsets{ 0, 4 };
+  ThiessenArealAverage average(
+    { { 0, -90 }, { -20, -86 }, { 40, -90 }, { 20, -86 } }, offsets, wedge);
+  ASSERT_EQ(average.DuplicateGauges().size(), 1u);
+  EXPECT_EQ(average.DuplicateGauges()[0], std::make_pair(2, 0));
+  const ArealStep first = average.Step({ 1.0, 2.0, NaN, 3.0 });
+  ThiessenArealAverage other({ { 139.27, -90 }, { -20, -86 }, { 20, -86 } }, offsets, wedge);
+  const ArealStep same = other.Step({ 1.0, 2.0, 3.0 });
+  ASSERT_EQ(first.Weights.size(), 3u);
+  ASSERT_EQ(same.Weights.size(), 3u);
+  EXPECT_GT(first.Weights[0], 0.05);
+  EXPECT_EQ(first.Weights[0], same.Weights[0]);
+  EXPECT_EQ(first.Mean, same.Mean);
+  const ArealStep second = average.Step({ NaN, 2.0, 5.0, 3.0 }); // the other pole gauge's value
+  ASSERT_EQ(second.Gauges, (std::vector<std::int32_t>{ 1, 2, 3 }));
+  EXPECT_EQ(second.Weights[1], first.Weights[0]);
+}
+
 TEST(ArealAverage, ACatchmentCutAtTheAntimeridianIsItsTwoHalvesTogether)
 {
   // GeoJSON (RFC 7946) writes a catchment across the 180th meridian as two parts, one ending at
