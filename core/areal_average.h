@@ -141,8 +141,10 @@ struct ClippedTilesLonLat
   /// k's are polygons TileOutlineOffsets[k] .. TileOutlineOffsets[k + 1] - 1 of Outlines, joined
   /// from its pieces in lon/lat (one polygon for most tiles; a polygon with a hole for a tile
   /// round a lake, several for lobes across a bay). Their edges are the pieces' outer edges,
-  /// vertex for vertex, so neighbouring tiles' outlines still share their borders. A tile across
-  /// the 180th meridian is cut there (meridian_cut.h): each polygon lies on one side of it.
+  /// vertex for vertex, so neighbouring tiles' outlines share their borders as the pieces do (to
+  /// rounding). A tile across the 180th meridian is cut there (meridian_cut.h): each polygon lies
+  /// on one side of it (a tile whose border runs along the meridian to rounding, as between two
+  /// gauges mirrored across it, can leave a sliver some 1e-12 degrees wide beyond it).
   std::vector<std::size_t> TileOutlineOffsets{ 0 };
   RegionOutlines Outlines;
 };

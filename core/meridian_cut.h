@@ -11,8 +11,11 @@
 //
 // A crossing point is computed from the edge's lower end (by x, then y), so that two pieces that
 // share an edge share its crossing point too, and their parts still meet vertex for vertex
-// (piece_outlines.h joins them). A piece that dips across the line and back is cut by
-// Sutherland-Hodgman into one ring with zero-width bridges along the line, which cancel there.
+// (piece_outlines.h joins them). A piece that leaves its side and comes back is cut by
+// Sutherland-Hodgman into one ring joined by bridges along the line, and a piece with an edge or
+// a vertex on the line gives spikes along it; every edge along the line is then cut at each of
+// the side's points on the line, so that such stretches are walked once each way and cancel
+// when the parts are joined.
 
 #include "clip.h"
 
@@ -23,8 +26,10 @@ namespace tessera
 {
 
 /// Rings first .. last - 1 of pieces cut at x = at: [0] their parts with x <= at, [1] those with
-/// x >= at (a vertex on the line is in both), parts of fewer than 3 vertices left out. (Two
-/// sets: joined, a piece's two parts would join again across the line.)
+/// x >= at (a vertex on the line is in both), parts of fewer than 3 vertices left out, edges along
+/// the line cut at the side's points on it. The parts are for OutlinesOfPieces, side by side (two
+/// sets: joined, a piece's two parts would join again across the line); alone, a part may run
+/// along the line and back.
 std::array<ClippedRings, 2> CutAtMeridian(const ClippedRings& pieces,
   std::size_t first,
   std::size_t last,

@@ -48,7 +48,7 @@ struct RegionOutlines
 /// ring pair, in the outline; ShareBorderVertices removes such vertices first. Repeated
 /// consecutive vertices are passed over; rings of no area left by the chaining are dropped. A hole
 /// that no outer ring holds (only possible for pieces that overlap) goes with the largest outer
-/// ring. Polygons come in the order of their outer rings' lowest vertices (by x, then y).
+/// ring, and is dropped when there is none (pieces given clockwise). Polygons come in the order of their outer rings' lowest vertices (by x, then y).
 /// O(E log E) for E edges, plus a point-in-ring test per hole and outer ring that holds its box.
 RegionOutlines OutlinesOfPieces(const ClippedRings& pieces, std::size_t first, std::size_t last);
 

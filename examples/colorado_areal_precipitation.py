@@ -2044,15 +2044,17 @@ def write_tiles_geojson(outlines, gauges, path):
     for c, ring in enumerate(polygon_rings(outlines)):  # (closed lines, the first point repeated)
         g, p = gauge_ids.GetValue(c), polygon_ids.GetValue(c)
         if g not in features:
+            value = values.GetValue(c)
             features[g] = {"type": "Feature", "geometry": [], "properties": {
                 "station_id": ids.GetValue(g), "name": names.GetValue(g), "weight": weights.GetValue(c),
-                "area_km2": areas.GetValue(c) / 1e6, "precip": values.GetValue(c)}}
-        if p not in polygons:  # (its outer ring, which comes first): the turns that bring it to -180 .. 180
-            polygons[p] = (math.floor((min(x for x, _ in ring) + 180.0) / 360.0), [])
-            features[g]["geometry"].append(polygons[p][1])
-        turns, rings = polygons[p]
-        rings.append([[x - 360.0 * turns, y] for x, y in ring])
+                "area_km2": areas.GetValue(c) / 1e6,
+                "precip": value if math.isfinite(value) else None}}  # (JSON has no NaN)
+        if p not in polygons:
+            polygons[p] = []
+            features[g]["geometry"].append(polygons[p])
+        polygons[p].append(ring)
     for feature in features.values():
+        feature["geometry"] = [within_180(polygon) for polygon in feature["geometry"]]
         parts = feature["geometry"]
         feature["geometry"] = ({"type": "Polygon", "coordinates": parts[0]} if len(parts) == 1 else
                                {"type": "MultiPolygon", "coordinates": parts})
@@ -2061,6 +2063,21 @@ def write_tiles_geojson(outlines, gauges, path):
             json.dump({"type": "FeatureCollection", "features": list(features.values())}, f)
     except OSError as error:
         csv_input.fail(f"{path}: cannot write the tiles ({error.strerror or error})")
+
+
+def within_180(polygon):
+    """A polygon's rings (lists of (lon, lat)), which lie on one side of the 180th meridian or a
+    copy of it a whole turn away (the outlines are cut there), moved by whole turns to within
+    -180 .. 180, as lists [lon, lat]. The turns go by the side the polygon is on: by its
+    westernmost longitude, 179.99999999999997 + 180 rounds to 360, and a western part ending at
+    180 was moved a turn, to -180.00000000000003 .. -180."""
+    west, east = min(x for x, _ in polygon[0]), max(x for x, _ in polygon[0])
+    turns = 0
+    if east > 180.0:
+        turns = math.ceil((east - 180.0) / 360.0)
+    elif west < -180.0:
+        turns = math.floor((west + 180.0) / 360.0)
+    return [[[x - 360.0 * turns, y] for x, y in ring] for ring in polygon]
 
 
 def write_weights(per_gauge, gauges, path):

@@ -452,23 +452,88 @@ TEST(PieceOutlines, PiecesCutAtAMeridianJoinOnEachSide)
   EXPECT_EQ(touching[1].RingOffsets.size(), 1U);
 }
 
+// Pieces with a vertex or an edge on the line, or crossing it four times: each side's outline is
+// simple rings (Sutherland-Hodgman's spikes and bridges along the line cancel once the edges
+// along it are cut at the side's points there), holding the side's part of the pieces' area.
+TEST(PieceOutlines, PiecesTouchingOrRecrossingTheMeridianGiveSimpleRings)
+{
+  const std::vector<std::pair<std::vector<Point2>, double>> cases{
+    // an L with its inner edge on the line: a spike along it on the west side
+    { { { 0, 0 }, { 2, 0 }, { 2, 3 }, { 1, 3 }, { 1, 1 }, { 0, 1 } }, 1.0 },
+    // a U open to the east, across the line four times: two arms joined by bridges on the east
+    { { { -2, 0 }, { 2, 0 }, { 2, 1 }, { -1, 1 }, { -1, 2 }, { 2, 2 }, { 2, 3 }, { -2, 3 } }, 0.0 },
+    // a notch whose tip is on the line: two lobes that touch there on the east
+    { { { -1, -1 }, { 1, -1 }, { 1, -0.5 }, { 0, 0 }, { 1, 0.5 }, { 1, 1 }, { -1, 1 } }, 0.0 },
+  };
+  const std::vector<std::vector<double>> sideAreas{ { 1.0, 3.0 }, { 5.0, 4.0 }, { 2.0, 1.5 } };
+  const std::vector<std::vector<std::size_t>> sideRings{ { 1, 1 }, { 1, 2 }, { 1, 2 } };
+  for (std::size_t c = 0; c < cases.size(); ++c)
+  {
+    SCOPED_TRACE("case " + std::to_string(c));
+    ClippedRings piece;
+    piece.Vertices = cases[c].first;
+    piece.RingOffsets.push_back(piece.Vertices.size());
+    const std::array<ClippedRings, 2> sides = CutAtMeridian(piece, 0, 1, cases[c].second);
+    for (std::size_t s = 0; s < 2; ++s)
+    {
+      const RegionOutlines outlines =
+        OutlinesOfPieces(sides[s], 0, sides[s].RingOffsets.size() - 1);
+      ASSERT_EQ(RingCount(outlines), sideRings[c][s]) << "side " << s;
+      double area = 0.0;
+      for (std::size_t r = 0; r < RingCount(outlines); ++r)
+      {
+        const std::vector<Point2> ring(outlines.Rings.Vertices.begin() +
+            static_cast<std::ptrdiff_t>(outlines.Rings.RingOffsets[r]),
+          outlines.Rings.Vertices.begin() +
+            static_cast<std::ptrdiff_t>(outlines.Rings.RingOffsets[r + 1]));
+        EXPECT_NO_THROW(ValidateRings({ 0, ring.size() }, ring)) << "side " << s << " ring " << r;
+        area += RingArea(outlines.Rings, r);
+      }
+      EXPECT_EQ(area, sideAreas[c][s]) << "side " << s;
+    }
+  }
+}
+
 // Tiles of an island across the 180th meridian (longitudes written 179.5 to 180.5, and as
 // -180.5 to -179.5): every polygon of the outlines lies on one side of the meridian, and a tile's
 // polygons hold its pieces' area.
 TEST(PieceOutlines, TilesAcrossTheAntimeridianAreCutThere)
 {
-  for (const double shift : { 0.0, -360.0 })
+  // (then a coast with a notch from the east whose tip lies on the meridian, and gauges mirrored
+  // across it, whose common border lies on it to rounding: parts that touch the line or run
+  // along it, and slivers beyond it, whose rings ran along the line and back)
+  const std::vector<std::pair<std::vector<Point2>, std::vector<Point2>>> cases{
+    { { { 179.5, -17 }, { 180.5, -17 }, { 180.5, -16 }, { 179.5, -16 } },
+      { { 179.6, -16.2 },
+        { 179.7, -16.8 },
+        { 180.1, -16.7 },
+        { 180.4, -16.4 },
+        { 179.98, -16.5 } } },
+    { { { 179.5, -17 },
+        { 180.5, -17 },
+        { 180.5, -16.8 },
+        { 180.0, -16.5 },
+        { 180.5, -16.2 },
+        { 180.5, -16 },
+        { 179.5, -16 } },
+      { { 179.7, -16.5 }, { 180.3, -16.9 }, { 180.3, -16.1 } } },
+    { { { 179.5, -17 }, { 180.5, -17 }, { 180.5, -16 }, { 179.5, -16 } },
+      { { 179.1, -16.77 }, { -179.1, -16.77 } } },
+  };
+  for (std::size_t c = 0; c < 2 * cases.size(); ++c)
   {
-    SCOPED_TRACE("shift " + std::to_string(shift));
-    const std::vector<Point2> island{
-      { 179.5 + shift, -17 }, { 180.5 + shift, -17 }, { 180.5 + shift, -16 }, { 179.5 + shift, -16 }
-    };
-    const std::vector<Point2> gauges{ { 179.6 + shift, -16.2 },
-      { 179.7 + shift, -16.8 },
-      { 180.1 + shift, -16.7 },
-      { 180.4 + shift, -16.4 },
-      { 179.98 + shift, -16.5 } };
-    ThiessenArealAverage average(gauges, { 0, 4 }, island);
+    const double shift = c < cases.size() ? 0.0 : -360.0;
+    SCOPED_TRACE("case " + std::to_string(c % cases.size()) + ", shift " + std::to_string(shift));
+    std::vector<Point2> island = cases[c % cases.size()].first;
+    std::vector<Point2> gauges = cases[c % cases.size()].second;
+    for (std::vector<Point2>* points : { &island, &gauges })
+    {
+      for (Point2& p : *points)
+      {
+        p.x += p.x > 0.0 ? shift : 0.0; // (written west of -180 where they were east of 180)
+      }
+    }
+    ThiessenArealAverage average(gauges, { 0, island.size() }, island);
     average.Step(std::vector<double>(gauges.size(), 1.0));
     const ClippedTilesLonLat tiles = average.CurrentClippedTiles();
     int across = 0;
@@ -496,6 +561,9 @@ TEST(PieceOutlines, TilesAcrossTheAntimeridianAreCutThere)
             &tiles.Outlines.Rings.Vertices[begin], tiles.Outlines.Rings.RingOffsets[r + 1] - begin);
           EXPECT_TRUE(box.XMax <= meridian || box.XMin >= meridian)
             << "tile " << k << " ring " << r << " spans " << box.XMin << " .. " << box.XMax;
+          const std::vector<Point2> ring(&tiles.Outlines.Rings.Vertices[begin],
+            &tiles.Outlines.Rings.Vertices[0] + tiles.Outlines.Rings.RingOffsets[r + 1]);
+          EXPECT_NO_THROW(ValidateRings({ 0, ring.size() }, ring)) << "tile " << k << " ring " << r;
           west = west || box.XMax <= meridian;
           east = east || box.XMin >= meridian;
           outlineArea += RingArea(tiles.Outlines.Rings, r);
@@ -504,6 +572,6 @@ TEST(PieceOutlines, TilesAcrossTheAntimeridianAreCutThere)
       EXPECT_NEAR(outlineArea, pieceArea, 1e-12 * pieceArea) << "tile " << k;
       across += west && east;
     }
-    EXPECT_GE(across, 2);
+    EXPECT_GE(across, 1);
   }
 }

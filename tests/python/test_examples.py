@@ -1953,6 +1953,22 @@ def test_the_map_of_a_catchment_wide_in_longitude_keeps_its_tiles_over_it():
                 f"the map's extent {lon_min} .. {lon_max}, {lat_min} .. {lat_max}")
 
 
+def test_tile_polygons_are_moved_within_180_by_their_side_of_the_meridian():
+    # A western part ending at 180 whose westernmost longitude rounds to 180 once 180 is added:
+    # moved by its westernmost longitude, it went a turn east, to -180.00000000000003 .. -180.
+    example = import_example()
+    for polygon, expected in (([[(179.99999999999997, 0), (180, 0), (180, 1)]], (179.99999999999997, 180)),
+                              ([[(180, 0), (180.5, 0), (180.5, 1)]], (-180, -179.5)),
+                              ([[(-180.5, 0), (-180, 0), (-180, 1)]], (179.5, 180)),
+                              ([[(-180, 0), (-179.5, 0), (-179.5, 1)]], (-180, -179.5)),
+                              ([[(200, 0), (210, 0), (210, 1)], [(205, 0.2), (205, 0.5), (206, 0.2)]], (-160, -150)),
+                              ([[(-105, 39), (-104, 39), (-104, 40)]], (-105, -104))):
+        moved = example.within_180(polygon)
+        lons = [x for ring in moved for x, _ in ring]
+        assert_that((min(lons), max(lons)) == expected and len(moved) == len(polygon),
+                    f"{polygon} moved to {moved}")
+
+
 def test_compressed_observations_are_read_and_all_weights_can_be_skipped():
     # A large record is often kept compressed: gzip, bzip2 and xz files were refused ("decompress it
     # first"); each gives the plain file's outputs byte for byte. --no-all-weights leaves out
@@ -3495,6 +3511,7 @@ if __name__ == "__main__":
          test_outputs_that_cannot_be_written_are_named, test_a_hole_outside_its_polygon_is_named,
          test_the_map_of_another_place_with_a_lake,
          test_the_map_of_a_catchment_wide_in_longitude_keeps_its_tiles_over_it,
+         test_tile_polygons_are_moved_within_180_by_their_side_of_the_meridian,
          test_a_lake_touching_the_outline_and_catchments_of_several_features,
          test_each_group_of_features_gets_its_means,
          test_a_month_without_reports_still_gets_its_map,
