@@ -429,17 +429,20 @@ bool DataBounds(vtkDataObject* data, double bounds[6])
 void MakeCompositeOrPolyDataOutput(vtkCompositeDataSet* composite,
   vtkInformationVector* outputVector)
 {
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
-  if (composite && (!output || !output->IsA(composite->GetClassName())))
+  for (int port = 0; port < outputVector->GetNumberOfInformationObjects(); ++port)
   {
-    vtkSmartPointer<vtkDataObject> made;
-    made.TakeReference(composite->NewInstance());
-    outInfo->Set(vtkDataObject::DATA_OBJECT(), made);
-  }
-  else if (!composite && !vtkPolyData::SafeDownCast(output))
-  {
-    outInfo->Set(vtkDataObject::DATA_OBJECT(), vtkSmartPointer<vtkPolyData>::New());
+    vtkInformation* outInfo = outputVector->GetInformationObject(port);
+    vtkDataObject* output = outInfo->Get(vtkDataObject::DATA_OBJECT());
+    if (composite && (!output || !output->IsA(composite->GetClassName())))
+    {
+      vtkSmartPointer<vtkDataObject> made;
+      made.TakeReference(composite->NewInstance());
+      outInfo->Set(vtkDataObject::DATA_OBJECT(), made);
+    }
+    else if (!composite && !vtkPolyData::SafeDownCast(output))
+    {
+      outInfo->Set(vtkDataObject::DATA_OBJECT(), vtkSmartPointer<vtkPolyData>::New());
+    }
   }
 }
 

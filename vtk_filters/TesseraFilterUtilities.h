@@ -172,9 +172,9 @@ void AddIdFieldArray(vtkDataObject* data, const char* name, const std::vector<st
 /// false when it has no points (or is neither).
 bool DataBounds(vtkDataObject* data, double bounds[6]);
 
-/// For a filter whose output 0 is the input's kind (REQUEST_DATA_OBJECT): an instance of the
-/// composite's class when composite is given (the input's, the output kept when it is one
-/// already), else a vtkPolyData.
+/// For a filter whose outputs are the input's kind (REQUEST_DATA_OBJECT): on every output port,
+/// an instance of the composite's class when composite is given (the input's, the output kept
+/// when it is one already), else a vtkPolyData.
 void MakeCompositeOrPolyDataOutput(vtkCompositeDataSet* composite,
   vtkInformationVector* outputVector);
 

@@ -19,6 +19,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
 
 #include "TesseraFilterUtilities.h"
 #include "clip.h"
@@ -27,7 +28,9 @@
 #include "errors.h"
 #include "geo.h"
 #include "nested_rings.h"
+#include "piece_outlines.h"
 #include "polygon_area.h"
+#include "shared_borders.h"
 #include "window.h"
 
 #include <algorithm>
@@ -48,6 +51,99 @@ const std::vector<const char*> OwnArrayNames{ "TileId",
   "ClippedArea",
   "AreaFraction",
   "PieceArea" };
+/// Output 1's own cell arrays (API, as OwnArrayNames).
+const std::vector<const char*> OutlineArrayNames{ "TileId", "PolygonId", "Hole" };
+
+/// Output 1 of one point set of tiles: each clipped tile's outline (core/piece_outlines.h, its
+/// display pieces joined back into polygons with holes) as closed polylines, a cell per ring (its
+/// first point repeated last), with the tile's cell data, TileId, PolygonId (numbered over the
+/// output) and Hole (0: a polygon's outer ring, anticlockwise, listed first; 1: a hole in it).
+class OutlineCells
+{
+public:
+  OutlineCells(vtkPointSet* tiles, vtkPolyData* output)
+    : Output(output)
+    , TileCellData(tiles->GetCellData())
+  {
+    output->GetFieldData()->PassData(tiles->GetFieldData()); // (a projection's record with it)
+    vtkCellData* cellData = output->GetCellData();
+    cellData->CopyGlobalIdsOn();
+    cellData->CopyAllocate(this->TileCellData);
+    this->Renamed = tessera_vtk::RenameArraysNamed(cellData, OutlineArrayNames, false);
+    this->Points->SetDataTypeToDouble();
+    this->TileIds->SetName(OutlineArrayNames[0]);
+    this->PolygonIds->SetName(OutlineArrayNames[1]);
+    this->Holes->SetName(OutlineArrayNames[2]);
+  }
+
+  /// Tile c's pieces (scaled by 2^exponent) joined and added as its rings. Display pieces meet at
+  /// T-junctions (a piece's side spans a hole's end and its neighbour's): their borders are made
+  /// alike first, so that shared stretches cancel.
+  void Append(const tessera::ClippedRings& pieces, vtkIdType c, int exponent)
+  {
+    const tessera::ClippedRings shared = tessera::ShareBorderVertices(pieces);
+    const tessera::RegionOutlines outlines =
+      tessera::OutlinesOfPieces(shared, 0, shared.RingOffsets.size() - 1);
+    for (std::size_t p = 0; p + 1 < outlines.PolygonOffsets.size(); ++p)
+    {
+      for (std::size_t r = outlines.PolygonOffsets[p]; r < outlines.PolygonOffsets[p + 1]; ++r)
+      {
+        const std::size_t begin = outlines.Rings.RingOffsets[r],
+                          end = outlines.Rings.RingOffsets[r + 1];
+        const vtkIdType first = this->Points->GetNumberOfPoints();
+        this->Lines->InsertNextCell(static_cast<vtkIdType>(end - begin + 1));
+        for (std::size_t k = begin; k < end; ++k)
+        {
+          const tessera::Point2& a = outlines.Rings.Vertices[k];
+          this->Lines->InsertCellPoint(this->Points->InsertNextPoint(
+            std::ldexp(a.x, -exponent), std::ldexp(a.y, -exponent), 0.0));
+        }
+        this->Lines->InsertCellPoint(first);
+        this->Output->GetCellData()->CopyData(
+          this->TileCellData, c, this->Lines->GetNumberOfCells() - 1);
+        this->TileIds->InsertNextValue(c);
+        this->PolygonIds->InsertNextValue(this->NextPolygon);
+        this->Holes->InsertNextValue(r == outlines.PolygonOffsets[p] ? 0 : 1);
+      }
+      ++this->NextPolygon;
+    }
+  }
+
+  /// Puts the rings into the output; returns the warning for input arrays renamed, if any.
+  std::string Finish()
+  {
+    this->Output->SetPoints(this->Points);
+    this->Output->SetLines(this->Lines);
+    vtkCellData* cellData = this->Output->GetCellData();
+    cellData->SetActiveAttribute(-1, vtkDataSetAttributes::GLOBALIDS); // (see CopyGlobalIdsOn)
+    cellData->AddArray(this->TileIds);
+    cellData->AddArray(this->PolygonIds);
+    cellData->AddArray(this->Holes);
+    // (TileId is renamed as for output 0, whose warning says so: only PolygonId and Hole here)
+    tessera_vtk::RenamedArrays more;
+    for (const auto& renamed : this->Renamed)
+    {
+      if (renamed.first != OutlineArrayNames[0])
+      {
+        more.push_back(renamed);
+      }
+    }
+    return more.empty()
+      ? std::string()
+      : tessera_vtk::RenamedArraysWarning(more, "cell-data", "the clipped tiles' outlines", "cell");
+  }
+
+private:
+  vtkPolyData* Output;
+  vtkCellData* TileCellData;
+  tessera_vtk::RenamedArrays Renamed;
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkCellArray> Lines;
+  vtkNew<vtkIdTypeArray> TileIds, PolygonIds;
+  vtkNew<vtkUnsignedCharArray> Holes;
+  vtkIdType NextPolygon = 0;
+};
+
 /// Whether bounds lie within the degrees a longitude and a latitude take (tessera::InLonLatRange
 /// at two opposite corners).
 bool WithinDegrees(const double bounds[6])
@@ -229,12 +325,14 @@ void ThrowForHolesAmong(const tessera::ClippedRings& lineTiles, const std::vecto
 }
 
 /// Clips the tiles (one point set: the input, or a block of it) by the window (catchment, its
-/// coordinates scaled by 2^exponent) into output, with the tiles' field data and the clip's own.
-/// Throws tessera::InputError for bad tiles; appends its warnings; progress(fraction done).
+/// coordinates scaled by 2^exponent) into output, with the tiles' field data and the clip's own,
+/// and their outlines into outlines (OutlineCells). Throws tessera::InputError for bad tiles;
+/// appends its warnings; progress(fraction done).
 void ClipBlock(vtkPointSet* tiles,
   const tessera::Catchment& catchment,
   int exponent,
   vtkPolyData* output,
+  vtkPolyData* outlines,
   const std::function<void(double)>& progress,
   std::vector<std::string>& warnings)
 {
@@ -261,6 +359,7 @@ void ClipBlock(vtkPointSet* tiles,
   // Adding the filter's arrays would replace the input's of the same names silently.
   const tessera_vtk::RenamedArrays renamed =
     tessera_vtk::RenameArraysNamed(outCD, OwnArrayNames, false);
+  OutlineCells outlineCells(tiles, outlines);
   vtkNew<vtkIdTypeArray> tileIds;
   tileIds->SetName(OwnArrayNames[0]);
   vtkNew<vtkDoubleArray> clippedAreas;
@@ -375,6 +474,7 @@ void ClipBlock(vtkPointSet* tiles,
     // lobes joined into one ring, holes as clockwise rings): one cell per display piece instead,
     // each a simple polygon, the pieces disjoint and filling tile & window.
     const tessera::ClippedRings pieces = tessera::DisplayPieces(rings);
+    outlineCells.Append(pieces, c, exponent);
     for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
     {
       const std::size_t begin = pieces.RingOffsets[r], end = pieces.RingOffsets[r + 1];
@@ -411,6 +511,11 @@ void ClipBlock(vtkPointSet* tiles,
     warnings.push_back(
       tessera_vtk::RenamedArraysWarning(renamed, "cell-data", "the clipped tiles", "cell"));
   }
+  const std::string outlinesRenamed = outlineCells.Finish();
+  if (!outlinesRenamed.empty())
+  {
+    warnings.push_back(outlinesRenamed);
+  }
   // Both lists always (empty or not), as the other filters write theirs: a script reads them
   // without testing for a missing array.
   output->GetFieldData()->AddArray(empty);
@@ -445,6 +550,7 @@ void ClipBlock(vtkPointSet* tiles,
 vtkWindowClip::vtkWindowClip()
 {
   this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
 }
 
 //------------------------------------------------------------------------------
@@ -484,7 +590,8 @@ int vtkWindowClip::RequestData(vtkInformation*,
 {
   vtkDataObject* tilesData = vtkDataObject::GetData(inputVector[0]);
   vtkDataObject* windowData = vtkDataObject::GetData(inputVector[1]);
-  vtkDataObject* output = vtkDataObject::GetData(outputVector);
+  vtkDataObject* output = vtkDataObject::GetData(outputVector, 0);
+  vtkDataObject* outlines = vtkDataObject::GetData(outputVector, 1);
   try
   {
     const std::string projectionWarning = ProjectionWarning(tilesData, windowData);
@@ -521,6 +628,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
              catchment,
              exponent,
              vtkPolyData::SafeDownCast(output),
+             vtkPolyData::SafeDownCast(outlines),
              std::string(),
              0.0,
              1.0))
@@ -534,8 +642,12 @@ int vtkWindowClip::RequestData(vtkInformation*,
       // error names its block and leaves the whole output empty.
       std::vector<std::string> warnings;
       auto* outBlocks = vtkCompositeDataSet::SafeDownCast(output);
-      outBlocks->CopyStructure(blocks);
-      outBlocks->GetFieldData()->PassData(blocks->GetFieldData());
+      auto* outlineBlocks = vtkCompositeDataSet::SafeDownCast(outlines);
+      for (vtkCompositeDataSet* made : { outBlocks, outlineBlocks })
+      {
+        made->CopyStructure(blocks);
+        made->GetFieldData()->PassData(blocks->GetFieldData());
+      }
       const tessera_vtk::BlockLabels labels(blocks);
       vtkSmartPointer<vtkCompositeDataIterator> block;
       block.TakeReference(blocks->NewIterator());
@@ -552,18 +664,20 @@ int vtkWindowClip::RequestData(vtkInformation*,
             ": only point sets (vtkPolyData, vtkUnstructuredGrid, ...) are clipped");
         }
         CheckBlockProjection(tiles, windowData, label);
-        vtkNew<vtkPolyData> clipped;
+        vtkNew<vtkPolyData> clipped, clippedOutlines;
         const double cells = static_cast<double>(tiles->GetNumberOfCells());
         const std::vector<std::string> said = this->ClipTilesOf(tiles,
           catchment,
           exponent,
           clipped,
+          clippedOutlines,
           label + " of input 0: ",
           done / count,
           (done + cells) / count);
         warnings.insert(warnings.end(), said.begin(), said.end());
         done += cells;
         outBlocks->SetDataSet(block, clipped);
+        outlineBlocks->SetDataSet(block, clippedOutlines);
       }
       // The first few (a layer of 10,000 features gave 10,000), then their count.
       constexpr std::size_t shown = 5;
@@ -579,6 +693,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
       }
     }
     tessera_vtk::ListNonEmptyFieldArraysFirst(output);
+    tessera_vtk::ListNonEmptyFieldArraysFirst(outlines);
     return 1;
   }
   catch (const std::exception& e)
@@ -590,6 +705,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
       vtkErrorMacro(<< e.what());
     }
     output->Initialize();
+    outlines->Initialize();
     return stop ? 1 : 0;
   }
 }
@@ -599,6 +715,7 @@ std::vector<std::string> vtkWindowClip::ClipTilesOf(vtkPointSet* tiles,
   const tessera::Catchment& catchment,
   int exponent,
   vtkPolyData* output,
+  vtkPolyData* outlines,
   const std::string& block,
   double progressFrom,
   double progressTo)
@@ -611,6 +728,7 @@ std::vector<std::string> vtkWindowClip::ClipTilesOf(vtkPointSet* tiles,
       catchment,
       exponent,
       output,
+      outlines,
       [&](double fraction)
       { tessera_vtk::ProgressOrStop(this, progressFrom + fraction * (progressTo - progressFrom)); },
       warnings);

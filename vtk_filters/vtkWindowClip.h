@@ -48,6 +48,14 @@
  *   ClippedArea (to rounding).
  * An input cell-data array with one of these four names is passed under the first free name of
  * NAME_input, NAME_input_2, ..., with a warning naming it.
+ *
+ * Output 1 holds each clipped tile's outline: its pieces joined back into polygons with holes
+ * (core/piece_outlines.h), as a GIS wants a tile and as a view draws the tiles' borders without
+ * the cuts between pieces, one closed polyline per ring (its first point repeated last), with the
+ * tile's cell data and `TileId`, `PolygonId` (the polygon the ring bounds, numbered over the
+ * output or block) and `Hole` (0: the polygon's outer ring, anticlockwise, listed first; 1: a
+ * hole in it, clockwise); an input array so named is passed under another name, as above. It
+ * has the tiles' field data, and for tiles in a composite the same structure as output 0.
  * Tiles entirely outside the window give no polygon. Cells of input 0 that are not polygons,
  * triangles, quads, pixels or closed polylines (open lines, vertices, strips, 3D cells), and
  * polygons of fewer
@@ -119,13 +127,15 @@ protected:
   int FillOutputPortInformation(int port, vtkInformation* info) override;
 
 private:
-  /// Clips one point set of tiles into output, its messages prefixed by block ("" for a
-  /// point set input; "block 1 (composite index 2) of input 0: " for a block), its progress
-  /// running from progressFrom to progressTo. Returns its warnings, so prefixed; throws its error.
+  /// Clips one point set of tiles into output and their outlines into outlines, its messages
+  /// prefixed by block ("" for a point set input; "block 1 (composite index 2) of input 0: " for
+  /// a block), its progress running from progressFrom to progressTo. Returns its warnings, so
+  /// prefixed; throws its error.
   std::vector<std::string> ClipTilesOf(vtkPointSet* tiles,
     const tessera::Catchment& catchment,
     int exponent,
     vtkPolyData* output,
+    vtkPolyData* outlines,
     const std::string& block,
     double progressFrom,
     double progressTo);

@@ -92,6 +92,13 @@ clip.UpdatePipeline()
 for name in ("WindowArea", "CoveredFraction", "EmptyTileIds", "SkippedCellIds", "RejectedPointIds"):
     if name not in clip.FieldData.keys():
         failures.append(f"Window Clip's field data listed: {clip.FieldData.keys()}, without {name}")
+# Its second output, the clipped tiles' outlines: a closed line per ring, one ring per tile (the
+# window, a rectangle, cuts no tile into lobes), carrying the tiles' PointId.
+pieces = servermanager.Fetch(clip)
+rings = servermanager.Fetch(clip, idx=1)
+tiles_clipped = {pieces.GetCellData().GetArray("TileId").GetValue(c) for c in range(pieces.GetNumberOfCells())}
+if rings.GetNumberOfLines() != len(tiles_clipped) or rings.GetCellData().GetArray("PointId") is None:
+    failures.append(f"Window Clip's outlines: {rings.GetNumberOfLines()} rings for {len(tiles_clipped)} tiles")
 
 if failures:
     print("FAIL:\n" + "\n".join(failures[:20]))

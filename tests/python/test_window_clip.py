@@ -176,6 +176,85 @@ def test_cells_are_simple_pieces_that_fill_tile_and_window():
                         f"{what}: {np.sum(covering[surely_in] == 0)} points of the window in no cell")
 
 
+def outline_polygons(outlines):
+    """Output 1 as {TileId: [[outer ring, hole, ...], ...]} (rings without the repeated first
+    point), after checking that each cell is a closed ring, simple, a polygon's rings consecutive
+    with its outer ring (Hole 0, anticlockwise) first and its holes clockwise."""
+    tile_ids, polygon_ids, holes = (cell_values(outlines, n) for n in ("TileId", "PolygonId", "Hole"))
+    by_tile, polygons = {}, {}
+    for c, ring in enumerate(cell_rings(outlines)):
+        assert_that(len(ring) >= 4 and ring[0] == ring[-1], f"outline cell {c} is not a closed ring")
+        ring = ring[:-1]
+        assert_that(simplicity_defect(ring) is None, f"outline cell {c}: {simplicity_defect(ring)}")
+        assert_that((exact_area(ring) < 0) == (holes[c] == 1), f"outline cell {c}: Hole {holes[c]}")
+        if polygon_ids[c] not in polygons:
+            assert_that(holes[c] == 0, f"outline cell {c}: polygon {polygon_ids[c]} begins with a hole")
+            polygons[polygon_ids[c]] = [ring]
+            by_tile.setdefault(tile_ids[c], []).append(polygons[polygon_ids[c]])
+        else:
+            assert_that(polygon_ids[c - 1] == polygon_ids[c], f"outline cell {c}: polygon {polygon_ids[c]}'s rings")
+            polygons[polygon_ids[c]].append(ring)
+    return by_tile
+
+
+def test_outlines_are_each_tiles_part_of_the_window_as_polygons_with_holes():
+    # Output 1 joins each tile's pieces back into polygons with holes: the rings' signed areas
+    # add up to its ClippedArea, each sample point lies in a tile's polygons (even-odd) when it
+    # lies in one of its pieces, and the rings carry the tile's cell data.
+    rng = np.random.default_rng(12)
+    samples = rng.random((3000, 2))
+    tiles = random_tiling(2, 400)
+    bay = [[(0.05, 0.05), (0.95, 0.05), (0.95, 0.95), (0.6, 0.95), (0.6, 0.3), (0.4, 0.3), (0.4, 0.95),
+            (0.05, 0.95)], star((0.25, 0.5), 11, 0.03, 0.08, random.Random(3), clockwise=True)]
+    for name, rings in list(windows().items()) + [("a bay with a lake", bay)]:
+        f = vtkWindowClip()
+        errors = messages_of(f)
+        f.SetInputData(tiles)
+        f.SetWindowData(polygon(rings))
+        f.Update()
+        pieces, outlines = f.GetOutputDataObject(0), f.GetOutputDataObject(1)
+        assert_that(not errors and outlines.GetNumberOfLines() == outlines.GetNumberOfCells() > 0, f"{name}: {errors}")
+        by_tile = outline_polygons(outlines)
+        clipped = dict(zip(cell_values(pieces, "TileId"), cell_values(pieces, "ClippedArea")))
+        assert_that(sorted(by_tile) == sorted(clipped), f"{name}: tiles with outlines and with pieces")
+        for tile, polygons in by_tile.items():
+            area = float(sum(exact_area(r) for p in polygons for r in p))
+            assert_close(area, clipped[tile], 1e-12 * max(clipped[tile], 1e-4), f"{name}: tile {tile}'s outline area")
+        in_pieces = {}
+        for tile, ring in zip(cell_values(pieces, "TileId"), cell_rings(pieces)):
+            in_pieces[tile] = in_pieces.get(tile, 0) + Path(np.array(ring)).contains_points(samples)
+        wrong = 0
+        for tile, polygons in by_tile.items():
+            held = sum(sum(Path(np.array(r)).contains_points(samples).astype(int) for r in p) % 2 for p in polygons)
+            wrong += int(np.sum(held != in_pieces[tile]))
+        assert_that(wrong <= 2, f"{name}: {wrong} samples in a tile's pieces and its outline differ")  # (on edges)
+        joined = [t for t, polygons in by_tile.items()
+                  if len(polygons) < cell_values(pieces, "TileId").count(t) or any(len(p) > 1 for p in polygons)]
+        assert_that(name == "a convex quad" or joined, f"{name}: no tile's pieces were joined")
+        areas = dict(zip(cell_values(outlines, "TileId"), cell_values(outlines, "Area")))
+        assert_that(all(areas[t] == tiles.GetCellData().GetArray("Area").GetValue(t) for t in areas),
+                    f"{name}: the rings carry their tile's cell data")
+    # Tiles in blocks give outlines in the same blocks; an error leaves them empty too.
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+
+    blocks = vtkMultiBlockDataSet()
+    for k, half in enumerate(([(0.0, 0.0), (0.5, 0.0), (0.5, 1.0), (0.0, 1.0)],
+                              [(0.5, 0.0), (1.0, 0.0), (1.0, 1.0), (0.5, 1.0)])):
+        blocks.SetBlock(k, polygon([half]))
+    f = vtkWindowClip()
+    f.SetInputData(blocks)
+    f.SetWindowData(polygon(windows()["a square with a star-shaped hole"]))
+    f.Update()
+    outlines = f.GetOutputDataObject(1)
+    counts = [outlines.GetBlock(k).GetNumberOfCells() for k in range(outlines.GetNumberOfBlocks())]
+    assert_that(counts == [1, 1], f"the blocks' outline rings: {counts}")  # (the hole crosses x = 0.5: a notch in each)
+    errors = messages_of(f)
+    blocks.SetBlock(1, polygon([[(0.5, 0.0), (1.0, 0.0), (0.6, 0.2), (1.0, 1.0), (0.5, 1.0)]]))
+    blocks.Modified()
+    f.Update()
+    assert_that(errors and f.GetOutputDataObject(1).GetNumberOfBlocks() == 0, f"after an error: {errors}")
+
+
 def test_review_cases():
     # A square tile by a non-convex window: Sutherland-Hodgman left a spike to (3, 0), outside the
     # window, and vtkTriangleFilter then gave 0.333 for a clipped area of 0.958.
@@ -237,6 +316,26 @@ def test_input_arrays_named_like_the_filters_are_kept_under_another_name():
     assert_that(len(named) == 1 and all(f"'{name}' is passed to the clipped tiles as '{renamed[name]}'"
                                         in named[0] for name in list(inputs)[:4]),
                 f"one warning naming each renamed array: {warnings}")
+    # The outlines (output 1) rename TileId alike, said once above, and PolygonId and Hole, named in
+    # a warning of their own.
+    rings = f.GetOutputDataObject(1)
+    assert_that(cell_values(rings, "TileId_input") == [100 * 0 + t for t in cell_values(rings, "TileId")],
+                "TileId_input on the outlines")
+    for k, name in enumerate(("PolygonId", "Hole")):
+        array = vtkIntArray()
+        array.SetName(name)
+        for c in range(len(squares)):
+            array.InsertNextValue(7 + k)
+        tiles.GetCellData().AddArray(array)
+    tiles.Modified()
+    warnings.clear()
+    f.Update()
+    rings = f.GetOutputDataObject(1)
+    said = [m for m in warnings if "the clipped tiles' outlines" in m]
+    assert_that(len(said) == 1 and "'PolygonId' is passed to the clipped tiles' outlines as 'PolygonId_input'" in said[0]
+                and "'Hole' is passed" in said[0] and "'TileId'" not in said[0]
+                and set(cell_values(rings, "Hole_input")) == {8} and cell_values(rings, "PolygonId") == [0, 1, 2, 3],
+                f"PolygonId and Hole renamed on the outlines: {warnings}")
     plain = vtkWindowClip()
     plain_warnings = messages_of(plain, vtkCommand.WarningEvent)
     plain.SetInputData(polygon(squares))
@@ -899,6 +998,7 @@ def test_tiles_in_an_unstructured_grid_are_clipped_as_in_polydata():
 
 if __name__ == "__main__":
     run([test_vtk_measures_each_piece_as_its_piece_area,
+         test_outlines_are_each_tiles_part_of_the_window_as_polygons_with_holes,
          test_tiles_in_an_unstructured_grid_are_clipped_as_in_polydata,
          test_a_window_in_a_vertical_plane_is_said_to_be_read_in_x_and_y,
          test_cells_are_simple_pieces_that_fill_tile_and_window,
