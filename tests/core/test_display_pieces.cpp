@@ -24,8 +24,13 @@
 #include <vector>
 
 using namespace tessera;
+using tessera_test::Comb;
+using tessera_test::InRing;
 using tessera_test::MakeCatchment;
+using tessera_test::RandomInscribedTile;
 using tessera_test::Rectangle;
+using tessera_test::RingsHolding;
+using tessera_test::SampleGrid;
 
 namespace
 {
@@ -73,23 +78,6 @@ void ExpectFansAboutTheFirstVertex(const ClippedRings& pieces, const std::string
   }
 }
 
-/// Crossing-number membership of p in the ring r of rings (p is never on a boundary here).
-bool InRing(const ClippedRings& rings, std::size_t r, const Point2& p)
-{
-  bool inside = false;
-  const std::size_t begin = rings.RingOffsets[r], end = rings.RingOffsets[r + 1];
-  for (std::size_t i = begin, j = end - 1; i < end; j = i++)
-  {
-    const Point2& a = rings.Vertices[i];
-    const Point2& b = rings.Vertices[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x))
-    {
-      inside = !inside;
-    }
-  }
-  return inside;
-}
-
 bool InConvexTile(const std::vector<Point2>& tile, const Point2& p)
 {
   for (std::size_t i = 0; i < tile.size(); ++i)
@@ -115,45 +103,12 @@ std::size_t ExpectPiecesOfTheRegion(const Catchment& catchment, const std::vecto
   const double total = ExpectSimplePieces(pieces, "");
   ExpectFansAboutTheFirstVertex(pieces, "");
   EXPECT_NEAR(total, clipped.Area, 1e-12 * std::max(1.0, clipped.Area));
-  const Box2 box = BoundsOf(tile.data(), tile.size());
-  const int n = 60;
-  for (int i = 0; i < n; ++i)
+  for (const Point2& p : SampleGrid(BoundsOf(tile.data(), tile.size()), 60))
   {
-    for (int j = 0; j < n; ++j)
-    {
-      // (irrational offsets: no sample on an edge)
-      const Point2 p{ box.XMin + (i + 0.5 * std::sqrt(2.0) - 0.2) / n * (box.XMax - box.XMin),
-        box.YMin + (j + 0.5 * std::sqrt(3.0) - 0.4) / n * (box.YMax - box.YMin) };
-      int covering = 0;
-      for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
-      {
-        covering += InRing(pieces, r, p);
-      }
-      const int expected = InConvexTile(tile, p) && catchment.Contains(p);
-      EXPECT_EQ(covering, expected) << "at (" << p.x << ", " << p.y << ")";
-    }
+    const int expected = InConvexTile(tile, p) && catchment.Contains(p);
+    EXPECT_EQ(RingsHolding(pieces, p), expected) << "at (" << p.x << ", " << p.y << ")";
   }
   return pieces.RingOffsets.size() - 1;
-}
-
-/// A convex tile: 3 to 8 points at random angles on the circle of radius about centre,
-/// anticlockwise.
-std::vector<Point2> RandomInscribedTile(std::mt19937& random, const Point2& centre, double radius)
-{
-  std::uniform_real_distribution<double> angle(0.0, 2 * M_PI);
-  std::vector<double> angles(3 + random() % 6);
-  for (double& a : angles)
-  {
-    a = angle(random);
-  }
-  std::sort(angles.begin(), angles.end());
-  angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
-  std::vector<Point2> tile;
-  for (const double a : angles)
-  {
-    tile.push_back({ centre.x + radius * std::cos(a), centre.y + radius * std::sin(a) });
-  }
-  return tile;
 }
 
 } // namespace
@@ -257,20 +212,7 @@ TEST(DisplayPieces, RandomTilesOverHolesAndBays)
 {
   // A comb (bays from the top) with two holes and an island in one of them; random convex tiles
   // of random sizes anywhere over it.
-  const Catchment comb = MakeCatchment({ { { 0, 0 },
-                                           { 20, 0 },
-                                           { 20, 10 },
-                                           { 16, 10 },
-                                           { 16, 4 },
-                                           { 14, 4 },
-                                           { 14, 10 },
-                                           { 9, 10 },
-                                           { 8.5, 5 },
-                                           { 8, 10 },
-                                           { 0, 10 } },
-    Rectangle(2, 2, 6, 7),
-    Rectangle(3, 3, 4, 4),
-    { { 10, 1 }, { 12, 1.5 }, { 11, 3 } } });
+  const Catchment comb = Comb();
   std::mt19937 random(7);
   std::uniform_real_distribution<double> where(-2.0, 22.0), size(0.5, 9.0);
   for (int t = 0; t < 150; ++t)
@@ -348,24 +290,14 @@ TEST(DisplayPieces, PiecesOfTessellatedTilesAreSimpleInLonLat)
   // lake and across a bay with an island-hole: every piece that output 0 would show is a simple
   // ring in lon/lat, most are fans about their first vertex, and the pieces' areas add up to the
   // catchment's.
-  const std::vector<Point2> square{ { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
-  const std::vector<Point2> lake{
-    { 0.35, 0.35 }, { 0.35, 0.65 }, { 0.5, 0.7 }, { 0.65, 0.65 }, { 0.65, 0.35 }
-  };
-  const std::vector<Point2> bay{
-    { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0.6, 1 }, { 0.6, 0.3 }, { 0.4, 0.3 }, { 0.4, 1 }, { 0, 1 }
-  };
-  const std::vector<Point2> hole{ { 0.1, 0.1 }, { 0.1, 0.2 }, { 0.2, 0.2 }, { 0.2, 0.1 } };
   std::mt19937 random(11);
   std::uniform_real_distribution<double> where(-0.2, 1.2);
   int fans = 0, pieces = 0; // pieces in lon/lat that are fans about their first vertex
   for (int trial = 0; trial < 32; ++trial)
   {
-    const bool withLake = trial % 2 == 0;
-    std::vector<Point2> ring = withLake ? square : bay;
-    const std::vector<Point2>& inner = withLake ? lake : hole;
-    ring.insert(ring.end(), inner.begin(), inner.end());
-    const std::vector<std::size_t> offsets{ 0, ring.size() - inner.size(), ring.size() };
+    const tessera_test::Rings catchment = tessera_test::LakeOrBay(trial % 2 == 0);
+    const std::vector<std::size_t>& offsets = catchment.Offsets;
+    const std::vector<Point2>& ring = catchment.Vertices;
     std::vector<Point2> gauges;
     if (trial < 16) // lattices of 4 spacings and 2 offsets
     {

@@ -24,28 +24,16 @@
 #include <vector>
 
 using namespace tessera;
+using tessera_test::Comb;
+using tessera_test::InRing;
 using tessera_test::MakeCatchment;
+using tessera_test::RandomInscribedTile;
 using tessera_test::Rectangle;
+using tessera_test::RingsHolding;
+using tessera_test::SampleGrid;
 
 namespace
 {
-
-/// Crossing-number membership of p in ring r (p is never on a boundary here).
-bool InRing(const ClippedRings& rings, std::size_t r, const Point2& p)
-{
-  bool inside = false;
-  const std::size_t begin = rings.RingOffsets[r], end = rings.RingOffsets[r + 1];
-  for (std::size_t i = begin, j = end - 1; i < end; j = i++)
-  {
-    const Point2& a = rings.Vertices[i];
-    const Point2& b = rings.Vertices[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x))
-    {
-      inside = !inside;
-    }
-  }
-  return inside;
-}
 
 /// Polygons of outlines that hold p: inside the outer ring and in none of its holes.
 int PolygonsHolding(const RegionOutlines& outlines, const Point2& p)
@@ -117,22 +105,10 @@ RegionOutlines ExpectOutlineOfTheRegion(const Catchment& catchment, const std::v
       0)
       << "edge (" << a.x << ", " << a.y << ") - (" << b.x << ", " << b.y << ") walked both ways";
   }
-  const Box2 box = BoundsOf(tile.data(), tile.size());
-  const int n = 50;
-  for (int i = 0; i < n; ++i)
+  for (const Point2& p : SampleGrid(BoundsOf(tile.data(), tile.size()), 50))
   {
-    for (int j = 0; j < n; ++j)
-    {
-      // (irrational offsets: no sample on an edge)
-      const Point2 p{ box.XMin + (i + 0.5 * std::sqrt(2.0) - 0.2) / n * (box.XMax - box.XMin),
-        box.YMin + (j + 0.5 * std::sqrt(3.0) - 0.4) / n * (box.YMax - box.YMin) };
-      int inPieces = 0;
-      for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
-      {
-        inPieces += InRing(pieces, r, p);
-      }
-      EXPECT_EQ(PolygonsHolding(outlines, p), inPieces) << "at (" << p.x << ", " << p.y << ")";
-    }
+    EXPECT_EQ(PolygonsHolding(outlines, p), RingsHolding(pieces, p))
+      << "at (" << p.x << ", " << p.y << ")";
   }
   return outlines;
 }
@@ -145,26 +121,6 @@ std::size_t PolygonCount(const RegionOutlines& outlines)
 std::size_t RingCount(const RegionOutlines& outlines)
 {
   return outlines.Rings.RingOffsets.size() - 1;
-}
-
-/// A convex tile: 3 to 8 points at random angles on the circle of radius about centre,
-/// anticlockwise.
-std::vector<Point2> RandomInscribedTile(std::mt19937& random, const Point2& centre, double radius)
-{
-  std::uniform_real_distribution<double> angle(0.0, 2 * M_PI);
-  std::vector<double> angles(3 + random() % 6);
-  for (double& a : angles)
-  {
-    a = angle(random);
-  }
-  std::sort(angles.begin(), angles.end());
-  angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
-  std::vector<Point2> tile;
-  for (const double a : angles)
-  {
-    tile.push_back({ centre.x + radius * std::cos(a), centre.y + radius * std::sin(a) });
-  }
-  return tile;
 }
 
 } // namespace
@@ -252,20 +208,7 @@ TEST(PieceOutlines, TakesARangeOfRings)
 // cut between pieces is left in.
 TEST(PieceOutlines, RandomTilesOverHolesBaysAndAWavyShore)
 {
-  const Catchment comb = MakeCatchment({ { { 0, 0 },
-                                           { 20, 0 },
-                                           { 20, 10 },
-                                           { 16, 10 },
-                                           { 16, 4 },
-                                           { 14, 4 },
-                                           { 14, 10 },
-                                           { 9, 10 },
-                                           { 8.5, 5 },
-                                           { 8, 10 },
-                                           { 0, 10 } },
-    Rectangle(2, 2, 6, 7),
-    Rectangle(3, 3, 4, 4),
-    { { 10, 1 }, { 12, 1.5 }, { 11, 3 } } });
+  const Catchment comb = Comb();
   std::vector<Point2> shore{ { 20, -5 } };
   for (int k = 400; k >= 0; --k)
   {
@@ -304,25 +247,15 @@ TEST(PieceOutlines, RandomTilesOverHolesBaysAndAWavyShore)
 // would find.
 TEST(PieceOutlines, OutlinesOfLonLatTilesShareTheirBordersAndFillTheCatchment)
 {
-  const std::vector<Point2> square{ { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
-  const std::vector<Point2> lake{
-    { 0.35, 0.35 }, { 0.35, 0.65 }, { 0.5, 0.7 }, { 0.65, 0.65 }, { 0.65, 0.35 }
-  };
-  const std::vector<Point2> bay{
-    { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0.6, 1 }, { 0.6, 0.3 }, { 0.4, 0.3 }, { 0.4, 1 }, { 0, 1 }
-  };
-  const std::vector<Point2> hole{ { 0.1, 0.1 }, { 0.1, 0.2 }, { 0.2, 0.2 }, { 0.2, 0.1 } };
   std::mt19937 random(5);
   std::uniform_real_distribution<double> where(-0.2, 1.2);
   int withHoles = 0, joined = 0;
   for (int trial = 0; trial < 12; ++trial)
   {
     SCOPED_TRACE("trial " + std::to_string(trial));
-    const bool withLake = trial % 2 == 0;
-    std::vector<Point2> ring = withLake ? square : bay;
-    const std::vector<Point2>& inner = withLake ? lake : hole;
-    ring.insert(ring.end(), inner.begin(), inner.end());
-    const std::vector<std::size_t> offsets{ 0, ring.size() - inner.size(), ring.size() };
+    const tessera_test::Rings catchment = tessera_test::LakeOrBay(trial % 2 == 0);
+    const std::vector<std::size_t>& offsets = catchment.Offsets;
+    const std::vector<Point2>& ring = catchment.Vertices;
     std::vector<Point2> gauges;
     const double step = trial < 4 ? 0.25 : 0.0; // lattices, then random gauges
     for (int k = 0; step > 0.0 ? k < 36 : k < 3 + 2 * trial; ++k)

@@ -7,6 +7,7 @@
 #include "tiles.h"
 #include "window.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -229,6 +230,107 @@ inline void JitteredTriangleTiling(double x0,
       offsets.push_back(vertices.size());
     }
   }
+}
+
+/// Crossing-number membership of p in ring r of rings (p is never on a boundary where used).
+inline bool InRing(const tessera::ClippedRings& rings, std::size_t r, const tessera::Point2& p)
+{
+  bool inside = false;
+  const std::size_t begin = rings.RingOffsets[r], end = rings.RingOffsets[r + 1];
+  for (std::size_t i = begin, j = end - 1; i < end; j = i++)
+  {
+    const tessera::Point2& a = rings.Vertices[i];
+    const tessera::Point2& b = rings.Vertices[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * (b.x - a.x))
+    {
+      inside = !inside;
+    }
+  }
+  return inside;
+}
+
+/// A convex tile: 3 to 8 points at random angles on the circle of radius about centre,
+/// anticlockwise.
+inline std::vector<tessera::Point2> RandomInscribedTile(std::mt19937& random,
+  const tessera::Point2& centre,
+  double radius)
+{
+  std::uniform_real_distribution<double> angle(0.0, 2 * M_PI);
+  std::vector<double> angles(3 + random() % 6);
+  for (double& a : angles)
+  {
+    a = angle(random);
+  }
+  std::sort(angles.begin(), angles.end());
+  angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
+  std::vector<tessera::Point2> tile;
+  for (const double a : angles)
+  {
+    tile.push_back({ centre.x + radius * std::cos(a), centre.y + radius * std::sin(a) });
+  }
+  return tile;
+}
+
+/// A comb (a 20 x 10 rectangle with bays from the top) with two holes, an island in one of them,
+/// and a triangular lake: a catchment of every kind of boundary a tile can meet.
+inline tessera::Catchment Comb()
+{
+  return MakeCatchment({ { { 0, 0 },
+                           { 20, 0 },
+                           { 20, 10 },
+                           { 16, 10 },
+                           { 16, 4 },
+                           { 14, 4 },
+                           { 14, 10 },
+                           { 9, 10 },
+                           { 8.5, 5 },
+                           { 8, 10 },
+                           { 0, 10 } },
+    Rectangle(2, 2, 6, 7),
+    Rectangle(3, 3, 4, 4),
+    { { 10, 1 }, { 12, 1.5 }, { 11, 3 } } });
+}
+
+/// Points of an n x n grid over box, offset by irrational fractions of a cell so that none lies
+/// on an edge of the rings tested against it.
+inline std::vector<tessera::Point2> SampleGrid(const tessera::Box2& box, int n)
+{
+  std::vector<tessera::Point2> samples;
+  for (int i = 0; i < n; ++i)
+  {
+    for (int j = 0; j < n; ++j)
+    {
+      samples.push_back({ box.XMin + (i + 0.5 * std::sqrt(2.0) - 0.2) / n * (box.XMax - box.XMin),
+        box.YMin + (j + 0.5 * std::sqrt(3.0) - 0.4) / n * (box.YMax - box.YMin) });
+    }
+  }
+  return samples;
+}
+
+/// The number of rings of rings that hold p (InRing).
+inline int RingsHolding(const tessera::ClippedRings& rings, const tessera::Point2& p)
+{
+  int holding = 0;
+  for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
+  {
+    holding += InRing(rings, r, p);
+  }
+  return holding;
+}
+
+/// A catchment of about one degree in lon/lat, as flat rings: the unit square round a pentagonal
+/// lake (withLake), or the square with a bay from the top and a square hole in one lobe.
+inline Rings LakeOrBay(bool withLake)
+{
+  const std::vector<tessera::Point2> square{ { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0, 1 } };
+  const std::vector<tessera::Point2> lake{
+    { 0.35, 0.35 }, { 0.35, 0.65 }, { 0.5, 0.7 }, { 0.65, 0.65 }, { 0.65, 0.35 }
+  };
+  const std::vector<tessera::Point2> bay{
+    { 0, 0 }, { 1, 0 }, { 1, 1 }, { 0.6, 1 }, { 0.6, 0.3 }, { 0.4, 0.3 }, { 0.4, 1 }, { 0, 1 }
+  };
+  const std::vector<tessera::Point2> hole{ { 0.1, 0.1 }, { 0.1, 0.2 }, { 0.2, 0.2 }, { 0.2, 0.1 } };
+  return Rings({ withLake ? square : bay, withLake ? lake : hole });
 }
 
 } // namespace tessera_test
