@@ -282,10 +282,14 @@ RegionOutlines OutlinesOfPieces(const ClippedRings& pieces, std::size_t first, s
     {
       continue;
     }
+    // A ring of no area, or whose area's sign is not its turn at its lowest vertex, is no
+    // boundary of the region: pieces that overlap (a window's slit some ulps wide, which
+    // ShareBorderVertices closed) leave a bow tie of two opposite lobes there.
     const int orientation = Orientation(ring(r), size(r));
-    if (orientation != 0)
+    const double area = CompensatedPolygonArea(ring(r), size(r));
+    if (orientation != 0 && area != 0.0 && (area > 0.0) == (orientation > 0))
     {
-      areas[r] = std::abs(CompensatedPolygonArea(ring(r), size(r)));
+      areas[r] = std::abs(area);
       boxes[r] = BoundsOf(ring(r), size(r));
       (orientation > 0 ? outers : holes).push_back(r);
     }

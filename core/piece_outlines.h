@@ -46,10 +46,13 @@ struct RegionOutlines
 /// do not overlap and meet along shared edges vertex for vertex). A vertex that lies on a
 /// neighbour's edge without being one of its vertices (a T-junction) leaves both edges, a thin
 /// ring pair, in the outline; ShareBorderVertices removes such vertices first. Repeated
-/// consecutive vertices are passed over; rings of no area left by the chaining are dropped. A hole
+/// consecutive vertices are passed over; rings of no area left by the chaining are dropped, and so
+/// are rings whose area's sign is not their turn at their lowest vertex (a bow tie left where
+/// pieces overlap by a sliver, as they can along a window's slit some ulps wide). A hole
 /// that no outer ring holds (only possible for pieces that overlap) goes with the largest outer
-/// ring, and is dropped when there is none (pieces given clockwise). Polygons come in the order of their outer rings' lowest vertices (by x, then y).
-/// O(E log E) for E edges, plus a point-in-ring test per hole and outer ring that holds its box.
+/// ring, and is dropped when there is none (pieces given clockwise). Polygons come in the order of
+/// their outer rings' lowest vertices (by x, then y). O(E log E) for E edges, plus a point-in-ring
+/// test per hole and outer ring that holds its box.
 RegionOutlines OutlinesOfPieces(const ClippedRings& pieces, std::size_t first, std::size_t last);
 
 /// more's polygons appended to all's (offsets shifted), for outlines of several regions in one.

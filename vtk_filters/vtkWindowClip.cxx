@@ -116,6 +116,9 @@ public:
     this->Output->SetLines(this->Lines);
     vtkCellData* cellData = this->Output->GetCellData();
     cellData->SetActiveAttribute(-1, vtkDataSetAttributes::GLOBALIDS); // (see CopyGlobalIdsOn)
+    // No active scalars (the tiles' are those of the whole tile, such as its Area): ParaView
+    // draws the rings in one colour over the clipped tiles.
+    cellData->SetActiveAttribute(-1, vtkDataSetAttributes::SCALARS);
     cellData->AddArray(this->TileIds);
     cellData->AddArray(this->PolygonIds);
     cellData->AddArray(this->Holes);

@@ -55,7 +55,8 @@
  * tile's cell data and `TileId`, `PolygonId` (the polygon the ring bounds, numbered over the
  * output or block) and `Hole` (0: the polygon's outer ring, anticlockwise, listed first; 1: a
  * hole in it, clockwise); an input array so named is passed under another name, as above. It
- * has the tiles' field data, and for tiles in a composite the same structure as output 0.
+ * has the tiles' field data, and for tiles in a composite the same structure as output 0; it has
+ * no active scalars, so that ParaView draws the rings in one colour over the clipped tiles.
  * Tiles entirely outside the window give no polygon. Cells of input 0 that are not polygons,
  * triangles, quads, pixels or closed polylines (open lines, vertices, strips, 3D cells), and
  * polygons of fewer

@@ -99,6 +99,10 @@ rings = servermanager.Fetch(clip, idx=1)
 tiles_clipped = {pieces.GetCellData().GetArray("TileId").GetValue(c) for c in range(pieces.GetNumberOfCells())}
 if rings.GetNumberOfLines() != len(tiles_clipped) or rings.GetCellData().GetArray("PointId") is None:
     failures.append(f"Window Clip's outlines: {rings.GetNumberOfLines()} rings for {len(tiles_clipped)} tiles")
+# (drawn in one colour over the tiles: not by the whole tiles' Area, the tiles' active scalars)
+outline_colour = list(Show(OutputPort(clip, 1), CreateRenderView()).ColorArrayName)
+if outline_colour[1]:
+    failures.append(f"Window Clip's outlines are coloured by {outline_colour}")
 
 if failures:
     print("FAIL:\n" + "\n".join(failures[:20]))
