@@ -51,13 +51,19 @@ const std::vector<const char*> OwnArrayNames{ "TileId",
   "ClippedArea",
   "AreaFraction",
   "PieceArea" };
-/// Output 1's own cell arrays (API, as OwnArrayNames).
-const std::vector<const char*> OutlineArrayNames{ "TileId", "PolygonId", "Hole" };
+/// Output 1's own cell arrays (API, as OwnArrayNames): output 0's first three, so that a GIS has
+/// a tile's clipped area with its outline, then its own two.
+const std::vector<const char*> OutlineArrayNames{ "TileId",
+  "ClippedArea",
+  "AreaFraction",
+  "PolygonId",
+  "Hole" };
 
 /// Output 1 of one point set of tiles: each clipped tile's outline (core/piece_outlines.h, its
 /// display pieces joined back into polygons with holes) as closed polylines, a cell per ring (its
-/// first point repeated last), with the tile's cell data, TileId, PolygonId (numbered over the
-/// output) and Hole (0: a polygon's outer ring, anticlockwise, listed first; 1: a hole in it).
+/// first point repeated last), with the tile's cell data, TileId, ClippedArea and AreaFraction (as
+/// output 0's), PolygonId (numbered over the output) and Hole (0: a polygon's outer ring,
+/// anticlockwise, listed first; 1: a hole in it).
 class OutlineCells
 {
 public:
@@ -72,14 +78,20 @@ public:
     this->Renamed = tessera_vtk::RenameArraysNamed(cellData, OutlineArrayNames, false);
     this->Points->SetDataTypeToDouble();
     this->TileIds->SetName(OutlineArrayNames[0]);
-    this->PolygonIds->SetName(OutlineArrayNames[1]);
-    this->Holes->SetName(OutlineArrayNames[2]);
+    this->ClippedAreas->SetName(OutlineArrayNames[1]);
+    this->Fractions->SetName(OutlineArrayNames[2]);
+    this->PolygonIds->SetName(OutlineArrayNames[3]);
+    this->Holes->SetName(OutlineArrayNames[4]);
   }
 
-  /// Tile c's pieces (scaled by 2^exponent) joined and added as its rings. Display pieces meet at
-  /// T-junctions (a piece's side spans a hole's end and its neighbour's): their borders are made
-  /// alike first, so that shared stretches cancel.
-  void Append(const tessera::ClippedRings& pieces, vtkIdType c, int exponent)
+  /// Tile c's pieces (scaled by 2^exponent) joined and added as its rings, with its clipped area
+  /// and area fraction. Display pieces meet at T-junctions (a piece's side spans a hole's end and
+  /// its neighbour's): their borders are made alike first, so that shared stretches cancel.
+  void Append(const tessera::ClippedRings& pieces,
+    vtkIdType c,
+    int exponent,
+    double clippedArea,
+    double fraction)
   {
     const tessera::ClippedRings shared = tessera::ShareBorderVertices(pieces);
     const tessera::RegionOutlines outlines =
@@ -102,6 +114,8 @@ public:
         this->Output->GetCellData()->CopyData(
           this->TileCellData, c, this->Lines->GetNumberOfCells() - 1);
         this->TileIds->InsertNextValue(c);
+        this->ClippedAreas->InsertNextValue(clippedArea);
+        this->Fractions->InsertNextValue(fraction);
         this->PolygonIds->InsertNextValue(this->NextPolygon);
         this->Holes->InsertNextValue(r == outlines.PolygonOffsets[p] ? 0 : 1);
       }
@@ -120,13 +134,17 @@ public:
     // draws the rings in one colour over the clipped tiles.
     cellData->SetActiveAttribute(-1, vtkDataSetAttributes::SCALARS);
     cellData->AddArray(this->TileIds);
+    cellData->AddArray(this->ClippedAreas);
+    cellData->AddArray(this->Fractions);
     cellData->AddArray(this->PolygonIds);
     cellData->AddArray(this->Holes);
-    // (TileId is renamed as for output 0, whose warning says so: only PolygonId and Hole here)
+    // (output 0's names are renamed as there, whose warning says so: only PolygonId and Hole here)
     tessera_vtk::RenamedArrays more;
     for (const auto& renamed : this->Renamed)
     {
-      if (renamed.first != OutlineArrayNames[0])
+      if (std::find_if(OwnArrayNames.begin(),
+            OwnArrayNames.end(),
+            [&](const char* own) { return renamed.first == own; }) == OwnArrayNames.end())
       {
         more.push_back(renamed);
       }
@@ -143,6 +161,7 @@ private:
   vtkNew<vtkPoints> Points;
   vtkNew<vtkCellArray> Lines;
   vtkNew<vtkIdTypeArray> TileIds, PolygonIds;
+  vtkNew<vtkDoubleArray> ClippedAreas, Fractions;
   vtkNew<vtkUnsignedCharArray> Holes;
   vtkIdType NextPolygon = 0;
 };
@@ -477,7 +496,10 @@ void ClipBlock(vtkPointSet* tiles,
     // lobes joined into one ring, holes as clockwise rings): one cell per display piece instead,
     // each a simple polygon, the pieces disjoint and filling tile & window.
     const tessera::ClippedRings pieces = tessera::DisplayPieces(rings);
-    outlineCells.Append(pieces, c, exponent);
+    // (At most 1: the two areas are summed differently, and a tile inside the window gave
+    // 1 + 2^-52.)
+    const double fraction = ownArea > 0.0 ? std::min(1.0, clipped / ownArea) : 0.0;
+    outlineCells.Append(pieces, c, exponent, std::ldexp(clipped, -2 * exponent), fraction);
     for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
     {
       const std::size_t begin = pieces.RingOffsets[r], end = pieces.RingOffsets[r + 1];
@@ -491,9 +513,7 @@ void ClipBlock(vtkPointSet* tiles,
       outCD->CopyData(inCD, c, polys->GetNumberOfCells() - 1);
       tileIds->InsertNextValue(c);
       clippedAreas->InsertNextValue(std::ldexp(clipped, -2 * exponent));
-      // (At most 1: the two areas are summed differently, and a tile inside the window gave
-      // 1 + 2^-52.)
-      fractions->InsertNextValue(ownArea > 0.0 ? std::min(1.0, clipped / ownArea) : 0.0);
+      fractions->InsertNextValue(fraction);
       pieceAreas->InsertNextValue(std::ldexp(
         tessera::CompensatedPolygonArea(&pieces.Vertices[begin], end - begin), -2 * exponent));
     }

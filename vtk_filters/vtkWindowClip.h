@@ -52,8 +52,9 @@
  * Output 1 holds each clipped tile's outline: its pieces joined back into polygons with holes
  * (core/piece_outlines.h), as a GIS wants a tile and as a view draws the tiles' borders without
  * the cuts between pieces, one closed polyline per ring (its first point repeated last), with the
- * tile's cell data and `TileId`, `PolygonId` (the polygon the ring bounds, numbered over the
- * output or block) and `Hole` (0: the polygon's outer ring, anticlockwise, listed first; 1: a
+ * tile's cell data and `TileId`, `ClippedArea`, `AreaFraction` (as above), `PolygonId` (the
+ * polygon the ring bounds, numbered over the output or block) and `Hole` (0: the polygon's outer
+ * ring, anticlockwise, listed first; 1: a
  * hole in it, clockwise); an input array so named is passed under another name, as above. It
  * has the tiles' field data, and for tiles in a composite the same structure as output 0; it has
  * no active scalars, so that ParaView draws the rings in one colour over the clipped tiles.

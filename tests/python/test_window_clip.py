@@ -219,6 +219,11 @@ def test_outlines_are_each_tiles_part_of_the_window_as_polygons_with_holes():
         by_tile = outline_polygons(outlines)
         clipped = dict(zip(cell_values(pieces, "TileId"), cell_values(pieces, "ClippedArea")))
         assert_that(sorted(by_tile) == sorted(clipped), f"{name}: tiles with outlines and with pieces")
+        for array in ("ClippedArea", "AreaFraction"):  # (the tile's, on each of its rings, as on its pieces)
+            of_pieces = dict(zip(cell_values(pieces, "TileId"), cell_values(pieces, array)))
+            assert_that(all(of_pieces[t] == v for t, v in zip(cell_values(outlines, "TileId"),
+                                                               cell_values(outlines, array))),
+                        f"{name}: the rings' {array}")
         for tile, polygons in by_tile.items():
             area = float(sum(exact_area(r) for p in polygons for r in p))
             assert_close(area, clipped[tile], 1e-12 * max(clipped[tile], 1e-4), f"{name}: tile {tile}'s outline area")
@@ -334,8 +339,9 @@ def test_input_arrays_named_like_the_filters_are_kept_under_another_name():
     # The outlines (output 1) rename TileId alike, said once above, and PolygonId and Hole, named in
     # a warning of their own.
     rings = f.GetOutputDataObject(1)
-    assert_that(cell_values(rings, "TileId_input") == [100 * 0 + t for t in cell_values(rings, "TileId")],
-                "TileId_input on the outlines")
+    for k, name in enumerate(list(inputs)[:3]):  # (TileId, ClippedArea, AreaFraction: named as on output 0)
+        assert_that(cell_values(rings, renamed[name]) == [100 * k + t for t in cell_values(rings, "TileId")],
+                    f"{renamed[name]} on the outlines")
     for k, name in enumerate(("PolygonId", "Hole")):
         array = vtkIntArray()
         array.SetName(name)
