@@ -3,6 +3,7 @@
 #include "cache_line.h"
 #include "dirichlet_tessellation.h"
 #include "display_pieces.h"
+#include "fan_diagonals.h"
 #include "meridian_cut.h"
 #include "errors.h"
 #include "parallel_chunks.h"
@@ -453,6 +454,54 @@ struct ThiessenArealAverage::State
   {
     return this->Method == AreaMethod::EqualAreaPlane ? CompensatedPolygonArea(piece, count)
                                                       : this->MeasureRing(piece, count, scratch);
+  }
+
+  /// out's display pieces from the pieces in lon/lat (lonLat, out.TilePieceOffsets's and
+  /// out.PieceAreasM2's): a piece that is no fan about its first vertex there (fans[r] 0: bent,
+  /// no vertex of it sees it whole) split along diagonals into fans (fan_diagonals.h), each part
+  /// measured as the pieces are, in the plane (its vertices projected back).
+  void SetDisplayPieces(const ClippedRings& lonLat,
+    const std::vector<char>& fans,
+    ClipScratch& scratch,
+    ClippedTilesLonLat& out) const
+  {
+    const std::vector<double> areas = std::move(out.PieceAreasM2);
+    const std::vector<std::size_t> offsets = std::move(out.TilePieceOffsets);
+    out.PieceAreasM2.clear();
+    out.TilePieceOffsets.assign(1, 0);
+    out.Pieces = ClippedRings();
+    const auto append = [&out](const Point2* ring, std::size_t count, double area)
+    {
+      out.Pieces.Vertices.insert(out.Pieces.Vertices.end(), ring, ring + count);
+      out.Pieces.RingOffsets.push_back(out.Pieces.Vertices.size());
+      out.PieceAreasM2.push_back(area);
+    };
+    for (std::size_t k = 0; k + 1 < offsets.size(); ++k)
+    {
+      for (std::size_t r = offsets[k]; r < offsets[k + 1]; ++r)
+      {
+        const Point2* ring = &lonLat.Vertices[lonLat.RingOffsets[r]];
+        const std::size_t count = lonLat.RingOffsets[r + 1] - lonLat.RingOffsets[r];
+        const std::vector<std::vector<Point2>> parts =
+          fans[r] ? std::vector<std::vector<Point2>>() : FansByDiagonals({ ring, ring + count });
+        if (parts.size() < 2)
+        {
+          append(ring, count, areas[r]);
+          continue;
+        }
+        for (const std::vector<Point2>& part : parts)
+        {
+          std::vector<Point2> inPlane(part.size());
+          for (std::size_t v = 0; v < part.size(); ++v)
+          {
+            inPlane[v] = this->Projector->Forward(part[v]);
+          }
+          append(
+            part.data(), part.size(), this->PieceArea(inPlane.data(), inPlane.size(), scratch));
+        }
+      }
+      out.TilePieceOffsets.push_back(out.PieceAreasM2.size());
+    }
   }
 
   /// Ellipsoidal area (m^2) of tile & catchment. (A tile between gauges some nanometres apart,
@@ -1051,6 +1100,33 @@ Point2 DensifiedPoint(const Point2& a, const Point2& b, int i, int n)
 
 /// A count held in a double as a whole number, or to 3 figures beyond 1e15 ("8e+300"; one that
 /// overflowed, "more than 1e308").
+/// Each tile's pieces in lon/lat (lonLat, tile k's TilePieceOffsets[k] .. [k+1]) joined into its
+/// outline (piece_outlines.h), appended to out.Outlines with TileOutlineOffsets. A tile across the
+/// 180th meridian (or its copy 360 degrees on, as its longitudes run) is cut there first, so that
+/// each polygon lies on one side of it (meridian_cut.h).
+void AppendOutlinesOfTiles(const ClippedRings& lonLat, ClippedTilesLonLat& out)
+{
+  for (std::size_t k = 0; k < out.Gauges.size(); ++k)
+  {
+    const std::size_t first = out.TilePieceOffsets[k], last = out.TilePieceOffsets[k + 1];
+    const std::size_t begin = lonLat.RingOffsets[first], end = lonLat.RingOffsets[last];
+    const Box2 box = BoundsOf(&lonLat.Vertices[begin], end - begin);
+    const double meridian = 180.0 + 360.0 * std::ceil((box.XMin - 180.0) / 360.0);
+    if (box.XMin < meridian && meridian < box.XMax)
+    {
+      for (const ClippedRings& side : CutAtMeridian(lonLat, first, last, meridian))
+      {
+        AppendOutlines(OutlinesOfPieces(side, 0, side.RingOffsets.size() - 1), out.Outlines);
+      }
+    }
+    else
+    {
+      AppendOutlines(OutlinesOfPieces(lonLat, first, last), out.Outlines);
+    }
+    out.TileOutlineOffsets.push_back(out.Outlines.PolygonOffsets.size() - 1);
+  }
+}
+
 /// A gauge's lon/lat as projected: at a pole, whatever its longitude, at the central meridian.
 /// Every longitude names the pole (a file may give the South Pole's station as 0, -90 and another
 /// as 139.27, -90), but a conic projection makes the pole an arc: two such gauges were two places
@@ -1555,6 +1631,8 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
   // (shared_borders.h).
   const ClippedRings shared = ShareBorderVertices(plane);
   State::ClipScratch& scratch = s.Scratch[0];
+  ClippedRings lonLat;    // the pieces in lon/lat, as cut in the plane
+  std::vector<char> fans; // per piece: whether it is a fan about its first vertex in lon/lat
   for (std::size_t r = 0; r + 1 < shared.RingOffsets.size(); ++r)
   {
     const std::size_t begin = shared.RingOffsets[r];
@@ -1564,33 +1642,12 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
     DropRepeatedVertices(scratch.LonLat); // points an ulp apart in the plane can come back as one
     // The plane's fan (display_pieces.h) about its first vertex, bent: a side bowing inwards in
     // lon/lat left slivers drawn twice (0.5% of a Colorado tile's area).
-    StartAtFanApex(scratch.LonLat);
-    out.Pieces.Vertices.insert(
-      out.Pieces.Vertices.end(), scratch.LonLat.begin(), scratch.LonLat.end());
-    out.Pieces.RingOffsets.push_back(out.Pieces.Vertices.size());
+    fans.push_back(StartAtFanApex(scratch.LonLat));
+    lonLat.Vertices.insert(lonLat.Vertices.end(), scratch.LonLat.begin(), scratch.LonLat.end());
+    lonLat.RingOffsets.push_back(lonLat.Vertices.size());
   }
-  for (std::size_t k = 0; k < out.Gauges.size(); ++k)
-  {
-    const std::size_t first = out.TilePieceOffsets[k], last = out.TilePieceOffsets[k + 1];
-    // A tile across the 180th meridian (or its copy 360 degrees on, as its longitudes run) is cut
-    // there, so that each polygon lies on one side of it (meridian_cut.h).
-    const std::size_t begin = out.Pieces.RingOffsets[first], end = out.Pieces.RingOffsets[last];
-    const Box2 box = BoundsOf(&out.Pieces.Vertices[begin], end - begin);
-    const double meridian = 180.0 + 360.0 * std::ceil((box.XMin - 180.0) / 360.0);
-    const bool across = box.XMin < meridian && meridian < box.XMax;
-    if (across)
-    {
-      for (const ClippedRings& side : CutAtMeridian(out.Pieces, first, last, meridian))
-      {
-        AppendOutlines(OutlinesOfPieces(side, 0, side.RingOffsets.size() - 1), out.Outlines);
-      }
-    }
-    else
-    {
-      AppendOutlines(OutlinesOfPieces(out.Pieces, first, last), out.Outlines);
-    }
-    out.TileOutlineOffsets.push_back(out.Outlines.PolygonOffsets.size() - 1);
-  }
+  AppendOutlinesOfTiles(lonLat, out);
+  s.SetDisplayPieces(lonLat, fans, scratch, out);
   return out;
 }
 

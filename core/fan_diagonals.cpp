@@ -1,0 +1,121 @@
+#include "fan_diagonals.h"
+
+#include "display_pieces.h"
+#include "predicates.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <utility>
+
+namespace tessera
+{
+namespace
+{
+
+constexpr std::size_t MaxParts = 64;
+constexpr std::size_t TriesPerLevel = 16;
+
+/// Whether the segment from vertex i to b leaves i into the ring's interior (O'Rourke's in-cone
+/// test, exact): between the edges at i, on the inside of the angle they make.
+bool IntoInterior(const std::vector<Point2>& ring, std::size_t i, const Point2& b)
+{
+  const std::size_t n = ring.size();
+  const Point2& a = ring[i];
+  const Point2& previous = ring[i == 0 ? n - 1 : i - 1];
+  const Point2& next = ring[i + 1 == n ? 0 : i + 1];
+  if (orient2d(a, next, previous) >= 0) // a convex corner
+  {
+    return orient2d(a, b, previous) > 0 && orient2d(b, a, next) > 0;
+  }
+  return !(orient2d(a, b, next) >= 0 && orient2d(b, a, previous) >= 0);
+}
+
+/// Whether segments p-q and r-s meet (cross, or touch at a point of either), exactly.
+bool Meet(const Point2& p, const Point2& q, const Point2& r, const Point2& s)
+{
+  const int a = orient2d(p, q, r), b = orient2d(p, q, s);
+  const int c = orient2d(r, s, p), d = orient2d(r, s, q);
+  if (a * b < 0 && c * d < 0)
+  {
+    return true;
+  }
+  const auto within = [](const Point2& u, const Point2& v, const Point2& w) // w on u-v's line
+  {
+    return std::min(u.x, v.x) <= w.x && w.x <= std::max(u.x, v.x) && std::min(u.y, v.y) <= w.y &&
+      w.y <= std::max(u.y, v.y);
+  };
+  return (a == 0 && within(p, q, r)) || (b == 0 && within(p, q, s)) ||
+    (c == 0 && within(r, s, p)) || (d == 0 && within(r, s, q));
+}
+
+/// Whether vertices i and j (not neighbours) join by a diagonal: inside the ring at both ends,
+/// meeting no edge that is not at i or j.
+bool IsDiagonal(const std::vector<Point2>& ring, std::size_t i, std::size_t j)
+{
+  const std::size_t n = ring.size();
+  if (!IntoInterior(ring, i, ring[j]) || !IntoInterior(ring, j, ring[i]))
+  {
+    return false;
+  }
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    const std::size_t next = k + 1 == n ? 0 : k + 1;
+    if (k == i || k == j || next == i || next == j)
+    {
+      continue;
+    }
+    if (Meet(ring[i], ring[j], ring[k], ring[next]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Vertices from .. to of ring, walking on (to included).
+std::vector<Point2> Stretch(const std::vector<Point2>& ring, std::size_t from, std::size_t to)
+{
+  std::vector<Point2> part;
+  for (std::size_t k = from;; k = k + 1 == ring.size() ? 0 : k + 1)
+  {
+    part.push_back(ring[k]);
+    if (k == to)
+    {
+      return part;
+    }
+  }
+}
+
+void Split(std::vector<Point2> ring, std::vector<std::vector<Point2>>& parts)
+{
+  const std::size_t n = ring.size();
+  if (n < 4 || StartAtFanApex(ring) || parts.size() + 1 >= MaxParts)
+  {
+    parts.push_back(std::move(ring));
+    return;
+  }
+  // Diagonals that halve the vertices, from starts spread round the ring.
+  for (std::size_t t = 0; t < TriesPerLevel; ++t)
+  {
+    const std::size_t i = t * n / TriesPerLevel;
+    const std::size_t j = (i + n / 2) % n;
+    if (IsDiagonal(ring, i, j))
+    {
+      Split(Stretch(ring, i, j), parts);
+      Split(Stretch(ring, j, i), parts);
+      return;
+    }
+  }
+  parts.push_back(std::move(ring));
+}
+
+} // namespace
+
+std::vector<std::vector<Point2>> FansByDiagonals(const std::vector<Point2>& ring)
+{
+  std::vector<std::vector<Point2>> parts;
+  Split(ring, parts);
+  return parts;
+}
+
+} // namespace tessera

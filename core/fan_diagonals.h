@@ -1,0 +1,30 @@
+#pragma once
+// A simple ring that no vertex sees whole, split into fans along diagonals between its own
+// vertices. VTK draws a polygon, and its Cell Size and Integrate Variables measure it, as the fan
+// of triangles from its first point; a display piece made a fan in the plane and bent on its way
+// to lon/lat (its long sides bowing in) can have no such point left, and was drawn over itself:
+// a strip of 397 vertices along 41 N measured 24% too large. Split along a diagonal into two
+// halves, and each half again until it is a fan; a diagonal joins two vertices already there, so
+// the parts add no vertex and the piece's borders with its neighbours stay as they were:
+//
+//   a bent strip, no vertex sees it all        split at a diagonal between vertices
+//   +-----....______                           +-----....__|___
+//    \              ''''----+                   \          |    ''''----+
+//     +-----....______      /          ->        +-----....|______      /
+//                     ''''-+                               |      ''''-+
+
+#include "geometry.h"
+
+#include <vector>
+
+namespace tessera
+{
+
+/// ring (simple, anticlockwise) as rings that are fans about their first vertex (every triangle
+/// of that vertex and an edge not at it anticlockwise or flat, exactly), split along diagonals
+/// (exact tests: inside the ring at both ends, touching no edge and no vertex), halving the
+/// vertices as near as a diagonal allows. A part for which no diagonal is found among the ones
+/// tried (16 a level) is left as it is, not a fan; so are parts beyond 64 in all.
+std::vector<std::vector<Point2>> FansByDiagonals(const std::vector<Point2>& ring);
+
+} // namespace tessera
