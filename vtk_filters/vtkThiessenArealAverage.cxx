@@ -879,14 +879,21 @@ std::string RingsInsideOtherBlocksWarning(const tessera_vtk::Rings& rings,
   {
     return std::string(); // one block (or a vtkPolyData): holes are where the rings put them
   }
-  std::vector<std::pair<std::size_t, std::int32_t>> inside; // (ring, a ring around it)
+  struct Inside
+  {
+    std::size_t Ring;
+    std::int32_t Around; // a ring of another block around it
+    bool Land;           // inside an even number of rings: an island in a hole, land again
+  };
+  std::vector<Inside> inside;
   for (std::size_t r = 0; r < block.size(); ++r)
   {
-    for (const std::int32_t around : average.CatchmentRingsAround(r))
+    const std::vector<std::int32_t> around = average.CatchmentRingsAround(r);
+    for (const std::int32_t ring : around)
     {
-      if (block[static_cast<std::size_t>(around)] != block[r])
+      if (block[static_cast<std::size_t>(ring)] != block[r])
       {
-        inside.emplace_back(r, around);
+        inside.push_back({ r, ring, around.size() % 2 == 0 });
         break;
       }
     }
@@ -897,15 +904,17 @@ std::string RingsInsideOtherBlocksWarning(const tessera_vtk::Rings& rings,
   }
   return std::to_string(inside.size()) +
     " catchment ring(s) lie inside a ring of another block (feature), so the even-odd rule cuts "
-    "them out of the catchment as holes (a sub-basin given beside its basin removes itself; give "
-    "the basin alone, or each hole in the block of its polygon): " +
+    "them out of the catchment as holes, or, inside a hole, makes them land again (a sub-basin "
+    "given beside its basin removes itself; give the basin alone, or each hole in the block of "
+    "its polygon): " +
     ListNames(inside.size(),
       [&](std::size_t k)
       {
         // (by their cells: ring numbers shift where a pair of rings given twice was left out)
-        const std::size_t r = inside[k].first;
-        const auto around = static_cast<std::size_t>(inside[k].second);
-        return rings.Sources[r] + " inside " + rings.Sources[around];
+        const std::size_t r = inside[k].Ring;
+        const auto around = static_cast<std::size_t>(inside[k].Around);
+        return rings.Sources[r] + " inside " + rings.Sources[around] +
+          (inside[k].Land ? " (land again: inside a hole)" : " (a hole)");
       });
 }
 

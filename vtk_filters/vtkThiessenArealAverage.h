@@ -135,7 +135,7 @@
  * flag input that is used but may not be what was meant: no gauge inside the catchment (a sign of
  * swapped or unsigned coordinates), and a catchment ring inside a ring of another block (in
  * vtkGDALVectorReader's output, a feature inside another feature), which the even-odd rule makes a
- * hole.
+ * hole (or, inside a hole, land again: each ring is said to be which).
  *
  * A gauge with a NaN or out-of-range coordinate (latitude beyond 90 degrees, longitude beyond 360,
  * or beyond what ProjectionRecord's projection represents) and a self-intersecting catchment are

@@ -304,7 +304,22 @@ def test_a_catchment_ring_inside_another_blocks_ring_is_reported():
         if expected:
             # (blocks by their index under the root, with ParaView's composite index beside it)
             assert_that("): 1 catchment ring(s)" in said[0]
-                        and "block 1 (composite index 2) cell 0 inside block 0 (composite index 1) cell 0" in said[0], said[0])
+                        and "block 1 (composite index 2) cell 0 inside block 0 (composite index 1) cell 0 (a hole)"
+                        in said[0], said[0])
+    # An island in that hole, a feature of its own too, is land again: said so, not called a hole.
+    catchment = vtkMultiBlockDataSet()
+    for k, ring in enumerate((basin, sub, [(-0.2, -0.2), (0.2, -0.2), (0.2, 0.2), (-0.2, 0.2)])):
+        catchment.SetBlock(k, polygon([ring]))
+    f = vtkThiessenArealAverage()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetGaugesData(gauges_polydata([(-0.75, 0.0), (0.75, 0.0)], ["w", "e"], [1.0, 3.0]))
+    f.SetCatchmentData(catchment)
+    f.Update(1)
+    said = [w for w in warnings if "inside a ring of another block" in w]
+    assert_that(len(said) == 1 and "2 catchment ring(s)" in said[0]
+                and "block 1 (composite index 2) cell 0 inside block 0 (composite index 1) cell 0 (a hole)" in said[0]
+                and "block 2 (composite index 3) cell 0 inside block 0 (composite index 1) cell 0 (land again: "
+                    "inside a hole)" in said[0], f"{warnings}")
 
 
 def test_gauges_in_blocks_as_a_point_layer_gives_them_are_joined():
