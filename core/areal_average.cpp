@@ -459,7 +459,8 @@ struct ThiessenArealAverage::State
   /// out's display pieces from the pieces in lon/lat (lonLat, out.TilePieceOffsets's and
   /// out.PieceAreasM2's): a piece that is no fan about its first vertex there (fans[r] 0: bent,
   /// no vertex of it sees it whole) split along diagonals into fans (fan_diagonals.h), each part
-  /// measured as the pieces are, in the plane (its vertices projected back).
+  /// measured as the pieces are, in the plane (its vertices projected back), the parts' areas
+  /// scaled to sum to the piece's.
   void SetDisplayPieces(const ClippedRings& lonLat,
     const std::vector<char>& fans,
     ClipScratch& scratch,
@@ -489,6 +490,10 @@ struct ThiessenArealAverage::State
           append(ring, count, areas[r]);
           continue;
         }
+        // Each part measured in the plane, its vertices projected back, and the parts' areas
+        // scaled to the piece's own, as the weights measured it: the geodesic measure densifies
+        // the parts' edges from other points, and a tile's parts summed to 1.2e-7 off its area.
+        std::vector<double> partAreas;
         for (const std::vector<Point2>& part : parts)
         {
           std::vector<Point2> inPlane(part.size());
@@ -496,8 +501,14 @@ struct ThiessenArealAverage::State
           {
             inPlane[v] = this->Projector->Forward(part[v]);
           }
-          append(
-            part.data(), part.size(), this->PieceArea(inPlane.data(), inPlane.size(), scratch));
+          partAreas.push_back(this->PieceArea(inPlane.data(), inPlane.size(), scratch));
+        }
+        const double sum = std::accumulate(partAreas.begin(), partAreas.end(), 0.0);
+        for (std::size_t p = 0; p < parts.size(); ++p)
+        {
+          const double share =
+            sum > 0.0 ? partAreas[p] / sum : 1.0 / static_cast<double>(parts.size());
+          append(parts[p].data(), parts[p].size(), areas[r] * share);
         }
       }
       out.TilePieceOffsets.push_back(out.PieceAreasM2.size());
@@ -1098,8 +1109,6 @@ Point2 DensifiedPoint(const Point2& a, const Point2& b, int i, int n)
                           : InterpolateLonLat(b, a, double(n - i) / n);
 }
 
-/// A count held in a double as a whole number, or to 3 figures beyond 1e15 ("8e+300"; one that
-/// overflowed, "more than 1e308").
 /// Each tile's pieces in lon/lat (lonLat, tile k's TilePieceOffsets[k] .. [k+1]) joined into its
 /// outline (piece_outlines.h), appended to out.Outlines with TileOutlineOffsets. A tile across the
 /// 180th meridian (or its copy 360 degrees on, as its longitudes run) is cut there first, so that
@@ -1137,6 +1146,8 @@ Point2 GaugePlace(const Point2& lonlat, const GeographicProjection& projection)
   return std::abs(lonlat.y) == 90.0 ? Point2{ projection.CentralMeridian(), lonlat.y } : lonlat;
 }
 
+/// A count held in a double as a whole number, or to 3 figures beyond 1e15 ("8e+300"; one that
+/// overflowed, "more than 1e308").
 std::string CountText(double count)
 {
   if (!std::isfinite(count))

@@ -130,9 +130,11 @@ struct ArealStep
 /// The clipped tiles of the current step, for display, in lon/lat: each tile's part of the
 /// catchment as pieces that are simple polygons without holes (x-monotone, display_pieces.h): one
 /// for most tiles, several for a part with a hole or lobes joined only at the tile's edge. Each
-/// is a fan about its first vertex in lon/lat (a piece bent so that no vertex sees it whole split
-/// along diagonals, fan_diagonals.h; up to 64 parts, each measured on its own). A tile's pieces
-/// do not overlap and their areas add up to its clipped area.
+/// is a fan about its first vertex in lon/lat: a piece bent so that no vertex sees it whole is
+/// split along diagonals (fan_diagonals.h; up to 64 parts, each measured in the plane, their
+/// areas scaled to the piece's), and only a part for which no diagonal is found is left as it
+/// is (3 of 36,492 pieces under a noisy outline of 10^5 vertices; none in Colorado's tiles). A
+/// tile's pieces do not overlap and their areas add up to its clipped area.
 struct ClippedTilesLonLat
 {
   std::vector<std::int32_t> Gauges;               ///< one entry per tile with a non-empty clip

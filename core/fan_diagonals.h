@@ -22,9 +22,11 @@ namespace tessera
 
 /// ring (simple, anticlockwise) as rings that are fans about their first vertex (every triangle
 /// of that vertex and an edge not at it anticlockwise or flat, exactly), split along diagonals
-/// (exact tests: inside the ring at both ends, touching no edge and no vertex), halving the
-/// vertices as near as a diagonal allows. A part for which no diagonal is found among the ones
-/// tried (16 a level) is left as it is, not a fan; so are parts beyond 64 in all.
+/// (exact tests: inside the ring at both ends, touching no edge and no vertex), each halving a
+/// part's vertices as near as one found does: from every vertex to the one half the ring on,
+/// then an eighth and a quarter of the ring nearer or farther, within 16 n + 4096 edge tests a
+/// part. A part for which none is found is left as it is, not a fan; so are the parts once there
+/// are 64 (at most 64 in all).
 std::vector<std::vector<Point2>> FansByDiagonals(const std::vector<Point2>& ring);
 
 } // namespace tessera

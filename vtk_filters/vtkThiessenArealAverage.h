@@ -77,8 +77,8 @@
  * about its first point, as ParaView draws a polygon (core/display_pieces.h; in lon/lat each
  * starts at a point that sees all of it, and a piece whose edges bent so that none does, as a
  * thin strip along a parallel, is split along diagonals between its own points into fans,
- * core/fan_diagonals.h: a strip in Colorado's tiles of 1895-01 had been measured 24% too large
- * by ParaView's Cell Size). Most tiles, concave ones
+ * core/fan_diagonals.h, as far as a diagonal is found: a strip in Colorado's tiles of 1895-01 had
+ * been measured 24% too large by ParaView's Cell Size). Most tiles, concave ones
  * included, are one piece; a part with a hole (a lake in the tile: three pieces around it), under
  * a wavy shore (a piece a wave or so) or made of lobes that meet only along the tile's edge (a
  * tile across a bay) gives several, so a gauge can have several cells. Neighbouring cells
