@@ -750,6 +750,25 @@ private:
   vtkNew<vtkDoubleArray> CellAreas, CellWeights;
 };
 
+/// A gauge's weight and clipped area at a step: 0 for a gauge whose tile is in the tessellation
+/// but not weighted (its removal deferred).
+struct GaugeWeight
+{
+  double Weight = 0.0;
+  double AreaM2 = 0.0;
+};
+
+GaugeWeight WeightOf(const tessera::ArealStep& result, std::int32_t g)
+{
+  const auto found = std::lower_bound(result.Gauges.begin(), result.Gauges.end(), g);
+  if (found == result.Gauges.end() || *found != g)
+  {
+    return {};
+  }
+  const std::size_t index = static_cast<std::size_t>(found - result.Gauges.begin());
+  return { result.Weights[index], result.AreasM2[index] };
+}
+
 /// Output 3: each clipped tile's outline (core/piece_outlines.h) as closed polylines, a cell per
 /// ring (its first point repeated last), with GaugeColumns and PolygonId (the polygon the ring
 /// bounds, numbered over the output) and Hole (0: the polygon's outer ring, anticlockwise; 1: a
@@ -776,9 +795,7 @@ void WriteOutlines(const tessera::ClippedTilesLonLat& clipped,
   for (std::size_t k = 0; k < clipped.Gauges.size(); ++k)
   {
     const std::int32_t g = clipped.Gauges[k];
-    const auto found = std::lower_bound(result.Gauges.begin(), result.Gauges.end(), g);
-    const std::size_t index = static_cast<std::size_t>(found - result.Gauges.begin());
-    const bool isWeighted = found != result.Gauges.end() && *found == g;
+    const GaugeWeight weight = WeightOf(result, g);
     for (std::size_t p = clipped.TileOutlineOffsets[k]; p < clipped.TileOutlineOffsets[k + 1]; ++p)
     {
       for (std::size_t r = outlines.PolygonOffsets[p]; r < outlines.PolygonOffsets[p + 1]; ++r)
@@ -791,10 +808,7 @@ void WriteOutlines(const tessera::ClippedTilesLonLat& clipped,
           lines->InsertCellPoint(static_cast<vtkIdType>(v));
         }
         lines->InsertCellPoint(static_cast<vtkIdType>(begin));
-        cells.Append(g,
-          isWeighted ? result.Weights[index] : 0.0,
-          isWeighted ? result.AreasM2[index] : 0.0,
-          values[static_cast<std::size_t>(g)]);
+        cells.Append(g, weight.Weight, weight.AreaM2, values[static_cast<std::size_t>(g)]);
         polygonIds->InsertNextValue(static_cast<vtkIdType>(p));
         holes->InsertNextValue(r == outlines.PolygonOffsets[p] ? 0 : 1);
       }
@@ -1726,9 +1740,7 @@ void vtkThiessenArealAverage::WriteTiles(std::size_t step,
   for (std::size_t k = 0; k < clipped.Gauges.size(); ++k)
   {
     const std::int32_t g = clipped.Gauges[k];
-    const auto found = std::lower_bound(result.Gauges.begin(), result.Gauges.end(), g);
-    const std::size_t index = static_cast<std::size_t>(found - result.Gauges.begin());
-    const bool isWeighted = found != result.Gauges.end() && *found == g;
+    const GaugeWeight weight = WeightOf(result, g);
     // One cell per piece; the gauge's Weight and Area_m2 are repeated on each of its cells, the
     // cell's own share is CellArea_m2 / CellWeight.
     for (std::size_t r = clipped.TilePieceOffsets[k]; r < clipped.TilePieceOffsets[k + 1]; ++r)
@@ -1741,8 +1753,8 @@ void vtkThiessenArealAverage::WriteTiles(std::size_t step,
         polys->InsertCellPoint(static_cast<vtkIdType>(v));
       }
       cells.Append(g,
-        isWeighted ? result.Weights[index] : 0.0,
-        isWeighted ? result.AreasM2[index] : 0.0,
+        weight.Weight,
+        weight.AreaM2,
         in.Values[step][static_cast<std::size_t>(g)],
         clipped.PieceAreasM2[r]);
     }

@@ -58,6 +58,22 @@ double RingArea(const ClippedRings& rings, std::size_t r)
     &rings.Vertices[rings.RingOffsets[r]], rings.RingOffsets[r + 1] - rings.RingOffsets[r]);
 }
 
+/// The signed area of outlines' rings, each checked to be simple (where names a failure).
+double SimpleRingsArea(const RegionOutlines& outlines, const std::string& where)
+{
+  double area = 0.0;
+  for (std::size_t r = 0; r + 1 < outlines.Rings.RingOffsets.size(); ++r)
+  {
+    const std::vector<Point2> ring(
+      outlines.Rings.Vertices.begin() + static_cast<std::ptrdiff_t>(outlines.Rings.RingOffsets[r]),
+      outlines.Rings.Vertices.begin() +
+        static_cast<std::ptrdiff_t>(outlines.Rings.RingOffsets[r + 1]));
+    EXPECT_NO_THROW(ValidateRings({ 0, ring.size() }, ring)) << where << "ring " << r;
+    area += RingArea(outlines.Rings, r);
+  }
+  return area;
+}
+
 /// The tile's part of the catchment as pieces, their borders made alike (as the areal average
 /// does before it joins them), and their outline. Checks that each ring is simple, each polygon's
 /// first ring anticlockwise and the others clockwise, the signed areas sum to the clip's, no edge
@@ -200,16 +216,7 @@ TEST(PieceOutlines, ASlitSomeUlpsWideLeavesNoBowTie)
     const ClippedTile clipped = slit.Clip(Rectangle(-1, -1, 11, 11));
     const ClippedRings pieces = ShareBorderVertices(DisplayPieces(clipped.Rings));
     const RegionOutlines outlines = OutlinesOfPieces(pieces, 0, pieces.RingOffsets.size() - 1);
-    double area = 0.0;
-    for (std::size_t r = 0; r < RingCount(outlines); ++r)
-    {
-      const std::vector<Point2> ring(outlines.Rings.Vertices.begin() +
-          static_cast<std::ptrdiff_t>(outlines.Rings.RingOffsets[r]),
-        outlines.Rings.Vertices.begin() +
-          static_cast<std::ptrdiff_t>(outlines.Rings.RingOffsets[r + 1]));
-      EXPECT_NO_THROW(ValidateRings({ 0, ring.size() }, ring)) << "ring " << r;
-      area += RingArea(outlines.Rings, r);
-    }
+    const double area = SimpleRingsArea(outlines, "");
     EXPECT_NEAR(area, clipped.Area, 1e-11);
   }
 }
@@ -445,16 +452,7 @@ TEST(PieceOutlines, PiecesTouchingOrRecrossingTheMeridianGiveSimpleRings)
       const RegionOutlines outlines =
         OutlinesOfPieces(sides[s], 0, sides[s].RingOffsets.size() - 1);
       ASSERT_EQ(RingCount(outlines), sideRings[c][s]) << "side " << s;
-      double area = 0.0;
-      for (std::size_t r = 0; r < RingCount(outlines); ++r)
-      {
-        const std::vector<Point2> ring(outlines.Rings.Vertices.begin() +
-            static_cast<std::ptrdiff_t>(outlines.Rings.RingOffsets[r]),
-          outlines.Rings.Vertices.begin() +
-            static_cast<std::ptrdiff_t>(outlines.Rings.RingOffsets[r + 1]));
-        EXPECT_NO_THROW(ValidateRings({ 0, ring.size() }, ring)) << "side " << s << " ring " << r;
-        area += RingArea(outlines.Rings, r);
-      }
+      const double area = SimpleRingsArea(outlines, "side " + std::to_string(s) + " ");
       EXPECT_EQ(area, sideAreas[c][s]) << "side " << s;
     }
   }
