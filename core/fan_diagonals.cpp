@@ -1,9 +1,9 @@
 #include "fan_diagonals.h"
 
 #include "display_pieces.h"
+#include "polygon_validation.h" // SegmentsIntersect
 #include "predicates.h"
 
-#include <algorithm>
 #include <cstddef>
 #include <utility>
 
@@ -29,24 +29,6 @@ bool IntoInterior(const std::vector<Point2>& ring, std::size_t i, const Point2& 
   return !(orient2d(a, b, next) >= 0 && orient2d(b, a, previous) >= 0);
 }
 
-/// Whether segments p-q and r-s meet (cross, or touch at a point of either), exactly.
-bool Meet(const Point2& p, const Point2& q, const Point2& r, const Point2& s)
-{
-  const int a = orient2d(p, q, r), b = orient2d(p, q, s);
-  const int c = orient2d(r, s, p), d = orient2d(r, s, q);
-  if (a * b < 0 && c * d < 0)
-  {
-    return true;
-  }
-  const auto within = [](const Point2& u, const Point2& v, const Point2& w) // w on u-v's line
-  {
-    return std::min(u.x, v.x) <= w.x && w.x <= std::max(u.x, v.x) && std::min(u.y, v.y) <= w.y &&
-      w.y <= std::max(u.y, v.y);
-  };
-  return (a == 0 && within(p, q, r)) || (b == 0 && within(p, q, s)) ||
-    (c == 0 && within(r, s, p)) || (d == 0 && within(r, s, q));
-}
-
 /// Whether vertices i and j (not neighbours) join by a diagonal: inside the ring at both ends,
 /// meeting no edge that is not at i or j. Each edge tested is taken from budget; false once it
 /// runs out.
@@ -69,7 +51,7 @@ bool IsDiagonal(const std::vector<Point2>& ring, std::size_t i, std::size_t j, s
       return false;
     }
     --budget;
-    if (Meet(ring[i], ring[j], ring[k], ring[next]))
+    if (SegmentsIntersect(ring[i], ring[j], ring[k], ring[next]))
     {
       return false;
     }

@@ -1,6 +1,7 @@
 #include "piece_outlines.h"
 
 #include "polygon_area.h"
+#include "polygon_validation.h" // RingOrientation, RingWinding, SegmentsIntersect
 #include "predicates.h"
 
 #include <algorithm>
@@ -17,11 +18,6 @@ struct Edge
   Point2 From;
   Point2 To;
 };
-
-bool PointsBefore(const Point2& a, const Point2& b)
-{
-  return ComesFirst(a, b);
-}
 
 /// The edges of the pieces' rings that no other ring walks the other way: the region's boundary.
 /// Edges are keyed by their ends in (x, y) order; within a key, walks one way cancel walks the
@@ -43,7 +39,7 @@ std::vector<Edge> BoundaryEdges(const ClippedRings& pieces, std::size_t first, s
       const Point2& b = pieces.Vertices[v + 1 < end ? v + 1 : begin];
       if (a != b)
       {
-        const bool upward = PointsBefore(a, b);
+        const bool upward = ComesFirst(a, b);
         walks.push_back(upward ? Walk{ a, b, true } : Walk{ b, a, false });
       }
     }
@@ -52,9 +48,9 @@ std::vector<Edge> BoundaryEdges(const ClippedRings& pieces, std::size_t first, s
   {
     if (p.Low != q.Low)
     {
-      return PointsBefore(p.Low, q.Low);
+      return ComesFirst(p.Low, q.Low);
     }
-    return PointsBefore(p.High, q.High);
+    return ComesFirst(p.High, q.High);
   };
   std::sort(walks.begin(), walks.end(), keyBefore);
   std::vector<Edge> edges;
@@ -110,14 +106,14 @@ ClippedRings ChainedRings(std::vector<Edge> edges)
 {
   std::sort(edges.begin(),
     edges.end(),
-    [](const Edge& p, const Edge& q) { return PointsBefore(p.From, q.From); });
+    [](const Edge& p, const Edge& q) { return ComesFirst(p.From, q.From); });
   std::vector<char> used(edges.size(), 0);
   const auto waysOut = [&edges](const Point2& v)
   {
     return std::equal_range(edges.begin(),
       edges.end(),
       Edge{ v, v },
-      [](const Edge& p, const Edge& q) { return PointsBefore(p.From, q.From); });
+      [](const Edge& p, const Edge& q) { return ComesFirst(p.From, q.From); });
   };
   ClippedRings rings;
   for (std::size_t start = 0; start < edges.size(); ++start)
@@ -163,7 +159,7 @@ ClippedRings ChainedRings(std::vector<Edge> edges)
 void AppendLoops(const Point2* ring, std::size_t count, ClippedRings& out)
 {
   std::vector<Point2> sorted(ring, ring + count);
-  std::sort(sorted.begin(), sorted.end(), PointsBefore);
+  std::sort(sorted.begin(), sorted.end(), ComesFirst);
   if (std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end())
   {
     out.Vertices.insert(out.Vertices.end(), ring, ring + count); // simple already (most rings)
@@ -171,7 +167,7 @@ void AppendLoops(const Point2* ring, std::size_t count, ClippedRings& out)
     return;
   }
   std::vector<Point2> open;
-  std::map<Point2, std::size_t, bool (*)(const Point2&, const Point2&)> openAt(PointsBefore);
+  std::map<Point2, std::size_t, bool (*)(const Point2&, const Point2&)> openAt(ComesFirst);
   for (std::size_t i = 0; i <= count; ++i)
   {
     const Point2& p = ring[i < count ? i : 0];
@@ -193,66 +189,19 @@ void AppendLoops(const Point2* ring, std::size_t count, ClippedRings& out)
   }
 }
 
-/// 1 when p is strictly inside ring, -1 when strictly outside, 0 on its boundary (exact).
-int SideOfRing(const Point2* ring, std::size_t count, const Point2& p)
-{
-  bool inside = false;
-  for (std::size_t i = 0; i < count; ++i)
-  {
-    const Point2& a = ring[i];
-    const Point2& b = ring[i + 1 < count ? i + 1 : 0];
-    if (a.y == p.y && b.y == p.y)
-    {
-      if (std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x))
-      {
-        return 0; // on a horizontal edge
-      }
-      continue;
-    }
-    if ((a.y > p.y) == (b.y > p.y))
-    {
-      if (p == a || p == b)
-      {
-        return 0;
-      }
-      continue; // the edge does not cross the horizontal line through p (half-open in y)
-    }
-    const int side = orient2d(a, b, p);
-    if (side == 0)
-    {
-      return 0;
-    }
-    if ((side > 0) == (b.y > a.y))
-    {
-      inside = !inside; // the edge crosses the line right of p
-    }
-  }
-  return inside ? 1 : -1;
-}
-
-/// The anticlockwise orientation of a simple ring: the exact turn at its lowest vertex, or (for a
-/// ring flat there) the sign of its area.
-int Orientation(const Point2* ring, std::size_t count)
-{
-  const std::size_t o = LowestVertex(ring, count);
-  const int turn = orient2d(ring[o == 0 ? count - 1 : o - 1], ring[o], ring[(o + 1) % count]);
-  if (turn != 0)
-  {
-    return turn;
-  }
-  const double area = CompensatedPolygonArea(ring, count);
-  return area > 0.0 ? 1 : area < 0.0 ? -1 : 0;
-}
-
-/// Whether ring a lies inside ring b, by its first vertex not on b's boundary.
+/// Whether ring a lies inside ring b (exact), by its first vertex not on b's boundary.
 bool RingInside(const Point2* a, std::size_t countA, const Point2* b, std::size_t countB)
 {
   for (std::size_t i = 0; i < countA; ++i)
   {
-    const int side = SideOfRing(b, countB, a[i]);
-    if (side != 0)
+    bool onB = false;
+    for (std::size_t k = 0; k < countB && !onB; ++k)
     {
-      return side > 0;
+      onB = SegmentsIntersect(a[i], a[i], b[k], b[k + 1 < countB ? k + 1 : 0]);
+    }
+    if (!onB)
+    {
+      return RingWinding(b, countB, a[i]) % 2 != 0;
     }
   }
   return false; // (every vertex on b: a and b are one path)
@@ -285,13 +234,13 @@ RegionOutlines OutlinesOfPieces(const ClippedRings& pieces, std::size_t first, s
     // A ring of no area, or whose area's sign is not its turn at its lowest vertex, is no
     // boundary of the region: pieces that overlap (a window's slit some ulps wide, which
     // ShareBorderVertices closed) leave a bow tie of two opposite lobes there.
-    const int orientation = Orientation(ring(r), size(r));
+    const int turn = RingOrientation(ring(r), size(r)); // (0: flat there; the area tells)
     const double area = CompensatedPolygonArea(ring(r), size(r));
-    if (orientation != 0 && area != 0.0 && (area > 0.0) == (orientation > 0))
+    if (area != 0.0 && (turn == 0 || (turn > 0) == (area > 0.0)))
     {
       areas[r] = std::abs(area);
       boxes[r] = BoundsOf(ring(r), size(r));
-      (orientation > 0 ? outers : holes).push_back(r);
+      (area > 0.0 ? outers : holes).push_back(r);
     }
   }
   // Each hole with the smallest outer ring that holds it.
