@@ -341,14 +341,6 @@ std::size_t FanApex(const std::vector<Point2>& ring)
   return n;
 }
 
-/// y of the edge a-b at x (a.x < x < b.x or b.x < x < a.x) as the slabs take it (HeightAt, from
-/// its left end), within the edge's heights.
-double CrossingHeight(const Point2& a, const Point2& b, double x)
-{
-  const SweepEdge edge = a.x < b.x ? SweepEdge{ a, b, 0 } : SweepEdge{ b, a, 0 };
-  return std::clamp(HeightAt(edge, x), std::min(a.y, b.y), std::max(a.y, b.y));
-}
-
 /// An x-monotone anticlockwise ring cut by the vertical line at x (strictly inside its x range)
 /// into its parts left and right of it, both anticlockwise, x-monotone, sharing the cut:
 ///
@@ -663,6 +655,12 @@ ClippedRings MonotonePieces(const ClippedRings& rings)
 }
 
 } // namespace
+
+double CrossingHeight(const Point2& a, const Point2& b, double x)
+{
+  const SweepEdge edge = a.x < b.x ? SweepEdge{ a, b, 0 } : SweepEdge{ b, a, 0 };
+  return std::clamp(HeightAt(edge, x), std::min(a.y, b.y), std::max(a.y, b.y));
+}
 
 ClippedRings DisplayPieces(const ClippedRings& rings)
 {

@@ -61,6 +61,11 @@ namespace tessera
 /// about its first vertex.
 ClippedRings DisplayPieces(const ClippedRings& rings);
 
+/// y of the edge a-b at x (a.x < x < b.x or b.x < x < a.x), within the edge's heights, computed
+/// from its left end whichever way it runs: where a vertical cut meets it, the same bits from
+/// either ring that has the edge (as the slabs of DisplayPieces take it, and CutAtMeridian).
+double CrossingHeight(const Point2& a, const Point2& b, double x);
+
 /// A simple anticlockwise ring rotated to start at a vertex about which it is a fan (every
 /// triangle of that vertex and an edge not at it anticlockwise or flat, exactly), if the search
 /// finds one within 8 n + 64 orientation tests for n vertices; left as it is otherwise. Returns

@@ -1,5 +1,7 @@
 #include "meridian_cut.h"
 
+#include "display_pieces.h" // CrossingHeight
+
 #include <algorithm>
 #include <utility>
 #include <vector>
@@ -8,15 +10,6 @@ namespace tessera
 {
 namespace
 {
-
-/// Where edge a-b crosses x = at, computed from its lower end whichever way it runs.
-Point2 Crossing(const Point2& a, const Point2& b, double at)
-{
-  const bool aFirst = ComesFirst(a, b);
-  const Point2& p = aFirst ? a : b;
-  const Point2& q = aFirst ? b : a;
-  return { at, p.y + (at - p.x) / (q.x - p.x) * (q.y - p.y) };
-}
 
 /// Sutherland-Hodgman against one side of x = at (side -1: x <= at, +1: x >= at).
 void AppendSide(const Point2* ring, std::size_t count, double at, double side, ClippedRings& out)
@@ -33,7 +26,7 @@ void AppendSide(const Point2* ring, std::size_t count, double at, double side, C
     }
     if ((da < 0.0 && db > 0.0) || (da > 0.0 && db < 0.0))
     {
-      out.Vertices.push_back(Crossing(a, b, at));
+      out.Vertices.push_back({ at, CrossingHeight(a, b, at) }); // (the same from either side)
     }
   }
   if (out.Vertices.size() - start < 3)
