@@ -3,6 +3,7 @@
 #include "polygon_area.h"
 #include "polygon_validation.h" // RingOrientation, RingWinding, SegmentsIntersect
 #include "predicates.h"
+#include "shared_borders.h" // ShareBorderVertices
 
 #include <algorithm>
 #include <cstdint>
@@ -285,6 +286,12 @@ RegionOutlines OutlinesOfPieces(const ClippedRings& pieces, std::size_t first, s
     out.PolygonOffsets.push_back(out.Rings.RingOffsets.size() - 1);
   }
   return out;
+}
+
+RegionOutlines OutlinesOfTilePieces(const ClippedRings& pieces)
+{
+  const ClippedRings shared = ShareBorderVertices(pieces);
+  return OutlinesOfPieces(shared, 0, shared.RingOffsets.size() - 1);
 }
 
 void AppendOutlines(const RegionOutlines& more, RegionOutlines& all)

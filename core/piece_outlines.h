@@ -55,6 +55,11 @@ struct RegionOutlines
 /// test per hole and outer ring that holds its box.
 RegionOutlines OutlinesOfPieces(const ClippedRings& pieces, std::size_t first, std::size_t last);
 
+/// The outline of one tile's display pieces as DisplayPieces gives them: their borders made alike
+/// first (ShareBorderVertices: a piece's side can span a hole's end and its neighbour's, a
+/// T-junction), so that the stretches they share cancel.
+RegionOutlines OutlinesOfTilePieces(const ClippedRings& pieces);
+
 /// more's polygons appended to all's (offsets shifted), for outlines of several regions in one.
 void AppendOutlines(const RegionOutlines& more, RegionOutlines& all);
 

@@ -3,6 +3,7 @@
 #include "vtkAbstractArray.h"
 #include "vtkAlgorithm.h"
 #include "vtkAlgorithmOutput.h"
+#include "vtkCellArray.h"
 #include "vtkCompositeDataIterator.h"
 #include "vtkCompositeDataSet.h"
 #include "vtkDataArray.h"
@@ -444,6 +445,22 @@ void MakeCompositeOrPolyDataOutput(vtkCompositeDataSet* composite,
       outInfo->Set(vtkDataObject::DATA_OBJECT(), vtkSmartPointer<vtkPolyData>::New());
     }
   }
+}
+
+void AppendClosedLine(const tessera::Point2* ring,
+  std::size_t count,
+  int exponent,
+  vtkPoints* points,
+  vtkCellArray* lines)
+{
+  const vtkIdType first = points->GetNumberOfPoints();
+  lines->InsertNextCell(static_cast<vtkIdType>(count + 1));
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    lines->InsertCellPoint(points->InsertNextPoint(
+      std::ldexp(ring[k].x, -exponent), std::ldexp(ring[k].y, -exponent), 0.0));
+  }
+  lines->InsertCellPoint(first);
 }
 
 void ListNonEmptyFieldArraysFirst(vtkDataObject* data)

@@ -23,6 +23,7 @@
 class vtkAbstractArray;
 class vtkAlgorithm;
 class vtkAlgorithmOutput;
+class vtkCellArray;
 class vtkCompositeDataIterator;
 class vtkCompositeDataSet;
 class vtkDataSet;
@@ -183,6 +184,15 @@ void MakeCompositeOrPolyDataOutput(vtkCompositeDataSet* composite,
 /// empty (it counts the field's tuples by its first array): the lists of rejected or duplicate
 /// points, often empty, came first and hid vtkWindowClip's WindowArea and CoveredFraction.
 void ListNonEmptyFieldArraysFirst(vtkDataObject* data);
+
+/// Appends ring (count points, scaled by 2^-exponent) to points and, as one closed polyline (its
+/// first point repeated last, as VTK closes a line), to lines: how the filters write a tile's
+/// outline rings (core/piece_outlines.h).
+void AppendClosedLine(const tessera::Point2* ring,
+  std::size_t count,
+  int exponent,
+  vtkPoints* points,
+  vtkCellArray* lines);
 
 /// Polygon rings as flat arrays (ring r is Vertices[Offsets[r] .. Offsets[r+1])).
 struct Rings

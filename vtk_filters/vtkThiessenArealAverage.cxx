@@ -782,10 +782,6 @@ void WriteOutlines(const tessera::ClippedTilesLonLat& clipped,
   const tessera::RegionOutlines& outlines = clipped.Outlines;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  for (const auto& p : outlines.Rings.Vertices)
-  {
-    points->InsertNextPoint(p.x, p.y, 0.0);
-  }
   vtkNew<vtkCellArray> lines;
   GaugeColumns cells(stationIds);
   vtkNew<vtkIdTypeArray> polygonIds;
@@ -800,14 +796,12 @@ void WriteOutlines(const tessera::ClippedTilesLonLat& clipped,
     {
       for (std::size_t r = outlines.PolygonOffsets[p]; r < outlines.PolygonOffsets[p + 1]; ++r)
       {
-        const std::size_t begin = outlines.Rings.RingOffsets[r],
-                          end = outlines.Rings.RingOffsets[r + 1];
-        lines->InsertNextCell(static_cast<vtkIdType>(end - begin + 1));
-        for (std::size_t v = begin; v < end; ++v)
-        {
-          lines->InsertCellPoint(static_cast<vtkIdType>(v));
-        }
-        lines->InsertCellPoint(static_cast<vtkIdType>(begin));
+        const std::size_t begin = outlines.Rings.RingOffsets[r];
+        tessera_vtk::AppendClosedLine(&outlines.Rings.Vertices[begin],
+          outlines.Rings.RingOffsets[r + 1] - begin,
+          0,
+          points,
+          lines);
         cells.Append(g, weight.Weight, weight.AreaM2, values[static_cast<std::size_t>(g)]);
         polygonIds->InsertNextValue(static_cast<vtkIdType>(p));
         holes->InsertNextValue(r == outlines.PolygonOffsets[p] ? 0 : 1);

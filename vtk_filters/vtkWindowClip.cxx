@@ -30,7 +30,6 @@
 #include "nested_rings.h"
 #include "piece_outlines.h"
 #include "polygon_area.h"
-#include "shared_borders.h"
 #include "window.h"
 
 #include <algorithm>
@@ -85,32 +84,24 @@ public:
   }
 
   /// Tile c's pieces (scaled by 2^exponent) joined and added as its rings, with its clipped area
-  /// and area fraction. Display pieces meet at T-junctions (a piece's side spans a hole's end and
-  /// its neighbour's): their borders are made alike first, so that shared stretches cancel.
+  /// and area fraction (OutlinesOfTilePieces).
   void Append(const tessera::ClippedRings& pieces,
     vtkIdType c,
     int exponent,
     double clippedArea,
     double fraction)
   {
-    const tessera::ClippedRings shared = tessera::ShareBorderVertices(pieces);
-    const tessera::RegionOutlines outlines =
-      tessera::OutlinesOfPieces(shared, 0, shared.RingOffsets.size() - 1);
+    const tessera::RegionOutlines outlines = tessera::OutlinesOfTilePieces(pieces);
     for (std::size_t p = 0; p + 1 < outlines.PolygonOffsets.size(); ++p)
     {
       for (std::size_t r = outlines.PolygonOffsets[p]; r < outlines.PolygonOffsets[p + 1]; ++r)
       {
-        const std::size_t begin = outlines.Rings.RingOffsets[r],
-                          end = outlines.Rings.RingOffsets[r + 1];
-        const vtkIdType first = this->Points->GetNumberOfPoints();
-        this->Lines->InsertNextCell(static_cast<vtkIdType>(end - begin + 1));
-        for (std::size_t k = begin; k < end; ++k)
-        {
-          const tessera::Point2& a = outlines.Rings.Vertices[k];
-          this->Lines->InsertCellPoint(this->Points->InsertNextPoint(
-            std::ldexp(a.x, -exponent), std::ldexp(a.y, -exponent), 0.0));
-        }
-        this->Lines->InsertCellPoint(first);
+        const std::size_t begin = outlines.Rings.RingOffsets[r];
+        tessera_vtk::AppendClosedLine(&outlines.Rings.Vertices[begin],
+          outlines.Rings.RingOffsets[r + 1] - begin,
+          exponent,
+          this->Points,
+          this->Lines);
         this->Output->GetCellData()->CopyData(
           this->TileCellData, c, this->Lines->GetNumberOfCells() - 1);
         this->TileIds->InsertNextValue(c);
