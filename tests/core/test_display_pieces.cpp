@@ -29,6 +29,7 @@ using tessera_test::InRing;
 using tessera_test::MakeCatchment;
 using tessera_test::RandomInscribedTile;
 using tessera_test::Rectangle;
+using tessera_test::RingOf;
 using tessera_test::RingsHolding;
 using tessera_test::SampleGrid;
 
@@ -49,9 +50,7 @@ double ExpectSimplePieces(const ClippedRings& pieces, const std::string& where)
   double total = 0.0;
   for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
   {
-    const std::vector<Point2> ring(
-      pieces.Vertices.begin() + static_cast<std::ptrdiff_t>(pieces.RingOffsets[r]),
-      pieces.Vertices.begin() + static_cast<std::ptrdiff_t>(pieces.RingOffsets[r + 1]));
+    const std::vector<Point2> ring = RingOf(pieces, r);
     EXPECT_NO_THROW(ValidateRings({ 0, ring.size() }, ring))
       << where << "piece " << r << " is not simple";
     const double area = CompensatedPolygonArea(ring.data(), ring.size());

@@ -7,6 +7,8 @@
 #include "polygon_validation.h"
 #include "predicates.h"
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +17,7 @@
 #include <vector>
 
 using namespace tessera;
+using tessera_test::RingOf;
 
 namespace
 {
@@ -141,10 +144,7 @@ TEST(FanDiagonals, PiecesOfTheArealAverageAreFansThatAddUpToTheirTiles)
         double sum = 0.0;
         for (std::size_t r = tiles.TilePieceOffsets[k]; r < tiles.TilePieceOffsets[k + 1]; ++r)
         {
-          const std::vector<Point2> piece(tiles.Pieces.Vertices.begin() +
-              static_cast<std::ptrdiff_t>(tiles.Pieces.RingOffsets[r]),
-            tiles.Pieces.Vertices.begin() +
-              static_cast<std::ptrdiff_t>(tiles.Pieces.RingOffsets[r + 1]));
+          const std::vector<Point2> piece = RingOf(tiles.Pieces, r);
           EXPECT_TRUE(IsFan(piece)) << "tile " << k << " piece " << r;
           sum += tiles.PieceAreasM2[r];
         }

@@ -29,6 +29,7 @@ using tessera_test::InRing;
 using tessera_test::MakeCatchment;
 using tessera_test::RandomInscribedTile;
 using tessera_test::Rectangle;
+using tessera_test::RingOf;
 using tessera_test::RingsHolding;
 using tessera_test::SampleGrid;
 
@@ -64,10 +65,7 @@ double SimpleRingsArea(const RegionOutlines& outlines, const std::string& where)
   double area = 0.0;
   for (std::size_t r = 0; r + 1 < outlines.Rings.RingOffsets.size(); ++r)
   {
-    const std::vector<Point2> ring(
-      outlines.Rings.Vertices.begin() + static_cast<std::ptrdiff_t>(outlines.Rings.RingOffsets[r]),
-      outlines.Rings.Vertices.begin() +
-        static_cast<std::ptrdiff_t>(outlines.Rings.RingOffsets[r + 1]));
+    const std::vector<Point2> ring = RingOf(outlines.Rings, r);
     EXPECT_NO_THROW(ValidateRings({ 0, ring.size() }, ring)) << where << "ring " << r;
     area += RingArea(outlines.Rings, r);
   }
@@ -92,9 +90,7 @@ RegionOutlines ExpectOutlineOfTheRegion(const Catchment& catchment, const std::v
   {
     for (std::size_t r = outlines.PolygonOffsets[k]; r < outlines.PolygonOffsets[k + 1]; ++r)
     {
-      const std::vector<Point2> ring(
-        rings.Vertices.begin() + static_cast<std::ptrdiff_t>(rings.RingOffsets[r]),
-        rings.Vertices.begin() + static_cast<std::ptrdiff_t>(rings.RingOffsets[r + 1]));
+      const std::vector<Point2> ring = RingOf(rings, r);
       EXPECT_NO_THROW(ValidateRings({ 0, ring.size() }, ring)) << "ring " << r << " is not simple";
       const double area = RingArea(rings, r);
       if (r == outlines.PolygonOffsets[k])
@@ -326,10 +322,7 @@ TEST(PieceOutlines, OutlinesOfLonLatTilesShareTheirBordersAndFillTheCatchment)
       }
       for (std::size_t r = firstRing; r < endRing; ++r)
       {
-        const std::vector<Point2> one(outlines.Rings.Vertices.begin() +
-            static_cast<std::ptrdiff_t>(outlines.Rings.RingOffsets[r]),
-          outlines.Rings.Vertices.begin() +
-            static_cast<std::ptrdiff_t>(outlines.Rings.RingOffsets[r + 1]));
+        const std::vector<Point2> one = RingOf(outlines.Rings, r);
         EXPECT_NO_THROW(ValidateRings({ 0, one.size() }, one)) << "tile " << k << " ring " << r;
         outlineArea += RingArea(outlines.Rings, r);
         for (std::size_t v = 0; v < one.size(); ++v)

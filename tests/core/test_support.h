@@ -333,4 +333,11 @@ inline Rings LakeOrBay(bool withLake)
   return Rings({ withLake ? square : bay, withLake ? lake : hole });
 }
 
+/// Ring r of rings, as its own vector.
+inline std::vector<tessera::Point2> RingOf(const tessera::ClippedRings& rings, std::size_t r)
+{
+  return { rings.Vertices.begin() + static_cast<std::ptrdiff_t>(rings.RingOffsets[r]),
+    rings.Vertices.begin() + static_cast<std::ptrdiff_t>(rings.RingOffsets[r + 1]) };
+}
+
 } // namespace tessera_test
