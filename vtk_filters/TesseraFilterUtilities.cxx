@@ -499,9 +499,14 @@ void ProgressOrStop(vtkAlgorithm* algorithm, double fraction)
   }
 }
 
-bool IsStop(const std::exception& e)
+int ErrorOrStop(vtkAlgorithm* filter, const std::exception& e)
 {
-  return dynamic_cast<const tessera::Cancelled*>(&e) != nullptr;
+  if (dynamic_cast<const tessera::Cancelled*>(&e) != nullptr)
+  {
+    return 1;
+  }
+  vtkErrorWithObjectMacro(filter, << e.what());
+  return 0;
 }
 
 bool IsClosedLine(vtkDataSet* data, vtkIdList* ids)

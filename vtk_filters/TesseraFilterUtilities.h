@@ -54,10 +54,10 @@ std::function<bool(double)> StageProgress(vtkAlgorithm* algorithm, double from, 
 /// set: between stages of a run, where nothing is left half made.
 void ProgressOrStop(vtkAlgorithm* algorithm, double fraction);
 
-/// Whether an exception caught in a RequestData is a stop that a progress observer asked for
-/// (tessera::Cancelled): the outputs are emptied as for an error, but no error is reported and
-/// RequestData returns 1.
-bool IsStop(const std::exception& e);
+/// What a RequestData's catch block does with an exception once it has emptied its outputs:
+/// reports e.what() as filter's error and returns 0, or, for a stop that a progress observer
+/// asked for (tessera::Cancelled), reports nothing and returns 1. Returns RequestData's result.
+int ErrorOrStop(vtkAlgorithm* filter, const std::exception& e);
 
 /// The data of an upstream connection, brought up to date (for a RequestInformation that needs
 /// the input's data: the areal average's time steps, the ridge grouping's image extent).

@@ -581,14 +581,9 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
   catch (const std::exception& e)
   {
     // (a stop that a progress observer asked for empties the outputs too, without an error)
-    const bool stop = tessera_vtk::IsStop(e);
-    if (!stop)
-    {
-      vtkErrorMacro(<< e.what());
-    }
     tilesOutput->Initialize();
     graphOutput->Initialize();
-    return stop ? 1 : 0;
+    return tessera_vtk::ErrorOrStop(this, e);
   }
 }
 

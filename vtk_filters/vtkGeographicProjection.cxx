@@ -1025,9 +1025,8 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< e.what());
     output->Initialize();
-    return 0;
+    return tessera_vtk::ErrorOrStop(this, e);
   }
 }
 

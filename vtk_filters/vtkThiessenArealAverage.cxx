@@ -1219,13 +1219,8 @@ int vtkThiessenArealAverage::RequestData(vtkInformation* request,
   catch (const std::exception& e)
   {
     // (a stop that a progress observer asked for empties the outputs too, without an error)
-    const bool stop = tessera_vtk::IsStop(e);
-    if (!stop)
-    {
-      vtkErrorMacro(<< e.what());
-    }
     this->DiscardResults(outputVector);
-    return stop ? 1 : 0;
+    return tessera_vtk::ErrorOrStop(this, e);
   }
 }
 
