@@ -86,8 +86,13 @@ CleanRings DropRepeats(const std::vector<std::size_t>& ringOffsets,
     const std::size_t kept = clean.Vertices.size() - clean.RingOffsets.back();
     if (kept < 3)
     {
-      throw RingError("ring " + std::to_string(r) + " has fewer than 3 distinct vertices (" +
-          std::to_string(kept) + " after dropping repeated consecutive vertices)",
+      // (a ring of one vertex keeps none: that vertex repeats itself)
+      const std::size_t given = end - begin;
+      throw RingError("ring " + std::to_string(r) + " has " +
+          (given < 3 ? std::to_string(given) + (given == 1 ? " vertex" : " vertices") +
+                " (a polygon needs 3 or more)"
+                     : "fewer than 3 distinct vertices (" + std::to_string(kept) +
+                " after dropping repeated consecutive vertices)"),
         { r });
     }
     clean.RingOffsets.push_back(clean.Vertices.size());

@@ -25,6 +25,7 @@
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkStringArray.h"
+#include "vtkUnstructuredGrid.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkPointData.h"
@@ -121,24 +122,50 @@ double Above(double value, double pad)
   return padded > value ? padded : std::nextafter(value, HUGE_VAL);
 }
 
-[[noreturn]] void ThrowWindowTooLarge(double xmin, double xmax, double ymin, double ymax)
+/// "x xmin .. xmax, y ymin .. ymax"
+std::string BoxText(const tessera::Box2& box)
 {
-  throw tessera::InputError("the window (x " + tessera::NumberText(xmin) + " .. " +
-    tessera::NumberText(xmax) + ", y " + tessera::NumberText(ymin) + " .. " +
-    tessera::NumberText(ymax) +
-    ") is too large: its area overflows a double; set a smaller Padding or WindowBounds");
+  return "x " + tessera::NumberText(box.XMin) + " .. " + tessera::NumberText(box.XMax) + ", y " +
+    tessera::NumberText(box.YMin) + " .. " + tessera::NumberText(box.YMax);
+}
+
+/// advice: what to change ("set smaller WindowBounds ...").
+[[noreturn]] void ThrowWindowTooLarge(const tessera::Box2& window, const std::string& advice)
+{
+  throw tessera::InputError(
+    "the window (" + BoxText(window) + ") is too large: its area overflows a double; " + advice);
 }
 
 // The window, unless areas are needed and it is so large that they overflow (a Padding of 1e299
 // gave NaN areas).
-tessera::Window Representable(tessera::Window window, bool needArea)
+tessera::Window Representable(tessera::Window window, bool needArea, const std::string& advice)
 {
   if (needArea && !std::isfinite(window.Area()))
   {
-    const tessera::Box2 box = tessera::BoundsOf(window.Vertices().data(), window.Vertices().size());
-    ThrowWindowTooLarge(box.XMin, box.XMax, box.YMin, box.YMax);
+    ThrowWindowTooLarge(
+      tessera::BoundsOf(window.Vertices().data(), window.Vertices().size()), advice);
   }
   return window;
+}
+
+/// For tiles of points whose bounding box (box) has an area beyond the doubles: no padding
+/// helps, and the message says so (it advised a smaller Padding where Padding was 0).
+void CheckPointsSpan(const tessera::Box2& box)
+{
+  if (!std::isfinite((box.XMax - box.XMin) * (box.YMax - box.YMin)))
+  {
+    throw tessera::InputError("the points span " + BoxText(box) +
+      ": the area of a window that holds them overflows a double, whatever the Padding, so their "
+      "tiles' areas would too; scale the points down");
+  }
+}
+
+const char* const SmallerBounds = "set smaller WindowBounds or window constraints";
+
+std::string PaddingAdvice(double padding)
+{
+  return "it is the points' bounding box padded by " + tessera::NumberText(padding) +
+    " of its larger side (Padding): set a smaller Padding, or WindowBounds";
 }
 
 /// "xmin, xmax, ymin, ymax" of WindowBounds, each as the user gave it.
@@ -288,7 +315,8 @@ tessera::Window ChooseWindow(const double bounds[4],
     {
       return Representable(
         tessera::Window::Rectangle(bounds[0], bounds[1], bounds[2], bounds[3], "the WindowBounds"),
-        needArea);
+        needArea,
+        SmallerBounds);
     }
     if (haveBounds)
     {
@@ -297,7 +325,7 @@ tessera::Window ChooseWindow(const double bounds[4],
     }
     try
     {
-      return Representable(tessera::Window(halfPlanes, naming), needArea);
+      return Representable(tessera::Window(halfPlanes, naming), needArea, SmallerBounds);
     }
     catch (const tessera::UnboundedWindowError& error)
     {
@@ -323,6 +351,10 @@ tessera::Window ChooseWindow(const double bounds[4],
     return tessera::Window::Rectangle(-1.0, 1.0, -1.0, 1.0);
   }
   const tessera::Box2 box = tessera::BoundsOf(points.data(), points.size());
+  if (needArea)
+  {
+    CheckPointsSpan(box);
+  }
   const double xmin = box.XMin, xmax = box.XMax, ymin = box.YMin, ymax = box.YMax;
   const double side = box.LargerSide();
   // Identical points: a unit square around them (a padding of a zero side would be empty).
@@ -347,7 +379,10 @@ tessera::Window ChooseWindow(const double bounds[4],
         tessera::NumberText(ymin) + " .. " + tessera::NumberText(ymax) +
         "): no window of doubles holds them strictly inside; scale the points");
     }
-    ThrowWindowTooLarge(lower[0], upper[0], lower[1], upper[1]); // before Rectangle refuses it
+    throw tessera::InputError("the automatic window, the points' bounding box (" + BoxText(box) +
+      ") padded by " + tessera::NumberText(padding) +
+      " of its larger side (Padding), reaches beyond the largest double; set a smaller Padding, "
+      "or WindowBounds"); // (before Rectangle refuses it)
   }
   return Representable(tessera::Window::Rectangle(lower[0],
                          upper[0],
@@ -355,7 +390,8 @@ tessera::Window ChooseWindow(const double bounds[4],
                          upper[1],
                          "the automatic window's",
                          " (the points' bounding box, padded)"),
-    needArea);
+    needArea,
+    PaddingAdvice(padding));
 }
 
 void CheckChoice(const char* property, int value, const std::vector<const char*>& names)
@@ -992,6 +1028,70 @@ void CheckAttributeLengths(vtkDataSet* data, const std::string& what)
   }
 }
 
+namespace
+{
+/// The first point id of cells outside 0 .. points - 1, as (cell, id), or (-1, 0) when every id
+/// is a point's. The connectivity's range answers for most inputs without a walk over the cells.
+std::pair<vtkIdType, vtkIdType> FirstMissingPoint(vtkCellArray* cells, vtkIdType points)
+{
+  vtkDataArray* connectivity = cells->GetConnectivityArray();
+  if (connectivity->GetNumberOfValues() == 0)
+  {
+    return { -1, 0 };
+  }
+  double range[2];
+  connectivity->GetRange(range, 0);
+  if (range[0] >= 0.0 && range[1] < static_cast<double>(points))
+  {
+    return { -1, 0 };
+  }
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
+  {
+    cells->GetCellAtId(c, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      if (ids->GetId(k) < 0 || ids->GetId(k) >= points)
+      {
+        return { c, ids->GetId(k) };
+      }
+    }
+  }
+  return { -1, 0 };
+}
+} // namespace
+
+void CheckCellPointIds(vtkDataSet* data, const std::string& what)
+{
+  std::vector<vtkCellArray*> kinds; // in the order of their cells' ids
+  if (auto* poly = vtkPolyData::SafeDownCast(data))
+  {
+    kinds = { poly->GetVerts(), poly->GetLines(), poly->GetPolys(), poly->GetStrips() };
+  }
+  else if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data))
+  {
+    kinds = { grid->GetCells() };
+  }
+  const vtkIdType points = data->GetNumberOfPoints();
+  vtkIdType before = 0; // cells of the kinds before this one
+  for (vtkCellArray* cells : kinds)
+  {
+    if (!cells)
+    {
+      continue;
+    }
+    const auto [cell, id] = FirstMissingPoint(cells, points);
+    if (cell >= 0)
+    {
+      throw tessera::InputError(what + ": cell " + std::to_string(before + cell) +
+        " refers to point " + std::to_string(id) + ", but " +
+        (points == 0 ? std::string("there are no points")
+                     : "the points are 0 to " + std::to_string(points - 1)));
+    }
+    before += cells->GetNumberOfCells();
+  }
+}
+
 void RequestWholeInputs(vtkInformationVector** inputVector, int firstPort, int lastPort)
 {
   for (int port = firstPort; port <= lastPort; ++port)
@@ -1273,6 +1373,7 @@ Rings ReadPolygonRings(vtkDataObject* data, const char* what, std::vector<std::s
   Rings rings;
   if (auto* poly = vtkPolyData::SafeDownCast(data))
   {
+    CheckCellPointIds(poly, std::string("the ") + what);
     AppendPolygonRings(poly, std::string(), rings);
     rings.Blocks.resize(rings.Offsets.size() - 1, -1);
   }
@@ -1286,6 +1387,7 @@ Rings ReadPolygonRings(vtkDataObject* data, const char* what, std::vector<std::s
       {
         const std::int64_t flat = iter->GetCurrentFlatIndex();
         const std::string label = labels.Of(iter);
+        CheckCellPointIds(block, label + " of the " + what);
         AppendPolygonRings(block, label + " ", rings);
         rings.Blocks.resize(rings.Offsets.size() - 1, flat);
         rings.BlockNames.emplace(flat, label);

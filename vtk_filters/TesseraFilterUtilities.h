@@ -82,6 +82,14 @@ private:
 /// by point and cell id, and a short one was read past its end (a crash, or garbage in the tiles).
 void CheckAttributeLengths(vtkDataSet* data, const std::string& what);
 
+/// Throws tessera::InputError (naming `what`, the cell and the id) when a cell of data refers to
+/// a point it does not have: an id below 0 or not below its number of points, as in a polydata
+/// with cells and no points. VTK reads such an id past the end of the points without a check: a
+/// window triangle with point id 99 of 4 clipped to a wrong area, and cells without points
+/// crashed. Checks the explicit cells of vtkPolyData and vtkUnstructuredGrid (other point sets'
+/// cells are implicit in their dimensions).
+void CheckCellPointIds(vtkDataSet* data, const std::string& what);
+
 /// An array as messages name it: "'Area'", or "without a name".
 std::string ArrayLabel(vtkAbstractArray* array);
 

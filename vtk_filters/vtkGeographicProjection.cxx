@@ -592,6 +592,7 @@ std::vector<Piece> PiecesOf(vtkDataObject* input, vtkDataObject* output)
         ", not a point set or a composite of point sets");
     }
     tessera_vtk::CheckAttributeLengths(in, "the input");
+    tessera_vtk::CheckCellPointIds(in, "the input");
     return { Piece{ in, out, std::string() } };
   }
   auto* compositeOutput = vtkCompositeDataSet::SafeDownCast(output);
@@ -611,6 +612,7 @@ std::vector<Piece> PiecesOf(vtkDataObject* input, vtkDataObject* output)
       throw tessera::InputError(label + " is a " + leaf->GetClassName() + ", not a point set");
     }
     tessera_vtk::CheckAttributeLengths(in, label);
+    tessera_vtk::CheckCellPointIds(in, label);
     vtkSmartPointer<vtkPointSet> out;
     out.TakeReference(in->NewInstance());
     compositeOutput->SetDataSet(it, out);

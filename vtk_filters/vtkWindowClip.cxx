@@ -247,6 +247,10 @@ void CheckBlockProjection(vtkPointSet* tiles, vtkDataObject* window, const std::
 /// large is an error where a tile's area overflows).
 int UpScaleExponent(const std::vector<tessera::Point2>& vertices)
 {
+  if (vertices.empty())
+  {
+    return 0; // (rings without vertices: the window's own check names them)
+  }
   const tessera::Box2 box = tessera::BoundsOf(vertices.data(), vertices.size());
   const double reach = std::max(
     { std::fabs(box.XMin), std::fabs(box.XMax), std::fabs(box.YMin), std::fabs(box.YMax) });
@@ -351,6 +355,7 @@ void ClipBlock(vtkPointSet* tiles,
 {
   // (the tiles' arrays are copied by cell id: a short one was read past its end)
   tessera_vtk::CheckAttributeLengths(tiles, "the tiles (input 0)");
+  tessera_vtk::CheckCellPointIds(tiles, "the tiles (input 0)");
   const std::string pointDataWarning = PointDataWarning(tiles);
   if (!pointDataWarning.empty())
   {

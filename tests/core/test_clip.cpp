@@ -1446,6 +1446,13 @@ TEST(Clip, RejectsBadCatchmentsNamingRingsAndSegments)
   Rings flat;
   flat.Add({ { 0, 0 }, { 1, 1 }, { 1, 1 }, { 0, 0 } });
   EXPECT_NE(build(flat).find("ring 0 has fewer than 3 distinct vertices"), std::string::npos);
+  Rings point; // (a ring of one vertex: that vertex repeats itself, and none was left)
+  point.Add({ { 0.5, 0.5 } });
+  EXPECT_EQ(build(point), "ring 0 has 1 vertex (a polygon needs 3 or more)");
+  Rings emptyAfterARectangle;
+  emptyAfterARectangle.Add(Rectangle(0, 0, 1, 1));
+  emptyAfterARectangle.Add({});
+  EXPECT_EQ(build(emptyAfterARectangle), "ring 1 has 0 vertices (a polygon needs 3 or more)");
 
   Rings collinear;
   collinear.Add({ { 0, 0 }, { 1, 1 }, { 2, 2 } });

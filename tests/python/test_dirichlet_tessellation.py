@@ -559,8 +559,16 @@ def test_automatic_window_keeps_every_point_and_bad_windows_are_named():
             # (an infinite one was "rectangle window: xmin = -inf is not finite", not naming WindowBounds)
             ("infinite bound", lambda f: f.SetWindowBounds(0, 1, -math.inf, 1), "WindowBounds ymin is -inf"),
             ("infinite padding", lambda f: f.SetPadding(math.inf), "Padding inf is not a finite number >= 0"),
-            ("huge padding", lambda f: f.SetPadding(1e300), "area overflows"),
-            ("huge bounds", lambda f: f.SetWindowBounds(-1e200, 1e200, -1e200, 1e200), "area overflows")]:
+            ("huge padding", lambda f: f.SetPadding(1e300),
+             "area overflows a double; it is the points' bounding box padded by 1e+300 of its larger side (Padding): set a smaller Padding"),
+            ("huge bounds", lambda f: f.SetWindowBounds(-1e200, 1e200, -1e200, 1e200),
+             "area overflows a double; set smaller WindowBounds or window constraints"),
+            # Points whose own span overflows: no Padding helps (the advice was a smaller Padding,
+            # where Padding was 0), nor does a window printed as -inf .. inf.
+            ("points 1e300 apart", lambda f: (f.SetPadding(0), f.SetInputData(make_points([(-1e300, 0), (1e300, 1), (0, 1e300)]))),
+             "the points span x -1e+300 .. 1e+300, y 0 .. 1e+300: the area of a window that holds them overflows a double, whatever the Padding"),
+            ("padding past the doubles", lambda f: (f.SetPadding(1e200), f.SetInputData(make_points([(0, 0), (1e150, 1e150)]))),
+             "the automatic window, the points' bounding box (x 0 .. 1e+150, y 0 .. 1e+150) padded by 1e+200 of its larger side (Padding), reaches beyond the largest double")]:
         f = vtkDirichletTessellation()
         messages = messages_of(f)
         warnings = messages_of(f, vtkCommand.WarningEvent)

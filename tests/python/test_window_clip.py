@@ -912,6 +912,62 @@ def test_short_arrays_and_windows_beyond_the_doubles_are_named():
                 f"({field_value(output, 'WindowArea')})")
 
 
+def test_cells_that_refer_to_missing_points_are_named():
+    """From a hostile-input trial: VTK reads a cell's point ids without a check. A window triangle
+    with point id 99 of 4 clipped to a wrong WindowArea (0.68 for 0.64), a projection densified a
+    line to a missing point into 1882 points, and cells without any points crashed Window Clip and
+    Geographic Projection; a polygon cell of no points crashed Window Clip. Each is an error naming
+    the input, the cell and the id."""
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData, vtkUnstructuredGrid
+
+    def cells(xy, polys=(), lines=()):
+        """vtkPolyData of points xy with polygon and polyline cells given as lists of point ids."""
+        data = vtkPolyData()
+        points = vtkPoints()
+        for x, y in xy:
+            points.InsertNextPoint(x, y, 0.0)
+        data.SetPoints(points)
+        for ids_of_cells, setter in ((lines, data.SetLines), (polys, data.SetPolys)):
+            array = vtkCellArray()
+            for ids in ids_of_cells:
+                array.InsertNextCell(len(ids), ids)
+            setter(array)
+        return data
+
+    square = [(0.1, 0.1), (0.9, 0.1), (0.9, 0.9), (0.1, 0.9)]
+    tiles = polygon([[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]])
+    grid = vtkUnstructuredGrid()
+    grid.SetPoints(tiles.GetPoints())
+    grid.InsertNextCell(7, 4, [0, 1, 2, 3])
+    grid.InsertNextCell(7, 3, [0, 1, -1])
+    cases = [("window id 99", tiles, cells(square, polys=[[0, 1, 2, 3], [0, 1, 99]]),
+              "the window (input 1): cell 1 refers to point 99, but the points are 0 to 3"),
+             ("window without points", tiles, cells([], polys=[[0, 1, 2]]),
+              "the window (input 1): cell 0 refers to point 0, but there are no points"),
+             ("tiles id 100000", cells(square, polys=[[0, 1, 2, 3], [0, 1, 100000]]), polygon([square]),
+              "the tiles (input 0): cell 1 refers to point 100000, but the points are 0 to 3"),
+             ("tiles in a grid, id -1", grid, polygon([square]),
+              "the tiles (input 0): cell 1 refers to point -1, but the points are 0 to 3"),
+             ("a window polygon of no points", tiles, cells([], polys=[[]]),
+              "ring 0 has 0 vertices (a polygon needs 3 or more) (ring 0 is cell 0 of the window (input 1))")]
+    for name, tiles_in, window, expected in cases:
+        output, errors, _ = clip_by(tiles_in, window)
+        assert_that(len(errors) == 1 and expected in errors[0] and output.GetNumberOfCells() == 0,
+                    f"{name}: an error saying '{expected}': {errors}")
+    # (lines come before polygons in a polydata's cell ids)
+    for name, data, expected in [("line to point 50", cells(square, polys=[[0, 1, 2, 3]], lines=[[0, 50]]),
+                                  "the input: cell 0 refers to point 50, but the points are 0 to 3"),
+                                 ("no points", cells([], polys=[[0, 1, 2]]),
+                                  "the input: cell 0 refers to point 0, but there are no points")]:
+        f = vtkGeographicProjection()
+        errors = messages_of(f)
+        f.SetInputData(data)
+        f.Update()
+        assert_that(len(errors) == 1 and expected in errors[0] and f.GetOutput().GetNumberOfPoints() == 0,
+                    f"projection, {name}: {errors}")
+
+
 def test_a_window_in_a_vertical_plane_is_said_to_be_read_in_x_and_y():
     # From a user trial: a window drawn in the x-z plane was refused for rings of "fewer than 3
     # distinct vertices", without a word of why.
@@ -1034,4 +1090,5 @@ if __name__ == "__main__":
          test_the_field_data_says_how_much_of_the_window_the_tiles_cover,
          test_each_block_of_tiles_gives_its_share_of_the_window,
          test_a_shapefiles_polygons_read_by_gdal_are_clipped_as_tiles,
-         test_short_arrays_and_windows_beyond_the_doubles_are_named])
+         test_short_arrays_and_windows_beyond_the_doubles_are_named,
+         test_cells_that_refer_to_missing_points_are_named])
