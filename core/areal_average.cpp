@@ -1070,6 +1070,23 @@ void CheckEdgeReading(const Point2& a, const Point2& b, std::size_t ring, std::s
   }
 }
 
+/// A segment along a parallel from longitude -180 to 180 is no segment as the edges are read (the
+/// shorter way round: one meridian), but the whole parallel as written: a band of latitude round
+/// the globe (-180..180 by -60..60) was said to have "fewer than 3 distinct vertices". Refused,
+/// saying why (at a pole the two ends are one point either way, and the pole's own check speaks).
+void CheckEdgeRoundTheGlobe(const Point2& a, const Point2& b, std::size_t ring, std::size_t segment)
+{
+  if (std::abs(b.x - a.x) >= 360.0 && a.y == b.y && std::abs(a.y) < 90.0)
+  {
+    throw InputError("catchment ring " + std::to_string(ring) + " segment " +
+      std::to_string(segment) + " runs along latitude " + NumberText(a.y) + " from longitude " +
+      NumberText(a.x) + " to " + NumberText(b.x) +
+      ": once round the globe as written, but no segment as the edges are read (the shorter way "
+      "round: the two are one meridian). A catchment that goes all the way round the globe (a "
+      "band of latitude) is not taken: it cannot be laid flat in one projection");
+  }
+}
+
 /// Throws InputError naming the ring and vertex of a finite catchment vertex out of range (NaN
 /// and infinite ones are left to ValidateRings, which names them so), or the ring and segment of
 /// an edge that can be read two ways (CheckEdgeReading).
@@ -1091,6 +1108,7 @@ void CheckCatchmentLonLat(const std::vector<std::size_t>& offsets,
     for (std::size_t k = begin; k < end; ++k)
     {
       CheckEdgeReading(lonlat[k], lonlat[k + 1 < end ? k + 1 : begin], r, k - begin);
+      CheckEdgeRoundTheGlobe(lonlat[k], lonlat[k + 1 < end ? k + 1 : begin], r, k - begin);
     }
   }
 }

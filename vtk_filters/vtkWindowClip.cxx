@@ -457,9 +457,17 @@ void ClipBlock(vtkPointSet* tiles,
       [](const tessera::Point2& p) { return std::isfinite(p.x) && std::isfinite(p.y); });
     if (finiteCorners && !std::isfinite(ownArea)) // (a NaN corner is named by the clip below)
     {
-      throw tessera::InputError("cell " + std::to_string(c) +
-        " of input 0: its area overflows (coordinates of some 1e154 or more); scale the tiles "
-        "and the window down");
+      // (a window of tiny coordinates scales the tiles up with it: a unit tile in a window of
+      // 1e-300 was said to have "coordinates of some 1e154 or more")
+      throw tessera::InputError("cell " + std::to_string(c) + " of input 0: its area overflows" +
+        (exponent > 0
+            ? " at the window's scale: the window (input 1) is so small (coordinates below 2^-128) "
+              "that tiles and window are clipped scaled up by 2^" +
+              std::to_string(exponent) +
+              ", and this tile is then beyond the doubles (some 1e154 times the window's size "
+              "or more); clip tiles of the window's size"
+            : std::string(" (coordinates of some 1e154 or more); scale the tiles and the window "
+                          "down")));
     }
     rings.RingOffsets.assign(1, 0);
     rings.Vertices.clear();

@@ -685,6 +685,17 @@ TEST(ArealAverage, ACatchmentRoundAPoleIsRefusedByName)
   EXPECT_NE(south.find("catchment ring 0 goes round the South Pole"), std::string::npos) << south;
   const std::string closed = errorOf(parallel, gauges);
   EXPECT_NE(closed.find("goes round the North Pole"), std::string::npos) << closed;
+  // A band of latitude written as a box from -180 to 180: read the shorter way its parallels are
+  // no segments (it was said to have "fewer than 3 distinct vertices").
+  const std::vector<Point2> band{
+    { -180.0, -60.0 }, { 180.0, -60.0 }, { 180.0, 60.0 }, { -180.0, 60.0 }
+  };
+  const std::string round = errorOf(band, { { 0.0, 0.0 }, { 90.0, 10.0 } });
+  EXPECT_NE(round.find("catchment ring 0 segment 0 runs along latitude -60 from longitude -180 to "
+                       "180: once round the globe as written, but no segment as the edges are "
+                       "read"),
+    std::string::npos)
+    << round;
   // A triangle with a vertex at the pole does not go round it: accepted, and its gauges share it.
   const std::vector<std::size_t> three{ 0, 3 };
   const std::vector<Point2> toPole{ { -30.0, 80.0 }, { 30.0, 80.0 }, { 0.0, 90.0 } };

@@ -910,6 +910,10 @@ def test_short_arrays_and_windows_beyond_the_doubles_are_named():
     assert_that(field_value(output, "CoveredFraction") == 1.0 and field_value(output, "WindowArea") == 0.0,
                 f"1e-300: covered {field_value(output, 'CoveredFraction')} of an area below the doubles "
                 f"({field_value(output, 'WindowArea')})")
+    # Unit tiles in that window: the tile is too large at the window's scale, not "of some 1e154"
+    _, errors, _ = clip_by(polygon([square]), polygon(tiny))
+    assert_that(len(errors) == 1 and "cell 0 of input 0: its area overflows at the window's scale: the window (input 1) is so small" in errors[0],
+                f"unit tiles in a window of 1e-300: {errors}")
 
 
 def test_cells_that_refer_to_missing_points_are_named():
