@@ -39,7 +39,12 @@ StationMatch MatchStations(const std::vector<std::string>& gaugeIds,
   std::unordered_map<std::string, std::int32_t> gaugeOf; // the first gauge of each key
   for (std::size_t g = 0; g < gaugeIds.size(); ++g)
   {
-    const auto [at, first] = gaugeOf.emplace(StationKey(gaugeIds[g]), static_cast<std::int32_t>(g));
+    std::string key = StationKey(gaugeIds[g]);
+    if (key.empty())
+    {
+      continue; // (no station id, as NaN in a numeric column: not an id the gauges share)
+    }
+    const auto [at, first] = gaugeOf.emplace(std::move(key), static_cast<std::int32_t>(g));
     if (!first)
     {
       match.SharedStations.push_back({ at->second, static_cast<std::int32_t>(g) });

@@ -138,6 +138,17 @@ TEST(ObservationSeries, AnIdSharedByGaugesGoesToTheFirst)
   EXPECT_TRUE(series.RepeatedRows.empty());
 }
 
+TEST(ObservationSeries, GaugesWithoutAStationIdShareNone)
+{
+  // (two gauges with NaN ids, from a numeric id column, were said to share the station id "")
+  const tessera::StationMatch match = MatchStations({ "", "a", "", "a" }, { "", "a" });
+  ASSERT_EQ(match.SharedStations.size(), 1u);
+  EXPECT_EQ(match.SharedStations[0].FirstGauge, 1);
+  EXPECT_EQ(match.SharedStations[0].Gauge, 3);
+  EXPECT_EQ(match.GaugeOfRow, (Rows{ -1, 1 }));
+  EXPECT_EQ(match.RowsWithoutStation, (Rows{ 0 }));
+}
+
 TEST(ObservationSeries, RowsWithoutStationOrTimeAreIncompleteAndMakeNoStep)
 {
   const std::vector<std::string> rows = { "a", "", "b", "c", "a", "", "b" };
