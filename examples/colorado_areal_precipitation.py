@@ -365,6 +365,20 @@ def holds_observations(stations, observations):
     return "precip" in csv_input.header_columns(stations, "stations", ("station_id", "lon", "lat"))
 
 
+def check_missing_values(codes):
+    """Ends the script for a --missing-value that would do harm or nothing, as the filter refuses
+    its MissingValue: 0 made every dry month missing (a mean of 2.463 for 1.185, the dry gauges
+    listed as never reporting), and NaN or an infinity matches no value read (a value is a finite
+    number, or missing)."""
+    for code in codes:
+        if code == 0:
+            sys.exit("--missing-value 0 would make every zero value (a dry step) missing; give the number that "
+                     "marks missing values, such as -9999")
+        if not math.isfinite(code):
+            sys.exit(f"--missing-value {code:g} changes nothing: every value read is a finite number or missing "
+                     "(empty, NA); give the number that marks missing values, such as -9999")
+
+
 def stations_path(observations):
     """--stations' default: the observations file where its header has station_id, lon and lat
     (or names ALIAS_OF reads as them), else the Colorado gauges."""
@@ -2491,6 +2505,7 @@ def main(argv=None):
     if args.sum_to is not None and (args.sum_to < 1 or 60 % args.sum_to):
         sys.exit(f"--sum-to {args.sum_to}: expected a number of minutes that divides 60 (2, 3, 4, 5, 6, 10, 12, 15, "
                  "20, 30 or 60)")
+    check_missing_values(args.missing_value)
     asked = asked_steps(args)
     bounds = (period_bound(args.start, "--start"), period_bound(args.end, "--end"))
     check_period(*bounds, (args.start, args.end))
@@ -2612,20 +2627,26 @@ def main(argv=None):
                         | ({by_feature} if groups else set()))
     valid = [r[-1] for r in rows if not math.isnan(r[-1])]
     print(f"{len(rows)} {steps.noun}{'s' if len(rows) != 1 else ''}, {len(valid)} with data"
-          + (f"; mean of the {steps.adjective} areal means {sum(valid) / len(valid):.3f}"
+          + (f"; mean of the {steps.adjective} areal means {shown_mean(sum(valid) / len(valid))}"
              if valid else ""))
     for step, _, per_gauge in shown:
         used, weighted, mean = step_counts(rows, step)
         if used == 0:  # (its weights file and tiles are empty: said, not "areal mean nan")
             print(f"{steps.text(step)}: no gauge reported, so no areal mean; its weights and tiles files are empty")
             continue
-        print(f"{steps.text(step)}: areal mean {mean:.3f}, {used} gauges reported, "
+        print(f"{steps.text(step)}: areal mean {shown_mean(mean)}, {used} gauges reported, "
               f"{weighted} weighted; weights sum to {sum(e['weight'] for e in per_gauge.values()):.12f}")
     print(f"wrote {args.out}/areal_mean.csv, " + ("" if args.no_all_weights else f"{all_weights}, ")
           + ", ".join(step_files + plot_files)
           + f", unused_inputs.csv ({unused} input(s) not used"
           + (f", {outside_count(record.outside)} of them outside --start/--end)" if record.outside else ")")
           + (f", {by_feature} ({len(groups)} group(s) of features)" if groups else ""))
+
+
+def shown_mean(value):
+    """A mean as the messages and the map's title give it: to 3 decimals, or to 6 figures where
+    that would be a long row of digits (values near 1e308 printed 300 of them)."""
+    return f"{value:.3f}" if abs(value) < 1e12 else f"{value:.6g}"
 
 
 def nearest_reported(rows, steps, step):
@@ -2644,7 +2665,7 @@ def map_title(rows, steps, step):
     used, weighted, mean = step_counts(rows, step)
     if used == 0:
         return f"{steps.text(step)}: no gauge reported (Thiessen areal mean nan)"
-    return f"{steps.text(step)}: Thiessen areal mean {mean:.3f} from {weighted} of {used} reporting gauges"
+    return f"{steps.text(step)}: Thiessen areal mean {shown_mean(mean)} from {weighted} of {used} reporting gauges"
 
 
 def step_counts(rows, step):

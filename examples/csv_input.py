@@ -137,9 +137,10 @@ def rows(path, required, what, optional=(), header=None, delimiter_columns=None,
 
 def check_columns(path, what, required, columns):
     """Ends the script, naming the file, its header and what it needs, when columns (a header's,
-    as named_columns gives them) lack one of the required names, or are none (an empty file)."""
+    as named_columns gives them) lack one of the required names, or are none (an empty file) where
+    some are required: a caller that requires none says itself what an empty file lacks."""
     absent = [name for name in required if name not in columns]
-    if not columns:
+    if not columns and required:
         fail(f"{path}: the {what} file is empty (no header, no rows); it needs the columns {', '.join(required)}")
     if absent:
         others = "; ".join(f"{name} may be named {', '.join(other_names(name, what))}"

@@ -366,7 +366,9 @@ def test_bad_files_are_named():
             (("--month", "1963/08"), ["--month '1963/08': expected YYYY-MM"]),
             (("--observations", header_only), ["the observations table has no rows"]),
             # An empty file is said to be one (it was read as a wide file without a time column).
-            (("--observations", empty_file), [empty_file + ": the observations file is empty"]),
+            # (and says what it needs: it ended "it needs the columns " with none named)
+            (("--observations", empty_file), [empty_file + ": the observations file is empty (no header, no rows); "
+                                              "expected a long file (station_id, a time column"]),
             (("--stations", empty_file), [empty_file + ": the stations file is empty"]),
             (("--observations", infinite), [infinite + ":3", "'precip'", "'1e999' is not a finite number"]),
             # The line the malformed record ends on (the unclosed quote runs to the end of line 3).
@@ -385,6 +387,10 @@ def test_bad_files_are_named():
             # Python's float() reads 1_5 as 15: not a number in a data file.
             (("--observations", grouped), [grouped + ":2", "'precip'", "'1_5' is not a number"]),
             (("--month", "1_963-08"), ["--month", "YYYY-MM"]),
+            # As the filter refuses them: 0 made every dry month missing; NaN and inf match nothing.
+            (("--missing-value", "0"), ["--missing-value 0 would make every zero value (a dry step) missing"]),
+            (("--missing-value", "-9999", "--missing-value", "nan"), ["--missing-value nan changes nothing"]),
+            (("--missing-value", "inf"), ["--missing-value inf changes nothing"]),
         ]
         for arguments, fragments in cases:
             _, stderr = run_colorado(out, *arguments, what=str(arguments), status=1, plots=False)
