@@ -623,6 +623,11 @@ void AppendPolygonRings(vtkPolyData* poly, const std::string& block, Rings& ring
       continue;
     }
     poly->GetCellPoints(c, ids);
+    if (isLine && ids->GetNumberOfIds() < 2)
+    {
+      skipped.push_back(c); // (a line of 0 or 1 point: no segment to join; it was dropped unsaid)
+      continue;
+    }
     if (isLine && !IsClosedLine(poly, ids))
     {
       loose.Add(poly, ids, c); // joined with the others below

@@ -977,6 +977,9 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
     const std::vector<tessera::Point2> noPlaces; // (a forward's)
     for (std::size_t p = 0; p < pieces.size(); ++p)
     {
+      // (a progress observer's stop is taken between pieces: it was not taken at all)
+      tessera_vtk::ProgressOrStop(
+        this, 0.1 + 0.9 * static_cast<double>(p) / static_cast<double>(pieces.size()));
       WithLabel(pieces[p],
         [&]()
         {

@@ -1462,8 +1462,18 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   }
   else
   {
-    auto* values = vtkDataArray::SafeDownCast(
-      gauges->GetPointData()->GetAbstractArray(this->ValueArrayName.c_str()));
+    vtkAbstractArray* given =
+      gauges->GetPointData()->GetAbstractArray(this->ValueArrayName.c_str());
+    auto* values = vtkDataArray::SafeDownCast(given);
+    if (given && !values)
+    {
+      // (it was "need a numeric point-data array 'value' ...; their arrays are station_id, value")
+      throw tessera::InputError("without observations the gauges' point-data array '" +
+        this->ValueArrayName + "' (ValueArrayName) is read as one number per gauge, but it is a " +
+        given->GetClassName() +
+        ", not numbers; make it numeric, or give the values as observations (input 2: station id, "
+        "time, value), whose text values are read as numbers");
+    }
     if (!values)
     {
       throw tessera::InputError(

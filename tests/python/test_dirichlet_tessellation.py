@@ -1479,6 +1479,12 @@ def test_a_progress_observer_can_stop_a_run():
     grouping.SetInputData(make_points([(0.01 * k, 0.3 * math.sin(0.05 * k) + rng.gauss(0, 0.01)) for k in range(300)]))
     (seen, errors, points), rerun = stopped_then_rerun(grouping, 0.01, lambda data: data.GetNumberOfPoints())
     assert_that(not errors and points == 0 and rerun == 300, f"grouping: {errors}, {points}, {rerun}")
+    from tessera import vtkGeographicProjection
+
+    projection = vtkGeographicProjection()  # (progress between pieces: it took no stop at all)
+    projection.SetInputData(make_points([(-105 + 0.01 * k, 39 + 0.01 * k) for k in range(100)]))
+    (seen, errors, points), rerun = stopped_then_rerun(projection, 0.05, lambda data: data.GetNumberOfPoints())
+    assert_that(not errors and points == 0 and rerun == 100, f"projection: {errors}, {points}, {rerun}")
 
 
 if __name__ == "__main__":

@@ -495,14 +495,28 @@ def test_bad_gauge_and_self_intersecting_catchment_are_named():
     g.SetCatchmentData(polygon([[(0, 0), (1, 1), (1, 0), (0, 1)]]))
     g.Update()
     assert_that(len(messages) == 1 and "self-intersecting" in messages[0], f"bowtie named: {messages}")
+    # A text 'value' array without observations: said to be text (it was "need a numeric array
+    # 'value'; their arrays are station_id, value").
+    text = gauges_polydata([(0.2, 0.2), (0.8, 0.8)], ["a", "b"])
+    values = vtkStringArray()
+    values.SetName("value")
+    for v in ("1", "2"):
+        values.InsertNextValue(v)
+    text.GetPointData().AddArray(values)
+    g.SetGaugesData(text)
+    g.SetCatchmentData(polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]]))
+    g.Update()
+    assert_that(len(messages) == 2 and "the gauges' point-data array 'value' (ValueArrayName) is read as one number "
+                "per gauge, but it is a vtkStringArray, not numbers" in messages[1], f"text values: {messages}")
+    g.SetGaugesData(gauges_polydata([(0.2, 0.2)], ["a"], [1.0]))
     # A catchment cell with a point id beyond its points took garbage for a vertex (ArealMean 3.77
     # for 2.26, and the projection's centre moved); it is named now.
     catchment = polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]])
     catchment.InsertNextCell(7, 3, [0, 1, 99])
     g.SetCatchmentData(catchment)
     g.Update()
-    assert_that(len(messages) == 2 and "the catchment (input 1): cell 1 refers to point 99, but the points are 0 to 3"
-                in messages[1], f"point id 99 named: {messages}")
+    assert_that(len(messages) == 3 and "the catchment (input 1): cell 1 refers to point 99, but the points are 0 to 3"
+                in messages[2], f"point id 99 named: {messages}")
 
 
 def test_window_clip_of_projected_tiles_sums_to_the_catchment():

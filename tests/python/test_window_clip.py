@@ -916,28 +916,32 @@ def test_short_arrays_and_windows_beyond_the_doubles_are_named():
                 f"unit tiles in a window of 1e-300: {errors}")
 
 
+def cells(xy, polys=(), lines=()):
+    """vtkPolyData of points xy with polygon and polyline cells given as lists of point ids."""
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+
+    data = vtkPolyData()
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    for x, y in xy:
+        points.InsertNextPoint(x, y, 0.0)
+    data.SetPoints(points)
+    for ids_of_cells, setter in ((lines, data.SetLines), (polys, data.SetPolys)):
+        array = vtkCellArray()
+        for ids in ids_of_cells:
+            array.InsertNextCell(len(ids), ids)
+        setter(array)
+    return data
+
+
 def test_cells_that_refer_to_missing_points_are_named():
     """From a hostile-input trial: VTK reads a cell's point ids without a check. A window triangle
     with point id 99 of 4 clipped to a wrong WindowArea (0.68 for 0.64), a projection densified a
     line to a missing point into 1882 points, and cells without any points crashed Window Clip and
     Geographic Projection; a polygon cell of no points crashed Window Clip. Each is an error naming
     the input, the cell and the id."""
-    from vtkmodules.vtkCommonCore import vtkPoints
-    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData, vtkUnstructuredGrid
-
-    def cells(xy, polys=(), lines=()):
-        """vtkPolyData of points xy with polygon and polyline cells given as lists of point ids."""
-        data = vtkPolyData()
-        points = vtkPoints()
-        for x, y in xy:
-            points.InsertNextPoint(x, y, 0.0)
-        data.SetPoints(points)
-        for ids_of_cells, setter in ((lines, data.SetLines), (polys, data.SetPolys)):
-            array = vtkCellArray()
-            for ids in ids_of_cells:
-                array.InsertNextCell(len(ids), ids)
-            setter(array)
-        return data
+    from vtkmodules.vtkCommonDataModel import vtkUnstructuredGrid
 
     square = [(0.1, 0.1), (0.9, 0.1), (0.9, 0.9), (0.1, 0.9)]
     tiles = polygon([[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]])
@@ -970,6 +974,17 @@ def test_cells_that_refer_to_missing_points_are_named():
         f.Update()
         assert_that(len(errors) == 1 and expected in errors[0] and f.GetOutput().GetNumberOfPoints() == 0,
                     f"projection, {name}: {errors}")
+
+
+def test_window_lines_of_fewer_than_two_points_are_named_as_ignored():
+    """A window line of 0 or 1 point was dropped without the warning a 2-point line gets."""
+    square = [(0.1, 0.1), (0.9, 0.1), (0.9, 0.9), (0.1, 0.9)]
+    tiles = polygon([[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)]])
+    for line in ([], [0], [0, 2]):
+        output, errors, warnings = clip_by(tiles, cells(square, polys=[[0, 1, 2, 3]], lines=[line]))
+        assert_that(not errors and len(warnings) == 1 and "1 cell(s) of the window (input 1) are not polygons" in warnings[0]
+                    and "(the first is cell 0)" in warnings[0] and abs(field_value(output, "WindowArea") - 0.64) < 1e-12,
+                    f"a line of {len(line)} point(s): {errors}, {warnings}")
 
 
 def test_a_window_in_a_vertical_plane_is_said_to_be_read_in_x_and_y():
@@ -1095,4 +1110,5 @@ if __name__ == "__main__":
          test_each_block_of_tiles_gives_its_share_of_the_window,
          test_a_shapefiles_polygons_read_by_gdal_are_clipped_as_tiles,
          test_short_arrays_and_windows_beyond_the_doubles_are_named,
-         test_cells_that_refer_to_missing_points_are_named])
+         test_cells_that_refer_to_missing_points_are_named,
+         test_window_lines_of_fewer_than_two_points_are_named_as_ignored])
