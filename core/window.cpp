@@ -15,59 +15,29 @@
 //                 open edge of i, if the latest entry comes strictly before the earliest exit
 //
 // and whether the crossing P_ik satisfies j is sign(det(rows i, k, j)) * sign(cross(n_i, n_k)).
+// That test of every pair (EffectiveByPairs) names what is wrong with an empty or unbounded
+// window; a window with an interior is settled first by a sweep (constraint_sweep.h), which gives
+// the same answer in O(n log n).
 
 #include "window.h"
 
 #include "compensated_sum.h"
+#include "constraint_sweep.h"
 #include "errors.h"
+#include "half_plane_predicates.h"
 #include "predicates.h"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace tessera
 {
 namespace
 {
-
-// sign(x1 * y2 - y1 * x2), exactly.
-int cross_sign(double x1, double y1, double x2, double y2)
-{
-  return orient2d(Point2{ x1, y1 }, Point2{ x2, y2 }, Point2{ 0.0, 0.0 });
-}
-
-int sign_of(double v)
-{
-  return (v > 0.0) - (v < 0.0);
-}
-
-// The sign of constraint j's value at the crossing of the lines of i and k (not parallel).
-int value_at_crossing(const HalfPlane& i, const HalfPlane& k, const HalfPlane& j)
-{
-  return determinant3_sign(i.a, i.b, i.c, k.a, k.b, k.c, j.a, j.b, j.c) *
-    cross_sign(i.a, i.b, k.a, k.b);
-}
-
-// For parallel normals n_j = lambda n_i (lambda != 0): the sign of constraint j's value on the
-// line of i. Negative: the line of i lies strictly inside j.
-int parallel_offset_sign(const HalfPlane& i, const HalfPlane& j)
-{
-  // On L_i, a_i x + b_i y = -c_i, so j's value is c_j - lambda c_i with lambda = a_j / a_i, i.e.
-  // (a_i c_j - a_j c_i) / a_i (or the same with b when a_i == 0).
-  if (i.a != 0.0)
-  {
-    return cross_sign(i.a, i.c, j.a, j.c) * sign_of(i.a);
-  }
-  return cross_sign(i.b, i.c, j.b, j.c) * sign_of(i.b);
-}
-
-// Whether parallel normals point the same way.
-bool same_direction(const HalfPlane& i, const HalfPlane& j)
-{
-  return i.a != 0.0 ? sign_of(i.a) == sign_of(j.a) : sign_of(i.b) == sign_of(j.b);
-}
 
 std::string describe(const HalfPlane& h)
 {
@@ -155,6 +125,80 @@ Box2 CertainInterior(const std::vector<HalfPlane>& effective)
     line.YMin + margin * (std::fabs(line.YMin) + height),
     line.YMax - margin * (std::fabs(line.YMax) + height) };
 }
+// Which constraints are effective, each tested against every other, O(n^2) (see the sketch at the
+// top): throws InputError for a window found empty, UnboundedWindowError for one found unbounded,
+// naming the constraints (named(i)).
+std::vector<bool> EffectiveByPairs(const std::vector<HalfPlane>& constraints,
+  const std::function<std::string(std::size_t)>& named)
+{
+  const std::size_t n = constraints.size();
+  std::vector<bool> effective(n, false);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const HalfPlane& hi = constraints[i];
+    bool dominated = false;
+    bool hasEntry = false, hasExit = false;
+    std::size_t entry = 0, exit = 0;
+    for (std::size_t j = 0; j < n && !dominated; ++j)
+    {
+      if (j == i)
+      {
+        continue;
+      }
+      const HalfPlane& hj = constraints[j];
+      const int rate = NormalTurn(hi, hj);
+      if (rate == 0)
+      {
+        const int offset = ParallelOffsetSign(hi, hj);
+        if (SameDirection(hi, hj))
+        {
+          // j lies further in (its line is the tighter one), or it is the same half-plane and the
+          // first of the copies keeps the edge.
+          dominated = offset > 0 || (offset == 0 && j < i);
+        }
+        else if (offset >= 0)
+        {
+          throw InputError("window is empty: " + named(i) + " " + describe(hi) + " and " +
+            named(j) + " " + describe(hj) + " are parallel and leave no room between them");
+        }
+      }
+      else if (rate < 0)
+      {
+        // Entering j. Keep the latest entry: j is later if its crossing satisfies the current one.
+        if (!hasEntry || ValueAtCrossing(hi, hj, constraints[entry]) < 0)
+        {
+          entry = j;
+        }
+        hasEntry = true;
+      }
+      else
+      {
+        // Leaving j. Keep the earliest exit: j is earlier if its crossing satisfies the current.
+        if (!hasExit || ValueAtCrossing(hi, hj, constraints[exit]) < 0)
+        {
+          exit = j;
+        }
+        hasExit = true;
+      }
+    }
+    if (dominated)
+    {
+      continue;
+    }
+    if (!hasEntry || !hasExit)
+    {
+      // A ray (or the whole line) of L_i satisfies every other constraint strictly; points just
+      // inside it are in the window, whose closure then contains a ray.
+      throw UnboundedWindowError("window is unbounded: the boundary line of " + named(i) + " " +
+        describe(hi) + " is not closed off by the other constraints" +
+        (hasEntry || hasExit ? " at one end" : " at either end"));
+    }
+    effective[i] = ValueAtCrossing(hi, constraints[entry], constraints[exit]) < 0;
+  }
+
+  return effective;
+}
+
 } // namespace
 
 Window::Window(const std::vector<HalfPlane>& constraints, const ConstraintNames& names)
@@ -181,70 +225,12 @@ Window::Window(const std::vector<HalfPlane>& constraints, const ConstraintNames&
     throw UnboundedWindowError("window is unbounded: no constraints given");
   }
 
-  std::vector<bool> effective(n, false);
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    const HalfPlane& hi = constraints[i];
-    bool dominated = false;
-    bool hasEntry = false, hasExit = false;
-    std::size_t entry = 0, exit = 0;
-    for (std::size_t j = 0; j < n && !dominated; ++j)
-    {
-      if (j == i)
-      {
-        continue;
-      }
-      const HalfPlane& hj = constraints[j];
-      const int rate = cross_sign(hi.a, hi.b, hj.a, hj.b);
-      if (rate == 0)
-      {
-        const int offset = parallel_offset_sign(hi, hj);
-        if (same_direction(hi, hj))
-        {
-          // j lies further in (its line is the tighter one), or it is the same half-plane and the
-          // first of the copies keeps the edge.
-          dominated = offset > 0 || (offset == 0 && j < i);
-        }
-        else if (offset >= 0)
-        {
-          throw InputError("window is empty: " + named(i) + " " + describe(hi) + " and " +
-            named(j) + " " + describe(hj) + " are parallel and leave no room between them");
-        }
-      }
-      else if (rate < 0)
-      {
-        // Entering j. Keep the latest entry: j is later if its crossing satisfies the current one.
-        if (!hasEntry || value_at_crossing(hi, hj, constraints[entry]) < 0)
-        {
-          entry = j;
-        }
-        hasEntry = true;
-      }
-      else
-      {
-        // Leaving j. Keep the earliest exit: j is earlier if its crossing satisfies the current.
-        if (!hasExit || value_at_crossing(hi, hj, constraints[exit]) < 0)
-        {
-          exit = j;
-        }
-        hasExit = true;
-      }
-    }
-    if (dominated)
-    {
-      continue;
-    }
-    if (!hasEntry || !hasExit)
-    {
-      // A ray (or the whole line) of L_i satisfies every other constraint strictly; points just
-      // inside it are in the window, whose closure then contains a ray.
-      throw UnboundedWindowError("window is unbounded: the boundary line of " + named(i) + " " +
-        describe(hi) + " is not closed off by the other constraints" +
-        (hasEntry || hasExit ? " at one end" : " at either end"));
-    }
-    effective[i] = value_at_crossing(hi, constraints[entry], constraints[exit]) < 0;
-  }
-
+  // The sweep settles a bounded window with an interior in O(n log n) (10^4 constraints, as a
+  // catchment outline given as constraints, took the pairs 1.2 s); the pairs name what is wrong
+  // with any other.
+  std::optional<std::vector<bool>> swept = EffectiveBySweep(constraints);
+  const std::vector<bool> effective =
+    swept ? *std::move(swept) : EffectiveByPairs(constraints, named);
   std::vector<std::size_t> ids;
   for (std::size_t i = 0; i < n; ++i)
   {
@@ -261,25 +247,10 @@ Window::Window(const std::vector<HalfPlane>& constraints, const ConstraintNames&
   // Anticlockwise order around a convex polygon is the angular order of the outward normals,
   // starting from the first effective constraint given. No two effective normals are parallel
   // and point the same way.
-  const HalfPlane& ref = constraints[ids.front()];
-  auto half = [&](const HalfPlane& h)
-  {
-    const int c = cross_sign(ref.a, ref.b, h.a, h.b);
-    return (c > 0 || (c == 0 && same_direction(ref, h))) ? 0 : 1;
-  };
+  const AngleFrom angle(constraints[ids.front()]);
   std::sort(ids.begin() + 1,
     ids.end(),
-    [&](std::size_t p, std::size_t q)
-    {
-      const HalfPlane& hp = constraints[p];
-      const HalfPlane& hq = constraints[q];
-      const int halfP = half(hp), halfQ = half(hq);
-      if (halfP != halfQ)
-      {
-        return halfP < halfQ;
-      }
-      return cross_sign(hp.a, hp.b, hq.a, hq.b) > 0;
-    });
+    [&](std::size_t p, std::size_t q) { return angle(constraints[p], constraints[q]); });
 
   this->EffectiveInputIds = ids;
   for (std::size_t id : ids)

@@ -46,7 +46,9 @@ class Window
 {
 public:
   /// Throws InputError for a constraint with a NaN/Inf coefficient or a == b == 0 (naming it, by
-  /// default as "window constraint i"), and for an empty or unbounded intersection.
+  /// default as "window constraint i"), and for an empty or unbounded intersection. O(n log n)
+  /// for a window with an interior (constraint_sweep.h: 10^5 constraints in some 0.1 s); an
+  /// empty or unbounded one is named by a test of every pair, O(n^2).
   explicit Window(const std::vector<HalfPlane>& constraints, const ConstraintNames& names = {});
 
   /// xmin < x < xmax, ymin < y < ymax, its sides named owner + " side y > ymin" + note etc. for
