@@ -61,6 +61,10 @@ enum class PointStatus : std::uint8_t
   Removed,       ///< removed by Remove()
 };
 
+/// Threads: separate objects may be used on separate threads at once, and one object may be read
+/// (its const members, NearestPoint(s) among them, and the results tiles.h derives from it) by
+/// several threads at once while none changes it. Insert, Reinsert and Remove need it to
+/// themselves. (The batch constructor and the derivations run on several threads of their own.)
 class DirichletTessellation
 {
 public:

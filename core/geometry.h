@@ -137,7 +137,8 @@ inline bool HasRepeatedVertex(const std::vector<Point2>& polygon)
   bool repeated = polygon[0] == polygon[n - 1];
   if (n > 2)
   {
-    repeated |= (polygon[0] == polygon[n - 2]) | (polygon[1] == polygon[n - 1]);
+    repeated |= polygon[0] == polygon[n - 2];
+    repeated |= polygon[1] == polygon[n - 1]; // (not `a | b` of bools: clang's -Wall warns)
   }
   for (std::size_t k = 1; k < n; ++k)
   {

@@ -107,7 +107,8 @@ struct TileMeshAndGraph
 /// A TileSet as a TileMesh whose vertices are numbered by the caller: cornerVertexIds[k] is the
 /// vertex of corner k (tiles.Vertices[k]), ids from 0 without gaps, in the order they first come,
 /// equal ids only for equal corners. For the Brassel-Reif engine (ThiessenSweepResult's
-/// CornerVertexIds), so that its tiles make a conforming mesh as TessellationDual's do.
+/// CornerVertexIds), so that its tiles make a conforming mesh as TessellationDual's do. Throws
+/// std::logic_error (a caller's mistake, not the input's) when there is not one id per corner.
 TileMesh MeshOfNumberedCorners(TileSet tiles, const std::vector<std::int32_t>& cornerVertexIds);
 
 /// Scales a mesh's vertices by 2^exponent and its areas by 2^(2 exponent), exactly: the tiles of
@@ -134,7 +135,8 @@ std::vector<std::int32_t> CollapsedTilePoints(const TileMesh& tiles);
 /// Throws InputError unless the tiles' areas add up to the window's area (within 1e-6 relative,
 /// plus cornerRounding): a check that points lay within the range where the tiles are exact
 /// (window_predicates.h). Necessary, not sufficient: it catches tiles that overlap or leave gaps,
-/// not a tile given to the wrong point. No tiles pass.
+/// not a tile given to the wrong point. No tiles pass. windowArea must be Window::Area() of the
+/// window the tiles were made in: the message blames the points, as that is what it checks.
 void CheckTilesFillWindow(const TileMesh& tiles, double windowArea, double cornerRounding = 0.0);
 
 /// How far the tiles' areas can add up from the window's exact area because their corners are
@@ -282,6 +284,9 @@ private:
   UninitializedVector<std::int32_t> DegenerateReps;
 };
 
+/// The tile of every accepted point, with its area and number of sides
+/// (TessellationDual(t).Tiles()). Tiles come in a spatially coherent order, not by id:
+/// TileSet::PointIds says whose each is. Reads the tessellation only, on several threads.
 TileSet ComputeTiles(const DirichletTessellation& tessellation);
 
 /// Per point, the ids of the points that share a face with it (its Delaunay ring neighbours and
@@ -337,7 +342,11 @@ std::size_t VisitTilesOf(const DirichletTessellation& tessellation,
 /// The face mates of the given points only (same rules as ComputeTilesOf), without the tiles.
 FaceMateLists ComputeFaceMatesOf(const DirichletTessellation& tessellation,
   const std::vector<std::int32_t>& ids);
+/// The contiguity graph (TessellationDual(t).Contiguities()): every pair of neighbours once,
+/// with half-neighbours (pairs that share only a degenerate vertex) marked as such.
 ContiguityGraph ComputeContiguityGraph(const DirichletTessellation& tessellation);
+/// The Delaunay faces (TessellationDual(t).Faces(splitDegenerate)): a face of 4 or more exactly
+/// co-circular points is one polygon, or triangles when splitDegenerate.
 DelaunayFaces ComputeDelaunayFaces(const DirichletTessellation& tessellation, bool splitDegenerate);
 
 /// An upper bound on the number of faces when every Delaunay face is a triangle.
