@@ -14,6 +14,18 @@ endfunction()
 file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
 run("cmake --install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+# The installed targets name GeographicLib by name, not by a path of the machine that built them
+# (they held /usr/lib/x86_64-linux-gnu/libGeographicLib.so and /usr/include).
+file(GLOB_RECURSE core_targets ${prefix}/*TesseraCore-targets*.cmake)
+if(NOT core_targets)
+  message(FATAL_ERROR "no TesseraCore-targets*.cmake installed under ${prefix}")
+endif()
+foreach(file IN LISTS core_targets)
+  file(READ ${file} text)
+  if(text MATCHES "libGeographicLib|/usr/include")
+    message(FATAL_ERROR "${file} names a path of this machine: ${CMAKE_MATCH_0}")
+  endif()
+endforeach()
 # Both targets; then the core alone, from a C++-only project that must not need ParaView.
 foreach(consumer IN ITEMS consumer core_consumer)
   if(consumer STREQUAL "consumer")
