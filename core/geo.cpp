@@ -195,6 +195,16 @@ std::string ProjectionParameters::ToString() const
 
 namespace
 {
+/// A record, or a part of one, as a message quotes it: in full, or its first 120 characters and
+/// how long it is (a record of 10^5 characters was echoed whole).
+std::string Quoted(const std::string& text)
+{
+  constexpr std::size_t shown = 120;
+  return text.size() <= shown
+    ? "'" + text + "'"
+    : "'" + text.substr(0, shown) + "...' (" + std::to_string(text.size()) + " characters)";
+}
+
 /// Throws InputError unless the record gives the parameters its projection needs: a missing one
 /// was 0 without a word ("projection=AlbersEqualArea" alone made standard parallels at the
 /// equator, and a point of Colorado 11700 km from the origin). UTM needs its zone (north defaults
@@ -233,7 +243,7 @@ void CheckRecordComplete(const std::string& text,
   }
   if (!missing.empty())
   {
-    throw InputError("projection record '" + text + "' lacks " + missing + ", which " +
+    throw InputError("projection record " + Quoted(text) + " lacks " + missing + ", which " +
       ProjectionKindName(kind) + " needs");
   }
 }
@@ -251,14 +261,14 @@ ProjectionParameters ProjectionParameters::FromString(const std::string& text)
     const auto equals = item.find('=');
     if (equals == std::string::npos)
     {
-      throw InputError("projection record: '" + item + "' is not key=value");
+      throw InputError("projection record: " + Quoted(item) + " is not key=value");
     }
     const std::string key = item.substr(0, equals);
     const std::string value = item.substr(equals + 1);
     if (std::find(seen.begin(), seen.end(), key) != seen.end())
     {
       // (the later one won: zone=13 zone=14 projected in zone 14 without a word)
-      throw InputError("projection record '" + text + "' gives " + key + " twice");
+      throw InputError("projection record " + Quoted(text) + " gives " + key + " twice");
     }
     seen.push_back(key);
     auto number = [&]()
@@ -268,7 +278,8 @@ ProjectionParameters ProjectionParameters::FromString(const std::string& text)
       if (value.empty() || *end != '\0' || !std::isfinite(v))
       {
         // (nan and inf parse as numbers: lon0=nan was taken, and failed later elsewhere)
-        throw InputError("projection record: " + key + "='" + value + "' is not a finite number");
+        throw InputError(
+          "projection record: " + key + "=" + Quoted(value) + " is not a finite number");
       }
       return v;
     };
@@ -285,7 +296,7 @@ ProjectionParameters ProjectionParameters::FromString(const std::string& text)
       }
       if (!known)
       {
-        throw InputError("projection record: unknown projection '" + value + "'");
+        throw InputError("projection record: unknown projection " + Quoted(value));
       }
       sawKind = true;
     }
@@ -303,7 +314,8 @@ ProjectionParameters ProjectionParameters::FromString(const std::string& text)
       if (zone != std::floor(zone) || zone < 0.0 || zone > 60.0)
       {
         // (a cast of 1e20 to int was -2147483648)
-        throw InputError("projection record: zone='" + value + "' is not a UTM zone (0 to 60)");
+        throw InputError(
+          "projection record: zone=" + Quoted(value) + " is not a UTM zone (0 to 60)");
       }
       result.UTMZone = static_cast<int>(zone);
     }
@@ -321,11 +333,11 @@ ProjectionParameters ProjectionParameters::FromString(const std::string& text)
       result.OriginLatitude = number();
     }
     else
-      throw InputError("projection record: unknown key '" + key + "'");
+      throw InputError("projection record: unknown key " + Quoted(key));
   }
   if (!sawKind)
   {
-    throw InputError("projection record '" + text + "' names no projection");
+    throw InputError("projection record " + Quoted(text) + " names no projection");
   }
   CheckRecordComplete(text, result.Kind, seen);
   return result;

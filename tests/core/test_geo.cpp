@@ -448,6 +448,20 @@ TEST(Geo, BadRecordsAndOppositePolesAreErrors)
   EXPECT_EQ(
     tessera::ProjectionParameters::FromString("projection=UTM lon0=-105 zone=13 north=1").UTMZone,
     13);
+  // A long record is quoted by its start and length, not whole (10^5 characters were echoed).
+  const std::string longRecord = "projection=UTM zone=13 " + std::string(100000, 'x');
+  try
+  {
+    tessera::ProjectionParameters::FromString(longRecord);
+    ADD_FAILURE() << "a record of 10^5 x taken";
+  }
+  catch (const tessera::InputError& e)
+  {
+    const std::string message = e.what();
+    EXPECT_LT(message.size(), 250u) << message;
+    EXPECT_NE(message.find("...' (100000 characters) is not key=value"), std::string::npos)
+      << message;
+  }
   for (const tessera::ProjectionKind kind :
     { tessera::ProjectionKind::AlbersEqualArea, tessera::ProjectionKind::LambertConformalConic })
   {
