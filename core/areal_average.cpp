@@ -1070,21 +1070,31 @@ void CheckEdgeReading(const Point2& a, const Point2& b, std::size_t ring, std::s
   }
 }
 
-/// A segment along a parallel from longitude -180 to 180 is no segment as the edges are read (the
-/// shorter way round: one meridian), but the whole parallel as written: a band of latitude round
-/// the globe (-180..180 by -60..60) was said to have "fewer than 3 distinct vertices". Refused,
-/// saying why (at a pole the two ends are one point either way, and the pole's own check speaks).
-void CheckEdgeRoundTheGlobe(const Point2& a, const Point2& b, std::size_t ring, std::size_t segment)
+/// For a catchment ring found to have no area: why, where one of its segments runs along a
+/// parallel from longitude -180 to 180 (or more): the whole parallel as written, but no segment as
+/// the edges are read (the shorter way round). A band of latitude round the globe, -180..180 by
+/// -60..60, was said to have "fewer than 3 distinct vertices" and no more. "" for other rings
+/// (such a segment in a ring that keeps its area, as where a ring gives both 180 and -180 on one
+/// parallel, is fine: it has no length). At a pole the two ends are one point either way.
+std::string RoundTheGlobeNote(const std::vector<std::size_t>& offsets,
+  const std::vector<Point2>& lonlat,
+  std::size_t ring)
 {
-  if (std::abs(b.x - a.x) >= 360.0 && a.y == b.y && std::abs(a.y) < 90.0)
+  const std::size_t begin = offsets[ring], end = offsets[ring + 1];
+  for (std::size_t k = begin; k < end; ++k)
   {
-    throw InputError("catchment ring " + std::to_string(ring) + " segment " +
-      std::to_string(segment) + " runs along latitude " + NumberText(a.y) + " from longitude " +
-      NumberText(a.x) + " to " + NumberText(b.x) +
-      ": once round the globe as written, but no segment as the edges are read (the shorter way "
-      "round: the two are one meridian). A catchment that goes all the way round the globe (a "
-      "band of latitude) is not taken: it cannot be laid flat in one projection");
+    const Point2& a = lonlat[k];
+    const Point2& b = lonlat[k + 1 < end ? k + 1 : begin];
+    if (std::abs(b.x - a.x) >= 360.0 && a.y == b.y && std::abs(a.y) < 90.0)
+    {
+      return ": its segment " + std::to_string(k - begin) + " runs along latitude " +
+        NumberText(a.y) + " from longitude " + NumberText(a.x) + " to " + NumberText(b.x) +
+        ", once round the globe as written but no segment as the edges are read (the shorter way "
+        "round). A catchment that goes all the way round the globe (a band of latitude) is not "
+        "taken: it cannot be laid flat in one projection";
+    }
   }
+  return std::string();
 }
 
 /// Throws InputError naming the ring and vertex of a finite catchment vertex out of range (NaN
@@ -1108,7 +1118,6 @@ void CheckCatchmentLonLat(const std::vector<std::size_t>& offsets,
     for (std::size_t k = begin; k < end; ++k)
     {
       CheckEdgeReading(lonlat[k], lonlat[k + 1 < end ? k + 1 : begin], r, k - begin);
-      CheckEdgeRoundTheGlobe(lonlat[k], lonlat[k + 1 < end ? k + 1 : begin], r, k - begin);
     }
   }
 }
@@ -1282,9 +1291,26 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     RingsInOneTurn(catchmentRingOffsets, catchmentLonLat),
     ArealAverageSettings::SharedBorderDegrees);
   s.SnappedVertices = snapped.Inserted;
-  const CleanRings rings = WithContactsAsVertices(snapped.Inserted == 0
-      ? ValidateRings(snapped.Offsets, snapped.Vertices)
-      : ValidateRings(snapped.Offsets, snapped.Vertices, &snapped.SegmentOf));
+  const CleanRings rings = [&]
+  {
+    try
+    {
+      return WithContactsAsVertices(snapped.Inserted == 0
+          ? ValidateRings(snapped.Offsets, snapped.Vertices)
+          : ValidateRings(snapped.Offsets, snapped.Vertices, &snapped.SegmentOf));
+    }
+    catch (const RingError& e)
+    {
+      const std::string note = e.Rings.size() == 1
+        ? RoundTheGlobeNote(catchmentRingOffsets, catchmentLonLat, e.Rings[0])
+        : std::string();
+      if (note.empty())
+      {
+        throw;
+      }
+      throw RingError(e.what() + note, e.Rings, e.Segments);
+    }
+  }();
 
   if (settings.HaveProjection)
   {

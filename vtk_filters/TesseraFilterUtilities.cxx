@@ -23,6 +23,7 @@
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
+#include "vtkOutputWindow.h"
 #include "vtkPoints.h"
 #include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -30,6 +31,8 @@
 #include "vtkCellType.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
+
+#include "vtksys/SystemTools.hxx"
 
 #include "errors.h"
 #include "identical_rings.h"
@@ -535,13 +538,21 @@ void ProgressOrStop(vtkAlgorithm* algorithm, double fraction)
   }
 }
 
-int ErrorOrStop(vtkAlgorithm* filter, const std::exception& e)
+int ErrorOrStop(vtkAlgorithm* filter, const std::exception& e, const char* file, int line)
 {
   if (dynamic_cast<const tessera::Cancelled*>(&e) != nullptr)
   {
     return 1;
   }
-  vtkErrorWithObjectMacro(filter, << e.what());
+  if (vtkObject::GetGlobalWarningDisplay())
+  {
+    // (vtkErrorWithObjectMacro's message, with the caller's file and line)
+    std::ostringstream message;
+    message << filter->GetClassName() << " (" << static_cast<void*>(filter) << "): " << e.what();
+    vtkOutputWindowDisplayErrorText(
+      vtksys::SystemTools::GetFilenameName(file).c_str(), line, message.str().c_str(), filter);
+    vtkObject::BreakOnError();
+  }
   return 0;
 }
 
@@ -1035,18 +1046,29 @@ void CheckAttributeLengths(vtkDataSet* data, const std::string& what)
 
 namespace
 {
+/// Whether every value of a connectivity array lies in 0 .. points - 1: one pass over the values
+/// each time (vtkDataArray::GetRange keeps a range until the array itself is marked modified,
+/// which InsertNextCell and ReplaceCellAtId do not do: a bad id put in after a good run passed).
+template<class Values>
+bool AllPointIds(const Values* values, vtkIdType count, vtkIdType points)
+{
+  bool inside = true;
+  for (vtkIdType k = 0; k < count; ++k)
+  {
+    inside &= values[k] >= 0 && values[k] < points;
+  }
+  return inside;
+}
+
 /// The first point id of cells outside 0 .. points - 1, as (cell, id), or (-1, 0) when every id
-/// is a point's. The connectivity's range answers for most inputs without a walk over the cells.
+/// is a point's. A pass over the connectivity answers for most inputs without a walk over cells.
 std::pair<vtkIdType, vtkIdType> FirstMissingPoint(vtkCellArray* cells, vtkIdType points)
 {
-  vtkDataArray* connectivity = cells->GetConnectivityArray();
-  if (connectivity->GetNumberOfValues() == 0)
-  {
-    return { -1, 0 };
-  }
-  double range[2];
-  connectivity->GetRange(range, 0);
-  if (range[0] >= 0.0 && range[1] < static_cast<double>(points))
+  const vtkIdType count = cells->GetNumberOfConnectivityIds();
+  const bool allPoints = cells->IsStorage64Bit()
+    ? AllPointIds(cells->GetConnectivityArray64()->GetPointer(0), count, points)
+    : AllPointIds(cells->GetConnectivityArray32()->GetPointer(0), count, points);
+  if (allPoints)
   {
     return { -1, 0 };
   }

@@ -55,9 +55,10 @@ std::function<bool(double)> StageProgress(vtkAlgorithm* algorithm, double from, 
 void ProgressOrStop(vtkAlgorithm* algorithm, double fraction);
 
 /// What a RequestData's catch block does with an exception once it has emptied its outputs:
-/// reports e.what() as filter's error and returns 0, or, for a stop that a progress observer
-/// asked for (tessera::Cancelled), reports nothing and returns 1. Returns RequestData's result.
-int ErrorOrStop(vtkAlgorithm* filter, const std::exception& e);
+/// reports e.what() as filter's error, as vtkErrorMacro at file and line would, and returns 0, or,
+/// for a stop that a progress observer asked for (tessera::Cancelled), reports nothing and returns
+/// 1. Returns RequestData's result. Called through tesseraErrorOrStopMacro.
+int ErrorOrStop(vtkAlgorithm* filter, const std::exception& e, const char* file, int line);
 
 /// The data of an upstream connection, brought up to date (for a RequestInformation that needs
 /// the input's data: the areal average's time steps, the ridge grouping's image extent).
@@ -332,5 +333,9 @@ void AllocateValues(ArrayT* array, vtkIdType tuples, int components = 1)
 }
 
 } // namespace tessera_vtk
+
+/// In a filter's RequestData catch block: tessera_vtk::ErrorOrStop with the filter's own file and
+/// line in the message, as vtkErrorMacro gives them.
+#define tesseraErrorOrStopMacro(e) tessera_vtk::ErrorOrStop(this, e, __FILE__, __LINE__)
 
 #endif

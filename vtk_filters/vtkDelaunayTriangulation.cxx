@@ -183,7 +183,7 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
   {
     // (a stop that a progress observer asked for empties the outputs too, without an error)
     output->Initialize();
-    return tessera_vtk::ErrorOrStop(this, e);
+    return tesseraErrorOrStopMacro(e);
   }
 }
 

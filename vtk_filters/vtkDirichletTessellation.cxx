@@ -583,7 +583,7 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     // (a stop that a progress observer asked for empties the outputs too, without an error)
     tilesOutput->Initialize();
     graphOutput->Initialize();
-    return tessera_vtk::ErrorOrStop(this, e);
+    return tesseraErrorOrStopMacro(e);
   }
 }
 

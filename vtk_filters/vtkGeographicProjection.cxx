@@ -1031,7 +1031,7 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
   catch (const std::exception& e)
   {
     output->Initialize();
-    return tessera_vtk::ErrorOrStop(this, e);
+    return tesseraErrorOrStopMacro(e);
   }
 }
 

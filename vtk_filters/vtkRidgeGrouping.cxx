@@ -377,7 +377,7 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     contoursOut->Initialize();
     curvesOut->Initialize();
     imageOut->Initialize();
-    return tessera_vtk::ErrorOrStop(this, e);
+    return tesseraErrorOrStopMacro(e);
   }
 }
 

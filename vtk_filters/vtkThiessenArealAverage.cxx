@@ -1220,7 +1220,7 @@ int vtkThiessenArealAverage::RequestData(vtkInformation* request,
   {
     // (a stop that a progress observer asked for empties the outputs too, without an error)
     this->DiscardResults(outputVector);
-    return tessera_vtk::ErrorOrStop(this, e);
+    return tesseraErrorOrStopMacro(e);
   }
 }
 

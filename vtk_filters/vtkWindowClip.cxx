@@ -728,7 +728,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
     // (a stop that a progress observer asked for empties the outputs too, without an error)
     output->Initialize();
     outlines->Initialize();
-    return tessera_vtk::ErrorOrStop(this, e);
+    return tesseraErrorOrStopMacro(e);
   }
 }
 

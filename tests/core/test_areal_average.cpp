@@ -686,16 +686,35 @@ TEST(ArealAverage, ACatchmentRoundAPoleIsRefusedByName)
   const std::string closed = errorOf(parallel, gauges);
   EXPECT_NE(closed.find("goes round the North Pole"), std::string::npos) << closed;
   // A band of latitude written as a box from -180 to 180: read the shorter way its parallels are
-  // no segments (it was said to have "fewer than 3 distinct vertices").
+  // no segments, and the ring has no area; the error says why (it said only "fewer than 3
+  // distinct vertices").
   const std::vector<Point2> band{
     { -180.0, -60.0 }, { 180.0, -60.0 }, { 180.0, 60.0 }, { -180.0, 60.0 }
   };
   const std::string round = errorOf(band, { { 0.0, 0.0 }, { 90.0, 10.0 } });
-  EXPECT_NE(round.find("catchment ring 0 segment 0 runs along latitude -60 from longitude -180 to "
-                       "180: once round the globe as written, but no segment as the edges are "
-                       "read"),
+  EXPECT_NE(round.find("ring 0 has fewer than 3 distinct vertices"), std::string::npos) << round;
+  EXPECT_NE(round.find(": its segment 0 runs along latitude -60 from longitude -180 to 180, once "
+                       "round the globe as written but no segment as the edges are read"),
     std::string::npos)
     << round;
+  // Such a segment in a ring that keeps its area is fine: a box across the 180th meridian giving
+  // both 180 and -180 on each parallel, and one whose longitudes mix -180..180 and 0..360.
+  for (const std::vector<Point2>& ring : { std::vector<Point2>{ { 170.0, 60.0 },
+                                             { 180.0, 60.0 },
+                                             { -180.0, 60.0 },
+                                             { -170.0, 60.0 },
+                                             { -170.0, 70.0 },
+                                             { -180.0, 70.0 },
+                                             { 180.0, 70.0 },
+                                             { 170.0, 70.0 } },
+         std::vector<Point2>{
+           { -175.0, -20.0 }, { 190.0, -20.0 }, { 190.0, -10.0 }, { -175.0, -10.0 } } })
+  {
+    const std::vector<std::size_t> offsets{ 0, ring.size() };
+    const Point2 inside{ ring[0].x + 2.0, ring[0].y + 2.0 };
+    ThiessenArealAverage average({ inside }, offsets, ring);
+    EXPECT_EQ(average.Step({ 1.0 }).StationsWeighted, 1) << ring[0].x;
+  }
   // A triangle with a vertex at the pole does not go round it: accepted, and its gauges share it.
   const std::vector<std::size_t> three{ 0, 3 };
   const std::vector<Point2> toPole{ { -30.0, 80.0 }, { 30.0, 80.0 }, { 0.0, 90.0 } };

@@ -963,6 +963,19 @@ def test_cells_that_refer_to_missing_points_are_named():
         output, errors, _ = clip_by(tiles_in, window)
         assert_that(len(errors) == 1 and expected in errors[0] and output.GetNumberOfCells() == 0,
                     f"{name}: an error saying '{expected}': {errors}")
+    # A bad id put in after a good run (ReplaceCellAtId does not mark the connectivity array
+    # modified, so a range VTK keeps for it was stale, and the id passed, and crashed at 10^8).
+    window = cells(square + [(0.1, 0.95), (0.9, 0.95), (0.5, 0.99)], polys=[[0, 1, 2, 3], [4, 5, 6]])
+    f = vtkWindowClip()
+    errors = messages_of(f)
+    f.SetInputData(tiles)
+    f.SetWindowData(window)
+    f.Update()
+    window.GetPolys().ReplaceCellAtId(1, 3, [4, 5, 100000000])
+    window.Modified()
+    f.Update()
+    assert_that(len(errors) == 1 and "cell 1 refers to point 100000000, but the points are 0 to 6" in errors[0],
+                f"a bad id after a good run: {errors}")
     # (lines come before polygons in a polydata's cell ids)
     for name, data, expected in [("line to point 50", cells(square, polys=[[0, 1, 2, 3]], lines=[[0, 50]]),
                                   "the input: cell 0 refers to point 50, but the points are 0 to 3"),
