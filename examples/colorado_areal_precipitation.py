@@ -325,7 +325,7 @@ def read_gauge_points(path, id_field=None):
     for k, block in numbered:
         if block.GetNumberOfCells() != 1 or block.GetCellType(0) != VTK_VERTEX:
             csv_input.fail(f"{path}: feature {k} is not one point (GDAL reads it as {cell_kinds(block)}, a polygon's "
-                           "rings as lines): a stations file holds a point per gauge")
+                           "rings as lines): a stations file holds a point per gauge (features counted from 1)")
     data = numbered[0][1].GetCellData()
     fields = [data.GetAbstractArray(i).GetName() for i in range(data.GetNumberOfArrays())]
     lower = {}
@@ -341,7 +341,8 @@ def read_gauge_points(path, id_field=None):
         values = block.GetCellData().GetAbstractArray(field)
         station = attribute_text(values).strip() if values else ""
         if not station:
-            csv_input.fail(f"{path}: feature {k}: its attribute {field!r} (the station id) is empty")
+            csv_input.fail(f"{path}: feature {k}: its attribute {field!r} (the station id) is empty (features counted "
+                           "from 1)")
         name = block.GetCellData().GetAbstractArray(lower.get("name", ""))
         table.add(block.GetPoint(block.GetCell(0).GetPointId(0)), station, attribute_text(name).strip() if name else "")
     gauges = table.data

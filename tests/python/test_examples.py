@@ -2924,6 +2924,8 @@ def test_gauges_from_a_gis_file_of_points_give_the_csv_means():
                                      "its attributes: code, Name (give the one holding the ids with --stations-id)"),
                 ({"stations": code, "stations-id": "kode"}, f"{code}: no attribute named 'kode'"),
                 ({"stations": catchment}, f"{catchment}: feature 1 is not one point"),
+                # (which feature, when the catchment's messages count from 0: said)
+                ({"stations": catchment}, "a stations file holds a point per gauge (features counted from 1)"),
                 ({"stations": stations, "stations-id": "code"}, "--stations-id code: is for a GIS file of points")):
             _, stderr = run_colorado(os.path.join(out, "bad"), observations=observations, catchment=catchment,
                                      plots=False, status=1, what=message, **options)
