@@ -1301,7 +1301,12 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     }
     catch (const RingError& e)
     {
-      const std::string note = e.Rings.size() == 1
+      // (only where the ring has no area as read: a bow tie across the 180th meridian was told
+      // it went round the globe)
+      const std::string what = e.what();
+      const bool noArea = what.find(" has fewer than 3 distinct vertices") != std::string::npos ||
+        what.find(" has no area") != std::string::npos;
+      const std::string note = noArea && e.Rings.size() == 1
         ? RoundTheGlobeNote(catchmentRingOffsets, catchmentLonLat, e.Rings[0])
         : std::string();
       if (note.empty())

@@ -7,10 +7,9 @@
 // each new constraint k pops from either end of the deque the lines whose corner with their
 // neighbour does not lie strictly inside k: their edge would have no length.
 //
-//        back of the deque         new constraint k
-//     ... --- e ---+--- f ---+           corner (e, f) on or beyond k's line:
-//                   \   :    /            f keeps no edge; popped
-//                     k's line
+// (With e before f at the back of the deque, and k after both in angle: where the corner of e
+// and f lies on or beyond k's line, f's line, between e's and k's, keeps no stretch of positive
+// length inside both, so f is popped, and e is then tested the same way against its neighbour.)
 //
 // The sweep is known to go wrong for empty or unbounded windows, so nothing it finds is taken on
 // trust. The lines left, E, must (a) turn left by less than half a turn from each to the next, all

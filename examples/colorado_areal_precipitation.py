@@ -367,10 +367,10 @@ def holds_observations(stations, observations):
 
 
 def check_missing_values(codes):
-    """Ends the script for a --missing-value that would do harm or nothing, as the filter refuses
-    its MissingValue: 0 made every dry month missing (a mean of 2.463 for 1.185, the dry gauges
-    listed as never reporting), and NaN or an infinity matches no value read (a value is a finite
-    number, or missing)."""
+    """Ends the script for a --missing-value that would do harm or nothing: 0 made every dry month
+    missing (a mean of 2.463 for 1.185, the dry gauges listed as never reporting), and NaN or an
+    infinity matches no value read (a value is a finite number, or missing). The filter refuses a
+    MissingValue of 0 or NaN alike."""
     for code in codes:
         if code == 0:
             sys.exit("--missing-value 0 would make every zero value (a dry step) missing; give the number that "
@@ -2628,7 +2628,7 @@ def main(argv=None):
                         | ({by_feature} if groups else set()))
     valid = [r[-1] for r in rows if not math.isnan(r[-1])]
     print(f"{len(rows)} {steps.noun}{'s' if len(rows) != 1 else ''}, {len(valid)} with data"
-          + (f"; mean of the {steps.adjective} areal means {shown_mean(sum(valid) / len(valid))}"
+          + (f"; mean of the {steps.adjective} areal means {shown_mean(sum(v / len(valid) for v in valid))}"
              if valid else ""))
     for step, _, per_gauge in shown:
         used, weighted, mean = step_counts(rows, step)

@@ -165,6 +165,7 @@ void CheckPointsSpan(const tessera::Box2& box)
 
 const char* const SmallerBounds = "set smaller WindowBounds or window constraints";
 
+/// What makes the automatic window as large as it is, and what to change.
 std::string PaddingAdvice(double padding)
 {
   return "it is the points' bounding box padded by " + tessera::NumberText(padding) +
@@ -377,15 +378,11 @@ tessera::Window ChooseWindow(const double bounds[4],
     if (!needArea)
     {
       // (the padding was cut to the room there is: only a point at the largest double is left)
-      throw tessera::InputError("the points reach the largest double (x " +
-        tessera::NumberText(xmin) + " .. " + tessera::NumberText(xmax) + ", y " +
-        tessera::NumberText(ymin) + " .. " + tessera::NumberText(ymax) +
+      throw tessera::InputError("the points reach the largest double (" + BoxText(box) +
         "): no window of doubles holds them strictly inside; scale the points");
     }
-    throw tessera::InputError("the automatic window, the points' bounding box (" + BoxText(box) +
-      ") padded by " + tessera::NumberText(padding) +
-      " of its larger side (Padding), reaches beyond the largest double; set a smaller Padding, "
-      "or WindowBounds"); // (before Rectangle refuses it)
+    throw tessera::InputError("the automatic window reaches beyond the largest double: " +
+      PaddingAdvice(padding)); // (before Rectangle refuses it)
   }
   return Representable(tessera::Window::Rectangle(lower[0],
                          upper[0],

@@ -697,6 +697,16 @@ TEST(ArealAverage, ACatchmentRoundAPoleIsRefusedByName)
                        "round the globe as written but no segment as the edges are read"),
     std::string::npos)
     << round;
+  // A bow tie across the 180th meridian with such a segment is self-intersecting, and no more.
+  const std::vector<Point2> bowTie{ { 170.0, 60.0 },
+    { 180.0, 60.0 },
+    { -180.0, 60.0 },
+    { -170.0, 70.0 },
+    { -170.0, 60.0 },
+    { 170.0, 70.0 } };
+  const std::string crossed = errorOf(bowTie, { { 175.0, 65.0 } });
+  EXPECT_NE(crossed.find("self-intersecting"), std::string::npos) << crossed;
+  EXPECT_EQ(crossed.find("round the globe"), std::string::npos) << crossed;
   // Such a segment in a ring that keeps its area is fine: a box across the 180th meridian giving
   // both 180 and -180 on each parallel, and one whose longitudes mix -180..180 and 0..360.
   for (const std::vector<Point2>& ring : { std::vector<Point2>{ { 170.0, 60.0 },

@@ -74,6 +74,25 @@ def polygon(rings):
     return data
 
 
+def cells(xy, polys=(), lines=()):
+    """vtkPolyData of points xy with polygon and polyline cells given as lists of point ids."""
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+
+    data = vtkPolyData()
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    for x, y in xy:
+        points.InsertNextPoint(x, y, 0.0)
+    data.SetPoints(points)
+    for ids_of_cells, setter in ((lines, data.SetLines), (polys, data.SetPolys)):
+        array = vtkCellArray()
+        for ids in ids_of_cells:
+            array.InsertNextCell(len(ids), ids)
+        setter(array)
+    return data
+
+
 def cell_rings(data):
     """The (x, y) vertices of each cell of a vtkPolyData, cell by cell."""
     rings = []

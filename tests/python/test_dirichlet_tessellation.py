@@ -568,7 +568,7 @@ def test_automatic_window_keeps_every_point_and_bad_windows_are_named():
             ("points 1e300 apart", lambda f: (f.SetPadding(0), f.SetInputData(make_points([(-1e300, 0), (1e300, 1), (0, 1e300)]))),
              "the points span x -1e+300 .. 1e+300, y 0 .. 1e+300: the area of a window that holds them overflows a double, whatever the Padding"),
             ("padding past the doubles", lambda f: (f.SetPadding(1e200), f.SetInputData(make_points([(0, 0), (1e150, 1e150)]))),
-             "the automatic window, the points' bounding box (x 0 .. 1e+150, y 0 .. 1e+150) padded by 1e+200 of its larger side (Padding), reaches beyond the largest double")]:
+             "the automatic window reaches beyond the largest double: it is the points' bounding box padded by 1e+200 of its larger side (Padding): set a smaller Padding")]:
         f = vtkDirichletTessellation()
         messages = messages_of(f)
         warnings = messages_of(f, vtkCommand.WarningEvent)
