@@ -1301,14 +1301,14 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     }
     catch (const RingError& e)
     {
-      // (only where the ring has no area as read: a bow tie across the 180th meridian was told
-      // it went round the globe)
-      const std::string what = e.what();
-      const bool noArea = what.find(" has fewer than 3 distinct vertices") != std::string::npos ||
-        what.find(" has no area") != std::string::npos;
-      const std::string note = noArea && e.Rings.size() == 1
-        ? RoundTheGlobeNote(catchmentRingOffsets, catchmentLonLat, e.Rings[0])
-        : std::string();
+      // Only where the ring as read lies on one line (a bow tie across the 180th meridian was
+      // told it went round the globe).
+      const std::size_t r = e.Rings.size() == 1 ? e.Rings[0] : snapped.Offsets.size();
+      const bool flat = r + 1 < snapped.Offsets.size() &&
+        AllOnOneLine(
+          &snapped.Vertices[snapped.Offsets[r]], snapped.Offsets[r + 1] - snapped.Offsets[r]);
+      const std::string note =
+        flat ? RoundTheGlobeNote(catchmentRingOffsets, catchmentLonLat, r) : std::string();
       if (note.empty())
       {
         throw;
