@@ -1,13 +1,7 @@
 #pragma once
 // Exact sign tests on the open half-planes a*x + b*y + c < 0 of a window (window.h), shared by
 // the two ways of finding its effective constraints (window.cpp's pairwise test and
-// constraint_sweep.h's sweep).
-//
-// Constraint i's boundary line L_i is walked in the direction t_i = (-b_i, a_i), which keeps the
-// window on the left. Along t_i the value of constraint j grows at the rate
-// cross(n_i, n_j) = a_i*b_j - a_j*b_i, so a non-parallel j is entered where L_j crosses L_i if
-// that rate is negative and left if it is positive; whether the crossing P_ik satisfies j is
-// sign(det(rows i, k, j)) * sign(cross(n_i, n_k)).
+// constraint_sweep.h's sweep). Their sign conventions are sketched at the top of window.cpp.
 
 #include "predicates.h"
 #include "window.h"

@@ -23,7 +23,6 @@
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
-#include "vtkOutputWindow.h"
 #include "vtkPoints.h"
 #include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
@@ -31,8 +30,6 @@
 #include "vtkCellType.h"
 #include "vtkPointData.h"
 #include "vtkPointSet.h"
-
-#include "vtksys/SystemTools.hxx"
 
 #include "errors.h"
 #include "identical_rings.h"
@@ -535,22 +532,9 @@ void ProgressOrStop(vtkAlgorithm* algorithm, double fraction)
   }
 }
 
-int ErrorOrStop(vtkAlgorithm* filter, const std::exception& e, const char* file, int line)
+bool IsStop(const std::exception& e)
 {
-  if (dynamic_cast<const tessera::Cancelled*>(&e) != nullptr)
-  {
-    return 1;
-  }
-  if (vtkObject::GetGlobalWarningDisplay())
-  {
-    // (vtkErrorWithObjectMacro's message, with the caller's file and line)
-    std::ostringstream message;
-    message << filter->GetClassName() << " (" << static_cast<void*>(filter) << "): " << e.what();
-    vtkOutputWindowDisplayErrorText(
-      vtksys::SystemTools::GetFilenameName(file).c_str(), line, message.str().c_str(), filter);
-    vtkObject::BreakOnError();
-  }
-  return 0;
+  return dynamic_cast<const tessera::Cancelled*>(&e) != nullptr;
 }
 
 bool IsClosedLine(vtkDataSet* data, vtkIdList* ids)

@@ -54,11 +54,10 @@ std::function<bool(double)> StageProgress(vtkAlgorithm* algorithm, double from, 
 /// set: between stages of a run, where nothing is left half made.
 void ProgressOrStop(vtkAlgorithm* algorithm, double fraction);
 
-/// What a RequestData's catch block does with an exception once it has emptied its outputs:
-/// reports e.what() as filter's error, as vtkErrorMacro at file and line would, and returns 0, or,
-/// for a stop that a progress observer asked for (tessera::Cancelled), reports nothing and returns
-/// 1. Returns RequestData's result. Called through tesseraErrorOrStopMacro.
-int ErrorOrStop(vtkAlgorithm* filter, const std::exception& e, const char* file, int line);
+/// Whether an exception caught in a RequestData is a stop that a progress observer asked for
+/// (tessera::Cancelled): the outputs are emptied as for an error, but no error is reported
+/// (tesseraErrorOrStopMacro).
+bool IsStop(const std::exception& e);
 
 /// The data of an upstream connection, brought up to date (for a RequestInformation that needs
 /// the input's data: the areal average's time steps, the ridge grouping's image extent).
@@ -334,8 +333,18 @@ void AllocateValues(ArrayT* array, vtkIdType tuples, int components = 1)
 
 } // namespace tessera_vtk
 
-/// In a filter's RequestData catch block: tessera_vtk::ErrorOrStop with the filter's own file and
-/// line in the message, as vtkErrorMacro gives them.
-#define tesseraErrorOrStopMacro(e) tessera_vtk::ErrorOrStop(this, e, __FILE__, __LINE__)
+/// What a filter's RequestData catch block returns once it has emptied its outputs: e.what()
+/// reported by vtkErrorMacro (the filter's own file and line) and 0, or, for a stop that a
+/// progress observer asked for (tessera_vtk::IsStop), nothing reported and 1.
+#define tesseraErrorOrStopMacro(e)                                                                 \
+  [&]() -> int                                                                                     \
+  {                                                                                                \
+    if (tessera_vtk::IsStop(e))                                                                    \
+    {                                                                                              \
+      return 1;                                                                                    \
+    }                                                                                              \
+    vtkErrorMacro(<< (e).what());                                                                  \
+    return 0;                                                                                      \
+  }()
 
 #endif
