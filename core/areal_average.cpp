@@ -1084,7 +1084,7 @@ std::string RoundTheGlobeNote(const std::vector<std::size_t>& offsets,
   for (std::size_t k = begin; k < end; ++k)
   {
     const Point2& a = lonlat[k];
-    const Point2& b = lonlat[k + 1 < end ? k + 1 : begin];
+    const Point2& b = lonlat[NextInRing(k, begin, end)];
     if (std::abs(b.x - a.x) >= 360.0 && a.y == b.y && std::abs(a.y) < 90.0)
     {
       return ": its segment " + std::to_string(k - begin) + " runs along latitude " +
@@ -1117,7 +1117,7 @@ void CheckCatchmentLonLat(const std::vector<std::size_t>& offsets,
     }
     for (std::size_t k = begin; k < end; ++k)
     {
-      CheckEdgeReading(lonlat[k], lonlat[k + 1 < end ? k + 1 : begin], r, k - begin);
+      CheckEdgeReading(lonlat[k], lonlat[NextInRing(k, begin, end)], r, k - begin);
     }
   }
 }
@@ -1206,7 +1206,7 @@ std::vector<int> DensifiedPieceCounts(const CleanRings& rings, double edgeDegree
     for (std::size_t k = begin; k < end; ++k)
     {
       const Point2& a = rings.Vertices[k];
-      const Point2& b = rings.Vertices[k + 1 < end ? k + 1 : begin];
+      const Point2& b = rings.Vertices[NextInRing(k, begin, end)];
       const double wanted = WantedPieceCount(a, b, edgeDegrees);
       if (wanted > double(MaxDensifiedPieces))
       {
@@ -1389,7 +1389,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     for (std::size_t k = begin; k < end; ++k)
     {
       const Point2& a = rings.Vertices[k];
-      const Point2& b = rings.Vertices[k + 1 < end ? k + 1 : begin];
+      const Point2& b = rings.Vertices[NextInRing(k, begin, end)];
       const int pieces = pieceCounts[k];
       for (int i = 0; i < pieces; ++i)
       {

@@ -79,7 +79,7 @@ std::vector<SweepEdge> SweepEdges(const ClippedRings& rings)
     for (std::size_t v = begin; v < end; ++v)
     {
       const Point2& a = rings.Vertices[v];
-      const Point2& b = rings.Vertices[v + 1 == end ? begin : v + 1];
+      const Point2& b = rings.Vertices[NextInRing(v, begin, end)];
       if (a.x < b.x)
       {
         edges.push_back({ a, b, +1 });

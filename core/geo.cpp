@@ -894,7 +894,7 @@ void CheckRingAvoidsPoles(const std::vector<Point2>& lonlat,
   double turn = 0.0, latitudes = 0.0;
   for (std::size_t k = begin; k < end; ++k)
   {
-    turn += LongitudeDifference(lonlat[k].x, lonlat[k + 1 < end ? k + 1 : begin].x);
+    turn += LongitudeDifference(lonlat[k].x, lonlat[NextInRing(k, begin, end)].x);
     latitudes += lonlat[k].y;
   }
   // A closed ring turns through a whole number of turns: 0 unless it goes round a pole.

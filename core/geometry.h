@@ -95,6 +95,13 @@ inline bool ComesFirst(const Point2& p, const Point2& q)
   return (p.x < q.x) | ((p.x == q.x) & (p.y < q.y));
 }
 
+/// The index after k of a ring stored as begin .. end - 1, which closes on itself: the second
+/// vertex of the ring's edge from k.
+inline std::size_t NextInRing(std::size_t k, std::size_t begin, std::size_t end)
+{
+  return k + 1 < end ? k + 1 : begin;
+}
+
 /// The first vertex of a ring (count >= 1) by ComesFirst.
 inline std::size_t LowestVertex(const Point2* ring, std::size_t count)
 {

@@ -69,7 +69,7 @@ void CutEdgesOnTheLine(ClippedRings& side, double at)
     for (std::size_t v = begin; v < end; ++v)
     {
       const Point2& a = side.Vertices[v];
-      const Point2& b = side.Vertices[v + 1 < end ? v + 1 : begin];
+      const Point2& b = side.Vertices[NextInRing(v, begin, end)];
       cut.Vertices.push_back(a);
       if (a.x != at || b.x != at || a.y == b.y)
       {

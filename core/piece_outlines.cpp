@@ -37,7 +37,7 @@ std::vector<Edge> BoundaryEdges(const ClippedRings& pieces, std::size_t first, s
     for (std::size_t v = begin; v < end; ++v)
     {
       const Point2& a = pieces.Vertices[v];
-      const Point2& b = pieces.Vertices[v + 1 < end ? v + 1 : begin];
+      const Point2& b = pieces.Vertices[NextInRing(v, begin, end)];
       if (a != b)
       {
         const bool upward = ComesFirst(a, b);

@@ -381,7 +381,7 @@ ClippedRings ShareBorderVertices(const ClippedRings& given)
       v[k] = { std::ldexp(given.Vertices[k].x, -exponent),
         std::ldexp(given.Vertices[k].y, -exponent) };
       ringOf[k] = r;
-      next[k] = k + 1 < end ? k + 1 : begin;
+      next[k] = NextInRing(k, begin, end);
       prev[k] = k > begin ? k - 1 : end - 1;
     }
   }

@@ -188,7 +188,7 @@ SnappedRings SnapVerticesOntoSegments(const std::vector<std::size_t>& offsets,
     {
       ringOf[k] = r;
       const Point2& a = vertices[k];
-      const Point2& b = vertices[k + 1 < end ? k + 1 : begin];
+      const Point2& b = vertices[NextInRing(k, begin, end)];
       if (nearOthers[r] && Finite(a) && Finite(b) && !(a == b))
       {
         segments.push_back({ r, k, a, b });

@@ -347,10 +347,12 @@ def read_gauge_points(path, id_field=None):
         table.add(block.GetPoint(block.GetCell(0).GetPointId(0)), station, attribute_text(name).strip() if name else "")
     gauges = table.data
     xy = [gauges.GetPoint(g)[:2] for g in range(gauges.GetNumberOfPoints())]
-    system = projected_input.declared_system(reader, [xy], path, points=True,
-                                             point_name=lambda g: f"feature {numbered[g][0]}")
+    def feature(g):
+        return f"feature {numbered[g][0]} (counted from 1)"
+
+    system = projected_input.declared_system(reader, [xy], path, points=True, point_name=feature)
     if system:
-        gauges = projected_input.to_lonlat(gauges, system, lambda g: f"{path}: feature {numbered[g][0]}")
+        gauges = projected_input.to_lonlat(gauges, system, lambda g: f"{path}: {feature(g)}")
     say_declared_systems(reader, path, system, points=True)
     return gauges, [k for k, _ in numbered]
 
@@ -1713,7 +1715,7 @@ class InputFiles:
             # number, is what to look at)
             text = re.sub(r"^gauge \d+ \(station ([^)]*)\)", r"station \1", text)
             if self.place_word() == "feature":
-                return f"{self.stations}: feature {self.gauge_lines[g]}: {text}"
+                return f"{self.stations}: feature {self.gauge_lines[g]} (counted from 1): {text}"
             return f"{self.stations}:{self.gauge_lines[g]}: {text}"
         row = re.match(r"observation row (\d+): (.*)", text)
         if row and self.row_line(int(row.group(1))):

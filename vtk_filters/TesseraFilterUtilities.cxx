@@ -1100,6 +1100,12 @@ void CheckCellPointIds(vtkDataSet* data, const std::string& what)
   }
 }
 
+void CheckArraysAndCellPointIds(vtkDataSet* data, const std::string& what)
+{
+  CheckAttributeLengths(data, what);
+  CheckCellPointIds(data, what);
+}
+
 void RequestWholeInputs(vtkInformationVector** inputVector, int firstPort, int lastPort)
 {
   for (int port = firstPort; port <= lastPort; ++port)

@@ -90,6 +90,10 @@ void CheckAttributeLengths(vtkDataSet* data, const std::string& what);
 /// cells are implicit in their dimensions).
 void CheckCellPointIds(vtkDataSet* data, const std::string& what);
 
+/// CheckAttributeLengths and then CheckCellPointIds: for data whose arrays a filter copies by id
+/// and whose cells it reads.
+void CheckArraysAndCellPointIds(vtkDataSet* data, const std::string& what);
+
 /// An array as messages name it: "'Area'", or "without a name".
 std::string ArrayLabel(vtkAbstractArray* array);
 

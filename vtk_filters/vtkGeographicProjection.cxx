@@ -591,8 +591,7 @@ std::vector<Piece> PiecesOf(vtkDataObject* input, vtkDataObject* output)
       throw tessera::InputError(std::string("the input is a ") + input->GetClassName() +
         ", not a point set or a composite of point sets");
     }
-    tessera_vtk::CheckAttributeLengths(in, "the input");
-    tessera_vtk::CheckCellPointIds(in, "the input");
+    tessera_vtk::CheckArraysAndCellPointIds(in, "the input");
     return { Piece{ in, out, std::string() } };
   }
   auto* compositeOutput = vtkCompositeDataSet::SafeDownCast(output);
@@ -611,8 +610,7 @@ std::vector<Piece> PiecesOf(vtkDataObject* input, vtkDataObject* output)
     {
       throw tessera::InputError(label + " is a " + leaf->GetClassName() + ", not a point set");
     }
-    tessera_vtk::CheckAttributeLengths(in, label);
-    tessera_vtk::CheckCellPointIds(in, label);
+    tessera_vtk::CheckArraysAndCellPointIds(in, label);
     vtkSmartPointer<vtkPointSet> out;
     out.TakeReference(in->NewInstance());
     compositeOutput->SetDataSet(it, out);

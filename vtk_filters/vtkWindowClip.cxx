@@ -354,8 +354,7 @@ void ClipBlock(vtkPointSet* tiles,
   std::vector<std::string>& warnings)
 {
   // (the tiles' arrays are copied by cell id: a short one was read past its end)
-  tessera_vtk::CheckAttributeLengths(tiles, "the tiles (input 0)");
-  tessera_vtk::CheckCellPointIds(tiles, "the tiles (input 0)");
+  tessera_vtk::CheckArraysAndCellPointIds(tiles, "the tiles (input 0)");
   const std::string pointDataWarning = PointDataWarning(tiles);
   if (!pointDataWarning.empty())
   {

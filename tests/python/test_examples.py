@@ -941,8 +941,8 @@ def outside_lines(runs):
     """The lines of unused_inputs.csv's rows of observations outside --start/--end (a line, or
     first-last for a run of them), ascending."""
     lines = []
-    for run in runs:
-        first, _, last = run["line"].partition("-")
+    for span in runs:
+        first, _, last = span["line"].partition("-")
         lines.extend(range(int(first), int(last or first) + 1))
     return sorted(lines)
 
@@ -976,13 +976,13 @@ def test_start_and_end_choose_the_period():
             listed = outside_lines(runs)
             assert_that(sorted(listed) == sorted(outside) and outside, f"{start} to {end}: {len(listed)} observations "
                         f"listed outside, the file has {len(outside)}")
-            for run in runs:  # (the file is in time order: a run of several stations before, one after)
-                lines = outside_lines([run])
+            for span in runs:  # (the file is in time order: a run of several stations before, one after)
+                lines = outside_lines([span])
                 names = {outside[line] for line in lines}
-                said = (run["station_id"], run["note"])
+                said = (span["station_id"], span["note"])
                 expected = ((names.pop(), "") if len(lines) == 1 else (next(iter(names)), f"{len(lines)} observations")
                             if len(names) == 1 else ("", f"{len(lines)} observations of {len(names)} stations"))
-                assert_that(said == expected, f"{start} to {end}: the run {run}, expected {expected}")
+                assert_that(said == expected, f"{start} to {end}: the run {span}, expected {expected}")
             assert_that(len(runs) == (1 if start == "1894-11" else 2), f"{start} to {end}: the runs {runs}")
             assert_that(f"{len(outside)} observation(s) outside --start/--end are not used" in stderr, stderr)
             assert_that(f"{len(outside)} of them outside --start/--end)" in stdout, stdout)
@@ -2512,7 +2512,7 @@ def test_catchment_geopackage_in_metres_beside_a_layer_of_lon_lat_points():
         # named too, not taken for another layer's feature.
         far = dict(LAKE_GAUGES, N3=(175.95, 8e2))
         for name, gauges, fragment in (
-                ("far", list(far.items()), "feature 4: "),
+                ("far", list(far.items()), "feature 4 (counted from 1): "),
                 ("null", list(LAKE_GAUGES.items()) + [("N7", None)], "feature 8 is not one point")):
             bad = geopackage_of(os.path.join(out, f"{name}.gpkg"), [
                 ("basin", wkt, "POLYGON", [[systems["lake_aea"][1](ring) for ring in lake_rings_cut()]]),
@@ -2919,7 +2919,7 @@ def test_gauges_from_a_gis_file_of_points_give_the_csv_means():
         code = os.path.join(out, "code.geojson")
         far = points_file(out, "far.geojson", [(175.6, -39.1), (176.4, 95.0)], "station_id")
         for options, message in (
-                ({"stations": far}, f"{far}: feature 2: station N2 has an invalid longitude/latitude (176.4, 95)"),
+                ({"stations": far}, f"{far}: feature 2 (counted from 1): station N2 has an invalid longitude/latitude (176.4, 95)"),
                 ({"stations": code}, f"{code}: no attribute holds the station ids (station_id, station, site_no, id); "
                                      "its attributes: code, Name (give the one holding the ids with --stations-id)"),
                 ({"stations": code, "stations-id": "kode"}, f"{code}: no attribute named 'kode'"),
