@@ -63,8 +63,11 @@
  * point counting once); sizes above 2048 are refused before anything is allocated (the FFT would
  * need more than 512 MiB). NaN or infinite coordinates are an error naming the point. Open
  * contours whose ends lie within 4 basis widths of each other, one looking towards the other (a
- * curve broken where its points lie further apart than the basis reaches), are named in a warning
- * with the places, and so is a Width below one pixel. Contours that run more than 3 basis widths
+ * curve broken where its points lie further apart than the basis reaches; a group's own two ends
+ * whichever way they look), are named in a warning with the places, and so is a Width below one
+ * pixel. A contour that passes within 4 basis widths of itself where it is much further along
+ * itself (running along one curve and back along another beside it, grouping both) is named in a
+ * warning with the places. Contours that run more than 3 basis widths
  * from every point (the field's ridge across empty space, which can join points of curves far
  * apart into one group) are named with the stretch, and so are contours that no point is grouped
  * by (they are in output 1 with no group and no curve). The image spans every point, so a few
