@@ -44,9 +44,9 @@ def read_quakes(path):
             return math.nan
         return csv_input.number(row, column, path, line)
 
-    for line, row in csv_input.rows(path, ("lat", "long"), "epicentres", optional=("depth", "mag")):
+    for line, row in csv_input.rows(path, ("lat", "lon"), "epicentres", optional=("depth", "mag")):
         lines.append(line)
-        lon, lat = csv_input.number(row, "long", path, line), csv_input.number(row, "lat", path, line)
+        lon, lat = csv_input.number(row, "lon", path, line), csv_input.number(row, "lat", path, line)
         points.InsertNextPoint(lon, lat, 0.0)
         depth.InsertNextValue(passenger(row, "depth", line))
         mag.InsertNextValue(passenger(row, "mag", line))
@@ -102,7 +102,8 @@ def polylines(data):
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--quakes", default=os.path.join(HERE, "data", "fiji_quakes.csv"),
-                        help=f"CSV of epicentres: columns lat, long (degrees), and optionally depth and mag "
+                        help=f"CSV of epicentres: columns lat, lon (degrees; also read as latitude, longitude, "
+                             f"long or lng), and optionally depth and mag "
                              f"(carried to the output, not used; empty or missing values are NaN); "
                              f"{csv_input.SEPARATORS_TEXT} (default: examples/data/fiji_quakes.csv)")
     parser.add_argument("--out", default="out", help="output directory, created if missing (default: out)")

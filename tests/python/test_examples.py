@@ -3150,9 +3150,21 @@ def test_the_other_examples_run_on_their_data():
                     f"the far epicentres' lines: {stderr}")
         quakes = os.path.join(out, "quakes.csv")
         with open(quakes, "w") as f:
-            f.write("lat,lon\n1,2\n")
+            f.write("lat,east\n1,2\n")
         status, _, stderr = run_example("ridge_grouping.py", "--out", out, "--quakes", quakes)
-        assert_that(status == 1 and "no column 'long' (it needs lat, long" in stderr, f"ridge_grouping.py: {stderr}")
+        assert_that(status == 1 and "no column 'lon' (it needs lat, lon" in stderr, f"ridge_grouping.py: {stderr}")
+        # Longitude by any of its usual names (the Fiji file's is long): the same groups (only
+        # lon, longitude and lng were refused).
+        with open(os.path.join(EXAMPLE_DATA, "fiji_quakes.csv")) as f:
+            fiji = f.read()
+        for name in ("lon", "longitude", "lng"):
+            with open(quakes, "w") as f:
+                f.write(fiji.replace('"long"', f'"{name}"', 1))
+            renamed = os.path.join(out, name)
+            status, _, stderr = run_example("ridge_grouping.py", "--out", renamed, "--quakes", quakes)
+            same = read_polydata(os.path.join(renamed, "fiji_points.vtp")).GetPointData().GetArray("GroupId")
+            assert_that(status == 0 and [same.GetValue(i) for i in range(same.GetNumberOfTuples())]
+                        == [groups.GetValue(i) for i in range(groups.GetNumberOfTuples())], f"{name}: {stderr}")
         # depth and mag only ride along: a file without them, or with a value missing, is grouped
         # (a missing depth stopped the run), the missing values NaN in the points' arrays.
         from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
@@ -3171,9 +3183,9 @@ def test_the_other_examples_run_on_their_data():
                         and all(math.isnan(depth.GetValue(k)) for k in range(300)), f"{header}: {status} {stderr}")
         # An epicentre the projection rejects, a file without rows and a grouping error: one line
         # each (the file's line of the epicentre), no VTK log, no traceback.
-        north = write(out, "north.csv", "lat,long,depth,mag\n-20.4,181.6,562,4.8\n\n95,181,100,4.5\n")
-        empty = write(out, "empty.csv", "lat,long,depth,mag\n")
-        two = write(out, "two.csv", "lat,long,depth,mag\n-20,181,1,1\n-21,182,1,1\n")
+        north = write(out, "north.csv", "lat,lon,depth,mag\n-20.4,181.6,562,4.8\n\n95,181,100,4.5\n")
+        empty = write(out, "empty.csv", "lat,lon,depth,mag\n")
+        two = write(out, "two.csv", "lat,lon,depth,mag\n-20,181,1,1\n-21,182,1,1\n")
         for extra, expected in (
                 (("--quakes", north), f"{north}:4: epicentre at (181, 95) has a latitude beyond 90 degrees"),
                 (("--quakes", empty), f"{empty}: no epicentres to group (the file has no rows)"),
@@ -3266,9 +3278,9 @@ def test_ridge_grouping_names_a_bad_epicentre_alone():
     # projection's empty output, so no warning of its about "0 points" comes before the line.
     with tempfile.TemporaryDirectory() as directory:
         out = os.path.join(directory, "out")
-        after_one = write(directory, "after_one.csv", "lat,long,depth,mag\n-20,181,500,4.5\n95,182,500,4.5\n")
-        alone = write(directory, "alone.csv", "lat,long,depth,mag\n-91,181,500,4.5\n")
-        among = write(directory, "among.csv", "lat,long,depth,mag\n-20,181,1,1\n-21,182,1,1\n\n"
+        after_one = write(directory, "after_one.csv", "lat,lon,depth,mag\n-20,181,500,4.5\n95,182,500,4.5\n")
+        alone = write(directory, "alone.csv", "lat,lon,depth,mag\n-91,181,500,4.5\n")
+        among = write(directory, "among.csv", "lat,lon,depth,mag\n-20,181,1,1\n-21,182,1,1\n\n"
                                               "90.5,181,1,1\n-22,183,1,1\n")
         for quakes, expected in (
                 (after_one, f"{after_one}:3: epicentre at (182, 95) has a latitude beyond 90 degrees"),
