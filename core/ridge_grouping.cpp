@@ -474,7 +474,10 @@ void NameStretchingPoints(const std::vector<Point2>& points,
 /// contours too short, or too short a loop; no crest (segments without a major-ridge pixel); or
 /// no ridge at all. (It blamed the minimum length alone, and so misled at a minimum of 0: four
 /// points on an arc left 12 major-ridge pixels and no contour.)
-std::string NoContourWarning(const RidgeContours& contours, const RidgeContourSettings& settings)
+std::string NoContourWarning(const RidgeContours& contours,
+  const RidgeContourSettings& settings,
+  double basisWidth,
+  const PixelGrid& grid)
 {
   std::string why;
   if (contours.ShortContourCount > 0 || contours.ShortLoopCount > 0)
@@ -499,9 +502,18 @@ std::string NoContourWarning(const RidgeContours& contours, const RidgeContourSe
   {
     why = "the field has no ridge line";
   }
+  // A basis an eighth of the image wide or more makes broad hills: a larger one was advised
+  // where a Width of 100 pixels in an image of 20 had left the field one hill.
+  const bool wide = 8.0 * basisWidth >= std::max(grid.Width, grid.Height);
   return "no ridge contour: " + why +
     "; no point is grouped (too few points, or points further apart than the basis reaches: a "
-    "larger Width may join them)";
+    "larger Width may join them" +
+    (wide ? "; or the basis is so wide against the image (Width " + NumberText(basisWidth) +
+          " pixels, image " + std::to_string(grid.Width) + " x " + std::to_string(grid.Height) +
+          ") that the field is a broad hill without ridges: a smaller Width, or a larger "
+          "ImageSize, may give it ridges"
+          : std::string()) +
+    ")";
 }
 
 /// Open groups' ends within this many basis widths of another end are named (NameNearContourEnds).
@@ -523,7 +535,8 @@ std::string PlaceText(const PixelGrid& grid, const Point2& at)
 }
 
 /// A warning naming pairs of open groups' ends that lie within NearEndWidths basis widths of each
-/// other, one looking towards the other (the two ends of one long contour included). A group's end
+/// other, one looking towards the other (the two ends of one long contour whichever way they look,
+/// below). A group's end
 /// is where its points end: its point of the smallest node for the contour's first end, of the
 /// largest for its last (the contour's end pixel for a contour without points). A contour stops
 /// some basis widths before the points along it (point_partition.h), so its end pixels were 9.4
@@ -624,6 +637,8 @@ std::vector<std::uint8_t> NameNearContourEnds(const GroupedPoints& grouped,
     const double dot = dx * end.Outward.x + dy * end.Outward.y;
     return dot > cos45 * std::hypot(dx, dy) * std::hypot(end.Outward.x, end.Outward.y);
   };
+  // Whether a contour is long enough to be a curve bent back on itself.
+  const auto isLong = [&](int c) { return contours.Lengths[std::size_t(c)] >= 4.0 * reach; };
   // Whether two ends look the same way (within 45 degrees).
   const auto sameWay = [cos45](const End& u, const End& v)
   {
@@ -648,7 +663,7 @@ std::vector<std::uint8_t> NameNearContourEnds(const GroupedPoints& grouped,
       // One contour's own ends: only a contour long enough to be a curve bent back on itself
       // (a short one's ends are near by its shortness).
       const bool own = u.Contour == v.Contour;
-      if (pixels > reach || (own && contours.Lengths[std::size_t(u.Contour)] < 4.0 * reach))
+      if (pixels > reach)
       {
         continue;
       }
@@ -656,10 +671,12 @@ std::vector<std::uint8_t> NameNearContourEnds(const GroupedPoints& grouped,
       // (a contour's own ends side by side and looking the same way, further apart than merged
       // curves lie, are the ends of a fold: NameFoldedContours)
       const bool folded = own && !looking && sameWay(u, v) && pixels > MergedCurvesWidths * width;
-      if (looking || (own && !folded))
+      // A short contour's own ends are near by its shortness, and not named; but it is no fold
+      // either (a C of 10.7 widths, its ends 1.3 radians apart, was named as one).
+      nearlyClosed[std::size_t(u.Contour)] |= own && !folded;
+      if (looking ? !own || isLong(u.Contour) : own && !folded && isLong(u.Contour))
       {
         near.push_back({ u, v, pixels });
-        nearlyClosed[std::size_t(u.Contour)] |= own;
       }
     }
   }
@@ -680,7 +697,8 @@ std::vector<std::uint8_t> NameNearContourEnds(const GroupedPoints& grouped,
   result.Warnings.push_back(std::to_string(near.size()) +
     " pair(s) of open contour ends (where their groups' points end) lie within " +
     NumberText(NearEndWidths) + " basis widths (" + NumberText(reach * grid.Spacing) +
-    " in the points' units) of each other, one looking towards the other: a curve may be broken "
+    " in the points' units) of each other, one looking towards the other (a group's own two ends "
+    "whichever way they look): a curve may be broken "
     "there, where its points lie further apart than the basis reaches (a sparse stretch; or "
     "clean, dense points, which take a large automatic ImageSize, in whose pixels the basis is "
     "narrow), or where another curve's field close by bends its crest; a larger Width, or a "
@@ -700,14 +718,15 @@ std::vector<std::uint8_t> NameNearContourEnds(const GroupedPoints& grouped,
 
 /// A warning naming the contours that pass within FoldWidths basis widths of themselves (d) where
 /// they are much further along themselves (s, the shorter way round a closed contour): s at least
-/// pi / 2 d + FoldWidths widths. Contours whose own ends NameNearContourEnds named (a closed curve
-/// broken, its ends perhaps run past each other) are left out. Such a contour runs
-/// out along one curve and back along another beside it, grouping the two as one: noisy lines
-/// 3.3 widths apart came out as one group, along one line and back along the next, in 8 of 12
-/// trials, and nothing was said. A circle (or any convex loop) has s at most pi / 2 d; a hairpin
-/// needs arms of about 2 widths beyond its turn to reach the margin, a V of 30 degrees arms of 3.4.
-/// The closest such pair per contour is named. Pairs are found among the contour pixels in cells of
-/// FoldWidths widths.
+/// pi / 2 d + FoldWidths widths. Contours whose own ends NameNearContourEnds took for a closed
+/// curve broken (its ends perhaps run past each other) are left out. Such a contour runs out along
+/// one curve and back along another beside it, grouping the two as one: noisy lines 3.3 widths
+/// apart came out as one group, along one line and back along the next, in 10 of 40 trials, and
+/// nothing was said. A circle has s at most pi / 2 d; a hairpin needs arms of about 2 widths beyond
+/// its turn to reach the margin, a V of 30 degrees arms of 3.4 (only Vs sharper than some 46
+/// degrees are named); a loop much longer than wide (an ellipse of 100 by 8) is named too: to the
+/// field its two sides are two curves side by side. The closest such pair per contour is named.
+/// Pairs are found among the contour pixels in square cells at least as wide as the reach.
 ///
 ///    .-------------------->      d: across the fold (at most FoldWidths)
 ///   (         | d                s: along the contour, round the turn
@@ -742,14 +761,16 @@ void NameFoldedContours(const GroupedPoints& grouped,
     }
     loopLength[std::size_t(c)] = contours.Closed[c] ? contours.Lengths[std::size_t(c)] : 0.0;
   }
-  // Stations bucketed in square cells of side reach: a pair within reach lies in neighbouring
-  // cells.
-  const int columns = std::max(1, int(std::ceil(grid.Width / reach)));
-  const int rows = std::max(1, int(std::ceil(grid.Height / reach)));
+  // Stations bucketed in square cells of side at least reach: a pair within reach lies in
+  // neighbouring cells. At least 4 pixels: a Width below one pixel (warned of, not refused) made
+  // cells of a fraction of a pixel, and their empty lists took gigabytes.
+  const double side = std::max(reach, 4.0);
+  const int columns = std::max(1, int(std::ceil(grid.Width / side)));
+  const int rows = std::max(1, int(std::ceil(grid.Height / side)));
   const auto cellOf = [&](const Point2& p)
   {
-    const int i = std::min(columns - 1, std::max(0, int(p.x / reach)));
-    const int j = std::min(rows - 1, std::max(0, int(p.y / reach)));
+    const int i = std::min(columns - 1, std::max(0, int(p.x / side)));
+    const int j = std::min(rows - 1, std::max(0, int(p.y / side)));
     return std::make_pair(i, j);
   };
   std::vector<std::vector<std::size_t>> cells(std::size_t(columns) * std::size_t(rows));
@@ -1056,7 +1077,8 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
   result.MajorRidge = std::move(masks.Major);
   if (contours.Count() == 0)
   {
-    result.Warnings.push_back(NoContourWarning(contours, contourSettings));
+    result.Warnings.push_back(
+      NoContourWarning(contours, contourSettings, this->Settings.Width, grid));
   }
 
   // Points past a contour end continue it while each is within two basis widths of the one

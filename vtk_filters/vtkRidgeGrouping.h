@@ -31,7 +31,10 @@
  *
  * Outputs (array names are API):
  * - 0 (vtkPolyData): the input points (one vertex each, point data passed) with point data
- *   `GroupId` (int; the contour of the point, -1 = unassigned), `Node` (double in [0, 1]) and
+ *   `GroupId` (int; the contour of the point, -1 = unassigned), `Node` (double in [0, 1]: the
+ *   point's place along its contour, by the contour pixel it is projected on, so points on one
+ *   pixel share a Node and have no order among themselves; 0 for an unassigned point, so select
+ *   GroupId >= 0 before ordering by Node) and
  *   `ContourDistance` (double; from the point to the contour pixel it is grouped by, in the
  *   points' units, NaN when unassigned or when there is no contour: points beyond 10 basis
  *   widths are named in a warning; for points past an open contour's end that continue it,

@@ -599,9 +599,12 @@ TEST(RidgeGrouping, IdenticalPointsGiveOneGroupAndNoCurve)
 {
   const std::vector<Point2> points(17, Point2{ 3.5, -2.0 });
   const RidgeGroupingResult result = RidgeGrouping(TestSettings()).Run(points);
-  for (int g : result.GroupId)
+  ASSERT_EQ(result.GroupId.size(), points.size());
+  ASSERT_EQ(result.Node.size(), points.size());
+  for (std::size_t k = 0; k < points.size(); ++k)
   {
-    EXPECT_EQ(g, 0);
+    EXPECT_EQ(result.GroupId[k], 0);
+    EXPECT_EQ(result.Node[k], 0.0);
   }
   EXPECT_EQ(result.Curves.Count(), 0);
   EXPECT_EQ(result.Contours.Count(), 0);
@@ -645,13 +648,15 @@ std::vector<std::string> WarningsWith(const RidgeGroupingResult& result, const s
 // 1 (the first such point; the contour's end where the group has no point), the directions come
 // from the contour polylines. A long group's own two ends count whichever way they look, but for
 // the ends of a fold (looking the same way, side by side, more than 2 widths apart); with
-// ownAnyWay false, only where one looks at the other. The warning's pairs, found independently,
-// as (group, group).
+// ownAnyWay false, only where one looks at the other; with ownAnyLength, a group's own ends
+// however short its contour (a closed curve broken, to the fold check). The warning's pairs,
+// found independently, as (group, group).
 std::set<std::pair<int, int>> NearOpenEndPairs(const RidgeGroupingResult& result,
   const std::vector<Point2>& points,
   double widths,
   double width,
-  bool ownAnyWay = true)
+  bool ownAnyWay = true,
+  bool ownAnyLength = false)
 {
   // Per group, its point with the smallest and with the largest node, of equal nodes the nearest
   // to the contour's end (its first or last polyline point).
@@ -731,7 +736,7 @@ std::set<std::pair<int, int>> NearOpenEndPairs(const RidgeGroupingResult& result
         !looking && within45(u.Outward, v.Outward) && apart > 2 * width * result.PixelSize;
       if (apart <= reach * (1 + 1e-12) &&
         (own ? (ownAnyWay ? !fold : looking) &&
-              result.ContourLength[std::size_t(u.Contour)] >= 4 * reach
+              (ownAnyLength || result.ContourLength[std::size_t(u.Contour)] >= 4 * reach)
              : looking))
       {
         pairs.insert({ u.Contour, v.Contour });
@@ -752,12 +757,13 @@ int NearOpenEnds(const RidgeGroupingResult& result,
 // The groups whose contour passes within 4 basis widths of itself (across, d) where it is at
 // least pi / 2 d + 4 widths further along itself (the shorter way round a closed contour), by
 // brute force over every pair of the contour polylines' points; not the groups whose own two ends
-// NearOpenEndPairs names (a closed curve broken).
+// lie near each other but for a fold's (a closed curve broken, however short).
 std::set<int> FoldedGroups(const RidgeGroupingResult& result,
   const std::vector<Point2>& points,
   double width)
 {
-  const std::set<std::pair<int, int>> near = NearOpenEndPairs(result, points, 4.0, width);
+  const std::set<std::pair<int, int>> near =
+    NearOpenEndPairs(result, points, 4.0, width, true, true);
   const double reach = 4.0 * width * result.PixelSize;
   const tessera::Polylines& lines = result.Contours;
   std::set<int> folded;
@@ -784,7 +790,7 @@ std::set<int> FoldedGroups(const RidgeGroupingResult& result,
         const double across = std::hypot(a.x - b.x, a.y - b.y);
         const double along =
           closed ? std::min(arc[j] - arc[i], loop - (arc[j] - arc[i])) : arc[j] - arc[i];
-        if (across <= reach && along >= 0.5 * Pi * across + reach)
+        if (across <= reach * (1 + 1e-12) && along >= 0.5 * Pi * across + reach * (1 - 1e-12))
         {
           folded.insert(c);
           break;
@@ -982,10 +988,16 @@ TEST(RidgeGrouping, AClosedCurveBrokenOpenIsNamedWhereverItsEndsLook)
         EXPECT_EQ(named.front().rfind(std::to_string(pairs.size()) + " pair(s)", 0), 0u)
           << "seed " << seed << ": " << named.front();
       }
-      const bool own = pairs.count({ 0, 0 }) > 0;
-      broken += own;
-      pastEachOther +=
-        own && !NearOpenEndPairs(result, circle, 4.0, settings.Width, false).count({ 0, 0 });
+      for (int g = 0; g < result.Contours.Count(); ++g)
+      {
+        const bool own = pairs.count({ g, g }) > 0;
+        const std::string ends = "group " + std::to_string(g) + "'s two ends";
+        EXPECT_EQ(own, !named.empty() && named.front().find(ends) != std::string::npos)
+          << "seed " << seed << ": " << (named.empty() ? "no warning" : named.front());
+        broken += own;
+        pastEachOther +=
+          own && !NearOpenEndPairs(result, circle, 4.0, settings.Width, false).count({ g, g });
+      }
       EXPECT_TRUE(NamedFolds(result).empty()) << "seed " << seed;
       EXPECT_TRUE(FoldedGroups(result, circle, settings.Width).empty()) << "seed " << seed;
     }
@@ -998,7 +1010,7 @@ TEST(RidgeGrouping, AClosedCurveBrokenOpenIsNamedWhereverItsEndsLook)
 // runs a contour runs along one line, round its end and back along the next, grouping points of
 // both, and nothing was said. The groups named as folded are those found by brute force over the
 // contour polylines (FoldedGroups), and each holds points of two lines; lines 24 units apart
-// (LinesSideBySide) and a line alone name none.
+// (LinesSideBySide) and a line alone name none; a thin ellipse is named, a circle not.
 TEST(RidgeGrouping, AContourFoldedBackAlongAnotherCurveIsNamed)
 {
   RidgeGroupingSettings settings;
@@ -1049,6 +1061,23 @@ TEST(RidgeGrouping, AContourFoldedBackAlongAnotherCurveIsNamed)
     line.push_back({ 0.5 * k, 0.3 * std::sin(1.7 * k) });
   }
   EXPECT_TRUE(NamedFolds(RidgeGrouping().Run(line)).empty());
+
+  // A loop much longer than wide (an ellipse of 100 by 8, 2.1 Gaussian widths across at 256
+  // pixels) is named too; a circle of the same points' spread is not.
+  settings.ImageSize = 256;
+  for (const double height : { 4.0, 50.0 })
+  {
+    std::vector<Point2> loop;
+    for (int k = 0; k < 600; ++k)
+    {
+      const double t = 2 * Pi * k / 600;
+      loop.push_back({ 50.0 * std::cos(t), height * std::sin(t) });
+    }
+    const RidgeGroupingResult result = RidgeGrouping(settings).Run(loop);
+    const std::set<int> folded = FoldedGroups(result, loop, settings.Width);
+    EXPECT_EQ(NamedFolds(result), folded) << "height " << height;
+    EXPECT_EQ(folded.size(), height < 10.0 ? 1u : 0u) << "height " << height;
+  }
 }
 
 TEST(RidgeGrouping, ContoursAcrossEmptySpaceAreNamed)
@@ -1499,10 +1528,24 @@ TEST(RidgeGrouping, NoContourWarningSaysWhereTheRidgesWereLost)
     std::string::npos)
     << named[0];
   EXPECT_EQ(named[0].find("minimum length"), std::string::npos) << named[0];
+  ASSERT_EQ(result.GroupId.size(), arc.size());
   for (int g : result.GroupId)
   {
     EXPECT_EQ(g, -1);
   }
+  EXPECT_EQ(named[0].find("the basis is so wide"), std::string::npos) << named[0];
+
+  // A noisy circle under a basis as wide as half the image: one broad hill. The advice names the
+  // width against the image (a larger Width alone was advised).
+  RidgeGroupingSettings wide;
+  wide.ImageSize = 64;
+  wide.Width = 20.0;
+  const RidgeGroupingResult hill = RidgeGrouping(wide).Run(NoisyCircle(300, 10.0, 0.2, 3));
+  const std::vector<std::string> said = WarningsWith(hill, "no ridge contour: ");
+  ASSERT_EQ(said.size(), 1u) << hill.Contours.Count() << " contours";
+  EXPECT_NE(said[0].find("the basis is so wide against the image (Width 20 pixels, image 64 x"),
+    std::string::npos)
+    << said[0];
 }
 
 } // namespace
