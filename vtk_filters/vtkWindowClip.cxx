@@ -207,8 +207,13 @@ std::string ProjectionWarning(vtkDataObject* tiles, vtkDataObject* window)
   const std::string projected = ofTiles.empty() ? "the window (input 1)" : "the tiles (input 0)";
   const std::string other = ofTiles.empty() ? "the tiles (input 0)" : "the window (input 1)";
   double projectedBounds[6], otherBounds[6];
+  if (!tessera_vtk::DataBounds(ofTiles.empty() ? tiles : window, otherBounds))
+  {
+    // (an empty input has no record to carry: tiles whose tessellation failed upstream were said
+    // to carry none, which pointed at the projection)
+    return std::string();
+  }
   if (tessera_vtk::DataBounds(ofTiles.empty() ? window : tiles, projectedBounds) &&
-    tessera_vtk::DataBounds(ofTiles.empty() ? tiles : window, otherBounds) &&
     ReachesMetres(projectedBounds) && WithinDegrees(otherBounds))
   {
     throw tessera::InputError(projected + " is projected (TesseraProjection " + ofTiles + ofWindow +
@@ -624,6 +629,12 @@ int vtkWindowClip::RequestData(vtkInformation*,
     if (!projectionWarning.empty())
     {
       vtkWarningMacro(<< projectionWarning);
+    }
+    double tilesBounds[6];
+    if (!tessera_vtk::DataBounds(tilesData, tilesBounds))
+    {
+      vtkWarningMacro(<< "the tiles (input 0) have no points, so nothing is clipped (did the filter "
+                         "that makes them fail?)");
     }
     std::vector<std::string> ringWarnings;
     const tessera_vtk::Rings window =

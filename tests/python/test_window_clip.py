@@ -562,6 +562,11 @@ def test_tiles_and_window_must_share_their_projection():
     assert_that(not errors and len(warnings) == 1 and "the window (input 1) carries" in warnings[0]
                 and "the tiles (input 0) none" in warnings[0] and output.GetNumberOfCells() == 4,
                 f"one record, both in metres: {errors} {warnings}")
+    # Empty tiles (a tessellation upstream that failed) against a projected window: said to have
+    # no points, not to carry no record (which pointed at the projection).
+    output, errors, warnings = clip_by(vtkPolyData(), projected(catchment, False))
+    assert_that(not errors and len(warnings) == 1 and "the tiles (input 0) have no points" in warnings[0]
+                and output.GetNumberOfCells() == 0, f"empty tiles: {errors} {warnings}")
     # A window of blocks projected apart (each with its own automatic projection) is refused.
     from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
 
