@@ -76,7 +76,7 @@ CleanRings DropRepeats(const std::vector<std::size_t>& ringOffsets,
     const std::size_t end = ringOffsets[r + 1];
     for (std::size_t v = begin; v < end; ++v)
     {
-      const std::size_t next = v + 1 == end ? begin : v + 1;
+      const std::size_t next = NextInRing(v, begin, end);
       if (vertices[v] != vertices[next])
       {
         clean.Vertices.push_back(vertices[v]);
@@ -134,7 +134,7 @@ std::vector<Segment> CollectSegments(const CleanRings& clean)
     const std::size_t end = clean.RingOffsets[r + 1];
     for (std::size_t v = begin; v < end; ++v)
     {
-      const std::size_t next = v + 1 == end ? begin : v + 1;
+      const std::size_t next = NextInRing(v, begin, end);
       const Point2& a = clean.Vertices[v];
       const Point2& b = clean.Vertices[next];
       segments.push_back({ r,

@@ -1574,7 +1574,21 @@ TEST(ArealAverage, GaugesUlpsApartWithoutGroupingGiveFiniteWeightsNotErrors)
   const ArealStep reference = lone.Step({ 1.0, 2.0, 3.0, 4.0 });
   ArealStep x;
   ASSERT_NO_THROW(x = a.Step({ 1.0, 2.0, 2.0, 2.0, 3.0, 4.0 }));
-  EXPECT_NO_THROW(a.CurrentClippedTiles()); // the display clips the same tiles
+  // The display clips the same tiles: per tile, its pieces' areas add up to its gauge's area.
+  const tessera::ClippedTilesLonLat shown = a.CurrentClippedTiles();
+  ASSERT_EQ(shown.Gauges.size(), x.Gauges.size());
+  for (std::size_t k = 0; k < shown.Gauges.size(); ++k)
+  {
+    const auto at = std::find(x.Gauges.begin(), x.Gauges.end(), shown.Gauges[k]);
+    ASSERT_NE(at, x.Gauges.end()) << "tile of gauge " << shown.Gauges[k] << " is not weighted";
+    double pieces = 0.0;
+    for (std::size_t p = shown.TilePieceOffsets[k]; p < shown.TilePieceOffsets[k + 1]; ++p)
+    {
+      pieces += shown.PieceAreasM2[p];
+    }
+    const double area = x.AreasM2[std::size_t(at - x.Gauges.begin())];
+    EXPECT_NEAR(pieces, area, 1e-9 * area) << "gauge " << shown.Gauges[k];
+  }
   double place = 0.0;
   for (std::size_t k = 0; k < x.Gauges.size(); ++k)
   {

@@ -1324,6 +1324,33 @@ TEST(Clip, PartsMeetingAtCornersSumToTheirArea)
 
 // ---- Bad input ---------------------------------------------------------------------------------
 
+// ValidateRings, which other tests use to say the library's rings are simple, agrees with an
+// exact test of every pair of edges (RingDefect) on random rings of 3 to 7 vertices on a 4 x 4
+// lattice: most touch, cross or double back on themselves; some are simple.
+TEST(Clip, ValidateRingsAgreesWithAnExactTestOfEveryPairOfEdges)
+{
+  std::mt19937 random(5);
+  std::uniform_int_distribution<int> coordinate(0, 3), size(3, 7);
+  int simple = 0, refused = 0;
+  for (int trial = 0; trial < 20000; ++trial)
+  {
+    std::vector<Point2> ring(std::size_t(size(random)));
+    for (Point2& p : ring)
+    {
+      p = { double(coordinate(random)), double(coordinate(random)) };
+    }
+    const std::string defect = tessera_test::RingDefect(ring);
+    const std::string error = ErrorOf([&] { tessera::ValidateRings({ 0, ring.size() }, ring); });
+    EXPECT_EQ(defect.empty(), error.empty())
+      << "trial " << trial << ": exactly, " << (defect.empty() ? "simple" : defect)
+      << "; ValidateRings: " << (error.empty() ? "accepted" : error);
+    simple += defect.empty();
+    refused += !defect.empty();
+  }
+  EXPECT_GT(simple, 1000);
+  EXPECT_GT(refused, 1000);
+}
+
 TEST(Clip, RejectsBadCatchmentsNamingRingsAndSegments)
 {
   const auto build = [](const Rings& rings)

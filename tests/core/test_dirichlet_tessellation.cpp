@@ -86,6 +86,35 @@ void CheckEmptyCircles(const Tess& t)
   }
 }
 
+// Every edge is locally Delaunay under the exact predicates (Lawson: then the whole triangulation
+// is), and the hull is convex: no reflex hull vertex between two ghost triangles.
+void CheckLocallyDelaunay(const Tess& t)
+{
+  const auto& org = t.Origin();
+  const auto& twin = t.Twin();
+  const auto& pts = t.Points();
+  std::size_t bad = 0;
+  for (std::int32_t e = 0; e < std::int32_t(org.size()); ++e)
+  {
+    const std::int32_t f = twin[e];
+    const std::int32_t a = org[e], b = org[Tess::Next(e)], c = org[Tess::Prev(e)];
+    const std::int32_t d = org[Tess::Prev(f)];
+    if (a == Tess::Ghost)
+    {
+      bad += orient2d(pts[d], pts[b], pts[c]) > 0;
+    }
+    else if (b == Tess::Ghost)
+    {
+      bad += orient2d(pts[a], pts[d], pts[c]) > 0;
+    }
+    else if (c != Tess::Ghost && d != Tess::Ghost)
+    {
+      bad += incircle(pts[b], pts[a], pts[d], pts[c]) > 0;
+    }
+  }
+  EXPECT_EQ(bad, 0u);
+}
+
 std::size_t HullSize(const Tess& t)
 {
   std::size_t ghosts = 0;
@@ -481,6 +510,7 @@ void ExpectStreamingEqualsBatch(const std::vector<Point2>& points)
     streaming.Insert(p);
   }
   CheckStructure(streaming);
+  CheckLocallyDelaunay(streaming); // (a fault the two builds shared would pass the comparison)
   EXPECT_TRUE(MakeCanonical(batch) == MakeCanonical(streaming));
 }
 
@@ -1990,35 +2020,6 @@ namespace
 // Above the two-region threshold (10000): the seam, the deferred points and the sewing are all
 // exercised; one test also runs a quarter of a million points.
 constexpr std::size_t TwoRegionSize = 40000;
-
-// Every edge is locally Delaunay under the exact predicates (Lawson: then the whole triangulation
-// is), and the hull is convex: no reflex hull vertex between two ghost triangles.
-void CheckLocallyDelaunay(const Tess& t)
-{
-  const auto& org = t.Origin();
-  const auto& twin = t.Twin();
-  const auto& pts = t.Points();
-  std::size_t bad = 0;
-  for (std::int32_t e = 0; e < std::int32_t(org.size()); ++e)
-  {
-    const std::int32_t f = twin[e];
-    const std::int32_t a = org[e], b = org[Tess::Next(e)], c = org[Tess::Prev(e)];
-    const std::int32_t d = org[Tess::Prev(f)];
-    if (a == Tess::Ghost)
-    {
-      bad += orient2d(pts[d], pts[b], pts[c]) > 0;
-    }
-    else if (b == Tess::Ghost)
-    {
-      bad += orient2d(pts[a], pts[d], pts[c]) > 0;
-    }
-    else if (c != Tess::Ghost && d != Tess::Ghost)
-    {
-      bad += incircle(pts[b], pts[a], pts[d], pts[c]) > 0;
-    }
-  }
-  EXPECT_EQ(bad, 0u);
-}
 
 // The same points inserted one by one (serial insertion throughout) in the batch's own spatial
 // order, with the id map from streaming ids back to input ids.

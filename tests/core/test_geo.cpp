@@ -5,6 +5,7 @@
 
 #include "test_support.h"
 
+#include <GeographicLib/Geodesic.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -281,7 +282,13 @@ TEST(Geo, PointsAProjectionCannotRepresentAreRefused)
   p.Kind = ProjectionKind::UTM;
   p.UTMZone = 13;
   GeographicProjection utm(p);
-  EXPECT_NO_THROW(utm.Forward({ -105.0, 40.0 }));
+  // On the zone's central meridian: the false easting, and k0 times the meridian's arc from the
+  // equator (GeographicLib's geodesic, not its transverse Mercator, measures the arc).
+  const Point2 onMeridian = utm.Forward({ -105.0, 40.0 });
+  double arc = 0.0;
+  GeographicLib::Geodesic::WGS84().Inverse(0.0, -105.0, 40.0, -105.0, arc);
+  EXPECT_NEAR(onMeridian.x, 500000.0, 1e-6);
+  EXPECT_NEAR(onMeridian.y, 0.9996 * arc, 1e-6);
   EXPECT_THROW(utm.Forward({ -60.0, 40.0 }, 5), InputError); // 45 degrees away
   EXPECT_THROW(utm.Forward({ -95.0, 40.0 }, 5), InputError); // 850 km east: beyond UTM eastings
   ProjectionParameters lcc;

@@ -487,21 +487,26 @@ TEST(Predicates, SymmetriesOfOrientAndIncircle)
   std::mt19937_64 rng(17);
   for (int i = 0; i < 2000; ++i)
   {
+    // Four lattice points of a circle, moved near (0.3, -0.7) and shrunk (inexactly: nearly
+    // cocircular), the fourth then nudged by up to an ulp: signs of every kind.
     std::vector<Point2> p = pick_distinct(rng, circle_lattice(), 4);
-    p[3].x = nudge(p[3].x * 1e-7 + 0.3, int(uniform(rng, -1, 2)));
     for (Point2& q : p)
     {
       q.x = q.x * 1e-7 + 0.3;
       q.y = q.y * 1e-7 - 0.7;
     }
+    p[3].x = nudge(p[3].x, int(uniform(rng, -1, 2)));
     const int o = tessera::orient2d(p[0], p[1], p[2]);
+    EXPECT_EQ(o, orient_ref(p[0], p[1], p[2])) << "case " << i;
     EXPECT_EQ(tessera::orient2d(p[1], p[2], p[0]), o);
     EXPECT_EQ(tessera::orient2d(p[1], p[0], p[2]), -o);
     const int ic = tessera::incircle(p[0], p[1], p[2], p[3]);
+    EXPECT_EQ(ic, incircle_ref(p[0], p[1], p[2], p[3])) << "case " << i;
     EXPECT_EQ(tessera::incircle(p[1], p[2], p[0], p[3]), ic);
     EXPECT_EQ(tessera::incircle(p[1], p[0], p[2], p[3]), -ic);
-    EXPECT_EQ(
-      tessera::compare_distance(p[0], p[1], p[2]), -tessera::compare_distance(p[0], p[2], p[1]));
+    const int dc = tessera::compare_distance(p[0], p[1], p[2]);
+    EXPECT_EQ(dc, distance_ref(p[0], p[1], p[2])) << "case " << i;
+    EXPECT_EQ(tessera::compare_distance(p[0], p[2], p[1]), -dc);
   }
 }
 

@@ -5,6 +5,8 @@
 
 #include "polygon_validation.h"
 
+#include "test_support.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -299,6 +301,10 @@ TEST(SegmentRings, RingsMeetingAtAPointAreJoinedTouching)
         << "case " << c << " trial " << trial;
       ExpectRingsUseEachSegmentOnce(ends, rings);
       EXPECT_NO_THROW(ValidateRings(rings.Offsets, rings.Vertices)) << "case " << c;
+      for (const std::vector<Point2>& ring : RingsOf(rings))
+      {
+        EXPECT_EQ(tessera_test::RingDefect(ring), "") << "case " << c; // (apart from ValidateRings)
+      }
     }
   }
   // The id-only join has no angles to pair by: it leaves the two squares unjoined.
@@ -416,6 +422,10 @@ TEST(SegmentRings, RandomCheckerboardsAgainstTheirSquares)
     if (!squares.empty())
     {
       EXPECT_NO_THROW(ValidateRings(rings.Offsets, rings.Vertices)) << "trial " << trial;
+      for (const std::vector<Point2>& ring : RingsOf(rings))
+      {
+        EXPECT_EQ(tessera_test::RingDefect(ring), "") << "trial " << trial;
+      }
     }
     for (int i = 0; i < n; ++i)
     {

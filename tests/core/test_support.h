@@ -4,6 +4,7 @@
 #include "clip.h"
 #include "dirichlet_tessellation.h"
 #include "errors.h"
+#include "predicates.h"
 #include "tiles.h"
 #include "window.h"
 
@@ -338,6 +339,73 @@ inline std::vector<tessera::Point2> RingOf(const tessera::ClippedRings& rings, s
 {
   return { rings.Vertices.begin() + static_cast<std::ptrdiff_t>(rings.RingOffsets[r]),
     rings.Vertices.begin() + static_cast<std::ptrdiff_t>(rings.RingOffsets[r + 1]) };
+}
+
+/// Whether p, on the line through a and b, lies on the closed segment a-b (comparisons: exact).
+inline bool WithinSegment(const tessera::Point2& a,
+  const tessera::Point2& b,
+  const tessera::Point2& p)
+{
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+    p.y <= std::max(a.y, b.y);
+}
+
+/// Whether the closed segments a-b and c-d have a point in common, exactly (orient2d's signs).
+inline bool SegmentsMeet(const tessera::Point2& a,
+  const tessera::Point2& b,
+  const tessera::Point2& c,
+  const tessera::Point2& d)
+{
+  const int abc = tessera::orient2d(a, b, c), abd = tessera::orient2d(a, b, d);
+  const int cda = tessera::orient2d(c, d, a), cdb = tessera::orient2d(c, d, b);
+  if (abc * abd < 0 && cda * cdb < 0)
+  {
+    return true;
+  }
+  return (abc == 0 && WithinSegment(a, b, c)) || (abd == 0 && WithinSegment(a, b, d)) ||
+    (cda == 0 && WithinSegment(c, d, a)) || (cdb == 0 && WithinSegment(c, d, b));
+}
+
+/// What is wrong with a ring as a simple polygon, or "" for a simple one: at least 3 distinct
+/// vertices (repeats of the vertex before, the last's of the first included, are dropped first),
+/// edges that meet only where consecutive ones share their vertex, no spike back along an edge.
+/// Every pair of edges is tested, exactly (orient2d, which test_predicates checks against GMP, and
+/// comparisons of coordinates), in O(n^2): an oracle apart from ValidateRings
+/// (polygon_validation.h), with which tests had checked the library's own rings.
+inline std::string RingDefect(const std::vector<tessera::Point2>& ring)
+{
+  std::vector<tessera::Point2> q;
+  for (std::size_t k = 0; k < ring.size(); ++k)
+  {
+    if (ring.size() == 1 || ring[k] != ring[(k + ring.size() - 1) % ring.size()])
+    {
+      q.push_back(ring[k]);
+    }
+  }
+  const std::size_t n = q.size();
+  if (n < 3)
+  {
+    return std::to_string(n) + " distinct vertices";
+  }
+  // Going on from b along the line it came: no spike (c back towards a) where a, b, c are on one.
+  const auto onwards = [](double a, double b, double c) { return (a < b) == (b < c); };
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const tessera::Point2 &a = q[i], &b = q[(i + 1) % n], &c = q[(i + 2) % n];
+    if (tessera::orient2d(a, b, c) == 0 &&
+      !(a.x != b.x ? onwards(a.x, b.x, c.x) && c.x != b.x : onwards(a.y, b.y, c.y) && c.y != b.y))
+    {
+      return "a spike at vertex " + std::to_string((i + 1) % n);
+    }
+    for (std::size_t j = i + 2; j < n; ++j)
+    {
+      if (!(i == 0 && j == n - 1) && SegmentsMeet(a, b, q[j], q[(j + 1) % n]))
+      {
+        return "edges " + std::to_string(i) + " and " + std::to_string(j) + " meet";
+      }
+    }
+  }
+  return std::string();
 }
 
 } // namespace tessera_test

@@ -827,7 +827,22 @@ TEST(Window, ScalingPointsByAPowerOfTwo)
     { 0.0, -1.0, 0.0 },
     { 0.0, 1.0, -1.0 } });
   EXPECT_THROW(nearOrigin.ScaledByPowerOfTwo(-60), InputError);
-  EXPECT_NO_THROW(nearOrigin.ScaledByPowerOfTwo(60));
+  // Scaled up, exactly: the same half-planes (a, b as they were, c times 2^60), vertices times
+  // 2^60.
+  const Window up = nearOrigin.ScaledByPowerOfTwo(60);
+  ASSERT_EQ(up.EffectiveConstraints().size(), nearOrigin.EffectiveConstraints().size());
+  for (std::size_t k = 0; k < up.EffectiveConstraints().size(); ++k)
+  {
+    const HalfPlane &h = nearOrigin.EffectiveConstraints()[k], &g = up.EffectiveConstraints()[k];
+    EXPECT_EQ(g.a * h.b, g.b * h.a) << k; // (the same direction, at any normalization)
+    EXPECT_EQ(g.c * h.a, std::ldexp(h.c, 60) * g.a) << k;
+    EXPECT_EQ(g.c * h.b, std::ldexp(h.c, 60) * g.b) << k;
+  }
+  for (std::size_t k = 0; k < up.Vertices().size(); ++k)
+  {
+    EXPECT_EQ(up.Vertices()[k].x, std::ldexp(nearOrigin.Vertices()[k].x, 60)) << k;
+    EXPECT_EQ(up.Vertices()[k].y, std::ldexp(nearOrigin.Vertices()[k].y, 60)) << k;
+  }
   // The error names the constraint as its caller did, also after a scaling that succeeded (the
   // scaled window keeps the names); without names, by its index in the caller's list.
   const auto scalingError = [](const Window& window, int exponent)
@@ -874,8 +889,21 @@ TEST(Window, ScalingPointsByAPowerOfTwo)
 
 // An area beyond the doubles is infinite, not NaN (inf - inf in the shoelace): CheckTilesFillWindow
 // said "not the window's area -nan".
-TEST(Window, AnAreaThatOverflowsIsInfinite)
+// A slanted window (no rectangle: its area is a sum of fan terms) whose area overflows is
+// infinite too, as a rectangle's is (AreaNearTheLargestDouble); one that does not is half its
+// legs' product.
+TEST(Window, ASlantedAreaThatOverflowsIsInfinite)
 {
-  EXPECT_EQ(tessera::Window::Rectangle(-1e200, 1e200, -1e200, 1e200).Area(), HUGE_VAL);
-  EXPECT_EQ(tessera::Window::Rectangle(0.0, 2.0, 0.0, 3.0).Area(), 6.0);
+  for (const double leg : { 1e150, 1e200 })
+  {
+    const Window triangle({ { -1.0, 0.0, 0.0 }, { 0.0, -1.0, 0.0 }, { 1.0, 1.0, -leg } });
+    if (leg * leg / 2 < HUGE_VAL)
+    {
+      EXPECT_DOUBLE_EQ(triangle.Area(), 0.5 * leg * leg);
+    }
+    else
+    {
+      EXPECT_EQ(triangle.Area(), HUGE_VAL) << leg;
+    }
+  }
 }

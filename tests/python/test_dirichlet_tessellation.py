@@ -153,6 +153,7 @@ def test_square_lattice_has_square_tiles_and_diagonal_half_neighbours():
     tiles, graph = f.GetOutput(0), f.GetOutput(1)
     areas = tiles.GetCellData().GetArray("Area")
     counts = tiles.GetCellData().GetArray("NeighborCount")
+    assert_that(tiles.GetNumberOfCells() == 25, f"{tiles.GetNumberOfCells()} tiles for 25 points")
     for c in range(tiles.GetNumberOfCells()):
         assert_close(areas.GetValue(c), 1.0, 1e-15, f"tile {c} is a unit square")
         assert_that(counts.GetValue(c) == 4, f"tile {c} has 4 sides (neighbours + window edges)")

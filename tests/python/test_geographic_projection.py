@@ -45,15 +45,41 @@ def test_round_trip_of_the_colorado_gauges():
         assert_that(b[2] == a[2], f"elevation of gauge {i} kept")
 
 
-def spherical_distance(lon1, lat1, lon2, lat2, radius=6371008.8):
-    p1, p2 = math.radians(lat1), math.radians(lat2)
-    dl = math.radians(lon2 - lon1)
-    h = math.sin((p2 - p1) / 2) ** 2 + math.cos(p1) * math.cos(p2) * math.sin(dl / 2) ** 2
-    return 2 * radius * math.asin(math.sqrt(h))
+def geodesic_distance(lon1, lat1, lon2, lat2, a=6378137.0, f=1 / 298.257223563):
+    """The geodesic distance (m) on the WGS84 ellipsoid by Vincenty's inverse formula (1975),
+    written out here, apart from GeographicLib: to well under a millimetre for points not nearly
+    antipodal."""
+    b = a * (1 - f)
+    u1, u2 = math.atan((1 - f) * math.tan(math.radians(lat1))), math.atan((1 - f) * math.tan(math.radians(lat2)))
+    big_l = math.radians(lon2 - lon1)
+    lam = big_l
+    for _ in range(200):
+        sin_sigma = math.hypot(math.cos(u2) * math.sin(lam),
+                               math.cos(u1) * math.sin(u2) - math.sin(u1) * math.cos(u2) * math.cos(lam))
+        if sin_sigma == 0:
+            return 0.0
+        cos_sigma = math.sin(u1) * math.sin(u2) + math.cos(u1) * math.cos(u2) * math.cos(lam)
+        sigma = math.atan2(sin_sigma, cos_sigma)
+        sin_alpha = math.cos(u1) * math.cos(u2) * math.sin(lam) / sin_sigma
+        cos2_alpha = 1 - sin_alpha ** 2
+        cos_2sm = cos_sigma - 2 * math.sin(u1) * math.sin(u2) / cos2_alpha if cos2_alpha else 0.0
+        c = f / 16 * cos2_alpha * (4 + f * (4 - 3 * cos2_alpha))
+        previous = lam
+        lam = big_l + (1 - c) * f * sin_alpha * (
+            sigma + c * sin_sigma * (cos_2sm + c * cos_sigma * (-1 + 2 * cos_2sm ** 2)))
+        if abs(lam - previous) < 1e-13:
+            break
+    u_2 = cos2_alpha * (a * a - b * b) / (b * b)
+    big_a = 1 + u_2 / 16384 * (4096 + u_2 * (-768 + u_2 * (320 - 175 * u_2)))
+    big_b = u_2 / 1024 * (256 + u_2 * (-128 + u_2 * (74 - 47 * u_2)))
+    delta = big_b * sin_sigma * (cos_2sm + big_b / 4 * (cos_sigma * (-1 + 2 * cos_2sm ** 2) - big_b / 6 * cos_2sm
+                                                         * (-3 + 4 * sin_sigma ** 2) * (-3 + 4 * cos_2sm ** 2)))
+    return b * big_a * (sigma - delta)
 
 
 def test_azimuthal_equidistant_keeps_distances_from_the_centre():
-    # Distances from the centre are true geodesic distances; a sphere agrees to ~0.5%.
+    # Distances from the centre are true geodesic distances on the ellipsoid (a sphere agreed to
+    # 0.5% only, and let an error of scale or ellipsoid that size through).
     points = vtkPoints()
     for lon, lat in [(-105.0, 39.0), (-104.0, 39.5), (-108.0, 37.0), (-102.5, 41.2)]:
         points.InsertNextPoint(lon, lat, 0.0)
@@ -72,8 +98,8 @@ def test_azimuthal_equidistant_keeps_distances_from_the_centre():
     for i in range(1, 4):
         x, y, _ = out.GetPoint(i)
         lon, lat, _ = data.GetPoint(i)
-        expected = spherical_distance(-105.0, 39.0, lon, lat)
-        assert_close(math.hypot(x, y) / expected, 1.0, 0.006, f"distance ratio of point {i}")
+        expected = geodesic_distance(-105.0, 39.0, lon, lat)
+        assert_close(math.hypot(x, y), expected, 1e-3, f"distance (m) of point {i} from the centre")
 
 
 def test_lambert_azimuthal_equal_area_is_laea_europe_and_goes_back_by_its_record():
