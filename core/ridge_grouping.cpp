@@ -214,6 +214,14 @@ void FitCurves(const std::vector<Point2>& points,
   }
 }
 
+/// A reach as warnings give it: "4 basis widths (12.04 in the points' units)", for a basis
+/// `basisWidth` pixels wide.
+std::string WidthsText(double widths, double basisWidth, const PixelGrid& grid)
+{
+  return NumberText(widths) + " basis widths (" + NumberText(widths * basisWidth * grid.Spacing) +
+    " in the points' units)";
+}
+
 /// What the checks after the partition read: the points (pixel units), the contours, the
 /// partition, the grid, and the basis width (pixels).
 struct GroupedPoints
@@ -272,9 +280,8 @@ void MeasureContourDistances(const GroupedPoints& grouped, RidgeGroupingResult& 
   if (!far.empty())
   {
     result.Warnings.push_back(std::to_string(far.size()) + " point(s) lie more than " +
-      NumberText(RidgeGrouping::FarContourWidths) + " basis widths (" +
-      NumberText(RidgeGrouping::FarContourWidths * width * grid.Spacing) +
-      " in the points' units) from the contour they are grouped by, whose curve they pull: "
+      WidthsText(RidgeGrouping::FarContourWidths, width, grid) +
+      " from the contour they are grouped by, whose curve they pull: "
       "point(s) " +
       ListNames(far.size(), [&](std::size_t k) { return std::to_string(far[k]); }) +
       " (ContourDistance gives every point's distance)");
@@ -356,9 +363,8 @@ void NameContoursAwayFromPoints(const GroupedPoints& grouped, RidgeGroupingResul
   if (!stretches.empty())
   {
     result.Warnings.push_back(std::to_string(stretches.size()) +
-      " ridge contour(s) run more than " + NumberText(EmptyStretchWidths) + " basis widths (" +
-      NumberText(reach * grid.Spacing) +
-      " in the points' units) from every point: the field's ridge crosses empty space there, so "
+      " ridge contour(s) run more than " + WidthsText(EmptyStretchWidths, width, grid) +
+      " from every point: the field's ridge crosses empty space there, so "
       "the group may join points of curves that lie apart, and its curve is drawn where there "
       "are no points (a smaller Width, or the Gaussian basis, may part them): " +
       ListNames(stretches.size(), [&](std::size_t k) { return stretches[k]; }));
@@ -376,9 +382,9 @@ void NameUnorderedPoints(const std::vector<std::size_t>& tied,
 {
   if (!tied.empty())
   {
-    result.Warnings.push_back(std::to_string(tied.size()) +
-      " point(s) lie more than 2 basis widths (" + NumberText(maximumGap * grid.Spacing) +
-      " in the points' units) along their contour beyond the pixel they are projected on (past an "
+    result.Warnings.push_back(std::to_string(tied.size()) + " point(s) lie more than " +
+      WidthsText(2.0, maximumGap / 2.0, grid) +
+      " along their contour beyond the pixel they are projected on (past an "
       "end, or where the ridge turns away from the points): each shares that pixel's node, so "
       "their order along the curve is not known and the curve does not follow them (another "
       "Width, or the Gaussian basis, may give the ridge their stretch): point(s) " +
@@ -696,8 +702,8 @@ std::vector<std::uint8_t> NameNearContourEnds(const GroupedPoints& grouped,
   }
   result.Warnings.push_back(std::to_string(near.size()) +
     " pair(s) of open contour ends (where their groups' points end) lie within " +
-    NumberText(NearEndWidths) + " basis widths (" + NumberText(reach * grid.Spacing) +
-    " in the points' units) of each other, one looking towards the other (a group's own two ends "
+    WidthsText(NearEndWidths, width, grid) +
+    " of each other, one looking towards the other (a group's own two ends "
     "whichever way they look): a curve may be broken "
     "there, where its points lie further apart than the basis reaches (a sparse stretch; or "
     "clean, dense points, which take a large automatic ImageSize, in whose pixels the basis is "
@@ -827,9 +833,8 @@ void NameFoldedContours(const GroupedPoints& grouped,
     return;
   }
   result.Warnings.push_back(std::to_string(named.size()) +
-    " group(s) have a contour that passes within " + NumberText(FoldWidths) + " basis widths (" +
-    NumberText(reach * grid.Spacing) +
-    " in the points' units) of itself where it is much further along itself: it may run out along "
+    " group(s) have a contour that passes within " + WidthsText(FoldWidths, width, grid) +
+    " of itself where it is much further along itself: it may run out along "
     "one curve and back along another beside it, grouping the two as one (a smaller Width, or a "
     "larger ImageSize, may part them): " +
     ListNames(named.size(),
