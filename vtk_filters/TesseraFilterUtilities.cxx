@@ -41,6 +41,7 @@
 #include <cfloat>
 #include <cmath>
 #include <map>
+#include <type_traits>
 #include <set>
 #include <sstream>
 
@@ -57,6 +58,74 @@ void CopyXY(const Real* xyz, vtkIdType n, std::vector<tessera::Point2>& out)
   }
 }
 } // namespace
+
+namespace
+{
+/// Whether a double holds the integer v exactly: its odd part fits in the 53 bits of a mantissa.
+template<class Integer>
+bool FitsADouble(Integer v)
+{
+  unsigned long long magnitude =
+    v < 0 ? 0ULL - static_cast<unsigned long long>(v) : static_cast<unsigned long long>(v);
+  while (magnitude != 0 && (magnitude & 1ULL) == 0)
+  {
+    magnitude >>= 1;
+  }
+  return magnitude < (1ULL << 53);
+}
+
+/// Throws naming the first point, of n points of 64-bit integers (3 components each), with an x
+/// or y that no double holds exactly.
+template<class Integer>
+void CheckIntegerPoints(const Integer* values, vtkIdType n)
+{
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    for (int axis = 0; axis < 2; ++axis)
+    {
+      const Integer v = values[3 * i + axis];
+      if (!FitsADouble(v))
+      {
+        throw tessera::InputError("point " + std::to_string(i) + " has the integer coordinate " +
+          std::to_string(v) +
+          ", which the doubles the tessellation computes in hold only rounded, " + "to " +
+          tessera::NumberText(static_cast<double>(v)) +
+          " (beyond 2^53; 2^62 + 1 and 2^62 became one point): subtract an offset first");
+      }
+    }
+  }
+}
+} // namespace
+
+void CheckIntegersFitDoubles(vtkDataArray* data)
+{
+  if (data->GetArrayType() != vtkAbstractArray::AoSDataArrayTemplate ||
+    data->GetNumberOfComponents() != 3 || data->GetDataTypeSize() != 8)
+  {
+    return; // (points are 3 components; integers of 32 bits or fewer fit a double)
+  }
+  const vtkIdType n = data->GetNumberOfTuples();
+  switch (data->GetDataType())
+  {
+    case VTK_LONG:
+      CheckIntegerPoints(static_cast<const long*>(data->GetVoidPointer(0)), n);
+      break;
+    case VTK_LONG_LONG:
+      CheckIntegerPoints(static_cast<const long long*>(data->GetVoidPointer(0)), n);
+      break;
+    case VTK_ID_TYPE:
+      CheckIntegerPoints(static_cast<const vtkIdType*>(data->GetVoidPointer(0)), n);
+      break;
+    case VTK_UNSIGNED_LONG:
+      CheckIntegerPoints(static_cast<const unsigned long*>(data->GetVoidPointer(0)), n);
+      break;
+    case VTK_UNSIGNED_LONG_LONG:
+      CheckIntegerPoints(static_cast<const unsigned long long*>(data->GetVoidPointer(0)), n);
+      break;
+    default:
+      break;
+  }
+}
 
 std::vector<tessera::Point2> CopyPoints2D(vtkPoints* points)
 {
@@ -80,6 +149,7 @@ std::vector<tessera::Point2> CopyPoints2D(vtkPoints* points)
   }
   else
   {
+    CheckIntegersFitDoubles(data);
     for (vtkIdType i = 0; i < n; ++i)
     {
       double p[3];

@@ -360,6 +360,40 @@ def test_nan_point_is_named():
     assert_that(f.GetOutput(0).GetNumberOfCells() == 0, "empty output")
 
 
+def test_integer_points_beyond_what_a_double_holds_are_named():
+    # Points of 64-bit integers beyond 2^53 were rounded to doubles silently: 2^62 + 1 and 2^62
+    # became one point, reported as a duplicate. Those a double holds (2^62 itself, or anything up
+    # to 2^53) are taken as they are.
+    from vtkmodules.vtkCommonCore import vtkIdTypeArray, vtkPoints, vtkTypeInt64Array, vtkTypeUInt64Array
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+    for kind, big in ((vtkTypeInt64Array, 2 ** 62), (vtkTypeInt64Array, -2 ** 62), (vtkIdTypeArray, 2 ** 62),
+                      (vtkTypeUInt64Array, 2 ** 63), (vtkTypeInt64Array, 2 ** 53 - 1)):
+        values = kind()
+        values.SetNumberOfComponents(3)
+        coordinates = [(0, 0), (big, 0), (big + (1 if big > 0 else -1), 0), (0, abs(big))]
+        for x, y in coordinates:
+            for value in (x, y, 0):
+                values.InsertNextValue(value)
+        points = vtkPoints()
+        points.SetData(values)
+        data = vtkPolyData()
+        data.SetPoints(points)
+        f = vtkDirichletTessellation()
+        messages = messages_of(f)
+        f.SetInputData(data)
+        f.Update()
+        what = f"{kind.__name__} {big}"
+        if abs(big) > 2 ** 53:
+            beyond = big + (1 if big > 0 else -1)
+            assert_that(len(messages) == 1 and f"point 2 has the integer coordinate {beyond}, which the doubles"
+                        in messages[0] and f.GetOutput(0).GetNumberOfCells() == 0, f"{what}: {messages}")
+        else:
+            duplicates = f.GetOutput(0).GetFieldData().GetArray("DuplicatePointIds")
+            assert_that(not messages and f.GetOutput(0).GetNumberOfCells() == 4
+                        and duplicates.GetNumberOfTuples() == 0, f"{what}: {messages}")
+
+
 def test_tiles_form_a_conforming_mesh():
     # Tiles that meet share their corner points: VTK's edge filters find no non-manifold edge, and
     # boundary edges only along the window, whose perimeter they add up to; merging coincident
@@ -1495,6 +1529,7 @@ if __name__ == "__main__":
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
          test_square_lattice_has_square_tiles_and_diagonal_half_neighbours,
          test_unused_points_are_reported_with_ids,
+         test_integer_points_beyond_what_a_double_holds_are_named,
          test_input_field_data_named_like_the_unused_point_ids_is_kept_under_another_name,
          test_degenerate_inputs_give_valid_output,
          test_both_engines_agree,
