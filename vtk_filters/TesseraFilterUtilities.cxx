@@ -219,7 +219,10 @@ tessera::Window Representable(tessera::Window window, bool needArea, const std::
 }
 
 /// For tiles of points whose bounding box (box) has an area beyond the doubles: no padding
-/// helps, and the message says so (it advised a smaller Padding where Padding was 0).
+/// helps, and the message says so (it advised a smaller Padding where Padding was 0). So for points
+/// along one axis whose larger side is so long that the thinnest automatic window (Padding 0: a
+/// margin of 1e-9 of that side each way) overflows: (0, 0) and (1e200, 0) were told to set a
+/// smaller Padding.
 void CheckPointsSpan(const tessera::Box2& box)
 {
   if (!std::isfinite((box.XMax - box.XMin) * (box.YMax - box.YMin)))
@@ -227,6 +230,14 @@ void CheckPointsSpan(const tessera::Box2& box)
     throw tessera::InputError("the points span " + BoxText(box) +
       ": the area of a window that holds them overflows a double, whatever the Padding, so their "
       "tiles' areas would too; scale the points down");
+  }
+  const double side = box.LargerSide();
+  if (!std::isfinite(side * (2e-9 * side)))
+  {
+    throw tessera::InputError("the points span " + BoxText(box) +
+      ": the automatic window, padded by a share of their longer side (at Padding 0 a margin of "
+      "1e-9 of it), has an area that overflows a double, whatever the Padding; set WindowBounds "
+      "close about them, or scale the points down");
   }
 }
 

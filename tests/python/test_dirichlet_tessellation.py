@@ -602,6 +602,12 @@ def test_automatic_window_keeps_every_point_and_bad_windows_are_named():
             # where Padding was 0), nor does a window printed as -inf .. inf.
             ("points 1e300 apart", lambda f: (f.SetPadding(0), f.SetInputData(make_points([(-1e300, 0), (1e300, 1), (0, 1e300)]))),
              "the points span x -1e+300 .. 1e+300, y 0 .. 1e+300: the area of a window that holds them overflows a double, whatever the Padding"),
+            # (so for points on one line, whose box has no area: they were told to set a smaller
+            # Padding, which no Padding helps)
+            ("points 1e200 apart on a line", lambda f: f.SetInputData(make_points([(0, 0), (1e200, 0)])),
+             "the points span x 0 .. 1e+200, y 0 .. 0: the automatic window, padded by a share of their longer side "
+             "(at Padding 0 a margin of 1e-9 of it), has an area that overflows a double, whatever the Padding; set "
+             "WindowBounds close about them"),
             ("padding past the doubles", lambda f: (f.SetPadding(1e200), f.SetInputData(make_points([(0, 0), (1e150, 1e150)]))),
              "the automatic window reaches beyond the largest double: it is the points' bounding box padded by 1e+200 of its larger side (Padding): set a smaller Padding")]:
         f = vtkDirichletTessellation()
