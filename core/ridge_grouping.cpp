@@ -559,8 +559,9 @@ std::string PlaceText(const PixelGrid& grid, const Point2& at)
 /// whichever way they look (a noisy circle came out open, its ends 1.8 widths apart and hooked
 /// past each other, looking away from each other, and nothing was said), except the ends of a fold:
 /// side by side, looking the same way, and further apart than merged curves lie
-/// (NameFoldedContours names those). Returns per contour whether its own two ends were named: a
-/// closed curve broken, which NameFoldedContours leaves out.
+/// (NameFoldedContours names those). Returns per contour whether its own two ends lie within reach
+/// and are no fold's: a closed curve broken (named where the contour is long), or a short contour
+/// whose ends are near by its shortness, both of which NameFoldedContours leaves out.
 ///
 ///    piece A  ====>  . . gap . .  <====  piece B      named: an end looks at the other
 ///
