@@ -1638,7 +1638,10 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
 ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetres) const
 {
   CheckStepMetres(maxStepMetres, "CurrentClippedTiles' step");
-  State& s = *this->Impl;
+  // Read only, with scratch of its own: two threads displaying one average at once had shared
+  // Scratch[0] (wrong areas, freed blocks freed again), where a const method promised none.
+  const State& s = *this->Impl;
+  State::ClipScratch scratch;
   ClippedTilesLonLat out;
   ClippedRings plane; // the pieces in the plane, in out's order
   // The gauges in the tessellation, ascending, with their tiles (derived again here: the steps
@@ -1659,7 +1662,6 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
     const std::size_t k = static_cast<std::size_t>(tileOf[gauge]);
     const Point2* tile = &tiles.Vertices[tiles.Offsets[k]];
     const std::size_t count = static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]);
-    State::ClipScratch& scratch = s.Scratch[0];
     ClippedRings rings;
     if (s.Region->ClipInto(tile,
           count,
@@ -1690,7 +1692,6 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
   // edge is cut at the same points from either side, so that they still meet exactly in lon/lat
   // (shared_borders.h).
   const ClippedRings shared = ShareBorderVertices(plane);
-  State::ClipScratch& scratch = s.Scratch[0];
   ClippedRings lonLat;    // the pieces in lon/lat, as cut in the plane
   std::vector<char> fans; // per piece: whether it is a fan about its first vertex in lon/lat
   for (std::size_t r = 0; r + 1 < shared.RingOffsets.size(); ++r)

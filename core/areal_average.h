@@ -153,6 +153,9 @@ struct ClippedTilesLonLat
   RegionOutlines Outlines;
 };
 
+/// Threads: separate objects may be used on separate threads; one object's const methods
+/// (CurrentClippedTiles, GaugesUsed, ...) may be called from several threads at once while no
+/// thread calls Step or another non-const method.
 class ThiessenArealAverage
 {
 public:

@@ -16,6 +16,7 @@
 #include <numeric>
 #include <random>
 #include <set>
+#include <thread>
 #include <regex>
 
 using namespace tessera;
@@ -192,6 +193,45 @@ TEST(ArealAverage, FourSymmetricGaugesShareASquareEqually)
     EXPECT_NEAR(average.CatchmentAreaM2() / expected,
       1.0,
       method == AreaMethod::EqualAreaPlane ? 1e-12 : 2e-9);
+  }
+}
+
+// Const methods may be called from several threads at once while no thread calls Step: two
+// threads displaying one average (CurrentClippedTiles) had shared its clipping scratch, and got
+// wrong areas or crashed. Every concurrent result equals the serial one, bit for bit.
+TEST(ArealAverage, ThreadsDisplayingOneAverageAtOnceGetTheSerialResult)
+{
+  std::mt19937_64 random(1);
+  std::uniform_real_distribution<double> lon(-109.0, -102.0), lat(37.0, 41.0);
+  std::vector<Point2> gauges(2000);
+  for (Point2& g : gauges)
+  {
+    g = { lon(random), lat(random) };
+  }
+  ThiessenArealAverage average(
+    gauges, { 0, 4 }, { { -108, 37.5 }, { -103, 37.5 }, { -103, 40.5 }, { -108, 40.5 } });
+  average.Step(std::vector<double>(gauges.size(), 1.0));
+  const ThiessenArealAverage& shared = average;
+  const ClippedTilesLonLat serial = shared.CurrentClippedTiles();
+  ASSERT_GT(serial.Gauges.size(), 1000u);
+  for (int round = 0; round < 3; ++round)
+  {
+    std::vector<ClippedTilesLonLat> made(4);
+    std::vector<std::thread> threads;
+    for (ClippedTilesLonLat& each : made)
+    {
+      threads.emplace_back([&shared, &each] { each = shared.CurrentClippedTiles(); });
+    }
+    for (std::thread& thread : threads)
+    {
+      thread.join();
+    }
+    for (const ClippedTilesLonLat& each : made)
+    {
+      EXPECT_EQ(each.Gauges, serial.Gauges) << "round " << round;
+      EXPECT_EQ(each.Pieces.Vertices, serial.Pieces.Vertices) << "round " << round;
+      EXPECT_EQ(each.PieceAreasM2, serial.PieceAreasM2) << "round " << round;
+    }
   }
 }
 
