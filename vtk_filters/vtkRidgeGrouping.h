@@ -114,8 +114,9 @@ public:
    * crossing at a right angle gave no contour (every point unassigned, with a warning), two
    * noisy concentric circles 50 units apart one group, and a noisy spiral a contour of a fifth
    * of its length. The Gaussian, whose field falls off fast, or a larger ImageSize (256 there)
-   * grouped all three correctly; try them when groups are missing or merged. Another value is an
-   * error at the update.
+   * grouped all three correctly; try them when groups are missing or merged, as trials on the data
+   * at hand (they depend on it: another noisy spiral gave one group at the automatic size and 4
+   * at 256 pixels). Another value is an error at the update.
    */
   vtkSetMacro(Basis, int);
   // The range VTK's clamping setter announced (kept: a value outside is an error at the update).
