@@ -26,6 +26,7 @@
 #include "vtkPoints.h"
 #include "vtkStringArray.h"
 #include "vtkUnstructuredGrid.h"
+#include "vtkVariant.h"
 #include "vtkCellData.h"
 #include "vtkCellType.h"
 #include "vtkPointData.h"
@@ -74,16 +75,16 @@ bool FitsADouble(Integer v)
   return magnitude < (1ULL << 53);
 }
 
-/// Throws naming the first point, of n points of 64-bit integers (3 components each), with an x
-/// or y that no double holds exactly.
-template<class Integer>
-void CheckIntegerPoints(const Integer* values, vtkIdType n)
+/// Throws naming the first point, of n points of 64-bit integers (3 components each, value(k)
+/// the k-th), with an x or y that no double holds exactly.
+template<class Value>
+void CheckIntegerPoints(const Value& value, vtkIdType n)
 {
   for (vtkIdType i = 0; i < n; ++i)
   {
     for (int axis = 0; axis < 2; ++axis)
     {
-      const Integer v = values[3 * i + axis];
+      const auto v = value(3 * i + axis);
       if (!FitsADouble(v))
       {
         throw tessera::InputError("point " + std::to_string(i) + " has the integer coordinate " +
@@ -95,32 +96,51 @@ void CheckIntegerPoints(const Integer* values, vtkIdType n)
     }
   }
 }
+
+/// CheckIntegerPoints over an array of Integer: read in place where its values lie in one block
+/// (AOS), else one by one as variants (an SOA array had passed unchecked).
+template<class Integer>
+void CheckIntegerArray(vtkDataArray* data)
+{
+  const vtkIdType n = data->GetNumberOfTuples();
+  if (data->GetArrayType() == vtkAbstractArray::AoSDataArrayTemplate)
+  {
+    const Integer* values = static_cast<const Integer*>(data->GetVoidPointer(0));
+    CheckIntegerPoints([values](vtkIdType k) { return values[k]; }, n);
+  }
+  else if (std::is_signed<Integer>::value)
+  {
+    CheckIntegerPoints([data](vtkIdType k) { return data->GetVariantValue(k).ToTypeInt64(); }, n);
+  }
+  else
+  {
+    CheckIntegerPoints([data](vtkIdType k) { return data->GetVariantValue(k).ToTypeUInt64(); }, n);
+  }
+}
 } // namespace
 
 void CheckIntegersFitDoubles(vtkDataArray* data)
 {
-  if (data->GetArrayType() != vtkAbstractArray::AoSDataArrayTemplate ||
-    data->GetNumberOfComponents() != 3 || data->GetDataTypeSize() != 8)
+  if (data->GetNumberOfComponents() != 3 || data->GetDataTypeSize() != 8)
   {
     return; // (points are 3 components; integers of 32 bits or fewer fit a double)
   }
-  const vtkIdType n = data->GetNumberOfTuples();
   switch (data->GetDataType())
   {
     case VTK_LONG:
-      CheckIntegerPoints(static_cast<const long*>(data->GetVoidPointer(0)), n);
+      CheckIntegerArray<long>(data);
       break;
     case VTK_LONG_LONG:
-      CheckIntegerPoints(static_cast<const long long*>(data->GetVoidPointer(0)), n);
+      CheckIntegerArray<long long>(data);
       break;
     case VTK_ID_TYPE:
-      CheckIntegerPoints(static_cast<const vtkIdType*>(data->GetVoidPointer(0)), n);
+      CheckIntegerArray<vtkIdType>(data);
       break;
     case VTK_UNSIGNED_LONG:
-      CheckIntegerPoints(static_cast<const unsigned long*>(data->GetVoidPointer(0)), n);
+      CheckIntegerArray<unsigned long>(data);
       break;
     case VTK_UNSIGNED_LONG_LONG:
-      CheckIntegerPoints(static_cast<const unsigned long long*>(data->GetVoidPointer(0)), n);
+      CheckIntegerArray<unsigned long long>(data);
       break;
     default:
       break;
@@ -219,10 +239,7 @@ tessera::Window Representable(tessera::Window window, bool needArea, const std::
 }
 
 /// For tiles of points whose bounding box (box) has an area beyond the doubles: no padding
-/// helps, and the message says so (it advised a smaller Padding where Padding was 0). So for points
-/// along one axis whose larger side is so long that the thinnest automatic window (Padding 0: a
-/// margin of 1e-9 of that side each way) overflows: (0, 0) and (1e200, 0) were told to set a
-/// smaller Padding.
+/// helps, and the message says so (it advised a smaller Padding where Padding was 0).
 void CheckPointsSpan(const tessera::Box2& box)
 {
   if (!std::isfinite((box.XMax - box.XMin) * (box.YMax - box.YMin)))
@@ -231,21 +248,21 @@ void CheckPointsSpan(const tessera::Box2& box)
       ": the area of a window that holds them overflows a double, whatever the Padding, so their "
       "tiles' areas would too; scale the points down");
   }
-  const double side = box.LargerSide();
-  if (!std::isfinite(side * (2e-9 * side)))
-  {
-    throw tessera::InputError("the points span " + BoxText(box) +
-      ": the automatic window, padded by a share of their longer side (at Padding 0 a margin of "
-      "1e-9 of it), has an area that overflows a double, whatever the Padding; set WindowBounds "
-      "close about them, or scale the points down");
-  }
 }
 
 const char* const SmallerBounds = "set smaller WindowBounds or window constraints";
 
-/// What makes the automatic window as large as it is, and what to change.
-std::string PaddingAdvice(double padding)
+/// What makes the automatic window as large as it is, and what to change, for points whose
+/// bounding box has the larger side `side`. At Padding 0 the window keeps a margin of 1e-9 of
+/// that side: points on a line 1e200 long were told to set a smaller Padding than 0.
+std::string PaddingAdvice(double padding, double side)
 {
+  if (padding == 0.0 && side > 0.0)
+  {
+    return "it is the points' bounding box with a margin of 1e-9 of its larger side (Padding 0): "
+           "set WindowBounds close about the points, a Padding above 0 and below " +
+      tessera::NumberText(DBL_MAX / (4.0 * side) / side) + ", or scale the points down";
+  }
   return "it is the points' bounding box padded by " + tessera::NumberText(padding) +
     " of its larger side (Padding): set a smaller Padding, or WindowBounds";
 }
@@ -460,7 +477,7 @@ tessera::Window ChooseWindow(const double bounds[4],
         "): no window of doubles holds them strictly inside; scale the points");
     }
     throw tessera::InputError("the automatic window reaches beyond the largest double: " +
-      PaddingAdvice(padding)); // (before Rectangle refuses it)
+      PaddingAdvice(padding, side)); // (before Rectangle refuses it)
   }
   return Representable(tessera::Window::Rectangle(lower[0],
                          upper[0],
@@ -469,7 +486,7 @@ tessera::Window ChooseWindow(const double bounds[4],
                          "the automatic window's",
                          " (the points' bounding box, padded)"),
     needArea,
-    PaddingAdvice(padding));
+    PaddingAdvice(padding, side));
 }
 
 void CheckChoice(const char* property, int value, const std::vector<const char*>& names)

@@ -207,14 +207,14 @@ std::string ProjectionWarning(vtkDataObject* tiles, vtkDataObject* window)
   const std::string projected = ofTiles.empty() ? "the window (input 1)" : "the tiles (input 0)";
   const std::string other = ofTiles.empty() ? "the tiles (input 0)" : "the window (input 1)";
   double projectedBounds[6], otherBounds[6];
-  if (!tessera_vtk::DataBounds(ofTiles.empty() ? tiles : window, otherBounds))
+  if (!tessera_vtk::DataBounds(ofTiles.empty() ? tiles : window, otherBounds) ||
+    !tessera_vtk::DataBounds(ofTiles.empty() ? window : tiles, projectedBounds))
   {
-    // (an empty input has no record to carry: tiles whose tessellation failed upstream were said
-    // to carry none, which pointed at the projection)
+    // (an empty input is said to be empty, not to carry a record or none: tiles whose
+    // tessellation failed upstream were said to carry none, which pointed at the projection)
     return std::string();
   }
-  if (tessera_vtk::DataBounds(ofTiles.empty() ? window : tiles, projectedBounds) &&
-    ReachesMetres(projectedBounds) && WithinDegrees(otherBounds))
+  if (ReachesMetres(projectedBounds) && WithinDegrees(otherBounds))
   {
     throw tessera::InputError(projected + " is projected (TesseraProjection " + ofTiles + ofWindow +
       "; " + BoundsText(projectedBounds) + ") and " + other +
@@ -630,12 +630,6 @@ int vtkWindowClip::RequestData(vtkInformation*,
     {
       vtkWarningMacro(<< projectionWarning);
     }
-    double tilesBounds[6];
-    if (!tessera_vtk::DataBounds(tilesData, tilesBounds))
-    {
-      vtkWarningMacro(<< "the tiles (input 0) have no points, so nothing is clipped (did the filter "
-                         "that makes them fail?)");
-    }
     std::vector<std::string> ringWarnings;
     const tessera_vtk::Rings window =
       tessera_vtk::ReadPolygonRings(windowData, "window (input 1)", ringWarnings);
@@ -657,6 +651,13 @@ int vtkWindowClip::RequestData(vtkInformation*,
     {
       throw tessera::InputError("the window (input 1): its area overflows (coordinates of some "
                                 "1e154 or more); scale the tiles and the window down");
+    }
+    double tilesBounds[6];
+    if (!tessera_vtk::DataBounds(tilesData, tilesBounds))
+    {
+      vtkWarningMacro(
+        << "the tiles (input 0) have no points, so nothing is clipped (did the filter "
+           "that makes them fail?)");
     }
     auto* blocks = vtkCompositeDataSet::SafeDownCast(tilesData);
     if (!blocks)

@@ -364,11 +364,14 @@ def test_integer_points_beyond_what_a_double_holds_are_named():
     # Points of 64-bit integers beyond 2^53 were rounded to doubles silently: 2^62 + 1 and 2^62
     # became one point, reported as a duplicate. Those a double holds (2^62 itself, or anything up
     # to 2^53) are taken as they are.
-    from vtkmodules.vtkCommonCore import vtkIdTypeArray, vtkPoints, vtkTypeInt64Array, vtkTypeUInt64Array
+    from vtkmodules.vtkCommonCore import (vtkIdTypeArray, vtkPoints, vtkSOADataArrayTemplate, vtkTypeInt64Array,
+                                          vtkTypeUInt64Array)
     from vtkmodules.vtkCommonDataModel import vtkPolyData
 
+    # (a structure of arrays, each coordinate in an array of its own, was not checked)
+    soa = vtkSOADataArrayTemplate["int64"]
     for kind, big in ((vtkTypeInt64Array, 2 ** 62), (vtkTypeInt64Array, -2 ** 62), (vtkIdTypeArray, 2 ** 62),
-                      (vtkTypeUInt64Array, 2 ** 63), (vtkTypeInt64Array, 2 ** 53 - 1)):
+                      (vtkTypeUInt64Array, 2 ** 63), (soa, 2 ** 62), (vtkTypeInt64Array, 2 ** 53 - 1)):
         values = kind()
         values.SetNumberOfComponents(3)
         coordinates = [(0, 0), (big, 0), (big + (1 if big > 0 else -1), 0), (0, abs(big))]
@@ -602,12 +605,11 @@ def test_automatic_window_keeps_every_point_and_bad_windows_are_named():
             # where Padding was 0), nor does a window printed as -inf .. inf.
             ("points 1e300 apart", lambda f: (f.SetPadding(0), f.SetInputData(make_points([(-1e300, 0), (1e300, 1), (0, 1e300)]))),
              "the points span x -1e+300 .. 1e+300, y 0 .. 1e+300: the area of a window that holds them overflows a double, whatever the Padding"),
-            # (so for points on one line, whose box has no area: they were told to set a smaller
-            # Padding, which no Padding helps)
-            ("points 1e200 apart on a line", lambda f: f.SetInputData(make_points([(0, 0), (1e200, 0)])),
-             "the points span x 0 .. 1e+200, y 0 .. 0: the automatic window, padded by a share of their longer side "
-             "(at Padding 0 a margin of 1e-9 of it), has an area that overflows a double, whatever the Padding; set "
-             "WindowBounds close about them"),
+            # Points on one line at Padding 0, whose window keeps a margin of 1e-9 of the line: they
+            # were told to set a smaller Padding than 0.
+            ("points 1e200 apart on a line", lambda f: (f.SetPadding(0), f.SetInputData(make_points([(0, 0), (1e200, 0)]))),
+             "it is the points' bounding box with a margin of 1e-9 of its larger side (Padding 0): set WindowBounds "
+             f"close about the points, a Padding above 0 and below {sys.float_info.max / (4.0 * 1e200) / 1e200!r}"),
             ("padding past the doubles", lambda f: (f.SetPadding(1e200), f.SetInputData(make_points([(0, 0), (1e150, 1e150)]))),
              "the automatic window reaches beyond the largest double: it is the points' bounding box padded by 1e+200 of its larger side (Padding): set a smaller Padding")]:
         f = vtkDirichletTessellation()
@@ -620,6 +622,13 @@ def test_automatic_window_keeps_every_point_and_bad_windows_are_named():
                     f"{name}: an error saying '{expected}', not NaN areas: {messages}")
         # (A NaN bound was also called an empty rectangle, "ymin >= ymax", in a warning.)
         assert_that(not warnings, f"{name}: no warning beside the error: {warnings}")
+    # A Padding in the range the line's advice gives makes its tiles.
+    f = vtkDirichletTessellation()
+    messages = messages_of(f)
+    f.SetInputData(make_points([(0, 0), (1e200, 0)]))
+    f.SetPadding(1e-93)
+    f.Update()
+    assert_that(not messages and f.GetOutput(0).GetNumberOfCells() == 2, f"the line at Padding 1e-93: {messages}")
 
 
 def test_window_constraint_errors_name_them_as_the_user_added_them():

@@ -567,6 +567,15 @@ def test_tiles_and_window_must_share_their_projection():
     output, errors, warnings = clip_by(vtkPolyData(), projected(catchment, False))
     assert_that(not errors and len(warnings) == 1 and "the tiles (input 0) have no points" in warnings[0]
                 and output.GetNumberOfCells() == 0, f"empty tiles: {errors} {warnings}")
+    # (nor when the empty tiles carry the record and the window none; an empty window is an error
+    # alone, not also a warning about the tiles)
+    recorded = vtkPolyData()
+    recorded.GetFieldData().ShallowCopy(tiles_of(same).GetFieldData())
+    output, errors, warnings = clip_by(recorded, catchment)
+    assert_that(not errors and len(warnings) == 1 and "the tiles (input 0) have no points" in warnings[0],
+                f"empty tiles with a record: {errors} {warnings}")
+    output, errors, warnings = clip_by(vtkPolyData(), vtkPolyData())
+    assert_that(len(errors) == 1 and not warnings, f"empty tiles and window: {errors} {warnings}")
     # A window of blocks projected apart (each with its own automatic projection) is refused.
     from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
 
