@@ -636,23 +636,16 @@ std::vector<std::uint8_t> NameNearContourEnds(const GroupedPoints& grouped,
     }
   }
   const double reach = NearEndWidths * width;
-  const double cos45 = std::sqrt(0.5);
-  // Whether the end looks towards the point `to` (within 45 degrees).
-  const auto looksAt = [cos45](const End& end, const Point2& to)
-  {
-    const double dx = to.x - end.At.x, dy = to.y - end.At.y;
-    const double dot = dx * end.Outward.x + dy * end.Outward.y;
-    return dot > cos45 * std::hypot(dx, dy) * std::hypot(end.Outward.x, end.Outward.y);
+  // Whether directions a and b lie within 45 degrees of each other.
+  const auto within45 = [](const Point2& a, const Point2& b)
+  { return a.x * b.x + a.y * b.y > std::sqrt(0.5) * std::hypot(a.x, a.y) * std::hypot(b.x, b.y); };
+  // Whether the end looks towards the point `to`; whether two ends look the same way.
+  const auto looksAt = [&](const End& end, const Point2& to) {
+    return within45({ to.x - end.At.x, to.y - end.At.y }, end.Outward);
   };
+  const auto sameWay = [&](const End& u, const End& v) { return within45(u.Outward, v.Outward); };
   // Whether a contour is long enough to be a curve bent back on itself.
   const auto isLong = [&](int c) { return contours.Lengths[std::size_t(c)] >= 4.0 * reach; };
-  // Whether two ends look the same way (within 45 degrees).
-  const auto sameWay = [cos45](const End& u, const End& v)
-  {
-    const double dot = u.Outward.x * v.Outward.x + u.Outward.y * v.Outward.y;
-    return dot >
-      cos45 * std::hypot(u.Outward.x, u.Outward.y) * std::hypot(v.Outward.x, v.Outward.y);
-  };
   struct Near
   {
     End A, B;
@@ -747,7 +740,7 @@ void NameFoldedContours(const GroupedPoints& grouped,
   struct Station
   {
     int Contour;
-    double Arc; // pixels along the contour from its first pixel
+    double Arc; // pixels along the contour from its first pixel (the partition's ArcLength)
     Point2 At;
   };
   std::vector<Station> stations;
@@ -758,13 +751,11 @@ void NameFoldedContours(const GroupedPoints& grouped,
     {
       continue; // (its ends may run past each other: named already)
     }
-    const int first = contours.Offsets[c], last = contours.Offsets[c + 1] - 1;
-    double arc = 0.0;
-    for (int k = first; k <= last; ++k)
+    for (int k = contours.Offsets[c]; k < contours.Offsets[c + 1]; ++k)
     {
-      const int pixel = contours.Pixels[std::size_t(k)];
-      arc += k == first ? 0.0 : StepLength(contours.Pixels[std::size_t(k - 1)], pixel, grid.Width);
-      stations.push_back({ c, arc, grouped.PixelPoint(pixel) });
+      stations.push_back({ c,
+        partition.ArcLength[std::size_t(k)],
+        grouped.PixelPoint(contours.Pixels[std::size_t(k)]) });
     }
     loopLength[std::size_t(c)] = contours.Closed[c] ? contours.Lengths[std::size_t(c)] : 0.0;
   }
@@ -1070,7 +1061,7 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
   // Two basis widths: ridges closer than about that merge into one, so a saddle path between
   // two separate ridges is longer (with four widths, noisy lines 4.3 widths apart were joined
   // across into Z-shaped groups).
-  contourSettings.MaximumBridgeLength = 2.0 * this->Settings.Width;
+  contourSettings.MaximumBridgeLength = MergedCurvesWidths * this->Settings.Width;
   // A ridge loop shorter than a circle of one basis width is no closed curve of the data: the
   // field merges such a loop of points into one peak. Such loops come from the field's shape
   // where a curve ends or bends (11-29 pixel loops at a basis width of 8 took a road's last 60

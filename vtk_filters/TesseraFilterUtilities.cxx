@@ -89,7 +89,7 @@ void CheckIntegerPoints(const Value& value, vtkIdType n)
       {
         throw tessera::InputError("point " + std::to_string(i) + " has the integer coordinate " +
           std::to_string(v) +
-          ", which the doubles the tessellation computes in hold only rounded, " + "to " +
+          ", which the doubles the tessellation computes in hold only rounded, to " +
           tessera::NumberText(static_cast<double>(v)) +
           " (beyond 2^53; 2^62 + 1 and 2^62 became one point): subtract an offset first");
       }
@@ -117,8 +117,10 @@ void CheckIntegerArray(vtkDataArray* data)
     CheckIntegerPoints([data](vtkIdType k) { return data->GetVariantValue(k).ToTypeUInt64(); }, n);
   }
 }
-} // namespace
 
+/// Throws tessera::InputError naming the first point, of a 3-component array of 64-bit integers,
+/// whose x or y no double holds exactly (some beyond 2^53: 2^62 + 1 and 2^62 became one point,
+/// reported as a duplicate); nothing for arrays of other types.
 void CheckIntegersFitDoubles(vtkDataArray* data)
 {
   if (data->GetNumberOfComponents() != 3 || data->GetDataTypeSize() != 8)
@@ -146,6 +148,7 @@ void CheckIntegersFitDoubles(vtkDataArray* data)
       break;
   }
 }
+} // namespace
 
 std::vector<tessera::Point2> CopyPoints2D(vtkPoints* points)
 {

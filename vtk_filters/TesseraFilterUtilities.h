@@ -26,7 +26,6 @@ class vtkAlgorithmOutput;
 class vtkCellArray;
 class vtkCompositeDataIterator;
 class vtkCompositeDataSet;
-class vtkDataArray;
 class vtkDataSet;
 class vtkInformationVector;
 class vtkDataObject;
@@ -39,14 +38,9 @@ class vtkPolyData;
 namespace tessera_vtk
 {
 
-/// Throws tessera::InputError naming the first point, of a 3-component array of 64-bit integers,
-/// whose x or y no double holds exactly (some beyond 2^53: 2^62 + 1 and 2^62 became one point,
-/// reported as a duplicate); nothing for arrays of other types.
-void CheckIntegersFitDoubles(vtkDataArray* data);
-
 /// x, y of every point (z ignored), as they are (NaN and infinities included: for a caller whose
-/// core check names the points better); 64-bit integer points are checked
-/// (CheckIntegersFitDoubles).
+/// core check names the points better); 64-bit integer points that no double holds exactly
+/// (some beyond 2^53) are a tessera::InputError naming the first.
 std::vector<tessera::Point2> CopyPoints2D(vtkPoints* points);
 
 /// CopyPoints2D, throwing tessera::InputError naming the first point with a NaN or infinite x or y.

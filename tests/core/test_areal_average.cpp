@@ -202,12 +202,7 @@ TEST(ArealAverage, FourSymmetricGaugesShareASquareEqually)
 TEST(ArealAverage, ThreadsDisplayingOneAverageAtOnceGetTheSerialResult)
 {
   std::mt19937_64 random(1);
-  std::uniform_real_distribution<double> lon(-109.0, -102.0), lat(37.0, 41.0);
-  std::vector<Point2> gauges(2000);
-  for (Point2& g : gauges)
-  {
-    g = { lon(random), lat(random) };
-  }
+  const std::vector<Point2> gauges = UniformGauges(2000, random, -109.0, -102.0, 37.0, 41.0);
   ThiessenArealAverage average(
     gauges, { 0, 4 }, { { -108, 37.5 }, { -103, 37.5 }, { -103, 40.5 }, { -108, 40.5 } });
   average.Step(std::vector<double>(gauges.size(), 1.0));

@@ -159,18 +159,7 @@ Canonical MakeCanonical(const Tess& t,
     c.Graph.emplace_back(std::min(i, j), std::max(i, j), graph.Kinds[k]);
   }
   std::sort(c.Graph.begin(), c.Graph.end());
-  const DelaunayFaces faces = dual.Faces(false);
-  for (std::size_t f = 0; f + 1 < faces.Offsets.size(); ++f)
-  {
-    std::vector<std::int32_t> face;
-    for (std::int64_t k = faces.Offsets[f]; k < faces.Offsets[f + 1]; ++k)
-    {
-      face.push_back(map(faces.PointIds[k]));
-    }
-    std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
-    c.Faces.push_back(face);
-  }
-  std::sort(c.Faces.begin(), c.Faces.end());
+  c.Faces = tessera_test::SortedFaces(dual.Faces(false), idMap);
   if (tiles)
   {
     const TileSet set = dual.Tiles();

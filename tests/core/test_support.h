@@ -121,6 +121,26 @@ inline std::vector<std::int32_t> AcceptedIds(const tessera::DirichletTessellatio
   return ids;
 }
 
+/// Delaunay faces by point ids (mapped by idMap where one is given), each from its smallest id,
+/// sorted: the same for any insertion order.
+inline std::vector<std::vector<std::int32_t>> SortedFaces(const tessera::DelaunayFaces& faces,
+  const std::vector<std::int32_t>& idMap = {})
+{
+  std::vector<std::vector<std::int32_t>> sorted;
+  for (std::size_t f = 0; f + 1 < faces.Offsets.size(); ++f)
+  {
+    std::vector<std::int32_t> face;
+    for (std::int64_t k = faces.Offsets[f]; k < faces.Offsets[f + 1]; ++k)
+    {
+      face.push_back(idMap.empty() ? faces.PointIds[k] : idMap[faces.PointIds[k]]);
+    }
+    std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
+    sorted.push_back(face);
+  }
+  std::sort(sorted.begin(), sorted.end());
+  return sorted;
+}
+
 /// The side x side square lattice ((i + 0.5) / divisor, (j + 0.5) / divisor), row by row: every
 /// Delaunay face degenerate (4 co-circular points).
 inline std::vector<tessera::Point2> SquareLattice(int side, double divisor = 1.0)

@@ -69,26 +69,6 @@ TEST(WalkHints, TrianglesBesidePointsLieNearThem)
   EXPECT_GE(hints.Near({ -50.0, 1e9 }, near), 1);
 }
 
-namespace
-{
-/// The Delaunay faces of t by input point ids, each from its smallest id, sorted: the same for any
-/// insertion order.
-std::vector<std::vector<std::int32_t>> SortedFaces(const DirichletTessellation& t)
-{
-  const DelaunayFaces faces = TessellationDual(t).Faces(false);
-  std::vector<std::vector<std::int32_t>> sorted;
-  for (std::size_t f = 0; f + 1 < faces.Offsets.size(); ++f)
-  {
-    std::vector<std::int32_t> face(
-      faces.PointIds.begin() + faces.Offsets[f], faces.PointIds.begin() + faces.Offsets[f + 1]);
-    std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
-    sorted.push_back(face);
-  }
-  std::sort(sorted.begin(), sorted.end());
-  return sorted;
-}
-} // namespace
-
 // A box so small that its scale overflows (a side below 65536 / DBL_MAX) gives no index: the
 // point at the box's edge made 0 * inf, a NaN cell (undefined behaviour, caught by the sanitizer
 // build's float-cast-overflow); streaming such points, copies included, still equals the batch.
@@ -110,5 +90,6 @@ TEST(WalkHints, ABoxTooSmallToScaleGivesNoIndex)
   }
   EXPECT_EQ(streamed.AcceptedCount(), batch.AcceptedCount());
   EXPECT_EQ(streamed.Duplicates(), batch.Duplicates());
-  EXPECT_EQ(SortedFaces(streamed), SortedFaces(batch));
+  EXPECT_EQ(tessera_test::SortedFaces(TessellationDual(streamed).Faces(false)),
+    tessera_test::SortedFaces(TessellationDual(batch).Faces(false)));
 }
