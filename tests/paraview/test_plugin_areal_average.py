@@ -7,10 +7,11 @@ import os
 import sys
 
 from paraview import servermanager
-from paraview.simple import (CreateRenderView, CSVReader, GetTimeKeeper, LoadPlugin, OpenDataFile, OutputPort, Show,
-                             TableToPoints)
+from paraview.simple import (CreateRenderView, CSVReader, GetTimeKeeper, LoadPlugin, OpenDataFile, OutputPort,
+                             PVTrivialProducer, Show, TableToPoints)
 from vtkmodules.util.misc import calldata_type
-from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkOutputWindow
+from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkDoubleArray, vtkOutputWindow, vtkPoints
+from vtkmodules.vtkCommonDataModel import VTK_VERTEX, vtkPolyData
 
 LoadPlugin(os.environ["TESSERA_PLUGIN"], remote=False, ns=globals())
 data = os.path.join(os.environ["TESSERA_SOURCE_DIR"], "examples", "data")
@@ -107,16 +108,44 @@ if average.GetClientSideObject().GetNumberOfInputConnections(2) != 0:
 if len(average.TimestepValues) != 0:
     failures.append(f"{len(average.TimestepValues)} time steps advertised without observations")
 # The column and array properties offer the table's columns and the gauges' point arrays (a list
-# in the panel, not a text box), and keep their defaults where the input lacks such a column.
+# in the panel, not a text box), and keep their defaults where the input lacks such a column. The
+# value array is offered among the numbers of one component only (the stations' names are text),
+# and Month Column's list begins with the empty entry, no month column.
 columns = servermanager.Fetch(monthly)
 arrays = servermanager.Fetch(stations).GetPointData()
+numbers = [arrays.GetAbstractArray(a) for a in range(arrays.GetNumberOfArrays())]
+numbers = [a.GetName() for a in numbers if a.IsNumeric() and a.GetNumberOfComponents() == 1]
 offered = {"StationColumn": sorted(columns.GetColumnName(c) for c in range(columns.GetNumberOfColumns())),
-           "StationIdArrayName": sorted(arrays.GetArrayName(a) for a in range(arrays.GetNumberOfArrays()))}
+           "StationIdArrayName": sorted(arrays.GetArrayName(a) for a in range(arrays.GetNumberOfArrays())),
+           "ValueArrayName": sorted(numbers)}
 offered.update(TimeColumn=offered["StationColumn"], ValueColumn=offered["StationColumn"],
-               ValueArrayName=offered["StationIdArrayName"])
+               MonthColumn=[""] + offered["StationColumn"])
+if len(numbers) == arrays.GetNumberOfArrays():
+    failures.append("the stations have no text array, so the value list's filter is not tested")
 for name, expected in offered.items():
     if sorted(average.GetProperty(name).Available) != expected:
         failures.append(f"{name} offers {list(average.GetProperty(name).Available)}, expected {expected}")
+# Neither list offers the gauges' field data (one value for the whole set, never a gauge's), nor
+# does the value list offer a vector; cell data (a GDAL reader's feature attributes) is offered.
+made = vtkPolyData()
+made.SetPoints(vtkPoints())
+made.AllocateEstimate(3, 1)
+for i in range(3):
+    made.GetPoints().InsertNextPoint(-105.0 + i, 39.0 + i % 2, 0.0)
+    made.InsertNextCell(VTK_VERTEX, 1, [i])
+for data, name, components in ((made.GetPointData(), "id", 1), (made.GetPointData(), "wind", 3),
+                               (made.GetCellData(), "rain", 1), (made.GetFieldData(), "run", 1)):
+    array = vtkDoubleArray()
+    array.SetName(name)
+    array.SetNumberOfComponents(components)
+    array.SetNumberOfTuples(1 if name == "run" else 3)
+    data.AddArray(array)
+producer = PVTrivialProducer()
+producer.GetClientSideObject().SetOutput(made)
+lists = ThiessenArealAverage(Gauges=producer, Catchment=outline)  # noqa: F821
+for name, expected in (("StationIdArrayName", ["id", "rain", "wind"]), ("ValueArrayName", ["id", "rain"])):
+    if sorted(lists.GetProperty(name).Available) != expected:
+        failures.append(f"made gauges: {name} offers {list(lists.GetProperty(name).Available)}, expected {expected}")
 fresh = ThiessenArealAverage(Gauges=stations, Catchment=outline, Observations=monthly)  # noqa: F821
 defaults = [fresh.GetPropertyValue(name) for name in ("StationIdArrayName", "ValueArrayName", "StationColumn",
                                                       "TimeColumn", "MonthColumn", "ValueColumn")]
