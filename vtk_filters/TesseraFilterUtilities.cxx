@@ -1106,7 +1106,12 @@ std::string ArrayLabel(vtkAbstractArray* array)
   return name && *name ? "'" + std::string(name) + "'" : std::string("without a name");
 }
 
-void CheckAttributeLengths(vtkDataSet* data, const std::string& what)
+namespace
+{
+/// Calls visit(array, points, needed) for each point-data array of data (points true, needed its
+/// number of points) and each cell-data array (points false, needed its number of cells).
+template<class Visit>
+void VisitAttributeArrays(vtkDataSet* data, Visit visit)
 {
   for (const bool points : { true, false })
   {
@@ -1115,15 +1120,51 @@ void CheckAttributeLengths(vtkDataSet* data, const std::string& what)
     const vtkIdType needed = points ? data->GetNumberOfPoints() : data->GetNumberOfCells();
     for (int k = 0; k < arrays->GetNumberOfArrays(); ++k)
     {
-      vtkAbstractArray* array = arrays->GetAbstractArray(k);
-      if (array && array->GetNumberOfTuples() < needed)
+      if (vtkAbstractArray* array = arrays->GetAbstractArray(k))
+      {
+        visit(array, points, needed);
+      }
+    }
+  }
+}
+} // namespace
+
+void CheckAttributeLengths(vtkDataSet* data, const std::string& what)
+{
+  VisitAttributeArrays(data,
+    [&what](vtkAbstractArray* array, bool points, vtkIdType needed)
+    {
+      if (array->GetNumberOfTuples() < needed)
       {
         throw tessera::InputError(what + ": its " + (points ? "point" : "cell") + "-data array " +
           ArrayLabel(array) + " has " + std::to_string(array->GetNumberOfTuples()) +
           " value(s) for " + std::to_string(needed) + (points ? " points" : " cells"));
       }
-    }
-  }
+    });
+}
+
+std::vector<std::string> LongAttributeWarnings(vtkDataSet* data,
+  const std::string& what,
+  const std::vector<std::string>& names)
+{
+  std::vector<std::string> warnings;
+  VisitAttributeArrays(data,
+    [&](vtkAbstractArray* array, bool points, vtkIdType needed)
+    {
+      const vtkIdType count = array->GetNumberOfTuples();
+      const char* name = array->GetName();
+      const bool asked = names.empty() ||
+        (name && std::find(names.begin(), names.end(), std::string(name)) != names.end());
+      if (count > needed && asked)
+      {
+        warnings.push_back(what + ": its " + (points ? "point" : "cell") + "-data array " +
+          ArrayLabel(array) + " has " + std::to_string(count) + " values for " +
+          std::to_string(needed) + (points ? " points" : " cells") + ", so its values " +
+          std::to_string(needed) + " to " + std::to_string(count - 1) +
+          " (counted from 0) belong to none and are not used");
+      }
+    });
+  return warnings;
 }
 
 namespace
@@ -1237,6 +1278,10 @@ vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data, std::vector<std::s
   if (auto* points = vtkPointSet::SafeDownCast(data))
   {
     CheckAttributeLengths(points, "the input");
+    for (std::string& warning : LongAttributeWarnings(points, "the input"))
+    {
+      warnings.push_back(std::move(warning));
+    }
     // One vertex per point (ParaView's Merge Blocks of a GDAL point layer): the vertices'
     // attributes are the points'.
     const std::vector<std::string> cellArrays = UncarriedCellArrays(points);

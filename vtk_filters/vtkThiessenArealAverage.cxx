@@ -1251,6 +1251,11 @@ vtkPointSet* vtkThiessenArealAverage::GaugesOf(vtkDataObject* data)
       // Attributes of one vertex per point (a GDAL point layer after Merge Blocks) are the
       // points' (the point set itself when there are none).
       in.Joined = tessera_vtk::VertexArraysAsPointData(points, arrays);
+      for (const std::string& warning :
+        tessera_vtk::LongAttributeWarnings(in.Joined, "the gauges (input 0)", arrays))
+      {
+        vtkWarningMacro(<< warning);
+      }
     }
     else
     {

@@ -360,6 +360,10 @@ void ClipBlock(vtkPointSet* tiles,
 {
   // (the tiles' arrays are copied by cell id: a short one was read past its end)
   tessera_vtk::CheckArraysAndCellPointIds(tiles, "the tiles (input 0)");
+  for (std::string& warning : tessera_vtk::LongAttributeWarnings(tiles, "the tiles (input 0)"))
+  {
+    warnings.push_back(std::move(warning));
+  }
   const std::string pointDataWarning = PointDataWarning(tiles);
   if (!pointDataWarning.empty())
   {

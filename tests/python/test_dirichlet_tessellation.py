@@ -1087,6 +1087,38 @@ def test_short_attribute_arrays_are_errors_naming_them():
                 assert_that(f.GetOutputDataObject(0).GetNumberOfCells() == 0, "outputs emptied")
 
 
+def test_long_attribute_arrays_are_named_and_their_extra_values_unused():
+    """A point-data array with more values than points (often a mismatch) was taken silently. It is
+    named in a warning, and the tiles carry each point's own value: the extra ones are not used."""
+    from vtkmodules.vtkCommonCore import vtkCommand, vtkDoubleArray
+
+    from tessera import vtkRidgeGrouping
+
+    rng = np.random.default_rng(9)
+    coords = [tuple(p) for p in rng.random((50, 2))]
+    for cls in (vtkDirichletTessellation, vtkDelaunayTriangulation, vtkRidgeGrouping):
+        data = make_points(coords)
+        rain = vtkDoubleArray()
+        rain.SetName("rain")
+        for k in range(53):
+            rain.InsertNextValue(10.0 * k)
+        data.GetPointData().AddArray(rain)
+        f = cls()
+        warnings = messages_of(f, vtkCommand.WarningEvent)
+        errors = messages_of(f, vtkCommand.ErrorEvent)
+        f.SetInputData(data)
+        f.Update()
+        expected = ("the input: its point-data array 'rain' has 53 values for 50 points, so its values 50 to 52 "
+                    "(counted from 0) belong to none and are not used")
+        assert_that(not errors and sum(expected in w for w in warnings) == 1, f"{cls.__name__}: {errors} {warnings}")
+        if cls is vtkDirichletTessellation:
+            tiles = f.GetOutputDataObject(0).GetCellData()
+            ids, values = tiles.GetArray("PointId"), tiles.GetArray("rain")
+            assert_that(ids.GetNumberOfTuples() == 50
+                        and all(values.GetValue(c) == 10.0 * ids.GetValue(c) for c in range(50)),
+                        "each tile carries its own point's value")
+
+
 def test_each_process_piece_gets_the_whole_tessellation_once():
     """ParaView under MPI asks each process for a piece of the output: each tessellated its own
     piece's points (overlapping tiles whose areas summed to twice the window's). Now the first piece
@@ -1566,6 +1598,7 @@ if __name__ == "__main__":
          test_a_coordinate_too_small_for_exact_window_decisions_is_named,
          test_points_in_blocks_are_one_set_and_other_types_empty_the_outputs,
          test_short_attribute_arrays_are_errors_naming_them,
+         test_long_attribute_arrays_are_named_and_their_extra_values_unused,
          test_each_process_piece_gets_the_whole_tessellation_once,
          test_vertex_cell_data_of_one_point_set_is_carried_and_other_cell_data_is_reported,
          test_blocks_with_different_arrays_are_joined_with_a_warning_either_way_round,

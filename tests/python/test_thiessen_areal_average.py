@@ -442,6 +442,27 @@ def test_gauges_in_blocks_as_a_point_layer_gives_them_are_joined():
     h.Update(1)
     assert_that(len(errors) == 1 and "the gauges (input 0): its point-data array 'value' has 1 value(s) for 5 points"
                 in errors[0], f"{errors}")
+    # A longer value array is named in a warning (not the gauges' other long arrays, unread), and
+    # the mean is that of the gauges' own values: the extra ones are not used.
+    means = []
+    for extra in ([], [1000.0, 2000.0]):
+        gauges = gauges_polydata(coords, names, [1.0, 2.0, 3.0, 4.0, 5.0] + extra)
+        unread = vtkDoubleArray()
+        unread.SetName("elevation")
+        unread.SetNumberOfTuples(6)
+        gauges.GetPointData().AddArray(unread)
+        h = vtkThiessenArealAverage()
+        warnings = messages_of(h, vtkCommand.WarningEvent)
+        h.SetGaugesData(gauges)
+        h.SetCatchmentData(polygon([[(-1, -1), (1, -1), (1, 1), (-1, 1)]]))
+        h.Update(1)
+        long_ones = [w for w in warnings if "values for 5 points" in w]
+        expected = ["the gauges (input 0): its point-data array 'value' has 7 values for 5 points, so its values 5 "
+                    "to 6 (counted from 0) belong to none and are not used"] if extra else []
+        assert_that(len(long_ones) == len(expected) and all(e in w for e, w in zip(expected, long_ones)),
+                    f"{warnings}")
+        means.append(summary_column(h, "ArealMean"))
+    assert_that(means[0] == means[1] and len(means[0]) == 1, f"means {means}")
     # A block without the station ids is named.
     blocks.GetBlock(3).GetCellData().RemoveArray("station_id")
     _, errors = averaged(blocks)

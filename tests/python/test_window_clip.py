@@ -913,6 +913,20 @@ def test_short_arrays_and_windows_beyond_the_doubles_are_named():
         assert_that(len(errors) == 1
                     and "the tiles (input 0): its cell-data array 'v' has 1 value(s) for 2 cells" in errors[0]
                     and output.GetNumberOfCells() == 0, f"{array.GetClassName()}: {errors}")
+    # A longer one is named in a warning, and each clipped tile keeps its own value.
+    tiles = polygon([square, [(1.0, 0.0), (2.0, 0.0), (2.0, 1.0), (1.0, 1.0)]])
+    long = vtkDoubleArray()
+    long.SetName("v")
+    for value in (5.0, 6.0, 7.0):
+        long.InsertNextValue(value)
+    tiles.GetCellData().AddArray(long)
+    output, errors, warnings = clip_by(tiles, polygon([[(0.5, 0.0), (2.0, 0.0), (2.0, 1.0), (0.5, 1.0)]]))
+    expected = ("the tiles (input 0): its cell-data array 'v' has 3 values for 2 cells, so its values 2 to 2 "
+                "(counted from 0) belong to none and are not used")
+    kept = output.GetCellData().GetArray("v")
+    assert_that(not errors and sum(expected in w for w in warnings) == 1, f"{errors} {warnings}")
+    assert_that(output.GetNumberOfCells() == 2 and [kept.GetValue(c) for c in range(2)] == [5.0, 6.0],
+                f"{output.GetNumberOfCells()} clipped tiles")
     huge = [[(1e200 * x, 1e200 * y) for x, y in square]]
     output, errors, _ = clip_by(polygon([[(0.0, 0.0), (1.0, 0.0), (1.0, 1.0)]]), polygon(huge))
     assert_that(len(errors) == 1 and "the window (input 1): its area overflows" in errors[0],
