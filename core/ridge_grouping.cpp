@@ -522,7 +522,7 @@ std::string NoContourWarning(const RidgeContours& contours,
     ")";
 }
 
-/// Open groups' ends within this many basis widths of another end are named (NameNearContourEnds).
+/// Open groups' ends within this many basis widths of another end are named (FindNearEnds).
 constexpr double NearEndWidths = 4.0;
 
 /// Curves closer than this many basis widths make one ridge of the field, one contour between
@@ -540,49 +540,29 @@ std::string PlaceText(const PixelGrid& grid, const Point2& at)
   return "(" + NumberText(p.x) + ", " + NumberText(p.y) + ")";
 }
 
-/// A warning naming pairs of open groups' ends that lie within NearEndWidths basis widths of each
-/// other, one looking towards the other (the two ends of one long contour whichever way they look,
-/// below). A group's end
-/// is where its points end: its point of the smallest node for the contour's first end, of the
-/// largest for its last (the contour's end pixel for a contour without points). A contour stops
-/// some basis widths before the points along it (point_partition.h), so its end pixels were 9.4
-/// widths apart across a gap of 2.2 in a line's points, and the line split silently. Where a
-/// curve's points lie further apart than the basis reaches, its ridge breaks, and the curve comes
-/// out as pieces, or a closed one open, without a word. Clean, dense points make it likely: most of
-/// them need pixels of their own, so the automatic image is large and the basis narrow in the
-/// points' units (1000 points at random on a circle, without noise, gave 4 open groups with the
-/// Gaussian basis at 512 pixels, their ends 1-3 widths apart). One of the ends must look towards
-/// the other, the gap within 45 degrees of its own direction (not both: a short piece's end often
-/// hooks back): the ends of two lines side by side (24 units apart, 3.8 widths), of crossing lines
-/// and of a spiral's neighbouring turns are near each other too, but the gap runs across them, and
-/// a larger Width would merge those curves. A long contour's own two ends within reach are named
-/// whichever way they look (a noisy circle came out open, its ends 1.8 widths apart and hooked
-/// past each other, looking away from each other, and nothing was said), except the ends of a fold:
-/// side by side, looking the same way, and further apart than merged curves lie
-/// (NameFoldedContours names those). Returns per contour whether its own two ends lie within reach
-/// and are no fold's: a closed curve broken (named where the contour is long), or a short contour
-/// whose ends are near by its shortness, both of which NameFoldedContours leaves out.
-///
-///    piece A  ====>  . . gap . .  <====  piece B      named: an end looks at the other
-///
-///    line 1   ====>
-///                 |  gap across                       not named
-///    line 2   ====>
-///
-///    ----------->  end 1                              one contour's ends past each other:
-///         end 2  <-----------                         named
-///
-///     .--------------->  end 1                        one contour's ends of a fold: not named
-///    (                                                here
-///     `--------------->  end 2
-std::vector<std::uint8_t> NameNearContourEnds(const GroupedPoints& grouped,
-  RidgeGroupingResult& result)
+/// An open contour's end: where its group's points end, and the way the contour runs out there.
+struct ContourEnd
+{
+  int Contour;
+  Point2 At;      // where the group's points end (pixel units)
+  Point2 Outward; // from a pixel a width or so inside the contour towards its end pixel
+};
+
+/// Two contour ends within NearEndWidths basis widths of each other, Pixels apart.
+struct NearEnds
+{
+  ContourEnd A, B;
+  double Pixels;
+};
+
+/// Per contour, its points of the smallest and of the largest node (-1: none); of points with the
+/// same node, the nearest to that end's pixel: an outlier past an end takes the node of the last
+/// point continuing it (point_partition.h), and must not stand for where the points end (taken by
+/// index, one stray point gave or hid the warning by its place in the input).
+std::pair<std::vector<std::ptrdiff_t>, std::vector<std::ptrdiff_t>> EndPointsOfGroups(
+  const GroupedPoints& grouped)
 {
   const auto& [pixelPoints, contours, partition, grid, width] = grouped;
-  // Per contour, its points of the smallest and of the largest node (-1: none); of points with
-  // the same node, the nearest to that end's pixel: an outlier past an end takes the node of the
-  // last point continuing it (point_partition.h), and must not stand for where the points end
-  // (taken by index, one stray point gave or hid the warning by its place in the input).
   std::vector<std::ptrdiff_t> lowest(std::size_t(contours.Count()), -1);
   std::vector<std::ptrdiff_t> highest(std::size_t(contours.Count()), -1);
   const auto endward = [&](std::size_t k, std::ptrdiff_t best, int end, double sign)
@@ -609,13 +589,16 @@ std::vector<std::uint8_t> NameNearContourEnds(const GroupedPoints& grouped,
     low = endward(k, low, contours.Offsets[c], -1.0) ? std::ptrdiff_t(k) : low;
     high = endward(k, high, contours.Offsets[c + 1] - 1, 1.0) ? std::ptrdiff_t(k) : high;
   }
-  struct End
-  {
-    int Contour;
-    Point2 At;      // where the group's points end (pixel units)
-    Point2 Outward; // from a pixel a width or so inside the contour towards its end pixel
-  };
-  std::vector<End> ends;
+  return { std::move(lowest), std::move(highest) };
+}
+
+/// The two ends of each open contour of two pixels or more, at its group's end points (the
+/// contour's end pixel for a contour without points).
+std::vector<ContourEnd> OpenContourEnds(const GroupedPoints& grouped)
+{
+  const auto& [pixelPoints, contours, partition, grid, width] = grouped;
+  const auto [lowest, highest] = EndPointsOfGroups(grouped);
+  std::vector<ContourEnd> ends;
   for (int c = 0; c < contours.Count(); ++c)
   {
     const int first = contours.Offsets[c], last = contours.Offsets[c + 1] - 1;
@@ -635,30 +618,76 @@ std::vector<std::uint8_t> NameNearContourEnds(const GroupedPoints& grouped,
         { pixel.x - from.x, pixel.y - from.y } });
     }
   }
+  return ends;
+}
+
+/// The pairs of ends FindNearEnds found to name, and per contour whether its own two ends lie
+/// within reach and are no fold's.
+struct EndPairs
+{
+  std::vector<NearEnds> Named;
+  std::vector<std::uint8_t> NearlyClosed;
+};
+
+/// The pairs of open groups' ends to name (NameNearContourEnds): ends within NearEndWidths basis
+/// widths of each other, one looking towards the other (the two ends of one long contour whichever
+/// way they look, below). A group's end is where its points end: its point of the smallest node for
+/// the contour's first end, of the largest for its last (the contour's end pixel for a contour
+/// without points). A contour stops some basis widths before the points along it
+/// (point_partition.h), so its end pixels were 9.4 widths apart across a gap of 2.2 in a line's
+/// points, and the line split silently. Where a curve's points lie further apart than the basis
+/// reaches, its ridge breaks, and the curve comes out as pieces, or a closed one open, without a
+/// word. Clean, dense points make it likely: most of them need pixels of their own, so the
+/// automatic image is large and the basis narrow in the points' units (1000 points at random on a
+/// circle, without noise, gave 4 open groups with the Gaussian basis at 512 pixels, their ends 1-3
+/// widths apart). One of the ends must look towards the other, the gap within 45 degrees of its own
+/// direction (not both: a short piece's end often hooks back): the ends of two lines side by side
+/// (24 units apart, 3.8 widths), of crossing lines and of a spiral's neighbouring turns are near
+/// each other too, but the gap runs across them, and a larger Width would merge those curves. A
+/// long contour's own two ends within reach are named whichever way they look (a noisy circle came
+/// out open, its ends 1.8 widths apart and hooked past each other, looking away from each other,
+/// and nothing was said), except the ends of a fold: side by side, looking the same way, and
+/// further apart than merged curves lie (NameFoldedContours names those). Also gives per contour
+/// whether its own two ends lie within reach and are no fold's: a closed curve broken (named where
+/// the contour is long), or a short contour whose ends are near by its shortness, both of which
+/// NameFoldedContours leaves out.
+///
+///    piece A  ====>  . . gap . .  <====  piece B      named: an end looks at the other
+///
+///    line 1   ====>
+///                 |  gap across                       not named
+///    line 2   ====>
+///
+///    ----------->  end 1                              one contour's ends past each other:
+///         end 2  <-----------                         named
+///
+///     .--------------->  end 1                        one contour's ends of a fold: not named
+///    (                                                here
+///     `--------------->  end 2
+EndPairs FindNearEnds(const GroupedPoints& grouped, const std::vector<ContourEnd>& ends)
+{
+  const RidgeContours& contours = grouped.Contours;
+  const double width = grouped.Width;
   const double reach = NearEndWidths * width;
   // Whether directions a and b lie within 45 degrees of each other.
   const auto within45 = [](const Point2& a, const Point2& b)
   { return a.x * b.x + a.y * b.y > std::sqrt(0.5) * std::hypot(a.x, a.y) * std::hypot(b.x, b.y); };
   // Whether the end looks towards the point `to`; whether two ends look the same way.
-  const auto looksAt = [&](const End& end, const Point2& to) {
+  const auto looksAt = [&](const ContourEnd& end, const Point2& to) {
     return within45({ to.x - end.At.x, to.y - end.At.y }, end.Outward);
   };
-  const auto sameWay = [&](const End& u, const End& v) { return within45(u.Outward, v.Outward); };
+  const auto sameWay = [&](const ContourEnd& u, const ContourEnd& v)
+  { return within45(u.Outward, v.Outward); };
   // Whether a contour is long enough to be a curve bent back on itself.
   const auto isLong = [&](int c) { return contours.Lengths[std::size_t(c)] >= 4.0 * reach; };
-  struct Near
-  {
-    End A, B;
-    double Pixels;
-  };
-  std::vector<Near> near;
-  std::vector<std::uint8_t> nearlyClosed(std::size_t(contours.Count()), 0);
+  EndPairs pairs{ {}, std::vector<std::uint8_t>(std::size_t(contours.Count()), 0) };
+  std::vector<NearEnds>& near = pairs.Named;
   for (std::size_t a = 0; a < ends.size(); ++a)
   {
     for (std::size_t b = a + 1; b < ends.size(); ++b)
     {
-      const End& u = ends[a];
-      const End& v = ends[b];
+      const ContourEnd& u = ends[a];
+      const ContourEnd& v = ends[b];
       const double pixels = std::hypot(u.At.x - v.At.x, u.At.y - v.At.y);
       // One contour's own ends: only a contour long enough to be a curve bent back on itself
       // (a short one's ends are near by its shortness).
@@ -673,7 +702,7 @@ std::vector<std::uint8_t> NameNearContourEnds(const GroupedPoints& grouped,
       const bool folded = own && !looking && sameWay(u, v) && pixels > MergedCurvesWidths * width;
       // A short contour's own ends are near by its shortness, and not named; but it is no fold
       // either (a C of 10.7 widths, its ends 1.3 radians apart, was named as one).
-      nearlyClosed[std::size_t(u.Contour)] |= own && !folded;
+      pairs.NearlyClosed[std::size_t(u.Contour)] |= own && !folded;
       if (looking ? !own || isLong(u.Contour) : own && !folded && isLong(u.Contour))
       {
         near.push_back({ u, v, pixels });
@@ -681,19 +710,30 @@ std::vector<std::uint8_t> NameNearContourEnds(const GroupedPoints& grouped,
     }
   }
   // One pair of ends per pair of contours (the nearest): a piece near another names it once.
-  std::sort(
-    near.begin(), near.end(), [](const Near& x, const Near& y) { return x.Pixels < y.Pixels; });
+  std::sort(near.begin(),
+    near.end(),
+    [](const NearEnds& x, const NearEnds& y) { return x.Pixels < y.Pixels; });
   std::set<std::pair<int, int>> named;
   near.erase(std::remove_if(near.begin(),
                near.end(),
-               [&](const Near& n) {
+               [&](const NearEnds& n) {
                  return !named.insert({ n.A.Contour, n.B.Contour }).second;
                }),
     near.end());
+  return pairs;
+}
+
+/// A warning naming the pairs of ends FindNearEnds found (none: no warning).
+void NameNearContourEnds(const GroupedPoints& grouped,
+  const std::vector<NearEnds>& near,
+  RidgeGroupingResult& result)
+{
   if (near.empty())
   {
-    return nearlyClosed;
+    return;
   }
+  const PixelGrid& grid = grouped.Grid;
+  const double width = grouped.Width;
   result.Warnings.push_back(std::to_string(near.size()) +
     " pair(s) of open contour ends (where their groups' points end) lie within " +
     WidthsText(NearEndWidths, width, grid) +
@@ -706,19 +746,18 @@ std::vector<std::uint8_t> NameNearContourEnds(const GroupedPoints& grouped,
     ListNames(near.size(),
       [&](std::size_t k)
       {
-        const Near& n = near[k];
+        const NearEnds& n = near[k];
         return (n.A.Contour == n.B.Contour ? "group " + std::to_string(n.A.Contour) + "'s two ends"
                                            : "groups " + std::to_string(n.A.Contour) + " and " +
                      std::to_string(n.B.Contour)) +
           ", " + NumberText(std::round(100.0 * n.Pixels / width) / 100.0) + " widths apart at " +
           PlaceText(grid, n.A.At) + " and " + PlaceText(grid, n.B.At);
       }));
-  return nearlyClosed;
 }
 
 /// A warning naming the contours that pass within FoldWidths basis widths of themselves (d) where
 /// they are much further along themselves (s, the shorter way round a closed contour): s at least
-/// pi / 2 d + FoldWidths widths. Contours whose own ends NameNearContourEnds took for a closed
+/// pi / 2 d + FoldWidths widths. Contours whose own ends FindNearEnds took for a closed
 /// curve broken (its ends perhaps run past each other) are left out. Such a contour runs out along
 /// one curve and back along another beside it, grouping the two as one: noisy lines 3.3 widths
 /// apart came out as one group, along one line and back along the next, in 10 of 40 trials, and
@@ -1091,7 +1130,9 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
     grid,
     maximumGap,
     result);
-  NameFoldedContours(grouped, NameNearContourEnds(grouped, result), result);
+  const EndPairs endPairs = FindNearEnds(grouped, OpenContourEnds(grouped));
+  NameNearContourEnds(grouped, endPairs.Named, result);
+  NameFoldedContours(grouped, endPairs.NearlyClosed, result);
   NameContoursAwayFromPoints(grouped, result);
   for (int c = 0; c < contours.Count(); ++c)
   {
