@@ -6,7 +6,8 @@ a second arc. The epicentres are projected with vtkGeographicProjection (automat
 conic, antimeridian-aware), grouped by the ridges of a radial field with vtkRidgeGrouping, ordered
 along each ridge contour (Node) and described by rational Gaussian curves.
 
-Writes into --out:
+Writes into --out, each name beginning with --prefix (fiji for the Fiji file, else the input
+file's name without its extension: your_points.csv gives your_points_groups.png, ...):
   fiji_groups.png        points coloured by group, ridge contours, fitted curves (km)
   fiji_points.vtp        output 0: points with GroupId, Node and ContourDistance (+ depth_km, mag)
   fiji_contours.vtp      output 1: ridge contours (ContourId, Closed, Length)
@@ -26,6 +27,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 
 import csv_input  # noqa: E402 (the examples' CSV reading, beside this script)
+
+DEFAULT_QUAKES = os.path.join(HERE, "data", "fiji_quakes.csv")
 
 
 def read_quakes(path):
@@ -101,12 +104,15 @@ def polylines(data):
 
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--quakes", default=os.path.join(HERE, "data", "fiji_quakes.csv"),
+    parser.add_argument("--quakes", default=DEFAULT_QUAKES,
                         help=f"CSV of epicentres: columns lat, lon (degrees; also read as latitude, longitude, "
                              f"long or lng), and optionally depth and mag "
                              f"(carried to the output, not used; empty or missing values are NaN); "
                              f"{csv_input.SEPARATORS_TEXT} (default: examples/data/fiji_quakes.csv)")
     parser.add_argument("--out", default="out", help="output directory, created if missing (default: out)")
+    parser.add_argument("--prefix", default=None,
+                        help="start of the output files' names (default: fiji for the Fiji file, else the input "
+                             "file's name without its extension)")
     # (why the example's settings differ from the filter's defaults)
     parser.add_argument("--width", type=float, default=4.0,
                         help="basis width in pixels, at most 1020 (default %(default)s; the filter's is 5, which "
@@ -170,10 +176,15 @@ def main(argv=None):
     if points.GetNumberOfPoints() == 0:
         csv_input.fail("ridge grouping failed and gave no message")
 
-    for port, name in ((0, "fiji_points.vtp"), (1, "fiji_contours.vtp"), (2, "fiji_curves.vtp")):
-        csv_input.write_vtk(vtkXMLPolyDataWriter(), grouping.GetOutputDataObject(port), os.path.join(args.out, name))
+    fiji = os.path.abspath(args.quakes) == os.path.abspath(DEFAULT_QUAKES)
+    prefix = args.prefix or ("fiji" if fiji else os.path.splitext(os.path.basename(args.quakes))[0])
+    names = {part: f"{prefix}_{part}" for part in ("groups.png", "points.vtp", "contours.vtp", "curves.vtp",
+                                                   "field.vti")}
+    for port, part in ((0, "points.vtp"), (1, "contours.vtp"), (2, "curves.vtp")):
+        csv_input.write_vtk(vtkXMLPolyDataWriter(), grouping.GetOutputDataObject(port),
+                            os.path.join(args.out, names[part]))
     csv_input.write_vtk(vtkXMLImageDataWriter(), grouping.GetOutputDataObject(3),
-                        os.path.join(args.out, "fiji_field.vti"))
+                        os.path.join(args.out, names["field.vti"]))
 
     groups = points.GetPointData().GetArray("GroupId")
     ids = [groups.GetValue(i) for i in range(points.GetNumberOfPoints())]
@@ -190,7 +201,8 @@ def main(argv=None):
     fig, ax = plt.subplots(figsize=(7, 9))
     xs = [points.GetPoint(i)[0] / 1000 for i in range(points.GetNumberOfPoints())]
     ys = [points.GetPoint(i)[1] / 1000 for i in range(points.GetNumberOfPoints())]
-    ax.scatter(xs, ys, c=[g if g >= 0 else -5 for g in ids], cmap="tab10", s=7, label="epicentres (by group)")
+    ax.scatter(xs, ys, c=[g if g >= 0 else -5 for g in ids], cmap="tab10", s=7,
+               label=("epicentres" if fiji else "points") + " (by group)")
     for k, line in enumerate(polylines(grouping.GetOutputDataObject(1))):
         lx, ly = zip(*line)
         ax.plot([x / 1000 for x in lx], [y / 1000 for y in ly], color="grey", linewidth=0.8,
@@ -202,13 +214,14 @@ def main(argv=None):
     ax.set_aspect("equal")
     ax.set_xlabel("x (km, equal-area conic)")
     ax.set_ylabel("y (km)")
-    ax.set_title("Fiji epicentres grouped by ridges\n" + summary, fontsize=10)
+    title = "Fiji epicentres" if fiji else os.path.basename(args.quakes) + ": points"
+    ax.set_title(title + " grouped by ridges\n" + summary, fontsize=10)
     ax.legend(loc="lower left", fontsize=8)
     fig.tight_layout()
-    fig.savefig(os.path.join(args.out, "fiji_groups.png"), dpi=110)
+    fig.savefig(os.path.join(args.out, names["groups.png"]), dpi=110)
     plt.close(fig)
     print(summary)
-    print(f"wrote {args.out}/fiji_groups.png, fiji_points.vtp, fiji_contours.vtp, fiji_curves.vtp, fiji_field.vti")
+    print(f"wrote {args.out}/" + ", ".join(names.values()))
 
 
 if __name__ == "__main__":

@@ -3164,9 +3164,20 @@ def test_the_other_examples_run_on_their_data():
                 f.write(fiji.replace('"long"', f'"{name}"', 1))
             renamed = os.path.join(out, name)
             status, _, stderr = run_example("ridge_grouping.py", "--out", renamed, "--quakes", quakes)
-            same = read_polydata(os.path.join(renamed, "fiji_points.vtp")).GetPointData().GetArray("GroupId")
+            same = read_polydata(os.path.join(renamed, "quakes_points.vtp")).GetPointData().GetArray("GroupId")
             assert_that(status == 0 and [same.GetValue(i) for i in range(same.GetNumberOfTuples())]
                         == [groups.GetValue(i) for i in range(groups.GetNumberOfTuples())], f"{name}: {stderr}")
+        # Another file's outputs are named after it (they were named fiji_* whatever was read), and
+        # --prefix names them as asked.
+        written = sorted(os.listdir(renamed))
+        assert_that(written == ["quakes_contours.vtp", "quakes_curves.vtp", "quakes_field.vti", "quakes_groups.png",
+                                "quakes_points.vtp"], f"{written}")
+        status, stdout, stderr = run_example("ridge_grouping.py", "--out", os.path.join(out, "named"), "--quakes",
+                                             quakes, "--prefix", "trench")
+        written = sorted(os.listdir(os.path.join(out, "named")))
+        assert_that(status == 0 and written == ["trench_contours.vtp", "trench_curves.vtp", "trench_field.vti",
+                                                "trench_groups.png", "trench_points.vtp"]
+                    and "trench_points.vtp" in stdout, f"{written} {stdout} {stderr}")
         # depth and mag only ride along: a file without them, or with a value missing, is grouped
         # (a missing depth stopped the run), the missing values NaN in the points' arrays.
         from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
@@ -3178,7 +3189,7 @@ def test_the_other_examples_run_on_their_data():
                 f.write(header + "\n" + "\n".join(row_text(r) for r in rows) + "\n")
             status, _, stderr = run_example("ridge_grouping.py", "--out", out, "--quakes", quakes)
             reader = vtkXMLPolyDataReader()
-            reader.SetFileName(os.path.join(out, "fiji_points.vtp"))
+            reader.SetFileName(os.path.join(out, "quakes_points.vtp"))
             reader.Update()
             depth = reader.GetOutput().GetPointData().GetArray("depth_km")
             assert_that(status == 0 and depth is not None and depth.GetNumberOfTuples() == 300
