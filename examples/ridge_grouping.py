@@ -8,11 +8,15 @@ along each ridge contour (Node) and described by rational Gaussian curves.
 
 Writes into --out, each name beginning with --prefix (fiji for the Fiji file, else the input
 file's name without its extension: your_points.csv gives your_points_groups.png, ...):
-  fiji_groups.png        points coloured by group, ridge contours, fitted curves (km)
+  fiji_groups.png        points coloured by group, ridge contours, fitted curves (km; --planar:
+                         the file's unit)
   fiji_points.vtp        output 0: points with GroupId, Node and ContourDistance (+ depth_km, mag)
   fiji_contours.vtp      output 1: ridge contours (ContourId, Closed, Length)
   fiji_curves.vtp        output 2: fitted curves (GroupId, Closed)
   fiji_field.vti         output 3: the field image (Field, MinorRidge, MajorRidge)
+
+With --planar the file's points are plane coordinates already (columns x, y, in any one unit) and
+are grouped as they are, without a projection.
 
 Run with Debian's /usr/bin/python3 and PYTHONPATH=build/python.
 """
@@ -31,7 +35,8 @@ import csv_input  # noqa: E402 (the examples' CSV reading, beside this script)
 DEFAULT_QUAKES = os.path.join(HERE, "data", "fiji_quakes.csv")
 
 
-def read_quakes(path):
+def read_quakes(path, planar=False):
+    """The file's points (lon, lat; x, y when planar) with depth and mag, and each point's line."""
     from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
     from vtkmodules.vtkCommonDataModel import vtkPolyData
 
@@ -47,10 +52,14 @@ def read_quakes(path):
             return math.nan
         return csv_input.number(row, column, path, line)
 
-    for line, row in csv_input.rows(path, ("lat", "lon"), "epicentres", optional=("depth", "mag")):
+    x, y = ("x", "y") if planar else ("lon", "lat")
+    columns = {name.lower() for name in csv_input.header_columns(path, "epicentres", ("lat", "lon"))}
+    if not planar and {"x", "y"} <= columns and not {"lat", "lon"} & columns:
+        csv_input.fail(f"{path}: the file has columns x, y and no lat, lon: for plane coordinates, "
+                       f"give --planar")
+    for line, row in csv_input.rows(path, (y, x), "points" if planar else "epicentres", optional=("depth", "mag")):
         lines.append(line)
-        lon, lat = csv_input.number(row, "lon", path, line), csv_input.number(row, "lat", path, line)
-        points.InsertNextPoint(lon, lat, 0.0)
+        points.InsertNextPoint(csv_input.number(row, x, path, line), csv_input.number(row, y, path, line), 0.0)
         depth.InsertNextValue(passenger(row, "depth", line))
         mag.InsertNextValue(passenger(row, "mag", line))
     data = vtkPolyData()
@@ -58,6 +67,26 @@ def read_quakes(path):
     data.GetPointData().AddArray(depth)
     data.GetPointData().AddArray(mag)
     return data, lines
+
+
+def projected(quakes, path, lines, vtkGeographicProjection):
+    """The epicentres projected (the automatic equal-area conic); an error ends the run."""
+    errors = []
+    projection = vtkGeographicProjection()
+    projection.SetInputData(quakes)
+    # An epicentre the projection rejects (a latitude beyond 90) or a grouping error ends the run
+    # with one line naming the file (and the epicentre's line), not VTK's log and the executive's
+    # dump of its request. The projection runs on its own first: a failed projection's output is
+    # empty, and the grouping would warn about its 0 points before the line that says why.
+    csv_input.catch_vtk_messages(projection, lambda text: errors.append(
+        csv_input.point_error(text, path, lines, lambda g: "epicentre")
+        or f"{path}: cannot project the epicentres: {text}"))
+    projection.Update()
+    if errors:
+        csv_input.fail(errors[0])
+    if projection.GetOutput().GetNumberOfPoints() != quakes.GetNumberOfPoints():
+        csv_input.fail(f"{path}: the projection of the epicentres failed and gave no message")
+    return projection.GetOutput()
 
 
 def image_size(text):
@@ -106,9 +135,12 @@ def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--quakes", default=DEFAULT_QUAKES,
                         help=f"CSV of epicentres: columns lat, lon (degrees; also read as latitude, longitude, "
-                             f"long or lng), and optionally depth and mag "
+                             f"long or lng; with --planar, x, y), and optionally depth and mag "
                              f"(carried to the output, not used; empty or missing values are NaN); "
                              f"{csv_input.SEPARATORS_TEXT} (default: examples/data/fiji_quakes.csv)")
+    parser.add_argument("--planar", action="store_true",
+                        help="the file's columns x, y are plane coordinates (any one unit), grouped without a "
+                             "projection, in place of lat, lon")
     parser.add_argument("--out", default="out", help="output directory, created if missing (default: out)")
     parser.add_argument("--prefix", default=None,
                         help="start of the output files' names (default: fiji for the Fiji file, else the input "
@@ -138,29 +170,16 @@ def main(argv=None):
     vtkGeographicProjection, vtkRidgeGrouping = tessera.vtkGeographicProjection, tessera.vtkRidgeGrouping
 
     csv_input.output_directory(args.out)
-    quakes, lines = read_quakes(args.quakes)
+    quakes, lines = read_quakes(args.quakes, args.planar)
     if quakes.GetNumberOfPoints() == 0:
-        csv_input.fail(f"{args.quakes}: no epicentres to group (the file has no rows)")
-    projection = vtkGeographicProjection()
-    projection.SetInputData(quakes)
-    # An epicentre the projection rejects (a latitude beyond 90) or a grouping error ends the run
-    # with one line naming the file (and the epicentre's line), not VTK's log and the executive's
-    # dump of its request. The projection runs on its own first: a failed projection's output is
-    # empty, and the grouping would warn about its 0 points before the line that says why.
+        csv_input.fail(f"{args.quakes}: no {'points' if args.planar else 'epicentres'} to group (the file has no rows)")
+    grouped = quakes if args.planar else projected(quakes, args.quakes, lines, vtkGeographicProjection)
     errors = []
-    csv_input.catch_vtk_messages(projection, lambda text: errors.append(
-        csv_input.point_error(text, args.quakes, lines, lambda g: "epicentre")
-        or f"{args.quakes}: cannot project the epicentres: {text}"))
-    projection.Update()
-    if errors:
-        csv_input.fail(errors[0])
-    if projection.GetOutput().GetNumberOfPoints() != quakes.GetNumberOfPoints():
-        csv_input.fail(f"{args.quakes}: the projection of the epicentres failed and gave no message")
     grouping = vtkRidgeGrouping()
     csv_input.catch_vtk_messages(grouping, lambda text: errors.append(grouping_error(text)),
                                  lambda text: print(f"warning: {with_lines(text, args.quakes, lines)}",
                                                     file=sys.stderr))
-    grouping.SetInputConnection(projection.GetOutputPort())
+    grouping.SetInputData(grouped)
     grouping.SetWidth(args.width)
     grouping.SetImageSize(args.image_size)
     grouping.SetCurveSigma(args.curve_sigma)
@@ -189,9 +208,12 @@ def main(argv=None):
     groups = points.GetPointData().GetArray("GroupId")
     ids = [groups.GetValue(i) for i in range(points.GetNumberOfPoints())]
     fd = points.GetFieldData()
+    # Plotted in km when projected (metres), else in the file's own unit.
+    scale = 1.0 if args.planar else 1000.0
+    pixel = fd.GetArray("PixelSize").GetValue(0)
     summary = (f"{len(set(ids) - {-1})} groups, {ids.count(-1)} points unassigned; image "
                f"{int(fd.GetArray('ImageSize').GetValue(0))} px, pixel "
-               f"{fd.GetArray('PixelSize').GetValue(0) / 1000:.1f} km")
+               + (f"{pixel:.4g}" if args.planar else f"{pixel / scale:.1f} km"))
 
     import matplotlib
 
@@ -199,21 +221,21 @@ def main(argv=None):
     import matplotlib.pyplot as plt
 
     fig, ax = plt.subplots(figsize=(7, 9))
-    xs = [points.GetPoint(i)[0] / 1000 for i in range(points.GetNumberOfPoints())]
-    ys = [points.GetPoint(i)[1] / 1000 for i in range(points.GetNumberOfPoints())]
+    xs = [points.GetPoint(i)[0] / scale for i in range(points.GetNumberOfPoints())]
+    ys = [points.GetPoint(i)[1] / scale for i in range(points.GetNumberOfPoints())]
     ax.scatter(xs, ys, c=[g if g >= 0 else -5 for g in ids], cmap="tab10", s=7,
                label=("epicentres" if fiji else "points") + " (by group)")
     for k, line in enumerate(polylines(grouping.GetOutputDataObject(1))):
         lx, ly = zip(*line)
-        ax.plot([x / 1000 for x in lx], [y / 1000 for y in ly], color="grey", linewidth=0.8,
+        ax.plot([x / scale for x in lx], [y / scale for y in ly], color="grey", linewidth=0.8,
                 linestyle="--", label="ridge contours" if k == 0 else None)
     for k, line in enumerate(polylines(grouping.GetOutputDataObject(2))):
         lx, ly = zip(*line)
-        ax.plot([x / 1000 for x in lx], [y / 1000 for y in ly], color="black", linewidth=1.6,
+        ax.plot([x / scale for x in lx], [y / scale for y in ly], color="black", linewidth=1.6,
                 label="fitted RaG curves" if k == 0 else None)
     ax.set_aspect("equal")
-    ax.set_xlabel("x (km, equal-area conic)")
-    ax.set_ylabel("y (km)")
+    ax.set_xlabel("x" if args.planar else "x (km, equal-area conic)")
+    ax.set_ylabel("y" if args.planar else "y (km)")
     title = "Fiji epicentres" if fiji else os.path.basename(args.quakes) + ": points"
     ax.set_title(title + " grouped by ridges\n" + summary, fontsize=10)
     ax.legend(loc="lower left", fontsize=8)

@@ -7,6 +7,7 @@ import csv
 import json
 import math
 import os
+import random
 import re
 import subprocess
 import sys
@@ -3178,6 +3179,25 @@ def test_the_other_examples_run_on_their_data():
         assert_that(status == 0 and written == ["trench_contours.vtp", "trench_curves.vtp", "trench_field.vti",
                                                 "trench_groups.png", "trench_points.vtp"]
                     and "trench_points.vtp" in stdout, f"{written} {stdout} {stderr}")
+        # Plane coordinates (x, y) with --planar, grouped without a projection: a half circle and a
+        # line below it, each group's points from one of them; without --planar, the file is named.
+        rng = random.Random(3)
+        arc = [(100 * math.cos(t) + rng.gauss(0, 1), 100 * math.sin(t) + rng.gauss(0, 1))
+               for t in (rng.uniform(0, math.pi) for _ in range(300))]
+        line = [(rng.uniform(-100, 100), -50 + rng.gauss(0, 1)) for _ in range(200)]
+        plane = write(out, "plane.csv", "x,y\n" + "".join(f"{x!r},{y!r}\n" for x, y in arc + line))
+        status, stdout, stderr = run_example("ridge_grouping.py", "--out", os.path.join(out, "plane"), "--quakes",
+                                             plane, "--planar")
+        grouped = read_polydata(os.path.join(out, "plane", "plane_points.vtp"))
+        ids = grouped.GetPointData().GetArray("GroupId")
+        on_arc = {ids.GetValue(k) for k in range(300)}
+        on_line = {ids.GetValue(k) for k in range(300, 500)}
+        first = grouped.GetPoint(0)
+        assert_that(status == 0 and len(on_arc) == 1 and len(on_line) == 1 and on_arc != on_line
+                    and -1 not in on_arc | on_line and first[:2] == arc[0], f"{on_arc} {on_line} {stderr}")
+        status, _, stderr = run_example("ridge_grouping.py", "--out", out, "--quakes", plane)
+        assert_that(status == 1 and "plane.csv: the file has columns x, y and no lat, lon: for plane coordinates, "
+                    "give --planar" in stderr, f"{status} {stderr}")
         # depth and mag only ride along: a file without them, or with a value missing, is grouped
         # (a missing depth stopped the run), the missing values NaN in the points' arrays.
         from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
