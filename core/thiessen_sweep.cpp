@@ -79,6 +79,24 @@ bool CircleBox(double ax,
   Box& box,
   Disk& disk)
 {
+  // The bounds below are tuned for offsets of about unit size (their absolute terms, the limits
+  // 1e-70 .. 1e70): offsets of another size are scaled by a power of two, which is exact, and the
+  // box scaled back (a cluster 1e-80 wide in a window of 1 gave up here, and each search scanned
+  // every point: 50 s for 5000 points).
+  const double larger =
+    std::max(std::max(std::fabs(bx), std::fabs(by)), std::max(std::fabs(cx), std::fabs(cy)));
+  double up = 1.0, down = 1.0;
+  if (!(larger > 0x1p-60 && larger < 0x1p60))
+  {
+    const int k = std::ilogb(larger);
+    if (!(std::isfinite(larger) && larger > 0.0 && k > -1000 && k < 1000))
+    {
+      return false;
+    }
+    up = std::ldexp(1.0, -k);
+    down = std::ldexp(1.0, k);
+    bx *= up, by *= up, cx *= up, cy *= up;
+  }
   const double bmax = std::max(std::fabs(bx), std::fabs(by));
   const double cmax = std::max(std::fabs(cx), std::fabs(cy));
   if (!(bmax > 1e-70 && bmax < 1e70 && cmax > 1e-70 && cmax < 1e70))
@@ -114,11 +132,14 @@ bool CircleBox(double ax,
   // The exact centre is within ex, ey of (vx, vy) and the exact radius within ex + ey (+ the
   // rounding of r) of r: half-widths r + 2 (ex + ey) contain the exact circle; doubled for safety.
   const double half = r * (1.0 + 8.0 * kUnit) + 4.0 * (ex + ey);
-  const double xlo = vx - half, xhi = vx + half, ylo = vy - half, yhi = vy + half;
+  // Scaled back (exact, but for a result among the subnormals: `tiny` covers its rounding).
+  const double tiny = down == 1.0 ? 0.0 : 8.0 * std::numeric_limits<double>::denorm_min();
+  const double xlo = (vx - half) * down - tiny, xhi = (vx + half) * down + tiny;
+  const double ylo = (vy - half) * down - tiny, yhi = (vy + half) * down + tiny;
   const double slackX = 4.0 * kUnit * (std::fabs(ax) + std::max(std::fabs(xlo), std::fabs(xhi)));
   const double slackY = 4.0 * kUnit * (std::fabs(ay) + std::max(std::fabs(ylo), std::fabs(yhi)));
   box = { ax + xlo - slackX, ax + xhi + slackX, ay + ylo - slackY, ay + yhi + slackY };
-  disk = { ax + vx, ay + vy, half + std::max(slackX, slackY) };
+  disk = { ax + vx * down, ay + vy * down, half * down + tiny + std::max(slackX, slackY) };
   return std::isfinite(box.XLo) && std::isfinite(box.XHi) && std::isfinite(box.YLo) &&
     std::isfinite(box.YHi);
 }
@@ -548,7 +569,11 @@ std::int32_t Sweep::NearestCentroid(std::int32_t a)
     {
       best = q;
       const double dx = pq.x - pa.x, dy = pq.y - pa.y;
-      reach = std::sqrt(dx * dx + dy * dy) * (1.0 + 1e-9) + 1e-300;
+      // (hypot where the squares underflow: points 1e-200 apart had a reach of 1e-300, which
+      // missed their nearest centroid, and the sweep failed with a logic_error)
+      const double squares = dx * dx + dy * dy;
+      const double distance = squares > 1e-280 ? std::sqrt(squares) : std::hypot(dx, dy);
+      reach = distance * (1.0 + 1e-9) + 1e-300;
     }
   };
   const std::int32_t s0 = this->StripOf[a];
@@ -638,7 +663,9 @@ void Sweep::UpdateBox()
     this->Range.XHi = std::min(this->Range.XHi, box.XHi);
     this->Range.YLo = std::max(this->Range.YLo, box.YLo);
     this->Range.YHi = std::min(this->Range.YHi, box.YHi);
-    if (disk.R < this->Bound.R)
+    // (the disk's tests square distances: a radius below 1e-100 could underflow them, and a
+    // search missed its answer; the box alone serves such small circles)
+    if (disk.R < this->Bound.R && disk.R > 1e-100)
     {
       this->Bound = disk;
     }
@@ -664,17 +691,10 @@ void Sweep::Consider(std::int32_t q)
   }
   else if (inside == 0)
   {
-    // Fig. 5: on the circle. Keep the less clockwise of the two as the potential neighbour.
+    // Fig. 5: on the circle, a tie. Any of the ties gives the same circle, and they are sorted
+    // round it once the search ends (the paper kept the less clockwise as P: no need).
     ++this->Count->InCircle;
-    if (this->Orient(this->P, q) > 0)
-    {
-      this->Ties.push_back(this->P);
-      this->P = q;
-    }
-    else
-    {
-      this->Ties.push_back(q);
-    }
+    this->Ties.push_back(q);
   }
 }
 
@@ -699,18 +719,9 @@ void Sweep::ConsiderPoint(std::int32_t q, const Point2& pq)
   }
   else if (inside == 0)
   {
-    // Fig. 5: on the circle. Keep the less clockwise of the two as the potential neighbour.
+    // Fig. 5: on the circle, a tie (as in Consider).
     ++this->Count->InCircle;
-    if (orient2d_fast(this->PA, this->PP, pq) > 0)
-    {
-      this->Ties.push_back(this->P);
-      this->P = q;
-      this->PP = pq;
-    }
-    else
-    {
-      this->Ties.push_back(q);
-    }
+    this->Ties.push_back(q);
   }
 }
 
@@ -1474,9 +1485,13 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window,
     {
       const auto exact = [s](double v) { return std::ldexp(std::ldexp(v, s), -s) == v; };
       bool ok = exact(xmin) && exact(xmax) && exact(ymin) && exact(ymax);
+      // Only the points the sweep uses: a rejected one (say 1e-320 outside a window of 1e100)
+      // kept the window unscaled, and every search a scan of all points (1500 times slower).
       for (std::size_t i = 0; i < points.size() && ok && s != 0; ++i)
       {
-        ok = exact(points[i].x) && exact(points[i].y);
+        const Point2& p = points[i];
+        const bool inside = xmin < p.x && p.x < xmax && ymin < p.y && p.y < ymax;
+        ok = !inside || (exact(p.x) && exact(p.y));
       }
       return ok;
     };

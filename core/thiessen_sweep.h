@@ -24,8 +24,9 @@
 //    box of the circle widened by a rigorous bound on its rounding error, so it never rejects a
 //    point the exact test would accept; the half-plane and circle tests are the exact
 //    predicates. The paper starts from a dummy as the first potential neighbour; here the dummies
-//    in E1 are tested last (their circles, large unless A is near the border, only bound the
-//    range when A's own strip holds no candidate), which changes the work, not the result.
+//    in E1 bound the range only once a search has gone two rounds of strips without a candidate
+//    (their circles are large unless A is near the border) and are tested last, which changes
+//    the work, not the result.
 //  - Candidates come from a bucket index over the x-sorted centroids: the sorted sequence cut
 //    into about sqrt(N) strips of consecutive x (a run of equal x, a lattice column, is never
 //    split), each sorted by y. The scan starts at A and moves outward in y within a strip and
@@ -39,24 +40,26 @@
 //    1M points here, the Green-Sibson engine's order). Points exactly on one slanted line are
 //    this method's bad case: the circles then graze the line, meet every strip, and the work
 //    grows like N^1.5 to N^2 (64k points on a diagonal took 7.5 s, 20k on y = 0.3 x in a
-//    window 4 wide 2 minutes). Points on one circle are
-//    another: every search circle is nearly that circle and holds every point in its range (2k
-//    points on a circle take 2.7 s, 10k about a minute). A transect with some
-//    scatter is fine (40k points within 1e-3 of a line: 0.07 s; within 1e-7: 0.6 s, ten times
-//    the Green-Sibson engine). The same holds wherever long stretches of points lie exactly on
-//    lines or circles (measured at 1e5 points, against the Green-Sibson engine): 20 parallel
-//    slanted survey lines 15 s (over 50 times; jittered by 1e-9 some 15 times), one straight
-//    transect among 1000 scattered gauges some 30 times, 10 concentric rings some 70 times. Long
-//    tiles cost time as well, as every search then meets every strip: points on two horizontal
-//    lines 10 apart 2.6 s (8 times), on one line in a tall window 0.9 s. Any scale works alike: the
-//    sweep runs on coordinates rescaled by a power of two to a unit-sized window, which changes no
-//    decision and no rounding.
+//    window 4 wide 2 minutes). Points on one circle are another: every search circle is nearly
+//    that circle and holds every point in its range (2k points on a circle take 2.7 s, 10k about
+//    a minute). A transect with some scatter is fine (40k points within 1e-3 of a line: 0.07 s;
+//    within 1e-7: 0.6 s, ten times the Green-Sibson engine). The same holds wherever long stretches
+//    of points lie exactly on lines or circles (measured at 1e5 points, against the Green-Sibson
+//    engine): 20 parallel slanted survey lines 15 s (over 50 times; jittered by 1e-9 some 15
+//    times), one straight transect among 1000 scattered gauges some 30 times, 10 concentric rings
+//    some 70 times. Long tiles cost time as well, as every search then meets every strip: points on
+//    two horizontal lines 10 apart 2.6 s (8 times), on one line in a tall window 0.9 s. Any scale
+//    works alike: the sweep runs on coordinates rescaled by a power of two to a unit-sized window
+//    (chosen by the points inside it only: those rejected play no part), which changes no decision
+//    and no rounding; and a search circle's bounding box is computed at unit size, so that a
+//    cluster tiny beside its window (1e-80 wide in a window of 1) keeps its searches local.
 //  - Neighbour records (Fig. 6): every vertex found is stored once and entered in the records of
 //    all its (unprocessed) centroids, so a later polygon uses its known vertices and searches only
 //    the missing ones; a record is dropped when its polygon is completed.
-//  - Degenerate vertices (Fig. 5): points exactly on the circle are ties; the "less clockwise" one
-//    is kept as the potential neighbour and the others are remembered, so a vertex with k >= 4
-//    co-circular centroids is found once, as one vertex, with all its centroids. Its centroids
+//  - Degenerate vertices (Fig. 5): points exactly on the circle are ties, all remembered with the
+//    potential neighbour and then sorted round the circle (the neighbour recorded is the most
+//    clockwise of them), so a vertex with k >= 4 co-circular centroids is found once, as one
+//    vertex, with all its centroids. Its centroids
 //    that are adjacent around the circle share edges; every other pair (the zero-length "neighbour"
 //    the paper records and the pair it drops) is reported as half-neighbours (kind 1), as the
 //    Green-Sibson engine does, when the vertex is inside the window.
