@@ -209,7 +209,9 @@ StepSeries BuildSeries(const StationMatch& match,
   return series;
 }
 
-MissingCodeSightings TakeMissingValues(std::vector<double>& values, bool use, double missing)
+std::vector<MissingCodeSightings> TakeMissingValues(std::vector<double>& values,
+  bool use,
+  double missing)
 {
   if (use && (missing == 0.0 || std::isnan(missing)))
   {
@@ -222,17 +224,22 @@ MissingCodeSightings TakeMissingValues(std::vector<double>& values, bool use, do
   {
     std::replace(values.begin(), values.end(), missing, std::numeric_limits<double>::quiet_NaN());
   }
-  MissingCodeSightings most;
+  // (the code met most often was the only one named: a 9999 beside two -999s was averaged without
+  // a word)
+  std::vector<MissingCodeSightings> seen;
   for (const double code : { -9999.0, -999.0, 9999.0, 99999.0 })
   {
     const auto first = std::find(values.begin(), values.end(), code);
     const std::size_t count = static_cast<std::size_t>(std::count(first, values.end(), code));
-    if (count > most.Count)
+    if (count > 0)
     {
-      most = { code, count, static_cast<std::size_t>(first - values.begin()) };
+      seen.push_back({ code, count, static_cast<std::size_t>(first - values.begin()) });
     }
   }
-  return most;
+  std::stable_sort(seen.begin(),
+    seen.end(),
+    [](const MissingCodeSightings& a, const MissingCodeSightings& b) { return a.Count > b.Count; });
+  return seen;
 }
 
 } // namespace tessera

@@ -98,8 +98,8 @@ StepSeries BuildSeries(const StationMatch& match,
   const std::vector<double>& rowValues,
   std::size_t gaugeCount);
 
-/// Values exactly equal to a common missing-value code (TakeMissingValues): the code met most
-/// often, how many values have it, and the first one's index; Count 0 when none.
+/// Values exactly equal to one common missing-value code (TakeMissingValues): the code, how many
+/// values have it, and the first one's index.
 struct MissingCodeSightings
 {
   double Code = 0.0;
@@ -110,7 +110,10 @@ struct MissingCodeSightings
 /// With `use`, sets the values equal to `missing` to NaN (missing); throws InputError for a
 /// missing value of 0 (every dry step would be missing) or NaN (missing anyway: nothing would
 /// change). Then finds the values exactly equal to a common missing-value code (-9999, -999, 9999,
-/// 99999) other than the one used, which would be averaged as measurements.
-MissingCodeSightings TakeMissingValues(std::vector<double>& values, bool use, double missing);
+/// 99999) other than the one used, which would be averaged as measurements: one entry per code
+/// met, the most often met first (ties in that order of codes); none when there are none.
+std::vector<MissingCodeSightings> TakeMissingValues(std::vector<double>& values,
+  bool use,
+  double missing);
 
 } // namespace tessera

@@ -260,7 +260,14 @@ const char* const SmallerBounds = "set smaller WindowBounds or window constraint
 /// that side: points on a line 1e200 long were told to set a smaller Padding than 0.
 std::string PaddingAdvice(double padding, double side)
 {
-  if (padding == 0.0 && side > 0.0)
+  if (side == 0.0)
+  {
+    // (one place: Padding plays no part, and the message blamed it)
+    return "the points are all at one place, so the window reaches 0.5 from it each way, or one "
+           "unit in the last place of its coordinates where that is more (Padding plays no part), "
+           "and no window of doubles about it is smaller: scale the points down";
+  }
+  if (padding == 0.0)
   {
     return "it is the points' bounding box with a margin of 1e-9 of its larger side (Padding 0): "
            "set WindowBounds close about the points, a Padding above 0 and below " +

@@ -37,7 +37,9 @@
  * Longitudes are angles: the data's extent is the shortest longitude arc that holds it, so a set
  * crossing the antimeridian (e.g. 165..181.6) is handled, and the inverse returns longitudes
  * within 180 degrees of the central meridian (continuous across the antimeridian), never beyond
- * 360 (a meridian set beyond 180 by hand gives places more than 360 east a turn west). One place
+ * 360: with a meridian set beyond 180 by hand, where any place would come back beyond 360, the
+ * whole output takes a turn west, so that it stays continuous (central meridian 300: 350, 250 and
+ * 20 come back as -10, -110 and 20, within 180 of -60). One place
  * written two ways (181.5 and -178.5, 180 and -180) projects to one point, bit for bit. Data that
  * span more than 270 degrees of longitude get a warning under a projection cut at a meridian (all
  * but the azimuthal ones): places either side of the cut lie far apart in the plane; data round a

@@ -629,15 +629,27 @@ std::vector<double> RowValues(vtkTable* table,
   return rowValues;
 }
 
-/// The warning for values that look like a missing-value code; `first` names where the first is.
-std::string MissingCodeWarning(const tessera::MissingCodeSightings& seen,
+/// The warning for values that look like missing-value codes (`seen`, not empty); where(k) names
+/// the place of value k.
+std::string MissingCodeWarning(const std::vector<tessera::MissingCodeSightings>& seen,
   const std::string& what,
-  const std::string& first)
+  const std::function<std::string(std::size_t)>& where)
 {
-  const std::string code = tessera::NumberText(seen.Code);
-  return std::to_string(seen.Count) + " " + what + " exactly " + code +
-    ", a common missing-value code, and averaged as measured values (the first " + first +
-    "): if " + code + " marks missing values, turn UseMissingValue on with MissingValue " + code;
+  const std::string code = tessera::NumberText(seen.front().Code);
+  std::string text = std::to_string(seen.front().Count) + " " + what + " exactly " + code +
+    ", a common missing-value code, and averaged as measured values (the first " +
+    where(seen.front().First) + ")";
+  for (std::size_t k = 1; k < seen.size(); ++k)
+  {
+    text += "; " + std::to_string(seen[k].Count) + " exactly " + tessera::NumberText(seen[k].Code) +
+      ", another (the first " + where(seen[k].First) + ")";
+  }
+  return text +
+    (seen.size() == 1
+        ? ": if " + code + " marks missing values, turn UseMissingValue on with MissingValue " +
+          code
+        : std::string(": if one of these codes marks missing values, turn UseMissingValue on with "
+                      "MissingValue set to it"));
 }
 
 /// The StationId array of an output: the gauges' id for each entry, in their id array's type
@@ -1450,14 +1462,16 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     }
     in.Times = rows->Steps.Times;
     rowValues = RowValues(observations, rows->Steps, this->StationColumn, this->ValueColumn);
-    const tessera::MissingCodeSightings seen =
+    const std::vector<tessera::MissingCodeSightings> seen =
       tessera::TakeMissingValues(rowValues, this->UseMissingValue, this->MissingValue);
-    if (seen.Count > 0)
+    if (!seen.empty())
     {
       vtkWarningMacro(<< MissingCodeWarning(seen,
                         "observation value(s) are",
-                        "in row " + std::to_string(seen.First) + ", station " +
-                          RowStation(stations, seen.First)));
+                        [stations](std::size_t row) {
+                          return "in row " + std::to_string(row) + ", station " +
+                            RowStation(stations, row);
+                        }));
     }
     tessera::StepSeries series =
       tessera::BuildSeries(rows->Match, rows->Steps, rowValues, gaugeCount);
@@ -1503,15 +1517,18 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     {
       in.Values[0][g] = values->GetTuple1(static_cast<vtkIdType>(g));
     }
-    const tessera::MissingCodeSightings seen =
+    const std::vector<tessera::MissingCodeSightings> seen =
       tessera::TakeMissingValues(in.Values[0], this->UseMissingValue, this->MissingValue);
-    if (seen.Count > 0)
+    if (!seen.empty())
     {
-      const std::string name = seen.First < gaugeNames.size() ? gaugeNames[seen.First] : "";
       vtkWarningMacro(<< MissingCodeWarning(seen,
                         "gauge value(s) in '" + this->ValueArrayName + "' are",
-                        "of gauge " + std::to_string(seen.First) +
-                          (name.empty() ? std::string() : " (" + name + ")")));
+                        [&gaugeNames](std::size_t g)
+                        {
+                          const std::string name = g < gaugeNames.size() ? gaugeNames[g] : "";
+                          return "of gauge " + std::to_string(g) +
+                            (name.empty() ? std::string() : " (" + name + ")");
+                        }));
     }
   }
 

@@ -19,9 +19,11 @@
  * - port 1, catchment: polygons or closed polylines in lon/lat (vtkPolyData, or a composite data
  * set such as vtkGDALVectorReader's output), or lines that join end to end into closed rings,
  * taken as rings under the even-odd rule (other cells, such as lines in no closed ring, are
- * ignored with a warning that counts them and names the first; two rings that are the same path,
- * as an enclave given as a basin's hole and as a feature of its own, cancel by that rule and are
- * left out with a warning naming them); edges are straight in lon/lat,
+ * ignored with a warning that counts them and names the first; an island that fills a hole
+ * exactly, as an enclave given as a basin's hole and as a feature of its own, cancels it by that
+ * rule, and both are left out with a warning naming them; an outer ring given twice, a feature
+ * repeated, is an error naming both copies: cancelled, it would take its region away); edges are
+ * straight in lon/lat,
  * but one whose longitudes differ by more than 270 degrees as written is taken the shorter way
  * round (179 to -179 crosses the 180th meridian) and one that differs by 180 to 270 degrees,
  * which could be meant either way, is an error naming its ring and segment; a ring that goes
@@ -266,7 +268,8 @@ public:
    * (as NaN is) in the value column of the observations or, without them, in the gauges' value
    * array, when UseMissingValue is on (default off, MissingValue default -9999; 0 and NaN are
    * errors). A value of exactly -9999, -999, 9999 or 99999 (common codes) that is not the one
-   * used is averaged as a measurement, and a warning counts them and names the first.
+   * used is averaged as a measurement, and a warning counts each code's values and names the
+   * first of each (MissingValue takes one code: the others stay values).
    */
   vtkSetMacro(UseMissingValue, bool);
   vtkGetMacro(UseMissingValue, bool);

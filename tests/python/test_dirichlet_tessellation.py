@@ -610,6 +610,12 @@ def test_automatic_window_keeps_every_point_and_bad_windows_are_named():
             ("points 1e200 apart on a line", lambda f: (f.SetPadding(0), f.SetInputData(make_points([(0, 0), (1e200, 0)]))),
              "it is the points' bounding box with a margin of 1e-9 of its larger side (Padding 0): set WindowBounds "
              f"close about the points, a Padding above 0 and below {sys.float_info.max / (4.0 * 1e200) / 1e200!r}"),
+            # Points all at one place, at 1e300: their window is an ulp about them, and Padding
+            # plays no part (it was blamed, at Padding 0 too).
+            ("one place at 1e300", lambda f: (f.SetPadding(0), f.SetInputData(make_points([(1e300, 1e300)] * 2))),
+             "its area overflows a double; the points are all at one place, so the window reaches 0.5 from it each "
+             "way, or one unit in the last place of its coordinates where that is more (Padding plays no part), and "
+             "no window of doubles about it is smaller: scale the points down"),
             ("padding past the doubles", lambda f: (f.SetPadding(1e200), f.SetInputData(make_points([(0, 0), (1e150, 1e150)]))),
              "the automatic window reaches beyond the largest double: it is the points' bounding box padded by 1e+200 of its larger side (Padding): set a smaller Padding")]:
         f = vtkDirichletTessellation()

@@ -1001,6 +1001,10 @@ def test_a_missing_value_code_is_missing_when_set_and_named_when_not():
         coded[(year, month)] = {sid: (-9999.0 if k % 4 == 1 else v)
                                 for k, (sid, v) in enumerate(sorted(values.items()))}
         kept_months[(year, month)] = {sid: v for sid, v in coded[(year, month)].items() if v != -9999.0}
+    # and one 9999, a second code, named too (only the code met most often was named)
+    last = coded[max(coded)]
+    nines = next(sid for sid, v in sorted(last.items()) if v != -9999.0)
+    last[nines] = kept_months[max(coded)][nines] = 9999.0
     count = sum(v == -9999.0 for values in coded.values() for v in values.values())
     without, _ = summary_of(coords, ids, ring, observations_table(kept_months))
     used, messages = summary_of(coords, ids, ring, observations_table(coded),
@@ -1021,7 +1025,10 @@ def test_a_missing_value_code_is_missing_when_set_and_named_when_not():
     said = [w for w in warnings if "a common missing-value code" in w]
     assert_that(len(said) == 1 and f"{count} observation value(s) are exactly -9999" in said[0]
                 and f"(the first in row 1, station {first_sid})" in said[0]
-                and "turn UseMissingValue on with MissingValue -9999" in said[0], f"warnings: {warnings}")
+                and "; 1 exactly 9999, another (the first in row " in said[0]
+                and f", station {nines})" in said[0]
+                and "if one of these codes marks missing values, turn UseMissingValue on with MissingValue set to it"
+                in said[0], f"warnings: {warnings}")
     assert_that(min(summary_column(f, "ArealMean")) < -100, "left off, -9999 is averaged as a value")
     # Without observations: the gauges' value array, one step.
     values = [2.0] * len(coords)
