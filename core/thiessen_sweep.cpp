@@ -1430,6 +1430,68 @@ std::string WhyNotAnAxisAlignedRectangle(const Window& window)
 /// (2 side - p, its dummy points), which overflows beyond a quarter of the largest double.
 constexpr double ReflectionReach = std::numeric_limits<double>::max() / 4;
 
+/// Throws InputError naming the first point with a NaN or an infinite coordinate.
+void CheckPointsAreFinite(const std::vector<Point2>& points)
+{
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    const Point2& p = points[i];
+    if (std::isnan(p.x) || std::isnan(p.y))
+    {
+      throw InputError("point " + std::to_string(i) + " has a NaN coordinate");
+    }
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+    {
+      throw InputError("point " + std::to_string(i) + " has an infinite coordinate");
+    }
+  }
+}
+
+/// Whether p lies strictly inside the box (the window's own test: points on a side are rejected).
+bool StrictlyInside(const Box2& box, const Point2& p)
+{
+  return box.XMin < p.x && p.x < box.XMax && box.YMin < p.y && p.y < box.YMax;
+}
+
+/// The power of two the sweep scales every coordinate by, for a window of these bounds. Working
+/// at about unit scale changes no exact decision and no rounding (barring underflow and
+/// overflow, checked), and keeps the floating-point ranges of the search effective; a window
+/// reaching beyond a quarter of the largest double is scaled by a quarter, for its reflections.
+/// 0 where the window or a point inside it would not scale exactly.
+int SweepScale(const Box2& bounds, const std::vector<Point2>& points)
+{
+  int scale = 0;
+  const double extent = bounds.LargerSide();
+  if (std::isfinite(extent) && extent > 0.0)
+  {
+    const int e = std::ilogb(extent);
+    scale = (e > 64 || e < -64) ? -e : 0;
+  }
+  const auto exactAt = [&](int s)
+  {
+    const auto exact = [s](double v) { return std::ldexp(std::ldexp(v, s), -s) == v; };
+    bool ok = exact(bounds.XMin) && exact(bounds.XMax) && exact(bounds.YMin) && exact(bounds.YMax);
+    // Only the points the sweep uses: a rejected one (say 1e-320 outside a window of 1e100)
+    // kept the window unscaled, and every search a scan of all points (1500 times slower).
+    for (std::size_t i = 0; i < points.size() && ok && s != 0; ++i)
+    {
+      const Point2& p = points[i];
+      ok = !StrictlyInside(bounds, p) || (exact(p.x) && exact(p.y));
+    }
+    return ok;
+  };
+  // A window reaching beyond a quarter of the largest double (its sides wider than the doubles
+  // reach, x from -9e307 to 9e307): a quarter of it is enough for the reflections below, and
+  // loses no bit where scaling it to unit size would (y of 0.3 beside x of 9e307).
+  const bool farReach = !(bounds.LargestMagnitude() < ReflectionReach);
+  scale = exactAt(scale) ? scale : 0;
+  if (farReach && scale > -2 && exactAt(-2))
+  {
+    scale = -2;
+  }
+  return scale;
+}
+
 ThiessenSweepResult ComputeThiessenSweep(const Window& window,
   const std::vector<Point2>& points,
   const std::function<bool(double)>& progress)
@@ -1448,18 +1510,7 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window,
     throw InputError(
       "too many points for the Brassel-Reif sweep: " + std::to_string(points.size()));
   }
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    const Point2& p = points[i];
-    if (std::isnan(p.x) || std::isnan(p.y))
-    {
-      throw InputError("point " + std::to_string(i) + " has a NaN coordinate");
-    }
-    if (!std::isfinite(p.x) || !std::isfinite(p.y))
-    {
-      throw InputError("point " + std::to_string(i) + " has an infinite coordinate");
-    }
-  }
+  CheckPointsAreFinite(points);
 
   ThiessenSweepResult result;
   // Inside test exactly as the window's (strict); then sort by (x, y, id).
@@ -1470,41 +1521,7 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window,
   };
   std::vector<Keyed> keyed;
   keyed.reserve(points.size());
-  // Work at about unit scale: multiplying every coordinate by a power of two changes no exact
-  // decision and no rounding (barring underflow and overflow, checked), and keeps the
-  // floating-point ranges of the search, which give up outside 1e-70 .. 1e70, effective.
-  int scale = 0;
-  {
-    const double extent = bounds.LargerSide();
-    if (std::isfinite(extent) && extent > 0.0)
-    {
-      const int e = std::ilogb(extent);
-      scale = (e > 64 || e < -64) ? -e : 0;
-    }
-    const auto exactAt = [&](int s)
-    {
-      const auto exact = [s](double v) { return std::ldexp(std::ldexp(v, s), -s) == v; };
-      bool ok = exact(xmin) && exact(xmax) && exact(ymin) && exact(ymax);
-      // Only the points the sweep uses: a rejected one (say 1e-320 outside a window of 1e100)
-      // kept the window unscaled, and every search a scan of all points (1500 times slower).
-      for (std::size_t i = 0; i < points.size() && ok && s != 0; ++i)
-      {
-        const Point2& p = points[i];
-        const bool inside = xmin < p.x && p.x < xmax && ymin < p.y && p.y < ymax;
-        ok = !inside || (exact(p.x) && exact(p.y));
-      }
-      return ok;
-    };
-    // A window reaching beyond a quarter of the largest double (its sides wider than the doubles
-    // reach, x from -9e307 to 9e307): a quarter of it is enough for the reflections below, and
-    // loses no bit where scaling it to unit size would (y of 0.3 beside x of 9e307).
-    const bool farReach = !(bounds.LargestMagnitude() < ReflectionReach);
-    scale = exactAt(scale) ? scale : 0;
-    if (farReach && scale > -2 && exactAt(-2))
-    {
-      scale = -2;
-    }
-  }
+  const int scale = SweepScale(bounds, points);
   const Box2 scaled{ std::ldexp(xmin, scale),
     std::ldexp(xmax, scale),
     std::ldexp(ymin, scale),
@@ -1521,7 +1538,7 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window,
   for (std::size_t i = 0; i < points.size(); ++i)
   {
     const Point2& p = points[i];
-    if (xmin < p.x && p.x < xmax && ymin < p.y && p.y < ymax)
+    if (StrictlyInside(bounds, p))
     {
       keyed.push_back(
         { std::ldexp(p.x, scale), std::ldexp(p.y, scale), static_cast<std::int32_t>(i) });
