@@ -569,10 +569,11 @@ std::int32_t Sweep::NearestCentroid(std::int32_t a)
     {
       best = q;
       const double dx = pq.x - pa.x, dy = pq.y - pa.y;
-      // (hypot where the squares underflow: points 1e-200 apart had a reach of 1e-300, which
-      // missed their nearest centroid, and the sweep failed with a logic_error)
+      // (hypot where the squares underflow or overflow: points 1e-200 apart had a reach of
+      // 1e-300, which missed their nearest centroid, and the sweep failed with a logic_error)
       const double squares = dx * dx + dy * dy;
-      const double distance = squares > 1e-280 ? std::sqrt(squares) : std::hypot(dx, dy);
+      const double distance =
+        squares > 1e-280 && squares < 1e280 ? std::sqrt(squares) : std::hypot(dx, dy);
       reach = distance * (1.0 + 1e-9) + 1e-300;
     }
   };
@@ -959,8 +960,8 @@ void Sweep::SearchNext(std::int32_t cur)
   // The dummies in E1 (there is always one). The paper starts from one of them as the first
   // potential neighbour; here their circles first only bound the range (a dummy's circle is
   // large for a centroid far from the border), the centroids are searched, and the dummies are
-  // tested last, exactly like any point. The result is the same: the least clockwise point of the
-  // smallest circle, whatever the order of the tests.
+  // tested last, exactly like any point. The result is the same: the sites on the smallest circle
+  // (P and its ties, sorted round it afterwards), whatever the order of the tests.
   std::int32_t dummies[4];
   int dummyCount = 0;
   for (const std::int32_t d : { kLeft, kBottom, kRight, kTop })

@@ -24,9 +24,9 @@
 //    box of the circle widened by a rigorous bound on its rounding error, so it never rejects a
 //    point the exact test would accept; the half-plane and circle tests are the exact
 //    predicates. The paper starts from a dummy as the first potential neighbour; here the dummies
-//    in E1 bound the range only once a search has gone two rounds of strips without a candidate
-//    (their circles are large unless A is near the border) and are tested last, which changes
-//    the work, not the result.
+//    in E1 bound the range only once a search has gone two rounds of strips without a candidate,
+//    or one with nothing left to visit (their circles are large unless A is near the border), and
+//    are tested last, which changes the work, not the result.
 //  - Candidates come from a bucket index over the x-sorted centroids: the sorted sequence cut
 //    into about sqrt(N) strips of consecutive x (a run of equal x, a lattice column, is never
 //    split), each sorted by y. The scan starts at A and moves outward in y within a strip and

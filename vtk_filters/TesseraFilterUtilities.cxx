@@ -256,18 +256,20 @@ void CheckPointsSpan(const tessera::Box2& box)
 const char* const SmallerBounds = "set smaller WindowBounds or window constraints";
 
 /// What makes the automatic window as large as it is, and what to change, for points whose
-/// bounding box has the larger side `side`. At Padding 0 the window keeps a margin of 1e-9 of
-/// that side: points on a line 1e200 long were told to set a smaller Padding than 0.
-std::string PaddingAdvice(double padding, double side)
+/// bounding box has the larger side `side` (`smallest`: the window is already the smallest box of
+/// doubles about them, an ulp beyond them each way, which no Padding changes). At Padding 0 the
+/// window keeps a margin of 1e-9 of that side: points on a line 1e200 long were told to set a
+/// smaller Padding than 0.
+std::string PaddingAdvice(double padding, double side, bool smallest)
 {
-  if (side == 0.0)
+  if (smallest)
   {
-    // (one place: Padding plays no part, and the message blamed it)
-    return "the points are all at one place, so the window reaches 0.5 from it each way, or one "
-           "unit in the last place of its coordinates where that is more (Padding plays no part), "
-           "and no window of doubles about it is smaller: scale the points down";
+    // (Padding plays no part, and the message blamed it: points at one place at 1e300, or an
+    // ulp apart there)
+    return "it is already the smallest window of doubles about the points, one unit in the last "
+           "place beyond them each way, whatever the Padding: scale the points down";
   }
-  if (padding == 0.0)
+  if (padding == 0.0 && side > 0.0)
   {
     return "it is the points' bounding box with a margin of 1e-9 of its larger side (Padding 0): "
            "set WindowBounds close about the points, a Padding above 0 and below " +
@@ -477,6 +479,10 @@ tessera::Window ChooseWindow(const double bounds[4],
   const double usable = needArea ? pad + margin : std::min(pad + margin, room);
   const double lower[2] = { Below(xmin, usable), Below(ymin, usable) };
   const double upper[2] = { Above(xmax, usable), Above(ymax, usable) };
+  // Whether the window is the smallest of doubles about the points: no Padding makes it smaller.
+  const bool smallest = lower[0] == std::nextafter(xmin, -HUGE_VAL) &&
+    lower[1] == std::nextafter(ymin, -HUGE_VAL) && upper[0] == std::nextafter(xmax, HUGE_VAL) &&
+    upper[1] == std::nextafter(ymax, HUGE_VAL);
   if (!std::isfinite(lower[0]) || !std::isfinite(lower[1]) || !std::isfinite(upper[0]) ||
     !std::isfinite(upper[1]))
   {
@@ -487,7 +493,7 @@ tessera::Window ChooseWindow(const double bounds[4],
         "): no window of doubles holds them strictly inside; scale the points");
     }
     throw tessera::InputError("the automatic window reaches beyond the largest double: " +
-      PaddingAdvice(padding, side)); // (before Rectangle refuses it)
+      PaddingAdvice(padding, side, smallest)); // (before Rectangle refuses it)
   }
   return Representable(tessera::Window::Rectangle(lower[0],
                          upper[0],
@@ -496,7 +502,7 @@ tessera::Window ChooseWindow(const double bounds[4],
                          "the automatic window's",
                          " (the points' bounding box, padded)"),
     needArea,
-    PaddingAdvice(padding, side));
+    PaddingAdvice(padding, side, smallest));
 }
 
 void CheckChoice(const char* property, int value, const std::vector<const char*>& names)
@@ -1152,6 +1158,7 @@ void CheckAttributeLengths(vtkDataSet* data, const std::string& what)
 
 std::vector<std::string> LongAttributeWarnings(vtkDataSet* data,
   const std::string& what,
+  bool pointData,
   const std::vector<std::string>& names)
 {
   std::vector<std::string> warnings;
@@ -1160,13 +1167,15 @@ std::vector<std::string> LongAttributeWarnings(vtkDataSet* data,
     {
       const vtkIdType count = array->GetNumberOfTuples();
       const char* name = array->GetName();
-      const bool asked = names.empty() ||
-        (name && std::find(names.begin(), names.end(), std::string(name)) != names.end());
+      const bool asked = points == pointData &&
+        (names.empty() ||
+          (name && std::find(names.begin(), names.end(), std::string(name)) != names.end()));
+      const char* values = array->GetNumberOfComponents() == 1 ? " values" : " tuples";
       if (count > needed && asked)
       {
         warnings.push_back(what + ": its " + (points ? "point" : "cell") + "-data array " +
-          ArrayLabel(array) + " has " + std::to_string(count) + " values for " +
-          std::to_string(needed) + (points ? " points" : " cells") + ", so its values " +
+          ArrayLabel(array) + " has " + std::to_string(count) + values + " for " +
+          std::to_string(needed) + (points ? " points" : " cells") + ", so its" + values + " " +
           std::to_string(needed) + " to " + std::to_string(count - 1) +
           " (counted from 0) belong to none and are not used");
       }
@@ -1285,7 +1294,7 @@ vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data, std::vector<std::s
   if (auto* points = vtkPointSet::SafeDownCast(data))
   {
     CheckAttributeLengths(points, "the input");
-    for (std::string& warning : LongAttributeWarnings(points, "the input"))
+    for (std::string& warning : LongAttributeWarnings(points, "the input", true))
     {
       warnings.push_back(std::move(warning));
     }

@@ -83,12 +83,14 @@ private:
 /// by point and cell id, and a short one was read past its end (a crash, or garbage in the tiles).
 void CheckAttributeLengths(vtkDataSet* data, const std::string& what);
 
-/// Warnings naming (with `what`) each point-data array of data with more values than it has points,
-/// and each cell-data array with more than cells; with `names` given, only arrays of those names.
+/// Warnings naming (with `what`) each point-data array of data with more values than it has points
+/// (pointData true), or each cell-data array with more than cells (pointData false: the data a
+/// filter carries); with `names` given, only arrays of those names.
 /// The values past the last point or cell belong to none: the filters copy by id and never read
 /// them (VTK's vtkDataSet::CheckAttributes warns alike). Such an array is often a mismatch.
 std::vector<std::string> LongAttributeWarnings(vtkDataSet* data,
   const std::string& what,
+  bool pointData,
   const std::vector<std::string>& names = {});
 
 /// Throws tessera::InputError (naming `what`, the cell and the id) when a cell of data refers to

@@ -630,10 +630,11 @@ std::vector<double> RowValues(vtkTable* table,
 }
 
 /// The warning for values that look like missing-value codes (`seen`, not empty); where(k) names
-/// the place of value k.
+/// the place of value k; `inUse`, the MissingValue in use ("" with UseMissingValue off).
 std::string MissingCodeWarning(const std::vector<tessera::MissingCodeSightings>& seen,
   const std::string& what,
-  const std::function<std::string(std::size_t)>& where)
+  const std::function<std::string(std::size_t)>& where,
+  const std::string& inUse)
 {
   const std::string code = tessera::NumberText(seen.front().Code);
   std::string text = std::to_string(seen.front().Count) + " " + what + " exactly " + code +
@@ -644,12 +645,20 @@ std::string MissingCodeWarning(const std::vector<tessera::MissingCodeSightings>&
     text += "; " + std::to_string(seen[k].Count) + " exactly " + tessera::NumberText(seen[k].Code) +
       ", another (the first " + where(seen[k].First) + ")";
   }
+  // MissingValue takes one code: with one in use already, the advice to switch to another would
+  // make the values of the first measurements again.
+  if (!inUse.empty())
+  {
+    return text + ": MissingValue takes one code, and " + inUse +
+      " is in use; if these values are missing too, write them as NaN (or as " + inUse + ")";
+  }
   return text +
     (seen.size() == 1
         ? ": if " + code + " marks missing values, turn UseMissingValue on with MissingValue " +
           code
         : std::string(": if one of these codes marks missing values, turn UseMissingValue on with "
-                      "MissingValue set to it"));
+                      "MissingValue set to it (it takes one code: write the other's values as "
+                      "NaN)"));
 }
 
 /// The StationId array of an output: the gauges' id for each entry, in their id array's type
@@ -1264,7 +1273,7 @@ vtkPointSet* vtkThiessenArealAverage::GaugesOf(vtkDataObject* data)
       // points' (the point set itself when there are none).
       in.Joined = tessera_vtk::VertexArraysAsPointData(points, arrays);
       for (const std::string& warning :
-        tessera_vtk::LongAttributeWarnings(in.Joined, "the gauges (input 0)", arrays))
+        tessera_vtk::LongAttributeWarnings(in.Joined, "the gauges (input 0)", true, arrays))
       {
         vtkWarningMacro(<< warning);
       }
@@ -1464,14 +1473,18 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     rowValues = RowValues(observations, rows->Steps, this->StationColumn, this->ValueColumn);
     const std::vector<tessera::MissingCodeSightings> seen =
       tessera::TakeMissingValues(rowValues, this->UseMissingValue, this->MissingValue);
+    const std::string inUse =
+      this->UseMissingValue ? tessera::NumberText(this->MissingValue) : std::string();
     if (!seen.empty())
     {
-      vtkWarningMacro(<< MissingCodeWarning(seen,
+      vtkWarningMacro(<< MissingCodeWarning(
+                        seen,
                         "observation value(s) are",
                         [stations](std::size_t row) {
                           return "in row " + std::to_string(row) + ", station " +
                             RowStation(stations, row);
-                        }));
+                        },
+                        inUse));
     }
     tessera::StepSeries series =
       tessera::BuildSeries(rows->Match, rows->Steps, rowValues, gaugeCount);
@@ -1519,16 +1532,20 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     }
     const std::vector<tessera::MissingCodeSightings> seen =
       tessera::TakeMissingValues(in.Values[0], this->UseMissingValue, this->MissingValue);
+    const std::string inUse =
+      this->UseMissingValue ? tessera::NumberText(this->MissingValue) : std::string();
     if (!seen.empty())
     {
-      vtkWarningMacro(<< MissingCodeWarning(seen,
+      vtkWarningMacro(<< MissingCodeWarning(
+                        seen,
                         "gauge value(s) in '" + this->ValueArrayName + "' are",
                         [&gaugeNames](std::size_t g)
                         {
                           const std::string name = g < gaugeNames.size() ? gaugeNames[g] : "";
                           return "of gauge " + std::to_string(g) +
                             (name.empty() ? std::string() : " (" + name + ")");
-                        }));
+                        },
+                        inUse));
     }
   }
 

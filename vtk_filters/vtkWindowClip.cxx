@@ -360,7 +360,8 @@ void ClipBlock(vtkPointSet* tiles,
 {
   // (the tiles' arrays are copied by cell id: a short one was read past its end)
   tessera_vtk::CheckArraysAndCellPointIds(tiles, "the tiles (input 0)");
-  for (std::string& warning : tessera_vtk::LongAttributeWarnings(tiles, "the tiles (input 0)"))
+  for (std::string& warning :
+    tessera_vtk::LongAttributeWarnings(tiles, "the tiles (input 0)", false))
   {
     warnings.push_back(std::move(warning));
   }

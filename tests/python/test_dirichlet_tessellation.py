@@ -610,12 +610,15 @@ def test_automatic_window_keeps_every_point_and_bad_windows_are_named():
             ("points 1e200 apart on a line", lambda f: (f.SetPadding(0), f.SetInputData(make_points([(0, 0), (1e200, 0)]))),
              "it is the points' bounding box with a margin of 1e-9 of its larger side (Padding 0): set WindowBounds "
              f"close about the points, a Padding above 0 and below {sys.float_info.max / (4.0 * 1e200) / 1e200!r}"),
-            # Points all at one place, at 1e300: their window is an ulp about them, and Padding
-            # plays no part (it was blamed, at Padding 0 too).
-            ("one place at 1e300", lambda f: (f.SetPadding(0), f.SetInputData(make_points([(1e300, 1e300)] * 2))),
-             "its area overflows a double; the points are all at one place, so the window reaches 0.5 from it each "
-             "way, or one unit in the last place of its coordinates where that is more (Padding plays no part), and "
-             "no window of doubles about it is smaller: scale the points down"),
+            # Points all at one place at 1e300, or an ulp apart there: their window is an ulp about
+            # them, and Padding plays no part (it was blamed, at Padding 0 too).
+            *[(f"{name} at Padding {padding}",
+               lambda f, padding=padding, points=points: (f.SetPadding(padding), f.SetInputData(make_points(points))),
+               "its area overflows a double; it is already the smallest window of doubles about the points, one unit "
+               "in the last place beyond them each way, whatever the Padding: scale the points down")
+              for padding in (0.0, 0.1)
+              for name, points in (("one place at 1e300", [(1e300, 1e300)] * 2),
+                                   ("an ulp apart at 1e300", [(1e300, 1e300), (math.nextafter(1e300, 2e300), 1e300)]))],
             ("padding past the doubles", lambda f: (f.SetPadding(1e200), f.SetInputData(make_points([(0, 0), (1e150, 1e150)]))),
              "the automatic window reaches beyond the largest double: it is the points' bounding box padded by 1e+200 of its larger side (Padding): set a smaller Padding")]:
         f = vtkDirichletTessellation()
@@ -1109,6 +1112,11 @@ def test_long_attribute_arrays_are_named_and_their_extra_values_unused():
         for k in range(53):
             rain.InsertNextValue(10.0 * k)
         data.GetPointData().AddArray(rain)
+        wind = vtkDoubleArray()
+        wind.SetName("wind")
+        wind.SetNumberOfComponents(2)
+        wind.SetNumberOfTuples(51)
+        data.GetPointData().AddArray(wind)
         f = cls()
         warnings = messages_of(f, vtkCommand.WarningEvent)
         errors = messages_of(f, vtkCommand.ErrorEvent)
@@ -1116,7 +1124,10 @@ def test_long_attribute_arrays_are_named_and_their_extra_values_unused():
         f.Update()
         expected = ("the input: its point-data array 'rain' has 53 values for 50 points, so its values 50 to 52 "
                     "(counted from 0) belong to none and are not used")
-        assert_that(not errors and sum(expected in w for w in warnings) == 1, f"{cls.__name__}: {errors} {warnings}")
+        tuples = ("the input: its point-data array 'wind' has 51 tuples for 50 points, so its tuples 50 to 50 "
+                  "(counted from 0) belong to none")
+        assert_that(not errors and sum(expected in w for w in warnings) == 1 and sum(tuples in w for w in warnings) == 1,
+                    f"{cls.__name__}: {errors} {warnings}")
         if cls is vtkDirichletTessellation:
             tiles = f.GetOutputDataObject(0).GetCellData()
             ids, values = tiles.GetArray("PointId"), tiles.GetArray("rain")

@@ -1049,8 +1049,12 @@ def test_a_missing_value_code_is_missing_when_set_and_named_when_not():
         else:
             assert_that(len(coded_said) == 1 and f"of gauge 3 ({ids[3]})" in coded_said[0],
                         f"warnings: {warned}")
-    # With another code used (-999), the 9999 left is still named; 0 and NaN are no codes.
-    for missing, said in ((-999.0, "exactly 9999"), (0.0, "MissingValue 0 would make every zero value"),
+    # With another code used (-999), the 9999 left is still named, and the advice is not to switch
+    # codes (that made the -999s measurements again: MissingValue takes one); 0 and NaN are no codes.
+    for missing, said in ((-999.0, "exactly 9999, a common missing-value code, and averaged as measured values "
+                           f"(the first of gauge 3 ({ids[3]})): MissingValue takes one code, and -999 is in use; if "
+                           "these values are missing too, write them as NaN (or as -999)"),
+                          (0.0, "MissingValue 0 would make every zero value"),
                           (math.nan, "MissingValue nan changes nothing")):
         g = vtkThiessenArealAverage()
         warned, errors = messages_of(g, vtkCommand.WarningEvent), messages_of(g)
