@@ -42,6 +42,23 @@ foreach(consumer IN ITEMS consumer core_consumer)
     message(FATAL_ERROR "${consumer} did not pass its one test:\n${output}")
   endif()
 endforeach()
+# An install made without the VTK filters (TESSERA_BUILD_VTK=OFF) holds the core's files only: a
+# project asking it for Tessera::Filters is told so by name (simulated here by a copy of the
+# prefix without the filters' CMake files, as a core-only build would install it).
+set(core_prefix ${WORK_DIR}/core_only_prefix)
+file(COPY ${prefix}/ DESTINATION ${core_prefix})
+file(GLOB filters_files ${core_prefix}/lib*/cmake/tessera/Tessera-*.cmake)
+if(NOT filters_files)
+  message(FATAL_ERROR "no Tessera-*.cmake (the filters' targets) installed under ${prefix}")
+endif()
+file(REMOVE ${filters_files})
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/install
+  -B ${WORK_DIR}/filters_from_core_only -G ${GENERATOR} -DCMAKE_PREFIX_PATH=${core_prefix}
+  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(REGEX REPLACE "[ \n]+" " " said "${out} ${err}") # (CMake wraps the message's lines)
+if(status EQUAL 0 OR NOT said MATCHES "installed without its VTK filters \\(configured with TESSERA_BUILD_VTK=OFF\\), so it has no Tessera::Filters")
+  message(FATAL_ERROR "asking a core-only install for Tessera::Filters (${status}):\n${out}\n${err}")
+endif()
 # The installed Python package, alone on the path (not the build tree's).
 # (A script file: a semicolon in an argument would split it as a CMake list.)
 file(WRITE ${WORK_DIR}/import.py "import os\nimport tessera\n"
