@@ -53,8 +53,8 @@ def read_quakes(path, planar=False):
         return csv_input.number(row, column, path, line)
 
     x, y = ("x", "y") if planar else ("lon", "lat")
-    columns = {name.lower() for name in csv_input.header_columns(path, "epicentres", ("lat", "lon"))}
-    if not planar and {"x", "y"} <= columns and not {"lat", "lon"} & columns:
+    columns = set() if planar else {c.lower() for c in csv_input.header_columns(path, "epicentres", ("lat", "lon"))}
+    if {"x", "y"} <= columns and not {"lat", "lon"} & columns:
         csv_input.fail(f"{path}: the file has columns x, y and no lat, lon: for plane coordinates, "
                        f"give --planar")
     for line, row in csv_input.rows(path, (y, x), "points" if planar else "epicentres", optional=("depth", "mag")):

@@ -661,6 +661,21 @@ std::string MissingCodeWarning(const std::vector<tessera::MissingCodeSightings>&
                       "NaN)"));
 }
 
+/// Takes the missing values out of `values` (tessera::TakeMissingValues, with UseMissingValue `use`
+/// and MissingValue `missing`) and gives the warning for common codes left among them, or "".
+std::string TakeMissingValuesWarning(std::vector<double>& values,
+  bool use,
+  double missing,
+  const std::string& what,
+  const std::function<std::string(std::size_t)>& where)
+{
+  const std::vector<tessera::MissingCodeSightings> seen =
+    tessera::TakeMissingValues(values, use, missing);
+  return seen.empty()
+    ? std::string()
+    : MissingCodeWarning(seen, what, where, use ? tessera::NumberText(missing) : std::string());
+}
+
 /// The StationId array of an output: the gauges' id for each entry, in their id array's type
 /// and components; none when the gauges have no ids.
 class StationIdColumn
@@ -1471,20 +1486,15 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     }
     in.Times = rows->Steps.Times;
     rowValues = RowValues(observations, rows->Steps, this->StationColumn, this->ValueColumn);
-    const std::vector<tessera::MissingCodeSightings> seen =
-      tessera::TakeMissingValues(rowValues, this->UseMissingValue, this->MissingValue);
-    const std::string inUse =
-      this->UseMissingValue ? tessera::NumberText(this->MissingValue) : std::string();
-    if (!seen.empty())
+    const std::string codes = TakeMissingValuesWarning(rowValues,
+      this->UseMissingValue,
+      this->MissingValue,
+      "observation value(s) are",
+      [stations](std::size_t row)
+      { return "in row " + std::to_string(row) + ", station " + RowStation(stations, row); });
+    if (!codes.empty())
     {
-      vtkWarningMacro(<< MissingCodeWarning(
-                        seen,
-                        "observation value(s) are",
-                        [stations](std::size_t row) {
-                          return "in row " + std::to_string(row) + ", station " +
-                            RowStation(stations, row);
-                        },
-                        inUse));
+      vtkWarningMacro(<< codes);
     }
     tessera::StepSeries series =
       tessera::BuildSeries(rows->Match, rows->Steps, rowValues, gaugeCount);
@@ -1530,22 +1540,18 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     {
       in.Values[0][g] = values->GetTuple1(static_cast<vtkIdType>(g));
     }
-    const std::vector<tessera::MissingCodeSightings> seen =
-      tessera::TakeMissingValues(in.Values[0], this->UseMissingValue, this->MissingValue);
-    const std::string inUse =
-      this->UseMissingValue ? tessera::NumberText(this->MissingValue) : std::string();
-    if (!seen.empty())
+    const std::string codes = TakeMissingValuesWarning(in.Values[0],
+      this->UseMissingValue,
+      this->MissingValue,
+      "gauge value(s) in '" + this->ValueArrayName + "' are",
+      [&gaugeNames](std::size_t g)
+      {
+        const std::string name = g < gaugeNames.size() ? gaugeNames[g] : "";
+        return "of gauge " + std::to_string(g) + (name.empty() ? std::string() : " (" + name + ")");
+      });
+    if (!codes.empty())
     {
-      vtkWarningMacro(<< MissingCodeWarning(
-                        seen,
-                        "gauge value(s) in '" + this->ValueArrayName + "' are",
-                        [&gaugeNames](std::size_t g)
-                        {
-                          const std::string name = g < gaugeNames.size() ? gaugeNames[g] : "";
-                          return "of gauge " + std::to_string(g) +
-                            (name.empty() ? std::string() : " (" + name + ")");
-                        },
-                        inUse));
+      vtkWarningMacro(<< codes);
     }
   }
 
