@@ -1,6 +1,7 @@
 // Benchmark of the Green-Sibson engine (programs, never timed tests): Delaunay construction,
 // tiles with areas, and bytes of structure per point, for 1e4 .. 1e7 uniform points and a
-// 1000 x 1000 lattice (every face degenerate). When built with TESSERA_HAVE_CGAL, CGAL's
+// 1000 x 1000 lattice (every face degenerate); the construction also for 10^6 points on a parabola
+// and on five lines (Shapes). When built with TESSERA_HAVE_CGAL, CGAL's
 // Delaunay_triangulation_2 (Exact_predicates_inexact_constructions_kernel, range insert) runs in
 // the same program on the same points, as the peer.
 //
@@ -55,10 +56,34 @@ const std::vector<Point2>& LatticePoints()
   return points;
 }
 
-tessera::Window WindowFor(bool lattice)
+// Arguments below 0 are the points of other shapes, 10^6 of each (Input).
+constexpr std::int64_t Parabola = -1;
+constexpr std::int64_t FiveLines = -2;
+
+const std::vector<Point2>& ParabolaPoints()
 {
-  return lattice ? tessera::Window::Rectangle(0.0, 1000.0, 0.0, 1000.0)
-                 : tessera::Window::Rectangle(-0.1, 1.1, -0.1, 1.1);
+  // (a seed whose points the two-region build once walked to for 4 times CGAL's whole build)
+  static const std::vector<Point2> points = tessera_test::PointsOnAParabola(1000000, 3);
+  return points;
+}
+
+const std::vector<Point2>& FiveLinesPoints()
+{
+  static const std::vector<Point2> points = tessera_test::PointsOnFiveLines(1000000, 1);
+  return points;
+}
+
+// The window of the uniform points in [0, 1)^2.
+tessera::Window UnitSquareWindow()
+{
+  return tessera::Window::Rectangle(-0.1, 1.1, -0.1, 1.1);
+}
+
+tessera::Window WindowFor(std::int64_t arg)
+{
+  return arg == 0 ? tessera::Window::Rectangle(0.0, 1000.0, 0.0, 1000.0)
+    : arg < 0     ? tessera::Window::Rectangle(-0.5, 1.5, -0.5, 1.5) // (the lines reach -0.2)
+                  : UnitSquareWindow();
 }
 
 void SetPerPoint(benchmark::State& state, std::size_t n)
@@ -69,10 +94,14 @@ void SetPerPoint(benchmark::State& state, std::size_t n)
   state.SetItemsProcessed(std::int64_t(state.iterations()) * std::int64_t(n));
 }
 
-// Argument 0 = the lattice, otherwise the number of uniform points.
+// Argument 0 = the lattice, Parabola or FiveLines those shapes, otherwise the number of uniform
+// points.
 const std::vector<Point2>& Input(std::int64_t arg)
 {
-  return arg == 0 ? LatticePoints() : UniformPoints(std::size_t(arg));
+  return arg == 0      ? LatticePoints()
+    : arg == Parabola  ? ParabolaPoints()
+    : arg == FiveLines ? FiveLinesPoints()
+                       : UniformPoints(std::size_t(arg));
 }
 
 void TesseraDelaunay(benchmark::State& state)
@@ -81,7 +110,7 @@ void TesseraDelaunay(benchmark::State& state)
   std::size_t bytes = 0;
   for (auto _ : state)
   {
-    tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+    tessera::DirichletTessellation t(WindowFor(state.range(0)), points);
     benchmark::DoNotOptimize(t.Origin().data());
     bytes = t.StructureBytes();
   }
@@ -94,7 +123,7 @@ void TesseraDelaunayFaces(benchmark::State& state)
   const std::vector<Point2>& points = Input(state.range(0));
   for (auto _ : state)
   {
-    tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+    tessera::DirichletTessellation t(WindowFor(state.range(0)), points);
     const tessera::DelaunayFaces faces = tessera::ComputeDelaunayFaces(t, false);
     benchmark::DoNotOptimize(faces.PointIds.data());
   }
@@ -104,7 +133,7 @@ void TesseraDelaunayFaces(benchmark::State& state)
 void TesseraTilesAndAreas(benchmark::State& state)
 {
   const std::vector<Point2>& points = Input(state.range(0));
-  const tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+  const tessera::DirichletTessellation t(WindowFor(state.range(0)), points);
   for (auto _ : state)
   {
     const tessera::TileSet tiles = tessera::ComputeTiles(t);
@@ -118,7 +147,7 @@ void TesseraTilesAndAreas(benchmark::State& state)
 void TesseraFacesAfterBuild(benchmark::State& state)
 {
   const std::vector<Point2>& points = Input(state.range(0));
-  const tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+  const tessera::DirichletTessellation t(WindowFor(state.range(0)), points);
   for (auto _ : state)
   {
     const tessera::DelaunayFaces faces = tessera::ComputeDelaunayFaces(t, false);
@@ -130,7 +159,7 @@ void TesseraFacesAfterBuild(benchmark::State& state)
 void TesseraDualOnly(benchmark::State& state)
 {
   const std::vector<Point2>& points = Input(state.range(0));
-  const tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+  const tessera::DirichletTessellation t(WindowFor(state.range(0)), points);
   for (auto _ : state)
   {
     const tessera::TessellationDual dual(t);
@@ -142,7 +171,7 @@ void TesseraDualOnly(benchmark::State& state)
 void TesseraTilesOnly(benchmark::State& state)
 {
   const std::vector<Point2>& points = Input(state.range(0));
-  const tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+  const tessera::DirichletTessellation t(WindowFor(state.range(0)), points);
   const tessera::TessellationDual dual(t);
   for (auto _ : state)
   {
@@ -155,7 +184,7 @@ void TesseraTilesOnly(benchmark::State& state)
 void TesseraContiguitiesOnly(benchmark::State& state)
 {
   const std::vector<Point2>& points = Input(state.range(0));
-  const tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+  const tessera::DirichletTessellation t(WindowFor(state.range(0)), points);
   const tessera::TessellationDual dual(t);
   for (auto _ : state)
   {
@@ -171,7 +200,7 @@ void TesseraBuildAndTiles(benchmark::State& state)
   const std::vector<Point2>& points = Input(state.range(0));
   for (auto _ : state)
   {
-    const tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+    const tessera::DirichletTessellation t(WindowFor(state.range(0)), points);
     const tessera::TileSet tiles = tessera::ComputeTiles(t);
     benchmark::DoNotOptimize(tiles.Areas.data());
   }
@@ -185,7 +214,7 @@ void TesseraBuildTilesAndGraph(benchmark::State& state)
   const std::vector<Point2>& points = Input(state.range(0));
   for (auto _ : state)
   {
-    const tessera::DirichletTessellation t(WindowFor(state.range(0) == 0), points);
+    const tessera::DirichletTessellation t(WindowFor(state.range(0)), points);
     tessera::TessellationDual dual(t);
     const tessera::TileMeshAndGraph both = dual.TileMeshAndContiguities();
     benchmark::DoNotOptimize(both.Tiles.Areas.data());
@@ -213,7 +242,7 @@ void SetPerQuery(benchmark::State& state, std::size_t queries)
 
 void TesseraNearestPointEach(benchmark::State& state)
 {
-  const tessera::DirichletTessellation t(WindowFor(false), Input(state.range(0)));
+  const tessera::DirichletTessellation t(UnitSquareWindow(), Input(state.range(0)));
   for (auto _ : state)
   {
     std::int64_t sum = 0;
@@ -228,7 +257,7 @@ void TesseraNearestPointEach(benchmark::State& state)
 
 void TesseraNearestPoints(benchmark::State& state)
 {
-  const tessera::DirichletTessellation t(WindowFor(false), Input(state.range(0)));
+  const tessera::DirichletTessellation t(UnitSquareWindow(), Input(state.range(0)));
   for (auto _ : state)
   {
     const std::vector<std::int32_t> nearest = t.NearestPoints(NearestQueries());
@@ -305,7 +334,7 @@ void TesseraRemoveHighDegreeVertex(benchmark::State& state)
   for (auto _ : state)
   {
     state.PauseTiming();
-    tessera::DirichletTessellation t(WindowFor(false), points);
+    tessera::DirichletTessellation t(UnitSquareWindow(), points);
     state.ResumeTiming();
     t.Remove(std::int32_t(d));
     benchmark::DoNotOptimize(t.AcceptedCount());
@@ -316,6 +345,13 @@ void TesseraRemoveHighDegreeVertex(benchmark::State& state)
 void Sizes(benchmark::internal::Benchmark* b)
 {
   b->Unit(benchmark::kMillisecond)->UseRealTime()->Arg(10000)->Arg(100000)->Arg(1000000)->Arg(0);
+}
+
+// 10^6 points in convex position and on five lines: every point or many of them on the hull or
+// deferred by the two-region build.
+void Shapes(benchmark::internal::Benchmark* b)
+{
+  b->Unit(benchmark::kMillisecond)->UseRealTime()->Arg(Parabola)->Arg(FiveLines);
 }
 
 void UniformSizes(benchmark::internal::Benchmark* b)
@@ -332,6 +368,7 @@ void Large(benchmark::internal::Benchmark* b)
 
 BENCHMARK(TesseraDelaunay)->Apply(Sizes);
 BENCHMARK(TesseraDelaunay)->Apply(Large);
+BENCHMARK(TesseraDelaunay)->Apply(Shapes);
 BENCHMARK(TesseraDelaunayFaces)->Apply(Sizes);
 BENCHMARK(TesseraDelaunayFaces)->Apply(Large);
 BENCHMARK(TesseraTilesAndAreas)->Apply(Sizes);
@@ -356,6 +393,7 @@ BENCHMARK(TesseraNearestPoints)->Apply(UniformSizes);
 #ifdef TESSERA_HAVE_CGAL
 BENCHMARK(CgalDelaunay)->Apply(Sizes);
 BENCHMARK(CgalDelaunay)->Apply(Large);
+BENCHMARK(CgalDelaunay)->Apply(Shapes);
 BENCHMARK(CgalNearestVertex)->Apply(UniformSizes);
 #endif
 

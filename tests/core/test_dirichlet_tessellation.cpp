@@ -25,6 +25,8 @@
 #include <vector>
 
 using namespace tessera;
+using tessera_test::PointsOnAParabola;
+using tessera_test::PointsOnFiveLines;
 using tessera_test::UniformPoints;
 using Tess = DirichletTessellation;
 
@@ -2098,6 +2100,19 @@ TEST(DirichletTessellation, TwoRegionBuildOfPointsOnTwoLinesEqualsSerialInsertio
   // Every point on the hull, no four co-circular: n - 2 real triangles.
   EXPECT_EQ(HullSize(batch), points.size());
   EXPECT_EQ(CheckStructure(batch), points.size() - 2);
+}
+
+// Points in convex position: after the sample every point lies outside its hull, where a region
+// may not insert, so both regions give their points up after their first tries (GivesUp) and the
+// serial insertion takes them. On five lines of inexact slope the regions defer many points too.
+TEST(DirichletTessellation, TwoRegionBuildThatGivesUpEqualsSerialInsertion)
+{
+  const std::vector<Point2> parabola = PointsOnAParabola(TwoRegionSize, 3);
+  ExpectSameAsStreaming(parabola);
+  const Tess batch(UnitWindow(), parabola);
+  EXPECT_EQ(HullSize(batch), parabola.size());
+  EXPECT_EQ(CheckStructure(batch), parabola.size() - 2);
+  ExpectSameAsStreaming(PointsOnFiveLines(TwoRegionSize, 5));
 }
 
 // Every face degenerate, and lattice points exactly on the seam.

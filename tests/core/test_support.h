@@ -173,6 +173,38 @@ inline std::vector<tessera::Point2> UniformPoints(std::size_t n,
   return points;
 }
 
+/// n points in convex position, on the parabola y = (2x - 1)^2 with x uniform in [0, 1),
+/// reproducible from the seed.
+inline std::vector<tessera::Point2> PointsOnAParabola(std::size_t n, std::uint64_t seed)
+{
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<tessera::Point2> points(n);
+  for (tessera::Point2& p : points)
+  {
+    const double x = u(rng);
+    p = { x, (2.0 * x - 1.0) * (2.0 * x - 1.0) };
+  }
+  return points;
+}
+
+/// n points on five lines of slopes with no exact binary form (0.1, 0.7, ...), taken in turn, x
+/// uniform in [0, 1), reproducible from the seed; y stays within [-0.2, 1.1].
+inline std::vector<tessera::Point2> PointsOnFiveLines(std::size_t n, std::uint64_t seed)
+{
+  static const double slopes[5] = { 0.1, 0.7, -0.3, 1.3, 0.01 };
+  static const double atZero[5] = { 0.3, 0.1, 0.7, -0.2, 0.45 };
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<tessera::Point2> points(n);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    const double x = u(rng);
+    points[k] = { x, slopes[k % 5] * x + atZero[k % 5] };
+  }
+  return points;
+}
+
 /// A slanted hexagonal window around (0.5, 0.5): a window that is not a rectangle.
 inline tessera::Window Hexagon()
 {
