@@ -10,6 +10,9 @@
 // BuildTilesAndGraph the build plus tiles and contiguity graph (what vtkDirichletTessellation
 // asks of the core).
 //
+// Streamed inserts 10^5 points one by one (Insert; CGAL's insert(p) without a hint), sorted by x
+// or in random order.
+//
 // Nearest-point queries (NearestPoint one by one, the batch NearestPoints, CGAL's hinted
 // nearest_vertex) are timed per query (ns/q) for 10^4 queries among 10^4 .. 10^6 points.
 //
@@ -25,6 +28,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -266,7 +270,56 @@ void TesseraNearestPoints(benchmark::State& state)
   SetPerQuery(state, NearestQueries().size());
 }
 
+// Points inserted one by one, as a stream: 10^5 uniform points sorted by x (a table's rows; each
+// point beside one of the last few, far from the very last) with argument SortedByX, else in
+// random order.
+constexpr std::int64_t SortedByX = 1;
+
+const std::vector<Point2>& StreamedPoints(std::int64_t order)
+{
+  static std::vector<Point2> sorted;
+  if (sorted.empty())
+  {
+    sorted = tessera_test::UniformPoints(100000, 4242);
+    std::sort(
+      sorted.begin(), sorted.end(), [](const Point2& a, const Point2& b) { return a.x < b.x; });
+  }
+  static const std::vector<Point2> shuffled = tessera_test::UniformPoints(100000, 4242);
+  return order == SortedByX ? sorted : shuffled;
+}
+
+void TesseraStreamed(benchmark::State& state)
+{
+  const std::vector<Point2>& points = StreamedPoints(state.range(0));
+  for (auto _ : state)
+  {
+    tessera::DirichletTessellation t(UnitSquareWindow());
+    for (const Point2& p : points)
+    {
+      t.Insert(p);
+    }
+    benchmark::DoNotOptimize(t.Origin().data());
+  }
+  SetPerPoint(state, points.size());
+}
+
 #ifdef TESSERA_HAVE_CGAL
+void CgalStreamed(benchmark::State& state)
+{
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const std::vector<Point2>& points = StreamedPoints(state.range(0));
+  for (auto _ : state)
+  {
+    CGAL::Delaunay_triangulation_2<Kernel> dt;
+    for (const Point2& p : points)
+    {
+      dt.insert(Kernel::Point_2(p.x, p.y));
+    }
+    benchmark::DoNotOptimize(dt.number_of_faces());
+  }
+  SetPerPoint(state, points.size());
+}
+
 void CgalDelaunay(benchmark::State& state)
 {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -347,11 +400,17 @@ void Sizes(benchmark::internal::Benchmark* b)
   b->Unit(benchmark::kMillisecond)->UseRealTime()->Arg(10000)->Arg(100000)->Arg(1000000)->Arg(0);
 }
 
-// 10^6 points in convex position and on five lines: every point or many of them on the hull or
-// deferred by the two-region build.
+// 10^6 points on a parabola (in convex position but for rounding) and on five lines: the regions
+// of the two-region build defer most of them (two_region_build.cpp: GivesUp).
 void Shapes(benchmark::internal::Benchmark* b)
 {
   b->Unit(benchmark::kMillisecond)->UseRealTime()->Arg(Parabola)->Arg(FiveLines);
+}
+
+// Argument SortedByX (1) or random order (2).
+void StreamOrders(benchmark::internal::Benchmark* b)
+{
+  b->Unit(benchmark::kMillisecond)->UseRealTime()->Arg(SortedByX)->Arg(2);
 }
 
 void UniformSizes(benchmark::internal::Benchmark* b)
@@ -388,12 +447,14 @@ BENCHMARK(TesseraRemoveHighDegreeVertex)
   ->Arg(2000)
   ->Arg(4000)
   ->Arg(8000);
+BENCHMARK(TesseraStreamed)->Apply(StreamOrders);
 BENCHMARK(TesseraNearestPointEach)->Apply(UniformSizes);
 BENCHMARK(TesseraNearestPoints)->Apply(UniformSizes);
 #ifdef TESSERA_HAVE_CGAL
 BENCHMARK(CgalDelaunay)->Apply(Sizes);
 BENCHMARK(CgalDelaunay)->Apply(Large);
 BENCHMARK(CgalDelaunay)->Apply(Shapes);
+BENCHMARK(CgalStreamed)->Apply(StreamOrders);
 BENCHMARK(CgalNearestVertex)->Apply(UniformSizes);
 #endif
 
@@ -403,7 +464,9 @@ int main(int argc, char** argv)
     argv,
     "The Green-Sibson core against CGAL's Delaunay_triangulation_2 in one run: "
     "Delaunay\nconstruction, tiles with areas, contiguity graph and bytes per point, for 1e4 "
-    ".. 1e7 uniform\npoints and a 1000 x 1000 lattice (ns/pt: wall time per point; B/pt: bytes "
+    ".. 1e7 uniform\npoints and a 1000 x 1000 lattice, the construction also for 10^6 points on "
+    "a parabola (/-1)\nand on five lines (/-2), and Streamed: 10^5 points inserted one by one, "
+    "sorted by x (/1)\nor in random order (/2) (ns/pt: wall time per point; B/pt: bytes "
     "of structure).\nRun a Release build. Google Benchmark's options follow "
     "(--benchmark_filter=Cgal|Tessera ...).");
 }

@@ -135,9 +135,12 @@ constexpr std::int32_t SamplePointsPerCell = 4;
 // all lie outside the sample's hull, where a region may not insert, and each walk failed only
 // after a long detour through the thin triangles across the curve: 10^6 points on a parabola
 // spent 0.08 s failing for some seeds and 5.3 s for others, then 0.5 s in the serial insertion
-// (CGAL: 0.55 s). On five lines of inexact slope a third were deferred, after 1.8 s of walks.
-// Uniform points defer about 1% and never give up; the choice depends on the region's own points
-// alone, so the result still does not depend on timing.
+// (CGAL: 0.55 to 0.86 s). On five lines of inexact slope most first tries fail too (before, a
+// third of all failed, after 1.8 s of walks). Copies of earlier points count as deferred: at 90%
+// copies a region gives up, and the copies are met along the curve instead. Uniform points defer
+// about 1% and never give up. The waste before giving up is at most 256 walks of MaxWalk steps;
+// half keeps a region that still inserts most of its points on its core. The choice depends on
+// the region's own points alone, so the result still does not depend on timing.
 constexpr std::size_t TriesBeforeGivingUp = 256;
 
 bool GivesUp(std::size_t tried, std::size_t deferred)
@@ -338,8 +341,8 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first,
     seamCocircular || regions[0].SawCocircular || regions[1].SawCocircular;
   this->Serial.LastTriangle = regions[0].LastTriangle;
   // The deferred points, along the curve: they lie near the seam and outside the sample's hull
-  // (all around the batch), and walking to them in their rounds' order took 13 steps each at 1M
-  // points (5 along the curve), 10.6 ms against 5.3.
+  // (all around the batch), or anywhere on a side given up, and walking to them in their rounds'
+  // order took 13 steps each at 1M uniform points (5 along the curve), 10.6 ms against 5.3.
   std::vector<std::int32_t> deferred = std::move(regions[0].Deferred);
   deferred.insert(deferred.end(), regions[1].Deferred.begin(), regions[1].Deferred.end());
   insertAlongCurve(deferred);

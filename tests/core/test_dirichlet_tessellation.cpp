@@ -533,6 +533,16 @@ TEST(DirichletTessellation, StreamingWithJumpsEqualsBatch)
   ExpectStreamingEqualsBatch(points);
 }
 
+// A stream sorted by x (a table's rows): each point lies beside one of the last few inserted, far
+// from the very last, and the walks start from the triangles made last (JumpTowards).
+TEST(DirichletTessellation, AStreamSortedByXEqualsBatch)
+{
+  std::vector<Point2> points = UniformPoints(30000, 19);
+  std::sort(
+    points.begin(), points.end(), [](const Point2& a, const Point2& b) { return a.x < b.x; });
+  ExpectStreamingEqualsBatch(points);
+}
+
 // A streamed point with a NaN or infinite coordinate is refused, named by the id it would have
 // had, and not appended: the next point gets that id, and the result equals the batch of the
 // valid points.
@@ -2085,7 +2095,8 @@ TEST(DirichletTessellation, TwoRegionBuildOfUniformPointsEqualsSerialInsertion)
 }
 
 // Every point on the hull: two parallel lines (survey lines, transects), where each region
-// defers every point (a hull edge to split), now without walking to its restart cell and back.
+// defers its first points (a hull edge to split) without walking to its restart cell and back,
+// then gives the rest up (GivesUp).
 TEST(DirichletTessellation, TwoRegionBuildOfPointsOnTwoLinesEqualsSerialInsertion)
 {
   std::mt19937_64 random(21);
@@ -2104,7 +2115,8 @@ TEST(DirichletTessellation, TwoRegionBuildOfPointsOnTwoLinesEqualsSerialInsertio
 
 // Points in convex position: after the sample every point lies outside its hull, where a region
 // may not insert, so both regions give their points up after their first tries (GivesUp) and the
-// serial insertion takes them. On five lines of inexact slope the regions defer many points too.
+// serial insertion takes them. On five lines of inexact slope the regions defer a quarter of
+// their points and go on: the threshold's other side.
 TEST(DirichletTessellation, TwoRegionBuildThatGivesUpEqualsSerialInsertion)
 {
   const std::vector<Point2> parabola = PointsOnAParabola(TwoRegionSize, 3);
