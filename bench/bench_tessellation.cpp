@@ -271,21 +271,23 @@ void TesseraNearestPoints(benchmark::State& state)
 }
 
 // Points inserted one by one, as a stream: 10^5 uniform points sorted by x (a table's rows; each
-// point beside one of the last few, far from the very last) with argument SortedByX, else in
-// random order.
+// point beside one of the last few, far from the very last), or in the random order they were
+// drawn in.
 constexpr std::int64_t SortedByX = 1;
+constexpr std::int64_t RandomOrder = 2;
 
 const std::vector<Point2>& StreamedPoints(std::int64_t order)
 {
-  static std::vector<Point2> sorted;
-  if (sorted.empty())
+  static const std::vector<Point2> drawn = tessera_test::UniformPoints(100000, 4242);
+  static const std::vector<Point2> sorted = [&]
   {
-    sorted = tessera_test::UniformPoints(100000, 4242);
-    std::sort(
-      sorted.begin(), sorted.end(), [](const Point2& a, const Point2& b) { return a.x < b.x; });
-  }
-  static const std::vector<Point2> shuffled = tessera_test::UniformPoints(100000, 4242);
-  return order == SortedByX ? sorted : shuffled;
+    std::vector<Point2> points = drawn;
+    std::sort(points.begin(),
+      points.end(),
+      [](const Point2& a, const Point2& b) { return a.x < b.x; });
+    return points;
+  }();
+  return order == SortedByX ? sorted : drawn;
 }
 
 void TesseraStreamed(benchmark::State& state)
@@ -401,16 +403,16 @@ void Sizes(benchmark::internal::Benchmark* b)
 }
 
 // 10^6 points on a parabola (in convex position but for rounding) and on five lines: the regions
-// of the two-region build defer most of them (two_region_build.cpp: GivesUp).
+// of the two-region build defer most of their first tries and give the rest up
+// (two_region_build.cpp: GivesUp).
 void Shapes(benchmark::internal::Benchmark* b)
 {
   b->Unit(benchmark::kMillisecond)->UseRealTime()->Arg(Parabola)->Arg(FiveLines);
 }
 
-// Argument SortedByX (1) or random order (2).
 void StreamOrders(benchmark::internal::Benchmark* b)
 {
-  b->Unit(benchmark::kMillisecond)->UseRealTime()->Arg(SortedByX)->Arg(2);
+  b->Unit(benchmark::kMillisecond)->UseRealTime()->Arg(SortedByX)->Arg(RandomOrder);
 }
 
 void UniformSizes(benchmark::internal::Benchmark* b)

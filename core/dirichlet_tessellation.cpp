@@ -406,29 +406,34 @@ void DirichletTessellation::InsertKnownPoint(std::int32_t id, std::int32_t nearI
   this->BeginTrackedChange();
   this->InsertAcceptedPoint(id);
   this->EndTrackedChange();
+  this->RecentStarts[this->NextRecentStart] = this->Serial.LastTriangle;
+  this->NextRecentStart = (this->NextRecentStart + 1) % this->RecentStarts.size();
 }
 
 // Jump and walk (Muecke, Saias and Zhu 1996), while walks run long: the walk to p starts at
-// whichever is nearest p (by their vertices) of the last RecentTriangles triangles made and the
-// triangles indexed beside p along a Hilbert curve (walk_hints.h; built on first need, again once
-// stale, cleared where triangles are renumbered or made again), or, where there is no index (the
-// points' box has no extent), triangles sampled at random. With random samples alone
-// every sample and step was a cache miss: 10^6 uniform points in random order took 18.8 s (3.1 s
-// now, the batch 0.3 s), 10^5 along a parabola 1.3 s (0.10 s). From the last triangle alone, points
-// streamed in random order walked O(sqrt n) triangles each, and points along a line that doubles
-// only approximate (y = x/3: a fan of slivers) O(n): 10000 of them took 2.35 s, where a batch took
-// 0.11 s (0.13 s now). A stream in spatial order must not pay for it (each sample is a cache miss
-// or two at 10^6 points: sampling at every point made one 5 times slower), so:
+// whichever is nearest p (by their vertices) of the triangle made last, the triangles made around
+// the last 64 points (RecentStarts) and the triangles indexed beside p along a Hilbert curve
+// (walk_hints.h; built on first need, again once stale, cleared where triangles are renumbered or
+// made again), or, where there is no index (the points' box has no extent), triangles sampled at
+// random. With random samples alone every sample and step was a cache miss: 10^6 uniform points
+// in random order took 18.8 s (3.1 s now, the batch 0.3 s), 10^5 along a parabola 1.3 s (0.10 s).
+// From the last triangle alone, points streamed in random order walked O(sqrt n) triangles each,
+// and points along a line that doubles only approximate (y = x/3: a fan of slivers) O(n): 10000
+// of them took 2.35 s, where a batch took 0.11 s (0.13 s now). Without the recent points, 10^6
+// points sorted by x walked 228 steps each (16-24 s; CGAL, inserting one by one, 2.8 s), as the
+// index does not hold the points since its last build; now 17 (2.0-2.3 s). A stream in spatial
+// order must not pay for it (each sample is a cache miss or two at 10^6 points: sampling at every
+// point made one 5 times slower), so:
 //
-//   Off --walk of 2 cube roots of the triangles or more--> Probe (the index, or 16 samples)
-//   Probe --a start nearer than the last triangle--> On (the index, or a quarter as many samples
-//            as the last walk's steps, from a cube root to a square root of the triangles);
-//            else --> Off
+//   Off --walk of 2 cube roots of the triangles or more--> Probe (the recent starts, and the
+//            index or 16 samples)
+//   Probe --a start nearer than the last triangle--> On (the recent starts, and the index or a
+//            quarter as many samples as the last walk's steps, from a cube root to a square
+//            root of the triangles); else --> Off
 //   On --JumpMissesToStop jumps in a row finding none nearer--> Off
 void DirichletTessellation::JumpTowards(const Point2& p)
 {
   constexpr int ProbeSamples = 16;
-  constexpr std::int32_t RecentTriangles = 32;
   constexpr int JumpMissesToStop = 2;
   const std::int32_t triangles = std::int32_t(this->Origins.size() / 3);
   // (walk >= 2 cbrt(triangles), cubed: most insertions stop here, and need no root)
@@ -478,12 +483,9 @@ void DirichletTessellation::JumpTowards(const Point2& p)
   {
     consider(near[k]);
   }
-  // The triangles made last, at the end of the arrays, lie around the points inserted last: a
-  // stream sorted along one axis (a table's rows by x) comes back beside one of them, though far
-  // from the very last and beyond the index, built before them. 10^6 uniform points sorted by x
-  // walked 228 steps each (24.5 s; CGAL, inserting one by one, 2.8 s), now 12 (2.4 s); in random
-  // order they walk 2 steps either way (3.3 s; CGAL 184 s).
-  for (std::int32_t t = std::max(0, triangles - RecentTriangles); t < triangles; ++t)
+  // A stream sorted along one axis (a table's rows by x) comes back beside one of the last few
+  // points, though far from the very last and beyond the index, built before them.
+  for (const std::int32_t t : this->RecentStarts)
   {
     consider(t);
   }

@@ -37,6 +37,7 @@
 #include "walk_hints.h"
 #include "window.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -113,6 +114,9 @@ public:
   const std::vector<Point2>& Points() const { return this->Coordinates; }
   std::size_t PointCount() const { return this->Coordinates.size(); }
   std::size_t AcceptedCount() const { return this->Accepted; }
+  /// Triangles the walk of the last Insert or Reinsert crossed to find its point (a diagnostic: a
+  /// stream whose walks stay long comes in no spatial order the jumps can follow).
+  std::int64_t LastWalkSteps() const { return this->Serial.LastWalk; }
 
   /// O(1) once Insert or Remove has been called (a status byte per id); before that (a batch
   /// build only) a binary search among the rejected and duplicate ids.
@@ -266,6 +270,11 @@ private:
   int JumpMisses = 0;       ///< jumps in a row, while on, that found no nearer start
   WalkHints Hints;          ///< JumpTowards's index of the triangles (built on first need)
   std::size_t Removals = 0; ///< removals of accepted points so far (with Serial.Inserted: Hints)
+  /// A triangle made around each of the last points streamed in (its insertion's last triangle),
+  /// a ring (triangle 0 before them): jumps may start there (JumpTowards). It may have changed or
+  /// been freed since, which a jump sees.
+  std::array<std::int32_t, 64> RecentStarts{};
+  std::size_t NextRecentStart = 0;
   void JumpTowards(const Point2& p);
   void InsertAcceptedPoint(std::int32_t id);
   void InsertCollinear(std::int32_t id);

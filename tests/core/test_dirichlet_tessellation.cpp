@@ -98,6 +98,10 @@ void CheckLocallyDelaunay(const Tess& t)
   std::size_t bad = 0;
   for (std::int32_t e = 0; e < std::int32_t(org.size()); ++e)
   {
+    if (t.IsFreeTriangle(e / 3))
+    {
+      continue; // (a slot a removal freed)
+    }
     const std::int32_t f = twin[e];
     const std::int32_t a = org[e], b = org[Tess::Next(e)], c = org[Tess::Prev(e)];
     const std::int32_t d = org[Tess::Prev(f)];
@@ -533,14 +537,58 @@ TEST(DirichletTessellation, StreamingWithJumpsEqualsBatch)
   ExpectStreamingEqualsBatch(points);
 }
 
-// A stream sorted by x (a table's rows): each point lies beside one of the last few inserted, far
-// from the very last, and the walks start from the triangles made last (JumpTowards).
-TEST(DirichletTessellation, AStreamSortedByXEqualsBatch)
+namespace
 {
-  std::vector<Point2> points = UniformPoints(30000, 19);
+
+// Mean steps of the walks of points streamed one by one into t, each point then kept for `kept`
+// insertions (removed after them; 0: never removed).
+double MeanWalkSteps(Tess& t, const std::vector<Point2>& points, std::size_t kept)
+{
+  double steps = 0.0;
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    t.Insert(points[k]);
+    steps += double(t.LastWalkSteps());
+    if (kept > 0 && k >= kept)
+    {
+      t.Remove(std::int32_t(k - kept));
+    }
+  }
+  return steps / double(points.size());
+}
+
+std::vector<Point2> SortedByX(std::vector<Point2> points)
+{
   std::sort(
     points.begin(), points.end(), [](const Point2& a, const Point2& b) { return a.x < b.x; });
-  ExpectStreamingEqualsBatch(points);
+  return points;
+}
+
+} // namespace
+
+// A stream sorted by x (a table's rows): each point lies beside one of the last few inserted, far
+// from the very last, and the walks start there (JumpTowards: RecentStarts). From the last
+// triangle and the index alone they walked 43 steps each here; now 7.
+TEST(DirichletTessellation, AStreamSortedByXWalksFewStepsAndEqualsBatch)
+{
+  const std::vector<Point2> points = SortedByX(UniformPoints(30000, 19));
+  Tess streaming(UnitWindow());
+  EXPECT_LT(MeanWalkSteps(streaming, points, 0), 10.0);
+  CheckStructure(streaming);
+  EXPECT_TRUE(MakeCanonical(Tess(UnitWindow(), points)) == MakeCanonical(streaming));
+}
+
+// The same as a sliding window, each point removed 20000 insertions later: new triangles take the
+// freed slots anywhere in the arrays, so the arrays' last triangles are not the newest (jumps
+// that looked there walked O(sqrt n) again).
+TEST(DirichletTessellation, ASlidingWindowSortedByXWalksFewSteps)
+{
+  const std::vector<Point2> points = SortedByX(UniformPoints(50000, 23));
+  Tess streaming(UnitWindow());
+  EXPECT_LT(MeanWalkSteps(streaming, points, 20000), 10.0);
+  EXPECT_EQ(streaming.AcceptedCount(), 20000u);
+  CheckStructure(streaming);
+  CheckLocallyDelaunay(streaming);
 }
 
 // A streamed point with a NaN or infinite coordinate is refused, named by the id it would have
@@ -2115,8 +2163,8 @@ TEST(DirichletTessellation, TwoRegionBuildOfPointsOnTwoLinesEqualsSerialInsertio
 
 // Points in convex position: after the sample every point lies outside its hull, where a region
 // may not insert, so both regions give their points up after their first tries (GivesUp) and the
-// serial insertion takes them. On five lines of inexact slope the regions defer a quarter of
-// their points and go on: the threshold's other side.
+// serial insertion takes them. On five lines of inexact slope the regions of these 40000 points
+// defer a quarter of their points and go on: the threshold's other side.
 TEST(DirichletTessellation, TwoRegionBuildThatGivesUpEqualsSerialInsertion)
 {
   const std::vector<Point2> parabola = PointsOnAParabola(TwoRegionSize, 3);
