@@ -282,9 +282,8 @@ const std::vector<Point2>& StreamedPoints(std::int64_t order)
   static const std::vector<Point2> sorted = [&]
   {
     std::vector<Point2> points = drawn;
-    std::sort(points.begin(),
-      points.end(),
-      [](const Point2& a, const Point2& b) { return a.x < b.x; });
+    std::sort(
+      points.begin(), points.end(), [](const Point2& a, const Point2& b) { return a.x < b.x; });
     return points;
   }();
   return order == SortedByX ? sorted : drawn;

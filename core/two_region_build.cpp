@@ -136,11 +136,12 @@ constexpr std::int32_t SamplePointsPerCell = 4;
 // after a long detour through the thin triangles across the curve: 10^6 points on a parabola
 // spent 0.08 s failing for some seeds and 5.3 s for others, then 0.5 s in the serial insertion
 // (CGAL: 0.56 to 0.86 s). On five lines of inexact slope most first tries of 10^6 points fail
-// too (before, a third of all failed, after 1.8 s of walks; 40000 points defer a quarter). Copies of earlier points count as deferred: at 90%
-// copies a region gives up, and the copies are met along the curve instead. Uniform points defer
-// about 1% and never give up. The waste before giving up is at most 256 walks of MaxWalk steps;
-// half keeps a region that still inserts most of its points on its core. The choice depends on
-// the region's own points alone, so the result still does not depend on timing.
+// too (before, a third of all failed, after 1.8 s of walks; 40000 points defer a quarter). Copies
+// of earlier points count as deferred: at 90% copies a region gives up, and the copies are met
+// along the curve instead. Uniform points defer about 1% and never give up. The waste before giving
+// up is at most 256 walks of MaxWalk steps; half keeps a region that still inserts most of its
+// points on its core. The choice depends on the region's own points alone, so the result still does
+// not depend on timing.
 constexpr std::size_t TriesBeforeGivingUp = 256;
 
 bool GivesUp(std::size_t tried, std::size_t deferred)
