@@ -28,7 +28,6 @@
 
 #include <benchmark/benchmark.h>
 
-#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -66,7 +65,7 @@ constexpr std::int64_t FiveLines = -2;
 
 const std::vector<Point2>& ParabolaPoints()
 {
-  // (a seed whose points the two-region build once walked to for 4 times CGAL's whole build)
+  // (a seed whose failed walks once took the two-region build 4 times CGAL's whole build)
   static const std::vector<Point2> points = tessera_test::PointsOnAParabola(1000000, 3);
   return points;
 }
@@ -279,13 +278,7 @@ constexpr std::int64_t RandomOrder = 2;
 const std::vector<Point2>& StreamedPoints(std::int64_t order)
 {
   static const std::vector<Point2> drawn = tessera_test::UniformPoints(100000, 4242);
-  static const std::vector<Point2> sorted = [&]
-  {
-    std::vector<Point2> points = drawn;
-    std::sort(
-      points.begin(), points.end(), [](const Point2& a, const Point2& b) { return a.x < b.x; });
-    return points;
-  }();
+  static const std::vector<Point2> sorted = tessera_test::SortedByX(drawn);
   return order == SortedByX ? sorted : drawn;
 }
 

@@ -1167,18 +1167,18 @@ std::vector<std::string> LongAttributeWarnings(vtkDataSet* data,
     {
       const vtkIdType count = array->GetNumberOfTuples();
       const char* name = array->GetName();
-      const bool asked = points == pointData &&
-        (names.empty() ||
-          (name && std::find(names.begin(), names.end(), std::string(name)) != names.end()));
-      const char* values = array->GetNumberOfComponents() == 1 ? " values" : " tuples";
-      if (count > needed && asked)
+      const bool asked = names.empty() ||
+        (name && std::find(names.begin(), names.end(), std::string(name)) != names.end());
+      if (points != pointData || count <= needed || !asked)
       {
-        warnings.push_back(what + ": its " + (points ? "point" : "cell") + "-data array " +
-          ArrayLabel(array) + " has " + std::to_string(count) + values + " for " +
-          std::to_string(needed) + (points ? " points" : " cells") + ", so its" + values + " " +
-          std::to_string(needed) + " to " + std::to_string(count - 1) +
-          " (counted from 0) belong to none and are not used");
+        return;
       }
+      const char* values = array->GetNumberOfComponents() == 1 ? " values" : " tuples";
+      warnings.push_back(what + ": its " + (points ? "point" : "cell") + "-data array " +
+        ArrayLabel(array) + " has " + std::to_string(count) + values + " for " +
+        std::to_string(needed) + (points ? " points" : " cells") + ", so its" + values + " " +
+        std::to_string(needed) + " to " + std::to_string(count - 1) +
+        " (counted from 0) belong to none and are not used");
     });
   return warnings;
 }

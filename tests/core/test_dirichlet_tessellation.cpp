@@ -27,6 +27,7 @@
 using namespace tessera;
 using tessera_test::PointsOnAParabola;
 using tessera_test::PointsOnFiveLines;
+using tessera_test::SortedByX;
 using tessera_test::UniformPoints;
 using Tess = DirichletTessellation;
 
@@ -555,13 +556,6 @@ double MeanWalkSteps(Tess& t, const std::vector<Point2>& points, std::size_t kep
     }
   }
   return steps / double(points.size());
-}
-
-std::vector<Point2> SortedByX(std::vector<Point2> points)
-{
-  std::sort(
-    points.begin(), points.end(), [](const Point2& a, const Point2& b) { return a.x < b.x; });
-  return points;
 }
 
 } // namespace

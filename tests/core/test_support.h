@@ -173,6 +173,15 @@ inline std::vector<tessera::Point2> UniformPoints(std::size_t n,
   return points;
 }
 
+/// The points sorted by x (a table's rows, streamed in that order).
+inline std::vector<tessera::Point2> SortedByX(std::vector<tessera::Point2> points)
+{
+  std::sort(points.begin(),
+    points.end(),
+    [](const tessera::Point2& a, const tessera::Point2& b) { return a.x < b.x; });
+  return points;
+}
+
 /// n points on the parabola y = (2x - 1)^2 with x uniform in [0, 1), reproducible from the seed:
 /// in convex position but for rounding (of 10^6, 34 fall inside the hull).
 inline std::vector<tessera::Point2> PointsOnAParabola(std::size_t n, std::uint64_t seed)
