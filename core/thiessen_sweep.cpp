@@ -144,6 +144,45 @@ bool CircleBox(double ax,
     std::isfinite(box.YHi);
 }
 
+/// How far v lies outside [lo, hi] (0 inside).
+double DistanceOutside(double v, double lo, double hi)
+{
+  return v < lo ? lo - v : (v > hi ? v - hi : 0.0);
+}
+
+// Scans strips outward from the strips [lo, hi] already scanned, alternately right and left, while
+// the next one on a side meets the range: meetsRight(s) and meetsLeft(s) are asked before each
+// strip, since the range shrinks as the scan goes.
+template<class MeetsRight, class MeetsLeft, class Scan>
+void ScanOutward(std::int32_t lo,
+  std::int32_t hi,
+  std::int32_t stripCount,
+  const MeetsRight& meetsRight,
+  const MeetsLeft& meetsLeft,
+  const Scan& scan)
+{
+  bool goLeft = true, goRight = true;
+  while (goLeft || goRight)
+  {
+    if (goRight)
+    {
+      goRight = hi + 1 < stripCount && meetsRight(hi + 1);
+      if (goRight)
+      {
+        scan(++hi);
+      }
+    }
+    if (goLeft)
+    {
+      goLeft = lo > 0 && meetsLeft(lo - 1);
+      if (goLeft)
+      {
+        scan(--lo);
+      }
+    }
+  }
+}
+
 class Sweep
 {
 public:
@@ -190,10 +229,49 @@ private:
   };
 
   void BuildIndex();
+  void CutStrips();
+  void SortStrips();
+  void PlaceInNeighbourStrips();
+  void PlaceIn(std::int32_t from,
+    std::int32_t fromEnd,
+    std::int32_t to,
+    std::int32_t toEnd,
+    std::vector<std::int32_t>& position) const;
+  std::int32_t NearestToCorner(const Point2& v, bool& unique) const;
   void ProcessCentroid(std::int32_t a);
-  std::int32_t NearestCentroid(std::int32_t a);
+  void TakeKnownEntries(std::int32_t a);
+  void SeedStripStarts(std::int32_t a);
+  void WalkClockwise(std::int32_t a);
+  const Entry* KnownEntryFrom(std::int32_t in) const;
+  void StoreTile(std::int32_t a);
+  std::int32_t NearestCentroid(std::int32_t a) const;
+  /// The nearest centroid to A found so far, and how far a nearer one can be.
+  struct NearestSoFar
+  {
+    std::int32_t Best = kNone;
+    Point2 BestPoint;
+    double Reach = std::numeric_limits<double>::infinity();
+    void Offer(std::int32_t q, const Point2& pq, const Point2& pa);
+  };
+  void OfferStripNear(std::int32_t s,
+    std::int32_t a,
+    const Point2& pa,
+    NearestSoFar& nearest) const;
   Entry SearchAndRecord(std::int32_t cur);
   void SearchNext(std::int32_t cur);
+  void StartSearch(std::int32_t cur);
+  int DummiesInE1(std::int32_t* dummies); ///< they go to dummies; returns how many
+  void FindFirstCandidate(const std::int32_t* dummies,
+    int dummyCount,
+    std::int32_t& lo,
+    std::int32_t& hi);
+  bool StepCursors(); ///< one step of every cursor (until P is found); whether one visited
+  void BoundByDummies(const std::int32_t* dummies, int dummyCount);
+  void ScanRemainingStrips(std::int32_t lo, std::int32_t hi);
+  void ConsiderDummies(const std::int32_t* dummies, int dummyCount);
+  bool DummyOutsideRange(std::int32_t dummy) const;
+  bool StripMeetsRangeRight(std::int32_t s) const { return this->StripXLo[s] <= this->Range.XHi; }
+  bool StripMeetsRangeLeft(std::int32_t s) const { return this->StripXHi[s] >= this->Range.XLo; }
   struct Cursor
   {
     std::int32_t Strip;
@@ -203,16 +281,50 @@ private:
     std::uint32_t Version;   ///< RangeVersion the limits were computed for
   };
   Cursor MakeCursor(std::int32_t strip);
+  bool StripMissesBound(std::int32_t strip) const;
+  bool StripSegmentOutsideE1(std::int32_t strip) const;
   void LimitCursor(Cursor& c);
+  void LimitToHorizontalChord(Cursor& c);
   bool StepCursor(Cursor& c);
+  void Drain(Cursor& c)
+  {
+    while (this->StepCursor(c))
+    {
+    }
+  }
+  static bool IsExhausted(const Cursor& c) { return c.Up >= c.End && c.Down < c.Begin; }
+  static void Exhaust(Cursor& c)
+  {
+    c.Up = c.End;
+    c.Down = c.Begin - 1;
+  }
   void Visit(const StripPoint& point);
+  /// A visited centroid q (at pq) against the circle: the fast path, on the points at hand.
   void ConsiderPoint(std::int32_t q, const Point2& pq);
-  void Consider(std::int32_t q);
+  /// A dummy against the circle (exactly, on offsets from A): the last tests of a search.
+  void ConsiderDummy(std::int32_t q);
+  /// q as the search's potential neighbour P (inside > 0: in the circle through A, Cur and P, or
+  /// the first site found), a tie with it (0), or not (< 0); pq: q's point, when a centroid.
+  void TakeIfInside(std::int32_t q, int inside, const Point2* pq);
   std::int32_t LowerBound(std::int32_t begin, std::int32_t end, double y) const;
   static int OrientDummyPoint(std::int32_t dummy, const Point2& a, const Point2& q);
+  /// orient2d(A, Cur, q): E1, the half-plane searched, is where it is negative.
+  int SideOfCur(const Point2& q) const
+  {
+    return this->Cur >= 0 ? orient2d_fast(this->PA, this->PCur, q)
+                          : OrientDummyPoint(this->Cur, this->PA, q);
+  }
+  bool HasBound() const { return this->Bound.R < std::numeric_limits<double>::infinity(); }
   void UpdateBox();
   void AddRecord(std::int32_t c, std::int32_t in, std::int32_t out, std::int32_t vertex);
+  struct CircleSites;
+  CircleSites SitesOf(const std::vector<std::int32_t>& circle) const;
   Point2 FaceCentre(const std::vector<std::int32_t>& circle) const;
+  Point2 WhereBisectorMeetsSide(const Point2& p, const Point2& q, const CircleSites& sites) const;
+  void ListCircle(std::int32_t cur);
+  /// Returns whether a window side (a dummy) is on the circle.
+  bool RecordVertexForOthers(std::int32_t vertex);
+  void RecordHalfNeighbours();
 
   // Sites relative to A.
   void ApproxOffset(std::int32_t s, double& ox, double& oy) const;
@@ -404,8 +516,15 @@ int Sweep::InCircle(std::int32_t q) const
 
 void Sweep::BuildIndex()
 {
-  // About sqrt(M) strips of sqrt(M) centroids: a circle spanning a few point spacings then meets
-  // a couple of strips and a few points in each.
+  this->CutStrips();
+  this->SortStrips();
+  this->PlaceInNeighbourStrips();
+}
+
+// About sqrt(M) strips of sqrt(M) centroids: a circle spanning a few point spacings then meets a
+// couple of strips and a few points in each.
+void Sweep::CutStrips()
+{
   this->StripSize =
     std::max<std::int32_t>(4, static_cast<std::int32_t>(std::sqrt(double(this->M))));
   this->StripBegin.assign(1, 0);
@@ -426,6 +545,11 @@ void Sweep::BuildIndex()
       this->StripOf.begin() + this->StripBegin[s + 1],
       s);
   }
+}
+
+// Each strip's points by y (then x-sorted index), its bounds, and each point's place in it.
+void Sweep::SortStrips()
+{
   this->StripXLo.resize(this->StripCount);
   this->StripXHi.resize(this->StripCount);
   this->StripYLo.resize(this->StripCount);
@@ -453,32 +577,39 @@ void Sweep::BuildIndex()
     this->StripYLo[s] = this->Strip[begin].Y;
     this->StripYHi[s] = this->Strip[end - 1].Y;
   }
-  // Merge each pair of adjacent strips once (both sorted by y) to place every point in its
-  // neighbours.
+}
+
+// Merges each pair of adjacent strips once (both sorted by y) to place every point in its
+// neighbours: PositionLeft and PositionRight.
+void Sweep::PlaceInNeighbourStrips()
+{
   this->PositionLeft.assign(this->M, 0);
   this->PositionRight.assign(this->M, 0);
   for (std::int32_t s = 0; s + 1 < this->StripCount; ++s)
   {
-    const std::int32_t aBegin = this->StripBegin[s], aEnd = this->StripBegin[s + 1];
-    const std::int32_t bBegin = aEnd, bEnd = this->StripBegin[s + 2];
-    std::int32_t j = bBegin;
-    for (std::int32_t i = aBegin; i < aEnd; ++i)
+    const std::int32_t left = this->StripBegin[s], middle = this->StripBegin[s + 1];
+    const std::int32_t right = this->StripBegin[s + 2];
+    this->PlaceIn(left, middle, middle, right, this->PositionRight);
+    this->PlaceIn(middle, right, left, middle, this->PositionLeft);
+  }
+}
+
+// For each point of strip positions [from, fromEnd), the first position of [to, toEnd) whose
+// ordinate is not smaller, into position (by x-sorted index). Both ranges sorted by y.
+void Sweep::PlaceIn(std::int32_t from,
+  std::int32_t fromEnd,
+  std::int32_t to,
+  std::int32_t toEnd,
+  std::vector<std::int32_t>& position) const
+{
+  std::int32_t j = to;
+  for (std::int32_t i = from; i < fromEnd; ++i)
+  {
+    while (j < toEnd && this->Strip[j].Y < this->Strip[i].Y)
     {
-      while (j < bEnd && this->Strip[j].Y < this->Strip[i].Y)
-      {
-        ++j;
-      }
-      this->PositionRight[this->Strip[i].S] = j;
+      ++j;
     }
-    j = aBegin;
-    for (std::int32_t i = bBegin; i < bEnd; ++i)
-    {
-      while (j < aEnd && this->Strip[j].Y < this->Strip[i].Y)
-      {
-        ++j;
-      }
-      this->PositionLeft[this->Strip[i].S] = j;
-    }
+    position[this->Strip[i].S] = j;
   }
 }
 
@@ -498,6 +629,29 @@ void Sweep::AddRecord(std::int32_t c, std::int32_t in, std::int32_t out, std::in
   this->Head[c] = e;
 }
 
+/// The first centroid nearest to v (a brute-force scan: once per sweep); unique: no other is as
+/// near.
+std::int32_t Sweep::NearestToCorner(const Point2& v, bool& unique) const
+{
+  std::int32_t nearest = 0;
+  unique = true;
+  for (std::int32_t s = 1; s < this->M; ++s)
+  {
+    const int c = compare_distance_fast(
+      v, Point2{ this->Xs[s], this->Ys[s] }, Point2{ this->Xs[nearest], this->Ys[nearest] });
+    if (c < 0)
+    {
+      nearest = s;
+      unique = true;
+    }
+    else if (c == 0)
+    {
+      unique = false;
+    }
+  }
+  return nearest;
+}
+
 void Sweep::Run(const std::function<bool(double)>& progress)
 {
   this->BuildIndex();
@@ -515,22 +669,8 @@ void Sweep::Run(const std::function<bool(double)>& progress)
   // The centroid nearest the lower-left corner V0 goes first; V0 is one of its vertices, between
   // its sides on the bottom (in) and on the left (out), unless another centroid is as near.
   const Point2 v0{ this->XMin, this->YMin };
-  std::int32_t first = 0;
   bool unique = true;
-  for (std::int32_t s = 1; s < this->M; ++s)
-  {
-    const int c = compare_distance_fast(
-      v0, Point2{ this->Xs[s], this->Ys[s] }, Point2{ this->Xs[first], this->Ys[first] });
-    if (c < 0)
-    {
-      first = s;
-      unique = true;
-    }
-    else if (c == 0)
-    {
-      unique = false;
-    }
-  }
+  const std::int32_t first = this->NearestToCorner(v0, unique);
   if (unique)
   {
     this->Vertices.push_back(v0);
@@ -550,103 +690,85 @@ void Sweep::Run(const std::function<bool(double)>& progress)
   }
 }
 
-std::int32_t Sweep::NearestCentroid(std::int32_t a)
+// Any nearest centroid N shares a side of positive length with A: the midpoint of AN is nearer to
+// A and N than to any other centroid, and inside the (convex) window.
+std::int32_t Sweep::NearestCentroid(std::int32_t a) const
 {
-  // Any nearest centroid N shares a side of positive length with A: the midpoint of AN is nearer
-  // to A and N than to any other centroid, and inside the (convex) window.
-  std::int32_t best = kNone;
-  double reach = std::numeric_limits<double>::infinity();
+  NearestSoFar nearest;
   const Point2 pa{ this->Xs[a], this->Ys[a] };
-  auto visit = [&](std::int32_t q)
-  {
-    if (q == a)
-    {
-      return;
-    }
-    const Point2 pq{ this->Xs[q], this->Ys[q] };
-    if (best == kNone ||
-      compare_distance_fast(pa, pq, Point2{ this->Xs[best], this->Ys[best] }) < 0)
-    {
-      best = q;
-      const double dx = pq.x - pa.x, dy = pq.y - pa.y;
-      // (hypot where the squares underflow or overflow: points 1e-200 apart had a reach of
-      // 1e-300, which missed their nearest centroid, and the sweep failed with a logic_error)
-      const double squares = dx * dx + dy * dy;
-      const double distance =
-        squares > 1e-280 && squares < 1e280 ? std::sqrt(squares) : std::hypot(dx, dy);
-      reach = distance * (1.0 + 1e-9) + 1e-300;
-    }
-  };
+  const auto scan = [&](std::int32_t s) { this->OfferStripNear(s, a, pa, nearest); };
   const std::int32_t s0 = this->StripOf[a];
-  auto scan = [&](std::int32_t s)
+  scan(s0);
+  ScanOutward(
+    s0,
+    s0,
+    this->StripCount,
+    [&](std::int32_t s) { return this->StripXLo[s] - pa.x <= nearest.Reach; },
+    [&](std::int32_t s) { return pa.x - this->StripXHi[s] <= nearest.Reach; },
+    scan);
+  return nearest.Best;
+}
+
+void Sweep::NearestSoFar::Offer(std::int32_t q, const Point2& pq, const Point2& pa)
+{
+  if (this->Best != kNone && compare_distance_fast(pa, pq, this->BestPoint) >= 0)
   {
-    const std::int32_t begin = this->StripBegin[s];
-    const std::int32_t end = this->StripBegin[s + 1];
-    std::int32_t up = this->LowerBound(begin, end, pa.y);
-    std::int32_t down = up - 1;
-    while (up < end || down >= begin)
+    return;
+  }
+  this->Best = q;
+  this->BestPoint = pq;
+  const double dx = pq.x - pa.x, dy = pq.y - pa.y;
+  // (hypot where the squares underflow or overflow: points 1e-200 apart had a reach of 1e-300,
+  // which missed their nearest centroid, and the sweep failed with a logic_error)
+  const double squares = dx * dx + dy * dy;
+  const double distance =
+    squares > 1e-280 && squares < 1e280 ? std::sqrt(squares) : std::hypot(dx, dy);
+  this->Reach = distance * (1.0 + 1e-9) + 1e-300;
+}
+
+// Offers the points of strip s within the reach of a's ordinate, outward from it, alternately up
+// and down (the reach shrinking as nearer ones are found), those within reach in abscissa too.
+void Sweep::OfferStripNear(std::int32_t s,
+  std::int32_t a,
+  const Point2& pa,
+  NearestSoFar& nearest) const
+{
+  const std::int32_t begin = this->StripBegin[s];
+  const std::int32_t end = this->StripBegin[s + 1];
+  const auto offer = [&](const StripPoint& point)
+  {
+    if (point.S != a && std::fabs(point.X - pa.x) <= nearest.Reach)
     {
-      if (up < end)
-      {
-        if (this->Strip[up].Y - pa.y <= reach)
-        {
-          if (std::fabs(this->Strip[up].X - pa.x) <= reach)
-          {
-            visit(this->Strip[up].S);
-          }
-          ++up;
-        }
-        else
-        {
-          up = end;
-        }
-      }
-      if (down >= begin)
-      {
-        if (pa.y - this->Strip[down].Y <= reach)
-        {
-          if (std::fabs(this->Strip[down].X - pa.x) <= reach)
-          {
-            visit(this->Strip[down].S);
-          }
-          --down;
-        }
-        else
-        {
-          down = begin - 1;
-        }
-      }
+      nearest.Offer(point.S, Point2{ point.X, point.Y }, pa);
     }
   };
-  scan(s0);
-  std::int32_t lo = s0 - 1, hi = s0 + 1;
-  bool goLeft = true, goRight = true;
-  while (goLeft || goRight)
+  std::int32_t up = this->LowerBound(begin, end, pa.y);
+  std::int32_t down = up - 1;
+  while (up < end || down >= begin)
   {
-    if (goRight)
+    if (up < end)
     {
-      if (hi < this->StripCount && this->StripXLo[hi] - pa.x <= reach)
+      if (this->Strip[up].Y - pa.y <= nearest.Reach)
       {
-        scan(hi++);
+        offer(this->Strip[up++]);
       }
       else
       {
-        goRight = false;
+        up = end;
       }
     }
-    if (goLeft)
+    if (down >= begin)
     {
-      if (lo >= 0 && pa.x - this->StripXHi[lo] <= reach)
+      if (pa.y - this->Strip[down].Y <= nearest.Reach)
       {
-        scan(lo--);
+        offer(this->Strip[down--]);
       }
       else
       {
-        goLeft = false;
+        down = begin - 1;
       }
     }
   }
-  return best;
 }
 
 void Sweep::UpdateBox()
@@ -674,56 +796,45 @@ void Sweep::UpdateBox()
   }
 }
 
-void Sweep::Consider(std::int32_t q)
+void Sweep::ConsiderDummy(std::int32_t q)
 {
-  if (this->P == kNone)
-  {
-    this->P = q;
-    this->UpdateBox();
-    return;
-  }
-  const int inside = this->InCircle(q);
-  if (inside > 0)
-  {
-    ++this->Count->InCircle;
-    this->P = q;
-    this->Ties.clear();
-    this->UpdateBox();
-  }
-  else if (inside == 0)
-  {
-    // Fig. 5: on the circle, a tie. Any of the ties gives the same circle, and they are sorted
-    // round it once the search ends (the paper kept the less clockwise as P: no need).
-    ++this->Count->InCircle;
-    this->Ties.push_back(q);
-  }
+  this->TakeIfInside(q, this->P == kNone ? 1 : this->InCircle(q), nullptr);
 }
 
 void Sweep::ConsiderPoint(std::int32_t q, const Point2& pq)
 {
-  if (this->P == kNone)
+  // P is a centroid here (the dummies come last), so PP is its point; PCur is Cur's when Cur is
+  // a centroid.
+  const int inside = this->P == kNone ? 1
+    : this->Cur >= 0                  ? incircle_fast(this->PA, this->PP, this->PCur, pq)
+                                      : this->InCircle(q);
+  this->TakeIfInside(q, inside, &pq);
+}
+
+void Sweep::TakeIfInside(std::int32_t q, int inside, const Point2* pq)
+{
+  if (inside < 0)
   {
-    this->P = q;
-    this->PP = pq;
-    this->UpdateBox();
     return;
   }
-  const int inside =
-    this->Cur >= 0 ? incircle_fast(this->PA, this->PP, this->PCur, pq) : this->InCircle(q);
-  if (inside > 0)
+  if (this->P != kNone)
   {
-    ++this->Count->InCircle;
-    this->P = q;
-    this->PP = pq;
-    this->Ties.clear();
-    this->UpdateBox();
+    ++this->Count->InCircle; // (the first site found is no test)
   }
-  else if (inside == 0)
+  if (inside == 0)
   {
-    // Fig. 5: on the circle, a tie (as in Consider).
-    ++this->Count->InCircle;
+    // Fig. 5: on the circle, a tie. Any of the ties gives the same circle, and they are sorted
+    // round it once the search ends (the paper kept the less clockwise as P: no need).
     this->Ties.push_back(q);
+    return;
   }
+  this->P = q;
+  if (pq)
+  {
+    this->PP = *pq;
+  }
+  this->Ties.clear();
+  this->UpdateBox();
 }
 
 inline void Sweep::Visit(const StripPoint& point)
@@ -740,8 +851,7 @@ inline void Sweep::Visit(const StripPoint& point)
     return;
   }
   const Point2 pq{ point.X, point.Y };
-  const int side = this->Cur >= 0 ? orient2d_fast(this->PA, this->PCur, pq)
-                                  : OrientDummyPoint(this->Cur, this->PA, pq);
+  const int side = this->SideOfCur(pq);
   if (side >= 0)
   {
     return;
@@ -791,45 +901,53 @@ Sweep::Cursor Sweep::MakeCursor(std::int32_t strip)
   c.Begin = this->StripBegin[strip];
   c.End = this->StripBegin[strip + 1];
   c.Version = this->RangeVersion - 1;
-  // A strip whose points all lie on one vertical or horizontal segment (collinear input, a
-  // lattice column) is skipped when the segment is in the closed side E2 of A -> Cur: none of its
-  // points can be in E1.
-  const double xlo = this->StripXLo[strip], xhi = this->StripXHi[strip];
-  const double ylo = this->StripYLo[strip], yhi = this->StripYHi[strip];
-  // A strip whose bounding box misses the bounding disk holds no candidate (generous slack: this
-  // only prunes).
-  const Disk& d = this->Bound;
-  if (d.R < std::numeric_limits<double>::infinity())
+  if (this->StripMissesBound(strip) || this->StripSegmentOutsideE1(strip))
   {
-    const double dx = d.X < xlo ? xlo - d.X : (d.X > xhi ? d.X - xhi : 0.0);
-    const double dy = d.Y < ylo ? ylo - d.Y : (d.Y > yhi ? d.Y - yhi : 0.0);
-    if (dx * dx + dy * dy > d.R * d.R * (1.0 + 1e-9))
-    {
-      c.Up = c.End;
-      c.Down = c.Begin - 1;
-      return c;
-    }
-  }
-  if (xlo == xhi || ylo == yhi)
-  {
-    const Point2 ends[2] = { { xlo, ylo }, { xhi, yhi } };
-    bool outside = true;
-    for (const Point2& e : ends)
-    {
-      const int side = this->Cur >= 0 ? orient2d_fast(this->PA, this->PCur, e)
-                                      : OrientDummyPoint(this->Cur, this->PA, e);
-      outside = outside && side >= 0;
-    }
-    if (outside)
-    {
-      c.Up = c.End;
-      c.Down = c.Begin - 1;
-      return c;
-    }
+    Exhaust(c);
+    return c;
   }
   c.Up = this->StripStart(strip);
   c.Down = c.Up - 1;
   return c;
+}
+
+// A strip whose bounding box misses the bounding disk holds no candidate (generous slack: this
+// only prunes).
+bool Sweep::StripMissesBound(std::int32_t strip) const
+{
+  const Disk& d = this->Bound;
+  if (!this->HasBound())
+  {
+    return false;
+  }
+  const double xlo = this->StripXLo[strip], xhi = this->StripXHi[strip];
+  const double ylo = this->StripYLo[strip], yhi = this->StripYHi[strip];
+  const double dx = DistanceOutside(d.X, xlo, xhi);
+  const double dy = DistanceOutside(d.Y, ylo, yhi);
+  return dx * dx + dy * dy > d.R * d.R * (1.0 + 1e-9);
+}
+
+// A strip whose points all lie on one vertical or horizontal segment (collinear input, a lattice
+// column) is skipped when the segment is in the closed side E2 of A -> Cur: none of its points can
+// be in E1.
+bool Sweep::StripSegmentOutsideE1(std::int32_t strip) const
+{
+  const double xlo = this->StripXLo[strip], xhi = this->StripXHi[strip];
+  const double ylo = this->StripYLo[strip], yhi = this->StripYHi[strip];
+  if (xlo != xhi && ylo != yhi)
+  {
+    return false;
+  }
+  const Point2 ends[2] = { { xlo, ylo }, { xhi, yhi } };
+  for (const Point2& e : ends)
+  {
+    const int side = this->SideOfCur(e);
+    if (side < 0)
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 void Sweep::LimitCursor(Cursor& c)
@@ -841,43 +959,17 @@ void Sweep::LimitCursor(Cursor& c)
   c.YLo = this->Range.YLo;
   c.YHi = this->Range.YHi;
   const Disk& d = this->Bound;
-  if (!(d.R < std::numeric_limits<double>::infinity()))
+  if (!this->HasBound())
   {
+    return;
+  }
+  if (this->StripYLo[c.Strip] == this->StripYHi[c.Strip])
+  {
+    this->LimitToHorizontalChord(c);
     return;
   }
   const double xlo = this->StripXLo[c.Strip], xhi = this->StripXHi[c.Strip];
-  if (this->StripYLo[c.Strip] == this->StripYHi[c.Strip])
-  {
-    // All the strip's points on one horizontal line (sorted by x there): keep the chord of the
-    // disk along that line.
-    const double dy = std::fabs(this->StripYLo[c.Strip] - d.Y) * (1.0 - 1e-12);
-    if (dy > d.R)
-    {
-      c.Up = c.End;
-      c.Down = c.Begin - 1;
-      return;
-    }
-    const double w = std::sqrt((d.R - dy) * (d.R + dy)) * (1.0 + 1e-12);
-    const double slack = 1e-12 * (std::fabs(d.X) + w);
-    const double from = d.X - w - slack, to = d.X + w + slack;
-    auto byX = [](const StripPoint& p, double v) { return p.X < v; };
-    const std::int32_t first = static_cast<std::int32_t>(
-      std::lower_bound(this->Strip.begin() + c.Begin, this->Strip.begin() + c.End, from, byX) -
-      this->Strip.begin());
-    const std::int32_t last =
-      static_cast<std::int32_t>(std::upper_bound(this->Strip.begin() + c.Begin,
-                                  this->Strip.begin() + c.End,
-                                  to,
-                                  [](double v, const StripPoint& p) { return v < p.X; }) -
-        this->Strip.begin());
-    c.Begin = first;
-    c.End = last;
-    c.Up = std::max(c.Up, first);
-    c.Down = std::min(c.Down, last - 1);
-    return;
-  }
-  double dx = d.X < xlo ? xlo - d.X : (d.X > xhi ? d.X - xhi : 0.0);
-  dx *= 1.0 - 1e-12;
+  const double dx = DistanceOutside(d.X, xlo, xhi) * (1.0 - 1e-12);
   if (dx > d.R)
   {
     c.YLo = std::numeric_limits<double>::infinity();
@@ -904,11 +996,41 @@ void Sweep::LimitCursor(Cursor& c)
   }
 }
 
+// All the strip's points on one horizontal line (sorted by x there): keep the chord of the
+// bounding disk along that line.
+void Sweep::LimitToHorizontalChord(Cursor& c)
+{
+  const Disk& d = this->Bound;
+  const double dy = std::fabs(this->StripYLo[c.Strip] - d.Y) * (1.0 - 1e-12);
+  if (dy > d.R)
+  {
+    Exhaust(c);
+    return;
+  }
+  const double w = std::sqrt((d.R - dy) * (d.R + dy)) * (1.0 + 1e-12);
+  const double slack = 1e-12 * (std::fabs(d.X) + w);
+  const double from = d.X - w - slack, to = d.X + w + slack;
+  auto byX = [](const StripPoint& p, double v) { return p.X < v; };
+  const std::int32_t first = static_cast<std::int32_t>(
+    std::lower_bound(this->Strip.begin() + c.Begin, this->Strip.begin() + c.End, from, byX) -
+    this->Strip.begin());
+  const std::int32_t last =
+    static_cast<std::int32_t>(std::upper_bound(this->Strip.begin() + c.Begin,
+                                this->Strip.begin() + c.End,
+                                to,
+                                [](double v, const StripPoint& p) { return v < p.X; }) -
+      this->Strip.begin());
+  c.Begin = first;
+  c.End = last;
+  c.Up = std::max(c.Up, first);
+  c.Down = std::min(c.Down, last - 1);
+}
+
 bool Sweep::StepCursor(Cursor& c)
 {
   // One point up and one point down from A's ordinate, while inside the (shrinking) range. (An
   // exhausted cursor first: limiting one cost two binary searches for nothing.)
-  if (c.Up >= c.End && c.Down < c.Begin)
+  if (IsExhausted(c))
   {
     return false;
   }
@@ -946,6 +1068,22 @@ bool Sweep::StepCursor(Cursor& c)
 
 void Sweep::SearchNext(std::int32_t cur)
 {
+  this->StartSearch(cur);
+  // The dummies in E1 (there is always one). The paper starts from one of them as the first
+  // potential neighbour; here their circles first only bound the range (a dummy's circle is
+  // large for a centroid far from the border), the centroids are searched, and the dummies are
+  // tested last, exactly like any point. The result is the same: the sites on the smallest circle
+  // (P and its ties, sorted round it afterwards), whatever the order of the tests.
+  std::int32_t dummies[4];
+  const int dummyCount = this->DummiesInE1(dummies);
+  std::int32_t lo = this->StripOf[this->A], hi = lo; // the strips begun
+  this->FindFirstCandidate(dummies, dummyCount, lo, hi);
+  this->ScanRemainingStrips(lo, hi);
+  this->ConsiderDummies(dummies, dummyCount);
+}
+
+void Sweep::StartSearch(std::int32_t cur)
+{
   this->Cur = cur;
   if (cur >= 0)
   {
@@ -957,171 +1095,179 @@ void Sweep::SearchNext(std::int32_t cur)
   this->Bound = Disk{};
   ++this->RangeVersion;
   ++this->Count->Searches;
-  // The dummies in E1 (there is always one). The paper starts from one of them as the first
-  // potential neighbour; here their circles first only bound the range (a dummy's circle is
-  // large for a centroid far from the border), the centroids are searched, and the dummies are
-  // tested last, exactly like any point. The result is the same: the sites on the smallest circle
-  // (P and its ties, sorted round it afterwards), whatever the order of the tests.
-  std::int32_t dummies[4];
-  int dummyCount = 0;
+}
+
+int Sweep::DummiesInE1(std::int32_t* dummies)
+{
+  int count = 0;
   for (const std::int32_t d : { kLeft, kBottom, kRight, kTop })
   {
-    if (d == cur)
+    if (d == this->Cur)
     {
       continue;
     }
     ++this->Count->Consulted;
-    if (this->Orient(cur, d) < 0)
+    if (this->Orient(this->Cur, d) < 0)
     {
       ++this->Count->PassedTests;
-      dummies[dummyCount++] = d;
+      dummies[count++] = d;
     }
   }
-  if (dummyCount == 0)
+  if (count == 0)
   {
     throw std::logic_error("Brassel-Reif sweep: no dummy point in the clockwise half-plane");
   }
-  // Until a first centroid of E1 is found there is no range: step outward in A's strip, and
-  // widen to the neighbouring strips round by round (A's strip may hold none: a lattice column
-  // when Cur is straight above A). After two rounds the dummies' circles bound the range, so that
-  // a centroid with no point of E1 nearby does not scan everything.
-  const std::int32_t s0 = this->StripOf[this->A];
-  this->Cursors.assign(1, this->MakeCursor(s0));
-  std::int32_t lo = s0, hi = s0;
+  return count;
+}
+
+// Until a first centroid of E1 is found there is no range: step outward in A's strip, and widen
+// to the neighbouring strips round by round (A's strip may hold none: a lattice column when Cur is
+// straight above A). After two rounds the dummies' circles bound the range, so that a centroid
+// with no point of E1 nearby does not scan everything. [lo, hi]: the strips begun (A's on entry).
+void Sweep::FindFirstCandidate(const std::int32_t* dummies,
+  int dummyCount,
+  std::int32_t& lo,
+  std::int32_t& hi)
+{
+  this->Cursors.assign(1, this->MakeCursor(lo));
   bool bounded = false;
-  auto bound = [&]()
-  {
-    for (int k = 0; k < dummyCount; ++k)
-    {
-      this->P = dummies[k];
-      this->UpdateBox();
-    }
-    this->P = kNone;
-    bounded = true;
-  };
   for (int round = 1; this->P == kNone; ++round)
   {
-    bool visited = false;
-    for (std::size_t k = 0; k < this->Cursors.size() && this->P == kNone;)
-    {
-      Cursor& c = this->Cursors[k];
-      visited = this->StepCursor(c) || visited;
-      if (c.Up >= c.End && c.Down < c.Begin)
-      {
-        c = this->Cursors.back(); // exhausted: drop it
-        this->Cursors.pop_back();
-      }
-      else
-      {
-        ++k;
-      }
-    }
+    const bool visited = this->StepCursors();
     if (this->P != kNone)
     {
       break;
     }
     bool widened = false;
-    if (hi + 1 < this->StripCount && this->StripXLo[hi + 1] <= this->Range.XHi)
+    if (hi + 1 < this->StripCount && this->StripMeetsRangeRight(hi + 1))
     {
       this->Cursors.push_back(this->MakeCursor(++hi));
       widened = true;
     }
-    if (lo > 0 && this->StripXHi[lo - 1] >= this->Range.XLo)
+    if (lo > 0 && this->StripMeetsRangeLeft(lo - 1))
     {
       this->Cursors.push_back(this->MakeCursor(--lo));
       widened = true;
     }
-    if (!bounded && (round >= 2 || (!visited && !widened)))
+    const bool stalled = !visited && !widened;
+    if (!bounded && (round >= 2 || stalled))
     {
-      bound();
+      this->BoundByDummies(dummies, dummyCount);
+      bounded = true;
     }
-    else if (!visited && !widened)
+    else if (stalled)
     {
       break; // no centroid of E1 within the dummies' circles
     }
   }
-  // With a potential neighbour: finish the strips begun, then go outward, alternately right and
-  // left, while the strips meet the abscissa range.
-  for (std::size_t k = 0; k < this->Cursors.size(); ++k)
+}
+
+bool Sweep::StepCursors()
+{
+  bool visited = false;
+  for (std::size_t k = 0; k < this->Cursors.size() && this->P == kNone;)
   {
-    while (this->StepCursor(this->Cursors[k]))
+    Cursor& c = this->Cursors[k];
+    visited = this->StepCursor(c) || visited;
+    if (IsExhausted(c))
     {
+      c = this->Cursors.back(); // drop it
+      this->Cursors.pop_back();
+    }
+    else
+    {
+      ++k;
     }
   }
-  bool goLeft = true, goRight = true;
-  while (goLeft || goRight)
-  {
-    if (goRight)
-    {
-      if (hi + 1 < this->StripCount && this->StripXLo[hi + 1] <= this->Range.XHi)
-      {
-        Cursor c = this->MakeCursor(++hi);
-        while (this->StepCursor(c))
-        {
-        }
-      }
-      else
-      {
-        goRight = false;
-      }
-    }
-    if (goLeft)
-    {
-      if (lo > 0 && this->StripXHi[lo - 1] >= this->Range.XLo)
-      {
-        Cursor c = this->MakeCursor(--lo);
-        while (this->StepCursor(c))
-        {
-        }
-      }
-      else
-      {
-        goLeft = false;
-      }
-    }
-  }
+  return visited;
+}
+
+// The range narrowed to the dummies' circles: each dummy is P just long enough for UpdateBox,
+// and P is none again after, so that the search goes on for a centroid.
+void Sweep::BoundByDummies(const std::int32_t* dummies, int dummyCount)
+{
   for (int k = 0; k < dummyCount; ++k)
   {
-    if (this->P != kNone)
+    this->P = dummies[k];
+    this->UpdateBox();
+  }
+  this->P = kNone;
+}
+
+// Finishes the strips begun, then goes outward, alternately right and left, while the strips meet
+// the abscissa range (with a potential neighbour, the range of its circle; without one, that of
+// the dummies' circles).
+void Sweep::ScanRemainingStrips(std::int32_t lo, std::int32_t hi)
+{
+  for (Cursor& c : this->Cursors)
+  {
+    this->Drain(c);
+  }
+  ScanOutward(
+    lo,
+    hi,
+    this->StripCount,
+    [this](std::int32_t s) { return this->StripMeetsRangeRight(s); },
+    [this](std::int32_t s) { return this->StripMeetsRangeLeft(s); },
+    [this](std::int32_t s)
     {
-      // A dummy outside the range is outside the circle: skip the exact test. (Its rounded
-      // position is within an ulp or two of the exact reflection.)
-      double ox, oy;
-      this->ApproxOffset(dummies[k], ox, oy);
-      const double x = this->PA.x + ox, y = this->PA.y + oy;
-      const double margin =
-        4.0 * kUnit * (std::fabs(x) + std::fabs(y) + std::fabs(ox) + std::fabs(oy));
-      if (x < this->Range.XLo - margin || x > this->Range.XHi + margin ||
-        y < this->Range.YLo - margin || y > this->Range.YHi + margin)
-      {
-        continue;
-      }
+      Cursor c = this->MakeCursor(s);
+      this->Drain(c);
+    });
+}
+
+void Sweep::ConsiderDummies(const std::int32_t* dummies, int dummyCount)
+{
+  for (int k = 0; k < dummyCount; ++k)
+  {
+    if (this->P != kNone && this->DummyOutsideRange(dummies[k]))
+    {
+      continue; // outside the circle: no exact test
     }
-    this->Consider(dummies[k]);
+    this->ConsiderDummy(dummies[k]);
   }
 }
 
-Point2 Sweep::FaceCentre(const std::vector<std::int32_t>& circle) const
+// Whether the dummy's rounded position (within an ulp or two of the exact reflection) lies beyond
+// the range by more than its rounding: then it is outside the circle.
+bool Sweep::DummyOutsideRange(std::int32_t dummy) const
 {
-  bool vertical = false, horizontal = false;
-  double xSide = 0.0, ySide = 0.0;
-  std::int32_t first[3] = { kNone, kNone, kNone }; // the first centroids by ComesFirst
+  double ox, oy;
+  this->ApproxOffset(dummy, ox, oy);
+  const double x = this->PA.x + ox, y = this->PA.y + oy;
+  const double margin = 4.0 * kUnit * (std::fabs(x) + std::fabs(y) + std::fabs(ox) + std::fabs(oy));
+  return x < this->Range.XLo - margin || x > this->Range.XHi + margin ||
+    y < this->Range.YLo - margin || y > this->Range.YHi + margin;
+}
+
+// What FaceCentre needs of a circle's sites: the window sides among them (dummies), and the
+// first three centroids by ComesFirst.
+struct Sweep::CircleSites
+{
+  bool Vertical = false, Horizontal = false;
+  double XSide = 0.0, YSide = 0.0;
+  std::int32_t First[3] = { kNone, kNone, kNone };
+};
+
+Sweep::CircleSites Sweep::SitesOf(const std::vector<std::int32_t>& circle) const
+{
+  CircleSites sites;
   for (const std::int32_t s : circle)
   {
     if (s == kLeft || s == kRight)
     {
-      vertical = true;
-      xSide = s == kLeft ? this->XMin : this->XMax;
+      sites.Vertical = true;
+      sites.XSide = s == kLeft ? this->XMin : this->XMax;
     }
     else if (s == kBottom || s == kTop)
     {
-      horizontal = true;
-      ySide = s == kBottom ? this->YMin : this->YMax;
+      sites.Horizontal = true;
+      sites.YSide = s == kBottom ? this->YMin : this->YMax;
     }
     else
     {
-      std::int32_t c = s;
-      for (std::int32_t& slot : first)
+      std::int32_t c = s; // insertion into First
+      for (std::int32_t& slot : sites.First)
       {
         if (slot == kNone ||
           ComesFirst({ this->Xs[c], this->Ys[c] }, { this->Xs[slot], this->Ys[slot] }))
@@ -1135,37 +1281,67 @@ Point2 Sweep::FaceCentre(const std::vector<std::int32_t>& circle) const
       }
     }
   }
-  if (vertical && horizontal)
+  return sites;
+}
+
+Point2 Sweep::FaceCentre(const std::vector<std::int32_t>& circle) const
+{
+  const CircleSites sites = this->SitesOf(circle);
+  if (sites.Vertical && sites.Horizontal)
   {
-    return { xSide, ySide }; // a window corner
+    return { sites.XSide, sites.YSide }; // a window corner
   }
-  const Point2 p{ this->Xs[first[0]], this->Ys[first[0]] };
-  if (vertical || horizontal)
+  // Not a corner: at least two centroids besides the one side, or three without a side.
+  const Point2 p{ this->Xs[sites.First[0]], this->Ys[sites.First[0]] };
+  const Point2 q{ this->Xs[sites.First[1]], this->Ys[sites.First[1]] };
+  if (sites.Vertical || sites.Horizontal)
   {
-    // Where the bisector of the first two centroids crosses the side.
-    const Point2 q{ this->Xs[first[1]], this->Ys[first[1]] };
-    if (vertical)
-    {
-      const double y =
-        0.5 * (p.y + q.y) + (q.x - p.x) * ((xSide - p.x) + (xSide - q.x)) / (2.0 * (p.y - q.y));
-      return { xSide, std::min(std::max(y, this->YMin), this->YMax) };
-    }
-    const double x =
-      0.5 * (p.x + q.x) + (q.y - p.y) * ((ySide - p.y) + (ySide - q.y)) / (2.0 * (p.x - q.x));
-    return { std::min(std::max(x, this->XMin), this->XMax), ySide };
+    return this->WhereBisectorMeetsSide(p, q, sites);
   }
   // From the first three points by ComesFirst, as tiles.cpp computes it (circumcentre.h), so
   // that interior vertices get the same bits from both engines.
-  return CircumcentreOf(p,
-    Point2{ this->Xs[first[1]], this->Ys[first[1]] },
-    Point2{ this->Xs[first[2]], this->Ys[first[2]] });
+  return CircumcentreOf(p, q, Point2{ this->Xs[sites.First[2]], this->Ys[sites.First[2]] });
+}
+
+// Where the bisector of centroids p and q crosses the one window side among the sites (a circle
+// through a side's dummy holds at least two centroids besides it).
+Point2 Sweep::WhereBisectorMeetsSide(const Point2& p,
+  const Point2& q,
+  const CircleSites& sites) const
+{
+  if (sites.Vertical)
+  {
+    const double y = 0.5 * (p.y + q.y) +
+      (q.x - p.x) * ((sites.XSide - p.x) + (sites.XSide - q.x)) / (2.0 * (p.y - q.y));
+    return { sites.XSide, std::min(std::max(y, this->YMin), this->YMax) };
+  }
+  const double x = 0.5 * (p.x + q.x) +
+    (q.y - p.y) * ((sites.YSide - p.y) + (sites.YSide - q.y)) / (2.0 * (p.x - q.x));
+  return { std::min(std::max(x, this->XMin), this->XMax), sites.YSide };
 }
 
 Sweep::Entry Sweep::SearchAndRecord(std::int32_t cur)
 {
   this->SearchNext(cur);
-  // The sites on the circle in E1, clockwise around A from Cur; then the circle anticlockwise:
-  // A, the most clockwise (A's next neighbour), ..., the least clockwise, Cur.
+  this->ListCircle(cur);
+  const std::int32_t vertex = static_cast<std::int32_t>(this->Vertices.size());
+  this->Vertices.push_back(this->FaceCentre(this->Circle));
+  const bool dummies = this->RecordVertexForOthers(vertex);
+  if (this->Circle.size() >= 4)
+  {
+    ++this->DegenerateVertices;
+    if (!dummies)
+    {
+      this->RecordHalfNeighbours();
+    }
+  }
+  return Entry{ cur, this->Circle[1], vertex, -1 };
+}
+
+// The sites on the circle in E1, clockwise around A from Cur; then the circle anticlockwise into
+// Circle: A, the most clockwise (A's next neighbour), ..., the least clockwise, Cur.
+void Sweep::ListCircle(std::int32_t cur)
+{
   this->Members.assign(1, this->P);
   this->Members.insert(this->Members.end(), this->Ties.begin(), this->Ties.end());
   if (this->Members.size() > 1)
@@ -1177,9 +1353,11 @@ Sweep::Entry Sweep::SearchAndRecord(std::int32_t cur)
   this->Circle.assign(1, this->A);
   this->Circle.insert(this->Circle.end(), this->Members.rbegin(), this->Members.rend());
   this->Circle.push_back(cur);
+}
 
-  const std::int32_t vertex = static_cast<std::int32_t>(this->Vertices.size());
-  this->Vertices.push_back(this->FaceCentre(this->Circle));
+// The vertex's entry (in, out) for each centroid on the circle but A; whether a dummy is on it.
+bool Sweep::RecordVertexForOthers(std::int32_t vertex)
+{
   const std::size_t m = this->Circle.size();
   bool dummies = false;
   for (std::size_t i = 1; i < m; ++i)
@@ -1198,27 +1376,26 @@ Sweep::Entry Sweep::SearchAndRecord(std::int32_t cur)
     }
     this->AddRecord(c, this->Circle[i - 1], this->Circle[(i + 1) % m], vertex);
   }
-  if (m >= 4)
+  return dummies;
+}
+
+// Sites not adjacent around a circle of four or more centroids meet at its vertex only:
+// half-neighbours.
+void Sweep::RecordHalfNeighbours()
+{
+  const std::size_t m = this->Circle.size();
+  for (std::size_t i = 0; i < m; ++i)
   {
-    ++this->DegenerateVertices;
-    if (!dummies)
+    for (std::size_t j = i + 2; j < m; ++j)
     {
-      // Sites not adjacent around the circle meet at this vertex only: half-neighbours.
-      for (std::size_t i = 0; i < m; ++i)
+      if (i == 0 && j == m - 1)
       {
-        for (std::size_t j = i + 2; j < m; ++j)
-        {
-          if (i == 0 && j == m - 1)
-          {
-            continue;
-          }
-          const std::int32_t p = this->Circle[i], q = this->Circle[j];
-          this->Kind1.emplace_back(std::min(p, q), std::max(p, q));
-        }
+        continue;
       }
+      const std::int32_t p = this->Circle[i], q = this->Circle[j];
+      this->Kind1.emplace_back(std::min(p, q), std::max(p, q));
     }
   }
-  return Entry{ cur, this->Circle[1], vertex, -1 };
 }
 
 void Sweep::ProcessCentroid(std::int32_t a)
@@ -1226,30 +1403,51 @@ void Sweep::ProcessCentroid(std::int32_t a)
   this->A = a;
   this->PA = Point2{ this->Xs[a], this->Ys[a] };
   this->Count = &this->Records[a].Counts;
+  this->TakeKnownEntries(a);
+  this->SeedStripStarts(a);
+  this->WalkClockwise(a);
+  this->StoreTile(a);
+  this->Processed[a] = 1;
+}
+
+// The entries other centroids recorded for a, into Known; the record is dropped and its entries
+// recycled.
+void Sweep::TakeKnownEntries(std::int32_t a)
+{
   this->Known.clear();
   for (std::int32_t e = this->Head[a]; e >= 0;)
   {
     const std::int32_t next = this->Pool[e].Next;
     this->Known.push_back(this->Pool[e]);
-    this->Pool[e].Next = this->FreeEntry; // the record is dropped: its entries are recycled
+    this->Pool[e].Next = this->FreeEntry;
     this->FreeEntry = e;
     e = next;
   }
   this->Head[a] = -1;
-  {
-    const std::int32_t strip = this->StripOf[a];
-    this->NewStripStarts();
-    this->SetStripStart(strip, this->PositionInStrip[a]);
-    if (strip > 0)
-    {
-      this->SetStripStart(strip - 1, this->PositionLeft[a]);
-    }
-    if (strip + 1 < this->StripCount)
-    {
-      this->SetStripStart(strip + 1, this->PositionRight[a]);
-    }
-  }
+}
 
+// Where a's ordinate falls in its strip and its two neighbours, known from the index.
+void Sweep::SeedStripStarts(std::int32_t a)
+{
+  const std::int32_t strip = this->StripOf[a];
+  this->NewStripStarts();
+  this->SetStripStart(strip, this->PositionInStrip[a]);
+  if (strip > 0)
+  {
+    this->SetStripStart(strip - 1, this->PositionLeft[a]);
+  }
+  if (strip + 1 < this->StripCount)
+  {
+    this->SetStripStart(strip + 1, this->PositionRight[a]);
+  }
+}
+
+// a's vertices clockwise into Cycle, each (in, out, vertex): from its known entries where they go
+// on, by searches where they do not, until the walk comes back to its first vertex. Without
+// known entries the walk starts from the nearest centroid, a neighbour (from the left side when a
+// is the only centroid).
+void Sweep::WalkClockwise(std::int32_t a)
+{
   this->Cycle.clear();
   std::int32_t cur;
   std::int32_t firstVertex = -1;
@@ -1266,44 +1464,43 @@ void Sweep::ProcessCentroid(std::int32_t a)
   const std::size_t limit = 16 + 4 * std::size_t(this->M);
   while (true)
   {
-    const Entry* known = nullptr;
-    for (const Entry& e : this->Known)
+    const Entry* known = this->KnownEntryFrom(cur);
+    if (known != nullptr && known->Vertex == firstVertex)
     {
-      if (e.In == cur)
-      {
-        known = &e;
-        break;
-      }
+      break;
     }
-    if (known != nullptr)
+    const Entry next = known != nullptr ? *known : this->SearchAndRecord(cur);
+    if (firstVertex < 0) // (only after a search: known entries set firstVertex at the start)
     {
-      if (known->Vertex == firstVertex)
-      {
-        break;
-      }
-      this->Cycle.push_back(*known);
-      cur = known->Out;
+      firstVertex = next.Vertex;
+      this->Known.push_back(next); // so that the walk recognises where it closes
     }
-    else
-    {
-      const Entry found = this->SearchAndRecord(cur);
-      if (firstVertex < 0)
-      {
-        firstVertex = found.Vertex;
-        this->Known.push_back(found); // so that the walk recognises where it closes
-      }
-      this->Cycle.push_back(found);
-      cur = found.Out;
-    }
+    this->Cycle.push_back(next);
+    cur = next.Out;
     if (this->Cycle.size() > limit)
     {
       throw std::logic_error("Brassel-Reif sweep: the polygon of point " +
         std::to_string(this->IdOf[a]) + " does not close");
     }
   }
+}
 
-  // The walk went clockwise: store anticlockwise. Vertex k is followed (anticlockwise) by the
-  // side shared with the `in` neighbour of its entry.
+const Sweep::Entry* Sweep::KnownEntryFrom(std::int32_t in) const
+{
+  for (const Entry& e : this->Known)
+  {
+    if (e.In == in)
+    {
+      return &e;
+    }
+  }
+  return nullptr;
+}
+
+// The walk went clockwise: stored anticlockwise. Vertex k is followed (anticlockwise) by the side
+// shared with the `in` neighbour of its entry.
+void Sweep::StoreTile(std::int32_t a)
+{
   TileRecord& record = this->Records[a];
   record.Start = static_cast<std::int64_t>(this->PackedVertexIds.size());
   record.Size = static_cast<std::int32_t>(this->Cycle.size());
@@ -1316,7 +1513,6 @@ void Sweep::ProcessCentroid(std::int32_t a)
     this->Polygon.push_back(this->Vertices[e.Vertex]);
   }
   record.Area = CompensatedPolygonArea(this->Polygon.data(), this->Polygon.size());
-  this->Processed[a] = 1;
 }
 
 /// Renumbers the corners' Thiessen vertices (ids below vertexCount) from 0 in the order they first
@@ -1493,9 +1689,11 @@ int SweepScale(const Box2& bounds, const std::vector<Point2>& points)
   return scale;
 }
 
-ThiessenSweepResult ComputeThiessenSweep(const Window& window,
-  const std::vector<Point2>& points,
-  const std::function<bool(double)>& progress)
+namespace
+{
+
+/// The checks ComputeThiessenSweep makes before it looks at a point's place.
+void CheckSweepable(const Window& window, const std::vector<Point2>& points)
 {
   const std::string notRectangle = WhyNotAnAxisAlignedRectangle(window);
   if (!notRectangle.empty())
@@ -1504,29 +1702,21 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window,
       "the Brassel-Reif sweep needs an axis-aligned rectangular window: " + notRectangle);
   }
   CheckSidesAreDoubles(window);
-  const Box2 bounds = BoundsOf(window.Vertices().data(), window.Vertices().size());
-  const double xmin = bounds.XMin, xmax = bounds.XMax, ymin = bounds.YMin, ymax = bounds.YMax;
   if (points.size() >= std::size_t(std::numeric_limits<std::int32_t>::max() / 4))
   {
     throw InputError(
       "too many points for the Brassel-Reif sweep: " + std::to_string(points.size()));
   }
   CheckPointsAreFinite(points);
+}
 
-  ThiessenSweepResult result;
-  // Inside test exactly as the window's (strict); then sort by (x, y, id).
-  struct Keyed
-  {
-    double X, Y;
-    std::int32_t Id;
-  };
-  std::vector<Keyed> keyed;
-  keyed.reserve(points.size());
-  const int scale = SweepScale(bounds, points);
-  const Box2 scaled{ std::ldexp(xmin, scale),
-    std::ldexp(xmax, scale),
-    std::ldexp(ymin, scale),
-    std::ldexp(ymax, scale) };
+/// The window's bounds scaled by 2^scale, which must leave room for the reflections.
+Box2 ScaledBounds(const Box2& bounds, int scale)
+{
+  const Box2 scaled{ std::ldexp(bounds.XMin, scale),
+    std::ldexp(bounds.XMax, scale),
+    std::ldexp(bounds.YMin, scale),
+    std::ldexp(bounds.YMax, scale) };
   // (overflowing, the dummy points left the sweep without one, a logic_error)
   if (!(scaled.LargestMagnitude() < ReflectionReach))
   {
@@ -1536,6 +1726,25 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window,
       " (beyond some 4e307) that cannot be scaled down exactly with its points (numbers below "
       "some 1e-308 among them): scale them down (the filter vtkDirichletTessellation does)");
   }
+  return scaled;
+}
+
+/// An accepted point, scaled, with its id; the sweep takes them by (x, y, id).
+struct KeyedPoint
+{
+  double X, Y;
+  std::int32_t Id;
+};
+
+/// The points strictly inside the window (its own test), scaled by 2^scale; the others' ids go to
+/// rejected, ascending.
+std::vector<KeyedPoint> KeepInside(const Box2& bounds,
+  int scale,
+  const std::vector<Point2>& points,
+  std::vector<std::int32_t>& rejected)
+{
+  std::vector<KeyedPoint> keyed;
+  keyed.reserve(points.size());
   for (std::size_t i = 0; i < points.size(); ++i)
   {
     const Point2& p = points[i];
@@ -1546,85 +1755,83 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window,
     }
     else
     {
-      result.RejectedIds.push_back(static_cast<std::int32_t>(i));
+      rejected.push_back(static_cast<std::int32_t>(i));
     }
   }
+  return keyed;
+}
+
+/// Sorts by (x, y, id): buckets by abscissa over [xmin, xmax] (a monotone function of x), then
+/// each bucket sorted.
+void SortByAbscissa(std::vector<KeyedPoint>& keyed, double xmin, double xmax)
+{
+  const auto less = [](const KeyedPoint& p, const KeyedPoint& q)
+  { return p.X < q.X || (p.X == q.X && (p.Y < q.Y || (p.Y == q.Y && p.Id < q.Id))); };
+  const std::size_t buckets =
+    std::max<std::size_t>(1, std::min<std::size_t>(4096, keyed.size() / 64));
+  const double perUnit = double(buckets) / (xmax - xmin);
+  const auto bucketOf = [&](double x)
   {
-    // Bucket sort: buckets by abscissa (a monotone function of x), then each bucket sorted.
-    auto less = [](const Keyed& p, const Keyed& q)
-    { return p.X < q.X || (p.X == q.X && (p.Y < q.Y || (p.Y == q.Y && p.Id < q.Id))); };
-    const std::size_t buckets =
-      std::max<std::size_t>(1, std::min<std::size_t>(4096, keyed.size() / 64));
-    // Keys are scaled by 2^scale, so the bucket range must be too.
-    const double keyMin = scaled.XMin;
-    const double keyMax = scaled.XMax;
-    const double perUnit = double(buckets) / (keyMax - keyMin);
-    auto bucketOf = [&](double x)
-    {
-      const double b = std::floor((x - keyMin) * perUnit);
-      return b <= 0.0 ? std::size_t(0) : std::min(buckets - 1, std::size_t(b));
-    };
-    std::vector<std::size_t> start(buckets + 1, 0);
-    for (const Keyed& k : keyed)
-    {
-      ++start[bucketOf(k.X) + 1];
-    }
-    for (std::size_t b = 0; b < buckets; ++b)
-    {
-      start[b + 1] += start[b];
-    }
-    std::vector<Keyed> sorted(keyed.size());
-    std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-    for (const Keyed& k : keyed)
-    {
-      sorted[fill[bucketOf(k.X)]++] = k;
-    }
-    for (std::size_t b = 0; b < buckets; ++b)
-    {
-      std::sort(sorted.begin() + start[b], sorted.begin() + start[b + 1], less);
-    }
-    keyed.swap(sorted);
+    const double b = std::floor((x - xmin) * perUnit);
+    return b <= 0.0 ? std::size_t(0) : std::min(buckets - 1, std::size_t(b));
+  };
+  std::vector<std::size_t> start(buckets + 1, 0);
+  for (const KeyedPoint& k : keyed)
+  {
+    ++start[bucketOf(k.X) + 1];
   }
-  std::vector<double> xs, ys;
-  std::vector<std::int32_t> ids;
-  xs.reserve(keyed.size());
-  ys.reserve(keyed.size());
-  ids.reserve(keyed.size());
-  for (const Keyed& k : keyed)
+  for (std::size_t b = 0; b < buckets; ++b)
   {
-    if (!ids.empty() && xs.back() == k.X && ys.back() == k.Y)
+    start[b + 1] += start[b];
+  }
+  std::vector<KeyedPoint> sorted(keyed.size());
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (const KeyedPoint& k : keyed)
+  {
+    sorted[fill[bucketOf(k.X)]++] = k;
+  }
+  for (std::size_t b = 0; b < buckets; ++b)
+  {
+    std::sort(sorted.begin() + start[b], sorted.begin() + start[b + 1], less);
+  }
+  keyed.swap(sorted);
+}
+
+/// The sweep's centroids: the sorted points without repeats (each repeat's (id, kept id) goes to
+/// duplicates, ascending).
+struct Centroids
+{
+  std::vector<double> Xs, Ys;
+  std::vector<std::int32_t> Ids;
+};
+
+Centroids WithoutRepeats(const std::vector<KeyedPoint>& keyed,
+  std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates)
+{
+  Centroids c;
+  c.Xs.reserve(keyed.size());
+  c.Ys.reserve(keyed.size());
+  c.Ids.reserve(keyed.size());
+  for (const KeyedPoint& k : keyed)
+  {
+    if (!c.Ids.empty() && c.Xs.back() == k.X && c.Ys.back() == k.Y)
     {
-      result.Duplicates.emplace_back(k.Id, ids.back());
+      duplicates.emplace_back(k.Id, c.Ids.back());
       continue;
     }
-    xs.push_back(k.X);
-    ys.push_back(k.Y);
-    ids.push_back(k.Id);
+    c.Xs.push_back(k.X);
+    c.Ys.push_back(k.Y);
+    c.Ids.push_back(k.Id);
   }
-  keyed = std::vector<Keyed>();
-  std::sort(result.Duplicates.begin(), result.Duplicates.end());
+  std::sort(duplicates.begin(), duplicates.end());
+  return c;
+}
 
-  Sweep sweep(scaled.XMin,
-    scaled.XMax,
-    scaled.YMin,
-    scaled.YMax,
-    std::move(xs),
-    std::move(ys),
-    std::move(ids));
-  sweep.Run(progress);
-  result.VertexCount = sweep.Vertices.size();
-  result.DegenerateVertexCount = sweep.DegenerateVertices;
-
-  // Output in ascending id: gather each tile's packed record (prefetched ahead, since the
-  // x-sorted and the id orders are unrelated) and append sequentially.
+/// The half-neighbours as (i, j) point ids, i < j, sorted.
+std::vector<std::pair<std::int32_t, std::int32_t>> HalfNeighbourIds(const Sweep& sweep)
+{
   const std::vector<std::int32_t>& idOf = sweep.Ids();
-  const std::size_t accepted = idOf.size();
-  std::vector<std::int32_t> sortedOf(points.size(), -1);
-  for (std::size_t s = 0; s < accepted; ++s)
-  {
-    sortedOf[idOf[s]] = static_cast<std::int32_t>(s);
-  }
-  std::vector<std::pair<std::int32_t, std::int32_t>> half; // (i, j) ids, i < j, sorted
+  std::vector<std::pair<std::int32_t, std::int32_t>> half;
   half.reserve(sweep.Kind1.size());
   for (const auto& pair : sweep.Kind1)
   {
@@ -1632,105 +1839,191 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window,
     half.emplace_back(std::min(i, j), std::max(i, j));
   }
   std::sort(half.begin(), half.end());
+  return half;
+}
 
-  TileSet& tiles = result.Tiles;
-  ContiguityGraph& graph = result.Contiguities;
-  tiles.PointIds.reserve(accepted);
-  tiles.Offsets.reserve(accepted + 1);
-  tiles.Vertices.reserve(sweep.PackedVertexIds.size());
-  tiles.Areas.reserve(accepted);
-  tiles.NeighborCounts.reserve(accepted);
-  result.Counts.reserve(accepted);
-  graph.Pairs.reserve(sweep.PackedNeighbors.size() + 2 * half.size());
-  graph.Kinds.reserve(sweep.PackedNeighbors.size() / 2 + half.size());
-  tiles.Offsets.push_back(0);
-  std::vector<std::pair<std::int32_t, std::uint8_t>> group;
-  std::size_t nextHalf = 0;
-  std::vector<std::int32_t> acceptedIds;
-  acceptedIds.reserve(accepted);
-  for (std::size_t id = 0; id < points.size(); ++id)
+/// Gathers the sweep's tiles, in ascending id, into the result: its records are in x-sorted
+/// order, unrelated to the ids, so each is prefetched ahead and appended sequentially.
+class TileGatherer
+{
+public:
+  TileGatherer(const Sweep& sweep, std::size_t pointCount, int scale)
+    : S(sweep)
+    , Scale(scale)
+    , SortedOf(pointCount, -1)
+    , Half(HalfNeighbourIds(sweep))
   {
-    if (sortedOf[id] >= 0)
+    const std::vector<std::int32_t>& idOf = sweep.Ids();
+    for (std::size_t s = 0; s < idOf.size(); ++s)
     {
-      acceptedIds.push_back(static_cast<std::int32_t>(id));
+      this->SortedOf[idOf[s]] = static_cast<std::int32_t>(s);
     }
-  }
-  // Three stages of prefetching: a tile's record, then its vertex ids and neighbours, then its
-  // vertices' coordinates.
-  constexpr std::size_t kAhead = 4;
-  const std::int32_t* vertexIds = sweep.PackedVertexIds.data();
-  std::vector<Point2> polygon;                               // a tile's vertices (scratch)
-  std::vector<std::int32_t> corners;                         // and the Thiessen vertex of each
-  std::vector<std::pair<std::int32_t, std::int32_t>> merged; // vertices that round to one point
-  result.CornerVertexIds.reserve(sweep.PackedVertexIds.size());
-  for (std::size_t r = 0; r < accepted; ++r)
-  {
-    if (r + 3 * kAhead < accepted)
+    this->AcceptedIds.reserve(idOf.size());
+    for (std::size_t id = 0; id < pointCount; ++id)
     {
-      __builtin_prefetch(&sweep.Records[sortedOf[acceptedIds[r + 3 * kAhead]]]);
-    }
-    if (r + 2 * kAhead < accepted)
-    {
-      const auto& ahead = sweep.Records[sortedOf[acceptedIds[r + 2 * kAhead]]];
-      __builtin_prefetch(vertexIds + ahead.Start);
-      __builtin_prefetch(sweep.PackedNeighbors.data() + ahead.Start);
-    }
-    if (r + kAhead < accepted)
-    {
-      const auto& ahead = sweep.Records[sortedOf[acceptedIds[r + kAhead]]];
-      for (std::int32_t k = 0; k < ahead.Size; ++k)
+      if (this->SortedOf[id] >= 0)
       {
-        __builtin_prefetch(&sweep.Vertices[vertexIds[ahead.Start + k]]);
+        this->AcceptedIds.push_back(static_cast<std::int32_t>(id));
       }
     }
-    const std::int32_t id = acceptedIds[r];
-    const auto& record = sweep.Records[sortedOf[id]];
+  }
+
+  void Into(ThiessenSweepResult& result)
+  {
+    this->Reserve(result);
+    result.Tiles.Offsets.push_back(0);
+    constexpr std::size_t ahead = 4;
+    const std::size_t accepted = this->AcceptedIds.size();
+    const std::int32_t* vertexIds = this->S.PackedVertexIds.data();
+    for (std::size_t r = 0; r < accepted; ++r)
+    {
+      // Three stages of prefetching: a tile's record, then its vertex ids and neighbours, then its
+      // vertices' coordinates. (Here, not in a function of their own: GCC found such a function
+      // free of side effects, and removed its calls.)
+      if (r + 3 * ahead < accepted)
+      {
+        __builtin_prefetch(&this->RecordOf(this->AcceptedIds[r + 3 * ahead]));
+      }
+      if (r + 2 * ahead < accepted)
+      {
+        const Sweep::TileRecord& later = this->RecordOf(this->AcceptedIds[r + 2 * ahead]);
+        __builtin_prefetch(vertexIds + later.Start);
+        __builtin_prefetch(this->S.PackedNeighbors.data() + later.Start);
+      }
+      if (r + ahead < accepted)
+      {
+        const Sweep::TileRecord& later = this->RecordOf(this->AcceptedIds[r + ahead]);
+        for (std::int32_t k = 0; k < later.Size; ++k)
+        {
+          __builtin_prefetch(&this->S.Vertices[vertexIds[later.Start + k]]);
+        }
+      }
+      const std::int32_t id = this->AcceptedIds[r];
+      const Sweep::TileRecord& record = this->RecordOf(id);
+      this->AppendTile(id, record, result);
+      this->AppendContiguities(id, record, result.Contiguities);
+    }
+    NumberCornerVertices(this->S.Vertices.size(), this->Merged, result.CornerVertexIds);
+  }
+
+private:
+  const Sweep::TileRecord& RecordOf(std::int32_t id) const
+  {
+    return this->S.Records[this->SortedOf[id]];
+  }
+
+  void Reserve(ThiessenSweepResult& result) const
+  {
+    const std::size_t accepted = this->AcceptedIds.size();
+    TileSet& tiles = result.Tiles;
+    tiles.PointIds.reserve(accepted);
+    tiles.Offsets.reserve(accepted + 1);
+    tiles.Vertices.reserve(this->S.PackedVertexIds.size());
+    tiles.Areas.reserve(accepted);
+    tiles.NeighborCounts.reserve(accepted);
+    result.Counts.reserve(accepted);
+    result.Contiguities.Pairs.reserve(this->S.PackedNeighbors.size() + 2 * this->Half.size());
+    result.Contiguities.Kinds.reserve(this->S.PackedNeighbors.size() / 2 + this->Half.size());
+    result.CornerVertexIds.reserve(this->S.PackedVertexIds.size());
+  }
+
+  void AppendTile(std::int32_t id, const Sweep::TileRecord& record, ThiessenSweepResult& result)
+  {
+    TileSet& tiles = result.Tiles;
     tiles.PointIds.push_back(id);
-    polygon.clear();
-    corners.clear();
+    this->Polygon.clear();
+    this->Corners.clear();
     for (std::int32_t k = 0; k < record.Size; ++k)
     {
-      const Point2& v = sweep.Vertices[vertexIds[record.Start + k]];
-      polygon.push_back(
-        scale == 0 ? v : Point2{ std::ldexp(v.x, -scale), std::ldexp(v.y, -scale) });
-      corners.push_back(vertexIds[record.Start + k]);
+      const std::int32_t vertex = this->S.PackedVertexIds[record.Start + k];
+      const Point2& v = this->S.Vertices[vertex];
+      this->Polygon.push_back(this->Scale == 0
+          ? v
+          : Point2{ std::ldexp(v.x, -this->Scale), std::ldexp(v.y, -this->Scale) });
+      this->Corners.push_back(vertex);
     }
     // Distinct Thiessen vertices can round to one point (the circumcentres of nearly co-circular
     // points, a window crossing within rounding of a corner): the polygon lists it once, as the
     // Green-Sibson engine's does, and the vertices are made one. Its area and NeighborCount (the
     // exact sides) stay as they are.
-    if (HasRepeatedVertex(polygon))
+    if (HasRepeatedVertex(this->Polygon))
     {
-      DropRepeatedVertices(polygon, corners, &merged);
+      DropRepeatedVertices(this->Polygon, this->Corners, &this->Merged);
     }
-    tiles.Vertices.insert(tiles.Vertices.end(), polygon.begin(), polygon.end());
-    result.CornerVertexIds.insert(result.CornerVertexIds.end(), corners.begin(), corners.end());
+    tiles.Vertices.insert(tiles.Vertices.end(), this->Polygon.begin(), this->Polygon.end());
+    result.CornerVertexIds.insert(
+      result.CornerVertexIds.end(), this->Corners.begin(), this->Corners.end());
     tiles.Offsets.push_back(static_cast<std::int64_t>(tiles.Vertices.size()));
-    tiles.Areas.push_back(scale == 0 ? record.Area : std::ldexp(record.Area, -2 * scale));
+    tiles.Areas.push_back(
+      this->Scale == 0 ? record.Area : std::ldexp(record.Area, -2 * this->Scale));
     tiles.NeighborCounts.push_back(record.Size);
     result.Counts.push_back(record.Counts);
-    group.clear();
+  }
+
+  // The tile's neighbours and half-neighbours with larger ids, ascending.
+  void AppendContiguities(std::int32_t id, const Sweep::TileRecord& record, ContiguityGraph& graph)
+  {
+    this->Group.clear();
     for (std::int32_t k = 0; k < record.Size; ++k)
     {
-      const std::int32_t n = sweep.PackedNeighbors[record.Start + k];
+      const std::int32_t n = this->S.PackedNeighbors[record.Start + k];
       if (n > id)
       {
-        group.emplace_back(n, 0);
+        this->Group.emplace_back(n, 0);
       }
     }
-    while (nextHalf < half.size() && half[nextHalf].first == id)
+    while (this->NextHalf < this->Half.size() && this->Half[this->NextHalf].first == id)
     {
-      group.emplace_back(half[nextHalf++].second, 1);
+      this->Group.emplace_back(this->Half[this->NextHalf++].second, 1);
     }
-    std::sort(group.begin(), group.end());
-    for (const auto& g : group)
+    std::sort(this->Group.begin(), this->Group.end());
+    for (const auto& g : this->Group)
     {
       graph.Pairs.push_back(id);
       graph.Pairs.push_back(g.first);
       graph.Kinds.push_back(g.second);
     }
   }
-  NumberCornerVertices(sweep.Vertices.size(), merged, result.CornerVertexIds);
+
+  const Sweep& S;
+  const int Scale;
+  std::vector<std::int32_t> SortedOf;    // per point id: its x-sorted index, -1 when not accepted
+  std::vector<std::int32_t> AcceptedIds; // ascending
+  const std::vector<std::pair<std::int32_t, std::int32_t>> Half; // HalfNeighbourIds
+  std::size_t NextHalf = 0;
+  std::vector<Point2> Polygon;                               // a tile's vertices (scratch)
+  std::vector<std::int32_t> Corners;                         // and the Thiessen vertex of each
+  std::vector<std::pair<std::int32_t, std::int32_t>> Merged; // vertices that round to one point
+  std::vector<std::pair<std::int32_t, std::uint8_t>> Group;  // a tile's contiguities (scratch)
+};
+
+} // namespace
+
+ThiessenSweepResult ComputeThiessenSweep(const Window& window,
+  const std::vector<Point2>& points,
+  const std::function<bool(double)>& progress)
+{
+  CheckSweepable(window, points);
+  const Box2 bounds = BoundsOf(window.Vertices().data(), window.Vertices().size());
+  const int scale = SweepScale(bounds, points);
+  const Box2 scaled = ScaledBounds(bounds, scale);
+  ThiessenSweepResult result;
+  std::vector<KeyedPoint> keyed = KeepInside(bounds, scale, points, result.RejectedIds);
+  SortByAbscissa(keyed, scaled.XMin, scaled.XMax); // (the keys are scaled: so is their range)
+  Centroids centroids = WithoutRepeats(keyed, result.Duplicates);
+  keyed = std::vector<KeyedPoint>();
+
+  Sweep sweep(scaled.XMin,
+    scaled.XMax,
+    scaled.YMin,
+    scaled.YMax,
+    std::move(centroids.Xs),
+    std::move(centroids.Ys),
+    std::move(centroids.Ids));
+  sweep.Run(progress);
+  result.VertexCount = sweep.Vertices.size();
+  result.DegenerateVertexCount = sweep.DegenerateVertices;
+  TileGatherer(sweep, points.size(), scale).Into(result);
   return result;
 }
 
