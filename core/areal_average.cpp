@@ -221,6 +221,13 @@ void CheckSettingsRange(const ArealAverageSettings& settings)
 
 struct ThiessenArealAverage::State
 {
+  // The constructor's stages, in order (after the inputs are checked).
+  void ChooseProjection(const CleanRings& rings);
+  void PlaceGauges(const std::vector<Point2>& gaugesLonLat);
+  void ImposeCatchment(const CleanRings& rings);
+  void MakeWindow();
+  void PrepareUpdates(double clearMargin);
+
   ArealAverageSettings Settings;
   ProjectionParameters Parameters;
   std::unique_ptr<GeographicProjection> Projector;
@@ -1250,14 +1257,13 @@ void CheckCatchmentHasArea(const Catchment& region)
 
 } // namespace
 
-ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonLat,
-  const std::vector<std::size_t>& catchmentRingOffsets,
-  const std::vector<Point2>& catchmentLonLat,
-  const ArealAverageSettings& settings)
-  : Impl(new State)
+namespace
 {
-  State& s = *this->Impl;
-  s.Settings = settings;
+
+/// The gauges' places and the settings, checked before anything is built from them.
+void CheckGaugesAndSettings(const std::vector<Point2>& gaugesLonLat,
+  const ArealAverageSettings& settings)
+{
   for (std::size_t g = 0; g < gaugesLonLat.size(); ++g)
   {
     if (!InLonLatRange(gaugesLonLat[g])) // NaN and infinities included
@@ -1276,113 +1282,83 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     throw InputError("GaugeNames has " + std::to_string(settings.GaugeNames.size()) +
       " names for " + std::to_string(gaugesLonLat.size()) + " gauges");
   }
+}
+
+/// The catchment's rings in lon/lat, validated as the edges are read: a ring that jumps the 180th
+/// meridian runs on past it; a vertex a hair off another ring's edge (a sub-basin border's
+/// T-junction, rounded) is put on it (snappedVertices: how many).
+CleanRings ValidCatchmentRings(const std::vector<std::size_t>& offsets,
+  const std::vector<Point2>& lonLat,
+  std::size_t& snappedVertices)
+{
   try
   {
-    CheckRingOffsets(catchmentRingOffsets, catchmentLonLat.size());
+    CheckRingOffsets(offsets, lonLat.size());
   }
   catch (const InputError& e) // (an offset beyond the vertices was read past their end)
   {
     throw InputError(std::string("catchment: ") + e.what());
   }
-  CheckCatchmentLonLat(catchmentRingOffsets, catchmentLonLat);
-  // Validated as the edges are read: a ring that jumps the 180th meridian runs on past it; a
-  // vertex a hair off another ring's edge (a sub-basin border's T-junction, rounded) is put on it.
-  const SnappedRings snapped = SnapVerticesOntoSegments(catchmentRingOffsets,
-    RingsInOneTurn(catchmentRingOffsets, catchmentLonLat),
-    ArealAverageSettings::SharedBorderDegrees);
-  s.SnappedVertices = snapped.Inserted;
-  const CleanRings rings = [&]
+  CheckCatchmentLonLat(offsets, lonLat);
+  const SnappedRings snapped = SnapVerticesOntoSegments(
+    offsets, RingsInOneTurn(offsets, lonLat), ArealAverageSettings::SharedBorderDegrees);
+  snappedVertices = snapped.Inserted;
+  try
   {
-    try
+    return WithContactsAsVertices(snapped.Inserted == 0
+        ? ValidateRings(snapped.Offsets, snapped.Vertices)
+        : ValidateRings(snapped.Offsets, snapped.Vertices, &snapped.SegmentOf));
+  }
+  catch (const RingError& e)
+  {
+    // Only where the ring as read lies on one line (a bow tie across the 180th meridian was told
+    // it went round the globe).
+    const std::size_t r = e.Rings.size() == 1 ? e.Rings[0] : snapped.Offsets.size();
+    const bool flat = r + 1 < snapped.Offsets.size() &&
+      AllOnOneLine(
+        &snapped.Vertices[snapped.Offsets[r]], snapped.Offsets[r + 1] - snapped.Offsets[r]);
+    const std::string note = flat ? RoundTheGlobeNote(offsets, lonLat, r) : std::string();
+    if (note.empty())
     {
-      return WithContactsAsVertices(snapped.Inserted == 0
-          ? ValidateRings(snapped.Offsets, snapped.Vertices)
-          : ValidateRings(snapped.Offsets, snapped.Vertices, &snapped.SegmentOf));
+      throw;
     }
-    catch (const RingError& e)
-    {
-      // Only where the ring as read lies on one line (a bow tie across the 180th meridian was
-      // told it went round the globe).
-      const std::size_t r = e.Rings.size() == 1 ? e.Rings[0] : snapped.Offsets.size();
-      const bool flat = r + 1 < snapped.Offsets.size() &&
-        AllOnOneLine(
-          &snapped.Vertices[snapped.Offsets[r]], snapped.Offsets[r + 1] - snapped.Offsets[r]);
-      const std::string note =
-        flat ? RoundTheGlobeNote(catchmentRingOffsets, catchmentLonLat, r) : std::string();
-      if (note.empty())
-      {
-        throw;
-      }
-      throw RingError(e.what() + note, e.Rings, e.Segments);
-    }
-  }();
+    throw RingError(e.what() + note, e.Rings, e.Segments);
+  }
+}
 
-  if (settings.HaveProjection)
-  {
-    s.Parameters = settings.Projection;
-  }
-  else
-  {
-    // Fitted to the catchment alone: the tiles matter only there, the conic's distances are
-    // truest where it is fitted (so the tiles there come closest to the geodesically nearest
-    // gauges), and the result does not move with gauges far away (a gauge never reporting, or
-    // one with a mistyped coordinate, fitted in, moved Colorado's monthly means by up to 2%).
-    s.Parameters = AutomaticParameters(rings.Vertices);
-  }
-  s.Projector.reset(new GeographicProjection(s.Parameters));
-  s.Method = settings.Areas;
-  const bool equalArea = KeepsAreas(s.Parameters);
-  if (s.Method == AreaMethod::EqualAreaPlane && !equalArea)
+/// The method asked for, or for Automatic the one the projection allows; EqualAreaPlane asked of
+/// a projection that does not keep areas is an InputError.
+AreaMethod ChooseAreaMethod(AreaMethod asked, const ProjectionParameters& parameters)
+{
+  const bool equalArea = KeepsAreas(parameters);
+  if (asked == AreaMethod::EqualAreaPlane && !equalArea)
   {
     throw InputError(std::string("areas in the projected plane (EqualAreaPlane) are ellipsoidal "
                                  "areas only in an equal-area projection at scale 1, and ") +
-      ProjectionKindName(s.Parameters.Kind) +
-      (KeepsAreas(s.Parameters.Kind)
-          ? " with scale factor k0 = " + NumberText(s.Parameters.ScaleFactor) + " is not one"
+      ProjectionKindName(parameters.Kind) +
+      (KeepsAreas(parameters.Kind)
+          ? " with scale factor k0 = " + NumberText(parameters.ScaleFactor) + " is not one"
           : " is not one") +
       ": use the GeodesicPolygon or Automatic area method");
   }
-  if (s.Method == AreaMethod::Automatic)
+  if (asked == AreaMethod::Automatic)
   {
-    s.Method = equalArea ? AreaMethod::EqualAreaPlane : AreaMethod::GeodesicPolygon;
+    return equalArea ? AreaMethod::EqualAreaPlane : AreaMethod::GeodesicPolygon;
   }
+  return asked;
+}
 
-  // Gauges: projected, and grouped by place (the first of a group is its name).
-  s.GaugesXY.resize(gaugesLonLat.size());
-  for (std::size_t g = 0; g < gaugesLonLat.size(); ++g)
-  {
-    try
-    {
-      s.GaugesXY[g] = s.Projector->Forward(GaugePlace(gaugesLonLat[g], *s.Projector));
-    }
-    catch (const InputError& e) // it names the place ("point (lon, lat) ..."), not the gauge
-    {
-      throw InputError(GaugeLabel(g, settings.GaugeNames) + ": " + e.what());
-    }
-  }
-  s.FirstAtPlace = GroupByPlace(s.GaugesXY, settings.CoLocatedMetres);
-  for (std::size_t g = 0; g < gaugesLonLat.size(); ++g)
-  {
-    if (s.FirstAtPlace[g] != static_cast<std::int32_t>(g))
-    {
-      s.Duplicates.emplace_back(static_cast<std::int32_t>(g), s.FirstAtPlace[g]);
-    }
-  }
-  if (!s.Duplicates.empty())
-  {
-    s.PlaceShared.assign(gaugesLonLat.size(), 0);
-    for (const auto& [copy, first] : s.Duplicates)
-    {
-      s.PlaceShared[copy] = 1;
-      s.PlaceShared[first] = 1;
-    }
-  }
-
-  // Catchment: edges straight in lon/lat are densified, then projected.
-  const std::vector<int> pieceCounts = DensifiedPieceCounts(rings, settings.CatchmentEdgeDegrees);
-  std::vector<std::size_t> offsets{ 0 };
-  std::vector<Point2> projected;
-  std::vector<std::size_t> segmentOf; // per projected vertex: the caller's segment it lies on
+/// The catchment's rings, projected: edges straight in lon/lat are cut into pieces first.
+/// segmentOf: per projected vertex, the caller's segment it lies on.
+void ProjectDensified(const CleanRings& rings,
+  double edgeDegrees,
+  const GeographicProjection& projector,
+  std::vector<std::size_t>& offsets,
+  std::vector<Point2>& projected,
+  std::vector<std::size_t>& segmentOf)
+{
+  const std::vector<int> pieceCounts = DensifiedPieceCounts(rings, edgeDegrees);
+  offsets.assign(1, 0);
   for (std::size_t r = 0; r + 1 < rings.RingOffsets.size(); ++r)
   {
     const std::size_t begin = rings.RingOffsets[r], end = rings.RingOffsets[r + 1];
@@ -1393,22 +1369,28 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
       const int pieces = pieceCounts[k];
       for (int i = 0; i < pieces; ++i)
       {
-        projected.push_back(s.Projector->Forward(DensifiedPoint(a, b, i, pieces)));
+        projected.push_back(projector.Forward(DensifiedPoint(a, b, i, pieces)));
         segmentOf.push_back(rings.SourceIndex[k]);
       }
     }
     offsets.push_back(projected.size());
   }
+}
+
+/// The projected catchment. The rings were valid in lon/lat (in one turn of the globe,
+/// RingsInOneTurn, with contacts made vertices), so where they cross once projected, it is where
+/// edges straight in lon/lat, cut into pieces and projected, pass within rounding of each other:
+/// the error then names the caller's segments, not the densified pieces'.
+std::unique_ptr<Catchment> ProjectedCatchment(const std::vector<std::size_t>& offsets,
+  const std::vector<Point2>& projected,
+  const std::vector<std::size_t>& segmentOf)
+{
   try
   {
-    s.Region.reset(new Catchment(offsets, projected));
+    return std::unique_ptr<Catchment>(new Catchment(offsets, projected));
   }
   catch (const InputError&)
   {
-    // The rings were valid in lon/lat (in one turn of the globe, RingsInOneTurn, with contacts
-    // made vertices), so they cross only once projected: edges straight in lon/lat, cut into
-    // pieces and projected, that pass within rounding of each other. Named in the caller's
-    // segments, not the densified pieces'.
     try
     {
       ValidateRings(offsets, projected, &segmentOf);
@@ -1429,49 +1411,143 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     }
     throw;
   }
-  CheckCatchmentHasArea(*s.Region);
-  if (s.Method == AreaMethod::EqualAreaPlane)
+}
+
+} // namespace
+
+void ThiessenArealAverage::State::ChooseProjection(const CleanRings& rings)
+{
+  if (this->Settings.HaveProjection)
   {
-    s.CatchmentArea = s.Region->Area();
+    this->Parameters = this->Settings.Projection;
+  }
+  else
+  {
+    // Fitted to the catchment alone: the tiles matter only there, the conic's distances are
+    // truest where it is fitted (so the tiles there come closest to the geodesically nearest
+    // gauges), and the result does not move with gauges far away (a gauge never reporting, or
+    // one with a mistyped coordinate, fitted in, moved Colorado's monthly means by up to 2%).
+    this->Parameters = AutomaticParameters(rings.Vertices);
+  }
+  this->Projector.reset(new GeographicProjection(this->Parameters));
+  this->Method = ChooseAreaMethod(this->Settings.Areas, this->Parameters);
+}
+
+// Gauges: projected, and grouped by place (the first of a group is its name).
+void ThiessenArealAverage::State::PlaceGauges(const std::vector<Point2>& gaugesLonLat)
+{
+  this->GaugesXY.resize(gaugesLonLat.size());
+  for (std::size_t g = 0; g < gaugesLonLat.size(); ++g)
+  {
+    try
+    {
+      this->GaugesXY[g] = this->Projector->Forward(GaugePlace(gaugesLonLat[g], *this->Projector));
+    }
+    catch (const InputError& e) // it names the place ("point (lon, lat) ..."), not the gauge
+    {
+      throw InputError(GaugeLabel(g, this->Settings.GaugeNames) + ": " + e.what());
+    }
+  }
+  this->FirstAtPlace = GroupByPlace(this->GaugesXY, this->Settings.CoLocatedMetres);
+  for (std::size_t g = 0; g < gaugesLonLat.size(); ++g)
+  {
+    if (this->FirstAtPlace[g] != static_cast<std::int32_t>(g))
+    {
+      this->Duplicates.emplace_back(static_cast<std::int32_t>(g), this->FirstAtPlace[g]);
+    }
+  }
+  if (!this->Duplicates.empty())
+  {
+    this->PlaceShared.assign(gaugesLonLat.size(), 0);
+    for (const auto& [copy, first] : this->Duplicates)
+    {
+      this->PlaceShared[copy] = 1;
+      this->PlaceShared[first] = 1;
+    }
+  }
+}
+
+// The catchment, projected, and its area measured as the tiles' will be.
+void ThiessenArealAverage::State::ImposeCatchment(const CleanRings& rings)
+{
+  std::vector<std::size_t> offsets;
+  std::vector<Point2> projected;
+  std::vector<std::size_t> segmentOf;
+  ProjectDensified(
+    rings, this->Settings.CatchmentEdgeDegrees, *this->Projector, offsets, projected, segmentOf);
+  this->Region = ProjectedCatchment(offsets, projected, segmentOf);
+  CheckCatchmentHasArea(*this->Region);
+  if (this->Method == AreaMethod::EqualAreaPlane)
+  {
+    this->CatchmentArea = this->Region->Area();
   }
   else
   {
     ClippedRings stored;
-    stored.RingOffsets = s.Region->RingOffsets();
-    stored.Vertices = s.Region->Vertices();
-    s.CatchmentArea = s.MeasureRings(stored, s.Scratch[0]);
+    stored.RingOffsets = this->Region->RingOffsets();
+    stored.Vertices = this->Region->Vertices();
+    this->CatchmentArea = this->MeasureRings(stored, this->Scratch[0]);
   }
+}
 
-  // The window: every gauge and the whole catchment, padded.
-  Box2 box = s.Region->Bounds();
-  for (const Point2& p : s.GaugesXY)
+// The window: every gauge and the whole catchment, padded; the empty tessellation in it, and
+// the per-gauge state of the steps.
+void ThiessenArealAverage::State::MakeWindow()
+{
+  Box2 box = this->Region->Bounds();
+  for (const Point2& p : this->GaugesXY)
   {
     box.Extend(p);
   }
-  const double pad = std::max(settings.Padding, 0.01) * box.LargerSide();
-  s.TheWindow.reset(
+  const double pad = std::max(this->Settings.Padding, 0.01) * box.LargerSide();
+  this->TheWindow.reset(
     new Window(Window::Rectangle(box.XMin - pad, box.XMax + pad, box.YMin - pad, box.YMax + pad)));
-  s.Tessellation.reset(new DirichletTessellation(*s.TheWindow));
-  if (settings.Incremental)
+  this->Tessellation.reset(new DirichletTessellation(*this->TheWindow));
+  const std::size_t n = this->GaugesXY.size();
+  if (this->Settings.Incremental)
   {
-    s.Tessellation->TrackVertexEdges(); // local tile derivation finds its rings in O(1)
-    s.TileBounds.resize(gaugesLonLat.size());
-    s.Deferred.assign(gaugesLonLat.size(), 0);
-    s.RemovedId.assign(gaugesLonLat.size(), -1);
-    s.Used.assign(gaugesLonLat.size(), 0);
-    s.ClearMargin = 1e-6 * (box.LargerSide() + 2.0 * pad);
-    s.CurveOrder.resize(gaugesLonLat.size());
-    std::iota(s.CurveOrder.begin(), s.CurveOrder.end(), 0);
-    s.SpatialSort(s.CurveOrder);
-    s.CurveRank.resize(gaugesLonLat.size());
-    for (std::size_t k = 0; k < s.CurveOrder.size(); ++k)
-    {
-      s.CurveRank[s.CurveOrder[k]] = static_cast<std::int32_t>(k);
-    }
+    this->PrepareUpdates(1e-6 * (box.LargerSide() + 2.0 * pad));
   }
-  s.EngineOfGauge.assign(gaugesLonLat.size(), NotInTessellation);
-  s.CachedArea.assign(gaugesLonLat.size(), 0.0);
-  s.PositiveArea.assign(BitmapWords(gaugesLonLat.size()), 0);
+  this->EngineOfGauge.assign(n, NotInTessellation);
+  this->CachedArea.assign(n, 0.0);
+  this->PositiveArea.assign(BitmapWords(n), 0);
+}
+
+// What updating between steps keeps per gauge, and the gauges' order along a curve.
+void ThiessenArealAverage::State::PrepareUpdates(double clearMargin)
+{
+  const std::size_t n = this->GaugesXY.size();
+  this->Tessellation->TrackVertexEdges(); // local tile derivation finds its rings in O(1)
+  this->TileBounds.resize(n);
+  this->Deferred.assign(n, 0);
+  this->RemovedId.assign(n, -1);
+  this->Used.assign(n, 0);
+  this->ClearMargin = clearMargin;
+  this->CurveOrder.resize(n);
+  std::iota(this->CurveOrder.begin(), this->CurveOrder.end(), 0);
+  this->SpatialSort(this->CurveOrder);
+  this->CurveRank.resize(n);
+  for (std::size_t k = 0; k < this->CurveOrder.size(); ++k)
+  {
+    this->CurveRank[this->CurveOrder[k]] = static_cast<std::int32_t>(k);
+  }
+}
+
+ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonLat,
+  const std::vector<std::size_t>& catchmentRingOffsets,
+  const std::vector<Point2>& catchmentLonLat,
+  const ArealAverageSettings& settings)
+  : Impl(new State)
+{
+  State& s = *this->Impl;
+  s.Settings = settings;
+  CheckGaugesAndSettings(gaugesLonLat, settings);
+  const CleanRings rings =
+    ValidCatchmentRings(catchmentRingOffsets, catchmentLonLat, s.SnappedVertices);
+  s.ChooseProjection(rings);
+  s.PlaceGauges(gaugesLonLat);
+  s.ImposeCatchment(rings);
+  s.MakeWindow();
 }
 
 ThiessenArealAverage::~ThiessenArealAverage() = default;
