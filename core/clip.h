@@ -199,6 +199,25 @@ private:
   void FindDepths();
   void OrientRings();
   void ClassifyEmptyCells();
+  // ClipInto's cases, after its checks: tile anticlockwise from its lowest vertex, box its
+  // bounds (widened until its centre is inside, but for WholeCatchment).
+  double WholeCatchment(double tileArea, ClippedRings* rings) const;
+  void ListCandidates(const Box2& box, Workspace& work) const;
+  double ClipWithoutCandidates(const Point2* tile,
+    std::size_t count,
+    double tileArea,
+    const Box2& box,
+    const Point2& centre,
+    Workspace& work,
+    ClippedRings* rings) const;
+  double ClipPieces(const Point2* tile,
+    std::size_t count,
+    double tileArea,
+    const Box2& box,
+    const Point2& centre,
+    bool hullBuilt,
+    Workspace& work,
+    ClippedRings* rings) const;
   void BuildLocalRing(std::uint32_t ring,
     const std::uint32_t* ids,
     std::size_t count,
