@@ -249,6 +249,78 @@ void CheckRecordComplete(const std::string& text,
 }
 } // namespace
 
+namespace
+{
+
+/// A record's value as a finite number, else an InputError naming key and value.
+double RecordNumber(const std::string& key, const std::string& value)
+{
+  char* end = nullptr;
+  const double v = std::strtod(value.c_str(), &end);
+  if (value.empty() || *end != '\0' || !std::isfinite(v))
+  {
+    // (nan and inf parse as numbers: lon0=nan was taken, and failed later elsewhere)
+    throw InputError("projection record: " + key + "=" + Quoted(value) + " is not a finite number");
+  }
+  return v;
+}
+
+ProjectionKind RecordKind(const std::string& value)
+{
+  for (const ProjectionKind kind : ProjectionKinds)
+  {
+    if (value == ProjectionKindName(kind))
+    {
+      return kind;
+    }
+  }
+  throw InputError("projection record: unknown projection " + Quoted(value));
+}
+
+int RecordZone(const std::string& value)
+{
+  const double zone = RecordNumber("zone", value);
+  if (zone != std::floor(zone) || zone < 0.0 || zone > 60.0)
+  {
+    // (a cast of 1e20 to int was -2147483648)
+    throw InputError("projection record: zone=" + Quoted(value) + " is not a UTM zone (0 to 60)");
+  }
+  return static_cast<int>(zone);
+}
+
+/// Sets the field that key names (but the projection's kind) from value.
+void SetRecordField(ProjectionParameters& p, const std::string& key, const std::string& value)
+{
+  const auto number = [&]() { return RecordNumber(key, value); };
+  if (key == "lon0")
+    p.CentralLongitude = number();
+  else if (key == "lat0")
+    p.CentralLatitude = number();
+  else if (key == "lat1")
+    p.StandardParallel1 = number();
+  else if (key == "lat2")
+    p.StandardParallel2 = number();
+  else if (key == "zone")
+    p.UTMZone = RecordZone(value);
+  else if (key == "north")
+    p.UTMNorth = number() != 0.0;
+  else if (key == "x0")
+    p.FalseEasting = number();
+  else if (key == "y0")
+    p.FalseNorthing = number();
+  else if (key == "k0")
+    p.ScaleFactor = number();
+  else if (key == "origin_lat")
+  {
+    p.HasOriginLatitude = true;
+    p.OriginLatitude = number();
+  }
+  else
+    throw InputError("projection record: unknown key " + Quoted(key));
+}
+
+} // namespace
+
 ProjectionParameters ProjectionParameters::FromString(const std::string& text)
 {
   ProjectionParameters result;
@@ -271,69 +343,15 @@ ProjectionParameters ProjectionParameters::FromString(const std::string& text)
       throw InputError("projection record " + Quoted(text) + " gives " + key + " twice");
     }
     seen.push_back(key);
-    auto number = [&]()
-    {
-      char* end = nullptr;
-      const double v = std::strtod(value.c_str(), &end);
-      if (value.empty() || *end != '\0' || !std::isfinite(v))
-      {
-        // (nan and inf parse as numbers: lon0=nan was taken, and failed later elsewhere)
-        throw InputError(
-          "projection record: " + key + "=" + Quoted(value) + " is not a finite number");
-      }
-      return v;
-    };
     if (key == "projection")
     {
-      bool known = false;
-      for (const ProjectionKind kind : ProjectionKinds)
-      {
-        if (value == ProjectionKindName(kind))
-        {
-          result.Kind = kind;
-          known = true;
-        }
-      }
-      if (!known)
-      {
-        throw InputError("projection record: unknown projection " + Quoted(value));
-      }
+      result.Kind = RecordKind(value);
       sawKind = true;
     }
-    else if (key == "lon0")
-      result.CentralLongitude = number();
-    else if (key == "lat0")
-      result.CentralLatitude = number();
-    else if (key == "lat1")
-      result.StandardParallel1 = number();
-    else if (key == "lat2")
-      result.StandardParallel2 = number();
-    else if (key == "zone")
-    {
-      const double zone = number();
-      if (zone != std::floor(zone) || zone < 0.0 || zone > 60.0)
-      {
-        // (a cast of 1e20 to int was -2147483648)
-        throw InputError(
-          "projection record: zone=" + Quoted(value) + " is not a UTM zone (0 to 60)");
-      }
-      result.UTMZone = static_cast<int>(zone);
-    }
-    else if (key == "north")
-      result.UTMNorth = number() != 0.0;
-    else if (key == "x0")
-      result.FalseEasting = number();
-    else if (key == "y0")
-      result.FalseNorthing = number();
-    else if (key == "k0")
-      result.ScaleFactor = number();
-    else if (key == "origin_lat")
-    {
-      result.HasOriginLatitude = true;
-      result.OriginLatitude = number();
-    }
     else
-      throw InputError("projection record: unknown key " + Quoted(key));
+    {
+      SetRecordField(result, key, value);
+    }
   }
   if (!sawKind)
   {
@@ -529,81 +547,106 @@ void CheckGridTerms(const ProjectionParameters& p)
   }
 }
 
+namespace
+{
+
+void RequireLatitude(double lat, const char* name)
+{
+  if (!IsValidLatitude(lat))
+  {
+    throw InputError(std::string("projection parameter ") + name + " = " + NumberText(lat) +
+      " is not a latitude in [-90, 90]");
+  }
+}
+
+/// The centre every kind is given: lon0 and lat0.
+void CheckCentre(const ProjectionParameters& p)
+{
+  if (!(std::fabs(p.CentralLongitude) <= 360.0))
+  {
+    // (1e20 was taken, and every x came out 0)
+    throw InputError("projection parameter lon0 = " + NumberText(p.CentralLongitude) +
+      " is not a longitude in [-360, 360]");
+  }
+  // (unused by the conics and UTM, but written into the record; 100 was taken there)
+  RequireLatitude(p.CentralLatitude, "lat0");
+}
+
+} // namespace
+
+void GeographicProjection::BuildConic(const ProjectionParameters& p)
+{
+  const double a = GeographicLib::Constants::WGS84_a();
+  const double f = GeographicLib::Constants::WGS84_f();
+  RequireLatitude(p.StandardParallel1, "lat1");
+  RequireLatitude(p.StandardParallel2, "lat2");
+  if (std::fabs(p.StandardParallel1) == 90.0 && p.StandardParallel2 == -p.StandardParallel1)
+  {
+    // (GeographicLib took them: every point then projected onto the apex, or off the map)
+    throw InputError("conic standard parallels lat1 = " + NumberText(p.StandardParallel1) +
+      " and lat2 = " + NumberText(p.StandardParallel2) + " lie at opposite poles");
+  }
+  if (p.Kind == ProjectionKind::AlbersEqualArea)
+  {
+    Impl->MirrorAcrossEquator = p.StandardParallel1 + p.StandardParallel2 < 0.0;
+    const double sign = Impl->MirrorAcrossEquator ? -1.0 : 1.0;
+    Impl->Albers.reset(new GeographicLib::AlbersEqualArea(
+      a, f, sign * p.StandardParallel1, sign * p.StandardParallel2, 1.0));
+  }
+  else
+  {
+    Impl->Lambert.reset(new GeographicLib::LambertConformalConic(
+      a, f, p.StandardParallel1, p.StandardParallel2, 1.0));
+  }
+}
+
+/// The GeographicLib (or own) engine of p's kind, in Impl.
+void GeographicProjection::BuildEngine(const ProjectionParameters& p)
+{
+  const double a = GeographicLib::Constants::WGS84_a();
+  const double f = GeographicLib::Constants::WGS84_f();
+  Impl->CentralMeridian = p.CentralLongitude;
+  switch (p.Kind)
+  {
+    case ProjectionKind::AlbersEqualArea:
+    case ProjectionKind::LambertConformalConic:
+      this->BuildConic(p);
+      break;
+    case ProjectionKind::TransverseMercator:
+      Impl->Transverse.reset(new GeographicLib::TransverseMercator(a, f, 1.0));
+      break;
+    case ProjectionKind::UTM:
+      if (p.UTMZone < 1 || p.UTMZone > 60)
+      {
+        throw InputError("UTM zone " + std::to_string(p.UTMZone) + " is not in 1..60");
+      }
+      Impl->Transverse.reset(new GeographicLib::TransverseMercator(a, f, UTMScale));
+      Impl->CentralMeridian = 6.0 * p.UTMZone - 183.0;
+      break;
+    case ProjectionKind::AzimuthalEquidistant:
+      Impl->Azimuthal.reset(
+        new GeographicLib::AzimuthalEquidistant(GeographicLib::Geodesic::WGS84()));
+      break;
+    case ProjectionKind::LambertAzimuthalEqualArea:
+      Impl->AzimuthalEqualArea.reset(new LambertAzimuthalEqualArea(a, f, p.CentralLatitude));
+      break;
+    case ProjectionKind::Mercator:
+    case ProjectionKind::WebMercator:
+      Impl->Cylinder.reset(new Mercator(a, p.Kind == ProjectionKind::Mercator ? f : 0.0));
+      break;
+  }
+}
+
 GeographicProjection::GeographicProjection(const ProjectionParameters& parameters)
   : Params(parameters)
   , Impl(new Engines)
 {
   const auto& p = parameters;
-  const double a = GeographicLib::Constants::WGS84_a();
-  const double f = GeographicLib::Constants::WGS84_f();
-  auto requireLatitude = [](double lat, const char* name)
-  {
-    if (!IsValidLatitude(lat))
-    {
-      throw InputError(std::string("projection parameter ") + name + " = " + NumberText(lat) +
-        " is not a latitude in [-90, 90]");
-    }
-  };
   try
   {
     // (Inside the try, whose handler deletes Impl: thrown before it, Impl leaked.)
-    if (!(std::fabs(p.CentralLongitude) <= 360.0))
-    {
-      // (1e20 was taken, and every x came out 0)
-      throw InputError("projection parameter lon0 = " + NumberText(p.CentralLongitude) +
-        " is not a longitude in [-360, 360]");
-    }
-    // (unused by the conics and UTM, but written into the record; 100 was taken there)
-    requireLatitude(p.CentralLatitude, "lat0");
-    Impl->CentralMeridian = p.CentralLongitude;
-    switch (p.Kind)
-    {
-      case ProjectionKind::AlbersEqualArea:
-      case ProjectionKind::LambertConformalConic:
-        requireLatitude(p.StandardParallel1, "lat1");
-        requireLatitude(p.StandardParallel2, "lat2");
-        if (std::fabs(p.StandardParallel1) == 90.0 && p.StandardParallel2 == -p.StandardParallel1)
-        {
-          // (GeographicLib took them: every point then projected onto the apex, or off the map)
-          throw InputError("conic standard parallels lat1 = " + NumberText(p.StandardParallel1) +
-            " and lat2 = " + NumberText(p.StandardParallel2) + " lie at opposite poles");
-        }
-        if (p.Kind == ProjectionKind::AlbersEqualArea)
-        {
-          Impl->MirrorAcrossEquator = p.StandardParallel1 + p.StandardParallel2 < 0.0;
-          const double sign = Impl->MirrorAcrossEquator ? -1.0 : 1.0;
-          Impl->Albers.reset(new GeographicLib::AlbersEqualArea(
-            a, f, sign * p.StandardParallel1, sign * p.StandardParallel2, 1.0));
-        }
-        else
-        {
-          Impl->Lambert.reset(new GeographicLib::LambertConformalConic(
-            a, f, p.StandardParallel1, p.StandardParallel2, 1.0));
-        }
-        break;
-      case ProjectionKind::TransverseMercator:
-        Impl->Transverse.reset(new GeographicLib::TransverseMercator(a, f, 1.0));
-        break;
-      case ProjectionKind::UTM:
-        if (p.UTMZone < 1 || p.UTMZone > 60)
-        {
-          throw InputError("UTM zone " + std::to_string(p.UTMZone) + " is not in 1..60");
-        }
-        Impl->Transverse.reset(new GeographicLib::TransverseMercator(a, f, UTMScale));
-        Impl->CentralMeridian = 6.0 * p.UTMZone - 183.0;
-        break;
-      case ProjectionKind::AzimuthalEquidistant:
-        Impl->Azimuthal.reset(
-          new GeographicLib::AzimuthalEquidistant(GeographicLib::Geodesic::WGS84()));
-        break;
-      case ProjectionKind::LambertAzimuthalEqualArea:
-        Impl->AzimuthalEqualArea.reset(new LambertAzimuthalEqualArea(a, f, p.CentralLatitude));
-        break;
-      case ProjectionKind::Mercator:
-      case ProjectionKind::WebMercator:
-        Impl->Cylinder.reset(new Mercator(a, p.Kind == ProjectionKind::Mercator ? f : 0.0));
-        break;
-    }
+    CheckCentre(p);
+    this->BuildEngine(p);
     CheckGridTerms(p);
     if (p.HasOriginLatitude)
     {
