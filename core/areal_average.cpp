@@ -228,6 +228,18 @@ struct ThiessenArealAverage::State
   void MakeWindow();
   void PrepareUpdates(double clearMargin);
 
+  // A step's stages (Step): the tessellation updated (Update) or rebuilt, then the tiles derived,
+  // then the weights.
+  struct Changes
+  {
+    bool Local = false; ///< only the touched and inserted gauges' tiles need deriving
+    std::vector<std::int32_t> Inserted, Touched;
+    std::size_t Deferred = 0; ///< removals deferred (DeferClearRemovals)
+  };
+  Changes Update();
+  void RebuildFromWanted();
+  void Weigh(const std::vector<double>& values, ArealStep& step) const;
+
   ArealAverageSettings Settings;
   ProjectionParameters Parameters;
   std::unique_ptr<GeographicProjection> Projector;
@@ -1618,76 +1630,60 @@ std::vector<std::int32_t> ThiessenArealAverage::CatchmentRingsAround(std::size_t
   return region.EnclosingRings(r);
 }
 
-ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
+// The local derivation when updating a two-dimensional tessellation, with at most a fifth of the
+// gauges changing; otherwise every tile. A two-dimensional tessellation before the update means
+// that every cached area is current (the first step, or one after a step without reports, starts
+// from an empty tessellation).
+ThiessenArealAverage::State::Changes ThiessenArealAverage::State::Update()
 {
-  State& s = *this->Impl;
-  const std::size_t n = s.GaugesXY.size();
-  if (values.size() != n)
+  Changes changes;
+  std::vector<std::int32_t> removed;
+  this->ListChanges(this->Wanted, removed, changes.Inserted);
+  const std::size_t n = this->GaugesXY.size();
+  const bool local =
+    this->Tessellation->IsTwoDimensional() && 5 * (removed.size() + changes.Inserted.size()) <= n;
+  if (local)
   {
-    throw InputError("a step has " + std::to_string(values.size()) + " values for " +
-      std::to_string(n) + " gauges");
-  }
-  const int used = s.MarkReporting(values);
-  const std::vector<char>& wanted = s.Wanted;
-  // The local derivation when updating a two-dimensional tessellation, with at most a fifth of
-  // the gauges changing; otherwise every tile. A two-dimensional tessellation before the update
-  // means that every cached area is current (the first step, or one after a step without
-  // reports, starts from an empty tessellation).
-  bool local = false;
-  std::vector<std::int32_t> removed, inserted, touched;
-  std::size_t deferred = 0;
-  if (s.Settings.Incremental)
-  {
-    s.ListChanges(wanted, removed, inserted);
-    local = s.Tessellation->IsTwoDimensional() && 5 * (removed.size() + inserted.size()) <= n;
-    if (local)
-    {
-      deferred = s.DeferClearRemovals(removed);
-    }
-    else
-    {
-      s.TakeAllDeferred(removed);
-    }
-    local = s.Apply(removed, inserted, local ? &touched : nullptr);
-    s.KeepTrianglesLocal();
+    changes.Deferred = this->DeferClearRemovals(removed);
   }
   else
   {
-    std::vector<std::int32_t> active;
-    for (std::size_t g = 0; g < n; ++g)
-    {
-      if (wanted[g])
-      {
-        active.push_back(static_cast<std::int32_t>(g));
-      }
-    }
-    s.Rebuild(active);
+    this->TakeAllDeferred(removed);
   }
+  changes.Local = this->Apply(removed, changes.Inserted, local ? &changes.Touched : nullptr);
+  this->KeepTrianglesLocal();
+  return changes;
+}
 
-  ArealStep step;
-  step.StationsUsed = used;
-  step.RemovalsDeferred = static_cast<int>(deferred);
-  if (step.StationsUsed == 0)
+void ThiessenArealAverage::State::RebuildFromWanted()
+{
+  std::vector<std::int32_t> active;
+  for (std::size_t g = 0; g < this->Wanted.size(); ++g)
   {
-    step.Mean = std::numeric_limits<double>::quiet_NaN();
-    return step;
+    if (this->Wanted[g])
+    {
+      active.push_back(static_cast<std::int32_t>(g));
+    }
   }
-  const std::pair<std::size_t, std::size_t> derived =
-    local ? s.DeriveChanged(touched, inserted) : std::make_pair(s.DeriveAll(), std::size_t(0));
-  step.TilesDerived = static_cast<int>(derived.first);
-  step.TilesFoundClear = static_cast<int>(derived.second);
-  // Weights of every reporting gauge from the cached areas (current for all of them), ascending:
-  // the gauges both used and with a positive area, read off their bitmaps a word at a time.
+  this->Rebuild(active);
+}
+
+// Weights of every reporting gauge from the cached areas (current for all of them), ascending:
+// the gauges both used and with a positive area, read off their bitmaps a word at a time; and the
+// step's mean.
+void ThiessenArealAverage::State::Weigh(const std::vector<double>& values, ArealStep& step) const
+{
   std::size_t count = 0;
-  for (std::size_t w = 0; w < s.WantedBits.size(); ++w)
+  for (std::size_t w = 0; w < this->WantedBits.size(); ++w)
   {
-    count += static_cast<std::size_t>(SetBitCount(s.WantedBits[w] & s.PositiveArea[w]));
+    count += static_cast<std::size_t>(SetBitCount(this->WantedBits[w] & this->PositiveArea[w]));
   }
   step.Gauges.resize(count);
   std::size_t k = 0;
-  for (std::size_t w = 0; w < s.WantedBits.size(); ++w)
+  for (std::size_t w = 0; w < this->WantedBits.size(); ++w)
   {
-    for (std::uint64_t word = s.WantedBits[w] & s.PositiveArea[w]; word != 0; word &= word - 1)
+    for (std::uint64_t word = this->WantedBits[w] & this->PositiveArea[w]; word != 0;
+         word &= word - 1)
     {
       step.Gauges[k++] = static_cast<std::int32_t>(64 * w + LowestSetBit(word));
     }
@@ -1698,8 +1694,8 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
   for (k = 0; k < count; ++k)
   {
     const std::int32_t g = step.Gauges[k];
-    const double area = s.CachedArea[g];
-    const double weight = area / s.CatchmentArea;
+    const double area = this->CachedArea[g];
+    const double weight = area / this->CatchmentArea;
     step.Weights[k] = weight;
     step.AreasM2[k] = area;
     weighted += weight * values[g];
@@ -1708,6 +1704,40 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
   step.StationsWeighted = static_cast<int>(step.Gauges.size());
   step.CoveredFraction = weightSum;
   step.Mean = weightSum > 0.0 ? weighted / weightSum : std::numeric_limits<double>::quiet_NaN();
+}
+
+ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
+{
+  State& s = *this->Impl;
+  const std::size_t n = s.GaugesXY.size();
+  if (values.size() != n)
+  {
+    throw InputError("a step has " + std::to_string(values.size()) + " values for " +
+      std::to_string(n) + " gauges");
+  }
+  ArealStep step;
+  step.StationsUsed = s.MarkReporting(values);
+  State::Changes changes;
+  if (s.Settings.Incremental)
+  {
+    changes = s.Update();
+  }
+  else
+  {
+    s.RebuildFromWanted();
+  }
+  step.RemovalsDeferred = static_cast<int>(changes.Deferred);
+  if (step.StationsUsed == 0)
+  {
+    step.Mean = std::numeric_limits<double>::quiet_NaN();
+    return step;
+  }
+  const std::pair<std::size_t, std::size_t> derived = changes.Local
+    ? s.DeriveChanged(changes.Touched, changes.Inserted)
+    : std::make_pair(s.DeriveAll(), std::size_t(0));
+  step.TilesDerived = static_cast<int>(derived.first);
+  step.TilesFoundClear = static_cast<int>(derived.second);
+  s.Weigh(values, step);
   return step;
 }
 
