@@ -101,6 +101,126 @@ bool CentreInside(const Tess& tess, std::int32_t face, const Point2& c, double e
 namespace
 {
 
+// The window lines that bound the bisector of a and b: Lower gives L (entered along d), Upper
+// gives U (left along d); a Corner flag tells that an adjacent line crosses there too.
+struct WindowSpan
+{
+  int Lower = -1, Upper = -1;
+  bool LowerCorner = false, UpperCorner = false;
+};
+
+// False when the bisector misses the open window: parallel to a line and on or outside it, or
+// no entry or exit, or L >= U.
+bool FindWindowSpan(const std::vector<HalfPlane>& constraints,
+  const Point2& pa,
+  const Point2& pb,
+  WindowSpan& span)
+{
+  const int count = int(constraints.size());
+  for (int k = 0; k < count; ++k)
+  {
+    const HalfPlane& h = constraints[k];
+    const int direction = BisectorDirectionSign(h, pa, pb);
+    if (direction == 0)
+    {
+      if (MidpointSide(h, pa, pb) >= 0)
+      {
+        return false; // parallel, on or outside the line
+      }
+      continue;
+    }
+    int& best = direction > 0 ? span.Upper : span.Lower;
+    bool& corner = direction > 0 ? span.UpperCorner : span.LowerCorner;
+    if (best < 0)
+    {
+      best = k;
+      corner = false;
+      continue;
+    }
+    // Exit: the smallest crossing; entry: the largest.
+    const int order = CompareBisectorCrossings(h, constraints[best], pa, pb) * direction;
+    if (order < 0)
+    {
+      best = k;
+      corner = false;
+    }
+    else if (order == 0)
+    {
+      // A tie at a corner: keep the earlier line on exit, the later on entry.
+      const bool kAfterBest = (best + 1) % count == k;
+      const bool kBeforeBest = (k + 1) % count == best;
+      if ((direction > 0 && kBeforeBest) || (direction < 0 && kAfterBest))
+      {
+        best = k;
+      }
+      corner = corner || kAfterBest || kBeforeBest;
+    }
+  }
+  return span.Lower >= 0 && span.Upper >= 0 &&
+    CompareBisectorCrossings(constraints[span.Lower], constraints[span.Upper], pa, pb) < 0;
+}
+
+// Where the bisector m + t * d of a and b meets the line of h (only for edges that end on the
+// window). d is scaled by a power of two to a largest component in [1, 2): exact, so the
+// crossing's bits are unchanged (scaling by 2^k commutes with rounding), but a direction of
+// subnormal size (points a subnormal distance apart) no longer sends t to infinity, where t * 0
+// made a NaN.
+Point2 BisectorCrossing(const Point2& pa, const Point2& pb, const HalfPlane& h)
+{
+  const double mx = 0.5 * (pa.x + pb.x), my = 0.5 * (pa.y + pb.y);
+  const int scale = -std::ilogb(std::max(std::fabs(pb.y - pa.y), std::fabs(pb.x - pa.x)));
+  const double dx = std::ldexp(-(pb.y - pa.y), scale), dy = std::ldexp(pb.x - pa.x, scale);
+  // An axis-aligned side keeps its coordinate exactly (-c/a or -c/b, one rounding), so a
+  // rectangle's tiles have straight sides; only the other coordinate comes from the bisector.
+  // The distance from the midpoint is taken as the mean of the distances from the two points
+  // (exact differences where the points are near the side), not from the rounded midpoint:
+  // that rounding, times a steep bisector's slope, put a crossing 2^26 ulps off (points 2e-9
+  // apart across, 2^-54 along; the Brassel-Reif sweep, which writes it so, was an ulp off).
+  if (h.b == 0.0 && dx != 0.0)
+  {
+    const double x = -h.c / h.a;
+    return Point2{ x, my + 0.5 * ((x - pa.x) + (x - pb.x)) / dx * dy };
+  }
+  if (h.a == 0.0 && dy != 0.0)
+  {
+    const double y = -h.c / h.b;
+    return Point2{ mx + 0.5 * ((y - pa.y) + (y - pb.y)) / dy * dx, y };
+  }
+  const double t = -(h.a * mx + h.b * my + h.c) / (h.a * dx + h.b * dy);
+  return Point2{ mx + t * dx, my + t * dy };
+}
+
+// One end of the clipped edge: the face's centre where it lies inside the window line's crossing
+// (versus > 0 for the low end, < 0 for the high end, as ClipCanonical computes them), the crossing
+// or the window corner beyond it, and the centre labelled with the line when it lies on it.
+EdgeEnd ClippedEnd(const Tess& tess,
+  const Point2& pa,
+  const Point2& pb,
+  const FaceView& face,
+  int versus,
+  int line,
+  bool corner,
+  bool exit)
+{
+  const std::vector<HalfPlane>& constraints = tess.GetWindow().EffectiveConstraints();
+  const int count = int(constraints.size());
+  // Window corner k is where constraint k-1 meets k: for a tie between k and k+1 it is k+1.
+  const int cornerIndex = exit ? (line + 1) % count : line;
+  const EdgeEnd atCorner{
+    tess.GetWindow().Vertices()[std::size_t(cornerIndex)], line, -2 - cornerIndex
+  };
+  const int beyond = exit ? versus : -versus; // > 0: the centre lies past the line
+  if (face.Face < 0 || beyond > 0)
+  {
+    return corner ? atCorner : EdgeEnd{ BisectorCrossing(pa, pb, constraints[line]), line, -1 };
+  }
+  if (beyond == 0)
+  {
+    return corner ? atCorner : EdgeEnd{ face.Centre, line, face.Face };
+  }
+  return { face.Centre, -1, face.Face };
+}
+
 // The part inside the window of the tile edge of a (lower id) with b: the
 // bisector, parametrised as m + t * d with m the midpoint and d = (b - a)
 // turned anticlockwise, from the centre of loFace (right of a->b; -1 for a
@@ -142,55 +262,13 @@ bool ClipCanonical(const Tess& tess,
   const Point2& pa = tess.Points()[a];
   const Point2& pb = tess.Points()[b];
   const auto& constraints = tess.GetWindow().EffectiveConstraints();
-  const int count = int(constraints.size());
-  int lower = -1, upper = -1;                    // constraints giving L and U
-  bool lowerCorner = false, upperCorner = false; // L (U) is also reached by an adjacent line
-  for (int k = 0; k < count; ++k)
-  {
-    const HalfPlane& h = constraints[k];
-    const int direction = BisectorDirectionSign(h, pa, pb);
-    if (direction == 0)
-    {
-      if (MidpointSide(h, pa, pb) >= 0)
-      {
-        return false; // parallel, on or outside the line
-      }
-      continue;
-    }
-    int& best = direction > 0 ? upper : lower;
-    bool& corner = direction > 0 ? upperCorner : lowerCorner;
-    if (best < 0)
-    {
-      best = k;
-      corner = false;
-      continue;
-    }
-    // Exit: the smallest crossing; entry: the largest.
-    const int order = CompareBisectorCrossings(h, constraints[best], pa, pb) * direction;
-    if (order < 0)
-    {
-      best = k;
-      corner = false;
-    }
-    else if (order == 0)
-    {
-      // A tie at a corner: keep the earlier line on exit, the later on entry.
-      const bool kAfterBest = (best + 1) % count == k;
-      const bool kBeforeBest = (k + 1) % count == best;
-      if ((direction > 0 && kBeforeBest) || (direction < 0 && kAfterBest))
-      {
-        best = k;
-      }
-      corner = corner || kAfterBest || kBeforeBest;
-    }
-  }
-  if (lower < 0 || upper < 0 ||
-    CompareBisectorCrossings(constraints[lower], constraints[upper], pa, pb) >= 0)
+  WindowSpan span;
+  if (!FindWindowSpan(constraints, pa, pb, span))
   {
     return false;
   }
-  const HalfPlane& hl = constraints[lower];
-  const HalfPlane& hu = constraints[upper];
+  const HalfPlane& hl = constraints[span.Lower];
+  const HalfPlane& hu = constraints[span.Upper];
   // Centre vs L: sign(t_centre - L) = -FaceSide(face, hl) (the line is entered along d);
   // centre vs U: sign(t_centre - U) = FaceSide(face, hu).
   int loVsL = 1, hiVsU = -1;
@@ -210,67 +288,8 @@ bool ClipCanonical(const Tess& tess,
     }
     hiVsU = FaceSide(tess, hiFace, hu);
   }
-  const std::vector<Point2>& corners = tess.GetWindow().Vertices();
-  // Window corner k is where constraint k-1 meets k: for a tie between k and k+1 it is k+1.
-  const auto cornerIndex = [&](int line, bool exit) { return exit ? (line + 1) % count : line; };
-  const auto cornerOf = [&](int line, bool exit)
-  {
-    return EdgeEnd{
-      corners[std::size_t(cornerIndex(line, exit))], line, -2 - cornerIndex(line, exit)
-    };
-  };
-  // Where the bisector m + t * d meets the line of h (only for edges that end on the window).
-  // d is scaled by a power of two to a largest component in [1, 2): exact, so the crossing's bits
-  // are unchanged (scaling by 2^k commutes with rounding), but a direction of subnormal size
-  // (points a subnormal distance apart) no longer sends t to infinity, where t * 0 made a NaN.
-  const auto crossing = [&](const HalfPlane& h)
-  {
-    const double mx = 0.5 * (pa.x + pb.x), my = 0.5 * (pa.y + pb.y);
-    const int scale = -std::ilogb(std::max(std::fabs(pb.y - pa.y), std::fabs(pb.x - pa.x)));
-    const double dx = std::ldexp(-(pb.y - pa.y), scale), dy = std::ldexp(pb.x - pa.x, scale);
-    // An axis-aligned side keeps its coordinate exactly (-c/a or -c/b, one rounding), so a
-    // rectangle's tiles have straight sides; only the other coordinate comes from the bisector.
-    // The distance from the midpoint is taken as the mean of the distances from the two points
-    // (exact differences where the points are near the side), not from the rounded midpoint:
-    // that rounding, times a steep bisector's slope, put a crossing 2^26 ulps off (points 2e-9
-    // apart across, 2^-54 along; the Brassel-Reif sweep, which writes it so, was an ulp off).
-    if (h.b == 0.0 && dx != 0.0)
-    {
-      const double x = -h.c / h.a;
-      return Point2{ x, my + 0.5 * ((x - pa.x) + (x - pb.x)) / dx * dy };
-    }
-    if (h.a == 0.0 && dy != 0.0)
-    {
-      const double y = -h.c / h.b;
-      return Point2{ mx + 0.5 * ((y - pa.y) + (y - pb.y)) / dy * dx, y };
-    }
-    const double t = -(h.a * mx + h.b * my + h.c) / (h.a * dx + h.b * dy);
-    return Point2{ mx + t * dx, my + t * dy };
-  };
-  if (loFace < 0 || loVsL < 0)
-  {
-    out.Lo = lowerCorner ? cornerOf(lower, false) : EdgeEnd{ crossing(hl), lower, -1 };
-  }
-  else if (loVsL == 0)
-  {
-    out.Lo = lowerCorner ? cornerOf(lower, false) : EdgeEnd{ lo.Centre, lower, loFace };
-  }
-  else
-  {
-    out.Lo = { lo.Centre, -1, loFace };
-  }
-  if (hiFace < 0 || hiVsU > 0)
-  {
-    out.Hi = upperCorner ? cornerOf(upper, true) : EdgeEnd{ crossing(hu), upper, -1 };
-  }
-  else if (hiVsU == 0)
-  {
-    out.Hi = upperCorner ? cornerOf(upper, true) : EdgeEnd{ hi.Centre, upper, hiFace };
-  }
-  else
-  {
-    out.Hi = { hi.Centre, -1, hiFace };
-  }
+  out.Lo = ClippedEnd(tess, pa, pb, lo, loVsL, span.Lower, span.LowerCorner, false);
+  out.Hi = ClippedEnd(tess, pa, pb, hi, hiVsU, span.Upper, span.UpperCorner, true);
   return true;
 }
 } // namespace
