@@ -300,6 +300,7 @@ private:
   /// box: the bounding box of the vertices [0, count).
   void InsertInOrder(std::int32_t count, const Box2& box);
   bool InsertInTwoRegions(std::int32_t first, std::int32_t end, const Box2& box);
+  struct TwoRegionBuild; // its steps and state
   bool LegalizeEdges(std::vector<std::int32_t>& edges);
   void FlipEdge(std::int32_t e);
   void CompactFreeTriangles();

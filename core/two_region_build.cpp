@@ -169,6 +169,39 @@ void DirichletTessellation::InsertInOrder(std::int32_t count, const Box2& box)
   }
 }
 
+// The two-region build of vertices [First, End) after the sample [0, First): its steps, and the
+// state they pass on.
+struct DirichletTessellation::TwoRegionBuild
+{
+  TwoRegionBuild(DirichletTessellation& tess, std::int32_t first, std::int32_t end, const Box2& box)
+    : T(tess)
+    , Pts(tess.Coordinates.data())
+    , First(first)
+    , End(end)
+    , Bounds(box)
+  {
+  }
+
+  void SplitAtSeam();
+  void FindSeamEdges();
+  void AllotSlots();
+  void InsertSides();
+  void InsertSide(std::size_t side);
+  void Join();
+  void InsertAlongCurve(std::vector<std::int32_t>& ids);
+  bool OwnedBy(const Region& region, std::int32_t t) const;
+
+  DirichletTessellation& T;
+  const Point2* const Pts;
+  const std::int32_t First, End;
+  const Box2 Bounds;
+  Region Regions[2];
+  std::vector<std::int32_t> Sides[2]; // each region's points, in BRIO order
+  std::int32_t SampleTriangles = 0;   // the triangles before the regions' slots
+  std::vector<std::int32_t> SeamEdges;
+  std::vector<RestartGrid> Restarts;
+};
+
 // Steps 2 to 4 for vertices [first, end). Returns false, having inserted nothing, when the
 // sample is not yet two-dimensional.
 bool DirichletTessellation::InsertInTwoRegions(std::int32_t first,
@@ -179,176 +212,208 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first,
   {
     return false;
   }
-  const Point2* const pts = this->Coordinates.data();
-  std::vector<double> sampleX(static_cast<std::size_t>(first));
-  for (std::int32_t k = 0; k < first; ++k)
+  TwoRegionBuild build(*this, first, end, box);
+  build.SplitAtSeam();
+  build.FindSeamEdges();
+  build.AllotSlots();
+  build.InsertSides();
+  build.Join();
+  return true;
+}
+
+// The seam at the sample's median x; the points near it (the strip) inserted serially now, the
+// others shared out to the two sides.
+void DirichletTessellation::TwoRegionBuild::SplitAtSeam()
+{
+  std::vector<double> sampleX(static_cast<std::size_t>(this->First));
+  for (std::int32_t k = 0; k < this->First; ++k)
   {
-    sampleX[k] = pts[k].x;
+    sampleX[k] = this->Pts[k].x;
   }
-  std::nth_element(sampleX.begin(), sampleX.begin() + first / 2, sampleX.end());
-  Region regions[2];
+  std::nth_element(sampleX.begin(), sampleX.begin() + this->First / 2, sampleX.end());
   for (int side = 0; side < 2; ++side)
   {
-    regions[side].SeamX = sampleX[first / 2];
-    regions[side].Upper = side == 1;
-    regions[side].MaxWalk = std::int64_t(8 * std::sqrt(double(end))) + 1024;
+    this->Regions[side].SeamX = sampleX[this->First / 2];
+    this->Regions[side].Upper = side == 1;
+    this->Regions[side].MaxWalk = std::int64_t(8 * std::sqrt(double(this->End))) + 1024;
   }
-  std::vector<std::int32_t> sides[2];
-  for (std::vector<std::int32_t>& side : sides)
+  for (std::vector<std::int32_t>& side : this->Sides)
   {
     // Either may get them all; only what is used is touched.
-    ReserveOnLargePages(side, std::size_t(end - first));
+    ReserveOnLargePages(side, std::size_t(this->End - this->First));
   }
-  // Serial insertions of scattered points, each walking from the last: along the curve.
-  const auto insertAlongCurve = [&](std::vector<std::int32_t>& ids)
-  {
-    SortAlongHilbertCurve(pts, box, ids);
-    for (const std::int32_t id : ids)
-    {
-      this->InsertAcceptedPoint(id);
-    }
-  };
-  const double seam = regions[0].SeamX;
-  const double halfWidth = SeamStripHalfWidth(pts, first, end, seam);
+  const double seam = this->Regions[0].SeamX;
+  const double halfWidth = SeamStripHalfWidth(this->Pts, this->First, this->End, seam);
   std::vector<std::int32_t> strip;
-  for (std::int32_t k = first; k < end; ++k)
+  for (std::int32_t k = this->First; k < this->End; ++k)
   {
-    if (std::fabs(pts[k].x - seam) < halfWidth)
+    if (std::fabs(this->Pts[k].x - seam) < halfWidth)
     {
       strip.push_back(k);
     }
     else
     {
-      sides[regions[1].Owns(pts[k]) ? 1 : 0].push_back(k);
+      this->Sides[this->Regions[1].Owns(this->Pts[k]) ? 1 : 0].push_back(k);
     }
   }
-  insertAlongCurve(strip);
+  this->InsertAlongCurve(strip);
+}
 
-  // Which triangles straddle the seam, before anything else changes.
-  const auto ownedBy = [&](const Region& region, std::int32_t t)
+// Serial insertions of scattered points, each walking from the last: along the curve.
+void DirichletTessellation::TwoRegionBuild::InsertAlongCurve(std::vector<std::int32_t>& ids)
+{
+  SortAlongHilbertCurve(this->Pts, this->Bounds, ids);
+  for (const std::int32_t id : ids)
   {
-    for (std::int32_t k = 0; k < 3; ++k)
-    {
-      const std::int32_t v = this->Origins[3 * t + k];
-      if (v != Ghost && !region.Owns(pts[v]))
-      {
-        return false;
-      }
-    }
-    return true;
-  };
-  const std::int32_t sampleTriangles = std::int32_t(this->Origins.size() / 3);
-  std::vector<std::int32_t> seamEdges;
-  for (std::int32_t t = 0; t < sampleTriangles; ++t)
+    this->T.InsertAcceptedPoint(id);
+  }
+}
+
+// Whether every real vertex of triangle t lies on the region's side.
+bool DirichletTessellation::TwoRegionBuild::OwnedBy(const Region& region, std::int32_t t) const
+{
+  for (std::int32_t k = 0; k < 3; ++k)
   {
-    if (!this->IsFreeTriangle(t) && !ownedBy(regions[0], t) && !ownedBy(regions[1], t))
+    const std::int32_t v = this->T.Origins[3 * t + k];
+    if (v != Ghost && !region.Owns(this->Pts[v]))
     {
-      seamEdges.insert(seamEdges.end(), { 3 * t, 3 * t + 1, 3 * t + 2 });
+      return false;
     }
   }
+  return true;
+}
 
-  // Each region gets 2 triangles per point: exactly what inserting all of them takes. Its
-  // restart grid starts with its owned sample triangles, and its first walk starts from the
-  // grid's triangle for its first point (from any owned triangle if that cell has none).
+// Which triangles straddle the seam, before anything else changes: their edges are legalized
+// after the regions (Join).
+void DirichletTessellation::TwoRegionBuild::FindSeamEdges()
+{
+  this->SampleTriangles = std::int32_t(this->T.Origins.size() / 3);
+  for (std::int32_t t = 0; t < this->SampleTriangles; ++t)
+  {
+    if (!this->T.IsFreeTriangle(t) && !this->OwnedBy(this->Regions[0], t) &&
+      !this->OwnedBy(this->Regions[1], t))
+    {
+      this->SeamEdges.insert(this->SeamEdges.end(), { 3 * t, 3 * t + 1, 3 * t + 2 });
+    }
+  }
+}
+
+// Each region gets 2 triangles per point: exactly what inserting all of them takes. Its restart
+// grid starts with its owned sample triangles, and its first walk starts from the grid's triangle
+// for its first point (from any owned triangle if that cell has none).
+void DirichletTessellation::TwoRegionBuild::AllotSlots()
+{
   const std::int32_t cellsPerSide =
-    std::max(1, std::int32_t(std::sqrt(double(first) / SamplePointsPerCell)));
-  std::vector<RestartGrid> restarts(2, RestartGrid(box, cellsPerSide));
-  std::int32_t slot = sampleTriangles;
+    std::max(1, std::int32_t(std::sqrt(double(this->First) / SamplePointsPerCell)));
+  this->Restarts.assign(2, RestartGrid(this->Bounds, cellsPerSide));
+  std::int32_t slot = this->SampleTriangles;
   for (int side = 0; side < 2; ++side)
   {
-    Region& region = regions[side];
+    Region& region = this->Regions[side];
+    RestartGrid& restarts = this->Restarts[side];
+    const std::vector<std::int32_t>& ids = this->Sides[side];
     region.NextSlot = slot;
-    slot += 2 * std::int32_t(sides[side].size());
+    slot += 2 * std::int32_t(ids.size());
     region.EndSlot = slot;
-    region.LastTriangle = this->Serial.LastTriangle;
-    for (std::int32_t t = 0; t < sampleTriangles; ++t)
+    region.LastTriangle = this->T.Serial.LastTriangle;
+    for (std::int32_t t = 0; t < this->SampleTriangles; ++t)
     {
-      if (!this->IsFreeTriangle(t) && !this->IsGhostTriangle(t) && ownedBy(region, t))
+      if (!this->T.IsFreeTriangle(t) && !this->T.IsGhostTriangle(t) && this->OwnedBy(region, t))
       {
-        restarts[side].At(pts[this->Origins[3 * t]]) = t;
+        restarts.At(this->Pts[this->T.Origins[3 * t]]) = t;
         region.LastTriangle = t;
       }
     }
-    if (!sides[side].empty() && restarts[side].At(pts[sides[side].front()]) >= 0)
+    if (!ids.empty() && restarts.At(this->Pts[ids.front()]) >= 0)
     {
-      region.LastTriangle = restarts[side].At(pts[sides[side].front()]);
+      region.LastTriangle = restarts.At(this->Pts[ids.front()]);
     }
   }
-  // Not written here: each region writes the triangles it makes, the rest are freed below.
-  this->Origins.resize(3 * std::size_t(slot));
-  this->Twins.resize(3 * std::size_t(slot));
+  // Not written here: each region writes the triangles it makes, the rest are freed in Join.
+  this->T.Origins.resize(3 * std::size_t(slot));
+  this->T.Twins.resize(3 * std::size_t(slot));
+}
 
-  const auto insertSide = [&](std::size_t side)
-  {
-    Region& region = regions[side];
-    const std::vector<std::int32_t>& ids = sides[side];
-    for (std::size_t tried = 0; tried < ids.size(); ++tried)
-    {
-      if (GivesUp(tried, region.Deferred.size()))
-      {
-        region.Deferred.insert(region.Deferred.end(), ids.begin() + tried, ids.end());
-        break;
-      }
-      const std::int32_t id = ids[tried];
-      std::int32_t edge = -1;
-      std::int32_t& restart = restarts[side].At(pts[id]);
-      Location location = this->InsertInRegion(region, id, edge);
-      if (location == Location::Foreign && edge >= 0)
-      {
-        // Found, on an edge whose far triangle the region may not change (a hull edge: points
-        // on the hull's lines, as on two parallel lines, all are): deferred at once, and the next
-        // walk starts here. Retried from the cell's restart triangle, each such point walked
-        // there and back (two lines of 10^6 points: 170 million steps, 3.5 s against 0.3).
-        region.LastTriangle = edge / 3;
-      }
-      else if (location == Location::Foreign && restart >= 0 && restart != region.LastTriangle)
-      {
-        region.LastTriangle = restart;
-        location = this->InsertInRegion(region, id, edge);
-      }
-      if (location == Location::Foreign || location == Location::OnVertex)
-      {
-        region.Deferred.push_back(id);
-      }
-      else
-      {
-        restart = region.LastTriangle;
-      }
-    }
-  };
+void DirichletTessellation::TwoRegionBuild::InsertSides()
+{
   if (parallel::ThreadLimit() > 1)
   {
-    parallel::RunChunks(2, insertSide);
+    parallel::RunChunks(2, [this](std::size_t side) { this->InsertSide(side); });
   }
   else
   {
-    insertSide(0);
-    insertSide(1);
+    this->InsertSide(0);
+    this->InsertSide(1);
   }
+}
 
-  for (Region& region : regions)
+// One region's points, in order, each inserted or deferred.
+void DirichletTessellation::TwoRegionBuild::InsertSide(std::size_t side)
+{
+  Region& region = this->Regions[side];
+  const std::vector<std::int32_t>& ids = this->Sides[side];
+  for (std::size_t tried = 0; tried < ids.size(); ++tried)
   {
-    this->Accepted += region.Inserted;
-    for (std::int32_t t = region.EndSlot - 1; t >= region.NextSlot; --t)
+    if (GivesUp(tried, region.Deferred.size()))
     {
-      std::fill_n(this->Origins.begin() + 3 * t, 3, Free);
-      std::fill_n(this->Twins.begin() + 3 * t, 3, -1);
-      this->FreeTriangles.push_back(t);
+      region.Deferred.insert(region.Deferred.end(), ids.begin() + tried, ids.end());
+      break;
+    }
+    const std::int32_t id = ids[tried];
+    std::int32_t edge = -1;
+    std::int32_t& restart = this->Restarts[side].At(this->Pts[id]);
+    Location location = this->T.InsertInRegion(region, id, edge);
+    if (location == Location::Foreign && edge >= 0)
+    {
+      // Found, on an edge whose far triangle the region may not change (a hull edge: points on
+      // the hull's lines, as on two parallel lines, all are): deferred at once, and the next walk
+      // starts here. Retried from the cell's restart triangle, each such point walked there and
+      // back (two lines of 10^6 points: 170 million steps, 3.5 s against 0.3).
+      region.LastTriangle = edge / 3;
+    }
+    else if (location == Location::Foreign && restart >= 0 && restart != region.LastTriangle)
+    {
+      region.LastTriangle = restart;
+      location = this->T.InsertInRegion(region, id, edge);
+    }
+    if (location == Location::Foreign || location == Location::OnVertex)
+    {
+      region.Deferred.push_back(id);
+    }
+    else
+    {
+      restart = region.LastTriangle;
+    }
+  }
+}
+
+// The regions' unused slots freed, the seam legalized, and the deferred points inserted.
+void DirichletTessellation::TwoRegionBuild::Join()
+{
+  DirichletTessellation& t = this->T;
+  for (Region& region : this->Regions)
+  {
+    t.Accepted += region.Inserted;
+    for (std::int32_t k = region.EndSlot - 1; k >= region.NextSlot; --k)
+    {
+      std::fill_n(t.Origins.begin() + 3 * k, 3, Free);
+      std::fill_n(t.Twins.begin() + 3 * k, 3, -1);
+      t.FreeTriangles.push_back(k);
     }
   }
   // The seam is legalized whatever the regions saw (no short-circuit here).
-  const bool seamCocircular = this->LegalizeEdges(seamEdges);
-  this->Serial.SawCocircular |=
-    seamCocircular || regions[0].SawCocircular || regions[1].SawCocircular;
-  this->Serial.LastTriangle = regions[0].LastTriangle;
+  const bool seamCocircular = t.LegalizeEdges(this->SeamEdges);
+  t.Serial.SawCocircular |=
+    seamCocircular || this->Regions[0].SawCocircular || this->Regions[1].SawCocircular;
+  t.Serial.LastTriangle = this->Regions[0].LastTriangle;
   // The deferred points, along the curve: they lie near the seam and outside the sample's hull
   // (all around the batch), or anywhere on a side given up, and walking to them in their rounds'
   // order took 13 steps each at 1M uniform points (5 along the curve), 10.6 ms against 5.3.
-  std::vector<std::int32_t> deferred = std::move(regions[0].Deferred);
-  deferred.insert(deferred.end(), regions[1].Deferred.begin(), regions[1].Deferred.end());
-  insertAlongCurve(deferred);
-  this->CompactFreeTriangles();
-  return true;
+  std::vector<std::int32_t> deferred = std::move(this->Regions[0].Deferred);
+  deferred.insert(
+    deferred.end(), this->Regions[1].Deferred.begin(), this->Regions[1].Deferred.end());
+  this->InsertAlongCurve(deferred);
+  t.CompactFreeTriangles();
 }
 
 // Lawson's flip algorithm from the given half-edges: flips every edge whose far apex lies strictly
