@@ -1801,12 +1801,16 @@ void DirichletTessellation::ApplyPlan(const std::vector<Ear>& plan,
   }
   for (std::size_t k = plan.size(); k < slots.size(); ++k)
   {
-    const std::int32_t t = slots[k];
-    this->Origins[3 * t] = this->Origins[3 * t + 1] = this->Origins[3 * t + 2] = Free;
-    this->Twins[3 * t] = this->Twins[3 * t + 1] = this->Twins[3 * t + 2] = -1;
-    this->FreeTriangles.push_back(t);
+    this->FreeTriangle(slots[k]);
   }
   this->Serial.LastTriangle = slots[0];
+}
+
+void DirichletTessellation::FreeTriangle(std::int32_t t)
+{
+  this->Origins[3 * t] = this->Origins[3 * t + 1] = this->Origins[3 * t + 2] = Free;
+  this->Twins[3 * t] = this->Twins[3 * t + 1] = this->Twins[3 * t + 2] = -1;
+  this->FreeTriangles.push_back(t);
 }
 
 // Removes a hull vertex v without rebuilding. Its star is the real triangles (v, n_i, n_i+1)
@@ -1839,7 +1843,37 @@ void DirichletTessellation::ApplyPlan(const std::vector<Ear>& plan,
 // ghosts, h = number of new hull edges), so two are recycled.
 bool DirichletTessellation::RemoveHullVertex(std::int32_t edge)
 {
-  // Start at the half-edge of the ghost triangle (v, G, a).
+  HullStar star;
+  if (!this->ReadHullStar(edge, star))
+  {
+    return false;
+  }
+  const std::vector<std::size_t> hull = ConvexChain(this->Coordinates, star.Chain);
+  const std::size_t k = star.Chain.size() - 1, h = hull.size() - 1;
+  for (std::size_t s = 0; s < h; ++s)
+  {
+    if (hull[s + 1] == hull[s] + 1 && this->IsGhostTriangle(star.Outer[hull[s]] / 3))
+    {
+      return false; // a hull edge on both sides: the rest is collinear
+    }
+  }
+  std::vector<Ear> plan, ghosts;
+  if (!this->PlanHullRemoval(star, hull, plan, ghosts))
+  {
+    return false; // rebuilding is always correct
+  }
+  this->WriteHullRemoval(star, plan, ghosts);
+  if (this->TrackingCocircular)
+  {
+    this->Serial.SawCocircular = this->AnyCocircularNeighbour(star.Slots.data(), k - h);
+  }
+  return true;
+}
+
+// v's star from the half-edge of the ghost triangle (v, G, a): false when v is no hull vertex
+// or its chain is too short.
+bool DirichletTessellation::ReadHullStar(std::int32_t edge, HullStar& star) const
+{
   std::int32_t e0 = edge;
   while (this->Origins[Next(e0)] != Ghost)
   {
@@ -1849,34 +1883,33 @@ bool DirichletTessellation::RemoveHullVertex(std::int32_t edge)
       return false; // not a hull vertex (cannot happen: RemoveInteriorVertex handled it)
     }
   }
-  std::vector<std::int32_t> chain; // n_0 .. n_k
-  std::vector<std::int32_t> outer; // outer[i]: twin of n_i -> n_i+1 (outside the star)
-  std::vector<std::int32_t> slots{ e0 / 3 };
-  const std::int32_t twinBeforeA = this->Twins[Next(e0)]; // a -> G of the ghost before a
-  std::int32_t twinAfterB = -1;                           // G -> b of the ghost after b
+  star.Slots.assign(1, e0 / 3);
+  star.TwinBeforeA = this->Twins[Next(e0)]; // a -> G of the ghost before a
+  star.TwinAfterB = -1;
   for (std::int32_t e = this->RingNext(e0); e != e0; e = this->RingNext(e))
   {
-    slots.push_back(e / 3);
-    chain.push_back(this->Origins[Next(e)]);
+    star.Slots.push_back(e / 3);
+    star.Chain.push_back(this->Origins[Next(e)]);
     if (this->Origins[Prev(e)] == Ghost)
     {
-      twinAfterB = this->Twins[Next(e)]; // e / 3 is (v, b, G)
+      star.TwinAfterB = this->Twins[Next(e)]; // e / 3 is (v, b, G)
     }
     else
     {
-      outer.push_back(this->Twins[Next(e)]);
+      star.Outer.push_back(this->Twins[Next(e)]);
     }
   }
-  const std::size_t k = chain.size() - 1;
-  if (twinAfterB < 0 || k < 1 || outer.size() != k)
-  {
-    return false;
-  }
+  const std::size_t k = star.Chain.size() - 1;
+  return star.TwinAfterB >= 0 && k >= 1 && star.Outer.size() == k;
+}
 
-  // The new hull from a to b, as chain positions.
-  const std::vector<Point2>& pts = this->Coordinates;
+// The new hull from a to b, as chain positions: a stack scan in chain order that pops a vertex
+// where the chain turns left (strictly).
+std::vector<std::size_t> DirichletTessellation::ConvexChain(const std::vector<Point2>& pts,
+  const std::vector<std::int32_t>& chain)
+{
   std::vector<std::size_t> hull;
-  for (std::size_t i = 0; i <= k; ++i)
+  for (std::size_t i = 0; i < chain.size(); ++i)
   {
     while (hull.size() >= 2 &&
       Orient(pts[chain[hull[hull.size() - 2]]], pts[chain[hull.back()]], pts[chain[i]]) > 0)
@@ -1885,25 +1918,26 @@ bool DirichletTessellation::RemoveHullVertex(std::int32_t edge)
     }
     hull.push_back(i);
   }
-  const std::size_t h = hull.size() - 1;
-  for (std::size_t s = 0; s < h; ++s)
-  {
-    if (hull[s + 1] == hull[s] + 1 && this->IsGhostTriangle(outer[hull[s]] / 3))
-    {
-      return false; // a hull edge on both sides: the rest is collinear
-    }
-  }
+  return hull;
+}
 
-  // Ghost s takes slots[k - h + s]; the pockets' triangles take slots[0 ..].
-  std::vector<Ear> plan;
-  std::vector<Ear> ghosts;
+// The ghost triangle outside each new hull edge (ghost s takes slots[k - h + s]) and the pockets'
+// triangles (which take slots[0 ..]), into ghosts and plan; false when a pocket cannot be
+// triangulated.
+bool DirichletTessellation::PlanHullRemoval(const HullStar& star,
+  const std::vector<std::size_t>& hull,
+  std::vector<Ear>& plan,
+  std::vector<Ear>& ghosts) const
+{
+  const std::vector<std::int32_t>& chain = star.Chain;
+  const std::size_t k = chain.size() - 1, h = hull.size() - 1;
   for (std::size_t s = 0; s < h; ++s)
   {
     const std::size_t i = hull[s], j = hull[s + 1];
-    const std::int32_t ghost = slots[k - h + s];
+    const std::int32_t ghost = star.Slots[k - h + s];
     if (j == i + 1)
     {
-      ghosts.push_back({ chain[i], chain[j], Ghost, outer[i], -1, -1 });
+      ghosts.push_back({ chain[i], chain[j], Ghost, star.Outer[i], -1, -1 });
       continue;
     }
     // The closing edge n_j -> n_i faces the ghost's n_i -> n_j; a pocket triangle sets that twin.
@@ -1911,28 +1945,33 @@ bool DirichletTessellation::RemoveHullVertex(std::int32_t edge)
     std::vector<std::int32_t> ring(
       chain.begin() + std::ptrdiff_t(i), chain.begin() + std::ptrdiff_t(j) + 1);
     std::vector<std::int32_t> ringOuter(
-      outer.begin() + std::ptrdiff_t(i), outer.begin() + std::ptrdiff_t(j));
+      star.Outer.begin() + std::ptrdiff_t(i), star.Outer.begin() + std::ptrdiff_t(j));
     ringOuter.push_back(3 * ghost);
-    if (!this->TriangulateHole(ring, ringOuter, slots, plan.size(), plan))
+    if (!this->TriangulateHole(ring, ringOuter, star.Slots, plan.size(), plan))
     {
-      return false; // rebuilding is always correct
+      return false;
     }
   }
-  if (plan.size() != k - h)
-  {
-    return false; // cannot happen
-  }
-  // Ghosts first (their mutual twins and those towards the hull beyond a and b), then the
-  // pockets, which set the twins of the ghosts' inner edges.
+  return plan.size() == k - h; // (cannot fail)
+}
+
+// Ghosts first (their mutual twins and those towards the hull beyond a and b), then the pockets,
+// which set the twins of the ghosts' inner edges; the star's two slots left over are freed.
+void DirichletTessellation::WriteHullRemoval(const HullStar& star,
+  const std::vector<Ear>& plan,
+  const std::vector<Ear>& ghosts)
+{
+  const std::vector<std::int32_t>& slots = star.Slots;
+  const std::size_t k = star.Chain.size() - 1, h = ghosts.size();
   for (std::size_t s = 0; s < h; ++s)
   {
     const Ear& g = ghosts[s];
     const std::int32_t before =
-      s == 0 ? twinBeforeA : 3 * slots[k - h + s - 1] + 1; // p -> G of the previous ghost
+      s == 0 ? star.TwinBeforeA : 3 * slots[k - h + s - 1] + 1; // p -> G of the previous ghost
     this->SetTriangle(slots[k - h + s], g.A, g.B, Ghost, g.TwinA, -1, before);
   }
-  this->Twins[3 * slots[k - 1] + 1] = twinAfterB;
-  this->Twins[twinAfterB] = 3 * slots[k - 1] + 1;
+  this->Twins[3 * slots[k - 1] + 1] = star.TwinAfterB;
+  this->Twins[star.TwinAfterB] = 3 * slots[k - 1] + 1;
   for (std::size_t t = 0; t < k - h; ++t)
   {
     const Ear& ear = plan[t];
@@ -1940,17 +1979,9 @@ bool DirichletTessellation::RemoveHullVertex(std::int32_t edge)
   }
   for (std::size_t t = k; t < slots.size(); ++t)
   {
-    const std::int32_t free = slots[t];
-    this->Origins[3 * free] = this->Origins[3 * free + 1] = this->Origins[3 * free + 2] = Free;
-    this->Twins[3 * free] = this->Twins[3 * free + 1] = this->Twins[3 * free + 2] = -1;
-    this->FreeTriangles.push_back(free);
+    this->FreeTriangle(slots[t]);
   }
   this->Serial.LastTriangle = slots[0];
-  if (this->TrackingCocircular)
-  {
-    this->Serial.SawCocircular = this->AnyCocircularNeighbour(slots.data(), k - h);
-  }
-  return true;
 }
 
 // When the points left are collinear (or an ear search fails, which exact predicates exclude),

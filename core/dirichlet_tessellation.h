@@ -360,6 +360,24 @@ private:
   void ApplyPlan(const std::vector<Ear>& plan, const std::vector<std::int32_t>& slots);
   bool RemoveInteriorVertex(std::int32_t edge);
   bool RemoveHullVertex(std::int32_t edge);
+  /// A hull vertex v's star: its chain of neighbours a = n_0 .. n_k = b, the twins outside the
+  /// chain's edges, the star's triangles, and the twins of the ghosts' edges beyond a and b.
+  struct HullStar
+  {
+    std::vector<std::int32_t> Chain, Outer, Slots;
+    std::int32_t TwinBeforeA = -1, TwinAfterB = -1;
+  };
+  bool ReadHullStar(std::int32_t edge, HullStar& star) const;
+  static std::vector<std::size_t> ConvexChain(const std::vector<Point2>& pts,
+    const std::vector<std::int32_t>& chain);
+  bool PlanHullRemoval(const HullStar& star,
+    const std::vector<std::size_t>& hull,
+    std::vector<Ear>& plan,
+    std::vector<Ear>& ghosts) const;
+  void WriteHullRemoval(const HullStar& star,
+    const std::vector<Ear>& plan,
+    const std::vector<Ear>& ghosts);
+  void FreeTriangle(std::int32_t t); ///< marks triangle t free, for reuse
   void RebuildWithout(std::int32_t id);
   bool AnyCocircularNeighbour(const std::int32_t* triangles, std::size_t count) const;
   void BeginTrackedChange();

@@ -396,9 +396,7 @@ void DirichletTessellation::TwoRegionBuild::Join()
     t.Accepted += region.Inserted;
     for (std::int32_t k = region.EndSlot - 1; k >= region.NextSlot; --k)
     {
-      std::fill_n(t.Origins.begin() + 3 * k, 3, Free);
-      std::fill_n(t.Twins.begin() + 3 * k, 3, -1);
-      t.FreeTriangles.push_back(k);
+      t.FreeTriangle(k);
     }
   }
   // The seam is legalized whatever the regions saw (no short-circuit here).
