@@ -723,56 +723,15 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Region& regi
   const Point2* const pts = this->Coordinates.data();
   const std::int32_t* const org = this->Origins.data();
   const std::int32_t* const twin = this->Twins.data();
-  std::int32_t t = region.LastTriangle;
-  if (org[3 * t] == Ghost || org[3 * t + 1] == Ghost || org[3 * t + 2] == Ghost)
-  {
-    for (std::int32_t k = 0; k < 3; ++k)
-    {
-      const std::int32_t e = 3 * t + k;
-      if (org[e] != Ghost && org[Next(e)] != Ghost)
-      {
-        t = twin[e] / 3;
-        break;
-      }
-    }
-  }
+  std::int32_t t = this->RealTriangleNear(region.LastTriangle);
   // The edge of t the walk came through (p is strictly beyond it, seen from the triangle left),
   // as 0, 1, 2, or 3 at the start. The other two edges are tested in turn starting after it.
   static constexpr std::int32_t NextIndex[4] = { 1, 2, 0, 0 };
   int sides[3] = { 1, 1, 1 };
   std::int32_t crossed = -1;
+  if (!this->TestFirstTriangle(region, t, p, sides, crossed))
   {
-    // First triangle: all three edges.
-    const std::int32_t base = 3 * t;
-    if (!region.Owns(pts[org[base]]) || !region.Owns(pts[org[base + 1]]) ||
-      !region.Owns(pts[org[base + 2]]))
-    {
-      return Location::Foreign;
-    }
-    const Point2& a = pts[org[base]];
-    const Point2& b = pts[org[base + 1]];
-    const Point2& c = pts[org[base + 2]];
-    sides[0] = Orient(a, b, p);
-    if (sides[0] < 0)
-    {
-      crossed = base;
-    }
-    else
-    {
-      sides[1] = Orient(b, c, p);
-      if (sides[1] < 0)
-      {
-        crossed = base + 1;
-      }
-      else
-      {
-        sides[2] = Orient(c, a, p);
-        if (sides[2] < 0)
-        {
-          crossed = base + 2;
-        }
-      }
-    }
+    return Location::Foreign;
   }
   // Then each triangle is entered through one edge and has two left to test. Both are evaluated
   // and the edge to cross is selected without a branch on the (unpredictable) side signs; only
@@ -828,6 +787,79 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Region& regi
       break;
     }
   }
+  return this->WhereInTriangle(region, t, p, sides, edge);
+}
+
+// t, or a real triangle next to it when t is a ghost (the walk tests real triangles only).
+[[gnu::always_inline]] inline std::int32_t DirichletTessellation::RealTriangleNear(
+  std::int32_t t) const
+{
+  const std::int32_t* const org = this->Origins.data();
+  if (org[3 * t] == Ghost || org[3 * t + 1] == Ghost || org[3 * t + 2] == Ghost)
+  {
+    for (std::int32_t k = 0; k < 3; ++k)
+    {
+      const std::int32_t e = 3 * t + k;
+      if (org[e] != Ghost && org[Next(e)] != Ghost)
+      {
+        return this->Twins[e] / 3;
+      }
+    }
+  }
+  return t;
+}
+
+// The walk's first triangle: all three edges tested, in order, until p is strictly beyond one
+// (crossed; -1 when none is); false when the region does not own t.
+[[gnu::always_inline]] inline bool DirichletTessellation::TestFirstTriangle(const Region& region,
+  std::int32_t t,
+  const Point2& p,
+  int* sides,
+  std::int32_t& crossed) const
+{
+  const Point2* const pts = this->Coordinates.data();
+  const std::int32_t* const org = this->Origins.data();
+  const std::int32_t base = 3 * t;
+  if (!region.Owns(pts[org[base]]) || !region.Owns(pts[org[base + 1]]) ||
+    !region.Owns(pts[org[base + 2]]))
+  {
+    return false;
+  }
+  const Point2& a = pts[org[base]];
+  const Point2& b = pts[org[base + 1]];
+  const Point2& c = pts[org[base + 2]];
+  sides[0] = Orient(a, b, p);
+  if (sides[0] < 0)
+  {
+    crossed = base;
+    return true;
+  }
+  sides[1] = Orient(b, c, p);
+  if (sides[1] < 0)
+  {
+    crossed = base + 1;
+    return true;
+  }
+  sides[2] = Orient(c, a, p);
+  if (sides[2] < 0)
+  {
+    crossed = base + 2;
+  }
+  return true;
+}
+
+// Where p lies in triangle t, which the walk ended in (sides: p's side of each edge, none
+// negative): strictly inside, on a vertex, or on an edge (Foreign when splitting that edge would
+// split a triangle across it that the region does not own).
+[[gnu::always_inline]] inline DirichletTessellation::Location
+DirichletTessellation::WhereInTriangle(const Region& region,
+  std::int32_t t,
+  const Point2& p,
+  const int* sides,
+  std::int32_t& edge) const
+{
+  const Point2* const pts = this->Coordinates.data();
+  const std::int32_t* const org = this->Origins.data();
   const std::int32_t base = 3 * t;
   if (sides[0] != 0 && sides[1] != 0 && sides[2] != 0)
   {
@@ -848,7 +880,7 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Region& regi
     {
       // Splitting the edge also splits the triangle across it.
       edge = base + k;
-      const std::int32_t across = org[Prev(twin[edge])];
+      const std::int32_t across = org[Prev(this->Twins[edge])];
       return (across == Ghost ? region.GrowsHull() : region.Owns(pts[across])) ? Location::OnEdge
                                                                                : Location::Foreign;
     }

@@ -287,6 +287,18 @@ private:
     const Point2& p,
     std::int32_t& edge,
     std::int64_t* walked = nullptr) const;
+  // Locate's parts (inline: as calls, they added 1.2% to a build's instructions).
+  inline std::int32_t RealTriangleNear(std::int32_t t) const;
+  inline bool TestFirstTriangle(const Region& region,
+    std::int32_t t,
+    const Point2& p,
+    int* sides,
+    std::int32_t& crossed) const;
+  inline Location WhereInTriangle(const Region& region,
+    std::int32_t t,
+    const Point2& p,
+    const int* sides,
+    std::int32_t& edge) const;
   void SplitTriangle(Region& region, std::int32_t t, std::int32_t p);
   void SplitEdge(Region& region, std::int32_t e, std::int32_t p);
   int EdgeTest(std::int32_t x, std::int32_t y, std::int32_t p, std::int32_t q) const;
