@@ -111,30 +111,38 @@ void AppendPixelPolyline(const RidgeContours& contours,
   lines.Offsets.push_back(static_cast<int>(lines.Points.size()));
 }
 
-// One RaG curve per contour. Points sharing a projection pixel share a node, so they enter as
-// their mean with their count as weight (the same curve, evaluated per pixel instead of per
-// point); points whose node was extended past a contour end enter one by one. The means are summed
-// scaled into (-1, 1) by a power of two for x and one for y (exact but where a coordinate falls
-// below 2^-1022 of its axis's largest): 300 copies of a point at 9e305 summed to infinity, and the
-// run failed on a "RaG control point" with an infinite coordinate.
-void FitCurves(const std::vector<Point2>& points,
+/// The points FitCurves fits, gathered per contour pixel: per position in the contours' Pixels,
+/// the sums of the coordinates of the points projected on it (scaled by 2^-XExponent in x and
+/// 2^-YExponent in y) and their count; per contour, the points whose node was extended past one
+/// of its ends.
+struct PixelSums
+{
+  int XExponent = 0, YExponent = 0;
+  std::vector<double> SumX, SumY, Count;
+  std::vector<std::vector<std::size_t>> Extended;
+};
+
+// The means are summed scaled into (-1, 1) by a power of two for x and one for y (exact but where
+// a coordinate falls below 2^-1022 of its axis's largest): 300 copies of a point at 9e305 summed
+// to infinity, and the run failed on a "RaG control point" with an infinite coordinate.
+PixelSums SumPointsByPixel(const std::vector<Point2>& points,
   const RidgeContours& contours,
-  const PointPartition& partition,
-  const RidgeGroupingSettings& settings,
-  RidgeGroupingResult& result)
+  const PointPartition& partition)
 {
   const std::size_t positions = contours.Pixels.size();
-  std::vector<double> sumX(positions, 0.0);
-  std::vector<double> sumY(positions, 0.0);
-  std::vector<double> count(positions, 0.0);
-  std::vector<std::vector<std::size_t>> extended(contours.Count());
+  PixelSums sums;
+  sums.SumX.assign(positions, 0.0);
+  sums.SumY.assign(positions, 0.0);
+  sums.Count.assign(positions, 0.0);
+  sums.Extended.resize(std::size_t(contours.Count()));
   double largestX = 0.0, largestY = 0.0;
   for (const Point2& p : points)
   {
     largestX = std::max(largestX, std::fabs(p.x));
     largestY = std::max(largestY, std::fabs(p.y));
   }
-  const int xExponent = ExponentAbove(largestX), yExponent = ExponentAbove(largestY);
+  sums.XExponent = ExponentAbove(largestX);
+  sums.YExponent = ExponentAbove(largestY);
   for (std::size_t k = 0; k < points.size(); ++k)
   {
     const int position = partition.Projection[k];
@@ -144,37 +152,121 @@ void FitCurves(const std::vector<Point2>& points,
     }
     if (partition.Extended[k])
     {
-      extended[partition.GroupId[k]].push_back(k);
+      sums.Extended[std::size_t(partition.GroupId[k])].push_back(k);
       continue;
     }
-    sumX[position] += std::ldexp(points[k].x, -xExponent);
-    sumY[position] += std::ldexp(points[k].y, -yExponent);
-    count[position] += 1.0;
+    sums.SumX[std::size_t(position)] += std::ldexp(points[k].x, -sums.XExponent);
+    sums.SumY[std::size_t(position)] += std::ldexp(points[k].y, -sums.YExponent);
+    sums.Count[std::size_t(position)] += 1.0;
   }
+  return sums;
+}
+
+/// What a RaG curve is fitted to: a node, a control point and a weight per member.
+struct CurveMembers
+{
+  std::vector<double> Nodes;
+  std::vector<Point2> Controls;
+  std::vector<double> Weights;
+};
+
+/// Contour c's members: the mean of each of its pixels' points, weighted by their count, then
+/// the points extended past its ends, one by one.
+CurveMembers MembersOf(int c,
+  const std::vector<Point2>& points,
+  const RidgeContours& contours,
+  const PointPartition& partition,
+  const PixelSums& sums)
+{
+  CurveMembers members;
+  for (int k = contours.Offsets[c]; k < contours.Offsets[c + 1]; ++k)
+  {
+    if (sums.Count[k] > 0.0)
+    {
+      members.Nodes.push_back(std::clamp(
+        partition.NodeOrigin[c] + partition.ArcLength[k] * partition.NodePerPixel[c], 0.0, 1.0));
+      members.Controls.push_back({ std::ldexp(sums.SumX[k] / sums.Count[k], sums.XExponent),
+        std::ldexp(sums.SumY[k] / sums.Count[k], sums.YExponent) });
+      members.Weights.push_back(sums.Count[k]);
+    }
+  }
+  for (std::size_t k : sums.Extended[c])
+  {
+    members.Nodes.push_back(partition.Node[k]);
+    members.Controls.push_back(points[k]);
+    members.Weights.push_back(1.0);
+  }
+  return members;
+}
+
+/// Contour c's curve through its members, sampled CurveSamplesPerPixel times per pixel of the
+/// contour (16 to 100,000 samples), appended to output 2.
+void AppendCurve(int c,
+  const CurveMembers& members,
+  const RidgeContours& contours,
+  const RidgeGroupingSettings& settings,
+  RidgeGroupingResult& result)
+{
+  const double samples = std::ceil(settings.CurveSamplesPerPixel * contours.Lengths[c]);
+  const int sampleCount = static_cast<int>(std::clamp(samples, 16.0, 100000.0));
+  const std::vector<Point2> curve = SampleRationalGaussianCurve(members.Nodes,
+    members.Controls,
+    members.Weights,
+    settings.CurveSigma,
+    contours.Closed[c] != 0,
+    sampleCount);
+  result.Curves.Points.insert(result.Curves.Points.end(), curve.begin(), curve.end());
+  result.Curves.Offsets.push_back(static_cast<int>(result.Curves.Points.size()));
+  result.CurveGroupId.push_back(c);
+  result.CurveClosed.push_back(contours.Closed[c]);
+}
+
+/// A warning naming the groups of a single point (none: no warning), which get no curve.
+void NameSinglePointGroups(const std::vector<int>& single,
+  const std::vector<Point2>& points,
+  const RidgeContours& contours,
+  const PointPartition& partition,
+  RidgeGroupingResult& result)
+{
+  if (single.empty())
+  {
+    return;
+  }
+  // Each named with its point, which a caller can trace to its input (a file's line).
+  std::vector<std::size_t> pointOf(std::size_t(contours.Count()), 0);
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    if (partition.Projection[k] >= 0)
+    {
+      pointOf[std::size_t(partition.GroupId[k])] = k;
+    }
+  }
+  result.Warnings.push_back(std::to_string(single.size()) +
+    " group(s) of a single point get no curve (a curve needs two points): group(s) " +
+    ListNames(single.size(),
+      [&](std::size_t k)
+      {
+        return std::to_string(single[k]) + " (point " +
+          std::to_string(pointOf[std::size_t(single[k])]) + ")";
+      }));
+}
+
+// One RaG curve per contour. Points sharing a projection pixel share a node, so they enter as
+// their mean with their count as weight (the same curve, evaluated per pixel instead of per
+// point); points whose node was extended past a contour end enter one by one (SumPointsByPixel
+// tells how the means are summed without overflow).
+void FitCurves(const std::vector<Point2>& points,
+  const RidgeContours& contours,
+  const PointPartition& partition,
+  const RidgeGroupingSettings& settings,
+  RidgeGroupingResult& result)
+{
+  const PixelSums sums = SumPointsByPixel(points, contours, partition);
   std::vector<int> single; // groups of one point: no curve to fit
   for (int c = 0; c < contours.Count(); ++c)
   {
-    std::vector<double> nodes;
-    std::vector<Point2> controls;
-    std::vector<double> weights;
-    for (int k = contours.Offsets[c]; k < contours.Offsets[c + 1]; ++k)
-    {
-      if (count[k] > 0.0)
-      {
-        nodes.push_back(std::clamp(
-          partition.NodeOrigin[c] + partition.ArcLength[k] * partition.NodePerPixel[c], 0.0, 1.0));
-        controls.push_back(
-          { std::ldexp(sumX[k] / count[k], xExponent), std::ldexp(sumY[k] / count[k], yExponent) });
-        weights.push_back(count[k]);
-      }
-    }
-    for (std::size_t k : extended[c])
-    {
-      nodes.push_back(partition.Node[k]);
-      controls.push_back(points[k]);
-      weights.push_back(1.0);
-    }
-    const double members = std::accumulate(weights.begin(), weights.end(), 0.0);
+    const CurveMembers curve = MembersOf(c, points, contours, partition, sums);
+    const double members = std::accumulate(curve.Weights.begin(), curve.Weights.end(), 0.0);
     if (members < 2.0)
     {
       if (members > 0.0)
@@ -183,35 +275,9 @@ void FitCurves(const std::vector<Point2>& points,
       }
       continue;
     }
-    const double samples = std::ceil(settings.CurveSamplesPerPixel * contours.Lengths[c]);
-    const int sampleCount = static_cast<int>(std::clamp(samples, 16.0, 100000.0));
-    const std::vector<Point2> curve = SampleRationalGaussianCurve(
-      nodes, controls, weights, settings.CurveSigma, contours.Closed[c] != 0, sampleCount);
-    result.Curves.Points.insert(result.Curves.Points.end(), curve.begin(), curve.end());
-    result.Curves.Offsets.push_back(static_cast<int>(result.Curves.Points.size()));
-    result.CurveGroupId.push_back(c);
-    result.CurveClosed.push_back(contours.Closed[c]);
+    AppendCurve(c, curve, contours, settings, result);
   }
-  if (!single.empty())
-  {
-    // Each named with its point, which a caller can trace to its input (a file's line).
-    std::vector<std::size_t> pointOf(std::size_t(contours.Count()), 0);
-    for (std::size_t k = 0; k < points.size(); ++k)
-    {
-      if (partition.Projection[k] >= 0)
-      {
-        pointOf[std::size_t(partition.GroupId[k])] = k;
-      }
-    }
-    result.Warnings.push_back(std::to_string(single.size()) +
-      " group(s) of a single point get no curve (a curve needs two points): group(s) " +
-      ListNames(single.size(),
-        [&](std::size_t k)
-        {
-          return std::to_string(single[k]) + " (point " +
-            std::to_string(pointOf[std::size_t(single[k])]) + ")";
-        }));
-  }
+  NameSinglePointGroups(single, points, contours, partition, result);
 }
 
 /// A reach as warnings give it: "4 basis widths (12.04 in the points' units)", for a basis
@@ -755,6 +821,148 @@ void NameNearContourEnds(const GroupedPoints& grouped,
       }));
 }
 
+/// A contour pixel as NameFoldedContours compares it with the others.
+struct Station
+{
+  int Contour;
+  double Arc; // pixels along the contour from its first pixel (the partition's ArcLength)
+  Point2 At;
+};
+
+/// The stations of the contours NameFoldedContours looks at, and per contour its length when
+/// closed (0: open, or left out).
+struct ContourStations
+{
+  std::vector<Station> Stations;
+  std::vector<double> LoopLength;
+};
+
+/// Every pixel of every contour but those nearlyClosed, as a station.
+ContourStations StationsOf(const GroupedPoints& grouped,
+  const std::vector<std::uint8_t>& nearlyClosed)
+{
+  const RidgeContours& contours = grouped.Contours;
+  ContourStations stations;
+  stations.LoopLength.assign(std::size_t(contours.Count()), 0.0); // 0: open
+  for (int c = 0; c < contours.Count(); ++c)
+  {
+    if (nearlyClosed[std::size_t(c)])
+    {
+      continue; // (its ends may run past each other: named already)
+    }
+    for (int k = contours.Offsets[c]; k < contours.Offsets[c + 1]; ++k)
+    {
+      stations.Stations.push_back({ c,
+        grouped.Partition.ArcLength[std::size_t(k)],
+        grouped.PixelPoint(contours.Pixels[std::size_t(k)]) });
+    }
+    stations.LoopLength[std::size_t(c)] =
+      contours.Closed[c] ? contours.Lengths[std::size_t(c)] : 0.0;
+  }
+  return stations;
+}
+
+/// Stations bucketed in square cells of Side pixels over the grid, Columns by Rows: the indices
+/// of the stations in each cell, row by row (BucketStations).
+struct StationCells
+{
+  double Side = 0.0;
+  int Columns = 0, Rows = 0;
+  std::vector<std::vector<std::size_t>> Cells;
+
+  /// The column and row of the cell holding p (pixel units).
+  std::pair<int, int> CellOf(const Point2& p) const
+  {
+    const int i = std::min(this->Columns - 1, std::max(0, int(p.x / this->Side)));
+    const int j = std::min(this->Rows - 1, std::max(0, int(p.y / this->Side)));
+    return std::make_pair(i, j);
+  }
+  std::size_t IndexOf(int i, int j) const
+  {
+    return std::size_t(j) * std::size_t(this->Columns) + std::size_t(i);
+  }
+  const std::vector<std::size_t>& Cell(int i, int j) const
+  {
+    return this->Cells[this->IndexOf(i, j)];
+  }
+};
+
+StationCells BucketStations(const std::vector<Station>& stations,
+  const PixelGrid& grid,
+  double reach)
+{
+  // Stations bucketed in square cells of side at least reach: a pair within reach lies in
+  // neighbouring cells. At least 4 pixels: a Width below one pixel (warned of, not refused) made
+  // cells of a fraction of a pixel, and their empty lists took gigabytes.
+  StationCells cells;
+  cells.Side = std::max(reach, 4.0);
+  cells.Columns = std::max(1, int(std::ceil(grid.Width / cells.Side)));
+  cells.Rows = std::max(1, int(std::ceil(grid.Height / cells.Side)));
+  cells.Cells.resize(std::size_t(cells.Columns) * std::size_t(cells.Rows));
+  for (std::size_t k = 0; k < stations.size(); ++k)
+  {
+    const auto [i, j] = cells.CellOf(stations[k].At);
+    cells.Cells[cells.IndexOf(i, j)].push_back(k);
+  }
+  return cells;
+}
+
+/// A contour's closest fold: stations A and B, Across pixels apart and Along pixels apart along
+/// the contour (an infinite Across: none found).
+struct Fold
+{
+  double Across = std::numeric_limits<double>::infinity(), Along = 0.0;
+  Point2 A, B;
+};
+
+/// Takes stations u and v of one contour (of length loop when closed, else 0) as its fold when
+/// they lie within reach across and much further apart along it, and closer than fold.
+void ConsiderFold(const Station& u, const Station& v, double loop, double reach, Fold& fold)
+{
+  const double across = std::hypot(u.At.x - v.At.x, u.At.y - v.At.y);
+  const double along = loop > 0.0
+    ? std::min(std::abs(v.Arc - u.Arc), loop - std::abs(v.Arc - u.Arc))
+    : std::abs(v.Arc - u.Arc);
+  if (across <= reach && along >= 0.5 * Pi * across + reach && across < fold.Across)
+  {
+    fold = { across, along, u.At, v.At };
+  }
+}
+
+/// Per contour, its closest fold among the pairs of its stations in neighbouring cells.
+std::vector<Fold> ClosestFolds(const ContourStations& stations,
+  const StationCells& cells,
+  double reach,
+  int contourCount)
+{
+  std::vector<Fold> folds(static_cast<std::size_t>(contourCount));
+  for (std::size_t k = 0; k < stations.Stations.size(); ++k)
+  {
+    const Station& u = stations.Stations[k];
+    const auto [i, j] = cells.CellOf(u.At);
+    for (int nj = std::max(0, j - 1); nj <= std::min(cells.Rows - 1, j + 1); ++nj)
+    {
+      for (int ni = std::max(0, i - 1); ni <= std::min(cells.Columns - 1, i + 1); ++ni)
+      {
+        for (const std::size_t m : cells.Cell(ni, nj))
+        {
+          const Station& v = stations.Stations[m];
+          if (m <= k || v.Contour != u.Contour)
+          {
+            continue;
+          }
+          ConsiderFold(u,
+            v,
+            stations.LoopLength[std::size_t(u.Contour)],
+            reach,
+            folds[std::size_t(u.Contour)]);
+        }
+      }
+    }
+  }
+  return folds;
+}
+
 /// A warning naming the contours that pass within FoldWidths basis widths of themselves (d) where
 /// they are much further along themselves (s, the shorter way round a closed contour): s at least
 /// pi / 2 d + FoldWidths widths. Contours whose own ends FindNearEnds took for a closed
@@ -774,85 +982,14 @@ void NameFoldedContours(const GroupedPoints& grouped,
   const std::vector<std::uint8_t>& nearlyClosed,
   RidgeGroupingResult& result)
 {
-  const auto& [pixelPoints, contours, partition, grid, width] = grouped;
+  const PixelGrid& grid = grouped.Grid;
+  const double width = grouped.Width;
   const double reach = FoldWidths * width;
-  struct Station
-  {
-    int Contour;
-    double Arc; // pixels along the contour from its first pixel (the partition's ArcLength)
-    Point2 At;
-  };
-  std::vector<Station> stations;
-  std::vector<double> loopLength(std::size_t(contours.Count()), 0.0); // 0: open
-  for (int c = 0; c < contours.Count(); ++c)
-  {
-    if (nearlyClosed[std::size_t(c)])
-    {
-      continue; // (its ends may run past each other: named already)
-    }
-    for (int k = contours.Offsets[c]; k < contours.Offsets[c + 1]; ++k)
-    {
-      stations.push_back({ c,
-        partition.ArcLength[std::size_t(k)],
-        grouped.PixelPoint(contours.Pixels[std::size_t(k)]) });
-    }
-    loopLength[std::size_t(c)] = contours.Closed[c] ? contours.Lengths[std::size_t(c)] : 0.0;
-  }
-  // Stations bucketed in square cells of side at least reach: a pair within reach lies in
-  // neighbouring cells. At least 4 pixels: a Width below one pixel (warned of, not refused) made
-  // cells of a fraction of a pixel, and their empty lists took gigabytes.
-  const double side = std::max(reach, 4.0);
-  const int columns = std::max(1, int(std::ceil(grid.Width / side)));
-  const int rows = std::max(1, int(std::ceil(grid.Height / side)));
-  const auto cellOf = [&](const Point2& p)
-  {
-    const int i = std::min(columns - 1, std::max(0, int(p.x / side)));
-    const int j = std::min(rows - 1, std::max(0, int(p.y / side)));
-    return std::make_pair(i, j);
-  };
-  std::vector<std::vector<std::size_t>> cells(std::size_t(columns) * std::size_t(rows));
-  for (std::size_t k = 0; k < stations.size(); ++k)
-  {
-    const auto [i, j] = cellOf(stations[k].At);
-    cells[std::size_t(j) * std::size_t(columns) + std::size_t(i)].push_back(k);
-  }
-  struct Fold
-  {
-    double Across = std::numeric_limits<double>::infinity(), Along = 0.0;
-    Point2 A, B;
-  };
-  std::vector<Fold> folds(std::size_t(contours.Count()));
-  for (std::size_t k = 0; k < stations.size(); ++k)
-  {
-    const Station& u = stations[k];
-    const auto [i, j] = cellOf(u.At);
-    for (int nj = std::max(0, j - 1); nj <= std::min(rows - 1, j + 1); ++nj)
-    {
-      for (int ni = std::max(0, i - 1); ni <= std::min(columns - 1, i + 1); ++ni)
-      {
-        for (const std::size_t m : cells[std::size_t(nj) * std::size_t(columns) + std::size_t(ni)])
-        {
-          const Station& v = stations[m];
-          if (m <= k || v.Contour != u.Contour)
-          {
-            continue;
-          }
-          const double across = std::hypot(u.At.x - v.At.x, u.At.y - v.At.y);
-          const double loop = loopLength[std::size_t(u.Contour)];
-          const double along = loop > 0.0
-            ? std::min(std::abs(v.Arc - u.Arc), loop - std::abs(v.Arc - u.Arc))
-            : std::abs(v.Arc - u.Arc);
-          Fold& fold = folds[std::size_t(u.Contour)];
-          if (across <= reach && along >= 0.5 * Pi * across + reach && across < fold.Across)
-          {
-            fold = { across, along, u.At, v.At };
-          }
-        }
-      }
-    }
-  }
+  const ContourStations stations = StationsOf(grouped, nearlyClosed);
+  const StationCells cells = BucketStations(stations.Stations, grid, reach);
+  const std::vector<Fold> folds = ClosestFolds(stations, cells, reach, grouped.Contours.Count());
   std::vector<int> named;
-  for (int c = 0; c < contours.Count(); ++c)
+  for (int c = 0; c < grouped.Contours.Count(); ++c)
   {
     if (std::isfinite(folds[std::size_t(c)].Across))
     {
@@ -877,6 +1014,122 @@ void NameFoldedContours(const GroupedPoints& grouped,
           PlaceText(grid, fold.A) + " and " + PlaceText(grid, fold.B) + ", " +
           NumberText(std::round(10.0 * fold.Along / width) / 10.0) + " widths apart along it";
       }));
+}
+
+/// The points in pixel units, each within the grid.
+std::vector<Point2> PixelPointsOf(const std::vector<Point2>& points, const PixelGrid& grid)
+{
+  std::vector<Point2> pixelPoints(points.size());
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    pixelPoints[k] = ClampToGrid(grid.ToPixelUnits(points[k]), grid);
+  }
+  return pixelPoints;
+}
+
+/// Steps 1-2: the field of the points (pixel units) on the grid, and its error bound.
+void ComputeField(const std::vector<Point2>& pixelPoints,
+  const PixelGrid& grid,
+  const RidgeGroupingSettings& settings,
+  RidgeGroupingResult& result)
+{
+  result.Field = FastField(pixelPoints, grid.Width, grid.Height, settings.Basis, settings.Width);
+  result.FieldErrorBound = FastFieldErrorBound(
+    settings.Basis, settings.Width, pixelPoints.size(), grid.Width, grid.Height);
+}
+
+/// How ridges become contours for these settings.
+RidgeContourSettings ContourSettingsFor(const RidgeGroupingSettings& settings)
+{
+  RidgeContourSettings contourSettings;
+  contourSettings.Join = settings.Join;
+  contourSettings.MinimumLength = settings.MinimumContourLength;
+  // Two basis widths: ridges closer than about that merge into one, so a saddle path between
+  // two separate ridges is longer (with four widths, noisy lines 4.3 widths apart were joined
+  // across into Z-shaped groups).
+  contourSettings.MaximumBridgeLength = MergedCurvesWidths * settings.Width;
+  // A ridge loop shorter than a circle of one basis width is no closed curve of the data: the
+  // field merges such a loop of points into one peak. Such loops come from the field's shape
+  // where a curve ends or bends (11-29 pixel loops at a basis width of 8 took a road's last 60
+  // points into a closed group, and broke an ellipse's tips into small closed groups); dropped,
+  // their points join the contours nearby.
+  contourSettings.MinimumLoopLength = 2.0 * Pi * settings.Width;
+  return contourSettings;
+}
+
+/// Steps 3-6: the field's minor and major ridges (output 3) and the contours traced along them,
+/// with a warning of why there is none when there is none.
+RidgeContours TraceContours(const PixelGrid& grid,
+  const RidgeGroupingSettings& settings,
+  RidgeGroupingResult& result)
+{
+  // A millionth of the peak: a Gaussian basis is that small 5.3 widths from its point, so no
+  // ridge supported by the data is lost, while FFT rounding noise (1e-16 relative) is excluded.
+  const double peak = *std::max_element(result.Field.begin(), result.Field.end());
+  RidgeMasks masks =
+    ExtractRidges(result.Field, grid.Width, grid.Height, 1e-6 * peak, GradientReach);
+  const RidgeContourSettings contourSettings = ContourSettingsFor(settings);
+  RidgeContours contours = TraceRidgeContours(
+    masks.Minor, masks.Major, grid.Width, grid.Height, contourSettings, &result.Field);
+  result.MinorRidge = std::move(masks.Minor);
+  result.MajorRidge = std::move(masks.Major);
+  if (contours.Count() == 0)
+  {
+    result.Warnings.push_back(NoContourWarning(contours, contourSettings, settings.Width, grid));
+  }
+  return contours;
+}
+
+/// Each point's distance to its contour, and the warnings on the groups: far points, points
+/// without order, contour ends near each other, folded contours, contours away from the points.
+void CheckGroups(const GroupedPoints& grouped, double maximumGap, RidgeGroupingResult& result)
+{
+  MeasureContourDistances(grouped, result);
+  NameUnorderedPoints(
+    PointsWithoutOrder(
+      grouped.PixelPoints, grouped.Contours, grouped.Partition, grouped.Grid.Width, maximumGap),
+    grouped.Grid,
+    maximumGap,
+    result);
+  const EndPairs endPairs = FindNearEnds(grouped, OpenContourEnds(grouped));
+  NameNearContourEnds(grouped, endPairs.Named, result);
+  NameFoldedContours(grouped, endPairs.NearlyClosed, result);
+  NameContoursAwayFromPoints(grouped, result);
+}
+
+/// Output 1: the contours' pixel centres in input coordinates, whether closed, and lengths.
+void OutputContours(const RidgeContours& contours,
+  const PixelGrid& grid,
+  RidgeGroupingResult& result)
+{
+  for (int c = 0; c < contours.Count(); ++c)
+  {
+    AppendPixelPolyline(contours, c, grid, result.Contours);
+    result.ContourClosed.push_back(contours.Closed[c]);
+    result.ContourLength.push_back(contours.Lengths[c] * grid.Spacing);
+  }
+}
+
+/// Steps 7-8: the points grouped by the contours and ordered along them (output 0, with the
+/// checks on the groups), the contours (output 1) and a curve per group (output 2).
+void GroupAndFit(const std::vector<Point2>& points,
+  const std::vector<Point2>& pixelPoints,
+  const RidgeContours& contours,
+  const PixelGrid& grid,
+  const RidgeGroupingSettings& settings,
+  RidgeGroupingResult& result)
+{
+  // Points past a contour end continue it while each is within two basis widths of the one
+  // before: points further apart along a curve no longer make one ridge of the field.
+  const double maximumGap = 2.0 * settings.Width;
+  const PointPartition partition =
+    PartitionPoints(pixelPoints, contours, grid.Width, grid.Height, maximumGap);
+  result.GroupId = partition.GroupId;
+  result.Node = partition.Node;
+  const GroupedPoints grouped{ pixelPoints, contours, partition, grid, settings.Width };
+  CheckGroups(grouped, maximumGap, result);
+  OutputContours(contours, grid, result);
+  FitCurves(points, contours, partition, settings, result);
 }
 
 } // namespace
@@ -1030,27 +1283,10 @@ PixelGrid RidgeGrouping::ImageGridOf(const std::vector<Point2>& points) const
   return this->MakeGrid(points, this->ChosenImageSize(points, capped));
 }
 
-RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
+PixelGrid RidgeGrouping::ChooseImage(const std::vector<Point2>& points,
+  double extent,
+  RidgeGroupingResult& result) const
 {
-  CheckPoints(points);
-  RidgeGroupingResult result;
-  result.GroupId.assign(points.size(), -1);
-  result.Node.assign(points.size(), 0.0);
-  if (points.size() < 2)
-  {
-    result.Warnings.push_back("ridge grouping needs at least 2 points, got " +
-      std::to_string(points.size()) +
-      ": no group, contour or curve (the points are output 0, unassigned)");
-    return result;
-  }
-  const double extent = BoundsOf(points.data(), points.size()).LargerSide();
-  if (extent == 0.0)
-  {
-    std::fill(result.GroupId.begin(), result.GroupId.end(), 0);
-    result.Warnings.push_back("all points are identical: one group, no ridge and no curve");
-    return result;
-  }
-
   result.ImageSizeAutomatic = this->Settings.ImageSize == 0;
   bool capped = false;
   result.ImageSize = this->ChosenImageSize(points, capped);
@@ -1078,69 +1314,34 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
   result.Grid = grid;
   result.PixelSize = grid.Spacing;
   NameStretchingPoints(points, extent, grid, this->Settings.Width, result);
+  return grid;
+}
 
-  std::vector<Point2> pixelPoints(points.size());
-  for (std::size_t k = 0; k < points.size(); ++k)
+RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
+{
+  CheckPoints(points);
+  RidgeGroupingResult result;
+  result.GroupId.assign(points.size(), -1);
+  result.Node.assign(points.size(), 0.0);
+  if (points.size() < 2)
   {
-    pixelPoints[k] = ClampToGrid(grid.ToPixelUnits(points[k]), grid);
+    result.Warnings.push_back("ridge grouping needs at least 2 points, got " +
+      std::to_string(points.size()) +
+      ": no group, contour or curve (the points are output 0, unassigned)");
+    return result;
   }
-  result.Field =
-    FastField(pixelPoints, grid.Width, grid.Height, this->Settings.Basis, this->Settings.Width);
-  result.FieldErrorBound = FastFieldErrorBound(
-    this->Settings.Basis, this->Settings.Width, points.size(), grid.Width, grid.Height);
-
-  // A millionth of the peak: a Gaussian basis is that small 5.3 widths from its point, so no
-  // ridge supported by the data is lost, while FFT rounding noise (1e-16 relative) is excluded.
-  const double peak = *std::max_element(result.Field.begin(), result.Field.end());
-  RidgeMasks masks =
-    ExtractRidges(result.Field, grid.Width, grid.Height, 1e-6 * peak, GradientReach);
-  RidgeContourSettings contourSettings;
-  contourSettings.Join = this->Settings.Join;
-  contourSettings.MinimumLength = this->Settings.MinimumContourLength;
-  // Two basis widths: ridges closer than about that merge into one, so a saddle path between
-  // two separate ridges is longer (with four widths, noisy lines 4.3 widths apart were joined
-  // across into Z-shaped groups).
-  contourSettings.MaximumBridgeLength = MergedCurvesWidths * this->Settings.Width;
-  // A ridge loop shorter than a circle of one basis width is no closed curve of the data: the
-  // field merges such a loop of points into one peak. Such loops come from the field's shape
-  // where a curve ends or bends (11-29 pixel loops at a basis width of 8 took a road's last 60
-  // points into a closed group, and broke an ellipse's tips into small closed groups); dropped,
-  // their points join the contours nearby.
-  contourSettings.MinimumLoopLength = 2.0 * Pi * this->Settings.Width;
-  const RidgeContours contours = TraceRidgeContours(
-    masks.Minor, masks.Major, grid.Width, grid.Height, contourSettings, &result.Field);
-  result.MinorRidge = std::move(masks.Minor);
-  result.MajorRidge = std::move(masks.Major);
-  if (contours.Count() == 0)
+  const double extent = BoundsOf(points.data(), points.size()).LargerSide();
+  if (extent == 0.0)
   {
-    result.Warnings.push_back(
-      NoContourWarning(contours, contourSettings, this->Settings.Width, grid));
+    std::fill(result.GroupId.begin(), result.GroupId.end(), 0);
+    result.Warnings.push_back("all points are identical: one group, no ridge and no curve");
+    return result;
   }
-
-  // Points past a contour end continue it while each is within two basis widths of the one
-  // before: points further apart along a curve no longer make one ridge of the field.
-  const double maximumGap = 2.0 * this->Settings.Width;
-  const PointPartition partition =
-    PartitionPoints(pixelPoints, contours, grid.Width, grid.Height, maximumGap);
-  result.GroupId = partition.GroupId;
-  result.Node = partition.Node;
-  const GroupedPoints grouped{ pixelPoints, contours, partition, grid, this->Settings.Width };
-  MeasureContourDistances(grouped, result);
-  NameUnorderedPoints(PointsWithoutOrder(pixelPoints, contours, partition, grid.Width, maximumGap),
-    grid,
-    maximumGap,
-    result);
-  const EndPairs endPairs = FindNearEnds(grouped, OpenContourEnds(grouped));
-  NameNearContourEnds(grouped, endPairs.Named, result);
-  NameFoldedContours(grouped, endPairs.NearlyClosed, result);
-  NameContoursAwayFromPoints(grouped, result);
-  for (int c = 0; c < contours.Count(); ++c)
-  {
-    AppendPixelPolyline(contours, c, grid, result.Contours);
-    result.ContourClosed.push_back(contours.Closed[c]);
-    result.ContourLength.push_back(contours.Lengths[c] * grid.Spacing);
-  }
-  FitCurves(points, contours, partition, this->Settings, result);
+  const PixelGrid grid = this->ChooseImage(points, extent, result);
+  const std::vector<Point2> pixelPoints = PixelPointsOf(points, grid);
+  ComputeField(pixelPoints, grid, this->Settings, result);
+  const RidgeContours contours = TraceContours(grid, this->Settings, result);
+  GroupAndFit(points, pixelPoints, contours, grid, this->Settings, result);
   return result;
 }
 

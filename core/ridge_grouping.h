@@ -164,6 +164,12 @@ private:
   /// The image size for points (not all identical): the set one, or the automatic choice
   /// (capped: see AutomaticImageSize); checked against the limits.
   int ChosenImageSize(const std::vector<Point2>& points, bool& capped) const;
+  /// Run's image over points (not all identical; extent the larger side of their bounding box):
+  /// its size chosen and its grid, both recorded in result with the warnings of a capped
+  /// automatic size, a basis below a pixel and points that stretch the image.
+  PixelGrid ChooseImage(const std::vector<Point2>& points,
+    double extent,
+    RidgeGroupingResult& result) const;
 
   RidgeGroupingSettings Settings;
 };
