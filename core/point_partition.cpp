@@ -373,6 +373,190 @@ private:
   std::vector<Node> Nodes;          // the root first
 };
 
+// The centre of the pixel at `position` of contours.Pixels.
+Point2 PositionCentre(const RidgeContours& contours, int position, int width)
+{
+  return PixelCentre(contours.Pixels[std::size_t(position)], width);
+}
+
+// Ends: 2c (first pixel) and 2c + 1 (last pixel) of each open contour of two pixels or more.
+std::vector<int> OpenContourEnds(const RidgeContours& contours)
+{
+  std::vector<int> ends;
+  for (int c = 0; c < contours.Count(); ++c)
+  {
+    if (!contours.Closed[c] && contours.Offsets[c + 1] - contours.Offsets[c] >= 2)
+    {
+      ends.push_back(2 * c);
+      ends.push_back(2 * c + 1);
+    }
+  }
+  return ends;
+}
+
+// The position in contours.Pixels of end `end` (OpenContourEnds).
+int EndPosition(const RidgeContours& contours, int end)
+{
+  return end % 2 ? contours.Offsets[end / 2 + 1] - 1 : contours.Offsets[end / 2];
+}
+
+// Per point, whether it is far: more than maximumGap from its nearest pixel (nearestPositions);
+// farPoints: those points, ascending.
+std::vector<std::uint8_t> FarFromContours(const std::vector<Point2>& points,
+  const RidgeContours& contours,
+  const std::vector<int>& nearestPositions,
+  int width,
+  double maximumGap,
+  std::vector<std::size_t>& farPoints)
+{
+  std::vector<std::uint8_t> far(points.size(), 0);
+  for (std::size_t k = 0; k < points.size(); ++k)
+  {
+    const Point2 nearest = PositionCentre(contours, nearestPositions[k], width);
+    far[k] = std::hypot(points[k].x - nearest.x, points[k].y - nearest.y) > maximumGap;
+    if (far[k])
+    {
+      farPoints.push_back(k);
+    }
+  }
+  return far;
+}
+
+// The chains of FollowChainsPastEnds, grown from all ends at once in order of their length: a
+// breadth-first search by distance over the far points, each taken out of a FarPointTree when
+// first reached.
+class ChainsPastEnds
+{
+public:
+  ChainsPastEnds(const std::vector<Point2>& points,
+    const RidgeContours& contours,
+    int width,
+    double maximumGap,
+    const std::vector<std::uint8_t>& far,
+    std::vector<std::size_t> farPoints)
+    : Points(points)
+    , Contours(contours)
+    , Width(width)
+    , MaximumGap(maximumGap)
+    , Far(far)
+    , Tree(points, std::move(farPoints))
+    , EndOf(points.size(), -1)
+    , Parent(points.size(), -1)
+  {
+  }
+
+  // Queues the chains' starts: the end pixels, and the near points already past an end.
+  void Start(const std::vector<int>& ends, const PointPartition& result)
+  {
+    for (const int end : ends)
+    {
+      this->Queue.push({ 0.0, -1 - std::ptrdiff_t(end) });
+    }
+    // (A far point lies more than maximumGap from every contour pixel, ends included: but for
+    // near-ties of the nearest pixel the chains start at these near points, not at the end pixels.)
+    for (std::size_t k = 0; k < this->Points.size(); ++k)
+    {
+      const int position = result.Projection[k];
+      if (!this->Far[k] && result.Beyond[k] > 0.0)
+      {
+        const int contour = result.GroupId[k];
+        this->EndOf[k] = 2 * contour + (position == this->Contours.Offsets[contour] ? 0 : 1);
+        const Point2 e = PositionCentre(this->Contours, position, this->Width);
+        this->Queue.push(
+          { std::hypot(this->Points[k].x - e.x, this->Points[k].y - e.y), std::ptrdiff_t(k) });
+      }
+    }
+  }
+
+  // Grows the chains until no far point within reach is left.
+  void Grow()
+  {
+    while (!this->Queue.empty())
+    {
+      const auto [distance, place] = this->Queue.top();
+      this->Queue.pop();
+      this->StepFrom(distance, place);
+    }
+  }
+
+  // Gives each far point reached its chain's contour, end pixel and distance beyond the end, and
+  // marks it chained.
+  void Settle(PointPartition& result, std::vector<std::uint8_t>& chained) const
+  {
+    // In settling order a chain's earlier points come first, so a parent's Beyond is its chain's
+    // when its children read it; near points that started a chain keep their own distance.
+    for (const std::size_t k : this->Order)
+    {
+      const int end = this->EndOf[k];
+      const int contour = end / 2;
+      const int position = EndPosition(this->Contours, end);
+      const double own =
+        DistanceBeyondEnd(this->Points[k], this->Contours, contour, position, this->Width);
+      const double before = this->Parent[k] < 0 ? 0.0 : result.Beyond[std::size_t(this->Parent[k])];
+      result.GroupId[k] = contour;
+      result.Projection[k] = position;
+      result.Beyond[k] = std::max(own, before);
+      result.Continues[k] = own >= result.Beyond[k] - this->MaximumGap;
+      chained[k] = 1;
+    }
+  }
+
+private:
+  // Settles the chain's place (a point k as k, an end e as -1 - e) at `distance` along its chain,
+  // and queues the far points one step from it, beyond its end.
+  void StepFrom(double distance, std::ptrdiff_t place)
+  {
+    const int end = place < 0 ? int(-1 - place) : this->EndOf[std::size_t(place)];
+    const int contour = end / 2;
+    const int position = EndPosition(this->Contours, end);
+    const Point2 endPixel = PositionCentre(this->Contours, position, this->Width);
+    const Point2 from = place < 0 ? endPixel : this->Points[std::size_t(place)];
+    if (place >= 0 && this->Far[std::size_t(place)])
+    {
+      this->Order.push_back(std::size_t(place));
+    }
+    const int inner = EndTangentPixel(this->Contours, contour, position);
+    const Point2 tangent{ endPixel.x - inner % this->Width, endPixel.y - inner / this->Width };
+    this->Taken.clear();
+    this->Tree.Take(
+      from,
+      this->MaximumGap,
+      endPixel,
+      tangent,
+      [&](std::size_t q)
+      {
+        return std::hypot(this->Points[q].x - from.x, this->Points[q].y - from.y) <=
+          this->MaximumGap &&
+          DistanceBeyondEnd(this->Points[q], this->Contours, contour, position, this->Width) > 0.0;
+      },
+      this->Taken);
+    for (const std::size_t q : this->Taken)
+    {
+      this->EndOf[q] = end;
+      this->Parent[q] = place;
+      this->Queue.push(
+        { distance + std::hypot(this->Points[q].x - from.x, this->Points[q].y - from.y),
+          std::ptrdiff_t(q) });
+    }
+  }
+
+  const std::vector<Point2>& Points;
+  const RidgeContours& Contours;
+  const int Width;
+  const double MaximumGap;
+  const std::vector<std::uint8_t>& Far;
+  FarPointTree Tree;
+  std::vector<int> EndOf;
+  std::vector<std::ptrdiff_t> Parent; // -1 - e: the pixel of end e
+  std::vector<std::size_t> Order;     // far points, in the order their chains grow from
+  // Queue entries: chain length, then place: a point k as k, an end e as -1 - e. Each point is
+  // queued once, when first reached: its end is that of the shortest chain reaching it so far
+  // (growing in order of chain length, the first is almost always the shortest).
+  using Entry = std::pair<double, std::ptrdiff_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> Queue;
+  std::vector<std::size_t> Taken; // scratch: the points one step takes
+};
+
 // Far points that continue an open contour past its end, taken from their nearest contour (see
 // point_partition.h). From each end, chains grow over far points lying beyond the end (along its
 // tangent), each step at most maximumGap; they start at a point of the contour already continuing
@@ -401,112 +585,18 @@ std::vector<std::uint8_t> FollowChainsPastEnds(const std::vector<Point2>& points
   {
     return chained;
   }
-  const auto pixelPoint = [&](int position)
-  { return PixelCentre(contours.Pixels[std::size_t(position)], width); };
-  std::vector<std::uint8_t> far(points.size(), 0);
   std::vector<std::size_t> farPoints;
-  for (std::size_t k = 0; k < points.size(); ++k)
-  {
-    const Point2 nearest = pixelPoint(nearestPositions[k]);
-    far[k] = std::hypot(points[k].x - nearest.x, points[k].y - nearest.y) > maximumGap;
-    if (far[k])
-    {
-      farPoints.push_back(k);
-    }
-  }
-  // Ends: 2c (first pixel) and 2c + 1 (last pixel) of each open contour of two pixels or more.
-  const auto endPosition = [&](int end)
-  { return end % 2 ? contours.Offsets[end / 2 + 1] - 1 : contours.Offsets[end / 2]; };
-  std::vector<int> ends;
-  for (int c = 0; c < contours.Count(); ++c)
-  {
-    if (!contours.Closed[c] && contours.Offsets[c + 1] - contours.Offsets[c] >= 2)
-    {
-      ends.push_back(2 * c);
-      ends.push_back(2 * c + 1);
-    }
-  }
+  const std::vector<std::uint8_t> far =
+    FarFromContours(points, contours, nearestPositions, width, maximumGap, farPoints);
+  const std::vector<int> ends = OpenContourEnds(contours);
   if (farPoints.empty() || ends.empty())
   {
     return chained;
   }
-  FarPointTree tree(points, std::move(farPoints));
-  std::vector<int> endOf(points.size(), -1);
-  std::vector<std::ptrdiff_t> parent(points.size(), -1); // -1 - e: the pixel of end e
-  std::vector<std::size_t> order; // far points, in the order their chains grow from
-  // Queue entries: chain length, then place: a point k as k, an end e as -1 - e. Each point is
-  // queued once, when first reached: its end is that of the shortest chain reaching it so far
-  // (growing in order of chain length, the first is almost always the shortest).
-  using Entry = std::pair<double, std::ptrdiff_t>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-  for (const int end : ends)
-  {
-    queue.push({ 0.0, -1 - std::ptrdiff_t(end) });
-  }
-  // (A far point lies more than maximumGap from every contour pixel, ends included: but for
-  // near-ties of the nearest pixel the chains start at these near points, not at the end pixels.)
-  for (std::size_t k = 0; k < points.size(); ++k)
-  {
-    const int position = result.Projection[k];
-    if (!far[k] && result.Beyond[k] > 0.0)
-    {
-      const int contour = result.GroupId[k];
-      endOf[k] = 2 * contour + (position == contours.Offsets[contour] ? 0 : 1);
-      const Point2 e = pixelPoint(position);
-      queue.push({ std::hypot(points[k].x - e.x, points[k].y - e.y), std::ptrdiff_t(k) });
-    }
-  }
-  std::vector<std::size_t> taken;
-  while (!queue.empty())
-  {
-    const auto [distance, place] = queue.top();
-    queue.pop();
-    const int end = place < 0 ? int(-1 - place) : endOf[std::size_t(place)];
-    const int contour = end / 2;
-    const int position = endPosition(end);
-    const Point2 endPixel = pixelPoint(position);
-    const Point2 from = place < 0 ? endPixel : points[std::size_t(place)];
-    if (place >= 0 && far[std::size_t(place)])
-    {
-      order.push_back(std::size_t(place));
-    }
-    const int inner = EndTangentPixel(contours, contour, position);
-    const Point2 tangent{ endPixel.x - inner % width, endPixel.y - inner / width };
-    taken.clear();
-    tree.Take(
-      from,
-      maximumGap,
-      endPixel,
-      tangent,
-      [&](std::size_t q)
-      {
-        return std::hypot(points[q].x - from.x, points[q].y - from.y) <= maximumGap &&
-          DistanceBeyondEnd(points[q], contours, contour, position, width) > 0.0;
-      },
-      taken);
-    for (const std::size_t q : taken)
-    {
-      endOf[q] = end;
-      parent[q] = place;
-      queue.push(
-        { distance + std::hypot(points[q].x - from.x, points[q].y - from.y), std::ptrdiff_t(q) });
-    }
-  }
-  // In settling order a chain's earlier points come first, so a parent's Beyond is its chain's
-  // when its children read it; near points that started a chain keep their own distance.
-  for (const std::size_t k : order)
-  {
-    const int end = endOf[k];
-    const int contour = end / 2;
-    const int position = endPosition(end);
-    const double own = DistanceBeyondEnd(points[k], contours, contour, position, width);
-    const double before = parent[k] < 0 ? 0.0 : result.Beyond[std::size_t(parent[k])];
-    result.GroupId[k] = contour;
-    result.Projection[k] = position;
-    result.Beyond[k] = std::max(own, before);
-    result.Continues[k] = own >= result.Beyond[k] - maximumGap;
-    chained[k] = 1;
-  }
+  ChainsPastEnds chains(points, contours, width, maximumGap, far, std::move(farPoints));
+  chains.Start(ends, result);
+  chains.Grow();
+  chains.Settle(result, chained);
   return chained;
 }
 

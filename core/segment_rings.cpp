@@ -183,17 +183,12 @@ void AppendSimpleRings(const std::vector<std::int64_t>& walk,
   result.Offsets.push_back(result.Ids.size());
 }
 
-/// JoinSegmentsIntoRings, and with places (coordinates by point id) JoinSegmentsAtEqualEnds'
-/// pairing of the segments by angle where more than two meet.
-SegmentRings JoinSegments(const std::vector<std::pair<std::int64_t, std::int64_t>>& segments,
-  const std::vector<Point2>* places)
+/// Both ends of every proper segment (one whose ends differ), sorted: grouped by point.
+std::vector<End> EndsByPoint(const std::vector<std::pair<std::int64_t, std::int64_t>>& segments)
 {
-  SegmentRings result;
-  const std::size_t count = segments.size();
-  // ends: both ends of every proper segment, grouped by point.
   std::vector<End> ends;
-  ends.reserve(2 * count);
-  for (std::size_t s = 0; s < count; ++s)
+  ends.reserve(2 * segments.size());
+  for (std::size_t s = 0; s < segments.size(); ++s)
   {
     if (segments[s].first != segments[s].second)
     {
@@ -202,12 +197,20 @@ SegmentRings JoinSegments(const std::vector<std::pair<std::int64_t, std::int64_t
     }
   }
   std::sort(ends.begin(), ends.end());
-  // With places, only the segments on closed paths are paired (the others stay unjoined).
-  const std::vector<char> live = places ? OffDeadEnds(segments, ends) : std::vector<char>(count, 1);
-  // Per segment and end (0: first, 1: second), the other segment at that point, or -1 when the
-  // point has not exactly two segments (nor, with places, an even number paired by angle).
-  std::vector<std::int64_t> across(2 * count, -1);
-  bool junctions = false; // whether a walk may come back to a point
+  return ends;
+}
+
+/// Fills across (see JoinSegments) point by point, from ends grouped by point (each group is
+/// reordered, its live ends first): a point of two live segments links them, and with places one
+/// of four, six, ... is paired by angle. Whether a point was paired by angle, so that a walk may
+/// come back to a point.
+bool PairAtEachPoint(const std::vector<std::pair<std::int64_t, std::int64_t>>& segments,
+  const std::vector<Point2>* places,
+  const std::vector<char>& live,
+  std::vector<End>& ends,
+  std::vector<std::int64_t>& across)
+{
+  bool junctions = false;
   for (std::size_t k = 0; k < ends.size();)
   {
     std::size_t end = k;
@@ -231,76 +234,126 @@ SegmentRings JoinSegments(const std::vector<std::pair<std::int64_t, std::int64_t
     }
     k = end;
   }
-  // Walk each cycle of pairs once: from segment `start` along its direction, entering each next
-  // segment at the shared point. A walk that meets a point without a partner fails; so does every
-  // other segment of its chain, which its own walk then meets as already seen.
+  return junctions;
+}
+
+/// Walks the cycle of pairs from segment `start` along its direction, entering each next segment
+/// at the shared point, and marks each segment it takes seen; walk: those segments, in order.
+/// Whether the walk closed at start's first point. A walk that meets a point without a partner
+/// fails; so does every other segment of its chain, which its own walk then meets as already seen.
+bool WalkCycle(const std::vector<std::pair<std::int64_t, std::int64_t>>& segments,
+  const std::vector<std::int64_t>& across,
+  std::size_t start,
+  std::vector<char>& seen,
+  std::vector<std::size_t>& walk)
+{
+  walk.assign(1, start);
+  seen[start] = 1;
+  std::size_t s = start;
+  std::int64_t at = segments[s].second; // the point the walk stands on, leaving s
+  for (;;)
+  {
+    const int end = segments[s].first == at ? 0 : 1;
+    const std::int64_t next = across[2 * s + end];
+    if (next < 0)
+    {
+      return false;
+    }
+    if (std::size_t(next) == start)
+    {
+      return at == segments[start].first;
+    }
+    if (seen[std::size_t(next)])
+    {
+      return false;
+    }
+    s = std::size_t(next);
+    seen[s] = 1;
+    walk.push_back(s);
+    at = segments[s].first == at ? segments[s].second : segments[s].first;
+  }
+}
+
+/// Scratch space for the rings of closed walks, kept from walk to walk.
+struct WalkBuffers
+{
+  std::vector<std::size_t> Walk; // segments
+  std::vector<std::int64_t> Points, Stack;
+  std::unordered_map<std::int64_t, std::size_t> PlaceInStack;
+};
+
+/// Marks the segments of the closed walk in buffers.Walk joined and appends its points to result:
+/// one ring, or where junctions were paired (a walk may come back to a point) rings in which no
+/// point stands twice.
+void AppendWalk(const std::vector<std::pair<std::int64_t, std::int64_t>>& segments,
+  bool junctions,
+  WalkBuffers& buffers,
+  std::vector<char>& joined,
+  SegmentRings& result)
+{
+  std::int64_t point = segments[buffers.Walk.front()].first;
+  buffers.Points.clear();
+  for (const std::size_t w : buffers.Walk)
+  {
+    joined[w] = 1;
+    buffers.Points.push_back(point);
+    point = segments[w].first == point ? segments[w].second : segments[w].first;
+  }
+  if (junctions)
+  {
+    AppendSimpleRings(buffers.Points, buffers.Stack, buffers.PlaceInStack, result);
+  }
+  else
+  {
+    result.Ids.insert(result.Ids.end(), buffers.Points.begin(), buffers.Points.end());
+    result.Offsets.push_back(result.Ids.size());
+  }
+}
+
+/// The segments not joined, ascending.
+std::vector<std::size_t> UnjoinedSegments(const std::vector<char>& joined)
+{
+  std::vector<std::size_t> unjoined;
+  for (std::size_t s = 0; s < joined.size(); ++s)
+  {
+    if (!joined[s])
+    {
+      unjoined.push_back(s);
+    }
+  }
+  return unjoined;
+}
+
+/// JoinSegmentsIntoRings, and with places (coordinates by point id) JoinSegmentsAtEqualEnds'
+/// pairing of the segments by angle where more than two meet.
+SegmentRings JoinSegments(const std::vector<std::pair<std::int64_t, std::int64_t>>& segments,
+  const std::vector<Point2>* places)
+{
+  SegmentRings result;
+  const std::size_t count = segments.size();
+  std::vector<End> ends = EndsByPoint(segments);
+  // With places, only the segments on closed paths are paired (the others stay unjoined).
+  const std::vector<char> live = places ? OffDeadEnds(segments, ends) : std::vector<char>(count, 1);
+  // Per segment and end (0: first, 1: second), the other segment at that point, or -1 when the
+  // point has not exactly two segments (nor, with places, an even number paired by angle).
+  std::vector<std::int64_t> across(2 * count, -1);
+  const bool junctions = PairAtEachPoint(segments, places, live, ends, across);
+  // Walk each cycle of pairs once, from its first segment.
   std::vector<char> seen(count, 0);
   std::vector<char> joined(count, 0);
-  std::vector<std::size_t> walk;
-  std::vector<std::int64_t> points, stack;
-  std::unordered_map<std::int64_t, std::size_t> placeInStack;
+  WalkBuffers buffers;
   for (std::size_t start = 0; start < count; ++start)
   {
     if (seen[start] || segments[start].first == segments[start].second)
     {
       continue;
     }
-    walk.assign(1, start);
-    seen[start] = 1;
-    std::size_t s = start;
-    std::int64_t at = segments[s].second; // the point the walk stands on, leaving s
-    bool closed = false;
-    for (;;)
+    if (WalkCycle(segments, across, start, seen, buffers.Walk))
     {
-      const int end = segments[s].first == at ? 0 : 1;
-      const std::int64_t next = across[2 * s + end];
-      if (next < 0)
-      {
-        break;
-      }
-      if (std::size_t(next) == start)
-      {
-        closed = at == segments[start].first;
-        break;
-      }
-      if (seen[std::size_t(next)])
-      {
-        break;
-      }
-      s = std::size_t(next);
-      seen[s] = 1;
-      walk.push_back(s);
-      at = segments[s].first == at ? segments[s].second : segments[s].first;
-    }
-    if (!closed)
-    {
-      continue;
-    }
-    std::int64_t point = segments[start].first;
-    points.clear();
-    for (const std::size_t w : walk)
-    {
-      joined[w] = 1;
-      points.push_back(point);
-      point = segments[w].first == point ? segments[w].second : segments[w].first;
-    }
-    if (junctions)
-    {
-      AppendSimpleRings(points, stack, placeInStack, result);
-    }
-    else
-    {
-      result.Ids.insert(result.Ids.end(), points.begin(), points.end());
-      result.Offsets.push_back(result.Ids.size());
+      AppendWalk(segments, junctions, buffers, joined, result);
     }
   }
-  for (std::size_t s = 0; s < count; ++s)
-  {
-    if (!joined[s])
-    {
-      result.Unjoined.push_back(s);
-    }
-  }
+  result.Unjoined = UnjoinedSegments(joined);
   return result;
 }
 

@@ -350,76 +350,98 @@ std::vector<std::size_t> NearCopiesMadeOne(const std::vector<Point2>& v,
   return made;
 }
 
-} // namespace
-
-ClippedRings ShareBorderVertices(const ClippedRings& given)
+// The largest magnitude of the vertices' coordinates, or NaN when one is not finite.
+double LargestCoordinate(const std::vector<Point2>& vertices)
 {
-  // The tests run on the vertices scaled by a power of two to a largest coordinate below 1
-  // (exact): coordinates of 1e308 overflowed the grid's box, and beyond some 1e154 the products
-  // of InsideParameter did. Vertices that are not finite are left as they are, unshared.
   double largest = 0.0;
-  for (const Point2& p : given.Vertices)
+  for (const Point2& p : vertices)
   {
     if (!std::isfinite(p.x) || !std::isfinite(p.y))
     {
-      return given;
+      return std::nan("");
     }
     largest = std::max({ largest, std::fabs(p.x), std::fabs(p.y) });
   }
-  if (largest == 0.0)
-  {
-    return given;
-  }
-  const int exponent = ExponentAbove(largest);
-  std::vector<Point2> v(given.Vertices.size());
-  std::vector<std::size_t> ringOf(v.size()), next(v.size()), prev(v.size());
+  return largest;
+}
+
+// The vertices of pieces scaled by 2^-exponent (exact), with each vertex's ring and its
+// neighbours in that ring.
+struct ScaledPieces
+{
+  std::vector<Point2> Vertices;
+  std::vector<std::size_t> RingOf, Next, Prev;
+};
+
+ScaledPieces Scaled(const ClippedRings& given, int exponent)
+{
+  ScaledPieces s;
+  s.Vertices.resize(given.Vertices.size());
+  s.RingOf.resize(s.Vertices.size());
+  s.Next.resize(s.Vertices.size());
+  s.Prev.resize(s.Vertices.size());
   for (std::size_t r = 0; r + 1 < given.RingOffsets.size(); ++r)
   {
     const std::size_t begin = given.RingOffsets[r], end = given.RingOffsets[r + 1];
     for (std::size_t k = begin; k < end; ++k)
     {
-      v[k] = { std::ldexp(given.Vertices[k].x, -exponent),
+      s.Vertices[k] = { std::ldexp(given.Vertices[k].x, -exponent),
         std::ldexp(given.Vertices[k].y, -exponent) };
-      ringOf[k] = r;
-      next[k] = NextInRing(k, begin, end);
-      prev[k] = k > begin ? k - 1 : end - 1;
+      s.RingOf[k] = r;
+      s.Next[k] = NextInRing(k, begin, end);
+      s.Prev[k] = k > begin ? k - 1 : end - 1;
     }
   }
-  ClippedRings pieces = given;
-  const std::vector<std::size_t> made = NearCopiesMadeOne(v, ringOf, prev, next);
+  return s;
+}
+
+// Moves each vertex onto the one it is made (made: NearCopiesMadeOne), both in pieces (from
+// given's coordinates) and in v (their scaled copies).
+void WeldNearCopies(const ClippedRings& given,
+  const std::vector<std::size_t>& made,
+  ClippedRings& pieces,
+  std::vector<Point2>& v)
+{
   const std::vector<Point2> unmoved = v;
   for (std::size_t k = 0; k < v.size(); ++k)
   {
     pieces.Vertices[k] = given.Vertices[made[k]];
     v[k] = unmoved[made[k]];
   }
-  const EdgeGrid grid(v, next);
+}
+
+// Each vertex that lies inside an edge of another piece (InsideParameter, on the scaled vertices
+// s.Vertices), with its coordinates from own; in the order of the vertices and of the edges in
+// their grid cells.
+std::vector<Insertion> VerticesInsideEdges(const ScaledPieces& s, const std::vector<Point2>& own)
+{
+  const std::vector<Point2>& v = s.Vertices;
+  const EdgeGrid grid(v, s.Next);
   std::vector<Insertion> insertions;
   for (std::size_t k = 0; k < v.size(); ++k)
   {
     for (const std::size_t* e = grid.begin(v[k]); e != grid.end(v[k]); ++e)
     {
-      if (ringOf[*e] == ringOf[k])
+      if (s.RingOf[*e] == s.RingOf[k])
       {
         continue; // (a piece's own vertex is never inside its own edge: its ring is simple)
       }
-      const double t = InsideParameter(v[*e], v[next[*e]], v[k]);
+      const double t = InsideParameter(v[*e], v[s.Next[*e]], v[k]);
       if (t > 0.0)
       {
-        insertions.push_back({ *e, t, pieces.Vertices[k] });
+        insertions.push_back({ *e, t, own[k] });
       }
     }
   }
-  if (insertions.empty())
-  {
-    return pieces;
-  }
-  std::sort(insertions.begin(),
-    insertions.end(),
-    [](const Insertion& a, const Insertion& b)
-    { return a.Edge != b.Edge ? a.Edge < b.Edge : a.T < b.T; });
+  return insertions;
+}
+
+// The pieces with each insertion after the start of its edge, in order of T (insertions sorted
+// by edge, then T).
+ClippedRings WithInsertions(const ClippedRings& pieces, const std::vector<Insertion>& insertions)
+{
   ClippedRings out;
-  out.Vertices.reserve(v.size() + insertions.size());
+  out.Vertices.reserve(pieces.Vertices.size() + insertions.size());
   auto inserted = insertions.begin();
   for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
   {
@@ -437,6 +459,35 @@ ClippedRings ShareBorderVertices(const ClippedRings& given)
     out.RingOffsets.push_back(out.Vertices.size());
   }
   return out;
+}
+
+} // namespace
+
+ClippedRings ShareBorderVertices(const ClippedRings& given)
+{
+  // The tests run on the vertices scaled by a power of two to a largest coordinate below 1
+  // (exact): coordinates of 1e308 overflowed the grid's box, and beyond some 1e154 the products
+  // of InsideParameter did. Vertices that are not finite are left as they are, unshared.
+  const double largest = LargestCoordinate(given.Vertices);
+  if (std::isnan(largest) || largest == 0.0)
+  {
+    return given;
+  }
+  ScaledPieces scaled = Scaled(given, ExponentAbove(largest));
+  ClippedRings pieces = given;
+  const std::vector<std::size_t> made =
+    NearCopiesMadeOne(scaled.Vertices, scaled.RingOf, scaled.Prev, scaled.Next);
+  WeldNearCopies(given, made, pieces, scaled.Vertices);
+  std::vector<Insertion> insertions = VerticesInsideEdges(scaled, pieces.Vertices);
+  if (insertions.empty())
+  {
+    return pieces;
+  }
+  std::sort(insertions.begin(),
+    insertions.end(),
+    [](const Insertion& a, const Insertion& b)
+    { return a.Edge != b.Edge ? a.Edge < b.Edge : a.T < b.T; });
+  return WithInsertions(pieces, insertions);
 }
 
 void DensifyRingSymmetrically(const Point2* ring,

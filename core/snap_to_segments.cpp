@@ -164,70 +164,86 @@ std::vector<char> RingsNearOthers(const std::vector<Box2>& boxes, double toleran
   return near;
 }
 
-} // namespace
-
-SnappedRings SnapVerticesOntoSegments(const std::vector<std::size_t>& offsets,
-  const std::vector<Point2>& vertices,
-  double tolerance)
+/// The segments that may take vertices, with what finding those vertices needs.
+struct CandidateSegments
 {
-  CheckRingOffsets(offsets, vertices.size());
-  // The segments of rings near others, and the box of those rings.
-  const std::vector<Box2> boxes = RingBoxes(offsets, vertices);
-  const std::vector<char> nearOthers = RingsNearOthers(boxes, tolerance);
-  std::vector<Segment> segments;
-  std::vector<std::size_t> ringOf(vertices.size(), 0);
-  Box2 box{ HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL };
+  std::vector<Segment> Segments;   ///< of rings near others; finite, of nonzero length
+  std::vector<std::size_t> RingOf; ///< per vertex (of every ring)
+  Box2 Box{ HUGE_VAL, -HUGE_VAL, HUGE_VAL, -HUGE_VAL }; ///< of the rings near others
+};
+
+/// The segments of rings near others, and the box of those rings.
+CandidateSegments SegmentsNearOthers(const std::vector<std::size_t>& offsets,
+  const std::vector<Point2>& vertices,
+  const std::vector<Box2>& boxes,
+  const std::vector<char>& nearOthers)
+{
+  CandidateSegments found;
+  found.RingOf.assign(vertices.size(), 0);
   for (std::size_t r = 0; r + 1 < offsets.size(); ++r)
   {
     const std::size_t begin = offsets[r], end = offsets[r + 1];
     if (nearOthers[r])
     {
-      box.Extend(boxes[r]);
+      found.Box.Extend(boxes[r]);
     }
     for (std::size_t k = begin; k < end; ++k)
     {
-      ringOf[k] = r;
+      found.RingOf[k] = r;
       const Point2& a = vertices[k];
       const Point2& b = vertices[NextInRing(k, begin, end)];
       if (nearOthers[r] && Finite(a) && Finite(b) && !(a == b))
       {
-        segments.push_back({ r, k, a, b });
+        found.Segments.push_back({ r, k, a, b });
       }
     }
   }
-  std::vector<Insertion> insertions;
-  if (!segments.empty() && tolerance > 0.0)
-  {
-    // Cells about as wide as a segment on average (each segment in a few cells), and far wider
-    // than the tolerance.
-    const double cell =
-      std::max({ 16.0 * tolerance, box.LargerSide() / std::sqrt(double(segments.size())), 1e-300 });
-    const SegmentGrid grid(segments, cell, Point2{ box.XMin, box.YMin });
-    const std::vector<std::size_t> none;
-    for (std::size_t v = 0; v < vertices.size(); ++v)
-    {
-      const Point2& p = vertices[v];
-      const std::vector<std::size_t>* near =
-        Finite(p) && nearOthers[ringOf[v]] ? grid.Near(p) : nullptr;
-      for (const std::size_t s : near ? *near : none)
-      {
-        if (segments[s].Ring == ringOf[v])
-        {
-          continue;
-        }
-        const double t = SnapParameter(segments[s], p, tolerance);
-        if (t > 0.0)
-        {
-          insertions.push_back({ segments[s].First, t, p });
-        }
-      }
-    }
-  }
-  std::sort(insertions.begin(),
-    insertions.end(),
-    [](const Insertion& a, const Insertion& b)
-    { return a.Target != b.Target ? a.Target < b.Target : a.T < b.T; });
+  return found;
+}
 
+/// Every vertex of a ring near others within the tolerance of another ring's segment, in the order
+/// of the vertices and of the segments in their grid cells. Needs segments and a positive
+/// tolerance (the grid's cell is sized by them).
+std::vector<Insertion> FindInsertions(const std::vector<Point2>& vertices,
+  const CandidateSegments& found,
+  const std::vector<char>& nearOthers,
+  double tolerance)
+{
+  // Cells about as wide as a segment on average (each segment in a few cells), and far wider
+  // than the tolerance.
+  const double cell = std::max({ 16.0 * tolerance,
+    found.Box.LargerSide() / std::sqrt(double(found.Segments.size())),
+    1e-300 });
+  const SegmentGrid grid(found.Segments, cell, Point2{ found.Box.XMin, found.Box.YMin });
+  const std::vector<std::size_t> none;
+  std::vector<Insertion> insertions;
+  for (std::size_t v = 0; v < vertices.size(); ++v)
+  {
+    const Point2& p = vertices[v];
+    const std::vector<std::size_t>* near =
+      Finite(p) && nearOthers[found.RingOf[v]] ? grid.Near(p) : nullptr;
+    for (const std::size_t s : near ? *near : none)
+    {
+      if (found.Segments[s].Ring == found.RingOf[v])
+      {
+        continue;
+      }
+      const double t = SnapParameter(found.Segments[s], p, tolerance);
+      if (t > 0.0)
+      {
+        insertions.push_back({ found.Segments[s].First, t, p });
+      }
+    }
+  }
+  return insertions;
+}
+
+/// The rings with each insertion after the first vertex of its target segment, in order of T
+/// (insertions sorted by target, then T).
+SnappedRings WithInsertions(const std::vector<std::size_t>& offsets,
+  const std::vector<Point2>& vertices,
+  const std::vector<Insertion>& insertions)
+{
   SnappedRings out;
   out.Offsets.push_back(0);
   std::size_t next = 0; // the first insertion not yet placed
@@ -251,6 +267,28 @@ SnappedRings SnapVerticesOntoSegments(const std::vector<std::size_t>& offsets,
     out.Offsets.push_back(out.Vertices.size());
   }
   return out;
+}
+
+} // namespace
+
+SnappedRings SnapVerticesOntoSegments(const std::vector<std::size_t>& offsets,
+  const std::vector<Point2>& vertices,
+  double tolerance)
+{
+  CheckRingOffsets(offsets, vertices.size());
+  const std::vector<Box2> boxes = RingBoxes(offsets, vertices);
+  const std::vector<char> nearOthers = RingsNearOthers(boxes, tolerance);
+  const CandidateSegments found = SegmentsNearOthers(offsets, vertices, boxes, nearOthers);
+  std::vector<Insertion> insertions;
+  if (!found.Segments.empty() && tolerance > 0.0)
+  {
+    insertions = FindInsertions(vertices, found, nearOthers, tolerance);
+  }
+  std::sort(insertions.begin(),
+    insertions.end(),
+    [](const Insertion& a, const Insertion& b)
+    { return a.Target != b.Target ? a.Target < b.Target : a.T < b.T; });
+  return WithInsertions(offsets, vertices, insertions);
 }
 
 } // namespace tessera
