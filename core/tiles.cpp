@@ -1061,13 +1061,74 @@ void MergeSameVertices(TileMesh& mesh,
 
 } // namespace
 
+// The mesh's vertices: its face centres (numbered already), the window's corners when there are
+// tiles to use them, then the crossings from the returned index on. Chunk 0's crossings go
+// straight to the result; each chunk's vertex ids get their room in mesh.VertexIds.
+std::int32_t TessellationDual::PrepareMeshParts(TileMesh& mesh,
+  const std::vector<std::int32_t>& bounds,
+  std::vector<MeshPart>& parts,
+  std::vector<std::tuple<double, double, std::int32_t>>& sortedCorners) const
+{
+  const std::size_t count = std::size_t(bounds.back());
+  const std::vector<Point2>& corners = this->Tess.GetWindow().Vertices();
+  const std::int32_t cornerBase = std::int32_t(mesh.Vertices.size());
+  if (count > 0)
+  {
+    mesh.Vertices.insert(mesh.Vertices.end(), corners.begin(), corners.end());
+  }
+  const std::int32_t firstCrossing = std::int32_t(mesh.Vertices.size());
+  for (std::size_t k = 0; k < corners.size(); ++k)
+  {
+    sortedCorners.emplace_back(corners[k].x, corners[k].y, std::int32_t(k));
+  }
+  std::sort(sortedCorners.begin(), sortedCorners.end());
+  mesh.PointIds.resize(count);
+  mesh.Offsets.resize(count + 1);
+  mesh.Offsets[0] = 0;
+  mesh.Areas.resize(count);
+  mesh.NeighborCounts.resize(count);
+  std::vector<std::size_t> room;
+  for (std::size_t k = 0; k + 1 < bounds.size(); ++k)
+  {
+    MeshPart& part = parts[k];
+    part.Result = &mesh;
+    part.Next = bounds[k];
+    part.Crossings = k == 0 ? &mesh.Vertices : &part.OwnCrossings;
+    part.CornerBase = cornerBase;
+    part.Corners = &sortedCorners;
+    // a tile has 6 vertices on average
+    room.push_back(tiles_detail::EstimatedRoom(std::size_t(bounds[k + 1] - bounds[k]), 6));
+  }
+  tiles_detail::BindRegions(mesh.VertexIds, parts, &MeshPart::VertexIds, room);
+  return firstCrossing;
+}
+
+// Each chunk's room in the graph's pairs and kinds: 3 pairs per point on average (each of the 3n
+// Delaunay edges once), plus the diagonals of the degenerate faces, spread evenly (halfPerPoint).
+void TessellationDual::PrepareGraphParts(ContiguityGraph& graph,
+  const std::vector<std::int32_t>& bounds,
+  double halfPerPoint,
+  std::vector<GraphPart>& parts)
+{
+  using tiles_detail::EstimatedRoom;
+  std::vector<std::size_t> pairRoom, kindRoom;
+  for (std::size_t k = 0; k + 1 < bounds.size(); ++k)
+  {
+    const std::size_t size = std::size_t(bounds[k + 1] - bounds[k]);
+    const std::size_t extra = std::size_t(std::ceil(halfPerPoint * double(size)));
+    pairRoom.push_back(EstimatedRoom(size, 6) + 2 * extra);
+    kindRoom.push_back(EstimatedRoom(size, 3) + extra);
+  }
+  tiles_detail::BindRegions(graph.Pairs, parts, &GraphPart::Pairs, pairRoom);
+  tiles_detail::BindRegions(graph.Kinds, parts, &GraphPart::Kinds, kindRoom);
+}
+
 // The requested results (any pointer may be null) in one pass over the rings, so that asking
 // for several walks each ring once: the walks are cache misses, and walking twice cost as much
 // again as the contiguity tests.
 void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* graph) const
 {
   CheckWindowInExactRange(this->Tess); // (the faces alone need no window: they are exact anywhere)
-  using tiles_detail::EstimatedRoom;
   // Half-neighbours: the diagonals of the degenerate faces whose centre is in the window.
   const std::int64_t halfPairs = graph ? this->HalfNeighbourPairCount() : 0;
   const bool half = halfPairs > 0;
@@ -1082,57 +1143,15 @@ void TessellationDual::Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* g
   std::vector<OwnCacheLines<TileSet>> tileParts(tiles ? chunks : 0);
   std::vector<MeshPart> meshParts(mesh ? chunks : 0);
   std::vector<GraphPart> graphParts(graph ? chunks : 0);
-  // The mesh's vertices: its face centres (numbered already), the window's corners when there
-  // are tiles to use them, then the crossings from firstCrossing on. Chunk 0's crossings go
-  // straight to the result.
   std::vector<std::tuple<double, double, std::int32_t>> sortedCorners;
   std::int32_t firstCrossing = 0;
   if (mesh)
   {
-    const std::vector<Point2>& corners = this->Tess.GetWindow().Vertices();
-    const std::int32_t cornerBase = std::int32_t(mesh->Vertices.size());
-    if (count > 0)
-    {
-      mesh->Vertices.insert(mesh->Vertices.end(), corners.begin(), corners.end());
-    }
-    firstCrossing = std::int32_t(mesh->Vertices.size());
-    for (std::size_t k = 0; k < corners.size(); ++k)
-    {
-      sortedCorners.emplace_back(corners[k].x, corners[k].y, std::int32_t(k));
-    }
-    std::sort(sortedCorners.begin(), sortedCorners.end());
-    mesh->PointIds.resize(std::size_t(count));
-    mesh->Offsets.resize(std::size_t(count) + 1);
-    mesh->Offsets[0] = 0;
-    mesh->Areas.resize(std::size_t(count));
-    mesh->NeighborCounts.resize(std::size_t(count));
-    std::vector<std::size_t> room;
-    for (std::size_t k = 0; k < chunks; ++k)
-    {
-      MeshPart& part = meshParts[k];
-      part.Result = mesh;
-      part.Next = bounds[k];
-      part.Crossings = k == 0 ? &mesh->Vertices : &part.OwnCrossings;
-      part.CornerBase = cornerBase;
-      part.Corners = &sortedCorners;
-      room.push_back(EstimatedRoom(sizeOf(k), 6)); // a tile has 6 vertices on average
-    }
-    tiles_detail::BindRegions(mesh->VertexIds, meshParts, &MeshPart::VertexIds, room);
+    firstCrossing = this->PrepareMeshParts(*mesh, bounds, meshParts, sortedCorners);
   }
   if (graph)
   {
-    // 3 pairs per point on average (each of the 3n Delaunay edges once), plus the diagonals of
-    // the degenerate faces, spread evenly.
-    const double halfPerPoint = half ? double(halfPairs) / count : 0.0;
-    std::vector<std::size_t> pairRoom, kindRoom;
-    for (std::size_t k = 0; k < chunks; ++k)
-    {
-      const std::size_t extra = std::size_t(std::ceil(halfPerPoint * double(sizeOf(k))));
-      pairRoom.push_back(EstimatedRoom(sizeOf(k), 6) + 2 * extra);
-      kindRoom.push_back(EstimatedRoom(sizeOf(k), 3) + extra);
-    }
-    tiles_detail::BindRegions(graph->Pairs, graphParts, &GraphPart::Pairs, pairRoom);
-    tiles_detail::BindRegions(graph->Kinds, graphParts, &GraphPart::Kinds, kindRoom);
+    PrepareGraphParts(*graph, bounds, half ? double(halfPairs) / count : 0.0, graphParts);
   }
   RunChunks(chunks,
     [&](std::size_t k)

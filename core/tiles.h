@@ -44,6 +44,7 @@
 #include <cstdint>
 #include <functional>
 #include <utility>
+#include <tuple>
 #include <vector>
 
 namespace tessera
@@ -222,6 +223,14 @@ private:
   struct GraphPart;   // one chunk's contiguities (tiles.cpp)
   void TouchRings(std::int32_t begin, std::int32_t end) const;
   void Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* graph) const;
+  std::int32_t PrepareMeshParts(TileMesh& mesh,
+    const std::vector<std::int32_t>& bounds,
+    std::vector<MeshPart>& parts,
+    std::vector<std::tuple<double, double, std::int32_t>>& sortedCorners) const;
+  static void PrepareGraphParts(ContiguityGraph& graph,
+    const std::vector<std::int32_t>& bounds,
+    double halfPerPoint,
+    std::vector<GraphPart>& parts);
   void DeriveOf(std::int32_t begin,
     std::int32_t end,
     bool half,
