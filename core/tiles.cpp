@@ -444,7 +444,6 @@ void TessellationDual::MergeClusters(std::int32_t begin,
 {
   const auto& org = this->Tess.Origin();
   const auto& twin = this->Tess.Twin();
-  const std::vector<Point2>& pts = this->Tess.Points();
   std::vector<std::uint8_t> visited(this->Data.size(), 0); // this chunk's floods only
   std::vector<std::int32_t> cluster, stack, boundary;
   // A cluster's other triangles are random loads (on a lattice, one per cluster, and they were
@@ -472,58 +471,80 @@ void TessellationDual::MergeClusters(std::int32_t begin,
     {
       continue;
     }
-    // Flood t's circle through the co-circular edges (each recorded by its smaller triangle).
-    visited[t] = 1;
-    cluster.assign(1, t);
-    stack.assign(1, t);
-    boundary.clear();
-    bool smallest = true;
-    while (!stack.empty())
+    if (this->FloodCircle(t, cocircular, visited, cluster, stack, boundary))
     {
-      const std::int32_t s = stack.back();
-      stack.pop_back();
-      for (std::int32_t k = 0; k < 3; ++k)
+      this->KeepCluster(t, cluster, boundary, found);
+    }
+    // (else an earlier chunk keeps this cluster)
+  }
+}
+
+// Floods t's circle through the co-circular edges (each recorded by its smaller triangle) into
+// cluster, listing the face's boundary edges; whether t is the cluster's smallest triangle.
+bool TessellationDual::FloodCircle(std::int32_t t,
+  const std::vector<std::uint8_t>& cocircular,
+  std::vector<std::uint8_t>& visited,
+  std::vector<std::int32_t>& cluster,
+  std::vector<std::int32_t>& stack,
+  std::vector<std::int32_t>& boundary) const
+{
+  const auto& twin = this->Tess.Twin();
+  visited[t] = 1;
+  cluster.assign(1, t);
+  stack.assign(1, t);
+  boundary.clear();
+  bool smallest = true;
+  while (!stack.empty())
+  {
+    const std::int32_t s = stack.back();
+    stack.pop_back();
+    for (std::int32_t k = 0; k < 3; ++k)
+    {
+      const std::int32_t f = twin[3 * s + k];
+      const std::int32_t u = f / 3;
+      const bool across = u > s ? cocircular[s] >> k & 1U : cocircular[u] >> (f - 3 * u) & 1U;
+      if (!across)
       {
-        const std::int32_t f = twin[3 * s + k];
-        const std::int32_t u = f / 3;
-        const bool across = u > s ? cocircular[s] >> k & 1U : cocircular[u] >> (f - 3 * u) & 1U;
-        if (!across)
-        {
-          // Not across: u is off the circle (two adjacent triangles on one circle always have
-          // their edge's bit), so this edge bounds the face.
-          boundary.push_back(3 * s + k);
-        }
-        else if (!visited[u])
-        {
-          visited[u] = 1;
-          cluster.push_back(u);
-          stack.push_back(u);
-          smallest = smallest && u > t;
-        }
+        // Not across: u is off the circle (two adjacent triangles on one circle always have
+        // their edge's bit), so this edge bounds the face.
+        boundary.push_back(3 * s + k);
+      }
+      else if (!visited[u])
+      {
+        visited[u] = 1;
+        cluster.push_back(u);
+        stack.push_back(u);
+        smallest = smallest && u > t;
       }
     }
-    if (!smallest)
-    {
-      continue; // an earlier chunk keeps this cluster
-    }
-    // Chain: the boundary edge after x->y leaves y. Start at the smallest id.
-    const std::size_t polygonStart = found.Polygons.size();
-    ChainBoundary(org.data(), boundary, found.Polygons);
-    found.PolygonStarts.push_back(std::int32_t(found.Polygons.size()));
-    found.Roots.push_back(t);
-    for (const std::int32_t member : cluster)
-    {
-      this->Data[member].Face = t;
-      this->Data[member].Vertex = -1; // not a representative (the root's is set below)
-    }
-    double error = 0.0;
-    const Point2 centre =
-      FaceCentre(pts, found.Polygons.data() + polygonStart, boundary.size(), error);
-    TriangleData& data = this->Data[t];
-    data.X = centre.x;
-    data.Y = centre.y;
-    data.Vertex = CentreInside(this->Tess, t, centre, error) ? 0 : -1;
   }
+  return smallest;
+}
+
+// The cluster rooted at t (its smallest triangle): its triangles labelled with t, its polygon
+// (the boundary chained, from the smallest id) listed in found, and its centre taken from its
+// points with its inside flag decided exactly.
+void TessellationDual::KeepCluster(std::int32_t t,
+  const std::vector<std::int32_t>& cluster,
+  std::vector<std::int32_t>& boundary,
+  ClusterList& found)
+{
+  const std::size_t polygonStart = found.Polygons.size();
+  ChainBoundary(this->Tess.Origin().data(), boundary, found.Polygons);
+  found.PolygonStarts.push_back(std::int32_t(found.Polygons.size()));
+  found.Roots.push_back(t);
+  for (const std::int32_t member : cluster)
+  {
+    this->Data[member].Face = t;
+    this->Data[member].Vertex = -1; // not a representative (the root's is set below)
+  }
+  double error = 0.0;
+  const Point2 centre =
+    FaceCentre(this->Tess.Points(), found.Polygons.data() + polygonStart, boundary.size(), error);
+  TriangleData& data = this->Data[t];
+  data.X = centre.x;
+  data.Y = centre.y;
+  data.Vertex = CentreInside(this->Tess, t, centre, error) ? 0 : -1;
 }
 
 // The chunks' clusters, in chunk order, as the degenerate faces' lists. Each chunk copies its own

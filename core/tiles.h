@@ -211,6 +211,16 @@ private:
     std::int32_t end,
     const std::vector<std::uint8_t>& cocircular,
     ClusterList& found);
+  bool FloodCircle(std::int32_t t,
+    const std::vector<std::uint8_t>& cocircular,
+    std::vector<std::uint8_t>& visited,
+    std::vector<std::int32_t>& cluster,
+    std::vector<std::int32_t>& stack,
+    std::vector<std::int32_t>& boundary) const;
+  void KeepCluster(std::int32_t t,
+    const std::vector<std::int32_t>& cluster,
+    std::vector<std::int32_t>& boundary,
+    ClusterList& found);
   void RecordClusters(const std::vector<std::int32_t>& bounds,
     const std::vector<ClusterList>& found);
   /// The collinear case's tile edges of v (the planar case uses RingTileEdges).
