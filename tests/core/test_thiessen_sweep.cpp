@@ -18,6 +18,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <random>
 #include <set>
 #include <string>
@@ -280,6 +281,68 @@ void check_structure(const ThiessenSweepResult& r,
   }
 }
 
+// Each search finds one Thiessen vertex, which every centroid on its circle then knows, so a
+// tile's searches are its vertices that no tile processed before it has. The sweep takes the
+// centroid nearest the window's lower-left corner first, then the rest by (x, y); that corner is
+// recorded for the first before any search when no other centroid is as near. Checked where no
+// tile merged two vertices rounded to one point (its corners then name the sweep's vertices).
+void expect_searches_are_first_finds(const ThiessenSweepResult& r,
+  const std::vector<Point2>& pts,
+  double xmin,
+  double ymin)
+{
+  const TileSet& t = r.Tiles;
+  for (std::size_t k = 0; k < t.PointIds.size(); ++k)
+  {
+    if (t.NeighborCounts[k] != t.Offsets[k + 1] - t.Offsets[k])
+    {
+      return;
+    }
+  }
+  std::vector<std::size_t> order(t.PointIds.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  const auto place = [&](std::size_t k) { return pts[std::size_t(t.PointIds[k])]; };
+  std::sort(order.begin(),
+    order.end(),
+    [&](std::size_t a, std::size_t b)
+    { return std::make_pair(place(a).x, place(a).y) < std::make_pair(place(b).x, place(b).y); });
+  const auto squaredDistance = [&](std::size_t k)
+  {
+    const mpq_class dx = mpq_class(place(k).x) - mpq_class(xmin);
+    const mpq_class dy = mpq_class(place(k).y) - mpq_class(ymin);
+    return mpq_class(dx * dx + dy * dy);
+  };
+  std::size_t first = order.empty() ? 0 : order[0];
+  bool unique = true;
+  for (std::size_t n = 1; n < order.size(); ++n)
+  {
+    const int c = cmp(squaredDistance(order[n]), squaredDistance(first));
+    unique = c < 0 || (unique && c > 0);
+    first = c < 0 ? order[n] : first;
+  }
+  std::set<std::int32_t> known;
+  const auto firstFinds = [&](std::size_t k)
+  {
+    std::uint32_t found = 0;
+    for (std::int64_t v = t.Offsets[k]; v < t.Offsets[k + 1]; ++v)
+    {
+      found += known.insert(r.CornerVertexIds[std::size_t(v)]).second ? 1 : 0;
+    }
+    return found;
+  };
+  if (!order.empty())
+  {
+    EXPECT_EQ(r.Counts[first].Searches, firstFinds(first) - (unique ? 1 : 0)) << "first tile";
+  }
+  for (const std::size_t k : order)
+  {
+    if (k != first)
+    {
+      EXPECT_EQ(r.Counts[k].Searches, firstFinds(k)) << "tile of point " << t.PointIds[k];
+    }
+  }
+}
+
 void expect_matches_brute_force(const std::vector<Point2>& pts,
   double xmin,
   double xmax,
@@ -291,6 +354,7 @@ void expect_matches_brute_force(const std::vector<Point2>& pts,
   const double area = (xmax - xmin) * (ymax - ymin);
   const double tolerance = area_tolerance(window);
   check_structure(r, pts, area, tolerance);
+  expect_searches_are_first_finds(r, pts, xmin, ymin);
   const BruteForce bf = brute_force(pts, xmin, xmax, ymin, ymax);
   const PairKinds got = GraphPairs(r.Contiguities);
   EXPECT_EQ(got, bf.pairs);
