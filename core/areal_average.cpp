@@ -221,22 +221,23 @@ void CheckSettingsRange(const ArealAverageSettings& settings)
 
 struct ThiessenArealAverage::State
 {
-  // The constructor's stages, in order (after the inputs are checked).
+  // The constructor's stages, in order (after the inputs are checked); MakeWindow calls
+  // PrepareUpdates when updating.
   void ChooseProjection(const CleanRings& rings);
   void PlaceGauges(const std::vector<Point2>& gaugesLonLat);
-  void ImposeCatchment(const CleanRings& rings);
+  void ProjectCatchment(const CleanRings& rings);
   void MakeWindow();
   void PrepareUpdates(double clearMargin);
 
-  // A step's stages (Step): the tessellation updated (Update) or rebuilt, then the tiles derived,
-  // then the weights.
+  // A step's stages (Step): the tessellation updated (ApplyReportedChanges) or rebuilt, then the
+  // tiles derived, then the weights.
   struct Changes
   {
     bool Local = false; ///< only the touched and inserted gauges' tiles need deriving
     std::vector<std::int32_t> Inserted, Touched;
     std::size_t Deferred = 0; ///< removals deferred (DeferClearRemovals)
   };
-  Changes Update();
+  Changes ApplyReportedChanges();
   void RebuildFromWanted();
   void Weigh(const std::vector<double>& values, ArealStep& step) const;
 
@@ -745,48 +746,12 @@ struct ThiessenArealAverage::State
     const std::vector<std::int32_t>& inserted,
     std::vector<std::int32_t>* touched)
   {
-    DirichletTessellation& t = *this->Tessellation;
-    std::vector<std::int32_t>& around = this->Neighbours;
     const bool local = touched != nullptr; // (a step that is not has no deferred gauge)
-    const auto remove = [&](std::int32_t g)
-    {
-      if (touched)
-      {
-        around.clear();
-        t.AppendNeighbours(this->EngineOfGauge[g], around);
-        const Box2& box = this->BoundsOfGauge(g);
-        for (const std::int32_t id : around)
-        {
-          this->TileBounds[id].Extend(box);
-          touched->push_back(id);
-        }
-      }
-      t.Remove(this->EngineOfGauge[g]);
-      this->RemovedId[g] = this->EngineOfGauge[g];
-      this->EngineOfGauge[g] = NotInTessellation;
-      this->Used[g] = 0;
-      if (!t.IsTwoDimensional())
-      {
-        touched = nullptr;
-      }
-    };
     for (const std::int32_t g : removed)
     {
-      remove(g);
+      this->RemoveGauge(g, touched);
     }
-    // Deferred gauges next to the removed ones: their tiles grew, so their boxes did. One whose
-    // box now reaches the catchment is removed for real (which grows its neighbours' boxes: they
-    // are checked in turn, being appended to touched). A deferred gauge is in the tessellation:
-    // its flag is cleared before it is removed.
-    for (std::size_t k = 0; touched && k < touched->size(); ++k)
-    {
-      const std::int32_t id = (*touched)[k];
-      if (this->Deferred[id] && !this->ClearOfCatchment(this->TileBounds[id]))
-      {
-        this->Deferred[id] = 0;
-        remove(this->GaugeOfEngine[id]);
-      }
-    }
+    this->RemoveDeferredThatGrew(touched);
     if (local && !touched)
     {
       // The tessellation stopped being two-dimensional on the way, so every tile is derived: no
@@ -795,56 +760,108 @@ struct ThiessenArealAverage::State
       this->TakeAllDeferred(rest);
       for (const std::int32_t g : rest)
       {
-        remove(g);
+        this->RemoveGauge(g, touched);
       }
     }
     for (const std::int32_t g : inserted)
     {
-      std::int32_t id = this->RemovedId[g];
-      if (id >= 0)
-      {
-        t.Reinsert(id, this->PresentNear(g));
-      }
-      else
-      {
-        id = t.Insert(this->GaugesXY[g], this->PresentNear(g));
-      }
-      if (t.Status(id) != PointStatus::Accepted)
-      {
-        // Never: gauges lie inside the window, and one gauge per place is in the tessellation.
-        throw std::logic_error(GaugeLabel(static_cast<std::size_t>(g), this->Settings.GaugeNames) +
-          " is not a vertex of the tessellation after its insertion");
-      }
-      this->EngineOfGauge[g] = id;
-      this->Used[g] = 1;
-      if (static_cast<std::size_t>(id) >= this->GaugeOfEngine.size())
-      {
-        this->GaugeOfEngine.resize(id + 1, NotInTessellation);
-      }
-      if (static_cast<std::size_t>(id) >= this->TileBounds.size() && this->Settings.Incremental)
-      {
-        this->TileBounds.resize(id + 1);
-        this->Deferred.resize(id + 1, 0);
-      }
-      this->GaugeOfEngine[id] = g;
-      if (touched && t.IsTwoDimensional())
-      {
-        around.clear();
-        t.AppendNeighbours(id, around);
-        Box2 box = this->TileBounds[around.front()];
-        for (const std::int32_t neighbour : around)
-        {
-          box.Extend(this->TileBounds[neighbour]);
-          touched->push_back(neighbour);
-        }
-        this->TileBounds[id] = box;
-      }
-      else
-      {
-        touched = nullptr;
-      }
+      this->InsertGauge(g, touched);
     }
     return touched != nullptr;
+  }
+
+  /// Apply's removal of gauge g: its neighbours touched (when listed) and their boxes grown by
+  /// its box; touched becomes null when the tessellation stops being two-dimensional.
+  void RemoveGauge(std::int32_t g, std::vector<std::int32_t>*& touched)
+  {
+    DirichletTessellation& t = *this->Tessellation;
+    if (touched)
+    {
+      std::vector<std::int32_t>& around = this->Neighbours;
+      around.clear();
+      t.AppendNeighbours(this->EngineOfGauge[g], around);
+      const Box2& box = this->BoundsOfGauge(g);
+      for (const std::int32_t id : around)
+      {
+        this->TileBounds[id].Extend(box);
+        touched->push_back(id);
+      }
+    }
+    t.Remove(this->EngineOfGauge[g]);
+    this->RemovedId[g] = this->EngineOfGauge[g];
+    this->EngineOfGauge[g] = NotInTessellation;
+    this->Used[g] = 0;
+    if (!t.IsTwoDimensional())
+    {
+      touched = nullptr;
+    }
+  }
+
+  /// Deferred gauges next to the removed ones: their tiles grew, so their boxes did. One whose
+  /// box now reaches the catchment is removed for real (which grows its neighbours' boxes: they
+  /// are checked in turn, being appended to touched). A deferred gauge is in the tessellation:
+  /// its flag is cleared before it is removed.
+  void RemoveDeferredThatGrew(std::vector<std::int32_t>*& touched)
+  {
+    for (std::size_t k = 0; touched && k < touched->size(); ++k)
+    {
+      const std::int32_t id = (*touched)[k];
+      if (this->Deferred[id] && !this->ClearOfCatchment(this->TileBounds[id]))
+      {
+        this->Deferred[id] = 0;
+        this->RemoveGauge(this->GaugeOfEngine[id], touched);
+      }
+    }
+  }
+
+  /// Apply's insertion of gauge g (under its old engine id when it had one): its neighbours
+  /// touched (when listed), and its box their boxes joined; touched becomes null when the
+  /// tessellation is not two-dimensional after it.
+  void InsertGauge(std::int32_t g, std::vector<std::int32_t>*& touched)
+  {
+    DirichletTessellation& t = *this->Tessellation;
+    std::int32_t id = this->RemovedId[g];
+    if (id >= 0)
+    {
+      t.Reinsert(id, this->PresentNear(g));
+    }
+    else
+    {
+      id = t.Insert(this->GaugesXY[g], this->PresentNear(g));
+    }
+    if (t.Status(id) != PointStatus::Accepted)
+    {
+      // Never: gauges lie inside the window, and one gauge per place is in the tessellation.
+      throw std::logic_error(GaugeLabel(static_cast<std::size_t>(g), this->Settings.GaugeNames) +
+        " is not a vertex of the tessellation after its insertion");
+    }
+    this->EngineOfGauge[g] = id;
+    this->Used[g] = 1;
+    if (static_cast<std::size_t>(id) >= this->GaugeOfEngine.size())
+    {
+      this->GaugeOfEngine.resize(id + 1, NotInTessellation);
+    }
+    if (static_cast<std::size_t>(id) >= this->TileBounds.size() && this->Settings.Incremental)
+    {
+      this->TileBounds.resize(id + 1);
+      this->Deferred.resize(id + 1, 0);
+    }
+    this->GaugeOfEngine[id] = g;
+    if (!touched || !t.IsTwoDimensional())
+    {
+      touched = nullptr;
+      return;
+    }
+    std::vector<std::int32_t>& around = this->Neighbours;
+    around.clear();
+    t.AppendNeighbours(id, around);
+    Box2 box = this->TileBounds[around.front()];
+    for (const std::int32_t neighbour : around)
+    {
+      box.Extend(this->TileBounds[neighbour]);
+      touched->push_back(neighbour);
+    }
+    this->TileBounds[id] = box;
   }
 
   /// Renumbers the engine's triangles along the gauges' Hilbert order once a sixteenth of them
@@ -1267,11 +1284,6 @@ void CheckCatchmentHasArea(const Catchment& region)
   }
 }
 
-} // namespace
-
-namespace
-{
-
 /// The gauges' places and the settings, checked before anything is built from them.
 void CheckGaugesAndSettings(const std::vector<Point2>& gaugesLonLat,
   const ArealAverageSettings& settings)
@@ -1479,8 +1491,9 @@ void ThiessenArealAverage::State::PlaceGauges(const std::vector<Point2>& gaugesL
   }
 }
 
-// The catchment, projected, and its area measured as the tiles' will be.
-void ThiessenArealAverage::State::ImposeCatchment(const CleanRings& rings)
+// The catchment, projected (a Catchment, ready to clip tiles), and its area measured as the
+// tiles' will be.
+void ThiessenArealAverage::State::ProjectCatchment(const CleanRings& rings)
 {
   std::vector<std::size_t> offsets;
   std::vector<Point2> projected;
@@ -1558,7 +1571,7 @@ ThiessenArealAverage::ThiessenArealAverage(const std::vector<Point2>& gaugesLonL
     ValidCatchmentRings(catchmentRingOffsets, catchmentLonLat, s.SnappedVertices);
   s.ChooseProjection(rings);
   s.PlaceGauges(gaugesLonLat);
-  s.ImposeCatchment(rings);
+  s.ProjectCatchment(rings);
   s.MakeWindow();
 }
 
@@ -1630,11 +1643,13 @@ std::vector<std::int32_t> ThiessenArealAverage::CatchmentRingsAround(std::size_t
   return region.EnclosingRings(r);
 }
 
-// The local derivation when updating a two-dimensional tessellation, with at most a fifth of the
-// gauges changing; otherwise every tile. A two-dimensional tessellation before the update means
-// that every cached area is current (the first step, or one after a step without reports, starts
-// from an empty tessellation).
-ThiessenArealAverage::State::Changes ThiessenArealAverage::State::Update()
+// The step's reported changes applied to the tessellation: the gauges that stopped reporting
+// removed (or their removals deferred, DeferClearRemovals), those that started inserted; returns
+// them and whether the tiles can be derived locally. Locally when updating a two-dimensional
+// tessellation, with at most a fifth of the gauges changing; otherwise every tile. A
+// two-dimensional tessellation before the update means that every cached area is current (the
+// first step, or one after a step without reports, starts from an empty tessellation).
+ThiessenArealAverage::State::Changes ThiessenArealAverage::State::ApplyReportedChanges()
 {
   Changes changes;
   std::vector<std::int32_t> removed;
@@ -1720,7 +1735,7 @@ ArealStep ThiessenArealAverage::Step(const std::vector<double>& values)
   State::Changes changes;
   if (s.Settings.Incremental)
   {
-    changes = s.Update();
+    changes = s.ApplyReportedChanges();
   }
   else
   {

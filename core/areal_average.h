@@ -34,7 +34,7 @@
 
 #include "clip.h"
 #include "geo.h"
-#include "errors.h" // InputError, which the constructor and Step throw
+#include "errors.h"         // InputError, which the constructor and Step throw
 #include "piece_outlines.h" // RegionOutlines
 #include "geometry.h"
 

@@ -946,6 +946,33 @@ bool ClipPiece(const Point2& origin,
 
 } // namespace
 
+namespace
+{
+
+// The clipped area, unless it is within its rounding bound of 0: pieces that cancel but for
+// rounding (a tile inside a hole: the outer ring gives the tile, the hole's ring clipped to the
+// tile gives it back reversed, their areas computed apart differ by 1e-19) leave the tile
+// outside, with no area and no ring (those appended since ringsBefore are dropped).
+double AreaBeyondRounding(double area,
+  double roundingBound,
+  double tileArea,
+  ClippedRings* rings,
+  std::size_t ringsBefore)
+{
+  if (std::fabs(area) <= roundingBound)
+  {
+    if (rings)
+    {
+      rings->RingOffsets.resize(ringsBefore);
+      rings->Vertices.resize(rings->RingOffsets.back());
+    }
+    return 0.0;
+  }
+  return std::min(std::max(area, 0.0), tileArea);
+}
+
+} // namespace
+
 double Catchment::ClipInto(const Point2* tile,
   std::size_t count,
   std::size_t tileId,
@@ -981,7 +1008,7 @@ double Catchment::ClipInto(const Point2* tile,
   if (box.XMin <= this->Box.XMin && box.XMax >= this->Box.XMax && box.YMin <= this->Box.YMin &&
     box.YMax >= this->Box.YMax && TileHoldsBox(tile, count, this->Box))
   {
-    return this->WholeCatchment(tileArea, rings);
+    return this->ClipWholeCatchment(tileArea, rings);
   }
   WidenUntilCentreIsInside(box);
   this->ListCandidates(box, work);
@@ -1000,7 +1027,7 @@ double Catchment::ClipInto(const Point2* tile,
 // The whole catchment lies in the tile: the intersection is the catchment itself, exactly.
 // (Clipped as the pieces are, relative to the tile's first vertex, a catchment 10^-14 of a huge
 // tile measured less than the rounding bound of that shift, and was dropped as empty.)
-double Catchment::WholeCatchment(double tileArea, ClippedRings* rings) const
+double Catchment::ClipWholeCatchment(double tileArea, ClippedRings* rings) const
 {
   if (rings)
   {
@@ -1135,6 +1162,7 @@ double Catchment::ClipPieces(const Point2* tile,
   }
   for (int k = 0; k < std::abs(farWinding); ++k)
   {
+    // A ring with no candidate segment that winds round the box: the whole tile, once per turn.
     area.Add(farWinding > 0 ? tileArea : -tileArea);
     roundingBound += RoundingAreaBound(work.Tile, hullMagnitude);
     if (rings)
@@ -1142,19 +1170,7 @@ double Catchment::ClipPieces(const Point2* tile,
       AppendRing(*rings, tile, count, farWinding < 0);
     }
   }
-  if (std::fabs(area.Value()) <= roundingBound)
-  {
-    // Pieces that cancel but for rounding (a tile inside a hole: the outer ring gives the tile,
-    // the hole's ring clipped to the tile gives it back reversed, their areas computed apart
-    // differ by 1e-19): the tile is outside, no area and no ring.
-    if (rings)
-    {
-      rings->RingOffsets.resize(ringsBefore);
-      rings->Vertices.resize(rings->RingOffsets.back());
-    }
-    return 0.0;
-  }
-  return std::min(std::max(area.Value(), 0.0), tileArea);
+  return AreaBeyondRounding(area.Value(), roundingBound, tileArea, rings, ringsBefore);
 }
 
 // The ring's candidate segments in ring order, with each run of other segments (all outside the

@@ -199,9 +199,11 @@ private:
   void FindDepths();
   void OrientRings();
   void ClassifyEmptyCells();
-  // ClipInto's cases, after its checks: tile anticlockwise from its lowest vertex, box its
-  // bounds (widened until its centre is inside, but for WholeCatchment).
-  double WholeCatchment(double tileArea, ClippedRings* rings) const;
+  // ClipInto's steps and cases, after its checks: tile anticlockwise from its lowest vertex, box
+  // its bounds (widened until its centre is inside, but for ClipWholeCatchment). ListCandidates
+  // lists the segments that meet the box; then a tile without any is all in or all out
+  // (ClipWithoutCandidates), and one with some is clipped piece by piece (ClipPieces).
+  double ClipWholeCatchment(double tileArea, ClippedRings* rings) const;
   void ListCandidates(const Box2& box, Workspace& work) const;
   double ClipWithoutCandidates(const Point2* tile,
     std::size_t count,

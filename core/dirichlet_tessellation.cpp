@@ -709,6 +709,25 @@ bool DirichletTessellation::IsGhostTriangle(std::int32_t t) const
     this->Origins[3 * t + 2] == Ghost;
 }
 
+namespace
+{
+
+// Writes the walk's length (steps) to *Kept, if any, when Locate returns, whichever return it is.
+struct KeepWalkLength
+{
+  const std::int64_t& Steps;
+  std::int64_t* Kept;
+  ~KeepWalkLength()
+  {
+    if (this->Kept)
+    {
+      *this->Kept = this->Steps;
+    }
+  }
+};
+
+} // namespace
+
 // Visibility walk from the region's last triangle (made last, or where a hint or a jump put it: see
 // InsertKnownPoint): cross any edge that has p strictly on
 // its far side. In a Delaunay triangulation this walk cannot cycle. Reaching a ghost triangle means
@@ -738,18 +757,7 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Region& regi
   // the end of the walk is a branch.
   std::int64_t steps = 0;
   // (an insertion keeps its walk's length, at whichever return ends it; a query, const, does not)
-  const struct KeepWalkLength
-  {
-    const std::int64_t& Steps;
-    std::int64_t* Kept;
-    ~KeepWalkLength()
-    {
-      if (this->Kept)
-      {
-        *this->Kept = this->Steps;
-      }
-    }
-  } keep{ steps, walked };
+  const KeepWalkLength keep{ steps, walked };
   while (crossed >= 0)
   {
     const std::int32_t f = twin[crossed];

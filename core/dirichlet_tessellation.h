@@ -287,7 +287,8 @@ private:
     const Point2& p,
     std::int32_t& edge,
     std::int64_t* walked = nullptr) const;
-  // Locate's parts (inline: as calls, they added 1.2% to a build's instructions).
+  // Locate's parts: defined [[gnu::always_inline]] in dirichlet_tessellation.cpp and callable
+  // only there (as calls, they added 1.2% to a build's instructions).
   inline std::int32_t RealTriangleNear(std::int32_t t) const;
   inline bool TestFirstTriangle(const Region& region,
     std::int32_t t,
@@ -373,7 +374,9 @@ private:
   bool RemoveInteriorVertex(std::int32_t edge);
   bool RemoveHullVertex(std::int32_t edge);
   /// A hull vertex v's star: its chain of neighbours a = n_0 .. n_k = b, the twins outside the
-  /// chain's edges, the star's triangles, and the twins of the ghosts' edges beyond a and b.
+  /// chain's edges, the star's triangles in ring order from the ghost (v, G, a) (Slots[0]), and
+  /// the twins of the ghosts' edges beyond a and b. RemoveHullVertex's steps: ReadHullStar, the
+  /// new hull (ConvexChain), PlanHullRemoval, WriteHullRemoval (dirichlet_tessellation.cpp).
   struct HullStar
   {
     std::vector<std::int32_t> Chain, Outer, Slots;

@@ -247,11 +247,6 @@ void CheckRecordComplete(const std::string& text,
       ProjectionKindName(kind) + " needs");
   }
 }
-} // namespace
-
-namespace
-{
-
 /// A record's value as a finite number, else an InputError naming key and value.
 double RecordNumber(const std::string& key, const std::string& value)
 {

@@ -481,7 +481,7 @@ public:
 
   // Gives each far point reached its chain's contour, end pixel and distance beyond the end, and
   // marks it chained.
-  void Settle(PointPartition& result, std::vector<std::uint8_t>& chained) const
+  void AssignReached(PointPartition& result, std::vector<std::uint8_t>& chained) const
   {
     // In settling order a chain's earlier points come first, so a parent's Beyond is its chain's
     // when its children read it; near points that started a chain keep their own distance.
@@ -596,7 +596,7 @@ std::vector<std::uint8_t> FollowChainsPastEnds(const std::vector<Point2>& points
   ChainsPastEnds chains(points, contours, width, maximumGap, far, std::move(farPoints));
   chains.Start(ends, result);
   chains.Grow();
-  chains.Settle(result, chained);
+  chains.AssignReached(result, chained);
   return chained;
 }
 

@@ -122,7 +122,7 @@ struct PixelSums
   std::vector<std::vector<std::size_t>> Extended;
 };
 
-// The means are summed scaled into (-1, 1) by a power of two for x and one for y (exact but where
+// The points are summed scaled into (-1, 1) by a power of two for x and one for y (exact but where
 // a coordinate falls below 2^-1022 of its axis's largest): 300 copies of a point at 9e305 summed
 // to infinity, and the run failed on a "RaG control point" with an infinite coordinate.
 PixelSums SumPointsByPixel(const std::vector<Point2>& points,
@@ -265,17 +265,18 @@ void FitCurves(const std::vector<Point2>& points,
   std::vector<int> single; // groups of one point: no curve to fit
   for (int c = 0; c < contours.Count(); ++c)
   {
-    const CurveMembers curve = MembersOf(c, points, contours, partition, sums);
-    const double members = std::accumulate(curve.Weights.begin(), curve.Weights.end(), 0.0);
-    if (members < 2.0)
+    const CurveMembers curveMembers = MembersOf(c, points, contours, partition, sums);
+    const double weightSum =
+      std::accumulate(curveMembers.Weights.begin(), curveMembers.Weights.end(), 0.0);
+    if (weightSum < 2.0)
     {
-      if (members > 0.0)
+      if (weightSum > 0.0)
       {
         single.push_back(c);
       }
       continue;
     }
-    AppendCurve(c, curve, contours, settings, result);
+    AppendCurve(c, curveMembers, contours, settings, result);
   }
   NameSinglePointGroups(single, points, contours, partition, result);
 }

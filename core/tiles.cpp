@@ -433,10 +433,6 @@ void TessellationDual::LabelFaces(const std::vector<std::uint8_t>& cocircular)
 // its polygon listed in found, and its centre taken from its points (FaceCentre) with its inside
 // flag decided exactly (the rounded centre and its error bound settle almost every face,
 // CircumcentreSide the rest).
-//
-// The flood lists the face's boundary edges as it goes (the edges it does not cross), so that no
-// membership test reads the triangles outside: on a lattice those were random loads, four per
-// face, and cost as much as the rest.
 void TessellationDual::MergeClusters(std::int32_t begin,
   std::int32_t end,
   const std::vector<std::uint8_t>& cocircular,
@@ -480,7 +476,9 @@ void TessellationDual::MergeClusters(std::int32_t begin,
 }
 
 // Floods t's circle through the co-circular edges (each recorded by its smaller triangle) into
-// cluster, listing the face's boundary edges; whether t is the cluster's smallest triangle.
+// cluster; whether t is the cluster's smallest triangle. The flood lists the face's boundary edges
+// as it goes (the edges it does not cross), so that no membership test reads the triangles
+// outside: on a lattice those were random loads, four per face, and cost as much as the rest.
 bool TessellationDual::FloodCircle(std::int32_t t,
   const std::vector<std::uint8_t>& cocircular,
   std::vector<std::uint8_t>& visited,

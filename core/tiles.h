@@ -43,8 +43,8 @@
 
 #include <cstdint>
 #include <functional>
-#include <utility>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace tessera
@@ -211,6 +211,7 @@ private:
     std::int32_t end,
     const std::vector<std::uint8_t>& cocircular,
     ClusterList& found);
+  /// MergeClusters' flood of one cluster and, when its chunk keeps it, its record (tiles.cpp).
   bool FloodCircle(std::int32_t t,
     const std::vector<std::uint8_t>& cocircular,
     std::vector<std::uint8_t>& visited,
@@ -233,6 +234,8 @@ private:
   struct GraphPart;   // one chunk's contiguities (tiles.cpp)
   void TouchRings(std::int32_t begin, std::int32_t end) const;
   void Derive(TileSet* tiles, TileMesh* mesh, ContiguityGraph* graph) const;
+  /// Derive's set-up of each chunk's mesh and graph parts; sortedCorners: the window's corners
+  /// as (x, y, corner index), sorted. Returns the mesh's first crossing vertex (tiles.cpp).
   std::int32_t PrepareMeshParts(TileMesh& mesh,
     const std::vector<std::int32_t>& bounds,
     std::vector<MeshPart>& parts,

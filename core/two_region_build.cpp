@@ -334,6 +334,8 @@ void DirichletTessellation::TwoRegionBuild::AllotSlots()
   this->T.Twins.resize(3 * std::size_t(slot));
 }
 
+// The two sides may run at once: InsertSide(side) touches only Regions[side], Restarts[side] and
+// what that region owns.
 void DirichletTessellation::TwoRegionBuild::InsertSides()
 {
   if (parallel::ThreadLimit() > 1)
