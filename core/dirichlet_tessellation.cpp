@@ -1481,11 +1481,7 @@ void DirichletTessellation::Remove(std::int32_t id)
   this->StatusBytes[id] = std::uint8_t(PointStatus::Removed);
   if (status == PointStatus::OutsideWindow)
   {
-    --this->RejectedLive;
-    if (this->Rejected.size() > 2 * this->RejectedLive + 64)
-    {
-      this->CompactRejected(this->StatusBytes);
-    }
+    this->ForgetRejected();
     return;
   }
   if (status == PointStatus::Duplicate)
@@ -1509,24 +1505,53 @@ void DirichletTessellation::Remove(std::int32_t id)
     onLine = std::find(this->Collinear.begin(), this->Collinear.end(), id);
   }
   this->VertexEdges[id] = -1;
+  if (!this->PassToHeir(id, flags, edge, onLine))
+  {
+    this->RemoveVertex(id, edge, onLine);
+  }
+}
 
-  // A duplicate takes the removed point's place: the structure does not change.
+// A rejected point removed: the list of rejected points is compacted once most are removed.
+void DirichletTessellation::ForgetRejected()
+{
+  --this->RejectedLive;
+  if (this->Rejected.size() > 2 * this->RejectedLive + 64)
+  {
+    this->CompactRejected(this->StatusBytes);
+  }
+}
+
+// A duplicate of the removed point takes its place, when it has one: the structure does not
+// change (the vertex at edge, or the line's entry onLine, is relabelled). Whether one did.
+bool DirichletTessellation::PassToHeir(std::int32_t id,
+  std::uint8_t flags,
+  std::int32_t edge,
+  std::vector<std::int32_t>::iterator onLine)
+{
   bool copied = false;
   const std::int32_t heir = (flags & HasDuplicates) ? this->Places.PromoteHeir(id, copied) : -1;
-  if (heir >= 0)
+  if (heir < 0)
   {
-    this->StatusBytes[heir] = std::uint8_t(PointStatus::Accepted) | (copied ? HasDuplicates : 0);
-    if (edge >= 0)
-    {
-      this->Relabel(edge, heir);
-    }
-    else
-    {
-      *onLine = heir;
-    }
-    return;
+    return false;
   }
+  this->StatusBytes[heir] = std::uint8_t(PointStatus::Accepted) | (copied ? HasDuplicates : 0);
+  if (edge >= 0)
+  {
+    this->Relabel(edge, heir);
+  }
+  else
+  {
+    *onLine = heir;
+  }
+  return true;
+}
 
+// The accepted point id leaves the structure: off the line, or out of the triangulation in place
+// (an interior or a hull vertex), else by a rebuild.
+void DirichletTessellation::RemoveVertex(std::int32_t id,
+  std::int32_t edge,
+  std::vector<std::int32_t>::iterator onLine)
+{
   --this->Accepted;
   if (!this->IsTwoDimensional())
   {
@@ -1534,9 +1559,9 @@ void DirichletTessellation::Remove(std::int32_t id)
     return;
   }
   ++this->Removals;
-  // The paths above change no triangle and keep the co-circularity flag; an in-place removal
-  // tests its new triangles against their neighbours (AnyCocircularNeighbour); a rebuild sets
-  // the flag afresh.
+  // Remove's other paths (a rejected point, a duplicate, an heir) change no triangle and keep the
+  // co-circularity flag; an in-place removal tests its new triangles against their neighbours
+  // (AnyCocircularNeighbour); a rebuild sets the flag afresh.
   this->BeginTrackedChange();
   const bool inPlace = this->RemoveInteriorVertex(edge) || this->RemoveHullVertex(edge);
   this->EndTrackedChange();

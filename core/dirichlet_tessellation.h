@@ -373,6 +373,13 @@ private:
   void ApplyPlan(const std::vector<Ear>& plan, const std::vector<std::int32_t>& slots);
   bool RemoveInteriorVertex(std::int32_t edge);
   bool RemoveHullVertex(std::int32_t edge);
+  // Remove's cases (dirichlet_tessellation.cpp).
+  void ForgetRejected();
+  bool PassToHeir(std::int32_t id,
+    std::uint8_t flags,
+    std::int32_t edge,
+    std::vector<std::int32_t>::iterator onLine);
+  void RemoveVertex(std::int32_t id, std::int32_t edge, std::vector<std::int32_t>::iterator onLine);
   /// A hull vertex v's star: its chain of neighbours a = n_0 .. n_k = b, the twins outside the
   /// chain's edges, the star's triangles in ring order from the ghost (v, G, a) (Slots[0]), and
   /// the twins of the ghosts' edges beyond a and b. RemoveHullVertex's steps: ReadHullStar, the
