@@ -433,39 +433,16 @@ void DirichletTessellation::InsertKnownPoint(std::int32_t id, std::int32_t nearI
 //   On --JumpMissesToStop jumps in a row finding none nearer--> Off
 void DirichletTessellation::JumpTowards(const Point2& p)
 {
-  constexpr int ProbeSamples = 16;
-  constexpr int JumpMissesToStop = 2;
   const std::int32_t triangles = std::int32_t(this->Origins.size() / 3);
-  // (walk >= 2 cbrt(triangles), cubed: most insertions stop here, and need no root)
-  const double walk = double(this->Serial.LastWalk);
-  if (this->JumpMode == Jumping::Off && triangles >= 64 && walk * walk * walk >= 8.0 * triangles)
-  {
-    this->JumpMode = Jumping::Probe;
-  }
-  if (this->JumpMode == Jumping::Off)
+  if (!this->JumpWanted(triangles))
   {
     return;
   }
-  const double fewest = std::cbrt(double(triangles)), most = std::sqrt(double(triangles));
-  const auto distanceTo = [&](std::int32_t t)
-  {
-    double nearest = HUGE_VAL;
-    for (std::int32_t k = 0; k < 3; ++k)
-    {
-      const std::int32_t v = this->Origins[3 * t + k];
-      if (v >= 0)
-      {
-        const Point2& q = this->Coordinates[v];
-        nearest = std::min(nearest, (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y));
-      }
-    }
-    return nearest; // (HUGE_VAL for a free triangle, whose origins are all Free)
-  };
   std::int32_t best = this->Serial.LastTriangle;
-  double bestDistance = distanceTo(best);
+  double bestDistance = this->SquaredDistanceToTriangle(best, p);
   const auto consider = [&](std::int32_t t)
   {
-    const double d = t < triangles ? distanceTo(t) : HUGE_VAL;
+    const double d = t < triangles ? this->SquaredDistanceToTriangle(t, p) : HUGE_VAL;
     if (d < bestDistance)
     {
       best = t;
@@ -489,19 +466,72 @@ void DirichletTessellation::JumpTowards(const Point2& p)
   {
     consider(t);
   }
-  const int samples = hints > 0 ? 0
-    : this->JumpMode == Jumping::Probe
-    ? ProbeSamples
-    : int(std::clamp(double(this->Serial.LastWalk) / 4.0, fewest, most));
+  const int samples = hints > 0 ? 0 : this->JumpSamples(triangles);
   for (int k = 0; k < samples; ++k)
   {
-    // xorshift64: a fixed sequence, so that a stream gives the same walks every run
-    this->JumpState ^= this->JumpState << 13;
-    this->JumpState ^= this->JumpState >> 7;
-    this->JumpState ^= this->JumpState << 17;
-    consider(std::int32_t(this->JumpState % std::uint64_t(triangles)));
+    consider(this->NextJumpSample(triangles));
   }
-  if (best != this->Serial.LastTriangle)
+  this->UpdateJumpMode(best != this->Serial.LastTriangle);
+  this->Serial.LastTriangle = best;
+}
+
+// Off turns to Probe once a walk ran 2 cube roots of the triangles or more; whether to jump.
+bool DirichletTessellation::JumpWanted(std::int32_t triangles)
+{
+  // (walk >= 2 cbrt(triangles), cubed: most insertions stop here, and need no root)
+  const double walk = double(this->Serial.LastWalk);
+  if (this->JumpMode == Jumping::Off && triangles >= 64 && walk * walk * walk >= 8.0 * triangles)
+  {
+    this->JumpMode = Jumping::Probe;
+  }
+  return this->JumpMode != Jumping::Off;
+}
+
+// The squared distance from p to the nearest vertex of triangle t (HUGE_VAL for a free triangle,
+// whose origins are all Free).
+double DirichletTessellation::SquaredDistanceToTriangle(std::int32_t t, const Point2& p) const
+{
+  double nearest = HUGE_VAL;
+  for (std::int32_t k = 0; k < 3; ++k)
+  {
+    const std::int32_t v = this->Origins[3 * t + k];
+    if (v >= 0)
+    {
+      const Point2& q = this->Coordinates[v];
+      nearest = std::min(nearest, (q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y));
+    }
+  }
+  return nearest;
+}
+
+// Random triangles to sample where there is no index: a few while probing, then a quarter as
+// many as the last walk's steps, from a cube root to a square root of the triangles.
+int DirichletTessellation::JumpSamples(std::int32_t triangles) const
+{
+  constexpr int ProbeSamples = 16;
+  if (this->JumpMode == Jumping::Probe)
+  {
+    return ProbeSamples;
+  }
+  const double fewest = std::cbrt(double(triangles)), most = std::sqrt(double(triangles));
+  return int(std::clamp(double(this->Serial.LastWalk) / 4.0, fewest, most));
+}
+
+// xorshift64: a fixed sequence, so that a stream gives the same walks every run.
+std::int32_t DirichletTessellation::NextJumpSample(std::int32_t triangles)
+{
+  this->JumpState ^= this->JumpState << 13;
+  this->JumpState ^= this->JumpState >> 7;
+  this->JumpState ^= this->JumpState << 17;
+  return std::int32_t(this->JumpState % std::uint64_t(triangles));
+}
+
+// On after a jump that found a nearer start; Off after a probe that did not, or after
+// JumpMissesToStop jumps in a row that did not.
+void DirichletTessellation::UpdateJumpMode(bool foundNearer)
+{
+  constexpr int JumpMissesToStop = 2;
+  if (foundNearer)
   {
     this->JumpMode = Jumping::On;
     this->JumpMisses = 0;
@@ -510,7 +540,6 @@ void DirichletTessellation::JumpTowards(const Point2& p)
   {
     this->JumpMode = Jumping::Off;
   }
-  this->Serial.LastTriangle = best;
 }
 
 void DirichletTessellation::InsertAcceptedPoint(std::int32_t id)

@@ -276,6 +276,12 @@ private:
   std::array<std::int32_t, 64> RecentStarts{};
   std::size_t NextRecentStart = 0;
   void JumpTowards(const Point2& p);
+  // JumpTowards' parts (dirichlet_tessellation.cpp).
+  bool JumpWanted(std::int32_t triangles);
+  double SquaredDistanceToTriangle(std::int32_t t, const Point2& p) const;
+  int JumpSamples(std::int32_t triangles) const;
+  std::int32_t NextJumpSample(std::int32_t triangles);
+  void UpdateJumpMode(bool foundNearer);
   void InsertAcceptedPoint(std::int32_t id);
   void InsertCollinear(std::int32_t id);
   void SortCollinearBatch();
