@@ -1786,6 +1786,70 @@ bool DirichletTessellation::TriangulateHole(std::vector<std::int32_t>& ring,
   return this->CutDelaunayEars(ring, outer, slots, first, plan);
 }
 
+namespace
+{
+
+// The link build's half-edges along the polygon's d edges, r_a -> r_a+1 (edgeOf: the polygon edge
+// each is, else -1), and their triangles, where the flood starts (order, and each one's place in
+// it, indexOf); false unless all d edges are there.
+bool FindPolygonEdges(const HalfEdgeArray& org,
+  std::int32_t d,
+  std::vector<std::int32_t>& edgeOf,
+  std::vector<std::int32_t>& order,
+  std::vector<std::int32_t>& indexOf)
+{
+  std::int32_t found = 0;
+  for (std::int32_t e = 0; e < std::int32_t(org.size()); ++e)
+  {
+    const std::int32_t a = org[e], b = org[DirichletTessellation::Next(e)];
+    if (a >= 0 && b >= 0 && b == (a + 1) % d)
+    {
+      edgeOf[e] = a;
+      ++found;
+      if (indexOf[e / 3] < 0)
+      {
+        indexOf[e / 3] = std::int32_t(order.size());
+        order.push_back(e / 3);
+      }
+    }
+  }
+  return found == d;
+}
+
+// Floods from the triangles listed, across every edge but the polygon's, appending the triangles
+// reached to order; false where it reaches a ghost (it left the polygon).
+bool FloodInsidePolygon(const HalfEdgeArray& org,
+  const HalfEdgeArray& twin,
+  const std::vector<std::int32_t>& edgeOf,
+  std::vector<std::int32_t>& order,
+  std::vector<std::int32_t>& indexOf)
+{
+  for (std::size_t k = 0; k < order.size(); ++k)
+  {
+    for (std::int32_t i = 0; i < 3; ++i)
+    {
+      const std::int32_t e = 3 * order[k] + i;
+      if (edgeOf[e] >= 0)
+      {
+        continue;
+      }
+      const std::int32_t t = twin[e] / 3;
+      if (org[3 * t] < 0 || org[3 * t + 1] < 0 || org[3 * t + 2] < 0)
+      {
+        return false; // (a ghost: the flood left the polygon)
+      }
+      if (indexOf[t] < 0)
+      {
+        indexOf[t] = std::int32_t(order.size());
+        order.push_back(t);
+      }
+    }
+  }
+  return true;
+}
+
+} // namespace
+
 // Triangulates a large hole polygon (as TriangulateHole) by a batch build of its vertices alone,
 // into plan[first ..] (a triangle per slot, twins set): the polygon's edges are Delaunay edges of
 // the points without the vertex, so they are edges of that build, and its triangles inside the
@@ -1821,49 +1885,13 @@ bool DirichletTessellation::TriangulateLinkByBuild(const std::vector<std::int32_
   }
   const HalfEdgeArray& org = link.Origin();
   const HalfEdgeArray& twin = link.Twin();
-  const std::int32_t halfEdges = std::int32_t(org.size());
   // The polygon's edge each half-edge is (-1: none), and the triangles inside, in flood order.
   std::vector<std::int32_t> edgeOf(org.size(), -1);
   std::vector<std::int32_t> order, indexOf(org.size() / 3, -1);
-  std::int32_t found = 0;
-  for (std::int32_t e = 0; e < halfEdges; ++e)
-  {
-    const std::int32_t a = org[e], b = org[Next(e)];
-    if (a >= 0 && b >= 0 && b == (a + 1) % d)
-    {
-      edgeOf[e] = a;
-      ++found;
-      if (indexOf[e / 3] < 0)
-      {
-        indexOf[e / 3] = std::int32_t(order.size());
-        order.push_back(e / 3);
-      }
-    }
-  }
-  if (found != d)
+  if (!FindPolygonEdges(org, d, edgeOf, order, indexOf) ||
+    !FloodInsidePolygon(org, twin, edgeOf, order, indexOf))
   {
     return false;
-  }
-  for (std::size_t k = 0; k < order.size(); ++k)
-  {
-    for (std::int32_t i = 0; i < 3; ++i)
-    {
-      const std::int32_t e = 3 * order[k] + i;
-      if (edgeOf[e] >= 0)
-      {
-        continue;
-      }
-      const std::int32_t t = twin[e] / 3;
-      if (org[3 * t] < 0 || org[3 * t + 1] < 0 || org[3 * t + 2] < 0)
-      {
-        return false; // (a ghost: the flood left the polygon)
-      }
-      if (indexOf[t] < 0)
-      {
-        indexOf[t] = std::int32_t(order.size());
-        order.push_back(t);
-      }
-    }
   }
   if (order.size() != std::size_t(d - 2) || slots.size() < first + order.size())
   {
