@@ -165,10 +165,17 @@ DirichletTessellation::DirichletTessellation(Window window, std::vector<Point2> 
     this->BuildFrom(inside, &box);
     return;
   }
-  // Validation and the window test per point, on the cores. Each chunk writes the ids it keeps, in
-  // id order, over its own part of `inside` and lists the others; the kept parts are then moved
-  // together. The first bad point of the first chunk that has one is the one reported, as when
-  // serial.
+  this->KeepInsideWindow(bounds, inside);
+  this->BuildFrom(inside);
+}
+
+// Validation and the window test per point, on the cores: inside keeps the ids inside the window,
+// in id order, and Rejected gets the others. Each chunk writes the ids it keeps over its own part
+// of `inside` and lists the others; the kept parts are then moved together. The first bad point
+// of the first chunk that has one is the one reported, as when serial.
+void DirichletTessellation::KeepInsideWindow(const std::vector<std::int32_t>& bounds,
+  std::vector<std::int32_t>& inside)
+{
   const std::size_t chunks = bounds.size() - 1;
   std::vector<std::int32_t> kept(chunks);
   std::vector<std::vector<std::int32_t>> outside(chunks);
@@ -207,8 +214,31 @@ DirichletTessellation::DirichletTessellation(Window window, std::vector<Point2> 
   {
     this->Rejected.insert(this->Rejected.end(), ids.begin(), ids.end());
   }
-  this->BuildFrom(inside);
 }
+
+namespace
+{
+
+// points[order[k]] for each k, gathered on the cores (random reads of a large array).
+std::vector<Point2> GatherInOrder(const std::vector<Point2>& points,
+  const std::vector<std::int32_t>& order)
+{
+  const std::vector<std::int32_t> chunks = parallel::ChunkBounds(
+    std::int32_t(order.size()), parallel::ThreadCount(std::int64_t(order.size())));
+  std::vector<Point2> gathered;
+  ResizeOnLargePages(gathered, order.size());
+  parallel::RunChunks(chunks.size() - 1,
+    [&](std::size_t c)
+    {
+      for (std::int32_t k = chunks[c]; k < chunks[c + 1]; ++k)
+      {
+        gathered[k] = points[order[k]];
+      }
+    });
+  return gathered;
+}
+
+} // namespace
 
 // Batch insertion in BRIO + Hilbert order. While building, vertex k is the k-th point of that
 // order and Coordinates holds the points in that order: consecutive insertions then touch
@@ -228,19 +258,7 @@ void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids, const Box2
   const std::vector<std::int32_t> order = BrioHilbertOrder(this->Coordinates, ids, box);
   ids.clear();
   ids.shrink_to_fit();
-  // The gather and the relabelling below are random reads of a large array: on the cores.
-  const std::vector<std::int32_t> pointChunks = parallel::ChunkBounds(
-    std::int32_t(order.size()), parallel::ThreadCount(std::int64_t(order.size())));
-  std::vector<Point2> local;
-  ResizeOnLargePages(local, order.size());
-  parallel::RunChunks(pointChunks.size() - 1,
-    [&](std::size_t c)
-    {
-      for (std::int32_t k = pointChunks[c]; k < pointChunks[c + 1]; ++k)
-      {
-        local[k] = this->Coordinates[order[k]];
-      }
-    });
+  std::vector<Point2> local = GatherInOrder(this->Coordinates, order);
   std::vector<std::pair<std::int32_t, std::int32_t>> earlierDuplicates;
   earlierDuplicates.swap(this->DuplicatePairs);
   this->Coordinates.swap(local);
@@ -252,6 +270,23 @@ void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids, const Box2
   this->BuildOrder = nullptr;
   this->NoCocircularTriangles = !this->Serial.SawCocircular;
   this->Coordinates.swap(local);
+  this->RenameToInputIds(order);
+  this->DuplicatePairs.insert(
+    this->DuplicatePairs.end(), earlierDuplicates.begin(), earlierDuplicates.end());
+  // Outside BuildFrom the pairs are kept sorted by duplicate id (binary searches, ordered output).
+  std::sort(this->DuplicatePairs.begin(), this->DuplicatePairs.end());
+  if (!this->StatusBytes.empty())
+  {
+    this->RecomputeStatusBytes();
+  }
+  this->ScatteredTriangles = 0; // made along the build's spatial order
+}
+
+// The batch's vertices, numbered in build order while it runs, renamed to input ids (order[k] is
+// vertex k's id): in the half-edges (a random read of a large array: on the cores), the line and
+// the duplicate pairs.
+void DirichletTessellation::RenameToInputIds(const std::vector<std::int32_t>& order)
+{
   std::int32_t* const origins = this->Origins.data();
   const std::vector<std::int32_t> edgeChunks = parallel::ChunkBounds(
     std::int32_t(this->Origins.size()), parallel::ThreadCount(std::int64_t(this->Origins.size())));
@@ -272,15 +307,6 @@ void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids, const Box2
   {
     pair = { order[pair.first], order[pair.second] };
   }
-  this->DuplicatePairs.insert(
-    this->DuplicatePairs.end(), earlierDuplicates.begin(), earlierDuplicates.end());
-  // Outside BuildFrom the pairs are kept sorted by duplicate id (binary searches, ordered output).
-  std::sort(this->DuplicatePairs.begin(), this->DuplicatePairs.end());
-  if (!this->StatusBytes.empty())
-  {
-    this->RecomputeStatusBytes();
-  }
-  this->ScatteredTriangles = 0; // made along the build's spatial order
 }
 
 // Whether two adjacent triangles around a new point are exactly co-circular; start is a half-edge

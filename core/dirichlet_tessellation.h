@@ -318,6 +318,8 @@ private:
   // Two-region batch build (two_region_build.cpp).
   /// box: the bounding box of the vertices [0, count).
   void InsertInOrder(std::int32_t count, const Box2& box);
+  void KeepInsideWindow(const std::vector<std::int32_t>& bounds, std::vector<std::int32_t>& inside);
+  void RenameToInputIds(const std::vector<std::int32_t>& order);
   bool InsertInTwoRegions(std::int32_t first, std::int32_t end, const Box2& box);
   struct TwoRegionBuild; // its steps and state
   bool LegalizeEdges(std::vector<std::int32_t>& edges);
