@@ -320,6 +320,7 @@ private:
   void InsertInOrder(std::int32_t count, const Box2& box);
   void KeepInsideWindow(const std::vector<std::int32_t>& bounds, std::vector<std::int32_t>& inside);
   void RenameToInputIds(const std::vector<std::int32_t>& order);
+  std::int32_t NumberTrianglesByVertex(); ///< OrderTrianglesByVertex's sort (triangle_order.cpp)
   bool InsertInTwoRegions(std::int32_t first, std::int32_t end, const Box2& box);
   struct TwoRegionBuild; // its steps and state
   bool LegalizeEdges(std::vector<std::int32_t>& edges);

@@ -38,33 +38,9 @@ void DirichletTessellation::OrderTrianglesByVertex()
   }
   const std::int32_t triangleCount = std::int32_t(this->Origins.size() / 3);
   const std::int32_t* org = this->Origins.data();
-  const std::int32_t idCount = std::int32_t(this->Coordinates.size());
+  const std::int32_t kept = this->NumberTrianglesByVertex();
+  const std::vector<std::int32_t>& newIndex = this->Ordering.NewIndex;
   OrderScratch& scratch = this->Ordering;
-  // Key of triangle t: its smallest real vertex id. As unsigned numbers Ghost (-1) and Free (-2)
-  // are the largest, so the smallest of the three is real except in a free slot (all Free), which
-  // gets the key idCount and is dropped. Branch-free: which vertex is smallest is a coin toss.
-  // newIndex holds the keys first, then (in place) each triangle's new index.
-  std::vector<std::int32_t>& newIndex = scratch.NewIndex;
-  newIndex.resize(std::size_t(triangleCount));
-  std::vector<std::int32_t>& first = scratch.First;
-  first.assign(std::size_t(idCount) + 2, 0);
-  for (std::int32_t t = 0; t < triangleCount; ++t)
-  {
-    const std::uint32_t smallest = std::min(
-      { std::uint32_t(org[3 * t]), std::uint32_t(org[3 * t + 1]), std::uint32_t(org[3 * t + 2]) });
-    const std::int32_t key = std::int32_t(std::min(smallest, std::uint32_t(idCount)));
-    newIndex[t] = key;
-    ++first[std::size_t(key) + 1];
-  }
-  for (std::size_t k = 1; k < first.size(); ++k)
-  {
-    first[k] += first[k - 1];
-  }
-  const std::int32_t kept = first[std::size_t(idCount)];
-  for (std::int32_t& index : newIndex)
-  {
-    index = first[std::size_t(index)]++; // a free slot's index (>= kept) is never read
-  }
   const auto newEdge = [&newIndex](std::int32_t e) { return 3 * newIndex[e / 3] + e % 3; };
   // The capacity kept: insertions after the ordering append (no slot is free), and a fresh
   // array of exactly this size would be copied whole by the first of them.
@@ -102,6 +78,41 @@ void DirichletTessellation::OrderTrianglesByVertex()
   this->Origins.swap(origins);
   this->Twins.swap(twins);
   this->FreeTriangles.clear();
+}
+
+// Each triangle's new index (Ordering.NewIndex), by a counting sort on its smallest real vertex
+// id, keeping the old order within one key; returns how many are kept (free slots get indices
+// from there on, never read). Key of triangle t: as unsigned numbers Ghost (-1) and Free (-2) are
+// the largest, so the smallest of the three is real except in a free slot (all Free), which gets
+// the key idCount and is dropped. Branch-free: which vertex is smallest is a coin toss. NewIndex
+// holds the keys first, then (in place) each triangle's new index.
+std::int32_t DirichletTessellation::NumberTrianglesByVertex()
+{
+  const std::int32_t triangleCount = std::int32_t(this->Origins.size() / 3);
+  const std::int32_t* org = this->Origins.data();
+  const std::int32_t idCount = std::int32_t(this->Coordinates.size());
+  std::vector<std::int32_t>& newIndex = this->Ordering.NewIndex;
+  newIndex.resize(std::size_t(triangleCount));
+  std::vector<std::int32_t>& first = this->Ordering.First;
+  first.assign(std::size_t(idCount) + 2, 0);
+  for (std::int32_t t = 0; t < triangleCount; ++t)
+  {
+    const std::uint32_t smallest = std::min(
+      { std::uint32_t(org[3 * t]), std::uint32_t(org[3 * t + 1]), std::uint32_t(org[3 * t + 2]) });
+    const std::int32_t key = std::int32_t(std::min(smallest, std::uint32_t(idCount)));
+    newIndex[t] = key;
+    ++first[std::size_t(key) + 1];
+  }
+  for (std::size_t k = 1; k < first.size(); ++k)
+  {
+    first[k] += first[k - 1];
+  }
+  const std::int32_t kept = first[std::size_t(idCount)];
+  for (std::int32_t& index : newIndex)
+  {
+    index = first[std::size_t(index)]++;
+  }
+  return kept;
 }
 
 } // namespace tessera
