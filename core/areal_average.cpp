@@ -476,6 +476,100 @@ struct ThiessenArealAverage::State
                                                       : this->MeasureRing(piece, count, scratch);
   }
 
+  // CurrentClippedTiles' parts: read only, with the caller's own scratch.
+
+  /// The used gauges' tiles clipped by the catchment, as display pieces in the plane, in out's
+  /// order (their gauges, areas and TilePieceOffsets appended to out).
+  ClippedRings PlanePiecesOfUsedTiles(ClipScratch& scratch, ClippedTilesLonLat& out) const
+  {
+    ClippedRings plane; // the pieces in the plane, in out's order
+    // The gauges in the tessellation, ascending, with their tiles (derived again here: the steps
+    // keep only the clipped areas).
+    const TileSet tiles = TessellationDual(*this->Tessellation).Tiles();
+    std::vector<std::int32_t> tileOf(this->EngineOfGauge.size(), -1);
+    for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
+    {
+      tileOf[this->GaugeOfEngine[tiles.PointIds[k]]] = static_cast<std::int32_t>(k);
+    }
+    for (std::size_t gauge = 0; gauge < tileOf.size(); ++gauge)
+    {
+      if (tileOf[gauge] < 0 || !this->Wanted[gauge])
+      {
+        continue; // (a gauge in the tessellation but not used: its removal is deferred)
+      }
+      const std::size_t k = static_cast<std::size_t>(tileOf[gauge]);
+      const std::size_t count = static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]);
+      this->AppendPlanePieces(static_cast<std::int32_t>(gauge),
+        &tiles.Vertices[tiles.Offsets[k]],
+        count,
+        scratch,
+        plane,
+        out);
+    }
+    return plane;
+  }
+
+  /// Gauge g's tile clipped, its display pieces appended to plane, their areas and g to out;
+  /// nothing when the clip is empty or has no area.
+  void AppendPlanePieces(std::int32_t g,
+    const Point2* tile,
+    std::size_t count,
+    ClipScratch& scratch,
+    ClippedRings& plane,
+    ClippedTilesLonLat& out) const
+  {
+    ClippedRings rings;
+    if (this->Region->ClipInto(tile,
+          count,
+          static_cast<std::size_t>(g),
+          scratch.Work,
+          &rings,
+          Catchment::FoldedTile::IsEmpty) <= 0.0)
+    {
+      return;
+    }
+    const ClippedRings pieces = DisplayPieces(rings);
+    if (pieces.RingOffsets.size() < 2)
+    {
+      return; // (only rings of no area)
+    }
+    out.Gauges.push_back(g);
+    for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
+    {
+      const Point2* piece = &pieces.Vertices[pieces.RingOffsets[r]];
+      const std::size_t size = pieces.RingOffsets[r + 1] - pieces.RingOffsets[r];
+      out.PieceAreasM2.push_back(this->PieceArea(piece, size, scratch));
+      plane.Vertices.insert(plane.Vertices.end(), piece, piece + size);
+      plane.RingOffsets.push_back(plane.Vertices.size());
+    }
+    out.TilePieceOffsets.push_back(plane.RingOffsets.size() - 1);
+  }
+
+  /// The pieces in the plane (shared: their borders' vertices shared) in lon/lat, their edges
+  /// densified every maxStepMetres in the plane; fans gets, per piece, whether it is a fan about
+  /// its first vertex in lon/lat.
+  ClippedRings PiecesInLonLat(const ClippedRings& shared,
+    double maxStepMetres,
+    ClipScratch& scratch,
+    std::vector<char>& fans) const
+  {
+    ClippedRings lonLat; // the pieces in lon/lat, as cut in the plane
+    for (std::size_t r = 0; r + 1 < shared.RingOffsets.size(); ++r)
+    {
+      const std::size_t begin = shared.RingOffsets[r];
+      DensifyRingSymmetrically(
+        &shared.Vertices[begin], shared.RingOffsets[r + 1] - begin, maxStepMetres, scratch.Dense);
+      this->Unproject(scratch.Dense, scratch.LonLat);
+      DropRepeatedVertices(scratch.LonLat); // points an ulp apart in the plane can come back as one
+      // The plane's fan (display_pieces.h) about its first vertex, bent: a side bowing inwards in
+      // lon/lat left slivers drawn twice (0.5% of a Colorado tile's area).
+      fans.push_back(StartAtFanApex(scratch.LonLat));
+      lonLat.Vertices.insert(lonLat.Vertices.end(), scratch.LonLat.begin(), scratch.LonLat.end());
+      lonLat.RingOffsets.push_back(lonLat.Vertices.size());
+    }
+    return lonLat;
+  }
+
   /// out's display pieces from the pieces in lon/lat (lonLat, out.TilePieceOffsets's and
   /// out.PieceAreasM2's): a piece that is no fan about its first vertex there (fans[r] 0: bent,
   /// no vertex of it sees it whole) split along diagonals into fans (fan_diagonals.h), each part
@@ -1003,16 +1097,30 @@ struct ThiessenArealAverage::State
       // changes its points can move that centre by an ulp in the tile of each of its points, not
       // only in those of the changed gauges' neighbours. Such a face has a touched point or an
       // inserted one, so their face mates complete the list.
-      std::vector<std::int32_t> around = touched;
-      for (const std::int32_t g : inserted)
-      {
-        around.push_back(this->EngineOfGauge[g]);
-      }
-      for (const std::int32_t id : ComputeFaceMatesOf(t, around).Ids)
+      for (const std::int32_t id : ComputeFaceMatesOf(t, this->ChangedIds(touched, inserted)).Ids)
       {
         consider(id);
       }
     }
+    return { this->DeriveListed(changed), clear };
+  }
+
+  /// The engine ids of the touched gauges, then of the inserted ones (gauge numbers).
+  std::vector<std::int32_t> ChangedIds(const std::vector<std::int32_t>& touched,
+    const std::vector<std::int32_t>& inserted) const
+  {
+    std::vector<std::int32_t> ids = touched;
+    for (const std::int32_t g : inserted)
+    {
+      ids.push_back(this->EngineOfGauge[g]);
+    }
+    return ids;
+  }
+
+  /// DeriveChanged's tiles: those of the listed engine ids (sorted here), derived, clipped and
+  /// stored. Returns how many were derived.
+  std::size_t DeriveListed(std::vector<std::int32_t>& changed)
+  {
     // Neighbouring tiles one after the other: their faces share cache lines. Each tile is
     // clipped as soon as it is made, on the thread that made it (while it is in the cache).
     SortDistinctIntegers(changed, this->GaugeOfEngine.size(), this->SortBits);
@@ -1030,7 +1138,7 @@ struct ThiessenArealAverage::State
     {
       this->SyncPositiveArea(this->GaugeOfEngine[id]);
     }
-    return { derived, clear };
+    return derived;
   }
 };
 
@@ -1764,70 +1872,13 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
   const State& s = *this->Impl;
   State::ClipScratch scratch;
   ClippedTilesLonLat out;
-  ClippedRings plane; // the pieces in the plane, in out's order
-  // The gauges in the tessellation, ascending, with their tiles (derived again here: the steps
-  // keep only the clipped areas).
-  const TileSet tiles = TessellationDual(*s.Tessellation).Tiles();
-  std::vector<std::int32_t> tileOf(s.EngineOfGauge.size(), -1);
-  for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
-  {
-    tileOf[s.GaugeOfEngine[tiles.PointIds[k]]] = static_cast<std::int32_t>(k);
-  }
-  for (std::size_t gauge = 0; gauge < tileOf.size(); ++gauge)
-  {
-    if (tileOf[gauge] < 0 || !s.Wanted[gauge])
-    {
-      continue; // (a gauge in the tessellation but not used: its removal is deferred)
-    }
-    const std::int32_t g = static_cast<std::int32_t>(gauge);
-    const std::size_t k = static_cast<std::size_t>(tileOf[gauge]);
-    const Point2* tile = &tiles.Vertices[tiles.Offsets[k]];
-    const std::size_t count = static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]);
-    ClippedRings rings;
-    if (s.Region->ClipInto(tile,
-          count,
-          static_cast<std::size_t>(g),
-          scratch.Work,
-          &rings,
-          Catchment::FoldedTile::IsEmpty) <= 0.0)
-    {
-      continue;
-    }
-    const ClippedRings pieces = DisplayPieces(rings);
-    if (pieces.RingOffsets.size() < 2)
-    {
-      continue; // (only rings of no area)
-    }
-    out.Gauges.push_back(g);
-    for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
-    {
-      const Point2* piece = &pieces.Vertices[pieces.RingOffsets[r]];
-      const std::size_t size = pieces.RingOffsets[r + 1] - pieces.RingOffsets[r];
-      out.PieceAreasM2.push_back(s.PieceArea(piece, size, scratch));
-      plane.Vertices.insert(plane.Vertices.end(), piece, piece + size);
-      plane.RingOffsets.push_back(plane.Vertices.size());
-    }
-    out.TilePieceOffsets.push_back(plane.RingOffsets.size() - 1);
-  }
+  const ClippedRings plane = s.PlanePiecesOfUsedTiles(scratch, out);
   // Neighbouring tiles' pieces take each other's vertices on their common borders, and every
   // edge is cut at the same points from either side, so that they still meet exactly in lon/lat
   // (shared_borders.h).
   const ClippedRings shared = ShareBorderVertices(plane);
-  ClippedRings lonLat;    // the pieces in lon/lat, as cut in the plane
   std::vector<char> fans; // per piece: whether it is a fan about its first vertex in lon/lat
-  for (std::size_t r = 0; r + 1 < shared.RingOffsets.size(); ++r)
-  {
-    const std::size_t begin = shared.RingOffsets[r];
-    DensifyRingSymmetrically(
-      &shared.Vertices[begin], shared.RingOffsets[r + 1] - begin, maxStepMetres, scratch.Dense);
-    s.Unproject(scratch.Dense, scratch.LonLat);
-    DropRepeatedVertices(scratch.LonLat); // points an ulp apart in the plane can come back as one
-    // The plane's fan (display_pieces.h) about its first vertex, bent: a side bowing inwards in
-    // lon/lat left slivers drawn twice (0.5% of a Colorado tile's area).
-    fans.push_back(StartAtFanApex(scratch.LonLat));
-    lonLat.Vertices.insert(lonLat.Vertices.end(), scratch.LonLat.begin(), scratch.LonLat.end());
-    lonLat.RingOffsets.push_back(lonLat.Vertices.size());
-  }
+  const ClippedRings lonLat = s.PiecesInLonLat(shared, maxStepMetres, scratch, fans);
   AppendOutlinesOfTiles(lonLat, out);
   s.SetDisplayPieces(lonLat, fans, scratch, out);
   return out;

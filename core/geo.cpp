@@ -501,6 +501,22 @@ struct GeographicProjection::Engines
   bool MirrorAcrossEquator = false;
   bool Grid = false;   // whether the parameters lay a grid on the plane (PlaneWithoutGrid)
   Point2 GridOrigin{}; // the plane's image of the grid's origin, (x_O, y_O) in geo.h
+
+  // The engines' parts of Forward and InverseOfImage, for the projection of parameters p.
+  /// lonlat (valid; lon its longitude reduced about CentralMeridian) in p's plane, before the
+  /// grid; throws InputError naming id where a transverse Mercator refuses it.
+  Point2 ToPlane(const ProjectionParameters& p,
+    const Point2& lonlat,
+    double lon,
+    long long id) const;
+  /// ToPlane for TransverseMercator and UTM (with UTM's false easting and northing).
+  Point2 TransverseToPlane(const ProjectionParameters& p,
+    const Point2& lonlat,
+    double lon,
+    long long id) const;
+  /// The place (lon, lat) of a point xy of p's plane, the grid undone; its longitude as the
+  /// engine gives it, and NaN or infinite where xy is no image.
+  Point2 ToLonLat(const ProjectionParameters& p, const Point2& xy) const;
 };
 
 void CheckGridTerms(const ProjectionParameters& p)
@@ -731,7 +747,12 @@ double GeographicProjection::CentralMeridian() const
   return Impl->CentralMeridian;
 }
 
-Point2 GeographicProjection::Forward(const Point2& lonlat, long long id) const
+namespace
+{
+
+/// Throws InputError naming the point (by id) when lonlat is no place: a NaN or infinite
+/// coordinate, or a latitude beyond 90 degrees.
+void CheckPlaceToProject(const Point2& lonlat, long long id)
 {
   if (!std::isfinite(lonlat.x) || !std::isfinite(lonlat.y))
   {
@@ -741,61 +762,88 @@ Point2 GeographicProjection::Forward(const Point2& lonlat, long long id) const
   {
     throw InputError(DescribePoint("point", id, lonlat) + " has " + LonLatFault(lonlat));
   }
-  const double lon0 = Impl->CentralMeridian;
-  // Reduce first so that a longitude of 181.6 and one of -178.4 project to the same place.
-  const double lon = lon0 + LongitudeDifference(lon0, CanonicalLongitude(lonlat.x));
+}
+
+} // namespace
+
+Point2 GeographicProjection::Engines::TransverseToPlane(const ProjectionParameters& p,
+  const Point2& lonlat,
+  double lon,
+  long long id) const
+{
+  const double lon0 = this->CentralMeridian;
+  // (EdgeDegrees beyond: a point Forward made on the 45-degree edge may come back from the
+  // inverse some ulps beyond it, and must project back)
+  if (std::abs(lon - lon0) > TransverseMercatorMaxLongitudeOffset + EdgeDegrees)
+  {
+    throw InputError(DescribePoint("point", id, lonlat) + " is " +
+      NumberText(std::abs(lon - lon0)) + " degrees of longitude from the central meridian " +
+      NumberText(lon0) + "; " + ProjectionKindName(p.Kind) + " represents at most 45 degrees");
+  }
   Point2 xy;
-  switch (Params.Kind)
+  this->Transverse->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
+  if (p.Kind == ProjectionKind::UTM)
+  {
+    if (std::abs(xy.x) > UTMMaxEastingOffset)
+    {
+      throw InputError(DescribePoint("point", id, lonlat) + " lies " +
+        TenthsText(std::abs(xy.x) / 1000.0) + " km from the central meridian of UTM zone " +
+        std::to_string(p.UTMZone) + "; UTM eastings stop at 500 km");
+    }
+    xy.x += UTMFalseEasting;
+    xy.y += p.UTMNorth ? 0.0 : UTMSouthFalseNorthing;
+  }
+  return xy;
+}
+
+Point2 GeographicProjection::Engines::ToPlane(const ProjectionParameters& p,
+  const Point2& lonlat,
+  double lon,
+  long long id) const
+{
+  const double lon0 = this->CentralMeridian;
+  Point2 xy;
+  switch (p.Kind)
   {
     case ProjectionKind::AlbersEqualArea:
-      if (Impl->MirrorAcrossEquator)
+      if (this->MirrorAcrossEquator)
       {
-        Impl->Albers->Forward(lon0, -lonlat.y, lon, xy.x, xy.y);
+        this->Albers->Forward(lon0, -lonlat.y, lon, xy.x, xy.y);
         xy.y = -xy.y;
       }
       else
       {
-        Impl->Albers->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
+        this->Albers->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
       }
       break;
     case ProjectionKind::LambertConformalConic:
-      Impl->Lambert->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
+      this->Lambert->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
       break;
     case ProjectionKind::TransverseMercator:
     case ProjectionKind::UTM:
-      // (EdgeDegrees beyond: a point Forward made on the 45-degree edge may come back from the
-      // inverse some ulps beyond it, and must project back)
-      if (std::abs(lon - lon0) > TransverseMercatorMaxLongitudeOffset + EdgeDegrees)
-      {
-        throw InputError(DescribePoint("point", id, lonlat) + " is " +
-          NumberText(std::abs(lon - lon0)) + " degrees of longitude from the central meridian " +
-          NumberText(lon0) + "; " + ProjectionKindName(Params.Kind) +
-          " represents at most 45 degrees");
-      }
-      Impl->Transverse->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
-      if (Params.Kind == ProjectionKind::UTM)
-      {
-        if (std::abs(xy.x) > UTMMaxEastingOffset)
-        {
-          throw InputError(DescribePoint("point", id, lonlat) + " lies " +
-            TenthsText(std::abs(xy.x) / 1000.0) + " km from the central meridian of UTM zone " +
-            std::to_string(Params.UTMZone) + "; UTM eastings stop at 500 km");
-        }
-        xy.x += UTMFalseEasting;
-        xy.y += Params.UTMNorth ? 0.0 : UTMSouthFalseNorthing;
-      }
+      xy = this->TransverseToPlane(p, lonlat, lon, id);
       break;
     case ProjectionKind::AzimuthalEquidistant:
-      Impl->Azimuthal->Forward(Params.CentralLatitude, lon0, lonlat.y, lon, xy.x, xy.y);
+      this->Azimuthal->Forward(p.CentralLatitude, lon0, lonlat.y, lon, xy.x, xy.y);
       break;
     case ProjectionKind::LambertAzimuthalEqualArea:
-      Impl->AzimuthalEqualArea->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
+      this->AzimuthalEqualArea->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
       break;
     case ProjectionKind::Mercator:
     case ProjectionKind::WebMercator:
-      Impl->Cylinder->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
+      this->Cylinder->Forward(lon0, lonlat.y, lon, xy.x, xy.y);
       break;
   }
+  return xy;
+}
+
+Point2 GeographicProjection::Forward(const Point2& lonlat, long long id) const
+{
+  CheckPlaceToProject(lonlat, id);
+  const double lon0 = Impl->CentralMeridian;
+  // Reduce first so that a longitude of 181.6 and one of -178.4 project to the same place.
+  const double lon = lon0 + LongitudeDifference(lon0, CanonicalLongitude(lonlat.x));
+  const Point2 xy = Impl->ToPlane(Params, lonlat, lon, id);
   if (!(std::abs(xy.x) <= MaxProjectedMagnitude) || !(std::abs(xy.y) <= MaxProjectedMagnitude))
   {
     throw InputError(DescribePoint("point", id, lonlat) + " cannot be represented by the " +
@@ -817,6 +865,51 @@ Point2 GeographicProjection::Inverse(const Point2& grid, long long id) const
   return lonlat;
 }
 
+Point2 GeographicProjection::Engines::ToLonLat(const ProjectionParameters& p,
+  const Point2& xy) const
+{
+  const double lon0 = this->CentralMeridian;
+  Point2 lonlat;
+  switch (p.Kind)
+  {
+    case ProjectionKind::AlbersEqualArea:
+      if (this->MirrorAcrossEquator)
+      {
+        this->Albers->Reverse(lon0, xy.x, -xy.y, lonlat.y, lonlat.x);
+        lonlat.y = -lonlat.y;
+      }
+      else
+      {
+        this->Albers->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
+      }
+      break;
+    case ProjectionKind::LambertConformalConic:
+      this->Lambert->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
+      break;
+    case ProjectionKind::TransverseMercator:
+      this->Transverse->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
+      break;
+    case ProjectionKind::UTM:
+      this->Transverse->Reverse(lon0,
+        xy.x - UTMFalseEasting,
+        xy.y - (p.UTMNorth ? 0.0 : UTMSouthFalseNorthing),
+        lonlat.y,
+        lonlat.x);
+      break;
+    case ProjectionKind::AzimuthalEquidistant:
+      this->Azimuthal->Reverse(p.CentralLatitude, lon0, xy.x, xy.y, lonlat.y, lonlat.x);
+      break;
+    case ProjectionKind::LambertAzimuthalEqualArea:
+      this->AzimuthalEqualArea->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
+      break;
+    case ProjectionKind::Mercator:
+    case ProjectionKind::WebMercator:
+      this->Cylinder->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
+      break;
+  }
+  return lonlat;
+}
+
 Point2 GeographicProjection::InverseOfImage(const Point2& grid, long long id) const
 {
   if (!std::isfinite(grid.x) || !std::isfinite(grid.y))
@@ -835,50 +928,13 @@ Point2 GeographicProjection::InverseOfImage(const Point2& grid, long long id) co
       (Impl->Grid ? " once its grid (false origin, scale) is undone" : "") +
       ", where no place projects");
   }
-  const double lon0 = Impl->CentralMeridian;
-  Point2 lonlat;
-  switch (Params.Kind)
-  {
-    case ProjectionKind::AlbersEqualArea:
-      if (Impl->MirrorAcrossEquator)
-      {
-        Impl->Albers->Reverse(lon0, xy.x, -xy.y, lonlat.y, lonlat.x);
-        lonlat.y = -lonlat.y;
-      }
-      else
-      {
-        Impl->Albers->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
-      }
-      break;
-    case ProjectionKind::LambertConformalConic:
-      Impl->Lambert->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
-      break;
-    case ProjectionKind::TransverseMercator:
-      Impl->Transverse->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
-      break;
-    case ProjectionKind::UTM:
-      Impl->Transverse->Reverse(lon0,
-        xy.x - UTMFalseEasting,
-        xy.y - (Params.UTMNorth ? 0.0 : UTMSouthFalseNorthing),
-        lonlat.y,
-        lonlat.x);
-      break;
-    case ProjectionKind::AzimuthalEquidistant:
-      Impl->Azimuthal->Reverse(Params.CentralLatitude, lon0, xy.x, xy.y, lonlat.y, lonlat.x);
-      break;
-    case ProjectionKind::LambertAzimuthalEqualArea:
-      Impl->AzimuthalEqualArea->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
-      break;
-    case ProjectionKind::Mercator:
-    case ProjectionKind::WebMercator:
-      Impl->Cylinder->Reverse(lon0, xy.x, xy.y, lonlat.y, lonlat.x);
-      break;
-  }
+  Point2 lonlat = Impl->ToLonLat(Params, xy);
   if (!std::isfinite(lonlat.x) || !std::isfinite(lonlat.y))
   {
     throw InputError(DescribePoint("point", id, grid) + " has no inverse under the " +
       ProjectionKindName(Params.Kind) + " projection");
   }
+  const double lon0 = Impl->CentralMeridian;
   lonlat.x = lon0 + LongitudeDifference(lon0, lonlat.x);
   return lonlat;
 }
