@@ -971,6 +971,68 @@ double AreaBeyondRounding(double area,
   return std::min(std::max(area, 0.0), tileArea);
 }
 
+// Whether candidate k (of count, ids in ring order, the ring's vertices [begin, end)) starts a
+// chain: the candidate before it is not the segment before it in the ring.
+inline bool StartsChain(const std::uint32_t* ids,
+  std::size_t count,
+  std::size_t k,
+  std::size_t begin,
+  std::size_t end)
+{
+  const std::size_t previous = ids[k] == begin ? end - 1 : ids[k] - 1;
+  const std::size_t before = ids[k == 0 ? count - 1 : k - 1];
+  return before != previous;
+}
+
+// The path from a chain's last segment's end `from` (outside the box) around the box's boundary
+// to the next chain's start `to`: from, its nearest box point, the corners between, to's nearest.
+// loopAt and loopSide, set by the first path: where loops around the box go (the index of from's
+// nearest box point) and the side they start from (RepayTurns).
+inline void AppendPathAroundBox(const Box2& box,
+  const Point2& from,
+  const Point2& to,
+  std::vector<Point2>& local,
+  std::size_t& loopAt,
+  int& loopSide)
+{
+  local.push_back(from);
+  const int fromSide = SideFacing(box, from);
+  const int toSide = SideFacing(box, to);
+  if (loopAt == 0)
+  {
+    loopAt = local.size();
+    loopSide = fromSide;
+  }
+  local.push_back(NearestInBox(box, from));
+  for (int side = fromSide; side != toSide; side = (side + 1) & 3)
+  {
+    local.push_back(Corner(box, side + 1));
+  }
+  local.push_back(NearestInBox(box, to));
+}
+
+// Repays the local ring's missing turns (its winding at the box's centre short of the true ring's
+// by turns) with loops around the box inserted after local[loopAt], each starting from side
+// loopSide and coming back to local[loopAt].
+void RepayTurns(const Box2& box,
+  int turns,
+  std::size_t loopAt,
+  int loopSide,
+  std::vector<Point2>& local)
+{
+  const Point2 anchor = local[loopAt];
+  std::vector<Point2> loops;
+  for (int t = 0; t < std::abs(turns); ++t)
+  {
+    for (int c = 1; c <= 4; ++c)
+    {
+      loops.push_back(Corner(box, turns > 0 ? loopSide + c : loopSide + 1 - c));
+    }
+    loops.push_back(anchor);
+  }
+  local.insert(local.begin() + static_cast<std::ptrdiff_t>(loopAt + 1), loops.begin(), loops.end());
+}
+
 } // namespace
 
 double Catchment::ClipInto(const Point2* tile,
@@ -1194,14 +1256,8 @@ void Catchment::BuildLocalRing(std::uint32_t ring,
       this->Points.begin() + static_cast<std::ptrdiff_t>(end));
     return;
   }
-  const auto startsChain = [&](std::size_t k)
-  {
-    const std::size_t previous = ids[k] == begin ? end - 1 : ids[k] - 1;
-    const std::size_t before = ids[k == 0 ? count - 1 : k - 1];
-    return before != previous;
-  };
   std::size_t start = 0;
-  while (!startsChain(start))
+  while (!StartsChain(ids, count, start, begin, end))
   {
     ++start;
   }
@@ -1214,7 +1270,7 @@ void Catchment::BuildLocalRing(std::uint32_t ring,
     std::size_t v = ids[k];
     local.push_back(this->Points[v]);
     ++step;
-    while (step < count && !startsChain((start + step) % count))
+    while (step < count && !StartsChain(ids, count, (start + step) % count, begin, end))
     {
       v = ids[(start + step) % count];
       local.push_back(this->Points[v]);
@@ -1222,37 +1278,13 @@ void Catchment::BuildLocalRing(std::uint32_t ring,
     }
     const Point2& from = this->Points[this->NextVertex(v)];
     const Point2& to = this->Points[ids[(start + step) % count]];
-    local.push_back(from);
-    const int fromSide = SideFacing(box, from);
-    const int toSide = SideFacing(box, to);
-    if (loopAt == 0)
-    {
-      loopAt = local.size();
-      loopSide = fromSide;
-    }
-    local.push_back(NearestInBox(box, from));
-    for (int side = fromSide; side != toSide; side = (side + 1) & 3)
-    {
-      local.push_back(Corner(box, side + 1));
-    }
-    local.push_back(NearestInBox(box, to));
+    AppendPathAroundBox(box, from, to, local, loopAt, loopSide);
   }
   const int turns = winding - RingWinding(local.data(), local.size(), centre);
-  if (turns == 0)
+  if (turns != 0)
   {
-    return;
+    RepayTurns(box, turns, loopAt, loopSide, local);
   }
-  const Point2 anchor = local[loopAt];
-  std::vector<Point2> loops;
-  for (int t = 0; t < std::abs(turns); ++t)
-  {
-    for (int c = 1; c <= 4; ++c)
-    {
-      loops.push_back(Corner(box, turns > 0 ? loopSide + c : loopSide + 1 - c));
-    }
-    loops.push_back(anchor);
-  }
-  local.insert(local.begin() + static_cast<std::ptrdiff_t>(loopAt + 1), loops.begin(), loops.end());
 }
 
 } // namespace tessera

@@ -615,6 +615,113 @@ std::pair<int, int> TangentPixels(const RidgeContours& contours, int c, int posi
   return { at(-reach), at(reach) };
 }
 
+/// Where each contour pixel is: per grid pixel, whether a contour holds it and its position in
+/// contours.Pixels; per position, its contour.
+struct ContourPixelIndex
+{
+  std::vector<std::uint8_t> IsContour;
+  std::vector<int> PositionOf;
+  std::vector<int> ContourOfPosition;
+};
+
+ContourPixelIndex IndexContourPixels(const RidgeContours& contours, int width, int height)
+{
+  // Where contours share a junction pixel the later contour owns it; either is equally near.
+  const std::size_t pixelCount = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  ContourPixelIndex index;
+  index.IsContour.assign(pixelCount, 0);
+  index.PositionOf.assign(pixelCount, -1);
+  index.ContourOfPosition.assign(contours.Pixels.size(), -1);
+  for (int c = 0; c < contours.Count(); ++c)
+  {
+    for (int k = contours.Offsets[c]; k < contours.Offsets[c + 1]; ++k)
+    {
+      index.IsContour[contours.Pixels[k]] = 1;
+      index.PositionOf[contours.Pixels[k]] = k;
+      index.ContourOfPosition[k] = c;
+    }
+  }
+  return index;
+}
+
+/// Gives each point the contour of its nearest contour pixel (GroupId), and its projection on
+/// that contour with its distance beyond an end (ProjectionPastEnds: Projection and Beyond).
+/// nearest: the contours' nearest-feature transform. Returns each point's nearest pixel's
+/// position, by which FollowChainsPastEnds tells near points from far ones.
+std::vector<int> ProjectOntoNearestContours(const std::vector<Point2>& pixelPoints,
+  const RidgeContours& contours,
+  const ContourPixelIndex& index,
+  const std::vector<int>& nearest,
+  int width,
+  int height,
+  PointPartition& result)
+{
+  std::vector<int> nearestPositions(pixelPoints.size());
+  for (std::size_t k = 0; k < pixelPoints.size(); ++k)
+  {
+    const int pixel = NearestContourPixel(pixelPoints[k], nearest, width, height);
+    const int position = index.PositionOf[pixel];
+    const int contour = index.ContourOfPosition[position];
+    nearestPositions[k] = position;
+    result.GroupId[k] = contour;
+    std::tie(result.Projection[k], result.Beyond[k]) =
+      ProjectionPastEnds(pixelPoints[k], contours, contour, position, width);
+  }
+  return nearestPositions;
+}
+
+/// Each point's arc length along its contour, extended past an end by its distance beyond it,
+/// and per contour the range those arc lengths span (from 0 and the contour's length).
+struct ExtendedArcs
+{
+  std::vector<double> Arc, Lowest, Highest;
+};
+
+/// The points' extended arc lengths; a point beyond an end is marked Extended.
+ExtendedArcs ExtendArcsPastEnds(const RidgeContours& contours, PointPartition& result)
+{
+  const std::size_t pointCount = result.GroupId.size();
+  ExtendedArcs arcs;
+  arcs.Arc.assign(pointCount, 0.0);
+  arcs.Lowest.assign(contours.Count(), 0.0);
+  arcs.Highest.assign(contours.Lengths.begin(), contours.Lengths.end());
+  for (std::size_t k = 0; k < pointCount; ++k)
+  {
+    const int position = result.Projection[k];
+    const int contour = result.GroupId[k];
+    const double beyond = result.Beyond[k];
+    arcs.Arc[k] = result.ArcLength[position];
+    if (beyond > 0.0)
+    {
+      result.Extended[k] = 1;
+      arcs.Arc[k] += position == contours.Offsets[contour] ? -beyond : beyond;
+      arcs.Lowest[contour] = std::min(arcs.Lowest[contour], arcs.Arc[k]);
+      arcs.Highest[contour] = std::max(arcs.Highest[contour], arcs.Arc[k]);
+    }
+  }
+  return arcs;
+}
+
+/// Maps each contour's range of extended arc lengths onto nodes 0 to 1 (NodeOrigin and
+/// NodePerPixel), and each point's extended arc length onto its Node.
+void PlaceNodes(int contourCount, const ExtendedArcs& arcs, PointPartition& result)
+{
+  result.NodeOrigin.resize(contourCount);
+  result.NodePerPixel.resize(contourCount);
+  for (int c = 0; c < contourCount; ++c)
+  {
+    const double span = arcs.Highest[c] - arcs.Lowest[c];
+    result.NodePerPixel[c] = span > 0.0 ? 1.0 / span : 0.0;
+    result.NodeOrigin[c] = -arcs.Lowest[c] * result.NodePerPixel[c];
+  }
+  for (std::size_t k = 0; k < arcs.Arc.size(); ++k)
+  {
+    const int c = result.GroupId[k];
+    result.Node[k] =
+      std::clamp(result.NodeOrigin[c] + arcs.Arc[k] * result.NodePerPixel[c], 0.0, 1.0);
+  }
+}
+
 } // namespace
 
 std::vector<double> ContourArcLengths(const RidgeContours& contours, int width)
@@ -649,68 +756,17 @@ PointPartition PartitionPoints(const std::vector<Point2>& pixelPoints,
   {
     return result;
   }
-  // Where contours share a junction pixel the later contour owns it; either is equally near.
-  const std::size_t pixelCount = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-  std::vector<std::uint8_t> isContour(pixelCount, 0);
-  std::vector<int> positionOf(pixelCount, -1);
-  std::vector<int> contourOfPosition(contours.Pixels.size(), -1);
-  for (int c = 0; c < contours.Count(); ++c)
-  {
-    for (int k = contours.Offsets[c]; k < contours.Offsets[c + 1]; ++k)
-    {
-      isContour[contours.Pixels[k]] = 1;
-      positionOf[contours.Pixels[k]] = k;
-      contourOfPosition[k] = c;
-    }
-  }
-  const std::vector<int> nearest = NearestFeatureTransform(isContour, width, height);
+  const ContourPixelIndex index = IndexContourPixels(contours, width, height);
+  const std::vector<int> nearest = NearestFeatureTransform(index.IsContour, width, height);
   result.Extended.assign(pixelPoints.size(), 0);
   result.Continues.assign(pixelPoints.size(), 0);
-  std::vector<double>& beyond = result.Beyond;
-  beyond.assign(pixelPoints.size(), 0.0);
-  std::vector<int> nearestPositions(pixelPoints.size());
-  for (std::size_t k = 0; k < pixelPoints.size(); ++k)
-  {
-    const int pixel = NearestContourPixel(pixelPoints[k], nearest, width, height);
-    const int contour = contourOfPosition[positionOf[pixel]];
-    nearestPositions[k] = positionOf[pixel];
-    result.GroupId[k] = contour;
-    std::tie(result.Projection[k], beyond[k]) =
-      ProjectionPastEnds(pixelPoints[k], contours, contour, positionOf[pixel], width);
-  }
+  result.Beyond.assign(pixelPoints.size(), 0.0);
+  const std::vector<int> nearestPositions =
+    ProjectOntoNearestContours(pixelPoints, contours, index, nearest, width, height, result);
   const std::vector<std::uint8_t> chained =
     FollowChainsPastEnds(pixelPoints, contours, nearestPositions, width, maximumGap, result);
-  KeepContinuationsOnly(beyond, result.Projection, chained, maximumGap, result.Continues);
-  std::vector<double> extendedArc(pixelPoints.size(), 0.0);
-  std::vector<double> lowest(contours.Count(), 0.0);
-  std::vector<double> highest(contours.Lengths.begin(), contours.Lengths.end());
-  for (std::size_t k = 0; k < pixelPoints.size(); ++k)
-  {
-    const int position = result.Projection[k];
-    const int contour = result.GroupId[k];
-    extendedArc[k] = result.ArcLength[position];
-    if (beyond[k] > 0.0)
-    {
-      result.Extended[k] = 1;
-      extendedArc[k] += position == contours.Offsets[contour] ? -beyond[k] : beyond[k];
-      lowest[contour] = std::min(lowest[contour], extendedArc[k]);
-      highest[contour] = std::max(highest[contour], extendedArc[k]);
-    }
-  }
-  result.NodeOrigin.resize(contours.Count());
-  result.NodePerPixel.resize(contours.Count());
-  for (int c = 0; c < contours.Count(); ++c)
-  {
-    const double span = highest[c] - lowest[c];
-    result.NodePerPixel[c] = span > 0.0 ? 1.0 / span : 0.0;
-    result.NodeOrigin[c] = -lowest[c] * result.NodePerPixel[c];
-  }
-  for (std::size_t k = 0; k < pixelPoints.size(); ++k)
-  {
-    const int c = result.GroupId[k];
-    result.Node[k] =
-      std::clamp(result.NodeOrigin[c] + extendedArc[k] * result.NodePerPixel[c], 0.0, 1.0);
-  }
+  KeepContinuationsOnly(result.Beyond, result.Projection, chained, maximumGap, result.Continues);
+  PlaceNodes(contours.Count(), ExtendArcsPastEnds(contours, result), result);
   return result;
 }
 

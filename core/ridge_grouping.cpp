@@ -359,18 +359,12 @@ void MeasureContourDistances(const GroupedPoints& grouped, RidgeGroupingResult& 
 /// (NameContoursAwayFromPoints).
 constexpr double EmptyStretchWidths = 3.0;
 
-/// Warnings naming the contours that no point is grouped by (no curve is fitted to them), and the
-/// contours that run more than EmptyStretchWidths basis widths from every point: the field of a
-/// long-reaching basis has ridges across empty space, and such a contour's group can join points
-/// of curves that lie far apart. With the default basis, a noisy line and a small ring 14 widths
-/// above it made one ridge through the gap, the line cut in two, half of it grouped with the ring
-/// and its curve drawn 24 units from every point, and nothing said so. Distances are to the
-/// nearest pixel holding a point (exact on the grid: the nearest-feature transform).
-void NameContoursAwayFromPoints(const GroupedPoints& grouped, RidgeGroupingResult& result)
+/// A warning naming the contours that no point is grouped by (no curve is fitted to them).
+void NamePointlessContours(const GroupedPoints& grouped, RidgeGroupingResult& result)
 {
-  const auto& [pixelPoints, contours, partition, grid, width] = grouped;
+  const RidgeContours& contours = grouped.Contours;
   std::vector<std::size_t> members(static_cast<std::size_t>(contours.Count()), 0);
-  for (const int group : partition.GroupId)
+  for (const int group : grouped.Partition.GroupId)
   {
     if (group >= 0 && group < contours.Count())
     {
@@ -392,45 +386,83 @@ void NameContoursAwayFromPoints(const GroupedPoints& grouped, RidgeGroupingResul
       "so no group and no curve: ContourId " +
       ListNames(pointless.size(), [&](std::size_t k) { return std::to_string(pointless[k]); }));
   }
-  if (contours.Count() == 0)
-  {
-    return;
-  }
+}
+
+/// Per grid pixel, the nearest pixel holding a point (the nearest-feature transform of the
+/// points' pixels: distances to it are exact on the grid).
+std::vector<int> NearestPointPixels(const GroupedPoints& grouped)
+{
+  const PixelGrid& grid = grouped.Grid;
   std::vector<std::uint8_t> occupied(grid.PixelCount(), 0);
-  for (const Point2& p : pixelPoints)
+  for (const Point2& p : grouped.PixelPoints)
   {
     occupied[grid.Index(static_cast<int>(std::lround(p.x)), static_cast<int>(std::lround(p.y)))] =
       1;
   }
-  const std::vector<int> nearest = NearestFeatureTransform(occupied, grid.Width, grid.Height);
+  return NearestFeatureTransform(occupied, grid.Width, grid.Height);
+}
+
+/// Contour c's pixels further than `reach` pixels from every point (nearest: NearestPointPixels)
+/// as "contour c (n pixels, up to d from every point)", or "" when it has none.
+std::string EmptyStretchOf(const GroupedPoints& grouped,
+  int c,
+  const std::vector<int>& nearest,
+  double reach)
+{
+  const RidgeContours& contours = grouped.Contours;
+  int away = 0;
+  double farthest = 0.0;
+  for (int k = contours.Offsets[c]; k < contours.Offsets[c + 1]; ++k)
+  {
+    const int pixel = contours.Pixels[static_cast<std::size_t>(k)];
+    const Point2 at = grouped.PixelPoint(pixel);
+    const Point2 to = grouped.PixelPoint(nearest[static_cast<std::size_t>(pixel)]);
+    const double d = std::hypot(at.x - to.x, at.y - to.y);
+    if (d > reach)
+    {
+      ++away;
+      farthest = std::max(farthest, d);
+    }
+  }
+  if (away == 0)
+  {
+    return {};
+  }
+  return "contour " + std::to_string(c) + " (" + std::to_string(away) + " pixels, up to " +
+    NumberText(farthest * grouped.Grid.Spacing) + " from every point)";
+}
+
+/// Warnings naming the contours that no point is grouped by (NamePointlessContours), and the
+/// contours that run more than EmptyStretchWidths basis widths from every point: the field of a
+/// long-reaching basis has ridges across empty space, and such a contour's group can join points
+/// of curves that lie far apart. With the default basis, a noisy line and a small ring 14 widths
+/// above it made one ridge through the gap, the line cut in two, half of it grouped with the ring
+/// and its curve drawn 24 units from every point, and nothing said so. Distances are to the
+/// nearest pixel holding a point (exact on the grid: the nearest-feature transform).
+void NameContoursAwayFromPoints(const GroupedPoints& grouped, RidgeGroupingResult& result)
+{
+  const RidgeContours& contours = grouped.Contours;
+  const double width = grouped.Width;
+  NamePointlessContours(grouped, result);
+  if (contours.Count() == 0)
+  {
+    return;
+  }
+  const std::vector<int> nearest = NearestPointPixels(grouped);
   const double reach = EmptyStretchWidths * width;
   std::vector<std::string> stretches;
   for (int c = 0; c < contours.Count(); ++c)
   {
-    int away = 0;
-    double farthest = 0.0;
-    for (int k = contours.Offsets[c]; k < contours.Offsets[c + 1]; ++k)
+    std::string stretch = EmptyStretchOf(grouped, c, nearest, reach);
+    if (!stretch.empty())
     {
-      const int pixel = contours.Pixels[static_cast<std::size_t>(k)];
-      const Point2 at = grouped.PixelPoint(pixel);
-      const Point2 to = grouped.PixelPoint(nearest[static_cast<std::size_t>(pixel)]);
-      const double d = std::hypot(at.x - to.x, at.y - to.y);
-      if (d > reach)
-      {
-        ++away;
-        farthest = std::max(farthest, d);
-      }
-    }
-    if (away > 0)
-    {
-      stretches.push_back("contour " + std::to_string(c) + " (" + std::to_string(away) +
-        " pixels, up to " + NumberText(farthest * grid.Spacing) + " from every point)");
+      stretches.push_back(std::move(stretch));
     }
   }
   if (!stretches.empty())
   {
     result.Warnings.push_back(std::to_string(stretches.size()) +
-      " ridge contour(s) run more than " + WidthsText(EmptyStretchWidths, width, grid) +
+      " ridge contour(s) run more than " + WidthsText(EmptyStretchWidths, width, grouped.Grid) +
       " from every point: the field's ridge crosses empty space there, so "
       "the group may join points of curves that lie apart, and its curve is drawn where there "
       "are no points (a smaller Width, or the Gaussian basis, may part them): " +

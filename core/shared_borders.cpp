@@ -266,61 +266,60 @@ std::vector<char> GroupsLeftApart(const std::vector<Point2>& v,
   return apart;
 }
 
-// Per vertex, the vertex it is made (itself, or the smallest, by ComesFirst, of a group of copies
-// of one point in different pieces within the tolerance of each other; prev and next: each
-// vertex's neighbours in its ring). Each piece computed its own copy (both tiles cut at one x, a
-// crossing computed from either end), and copies an ulp or two apart stayed apart in lon/lat: a
-// GIS's union of the pieces kept zero-width slivers there, 2 to 10 a month in Colorado. Groups
-// that would fold a piece are left apart (GroupsLeftApart, and below, corners that would turn).
-std::vector<std::size_t> NearCopiesMadeOne(const std::vector<Point2>& v,
-  const std::vector<std::size_t>& ringOf,
-  const std::vector<std::size_t>& prev,
-  const std::vector<std::size_t>& next)
+// Per group of near copies (by its root): its smallest vertex (by ComesFirst; order: the vertices
+// in that order); and the vertices in groups of two or more, ascending.
+struct CopyGroups
 {
-  std::vector<std::size_t> order(v.size());
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  std::sort(order.begin(),
-    order.end(),
-    [&](std::size_t a, std::size_t b) { return ComesFirst(v[a], v[b]); });
-  std::vector<std::size_t> parent(v.size());
-  std::iota(parent.begin(), parent.end(), std::size_t(0));
-  std::vector<std::size_t> made(v.size());
-  std::iota(made.begin(), made.end(), std::size_t(0));
-  if (!LinkNearCopies(v, ringOf, order, parent))
-  {
-    return made;
-  }
-  // Per group (by its root): its smallest vertex and its size; the vertices in groups of two or
-  // more.
-  std::vector<std::size_t> smallest(v.size(), SIZE_MAX), size(v.size(), 0);
+  std::vector<std::size_t> Smallest, Grouped;
+};
+
+CopyGroups GroupsOfCopies(const std::vector<std::size_t>& order, std::vector<std::size_t>& parent)
+{
+  const std::size_t n = order.size();
+  CopyGroups groups;
+  groups.Smallest.assign(n, SIZE_MAX);
+  std::vector<std::size_t> size(n, 0);
   for (const std::size_t k : order) // (ascending: a group's first is its smallest)
   {
     const std::size_t root = Root(parent, k);
-    smallest[root] = smallest[root] == SIZE_MAX ? k : smallest[root];
+    groups.Smallest[root] = groups.Smallest[root] == SIZE_MAX ? k : groups.Smallest[root];
     ++size[root];
   }
-  std::vector<std::size_t> grouped;
-  for (std::size_t k = 0; k < v.size(); ++k)
+  for (std::size_t k = 0; k < n; ++k)
   {
     if (size[Root(parent, k)] > 1)
     {
-      grouped.push_back(k);
+      groups.Grouped.push_back(k);
     }
   }
-  std::vector<char> apart = GroupsLeftApart(v, ringOf, parent, smallest, grouped);
-  const auto place = [&]
+  return groups;
+}
+
+// Per vertex, the vertex it is made: itself if its group is left apart, else its group's smallest.
+void PlaceOnSmallest(std::vector<std::size_t>& parent,
+  const std::vector<std::size_t>& smallest,
+  const std::vector<char>& apart,
+  std::vector<std::size_t>& made)
+{
+  for (std::size_t k = 0; k < made.size(); ++k)
   {
-    for (std::size_t k = 0; k < v.size(); ++k)
-    {
-      const std::size_t root = Root(parent, k);
-      made[k] = apart[root] ? k : smallest[root];
-    }
-  };
-  place();
-  // Nor where a corner would turn the other way, its vertex or a neighbour moved (a sliver
-  // piece's apex, moved onto a copy across its opposite edge, folded it flat): the groups of the
-  // three are left, and the corners are looked at again until none turns. A straight corner may
-  // bend (a vertex on its piece's edge, welded to a copy an ulp off it).
+    const std::size_t root = Root(parent, k);
+    made[k] = apart[root] ? k : smallest[root];
+  }
+}
+
+// Leaves groups apart, too, where a corner would turn the other way, its vertex or a neighbour
+// moved (a sliver piece's apex, moved onto a copy across its opposite edge, folded it flat): the
+// groups of the three are left, and the corners are looked at again until none turns. A straight
+// corner may bend (a vertex on its piece's edge, welded to a copy an ulp off it).
+void LeaveApartWhereCornersTurn(const std::vector<Point2>& v,
+  const std::vector<std::size_t>& prev,
+  const std::vector<std::size_t>& next,
+  std::vector<std::size_t>& parent,
+  const std::vector<std::size_t>& smallest,
+  std::vector<char>& apart,
+  std::vector<std::size_t>& made)
+{
   for (bool turned = true; turned;)
   {
     turned = false;
@@ -344,9 +343,40 @@ std::vector<std::size_t> NearCopiesMadeOne(const std::vector<Point2>& v,
     }
     if (turned)
     {
-      place();
+      PlaceOnSmallest(parent, smallest, apart, made);
     }
   }
+}
+
+// Per vertex, the vertex it is made (itself, or the smallest, by ComesFirst, of a group of copies
+// of one point in different pieces within the tolerance of each other; prev and next: each
+// vertex's neighbours in its ring). Each piece computed its own copy (both tiles cut at one x, a
+// crossing computed from either end), and copies an ulp or two apart stayed apart in lon/lat: a
+// GIS's union of the pieces kept zero-width slivers there, 2 to 10 a month in Colorado. Groups
+// that would fold a piece are left apart (GroupsLeftApart; corners that would turn:
+// LeaveApartWhereCornersTurn).
+std::vector<std::size_t> NearCopiesMadeOne(const std::vector<Point2>& v,
+  const std::vector<std::size_t>& ringOf,
+  const std::vector<std::size_t>& prev,
+  const std::vector<std::size_t>& next)
+{
+  std::vector<std::size_t> order(v.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::sort(order.begin(),
+    order.end(),
+    [&](std::size_t a, std::size_t b) { return ComesFirst(v[a], v[b]); });
+  std::vector<std::size_t> parent(v.size());
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  std::vector<std::size_t> made(v.size());
+  std::iota(made.begin(), made.end(), std::size_t(0));
+  if (!LinkNearCopies(v, ringOf, order, parent))
+  {
+    return made;
+  }
+  const CopyGroups groups = GroupsOfCopies(order, parent);
+  std::vector<char> apart = GroupsLeftApart(v, ringOf, parent, groups.Smallest, groups.Grouped);
+  PlaceOnSmallest(parent, groups.Smallest, apart, made);
+  LeaveApartWhereCornersTurn(v, prev, next, parent, groups.Smallest, apart, made);
   return made;
 }
 
