@@ -204,12 +204,13 @@ private:
   // lists the segments that meet the box; then a tile without any is all in or all out
   // (ClipWithoutCandidates), and one with some is clipped piece by piece (ClipPieces).
   double ClipWholeCatchment(double tileArea, ClippedRings* rings) const;
-  void ListCandidates(const Box2& box, Workspace& work) const;
+  std::size_t ListCandidates(const Box2& box, Workspace& work) const;
   double ClipWithoutCandidates(const Point2* tile,
     std::size_t count,
     double tileArea,
     const Box2& box,
     const Point2& centre,
+    std::size_t firstCell,
     Workspace& work,
     ClippedRings* rings) const;
   double ClipPieces(const Point2* tile,
