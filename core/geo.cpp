@@ -517,6 +517,9 @@ struct GeographicProjection::Engines
   /// The place (lon, lat) of a point xy of p's plane, the grid undone; its longitude as the
   /// engine gives it, and NaN or infinite where xy is no image.
   Point2 ToLonLat(const ProjectionParameters& p, const Point2& xy) const;
+  /// The constructor's: the engine of p's kind (BuildConic: the conics', on the WGS84 a, f).
+  void Build(const ProjectionParameters& p);
+  void BuildConic(const ProjectionParameters& p, double a, double f);
 };
 
 void CheckGridTerms(const ProjectionParameters& p)
@@ -585,10 +588,8 @@ void CheckCentre(const ProjectionParameters& p)
 
 } // namespace
 
-void GeographicProjection::BuildConic(const ProjectionParameters& p)
+void GeographicProjection::Engines::BuildConic(const ProjectionParameters& p, double a, double f)
 {
-  const double a = GeographicLib::Constants::WGS84_a();
-  const double f = GeographicLib::Constants::WGS84_f();
   RequireLatitude(p.StandardParallel1, "lat1");
   RequireLatitude(p.StandardParallel2, "lat2");
   if (std::fabs(p.StandardParallel1) == 90.0 && p.StandardParallel2 == -p.StandardParallel1)
@@ -599,51 +600,51 @@ void GeographicProjection::BuildConic(const ProjectionParameters& p)
   }
   if (p.Kind == ProjectionKind::AlbersEqualArea)
   {
-    Impl->MirrorAcrossEquator = p.StandardParallel1 + p.StandardParallel2 < 0.0;
-    const double sign = Impl->MirrorAcrossEquator ? -1.0 : 1.0;
-    Impl->Albers.reset(new GeographicLib::AlbersEqualArea(
+    this->MirrorAcrossEquator = p.StandardParallel1 + p.StandardParallel2 < 0.0;
+    const double sign = this->MirrorAcrossEquator ? -1.0 : 1.0;
+    this->Albers.reset(new GeographicLib::AlbersEqualArea(
       a, f, sign * p.StandardParallel1, sign * p.StandardParallel2, 1.0));
   }
   else
   {
-    Impl->Lambert.reset(new GeographicLib::LambertConformalConic(
+    this->Lambert.reset(new GeographicLib::LambertConformalConic(
       a, f, p.StandardParallel1, p.StandardParallel2, 1.0));
   }
 }
 
-/// The GeographicLib (or own) engine of p's kind, in Impl.
-void GeographicProjection::BuildEngine(const ProjectionParameters& p)
+// The GeographicLib (or own) engine of p's kind.
+void GeographicProjection::Engines::Build(const ProjectionParameters& p)
 {
   const double a = GeographicLib::Constants::WGS84_a();
   const double f = GeographicLib::Constants::WGS84_f();
-  Impl->CentralMeridian = p.CentralLongitude;
+  this->CentralMeridian = p.CentralLongitude;
   switch (p.Kind)
   {
     case ProjectionKind::AlbersEqualArea:
     case ProjectionKind::LambertConformalConic:
-      this->BuildConic(p);
+      this->BuildConic(p, a, f);
       break;
     case ProjectionKind::TransverseMercator:
-      Impl->Transverse.reset(new GeographicLib::TransverseMercator(a, f, 1.0));
+      this->Transverse.reset(new GeographicLib::TransverseMercator(a, f, 1.0));
       break;
     case ProjectionKind::UTM:
       if (p.UTMZone < 1 || p.UTMZone > 60)
       {
         throw InputError("UTM zone " + std::to_string(p.UTMZone) + " is not in 1..60");
       }
-      Impl->Transverse.reset(new GeographicLib::TransverseMercator(a, f, UTMScale));
-      Impl->CentralMeridian = 6.0 * p.UTMZone - 183.0;
+      this->Transverse.reset(new GeographicLib::TransverseMercator(a, f, UTMScale));
+      this->CentralMeridian = 6.0 * p.UTMZone - 183.0;
       break;
     case ProjectionKind::AzimuthalEquidistant:
-      Impl->Azimuthal.reset(
+      this->Azimuthal.reset(
         new GeographicLib::AzimuthalEquidistant(GeographicLib::Geodesic::WGS84()));
       break;
     case ProjectionKind::LambertAzimuthalEqualArea:
-      Impl->AzimuthalEqualArea.reset(new LambertAzimuthalEqualArea(a, f, p.CentralLatitude));
+      this->AzimuthalEqualArea.reset(new LambertAzimuthalEqualArea(a, f, p.CentralLatitude));
       break;
     case ProjectionKind::Mercator:
     case ProjectionKind::WebMercator:
-      Impl->Cylinder.reset(new Mercator(a, p.Kind == ProjectionKind::Mercator ? f : 0.0));
+      this->Cylinder.reset(new Mercator(a, p.Kind == ProjectionKind::Mercator ? f : 0.0));
       break;
   }
 }
@@ -657,7 +658,7 @@ GeographicProjection::GeographicProjection(const ProjectionParameters& parameter
   {
     // (Inside the try, whose handler deletes Impl: thrown before it, Impl leaked.)
     CheckCentre(p);
-    this->BuildEngine(p);
+    Impl->Build(p);
     CheckGridTerms(p);
     if (p.HasOriginLatitude)
     {
@@ -754,11 +755,7 @@ namespace
 /// coordinate, or a latitude beyond 90 degrees.
 void CheckPlaceToProject(const Point2& lonlat, long long id)
 {
-  if (!std::isfinite(lonlat.x) || !std::isfinite(lonlat.y))
-  {
-    throw InputError(DescribePoint("point", id, lonlat) + " has a NaN or infinite coordinate");
-  }
-  if (std::abs(lonlat.y) > 90.0)
+  if (!std::isfinite(lonlat.x) || !std::isfinite(lonlat.y) || std::abs(lonlat.y) > 90.0)
   {
     throw InputError(DescribePoint("point", id, lonlat) + " has " + LonLatFault(lonlat));
   }

@@ -185,9 +185,6 @@ private:
   /// The plane's image of the grid's origin, (CentralLongitude, OriginLatitude); throws
   /// InputError naming origin_lat where the projection has no place for it.
   Point2 OriginInPlane() const;
-  /// The constructor's engine of p's kind, in Impl (BuildConic: the conics').
-  void BuildEngine(const ProjectionParameters& p);
-  void BuildConic(const ProjectionParameters& p);
 
   struct Engines;
   ProjectionParameters Params;

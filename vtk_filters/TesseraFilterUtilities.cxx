@@ -1166,10 +1166,14 @@ std::vector<std::string> LongAttributeWarnings(vtkDataSet* data,
     [&](vtkAbstractArray* array, bool points, vtkIdType needed)
     {
       const vtkIdType count = array->GetNumberOfTuples();
+      if (points != pointData || count <= needed)
+      {
+        return;
+      }
       const char* name = array->GetName();
       const bool asked = names.empty() ||
         (name && std::find(names.begin(), names.end(), std::string(name)) != names.end());
-      if (points != pointData || count <= needed || !asked)
+      if (!asked)
       {
         return;
       }
