@@ -758,6 +758,15 @@ DirichletTessellation::Location DirichletTessellation::InsertInRegion(Region& re
   return location;
 }
 
+// Where the triangles are renumbered or made again, the jump index and the ring of recent starts
+// name other triangles: both are dropped (the ring back to its start, all triangle 0).
+void DirichletTessellation::ForgetWalkStarts()
+{
+  this->Hints.Clear();
+  this->RecentStarts.fill(0);
+  this->NextRecentStart = 0;
+}
+
 bool DirichletTessellation::IsGhostTriangle(std::int32_t t) const
 {
   return this->Origins[3 * t] == Ghost || this->Origins[3 * t + 1] == Ghost ||
@@ -858,7 +867,7 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Region& regi
   std::int32_t t) const
 {
   const std::int32_t* const org = this->Origins.data();
-  if (org[3 * t] == Ghost || org[3 * t + 1] == Ghost || org[3 * t + 2] == Ghost)
+  if (this->IsGhostTriangle(t))
   {
     for (std::int32_t k = 0; k < 3; ++k)
     {
@@ -1608,7 +1617,7 @@ void DirichletTessellation::RemoveVertex(std::int32_t id,
   std::vector<std::int32_t>::iterator onLine)
 {
   --this->Accepted;
-  if (!this->IsTwoDimensional())
+  if (edge < 0) // (on the line: Remove found no edge in a collinear set)
   {
     this->Collinear.erase(onLine);
     return;
@@ -1989,6 +1998,29 @@ void DirichletTessellation::FreeTriangle(std::int32_t t)
 //
 // Slots: the star has k + 2 triangles; the new ones are k (the pockets' k - h triangles and h
 // ghosts, h = number of new hull edges), so two are recycled.
+namespace
+{
+
+// The new hull from a to b, as chain positions: a stack scan in chain order that pops a vertex
+// where the chain turns left (strictly).
+std::vector<std::size_t> ConvexChain(const std::vector<Point2>& pts,
+  const std::vector<std::int32_t>& chain)
+{
+  std::vector<std::size_t> hull;
+  for (std::size_t i = 0; i < chain.size(); ++i)
+  {
+    while (hull.size() >= 2 &&
+      Orient(pts[chain[hull[hull.size() - 2]]], pts[chain[hull.back()]], pts[chain[i]]) > 0)
+    {
+      hull.pop_back();
+    }
+    hull.push_back(i);
+  }
+  return hull;
+}
+
+} // namespace
+
 bool DirichletTessellation::RemoveHullVertex(std::int32_t edge)
 {
   HullStar star;
@@ -2049,24 +2081,6 @@ bool DirichletTessellation::ReadHullStar(std::int32_t edge, HullStar& star) cons
   }
   const std::size_t k = star.Chain.size() - 1;
   return star.TwinAfterB >= 0 && k >= 1 && star.Outer.size() == k;
-}
-
-// The new hull from a to b, as chain positions: a stack scan in chain order that pops a vertex
-// where the chain turns left (strictly).
-std::vector<std::size_t> DirichletTessellation::ConvexChain(const std::vector<Point2>& pts,
-  const std::vector<std::int32_t>& chain)
-{
-  std::vector<std::size_t> hull;
-  for (std::size_t i = 0; i < chain.size(); ++i)
-  {
-    while (hull.size() >= 2 &&
-      Orient(pts[chain[hull[hull.size() - 2]]], pts[chain[hull.back()]], pts[chain[i]]) > 0)
-    {
-      hull.pop_back();
-    }
-    hull.push_back(i);
-  }
-  return hull;
 }
 
 // The ghost triangle outside each new hull edge (ghost s takes slots[k - h + s]) and the pockets'
@@ -2137,7 +2151,7 @@ void DirichletTessellation::WriteHullRemoval(const HullStar& star,
 // tessellation built without the point.
 void DirichletTessellation::RebuildWithout(std::int32_t id)
 {
-  this->Hints.Clear();
+  this->ForgetWalkStarts();
   std::vector<char> isVertex(this->Coordinates.size(), 0);
   for (const std::int32_t v : this->Origins)
   {

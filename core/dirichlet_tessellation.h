@@ -276,6 +276,7 @@ private:
   std::array<std::int32_t, 64> RecentStarts{};
   std::size_t NextRecentStart = 0;
   void JumpTowards(const Point2& p);
+  void ForgetWalkStarts(); ///< the jump index and the recent starts, where triangles renumber
   // JumpTowards' parts (dirichlet_tessellation.cpp).
   bool JumpWanted(std::int32_t triangles);
   double SquaredDistanceToTriangle(std::int32_t t, const Point2& p) const;
@@ -399,8 +400,6 @@ private:
     std::int32_t TwinBeforeA = -1, TwinAfterB = -1;
   };
   bool ReadHullStar(std::int32_t edge, HullStar& star) const;
-  static std::vector<std::size_t> ConvexChain(const std::vector<Point2>& pts,
-    const std::vector<std::int32_t>& chain);
   bool PlanHullRemoval(const HullStar& star,
     const std::vector<std::size_t>& hull,
     std::vector<Ear>& plan,

@@ -30,7 +30,7 @@ namespace tessera
 
 void DirichletTessellation::OrderTrianglesByVertex()
 {
-  this->Hints.Clear(); // (its triangles are renumbered)
+  this->ForgetWalkStarts(); // (its triangles are renumbered)
   this->ScatteredTriangles = 0;
   if (this->Origins.empty())
   {

@@ -85,7 +85,7 @@ double SeamStripHalfWidth(const Point2* pts, std::int32_t first, std::int32_t en
 // triangle the region last made in the point's cell of a coarse grid (seeded with its sample
 // triangles): a short walk that meets the band only near the seam. About 0.9% are deferred with
 // either input. (A point the walk found, on an edge the region may not split, is deferred without
-// a second walk, and the region's last triangle moves to where it was found: see insertSide.)
+// a second walk, and the region's last triangle moves to where it was found: see InsertSide.)
 //
 // A slot the region has written holds a triangle it owns until both regions finish (it alone
 // changes such triangles, and its splits and flips keep their vertices on its side), and so does
@@ -478,7 +478,7 @@ void DirichletTessellation::FlipEdge(std::int32_t e)
 // triangulation (2n - 2 triangles) as a serial build would.
 void DirichletTessellation::CompactFreeTriangles()
 {
-  this->Hints.Clear(); // (its triangles are renumbered)
+  this->ForgetWalkStarts(); // (its triangles are renumbered)
   std::vector<std::int32_t>& holes = this->FreeTriangles;
   std::sort(holes.begin(), holes.end());
   const std::int32_t count = std::int32_t(this->Origins.size() / 3);
