@@ -319,11 +319,11 @@ private:
   void AddRecord(std::int32_t c, std::int32_t in, std::int32_t out, std::int32_t vertex);
   struct CircleSites;
   CircleSites SitesOf(const std::vector<std::int32_t>& circle) const;
-  Point2 FaceCentre(const std::vector<std::int32_t>& circle) const;
+  Point2 FaceCentre(const CircleSites& sites) const;
   Point2 WhereBisectorMeetsSide(const Point2& p, const Point2& q, const CircleSites& sites) const;
   void ListCircle(std::int32_t cur);
   /// Returns whether a window side (a dummy) is on the circle.
-  bool RecordVertexForOthers(std::int32_t vertex);
+  void RecordVertexForOthers(std::int32_t vertex);
   void RecordHalfNeighbours();
 
   // Sites relative to A.
@@ -337,9 +337,8 @@ private:
   std::vector<std::int32_t> IdOf;
   std::int32_t M;
 
-  // Bucket index: strips of about StripSize consecutive x-sorted centroids (never splitting a set
-  // of equal abscissae: a column of points is one strip), each sorted by y.
-  std::int32_t StripSize = 1;
+  // Bucket index: strips of about sqrt(M) consecutive x-sorted centroids (never splitting a set
+  // of equal abscissae: a column of points is one strip), each sorted by y (CutStrips).
   std::vector<std::int32_t> StripBegin; // StripCount + 1 entries
   std::vector<std::int32_t> StripOf;    // per x-sorted index
   std::int32_t StripCount = 0;
@@ -525,12 +524,12 @@ void Sweep::BuildIndex()
 // couple of strips and a few points in each.
 void Sweep::CutStrips()
 {
-  this->StripSize =
+  const std::int32_t stripSize =
     std::max<std::int32_t>(4, static_cast<std::int32_t>(std::sqrt(double(this->M))));
   this->StripBegin.assign(1, 0);
   while (this->StripBegin.back() < this->M)
   {
-    std::int32_t end = std::min(this->M, this->StripBegin.back() + this->StripSize);
+    std::int32_t end = std::min(this->M, this->StripBegin.back() + stripSize);
     while (end < this->M && this->Xs[end] == this->Xs[end - 1])
     {
       ++end;
@@ -972,8 +971,7 @@ void Sweep::LimitCursor(Cursor& c)
   const double dx = DistanceOutside(d.X, xlo, xhi) * (1.0 - 1e-12);
   if (dx > d.R)
   {
-    c.YLo = std::numeric_limits<double>::infinity();
-    c.YHi = -std::numeric_limits<double>::infinity();
+    Exhaust(c);
     return;
   }
   const double h = std::sqrt((d.R - dx) * (d.R + dx)) * (1.0 + 1e-12);
@@ -1131,7 +1129,7 @@ void Sweep::FindFirstCandidate(const std::int32_t* dummies,
 {
   this->Cursors.assign(1, this->MakeCursor(lo));
   bool bounded = false;
-  for (int round = 1; this->P == kNone; ++round)
+  for (int round = 1;; ++round) // (until a centroid of E1 is found, or none can be)
   {
     const bool visited = this->StepCursors();
     if (this->P != kNone)
@@ -1284,9 +1282,8 @@ Sweep::CircleSites Sweep::SitesOf(const std::vector<std::int32_t>& circle) const
   return sites;
 }
 
-Point2 Sweep::FaceCentre(const std::vector<std::int32_t>& circle) const
+Point2 Sweep::FaceCentre(const CircleSites& sites) const
 {
-  const CircleSites sites = this->SitesOf(circle);
   if (sites.Vertical && sites.Horizontal)
   {
     return { sites.XSide, sites.YSide }; // a window corner
@@ -1325,12 +1322,13 @@ Sweep::Entry Sweep::SearchAndRecord(std::int32_t cur)
   this->SearchNext(cur);
   this->ListCircle(cur);
   const std::int32_t vertex = static_cast<std::int32_t>(this->Vertices.size());
-  this->Vertices.push_back(this->FaceCentre(this->Circle));
-  const bool dummies = this->RecordVertexForOthers(vertex);
+  const CircleSites sites = this->SitesOf(this->Circle);
+  this->Vertices.push_back(this->FaceCentre(sites));
+  this->RecordVertexForOthers(vertex);
   if (this->Circle.size() >= 4)
   {
     ++this->DegenerateVertices;
-    if (!dummies)
+    if (!sites.Vertical && !sites.Horizontal) // (no window side on the circle)
     {
       this->RecordHalfNeighbours();
     }
@@ -1355,18 +1353,16 @@ void Sweep::ListCircle(std::int32_t cur)
   this->Circle.push_back(cur);
 }
 
-// The vertex's entry (in, out) for each centroid on the circle but A; whether a dummy is on it.
-bool Sweep::RecordVertexForOthers(std::int32_t vertex)
+// The vertex's entry (in, out) for each centroid on the circle but A.
+void Sweep::RecordVertexForOthers(std::int32_t vertex)
 {
   const std::size_t m = this->Circle.size();
-  bool dummies = false;
   for (std::size_t i = 1; i < m; ++i)
   {
     const std::int32_t c = this->Circle[i];
     if (c < 0)
     {
-      dummies = true;
-      continue;
+      continue; // a window side
     }
     if (this->Processed[c])
     {
@@ -1376,7 +1372,6 @@ bool Sweep::RecordVertexForOthers(std::int32_t vertex)
     }
     this->AddRecord(c, this->Circle[i - 1], this->Circle[(i + 1) % m], vertex);
   }
-  return dummies;
 }
 
 // Sites not adjacent around a circle of four or more centroids meet at its vertex only:

@@ -313,12 +313,18 @@ void expect_searches_are_first_finds(const ThiessenSweepResult& r,
     return mpq_class(dx * dx + dy * dy);
   };
   std::size_t first = order.empty() ? 0 : order[0];
+  mpq_class nearest = order.empty() ? mpq_class(0) : squaredDistance(first);
   bool unique = true;
   for (std::size_t n = 1; n < order.size(); ++n)
   {
-    const int c = cmp(squaredDistance(order[n]), squaredDistance(first));
+    const mpq_class distance = squaredDistance(order[n]);
+    const int c = cmp(distance, nearest);
     unique = c < 0 || (unique && c > 0);
-    first = c < 0 ? order[n] : first;
+    if (c < 0)
+    {
+      first = order[n];
+      nearest = distance;
+    }
   }
   std::set<std::int32_t> known;
   const auto firstFinds = [&](std::size_t k)
