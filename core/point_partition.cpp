@@ -118,12 +118,18 @@ double DistanceBeyondEnd(const Point2& p,
     0.0, DistanceAlong(p, end, EndTangentPixel(contours, contour, position), end, width));
 }
 
+// The centre of the pixel at `position` of contours.Pixels.
+Point2 PositionCentre(const RidgeContours& contours, int position, int width)
+{
+  return PixelCentre(contours.Pixels[std::size_t(position)], width);
+}
+
 // Whether the pixel at `position` of an open contour lies behind its end pixel at `end` along the
 // end tangent (strictly).
 bool PixelBehindEnd(const RidgeContours& contours, int contour, int position, int end, int width)
 {
   const int endPixel = contours.Pixels[end];
-  return DistanceAlong(PixelCentre(contours.Pixels[position], width),
+  return DistanceAlong(PositionCentre(contours, position, width),
            endPixel,
            EndTangentPixel(contours, contour, end),
            endPixel,
@@ -372,12 +378,6 @@ private:
   std::vector<std::uint8_t> Alive;  // per place in Members: not yet taken
   std::vector<Node> Nodes;          // the root first
 };
-
-// The centre of the pixel at `position` of contours.Pixels.
-Point2 PositionCentre(const RidgeContours& contours, int position, int width)
-{
-  return PixelCentre(contours.Pixels[std::size_t(position)], width);
-}
 
 // Ends: 2c (first pixel) and 2c + 1 (last pixel) of each open contour of two pixels or more.
 std::vector<int> OpenContourEnds(const RidgeContours& contours)

@@ -906,9 +906,8 @@ struct StationCells
   /// The column and row of the cell holding p (pixel units).
   std::pair<int, int> CellOf(const Point2& p) const
   {
-    const int i = std::min(this->Columns - 1, std::max(0, int(p.x / this->Side)));
-    const int j = std::min(this->Rows - 1, std::max(0, int(p.y / this->Side)));
-    return std::make_pair(i, j);
+    return std::make_pair(int(GridCell(p.x / this->Side, std::uint32_t(this->Columns))),
+      int(GridCell(p.y / this->Side, std::uint32_t(this->Rows))));
   }
   std::size_t IndexOf(int i, int j) const
   {

@@ -373,8 +373,9 @@ std::vector<std::size_t> NearCopiesMadeOne(const std::vector<Point2>& v,
   {
     return made;
   }
-  const CopyGroups groups = GroupsOfCopies(order, parent);
-  std::vector<char> apart = GroupsLeftApart(v, ringOf, parent, groups.Smallest, groups.Grouped);
+  CopyGroups groups = GroupsOfCopies(order, parent);
+  std::vector<char> apart =
+    GroupsLeftApart(v, ringOf, parent, groups.Smallest, std::move(groups.Grouped));
   PlaceOnSmallest(parent, groups.Smallest, apart, made);
   LeaveApartWhereCornersTurn(v, prev, next, parent, groups.Smallest, apart, made);
   return made;
