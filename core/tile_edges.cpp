@@ -202,23 +202,22 @@ EdgeEnd ClippedEnd(const Tess& tess,
   bool corner,
   bool exit)
 {
-  const std::vector<HalfPlane>& constraints = tess.GetWindow().EffectiveConstraints();
-  const int count = int(constraints.size());
-  // Window corner k is where constraint k-1 meets k: for a tie between k and k+1 it is k+1.
-  const int cornerIndex = exit ? (line + 1) % count : line;
-  const EdgeEnd atCorner{
-    tess.GetWindow().Vertices()[std::size_t(cornerIndex)], line, -2 - cornerIndex
-  };
   const int beyond = exit ? versus : -versus; // > 0: the centre lies past the line
-  if (face.Face < 0 || beyond > 0)
+  if (face.Face >= 0 && beyond < 0)
   {
-    return corner ? atCorner : EdgeEnd{ BisectorCrossing(pa, pb, constraints[line]), line, -1 };
+    return { face.Centre, -1, face.Face };
   }
-  if (beyond == 0)
+  const std::vector<HalfPlane>& constraints = tess.GetWindow().EffectiveConstraints();
+  if (corner)
   {
-    return corner ? atCorner : EdgeEnd{ face.Centre, line, face.Face };
+    // Window corner k is where constraint k-1 meets k: for a tie between k and k+1 it is k+1.
+    const int count = int(constraints.size());
+    const int cornerIndex = exit ? (line + 1) % count : line;
+    return { tess.GetWindow().Vertices()[std::size_t(cornerIndex)], line, -2 - cornerIndex };
   }
-  return { face.Centre, -1, face.Face };
+  return face.Face < 0 || beyond > 0
+    ? EdgeEnd{ BisectorCrossing(pa, pb, constraints[line]), line, -1 }
+    : EdgeEnd{ face.Centre, line, face.Face };
 }
 
 // The part inside the window of the tile edge of a (lower id) with b: the
