@@ -183,7 +183,7 @@ struct DirichletTessellation::TwoRegionBuild
   }
 
   void SplitAtSeam();
-  void FindSeamEdges();
+  void SortSampleTriangles();
   void AllotSlots();
   void InsertSides();
   void InsertSide(std::size_t side);
@@ -198,8 +198,10 @@ struct DirichletTessellation::TwoRegionBuild
   Region Regions[2];
   std::vector<std::int32_t> Sides[2]; // each region's points, in BRIO order
   std::int32_t SampleTriangles = 0;   // the triangles before the regions' slots
+  std::vector<std::int8_t> OwnerOf;   // per sample triangle: its region's side, or NoOwner
   std::vector<std::int32_t> SeamEdges;
   std::vector<RestartGrid> Restarts;
+  static constexpr std::int8_t NoOwner = -1; // straddles the seam, or free
 };
 
 // Steps 2 to 4 for vertices [first, end). Returns false, having inserted nothing, when the
@@ -214,7 +216,7 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first,
   }
   TwoRegionBuild build(*this, first, end, box);
   build.SplitAtSeam();
-  build.FindSeamEdges();
+  build.SortSampleTriangles();
   build.AllotSlots();
   build.InsertSides();
   build.Join();
@@ -283,15 +285,28 @@ bool DirichletTessellation::TwoRegionBuild::OwnedBy(const Region& region, std::i
   return true;
 }
 
-// Which triangles straddle the seam, before anything else changes: their edges are legalized
-// after the regions (Join).
-void DirichletTessellation::TwoRegionBuild::FindSeamEdges()
+// Which region owns each sample triangle, and which triangles straddle the seam, before anything
+// else changes: their edges are legalized after the regions (Join). (A point is on one side
+// only, so a triangle has one owner at most.)
+void DirichletTessellation::TwoRegionBuild::SortSampleTriangles()
 {
   this->SampleTriangles = std::int32_t(this->T.Origins.size() / 3);
+  this->OwnerOf.assign(std::size_t(this->SampleTriangles), NoOwner);
   for (std::int32_t t = 0; t < this->SampleTriangles; ++t)
   {
-    if (!this->T.IsFreeTriangle(t) && !this->OwnedBy(this->Regions[0], t) &&
-      !this->OwnedBy(this->Regions[1], t))
+    if (this->T.IsFreeTriangle(t))
+    {
+      continue;
+    }
+    for (std::int8_t side = 0; side < 2; ++side)
+    {
+      if (this->OwnedBy(this->Regions[side], t))
+      {
+        this->OwnerOf[t] = side;
+        break;
+      }
+    }
+    if (this->OwnerOf[t] == NoOwner)
     {
       this->SeamEdges.insert(this->SeamEdges.end(), { 3 * t, 3 * t + 1, 3 * t + 2 });
     }
@@ -318,7 +333,7 @@ void DirichletTessellation::TwoRegionBuild::AllotSlots()
     region.LastTriangle = this->T.Serial.LastTriangle;
     for (std::int32_t t = 0; t < this->SampleTriangles; ++t)
     {
-      if (!this->T.IsFreeTriangle(t) && !this->T.IsGhostTriangle(t) && this->OwnedBy(region, t))
+      if (this->OwnerOf[t] == side && !this->T.IsGhostTriangle(t))
       {
         restarts.At(this->Pts[this->T.Origins[3 * t]]) = t;
         region.LastTriangle = t;
