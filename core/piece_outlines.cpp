@@ -208,57 +208,90 @@ bool RingInside(const Point2* a, std::size_t countA, const Point2* b, std::size_
   return false; // (every vertex on b: a and b are one path)
 }
 
-} // namespace
-
-RegionOutlines OutlinesOfPieces(const ClippedRings& pieces, std::size_t first, std::size_t last)
+/// Ring r of rings: where it starts, and its size.
+const Point2* RingAt(const ClippedRings& rings, std::size_t r)
 {
-  const ClippedRings chained = ChainedRings(BoundaryEdges(pieces, first, last));
-  ClippedRings rings;
+  return &rings.Vertices[rings.RingOffsets[r]];
+}
+
+std::size_t RingSize(const ClippedRings& rings, std::size_t r)
+{
+  return rings.RingOffsets[r + 1] - rings.RingOffsets[r];
+}
+
+/// The chained rings cut into loops where they touch themselves.
+ClippedRings LoopsOf(const ClippedRings& chained)
+{
+  ClippedRings loops;
   for (std::size_t r = 0; r + 1 < chained.RingOffsets.size(); ++r)
   {
-    const std::size_t begin = chained.RingOffsets[r];
-    AppendLoops(&chained.Vertices[begin], chained.RingOffsets[r + 1] - begin, rings);
+    AppendLoops(RingAt(chained, r), RingSize(chained, r), loops);
   }
-  const std::size_t count = rings.RingOffsets.size() - 1;
-  const auto ring = [&rings](std::size_t r) { return &rings.Vertices[rings.RingOffsets[r]]; };
-  const auto size = [&rings](std::size_t r)
-  { return rings.RingOffsets[r + 1] - rings.RingOffsets[r]; };
-  std::vector<std::size_t> outers, holes;
-  std::vector<double> areas(count, 0.0);
-  std::vector<Box2> boxes(count);
+  return loops;
+}
+
+/// The loops that bound the region, outer rings (anticlockwise) and holes, each with its area's
+/// size and its box (indexed by loop; 0 and an empty box for the others).
+struct BoundingLoops
+{
+  std::vector<std::size_t> Outers, Holes;
+  std::vector<double> Areas;
+  std::vector<Box2> Boxes;
+};
+
+BoundingLoops SortOutersAndHoles(const ClippedRings& loops)
+{
+  const std::size_t count = loops.RingOffsets.size() - 1;
+  BoundingLoops sorted;
+  sorted.Areas.assign(count, 0.0);
+  sorted.Boxes.resize(count);
   for (std::size_t r = 0; r < count; ++r)
   {
-    if (size(r) < 3)
+    const Point2* ring = RingAt(loops, r);
+    const std::size_t size = RingSize(loops, r);
+    if (size < 3)
     {
       continue;
     }
     // A ring of no area, or whose area's sign is not its turn at its lowest vertex, is no
     // boundary of the region: pieces that overlap (a window's slit some ulps wide, which
     // ShareBorderVertices closed) leave a bow tie of two opposite lobes there.
-    const int turn = RingOrientation(ring(r), size(r)); // (0: flat there; the area tells)
-    const double area = CompensatedPolygonArea(ring(r), size(r));
+    const int turn = RingOrientation(ring, size); // (0: flat there; the area tells)
+    const double area = CompensatedPolygonArea(ring, size);
     if (area != 0.0 && (turn == 0 || (turn > 0) == (area > 0.0)))
     {
-      areas[r] = std::abs(area);
-      boxes[r] = BoundsOf(ring(r), size(r));
-      (area > 0.0 ? outers : holes).push_back(r);
+      sorted.Areas[r] = std::abs(area);
+      sorted.Boxes[r] = BoundsOf(ring, size);
+      (area > 0.0 ? sorted.Outers : sorted.Holes).push_back(r);
     }
   }
-  // Each hole with the smallest outer ring that holds it.
-  std::vector<std::size_t> bySize = outers;
+  return sorted;
+}
+
+bool BoxInside(const Box2& inner, const Box2& outer)
+{
+  return inner.XMin >= outer.XMin && inner.XMax <= outer.XMax && inner.YMin >= outer.YMin &&
+    inner.YMax <= outer.YMax;
+}
+
+/// Per loop, the holes it holds: each hole goes with the smallest outer ring that holds it (the
+/// largest outer ring when none does, none when there is no outer ring).
+std::vector<std::vector<std::size_t>> HolesByHolder(const ClippedRings& loops,
+  const BoundingLoops& sorted)
+{
+  const std::size_t count = sorted.Areas.size();
+  std::vector<std::size_t> bySize = sorted.Outers;
   std::stable_sort(bySize.begin(),
     bySize.end(),
-    [&areas](std::size_t a, std::size_t b) { return areas[a] < areas[b]; });
+    [&sorted](std::size_t a, std::size_t b) { return sorted.Areas[a] < sorted.Areas[b]; });
   std::vector<std::vector<std::size_t>> holesOf(count);
-  for (const std::size_t h : holes)
+  for (const std::size_t h : sorted.Holes)
   {
     std::size_t holder = bySize.empty() ? count : bySize.back();
     for (const std::size_t o : bySize)
     {
-      const Box2& hb = boxes[h];
-      const Box2& ob = boxes[o];
-      if (hb.XMin >= ob.XMin && hb.XMax <= ob.XMax && hb.YMin >= ob.YMin && hb.YMax <= ob.YMax &&
-        RingInside(ring(h), size(h), ring(o), size(o)))
+      if (BoxInside(sorted.Boxes[h], sorted.Boxes[o]) &&
+        RingInside(RingAt(loops, h), RingSize(loops, h), RingAt(loops, o), RingSize(loops, o)))
       {
         holder = o;
         break;
@@ -269,14 +302,25 @@ RegionOutlines OutlinesOfPieces(const ClippedRings& pieces, std::size_t first, s
       holesOf[holder].push_back(h);
     }
   }
+  return holesOf;
+}
+
+} // namespace
+
+RegionOutlines OutlinesOfPieces(const ClippedRings& pieces, std::size_t first, std::size_t last)
+{
+  const ClippedRings loops = LoopsOf(ChainedRings(BoundaryEdges(pieces, first, last)));
+  const BoundingLoops sorted = SortOutersAndHoles(loops);
+  const std::vector<std::vector<std::size_t>> holesOf = HolesByHolder(loops, sorted);
   // Outer rings in the order found: ChainedRings starts each ring at its lowest unused edge.
   RegionOutlines out;
   const auto append = [&](std::size_t r)
   {
-    out.Rings.Vertices.insert(out.Rings.Vertices.end(), ring(r), ring(r) + size(r));
+    out.Rings.Vertices.insert(
+      out.Rings.Vertices.end(), RingAt(loops, r), RingAt(loops, r) + RingSize(loops, r));
     out.Rings.RingOffsets.push_back(out.Rings.Vertices.size());
   };
-  for (const std::size_t o : outers)
+  for (const std::size_t o : sorted.Outers)
   {
     append(o);
     for (const std::size_t h : holesOf[o])
