@@ -125,88 +125,102 @@ Box2 CertainInterior(const std::vector<HalfPlane>& effective)
     line.YMin + margin * (std::fabs(line.YMin) + height),
     line.YMax - margin * (std::fabs(line.YMax) + height) };
 }
+
+// What the other constraints do along the boundary line of constraint i: whether one of them
+// makes it redundant, and which of them the line enters last and leaves first (when it enters and
+// leaves any). Throws InputError when one is parallel to it, facing it, with no room between.
+struct AlongLine
+{
+  bool Dominated = false;
+  bool HasEntry = false, HasExit = false;
+  std::size_t Entry = 0, Exit = 0;
+};
+
+AlongLine OthersAlong(const std::vector<HalfPlane>& constraints,
+  std::size_t i,
+  const std::function<std::string(std::size_t)>& named)
+{
+  const HalfPlane& hi = constraints[i];
+  AlongLine along;
+  for (std::size_t j = 0; j < constraints.size() && !along.Dominated; ++j)
+  {
+    if (j == i)
+    {
+      continue;
+    }
+    const HalfPlane& hj = constraints[j];
+    const int rate = NormalTurn(hi, hj);
+    if (rate == 0)
+    {
+      const int offset = ParallelOffsetSign(hi, hj);
+      if (SameDirection(hi, hj))
+      {
+        // j lies further in (its line is the tighter one), or it is the same half-plane and the
+        // first of the copies keeps the edge.
+        along.Dominated = offset > 0 || (offset == 0 && j < i);
+      }
+      else if (offset >= 0)
+      {
+        throw InputError("window is empty: " + named(i) + " " + describe(hi) + " and " + named(j) +
+          " " + describe(hj) + " are parallel and leave no room between them");
+      }
+    }
+    else if (rate < 0)
+    {
+      // Entering j. Keep the latest entry: j is later if its crossing satisfies the current one.
+      if (!along.HasEntry || ValueAtCrossing(hi, hj, constraints[along.Entry]) < 0)
+      {
+        along.Entry = j;
+      }
+      along.HasEntry = true;
+    }
+    else
+    {
+      // Leaving j. Keep the earliest exit: j is earlier if its crossing satisfies the current.
+      if (!along.HasExit || ValueAtCrossing(hi, hj, constraints[along.Exit]) < 0)
+      {
+        along.Exit = j;
+      }
+      along.HasExit = true;
+    }
+  }
+  return along;
+}
+
 // Which constraints are effective, each tested against every other, O(n^2) (see the sketch at the
 // top): throws InputError for a window found empty, UnboundedWindowError for one found unbounded,
 // naming the constraints (named(i)).
 std::vector<bool> EffectiveByPairs(const std::vector<HalfPlane>& constraints,
   const std::function<std::string(std::size_t)>& named)
 {
-  const std::size_t n = constraints.size();
-  std::vector<bool> effective(n, false);
-  for (std::size_t i = 0; i < n; ++i)
+  std::vector<bool> effective(constraints.size(), false);
+  for (std::size_t i = 0; i < constraints.size(); ++i)
   {
-    const HalfPlane& hi = constraints[i];
-    bool dominated = false;
-    bool hasEntry = false, hasExit = false;
-    std::size_t entry = 0, exit = 0;
-    for (std::size_t j = 0; j < n && !dominated; ++j)
-    {
-      if (j == i)
-      {
-        continue;
-      }
-      const HalfPlane& hj = constraints[j];
-      const int rate = NormalTurn(hi, hj);
-      if (rate == 0)
-      {
-        const int offset = ParallelOffsetSign(hi, hj);
-        if (SameDirection(hi, hj))
-        {
-          // j lies further in (its line is the tighter one), or it is the same half-plane and the
-          // first of the copies keeps the edge.
-          dominated = offset > 0 || (offset == 0 && j < i);
-        }
-        else if (offset >= 0)
-        {
-          throw InputError("window is empty: " + named(i) + " " + describe(hi) + " and " +
-            named(j) + " " + describe(hj) + " are parallel and leave no room between them");
-        }
-      }
-      else if (rate < 0)
-      {
-        // Entering j. Keep the latest entry: j is later if its crossing satisfies the current one.
-        if (!hasEntry || ValueAtCrossing(hi, hj, constraints[entry]) < 0)
-        {
-          entry = j;
-        }
-        hasEntry = true;
-      }
-      else
-      {
-        // Leaving j. Keep the earliest exit: j is earlier if its crossing satisfies the current.
-        if (!hasExit || ValueAtCrossing(hi, hj, constraints[exit]) < 0)
-        {
-          exit = j;
-        }
-        hasExit = true;
-      }
-    }
-    if (dominated)
+    const AlongLine along = OthersAlong(constraints, i, named);
+    if (along.Dominated)
     {
       continue;
     }
-    if (!hasEntry || !hasExit)
+    if (!along.HasEntry || !along.HasExit)
     {
       // A ray (or the whole line) of L_i satisfies every other constraint strictly; points just
       // inside it are in the window, whose closure then contains a ray.
       throw UnboundedWindowError("window is unbounded: the boundary line of " + named(i) + " " +
-        describe(hi) + " is not closed off by the other constraints" +
-        (hasEntry || hasExit ? " at one end" : " at either end"));
+        describe(constraints[i]) + " is not closed off by the other constraints" +
+        (along.HasEntry || along.HasExit ? " at one end" : " at either end"));
     }
-    effective[i] = ValueAtCrossing(hi, constraints[entry], constraints[exit]) < 0;
+    effective[i] =
+      ValueAtCrossing(constraints[i], constraints[along.Entry], constraints[along.Exit]) < 0;
   }
-
   return effective;
 }
 
-} // namespace
-
-Window::Window(const std::vector<HalfPlane>& constraints, const ConstraintNames& names)
-  : InputNames(names.Each)
+// Throws InputError naming the first constraint with a coefficient that is not finite or with
+// a == b == 0, and UnboundedWindowError when there is none.
+void CheckCoefficients(const std::vector<HalfPlane>& constraints,
+  const std::function<std::string(std::size_t)>& named)
 {
-  const std::size_t n = constraints.size();
-  const auto named = [this](std::size_t i) { return this->ConstraintName(i); };
-  for (std::size_t i = 0; i < n; ++i)
+  for (std::size_t i = 0; i < constraints.size(); ++i)
   {
     const HalfPlane& h = constraints[i];
     if (!std::isfinite(h.a) || !std::isfinite(h.b) || !std::isfinite(h.c))
@@ -220,11 +234,31 @@ Window::Window(const std::vector<HalfPlane>& constraints, const ConstraintNames&
       throw InputError(named(i) + " has a == b == 0: it is no half-plane " + describe(h));
     }
   }
-  if (n == 0)
+  if (constraints.empty())
   {
     throw UnboundedWindowError("window is unbounded: no constraints given");
   }
+}
 
+// Anticlockwise order around a convex polygon is the angular order of the outward normals,
+// starting from the first effective constraint given. No two effective normals are parallel
+// and point the same way.
+void SortAnticlockwise(const std::vector<HalfPlane>& constraints, std::vector<std::size_t>& ids)
+{
+  const AngleFrom angle(constraints[ids.front()]);
+  std::sort(ids.begin() + 1,
+    ids.end(),
+    [&](std::size_t p, std::size_t q) { return angle(constraints[p], constraints[q]); });
+}
+
+} // namespace
+
+Window::Window(const std::vector<HalfPlane>& constraints, const ConstraintNames& names)
+  : InputNames(names.Each)
+{
+  const std::size_t n = constraints.size();
+  const auto named = [this](std::size_t i) { return this->ConstraintName(i); };
+  CheckCoefficients(constraints, named);
   // The sweep settles a bounded window with an interior in O(n log n) (10^4 constraints, as a
   // catchment outline given as constraints, took the pairs 1.2 s); the pairs name what is wrong
   // with any other.
@@ -243,15 +277,7 @@ Window::Window(const std::vector<HalfPlane>& constraints, const ConstraintNames&
       (names.All.empty() ? "the " + std::to_string(n) + " window constraints" : names.All) +
       " have no interior point in common");
   }
-
-  // Anticlockwise order around a convex polygon is the angular order of the outward normals,
-  // starting from the first effective constraint given. No two effective normals are parallel
-  // and point the same way.
-  const AngleFrom angle(constraints[ids.front()]);
-  std::sort(ids.begin() + 1,
-    ids.end(),
-    [&](std::size_t p, std::size_t q) { return angle(constraints[p], constraints[q]); });
-
+  SortAnticlockwise(constraints, ids);
   this->EffectiveInputIds = ids;
   for (std::size_t id : ids)
   {
