@@ -348,6 +348,102 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
   return BrioHilbertOrder(points, ids, BoundsOfIds(points, ids), seed);
 }
 
+namespace
+{
+
+/// The fewest bits, `least` or more (and at most 31), that hold every value below `limit`.
+int BitsBelow(std::int64_t limit, int least)
+{
+  int bits = least;
+  while (bits < 31 && (std::int64_t(1) << bits) < limit)
+  {
+    ++bits;
+  }
+  return bits;
+}
+
+/// A point's BRIO key: its round (the last round holds half the points, the one before a
+/// quarter, ...), then its Hilbert index, 2 * levels bits below.
+struct BrioKey
+{
+  BrioKey(const std::vector<Point2>& points, const Box2& box, std::size_t n, std::uint64_t seed)
+    : Points(points.data())
+    , Seed(seed)
+    , Levels(LevelCount(n))
+    , Rounds(RoundCount(n))
+    , Curve(box, this->Levels)
+  {
+  }
+
+  std::uint64_t operator()(std::int32_t id) const
+  {
+    // Trailing zeros of a hash: 0 with probability 1/2 (last round), 1 with 1/4, ...
+    const std::uint64_t hash = SplitMix64(this->Seed ^ (std::uint64_t(id) * 0x2545f4914f6cdd1dULL));
+    const int zeros = std::min(__builtin_ctzll(hash | (std::uint64_t(1) << 63)), this->Rounds - 1);
+    const std::uint64_t round = std::uint64_t(this->Rounds - 1 - zeros);
+    return (round << (2 * this->Levels)) | this->Curve(this->Points[id]);
+  }
+
+  int Bits() const { return 2 * this->Levels + BitsBelow(this->Rounds, 0); }
+
+  const Point2* Points;
+  std::uint64_t Seed;
+  int Levels, Rounds;
+  CurveIndex Curve;
+};
+
+/// The ids in key order, each key packed with its id (idBits) in one word: the keys computed on
+/// the cores, which also first touch the array; the sort stays serial.
+void OrderByPackedKeys(const std::vector<Point2>& points,
+  const std::vector<std::int32_t>& ids,
+  const BrioKey& key,
+  int idBits,
+  std::vector<std::int32_t>& order)
+{
+  const std::size_t n = ids.size();
+  const std::vector<std::int32_t> bounds =
+    parallel::ChunkBounds(std::int32_t(n), parallel::ThreadCount(std::int64_t(n)));
+  UninitializedVector<std::uint64_t> packed(n);
+  parallel::RunChunks(bounds.size() - 1,
+    [&](std::size_t c)
+    {
+      for (std::int32_t k = bounds[c]; k < bounds[c + 1]; ++k)
+      {
+        packed[k] = (key(ids[k]) << idBits) | std::uint64_t(ids[k]);
+      }
+    });
+  RadixSortPacked(packed, idBits, key.Bits());
+  const std::uint64_t idMask = (std::uint64_t(1) << idBits) - 1;
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    order[k] = std::int32_t(packed[k] & idMask);
+  }
+  SortCrowdedCells(
+    points.data(), order, [&packed, idBits](std::size_t k) { return packed[k] >> idBits; });
+}
+
+/// The ids in key order, keys and ids side by side (when they do not fit in one word together).
+void OrderByKeyedIds(const std::vector<Point2>& points,
+  const std::vector<std::int32_t>& ids,
+  const BrioKey& key,
+  std::vector<std::int32_t>& order)
+{
+  const std::size_t n = ids.size();
+  std::vector<KeyedId> items(n);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    items[k] = { key(ids[k]), ids[k] };
+  }
+  RadixSortByKey(items, key.Bits());
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    order[k] = items[k].Id;
+  }
+  SortCrowdedCells(points.data(), order, [&items](std::size_t k) { return items[k].Key; });
+}
+
+} // namespace
+
 std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
   const std::vector<std::int32_t>& ids,
   const Box2& box,
@@ -360,66 +456,17 @@ std::vector<std::int32_t> BrioHilbertOrder(const std::vector<Point2>& points,
     return order;
   }
   const std::int32_t largestId = *std::max_element(ids.begin(), ids.end());
-  const std::vector<std::int32_t> bounds =
-    parallel::ChunkBounds(std::int32_t(n), parallel::ThreadCount(std::int64_t(n)));
-  const int levels = LevelCount(n);
-  const int rounds = RoundCount(n);
-  const CurveIndex curve(box, levels);
-
-  int roundBits = 0;
-  while ((1 << roundBits) < rounds)
-  {
-    ++roundBits;
-  }
-  const int keyBits = 2 * levels + roundBits;
-  int idBits = 1;
-  while (idBits < 31 && (std::int64_t(1) << idBits) <= largestId)
-  {
-    ++idBits;
-  }
-  const auto key = [&](std::int32_t id)
-  {
-    // Trailing zeros of a hash: 0 with probability 1/2 (last round), 1 with 1/4, ...
-    const std::uint64_t hash = SplitMix64(seed ^ (std::uint64_t(id) * 0x2545f4914f6cdd1dULL));
-    const int zeros = std::min(__builtin_ctzll(hash | (std::uint64_t(1) << 63)), rounds - 1);
-    const std::uint64_t round = std::uint64_t(rounds - 1 - zeros);
-    return (round << (2 * levels)) | curve(points[id]);
-  };
+  const BrioKey key(points, box, n, seed);
+  const int idBits = BitsBelow(std::int64_t(largestId) + 1, 1);
   ResizeOnLargePages(order, n);
-  if (keyBits + idBits <= 64)
+  if (key.Bits() + idBits <= 64)
   {
-    // The keys (a hash and a Hilbert index per point) on the cores, which also first touch the
-    // array; the sort stays serial.
-    UninitializedVector<std::uint64_t> packed(n);
-    parallel::RunChunks(bounds.size() - 1,
-      [&](std::size_t c)
-      {
-        for (std::int32_t k = bounds[c]; k < bounds[c + 1]; ++k)
-        {
-          packed[k] = (key(ids[k]) << idBits) | std::uint64_t(ids[k]);
-        }
-      });
-    RadixSortPacked(packed, idBits, keyBits);
-    const std::uint64_t idMask = (std::uint64_t(1) << idBits) - 1;
-    for (std::size_t k = 0; k < n; ++k)
-    {
-      order[k] = std::int32_t(packed[k] & idMask);
-    }
-    SortCrowdedCells(
-      points.data(), order, [&packed, idBits](std::size_t k) { return packed[k] >> idBits; });
-    return order;
+    OrderByPackedKeys(points, ids, key, idBits, order);
   }
-  std::vector<KeyedId> items(n);
-  for (std::size_t k = 0; k < n; ++k)
+  else
   {
-    items[k] = { key(ids[k]), ids[k] };
+    OrderByKeyedIds(points, ids, key, order);
   }
-  RadixSortByKey(items, keyBits);
-  for (std::size_t k = 0; k < n; ++k)
-  {
-    order[k] = items[k].Id;
-  }
-  SortCrowdedCells(points.data(), order, [&items](std::size_t k) { return items[k].Key; });
   return order;
 }
 
