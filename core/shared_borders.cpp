@@ -1,12 +1,14 @@
 #include "shared_borders.h"
 
 #include "predicates.h"
+#include "ring_insertions.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <utility>
 
 namespace tessera
 {
@@ -14,14 +16,6 @@ namespace
 {
 
 constexpr double ToleranceUlps = 64.0;
-
-// A vertex to add inside an edge (the edge's start's index among all vertices), at parameter t.
-struct Insertion
-{
-  std::size_t Edge;
-  double T;
-  Point2 Vertex;
-};
 
 double Tolerance(const Point2& a, const Point2& b)
 {
@@ -444,11 +438,12 @@ void WeldNearCopies(const ClippedRings& given,
 // Each vertex that lies inside an edge of another piece (InsideParameter, on the scaled vertices
 // s.Vertices), with its coordinates from own; in the order of the vertices and of the edges in
 // their grid cells.
-std::vector<Insertion> VerticesInsideEdges(const ScaledPieces& s, const std::vector<Point2>& own)
+std::vector<RingInsertion> VerticesInsideEdges(const ScaledPieces& s,
+  const std::vector<Point2>& own)
 {
   const std::vector<Point2>& v = s.Vertices;
   const EdgeGrid grid(v, s.Next);
-  std::vector<Insertion> insertions;
+  std::vector<RingInsertion> insertions;
   for (std::size_t k = 0; k < v.size(); ++k)
   {
     for (const std::size_t* e = grid.begin(v[k]); e != grid.end(v[k]); ++e)
@@ -465,31 +460,6 @@ std::vector<Insertion> VerticesInsideEdges(const ScaledPieces& s, const std::vec
     }
   }
   return insertions;
-}
-
-// The pieces with each insertion after the start of its edge, in order of T (insertions sorted
-// by edge, then T).
-ClippedRings WithInsertions(const ClippedRings& pieces, const std::vector<Insertion>& insertions)
-{
-  ClippedRings out;
-  out.Vertices.reserve(pieces.Vertices.size() + insertions.size());
-  auto inserted = insertions.begin();
-  for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
-  {
-    for (std::size_t k = pieces.RingOffsets[r]; k < pieces.RingOffsets[r + 1]; ++k)
-    {
-      out.Vertices.push_back(pieces.Vertices[k]);
-      for (; inserted != insertions.end() && inserted->Edge == k; ++inserted)
-      {
-        if (!(inserted->Vertex == out.Vertices.back())) // (the same point from two pieces: once)
-        {
-          out.Vertices.push_back(inserted->Vertex);
-        }
-      }
-    }
-    out.RingOffsets.push_back(out.Vertices.size());
-  }
-  return out;
 }
 
 } // namespace
@@ -509,16 +479,14 @@ ClippedRings ShareBorderVertices(const ClippedRings& given)
   const std::vector<std::size_t> made =
     NearCopiesMadeOne(scaled.Vertices, scaled.RingOf, scaled.Prev, scaled.Next);
   WeldNearCopies(given, made, pieces, scaled.Vertices);
-  std::vector<Insertion> insertions = VerticesInsideEdges(scaled, pieces.Vertices);
+  std::vector<RingInsertion> insertions = VerticesInsideEdges(scaled, pieces.Vertices);
   if (insertions.empty())
   {
     return pieces;
   }
-  std::sort(insertions.begin(),
-    insertions.end(),
-    [](const Insertion& a, const Insertion& b)
-    { return a.Edge != b.Edge ? a.Edge < b.Edge : a.T < b.T; });
-  return WithInsertions(pieces, insertions);
+  SortAlongEdges(insertions);
+  InsertedRings shared = InsertIntoRings(pieces.RingOffsets, pieces.Vertices, insertions);
+  return { std::move(shared.Offsets), std::move(shared.Vertices) };
 }
 
 void DensifyRingSymmetrically(const Point2* ring,

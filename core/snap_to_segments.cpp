@@ -1,6 +1,7 @@
 #include "snap_to_segments.h"
 
 #include "polygon_validation.h"
+#include "ring_insertions.h"
 
 #include <algorithm>
 #include <cmath>
@@ -18,14 +19,6 @@ struct Segment
   std::size_t Ring;
   std::size_t First; ///< index of its first vertex in the caller's array
   Point2 A, B;
-};
-
-/// A vertex to put onto segment Target at parameter T (0 at its first vertex, 1 at its second).
-struct Insertion
-{
-  std::size_t Target;
-  double T;
-  Point2 Point;
 };
 
 bool Finite(const Point2& p)
@@ -204,7 +197,7 @@ CandidateSegments SegmentsNearOthers(const std::vector<std::size_t>& offsets,
 /// Every vertex of a ring near others within the tolerance of another ring's segment, in the order
 /// of the vertices and of the segments in their grid cells. Needs segments and a positive
 /// tolerance (the grid's cell is sized by them).
-std::vector<Insertion> FindInsertions(const std::vector<Point2>& vertices,
+std::vector<RingInsertion> FindInsertions(const std::vector<Point2>& vertices,
   const CandidateSegments& found,
   const std::vector<char>& nearOthers,
   double tolerance)
@@ -216,7 +209,7 @@ std::vector<Insertion> FindInsertions(const std::vector<Point2>& vertices,
     1e-300 });
   const SegmentGrid grid(found.Segments, cell, Point2{ found.Box.XMin, found.Box.YMin });
   const std::vector<std::size_t> none;
-  std::vector<Insertion> insertions;
+  std::vector<RingInsertion> insertions;
   for (std::size_t v = 0; v < vertices.size(); ++v)
   {
     const Point2& p = vertices[v];
@@ -238,37 +231,6 @@ std::vector<Insertion> FindInsertions(const std::vector<Point2>& vertices,
   return insertions;
 }
 
-/// The rings with each insertion after the first vertex of its target segment, in order of T
-/// (insertions sorted by target, then T).
-SnappedRings WithInsertions(const std::vector<std::size_t>& offsets,
-  const std::vector<Point2>& vertices,
-  const std::vector<Insertion>& insertions)
-{
-  SnappedRings out;
-  out.Offsets.push_back(0);
-  std::size_t next = 0; // the first insertion not yet placed
-  for (std::size_t r = 0; r + 1 < offsets.size(); ++r)
-  {
-    const std::size_t begin = offsets[r], end = offsets[r + 1];
-    for (std::size_t k = begin; k < end; ++k)
-    {
-      out.Vertices.push_back(vertices[k]);
-      out.SegmentOf.push_back(k - begin);
-      for (; next < insertions.size() && insertions[next].Target == k; ++next)
-      {
-        if (!(insertions[next].Point == out.Vertices.back())) // (one vertex of two rings: once)
-        {
-          out.Vertices.push_back(insertions[next].Point);
-          out.SegmentOf.push_back(k - begin);
-          ++out.Inserted;
-        }
-      }
-    }
-    out.Offsets.push_back(out.Vertices.size());
-  }
-  return out;
-}
-
 } // namespace
 
 SnappedRings SnapVerticesOntoSegments(const std::vector<std::size_t>& offsets,
@@ -279,16 +241,17 @@ SnappedRings SnapVerticesOntoSegments(const std::vector<std::size_t>& offsets,
   const std::vector<Box2> boxes = RingBoxes(offsets, vertices);
   const std::vector<char> nearOthers = RingsNearOthers(boxes, tolerance);
   const CandidateSegments found = SegmentsNearOthers(offsets, vertices, boxes, nearOthers);
-  std::vector<Insertion> insertions;
+  std::vector<RingInsertion> insertions;
   if (!found.Segments.empty() && tolerance > 0.0)
   {
     insertions = FindInsertions(vertices, found, nearOthers, tolerance);
   }
-  std::sort(insertions.begin(),
-    insertions.end(),
-    [](const Insertion& a, const Insertion& b)
-    { return a.Target != b.Target ? a.Target < b.Target : a.T < b.T; });
-  return WithInsertions(offsets, vertices, insertions);
+  SortAlongEdges(insertions);
+  InsertedRings inserted = InsertIntoRings(offsets, vertices, insertions);
+  return { std::move(inserted.Offsets),
+    std::move(inserted.Vertices),
+    std::move(inserted.SegmentOf),
+    inserted.Inserted };
 }
 
 } // namespace tessera
