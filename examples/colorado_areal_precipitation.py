@@ -91,7 +91,6 @@ import argparse
 import array
 import calendar
 import collections
-import contextlib
 import csv
 import datetime
 import itertools
@@ -1287,50 +1286,6 @@ def zip_member(path, what="catchment"):
                    f"to read: {shown or 'no files'}; unzip it and give the file")
 
 
-class GdalMessages:
-    """GDAL's messages while a GIS file is read (parse errors, "Non closed ring detected"),
-    which GDAL prints to stderr as "ERROR 1: ..." beside the script's own one-line errors: CPL_LOG,
-    set while GDAL reads, sends them to a temporary file to read back. A CPL_LOG the user set is
-    left alone (their file gets them)."""
-
-    def __init__(self):
-        import atexit
-        import tempfile
-
-        self.path, self.seen = None, 0
-        if "CPL_LOG" not in os.environ:
-            handle, self.path = tempfile.mkstemp(prefix="tessera_gdal_", suffix=".log")
-            os.close(handle)
-            atexit.register(lambda path=self.path: os.path.exists(path) and os.remove(path))
-
-    @contextlib.contextmanager
-    def capturing(self):
-        """CPL_LOG names the file while GDAL reads (GDAL opens it at its first message and keeps
-        it), and is unset after: child processes print GDAL's messages as usual."""
-        if self.path:
-            os.environ["CPL_LOG"] = self.path
-        try:
-            yield
-        finally:
-            if self.path:
-                os.environ.pop("CPL_LOG", None)
-
-    def new(self):
-        """(level, text) of each message since the last call, each once: level "ERROR" or
-        "Warning", or "" for other lines (CPL_DEBUG's)."""
-        if not self.path:
-            return []
-        with open(self.path, "rb") as f:
-            f.seek(self.seen)
-            data = f.read()
-        self.seen += len(data)
-        messages = []
-        for line in data.decode("utf-8", errors="replace").splitlines():
-            found = re.match(r"(ERROR|Warning) \d+: (.*)", line.strip())
-            messages.append((found.group(1), found.group(2).strip()) if found else ("", line.strip()))
-        return list(dict.fromkeys(m for m in messages if m[1]))
-
-
 def side_of_ring(point, ring):
     """1 inside the ring (even-odd), -1 outside, 0 on its boundary; ring an (n, 2) array."""
     import numpy as np
@@ -1412,7 +1367,7 @@ GDAL_MESSAGES = None
 def gdal_messages():
     """The script's GdalMessages, made at the first call."""
     global GDAL_MESSAGES
-    GDAL_MESSAGES = GDAL_MESSAGES or GdalMessages()
+    GDAL_MESSAGES = GDAL_MESSAGES or projected_input.GdalMessages()
     return GDAL_MESSAGES
 
 
@@ -2400,7 +2355,9 @@ def main(argv=None):
                                                          "given more than once: each month's files; default: 1963-08, "
                                                          "or the nearest month of the record where a gauge reported; "
                                                          "with daily, hourly or sub-hourly observations its first "
-                                                         "day, hour or step)")
+                                                         "day, hour or step; a month not in the record, or outside "
+                                                         "--start/--end, is an error, as is such a --day, --hour "
+                                                         "or --minute)")
     parser.add_argument("--day", action="append", help="day for the weights, tiles and map when the observations "
                                                        "give days, YYYY-MM-DD (may be given more than once; with "
                                                        "hourly observations its 00:00 hour, which for hour-ending "
@@ -2509,6 +2466,9 @@ def main(argv=None):
         sys.exit(f"--sum-to {args.sum_to}: expected a number of minutes that divides 60 (2, 3, 4, 5, 6, 10, 12, 15, "
                  "20, 30 or 60)")
     check_missing_values(args.missing_value)
+    csv_input.check_paths(("--stations", args.stations, "stations"),
+                          ("--observations", args.observations, "observations"),
+                          ("--catchment", args.catchment, "catchment"))
     asked = asked_steps(args)
     bounds = (period_bound(args.start, "--start"), period_bound(args.end, "--end"))
     check_period(*bounds, (args.start, args.end))
@@ -2518,9 +2478,10 @@ def main(argv=None):
     from vtkmodules.vtkCommonCore import vtkCommand
     from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
+    # (the options first, --stations-crs's code looked up, then --out: all before any input is read)
+    stations_system = projected_input.stations_system(args.stations_utm, args.stations_crs, gdal_messages())
     csv_input.output_directory(args.out)
     started = time.time()
-    stations_system = projected_input.stations_system(args.stations_utm, args.stations_crs, gdal_messages())
     if args.stations is None:
         args.stations = stations_path(args.observations)
         if args.observations != default_observations and args.stations != args.observations:
@@ -2554,6 +2515,7 @@ def main(argv=None):
             csv_input.fail(off_grid(option, steps, args.observations))
     # (a month is its first day or hour with daily or hourly steps; a day, its 00:00 hour)
     wanted = [(option, when, widened(when, steps.fields, False, steps.minutes)) for option, when in asked]
+    check_asked_steps(wanted, record, args.observations, (args.start, args.end))
     catchment, outline = read_catchment(args.catchment, args.feature)
     groups = polygon_groups(features_by_value(catchment, each, args.catchment), each,
                             args.catchment) if each is not None else None
@@ -2602,12 +2564,8 @@ def main(argv=None):
         average.UpdateTimeStep(steps.time(step))
         tiles = average.GetOutputDataObject(0)
         messages.check(tiles is None)
+        # (a step asked for is one of the table's (check_asked_steps); the default may be another)
         chosen = steps.of_time[tiles.GetInformation().Get(tiles.DATA_TIME_STEP())]
-        if chosen != step and option:  # (the default: the record's nearest step, unsaid)
-            where = "outside --start/--end" if step not in record.period else "not in the record"
-            # (the step as given, and the step it stands for where they differ: a month of days)
-            label = steps.text(when) + (f" ({steps.text(step)})" if when != step else "")
-            print(f"note: {label} is {where}; showing {steps.text(chosen)}", file=sys.stderr)
         if any(chosen == earlier for earlier, _, _ in shown):
             continue  # (its files are written: another option gave the same step)
         tag = steps.tag(chosen)
@@ -2644,6 +2602,37 @@ def main(argv=None):
           + f", unused_inputs.csv ({unused} input(s) not used"
           + (f", {outside_count(record.outside)} of them outside --start/--end)" if record.outside else ")")
           + (f", {by_feature} ({len(groups)} group(s) of features)" if groups else ""))
+
+
+def check_asked_steps(wanted, record, path, bound_texts):
+    """Ends the script, before the long work, for a step asked for (wanted: (the option as given,
+    the step as given, the step it stands for: a month of days is its first day)) that is not one
+    of the table's steps (record: read_observations'; path: its file): one outside --start/--end
+    (bound_texts: their values as given), or beyond the record. The filter would show its nearest
+    step in its place, and the user would get another month's weights and map than the one asked
+    for, under that month's name. The default step (option "") is the record's nearest where a
+    gauge reported (nearest_reported), and needs no check."""
+    import numpy as np
+    from vtkmodules.util.numpy_support import vtk_to_numpy
+
+    steps = record.steps
+    times = np.unique(vtk_to_numpy(record.table.GetColumnByName("time")))
+    if not len(times):
+        return
+    present = set(times.tolist())
+    first, last = steps.of_time[float(times[0])], steps.of_time[float(times[-1])]
+    for option, when, step in wanted:
+        if not option or steps.time(step) in present:
+            continue
+        # (the step as given, and the step it stands for where they differ: a month of days)
+        label = option + (f" ({steps.text(step)})" if when != step else "")
+        if record.period.given() and step not in record.period:
+            bounds = " and ".join(f"--{name} {text.strip()}" for name, text in zip(("start", "end"), bound_texts)
+                                  if text is not None)
+            csv_input.fail(f"{label}: is outside {bounds} (the {steps.noun}s averaged run from {steps.text(first)} "
+                           f"to {steps.text(last)}); give a {steps.noun} within them")
+        csv_input.fail(f"{label}: is not in the record of {path} (its {steps.noun}s run from {steps.text(first)} to "
+                       f"{steps.text(last)}); give a {steps.noun} of the record")
 
 
 def shown_mean(value):

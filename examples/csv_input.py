@@ -7,7 +7,9 @@ none may have a point (1.234 would be digit grouping: named, not read as 1.234).
 Every failure ends the script with one line naming what is wrong and where, never a traceback;
 catch_vtk_messages() and vtk_message_text() give a script the VTK filters' messages as text, so
 that it reports a value the filters reject in such a line too, not as VTK's log; output_directory()
-makes the --out directory, or says in such a line why it cannot, before any work is done.
+makes the --out directory and tries writing a file there, or says in such a line why it cannot,
+before any work is done; check_paths() names a file option given an empty path, and say_repeats()
+the records that repeat an earlier one's id or place.
 
 A module imported by the other examples (colorado_areal_precipitation.py, project_gauges.py,
 ridge_grouping.py, beside it), not a script: run, it only says so."""
@@ -19,6 +21,7 @@ import math
 import os
 import re
 import sys
+import tempfile
 
 MISSING = frozenset(("", "na", "n/a", "#n/a", "nan", "null"))  # (#N/A: Excel's)
 MISSING_TEXT = "empty, NA, N/A, #N/A, NaN or null"  # MISSING as a user writes them
@@ -483,6 +486,35 @@ def say_unplaced_rows(path, unplaced, placed, coordinates):
               f"is taken from its other rows ({total} row(s) of {len(unplaced)} station(s) so)", file=sys.stderr)
 
 
+def repeats(keys):
+    """(k, first) for each item of keys (one per record, hashable) that an earlier item equals: its
+    index and the index of the first with that key, in order."""
+    first, found = {}, []
+    for k, key in enumerate(keys):
+        earlier = first.setdefault(key, k)
+        if earlier != k:
+            found.append((k, earlier))
+    return found
+
+
+def say_repeats(path, lines, keys, what, name, noun):
+    """Says on stderr, on one line under the file's name, which records repeat an earlier record's
+    key (keys: one per record; record k, counted from 0, is on line lines[k]): what says what the
+    repeats are and what is done with them ("station id(s) are given to more than one gauge"), and
+    each is named by name(k, first) with the two records' numbers (noun: "gauge") and lines, as
+    colorado_areal_precipitation.py names gauges that share a station id: "102 (gauges 0 and 1:
+    lines 2 and 3)"; the first 20, then how many more. A repeated id or place is kept and used as
+    any other record, but said: a file's copy-and-paste slip, or two records of one place, weigh
+    in the results without a word otherwise. Returns the (k, first) pairs (repeats')."""
+    found = repeats(keys)
+    if found:
+        shown = ", ".join(f"{name(k, first)} ({noun}s {first} and {k}: lines {lines[first]} and {lines[k]})"
+                          for k, first in found[:20])
+        more = f" and {len(found) - 20} more" if len(found) > 20 else ""
+        print(f"{path}: {len(found)} {what}: {shown}{more}", file=sys.stderr)
+    return found
+
+
 def header_columns(path, what, wanted):
     """The column names of the header of the CSV file at path (what it holds: "stations") as
     header_names gives them, its separator chosen by the wanted columns as rows() chooses it; none
@@ -494,17 +526,38 @@ def header_columns(path, what, wanted):
         return set()
 
 
+def check_paths(*given):
+    """Ends the script, naming the option, for a file option given an empty path (given: (option,
+    its value or None where not given, what the file holds: "stations")): the messages of the
+    file's reading start with its path, which would leave ": no such stations file" without a name.
+    Called before any work (a path of spaces alone is taken as a slip too)."""
+    for option, path, what in given:
+        if path is not None and not path.strip():
+            fail(f"{option} {path!r}: an empty path (give the {what} file)")
+
+
 def output_directory(path):
     """Makes the directory path (--out) with its parents unless it exists; ends the script, naming
-    it and why, when it is something else (a file) or cannot be made (a file where a parent should
-    be, no permission). Called before the inputs are read, so that a bad --out is told at once, not
-    as a traceback once the work is done."""
+    it and why, when it is something else (a file), cannot be made (a file where a parent should
+    be, no permission), or is a directory where no file can be written (no permission, a read-only
+    file system, /proc). Called before the inputs are read, so that a bad --out is told at once,
+    not as a traceback once the work is done. Writing is tried (a temporary file made and removed):
+    os.access answers from the permission bits, which do not stop root, nor tell of ACLs or a
+    read-only mount."""
+    if not path.strip():
+        fail(f"--out {path!r}: an empty path (give a directory, such as out)")
     if os.path.exists(path) and not os.path.isdir(path):
         fail(f"--out {path}: exists and is not a directory")
     try:
         os.makedirs(path, exist_ok=True)
     except OSError as error:
         fail(f"--out {path}: cannot create the directory ({error.strerror or error})")
+    try:
+        handle, probe = tempfile.mkstemp(prefix=".tessera_write_test_", dir=path)
+        os.close(handle)
+        os.remove(probe)
+    except OSError as error:
+        fail(f"--out {path}: cannot write there ({error.strerror or error})")
 
 
 def write_vtk(writer, data, path):

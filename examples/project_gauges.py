@@ -14,13 +14,23 @@ coordinate system by its EPSG code or PROJ terms (as the main job's --stations-c
 tmerc, aea, lcc, laea, merc, in metres or feet), whose own numbers then come out: EPSG:5070 (NAD83 /
 Conus Albers) gives that system's eastings and northings, false origin and all.
 
+The other projections are fitted to the gauges (their centre, parallels, UTM zone), so that one
+gauge far from the rest (a lon of 200 for -160, a gauge of another country) moves them: the line
+the script prints gives the projection's parameters, and gauges far from the rest are named in a
+warning, with their lines. A gauge is far from the rest where its lon or lat lies more than
+FAR_DEGREES (5) degrees, and more than FAR_DEVIATIONS (6) times the gauges' median absolute
+deviation, from the gauges' median (lon taken across the antimeridian). A station id given to more
+than one gauge, and gauges at one place, are named too (each is projected and written).
+
 Run it with Debian's /usr/bin/python3 and PYTHONPATH pointing to build/python (scripts/demo does).
 """
 
 import argparse
 import csv
+import math
 import os
 import re
+import statistics
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -40,6 +50,64 @@ PROJECTIONS = {
     "mercator": "SetProjectionToMercator",
     "webmercator": "SetProjectionToWebMercator",
 }
+
+
+# A gauge far from the rest (far_gauges): beyond both, in lon or lat, from the gauges' median.
+FAR_DEGREES = 5.0
+FAR_DEVIATIONS = 6.0
+
+
+def wrapped(degrees):
+    """A difference of longitudes within -180 .. 180."""
+    return (degrees + 180.0) % 360.0 - 180.0
+
+
+def far_gauges(lons, lats):
+    """The indices of the gauges that lie far from the rest: their lon or lat more than FAR_DEGREES
+    and more than FAR_DEVIATIONS median absolute deviations from the gauges' median (a rule of
+    medians, which the outlying gauges themselves barely move, where a fitted projection's centre
+    moves by half their distance). Longitudes are differences from the gauges' circular mean,
+    within 180 degrees, so that gauges on both sides of the antimeridian are near one another."""
+    if len(lons) < 3:
+        return []
+    east = statistics.fmean(math.cos(math.radians(lon)) for lon in lons)
+    north = statistics.fmean(math.sin(math.radians(lon)) for lon in lons)
+    centre = math.degrees(math.atan2(north, east)) if (east, north) != (0.0, 0.0) else lons[0]
+    far = set()
+    for values in ([wrapped(lon - centre) for lon in lons], list(lats)):
+        middle = statistics.median(values)
+        off = [abs(value - middle) for value in values]
+        limit = max(FAR_DEGREES, FAR_DEVIATIONS * statistics.median(off))
+        far.update(k for k, value in enumerate(off) if value > limit)
+    return sorted(far)
+
+
+def say_far_gauges(path, gauges, lines):
+    """Warns of the gauges far from the rest (far_gauges), naming each with its line: a projection
+    fitted to the gauges takes them in, and its centre and parallels are not those of the rest."""
+    points = [gauges.GetPoint(k)[:2] for k in range(gauges.GetNumberOfPoints())]
+    far = far_gauges([lon for lon, _ in points], [lat for _, lat in points])
+    if far:
+        station = gauges.GetPointData().GetAbstractArray("StationId")
+        shown = ", ".join(f"{station.GetValue(k)} at lon {points[k][0]:.15g}, lat {points[k][1]:.15g} "
+                          f"(line {lines[k]})" for k in far[:20])
+        more = f" and {len(far) - 20} more" if len(far) > 20 else ""
+        print(f"{path}: warning: {len(far)} gauge(s) lie far from the rest (more than {FAR_DEGREES:g} degrees and "
+              f"{FAR_DEVIATIONS:g} median absolute deviations from the gauges' median lon or lat); the projection, "
+              f"fitted to all the gauges, is moved by them (a mistyped place? --crs gives a projection of its own): "
+              f"{shown}{more}", file=sys.stderr)
+
+
+def say_repeated_gauges(path, gauges, lines):
+    """Names the gauges that repeat an earlier gauge's station id or place (csv_input.say_repeats),
+    as the main job names them: each is projected and written all the same."""
+    station = gauges.GetPointData().GetAbstractArray("StationId")
+    ids = [station.GetValue(k) for k in range(gauges.GetNumberOfPoints())]
+    places = [gauges.GetPoint(k)[:2] for k in range(gauges.GetNumberOfPoints())]
+    csv_input.say_repeats(path, lines, ids, "station id(s) are given to more than one gauge (each is projected)",
+                          lambda k, first: ids[k], "gauge")
+    csv_input.say_repeats(path, lines, places, "gauge(s) stand where an earlier gauge stands (each is projected)",
+                          lambda k, first: f"{ids[k]} (same place as {ids[first]})", "gauge")
 
 
 def read_gauges(path):
@@ -93,21 +161,26 @@ def main(argv=None):
                              f"{csv_input.SEPARATORS_TEXT}")
     chosen = parser.add_mutually_exclusive_group()
     chosen.add_argument("--projection", choices=sorted(PROJECTIONS), default="automatic",
-                        help="map projection (default: automatic Albers equal-area)")
+                        help="map projection, fitted to the gauges (default: automatic Albers equal-area); "
+                             f"gauges more than {FAR_DEGREES:g} degrees and {FAR_DEVIATIONS:g} median absolute "
+                             "deviations from the gauges' median lon or lat, which move it, are named in a warning")
     chosen.add_argument("--crs", metavar="CRS",
                         help="a projected coordinate system: EPSG:CODE (such as EPSG:5070) or PROJ terms "
                              "(such as '+proj=aea +lat_0=23 +lon_0=-96 +lat_1=29.5 +lat_2=45.5 +x_0=0 +y_0=0')")
     parser.add_argument("--out", default="out", help="output directory (created if missing)")
     args = parser.parse_args(argv)
+    csv_input.check_paths(("--stations", args.stations, "stations"))
     # Imported after parsing so that --help works without VTK on the path; Tessera first, so that
     # without VTK (another Python than Debian's) this says how to run the script.
     vtkGeographicProjection = csv_input.import_tessera().vtkGeographicProjection
     from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
     system = None
-    if args.crs:
-        system = projected_input.crs_system(args.crs, "--crs", lonlat="the gauges are in it already; give a "
-                                            "projected system", datum="the gauges' lon/lat are taken as on WGS84's")
+    if args.crs is not None:  # (an empty --crs is refused by name, not taken as none given)
+        # (GdalMessages keeps GDAL's own line for an unknown code off stderr: the script names it)
+        system = projected_input.crs_system(args.crs, "--crs", projected_input.GdalMessages(),
+                                            lonlat="the gauges are in it already; give a projected system",
+                                            datum="the gauges' lon/lat are taken as on WGS84's")
     csv_input.output_directory(args.out)
     gauges, lines = read_gauges(args.stations)
     if gauges.GetNumberOfPoints() == 0:
@@ -131,6 +204,10 @@ def main(argv=None):
         csv_input.fail("the projection failed: " + re.sub(r" for request: .*", "", executive_errors[0]))
     if projected.GetNumberOfPoints() != gauges.GetNumberOfPoints():
         csv_input.fail("the projection failed and gave no message")
+    # (said once the projection has taken the gauges: a gauge it rejects is the run's one line)
+    say_repeated_gauges(args.stations, gauges, lines)
+    if not system:
+        say_far_gauges(args.stations, gauges, lines)
 
     csv_input.write_vtk(vtkXMLPolyDataWriter(), projected, os.path.join(args.out, "gauges_projected.vtp"))
     ids = projected.GetPointData().GetAbstractArray("StationId")

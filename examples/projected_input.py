@@ -18,7 +18,9 @@ another datum (NAD27, ED50, OSGB36, or Israel 1993 on GRS80 but 78 m away) is wa
 """
 
 import collections
+import contextlib
 import math
+import os
 import re
 import sys
 
@@ -257,14 +259,60 @@ def declared_system(reader, rings, path, points=False, point_name=None):
     return system
 
 
+class GdalMessages:
+    """GDAL's messages while a GIS file is read (parse errors, "Non closed ring detected") or an
+    EPSG code is looked up (crs_system: "PROJ: proj_create_from_database: crs not found"), which
+    GDAL prints to stderr as "ERROR 1: ..." beside the script's own one-line errors: CPL_LOG, set
+    while GDAL reads, sends them to a temporary file to read back. A CPL_LOG the user set is left
+    alone (their file gets them). Used by colorado_areal_precipitation.py and project_gauges.py."""
+
+    def __init__(self):
+        import atexit
+        import tempfile
+
+        self.path, self.seen = None, 0
+        if "CPL_LOG" not in os.environ:
+            handle, self.path = tempfile.mkstemp(prefix="tessera_gdal_", suffix=".log")
+            os.close(handle)
+            atexit.register(lambda path=self.path: os.path.exists(path) and os.remove(path))
+
+    @contextlib.contextmanager
+    def capturing(self):
+        """CPL_LOG names the file while GDAL reads (GDAL opens it at its first message and keeps
+        it), and is unset after: child processes print GDAL's messages as usual."""
+        if self.path:
+            os.environ["CPL_LOG"] = self.path
+        try:
+            yield
+        finally:
+            if self.path:
+                os.environ.pop("CPL_LOG", None)
+
+    def new(self):
+        """(level, text) of each message since the last call, each once: level "ERROR" or
+        "Warning", or "" for other lines (CPL_DEBUG's)."""
+        if not self.path:
+            return []
+        with open(self.path, "rb") as f:
+            f.seek(self.seen)
+            data = f.read()
+        self.seen += len(data)
+        messages = []
+        for line in data.decode("utf-8", errors="replace").splitlines():
+            found = re.match(r"(ERROR|Warning) \d+: (.*)", line.strip())
+            messages.append((found.group(1), found.group(2).strip()) if found else ("", line.strip()))
+        return list(dict.fromkeys(m for m in messages if m[1]))
+
+
 def stations_system(utm, crs, gdal_messages):
     """The PlaneSystem of a stations file of x, y: --stations-utm's ZONE[N|S] (13N, 33S; a zone
     alone is north) or --stations-crs's EPSG:CODE or PROJ terms (+proj=aea ...); None when neither
     is given. A bad value ends the script naming it. gdal_messages: the script's GdalMessages,
     which keep GDAL's own lines off stderr while an EPSG code is looked up."""
-    if utm and crs:
+    # (an empty value given is refused by name, not taken as the option left out)
+    if utm is not None and crs is not None:
         csv_input.fail("--stations-utm and --stations-crs: give one of them")
-    if utm:
+    if utm is not None:
         zone = re.fullmatch(r"([0-9]{1,2})([NnSs]?)", utm.strip())
         if not zone or not 1 <= int(zone.group(1)) <= 60:
             csv_input.fail(f"--stations-utm {utm!r}: expected a UTM zone 1 to 60 with N or S (such as 13N)")
@@ -272,7 +320,7 @@ def stations_system(utm, crs, gdal_messages):
             print(f"--stations-utm {utm}: read as zone {int(zone.group(1))}N, in the northern hemisphere (give "
                   f"{int(zone.group(1))}S for the southern)", file=sys.stderr)
         return PlaneSystem.utm(int(zone.group(1)), zone.group(2).upper() != "S")
-    if not crs:
+    if crs is None:
         return None
     return crs_system(crs, "--stations-crs", gdal_messages,
                       lonlat="give the file lon and lat columns, without --stations-crs",

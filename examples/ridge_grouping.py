@@ -18,6 +18,9 @@ file's name without its extension: your_points.csv gives your_points_groups.png,
 With --planar the file's points are plane coordinates already (columns x, y, in any one unit) and
 are grouped as they are, without a projection.
 
+A point at the place of an earlier one (the Fiji file has two such pairs: events at one rounded
+epicentre) is grouped as any other, and named with its line and the earlier one's.
+
 Run with Debian's /usr/bin/python3 and PYTHONPATH=build/python.
 """
 
@@ -123,6 +126,35 @@ def with_lines(text, path, lines):
     return re.sub(r"point(?:\(s\))? (\d+(?:, \d+)*)", lines_of, text)
 
 
+def prefix_error(prefix):
+    """Why --prefix cannot start the output files' names, or None: the files go into --out, and a
+    prefix with a path separator would put them elsewhere (../escape, outside --out) or into a
+    directory that is not there (a/b, found once the grouping is done); an empty one, . or .. is no
+    name's start."""
+    separators = sorted({os.sep, "/", os.altsep} - {None})
+    if not prefix.strip():
+        return f"--prefix {prefix!r}: an empty prefix (give the start of the files' names, such as fiji)"
+    if prefix in (".", ".."):
+        return f"--prefix {prefix!r}: is not the start of a file's name (give one such as fiji)"
+    held = [separator for separator in separators if separator in prefix]
+    if held:
+        return (f"--prefix {prefix!r}: holds the path separator {held[0]!r}; give the start of the files' names "
+                "alone (they go into --out: give the directory there)")
+    return None
+
+
+def say_repeated_points(quakes, path, lines, planar):
+    """Says the points that repeat an earlier point's place (csv_input.say_repeats): each is still
+    grouped as a point of its own, and a place given twice weighs twice in the field (the Fiji
+    file has two pairs of events at one rounded epicentre)."""
+    x, y = ("x", "y") if planar else ("lon", "lat")
+    place = [quakes.GetPoint(k)[:2] for k in range(quakes.GetNumberOfPoints())]
+    csv_input.say_repeats(path, lines, place,
+                          f"{'point(s)' if planar else 'epicentre(s)'} repeat the {x}, {y} of an earlier one (each is "
+                          "grouped, a point of its own: the place weighs as often in the field)",
+                          lambda k, first: f"{x} {place[k][0]:.15g}, {y} {place[k][1]:.15g}", "point")
+
+
 def polylines(data):
     lines = []
     for c in range(data.GetNumberOfCells()):
@@ -143,8 +175,9 @@ def main(argv=None):
                              "projection, in place of lat, lon")
     parser.add_argument("--out", default="out", help="output directory, created if missing (default: out)")
     parser.add_argument("--prefix", default=None,
-                        help="start of the output files' names (default: fiji for the Fiji file, else the input "
-                             "file's name without its extension)")
+                        help="start of the output files' names, without a path separator (the files go into "
+                             "--out; default: fiji for the Fiji file, else the input file's name without its "
+                             "extension)")
     # (why the example's settings differ from the filter's defaults)
     parser.add_argument("--width", type=float, default=4.0,
                         help="basis width in pixels, at most 1020 (default %(default)s; the filter's is 5, which "
@@ -163,6 +196,10 @@ def main(argv=None):
     parser.add_argument("--gaussian", action="store_true", help="Gaussian basis instead of inverse multiquadric")
     parser.add_argument("--closest-tangent", action="store_true", help="closest-tangent join rule")
     args = parser.parse_args(argv)
+    # (what is wrong with the options is said before any work: the grouping takes seconds)
+    if args.prefix is not None and prefix_error(args.prefix):
+        csv_input.fail(prefix_error(args.prefix))
+    csv_input.check_paths(("--quakes", args.quakes, "points" if args.planar else "epicentres"))
 
     # Tessera first: without VTK (another Python than Debian's) this says how to run the script.
     tessera = csv_input.import_tessera()
@@ -174,6 +211,8 @@ def main(argv=None):
     if quakes.GetNumberOfPoints() == 0:
         csv_input.fail(f"{args.quakes}: no {'points' if args.planar else 'epicentres'} to group (the file has no rows)")
     grouped = quakes if args.planar else projected(quakes, args.quakes, lines, vtkGeographicProjection)
+    # (said once the projection has taken the epicentres: one it rejects is the run's one line)
+    say_repeated_points(quakes, args.quakes, lines, args.planar)
     errors = []
     grouping = vtkRidgeGrouping()
     csv_input.catch_vtk_messages(grouping, lambda text: errors.append(grouping_error(text)),
@@ -196,7 +235,8 @@ def main(argv=None):
         csv_input.fail("ridge grouping failed and gave no message")
 
     fiji = os.path.abspath(args.quakes) == os.path.abspath(DEFAULT_QUAKES)
-    prefix = args.prefix or ("fiji" if fiji else os.path.splitext(os.path.basename(args.quakes))[0])
+    prefix = args.prefix if args.prefix is not None else (
+        "fiji" if fiji else os.path.splitext(os.path.basename(args.quakes))[0])
     names = {part: f"{prefix}_{part}" for part in ("groups.png", "points.vtp", "contours.vtp", "curves.vtp",
                                                    "field.vti")}
     for port, part in ((0, "points.vtp"), (1, "contours.vtp"), (2, "curves.vtp")):

@@ -932,10 +932,13 @@ def test_daily_observations_give_daily_means():
         assert_that(f"{stamped}: every date is day 1 of its month; if these are monthly values" in stderr
                     and "note:" not in stderr, f"month starts: {stderr}")
         ends = write(directory, "ends.csv", "station_id,date,precip\nN1,2001-01-31,1\nN2,2001-02-28,2\n")
+        # A day asked for that the record does not have is an error naming it, not another day shown.
         _, stderr = run_colorado(os.path.join(directory, "ends"), stations=stations, observations=ends,
-                                 catchment=catchment, what="month ends", plots=False, day="2001-03-01")
+                                 catchment=catchment, what="month ends", plots=False, day="2001-03-01", status=1)
         assert_that("every date is the last day of its month" in stderr
-                    and "note: 2001-03-01 is not in the record; showing 2001-02-28" in stderr, f"month ends: {stderr}")
+                    and f"--day 2001-03-01: is not in the record of {ends} (its days run from 2001-01-31 to "
+                    "2001-02-28)" in stderr and "note:" not in stderr and "Traceback" not in stderr,
+                    f"month ends: {stderr}")
 
 
 def outside_lines(runs):
@@ -987,9 +990,14 @@ def test_start_and_end_choose_the_period():
             assert_that(len(runs) == (1 if start == "1894-11" else 2), f"{start} to {end}: the runs {runs}")
             assert_that(f"{len(outside)} observation(s) outside --start/--end are not used" in stderr, stderr)
             assert_that(f"{len(outside)} of them outside --start/--end)" in stdout, stdout)
-        _, stderr = run_colorado(os.path.join(directory, "later"), "--start", "1960-03", "--end", "1961-02",
-                                 month="1970-05", plots=False, what="a month after the period")
-        assert_that("note: 1970-05 is outside --start/--end; showing 1961-02" in stderr, stderr)
+        # A month asked for outside the period is an error naming both, before the long work (no
+        # output written), not another month's files.
+        later = os.path.join(directory, "later")
+        _, stderr = run_colorado(later, "--start", "1960-03", "--end", "1961-02", month="1970-05", plots=False,
+                                 what="a month after the period", status=1)
+        assert_that("--month 1970-05: is outside --start 1960-03 and --end 1961-02 (the months averaged run from "
+                    "1960-03 to 1961-02)" in stderr and "showing" not in stderr and "Traceback" not in stderr
+                    and os.listdir(later) == [], f"a month after the period: {stderr} {os.listdir(later)}")
 
         # Daily observations: a month given is its first or last day; a day is a day.
         days = {(2001, 1, 30): {"N1": 1.5, "N2": 2.5}, (2001, 2, 1): {"N1": 3.0, "N4": 1.25},
@@ -1022,8 +1030,9 @@ def test_start_and_end_choose_the_period():
         # A month given for days is named as given, with the day it stands for.
         _, stderr = run_colorado(os.path.join(directory, "daily_month"), stations=stations, observations=daily,
                                  catchment=catchment, plots=False, what="--month of days", start="2001-02",
-                                 month="2001-01")
-        assert_that("note: 2001-01 (2001-01-01) is outside --start/--end; showing 2001-02-01" in stderr, stderr)
+                                 month="2001-01", status=1)
+        assert_that("--month 2001-01 (2001-01-01): is outside --start 2001-02 (the days averaged run from 2001-02-01 "
+                    "to 2001-02-02)" in stderr, stderr)
 
         # Missing and negative values outside the period are not counted as read: only inside.
         odd = write(directory, "odd.csv", "station_id,date,precip\nN1,2001-01-30,NA\nN2,2001-01-30,-5\n"
@@ -1193,7 +1202,8 @@ def test_an_earlier_runs_files_in_out_are_named():
 def test_several_days_get_the_files_each_gets_alone():
     # --day given twice writes each day's weights, tiles and map as a run for that day alone does
     # (the same bytes), says each day's line as that run does, and lists both days' files; a day
-    # given twice, or one whose nearest day of the record is another given day, is written once.
+    # given twice is written once, and a day the record does not have is an error naming it (the
+    # record's nearest day, shown in its place, gave files of another day than the one asked for).
     days = {(2001, 1, 30): {"N1": 1.5, "N2": 2.5}, (2001, 2, 1): {"N1": 3.0, "N4": 1.25},
             (2001, 2, 2): {"N2": 0.5, "N3": 7.0}}
     with tempfile.TemporaryDirectory() as directory:
@@ -1206,7 +1216,7 @@ def test_several_days_get_the_files_each_gets_alone():
             stdout, _ = run_colorado(out, plots=True, day=day, what=f"{day} alone", **common)
             alone[day] = (out, stdout.splitlines())
         both = os.path.join(directory, "both")
-        stdout, stderr = run_colorado(both, "--day", "2001-02-02", "--day", "2001-01-30", "--day", "2002-01-01",
+        stdout, stderr = run_colorado(both, "--day", "2001-02-02", "--day", "2001-01-30",
                                       plots=True, day="2001-01-30", what="three days", **common)
         lines = stdout.splitlines()
         for day, (out, said) in alone.items():
@@ -1215,7 +1225,10 @@ def test_several_days_get_the_files_each_gets_alone():
                 with open(os.path.join(out, name), "rb") as a, open(os.path.join(both, name), "rb") as b:
                     assert_that(a.read() == b.read(), f"{name}: differs from the run for {day} alone")
             assert_that(said[1] in lines, f"{day}: {said[1]!r} not in {lines}")
-        assert_that("note: 2002-01-01 is not in the record; showing 2001-02-02" in stderr, stderr)
+        _, refused = run_colorado(os.path.join(directory, "beyond"), "--day", "2002-01-01", plots=False,
+                                  day="2001-01-30", what="a day beyond the record", status=1, **common)
+        assert_that(f"--day 2002-01-01: is not in the record of {daily} (its days run from 2001-01-30 to "
+                    "2001-02-02); give a day of the record" in refused and "Traceback" not in refused, refused)
         assert_that(len(lines) == 4 and [line[:10] for line in lines[1:3]] == ["2001-01-30", "2001-02-02"]
                     and "weights_2001_01_30.csv, tiles_2001_01_30.vtp, tiles_2001_01_30.geojson, weights_2001_02_02.csv, "
                     "tiles_2001_02_02.vtp, tiles_2001_02_02.geojson, "
@@ -3565,6 +3578,205 @@ def test_without_tessera_on_the_path_the_scripts_say_how_to_run():
                         and "Traceback" not in done.stderr, f"{script} without VTK: {done.returncode} {done.stderr}")
 
 
+def test_a_month_asked_for_is_never_another_month():
+    # From a tester's report: --month 2050-01 (not in the record) wrote 1997-12's weights, tiles and
+    # map under a note, exit status 0, and so did a month outside --start/--end. A step asked for is
+    # now an error naming it and the steps there are, said once the observations are read, before
+    # the long work (nothing is written); the default month still chooses the record's nearest.
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, observations = write_lake_basin(directory)
+        common = {"stations": stations, "observations": observations, "catchment": catchment}
+        for options, expected in (
+                ({"month": "2050-01"}, f"--month 2050-01: is not in the record of {observations} (its months run "
+                                       "from 2001-01 to 2001-02); give a month of the record"),
+                ({"month": "2000-12"}, f"--month 2000-12: is not in the record of {observations}"),
+                ({"month": "2001-01", "start": "2001-02"}, "--month 2001-01: is outside --start 2001-02 (the months "
+                                                          "averaged run from 2001-02 to 2001-02); give a month within "
+                                                          "them")):
+            out = os.path.join(directory, "out_" + "_".join(options.values()))
+            _, stderr = run_colorado(out, plots=False, status=1, what=f"{options}", **common, **options)
+            assert_that(stderr_messages(stderr)[-1].startswith(expected) and "showing" not in stderr
+                        and "Traceback" not in stderr, f"{options}: expected {expected!r}, got {stderr!r}")
+            assert_that(os.listdir(out) == [], f"{options}: wrote {os.listdir(out)}")
+        # Both --month values are checked, the good one first not shown alone.
+        out = os.path.join(directory, "two")
+        _, stderr = run_colorado(out, "--month", "2001-02", "--month", "1999-01", plots=False, status=1,
+                                 what="a good and a bad month", **common)
+        assert_that("--month 1999-01: is not in the record" in stderr and os.listdir(out) == [], stderr)
+        # Without --month: the record's month nearest 1963-08 where a gauge reported, no note.
+        stdout, stderr = run_colorado(os.path.join(directory, "default"), plots=False, what="the default", **common)
+        assert_that("2001-01: areal mean" in stdout and "note:" not in stderr, f"{stdout} {stderr}")
+        # The tester's runs on the Colorado record: the error comes after the reading, before the
+        # 1236 months are averaged.
+        for arguments, expected in ((("--month", "2050-01"),
+                                     "--month 2050-01: is not in the record of "
+                                     f"{os.path.join(EXAMPLE_DATA, 'colorado_monthly_precip.csv')} (its months run "
+                                     "from 1895-01 to 1997-12)"),
+                                    (("--month", "1963-08", "--start", "1990-01", "--end", "1991-01"),
+                                     "--month 1963-08: is outside --start 1990-01 and --end 1991-01 (the months "
+                                     "averaged run from 1990-01 to 1991-01)")):
+            out = os.path.join(directory, "colorado")
+            _, stderr = run_colorado(out, *arguments, plots=False, status=1, what=" ".join(arguments))
+            assert_that(stderr_messages(stderr)[-1].startswith(expected) and "Thiessen areal means" not in stderr,
+                        f"{arguments}: expected {expected!r}, got {stderr!r}")
+
+
+def test_an_out_directory_that_takes_no_file_is_named_before_any_work():
+    # From a tester's report: an --out directory that exists but takes no file was named only
+    # when the first output was written, after all the work. Each script now tries a file there
+    # before reading its inputs (a missing input file shows that nothing was read first). Root
+    # writes into a directory without write permission, so the case that stops everyone is /proc
+    # (no file can be made there); a read-only directory is tried where the tests do not run as root.
+    with tempfile.TemporaryDirectory() as directory:
+        missing = os.path.join(directory, "missing.csv")
+        outs = []
+        if os.path.isdir("/proc"):
+            outs.append("/proc")
+        if os.geteuid() != 0:
+            locked = os.path.join(directory, "locked")
+            os.makedirs(locked)
+            os.chmod(locked, 0o555)
+            outs.append(locked)
+        for out in outs:
+            for script, inputs in (("colorado_areal_precipitation.py", ("--stations", missing)),
+                                   ("ridge_grouping.py", ("--quakes", missing)),
+                                   ("project_gauges.py", ("--stations", missing))):
+                status, stdout, stderr = run_example(script, "--out", out, *inputs)
+                what = f"{script} --out {out}"
+                assert_that(status == 1 and len(stderr.splitlines()) == 1
+                            and stderr.startswith(f"--out {out}: cannot write there (") and not stdout,
+                            f"{what}: status {status}, {stderr!r}")
+        if os.geteuid() != 0:
+            assert_that(os.listdir(locked) == [], f"left in the locked directory: {os.listdir(locked)}")
+        # An empty --out is named as such (it was "cannot create the directory").
+        status, _, stderr = run_example("project_gauges.py", "--out", "")
+        assert_that(status == 1 and stderr.strip() == "--out '': an empty path (give a directory, such as out)",
+                    f"--out '': {status} {stderr!r}")
+        # A directory that takes files: the probe leaves nothing behind.
+        out = os.path.join(directory, "fine")
+        status, _, stderr = run_example("project_gauges.py", "--out", out)
+        assert_that(status == 0 and sorted(os.listdir(out)) == ["gauges_projected.csv", "gauges_projected.vtp"],
+                    f"{status} {stderr} {os.listdir(out)}")
+
+
+def test_empty_option_values_are_named():
+    # From a tester's report: an empty --crs, --stations-crs or --stations-utm was taken as the
+    # option left out, and an empty file path gave ": no such catchment file", naming nothing. Each
+    # is now one line naming the option, before any work (no --out is made).
+    with tempfile.TemporaryDirectory() as directory:
+        out = os.path.join(directory, "out")
+        cases = [
+            ("project_gauges.py", ("--crs", ""), "--crs '': expected EPSG:CODE (such as EPSG:5070) or PROJ terms"),
+            ("project_gauges.py", ("--crs", " "), "--crs ' ': expected EPSG:CODE"),
+            ("colorado_areal_precipitation.py", ("--stations-crs", ""), "--stations-crs '': expected EPSG:CODE"),
+            ("colorado_areal_precipitation.py", ("--stations-utm", ""),
+             "--stations-utm '': expected a UTM zone 1 to 60 with N or S"),
+            ("colorado_areal_precipitation.py", ("--stations-utm", "", "--stations-crs", "EPSG:5070"),
+             "--stations-utm and --stations-crs: give one of them"),
+            ("colorado_areal_precipitation.py", ("--catchment", ""),
+             "--catchment '': an empty path (give the catchment file)"),
+            ("colorado_areal_precipitation.py", ("--stations", ""),
+             "--stations '': an empty path (give the stations file)"),
+            ("colorado_areal_precipitation.py", ("--observations", ""),
+             "--observations '': an empty path (give the observations file)"),
+            ("ridge_grouping.py", ("--quakes", ""), "--quakes '': an empty path (give the epicentres file)"),
+            ("ridge_grouping.py", ("--quakes", "", "--planar"), "--quakes '': an empty path (give the points file)"),
+            ("project_gauges.py", ("--stations", ""), "--stations '': an empty path (give the stations file)"),
+        ]
+        for script, arguments, expected in cases:
+            status, stdout, stderr = run_example(script, "--out", out, *arguments)
+            what = f"{script} {arguments}"
+            assert_that(status == 1 and len(stderr.splitlines()) == 1 and stderr.startswith(expected)
+                        and not stdout, f"{what}: expected one line starting {expected!r}, got {status} {stderr!r}")
+            assert_that(not os.path.exists(out), f"{what}: made --out before the option was checked")
+
+
+def test_project_gauges_names_an_unknown_epsg_code_alone():
+    # From a tester's report: GDAL's own "ERROR 1: PROJ: proj_create_from_database: crs not found"
+    # came before the script's line; it goes to the script's GDAL log now, as in the main job.
+    with tempfile.TemporaryDirectory() as out:
+        status, stdout, stderr = run_example("project_gauges.py", "--out", out, "--crs", "EPSG:99999")
+        assert_that(status == 1 and stderr.splitlines() == ["--crs 'EPSG:99999': GDAL's database has no such EPSG "
+                                                            "code"] and not stdout, f"{status} {stderr!r}")
+        assert_that("CPL_LOG" not in os.environ, "CPL_LOG set in the tests' environment")
+
+
+def test_ridge_grouping_refuses_a_prefix_that_is_not_a_names_start():
+    # From a tester's report: --prefix a/b ran the whole grouping and then failed to write, and
+    # --prefix ../escape wrote the files beside --out, not into it. A prefix with a path separator,
+    # or one that is empty, . or .., is refused at the start, nothing written anywhere.
+    with tempfile.TemporaryDirectory() as directory:
+        out = os.path.join(directory, "out")
+        separators = sorted({os.sep, "/", os.altsep} - {None})
+        cases = [(f"a{separators[0]}b", "holds the path separator"), ("../escape", "holds the path separator"),
+                 ("", "an empty prefix"), (".", "is not the start of a file's name"),
+                 ("..", "is not the start of a file's name")]
+        for prefix, fragment in cases:
+            status, stdout, stderr = run_example("ridge_grouping.py", "--out", out, "--prefix", prefix)
+            assert_that(status == 1 and len(stderr.splitlines()) == 1
+                        and stderr.startswith(f"--prefix {prefix!r}: {fragment}") and not stdout,
+                        f"--prefix {prefix!r}: {status} {stderr!r}")
+            assert_that(os.listdir(directory) == [], f"--prefix {prefix!r}: wrote {os.listdir(directory)}")
+
+
+def test_repeated_points_and_gauges_are_named_with_their_lines():
+    # From a tester's report: ridge_grouping.py and project_gauges.py said nothing of repeated
+    # epicentres, of a station id given twice, or of gauges at one place. Each is named now, as the
+    # main job names a shared station id ("102 (gauges 0 and 1: lines 2 and 3)"), and still used as
+    # before: the Fiji file's two repeated epicentres are grouped, all 1000 points in the output.
+    fiji = os.path.join(EXAMPLE_DATA, "fiji_quakes.csv")
+    with tempfile.TemporaryDirectory() as out:
+        status, _, stderr = run_example("ridge_grouping.py", "--out", out)
+        expected = (f"{fiji}: 2 epicentre(s) repeat the lon, lat of an earlier one (each is grouped, a point of its "
+                    "own: the place weighs as often in the field): lon 181.2, lat -21.04 (points 326 and 394: lines "
+                    "328 and 396), lon 181.5, lat -17.9 (points 149 and 779: lines 151 and 781)")
+        assert_that(status == 0 and expected in stderr.splitlines(), f"ridge_grouping.py: {stderr}")
+        points = read_polydata(os.path.join(out, "fiji_points.vtp"))
+        assert_that(points.GetNumberOfPoints() == 1000, f"{points.GetNumberOfPoints()} points grouped")
+        stations = write(out, "repeated.csv", "station_id,lon,lat\nA,-105,39\nB,-104,40\n\nA,-103,38\nC,-104,40\n"
+                         "D,-104.5,39.5\n")
+        status, _, stderr = run_example("project_gauges.py", "--out", out, "--stations", stations)
+        assert_that(status == 0 and stderr.splitlines() == [
+            f"{stations}: 1 station id(s) are given to more than one gauge (each is projected): A (gauges 0 and 2: "
+            "lines 2 and 5)",
+            f"{stations}: 1 gauge(s) stand where an earlier gauge stands (each is projected): C (same place as B) "
+            "(gauges 1 and 3: lines 3 and 6)"], f"project_gauges.py: {stderr!r}")
+        projected = read_csv(os.path.join(out, "gauges_projected.csv"))
+        assert_that([r["station_id"] for r in projected] == ["A", "B", "A", "C", "D"], f"{projected}")
+
+
+def test_project_gauges_names_gauges_far_from_the_rest():
+    # From a tester's report: one gauge at lon 200 (for -160), or one in Germany among the Colorado
+    # gauges, moved the automatic projection's central meridian by 25 to 55 degrees without a word.
+    # The projection's line gives its parameters, and a warning names such gauges with their
+    # lines; the Colorado file alone, and a projection given by --crs, get no warning.
+    stations = os.path.join(EXAMPLE_DATA, "colorado_stations.csv")
+    with open(stations) as f:
+        colorado = f.read()
+    with tempfile.TemporaryDirectory() as out:
+        status, stdout, stderr = run_example("project_gauges.py", "--out", out)
+        assert_that(status == 0 and "far from the rest" not in stderr and "lon0=-105.25" in stdout,
+                    f"{stdout} {stderr}")
+        for name, row, shown in (("pacific", "X1,Far,200,39,1000", "X1 at lon 200, lat 39 (line 378)"),
+                                 ("germany", "X2,Kassel,9.5,51.3,160", "X2 at lon 9.5, lat 51.3 (line 378)")):
+            path = write(out, f"{name}.csv", colorado + row + "\n")
+            status, stdout, stderr = run_example("project_gauges.py", "--out", out, "--stations", path)
+            warning = [line for line in stderr.splitlines() if "far from the rest" in line]
+            assert_that(status == 0 and len(warning) == 1 and warning[0].startswith(f"{path}: warning: 1 gauge(s) lie "
+                                                                                    "far from the rest")
+                        and warning[0].endswith(shown) and "projected 377 gauges with projection=AlbersEqualArea"
+                        in stdout, f"{name}: {stdout} {stderr}")
+            status, _, stderr = run_example("project_gauges.py", "--out", out, "--stations", path, "--crs", "EPSG:5070")
+            assert_that(status == 0 and "far from the rest" not in stderr, f"{name} with --crs: {stderr}")
+        # Gauges spread evenly over a continent are not far from one another.
+        spread = write(out, "spread.csv", "station_id,lon,lat\n" + "".join(
+            f"S{k},{-124 + 0.5 * k},{25 + 0.2 * k}\n" for k in range(120)))
+        status, _, stderr = run_example("project_gauges.py", "--out", out, "--stations", spread)
+        assert_that(status == 0 and "far from the rest" not in stderr, f"spread: {stderr}")
+        status, stdout, _ = run_example("project_gauges.py", "--help")
+        assert_that("median absolute deviations" in " ".join(stdout.split()), f"--help: {stdout}")
+
+
 if __name__ == "__main__":
     run([test_utm_gauges_across_the_equator_give_the_lon_lat_means,
          test_catchment_features_without_geometry_or_crossing_holes_are_named_as_such, test_the_colorado_main_job, test_missing_values_keep_their_months, test_bad_files_are_named,
@@ -3617,4 +3829,11 @@ if __name__ == "__main__":
          test_every_script_takes_help,
          test_the_shell_scripts_take_help_anywhere_before_any_work,
          test_every_benchmark_says_what_it_measures,
-         test_without_tessera_on_the_path_the_scripts_say_how_to_run])
+         test_without_tessera_on_the_path_the_scripts_say_how_to_run,
+         test_a_month_asked_for_is_never_another_month,
+         test_an_out_directory_that_takes_no_file_is_named_before_any_work,
+         test_empty_option_values_are_named,
+         test_project_gauges_names_an_unknown_epsg_code_alone,
+         test_ridge_grouping_refuses_a_prefix_that_is_not_a_names_start,
+         test_repeated_points_and_gauges_are_named_with_their_lines,
+         test_project_gauges_names_gauges_far_from_the_rest])
