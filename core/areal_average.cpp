@@ -1793,7 +1793,8 @@ void ThiessenArealAverage::State::RebuildFromWanted()
 
 // Weights of every reporting gauge from the cached areas (current for all of them), ascending:
 // the gauges both used and with a positive area, read off their bitmaps a word at a time; and the
-// step's mean.
+// step's mean. The lists are filled in one pass, as the weights are summed: sized first, they were
+// written twice (resize's zeros, then the values: 0.7 MB more per step among 100k gauges).
 void ThiessenArealAverage::State::Weigh(const std::vector<double>& values, ArealStep& step) const
 {
   std::size_t count = 0;
@@ -1801,28 +1802,24 @@ void ThiessenArealAverage::State::Weigh(const std::vector<double>& values, Areal
   {
     count += static_cast<std::size_t>(SetBitCount(this->WantedBits[w] & this->PositiveArea[w]));
   }
-  step.Gauges.resize(count);
-  std::size_t k = 0;
+  step.Gauges.reserve(count);
+  step.Weights.reserve(count);
+  step.AreasM2.reserve(count);
+  double weighted = 0.0, weightSum = 0.0;
   for (std::size_t w = 0; w < this->WantedBits.size(); ++w)
   {
     for (std::uint64_t word = this->WantedBits[w] & this->PositiveArea[w]; word != 0;
          word &= word - 1)
     {
-      step.Gauges[k++] = static_cast<std::int32_t>(64 * w + LowestSetBit(word));
+      const std::int32_t g = static_cast<std::int32_t>(64 * w + LowestSetBit(word));
+      const double area = this->CachedArea[g];
+      const double weight = area / this->CatchmentArea;
+      step.Gauges.push_back(g);
+      step.Weights.push_back(weight);
+      step.AreasM2.push_back(area);
+      weighted += weight * values[g];
+      weightSum += weight;
     }
-  }
-  step.Weights.resize(count);
-  step.AreasM2.resize(count);
-  double weighted = 0.0, weightSum = 0.0;
-  for (k = 0; k < count; ++k)
-  {
-    const std::int32_t g = step.Gauges[k];
-    const double area = this->CachedArea[g];
-    const double weight = area / this->CatchmentArea;
-    step.Weights[k] = weight;
-    step.AreasM2[k] = area;
-    weighted += weight * values[g];
-    weightSum += weight;
   }
   step.StationsWeighted = static_cast<int>(step.Gauges.size());
   step.CoveredFraction = weightSum;

@@ -191,9 +191,16 @@ std::int32_t InteriorTile(const Tess& tess,
 {
   const auto& org = tess.Origin();
   const std::size_t n = ring.size();
-  // The start, and whether every face is real and inside (each is on the right of some edge):
-  // first, so that the vertices are then written in their final order (no rotation).
-  std::size_t first = n;
+  // One pass round the ring: whether every face is real and inside (each is on the right of some
+  // edge), the vertices from ring[0] on, and the start, to which they are then rotated. (A pass
+  // for the start and a second writing from it looked every face up twice: a tenth of the cost
+  // of an update's local tiles.)
+  polygon.resize(n);
+  if (labels)
+  {
+    labels->resize(n);
+  }
+  std::size_t first = n, firstSide = 0, sides = 0;
   std::int32_t previous = faces.Label(ring[n - 1] / 3); // the face right of ring[0]
   for (std::size_t k = 0; k < n; ++k)
   {
@@ -204,36 +211,18 @@ std::int32_t InteriorTile(const Tess& tess,
     }
     if (label != previous)
     {
-      if (!faces.View(previous).Inside)
+      // The tile edge along ring[k] starts at the centre on its right.
+      const FaceView right = faces.View(previous);
+      if (!right.Inside)
       {
         return 0;
       }
       if (first == n || org[Tess::Next(ring[k])] < org[Tess::Next(ring[first])])
       {
         first = k;
+        firstSide = sides;
       }
-    }
-    previous = label;
-  }
-  if (first == n)
-  {
-    return 0;
-  }
-  polygon.resize(n);
-  if (labels)
-  {
-    labels->resize(n);
-  }
-  std::size_t sides = 0;
-  std::size_t k = first;
-  previous = faces.Label(ring[k == 0 ? n - 1 : k - 1] / 3);
-  for (std::size_t step = 0; step < n; ++step)
-  {
-    const std::int32_t label = faces.Label(ring[k] / 3);
-    if (label != previous)
-    {
-      // The tile edge along ring[k] starts at the centre on its right.
-      polygon[sides] = faces.View(previous).Centre;
+      polygon[sides] = right.Centre;
       if (labels)
       {
         (*labels)[sides] = previous;
@@ -241,7 +230,15 @@ std::int32_t InteriorTile(const Tess& tess,
       ++sides;
     }
     previous = label;
-    k = k + 1 == n ? 0 : k + 1;
+  }
+  if (first == n)
+  {
+    return 0;
+  }
+  std::rotate(polygon.begin(), polygon.begin() + firstSide, polygon.begin() + sides);
+  if (labels)
+  {
+    std::rotate(labels->begin(), labels->begin() + firstSide, labels->begin() + sides);
   }
   polygon.resize(sides);
   if (!labels)
