@@ -1794,7 +1794,8 @@ void ThiessenArealAverage::State::RebuildFromWanted()
 // Weights of every reporting gauge from the cached areas (current for all of them), ascending:
 // the gauges both used and with a positive area, read off their bitmaps a word at a time; and the
 // step's mean. The lists are filled in one pass, as the weights are summed: sized first, they were
-// written twice (resize's zeros, then the values: 0.7 MB more per step among 100k gauges).
+// written twice (resize's zeros, then the values: 0.7 MB more per step among 100k gauges). They
+// are appended to: step is Step's fresh result, its lists empty.
 void ThiessenArealAverage::State::Weigh(const std::vector<double>& values, ArealStep& step) const
 {
   std::size_t count = 0;

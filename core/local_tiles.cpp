@@ -118,7 +118,8 @@ public:
     // in the synthetic 100k-gauge updates), so that the lists are not copied as they grow (their
     // reallocations took 4% of an update's instructions, and a third of its writes that missed a
     // simulated 2 MB cache).
-    const std::size_t faces = 4 * tilesExpected;
+    // (Never more than the triangles: a tessellation has some 2 faces per point.)
+    const std::size_t faces = std::min(4 * tilesExpected, tess.Origin().size() / 3);
     this->Entries.reserve(faces);
     this->EntryOf.Reserve(faces);
   }
@@ -205,23 +206,21 @@ public:
         }
       }
     }
+    if (this->Cluster.size() == 1)
+    {
+      this->ResolveTriangle(t); // (t is marked Pending: set again to its entry there)
+      return;
+    }
     Entry entry;
     entry.Label = *std::min_element(this->Cluster.begin(), this->Cluster.end());
     entry.PointStart = std::int32_t(this->Points.size());
-    if (this->Cluster.size() == 1)
+    for (const std::int32_t s : this->Cluster)
     {
-      this->AppendPointsOf(t);
+      this->AppendPointsOf(s);
     }
-    else
-    {
-      for (const std::int32_t s : this->Cluster)
-      {
-        this->AppendPointsOf(s);
-      }
-      std::sort(this->Points.begin() + entry.PointStart, this->Points.end());
-      this->Points.erase(std::unique(this->Points.begin() + entry.PointStart, this->Points.end()),
-        this->Points.end());
-    }
+    std::sort(this->Points.begin() + entry.PointStart, this->Points.end());
+    this->Points.erase(
+      std::unique(this->Points.begin() + entry.PointStart, this->Points.end()), this->Points.end());
     entry.PointCount = std::int32_t(this->Points.size()) - entry.PointStart;
     if (this->WantCentres)
     {
@@ -239,9 +238,9 @@ public:
   }
 
 private:
-  /// Resolve's case without co-circular triangles: the face is t alone, labelled t (the same
-  /// entry the general case makes for a cluster of one, without its lists: this runs for every
-  /// face of every tile derived).
+  /// A face that is triangle t alone (Resolve's case without co-circular triangles, and a cluster
+  /// of one): labelled t, its points read from t itself (this runs for every face of every tile
+  /// derived).
   void ResolveTriangle(std::int32_t t)
   {
     Entry entry;
@@ -326,8 +325,8 @@ void FindVertexEdgesByScan(const Tess& tess,
 
 // Sets the edge of every later occurrence of an id in ids to -1 (found: an entry per id, in the
 // order of ids). Repeats are found by sorting the ids (a table of the points cost O(points) a
-// call, however few ids were asked for), unless they ascend: the areal average's updates ask
-// for sorted, distinct ids, and sorting them again took 3% of an update's instructions.
+// call, however few ids were asked for), unless they strictly ascend: the areal average's updates
+// ask for sorted, distinct ids, and sorting them again took 3% of an update's instructions.
 void DropLaterRepeats(const std::vector<std::int32_t>& ids,
   std::vector<std::pair<std::int32_t, std::int32_t>>& found)
 {

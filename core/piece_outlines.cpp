@@ -208,12 +208,13 @@ bool RingInside(const Point2* a, std::size_t countA, const Point2* b, std::size_
   return false; // (every vertex on b: a and b are one path)
 }
 
-/// Ring r of rings: where it starts, and its size.
+/// Where ring r of rings starts.
 const Point2* RingAt(const ClippedRings& rings, std::size_t r)
 {
   return &rings.Vertices[rings.RingOffsets[r]];
 }
 
+/// How many vertices ring r of rings has.
 std::size_t RingSize(const ClippedRings& rings, std::size_t r)
 {
   return rings.RingOffsets[r + 1] - rings.RingOffsets[r];
@@ -239,7 +240,7 @@ struct BoundingLoops
   std::vector<Box2> Boxes;
 };
 
-BoundingLoops SortOutersAndHoles(const ClippedRings& loops)
+BoundingLoops ClassifyLoops(const ClippedRings& loops)
 {
   const std::size_t count = loops.RingOffsets.size() - 1;
   BoundingLoops sorted;
@@ -310,7 +311,7 @@ std::vector<std::vector<std::size_t>> HolesByHolder(const ClippedRings& loops,
 RegionOutlines OutlinesOfPieces(const ClippedRings& pieces, std::size_t first, std::size_t last)
 {
   const ClippedRings loops = LoopsOf(ChainedRings(BoundaryEdges(pieces, first, last)));
-  const BoundingLoops sorted = SortOutersAndHoles(loops);
+  const BoundingLoops sorted = ClassifyLoops(loops);
   const std::vector<std::vector<std::size_t>> holesOf = HolesByHolder(loops, sorted);
   // Outer rings in the order found: ChainedRings starts each ring at its lowest unused edge.
   RegionOutlines out;

@@ -177,7 +177,7 @@ inline void CollectRing(const Tess& tess, std::int32_t vertexEdge, std::vector<s
 ///         |    /    |           edge v-d: A on both sides, no side
 ///         a--v------b
 ///
-/// Returns the number of sides (the ring edges that are not diagonals), or 0, polygon
+/// Returns the number of sides (the ring edges that are not diagonals), or 0, polygon and labels
 /// unspecified, for any other point. With labels, also gives the face of each polygon vertex, and
 /// appends to sameCentre the (kept, dropped) faces of each dropped repeat: distinct faces whose
 /// rounded centres coincide.

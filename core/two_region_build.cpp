@@ -183,7 +183,7 @@ struct DirichletTessellation::TwoRegionBuild
   }
 
   void SplitAtSeam();
-  void SortSampleTriangles();
+  void FindTriangleOwners();
   void AllotSlots();
   void InsertSides();
   void InsertSide(std::size_t side);
@@ -216,7 +216,7 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first,
   }
   TwoRegionBuild build(*this, first, end, box);
   build.SplitAtSeam();
-  build.SortSampleTriangles();
+  build.FindTriangleOwners();
   build.AllotSlots();
   build.InsertSides();
   build.Join();
@@ -288,7 +288,7 @@ bool DirichletTessellation::TwoRegionBuild::OwnedBy(const Region& region, std::i
 // Which region owns each sample triangle, and which triangles straddle the seam, before anything
 // else changes: their edges are legalized after the regions (Join). (A point is on one side
 // only, so a triangle has one owner at most.)
-void DirichletTessellation::TwoRegionBuild::SortSampleTriangles()
+void DirichletTessellation::TwoRegionBuild::FindTriangleOwners()
 {
   this->SampleTriangles = std::int32_t(this->T.Origins.size() / 3);
   this->OwnerOf.assign(std::size_t(this->SampleTriangles), NoOwner);

@@ -216,7 +216,7 @@ std::vector<bool> EffectiveByPairs(const std::vector<HalfPlane>& constraints,
 }
 
 // Throws InputError naming the first constraint with a coefficient that is not finite or with
-// a == b == 0, and UnboundedWindowError when there is none.
+// a == b == 0, and UnboundedWindowError when there are no constraints.
 void CheckCoefficients(const std::vector<HalfPlane>& constraints,
   const std::function<std::string(std::size_t)>& named)
 {
