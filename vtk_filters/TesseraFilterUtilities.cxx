@@ -1749,6 +1749,11 @@ RenamedArrays AddUnusedPointIds(vtkDataObject* data,
   return renamed;
 }
 
+std::string NoPointsWarning(const std::string& what)
+{
+  return "the input has no points: no " + what + " (does the filter before it give none?)";
+}
+
 std::string UnusedPointsWarning(std::size_t rejected, std::size_t duplicates, const char* verb)
 {
   if (rejected == 0 && duplicates == 0)

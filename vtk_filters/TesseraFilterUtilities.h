@@ -320,6 +320,11 @@ RenamedArrays AddUnusedPointIds(vtkDataObject* data,
 /// ids are; empty when every point was used.
 std::string UnusedPointsWarning(std::size_t rejected, std::size_t duplicates, const char* verb);
 
+/// The warning for an input without points, whose output is then empty: "the input has no points:
+/// no <what> (does the filter before it give none?)" (a ParaView user saw an empty output and no
+/// message, where the filter before had failed or kept nothing).
+std::string NoPointsWarning(const std::string& what);
+
 /// Throws tessera::InputError unless value is one of the choices 0 .. names.size() - 1, naming
 /// them: "Basis 5 is not one of 0 (InverseMultiquadric), 1 (Gaussian)". For the filters'
 /// enumerated settings, which are set with vtkSetMacro: vtkSetClampMacro turned a wrong value into

@@ -125,6 +125,10 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
       vtkWarningMacro(<< warning);
     }
     std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
+    if (points.empty())
+    {
+      vtkWarningMacro(<< tessera_vtk::NoPointsWarning("triangle"));
+    }
     // (Before the window is made: an empty WindowBounds is ignored, and a window of the
     // constraints alone may then be refused, which the warning explains.)
     const std::string emptyBounds =

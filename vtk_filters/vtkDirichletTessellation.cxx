@@ -463,6 +463,10 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
       vtkWarningMacro(<< warning);
     }
     std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
+    if (points.empty())
+    {
+      vtkWarningMacro(<< tessera_vtk::NoPointsWarning("tile and no contiguity"));
+    }
     // (Before the window is made: an empty WindowBounds is ignored, and a window of the
     // constraints alone may then be refused, which the warning explains.)
     const std::string emptyBounds =

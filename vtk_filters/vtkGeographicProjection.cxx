@@ -948,6 +948,13 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
     const bool none = points == 0 && ((this->Inverse && this->ProjectionRecord.empty()) || fitted);
     std::unique_ptr<tessera::GeographicProjection> projection;
     std::string record;
+    if (points == 0)
+    {
+      const char* const what = this->Inverse ? "point taken back to lon/lat"
+        : fitted ? "point projected, and no projection fitted (no TesseraProjection record)"
+                 : "point projected";
+      vtkWarningMacro(<< tessera_vtk::NoPointsWarning(what));
+    }
     if (none && !this->Inverse)
     {
       // No projection is fitted, but a grid set out of range is still named (a ScaleFactor of

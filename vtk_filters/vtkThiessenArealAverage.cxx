@@ -1516,6 +1516,12 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
         ", not numbers; make it numeric, or give the values as observations (input 2: station id, "
         "time, value), whose text values are read as numbers");
     }
+    if (!values && gauges->GetNumberOfPoints() == 0)
+    {
+      // (the array is missing because the points are: said first, as with observations)
+      throw tessera::InputError(std::string(NoGaugePoints) + ": no gauge, no value array '" +
+        this->ValueArrayName + "' (ValueArrayName)");
+    }
     if (!values)
     {
       throw tessera::InputError(

@@ -260,11 +260,19 @@ def test_degenerate_inputs_give_valid_output():
         t.SetInputData(make_points(coords))
         t.Update()
         assert_that(t.GetOutput().GetNumberOfCells() == 0, f"{len(coords)} collinear/few points: no face")
-        # No face is said, for points there are (none: nothing to say).
-        expected = ([] if not coords else ["fewer than three distinct points"] if len(coords) < 3
+        # No face is said, and no point (an upstream filter that failed or kept none: a ParaView
+        # user saw an empty output without a word).
+        expected = (["the input has no points: no triangle (does the filter before it give none?)"]
+                    if not coords else ["fewer than three distinct points"] if len(coords) < 3
                     else ["the 4 distinct points triangulated all lie on one line"])
         assert_that(len(said) == len(expected) and all(e in w for e, w in zip(expected, said)),
                     f"{len(coords)} points: {said}")
+        d = vtkDirichletTessellation()
+        d.SetWindowBounds(0, 1, 0, 1)
+        said = warnings_of_update(d, make_points(coords))
+        expected = ["the input has no points: no tile and no contiguity"] if not coords else []
+        assert_that(len(said) == len(expected) and all(e in w for e, w in zip(expected, said)),
+                    f"{len(coords)} points, tiles: {said}")
     # Without a window, points without extent get the square of side 1 centred on them (the
     # header's rule: a padding of a zero side would leave no window).
     for coords in ([(5e6, 7e6)], [(5e6, 7e6)] * 3):

@@ -326,19 +326,27 @@ def test_utm_metres_without_a_record_go_back_by_their_zone():
 
 
 def test_no_points_give_an_empty_output_without_error():
+    # No error, but a warning: an empty output without a word left a ParaView user guessing.
     f = vtkGeographicProjection()
     messages = messages_of(f)
+    warnings = messages_of(f, vtkCommand.WarningEvent)
     f.SetInputData(make_points([]))
     f.Update()
     assert_that(not messages and f.GetOutput().GetNumberOfPoints() == 0 and projection_record(f.GetOutput()) is None,
                 f"no points: {messages}")
+    assert_that(len(warnings) == 1 and "the input has no points: no point projected, and no projection fitted (no "
+                "TesseraProjection record) (does the filter before it give none?)" in warnings[0],
+                f"no points, warned: {warnings}")
     inverse = vtkGeographicProjection()
     inverse_messages = messages_of(inverse)
+    inverse_warnings = messages_of(inverse, vtkCommand.WarningEvent)
     inverse.SetInputConnection(f.GetOutputPort())
     inverse.InverseOn()
     inverse.Update()
     assert_that(not inverse_messages and inverse.GetOutput().GetNumberOfPoints() == 0,
                 f"the empty output's inverse: {inverse_messages}")
+    assert_that(len(inverse_warnings) == 1 and "no point taken back to lon/lat" in inverse_warnings[0],
+                f"the empty output's inverse, warned: {inverse_warnings}")
     # A grid set out of range is named even with no points to fit a projection to (it was named
     # only once points came); a good one gives no message.
     for configure, named in ((lambda g: g.SetScaleFactor(100.0), "scale factor k0 = 100 is not within 0.1 to 10"),

@@ -1388,6 +1388,16 @@ def test_rows_that_cannot_be_used_make_no_step_and_are_listed():
         assert_that(len(errors) == 1 and errors[0].count("the gauges input has no points (does the filter before it "
                                                          "give none?)") == 1 and fragment in errors[0],
                     f"no gauges: {errors}")
+    # Without observations too: the missing value array is not the cause (it was "the gauges need a
+    # numeric point-data array 'value'; their arrays are none").
+    f = vtkThiessenArealAverage()
+    errors = messages_of(f)
+    f.SetGaugesData(vtkPolyData())
+    f.SetCatchmentData(polygon(square))
+    f.Update(1)
+    assert_that(len(errors) == 1 and errors[0].count("the gauges input has no points (does the filter before it "
+                                                     "give none?): no gauge, no value array 'value'") == 1,
+                f"no gauges, no observations: {errors}")
 
 
 def ellipsoidal_area(ring):
