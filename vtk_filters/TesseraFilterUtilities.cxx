@@ -997,7 +997,8 @@ std::string JoinProblem(const std::vector<PointLeaf>& leaves, const std::string&
       if (leaf.Set->GetCellData()->GetAbstractArray(name.c_str()))
       {
         return leaf.Label + " of the points holds '" + name +
-          "' as cell data of cells that are not one vertex per point (a multipoint feature?), so "
+          "' as cell data of cells that are not one vertex per point (polygons, lines, a "
+          "multipoint feature), so "
           "its points cannot be given it";
       }
       std::string other;

@@ -1346,7 +1346,7 @@ def test_blocks_of_multipoint_features_name_the_attributes_they_cannot_carry():
     f.SetInputData(blocks)
     f.Update()
     expected = ("the array 'station' is not carried: block 0 (composite index 1) of the points holds 'station' "
-                "as cell data of cells that are not one vertex per point (a multipoint feature?)")
+                "as cell data of cells that are not one vertex per point (polygons, lines, a multipoint feature)")
     assert_that(len(warnings) == 1 and expected in warnings[0], f"{warnings}")
     assert_that(f.GetOutputDataObject(0).GetNumberOfCells() == 4
                 and f.GetOutputDataObject(0).GetCellData().GetArray("station") is None, "four tiles, no 'station'")
