@@ -63,12 +63,13 @@ std::string_view Trimmed(std::string_view text)
   return text;
 }
 
-/// The seconds of a time of day "hh:mm" or "hh:mm:ss" (optional "Z") at text[at ..] to its end.
-std::optional<int> SecondsOfDay(std::string_view text, std::size_t at)
+/// Reads a time of day "hh:mm" or "hh:mm:ss" at text[at ..] (24:00 and 24:00:00 the day's end),
+/// advancing at past it: its seconds since midnight, 86400 for the day's end.
+std::optional<int> ReadTimeOfDay(std::string_view text, std::size_t& at)
 {
   int hours = 0, minutes = 0, seconds = 0;
   if (!ReadDigits(text, at, 2, hours) || !Skip(text, at, ':') ||
-    !ReadDigits(text, at, 2, minutes) || hours > 23 || minutes > 59)
+    !ReadDigits(text, at, 2, minutes) || hours > 24 || minutes > 59)
   {
     return std::nullopt;
   }
@@ -76,12 +77,55 @@ std::optional<int> SecondsOfDay(std::string_view text, std::size_t at)
   {
     return std::nullopt;
   }
-  Skip(text, at, 'Z');
-  if (at != text.size())
+  if (hours == 24 && (minutes != 0 || seconds != 0))
   {
     return std::nullopt;
   }
   return 3600 * hours + 60 * minutes + seconds;
+}
+
+/// Reads a calendar date "YYYY", "YYYY-MM" or "YYYY-MM-DD" at the start of text, advancing at
+/// past it; false when it is none.
+bool ReadDate(std::string_view text, std::size_t& at, int& year, int& month, int& day)
+{
+  year = 0, month = 1, day = 1;
+  if (!ReadDigits(text, at, 4, year))
+  {
+    return false;
+  }
+  if (Skip(text, at, '-') && (!ReadDigits(text, at, 2, month) || month < 1 || month > 12))
+  {
+    return false;
+  }
+  return !(at > 4 && Skip(text, at, '-') &&
+    (!ReadDigits(text, at, 2, day) || day < 1 || day > DaysInMonth(year, month)));
+}
+
+/// Whether text[at] starts a time of day after a full date (at 10): "T" or a space.
+bool AtTimeOfDay(std::string_view text, std::size_t at)
+{
+  return at == 10 && at < text.size() && (text[at] == 'T' || text[at] == ' ');
+}
+
+/// Whether text is a time zone designator: "Z", or a sign and hh, hhmm or hh:mm.
+bool IsZoneDesignator(std::string_view text)
+{
+  if (text == "Z")
+  {
+    return true;
+  }
+  std::size_t at = 0;
+  int hours = 0, minutes = 0;
+  if (!(Skip(text, at, '+') || Skip(text, at, '-')) || !ReadDigits(text, at, 2, hours))
+  {
+    return false;
+  }
+  if (at == text.size())
+  {
+    return true;
+  }
+  Skip(text, at, ':');
+  return ReadDigits(text, at, 2, minutes) && at == text.size();
 }
 
 } // namespace
@@ -96,30 +140,21 @@ std::optional<double> IsoDateTime(std::string_view text)
   text = Trimmed(text);
   std::size_t at = 0;
   int year = 0, month = 1, day = 1;
-  if (!ReadDigits(text, at, 4, year))
-  {
-    return std::nullopt;
-  }
-  if (Skip(text, at, '-') && (!ReadDigits(text, at, 2, month) || month < 1 || month > 12))
-  {
-    return std::nullopt;
-  }
-  if (at > 4 && Skip(text, at, '-') &&
-    (!ReadDigits(text, at, 2, day) || day < 1 || day > DaysInMonth(year, month)))
+  if (!ReadDate(text, at, year, month, day))
   {
     return std::nullopt;
   }
   int seconds = 0;
   if (at < text.size())
   {
-    // A time of day only after a full date.
-    const bool fullDate = at == 10;
-    if (!fullDate || !(text[at] == 'T' || text[at] == ' '))
+    // A time of day only after a full date, and nothing after it.
+    if (!AtTimeOfDay(text, at))
     {
       return std::nullopt;
     }
-    const std::optional<int> ofDay = SecondsOfDay(text, at + 1);
-    if (!ofDay)
+    ++at;
+    const std::optional<int> ofDay = ReadTimeOfDay(text, at);
+    if (!ofDay || at != text.size())
     {
       return std::nullopt;
     }
@@ -129,8 +164,26 @@ std::optional<double> IsoDateTime(std::string_view text)
   {
     return MonthTime(year, month); // bit for bit the value of the year and month columns
   }
+  // (24:00 of a month's last day: intoMonth is 1 exactly, the next month's start bit for bit)
   const double intoMonth = (day - 1 + seconds / 86400.0) / DaysInMonth(year, month);
   return year + (month - 1 + intoMonth) / 12.0;
+}
+
+std::optional<std::string> TimeZoneOf(std::string_view text)
+{
+  text = Trimmed(text);
+  std::size_t at = 0;
+  int year = 0, month = 1, day = 1;
+  if (!ReadDate(text, at, year, month, day) || !AtTimeOfDay(text, at))
+  {
+    return std::nullopt;
+  }
+  ++at;
+  if (!ReadTimeOfDay(text, at) || !IsZoneDesignator(text.substr(at)))
+  {
+    return std::nullopt;
+  }
+  return std::string(text.substr(at));
 }
 
 } // namespace tessera

@@ -9,6 +9,7 @@
 // month therefore land on the same steps, and daily series stay in calendar order.
 
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace tessera
@@ -18,9 +19,16 @@ namespace tessera
 double MonthTime(double year, int month);
 
 /// The time of an ISO 8601 calendar date "YYYY", "YYYY-MM" or "YYYY-MM-DD", optionally followed by
-/// a time of day ("T" or a space, then "hh:mm" or "hh:mm:ss", and an optional trailing "Z"), with
-/// spaces around it ignored; nothing when the text is not such a date (a month outside 1 .. 12,
-/// a day beyond its month, an hour beyond 23, ...).
+/// a time of day ("T" or a space, then "hh:mm" or "hh:mm:ss"), with spaces around it ignored;
+/// nothing when the text is not such a date (a month outside 1 .. 12, a day beyond its month, an
+/// hour beyond 24, ...). "24:00" ends its day: the time of the next day's "00:00", as hour-ending
+/// records write a day's last hour (and as the example script reads it). A time with a time zone
+/// ("Z", "+05:00") is not read (TimeZoneOf names it): times are taken as they are written, so one
+/// series in several zones would be misordered without a word.
 std::optional<double> IsoDateTime(std::string_view text);
+
+/// The time zone that a date and time of day ends with ("Z", "+05:00", "-0700", "+05"), which
+/// IsoDateTime does not read; nothing for any other text.
+std::optional<std::string> TimeZoneOf(std::string_view text);
 
 } // namespace tessera

@@ -339,13 +339,20 @@ private:
     {
       return *t;
     }
+    if (const std::optional<std::string> zone = tessera::TimeZoneOf(*time.Text))
+    {
+      // (as the example script says it: times are taken as written, one zone for the series)
+      ThrowRowError(row,
+        "'" + *time.Text + "' in column '" + this->TimeColumn + "' has a time zone (" + *zone +
+          "), which is not read: give the times without it, all in one zone");
+    }
     const std::optional<double> number = time.Number();
     if (!number || !std::isfinite(*number))
     {
       ThrowRowError(row,
         "'" + *time.Text + "' in column '" + this->TimeColumn +
-          "' is not a date (YYYY, YYYY-MM or YYYY-MM-DD, optionally with hh:mm[:ss]) or a "
-          "finite number");
+          "' is not a date (YYYY, YYYY-MM or YYYY-MM-DD, optionally with hh:mm[:ss], 24:00 for "
+          "the day's end) or a finite number");
     }
     return *number;
   }

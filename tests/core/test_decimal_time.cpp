@@ -13,6 +13,7 @@
 
 using tessera::IsoDateTime;
 using tessera::MonthTime;
+using tessera::TimeZoneOf;
 
 namespace
 {
@@ -85,7 +86,9 @@ TEST(DecimalTime, EveryDayOfTwoCenturiesIsInItsMonthAndInOrder)
       // The first of a month, "YYYY-MM" and the year-and-month columns give the same step.
       EXPECT_EQ(*t, monthStart) << day.Text;
       EXPECT_EQ(IsoDateTime(day.Text.substr(0, 7)), monthStart) << day.Text;
-      EXPECT_EQ(IsoDateTime(day.Text + "T00:00:00Z"), monthStart) << day.Text;
+      EXPECT_EQ(IsoDateTime(day.Text + "T00:00:00"), monthStart) << day.Text;
+      // With a time zone it is not read (a series in several zones would be misordered).
+      EXPECT_FALSE(IsoDateTime(day.Text + "T00:00:00Z")) << day.Text;
     }
   }
 }
@@ -97,6 +100,38 @@ TEST(DecimalTime, TimesOfDayAndSpacesAndYears)
   EXPECT_NEAR(*IsoDateTime("1963-08-01T12:00"), 1963 + (7 + 0.5 / 31) / 12.0, 1e-12);
   EXPECT_NEAR(*IsoDateTime("1963-08-16 18:00:00"), 1963 + (7 + 15.75 / 31) / 12.0, 1e-12);
   EXPECT_LT(*IsoDateTime("1963-08-31T23:59:59"), MonthTime(1963, 9));
+}
+
+TEST(DecimalTime, HourTwentyFourIsTheNextDaysStart)
+{
+  // Hour-ending records write a day's last hour as 24:00: the next day's 00:00, bit for bit, also
+  // across a month's and a year's end (where it is the next month's "YYYY-MM").
+  EXPECT_EQ(IsoDateTime("1963-08-16 24:00"), IsoDateTime("1963-08-17 00:00"));
+  EXPECT_EQ(IsoDateTime("1963-08-01T24:00:00"), IsoDateTime("1963-08-02"));
+  EXPECT_EQ(IsoDateTime("1963-08-31 24:00"), MonthTime(1963, 9));
+  EXPECT_EQ(IsoDateTime("1964-02-29 24:00"), MonthTime(1964, 3));
+  EXPECT_EQ(IsoDateTime("1963-12-31T24:00"), 1964.0);
+  EXPECT_LT(*IsoDateTime("1963-08-16 23:59:59"), *IsoDateTime("1963-08-16 24:00"));
+}
+
+TEST(DecimalTime, TimeZonesAreNamedNotRead)
+{
+  EXPECT_EQ(TimeZoneOf("1963-08-01T10:00:00Z"), std::string("Z"));
+  EXPECT_EQ(TimeZoneOf(" 1963-08-01 10:00+05:00 "), std::string("+05:00"));
+  EXPECT_EQ(TimeZoneOf("1963-08-01T10:00-0700"), std::string("-0700"));
+  EXPECT_EQ(TimeZoneOf("1963-08-01T10:00:30+05"), std::string("+05"));
+  for (const char* text : { "1963-08-01T10:00",
+         "1963-08-01",
+         "1963-08-01Z",
+         "1963-08-01T10:00+5",
+         "1963-08-01T10:00+05:0",
+         "1963-08-01T10:00 Z",
+         "1963-08-01T10:00ZZ",
+         "1963-13-01T10:00Z",
+         "abc" })
+  {
+    EXPECT_FALSE(TimeZoneOf(text)) << text;
+  }
 }
 
 TEST(DecimalTime, MalformedAndImpossibleDatesAreRefused)
@@ -114,7 +149,11 @@ TEST(DecimalTime, MalformedAndImpossibleDatesAreRefused)
          "1963-02-29",
          "1900-02-29",
          "2100-02-29",
-         "1963-08-01T24:00",
+         "1963-08-01T24:01",
+         "1963-08-01T24:00:01",
+         "1963-08-01T25:00",
+         "1963-08-01T12:00Z",
+         "1963-08-01T12:00+05:00",
          "1963-08-01T12",
          "1963-08-01T12:60",
          "1963-08-01 12:00:60",

@@ -1709,6 +1709,15 @@ def test_review_cases_of_times_values_and_time_aware_gauges():
     f, messages = run_table([("a", "1963.5", "10"), ("b", "mid-1963", "20")])
     assert_that(len(messages) == 1 and "'mid-1963' in column 'date' is not a date" in messages[0]
                 and "or a finite number" in messages[0], f"(1) neither a date nor a number: {messages}")
+    # A time zone is named, not read and not called no date (as the example script says it); 24:00
+    # is the next day's 00:00, as the script reads hour-ending records.
+    for zoned, zone in (("1963-08-01T10:00:00Z", "Z"), ("1963-08-01 10:00+05:00", "+05:00")):
+        f, messages = run_table([("a", "1963-08-01 09:00", "10"), ("b", zoned, "20")])
+        assert_that(len(messages) == 1 and f"'{zoned}' in column 'date' has a time zone ({zone}), which is not read"
+                    in messages[0], f"(1) a time zone: {messages}")
+    f, messages = run_table([("a", "1963-08-01 24:00", "10"), ("b", "1963-08-02", "20"), ("a", "1963-08-31 24:00", "4")])
+    assert_that(not messages and summary_column(f, "Time") == [1963 + (7 + 1 / 31) / 12, 1963 + 8 / 12]
+                and summary_column(f, "ArealMean") == [15.0, 4.0], f"(1) 24:00: {messages} {summary_column(f, 'Time')}")
 
     def run_with_month(years):
         table = vtkTable()
