@@ -505,6 +505,36 @@ std::string NoUsableRowMessage(const ObservationRows& rows,
   return message.str();
 }
 
+/// A warning, or "", for settings changed from their defaults that the inputs leave unused: the
+/// gauges' value array (ValueArrayName) beside an observations table, or the table's columns
+/// without one (a ParaView user changed them and saw no effect, and no word on why).
+std::string UnusedSettingsWarning(const std::string& valueArray,
+  const std::vector<std::pair<const char*, std::string>>& columns,
+  bool observations)
+{
+  if (observations)
+  {
+    return valueArray == "value" ? std::string()
+                                 : "ValueArrayName '" + valueArray +
+        "' is not used: the values come from the observations table (input 2, ValueColumn)";
+  }
+  static const std::vector<std::string> defaults = { "station_id", "time", "value", "" };
+  std::string changed;
+  for (std::size_t k = 0; k < columns.size(); ++k)
+  {
+    if (columns[k].second != defaults[k])
+    {
+      changed += (changed.empty() ? "" : ", ") + std::string(columns[k].first) + " '" +
+        columns[k].second + "'";
+    }
+  }
+  return changed.empty() ? std::string()
+                         : changed +
+      " not used: no observations table is connected (input 2), so the values are the gauges' "
+      "point-data array '" +
+      valueArray + "' (ValueArrayName)";
+}
+
 /// A warning, or "", when most observation rows repeat a station and time: times coarser than the
 /// rows, as a table of years and months read with TimeColumn 'year' and no MonthColumn gives (in
 /// ParaView, Month Column is a text box easily left empty). Each station's first row of a year was
@@ -1412,6 +1442,16 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   for (const std::string& warning : ringWarnings)
   {
     vtkWarningMacro(<< warning);
+  }
+  const std::string unusedSettings = UnusedSettingsWarning(this->ValueArrayName,
+    { { "StationColumn", this->StationColumn },
+      { "TimeColumn", this->TimeColumn },
+      { "ValueColumn", this->ValueColumn },
+      { "MonthColumn", this->MonthColumn } },
+    observations != nullptr);
+  if (!unusedSettings.empty())
+  {
+    vtkWarningMacro(<< unusedSettings);
   }
   tessera::ArealAverageSettings settings;
   if (!this->ProjectionRecord.empty())

@@ -244,6 +244,27 @@ def test_a_gauge_whose_station_id_others_share_is_named_with_its_index():
     f.Update(1)
     assert_that(len(errors) == 1 and "numeric point-data array 'precip' (ValueArrayName)" in errors[0]
                 and errors[0].rstrip().endswith("their arrays are station_id, value"), f"{errors}")
+    # Settings changed but left unused by the inputs are said (a ParaView user saw no effect): the
+    # observations' columns without observations, and the gauges' value array beside them.
+    f = vtkThiessenArealAverage()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetGaugesData(gauges_polydata([(0.2, 0.2), (0.8, 0.8)], ["A", "B"], [1.0, 2.0]))
+    f.SetCatchmentData(polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]]))
+    f.SetTimeColumn("date")
+    f.SetMonthColumn("month")
+    f.Update(1)
+    unused = [w for w in warnings if "not used" in w]
+    assert_that(len(unused) == 1 and "TimeColumn 'date', MonthColumn 'month' not used: no observations table is "
+                "connected (input 2), so the values are the gauges' point-data array 'value'" in unused[0],
+                f"columns without observations: {warnings}")
+    f.SetObservationsData(csv_reader_table("station_id,date,value\nA,2000-03,5\nB,2000-03,7\n"))
+    f.SetMonthColumn("")
+    f.SetValueArrayName("precip")
+    before = len(warnings)
+    f.Update(1)
+    unused = [w for w in warnings[before:] if "not used" in w]
+    assert_that(len(unused) == 1 and "ValueArrayName 'precip' is not used: the values come from the observations "
+                "table (input 2, ValueColumn)" in unused[0], f"a value array beside observations: {warnings[before:]}")
 
 
 def test_gauges_never_weighted_and_no_gauge_inside_are_reported():
