@@ -198,18 +198,9 @@ def is_calendar_day(year, month, day):
     return year >= 1 and 1 <= month <= 12 and 1 <= day <= calendar.monthrange(year, month)[1]
 
 
-def station_key(station_id):
-    """A station id as vtkThiessenArealAverage matches it: trimmed of spaces, tabs and quotes and,
-    for an integer id (digits only), without its leading zeros, so that "050109" and 50109 (the
-    same id after a spreadsheet dropped its zeros) are one station, as is 50109.0 (or 50109,0: a
-    whole-number column with gaps as pandas writes it); any other id as its text."""
-    text = station_id.strip(" \t\"")
-    whole = re.fullmatch(r"([0-9]+)[.,]0*", text)
-    if whole:
-        text = whole.group(1)
-    if text and all("0" <= c <= "9" for c in text):
-        text = text.lstrip("0") or "0"
-    return text
+# A station id as vtkThiessenArealAverage matches it ("0102" and 102 are one station); in
+# csv_input, as project_gauges.py compares ids the same way.
+station_key = csv_input.station_key
 
 
 def read_gauges(path, system=None, combined=False, id_field=None):
@@ -2355,13 +2346,16 @@ def main(argv=None):
                                                          "given more than once: each month's files; default: 1963-08, "
                                                          "or the nearest month of the record where a gauge reported; "
                                                          "with daily, hourly or sub-hourly observations its first "
-                                                         "day, hour or step; a month not in the record, or outside "
-                                                         "--start/--end, is an error, as is such a --day, --hour "
+                                                         "day, hour or step in the record and --start/--end; a "
+                                                         "month none of whose steps is in the record and within "
+                                                         "--start/--end is an error, as is such a --day, --hour "
                                                          "or --minute)")
     parser.add_argument("--day", action="append", help="day for the weights, tiles and map when the observations "
                                                        "give days, YYYY-MM-DD (may be given more than once; with "
-                                                       "hourly observations its 00:00 hour, which for hour-ending "
-                                                       "data is the day before's last; not with --month)")
+                                                       "hourly observations its first hour in the record and "
+                                                       "--start/--end: 00:00 where they hold it, which for "
+                                                       "hour-ending data is the day before's last; not with "
+                                                       "--month)")
     parser.add_argument("--hour", action="append", help="hour for the weights, tiles and map when the observations "
                                                         "give hours, 'YYYY-MM-DD HH:00' (or with a T: "
                                                         "YYYY-MM-DDTHH:00; 24:00 is the next day's 00:00; may be "
@@ -2513,9 +2507,10 @@ def main(argv=None):
                            f"(use --{steps.unit})")
         if not steps.on_grid(when):
             csv_input.fail(off_grid(option, steps, args.observations))
-    # (a month is its first day or hour with daily or hourly steps; a day, its 00:00 hour)
+    # (a month is its first day or hour with daily or hourly steps, a day its 00:00 hour; check_asked_steps
+    # takes the first of them in the record and period)
     wanted = [(option, when, widened(when, steps.fields, False, steps.minutes)) for option, when in asked]
-    check_asked_steps(wanted, record, args.observations, (args.start, args.end))
+    wanted = check_asked_steps(wanted, record, args.observations, (args.start, args.end))
     catchment, outline = read_catchment(args.catchment, args.feature)
     groups = polygon_groups(features_by_value(catchment, each, args.catchment), each,
                             args.catchment) if each is not None else None
@@ -2566,6 +2561,9 @@ def main(argv=None):
         messages.check(tiles is None)
         # (a step asked for is one of the table's (check_asked_steps); the default may be another)
         chosen = steps.of_time[tiles.GetInformation().Get(tiles.DATA_TIME_STEP())]
+        if option and chosen != step:
+            csv_input.fail(f"{option}: internal error: the filter gave the tiles of {steps.text(chosen)} for "
+                           f"{steps.text(step)}, a step of the table (please report it)")
         if any(chosen == earlier for earlier, _, _ in shown):
             continue  # (its files are written: another option gave the same step)
         tag = steps.tag(chosen)
@@ -2605,34 +2603,46 @@ def main(argv=None):
 
 
 def check_asked_steps(wanted, record, path, bound_texts):
-    """Ends the script, before the long work, for a step asked for (wanted: (the option as given,
-    the step as given, the step it stands for: a month of days is its first day)) that is not one
-    of the table's steps (record: read_observations'; path: its file): one outside --start/--end
-    (bound_texts: their values as given), or beyond the record. The filter would show its nearest
-    step in its place, and the user would get another month's weights and map than the one asked
-    for, under that month's name. The default step (option "") is the record's nearest where a
-    gauge reported (nearest_reported), and needs no check."""
+    """The steps asked for (wanted: (the option as given, the step as given, the step it stands
+    for: a month of days is its first day)), each made the first of the table's steps (record:
+    read_observations'; path: its file) within what it asks for: a --month of days or hours (a
+    --day of hours) is taken where any of its days (hours) lies in the record and the period, from
+    the first of them (a record from 1963-08-15, or --start 1963-08-10, has 1963-08). Ends the
+    script, before the long work, for one none of whose steps is in the table: outside
+    --start/--end (bound_texts: their values as given), or beyond the record. The filter would show
+    its nearest step in its place, and the user would get another month's weights and map than the
+    one asked for, under that month's name. The default step (option "") is the record's nearest
+    where a gauge reported (nearest_reported), and is kept as it is."""
     import numpy as np
     from vtkmodules.util.numpy_support import vtk_to_numpy
 
-    steps = record.steps
-    times = np.unique(vtk_to_numpy(record.table.GetColumnByName("time")))
+    steps, period = record.steps, record.period
+    times = vtk_to_numpy(record.table.GetColumnByName("time"))
     if not len(times):
-        return
-    present = set(times.tolist())
-    first, last = steps.of_time[float(times[0])], steps.of_time[float(times[-1])]
+        return wanted
+    # The table has a row for every step from its first to its last (add_steps_without_rows): the
+    # period's bounds where given, else the record's first and last step.
+    first, last = steps.of_time[float(np.min(times))], steps.of_time[float(np.max(times))]
+    taken = []
     for option, when, step in wanted:
-        if not option or steps.time(step) in present:
+        if not option:
+            taken.append((option, when, step))
             continue
-        # (the step as given, and the step it stands for where they differ: a month of days)
-        label = option + (f" ({steps.text(step)})" if when != step else "")
-        if record.period.given() and step not in record.period:
+        # (what the option asks for, from its first step to its last: a month of days, all its days)
+        asked_first, asked_last = step, widened(when, steps.fields, True, steps.minutes)
+        if asked_first <= last and first <= asked_last:
+            taken.append((option, when, max(asked_first, first)))
+            continue
+        if period.given() and not (asked_first <= (period.end or asked_first)
+                                   and (period.start or asked_last) <= asked_last):
             bounds = " and ".join(f"--{name} {text.strip()}" for name, text in zip(("start", "end"), bound_texts)
                                   if text is not None)
-            csv_input.fail(f"{label}: is outside {bounds} (the {steps.noun}s averaged run from {steps.text(first)} "
+            csv_input.fail(f"{option}: is outside {bounds} (the {steps.noun}s averaged run from {steps.text(first)} "
                            f"to {steps.text(last)}); give a {steps.noun} within them")
-        csv_input.fail(f"{label}: is not in the record of {path} (its {steps.noun}s run from {steps.text(first)} to "
-                       f"{steps.text(last)}); give a {steps.noun} of the record")
+        run = "the {0}s averaged run" if period.given() else "its {0}s run"
+        csv_input.fail(f"{option}: is not in the record of {path} ({run.format(steps.noun)} from {steps.text(first)} "
+                       f"to {steps.text(last)}); give a {steps.noun} of the record")
+    return taken
 
 
 def shown_mean(value):

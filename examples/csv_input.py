@@ -9,7 +9,8 @@ catch_vtk_messages() and vtk_message_text() give a script the VTK filters' messa
 that it reports a value the filters reject in such a line too, not as VTK's log; output_directory()
 makes the --out directory and tries writing a file there, or says in such a line why it cannot,
 before any work is done; check_paths() names a file option given an empty path, and say_repeats()
-the records that repeat an earlier one's id or place.
+the records that repeat an earlier one's id or place; station_key() is a station id as the filter
+matches it (0102 and 102 are one), for every script that compares ids.
 
 A module imported by the other examples (colorado_areal_precipitation.py, project_gauges.py,
 ridge_grouping.py, beside it), not a script: run, it only says so."""
@@ -17,6 +18,7 @@ ridge_grouping.py, beside it), not a script: run, it only says so."""
 import argparse
 import codecs
 import csv
+import errno
 import math
 import os
 import re
@@ -486,6 +488,22 @@ def say_unplaced_rows(path, unplaced, placed, coordinates):
               f"is taken from its other rows ({total} row(s) of {len(unplaced)} station(s) so)", file=sys.stderr)
 
 
+def station_key(station_id):
+    """A station id as vtkThiessenArealAverage matches it: trimmed of spaces, tabs and quotes and,
+    for an integer id (digits only), without its leading zeros, so that "050109" and 50109 (the
+    same id after a spreadsheet dropped its zeros) are one station, as is 50109.0 (or 50109,0: a
+    whole-number column with gaps as pandas writes it); any other id as its text. The examples
+    compare station ids through it (colorado_areal_precipitation.py matches observations to gauges,
+    project_gauges.py names ids given twice), so that they agree with the filter and each other."""
+    text = station_id.strip(" \t\"")
+    whole = re.fullmatch(r"([0-9]+)[.,]0*", text)
+    if whole:
+        text = whole.group(1)
+    if text and all("0" <= c <= "9" for c in text):
+        text = text.lstrip("0") or "0"
+    return text
+
+
 def repeats(keys):
     """(k, first) for each item of keys (one per record, hashable) that an earlier item equals: its
     index and the index of the first with that key, in order."""
@@ -543,7 +561,10 @@ def output_directory(path):
     file system, /proc). Called before the inputs are read, so that a bad --out is told at once,
     not as a traceback once the work is done. Writing is tried (a temporary file made and removed):
     os.access answers from the permission bits, which do not stop root, nor tell of ACLs or a
-    read-only mount."""
+    read-only mount. The directory exists by then, so the system's reason for a file it would not
+    make is said in those words (/proc gave "No such file or directory" for a directory that is
+    there); a test file that cannot be removed is named, and the script goes on (files can be
+    written there)."""
     if not path.strip():
         fail(f"--out {path!r}: an empty path (give a directory, such as out)")
     if os.path.exists(path) and not os.path.isdir(path):
@@ -554,10 +575,26 @@ def output_directory(path):
         fail(f"--out {path}: cannot create the directory ({error.strerror or error})")
     try:
         handle, probe = tempfile.mkstemp(prefix=".tessera_write_test_", dir=path)
+    except OSError as error:
+        fail(f"--out {path}: no file can be made there ({cannot_make_reason(error)})")
+    try:
         os.close(handle)
         os.remove(probe)
     except OSError as error:
-        fail(f"--out {path}: cannot write there ({error.strerror or error})")
+        print(f"warning: --out {path}: a test file made there could not be removed ({error.strerror or error}); "
+              f"it is left behind: {probe}", file=sys.stderr)
+
+
+def cannot_make_reason(error):
+    """Why no file could be made in a directory that exists, from the OSError of the attempt: no
+    permission, a read-only file system, a full disk, or the system's own words for the rest (a
+    "No such file or directory" of /proc said as the system's refusal, not as a missing path)."""
+    reasons = {errno.EACCES: "no permission to write in it", errno.EPERM: "no permission to write in it",
+               errno.EROFS: "a read-only file system", errno.ENOSPC: "no space left on the device",
+               errno.EDQUOT: "the disk quota is used up"}
+    if error.errno in reasons:
+        return reasons[error.errno]
+    return f"the system refused a new file: {error.strerror or error}"
 
 
 def write_vtk(writer, data, path):

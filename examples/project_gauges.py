@@ -16,11 +16,17 @@ Conus Albers) gives that system's eastings and northings, false origin and all.
 
 The other projections are fitted to the gauges (their centre, parallels, UTM zone), so that one
 gauge far from the rest (a lon of 200 for -160, a gauge of another country) moves them: the line
-the script prints gives the projection's parameters, and gauges far from the rest are named in a
-warning, with their lines. A gauge is far from the rest where its lon or lat lies more than
-FAR_DEGREES (5) degrees, and more than FAR_DEVIATIONS (6) times the gauges' median absolute
-deviation, from the gauges' median (lon taken across the antimeridian). A station id given to more
-than one gauge, and gauges at one place, are named too (each is projected and written).
+the script prints gives the projection's parameters, and a warning names, with their lines, the
+gauges that move the fitted projection: those without any one of which (left out alone) the
+projection fitted to the others would have its central meridian, centre latitude or a standard
+parallel more than FAR_DEGREES (2) degrees away. The fit is vtkGeographicProjection's (the middle
+of the shortest longitude arc holding the gauges, the middle of their latitudes, standard parallels
+at 1/6 and 5/6 of them): a network dense in one part and sparse in another gets no warning, a
+mistyped gauge does. A move of the central meridian counts as degrees of arc at the gauges'
+latitude nearest the equator (degrees of longitude times its cosine), and not at all where the
+others span 180 degrees of longitude or more (round a pole); of fewer than FAR_FEWEST (5) gauges
+none is named. A station id given to more than one gauge (compared as the main job compares
+them: 0102 and 102 are one) and gauges at one place are named too (each is projected and written).
 
 Run it with Debian's /usr/bin/python3 and PYTHONPATH pointing to build/python (scripts/demo does).
 """
@@ -30,7 +36,6 @@ import csv
 import math
 import os
 import re
-import statistics
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -52,9 +57,15 @@ PROJECTIONS = {
 }
 
 
-# A gauge far from the rest (far_gauges): beyond both, in lon or lat, from the gauges' median.
-FAR_DEGREES = 5.0
-FAR_DEVIATIONS = 6.0
+# A gauge that moves the fitted projection (far_gauges): left out alone, the projection fitted to
+# the rest would have its centre or a standard parallel this many degrees away; with fewer gauges
+# than FAR_FEWEST none is singled out (each is a large part of the network, and a fit to a few
+# gauges moves with each); a central meridian is not compared where the rest span FAR_ROUND_DEGREES
+# of longitude or more (round a pole: which of their gaps is the largest, and so their meridian,
+# turns on any one gauge).
+FAR_DEGREES = 2.0
+FAR_FEWEST = 5
+FAR_ROUND_DEGREES = 180.0
 
 
 def wrapped(degrees):
@@ -62,50 +73,115 @@ def wrapped(degrees):
     return (degrees + 180.0) % 360.0 - 180.0
 
 
+def arc_middle(west, gap):
+    """The middle of the longitude arc that starts at west (0 .. 360) and leaves out the gap that
+    ends there, as the core's ComputeExtent places the arc and CentralLongitude takes its middle."""
+    if west >= 180.0:
+        west -= 360.0
+    if west + (360.0 - gap) > 360.0:
+        west -= 360.0
+    return west + 0.5 * max(0.0, 360.0 - gap)
+
+
+def parallels(south, north):
+    """The fitted centre latitude and standard parallels of a latitude range, as the core's
+    ParametersFromExtent gives them: the middle, and 1/6 and 5/6 of the way from south to north."""
+    span = north - south
+    return 0.5 * (south + north), south + span / 6.0, south + 5.0 * span / 6.0
+
+
+def fitted_parameters(lons, lats):
+    """(central meridian, centre latitude, standard parallel 1, standard parallel 2) that the
+    automatic projection fits to the gauges (far_gauges' fit, worked out directly: a test holds it
+    to vtkGeographicProjection's own record, so that the two cannot drift apart)."""
+    turned = sorted(lon + 360.0 if lon < 0.0 else lon for lon in (math.fmod(lon, 360.0) for lon in lons))
+    gaps = [turned[0] + 360.0 - turned[-1]] + [turned[j] - turned[j - 1] for j in range(1, len(turned))]
+    largest = max(range(len(gaps)), key=lambda j: (gaps[j], -j))  # (the first of equal gaps)
+    return (arc_middle(turned[largest], gaps[largest]),) + parallels(min(lats), max(lats))
+
+
 def far_gauges(lons, lats):
-    """The indices of the gauges that lie far from the rest: their lon or lat more than FAR_DEGREES
-    and more than FAR_DEVIATIONS median absolute deviations from the gauges' median (a rule of
-    medians, which the outlying gauges themselves barely move, where a fitted projection's centre
-    moves by half their distance). Longitudes are differences from the gauges' circular mean,
-    within 180 degrees, so that gauges on both sides of the antimeridian are near one another."""
-    if len(lons) < 3:
+    """(index, degrees) of each gauge that moves the fitted projection: left out alone, the
+    projection fitted to the other gauges would have its central meridian, its centre latitude or a
+    standard parallel more than FAR_DEGREES degrees from those fitted to all of them. The fit is
+    the core's (vtkGeographicProjection's automatic choice: ComputeExtent and ParametersFromExtent
+    in core/geo.cpp): the central meridian is the middle of the shortest longitude arc that holds
+    every gauge (the circle less its largest gap between neighbouring longitudes), the centre
+    latitude the middle of the latitude range, the standard parallels at 1/6 and 5/6 of it. Only a
+    gauge alone at the range's south or north end moves the parallels, and only one alone at its
+    longitude (the end of a gap) the meridian, so each leave-one-out fit is found from the sorted
+    longitudes and latitudes (the two gaps beside the gauge made one), not refitted. A move of
+    the central meridian counts as degrees of arc at the gauges' latitude nearest the equator (its
+    degrees of longitude times that latitude's cosine: near a pole a degree of longitude is a short
+    way); it is not counted where the other gauges span FAR_ROUND_DEGREES of longitude or more.
+    Fewer than FAR_FEWEST gauges: none."""
+    count = len(lons)
+    if count < FAR_FEWEST:
         return []
-    east = statistics.fmean(math.cos(math.radians(lon)) for lon in lons)
-    north = statistics.fmean(math.sin(math.radians(lon)) for lon in lons)
-    centre = math.degrees(math.atan2(north, east)) if (east, north) != (0.0, 0.0) else lons[0]
-    far = set()
-    for values in ([wrapped(lon - centre) for lon in lons], list(lats)):
-        middle = statistics.median(values)
-        off = [abs(value - middle) for value in values]
-        limit = max(FAR_DEGREES, FAR_DEVIATIONS * statistics.median(off))
-        far.update(k for k, value in enumerate(off) if value > limit)
-    return sorted(far)
+    moves = [0.0] * count
+    # Longitudes in 0 .. 360, sorted, and the gap that ends at each (at 0: across 360), as in ComputeExtent.
+    turned = [math.fmod(lon, 360.0) for lon in lons]
+    turned = [lon + 360.0 if lon < 0.0 else lon for lon in turned]
+    order = sorted(range(count), key=turned.__getitem__)
+    sorted_lons = [turned[k] for k in order]
+    gaps = [sorted_lons[0] + 360.0 - sorted_lons[-1]] + [sorted_lons[j] - sorted_lons[j - 1] for j in range(1, count)]
+    largest = 0  # (the first of equal gaps, as ComputeExtent takes it)
+    for j in range(1, count):
+        if gaps[j] > gaps[largest]:
+            largest = j
+    meridian = arc_middle(sorted_lons[largest], gaps[largest])
+    widest = sorted(range(count), key=lambda j: (-gaps[j], j))[:3]
+    nearest_equator = 0.0 if min(lats) <= 0.0 <= max(lats) else min(abs(lat) for lat in lats)
+    arc = math.cos(math.radians(nearest_equator))
+    for i in range(count):
+        before, after = (i - 1) % count, (i + 1) % count
+        if sorted_lons[before] == sorted_lons[i] or sorted_lons[after] == sorted_lons[i]:
+            continue  # (another gauge at its longitude keeps the gaps as they are)
+        # Without gauge i, the gaps either side of it are one, ending at the gauge after it.
+        merged = (sorted_lons[after] + 360.0 - sorted_lons[before] if i in (0, count - 1)
+                  else sorted_lons[after] - sorted_lons[before])
+        other = next(j for j in widest if j not in (i, after))
+        end, gap = ((after, merged) if merged > gaps[other] or (merged == gaps[other] and after < other)
+                    else (other, gaps[other]))
+        if 360.0 - gap < FAR_ROUND_DEGREES:
+            moves[order[i]] = abs(wrapped(arc_middle(sorted_lons[end], gap) - meridian)) * arc
+    by_lat = sorted(range(count), key=lats.__getitem__)
+    south, north = lats[by_lat[0]], lats[by_lat[-1]]
+    fitted = parallels(south, north)
+    for k, rest in ((by_lat[0], (lats[by_lat[1]], north)), (by_lat[-1], (south, lats[by_lat[-2]]))):
+        if lats[k] not in rest:  # (a gauge alone at its end of the range)
+            moves[k] = max(moves[k], max(abs(a - b) for a, b in zip(parallels(*rest), fitted)))
+    return [(k, move) for k, move in enumerate(moves) if move > FAR_DEGREES]
 
 
 def say_far_gauges(path, gauges, lines):
-    """Warns of the gauges far from the rest (far_gauges), naming each with its line: a projection
-    fitted to the gauges takes them in, and its centre and parallels are not those of the rest."""
+    """Warns of the gauges that move the fitted projection (far_gauges), naming each with its line
+    and how far it moves it: a projection fitted to the gauges takes them in, and its centre and
+    parallels are not those of the rest."""
     points = [gauges.GetPoint(k)[:2] for k in range(gauges.GetNumberOfPoints())]
     far = far_gauges([lon for lon, _ in points], [lat for _, lat in points])
     if far:
         station = gauges.GetPointData().GetAbstractArray("StationId")
         shown = ", ".join(f"{station.GetValue(k)} at lon {points[k][0]:.15g}, lat {points[k][1]:.15g} "
-                          f"(line {lines[k]})" for k in far[:20])
+                          f"(line {lines[k]}: {move:.1f} degrees)" for k, move in far[:20])
         more = f" and {len(far) - 20} more" if len(far) > 20 else ""
-        print(f"{path}: warning: {len(far)} gauge(s) lie far from the rest (more than {FAR_DEGREES:g} degrees and "
-              f"{FAR_DEVIATIONS:g} median absolute deviations from the gauges' median lon or lat); the projection, "
-              f"fitted to all the gauges, is moved by them (a mistyped place? --crs gives a projection of its own): "
-              f"{shown}{more}", file=sys.stderr)
+        print(f"{path}: warning: {len(far)} gauge(s) move the fitted projection (without any one of them, its "
+              f"central meridian, centre latitude or a standard parallel would move by more than {FAR_DEGREES:g} "
+              f"degrees; a mistyped place? --crs gives a projection of its own): {shown}{more}", file=sys.stderr)
 
 
 def say_repeated_gauges(path, gauges, lines):
     """Names the gauges that repeat an earlier gauge's station id or place (csv_input.say_repeats),
-    as the main job names them: each is projected and written all the same."""
+    as the main job names them: ids are compared as the main job and the filter compare them
+    (csv_input.station_key: "0102", "102" and "102.0" are one id), a later gauge's id given as in
+    its file, with the earlier one's where the two are written differently ("102 (as 0102)").
+    Each gauge is projected and written all the same."""
     station = gauges.GetPointData().GetAbstractArray("StationId")
     ids = [station.GetValue(k) for k in range(gauges.GetNumberOfPoints())]
     places = [gauges.GetPoint(k)[:2] for k in range(gauges.GetNumberOfPoints())]
-    csv_input.say_repeats(path, lines, ids, "station id(s) are given to more than one gauge (each is projected)",
-                          lambda k, first: ids[k], "gauge")
+    csv_input.say_repeats(path, lines, [csv_input.station_key(i) for i in ids],
+                          "station id(s) are given to more than one gauge (each is projected)",
+                          lambda k, first: ids[k] + (f" (as {ids[first]})" if ids[k] != ids[first] else ""), "gauge")
     csv_input.say_repeats(path, lines, places, "gauge(s) stand where an earlier gauge stands (each is projected)",
                           lambda k, first: f"{ids[k]} (same place as {ids[first]})", "gauge")
 
@@ -162,8 +238,11 @@ def main(argv=None):
     chosen = parser.add_mutually_exclusive_group()
     chosen.add_argument("--projection", choices=sorted(PROJECTIONS), default="automatic",
                         help="map projection, fitted to the gauges (default: automatic Albers equal-area); "
-                             f"gauges more than {FAR_DEGREES:g} degrees and {FAR_DEVIATIONS:g} median absolute "
-                             "deviations from the gauges' median lon or lat, which move it, are named in a warning")
+                             "a gauge that moves it is named in a warning: one without which (left out alone) "
+                             "the projection fitted to the others would have its central meridian, centre latitude "
+                             f"or a standard parallel more than {FAR_DEGREES:g} degrees away (a meridian's move in "
+                             "degrees of arc at the gauges' latitude nearest the equator; none named of fewer than "
+                             f"{FAR_FEWEST} gauges)")
     chosen.add_argument("--crs", metavar="CRS",
                         help="a projected coordinate system: EPSG:CODE (such as EPSG:5070) or PROJ terms "
                              "(such as '+proj=aea +lat_0=23 +lon_0=-96 +lat_1=29.5 +lat_2=45.5 +x_0=0 +y_0=0')")
@@ -206,7 +285,7 @@ def main(argv=None):
         csv_input.fail("the projection failed and gave no message")
     # (said once the projection has taken the gauges: a gauge it rejects is the run's one line)
     say_repeated_gauges(args.stations, gauges, lines)
-    if not system:
+    if system is None:
         say_far_gauges(args.stations, gauges, lines)
 
     csv_input.write_vtk(vtkXMLPolyDataWriter(), projected, os.path.join(args.out, "gauges_projected.vtp"))

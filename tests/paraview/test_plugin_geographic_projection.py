@@ -41,7 +41,7 @@ for i in range(data.GetNumberOfPoints()):
     if abs(y / 1000.0 - lats[i] * 110.9) > 60.0:
         failures.append(f"point {i}: northing {y} far from latitude {lats[i]}")
 
-# The panel shows a setting only where it is read: UTMZone and UTMNorth for UTM; the centre and
+# The panel shows a setting only where it is read: UTMZone for UTM, UTMNorth for a UTM zone set; the centre and
 # parallels with ParametersFromData off, each for the projections that read it (a Central Latitude
 # shown for a conic did nothing; UTM with zone 0 takes its zone and hemisphere from them), and
 # ParametersFromData except for UTM with a zone set. Checked against the filter: under each
@@ -104,9 +104,15 @@ for projection in range(9):  # (every entry of the Projection menu)
         if visible != moves_points(away, "ParametersFromData", 1):
             failures.append(f"projection {projection} zone {zone}: ParametersFromData is "
                             f"{'shown' if visible else 'hidden'} but {'does not move' if visible else 'moves'} the points")
-    for name in ("UTMZone", "UTMNorth"):
-        if shown(projected.GetProperty(name).GetHints(), {"Projection": projection}) != (projection == 4):
-            failures.append(f"projection {projection}: {name} shown {not projection == 4}")
+    if shown(projected.GetProperty("UTMZone").GetHints(), {"Projection": projection}) != (projection == 4):
+        failures.append(f"projection {projection}: UTMZone shown {not projection == 4}")
+    # UTM North: only with a zone set by hand (with zone 0 the hemisphere is the data's, and the box
+    # did nothing while shown), exactly where it moves the points.
+    for zone in (0, 13):
+        values = {"Projection": projection, "UTMZone": zone}
+        visible = shown(projected.GetProperty("UTMNorth").GetHints(), values)
+        if visible != (projection == 4 and moves_points({**values, "ParametersFromData": 0}, "UTMNorth", 0)):
+            failures.append(f"projection {projection} zone {zone}: UTMNorth is {'shown' if visible else 'hidden'}")
 # The grid (a projected system's false origin and scale): shown for every projection, where each term moves the
 # points; Latitude Of Origin shown with Use Latitude Of Origin on, where it moves the points of every projection
 # that takes one (UTM and the azimuthal ones, 4 to 6, take none: an error names it).
