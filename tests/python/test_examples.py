@@ -14,7 +14,7 @@ import sys
 import tempfile
 
 from tessera_testing import (EXAMPLE_DATA, SOURCE_DIR, assert_close, assert_that, cell_rings, colorado_outline,
-                             run)
+                             make_points, run)
 
 EXAMPLES = os.path.join(SOURCE_DIR, "examples")
 MONTH = (1963, 8)
@@ -3846,8 +3846,6 @@ def test_project_gauges_fits_the_projection_as_the_filter_does():
     # far_gauges works out the automatic projection's fit in Python (to leave each gauge out without
     # running the filter n times): held here to the filter's own record, so that a change to the
     # core's fit cannot leave the warning measuring another projection.
-    from vtkmodules.vtkCommonCore import vtkPoints
-    from vtkmodules.vtkCommonDataModel import vtkPolyData
     from tessera import vtkGeographicProjection
 
     sys.path.insert(0, os.path.join(SOURCE_DIR, "examples"))
@@ -3864,14 +3862,8 @@ def test_project_gauges_fits_the_projection_as_the_filter_does():
         cases.append([(math.remainder(west + rng.uniform(0, width), 360.0), rng.uniform(-70, 70))
                       for _ in range(rng.randint(2, 40))])
     for places in cases:
-        points = vtkPoints()
-        points.SetDataTypeToDouble()  # (the script's gauges are doubles: float points fit otherwise)
-        for lon, lat in places:
-            points.InsertNextPoint(lon, lat, 0.0)
-        data = vtkPolyData()
-        data.SetPoints(points)
         f = vtkGeographicProjection()
-        f.SetInputData(data)
+        f.SetInputData(make_points(places))  # (doubles, as the script's gauges: float points fit otherwise)
         f.Update()
         record = dict(term.split("=") for term in
                       f.GetOutput().GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0).split())
