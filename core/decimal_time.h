@@ -22,9 +22,10 @@ double MonthTime(double year, int month);
 /// a time of day ("T" or a space, then "hh:mm" or "hh:mm:ss"), with spaces around it ignored;
 /// nothing when the text is not such a date (a month outside 1 .. 12, a day beyond its month, an
 /// hour beyond 24, ...). "24:00" ends its day: the time of the next day's "00:00", as hour-ending
-/// records write a day's last hour (and as the example script reads it). A time with a time zone
-/// ("Z", "+05:00") is not read (TimeZoneOf names it): times are taken as they are written, so one
-/// series in several zones would be misordered without a word.
+/// records write a day's last hour (and as the example script reads hours; it reads a daily file
+/// whose every time is 24:00 as the days they end, which one text cannot tell). A time with a
+/// time zone ("Z", "+05:00") is not read (TimeZoneOf names it): times are taken as they are
+/// written, so one series in several zones would be misordered without a word.
 std::optional<double> IsoDateTime(std::string_view text);
 
 /// The time zone that a date and time of day ends with ("Z", "+05:00", "-0700", "+05"), which

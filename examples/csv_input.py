@@ -559,7 +559,8 @@ def output_directory(path):
     it and why, when it is something else (a file), cannot be made (a file where a parent should
     be, no permission), or is a directory where no file can be written (no permission, a read-only
     file system, /proc). Called before the inputs are read, so that a bad --out is told at once,
-    not as a traceback once the work is done. Writing is tried (a temporary file made and removed):
+    not as a traceback once the work is done. Writing is tried (a temporary file made, a byte written
+    to it, and removed):
     os.access answers from the permission bits, which do not stop root, nor tell of ACLs or a
     read-only mount. The directory exists by then, so the system's reason for a file it would not
     make is said in those words (/proc gave "No such file or directory" for a directory that is
@@ -578,7 +579,17 @@ def output_directory(path):
     except OSError as error:
         fail(f"--out {path}: no file can be made there ({cannot_make_reason(error)})")
     try:
+        # A byte written and closed: a full disk with inodes left makes an empty file, and a
+        # network file system may tell of a full disk only at the close.
+        os.write(handle, b"x")
         os.close(handle)
+    except OSError as error:
+        try:
+            os.remove(probe)
+        except OSError:
+            pass
+        fail(f"--out {path}: no file can be written there ({cannot_make_reason(error)})")
+    try:
         os.remove(probe)
     except OSError as error:
         print(f"warning: --out {path}: a test file made there could not be removed ({error.strerror or error}); "

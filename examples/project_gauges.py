@@ -92,8 +92,9 @@ def parallels(south, north):
 
 def fitted_parameters(lons, lats):
     """(central meridian, centre latitude, standard parallel 1, standard parallel 2) that the
-    automatic projection fits to the gauges (far_gauges' fit, worked out directly: a test holds it
-    to vtkGeographicProjection's own record, so that the two cannot drift apart)."""
+    automatic projection fits to the gauges, worked out directly: far_gauges' fit to all the gauges.
+    Tests hold it to vtkGeographicProjection's own record, and far_gauges' leave-one-out moves to
+    this function run on the gauges less each one, so that neither can drift from the filter."""
     turned = sorted(lon + 360.0 if lon < 0.0 else lon for lon in (math.fmod(lon, 360.0) for lon in lons))
     gaps = [turned[0] + 360.0 - turned[-1]] + [turned[j] - turned[j - 1] for j in range(1, len(turned))]
     largest = max(range(len(gaps)), key=lambda j: (gaps[j], -j))  # (the first of equal gaps)
@@ -114,7 +115,9 @@ def far_gauges(lons, lats):
     the central meridian counts as degrees of arc at the gauges' latitude nearest the equator (its
     degrees of longitude times that latitude's cosine: near a pole a degree of longitude is a short
     way); it is not counted where the other gauges span FAR_ROUND_DEGREES of longitude or more.
-    Fewer than FAR_FEWEST gauges: none."""
+    Fewer than FAR_FEWEST gauges: none. Gauges are left out one at a time: two mistyped gauges
+    side by side each keep the other's pull, and neither is named (the projection line shows the
+    parameters)."""
     count = len(lons)
     if count < FAR_FEWEST:
         return []
@@ -125,11 +128,7 @@ def far_gauges(lons, lats):
     order = sorted(range(count), key=turned.__getitem__)
     sorted_lons = [turned[k] for k in order]
     gaps = [sorted_lons[0] + 360.0 - sorted_lons[-1]] + [sorted_lons[j] - sorted_lons[j - 1] for j in range(1, count)]
-    largest = 0  # (the first of equal gaps, as ComputeExtent takes it)
-    for j in range(1, count):
-        if gaps[j] > gaps[largest]:
-            largest = j
-    meridian = arc_middle(sorted_lons[largest], gaps[largest])
+    meridian, *fitted = fitted_parameters(lons, lats)
     widest = sorted(range(count), key=lambda j: (-gaps[j], j))[:3]
     nearest_equator = 0.0 if min(lats) <= 0.0 <= max(lats) else min(abs(lat) for lat in lats)
     arc = math.cos(math.radians(nearest_equator))
@@ -147,7 +146,6 @@ def far_gauges(lons, lats):
             moves[order[i]] = abs(wrapped(arc_middle(sorted_lons[end], gap) - meridian)) * arc
     by_lat = sorted(range(count), key=lats.__getitem__)
     south, north = lats[by_lat[0]], lats[by_lat[-1]]
-    fitted = parallels(south, north)
     for k, rest in ((by_lat[0], (lats[by_lat[1]], north)), (by_lat[-1], (south, lats[by_lat[-2]]))):
         if lats[k] not in rest:  # (a gauge alone at its end of the range)
             moves[k] = max(moves[k], max(abs(a - b) for a, b in zip(parallels(*rest), fitted)))
@@ -242,7 +240,8 @@ def main(argv=None):
                              "the projection fitted to the others would have its central meridian, centre latitude "
                              f"or a standard parallel more than {FAR_DEGREES:g} degrees away (a meridian's move in "
                              "degrees of arc at the gauges' latitude nearest the equator; none named of fewer than "
-                             f"{FAR_FEWEST} gauges)")
+                             f"{FAR_FEWEST} gauges; two mistyped gauges side by side keep each other's pull, and "
+                             "neither is named)")
     chosen.add_argument("--crs", metavar="CRS",
                         help="a projected coordinate system: EPSG:CODE (such as EPSG:5070) or PROJ terms "
                              "(such as '+proj=aea +lat_0=23 +lon_0=-96 +lat_1=29.5 +lat_2=45.5 +x_0=0 +y_0=0')")
@@ -264,7 +263,7 @@ def main(argv=None):
     gauges, lines = read_gauges(args.stations)
     if gauges.GetNumberOfPoints() == 0:
         csv_input.fail(f"{args.stations}: no gauges to project (the file has no rows)")
-    if system:
+    if system is not None:
         projection = projected_input.projection_filter(system, False)
     else:
         projection = vtkGeographicProjection()

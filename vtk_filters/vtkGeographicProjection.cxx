@@ -951,7 +951,7 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
     if (points == 0)
     {
       const char* const what = this->Inverse ? "point taken back to lon/lat"
-        : fitted ? "point projected, and no projection fitted (no TesseraProjection record)"
+        : fitted ? "point projected, and no projection fitted, so no TesseraProjection record"
                  : "point projected";
       vtkWarningMacro(<< tessera_vtk::NoPointsWarning(what));
     }

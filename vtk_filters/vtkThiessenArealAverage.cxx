@@ -1004,6 +1004,9 @@ std::string RingsInsideOtherBlocksWarning(const tessera_vtk::Rings& rings,
 struct vtkThiessenArealAverage::Internals
 {
   vtkMTimeType BuiltFor = 0;
+  /// The unused-settings warning last given: said again only when it changes, not at every build
+  /// (gauges that change with the time steps, as a series of gauge files, rebuild at each step).
+  std::string UnusedSettingsSaid;
   /// Gauges given as a composite data set (a point GeoJSON or shapefile read by
   /// vtkGDALVectorReader: a block per gauge) are joined into one point set, and a point set whose
   /// station ids or values are its vertices' cell data (the same after Merge Blocks) is copied with
@@ -1449,10 +1452,11 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
       { "ValueColumn", this->ValueColumn },
       { "MonthColumn", this->MonthColumn } },
     observations != nullptr);
-  if (!unusedSettings.empty())
+  if (!unusedSettings.empty() && unusedSettings != in.UnusedSettingsSaid)
   {
     vtkWarningMacro(<< unusedSettings);
   }
+  in.UnusedSettingsSaid = unusedSettings;
   tessera::ArealAverageSettings settings;
   if (!this->ProjectionRecord.empty())
   {
@@ -1554,6 +1558,14 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     vtkAbstractArray* given =
       gauges->GetPointData()->GetAbstractArray(this->ValueArrayName.c_str());
     auto* values = vtkDataArray::SafeDownCast(given);
+    if (gauges->GetNumberOfPoints() == 0)
+    {
+      // (a missing array is missing because the points are: said first, as with observations;
+      // an empty one, as an upstream Threshold that kept none leaves, gave no word)
+      throw tessera::InputError(std::string(NoGaugePoints) +
+        (values ? ": no gauge to average"
+                : ": no gauge, no value array '" + this->ValueArrayName + "' (ValueArrayName)"));
+    }
     if (given && !values)
     {
       // (it was "need a numeric point-data array 'value' ...; their arrays are station_id, value")
@@ -1562,12 +1574,6 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
         given->GetClassName() +
         ", not numbers; make it numeric, or give the values as observations (input 2: station id, "
         "time, value), whose text values are read as numbers");
-    }
-    if (!values && gauges->GetNumberOfPoints() == 0)
-    {
-      // (the array is missing because the points are: said first, as with observations)
-      throw tessera::InputError(std::string(NoGaugePoints) + ": no gauge, no value array '" +
-        this->ValueArrayName + "' (ValueArrayName)");
     }
     if (!values)
     {

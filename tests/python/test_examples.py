@@ -3729,6 +3729,21 @@ def test_an_out_directory_says_whether_the_test_file_could_be_made_or_removed():
                 raise AssertionError(f"{errno.errorcode[number]}: the directory was taken")
             finally:
                 csv_input.tempfile.mkstemp = make
+        # A byte that cannot be written (a full disk with inodes left, or told at the close): said
+        # as no file written there, and the empty test file removed.
+        write = csv_input.os.write
+        def full(*arguments):
+            raise OSError(errno.ENOSPC, os.strerror(errno.ENOSPC))
+        csv_input.os.write = full
+        try:
+            csv_input.output_directory(directory)
+        except SystemExit as error:
+            assert_that(str(error) == f"--out {directory}: no file can be written there (no space left on the device)"
+                        and not os.listdir(directory), f"ENOSPC at the write: {error} {os.listdir(directory)}")
+        else:
+            raise AssertionError("ENOSPC at the write: the directory was taken")
+        finally:
+            csv_input.os.write = write
         def kept(path):
             raise OSError(errno.EPERM, os.strerror(errno.EPERM))
         said = io.StringIO()
@@ -3871,6 +3886,38 @@ def test_project_gauges_fits_the_projection_as_the_filter_does():
         fitted = project_gauges.fitted_parameters([lon for lon, _ in places], [lat for _, lat in places])
         assert_that(all(abs(math.remainder(a - b, 360.0)) < 1e-9 for a, b in zip(fitted, expected)),
                     f"{places}: python {fitted}, filter {expected}")
+    # far_gauges' leave-one-out moves, found from the sorted longitudes without refitting, against
+    # fitted_parameters run on the gauges less each one (its rules: a meridian's move in degrees of
+    # arc at the latitude nearest the equator, none where the rest span 180 degrees or more), on
+    # sets with ties, shared longitudes, equal gaps and the antimeridian.
+    for case in range(300):
+        count = rng.randint(project_gauges.FAR_FEWEST, 14)
+        step = rng.choice((0.0, 1.0, 7.5))  # (whole steps make ties and equal gaps)
+        west, width = rng.uniform(-180, 180), rng.choice((3.0, 40.0, 150.0, 300.0))
+        lons, lats = [], []
+        for _ in range(count):
+            lon = west + rng.uniform(0, width)
+            lons.append(math.remainder(round(lon / step) * step if step else lon, 360.0))
+            lats.append(round(rng.uniform(-60, 60)) if step else rng.uniform(-60, 60))
+        if rng.random() < 0.3:
+            lons.append(math.remainder(lons[0] + rng.choice((0.0, 90.0, 170.0)), 360.0))
+            lats.append(rng.uniform(-80, 80))
+        whole = project_gauges.fitted_parameters(lons, lats)
+        lowest = 0.0 if min(lats) <= 0.0 <= max(lats) else min(abs(lat) for lat in lats)
+        expected = {}
+        for i in range(len(lons)):
+            rest_lons, rest_lats = lons[:i] + lons[i + 1:], lats[:i] + lats[i + 1:]
+            part = project_gauges.fitted_parameters(rest_lons, rest_lats)
+            turned = sorted(lon % 360.0 for lon in rest_lons)
+            span = 360.0 - max([turned[0] + 360.0 - turned[-1]] + [b - a for a, b in zip(turned, turned[1:])])
+            move = max(abs(a - b) for a, b in zip(part[1:], whole[1:]))
+            if span < project_gauges.FAR_ROUND_DEGREES:
+                move = max(move, abs(math.remainder(part[0] - whole[0], 360.0)) * math.cos(math.radians(lowest)))
+            if move > project_gauges.FAR_DEGREES:
+                expected[i] = move
+        found = dict(project_gauges.far_gauges(lons, lats))
+        assert_that(found.keys() == expected.keys() and all(abs(found[k] - expected[k]) < 1e-9 for k in found),
+                    f"case {case} {list(zip(lons, lats))}: far_gauges {found}, refitted {expected}")
 
 
 def test_project_gauges_names_gauges_that_move_the_fitted_projection():

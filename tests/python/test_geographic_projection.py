@@ -334,8 +334,8 @@ def test_no_points_give_an_empty_output_without_error():
     f.Update()
     assert_that(not messages and f.GetOutput().GetNumberOfPoints() == 0 and projection_record(f.GetOutput()) is None,
                 f"no points: {messages}")
-    assert_that(len(warnings) == 1 and "the input has no points: no point projected, and no projection fitted (no "
-                "TesseraProjection record) (does the filter before it give none?)" in warnings[0],
+    assert_that(len(warnings) == 1 and "the input has no points: no point projected, and no projection fitted, so no "
+                "TesseraProjection record (does the filter before it give none?)" in warnings[0],
                 f"no points, warned: {warnings}")
     inverse = vtkGeographicProjection()
     inverse_messages = messages_of(inverse)

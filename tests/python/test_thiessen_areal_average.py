@@ -257,6 +257,11 @@ def test_a_gauge_whose_station_id_others_share_is_named_with_its_index():
     assert_that(len(unused) == 1 and "TimeColumn 'date', MonthColumn 'month' not used: no observations table is "
                 "connected (input 2), so the values are the gauges' point-data array 'value'" in unused[0],
                 f"columns without observations: {warnings}")
+    # Said once while it holds: gauges that change (as a series of gauge files does at each time
+    # step) rebuild the average, and the warning came again at each.
+    f.SetGaugesData(gauges_polydata([(0.3, 0.2), (0.8, 0.7)], ["A", "B"], [1.0, 3.0]))
+    f.Update(1)
+    assert_that(len([w for w in warnings if "not used" in w]) == 1, f"said again at a rebuild: {warnings}")
     f.SetObservationsData(csv_reader_table("station_id,date,value\nA,2000-03,5\nB,2000-03,7\n"))
     f.SetMonthColumn("")
     f.SetValueArrayName("precip")
@@ -1419,6 +1424,14 @@ def test_rows_that_cannot_be_used_make_no_step_and_are_listed():
     assert_that(len(errors) == 1 and errors[0].count("the gauges input has no points (does the filter before it "
                                                      "give none?): no gauge, no value array 'value'") == 1,
                 f"no gauges, no observations: {errors}")
+    # With an empty value array (an upstream Threshold that kept no gauge leaves one) too.
+    f = vtkThiessenArealAverage()
+    errors = messages_of(f)
+    f.SetGaugesData(gauges_polydata([], [], []))
+    f.SetCatchmentData(polygon(square))
+    f.Update(1)
+    assert_that(len(errors) == 1 and "the gauges input has no points (does the filter before it give none?): no "
+                "gauge to average" in errors[0], f"no gauges, an empty value array: {errors}")
 
 
 def ellipsoidal_area(ring):
