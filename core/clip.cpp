@@ -1067,8 +1067,7 @@ double Catchment::ClipInto(const Point2* tile,
   {
     return 0.0;
   }
-  if (box.XMin <= this->Box.XMin && box.XMax >= this->Box.XMax && box.YMin <= this->Box.YMin &&
-    box.YMax >= this->Box.YMax && TileHoldsBox(tile, count, this->Box))
+  if (box.Holds(this->Box) && TileHoldsBox(tile, count, this->Box))
   {
     return this->ClipWholeCatchment(tileArea, rings);
   }
@@ -1145,8 +1144,7 @@ double Catchment::ClipWithoutCandidates(const Point2* tile,
   Workspace& work,
   ClippedRings* rings) const
 {
-  const bool boxInside = box.XMin >= this->Box.XMin && box.XMax <= this->Box.XMax &&
-    box.YMin >= this->Box.YMin && box.YMax <= this->Box.YMax;
+  const bool boxInside = this->Box.Holds(box);
   const signed char cellInside = this->EmptyCellInside[firstCell];
   const bool inside =
     boxInside && (cellInside >= 0 ? cellInside == 1 : this->WindingAt(centre, work) != 0);

@@ -128,6 +128,40 @@ bool IsZoneDesignator(std::string_view text)
   return ReadDigits(text, at, 2, minutes) && at == text.size();
 }
 
+/// A calendar date at the start of text (spaces around it aside), with the time of day that may
+/// follow a full date ("T" or a space, then ReadTimeOfDay's), and what is left after them.
+struct DateTimeRead
+{
+  int Year = 0, Month = 1, Day = 1;
+  int Seconds = 0;      ///< into the day (86400 for 24:00)
+  bool HasTime = false; ///< a time of day was read
+  std::string_view Rest;
+};
+
+std::optional<DateTimeRead> ReadDateTime(std::string_view text)
+{
+  text = Trimmed(text);
+  std::size_t at = 0;
+  DateTimeRead read;
+  if (!ReadDate(text, at, read.Year, read.Month, read.Day))
+  {
+    return std::nullopt;
+  }
+  if (AtTimeOfDay(text, at))
+  {
+    ++at;
+    const std::optional<int> seconds = ReadTimeOfDay(text, at);
+    if (!seconds)
+    {
+      return std::nullopt;
+    }
+    read.Seconds = *seconds;
+    read.HasTime = true;
+  }
+  read.Rest = text.substr(at);
+  return read;
+}
+
 } // namespace
 
 double MonthTime(double year, int month)
@@ -137,29 +171,12 @@ double MonthTime(double year, int month)
 
 std::optional<double> IsoDateTime(std::string_view text)
 {
-  text = Trimmed(text);
-  std::size_t at = 0;
-  int year = 0, month = 1, day = 1;
-  if (!ReadDate(text, at, year, month, day))
+  const std::optional<DateTimeRead> read = ReadDateTime(text);
+  if (!read || !read->Rest.empty())
   {
-    return std::nullopt;
+    return std::nullopt; // (not a date, or something after it: a time zone, say)
   }
-  int seconds = 0;
-  if (at < text.size())
-  {
-    // A time of day only after a full date, and nothing after it.
-    if (!AtTimeOfDay(text, at))
-    {
-      return std::nullopt;
-    }
-    ++at;
-    const std::optional<int> ofDay = ReadTimeOfDay(text, at);
-    if (!ofDay || at != text.size())
-    {
-      return std::nullopt;
-    }
-    seconds = *ofDay;
-  }
+  const int year = read->Year, month = read->Month, day = read->Day, seconds = read->Seconds;
   if (seconds == 0 && day == 1)
   {
     return MonthTime(year, month); // bit for bit the value of the year and month columns
@@ -171,19 +188,12 @@ std::optional<double> IsoDateTime(std::string_view text)
 
 std::optional<std::string> TimeZoneOf(std::string_view text)
 {
-  text = Trimmed(text);
-  std::size_t at = 0;
-  int year = 0, month = 1, day = 1;
-  if (!ReadDate(text, at, year, month, day) || !AtTimeOfDay(text, at))
+  const std::optional<DateTimeRead> read = ReadDateTime(text);
+  if (!read || !read->HasTime || !IsZoneDesignator(read->Rest))
   {
     return std::nullopt;
   }
-  ++at;
-  if (!ReadTimeOfDay(text, at) || !IsZoneDesignator(text.substr(at)))
-  {
-    return std::nullopt;
-  }
-  return std::string(text.substr(at));
+  return std::string(read->Rest);
 }
 
 } // namespace tessera

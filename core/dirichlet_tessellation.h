@@ -319,6 +319,7 @@ private:
   // Two-region batch build (two_region_build.cpp).
   /// box: the bounding box of the vertices [0, count).
   void InsertInOrder(std::int32_t count, const Box2& box);
+  // Batch build steps (dirichlet_tessellation.cpp).
   void KeepInsideWindow(const std::vector<std::int32_t>& bounds, std::vector<std::int32_t>& inside);
   void RenameToInputIds(const std::vector<std::int32_t>& order);
   std::int32_t NumberTrianglesByVertex(); ///< OrderTrianglesByVertex's sort (triangle_order.cpp)

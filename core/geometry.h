@@ -52,6 +52,12 @@ struct Box2
     this->Extend(Point2{ other.XMax, other.YMax });
   }
   double LargerSide() const { return std::max(this->XMax - this->XMin, this->YMax - this->YMin); }
+  /// Whether inner lies in this box (closed; false where a bound is NaN).
+  bool Holds(const Box2& inner) const
+  {
+    return this->XMin <= inner.XMin && inner.XMax <= this->XMax && this->YMin <= inner.YMin &&
+      inner.YMax <= this->YMax;
+  }
   /// The largest |coordinate| in the box (what the rounding of its points' coordinates scales
   /// with).
   double LargestMagnitude() const

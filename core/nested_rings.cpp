@@ -27,12 +27,6 @@ bool Usable(const Point2* ring, std::size_t count)
       ring, ring + count, [](const Point2& p) { return std::isfinite(p.x) && std::isfinite(p.y); });
 }
 
-bool BoxHolds(const Box2& outer, const Box2& inner)
-{
-  return outer.XMin <= inner.XMin && inner.XMax <= outer.XMax && outer.YMin <= inner.YMin &&
-    inner.YMax <= outer.YMax;
-}
-
 // Whether the convex ring outer holds inner: every vertex of inner on the inner side of every
 // edge of outer, or on it; and inner is not outer again (one of its vertices strictly inside, or
 // its area smaller beyond rounding; a copy listed from another vertex has the same area to the
@@ -168,8 +162,8 @@ std::optional<std::pair<std::size_t, std::size_t>> FindRingInsideAnother(
     for (const std::size_t a : grid.RingsAt(inner.Vertices[0]))
     {
       const RingView& outer = rings[a];
-      if (a != b && std::fabs(inner.Area) <= std::fabs(outer.Area) &&
-        BoxHolds(outer.Box, inner.Box) && ConvexRingHolds(outer, inner))
+      if (a != b && std::fabs(inner.Area) <= std::fabs(outer.Area) && outer.Box.Holds(inner.Box) &&
+        ConvexRingHolds(outer, inner))
       {
         return std::make_pair(numbers[a], numbers[b]);
       }

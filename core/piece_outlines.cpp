@@ -269,12 +269,6 @@ BoundingLoops ClassifyLoops(const ClippedRings& loops)
   return sorted;
 }
 
-bool BoxInside(const Box2& inner, const Box2& outer)
-{
-  return inner.XMin >= outer.XMin && inner.XMax <= outer.XMax && inner.YMin >= outer.YMin &&
-    inner.YMax <= outer.YMax;
-}
-
 /// Per loop, the holes it holds: each hole goes with the smallest outer ring that holds it (the
 /// largest outer ring when none does, none when there is no outer ring).
 std::vector<std::vector<std::size_t>> HolesByHolder(const ClippedRings& loops,
@@ -291,7 +285,7 @@ std::vector<std::vector<std::size_t>> HolesByHolder(const ClippedRings& loops,
     std::size_t holder = bySize.empty() ? count : bySize.back();
     for (const std::size_t o : bySize)
     {
-      if (BoxInside(sorted.Boxes[h], sorted.Boxes[o]) &&
+      if (sorted.Boxes[o].Holds(sorted.Boxes[h]) &&
         RingInside(RingAt(loops, h), RingSize(loops, h), RingAt(loops, o), RingSize(loops, o)))
       {
         holder = o;

@@ -247,11 +247,7 @@ SnappedRings SnapVerticesOntoSegments(const std::vector<std::size_t>& offsets,
     insertions = FindInsertions(vertices, found, nearOthers, tolerance);
   }
   SortAlongEdges(insertions);
-  InsertedRings inserted = InsertIntoRings(offsets, vertices, insertions);
-  return { std::move(inserted.Offsets),
-    std::move(inserted.Vertices),
-    std::move(inserted.SegmentOf),
-    inserted.Inserted };
+  return InsertIntoRings(offsets, vertices, insertions);
 }
 
 } // namespace tessera

@@ -20,6 +20,7 @@
 // segment's own ring.
 
 #include "geometry.h"
+#include "ring_insertions.h"
 
 #include <cstddef>
 #include <vector>
@@ -27,15 +28,11 @@
 namespace tessera
 {
 
-struct SnappedRings
-{
-  std::vector<std::size_t> Offsets; ///< one per ring, plus the end
-  std::vector<Point2> Vertices;
-  /// Per vertex: the caller's number of the segment that starts there within its ring (a vertex
-  /// put onto a segment takes that segment's), as ValidateRings' segmentOf takes it.
-  std::vector<std::size_t> SegmentOf;
-  std::size_t Inserted = 0; ///< vertices put onto other rings' segments
-};
+/// The snapped rings: Offsets (one per ring, plus the end), Vertices, SegmentOf (per vertex, the
+/// caller's number of the segment that starts there within its ring; a vertex put onto a segment
+/// takes that segment's, as ValidateRings' segmentOf takes it) and Inserted (vertices put onto
+/// other rings' segments): the rings with their insertions as InsertIntoRings writes them.
+using SnappedRings = InsertedRings;
 
 /// The rings (flat offsets, as ValidateRings takes them) with every vertex that lies within
 /// `tolerance` of another ring's segment (strictly between its ends, and farther than the

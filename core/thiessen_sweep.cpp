@@ -322,7 +322,7 @@ private:
   Point2 FaceCentre(const CircleSites& sites) const;
   Point2 WhereBisectorMeetsSide(const Point2& p, const Point2& q, const CircleSites& sites) const;
   void ListCircle(std::int32_t cur);
-  /// Returns whether a window side (a dummy) is on the circle.
+  /// The vertex's entry for each centroid on its circle but A.
   void RecordVertexForOthers(std::int32_t vertex);
   void RecordHalfNeighbours();
 

@@ -508,24 +508,31 @@ std::string NoUsableRowMessage(const ObservationRows& rows,
 /// A warning, or "", for settings changed from their defaults that the inputs leave unused: the
 /// gauges' value array (ValueArrayName) beside an observations table, or the table's columns
 /// without one (a ParaView user changed them and saw no effect, and no word on why).
-std::string UnusedSettingsWarning(const std::string& valueArray,
-  const std::vector<std::pair<const char*, std::string>>& columns,
-  bool observations)
+std::string UnusedSettingsWarning(vtkThiessenArealAverage* self, bool observations)
 {
+  // (the defaults are a new filter's: they are written once, in the class)
+  vtkNew<vtkThiessenArealAverage> defaults;
+  const std::string valueArray = self->GetValueArrayName();
   if (observations)
   {
-    return valueArray == "value" ? std::string()
-                                 : "ValueArrayName '" + valueArray +
+    return valueArray == defaults->GetValueArrayName() ? std::string()
+                                                       : "ValueArrayName '" + valueArray +
         "' is not used: the values come from the observations table (input 2, ValueColumn)";
   }
-  static const std::vector<std::string> defaults = { "station_id", "time", "value", "" };
+  using Getter = const char* (vtkThiessenArealAverage::*)();
+  const std::pair<const char*, Getter> columns[] = {
+    { "StationColumn", &vtkThiessenArealAverage::GetStationColumn },
+    { "TimeColumn", &vtkThiessenArealAverage::GetTimeColumn },
+    { "ValueColumn", &vtkThiessenArealAverage::GetValueColumn },
+    { "MonthColumn", &vtkThiessenArealAverage::GetMonthColumn },
+  };
   std::string changed;
-  for (std::size_t k = 0; k < columns.size(); ++k)
+  for (const auto& [name, get] : columns)
   {
-    if (columns[k].second != defaults[k])
+    const std::string value = (self->*get)();
+    if (value != (defaults.GetPointer()->*get)())
     {
-      changed += (changed.empty() ? "" : ", ") + std::string(columns[k].first) + " '" +
-        columns[k].second + "'";
+      changed += (changed.empty() ? "" : ", ") + std::string(name) + " '" + value + "'";
     }
   }
   return changed.empty() ? std::string()
@@ -1004,9 +1011,19 @@ std::string RingsInsideOtherBlocksWarning(const tessera_vtk::Rings& rings,
 struct vtkThiessenArealAverage::Internals
 {
   vtkMTimeType BuiltFor = 0;
-  /// The unused-settings warning last given: said again only when it changes, not at every build
-  /// (gauges that change with the time steps, as a series of gauge files, rebuild at each step).
-  std::string UnusedSettingsSaid;
+  /// Per topic, the warning last given on it ("" for none): said again only when it changes, not
+  /// at every build (gauges that change with the time steps, as a series of gauge files, rebuild
+  /// at each step, and each step repeated the warnings about the settings).
+  std::map<std::string, std::string> Said;
+
+  /// Whether to give text, the warning on topic now ("" for none): not when it was the last one.
+  bool SayOnce(const std::string& topic, const std::string& text)
+  {
+    std::string& last = this->Said[topic];
+    const bool say = !text.empty() && text != last;
+    last = text;
+    return say;
+  }
   /// Gauges given as a composite data set (a point GeoJSON or shapefile read by
   /// vtkGDALVectorReader: a block per gauge) are joined into one point set, and a point set whose
   /// station ids or values are its vertices' cell data (the same after Merge Blocks) is copied with
@@ -1247,14 +1264,16 @@ int vtkThiessenArealAverage::RequestData(vtkInformation* request,
     }
     if (!in.Average || stamp > in.BuiltFor)
     {
-      if (!stationIds && gauges->GetNumberOfPoints() > 0)
+      // Without observations the ids only name the gauges: a mistyped name was taken silently.
+      const std::string noIds = !stationIds && gauges->GetNumberOfPoints() > 0
+        ? "the gauges have no point-data array '" + this->StationIdArrayName +
+          "' (StationIdArrayName): the outputs have no StationId and the gauges are named by "
+          "their index; their arrays are " +
+          ArrayNames(gauges->GetPointData())
+        : std::string();
+      if (in.SayOnce("station ids", noIds))
       {
-        // Without observations the ids only name the gauges: a mistyped name was taken silently.
-        // (Once per build, not at every time step.)
-        vtkWarningMacro(<< "the gauges have no point-data array '" << this->StationIdArrayName
-                        << "' (StationIdArrayName): the outputs have no StationId and the gauges "
-                           "are named by their index; their arrays are "
-                        << ArrayNames(gauges->GetPointData()));
+        vtkWarningMacro(<< noIds);
       }
       this->Build(gauges, stationIds, catchment, observations);
       in.BuiltFor = stamp;
@@ -1446,17 +1465,11 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   {
     vtkWarningMacro(<< warning);
   }
-  const std::string unusedSettings = UnusedSettingsWarning(this->ValueArrayName,
-    { { "StationColumn", this->StationColumn },
-      { "TimeColumn", this->TimeColumn },
-      { "ValueColumn", this->ValueColumn },
-      { "MonthColumn", this->MonthColumn } },
-    observations != nullptr);
-  if (!unusedSettings.empty() && unusedSettings != in.UnusedSettingsSaid)
+  const std::string unusedSettings = UnusedSettingsWarning(this, observations != nullptr);
+  if (in.SayOnce("unused settings", unusedSettings))
   {
     vtkWarningMacro(<< unusedSettings);
   }
-  in.UnusedSettingsSaid = unusedSettings;
   tessera::ArealAverageSettings settings;
   if (!this->ProjectionRecord.empty())
   {
