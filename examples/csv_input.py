@@ -581,8 +581,10 @@ def output_directory(path):
     try:
         # A byte written and closed: a full disk with inodes left makes an empty file, and a
         # network file system may tell of a full disk only at the close.
-        os.write(handle, b"x")
-        os.close(handle)
+        try:
+            os.write(handle, b"x")
+        finally:
+            os.close(handle)
     except OSError as error:
         try:
             os.remove(probe)

@@ -17,15 +17,13 @@ Conus Albers) gives that system's eastings and northings, false origin and all.
 The other projections are fitted to the gauges (their centre, parallels, UTM zone), so that one
 gauge far from the rest (a lon of 200 for -160, a gauge of another country) moves them: the line
 the script prints gives the projection's parameters, and a warning names, with their lines, the
-gauges that move the fitted projection: those without any one of which (left out alone) the
-projection fitted to the others would have its central meridian, centre latitude or a standard
-parallel more than FAR_DEGREES (2) degrees away. The fit is vtkGeographicProjection's (the middle
-of the shortest longitude arc holding the gauges, the middle of their latitudes, standard parallels
-at 1/6 and 5/6 of them): a network dense in one part and sparse in another gets no warning, a
-mistyped gauge does. A move of the central meridian counts as degrees of arc at the gauges'
-latitude nearest the equator (degrees of longitude times its cosine), and not at all where the
-others span 180 degrees of longitude or more (round a pole); of fewer than FAR_FEWEST (5) gauges
-none is named. A station id given to more than one gauge (compared as the main job compares
+gauges that move a fitted conic (the automatic projection, Albers, Lambert): those without any
+one of which (left out alone) vtkGeographicProjection would fit the others a central meridian or a
+standard parallel more than FAR_DEGREES (2) degrees away. A network dense in one part and sparse in
+another gets no warning, a mistyped gauge does. A move of the central meridian counts as degrees
+of arc at the gauges' latitude nearest the equator (degrees of longitude times its cosine), and not
+at all where the others span 180 degrees of longitude or more (round a pole); of fewer than
+FAR_FEWEST (5) gauges none is named. A station id given to more than one gauge (compared as the main job compares
 them: 0102 and 102 are one) and gauges at one place are named too (each is projected and written).
 
 Run it with Debian's /usr/bin/python3 and PYTHONPATH pointing to build/python (scripts/demo does).
@@ -73,102 +71,108 @@ def wrapped(degrees):
     return (degrees + 180.0) % 360.0 - 180.0
 
 
-def arc_middle(west, gap):
-    """The middle of the longitude arc that starts at west (0 .. 360) and leaves out the gap that
-    ends there, as the core's ComputeExtent places the arc and CentralLongitude takes its middle."""
-    if west >= 180.0:
-        west -= 360.0
-    if west + (360.0 - gap) > 360.0:
-        west -= 360.0
-    return west + 0.5 * max(0.0, 360.0 - gap)
+# The fitted projections whose central meridian and standard parallels far_gauges compares: the
+# conics (the others have no parallels, and UTM reads a zone).
+CONICS = ("automatic", "albers", "lambert")
 
 
-def parallels(south, north):
-    """The fitted centre latitude and standard parallels of a latitude range, as the core's
-    ParametersFromExtent gives them: the middle, and 1/6 and 5/6 of the way from south to north."""
-    span = north - south
-    return 0.5 * (south + north), south + span / 6.0, south + 5.0 * span / 6.0
+def fitted_terms(lons, lats, projection):
+    """(central meridian, standard parallel 1, standard parallel 2) that vtkGeographicProjection
+    fits to the places with the projection (a CONICS name), read off its TesseraProjection record;
+    its warnings (on a span round the globe, say) are kept back."""
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+    points = vtkPoints()
+    points.SetDataTypeToDouble()
+    for lon, lat in zip(lons, lats):
+        points.InsertNextPoint(lon, lat, 0.0)
+    places = vtkPolyData()
+    places.SetPoints(points)
+    fit = csv_input.import_tessera().vtkGeographicProjection()
+    getattr(fit, PROJECTIONS[projection])()
+    kept = []
+    csv_input.catch_vtk_messages(fit, kept.append, kept.append, kept.append)
+    fit.SetInputData(places)
+    fit.Update()
+    return record_terms(fit.GetOutput())
 
 
-def fitted_parameters(lons, lats):
-    """(central meridian, centre latitude, standard parallel 1, standard parallel 2) that the
-    automatic projection fits to the gauges, worked out directly: far_gauges' fit to all the gauges.
-    Tests hold it to vtkGeographicProjection's own record, and far_gauges' leave-one-out moves to
-    this function run on the gauges less each one, so that neither can drift from the filter."""
-    turned = sorted(lon + 360.0 if lon < 0.0 else lon for lon in (math.fmod(lon, 360.0) for lon in lons))
-    gaps = [turned[0] + 360.0 - turned[-1]] + [turned[j] - turned[j - 1] for j in range(1, len(turned))]
-    largest = max(range(len(gaps)), key=lambda j: (gaps[j], -j))  # (the first of equal gaps)
-    return (arc_middle(turned[largest], gaps[largest]),) + parallels(min(lats), max(lats))
+def record_terms(projected):
+    """(lon0, lat1, lat2) of a projected data set's TesseraProjection record."""
+    record = projected.GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
+    terms = dict(term.split("=", 1) for term in record.split() if "=" in term)
+    return tuple(float(terms[key]) for key in ("lon0", "lat1", "lat2"))
 
 
-def far_gauges(lons, lats):
-    """(index, degrees) of each gauge that moves the fitted projection: left out alone, the
-    projection fitted to the other gauges would have its central meridian, its centre latitude or a
-    standard parallel more than FAR_DEGREES degrees from those fitted to all of them. The fit is
-    the core's (vtkGeographicProjection's automatic choice: ComputeExtent and ParametersFromExtent
-    in core/geo.cpp): the central meridian is the middle of the shortest longitude arc that holds
-    every gauge (the circle less its largest gap between neighbouring longitudes), the centre
-    latitude the middle of the latitude range, the standard parallels at 1/6 and 5/6 of it. Only a
-    gauge alone at the range's south or north end moves the parallels, and only one alone at its
-    longitude (the end of a gap) the meridian, so each leave-one-out fit is found from the sorted
-    longitudes and latitudes (the two gaps beside the gauge made one), not refitted. A move of
-    the central meridian counts as degrees of arc at the gauges' latitude nearest the equator (its
-    degrees of longitude times that latitude's cosine: near a pole a degree of longitude is a short
-    way); it is not counted where the other gauges span FAR_ROUND_DEGREES of longitude or more.
-    Fewer than FAR_FEWEST gauges: none. Gauges are left out one at a time: two mistyped gauges
-    side by side each keep the other's pull, and neither is named (the projection line shows the
-    parameters)."""
+def longitude_gaps(lons):
+    """The longitudes in 0 .. 360, sorted, and the gap that ends at each (at the first: across 360)."""
+    turned = sorted(lon % 360.0 for lon in lons)
+    return turned, [turned[0] + 360.0 - turned[-1]] + [b - a for a, b in zip(turned, turned[1:])]
+
+
+def could_move(lons, lats):
+    """The gauges whose leaving out alone can move a fit to the gauges' extent: one alone at the
+    south or north end of their latitudes, or alone at its longitude with the two gaps beside it
+    together as wide as the largest gap at least (only then does the largest gap, which the central
+    meridian is taken across, change). Each is refitted: this only spares refitting the others."""
     count = len(lons)
-    if count < FAR_FEWEST:
+    by_lat = sorted(range(count), key=lats.__getitem__)
+    ends = {by_lat[0], by_lat[-1]}
+    order = sorted(range(count), key=lambda k: lons[k] % 360.0)
+    turned, gaps = longitude_gaps(lons)
+    widest = max(gaps)
+    for j in range(count):
+        beside = gaps[j] + gaps[(j + 1) % count]
+        if gaps[j] > 0.0 and gaps[(j + 1) % count] > 0.0 and beside >= widest:
+            ends.add(order[j])
+    return sorted(ends)
+
+
+def far_gauges(lons, lats, projection="automatic", whole=None):
+    """(index, degrees) of each gauge that moves the fitted conic: left out alone, the central
+    meridian or a standard parallel vtkGeographicProjection fits to the other gauges (fitted_terms)
+    lies more than FAR_DEGREES degrees from those fitted to all of them (whole, when known: the
+    script's own projection's). A move of the central meridian counts as degrees of arc at the
+    gauges' latitude nearest the equator (its degrees of longitude times that latitude's cosine:
+    near a pole a degree of longitude is a short way); it is not counted where the other gauges
+    span FAR_ROUND_DEGREES of longitude or more. Fewer than FAR_FEWEST gauges, or a projection
+    that is no conic: none. Gauges are left out one at a time: two mistyped gauges side by side
+    each keep the other's pull, and neither is named (the projection line shows the parameters)."""
+    if len(lons) < FAR_FEWEST or projection not in CONICS:
         return []
-    moves = [0.0] * count
-    # Longitudes in 0 .. 360, sorted, and the gap that ends at each (at 0: across 360), as in ComputeExtent.
-    turned = [math.fmod(lon, 360.0) for lon in lons]
-    turned = [lon + 360.0 if lon < 0.0 else lon for lon in turned]
-    order = sorted(range(count), key=turned.__getitem__)
-    sorted_lons = [turned[k] for k in order]
-    gaps = [sorted_lons[0] + 360.0 - sorted_lons[-1]] + [sorted_lons[j] - sorted_lons[j - 1] for j in range(1, count)]
-    meridian, *fitted = fitted_parameters(lons, lats)
-    widest = sorted(range(count), key=lambda j: (-gaps[j], j))[:3]
+    whole = whole or fitted_terms(lons, lats, projection)
     nearest_equator = 0.0 if min(lats) <= 0.0 <= max(lats) else min(abs(lat) for lat in lats)
     arc = math.cos(math.radians(nearest_equator))
-    for i in range(count):
-        before, after = (i - 1) % count, (i + 1) % count
-        if sorted_lons[before] == sorted_lons[i] or sorted_lons[after] == sorted_lons[i]:
-            continue  # (another gauge at its longitude keeps the gaps as they are)
-        # Without gauge i, the gaps either side of it are one, ending at the gauge after it.
-        merged = (sorted_lons[after] + 360.0 - sorted_lons[before] if i in (0, count - 1)
-                  else sorted_lons[after] - sorted_lons[before])
-        other = next(j for j in widest if j not in (i, after))
-        end, gap = ((after, merged) if merged > gaps[other] or (merged == gaps[other] and after < other)
-                    else (other, gaps[other]))
-        if 360.0 - gap < FAR_ROUND_DEGREES:
-            moves[order[i]] = abs(wrapped(arc_middle(sorted_lons[end], gap) - meridian)) * arc
-    by_lat = sorted(range(count), key=lats.__getitem__)
-    south, north = lats[by_lat[0]], lats[by_lat[-1]]
-    for k, rest in ((by_lat[0], (lats[by_lat[1]], north)), (by_lat[-1], (south, lats[by_lat[-2]]))):
-        if lats[k] not in rest:  # (a gauge alone at its end of the range)
-            moves[k] = max(moves[k], max(abs(a - b) for a, b in zip(parallels(*rest), fitted)))
-    return [(k, move) for k, move in enumerate(moves) if move > FAR_DEGREES]
+    far = []
+    for i in could_move(lons, lats):
+        rest_lons, rest_lats = lons[:i] + lons[i + 1:], lats[:i] + lats[i + 1:]
+        part = fitted_terms(rest_lons, rest_lats, projection)
+        move = max(abs(part[1] - whole[1]), abs(part[2] - whole[2]))
+        if 360.0 - max(longitude_gaps(rest_lons)[1]) < FAR_ROUND_DEGREES:
+            move = max(move, abs(wrapped(part[0] - whole[0])) * arc)
+        if move > FAR_DEGREES:
+            far.append((i, move))
+    return far
 
 
-def say_far_gauges(path, gauges, lines):
-    """Warns of the gauges that move the fitted projection (far_gauges), naming each with its line
-    and how far it moves it: a projection fitted to the gauges takes them in, and its centre and
-    parallels are not those of the rest."""
-    points = [gauges.GetPoint(k)[:2] for k in range(gauges.GetNumberOfPoints())]
-    far = far_gauges([lon for lon, _ in points], [lat for _, lat in points])
+def say_far_gauges(path, gauges, lines, points, projection, projected):
+    """Warns of the gauges that move the fitted conic (far_gauges; projected: the script's own
+    projection of them, whose fit is the whole set's), naming each with its line and how far it
+    moves it: a projection fitted to the gauges takes them in, and its centre and parallels are
+    not those of the rest."""
+    far = far_gauges([lon for lon, _ in points], [lat for _, lat in points], projection, record_terms(projected))
     if far:
         station = gauges.GetPointData().GetAbstractArray("StationId")
         shown = ", ".join(f"{station.GetValue(k)} at lon {points[k][0]:.15g}, lat {points[k][1]:.15g} "
                           f"(line {lines[k]}: {move:.1f} degrees)" for k, move in far[:20])
         more = f" and {len(far) - 20} more" if len(far) > 20 else ""
         print(f"{path}: warning: {len(far)} gauge(s) move the fitted projection (without any one of them, its "
-              f"central meridian, centre latitude or a standard parallel would move by more than {FAR_DEGREES:g} "
+              f"central meridian or a standard parallel would move by more than {FAR_DEGREES:g} "
               f"degrees; a mistyped place? --crs gives a projection of its own): {shown}{more}", file=sys.stderr)
 
 
-def say_repeated_gauges(path, gauges, lines):
+def say_repeated_gauges(path, gauges, lines, places):
     """Names the gauges that repeat an earlier gauge's station id or place (csv_input.say_repeats),
     as the main job names them: ids are compared as the main job and the filter compare them
     (csv_input.station_key: "0102", "102" and "102.0" are one id), a later gauge's id given as in
@@ -176,7 +180,6 @@ def say_repeated_gauges(path, gauges, lines):
     Each gauge is projected and written all the same."""
     station = gauges.GetPointData().GetAbstractArray("StationId")
     ids = [station.GetValue(k) for k in range(gauges.GetNumberOfPoints())]
-    places = [gauges.GetPoint(k)[:2] for k in range(gauges.GetNumberOfPoints())]
     csv_input.say_repeats(path, lines, [csv_input.station_key(i) for i in ids],
                           "station id(s) are given to more than one gauge (each is projected)",
                           lambda k, first: ids[k] + (f" (as {ids[first]})" if ids[k] != ids[first] else ""), "gauge")
@@ -236,9 +239,10 @@ def main(argv=None):
     chosen = parser.add_mutually_exclusive_group()
     chosen.add_argument("--projection", choices=sorted(PROJECTIONS), default="automatic",
                         help="map projection, fitted to the gauges (default: automatic Albers equal-area); "
-                             "a gauge that moves it is named in a warning: one without which (left out alone) "
-                             "the projection fitted to the others would have its central meridian, centre latitude "
-                             f"or a standard parallel more than {FAR_DEGREES:g} degrees away (a meridian's move in "
+                             "a gauge that moves a fitted conic (automatic, albers, lambert) is named in a warning: "
+                             "one without which (left out alone) the projection fitted to the others would have its "
+                             f"central meridian or a standard parallel more than {FAR_DEGREES:g} degrees away (a "
+                             "meridian's move in "
                              "degrees of arc at the gauges' latitude nearest the equator; none named of fewer than "
                              f"{FAR_FEWEST} gauges; two mistyped gauges side by side keep each other's pull, and "
                              "neither is named)")
@@ -283,9 +287,10 @@ def main(argv=None):
     if projected.GetNumberOfPoints() != gauges.GetNumberOfPoints():
         csv_input.fail("the projection failed and gave no message")
     # (said once the projection has taken the gauges: a gauge it rejects is the run's one line)
-    say_repeated_gauges(args.stations, gauges, lines)
+    places = [gauges.GetPoint(k)[:2] for k in range(gauges.GetNumberOfPoints())]
+    say_repeated_gauges(args.stations, gauges, lines, places)
     if system is None:
-        say_far_gauges(args.stations, gauges, lines)
+        say_far_gauges(args.stations, gauges, lines, places, args.projection, projected)
 
     csv_input.write_vtk(vtkXMLPolyDataWriter(), projected, os.path.join(args.out, "gauges_projected.vtp"))
     ids = projected.GetPointData().GetAbstractArray("StationId")

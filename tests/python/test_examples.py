@@ -14,7 +14,7 @@ import sys
 import tempfile
 
 from tessera_testing import (EXAMPLE_DATA, SOURCE_DIR, assert_close, assert_that, cell_rings, colorado_outline,
-                             make_points, run)
+                             run)
 
 EXAMPLES = os.path.join(SOURCE_DIR, "examples")
 MONTH = (1963, 8)
@@ -3857,41 +3857,14 @@ def test_repeated_points_and_gauges_are_named_with_their_lines():
                     == ["A", "B", "A", "C", "D", "0102", "102", "50109.0", "50109"], f"{projected}")
 
 
-def test_project_gauges_fits_the_projection_as_the_filter_does():
-    # far_gauges works out the automatic projection's fit in Python (to leave each gauge out without
-    # running the filter n times): held here to the filter's own record, so that a change to the
-    # core's fit cannot leave the warning measuring another projection.
-    from tessera import vtkGeographicProjection
-
-    sys.path.insert(0, os.path.join(SOURCE_DIR, "examples"))
-    try:
-        import project_gauges
-    finally:
-        sys.path.pop(0)
+def test_project_gauges_refits_every_gauge_that_could_move_the_fit():
+    # far_gauges refits (with vtkGeographicProjection) only the gauges could_move picks, those whose
+    # leaving out can move a fit to the gauges' extent: held here to refitting every gauge, on sets
+    # with ties, shared longitudes, equal gaps and the antimeridian, for each conic.
+    project_gauges = import_example("project_gauges")
     rng = random.Random(12)
-    cases = [([(-105.0, 39.0), (-102.0, 41.0), (-108.0, 37.0)]),
-             ([(179.0, -17.0), (-179.5, -18.0), (178.0, -20.0), (-177.0, -15.0)]),
-             ([(lon, 60.0) for lon in range(-180, 180, 30)])]
-    for _ in range(30):
-        west, width = rng.uniform(-180, 180), rng.choice((1.0, 20.0, 90.0, 200.0))
-        cases.append([(math.remainder(west + rng.uniform(0, width), 360.0), rng.uniform(-70, 70))
-                      for _ in range(rng.randint(2, 40))])
-    for places in cases:
-        f = vtkGeographicProjection()
-        f.SetInputData(make_points(places))  # (doubles, as the script's gauges: float points fit otherwise)
-        f.Update()
-        record = dict(term.split("=") for term in
-                      f.GetOutput().GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0).split())
-        expected = [float(record[key]) for key in ("lon0", "lat0", "lat1", "lat2")]
-        fitted = project_gauges.fitted_parameters([lon for lon, _ in places], [lat for _, lat in places])
-        assert_that(all(abs(math.remainder(a - b, 360.0)) < 1e-9 for a, b in zip(fitted, expected)),
-                    f"{places}: python {fitted}, filter {expected}")
-    # far_gauges' leave-one-out moves, found from the sorted longitudes without refitting, against
-    # fitted_parameters run on the gauges less each one (its rules: a meridian's move in degrees of
-    # arc at the latitude nearest the equator, none where the rest span 180 degrees or more), on
-    # sets with ties, shared longitudes, equal gaps and the antimeridian.
-    for case in range(300):
-        count = rng.randint(project_gauges.FAR_FEWEST, 14)
+    for case in range(60):
+        count = rng.randint(project_gauges.FAR_FEWEST, 11)
         step = rng.choice((0.0, 1.0, 7.5))  # (whole steps make ties and equal gaps)
         west, width = rng.uniform(-180, 180), rng.choice((3.0, 40.0, 150.0, 300.0))
         lons, lats = [], []
@@ -3902,22 +3875,26 @@ def test_project_gauges_fits_the_projection_as_the_filter_does():
         if rng.random() < 0.3:
             lons.append(math.remainder(lons[0] + rng.choice((0.0, 90.0, 170.0)), 360.0))
             lats.append(rng.uniform(-80, 80))
-        whole = project_gauges.fitted_parameters(lons, lats)
+        projection = project_gauges.CONICS[case % len(project_gauges.CONICS)]
+        whole = project_gauges.fitted_terms(lons, lats, projection)
         lowest = 0.0 if min(lats) <= 0.0 <= max(lats) else min(abs(lat) for lat in lats)
         expected = {}
         for i in range(len(lons)):
             rest_lons, rest_lats = lons[:i] + lons[i + 1:], lats[:i] + lats[i + 1:]
-            part = project_gauges.fitted_parameters(rest_lons, rest_lats)
+            part = project_gauges.fitted_terms(rest_lons, rest_lats, projection)
             turned = sorted(lon % 360.0 for lon in rest_lons)
             span = 360.0 - max([turned[0] + 360.0 - turned[-1]] + [b - a for a, b in zip(turned, turned[1:])])
-            move = max(abs(a - b) for a, b in zip(part[1:], whole[1:]))
+            move = max(abs(part[1] - whole[1]), abs(part[2] - whole[2]))
             if span < project_gauges.FAR_ROUND_DEGREES:
                 move = max(move, abs(math.remainder(part[0] - whole[0], 360.0)) * math.cos(math.radians(lowest)))
             if move > project_gauges.FAR_DEGREES:
                 expected[i] = move
-        found = dict(project_gauges.far_gauges(lons, lats))
+        found = dict(project_gauges.far_gauges(lons, lats, projection))
         assert_that(found.keys() == expected.keys() and all(abs(found[k] - expected[k]) < 1e-9 for k in found),
-                    f"case {case} {list(zip(lons, lats))}: far_gauges {found}, refitted {expected}")
+                    f"case {case} {projection} {list(zip(lons, lats))}: far_gauges {found}, "
+                    f"every gauge refitted {expected}")
+    # A projection that is no conic is not measured (it has no parallels; UTM reads a zone).
+    assert_that(project_gauges.far_gauges([0, 1, 2, 3, 80], [0, 1, 2, 3, 4], "utm") == [], "utm measured")
 
 
 def test_project_gauges_names_gauges_that_move_the_fitted_projection():
@@ -4045,4 +4022,4 @@ if __name__ == "__main__":
          test_ridge_grouping_refuses_a_prefix_that_is_not_a_names_start,
          test_repeated_points_and_gauges_are_named_with_their_lines,
          test_project_gauges_names_gauges_that_move_the_fitted_projection,
-         test_project_gauges_fits_the_projection_as_the_filter_does])
+         test_project_gauges_refits_every_gauge_that_could_move_the_fit])
