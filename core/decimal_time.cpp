@@ -1,7 +1,11 @@
-// Decimal years on a month grid (decimal_time.h): parsing of ISO 8601 calendar dates.
+// Decimal years on a month grid (decimal_time.h): parsing of ISO 8601 calendar dates, and the
+// dates of such times written back as text.
 #include "decimal_time.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdio>
 
 namespace tessera
 {
@@ -169,14 +173,12 @@ double MonthTime(double year, int month)
   return year + (month - 1) / 12.0;
 }
 
-std::optional<double> IsoDateTime(std::string_view text)
+namespace
 {
-  const std::optional<DateTimeRead> read = ReadDateTime(text);
-  if (!read || !read->Rest.empty())
-  {
-    return std::nullopt; // (not a date, or something after it: a time zone, say)
-  }
-  const int year = read->Year, month = read->Month, day = read->Day, seconds = read->Seconds;
+
+/// The time of a date and a time of day, seconds into the day (86400 for 24:00).
+double TimeOfDate(int year, int month, int day, int seconds)
+{
   if (seconds == 0 && day == 1)
   {
     return MonthTime(year, month); // bit for bit the value of the year and month columns
@@ -184,6 +186,119 @@ std::optional<double> IsoDateTime(std::string_view text)
   // (24:00 of a month's last day: intoMonth is 1 exactly, the next month's start bit for bit)
   const double intoMonth = (day - 1 + seconds / 86400.0) / DaysInMonth(year, month);
   return year + (month - 1 + intoMonth) / 12.0;
+}
+
+/// A date and a time of day, in seconds (below 86400).
+struct CalendarTime
+{
+  int Year = 0, Month = 1, Day = 1, Seconds = 0;
+};
+
+/// The whole second whose TimeOfDate is time exactly, found by inverting the month grid and then
+/// trying the months and seconds beside the estimate (the estimate's rounding can be a second
+/// or a month boundary off); nothing when none is.
+std::optional<CalendarTime> CalendarTimeOf(double time)
+{
+  if (!(time >= 0.0 && time < 10000.0))
+  {
+    return std::nullopt;
+  }
+  const int year = static_cast<int>(std::floor(time));
+  const double months = (time - year) * 12.0; // (time - year is exact)
+  const int estimate = static_cast<int>(std::floor(months)) + 1;
+  for (int month = std::max(1, estimate - 1); month <= std::min(12, estimate + 1); ++month)
+  {
+    const int days = DaysInMonth(year, month);
+    const double seconds = std::round((months - (month - 1)) * days * 86400.0);
+    for (double s = seconds - 2; s <= seconds + 2; ++s)
+    {
+      if (s < 0 || s >= days * 86400.0)
+      {
+        continue;
+      }
+      const CalendarTime at{
+        year, month, static_cast<int>(s / 86400) + 1, static_cast<int>(std::fmod(s, 86400.0))
+      };
+      if (TimeOfDate(at.Year, at.Month, at.Day, at.Seconds) == time)
+      {
+        return at;
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+/// How finely a date must be written: 0 its month, 1 its day, 2 its minute, 3 its second.
+int ResolutionOf(const CalendarTime& at)
+{
+  if (at.Seconds % 60 != 0)
+  {
+    return 3;
+  }
+  if (at.Seconds != 0)
+  {
+    return 2;
+  }
+  return at.Day != 1 ? 1 : 0;
+}
+
+std::string DateText(const CalendarTime& at, int resolution)
+{
+  char text[32];
+  const int fields = std::snprintf(text, sizeof text, "%04d-%02d", at.Year, at.Month);
+  std::string out(text, static_cast<std::size_t>(fields));
+  if (resolution >= 1)
+  {
+    std::snprintf(text, sizeof text, "-%02d", at.Day);
+    out += text;
+  }
+  if (resolution >= 2)
+  {
+    std::snprintf(text, sizeof text, " %02d:%02d", at.Seconds / 3600, at.Seconds / 60 % 60);
+    out += text;
+  }
+  if (resolution >= 3)
+  {
+    std::snprintf(text, sizeof text, ":%02d", at.Seconds % 60);
+    out += text;
+  }
+  return out;
+}
+
+} // namespace
+
+std::vector<std::string> DateTexts(const std::vector<double>& times)
+{
+  std::vector<CalendarTime> dates;
+  dates.reserve(times.size());
+  int resolution = 0;
+  for (const double time : times)
+  {
+    const std::optional<CalendarTime> at = CalendarTimeOf(time);
+    if (!at)
+    {
+      return {};
+    }
+    dates.push_back(*at);
+    resolution = std::max(resolution, ResolutionOf(*at));
+  }
+  std::vector<std::string> texts;
+  texts.reserve(dates.size());
+  for (const CalendarTime& at : dates)
+  {
+    texts.push_back(DateText(at, resolution));
+  }
+  return texts;
+}
+
+std::optional<double> IsoDateTime(std::string_view text)
+{
+  const std::optional<DateTimeRead> read = ReadDateTime(text);
+  if (!read || !read->Rest.empty())
+  {
+    return std::nullopt; // (not a date, or something after it: a time zone, say)
+  }
+  return TimeOfDate(read->Year, read->Month, read->Day, read->Seconds);
 }
 
 std::optional<std::string> TimeZoneOf(std::string_view text)

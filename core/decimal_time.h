@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace tessera
 {
@@ -27,6 +28,14 @@ double MonthTime(double year, int month);
 /// time zone ("Z", "+05:00") is not read (TimeZoneOf names it): times are taken as they are
 /// written, so one series in several zones would be misordered without a word.
 std::optional<double> IsoDateTime(std::string_view text);
+
+/// The calendar dates of times that IsoDateTime (or MonthTime with a whole year) gave, as text
+/// that IsoDateTime reads back to each time bit for bit, all at one resolution: the finest that
+/// any of them needs, "YYYY-MM" (each a month's start), "YYYY-MM-DD", "YYYY-MM-DD hh:mm" or
+/// "YYYY-MM-DD hh:mm:ss" (a time of 24:00 was read as the next day's 00:00, and is written so).
+/// Empty when a time is no such date: not a whole second of a year 0 .. 9999 (a time given as a
+/// plain number, say), so that a table gets dates only for a series that was given as dates.
+std::vector<std::string> DateTexts(const std::vector<double>& times);
 
 /// The time zone that a date and time of day ends with ("Z", "+05:00", "-0700", "+05"), which
 /// IsoDateTime does not read; nothing for any other text.

@@ -23,6 +23,7 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkStringArray.h"
 #include "vtkTable.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkVariant.h"
@@ -270,6 +271,10 @@ public:
     }
   }
 
+  /// Whether every time read so far was a calendar date (text, or a year with a month column),
+  /// none a plain number: the tables then get a Date column.
+  bool AllDates() const { return this->OnlyDates; }
+
   /// The row's time; nothing when its time or month field is empty (blank text, or NaN: what a
   /// reader may make of an empty numeric field). Throws InputError naming the row for a time that
   /// is not a finite number, a date or a month 1 .. 12.
@@ -286,6 +291,7 @@ public:
       {
         return this->Date(row, time);
       }
+      this->OnlyDates = false;
       return this->Finite(row, time);
     }
     const NumberColumn::Cell monthCell = this->Months->Read(row);
@@ -347,6 +353,7 @@ private:
           "), which is not read: give the times without it, all in one zone");
     }
     const std::optional<double> number = time.Number();
+    this->OnlyDates = false;
     if (!number || !std::isfinite(*number))
     {
       ThrowRowError(row,
@@ -360,6 +367,7 @@ private:
   std::string TimeColumn, MonthColumn;
   NumberColumn Times;
   std::optional<NumberColumn> Months;
+  mutable bool OnlyDates = true; // AllDates
 };
 
 /// The gauges' station ids as text (StationName), one per gauge; none without an id array.
@@ -381,6 +389,7 @@ struct ObservationRows
 {
   tessera::StationMatch Match;
   tessera::ObservationSteps Steps;
+  bool TimesAreDates = false; ///< every used row's time was a calendar date (RowTimeReader)
 };
 
 /// The rows of the observations table matched with the gauges' station ids (as GaugeNames gives
@@ -417,6 +426,7 @@ ObservationRows ReadRows(vtkTable* table,
     }
   }
   rows.Steps = tessera::StepsOfRows(rows.Match, rowTimes);
+  rows.TimesAreDates = timeOf.AllDates();
   return rows;
 }
 
@@ -921,22 +931,32 @@ vtkMTimeType ColumnMTime(vtkTable* table, const std::string& column)
   return array ? array->GetMTime() : 0;
 }
 
-/// Output 2's columns, a row per step and weighted gauge: Time, then GaugeColumns.
+/// Output 2's columns, a row per step and weighted gauge: Time, Date (when the steps have
+/// dates), then GaugeColumns.
 class WeightRows
 {
 public:
-  explicit WeightRows(vtkAbstractArray* stationIds)
+  WeightRows(vtkAbstractArray* stationIds, const std::vector<std::string>& dates)
     : Gauges(stationIds)
+    , StepDates(dates)
   {
     this->Times->SetName("Time");
+    this->Dates->SetName("Date");
   }
 
-  void Append(double time, const tessera::ArealStep& step, const std::vector<double>& values)
+  void Append(std::size_t stepIndex,
+    double time,
+    const tessera::ArealStep& step,
+    const std::vector<double>& values)
   {
     for (std::size_t k = 0; k < step.Gauges.size(); ++k)
     {
       const std::int32_t g = step.Gauges[k];
       this->Times->InsertNextValue(time);
+      if (!this->StepDates.empty())
+      {
+        this->Dates->InsertNextValue(this->StepDates[stepIndex]);
+      }
       this->Gauges.Append(g, step.Weights[k], step.AreasM2[k], values[static_cast<std::size_t>(g)]);
     }
   }
@@ -945,12 +965,18 @@ public:
   {
     table->Initialize();
     table->AddColumn(this->Times);
+    if (!this->StepDates.empty())
+    {
+      table->AddColumn(this->Dates);
+    }
     this->Gauges.AddTo(table->GetRowData()); // (a table's columns are its row data's arrays)
   }
 
 private:
   vtkNew<vtkDoubleArray> Times;
+  vtkNew<vtkStringArray> Dates;
   GaugeColumns Gauges;
+  const std::vector<std::string>& StepDates; // per step, or none
 };
 
 /// The warning for catchment rings that lie inside a ring of another block, or "" when none does
@@ -1747,7 +1773,17 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   used->SetName("StationsUsed");
   weighted->SetName("StationsWeighted");
   covered->SetName("CoveredFraction");
-  WeightRows weightRows(stationIds);
+  // Dates beside the decimal years, for a series given as dates: a CSV writer's default precision
+  // writes some months alike (ParaView's 5 digits make 1895-03 and 1895-04 both 1895.2).
+  const std::vector<std::string> dates =
+    rows->TimesAreDates ? tessera::DateTexts(in.Times) : std::vector<std::string>();
+  vtkNew<vtkStringArray> dateColumn;
+  dateColumn->SetName("Date");
+  for (const std::string& date : dates)
+  {
+    dateColumn->InsertNextValue(date);
+  }
+  WeightRows weightRows(stationIds, dates);
   std::vector<char> everWeighted(gaugeCount, 0);
   for (std::size_t step = 0; step < in.Times.size(); ++step)
   {
@@ -1767,7 +1803,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     }
     if (this->WeightsTable)
     {
-      weightRows.Append(in.Times[step], result, in.Values[step]);
+      weightRows.Append(step, in.Times[step], result, in.Values[step]);
     }
   }
   weightRows.Fill(in.Weights);
@@ -1816,6 +1852,10 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     });
   in.Summary->Initialize();
   in.Summary->AddColumn(timeColumn);
+  if (!dates.empty())
+  {
+    in.Summary->AddColumn(dateColumn);
+  }
   in.Summary->AddColumn(means);
   in.Summary->AddColumn(used);
   in.Summary->AddColumn(weighted);

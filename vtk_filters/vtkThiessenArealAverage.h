@@ -97,12 +97,17 @@
  * round-off for equal-area areas, about 1e-9 for geodesic ones). Time steps are advertised, so
  * ParaView's time slider re-weights the tiles step by step.
  *
- * Output 1 (vtkTable): one row per time step: `Time`, `ArealMean` (NaN where no gauge reported),
+ * Output 1 (vtkTable): one row per time step: `Time`, `Date` (when every time was given as a
+ * date: text, or a year with a month column; the step's date as text at the finest resolution
+ * the series needs, "1963-08", "1963-08-16" or "1963-08-16 06:00", which reads back to `Time`
+ * exactly: a CSV writer's default precision writes some decimal years alike), `ArealMean` (NaN
+ * where no gauge reported),
  * `StationsUsed` (gauges reporting, co-located ones counted once), `StationsWeighted` (of those,
  * gauges whose tile reaches the catchment), `CoveredFraction` (sum of weights).
  *
  * Output 2 (vtkTable): every gauge's weight at every step, in long format: one row per time step
- * and weighted gauge (steps in order, gauges ascending within a step): `Time`, `StationId` (when
+ * and weighted gauge (steps in order, gauges ascending within a step): `Time`, `Date` (as in
+ * output 1), `StationId` (when
  * the gauges have station ids), `GaugeId`, `Weight`, `Area_m2`, `Value`. A step's weights sum to
  * its `CoveredFraction` and its areal mean is the sum of `Weight` x `Value`. WeightsTable off
  * leaves it empty.

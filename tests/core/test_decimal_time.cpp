@@ -1,11 +1,13 @@
 // Decimal years on a month grid: every day of 1900-2100 (listed by the C library's gmtime, an
 // independent calendar) parses, in calendar order, inside its month's twelfth, with the first of
 // each month equal bit for bit to the year-and-month value; malformed and impossible dates are
-// refused.
+// refused; and each date written back as text reads back to its time bit for bit.
 #include "decimal_time.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <ctime>
 #include <string>
@@ -167,4 +169,68 @@ TEST(DecimalTime, MalformedAndImpossibleDatesAreRefused)
   }
   EXPECT_TRUE(IsoDateTime("2000-02-29"));
   EXPECT_TRUE(IsoDateTime("1964-02-29"));
+}
+
+// Written back as text: every day of the two centuries at a time of day from a random stream
+// (gmtime's calendar again), and the day's start, each reads back to its time bit for bit, at
+// the one resolution the series needs.
+TEST(DecimalTime, DatesAreWrittenBackToTheirTimesBitForBit)
+{
+  const std::vector<Day> days = CalendarDays();
+  std::vector<double> starts, times;
+  std::vector<std::string> clocks;
+  std::uint64_t state = 12345;
+  for (const Day& day : days)
+  {
+    starts.push_back(*IsoDateTime(day.Text));
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    const int seconds = static_cast<int>((state >> 33) % 86400);
+    char clock[16];
+    std::snprintf(
+      clock, sizeof clock, " %02d:%02d:%02d", seconds / 3600, seconds / 60 % 60, seconds % 60);
+    clocks.push_back(day.Text + clock);
+    times.push_back(*IsoDateTime(clocks.back()));
+  }
+  const std::vector<std::string> dayTexts = tessera::DateTexts(starts);
+  const std::vector<std::string> clockTexts = tessera::DateTexts(times);
+  ASSERT_EQ(dayTexts.size(), days.size());
+  ASSERT_EQ(clockTexts.size(), days.size());
+  for (std::size_t k = 0; k < days.size(); ++k)
+  {
+    ASSERT_EQ(dayTexts[k], days[k].Text);
+    ASSERT_EQ(clockTexts[k], clocks[k]);
+    ASSERT_EQ(IsoDateTime(clockTexts[k]), times[k]) << clockTexts[k];
+  }
+}
+
+TEST(DecimalTime, DatesAreWrittenAtTheFinestResolutionTheSeriesNeeds)
+{
+  using tessera::DateTexts;
+  using Texts = std::vector<std::string>;
+  EXPECT_EQ(DateTexts({ MonthTime(1963, 8), MonthTime(1963, 9), 1964.0 }),
+    (Texts{ "1963-08", "1963-09", "1964-01" }));
+  EXPECT_EQ(DateTexts({ MonthTime(1963, 8), *IsoDateTime("1963-08-16") }),
+    (Texts{ "1963-08-01", "1963-08-16" }));
+  EXPECT_EQ(DateTexts({ MonthTime(1963, 8), *IsoDateTime("1963-08-16T06:30") }),
+    (Texts{ "1963-08-01 00:00", "1963-08-16 06:30" }));
+  EXPECT_EQ(DateTexts({ *IsoDateTime("1963-08-16 23:59:59"), *IsoDateTime("1963-08-16 24:00") }),
+    (Texts{ "1963-08-16 23:59:59", "1963-08-17 00:00:00" }));
+  EXPECT_EQ(DateTexts({ *IsoDateTime("1963-12-31 24:00") }), (Texts{ "1964-01" }));
+  EXPECT_EQ(DateTexts({}), Texts{});
+}
+
+TEST(DecimalTime, TimesThatAreNoDatesGetNoTexts)
+{
+  using tessera::DateTexts;
+  // A time between two whole seconds, outside years 0 .. 9999, or not finite: none of the
+  // series is written (it was given as numbers).
+  for (const double time : { 1963.123456789, -0.5, 10000.0, std::nan(""), HUGE_VAL })
+  {
+    EXPECT_TRUE(DateTexts({ MonthTime(1963, 8), time }).empty()) << time;
+  }
+  // Half a second into a day, one ulp beside a day's start: no whole second gives them.
+  const double start = *IsoDateTime("1963-08-16");
+  EXPECT_TRUE(DateTexts({ start + 0.5 / 86400 / 31 / 12 }).empty());
+  EXPECT_TRUE(DateTexts({ std::nextafter(start, 2000.0) }).empty());
+  EXPECT_EQ(DateTexts({ start }), std::vector<std::string>{ "1963-08-16" });
 }

@@ -923,6 +923,8 @@ def test_dates_and_year_month_columns_give_the_same_steps():
     coords, ids, ring, months = read_colorado()
     numeric, _ = summary_of(coords, ids, ring, observations_table(months))
     expected = {name: summary_column(numeric, name) for name in ("Time", "ArealMean", "StationsUsed")}
+    date_of = {year + (month - 1) / 12: f"{year:04d}-{month:02d}" for year, month in months}
+    dates = [date_of[t] for t in expected["Time"]]
     cases = {
         "YYYY-MM text": (lambda y, m: {"date": f"{y:04d}-{m:02d}"}, {"TimeColumn": "date"}),
         "YYYY-MM-01 text": (lambda y, m: {"date": f"{y:04d}-{m:02d}-01"}, {"TimeColumn": "date"}),
@@ -939,6 +941,61 @@ def test_dates_and_year_month_columns_give_the_same_steps():
             assert_that(got == values, f"{what}: {name} {got} differs from the numeric times' {values}")
         steps = f.GetOutputInformation(0).Get(vtkStreamingDemandDrivenPipeline.TIME_STEPS())
         assert_that(list(steps) == expected["Time"], f"{what}: time steps advertised {steps}")
+        # Each step's date beside its decimal year, in both tables (YYYY-MM: every step is a
+        # month's start); the numeric times get none.
+        assert_that(summary_column(f, "Date") == dates, f"{what}: Date {summary_column(f, 'Date')[:3]}")
+        weights = f.GetOutputDataObject(2)
+        weight_dates = [weights.GetColumnByName("Date").GetValue(r) for r in range(weights.GetNumberOfRows())]
+        weight_times = [weights.GetColumnByName("Time").GetValue(r) for r in range(weights.GetNumberOfRows())]
+        assert_that(weight_dates == [date_of[t] for t in weight_times], f"{what}: weights' dates")
+    for table in (numeric.GetOutputDataObject(1), numeric.GetOutputDataObject(2)):
+        assert_that(table.GetColumnByName("Date") is None, "numeric times got a Date column")
+
+
+def test_dates_of_days_and_hours_are_written_as_given():
+    """Hourly text times (24:00 the next day's 00:00) get their dates back at the finest resolution
+    the series needs, each reading back to its step's time; a series with one plain-number time
+    gets no Date column."""
+    coords, ids, ring, months = read_colorado()
+    first = dict(sorted(months.items())[:1])
+    (_, values), = first.items()
+    texts = ["1963-08-01", "1963-08-16 06:30", "1963-08-16 24:00", "1963-12-31 24:00"]
+    expected = ["1963-08-01 00:00", "1963-08-16 06:30", "1963-08-17 00:00", "1964-01-01 00:00"]
+    for times, dated in ((texts, True), (texts[:3] + ["1963.99"], False)):
+        table = vtkTable()
+        s, t, v = vtkStringArray(), vtkStringArray(), vtkDoubleArray()
+        for column, name in ((s, "station_id"), (t, "time"), (v, "value")):
+            column.SetName(name)
+            table.AddColumn(column)
+        for time in times:
+            for sid, value in values.items():
+                s.InsertNextValue(str(sid))
+                t.InsertNextValue(time)
+                v.InsertNextValue(value)
+        f, messages = summary_of(coords, ids, ring, table)
+        assert_that(not messages, f"{times}: {messages}")
+        column = f.GetOutputDataObject(1).GetColumnByName("Date")
+        if not dated:
+            assert_that(column is None, "a series with a number among its times got dates")
+            continue
+        got = [column.GetValue(r) for r in range(column.GetNumberOfValues())]
+        assert_that(got == expected, f"dates {got}, expected {expected}")
+        # Each date, given as the time, is its own step again (the same decimal year).
+        again, _ = summary_of(coords, ids, ring, table_with_times(table, got))
+        assert_that(summary_column(again, "Time") == summary_column(f, "Time"),
+                    f"{got} read back as {summary_column(again, 'Time')}")
+
+
+def table_with_times(table, dates):
+    """table with its time column's distinct texts replaced, in order, by dates."""
+    times = table.GetColumnByName("time")
+    distinct = sorted({times.GetValue(r) for r in range(times.GetNumberOfValues())})
+    new = vtkTable()
+    new.DeepCopy(table)
+    column = new.GetColumnByName("time")
+    for r in range(column.GetNumberOfValues()):
+        column.SetValue(r, dates[distinct.index(column.GetValue(r))])
+    return new
 
 
 def test_the_monthly_csv_as_a_text_reader_gives_it():
@@ -1918,6 +1975,7 @@ if __name__ == "__main__":
          test_window_cells_that_are_not_rings_are_reported,
          test_window_clip_of_tiles_stored_in_float,
          test_dates_and_year_month_columns_give_the_same_steps,
+         test_dates_of_days_and_hours_are_written_as_given,
          test_the_projection_used_is_recorded_and_makes_the_same_tiles,
          test_an_enclave_given_as_a_hole_and_a_feature_of_its_own_is_in_the_catchment,
          test_the_monthly_csv_as_a_text_reader_gives_it,
