@@ -1636,8 +1636,10 @@ class InputFiles:
 
     def gauges_as_lines(self, text):
         """text with "(gauges A and B)" as "(gauges A and B: lines L and M)", and "(gauge A)" (a
-        gauge whose station id others have too) as "(gauge A: line L)" (features of a GIS file)."""
+        gauge whose station id others have too) as "(gauge A: line L)" (features of a GIS file),
+        without the filter's note on the field data that lists them."""
         word = self.place_word()
+        text = re.sub(r" \(listed in [^)]*\)", "", text)
 
         def lines(m):
             a, b = int(m.group(1)), int(m.group(2))

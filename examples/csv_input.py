@@ -412,7 +412,10 @@ def number(row, column, path, line):
             raise ValueError
         value = float(plain)
     except ValueError:
-        fail(f"{path}:{line}: column {column!r}: {text!r} is not a number")
+        comma = re.fullmatch(DECIMAL_COMMA, plain) is not None
+        fail(f"{path}:{line}: column {column!r}: {text!r} is not a number" + (
+             ": a decimal comma is read only in a file whose fields are separated by semicolons or "
+             "tabs; write this one with decimal points" if comma else ""))
     if not math.isfinite(value):  # float() takes inf, 1e999 and nan
         fail(f"{path}:{line}: column {column!r}: {text!r} is not a finite number")
     return value

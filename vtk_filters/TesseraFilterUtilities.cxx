@@ -183,14 +183,14 @@ std::vector<tessera::Point2> CopyPoints2D(vtkPoints* points)
   return xy;
 }
 
-std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points)
+std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points, vtkDataObject* joinedFrom)
 {
   std::vector<tessera::Point2> xy = CopyPoints2D(points);
   for (std::size_t i = 0; i < xy.size(); ++i)
   {
     if (!std::isfinite(xy[i].x) || !std::isfinite(xy[i].y))
     {
-      throw tessera::InputError("point " + std::to_string(i) +
+      throw tessera::InputError(JoinedPointName(joinedFrom, static_cast<vtkIdType>(i)) +
         " has a NaN or infinite coordinate (" + tessera::NumberText(xy[i].x) + ", " +
         tessera::NumberText(xy[i].y) + ")");
     }
@@ -966,6 +966,30 @@ std::vector<PointLeaf> PointLeaves(vtkCompositeDataSet* composite)
   }
   return leaves;
 }
+
+} // namespace
+
+std::string JoinedPointName(vtkDataObject* data, vtkIdType id)
+{
+  const std::string name = "point " + std::to_string(id);
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkIdType first = 0; // the leaf's first point in the joined numbering (as MergedPoints joins)
+    for (const PointLeaf& leaf : PointLeaves(composite))
+    {
+      const vtkIdType count = leaf.Set->GetNumberOfPoints();
+      if (id < first + count)
+      {
+        return name + " (point " + std::to_string(id - first) + " of " + leaf.Label + ")";
+      }
+      first += count;
+    }
+  }
+  return name;
+}
+
+namespace
+{
 
 /// "block 1 ... of the points has 2 unnamed point-data array(s), not carried: ..." for a leaf
 /// with unnamed point-data arrays (arrays are joined by name), or "".

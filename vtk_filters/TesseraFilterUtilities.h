@@ -43,8 +43,13 @@ namespace tessera_vtk
 /// (some beyond 2^53) are a tessera::InputError naming the first.
 std::vector<tessera::Point2> CopyPoints2D(vtkPoints* points);
 
-/// CopyPoints2D, throwing tessera::InputError naming the first point with a NaN or infinite x or y.
-std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points);
+/// CopyPoints2D, throwing tessera::InputError naming the first point with a NaN or infinite x or y
+/// (JoinedPointName: with its block when the points were joined from joinedFrom's blocks).
+std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points, vtkDataObject* joinedFrom = nullptr);
+
+/// "point ID" of the points InputPoints made of data, followed for a composite data set by the
+/// block it came from: "point 6 (point 2 of block 1 (composite index 2))".
+std::string JoinedPointName(vtkDataObject* data, vtkIdType id);
 
 /// A core progress callback for a stage of algorithm's run, from fraction `from` to `to` of it:
 /// it updates the algorithm's progress and returns false once its AbortExecute is set (a

@@ -124,7 +124,7 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     {
       vtkWarningMacro(<< warning);
     }
-    std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
+    std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints(), inputData);
     if (points.empty())
     {
       vtkWarningMacro(<< tessera_vtk::NoPointsWarning("triangle"));

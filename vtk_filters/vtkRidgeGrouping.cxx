@@ -217,7 +217,8 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     {
       vtkWarningMacro(<< warning);
     }
-    const std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints());
+    const std::vector<tessera::Point2> points =
+      tessera_vtk::ReadPoints2D(input->GetPoints(), inputData);
     const tessera::RidgeGrouping grouping(CoreSettings(this));
     tessera_vtk::ProgressOrStop(this, 0.05);
     const tessera::RidgeGroupingResult result = grouping.Run(points);

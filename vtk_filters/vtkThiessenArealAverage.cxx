@@ -1723,7 +1723,8 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     [&](std::size_t k) { return IncompleteRowName(stations, incomplete[k]); });
   const std::vector<tessera::SharedStation>& shared = rows->Match.SharedStations;
   warnOf(shared.size(),
-    "station id(s) are given to more than one gauge; their observations go to the first",
+    "station id(s) are given to more than one gauge; their observations go to the first (listed "
+    "in SharedStationGaugeIds, the first gauges in SharedStationOfGaugeIds)",
     [&](std::size_t k)
     {
       return gaugeNames[static_cast<std::size_t>(shared[k].Gauge)] + " (gauges " +
@@ -1861,6 +1862,14 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   in.Summary->AddColumn(weighted);
   in.Summary->AddColumn(covered);
   tessera_vtk::AddIdFieldArray(in.Summary, "UnobservedGaugeIds", unobserved);
+  std::vector<std::int32_t> sharing, sharingOf; // a gauge with an earlier gauge's station id
+  for (const tessera::SharedStation& station : shared)
+  {
+    sharing.push_back(station.Gauge);
+    sharingOf.push_back(station.FirstGauge);
+  }
+  tessera_vtk::AddIdFieldArray(in.Summary, "SharedStationGaugeIds", sharing);
+  tessera_vtk::AddIdFieldArray(in.Summary, "SharedStationOfGaugeIds", sharingOf);
   tessera_vtk::AddIdFieldArray(in.Summary, "UnweightedGaugeIds", unweighted);
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateGaugeIds", duplicates);
   tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateOfGaugeIds", duplicateOf);

@@ -131,7 +131,10 @@
  * projected; at each step the first that reports is used), rows with a value for such a gauge at
  * a step where an earlier one at its place reported, and gauges with observed values whose tiles
  * never reach the catchment at any step. Output 1's field data lists the gauges and rows among
- * them: `UnobservedGaugeIds`, `DuplicateGaugeIds`, `DuplicateOfGaugeIds`, `UnweightedGaugeIds`,
+ * them: `UnobservedGaugeIds`, `SharedStationGaugeIds` (a gauge whose station id an earlier gauge
+ * has, so that it gets no observation and is also unobserved; with `SharedStationOfGaugeIds`, the
+ * first gauge with that id), `DuplicateGaugeIds`, `DuplicateOfGaugeIds` (a gauge at the place of
+ * an earlier one, and that one), `UnweightedGaugeIds`,
  * `RepeatedObservationRows` (with `RepeatedObservationOfRows`, the earlier row each repeats, whose
  * value is used), `CoLocatedObservationRows` (with `CoLocatedObservationOfRows`, the row used in
  * each one's place, -1 where none is known) and `UnusedObservationRows` (rows not

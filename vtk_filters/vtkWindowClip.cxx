@@ -573,8 +573,8 @@ void ClipBlock(vtkPointSet* tiles,
   if (skipped->GetNumberOfValues() > 0)
   {
     warnings.push_back(std::to_string(skipped->GetNumberOfValues()) +
-      " cell(s) of input 0 are not polygons of 3 or more points, triangles, quads or closed "
-      "polylines (the first is cell " +
+      " cell(s) of input 0 are not polygons of 3 or more points, triangles, quads, pixels or "
+      "closed polylines (the first is cell " +
       std::to_string(skipped->GetValue(0)) +
       ") and were not clipped; their ids are in the field data array SkippedCellIds.");
   }

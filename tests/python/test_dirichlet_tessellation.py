@@ -366,6 +366,18 @@ def test_nan_point_is_named():
     f.Update()
     assert_that(len(messages) == 1 and "point 2" in messages[0], f"error names point 2: {messages}")
     assert_that(f.GetOutput(0).GetNumberOfCells() == 0, "empty output")
+    # Points joined from blocks: the joined id, and the point's own block and number in it.
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+    blocks = vtkMultiBlockDataSet()
+    for k, coords in enumerate([[(0, 0), (1, 1)], [], [(2, 0), (math.nan, 2), (3, 3)]]):
+        blocks.SetBlock(k, make_points(coords))
+    for filter_class in (vtkDirichletTessellation, vtkDelaunayTriangulation):
+        f = filter_class()
+        messages = messages_of(f)
+        f.SetInputData(blocks)
+        f.Update()
+        assert_that(len(messages) == 1 and "point 3 (point 1 of block 2 (composite index 3)) has a NaN" in messages[0],
+                    f"{filter_class.__name__}: {messages}")
 
 
 def test_integer_points_beyond_what_a_double_holds_are_named():

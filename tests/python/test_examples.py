@@ -329,6 +329,7 @@ def test_bad_files_are_named():
         pretty_json = write(out, "pretty.json", '{\n  "station_id": "050848"\n}\n')
         twice = write(out, "twice.csv", "station_id,year,month,precip,Precip\n050848,1950,1,1,100\n")
         grouped = write(out, "grouped.csv", "station_id,year,month,precip\n050848,1950,1,1_5\n")
+        quoted_comma = write(out, "quoted_comma.csv", 'station_id,year,month,precip\n050848,1963,8,"1,5"\n')  # LibreOffice, German
         directory = os.path.join(out, "catchment.d")
         os.mkdir(directory)
         utf16 = os.path.join(out, "utf16.csv")
@@ -387,6 +388,10 @@ def test_bad_files_are_named():
             (("--observations", twice), [twice + ":1", "column 'precip' appears 2 times (columns 4, 5)"]),
             # Python's float() reads 1_5 as 15: not a number in a data file.
             (("--observations", grouped), [grouped + ":2", "'precip'", "'1_5' is not a number"]),
+            # A decimal comma in a file of commas (quoted, as a spreadsheet in a German locale saves
+            # one with commas as separators) is not read, and the message says why.
+            (("--observations", quoted_comma), [quoted_comma + ":2", "'1,5' is not a number: a decimal comma is "
+                                                "read only in a file whose fields are separated by semicolons"]),
             (("--month", "1_963-08"), ["--month", "YYYY-MM"]),
             # As the filter refuses them: 0 made every dry month missing; NaN and inf match nothing.
             (("--missing-value", "0"), ["--missing-value 0 would make every zero value (a dry step) missing"]),

@@ -172,6 +172,34 @@ def test_missing_steps_and_unused_input_are_reported():
           "gauge 3 repeats gauge 0")
 
 
+def test_gauges_given_an_earlier_gauges_station_id_are_listed():
+    """Station ids a, b, a, c, b, a: the later gauges of a shared id get no observation, and are
+    listed with the first gauge of their id (found here by scanning the ids), apart from gauges at
+    one place (DuplicateGaugeIds: none here), and named in the warning."""
+    ids = ["a", "b", "a", "c", "b", "a"]
+    coords = [(0.1 + 0.15 * k, 0.2 + 0.1 * k) for k in range(len(ids))]
+    f = vtkThiessenArealAverage()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetGaugesData(gauges_polydata(coords, ids))
+    f.SetCatchmentData(polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]]))
+    f.SetObservationsData(observations_table({(2000, 1): {"a": 1.0, "b": 2.0, "c": 3.0}}))
+    f.Update(1)
+    expected = [(g, ids.index(sid)) for g, sid in enumerate(ids) if ids.index(sid) != g]
+    fd = f.GetOutputDataObject(1).GetFieldData()
+
+    def listed(name):
+        array = fd.GetArray(name)
+        return [array.GetValue(i) for i in range(array.GetNumberOfTuples())]
+    assert_that(listed("SharedStationGaugeIds") == [g for g, _ in expected], f"{listed('SharedStationGaugeIds')}")
+    assert_that(listed("SharedStationOfGaugeIds") == [first for _, first in expected],
+                f"{listed('SharedStationOfGaugeIds')}")
+    assert_that(listed("DuplicateGaugeIds") == [], "no gauges at one place")
+    assert_that(listed("UnobservedGaugeIds") == [g for g, _ in expected], "the later gauges get no observation")
+    shared = [w for w in warnings if "given to more than one gauge" in w]
+    assert_that(len(shared) == 1 and "(listed in SharedStationGaugeIds" in shared[0]
+                and "a (gauges 0 and 2), b (gauges 1 and 4), a (gauges 0 and 5)" in shared[0], f"{warnings}")
+
+
 def test_values_of_a_co_located_gauge_that_are_not_used_are_listed():
     """Two gauges at one place: at a step where both report, the first's value is used and the
     second's row is listed in CoLocatedObservationRows and named in a warning; at a step where
@@ -1976,6 +2004,7 @@ if __name__ == "__main__":
          test_window_clip_of_tiles_stored_in_float,
          test_dates_and_year_month_columns_give_the_same_steps,
          test_dates_of_days_and_hours_are_written_as_given,
+         test_gauges_given_an_earlier_gauges_station_id_are_listed,
          test_the_projection_used_is_recorded_and_makes_the_same_tiles,
          test_an_enclave_given_as_a_hole_and_a_feature_of_its_own_is_in_the_catchment,
          test_the_monthly_csv_as_a_text_reader_gives_it,

@@ -1113,6 +1113,8 @@ def test_tiles_in_an_unstructured_grid_are_clipped_as_in_polydata():
     assert_that(not errors and cell_values(out, "TileId") == [1] and cell_values(out, "AreaFraction") == [0.25],
                 f"the pixel: {errors} {cell_values(out, 'AreaFraction')}")
     assert_that(skipped.GetNumberOfTuples() == 1 and skipped.GetValue(0) == 0, "the tetrahedron is listed")
+    assert_that(len(warnings) == 1 and "not polygons of 3 or more points, triangles, quads, pixels or closed "
+                "polylines (the first is cell 0)" in warnings[0], f"the warning lists what is clipped: {warnings}")
     assert_that(isinstance(out, vtkPolyData), "polygons out")
 
 
