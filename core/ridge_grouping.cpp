@@ -312,6 +312,22 @@ struct GroupedPoints
   }
 };
 
+/// How far point k (with a projection pixel) lies off its contour, in pixels: from its projection
+/// pixel; but a point past an open contour's end that continues it (its node extended along the
+/// end tangent, each such point within two widths of the one before) lies beyond the end pixel by
+/// design, and its curve goes there: only its distance off the end tangent's line counts. (Along
+/// dense lines the contours stop some 10-20 widths short of the points' ends, and 1910 of 100,000
+/// points on three roads were named as far, every one of them past an end.)
+double OffContour(const GroupedPoints& grouped, std::size_t k)
+{
+  const PointPartition& partition = grouped.Partition;
+  const double pixels = grouped.DistanceToPixel(
+    k, grouped.Contours.Pixels[static_cast<std::size_t>(partition.Projection[k])]);
+  return partition.Continues[k]
+    ? std::sqrt(std::max(0.0, pixels * pixels - partition.Beyond[k] * partition.Beyond[k]))
+    : pixels;
+}
+
 /// ContourDistance per point, and a warning naming the points beyond FarContourWidths basis
 /// widths of their contour: the partition gives every point not continuing a contour past its end
 /// to the nearest contour, so an outlier far from every ridge joins a group silently and pulls its
@@ -328,18 +344,10 @@ void MeasureContourDistances(const GroupedPoints& grouped, RidgeGroupingResult& 
     {
       continue;
     }
-    const double pixels =
-      grouped.DistanceToPixel(k, contours.Pixels[static_cast<std::size_t>(position)]);
-    result.ContourDistance[k] = pixels * grid.Spacing;
-    // A point past an open contour's end that continues it (its node extended along the end
-    // tangent, each such point within two widths of the one before) lies beyond the end pixel by
-    // design, and its curve goes there: only its distance off the end tangent's line counts.
-    // Along dense lines the contours stop some 10-20 widths short of the points' ends, and 1910
-    // of 100,000 points on three roads were named, every one of them past an end.
-    const double off = partition.Continues[k]
-      ? std::sqrt(std::max(0.0, pixels * pixels - partition.Beyond[k] * partition.Beyond[k]))
-      : pixels;
-    if (off > RidgeGrouping::FarContourWidths * width)
+    result.ContourDistance[k] =
+      grouped.DistanceToPixel(k, contours.Pixels[static_cast<std::size_t>(position)]) *
+      grid.Spacing;
+    if (OffContour(grouped, k) > RidgeGrouping::FarContourWidths * width)
     {
       far.push_back(k);
     }
@@ -1112,8 +1120,129 @@ RidgeContours TraceContours(const PixelGrid& grid,
   return contours;
 }
 
+/// Points more than this many basis widths to one side of their contour count as beside it
+/// (NamePointsBesideContours): a curve's own scatter lies within it (a noisy line's points, a
+/// width or so across, stay within 2 widths), and curves closer than MergedCurvesWidths make one
+/// ridge anyway.
+constexpr double BesideWidths = MergedCurvesWidths;
+
+/// How far point k lies to the left (positive) or right (negative) of its contour, in pixels:
+/// from its projection pixel, its side by the contour's direction there (from the pixel two before
+/// to the pixel two after). A point continuing an open contour past its end (OffContour) is
+/// measured off the line of the contour's last two widths instead: an end that hooks over its
+/// last pixels turned the tangent there, and a line's points continuing past it were taken for
+/// points beside it.
+double SignedOffContour(const GroupedPoints& grouped, std::size_t k)
+{
+  const RidgeContours& contours = grouped.Contours;
+  const int c = grouped.Partition.GroupId[k];
+  const int first = contours.Offsets[c], last = contours.Offsets[c + 1] - 1;
+  const int at = grouped.Partition.Projection[k];
+  const int count = last - first + 1;
+  const auto position = [&](int offset)
+  {
+    return contours.Closed[c] ? first + ((at - first + offset) % count + count) % count
+                              : std::clamp(at + offset, first, last);
+  };
+  const bool continues = grouped.Partition.Continues[k];
+  const int back = std::max(2, static_cast<int>(std::lround(2.0 * grouped.Width)));
+  const int towardsEnd = at == first ? -1 : 1;
+  const Point2 from = grouped.PixelPoint(
+    contours.Pixels[std::size_t(continues ? position(-towardsEnd * back) : position(-2))]);
+  const Point2 to = grouped.PixelPoint(contours.Pixels[std::size_t(position(continues ? 0 : 2))]);
+  const Point2 pixel = grouped.PixelPoint(contours.Pixels[std::size_t(at)]);
+  const Point2& p = grouped.PixelPoints[k];
+  const double tx = (to.x - from.x) * towardsEnd, ty = (to.y - from.y) * towardsEnd;
+  const double cross = tx * (p.y - pixel.y) - ty * (p.x - pixel.x);
+  const double length = std::hypot(tx, ty);
+  if (!continues || !(length > 0.0))
+  {
+    const double pixels = grouped.DistanceToPixel(k, contours.Pixels[std::size_t(at)]);
+    return cross < 0.0 ? -pixels : pixels;
+  }
+  return cross / length;
+}
+
+/// Per group, its points and, of them, those more than BesideWidths from their contour
+/// (SignedOffContour) on its left and on its right, with their distances (pixels).
+struct BesideCounts
+{
+  std::size_t Points = 0;
+  std::vector<double> Left, Right;
+};
+
+std::vector<BesideCounts> CountPointsBeside(const GroupedPoints& grouped)
+{
+  const auto& [pixelPoints, contours, partition, grid, width] = grouped;
+  std::vector<BesideCounts> counts(std::size_t(contours.Count()));
+  for (std::size_t k = 0; k < pixelPoints.size(); ++k)
+  {
+    const int c = partition.GroupId[k];
+    const int at = partition.Projection[k];
+    if (c < 0 || at < 0)
+    {
+      continue;
+    }
+    BesideCounts& group = counts[std::size_t(c)];
+    ++group.Points;
+    const double off = SignedOffContour(grouped, k);
+    if (std::abs(off) > BesideWidths * width)
+    {
+      (off > 0.0 ? group.Left : group.Right).push_back(std::abs(off));
+    }
+  }
+  return counts;
+}
+
+/// A warning naming the groups with many points more than BesideWidths basis widths to one side of
+/// their contour: at least 10 points, a tenth of the group, and four in five of its points that
+/// far. That is a curve beside the contour that has no ridge of its own there: two noisy lines
+/// 3.3 widths apart gave one contour that ran along one line and crossed to the other, the first
+/// line's rest joining it from 3 widths away and its curve drawn through neither (in 7 of 20
+/// runs, 5 of them without a word from NameFoldedContours, since the contour never came back).
+/// Or a spread of points beside the ridge, as the Fiji epicentres' eastern cloud is. A noisy
+/// curve's own scatter lies on both sides, within 2 widths.
+///
+///    . . . . . . . . . . .  (a second line: its own ridge stopped, or crossed over)
+///                                  > 2 widths, all on one side
+///    ======================  contour, along the first line
+void NamePointsBesideContours(const GroupedPoints& grouped, RidgeGroupingResult& result)
+{
+  const std::vector<BesideCounts> counts = CountPointsBeside(grouped);
+  std::vector<std::string> named;
+  for (std::size_t c = 0; c < counts.size(); ++c)
+  {
+    const BesideCounts& group = counts[c];
+    const bool left = group.Left.size() >= group.Right.size();
+    std::vector<double> side = left ? group.Left : group.Right;
+    const std::size_t far = group.Left.size() + group.Right.size();
+    if (side.size() < 10 || 10 * side.size() < group.Points || 5 * side.size() < 4 * far)
+    {
+      continue;
+    }
+    std::nth_element(side.begin(), side.begin() + std::ptrdiff_t(side.size() / 2), side.end());
+    const double median = side[side.size() / 2] / grouped.Width;
+    named.push_back("group " + std::to_string(c) + ", " + std::to_string(side.size()) + " of its " +
+      std::to_string(group.Points) + " points, " + NumberText(std::round(10.0 * median) / 10.0) +
+      " widths to its " + (left ? "left" : "right") + " (median)");
+  }
+  if (!named.empty())
+  {
+    result.Warnings.push_back(std::to_string(named.size()) +
+      " group(s) hold many points more than " +
+      WidthsText(BesideWidths, grouped.Width, grouped.Grid) +
+      " to one side of their contour: another curve beside it without a ridge of its own there "
+      "(its ridge may cross over to this one), or a spread of points that the ridge does not "
+      "follow, is grouped with it, and the group's curve does not follow those points (a smaller "
+      "Width, a larger ImageSize, or the Gaussian basis may part two curves; ContourDistance "
+      "gives each point's distance): " +
+      ListNames(named.size(), [&](std::size_t k) { return named[k]; }));
+  }
+}
+
 /// Each point's distance to its contour, and the warnings on the groups: far points, points
-/// without order, contour ends near each other, folded contours, contours away from the points.
+/// without order, contour ends near each other, folded contours, points beside their contours,
+/// contours away from the points.
 void CheckGroups(const GroupedPoints& grouped, double maximumGap, RidgeGroupingResult& result)
 {
   MeasureContourDistances(grouped, result);
@@ -1126,6 +1255,7 @@ void CheckGroups(const GroupedPoints& grouped, double maximumGap, RidgeGroupingR
   const EndPairs endPairs = FindNearEnds(grouped, OpenContourEnds(grouped));
   NameNearContourEnds(grouped, endPairs.Named, result);
   NameFoldedContours(grouped, endPairs.NearlyClosed, result);
+  NamePointsBesideContours(grouped, result);
   NameContoursAwayFromPoints(grouped, result);
 }
 

@@ -70,7 +70,10 @@
  * whichever way they look), are named in a warning with the places, and so is a Width below one
  * pixel. A contour that passes within 4 basis widths of itself where it is much further along
  * itself (running along one curve and back along another beside it, grouping both) is named in a
- * warning with the places. Contours that run more than 3 basis widths
+ * warning with the places; so is a group with many points (a tenth of it, at least 10) more than 2
+ * basis widths to one side of its contour (another curve beside it whose ridge stopped or crossed
+ * over to this one, or a spread of points the ridge does not follow). Contours that run more than
+ * 3 basis widths
  * from every point (the field's ridge across empty space, which can join points of curves far
  * apart into one group) are named with the stretch, and so are contours that no point is grouped
  * by (they are in output 1 with no group and no curve). The image spans every point, so a few

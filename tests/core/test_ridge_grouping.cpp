@@ -1080,6 +1080,119 @@ TEST(RidgeGrouping, AContourFoldedBackAlongAnotherCurveIsNamed)
   }
 }
 
+// The groups that the warning on points beside their contours names, read from its text.
+std::set<int> GroupsNamedBeside(const RidgeGroupingResult& result)
+{
+  std::set<int> groups;
+  for (const std::string& warning : WarningsWith(result, "to one side of their contour"))
+  {
+    const std::regex group("group (\\d+), \\d+ of its");
+    for (std::sregex_iterator it(warning.begin(), warning.end(), group), end; it != end; ++it)
+    {
+      groups.insert(std::stoi((*it)[1].str()));
+    }
+  }
+  return groups;
+}
+
+// How far p lies from an open polyline carried on past both ends along its end directions (from
+// the vertex two before the end): a point past a contour's end that continues it lies along
+// that line.
+double DistanceToExtendedPolyline(const Point2& p, std::vector<Point2> line)
+{
+  if (line.size() >= 3)
+  {
+    for (int end = 0; end < 2; ++end)
+    {
+      const Point2 a = end == 0 ? line[2] : line[line.size() - 3];
+      const Point2 b = end == 0 ? line.front() : line.back();
+      const Point2 far{ b.x + 1e6 * (b.x - a.x), b.y + 1e6 * (b.y - a.y) };
+      line.insert(end == 0 ? line.begin() : line.end(), far);
+    }
+  }
+  return DistanceToPolyline(p, line, false);
+}
+
+// Two noisy lines 18.7 units apart (3.3 widths of the default basis at the automatic image), 300
+// points each: in some runs a contour runs along one line and crosses to the other, the first
+// line's rest joining it from 3 widths away, and nothing was said (its contour never comes back
+// along itself, so no fold is named). Checked against the true lines: a group named holds points
+// of both lines; a group of which at least 15% (and 15 points) are the other line's, more than 2
+// widths from its contour carried past its ends (brute force over the polylines), is named.
+// A noisy line, a circle and lines far apart (4 widths) name none, with either basis.
+TEST(RidgeGrouping, PointsBesideTheirContourAreNamed)
+{
+  int named = 0;
+  for (unsigned seed = 0; seed < 20; ++seed)
+  {
+    std::mt19937 random(seed);
+    std::normal_distribution<double> noise(0.0, 1.0);
+    std::uniform_real_distribution<double> along(0.0, 200.0);
+    std::vector<Point2> points;
+    for (int k = 0; k < 600; ++k)
+    {
+      points.push_back({ along(random) + noise(random), (k < 300 ? 0.0 : 18.7) + noise(random) });
+    }
+    const RidgeGroupingResult result = RidgeGrouping().Run(points);
+    const std::set<int> beside = GroupsNamedBeside(result);
+    const double width = RidgeGroupingSettings().Width * result.PixelSize;
+    for (int group = 0; group < result.Contours.Count(); ++group)
+    {
+      const std::vector<Point2> contour(
+        result.Contours.Points.begin() + result.Contours.Offsets[group],
+        result.Contours.Points.begin() + result.Contours.Offsets[group + 1]);
+      int perLine[2] = { 0, 0 };
+      int farPerLine[2] = { 0, 0 };
+      for (std::size_t k = 0; k < points.size(); ++k)
+      {
+        if (result.GroupId[k] == group)
+        {
+          ++perLine[k / 300];
+          farPerLine[k / 300] += DistanceToExtendedPolyline(points[k], contour) > 2.0 * width;
+        }
+      }
+      const int minority = perLine[0] < perLine[1] ? 0 : 1;
+      const int size = perLine[0] + perLine[1];
+      if (beside.count(group))
+      {
+        EXPECT_GE(perLine[minority], 10) << "seed " << seed << " group " << group;
+      }
+      if (farPerLine[minority] >= 15 && 100 * farPerLine[minority] >= 15 * size)
+      {
+        EXPECT_EQ(beside.count(group), 1u) << "seed " << seed << " group " << group << ": "
+                                           << farPerLine[minority] << " of " << size;
+      }
+    }
+    named += static_cast<int>(beside.size());
+  }
+  EXPECT_GT(named, 0) << "no group named: the case tests nothing";
+
+  for (const tessera::RadialBasis basis :
+    { tessera::RadialBasis::InverseMultiquadric, tessera::RadialBasis::Gaussian })
+  {
+    RidgeGroupingSettings settings;
+    settings.Basis = basis;
+    for (unsigned seed : { 1U, 2U, 3U })
+    {
+      std::mt19937 random(seed);
+      std::normal_distribution<double> noise(0.0, 1.0);
+      std::vector<Point2> line;
+      for (int k = 0; k < 400; ++k)
+      {
+        line.push_back({ 0.5 * k + noise(random), noise(random) });
+      }
+      EXPECT_TRUE(GroupsNamedBeside(RidgeGrouping(settings).Run(line)).empty()) << seed;
+      EXPECT_TRUE(
+        GroupsNamedBeside(RidgeGrouping(settings).Run(NoisyCircle(1000, 100.0, 2.0, seed))).empty())
+        << seed;
+      EXPECT_TRUE(GroupsNamedBeside(RidgeGrouping(settings).Run(Positions(
+                                      SampleCurves(LinesSideBySide(), { 300, 300 }, 1.0, seed))))
+                    .empty())
+        << seed;
+    }
+  }
+}
+
 TEST(RidgeGrouping, ContoursAcrossEmptySpaceAreNamed)
 {
   std::mt19937 random(3);
