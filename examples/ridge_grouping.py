@@ -57,11 +57,16 @@ def read_quakes(path, planar=False):
         return csv_input.number(row, column, path, line)
 
     x, y = ("x", "y") if planar else ("lon", "lat")
-    columns = set() if planar else {c.lower() for c in csv_input.header_columns(path, "epicentres", ("lat", "lon"))}
-    if {"x", "y"} <= columns and not {"lat", "lon"} & columns:
+    wanted = (x, y) if planar else (y, x)  # (as the messages name them: x, y; lat, lon)
+    what = "points" if planar else "epicentres"
+    columns = {c.lower() for c in csv_input.header_columns(path, what, wanted)}
+    if not planar and {"x", "y"} <= columns and not {"lat", "lon"} & columns:
         csv_input.fail(f"{path}: the file has columns x, y and no lat, lon: for plane coordinates, "
                        f"give --planar")
-    for line, row in csv_input.rows(path, (y, x), "points" if planar else "epicentres", optional=("depth", "mag")):
+    if planar and {"lat", "lon"} <= columns and not {"x", "y"} & columns:
+        csv_input.fail(f"{path}: the file has columns lat, lon and no x, y: for latitudes and longitudes "
+                       f"(projected before grouping), leave out --planar")
+    for line, row in csv_input.rows(path, wanted, what, optional=("depth", "mag")):
         lines.append(line)
         points.InsertNextPoint(csv_input.number(row, x, path, line), csv_input.number(row, y, path, line), 0.0)
         depth.InsertNextValue(passenger(row, "depth", line))
@@ -84,7 +89,9 @@ def projected(quakes, path, lines, vtkGeographicProjection):
     # empty, and the grouping would warn about its 0 points before the line that says why.
     csv_input.catch_vtk_messages(projection, lambda text: errors.append(
         csv_input.point_error(text, path, lines, lambda g: "epicentre")
-        or f"{path}: cannot project the epicentres: {text}"))
+        or f"{path}: cannot project the epicentres: {text}"), lambda text: print(
+        f"warning: {path}: {text} (this script projects with the automatic equal-area conic: to group "
+        "them in another projection, project them yourself and give x, y with --planar)", file=sys.stderr))
     projection.Update()
     if errors:
         csv_input.fail(errors[0])
@@ -172,6 +179,19 @@ def polylines(data):
     return lines
 
 
+# The Fiji file's settings, where another file gets the filter's defaults.
+FIJI_SETTINGS = {"width": 4.0, "curve_sigma": 0.1, "minimum_contour_length": 15.0}
+
+
+def chosen_settings(args, fiji, grouping):
+    """Width, curve sigma and minimum contour length: those given, else the Fiji file's settings for
+    the Fiji file and the defaults of grouping (a new vtkRidgeGrouping) for any other."""
+    defaults = FIJI_SETTINGS if fiji else {"width": grouping.GetWidth(), "curve_sigma": grouping.GetCurveSigma(),
+                                           "minimum_contour_length": grouping.GetMinimumContourLength()}
+    return {name: getattr(args, name) if getattr(args, name) is not None else value
+            for name, value in defaults.items()}
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--quakes", default=DEFAULT_QUAKES,
@@ -187,21 +207,24 @@ def main(argv=None):
                         help="start of the output files' names, without a path separator (the files go into "
                              "--out; default: fiji for the Fiji file, else the input file's name without its "
                              "extension)")
-    # (why the example's settings differ from the filter's defaults)
-    parser.add_argument("--width", type=float, default=4.0,
-                        help="basis width in pixels, at most 1020 (default %(default)s; the filter's is 5, which "
-                             "merges the southern half of the trench with the cluster north of it; 4 gives it a "
-                             "group of its own)")
+    # (the Fiji file's settings differ from the filter's defaults, which another file gets: tuned to
+    # the scattered epicentres, CurveSigma 0.1 drew a smooth curve 3.9 units off a clean S curve)
+    parser.add_argument("--width", type=float, default=None,
+                        help="basis width in pixels, at most 1020 (default: the filter's, 5; for the Fiji file "
+                             f"{FIJI_SETTINGS['width']}, since 5 merges the southern half of the trench with the "
+                             "cluster north of it)")
     parser.add_argument("--image-size", type=image_size, default=0,
                         help="pixels along the longer side, 0 for automatic (default %(default)s), else at most 2048 "
-                             "and at least 2 (ceil(width) + 2) + 3 (15 at the default --width 4)")
-    parser.add_argument("--curve-sigma", type=float, default=0.1,
-                        help="RaG curve smoothness (node units: a share of each curve's length; default "
-                             "%(default)s, which draws the arcs' course through the scattered epicentres, where "
-                             "the filter's default, the paper's 0.04, follows more of their scatter)")
-    parser.add_argument("--minimum-contour-length", type=float, default=15.0,
-                        help="pixels (default %(default)s; the filter's is 10; 15 leaves out the shorter ridges "
-                             "of scattered events)")
+                             "and at least 2 (ceil(width) + 2) + 3 (17 at width 5)")
+    parser.add_argument("--curve-sigma", type=float, default=None,
+                        help="RaG curve smoothness (node units: a share of each curve's length; default: the "
+                             "filter's, the paper's 0.04; for the Fiji file "
+                             f"{FIJI_SETTINGS['curve_sigma']}, which draws the arcs' course through the scattered "
+                             "epicentres; a closed curve's radius shrinks by 3%% at 0.04, 18%% at 0.1)")
+    parser.add_argument("--minimum-contour-length", type=float, default=None,
+                        help="pixels (default: the filter's, 10; for the Fiji file "
+                             f"{FIJI_SETTINGS['minimum_contour_length']}, which leaves out the shorter ridges of "
+                             "scattered events)")
     parser.add_argument("--gaussian", action="store_true", help="Gaussian basis instead of inverse multiquadric")
     parser.add_argument("--closest-tangent", action="store_true", help="closest-tangent join rule")
     args = parser.parse_args(argv)
@@ -226,14 +249,15 @@ def main(argv=None):
     say_repeated_points(quakes, args.quakes, lines, args.planar, bundled=fiji and not args.planar)
     errors = []
     grouping = vtkRidgeGrouping()
+    settings = chosen_settings(args, fiji and not args.planar, grouping)
     csv_input.catch_vtk_messages(grouping, lambda text: errors.append(grouping_error(text)),
                                  lambda text: print(f"warning: {with_lines(text, args.quakes, lines)}",
                                                     file=sys.stderr))
     grouping.SetInputData(grouped)
-    grouping.SetWidth(args.width)
+    grouping.SetWidth(settings["width"])
     grouping.SetImageSize(args.image_size)
-    grouping.SetCurveSigma(args.curve_sigma)
-    grouping.SetMinimumContourLength(args.minimum_contour_length)
+    grouping.SetCurveSigma(settings["curve_sigma"])
+    grouping.SetMinimumContourLength(settings["minimum_contour_length"])
     if args.gaussian:
         grouping.SetBasisToGaussian()
     if args.closest_tangent:
@@ -288,7 +312,7 @@ def main(argv=None):
     ax.set_ylabel("y" if args.planar else "y (km)")
     title = "Fiji epicentres" if fiji else os.path.basename(args.quakes) + ": points"
     ax.set_title(title + " grouped by ridges\n" + summary, fontsize=10)
-    ax.legend(loc="lower left", fontsize=8)
+    ax.legend(loc="lower left" if fiji else "best", fontsize=8)  # (Fiji: its empty corner)
     fig.tight_layout()
     fig.savefig(os.path.join(args.out, names["groups.png"]), dpi=110)
     plt.close(fig)

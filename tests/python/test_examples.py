@@ -3175,14 +3175,16 @@ def test_the_other_examples_run_on_their_data():
         status, _, stderr = run_example("ridge_grouping.py", "--out", out, "--quakes", quakes)
         assert_that(status == 1 and "no column 'lon' (it needs lat, lon" in stderr, f"ridge_grouping.py: {stderr}")
         # Longitude by any of its usual names (the Fiji file's is long): the same groups (only
-        # lon, longitude and lng were refused).
+        # lon, longitude and lng were refused), given the Fiji file's settings (another file gets the
+        # filter's defaults).
         with open(os.path.join(EXAMPLE_DATA, "fiji_quakes.csv")) as f:
             fiji = f.read()
+        fiji_settings = ("--width", "4", "--curve-sigma", "0.1", "--minimum-contour-length", "15")
         for name in ("lon", "longitude", "lng"):
             with open(quakes, "w") as f:
                 f.write(fiji.replace('"long"', f'"{name}"', 1))
             renamed = os.path.join(out, name)
-            status, _, stderr = run_example("ridge_grouping.py", "--out", renamed, "--quakes", quakes)
+            status, _, stderr = run_example("ridge_grouping.py", "--out", renamed, "--quakes", quakes, *fiji_settings)
             same = read_polydata(os.path.join(renamed, "quakes_points.vtp")).GetPointData().GetArray("GroupId")
             assert_that(status == 0 and [same.GetValue(i) for i in range(same.GetNumberOfTuples())]
                         == [groups.GetValue(i) for i in range(groups.GetNumberOfTuples())], f"{name}: {stderr}")
@@ -3216,6 +3218,16 @@ def test_the_other_examples_run_on_their_data():
         status, _, stderr = run_example("ridge_grouping.py", "--out", out, "--quakes", plane)
         assert_that(status == 1 and "plane.csv: the file has columns x, y and no lat, lon: for plane coordinates, "
                     "give --planar" in stderr, f"{status} {stderr}")
+        # The other way round: --planar with a file of lat, lon (or latitude, longitude) is named too,
+        # and a file of neither is told the columns in the order they are written, x, y.
+        for header in ("lat,lon", "Latitude,Longitude"):
+            degrees = write(out, "degrees.csv", header + "\n-20,181\n-21,182\n-22,183\n")
+            status, _, stderr = run_example("ridge_grouping.py", "--out", out, "--quakes", degrees, "--planar")
+            assert_that(status == 1 and "degrees.csv: the file has columns lat, lon and no x, y: for latitudes and "
+                        "longitudes (projected before grouping), leave out --planar" in stderr, f"{header}: {stderr}")
+        other = write(out, "other.csv", "a,b\n1,2\n3,4\n")
+        status, _, stderr = run_example("ridge_grouping.py", "--out", out, "--quakes", other, "--planar")
+        assert_that(status == 1 and "has no column 'x', 'y' (it needs x, y;" in stderr, stderr)
         # depth and mag only ride along: a file without them, or with a value missing, is grouped
         # (a missing depth stopped the run), the missing values NaN in the points' arrays.
         from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
@@ -3343,6 +3355,51 @@ def test_ridge_grouping_names_a_bad_epicentre_alone():
             assert_that("warning" not in stderr and "Traceback" not in stderr, f"{what}: {stderr!r}")
             assert_that(stderr.splitlines() == [expected], f"{what}: expected only {expected!r}, got {stderr!r}")
             assert_that(not stdout, f"{what}: printed {stdout!r}")
+
+
+def test_ridge_grouping_tunes_only_the_fiji_file():
+    # The Fiji file's settings (tuned to its scattered epicentres) are not another file's: a clean
+    # S curve got CurveSigma 0.1's curve 3.9 units off it. Another file gets the filter's defaults,
+    # read from the filter; options given win over both.
+    import argparse
+
+    from tessera import vtkRidgeGrouping
+
+    ridge = import_example("ridge_grouping")
+    fresh = vtkRidgeGrouping()
+    unset = argparse.Namespace(width=None, curve_sigma=None, minimum_contour_length=None)
+    assert_that(ridge.chosen_settings(unset, True, vtkRidgeGrouping()) == ridge.FIJI_SETTINGS, "the Fiji file's")
+    assert_that(ridge.chosen_settings(unset, False, vtkRidgeGrouping()) ==
+                {"width": fresh.GetWidth(), "curve_sigma": fresh.GetCurveSigma(),
+                 "minimum_contour_length": fresh.GetMinimumContourLength()}, "another file's")
+    given = argparse.Namespace(width=3.0, curve_sigma=None, minimum_contour_length=12.0)
+    assert_that(ridge.chosen_settings(given, True, vtkRidgeGrouping()) ==
+                {"width": 3.0, "curve_sigma": ridge.FIJI_SETTINGS["curve_sigma"], "minimum_contour_length": 12.0},
+                "options given")
+    assert_that(ridge.FIJI_SETTINGS != {"width": fresh.GetWidth(), "curve_sigma": fresh.GetCurveSigma(),
+                                        "minimum_contour_length": fresh.GetMinimumContourLength()},
+                "the Fiji settings are the defaults: the case tests nothing")
+    # --help gives the filter's defaults as the filter has them.
+    status, stdout, _ = run_example("ridge_grouping.py", "--help")
+    flat = " ".join(stdout.split())
+    assert_that(status == 0 and f"the filter's, {fresh.GetWidth():g};" in flat
+                and f"the paper's {fresh.GetCurveSigma():g};" in flat
+                and f"the filter's, {fresh.GetMinimumContourLength():g};" in flat, f"--help: {flat}")
+
+
+def test_ridge_grouping_says_the_projections_warning_as_a_line_of_its_own():
+    # Epicentres round a pole: the automatic conic is cut in their largest gap, which the
+    # projection warns of; the script says it as its other warnings (it came as VTK's log line,
+    # colours and all, advising settings the script does not have) and says what to do instead.
+    with tempfile.TemporaryDirectory() as directory:
+        ring = "".join(f"{80 + 0.01 * (k % 7)},{-180 + 360 * k / 300:.6f},10,4\n" for k in range(300))
+        quakes = write(directory, "polar.csv", "lat,lon,depth,mag\n" + ring)
+        status, _, stderr = run_example("ridge_grouping.py", "--out", os.path.join(directory, "out"),
+                                        "--quakes", quakes)
+        assert_without_vtk_decoration(stderr, "the projection's warning")
+        lines = [line for line in stderr.splitlines() if "degrees of longitude" in line]
+        assert_that(status == 0 and len(lines) == 1 and lines[0].startswith(f"warning: {quakes}: the data span")
+                    and lines[0].endswith("project them yourself and give x, y with --planar)"), f"{stderr!r}")
 
 
 def test_ridge_grouping_checks_its_out_directory_first():
@@ -4009,6 +4066,8 @@ if __name__ == "__main__":
          test_the_messages_map_to_files_and_lines,
          test_the_other_examples_run_on_their_data,
          test_ridge_grouping_names_a_bad_epicentre_alone,
+         test_ridge_grouping_tunes_only_the_fiji_file,
+         test_ridge_grouping_says_the_projections_warning_as_a_line_of_its_own,
          test_ridge_grouping_checks_its_out_directory_first,
          test_project_gauges_names_a_bad_gauge_by_its_line,
          test_project_gauges_writes_a_projected_systems_own_numbers,
