@@ -228,36 +228,46 @@ std::optional<CalendarTime> CalendarTimeOf(double time)
   return std::nullopt;
 }
 
-/// How finely a date must be written: 0 its month, 1 its day, 2 its minute, 3 its second.
+/// How finely a date must be written: 0 its year, 1 its month, 2 its day, 3 its minute, 4 its
+/// second.
 int ResolutionOf(const CalendarTime& at)
 {
   if (at.Seconds % 60 != 0)
   {
-    return 3;
+    return 4;
   }
   if (at.Seconds != 0)
   {
+    return 3;
+  }
+  if (at.Day != 1)
+  {
     return 2;
   }
-  return at.Day != 1 ? 1 : 0;
+  return at.Month != 1 ? 1 : 0;
 }
 
 std::string DateText(const CalendarTime& at, int resolution)
 {
   char text[32];
-  const int fields = std::snprintf(text, sizeof text, "%04d-%02d", at.Year, at.Month);
-  std::string out(text, static_cast<std::size_t>(fields));
+  std::snprintf(text, sizeof text, "%04d", at.Year);
+  std::string out = text;
   if (resolution >= 1)
   {
-    std::snprintf(text, sizeof text, "-%02d", at.Day);
+    std::snprintf(text, sizeof text, "-%02d", at.Month);
     out += text;
   }
   if (resolution >= 2)
   {
-    std::snprintf(text, sizeof text, " %02d:%02d", at.Seconds / 3600, at.Seconds / 60 % 60);
+    std::snprintf(text, sizeof text, "-%02d", at.Day);
     out += text;
   }
   if (resolution >= 3)
+  {
+    std::snprintf(text, sizeof text, " %02d:%02d", at.Seconds / 3600, at.Seconds / 60 % 60);
+    out += text;
+  }
+  if (resolution >= 4)
   {
     std::snprintf(text, sizeof text, ":%02d", at.Seconds % 60);
     out += text;

@@ -31,8 +31,9 @@ std::optional<double> IsoDateTime(std::string_view text);
 
 /// The calendar dates of times that IsoDateTime (or MonthTime with a whole year) gave, as text
 /// that IsoDateTime reads back to each time bit for bit, all at one resolution: the finest that
-/// any of them needs, "YYYY-MM" (each a month's start), "YYYY-MM-DD", "YYYY-MM-DD hh:mm" or
-/// "YYYY-MM-DD hh:mm:ss" (a time of 24:00 was read as the next day's 00:00, and is written so).
+/// any of them needs, "YYYY" (each a year's start), "YYYY-MM" (a month's), "YYYY-MM-DD",
+/// "YYYY-MM-DD hh:mm" or "YYYY-MM-DD hh:mm:ss" (a time of 24:00 was read as the next day's 00:00,
+/// and is written so).
 /// Empty when a time is no such date: not a whole second of a year 0 .. 9999 (a time given as a
 /// plain number, say), so that a table gets dates only for a series that was given as dates.
 std::vector<std::string> DateTexts(const std::vector<double>& times);

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -1126,45 +1127,66 @@ RidgeContours TraceContours(const PixelGrid& grid,
 /// ridge anyway.
 constexpr double BesideWidths = MergedCurvesWidths;
 
-/// How far point k lies to the left (positive) or right (negative) of its contour, in pixels:
-/// from its projection pixel, its side by the contour's direction there (from the pixel two before
-/// to the pixel two after). A point continuing an open contour past its end (OffContour) is
-/// measured off the line of the contour's last two widths instead: an end that hooks over its
-/// last pixels turned the tangent there, and a line's points continuing past it were taken for
-/// points beside it.
-double SignedOffContour(const GroupedPoints& grouped, std::size_t k)
+/// How far point k lies to the left (positive) or right (negative) of its contour, in pixels;
+/// nothing where the contour gives no direction (a contour of one pixel, a closed one of four).
+/// A point is measured from its projection pixel, its side taken by the contour's way there (from
+/// the pixel two before to the pixel two after). A point past an open contour's end (projected
+/// within two widths of it, and beyond it along the contour's last two widths) is measured off
+/// that chord's line instead, as the curve continues along it: a line's points beyond its contour's
+/// end lie along it, and a hook of the end's last pixels turned the local direction so that they
+/// were taken for points beside it. (The far-points warning measures continuing points off the
+/// partition's end tangent, OffContour.)
+///
+///     p . . . . end ============ inner     p: past the end, measured off the chord's line
+std::optional<double> SignedOffContour(const GroupedPoints& grouped, std::size_t k)
 {
   const RidgeContours& contours = grouped.Contours;
   const int c = grouped.Partition.GroupId[k];
   const int first = contours.Offsets[c], last = contours.Offsets[c + 1] - 1;
   const int at = grouped.Partition.Projection[k];
   const int count = last - first + 1;
-  const auto position = [&](int offset)
-  {
-    return contours.Closed[c] ? first + ((at - first + offset) % count + count) % count
-                              : std::clamp(at + offset, first, last);
-  };
-  const bool continues = grouped.Partition.Continues[k];
-  const int back = std::max(2, static_cast<int>(std::lround(2.0 * grouped.Width)));
-  const int towardsEnd = at == first ? -1 : 1;
-  const Point2 from = grouped.PixelPoint(
-    contours.Pixels[std::size_t(continues ? position(-towardsEnd * back) : position(-2))]);
-  const Point2 to = grouped.PixelPoint(contours.Pixels[std::size_t(position(continues ? 0 : 2))]);
-  const Point2 pixel = grouped.PixelPoint(contours.Pixels[std::size_t(at)]);
+  const auto pixelAt = [&](int position)
+  { return grouped.PixelPoint(contours.Pixels[std::size_t(position)]); };
   const Point2& p = grouped.PixelPoints[k];
-  const double tx = (to.x - from.x) * towardsEnd, ty = (to.y - from.y) * towardsEnd;
-  const double cross = tx * (p.y - pixel.y) - ty * (p.x - pixel.x);
-  const double length = std::hypot(tx, ty);
-  if (!continues || !(length > 0.0))
+  const auto offLine = [&](const Point2& from, const Point2& to, const Point2& through)
   {
-    const double pixels = grouped.DistanceToPixel(k, contours.Pixels[std::size_t(at)]);
-    return cross < 0.0 ? -pixels : pixels;
+    const double tx = to.x - from.x, ty = to.y - from.y;
+    return (tx * (p.y - through.y) - ty * (p.x - through.x)) / std::hypot(tx, ty);
+  };
+  if (!contours.Closed[c])
+  {
+    const int back =
+      std::min(last - first, std::max(2, static_cast<int>(std::lround(2.0 * grouped.Width))));
+    for (const auto& [end, inner] :
+      { std::make_pair(first, first + back), std::make_pair(last, last - back) })
+    {
+      const Point2 e = pixelAt(end), in = pixelAt(inner);
+      const bool beyond = (p.x - e.x) * (e.x - in.x) + (p.y - e.y) * (e.y - in.y) > 0.0;
+      if (back > 0 && std::abs(at - end) <= back && beyond && !(e == in))
+      {
+        // (the contour's way: from its first pixel inwards, from inside to its last)
+        return end == first ? offLine(e, in, e) : offLine(in, e, e);
+      }
+    }
   }
-  return cross / length;
+  const auto near = [&](int offset)
+  {
+    return pixelAt(contours.Closed[c] ? first + ((at - first + offset) % count + count) % count
+                                      : std::clamp(at + offset, first, last));
+  };
+  const Point2 from = near(-2), to = near(2);
+  if (from == to)
+  {
+    return std::nullopt;
+  }
+  const Point2 pixel = pixelAt(at);
+  const double pixels = std::hypot(p.x - pixel.x, p.y - pixel.y);
+  return offLine(from, to, pixel) < 0.0 ? -pixels : pixels;
 }
 
 /// Per group, its points and, of them, those more than BesideWidths from their contour
-/// (SignedOffContour) on its left and on its right, with their distances (pixels).
+/// (SignedOffContour), and no more than FarContourWidths, on its left and on its right, with their
+/// distances (pixels).
 struct BesideCounts
 {
   std::size_t Points = 0;
@@ -1185,10 +1207,13 @@ std::vector<BesideCounts> CountPointsBeside(const GroupedPoints& grouped)
     }
     BesideCounts& group = counts[std::size_t(c)];
     ++group.Points;
-    const double off = SignedOffContour(grouped, k);
-    if (std::abs(off) > BesideWidths * width)
+    // (points beyond FarContourWidths are named by MeasureContourDistances: three clusters far
+    // apart were named by both, one as 157 widths to the left of the other's contour)
+    const std::optional<double> off = SignedOffContour(grouped, k);
+    if (off && std::abs(*off) > BesideWidths * width &&
+      std::abs(*off) <= RidgeGrouping::FarContourWidths * width)
     {
-      (off > 0.0 ? group.Left : group.Right).push_back(std::abs(off));
+      (*off > 0.0 ? group.Left : group.Right).push_back(std::abs(*off));
     }
   }
   return counts;

@@ -414,8 +414,8 @@ def number(row, column, path, line):
     except ValueError:
         comma = re.fullmatch(DECIMAL_COMMA, plain) is not None
         fail(f"{path}:{line}: column {column!r}: {text!r} is not a number" + (
-             ": a decimal comma is read only in a file whose fields are separated by semicolons or "
-             "tabs; write this one with decimal points" if comma else ""))
+             ": a comma in a number is read, as a decimal comma, only in a file whose fields are separated "
+             "by semicolons or tabs; write this one with decimal points (and no digit grouping)" if comma else ""))
     if not math.isfinite(value):  # float() takes inf, 1e999 and nan
         fail(f"{path}:{line}: column {column!r}: {text!r} is not a finite number")
     return value

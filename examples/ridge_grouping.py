@@ -89,15 +89,23 @@ def projected(quakes, path, lines, vtkGeographicProjection):
     # empty, and the grouping would warn about its 0 points before the line that says why.
     csv_input.catch_vtk_messages(projection, lambda text: errors.append(
         csv_input.point_error(text, path, lines, lambda g: "epicentre")
-        or f"{path}: cannot project the epicentres: {text}"), lambda text: print(
-        f"warning: {path}: {text} (this script projects with the automatic equal-area conic: to group "
-        "them in another projection, project them yourself and give x, y with --planar)", file=sys.stderr))
+        or f"{path}: cannot project the epicentres: {text}"),
+        lambda text: print(f"warning: {path}: {projection_warning(text)}", file=sys.stderr))
     projection.Update()
     if errors:
         csv_input.fail(errors[0])
     if projection.GetOutput().GetNumberOfPoints() != quakes.GetNumberOfPoints():
         csv_input.fail(f"{path}: the projection of the epicentres failed and gave no message")
     return projection.GetOutput()
+
+
+def projection_warning(text):
+    """The projection's warning as the script says it: its advice on settings, which the script
+    does not have, is replaced by what can be done here, and a cut conic's "tiles" are curves."""
+    text = text.replace("so their tiles do not meet", "so a curve across it is cut in two")
+    text = re.sub(r"; for data round a pole, .*$", "", text)
+    return (f"{text} (this script projects with the automatic equal-area conic: to group them in another "
+            "projection, project them yourself and give x, y with --planar)")
 
 
 def image_size(text):

@@ -976,7 +976,7 @@ private:
   vtkNew<vtkDoubleArray> Times;
   vtkNew<vtkStringArray> Dates;
   GaugeColumns Gauges;
-  const std::vector<std::string>& StepDates; // per step, or none
+  const std::vector<std::string> StepDates; // per step, or none
 };
 
 /// The warning for catchment rings that lie inside a ring of another block, or "" when none does
@@ -1778,6 +1778,14 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   // writes some months alike (ParaView's 5 digits make 1895-03 and 1895-04 both 1895.2).
   const std::vector<std::string> dates =
     rows->TimesAreDates ? tessera::DateTexts(in.Times) : std::vector<std::string>();
+  if (rows->TimesAreDates && dates.empty())
+  {
+    vtkWarningMacro(<< "the times are dates, but not all of them can be written as dates (years 0 "
+                       ".. 9999: from "
+                    << tessera::NumberText(in.Times.front()) << " to "
+                    << tessera::NumberText(in.Times.back())
+                    << " as decimal years), so the tables have no Date column");
+  }
   vtkNew<vtkStringArray> dateColumn;
   dateColumn->SetName("Date");
   for (const std::string& date : dates)

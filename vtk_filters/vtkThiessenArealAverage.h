@@ -99,8 +99,9 @@
  *
  * Output 1 (vtkTable): one row per time step: `Time`, `Date` (when every time was given as a
  * date: text, or a year with a month column; the step's date as text at the finest resolution
- * the series needs, "1963-08", "1963-08-16" or "1963-08-16 06:00", which reads back to `Time`
- * exactly: a CSV writer's default precision writes some decimal years alike), `ArealMean` (NaN
+ * the series needs, "1963", "1963-08", "1963-08-16" or "1963-08-16 06:00", which reads back to
+ * `Time` exactly: a CSV writer's default precision writes some decimal years alike; years 0 ..
+ * 9999 only, else a warning and no column), `ArealMean` (NaN
  * where no gauge reported),
  * `StationsUsed` (gauges reporting, co-located ones counted once), `StationsWeighted` (of those,
  * gauges whose tile reaches the catchment), `CoveredFraction` (sum of weights).

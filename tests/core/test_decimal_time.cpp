@@ -207,6 +207,7 @@ TEST(DecimalTime, DatesAreWrittenAtTheFinestResolutionTheSeriesNeeds)
 {
   using tessera::DateTexts;
   using Texts = std::vector<std::string>;
+  EXPECT_EQ(DateTexts({ 1963.0, 1964.0, *IsoDateTime("1965") }), (Texts{ "1963", "1964", "1965" }));
   EXPECT_EQ(DateTexts({ MonthTime(1963, 8), MonthTime(1963, 9), 1964.0 }),
     (Texts{ "1963-08", "1963-09", "1964-01" }));
   EXPECT_EQ(DateTexts({ MonthTime(1963, 8), *IsoDateTime("1963-08-16") }),
@@ -215,7 +216,13 @@ TEST(DecimalTime, DatesAreWrittenAtTheFinestResolutionTheSeriesNeeds)
     (Texts{ "1963-08-01 00:00", "1963-08-16 06:30" }));
   EXPECT_EQ(DateTexts({ *IsoDateTime("1963-08-16 23:59:59"), *IsoDateTime("1963-08-16 24:00") }),
     (Texts{ "1963-08-16 23:59:59", "1963-08-17 00:00:00" }));
-  EXPECT_EQ(DateTexts({ *IsoDateTime("1963-12-31 24:00") }), (Texts{ "1964-01" }));
+  EXPECT_EQ(DateTexts({ *IsoDateTime("1963-12-31 24:00") }), (Texts{ "1964" }));
+  EXPECT_EQ(DateTexts({ *IsoDateTime("1963-12-31 24:00"), MonthTime(1964, 2) }),
+    (Texts{ "1964-01", "1964-02" }));
+  // The first and last years written: 0 and 9999 (their last second; its 24:00 is year 10000).
+  EXPECT_EQ(
+    DateTexts({ 0.0, *IsoDateTime("0000-02-29 12:00"), *IsoDateTime("9999-12-31 23:59:59") }),
+    (Texts{ "0000-01-01 00:00:00", "0000-02-29 12:00:00", "9999-12-31 23:59:59" }));
   EXPECT_EQ(DateTexts({}), Texts{});
 }
 

@@ -202,6 +202,17 @@ def test_bad_and_degenerate_input():
     nan.SetInputData(make_points([(0, 0), (1, math.nan), (2, 2)]))
     nan.Update()
     assert_that(len(errors) == 1 and "point 1" in errors[0], f"NaN point named: {errors}")
+    # Joined from blocks: the joined id, and the point's own block and number in it.
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+    blocks = vtkMultiBlockDataSet()
+    blocks.SetBlock(0, make_points([(0, 0), (1, 1)]))
+    blocks.SetBlock(1, make_points([(2, 0), (math.nan, 2)]))
+    nan = vtkRidgeGrouping()
+    errors = messages_of(nan)
+    nan.SetInputData(blocks)
+    nan.Update()
+    assert_that(len(errors) == 1 and "point 3 (point 1 of block 1 (composite index 2)) has a NaN" in errors[0],
+                f"NaN point in a block named: {errors}")
 
 
 def test_bad_settings_and_coordinates_are_errors_and_arrays_are_kept():

@@ -1012,6 +1012,20 @@ def test_dates_of_days_and_hours_are_written_as_given():
         again, _ = summary_of(coords, ids, ring, table_with_times(table, got))
         assert_that(summary_column(again, "Time") == summary_column(f, "Time"),
                     f"{got} read back as {summary_column(again, 'Time')}")
+    # Years outside 0 .. 9999 (a year column may hold -9999 .. 9999) have no date text: no column,
+    # and a warning says why.
+    ancient = dated_table({(-1, 12): values, (0, 1): values}, lambda y, m: {"year": y, "month": m})
+    f = vtkThiessenArealAverage()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetGaugesData(gauges_polydata(coords, ids))
+    f.SetCatchmentData(polygon([ring]))
+    f.SetObservationsData(ancient)
+    f.SetTimeColumn("year")
+    f.SetMonthColumn("month")
+    f.Update(1)
+    assert_that(f.GetOutputDataObject(1).GetColumnByName("Date") is None, "a Date column for year -1")
+    assert_that(any("the times are dates, but not all of them can be written as dates (years 0 .. 9999"
+                    in w for w in warnings), f"{warnings}")
 
 
 def table_with_times(table, dates):
