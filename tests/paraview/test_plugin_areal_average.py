@@ -2,13 +2,15 @@
 table as ParaView reads them (the table's year and month columns give the steps); checks the
 fetched table and the tiles at a requested time."""
 
+import csv
 import math
 import os
 import sys
+import tempfile
 
 from paraview import servermanager
 from paraview.simple import (CreateRenderView, CSVReader, GetTimeKeeper, LoadPlugin, OpenDataFile, OutputPort,
-                             PVTrivialProducer, Show, TableToPoints)
+                             PVTrivialProducer, SaveData, Show, TableToPoints)
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.vtkCommonCore import VTK_STRING, vtkCommand, vtkDoubleArray, vtkOutputWindow, vtkPoints
 from vtkmodules.vtkCommonDataModel import VTK_VERTEX, vtkPolyData
@@ -97,6 +99,22 @@ if august.keys() != tiled.keys() or any(abs(august[g] - w) > 1e-14 for g, w in t
     failures.append(f"output 2's {len(august)} weights for 1963-08 differ from the tiles' {len(tiled)}")
 if len({times.GetValue(r) for r in range(table.GetNumberOfRows())}) != 1236:
     failures.append("output 2 does not list all 1236 months")
+# Saved as File > Save Data saves it, with the CSV writer's default precision: the months' decimal
+# years collide (1895-03 and 1895-04 are both 1895.2), their Date labels do not, and each is the
+# month of a row of the table read (year, month).
+with tempfile.TemporaryDirectory() as saved:
+    means_csv = os.path.join(saved, "means.csv")
+    SaveData(means_csv, proxy=OutputPort(average, 1))
+    with open(means_csv) as written:
+        rows = list(csv.DictReader(written))
+    with open(os.path.join(data, "colorado_monthly_precip.csv")) as read:
+        months = {f"{int(r['year']):04d}-{int(r['month']):02d}" for r in csv.DictReader(read)}
+    labels = [r.get("Date") for r in rows]
+    if len(rows) != 1236 or len(set(labels)) != 1236 or set(labels) != months:
+        failures.append(f"the saved table's Date labels: {len(set(labels))} distinct of {len(rows)}, "
+                        f"{sorted(set(labels) ^ months)[:4]} not the table's months")
+    if len({r["Time"] for r in rows}) == len(rows):
+        failures.append("the saved decimal years no longer collide: the Date check tests nothing")
 # Removing the optional Observations input (the GUI's "None") disconnects it: the gauges' own
 # value array is then the one step. (The property once kept the table connected.) Without a value
 # array the gauges give no step at all: the tiles carry no Weight, and no time is advertised.
