@@ -1006,6 +1006,30 @@ TEST(RidgeGrouping, AClosedCurveBrokenOpenIsNamedWhereverItsEndsLook)
   EXPECT_GT(broken, pastEachOther);
 }
 
+// count x perLine points on `count` horizontal lines (point k on line k % count), of the given
+// length and spacing, at uniform places along them, with Gaussian noise across (and along).
+std::vector<Point2> NoisyLines(unsigned seed,
+  int count,
+  int perLine,
+  Point2 lengthAndSpacing,
+  double noise,
+  bool noiseAlong)
+{
+  std::mt19937 random(seed);
+  std::normal_distribution<double> offset(0.0, noise);
+  std::uniform_real_distribution<double> along(0.0, lengthAndSpacing.x);
+  std::vector<Point2> points;
+  for (int k = 0; k < count * perLine; ++k)
+  {
+    // (each draw in a statement of its own: the order of operands' evaluation is unspecified)
+    double x = along(random);
+    x += noiseAlong ? offset(random) : 0.0;
+    const double y = lengthAndSpacing.y * (k % count) + offset(random);
+    points.push_back({ x, y });
+  }
+  return points;
+}
+
 // Three noisy lines 10 units apart (3.3 Gaussian widths at 512 pixels), 300 points each: in some
 // runs a contour runs along one line, round its end and back along the next, grouping points of
 // both, and nothing was said. The groups named as folded are those found by brute force over the
@@ -1019,15 +1043,7 @@ TEST(RidgeGrouping, AContourFoldedBackAlongAnotherCurveIsNamed)
   std::size_t folds = 0;
   for (unsigned seed = 0; seed < 12; ++seed)
   {
-    std::mt19937 random(seed);
-    std::normal_distribution<double> noise(0.0, 0.5);
-    std::uniform_real_distribution<double> along(0.0, 300.0);
-    std::vector<Point2> points;
-    for (int k = 0; k < 900; ++k)
-    {
-      const double x = along(random);
-      points.push_back({ x, 10.0 * (k % 3) + noise(random) });
-    }
+    const std::vector<Point2> points = NoisyLines(seed, 3, 300, { 300.0, 10.0 }, 0.5, false);
     const RidgeGroupingResult result = RidgeGrouping(settings).Run(points);
     const std::set<int> folded = FoldedGroups(result, points, settings.Width);
     EXPECT_EQ(NamedFolds(result), folded) << "seed " << seed;
@@ -1127,14 +1143,7 @@ TEST(RidgeGrouping, PointsBesideTheirContourAreNamed)
   int named = 0, required = 0;
   for (unsigned seed = 0; seed < 40; ++seed)
   {
-    std::mt19937 random(seed);
-    std::normal_distribution<double> noise(0.0, 1.0);
-    std::uniform_real_distribution<double> along(0.0, 200.0);
-    std::vector<Point2> points;
-    for (int k = 0; k < 600; ++k)
-    {
-      points.push_back({ along(random) + noise(random), (k < 300 ? 0.0 : 18.7) + noise(random) });
-    }
+    const std::vector<Point2> points = NoisyLines(seed, 2, 300, { 200.0, 18.7 }, 1.0, true);
     const RidgeGroupingResult result = RidgeGrouping().Run(points);
     const std::set<int> beside = GroupsNamedBeside(result);
     const double width = RidgeGroupingSettings().Width * result.PixelSize;
@@ -1149,8 +1158,8 @@ TEST(RidgeGrouping, PointsBesideTheirContourAreNamed)
       {
         if (result.GroupId[k] == group)
         {
-          ++perLine[k / 300];
-          farPerLine[k / 300] += DistanceToExtendedPolyline(points[k], contour) > 2.0 * width;
+          ++perLine[k % 2];
+          farPerLine[k % 2] += DistanceToExtendedPolyline(points[k], contour) > 2.0 * width;
         }
       }
       const int minority = perLine[0] < perLine[1] ? 0 : 1;

@@ -167,6 +167,16 @@ def projection_record(data):
     return array.GetValue(0) if array else None
 
 
+def points_in_blocks(*block_coords):
+    """vtkMultiBlockDataSet with block k holding make_points(block_coords[k])."""
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
+
+    blocks = vtkMultiBlockDataSet()
+    for k, coords in enumerate(block_coords):
+        blocks.SetBlock(k, make_points(coords))
+    return blocks
+
+
 def make_points(coords, **arrays):
     """vtkPolyData of (x, y) points (z = 0, double precision), with one double point-data array
     per keyword argument (name=list of values)."""

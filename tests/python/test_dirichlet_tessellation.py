@@ -11,8 +11,8 @@ from vtkmodules.vtkCommonCore import vtkCommand, vtkIdList
 from vtkmodules.vtkFiltersCore import vtkDelaunay2D
 
 from tessera import vtkDelaunayTriangulation, vtkDirichletTessellation, vtkWindowClip
-from tessera_testing import (assert_close, assert_that, double_array, make_points, messages_of, polygon, run,
-                             warnings_of_update)
+from tessera_testing import (assert_close, assert_that, double_array, make_points, messages_of, points_in_blocks,
+                             polygon, run, warnings_of_update)
 
 
 def tessellate(data, bounds=None, algorithm="GreenSibson"):
@@ -367,10 +367,7 @@ def test_nan_point_is_named():
     assert_that(len(messages) == 1 and "point 2" in messages[0], f"error names point 2: {messages}")
     assert_that(f.GetOutput(0).GetNumberOfCells() == 0, "empty output")
     # Points joined from blocks: the joined id, and the point's own block and number in it.
-    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
-    blocks = vtkMultiBlockDataSet()
-    for k, coords in enumerate([[(0, 0), (1, 1)], [], [(2, 0), (math.nan, 2), (3, 3)]]):
-        blocks.SetBlock(k, make_points(coords))
+    blocks = points_in_blocks([(0, 0), (1, 1)], [], [(2, 0), (math.nan, 2), (3, 3)])
     for filter_class in (vtkDirichletTessellation, vtkDelaunayTriangulation):
         f = filter_class()
         messages = messages_of(f)

@@ -9,7 +9,8 @@ import numpy as np
 from vtkmodules.vtkCommonCore import vtkCommand
 
 from tessera import vtkRidgeGrouping
-from tessera_testing import assert_close, assert_that, double_array, make_points, messages_of, run, warnings_of_update
+from tessera_testing import (assert_close, assert_that, double_array, make_points, messages_of, points_in_blocks, run,
+                             warnings_of_update)
 
 
 def adjusted_rand_index(a, b):
@@ -203,13 +204,9 @@ def test_bad_and_degenerate_input():
     nan.Update()
     assert_that(len(errors) == 1 and "point 1" in errors[0], f"NaN point named: {errors}")
     # Joined from blocks: the joined id, and the point's own block and number in it.
-    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet
-    blocks = vtkMultiBlockDataSet()
-    blocks.SetBlock(0, make_points([(0, 0), (1, 1)]))
-    blocks.SetBlock(1, make_points([(2, 0), (math.nan, 2)]))
     nan = vtkRidgeGrouping()
     errors = messages_of(nan)
-    nan.SetInputData(blocks)
+    nan.SetInputData(points_in_blocks([(0, 0), (1, 1)], [(2, 0), (math.nan, 2)]))
     nan.Update()
     assert_that(len(errors) == 1 and "point 3 (point 1 of block 1 (composite index 2)) has a NaN" in errors[0],
                 f"NaN point in a block named: {errors}")
