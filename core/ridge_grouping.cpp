@@ -653,7 +653,8 @@ struct ContourEnd
 {
   int Contour;
   Point2 At;      // where the group's points end (pixel units)
-  Point2 Outward; // from a pixel a width or so inside the contour towards its end pixel
+  Point2 Outward; // from a pixel a width or so inside the contour towards its end pixel (the tip
+                  // of an end that hooks back: EndTip)
 };
 
 /// Two contour ends within NearEndWidths basis widths of each other, Pixels apart.
@@ -700,6 +701,35 @@ std::pair<std::vector<std::ptrdiff_t>, std::vector<std::ptrdiff_t>> EndPointsOfG
   return { std::move(lowest), std::move(highest) };
 }
 
+/// The position an open contour's end (end, its neighbour inside at end + inward) reaches out to:
+/// of the `reach` pixels before the end and the end, the one farthest from the pixel `reach` inside
+/// (the nearest to the end of equals). A ridge's end can hook back over its last few pixels, and
+/// its direction there then points back along the curve: two pieces of a noisy sine with a gap of
+/// 1.4 widths between their points looked away from each other, and the gap was not named.
+///
+///    ===================.  tip          the way out is taken at the tip, not at the hook's end
+///                  end '
+template<class PixelAt>
+int EndTip(const PixelAt& pixelAt, int end, int inward, int reach)
+{
+  const Point2 base = pixelAt(end + inward * reach);
+  const auto distance2 = [&](int position)
+  {
+    const Point2 p = pixelAt(position);
+    return (p.x - base.x) * (p.x - base.x) + (p.y - base.y) * (p.y - base.y);
+  };
+  int tip = end;
+  for (int k = 1; k < reach; ++k)
+  {
+    const int position = end + inward * k;
+    if (distance2(position) > distance2(tip))
+    {
+      tip = position;
+    }
+  }
+  return tip;
+}
+
 /// The two ends of each open contour of two pixels or more, at its group's end points (the
 /// contour's end pixel for a contour without points).
 std::vector<ContourEnd> OpenContourEnds(const GroupedPoints& grouped)
@@ -715,14 +745,16 @@ std::vector<ContourEnd> OpenContourEnds(const GroupedPoints& grouped)
       continue;
     }
     const int back = std::min(last - first, std::max(2, static_cast<int>(std::lround(width))));
-    for (const auto& [end, inner] :
-      { std::make_pair(first, first + back), std::make_pair(last, last - back) })
+    const auto pixelAt = [&](int position)
+    { return grouped.PixelPoint(contours.Pixels[std::size_t(position)]); };
+    for (const auto& [end, inward] : { std::make_pair(first, 1), std::make_pair(last, -1) })
     {
-      const Point2 pixel = grouped.PixelPoint(contours.Pixels[std::size_t(end)]);
-      const Point2 from = grouped.PixelPoint(contours.Pixels[std::size_t(inner)]);
+      const int tip = EndTip(pixelAt, end, inward, std::min(last - first, 2 * back));
+      const int inner = std::clamp(tip + inward * back, first, last);
+      const Point2 pixel = pixelAt(tip), from = pixelAt(inner);
       const std::ptrdiff_t point = (end == first ? lowest : highest)[std::size_t(c)];
       ends.push_back({ c,
-        point < 0 ? pixel : pixelPoints[std::size_t(point)],
+        point < 0 ? pixelAt(end) : pixelPoints[std::size_t(point)],
         { pixel.x - from.x, pixel.y - from.y } });
     }
   }
@@ -739,7 +771,8 @@ struct EndPairs
 
 /// The pairs of open groups' ends to name (NameNearContourEnds): ends within NearEndWidths basis
 /// widths of each other, one looking towards the other (the two ends of one long contour whichever
-/// way they look, below). A group's end is where its points end: its point of the smallest node for
+/// way they look, below; an end that hooks back looks out from its tip, EndTip). A group's end is
+/// where its points end: its point of the smallest node for
 /// the contour's first end, of the largest for its last (the contour's end pixel for a contour
 /// without points). A contour stops some basis widths before the points along it
 /// (point_partition.h), so its end pixels were 9.4 widths apart across a gap of 2.2 in a line's
