@@ -702,10 +702,10 @@ std::pair<std::vector<std::ptrdiff_t>, std::vector<std::ptrdiff_t>> EndPointsOfG
 }
 
 /// The position an open contour's end (end, its neighbour inside at end + inward) reaches out to:
-/// of the `reach` pixels before the end and the end, the one farthest from the pixel `reach` inside
+/// of the end and the `reach` - 1 pixels before it, the one farthest from the pixel `reach` inside
 /// (the nearest to the end of equals). A ridge's end can hook back over its last few pixels, and
 /// its direction there then points back along the curve: two pieces of a noisy sine with a gap of
-/// 1.4 widths between their points looked away from each other, and the gap was not named.
+/// 1.9 widths between their points looked away from each other, and the gap was not named.
 ///
 ///    ===================.  tip          the way out is taken at the tip, not at the hook's end
 ///                  end '
@@ -1161,7 +1161,8 @@ RidgeContours TraceContours(const PixelGrid& grid,
 constexpr double BesideWidths = MergedCurvesWidths;
 
 /// How far point k lies to the left (positive) or right (negative) of its contour, in pixels;
-/// nothing where the contour gives no direction (a contour of one pixel, a closed one of four).
+/// nothing where the contour gives no direction (a contour of one pixel, a closed one of four or
+/// fewer).
 /// A point is measured from its projection pixel, its side taken by the contour's way there (from
 /// the pixel two before to the pixel two after). A point past an open contour's end (projected
 /// within two widths of it, and beyond it along the contour's last two widths) is measured off
@@ -1190,12 +1191,14 @@ std::optional<double> SignedOffContour(const GroupedPoints& grouped, std::size_t
   {
     const int back =
       std::min(last - first, std::max(2, static_cast<int>(std::lround(2.0 * grouped.Width))));
+    // (each end's own half at most: a point beside one arm of a short U is not past the other end)
+    const int zone = std::min(back, (last - first) / 2);
     for (const auto& [end, inner] :
       { std::make_pair(first, first + back), std::make_pair(last, last - back) })
     {
       const Point2 e = pixelAt(end), in = pixelAt(inner);
       const bool beyond = (p.x - e.x) * (e.x - in.x) + (p.y - e.y) * (e.y - in.y) > 0.0;
-      if (back > 0 && std::abs(at - end) <= back && beyond && !(e == in))
+      if (std::abs(at - end) <= zone && beyond && !(e == in))
       {
         // (the contour's way: from its first pixel inwards, from inside to its last)
         return end == first ? offLine(e, in, e) : offLine(in, e, e);
@@ -1208,9 +1211,9 @@ std::optional<double> SignedOffContour(const GroupedPoints& grouped, std::size_t
                                       : std::clamp(at + offset, first, last));
   };
   const Point2 from = near(-2), to = near(2);
-  if (from == to)
+  if ((contours.Closed[c] && count < 5) || from == to)
   {
-    return std::nullopt;
+    return std::nullopt; // (a closed contour of 3 pixels ran backwards from at - 2 to at + 2)
   }
   const Point2 pixel = pixelAt(at);
   const double pixels = std::hypot(p.x - pixel.x, p.y - pixel.y);
@@ -1240,11 +1243,11 @@ std::vector<BesideCounts> CountPointsBeside(const GroupedPoints& grouped)
     }
     BesideCounts& group = counts[std::size_t(c)];
     ++group.Points;
-    // (points beyond FarContourWidths are named by MeasureContourDistances: three clusters far
-    // apart were named by both, one as 157 widths to the left of the other's contour)
+    // (points that MeasureContourDistances names as far, by its measure, are left to it: three
+    // clusters far apart were named by both, one as 157 widths to the left of the other's contour)
     const std::optional<double> off = SignedOffContour(grouped, k);
     if (off && std::abs(*off) > BesideWidths * width &&
-      std::abs(*off) <= RidgeGrouping::FarContourWidths * width)
+      OffContour(grouped, k) <= RidgeGrouping::FarContourWidths * width)
     {
       (*off > 0.0 ? group.Left : group.Right).push_back(std::abs(*off));
     }

@@ -412,7 +412,7 @@ def number(row, column, path, line):
             raise ValueError
         value = float(plain)
     except ValueError:
-        comma = re.fullmatch(DECIMAL_COMMA, plain) is not None
+        comma = re.fullmatch(r"[+-]?[0-9]*(?:,[0-9]+)+(?:[eE][+-]?[0-9]+)?", plain) is not None  # 1,5 or 1,234,567
         fail(f"{path}:{line}: column {column!r}: {text!r} is not a number" + (
              ": a comma in a number is read, as a decimal comma, only in a file whose fields are separated "
              "by semicolons or tabs; write this one with decimal points (and no digit grouping)" if comma else ""))
