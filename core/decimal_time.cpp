@@ -166,16 +166,6 @@ std::optional<DateTimeRead> ReadDateTime(std::string_view text)
   return read;
 }
 
-} // namespace
-
-double MonthTime(double year, int month)
-{
-  return year + (month - 1) / 12.0;
-}
-
-namespace
-{
-
 /// The time of a date and a time of day, seconds into the day (86400 for 24:00).
 double TimeOfDate(int year, int month, int day, int seconds)
 {
@@ -247,35 +237,29 @@ int ResolutionOf(const CalendarTime& at)
   return at.Month != 1 ? 1 : 0;
 }
 
+/// The date as text, cut to its first fields: "YYYY-MM-DD hh:mm:ss" up to the resolution's.
 std::string DateText(const CalendarTime& at, int resolution)
 {
+  static constexpr std::size_t Lengths[] = { 4, 7, 10, 16, 19 }; // YYYY, -MM, -DD, hh:mm, :ss
   char text[32];
-  std::snprintf(text, sizeof text, "%04d", at.Year);
-  std::string out = text;
-  if (resolution >= 1)
-  {
-    std::snprintf(text, sizeof text, "-%02d", at.Month);
-    out += text;
-  }
-  if (resolution >= 2)
-  {
-    std::snprintf(text, sizeof text, "-%02d", at.Day);
-    out += text;
-  }
-  if (resolution >= 3)
-  {
-    std::snprintf(text, sizeof text, " %02d:%02d", at.Seconds / 3600, at.Seconds / 60 % 60);
-    out += text;
-  }
-  if (resolution >= 4)
-  {
-    std::snprintf(text, sizeof text, ":%02d", at.Seconds % 60);
-    out += text;
-  }
-  return out;
+  std::snprintf(text,
+    sizeof text,
+    "%04d-%02d-%02d %02d:%02d:%02d",
+    at.Year,
+    at.Month,
+    at.Day,
+    at.Seconds / 3600,
+    at.Seconds / 60 % 60,
+    at.Seconds % 60);
+  return std::string(text, Lengths[resolution]);
 }
 
 } // namespace
+
+double MonthTime(double year, int month)
+{
+  return year + (month - 1) / 12.0;
+}
 
 std::vector<std::string> DateTexts(const std::vector<double>& times)
 {

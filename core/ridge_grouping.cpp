@@ -305,6 +305,11 @@ struct GroupedPoints
   {
     return { double(pixel % this->Grid.Width), double(pixel / this->Grid.Width) };
   }
+  /// The centre of the contour pixel at `position` in Contours.Pixels (pixel units).
+  Point2 ContourPoint(int position) const
+  {
+    return this->PixelPoint(this->Contours.Pixels[static_cast<std::size_t>(position)]);
+  }
   /// The distance (pixels) from point k to the centre of pixel `pixel`.
   double DistanceToPixel(std::size_t k, int pixel) const
   {
@@ -333,11 +338,14 @@ double OffContour(const GroupedPoints& grouped, std::size_t k)
 /// widths of their contour: the partition gives every point not continuing a contour past its end
 /// to the nearest contour, so an outlier far from every ridge joins a group silently and pulls its
 /// curve (a point 1e4 away from a circle of radius 100 put a spike of 468 into its curve).
-void MeasureContourDistances(const GroupedPoints& grouped, RidgeGroupingResult& result)
+/// Returns, per point, whether it is so named.
+std::vector<std::uint8_t> MeasureContourDistances(const GroupedPoints& grouped,
+  RidgeGroupingResult& result)
 {
   const auto& [pixelPoints, contours, partition, grid, width] = grouped;
   result.ContourDistance.assign(pixelPoints.size(), std::numeric_limits<double>::quiet_NaN());
   std::vector<std::size_t> far;
+  std::vector<std::uint8_t> named(pixelPoints.size(), 0);
   for (std::size_t k = 0; k < pixelPoints.size(); ++k)
   {
     const int position = partition.Projection[k];
@@ -351,6 +359,7 @@ void MeasureContourDistances(const GroupedPoints& grouped, RidgeGroupingResult& 
     if (OffContour(grouped, k) > RidgeGrouping::FarContourWidths * width)
     {
       far.push_back(k);
+      named[k] = 1;
     }
   }
   if (!far.empty())
@@ -362,6 +371,7 @@ void MeasureContourDistances(const GroupedPoints& grouped, RidgeGroupingResult& 
       ListNames(far.size(), [&](std::size_t k) { return std::to_string(far[k]); }) +
       " (ContourDistance gives every point's distance)");
   }
+  return named;
 }
 
 /// Contour pixels further than this many basis widths from every point are named
@@ -745,8 +755,7 @@ std::vector<ContourEnd> OpenContourEnds(const GroupedPoints& grouped)
       continue;
     }
     const int back = std::min(last - first, std::max(2, static_cast<int>(std::lround(width))));
-    const auto pixelAt = [&](int position)
-    { return grouped.PixelPoint(contours.Pixels[std::size_t(position)]); };
+    const auto pixelAt = [&](int position) { return grouped.ContourPoint(position); };
     for (const auto& [end, inward] : { std::make_pair(first, 1), std::make_pair(last, -1) })
     {
       const int tip = EndTip(pixelAt, end, inward, std::min(last - first, 2 * back));
@@ -927,9 +936,8 @@ ContourStations StationsOf(const GroupedPoints& grouped,
     }
     for (int k = contours.Offsets[c]; k < contours.Offsets[c + 1]; ++k)
     {
-      stations.Stations.push_back({ c,
-        grouped.Partition.ArcLength[std::size_t(k)],
-        grouped.PixelPoint(contours.Pixels[std::size_t(k)]) });
+      stations.Stations.push_back(
+        { c, grouped.Partition.ArcLength[std::size_t(k)], grouped.ContourPoint(k) });
     }
     stations.LoopLength[std::size_t(c)] =
       contours.Closed[c] ? contours.Lengths[std::size_t(c)] : 0.0;
@@ -1179,8 +1187,7 @@ std::optional<double> SignedOffContour(const GroupedPoints& grouped, std::size_t
   const int first = contours.Offsets[c], last = contours.Offsets[c + 1] - 1;
   const int at = grouped.Partition.Projection[k];
   const int count = last - first + 1;
-  const auto pixelAt = [&](int position)
-  { return grouped.PixelPoint(contours.Pixels[std::size_t(position)]); };
+  const auto pixelAt = [&](int position) { return grouped.ContourPoint(position); };
   const Point2& p = grouped.PixelPoints[k];
   const auto offLine = [&](const Point2& from, const Point2& to, const Point2& through)
   {
@@ -1221,15 +1228,16 @@ std::optional<double> SignedOffContour(const GroupedPoints& grouped, std::size_t
 }
 
 /// Per group, its points and, of them, those more than BesideWidths from their contour
-/// (SignedOffContour), and no more than FarContourWidths, on its left and on its right, with their
-/// distances (pixels).
+/// (SignedOffContour), but for those named as far (namedFar), on its left and on its right, with
+/// their distances (pixels).
 struct BesideCounts
 {
   std::size_t Points = 0;
   std::vector<double> Left, Right;
 };
 
-std::vector<BesideCounts> CountPointsBeside(const GroupedPoints& grouped)
+std::vector<BesideCounts> CountPointsBeside(const GroupedPoints& grouped,
+  const std::vector<std::uint8_t>& namedFar)
 {
   const auto& [pixelPoints, contours, partition, grid, width] = grouped;
   std::vector<BesideCounts> counts(std::size_t(contours.Count()));
@@ -1243,11 +1251,10 @@ std::vector<BesideCounts> CountPointsBeside(const GroupedPoints& grouped)
     }
     BesideCounts& group = counts[std::size_t(c)];
     ++group.Points;
-    // (points that MeasureContourDistances names as far, by its measure, are left to it: three
-    // clusters far apart were named by both, one as 157 widths to the left of the other's contour)
+    // (points that MeasureContourDistances names as far are left to it: three clusters far apart
+    // were named by both, one as 157 widths to the left of the other's contour)
     const std::optional<double> off = SignedOffContour(grouped, k);
-    if (off && std::abs(*off) > BesideWidths * width &&
-      OffContour(grouped, k) <= RidgeGrouping::FarContourWidths * width)
+    if (off && std::abs(*off) > BesideWidths * width && !namedFar[k])
     {
       (*off > 0.0 ? group.Left : group.Right).push_back(std::abs(*off));
     }
@@ -1267,9 +1274,11 @@ std::vector<BesideCounts> CountPointsBeside(const GroupedPoints& grouped)
 ///    . . . . . . . . . . .  (a second line: its own ridge stopped, or crossed over)
 ///                                  > 2 widths, all on one side
 ///    ======================  contour, along the first line
-void NamePointsBesideContours(const GroupedPoints& grouped, RidgeGroupingResult& result)
+void NamePointsBesideContours(const GroupedPoints& grouped,
+  const std::vector<std::uint8_t>& namedFar,
+  RidgeGroupingResult& result)
 {
-  const std::vector<BesideCounts> counts = CountPointsBeside(grouped);
+  const std::vector<BesideCounts> counts = CountPointsBeside(grouped, namedFar);
   std::vector<std::string> named;
   for (std::size_t c = 0; c < counts.size(); ++c)
   {
@@ -1306,7 +1315,7 @@ void NamePointsBesideContours(const GroupedPoints& grouped, RidgeGroupingResult&
 /// contours away from the points.
 void CheckGroups(const GroupedPoints& grouped, double maximumGap, RidgeGroupingResult& result)
 {
-  MeasureContourDistances(grouped, result);
+  const std::vector<std::uint8_t> namedFar = MeasureContourDistances(grouped, result);
   NameUnorderedPoints(
     PointsWithoutOrder(
       grouped.PixelPoints, grouped.Contours, grouped.Partition, grouped.Grid.Width, maximumGap),
@@ -1316,7 +1325,7 @@ void CheckGroups(const GroupedPoints& grouped, double maximumGap, RidgeGroupingR
   const EndPairs endPairs = FindNearEnds(grouped, OpenContourEnds(grouped));
   NameNearContourEnds(grouped, endPairs.Named, result);
   NameFoldedContours(grouped, endPairs.NearlyClosed, result);
-  NamePointsBesideContours(grouped, result);
+  NamePointsBesideContours(grouped, namedFar, result);
   NameContoursAwayFromPoints(grouped, result);
 }
 

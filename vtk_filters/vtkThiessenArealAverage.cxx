@@ -936,16 +936,17 @@ vtkMTimeType ColumnMTime(vtkTable* table, const std::string& column)
 class WeightRows
 {
 public:
-  WeightRows(vtkAbstractArray* stationIds, const std::vector<std::string>& dates)
+  WeightRows(vtkAbstractArray* stationIds, bool withDates)
     : Gauges(stationIds)
-    , StepDates(dates)
+    , WithDates(withDates)
   {
     this->Times->SetName("Time");
     this->Dates->SetName("Date");
   }
 
-  void Append(std::size_t stepIndex,
-    double time,
+  /// A step's rows; date: its Date (unused without dates).
+  void Append(double time,
+    const std::string& date,
     const tessera::ArealStep& step,
     const std::vector<double>& values)
   {
@@ -953,9 +954,9 @@ public:
     {
       const std::int32_t g = step.Gauges[k];
       this->Times->InsertNextValue(time);
-      if (!this->StepDates.empty())
+      if (this->WithDates)
       {
-        this->Dates->InsertNextValue(this->StepDates[stepIndex]);
+        this->Dates->InsertNextValue(date);
       }
       this->Gauges.Append(g, step.Weights[k], step.AreasM2[k], values[static_cast<std::size_t>(g)]);
     }
@@ -965,7 +966,7 @@ public:
   {
     table->Initialize();
     table->AddColumn(this->Times);
-    if (!this->StepDates.empty())
+    if (this->WithDates)
     {
       table->AddColumn(this->Dates);
     }
@@ -976,7 +977,7 @@ private:
   vtkNew<vtkDoubleArray> Times;
   vtkNew<vtkStringArray> Dates;
   GaugeColumns Gauges;
-  const std::vector<std::string> StepDates; // per step, or none
+  const bool WithDates;
 };
 
 /// The warning for catchment rings that lie inside a ring of another block, or "" when none does
@@ -1792,7 +1793,7 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
   {
     dateColumn->InsertNextValue(date);
   }
-  WeightRows weightRows(stationIds, dates);
+  WeightRows weightRows(stationIds, !dates.empty());
   std::vector<char> everWeighted(gaugeCount, 0);
   for (std::size_t step = 0; step < in.Times.size(); ++step)
   {
@@ -1812,7 +1813,8 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     }
     if (this->WeightsTable)
     {
-      weightRows.Append(step, in.Times[step], result, in.Values[step]);
+      weightRows.Append(
+        in.Times[step], dates.empty() ? std::string() : dates[step], result, in.Values[step]);
     }
   }
   weightRows.Fill(in.Weights);
