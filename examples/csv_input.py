@@ -233,6 +233,7 @@ def has_decimal_commas(text, delimiter, read=None):
 
 
 DECIMAL_COMMA = r"[+-]?[0-9]*,[0-9]+(?:[eE][+-]?[0-9]+)?"
+COMMA_NUMBER = r"[+-]?[0-9]*(?:,[0-9]+)+(?:[eE][+-]?[0-9]+)?"  # DECIMAL_COMMA's, or digit groups (1,234,567)
 
 
 def decimal_comma_field(text, delimiter, read=None):
@@ -412,7 +413,7 @@ def number(row, column, path, line):
             raise ValueError
         value = float(plain)
     except ValueError:
-        comma = re.fullmatch(r"[+-]?[0-9]*(?:,[0-9]+)+(?:[eE][+-]?[0-9]+)?", plain) is not None  # 1,5 or 1,234,567
+        comma = re.fullmatch(COMMA_NUMBER, plain) is not None
         fail(f"{path}:{line}: column {column!r}: {text!r} is not a number" + (
              ": a comma in a number is read, as a decimal comma, only in a file whose fields are separated "
              "by semicolons or tabs; write this one with decimal points (and no digit grouping)" if comma else ""))

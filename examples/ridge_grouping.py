@@ -253,11 +253,12 @@ def main(argv=None):
         csv_input.fail(f"{args.quakes}: no {'points' if args.planar else 'epicentres'} to group (the file has no rows)")
     grouped = quakes if args.planar else projected(quakes, args.quakes, lines, vtkGeographicProjection)
     # (said once the projection has taken the epicentres: one it rejects is the run's one line)
-    fiji = os.path.abspath(args.quakes) == os.path.abspath(DEFAULT_QUAKES)
-    say_repeated_points(quakes, args.quakes, lines, args.planar, bundled=fiji and not args.planar)
+    # (the bundled file as the script reads it: with --planar it is refused for its lat, lon)
+    fiji = os.path.abspath(args.quakes) == os.path.abspath(DEFAULT_QUAKES) and not args.planar
+    say_repeated_points(quakes, args.quakes, lines, args.planar, bundled=fiji)
     errors = []
     grouping = vtkRidgeGrouping()
-    settings = chosen_settings(args, fiji and not args.planar, grouping)
+    settings = chosen_settings(args, fiji, grouping)
     csv_input.catch_vtk_messages(grouping, lambda text: errors.append(grouping_error(text)),
                                  lambda text: print(f"warning: {with_lines(text, args.quakes, lines)}",
                                                     file=sys.stderr))

@@ -824,20 +824,27 @@ std::set<int> FoldedGroups(const RidgeGroupingResult& result,
 }
 
 // The groups a fold warning of result names ("group 3, 2.8 widths across at ...").
-std::set<int> NamedFolds(const RidgeGroupingResult& result)
+// The groups that the warnings holding text name, each as pattern's first group ("group (\d+)...").
+std::set<int> GroupsNamed(const RidgeGroupingResult& result,
+  const std::string& text,
+  const std::string& pattern)
 {
   std::set<int> named;
-  const std::regex group("group (\\d+), [^ ]+ widths across");
-  for (const std::string& warning : WarningsWith(result, "of itself where it is much further"))
+  const std::regex group(pattern);
+  for (const std::string& warning : WarningsWith(result, text))
   {
-    for (auto it = std::sregex_iterator(warning.begin(), warning.end(), group);
-         it != std::sregex_iterator();
-         ++it)
+    for (std::sregex_iterator it(warning.begin(), warning.end(), group), end; it != end; ++it)
     {
       named.insert(std::stoi((*it)[1].str()));
     }
   }
   return named;
+}
+
+std::set<int> NamedFolds(const RidgeGroupingResult& result)
+{
+  return GroupsNamed(
+    result, "of itself where it is much further", "group (\\d+), [^ ]+ widths across");
 }
 } // namespace
 
@@ -1179,16 +1186,7 @@ TEST(RidgeGrouping, AContourFoldedBackAlongAnotherCurveIsNamed)
 // The groups that the warning on points beside their contours names, read from its text.
 std::set<int> GroupsNamedBeside(const RidgeGroupingResult& result)
 {
-  std::set<int> groups;
-  for (const std::string& warning : WarningsWith(result, "to one side of their contour"))
-  {
-    const std::regex group("group (\\d+), \\d+ of its");
-    for (std::sregex_iterator it(warning.begin(), warning.end(), group), end; it != end; ++it)
-    {
-      groups.insert(std::stoi((*it)[1].str()));
-    }
-  }
-  return groups;
+  return GroupsNamed(result, "to one side of their contour", "group (\\d+), \\d+ of its");
 }
 
 // How far p lies from an open polyline carried on past both ends along its end directions (from

@@ -185,16 +185,12 @@ def test_gauges_given_an_earlier_gauges_station_id_are_listed():
     f.SetObservationsData(observations_table({(2000, 1): {"a": 1.0, "b": 2.0, "c": 3.0}}))
     f.Update(1)
     expected = [(g, ids.index(sid)) for g, sid in enumerate(ids) if ids.index(sid) != g]
-    fd = f.GetOutputDataObject(1).GetFieldData()
-
-    def listed(name):
-        array = fd.GetArray(name)
-        return [array.GetValue(i) for i in range(array.GetNumberOfTuples())]
-    assert_that(listed("SharedStationGaugeIds") == [g for g, _ in expected], f"{listed('SharedStationGaugeIds')}")
-    assert_that(listed("SharedStationOfGaugeIds") == [first for _, first in expected],
-                f"{listed('SharedStationOfGaugeIds')}")
-    assert_that(listed("DuplicateGaugeIds") == [], "no gauges at one place")
-    assert_that(listed("UnobservedGaugeIds") == [g for g, _ in expected], "the later gauges get no observation")
+    assert_that(field_ids(f, "SharedStationGaugeIds") == [g for g, _ in expected],
+                f"{field_ids(f, 'SharedStationGaugeIds')}")
+    assert_that(field_ids(f, "SharedStationOfGaugeIds") == [first for _, first in expected],
+                f"{field_ids(f, 'SharedStationOfGaugeIds')}")
+    assert_that(field_ids(f, "DuplicateGaugeIds") == [], "no gauges at one place")
+    assert_that(field_ids(f, "UnobservedGaugeIds") == [g for g, _ in expected], "the later gauges get no observation")
     shared = [w for w in warnings if "given to more than one gauge" in w]
     assert_that(len(shared) == 1 and "(listed in SharedStationGaugeIds" in shared[0]
                 and "a (gauges 0 and 2), b (gauges 1 and 4), a (gauges 0 and 5)" in shared[0], f"{warnings}")
