@@ -560,6 +560,7 @@ struct ThiessenArealAverage::State
       DensifyRingSymmetrically(
         &shared.Vertices[begin], shared.RingOffsets[r + 1] - begin, maxStepMetres, scratch.Dense);
       this->Unproject(scratch.Dense, scratch.LonLat);
+      SnapToMeridian(scratch.LonLat); // (a border along it stays on it, not an ulp either side)
       DropRepeatedVertices(scratch.LonLat); // points an ulp apart in the plane can come back as one
       // The plane's fan (display_pieces.h) about its first vertex, bent: a side bowing inwards in
       // lon/lat left slivers drawn twice (0.5% of a Colorado tile's area).

@@ -3,6 +3,7 @@
 #include "display_pieces.h" // CrossingHeight
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -98,6 +99,18 @@ void CutEdgesOnTheLine(ClippedRings& side, double at)
 }
 
 } // namespace
+
+void SnapToMeridian(std::vector<Point2>& lonLat)
+{
+  for (Point2& p : lonLat)
+  {
+    const double meridian = 180.0 + 360.0 * std::round((p.x - 180.0) / 360.0);
+    if (std::abs(p.x - meridian) <= MeridianSnapDegrees)
+    {
+      p.x = meridian;
+    }
+  }
+}
 
 std::array<ClippedRings, 2> CutAtMeridian(const ClippedRings& pieces,
   std::size_t first,

@@ -21,6 +21,7 @@
 
 #include <array>
 #include <cstddef>
+#include <vector>
 
 namespace tessera
 {
@@ -34,5 +35,15 @@ std::array<ClippedRings, 2> CutAtMeridian(const ClippedRings& pieces,
   std::size_t first,
   std::size_t last,
   double at);
+
+/// Longitudes within MeridianSnapDegrees of the 180th meridian (or a copy of it 360 degrees on)
+/// set to it exactly. Points of a border along that meridian come back from the plane at 180 and
+/// at 179.99999999999997 by rounding, and such a tile was cut there into its real part and a
+/// sliver a few nanometres wide, written as a second polygon of its feature.
+void SnapToMeridian(std::vector<Point2>& lonLat);
+
+/// 1e-10 degrees: about 11 micrometres along the equator, some 10^5 times the rounding of a
+/// point projected and back.
+constexpr double MeridianSnapDegrees = 1e-10;
 
 } // namespace tessera

@@ -659,6 +659,7 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
     if "station_id" in header or "precip" in header:
         csv_input.check_columns(path, "observations", ("station_id", "precip"), header)
         attributes = next((name for name in header if name.lower() in NOAA_ATTRIBUTES), None)
+        say_unnamed_columns(path, header)
         if drop_flagged and not attributes:
             print(f"{path}: --drop-flagged: the file has no PRCP_ATTRIBUTES column (NOAA's quality flags), so no "
                   "value is left out", file=sys.stderr)
@@ -712,6 +713,15 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
         for column in reported or columns[:1]:
             yield line, row, column, column
         yielded += max(len(reported), 1)
+
+
+def say_unnamed_columns(path, header):
+    """Names a long file's columns without a name (a pandas index written with its frame), which
+    are not read; a wide file's are named with the columns that name no station."""
+    unnamed = [number for number, name in enumerate(header, 1) if not name]
+    if unnamed:
+        print(f"note: {path}: column(s) {', '.join(map(str, unnamed))} have no name (a row index, or a separator "
+              "ending each line?) and are not read", file=sys.stderr)
 
 
 # The column of NOAA's Climate Data Online CSV beside PRCP: "MFLAG,QFLAG,SFLAG,OBSTIME" for GHCN-Daily.

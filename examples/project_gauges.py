@@ -8,6 +8,10 @@ examples/data/colorado_stations.csv) and writes into --out:
                          StationId, Name, Longitude, Latitude, and field data TesseraProjection;
   gauges_projected.csv   station_id, name, lon, lat, x_m, y_m; with --crs also x_crs, y_crs: the
                          coordinates in that system's own unit (its feet, for a state plane in feet).
+x_m and y_m are metres in the projection's plane, from its origin, whose lon/lat the script prints:
+for a conic (the automatic projection, Albers, Lambert) the central meridian lon0 at the conic's
+own origin latitude between lat1 and lat2, not the record's lat0 (the gauges' middle latitude the
+parallels are fitted about).
 
 --projection picks one of the filter's projections, fitted to the gauges; --crs gives a projected
 coordinate system by its EPSG code or PROJ terms (as the main job's --stations-crs reads them: UTM,
@@ -231,6 +235,31 @@ def projection_error(text, path, gauges, lines):
             or f"{path}: cannot project the gauges: {text}")
 
 
+def plane_origin(projected, vtkGeographicProjection):
+    """(lon, lat) of the plane's origin, where x_m = y_m = 0 (None where the projection cannot take
+    it back): for a conic, its own origin latitude between lat1 and lat2 (GeographicLib's), not
+    the record's lat0, the gauges' middle latitude the parallels are fitted about, which a GIS
+    user took for PROJ's +lat_0 and found y = 0 some 480 m from it."""
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+    points = vtkPoints()
+    points.InsertNextPoint(0.0, 0.0, 0.0)
+    origin = vtkPolyData()
+    origin.SetPoints(points)
+    back = vtkGeographicProjection()
+    errors = []
+    # (the origin, (0, 0), lies within degrees' ranges: the inverse's warning on it is not the user's)
+    csv_input.catch_vtk_messages(back, errors.append, on_warning=lambda text: None,
+                                 on_executive_error=errors.append)
+    back.SetInputData(origin)
+    back.InverseOn()
+    back.SetProjectionRecord(projected.GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0))
+    back.Update()
+    output = back.GetOutput()
+    return None if errors or output.GetNumberOfPoints() != 1 else output.GetPoint(0)[:2]
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--stations", default=os.path.join(HERE, "data", "colorado_stations.csv"),
@@ -306,6 +335,9 @@ def main(argv=None):
     record = projected.GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
     print(f"projected {projected.GetNumberOfPoints()} gauges with {record}"
           + (f" ({system.describe()})" if system else ""))
+    origin = plane_origin(projected, vtkGeographicProjection)
+    if origin is not None:
+        print(f"x_m and y_m are metres from the plane's origin, at lon {origin[0]:.8f}, lat {origin[1]:.8f}")
     print(f"wrote {args.out}/gauges_projected.vtp and {args.out}/gauges_projected.csv")
 
 

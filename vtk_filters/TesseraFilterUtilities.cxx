@@ -198,6 +198,19 @@ std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points, vtkDataObject* join
   return xy;
 }
 
+tessera::Box2 BoundsOfPoints(vtkPoints* points)
+{
+  double bounds[6];
+  points->GetBounds(bounds);
+  return { bounds[0], bounds[1], bounds[2], bounds[3] };
+}
+
+std::string BoxText(const tessera::Box2& box)
+{
+  return "x " + tessera::NumberText(box.XMin) + " .. " + tessera::NumberText(box.XMax) + ", y " +
+    tessera::NumberText(box.YMin) + " .. " + tessera::NumberText(box.YMax);
+}
+
 namespace
 {
 // value - pad, or the next double below value when rounding swallows pad (a pad far below the
@@ -213,13 +226,6 @@ double Above(double value, double pad)
 {
   const double padded = value + pad;
   return padded > value ? padded : std::nextafter(value, HUGE_VAL);
-}
-
-/// "x xmin .. xmax, y ymin .. ymax"
-std::string BoxText(const tessera::Box2& box)
-{
-  return "x " + tessera::NumberText(box.XMin) + " .. " + tessera::NumberText(box.XMax) + ", y " +
-    tessera::NumberText(box.YMin) + " .. " + tessera::NumberText(box.YMax);
 }
 
 /// advice: what to change ("set smaller WindowBounds ...").
@@ -1772,6 +1778,14 @@ RenamedArrays AddUnusedPointIds(vtkDataObject* data,
   AddIdFieldArray(data, UnusedPointIdNames()[1], copies);
   AddIdFieldArray(data, UnusedPointIdNames()[2], originals);
   return renamed;
+}
+
+std::string NoPointInWindowWarning(const tessera::Box2& window, const tessera::Box2& points)
+{
+  return "no point lies inside the window (" + BoxText(window) + "): the points span " +
+    BoxText(points) +
+    ", so the output is empty (are the window's bounds in the points' units, in the order xmin, "
+    "xmax, ymin, ymax?)";
 }
 
 std::string NoPointsWarning(const std::string& what)

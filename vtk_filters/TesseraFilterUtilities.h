@@ -201,6 +201,12 @@ void AddIdFieldArray(vtkDataObject* data, const char* name, const std::vector<st
 /// false when it has no points (or is neither).
 bool DataBounds(vtkDataObject* data, double bounds[6]);
 
+/// The x, y bounding box of points (at least one).
+tessera::Box2 BoundsOfPoints(vtkPoints* points);
+
+/// "x xmin .. xmax, y ymin .. ymax", for messages.
+std::string BoxText(const tessera::Box2& box);
+
 /// For a filter whose outputs are the input's kind (REQUEST_DATA_OBJECT): on every output port,
 /// an instance of the composite's class when composite is given (the input's, the output kept
 /// when it is one already), else a vtkPolyData.
@@ -324,6 +330,11 @@ RenamedArrays AddUnusedPointIds(vtkDataObject* data,
 /// `duplicates` exact copies), saying they were not `verb` ("used", "triangulated") and where their
 /// ids are; empty when every point was used.
 std::string UnusedPointsWarning(std::size_t rejected, std::size_t duplicates, const char* verb);
+
+/// The warning for a window that holds none of the points (every point rejected), naming the
+/// window's bounding box and the points' (a ParaView user saw only a count of rejected points and
+/// an empty output).
+std::string NoPointInWindowWarning(const tessera::Box2& window, const tessera::Box2& points);
 
 /// The warning for an input without points, whose output is then empty: "the input has no points:
 /// no <what> (does the filter before it give none?)" (a ParaView user saw an empty output and no

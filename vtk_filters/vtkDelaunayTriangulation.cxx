@@ -139,6 +139,9 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     }
     tessera::Window window = tessera_vtk::ChooseWindow(
       this->WindowBounds, this->WindowConstraints, this->Padding, points, false);
+    const std::size_t pointCount = points.size();
+    const tessera::Box2 windowBox =
+      tessera::BoundsOf(window.Vertices().data(), window.Vertices().size());
     // Coordinates of some 1e100 or more, or 1e-100 or less: the triangulation of points and
     // window scaled by a power of two (exactly) is the same, and its faces are ids, so nothing is
     // scaled back; every decision then stays within the predicates' exact range.
@@ -169,6 +172,11 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     if (!unused.empty())
     {
       vtkWarningMacro(<< unused);
+    }
+    if (pointCount > 0 && rejected.size() == pointCount)
+    {
+      vtkWarningMacro(<< tessera_vtk::NoPointInWindowWarning(
+                        windowBox, tessera_vtk::BoundsOfPoints(input->GetPoints())));
     }
     // An output of points and no face, said (a ParaView user saw nothing and no message).
     const std::size_t accepted = tessellation.AcceptedCount();

@@ -14,6 +14,7 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -374,9 +375,24 @@ public:
     output->SetLines(lines);
     output->GetCellData()->AddArray(this->Kinds);
     output->GetCellData()->SetActiveScalars(this->Kinds->GetName()); // (neighbours by colour)
+    output->GetCellData()->AddArray(this->PairIds());
   }
 
 private:
+  /// Each line's point ids as cell data `PointIds` (2 components, i < j): a spreadsheet or a CSV
+  /// of the graph lists the neighbours (a ParaView user saw only Kind). A copy of the connectivity
+  /// (sharing its buffer would leave the array dangling once the lines are replaced).
+  vtkSmartPointer<vtkTypeInt32Array> PairIds() const
+  {
+    auto ids = vtkSmartPointer<vtkTypeInt32Array>::New();
+    ids->SetName("PointIds");
+    tessera_vtk::AllocateValues(ids.Get(), this->PairCount, 2);
+    ids->SetComponentName(0, "i");
+    ids->SetComponentName(1, "j");
+    std::copy_n(this->Connectivity->GetPointer(0), 2 * this->PairCount, ids->GetPointer(0));
+    return ids;
+  }
+
   static constexpr vtkIdType Ahead = 16; ///< pairs read ahead of the one counted or written
   vtkIdType HalfBegin(int half) const
   {
@@ -477,6 +493,9 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     }
     tessera::Window window =
       tessera_vtk::ChooseWindow(this->WindowBounds, this->WindowConstraints, this->Padding, points);
+    const std::size_t pointCount = points.size();
+    const tessera::Box2 windowBox =
+      tessera::BoundsOf(window.Vertices().data(), window.Vertices().size());
     // Coordinates of some 1e100 or 1e-100: both engines work on points and window scaled by a
     // power of two (exactly) into the range where the tiles' window decisions are exact
     // (window_predicates.h), and the tiles are scaled back.
@@ -562,6 +581,11 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     if (!unused.empty())
     {
       vtkWarningMacro(<< unused);
+    }
+    if (pointCount > 0 && result.Rejected.size() == pointCount)
+    {
+      vtkWarningMacro(<< tessera_vtk::NoPointInWindowWarning(
+                        windowBox, tessera_vtk::BoundsOfPoints(input->GetPoints())));
     }
     const std::string collapsed = CollapsedTilesWarning(result.Tiles);
     if (!collapsed.empty())

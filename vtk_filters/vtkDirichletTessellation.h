@@ -65,13 +65,17 @@
  * - `RejectedPointIds` (vtkIdType): points not strictly inside the window;
  * - `DuplicatePointIds` and `DuplicateOfPointIds` (vtkIdType, same length): exact copies of an
  *   earlier point, and the accepted point each one copies (the first is kept).
+ * A warning counts the points not used; where no point lies inside the window, another names the
+ * window's bounding box and the points' (bounds in other units, or given as xmin, ymin, ...).
  * The input's field data is passed too; an input field array with one of these three names (say,
  * from an earlier tessellation) is kept renamed NAME_input, with a warning.
  *
  * Output 1 (vtkPolyData): the contiguity graph, sorted by (i, j). Its points are the input points
  * (same ids, point data passed as it is: names and global ids kept), with one line per contiguous
  * pair (i < j) and cell data `Kind` (unsigned char): 0 = neighbours sharing an edge of positive
- * length, 1 = half-neighbours (sharing only a degenerate vertex strictly inside the window).
+ * length, 1 = half-neighbours (sharing only a degenerate vertex strictly inside the window), and
+ * `PointIds` (32-bit, 2 components named i and j): the line's two point ids, so that a
+ * spreadsheet or a CSV of the cells lists the pairs.
  *
  * With ComputeContiguityGraph off, output 1 has no points and no lines (its field data is still
  * output 0's) and the graph is not written (nor derived, with GreenSibson; the sweep finds

@@ -206,6 +206,14 @@ std::string ProjectionWarning(vtkDataObject* tiles, vtkDataObject* window)
   }
   const std::string projected = ofTiles.empty() ? "the window (input 1)" : "the tiles (input 0)";
   const std::string other = ofTiles.empty() ? "the tiles (input 0)" : "the window (input 1)";
+  // (verbs agree with their input: "the tiles are", "the window is")
+  const bool tilesProjected = !ofTiles.empty();
+  const char* const is = tilesProjected ? " are" : " is";
+  const char* const carries = tilesProjected ? " carry" : " carries";
+  const char* const otherCarries = tilesProjected ? " carries" : " carry";
+  const char* const otherLooks = tilesProjected ? " looks" : " look";
+  const std::string it = tilesProjected ? "it" : "them",
+                    itIs = tilesProjected ? "it is" : "they are";
   double projectedBounds[6], otherBounds[6];
   if (!tessera_vtk::DataBounds(ofTiles.empty() ? tiles : window, otherBounds) ||
     !tessera_vtk::DataBounds(ofTiles.empty() ? window : tiles, projectedBounds))
@@ -216,16 +224,15 @@ std::string ProjectionWarning(vtkDataObject* tiles, vtkDataObject* window)
   }
   if (ReachesMetres(projectedBounds) && WithinDegrees(otherBounds))
   {
-    throw tessera::InputError(projected + " is projected (TesseraProjection " + ofTiles + ofWindow +
-      "; " + BoundsText(projectedBounds) + ") and " + other +
-      " carries no record and looks like longitude and latitude in degrees (" +
-      BoundsText(otherBounds) +
-      "): project it too, with Geographic Projection's Projection Record set to that record (or "
-      "Group Datasets the gauges and the catchment before one Geographic Projection); if it is "
-      "in that plane already, remove the TesseraProjection field data of " +
-      projected);
+    throw tessera::InputError(projected + is + " projected (TesseraProjection " + ofTiles +
+      ofWindow + "; " + BoundsText(projectedBounds) + ") and " + other + otherCarries +
+      " no record and" + otherLooks + " like longitude and latitude in degrees (" +
+      BoundsText(otherBounds) + "): project " + it +
+      " too, with Geographic Projection's Projection Record set to that record (or Group Datasets "
+      "the gauges and the catchment before one Geographic Projection); if " +
+      itIs + " in that plane already, remove the TesseraProjection field data of " + projected);
   }
-  return projected + " carries a TesseraProjection record (" + ofTiles + ofWindow + ") and " +
+  return projected + carries + " a TesseraProjection record (" + ofTiles + ofWindow + ") and " +
     other + " none: both are taken to be in the same plane";
 }
 
@@ -305,6 +312,36 @@ vtkSmartPointer<vtkDoubleArray> OneValue(const char* name, double value)
 
 /// The tiles' point data is not passed (their cell and field data are): the pieces' vertices are
 /// new points, crossings of tile edges and window rings among them. A warning names its arrays.
+/// Whether data (a data set, or a composite's data sets) has a cell.
+bool HasCells(vtkDataObject* data)
+{
+  if (auto* blocks = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    return blocks->GetNumberOfCells() > 0;
+  }
+  auto* set = vtkDataSet::SafeDownCast(data);
+  return set && set->GetNumberOfCells() > 0;
+}
+
+/// For tiles whose bounding box and the window's do not meet, so that the output is empty: both
+/// boxes (a ParaView user got an empty output and no message, CoveredFraction 0 in the field
+/// data); empty where they meet (tiles in a gap of the window, or cells that are no polygons,
+/// which ClipTilesOf's warnings name).
+std::string ApartWarning(const double tilesBounds[6], const std::vector<tessera::Point2>& window)
+{
+  const tessera::Box2 tiles{ tilesBounds[0], tilesBounds[1], tilesBounds[2], tilesBounds[3] };
+  const tessera::Box2 box = tessera::BoundsOf(window.data(), window.size());
+  if (!(tiles.XMax < box.XMin || box.XMax < tiles.XMin || tiles.YMax < box.YMin ||
+        box.YMax < tiles.YMin))
+  {
+    return std::string();
+  }
+  return "the tiles (input 0) and the window (input 1) do not meet, so the output is empty: the "
+         "tiles span " +
+    tessera_vtk::BoxText(tiles) + ", the window " + tessera_vtk::BoxText(box) +
+    " (are both in the same units and projection?)";
+}
+
 std::string PointDataWarning(vtkPointSet* tiles)
 {
   vtkPointData* pointData = tiles->GetPointData();
@@ -733,6 +770,14 @@ int vtkWindowClip::RequestData(vtkInformation*,
         vtkWarningMacro(<< warnings.size() - shown
                         << " more warning(s) about blocks of input 0 are not shown (the first "
                         << shown << " are)");
+      }
+    }
+    if (HasCells(tilesData) && !HasCells(output) && !window.Vertices.empty())
+    {
+      const std::string apart = ApartWarning(tilesBounds, window.Vertices);
+      if (!apart.empty())
+      {
+        vtkWarningMacro(<< apart);
       }
     }
     tessera_vtk::ListNonEmptyFieldArraysFirst(output);

@@ -1,7 +1,6 @@
 """pvbatch: Filters > Tessera > Dirichlet Tessellation and Delaunay Triangulation on projected
 Colorado gauges; the fetched tiles cover the window and each tile's point is the nearest gauge."""
 
-import csv
 import os
 import sys
 

@@ -199,6 +199,23 @@ def test_unused_points_are_reported_with_ids():
     assert_that(id_values(g.GetOutput(0).GetFieldData(), "DuplicatePointIds") == [3]
                 and len(said) == 1 and "1 exact duplicate(s) (the same x and y; z is not used)" in said[0],
                 f"a point differing in z only: {said}")
+    # Every point outside the window (bounds in other units, or in the order xmin, ymin, ...): the
+    # count alone was said and the output was empty; a second warning names both boxes, with
+    # either engine and for the triangulation.
+    data = make_points([(3.0, 1.0), (12.0, 5.0), (7.5, 2.5)])
+    for filter_class, algorithm in ((vtkDirichletTessellation, "GreenSibson"),
+                                    (vtkDirichletTessellation, "BrasselReif"), (vtkDelaunayTriangulation, None)):
+        g = filter_class()
+        said = messages_of(g, vtkCommand.WarningEvent)
+        g.SetInputData(data)
+        g.SetWindowBounds(100, 200, 100, 200)
+        if algorithm:
+            getattr(g, f"SetAlgorithmTo{algorithm}")()
+        g.Update()
+        assert_that(g.GetOutput(0).GetNumberOfCells() == 0 and len(said) == 2
+                    and "3 point(s) outside the window" in said[0]
+                    and "no point lies inside the window (x 100 .. 200, y 100 .. 200): the points span x 3 .. 12, "
+                        "y 1 .. 5" in said[1], f"{filter_class.__name__} {algorithm}: every point outside: {said}")
 
 
 def id_values(field_data, name):
@@ -485,6 +502,11 @@ def test_large_graph_is_sorted_with_kinds_following_pairs():
     assert_that(int(edge.sum()) == 2 * side * (side - 1), f"all lattice edges ({int(edge.sum())})")
     assert_that(int(diagonal.sum()) == 2 * (side - 1) ** 2, f"all diagonals ({int(diagonal.sum())})")
     assert_that(len(kinds) == int(edge.sum() + diagonal.sum()), "nothing else")
+    # PointIds lists each line's pair for a spreadsheet: the lines' own ids, components i and j.
+    pairs = graph.GetCellData().GetArray("PointIds")
+    assert_that(pairs.GetNumberOfComponents() == 2 and pairs.GetComponentName(0) == "i"
+                and pairs.GetComponentName(1) == "j" and np.array_equal(vtk_to_numpy(pairs), lines),
+                "PointIds are the lines' point ids")
 
 
 def cells_of(data):

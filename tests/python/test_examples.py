@@ -2769,6 +2769,28 @@ def test_a_plain_id_or_site_no_column_is_the_station_id_where_no_station_column_
                     and "station_id may be named station, site_no)" in stderr, f"{stderr}")
 
 
+def test_a_long_files_unnamed_columns_are_named_as_not_read():
+    # A long file written by pandas with its index (a first column without a name) was read
+    # without a word, where a wide file's is named: a note names it, and the means are those of
+    # the file without it; a file whose columns all have names gets no such note.
+    with tempfile.TemporaryDirectory() as out:
+        catchment, stations, observations = write_lake_basin(out)
+        with open(observations) as f:
+            lines = f.read().splitlines()
+        indexed = write(out, "indexed.csv", "".join(f"{'' if k == 0 else k - 1},{line}\n" for k, line in enumerate(lines)))
+        means = []
+        for path in (observations, indexed):
+            _, stderr = run_colorado(path + ".out", stations=stations,
+                                     observations=path, catchment=catchment, plots=False, what=path)
+            notes = [line for line in stderr_messages(stderr) if "have no name" in line]
+            expected = [] if path == observations else [
+                f"note: {indexed}: column(s) 1 have no name (a row index, or a separator ending each line?) and "
+                "are not read"]
+            assert_that(notes == expected, f"{path}: {stderr}")
+            means.append(open(os.path.join(path + ".out", "areal_mean.csv")).read())
+        assert_that(means[0] == means[1], f"the means with and without the index: {means}")
+
+
 def test_a_noaa_climate_data_online_file_is_both_stations_and_observations():
     # NOAA's Climate Data Online CSV: a row per station and day, the station's place on each,
     # columns STATION, NAME (with commas, quoted), LATITUDE, LONGITUDE, ELEVATION, DATE, PRCP and
@@ -3149,13 +3171,32 @@ def test_the_messages_map_to_files_and_lines():
 
 def test_the_other_examples_run_on_their_data():
     with tempfile.TemporaryDirectory() as out:
-        status, _, stderr = run_example("project_gauges.py", "--out", out)
+        status, stdout, stderr = run_example("project_gauges.py", "--out", out)
         assert_that(status == 0, f"project_gauges.py failed: {stderr}")
         projected = read_csv(os.path.join(out, "gauges_projected.csv"))
         stations = read_csv(os.path.join(EXAMPLE_DATA, "colorado_stations.csv"))
         assert_that(len(projected) == len(stations) == 376, f"{len(projected)} projected gauges")
         assert_that(all(math.isfinite(float(r["x_m"])) and math.isfinite(float(r["y_m"])) for r in projected),
                     "a projected coordinate is not finite")
+        # The plane's origin is printed (a GIS user took the record's lat0 for it, some 480 m off
+        # at 69 N): projected with the gauges' record it is (0, 0) to a millimetre, and for the
+        # automatic Albers its latitude lies between the standard parallels.
+        found = re.search(r"x_m and y_m are metres from the plane's origin, at lon (\S+), lat (\S+)\n", stdout)
+        assert_that(found is not None, f"no origin printed: {stdout}")
+        record = read_polydata(os.path.join(out, "gauges_projected.vtp")).GetFieldData().GetAbstractArray(
+            "TesseraProjection").GetValue(0)
+        terms = dict(term.split("=") for term in record.split())
+        from tessera import vtkGeographicProjection
+        from tessera_testing import make_points
+
+        origin = make_points([(float(found.group(1)), float(found.group(2)))])
+        forward = vtkGeographicProjection()
+        forward.SetInputData(origin)
+        forward.SetProjectionRecord(record)
+        forward.Update()
+        x, y, _ = forward.GetOutput().GetPoint(0)
+        assert_that(abs(x) < 1e-3 and abs(y) < 1e-3 and float(terms["lat1"]) < float(found.group(2)) <
+                    float(terms["lat2"]), f"the origin {found.groups()} projects to {x}, {y}; {record}")
         status, stdout, stderr = run_example("ridge_grouping.py", "--out", out)
         assert_that(status == 0, f"ridge_grouping.py failed: {stderr}")
         points = read_polydata(os.path.join(out, "fiji_points.vtp"))
@@ -4062,6 +4103,7 @@ if __name__ == "__main__":
          test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means,
          test_catchment_geopackage_in_metres_beside_a_layer_of_lon_lat_points,
          test_a_plain_id_or_site_no_column_is_the_station_id_where_no_station_column_is,
+         test_a_long_files_unnamed_columns_are_named_as_not_read,
          test_a_noaa_climate_data_online_file_is_both_stations_and_observations,
          test_gauges_from_a_gis_file_of_points_give_the_csv_means,
          test_the_filters_errors_name_the_file_and_line,

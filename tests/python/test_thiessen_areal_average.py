@@ -1671,6 +1671,28 @@ def test_tile_outlines_are_the_tiles_as_polygons_with_holes():
                                          f"differ: {samples[wrong[:5]].tolist()}")
 
 
+def test_a_tile_border_along_the_180th_meridian_stays_on_it():
+    # Gauges mirrored about 180 (given as 179.8 and -179.8): their border runs along the meridian,
+    # and its points came back from the plane at 180 and 179.99999999999997, so the eastern tile
+    # was cut there into its part and a sliver a few nanometres wide, a polygon of its own. Each
+    # gauge has one polygon, on its side of the meridian, meeting the other's at exactly 180, at
+    # every latitude the mirror places the border at.
+    ring = [(179.4, -16.3), (180.5, -16.2), (180.8, -16.7), (180.3, -17.2), (179.6, -17.1), (179.3, -16.7)]
+    for lat in (-16.7, -16.45, 0.3, 41.2, 63.9):
+        f = vtkThiessenArealAverage()
+        errors = messages_of(f)
+        shift = lat + 16.7
+        f.SetGaugesData(gauges_polydata([(179.8, lat), (-179.8, lat)], ["W", "E"], [3.0, 4.0]))
+        f.SetCatchmentData(polygon([[(x, y + shift) for x, y in ring]]))
+        f.Update(3)
+        by_gauge = outline_polygons(f.GetOutputDataObject(3))
+        assert_that(not errors and sorted(by_gauge) == [0, 1], f"at {lat}: {errors} {sorted(by_gauge)}")
+        spans = {g: [(min(x for x, _ in p[0]), max(x for x, _ in p[0])) for p in polygons]
+                 for g, polygons in by_gauge.items()}
+        assert_that(len(spans[0]) == 1 and len(spans[1]) == 1 and spans[0][0][1] == 180.0 == spans[1][0][0],
+                    f"at {lat}: the polygons span {spans}")
+
+
 def test_tile_outlines_follow_the_time_asked_through_their_port():
     # A view of the outlines alone asks through output 3: the step is the one asked there, and
     # output 0 and 3 show the same step's gauges.
@@ -2026,6 +2048,7 @@ if __name__ == "__main__":
          test_columns_not_yet_set_give_no_error_until_the_update,
          test_review_cases_of_times_values_and_time_aware_gauges,
          test_tile_outlines_are_the_tiles_as_polygons_with_holes,
+         test_a_tile_border_along_the_180th_meridian_stays_on_it,
          test_tile_outlines_follow_the_time_asked_through_their_port,
          test_rows_that_cannot_be_used_make_no_step_and_are_listed,
          test_weights_table_lists_every_step,

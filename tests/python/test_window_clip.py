@@ -546,11 +546,11 @@ def test_tiles_and_window_must_share_their_projection():
     # an error naming both extents (the tiles came out whole, covering 2.5e-10 of the window).
     output, errors, warnings = clip_by(tiles_of(gauges), projected(catchment, False))
     assert_that(len(errors) == 1 and "the window (input 1) is projected" in errors[0]
-                and "the tiles (input 0) carries no record and looks like longitude and latitude" in errors[0]
+                and "the tiles (input 0) carry no record and look like longitude and latitude" in errors[0]
                 and "x -106.3 to -102.7" in errors[0] and output.GetNumberOfCells() == 0,
                 f"lon/lat tiles, a projected window: {errors} {warnings}")
     output, errors, warnings = clip_by(tiles_of(same), catchment)
-    assert_that(len(errors) == 1 and "the tiles (input 0) is projected" in errors[0]
+    assert_that(len(errors) == 1 and "the tiles (input 0) are projected" in errors[0]
                 and "the window (input 1) carries no record" in errors[0], f"projected tiles: {errors}")
     # Without a record but in metres (another tool's projection, say): one plane is taken, warned.
     from vtkmodules.vtkCommonDataModel import vtkPolyData
@@ -765,6 +765,26 @@ def test_the_field_data_says_how_much_of_the_window_the_tiles_cover():
     both.Update()
     output, errors, _ = clip_by(both.GetOutput(), polygon(window))
     assert_close(field_value(output, "CoveredFraction"), 2 * expected, 1e-11, "twice the tiles")
+    # A window that no tile reaches (another file, shifted coordinates) gave an empty output and
+    # no message: a warning names both boxes. Tiles in the window's box but beside it (a window in
+    # a gap of tiles in blocks) get none: the boxes meet, and the empty output is a clip's result.
+    for shift, apart in ((5000.0, True), (0.0, False)):
+        far = [[(x + shift, y + shift) for x, y in window[0]]]
+        tiles = tess.GetOutput(0) if apart else corner_tiles(tess.GetOutput(0), window[0])
+        output, errors, warnings = clip_by(tiles, polygon(far))
+        said = [w for w in warnings if "do not meet" in w]
+        assert_that(not errors and output.GetNumberOfCells() == 0 and len(said) == int(apart)
+                    and all("the tiles (input 0) and the window (input 1) do not meet, so the output is empty: the "
+                            f"tiles span x 100000 .. 100600, y 100000 .. 101000, the window x {100020.0 + shift:.0f} "
+                            f".. {100950.0 + shift:.0f}, y {100050.0 + shift:.0f} .. {100980.0 + shift:.0f}" in w
+                            for w in said), f"a window shifted by {shift}: {warnings} {errors}")
+
+
+def corner_tiles(tiles, ring):
+    """The tiles with no point in the box of ring (some of them beyond each of its corners)."""
+    xs, ys = [x for x, _ in ring], [y for _, y in ring]
+    return polygon([cell for cell in cell_rings(tiles)
+                    if not any(min(xs) <= x <= max(xs) and min(ys) <= y <= max(ys) for x, y in cell)])
 
 
 def test_each_block_of_tiles_gives_its_share_of_the_window():
