@@ -432,6 +432,10 @@ void DirichletTessellation::InsertKnownPoint(std::int32_t id, std::int32_t nearI
   this->BeginTrackedChange();
   this->InsertAcceptedPoint(id);
   this->EndTrackedChange();
+  if (!hinted)
+  {
+    this->UnhintedWalk = this->Serial.LastWalk;
+  }
   this->RecentStarts[this->NextRecentStart] = this->Serial.LastTriangle;
   this->NextRecentStart = (this->NextRecentStart + 1) % this->RecentStarts.size();
 }
@@ -501,11 +505,12 @@ void DirichletTessellation::JumpTowards(const Point2& p)
   this->Serial.LastTriangle = best;
 }
 
-// Off turns to Probe once a walk ran 2 cube roots of the triangles or more; whether to jump.
+// Off turns to Probe once an unhinted walk ran 2 cube roots of the triangles or more; whether to
+// jump.
 bool DirichletTessellation::JumpWanted(std::int32_t triangles)
 {
   // (walk >= 2 cbrt(triangles), cubed: most insertions stop here, and need no root)
-  const double walk = double(this->Serial.LastWalk);
+  const double walk = double(this->UnhintedWalk);
   if (this->JumpMode == Jumping::Off && triangles >= 64 && walk * walk * walk >= 8.0 * triangles)
   {
     this->JumpMode = Jumping::Probe;
@@ -540,7 +545,7 @@ int DirichletTessellation::JumpSamples(std::int32_t triangles) const
     return ProbeSamples;
   }
   const double fewest = std::cbrt(double(triangles)), most = std::sqrt(double(triangles));
-  return int(std::clamp(double(this->Serial.LastWalk) / 4.0, fewest, most));
+  return int(std::clamp(double(this->UnhintedWalk) / 4.0, fewest, most));
 }
 
 // xorshift64: a fixed sequence, so that a stream gives the same walks every run.

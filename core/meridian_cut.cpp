@@ -102,12 +102,19 @@ void CutEdgesOnTheLine(ClippedRings& side, double at)
 
 void SnapToMeridian(std::vector<Point2>& lonLat)
 {
+  const auto meridianNear = [](double lon)
+  { return 180.0 + 360.0 * std::round((lon - 180.0) / 360.0); };
+  const auto near = [&](const Point2& p)
+  { return std::abs(p.x - meridianNear(p.x)) <= MeridianSnapDegrees; };
+  if (std::all_of(lonLat.begin(), lonLat.end(), near))
+  {
+    return;
+  }
   for (Point2& p : lonLat)
   {
-    const double meridian = 180.0 + 360.0 * std::round((p.x - 180.0) / 360.0);
-    if (std::abs(p.x - meridian) <= MeridianSnapDegrees)
+    if (near(p))
     {
-      p.x = meridian;
+      p.x = meridianNear(p.x);
     }
   }
 }

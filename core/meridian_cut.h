@@ -36,14 +36,16 @@ std::array<ClippedRings, 2> CutAtMeridian(const ClippedRings& pieces,
   std::size_t last,
   double at);
 
-/// Longitudes within MeridianSnapDegrees of the 180th meridian (or a copy of it 360 degrees on)
-/// set to it exactly. Points of a border along that meridian come back from the plane at 180 and
-/// at 179.99999999999997 by rounding, and such a tile was cut there into its real part and a
-/// sliver a few nanometres wide, written as a second polygon of its feature.
+/// The longitudes of a ring (lonLat) within MeridianSnapDegrees of the 180th meridian (or a copy
+/// of it 360 degrees on) set to it exactly, unless every vertex is that near (a ring thinner than
+/// that along the line keeps its area, as it was). Points of a border along that meridian come
+/// back from the plane at 180 and at 179.99999999999997 by rounding, and such a tile was cut
+/// there into its real part and a sliver a few nanometres wide, written as a second polygon of
+/// its feature. The areal average snaps its pieces in lon/lat so (its tiles' cells and outlines).
 void SnapToMeridian(std::vector<Point2>& lonLat);
 
-/// 1e-10 degrees: about 11 micrometres along the equator, some 10^5 times the rounding of a
-/// point projected and back.
+/// 1e-10 degrees: about 11 micrometres along the equator, some 3500 ulps of 180 (a point
+/// projected and back comes within a few).
 constexpr double MeridianSnapDegrees = 1e-10;
 
 } // namespace tessera

@@ -941,10 +941,17 @@ void CheckTilesFillWindow(const TileMesh& tiles, double windowArea, double corne
   const double total = std::accumulate(tiles.Areas.begin(), tiles.Areas.end(), 0.0);
   if (!(std::fabs(total - windowArea) <= 1e-6 * windowArea + cornerRounding))
   {
+    // (a C++ caller may leave cornerRounding at 0: a small slanted window far from the origin
+    // then fails on its rounded corners alone, as a user's did, 2^-40 wide at 0.5)
+    const std::string corners = cornerRounding == 0.0
+      ? " (or, for a window with a slanted side, its corners' rounding: pass "
+        "CornerRoundingOfTiles(window) as cornerRounding)"
+      : "";
     throw InputError("the tiles' areas add up to " + NumberText(total) +
       ", not the window's area " + NumberText(windowArea) +
       ": the points lie too close together, for the window's size, for exact tiles (their "
-      "coordinates differ by some 1e-60 of it or less)");
+      "coordinates differ by some 1e-60 of it or less)" +
+      corners);
   }
 }
 

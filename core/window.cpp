@@ -511,8 +511,9 @@ std::string BelowExactRangeMessage(const Window& window,
     "coordinate, " +
     NumberText(std::ldexp(window.Reach(), -exponent)) +
     "), though not 0: the tiles' window decisions are exact only from there up, whatever the "
-    "scale; set that coordinate to 0, or move the origin, or use the Brassel-Reif algorithm (the "
-    "tessellation filter's Algorithm), which takes such points in a rectangular window";
+    "scale; set that coordinate to 0, or move the origin, or use the Brassel-Reif sweep "
+    "(ComputeThiessenSweep; the tessellation filter's Algorithm BrasselReif), which takes such "
+    "points in a rectangular window";
 }
 
 void CheckPointsInExactRange(const Window& window, const std::vector<Point2>& points, int exponent)

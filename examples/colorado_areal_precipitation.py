@@ -720,8 +720,9 @@ def say_unnamed_columns(path, header):
     are not read; a wide file's are named with the columns that name no station."""
     unnamed = [number for number, name in enumerate(header, 1) if not name]
     if unnamed:
-        print(f"note: {path}: column(s) {', '.join(map(str, unnamed))} have no name (a row index, or a separator "
-              "ending each line?) and are not read", file=sys.stderr)
+        which = f"column {unnamed[0]} has" if len(unnamed) == 1 else f"columns {', '.join(map(str, unnamed))} have"
+        print(f"note: {path}: {which} no name (a row index, or a separator ending each line?) and "
+              f"{'is' if len(unnamed) == 1 else 'are'} not read", file=sys.stderr)
 
 
 # The column of NOAA's Climate Data Online CSV beside PRCP: "MFLAG,QFLAG,SFLAG,OBSTIME" for GHCN-Daily.

@@ -235,7 +235,7 @@ def projection_error(text, path, gauges, lines):
             or f"{path}: cannot project the gauges: {text}")
 
 
-def plane_origin(projected, vtkGeographicProjection):
+def plane_origin(projected):
     """(lon, lat) of the plane's origin, where x_m = y_m = 0 (None where the projection cannot take
     it back): for a conic, its own origin latitude between lat1 and lat2 (GeographicLib's), not
     the record's lat0, the gauges' middle latitude the parallels are fitted about, which a GIS
@@ -247,15 +247,12 @@ def plane_origin(projected, vtkGeographicProjection):
     points.InsertNextPoint(0.0, 0.0, 0.0)
     origin = vtkPolyData()
     origin.SetPoints(points)
-    back = vtkGeographicProjection()
-    errors = []
-    # (the origin, (0, 0), lies within degrees' ranges: the inverse's warning on it is not the user's)
-    csv_input.catch_vtk_messages(back, errors.append, on_warning=lambda text: None,
-                                 on_executive_error=errors.append)
+    back = csv_input.import_tessera().vtkGeographicProjection()
     back.SetInputData(origin)
     back.InverseOn()
     back.SetProjectionRecord(projected.GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0))
-    back.Update()
+    # (its warning that (0, 0) lies within degrees' ranges is not the user's: dropped)
+    errors = csv_input.errors_of_update(back)
     output = back.GetOutput()
     return None if errors or output.GetNumberOfPoints() != 1 else output.GetPoint(0)[:2]
 
@@ -335,7 +332,7 @@ def main(argv=None):
     record = projected.GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
     print(f"projected {projected.GetNumberOfPoints()} gauges with {record}"
           + (f" ({system.describe()})" if system else ""))
-    origin = plane_origin(projected, vtkGeographicProjection)
+    origin = plane_origin(projected)
     if origin is not None:
         print(f"x_m and y_m are metres from the plane's origin, at lon {origin[0]:.8f}, lat {origin[1]:.8f}")
     print(f"wrote {args.out}/gauges_projected.vtp and {args.out}/gauges_projected.csv")

@@ -1310,6 +1310,20 @@ void RequestWholeInputs(vtkInformationVector** inputVector, int firstPort, int l
   }
 }
 
+bool IsPieceOfMany(vtkInformationVector* outputVector)
+{
+  for (int k = 0; k < outputVector->GetNumberOfInformationObjects(); ++k)
+  {
+    vtkInformation* info = outputVector->GetInformationObject(k);
+    if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) &&
+      info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
 bool MakesOutput(vtkInformationVector* outputVector)
 {
   for (int k = 0; k < outputVector->GetNumberOfInformationObjects(); ++k)
@@ -1780,12 +1794,16 @@ RenamedArrays AddUnusedPointIds(vtkDataObject* data,
   return renamed;
 }
 
-std::string NoPointInWindowWarning(const tessera::Box2& window, const tessera::Box2& points)
+std::string NoPointInWindowWarning(const tessera::Box2& window,
+  const tessera::Box2& points,
+  const char* what)
 {
-  return "no point lies inside the window (" + BoxText(window) + "): the points span " +
-    BoxText(points) +
-    ", so the output is empty (are the window's bounds in the points' units, in the order xmin, "
-    "xmax, ymin, ymax?)";
+  const bool apart = points.XMax < window.XMin || window.XMax < points.XMin ||
+    points.YMax < window.YMin || window.YMax < points.YMin;
+  return "no point lies inside the window (" + BoxText(window) + "), so there is no " + what +
+    ": the points span " + BoxText(points) +
+    (apart ? " (are the window's bounds in the points' units, in the order xmin, xmax, ymin, ymax?)"
+           : " (each lies on the window's boundary or outside one of its constraints)");
 }
 
 std::string NoPointsWarning(const std::string& what)

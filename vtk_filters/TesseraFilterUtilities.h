@@ -165,6 +165,9 @@ void RequestWholeInputs(vtkInformationVector** inputVector, int firstPort, int l
 /// False when an output's requested piece is not the first: that process leaves the outputs empty.
 bool MakesOutput(vtkInformationVector* outputVector);
 
+/// True when an output is asked for one piece of several (a process's piece under MPI).
+bool IsPieceOfMany(vtkInformationVector* outputVector);
+
 /// The window a filter works in: the rectangle `bounds` (xmin, xmax, ymin, ymax) when it is not
 /// empty, intersected with `constraints` (a, b, c triples: a*x + b*y + c < 0); with neither, the
 /// bounding box of the points padded on every side by `padding` times its larger side (a unit
@@ -331,10 +334,13 @@ RenamedArrays AddUnusedPointIds(vtkDataObject* data,
 /// ids are; empty when every point was used.
 std::string UnusedPointsWarning(std::size_t rejected, std::size_t duplicates, const char* verb);
 
-/// The warning for a window that holds none of the points (every point rejected), naming the
-/// window's bounding box and the points' (a ParaView user saw only a count of rejected points and
-/// an empty output).
-std::string NoPointInWindowWarning(const tessera::Box2& window, const tessera::Box2& points);
+/// The warning for a window that holds none of the points (every point rejected), so that there
+/// is no `what` ("tile"), naming the window's bounding box and the points' (a ParaView user saw
+/// only a count of rejected points and an empty output), with a hint on units and order where
+/// the boxes do not meet.
+std::string NoPointInWindowWarning(const tessera::Box2& window,
+  const tessera::Box2& points,
+  const char* what);
 
 /// The warning for an input without points, whose output is then empty: "the input has no points:
 /// no <what> (does the filter before it give none?)" (a ParaView user saw an empty output and no

@@ -176,7 +176,7 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     if (pointCount > 0 && rejected.size() == pointCount)
     {
       vtkWarningMacro(<< tessera_vtk::NoPointInWindowWarning(
-                        windowBox, tessera_vtk::BoundsOfPoints(input->GetPoints())));
+                        windowBox, tessera_vtk::BoundsOfPoints(input->GetPoints()), "triangle"));
     }
     // An output of points and no face, said (a ParaView user saw nothing and no message).
     const std::size_t accepted = tessellation.AcceptedCount();

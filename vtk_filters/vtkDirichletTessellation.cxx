@@ -14,7 +14,6 @@
 #include "vtkPointSet.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkSmartPointer.h"
 #include "vtkTypeInt32Array.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -308,6 +307,13 @@ public:
     tessera_vtk::AllocateValues(this->Connectivity.Get(), 2 * this->PairCount);
     this->Kinds->SetName("Kind");
     tessera_vtk::AllocateValues(this->Kinds.Get(), this->PairCount);
+    // Each line's point ids as cell data too, so that a spreadsheet or a CSV of the graph lists
+    // the neighbours (a ParaView user saw only Kind). Its own copy: an array sharing the
+    // connectivity's buffer would dangle once the lines were replaced.
+    this->PairIds->SetName("PointIds");
+    tessera_vtk::AllocateValues(this->PairIds.Get(), this->PairCount, 2);
+    this->PairIds->SetComponentName(0, "i");
+    this->PairIds->SetComponentName(1, "j");
   }
 
   void Count(int half)
@@ -347,6 +353,7 @@ public:
     const std::int32_t* pairs = this->Graph.Pairs.data();
     const std::uint8_t* kinds = this->Graph.Kinds.data();
     std::int32_t* ids = this->Connectivity->GetPointer(0);
+    std::int32_t* pairIds = this->PairIds->GetPointer(0);
     unsigned char* kindData = this->Kinds->GetPointer(0);
     const vtkIdType begin = this->HalfBegin(half), end = this->HalfBegin(half + 1);
     for (vtkIdType k = begin; k < end; ++k)
@@ -357,8 +364,8 @@ public:
       }
       const std::int32_t i = pairs[2 * k];
       const std::int32_t at = slot[i]++;
-      ids[2 * at] = i;
-      ids[2 * at + 1] = pairs[2 * k + 1];
+      ids[2 * at] = pairIds[2 * at] = i;
+      ids[2 * at + 1] = pairIds[2 * at + 1] = pairs[2 * k + 1];
       kindData[at] = kinds[k];
     }
     std::int32_t* offsetData = this->Offsets->GetPointer(0);
@@ -375,24 +382,10 @@ public:
     output->SetLines(lines);
     output->GetCellData()->AddArray(this->Kinds);
     output->GetCellData()->SetActiveScalars(this->Kinds->GetName()); // (neighbours by colour)
-    output->GetCellData()->AddArray(this->PairIds());
+    output->GetCellData()->AddArray(this->PairIds);
   }
 
 private:
-  /// Each line's point ids as cell data `PointIds` (2 components, i < j): a spreadsheet or a CSV
-  /// of the graph lists the neighbours (a ParaView user saw only Kind). A copy of the connectivity
-  /// (sharing its buffer would leave the array dangling once the lines are replaced).
-  vtkSmartPointer<vtkTypeInt32Array> PairIds() const
-  {
-    auto ids = vtkSmartPointer<vtkTypeInt32Array>::New();
-    ids->SetName("PointIds");
-    tessera_vtk::AllocateValues(ids.Get(), this->PairCount, 2);
-    ids->SetComponentName(0, "i");
-    ids->SetComponentName(1, "j");
-    std::copy_n(this->Connectivity->GetPointer(0), 2 * this->PairCount, ids->GetPointer(0));
-    return ids;
-  }
-
   static constexpr vtkIdType Ahead = 16; ///< pairs read ahead of the one counted or written
   vtkIdType HalfBegin(int half) const
   {
@@ -406,6 +399,7 @@ private:
   vtkNew<vtkTypeInt32Array> Offsets;
   vtkNew<vtkTypeInt32Array> Connectivity;
   vtkNew<vtkUnsignedCharArray> Kinds;
+  vtkNew<vtkTypeInt32Array> PairIds; ///< cell data PointIds: each line's i and j
 };
 
 } // namespace
@@ -585,7 +579,7 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     if (pointCount > 0 && result.Rejected.size() == pointCount)
     {
       vtkWarningMacro(<< tessera_vtk::NoPointInWindowWarning(
-                        windowBox, tessera_vtk::BoundsOfPoints(input->GetPoints())));
+                        windowBox, tessera_vtk::BoundsOfPoints(input->GetPoints()), "tile"));
     }
     const std::string collapsed = CollapsedTilesWarning(result.Tiles);
     if (!collapsed.empty())

@@ -310,8 +310,6 @@ vtkSmartPointer<vtkDoubleArray> OneValue(const char* name, double value)
   return array;
 }
 
-/// The tiles' point data is not passed (their cell and field data are): the pieces' vertices are
-/// new points, crossings of tile edges and window rings among them. A warning names its arrays.
 /// Whether data (a data set, or a composite's data sets) has a cell.
 bool HasCells(vtkDataObject* data)
 {
@@ -323,16 +321,17 @@ bool HasCells(vtkDataObject* data)
   return set && set->GetNumberOfCells() > 0;
 }
 
-/// For tiles whose bounding box and the window's do not meet, so that the output is empty: both
+/// For tiles whose bounding box and the window's share no area, so that the output is empty: both
 /// boxes (a ParaView user got an empty output and no message, CoveredFraction 0 in the field
-/// data); empty where they meet (tiles in a gap of the window, or cells that are no polygons,
+/// data); empty where they overlap (tiles in a gap of the window, or cells that are no polygons,
 /// which ClipTilesOf's warnings name).
 std::string ApartWarning(const double tilesBounds[6], const std::vector<tessera::Point2>& window)
 {
   const tessera::Box2 tiles{ tilesBounds[0], tilesBounds[1], tilesBounds[2], tilesBounds[3] };
   const tessera::Box2 box = tessera::BoundsOf(window.data(), window.size());
-  if (!(tiles.XMax < box.XMin || box.XMax < tiles.XMin || tiles.YMax < box.YMin ||
-        box.YMax < tiles.YMin))
+  // (boxes that only touch share no area either)
+  if (!(tiles.XMax <= box.XMin || box.XMax <= tiles.XMin || tiles.YMax <= box.YMin ||
+        box.YMax <= tiles.YMin))
   {
     return std::string();
   }
@@ -342,6 +341,8 @@ std::string ApartWarning(const double tilesBounds[6], const std::vector<tessera:
     " (are both in the same units and projection?)";
 }
 
+/// The tiles' point data is not passed (their cell and field data are): the pieces' vertices are
+/// new points, crossings of tile edges and window rings among them. A warning names its arrays.
 std::string PointDataWarning(vtkPointSet* tiles)
 {
   vtkPointData* pointData = tiles->GetPointData();
@@ -695,7 +696,8 @@ int vtkWindowClip::RequestData(vtkInformation*,
                                 "1e154 or more); scale the tiles and the window down");
     }
     double tilesBounds[6];
-    if (!tessera_vtk::DataBounds(tilesData, tilesBounds))
+    const bool tilesHavePoints = tessera_vtk::DataBounds(tilesData, tilesBounds);
+    if (!tilesHavePoints)
     {
       vtkWarningMacro(
         << "the tiles (input 0) have no points, so nothing is clipped (did the filter "
@@ -772,7 +774,10 @@ int vtkWindowClip::RequestData(vtkInformation*,
                         << shown << " are)");
       }
     }
-    if (HasCells(tilesData) && !HasCells(output) && !window.Vertices.empty())
+    // (not for one process's piece of the tiles under MPI: each is clipped alone, and a piece
+    // away from the window gives nothing by design)
+    if (tilesHavePoints && HasCells(tilesData) && !HasCells(output) && !window.Vertices.empty() &&
+      !tessera_vtk::IsPieceOfMany(outputVector))
     {
       const std::string apart = ApartWarning(tilesBounds, window.Vertices);
       if (!apart.empty())

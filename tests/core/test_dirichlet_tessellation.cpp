@@ -572,6 +572,36 @@ TEST(DirichletTessellation, AStreamSortedByXWalksFewStepsAndEqualsBatch)
   EXPECT_TRUE(MakeCanonical(Tess(UnitWindow(), points)) == MakeCanonical(streaming));
 }
 
+// Points streamed with and without a hint in turn (nearId: a point beside each hinted one, found
+// from its tracked edge): the hinted walks are short, and each of them made the next unhinted
+// point skip its jump, which decided by the last walk of any kind: the unhinted walks ran some
+// 270 triangles each here, from the hinted point's place (550 at 2 10^5 points). Now they jump,
+// and the result equals the batch of the same points.
+TEST(DirichletTessellation, HintedInsertionsLeaveUnhintedOnesTheirJumps)
+{
+  std::vector<Point2> points = UniformPoints(50000, 23);
+  Tess t(UnitWindow(), points);
+  t.TrackVertexEdges();
+  std::mt19937_64 random(29);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  double hinted = 0.0, unhinted = 0.0;
+  constexpr int Pairs = 500;
+  for (int k = 0; k < Pairs; ++k)
+  {
+    const std::int32_t near = std::int32_t(random() % 50000);
+    points.push_back({ points[near].x + 1e-7, points[near].y + 1e-7 });
+    t.Insert(points.back(), near);
+    hinted += double(t.LastWalkSteps());
+    points.push_back({ unit(random), unit(random) });
+    t.Insert(points.back());
+    unhinted += double(t.LastWalkSteps());
+  }
+  EXPECT_LT(hinted / Pairs, 5.0);
+  EXPECT_LT(unhinted / Pairs, 40.0);
+  CheckStructure(t);
+  EXPECT_TRUE(MakeCanonical(Tess(UnitWindow(), points)) == MakeCanonical(t));
+}
+
 // The same as a sliding window, each point removed 20000 insertions later: new triangles take the
 // freed slots anywhere in the arrays, so the arrays' last triangles are not the newest: jumps
 // that looked there walked 33 steps each here, jumps without recent starts 63; now 7.

@@ -450,6 +450,30 @@ TEST(PieceOutlines, PiecesTouchingOrRecrossingTheMeridianGiveSimpleRings)
   }
 }
 
+// Longitudes within 1e-10 degrees of 180 + 360 k snap onto it, on either side and at any turn;
+// 0, and a vertex 1e-9 away, stay; a ring whose every vertex is that near keeps its own (snapped,
+// it would have no area).
+TEST(PieceOutlines, SnapToMeridianMovesOnlyVerticesBesideIt)
+{
+  std::vector<Point2> ring{ { 179.99999999999997, -16.0 },
+    { 180.00000000005, -16.5 },
+    { -180.00000000000003, -17.0 },
+    { 540.0 - 5e-11, -17.2 },
+    { 180.0 - 1e-9, -17.5 },
+    { 0.0, -18.0 },
+    { 179.0, -18.0 } };
+  SnapToMeridian(ring);
+  const std::vector<double> expected{ 180.0, 180.0, -180.0, 540.0, 180.0 - 1e-9, 0.0, 179.0 };
+  for (std::size_t k = 0; k < ring.size(); ++k)
+  {
+    EXPECT_EQ(ring[k].x, expected[k]) << "vertex " << k;
+  }
+  std::vector<Point2> thin{ { 180.0, 0.0 }, { 180.0 + 5e-11, 0.5 }, { 179.99999999999997, 1.0 } };
+  const std::vector<Point2> before = thin;
+  SnapToMeridian(thin);
+  EXPECT_TRUE(thin == before);
+}
+
 // Tiles of an island across the 180th meridian (longitudes written 179.5 to 180.5, and as
 // -180.5 to -179.5): every polygon of the outlines lies on one side of the meridian, and a tile's
 // polygons hold its pieces' area.

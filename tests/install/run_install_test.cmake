@@ -59,6 +59,14 @@ string(REGEX REPLACE "[ \n]+" " " said "${out} ${err}") # (CMake wraps the messa
 if(status EQUAL 0 OR NOT said MATCHES "installed without its VTK filters \\(configured with TESSERA_BUILD_VTK=OFF\\), so it has no Tessera::Filters")
   message(FATAL_ERROR "asking a core-only install for Tessera::Filters (${status}):\n${out}\n${err}")
 endif()
+# Asked for no component in particular, it says what it lacks before CMake's "target not found".
+execute_process(COMMAND ${CMAKE_COMMAND} -S ${SOURCE_DIR}/tests/install
+  -B ${WORK_DIR}/no_component_from_core_only -G ${GENERATOR} -DCMAKE_PREFIX_PATH=${core_prefix}
+  -DASK_NO_COMPONENT=ON RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+string(REGEX REPLACE "[ \n]+" " " said "${out} ${err}")
+if(status EQUAL 0 OR NOT said MATCHES "installed without its VTK filters \\(TESSERA_BUILD_VTK=OFF\\): Tessera::core only, no Tessera::Filters")
+  message(FATAL_ERROR "a core-only install found without components (${status}):\n${out}\n${err}")
+endif()
 # The installed Python package, alone on the path (not the build tree's).
 # (A script file: a semicolon in an argument would split it as a CMake list.)
 file(WRITE ${WORK_DIR}/import.py "import os\nimport tessera\n"

@@ -214,8 +214,19 @@ def test_unused_points_are_reported_with_ids():
         g.Update()
         assert_that(g.GetOutput(0).GetNumberOfCells() == 0 and len(said) == 2
                     and "3 point(s) outside the window" in said[0]
-                    and "no point lies inside the window (x 100 .. 200, y 100 .. 200): the points span x 3 .. 12, "
-                        "y 1 .. 5" in said[1], f"{filter_class.__name__} {algorithm}: every point outside: {said}")
+                    and f"no point lies inside the window (x 100 .. 200, y 100 .. 200), so there is no "
+                        f"{'triangle' if algorithm is None else 'tile'}: the points span x 3 .. 12, y 1 .. 5 (are the "
+                        "window's bounds in the points' units" in said[1],
+                    f"{filter_class.__name__} {algorithm}: every point outside: {said}")
+    # Points in the window's box but outside its constraint, or on its boundary: no hint on units.
+    g = vtkDirichletTessellation()
+    said = messages_of(g, vtkCommand.WarningEvent)
+    g.SetInputData(make_points([(0.75, 0.75), (0.9, 0.2), (0.0, 0.5)]))
+    g.SetWindowBounds(0, 1, 0, 1)
+    g.AddWindowConstraint(1, 1, -1)  # x + y < 1
+    g.Update()
+    assert_that(len(said) == 2 and "(each lies on the window's boundary or outside one of its constraints)" in said[1],
+                f"points outside a constraint: {said}")
 
 
 def id_values(field_data, name):

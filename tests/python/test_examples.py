@@ -2782,10 +2782,10 @@ def test_a_long_files_unnamed_columns_are_named_as_not_read():
         for path in (observations, indexed):
             _, stderr = run_colorado(path + ".out", stations=stations,
                                      observations=path, catchment=catchment, plots=False, what=path)
-            notes = [line for line in stderr_messages(stderr) if "have no name" in line]
+            notes = [line for line in stderr_messages(stderr) if "no name (a row index" in line]
             expected = [] if path == observations else [
-                f"note: {indexed}: column(s) 1 have no name (a row index, or a separator ending each line?) and "
-                "are not read"]
+                f"note: {indexed}: column 1 has no name (a row index, or a separator ending each line?) and "
+                "is not read"]
             assert_that(notes == expected, f"{path}: {stderr}")
             means.append(open(os.path.join(path + ".out", "areal_mean.csv")).read())
         assert_that(means[0] == means[1], f"the means with and without the index: {means}")
