@@ -157,7 +157,7 @@ public:
   static std::int32_t Next(std::int32_t e) { return e % 3 == 2 ? e - 2 : e + 1; }
   static std::int32_t Prev(std::int32_t e) { return e % 3 == 0 ? e + 2 : e - 1; }
   /// The half-edge after e anticlockwise around Origin()[e] (one step along its ring).
-  std::int32_t RingNext(std::int32_t e) const { return this->Twins[Prev(e)]; }
+  std::int32_t RingNext(std::int32_t e) const { return this->Twins[std::size_t(Prev(e))]; }
   bool IsGhostTriangle(std::int32_t t) const;
 
   /// Keeps one half-edge leaving each vertex up to date from now on (4 bytes per id; Remove turns
@@ -178,7 +178,7 @@ public:
   /// circles through just id and j, which makes id-j an edge of every Delaunay triangulation.
   /// O(degree) when vertex edges are tracked (see EdgeLeaving).
   void AppendNeighbours(std::int32_t id, std::vector<std::int32_t>& out) const;
-  bool IsFreeTriangle(std::int32_t t) const { return this->Origins[3 * t] == Free; }
+  bool IsFreeTriangle(std::int32_t t) const { return this->Origins[3 * std::size_t(t)] == Free; }
   /// True when no two adjacent real triangles are exactly co-circular (so the tessellation has
   /// no degenerate vertex), as tracked since construction: the Delaunay faces are then exactly
   /// the real triangles. False when unknown or once such triangles were met (possibly only on
@@ -256,7 +256,7 @@ private:
   /// The input id of a vertex (differs only during BuildFrom, which numbers vertices locally).
   std::int32_t InputId(std::int32_t v) const
   {
-    return this->BuildOrder ? (*this->BuildOrder)[v] : v;
+    return this->BuildOrder ? (*this->BuildOrder)[std::size_t(v)] : v;
   }
   void InsertKnownPoint(std::int32_t id, std::int32_t nearId);
   /// JumpTowards: off; probing with a few samples after a long walk; on, with many.

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <utility>
 
 namespace tessera
@@ -250,7 +251,7 @@ inline void negate(double* e, int n)
 
 // (u * v - w * z), for u and w of length <= 2 and v and z of length <= Factor (h has room for
 // 8 * Factor): length <= 16 for the default, as the determinants use it.
-template<int Factor = 2>
+template<std::size_t Factor = 2>
 inline int cross_expansion(const double* u,
   int un,
   const double* v,

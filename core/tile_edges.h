@@ -217,7 +217,8 @@ std::int32_t InteriorTile(const Tess& tess,
       {
         return 0;
       }
-      if (first == n || org[Tess::Next(ring[k])] < org[Tess::Next(ring[first])])
+      if (first == n ||
+        org[std::size_t(Tess::Next(ring[k]))] < org[std::size_t(Tess::Next(ring[first]))])
       {
         first = k;
         firstSide = sides;
@@ -235,10 +236,11 @@ std::int32_t InteriorTile(const Tess& tess,
   {
     return 0;
   }
-  std::rotate(polygon.begin(), polygon.begin() + firstSide, polygon.begin() + sides);
+  const auto at = [](std::size_t k) { return std::ptrdiff_t(k); };
+  std::rotate(polygon.begin(), polygon.begin() + at(firstSide), polygon.begin() + at(sides));
   if (labels)
   {
-    std::rotate(labels->begin(), labels->begin() + firstSide, labels->begin() + sides);
+    std::rotate(labels->begin(), labels->begin() + at(firstSide), labels->begin() + at(sides));
   }
   polygon.resize(sides);
   if (!labels)
@@ -273,7 +275,7 @@ void RingTileEdges(const Tess& tess,
     // Diagonals of degenerate faces (the same face on both sides) depend on the insertion order:
     // they are never the start.
     const std::int32_t e = ring[k];
-    const std::int32_t j = org[Tess::Next(e)];
+    const std::int32_t j = org[std::size_t(Tess::Next(e))];
     if (j >= 0 && j < smallest && faces.Label(e / 3) != faces.Label(twin[e] / 3))
     {
       smallest = j;
@@ -284,7 +286,7 @@ void RingTileEdges(const Tess& tess,
   for (std::size_t k = 0; k < ring.size(); ++k)
   {
     const std::int32_t e = ring[(first + k) % ring.size()];
-    const std::int32_t j = org[Tess::Next(e)];
+    const std::int32_t j = org[std::size_t(Tess::Next(e))];
     const std::int32_t left = faces.Label(e / 3);
     const std::int32_t right = faces.Label(twin[e] / 3);
     if (j >= 0 && left != right && ClipEdge(tess, v, j, faces.View(right), faces.View(left), edge))

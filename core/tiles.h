@@ -197,7 +197,7 @@ public:
   static constexpr std::int64_t MinimumTilesPerThread = 2500;
 
   // Face access for the tile walk (tiles.cpp): triangle t's face label, and a face's view.
-  std::int32_t Label(std::int32_t t) const { return this->Data[t].Face; }
+  std::int32_t Label(std::int32_t t) const { return this->Data[std::size_t(t)].Face; }
   tiles_detail::FaceView View(std::int32_t label) const;
 
 private:
