@@ -99,12 +99,16 @@ def fitted_terms(lons, lats, projection):
     csv_input.catch_vtk_messages(fit, kept.append, kept.append, kept.append)
     fit.SetInputData(places)
     fit.Update()
-    return record_terms(fit.GetOutput())
+    return record_terms(projection_record(fit.GetOutput()))
 
 
-def record_terms(projected):
-    """(lon0, lat1, lat2) of a projected data set's TesseraProjection record."""
-    record = projected.GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
+def projection_record(projected):
+    """A projected data set's TesseraProjection record (vtkGeographicProjection's field data)."""
+    return projected.GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
+
+
+def record_terms(record):
+    """(lon0, lat1, lat2) of a TesseraProjection record."""
     terms = dict(term.split("=", 1) for term in record.split() if "=" in term)
     return tuple(float(terms[key]) for key in ("lon0", "lat1", "lat2"))
 
@@ -165,7 +169,8 @@ def say_far_gauges(path, gauges, lines, points, projection, projected):
     projection of them, whose fit is the whole set's), naming each with its line and how far it
     moves it: a projection fitted to the gauges takes them in, and its centre and parallels are
     not those of the rest."""
-    far = far_gauges([lon for lon, _ in points], [lat for _, lat in points], projection, record_terms(projected))
+    far = far_gauges([lon for lon, _ in points], [lat for _, lat in points], projection,
+                     record_terms(projection_record(projected)))
     if far:
         station = gauges.GetPointData().GetAbstractArray("StationId")
         shown = ", ".join(f"{station.GetValue(k)} at lon {points[k][0]:.15g}, lat {points[k][1]:.15g} "
@@ -235,7 +240,7 @@ def projection_error(text, path, gauges, lines):
             or f"{path}: cannot project the gauges: {text}")
 
 
-def plane_origin(projected):
+def plane_origin(record):
     """(lon, lat) of the plane's origin, where x_m = y_m = 0 (None where the projection cannot take
     it back): for a conic, its own origin latitude between lat1 and lat2 (GeographicLib's), not
     the record's lat0, the gauges' middle latitude the parallels are fitted about, which a GIS
@@ -250,7 +255,7 @@ def plane_origin(projected):
     back = csv_input.import_tessera().vtkGeographicProjection()
     back.SetInputData(origin)
     back.InverseOn()
-    back.SetProjectionRecord(projected.GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0))
+    back.SetProjectionRecord(record)
     # (its warning that (0, 0) lies within degrees' ranges is not the user's: dropped)
     errors = csv_input.errors_of_update(back)
     output = back.GetOutput()
@@ -329,10 +334,10 @@ def main(argv=None):
             x, y, _ = projected.GetPoint(i)
             own = [f"{value:.3f}" for value in system.from_grid(x, y)] if system else []
             out.writerow([ids.GetValue(i), names.GetValue(i), lon, lat, f"{x:.3f}", f"{y:.3f}"] + own)
-    record = projected.GetFieldData().GetAbstractArray("TesseraProjection").GetValue(0)
+    record = projection_record(projected)
     print(f"projected {projected.GetNumberOfPoints()} gauges with {record}"
           + (f" ({system.describe()})" if system else ""))
-    origin = plane_origin(projected)
+    origin = plane_origin(record)
     if origin is not None:
         print(f"x_m and y_m are metres from the plane's origin, at lon {origin[0]:.8f}, lat {origin[1]:.8f}")
     print(f"wrote {args.out}/gauges_projected.vtp and {args.out}/gauges_projected.csv")
