@@ -1383,8 +1383,7 @@ std::vector<int> DensifiedPieceCounts(const CleanRings& rings, double edgeDegree
 /// nothing is left). Every weight would then be 0 / 0 and every mean empty, without an error.
 void CheckCatchmentHasArea(const Catchment& region)
 {
-  // Rounding of the projected vertices leaves slivers of some 1e-16 of the rings' areas.
-  if (!(std::abs(region.Area()) > 1e-9 * region.RingAreaSum()))
+  if (region.RingsCancelOut())
   {
     throw InputError("the catchment has no area: its " + std::to_string(region.RingCount()) +
       " rings cancel out, as a point inside an even number of them is outside it (each ring "

@@ -42,6 +42,7 @@
 #include "polygon_validation.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -115,6 +116,13 @@ public:
   /// The rings' areas summed without their signs (each ring's whole area): Area() is this less
   /// twice the holes'.
   double RingAreaSum() const { return this->RingAreas; }
+  /// Whether the rings cancel out under the even-odd rule, leaving no area (a basin given with
+  /// all its sub-basins: each is a hole in it). Rounding of projected vertices leaves slivers of
+  /// some 1e-16 of the rings' areas: below 1e-9 of them counts as none.
+  bool RingsCancelOut() const
+  {
+    return this->RingCount() > 0 && !(std::abs(this->TotalArea) > 1e-9 * this->RingAreas);
+  }
   const Box2& Bounds() const { return this->Box; }
 
   /// Even-odd membership, exact for points off the boundary (boundary points get either answer).

@@ -310,6 +310,26 @@ vtkSmartPointer<vtkDoubleArray> OneValue(const char* name, double value)
   return array;
 }
 
+/// Throws InputError for tiles that are neither a point set nor a composite data set, or for no
+/// window.
+void CheckInputTypes(vtkDataObject* tiles, vtkDataObject* window)
+{
+  if (!tiles)
+  {
+    throw tessera::InputError("no tiles are connected to input 0");
+  }
+  if (!vtkPointSet::SafeDownCast(tiles) && !vtkCompositeDataSet::SafeDownCast(tiles))
+  {
+    throw tessera::InputError(std::string("the tiles (input 0) are a ") + tiles->GetClassName() +
+      ", not a point set (vtkPolyData, vtkUnstructuredGrid, ...) nor a composite of them");
+  }
+  if (!window)
+  {
+    throw tessera::InputError("no window is connected to input 1 (SetWindowData or "
+                              "SetWindowConnection; in ParaView, the filter's Window input)");
+  }
+}
+
 /// Whether data (a data set, or a composite's data sets) has a cell.
 bool HasCells(vtkDataObject* data)
 {
@@ -634,14 +654,13 @@ int vtkWindowClip::FillInputPortInformation(int port, vtkInformation* info)
   // selection of tiles), or a composite of them (a shapefile's polygons read by
   // vtkGDALVectorReader, say), clipped here block by block (not by the composite pipeline, which
   // kept the other blocks' pieces after an error, and whose messages could not name the block).
-  if (port == 0)
+  // Any data object on either port, and the window optional: RequestData names a wrong type or a
+  // missing window in an error of its own (the pipeline's checks stopped before RequestData, with
+  // a log line and no ErrorEvent from the filter, which scripts observe).
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+  if (port == 1)
   {
-    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
-    info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
-  }
-  else
-  {
-    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   }
   return 1;
 }
@@ -668,6 +687,7 @@ int vtkWindowClip::RequestData(vtkInformation*,
   vtkDataObject* outlines = vtkDataObject::GetData(outputVector, 1);
   try
   {
+    CheckInputTypes(tilesData, windowData);
     const std::string projectionWarning = ProjectionWarning(tilesData, windowData);
     if (!projectionWarning.empty())
     {
@@ -694,6 +714,16 @@ int vtkWindowClip::RequestData(vtkInformation*,
     {
       throw tessera::InputError("the window (input 1): its area overflows (coordinates of some "
                                 "1e154 or more); scale the tiles and the window down");
+    }
+    if (catchment.RingsCancelOut())
+    {
+      // (an empty output without an error, CoveredFraction 0 / 0 written as 0, or a warning that
+      // blamed the tiles for having no area to clip)
+      throw tessera::InputError("the window (input 1) has no area: its " +
+        std::to_string(catchment.RingCount()) +
+        " rings cancel out, as a point inside an even number of them is outside it (each ring "
+        "inside another is a hole in it); give the outer ring alone, or each part as a window of "
+        "its own");
     }
     double tilesBounds[6];
     const bool tilesHavePoints = tessera_vtk::DataBounds(tilesData, tilesBounds);

@@ -19,7 +19,9 @@
  * hole touching the outer boundary at a vertex, as OGC's simple features allow; adjacent parts).
  * An island that fills a hole exactly (an enclave given as a hole and as a polygon) cancels it by
  * the even-odd rule: both are left out with a warning naming them. An outer ring given twice (a
- * feature repeated) is an error naming both copies: cancelled, it would take its region away.
+ * feature repeated) is an error naming both copies: cancelled, it would take its region away;
+ * so are rings that cancel out altogether (a basin given with all its sub-basins), tiles that are
+ * neither a point set nor a composite data set (a table), and no window connected.
  * An error too is a tile of input 0 that is not convex (beyond the rounding of its vertices, in
  * float or double as its points are stored: its area differing from its convex hull's by more
  * than a millionth), whose clipped area would otherwise be its hull's. Tiles given as a composite

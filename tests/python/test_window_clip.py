@@ -465,6 +465,22 @@ def test_an_island_that_fills_a_hole_exactly_cancels_it():
     assert_that(errors and "run along each other all the way round" in errors[0], f"an outline twice: {errors}")
 
 
+
+def test_a_window_whose_rings_cancel_out_is_an_error():
+    # A rectangle given with its two halves (a basin with all its sub-basins): under the even-odd
+    # rule every point lies in two rings, so the window has no area. It gave an empty output, no
+    # error, CoveredFraction 0 / 0 written as 0, and a warning blaming the tile; it is an error as
+    # the areal average's catchment is. Half of it cancelled still clips (the other half).
+    whole = [(0, 0), (2, 0), (2, 1), (0, 1)]
+    left, right = [(0, 0), (1, 0), (1, 1), (0, 1)], [(1, 0), (2, 0), (2, 1), (1, 1)]
+    for tile in ([(0, 0), (2, 0), (2, 1), (0, 1)], [(0.2, 0.2), (0.8, 0.2), (0.8, 0.8), (0.2, 0.8)]):
+        output, errors, warnings = clip_by(polygon([tile]), polygon([whole, left, right]))
+        assert_that(output.GetNumberOfCells() == 0 and len(errors) == 1
+                    and "the window (input 1) has no area: its 3 rings cancel out" in errors[0] and not warnings,
+                    f"{tile}: {errors} {warnings}")
+    output, errors, _ = clip_by(polygon([whole]), polygon([whole, left]))
+    assert_close(field_value(output, "WindowArea"), 1.0, 1e-15, f"half cancelled: {errors}")
+
 def test_tiles_and_window_must_share_their_projection():
     """Gauges and catchment projected apart, each with its automatic projection, lie in two
     different planes: clipping one by the other is an error naming both projections. With one
@@ -655,6 +671,25 @@ def test_inputs_of_another_type_are_named_and_leave_empty_outputs():
     areas = [out.GetBlock(k).GetCellData().GetArray("ClippedArea").GetValue(0) for k in range(out.GetNumberOfBlocks())]
     assert_that(not clip_errors and out.IsA("vtkMultiBlockDataSet") and np.allclose(areas, [0.08, 0.25], rtol=1e-12),
                 f"blocks clipped one by one: {out.GetClassName()}, {areas}, {clip_errors}")
+    # A table as the tiles, and no window at all, were stopped by the pipeline before the filter
+    # ran: a log line, no ErrorEvent for a script to observe, and the last result left in place.
+    # Now each is the filter's error, and the outputs are empty.
+    window = polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]])
+    for tiles, window_data, expected in ((vtkTable(), window, "the tiles (input 0) are a vtkTable, not a point set"),
+                                         (polygon([[(0.2, 0.2), (0.6, 0.2), (0.6, 0.6)]]), None,
+                                          "no window is connected to input 1")):
+        clip = vtkWindowClip()
+        clip_errors = messages_of(clip)
+        clip.SetInputData(polygon([[(0.2, 0.2), (0.6, 0.2), (0.6, 0.6)]]))
+        clip.SetWindowData(window)
+        clip.Update()
+        assert_that(clip.GetOutputDataObject(0).GetNumberOfCells() == 1 and not clip_errors, f"{clip_errors}")
+        clip.SetInputData(tiles)
+        if window_data is None:
+            clip.RemoveAllInputConnections(1)
+        clip.Update()
+        assert_that(clip.GetOutputDataObject(0).GetNumberOfCells() == 0 and len(clip_errors) == 1
+                    and expected in clip_errors[0], f"{expected}: {clip_errors}")
 
 
 def test_review_of_windows_of_other_types_global_ids_and_flat_tiles():
@@ -1148,6 +1183,7 @@ if __name__ == "__main__":
          test_input_arrays_named_like_the_filters_are_kept_under_another_name,
          test_a_window_of_loose_line_segments_is_joined_into_its_rings,
          test_an_island_that_fills_a_hole_exactly_cancels_it,
+         test_a_window_whose_rings_cancel_out_is_an_error,
          test_tiles_and_window_must_share_their_projection,
          test_the_tiles_point_data_is_named_as_not_passed,
          test_inputs_of_another_type_are_named_and_leave_empty_outputs,
