@@ -1385,10 +1385,9 @@ void CheckCatchmentHasArea(const Catchment& region)
 {
   if (region.RingsCancelOut())
   {
-    throw InputError("the catchment has no area: its " + std::to_string(region.RingCount()) +
-      " rings cancel out, as a point inside an even number of them is outside it (each ring "
-      "inside another is a hole in it). A basin given together with its sub-basins does this: "
-      "give the basin alone, or each sub-basin as a catchment of its own");
+    throw InputError("the catchment has no area: " + region.RingsCancelOutText() +
+      ". A basin given together with its sub-basins does this: give the basin alone, or each "
+      "sub-basin as a catchment of its own");
   }
 }
 

@@ -787,6 +787,13 @@ void Catchment::ClassifyEmptyCells()
   }
 }
 
+std::string Catchment::RingsCancelOutText() const
+{
+  return "its " + std::to_string(this->RingCount()) +
+    " rings cancel out, as a point inside an even number of them is outside it (each ring inside "
+    "another is a hole in it)";
+}
+
 bool Catchment::Contains(const Point2& p) const
 {
   Workspace work;

@@ -46,6 +46,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -123,6 +124,9 @@ public:
   {
     return this->RingCount() > 0 && !(std::abs(this->TotalArea) > 1e-9 * this->RingAreas);
   }
+  /// "its N rings cancel out, as a point inside an even number of them is outside it (...)", for
+  /// the callers' errors when RingsCancelOut.
+  std::string RingsCancelOutText() const;
   const Box2& Bounds() const { return this->Box; }
 
   /// Even-odd membership, exact for points off the boundary (boundary points get either answer).

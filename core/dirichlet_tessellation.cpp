@@ -455,11 +455,11 @@ void DirichletTessellation::InsertKnownPoint(std::int32_t id, std::int32_t nearI
 // order must not pay for it (each sample is a cache miss or two at 10^6 points: sampling at every
 // point made one 5 times slower), so:
 //
-//   Off --walk of 2 cube roots of the triangles or more--> Probe (the recent starts, and the
-//            index or 16 samples)
+//   Off --unhinted walk of 2 cube roots of the triangles or more--> Probe (the recent starts,
+//            and the index or 16 samples)
 //   Probe --a start nearer than the last triangle--> On (the recent starts, and the index or a
-//            quarter as many samples as the last walk's steps, from a cube root to a square
-//            root of the triangles); else --> Off
+//            quarter as many samples as the last unhinted walk's steps, from a cube root to a
+//            square root of the triangles); else --> Off
 //   On --JumpMissesToStop jumps in a row finding none nearer--> Off
 void DirichletTessellation::JumpTowards(const Point2& p)
 {
@@ -536,7 +536,7 @@ double DirichletTessellation::SquaredDistanceToTriangle(std::int32_t t, const Po
 }
 
 // Random triangles to sample where there is no index: a few while probing, then a quarter as
-// many as the last walk's steps, from a cube root to a square root of the triangles.
+// many as the last unhinted walk's steps, from a cube root to a square root of the triangles.
 int DirichletTessellation::JumpSamples(std::int32_t triangles) const
 {
   constexpr int ProbeSamples = 16;

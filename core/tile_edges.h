@@ -276,7 +276,7 @@ void RingTileEdges(const Tess& tess,
     // they are never the start.
     const std::int32_t e = ring[k];
     const std::int32_t j = org[std::size_t(Tess::Next(e))];
-    if (j >= 0 && j < smallest && faces.Label(e / 3) != faces.Label(twin[e] / 3))
+    if (j >= 0 && j < smallest && faces.Label(e / 3) != faces.Label(twin[std::size_t(e)] / 3))
     {
       smallest = j;
       first = k;
@@ -288,7 +288,7 @@ void RingTileEdges(const Tess& tess,
     const std::int32_t e = ring[(first + k) % ring.size()];
     const std::int32_t j = org[std::size_t(Tess::Next(e))];
     const std::int32_t left = faces.Label(e / 3);
-    const std::int32_t right = faces.Label(twin[e] / 3);
+    const std::int32_t right = faces.Label(twin[std::size_t(e)] / 3);
     if (j >= 0 && left != right && ClipEdge(tess, v, j, faces.View(right), faces.View(left), edge))
     {
       edges.push_back(edge);

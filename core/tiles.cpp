@@ -924,7 +924,9 @@ void ScaleByPowerOfTwo(TileMesh& mesh, int exponent)
 /// The tiles fill the window, so their areas add up to its area. Points closer together than the
 /// tile derivation's exact range allows (some 1e-60 of the window's size, where the products of
 /// its window decisions underflow) can break that: an error then, rather than wrong tiles.
-void CheckTilesFillWindow(const TileMesh& tiles, double windowArea, double cornerRounding)
+void CheckTilesFillWindow(const TileMesh& tiles,
+  double windowArea,
+  std::optional<double> cornerRounding)
 {
   if (tiles.Areas.empty())
   {
@@ -939,14 +941,14 @@ void CheckTilesFillWindow(const TileMesh& tiles, double windowArea, double corne
   }
   // (a plain sum: its rounding, some n ulps at most, is far inside the 1e-6 tolerance)
   const double total = std::accumulate(tiles.Areas.begin(), tiles.Areas.end(), 0.0);
-  if (!(std::fabs(total - windowArea) <= 1e-6 * windowArea + cornerRounding))
+  if (!(std::fabs(total - windowArea) <= 1e-6 * windowArea + cornerRounding.value_or(0.0)))
   {
-    // (a C++ caller may leave cornerRounding at 0: a small slanted window far from the origin
-    // then fails on its rounded corners alone, as a user's did, 2^-40 wide at 0.5)
-    const std::string corners = cornerRounding == 0.0
-      ? " (or, for a window with a slanted side, its corners' rounding: pass "
-        "CornerRoundingOfTiles(window) as cornerRounding)"
-      : "";
+    // (a C++ caller who gives no cornerRounding: a small slanted window far from the origin then
+    // fails on its rounded corners alone, as a user's did, 2^-40 wide at 0.5)
+    const std::string corners = cornerRounding
+      ? ""
+      : " (or, for a window with a slanted side, its corners' rounding: pass "
+        "CornerRoundingOfTiles(window) as cornerRounding)";
     throw InputError("the tiles' areas add up to " + NumberText(total) +
       ", not the window's area " + NumberText(windowArea) +
       ": the points lie too close together, for the window's size, for exact tiles (their "

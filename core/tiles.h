@@ -42,6 +42,7 @@
 #include "uninitialized_allocator.h"
 
 #include <cstdint>
+#include <optional>
 #include <functional>
 #include <tuple>
 #include <utility>
@@ -134,11 +135,15 @@ void CheckWindowInExactRange(const DirichletTessellation& tessellation);
 std::vector<std::int32_t> CollapsedTilePoints(const TileMesh& tiles);
 
 /// Throws InputError unless the tiles' areas add up to the window's area (within 1e-6 relative,
-/// plus cornerRounding): a check that points lay within the range where the tiles are exact
-/// (window_predicates.h). Necessary, not sufficient: it catches tiles that overlap or leave gaps,
-/// not a tile given to the wrong point. No tiles pass. windowArea must be Window::Area() of the
-/// window the tiles were made in: the message blames the points, as that is what it checks.
-void CheckTilesFillWindow(const TileMesh& tiles, double windowArea, double cornerRounding = 0.0);
+/// plus cornerRounding, CornerRoundingOfTiles(window); none given counts as 0): a check that
+/// points lay within the range where the tiles are exact (window_predicates.h). Necessary, not
+/// sufficient: it catches tiles that overlap or leave gaps, not a tile given to the wrong point.
+/// No tiles pass. windowArea must be Window::Area() of the window the tiles were made in: the
+/// message blames the points, as that is what it checks, and where no cornerRounding was given,
+/// names it too (a small slanted window far from the origin fails on its corners alone).
+void CheckTilesFillWindow(const TileMesh& tiles,
+  double windowArea,
+  std::optional<double> cornerRounding = std::nullopt);
 
 /// How far the tiles' areas can add up from the window's exact area because their corners are
 /// rounded to doubles: a corner on a slanted side lies off it by some ulps of the coordinates (a

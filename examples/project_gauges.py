@@ -9,9 +9,9 @@ examples/data/colorado_stations.csv) and writes into --out:
   gauges_projected.csv   station_id, name, lon, lat, x_m, y_m; with --crs also x_crs, y_crs: the
                          coordinates in that system's own unit (its feet, for a state plane in feet).
 x_m and y_m are metres in the projection's plane, from its origin, whose lon/lat the script prints:
-for a conic (the automatic projection, Albers, Lambert) the central meridian lon0 at the conic's
-own origin latitude between lat1 and lat2, not the record's lat0 (the gauges' middle latitude the
-parallels are fitted about).
+for a fitted conic (the automatic projection, Albers, Lambert; without --crs) the central meridian
+lon0 at the conic's own origin latitude between lat1 and lat2, not the record's lat0 (the gauges'
+middle latitude the parallels are fitted about); with --crs, that system's grid decides it.
 
 --projection picks one of the filter's projections, fitted to the gauges; --crs gives a projected
 coordinate system by its EPSG code or PROJ terms (as the main job's --stations-crs reads them: UTM,
@@ -339,7 +339,7 @@ def main(argv=None):
           + (f" ({system.describe()})" if system else ""))
     origin = plane_origin(record)
     if origin is not None:
-        print(f"x_m and y_m are metres from the plane's origin, at lon {origin[0]:.8f}, lat {origin[1]:.8f}")
+        print(f"x_m and y_m are metres from the plane's origin, at lon {origin[0]:.10f}, lat {origin[1]:.10f}")
     print(f"wrote {args.out}/gauges_projected.vtp and {args.out}/gauges_projected.csv")
 
 

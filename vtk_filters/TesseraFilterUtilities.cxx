@@ -10,6 +10,7 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkIdList.h"
 #include "vtkInformation.h"
+#include "vtkInformationIntegerKey.h"
 #include "vtkInformationVector.h"
 #include "vtkMultiBlockDataSet.h"
 #include "vtkPartitionedDataSet.h"
@@ -198,13 +199,6 @@ std::vector<tessera::Point2> ReadPoints2D(vtkPoints* points, vtkDataObject* join
   return xy;
 }
 
-tessera::Box2 BoundsOfPoints(vtkPoints* points)
-{
-  double bounds[6];
-  points->GetBounds(bounds);
-  return { bounds[0], bounds[1], bounds[2], bounds[3] };
-}
-
 std::string BoxText(const tessera::Box2& box)
 {
   return "x " + tessera::NumberText(box.XMin) + " .. " + tessera::NumberText(box.XMax) + ", y " +
@@ -213,6 +207,14 @@ std::string BoxText(const tessera::Box2& box)
 
 namespace
 {
+/// The x, y bounding box of points (at least one).
+tessera::Box2 BoundsOfPoints(vtkPoints* points)
+{
+  double bounds[6];
+  points->GetBounds(bounds);
+  return { bounds[0], bounds[1], bounds[2], bounds[3] };
+}
+
 // value - pad, or the next double below value when rounding swallows pad (a pad far below the
 // coordinates' ulp: points 0.25 apart at 1e15, a lone point at 1e16): the automatic window must
 // keep every point strictly inside.
@@ -1310,32 +1312,32 @@ void RequestWholeInputs(vtkInformationVector** inputVector, int firstPort, int l
   }
 }
 
-bool IsPieceOfMany(vtkInformationVector* outputVector)
+namespace
+{
+/// Whether an output's request holds key above value (its piece's number, or its number of pieces).
+bool AnyRequestAbove(vtkInformationVector* outputVector, vtkInformationIntegerKey* key, int value)
 {
   for (int k = 0; k < outputVector->GetNumberOfInformationObjects(); ++k)
   {
     vtkInformation* info = outputVector->GetInformationObject(k);
-    if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) &&
-      info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1)
+    if (info->Has(key) && info->Get(key) > value)
     {
       return true;
     }
   }
   return false;
 }
+} // namespace
+
+bool IsPieceOfMany(vtkInformationVector* outputVector)
+{
+  return AnyRequestAbove(
+    outputVector, vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+}
 
 bool MakesOutput(vtkInformationVector* outputVector)
 {
-  for (int k = 0; k < outputVector->GetNumberOfInformationObjects(); ++k)
-  {
-    vtkInformation* info = outputVector->GetInformationObject(k);
-    if (info->Has(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) &&
-      info->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()) > 0)
-    {
-      return false;
-    }
-  }
-  return true;
+  return !AnyRequestAbove(outputVector, vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER(), 0);
 }
 
 vtkSmartPointer<vtkPointSet> InputPoints(vtkDataObject* data, std::vector<std::string>& warnings)
@@ -1795,15 +1797,23 @@ RenamedArrays AddUnusedPointIds(vtkDataObject* data,
 }
 
 std::string NoPointInWindowWarning(const tessera::Box2& window,
-  const tessera::Box2& points,
+  vtkPoints* points,
+  std::size_t rejected,
   const char* what)
 {
-  const bool apart = points.XMax < window.XMin || window.XMax < points.XMin ||
-    points.YMax < window.YMin || window.YMax < points.YMin;
+  if (!points || points->GetNumberOfPoints() == 0 ||
+    rejected != static_cast<std::size_t>(points->GetNumberOfPoints()))
+  {
+    return std::string();
+  }
+  const tessera::Box2 box = BoundsOfPoints(points);
+  const bool apart = box.XMax < window.XMin || window.XMax < box.XMin || box.YMax < window.YMin ||
+    window.YMax < box.YMin;
   return "no point lies inside the window (" + BoxText(window) + "), so there is no " + what +
-    ": the points span " + BoxText(points) +
-    (apart ? " (are the window's bounds in the points' units, in the order xmin, xmax, ymin, ymax?)"
-           : " (each lies on the window's boundary or outside one of its constraints)");
+    ": the points span " + BoxText(box) +
+    (apart ? " (is the window in the points' units, WindowBounds in the order xmin, xmax, ymin, "
+             "ymax?)"
+           : " (the boxes overlap, but each point lies outside the window or on its boundary)");
 }
 
 std::string NoPointsWarning(const std::string& what)

@@ -204,9 +204,6 @@ void AddIdFieldArray(vtkDataObject* data, const char* name, const std::vector<st
 /// false when it has no points (or is neither).
 bool DataBounds(vtkDataObject* data, double bounds[6]);
 
-/// The x, y bounding box of points (at least one).
-tessera::Box2 BoundsOfPoints(vtkPoints* points);
-
 /// "x xmin .. xmax, y ymin .. ymax", for messages.
 std::string BoxText(const tessera::Box2& box);
 
@@ -334,12 +331,13 @@ RenamedArrays AddUnusedPointIds(vtkDataObject* data,
 /// ids are; empty when every point was used.
 std::string UnusedPointsWarning(std::size_t rejected, std::size_t duplicates, const char* verb);
 
-/// The warning for a window that holds none of the points (every point rejected), so that there
-/// is no `what` ("tile"), naming the window's bounding box and the points' (a ParaView user saw
-/// only a count of rejected points and an empty output), with a hint on units and order where
-/// the boxes do not meet.
+/// The warning for a window (its bounding box) that holds none of the points (`rejected` all of
+/// them), so that there is no `what` ("tile"), naming the window's box and the points' (a
+/// ParaView user saw only a count of rejected points and an empty output), with a hint on units
+/// and order where the boxes do not meet; empty where some point was taken, or there is none.
 std::string NoPointInWindowWarning(const tessera::Box2& window,
-  const tessera::Box2& points,
+  vtkPoints* points,
+  std::size_t rejected,
   const char* what);
 
 /// The warning for an input without points, whose output is then empty: "the input has no points:

@@ -139,7 +139,6 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     }
     tessera::Window window = tessera_vtk::ChooseWindow(
       this->WindowBounds, this->WindowConstraints, this->Padding, points, false);
-    const std::size_t pointCount = points.size();
     const tessera::Box2 windowBox =
       tessera::BoundsOf(window.Vertices().data(), window.Vertices().size());
     // Coordinates of some 1e100 or more, or 1e-100 or less: the triangulation of points and
@@ -173,10 +172,11 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     {
       vtkWarningMacro(<< unused);
     }
-    if (pointCount > 0 && rejected.size() == pointCount)
+    const std::string noPointIn = tessera_vtk::NoPointInWindowWarning(
+      windowBox, input->GetPoints(), rejected.size(), "triangle");
+    if (!noPointIn.empty())
     {
-      vtkWarningMacro(<< tessera_vtk::NoPointInWindowWarning(
-                        windowBox, tessera_vtk::BoundsOfPoints(input->GetPoints()), "triangle"));
+      vtkWarningMacro(<< noPointIn);
     }
     // An output of points and no face, said (a ParaView user saw nothing and no message).
     const std::size_t accepted = tessellation.AcceptedCount();

@@ -487,7 +487,6 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     }
     tessera::Window window =
       tessera_vtk::ChooseWindow(this->WindowBounds, this->WindowConstraints, this->Padding, points);
-    const std::size_t pointCount = points.size();
     const tessera::Box2 windowBox =
       tessera::BoundsOf(window.Vertices().data(), window.Vertices().size());
     // Coordinates of some 1e100 or 1e-100: both engines work on points and window scaled by a
@@ -576,10 +575,11 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     {
       vtkWarningMacro(<< unused);
     }
-    if (pointCount > 0 && result.Rejected.size() == pointCount)
+    const std::string noPointIn = tessera_vtk::NoPointInWindowWarning(
+      windowBox, input->GetPoints(), result.Rejected.size(), "tile");
+    if (!noPointIn.empty())
     {
-      vtkWarningMacro(<< tessera_vtk::NoPointInWindowWarning(
-                        windowBox, tessera_vtk::BoundsOfPoints(input->GetPoints()), "tile"));
+      vtkWarningMacro(<< noPointIn);
     }
     const std::string collapsed = CollapsedTilesWarning(result.Tiles);
     if (!collapsed.empty())

@@ -80,7 +80,8 @@
  * With ComputeContiguityGraph off, output 1 has no points and no lines (its field data is still
  * output 0's) and the graph is not written (nor derived, with GreenSibson; the sweep finds
  * it anyway): a caller that wants only the tiles saves that time (about 10-25% of the filter's)
- * and the graph's memory (some 12 bytes per contiguity, 3 per point).
+ * and the graph's memory (some 21 bytes per contiguity, with its PointIds; 3 contiguities per
+ * point).
  *
  * Both outputs' cell arrays use 32-bit storage (read by VTK like the 64-bit kind).
  *

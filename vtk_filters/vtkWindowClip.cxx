@@ -314,9 +314,9 @@ vtkSmartPointer<vtkDoubleArray> OneValue(const char* name, double value)
 /// window.
 void CheckInputTypes(vtkDataObject* tiles, vtkDataObject* window)
 {
-  if (!tiles)
+  if (!tiles) // (port 0 is required: a producer that gave no data object at all)
   {
-    throw tessera::InputError("no tiles are connected to input 0");
+    throw tessera::InputError("input 0 holds no tiles (no data object)");
   }
   if (!vtkPointSet::SafeDownCast(tiles) && !vtkCompositeDataSet::SafeDownCast(tiles))
   {
@@ -719,11 +719,9 @@ int vtkWindowClip::RequestData(vtkInformation*,
     {
       // (an empty output without an error, CoveredFraction 0 / 0 written as 0, or a warning that
       // blamed the tiles for having no area to clip)
-      throw tessera::InputError("the window (input 1) has no area: its " +
-        std::to_string(catchment.RingCount()) +
-        " rings cancel out, as a point inside an even number of them is outside it (each ring "
-        "inside another is a hole in it); give the outer ring alone, or each part as a window of "
-        "its own");
+      throw tessera::InputError(
+        "the window (input 1) has no area: " + catchment.RingsCancelOutText() +
+        "; give the outer ring alone, or each part as a window of its own");
     }
     double tilesBounds[6];
     const bool tilesHavePoints = tessera_vtk::DataBounds(tilesData, tilesBounds);
@@ -891,7 +889,7 @@ int vtkWindowClip::RequestDataObject(vtkInformation*,
   vtkInformationVector* outputVector)
 {
   // The tiles' kind: a vtkPolyData, or a composite of the same class as the tiles' (a
-  // vtkPolyData too for no input yet, or one of another type, which the pipeline refuses).
+  // vtkPolyData too for no input yet, or one of another type, which RequestData refuses).
   tessera_vtk::MakeCompositeOrPolyDataOutput(
     vtkCompositeDataSet::GetData(inputVector[0], 0), outputVector);
   return 1;

@@ -82,7 +82,8 @@
  * count only the covered part), above 1 where tiles overlap. (Not a warning: a clip of a few
  * tiles, or of a composite's blocks and a parallel run's pieces, each clipped alone, covers a
  * share of the window by design. Where the tiles' bounding box and the window's do not meet, a
- * warning names both: the output is empty.) The tiles' point data is not passed (the pieces'
+ * warning names both, the output being empty; not for one process's piece of the tiles under
+ * MPI.) The tiles' point data is not passed (the pieces'
  * vertices are new points; a warning names its arrays). Only x and y are used, in one plane: inputs
  * whose `TesseraProjection` records (vtkGeographicProjection) differ are an error naming both; a
  * record on one input only is an error where that input reaches metres (1e4 or more) and the other

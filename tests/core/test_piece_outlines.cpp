@@ -518,7 +518,8 @@ TEST(PieceOutlines, TilesAcrossTheAntimeridianAreCutThere)
     ThiessenArealAverage average(gauges, { 0, island.size() }, island);
     average.Step(std::vector<double>(gauges.size(), 1.0));
     const ClippedTilesLonLat tiles = average.CurrentClippedTiles();
-    const bool mirrored = c % cases.size() == 2;
+    constexpr std::size_t MirroredGauges = 2; // (the case whose border lies on the meridian)
+    const bool mirrored = c % cases.size() == MirroredGauges;
     int across = 0;
     for (std::size_t k = 0; k < tiles.Gauges.size(); ++k)
     {

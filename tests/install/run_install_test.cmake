@@ -35,6 +35,9 @@ foreach(consumer IN ITEMS consumer core_consumer)
   endif()
   run("configuring ${consumer}" ${CMAKE_COMMAND} -S ${project} -B ${WORK_DIR}/${consumer}
     -G ${GENERATOR} -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix})
+  if(output MATCHES "installed without its VTK filters")
+    message(FATAL_ERROR "a full install said it has no filters to ${consumer}:\n${output}")
+  endif()
   run("building ${consumer}" ${CMAKE_COMMAND} --build ${WORK_DIR}/${consumer})
   # A GoogleTest program: a failed check exits non-zero (run fails); one that ran no test, too.
   run("running ${consumer}" ${WORK_DIR}/${consumer}/${consumer})
