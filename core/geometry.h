@@ -52,6 +52,18 @@ struct Box2
     this->Extend(Point2{ other.XMax, other.YMax });
   }
   double LargerSide() const { return std::max(this->XMax - this->XMin, this->YMax - this->YMin); }
+  /// Whether the two boxes have a point in common (closed: boxes that touch meet).
+  bool Meets(const Box2& other) const
+  {
+    return this->XMin <= other.XMax && other.XMin <= this->XMax && this->YMin <= other.YMax &&
+      other.YMin <= this->YMax;
+  }
+  /// Whether the two boxes share an area (boxes that only touch do not).
+  bool Overlaps(const Box2& other) const
+  {
+    return this->XMin < other.XMax && other.XMin < this->XMax && this->YMin < other.YMax &&
+      other.YMin < this->YMax;
+  }
   /// Whether inner lies in this box (closed; false where a bound is NaN).
   bool Holds(const Box2& inner) const
   {

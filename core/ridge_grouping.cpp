@@ -719,13 +719,12 @@ std::pair<std::vector<std::ptrdiff_t>, std::vector<std::ptrdiff_t>> EndPointsOfG
 ///
 ///    ===================.  tip          the way out is taken at the tip, not at the hook's end
 ///                  end '
-template<class PixelAt>
-int EndTip(const PixelAt& pixelAt, int end, int inward, int reach)
+int EndTip(const GroupedPoints& grouped, int end, int inward, int reach)
 {
-  const Point2 base = pixelAt(end + inward * reach);
+  const Point2 base = grouped.ContourPoint(end + inward * reach);
   const auto distance2 = [&](int position)
   {
-    const Point2 p = pixelAt(position);
+    const Point2 p = grouped.ContourPoint(position);
     return (p.x - base.x) * (p.x - base.x) + (p.y - base.y) * (p.y - base.y);
   };
   int tip = end;
@@ -755,15 +754,14 @@ std::vector<ContourEnd> OpenContourEnds(const GroupedPoints& grouped)
       continue;
     }
     const int back = std::min(last - first, std::max(2, static_cast<int>(std::lround(width))));
-    const auto pixelAt = [&](int position) { return grouped.ContourPoint(position); };
     for (const auto& [end, inward] : { std::make_pair(first, 1), std::make_pair(last, -1) })
     {
-      const int tip = EndTip(pixelAt, end, inward, std::min(last - first, 2 * back));
+      const int tip = EndTip(grouped, end, inward, std::min(last - first, 2 * back));
       const int inner = std::clamp(tip + inward * back, first, last);
-      const Point2 pixel = pixelAt(tip), from = pixelAt(inner);
+      const Point2 pixel = grouped.ContourPoint(tip), from = grouped.ContourPoint(inner);
       const std::ptrdiff_t point = (end == first ? lowest : highest)[std::size_t(c)];
       ends.push_back({ c,
-        point < 0 ? pixelAt(end) : pixelPoints[std::size_t(point)],
+        point < 0 ? grouped.ContourPoint(end) : pixelPoints[std::size_t(point)],
         { pixel.x - from.x, pixel.y - from.y } });
     }
   }
@@ -1187,7 +1185,6 @@ std::optional<double> SignedOffContour(const GroupedPoints& grouped, std::size_t
   const int first = contours.Offsets[c], last = contours.Offsets[c + 1] - 1;
   const int at = grouped.Partition.Projection[k];
   const int count = last - first + 1;
-  const auto pixelAt = [&](int position) { return grouped.ContourPoint(position); };
   const Point2& p = grouped.PixelPoints[k];
   const auto offLine = [&](const Point2& from, const Point2& to, const Point2& through)
   {
@@ -1203,7 +1200,7 @@ std::optional<double> SignedOffContour(const GroupedPoints& grouped, std::size_t
     for (const auto& [end, inner] :
       { std::make_pair(first, first + back), std::make_pair(last, last - back) })
     {
-      const Point2 e = pixelAt(end), in = pixelAt(inner);
+      const Point2 e = grouped.ContourPoint(end), in = grouped.ContourPoint(inner);
       const bool beyond = (p.x - e.x) * (e.x - in.x) + (p.y - e.y) * (e.y - in.y) > 0.0;
       if (std::abs(at - end) <= zone && beyond && !(e == in))
       {
@@ -1214,15 +1211,16 @@ std::optional<double> SignedOffContour(const GroupedPoints& grouped, std::size_t
   }
   const auto near = [&](int offset)
   {
-    return pixelAt(contours.Closed[c] ? first + ((at - first + offset) % count + count) % count
-                                      : std::clamp(at + offset, first, last));
+    return grouped.ContourPoint(contours.Closed[c]
+        ? first + ((at - first + offset) % count + count) % count
+        : std::clamp(at + offset, first, last));
   };
   const Point2 from = near(-2), to = near(2);
   if ((contours.Closed[c] && count < 5) || from == to)
   {
     return std::nullopt; // (a closed contour of 3 pixels ran backwards from at - 2 to at + 2)
   }
-  const Point2 pixel = pixelAt(at);
+  const Point2 pixel = grouped.ContourPoint(at);
   const double pixels = std::hypot(p.x - pixel.x, p.y - pixel.y);
   return offLine(from, to, pixel) < 0.0 ? -pixels : pixels;
 }

@@ -1999,7 +1999,7 @@ ThiessenSweepResult ComputeThiessenSweep(const Window& window,
   const std::function<bool(double)>& progress)
 {
   CheckSweepable(window, points);
-  const Box2 bounds = BoundsOf(window.Vertices().data(), window.Vertices().size());
+  const Box2 bounds = window.Bounds();
   const int scale = SweepScale(bounds, points);
   const Box2 scaled = ScaledBounds(bounds, scale);
   ThiessenSweepResult result;

@@ -236,11 +236,11 @@ std::int32_t InteriorTile(const Tess& tess,
   {
     return 0;
   }
-  const auto at = [](std::size_t k) { return std::ptrdiff_t(k); };
-  std::rotate(polygon.begin(), polygon.begin() + at(firstSide), polygon.begin() + at(sides));
+  const std::ptrdiff_t firstAt = std::ptrdiff_t(firstSide), end = std::ptrdiff_t(sides);
+  std::rotate(polygon.begin(), polygon.begin() + firstAt, polygon.begin() + end);
   if (labels)
   {
-    std::rotate(labels->begin(), labels->begin() + at(firstSide), labels->begin() + at(sides));
+    std::rotate(labels->begin(), labels->begin() + firstAt, labels->begin() + end);
   }
   polygon.resize(sides);
   if (!labels)

@@ -42,8 +42,8 @@
 #include "uninitialized_allocator.h"
 
 #include <cstdint>
-#include <optional>
 #include <functional>
+#include <optional>
 #include <tuple>
 #include <utility>
 #include <vector>

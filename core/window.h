@@ -78,6 +78,8 @@ public:
   const std::vector<std::size_t>& RedundantIds() const { return this->RedundantInputIds; }
   /// Window corners, anticlockwise; vertex k is where constraint k-1 meets constraint k.
   const std::vector<Point2>& Vertices() const { return this->Corners; }
+  /// The corners' bounding box.
+  Box2 Bounds() const { return BoundsOf(this->Corners.data(), this->Corners.size()); }
 
   /// Whether p satisfies every effective constraint strictly (exactly evaluated).
   bool Contains(const Point2& p) const;

@@ -80,24 +80,29 @@ def wrapped(degrees):
 CONICS = ("automatic", "albers", "lambert")
 
 
-def fitted_terms(lons, lats, projection):
-    """(central meridian, standard parallel 1, standard parallel 2) that vtkGeographicProjection
-    fits to the places with the projection (a CONICS name), read off its TesseraProjection record;
-    its warnings (on a span round the globe, say) are kept back."""
+def places_data(places):
+    """vtkPolyData of (lon, lat) places (or (x, y) in a plane), in double precision."""
     from vtkmodules.vtkCommonCore import vtkPoints
     from vtkmodules.vtkCommonDataModel import vtkPolyData
 
     points = vtkPoints()
     points.SetDataTypeToDouble()
-    for lon, lat in zip(lons, lats):
-        points.InsertNextPoint(lon, lat, 0.0)
-    places = vtkPolyData()
-    places.SetPoints(points)
+    for x, y in places:
+        points.InsertNextPoint(x, y, 0.0)
+    data = vtkPolyData()
+    data.SetPoints(points)
+    return data
+
+
+def fitted_terms(lons, lats, projection):
+    """(central meridian, standard parallel 1, standard parallel 2) that vtkGeographicProjection
+    fits to the places with the projection (a CONICS name), read off its TesseraProjection record;
+    its warnings (on a span round the globe, say) are kept back."""
     fit = csv_input.import_tessera().vtkGeographicProjection()
     getattr(fit, PROJECTIONS[projection])()
     kept = []
     csv_input.catch_vtk_messages(fit, kept.append, kept.append, kept.append)
-    fit.SetInputData(places)
+    fit.SetInputData(places_data(zip(lons, lats)))
     fit.Update()
     return record_terms(projection_record(fit.GetOutput()))
 
@@ -245,15 +250,8 @@ def plane_origin(record):
     it back): for a conic, its own origin latitude between lat1 and lat2 (GeographicLib's), not
     the record's lat0, the gauges' middle latitude the parallels are fitted about, which a GIS
     user took for PROJ's +lat_0 and found y = 0 some 480 m from it."""
-    from vtkmodules.vtkCommonCore import vtkPoints
-    from vtkmodules.vtkCommonDataModel import vtkPolyData
-
-    points = vtkPoints()
-    points.InsertNextPoint(0.0, 0.0, 0.0)
-    origin = vtkPolyData()
-    origin.SetPoints(points)
     back = csv_input.import_tessera().vtkGeographicProjection()
-    back.SetInputData(origin)
+    back.SetInputData(places_data([(0.0, 0.0)]))
     back.InverseOn()
     back.SetProjectionRecord(record)
     # (its warning that (0, 0) lies within degrees' ranges is not the user's: dropped)

@@ -243,8 +243,7 @@ tessera::Window Representable(tessera::Window window, bool needArea, const std::
 {
   if (needArea && !std::isfinite(window.Area()))
   {
-    ThrowWindowTooLarge(
-      tessera::BoundsOf(window.Vertices().data(), window.Vertices().size()), advice);
+    ThrowWindowTooLarge(window.Bounds(), advice);
   }
   return window;
 }
@@ -1807,8 +1806,7 @@ std::string NoPointInWindowWarning(const tessera::Box2& window,
     return std::string();
   }
   const tessera::Box2 box = BoundsOfPoints(points);
-  const bool apart = box.XMax < window.XMin || window.XMax < box.XMin || box.YMax < window.YMin ||
-    window.YMax < box.YMin;
+  const bool apart = !box.Meets(window);
   return "no point lies inside the window (" + BoxText(window) + "), so there is no " + what +
     ": the points span " + BoxText(box) +
     (apart ? " (is the window in the points' units, WindowBounds in the order xmin, xmax, ymin, "

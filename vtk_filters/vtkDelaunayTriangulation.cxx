@@ -139,8 +139,7 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     }
     tessera::Window window = tessera_vtk::ChooseWindow(
       this->WindowBounds, this->WindowConstraints, this->Padding, points, false);
-    const tessera::Box2 windowBox =
-      tessera::BoundsOf(window.Vertices().data(), window.Vertices().size());
+    const tessera::Box2 windowBox = window.Bounds();
     // Coordinates of some 1e100 or more, or 1e-100 or less: the triangulation of points and
     // window scaled by a power of two (exactly) is the same, and its faces are ids, so nothing is
     // scaled back; every decision then stays within the predicates' exact range.

@@ -487,8 +487,7 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     }
     tessera::Window window =
       tessera_vtk::ChooseWindow(this->WindowBounds, this->WindowConstraints, this->Padding, points);
-    const tessera::Box2 windowBox =
-      tessera::BoundsOf(window.Vertices().data(), window.Vertices().size());
+    const tessera::Box2 windowBox = window.Bounds();
     // Coordinates of some 1e100 or 1e-100: both engines work on points and window scaled by a
     // power of two (exactly) into the range where the tiles' window decisions are exact
     // (window_predicates.h), and the tiles are scaled back.

@@ -349,9 +349,7 @@ std::string ApartWarning(const double tilesBounds[6], const std::vector<tessera:
 {
   const tessera::Box2 tiles{ tilesBounds[0], tilesBounds[1], tilesBounds[2], tilesBounds[3] };
   const tessera::Box2 box = tessera::BoundsOf(window.data(), window.size());
-  // (boxes that only touch share no area either)
-  if (!(tiles.XMax <= box.XMin || box.XMax <= tiles.XMin || tiles.YMax <= box.YMin ||
-        box.YMax <= tiles.YMin))
+  if (tiles.Overlaps(box)) // (boxes that only touch share no area either)
   {
     return std::string();
   }

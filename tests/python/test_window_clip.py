@@ -677,9 +677,9 @@ def test_inputs_of_another_type_are_named_and_leave_empty_outputs():
     # ran: a log line, no ErrorEvent for a script to observe, and the last result left in place.
     # Now each is the filter's error, and the outputs are empty.
     window = polygon([[(0, 0), (1, 0), (1, 1), (0, 1)]])
-    for tiles, window_data, expected in ((vtkTable(), window, "the tiles (input 0) are a vtkTable, not a point set"),
-                                         (polygon([[(0.2, 0.2), (0.6, 0.2), (0.6, 0.6)]]), None,
-                                          "no window is connected to input 1")):
+    for tiles, connected, expected in ((vtkTable(), True, "the tiles (input 0) are a vtkTable, not a point set"),
+                                       (polygon([[(0.2, 0.2), (0.6, 0.2), (0.6, 0.6)]]), False,
+                                        "no window is connected to input 1")):
         clip = vtkWindowClip()
         clip_errors = messages_of(clip)
         clip.SetInputData(polygon([[(0.2, 0.2), (0.6, 0.2), (0.6, 0.6)]]))
@@ -687,7 +687,7 @@ def test_inputs_of_another_type_are_named_and_leave_empty_outputs():
         clip.Update()
         assert_that(clip.GetOutputDataObject(0).GetNumberOfCells() == 1 and not clip_errors, f"{clip_errors}")
         clip.SetInputData(tiles)
-        if window_data is None:
+        if not connected:
             clip.RemoveAllInputConnections(1)
         clip.Update()
         assert_that(clip.GetOutputDataObject(0).GetNumberOfCells() == 0 and len(clip_errors) == 1
