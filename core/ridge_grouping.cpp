@@ -1528,7 +1528,11 @@ PixelGrid RidgeGrouping::ChooseImage(const std::vector<Point2>& points,
           " pixels, the least that holds the margins of a basis width of " +
           NumberText(this->Settings.Width) + " pixels (more than any automatic size)"
         : "automatic image size capped at " + std::to_string(result.ImageSize) +
-          " pixels: fewer than half of the distinct points have a pixel of their own");
+          " pixels: fewer than half of the distinct points have a pixel of their own (points in "
+          "one pixel share a node, with no order among them, which matters where they lie "
+          "further apart than their noise; an ImageSize up to " +
+          std::to_string(MaxImageSize) +
+          " parts more of them, each doubling taking four times the memory and time)");
   }
   if (this->Settings.Width < 1.0)
   {
@@ -1547,10 +1551,52 @@ PixelGrid RidgeGrouping::ChooseImage(const std::vector<Point2>& points,
   return grid;
 }
 
+namespace
+{
+/// The points at the x and y of an earlier point, each with the first point there, ascending by
+/// point (RidgeGroupingResult::Duplicates), named in a warning: the filters name what they take
+/// but treat specially (a trial's Python user got no word of them, where the example script said
+/// them).
+void NameDuplicatePoints(const std::vector<Point2>& points, RidgeGroupingResult& result)
+{
+  std::vector<std::int32_t> order(points.size());
+  std::iota(order.begin(), order.end(), 0);
+  const auto at = [&](std::int32_t k) { return points[std::size_t(k)]; };
+  std::stable_sort(order.begin(),
+    order.end(),
+    [&](std::int32_t a, std::int32_t b) { return ComesFirst(at(a), at(b)); });
+  std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates = result.Duplicates;
+  for (std::size_t k = 1, first = 0; k < order.size(); ++k)
+  {
+    first = at(order[k]) == at(order[first]) ? first : k;
+    if (first != k)
+    {
+      duplicates.emplace_back(order[k], order[first]);
+    }
+  }
+  if (duplicates.empty())
+  {
+    return;
+  }
+  std::sort(duplicates.begin(), duplicates.end());
+  result.Warnings.push_back(std::to_string(duplicates.size()) +
+    " point(s) lie at the x and y of an earlier point, and are grouped as any other (the place "
+    "weighs as often in the field, and they share a node); their ids are in the field data "
+    "arrays DuplicatePointIds and DuplicateOfPointIds: " +
+    ListNames(duplicates.size(),
+      [&](std::size_t k)
+      {
+        return "point " + std::to_string(duplicates[k].first) + " (as point " +
+          std::to_string(duplicates[k].second) + ")";
+      }));
+}
+} // namespace
+
 RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
 {
   CheckPoints(points);
   RidgeGroupingResult result;
+  NameDuplicatePoints(points, result);
   result.GroupId.assign(points.size(), -1);
   result.Node.assign(points.size(), 0.0);
   if (points.size() < 2)

@@ -46,6 +46,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tessera
@@ -115,6 +116,9 @@ struct RidgeGroupingResult
   bool ImageSizeAutomatic = false;
   double PixelSize = 0.0;       ///< input units per pixel, as used
   double FieldErrorBound = 0.0; ///< bound of |FFT field - direct sum| at any pixel
+  /// (point, earlier point) for each point at the x and y of an earlier one (ascending by point):
+  /// grouped as any other, the place weighing as often in the field; named in a warning.
+  std::vector<std::pair<std::int32_t, std::int32_t>> Duplicates;
   std::vector<std::string> Warnings;
 };
 

@@ -20,7 +20,8 @@ Writes into --out:
                          is empty where no gauge reported)
   weights_YYYY_MM.csv    station_id,name,lon,lat,weight,area_km2,precip for --month (for each
                          --month when it is given more than once; so for the tiles and the map;
-                         without --month, 1963-08 or the month nearest it where a gauge reported)
+                         without --month, 1963-08 or the month nearest it where a gauge reported,
+                         or with other observations, the last month where a gauge reported)
   weights_all_months.csv year,month,station_id,weight,area_km2,precip: every month's weights (a row
                          per month and gauge with a weight)
   tiles_YYYY_MM.vtp      that month's tiles clipped to the catchment, in lon/lat: simple
@@ -2358,6 +2359,8 @@ def main(argv=None):
     parser.add_argument("--month", action="append", help="month for the weights, tiles and map, YYYY-MM (may be "
                                                          "given more than once: each month's files; default: 1963-08, "
                                                          "or the nearest month of the record where a gauge reported; "
+                                                         "with observations other than the Colorado example's, "
+                                                         "their last month (day, hour) where a gauge reported; "
                                                          "with daily, hourly or sub-hourly observations its first "
                                                          "day, hour or step in the record and --start/--end; a "
                                                          "month none of whose steps is in the record and within "
@@ -2438,8 +2441,8 @@ def main(argv=None):
                              "holding one; a file declaring a projected system in metres or feet, "
                              f"{projected_input.READ}, is made lon/lat); "
                              "every polygon feature of the file is taken, unless --feature chooses; default: "
-                             "the Colorado example's outline, examples/data/colorado_boundary.geojson (said in a "
-                             "note when the gauges are not the example's)")
+                             "the Colorado example's outline, examples/data/colorado_boundary.geojson, for the "
+                             "example's gauges; other gauges need it given")
     parser.add_argument("--feature", metavar="ATTRIBUTE=VALUE",
                         help="take only the catchment file's features whose attribute has this "
                              "value, such as HUC8=14010001 (whole numbers are written without .0)")
@@ -2496,10 +2499,13 @@ def main(argv=None):
                   f"{args.observations} has no place columns (lon and lat, or LONGITUDE and LATITUDE) to read "
                   "its stations from; give your stations file with --stations", file=sys.stderr)
     if args.catchment is None:
-        args.catchment = EXAMPLE_CATCHMENT
+        # (not the example's outline for other gauges: a trial's own data averaged over Colorado
+        # ended with status 0 and a note, which a script calling this one does not read)
         if os.path.realpath(args.stations) != os.path.realpath(EXAMPLE_STATIONS):
-            print(f"note: without --catchment, the catchment is the Colorado example's outline ({args.catchment}); "
-                  "give yours with --catchment", file=sys.stderr)
+            csv_input.fail(f"--catchment: not given, and the gauges ({args.stations}) are not the Colorado "
+                           "example's: give your catchment's polygon file with --catchment (for gauges in "
+                           f"Colorado, the example's outline is {EXAMPLE_CATCHMENT})")
+        args.catchment = EXAMPLE_CATCHMENT
     combined = holds_observations(args.stations, args.observations)
     gauges, gauge_lines = read_gauges(args.stations, stations_system, combined, args.stations_id)
     if not gauge_lines:
@@ -2568,7 +2574,7 @@ def main(argv=None):
     shown = []  # per step shown: (step, its tag, per_gauge)
     for option, when, step in wanted:
         if not option:
-            step = nearest_reported(rows, steps, step)
+            step = nearest_reported(rows, steps, default_step(rows, step, args.observations, default_observations))
         average.UpdateTimeStep(steps.time(step))
         tiles = average.GetOutputDataObject(0)
         messages.check(tiles is None)
@@ -2662,6 +2668,15 @@ def shown_mean(value):
     """A mean as the messages and the map's title give it: to 3 decimals, or to 6 figures where
     that would be a long row of digits (values near 1e308 printed 300 of them)."""
     return f"{value:.3f}" if abs(value) < 1e12 else f"{value:.6g}"
+
+
+def default_step(rows, step, observations, example_observations):
+    """The step shown without --month (--day, ...): step (1963-08) for the Colorado example's
+    record (example_observations), the record's last (rows: write_summary's) for another, where
+    1963 means nothing; nearest_reported then takes the nearest where a gauge reported."""
+    if os.path.realpath(observations) == os.path.realpath(example_observations) or not rows:
+        return step
+    return tuple(rows[-1][:-3])
 
 
 def nearest_reported(rows, steps, step):

@@ -324,14 +324,17 @@ def stations_system(utm, crs, gdal_messages):
         return None
     return crs_system(crs, "--stations-crs", gdal_messages,
                       lonlat="give the file lon and lat columns, without --stations-crs",
-                      datum="the gauges' x, y are made longitude/latitude on WGS84's")
+                      datum="the gauges' x, y are made longitude/latitude on WGS84's",
+                      unread="or make the gauges lon/lat first (PROJ's cs2cs, or GDAL's ogr2ogr -t_srs "
+                             "EPSG:4326 for a GIS file) and give lon and lat columns without --stations-crs")
 
 
-def crs_system(crs, option, gdal_messages=None, lonlat="", datum=""):
+def crs_system(crs, option, gdal_messages=None, lonlat="", datum="", unread=""):
     """The PlaneSystem of `option`'s value crs, EPSG:CODE or PROJ terms (+proj=aea ...); a bad value ends the
     script naming it. gdal_messages: the script's GdalMessages, or None to let GDAL's own lines through while an
     EPSG code is looked up. lonlat: what to do when crs is a geographic system; datum: what is made of
-    coordinates on another datum (said, with a warning, for such a system)."""
+    coordinates on another datum (said, with a warning, for such a system); unread: what else to do for a
+    system not read here (a trial's Swiss EPSG:2056 was refused without a way on)."""
     text = crs.strip()
     code = re.fullmatch(r"(?i)(?:epsg:\s*|urn:ogc:def:crs:epsg:[0-9.]*:)?([0-9]+)", text)
     example = "'+proj=aea +lat_0=23 +lon_0=-96 +lat_1=29.5 +lat_2=45.5 +x_0=0 +y_0=0 +units=m'"
@@ -357,8 +360,11 @@ def crs_system(crs, option, gdal_messages=None, lonlat="", datum=""):
     system = proj4_system(text)
     if isinstance(system, str) and "+proj=longlat" in text.split():
         system = f"a geographic system (longitude/latitude): {lonlat}"
+    if isinstance(system, str) and system.startswith("a geographic system"):
+        csv_input.fail(f"{option} {crs!r}: {system}")
     if isinstance(system, str):
-        csv_input.fail(f"{option} {crs!r}: {system} (give EPSG:CODE or PROJ terms such as {example})")
+        csv_input.fail(f"{option} {crs!r}: not read here: {system}; give EPSG:CODE or PROJ terms of a system "
+                       f"read here, such as {example}{', ' + unread if unread else ''}")
     other = other_ellipsoid(text) or other_datum(wkt)
     if other:
         print(f"{option} {crs!r}: {other}; {datum}, without the datum shift: they may lie tens to hundreds of metres "

@@ -179,6 +179,17 @@ def say_repeated_points(quakes, path, lines, planar, bundled=False):
                           lambda k, first: f"{x} {place[k][0]:.15g}, {y} {place[k][1]:.15g}", "point")
 
 
+def say_grouping_warning(text, path, lines):
+    """The grouping filter's warning on stderr, its points with their lines; but not its repeated
+    points, which say_repeated_points said with their places (or, for the Fiji file, noted)."""
+    if DUPLICATES_WARNING not in text:
+        print(f"warning: {with_lines(text, path, lines)}", file=sys.stderr)
+
+
+# (the start of vtkRidgeGrouping's warning of points at the place of an earlier one)
+DUPLICATES_WARNING = "point(s) lie at the x and y of an earlier point"
+
+
 def polylines(data):
     lines = []
     for c in range(data.GetNumberOfCells()):
@@ -260,8 +271,7 @@ def main(argv=None):
     grouping = vtkRidgeGrouping()
     settings = chosen_settings(args, fiji, grouping)
     csv_input.catch_vtk_messages(grouping, lambda text: errors.append(grouping_error(text)),
-                                 lambda text: print(f"warning: {with_lines(text, args.quakes, lines)}",
-                                                    file=sys.stderr))
+                                 lambda text: say_grouping_warning(text, args.quakes, lines))
     grouping.SetInputData(grouped)
     grouping.SetWidth(settings["width"])
     grouping.SetImageSize(args.image_size)

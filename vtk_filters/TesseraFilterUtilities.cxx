@@ -1819,18 +1819,38 @@ std::string NoPointsWarning(const std::string& what)
   return "the input has no points: no " + what + " (does the filter before it give none?)";
 }
 
-std::string UnusedPointsWarning(std::size_t rejected, std::size_t duplicates, const char* verb)
+std::string UnusedPointsWarning(const std::vector<std::int32_t>& rejected,
+  const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates,
+  const char* verb)
 {
-  if (rejected == 0 && duplicates == 0)
+  if (rejected.empty() && duplicates.empty())
   {
     return std::string();
   }
+  // (the first ids too: a trial's script had only the counts, and had to read the arrays)
   std::ostringstream text;
-  text << rejected << " point(s) outside the window or on its boundary and " << duplicates
-       << " exact duplicate(s) (the same x and y; z is not used) were not " << verb
+  text << rejected.size() << " point(s) outside the window or on its boundary and "
+       << duplicates.size() << " exact duplicate(s) (the same x and y; z is not used) were not "
+       << verb
        << "; their ids are in the field data arrays RejectedPointIds, DuplicatePointIds and "
-          "DuplicateOfPointIds.";
-  return text.str();
+          "DuplicateOfPointIds";
+  if (!rejected.empty())
+  {
+    text << "; outside: point(s) "
+         << tessera::ListNames(
+              rejected.size(), [&](std::size_t k) { return std::to_string(rejected[k]); });
+  }
+  if (!duplicates.empty())
+  {
+    text << "; duplicates: "
+         << tessera::ListNames(duplicates.size(),
+              [&](std::size_t k)
+              {
+                return "point " + std::to_string(duplicates[k].first) + " (of point " +
+                  std::to_string(duplicates[k].second) + ")";
+              });
+  }
+  return text.str() + ".";
 }
 
 } // namespace tessera_vtk

@@ -327,9 +327,11 @@ RenamedArrays AddUnusedPointIds(vtkDataObject* data,
   const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates);
 
 /// The warning for points a tessellation filter did not use (`rejected` outside the window,
-/// `duplicates` exact copies), saying they were not `verb` ("used", "triangulated") and where their
-/// ids are; empty when every point was used.
-std::string UnusedPointsWarning(std::size_t rejected, std::size_t duplicates, const char* verb);
+/// `duplicates` exact copies with the point each copies), saying they were not `verb` ("used",
+/// "triangulated"), where their ids are, and the first 20 of each; empty when every point was used.
+std::string UnusedPointsWarning(const std::vector<std::int32_t>& rejected,
+  const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates,
+  const char* verb);
 
 /// The warning for a window (its bounding box) that holds none of the points (`rejected` all of
 /// them), so that there is no `what` ("tile"), naming the window's box and the points' (a

@@ -166,7 +166,7 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
                         renamed, "field-data", "the output", "field"));
     }
     const std::string unused =
-      tessera_vtk::UnusedPointsWarning(rejected.size(), duplicates.size(), "triangulated");
+      tessera_vtk::UnusedPointsWarning(rejected, duplicates, "triangulated");
     if (!unused.empty())
     {
       vtkWarningMacro(<< unused);

@@ -569,7 +569,7 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     // With the graph off too: output 1 carries the same field data as output 0.
     tessera_vtk::AddUnusedPointIds(graphOutput, result.Rejected, result.Duplicates);
     const std::string unused =
-      tessera_vtk::UnusedPointsWarning(result.Rejected.size(), result.Duplicates.size(), "used");
+      tessera_vtk::UnusedPointsWarning(result.Rejected, result.Duplicates, "used");
     if (!unused.empty())
     {
       vtkWarningMacro(<< unused);

@@ -18,11 +18,15 @@
 #include "vtkUnsignedCharArray.h"
 
 #include "TesseraFilterUtilities.h"
+#include "errors.h"
 #include "ridge_grouping.h"
 
 #include <algorithm>
 #include <exception>
 #include <limits>
+#include <string>
+#include <utility>
+#include <vector>
 
 vtkStandardNewMacro(vtkRidgeGrouping);
 
@@ -124,6 +128,42 @@ tessera::RidgeGroupingSettings CoreSettings(vtkRidgeGrouping* self)
   settings.MinimumContourLength = self->GetMinimumContourLength();
   return settings;
 }
+
+/// Where points lie off the plane z = 0, that only x and y are read: a curve drawn in the x-z
+/// plane was grouped as a straight line, and points at z = 5 lay above their contours and curves
+/// (at z = 0), with no word. "" when every z is 0.
+std::string OffPlaneWarning(vtkPoints* points)
+{
+  if (!points || points->GetNumberOfPoints() == 0)
+  {
+    return std::string();
+  }
+  double bounds[6];
+  points->GetBounds(bounds);
+  if (bounds[4] == 0.0 && bounds[5] == 0.0)
+  {
+    return std::string();
+  }
+  return "the points' z runs from " + tessera::NumberText(bounds[4]) + " to " +
+    tessera::NumberText(bounds[5]) +
+    ": only x and y are read, so the points are grouped as they lie in the plane z = 0, where "
+    "the contours, curves and image are (give points whose curves lie in the x-y plane)";
+}
+
+/// The field data arrays DuplicatePointIds and DuplicateOfPointIds: the points at the x and y of
+/// an earlier point, and that point, as the tessellation filters name their exact copies.
+void AddDuplicateIds(vtkPolyData* output,
+  const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates)
+{
+  std::vector<std::int32_t> copies, originals;
+  for (const auto& [copy, original] : duplicates)
+  {
+    copies.push_back(copy);
+    originals.push_back(original);
+  }
+  tessera_vtk::AddIdFieldArray(output, "DuplicatePointIds", copies);
+  tessera_vtk::AddIdFieldArray(output, "DuplicateOfPointIds", originals);
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -219,6 +259,11 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     }
     const std::vector<tessera::Point2> points =
       tessera_vtk::ReadPoints2D(input->GetPoints(), inputData);
+    const std::string offPlane = OffPlaneWarning(input->GetPoints());
+    if (!offPlane.empty())
+    {
+      vtkWarningMacro(<< offPlane);
+    }
     const tessera::RidgeGrouping grouping(CoreSettings(this));
     tessera_vtk::ProgressOrStop(this, 0.05);
     const tessera::RidgeGroupingResult result = grouping.Run(points);
@@ -271,8 +316,10 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     pointsOut->GetPointData()->AddArray(distances);
     pointsOut->GetPointData()->SetActiveScalars("GroupId"); // (ParaView colours the groups)
     // The input's field data (passed on by the pipeline) keeps arrays of these names as NAME_input.
-    const tessera_vtk::RenamedArrays renamedFields = tessera_vtk::RenameArraysNamed(
-      pointsOut->GetFieldData(), { "ImageSize", "PixelSize", "FieldErrorBound" }, true);
+    const tessera_vtk::RenamedArrays renamedFields =
+      tessera_vtk::RenameArraysNamed(pointsOut->GetFieldData(),
+        { "ImageSize", "PixelSize", "FieldErrorBound", "DuplicatePointIds", "DuplicateOfPointIds" },
+        true);
     if (!renamedFields.empty())
     {
       vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
@@ -281,6 +328,7 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     AddScalar(pointsOut->GetFieldData(), "ImageSize", result.ImageSize);
     AddScalar(pointsOut->GetFieldData(), "PixelSize", result.PixelSize);
     AddScalar(pointsOut->GetFieldData(), "FieldErrorBound", result.FieldErrorBound);
+    AddDuplicateIds(pointsOut, result.Duplicates);
 
     // Output 1: ridge contours.
     WritePolylines(result.Contours, result.ContourClosed, contoursOut);

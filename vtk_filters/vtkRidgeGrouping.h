@@ -11,7 +11,8 @@
  * from it (an outlier joins the nearest group and pulls its curve); a rational Gaussian curve
  * with unit weights is fitted to each group of two or more points (periodic on closed contours;
  * groups of one point are named in a warning). Only x and y are used: points off the plane z = 0
- * are grouped by their x and y, and the contours, curves and image lie at z = 0.
+ * are grouped by their x and y, and the contours, curves and image lie at z = 0 (a warning gives
+ * the points' z range).
  *
  * The grouping is not invariant under reflection or rotation: the ridges' thinning peels borders
  * in a fixed order, so a mirrored or rotated data set can give other groups where ridges meet or
@@ -44,7 +45,10 @@
  *   ridge turns away from them, share that pixel's Node with no order, and a warning names them);
  *   an input array of one of those names is passed as NAME_input, with a warning.
  *   Field data `ImageSize` (pixels along the longer side, as used), `PixelSize`,
- *   `FieldErrorBound` (bound of |FFT field - direct sum| at any pixel).
+ *   `FieldErrorBound` (bound of |FFT field - direct sum| at any pixel), `DuplicatePointIds` and
+ *   `DuplicateOfPointIds` (int: each point at the x and y of an earlier one, and the first point
+ *   there; they are grouped as any other, the place weighing as often in the field, and named in
+ *   a warning).
  * - 1 (vtkPolyData): the ridge contours as polylines through pixel centres (a closed contour
  *   repeats its first point), cell data `ContourId` (int, = GroupId of its points, if any),
  *   `Closed` (unsigned char) and `Length` (double: the length of the pixel path, in input units,

@@ -492,14 +492,18 @@ const char* const NoGaugePoints =
   "the gauges input has no points (does the filter before it give none?)";
 
 /// The error for a table none of whose rows can be used: how many lack a station or time, and which
-/// station ids no gauge has (all of them, where the gauges input has no points: said first).
+/// station ids no gauge has (all of them, where the gauges input has no points: said first), with
+/// the gauges' own ids and the two settings that choose them (a ParaView user who chose another
+/// point array as StationIdArrayName was told only of the table's ids).
 std::string NoUsableRowMessage(const ObservationRows& rows,
   vtkAbstractArray* stations,
-  vtkIdType gaugeCount)
+  const std::vector<std::string>& gaugeNames,
+  const std::string& idArray,
+  const std::string& stationColumn)
 {
   const std::vector<tessera::UnknownStation>& unknown = rows.Match.UnknownStations;
   std::ostringstream message;
-  if (gaugeCount == 0)
+  if (gaugeNames.empty())
   {
     message << NoGaugePoints << ", so ";
   }
@@ -511,6 +515,14 @@ std::string NoUsableRowMessage(const ObservationRows& rows,
     message << ", the others name station ids that no gauge has: "
             << ListNames(unknown.size(),
                  [&](std::size_t k) { return UnknownStationName(stations, unknown[k]); });
+  }
+  if (!unknown.empty() && !gaugeNames.empty())
+  {
+    message << "; the gauges' ids (their point-data array '" << idArray
+            << "', StationIdArrayName) are "
+            << ListNames(gaugeNames.size(), [&](std::size_t k) { return gaugeNames[k]; })
+            << " (do StationIdArrayName and StationColumn '" << stationColumn
+            << "' hold the same ids?)";
   }
   return message.str();
 }
@@ -580,6 +592,39 @@ std::string CoarseTimesWarning(vtkTable* observations,
     }
   }
   return text.str();
+}
+
+/// A warning, or "", for rows of the year 0 in a record whose other years are 1000 or later
+/// (with a MonthColumn): ParaView's CSV reader reads an empty field of a numeric column as 0, and a
+/// trial's row with an empty year made a step 0000-01, the time slider running from the year 0.
+std::string YearZeroWarning(const tessera::ObservationSteps& steps,
+  vtkAbstractArray* stations,
+  const std::string& timeColumn,
+  const std::string& monthColumn)
+{
+  const std::vector<double>& times = steps.Times;
+  const auto later = std::find_if(times.begin(), times.end(), [](double t) { return t >= 1.0; });
+  const std::size_t yearZero = std::size_t(later - times.begin());
+  if (monthColumn.empty() || yearZero == 0 || times.front() < 0.0 || later == times.end() ||
+    *later < 1000.0)
+  {
+    return std::string();
+  }
+  std::vector<std::int32_t> rows;
+  for (std::size_t r = 0; r < steps.StepOfRow.size(); ++r)
+  {
+    if (steps.StepOfRow[r] >= 0 && std::size_t(steps.StepOfRow[r]) < yearZero)
+    {
+      rows.push_back(std::int32_t(r));
+    }
+  }
+  return std::to_string(rows.size()) + " observation row(s) have the year 0 in column '" +
+    timeColumn + "', where the record's other years start at " +
+    std::to_string(static_cast<int>(std::floor(*later))) +
+    " (ParaView's CSV reader reads an empty field of a numeric column as 0: give a missing year "
+    "as NaN, or leave such rows out); they make " +
+    std::to_string(yearZero) + " step(s) of their own (rows from 0): " +
+    ListNames(rows.size(), [&](std::size_t k) { return RowName(stations, rows[k]); });
 }
 
 /// An incomplete row (observation_series.h) of the station column: "row 12 (no station id)",
@@ -1573,7 +1618,8 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     stations = observations->GetColumnByName(this->StationColumn.c_str());
     if (rows->Steps.Times.empty())
     {
-      throw tessera::InputError(NoUsableRowMessage(*rows, stations, gauges->GetNumberOfPoints()));
+      throw tessera::InputError(NoUsableRowMessage(
+        *rows, stations, gaugeNames, this->StationIdArrayName, this->StationColumn));
     }
     in.Times = rows->Steps.Times;
     rowValues = RowValues(observations, rows->Steps, this->StationColumn, this->ValueColumn);
@@ -1747,6 +1793,12 @@ void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
     if (!coarse.empty())
     {
       vtkWarningMacro(<< coarse);
+    }
+    const std::string yearZero =
+      YearZeroWarning(rows->Steps, stations, this->TimeColumn, this->MonthColumn);
+    if (!yearZero.empty())
+    {
+      vtkWarningMacro(<< yearZero);
     }
   }
   warnOf(duplicates.size(),

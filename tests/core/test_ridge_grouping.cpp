@@ -1641,7 +1641,19 @@ TEST(RidgeGrouping, RepeatedPointsDoNotChangeTheAutomaticImage)
     }
     const RidgeGroupingResult result = RidgeGrouping(settings).Run(repeated);
     EXPECT_EQ(result.ImageSize, once.ImageSize) << copies << " copies";
-    EXPECT_TRUE(result.Warnings.empty()) << result.Warnings.front();
+    // The copies are listed with the first point at their place, and named in the one warning.
+    std::vector<std::pair<std::int32_t, std::int32_t>> copiesOf;
+    for (std::size_t k = points.size(); k < repeated.size(); ++k)
+    {
+      copiesOf.emplace_back(std::int32_t(k), std::int32_t(k % points.size()));
+    }
+    EXPECT_EQ(result.Duplicates, copiesOf) << copies << " copies";
+    ASSERT_EQ(result.Warnings.size(), 1u) << result.Warnings.front();
+    EXPECT_EQ(
+      result.Warnings[0].rfind(
+        std::to_string(copiesOf.size()) + " point(s) lie at the x and y of an earlier point", 0),
+      0u)
+      << result.Warnings[0];
     for (std::size_t k = 0; k < repeated.size(); ++k)
     {
       ASSERT_EQ(result.GroupId[k], once.GroupId[k % points.size()]) << copies << " copies, " << k;

@@ -189,6 +189,18 @@ def test_unused_points_are_reported_with_ids():
     assert_that(rejected == [2], f"point 2 outside the window: {rejected}")
     assert_that(pairs == [(3, 0), (5, 1)], f"duplicates reported with their originals: {pairs}")
     assert_that(f.GetOutput(0).GetNumberOfCells() == 3, "three distinct points inside")
+    # The warning names the first ids too (a trial's script had the counts alone), for either
+    # engine and for the triangulation.
+    for algorithm in ("GreenSibson", "BrasselReif", None):
+        g = vtkDirichletTessellation() if algorithm else vtkDelaunayTriangulation()
+        said = messages_of(g, vtkCommand.WarningEvent)
+        g.SetInputData(make_points(coords))
+        g.SetWindowBounds(0, 1, 0, 1)
+        if algorithm:
+            getattr(g, f"SetAlgorithmTo{algorithm}")()
+        g.Update()
+        assert_that(len(said) == 1 and said[0].strip().endswith("; outside: point(s) 2; duplicates: point 3 (of point 0), "
+                                                                "point 5 (of point 1)."), f"{algorithm}: {said}")
     # Points that differ in z alone are duplicates (z is not used), and the warning says why.
     data = make_points([(0.2, 0.2), (0.8, 0.3), (0.5, 0.9)])
     data.GetPoints().InsertNextPoint(0.2, 0.2, 7.0)

@@ -17,6 +17,7 @@ from tessera_testing import (EXAMPLE_DATA, SOURCE_DIR, assert_close, assert_that
                              run)
 
 EXAMPLES = os.path.join(SOURCE_DIR, "examples")
+COLORADO_CATCHMENT = os.path.join(EXAMPLE_DATA, "colorado_boundary.geojson")
 MONTH = (1963, 8)
 
 
@@ -30,7 +31,15 @@ def run_example(script, *arguments):
 def run_colorado(out, *arguments, what="the run", status=0, plots=True, **options):
     """Runs colorado_areal_precipitation.py with --out out, each keyword option as a flag
     (month="2001-01" as --month 2001-01), --no-plots unless plots, then the arguments; asserts its
-    exit status (0 unless given) and returns its (stdout, stderr)."""
+    exit status (0 unless given) and returns its (stdout, stderr). Own gauges (stations, or
+    --stations among the arguments) without a catchment get the Colorado outline as --catchment,
+    which the script needs for them (most tests' own gauges lie in Colorado); catchment=None
+    leaves it out."""
+    if options.get("catchment", "") is None:
+        del options["catchment"]
+    elif "catchment" not in options and "--catchment" not in arguments and (
+            "stations" in options or "--stations" in arguments):
+        options["catchment"] = COLORADO_CATCHMENT
     flags = [item for name, value in options.items() for item in (f"--{name}", value)]
     got, stdout, stderr = run_example("colorado_areal_precipitation.py", "--out", out, *flags,
                                       *([] if plots else ["--no-plots"]), *arguments)
@@ -1240,13 +1249,14 @@ def test_several_days_get_the_files_each_gets_alone():
                     "tiles_2001_02_02.vtp, tiles_2001_02_02.geojson, "
                     "map_2001_01_30.png, map_2001_02_02.png, areal_mean.png, unused_inputs.csv" in lines[3],
                     f"the three days' lines: {lines}")
-        # Without --day the day nearest 1963-08 where a gauge reported: 2001-01-30, not --start's day
-        # before the data.
+        # Without --day (own observations): the last day where a gauge reported, 2001-02-02, with
+        # a --start before the data too.
         stdout, _ = run_colorado(os.path.join(directory, "early"), plots=False, start="2001-01-28",
                                  what="a --start before the data", **common)
-        assert_that(stdout.splitlines()[1] == alone["2001-01-30"][1][1], f"the default day: {stdout}")
-        # A day of 1963-08 with data is shown before a day as near outside it: 1963-08-02, not 07-31.
-        august = write(directory, "august.csv", "station_id,date,precip\nN1,1963-07-31,1\nN2,1963-08-02,2\n")
+        assert_that(stdout.splitlines()[1] == alone["2001-02-02"][1][1], f"the default day: {stdout}")
+        # A last day without a value is passed over: 1963-08-02, not 08-03 nor 07-31.
+        august = write(directory, "august.csv", "station_id,date,precip\nN1,1963-07-31,1\nN2,1963-08-02,2\n"
+                       "N1,1963-08-03,NaN\n")
         stdout, _ = run_colorado(os.path.join(directory, "august"), plots=False, what="days around 1963-08-01",
                                  **dict(common, observations=august))
         assert_that(stdout.splitlines()[1].startswith("1963-08-02: "), f"the default day: {stdout}")
@@ -2684,9 +2694,9 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
             assert_that("a projection of the sphere" in system(terms), f"{terms}: {system(terms)}")
         assert_that(system("+proj=merc +a=6378137").kind == "webmerc", "+proj=merc +a=6378137")
         cases = [({"catchment": catchment, "stations": xy, "stations-crs": "+proj=laea +lat_0=95"},
-                  "--stations-crs '+proj=laea +lat_0=95': +lat_0=95, which is not a latitude (within 90)"),
+                  "--stations-crs '+proj=laea +lat_0=95': not read here: +lat_0=95, which is not a latitude (within 90)"),
                  ({"catchment": catchment, "stations": xy, "stations-crs": "+proj=merc +lat_ts=90"},
-                  "--stations-crs '+proj=merc +lat_ts=90': +lat_ts=90, where a Mercator's scale is 0"),
+                  "--stations-crs '+proj=merc +lat_ts=90': not read here: +lat_ts=90, where a Mercator's scale is 0"),
                  ({"catchment": catchment, "stations": xy, "stations-crs": "EPSG:2163"},
                   "--stations-crs 'EPSG:2163': GDAL gives another system in its place, EPSG:9311 ('NAD27 / US "
                   "National Atlas Equal Area'), as it does for a deprecated code"),
@@ -2699,12 +2709,12 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
                   "Lambert azimuthal equal-area (laea) and Mercator (merc, and the web maps' EPSG:3857)); its "
                   "coordinates are metres"),
                  ({"catchment": catchment, "stations": xy, "stations-crs": sphere},
-                  f"--stations-crs {sphere!r}: +R=6371007: a projection of the sphere, whose inverse differs from the "
+                  f"--stations-crs {sphere!r}: not read here: +R=6371007: a projection of the sphere, whose inverse differs from the "
                   "ellipsoid's by up to kilometres"),
                  ({"catchment": catchment, "stations": xy, "stations-crs": "EPSG:99999"},
                   "--stations-crs 'EPSG:99999': GDAL's database has no such EPSG code"),
                  ({"catchment": catchment, "stations": xy, "stations-crs": "+proj=lcc +lat_1=north"},
-                  "--stations-crs '+proj=lcc +lat_1=north': +lat_1=north, which is not a number"),
+                  "--stations-crs '+proj=lcc +lat_1=north': not read here: +lat_1=north, which is not a number"),
                  ({"catchment": catchment, "stations": xy, "stations-crs": "EPSG:4326"},
                   "--stations-crs 'EPSG:4326': a geographic system (longitude/latitude)"),
                  ({"catchment": catchment, "stations": xy, "stations-crs": "EPSG:32760", "stations-utm": "60S"},
@@ -2866,11 +2876,12 @@ def test_a_noaa_climate_data_online_file_is_both_stations_and_observations():
                                  status=1, what="no --stations")
         assert_that("note: without --stations, the gauges are the Colorado example's" in stderr
                     and f"{plain} has no place columns" in stderr, f"no --stations: {stderr}")
-        # Own gauges without --catchment: the Colorado outline is the catchment, and it is said (a
-        # trial's Oregon gauges were averaged over Colorado with no word but "none inside").
+        # Own gauges without --catchment: an error before the work (a trial's Oregon gauges were
+        # averaged over Colorado with no word but "none inside", a later one's with a note and status 0).
         _, stderr = run_colorado(os.path.join(out, "nocatchment"), stations=stations, observations=plain, plots=False,
-                                 what="no --catchment")
-        assert_that("note: without --catchment, the catchment is the Colorado example's outline" in stderr,
+                                 catchment=None, status=1, what="no --catchment")
+        assert_that(f"--catchment: not given, and the gauges ({stations}) are not the Colorado example's" in stderr
+                    and not os.path.exists(os.path.join(out, "nocatchment", "areal_mean.csv")),
                     f"no --catchment: {stderr}")
         # The NOAA file as --stations beside another observations file: a gauge per station too.
         _, stderr = run_colorado(os.path.join(out, "beside"), stations=noaa, observations=plain, catchment=catchment,
@@ -2927,7 +2938,7 @@ def test_gauges_from_a_gis_file_of_points_give_the_csv_means():
         want = read_csv(os.path.join(out, "csv", "areal_mean.csv"))
         lonlat = points_file(out, "gauges.geojson", LAKE_GAUGES.values(), "Station_ID")
         run_colorado(os.path.join(out, "points"), stations=lonlat, observations=observations, catchment=catchment,
-                     plots=False, what="the GeoJSON gauges")
+                     month="2001-01", plots=False, what="the GeoJSON gauges")
         # A projected declaration over lon/lat is said, and the points read as lon/lat.
         declared = points_file(out, "declared.geojson", LAKE_GAUGES.values(), "station_id", "EPSG:2193")
         _, stderr = run_colorado(os.path.join(out, "declared"), stations=declared, observations=observations,
@@ -3543,8 +3554,8 @@ def test_project_gauges_writes_a_projected_systems_own_numbers():
         for arguments, expected in ((("--crs", "EPSG:4326"), "--crs 'EPSG:4326': a geographic system"),
                                     (("--crs", "EPSG:999999"), "--crs 'EPSG:999999': GDAL's database has no such"),
                                     (("--crs", "EPSG:5070", "--projection", "utm"), "not allowed with argument"),
-                                    (("--crs", "+proj=tmerc +axis=eeu"), "+axis=eeu (read here: an east or west"),
-                                    (("--crs", "+proj=tmerc +pm=mars"), "the prime meridian +pm=mars (read here:"),
+                                    (("--crs", "+proj=tmerc +axis=eeu"), "not read here: +axis=eeu (read here: an east or west"),
+                                    (("--crs", "+proj=tmerc +pm=mars"), "not read here: the prime meridian +pm=mars (read here:"),
                                     (("--crs", "EPSG:2039", "--stations", israel),
                                      "--crs 'EPSG:2039': the datum 'Israel_1993' (ellipsoid 'GRS 1980'), not one "
                                      "known here to lie within a metre or two of WGS84's")):
@@ -3710,9 +3721,18 @@ def test_a_month_asked_for_is_never_another_month():
         _, stderr = run_colorado(out, "--month", "2001-02", "--month", "1999-01", plots=False, status=1,
                                  what="a good and a bad month", **common)
         assert_that("--month 1999-01: is not in the record" in stderr and os.listdir(out) == [], stderr)
-        # Without --month: the record's month nearest 1963-08 where a gauge reported, no note.
+        # Without --month, for observations other than the Colorado example's: the record's last
+        # month where a gauge reported (a trial's own record was shown at the month nearest 1963-08),
+        # no note; a month after it with only missing values is passed over.
         stdout, stderr = run_colorado(os.path.join(directory, "default"), plots=False, what="the default", **common)
-        assert_that("2001-01: areal mean" in stdout and "note:" not in stderr, f"{stdout} {stderr}")
+        assert_that("2001-02: areal mean" in stdout and "note:" not in stderr, f"{stdout} {stderr}")
+        with open(observations) as f:
+            emptied = write(directory, "emptied.csv", f.read() + "N1,2001,3,\nN6,2001,3,NaN\n")
+        stdout, stderr = run_colorado(os.path.join(directory, "emptied"), plots=False, what="a last month without data",
+                                      **dict(common, observations=emptied))
+        assert_that("2001-02: areal mean" in stdout and os.path.exists(os.path.join(directory, "emptied",
+                                                                                    "weights_2001_02.csv")),
+                    f"{stdout} {stderr}")
         # The tester's runs on the Colorado record: the error comes after the reading, before the
         # 1236 months are averaged.
         for arguments, expected in ((("--month", "2050-01"),

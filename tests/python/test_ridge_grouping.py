@@ -420,6 +420,45 @@ def test_a_basis_or_join_rule_that_is_no_choice_is_named():
         assert_that(len(errors) == 1 and expected in errors[0] and f.GetOutput(0).GetNumberOfPoints() == 0, f"{errors}")
 
 
+def test_duplicates_are_listed_and_points_off_the_plane_named():
+    # From a trial: a Python user got no word of repeated points (only the example script named
+    # them), and a curve in the x-z plane was grouped as a straight line, silently. The repeats are
+    # found here by a dictionary of places, independently of the filter's sort.
+    coords, _, _ = two_noisy_curves()
+    coords = coords + [coords[3], coords[3], coords[17], coords[3]]  # points 600-603
+    first, expected = {}, []
+    for k, place in enumerate(coords):
+        earlier = first.setdefault(place, k)
+        if earlier != k:
+            expected.append((k, earlier))
+    f = vtkRidgeGrouping()
+    warnings = warnings_of_update(f, make_points(coords))
+    fd = f.GetOutput(0).GetFieldData()
+    got = [(fd.GetArray("DuplicatePointIds").GetValue(k), fd.GetArray("DuplicateOfPointIds").GetValue(k))
+           for k in range(fd.GetArray("DuplicatePointIds").GetNumberOfTuples())]
+    assert_that(got == expected == [(600, 3), (601, 3), (602, 17), (603, 3)], f"duplicates {got}, expected {expected}")
+    said = [w for w in warnings if "at the x and y of an earlier point" in w]
+    assert_that(len(said) == 1 and "4 point(s)" in said[0] and "point 602 (as point 17)" in said[0], f"{warnings}")
+    groups = f.GetOutput(0).GetPointData().GetArray("GroupId")
+    assert_that(all(groups.GetValue(k) == groups.GetValue(e) for k, e in expected), "a repeat joins its original's group")
+    assert_that(not any("z runs" in w for w in warnings), f"points at z = 0: no word of z {warnings}")
+    # Without repeats: empty arrays, no warning.
+    f = vtkRidgeGrouping()
+    warnings = warnings_of_update(f, make_points(coords[:600]))
+    fd = f.GetOutput(0).GetFieldData()
+    assert_that(fd.GetArray("DuplicatePointIds").GetNumberOfTuples() == 0
+                and not any("earlier point" in w for w in warnings), f"{warnings}")
+    # The curves drawn in the x-z plane (y = 0): z's range is named.
+    upright = make_points([(x, 0.0) for x, _ in coords[:600]])
+    for k, (_, y) in enumerate(coords[:600]):
+        upright.GetPoints().SetPoint(k, upright.GetPoint(k)[0], 0.0, y)
+    lowest, highest = min(y for _, y in coords[:600]), max(y for _, y in coords[:600])
+    warnings = warnings_of_update(vtkRidgeGrouping(), upright)
+    said = [w for w in warnings if "z runs from" in w]
+    assert_that(len(said) == 1 and f"z runs from {lowest!r} to {highest!r}: only x and y are read" in said[0],
+                f"{warnings}")
+
+
 if __name__ == "__main__":
     run([test_two_noisy_curves_are_grouped_ordered_and_fitted, test_no_loop_smaller_than_the_basis_makes_a_closed_group,
          test_points_past_a_contour_end_are_not_named_as_far,
@@ -428,4 +467,5 @@ if __name__ == "__main__":
          test_the_field_image_is_advertised_before_it_is_made,
          test_the_image_is_advertised_from_the_whole_input_when_its_source_gave_a_piece,
          test_a_time_varying_input_is_grouped_at_each_time_with_an_image_consumer,
-         test_a_basis_or_join_rule_that_is_no_choice_is_named])
+         test_a_basis_or_join_rule_that_is_no_choice_is_named,
+         test_duplicates_are_listed_and_points_off_the_plane_named])

@@ -1022,6 +1022,23 @@ def test_dates_of_days_and_hours_are_written_as_given():
     assert_that(f.GetOutputDataObject(1).GetColumnByName("Date") is None, "a Date column for year -1")
     assert_that(any("the times are dates, but not all of them can be written as dates (years 0 .. 9999"
                     in w for w in warnings), f"{warnings}")
+    assert_that(not any("the year 0" in w for w in warnings), f"years -1 and 0: no word of year 0 {warnings}")
+    # A year 0 among years from 1963 (ParaView's CSV reader makes an empty year 0): its rows are
+    # named, counted from 0 (the table's rows are sorted by year: the year 0's come first).
+    empty_year = dated_table({(0, 1): values, (1963, 8): values, (1963, 9): values},
+                             lambda y, m: {"year": y, "month": m})
+    f = vtkThiessenArealAverage()
+    warnings = messages_of(f, vtkCommand.WarningEvent)
+    f.SetGaugesData(gauges_polydata(coords, ids))
+    f.SetCatchmentData(polygon([ring]))
+    f.SetObservationsData(empty_year)
+    f.SetTimeColumn("year")
+    f.SetMonthColumn("month")
+    f.Update(1)
+    said = [w for w in warnings if "the year 0" in w]
+    assert_that(len(said) == 1 and f"): {len(values)} observation row(s) have the year 0 in column 'year', where the "
+                                   "record's other years start at 1963" in said[0]
+                and "they make 1 step(s) of their own (rows from 0): row 0 (station " in said[0], f"{warnings}")
 
 
 def table_with_times(table, dates):
@@ -2010,6 +2027,10 @@ def test_ids_and_values_are_read_one_a_gauge_or_row():
     _, errors = run_with(numpy_to_vtk(np.array([65, 66, 67], dtype=np.int8), deep=True),
                          observations_table({(2000, 1): {"A": 1.0, "B": 2.0, "C": 3.0}}))
     assert_that(len(errors) == 1 and "station ids that no gauge has: A" in errors[0], f"letters: {errors}")
+    # The gauges' own ids and the two settings are named (a trial chose another point array as
+    # StationIdArrayName, and was told only of the table's ids).
+    assert_that("; the gauges' ids (their point-data array 'station_id', StationIdArrayName) are 65, 66, 67 (do "
+                "StationIdArrayName and StationColumn 'station_id' hold the same ids?)" in errors[0], f"{errors}")
 
 
 if __name__ == "__main__":
