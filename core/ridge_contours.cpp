@@ -8,6 +8,7 @@
 #include <limits>
 #include <numeric>
 #include <string>
+#include <unordered_map>
 
 namespace tessera
 {
@@ -708,6 +709,127 @@ SkeletonGraph PruneSegmentsWithoutMajorRidge(std::vector<std::uint8_t>& skeleton
   }
 }
 
+/// Pixels of the contours kept so far, bucketed in square cells of the distance asked about, so
+/// that whether a pixel lies within that distance of one of them looks at 3 x 3 cells.
+class PixelBuckets
+{
+public:
+  PixelBuckets(int width, double distance)
+    : Width(width)
+    , Distance(distance)
+    , Cell(std::max(1, static_cast<int>(std::ceil(distance))))
+  {
+  }
+
+  void Add(const std::vector<int>& pixels)
+  {
+    for (int p : pixels)
+    {
+      this->Cells[this->Key(this->CellI(p), this->CellJ(p))].push_back(p);
+    }
+  }
+
+  bool Near(int p) const
+  {
+    for (int a = this->CellI(p) - 1; a <= this->CellI(p) + 1; ++a)
+    {
+      for (int b = this->CellJ(p) - 1; b <= this->CellJ(p) + 1; ++b)
+      {
+        const auto cell = this->Cells.find(this->Key(a, b));
+        if (cell != this->Cells.end() &&
+          std::any_of(cell->second.begin(),
+            cell->second.end(),
+            [&](int q) { return StepLength(p, q, this->Width) <= this->Distance; }))
+        {
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+
+private:
+  // (cells from -1 on: Near looks one cell beyond the image's first)
+  int CellI(int p) const { return p % this->Width / this->Cell; }
+  int CellJ(int p) const { return p / this->Width / this->Cell; }
+  static std::int64_t Key(int a, int b) { return (std::int64_t(a + 1) << 32) + (b + 1); }
+
+  int Width;
+  double Distance;
+  int Cell;
+  std::unordered_map<std::int64_t, std::vector<int>> Cells;
+};
+
+/// Step 5's side strands: clears keep for each open contour (kept so far, no longer than
+/// MaximumSideStrandLength) whose every pixel lies within SideStrandDistance of a longer kept one,
+/// longest first; returns how many. Its points then join the longer contour, the nearest. Two
+/// curves that close make one ridge of the field anyway, so no separate curve is lost.
+int DropSideStrands(const std::vector<std::vector<int>>& contours,
+  const std::vector<std::uint8_t>& closed,
+  const std::vector<double>& lengths,
+  int width,
+  const RidgeContourSettings& settings,
+  std::vector<std::uint8_t>& keep)
+{
+  if (settings.SideStrandDistance == 0.0)
+  {
+    return 0;
+  }
+  std::vector<int> order(contours.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(
+    order.begin(), order.end(), [&](int a, int b) { return lengths[a] > lengths[b]; });
+  PixelBuckets longer(width, settings.SideStrandDistance);
+  int dropped = 0;
+  for (int c : order)
+  {
+    const std::vector<int>& pixels = contours[c];
+    if (keep[c] && !closed[c] && lengths[c] <= settings.MaximumSideStrandLength &&
+      std::all_of(pixels.begin(), pixels.end(), [&](int p) { return longer.Near(p); }))
+    {
+      keep[c] = 0;
+      ++dropped;
+    }
+    else if (keep[c])
+    {
+      longer.Add(pixels);
+    }
+  }
+  return dropped;
+}
+
+/// Step 5's choice of contours: their lengths, and which are kept (not too short, not a side
+/// strand), counting those dropped in diagnostics.
+std::vector<std::uint8_t> ContoursToKeep(const std::vector<std::vector<int>>& contours,
+  const std::vector<std::uint8_t>& closed,
+  int width,
+  const RidgeContourSettings& settings,
+  std::vector<double>& lengths,
+  RidgeContours& diagnostics)
+{
+  lengths.resize(contours.size());
+  std::vector<std::uint8_t> keep(contours.size(), 0);
+  for (std::size_t c = 0; c < contours.size(); ++c)
+  {
+    const std::vector<int>& pixels = contours[c];
+    lengths[c] = PathLength(pixels, 0, static_cast<int>(pixels.size()), closed[c] != 0, width);
+    if (lengths[c] < settings.MinimumLength)
+    {
+      ++diagnostics.ShortContourCount;
+    }
+    else if (closed[c] && lengths[c] < settings.MinimumLoopLength)
+    {
+      ++diagnostics.ShortLoopCount;
+    }
+    else
+    {
+      keep[c] = 1;
+    }
+  }
+  diagnostics.SideStrandCount = DropSideStrands(contours, closed, lengths, width, settings, keep);
+  return keep;
+}
+
 } // namespace
 
 int ConnectivityNumber(const std::vector<std::uint8_t>& mask, int width, int height, int i, int j)
@@ -791,6 +913,11 @@ RidgeContours TraceRidgeContours(const std::vector<std::uint8_t>& minor,
     throw InputError("minimum loop length " + NumberText(settings.MinimumLoopLength) +
       " is not a finite non-negative number");
   }
+  if (!(settings.SideStrandDistance >= 0.0) || !std::isfinite(settings.SideStrandDistance))
+  {
+    throw InputError("side strand distance " + NumberText(settings.SideStrandDistance) +
+      " is not a finite non-negative number");
+  }
   if (settings.TangentPixels < 1)
   {
     throw InputError(
@@ -810,26 +937,18 @@ RidgeContours TraceRidgeContours(const std::vector<std::uint8_t>& minor,
   std::vector<std::vector<int>> contours;
   std::vector<std::uint8_t> closed;
   ContourTracer(kept, graph.SegmentPixels, link).TraceAll(contours, closed);
-
+  std::vector<double> lengths;
+  const std::vector<std::uint8_t> keep =
+    ContoursToKeep(contours, closed, width, settings, lengths, result);
   for (std::size_t c = 0; c < contours.size(); ++c)
   {
-    const std::vector<int>& pixels = contours[c];
-    const double length =
-      PathLength(pixels, 0, static_cast<int>(pixels.size()), closed[c] != 0, width);
-    if (length < settings.MinimumLength)
+    if (keep[c])
     {
-      ++result.ShortContourCount;
-      continue;
+      result.Pixels.insert(result.Pixels.end(), contours[c].begin(), contours[c].end());
+      result.Offsets.push_back(static_cast<int>(result.Pixels.size()));
+      result.Closed.push_back(closed[c]);
+      result.Lengths.push_back(lengths[c]);
     }
-    if (closed[c] && length < settings.MinimumLoopLength)
-    {
-      ++result.ShortLoopCount;
-      continue;
-    }
-    result.Pixels.insert(result.Pixels.end(), pixels.begin(), pixels.end());
-    result.Offsets.push_back(static_cast<int>(result.Pixels.size()));
-    result.Closed.push_back(closed[c]);
-    result.Lengths.push_back(length);
   }
   return result;
 }

@@ -28,7 +28,16 @@
 //    ClosestTangent joins the two ends whose tangents at the junction are most nearly opposite
 //    (the smoothest continuation). An end left over stops at the junction.
 // 5. Joined segments are traced into contours, open (two ends) or closed; contours shorter
-//    than the minimum length are dropped.
+//    than the minimum length are dropped, and so are open contours (up to MaximumSideStrandLength)
+//    lying within SideStrandDistance of a longer one all along: side strands of one ridge.
+//    A noisy ridge band has pixel-sized holes, which thinning keeps (it never opens or closes
+//    one), so the skeleton runs in two strands around each hole; both hold major pixels and
+//    stay, the joiner takes one strand through the junctions at either end of the holes, and
+//    the spare ends there join into a contour of the other strands, beside the first.
+//
+//      J1 ====== J2 ====== J3      two strands around holes between junctions J1, J2, J3:
+//         \____/  \____/           the long contour takes one (===), the other strands (___)
+//                                  join through J2 into a side strand
 //
 //        spur C                    Longest / ClosestTangent on a straight line A-B
 //          \                       with a spur C: A and B are joined through the junction
@@ -61,6 +70,10 @@ struct RidgeContourSettings
   int TangentPixels = 6;
   /// Longest segment between two junctions kept without a major-ridge pixel (pixels).
   double MaximumBridgeLength = 10.0;
+  /// An open contour no longer than MaximumSideStrandLength whose every pixel lies within this
+  /// distance (pixels) of a longer contour kept is dropped as a side strand of it; 0 = none is.
+  double SideStrandDistance = 0.0;
+  double MaximumSideStrandLength = 0.0;
 };
 
 /// Contours as flat arrays: contour c is Pixels[Offsets[c] .. Offsets[c + 1]), pixel indices
@@ -81,6 +94,7 @@ struct RidgeContours
   int KeptSegmentCount = 0;  ///< segments holding a major-ridge pixel
   int ShortContourCount = 0; ///< contours dropped as shorter than MinimumLength
   int ShortLoopCount = 0;    ///< closed ones not so dropped, but shorter than MinimumLoopLength
+  int SideStrandCount = 0;   ///< open ones dropped beside a longer one (SideStrandDistance)
 };
 
 /// Thins a binary mask in place as in step 1 above. O(mask pixels x passes).
@@ -97,7 +111,7 @@ double StepLength(int a, int b, int width);
 /// Steps 1-5. field (optional): the field the masks were taken from, width x height, which finds
 /// the saddle paths of step 3 while the branches still hold their junctions. Throws InputError if
 /// the masks or the field do not match width x height or the settings are invalid (negative
-/// minimum length, TangentPixels < 1).
+/// minimum length or side strand distance, TangentPixels < 1).
 RidgeContours TraceRidgeContours(const std::vector<std::uint8_t>& minor,
   const std::vector<std::uint8_t>& major,
   int width,

@@ -31,7 +31,8 @@
 //    major on noisy data without marking pixels away from the crests;
 //  - minor ridges are thinned to one pixel before branch pixels are counted; segments without
 //    a major pixel are removed as dangling branches first, and then, between two junctions that
-//    remain, when longer than 2 basis widths (ridge_contours.h);
+//    remain, when longer than 2 basis widths; an open contour up to 4 widths long within a width
+//    of a longer one all along is dropped as a side strand of its ridge (ridge_contours.h);
 //  - points past the end of an open contour get extended nodes (point_partition.h).
 //
 // Limits. ImageSize may not exceed MaxImageSize = 2048: the padded FFT then holds two complex
@@ -66,7 +67,9 @@ struct RidgeGroupingSettings
   double CurveSigma = 0.04;
   JoinRule Join = JoinRule::Longest;
   /// Ridge contours shorter than this (pixels) are dropped before partitioning, and so are closed
-  /// ones shorter than 2 pi Width pixels (a loop the field cannot resolve).
+  /// ones shorter than 2 pi Width pixels (a loop the field cannot resolve) and open ones up to
+  /// 4 Width pixels long within Width pixels of a longer contour all along (a side strand of its
+  /// ridge, ridge_contours.h).
   double MinimumContourLength = 10.0;
   /// Samples of each fitted curve per pixel of its ridge contour (at least 16 per curve).
   double CurveSamplesPerPixel = 2.0;

@@ -351,4 +351,40 @@ TEST(RidgeContours, RingIsOneClosedContourAndShortPiecesAreDropped)
   EXPECT_THROW(tessera::TraceRidgeContours(minor, major, w, h, settings), tessera::InputError);
 }
 
+TEST(RidgeContours, SideStrandAroundHolesGoesAParallelRidgeStays)
+{
+  // A ridge on row 10 with a second strand on row 12 from x = 20 to 40, joined to it at x = 20,
+  // 30 and 40 (two holes between the strands, as a noisy ridge band has): the long contour takes
+  // one strand, the other becomes a contour of about 20 pixels beside it. A separate ridge on
+  // row 30 (20 pixels off) of the same length as that strand stays.
+  const int w = 80;
+  const int h = 40;
+  Mask minor(w * h, 0);
+  Draw(minor, w, 5, 10, 74, 10);
+  Draw(minor, w, 20, 12, 40, 12);
+  for (int x : { 20, 30, 40 })
+  {
+    Draw(minor, w, x, 11, x, 11);
+  }
+  Draw(minor, w, 20, 30, 40, 30);
+  const Mask major = minor;
+  tessera::RidgeContourSettings settings;
+  settings.MinimumLength = 10;
+  const tessera::RidgeContours before = tessera::TraceRidgeContours(minor, major, w, h, settings);
+  EXPECT_EQ(before.Count(), 3);
+  EXPECT_EQ(before.SideStrandCount, 0);
+  settings.SideStrandDistance = 5;
+  settings.MaximumSideStrandLength = 30;
+  const tessera::RidgeContours c = tessera::TraceRidgeContours(minor, major, w, h, settings);
+  ASSERT_EQ(c.Count(), 2);
+  EXPECT_EQ(c.SideStrandCount, 1);
+  EXPECT_GE(std::max(c.Lengths[0], c.Lengths[1]), 69.0 - 1e-9);
+  EXPECT_NEAR(std::min(c.Lengths[0], c.Lengths[1]), 20.0, 1e-9); // the ridge on row 30
+  // Longer than MaximumSideStrandLength, the strand stays.
+  settings.MaximumSideStrandLength = 10;
+  EXPECT_EQ(tessera::TraceRidgeContours(minor, major, w, h, settings).Count(), 3);
+  settings.SideStrandDistance = -1;
+  EXPECT_THROW(tessera::TraceRidgeContours(minor, major, w, h, settings), tessera::InputError);
+}
+
 } // namespace

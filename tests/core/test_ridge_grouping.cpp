@@ -1369,11 +1369,12 @@ TEST(RidgeGrouping, ContoursAcrossEmptySpaceAreNamed)
 
 // A group of one point gets no curve (a curve needs two): such groups are named in a warning, and
 // every group of two or more points has its curve. A noisy circle on a fine image breaks into
-// short contours, some of which take a single point.
+// short contours, some of which take a single point. (Seeds 1, 3 and 4's were side strands of the
+// ridge, dropped since; 6 and 10 still have such a contour.)
 TEST(RidgeGrouping, GroupsOfOnePointAreNamedAsHavingNoCurve)
 {
   int singles = 0;
-  for (unsigned seed = 0; seed < 6; ++seed)
+  for (unsigned seed = 0; seed < 12; ++seed)
   {
     std::mt19937 random(seed);
     std::uniform_real_distribution<double> angle(0.0, 2.0 * 3.14159265358979323846);
