@@ -1600,9 +1600,26 @@ void NameDuplicatePoints(const std::vector<Point2>& points, RidgeGroupingResult&
           std::to_string(duplicates[k].second) + ")";
       }));
 }
+
+/// Calls progress (if any) with the fraction done; throws Cancelled when it returns false.
+void ReportOrStop(const std::function<bool(double)>& progress, double fraction)
+{
+  if (progress && !progress(fraction))
+  {
+    throw Cancelled();
+  }
+}
+
+// Run's progress at the start of its stages, from their times on 10^5 points of a noisy circle:
+// the field took 79% and 74% of the run at 2048 and 1024 pixels, the contours 8% and 2%, the
+// groups and curves 13% and 20%.
+constexpr double FieldStart = 0.02;
+constexpr double ContoursStart = 0.78;
+constexpr double GroupsStart = 0.84;
 } // namespace
 
-RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
+RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points,
+  const std::function<bool(double)>& progress) const
 {
   CheckPoints(points);
   RidgeGroupingResult result;
@@ -1625,9 +1642,13 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points) const
   }
   const PixelGrid grid = this->ChooseImage(points, extent, result);
   const std::vector<Point2> pixelPoints = PixelPointsOf(points, grid);
+  ReportOrStop(progress, FieldStart);
   ComputeField(pixelPoints, grid, this->Settings, result);
+  ReportOrStop(progress, ContoursStart);
   const RidgeContours contours = TraceContours(grid, this->Settings, result);
+  ReportOrStop(progress, GroupsStart);
   GroupAndFit(points, pixelPoints, contours, grid, this->Settings, result);
+  ReportOrStop(progress, 1.0);
   return result;
 }
 

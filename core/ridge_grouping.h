@@ -46,6 +46,7 @@
 #include "ridge_contours.h"
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -145,8 +146,12 @@ public:
 
   /// Throws InputError naming the first point with a NaN or infinite coordinate. Fewer than two
   /// points give a warning, every point unassigned (GroupId -1) and no contour or curve;
-  /// identical points give one group and no curve.
-  RidgeGroupingResult Run(const std::vector<Point2>& points) const;
+  /// identical points give one group and no curve. progress, if given, is called with the
+  /// fraction done after each stage (the image chosen, the field, the contours, the groups and
+  /// curves); when it returns false Run stops and throws Cancelled (a field of 2048 pixels takes
+  /// seconds, which a viewer's progress bar spent at one place).
+  RidgeGroupingResult Run(const std::vector<Point2>& points,
+    const std::function<bool(double)>& progress = nullptr) const;
 
   /// The field image's grid that Run gives for these points (the image size chosen as Run
   /// chooses it), without computing the field: an empty grid for fewer than two distinct points.

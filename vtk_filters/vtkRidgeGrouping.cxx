@@ -266,8 +266,8 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     }
     const tessera::RidgeGrouping grouping(CoreSettings(this));
     tessera_vtk::ProgressOrStop(this, 0.05);
-    const tessera::RidgeGroupingResult result = grouping.Run(points);
-    tessera_vtk::ProgressOrStop(this, 0.9);
+    const tessera::RidgeGroupingResult result =
+      grouping.Run(points, tessera_vtk::StageProgress(this, 0.05, 0.9));
     for (const std::string& warning : result.Warnings)
     {
       vtkWarningMacro(<< warning);

@@ -1619,6 +1619,39 @@ TEST(RidgeGrouping, AutomaticImageSizeGivesMostPointsTheirOwnPixel)
   }
 }
 
+TEST(RidgeGrouping, ProgressIsReportedByStageAndCanStopTheRun)
+{
+  // Each stage reports (a viewer's bar sat at one place for the seconds of a large field), in
+  // order, ending at 1; a false answer stops the run with Cancelled, at any stage.
+  const std::vector<TrueCurve> arc = { { [](double t)
+    {
+      return Point2{ 100 * std::cos(2 * t), 100 * std::sin(2 * t) };
+    },
+    false } };
+  const std::vector<Point2> points = Positions(SampleCurves(arc, { 300 }, 1.0, 4));
+  std::vector<double> fractions;
+  const RidgeGroupingResult result = RidgeGrouping().Run(points,
+    [&](double f)
+    {
+      fractions.push_back(f);
+      return true;
+    });
+  ASSERT_EQ(fractions.size(), 4u);
+  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+  EXPECT_GT(fractions.front(), 0.0);
+  EXPECT_EQ(fractions.back(), 1.0);
+  const RidgeGroupingResult quiet = RidgeGrouping().Run(points);
+  EXPECT_EQ(result.GroupId, quiet.GroupId); // (reporting changes nothing)
+  for (std::size_t stop = 0; stop < fractions.size(); ++stop)
+  {
+    std::size_t calls = 0;
+    EXPECT_THROW(
+      RidgeGrouping().Run(points, [&](double) { return calls++ < stop; }), tessera::Cancelled)
+      << "stopped at call " << stop;
+    EXPECT_EQ(calls, stop + 1);
+  }
+}
+
 TEST(RidgeGrouping, RepeatedPointsDoNotChangeTheAutomaticImage)
 {
   // Every point given twice, then three times (repeated measurements): copies can never have a

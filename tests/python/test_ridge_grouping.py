@@ -459,6 +459,27 @@ def test_duplicates_are_listed_and_points_off_the_plane_named():
                 f"{warnings}")
 
 
+def test_progress_goes_by_stages_and_an_abort_empties_the_outputs():
+    # From a trial: the progress bar sat at 5% for the seconds of the field. Now each core stage
+    # reports; an abort asked in the middle stops the run with empty outputs and no error.
+    coords, _, _ = two_noisy_curves()
+    f = vtkRidgeGrouping()
+    seen = []
+    f.AddObserver(vtkCommand.ProgressEvent, lambda o, e: seen.append(o.GetProgress()))
+    f.SetInputData(make_points(coords))
+    f.Update()
+    inner = [p for p in seen if 0.05 < p < 0.9]
+    assert_that(seen == sorted(seen) and seen[-1] == 1.0 and len(set(inner)) >= 3, f"progress {seen}")
+    stopped = vtkRidgeGrouping()
+    errors = messages_of(stopped)
+    stopped.AddObserver(vtkCommand.ProgressEvent,
+                        lambda o, e: o.SetAbortExecute(1) if 0.5 < o.GetProgress() < 0.9 else None)
+    stopped.SetInputData(make_points(coords))
+    stopped.Update()
+    assert_that(not errors and all(stopped.GetOutputDataObject(k).GetNumberOfPoints() == 0 for k in range(4)),
+                f"aborted: {errors}, {[stopped.GetOutputDataObject(k).GetNumberOfPoints() for k in range(4)]}")
+
+
 if __name__ == "__main__":
     run([test_two_noisy_curves_are_grouped_ordered_and_fitted, test_no_loop_smaller_than_the_basis_makes_a_closed_group,
          test_points_past_a_contour_end_are_not_named_as_far,
@@ -468,4 +489,5 @@ if __name__ == "__main__":
          test_the_image_is_advertised_from_the_whole_input_when_its_source_gave_a_piece,
          test_a_time_varying_input_is_grouped_at_each_time_with_an_image_consumer,
          test_a_basis_or_join_rule_that_is_no_choice_is_named,
-         test_duplicates_are_listed_and_points_off_the_plane_named])
+         test_duplicates_are_listed_and_points_off_the_plane_named,
+         test_progress_goes_by_stages_and_an_abort_empties_the_outputs])
