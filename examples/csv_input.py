@@ -574,10 +574,12 @@ def output_directory(path):
         fail(f"--out {path!r}: an empty path (give a directory, such as out)")
     if os.path.exists(path) and not os.path.isdir(path):
         fail(f"--out {path}: exists and is not a directory")
+    missing = missing_directories(path)
     try:
         os.makedirs(path, exist_ok=True)
     except OSError as error:
         fail(f"--out {path}: cannot create the directory ({error.strerror or error})")
+    MADE_DIRECTORIES.extend(missing)
     try:
         handle, probe = tempfile.mkstemp(prefix=".tessera_write_test_", dir=path)
     except OSError as error:
@@ -629,16 +631,49 @@ def write_vtk(writer, data, path):
         fail(f"{path}: cannot write ({reason})")
 
 
+# The directories output_directory made (the deepest last), which a failed run removes where it
+# left them empty: a trial's run that ended on a bad catchment left its new --out directory behind.
+MADE_DIRECTORIES = []
+
+
+def missing_directories(path):
+    """path and those of its parents that do not exist, the outermost first."""
+    missing = []
+    path = os.path.abspath(path)
+    while not os.path.exists(path):
+        missing.insert(0, path)
+        parent = os.path.dirname(path)
+        if parent == path:
+            break
+        path = parent
+    return missing
+
+
+def remove_made_directories():
+    """Removes the directories output_directory made that are empty, the deepest first."""
+    for directory in reversed(MADE_DIRECTORIES):
+        try:
+            os.rmdir(directory)  # (only an empty one)
+        except OSError:
+            break
+
+
 def run(main):
     """Runs a script's main(); an OSError about a file that it did not expect (an output path that
     is a directory, no permission, a full disk) ends the script with one line naming the file and
-    why, not a traceback after the work is done."""
+    why, not a traceback after the work is done. A run that fails removes the --out directories it
+    made and left empty."""
     try:
-        main()
-    except OSError as error:
-        if error.filename is None:
-            raise
-        fail(f"{error.filename}: {error.strerror or error}")
+        try:
+            main()
+        except OSError as error:
+            if error.filename is None:
+                raise
+            fail(f"{error.filename}: {error.strerror or error}")
+    except SystemExit as end:
+        if end.code not in (None, 0):
+            remove_made_directories()
+        raise
 
 
 def import_tessera():

@@ -22,6 +22,7 @@
 #include "errors.h"
 #include "geo.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iterator>
 #include <optional>
@@ -384,6 +385,37 @@ void WarnOfDataRoundTheGlobe(vtkGeographicProjection* self,
        "and CentralLatitude 90 or -90 keeps them together");
 }
 
+/// Warns where a UTM zone set (Projection UTM, UTMZone) has the other hemisphere's grid than every
+/// point: UTMNorth off for points all north of the equator puts 10,000 km on every northing, on
+/// for points all south makes them negative (a trial's northern data, UTMNorth left off, went
+/// 10,000 km north without a word). A grid of the other hemisphere is valid (data across the
+/// equator take one), so it is a warning.
+void WarnOfOtherHemisphere(vtkGeographicProjection* self,
+  const tessera::ProjectionParameters& p,
+  const std::vector<tessera::Point2>& lonlat)
+{
+  if (p.Kind != tessera::ProjectionKind::UTM || self->GetUTMZone() == 0 || lonlat.empty())
+  {
+    return;
+  }
+  const auto north = [](const tessera::Point2& q) { return q.y > 0.0; };
+  const auto south = [](const tessera::Point2& q) { return q.y < 0.0; };
+  if (!p.UTMNorth && std::all_of(lonlat.begin(), lonlat.end(), north))
+  {
+    vtkWarningWithObjectMacro(self,
+      << "UTMNorth is off (the southern grid, northings from 10,000 km at the equator), but "
+         "every point lies north of the equator: their northings are 10,000 km more than the "
+         "zone's northern grid gives them (turn UTMNorth on for that grid)");
+  }
+  else if (p.UTMNorth && std::all_of(lonlat.begin(), lonlat.end(), south))
+  {
+    vtkWarningWithObjectMacro(self,
+      << "UTMNorth is on (the northern grid, northings from 0 at the equator), but every point "
+         "lies south of the equator: their northings are negative, 10,000 km less than the "
+         "zone's southern grid gives them (turn UTMNorth off for that grid)");
+  }
+}
+
 /// The forward projection's parameters from the filter's settings and the data.
 tessera::ProjectionParameters ChooseForwardParameters(vtkGeographicProjection* self,
   const std::vector<tessera::Point2>& lonlat)
@@ -422,6 +454,7 @@ tessera::ProjectionParameters ChooseForwardParameters(vtkGeographicProjection* s
     p.UTMNorth = self->GetCentralLatitude() >= 0.0;
   }
   TakeUTMZoneSet(self, p);
+  WarnOfOtherHemisphere(self, p, lonlat);
   TakeGridTerms(self, p);
   return p;
 }

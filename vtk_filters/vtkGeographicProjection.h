@@ -146,7 +146,9 @@ public:
   ///@{
   /**
    * UTM hemisphere when the zone is set by hand (default on: north). With UTMZone 0 the
-   * hemisphere of the data's centre is used.
+   * hemisphere of the data's centre is used. A grid of the other hemisphere than every point
+   * (off for points all north of the equator, on for points all south) is warned of: their
+   * northings are 10,000 km off the zone's grid for their hemisphere.
    */
   vtkSetMacro(UTMNorth, bool);
   vtkGetMacro(UTMNorth, bool);

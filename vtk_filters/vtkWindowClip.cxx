@@ -310,8 +310,8 @@ vtkSmartPointer<vtkDoubleArray> OneValue(const char* name, double value)
   return array;
 }
 
-/// Throws InputError for tiles that are neither a point set nor a composite data set, or for no
-/// window.
+/// Throws InputError for tiles that are neither a point set nor a composite data set, for no
+/// window, or for a window that is a data set of another type than vtkPolyData.
 void CheckInputTypes(vtkDataObject* tiles, vtkDataObject* window)
 {
   if (!tiles) // (port 0 is required: a producer that gave no data object at all)
@@ -327,6 +327,14 @@ void CheckInputTypes(vtkDataObject* tiles, vtkDataObject* window)
   {
     throw tessera::InputError("no window is connected to input 1 (SetWindowData or "
                               "SetWindowConnection; in ParaView, the filter's Window input)");
+  }
+  // (said before the projection records are compared: a trial's image window beside projected
+  // tiles was told to be projected, where no window of that type is read at all)
+  if (vtkDataSet::SafeDownCast(window) && !vtkPolyData::SafeDownCast(window))
+  {
+    throw tessera::InputError(std::string("the window (input 1) is a ") + window->GetClassName() +
+      ": only vtkPolyData (or a composite data set of it) is read as a window; extract its "
+      "surface first (ParaView's Extract Surface, vtkGeometryFilter)");
   }
 }
 

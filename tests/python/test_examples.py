@@ -1012,7 +1012,7 @@ def test_start_and_end_choose_the_period():
                                  what="a month after the period", status=1)
         assert_that("--month 1970-05: is outside --start 1960-03 and --end 1961-02 (the months averaged run from "
                     "1960-03 to 1961-02)" in stderr and "showing" not in stderr and "Traceback" not in stderr
-                    and os.listdir(later) == [], f"a month after the period: {stderr} {os.listdir(later)}")
+                    and not os.path.exists(later), f"a month after the period: {stderr}")
 
         # Daily observations: a month given is its first or last day; a day is a day.
         days = {(2001, 1, 30): {"N1": 1.5, "N2": 2.5}, (2001, 2, 1): {"N1": 3.0, "N4": 1.25},
@@ -3696,6 +3696,38 @@ def test_without_tessera_on_the_path_the_scripts_say_how_to_run():
                         and "Traceback" not in done.stderr, f"{script} without VTK: {done.returncode} {done.stderr}")
 
 
+def test_a_failed_run_removes_the_out_directories_it_made_empty():
+    # From a trial: a run that ended on an error left its new --out directory behind, empty. The
+    # directories the run made go (the parents too), one that was there stays, and one the run
+    # wrote a file into stays with it.
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, observations = write_lake_basin(directory)
+        deep = os.path.join(directory, "new", "deeper")
+        _, stderr = run_colorado(deep, stations=stations, observations=observations, catchment=catchment,
+                                 month="2050-01", plots=False, status=1, what="a month not in the record")
+        assert_that("--month 2050-01: is not in the record" in stderr
+                    and not os.path.exists(os.path.join(directory, "new")), f"{stderr} {os.listdir(directory)}")
+        there = os.path.join(directory, "there")
+        os.mkdir(there)
+        run_colorado(os.path.join(there, "sub"), stations=stations, observations=observations, catchment=catchment,
+                     month="2050-01", plots=False, status=1, what="a month not in the record, --out in a directory")
+        assert_that(os.listdir(there) == [], f"{os.listdir(there)}")
+        held = os.path.join(directory, "held")
+        os.mkdir(held)
+        write(held, "keep.txt", "a file of the user's\n")
+        run_colorado(held, stations=stations, observations=observations, catchment=catchment, month="2050-01",
+                     plots=False, status=1, what="a month not in the record, --out holding a file")
+        assert_that(os.listdir(held) == ["keep.txt"], f"{os.listdir(held)}")
+        # (files read once --out is made, with a value that is not a number)
+        bad_points = write(directory, "bad_points.csv", "x,y\n1,2\n3,abc\n")
+        bad_gauges = write(directory, "bad_gauges.csv", "station_id,lon,lat\nA,-105,abc\n")
+        for script, inputs in (("ridge_grouping.py", ("--planar", "--quakes", bad_points)),
+                               ("project_gauges.py", ("--stations", bad_gauges))):
+            out = os.path.join(directory, "made_by_" + script)
+            status, _, stderr = run_example(script, "--out", out, *inputs)
+            assert_that(status == 1 and not os.path.exists(out), f"{script}: {status} {stderr}")
+
+
 def test_a_month_asked_for_is_never_another_month():
     # From a tester's report: --month 2050-01 (not in the record) wrote 1997-12's weights, tiles and
     # map under a note, exit status 0, and so did a month outside --start/--end. A step asked for is
@@ -3715,12 +3747,12 @@ def test_a_month_asked_for_is_never_another_month():
             _, stderr = run_colorado(out, plots=False, status=1, what=f"{options}", **common, **options)
             assert_that(stderr_messages(stderr)[-1].startswith(expected) and "showing" not in stderr
                         and "Traceback" not in stderr, f"{options}: expected {expected!r}, got {stderr!r}")
-            assert_that(os.listdir(out) == [], f"{options}: wrote {os.listdir(out)}")
+            assert_that(not os.path.exists(out), f"{options}: wrote into {out} (or left it made)")
         # Both --month values are checked, the good one first not shown alone.
         out = os.path.join(directory, "two")
         _, stderr = run_colorado(out, "--month", "2001-02", "--month", "1999-01", plots=False, status=1,
                                  what="a good and a bad month", **common)
-        assert_that("--month 1999-01: is not in the record" in stderr and os.listdir(out) == [], stderr)
+        assert_that("--month 1999-01: is not in the record" in stderr and not os.path.exists(out), stderr)
         # Without --month, for observations other than the Colorado example's: the record's last
         # month where a gauge reported (a trial's own record was shown at the month nearest 1963-08),
         # no note; a month after it with only missing values is passed over.
@@ -3788,7 +3820,7 @@ def test_a_month_the_record_covers_in_part_is_shown_from_its_first_step():
                                      **options)
             assert_that(stderr_messages(stderr)[-1].startswith(expected) and "Traceback" not in stderr,
                         f"{options}: expected {expected!r}, got {stderr!r}")
-            assert_that(os.listdir(out) == [], f"{options}: wrote {os.listdir(out)}")
+            assert_that(not os.path.exists(out), f"{options}: wrote into {out} (or left it made)")
 
 
 def test_an_out_directory_that_takes_no_file_is_named_before_any_work():
@@ -4144,6 +4176,7 @@ if __name__ == "__main__":
          test_every_benchmark_says_what_it_measures,
          test_without_tessera_on_the_path_the_scripts_say_how_to_run,
          test_a_month_asked_for_is_never_another_month,
+         test_a_failed_run_removes_the_out_directories_it_made_empty,
          test_a_month_the_record_covers_in_part_is_shown_from_its_first_step,
          test_an_out_directory_that_takes_no_file_is_named_before_any_work,
          test_an_out_directory_says_whether_the_test_file_could_be_made_or_removed,

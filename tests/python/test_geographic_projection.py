@@ -323,6 +323,35 @@ def test_utm_metres_without_a_record_go_back_by_their_zone():
     inverse.Update()
     assert_that(len(errors) == 1 and "Inverse needs the input's TesseraProjection field data, a UTM zone (UTMZone "
                 "1 to 60)" in errors[0] and inverse.GetOutput().GetNumberOfPoints() == 0, f"zone 0: {errors}")
+    # A grid of the other hemisphere than every point is warned of, both ways, with the northings
+    # 10,000 km apart from the right grid's (a trial left UTMNorth off for northern data); points
+    # on both sides of the equator take either without a word.
+    for places_given, north, said in ((places, False, "UTMNorth is off"), (south, True, "UTMNorth is on")):
+        f = vtkGeographicProjection()
+        warnings = messages_of(f, vtkCommand.WarningEvent)
+        f.SetInputData(make_points(places_given))
+        f.SetProjectionToUTM()
+        f.SetUTMZone(13)
+        f.SetUTMNorth(north)
+        f.Update()
+        right = vtkGeographicProjection()
+        right.SetInputData(make_points(places_given))
+        right.SetProjectionToUTM()
+        right.SetUTMZone(13)
+        right.SetUTMNorth(not north)
+        right.Update()
+        shift = f.GetOutput().GetPoint(0)[1] - right.GetOutput().GetPoint(0)[1]
+        assert_that(len(warnings) == 1 and said in warnings[0] and abs(abs(shift) - 1e7) < 1e-6,
+                    f"{said}: {warnings}, shift {shift}")
+    for north in (True, False):
+        f = vtkGeographicProjection()
+        warnings = messages_of(f, vtkCommand.WarningEvent)
+        f.SetInputData(make_points([(-105.0, 1.0), (-104.0, -1.0)]))
+        f.SetProjectionToUTM()
+        f.SetUTMZone(13)
+        f.SetUTMNorth(north)
+        f.Update()
+        assert_that(not warnings, f"across the equator, UTMNorth {north}: {warnings}")
 
 
 def test_no_points_give_an_empty_output_without_error():
