@@ -1010,15 +1010,20 @@ def test_dates_of_days_and_hours_are_written_as_given():
                     f"{got} read back as {summary_column(again, 'Time')}")
     # Years outside 0 .. 9999 (a year column may hold -9999 .. 9999) have no date text: no column,
     # and a warning says why.
+    def averaged_by_year_and_month(table):
+        """The filter on table's year and month columns, updated; and its warnings."""
+        f = vtkThiessenArealAverage()
+        warnings = messages_of(f, vtkCommand.WarningEvent)
+        f.SetGaugesData(gauges_polydata(coords, ids))
+        f.SetCatchmentData(polygon([ring]))
+        f.SetObservationsData(table)
+        f.SetTimeColumn("year")
+        f.SetMonthColumn("month")
+        f.Update(1)
+        return f, warnings
+
     ancient = dated_table({(-1, 12): values, (0, 1): values}, lambda y, m: {"year": y, "month": m})
-    f = vtkThiessenArealAverage()
-    warnings = messages_of(f, vtkCommand.WarningEvent)
-    f.SetGaugesData(gauges_polydata(coords, ids))
-    f.SetCatchmentData(polygon([ring]))
-    f.SetObservationsData(ancient)
-    f.SetTimeColumn("year")
-    f.SetMonthColumn("month")
-    f.Update(1)
+    f, warnings = averaged_by_year_and_month(ancient)
     assert_that(f.GetOutputDataObject(1).GetColumnByName("Date") is None, "a Date column for year -1")
     assert_that(any("the times are dates, but not all of them can be written as dates (years 0 .. 9999"
                     in w for w in warnings), f"{warnings}")
@@ -1027,14 +1032,7 @@ def test_dates_of_days_and_hours_are_written_as_given():
     # named, counted from 0 (the table's rows are sorted by year: the year 0's come first).
     empty_year = dated_table({(0, 1): values, (1963, 8): values, (1963, 9): values},
                              lambda y, m: {"year": y, "month": m})
-    f = vtkThiessenArealAverage()
-    warnings = messages_of(f, vtkCommand.WarningEvent)
-    f.SetGaugesData(gauges_polydata(coords, ids))
-    f.SetCatchmentData(polygon([ring]))
-    f.SetObservationsData(empty_year)
-    f.SetTimeColumn("year")
-    f.SetMonthColumn("month")
-    f.Update(1)
+    _, warnings = averaged_by_year_and_month(empty_year)
     said = [w for w in warnings if "the year 0" in w]
     assert_that(len(said) == 1 and f"): {len(values)} observation row(s) have the year 0 in column 'year', where the "
                                    "record's other years start at 1963" in said[0]
