@@ -52,4 +52,14 @@ void CheckPositiveScale(double value, const std::string& what)
   }
 }
 
+std::string DuplicatePairNames(const std::vector<std::pair<std::int32_t, std::int32_t>>& pairs)
+{
+  return ListNames(pairs.size(),
+    [&](std::size_t k)
+    {
+      return "point " + std::to_string(pairs[k].first) + " (of point " +
+        std::to_string(pairs[k].second) + ")";
+    });
+}
+
 } // namespace tessera

@@ -2,6 +2,8 @@
 // Errors thrown by the core. A VTK filter catches them and turns them into vtkErrorMacro.
 
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -20,6 +22,16 @@ public:
   {
   }
 };
+
+/// Calls progress (if any) with the fraction done, and throws Cancelled when it answers false: a
+/// long computation's report at a stage, where its caller may stop it.
+inline void ReportOrStop(const std::function<bool(double)>& progress, double fraction)
+{
+  if (progress && !progress(fraction))
+  {
+    throw Cancelled();
+  }
+}
 
 /// Bad input: the message names the bad value and where it is ("point 17 has a NaN coordinate").
 class InputError : public std::invalid_argument
@@ -94,6 +106,10 @@ std::string ListNames(std::size_t count, const NameOf& nameOf)
   }
   return out;
 }
+
+/// "point 3 (of point 0), point 5 (of point 1)": the first 20 (ListNames) of (copy, original)
+/// pairs of points at one place, as the warnings that name repeated points give them.
+std::string DuplicatePairNames(const std::vector<std::pair<std::int32_t, std::int32_t>>& pairs);
 
 /// Below this a width or sigma s is refused (CheckPositiveScale): the 2 s^2 of a Gaussian, or the
 /// s^2 of an inverse multiquadric, underflows to zero, and the field or curve becomes 0/0 = NaN.

@@ -710,14 +710,15 @@ SkeletonGraph PruneSegmentsWithoutMajorRidge(std::vector<std::uint8_t>& skeleton
 }
 
 /// Pixels of the contours kept so far, bucketed in square cells of the distance asked about, so
-/// that whether a pixel lies within that distance of one of them looks at 3 x 3 cells.
+/// that whether a pixel lies within that distance of one of them looks at 3 x 3 cells. (A cell
+/// wider than any image holds them all: a huge distance does not overflow the cell's int.)
 class PixelBuckets
 {
 public:
   PixelBuckets(int width, double distance)
     : Width(width)
     , Distance(distance)
-    , Cell(std::max(1, static_cast<int>(std::ceil(distance))))
+    , Cell(static_cast<int>(std::clamp(std::ceil(distance), 1.0, double(1 << 24))))
   {
   }
 
@@ -761,9 +762,9 @@ private:
 };
 
 /// Step 5's side strands: clears keep for each open contour (kept so far, no longer than
-/// MaximumSideStrandLength) whose every pixel lies within SideStrandDistance of a longer kept one,
-/// longest first; returns how many. Its points then join the longer contour, the nearest. Two
-/// curves that close make one ridge of the field anyway, so no separate curve is lost.
+/// MaximumSideStrandLength) whose every pixel lies within SideStrandDistance of a pixel of the
+/// contours kept before it, taken longest first (of equal lengths, in their order); returns how
+/// many. Its points then join those contours, the nearest.
 int DropSideStrands(const std::vector<std::vector<int>>& contours,
   const std::vector<std::uint8_t>& closed,
   const std::vector<double>& lengths,
@@ -903,20 +904,17 @@ RidgeContours TraceRidgeContours(const std::vector<std::uint8_t>& minor,
     throw InputError("field of " + std::to_string(field->size()) + " values for a " +
       std::to_string(width) + " x " + std::to_string(height) + " image");
   }
-  if (!(settings.MinimumLength >= 0.0) || !std::isfinite(settings.MinimumLength))
+  for (const auto& [what, value] :
+    { std::make_pair("minimum contour length", settings.MinimumLength),
+      std::make_pair("minimum loop length", settings.MinimumLoopLength),
+      std::make_pair("side strand distance", settings.SideStrandDistance),
+      std::make_pair("maximum side strand length", settings.MaximumSideStrandLength) })
   {
-    throw InputError("minimum contour length " + NumberText(settings.MinimumLength) +
-      " is not a finite non-negative number");
-  }
-  if (!(settings.MinimumLoopLength >= 0.0) || !std::isfinite(settings.MinimumLoopLength))
-  {
-    throw InputError("minimum loop length " + NumberText(settings.MinimumLoopLength) +
-      " is not a finite non-negative number");
-  }
-  if (!(settings.SideStrandDistance >= 0.0) || !std::isfinite(settings.SideStrandDistance))
-  {
-    throw InputError("side strand distance " + NumberText(settings.SideStrandDistance) +
-      " is not a finite non-negative number");
+    if (!(value >= 0.0) || !std::isfinite(value))
+    {
+      throw InputError(
+        std::string(what) + " " + NumberText(value) + " is not a finite non-negative number");
+    }
   }
   if (settings.TangentPixels < 1)
   {

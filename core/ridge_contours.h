@@ -29,7 +29,8 @@
 //    (the smoothest continuation). An end left over stops at the junction.
 // 5. Joined segments are traced into contours, open (two ends) or closed; contours shorter
 //    than the minimum length are dropped, and so are open contours (up to MaximumSideStrandLength)
-//    lying within SideStrandDistance of a longer one all along: side strands of one ridge.
+//    whose every pixel lies within SideStrandDistance of the longer contours kept (of equal
+//    lengths, the earlier traced counts as longer): side strands of one ridge.
 //    A noisy ridge band has pixel-sized holes, which thinning keeps (it never opens or closes
 //    one), so the skeleton runs in two strands around each hole; both hold major pixels and
 //    stay, the joiner takes one strand through the junctions at either end of the holes, and
@@ -71,7 +72,7 @@ struct RidgeContourSettings
   /// Longest segment between two junctions kept without a major-ridge pixel (pixels).
   double MaximumBridgeLength = 10.0;
   /// An open contour no longer than MaximumSideStrandLength whose every pixel lies within this
-  /// distance (pixels) of a longer contour kept is dropped as a side strand of it; 0 = none is.
+  /// distance (pixels) of the longer contours kept is dropped as a side strand; 0 = none is.
   double SideStrandDistance = 0.0;
   double MaximumSideStrandLength = 0.0;
 };
@@ -110,8 +111,8 @@ double StepLength(int a, int b, int width);
 
 /// Steps 1-5. field (optional): the field the masks were taken from, width x height, which finds
 /// the saddle paths of step 3 while the branches still hold their junctions. Throws InputError if
-/// the masks or the field do not match width x height or the settings are invalid (negative
-/// minimum length or side strand distance, TangentPixels < 1).
+/// the masks or the field do not match width x height or the settings are invalid (a negative or
+/// non-finite length or distance, TangentPixels < 1).
 RidgeContours TraceRidgeContours(const std::vector<std::uint8_t>& minor,
   const std::vector<std::uint8_t>& major,
   int width,

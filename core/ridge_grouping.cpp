@@ -1122,6 +1122,12 @@ void ComputeField(const std::vector<Point2>& pixelPoints,
 /// strands are a pixel or a few across, and a chain of them gave 17 pixels at a width of 5.
 constexpr double SideStrandWidths = 4.0;
 
+/// Farthest a side strand lies from the contours kept, in pixels, at most (ContourSettingsFor):
+/// the strands around the holes of noisy circles lay 1.4 to 3.2 pixels from the circle's contour,
+/// while a separate segment 1.5 basis widths beside a line, with a ridge of its own, lay 4 pixels
+/// from the line's at a width of 5 (a review's case, dropped at one width).
+constexpr double SideStrandPixels = 3.5;
+
 /// How ridges become contours for these settings.
 RidgeContourSettings ContourSettingsFor(const RidgeGroupingSettings& settings)
 {
@@ -1138,11 +1144,12 @@ RidgeContourSettings ContourSettingsFor(const RidgeGroupingSettings& settings)
   // points into a closed group, and broke an ellipse's tips into small closed groups); dropped,
   // their points join the contours nearby.
   contourSettings.MinimumLoopLength = 2.0 * Pi * settings.Width;
-  // A contour within one basis width of a longer one all along is a second strand of its ridge
-  // around the band's holes (ridge_contours.h, step 5): curves that close make one ridge. An
-  // 11-pixel one took 14 points of a noisy circle into a group of their own beside it; the
-  // longest seen (of 10 such data sets, spirals, lines, circles) was 17 pixels.
-  contourSettings.SideStrandDistance = settings.Width;
+  // A short contour within a few pixels of longer ones all along (and within one basis width:
+  // curves that close make one ridge) is a second strand of their ridge around the band's holes
+  // (ridge_contours.h, step 5). An 11-pixel one took 14 points of a noisy circle into a group of
+  // their own beside it; the longest seen (of 10 such data sets, spirals, lines, circles) was 17
+  // pixels.
+  contourSettings.SideStrandDistance = std::min(settings.Width, SideStrandPixels);
   contourSettings.MaximumSideStrandLength = SideStrandWidths * settings.Width;
   return contourSettings;
 }
@@ -1593,21 +1600,7 @@ void NameDuplicatePoints(const std::vector<Point2>& points, RidgeGroupingResult&
     " point(s) lie at the x and y of an earlier point, and are grouped as any other (the place "
     "weighs as often in the field, and they share a node); their ids are in the field data "
     "arrays DuplicatePointIds and DuplicateOfPointIds: " +
-    ListNames(duplicates.size(),
-      [&](std::size_t k)
-      {
-        return "point " + std::to_string(duplicates[k].first) + " (as point " +
-          std::to_string(duplicates[k].second) + ")";
-      }));
-}
-
-/// Calls progress (if any) with the fraction done; throws Cancelled when it returns false.
-void ReportOrStop(const std::function<bool(double)>& progress, double fraction)
-{
-  if (progress && !progress(fraction))
-  {
-    throw Cancelled();
-  }
+    DuplicatePairNames(duplicates));
 }
 
 // Run's progress at the start of its stages, from their times on 10^5 points of a noisy circle:
@@ -1648,7 +1641,10 @@ RidgeGroupingResult RidgeGrouping::Run(const std::vector<Point2>& points,
   const RidgeContours contours = TraceContours(grid, this->Settings, result);
   ReportOrStop(progress, GroupsStart);
   GroupAndFit(points, pixelPoints, contours, grid, this->Settings, result);
-  ReportOrStop(progress, 1.0);
+  if (progress)
+  {
+    progress(1.0); // (done: the answer no longer matters)
+  }
   return result;
 }
 

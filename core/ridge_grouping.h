@@ -31,8 +31,9 @@
 //    major on noisy data without marking pixels away from the crests;
 //  - minor ridges are thinned to one pixel before branch pixels are counted; segments without
 //    a major pixel are removed as dangling branches first, and then, between two junctions that
-//    remain, when longer than 2 basis widths; an open contour up to 4 widths long within a width
-//    of a longer one all along is dropped as a side strand of its ridge (ridge_contours.h);
+//    remain, when longer than 2 basis widths; an open contour up to 4 widths long within 3.5
+//    pixels (and a width) of longer ones all along is dropped as a side strand of their ridge
+//    (ridge_contours.h);
 //  - points past the end of an open contour get extended nodes (point_partition.h).
 //
 // Limits. ImageSize may not exceed MaxImageSize = 2048: the padded FFT then holds two complex
@@ -69,8 +70,8 @@ struct RidgeGroupingSettings
   JoinRule Join = JoinRule::Longest;
   /// Ridge contours shorter than this (pixels) are dropped before partitioning, and so are closed
   /// ones shorter than 2 pi Width pixels (a loop the field cannot resolve) and open ones up to
-  /// 4 Width pixels long within Width pixels of a longer contour all along (a side strand of its
-  /// ridge, ridge_contours.h).
+  /// 4 Width pixels long within 3.5 pixels (and Width) of longer contours all along (a side
+  /// strand of their ridge, ridge_contours.h).
   double MinimumContourLength = 10.0;
   /// Samples of each fitted curve per pixel of its ridge contour (at least 16 per curve).
   double CurveSamplesPerPixel = 2.0;
@@ -148,8 +149,8 @@ public:
   /// points give a warning, every point unassigned (GroupId -1) and no contour or curve;
   /// identical points give one group and no curve. progress, if given, is called with the
   /// fraction done after each stage (the image chosen, the field, the contours, the groups and
-  /// curves); when it returns false Run stops and throws Cancelled (a field of 2048 pixels takes
-  /// seconds, which a viewer's progress bar spent at one place).
+  /// curves); when it returns false before the last, Run stops and throws Cancelled (a field of
+  /// 2048 pixels takes seconds, which a viewer's progress bar spent at one place).
   RidgeGroupingResult Run(const std::vector<Point2>& points,
     const std::function<bool(double)>& progress = nullptr) const;
 

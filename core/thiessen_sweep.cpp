@@ -678,9 +678,9 @@ void Sweep::Run(const std::function<bool(double)>& progress)
   this->ProcessCentroid(first);
   for (std::int32_t s = 0; s < this->M; ++s)
   {
-    if (progress && s % 64 == 0 && !progress(static_cast<double>(s) / this->M))
+    if (s % 64 == 0)
     {
-      throw Cancelled();
+      ReportOrStop(progress, static_cast<double>(s) / this->M);
     }
     if (s != first)
     {

@@ -2488,10 +2488,9 @@ def main(argv=None):
     from vtkmodules.vtkCommonCore import vtkCommand
     from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
-    # (the options first, --stations-crs's code looked up, then --out: all before any input is read)
+    # (the options first, --stations-crs's code looked up, the default inputs, then --out: all before
+    # any input is read but the observations' header)
     stations_system = projected_input.stations_system(args.stations_utm, args.stations_crs, gdal_messages())
-    csv_input.output_directory(args.out)
-    started = time.time()
     if args.stations is None:
         args.stations = stations_path(args.observations)
         if args.observations != default_observations and args.stations != args.observations:
@@ -2506,6 +2505,8 @@ def main(argv=None):
                            "example's: give your catchment's polygon file with --catchment (for gauges in "
                            f"Colorado, the example's outline is {EXAMPLE_CATCHMENT})")
         args.catchment = EXAMPLE_CATCHMENT
+    csv_input.output_directory(args.out)
+    started = time.time()
     combined = holds_observations(args.stations, args.observations)
     gauges, gauge_lines = read_gauges(args.stations, stations_system, combined, args.stations_id)
     if not gauge_lines:

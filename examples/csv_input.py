@@ -574,12 +574,12 @@ def output_directory(path):
         fail(f"--out {path!r}: an empty path (give a directory, such as out)")
     if os.path.exists(path) and not os.path.isdir(path):
         fail(f"--out {path}: exists and is not a directory")
-    missing = missing_directories(path)
+    # (recorded before: a makedirs that fails halfway leaves the outer ones made)
+    MADE_DIRECTORIES.extend(missing_directories(path))
     try:
         os.makedirs(path, exist_ok=True)
     except OSError as error:
         fail(f"--out {path}: cannot create the directory ({error.strerror or error})")
-    MADE_DIRECTORIES.extend(missing)
     try:
         handle, probe = tempfile.mkstemp(prefix=".tessera_write_test_", dir=path)
     except OSError as error:
@@ -631,8 +631,9 @@ def write_vtk(writer, data, path):
         fail(f"{path}: cannot write ({reason})")
 
 
-# The directories output_directory made (the deepest last), which a failed run removes where it
-# left them empty: a trial's run that ended on a bad catchment left its new --out directory behind.
+# The directories output_directory made or tried to make (the deepest last), which a run that
+# ends on an error message removes where it left them empty: a trial's run that ended on a bad
+# catchment left its new --out directory behind.
 MADE_DIRECTORIES = []
 
 
@@ -650,19 +651,21 @@ def missing_directories(path):
 
 
 def remove_made_directories():
-    """Removes the directories output_directory made that are empty, the deepest first."""
+    """Removes the directories output_directory made that are empty, the deepest first (rmdir
+    removes nothing else: one holding a file, or not made, stays)."""
     for directory in reversed(MADE_DIRECTORIES):
         try:
-            os.rmdir(directory)  # (only an empty one)
+            os.rmdir(directory)
         except OSError:
-            break
+            continue
 
 
 def run(main):
     """Runs a script's main(); an OSError about a file that it did not expect (an output path that
     is a directory, no permission, a full disk) ends the script with one line naming the file and
-    why, not a traceback after the work is done. A run that fails removes the --out directories it
-    made and left empty."""
+    why, not a traceback after the work is done. A run that ends on an error message (a non-zero
+    exit) removes the --out directories it made and left empty."""
+    MADE_DIRECTORIES.clear()  # (this run's only)
     try:
         try:
             main()

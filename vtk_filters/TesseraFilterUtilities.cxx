@@ -1594,6 +1594,9 @@ std::string VerticalPlaneWarning(vtkDataObject* data, const char* what)
 }
 } // namespace
 
+const char* const ExtractSurfaceHint =
+  "extract its surface first (ParaView's Extract Surface, vtkGeometryFilter)";
+
 Rings ReadPolygonRings(vtkDataObject* data, const char* what, std::vector<std::string>& warnings)
 {
   Rings rings;
@@ -1633,8 +1636,9 @@ Rings ReadPolygonRings(vtkDataObject* data, const char* what, std::vector<std::s
     const bool otherSet = vtkDataSet::SafeDownCast(data) && !vtkPolyData::SafeDownCast(data);
     throw tessera::InputError(std::string("the window/catchment input (") +
       (data ? data->GetClassName() : "nothing") + ") holds no polygon" +
-      (otherSet ? " that is read: only vtkPolyData (or a composite data set of it) is; extract "
-                  "its surface first (ParaView's Extract Surface, vtkGeometryFilter)"
+      (otherSet ? std::string(" that is read: only vtkPolyData (or a composite data set of it) "
+                              "is; ") +
+            ExtractSurfaceHint
                 : std::string()) +
       (skipped.empty() ? std::string() : ": " + skipped));
   }
@@ -1842,13 +1846,7 @@ std::string UnusedPointsWarning(const std::vector<std::int32_t>& rejected,
   }
   if (!duplicates.empty())
   {
-    text << "; duplicates: "
-         << tessera::ListNames(duplicates.size(),
-              [&](std::size_t k)
-              {
-                return "point " + std::to_string(duplicates[k].first) + " (of point " +
-                  std::to_string(duplicates[k].second) + ")";
-              });
+    text << "; duplicates: " << tessera::DuplicatePairNames(duplicates);
   }
   return text.str() + ".";
 }

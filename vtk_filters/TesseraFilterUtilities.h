@@ -255,6 +255,10 @@ struct Rings
 /// first, by id or by x and y, as vtkGDALVectorReader gives a polygon's rings.
 bool IsClosedLine(vtkDataSet* data, vtkIdList* ids);
 
+/// "extract its surface first (ParaView's Extract Surface, vtkGeometryFilter)": how to make poly
+/// data of another data set, for the errors of inputs that only vtkPolyData is read as.
+extern const char* const ExtractSurfaceHint;
+
 /// Every polygon, triangle and quad cell, and every closed polyline (last point = first, as
 /// vtkGDALVectorReader gives polygon rings), of a vtkPolyData or of every vtkPolyData block of a
 /// composite data set, as one ring each (x, y used); then, per block, the closed rings that its

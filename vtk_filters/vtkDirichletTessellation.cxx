@@ -28,8 +28,8 @@
 
 #include <algorithm>
 #include <climits>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <exception>
 #include <optional>
 #include <string>
@@ -403,20 +403,26 @@ private:
   vtkNew<vtkTypeInt32Array> PairIds; ///< cell data PointIds: each line's i and j
 };
 
-/// A warning, or "", for tiles whose areas, scaled back to the input's coordinates, underflow to 0
-/// (below about 1e-308; a window whose area overflows is refused): a trial's points 1e-200 apart
-/// got 20 tiles of Area 0 without a word, where the tiles' shapes are exact at any scale.
+/// A warning, or "", for tiles whose areas, scaled back to the input's coordinates, underflow:
+/// to 0 below about 5e-324, with fewer digits below 2.2e-308 (subnormal; a window whose area
+/// overflows is refused). A trial's points 1e-200 apart got 20 tiles of Area 0 without a word,
+/// where the tiles' shapes are exact at any scale.
 std::string AreasUnderflowWarning(const tessera::UninitializedVector<double>& areas)
 {
-  const auto zero = std::count(areas.begin(), areas.end(), 0.0);
-  if (zero == 0)
+  std::size_t zero = 0, subnormal = 0;
+  for (const double a : areas)
+  {
+    zero += a == 0.0 ? 1 : 0;
+    subnormal += std::fpclassify(a) == FP_SUBNORMAL ? 1 : 0;
+  }
+  if (zero == 0 && subnormal == 0)
   {
     return std::string();
   }
-  return std::to_string(zero) +
-    " tile(s) have Area 0: their areas in the input's units lie below the doubles' range (about "
-    "1e-308), though their shapes are exact; scale the coordinates nearer 1 (by a power of two "
-    "to keep them exact) where the areas are wanted";
+  return std::to_string(zero) + " tile(s) have Area 0 and " + std::to_string(subnormal) +
+    " an Area below 2.2e-308 with fewer digits: their areas in the input's units lie below the "
+    "doubles' normal range, though their shapes are exact; scale the coordinates nearer 1 (by a "
+    "power of two to keep them exact) where the areas are wanted";
 }
 } // namespace
 

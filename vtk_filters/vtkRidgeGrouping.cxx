@@ -140,7 +140,8 @@ std::string OffPlaneWarning(vtkPoints* points)
   }
   double bounds[6];
   points->GetBounds(bounds);
-  if (bounds[4] == 0.0 && bounds[5] == 0.0)
+  // (every z NaN leaves VTK's bounds inverted: z is not read, and no range to give)
+  if ((bounds[4] == 0.0 && bounds[5] == 0.0) || !(bounds[4] <= bounds[5]))
   {
     return std::string();
   }

@@ -190,8 +190,10 @@ public:
   /**
    * Ridge contours shorter than this many pixels are dropped before partitioning (default 10),
    * and so are closed ones shorter than a circle of one basis width (2 pi Width pixels: a loop
-   * the field cannot resolve, made by its shape where a curve ends or bends).
-   * Negative: an error at the update.
+   * the field cannot resolve, made by its shape where a curve ends or bends) and open ones up to
+   * 4 Width pixels long within 3.5 pixels (and Width) of longer contours all along (a second
+   * strand of their ridge around small holes in its band, which took a few points of a noisy
+   * circle into a group of their own), without a warning. Negative: an error at the update.
    */
   vtkSetMacro(MinimumContourLength, double);
   vtkGetMacro(MinimumContourLength, double);

@@ -333,8 +333,8 @@ void CheckInputTypes(vtkDataObject* tiles, vtkDataObject* window)
   if (vtkDataSet::SafeDownCast(window) && !vtkPolyData::SafeDownCast(window))
   {
     throw tessera::InputError(std::string("the window (input 1) is a ") + window->GetClassName() +
-      ": only vtkPolyData (or a composite data set of it) is read as a window; extract its "
-      "surface first (ParaView's Extract Surface, vtkGeometryFilter)");
+      ": only vtkPolyData (or a composite data set of it) is read as a window; " +
+      tessera_vtk::ExtractSurfaceHint);
   }
 }
 

@@ -385,6 +385,36 @@ TEST(RidgeContours, SideStrandAroundHolesGoesAParallelRidgeStays)
   EXPECT_EQ(tessera::TraceRidgeContours(minor, major, w, h, settings).Count(), 3);
   settings.SideStrandDistance = -1;
   EXPECT_THROW(tessera::TraceRidgeContours(minor, major, w, h, settings), tessera::InputError);
+  settings.SideStrandDistance = 5;
+  settings.MaximumSideStrandLength = std::nan("");
+  EXPECT_THROW(tessera::TraceRidgeContours(minor, major, w, h, settings), tessera::InputError);
+}
+
+TEST(RidgeContours, ASideStrandLiesWithinTheDistanceAtEveryPixel)
+{
+  // A separate short ridge 3 pixels beside a long one (no pixel joins them): within a distance of
+  // 3 at every pixel it goes (the distance is inclusive); at 2.9, or with its end pixel 4 away,
+  // it stays. A huge distance is no overflow. (Every pixel major: the masks are one.)
+  const int w = 80;
+  const int h = 40;
+  Mask minor(w * h, 0);
+  Draw(minor, w, 5, 10, 74, 10);
+  Draw(minor, w, 20, 13, 40, 13);
+  tessera::RidgeContourSettings settings;
+  settings.MinimumLength = 10;
+  settings.MaximumSideStrandLength = 30;
+  const auto count = [&](const Mask& m, double distance)
+  {
+    settings.SideStrandDistance = distance;
+    return tessera::TraceRidgeContours(m, m, w, h, settings).Count();
+  };
+  EXPECT_EQ(count(minor, 3.0), 1);
+  EXPECT_EQ(count(minor, 2.9), 2);
+  Mask bent = minor;
+  bent[std::size_t(13 * w + 40)] = 0;
+  bent[std::size_t(14 * w + 40)] = 1; // (the end pixel a diagonal step out: 4 rows from row 10)
+  EXPECT_EQ(count(bent, 3.0), 2);
+  EXPECT_EQ(count(minor, 1e300), 1);
 }
 
 } // namespace

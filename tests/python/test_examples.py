@@ -2694,9 +2694,9 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
             assert_that("a projection of the sphere" in system(terms), f"{terms}: {system(terms)}")
         assert_that(system("+proj=merc +a=6378137").kind == "webmerc", "+proj=merc +a=6378137")
         cases = [({"catchment": catchment, "stations": xy, "stations-crs": "+proj=laea +lat_0=95"},
-                  "--stations-crs '+proj=laea +lat_0=95': not read here: +lat_0=95, which is not a latitude (within 90)"),
+                  "--stations-crs '+proj=laea +lat_0=95': +lat_0=95, which is not a latitude (within 90)"),
                  ({"catchment": catchment, "stations": xy, "stations-crs": "+proj=merc +lat_ts=90"},
-                  "--stations-crs '+proj=merc +lat_ts=90': not read here: +lat_ts=90, where a Mercator's scale is 0"),
+                  "--stations-crs '+proj=merc +lat_ts=90': +lat_ts=90, where a Mercator's scale is 0"),
                  ({"catchment": catchment, "stations": xy, "stations-crs": "EPSG:2163"},
                   "--stations-crs 'EPSG:2163': GDAL gives another system in its place, EPSG:9311 ('NAD27 / US "
                   "National Atlas Equal Area'), as it does for a deprecated code"),
@@ -2714,7 +2714,7 @@ def test_catchments_and_gauges_in_projected_systems_give_the_lon_lat_means():
                  ({"catchment": catchment, "stations": xy, "stations-crs": "EPSG:99999"},
                   "--stations-crs 'EPSG:99999': GDAL's database has no such EPSG code"),
                  ({"catchment": catchment, "stations": xy, "stations-crs": "+proj=lcc +lat_1=north"},
-                  "--stations-crs '+proj=lcc +lat_1=north': not read here: +lat_1=north, which is not a number"),
+                  "--stations-crs '+proj=lcc +lat_1=north': +lat_1=north, which is not a number"),
                  ({"catchment": catchment, "stations": xy, "stations-crs": "EPSG:4326"},
                   "--stations-crs 'EPSG:4326': a geographic system (longitude/latitude)"),
                  ({"catchment": catchment, "stations": xy, "stations-crs": "EPSG:32760", "stations-utm": "60S"},
@@ -2881,7 +2881,7 @@ def test_a_noaa_climate_data_online_file_is_both_stations_and_observations():
         _, stderr = run_colorado(os.path.join(out, "nocatchment"), stations=stations, observations=plain, plots=False,
                                  catchment=None, status=1, what="no --catchment")
         assert_that(f"--catchment: not given, and the gauges ({stations}) are not the Colorado example's" in stderr
-                    and not os.path.exists(os.path.join(out, "nocatchment", "areal_mean.csv")),
+                    and not os.path.exists(os.path.join(out, "nocatchment")),
                     f"no --catchment: {stderr}")
         # The NOAA file as --stations beside another observations file: a gauge per station too.
         _, stderr = run_colorado(os.path.join(out, "beside"), stations=noaa, observations=plain, catchment=catchment,
@@ -3712,6 +3712,11 @@ def test_a_failed_run_removes_the_out_directories_it_made_empty():
         run_colorado(os.path.join(there, "sub"), stations=stations, observations=observations, catchment=catchment,
                      month="2050-01", plots=False, status=1, what="a month not in the record, --out in a directory")
         assert_that(os.listdir(there) == [], f"{os.listdir(there)}")
+        empty = os.path.join(directory, "empty")
+        os.mkdir(empty)
+        run_colorado(empty, stations=stations, observations=observations, catchment=catchment, month="2050-01",
+                     plots=False, status=1, what="a month not in the record, --out an empty directory")
+        assert_that(os.path.isdir(empty) and os.listdir(empty) == [], "an empty --out that was there stays")
         held = os.path.join(directory, "held")
         os.mkdir(held)
         write(held, "keep.txt", "a file of the user's\n")
@@ -3840,7 +3845,7 @@ def test_an_out_directory_that_takes_no_file_is_named_before_any_work():
             os.chmod(locked, 0o555)
             outs.append(locked)
         for out in outs:
-            for script, inputs in (("colorado_areal_precipitation.py", ("--stations", missing)),
+            for script, inputs in (("colorado_areal_precipitation.py", ("--stations", missing, "--catchment", missing)),
                                    ("ridge_grouping.py", ("--quakes", missing)),
                                    ("project_gauges.py", ("--stations", missing))):
                 status, stdout, stderr = run_example(script, "--out", out, *inputs)

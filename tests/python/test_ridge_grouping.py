@@ -438,7 +438,7 @@ def test_duplicates_are_listed_and_points_off_the_plane_named():
            for k in range(fd.GetArray("DuplicatePointIds").GetNumberOfTuples())]
     assert_that(got == expected == [(600, 3), (601, 3), (602, 17), (603, 3)], f"duplicates {got}, expected {expected}")
     said = [w for w in warnings if "at the x and y of an earlier point" in w]
-    assert_that(len(said) == 1 and "4 point(s)" in said[0] and "point 602 (as point 17)" in said[0], f"{warnings}")
+    assert_that(len(said) == 1 and "4 point(s)" in said[0] and "point 602 (of point 17)" in said[0], f"{warnings}")
     groups = f.GetOutput(0).GetPointData().GetArray("GroupId")
     assert_that(all(groups.GetValue(k) == groups.GetValue(e) for k, e in expected), "a repeat joins its original's group")
     assert_that(not any("z runs" in w for w in warnings), f"points at z = 0: no word of z {warnings}")
