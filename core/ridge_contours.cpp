@@ -710,8 +710,9 @@ SkeletonGraph PruneSegmentsWithoutMajorRidge(std::vector<std::uint8_t>& skeleton
 }
 
 /// Pixels of the contours kept so far, bucketed in square cells of the distance asked about, so
-/// that whether a pixel lies within that distance of one of them looks at 3 x 3 cells. (A cell
-/// wider than any image holds them all: a huge distance does not overflow the cell's int.)
+/// that whether a pixel lies within that distance of one of them looks at 3 x 3 cells. (The cell
+/// is clamped to 2^24 pixels, so that a huge distance does not overflow its int; pixels further
+/// apart than that are far beyond any distance a grouping asks about.)
 class PixelBuckets
 {
 public:
@@ -908,7 +909,8 @@ RidgeContours TraceRidgeContours(const std::vector<std::uint8_t>& minor,
     { std::make_pair("minimum contour length", settings.MinimumLength),
       std::make_pair("minimum loop length", settings.MinimumLoopLength),
       std::make_pair("side strand distance", settings.SideStrandDistance),
-      std::make_pair("maximum side strand length", settings.MaximumSideStrandLength) })
+      std::make_pair("maximum side strand length", settings.MaximumSideStrandLength),
+      std::make_pair("maximum bridge length", settings.MaximumBridgeLength) })
   {
     if (!(value >= 0.0) || !std::isfinite(value))
     {

@@ -1125,7 +1125,8 @@ constexpr double SideStrandWidths = 4.0;
 /// Farthest a side strand lies from the contours kept, in pixels, at most (ContourSettingsFor):
 /// the strands around the holes of noisy circles lay 1.4 to 3.2 pixels from the circle's contour,
 /// while a separate segment 1.5 basis widths beside a line, with a ridge of its own, lay 4 pixels
-/// from the line's at a width of 5 (a review's case, dropped at one width).
+/// from the line's at a width of 5 (a review's case, dropped at one width). Measured at a width
+/// of 5 only: the holes may be wider under a wider basis.
 constexpr double SideStrandPixels = 3.5;
 
 /// How ridges become contours for these settings.

@@ -663,8 +663,8 @@ def remove_made_directories():
 def run(main):
     """Runs a script's main(); an OSError about a file that it did not expect (an output path that
     is a directory, no permission, a full disk) ends the script with one line naming the file and
-    why, not a traceback after the work is done. A run that ends on an error message (a non-zero
-    exit) removes the --out directories it made and left empty."""
+    why, not a traceback after the work is done. A run that ends on an error message (a
+    SystemExit other than 0) removes the --out directories it made and left empty."""
     MADE_DIRECTORIES.clear()  # (this run's only)
     try:
         try:

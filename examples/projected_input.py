@@ -117,8 +117,9 @@ def proj_terms(text):
 
 
 def unit_axes_meridian(terms):
-    """(metres per unit, axes, prime meridian in degrees east of Greenwich) of PROJ terms (proj_terms'), or the
-    reason one of them is not read here (a str)."""
+    """(metres per unit, axes, prime meridian in degrees east of Greenwich) of PROJ terms (proj_terms'), or why
+    one of them is not taken (a str: one with "(read here" names a choice not read here, crs_system's test; the
+    others a value that is no number or out of range)."""
     try:
         to_meter = float(terms.get("to_meter", "1"))
     except ValueError:
@@ -144,9 +145,9 @@ def unit_axes_meridian(terms):
 
 
 def proj4_system(text):
-    """The PlaneSystem of PROJ terms as GDAL writes them (GetLayerProjectionAsProj4), or the
-    reason it is not read here (a str): another projection, a unit of no known length, a term
-    that is not a number."""
+    """The PlaneSystem of PROJ terms as GDAL writes them (GetLayerProjectionAsProj4), or why it is
+    not taken (a str, as unit_axes_meridian gives it): another projection, a unit of no known
+    length (choices not read here), a term that is not a number or out of range."""
     terms = proj_terms(text)
     name = terms.get("proj", "")
     read = unit_axes_meridian(terms)

@@ -419,10 +419,16 @@ std::string AreasUnderflowWarning(const tessera::UninitializedVector<double>& ar
   {
     return std::string();
   }
-  return std::to_string(zero) + " tile(s) have Area 0 and " + std::to_string(subnormal) +
-    " an Area below 2.2e-308 with fewer digits: their areas in the input's units lie below the "
-    "doubles' normal range, though their shapes are exact; scale the coordinates nearer 1 (by a "
-    "power of two to keep them exact) where the areas are wanted";
+  const std::string counts = zero == 0
+    ? std::to_string(subnormal) + " tile(s) have an Area below 2.2e-308, with fewer digits"
+    : std::to_string(zero) + " tile(s) have Area 0" +
+      (subnormal == 0
+          ? std::string()
+          : " and " + std::to_string(subnormal) + " an Area below 2.2e-308, with fewer digits");
+  return counts +
+    ": their areas in the input's units lie below the doubles' normal range, though their "
+    "shapes are exact; scale the coordinates nearer 1 (by a power of two to keep them exact) "
+    "where the areas are wanted";
 }
 } // namespace
 

@@ -2883,6 +2883,12 @@ def test_a_noaa_climate_data_online_file_is_both_stations_and_observations():
         assert_that(f"--catchment: not given, and the gauges ({stations}) are not the Colorado example's" in stderr
                     and not os.path.exists(os.path.join(out, "nocatchment")),
                     f"no --catchment: {stderr}")
+        # (said before --out is made or checked: a file as --out is not named first)
+        a_file = write(out, "a_file.txt", "not a directory\n")
+        _, stderr = run_colorado(a_file, stations=stations, observations=plain, plots=False, catchment=None,
+                                 status=1, what="no --catchment, --out a file")
+        said = stderr_messages(stderr)
+        assert_that(len(said) == 1 and said[0].startswith("--catchment: not given"), f"{stderr}")
         # The NOAA file as --stations beside another observations file: a gauge per station too.
         _, stderr = run_colorado(os.path.join(out, "beside"), stations=noaa, observations=plain, catchment=catchment,
                                  plots=False, what="the NOAA file as --stations")
