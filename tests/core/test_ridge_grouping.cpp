@@ -1377,16 +1377,7 @@ TEST(RidgeGrouping, GroupsOfOnePointAreNamedAsHavingNoCurve)
   int singles = 0;
   for (unsigned seed = 0; seed < 12; ++seed)
   {
-    std::mt19937 random(seed);
-    std::uniform_real_distribution<double> angle(0.0, 2.0 * 3.14159265358979323846);
-    std::normal_distribution<double> noise(0.0, 2.0);
-    std::vector<Point2> points;
-    for (int k = 0; k < 300; ++k)
-    {
-      const double a = angle(random);
-      points.push_back(
-        { 100.0 * std::cos(a) + noise(random), 100.0 * std::sin(a) + noise(random) });
-    }
+    const std::vector<Point2> points = NoisyCircle(300, 100.0, 2.0, seed);
     RidgeGroupingSettings settings = TestSettings();
     settings.ImageSize = 512;
     const RidgeGroupingResult result = RidgeGrouping(settings).Run(points);
@@ -1438,15 +1429,7 @@ TEST(RidgeGrouping, GroupsOfOnePointAreNamedAsHavingNoCurve)
 // named in a warning (it joined a group silently and put a spike into its curve).
 TEST(RidgeGrouping, ContourDistancesAreToTheNearestContourPixelAndOutliersAreNamed)
 {
-  std::mt19937 random(4);
-  std::uniform_real_distribution<double> angle(0.0, 2.0 * 3.14159265358979323846);
-  std::normal_distribution<double> noise(0.0, 2.0);
-  std::vector<Point2> points;
-  for (int k = 0; k < 300; ++k)
-  {
-    const double a = angle(random);
-    points.push_back({ 100.0 * std::cos(a) + noise(random), 100.0 * std::sin(a) + noise(random) });
-  }
+  std::vector<Point2> points = NoisyCircle(300, 100.0, 2.0, 4);
   for (const bool outlier : { false, true })
   {
     if (outlier)
@@ -1648,15 +1631,7 @@ TEST(RidgeGrouping, SideStrandsOfANoisyCircleGoASegmentBesideALineStays)
   // traced with them dropped, fewer than without the drop. A separate segment 1.5 basis widths
   // beside a line (its contour 4 pixels from the line's, where the strands lay within 3.2) keeps
   // its contour: the drop takes nothing there (a review's case, lost at a distance of a width).
-  std::mt19937 random(1);
-  std::uniform_real_distribution<double> angle(0.0, 2.0 * 3.14159265358979323846);
-  std::normal_distribution<double> noise(0.0, 2.0);
-  std::vector<Point2> circle;
-  for (int k = 0; k < 300; ++k)
-  {
-    const double a = angle(random);
-    circle.push_back({ 100.0 * std::cos(a) + noise(random), 100.0 * std::sin(a) + noise(random) });
-  }
+  const std::vector<Point2> circle = NoisyCircle(300, 100.0, 2.0, 1);
   RidgeGroupingSettings settings = TestSettings();
   settings.ImageSize = 512;
   const RidgeGroupingResult round = RidgeGrouping(settings).Run(circle);
