@@ -1787,16 +1787,22 @@ RenamedArrays AddUnusedPointIds(vtkDataObject* data,
   const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates)
 {
   const RenamedArrays renamed = RenameArraysNamed(data->GetFieldData(), UnusedPointIdNames(), true);
-  std::vector<std::int32_t> copies, originals;
-  for (const auto& pair : duplicates)
-  {
-    copies.push_back(pair.first);
-    originals.push_back(pair.second);
-  }
   AddIdFieldArray(data, UnusedPointIdNames()[0], rejected);
+  AddDuplicatePointIds(data, duplicates);
+  return renamed;
+}
+
+void AddDuplicatePointIds(vtkDataObject* data,
+  const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates)
+{
+  std::vector<std::int32_t> copies, originals;
+  for (const auto& [copy, original] : duplicates)
+  {
+    copies.push_back(copy);
+    originals.push_back(original);
+  }
   AddIdFieldArray(data, UnusedPointIdNames()[1], copies);
   AddIdFieldArray(data, UnusedPointIdNames()[2], originals);
-  return renamed;
 }
 
 std::string NoPointInWindowWarning(const tessera::Box2& window,

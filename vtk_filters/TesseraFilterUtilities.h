@@ -330,6 +330,12 @@ RenamedArrays AddUnusedPointIds(vtkDataObject* data,
   const std::vector<std::int32_t>& rejected,
   const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates);
 
+/// The field data arrays `DuplicatePointIds` and `DuplicateOfPointIds` of (copy, original) pairs of
+/// points at one place (AddUnusedPointIds writes them; ridge grouping, which groups its copies,
+/// writes them alone). Arrays of those names already there are replaced.
+void AddDuplicatePointIds(vtkDataObject* data,
+  const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates);
+
 /// The warning for points a tessellation filter did not use (`rejected` outside the window,
 /// `duplicates` exact copies with the point each copies), saying they were not `verb` ("used",
 /// "triangulated"), where their ids are, and the first 20 of each; empty when every point was used.

@@ -150,21 +150,6 @@ std::string OffPlaneWarning(vtkPoints* points)
     ": only x and y are read, so the points are grouped as they lie in the plane z = 0, where "
     "the contours, curves and image are (give points whose curves lie in the x-y plane)";
 }
-
-/// The field data arrays DuplicatePointIds and DuplicateOfPointIds: the points at the x and y of
-/// an earlier point, and that point, as the tessellation filters name their exact copies.
-void AddDuplicateIds(vtkPolyData* output,
-  const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates)
-{
-  std::vector<std::int32_t> copies, originals;
-  for (const auto& [copy, original] : duplicates)
-  {
-    copies.push_back(copy);
-    originals.push_back(original);
-  }
-  tessera_vtk::AddIdFieldArray(output, "DuplicatePointIds", copies);
-  tessera_vtk::AddIdFieldArray(output, "DuplicateOfPointIds", originals);
-}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -329,7 +314,7 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     AddScalar(pointsOut->GetFieldData(), "ImageSize", result.ImageSize);
     AddScalar(pointsOut->GetFieldData(), "PixelSize", result.PixelSize);
     AddScalar(pointsOut->GetFieldData(), "FieldErrorBound", result.FieldErrorBound);
-    AddDuplicateIds(pointsOut, result.Duplicates);
+    tessera_vtk::AddDuplicatePointIds(pointsOut, result.Duplicates);
 
     // Output 1: ridge contours.
     WritePolylines(result.Contours, result.ContourClosed, contoursOut);

@@ -46,9 +46,9 @@
  *   an input array of one of those names is passed as NAME_input, with a warning.
  *   Field data `ImageSize` (pixels along the longer side, as used), `PixelSize`,
  *   `FieldErrorBound` (bound of |FFT field - direct sum| at any pixel), `DuplicatePointIds` and
- *   `DuplicateOfPointIds` (int: each point at the x and y of an earlier one, and the first point
- *   there; they are grouped as any other, the place weighing as often in the field, and named in
- *   a warning).
+ *   `DuplicateOfPointIds` (vtkIdType: each point at the x and y of an earlier one, and the first
+ * point there; they are grouped as any other, the place weighing as often in the field, and named
+ * in a warning).
  * - 1 (vtkPolyData): the ridge contours as polylines through pixel centres (a closed contour
  *   repeats its first point), cell data `ContourId` (int, = GroupId of its points, if any),
  *   `Closed` (unsigned char) and `Length` (double: the length of the pixel path, in input units,
