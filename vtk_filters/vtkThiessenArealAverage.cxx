@@ -1078,6 +1078,40 @@ std::string RingsInsideOtherBlocksWarning(const tessera_vtk::Rings& rings,
       });
 }
 
+/// Sets the time steps (and their range) on the tiles and their outlines (outputs 0 and 3),
+/// which both follow the time; none for no times.
+void AdvertiseTimeSteps(vtkInformationVector* outputVector, const std::vector<double>& times)
+{
+  if (times.empty())
+  {
+    return;
+  }
+  for (vtkInformation* info :
+    { outputVector->GetInformationObject(0), outputVector->GetInformationObject(3) })
+  {
+    info->Set(
+      vtkStreamingDemandDrivenPipeline::TIME_STEPS(), times.data(), static_cast<int>(times.size()));
+    const double range[2] = { times.front(), times.back() };
+    info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  }
+}
+
+/// The information holding the time asked for by the output that asked (the tiles or their
+/// outlines; the tables have none): ParaView's view of the outlines alone asks through output 3.
+/// A request without a time goes by output 0's.
+vtkInformation* TimeRequestInformation(vtkInformation* request, vtkInformationVector* outputVector)
+{
+  const int asking = request->Has(vtkExecutive::FROM_OUTPUT_PORT())
+    ? request->Get(vtkExecutive::FROM_OUTPUT_PORT())
+    : 0;
+  vtkInformation* outlinesInfo = outputVector->GetInformationObject(3);
+  if (asking == 3 && outlinesInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
+  {
+    return outlinesInfo;
+  }
+  return outputVector->GetInformationObject(0);
+}
+
 } // namespace
 
 struct vtkThiessenArealAverage::Internals
@@ -1178,6 +1212,13 @@ int vtkThiessenArealAverage::GetNumberOfTimeSteps()
 }
 
 //------------------------------------------------------------------------------
+double vtkThiessenArealAverage::TimeOfDate(const char* date)
+{
+  const std::optional<double> time = date ? tessera::IsoDateTime(date) : std::nullopt;
+  return time ? *time : std::numeric_limits<double>::quiet_NaN();
+}
+
+//------------------------------------------------------------------------------
 int vtkThiessenArealAverage::FillInputPortInformation(int port, vtkInformation* info)
 {
   if (port == 0)
@@ -1249,18 +1290,7 @@ int vtkThiessenArealAverage::RequestInformation(vtkInformation*,
                                            this->TimeColumn,
                                            this->MonthColumn)
                                          .Steps.Times;
-    if (!times.empty())
-    {
-      for (vtkInformation* info : { outInfo, outputVector->GetInformationObject(3) })
-      {
-        // (both the tiles and their outlines follow the time)
-        info->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(),
-          times.data(),
-          static_cast<int>(times.size()));
-        const double range[2] = { times.front(), times.back() };
-        info->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
-      }
-    }
+    AdvertiseTimeSteps(outputVector, times);
   }
   catch (const std::exception&)
   {
@@ -1298,19 +1328,7 @@ int vtkThiessenArealAverage::RequestData(vtkInformation* request,
   vtkDataObject* catchment = vtkDataObject::GetData(inputVector[1]);
   vtkDataObject* observationsData = vtkDataObject::GetData(inputVector[2]);
   vtkTable* observations = vtkTable::SafeDownCast(observationsData);
-  // The time asked for by the output that asked (the tiles or their outlines; the tables have
-  // none): ParaView's view of the outlines alone asks through output 3. A request without a time
-  // goes by output 0's.
-  const int asking = request->Has(vtkExecutive::FROM_OUTPUT_PORT())
-    ? request->Get(vtkExecutive::FROM_OUTPUT_PORT())
-    : 0;
-  vtkInformation* tilesInfo = outputVector->GetInformationObject(0);
-  if (asking == 3 &&
-    outputVector->GetInformationObject(3)->Has(
-      vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()))
-  {
-    tilesInfo = outputVector->GetInformationObject(3);
-  }
+  vtkInformation* tilesInfo = TimeRequestInformation(request, outputVector);
   vtkPolyData* tilesOutput = vtkPolyData::GetData(outputVector, 0);
   vtkTable* summaryOutput = vtkTable::GetData(outputVector, 1);
   vtkTable* weightsOutput = vtkTable::GetData(outputVector, 2);
@@ -1327,50 +1345,15 @@ int vtkThiessenArealAverage::RequestData(vtkInformation* request,
     }
     vtkPointSet* gauges = this->GaugesOf(gaugesData);
     vtkAbstractArray* stationIds = this->GaugeStationIds(gauges, observations != nullptr);
-    vtkMTimeType stamp = std::max(this->GetMTime(), gauges->GetMTime());
-    stamp = std::max(stamp, catchment->GetMTime());
-    if (observations)
-    {
-      // (a table's own time does not follow its columns; its row data's does)
-      stamp = std::max({ stamp, observations->GetMTime(), observations->GetRowData()->GetMTime() });
-    }
-    if (!in.Average || stamp > in.BuiltFor)
-    {
-      // Without observations the ids only name the gauges: a mistyped name was taken silently.
-      const std::string noIds = !stationIds && gauges->GetNumberOfPoints() > 0
-        ? "the gauges have no point-data array '" + this->StationIdArrayName +
-          "' (StationIdArrayName): the outputs have no StationId and the gauges are named by "
-          "their index; their arrays are " +
-          ArrayNames(gauges->GetPointData())
-        : std::string();
-      if (in.SayOnce("station ids", noIds))
-      {
-        vtkWarningMacro(<< noIds);
-      }
-      this->Build(gauges, stationIds, catchment, observations);
-      in.BuiltFor = stamp;
-    }
+    this->BuildIfChanged(gauges, stationIds, catchment, observations);
     summaryOutput->ShallowCopy(in.Summary);
     weightsOutput->ShallowCopy(in.Weights);
-
-    // The requested step: the last one at or before the requested time.
     std::size_t step = 0;
-    if (tilesInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()) && !in.Times.empty())
+    if (!this->RequestedStep(tilesInfo, step))
     {
-      const double t = tilesInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-      if (std::isnan(t))
-      {
-        // (Every comparison with NaN is false: the search below would give the last step.) A bad
-        // request, not bad input: the average, its tables and time steps stay for the next one.
-        vtkErrorMacro(<< "the requested time is NaN; the steps' times run from "
-                      << tessera::NumberText(in.Times.front()) << " to "
-                      << tessera::NumberText(in.Times.back()));
-        tilesOutput->Initialize();
-        outlinesOutput->Initialize();
-        return 0;
-      }
-      const auto after = std::upper_bound(in.Times.begin(), in.Times.end(), t);
-      step = after == in.Times.begin() ? 0 : static_cast<std::size_t>(after - in.Times.begin() - 1);
+      tilesOutput->Initialize();
+      outlinesOutput->Initialize();
+      return 0;
     }
     this->WriteTiles(step, stationIds, tilesOutput, outlinesOutput);
     for (vtkPolyData* output : { tilesOutput, outlinesOutput })
@@ -1389,6 +1372,64 @@ int vtkThiessenArealAverage::RequestData(vtkInformation* request,
     this->DiscardResults(outputVector);
     return tesseraErrorOrStopMacro(e);
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkThiessenArealAverage::BuildIfChanged(vtkPointSet* gauges,
+  vtkAbstractArray* stationIds,
+  vtkDataObject* catchment,
+  vtkTable* observations)
+{
+  Internals& in = *this->Internal;
+  vtkMTimeType stamp = std::max(this->GetMTime(), gauges->GetMTime());
+  stamp = std::max(stamp, catchment->GetMTime());
+  if (observations)
+  {
+    // (a table's own time does not follow its columns; its row data's does)
+    stamp = std::max({ stamp, observations->GetMTime(), observations->GetRowData()->GetMTime() });
+  }
+  if (in.Average && stamp <= in.BuiltFor)
+  {
+    return;
+  }
+  // Without observations the ids only name the gauges: a mistyped name was taken silently.
+  const std::string noIds = !stationIds && gauges->GetNumberOfPoints() > 0
+    ? "the gauges have no point-data array '" + this->StationIdArrayName +
+      "' (StationIdArrayName): the outputs have no StationId and the gauges are named by "
+      "their index; their arrays are " +
+      ArrayNames(gauges->GetPointData())
+    : std::string();
+  if (in.SayOnce("station ids", noIds))
+  {
+    vtkWarningMacro(<< noIds);
+  }
+  this->Build(gauges, stationIds, catchment, observations);
+  in.BuiltFor = stamp;
+}
+
+//------------------------------------------------------------------------------
+bool vtkThiessenArealAverage::RequestedStep(vtkInformation* tilesInfo, std::size_t& step)
+{
+  // The requested step: the last one at or before the requested time.
+  const std::vector<double>& times = this->Internal->Times;
+  step = 0;
+  if (!tilesInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()) || times.empty())
+  {
+    return true;
+  }
+  const double t = tilesInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+  if (std::isnan(t))
+  {
+    // (Every comparison with NaN is false: the search below would give the last step.) A bad
+    // request, not bad input: the average, its tables and time steps stay for the next one.
+    vtkErrorMacro(<< "the requested time is NaN; the steps' times run from "
+                  << tessera::NumberText(times.front()) << " to "
+                  << tessera::NumberText(times.back()));
+    return false;
+  }
+  const auto after = std::upper_bound(times.begin(), times.end(), t);
+  step = after == times.begin() ? 0 : static_cast<std::size_t>(after - times.begin() - 1);
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -1411,39 +1452,7 @@ vtkPointSet* vtkThiessenArealAverage::GaugesOf(vtkDataObject* data)
   const vtkMTimeType latest = LatestMTime(data);
   if (!in.Joined || in.JoinedFrom != data || in.JoinedAt != latest || in.JoinedArrays != arrays)
   {
-    in.Joined = nullptr; // until the join succeeds
-    in.ValueProblem.clear();
-    if (points)
-    {
-      // Attributes of one vertex per point (a GDAL point layer after Merge Blocks) are the
-      // points' (the point set itself when there are none).
-      in.Joined = tessera_vtk::VertexArraysAsPointData(points, arrays);
-      for (const std::string& warning :
-        tessera_vtk::LongAttributeWarnings(in.Joined, "the gauges (input 0)", true, arrays))
-      {
-        vtkWarningMacro(<< warning);
-      }
-    }
-    else
-    {
-      // The station ids are needed; the value array only without observations, where the
-      // reason it could not be joined is the error (ValueProblem).
-      std::map<std::string, std::string> dropped;
-      vtkSmartPointer<vtkPolyData> joined = tessera_vtk::MergedPoints(composite, arrays, &dropped);
-      const auto stationProblem = dropped.find(this->StationIdArrayName);
-      if (stationProblem != dropped.end())
-      {
-        throw tessera::InputError(stationProblem->second);
-      }
-      const auto valueProblem = dropped.find(this->ValueArrayName);
-      in.ValueProblem = valueProblem != dropped.end() ? valueProblem->second : std::string();
-      in.Joined = joined;
-    }
-    for (const std::string& warning :
-      tessera_vtk::HiddenVertexArrayWarnings(data, arrays, "the gauges (input 0)"))
-    {
-      vtkWarningMacro(<< warning);
-    }
+    this->JoinGauges(data, arrays);
     in.JoinedFrom = data;
     in.JoinedAt = latest;
     in.JoinedArrays = arrays;
@@ -1465,6 +1474,48 @@ vtkPointSet* vtkThiessenArealAverage::GaugesOf(vtkDataObject* data)
     in.Joined->GetInformation()->Remove(vtkDataObject::DATA_TIME_STEP());
   }
   return in.Joined;
+}
+
+//------------------------------------------------------------------------------
+void vtkThiessenArealAverage::JoinGauges(vtkDataObject* data,
+  const std::vector<std::string>& arrays)
+{
+  Internals& in = *this->Internal;
+  auto* points = vtkPointSet::SafeDownCast(data);
+  auto* composite = vtkCompositeDataSet::SafeDownCast(data);
+  in.Joined = nullptr; // until the join succeeds
+  in.ValueProblem.clear();
+  if (points)
+  {
+    // Attributes of one vertex per point (a GDAL point layer after Merge Blocks) are the
+    // points' (the point set itself when there are none).
+    in.Joined = tessera_vtk::VertexArraysAsPointData(points, arrays);
+    for (const std::string& warning :
+      tessera_vtk::LongAttributeWarnings(in.Joined, "the gauges (input 0)", true, arrays))
+    {
+      vtkWarningMacro(<< warning);
+    }
+  }
+  else
+  {
+    // The station ids are needed; the value array only without observations, where the
+    // reason it could not be joined is the error (ValueProblem).
+    std::map<std::string, std::string> dropped;
+    vtkSmartPointer<vtkPolyData> joined = tessera_vtk::MergedPoints(composite, arrays, &dropped);
+    const auto stationProblem = dropped.find(this->StationIdArrayName);
+    if (stationProblem != dropped.end())
+    {
+      throw tessera::InputError(stationProblem->second);
+    }
+    const auto valueProblem = dropped.find(this->ValueArrayName);
+    in.ValueProblem = valueProblem != dropped.end() ? valueProblem->second : std::string();
+    in.Joined = joined;
+  }
+  for (const std::string& warning :
+    tessera_vtk::HiddenVertexArrayWarnings(data, arrays, "the gauges (input 0)"))
+  {
+    vtkWarningMacro(<< warning);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -1521,429 +1572,563 @@ void vtkThiessenArealAverage::DiscardResults(vtkInformationVector* outputVector)
 }
 
 //------------------------------------------------------------------------------
-void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
-  vtkAbstractArray* stationIds,
-  vtkDataObject* catchment,
-  vtkTable* observations)
+/// One Build, in the order its messages come: the engine made from the gauges and the catchment,
+/// the values read (the observations, or the gauges' one array), everything valid but unused
+/// reported by id, every step averaged into the summary table. A nested class: it reads the
+/// filter's settings and fills its internals.
+struct vtkThiessenArealAverage::BuildRun
 {
-  Internals& in = *this->Internal;
-  in.Average.reset();
-  // (unchecked: the core names a NaN or infinite gauge by index and, via GaugeNames, station id)
-  const std::vector<tessera::Point2> lonlat = tessera_vtk::CopyPoints2D(gauges->GetPoints());
-  std::vector<std::string> ringWarnings;
-  const tessera_vtk::Rings rings =
-    tessera_vtk::ReadPolygonRings(catchment, "catchment (input 1)", ringWarnings);
-  for (const std::string& warning : ringWarnings)
+  BuildRun(vtkThiessenArealAverage* self,
+    vtkPointSet* gauges,
+    vtkAbstractArray* stationIds,
+    vtkTable* observations)
+    : Self(self)
+    , In(*self->Internal)
+    , Gauges(gauges)
+    , StationIds(stationIds)
+    , Observations(observations)
   {
-    vtkWarningMacro(<< warning);
-  }
-  const std::string unusedSettings = UnusedSettingsWarning(this, observations != nullptr);
-  if (in.SayOnce("unused settings", unusedSettings))
-  {
-    vtkWarningMacro(<< unusedSettings);
-  }
-  tessera::ArealAverageSettings settings;
-  if (!this->ProjectionRecord.empty())
-  {
-    settings.HaveProjection = true;
-    settings.Projection = tessera::ProjectionParameters::FromString(this->ProjectionRecord);
-  }
-  // (GaugeStationIds checked: one per gauge)
-  const std::vector<std::string> gaugeNames = GaugeNames(stationIds);
-  settings.GaugeNames = gaugeNames; // for errors
-  settings.Areas = this->AreaMethod == EQUAL_AREA_PLANE ? tessera::AreaMethod::EqualAreaPlane
-    : this->AreaMethod == GEODESIC_POLYGON              ? tessera::AreaMethod::GeodesicPolygon
-                                                        : tessera::AreaMethod::Automatic;
-  try
-  {
-    in.Average.reset(
-      new tessera::ThiessenArealAverage(lonlat, rings.Offsets, rings.Vertices, settings));
-  }
-  catch (const tessera::RingError& error)
-  {
-    // (the core numbers the rings as read: say which cells they are)
-    throw tessera_vtk::WithRingSources(error, rings, "catchment (input 1)");
-  }
-  const std::size_t gaugeCount = lonlat.size();
-  const std::string nested = RingsInsideOtherBlocksWarning(rings, *in.Average);
-  if (!nested.empty())
-  {
-    vtkWarningMacro(<< nested);
-  }
-  if (const std::size_t snapped = in.Average->CatchmentVerticesPutOnEdges())
-  {
-    vtkWarningMacro(<< snapped << " catchment vertex(es) lay within "
-                    << tessera::ArealAverageSettings::SharedBorderDegrees
-                    << " degrees of another ring's edge (a shared border with vertices that only "
-                       "one side has, their coordinates rounded) and were put on that edge too");
-  }
-  std::size_t gaugesInside = 0;
-  for (std::size_t g = 0; g < gaugeCount; ++g)
-  {
-    gaugesInside += in.Average->GaugeInsideCatchment(g) ? 1 : 0;
-  }
-  if (gaugeCount > 0 && gaugesInside == 0)
-  {
-    vtkWarningMacro(
-      << "none of the " << gaugeCount
-      << " gauges lies inside the catchment: every weight goes to gauges outside "
-         "it, as Thiessen's rule gives them. If that is unexpected, check that the "
-         "gauges and the catchment are both longitude, latitude in degrees (a west "
-         "longitude without its minus sign, or the two swapped in either; for "
-         "coordinates made longitude, latitude from projected ones, the projection and "
-         "its grid those of their system).");
   }
 
-  in.Times.clear();
-  in.Values.clear();
-  std::vector<std::int32_t> repeatedRows, repeatedRowOf; // and the earlier row each one repeats
-  std::vector<double> rowValues;                         // per observation row (NaN: missing)
-  static const ObservationRows noRows;
-  const ObservationRows* rows = &noRows;
-  vtkAbstractArray* stations = nullptr; // the observations' station column (for messages)
-  if (observations)
+  vtkThiessenArealAverage* const Self;
+  Internals& In;
+  vtkPointSet* const Gauges;
+  vtkAbstractArray* const StationIds;
+  vtkTable* const Observations;
+  std::vector<tessera::Point2> LonLat;
+  std::vector<std::string> Names; // the gauges' station ids as text (GaugeNames)
+  std::size_t GaugeCount = 0;
+
+  // Read from the observations (none without them):
+  const ObservationRows* Rows = nullptr;
+  vtkAbstractArray* Stations = nullptr;                  // their station column (for messages)
+  std::vector<double> ValuesOfRows;                      // per observation row (NaN: missing)
+  std::vector<std::int32_t> RepeatedRows, RepeatedRowOf; // and the earlier row each one repeats
+
+  // Valid but unused input, reported by id:
+  std::vector<char> IdShared; // per gauge: other gauges have its station id
+  std::vector<std::int32_t> Unobserved, Duplicates, DuplicateOf, Unweighted;
+  CoLocated CoLocatedValues;
+
+  /// Makes the engine from the gauges and the catchment (input 1), with the settings' warnings.
+  void MakeEngine(vtkDataObject* catchment)
   {
+    this->In.Average.reset();
+    // (unchecked: the core names a NaN or infinite gauge by index and, via GaugeNames, station id)
+    this->LonLat = tessera_vtk::CopyPoints2D(this->Gauges->GetPoints());
+    this->GaugeCount = this->LonLat.size();
+    std::vector<std::string> ringWarnings;
+    const tessera_vtk::Rings rings =
+      tessera_vtk::ReadPolygonRings(catchment, "catchment (input 1)", ringWarnings);
+    for (const std::string& warning : ringWarnings)
+    {
+      this->Warn(warning);
+    }
+    const std::string unusedSettings = UnusedSettingsWarning(this->Self, this->Observations);
+    if (this->In.SayOnce("unused settings", unusedSettings))
+    {
+      this->Warn(unusedSettings);
+    }
+    // (GaugeStationIds checked: one per gauge)
+    this->Names = GaugeNames(this->StationIds);
+    const tessera::ArealAverageSettings settings = this->EngineSettings();
+    try
+    {
+      this->In.Average.reset(
+        new tessera::ThiessenArealAverage(this->LonLat, rings.Offsets, rings.Vertices, settings));
+    }
+    catch (const tessera::RingError& error)
+    {
+      // (the core numbers the rings as read: say which cells they are)
+      throw tessera_vtk::WithRingSources(error, rings, "catchment (input 1)");
+    }
+    const std::string nested = RingsInsideOtherBlocksWarning(rings, *this->In.Average);
+    this->Warn(nested);
+  }
+
+  tessera::ArealAverageSettings EngineSettings() const
+  {
+    tessera::ArealAverageSettings settings;
+    if (!this->Self->ProjectionRecord.empty())
+    {
+      settings.HaveProjection = true;
+      settings.Projection = tessera::ProjectionParameters::FromString(this->Self->ProjectionRecord);
+    }
+    settings.GaugeNames = this->Names; // for errors
+    const int method = this->Self->AreaMethod;
+    settings.Areas = method == EQUAL_AREA_PLANE ? tessera::AreaMethod::EqualAreaPlane
+      : method == GEODESIC_POLYGON              ? tessera::AreaMethod::GeodesicPolygon
+                                                : tessera::AreaMethod::Automatic;
+    return settings;
+  }
+
+  /// Warns of catchment vertices put on another ring's edge, and of gauges none of which lies
+  /// inside the catchment (a sign of swapped or unsigned coordinates).
+  void WarnOfCatchmentAndGauges()
+  {
+    if (const std::size_t snapped = this->In.Average->CatchmentVerticesPutOnEdges())
+    {
+      std::ostringstream text;
+      text << snapped << " catchment vertex(es) lay within "
+           << tessera::ArealAverageSettings::SharedBorderDegrees
+           << " degrees of another ring's edge (a shared border with vertices that only one side "
+              "has, their coordinates rounded) and were put on that edge too";
+      this->Warn(text.str());
+    }
+    std::size_t gaugesInside = 0;
+    for (std::size_t g = 0; g < this->GaugeCount; ++g)
+    {
+      gaugesInside += this->In.Average->GaugeInsideCatchment(g) ? 1 : 0;
+    }
+    if (this->GaugeCount > 0 && gaugesInside == 0)
+    {
+      this->Warn("none of the " + std::to_string(this->GaugeCount) +
+        " gauges lies inside the catchment: every weight goes to gauges outside it, as "
+        "Thiessen's rule gives them. If that is unexpected, check that the gauges and the "
+        "catchment are both longitude, latitude in degrees (a west longitude without its minus "
+        "sign, or the two swapped in either; for coordinates made longitude, latitude from "
+        "projected ones, the projection and its grid those of their system).");
+    }
+  }
+
+  /// The times and per-step values from the observations table: its rows matched with the
+  /// gauges, missing-value codes taken, repeated rows found.
+  void ReadObservations()
+  {
+    vtkThiessenArealAverage* self = this->Self;
+    vtkTable* observations = this->Observations;
     CheckColumnLengths(observations);
     if (observations->GetNumberOfRows() == 0)
     {
       throw tessera::InputError("the observations table has no rows (no time step to average)");
     }
-    rows = &in.CachedRows(observations,
-      gauges,
-      stationIds,
-      gaugeNames,
-      this->StationColumn,
-      this->TimeColumn,
-      this->MonthColumn);
-    stations = observations->GetColumnByName(this->StationColumn.c_str());
-    if (rows->Steps.Times.empty())
+    this->Rows = &this->In.CachedRows(observations,
+      this->Gauges,
+      this->StationIds,
+      this->Names,
+      self->StationColumn,
+      self->TimeColumn,
+      self->MonthColumn);
+    vtkAbstractArray* stations = observations->GetColumnByName(self->StationColumn.c_str());
+    this->Stations = stations;
+    if (this->Rows->Steps.Times.empty())
     {
       throw tessera::InputError(NoUsableRowMessage(
-        *rows, stations, gaugeNames, this->StationIdArrayName, this->StationColumn));
+        *this->Rows, stations, this->Names, self->StationIdArrayName, self->StationColumn));
     }
-    in.Times = rows->Steps.Times;
-    rowValues = RowValues(observations, rows->Steps, this->StationColumn, this->ValueColumn);
-    const std::string codes = TakeMissingValuesWarning(rowValues,
-      this->UseMissingValue,
-      this->MissingValue,
+    this->In.Times = this->Rows->Steps.Times;
+    this->ValuesOfRows =
+      RowValues(observations, this->Rows->Steps, self->StationColumn, self->ValueColumn);
+    this->Warn(TakeMissingValuesWarning(this->ValuesOfRows,
+      self->UseMissingValue,
+      self->MissingValue,
       "observation value(s) are",
       [stations](std::size_t row)
-      { return "in row " + std::to_string(row) + ", station " + RowStation(stations, row); });
-    if (!codes.empty())
-    {
-      vtkWarningMacro(<< codes);
-    }
-    tessera::StepSeries series =
-      tessera::BuildSeries(rows->Match, rows->Steps, rowValues, gaugeCount);
-    in.Values = std::move(series.Values);
-    repeatedRows = std::move(series.RepeatedRows);
-    repeatedRowOf = std::move(series.RepeatedRowOf);
+      { return "in row " + std::to_string(row) + ", station " + RowStation(stations, row); }));
+    tessera::StepSeries series = tessera::BuildSeries(
+      this->Rows->Match, this->Rows->Steps, this->ValuesOfRows, this->GaugeCount);
+    this->In.Values = std::move(series.Values);
+    this->RepeatedRows = std::move(series.RepeatedRows);
+    this->RepeatedRowOf = std::move(series.RepeatedRowOf);
   }
-  else
+
+  /// Without observations: one step, the gauges' point-data array ValueArrayName at the gauges'
+  /// own time (from a time-aware source), else 0.
+  void ReadGaugeValues()
   {
-    vtkAbstractArray* given =
-      gauges->GetPointData()->GetAbstractArray(this->ValueArrayName.c_str());
+    vtkDataArray* values = this->GaugeValueArray();
+    vtkInformation* gaugesInfo = this->Gauges->GetInformation();
+    this->In.Times.push_back(gaugesInfo->Has(vtkDataObject::DATA_TIME_STEP())
+        ? gaugesInfo->Get(vtkDataObject::DATA_TIME_STEP())
+        : 0.0);
+    this->In.Values.emplace_back(this->GaugeCount);
+    for (std::size_t g = 0; g < this->GaugeCount; ++g)
+    {
+      this->In.Values[0][g] = values->GetTuple1(static_cast<vtkIdType>(g));
+    }
+    const std::vector<std::string>& names = this->Names;
+    this->Warn(TakeMissingValuesWarning(this->In.Values[0],
+      this->Self->UseMissingValue,
+      this->Self->MissingValue,
+      "gauge value(s) in '" + this->Self->ValueArrayName + "' are",
+      [&names](std::size_t g)
+      {
+        const std::string name = g < names.size() ? names[g] : "";
+        return "of gauge " + std::to_string(g) + (name.empty() ? std::string() : " (" + name + ")");
+      }));
+  }
+
+  /// The gauges' value array (ValueArrayName) when it is numbers, one per gauge; else an
+  /// InputError saying what it is, or what the gauges have.
+  vtkDataArray* GaugeValueArray() const
+  {
+    const std::string& name = this->Self->ValueArrayName;
+    vtkAbstractArray* given = this->Gauges->GetPointData()->GetAbstractArray(name.c_str());
     auto* values = vtkDataArray::SafeDownCast(given);
-    if (gauges->GetNumberOfPoints() == 0)
+    if (this->Gauges->GetNumberOfPoints() == 0)
     {
       // (a missing array is missing because the points are: said first, as with observations;
       // an empty one, as an upstream Threshold that kept none leaves, gave no word)
       throw tessera::InputError(std::string(NoGaugePoints) +
         (values ? ": no gauge to average"
-                : ": no gauge, no value array '" + this->ValueArrayName + "' (ValueArrayName)"));
+                : ": no gauge, no value array '" + name + "' (ValueArrayName)"));
     }
     if (given && !values)
     {
       // (it was "need a numeric point-data array 'value' ...; their arrays are station_id, value")
-      throw tessera::InputError("without observations the gauges' point-data array '" +
-        this->ValueArrayName + "' (ValueArrayName) is read as one number per gauge, but it is a " +
-        given->GetClassName() +
+      throw tessera::InputError("without observations the gauges' point-data array '" + name +
+        "' (ValueArrayName) is read as one number per gauge, but it is a " + given->GetClassName() +
         ", not numbers; make it numeric, or give the values as observations (input 2: station id, "
         "time, value), whose text values are read as numbers");
     }
     if (!values)
     {
+      const std::string& problem = this->In.ValueProblem;
       throw tessera::InputError(
-        "without observations the gauges need a numeric point-data array '" + this->ValueArrayName +
-        "' (ValueArrayName)" + (in.ValueProblem.empty() ? std::string() : ": " + in.ValueProblem) +
-        "; their arrays are " + ArrayNames(gauges->GetPointData()));
+        "without observations the gauges need a numeric point-data array '" + name +
+        "' (ValueArrayName)" + (problem.empty() ? std::string() : ": " + problem) +
+        "; their arrays are " + ArrayNames(this->Gauges->GetPointData()));
     }
     if (values->GetNumberOfComponents() != 1)
     {
-      throw tessera::InputError("the gauges' value array '" + this->ValueArrayName + "' has " +
+      throw tessera::InputError("the gauges' value array '" + name + "' has " +
         std::to_string(values->GetNumberOfComponents()) +
         " components, where one value a gauge is read (ValueArrayName; ParaView's Calculator "
         "makes an array of one component)");
     }
-    // The one step's time: the gauges' own (from a time-aware source), else 0.
-    vtkInformation* gaugesInfo = gauges->GetInformation();
-    in.Times.push_back(gaugesInfo->Has(vtkDataObject::DATA_TIME_STEP())
-        ? gaugesInfo->Get(vtkDataObject::DATA_TIME_STEP())
-        : 0.0);
-    in.Values.emplace_back(gaugeCount);
-    for (std::size_t g = 0; g < gaugeCount; ++g)
+    return values;
+  }
+
+  /// Marks the gauges whose station id other gauges have too (by the key the observations are
+  /// matched by, tessera::StationKey: "050848" and "50848" are one id; with or without
+  /// observations).
+  void MarkSharedIds()
+  {
+    this->IdShared.assign(this->GaugeCount, 0);
+    std::map<std::string, std::size_t> firstWithKey;
+    for (std::size_t g = 0; this->StationIds && g < this->GaugeCount; ++g)
     {
-      in.Values[0][g] = values->GetTuple1(static_cast<vtkIdType>(g));
-    }
-    const std::string codes = TakeMissingValuesWarning(in.Values[0],
-      this->UseMissingValue,
-      this->MissingValue,
-      "gauge value(s) in '" + this->ValueArrayName + "' are",
-      [&gaugeNames](std::size_t g)
+      const auto found = firstWithKey.emplace(tessera::StationKey(this->Names[g]), g);
+      if (!found.second && !this->Names[g].empty())
       {
-        const std::string name = g < gaugeNames.size() ? gaugeNames[g] : "";
-        return "of gauge " + std::to_string(g) + (name.empty() ? std::string() : " (" + name + ")");
-      });
-    if (!codes.empty())
-    {
-      vtkWarningMacro(<< codes);
+        this->IdShared[g] = 1;
+        this->IdShared[found.first->second] = 1;
+      }
     }
   }
 
-  // Everything valid but unused is reported by id.
-  // A gauge by its station id, or by its point id when it has none (an empty id named nothing);
-  // by both when other gauges have its id ("A (gauge 4)": "A" alone would name them all).
-  // (Ids shared by the key the observations are matched by, tessera::StationKey: "050848" and
-  // "50848" are one id; with or without observations.)
-  std::vector<char> idShared(gaugeCount, 0);
-  std::map<std::string, std::size_t> firstWithKey;
-  for (std::size_t g = 0; stationIds && g < gaugeCount; ++g)
+  /// A gauge by its station id, or by its point id when it has none (an empty id named nothing);
+  /// by both when other gauges have its id ("A (gauge 4)": "A" alone would name them all).
+  std::string IdOf(std::int32_t gauge) const
   {
-    const auto found = firstWithKey.emplace(tessera::StationKey(gaugeNames[g]), g);
-    if (!found.second && !gaugeNames[g].empty())
-    {
-      idShared[g] = 1;
-      idShared[found.first->second] = 1;
-    }
-  }
-  auto idOf = [&](std::size_t g)
-  {
-    if (!stationIds || gaugeNames[g].empty())
+    const auto g = static_cast<std::size_t>(gauge);
+    if (!this->StationIds || this->Names[g].empty())
     {
       return "gauge " + std::to_string(g) + " (no station id)";
     }
-    return idShared[g] ? gaugeNames[g] + " (gauge " + std::to_string(g) + ")" : gaugeNames[g];
-  };
-  std::vector<std::int32_t> unobserved;
-  for (std::size_t g = 0; g < gaugeCount; ++g)
+    return this->IdShared[g] ? this->Names[g] + " (gauge " + std::to_string(g) + ")"
+                             : this->Names[g];
+  }
+
+  /// The gauges without a value at any step, and those at the place of an earlier gauge.
+  void FindUnusedGauges()
   {
-    bool any = false;
-    for (const auto& stepValues : in.Values)
+    for (std::size_t g = 0; g < this->GaugeCount; ++g)
     {
-      if (!std::isnan(stepValues[g]))
+      const auto valued = [g](const std::vector<double>& stepValues)
+      { return !std::isnan(stepValues[g]); };
+      if (std::none_of(this->In.Values.begin(), this->In.Values.end(), valued))
       {
-        any = true;
-        break;
+        this->Unobserved.push_back(static_cast<std::int32_t>(g));
       }
     }
-    if (!any)
+    for (const auto& pair : this->In.Average->DuplicateGauges())
     {
-      unobserved.push_back(static_cast<std::int32_t>(g));
+      this->Duplicates.push_back(pair.first);
+      this->DuplicateOf.push_back(pair.second);
     }
   }
-  std::vector<std::int32_t> duplicates, duplicateOf;
-  for (const auto& pair : in.Average->DuplicateGauges())
-  {
-    duplicates.push_back(pair.first);
-    duplicateOf.push_back(pair.second);
-  }
-  // One warning per kind of unused input: "N <what>: the first 20 names" (only those are made).
-  const auto warnOf = [this](std::size_t count, const char* what, const auto& nameOf)
+
+  /// One warning per kind of unused input: "N <what>: the first 20 names" (only those are made).
+  template<class NameOf>
+  void WarnOf(std::size_t count, const char* what, const NameOf& nameOf) const
   {
     if (count > 0)
     {
-      vtkWarningMacro(<< count << " " << what << ": " << ListNames(count, nameOf));
+      this->Warn(std::to_string(count) + " " + what + ": " + ListNames(count, nameOf));
     }
+  }
+
+  /// Everything valid but unused, reported by id: gauges, station ids and rows.
+  void WarnOfUnusedInputs()
+  {
+    this->MarkSharedIds();
+    this->FindUnusedGauges();
+    this->WarnOf(this->Unobserved.size(),
+      "gauge(s) have no observed value (no row, or only missing values) and are never used",
+      [&](std::size_t k) { return this->IdOf(this->Unobserved[k]); });
+    this->WarnOfUnusedRows();
+    this->WarnOf(this->Duplicates.size(),
+      "gauge(s) stand where an earlier gauge stands; the first that reports is used",
+      [&](std::size_t k)
+      {
+        return this->IdOf(this->Duplicates[k]) + " (same place as " +
+          this->IdOf(this->DuplicateOf[k]) + ")";
+      });
+    this->CoLocatedValues = CoLocatedRows(
+      *this->Rows, this->ValuesOfRows, this->In.Values, *this->In.Average, this->RepeatedRows);
+    const CoLocated& coLocated = this->CoLocatedValues;
+    this->WarnOf(coLocated.Rows.size(),
+      "observation row(s) have a value for a gauge at the place of another that reported at the "
+      "same time, whose value is used (rows from 0, listed in CoLocatedObservationRows, the rows "
+      "used in their place in CoLocatedObservationOfRows)",
+      [&](std::size_t k)
+      {
+        return RowName(this->Stations, coLocated.Rows[k]) + " (row " +
+          std::to_string(coLocated.UsedRows[k]) + " used)";
+      });
+  }
+
+  /// The observations' rows and station ids that are not used, and times that look mistyped.
+  void WarnOfUnusedRows() const
+  {
+    vtkAbstractArray* stations = this->Stations;
+    const std::vector<tessera::UnknownStation>& unknown = this->Rows->Match.UnknownStations;
+    this->WarnOf(unknown.size(),
+      "station id(s) of the observations that no gauge has: their rows were ignored (rows from 0, "
+      "listed in UnusedObservationRows)",
+      [&](std::size_t k) { return UnknownStationName(stations, unknown[k]); });
+    const std::vector<std::int32_t>& incomplete = this->Rows->Steps.IncompleteRows;
+    this->WarnOf(incomplete.size(),
+      "observation row(s) have no station id or no time and were ignored (rows from 0, listed in "
+      "UnusedObservationRows)",
+      [&](std::size_t k) { return IncompleteRowName(stations, incomplete[k]); });
+    const std::vector<tessera::SharedStation>& shared = this->Rows->Match.SharedStations;
+    this->WarnOf(shared.size(),
+      "station id(s) are given to more than one gauge; their observations go to the first (listed "
+      "in SharedStationGaugeIds, the first gauges in SharedStationOfGaugeIds)",
+      [&](std::size_t k)
+      {
+        return this->Names[static_cast<std::size_t>(shared[k].Gauge)] + " (gauges " +
+          std::to_string(shared[k].FirstGauge) + " and " + std::to_string(shared[k].Gauge) + ")";
+      });
+    this->WarnOf(this->RepeatedRows.size(),
+      "observation row(s) repeat a station and time of an earlier row with a value; the earlier "
+      "value is used (rows from 0, listed in RepeatedObservationRows, the rows they repeat in "
+      "RepeatedObservationOfRows)",
+      [&](std::size_t k)
+      {
+        return RowName(stations, this->RepeatedRows[k]) + " repeating row " +
+          std::to_string(this->RepeatedRowOf[k]);
+      });
+    if (this->Observations)
+    {
+      const vtkThiessenArealAverage* self = this->Self;
+      this->Warn(CoarseTimesWarning(
+        this->Observations, this->RepeatedRows.size(), self->TimeColumn, self->MonthColumn));
+      this->Warn(YearZeroWarning(this->Rows->Steps, stations, self->TimeColumn, self->MonthColumn));
+    }
+  }
+
+  /// Dates beside the decimal years, for a series given as dates: a CSV writer's default
+  /// precision writes some months alike (ParaView's 5 digits make 1895-03 and 1895-04 both
+  /// 1895.2). None, with a warning, when some time is not a date of years 0 .. 9999.
+  std::vector<std::string> StepDates() const
+  {
+    const std::vector<double>& times = this->In.Times;
+    const std::vector<std::string> dates =
+      this->Rows->TimesAreDates ? tessera::DateTexts(times) : std::vector<std::string>();
+    if (this->Rows->TimesAreDates && dates.empty())
+    {
+      this->Warn("the times are dates, but not all of them can be written as dates (years 0 .. "
+                 "9999: from " +
+        tessera::NumberText(times.front()) + " to " + tessera::NumberText(times.back()) +
+        " as decimal years), so the tables have no Date column");
+    }
+    return dates;
+  }
+
+  /// The summary table's columns (output 1), a row per step.
+  struct SummaryColumns
+  {
+    SummaryColumns()
+    {
+      this->Times->SetName("Time");
+      this->Dates->SetName("Date");
+      this->Means->SetName("ArealMean");
+      this->Used->SetName("StationsUsed");
+      this->Weighted->SetName("StationsWeighted");
+      this->Covered->SetName("CoveredFraction");
+    }
+    void Append(double time, const tessera::ArealStep& result)
+    {
+      this->Times->InsertNextValue(time);
+      this->Means->InsertNextValue(result.Mean);
+      this->Used->InsertNextValue(result.StationsUsed);
+      this->Weighted->InsertNextValue(result.StationsWeighted);
+      this->Covered->InsertNextValue(result.CoveredFraction);
+    }
+    vtkNew<vtkDoubleArray> Times, Means, Covered;
+    vtkNew<vtkStringArray> Dates;
+    vtkNew<vtkIntArray> Used, Weighted;
   };
-  warnOf(unobserved.size(),
-    "gauge(s) have no observed value (no row, or only missing values) and are never used",
-    [&](std::size_t k) { return idOf(static_cast<std::size_t>(unobserved[k])); });
-  const std::vector<tessera::UnknownStation>& unknown = rows->Match.UnknownStations;
-  warnOf(unknown.size(),
-    "station id(s) of the observations that no gauge has: their rows were ignored (rows from 0, "
-    "listed in UnusedObservationRows)",
-    [&](std::size_t k) { return UnknownStationName(stations, unknown[k]); });
-  const std::vector<std::int32_t>& incomplete = rows->Steps.IncompleteRows;
-  warnOf(incomplete.size(),
-    "observation row(s) have no station id or no time and were ignored (rows from 0, listed in "
-    "UnusedObservationRows)",
-    [&](std::size_t k) { return IncompleteRowName(stations, incomplete[k]); });
-  const std::vector<tessera::SharedStation>& shared = rows->Match.SharedStations;
-  warnOf(shared.size(),
-    "station id(s) are given to more than one gauge; their observations go to the first (listed "
-    "in SharedStationGaugeIds, the first gauges in SharedStationOfGaugeIds)",
-    [&](std::size_t k)
+
+  /// Every step in order, each one updating the tessellation of the one before: the summary
+  /// table's rows and output 2's weights. Returns per gauge whether it was weighted at a step.
+  std::vector<char> AverageEveryStep(SummaryColumns& columns, const std::vector<std::string>& dates)
+  {
+    for (const std::string& date : dates)
     {
-      return gaugeNames[static_cast<std::size_t>(shared[k].Gauge)] + " (gauges " +
-        std::to_string(shared[k].FirstGauge) + " and " + std::to_string(shared[k].Gauge) + ")";
-    });
-  warnOf(repeatedRows.size(),
-    "observation row(s) repeat a station and time of an earlier row with a value; the earlier "
-    "value is used (rows from 0, listed in RepeatedObservationRows, the rows they repeat in "
-    "RepeatedObservationOfRows)",
-    [&](std::size_t k)
+      columns.Dates->InsertNextValue(date);
+    }
+    WeightRows weightRows(this->StationIds, !dates.empty());
+    std::vector<char> everWeighted(this->GaugeCount, 0);
+    const std::vector<double>& times = this->In.Times;
+    for (std::size_t step = 0; step < times.size(); ++step)
     {
-      return RowName(stations, repeatedRows[k]) + " repeating row " +
-        std::to_string(repeatedRowOf[k]);
-    });
+      if (step % 16 == 0)
+      {
+        tessera_vtk::ProgressOrStop(this->Self, 0.9 * static_cast<double>(step) / times.size());
+      }
+      const tessera::ArealStep result = this->In.Average->Step(this->In.Values[step]);
+      columns.Append(times[step], result);
+      for (const std::int32_t g : result.Gauges)
+      {
+        everWeighted[static_cast<std::size_t>(g)] = 1;
+      }
+      if (this->Self->WeightsTable)
+      {
+        weightRows.Append(
+          times[step], dates.empty() ? std::string() : dates[step], result, this->In.Values[step]);
+      }
+    }
+    weightRows.Fill(this->In.Weights);
+    return everWeighted;
+  }
+
+  /// Gauges with values whose tiles never reach the catchment (those without values, and gauges
+  /// at the place of another, are reported above, so they count as told), and of those the ones
+  /// at a longitude or latitude of exactly 0.
+  void WarnOfUnweighted(std::vector<char>& everWeighted)
+  {
+    for (const std::vector<std::int32_t>* told : { &this->Unobserved, &this->Duplicates })
+    {
+      for (const std::int32_t g : *told)
+      {
+        everWeighted[static_cast<std::size_t>(g)] = 1;
+      }
+    }
+    for (std::size_t g = 0; g < this->GaugeCount; ++g)
+    {
+      if (!everWeighted[g])
+      {
+        this->Unweighted.push_back(static_cast<std::int32_t>(g));
+      }
+    }
+    this->WarnOf(this->Unweighted.size(),
+      "gauge(s) have observed values, but their tiles never reach the catchment at any step, so "
+      "they are never weighted (listed in UnweightedGaugeIds)",
+      [&](std::size_t k) { return this->IdOf(this->Unweighted[k]); });
+    // An empty field of a CSV read by vtkDelimitedTextReader with DetectNumericColumns is 0 (a
+    // trial's gauge inside the catchment went to the equator so, named only among the gauges
+    // never weighted).
+    std::vector<std::int32_t> atZero;
+    for (const std::int32_t g : this->Unweighted)
+    {
+      const tessera::Point2& p = this->LonLat[static_cast<std::size_t>(g)];
+      if (p.x == 0.0 || p.y == 0.0)
+      {
+        atZero.push_back(g);
+      }
+    }
+    this->WarnOf(atZero.size(),
+      "of the gauge(s) never weighted have a longitude or latitude of exactly 0: an empty lon or "
+      "lat of a CSV file read with numbers detected (vtkDelimitedTextReader's "
+      "DetectNumericColumns) is 0",
+      [&](std::size_t k)
+      {
+        const tessera::Point2& p = this->LonLat[static_cast<std::size_t>(atZero[k])];
+        return this->IdOf(atZero[k]) + " at (" + tessera::NumberText(p.x) + ", " +
+          tessera::NumberText(p.y) + ")";
+      });
+  }
+
+  /// Output 1: the summary columns, and as field data the ids of what was not used.
+  void WriteSummary(SummaryColumns& columns, bool withDates) const
+  {
+    vtkTable* summary = this->In.Summary;
+    summary->Initialize();
+    summary->AddColumn(columns.Times);
+    if (withDates)
+    {
+      summary->AddColumn(columns.Dates);
+    }
+    summary->AddColumn(columns.Means);
+    summary->AddColumn(columns.Used);
+    summary->AddColumn(columns.Weighted);
+    summary->AddColumn(columns.Covered);
+    tessera_vtk::AddIdFieldArray(summary, "UnobservedGaugeIds", this->Unobserved);
+    std::vector<std::int32_t> sharing, sharingOf; // a gauge with an earlier gauge's station id
+    for (const tessera::SharedStation& station : this->Rows->Match.SharedStations)
+    {
+      sharing.push_back(station.Gauge);
+      sharingOf.push_back(station.FirstGauge);
+    }
+    tessera_vtk::AddIdFieldArray(summary, "SharedStationGaugeIds", sharing);
+    tessera_vtk::AddIdFieldArray(summary, "SharedStationOfGaugeIds", sharingOf);
+    tessera_vtk::AddIdFieldArray(summary, "UnweightedGaugeIds", this->Unweighted);
+    tessera_vtk::AddIdFieldArray(summary, "DuplicateGaugeIds", this->Duplicates);
+    tessera_vtk::AddIdFieldArray(summary, "DuplicateOfGaugeIds", this->DuplicateOf);
+    tessera_vtk::AddIdFieldArray(summary, "RepeatedObservationRows", this->RepeatedRows);
+    tessera_vtk::AddIdFieldArray(summary, "RepeatedObservationOfRows", this->RepeatedRowOf);
+    tessera_vtk::AddIdFieldArray(summary, "CoLocatedObservationRows", this->CoLocatedValues.Rows);
+    tessera_vtk::AddIdFieldArray(
+      summary, "CoLocatedObservationOfRows", this->CoLocatedValues.UsedRows);
+    tessera_vtk::AddIdFieldArray(summary, "UnusedObservationRows", this->Rows->Steps.UnusedRows());
+    // The projection the tiles were made in, as vtkGeographicProjection records it: another
+    // average given it (ProjectionRecord) makes the same tiles, as for a part of this catchment.
+    tessera_vtk::WriteProjectionRecord(summary, this->In.Average->Projection().ToString());
+    tessera_vtk::ListNonEmptyFieldArraysFirst(summary);
+  }
+
+  /// The filter's warning text ("" says nothing).
+  void Warn(const std::string& text) const
+  {
+    if (!text.empty())
+    {
+      vtkWarningWithObjectMacro(this->Self, << text);
+    }
+  }
+};
+
+//------------------------------------------------------------------------------
+void vtkThiessenArealAverage::Build(vtkPointSet* gauges,
+  vtkAbstractArray* stationIds,
+  vtkDataObject* catchment,
+  vtkTable* observations)
+{
+  static const ObservationRows noRows;
+  BuildRun run(this, gauges, stationIds, observations);
+  run.MakeEngine(catchment);
+  run.WarnOfCatchmentAndGauges();
+  Internals& in = *this->Internal;
+  in.Times.clear();
+  in.Values.clear();
+  run.Rows = &noRows;
   if (observations)
   {
-    const std::string coarse =
-      CoarseTimesWarning(observations, repeatedRows.size(), this->TimeColumn, this->MonthColumn);
-    if (!coarse.empty())
-    {
-      vtkWarningMacro(<< coarse);
-    }
-    const std::string yearZero =
-      YearZeroWarning(rows->Steps, stations, this->TimeColumn, this->MonthColumn);
-    if (!yearZero.empty())
-    {
-      vtkWarningMacro(<< yearZero);
-    }
+    run.ReadObservations();
   }
-  warnOf(duplicates.size(),
-    "gauge(s) stand where an earlier gauge stands; the first that reports is used",
-    [&](std::size_t k)
-    {
-      return idOf(static_cast<std::size_t>(duplicates[k])) + " (same place as " +
-        idOf(static_cast<std::size_t>(duplicateOf[k])) + ")";
-    });
-  const CoLocated coLocated = CoLocatedRows(*rows, rowValues, in.Values, *in.Average, repeatedRows);
-  warnOf(coLocated.Rows.size(),
-    "observation row(s) have a value for a gauge at the place of another that reported at the "
-    "same time, whose value is used (rows from 0, listed in CoLocatedObservationRows, the rows "
-    "used in their place in CoLocatedObservationOfRows)",
-    [&](std::size_t k)
-    {
-      return RowName(stations, coLocated.Rows[k]) + " (row " +
-        std::to_string(coLocated.UsedRows[k]) + " used)";
-    });
-
-  // The summary: every step in order, each one updating the tessellation of the one before.
-  vtkNew<vtkDoubleArray> timeColumn, means, covered;
-  vtkNew<vtkIntArray> used, weighted;
-  timeColumn->SetName("Time");
-  means->SetName("ArealMean");
-  used->SetName("StationsUsed");
-  weighted->SetName("StationsWeighted");
-  covered->SetName("CoveredFraction");
-  // Dates beside the decimal years, for a series given as dates: a CSV writer's default precision
-  // writes some months alike (ParaView's 5 digits make 1895-03 and 1895-04 both 1895.2).
-  const std::vector<std::string> dates =
-    rows->TimesAreDates ? tessera::DateTexts(in.Times) : std::vector<std::string>();
-  if (rows->TimesAreDates && dates.empty())
+  else
   {
-    vtkWarningMacro(<< "the times are dates, but not all of them can be written as dates (years 0 "
-                       ".. 9999: from "
-                    << tessera::NumberText(in.Times.front()) << " to "
-                    << tessera::NumberText(in.Times.back())
-                    << " as decimal years), so the tables have no Date column");
+    run.ReadGaugeValues();
   }
-  vtkNew<vtkStringArray> dateColumn;
-  dateColumn->SetName("Date");
-  for (const std::string& date : dates)
-  {
-    dateColumn->InsertNextValue(date);
-  }
-  WeightRows weightRows(stationIds, !dates.empty());
-  std::vector<char> everWeighted(gaugeCount, 0);
-  for (std::size_t step = 0; step < in.Times.size(); ++step)
-  {
-    if (step % 16 == 0)
-    {
-      tessera_vtk::ProgressOrStop(this, 0.9 * static_cast<double>(step) / in.Times.size());
-    }
-    const tessera::ArealStep result = in.Average->Step(in.Values[step]);
-    timeColumn->InsertNextValue(in.Times[step]);
-    means->InsertNextValue(result.Mean);
-    used->InsertNextValue(result.StationsUsed);
-    weighted->InsertNextValue(result.StationsWeighted);
-    covered->InsertNextValue(result.CoveredFraction);
-    for (const std::int32_t g : result.Gauges)
-    {
-      everWeighted[static_cast<std::size_t>(g)] = 1;
-    }
-    if (this->WeightsTable)
-    {
-      weightRows.Append(
-        in.Times[step], dates.empty() ? std::string() : dates[step], result, in.Values[step]);
-    }
-  }
-  weightRows.Fill(in.Weights);
-  // Gauges with values whose tiles never reach the catchment (those without values, and gauges at
-  // the place of another, are reported above, so they count as told).
-  for (const std::vector<std::int32_t>* told : { &unobserved, &duplicates })
-  {
-    for (const std::int32_t g : *told)
-    {
-      everWeighted[static_cast<std::size_t>(g)] = 1;
-    }
-  }
-  std::vector<std::int32_t> unweighted;
-  for (std::size_t g = 0; g < gaugeCount; ++g)
-  {
-    if (!everWeighted[g])
-    {
-      unweighted.push_back(static_cast<std::int32_t>(g));
-    }
-  }
-  warnOf(unweighted.size(),
-    "gauge(s) have observed values, but their tiles never reach the catchment at any step, so "
-    "they are never weighted (listed in UnweightedGaugeIds)",
-    [&](std::size_t k) { return idOf(static_cast<std::size_t>(unweighted[k])); });
-  // Of those, the ones at a longitude or latitude of exactly 0: an empty field of a CSV read by
-  // vtkDelimitedTextReader with DetectNumericColumns is 0 (a trial's gauge inside the catchment
-  // went to the equator so, named only among the gauges never weighted).
-  std::vector<std::int32_t> atZero;
-  for (const std::int32_t g : unweighted)
-  {
-    const tessera::Point2& p = lonlat[static_cast<std::size_t>(g)];
-    if (p.x == 0.0 || p.y == 0.0)
-    {
-      atZero.push_back(g);
-    }
-  }
-  warnOf(atZero.size(),
-    "of the gauge(s) never weighted have a longitude or latitude of exactly 0: an empty lon or "
-    "lat of a CSV file read with numbers detected (vtkDelimitedTextReader's "
-    "DetectNumericColumns) is 0",
-    [&](std::size_t k)
-    {
-      const tessera::Point2& p = lonlat[static_cast<std::size_t>(atZero[k])];
-      return idOf(static_cast<std::size_t>(atZero[k])) + " at (" + tessera::NumberText(p.x) + ", " +
-        tessera::NumberText(p.y) + ")";
-    });
-  in.Summary->Initialize();
-  in.Summary->AddColumn(timeColumn);
-  if (!dates.empty())
-  {
-    in.Summary->AddColumn(dateColumn);
-  }
-  in.Summary->AddColumn(means);
-  in.Summary->AddColumn(used);
-  in.Summary->AddColumn(weighted);
-  in.Summary->AddColumn(covered);
-  tessera_vtk::AddIdFieldArray(in.Summary, "UnobservedGaugeIds", unobserved);
-  std::vector<std::int32_t> sharing, sharingOf; // a gauge with an earlier gauge's station id
-  for (const tessera::SharedStation& station : shared)
-  {
-    sharing.push_back(station.Gauge);
-    sharingOf.push_back(station.FirstGauge);
-  }
-  tessera_vtk::AddIdFieldArray(in.Summary, "SharedStationGaugeIds", sharing);
-  tessera_vtk::AddIdFieldArray(in.Summary, "SharedStationOfGaugeIds", sharingOf);
-  tessera_vtk::AddIdFieldArray(in.Summary, "UnweightedGaugeIds", unweighted);
-  tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateGaugeIds", duplicates);
-  tessera_vtk::AddIdFieldArray(in.Summary, "DuplicateOfGaugeIds", duplicateOf);
-  tessera_vtk::AddIdFieldArray(in.Summary, "RepeatedObservationRows", repeatedRows);
-  tessera_vtk::AddIdFieldArray(in.Summary, "RepeatedObservationOfRows", repeatedRowOf);
-  tessera_vtk::AddIdFieldArray(in.Summary, "CoLocatedObservationRows", coLocated.Rows);
-  tessera_vtk::AddIdFieldArray(in.Summary, "CoLocatedObservationOfRows", coLocated.UsedRows);
-  tessera_vtk::AddIdFieldArray(in.Summary, "UnusedObservationRows", rows->Steps.UnusedRows());
-  // The projection the tiles were made in, as vtkGeographicProjection records it: another average
-  // given it (ProjectionRecord) makes the same tiles, as for a part of this catchment.
-  tessera_vtk::WriteProjectionRecord(in.Summary, in.Average->Projection().ToString());
-  tessera_vtk::ListNonEmptyFieldArraysFirst(in.Summary);
+  run.WarnOfUnusedInputs();
+  BuildRun::SummaryColumns columns;
+  const std::vector<std::string> dates = run.StepDates();
+  std::vector<char> everWeighted = run.AverageEveryStep(columns, dates);
+  run.WarnOfUnweighted(everWeighted);
+  run.WriteSummary(columns, !dates.empty());
 }
 
 //------------------------------------------------------------------------------

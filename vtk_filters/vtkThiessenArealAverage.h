@@ -167,6 +167,7 @@
 #include <cstddef> // For size_t
 #include <memory>  // For the internals
 #include <string>  // For the names
+#include <vector>  // For the gauges' array names
 
 class vtkAbstractArray;
 class vtkPointSet;
@@ -292,6 +293,14 @@ public:
    */
   int GetNumberOfTimeSteps();
 
+  /**
+   * The time that a date of the observations gets, for UpdateTimeStep: "1963-08" is 1963 + 7/12
+   * and "1963-08-16" 1963 + (7 + 15/31)/12 (decimal years on a month grid: a day is a share of
+   * its month, not of its year), "1963-08-16 06:00" a share of that day; as the tables' Time
+   * column gives it beside their Date. NaN for text that is not such a date.
+   */
+  static double TimeOfDate(const char* date);
+
 protected:
   vtkThiessenArealAverage();
   ~vtkThiessenArealAverage() override;
@@ -326,6 +335,17 @@ private:
   /// The gauges as one point set: input 0 itself, or its blocks' points joined (kept in the
   /// internals while unchanged). Throws InputError for input that is neither.
   vtkPointSet* GaugesOf(vtkDataObject* data);
+  /// Joins the gauges' blocks, or copies a point set with its vertices' arrays as point data,
+  /// into the internals' Joined (arrays: the station id and value arrays' names).
+  void JoinGauges(vtkDataObject* data, const std::vector<std::string>& arrays);
+  /// Builds again when the filter or an input changed since the last build.
+  void BuildIfChanged(vtkPointSet* gauges,
+    vtkAbstractArray* stationIds,
+    vtkDataObject* catchment,
+    vtkTable* observations);
+  /// The step of the time requested of the tiles (tilesInfo), the last at or before it (0 without
+  /// a time); false, with an error, for a requested time of NaN.
+  bool RequestedStep(vtkInformation* tilesInfo, std::size_t& step);
   /// The gauges' point-data array StationIdArrayName; an InputError naming it when it is missing
   /// and required (to match observations with).
   vtkAbstractArray* GaugeStationIds(vtkPointSet* gauges, bool required);
@@ -339,6 +359,7 @@ private:
     vtkPolyData* outlines);
 
   struct Internals;
+  struct BuildRun; // one Build's steps (in the .cxx)
   std::unique_ptr<Internals> Internal;
 };
 

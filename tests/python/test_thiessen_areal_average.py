@@ -1039,6 +1039,54 @@ def test_dates_of_days_and_hours_are_written_as_given():
                 and "they make 1 step(s) of their own (rows from 0): row 0 (station " in said[0], f"{warnings}")
 
 
+def test_time_of_date_picks_that_dates_step():
+    """TimeOfDate gives a date's time as the tables do (decimal years on a month grid: a day is a
+    share of its month), so UpdateTimeStep of it shows that day's tiles; a day-of-year decimal, the
+    usual other reading, would show an earlier day. Text that is not a date gives NaN."""
+    time_of = vtkThiessenArealAverage.TimeOfDate
+    for text, expected in (("1963-08", 1963 + 7 / 12), ("1963-08-16", 1963 + (7 + 15 / 31) / 12),
+                           ("1964-02-29", 1964 + (1 + 28 / 29) / 12),
+                           ("1963-08-16 06:00", 1963 + (7 + (15 + 6 / 24) / 31) / 12)):
+        assert_close(time_of(text), expected, 1e-12, f"TimeOfDate({text!r})")
+    for text in ("1963-02-30", "1963-13", "16/08/1963", "", None):
+        assert_that(math.isnan(time_of(text)), f"TimeOfDate({text!r}) = {time_of(text)}, expected NaN")
+    # Three gauges over a month's turn, a day apart, each day its own values.
+    coords = [(-0.5, -0.5), (0.5, -0.5), (0.0, 0.5)]
+    ids = ["a", "b", "c"]
+    days = ["2001-02-27", "2001-02-28", "2001-03-01", "2001-03-02"]
+    table = vtkTable()
+    s, t, v = vtkStringArray(), vtkStringArray(), vtkDoubleArray()
+    for column, name in ((s, "station_id"), (t, "time"), (v, "value")):
+        column.SetName(name)
+        table.AddColumn(column)
+    for d, day in enumerate(days):
+        for g, sid in enumerate(ids):
+            s.InsertNextValue(sid)
+            t.InsertNextValue(day)
+            v.InsertNextValue(10.0 * d + g)
+    f, messages = summary_of(coords, ids, [(-1, -1), (1, -1), (1, 1), (-1, 1)], table)
+    assert_that(not messages, f"{messages}")
+    dates, times = summary_column(f, "Date"), summary_column(f, "Time")
+    assert_that(dates == days, f"dates {dates}")
+    for d, day in enumerate(days):
+        assert_that(time_of(day) == times[d], f"TimeOfDate({day!r}) {time_of(day)} is not its Time {times[d]}")
+        f.UpdateTimeStep(time_of(day))
+        tiles = f.GetOutputDataObject(0)
+        shown = tiles.GetInformation().Get(tiles.DATA_TIME_STEP())
+        values = tiles.GetCellData().GetArray("Value")
+        got = sorted({values.GetValue(c) for c in range(values.GetNumberOfValues())})
+        assert_that(shown == times[d] and got == [10.0 * d + g for g in range(3)],
+                    f"{day}: the tiles of time {shown}, values {got}")
+    # The day of year as a share of the year puts 2001-03-01 (day 60) before its step: an earlier
+    # day's tiles, the last at or before that time.
+    day_of_year = 2001 + 59 / 365
+    f.UpdateTimeStep(day_of_year)
+    tiles = f.GetOutputDataObject(0)
+    shown = tiles.GetInformation().Get(tiles.DATA_TIME_STEP())
+    assert_that(shown < times[2] and shown == max(x for x in times if x <= day_of_year),
+                f"a day-of-year time for {days[2]} gave the step of time {shown} ({times})")
+
+
 def table_with_times(table, dates):
     """table with its time column's distinct texts replaced, in order, by dates."""
     times = table.GetColumnByName("time")
@@ -2055,6 +2103,7 @@ if __name__ == "__main__":
          test_window_clip_of_tiles_stored_in_float,
          test_dates_and_year_month_columns_give_the_same_steps,
          test_dates_of_days_and_hours_are_written_as_given,
+     test_time_of_date_picks_that_dates_step,
          test_gauges_given_an_earlier_gauges_station_id_are_listed,
          test_the_projection_used_is_recorded_and_makes_the_same_tiles,
          test_an_enclave_given_as_a_hole_and_a_feature_of_its_own_is_in_the_catchment,
