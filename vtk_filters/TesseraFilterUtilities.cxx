@@ -43,6 +43,7 @@
 #include <cfloat>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <type_traits>
 #include <set>
 #include <sstream>
@@ -389,11 +390,11 @@ std::string EmptyBoundsWarning(const double bounds[4], bool withConstraints)
     ". Were the bounds given in another order, such as (xmin, ymin, xmax, ymax)?";
 }
 
-tessera::Window ChooseWindow(const double bounds[4],
-  const std::vector<double>& constraints,
-  double padding,
-  const std::vector<tessera::Point2>& points,
-  bool needArea)
+namespace
+{
+
+/// An InputError for a NaN or infinite WindowBounds value, naming it.
+void CheckBoundsFinite(const double bounds[4])
 {
   const char* names[4] = { "xmin", "xmax", "ymin", "ymax" };
   for (int k = 0; k < 4; ++k)
@@ -405,6 +406,14 @@ tessera::Window ChooseWindow(const double bounds[4],
         " (xmin, xmax, ymin, ymax = " + BoundsText(bounds) + ")");
     }
   }
+}
+
+/// The window of the WindowBounds rectangle (when it is not empty) and the constraints (a, b, c
+/// of a x + b y + c < 0, three numbers each); nothing when neither is given.
+std::optional<tessera::Window> ConstraintsWindow(const double bounds[4],
+  const std::vector<double>& constraints,
+  bool needArea)
+{
   std::vector<tessera::HalfPlane> halfPlanes;
   // Errors name the rectangle's sides as such and the user's constraints by their own numbers
   // (AddWindowConstraint's order, from 0), not by their place after the sides.
@@ -427,38 +436,46 @@ tessera::Window ChooseWindow(const double bounds[4],
     halfPlanes.push_back({ constraints[k], constraints[k + 1], constraints[k + 2] });
     naming.Each.push_back("window constraint " + std::to_string(userCount));
   }
-  if (!halfPlanes.empty())
+  if (halfPlanes.empty())
   {
-    if (haveBounds && userCount == 0)
-    {
-      return Representable(
-        tessera::Window::Rectangle(bounds[0], bounds[1], bounds[2], bounds[3], "the WindowBounds"),
-        needArea,
-        SmallerBounds);
-    }
+    return std::nullopt;
+  }
+  if (haveBounds && userCount == 0)
+  {
+    return Representable(
+      tessera::Window::Rectangle(bounds[0], bounds[1], bounds[2], bounds[3], "the WindowBounds"),
+      needArea,
+      SmallerBounds);
+  }
+  if (haveBounds)
+  {
+    naming.All = "WindowBounds and the " + std::to_string(userCount) + " window constraint" +
+      (userCount == 1 ? "" : "s");
+  }
+  try
+  {
+    return Representable(tessera::Window(halfPlanes, naming), needArea, SmallerBounds);
+  }
+  catch (const tessera::UnboundedWindowError& error)
+  {
+    // A constraint meant to cut a corner off the automatic window (ParaView's panel shows
+    // WindowBounds empty by default) makes the constraints the whole window.
     if (haveBounds)
     {
-      naming.All = "WindowBounds and the " + std::to_string(userCount) + " window constraint" +
-        (userCount == 1 ? "" : "s");
+      throw;
     }
-    try
-    {
-      return Representable(tessera::Window(halfPlanes, naming), needArea, SmallerBounds);
-    }
-    catch (const tessera::UnboundedWindowError& error)
-    {
-      // A constraint meant to cut a corner off the automatic window (ParaView's panel shows
-      // WindowBounds empty by default) makes the constraints the whole window.
-      if (haveBounds)
-      {
-        throw;
-      }
-      throw tessera::InputError(std::string(error.what()) +
-        " (with WindowBounds empty the window is the constraints alone, not the points' padded "
-        "bounding box: set WindowBounds for the constraints to cut, or add constraints that close "
-        "the window)");
-    }
+    throw tessera::InputError(std::string(error.what()) +
+      " (with WindowBounds empty the window is the constraints alone, not the points' padded "
+      "bounding box: set WindowBounds for the constraints to cut, or add constraints that close "
+      "the window)");
   }
+}
+
+/// The automatic window: the points' bounding box padded by padding times its larger side.
+tessera::Window PaddedPointsWindow(double padding,
+  const std::vector<tessera::Point2>& points,
+  bool needArea)
+{
   if (!(padding >= 0.0) || !std::isfinite(padding))
   {
     throw tessera::InputError(
@@ -510,6 +527,22 @@ tessera::Window ChooseWindow(const double bounds[4],
                          " (the points' bounding box, padded)"),
     needArea,
     PaddingAdvice(padding, side, smallest));
+}
+
+} // namespace
+
+tessera::Window ChooseWindow(const double bounds[4],
+  const std::vector<double>& constraints,
+  double padding,
+  const std::vector<tessera::Point2>& points,
+  bool needArea)
+{
+  CheckBoundsFinite(bounds);
+  if (std::optional<tessera::Window> window = ConstraintsWindow(bounds, constraints, needArea))
+  {
+    return std::move(*window);
+  }
+  return PaddedPointsWindow(padding, points, needArea);
 }
 
 void CheckChoice(const char* property, int value, const std::vector<const char*>& names)
@@ -1430,13 +1463,13 @@ vtkSmartPointer<vtkPointSet> VertexArraysAsPointData(vtkPointSet* points,
   return WithVertexAttributes(points, cellOf, wanted);
 }
 
-vtkSmartPointer<vtkPolyData> MergedPoints(vtkCompositeDataSet* composite,
-  const std::vector<std::string>& arrays,
-  std::map<std::string, std::string>* dropped)
+namespace
 {
-  const std::vector<PointLeaf> leaves = PointLeaves(composite);
-  auto merged = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
+
+/// The leaves' points, in block order.
+vtkSmartPointer<vtkPoints> JoinedLeafPoints(const std::vector<PointLeaf>& leaves)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
   for (const PointLeaf& leaf : leaves)
   {
@@ -1445,32 +1478,73 @@ vtkSmartPointer<vtkPolyData> MergedPoints(vtkCompositeDataSet* composite,
       points->InsertNextPoint(leaf.Set->GetPoint(p));
     }
   }
-  merged->SetPoints(points);
-  std::vector<std::string> names = arrays;
-  if (arrays.empty())
+  return points;
+}
+
+/// The names of every leaf's arrays, in the order first met; the problems of arrays that cannot
+/// be joined by name go to dropped[""] (when given).
+std::vector<std::string> AllLeafArrayNames(const std::vector<PointLeaf>& leaves,
+  std::map<std::string, std::string>* dropped)
+{
+  std::vector<std::string> names;
+  for (const PointLeaf& leaf : leaves)
   {
-    for (const PointLeaf& leaf : leaves)
+    // Cell data of any leaf: a leaf whose cells are not one vertex per point (a multipoint
+    // feature) cannot carry it, and JoinProblem says so rather than it being left out unsaid.
+    for (const std::string& name : ArrayNames(leaf.Set))
     {
-      // Cell data of any leaf: a leaf whose cells are not one vertex per point (a multipoint
-      // feature) cannot carry it, and JoinProblem says so rather than it being left out unsaid.
-      for (const std::string& name : ArrayNames(leaf.Set))
+      if (std::find(names.begin(), names.end(), name) == names.end())
       {
-        if (std::find(names.begin(), names.end(), name) == names.end())
-        {
-          names.push_back(name);
-        }
+        names.push_back(name);
       }
-      for (const std::string& problem :
-        { UnnamedArraysProblem(leaf), HiddenCellArraysProblem(leaf.Set, leaf.Label) })
+    }
+    for (const std::string& problem :
+      { UnnamedArraysProblem(leaf), HiddenCellArraysProblem(leaf.Set, leaf.Label) })
+    {
+      if (dropped && !problem.empty())
       {
-        if (dropped && !problem.empty())
-        {
-          std::string& all = (*dropped)[std::string()];
-          all += (all.empty() ? "" : "; ") + problem;
-        }
+        std::string& all = (*dropped)[std::string()];
+        all += (all.empty() ? "" : "; ") + problem;
       }
     }
   }
+  return names;
+}
+
+/// The leaves' arrays of one name (JoinProblem found none missing or of another type) joined
+/// into one, a tuple per point in block order; null for no leaves.
+vtkSmartPointer<vtkAbstractArray> JoinedLeafArray(const std::vector<PointLeaf>& leaves,
+  const std::string& name)
+{
+  vtkSmartPointer<vtkAbstractArray> joined;
+  for (const PointLeaf& leaf : leaves)
+  {
+    const LeafArray found = FindLeafArray(leaf.Set, name, leaf.CellOf);
+    if (!joined)
+    {
+      joined.TakeReference(found.Array->NewInstance());
+      joined->SetName(name.c_str());
+      joined->SetNumberOfComponents(found.Array->GetNumberOfComponents());
+    }
+    for (vtkIdType p = 0; p < leaf.Set->GetNumberOfPoints(); ++p)
+    {
+      joined->InsertNextTuple(found.Row(p), found.Array);
+    }
+  }
+  return joined;
+}
+
+} // namespace
+
+vtkSmartPointer<vtkPolyData> MergedPoints(vtkCompositeDataSet* composite,
+  const std::vector<std::string>& arrays,
+  std::map<std::string, std::string>* dropped)
+{
+  const std::vector<PointLeaf> leaves = PointLeaves(composite);
+  auto merged = vtkSmartPointer<vtkPolyData>::New();
+  merged->SetPoints(JoinedLeafPoints(leaves));
+  const std::vector<std::string> names =
+    arrays.empty() ? AllLeafArrayNames(leaves, dropped) : arrays;
   for (const std::string& name : names)
   {
     const std::string problem = JoinProblem(leaves, name);
@@ -1483,22 +1557,7 @@ vtkSmartPointer<vtkPolyData> MergedPoints(vtkCompositeDataSet* composite,
       dropped->emplace(name, problem);
       continue;
     }
-    vtkSmartPointer<vtkAbstractArray> joined;
-    for (const PointLeaf& leaf : leaves)
-    {
-      const LeafArray found = FindLeafArray(leaf.Set, name, leaf.CellOf);
-      if (!joined)
-      {
-        joined.TakeReference(found.Array->NewInstance());
-        joined->SetName(name.c_str());
-        joined->SetNumberOfComponents(found.Array->GetNumberOfComponents());
-      }
-      for (vtkIdType p = 0; p < leaf.Set->GetNumberOfPoints(); ++p)
-      {
-        joined->InsertNextTuple(found.Row(p), found.Array);
-      }
-    }
-    if (joined)
+    if (vtkSmartPointer<vtkAbstractArray> joined = JoinedLeafArray(leaves, name))
     {
       merged->GetPointData()->AddArray(joined);
     }
