@@ -100,6 +100,7 @@
 #include <string> // For ClipTilesOf
 #include <vector> // For ClipTilesOf
 
+class vtkCompositeDataSet;
 class vtkPointSet;
 
 namespace tessera
@@ -134,6 +135,39 @@ protected:
   int FillOutputPortInformation(int port, vtkInformation* info) override;
 
 private:
+  /// RequestData's work, its errors thrown: the inputs and the window checked, the tiles clipped by
+  /// the window (ClipTiles), the warnings given as they come.
+  void ClipByWindow(vtkDataObject* tilesData,
+    vtkDataObject* windowData,
+    vtkDataObject* output,
+    vtkDataObject* outlines,
+    vtkInformationVector* outputVector);
+
+  /// Clips the tiles, a point set (ClipTilesOf) or a composite of them (ClipBlocks, into outputs
+  /// of its structure), by the window (catchment, scaled by 2^exponent); gives their warnings.
+  void ClipTiles(vtkDataObject* tilesData,
+    vtkDataObject* windowData,
+    const tessera::Catchment& catchment,
+    int exponent,
+    vtkDataObject* output,
+    vtkDataObject* outlines);
+
+  /// Clips each block of tiles alone (ClipTilesOf) into the same block of outBlocks and
+  /// outlineBlocks; returns the blocks' warnings, each naming its block.
+  std::vector<std::string> ClipBlocks(vtkCompositeDataSet* blocks,
+    vtkDataObject* windowData,
+    const tessera::Catchment& catchment,
+    int exponent,
+    vtkCompositeDataSet* outBlocks,
+    vtkCompositeDataSet* outlineBlocks);
+
+  /// Gives the first 5 of the blocks' warnings, then one counting the rest.
+  void WarnFirstFew(const std::vector<std::string>& warnings);
+  /// Gives each warning.
+  void WarnEach(const std::vector<std::string>& warnings);
+  /// Gives the warning unless it is empty.
+  void WarnIfAny(const std::string& warning);
+
   /// Clips one point set of tiles into output and their outlines into outlines, its messages
   /// prefixed by block ("" for a point set input; "block 1 (composite index 2) of input 0: " for
   /// a block), its progress running from progressFrom to progressTo. Returns its warnings, so
