@@ -150,6 +150,218 @@ std::string OffPlaneWarning(vtkPoints* points)
     ": only x and y are read, so the points are grouped as they lie in the plane z = 0, where "
     "the contours, curves and image are (give points whose curves lie in the x-y plane)";
 }
+
+/// Each warning, in order, from the filter.
+void WarnEach(vtkRidgeGrouping* self, const std::vector<std::string>& warnings)
+{
+  for (const std::string& warning : warnings)
+  {
+    vtkWarningWithObjectMacro(self, << warning);
+  }
+}
+
+/// The warning from the filter, unless it is "".
+void WarnUnlessEmpty(vtkRidgeGrouping* self, const std::string& warning)
+{
+  if (!warning.empty())
+  {
+    vtkWarningWithObjectMacro(self, << warning);
+  }
+}
+
+/// The core's grouping of the points, over progress 0.05 to 0.9, with its warnings given.
+tessera::RidgeGroupingResult RunGrouping(vtkRidgeGrouping* self,
+  const std::vector<tessera::Point2>& points)
+{
+  const tessera::RidgeGrouping grouping(CoreSettings(self));
+  tessera_vtk::ProgressOrStop(self, 0.05);
+  tessera::RidgeGroupingResult result =
+    grouping.Run(points, tessera_vtk::StageProgress(self, 0.05, 0.9));
+  WarnEach(self, result.Warnings);
+  return result;
+}
+
+/// Output 0's geometry: the input's points, one vertex each, with the input's point data.
+void PassPointsAsVertices(vtkPointSet* input, vtkIdType n, vtkPolyData* pointsOut)
+{
+  if (input->GetPoints())
+  {
+    pointsOut->SetPoints(input->GetPoints());
+  }
+  vtkNew<vtkCellArray> verts;
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    verts->InsertNextCell(1, &i);
+  }
+  pointsOut->SetVerts(verts);
+  pointsOut->GetPointData()->PassData(input->GetPointData());
+}
+
+/// Output 0's point data GroupId, Node and ContourDistance (input arrays of those names renamed).
+void AddGroupArrays(vtkRidgeGrouping* self,
+  const tessera::RidgeGroupingResult& result,
+  vtkIdType n,
+  vtkPolyData* pointsOut)
+{
+  // (copies: the passed arrays are the input's, which keep their names)
+  const tessera_vtk::RenamedArrays renamed = tessera_vtk::RenameArraysNamed(
+    pointsOut->GetPointData(), { "GroupId", "Node", "ContourDistance" }, true);
+  if (!renamed.empty())
+  {
+    vtkWarningWithObjectMacro(
+      self, << tessera_vtk::RenamedArraysWarning(renamed, "point-data", "output 0", "point"));
+  }
+  vtkNew<vtkIntArray> groups;
+  groups->SetName("GroupId");
+  vtkNew<vtkDoubleArray> nodes;
+  nodes->SetName("Node");
+  vtkNew<vtkDoubleArray> distances;
+  distances->SetName("ContourDistance");
+  groups->SetNumberOfValues(n);
+  nodes->SetNumberOfValues(n);
+  distances->SetNumberOfValues(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    groups->SetValue(i, result.GroupId.empty() ? -1 : result.GroupId[i]);
+    nodes->SetValue(i, result.Node.empty() ? 0.0 : result.Node[i]);
+    distances->SetValue(i,
+      result.ContourDistance.empty() ? std::numeric_limits<double>::quiet_NaN()
+                                     : result.ContourDistance[i]);
+  }
+  pointsOut->GetPointData()->AddArray(groups);
+  pointsOut->GetPointData()->AddArray(nodes);
+  pointsOut->GetPointData()->AddArray(distances);
+  pointsOut->GetPointData()->SetActiveScalars("GroupId"); // (ParaView colours the groups)
+}
+
+/// Output 0's field data: the image's size, pixel size and error bound, and the duplicates.
+void AddGroupingFieldData(vtkRidgeGrouping* self,
+  const tessera::RidgeGroupingResult& result,
+  vtkPolyData* pointsOut)
+{
+  // The input's field data (passed on by the pipeline) keeps arrays of these names as NAME_input.
+  const tessera_vtk::RenamedArrays renamedFields =
+    tessera_vtk::RenameArraysNamed(pointsOut->GetFieldData(),
+      { "ImageSize", "PixelSize", "FieldErrorBound", "DuplicatePointIds", "DuplicateOfPointIds" },
+      true);
+  if (!renamedFields.empty())
+  {
+    vtkWarningWithObjectMacro(
+      self, << tessera_vtk::RenamedArraysWarning(renamedFields, "field-data", "output 0", "field"));
+  }
+  AddScalar(pointsOut->GetFieldData(), "ImageSize", result.ImageSize);
+  AddScalar(pointsOut->GetFieldData(), "PixelSize", result.PixelSize);
+  AddScalar(pointsOut->GetFieldData(), "FieldErrorBound", result.FieldErrorBound);
+  tessera_vtk::AddDuplicatePointIds(pointsOut, result.Duplicates);
+}
+
+/// Output 1: the ridge contours with cell data ContourId, Closed and Length.
+void WriteContours(const tessera::RidgeGroupingResult& result, vtkPolyData* contoursOut)
+{
+  WritePolylines(result.Contours, result.ContourClosed, contoursOut);
+  vtkNew<vtkIntArray> contourIds;
+  contourIds->SetName("ContourId");
+  vtkNew<vtkDoubleArray> lengths;
+  lengths->SetName("Length");
+  for (int k = 0; k < result.Contours.Count(); ++k)
+  {
+    contourIds->InsertNextValue(k);
+    lengths->InsertNextValue(result.ContourLength[k]);
+  }
+  contoursOut->GetCellData()->AddArray(contourIds);
+  contoursOut->GetCellData()->AddArray(ByteArray("Closed", result.ContourClosed));
+  contoursOut->GetCellData()->AddArray(lengths);
+  contoursOut->GetCellData()->SetActiveScalars(contourIds->GetName());
+}
+
+/// Output 2: the fitted curves with cell data GroupId and Closed.
+void WriteCurves(const tessera::RidgeGroupingResult& result, vtkPolyData* curvesOut)
+{
+  WritePolylines(result.Curves, result.CurveClosed, curvesOut);
+  vtkNew<vtkIntArray> curveGroups;
+  curveGroups->SetName("GroupId");
+  for (int g : result.CurveGroupId)
+  {
+    curveGroups->InsertNextValue(g);
+  }
+  curvesOut->GetCellData()->AddArray(curveGroups);
+  curvesOut->GetCellData()->AddArray(ByteArray("Closed", result.CurveClosed));
+  curvesOut->GetCellData()->SetActiveScalars("GroupId");
+}
+
+/// The warning that the grid made differs from the width x height pixels announced.
+void WarnOfUnannouncedGrid(vtkRidgeGrouping* self,
+  const tessera::PixelGrid& grid,
+  int width,
+  int height)
+{
+  vtkWarningWithObjectMacro(self,
+    << "the field image's grid (" << grid.Width << " x " << grid.Height
+    << " pixels, from the points at this time) differs from the one announced "
+       "to the pipeline, from the points when it last asked ("
+    << width << " x " << height
+    << "): it is given on the announced pixels from its lower left corner, "
+    << (grid.Width > width || grid.Height > height ? "cropped" : "padded")
+    << " (Field NaN, ridges 0 where padded); modify the filter to announce "
+       "the new grid");
+}
+
+/// The image's point data Field, MinorRidge and MajorRidge on outWidth x outHeight pixels.
+void AddFieldArrays(const tessera::RidgeGroupingResult& result,
+  int outWidth,
+  int outHeight,
+  vtkImageData* imageOut)
+{
+  const tessera::PixelGrid& grid = result.Grid;
+  vtkNew<vtkDoubleArray> field;
+  field->SetName("Field");
+  CopyOntoImage(
+    result.Field, grid, outWidth, outHeight, std::numeric_limits<double>::quiet_NaN(), field.Get());
+  imageOut->GetPointData()->AddArray(field);
+  imageOut->GetPointData()->SetActiveScalars("Field");
+  for (const auto& [name, ridge] : { std::make_pair("MinorRidge", &result.MinorRidge),
+         std::make_pair("MajorRidge", &result.MajorRidge) })
+  {
+    vtkNew<vtkUnsignedCharArray> mask;
+    mask->SetName(name);
+    CopyOntoImage(*ridge, grid, outWidth, outHeight, std::uint8_t(0), mask.Get());
+    imageOut->GetPointData()->AddArray(mask);
+  }
+}
+
+/// Output 3: the field image, on the extent announced in imageInfo.
+void WriteFieldImage(vtkRidgeGrouping* self,
+  const tessera::RidgeGroupingResult& result,
+  vtkInformation* imageInfo,
+  vtkImageData* imageOut)
+{
+  const tessera::PixelGrid& grid = result.Grid;
+  int advertised[6] = { 0, -1, 0, -1, 0, -1 };
+  imageInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), advertised);
+  int made[6];
+  ExtentOf(grid, made);
+  // The image keeps the extent announced: RequestInformation chose it from the points as they
+  // were then, and a change of time alone does not run it again, while consumers ask for that
+  // extent (the made one, advertised instead, failed their next request with VTK's extent
+  // errors, and the filter's outputs stayed at the last time). A grid of another size is given
+  // on the announced pixels from its lower left corner, cropped or padded.
+  const int width = advertised[1] - advertised[0] + 1;
+  const int height = advertised[3] - advertised[2] + 1;
+  const bool fits = std::equal(made, made + 6, advertised);
+  if (!fits && width > 0 && height > 0 && grid.PixelCount() > 0)
+  {
+    WarnOfUnannouncedGrid(self, grid, width, height);
+  }
+  const int outWidth = fits || width <= 0 ? grid.Width : width;
+  const int outHeight = fits || height <= 0 ? grid.Height : height;
+  imageOut->SetDimensions(outWidth, outHeight, grid.PixelCount() > 0 ? 1 : 0);
+  imageOut->SetOrigin(grid.OriginX, grid.OriginY, 0.0);
+  imageOut->SetSpacing(grid.Spacing, grid.Spacing, 1.0);
+  if (grid.PixelCount() > 0)
+  {
+    AddFieldArrays(result, outWidth, outHeight, imageOut);
+  }
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -239,163 +451,26 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     tessera_vtk::CheckChoice("JoinRule", this->JoinRule, { "Longest", "ClosestTangent" });
     std::vector<std::string> notCarried;
     const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(inputData, notCarried);
-    for (const std::string& warning : notCarried)
-    {
-      vtkWarningMacro(<< warning);
-    }
+    WarnEach(this, notCarried);
     const std::vector<tessera::Point2> points =
       tessera_vtk::ReadPoints2D(input->GetPoints(), inputData);
-    const std::string offPlane = OffPlaneWarning(input->GetPoints());
-    if (!offPlane.empty())
-    {
-      vtkWarningMacro(<< offPlane);
-    }
-    const tessera::RidgeGrouping grouping(CoreSettings(this));
-    tessera_vtk::ProgressOrStop(this, 0.05);
-    const tessera::RidgeGroupingResult result =
-      grouping.Run(points, tessera_vtk::StageProgress(this, 0.05, 0.9));
-    for (const std::string& warning : result.Warnings)
-    {
-      vtkWarningMacro(<< warning);
-    }
+    WarnUnlessEmpty(this, OffPlaneWarning(input->GetPoints()));
+    const tessera::RidgeGroupingResult result = RunGrouping(this, points);
 
     // Output 0: the points with GroupId and Node.
     const vtkIdType n = static_cast<vtkIdType>(points.size());
-    if (input->GetPoints())
-    {
-      pointsOut->SetPoints(input->GetPoints());
-    }
-    vtkNew<vtkCellArray> verts;
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      verts->InsertNextCell(1, &i);
-    }
-    pointsOut->SetVerts(verts);
-    pointsOut->GetPointData()->PassData(input->GetPointData());
-    // (copies: the passed arrays are the input's, which keep their names)
-    const tessera_vtk::RenamedArrays renamed = tessera_vtk::RenameArraysNamed(
-      pointsOut->GetPointData(), { "GroupId", "Node", "ContourDistance" }, true);
-    if (!renamed.empty())
-    {
-      vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
-                        renamed, "point-data", "output 0", "point"));
-    }
-    vtkNew<vtkIntArray> groups;
-    groups->SetName("GroupId");
-    vtkNew<vtkDoubleArray> nodes;
-    nodes->SetName("Node");
-    vtkNew<vtkDoubleArray> distances;
-    distances->SetName("ContourDistance");
-    groups->SetNumberOfValues(n);
-    nodes->SetNumberOfValues(n);
-    distances->SetNumberOfValues(n);
-    for (vtkIdType i = 0; i < n; ++i)
-    {
-      groups->SetValue(i, result.GroupId.empty() ? -1 : result.GroupId[i]);
-      nodes->SetValue(i, result.Node.empty() ? 0.0 : result.Node[i]);
-      distances->SetValue(i,
-        result.ContourDistance.empty() ? std::numeric_limits<double>::quiet_NaN()
-                                       : result.ContourDistance[i]);
-    }
-    pointsOut->GetPointData()->AddArray(groups);
-    pointsOut->GetPointData()->AddArray(nodes);
-    pointsOut->GetPointData()->AddArray(distances);
-    pointsOut->GetPointData()->SetActiveScalars("GroupId"); // (ParaView colours the groups)
-    // The input's field data (passed on by the pipeline) keeps arrays of these names as NAME_input.
-    const tessera_vtk::RenamedArrays renamedFields =
-      tessera_vtk::RenameArraysNamed(pointsOut->GetFieldData(),
-        { "ImageSize", "PixelSize", "FieldErrorBound", "DuplicatePointIds", "DuplicateOfPointIds" },
-        true);
-    if (!renamedFields.empty())
-    {
-      vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
-                        renamedFields, "field-data", "output 0", "field"));
-    }
-    AddScalar(pointsOut->GetFieldData(), "ImageSize", result.ImageSize);
-    AddScalar(pointsOut->GetFieldData(), "PixelSize", result.PixelSize);
-    AddScalar(pointsOut->GetFieldData(), "FieldErrorBound", result.FieldErrorBound);
-    tessera_vtk::AddDuplicatePointIds(pointsOut, result.Duplicates);
+    PassPointsAsVertices(input, n, pointsOut);
+    AddGroupArrays(this, result, n, pointsOut);
+    AddGroupingFieldData(this, result, pointsOut);
 
     // Output 1: ridge contours.
-    WritePolylines(result.Contours, result.ContourClosed, contoursOut);
-    vtkNew<vtkIntArray> contourIds;
-    contourIds->SetName("ContourId");
-    vtkNew<vtkDoubleArray> lengths;
-    lengths->SetName("Length");
-    for (int k = 0; k < result.Contours.Count(); ++k)
-    {
-      contourIds->InsertNextValue(k);
-      lengths->InsertNextValue(result.ContourLength[k]);
-    }
-    contoursOut->GetCellData()->AddArray(contourIds);
-    contoursOut->GetCellData()->AddArray(ByteArray("Closed", result.ContourClosed));
-    contoursOut->GetCellData()->AddArray(lengths);
-    contoursOut->GetCellData()->SetActiveScalars(contourIds->GetName());
+    WriteContours(result, contoursOut);
 
     // Output 2: fitted curves.
-    WritePolylines(result.Curves, result.CurveClosed, curvesOut);
-    vtkNew<vtkIntArray> curveGroups;
-    curveGroups->SetName("GroupId");
-    for (int g : result.CurveGroupId)
-    {
-      curveGroups->InsertNextValue(g);
-    }
-    curvesOut->GetCellData()->AddArray(curveGroups);
-    curvesOut->GetCellData()->AddArray(ByteArray("Closed", result.CurveClosed));
-    curvesOut->GetCellData()->SetActiveScalars("GroupId");
+    WriteCurves(result, curvesOut);
 
     // Output 3: the field image.
-    const tessera::PixelGrid& grid = result.Grid;
-    vtkInformation* imageInfo = outputVector->GetInformationObject(3);
-    int advertised[6] = { 0, -1, 0, -1, 0, -1 };
-    imageInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), advertised);
-    int made[6];
-    ExtentOf(grid, made);
-    // The image keeps the extent announced: RequestInformation chose it from the points as they
-    // were then, and a change of time alone does not run it again, while consumers ask for that
-    // extent (the made one, advertised instead, failed their next request with VTK's extent
-    // errors, and the filter's outputs stayed at the last time). A grid of another size is given
-    // on the announced pixels from its lower left corner, cropped or padded.
-    const int width = advertised[1] - advertised[0] + 1;
-    const int height = advertised[3] - advertised[2] + 1;
-    const bool fits = std::equal(made, made + 6, advertised);
-    if (!fits && width > 0 && height > 0 && grid.PixelCount() > 0)
-    {
-      vtkWarningMacro(<< "the field image's grid (" << grid.Width << " x " << grid.Height
-                      << " pixels, from the points at this time) differs from the one announced "
-                         "to the pipeline, from the points when it last asked ("
-                      << width << " x " << height
-                      << "): it is given on the announced pixels from its lower left corner, "
-                      << (grid.Width > width || grid.Height > height ? "cropped" : "padded")
-                      << " (Field NaN, ridges 0 where padded); modify the filter to announce "
-                         "the new grid");
-    }
-    const int outWidth = fits || width <= 0 ? grid.Width : width;
-    const int outHeight = fits || height <= 0 ? grid.Height : height;
-    imageOut->SetDimensions(outWidth, outHeight, grid.PixelCount() > 0 ? 1 : 0);
-    imageOut->SetOrigin(grid.OriginX, grid.OriginY, 0.0);
-    imageOut->SetSpacing(grid.Spacing, grid.Spacing, 1.0);
-    if (grid.PixelCount() > 0)
-    {
-      vtkNew<vtkDoubleArray> field;
-      field->SetName("Field");
-      CopyOntoImage(result.Field,
-        grid,
-        outWidth,
-        outHeight,
-        std::numeric_limits<double>::quiet_NaN(),
-        field.Get());
-      imageOut->GetPointData()->AddArray(field);
-      imageOut->GetPointData()->SetActiveScalars("Field");
-      for (const auto& [name, ridge] : { std::make_pair("MinorRidge", &result.MinorRidge),
-             std::make_pair("MajorRidge", &result.MajorRidge) })
-      {
-        vtkNew<vtkUnsignedCharArray> mask;
-        mask->SetName(name);
-        CopyOntoImage(*ridge, grid, outWidth, outHeight, std::uint8_t(0), mask.Get());
-        imageOut->GetPointData()->AddArray(mask);
-      }
-    }
+    WriteFieldImage(this, result, outputVector->GetInformationObject(3), imageOut);
     for (vtkDataObject* output : { static_cast<vtkDataObject*>(pointsOut),
            static_cast<vtkDataObject*>(contoursOut),
            static_cast<vtkDataObject*>(curvesOut),
