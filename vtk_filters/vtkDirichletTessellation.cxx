@@ -430,6 +430,194 @@ std::string AreasUnderflowWarning(const tessera::UninitializedVector<double>& ar
     "shapes are exact; scale the coordinates nearer 1 (by a power of two to keep them exact) "
     "where the areas are wanted";
 }
+
+/// The window the tiles fill (tessera_vtk::ChooseWindow), after the warning for an empty
+/// WindowBounds, if it is.
+tessera::Window MakeWindow(vtkDirichletTessellation* self,
+  const double bounds[4],
+  const std::vector<double>& constraints,
+  double padding,
+  const std::vector<tessera::Point2>& points)
+{
+  // (Before the window is made: an empty WindowBounds is ignored, and a window of the
+  // constraints alone may then be refused, which the warning explains.)
+  const std::string emptyBounds = tessera_vtk::EmptyBoundsWarning(bounds, !constraints.empty());
+  if (!emptyBounds.empty())
+  {
+    vtkWarningWithObjectMacro(self, << emptyBounds);
+  }
+  return tessera_vtk::ChooseWindow(bounds, constraints, padding, points);
+}
+
+/// Tiles scaled by 2^-exponent back to the input's coordinates, with a warning where their areas
+/// underflow there.
+void ScaleTilesBack(vtkDirichletTessellation* self, tessera::TileMesh& tiles, int exponent)
+{
+  tessera::ScaleByPowerOfTwo(tiles, -exponent);
+  const std::string beyond = AreasUnderflowWarning(tiles.Areas);
+  if (!beyond.empty())
+  {
+    vtkWarningWithObjectMacro(self, << beyond);
+  }
+}
+
+/// The tessellation of the points in the window by either engine (progress 0.1 to 0.75), its
+/// tiles checked to fill the window, in the input's coordinates.
+TessellationResult Tessellate(vtkDirichletTessellation* self,
+  tessera::Window window,
+  std::vector<tessera::Point2> points,
+  bool brasselReif,
+  bool withGraph)
+{
+  // Coordinates of some 1e100 or 1e-100: both engines work on points and window scaled by a
+  // power of two (exactly) into the range where the tiles' window decisions are exact
+  // (window_predicates.h), and the tiles are scaled back.
+  if (brasselReif && window.IsAxisAlignedRectangle())
+  {
+    tessera::CheckSidesAreDoubles(window); // (before scaling: its message gives the side as set)
+  }
+  const int exponent = tessera::ScaleIntoExactRange(window, points);
+  if (!brasselReif) // (its sweep's tests keep their range)
+  {
+    tessera::CheckPointsInExactRange(window, points, exponent);
+  }
+  const double windowArea = window.Area();
+  const double cornerRounding = tessera::CornerRoundingOfTiles(window);
+  tessera_vtk::ProgressOrStop(self, 0.1);
+  TessellationResult result = brasselReif
+    ? RunBrasselReif(window, std::move(points), self)
+    : RunGreenSibson(std::move(window), std::move(points), withGraph, self);
+  tessera::CheckTilesFillWindow(result.Tiles, windowArea, cornerRounding);
+  if (exponent != 0)
+  {
+    ScaleTilesBack(self, result.Tiles, exponent);
+  }
+  return result;
+}
+
+/// The tiles' points, ids and the graph's counts, then the tiles' cell data and the graph's
+/// lines, filled by the writers.
+void FillOutputs(TileWriter& tiles, std::optional<GraphWriter>& graph)
+{
+  // Two threads for large outputs: first the points, the tiles' ids and the graph's counts in
+  // two halves (first touching the output's pages), then the cell data (VTK calls: this
+  // thread) beside the graph's lines.
+  const bool beside = tessera::parallel::ThreadCount(tiles.Count(), 25000) > 1;
+  const vtkIdType half = tiles.Count() / 2;
+  const vtkIdType halfPoints = tiles.PointCount() / 2;
+  tessera::parallel::RunSideBySide(
+    beside,
+    [&]()
+    {
+      tiles.CopyVertices(0, halfPoints);
+      tiles.CopyConnectivity(0, half);
+      if (graph)
+      {
+        graph->Count(0);
+      }
+    },
+    [&]()
+    {
+      tiles.CopyVertices(halfPoints, tiles.PointCount());
+      tiles.CopyConnectivity(half, tiles.Count());
+      if (graph)
+      {
+        graph->Count(1);
+      }
+    });
+  if (graph)
+  {
+    graph->Place(); // both halves counted
+  }
+  tessera::parallel::RunSideBySide(
+    beside,
+    [&]() { tiles.FillCellData(); },
+    [&]()
+    {
+      if (graph)
+      {
+        graph->Scatter(0);
+        graph->Scatter(1);
+      }
+    });
+}
+
+/// The arrays that writing the outputs passed under other names, for the warnings that come last.
+struct RenamedOnOutputs
+{
+  tessera_vtk::RenamedArrays TilePointData; // the input's point data, as the tiles' cell data
+  tessera_vtk::RenamedArrays FieldData;     // the field data of both outputs
+};
+
+/// Output 0 (the tiles) and output 1 (the contiguity graph, or nothing without it), both with
+/// the unused points' field data.
+RenamedOnOutputs WriteOutputs(const TessellationResult& result,
+  vtkPointSet* input,
+  bool withGraph,
+  vtkPolyData* tilesOutput,
+  vtkPolyData* graphOutput)
+{
+  std::optional<GraphWriter> graph; // none: output 1 stays empty (its field data passed)
+  if (withGraph)
+  {
+    graph.emplace(result.Graph, input, graphOutput);
+  }
+  TileWriter tiles(result.Tiles, input, tilesOutput);
+  FillOutputs(tiles, graph);
+  tiles.Attach();
+  const tessera_vtk::RenamedArrays renamedFields =
+    tessera_vtk::AddUnusedPointIds(tilesOutput, result.Rejected, result.Duplicates);
+  if (graph)
+  {
+    graph->Attach(graphOutput);
+  }
+  // With the graph off too: output 1 carries the same field data as output 0.
+  tessera_vtk::AddUnusedPointIds(graphOutput, result.Rejected, result.Duplicates);
+  return { tiles.RenamedArrays(), renamedFields };
+}
+
+/// The warnings for points given no tile (rejected or duplicates), for a window with no point in
+/// it, and for tiles collapsed to no area.
+void WarnOfUnusedPointsAndCollapsedTiles(vtkDirichletTessellation* self,
+  const TessellationResult& result,
+  const tessera::Box2& windowBox,
+  vtkPoints* inputPoints)
+{
+  const std::string unused =
+    tessera_vtk::UnusedPointsWarning(result.Rejected, result.Duplicates, "used");
+  if (!unused.empty())
+  {
+    vtkWarningWithObjectMacro(self, << unused);
+  }
+  const std::string noPointIn =
+    tessera_vtk::NoPointInWindowWarning(windowBox, inputPoints, result.Rejected.size(), "tile");
+  if (!noPointIn.empty())
+  {
+    vtkWarningWithObjectMacro(self, << noPointIn);
+  }
+  const std::string collapsed = CollapsedTilesWarning(result.Tiles);
+  if (!collapsed.empty())
+  {
+    vtkWarningWithObjectMacro(self, << collapsed);
+  }
+}
+
+/// The warnings for the input's arrays passed under other names.
+void WarnOfRenamedArrays(vtkDirichletTessellation* self, const RenamedOnOutputs& renamed)
+{
+  if (!renamed.TilePointData.empty())
+  {
+    vtkWarningWithObjectMacro(self,
+      << tessera_vtk::RenamedArraysWarning(
+           renamed.TilePointData, "point-data", "the tiles", "cell"));
+  }
+  if (!renamed.FieldData.empty())
+  {
+    vtkWarningWithObjectMacro(self,
+      << tessera_vtk::RenamedArraysWarning(
+           renamed.FieldData, "field-data", "both outputs", "field"));
+  }
+}
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -505,129 +693,19 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     {
       vtkWarningMacro(<< tessera_vtk::NoPointsWarning("tile and no contiguity"));
     }
-    // (Before the window is made: an empty WindowBounds is ignored, and a window of the
-    // constraints alone may then be refused, which the warning explains.)
-    const std::string emptyBounds =
-      tessera_vtk::EmptyBoundsWarning(this->WindowBounds, !this->WindowConstraints.empty());
-    if (!emptyBounds.empty())
-    {
-      vtkWarningMacro(<< emptyBounds);
-    }
     tessera::Window window =
-      tessera_vtk::ChooseWindow(this->WindowBounds, this->WindowConstraints, this->Padding, points);
+      MakeWindow(this, this->WindowBounds, this->WindowConstraints, this->Padding, points);
     const tessera::Box2 windowBox = window.Bounds();
-    // Coordinates of some 1e100 or 1e-100: both engines work on points and window scaled by a
-    // power of two (exactly) into the range where the tiles' window decisions are exact
-    // (window_predicates.h), and the tiles are scaled back.
-    if (this->Algorithm == BRASSEL_REIF && window.IsAxisAlignedRectangle())
-    {
-      tessera::CheckSidesAreDoubles(window); // (before scaling: its message gives the side as set)
-    }
-    const int exponent = tessera::ScaleIntoExactRange(window, points);
-    if (this->Algorithm != BRASSEL_REIF) // (its sweep's tests keep their range)
-    {
-      tessera::CheckPointsInExactRange(window, points, exponent);
-    }
-    const double windowArea = window.Area();
-    const double cornerRounding = tessera::CornerRoundingOfTiles(window);
-    tessera_vtk::ProgressOrStop(this, 0.1);
-    TessellationResult result = this->Algorithm == BRASSEL_REIF
-      ? RunBrasselReif(window, std::move(points), this)
-      : RunGreenSibson(std::move(window), std::move(points), this->ComputeContiguityGraph, this);
-    tessera::CheckTilesFillWindow(result.Tiles, windowArea, cornerRounding);
-    if (exponent != 0)
-    {
-      tessera::ScaleByPowerOfTwo(result.Tiles, -exponent);
-      const std::string beyond = AreasUnderflowWarning(result.Tiles.Areas);
-      if (!beyond.empty())
-      {
-        vtkWarningMacro(<< beyond);
-      }
-    }
+    const TessellationResult result = Tessellate(this,
+      std::move(window),
+      std::move(points),
+      this->Algorithm == BRASSEL_REIF,
+      this->ComputeContiguityGraph);
     tessera_vtk::ProgressOrStop(this, 0.8);
-    std::optional<GraphWriter> graph; // none: output 1 stays empty (its field data passed)
-    if (this->ComputeContiguityGraph)
-    {
-      graph.emplace(result.Graph, input, graphOutput);
-    }
-    TileWriter tiles(result.Tiles, input, tilesOutput);
-    // Two threads for large outputs: first the points, the tiles' ids and the graph's counts in
-    // two halves (first touching the output's pages), then the cell data (VTK calls: this
-    // thread) beside the graph's lines.
-    const bool beside = tessera::parallel::ThreadCount(tiles.Count(), 25000) > 1;
-    const vtkIdType half = tiles.Count() / 2;
-    const vtkIdType halfPoints = tiles.PointCount() / 2;
-    tessera::parallel::RunSideBySide(
-      beside,
-      [&]()
-      {
-        tiles.CopyVertices(0, halfPoints);
-        tiles.CopyConnectivity(0, half);
-        if (graph)
-        {
-          graph->Count(0);
-        }
-      },
-      [&]()
-      {
-        tiles.CopyVertices(halfPoints, tiles.PointCount());
-        tiles.CopyConnectivity(half, tiles.Count());
-        if (graph)
-        {
-          graph->Count(1);
-        }
-      });
-    if (graph)
-    {
-      graph->Place(); // both halves counted
-    }
-    tessera::parallel::RunSideBySide(
-      beside,
-      [&]() { tiles.FillCellData(); },
-      [&]()
-      {
-        if (graph)
-        {
-          graph->Scatter(0);
-          graph->Scatter(1);
-        }
-      });
-    tiles.Attach();
-    const tessera_vtk::RenamedArrays renamedFields =
-      tessera_vtk::AddUnusedPointIds(tilesOutput, result.Rejected, result.Duplicates);
-    if (graph)
-    {
-      graph->Attach(graphOutput);
-    }
-    // With the graph off too: output 1 carries the same field data as output 0.
-    tessera_vtk::AddUnusedPointIds(graphOutput, result.Rejected, result.Duplicates);
-    const std::string unused =
-      tessera_vtk::UnusedPointsWarning(result.Rejected, result.Duplicates, "used");
-    if (!unused.empty())
-    {
-      vtkWarningMacro(<< unused);
-    }
-    const std::string noPointIn = tessera_vtk::NoPointInWindowWarning(
-      windowBox, input->GetPoints(), result.Rejected.size(), "tile");
-    if (!noPointIn.empty())
-    {
-      vtkWarningMacro(<< noPointIn);
-    }
-    const std::string collapsed = CollapsedTilesWarning(result.Tiles);
-    if (!collapsed.empty())
-    {
-      vtkWarningMacro(<< collapsed);
-    }
-    if (!tiles.RenamedArrays().empty())
-    {
-      vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
-                        tiles.RenamedArrays(), "point-data", "the tiles", "cell"));
-    }
-    if (!renamedFields.empty())
-    {
-      vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
-                        renamedFields, "field-data", "both outputs", "field"));
-    }
+    const RenamedOnOutputs renamed =
+      WriteOutputs(result, input, this->ComputeContiguityGraph, tilesOutput, graphOutput);
+    WarnOfUnusedPointsAndCollapsedTiles(this, result, windowBox, input->GetPoints());
+    WarnOfRenamedArrays(this, renamed);
     tessera_vtk::ListNonEmptyFieldArraysFirst(tilesOutput);
     tessera_vtk::ListNonEmptyFieldArraysFirst(graphOutput);
     return 1;
