@@ -877,6 +877,171 @@ void ProjectPiece(vtkGeographicProjection* self,
   }
 }
 
+/// The output of a process that does not make it: a composite keeps the input's structure.
+void KeepBlockPlaces(vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  // Another process's piece: the first makes the whole output (RequestWholeInputs). Blocks keep
+  // their places on every process (ParaView picks and colours blocks by composite index).
+  auto* compositeIn = vtkCompositeDataSet::GetData(inputVector[0]);
+  auto* compositeOut = vtkCompositeDataSet::GetData(outputVector);
+  if (compositeIn && compositeOut)
+  {
+    compositeOut->CopyStructure(compositeIn);
+  }
+}
+
+/// Refuses a Projection that is none of the choices, a UTM zone out of range and a
+/// MaximumEdgeLength that is not a length.
+void CheckSettings(int projection, int utmZone, double maximumEdgeLength)
+{
+  tessera_vtk::CheckChoice("Projection", projection, ProjectionChoices());
+  // (the zone is a UTM setting: a value left from a UTM choice does not stop another projection)
+  if (projection == vtkGeographicProjection::UTM && (utmZone < 0 || utmZone > 60))
+  {
+    throw tessera::InputError("UTMZone " + std::to_string(utmZone) +
+      " is neither a zone from 1 to 60 nor 0 (the zone of the data's central longitude)");
+  }
+  if (!(maximumEdgeLength >= 0.0))
+  {
+    // (every comparison with NaN is false: it turned the densification off without a word, as
+    // a negative length did)
+    throw tessera::InputError("MaximumEdgeLength " + tessera::NumberText(maximumEdgeLength) +
+      " is not a length of 0 or more degrees (0 turns the densification off)");
+  }
+}
+
+/// The points of all the pieces.
+std::size_t PointCountOf(const std::vector<Piece>& pieces)
+{
+  std::size_t points = 0;
+  for (const Piece& piece : pieces)
+  {
+    points += static_cast<std::size_t>(piece.Input->GetNumberOfPoints());
+  }
+  return points;
+}
+
+/// The warning for an input without points, saying what is not made.
+void WarnOfNoPoints(vtkGeographicProjection* self, bool inverse, bool fitted)
+{
+  const char* const what = inverse ? "point taken back to lon/lat"
+    : fitted ? "point projected, and no projection fitted, so no TesseraProjection record"
+             : "point projected";
+  vtkWarningWithObjectMacro(self, << tessera_vtk::NoPointsWarning(what));
+}
+
+/// The projection an update applies (none for an input with nothing to project), and the record
+/// its forward output carries ("" for none and for the inverse).
+struct ChosenProjection
+{
+  std::unique_ptr<tessera::GeographicProjection> Projection;
+  std::string Record;
+};
+
+/// The projection of the pieces (ChooseParameters), or none; none for a forward still checks the
+/// grid set on the filter for its Projection (projectionSetting).
+ChosenProjection ChooseProjection(vtkGeographicProjection* self,
+  vtkDataObject* input,
+  const std::vector<Piece>& pieces,
+  bool none,
+  bool inverse,
+  int projectionSetting)
+{
+  ChosenProjection chosen;
+  if (none && !inverse)
+  {
+    // No projection is fitted, but a grid set out of range is still named (a ScaleFactor of
+    // 100 passed unseen on an empty input, and failed only when points came).
+    tessera::ProjectionParameters grid;
+    grid.Kind = KindOf(projectionSetting);
+    TakeGridTerms(self, grid);
+    tessera::CheckGridTerms(grid);
+  }
+  else if (!none)
+  {
+    const tessera::ProjectionParameters parameters = ChooseParameters(self, input, pieces);
+    chosen.Projection.reset(new tessera::GeographicProjection(parameters));
+    chosen.Record = inverse ? std::string() : parameters.ToString();
+  }
+  return chosen;
+}
+
+/// Projects every piece into its output (progress 0.1 to 1), its errors labelled with the
+/// piece's block; what densifying met.
+DensifyReport ProjectPieces(vtkGeographicProjection* self,
+  const std::vector<Piece>& pieces,
+  const ChosenProjection& chosen,
+  const InversePlaces& inverse)
+{
+  const std::vector<std::vector<tessera::Point2>>& places = inverse.Places;
+  DensifyReport report;
+  const std::vector<tessera::Point2> noPlaces; // (a forward's)
+  for (std::size_t p = 0; p < pieces.size(); ++p)
+  {
+    // (a progress observer's stop is taken between pieces: it was not taken at all)
+    tessera_vtk::ProgressOrStop(
+      self, 0.1 + 0.9 * static_cast<double>(p) / static_cast<double>(pieces.size()));
+    WithLabel(pieces[p],
+      [&]()
+      {
+        ProjectPiece(self,
+          pieces[p],
+          chosen.Projection.get(),
+          chosen.Record,
+          places.empty() ? noPlaces : places[p],
+          inverse.Turn,
+          report);
+      });
+  }
+  return report;
+}
+
+/// The warnings for edges cut into the most pieces allowed, for global ids dropped by cutting,
+/// and for edges taken the shorter way round the globe.
+void WarnOfDensifying(vtkGeographicProjection* self,
+  const DensifyReport& report,
+  double maximumEdgeLength)
+{
+  if (report.Capped > 0)
+  {
+    vtkWarningWithObjectMacro(self,
+      << report.Capped << " edge(s) were cut into " << tessera::MaxDensifiedPieces
+      << " pieces, the most allowed: their pieces are longer than "
+         "MaximumEdgeLength "
+      << tessera::NumberText(maximumEdgeLength) << " degrees");
+  }
+  if (report.GlobalIdsDropped > 0)
+  {
+    vtkWarningWithObjectMacro(self,
+      << "the global ids of " << report.GlobalIdsDropped
+      << " piece(s) (the first: " << report.FirstGlobalIds
+      << ") were not carried: edges longer than MaximumEdgeLength were cut, and "
+         "the new points have no id (MaximumEdgeLength 0 keeps the points as "
+         "they are)");
+  }
+  if (report.Wrapped > 0)
+  {
+    vtkWarningWithObjectMacro(self,
+      << report.Wrapped << " edge(s) span 180 to 270 degrees of longitude as written (the first: "
+      << report.FirstWrapped
+      << "): each was taken the shorter way round the globe, not straight in "
+         "lon/lat; add a vertex in between where an edge should run straight");
+  }
+}
+
+/// A composite output's own field data: the input's, with the record (none when empty) in place
+/// of any it had.
+void PassCompositeFieldData(vtkDataObject* input, vtkDataObject* output, const std::string& record)
+{
+  // A composite: its own field data too.
+  output->GetFieldData()->PassData(input->GetFieldData());
+  output->GetFieldData()->RemoveArray(ProjectionRecordName);
+  if (!record.empty())
+  {
+    tessera_vtk::WriteProjectionRecord(output, record);
+  }
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -933,14 +1098,7 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
 {
   if (!tessera_vtk::MakesOutput(outputVector))
   {
-    // Another process's piece: the first makes the whole output (RequestWholeInputs). Blocks keep
-    // their places on every process (ParaView picks and colours blocks by composite index).
-    auto* compositeIn = vtkCompositeDataSet::GetData(inputVector[0]);
-    auto* compositeOut = vtkCompositeDataSet::GetData(outputVector);
-    if (compositeIn && compositeOut)
-    {
-      compositeOut->CopyStructure(compositeIn);
-    }
+    KeepBlockPlaces(inputVector, outputVector);
     return 1;
   }
   vtkDataObject* input = vtkDataObject::GetData(inputVector[0]);
@@ -952,116 +1110,34 @@ int vtkGeographicProjection::RequestData(vtkInformation*,
   }
   try
   {
-    tessera_vtk::CheckChoice("Projection", this->Projection, ProjectionChoices());
-    // (the zone is a UTM setting: a value left from a UTM choice does not stop another projection)
-    if (this->Projection == UTM && (this->UTMZone < 0 || this->UTMZone > 60))
-    {
-      throw tessera::InputError("UTMZone " + std::to_string(this->UTMZone) +
-        " is neither a zone from 1 to 60 nor 0 (the zone of the data's central longitude)");
-    }
-    if (!(this->MaximumEdgeLength >= 0.0))
-    {
-      // (every comparison with NaN is false: it turned the densification off without a word, as
-      // a negative length did)
-      throw tessera::InputError("MaximumEdgeLength " +
-        tessera::NumberText(this->MaximumEdgeLength) +
-        " is not a length of 0 or more degrees (0 turns the densification off)");
-    }
+    CheckSettings(this->Projection, this->UTMZone, this->MaximumEdgeLength);
     std::vector<Piece> pieces = PiecesOf(input, output);
-    std::size_t points = 0;
-    for (const Piece& piece : pieces)
-    {
-      points += static_cast<std::size_t>(piece.Input->GetNumberOfPoints());
-    }
+    const std::size_t points = PointCountOf(pieces);
     // Nothing to fit a projection to, or to undo: empty in, empty out (with the structure), no
     // record (an empty forward output has none, so its inverse takes it as it is).
     // A ProjectionRecord set is the projection even then (read, so that a bad one is an error,
     // and written on the forward output, as for points).
     const bool fitted = this->ParametersFromData && this->ProjectionRecord.empty();
     const bool none = points == 0 && ((this->Inverse && this->ProjectionRecord.empty()) || fitted);
-    std::unique_ptr<tessera::GeographicProjection> projection;
-    std::string record;
     if (points == 0)
     {
-      const char* const what = this->Inverse ? "point taken back to lon/lat"
-        : fitted ? "point projected, and no projection fitted, so no TesseraProjection record"
-                 : "point projected";
-      vtkWarningMacro(<< tessera_vtk::NoPointsWarning(what));
+      WarnOfNoPoints(this, this->Inverse, fitted);
     }
-    if (none && !this->Inverse)
-    {
-      // No projection is fitted, but a grid set out of range is still named (a ScaleFactor of
-      // 100 passed unseen on an empty input, and failed only when points came).
-      tessera::ProjectionParameters grid;
-      grid.Kind = KindOf(this->Projection);
-      TakeGridTerms(this, grid);
-      tessera::CheckGridTerms(grid);
-    }
-    else if (!none)
-    {
-      const tessera::ProjectionParameters parameters = ChooseParameters(this, input, pieces);
-      projection.reset(new tessera::GeographicProjection(parameters));
-      record = this->Inverse ? std::string() : parameters.ToString();
-    }
-    const InversePlaces inverse =
-      this->Inverse && projection ? PlacesOfInverse(pieces, *projection) : InversePlaces();
+    const ChosenProjection chosen =
+      ChooseProjection(this, input, pieces, none, this->Inverse, this->Projection);
+    const InversePlaces inverse = this->Inverse && chosen.Projection
+      ? PlacesOfInverse(pieces, *chosen.Projection)
+      : InversePlaces();
     WarnOfDegreesGivenToTheInverse(this, inverse);
-    const std::vector<std::vector<tessera::Point2>>& places = inverse.Places;
     if (this->MaximumEdgeLength > 0.0)
     {
-      CheckAddedPoints(pieces, this->MaximumEdgeLength, places);
+      CheckAddedPoints(pieces, this->MaximumEdgeLength, inverse.Places);
     }
-    DensifyReport report;
-    const std::vector<tessera::Point2> noPlaces; // (a forward's)
-    for (std::size_t p = 0; p < pieces.size(); ++p)
-    {
-      // (a progress observer's stop is taken between pieces: it was not taken at all)
-      tessera_vtk::ProgressOrStop(
-        this, 0.1 + 0.9 * static_cast<double>(p) / static_cast<double>(pieces.size()));
-      WithLabel(pieces[p],
-        [&]()
-        {
-          ProjectPiece(this,
-            pieces[p],
-            projection.get(),
-            record,
-            places.empty() ? noPlaces : places[p],
-            inverse.Turn,
-            report);
-        });
-    }
-    if (report.Capped > 0)
-    {
-      vtkWarningMacro(<< report.Capped << " edge(s) were cut into " << tessera::MaxDensifiedPieces
-                      << " pieces, the most allowed: their pieces are longer than "
-                         "MaximumEdgeLength "
-                      << tessera::NumberText(this->MaximumEdgeLength) << " degrees");
-    }
-    if (report.GlobalIdsDropped > 0)
-    {
-      vtkWarningMacro(<< "the global ids of " << report.GlobalIdsDropped
-                      << " piece(s) (the first: " << report.FirstGlobalIds
-                      << ") were not carried: edges longer than MaximumEdgeLength were cut, and "
-                         "the new points have no id (MaximumEdgeLength 0 keeps the points as "
-                         "they are)");
-    }
-    if (report.Wrapped > 0)
-    {
-      vtkWarningMacro(<< report.Wrapped
-                      << " edge(s) span 180 to 270 degrees of longitude as written (the first: "
-                      << report.FirstWrapped
-                      << "): each was taken the shorter way round the globe, not straight in "
-                         "lon/lat; add a vertex in between where an edge should run straight");
-    }
+    const DensifyReport report = ProjectPieces(this, pieces, chosen, inverse);
+    WarnOfDensifying(this, report, this->MaximumEdgeLength);
     if (vtkCompositeDataSet::SafeDownCast(output))
     {
-      // A composite: its own field data too.
-      output->GetFieldData()->PassData(input->GetFieldData());
-      output->GetFieldData()->RemoveArray(ProjectionRecordName);
-      if (!record.empty())
-      {
-        tessera_vtk::WriteProjectionRecord(output, record);
-      }
+      PassCompositeFieldData(input, output, chosen.Record);
     }
     tessera_vtk::ListNonEmptyFieldArraysFirst(output);
     return 1;
