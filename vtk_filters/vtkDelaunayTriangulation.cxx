@@ -61,6 +61,100 @@ vtkNew<vtkCellArray> FacesOf(const tessera::DirichletTessellation& tessellation,
   return polys;
 }
 
+/// The window the triangulation is cut to (tessera_vtk::ChooseWindow, no area needed), after the
+/// warning for an empty WindowBounds, if it is.
+tessera::Window MakeWindow(vtkDelaunayTriangulation* self,
+  const double bounds[4],
+  const std::vector<double>& constraints,
+  double padding,
+  const std::vector<tessera::Point2>& points)
+{
+  // (Before the window is made: an empty WindowBounds is ignored, and a window of the
+  // constraints alone may then be refused, which the warning explains.)
+  const std::string emptyBounds = tessera_vtk::EmptyBoundsWarning(bounds, !constraints.empty());
+  if (!emptyBounds.empty())
+  {
+    vtkWarningWithObjectMacro(self, << emptyBounds);
+  }
+  return tessera_vtk::ChooseWindow(bounds, constraints, padding, points, false);
+}
+
+/// The tessellation whose dual gives the triangles (progress 0.1 once the window is cut to the
+/// points).
+tessera::DirichletTessellation Triangulate(vtkDelaunayTriangulation* self,
+  tessera::Window window,
+  std::vector<tessera::Point2> points)
+{
+  // Coordinates of some 1e100 or more, or 1e-100 or less: the triangulation of points and
+  // window scaled by a power of two (exactly) is the same, and its faces are ids, so nothing is
+  // scaled back; every decision then stays within the predicates' exact range.
+  window = tessera_vtk::CutToPoints(std::move(window), points);
+  tessera::ScaleIntoExactRange(window, points);
+  tessera_vtk::ProgressOrStop(self, 0.1);
+  return tessera::DirichletTessellation(std::move(window), std::move(points));
+}
+
+/// The output's points (the input's, with their point data) and the Delaunay faces on them.
+void WritePointsAndFaces(vtkPointSet* input,
+  const tessera::DirichletTessellation& tessellation,
+  bool split,
+  vtkPolyData* output)
+{
+  if (input->GetPoints())
+  {
+    output->SetPoints(input->GetPoints());
+  }
+  output->GetPointData()->PassData(input->GetPointData());
+  output->SetPolys(FacesOf(tessellation, split));
+}
+
+/// The output's field data naming the points not triangulated (tessera_vtk::AddUnusedPointIds),
+/// and the warnings for them and for a window with no point in it.
+void AddUnusedPoints(vtkDelaunayTriangulation* self,
+  const tessera::DirichletTessellation& tessellation,
+  const tessera::Box2& windowBox,
+  vtkPoints* inputPoints,
+  vtkPolyData* output)
+{
+  const std::vector<std::int32_t> rejected = tessellation.RejectedIds();
+  const auto duplicates = tessellation.Duplicates();
+  const tessera_vtk::RenamedArrays renamed =
+    tessera_vtk::AddUnusedPointIds(output, rejected, duplicates);
+  if (!renamed.empty())
+  {
+    vtkWarningWithObjectMacro(
+      self, << tessera_vtk::RenamedArraysWarning(renamed, "field-data", "the output", "field"));
+  }
+  const std::string unused = tessera_vtk::UnusedPointsWarning(rejected, duplicates, "triangulated");
+  if (!unused.empty())
+  {
+    vtkWarningWithObjectMacro(self, << unused);
+  }
+  const std::string noPointIn =
+    tessera_vtk::NoPointInWindowWarning(windowBox, inputPoints, rejected.size(), "triangle");
+  if (!noPointIn.empty())
+  {
+    vtkWarningWithObjectMacro(self, << noPointIn);
+  }
+}
+
+/// The warning for triangulated points that make no triangle (fewer than three, or on one line).
+void WarnOfNoTriangle(vtkDelaunayTriangulation* self,
+  const tessera::DirichletTessellation& tessellation)
+{
+  // An output of points and no face, said (a ParaView user saw nothing and no message).
+  const std::size_t accepted = tessellation.AcceptedCount();
+  if (accepted > 0 && !tessellation.IsTwoDimensional())
+  {
+    const std::string why = accepted < 3
+      ? "fewer than three distinct points are triangulated"
+      : "the " + std::to_string(accepted) + " distinct points triangulated all lie on one line";
+    vtkWarningWithObjectMacro(self,
+      << "no Delaunay triangle: " << why
+      << " (Dirichlet Tessellation gives their tiles, strips across the window)");
+  }
+}
+
 } // namespace
 
 //------------------------------------------------------------------------------
@@ -129,64 +223,16 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     {
       vtkWarningMacro(<< tessera_vtk::NoPointsWarning("triangle"));
     }
-    // (Before the window is made: an empty WindowBounds is ignored, and a window of the
-    // constraints alone may then be refused, which the warning explains.)
-    const std::string emptyBounds =
-      tessera_vtk::EmptyBoundsWarning(this->WindowBounds, !this->WindowConstraints.empty());
-    if (!emptyBounds.empty())
-    {
-      vtkWarningMacro(<< emptyBounds);
-    }
-    tessera::Window window = tessera_vtk::ChooseWindow(
-      this->WindowBounds, this->WindowConstraints, this->Padding, points, false);
+    tessera::Window window =
+      MakeWindow(this, this->WindowBounds, this->WindowConstraints, this->Padding, points);
     const tessera::Box2 windowBox = window.Bounds();
-    // Coordinates of some 1e100 or more, or 1e-100 or less: the triangulation of points and
-    // window scaled by a power of two (exactly) is the same, and its faces are ids, so nothing is
-    // scaled back; every decision then stays within the predicates' exact range.
-    window = tessera_vtk::CutToPoints(std::move(window), points);
-    tessera::ScaleIntoExactRange(window, points);
-    tessera_vtk::ProgressOrStop(this, 0.1);
-    const tessera::DirichletTessellation tessellation(std::move(window), std::move(points));
+    const tessera::DirichletTessellation tessellation =
+      Triangulate(this, std::move(window), std::move(points));
     tessera_vtk::ProgressOrStop(this, 0.7);
 
-    if (input->GetPoints())
-    {
-      output->SetPoints(input->GetPoints());
-    }
-    output->GetPointData()->PassData(input->GetPointData());
-    output->SetPolys(FacesOf(tessellation, this->SplitDegenerateFaces));
-
-    const std::vector<std::int32_t> rejected = tessellation.RejectedIds();
-    const auto duplicates = tessellation.Duplicates();
-    const tessera_vtk::RenamedArrays renamed =
-      tessera_vtk::AddUnusedPointIds(output, rejected, duplicates);
-    if (!renamed.empty())
-    {
-      vtkWarningMacro(<< tessera_vtk::RenamedArraysWarning(
-                        renamed, "field-data", "the output", "field"));
-    }
-    const std::string unused =
-      tessera_vtk::UnusedPointsWarning(rejected, duplicates, "triangulated");
-    if (!unused.empty())
-    {
-      vtkWarningMacro(<< unused);
-    }
-    const std::string noPointIn = tessera_vtk::NoPointInWindowWarning(
-      windowBox, input->GetPoints(), rejected.size(), "triangle");
-    if (!noPointIn.empty())
-    {
-      vtkWarningMacro(<< noPointIn);
-    }
-    // An output of points and no face, said (a ParaView user saw nothing and no message).
-    const std::size_t accepted = tessellation.AcceptedCount();
-    if (accepted > 0 && !tessellation.IsTwoDimensional())
-    {
-      const std::string why = accepted < 3
-        ? "fewer than three distinct points are triangulated"
-        : "the " + std::to_string(accepted) + " distinct points triangulated all lie on one line";
-      vtkWarningMacro(<< "no Delaunay triangle: " << why
-                      << " (Dirichlet Tessellation gives their tiles, strips across the window)");
-    }
+    WritePointsAndFaces(input, tessellation, this->SplitDegenerateFaces, output);
+    AddUnusedPoints(this, tessellation, windowBox, input->GetPoints(), output);
+    WarnOfNoTriangle(this, tessellation);
     tessera_vtk::ListNonEmptyFieldArraysFirst(output);
     return 1;
   }
