@@ -105,6 +105,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "data")
 EXAMPLE_STATIONS = os.path.join(DATA, "colorado_stations.csv")  # (the defaults, the example's own)
 EXAMPLE_CATCHMENT = os.path.join(DATA, "colorado_boundary.geojson")
+DEFAULT_OBSERVATIONS = os.path.join(DATA, "colorado_monthly_precip.csv")
 sys.path.insert(0, HERE)
 
 import csv_input  # noqa: E402 (the examples' CSV reading, beside this script)
@@ -396,6 +397,30 @@ def observation_step(row, path, line):
     (YYYY-MM for a month, YYYY-MM-DD for a day, with a time HH:MM for a time of the day).
     read_observations makes the file's steps of them (file_steps). Ends the script naming file,
     line and column for a value that is no such date."""
+    check_time_columns(row, path)
+    clock = None
+    if "date" in row:
+        step, where, clock = date_column_step(row, path, line)
+    elif "year" in row and "month" in row:
+        step, where = year_month_step(row, path, line)
+    else:
+        fail_without_time_columns(row, path)
+    if not (1 <= step[0] and 1 <= step[1] <= 12) or (len(step) == 3 and not is_calendar_day(*step)):
+        csv_input.fail(f"{where} is not a date of the calendar" if "date" in row else f"{where} is not a day of "
+                       f"{step[0]}-{step[1]:02d}")
+    if clock:
+        hour, minute = int(clock.group(1)), int(clock.group(2))
+        if hour > 24 or minute > 59 or (hour == 24 and minute):
+            csv_input.fail(f"{where} is not a time of the day (00:00 to 23:59, or 24:00 for the day's end)")
+        return (*step, hour, minute)
+    if "hour" in row:
+        return hour_column_step(step, row, path, line)
+    return step
+
+
+def check_time_columns(row, path):
+    """Ends the script for an observations file whose time columns clash (a date column beside
+    year/month/... columns, a time column beside an hour, date or day column)."""
     if "date" in row and any(name in row for name in ("year", "month", "day", "hour", "minute")):
         csv_input.fail(f"{path}: the observations file has both a date column and year/month/day/hour columns "
                        "(keep one)")
@@ -406,63 +431,69 @@ def observation_step(row, path, line):
                        ("leave one of them out" if beside == "hour" else
                         "give hours as dates with their time in one column (YYYY-MM-DD HH:00) or in an hour column "
                         "(0-23); if it is the time each day was read, leave it out"))
-    clock = None
-    if "date" in row:
-        text = csv_input.text(row, "date", path, line)
-        date = DATE.match(text)
-        step = tuple(int(v) for v in date.groups() if v is not None) if date else ()
-        where = f"{path}:{line}: column 'date': {text!r}"
-        clock = TIME_OF_DAY.fullmatch(text, date.end()) if date and date.group(3) else None
-        if not date or (date.end() < len(text) and not clock):
-            timed = TIME_OF_DAY.match(text, date.end()) if date and date.group(3) else None
-            zone = re.fullmatch(r"Z|[+-][0-9]{2}(:?[0-9]{2})?", text[timed.end():]) if timed else None
-            csv_input.fail(f"{where} " + (f"has a time zone ({zone.group(0)}), which is not read: give the times "
-                                          "without it, all in one zone" if zone else
-                                          "is not a date (YYYY-MM-DD, YYYY-MM-DD HH:00 for an hour, YYYY-MM-DD "
-                                          "HH:MM for a step of minutes, or YYYY-MM for a month)"))
-        if clock and any(int(v or 0) for v in clock.groups()[2:]):
-            csv_input.fail(f"{where} is not on the minute: the steps are minutes (HH:MM), hours, days or months, so "
-                           "give each step's total at its minute")
-    elif "year" in row and "month" in row:
-        year = (row.get("year") or "").strip()
-        if re.fullmatch(r"\+?0*[0-9]{1,2}(?:[.,]0*)?", year):
-            # (99 would be AD 99, and 00 no year at all: most likely a year shortened to two digits)
-            csv_input.fail(f"{path}:{line}: column 'year': {year!r} is a year below 100: write years in full "
-                           "(1999, 2000)")
-        step = (csv_input.integer(row, "year", path, line, 1, 9999),
-                csv_input.integer(row, "month", path, line, 1, 12))
-        if "hour" in row and "day" not in row:
-            csv_input.fail(f"{path}: the observations file has an hour column but no day column "
-                           "(hours need year, month, day and hour)")
-        if "minute" in row and "hour" not in row:
-            csv_input.fail(f"{path}: the observations file has a minute column but no hour column "
-                           "(minutes need year, month, day, hour and minute)")
-        if "day" in row:
-            step += (csv_input.integer(row, "day", path, line, 1, 31),)
-        where = f"{path}:{line}: column 'day': {step[-1]}"
-    else:
-        columns = ", ".join(name for name in row if name is not None)
-        lacking = " and ".join(name for name in ("year", "month") if name not in row)
-        csv_input.fail(f"{path}: the observations file has no column{'s' if ' and ' in lacking else ''} {lacking}, "
-                       "nor a date column "
-                       f"(it needs station_id, year, month, precip, with day for daily values and hour for "
-                       f"hourly ones, or station_id, date, precip; its header: {columns})")
-    if not (1 <= step[0] and 1 <= step[1] <= 12) or (len(step) == 3 and not is_calendar_day(*step)):
-        csv_input.fail(f"{where} is not a date of the calendar" if "date" in row else f"{where} is not a day of "
-                       f"{step[0]}-{step[1]:02d}")
-    if clock:
-        hour, minute = int(clock.group(1)), int(clock.group(2))
-        if hour > 24 or minute > 59 or (hour == 24 and minute):
-            csv_input.fail(f"{where} is not a time of the day (00:00 to 23:59, or 24:00 for the day's end)")
-        return (*step, hour, minute)
-    if "hour" in row:
-        hour = csv_input.integer(row, "hour", path, line, 0, 24)
-        minute = csv_input.integer(row, "minute", path, line, 0, 59) if "minute" in row else 0
-        if hour == 24 and minute:
-            csv_input.fail(f"{path}:{line}: columns 'hour' and 'minute': 24:{minute:02d} is not a time of the day "
-                           "(hour 24 is the day's end, 24:00)")
-        return (*step, hour, minute)
-    return step
+
+
+def date_column_step(row, path, line):
+    """observation_step's date column read: the step's date fields, where they were written (for
+    the messages) and the match of its time of day (TIME_OF_DAY), or None."""
+    text = csv_input.text(row, "date", path, line)
+    date = DATE.match(text)
+    step = tuple(int(v) for v in date.groups() if v is not None) if date else ()
+    where = f"{path}:{line}: column 'date': {text!r}"
+    clock = TIME_OF_DAY.fullmatch(text, date.end()) if date and date.group(3) else None
+    if not date or (date.end() < len(text) and not clock):
+        timed = TIME_OF_DAY.match(text, date.end()) if date and date.group(3) else None
+        zone = re.fullmatch(r"Z|[+-][0-9]{2}(:?[0-9]{2})?", text[timed.end():]) if timed else None
+        csv_input.fail(f"{where} " + (f"has a time zone ({zone.group(0)}), which is not read: give the times "
+                                      "without it, all in one zone" if zone else
+                                      "is not a date (YYYY-MM-DD, YYYY-MM-DD HH:00 for an hour, YYYY-MM-DD "
+                                      "HH:MM for a step of minutes, or YYYY-MM for a month)"))
+    if clock and any(int(v or 0) for v in clock.groups()[2:]):
+        csv_input.fail(f"{where} is not on the minute: the steps are minutes (HH:MM), hours, days or months, so "
+                       "give each step's total at its minute")
+    return step, where, clock
+
+
+def year_month_step(row, path, line):
+    """observation_step's year, month and day columns read: the step's date fields, and where the
+    day was written (for the messages)."""
+    year = (row.get("year") or "").strip()
+    if re.fullmatch(r"\+?0*[0-9]{1,2}(?:[.,]0*)?", year):
+        # (99 would be AD 99, and 00 no year at all: most likely a year shortened to two digits)
+        csv_input.fail(f"{path}:{line}: column 'year': {year!r} is a year below 100: write years in full "
+                       "(1999, 2000)")
+    step = (csv_input.integer(row, "year", path, line, 1, 9999),
+            csv_input.integer(row, "month", path, line, 1, 12))
+    if "hour" in row and "day" not in row:
+        csv_input.fail(f"{path}: the observations file has an hour column but no day column "
+                       "(hours need year, month, day and hour)")
+    if "minute" in row and "hour" not in row:
+        csv_input.fail(f"{path}: the observations file has a minute column but no hour column "
+                       "(minutes need year, month, day, hour and minute)")
+    if "day" in row:
+        step += (csv_input.integer(row, "day", path, line, 1, 31),)
+    where = f"{path}:{line}: column 'day': {step[-1]}"
+    return step, where
+
+
+def fail_without_time_columns(row, path):
+    """Ends the script for an observations file with neither year and month nor date columns."""
+    columns = ", ".join(name for name in row if name is not None)
+    lacking = " and ".join(name for name in ("year", "month") if name not in row)
+    csv_input.fail(f"{path}: the observations file has no column{'s' if ' and ' in lacking else ''} {lacking}, "
+                   "nor a date column "
+                   f"(it needs station_id, year, month, precip, with day for daily values and hour for "
+                   f"hourly ones, or station_id, date, precip; its header: {columns})")
+
+
+def hour_column_step(step, row, path, line):
+    """step (a day) with the time of its hour and minute columns (minute 0 without one)."""
+    hour = csv_input.integer(row, "hour", path, line, 0, 24)
+    minute = csv_input.integer(row, "minute", path, line, 0, 59) if "minute" in row else 0
+    if hour == 24 and minute:
+        csv_input.fail(f"{path}:{line}: columns 'hour' and 'minute': 24:{minute:02d} is not a time of the day "
+                       "(hour 24 is the day's end, 24:00)")
+    return (*step, hour, minute)
 
 
 # observation_step's steps by their length ("time": a date with a time; "hour" where that time is
@@ -658,18 +689,30 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
     first = next(records, None)  # (the header is read with it)
     records = itertools.chain((first,) if first else (), records)
     if "station_id" in header or "precip" in header:
-        csv_input.check_columns(path, "observations", ("station_id", "precip"), header)
-        attributes = next((name for name in header if name.lower() in NOAA_ATTRIBUTES), None)
-        say_unnamed_columns(path, header)
-        if drop_flagged and not attributes:
-            print(f"{path}: --drop-flagged: the file has no PRCP_ATTRIBUTES column (NOAA's quality flags), so no "
-                  "value is left out", file=sys.stderr)
-        for line, row in records:
-            station = csv_input.text(row, "station_id", path, line)
-            if attributes and (flag := noaa_quality_flag(row.get(attributes))):
-                flagged.append((line, flag, station))
-            yield line, row, station, "precip"
+        yield from long_records(path, header, records, flagged, drop_flagged)
         return
+    check_wide_header(path, header)
+    columns = wide_columns(path, header, gauge_of, stations_path, station_ids, unmatched)
+    yield from wide_records(records, header, columns, gaps, repeats)
+
+
+def long_records(path, header, records, flagged, drop_flagged):
+    """observation_records' records of a long file (header: its columns)."""
+    csv_input.check_columns(path, "observations", ("station_id", "precip"), header)
+    attributes = next((name for name in header if name.lower() in NOAA_ATTRIBUTES), None)
+    say_unnamed_columns(path, header)
+    if drop_flagged and not attributes:
+        print(f"{path}: --drop-flagged: the file has no PRCP_ATTRIBUTES column (NOAA's quality flags), so no "
+              "value is left out", file=sys.stderr)
+    for line, row in records:
+        station = csv_input.text(row, "station_id", path, line)
+        if attributes and (flag := noaa_quality_flag(row.get(attributes))):
+            flagged.append((line, flag, station))
+        yield line, row, station, "precip"
+
+
+def check_wide_header(path, header):
+    """Ends the script for a file read as wide that has no header, or no time column in it."""
     if not header:
         csv_input.fail(f"{path}: the observations file is empty (no header, no rows); expected a long file "
                        "(station_id, a time column such as date, precip) or a wide one (a time column, a column "
@@ -679,6 +722,10 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
         csv_input.fail(f"{path}: the observations file has no station_id and precip columns, so it is read as a "
                        "wide file (a row per time, a column per station), but it has no time column: date, or "
                        f"year and month{unnamed}; its header: {', '.join(header) or 'none'}")
+
+
+def wide_columns(path, header, gauge_of, stations_path, station_ids, unmatched):
+    """A wide file's value columns: those naming a gauge's station (observation_records)."""
     columns, named = [], {}  # (the value columns, and the first column of each gauge's station)
     for number, name in enumerate(header, 1):
         if name in TIME_COLUMNS:
@@ -699,6 +746,11 @@ def observation_records(path, gauge_of, stations_path, station_ids, unmatched, g
                        f"{', ...' if len(there) > 5 else ''}): give a row per station and time (columns "
                        "station_id, year, month, precip, or station_id, date, precip), or a row per time "
                        "with a column per station named by its station_id (date,ID1,ID2,...)")
+    return columns
+
+
+def wide_records(records, header, columns, gaps, repeats):
+    """observation_records' records of a wide file (columns: its value columns, wide_columns')."""
     times = [name for name in header if name in TIME_COLUMNS]
     first_line = {}  # each row's time as written, and the line that first gave it
     yielded = 0  # the records yielded so far
@@ -1930,59 +1982,95 @@ def write_unused(summary, files, station_ids, observations, unit, path, unmatche
     station_id)), its flag in the note. Returns the number of inputs listed."""
     fields = summary.GetFieldData()
     stations = observations.GetColumnByName("station_id")
-    earlier = fields.GetArray("DuplicateOfGaugeIds")
-    repeated_of = fields.GetArray("RepeatedObservationOfRows")
+    shared_of = later_gauges_of_shared_ids(station_ids)
+    with open(path, "w", newline="") as f:
+        out = csv.writer(f)
+        out.writerow(["kind", "file", "line", "station_id", "note"])
+        written = write_unused_by_filter(out, fields, files, station_ids, shared_of, stations, unit)
+        written += write_unused_in_reading(out, files, unmatched_columns, outside, summed_repeats, dropped)
+    return written
+
+
+def later_gauges_of_shared_ids(station_ids):
+    """Each gauge whose station id (station_key) an earlier gauge has: that earlier gauge."""
     first_with_id, shared_of = {}, {}  # (station_key: its first gauge; a later gauge with it: that gauge)
     for g, station in enumerate(station_ids):
         first = first_with_id.setdefault(station_key(station), g)
         if first != g:
             shared_of[g] = first
+    return shared_of
+
+
+def write_unused_by_filter(out, fields, files, station_ids, shared_of, stations, unit):
+    """write_unused's rows of the inputs the filter named unused (UNUSED_LISTS, in its summary's
+    field data: fields); shared_of: later_gauges_of_shared_ids'; stations: the observations'
+    station_id column. Returns how many."""
+    earlier = fields.GetArray("DuplicateOfGaugeIds")
+    repeated_of = fields.GetArray("RepeatedObservationOfRows")
     used_instead = fields.GetArray("CoLocatedObservationOfRows")
     written = 0
-    with open(path, "w", newline="") as f:
-        out = csv.writer(f)
-        out.writerow(["kind", "file", "line", "station_id", "note"])
-        for name, kind, of_rows in UNUSED_LISTS:
-            kind = kind.format(unit=unit) + (files.within if name == "UnobservedGaugeIds" else "")
-            ids = fields.GetArray(name)
-            for k in range(ids.GetNumberOfTuples() if ids else 0):
-                i = int(ids.GetValue(k))
-                if of_rows:
-                    note = ""
-                    if name == "RepeatedObservationRows" and repeated_of:
-                        note = f"repeats line {files.row_line(int(repeated_of.GetValue(k))) or ''}"
-                    elif name == "CoLocatedObservationRows" and used_instead:
-                        used = int(used_instead.GetValue(k))
-                        if used >= 0 and files.row_line(used):
-                            note = (f"the value of line {files.row_line(used)} (station {stations.GetValue(used)} "
-                                    "at the same place) is used")
-                    out.writerow([kind, files.observations, files.row_line(i) or "", stations.GetValue(i), note])
-                else:
-                    note = ""
-                    if name == "DuplicateGaugeIds" and earlier:
-                        note = f"same place as {files.place_word()} {files.gauge_lines[int(earlier.GetValue(k))]}"
-                    elif name == "UnobservedGaugeIds" and i in shared_of:
-                        first = shared_of[i]
-                        note = (f"station id of {files.place_word()} {files.gauge_lines[first]} "
-                                f"({station_ids[first]}): its observations go to that gauge")
-                    out.writerow([kind, files.stations, files.gauge_lines[i], station_ids[i], note])
-                written += 1
-        for number, name in unmatched_columns:
-            out.writerow(["observations column naming no gauge's station (not read)", files.observations, 1, name,
-                          f"column {number}"])
+    for name, kind, of_rows in UNUSED_LISTS:
+        kind = kind.format(unit=unit) + (files.within if name == "UnobservedGaugeIds" else "")
+        ids = fields.GetArray(name)
+        for k in range(ids.GetNumberOfTuples() if ids else 0):
+            i = int(ids.GetValue(k))
+            if of_rows:
+                note = unused_observation_note(name, k, files, stations, repeated_of, used_instead)
+                out.writerow([kind, files.observations, files.row_line(i) or "", stations.GetValue(i), note])
+            else:
+                note = unused_gauge_note(name, k, i, files, station_ids, earlier, shared_of)
+                out.writerow([kind, files.stations, files.gauge_lines[i], station_ids[i], note])
             written += 1
-        for line, earlier, station in summed_repeats:
-            out.writerow([SUMMED_REPEAT, files.observations, line, station, f"repeats line {earlier}"])
-            written += 1
-        for line, flag, station in dropped:
-            out.writerow([DROPPED_FLAGGED, files.observations, line, station, f"QFLAG {flag}"])
-            written += 1
-        for first, last, count, names in outside:
-            several = f" of {len(names)} stations" if len(names) > 1 else ""
-            out.writerow([OUTSIDE_PERIOD, files.observations, first if first == last else f"{first}-{last}",
-                          next(iter(names)) if len(names) == 1 else "",
-                          f"{count} observations{several}" if count > 1 else ""])
-            written += count
+    return written
+
+
+def unused_observation_note(name, k, files, stations, repeated_of, used_instead):
+    """The note on the k-th observation of the filter's list name: the line it repeats, or the
+    line of the value used in its place."""
+    note = ""
+    if name == "RepeatedObservationRows" and repeated_of:
+        note = f"repeats line {files.row_line(int(repeated_of.GetValue(k))) or ''}"
+    elif name == "CoLocatedObservationRows" and used_instead:
+        used = int(used_instead.GetValue(k))
+        if used >= 0 and files.row_line(used):
+            note = (f"the value of line {files.row_line(used)} (station {stations.GetValue(used)} "
+                    "at the same place) is used")
+    return note
+
+
+def unused_gauge_note(name, k, i, files, station_ids, earlier, shared_of):
+    """The note on gauge i, the k-th of the filter's list name: the gauge at its place, or the
+    gauge its observations go to."""
+    note = ""
+    if name == "DuplicateGaugeIds" and earlier:
+        note = f"same place as {files.place_word()} {files.gauge_lines[int(earlier.GetValue(k))]}"
+    elif name == "UnobservedGaugeIds" and i in shared_of:
+        first = shared_of[i]
+        note = (f"station id of {files.place_word()} {files.gauge_lines[first]} "
+                f"({station_ids[first]}): its observations go to that gauge")
+    return note
+
+
+def write_unused_in_reading(out, files, unmatched_columns, outside, summed_repeats, dropped):
+    """write_unused's rows of the inputs left out in reading, which the filter never saw. Returns
+    how many inputs they list."""
+    written = 0
+    for number, name in unmatched_columns:
+        out.writerow(["observations column naming no gauge's station (not read)", files.observations, 1, name,
+                      f"column {number}"])
+        written += 1
+    for line, earlier, station in summed_repeats:
+        out.writerow([SUMMED_REPEAT, files.observations, line, station, f"repeats line {earlier}"])
+        written += 1
+    for line, flag, station in dropped:
+        out.writerow([DROPPED_FLAGGED, files.observations, line, station, f"QFLAG {flag}"])
+        written += 1
+    for first, last, count, names in outside:
+        several = f" of {len(names)} stations" if len(names) > 1 else ""
+        out.writerow([OUTSIDE_PERIOD, files.observations, first if first == last else f"{first}-{last}",
+                      next(iter(names)) if len(names) == 1 else "",
+                      f"{count} observations{several}" if count > 1 else ""])
+        written += count
     return written
 
 
@@ -2353,9 +2441,23 @@ class Period:
         return self.start is not None or self.end is not None
 
 
-def main(argv=None):
+def argument_parser():
+    """The script's options, in the order --help lists them."""
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--out", default="out", help="output directory (created if missing; default out, in the current directory)")
+    add_step_options(parser)
+    add_input_options(parser)
+    add_catchment_options(parser)
+    add_value_options(parser)
+    parser.add_argument("--no-plots", action="store_true", help="skip the PNG files")
+    parser.add_argument("--no-all-weights", action="store_true",
+                        help="skip weights_all_*.csv (every step's weights: with thousands of gauges and "
+                             "years of days, as large as the observations) and the memory it takes")
+    return parser
+
+
+def add_step_options(parser):
+    """--month, --day, --hour, --minute (the steps shown), --sum-to and --start/--end."""
     parser.add_argument("--month", action="append", help="month for the weights, tiles and map, YYYY-MM (may be "
                                                          "given more than once: each month's files; default: 1963-08, "
                                                          "or the nearest month of the record where a gauge reported; "
@@ -2395,7 +2497,10 @@ def main(argv=None):
                                         "it, and --start 'YYYY-MM-DD 01:00' to start a day")
     parser.add_argument("--end", help="the last step to average, as --start (a month is its last day or hour with "
                                       "daily or hourly observations; default: the observations' last)")
-    default_observations = os.path.join(DATA, "colorado_monthly_precip.csv")
+
+
+def add_input_options(parser):
+    """--stations and the options of its coordinates, and --observations."""
     parser.add_argument("--stations",
                         help="CSV of gauges: columns station_id, lon, lat (degrees, WGS84), "
                              f"optional name; {csv_input.SEPARATORS_TEXT}; "
@@ -2423,7 +2528,7 @@ def main(argv=None):
                              "or PROJ terms ('+proj=aea +lat_0=23 +lon_0=-96 +lat_1=29.5 +lat_2=45.5 +x_0=0 "
                              f"+y_0=0 +units=m'); read: {projected_input.READ}, on WGS84 or GRS80; they are "
                              "made lon/lat first")
-    parser.add_argument("--observations", default=default_observations,
+    parser.add_argument("--observations", default=DEFAULT_OBSERVATIONS,
                         help="CSV of monthly values, one row per gauge and month: columns "
                              f"station_id, year, month, precip ({csv_input.MISSING_TEXT} = missing); "
                              "or of daily values: columns station_id, year, month, day, precip, or "
@@ -2436,6 +2541,10 @@ def main(argv=None):
                              "wide: a row per time (date, or year, month, ...) with a column per station named "
                              f"by its station_id; {csv_input.SEPARATORS_TEXT}; default: the Colorado example's "
                              "record, examples/data/colorado_monthly_precip.csv")
+
+
+def add_catchment_options(parser):
+    """--catchment, and --feature and --each, which choose and group its features."""
     parser.add_argument("--catchment",
                         help="catchment polygon (GeoJSON or shapefile, or KML or GeoPackage, lon/lat, or a zip file "
                              "holding one; a file declaring a projected system in metres or feet, "
@@ -2451,6 +2560,10 @@ def main(argv=None):
                              "value of this attribute (such as HUC8: each sub-basin), into "
                              "areal_mean_by_ATTRIBUTE.csv (GDAL reads a feature without the attribute, or "
                              "with a null one, as 0 or empty text: it is grouped there)")
+
+
+def add_value_options(parser):
+    """--missing-value and --drop-flagged: the observed values read as missing."""
     parser.add_argument("--missing-value", action="append", type=float, default=[], metavar="NUMBER",
                         help="a precip value that means missing, such as -9999 (may be given more than once)")
     parser.add_argument("--drop-flagged", action="store_true",
@@ -2458,11 +2571,34 @@ def main(argv=None):
                              "PRCP_ATTRIBUTES in NOAA's Climate Data Online CSV: the value failed a quality check), "
                              "reading them as missing and listing them in unused_inputs.csv; without it they are "
                              "used as given, and named")
-    parser.add_argument("--no-plots", action="store_true", help="skip the PNG files")
-    parser.add_argument("--no-all-weights", action="store_true",
-                        help="skip weights_all_*.csv (every step's weights: with thousands of gauges and "
-                             "years of days, as large as the observations) and the memory it takes")
-    args = parser.parse_args(argv)
+
+
+def main(argv=None):
+    args = argument_parser().parse_args(argv)
+    each, asked, bounds = checked_options(args)
+
+    # Tessera first: without VTK (another Python than Debian's) this says how to run the script.
+    csv_input.import_tessera()
+    from vtkmodules.vtkCommonCore import vtkCommand
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+    # (the options first, --stations-crs's code looked up, the default inputs, then --out: all before
+    # any input is read but the observations' header)
+    stations_system = projected_input.stations_system(args.stations_utm, args.stations_crs, gdal_messages())
+    choose_default_inputs(args)
+    csv_input.output_directory(args.out)
+    inputs = read_inputs(args, stations_system, asked, bounds, each)
+    average, files, messages, summary = averaged_steps(args, inputs, vtkCommand)
+    rows, unused = write_tables(args, inputs, average, files, summary)
+    shown = write_shown_steps(args, inputs, average, messages, rows, vtkXMLPolyDataWriter)
+    if not args.no_plots:
+        plot_series(rows, os.path.join(args.out, "areal_mean.png"), inputs.record.steps)
+    say_summary(args, inputs, rows, shown, unused)
+
+
+def checked_options(args):
+    """--each's attribute (or None), the steps asked for (asked_steps) and the --start/--end bounds,
+    once the options are checked: a wrong one ends the script before any work."""
     given = [f"--{name} {values[0]}" for name, values in (("month", args.month), ("day", args.day),
                                                            ("hour", args.hour), ("minute", args.minute)) if values]
     if len(given) > 1:
@@ -2482,18 +2618,16 @@ def main(argv=None):
     asked = asked_steps(args)
     bounds = (period_bound(args.start, "--start"), period_bound(args.end, "--end"))
     check_period(*bounds, (args.start, args.end))
+    return each, asked, bounds
 
-    # Tessera first: without VTK (another Python than Debian's) this says how to run the script.
-    csv_input.import_tessera()
-    from vtkmodules.vtkCommonCore import vtkCommand
-    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
-    # (the options first, --stations-crs's code looked up, the default inputs, then --out: all before
-    # any input is read but the observations' header)
-    stations_system = projected_input.stations_system(args.stations_utm, args.stations_crs, gdal_messages())
+def choose_default_inputs(args):
+    """Sets args.stations and args.catchment where not given: the stations from the observations
+    file where it has their places (stations_path), the catchment the example's outline, for the
+    example's gauges only (ends the script for others)."""
     if args.stations is None:
         args.stations = stations_path(args.observations)
-        if args.observations != default_observations and args.stations != args.observations:
+        if args.observations != DEFAULT_OBSERVATIONS and args.stations != args.observations:
             print(f"note: without --stations, the gauges are the Colorado example's ({args.stations}): "
                   f"{args.observations} has no place columns (lon and lat, or LONGITUDE and LATITUDE) to read "
                   "its stations from; give your stations file with --stations", file=sys.stderr)
@@ -2505,7 +2639,18 @@ def main(argv=None):
                            "example's: give your catchment's polygon file with --catchment (for gauges in "
                            f"Colorado, the example's outline is {EXAMPLE_CATCHMENT})")
         args.catchment = EXAMPLE_CATCHMENT
-    csv_input.output_directory(args.out)
+
+
+# The inputs read (read_inputs): the gauges (vtkPolyData) and each one's line in the stations file,
+# their station ids, the observations (read_observations' Observations), the steps to show
+# (check_asked_steps'), the catchment and its outline (read_catchment's), and --each's attribute and
+# groups of features (None without --each).
+Inputs = collections.namedtuple("Inputs", "gauges gauge_lines station_ids record wanted catchment outline each groups")
+
+
+def read_inputs(args, stations_system, asked, bounds, each):
+    """The gauges, observations and catchment, as Inputs; the steps asked for (asked) checked
+    against the observations' steps."""
     started = time.time()
     combined = holds_observations(args.stations, args.observations)
     gauges, gauge_lines = read_gauges(args.stations, stations_system, combined, args.stations_id)
@@ -2513,14 +2658,32 @@ def main(argv=None):
         csv_input.fail(f"{args.stations}: no gauges (the file has no rows)")
     ids = gauges.GetPointData().GetAbstractArray("station_id")
     station_ids = [ids.GetValue(i) for i in range(ids.GetNumberOfValues())]
+    record = read_observations(
+        args.observations, first_gauge_of_stations(station_ids), min(station_ids, default=None), args.stations,
+        set(args.missing_value), station_ids, bounds, (args.start, args.end), args.sum_to, args.drop_flagged)
+    wanted = wanted_steps(asked, record, args)
+    catchment, outline = read_catchment(args.catchment, args.feature)
+    groups = polygon_groups(features_by_value(catchment, each, args.catchment), each,
+                            args.catchment) if each is not None else None
+    # (the observations file's rows: the table also has a row for each step without any)
+    print(f"read {gauges.GetNumberOfPoints()} gauges and {record.read} observations in "
+          f"{time.time() - started:.1f} s", file=sys.stderr)
+    return Inputs(gauges, gauge_lines, station_ids, record, wanted, catchment, outline, each, groups)
+
+
+def first_gauge_of_stations(station_ids):
+    """The gauge that a station's observations go to, by station_key."""
     # A station's observations go to the first gauge with its id (station_key), as in the filter.
     gauge_of = {}
     for i, station in enumerate(station_ids):
         gauge_of.setdefault(station_key(station), i)
-    record = read_observations(
-        args.observations, gauge_of, min(station_ids, default=None), args.stations, set(args.missing_value),
-        station_ids, bounds, (args.start, args.end), args.sum_to, args.drop_flagged)
-    observations, steps = record.table, record.steps
+    return gauge_of
+
+
+def wanted_steps(asked, record, args):
+    """The steps asked for (asked_steps') as check_asked_steps takes them, once each is checked to
+    be of the observations' kind of step and on their grid."""
+    steps = record.steps
     for option, when in asked:
         if len(when) > steps.fields:
             csv_input.fail(f"{option}: the observations of {args.observations} are {steps.described} "
@@ -2530,21 +2693,21 @@ def main(argv=None):
     # (a month is its first day or hour with daily or hourly steps, a day its 00:00 hour; check_asked_steps
     # takes the first of them in the record and period)
     wanted = [(option, when, widened(when, steps.fields, False, steps.minutes)) for option, when in asked]
-    wanted = check_asked_steps(wanted, record, args.observations, (args.start, args.end))
-    catchment, outline = read_catchment(args.catchment, args.feature)
-    groups = polygon_groups(features_by_value(catchment, each, args.catchment), each,
-                            args.catchment) if each is not None else None
-    # (the observations file's rows: the table also has a row for each step without any)
-    print(f"read {gauges.GetNumberOfPoints()} gauges and {record.read} observations in "
-          f"{time.time() - started:.1f} s", file=sys.stderr)
+    return check_asked_steps(wanted, record, args.observations, (args.start, args.end))
 
-    average = areal_average(gauges, catchment, observations)
+
+def averaged_steps(args, inputs, vtkCommand):
+    """The areal average filter run over every step, with a progress bar: the filter, its InputFiles,
+    its FilterMessages and its summary table (output 1)."""
+    record = inputs.record
+    steps = record.steps
+    average = areal_average(inputs.gauges, inputs.catchment, record.table)
     # (--each measures its groups from that table)
-    average.SetWeightsTable(not args.no_all_weights or groups is not None)
+    average.SetWeightsTable(not args.no_all_weights or inputs.groups is not None)
     progress = Progress("Thiessen areal means")
     progress_tag = average.AddObserver(vtkCommand.ProgressEvent, progress)
     started = time.time()
-    files = InputFiles(args.stations, gauge_lines, args.observations, record.lines, args.catchment, steps.noun,
+    files = InputFiles(args.stations, inputs.gauge_lines, args.observations, record.lines, args.catchment, steps.noun,
                        record.period.given())
     messages = FilterMessages(average, files, progress)
     average.Update(1)
@@ -2554,8 +2717,38 @@ def main(argv=None):
     print(f"{count} {steps.noun}{'s' if count != 1 else ''} in {time.time() - started:.2f} s", file=sys.stderr)
     # The step's tiles below re-run the filter for that time only: no second progress bar.
     average.RemoveObserver(progress_tag)
+    return average, files, messages, summary
+
+
+def all_weights_name(steps):
+    """The name of the file of every step's weights."""
+    return f"weights_all_{steps.unit}s.csv"
+
+
+def by_feature_name(each):
+    """The name of the file of --each's areal means."""
+    return "areal_mean_by_" + re.sub(r"[^A-Za-z0-9_.-]", "_", each) + ".csv"
+
+
+def write_tables(args, inputs, average, files, summary):
+    """Writes the files of all steps: areal_mean.csv, every step's weights, unused_inputs.csv and
+    --each's means. Returns areal_mean.csv's rows (write_summary's) and the number of unused inputs."""
+    record = inputs.record
+    steps = record.steps
     rows = write_summary(summary, steps, os.path.join(args.out, "areal_mean.csv"))
-    all_weights = f"weights_all_{steps.unit}s.csv"
+    write_all_weights_or_remove(args, average, steps)
+    unused = write_unused(summary, files, inputs.station_ids, record.table, steps.noun,
+                          os.path.join(args.out, "unused_inputs.csv"), record.unmatched, record.outside,
+                          record.summed_repeats, record.dropped)
+    if inputs.groups:
+        write_means_by_feature(inputs.groups, inputs.each, inputs.gauges, record.table, steps, average,
+                               args.catchment, os.path.join(args.out, by_feature_name(inputs.each)))
+    return rows, unused
+
+
+def write_all_weights_or_remove(args, average, steps):
+    """Writes every step's weights (output 2), or with --no-all-weights removes an earlier run's file."""
+    all_weights = all_weights_name(steps)
     if args.no_all_weights:
         stale = os.path.join(args.out, all_weights)
         if os.path.exists(stale):
@@ -2564,46 +2757,77 @@ def main(argv=None):
                   "files", file=sys.stderr)
     else:
         write_all_weights(average.GetOutputDataObject(2), steps, os.path.join(args.out, all_weights))
-    unused = write_unused(summary, files, station_ids, observations, steps.noun,
-                          os.path.join(args.out, "unused_inputs.csv"), record.unmatched, record.outside,
-                          record.summed_repeats, record.dropped)
-    if groups:
-        by_feature = "areal_mean_by_" + re.sub(r"[^A-Za-z0-9_.-]", "_", each) + ".csv"
-        write_means_by_feature(groups, each, gauges, observations, steps, average, args.catchment,
-                               os.path.join(args.out, by_feature))
 
+
+def write_shown_steps(args, inputs, average, messages, rows, vtkXMLPolyDataWriter):
+    """Writes the weights, tiles and map of each step shown (--month, ..., or the default), once
+    each. Returns per step shown: (step, its tag, per_gauge)."""
+    steps = inputs.record.steps
     shown = []  # per step shown: (step, its tag, per_gauge)
-    for option, when, step in wanted:
+    for option, when, step in inputs.wanted:
         if not option:
-            step = nearest_reported(rows, steps, default_step(rows, step, args.observations, default_observations))
-        average.UpdateTimeStep(steps.time(step))
-        tiles = average.GetOutputDataObject(0)
-        messages.check(tiles is None)
-        # (a step asked for is one of the table's (check_asked_steps); the default may be another)
-        chosen = steps.of_time[tiles.GetInformation().Get(tiles.DATA_TIME_STEP())]
-        if option and chosen != step:
-            csv_input.fail(f"{option}: internal error: the filter gave the tiles of {steps.text(chosen)} for "
-                           f"{steps.text(step)}, a step of the table (please report it)")
+            step = nearest_reported(rows, steps, default_step(rows, step, args.observations, DEFAULT_OBSERVATIONS))
+        tiles, chosen = step_tiles(average, messages, steps, option, step)
         if any(chosen == earlier for earlier, _, _ in shown):
             continue  # (its files are written: another option gave the same step)
         tag = steps.tag(chosen)
-        per_gauge = tiles_by_gauge(tiles)
-        write_weights(per_gauge, gauges, os.path.join(args.out, f"weights_{tag}.csv"))
-        csv_input.write_vtk(vtkXMLPolyDataWriter(), tiles, os.path.join(args.out, f"tiles_{tag}.vtp"))
-        write_tiles_geojson(average.GetOutputDataObject(3), gauges, os.path.join(args.out, f"tiles_{tag}.geojson"))
-        if not args.no_plots:
-            plot_map(per_gauge, gauges, outline, record.reporting.get(chosen, set()), map_title(rows, steps, chosen),
-                     os.path.join(args.out, f"map_{tag}.png"), steps.adjective)
+        per_gauge = write_step_files(args, inputs, average, tiles, rows, chosen, tag, vtkXMLPolyDataWriter)
         shown.append((chosen, tag, per_gauge))
-    if not args.no_plots:
-        plot_series(rows, os.path.join(args.out, "areal_mean.png"), steps)
+    return shown
 
+
+def step_tiles(average, messages, steps, option, step):
+    """The filter's tiles of step, and the table's step they are of (option: the option that asked
+    for it, "" for the default)."""
+    average.UpdateTimeStep(steps.time(step))
+    tiles = average.GetOutputDataObject(0)
+    messages.check(tiles is None)
+    # (a step asked for is one of the table's (check_asked_steps); the default may be another)
+    chosen = steps.of_time[tiles.GetInformation().Get(tiles.DATA_TIME_STEP())]
+    if option and chosen != step:
+        csv_input.fail(f"{option}: internal error: the filter gave the tiles of {steps.text(chosen)} for "
+                       f"{steps.text(step)}, a step of the table (please report it)")
+    return tiles, chosen
+
+
+def write_step_files(args, inputs, average, tiles, rows, chosen, tag, vtkXMLPolyDataWriter):
+    """Writes a step's (chosen's, tag: its part of the names) weights, tiles (VTK and GeoJSON) and
+    map. Returns its tiles by gauge (tiles_by_gauge)."""
+    steps = inputs.record.steps
+    per_gauge = tiles_by_gauge(tiles)
+    write_weights(per_gauge, inputs.gauges, os.path.join(args.out, f"weights_{tag}.csv"))
+    csv_input.write_vtk(vtkXMLPolyDataWriter(), tiles, os.path.join(args.out, f"tiles_{tag}.vtp"))
+    write_tiles_geojson(average.GetOutputDataObject(3), inputs.gauges, os.path.join(args.out, f"tiles_{tag}.geojson"))
+    if not args.no_plots:
+        plot_map(per_gauge, inputs.gauges, inputs.outline, inputs.record.reporting.get(chosen, set()),
+                 map_title(rows, steps, chosen), os.path.join(args.out, f"map_{tag}.png"), steps.adjective)
+    return per_gauge
+
+
+def say_summary(args, inputs, rows, shown, unused):
+    """The closing lines: a note on earlier runs' files kept in --out, the means, and the files
+    written."""
+    record, groups = inputs.record, inputs.groups
+    steps = record.steps
+    all_weights = all_weights_name(steps)
+    if groups:
+        by_feature = by_feature_name(inputs.each)
     tags = [tag for _, tag, _ in shown]
     step_files = [name for tag in tags for name in (f"weights_{tag}.csv", f"tiles_{tag}.vtp", f"tiles_{tag}.geojson")]
     plot_files = [] if args.no_plots else [f"map_{tag}.png" for tag in tags] + ["areal_mean.png"]
     say_earlier_outputs(args.out, {"areal_mean.csv", "unused_inputs.csv", *step_files, *plot_files}
                         | (set() if args.no_all_weights else {all_weights})
                         | ({by_feature} if groups else set()))
+    say_means(rows, steps, shown)
+    print(f"wrote {args.out}/areal_mean.csv, " + ("" if args.no_all_weights else f"{all_weights}, ")
+          + ", ".join(step_files + plot_files)
+          + f", unused_inputs.csv ({unused} input(s) not used"
+          + (f", {outside_count(record.outside)} of them outside --start/--end)" if record.outside else ")")
+          + (f", {by_feature} ({len(groups)} group(s) of features)" if groups else ""))
+
+
+def say_means(rows, steps, shown):
+    """The number of steps and the mean of their areal means, then each shown step's areal mean."""
     valid = [r[-1] for r in rows if not math.isnan(r[-1])]
     print(f"{len(rows)} {steps.noun}{'s' if len(rows) != 1 else ''}, {len(valid)} with data"
           + (f"; mean of the {steps.adjective} areal means {shown_mean(sum(v / len(valid) for v in valid))}"
@@ -2615,11 +2839,6 @@ def main(argv=None):
             continue
         print(f"{steps.text(step)}: areal mean {shown_mean(mean)}, {used} gauges reported, "
               f"{weighted} weighted; weights sum to {sum(e['weight'] for e in per_gauge.values()):.12f}")
-    print(f"wrote {args.out}/areal_mean.csv, " + ("" if args.no_all_weights else f"{all_weights}, ")
-          + ", ".join(step_files + plot_files)
-          + f", unused_inputs.csv ({unused} input(s) not used"
-          + (f", {outside_count(record.outside)} of them outside --start/--end)" if record.outside else ")")
-          + (f", {by_feature} ({len(groups)} group(s) of features)" if groups else ""))
 
 
 def check_asked_steps(wanted, record, path, bound_texts):
