@@ -211,7 +211,8 @@ def chosen_settings(args, fiji, grouping):
             for name, value in defaults.items()}
 
 
-def main(argv=None):
+def argument_parser():
+    """The script's options, in the order --help lists them."""
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--quakes", default=DEFAULT_QUAKES,
                         help=f"CSV of epicentres: columns lat, lon (degrees; also read as latitude, longitude, "
@@ -226,6 +227,12 @@ def main(argv=None):
                         help="start of the output files' names, without a path separator (the files go into "
                              "--out; default: fiji for the Fiji file, else the input file's name without its "
                              "extension)")
+    add_grouping_options(parser)
+    return parser
+
+
+def add_grouping_options(parser):
+    """The settings of the grouping filter."""
     # (the Fiji file's settings differ from the filter's defaults, which another file gets: tuned to
     # the scattered epicentres, CurveSigma 0.1 drew a smooth curve 3.9 units off a clean S curve)
     parser.add_argument("--width", type=float, default=None,
@@ -246,7 +253,10 @@ def main(argv=None):
                              "scattered events)")
     parser.add_argument("--gaussian", action="store_true", help="Gaussian basis instead of inverse multiquadric")
     parser.add_argument("--closest-tangent", action="store_true", help="closest-tangent join rule")
-    args = parser.parse_args(argv)
+
+
+def main(argv=None):
+    args = argument_parser().parse_args(argv)
     # (what is wrong with the options is said before any work: the grouping takes seconds)
     problem = prefix_error(args.prefix) if args.prefix is not None else None
     if problem:
@@ -267,6 +277,18 @@ def main(argv=None):
     # (the bundled file as the script reads it: with --planar it is refused for its lat, lon)
     fiji = os.path.abspath(args.quakes) == os.path.abspath(DEFAULT_QUAKES) and not args.planar
     say_repeated_points(quakes, args.quakes, lines, args.planar, bundled=fiji)
+    grouping = run_grouping(args, grouped, lines, fiji, vtkRidgeGrouping)
+    names = write_outputs(args, grouping, fiji, vtkXMLPolyDataWriter, vtkXMLImageDataWriter)
+    summary = grouping_summary(grouping.GetOutput(0), args.planar)
+    plot_groups(args, grouping, fiji, summary, os.path.join(args.out, names["groups.png"]))
+    print(summary)
+    print(f"wrote {args.out}/" + ", ".join(names.values()))
+
+
+def run_grouping(args, grouped, lines, fiji, vtkRidgeGrouping):
+    """The grouping filter with the options' settings, run on grouped (the points projected, or as
+    given with --planar): its outputs are the groups, contours, curves and field. Its error ends
+    the script."""
     errors = []
     grouping = vtkRidgeGrouping()
     settings = chosen_settings(args, fiji, grouping)
@@ -284,10 +306,14 @@ def main(argv=None):
     grouping.Update()
     if errors:
         csv_input.fail(errors[0])
-    points = grouping.GetOutput(0)
-    if points.GetNumberOfPoints() == 0:
+    if grouping.GetOutput(0).GetNumberOfPoints() == 0:
         csv_input.fail("ridge grouping failed and gave no message")
+    return grouping
 
+
+def write_outputs(args, grouping, fiji, vtkXMLPolyDataWriter, vtkXMLImageDataWriter):
+    """Writes the grouping's four outputs into --out. Returns the output files' names, by their
+    part after the prefix (the plot's too, written later)."""
     prefix = args.prefix if args.prefix is not None else (
         "fiji" if fiji else os.path.splitext(os.path.basename(args.quakes))[0])
     names = {part: f"{prefix}_{part}" for part in ("groups.png", "points.vtp", "contours.vtp", "curves.vtp",
@@ -297,22 +323,43 @@ def main(argv=None):
                             os.path.join(args.out, names[part]))
     csv_input.write_vtk(vtkXMLImageDataWriter(), grouping.GetOutputDataObject(3),
                         os.path.join(args.out, names["field.vti"]))
+    return names
 
-    groups = points.GetPointData().GetArray("GroupId")
-    ids = [groups.GetValue(i) for i in range(points.GetNumberOfPoints())]
-    fd = points.GetFieldData()
+
+def plot_scale(planar):
+    """The plot's unit in the points' own."""
     # Plotted in km when projected (metres), else in the file's own unit.
-    scale = 1.0 if args.planar else 1000.0
-    pixel = fd.GetArray("PixelSize").GetValue(0)
-    summary = (f"{len(set(ids) - {-1})} groups, {ids.count(-1)} points unassigned; image "
-               f"{int(fd.GetArray('ImageSize').GetValue(0))} px, pixel "
-               + (f"{pixel:.4g}" if args.planar else f"{pixel / scale:.1f} km"))
+    return 1.0 if planar else 1000.0
 
+
+def group_ids(points):
+    """Each point's GroupId (-1: unassigned)."""
+    groups = points.GetPointData().GetArray("GroupId")
+    return [groups.GetValue(i) for i in range(points.GetNumberOfPoints())]
+
+
+def grouping_summary(points, planar):
+    """The line that sums up the grouping (points: its output 0): groups, points unassigned, the
+    image's size and pixel."""
+    ids = group_ids(points)
+    fd = points.GetFieldData()
+    scale = plot_scale(planar)
+    pixel = fd.GetArray("PixelSize").GetValue(0)
+    return (f"{len(set(ids) - {-1})} groups, {ids.count(-1)} points unassigned; image "
+            f"{int(fd.GetArray('ImageSize').GetValue(0))} px, pixel "
+            + (f"{pixel:.4g}" if planar else f"{pixel / scale:.1f} km"))
+
+
+def plot_groups(args, grouping, fiji, summary, path):
+    """Plots the points coloured by group, the ridge contours and the fitted curves into path."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    points = grouping.GetOutput(0)
+    ids = group_ids(points)
+    scale = plot_scale(args.planar)
     fig, ax = plt.subplots(figsize=(7, 9))
     xs = [points.GetPoint(i)[0] / scale for i in range(points.GetNumberOfPoints())]
     ys = [points.GetPoint(i)[1] / scale for i in range(points.GetNumberOfPoints())]
@@ -333,10 +380,8 @@ def main(argv=None):
     ax.set_title(title + " grouped by ridges\n" + summary, fontsize=10)
     ax.legend(loc="lower left" if fiji else "best", fontsize=8)  # (Fiji: its empty corner)
     fig.tight_layout()
-    fig.savefig(os.path.join(args.out, names["groups.png"]), dpi=110)
+    fig.savefig(path, dpi=110)
     plt.close(fig)
-    print(summary)
-    print(f"wrote {args.out}/" + ", ".join(names.values()))
 
 
 if __name__ == "__main__":
