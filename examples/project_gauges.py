@@ -260,7 +260,8 @@ def plane_origin(record):
     return None if errors or output.GetNumberOfPoints() != 1 else output.GetPoint(0)[:2]
 
 
-def main(argv=None):
+def argument_parser():
+    """The script's options, in the order --help lists them."""
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--stations", default=os.path.join(HERE, "data", "colorado_stations.csv"),
                         help="CSV of gauges: columns station_id, lon, lat (degrees), optional name, elev_m; "
@@ -279,7 +280,11 @@ def main(argv=None):
                         help="a projected coordinate system: EPSG:CODE (such as EPSG:5070) or PROJ terms "
                              "(such as '+proj=aea +lat_0=23 +lon_0=-96 +lat_1=29.5 +lat_2=45.5 +x_0=0 +y_0=0')")
     parser.add_argument("--out", default="out", help="output directory (created if missing)")
-    args = parser.parse_args(argv)
+    return parser
+
+
+def main(argv=None):
+    args = argument_parser().parse_args(argv)
     csv_input.check_paths(("--stations", args.stations, "stations"))
     # Imported after parsing so that --help works without VTK on the path; Tessera first, so that
     # without VTK (another Python than Debian's) this says how to run the script.
@@ -296,6 +301,22 @@ def main(argv=None):
     gauges, lines = read_gauges(args.stations)
     if gauges.GetNumberOfPoints() == 0:
         csv_input.fail(f"{args.stations}: no gauges to project (the file has no rows)")
+    projected = projected_gauges(args, system, gauges, lines, vtkGeographicProjection)
+    # (said once the projection has taken the gauges: a gauge it rejects is the run's one line)
+    places = [gauges.GetPoint(k)[:2] for k in range(gauges.GetNumberOfPoints())]
+    say_repeated_gauges(args.stations, gauges, lines, places)
+    if system is None:
+        say_far_gauges(args.stations, gauges, lines, places, args.projection, projected)
+
+    csv_input.write_vtk(vtkXMLPolyDataWriter(), projected, os.path.join(args.out, "gauges_projected.vtp"))
+    write_projected_csv(gauges, projected, system, os.path.join(args.out, "gauges_projected.csv"))
+    say_projection(projected, system)
+    print(f"wrote {args.out}/gauges_projected.vtp and {args.out}/gauges_projected.csv")
+
+
+def projected_gauges(args, system, gauges, lines, vtkGeographicProjection):
+    """The gauges projected: to --crs's system, else with --projection fitted to them. An error
+    ends the script."""
     if system is not None:
         projection = projected_input.projection_filter(system, False)
     else:
@@ -315,16 +336,15 @@ def main(argv=None):
         csv_input.fail("the projection failed: " + re.sub(r" for request: .*", "", executive_errors[0]))
     if projected.GetNumberOfPoints() != gauges.GetNumberOfPoints():
         csv_input.fail("the projection failed and gave no message")
-    # (said once the projection has taken the gauges: a gauge it rejects is the run's one line)
-    places = [gauges.GetPoint(k)[:2] for k in range(gauges.GetNumberOfPoints())]
-    say_repeated_gauges(args.stations, gauges, lines, places)
-    if system is None:
-        say_far_gauges(args.stations, gauges, lines, places, args.projection, projected)
+    return projected
 
-    csv_input.write_vtk(vtkXMLPolyDataWriter(), projected, os.path.join(args.out, "gauges_projected.vtp"))
+
+def write_projected_csv(gauges, projected, system, path):
+    """Writes gauges_projected.csv: each gauge's lon/lat and x, y in metres (and with --crs, in the
+    system's own unit)."""
     ids = projected.GetPointData().GetAbstractArray("StationId")
     names = projected.GetPointData().GetAbstractArray("Name")
-    with open(os.path.join(args.out, "gauges_projected.csv"), "w", newline="") as f:
+    with open(path, "w", newline="") as f:
         out = csv.writer(f)
         out.writerow(["station_id", "name", "lon", "lat", "x_m", "y_m"] + (["x_crs", "y_crs"] if system else []))
         for i in range(projected.GetNumberOfPoints()):
@@ -332,13 +352,16 @@ def main(argv=None):
             x, y, _ = projected.GetPoint(i)
             own = [f"{value:.3f}" for value in system.from_grid(x, y)] if system else []
             out.writerow([ids.GetValue(i), names.GetValue(i), lon, lat, f"{x:.3f}", f"{y:.3f}"] + own)
+
+
+def say_projection(projected, system):
+    """Says the projection the gauges were projected with, and its plane's origin."""
     record = projection_record(projected)
     print(f"projected {projected.GetNumberOfPoints()} gauges with {record}"
           + (f" ({system.describe()})" if system else ""))
     origin = plane_origin(record)
     if origin is not None:
         print(f"x_m and y_m are metres from the plane's origin, at lon {origin[0]:.10f}, lat {origin[1]:.10f}")
-    print(f"wrote {args.out}/gauges_projected.vtp and {args.out}/gauges_projected.csv")
 
 
 if __name__ == "__main__":
