@@ -694,73 +694,45 @@ int compare_distance(const Point2& p, const Point2& a, const Point2& b)
   return detail::compare_distance_filter(p, a, b);
 }
 
-int affine_sign(double a, double b, double c, const Point2& p)
+namespace
 {
-  // Filter: the value's rounding error is below 2 eps (|a x| + |b y|) (1 + eps); 4 eps is safe.
-  const double ax = a * p.x;
-  const double by = b * p.y;
-  const double value = (ax + by) + c;
-  const double errbound =
-    4.0 * detail::kEpsilon * ((std::fabs(ax) + std::fabs(by)) + std::fabs(c)) +
-    detail::kUnderflowTerm;
-  if (value > errbound)
-  {
-    return 1;
-  }
-  if (-value > errbound)
-  {
-    return -1;
-  }
 
-  const double factors[4] = { a, p.x, b, p.y };
-  bool finite = std::isfinite(c);
-  BitRange factorRange;
-  for (double f : factors)
+/// The sign of a x + b y + c from the products' expansions: exact when every nonzero factor lies
+/// within [2^-537, 2^500] (the products exact and normal enough for split()) and |c| < 2^1001
+/// (the sum finite).
+int affine_sign_expansion(double a, double b, double c, const Point2& p)
+{
+  double px[2], py[2], sum[4], total[5];
+  int pxn = 0, pyn = 0;
+  double hi, lo;
+  two_product(a, p.x, hi, lo);
+  if (lo != 0.0)
   {
-    factorRange.add(f);
-    finite = finite && std::isfinite(f);
+    px[pxn++] = lo;
   }
-  if (!finite)
+  if (hi != 0.0)
   {
-    return 0;
+    px[pxn++] = hi;
   }
-  BitRange cRange;
-  cRange.add(c);
-  // Expansion tier without scaling (the coefficients and the point scale independently): every
-  // nonzero factor within [2^-537, 2^500] keeps the products exact and normal enough for split(),
-  // and |c| < 2^1001 keeps the sum finite.
-  const bool factorsFit = factorRange.allZero() ||
-    (factorRange.high <= kDegree2HighMax && factorRange.low >= kDegree2LowMin);
-  if (factorsFit && (cRange.allZero() || cRange.high <= 1000))
+  two_product(b, p.y, hi, lo);
+  if (lo != 0.0)
   {
-    double px[2], py[2], sum[4], total[5];
-    int pxn = 0, pyn = 0;
-    double hi, lo;
-    two_product(a, p.x, hi, lo);
-    if (lo != 0.0)
-    {
-      px[pxn++] = lo;
-    }
-    if (hi != 0.0)
-    {
-      px[pxn++] = hi;
-    }
-    two_product(b, p.y, hi, lo);
-    if (lo != 0.0)
-    {
-      py[pyn++] = lo;
-    }
-    if (hi != 0.0)
-    {
-      py[pyn++] = hi;
-    }
-    const int sn = expansion_sum(px, pxn, py, pyn, sum);
-    const int cn = c != 0.0 ? 1 : 0;
-    const int n = expansion_sum(sum, sn, &c, cn, total);
-    return expansion_sign(total, n);
+    py[pyn++] = lo;
   }
+  if (hi != 0.0)
+  {
+    py[pyn++] = hi;
+  }
+  const int sn = expansion_sum(px, pxn, py, pyn, sum);
+  const int cn = c != 0.0 ? 1 : 0;
+  const int n = expansion_sum(sum, sn, &c, cn, total);
+  return expansion_sign(total, n);
+}
 
-  // Integers: every term is an integer times 2^base, base the smallest exponent in play.
+/// The sign of a x + b y + c for finite values of any exponents, in integers: every term is an
+/// integer times 2^base, base the smallest exponent in play.
+int affine_sign_integers(double a, double b, double c, const Point2& p)
+{
   int base = INT_MAX;
   int lowA = 0, lowX = 0, lowB = 0, lowY = 0, lowC = 0, high = 0;
   if (a != 0.0 && p.x != 0.0)
@@ -799,6 +771,50 @@ int affine_sign(double a, double b, double c, const Point2& p)
     total = total + BigInt::FromDouble(c, base);
   }
   return total.Sign();
+}
+
+} // namespace
+
+int affine_sign(double a, double b, double c, const Point2& p)
+{
+  // Filter: the value's rounding error is below 2 eps (|a x| + |b y|) (1 + eps); 4 eps is safe.
+  const double ax = a * p.x;
+  const double by = b * p.y;
+  const double value = (ax + by) + c;
+  const double errbound =
+    4.0 * detail::kEpsilon * ((std::fabs(ax) + std::fabs(by)) + std::fabs(c)) +
+    detail::kUnderflowTerm;
+  if (value > errbound)
+  {
+    return 1;
+  }
+  if (-value > errbound)
+  {
+    return -1;
+  }
+
+  const double factors[4] = { a, p.x, b, p.y };
+  bool finite = std::isfinite(c);
+  BitRange factorRange;
+  for (double f : factors)
+  {
+    factorRange.add(f);
+    finite = finite && std::isfinite(f);
+  }
+  if (!finite)
+  {
+    return 0;
+  }
+  BitRange cRange;
+  cRange.add(c);
+  // Expansion tier without scaling (the coefficients and the point scale independently).
+  const bool factorsFit = factorRange.allZero() ||
+    (factorRange.high <= kDegree2HighMax && factorRange.low >= kDegree2LowMin);
+  if (factorsFit && (cRange.allZero() || cRange.high <= 1000))
+  {
+    return affine_sign_expansion(a, b, c, p);
+  }
+  return affine_sign_integers(a, b, c, p);
 }
 
 Offset2 exact_offset(const Point2& q, const Point2& p)

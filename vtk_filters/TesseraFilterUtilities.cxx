@@ -545,6 +545,21 @@ tessera::Window ChooseWindow(const double bounds[4],
   return PaddedPointsWindow(padding, points, needArea);
 }
 
+tessera::Window ChooseWindowWithWarning(vtkAlgorithm* filter,
+  const double bounds[4],
+  const std::vector<double>& constraints,
+  double padding,
+  const std::vector<tessera::Point2>& points,
+  bool needArea)
+{
+  const std::string emptyBounds = EmptyBoundsWarning(bounds, !constraints.empty());
+  if (!emptyBounds.empty())
+  {
+    vtkWarningWithObjectMacro(filter, << emptyBounds);
+  }
+  return ChooseWindow(bounds, constraints, padding, points, needArea);
+}
+
 void CheckChoice(const char* property, int value, const std::vector<const char*>& names)
 {
   if (value >= 0 && static_cast<std::size_t>(value) < names.size())

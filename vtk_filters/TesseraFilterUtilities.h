@@ -182,6 +182,16 @@ tessera::Window ChooseWindow(const double bounds[4],
   const std::vector<tessera::Point2>& points,
   bool needArea = true);
 
+/// ChooseWindow, after the EmptyBoundsWarning (if there is one) given as the filter's warning:
+/// before the window is made, since an empty WindowBounds is ignored and a window of the
+/// constraints alone may then be refused, which the warning explains.
+tessera::Window ChooseWindowWithWarning(vtkAlgorithm* filter,
+  const double bounds[4],
+  const std::vector<double>& constraints,
+  double padding,
+  const std::vector<tessera::Point2>& points,
+  bool needArea);
+
 /// The window cut down to the points' bounding box padded by its larger side (by 1 or the
 /// coordinates' size for points without extent): for a triangulation the window only decides
 /// which points are used, and the box holds every point strictly, so the same points are used. A

@@ -61,24 +61,6 @@ vtkNew<vtkCellArray> FacesOf(const tessera::DirichletTessellation& tessellation,
   return polys;
 }
 
-/// The window the triangulation is cut to (tessera_vtk::ChooseWindow, no area needed), after the
-/// warning for an empty WindowBounds, if it is.
-tessera::Window MakeWindow(vtkDelaunayTriangulation* self,
-  const double bounds[4],
-  const std::vector<double>& constraints,
-  double padding,
-  const std::vector<tessera::Point2>& points)
-{
-  // (Before the window is made: an empty WindowBounds is ignored, and a window of the
-  // constraints alone may then be refused, which the warning explains.)
-  const std::string emptyBounds = tessera_vtk::EmptyBoundsWarning(bounds, !constraints.empty());
-  if (!emptyBounds.empty())
-  {
-    vtkWarningWithObjectMacro(self, << emptyBounds);
-  }
-  return tessera_vtk::ChooseWindow(bounds, constraints, padding, points, false);
-}
-
 /// The tessellation whose dual gives the triangles (progress 0.1 once the window is cut to the
 /// points).
 tessera::DirichletTessellation Triangulate(vtkDelaunayTriangulation* self,
@@ -223,8 +205,8 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     {
       vtkWarningMacro(<< tessera_vtk::NoPointsWarning("triangle"));
     }
-    tessera::Window window =
-      MakeWindow(this, this->WindowBounds, this->WindowConstraints, this->Padding, points);
+    tessera::Window window = tessera_vtk::ChooseWindowWithWarning(
+      this, this->WindowBounds, this->WindowConstraints, this->Padding, points, false);
     const tessera::Box2 windowBox = window.Bounds();
     const tessera::DirichletTessellation tessellation =
       Triangulate(this, std::move(window), std::move(points));

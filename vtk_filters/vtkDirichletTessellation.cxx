@@ -431,24 +431,6 @@ std::string AreasUnderflowWarning(const tessera::UninitializedVector<double>& ar
     "where the areas are wanted";
 }
 
-/// The window the tiles fill (tessera_vtk::ChooseWindow), after the warning for an empty
-/// WindowBounds, if it is.
-tessera::Window MakeWindow(vtkDirichletTessellation* self,
-  const double bounds[4],
-  const std::vector<double>& constraints,
-  double padding,
-  const std::vector<tessera::Point2>& points)
-{
-  // (Before the window is made: an empty WindowBounds is ignored, and a window of the
-  // constraints alone may then be refused, which the warning explains.)
-  const std::string emptyBounds = tessera_vtk::EmptyBoundsWarning(bounds, !constraints.empty());
-  if (!emptyBounds.empty())
-  {
-    vtkWarningWithObjectMacro(self, << emptyBounds);
-  }
-  return tessera_vtk::ChooseWindow(bounds, constraints, padding, points);
-}
-
 /// Tiles scaled by 2^-exponent back to the input's coordinates, with a warning where their areas
 /// underflow there.
 void ScaleTilesBack(vtkDirichletTessellation* self, tessera::TileMesh& tiles, int exponent)
@@ -693,8 +675,8 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     {
       vtkWarningMacro(<< tessera_vtk::NoPointsWarning("tile and no contiguity"));
     }
-    tessera::Window window =
-      MakeWindow(this, this->WindowBounds, this->WindowConstraints, this->Padding, points);
+    tessera::Window window = tessera_vtk::ChooseWindowWithWarning(
+      this, this->WindowBounds, this->WindowConstraints, this->Padding, points, true);
     const tessera::Box2 windowBox = window.Bounds();
     const TessellationResult result = Tessellate(this,
       std::move(window),
