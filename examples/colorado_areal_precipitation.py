@@ -1088,7 +1088,7 @@ def scan_observations(path, gauge_of, stations_path, station_ids, missing_values
                                                           rows.gaps, rows.repeats, rows.flagged, drop_flagged):
         rows.lines.append(line)
         if not len(rows.lines) & 0xFFFF:
-            reading.tick(len(rows.lines))
+            reading.tick(len(rows.lines), line)
         written = tuple(map(row.get, TIME_COLUMNS))
         index = index_of.get(written)
         if index is None:
@@ -1618,13 +1618,39 @@ class ReadingProgress:
     EVERY = 10.0
 
     def __init__(self, path):
-        self.path, self.last = path, time.monotonic()
+        self.path, self.last, self.lines = path, time.monotonic(), None
 
-    def tick(self, rows):
+    def tick(self, rows, line):
+        """rows read so far, the last on the file's line `line`."""
         now = time.monotonic()
         if now - self.last >= self.EVERY:
             self.last = now
-            print(f"reading {self.path}: {rows:,} rows so far", file=sys.stderr, flush=True)
+            print(f"reading {self.path}: {rows:,} rows so far{self.share(line)}", file=sys.stderr, flush=True)
+
+    def share(self, line):
+        """" (83% of its 5,843,000 lines)": how far line is into the file, its lines counted at the
+        first line said (a trial's 127 MB took a second read of 0.1 s); "" for a compressed file."""
+        if self.lines is None:
+            self.lines = line_count(self.path)
+        return f" ({100 * line / self.lines:.0f}% of its {self.lines:,} lines)" if self.lines else ""
+
+
+def line_count(path):
+    """The lines of the file at path, counted by their ends (\n, else \r); 0 for a compressed
+    file (whose bytes are not its lines) or one that cannot be read."""
+    count = ends = 0
+    last = b""
+    try:
+        with open(path, "rb") as handle:
+            if handle.read(6).startswith((b"\x1f\x8b", b"BZh", b"\xfd7zXZ\x00")):
+                return 0
+            handle.seek(0)
+            for chunk in iter(lambda: handle.read(1 << 24), b""):
+                count, ends, last = count + chunk.count(b"\n"), ends + chunk.count(b"\r"), chunk[-1:]
+    except OSError:
+        return 0
+    count = count or ends
+    return count + (1 if last not in (b"\n", b"\r", b"") else 0)
 
 
 def interactive():

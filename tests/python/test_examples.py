@@ -2059,25 +2059,38 @@ def test_text_lines_split_as_a_string_io_does():
 def test_reading_a_large_file_says_how_far_it_got():
     # Reading millions of rows took a minute or more with no output at all. read_observations says
     # how many rows it has read every ReadingProgress.EVERY seconds (0 here: at every check, which
-    # it makes every 65536 rows).
+    # it makes every 65536 rows), and how far that is into the file's lines; of a compressed file,
+    # whose bytes are not its lines, the rows alone.
     import contextlib
+    import gzip
     import io
 
     example = import_example()
     stations = [f"N{k}" for k in range(70)]
+    text = "station_id,year,month,precip\n" + "".join(
+        f"{s},{1900 + m // 12},{m % 12 + 1},1\n" for m in range(1000) for s in stations)
     with tempfile.TemporaryDirectory() as out:
-        path = write(out, "obs.csv", "station_id,year,month,precip\n" + "".join(
-            f"{s},{1900 + m // 12},{m % 12 + 1},1\n" for m in range(1000) for s in stations))
-        every, example.ReadingProgress.EVERY = example.ReadingProgress.EVERY, 0.0
-        said = io.StringIO()
-        try:
-            with contextlib.redirect_stderr(said):
-                example.read_observations(path, {example.station_key(s): k for k, s in enumerate(stations)},
-                                          stations[0], "stations.csv", set(), stations)
-        finally:
-            example.ReadingProgress.EVERY = every
-        lines = [line for line in said.getvalue().splitlines() if line.startswith(f"reading {path}:")]
-        assert_that(lines == [f"reading {path}: 65,536 rows so far"], f"progress lines: {said.getvalue()!r}")
+        plain = write(out, "obs.csv", text)
+        packed = os.path.join(out, "obs.csv.gz")
+        with open(packed, "wb") as f:
+            f.write(gzip.compress(text.encode()))
+        # (row 65,536 is on line 65,537 of the header and 70,000 rows)
+        for path, share in ((plain, f" ({100 * 65537 / 70001:.0f}% of its 70,001 lines)"), (packed, "")):
+            every, example.ReadingProgress.EVERY = example.ReadingProgress.EVERY, 0.0
+            said = io.StringIO()
+            try:
+                with contextlib.redirect_stderr(said):
+                    example.read_observations(path, {example.station_key(s): k for k, s in enumerate(stations)},
+                                              stations[0], "stations.csv", set(), stations)
+            finally:
+                example.ReadingProgress.EVERY = every
+            lines = [line for line in said.getvalue().splitlines() if line.startswith(f"reading {path}:")]
+            assert_that(lines == [f"reading {path}: 65,536 rows so far{share}"],
+                        f"progress lines: {said.getvalue()!r}")
+    for text, count in (("", 0), ("a", 1), ("a\n", 1), ("a\r\nb", 2), ("a\rb\r", 2), ("a\n\nb\n", 3)):
+        with tempfile.TemporaryDirectory() as out:
+            got = example.line_count(write(out, "lines.csv", text))
+            assert_that(got == count, f"line_count of {text!r}: {got}, expected {count}")
 
 
 def shapefile_of(rings):
