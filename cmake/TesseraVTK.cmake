@@ -46,4 +46,8 @@ paraview_plugin_build(
   RUNTIME_DESTINATION ${CMAKE_INSTALL_BINDIR}
   LIBRARY_DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY_SUBDIRECTORY paraview-plugins)
+# In the build tree too the plugin finds the filters' library by its installed runpath, relative
+# to itself (lib/paraview-plugins/Tessera/../../), as the Python module does: a copy of a build
+# tree loaded the library of the tree it was built in.
+set_target_properties(Tessera PROPERTIES BUILD_WITH_INSTALL_RPATH ON)
 set(TESSERA_PLUGIN_PATH ${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}/paraview-plugins/Tessera/Tessera.so)

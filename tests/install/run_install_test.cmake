@@ -81,4 +81,23 @@ string(STRIP "${output}" where)
 if(NOT where STREQUAL "${prefix}/python/tessera")
   message(FATAL_ERROR "tessera was imported from ${where}, not ${prefix}/python/tessera")
 endif()
+# The installed plugin, loaded by pvbatch, with the filters' library beside it in the prefix (its
+# runpath is relative: a trial's copy of a build tree loaded the library of the tree it was built
+# in); a missing library fails LoadPlugin.
+file(WRITE ${WORK_DIR}/plugin.py "import sys\nfrom paraview.simple import LoadPlugin\n"
+  "LoadPlugin(sys.argv[1], remote=False, ns=globals())\n"
+  "assert 'DirichletTessellation' in globals(), 'no filter'\n"
+  "libraries = {line.split()[-1] for line in open('/proc/self/maps') if 'libtesseraFilters' in line}\n"
+  "print('LOADED', *sorted(libraries))\n")
+file(GLOB_RECURSE installed_plugin ${prefix}/*/Tessera.so)
+if(NOT installed_plugin)
+  message(FATAL_ERROR "no Tessera.so installed under ${prefix}")
+endif()
+run("loading the installed plugin" ${PVBATCH} ${WORK_DIR}/plugin.py ${installed_plugin})
+file(GLOB installed_library ${prefix}/lib*/libtesseraFilters.so*)
+list(GET installed_library 0 installed_library)
+if(NOT output MATCHES "LOADED ${installed_library}\n")
+  message(FATAL_ERROR "the installed plugin loaded the filters' library from elsewhere than "
+    "${installed_library}:\n${output}")
+endif()
 message(STATUS "installed, found, built and run from ${prefix}")
