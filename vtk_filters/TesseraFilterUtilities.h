@@ -349,9 +349,12 @@ void AddDuplicatePointIds(vtkDataObject* data,
 /// The warning for points a tessellation filter did not use (`rejected` outside the window,
 /// `duplicates` exact copies with the point each copies), saying they were not `verb` ("used",
 /// "triangulated"), where their ids are, and the first 20 of each; empty when every point was used.
+/// With duplicates among input `points` stored as float, it also says the float's step at their
+/// coordinates, within which points became one when stored.
 std::string UnusedPointsWarning(const std::vector<std::int32_t>& rejected,
   const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates,
-  const char* verb);
+  const char* verb,
+  vtkPoints* points = nullptr);
 
 /// The warning for a window (its bounding box) that holds none of the points (`rejected` all of
 /// them), so that there is no `what` ("tile"), naming the window's box and the points' (a

@@ -107,7 +107,8 @@ void AddUnusedPoints(vtkDelaunayTriangulation* self,
     vtkWarningWithObjectMacro(
       self, << tessera_vtk::RenamedArraysWarning(renamed, "field-data", "the output", "field"));
   }
-  const std::string unused = tessera_vtk::UnusedPointsWarning(rejected, duplicates, "triangulated");
+  const std::string unused =
+    tessera_vtk::UnusedPointsWarning(rejected, duplicates, "triangulated", inputPoints);
   if (!unused.empty())
   {
     vtkWarningWithObjectMacro(self, << unused);

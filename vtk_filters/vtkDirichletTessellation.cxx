@@ -566,7 +566,7 @@ void WarnOfUnusedPointsAndCollapsedTiles(vtkDirichletTessellation* self,
   vtkPoints* inputPoints)
 {
   const std::string unused =
-    tessera_vtk::UnusedPointsWarning(result.Rejected, result.Duplicates, "used");
+    tessera_vtk::UnusedPointsWarning(result.Rejected, result.Duplicates, "used", inputPoints);
   if (!unused.empty())
   {
     vtkWarningWithObjectMacro(self, << unused);

@@ -1675,8 +1675,41 @@ def test_a_progress_observer_can_stop_a_run():
     assert_that(not errors and points == 0 and rerun == 100, f"projection: {errors}, {points}, {rerun}")
 
 
+def test_duplicates_made_by_float_storage_are_said_to_be_so():
+    """Points stored as float at UTM-sized coordinates (5e6: a float's step is 0.5 there) become
+    one when 0.1 apart: the warning says the float's step and how to keep them apart; stored as
+    double they stay apart, and duplicates of doubles get no such note."""
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import vtkPolyData
+
+    coords = [(500000.0, 5000000.0), (500000.0, 5000000.1), (500100.0, 5000040.0), (500030.0, 5000090.0),
+              (500030.0, 5000090.0)]
+    step = float(np.spacing(np.float32(5000090.0)))  # the float step at the largest coordinate
+
+    def points_as(kind):
+        points = vtkPoints()
+        getattr(points, "SetDataTypeTo" + kind)()
+        for x, y in coords:
+            points.InsertNextPoint(x, y, 0.0)
+        data = vtkPolyData()
+        data.SetPoints(points)
+        return data
+
+    for make in (vtkDirichletTessellation, vtkDelaunayTriangulation):
+        for kind, copies, noted in (("Float", "1 -> 0, 4 -> 3", True), ("Double", "4 -> 3", False)):
+            warnings = warnings_of_update(make(), points_as(kind))
+            said = [w for w in warnings if "exact duplicate(s)" in w]
+            assert_that(len(said) == 1, f"{make.__name__} {kind}: {warnings}")
+            pairs = said[0].split("duplicates: ")[1]
+            assert_that(all(f"point {k.split(' -> ')[0]} (of point {k.split(' -> ')[1]})" in pairs
+                            for k in copies.split(", ")), f"{make.__name__} {kind}: pairs {pairs}")
+            note = f"The points are stored as float, whose step at coordinates of 5000090 is {step:g}"
+            assert_that((note in said[0]) == noted, f"{make.__name__} {kind}: {said[0]}")
+
+
 if __name__ == "__main__":
     run([test_a_progress_observer_can_stop_a_run,
+         test_duplicates_made_by_float_storage_are_said_to_be_so,
          test_tiles_are_nearest_point_regions,
          test_brassel_reif_names_a_side_that_lies_at_no_double_as_it_was_given,
          test_delaunay_faces_match_vtk_delaunay2d_and_count,
