@@ -14,9 +14,9 @@
  * crossings), each computed from its points taken in coordinate order, and an area is summed from
  * its tile's lowest corner, so the input reordered gives the same corners and areas, bit for bit
  * (except where corners of a tile round onto one another: points some ulps apart). A tile is
- * convex up to that rounding: where points lie some ulps apart, a corner may sit ulps off its
- * neighbours' line, on the outer side (a trial's points 1 mm apart in UTM metres left dents of
- * up to 3.5e-10 m), which vtkWindowClip accepts as rounding.
+ * convex up to that rounding: where points lie some ulps apart, a corner may sit ulps inside the
+ * line of its neighbours, a reflex turn (a trial's points 1 mm apart in UTM metres left such
+ * dents of up to 3.5e-10 m), which vtkWindowClip accepts as rounding.
  *
  * The window is the intersection of the rectangle SetWindowBounds(xmin, xmax, ymin, ymax) (when
  * xmin < xmax and ymin < ymax) and the strict constraints a*x + b*y + c < 0 added with
