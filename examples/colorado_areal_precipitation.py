@@ -1632,25 +1632,31 @@ class ReadingProgress:
         first line said (a trial's 127 MB took a second read of 0.1 s); "" for a compressed file."""
         if self.lines is None:
             self.lines = line_count(self.path)
-        return f" ({100 * line / self.lines:.0f}% of its {self.lines:,} lines)" if self.lines else ""
+        # (rounded down: 100% only at the last line)
+        return f" ({min(100, 100 * line // self.lines)}% of its {self.lines:,} lines)" if self.lines else ""
 
 
 def line_count(path):
-    """The lines of the file at path, counted by their ends (\n, else \r); 0 for a compressed
-    file (whose bytes are not its lines) or one that cannot be read."""
-    count = ends = 0
+    """The lines of the file at path, their ends counted as the reader splits lines (\\r\\n, \\r
+    or \\n: csv_input.LINE); 0 for a compressed file (whose bytes are not its lines) or one that
+    cannot be read. For UTF-16 text, which the reader decodes first, a count of its bytes' line
+    ends: near enough for progress."""
+    lf = cr = crlf = 0
     last = b""
     try:
         with open(path, "rb") as handle:
-            if handle.read(6).startswith((b"\x1f\x8b", b"BZh", b"\xfd7zXZ\x00")):
+            head = handle.read(10)
+            bzip2 = head.startswith(b"BZh") and head[3:4].isdigit() and head[4:10] == b"1AY&SY"
+            if bzip2 or head.startswith((b"\x1f\x8b", b"\xfd7zXZ\x00")):
                 return 0
             handle.seek(0)
             for chunk in iter(lambda: handle.read(1 << 24), b""):
-                count, ends, last = count + chunk.count(b"\n"), ends + chunk.count(b"\r"), chunk[-1:]
+                # (a \r\n split between two chunks is one end too)
+                crlf += chunk.count(b"\r\n") + (last == b"\r" and chunk[:1] == b"\n")
+                lf, cr, last = lf + chunk.count(b"\n"), cr + chunk.count(b"\r"), chunk[-1:]
     except OSError:
         return 0
-    count = count or ends
-    return count + (1 if last not in (b"\n", b"\r", b"") else 0)
+    return lf + cr - crlf + (1 if last not in (b"\n", b"\r", b"") else 0)
 
 
 def interactive():

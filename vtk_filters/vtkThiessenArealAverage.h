@@ -296,8 +296,9 @@ public:
   /**
    * The time that a date of the observations gets, for UpdateTimeStep: "1963-08" is 1963 + 7/12
    * and "1963-08-16" 1963 + (7 + 15/31)/12 (decimal years on a month grid: a day is a share of
-   * its month, not of its year), "1963-08-16 06:00" a share of that day; as the tables' Time
-   * column gives it beside their Date. NaN for text that is not such a date.
+   * its month, not of its year), "1963-08-16 06:00" a share of that day ("24:00" is the next
+   * day's "00:00"), a year alone "1963" its start; as the tables' Time column gives it beside their
+   * Date, and as the filter reads the observations' dates. NaN for text that is not such a date.
    */
   static double TimeOfDate(const char* date);
 

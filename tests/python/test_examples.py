@@ -2075,7 +2075,7 @@ def test_reading_a_large_file_says_how_far_it_got():
         with open(packed, "wb") as f:
             f.write(gzip.compress(text.encode()))
         # (row 65,536 is on line 65,537 of the header and 70,000 rows)
-        for path, share in ((plain, f" ({100 * 65537 / 70001:.0f}% of its 70,001 lines)"), (packed, "")):
+        for path, share in ((plain, f" ({100 * 65537 // 70001}% of its 70,001 lines)"), (packed, "")):
             every, example.ReadingProgress.EVERY = example.ReadingProgress.EVERY, 0.0
             said = io.StringIO()
             try:
@@ -2087,7 +2087,8 @@ def test_reading_a_large_file_says_how_far_it_got():
             lines = [line for line in said.getvalue().splitlines() if line.startswith(f"reading {path}:")]
             assert_that(lines == [f"reading {path}: 65,536 rows so far{share}"],
                         f"progress lines: {said.getvalue()!r}")
-    for text, count in (("", 0), ("a", 1), ("a\n", 1), ("a\r\nb", 2), ("a\rb\r", 2), ("a\n\nb\n", 3)):
+    for text, count in (("", 0), ("a", 1), ("a\n", 1), ("a\r\nb", 2), ("a\rb\r", 2), ("a\n\nb\n", 3),
+                        ("a\nb\rc\r\n", 3), ("BZh,x\n1,2\n", 2)):
         with tempfile.TemporaryDirectory() as out:
             got = example.line_count(write(out, "lines.csv", text))
             assert_that(got == count, f"line_count of {text!r}: {got}, expected {count}")

@@ -2103,7 +2103,7 @@ if __name__ == "__main__":
          test_window_clip_of_tiles_stored_in_float,
          test_dates_and_year_month_columns_give_the_same_steps,
          test_dates_of_days_and_hours_are_written_as_given,
-     test_time_of_date_picks_that_dates_step,
+         test_time_of_date_picks_that_dates_step,
          test_gauges_given_an_earlier_gauges_station_id_are_listed,
          test_the_projection_used_is_recorded_and_makes_the_same_tiles,
          test_an_enclave_given_as_a_hole_and_a_feature_of_its_own_is_in_the_catchment,
