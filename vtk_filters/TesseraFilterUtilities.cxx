@@ -1923,8 +1923,9 @@ std::string FloatStorageNote(vtkPoints* points)
   const double step = static_cast<double>(std::nextafter(stored, HUGE_VALF)) - stored;
   return " The points are stored as float, whose step at coordinates of " +
     tessera::NumberText(largest) + " is " + tessera::NumberText(step) +
-    ": points nearer than that became one when they were stored (store them as double: "
-    "vtkPoints::SetDataTypeToDouble before they are set, or a reader's double-precision option).";
+    ": points that near each other may have become one when they were stored (store them as "
+    "double: vtkPoints::SetDataTypeToDouble before they are set, or a reader's double-precision "
+    "option).";
 }
 
 } // namespace
