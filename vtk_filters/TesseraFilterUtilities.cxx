@@ -552,11 +552,7 @@ tessera::Window ChooseWindowWithWarning(vtkAlgorithm* filter,
   const std::vector<tessera::Point2>& points,
   bool needArea)
 {
-  const std::string emptyBounds = EmptyBoundsWarning(bounds, !constraints.empty());
-  if (!emptyBounds.empty())
-  {
-    vtkWarningWithObjectMacro(filter, << emptyBounds);
-  }
+  tesseraWarnUnlessEmptyMacro(filter, EmptyBoundsWarning(bounds, !constraints.empty()));
   return ChooseWindow(bounds, constraints, padding, points, needArea);
 }
 

@@ -412,4 +412,26 @@ void AllocateValues(ArrayT* array, vtkIdType tuples, int components = 1)
     return 0;                                                                                      \
   }()
 
+/// A warning of self (the filter; its own file and line) saying text, when text is not empty: the
+/// warnings' builders here and in the filters return "" for nothing to say.
+#define tesseraWarnUnlessEmptyMacro(self, text)                                                    \
+  do                                                                                               \
+  {                                                                                                \
+    const std::string tesseraWarning_ = (text);                                                    \
+    if (!tesseraWarning_.empty())                                                                  \
+    {                                                                                              \
+      vtkWarningWithObjectMacro(self, << tesseraWarning_);                                         \
+    }                                                                                              \
+  } while (0)
+
+/// A warning of self for each of the texts, in order.
+#define tesseraWarnEachMacro(self, texts)                                                          \
+  do                                                                                               \
+  {                                                                                                \
+    for (const std::string& tesseraWarning_ : (texts))                                             \
+    {                                                                                              \
+      vtkWarningWithObjectMacro(self, << tesseraWarning_);                                         \
+    }                                                                                              \
+  } while (0)
+
 #endif

@@ -107,18 +107,10 @@ void AddUnusedPoints(vtkDelaunayTriangulation* self,
     vtkWarningWithObjectMacro(
       self, << tessera_vtk::RenamedArraysWarning(renamed, "field-data", "the output", "field"));
   }
-  const std::string unused =
-    tessera_vtk::UnusedPointsWarning(rejected, duplicates, "triangulated", inputPoints);
-  if (!unused.empty())
-  {
-    vtkWarningWithObjectMacro(self, << unused);
-  }
-  const std::string noPointIn =
-    tessera_vtk::NoPointInWindowWarning(windowBox, inputPoints, rejected.size(), "triangle");
-  if (!noPointIn.empty())
-  {
-    vtkWarningWithObjectMacro(self, << noPointIn);
-  }
+  tesseraWarnUnlessEmptyMacro(
+    self, tessera_vtk::UnusedPointsWarning(rejected, duplicates, "triangulated", inputPoints));
+  tesseraWarnUnlessEmptyMacro(
+    self, tessera_vtk::NoPointInWindowWarning(windowBox, inputPoints, rejected.size(), "triangle"));
 }
 
 /// The warning for triangulated points that make no triangle (fewer than three, or on one line).
@@ -197,10 +189,7 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
   {
     std::vector<std::string> notCarried;
     const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(inputData, notCarried);
-    for (const std::string& warning : notCarried)
-    {
-      vtkWarningMacro(<< warning);
-    }
+    tesseraWarnEachMacro(this, notCarried);
     std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints(), inputData);
     if (points.empty())
     {

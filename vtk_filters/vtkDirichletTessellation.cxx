@@ -436,11 +436,7 @@ std::string AreasUnderflowWarning(const tessera::UninitializedVector<double>& ar
 void ScaleTilesBack(vtkDirichletTessellation* self, tessera::TileMesh& tiles, int exponent)
 {
   tessera::ScaleByPowerOfTwo(tiles, -exponent);
-  const std::string beyond = AreasUnderflowWarning(tiles.Areas);
-  if (!beyond.empty())
-  {
-    vtkWarningWithObjectMacro(self, << beyond);
-  }
+  tesseraWarnUnlessEmptyMacro(self, AreasUnderflowWarning(tiles.Areas));
 }
 
 /// The tessellation of the points in the window by either engine (progress 0.1 to 0.75), its
@@ -565,23 +561,11 @@ void WarnOfUnusedPointsAndCollapsedTiles(vtkDirichletTessellation* self,
   const tessera::Box2& windowBox,
   vtkPoints* inputPoints)
 {
-  const std::string unused =
-    tessera_vtk::UnusedPointsWarning(result.Rejected, result.Duplicates, "used", inputPoints);
-  if (!unused.empty())
-  {
-    vtkWarningWithObjectMacro(self, << unused);
-  }
-  const std::string noPointIn =
-    tessera_vtk::NoPointInWindowWarning(windowBox, inputPoints, result.Rejected.size(), "tile");
-  if (!noPointIn.empty())
-  {
-    vtkWarningWithObjectMacro(self, << noPointIn);
-  }
-  const std::string collapsed = CollapsedTilesWarning(result.Tiles);
-  if (!collapsed.empty())
-  {
-    vtkWarningWithObjectMacro(self, << collapsed);
-  }
+  tesseraWarnUnlessEmptyMacro(self,
+    tessera_vtk::UnusedPointsWarning(result.Rejected, result.Duplicates, "used", inputPoints));
+  tesseraWarnUnlessEmptyMacro(self,
+    tessera_vtk::NoPointInWindowWarning(windowBox, inputPoints, result.Rejected.size(), "tile"));
+  tesseraWarnUnlessEmptyMacro(self, CollapsedTilesWarning(result.Tiles));
 }
 
 /// The warnings for the input's arrays passed under other names.
@@ -666,10 +650,7 @@ int vtkDirichletTessellation::RequestData(vtkInformation*,
     tessera_vtk::CheckChoice("Algorithm", this->Algorithm, { "GreenSibson", "BrasselReif" });
     std::vector<std::string> notCarried;
     const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(inputData, notCarried);
-    for (const std::string& warning : notCarried)
-    {
-      vtkWarningMacro(<< warning);
-    }
+    tesseraWarnEachMacro(this, notCarried);
     std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints(), inputData);
     if (points.empty())
     {

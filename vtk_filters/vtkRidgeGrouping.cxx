@@ -151,24 +151,6 @@ std::string OffPlaneWarning(vtkPoints* points)
     "the contours, curves and image are (give points whose curves lie in the x-y plane)";
 }
 
-/// Each warning, in order, from the filter.
-void WarnEach(vtkRidgeGrouping* self, const std::vector<std::string>& warnings)
-{
-  for (const std::string& warning : warnings)
-  {
-    vtkWarningWithObjectMacro(self, << warning);
-  }
-}
-
-/// The warning from the filter, unless it is "".
-void WarnUnlessEmpty(vtkRidgeGrouping* self, const std::string& warning)
-{
-  if (!warning.empty())
-  {
-    vtkWarningWithObjectMacro(self, << warning);
-  }
-}
-
 /// The core's grouping of the points, over progress 0.05 to 0.9, with its warnings given.
 tessera::RidgeGroupingResult RunGrouping(vtkRidgeGrouping* self,
   const std::vector<tessera::Point2>& points)
@@ -177,7 +159,7 @@ tessera::RidgeGroupingResult RunGrouping(vtkRidgeGrouping* self,
   tessera_vtk::ProgressOrStop(self, 0.05);
   tessera::RidgeGroupingResult result =
     grouping.Run(points, tessera_vtk::StageProgress(self, 0.05, 0.9));
-  WarnEach(self, result.Warnings);
+  tesseraWarnEachMacro(self, result.Warnings);
   return result;
 }
 
@@ -451,10 +433,10 @@ int vtkRidgeGrouping::RequestData(vtkInformation*,
     tessera_vtk::CheckChoice("JoinRule", this->JoinRule, { "Longest", "ClosestTangent" });
     std::vector<std::string> notCarried;
     const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(inputData, notCarried);
-    WarnEach(this, notCarried);
+    tesseraWarnEachMacro(this, notCarried);
     const std::vector<tessera::Point2> points =
       tessera_vtk::ReadPoints2D(input->GetPoints(), inputData);
-    WarnUnlessEmpty(this, OffPlaneWarning(input->GetPoints()));
+    tesseraWarnUnlessEmptyMacro(this, OffPlaneWarning(input->GetPoints()));
     const tessera::RidgeGroupingResult result = RunGrouping(this, points);
 
     // Output 0: the points with GroupId and Node.

@@ -1490,11 +1490,8 @@ void vtkThiessenArealAverage::JoinGauges(vtkDataObject* data,
     // Attributes of one vertex per point (a GDAL point layer after Merge Blocks) are the
     // points' (the point set itself when there are none).
     in.Joined = tessera_vtk::VertexArraysAsPointData(points, arrays);
-    for (const std::string& warning :
-      tessera_vtk::LongAttributeWarnings(in.Joined, "the gauges (input 0)", true, arrays))
-    {
-      vtkWarningMacro(<< warning);
-    }
+    tesseraWarnEachMacro(
+      this, tessera_vtk::LongAttributeWarnings(in.Joined, "the gauges (input 0)", true, arrays));
   }
   else
   {
@@ -1511,11 +1508,8 @@ void vtkThiessenArealAverage::JoinGauges(vtkDataObject* data,
     in.ValueProblem = valueProblem != dropped.end() ? valueProblem->second : std::string();
     in.Joined = joined;
   }
-  for (const std::string& warning :
-    tessera_vtk::HiddenVertexArrayWarnings(data, arrays, "the gauges (input 0)"))
-  {
-    vtkWarningMacro(<< warning);
-  }
+  tesseraWarnEachMacro(
+    this, tessera_vtk::HiddenVertexArrayWarnings(data, arrays, "the gauges (input 0)"));
 }
 
 //------------------------------------------------------------------------------
@@ -1620,10 +1614,7 @@ struct vtkThiessenArealAverage::BuildRun
     std::vector<std::string> ringWarnings;
     const tessera_vtk::Rings rings =
       tessera_vtk::ReadPolygonRings(catchment, "catchment (input 1)", ringWarnings);
-    for (const std::string& warning : ringWarnings)
-    {
-      this->Warn(warning);
-    }
+    tesseraWarnEachMacro(this->Self, ringWarnings);
     const std::string unusedSettings = UnusedSettingsWarning(this->Self, this->Observations);
     if (this->In.SayOnce("unused settings", unusedSettings))
     {
@@ -2092,13 +2083,7 @@ struct vtkThiessenArealAverage::BuildRun
   }
 
   /// The filter's warning text ("" says nothing).
-  void Warn(const std::string& text) const
-  {
-    if (!text.empty())
-    {
-      vtkWarningWithObjectMacro(this->Self, << text);
-    }
-  }
+  void Warn(const std::string& text) const { tesseraWarnUnlessEmptyMacro(this->Self, text); }
 };
 
 //------------------------------------------------------------------------------

@@ -911,11 +911,11 @@ void vtkWindowClip::ClipByWindow(vtkDataObject* tilesData,
   vtkInformationVector* outputVector)
 {
   CheckInputTypes(tilesData, windowData);
-  this->WarnIfAny(ProjectionWarning(tilesData, windowData));
+  tesseraWarnUnlessEmptyMacro(this, ProjectionWarning(tilesData, windowData));
   std::vector<std::string> ringWarnings;
   const tessera_vtk::Rings window =
     tessera_vtk::ReadPolygonRings(windowData, "window (input 1)", ringWarnings);
-  this->WarnEach(ringWarnings);
+  tesseraWarnEachMacro(this, ringWarnings);
   // A window of tiny coordinates is clipped scaled up by a power of two (exact), tiles alike,
   // and the results scaled back: below some 1e-150 the clip's products fell below the doubles,
   // and areas came out wrong (a fraction of 0.945 for 17/18 at 1e-161) or not at all.
@@ -934,7 +934,7 @@ void vtkWindowClip::ClipByWindow(vtkDataObject* tilesData,
   if (tilesHavePoints && HasCells(tilesData) && !HasCells(output) && !window.Vertices.empty() &&
     !tessera_vtk::IsPieceOfMany(outputVector))
   {
-    this->WarnIfAny(ApartWarning(tilesBounds, window.Vertices));
+    tesseraWarnUnlessEmptyMacro(this, ApartWarning(tilesBounds, window.Vertices));
   }
   tessera_vtk::ListNonEmptyFieldArraysFirst(output);
   tessera_vtk::ListNonEmptyFieldArraysFirst(outlines);
@@ -951,14 +951,15 @@ void vtkWindowClip::ClipTiles(vtkDataObject* tilesData,
   auto* blocks = vtkCompositeDataSet::SafeDownCast(tilesData);
   if (!blocks)
   {
-    this->WarnEach(this->ClipTilesOf(vtkPointSet::SafeDownCast(tilesData),
-      catchment,
-      exponent,
-      vtkPolyData::SafeDownCast(output),
-      vtkPolyData::SafeDownCast(outlines),
-      std::string(),
-      0.0,
-      1.0));
+    tesseraWarnEachMacro(this,
+      this->ClipTilesOf(vtkPointSet::SafeDownCast(tilesData),
+        catchment,
+        exponent,
+        vtkPolyData::SafeDownCast(output),
+        vtkPolyData::SafeDownCast(outlines),
+        std::string(),
+        0.0,
+        1.0));
     return;
   }
   // Block by block, each clipped alone (its CoveredFraction its share of the window); an
@@ -1026,24 +1027,6 @@ void vtkWindowClip::WarnFirstFew(const std::vector<std::string>& warnings)
     vtkWarningMacro(<< warnings.size() - shown
                     << " more warning(s) about blocks of input 0 are not shown (the first " << shown
                     << " are)");
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkWindowClip::WarnEach(const std::vector<std::string>& warnings)
-{
-  for (const std::string& warning : warnings)
-  {
-    vtkWarningMacro(<< warning);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkWindowClip::WarnIfAny(const std::string& warning)
-{
-  if (!warning.empty())
-  {
-    vtkWarningMacro(<< warning);
   }
 }
 

@@ -163,10 +163,6 @@ private:
 
   /// Gives the first 5 of the blocks' warnings, then one counting the rest.
   void WarnFirstFew(const std::vector<std::string>& warnings);
-  /// Gives each warning.
-  void WarnEach(const std::vector<std::string>& warnings);
-  /// Gives the warning unless it is empty.
-  void WarnIfAny(const std::string& warning);
 
   /// Clips one point set of tiles into output and their outlines into outlines, its messages
   /// prefixed by block ("" for a point set input; "block 1 (composite index 2) of input 0: " for
