@@ -1,5 +1,6 @@
 #include "clip.h"
 
+#include "clip_primitives.h"
 #include "compensated_sum.h"
 #include "errors.h"
 #include "polygon_validation.h"
@@ -156,33 +157,6 @@ bool SegmentMeetsBox(const Point2& a, const Point2& b, const Box2& box)
     orient2d_fast(a, b, { box.XMin, box.YMax }) != side;
 }
 
-// Where segment p-q meets the line a->b, interpolated from the endpoint nearer the line, so that
-// the same segment gives the same point in either direction (neighbouring tiles then agree).
-Point2 LineCrossing(const Point2& p, const Point2& q, const Point2& a, const Point2& b)
-{
-  const double ex = b.x - a.x;
-  const double ey = b.y - a.y;
-  const double dp = ex * (p.y - a.y) - ey * (p.x - a.x);
-  const double dq = ex * (q.y - a.y) - ey * (q.x - a.x);
-  const bool fromP = std::fabs(dp) < std::fabs(dq) ||
-    (std::fabs(dp) == std::fabs(dq) && (p.x < q.x || (p.x == q.x && p.y <= q.y)));
-  const Point2& s = fromP ? p : q;
-  const Point2& t = fromP ? q : p;
-  const double ds = fromP ? dp : dq;
-  const double dt = fromP ? dq : dp;
-  double f = ds / (ds - dt);
-  // The exact signs decided that the segment crosses; rounded distances may disagree slightly.
-  if (!(f >= 0.0))
-  {
-    f = 0.0;
-  }
-  f = std::min(f, 1.0);
-  Point2 x{ s.x + f * (t.x - s.x), s.y + f * (t.y - s.y) };
-  x.x = std::min(std::max(x.x, std::min(p.x, q.x)), std::max(p.x, q.x));
-  x.y = std::min(std::max(x.y, std::min(p.y, q.y)), std::max(p.y, q.y));
-  return x;
-}
-
 // One Sutherland-Hodgman stage: keeps the part of the closed ring on the closed left side of
 // a->b. Outside excursions become stretches along the line, which keeps every winding number on
 // the left side.
@@ -216,51 +190,6 @@ void ClipByEdge(const std::vector<Point2>& in,
     previous = &q;
     previousSide = side;
   }
-}
-
-// Replaces points by their convex hull: anticlockwise, strictly convex (no repeated or collinear
-// vertices), by Andrew's monotone chain with exact orientations. Empty or under 3 points when the
-// points are collinear.
-void ConvexHull(std::vector<Point2>& points, std::vector<Point2>& hull)
-{
-  std::sort(points.begin(), points.end(), ComesFirst);
-  hull.clear();
-  for (const Point2& p : points)
-  {
-    while (hull.size() >= 2 && orient2d_fast(hull[hull.size() - 2], hull.back(), p) <= 0)
-    {
-      hull.pop_back();
-    }
-    hull.push_back(p);
-  }
-  const std::size_t lower = hull.size();
-  for (std::size_t i = points.size() - 1; i-- > 0;)
-  {
-    while (hull.size() > lower && orient2d_fast(hull[hull.size() - 2], hull.back(), points[i]) <= 0)
-    {
-      hull.pop_back();
-    }
-    hull.push_back(points[i]);
-  }
-  hull.pop_back(); // the first point again
-  std::swap(points, hull);
-}
-
-// Whether p lies in the convex tile or on its boundary, exactly: left of or on every edge's line
-// (strictly: left of every one), repeated vertices giving no edge. A tile not quite convex, by
-// rounding, then holds p too: p lies in its kernel.
-bool TileHoldsPoint(const Point2* tile, std::size_t count, const Point2& p, bool strictly = false)
-{
-  for (std::size_t k = 0; k < count; ++k)
-  {
-    const Point2& a = tile[k];
-    const Point2& b = tile[k + 1 == count ? 0 : k + 1];
-    if ((a.x != b.x || a.y != b.y) && orient2d_fast(a, b, p) < (strictly ? 1 : 0))
-    {
-      return false;
-    }
-  }
-  return true;
 }
 
 // Whether segment a-b passes through the convex tile's interior, exactly: no line of a tile edge,
@@ -546,6 +475,7 @@ Catchment::Catchment(const std::vector<std::size_t>& ringOffsets,
   this->FindDepths();
   this->OrientRings();
   this->ClassifyEmptyCells();
+  this->BuildPrefixSums();
   CompensatedSum area, ringAreas;
   for (std::size_t r = 0; r < this->RingCount(); ++r)
   {
@@ -560,32 +490,6 @@ Catchment::Catchment(const std::vector<std::size_t>& ringOffsets,
 
 // (Inline, and through int, which holds any count up to 4096: as calls converting to an unsigned
 // 64-bit type, the cell lookups were a tenth of the clipping's instructions.)
-inline std::size_t Catchment::CellIndex(double value, double lo, double scale, std::size_t count)
-{
-  const double cell = (value - lo) * scale;
-  if (!(cell > 0.0))
-  {
-    return 0;
-  }
-  return cell >= static_cast<double>(count) ? count - 1
-                                            : static_cast<std::size_t>(static_cast<int>(cell));
-}
-
-inline std::size_t Catchment::CellX(double x) const
-{
-  return CellIndex(x, this->Box.XMin, this->CellScaleX, this->GridX);
-}
-
-inline std::size_t Catchment::CellY(double y) const
-{
-  return CellIndex(y, this->Box.YMin, this->CellScaleY, this->GridY);
-}
-
-inline std::size_t Catchment::NextVertex(std::size_t v) const
-{
-  const std::uint32_t ring = this->EdgeRing[v];
-  return v + 1 == this->Offsets[ring + 1] ? this->Offsets[ring] : v + 1;
-}
 
 // About two cells per segment, shaped like the catchment's box. Cell indices come from one
 // monotone function of the coordinate, so a segment whose box meets a query box always shares a
@@ -1077,6 +981,12 @@ double Catchment::ClipInto(const Point2* tile,
   if (box.Holds(this->Box) && TileHoldsBox(tile, count, this->Box))
   {
     return this->ClipWholeCatchment(tileArea, rings);
+  }
+  double area = 0.0;
+  if (!rings && this->CrossingsWorthIt(box) &&
+    this->AreaByCrossings(tile, count, tileArea, box, work, area))
+  {
+    return area;
   }
   WidenUntilCentreIsInside(box);
   const std::size_t firstCell = this->ListCandidates(box, work);

@@ -31,12 +31,23 @@
 // So does a tile whose pieces sum to no more than the sum of their bounds (a tile inside a hole:
 // the tile from the outer ring and its reversal from the hole's ring, which cancel).
 //
+// Areas alone (ClipInto without rings, ClipAll without them) are measured another way where a
+// tile's box spans 16 grid cells or more: from where the catchment's boundary crosses the tile's,
+// the pieces between crossings summed from prefix sums along the rings (crossing_area.cpp). That
+// costs the segments near the tile's boundary, not those inside it; a tile on a detailed outline
+// (3e5 vertices) took a sixth of the time. It agrees with the clipping to some 1e-16 of the
+// tile's area, and hands the tile to the clipping wherever exactness needs it: a catchment
+// vertex on the tile's boundary, a segment through a tile vertex, a result within 1e-9 of the
+// tile of empty or whole.
+//
 // Cost: construction O(n log n) for validation plus the grid (about 2 cells per segment); a tile
-// costs O(its vertices x nearby segments) plus a walk along one grid row. A tile whose box misses
+// costs O(its vertices x nearby segments) plus a walk along one grid row; measured by crossings,
+// O(its vertices x the segments in the cells along its boundary) plus the same walk and the rings. A tile whose box misses
 // the catchment's box, or meets only cells that no segment crosses, costs O(its vertices + cells).
 // A Catchment is immutable after construction: concurrent clipping from several threads is safe
 // with one Workspace per thread.
 
+#include "compensated_sum.h"
 #include "errors.h" // InputError, which the functions below throw
 #include "geometry.h"
 #include "polygon_validation.h"
@@ -52,6 +63,13 @@
 
 namespace tessera
 {
+
+/// An unevaluated sum Hi + Lo with |Lo| <= ulp(Hi) / 2: some 106 bits.
+struct DoubleDouble
+{
+  double Hi = 0.0;
+  double Lo = 0.0;
+};
 
 /// Polygons as flat rings: ring r has vertices RingOffsets[r] .. RingOffsets[r+1]-1.
 struct ClippedRings
@@ -158,6 +176,18 @@ public:
     const std::vector<Point2>& tileVertices,
     bool withRings = true) const;
 
+  /// Where the catchment's boundary crosses a tile's (crossing_area.cpp): on segment Segment
+  /// (from vertex Segment), at At (relative to the tile hull's first vertex), on hull edge Edge
+  /// at Along (0 to 1 from its start); Order 0 or 1 among the segment's crossings.
+  struct Crossing
+  {
+    std::uint32_t Segment = 0;
+    std::uint32_t Edge = 0;
+    double Along = 0.0;
+    Point2 At;
+    bool Entry = false;
+    unsigned char Order = 0;
+  };
   /// Scratch buffers: reusing one between calls avoids allocating per tile.
   struct Workspace
   {
@@ -169,6 +199,12 @@ public:
     std::vector<Point2> ClipA;
     std::vector<Point2> ClipB;
     std::vector<Point2> Rotated;
+    std::vector<Point2> Hull;
+    std::vector<Crossing> BoundaryCrossings;
+    std::vector<std::uint32_t> AlongBoundary;
+    std::vector<char> RingCrossed;
+    /// Tiles whose area came from their crossings (AreaByCrossings), not from clipping.
+    std::size_t AreasByCrossings = 0;
   };
   /// What a tile with fewer than 3 vertices or clockwise vertices is.
   enum class FoldedTile
@@ -240,6 +276,35 @@ private:
     const Point2& centre,
     int winding,
     std::vector<Point2>& local) const;
+  // The area of tile & catchment from where the catchment's boundary crosses the tile's
+  // (crossing_area.cpp): false where the clipping must decide instead (see there).
+  bool CrossingsWorthIt(const Box2& box) const;
+  bool AreaByCrossings(const Point2* tile,
+    std::size_t count,
+    double tileArea,
+    const Box2& box,
+    Workspace& work,
+    double& area) const;
+  bool SumsTooCoarse(const Point2& origin, const Box2& hullBox, double tileArea) const;
+  void ListSegmentsAlongBoundary(const std::vector<Point2>& hull, Workspace& work) const;
+  bool AddCrossings(std::uint32_t v,
+    const std::vector<Point2>& hull,
+    const Box2& hullBox,
+    std::vector<Crossing>& crossings) const;
+  bool AddInsidePieces(const Point2& origin, Workspace& work, CompensatedSum& twice) const;
+  void AddPiece(const Crossing& in,
+    const Crossing& out,
+    const Point2& origin,
+    CompensatedSum& twice) const;
+  void AddSweep(std::size_t p, std::size_t q, const Point2& origin, CompensatedSum& twice) const;
+  void AddBoundaryStretches(const std::vector<Point2>& hull,
+    Workspace& work,
+    CompensatedSum& twice) const;
+  bool AddRingsWithin(const std::vector<Point2>& hull,
+    const Box2& hullBox,
+    const Workspace& work,
+    CompensatedSum& twice) const;
+  void BuildPrefixSums();
   // Grid cell of a coordinate along one axis: floor((value - lo) * scale), clamped to
   // [0, count).
   static std::size_t CellIndex(double value, double lo, double scale, std::size_t count);
@@ -273,6 +338,40 @@ private:
   std::vector<std::uint32_t> FirstCell;
   // Per cell: -1 when segments meet it, else 0 or 1 for outside or inside the catchment.
   std::vector<signed char> EmptyCellInside;
+  // For AreaByCrossings. Per vertex v: the sum of cross(p_k, p_k+1) over its ring's segments
+  // before it (twice the signed area swept from the origin), and per ring the whole sum: exact
+  // products summed as double-doubles. PrefixError bounds the sums' error.
+  std::vector<DoubleDouble> Prefix;
+  std::vector<DoubleDouble> RingSweep;
+  std::vector<Box2> RingBoxes;
+  double PrefixError = 0.0;
 };
+
+inline std::size_t Catchment::CellIndex(double value, double lo, double scale, std::size_t count)
+{
+  const double cell = (value - lo) * scale;
+  if (!(cell > 0.0))
+  {
+    return 0;
+  }
+  return cell >= static_cast<double>(count) ? count - 1
+                                            : static_cast<std::size_t>(static_cast<int>(cell));
+}
+
+inline std::size_t Catchment::CellX(double x) const
+{
+  return CellIndex(x, this->Box.XMin, this->CellScaleX, this->GridX);
+}
+
+inline std::size_t Catchment::CellY(double y) const
+{
+  return CellIndex(y, this->Box.YMin, this->CellScaleY, this->GridY);
+}
+
+inline std::size_t Catchment::NextVertex(std::size_t v) const
+{
+  const std::uint32_t ring = this->EdgeRing[v];
+  return v + 1 == this->Offsets[ring + 1] ? this->Offsets[ring] : v + 1;
+}
 
 } // namespace tessera

@@ -551,6 +551,68 @@ TEST(Clip, TilesOnDetailedOutlinesMatchExactRationalClipping)
   EXPECT_GT(partial, 6);
 }
 
+// Areas alone (no rings asked for) come from where the catchment's boundary crosses the tile's,
+// with prefix sums along the rings (AreaByCrossings), where the tile's box spans enough grid
+// cells; where a catchment vertex lies on a tile's boundary, or a segment passes through a tile
+// vertex, the clipping measures the tile instead. Both must match the exact rational clipping:
+// random tiles across a detailed outer ring, its hole and an island in the hole; tiles holding the
+// island whole; and tiles whose edges run through catchment vertices.
+TEST(Clip, AreasFromCrossingsMatchExactRationalClipping)
+{
+  std::mt19937 random(41);
+  Rings rings;
+  const Point2 c{ 0.0, 0.0 };
+  rings.Add(Star(random, c, 3000, 60.0, 100.0, 1.0 / 64));
+  rings.Add(Star(random, c, 1500, 20.0, 40.0, 1.0 / 64));
+  const std::vector<Point2> island = Star(random, c, 40, 3.0, 8.0, 1.0 / 64);
+  rings.Add(island);
+  const Catchment catchment(rings.Offsets, rings.Vertices);
+  Catchment::Workspace work;
+  const auto expectExact = [&](const std::vector<Point2>& tile, int i)
+  {
+    const mpq_class exact = ExactClippedArea(rings, tile);
+    const double tileArea = tessera_test::ShoelaceArea(tile);
+    const double area = catchment.ClipInto(tile.data(), tile.size(), 0, work, nullptr);
+    EXPECT_NEAR(area, exact.get_d(), Tolerance(exact, tileArea)) << "tile " << i;
+    return exact > 0 && exact.get_d() < tileArea;
+  };
+  std::uniform_real_distribution<double> corner(-120.0, 60.0), size(5.0, 80.0);
+  int partial = 0;
+  for (int i = 0; i < 200; ++i)
+  {
+    const double x = corner(random), y = corner(random), side = size(random);
+    partial += expectExact(RandomConvex(random, x, x + side, y, y + side, 8, 1.0 / 16), i);
+  }
+  EXPECT_GT(partial, 60);
+  EXPECT_GT(work.AreasByCrossings, 150u); // the crossings measured most of them
+
+  // Tiles inside the hole holding the island whole: its area, from its ring's sums.
+  const std::size_t before = work.AreasByCrossings;
+  for (int i = 0; i < 10; ++i)
+  {
+    const double half = 9.0 + 0.25 * i;
+    const std::vector<Point2> square{
+      { -half, -half }, { half, -half }, { half, half }, { -half, half }
+    };
+    EXPECT_DOUBLE_EQ(
+      catchment.ClipInto(square.data(), 4, 0, work, nullptr), tessera_test::ShoelaceArea(island));
+    expectExact(square, i);
+  }
+  EXPECT_EQ(work.AreasByCrossings, before + 20);
+
+  // Triangles whose first edge runs between two vertices of the outer ring: the clipping's.
+  const std::size_t crossed = work.AreasByCrossings;
+  for (int i = 0; i < 20; ++i)
+  {
+    const Point2 p = rings.Vertices[static_cast<std::size_t>(37 * i)];
+    const Point2 q = rings.Vertices[static_cast<std::size_t>(37 * i + 150)];
+    const Point2 apex{ 0.5 * (p.x + q.x) - 0.5 * (q.y - p.y),
+      0.5 * (p.y + q.y) + 0.5 * (q.x - p.x) };
+    expectExact({ p, q, apex }, i);
+  }
+  EXPECT_EQ(work.AreasByCrossings, crossed);
+}
+
 // A catchment of few long slanted edges has a coarse grid (3 x 3 cells here), so a small tile's
 // cells list segments that pass it by: those whose boxes miss the tile's, and those whose boxes
 // meet it while their lines leave all four corners on one side. Such a tile takes the path of an
@@ -975,8 +1037,20 @@ TEST(Clip, TilingAreasSumToCatchmentArea)
     EXPECT_GT(partial, 100);
     EXPECT_EQ(clipped.CatchmentArea, catchment.Area());
     EXPECT_NEAR(sum, exactArea.get_d(), 1e-12 * exactArea.get_d());
+    // Areas alone come from the catchment's crossings with the tiles' boundaries, not from
+    // clipping (AreaByCrossings): a computation of their own, which must agree.
     const tessera::ClippedTiles areasOnly = catchment.ClipAll(offsets, vertices, false);
-    EXPECT_EQ(areasOnly.Areas, clipped.Areas);
+    ASSERT_EQ(areasOnly.Areas.size(), clipped.Areas.size());
+    double areasOnlySum = 0.0;
+    for (std::size_t t = 0; t < clipped.Areas.size(); ++t)
+    {
+      const std::vector<Point2> tile(vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t]),
+        vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t + 1]));
+      const double tileArea = tessera_test::ShoelaceArea(tile);
+      EXPECT_NEAR(areasOnly.Areas[t], clipped.Areas[t], 1e-13 * tileArea) << "tile " << t;
+      areasOnlySum += areasOnly.Areas[t];
+    }
+    EXPECT_NEAR(areasOnlySum, exactArea.get_d(), 1e-12 * exactArea.get_d());
     EXPECT_TRUE(areasOnly.Rings.Vertices.empty());
   }
 }
