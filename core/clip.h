@@ -42,10 +42,10 @@
 //
 // Cost: construction O(n log n) for validation plus the grid (about 2 cells per segment); a tile
 // costs O(its vertices x nearby segments) plus a walk along one grid row; measured by crossings,
-// O(its vertices x the segments in the cells along its boundary) plus the same walk and the rings. A tile whose box misses
-// the catchment's box, or meets only cells that no segment crosses, costs O(its vertices + cells).
-// A Catchment is immutable after construction: concurrent clipping from several threads is safe
-// with one Workspace per thread.
+// O(its vertices x the segments in the cells along its boundary) plus the same walk and the rings.
+// A tile whose box misses the catchment's box, or meets only cells that no segment crosses, costs
+// O(its vertices + cells). A Catchment is immutable after construction: concurrent clipping from
+// several threads is safe with one Workspace per thread.
 
 #include "compensated_sum.h"
 #include "errors.h" // InputError, which the functions below throw
@@ -203,6 +203,8 @@ public:
     std::vector<Crossing> BoundaryCrossings;
     std::vector<std::uint32_t> AlongBoundary;
     std::vector<char> RingCrossed;
+    std::vector<std::uint32_t> SegmentStamp;
+    std::uint32_t Stamp = 0;
     /// Tiles whose area came from their crossings (AreaByCrossings), not from clipping.
     std::size_t AreasByCrossings = 0;
   };
@@ -286,10 +288,14 @@ private:
     Workspace& work,
     double& area) const;
   bool SumsTooCoarse(const Point2& origin, const Box2& hullBox, double tileArea) const;
-  void ListSegmentsAlongBoundary(const std::vector<Point2>& hull, Workspace& work) const;
-  bool AddCrossings(std::uint32_t v,
-    const std::vector<Point2>& hull,
-    const Box2& hullBox,
+  bool FindCrossings(const std::vector<Point2>& hull, Workspace& work) const;
+  template<typename Visit>
+  void ForEachCellAlong(const Point2& p, const Point2& q, Visit&& visit) const;
+  bool AddEdgeCrossing(std::uint32_t v,
+    const Point2& p,
+    const Point2& q,
+    std::size_t e,
+    const Point2& origin,
     std::vector<Crossing>& crossings) const;
   bool AddInsidePieces(const Point2& origin, Workspace& work, CompensatedSum& twice) const;
   void AddPiece(const Crossing& in,
@@ -300,6 +306,7 @@ private:
   void AddBoundaryStretches(const std::vector<Point2>& hull,
     Workspace& work,
     CompensatedSum& twice) const;
+  int IndicatorAtVertex(const Point2& h, Workspace& work) const;
   bool AddRingsWithin(const std::vector<Point2>& hull,
     const Box2& hullBox,
     const Workspace& work,

@@ -95,12 +95,11 @@ void AddCross(CompensatedSum& twice, const Point2& a, const Point2& b)
   twice.AddProduct(-a.y, b.x);
 }
 
-// Whether a point with these orientations against the hull's edges lies on its boundary: on one
-// edge's line and not outside any other.
-bool OnBoundary(const int* sides, std::size_t count)
+// Whether p, on the line through edge a-b, lies on the closed edge (exact: p is on the line).
+bool OnClosedEdge(const Point2& p, const Point2& a, const Point2& b)
 {
-  return std::find(sides, sides + count, 0) != sides + count &&
-    std::none_of(sides, sides + count, [](int side) { return side < 0; });
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+    p.y <= std::max(a.y, b.y);
 }
 
 // Where along edge a->b (0 to 1) a point on it lies, by its larger coordinate difference.
@@ -138,14 +137,9 @@ bool Catchment::AreaByCrossings(const Point2* tile,
   {
     return false;
   }
-  this->ListSegmentsAlongBoundary(hull, work);
-  work.BoundaryCrossings.clear();
-  for (const std::uint32_t v : work.Candidates)
+  if (!this->FindCrossings(hull, work))
   {
-    if (!this->AddCrossings(v, hull, hullBox, work.BoundaryCrossings))
-    {
-      return false;
-    }
+    return false;
   }
   CompensatedSum twice;
   if (!this->AddInsidePieces(hull[0], work, twice))
@@ -191,111 +185,128 @@ bool Catchment::SumsTooCoarse(const Point2& origin, const Box2& hullBox, double 
   return !(error <= eps * tileArea);
 }
 
-// The segments listed in every grid cell that the hull's boundary passes through, each once: all
-// that can cross or touch it (a segment's cells are those its box meets, so it shares one with
-// any point of it). Row by row, an edge's x range over the row, widened by an eighth of a row and
-// half a column for rounding, gives its cells.
-void Catchment::ListSegmentsAlongBoundary(const std::vector<Point2>& hull, Workspace& work) const
+// Every crossing of the hull's boundary by a catchment segment, into work.BoundaryCrossings: edge
+// by edge, the segments listed in the grid cells the edge passes through (each once per edge, by
+// work.SegmentStamp), which are all that can meet it: a segment's cells are those its box meets,
+// so it shares one with any point of it. False where a segment touches the boundary other than
+// by crossing an open edge (AddEdgeCrossing).
+bool Catchment::FindCrossings(const std::vector<Point2>& hull, Workspace& work) const
 {
-  work.Candidates.clear();
-  const double rowHeight = 1.0 / this->CellScaleY;
-  const double halfColumn = 0.5 / this->CellScaleX;
+  work.BoundaryCrossings.clear();
+  if (work.SegmentStamp.size() < this->Points.size())
+  {
+    work.SegmentStamp.resize(this->Points.size(), 0);
+  }
   for (std::size_t e = 0; e < hull.size(); ++e)
   {
+    if (++work.Stamp == 0) // wrapped round: no segment may look seen
+    {
+      std::fill(work.SegmentStamp.begin(), work.SegmentStamp.end(), 0);
+      work.Stamp = 1;
+    }
     const Point2& p = hull[e];
     const Point2& q = hull[e + 1 == hull.size() ? 0 : e + 1];
-    const double yLow = std::min(p.y, q.y), yHigh = std::max(p.y, q.y);
-    const double xLow = std::min(p.x, q.x), xHigh = std::max(p.x, q.x);
-    const auto xAt = [&](double y, double level)
-    { return p.y == q.y ? level : p.x + (y - p.y) * (q.x - p.x) / (q.y - p.y); };
-    for (std::size_t j = this->CellY(yLow); j <= this->CellY(yHigh); ++j)
-    {
-      const double rowLow = this->Box.YMin + (static_cast<double>(j) - 0.125) * rowHeight;
-      const double rowHigh = this->Box.YMin + (static_cast<double>(j) + 1.125) * rowHeight;
-      const double x0 = xAt(std::max(rowLow, yLow), xLow);
-      const double x1 = xAt(std::min(rowHigh, yHigh), xHigh);
-      const std::size_t i0 = this->CellX(std::max(std::min(x0, x1) - halfColumn, xLow));
-      const std::size_t i1 = this->CellX(std::min(std::max(x0, x1) + halfColumn, xHigh));
-      for (std::size_t i = i0; i <= i1; ++i)
+    bool touching = false;
+    this->ForEachCellAlong(p,
+      q,
+      [&](std::size_t cell)
       {
-        const std::size_t cell = i + j * this->GridX;
-        work.Candidates.insert(work.Candidates.end(),
-          this->CellEdges.begin() + this->CellStart[cell],
-          this->CellEdges.begin() + this->CellStart[cell + 1]);
-      }
+        for (std::uint32_t k = this->CellStart[cell]; k < this->CellStart[cell + 1] && !touching;
+             ++k)
+        {
+          const std::uint32_t v = this->CellEdges[k];
+          if (work.SegmentStamp[v] != work.Stamp)
+          {
+            work.SegmentStamp[v] = work.Stamp;
+            touching = !this->AddEdgeCrossing(v, p, q, e, hull[0], work.BoundaryCrossings);
+          }
+        }
+      });
+    if (touching)
+    {
+      return false;
     }
   }
-  std::sort(work.Candidates.begin(), work.Candidates.end());
-  work.Candidates.erase(
-    std::unique(work.Candidates.begin(), work.Candidates.end()), work.Candidates.end());
+  return true;
 }
 
-// Segment v's crossings of the hull's boundary, appended: false when it touches the boundary
-// anywhere but at isolated crossings in the open edges (see the file's head).
+// The grid cells that segment p-q passes through, and some beside them. Row by row, its x range
+// over the row, widened by a sixteenth of a row and of a column for rounding, gives its cells.
+template<typename Visit>
+void Catchment::ForEachCellAlong(const Point2& p, const Point2& q, Visit&& visit) const
+{
+  const double rowHeight = 1.0 / this->CellScaleY;
+  const double margin = 0.0625 / this->CellScaleX;
+  const double yLow = std::min(p.y, q.y), yHigh = std::max(p.y, q.y);
+  const double xLow = std::min(p.x, q.x), xHigh = std::max(p.x, q.x);
+  const auto xAt = [&](double y, double level)
+  { return p.y == q.y ? level : p.x + (y - p.y) * (q.x - p.x) / (q.y - p.y); };
+  for (std::size_t j = this->CellY(yLow); j <= this->CellY(yHigh); ++j)
+  {
+    const double rowLow = this->Box.YMin + (static_cast<double>(j) - 0.0625) * rowHeight;
+    const double rowHigh = this->Box.YMin + (static_cast<double>(j) + 1.0625) * rowHeight;
+    const double x0 = xAt(std::max(rowLow, yLow), xLow);
+    const double x1 = xAt(std::min(rowHigh, yHigh), xHigh);
+    const std::size_t i0 = this->CellX(std::max(std::min(x0, x1) - margin, xLow));
+    const std::size_t i1 = this->CellX(std::min(std::max(x0, x1) + margin, xHigh));
+    for (std::size_t i = i0; i <= i1; ++i)
+    {
+      visit(i + j * this->GridX);
+    }
+  }
+}
+
+// Segment v's crossing of hull edge e (from p to q), appended if there is one: false when the
+// segment touches the edge otherwise, an end on the closed edge or the segment through p or q.
+// (A segment along the edge's line through a hull vertex crosses the next edge's line there.)
 //
-//        a (outside edge e: side < 0)          a segment crosses edge e when its ends lie
-//         \                                    strictly on opposite sides of e's line and the
-//   h_e ---x--------- h_e+1   (inside above)   edge's ends strictly on opposite sides of its
-//           \                                  own line; entering when a is the outside end
+//        a (outside: side < 0)               the segment crosses the edge when its ends lie
+//         \                                  strictly on opposite sides of the edge's line and
+//   p -----x--------- q   (inside above)     the edge's ends strictly on opposite sides of its
+//           \                                own; entering when a is the outside end
 //            b
-bool Catchment::AddCrossings(std::uint32_t v,
-  const std::vector<Point2>& hull,
-  const Box2& hullBox,
+bool Catchment::AddEdgeCrossing(std::uint32_t v,
+  const Point2& p,
+  const Point2& q,
+  std::size_t e,
+  const Point2& origin,
   std::vector<Crossing>& crossings) const
 {
   const Point2& a = this->Points[v];
   const Point2& b = this->Points[this->NextVertex(v)];
-  if (std::max(a.x, b.x) < hullBox.XMin || std::min(a.x, b.x) > hullBox.XMax ||
-    std::max(a.y, b.y) < hullBox.YMin || std::min(a.y, b.y) > hullBox.YMax)
+  if (std::max(a.x, b.x) < std::min(p.x, q.x) || std::min(a.x, b.x) > std::max(p.x, q.x) ||
+    std::max(a.y, b.y) < std::min(p.y, q.y) || std::min(a.y, b.y) > std::max(p.y, q.y))
   {
     return true;
   }
-  const std::size_t count = hull.size();
-  int sa[MostHullVertices], sb[MostHullVertices];
-  for (std::size_t e = 0; e < count; ++e)
-  {
-    const Point2& h = hull[e];
-    const Point2& k = hull[e + 1 == count ? 0 : e + 1];
-    sa[e] = orient2d_fast(h, k, a);
-    sb[e] = orient2d_fast(h, k, b);
-  }
-  if (OnBoundary(sa, count) || OnBoundary(sb, count))
+  const int sa = orient2d_fast(p, q, a);
+  const int sb = orient2d_fast(p, q, b);
+  if ((sa == 0 && OnClosedEdge(a, p, q)) || (sb == 0 && OnClosedEdge(b, p, q)))
   {
     return false;
   }
-  const Point2& origin = hull[0];
-  std::size_t found = 0;
-  for (std::size_t e = 0; e < count; ++e)
+  if (sa * sb >= 0)
   {
-    if (sa[e] * sb[e] >= 0)
-    {
-      continue;
-    }
-    const Point2& h = hull[e];
-    const Point2& k = hull[e + 1 == count ? 0 : e + 1];
-    const int sh = orient2d_fast(a, b, h), sk = orient2d_fast(a, b, k);
-    if (sh == 0 || sk == 0)
-    {
-      return false; // through a hull vertex
-    }
-    if (sh == sk)
-    {
-      continue; // the edge's line, beyond the edge
-    }
+    return true;
+  }
+  const int sp = orient2d_fast(a, b, p), sq = orient2d_fast(a, b, q);
+  if (sp == 0 || sq == 0)
+  {
+    return false; // through a hull vertex
+  }
+  if (sp != sq)
+  {
     Crossing c;
     c.Segment = v;
     c.Edge = static_cast<std::uint32_t>(e);
-    c.Entry = sa[e] < 0;
-    const Point2 hs = Shifted(h, origin), ks = Shifted(k, origin);
-    c.At = LineCrossing(Shifted(a, origin), Shifted(b, origin), hs, ks);
-    c.Along = AlongEdge(c.At, hs, ks);
+    c.Entry = sa < 0;
+    const Point2 ps = Shifted(p, origin), qs = Shifted(q, origin);
+    c.At = LineCrossing(Shifted(a, origin), Shifted(b, origin), ps, qs);
+    c.Along = AlongEdge(c.At, ps, qs);
     c.Order = c.Entry ? 0 : 1; // a convex tile: a segment entering and leaving enters first
     crossings.push_back(c);
-    ++found;
   }
-  const bool aInside = std::all_of(sa, sa + count, [](int side) { return side > 0; });
-  const bool bInside = std::all_of(sb, sb + count, [](int side) { return side > 0; });
-  return found <= 2 && (found % 2 == 1) == (aInside != bInside);
+  return true;
 }
 
 // Each ring's pieces inside the tile, from each entry to the next exit along the ring (crossings
@@ -390,7 +401,7 @@ void Catchment::AddBoundaryStretches(const std::vector<Point2>& hull,
       const Crossing& cy = crossings[y];
       return cx.Edge != cy.Edge ? cx.Edge < cy.Edge : cx.Along < cy.Along;
     });
-  int w = this->WindingAt(hull[0], work);
+  int w = this->IndicatorAtVertex(hull[0], work);
   Point2 from{ 0.0, 0.0 };
   std::size_t k = 0;
   for (std::size_t e = 0; e < hull.size(); ++e)
@@ -406,6 +417,21 @@ void Catchment::AddBoundaryStretches(const std::vector<Point2>& hull,
     AddCross(twice, { w * from.x, w * from.y }, to);
     from = to;
   }
+}
+
+// The catchment's indicator at a hull vertex, which lies on no segment: 0 outside the catchment's
+// box, its cell's when no segment is listed there (ClassifyEmptyCells), else the winding counted
+// along its row.
+int Catchment::IndicatorAtVertex(const Point2& h, Workspace& work) const
+{
+  if (!(h.x >= this->Box.XMin && h.x <= this->Box.XMax && h.y >= this->Box.YMin &&
+        h.y <= this->Box.YMax))
+  {
+    return 0;
+  }
+  const signed char empty =
+    this->EmptyCellInside[this->CellX(h.x) + this->CellY(h.y) * this->GridX];
+  return empty >= 0 ? empty : this->WindingAt(h, work);
 }
 
 // Rings that do not cross the tile's boundary and lie inside it: their whole area. (Their segments
