@@ -35,10 +35,11 @@
 // tile's box spans 16 grid cells or more: from where the catchment's boundary crosses the tile's,
 // the pieces between crossings summed from prefix sums along the rings (crossing_area.cpp). That
 // costs the segments near the tile's boundary, not those inside it; a tile on a detailed outline
-// (3e5 vertices) took a sixth of the time. It agrees with the clipping to some 1e-16 of the
-// tile's area, and hands the tile to the clipping wherever exactness needs it: a catchment
-// vertex on the tile's boundary, a segment through a tile vertex, a result within 1e-9 of the
-// tile of empty or whole.
+// (3e5 vertices) a step cost an eighteenth as much. Its error has the clipping's source and
+// size: crossing points rounded by ulps of the tile's size, so some 1e-16 of a fat tile's area
+// and eps * length^2 for a sliver (1e-7 of a tile 1e-9 as thick as long, on both ways). It hands
+// the tile to the clipping wherever exactness needs it: a catchment vertex on the tile's
+// boundary, a segment through a tile vertex, a result within 1e-9 of the tile of empty or whole.
 //
 // Cost: construction O(n log n) for validation plus the grid (about 2 cells per segment); a tile
 // costs O(its vertices x nearby segments) plus a walk along one grid row; measured by crossings,

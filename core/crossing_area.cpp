@@ -172,8 +172,9 @@ bool Catchment::AreaByCrossings(const Point2* tile,
 }
 
 // The double-double sums err by PrefixError (the rings' sweeps) and eps^2 of the products that
-// move them to the origin: beyond an ulp of the tile's area (a tile 2^-30 of its coordinates'
-// size), the clipping measures it instead.
+// move them to the origin: beyond an ulp of the tile's area (a tile under 4 sqrt(eps), some 2^-24,
+// of its coordinates' size, or smaller on outlines of millions of vertices far from the origin),
+// the clipping measures it instead.
 bool Catchment::SumsTooCoarse(const Point2& origin, const Box2& hullBox, double tileArea) const
 {
   const double eps = std::numeric_limits<double>::epsilon();
@@ -231,20 +232,23 @@ bool Catchment::FindCrossings(const std::vector<Point2>& hull, Workspace& work) 
 }
 
 // The grid cells that segment p-q passes through, and some beside them. Row by row, its x range
-// over the row, widened by a sixteenth of a row and of a column for rounding, gives its cells.
+// over the row, widened by a sixteenth of a row and of a column for rounding (and by ulps of the
+// coordinates where cells are only some ulps wide), gives its cells.
 template<typename Visit>
 void Catchment::ForEachCellAlong(const Point2& p, const Point2& q, Visit&& visit) const
 {
   const double rowHeight = 1.0 / this->CellScaleY;
-  const double margin = 0.0625 / this->CellScaleX;
+  const double ulps = 8.0 * std::numeric_limits<double>::epsilon() * this->Box.LargestMagnitude();
+  const double rowMargin = std::max(0.0625 * rowHeight, ulps);
+  const double margin = std::max(0.0625 / this->CellScaleX, ulps);
   const double yLow = std::min(p.y, q.y), yHigh = std::max(p.y, q.y);
   const double xLow = std::min(p.x, q.x), xHigh = std::max(p.x, q.x);
   const auto xAt = [&](double y, double level)
   { return p.y == q.y ? level : p.x + (y - p.y) * (q.x - p.x) / (q.y - p.y); };
   for (std::size_t j = this->CellY(yLow); j <= this->CellY(yHigh); ++j)
   {
-    const double rowLow = this->Box.YMin + (static_cast<double>(j) - 0.0625) * rowHeight;
-    const double rowHigh = this->Box.YMin + (static_cast<double>(j) + 1.0625) * rowHeight;
+    const double rowLow = this->Box.YMin + static_cast<double>(j) * rowHeight - rowMargin;
+    const double rowHigh = this->Box.YMin + static_cast<double>(j + 1) * rowHeight + rowMargin;
     const double x0 = xAt(std::max(rowLow, yLow), xLow);
     const double x1 = xAt(std::min(rowHigh, yHigh), xHigh);
     const std::size_t i0 = this->CellX(std::max(std::min(x0, x1) - margin, xLow));
@@ -456,7 +460,8 @@ bool Catchment::AddRingsWithin(const std::vector<Point2>& hull,
 }
 
 // The rings' prefix sums (Prefix, RingSweep), their boxes, and a bound on the sums' error: each
-// double-double addition errs by some eps^2 of its result, at most the sum of the terms' sizes.
+// double-double addition errs by a few eps^2 of its operands, each at most the sum of the terms'
+// sizes (loose: n times that sum, which grows with n, so a tile's own area must too).
 void Catchment::BuildPrefixSums()
 {
   this->Prefix.resize(this->Points.size());
