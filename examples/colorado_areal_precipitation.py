@@ -18,6 +18,13 @@ Writes into --out:
                          at one place counted once,
                          stations_weighted = those whose tile reaches the catchment; areal_mean
                          is empty where no gauge reported)
+  areal_total_by_month.csv
+                         for daily observations: year,month,days,days_with_mean,areal_total, the
+                         days' areal means added up over each month (days: the calendar's);
+                         areal_total is empty unless every day of the month has a mean (a month
+                         the records start or end in, a day where no gauge reported);
+                         areal_total_by_day.csv likewise over each day for hours (hours,
+                         hours_with_mean) and steps of minutes (steps, steps_with_mean)
   weights_YYYY_MM.csv    station_id,name,lon,lat,weight,area_km2,precip for --month (for each
                          --month when it is given more than once; so for the tiles and the map;
                          without --month, 1963-08 or the month nearest it where a gauge reported,
@@ -1884,6 +1891,42 @@ def write_summary(table, steps, path):
     return rows
 
 
+# Totals of finer steps' areal means over each month (steps of days) or day (hours, minutes), as
+# hydrologists add up daily areal rainfall: the file, its period's columns and what it counts.
+TOTALS = {"day": ("areal_total_by_month.csv", 2, "days"), "hour": ("areal_total_by_day.csv", 3, "hours"),
+          "minute": ("areal_total_by_day.csv", 3, "steps")}
+
+
+def totals_name(steps):
+    """The totals file of these steps (TOTALS), or None for months."""
+    return TOTALS[steps.unit][0] if steps.unit in TOTALS else None
+
+
+def steps_in_period(period, steps):
+    """How many steps the calendar gives a month (days) or a day (24 hours, or 1440 / minutes)."""
+    if len(period) == 2:
+        return calendar.monthrange(*period)[1]
+    return 24 * 60 // steps.minutes
+
+
+def write_totals(rows, steps, path):
+    """The areal means of areal_mean.csv's rows added up over each month or day (TOTALS): the
+    period, the steps the calendar gives it, how many of them have an areal mean, and their total,
+    empty unless every one has (a month the records start or end in, or with a day where no gauge
+    reported, gets no total: its days with means are counted)."""
+    _, fields, noun = TOTALS[steps.unit]
+    periods = {}
+    for row in rows:
+        periods.setdefault(tuple(row[:fields]), []).append(row[-1])
+    with open(path, "w", newline="") as f:
+        out = csv.writer(f)
+        out.writerow([*steps.columns[:fields], noun, f"{noun}_with_mean", "areal_total"])
+        for period, means in periods.items():
+            known = [m for m in means if not math.isnan(m)]
+            total = math.fsum(known) if len(known) == steps_in_period(period, steps) else math.nan
+            out.writerow([*period, steps_in_period(period, steps), len(known), mean_text(total)])
+
+
 # The filter's lists of valid input it did not use (output 1's field data), as unused_inputs.csv
 # gives them: (array, what it lists ({unit}: month or day), whether it lists observation rows
 # rather than gauges).
@@ -2768,6 +2811,8 @@ def write_tables(args, inputs, average, files, summary):
     record = inputs.record
     steps = record.steps
     rows = write_summary(summary, steps, os.path.join(args.out, "areal_mean.csv"))
+    if totals_name(steps):
+        write_totals(rows, steps, os.path.join(args.out, totals_name(steps)))
     write_all_weights_or_remove(args, average, steps)
     unused = write_unused(summary, files, inputs.station_ids, record.table, steps.noun,
                           os.path.join(args.out, "unused_inputs.csv"), record.unmatched, record.outside,
@@ -2847,11 +2892,13 @@ def say_summary(args, inputs, rows, shown, unused):
     tags = [tag for _, tag, _ in shown]
     step_files = [name for tag in tags for name in (f"weights_{tag}.csv", f"tiles_{tag}.vtp", f"tiles_{tag}.geojson")]
     plot_files = [] if args.no_plots else [f"map_{tag}.png" for tag in tags] + ["areal_mean.png"]
-    say_earlier_outputs(args.out, {"areal_mean.csv", "unused_inputs.csv", *step_files, *plot_files}
+    totals = [totals_name(steps)] if totals_name(steps) else []
+    say_earlier_outputs(args.out, {"areal_mean.csv", "unused_inputs.csv", *totals, *step_files, *plot_files}
                         | (set() if args.no_all_weights else {all_weights})
                         | ({by_feature} if groups else set()))
     say_means(rows, steps, shown)
-    print(f"wrote {args.out}/areal_mean.csv, " + ("" if args.no_all_weights else f"{all_weights}, ")
+    print(f"wrote {args.out}/areal_mean.csv, " + "".join(f"{name}, " for name in totals)
+          + ("" if args.no_all_weights else f"{all_weights}, ")
           + ", ".join(step_files + plot_files)
           + f", unused_inputs.csv ({unused} input(s) not used"
           + (f", {outside_count(record.outside)} of them outside --start/--end)" if record.outside else ")")

@@ -1267,6 +1267,47 @@ def test_several_days_get_the_files_each_gets_alone():
                     f"the three days' files: {files}")
 
 
+def test_finer_means_add_up_to_totals():
+    # Daily means add up over each month into areal_total_by_month.csv, hourly means over each day
+    # into areal_total_by_day.csv, with the calendar's days (hours) of the period and how many had
+    # a mean; a period gets a total only when every one had (not the month the records start in,
+    # nor one with a day where no gauge reported). The gauges that report in a step all give one
+    # value, so its areal mean is that value whatever the weights: the totals are known by hand.
+    gauges = sorted(LAKE_GAUGES)
+    with tempfile.TemporaryDirectory() as directory:
+        catchment, stations, _ = write_lake_basin(directory)
+        reported = [(2001, 1, 30), (2001, 1, 31), *((2001, 2, d) for d in range(1, 29)), (2001, 3, 1), (2001, 3, 3)]
+        days = {day: {s: 0.25 * k for s in gauges[:1 + k % 6]} for k, day in enumerate(reported, 1)}
+        out = os.path.join(directory, "daily")
+        stdout, _ = run_colorado(out, stations=stations, observations=write_daily(directory, "daily.csv", days),
+                                 catchment=catchment, plots=False, what="daily observations")
+        assert_that("areal_total_by_month.csv, " in stdout, f"the totals file is named: {stdout}")
+        totals = read_csv(os.path.join(out, "areal_total_by_month.csv"))
+        february = math.fsum(0.25 * k for k, day in enumerate(reported, 1) if day[1] == 2)
+        expected = [("2001", "1", "31", "2", None), ("2001", "2", "28", "28", february), ("2001", "3", "31", "2", None)]
+        got = [(r["year"], r["month"], r["days"], r["days_with_mean"], r["areal_total"]) for r in totals]
+        assert_that([g[:4] for g in got] == [e[:4] for e in expected], f"the months: {got}")
+        for g, e in zip(got, expected):
+            if e[4] is None:
+                assert_that(g[4] == "", f"a month without every day's mean has no total: {g}")
+            else:
+                assert_close(float(g[4]), e[4], 1e-12, f"{g[:2]}: the days' values added up")
+        hours = [(2001, 3, 1, h) for h in range(24)] + [(2001, 3, 2, 0), (2001, 3, 2, 5)]
+        values = {hour: 0.5 * k for k, hour in enumerate(hours, 1)}
+        path = write(directory, "hourly.csv", "station_id,date,precip\n" + "".join(
+            f"{s},{y}-{m:02d}-{d:02d} {h:02d}:00,{values[(y, m, d, h)]}\n"
+            for k, (y, m, d, h) in enumerate(hours) for s in gauges[:1 + k % 6]))
+        out = os.path.join(directory, "hourly")
+        run_colorado(out, stations=stations, observations=path, catchment=catchment, plots=False,
+                     what="hourly observations")
+        totals = read_csv(os.path.join(out, "areal_total_by_day.csv"))
+        got = [(r["day"], r["hours"], r["hours_with_mean"], r["areal_total"]) for r in totals]
+        assert_that([g[:3] for g in got] == [("1", "24", "24"), ("2", "24", "2")] and got[1][3] == "",
+                    f"the days: {got}")
+        assert_close(float(got[0][3]), math.fsum(values[h] for h in hours[:24]), 1e-12, "the hours of 2001-03-01")
+        assert_that(not os.path.exists(os.path.join(out, "areal_total_by_month.csv")), "a monthly total of hours")
+
+
 def test_hourly_observations_give_hourly_means():
     # Observations of hours, by a date column with times on the hour or by an hour column, give a
     # mean an hour, every hour from the first to the last (2001-03-01 01:00 has no row), across
@@ -4158,7 +4199,7 @@ if __name__ == "__main__":
          test_ids_without_their_leading_zeros_match_as_in_the_filter,
          test_files_of_semicolons_or_tabs_with_decimal_commas,
          test_daily_observations_give_daily_means,
-         test_hourly_observations_give_hourly_means, test_observations_of_minutes_give_a_mean_each_step,
+         test_finer_means_add_up_to_totals, test_hourly_observations_give_hourly_means, test_observations_of_minutes_give_a_mean_each_step,
          test_times_off_the_steps_and_gauges_of_other_steps_are_named,
          test_sum_to_sums_each_gauges_values_into_longer_steps,
          test_start_and_end_choose_the_period,
