@@ -32,7 +32,7 @@
 // the tile from the outer ring and its reversal from the hole's ring, which cancel).
 //
 // Areas alone (ClipInto without rings, ClipAll without them) are measured another way where a
-// tile's box spans 16 grid cells or more: from where the catchment's boundary crosses the tile's,
+// tile's box spans 64 grid cells or more: from where the catchment's boundary crosses the tile's,
 // the pieces between crossings summed from prefix sums along the rings (crossing_area.cpp). That
 // costs the segments near the tile's boundary, not those inside it; a tile on a detailed outline
 // (3e5 vertices) a step cost an eighteenth as much. Its error has the clipping's source and

@@ -111,11 +111,14 @@ double AlongEdge(const Point2& p, const Point2& a, const Point2& b)
 
 } // namespace
 
+// Below some 64 grid cells in the tile's box, listing the box's segments costs the clipping less
+// than the hull and the cells along its edges cost this (bench_clip's 376 Colorado tiles over 2000
+// outline vertices: 12% slower from 16 cells on, as fast from 64).
 bool Catchment::CrossingsWorthIt(const Box2& box) const
 {
   const std::size_t cells = (this->CellX(box.XMax) - this->CellX(box.XMin) + 1) *
     (this->CellY(box.YMax) - this->CellY(box.YMin) + 1);
-  return cells >= 16 && this->RingCount() <= MostRings;
+  return cells >= 64 && this->RingCount() <= MostRings;
 }
 
 bool Catchment::AreaByCrossings(const Point2* tile,
