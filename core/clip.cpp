@@ -84,17 +84,6 @@ double RoundingAreaBound(const std::vector<Point2>& piece, double magnitude)
   return 16.0 * std::numeric_limits<double>::epsilon() * magnitude * perimeter;
 }
 
-// Whether a tile of this area inside box might be no more than the clipping's rounding
-// (RoundingAreaBound of a convex tile, whose L1 perimeter is twice the box's width plus height,
-// and whose coordinates relative to a vertex are at most the box's larger side).
-bool ThinnerThanRounding(double tileArea, const Box2& box)
-{
-  const double width = box.XMax - box.XMin;
-  const double height = box.YMax - box.YMin;
-  return tileArea <=
-    32.0 * std::numeric_limits<double>::epsilon() * std::max(width, height) * (width + height);
-}
-
 // The tile's vertices from its lowest on, in rotated when that is not the first: the clipped area
 // is summed, and measured relative to the first vertex, in this order, so that the same polygon
 // gives the same bits whichever vertex it was listed from (two tessellations of the same points

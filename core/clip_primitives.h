@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <vector>
 
 namespace tessera
@@ -87,6 +88,17 @@ inline bool TileHoldsPoint(const Point2* tile,
     }
   }
   return true;
+}
+
+// Whether a tile of this area inside box might be no more than the clipping's rounding
+// (RoundingAreaBound of a convex tile, whose L1 perimeter is twice the box's width plus height,
+// and whose coordinates relative to a vertex are at most the box's larger side).
+inline bool ThinnerThanRounding(double tileArea, const Box2& box)
+{
+  const double width = box.XMax - box.XMin;
+  const double height = box.YMax - box.YMin;
+  return tileArea <=
+    32.0 * std::numeric_limits<double>::epsilon() * std::max(width, height) * (width + height);
 }
 
 } // namespace tessera

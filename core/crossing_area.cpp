@@ -154,9 +154,7 @@ bool Catchment::AreaByCrossings(const Point2* tile,
   if (work.BoundaryCrossings.empty() && !ringsWithin)
   {
     // All in or all out (as the clipping's empty cells say), but for a tile thinner than rounding.
-    const double width = box.XMax - box.XMin, height = box.YMax - box.YMin;
-    if (tileArea <=
-      32.0 * std::numeric_limits<double>::epsilon() * std::max(width, height) * (width + height))
+    if (ThinnerThanRounding(tileArea, box))
     {
       return false;
     }
