@@ -1663,7 +1663,8 @@ struct vtkThiessenArealAverage::BuildRun
       text << snapped << " catchment vertex(es) lay within "
            << tessera::ArealAverageSettings::SharedBorderDegrees
            << " degrees of another ring's edge (a shared border with vertices that only one side "
-              "has, their coordinates rounded) and were put on that edge too";
+              "has: on the edge, or off it by their coordinates' rounding) and were put on that "
+              "edge as projected too";
       this->Warn(text.str());
     }
     std::size_t gaugesInside = 0;
