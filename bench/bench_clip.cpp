@@ -7,8 +7,9 @@
 // 1. Building the catchment (validation, grid) from the Colorado outline densified to ~2000
 //    vertices, 100 times.
 // 2. The Colorado workload: Thiessen tiles of 376 random gauges in the data's lon/lat box (computed
-//    here by brute-force half-plane clipping), clipped 1236 times (one per month), areas only and
-//    with rings.
+//    here by brute-force half-plane clipping), clipped 1236 times (one per month), areas only (from
+//    the outline's crossings with the tiles) and with rings (clipping); then 100 times each over
+//    the outline densified to 3 10^4 and 3 10^5 vertices.
 // 3. 100k convex tiles (a jittered, triangulated grid) over the outline's box.
 // Without a file, a synthetic outline of the same extent with jagged edges is used.
 
@@ -182,6 +183,37 @@ void ThiessenTiles(const std::vector<Point2>& gauges,
   }
 }
 
+// The Colorado workload's tiles clipped `months` times, areas only or with rings.
+void TimeColorado(const tessera::Catchment& catchment,
+  const std::vector<std::size_t>& tileOffsets,
+  const std::vector<Point2>& tileVertices,
+  int months,
+  bool withRings)
+{
+  const std::size_t tiles = tileOffsets.size() - 1;
+  const auto start = std::chrono::steady_clock::now();
+  double sum = 0.0;
+  for (int month = 0; month < months; ++month)
+  {
+    const tessera::ClippedTiles clipped = catchment.ClipAll(tileOffsets, tileVertices, withRings);
+    sum = 0.0;
+    for (std::size_t t = 0; t < tiles; ++t)
+    {
+      sum += clipped.Areas[t];
+    }
+  }
+  const double seconds = Seconds(start);
+  std::printf("Colorado, outline of %zu vertices: %zu tiles x %d months, %s: %.3f s "
+              "(%.2f us/tile); sum/catchment - 1 = %.2e\n",
+    catchment.Vertices().size(),
+    tiles,
+    months,
+    withRings ? "areas + rings (clipping)" : "areas only (crossings)",
+    seconds,
+    seconds / (static_cast<double>(tiles) * months) * 1e6,
+    sum / catchment.Area() - 1.0);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -247,31 +279,21 @@ int main(int argc, char** argv)
   ThiessenTiles(gauges, window, tileOffsets, tileVertices);
   const std::size_t tiles = tileOffsets.size() - 1;
 
-  for (const bool withRings : { false, true })
+  // The same tiles over the outline densified further: areas alone come from the outline's
+  // crossings with each tile's boundary, areas with rings from clipping (clip.h).
+  for (const std::size_t detail : { std::size_t(2000), std::size_t(30000), std::size_t(300000) })
   {
-    start = std::chrono::steady_clock::now();
-    double sum = 0.0;
-    std::size_t straddling = 0;
-    for (int month = 0; month < 1236; ++month)
+    std::vector<Point2> denser = Densify(outline, detail);
+    for (Point2& p : denser)
     {
-      const tessera::ClippedTiles clipped = catchment.ClipAll(tileOffsets, tileVertices, withRings);
-      sum = 0.0;
-      straddling = 0;
-      for (std::size_t t = 0; t < tiles; ++t)
-      {
-        sum += clipped.Areas[t];
-        straddling += clipped.Areas[t] > 0.0 && clipped.TileRingOffsets.size() > t + 1 &&
-          clipped.TileRingOffsets[t + 1] > clipped.TileRingOffsets[t];
-      }
+      p = Project(p);
     }
-    const double seconds = Seconds(start);
-    std::printf("Colorado: %zu tiles x 1236 months, %s: %.3f s (%.2f us/tile); "
-                "sum/catchment - 1 = %.2e\n",
-      tiles,
-      withRings ? "areas + rings" : "areas only",
-      seconds,
-      seconds / (tiles * 1236.0) * 1e6,
-      sum / catchment.Area() - 1.0);
+    const tessera::Catchment detailed({ 0, denser.size() }, denser);
+    const int months = detail > 2000 ? 100 : 1236;
+    for (const bool withRings : { false, true })
+    {
+      TimeColorado(detailed, tileOffsets, tileVertices, months, withRings);
+    }
   }
 
   // 100k convex tiles: a jittered grid over the outline's box (padded), quads split in two.
