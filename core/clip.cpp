@@ -477,9 +477,6 @@ Catchment::Catchment(const std::vector<std::size_t>& ringOffsets,
   this->RingAreas = ringAreas.Value();
 }
 
-// (Inline, and through int, which holds any count up to 4096: as calls converting to an unsigned
-// 64-bit type, the cell lookups were a tenth of the clipping's instructions.)
-
 // About two cells per segment, shaped like the catchment's box. Cell indices come from one
 // monotone function of the coordinate, so a segment whose box meets a query box always shares a
 // cell with it, whatever the rounding.

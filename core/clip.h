@@ -39,7 +39,8 @@
 // size: crossing points rounded by ulps of the tile's size, so some 1e-16 of a fat tile's area
 // and eps * length^2 for a sliver (1e-7 of a tile 1e-9 as thick as long, on both ways). It hands
 // the tile to the clipping wherever exactness needs it: a catchment vertex on the tile's
-// boundary, a segment through a tile vertex, a result within 1e-9 of the tile of empty or whole.
+// boundary, a segment through a tile vertex, a result within 1e-9 of the tile of empty or whole
+// (and beyond the limits crossing_area.cpp lists: 64 rings, 64 hull vertices, coarse sums).
 //
 // Cost: construction O(n log n) for validation plus the grid (about 2 cells per segment); a tile
 // costs O(its vertices x nearby segments) plus a walk along one grid row; measured by crossings,
@@ -65,7 +66,8 @@
 namespace tessera
 {
 
-/// An unevaluated sum Hi + Lo with |Lo| <= ulp(Hi) / 2: some 106 bits.
+/// An unevaluated sum Hi + Lo with |Lo| <= ulp(Hi) / 2: some 106 bits (internal to the
+/// catchment's prefix sums).
 struct DoubleDouble
 {
   double Hi = 0.0;
@@ -179,7 +181,8 @@ public:
 
   /// Where the catchment's boundary crosses a tile's (crossing_area.cpp): on segment Segment
   /// (from vertex Segment), at At (relative to the tile hull's first vertex), on hull edge Edge
-  /// at Along (0 to 1 from its start); Order 0 or 1 among the segment's crossings.
+  /// at Along (0 to 1 from its start); Entry when the segment passes into the tile there; Order
+  /// 0 or 1 among the segment's crossings (an entry first).
   struct Crossing
   {
     std::uint32_t Segment = 0;
@@ -288,7 +291,10 @@ private:
     const Box2& box,
     Workspace& work,
     double& area) const;
-  bool SumsTooCoarse(const Point2& origin, const Box2& hullBox, double tileArea) const;
+  bool SumsTooCoarse(const Point2& origin,
+    const Box2& hullBox,
+    double tileArea,
+    std::size_t sweeps) const;
   bool FindCrossings(const std::vector<Point2>& hull, Workspace& work) const;
   template<typename Visit>
   void ForEachCellAlong(const Point2& p, const Point2& q, Visit&& visit) const;
@@ -355,6 +361,8 @@ private:
   double PrefixError = 0.0;
 };
 
+// (Inline, and through int, which holds any count up to 4096: as calls converting to an unsigned
+// 64-bit type, the cell lookups were a tenth of the clipping's instructions.)
 inline std::size_t Catchment::CellIndex(double value, double lo, double scale, std::size_t count)
 {
   const double cell = (value - lo) * scale;

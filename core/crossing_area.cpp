@@ -40,6 +40,7 @@
 
 #include "clip.h"
 #include "clip_primitives.h"
+#include "expansion_arithmetic.h"
 #include "predicates_inline.h"
 
 #include <algorithm>
@@ -56,14 +57,15 @@ namespace
 constexpr std::size_t MostRings = 64;
 constexpr std::size_t MostHullVertices = 64;
 
-// Knuth's TwoSum, normalised: s + e is a + b exactly, as a double-double.
+// a + b + carry as a double-double: a + b exactly (TwoSum), its error and the carry added in one
+// rounding (some eps^2 of the operands), the pair renormalised exactly.
 DoubleDouble Sum(double a, double b, double carry)
 {
-  const double s = a + b;
-  const double bb = s - a;
-  const double e = (a - (s - bb)) + (b - bb) + carry;
-  const double hi = s + e;
-  return { hi, e - (hi - s) };
+  double sum = 0.0, error = 0.0;
+  expansion::two_sum(a, b, sum, error);
+  DoubleDouble result;
+  expansion::two_sum(sum, error + carry, result.Hi, result.Lo);
+  return result;
 }
 
 DoubleDouble Plus(const DoubleDouble& a, const DoubleDouble& b)
@@ -79,9 +81,10 @@ DoubleDouble Minus(const DoubleDouble& a, const DoubleDouble& b)
 // cross(a, b) = a.x b.y - a.y b.x from exact products (fma), rounded once to a double-double.
 DoubleDouble Cross(const Point2& a, const Point2& b)
 {
-  const double p = a.x * b.y;
-  const double q = a.y * b.x;
-  return Sum(p, -q, std::fma(a.x, b.y, -p) - std::fma(a.y, b.x, -q));
+  double p = 0.0, pError = 0.0, q = 0.0, qError = 0.0;
+  expansion::two_product_fma(a.x, b.y, p, pError);
+  expansion::two_product_fma(a.y, b.x, q, qError);
+  return Sum(p, -q, pError - qError);
 }
 
 Point2 Shifted(const Point2& p, const Point2& origin)
@@ -93,13 +96,6 @@ void AddCross(CompensatedSum& twice, const Point2& a, const Point2& b)
 {
   twice.AddProduct(a.x, b.y);
   twice.AddProduct(-a.y, b.x);
-}
-
-// Whether p, on the line through edge a-b, lies on the closed edge (exact: p is on the line).
-bool OnClosedEdge(const Point2& p, const Point2& a, const Point2& b)
-{
-  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-    p.y <= std::max(a.y, b.y);
 }
 
 // Where along edge a->b (0 to 1) a point on it lies, by its larger coordinate difference.
@@ -136,11 +132,8 @@ bool Catchment::AreaByCrossings(const Point2* tile,
     return false;
   }
   const Box2 hullBox = BoundsOf(hull.data(), hull.size());
-  if (this->SumsTooCoarse(hull[0], hullBox, tileArea))
-  {
-    return false;
-  }
-  if (!this->FindCrossings(hull, work))
+  if (!this->FindCrossings(hull, work) ||
+    this->SumsTooCoarse(hull[0], hullBox, tileArea, work.BoundaryCrossings.size() / 2 + 1))
   {
     return false;
   }
@@ -172,18 +165,23 @@ bool Catchment::AreaByCrossings(const Point2* tile,
   return true;
 }
 
-// The double-double sums err by PrefixError (the rings' sweeps) and eps^2 of the products that
-// move them to the origin: beyond an ulp of the tile's area (a tile under 4 sqrt(eps), some 2^-24,
-// of its coordinates' size, or smaller on outlines of millions of vertices far from the origin),
+// Each of a tile's sweeps (a piece's, or a ring's within it) errs by PrefixError (the rings'
+// prefix sums) and eps^2 of the products that move it to the origin: where the sweeps could err by
+// more than an ulp of the tile's area (a tile under 4 sqrt(eps), some 2^-24, of its coordinates'
+// size, or larger on outlines of millions of vertices far from the origin, or crossed many times),
 // the clipping measures it instead.
-bool Catchment::SumsTooCoarse(const Point2& origin, const Box2& hullBox, double tileArea) const
+bool Catchment::SumsTooCoarse(const Point2& origin,
+  const Box2& hullBox,
+  double tileArea,
+  std::size_t sweeps) const
 {
   const double eps = std::numeric_limits<double>::epsilon();
   const double magnitude = std::max({ this->Box.LargestMagnitude(),
     hullBox.LargestMagnitude(),
     std::fabs(origin.x),
     std::fabs(origin.y) });
-  const double error = 4.0 * this->PrefixError + 16.0 * eps * eps * magnitude * magnitude;
+  const double error = static_cast<double>(sweeps) *
+    (4.0 * this->PrefixError + 16.0 * eps * eps * magnitude * magnitude);
   return !(error <= eps * tileArea);
 }
 
@@ -286,7 +284,7 @@ bool Catchment::AddEdgeCrossing(std::uint32_t v,
   }
   const int sa = orient2d_fast(p, q, a);
   const int sb = orient2d_fast(p, q, b);
-  if ((sa == 0 && OnClosedEdge(a, p, q)) || (sb == 0 && OnClosedEdge(b, p, q)))
+  if ((sa == 0 && OnSegment(p, q, a)) || (sb == 0 && OnSegment(p, q, b)))
   {
     return false;
   }

@@ -120,6 +120,14 @@ inline std::size_t NextInRing(std::size_t k, std::size_t begin, std::size_t end)
   return k + 1 < end ? k + 1 : begin;
 }
 
+/// Whether c, known to lie on the line through a and b (an exact orientation of 0), lies on the
+/// closed segment a-b: exact, by its coordinates.
+inline bool OnSegment(const Point2& a, const Point2& b, const Point2& c)
+{
+  return std::min(a.x, b.x) <= c.x && c.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= c.y &&
+    c.y <= std::max(a.y, b.y);
+}
+
 /// The first vertex of a ring (count >= 1) by ComesFirst.
 inline std::size_t LowestVertex(const Point2* ring, std::size_t count)
 {

@@ -100,17 +100,6 @@ CleanRings DropRepeats(const std::vector<std::size_t>& ringOffsets,
   return clean;
 }
 
-bool Between(double a, double b, double v)
-{
-  return std::min(a, b) <= v && v <= std::max(a, b);
-}
-
-// c is known to be collinear with a and b.
-bool OnSegment(const Point2& a, const Point2& b, const Point2& c)
-{
-  return Between(a.x, b.x, c.x) && Between(a.y, b.y, c.y);
-}
-
 int Sign(double v)
 {
   return (v > 0) - (v < 0);

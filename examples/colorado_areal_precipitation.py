@@ -21,10 +21,12 @@ Writes into --out:
   areal_total_by_month.csv
                          for daily observations: year,month,days,days_with_mean,areal_total, the
                          days' areal means added up over each month (days: the calendar's);
-                         areal_total is empty unless every day of the month has a mean (a month
-                         the records start or end in, a day where no gauge reported);
+                         areal_total is empty unless every day of the month has a mean (not for a
+                         month the records cover in part, or with a day where no gauge reported);
                          areal_total_by_day.csv likewise over each day for hours (hours,
-                         hours_with_mean) and steps of minutes (steps, steps_with_mean)
+                         hours_with_mean) and steps of minutes (steps, steps_with_mean), a step
+                         counted in the day it ends in but for one ending at 00:00, which closes
+                         the day before (hour-ending records: hours 01:00 to 24:00)
   weights_YYYY_MM.csv    station_id,name,lon,lat,weight,area_km2,precip for --month (for each
                          --month when it is given more than once; so for the tiles and the map;
                          without --month, 1963-08 or the month nearest it where a gauge reported,
@@ -1312,7 +1314,8 @@ def outside_count(outside):
 # 2001_03, 2001_03_01, 2001_03_01_06 or 2001_03_01_06_15): a file in --out named so that this run did not write is
 # most likely an earlier run's.
 TAG = r"[0-9]{4}_[0-9]{2}(_[0-9]{2}(_[0-9]{2}(_[0-9]{2})?)?)?"
-OUTPUT_NAME = re.compile(rf"areal_mean\.(csv|png)|areal_mean_by_.+\.csv|unused_inputs\.csv"
+OUTPUT_NAME = re.compile(rf"areal_mean\.(csv|png)|areal_mean_by_.+\.csv|areal_total_by_(month|day)\.csv"
+                         rf"|unused_inputs\.csv"
                          rf"|weights_all_(months|days|hours|minutes)\.csv"
                          rf"|weights_{TAG}\.csv|tiles_{TAG}\.(vtp|geojson)|map_{TAG}\.png")
 
@@ -1369,8 +1372,8 @@ def holes_outside_their_polygons(path, feature=None):
     """For a GeoJSON file: (feature, ring) of each hole (a polygon's ring after its first, counted
     over the feature's polygons) whose first vertex off its polygon's outer ring lies outside it.
     The even-odd rule takes such a ring as an island, adding its area, where the file means a hole
-    (a hole that crosses its outline, with vertices on both sides, is refused by the filter, and
-    not listed here). Only the features with
+    (a hole that crosses its outline, with vertices on both sides, is refused by the filter; it is
+    listed here too when that first vertex is outside). Only the features with
     `feature`'s ATTRIBUTE=VALUE when given; a malformed feature (which GDAL names or skips) is
     passed over. Empty for other files."""
     import json
@@ -1911,15 +1914,24 @@ def steps_in_period(period, steps):
     return 24 * 60 // steps.minutes
 
 
+def period_of_step(step, steps, fields):
+    """The month of a day; the day of an hour or a step of minutes, which ends at its label (the
+    hour labelled 00:00 closes the day before, as hour-ending records and --sum-to's totals run)."""
+    if steps.fields == 3:
+        return tuple(step[:fields])
+    start = datetime.datetime(*step) - steps.length()
+    return (start.year, start.month, start.day)
+
+
 def write_totals(rows, steps, path):
     """The areal means of areal_mean.csv's rows added up over each month or day (TOTALS): the
     period, the steps the calendar gives it, how many of them have an areal mean, and their total,
-    empty unless every one has (a month the records start or end in, or with a day where no gauge
+    empty unless every one has (a month the records cover in part, or with a day where no gauge
     reported, gets no total: its days with means are counted)."""
     _, fields, noun = TOTALS[steps.unit]
     periods = {}
     for row in rows:
-        periods.setdefault(tuple(row[:fields]), []).append(row[-1])
+        periods.setdefault(period_of_step(row[:steps.fields], steps, fields), []).append(row[-1])
     with open(path, "w", newline="") as f:
         out = csv.writer(f)
         out.writerow([*steps.columns[:fields], noun, f"{noun}_with_mean", "areal_total"])
@@ -2747,14 +2759,9 @@ def read_inputs(args, stations_system, asked, bounds, each):
     groups = polygon_groups(features_by_value(catchment, each, args.catchment), each,
                             args.catchment) if each is not None else None
     if time.time() - started >= 1.0:  # (a detailed outline: some 300,000 vertices take a second)
-        print(f"read the catchment ({catchment_vertex_count(catchment)} vertices) in "
-              f"{time.time() - started:.1f} s", file=sys.stderr)
+        print(f"read the catchment ({sum(map(len, outline))} vertices) in {time.time() - started:.1f} s",
+              file=sys.stderr)
     return Inputs(gauges, gauge_lines, station_ids, record, wanted, catchment, outline, each, groups)
-
-
-def catchment_vertex_count(catchment):
-    """The points of the catchment's blocks (its rings' vertices), for the reading's time."""
-    return sum(block.GetNumberOfPoints() for block in projected_input.polydata_blocks(catchment))
 
 
 def first_gauge_of_stations(station_ids):

@@ -584,7 +584,7 @@ TEST(Clip, AreasFromCrossingsMatchExactRationalClipping)
     partial += expectExact(RandomConvex(random, x, x + side, y, y + side, 8, 1.0 / 16), i);
   }
   EXPECT_GT(partial, 36);
-  EXPECT_GT(work.AreasByCrossings, 60u); // the crossings measured most of them
+  EXPECT_GT(work.AreasByCrossings, 60u); // the crossings measured over half of them
 
   // Tiles inside the hole holding the island whole: its area, from its ring's sums.
   const std::size_t before = work.AreasByCrossings;
@@ -611,6 +611,20 @@ TEST(Clip, AreasFromCrossingsMatchExactRationalClipping)
     expectExact({ p, q, apex }, i);
   }
   EXPECT_EQ(work.AreasByCrossings, crossed);
+  // (The same triangles moved off the vertices, by a 1/3 that no dyadic coordinate has, are
+  // measured by the crossings: the clipping took the ones above for their vertices, not their
+  // size.)
+  for (int i = 0; i < 20; ++i)
+  {
+    const Point2 p = rings.Vertices[static_cast<std::size_t>(37 * i)];
+    const Point2 q = rings.Vertices[static_cast<std::size_t>(37 * i + 150)];
+    const Point2 apex{ 0.5 * (p.x + q.x) - 0.5 * (q.y - p.y),
+      0.5 * (p.y + q.y) + 0.5 * (q.x - p.x) };
+    const double off = 1.0 / 3.0;
+    expectExact(
+      { { p.x + off, p.y + off }, { q.x + off, q.y + off }, { apex.x + off, apex.y + off } }, i);
+  }
+  EXPECT_GT(work.AreasByCrossings, crossed + 15);
 }
 
 // A polygon's edges cut into n equal parts each (dyadic for the shapes below).
@@ -671,6 +685,8 @@ TEST(Clip, AreasFromCrossingsMatchExactWhereRingsMeet)
     const double x = corner(random), y = corner(random), side = size(random);
     check.Expect(RandomConvex(random, x, x + side, y, y + side, 6, i % 2 ? 1.0 / 4 : 1.0 / 1024));
   }
+  EXPECT_GT(check.work.AreasByCrossings, 30u);
+  const std::size_t byRandomTiles = check.work.AreasByCrossings;
   for (int i = 0; i < 20; ++i)
   {
     const double t = 1.0 + i * 0.37;
@@ -678,13 +694,14 @@ TEST(Clip, AreasFromCrossingsMatchExactWhereRingsMeet)
     check.Expect({ { 90 - t, 40 }, { 100 + t, 41 }, { 96.125, 80 } });
     check.Expect({ { 10 - t, -5 }, { 50 + t, -4 }, { 30.0625, 20 + t } });
   }
-  EXPECT_GT(check.work.AreasByCrossings, 90u);
+  EXPECT_GT(check.work.AreasByCrossings, byRandomTiles + 40); // (of 60 across shared boundaries)
 }
 
 // Up to 64 rings (an outer ring and holes) the crossings measure areas alone, with rings inside a
 // tile added whole; beyond, and for tiles whose sums would be too coarse for their size
-// (coordinates near 2^30 against tiles some 30 wide), the clipping measures them. Either way they
-// match the exact areas, at offsets of 0, 10^7 and 2^30.
+// (coordinates near 2^30 against tiles 40 to 90 wide, where only those above some 64 wide take
+// the crossings), the clipping measures them. Either way they match the exact areas, at offsets
+// of 0, 10^7 and 2^30.
 TEST(Clip, AreasFromCrossingsMatchExactWithManyRingsAndAtOffsets)
 {
   for (const int holes : { 63, 64 })
@@ -1105,6 +1122,32 @@ void TilingOf(const tessera::Box2& box,
   tessera_test::JitteredTriangleTiling(x0, y0, dx, dy, cells, random, offsets, vertices);
 }
 
+// Areas alone of a tiling whose tiles span many grid cells come from the catchment's crossings
+// with their boundaries, not from clipping (AreaByCrossings): a computation of their own, which
+// must agree with the clipped rings' areas tile by tile, and sum to the catchment's area.
+void ExpectAreasAloneAgree(const Catchment& catchment, const mpq_class& exactArea)
+{
+  std::mt19937 random(5);
+  std::vector<std::size_t> offsets;
+  std::vector<Point2> vertices;
+  TilingOf(catchment.Bounds(), 6, random, offsets, vertices);
+  const tessera::ClippedTiles clipped = catchment.ClipAll(offsets, vertices);
+  Catchment::Workspace work;
+  double areasAloneSum = 0.0;
+  for (std::size_t t = 0; t + 1 < offsets.size(); ++t)
+  {
+    const std::size_t count = offsets[t + 1] - offsets[t];
+    const double alone = catchment.ClipInto(&vertices[offsets[t]], count, t, work, nullptr);
+    const double tileArea =
+      tessera_test::ShoelaceArea({ vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t]),
+        vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t + 1]) });
+    EXPECT_NEAR(alone, clipped.Areas[t], 1e-13 * tileArea) << "tile " << t;
+    areasAloneSum += alone;
+  }
+  EXPECT_GT(work.AreasByCrossings, 20u); // (of 72 tiles: the others lie clear of the outline)
+  EXPECT_NEAR(areasAloneSum, exactArea.get_d(), 1e-12 * exactArea.get_d());
+}
+
 TEST(Clip, TilingAreasSumToCatchmentArea)
 {
   for (unsigned seed = 30; seed < 34; ++seed)
@@ -1147,21 +1190,15 @@ TEST(Clip, TilingAreasSumToCatchmentArea)
     EXPECT_GT(partial, 100);
     EXPECT_EQ(clipped.CatchmentArea, catchment.Area());
     EXPECT_NEAR(sum, exactArea.get_d(), 1e-12 * exactArea.get_d());
-    // Areas alone come from the catchment's crossings with the tiles' boundaries, not from
-    // clipping (AreaByCrossings): a computation of their own, which must agree.
+    // Areas alone: the same areas (below 64 grid cells in a tile's box, by the same clipping).
     const tessera::ClippedTiles areasOnly = catchment.ClipAll(offsets, vertices, false);
     ASSERT_EQ(areasOnly.Areas.size(), clipped.Areas.size());
-    double areasOnlySum = 0.0;
     for (std::size_t t = 0; t < clipped.Areas.size(); ++t)
     {
-      const std::vector<Point2> tile(vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t]),
-        vertices.begin() + static_cast<std::ptrdiff_t>(offsets[t + 1]));
-      const double tileArea = tessera_test::ShoelaceArea(tile);
-      EXPECT_NEAR(areasOnly.Areas[t], clipped.Areas[t], 1e-13 * tileArea) << "tile " << t;
-      areasOnlySum += areasOnly.Areas[t];
+      EXPECT_NEAR(areasOnly.Areas[t], clipped.Areas[t], 1e-13 * catchment.Area()) << "tile " << t;
     }
-    EXPECT_NEAR(areasOnlySum, exactArea.get_d(), 1e-12 * exactArea.get_d());
     EXPECT_TRUE(areasOnly.Rings.Vertices.empty());
+    ExpectAreasAloneAgree(catchment, exactArea);
   }
 }
 

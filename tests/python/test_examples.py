@@ -4,6 +4,7 @@ data, and a user's bad files end the run with one line naming the file, line and
 traceback."""
 
 import csv
+import datetime
 import json
 import math
 import os
@@ -1292,20 +1293,28 @@ def test_finer_means_add_up_to_totals():
                 assert_that(g[4] == "", f"a month without every day's mean has no total: {g}")
             else:
                 assert_close(float(g[4]), e[4], 1e-12, f"{g[:2]}: the days' values added up")
-        hours = [(2001, 3, 1, h) for h in range(24)] + [(2001, 3, 2, 0), (2001, 3, 2, 5)]
-        values = {hour: 0.5 * k for k, hour in enumerate(hours, 1)}
-        path = write(directory, "hourly.csv", "station_id,date,precip\n" + "".join(
-            f"{s},{y}-{m:02d}-{d:02d} {h:02d}:00,{values[(y, m, d, h)]}\n"
-            for k, (y, m, d, h) in enumerate(hours) for s in gauges[:1 + k % 6]))
-        out = os.path.join(directory, "hourly")
-        run_colorado(out, stations=stations, observations=path, catchment=catchment, plots=False,
-                     what="hourly observations")
-        totals = read_csv(os.path.join(out, "areal_total_by_day.csv"))
-        got = [(r["day"], r["hours"], r["hours_with_mean"], r["areal_total"]) for r in totals]
-        assert_that([g[:3] for g in got] == [("1", "24", "24"), ("2", "24", "2")] and got[1][3] == "",
-                    f"the days: {got}")
-        assert_close(float(got[0][3]), math.fsum(values[h] for h in hours[:24]), 1e-12, "the hours of 2001-03-01")
-        assert_that(not os.path.exists(os.path.join(out, "areal_total_by_month.csv")), "a monthly total of hours")
+        # Hours and steps of minutes end at their labels: a day runs from the step after 00:00 to
+        # the one at 00:00 of the next day (hour-ending records: 01:00 to 24:00).
+        for minutes in (60, 15):
+            length = datetime.timedelta(minutes=minutes)
+            start = datetime.datetime(2001, 3, 1)
+            ends = [start + k * length for k in range(1, 24 * 60 // minutes + 1)]  # (all of 2001-03-01)
+            ends += [start + datetime.timedelta(days=1, minutes=k * minutes) for k in (1, 5)]  # (two of 03-02)
+            values = {end: 0.5 * k for k, end in enumerate(ends, 1)}
+            path = write(directory, "finer.csv", "station_id,date,precip\n" + "".join(
+                f"{s},{end:%Y-%m-%d %H:%M},{values[end]}\n" for k, end in enumerate(ends) for s in gauges[:1 + k % 6]))
+            out = os.path.join(directory, f"every_{minutes}")
+            run_colorado(out, stations=stations, observations=path, catchment=catchment, plots=False,
+                         what=f"steps of {minutes} minutes")
+            totals = read_csv(os.path.join(out, "areal_total_by_day.csv"))
+            noun = "hours" if minutes == 60 else "steps"
+            got = [(r["day"], r[noun], r[f"{noun}_with_mean"], r["areal_total"]) for r in totals]
+            full = str(24 * 60 // minutes)
+            assert_that([g[:3] for g in got] == [("1", full, full), ("2", full, "2")] and got[1][3] == "",
+                        f"{minutes} minutes: the days {got}")
+            assert_close(float(got[0][3]), math.fsum(values[end] for end in ends[:-2]), 1e-12,
+                         f"{minutes} minutes: the steps ending in 2001-03-01 01:00 to 2001-03-02 00:00")
+        assert_that(not os.path.exists(os.path.join(out, "areal_total_by_month.csv")), "a monthly total of steps")
 
 
 def test_hourly_observations_give_hourly_means():
