@@ -58,27 +58,68 @@ const std::vector<const char*> OutlineArrayNames{ "TileId",
   "PolygonId",
   "Hole" };
 
+/// What both outputs' cells of one point set of tiles carry: the tile's cell data (its global ids
+/// too, passed as an ordinary array: a tile in several cells repeats its id), then TileId,
+/// ClippedArea and AreaFraction, the first three of the output's own arrays (`names`). An input
+/// cell-data array of one of those names is passed under another (adding the filter's arrays
+/// would replace it silently).
+class TileCells
+{
+protected:
+  TileCells(vtkPointSet* tiles, vtkPolyData* output, const std::vector<const char*>& names)
+    : Output(output)
+    , CellData(output->GetCellData())
+    , TileCellData(tiles->GetCellData())
+  {
+    this->Points->SetDataTypeToDouble();
+    this->CellData->CopyGlobalIdsOn(); // (CopyAllocate leaves them out by default)
+    this->CellData->CopyAllocate(this->TileCellData);
+    this->Renamed = tessera_vtk::RenameArraysNamed(this->CellData, names, false);
+    this->TileIds->SetName(names[0]);
+    this->ClippedAreas->SetName(names[1]);
+    this->Fractions->SetName(names[2]);
+  }
+
+  /// Tile c's data for the output's last cell.
+  void AddTileData(vtkIdType c, vtkIdType cell, double clippedArea, double fraction)
+  {
+    this->CellData->CopyData(this->TileCellData, c, cell);
+    this->TileIds->InsertNextValue(c);
+    this->ClippedAreas->InsertNextValue(clippedArea);
+    this->Fractions->InsertNextValue(fraction);
+  }
+
+  /// The points, and the tiles' arrays, their global ids no longer active (see CopyGlobalIdsOn).
+  void AttachTileData()
+  {
+    this->Output->SetPoints(this->Points);
+    this->CellData->SetActiveAttribute(-1, vtkDataSetAttributes::GLOBALIDS);
+    this->CellData->AddArray(this->TileIds);
+    this->CellData->AddArray(this->ClippedAreas);
+    this->CellData->AddArray(this->Fractions);
+  }
+
+  vtkPolyData* Output;
+  vtkCellData* CellData;
+  vtkCellData* TileCellData;
+  tessera_vtk::RenamedArrays Renamed;
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkIdTypeArray> TileIds;
+  vtkNew<vtkDoubleArray> ClippedAreas, Fractions;
+};
+
 /// Output 1 of one point set of tiles: each clipped tile's outline (core/piece_outlines.h, its
 /// display pieces joined back into polygons with holes) as closed polylines, a cell per ring (its
 /// first point repeated last), with the tile's cell data, TileId, ClippedArea and AreaFraction (as
 /// output 0's), PolygonId (numbered over the output) and Hole (0: a polygon's outer ring,
 /// anticlockwise, listed first; 1: a hole in it).
-class OutlineCells
+class OutlineCells : TileCells
 {
 public:
   OutlineCells(vtkPointSet* tiles, vtkPolyData* output)
-    : Output(output)
-    , TileCellData(tiles->GetCellData())
+    : TileCells(tiles, output, OutlineArrayNames)
   {
     output->GetFieldData()->PassData(tiles->GetFieldData()); // (a projection's record with it)
-    vtkCellData* cellData = output->GetCellData();
-    cellData->CopyGlobalIdsOn();
-    cellData->CopyAllocate(this->TileCellData);
-    this->Renamed = tessera_vtk::RenameArraysNamed(cellData, OutlineArrayNames, false);
-    this->Points->SetDataTypeToDouble();
-    this->TileIds->SetName(OutlineArrayNames[0]);
-    this->ClippedAreas->SetName(OutlineArrayNames[1]);
-    this->Fractions->SetName(OutlineArrayNames[2]);
     this->PolygonIds->SetName(OutlineArrayNames[3]);
     this->Holes->SetName(OutlineArrayNames[4]);
   }
@@ -102,11 +143,7 @@ public:
           exponent,
           this->Points,
           this->Lines);
-        this->Output->GetCellData()->CopyData(
-          this->TileCellData, c, this->Lines->GetNumberOfCells() - 1);
-        this->TileIds->InsertNextValue(c);
-        this->ClippedAreas->InsertNextValue(clippedArea);
-        this->Fractions->InsertNextValue(fraction);
+        this->AddTileData(c, this->Lines->GetNumberOfCells() - 1, clippedArea, fraction);
         this->PolygonIds->InsertNextValue(this->NextPolygon);
         this->Holes->InsertNextValue(r == outlines.PolygonOffsets[p] ? 0 : 1);
       }
@@ -117,18 +154,13 @@ public:
   /// Puts the rings into the output; returns the warning for input arrays renamed, if any.
   std::string Finish()
   {
-    this->Output->SetPoints(this->Points);
+    this->AttachTileData();
     this->Output->SetLines(this->Lines);
-    vtkCellData* cellData = this->Output->GetCellData();
-    cellData->SetActiveAttribute(-1, vtkDataSetAttributes::GLOBALIDS); // (see CopyGlobalIdsOn)
     // No active scalars (the tiles' are those of the whole tile, such as its Area): ParaView
     // draws the rings in one colour over the clipped tiles.
-    cellData->SetActiveAttribute(-1, vtkDataSetAttributes::SCALARS);
-    cellData->AddArray(this->TileIds);
-    cellData->AddArray(this->ClippedAreas);
-    cellData->AddArray(this->Fractions);
-    cellData->AddArray(this->PolygonIds);
-    cellData->AddArray(this->Holes);
+    this->CellData->SetActiveAttribute(-1, vtkDataSetAttributes::SCALARS);
+    this->CellData->AddArray(this->PolygonIds);
+    this->CellData->AddArray(this->Holes);
     // (output 0's names are renamed as there, whose warning says so: only PolygonId and Hole here)
     tessera_vtk::RenamedArrays more;
     for (const auto& renamed : this->Renamed)
@@ -146,13 +178,8 @@ public:
   }
 
 private:
-  vtkPolyData* Output;
-  vtkCellData* TileCellData;
-  tessera_vtk::RenamedArrays Renamed;
-  vtkNew<vtkPoints> Points;
   vtkNew<vtkCellArray> Lines;
-  vtkNew<vtkIdTypeArray> TileIds, PolygonIds;
-  vtkNew<vtkDoubleArray> ClippedAreas, Fractions;
+  vtkNew<vtkIdTypeArray> PolygonIds;
   vtkNew<vtkUnsignedCharArray> Holes;
   vtkIdType NextPolygon = 0;
 };
@@ -471,24 +498,12 @@ void AppendTileDataWarnings(vtkPointSet* tiles, std::vector<std::string>& warnin
 
 /// Output 0 of one point set of tiles: each clipped tile's display pieces as polygons, with the
 /// tile's cell data, TileId, ClippedArea, AreaFraction (the active scalars) and PieceArea.
-class PieceCells
+class PieceCells : TileCells
 {
 public:
   PieceCells(vtkPointSet* tiles, vtkPolyData* output)
-    : Output(output)
-    , CellData(output->GetCellData())
-    , TileCellData(tiles->GetCellData())
+    : TileCells(tiles, output, OwnArrayNames)
   {
-    this->Points->SetDataTypeToDouble();
-    // The tiles' global ids are passed too (CopyAllocate leaves them out by default), but as an
-    // ordinary array once the pieces are made: a tile in several pieces repeats its id.
-    this->CellData->CopyGlobalIdsOn();
-    this->CellData->CopyAllocate(this->TileCellData);
-    // Adding the filter's arrays would replace the input's of the same names silently.
-    this->Renamed = tessera_vtk::RenameArraysNamed(this->CellData, OwnArrayNames, false);
-    this->TileIds->SetName(OwnArrayNames[0]);
-    this->ClippedAreas->SetName(OwnArrayNames[1]);
-    this->Fractions->SetName(OwnArrayNames[2]);
     this->PieceAreas->SetName(OwnArrayNames[3]);
   }
 
@@ -504,10 +519,7 @@ public:
     {
       const std::size_t begin = pieces.RingOffsets[r], end = pieces.RingOffsets[r + 1];
       this->InsertPolygon(&pieces.Vertices[begin], end - begin, exponent);
-      this->CellData->CopyData(this->TileCellData, c, this->Polys->GetNumberOfCells() - 1);
-      this->TileIds->InsertNextValue(c);
-      this->ClippedAreas->InsertNextValue(clippedArea);
-      this->Fractions->InsertNextValue(fraction);
+      this->AddTileData(c, this->Polys->GetNumberOfCells() - 1, clippedArea, fraction);
       this->PieceAreas->InsertNextValue(std::ldexp(
         tessera::CompensatedPolygonArea(&pieces.Vertices[begin], end - begin), -2 * exponent));
     }
@@ -516,13 +528,8 @@ public:
   /// Puts the pieces into the output; returns the warning for input arrays renamed, if any.
   std::string Finish()
   {
-    this->Output->SetPoints(this->Points);
+    this->AttachTileData();
     this->Output->SetPolys(this->Polys);
-    this->CellData->SetActiveAttribute(
-      -1, vtkDataSetAttributes::GLOBALIDS); // (see CopyGlobalIdsOn)
-    this->CellData->AddArray(this->TileIds);
-    this->CellData->AddArray(this->ClippedAreas);
-    this->CellData->AddArray(this->Fractions);
     this->CellData->AddArray(this->PieceAreas);
     // Coloured by the share of each tile inside the window (not by an input's active scalars,
     // such as the tessellation's Area of the whole, unclipped tile).
@@ -545,14 +552,8 @@ private:
     }
   }
 
-  vtkPolyData* Output;
-  vtkCellData* CellData;
-  vtkCellData* TileCellData;
-  tessera_vtk::RenamedArrays Renamed;
-  vtkNew<vtkPoints> Points;
   vtkNew<vtkCellArray> Polys;
-  vtkNew<vtkIdTypeArray> TileIds;
-  vtkNew<vtkDoubleArray> ClippedAreas, Fractions, PieceAreas;
+  vtkNew<vtkDoubleArray> PieceAreas;
 };
 
 /// How a cell of the tiles is clipped (CellRingIds).
