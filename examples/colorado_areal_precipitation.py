@@ -1657,9 +1657,7 @@ def line_count(path):
     last = b""
     try:
         with open(path, "rb") as handle:
-            head = handle.read(10)
-            bzip2 = head.startswith(b"BZh") and head[3:4].isdigit() and head[4:10] == b"1AY&SY"
-            if bzip2 or head.startswith((b"\x1f\x8b", b"\xfd7zXZ\x00")):
+            if csv_input.compression(handle.read(10)):
                 return 0
             handle.seek(0)
             for chunk in iter(lambda: handle.read(1 << 24), b""):

@@ -51,15 +51,12 @@ def decoded(path, what, head=False):
         fail(f"{path}: the {what} file is a zip archive, not CSV text (an Excel .xlsx or an OpenDocument "
              "sheet is one: save the sheet as CSV; a zipped CSV: unzip it)")
     # A compressed file (a large record is often kept so) is read decompressed.
-    bzip2 = data.startswith(b"BZh") and data[3:4].isdigit() and data[4:10] == b"1AY&SY"
-    for kind, compressed, module in (("gzip", data.startswith(b"\x1f\x8b"), "gzip"), ("bzip2", bzip2, "bz2"),
-                                     ("xz", data.startswith(b"\xfd7zXZ\x00"), "lzma")):
-        if compressed:
-            try:
-                data = __import__(module).decompress(data)
-            except (OSError, EOFError, ValueError) as error:
-                fail(f"{path}: the {what} file is {kind}-compressed but cannot be decompressed ({error})")
-            break
+    kind = compression(data)
+    if kind:
+        try:
+            data = __import__(COMPRESSION_MODULES[kind]).decompress(data)
+        except (OSError, EOFError, ValueError) as error:
+            fail(f"{path}: the {what} file is {kind}-compressed but cannot be decompressed ({error})")
     if data.startswith((codecs.BOM_UTF16_LE, codecs.BOM_UTF16_BE)):
         try:
             return data.decode("utf-16")
@@ -74,14 +71,24 @@ def decoded(path, what, head=False):
 
 
 HEAD_BYTES = 65536  # (decoded's head)
+COMPRESSION_MODULES = {"gzip": "gzip", "bzip2": "bz2", "xz": "lzma"}
+
+
+def compression(data):
+    """The compression of a file whose first bytes (10 or more) are data, by its magic number:
+    "gzip", "bzip2" (its whole magic: a plain file may start with "BZh") or "xz"; None for others."""
+    if data.startswith(b"\x1f\x8b"):
+        return "gzip"
+    if data.startswith(b"BZh") and data[3:4].isdigit() and data[4:10] == b"1AY&SY":
+        return "bzip2"
+    return "xz" if data.startswith(b"\xfd7zXZ\x00") else None
 
 
 def has_plain_header(data):
     """Whether the first half of data (a file's first HEAD_BYTES) holds a whole line of text, not
     compressed: else decoded's head reads the whole file (a compressed file is decompressed whole;
     a header line may run to hundreds of kB in a wide file of thousands of stations)."""
-    compressed = data.startswith((b"\x1f\x8b", b"BZh", b"\xfd7zXZ\x00"))
-    return not compressed and re.search(rb"\S[^\n]*\n", data[:HEAD_BYTES // 2]) is not None
+    return compression(data) is None and re.search(rb"\S[^\n]*\n", data[:HEAD_BYTES // 2]) is not None
 
 
 def rows(path, required, what, optional=(), header=None, delimiter_columns=None, numbers=None):
