@@ -1912,11 +1912,11 @@ def steps_in_period(period, steps):
     return 24 * 60 // steps.minutes
 
 
-def period_of_step(step, steps, fields):
+def period_of_step(step, steps):
     """The month of a day; the day of an hour or a step of minutes, which ends at its label (the
     hour labelled 00:00 closes the day before, as hour-ending records and --sum-to's totals run)."""
     if steps.fields == 3:
-        return tuple(step[:fields])
+        return tuple(step[:2])
     start = datetime.datetime(*step) - steps.length()
     return (start.year, start.month, start.day)
 
@@ -1929,14 +1929,15 @@ def write_totals(rows, steps, path):
     _, fields, noun = TOTALS[steps.unit]
     periods = {}
     for row in rows:
-        periods.setdefault(period_of_step(row[:steps.fields], steps, fields), []).append(row[-1])
+        periods.setdefault(period_of_step(row[:steps.fields], steps), []).append(row[-1])
     with open(path, "w", newline="") as f:
         out = csv.writer(f)
         out.writerow([*steps.columns[:fields], noun, f"{noun}_with_mean", "areal_total"])
         for period, means in periods.items():
             known = [m for m in means if not math.isnan(m)]
-            total = math.fsum(known) if len(known) == steps_in_period(period, steps) else math.nan
-            out.writerow([*period, steps_in_period(period, steps), len(known), mean_text(total)])
+            expected = steps_in_period(period, steps)
+            total = math.fsum(known) if len(known) == expected else math.nan
+            out.writerow([*period, expected, len(known), mean_text(total)])
 
 
 # The filter's lists of valid input it did not use (output 1's field data), as unused_inputs.csv
