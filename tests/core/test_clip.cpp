@@ -551,6 +551,31 @@ TEST(Clip, TilesOnDetailedOutlinesMatchExactRationalClipping)
   EXPECT_GT(partial, 6);
 }
 
+/// Counts the tiles whose areas alone the crossings measured, each checked against the exact.
+struct CrossingsCheck
+{
+  explicit CrossingsCheck(const Rings& checked)
+    : rings(checked)
+  {
+  }
+  const Rings& rings;
+  const Catchment catchment{ rings.Offsets, rings.Vertices };
+  Catchment::Workspace work;
+  int tiles = 0;
+  /// Whether the tile lies partly in the catchment, once its area is checked.
+  bool Expect(const std::vector<Point2>& tile)
+  {
+    const mpq_class exact = ExactClippedArea(rings, tile);
+    const double tileArea = tessera_test::ShoelaceArea(tile);
+    EXPECT_NEAR(catchment.ClipInto(tile.data(), tile.size(), 0, work, nullptr),
+      exact.get_d(),
+      Tolerance(exact, tileArea))
+      << "tile " << tiles;
+    ++tiles;
+    return exact > 0 && exact.get_d() < tileArea;
+  }
+};
+
 // Areas alone (no rings asked for) come from where the catchment's boundary crosses the tile's,
 // with prefix sums along the rings (AreaByCrossings), where the tile's box spans enough grid
 // cells; where a catchment vertex lies on a tile's boundary, or a segment passes through a tile
@@ -566,22 +591,15 @@ TEST(Clip, AreasFromCrossingsMatchExactRationalClipping)
   rings.Add(Star(random, c, 750, 20.0, 40.0, 1.0 / 64));
   const std::vector<Point2> island = Star(random, c, 40, 3.0, 8.0, 1.0 / 64);
   rings.Add(island);
-  const Catchment catchment(rings.Offsets, rings.Vertices);
-  Catchment::Workspace work;
-  const auto expectExact = [&](const std::vector<Point2>& tile, int i)
-  {
-    const mpq_class exact = ExactClippedArea(rings, tile);
-    const double tileArea = tessera_test::ShoelaceArea(tile);
-    const double area = catchment.ClipInto(tile.data(), tile.size(), 0, work, nullptr);
-    EXPECT_NEAR(area, exact.get_d(), Tolerance(exact, tileArea)) << "tile " << i;
-    return exact > 0 && exact.get_d() < tileArea;
-  };
+  CrossingsCheck check(rings);
+  const Catchment& catchment = check.catchment;
+  Catchment::Workspace& work = check.work;
   std::uniform_real_distribution<double> corner(-120.0, 60.0), size(5.0, 80.0);
   int partial = 0;
   for (int i = 0; i < 120; ++i)
   {
     const double x = corner(random), y = corner(random), side = size(random);
-    partial += expectExact(RandomConvex(random, x, x + side, y, y + side, 8, 1.0 / 16), i);
+    partial += check.Expect(RandomConvex(random, x, x + side, y, y + side, 8, 1.0 / 16));
   }
   EXPECT_GT(partial, 36);
   EXPECT_GT(work.AreasByCrossings, 60u); // the crossings measured over half of them
@@ -596,33 +614,33 @@ TEST(Clip, AreasFromCrossingsMatchExactRationalClipping)
     };
     EXPECT_DOUBLE_EQ(
       catchment.ClipInto(square.data(), 4, 0, work, nullptr), tessera_test::ShoelaceArea(island));
-    expectExact(square, i);
+    check.Expect(square);
   }
   EXPECT_EQ(work.AreasByCrossings, before + 20);
 
-  // Triangles whose first edge runs between two vertices of the outer ring: the clipping's.
+  // Triangles whose first edge runs between two vertices of the outer ring (moved by off).
+  const auto triangle = [&](int i, double off)
+  {
+    const Point2 p = rings.Vertices[static_cast<std::size_t>(37 * i)];
+    const Point2 q = rings.Vertices[static_cast<std::size_t>(37 * i + 150)];
+    const Point2 apex{ 0.5 * (p.x + q.x) - 0.5 * (q.y - p.y),
+      0.5 * (p.y + q.y) + 0.5 * (q.x - p.x) };
+    return std::vector<Point2>{
+      { p.x + off, p.y + off }, { q.x + off, q.y + off }, { apex.x + off, apex.y + off }
+    };
+  };
+  // Through the vertices: the clipping's.
   const std::size_t crossed = work.AreasByCrossings;
   for (int i = 0; i < 20; ++i)
   {
-    const Point2 p = rings.Vertices[static_cast<std::size_t>(37 * i)];
-    const Point2 q = rings.Vertices[static_cast<std::size_t>(37 * i + 150)];
-    const Point2 apex{ 0.5 * (p.x + q.x) - 0.5 * (q.y - p.y),
-      0.5 * (p.y + q.y) + 0.5 * (q.x - p.x) };
-    expectExact({ p, q, apex }, i);
+    check.Expect(triangle(i, 0.0));
   }
   EXPECT_EQ(work.AreasByCrossings, crossed);
-  // (The same triangles moved off the vertices, by a 1/3 that no dyadic coordinate has, are
-  // measured by the crossings: the clipping took the ones above for their vertices, not their
-  // size.)
+  // Moved off the vertices, by a 1/3 that no dyadic coordinate has: measured by the crossings (the
+  // clipping took the ones above for their vertices, not their size).
   for (int i = 0; i < 20; ++i)
   {
-    const Point2 p = rings.Vertices[static_cast<std::size_t>(37 * i)];
-    const Point2 q = rings.Vertices[static_cast<std::size_t>(37 * i + 150)];
-    const Point2 apex{ 0.5 * (p.x + q.x) - 0.5 * (q.y - p.y),
-      0.5 * (p.y + q.y) + 0.5 * (q.x - p.x) };
-    const double off = 1.0 / 3.0;
-    expectExact(
-      { { p.x + off, p.y + off }, { q.x + off, q.y + off }, { apex.x + off, apex.y + off } }, i);
+    check.Expect(triangle(i, 1.0 / 3.0));
   }
   EXPECT_GT(work.AreasByCrossings, crossed + 15);
 }
@@ -641,29 +659,6 @@ std::vector<Point2> Subdivided(const std::vector<Point2>& polygon, int n)
   }
   return out;
 }
-
-/// Counts the tiles whose areas alone the crossings measured, each checked against the exact.
-struct CrossingsCheck
-{
-  explicit CrossingsCheck(const Rings& checked)
-    : rings(checked)
-  {
-  }
-  const Rings& rings;
-  const Catchment catchment{ rings.Offsets, rings.Vertices };
-  Catchment::Workspace work;
-  int tiles = 0;
-  void Expect(const std::vector<Point2>& tile)
-  {
-    const mpq_class exact = ExactClippedArea(rings, tile);
-    const double tileArea = tessera_test::ShoelaceArea(tile);
-    EXPECT_NEAR(catchment.ClipInto(tile.data(), tile.size(), 0, work, nullptr),
-      exact.get_d(),
-      Tolerance(exact, tileArea))
-      << "tile " << tiles;
-    ++tiles;
-  }
-};
 
 // Where rings meet, two rings' segments cross a tile's edge at one point, in opposite directions:
 // two parts sharing a side, a lake on the outline, a hole touching the outer ring at a vertex, a
