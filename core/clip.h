@@ -35,7 +35,7 @@
 // tile's box spans 64 grid cells or more: from where the catchment's boundary crosses the tile's,
 // the pieces between crossings summed from prefix sums along the rings (crossing_area.cpp). That
 // costs the segments near the tile's boundary, not those inside it; a tile on a detailed outline
-// (3e5 vertices) a step cost an eighteenth as much. Its error has the clipping's source and
+// (3e5 vertices) a step cost a seventeenth as much. Its error has the clipping's source and
 // size: crossing points rounded by ulps of the tile's size, so some 1e-16 of a fat tile's area
 // and eps * length^2 for a sliver (1e-7 of a tile 1e-9 as thick as long, on both ways). It hands
 // the tile to the clipping wherever exactness needs it: a catchment vertex on the tile's
