@@ -45,6 +45,21 @@ double InsideParameter(const Point2& a, const Point2& b, const Point2& v)
   return along / length;
 }
 
+// ShareBorderVertices works on coordinates scaled below 1 in magnitude, where an ulp is at most
+// 2^-53: no edge's Tolerance there exceeds this.
+constexpr double LargestScaledTolerance = ToleranceUlps * 0x1p-53;
+
+// Whether v lies in the box of a -> b widened by LargestScaledTolerance (scaled coordinates). A
+// vertex outside it is inside no edge (InsideParameter), and this test costs four comparisons
+// where that one costs a hypot and a nextafter: a cell along a detailed catchment outline lists a
+// hundred of its edges (3 10^5 vertices), and every vertex in the cell was tried on every one.
+bool InEdgeBox(const Point2& a, const Point2& b, const Point2& v)
+{
+  const double m = LargestScaledTolerance;
+  return v.x >= std::min(a.x, b.x) - m && v.x <= std::max(a.x, b.x) + m &&
+    v.y >= std::min(a.y, b.y) - m && v.y <= std::max(a.y, b.y) + m;
+}
+
 // A grid over the vertices' box whose cells list the edges that pass through them (widened by
 // their tolerance): about one vertex a cell, and an edge listed only in the cells along it, so that
 // long slanted edges (the tiles of a transect's gauges) cost their length in cells, not their box.
@@ -60,7 +75,8 @@ public:
     }
     this->ChooseCells(v.size());
     this->Starts.assign(std::size_t(this->Columns) * this->Rows + 1, 0);
-    // Two passes: count each cell's edges, then fill them in (a flat array, cell by cell).
+    // Two passes: count each cell's edges, then fill them in (a flat array, cell by cell, each
+    // cell's edges ascending).
     std::vector<std::size_t> fill;
     for (int pass = 0; pass < 2; ++pass)
     {
@@ -92,14 +108,12 @@ public:
     }
   }
 
-  // The edges listed in the cell of p.
-  const std::size_t* begin(const Point2& p) const
+  // The edges listed in the cell of p: [first, last), ascending. (Found once per vertex: a loop
+  // to end(p) had found the cell again at every edge it tried.)
+  std::pair<const std::size_t*, const std::size_t*> EdgesAt(const Point2& p) const
   {
-    return this->Edges.data() + this->Starts[this->Cell(p)];
-  }
-  const std::size_t* end(const Point2& p) const
-  {
-    return this->Edges.data() + this->Starts[this->Cell(p) + 1];
+    const std::size_t cell = this->Cell(p);
+    return { this->Edges.data() + this->Starts[cell], this->Edges.data() + this->Starts[cell + 1] };
   }
 
 private:
@@ -116,12 +130,14 @@ private:
     this->Rows = static_cast<int>(std::clamp(std::round(cells / columns), 1.0, cells));
   }
 
-  // Calls f(cell) for each cell that a -> b, widened by twice its tolerance, meets: column by
-  // column, the rows of the edge's stretch over that column.
+  // Calls f(cell) for each cell that a -> b, widened by twice the largest tolerance, meets:
+  // column by column, the rows of the edge's stretch over that column. (The largest, not the
+  // edge's own: it saves a nextafter per edge, and the own tolerance of an edge near 0 is finer
+  // than the rounding of the cells' sides, computed from the box's corners.)
   template<typename F>
   void ForEachCellAlong(const Point2& a, const Point2& b, F&& f) const
   {
-    const double margin = 2.0 * Tolerance(a, b);
+    const double margin = 2.0 * LargestScaledTolerance;
     const double left = std::min(a.x, b.x), right = std::max(a.x, b.x);
     const int x0 = Index(left - margin, this->Low.x, this->High.x, this->Columns);
     const int x1 = Index(right + margin, this->Low.x, this->High.x, this->Columns);
@@ -446,13 +462,16 @@ std::vector<RingInsertion> VerticesInsideEdges(const ScaledPieces& s,
   std::vector<RingInsertion> insertions;
   for (std::size_t k = 0; k < v.size(); ++k)
   {
-    for (const std::size_t* e = grid.begin(v[k]); e != grid.end(v[k]); ++e)
+    const auto [first, last] = grid.EdgesAt(v[k]);
+    for (const std::size_t* e = first; e != last; ++e)
     {
-      if (s.RingOf[*e] == s.RingOf[k])
+      const Point2& a = v[*e];
+      const Point2& b = v[s.Next[*e]];
+      if (s.RingOf[*e] == s.RingOf[k] || !InEdgeBox(a, b, v[k]))
       {
         continue; // (a piece's own vertex is never inside its own edge: its ring is simple)
       }
-      const double t = InsideParameter(v[*e], v[s.Next[*e]], v[k]);
+      const double t = InsideParameter(a, b, v[k]);
       if (t > 0.0)
       {
         insertions.push_back({ *e, t, own[k] });
