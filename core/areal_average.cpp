@@ -479,10 +479,12 @@ struct ThiessenArealAverage::State
   // CurrentClippedTiles' parts: read only, with the caller's own scratch.
 
   /// The used gauges' tiles clipped by the catchment, as display pieces in the plane, in out's
-  /// order (their gauges, areas and TilePieceOffsets appended to out).
-  ClippedRings PlanePiecesOfUsedTiles(ClipScratch& scratch, ClippedTilesLonLat& out) const
+  /// order (their gauges, areas and TilePieceOffsets appended to out). The tiles are clipped and
+  /// cut on the cores, each in a thread's scratch (scratch: one per chunk), and joined in gauge
+  /// order: the same pieces on any number of threads.
+  ClippedRings PlanePiecesOfUsedTiles(std::vector<ClipScratch>& scratch,
+    ClippedTilesLonLat& out) const
   {
-    ClippedRings plane; // the pieces in the plane, in out's order
     // The gauges in the tessellation, ascending, with their tiles (derived again here: the steps
     // keep only the clipped areas).
     const TileSet tiles = TessellationDual(*this->Tessellation).Tiles();
@@ -491,54 +493,80 @@ struct ThiessenArealAverage::State
     {
       tileOf[this->GaugeOfEngine[tiles.PointIds[k]]] = static_cast<std::int32_t>(k);
     }
-    for (std::size_t gauge = 0; gauge < tileOf.size(); ++gauge)
+    std::vector<std::int32_t> used; // (a gauge in the tessellation but not used: its removal is
+    for (std::size_t gauge = 0; gauge < tileOf.size(); ++gauge) // deferred)
     {
-      if (tileOf[gauge] < 0 || !this->Wanted[gauge])
+      if (tileOf[gauge] >= 0 && this->Wanted[gauge])
       {
-        continue; // (a gauge in the tessellation but not used: its removal is deferred)
+        used.push_back(static_cast<std::int32_t>(gauge));
       }
-      const std::size_t k = static_cast<std::size_t>(tileOf[gauge]);
-      const std::size_t count = static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]);
-      this->AppendPlanePieces(static_cast<std::int32_t>(gauge),
-        &tiles.Vertices[tiles.Offsets[k]],
-        count,
-        scratch,
-        plane,
-        out);
+    }
+    std::vector<TilePieces> parts(used.size());
+    parallel::RunClaimed(used.size(),
+      std::min(scratch.size(), parallel::ThreadCount(std::int64_t(used.size()), 16)),
+      [&](std::size_t i, std::size_t chunk)
+      {
+        const std::size_t k = static_cast<std::size_t>(tileOf[used[i]]);
+        parts[i] = this->PlanePiecesOf(&tiles.Vertices[tiles.Offsets[k]],
+          static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]),
+          static_cast<std::size_t>(used[i]),
+          scratch[chunk]);
+      });
+    ClippedRings plane; // the pieces in the plane, in out's order
+    for (std::size_t i = 0; i < used.size(); ++i)
+    {
+      AppendTilePieces(used[i], parts[i], plane, out);
     }
     return plane;
   }
 
-  /// Gauge g's tile clipped, its display pieces appended to plane, their areas and g to out;
-  /// nothing when the clip is empty or has no area.
-  void AppendPlanePieces(std::int32_t g,
-    const Point2* tile,
-    std::size_t count,
-    ClipScratch& scratch,
-    ClippedRings& plane,
-    ClippedTilesLonLat& out) const
+  /// A clipped tile's display pieces in the plane and their areas.
+  struct TilePieces
   {
+    ClippedRings Pieces;
+    std::vector<double> Areas;
+  };
+
+  /// Gauge g's tile clipped and cut into display pieces (none when the clip is empty or has no
+  /// area), each measured.
+  TilePieces PlanePiecesOf(const Point2* tile,
+    std::size_t count,
+    std::size_t g,
+    ClipScratch& scratch) const
+  {
+    TilePieces made;
     ClippedRings rings;
-    if (this->Region->ClipInto(tile,
-          count,
-          static_cast<std::size_t>(g),
-          scratch.Work,
-          &rings,
-          Catchment::FoldedTile::IsEmpty) <= 0.0)
+    if (this->Region->ClipInto(
+          tile, count, g, scratch.Work, &rings, Catchment::FoldedTile::IsEmpty) <= 0.0)
     {
-      return;
+      return made;
     }
-    const ClippedRings pieces = DisplayPieces(rings);
-    if (pieces.RingOffsets.size() < 2)
+    made.Pieces = DisplayPieces(rings);
+    for (std::size_t r = 0; r + 1 < made.Pieces.RingOffsets.size(); ++r)
     {
-      return; // (only rings of no area)
+      const std::size_t begin = made.Pieces.RingOffsets[r];
+      made.Areas.push_back(this->PieceArea(
+        &made.Pieces.Vertices[begin], made.Pieces.RingOffsets[r + 1] - begin, scratch));
+    }
+    return made;
+  }
+
+  /// Appends gauge g's pieces to plane, their areas and g to out; nothing when it has none.
+  static void AppendTilePieces(std::int32_t g,
+    const TilePieces& tile,
+    ClippedRings& plane,
+    ClippedTilesLonLat& out)
+  {
+    if (tile.Areas.empty())
+    {
+      return; // (an empty clip, or only rings of no area)
     }
     out.Gauges.push_back(g);
-    for (std::size_t r = 0; r + 1 < pieces.RingOffsets.size(); ++r)
+    for (std::size_t r = 0; r < tile.Areas.size(); ++r)
     {
-      const Point2* piece = &pieces.Vertices[pieces.RingOffsets[r]];
-      const std::size_t size = pieces.RingOffsets[r + 1] - pieces.RingOffsets[r];
-      out.PieceAreasM2.push_back(this->PieceArea(piece, size, scratch));
+      const Point2* piece = &tile.Pieces.Vertices[tile.Pieces.RingOffsets[r]];
+      const std::size_t size = tile.Pieces.RingOffsets[r + 1] - tile.Pieces.RingOffsets[r];
+      out.PieceAreasM2.push_back(tile.Areas[r]);
       plane.Vertices.insert(plane.Vertices.end(), piece, piece + size);
       plane.RingOffsets.push_back(plane.Vertices.size());
     }
@@ -547,25 +575,34 @@ struct ThiessenArealAverage::State
 
   /// The pieces in the plane (shared: their borders' vertices shared) in lon/lat, their edges
   /// densified every maxStepMetres in the plane; fans gets, per piece, whether it is a fan about
-  /// its first vertex in lon/lat.
+  /// its first vertex in lon/lat. On the cores, a piece at a time (scratch: one per chunk).
   ClippedRings PiecesInLonLat(const ClippedRings& shared,
     double maxStepMetres,
-    ClipScratch& scratch,
+    std::vector<ClipScratch>& scratch,
     std::vector<char>& fans) const
   {
+    const std::size_t count = shared.RingOffsets.size() - 1;
+    std::vector<std::vector<Point2>> pieces(count);
+    fans.assign(count, 0);
+    parallel::RunClaimed(count,
+      std::min(scratch.size(), parallel::ThreadCount(std::int64_t(count), 64)),
+      [&](std::size_t r, std::size_t chunk)
+      {
+        ClipScratch& own = scratch[chunk];
+        const std::size_t begin = shared.RingOffsets[r];
+        DensifyRingSymmetrically(
+          &shared.Vertices[begin], shared.RingOffsets[r + 1] - begin, maxStepMetres, own.Dense);
+        this->Unproject(own.Dense, pieces[r]);
+        SnapToMeridian(pieces[r]);       // (a border along it stays on it, not an ulp either side)
+        DropRepeatedVertices(pieces[r]); // points an ulp apart in the plane can come back as one
+        // The plane's fan (display_pieces.h) about its first vertex, bent: a side bowing inwards
+        // in lon/lat left slivers drawn twice (0.5% of a Colorado tile's area).
+        fans[r] = StartAtFanApex(pieces[r]);
+      });
     ClippedRings lonLat; // the pieces in lon/lat, as cut in the plane
-    for (std::size_t r = 0; r + 1 < shared.RingOffsets.size(); ++r)
+    for (const std::vector<Point2>& piece : pieces)
     {
-      const std::size_t begin = shared.RingOffsets[r];
-      DensifyRingSymmetrically(
-        &shared.Vertices[begin], shared.RingOffsets[r + 1] - begin, maxStepMetres, scratch.Dense);
-      this->Unproject(scratch.Dense, scratch.LonLat);
-      SnapToMeridian(scratch.LonLat); // (a border along it stays on it, not an ulp either side)
-      DropRepeatedVertices(scratch.LonLat); // points an ulp apart in the plane can come back as one
-      // The plane's fan (display_pieces.h) about its first vertex, bent: a side bowing inwards in
-      // lon/lat left slivers drawn twice (0.5% of a Colorado tile's area).
-      fans.push_back(StartAtFanApex(scratch.LonLat));
-      lonLat.Vertices.insert(lonLat.Vertices.end(), scratch.LonLat.begin(), scratch.LonLat.end());
+      lonLat.Vertices.insert(lonLat.Vertices.end(), piece.begin(), piece.end());
       lonLat.RingOffsets.push_back(lonLat.Vertices.size());
     }
     return lonLat;
@@ -1866,8 +1903,9 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
   CheckStepMetres(maxStepMetres, "CurrentClippedTiles' step");
   // Read only, with scratch of its own: two threads displaying one average at once had shared
   // Scratch[0] (wrong areas, freed blocks freed again), where a const method promised none.
+  // (One scratch per chunk of the passes on the cores.)
   const State& s = *this->Impl;
-  State::ClipScratch scratch;
+  std::vector<State::ClipScratch> scratch(parallel::ThreadLimit());
   ClippedTilesLonLat out;
   const ClippedRings plane = s.PlanePiecesOfUsedTiles(scratch, out);
   // Neighbouring tiles' pieces take each other's vertices on their common borders, and every
@@ -1877,7 +1915,7 @@ ClippedTilesLonLat ThiessenArealAverage::CurrentClippedTiles(double maxStepMetre
   std::vector<char> fans; // per piece: whether it is a fan about its first vertex in lon/lat
   const ClippedRings lonLat = s.PiecesInLonLat(shared, maxStepMetres, scratch, fans);
   AppendOutlinesOfTiles(lonLat, out);
-  s.SetDisplayPieces(lonLat, fans, scratch, out);
+  s.SetDisplayPieces(lonLat, fans, scratch[0], out);
   return out;
 }
 

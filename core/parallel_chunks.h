@@ -6,6 +6,7 @@
 // of 5 ms made eight such starts.
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
@@ -136,6 +137,26 @@ void RunChunks(std::size_t chunks, const Task& task)
       std::rethrow_exception(error);
     }
   }
+}
+
+/// Runs item(i, chunk) for every i in [0, count) in `chunks` chunks (RunChunks), each chunk taking
+/// the next item not yet taken, in turn: a few heavy items then do not hold up one chunk while the
+/// others idle (a tile's display pieces under a detailed outline can cost a thousand times its
+/// neighbour's). An item must write only its own results, since which chunk runs it varies from
+/// run to run (chunk: for the chunk's own scratch). Rethrows an exception an item threw (which
+/// one, when several throw, varies too).
+template<class Item>
+void RunClaimed(std::size_t count, std::size_t chunks, const Item& item)
+{
+  std::atomic<std::size_t> next{ 0 };
+  RunChunks(chunks,
+    [&](std::size_t chunk)
+    {
+      for (std::size_t i = next++; i < count; i = next++)
+      {
+        item(i, chunk);
+      }
+    });
 }
 
 /// Runs first() on the calling thread and second() beside it (on another thread, or after first()

@@ -230,6 +230,56 @@ TEST(ArealAverage, ThreadsDisplayingOneAverageAtOnceGetTheSerialResult)
   }
 }
 
+// CurrentClippedTiles clips and cuts the tiles, and takes their pieces to lon/lat, on the cores,
+// each chunk taking the next tile or piece in turn (so which chunk does which varies from run to
+// run). Under a detailed outline with a lake, the tiles for display are the same bits on 1, 2, 3
+// and 7 chunks.
+TEST(ArealAverage, TilesForDisplayAreTheSameOnAnyNumberOfChunks)
+{
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Point2> ring;
+  const std::size_t outer = 6000, lake = 300;
+  for (std::size_t k = 0; k < outer; ++k)
+  {
+    const double a = 2.0 * M_PI * double(k) / double(outer);
+    const double r =
+      2.0 * (1.0 + 0.1 * std::sin(9 * a) + 0.02 * std::sin(301 * a)) + 0.002 * (unit(random) - 0.5);
+    ring.push_back({ -105.5 + r * std::cos(a), 39.0 + 0.8 * r * std::sin(a) });
+  }
+  for (std::size_t k = 0; k < lake; ++k) // (clockwise or not: even-odd)
+  {
+    const double a = 2.0 * M_PI * double(k) / double(lake);
+    ring.push_back({ -105.2 + 0.4 * std::cos(a), 39.1 + 0.3 * std::sin(a) });
+  }
+  const std::vector<Point2> gauges = UniformGauges(600, random, -108.5, -102.5, 36.5, 41.5);
+  ThiessenArealAverage average(gauges, { 0, outer, outer + lake }, ring);
+  std::vector<double> values(gauges.size());
+  for (double& value : values)
+  {
+    value = unit(random) < 0.7 ? unit(random) : NaN;
+  }
+  average.Step(values);
+  const auto shown = [&average](int chunks)
+  {
+    const tessera_test::ThreadLimitOverride limit(chunks);
+    return average.CurrentClippedTiles(3000.0);
+  };
+  const ClippedTilesLonLat one = shown(1);
+  ASSERT_GT(one.Gauges.size(), 7u * 16u); // (enough tiles for 7 chunks of at least 16)
+  for (const int chunks : { 2, 3, 7 })
+  {
+    const ClippedTilesLonLat many = shown(chunks);
+    EXPECT_EQ(many.Gauges, one.Gauges) << chunks << " chunks";
+    EXPECT_EQ(many.TilePieceOffsets, one.TilePieceOffsets) << chunks << " chunks";
+    EXPECT_EQ(many.Pieces.RingOffsets, one.Pieces.RingOffsets) << chunks << " chunks";
+    EXPECT_EQ(many.Pieces.Vertices, one.Pieces.Vertices) << chunks << " chunks";
+    EXPECT_EQ(many.PieceAreasM2, one.PieceAreasM2) << chunks << " chunks";
+    EXPECT_EQ(many.TileOutlineOffsets, one.TileOutlineOffsets) << chunks << " chunks";
+    EXPECT_EQ(many.Outlines.Rings.Vertices, one.Outlines.Rings.Vertices) << chunks << " chunks";
+  }
+}
+
 TEST(ArealAverage, AFarGaugeThatNeverReportsChangesNoWeight)
 {
   // The automatic projection is fitted to the catchment: a gauge far away (here one whose
