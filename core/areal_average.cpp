@@ -1318,29 +1318,42 @@ Point2 DensifiedPoint(const Point2& a, const Point2& b, int i, int n)
                           : InterpolateLonLat(b, a, double(n - i) / n);
 }
 
-/// Each tile's pieces in lon/lat (lonLat, tile k's TilePieceOffsets[k] .. [k+1]) joined into its
-/// outline (piece_outlines.h), appended to out.Outlines with TileOutlineOffsets. A tile across the
-/// 180th meridian (or its copy 360 degrees on, as its longitudes run) is cut there first, so that
-/// each polygon lies on one side of it (meridian_cut.h).
+/// Tile k's outline from its pieces in lon/lat (lonLat, TilePieceOffsets[k] .. [k+1] of out):
+/// cut at the 180th meridian first (or its copy 360 degrees on, as its longitudes run) when it
+/// crosses it, so that each polygon lies on one side of it (meridian_cut.h).
+RegionOutlines OutlineOfTile(const ClippedRings& lonLat,
+  const ClippedTilesLonLat& out,
+  std::size_t k)
+{
+  const std::size_t first = out.TilePieceOffsets[k], last = out.TilePieceOffsets[k + 1];
+  const std::size_t begin = lonLat.RingOffsets[first], end = lonLat.RingOffsets[last];
+  const Box2 box = BoundsOf(&lonLat.Vertices[begin], end - begin);
+  const double meridian = 180.0 + 360.0 * std::ceil((box.XMin - 180.0) / 360.0);
+  if (!(box.XMin < meridian && meridian < box.XMax))
+  {
+    return OutlinesOfPieces(lonLat, first, last);
+  }
+  RegionOutlines sides;
+  for (const ClippedRings& side : CutAtMeridian(lonLat, first, last, meridian))
+  {
+    AppendOutlines(OutlinesOfPieces(side, 0, side.RingOffsets.size() - 1), sides);
+  }
+  return sides;
+}
+
+/// Each tile's pieces in lon/lat joined into its outline (piece_outlines.h), appended to
+/// out.Outlines with TileOutlineOffsets: the tiles on the cores, joined in order (the same
+/// outlines on any number of threads).
 void AppendOutlinesOfTiles(const ClippedRings& lonLat, ClippedTilesLonLat& out)
 {
-  for (std::size_t k = 0; k < out.Gauges.size(); ++k)
+  const std::size_t tiles = out.Gauges.size();
+  std::vector<RegionOutlines> outlines(tiles);
+  parallel::RunClaimed(tiles,
+    parallel::ThreadCount(std::int64_t(tiles), 16),
+    [&](std::size_t k, std::size_t) { outlines[k] = OutlineOfTile(lonLat, out, k); });
+  for (const RegionOutlines& outline : outlines)
   {
-    const std::size_t first = out.TilePieceOffsets[k], last = out.TilePieceOffsets[k + 1];
-    const std::size_t begin = lonLat.RingOffsets[first], end = lonLat.RingOffsets[last];
-    const Box2 box = BoundsOf(&lonLat.Vertices[begin], end - begin);
-    const double meridian = 180.0 + 360.0 * std::ceil((box.XMin - 180.0) / 360.0);
-    if (box.XMin < meridian && meridian < box.XMax)
-    {
-      for (const ClippedRings& side : CutAtMeridian(lonLat, first, last, meridian))
-      {
-        AppendOutlines(OutlinesOfPieces(side, 0, side.RingOffsets.size() - 1), out.Outlines);
-      }
-    }
-    else
-    {
-      AppendOutlines(OutlinesOfPieces(lonLat, first, last), out.Outlines);
-    }
+    AppendOutlines(outline, out.Outlines);
     out.TileOutlineOffsets.push_back(out.Outlines.PolygonOffsets.size() - 1);
   }
 }
