@@ -256,20 +256,31 @@ std::vector<char> GroupsLeftApart(const std::vector<Point2>& v,
   const std::vector<std::size_t>& smallest,
   std::vector<std::size_t> grouped)
 {
-  std::sort(grouped.begin(),
-    grouped.end(),
-    [&](std::size_t a, std::size_t b)
-    {
-      const std::size_t ra = Root(parent, a), rb = Root(parent, b);
-      return ra != rb ? ra < rb : ringOf[a] < ringOf[b];
-    });
-  std::vector<char> apart(v.size(), 0);
-  for (std::size_t i = 1; i < grouped.size(); ++i)
+  // By group, then piece (records sorted, not indices whose roots each comparison looked up:
+  // a third of the near copies' time under a detailed outline). Which of a run of one group and
+  // piece comes first does not matter: if two of it differ, two next to each other do.
+  struct Member
   {
-    const std::size_t a = grouped[i - 1], b = grouped[i];
-    if (Root(parent, a) == Root(parent, b) && ringOf[a] == ringOf[b] && !(v[a] == v[b]))
+    std::size_t Root, Ring, Vertex;
+  };
+  std::vector<Member> members;
+  members.reserve(grouped.size());
+  for (const std::size_t k : grouped)
+  {
+    members.push_back({ Root(parent, k), ringOf[k], k });
+  }
+  std::sort(members.begin(),
+    members.end(),
+    [](const Member& a, const Member& b)
+    { return a.Root != b.Root ? a.Root < b.Root : a.Ring < b.Ring; });
+  std::vector<char> apart(v.size(), 0);
+  for (std::size_t i = 1; i < members.size(); ++i)
+  {
+    const Member& a = members[i - 1];
+    const Member& b = members[i];
+    if (a.Root == b.Root && a.Ring == b.Ring && !(v[a.Vertex] == v[b.Vertex]))
     {
-      apart[Root(parent, a)] = 1;
+      apart[a.Root] = 1;
     }
   }
   for (const std::size_t k : grouped)
@@ -364,6 +375,33 @@ void LeaveApartWhereCornersTurn(const std::vector<Point2>& v,
   }
 }
 
+// The vertices' indices by ComesFirst, copies of one point by index: records of coordinates and
+// index sorted, not indices that each comparison followed to their coordinates (twice as fast on
+// 10^6 vertices).
+std::vector<std::size_t> InOrder(const std::vector<Point2>& v)
+{
+  struct Keyed
+  {
+    Point2 At;
+    std::size_t Vertex;
+  };
+  std::vector<Keyed> keyed(v.size());
+  for (std::size_t k = 0; k < v.size(); ++k)
+  {
+    keyed[k] = { v[k], k };
+  }
+  std::sort(keyed.begin(),
+    keyed.end(),
+    [](const Keyed& a, const Keyed& b)
+    { return ComesFirst(a.At, b.At) || (!ComesFirst(b.At, a.At) && a.Vertex < b.Vertex); });
+  std::vector<std::size_t> order(v.size());
+  for (std::size_t i = 0; i < v.size(); ++i)
+  {
+    order[i] = keyed[i].Vertex;
+  }
+  return order;
+}
+
 // Per vertex, the vertex it is made (itself, or the smallest, by ComesFirst, of a group of copies
 // of one point in different pieces within the tolerance of each other; prev and next: each
 // vertex's neighbours in its ring). Each piece computed its own copy (both tiles cut at one x, a
@@ -376,11 +414,7 @@ std::vector<std::size_t> NearCopiesMadeOne(const std::vector<Point2>& v,
   const std::vector<std::size_t>& prev,
   const std::vector<std::size_t>& next)
 {
-  std::vector<std::size_t> order(v.size());
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  std::sort(order.begin(),
-    order.end(),
-    [&](std::size_t a, std::size_t b) { return ComesFirst(v[a], v[b]); });
+  const std::vector<std::size_t> order = InOrder(v);
   std::vector<std::size_t> parent(v.size());
   std::iota(parent.begin(), parent.end(), std::size_t(0));
   std::vector<std::size_t> made(v.size());
