@@ -315,7 +315,6 @@ void RunDetailedOutlines()
   std::printf("|------------------|--------|-------|----------------|---------------------|"
               "----------------------|------------------------|\n");
   constexpr int DisplayRepeats = 3;
-  std::size_t pieceVertices = 0;
   for (const std::size_t vertices : { 1000u, 30000u, 300000u })
   {
     std::mt19937_64 random(3);
@@ -355,6 +354,7 @@ void RunDetailedOutlines()
     // The tiles for display (what ParaView's time slider waits for at each step): at the last
     // step, DisplayRepeats times, the fastest kept.
     double display = HUGE_VAL;
+    std::size_t pieceVertices = 0;
     for (int k = 0; k < DisplayRepeats; ++k)
     {
       const auto showing = Clock::now();
@@ -362,7 +362,7 @@ void RunDetailedOutlines()
       display = std::min(display, Seconds(showing));
       pieceVertices = shown.Pieces.Vertices.size();
     }
-    std::printf("| %16zu | %6zu | %5d | %14.3f | %19.2f | %20.0f | %22zu |\n",
+    std::printf("| %16zu | %6zu | %5d | %14.3f | %19.2f | %20.1f | %22zu |\n",
       vertices,
       gauges.size(),
       stepCount,

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <exception>
+#include <mutex>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -143,20 +144,40 @@ void RunChunks(std::size_t chunks, const Task& task)
 /// the next item not yet taken, in turn: a few heavy items then do not hold up one chunk while the
 /// others idle (a tile's display pieces under a detailed outline can cost a thousand times its
 /// neighbour's). An item must write only its own results, since which chunk runs it varies from
-/// run to run (chunk: for the chunk's own scratch). Rethrows an exception an item threw (which
-/// one, when several throw, varies too).
+/// run to run (chunk: for the chunk's own scratch). Once all have run, rethrows the exception of
+/// the first item in order that threw, whichever chunk ran it: the same error on any number of
+/// threads.
 template<class Item>
 void RunClaimed(std::size_t count, std::size_t chunks, const Item& item)
 {
   std::atomic<std::size_t> next{ 0 };
+  std::mutex lock;
+  std::size_t failed = count; // the first item that threw (count: none)
+  std::exception_ptr error;
   RunChunks(chunks,
     [&](std::size_t chunk)
     {
       for (std::size_t i = next++; i < count; i = next++)
       {
-        item(i, chunk);
+        try
+        {
+          item(i, chunk);
+        }
+        catch (...)
+        {
+          const std::lock_guard<std::mutex> guard(lock);
+          if (i < failed)
+          {
+            failed = i;
+            error = std::current_exception();
+          }
+        }
       }
     });
+  if (error)
+  {
+    std::rethrow_exception(error);
+  }
 }
 
 /// Runs first() on the calling thread and second() beside it (on another thread, or after first()

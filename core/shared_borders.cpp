@@ -55,13 +55,15 @@ double InsideParameter(const Point2& a, const Point2& b, const Point2& v)
 // 2^-53: no edge's Tolerance there exceeds this.
 constexpr double LargestScaledTolerance = ToleranceUlps * 0x1p-53;
 
-// Whether v lies in the box of a -> b widened by LargestScaledTolerance (scaled coordinates). A
-// vertex outside it is inside no edge (InsideParameter), and this test costs four comparisons
-// where that one costs a hypot and a nextafter: a cell along a detailed catchment outline lists a
-// hundred of its edges (3 10^5 vertices), and every vertex in the cell was tried on every one.
+// Whether v lies in the box of a -> b widened by twice LargestScaledTolerance (scaled
+// coordinates). A vertex outside it is inside no edge (InsideParameter), and this test costs four
+// comparisons where that one costs a hypot and a nextafter: a cell along a detailed catchment
+// outline lists a hundred of its edges (3 10^5 vertices), and every vertex in the cell was tried on
+// every one. (Twice: at once, a vertex 64 ulps off an edge's line, to an ulp, could fall outside
+// the box by its sides' rounding and be inside the edge by InsideParameter's.)
 bool InEdgeBox(const Point2& a, const Point2& b, const Point2& v)
 {
-  const double m = LargestScaledTolerance;
+  const double m = 2.0 * LargestScaledTolerance;
   return v.x >= std::min(a.x, b.x) - m && v.x <= std::max(a.x, b.x) + m &&
     v.y >= std::min(a.y, b.y) - m && v.y <= std::max(a.y, b.y) + m;
 }

@@ -123,3 +123,40 @@ TEST(ParallelChunks, FirstExceptionReachesTheCallerAndThreadsStayUsable)
   }
   CheckPasses(20, nullptr);
 }
+
+// RunClaimed: every item once, whichever chunk takes it; the error rethrown is that of the first
+// item in order that threw, on any number of chunks and however they took the items.
+TEST(ParallelChunks, ClaimedItemsRunOnceAndTheFirstFailingItemsErrorIsRethrown)
+{
+  for (const std::size_t chunks : { 1u, 2u, 3u })
+  {
+    std::vector<std::atomic<int>> runs(1000);
+    tessera::parallel::RunClaimed(
+      runs.size(), chunks, [&](std::size_t i, std::size_t) { ++runs[i]; });
+    for (std::size_t i = 0; i < runs.size(); ++i)
+    {
+      ASSERT_EQ(runs[i].load(), 1) << "item " << i << ", " << chunks << " chunks";
+    }
+    for (int round = 0; round < 20; ++round)
+    {
+      try
+      {
+        tessera::parallel::RunClaimed(1000,
+          chunks,
+          [](std::size_t i, std::size_t)
+          {
+            if (i == 617 || i == 410 || i == 999)
+            {
+              throw std::runtime_error("item " + std::to_string(i));
+            }
+          });
+        ADD_FAILURE() << "no exception, " << chunks << " chunks";
+      }
+      catch (const std::runtime_error& e)
+      {
+        EXPECT_EQ(std::string(e.what()), "item 410") << chunks << " chunks";
+      }
+    }
+  }
+  CheckPasses(20, nullptr);
+}

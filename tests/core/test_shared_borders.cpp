@@ -327,3 +327,43 @@ TEST(SharedBorders, NothingToShare)
     EXPECT_EQ(ShareBorderVertices(withBad).Vertices.size(), two.Vertices.size()) << bad;
   }
 }
+
+// A vertex of one piece on a steep edge of another near 0, where the grid's cells are as wide as
+// coordinates near 1 (10^4 vertices over [-1, 1]^2): the grid once widened an edge by its own
+// tolerance, some 1e-30 here, less than the rounding of its cells' sides (some 1e-16, and on a
+// slope of 10^6 that much in x is 1e-10 in y), and did not list the edge in the vertex's cell, so
+// that the T-junction stayed. Widened by the largest tolerance of the scaled coordinates, it is
+// found: the vertex is inserted into the edge.
+TEST(SharedBorders, AVertexOnASteepEdgeNearZeroAmongFarVerticesIsShared)
+{
+  ClippedRings pieces;
+  const auto add = [&pieces](std::initializer_list<Point2> ring)
+  {
+    pieces.Vertices.insert(pieces.Vertices.end(), ring);
+    pieces.RingOffsets.push_back(pieces.Vertices.size());
+  };
+  const double crossing = -1e-17; // where the edge meets y = 0
+  const Point2 low{ crossing - 1e-10, -1e-4 }, high{ crossing + 1e-10, 1e-4 };
+  add({ low, { 1e-3, -1e-4 }, { 1e-3, 1e-4 }, high }); // A: right of the edge high -> low
+  const double x = -3e-17;
+  const Point2 on{ x, low.y + (x - low.x) / (high.x - low.x) * (high.y - low.y) };
+  add({ low, on, high, { -1e-3, 0.0 } }); // B: left of it, with a vertex on it
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> unit(-0.99, 0.99);
+  add({ { -1, -1 }, { -0.999, -1 }, { -1, -0.999 } });
+  add({ { 1, 1 }, { 0.999, 1 }, { 1, 0.999 } });
+  while (pieces.Vertices.size() < 10000)
+  {
+    const double px = unit(random), py = unit(random);
+    if (std::fabs(px) >= 0.05 || std::fabs(py) >= 0.05)
+    {
+      add({ { px, py }, { px + 1e-3, py }, { px, py + 1e-3 } });
+    }
+  }
+  const ClippedRings shared = ShareBorderVertices(pieces);
+  ASSERT_EQ(shared.Vertices.size(), pieces.Vertices.size() + 1);
+  // A's ring: low, its two right corners, high, then the vertex inserted between high and low.
+  ASSERT_EQ(shared.RingOffsets[1], 5u);
+  EXPECT_EQ(shared.Vertices[4].x, on.x);
+  EXPECT_EQ(shared.Vertices[4].y, on.y);
+}
