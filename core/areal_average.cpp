@@ -493,8 +493,10 @@ struct ThiessenArealAverage::State
     {
       tileOf[this->GaugeOfEngine[tiles.PointIds[k]]] = static_cast<std::int32_t>(k);
     }
-    std::vector<std::int32_t> used; // (a gauge in the tessellation but not used: its removal is
-    for (std::size_t gauge = 0; gauge < tileOf.size(); ++gauge) // deferred)
+    // The used gauges with tiles (a gauge in the tessellation but not used: its removal is
+    // deferred).
+    std::vector<std::int32_t> used;
+    for (std::size_t gauge = 0; gauge < tileOf.size(); ++gauge)
     {
       if (tileOf[gauge] >= 0 && this->Wanted[gauge])
       {

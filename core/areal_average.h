@@ -204,7 +204,8 @@ public:
 
   /// The current step's clipped tiles in lon/lat, edges densified every maxStepMetres (projected)
   /// so that they follow the planar tile edges when drawn in lon/lat. maxStepMetres: finite and
-  /// at least ArealAverageSettings::MinGeodesicStepMetres, else an InputError naming it.
+  /// at least ArealAverageSettings::MinGeodesicStepMetres, else an InputError naming it. Made on
+  /// the machine's cores (TESSERA_THREADS, parallel_chunks.h), the same bits on any number.
   ClippedTilesLonLat CurrentClippedTiles(double maxStepMetres = 2000.0) const;
 
 private:
