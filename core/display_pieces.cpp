@@ -655,16 +655,24 @@ private:
   /// step).
   void OrderEdges(double left, double right)
   {
+    const std::size_t carried = this->CarryAndEnterEdges(left, right);
+    this->SortEnteredIn(carried);
+  }
+
+  /// The next slab's edges, with their heights there, into Active: those of the slab before that
+  /// span this one, in their order, then those entering at left. Returns how many were carried.
+  std::size_t CarryAndEnterEdges(double left, double right)
+  {
     const double middle = left + 0.5 * (right - left);
     // (written in place: push_back, not inlined, had 13% of the samples)
     this->Entered.resize(std::max(this->Entered.size(), this->Active.size()));
-    std::size_t before = 0;
+    std::size_t carried = 0;
     for (const SlabEdge& a : this->Active)
     {
       const SweepEdge& e = this->Edges[a.Edge];
       if (e.Right.x > left)
       {
-        this->Entered[before++] = { HeightAt(e, middle),
+        this->Entered[carried++] = { HeightAt(e, middle),
           a.Edge,
           a.Winding,
           a.EndsRight,
@@ -674,7 +682,7 @@ private:
           a.Steepness };
       }
     }
-    this->Entered.resize(before);
+    this->Entered.resize(carried);
     for (; this->Entering < this->Edges.size() && this->Edges[this->Entering].Left.x <= left;
          ++this->Entering)
     {
@@ -690,8 +698,14 @@ private:
         e.Steepness() });
     }
     std::swap(this->Active, this->Entered);
+    return carried;
+  }
+
+  /// Active in order (Lower): its first `carried` edges are in the slab before's order.
+  void SortEnteredIn(std::size_t carried)
+  {
     std::vector<SlabEdge>& order = this->Active;
-    const auto tail = order.begin() + std::ptrdiff_t(before);
+    const auto tail = order.begin() + std::ptrdiff_t(carried);
     // Without a NaN height Lower is a total order (heights, then windings, then distinct edge
     // indices), so that the order it sorts to is one, however found: a few entering edges are
     // placed by the insertion pass alone (std::inplace_merge allocated a buffer at nearly every
