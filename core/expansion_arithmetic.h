@@ -97,11 +97,10 @@ inline int expansion_sign(const double* e, int n)
   return n == 0 ? 0 : (e[n - 1] > 0.0 ? 1 : -1);
 }
 
-// a - b as an expansion of length <= 2.
-inline int diff_expansion(double a, double b, double* h)
+// The expansion of a two-term result x + y (y the smaller): its nonzero terms into h, smaller
+// first; returns their count (<= 2).
+inline int two_term_expansion(double x, double y, double* h)
 {
-  double x, y;
-  two_diff(a, b, x, y);
   int n = 0;
   if (y != 0.0)
   {
@@ -112,6 +111,22 @@ inline int diff_expansion(double a, double b, double* h)
     h[n++] = x;
   }
   return n;
+}
+
+// a - b as an expansion of length <= 2.
+inline int diff_expansion(double a, double b, double* h)
+{
+  double x, y;
+  two_diff(a, b, x, y);
+  return two_term_expansion(x, y, h);
+}
+
+// a * b as an expansion of length <= 2 (exact where two_product is).
+inline int product_expansion(double a, double b, double* h)
+{
+  double x, y;
+  two_product(a, b, x, y);
+  return two_term_expansion(x, y, h);
 }
 
 // h = e + f (h has room for elen + flen, and must not alias e or f). Shewchuk's fast expansion

@@ -702,25 +702,9 @@ namespace
 /// (the sum finite).
 int affine_sign_expansion(double a, double b, double c, const Point2& p)
 {
-  // u * v as an expansion of its nonzero parts, smaller first; returns their count.
-  const auto product = [](double u, double v, double out[2])
-  {
-    double hi, lo;
-    two_product(u, v, hi, lo);
-    int n = 0;
-    if (lo != 0.0)
-    {
-      out[n++] = lo;
-    }
-    if (hi != 0.0)
-    {
-      out[n++] = hi;
-    }
-    return n;
-  };
   double px[2], py[2], sum[4], total[5];
-  const int pxn = product(a, p.x, px);
-  const int pyn = product(b, p.y, py);
+  const int pxn = product_expansion(a, p.x, px);
+  const int pyn = product_expansion(b, p.y, py);
   const int sn = expansion_sum(px, pxn, py, pyn, sum);
   const int cn = c != 0.0 ? 1 : 0;
   const int n = expansion_sum(sum, sn, &c, cn, total);
