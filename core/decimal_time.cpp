@@ -111,25 +111,31 @@ bool AtTimeOfDay(std::string_view text, std::size_t at)
   return at == 10 && at < text.size() && (text[at] == 'T' || text[at] == ' ');
 }
 
-/// Whether text is a time zone designator: "Z", or a sign and hh, hhmm or hh:mm.
-bool IsZoneDesignator(std::string_view text)
+/// The offset from UTC in minutes of a time zone designator: "Z" (0), or a sign and hh, hhmm or
+/// hh:mm (hours to 23, minutes to 59); nothing for any other text.
+std::optional<int> ZoneOffsetMinutes(std::string_view text)
 {
   if (text == "Z")
   {
-    return true;
+    return 0;
   }
   std::size_t at = 0;
   int hours = 0, minutes = 0;
-  if (!(Skip(text, at, '+') || Skip(text, at, '-')) || !ReadDigits(text, at, 2, hours))
+  const bool west = Skip(text, at, '-');
+  if (!(west || Skip(text, at, '+')) || !ReadDigits(text, at, 2, hours) || hours > 23)
   {
-    return false;
+    return std::nullopt;
   }
-  if (at == text.size())
+  if (at < text.size())
   {
-    return true;
+    Skip(text, at, ':');
+    if (!ReadDigits(text, at, 2, minutes) || minutes > 59 || at != text.size())
+    {
+      return std::nullopt;
+    }
   }
-  Skip(text, at, ':');
-  return ReadDigits(text, at, 2, minutes) && at == text.size();
+  const int offset = 60 * hours + minutes;
+  return west ? -offset : offset;
 }
 
 /// A calendar date at the start of text (spaces around it aside), with the time of day that may
@@ -297,12 +303,29 @@ std::optional<double> IsoDateTime(std::string_view text)
 
 std::optional<std::string> TimeZoneOf(std::string_view text)
 {
-  const std::optional<DateTimeRead> read = ReadDateTime(text);
-  if (!read || !read->HasTime || !IsZoneDesignator(read->Rest))
+  const std::optional<ZonedTime> zoned = IsoDateTimeInZone(text);
+  if (!zoned)
   {
     return std::nullopt;
   }
-  return std::string(read->Rest);
+  return zoned->Zone;
+}
+
+std::optional<ZonedTime> IsoDateTimeInZone(std::string_view text)
+{
+  const std::optional<DateTimeRead> read = ReadDateTime(text);
+  if (!read || !read->HasTime)
+  {
+    return std::nullopt;
+  }
+  const std::optional<int> offset = ZoneOffsetMinutes(read->Rest);
+  if (!offset)
+  {
+    return std::nullopt;
+  }
+  return ZonedTime{
+    TimeOfDate(read->Year, read->Month, read->Day, read->Seconds), *offset, std::string(read->Rest)
+  };
 }
 
 } // namespace tessera

@@ -25,8 +25,8 @@ double MonthTime(double year, int month);
 /// hour beyond 24, ...). "24:00" ends its day: the time of the next day's "00:00", as hour-ending
 /// records write a day's last hour (and as the example script reads hours; it reads a daily file
 /// whose every time is 24:00 as the days they end, which one text cannot tell). A time with a
-/// time zone ("Z", "+05:00") is not read (TimeZoneOf names it): times are taken as they are
-/// written, so one series in several zones would be misordered without a word.
+/// time zone ("Z", "+05:00") is not read here (IsoDateTimeInZone reads it): times are taken as
+/// they are written, so one series in several zones would be misordered without a word.
 std::optional<double> IsoDateTime(std::string_view text);
 
 /// The calendar dates of times that IsoDateTime (or MonthTime with a whole year) gave, as text
@@ -41,5 +41,20 @@ std::vector<std::string> DateTexts(const std::vector<double>& times);
 /// The time zone that a date and time of day ends with ("Z", "+05:00", "-0700", "+05"), which
 /// IsoDateTime does not read; nothing for any other text.
 std::optional<std::string> TimeZoneOf(std::string_view text);
+
+/// A date and time of day read with the time zone it ends with (TimeZoneOf's).
+struct ZonedTime
+{
+  double Time = 0.0;     ///< IsoDateTime's time of the text without its zone: as written
+  int OffsetMinutes = 0; ///< the zone's offset from UTC ("Z" 0, "+05:30" 330, "-0700" -420)
+  std::string Zone;      ///< as written
+};
+
+/// The time of a date and time of day that ends with a time zone, as written (not moved to UTC),
+/// and the zone's offset: a series whose times all carry one offset ("Z" on every row, say) is
+/// read in that zone, as a series without zones is read in its own. Mixing offsets, or times with
+/// a zone and without, is for the caller to refuse. Nothing for text without a zone (or with an
+/// offset beyond 23:59).
+std::optional<ZonedTime> IsoDateTimeInZone(std::string_view text);
 
 } // namespace tessera

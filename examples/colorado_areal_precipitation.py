@@ -397,19 +397,23 @@ DATE = re.compile(r"([0-9]{4})-([0-9]{1,2})(?:-([0-9]{1,2}))?")
 # A time of day after a date (2001-02-03T06:00, 2001-02-03 06:00:00), as a spreadsheet or a
 # program writes a timestamp.
 TIME_OF_DAY = re.compile(r"[T ]([0-9]{1,2}):([0-9]{2})(?::([0-9]{2})(?:\.([0-9]+))?)?")
+# A time zone after a time of day: Z, or an offset (+01:00, -0700, +05); every time of a file in
+# the same one, read as written (not moved to UTC).
+ZONE = re.compile(r"Z|([+-])([0-9]{2})(?::?([0-9]{2}))?")
 
 
 def observation_step(row, path, line):
     """The month (year, month), day (year, month, day) or day and time (year, month, day, hour,
     minute: the hour 0 to 24, 24 only at minute 0) of an observations record: from its year,
     month, day, hour and minute columns (day, hour and minute where given), or from its date column
-    (YYYY-MM for a month, YYYY-MM-DD for a day, with a time HH:MM for a time of the day).
-    read_observations makes the file's steps of them (file_steps). Ends the script naming file,
-    line and column for a value that is no such date."""
+    (YYYY-MM for a month, YYYY-MM-DD for a day, with a time HH:MM for a time of the day); with
+    the time's zone (date_column_step's, for check_zone) or None. read_observations makes the
+    file's steps of them (file_steps). Ends the script naming file, line and column for a value
+    that is no such date."""
     check_time_columns(row, path)
-    clock = None
+    clock = zone = None
     if "date" in row:
-        step, where, clock = date_column_step(row, path, line)
+        step, where, clock, zone = date_column_step(row, path, line)
     elif "year" in row and "month" in row:
         step, where = year_month_step(row, path, line)
     else:
@@ -421,10 +425,10 @@ def observation_step(row, path, line):
         hour, minute = int(clock.group(1)), int(clock.group(2))
         if hour > 24 or minute > 59 or (hour == 24 and minute):
             csv_input.fail(f"{where} is not a time of the day (00:00 to 23:59, or 24:00 for the day's end)")
-        return (*step, hour, minute)
+        return (*step, hour, minute), zone
     if "hour" in row:
-        return hour_column_step(step, row, path, line)
-    return step
+        return hour_column_step(step, row, path, line), None
+    return step, None
 
 
 def check_time_columns(row, path):
@@ -444,23 +448,36 @@ def check_time_columns(row, path):
 
 def date_column_step(row, path, line):
     """observation_step's date column read: the step's date fields, where they were written (for
-    the messages) and the match of its time of day (TIME_OF_DAY), or None."""
+    the messages), the match of its time of day (TIME_OF_DAY) or None, and its time zone (ZONE's
+    text and its offset in minutes) or None."""
     text = csv_input.text(row, "date", path, line)
     date = DATE.match(text)
     step = tuple(int(v) for v in date.groups() if v is not None) if date else ()
     where = f"{path}:{line}: column 'date': {text!r}"
-    clock = TIME_OF_DAY.fullmatch(text, date.end()) if date and date.group(3) else None
+    timed = TIME_OF_DAY.match(text, date.end()) if date and date.group(3) else None
+    zone = zone_of(ZONE.fullmatch(text, timed.end())) if timed and timed.end() < len(text) else None
+    clock = timed if timed and (timed.end() == len(text) or zone) else None
     if not date or (date.end() < len(text) and not clock):
-        timed = TIME_OF_DAY.match(text, date.end()) if date and date.group(3) else None
-        zone = re.fullmatch(r"Z|[+-][0-9]{2}(:?[0-9]{2})?", text[timed.end():]) if timed else None
-        csv_input.fail(f"{where} " + (f"has a time zone ({zone.group(0)}), which is not read: give the times "
-                                      "without it, all in one zone" if zone else
-                                      "is not a date (YYYY-MM-DD, YYYY-MM-DD HH:00 for an hour, YYYY-MM-DD "
-                                      "HH:MM for a step of minutes, or YYYY-MM for a month)"))
+        csv_input.fail(f"{where} is not a date (YYYY-MM-DD, YYYY-MM-DD HH:00 for an hour, YYYY-MM-DD HH:MM for a "
+                       "step of minutes, or YYYY-MM for a month; a time may end with a time zone, Z or +01:00, "
+                       "the same for every time)")
     if clock and any(int(v or 0) for v in clock.groups()[2:]):
         csv_input.fail(f"{where} is not on the minute: the steps are minutes (HH:MM), hours, days or months, so "
                        "give each step's total at its minute")
-    return step, where, clock
+    return step, where, clock, zone
+
+
+def zone_of(match):
+    """A ZONE match's text and offset from UTC in minutes; None for no match, or an offset beyond
+    23:59."""
+    if not match:
+        return None
+    if match.group(0) == "Z":
+        return "Z", 0
+    sign, hours, minutes = match.group(1), int(match.group(2)), int(match.group(3) or 0)
+    if hours > 23 or minutes > 59:
+        return None
+    return match.group(0), (-1 if sign == "-" else 1) * (60 * hours + minutes)
 
 
 def year_month_step(row, path, line):
@@ -1052,6 +1069,7 @@ class ObservationRows:
         self.every_step = set()  # (take_steps: the file's steps)
         self.names = {}  # every row's station id, as written, once each in the file's order
         self.first = {}  # the first line of a month, a day, a day and time, and a time other than midnight
+        self.zone = None  # (check_zone's) the first time's zone (None for none), line and date text
         self.hour_column, self.at_24 = False, 0
         self.wide = False  # a wide file's rows (a column per station)
         self.unmatched = []  # a wide file's columns that are no gauge's station
@@ -1151,7 +1169,8 @@ def new_step(rows, row, path, line):
     """The index in rows.step_index of the step of a time first written at line (observation_step),
     noting the first line of its kind (month, day, time, hour, minute); ends the script where that
     kind clashes with an earlier line's."""
-    step = observation_step(row, path, line)
+    step, zone = observation_step(row, path, line)
+    check_zone(rows, zone, row, path, line)
     kind = step_kind(step)  # (a time at midnight may be a day's or an hour's)
     if kind not in rows.first:
         clash = next((k for k in rows.first if steps_clash(k, kind)), None)
@@ -1162,6 +1181,22 @@ def new_step(rows, row, path, line):
         rows.first[kind] = line
     rows.hour_column = "hour" in row
     return rows.step_index.setdefault(step, len(rows.step_index))
+
+
+def check_zone(rows, zone, row, path, line):
+    """Ends the script where a time's zone (date_column_step's, None for none) is not the first
+    time's: times are read as written, not moved to UTC, so a file in two zones (or with a zone on
+    some times only) would be misordered unwarned. rows.zone keeps the first."""
+    if rows.zone is None:
+        rows.zone = (zone, line, row["date"].strip() if "date" in row else None)
+        return
+    first, first_line, first_text = rows.zone
+    offset = lambda z: z[1] if z else None  # (+00:00 is Z's zone)
+    if offset(zone) != offset(first):
+        said = lambda z: f"has time zone {z[0]}" if z else "has no time zone"
+        csv_input.fail(f"{path}:{line}: column 'date': {row['date'].strip()!r} {said(zone)}, where line {first_line}'s "
+                       f"{first_text!r} {said(first)}: times are read as written (not moved to UTC), so give them "
+                       "all in one zone, or all without one")
 
 
 def keep_period(rows, period, steps, step_of, path, bound_texts):

@@ -335,22 +335,20 @@ private:
     return *t;
   }
 
-  /// A text time: an ISO date, or else a number (a numeric column read as text, as ParaView's
-  /// CSV reader gives it with Detect Numeric Columns off, which the README advises for files with
-  /// blank missing values).
+  /// A text time: an ISO date (with the series' time zone, where its dates carry one), or else a
+  /// number (a numeric column read as text, as ParaView's CSV reader gives it with Detect Numeric
+  /// Columns off, which the README advises for files with blank missing values).
   double Date(vtkIdType row, const NumberColumn::Cell& time) const
   {
-    const std::optional<double> t = tessera::IsoDateTime(*time.Text);
-    if (t)
+    if (const std::optional<double> t = tessera::IsoDateTime(*time.Text))
     {
+      this->CheckZone(row, *time.Text, std::nullopt);
       return *t;
     }
-    if (const std::optional<std::string> zone = tessera::TimeZoneOf(*time.Text))
+    if (const std::optional<tessera::ZonedTime> zoned = tessera::IsoDateTimeInZone(*time.Text))
     {
-      // (as the example script says it: times are taken as written, one zone for the series)
-      ThrowRowError(row,
-        "'" + *time.Text + "' in column '" + this->TimeColumn + "' has a time zone (" + *zone +
-          "), which is not read: give the times without it, all in one zone");
+      this->CheckZone(row, *time.Text, zoned->OffsetMinutes);
+      return zoned->Time;
     }
     const std::optional<double> number = time.Number();
     this->OnlyDates = false;
@@ -364,10 +362,44 @@ private:
     return *number;
   }
 
+  /// Refuses a date in another time zone than the first date read (a different offset, or a zone
+  /// where that had none, or none where it had one), as the example script does: times are read
+  /// as written, not moved to UTC, so a series in several zones would be misordered unwarned.
+  void CheckZone(vtkIdType row, const std::string& text, std::optional<int> offset) const
+  {
+    if (this->FirstDateRow < 0)
+    {
+      this->FirstDateRow = row;
+      this->FirstDateText = text;
+      this->FirstOffset = offset;
+      return;
+    }
+    if (offset == this->FirstOffset)
+    {
+      return;
+    }
+    ThrowRowError(row,
+      "'" + text + "' in column '" + this->TimeColumn + "' " + ZoneOf(text) + ", where row " +
+        std::to_string(this->FirstDateRow) + "'s '" + this->FirstDateText + "' " +
+        ZoneOf(this->FirstDateText) +
+        ": times are read as written (not moved to UTC), so give them all in one zone, or all "
+        "without one");
+  }
+
+  /// "has time zone Z", or "has no time zone".
+  static std::string ZoneOf(const std::string& text)
+  {
+    const std::optional<std::string> zone = tessera::TimeZoneOf(text);
+    return zone ? "has time zone " + *zone : "has no time zone";
+  }
+
   std::string TimeColumn, MonthColumn;
   NumberColumn Times;
   std::optional<NumberColumn> Months;
-  mutable bool OnlyDates = true; // AllDates
+  mutable bool OnlyDates = true;          // AllDates
+  mutable vtkIdType FirstDateRow = -1;    // CheckZone's: the first date's row, text and zone
+  mutable std::string FirstDateText;      //
+  mutable std::optional<int> FirstOffset; // (minutes from UTC; nothing without a zone)
 };
 
 /// The gauges' station ids as text (StationName), one per gauge; none without an id array.
@@ -1214,7 +1246,15 @@ int vtkThiessenArealAverage::GetNumberOfTimeSteps()
 //------------------------------------------------------------------------------
 double vtkThiessenArealAverage::TimeOfDate(const char* date)
 {
-  const std::optional<double> time = date ? tessera::IsoDateTime(date) : std::nullopt;
+  if (!date)
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  if (const std::optional<tessera::ZonedTime> zoned = tessera::IsoDateTimeInZone(date))
+  {
+    return zoned->Time; // (as the observations' dates in one zone are read: as written)
+  }
+  const std::optional<double> time = tessera::IsoDateTime(date);
   return time ? *time : std::numeric_limits<double>::quiet_NaN();
 }
 

@@ -34,8 +34,9 @@
  *   "time", "value"). Without it, the gauges' point-data array ValueArrayName is one time step, at
  *   the gauges' own time: their time steps (a time-aware source, a file series) are then the
  *   filter's, and a requested time goes up to them. Times are numbers, or text holding ISO dates
- *   (YYYY, YYYY-MM, YYYY-MM-DD, optionally with a time of day) or numbers, or a whole year column
- *   with a month column (MonthColumn); dates become decimal years on a month grid: 1963-08 (or
+ *   (YYYY, YYYY-MM, YYYY-MM-DD, optionally with a time of day, and with a time zone such as Z or
+ *   +01:00 where every date has the same one: times are read as written, in that zone) or
+ *   numbers, or a whole year column with a month column (MonthColumn); dates become decimal years on a month grid: 1963-08 (or
  *   1963-08-01, or year 1963 with month 8) is 1963 + 7/12, and a day is its share of its month
  *   (core/decimal_time.h). Values are numbers, NaN where missing; a text value column (what a CSV
  *   reader gives when markers stand among the numbers) also takes an empty field, NA, N/A, NaN or
@@ -298,7 +299,8 @@ public:
    * and "1963-08-16" 1963 + (7 + 15/31)/12 (decimal years on a month grid: a day is a share of
    * its month, not of its year), "1963-08-16 06:00" a share of that day ("24:00" is the next
    * day's "00:00"), a year alone "1963" its start; as the tables' Time column gives it beside their
-   * Date, and as the filter reads the observations' dates. NaN for text that is not such a date.
+   * Date, and as the filter reads the observations' dates (a time zone such as "Z" at the end is
+   * left off: the time is as written). NaN for text that is not such a date.
    */
   static double TimeOfDate(const char* date);
 

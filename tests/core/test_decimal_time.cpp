@@ -14,8 +14,10 @@
 #include <vector>
 
 using tessera::IsoDateTime;
+using tessera::IsoDateTimeInZone;
 using tessera::MonthTime;
 using tessera::TimeZoneOf;
+using tessera::ZonedTime;
 
 namespace
 {
@@ -130,10 +132,39 @@ TEST(DecimalTime, TimeZonesAreNamedNotRead)
          "1963-08-01T10:00 Z",
          "1963-08-01T10:00ZZ",
          "1963-13-01T10:00Z",
+         "1963-08-01T10:00+24:00",
+         "1963-08-01T10:00-05:60",
          "abc" })
   {
     EXPECT_FALSE(TimeZoneOf(text)) << text;
+    EXPECT_FALSE(IsoDateTimeInZone(text)) << text;
   }
+}
+
+TEST(DecimalTime, ATimeInAZoneIsReadAsWrittenWithTheZonesOffset)
+{
+  // The time is the text's without its zone, bit for bit (not moved to UTC), for every form of
+  // designator; the offset says which zone, so that a caller can refuse a series in several.
+  const struct
+  {
+    const char* Zoned;
+    const char* Plain;
+    int Offset;
+  } cases[] = { { "1963-08-01T10:00:00Z", "1963-08-01T10:00:00", 0 },
+    { " 1963-08-01 10:00+05:30 ", "1963-08-01 10:00", 330 },
+    { "1963-08-31T24:00-0700", "1963-08-31T24:00", -420 },
+    { "2000-02-29T00:00:30+05", "2000-02-29T00:00:30", 300 },
+    { "1963-08-01T10:00-00:00", "1963-08-01T10:00", 0 },
+    { "1963-12-31T23:59:59-23:59", "1963-12-31T23:59:59", -1439 } };
+  for (const auto& c : cases)
+  {
+    const std::optional<ZonedTime> zoned = IsoDateTimeInZone(c.Zoned);
+    ASSERT_TRUE(zoned) << c.Zoned;
+    EXPECT_EQ(zoned->Time, IsoDateTime(c.Plain).value()) << c.Zoned;
+    EXPECT_EQ(zoned->OffsetMinutes, c.Offset) << c.Zoned;
+    EXPECT_EQ(zoned->Zone, TimeZoneOf(c.Zoned).value()) << c.Zoned;
+  }
+  EXPECT_EQ(IsoDateTimeInZone("1963-08-01T24:00Z")->Time, IsoDateTime("1963-08-02").value());
 }
 
 TEST(DecimalTime, MalformedAndImpossibleDatesAreRefused)

@@ -1401,6 +1401,17 @@ def test_hourly_observations_give_hourly_means():
         days = read_csv(os.path.join(directory, "ends", "areal_mean.csv"))
         assert_that([(r["day"], r["stations_used"]) for r in days] == [("30", "1"), ("31", "1")] and "hour" not in days[0],
                     f"days at 24:00: {days}")
+        # Times all in one time zone (Z, and +00:00 the same offset) are read as written: the same
+        # means as the times without it.
+        means = {}
+        for name, zones in (("plain", ("", "", "")), ("zoned", ("Z", "+00:00", "Z"))):
+            text = "station_id,date,precip\n" + "".join(
+                f"{s},2001-03-01T{t}{z},{v}\n" for (s, t, v), z in zip((("N1", "06:00", 1), ("N2", "06:00", 3),
+                                                                        ("N1", "07:00", 2)), zones))
+            run_colorado(os.path.join(directory, name), stations=stations, catchment=catchment, plots=False,
+                         observations=write(directory, name + ".csv", text), what=f"{name} times")
+            means[name] = read_csv(os.path.join(directory, name, "areal_mean.csv"))
+        assert_that(means["zoned"] == means["plain"] and len(means["plain"]) == 2, f"times in one zone: {means}")
         # Days stamped with the hour they are read at are read as hours, and said; one hour alone is not.
         advice = {"date": "give the dates without the time (YYYY-MM-DD)", "hour": "leave out the hour column"}
         for text, said in (("date\nN1,2001-03-01 07:00,1\nN2,2001-03-02 07:00,2\n", "date"),
@@ -1426,8 +1437,13 @@ def test_hourly_observations_give_hourly_means():
             ("station_id,date,time,precip\nN1,2001-03-01,06:00,1\n", {},
              "has a time column beside its date column: give hours as dates with their time in one column"),
             ("station_id,year,month,day,Time,precip\nN1,2001,3,1,06:00,1\n", {}, "a time column beside its day column"),
-            ("station_id,date,precip\nN1,2001-03-01T06:00Z,1\n", {}, "'2001-03-01T06:00Z' has a time zone (Z), which"),
-            ("station_id,date,precip\nN1,2001-03-01 06:00+01:00,1\n", {}, "has a time zone (+01:00), which is not read"),
+            # (times are read as written, in one time zone: two zones, or one on some times only, are refused)
+            ("station_id,date,precip\nN1,2001-03-01T06:00Z,1\nN2,2001-03-01 07:00,1\n", {},
+             ":3: column 'date': '2001-03-01 07:00' has no time zone, where line 2's '2001-03-01T06:00Z' has time "
+             "zone Z: times are read as written (not moved to UTC)"),
+            ("station_id,date,precip\nN1,2001-03-01 06:00+01:00,1\nN2,2001-03-01 07:00-0700,1\n", {},
+             "'2001-03-01 07:00-0700' has time zone -0700, where line 2's '2001-03-01 06:00+01:00' has time zone +01:00"),
+            ("station_id,date,precip\nN1,2001-03-01 06:00+24:00,1\n", {}, "'2001-03-01 06:00+24:00' is not a date (YYYY"),
             # (a day with a fourth number is no date with a zone)
             ("station_id,date,precip\nN1,2001-03-01-05,1\n", {}, "'2001-03-01-05' is not a date (YYYY-MM-DD"),
             ("station_id,year,month,day,hour,time,precip\nN1,2001,3,1,6,06:00,1\n", {},

@@ -1923,12 +1923,27 @@ def test_review_cases_of_times_values_and_time_aware_gauges():
     f, messages = run_table([("a", "1963.5", "10"), ("b", "mid-1963", "20")])
     assert_that(len(messages) == 1 and "'mid-1963' in column 'date' is not a date" in messages[0]
                 and "or a finite number" in messages[0], f"(1) neither a date nor a number: {messages}")
-    # A time zone is named, not read and not called no date (as the example script says it); 24:00
-    # is the next day's 00:00, as the script reads hour-ending records.
-    for zoned, zone in (("1963-08-01T10:00:00Z", "Z"), ("1963-08-01 10:00+05:00", "+05:00")):
-        f, messages = run_table([("a", "1963-08-01 09:00", "10"), ("b", zoned, "20")])
-        assert_that(len(messages) == 1 and f"'{zoned}' in column 'date' has a time zone ({zone}), which is not read"
-                    in messages[0], f"(1) a time zone: {messages}")
+    # Times in one time zone (one offset, however written) are read as written, as the example
+    # script reads them, and as TimeOfDate reads a date with its zone; a series in two zones, or
+    # with a zone on some times only, is refused naming both rows (times are not moved to UTC).
+    plain = [vtkThiessenArealAverage.TimeOfDate(t) for t in ("1963-08-01 09:00", "1963-08-02")]
+    f, messages = run_table([("a", "1963-08-01T09:00Z", "10"), ("b", " 1963-08-01 09:00+00:00", "20"),
+                             ("a", "1963-08-02T00:00:00Z", "4")])
+    assert_that(not messages and summary_column(f, "Time") == plain and summary_column(f, "ArealMean") == [15.0, 4.0]
+                and vtkThiessenArealAverage.TimeOfDate("1963-08-01T09:00-07:00") == plain[0],
+                f"(1) one time zone: {messages} {summary_column(f, 'Time')} {plain}")
+    for first, second, said in (
+            ("1963-08-01 09:00", "1963-08-01T10:00:00Z",
+             "'1963-08-01T10:00:00Z' in column 'date' has time zone Z, where row 0's '1963-08-01 09:00' has no time"),
+            ("1963-08-01 09:00+05:00", "1963-08-01 10:00+0100",
+             "'1963-08-01 10:00+0100' in column 'date' has time zone +0100, where row 0's '1963-08-01 09:00+05:00' "
+             "has time zone +05:00: times are read as written (not moved to UTC)"),
+            ("1963-08-01T09:00Z", "1963-08-02",
+             "'1963-08-02' in column 'date' has no time zone, where row 0's '1963-08-01T09:00Z' has time zone Z")):
+        f, messages = run_table([("a", first, "10"), ("b", second, "20")])
+        assert_that(len(messages) == 1 and "observation row 1: " + said in messages[0],
+                    f"(1) two time zones: {messages}")
+    # 24:00 is the next day's 00:00, as the script reads hour-ending records.
     f, messages = run_table([("a", "1963-08-01 24:00", "10"), ("b", "1963-08-02", "20"), ("a", "1963-08-31 24:00", "4")])
     assert_that(not messages and summary_column(f, "Time") == [1963 + (7 + 1 / 31) / 12, 1963 + 8 / 12]
                 and summary_column(f, "ArealMean") == [15.0, 4.0], f"(1) 24:00: {messages} {summary_column(f, 'Time')}")
