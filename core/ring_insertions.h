@@ -27,12 +27,20 @@ struct RingInsertion
   Point2 Vertex;
 };
 
+/// Whether InsertIntoRings says where each vertex came from (InsertedRings::SegmentOf).
+enum class SegmentNumbers
+{
+  Kept,
+  Dropped ///< (SegmentOf left empty: a vector as long as the vertices, not built)
+};
+
 /// Rings (flat offsets) with points added, and where each vertex came from.
 struct InsertedRings
 {
   std::vector<std::size_t> Offsets; ///< one per ring, plus the end; starts at 0
   std::vector<Point2> Vertices;
-  /// Per vertex: the number within its ring of the edge it starts or was added inside.
+  /// Per vertex: the number within its ring of the edge it starts or was added inside (empty with
+  /// SegmentNumbers::Dropped).
   std::vector<std::size_t> SegmentOf;
   std::size_t Inserted = 0; ///< points added (those equal to the vertex before them aside)
 };
@@ -46,6 +54,7 @@ void SortAlongEdges(std::vector<RingInsertion>& insertions);
 /// by SortAlongEdges, each edge a vertex of a ring. O(vertices + insertions).
 InsertedRings InsertIntoRings(const std::vector<std::size_t>& offsets,
   const std::vector<Point2>& vertices,
-  const std::vector<RingInsertion>& insertions);
+  const std::vector<RingInsertion>& insertions,
+  SegmentNumbers segments);
 
 } // namespace tessera

@@ -571,7 +571,8 @@ ClippedRings ShareBorderVertices(const ClippedRings& given)
     return pieces;
   }
   SortAlongEdges(insertions);
-  InsertedRings shared = InsertIntoRings(pieces.RingOffsets, pieces.Vertices, insertions);
+  InsertedRings shared =
+    InsertIntoRings(pieces.RingOffsets, pieces.Vertices, insertions, SegmentNumbers::Dropped);
   return { std::move(shared.Offsets), std::move(shared.Vertices) };
 }
 

@@ -247,7 +247,7 @@ SnappedRings SnapVerticesOntoSegments(const std::vector<std::size_t>& offsets,
     insertions = FindInsertions(vertices, found, nearOthers, tolerance);
   }
   SortAlongEdges(insertions);
-  return InsertIntoRings(offsets, vertices, insertions);
+  return InsertIntoRings(offsets, vertices, insertions, SegmentNumbers::Kept);
 }
 
 } // namespace tessera
