@@ -76,6 +76,7 @@ hour,...), weights_all_hours.csv, --hour 'YYYY-MM-DD HH:00' (files named YYYY_MM
 hour from the first to the last. Hours keep their labels (hour-ending data: 06:00 is 05:00 to
 06:00), and hour 24 (24:00, as hour-ending records write a day's last hour) is hour 0 of the
 next day. Dates whose times are all midnight are days; a time column beside the date is refused.
+Times may end with a time zone (Z, +01:00) when all have the same one: they are read as written.
 Observations of minutes (tipping buckets, loggers: dates with times YYYY-MM-DD HH:MM, or a minute
 column beside the hour) make a step some minutes long: the most minutes that divide 60 and every
 time's minute (15 for times at :00, :15, :30 and :45), each step labelled by its time as hours

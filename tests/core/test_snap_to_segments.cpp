@@ -4,6 +4,7 @@
 // that crossed (ValidateRings), and no longer do.
 #include "errors.h"
 #include "polygon_validation.h"
+#include "ring_insertions.h"
 #include "snap_to_segments.h"
 #include "test_support.h"
 
@@ -67,6 +68,44 @@ TEST(SnapToSegments, JunctionsBecomeVerticesOfTheOtherRingInOrder)
     EXPECT_EQ(out.Vertices[7 + k], right[k]) << k;
     EXPECT_EQ(out.SegmentOf[7 + k], segments[k]) << k;
   }
+}
+
+TEST(SnapToSegments, RingsWithoutSegmentNumbersAreTheSameRings)
+{
+  // Two rings; insertions on the first ring's edges 0 and 2 and on the second's last edge (6),
+  // one of them equal to the vertex written before it (added once) and two on one edge.
+  const std::vector<std::size_t> offsets{ 0, 4, 7 };
+  const std::vector<Point2> vertices{
+    { 0, 0 }, { 2, 0 }, { 2, 2 }, { 0, 2 }, { 3, 0 }, { 5, 0 }, { 4, 2 }
+  };
+  std::vector<RingInsertion> insertions{ { 2, 0.5, { 1, 2 } },
+    { 0, 0.75, { 1.5, 0 } },
+    { 6, 0.5, { 3.5, 1 } },
+    { 0, 0.25, { 0.5, 0 } },
+    { 6, 0.0, { 4, 2 } } };
+  SortAlongEdges(insertions);
+  const InsertedRings kept = InsertIntoRings(offsets, vertices, insertions, SegmentNumbers::Kept);
+  const InsertedRings dropped =
+    InsertIntoRings(offsets, vertices, insertions, SegmentNumbers::Dropped);
+  EXPECT_EQ(kept.Offsets, (std::vector<std::size_t>{ 0, 7, 11 }));
+  EXPECT_EQ(kept.Vertices,
+    (std::vector<Point2>{ { 0, 0 },
+      { 0.5, 0 },
+      { 1.5, 0 },
+      { 2, 0 },
+      { 2, 2 },
+      { 1, 2 },
+      { 0, 2 }, //
+      { 3, 0 },
+      { 5, 0 },
+      { 4, 2 },
+      { 3.5, 1 } }));
+  EXPECT_EQ(kept.SegmentOf, (std::vector<std::size_t>{ 0, 0, 0, 1, 2, 2, 3, 0, 1, 2, 2 }));
+  EXPECT_EQ(kept.Inserted, 4u);
+  EXPECT_EQ(dropped.Offsets, kept.Offsets);
+  EXPECT_EQ(dropped.Vertices, kept.Vertices);
+  EXPECT_EQ(dropped.Inserted, kept.Inserted);
+  EXPECT_TRUE(dropped.SegmentOf.empty());
 }
 
 TEST(SnapToSegments, OnlyJunctionsOfOtherRingsWithinTheTolerance)
