@@ -81,7 +81,7 @@ TEST(LargePages, VectorsKeepTheirContentsWhileGrowingPastTheThreshold)
 // 768 on 4 KiB ones, each time it is mapped afresh.
 TEST(LargePages, FreedLargeBlocksAreReusedWithoutNewPageFaults)
 {
-#if !defined(__GLIBC__) || defined(__SANITIZE_ADDRESS__)
+#if !defined(__GLIBC__) || defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
   GTEST_SKIP() << "glibc's own malloc only (a sanitizer's allocator holds freed blocks back)";
 #else
   constexpr std::size_t Bytes = std::size_t(3) << 20;
