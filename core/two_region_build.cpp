@@ -201,7 +201,8 @@ struct DirichletTessellation::TwoRegionBuild
   std::vector<std::int8_t> OwnerOf;   // per sample triangle: its region's side, or NoOwner
   std::vector<std::int32_t> SeamEdges;
   std::vector<RestartGrid> Restarts;
-  static constexpr std::int8_t NoOwner = -1; // straddles the seam, or free
+  static constexpr std::int8_t NoOwner = -1;  // straddles the seam, or free
+  static constexpr std::int32_t NoStart = -1; // a region's LastTriangle when it owns none
 };
 
 // Steps 2 to 4 for vertices [first, end). Returns false, having inserted nothing, when the
@@ -315,7 +316,10 @@ void DirichletTessellation::TwoRegionBuild::FindTriangleOwners()
 
 // Each region gets 2 triangles per point: exactly what inserting all of them takes. Its restart
 // grid starts with its owned sample triangles, and its first walk starts from the grid's triangle
-// for its first point (from any owned triangle if that cell has none).
+// for its first point (from any owned triangle if that cell has none). A region that owns no real
+// triangle (its side's points all on a line, beside a seam on another line) has nowhere to start:
+// NoStart, and InsertSide defers its points. (It started in the serial insertion's last triangle,
+// which the other region may own and be changing while this one reads it.)
 void DirichletTessellation::TwoRegionBuild::AllotSlots()
 {
   const std::int32_t cellsPerSide =
@@ -330,7 +334,7 @@ void DirichletTessellation::TwoRegionBuild::AllotSlots()
     region.NextSlot = slot;
     slot += 2 * std::int32_t(ids.size());
     region.EndSlot = slot;
-    region.LastTriangle = this->T.Serial.LastTriangle;
+    region.LastTriangle = NoStart;
     for (std::int32_t t = 0; t < this->SampleTriangles; ++t)
     {
       if (this->OwnerOf[t] == side && !this->T.IsGhostTriangle(t))
@@ -369,6 +373,11 @@ void DirichletTessellation::TwoRegionBuild::InsertSide(std::size_t side)
 {
   Region& region = this->Regions[side];
   const std::vector<std::int32_t>& ids = this->Sides[side];
+  if (region.LastTriangle == NoStart)
+  {
+    region.Deferred = ids; // (each walk would have ended Foreign at once)
+    return;
+  }
   for (std::size_t tried = 0; tried < ids.size(); ++tried)
   {
     if (GivesUp(tried, region.Deferred.size()))
@@ -420,7 +429,14 @@ void DirichletTessellation::TwoRegionBuild::Join()
   const bool seamCocircular = tess.LegalizeEdges(this->SeamEdges);
   tess.Serial.SawCocircular |=
     seamCocircular || this->Regions[0].SawCocircular || this->Regions[1].SawCocircular;
-  tess.Serial.LastTriangle = this->Regions[0].LastTriangle;
+  for (const Region& region : this->Regions)
+  {
+    if (region.LastTriangle != NoStart)
+    {
+      tess.Serial.LastTriangle = region.LastTriangle;
+      break;
+    }
+  }
   // The deferred points, along the curve: they lie near the seam and outside the sample's hull
   // (all around the batch), or anywhere on a side given up, and walking to them in their rounds'
   // order took 13 steps each at 1M uniform points (5 along the curve), 10.6 ms against 5.3.

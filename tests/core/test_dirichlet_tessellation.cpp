@@ -2185,6 +2185,26 @@ TEST(DirichletTessellation, TwoRegionBuildOfPointsOnTwoLinesEqualsSerialInsertio
   EXPECT_EQ(CheckStructure(batch), points.size() - 2);
 }
 
+// One side of the seam all on a line: 30% of the points on x = 0.2, 40% on x = 0.5 (the seam,
+// inserted serially) and 30% uniform to their right. The left region owns no real triangle of the
+// sample, only ghosts, and must not start its walks in a triangle the other region is changing
+// (a data race under ThreadSanitizer).
+TEST(DirichletTessellation, TwoRegionBuildWithACollinearSideEqualsSerialInsertion)
+{
+  std::mt19937_64 random(33);
+  std::uniform_real_distribution<double> along(0.05, 0.95), right(0.6, 0.95);
+  for (const std::size_t n : { std::size_t(12000), std::size_t(40000) })
+  {
+    std::vector<Point2> points(n);
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      const double x = k % 10 < 3 ? 0.2 : k % 10 < 7 ? 0.5 : right(random);
+      points[k] = { x, along(random) };
+    }
+    ExpectSameAsStreaming(points);
+  }
+}
+
 // Points in convex position: after the sample every point lies outside its hull, where a region
 // may not insert, so both regions give their points up after their first tries (GivesUp) and the
 // serial insertion takes them. On five lines of inexact slope the regions of these 40000 points
