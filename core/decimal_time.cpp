@@ -111,11 +111,12 @@ bool AtTimeOfDay(std::string_view text, std::size_t at)
   return at == 10 && at < text.size() && (text[at] == 'T' || text[at] == ' ');
 }
 
-/// The offset from UTC in minutes of a time zone designator: "Z" (0), or a sign and hh, hhmm or
-/// hh:mm (hours to 23, minutes to 59); nothing for any other text.
+/// The offset from UTC in minutes of a time zone designator: "Z" or "z" (0), or a sign and hh,
+/// hhmm or hh:mm (hours to 23, minutes to 59; "-00:00", RFC 3339's UTC time of an unknown local
+/// offset, is 0 too); nothing for any other text.
 std::optional<int> ZoneOffsetMinutes(std::string_view text)
 {
-  if (text == "Z")
+  if (text == "Z" || text == "z")
   {
     return 0;
   }

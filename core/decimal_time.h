@@ -46,15 +46,15 @@ std::optional<std::string> TimeZoneOf(std::string_view text);
 struct ZonedTime
 {
   double Time = 0.0;     ///< IsoDateTime's time of the text without its zone: as written
-  int OffsetMinutes = 0; ///< the zone's offset from UTC ("Z" 0, "+05:30" 330, "-0700" -420)
+  int OffsetMinutes = 0; ///< the zone's offset from UTC ("Z", "z", "-00:00" 0, "-0700" -420)
   std::string Zone;      ///< as written
 };
 
 /// The time of a date and time of day that ends with a time zone, as written (not moved to UTC),
-/// and the zone's offset: a series whose times all carry one offset ("Z" on every row, say) is
-/// read in that zone, as a series without zones is read in its own. Mixing offsets, or times with
-/// a zone and without, is for the caller to refuse. Nothing for text without a zone (or with an
-/// offset beyond 23:59).
+/// and the zone's offset: a series whose times all carry one offset ("Z" on every row, say, or
+/// "Z" on some and "+00:00" on others) is read in that zone, as a series without zones is read in
+/// its own. Mixing offsets, or times with a zone and without, is for the caller to refuse.
+/// Nothing for text without a zone (or with an offset beyond 23:59).
 std::optional<ZonedTime> IsoDateTimeInZone(std::string_view text);
 
 } // namespace tessera

@@ -76,7 +76,8 @@ hour,...), weights_all_hours.csv, --hour 'YYYY-MM-DD HH:00' (files named YYYY_MM
 hour from the first to the last. Hours keep their labels (hour-ending data: 06:00 is 05:00 to
 06:00), and hour 24 (24:00, as hour-ending records write a day's last hour) is hour 0 of the
 next day. Dates whose times are all midnight are days; a time column beside the date is refused.
-Times may end with a time zone (Z, +01:00) when all have the same one: they are read as written.
+Times may end with a time zone (Z, +01:00) when all have the same offset: they are read as
+written, and the options (--hour, --start, ...) take them without it.
 Observations of minutes (tipping buckets, loggers: dates with times YYYY-MM-DD HH:MM, or a minute
 column beside the hour) make a step some minutes long: the most minutes that divide 60 and every
 time's minute (15 for times at :00, :15, :30 and :45), each step labelled by its time as hours
@@ -400,7 +401,7 @@ DATE = re.compile(r"([0-9]{4})-([0-9]{1,2})(?:-([0-9]{1,2}))?")
 TIME_OF_DAY = re.compile(r"[T ]([0-9]{1,2}):([0-9]{2})(?::([0-9]{2})(?:\.([0-9]+))?)?")
 # A time zone after a time of day: Z, or an offset (+01:00, -0700, +05); every time of a file in
 # the same one, read as written (not moved to UTC).
-ZONE = re.compile(r"Z|([+-])([0-9]{2})(?::?([0-9]{2}))?")
+ZONE = re.compile(r"[Zz]|([+-])([0-9]{2})(?::?([0-9]{2}))?")
 
 
 def observation_step(row, path, line):
@@ -473,8 +474,8 @@ def zone_of(match):
     23:59."""
     if not match:
         return None
-    if match.group(0) == "Z":
-        return "Z", 0
+    if match.group(0) in ("Z", "z"):
+        return match.group(0), 0
     sign, hours, minutes = match.group(1), int(match.group(2)), int(match.group(3) or 0)
     if hours > 23 or minutes > 59:
         return None
@@ -2470,6 +2471,16 @@ def plot_series(rows, path, steps=None):
     plt.close(fig)
 
 
+def say_zone_not_taken(text, option):
+    """Ends the script for an option's time that ends with a time zone: the observations' times
+    are read as written (in their one zone), so the options' are too, without it."""
+    date = DATE.match(text.strip())
+    timed = TIME_OF_DAY.match(text.strip(), date.end()) if date and date.group(3) else None
+    if timed and timed.end() < len(text.strip()) and ZONE.fullmatch(text.strip(), timed.end()):
+        sys.exit(f"{option} {text!r}: give the time without its time zone (the observations' times are read as "
+                 "written, in their one zone)")
+
+
 def chosen_time(text, option="--hour"):
     """--hour's (year, month, day, hour), or for another option (--minute, --start, --end) the
     time as (year, month, day, hour, minute), written as the observations write a time
@@ -2479,6 +2490,7 @@ def chosen_time(text, option="--hour"):
     clock = TIME_OF_DAY.fullmatch(text.strip(), date.end()) if date and date.group(3) else None
     hour = option == "--hour"
     zero = clock.groups()[1 if hour else 2:] if clock else ()  # (minutes for an hour; seconds)
+    say_zone_not_taken(text, option)
     if not clock or any(int(v or 0) for v in zero):
         sys.exit(f"{option} {text!r}: expected a date and " + ("hour, YYYY-MM-DD HH:00" if hour else
                                                               "time, YYYY-MM-DD HH:MM"))

@@ -357,7 +357,8 @@ private:
       ThrowRowError(row,
         "'" + *time.Text + "' in column '" + this->TimeColumn +
           "' is not a date (YYYY, YYYY-MM or YYYY-MM-DD, optionally with hh:mm[:ss], 24:00 for "
-          "the day's end) or a finite number");
+          "the day's end, and a time zone such as Z or +01:00 of the same offset on every date) "
+          "or a finite number");
     }
     return *number;
   }
@@ -370,7 +371,7 @@ private:
     if (this->FirstDateRow < 0)
     {
       this->FirstDateRow = row;
-      this->FirstDateText = text;
+      this->FirstDateText = Trimmed(text);
       this->FirstOffset = offset;
       return;
     }
@@ -379,15 +380,15 @@ private:
       return;
     }
     ThrowRowError(row,
-      "'" + text + "' in column '" + this->TimeColumn + "' " + ZoneOf(text) + ", where row " +
-        std::to_string(this->FirstDateRow) + "'s '" + this->FirstDateText + "' " +
-        ZoneOf(this->FirstDateText) +
+      "'" + Trimmed(text) + "' in column '" + this->TimeColumn + "' " + ZoneSaid(text) +
+        ", where row " + std::to_string(this->FirstDateRow) + "'s '" + this->FirstDateText + "' " +
+        ZoneSaid(this->FirstDateText) +
         ": times are read as written (not moved to UTC), so give them all in one zone, or all "
         "without one");
   }
 
   /// "has time zone Z", or "has no time zone".
-  static std::string ZoneOf(const std::string& text)
+  static std::string ZoneSaid(const std::string& text)
   {
     const std::optional<std::string> zone = tessera::TimeZoneOf(text);
     return zone ? "has time zone " + *zone : "has no time zone";

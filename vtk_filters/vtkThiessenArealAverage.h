@@ -35,17 +35,17 @@
  *   the gauges' own time: their time steps (a time-aware source, a file series) are then the
  *   filter's, and a requested time goes up to them. Times are numbers, or text holding ISO dates
  *   (YYYY, YYYY-MM, YYYY-MM-DD, optionally with a time of day, and with a time zone such as Z or
- *   +01:00 where every date has the same one: times are read as written, in that zone) or
- *   numbers, or a whole year column with a month column (MonthColumn); dates become decimal years on a month grid: 1963-08 (or
- *   1963-08-01, or year 1963 with month 8) is 1963 + 7/12, and a day is its share of its month
- *   (core/decimal_time.h). Values are numbers, NaN where missing; a text value column (what a CSV
- *   reader gives when markers stand among the numbers) also takes an empty field, NA, N/A, NaN or
- *   null as missing. A CSV file read by ParaView or vtkDelimitedTextReader can thus be used as it
- *   is, with one caution: those readers turn an empty field of an otherwise numeric column into 0
- *   (a reported zero), so write missing values as NaN or NA, or turn the reader's
- *   DetectNumericColumns off (the columns stay text, which this filter reads itself: an empty value
- *   is then missing). A text value with a decimal comma (12,5) is an error that says so: only
- *   decimal points are read.
+ *   +01:00 where every date has the same offset: times are read as written, in that zone) or
+ *   numbers, or a whole year column with a month column (MonthColumn); dates become decimal years
+ *   on a month grid: 1963-08 (or 1963-08-01, or year 1963 with month 8) is 1963 + 7/12, and a day
+ *   is its share of its month (core/decimal_time.h). Values are numbers, NaN where missing; a text
+ *   value column (what a CSV reader gives when markers stand among the numbers) also takes an
+ *   empty field, NA, N/A, NaN or null as missing. A CSV file read by ParaView or
+ *   vtkDelimitedTextReader can thus be used as it is, with one caution: those readers turn an
+ *   empty field of an otherwise numeric column into 0 (a reported zero), so write missing values
+ *   as NaN or NA, or turn the reader's DetectNumericColumns off (the columns stay text, which this
+ *   filter reads itself: an empty value is then missing). A text value with a decimal comma (12,5)
+ *   is an error that says so: only decimal points are read.
  *   A row is used only when its station is one of the gauges' and it has a time (or year and
  *   month): a row with an empty or blank station id (or a NaN one), an empty time or month field
  *   (blank text, or NaN), or a station id that no gauge has is not used and makes no time step

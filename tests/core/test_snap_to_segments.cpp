@@ -70,7 +70,7 @@ TEST(SnapToSegments, JunctionsBecomeVerticesOfTheOtherRingInOrder)
   }
 }
 
-TEST(SnapToSegments, RingsWithoutSegmentNumbersAreTheSameRings)
+TEST(RingInsertions, RingsWithoutSegmentNumbersAreTheSameRings)
 {
   // Two rings; insertions on the first ring's edges 0 and 2 and on the second's last edge (6),
   // one of them equal to the vertex written before it (added once) and two on one edge.

@@ -1409,10 +1409,10 @@ def test_hourly_observations_give_hourly_means():
         days = read_csv(os.path.join(directory, "ends", "areal_mean.csv"))
         assert_that([(r["day"], r["stations_used"]) for r in days] == [("30", "1"), ("31", "1")] and "hour" not in days[0],
                     f"days at 24:00: {days}")
-        # Times all in one time zone (Z, and +00:00 the same offset) are read as written: the same
+        # Times all in one time zone (Z, z and +00:00 the same offset) are read as written: the same
         # means as the times without it.
         means = {}
-        for name, zones in (("plain", ("", "", "")), ("zoned", ("Z", "+00:00", "Z"))):
+        for name, zones in (("plain", ("", "", "")), ("zoned", ("Z", "+00:00", "z"))):
             text = "station_id,date,precip\n" + "".join(
                 f"{s},2001-03-01T{t}{z},{v}\n" for (s, t, v), z in zip((("N1", "06:00", 1), ("N2", "06:00", 3),
                                                                         ("N1", "07:00", 2)), zones))
@@ -1457,6 +1457,7 @@ def test_hourly_observations_give_hourly_means():
             ("station_id,year,month,day,hour,time,precip\nN1,2001,3,1,6,06:00,1\n", {},
              "has a time column beside its hour column: leave one of them out"),
             (hourly, {"hour": "2001-03-01T6"}, "--hour '2001-03-01T6': expected a date and hour"),
+            (hourly, {"hour": "2001-03-01 06:00Z"}, "--hour '2001-03-01 06:00Z': give the time without its time zone"),
             (hourly, {"hour": "2001-03-01 06:30"}, "--hour '2001-03-01 06:30': expected a date and hour"),
             ("station_id,date,precip\nN1,2001-03,1\nN2,2001-03-01 06:00,1\n", {},
              "'2001-03-01 06:00' is an hour, where line 2 gives a month"),
