@@ -1193,12 +1193,15 @@ def check_zone(rows, zone, row, path, line):
         rows.zone = (zone, line, row["date"].strip() if "date" in row else None)
         return
     first, first_line, first_text = rows.zone
-    offset = lambda z: z[1] if z else None  # (+00:00 is Z's zone)
-    if offset(zone) != offset(first):
-        said = lambda z: f"has time zone {z[0]}" if z else "has no time zone"
-        csv_input.fail(f"{path}:{line}: column 'date': {row['date'].strip()!r} {said(zone)}, where line {first_line}'s "
-                       f"{first_text!r} {said(first)}: times are read as written (not moved to UTC), so give them "
-                       "all in one zone, or all without one")
+    if (zone[1] if zone else None) != (first[1] if first else None):  # (by offset: +00:00 is Z)
+        csv_input.fail(f"{path}:{line}: column 'date': {row['date'].strip()!r} {zone_said(zone)}, where line "
+                       f"{first_line}'s {first_text!r} {zone_said(first)}: times are read as written (not moved to "
+                       "UTC), so give them all in one zone, or all without one")
+
+
+def zone_said(zone):
+    """'has time zone Z' for a zone_of's zone, or 'has no time zone' for None."""
+    return f"has time zone {zone[0]}" if zone else "has no time zone"
 
 
 def keep_period(rows, period, steps, step_of, path, bound_texts):
