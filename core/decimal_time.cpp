@@ -329,4 +329,24 @@ std::optional<ZonedTime> IsoDateTimeInZone(std::string_view text)
   };
 }
 
+std::optional<DateTimeAndZone> IsoDateTimeAndZone(std::string_view text)
+{
+  const std::optional<DateTimeRead> read = ReadDateTime(text);
+  if (!read)
+  {
+    return std::nullopt;
+  }
+  DateTimeAndZone out;
+  if (!read->Rest.empty())
+  {
+    out.OffsetMinutes = read->HasTime ? ZoneOffsetMinutes(read->Rest) : std::nullopt;
+    if (!out.OffsetMinutes)
+    {
+      return std::nullopt; // (something after the date that is no zone)
+    }
+  }
+  out.Time = TimeOfDate(read->Year, read->Month, read->Day, read->Seconds);
+  return out;
+}
+
 } // namespace tessera

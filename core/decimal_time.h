@@ -57,4 +57,16 @@ struct ZonedTime
 /// Nothing for text without a zone (or with an offset beyond 23:59).
 std::optional<ZonedTime> IsoDateTimeInZone(std::string_view text);
 
+/// A date read once whether or not a time zone ends it, for a caller that takes both kinds (the
+/// areal-average filter, at every row of a series): IsoDateTime's time without one, or
+/// IsoDateTimeInZone's time and offset with one.
+struct DateTimeAndZone
+{
+  double Time = 0.0;
+  std::optional<int> OffsetMinutes; ///< nothing without a zone
+};
+
+/// IsoDateTime's reading of text, or IsoDateTimeInZone's; nothing where both give nothing.
+std::optional<DateTimeAndZone> IsoDateTimeAndZone(std::string_view text);
+
 } // namespace tessera

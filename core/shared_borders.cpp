@@ -510,7 +510,7 @@ void AddEdgesHolding(const ScaledPieces& s,
     const Point2& b = v[s.Next[*e]];
     if (s.RingOf[*e] == s.RingOf[k] || !InEdgeBox(a, b, v[k]))
     {
-      continue; // (a piece's own vertex is never inside its own edge: its ring is simple)
+      continue; // (its own piece's edge, never: the ring is simple; or too far to be inside)
     }
     const double t = InsideParameter(a, b, v[k]);
     if (t > 0.0)

@@ -340,15 +340,11 @@ private:
   /// Columns off, which the README advises for files with blank missing values).
   double Date(vtkIdType row, const NumberColumn::Cell& time) const
   {
-    if (const std::optional<double> t = tessera::IsoDateTime(*time.Text))
+    // (read once, with its zone or without: two readings had parsed every zoned date twice)
+    if (const std::optional<tessera::DateTimeAndZone> t = tessera::IsoDateTimeAndZone(*time.Text))
     {
-      this->CheckZone(row, *time.Text, std::nullopt);
-      return *t;
-    }
-    if (const std::optional<tessera::ZonedTime> zoned = tessera::IsoDateTimeInZone(*time.Text))
-    {
-      this->CheckZone(row, *time.Text, zoned->OffsetMinutes);
-      return zoned->Time;
+      this->CheckZone(row, *time.Text, t->OffsetMinutes);
+      return t->Time;
     }
     const std::optional<double> number = time.Number();
     this->OnlyDates = false;
@@ -1247,16 +1243,10 @@ int vtkThiessenArealAverage::GetNumberOfTimeSteps()
 //------------------------------------------------------------------------------
 double vtkThiessenArealAverage::TimeOfDate(const char* date)
 {
-  if (!date)
-  {
-    return std::numeric_limits<double>::quiet_NaN();
-  }
-  if (const std::optional<tessera::ZonedTime> zoned = tessera::IsoDateTimeInZone(date))
-  {
-    return zoned->Time; // (as the observations' dates in one zone are read: as written)
-  }
-  const std::optional<double> time = tessera::IsoDateTime(date);
-  return time ? *time : std::numeric_limits<double>::quiet_NaN();
+  // (a zone left off, as the observations' dates in one zone are read: as written)
+  const std::optional<tessera::DateTimeAndZone> time =
+    date ? tessera::IsoDateTimeAndZone(date) : std::nullopt;
+  return time ? time->Time : std::numeric_limits<double>::quiet_NaN();
 }
 
 //------------------------------------------------------------------------------

@@ -13,7 +13,9 @@
 #include <string>
 #include <vector>
 
+using tessera::DateTimeAndZone;
 using tessera::IsoDateTime;
+using tessera::IsoDateTimeAndZone;
 using tessera::IsoDateTimeInZone;
 using tessera::MonthTime;
 using tessera::TimeZoneOf;
@@ -171,6 +173,38 @@ TEST(DecimalTime, ATimeInAZoneIsReadAsWrittenWithTheZonesOffset)
   const std::optional<ZonedTime> dayEnd = IsoDateTimeInZone("1963-08-01T24:00Z");
   ASSERT_TRUE(dayEnd);
   EXPECT_EQ(dayEnd->Time, IsoDateTime("1963-08-02").value());
+}
+
+TEST(DecimalTime, ADateWithOrWithoutAZoneIsReadOnceAsEachReadingReadsIt)
+{
+  for (const char* text : { "1963",
+         " 1963-08 ",
+         "1963-08-16 18:00:00",
+         "1963-08-31T24:00",
+         "1963-08-01T10:00:00Z",
+         "1963-08-01 10:00+05:30",
+         "1963-08-31T24:00-0700",
+         "1963-08-01Z",
+         "1963-08-01T10:00+24:00",
+         "1963-08-01T10:00 Z",
+         "1963-13-01",
+         "abc" })
+  {
+    const std::optional<DateTimeAndZone> read = IsoDateTimeAndZone(text);
+    const std::optional<double> plain = IsoDateTime(text);
+    const std::optional<ZonedTime> zoned = IsoDateTimeInZone(text);
+    ASSERT_EQ(read.has_value(), plain.has_value() || zoned.has_value()) << text;
+    if (plain)
+    {
+      EXPECT_EQ(read->Time, *plain) << text;
+      EXPECT_FALSE(read->OffsetMinutes) << text;
+    }
+    if (zoned)
+    {
+      EXPECT_EQ(read->Time, zoned->Time) << text;
+      EXPECT_EQ(read->OffsetMinutes, zoned->OffsetMinutes) << text;
+    }
+  }
 }
 
 TEST(DecimalTime, MalformedAndImpossibleDatesAreRefused)
