@@ -126,6 +126,9 @@ std::size_t BitmapWords(std::size_t gauges)
 // Tiles derived locally (some 0.5 us each: they miss the cache) per thread, at least; as for
 // ComputeTilesOf.
 constexpr std::int64_t LocalTilesPerThread = 250;
+/// Gauges whose values a thread of MarkReporting reads, at least (below that the pass stays on
+/// the calling thread: it costs some 1-2 ns a gauge, a hand-off some microseconds).
+constexpr std::int64_t MarksPerThread = 16384;
 
 /// Sorts values, each in [0, range), by marking them in a bitmap of the range and reading it back
 /// (bits: all zero before and after): for the 2400 tiles changed at a step among 100k gauges,
@@ -288,7 +291,8 @@ struct ThiessenArealAverage::State
   // centre far outside its rounding's usual size (from a nearly collinear triple) could exceed the
   // margin, and then the derived tile itself is off by as much.
   double ClearMargin = 0.0;
-  std::vector<std::int32_t> Neighbours; // Apply's scratch
+  std::vector<std::int32_t> Neighbours;  // Apply's scratch
+  std::vector<std::int32_t> PrefetchIds; // PrefetchForRemovals' and PrefetchForInsertions'
   /// What clipping and measuring a tile needs besides the tile: one per thread of a clipping pass,
   /// written at every tile by that thread, on cache lines of its own (cache_line.h).
   struct alignas(CacheLineBytes) ClipScratch
@@ -313,14 +317,21 @@ struct ThiessenArealAverage::State
   std::vector<char> Marked; // DeriveChanged's, per engine id
   // Wanted and CachedArea > 0 as bitmaps (BitmapWords), so that a step finds its weighted gauges
   // by reading two bits per gauge instead of a byte and a double: at 100k gauges that pass read
-  // 0.9 MB and took a twentieth of an update. PositiveArea is brought up to date with CachedArea
-  // after each pass that stores areas (SyncPositiveArea; the clipping threads write the areas of
-  // gauges that may share a word).
+  // 0.9 MB and took a twentieth of an update. The clipping threads set PositiveArea's bits as
+  // they store the areas (MarkPositiveArea).
   std::vector<std::uint64_t> WantedBits;
   std::vector<std::uint64_t> PositiveArea;
   // When updating, the gauges whose Wanted differs from Used, ascending (MarkReporting): a
   // step's changes, found while marking.
   std::vector<std::int32_t> ChangedGauges;
+  /// MarkWords' results for its words, joined in order by MarkReporting.
+  struct MarkPart
+  {
+    std::vector<std::int32_t> Changed;
+    int Used = 0;
+    bool Infinite = false;
+  };
+  std::vector<OwnCacheLines<MarkPart>> MarkParts; // MarkReporting's, per chunk (kept: reused)
 
   void ClearArea(std::int32_t g)
   {
@@ -328,16 +339,21 @@ struct ThiessenArealAverage::State
     this->PositiveArea[g >> 6] &= ~(std::uint64_t(1) << (g & 63));
   }
 
-  void SyncPositiveArea(std::int32_t g)
+  /// Gauge g's bit of PositiveArea set as its new area is positive or not, by a clipping thread.
+  /// Atomically: the threads store the areas of gauges whose bits share a word. (Relaxed: the
+  /// pass's end orders the writes before any read. A serial pass after the clipping, reading each
+  /// stored area back from wherever in 0.8 MB, took some 25 us of a 100k-gauge update.)
+  void MarkPositiveArea(std::int32_t g, double area)
   {
     const std::uint64_t bit = std::uint64_t(1) << (g & 63);
-    if (this->CachedArea[g] > 0.0)
+    std::uint64_t* const word = &this->PositiveArea[g >> 6];
+    if (area > 0.0)
     {
-      this->PositiveArea[g >> 6] |= bit;
+      __atomic_fetch_or(word, bit, __ATOMIC_RELAXED);
     }
     else
     {
-      this->PositiveArea[g >> 6] &= ~bit;
+      __atomic_fetch_and(word, ~bit, __ATOMIC_RELAXED);
     }
   }
 
@@ -355,29 +371,32 @@ struct ThiessenArealAverage::State
       const int used = this->MarkReportingGrouped(values);
       for (std::size_t w = 0; w < BitmapWords(n); ++w)
       {
-        this->CompleteWord(w);
+        this->CompleteWord(w, this->ChangedGauges);
       }
       return used;
     }
-    // Without branches on the values: in a real record, which gauges report is close to random,
-    // and a mispredicted branch per gauge was most of this loop's time. Through local pointers: a
-    // char store may alias anything, so wanted[g] made the compiler reload the vectors' data
-    // pointers at every gauge (a fifth of a 100k-gauge step's own time went to this loop).
-    // Sixty-four gauges at a time, each word completed while its marks are in the cache.
-    const double* const value = values.data();
-    char* const mark = this->Wanted.data();
+    // In chunks of words on the cores: the pass reads every value, 0.8 MB at 100k gauges, fresh
+    // from memory at each step, and one core alone waited on it for a tenth of an update.
+    const std::vector<std::int32_t> bounds =
+      parallel::ChunkBounds(static_cast<std::int32_t>(BitmapWords(n)),
+        parallel::ThreadCount(static_cast<std::int64_t>(n), MarksPerThread));
+    const std::size_t chunks = bounds.size() - 1;
+    if (this->MarkParts.size() < chunks)
+    {
+      this->MarkParts.resize(chunks);
+    }
+    parallel::RunChunks(chunks,
+      [&](std::size_t k)
+      { this->MarkWords(values.data(), bounds[k], bounds[k + 1], this->MarkParts[k].Value); });
     int used = 0;
     bool infinite = false;
-    for (std::size_t w = 0; w < BitmapWords(n); ++w)
+    for (std::size_t k = 0; k < chunks; ++k)
     {
-      for (std::size_t g = 64 * w; g < std::min(n, 64 * w + 64); ++g)
-      {
-        const bool reported = !std::isnan(value[g]);
-        infinite |= std::isinf(value[g]);
-        mark[g] = static_cast<char>(reported);
-        used += reported;
-      }
-      this->CompleteWord(w);
+      const MarkPart& part = this->MarkParts[k].Value;
+      used += part.Used;
+      infinite |= part.Infinite;
+      this->ChangedGauges.insert(
+        this->ChangedGauges.end(), part.Changed.begin(), part.Changed.end());
     }
     if (infinite)
     {
@@ -386,13 +405,41 @@ struct ThiessenArealAverage::State
     return used;
   }
 
+  /// MarkReporting's words [begin, end) (gauges 64 begin .. 64 end - 1), without duplicates.
+  void MarkWords(const double* value, std::size_t begin, std::size_t end, MarkPart& part)
+  {
+    // Without branches on the values: in a real record, which gauges report is close to random,
+    // and a mispredicted branch per gauge was most of this loop's time. Through local pointers: a
+    // char store may alias anything, so wanted[g] made the compiler reload the vectors' data
+    // pointers at every gauge (a fifth of a 100k-gauge step's own time went to this loop).
+    // Sixty-four gauges at a time, each word completed while its marks are in the cache.
+    const std::size_t n = this->Wanted.size();
+    char* const mark = this->Wanted.data();
+    int used = 0;
+    bool infinite = false;
+    part.Changed.clear();
+    for (std::size_t w = begin; w < end; ++w)
+    {
+      for (std::size_t g = 64 * w; g < std::min(n, 64 * w + 64); ++g)
+      {
+        const bool reported = !std::isnan(value[g]);
+        infinite |= std::isinf(value[g]);
+        mark[g] = static_cast<char>(reported);
+        used += reported;
+      }
+      this->CompleteWord(w, part.Changed);
+    }
+    part.Used = used;
+    part.Infinite = infinite;
+  }
+
   /// Packs word w's marks (gauges 64w..64w+63) into WantedBits and, when updating, appends those
-  /// of its gauges whose Wanted and Used differ to ChangedGauges. Eight gauges per comparison
-  /// (both hold 0 or 1): few change at a step, so most eights are equal and skipped. (A branch
-  /// per gauge on its presence, mispredicted for a third of them, was most of the time of listing
+  /// of its gauges whose Wanted and Used differ to changed. Eight gauges per comparison (both
+  /// hold 0 or 1): few change at a step, so most eights are equal and skipped. (A branch per
+  /// gauge on its presence, mispredicted for a third of them, was most of the time of listing
   /// changes once: 0.4 of 0.45 ms per step among 100k gauges. A second pass over both arrays to
   /// list them took a twentieth of an update.)
-  void CompleteWord(std::size_t w)
+  void CompleteWord(std::size_t w, std::vector<std::int32_t>& changed)
   {
     const std::size_t first = 64 * w, end = std::min(this->Wanted.size(), first + 64);
     const char* const now = this->Wanted.data();
@@ -407,7 +454,7 @@ struct ThiessenArealAverage::State
       const std::uint64_t differs = BytesAt(now + g, end - g) ^ BytesAt(before + g, end - g);
       for (std::uint64_t differ = differs; differ != 0; differ &= differ - 1)
       {
-        this->ChangedGauges.push_back(static_cast<std::int32_t>(g + LowestSetBit(differ) / 8));
+        changed.push_back(static_cast<std::int32_t>(g + LowestSetBit(differ) / 8));
       }
     }
   }
@@ -881,6 +928,7 @@ struct ThiessenArealAverage::State
     std::vector<std::int32_t>* touched)
   {
     const bool local = touched != nullptr; // (a step that is not has no deferred gauge)
+    this->PrefetchForRemovals(removed);
     for (const std::int32_t g : removed)
     {
       this->RemoveGauge(g, touched);
@@ -897,11 +945,86 @@ struct ThiessenArealAverage::State
         this->RemoveGauge(g, touched);
       }
     }
+    this->PrefetchForInsertions(inserted);
     for (const std::int32_t g : inserted)
     {
       this->InsertGauge(g, touched);
     }
     return touched != nullptr;
+  }
+
+  // Apply's operations lie apart in memory (a few hundred among 100k gauges, and their gauge
+  // numbers anywhere), so each began by waiting for cache misses of its own, one operation after
+  // the other: its gauge's entries, then its vertex, then that vertex's triangle. These passes ask
+  // for all of them first, a level at a time, so that the misses of a level overlap (they took a
+  // tenth off the removals and insertions of the synthetic 100k-gauge stream). They read only,
+  // and ask for nothing when more than PrefetchedOperations operations are listed: those of the
+  // first step, or of a step that changes many gauges, would leave the cache before their turn.
+
+  static constexpr std::size_t PrefetchedOperations = 8192;
+
+  void PrefetchForRemovals(const std::vector<std::int32_t>& removed)
+  {
+    if (removed.size() > PrefetchedOperations)
+    {
+      return;
+    }
+    for (const std::int32_t g : removed)
+    {
+      __builtin_prefetch(&this->EngineOfGauge[g]);
+      __builtin_prefetch(&this->RemovedId[g]);
+      __builtin_prefetch(&this->Used[g]);
+    }
+    std::vector<std::int32_t>& ids = this->PrefetchIds;
+    ids.clear();
+    for (const std::int32_t g : removed)
+    {
+      ids.push_back(this->EngineOfGauge[g]);
+      __builtin_prefetch(&this->TileBounds[ids.back()]);
+    }
+    this->Tessellation->Prefetch(ids.data(), ids.size());
+  }
+
+  /// For insertions: the gauges' entries and their old ids' points, then their neighbours along
+  /// the curve (PresentNear), then the vertices where their walks start.
+  void PrefetchForInsertions(const std::vector<std::int32_t>& inserted)
+  {
+    if (inserted.size() > PrefetchedOperations)
+    {
+      return;
+    }
+    const std::int64_t last = static_cast<std::int64_t>(this->CurveOrder.size()) - 1;
+    const auto before = [](std::int64_t rank) { return std::max<std::int64_t>(0, rank - 1); };
+    const auto after = [last](std::int64_t rank) { return std::min(last, rank + 1); };
+    for (const std::int32_t g : inserted)
+    {
+      __builtin_prefetch(&this->RemovedId[g]);
+      __builtin_prefetch(&this->CurveRank[g]);
+      __builtin_prefetch(&this->EngineOfGauge[g]);
+      __builtin_prefetch(&this->Used[g]);
+    }
+    std::vector<std::int32_t>& ids = this->PrefetchIds;
+    ids.clear();
+    for (const std::int32_t g : inserted)
+    {
+      const std::int64_t rank = this->CurveRank[g];
+      __builtin_prefetch(&this->CurveOrder[before(rank)]);
+      __builtin_prefetch(&this->CurveOrder[after(rank)]);
+      ids.push_back(this->RemovedId[g]);
+    }
+    this->Tessellation->Prefetch(ids.data(), ids.size());
+    for (const std::int32_t g : inserted)
+    {
+      const std::int64_t rank = this->CurveRank[g];
+      __builtin_prefetch(&this->EngineOfGauge[this->CurveOrder[before(rank)]]);
+      __builtin_prefetch(&this->EngineOfGauge[this->CurveOrder[after(rank)]]);
+    }
+    ids.clear();
+    for (const std::int32_t g : inserted)
+    {
+      ids.push_back(this->PresentNear(g));
+    }
+    this->Tessellation->Prefetch(ids.data(), ids.size());
   }
 
   /// Apply's removal of gauge g: its neighbours touched (when listed) and their boxes grown by
@@ -1052,11 +1175,14 @@ struct ThiessenArealAverage::State
     }
   }
 
-  /// Caches the clipped area (and, when updating, the box) of engine point id's tile.
+  /// Caches the clipped area (its bit of PositiveArea too, and, when updating, the box) of engine
+  /// point id's tile.
   void Store(std::int32_t id, const Point2* tile, std::size_t size, ClipScratch& scratch)
   {
     const std::int32_t g = this->GaugeOfEngine[id];
-    this->CachedArea[g] = this->ClippedArea(tile, size, static_cast<std::size_t>(g), scratch);
+    const double area = this->ClippedArea(tile, size, static_cast<std::size_t>(g), scratch);
+    this->CachedArea[g] = area;
+    this->MarkPositiveArea(g, area);
     if (this->Settings.Incremental)
     {
       this->TileBounds[id] = BoundsOf(tile, size);
@@ -1083,10 +1209,6 @@ struct ThiessenArealAverage::State
   {
     const TileSet tiles = TessellationDual(*this->Tessellation).Tiles();
     this->Refresh(tiles);
-    for (const std::int32_t id : tiles.PointIds)
-    {
-      this->SyncPositiveArea(this->GaugeOfEngine[id]);
-    }
     return tiles.PointIds.size();
   }
 
@@ -1174,10 +1296,6 @@ struct ThiessenArealAverage::State
       [this](std::size_t chunk, std::int32_t id, const Point2* tile, std::size_t size)
       { this->Store(id, tile, size, this->Scratch[chunk]); },
       &this->LocalTiles);
-    for (const std::int32_t id : changed)
-    {
-      this->SyncPositiveArea(this->GaugeOfEngine[id]);
-    }
     return derived;
   }
 };

@@ -1518,6 +1518,38 @@ std::int32_t DirichletTessellation::EdgeLeaving(std::int32_t id) const
   return this->Status(id) == PointStatus::Accepted ? this->FindVertexEdge(id) : -1;
 }
 
+void DirichletTessellation::Prefetch(const std::int32_t* ids, std::size_t count) const
+{
+  const std::size_t n = this->Coordinates.size();
+  for (std::size_t k = 0; k < count; ++k)
+  {
+    const std::size_t id = std::size_t(ids[k]); // (a negative id wraps round to out of range)
+    if (id < n)
+    {
+      __builtin_prefetch(&this->Coordinates[id]);
+      if (id < this->StatusBytes.size())
+      {
+        __builtin_prefetch(&this->StatusBytes[id]);
+      }
+      if (id < this->VertexEdges.size())
+      {
+        __builtin_prefetch(&this->VertexEdges[id]);
+      }
+    }
+  }
+  // The edges' triangles, once their edges are on their way (independent loads, which overlap).
+  for (std::size_t k = 0; k < count && !this->VertexEdges.empty(); ++k)
+  {
+    const std::size_t id = std::size_t(ids[k]);
+    const std::int32_t e = id < this->VertexEdges.size() ? this->VertexEdges[id] : -1;
+    if (e >= 0 && std::size_t(e) < this->Origins.size())
+    {
+      __builtin_prefetch(&this->Origins[std::size_t(e - e % 3)]);
+      __builtin_prefetch(&this->Twins[std::size_t(e - e % 3)]);
+    }
+  }
+}
+
 void DirichletTessellation::AppendNeighbours(std::int32_t id, std::vector<std::int32_t>& out) const
 {
   const std::int32_t first = this->EdgeLeaving(id);

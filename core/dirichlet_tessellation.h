@@ -178,6 +178,14 @@ public:
   /// circles through just id and j, which makes id-j an edge of every Delaunay triangulation.
   /// O(degree) when vertex edges are tracked (see EdgeLeaving).
   void AppendNeighbours(std::int32_t id, std::vector<std::int32_t>& out) const;
+  /// Asks the processor to bring toward its cache what operations at the given points read first
+  /// (their coordinates and statuses, and, where vertex edges are tracked, the triangle of each
+  /// one's edge), waiting only for the vertex edges it reads to find those triangles. A caller
+  /// about to remove, or walk from, many vertices spread over a large triangulation calls it
+  /// beforehand: the misses then overlap, where its operations, one after the other, each waited
+  /// for its own (Remove, AppendNeighbours and Reinsert read these first). Changes nothing; ids
+  /// out of range are skipped.
+  void Prefetch(const std::int32_t* ids, std::size_t count) const;
   bool IsFreeTriangle(std::int32_t t) const { return this->Origins[3 * std::size_t(t)] == Free; }
   /// True when no two adjacent real triangles are exactly co-circular (so the tessellation has
   /// no degenerate vertex), as tracked since construction: the Delaunay faces are then exactly

@@ -500,7 +500,66 @@ void LocalTilesOfRange(const Tess& tess,
   }
 }
 
-// Visits the tiles of starts[begin, end) as they are made (VisitTilesOf's chunk).
+/// How many rings VisitTilesOfRange walks at once (CollectRingsTogether).
+constexpr std::size_t RingsWalkedTogether = 4;
+
+/// The rings (CollectRing) of starts[0, count), count at most RingsWalkedTogether, walked a step
+/// of each in turn. A step of a walk loads a twin that the next step needs, so a lone walk waits
+/// for each cache miss in turn, where walks taken together wait for theirs at once. (The tiles an
+/// update derives lie apart in memory: in the synthetic 100k-gauge stream, walking their rings one
+/// at a time was a fifth of this pass; four at once, with the next four's first triangles asked
+/// for meanwhile, took 5-10% off the pass.) Each step also asks for its triangle's origins, which
+/// the labelling of the ring's faces reads next.
+void CollectRingsTogether(const Tess& tess,
+  const std::pair<std::int32_t, std::int32_t>* starts,
+  std::size_t count,
+  std::vector<std::int32_t>* rings)
+{
+  std::int32_t at[RingsWalkedTogether];
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    rings[i].clear();
+    at[i] = starts[i].second;
+  }
+  const std::int32_t* const origins = tess.Origin().data();
+  for (std::size_t left = count; left > 0;)
+  {
+    for (std::size_t i = 0; i < count; ++i)
+    {
+      const std::int32_t e = at[i];
+      if (e < 0)
+      {
+        continue; // (this ring is closed)
+      }
+      rings[i].push_back(e);
+      __builtin_prefetch(origins + (e - e % 3));
+      at[i] = tess.RingNext(e);
+      if (at[i] == starts[i].second)
+      {
+        at[i] = -1;
+        --left;
+      }
+    }
+  }
+}
+
+/// Asks for the first triangles of starts[0, count)'s rings and their points' coordinates, so
+/// that they are on their way while the rings before them are labelled and visited.
+void PrefetchRingStarts(const Tess& tess,
+  const std::pair<std::int32_t, std::int32_t>* starts,
+  std::size_t count)
+{
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    const auto& [v, e] = starts[i];
+    __builtin_prefetch(tess.Origin().data() + (e - e % 3));
+    __builtin_prefetch(tess.Twin().data() + (e - e % 3));
+    __builtin_prefetch(tess.Points().data() + v);
+  }
+}
+
+// Visits the tiles of starts[begin, end) as they are made (VisitTilesOf's chunk), their rings
+// walked RingsWalkedTogether at a time while the next ones' starts are fetched.
 void VisitTilesOfRange(const Tess& tess,
   const std::vector<std::pair<std::int32_t, std::int32_t>>& starts,
   std::size_t begin,
@@ -512,18 +571,24 @@ void VisitTilesOfRange(const Tess& tess,
   LocalFaces faces(tess, true, end - begin, table);
   std::vector<TileEdge> edges;
   std::vector<Point2> polygon;
-  std::vector<std::int32_t> ring;
-  for (std::size_t k = begin; k < end; ++k)
+  std::vector<std::int32_t> rings[RingsWalkedTogether];
+  for (std::size_t k = begin; k < end; k += RingsWalkedTogether)
   {
-    const auto& [v, start] = starts[k];
-    CollectRing(tess, start, ring);
-    for (const std::int32_t e : ring)
+    const std::size_t count = std::min(RingsWalkedTogether, end - k);
+    CollectRingsTogether(tess, starts.data() + k, count, rings);
+    const std::size_t next = k + count;
+    PrefetchRingStarts(tess, starts.data() + next, std::min(RingsWalkedTogether, end - next));
+    for (std::size_t i = 0; i < count; ++i)
     {
-      faces.Resolve(e / 3);
+      const std::int32_t v = starts[k + i].first;
+      for (const std::int32_t e : rings[i])
+      {
+        faces.Resolve(e / 3);
+      }
+      bool interior = false;
+      RingTilePolygon(tess, faces, v, rings[i], edges, polygon, interior);
+      visit(chunk, v, polygon.data(), polygon.size());
     }
-    bool interior = false;
-    RingTilePolygon(tess, faces, v, ring, edges, polygon, interior);
-    visit(chunk, v, polygon.data(), polygon.size());
   }
 }
 

@@ -322,6 +322,67 @@ TEST(ArealAverage, AGaugeOutsideTheCatchmentStillOwnsItsNearestPart)
   EXPECT_NEAR(step.Mean, 10.0 * step.Weights[0] + 20.0 * step.Weights[1], 1e-12);
 }
 
+// Among 50000 gauges a step marks the reporting ones in three chunks of words on three threads
+// (MarksPerThread, 16384 gauges), each listing the changes of its own words: its counts, weights
+// and mean must be those of one thread, bit for bit, updating and rebuilding, with gauges
+// toggling at the chunks' ends (words 260 and 521) and everywhere; and an infinite value in the
+// last chunk and another in the middle one are named by the first, as on one thread.
+TEST(ArealAverage, ReportsMarkedInChunksGiveTheSerialSteps)
+{
+  std::mt19937_64 random(31);
+  const std::vector<Point2> gauges = UniformGauges(50000, random, -109.0, -102.0, 37.0, 41.0);
+  const Square catchment(-108.0, 37.5, -103.0, 40.5);
+  std::uniform_real_distribution<double> value(0.0, 10.0);
+  std::bernoulli_distribution missing(0.05);
+  std::vector<std::vector<double>> steps(3, std::vector<double>(gauges.size()));
+  for (std::size_t t = 0; t < steps.size(); ++t)
+  {
+    for (std::size_t g = 0; g < gauges.size(); ++g)
+    {
+      const bool chunkEnd = (g >= 64 * 260 - 4 && g < 64 * 260 + 4) ||
+        (g >= 64 * 521 - 4 && g < 64 * 521 + 4); // (50000 gauges: 782 words, 3 chunks)
+      steps[t][g] = (chunkEnd ? t % 2 == 1 : missing(random)) ? NaN : value(random);
+    }
+  }
+  for (const bool incremental : { true, false })
+  {
+    ArealAverageSettings settings;
+    settings.Incremental = incremental;
+    std::vector<ArealStep> results[2];
+    std::string errors[2];
+    for (int run = 0; run < 2; ++run)
+    {
+      const tessera_test::ThreadLimitOverride limit(run == 0 ? 1 : 3);
+      ThiessenArealAverage average(gauges, catchment.Offsets, catchment.Ring, settings);
+      for (const auto& step : steps)
+      {
+        results[run].push_back(average.Step(step));
+      }
+      std::vector<double> infinite = steps.back();
+      infinite[49990] = INFINITY;
+      infinite[30000] = -INFINITY;
+      errors[run] = ErrorOf([&] { average.Step(infinite); });
+    }
+    const std::string mode = incremental ? "updating" : "rebuilding";
+    for (std::size_t t = 0; t < steps.size(); ++t)
+    {
+      const ArealStep& one = results[0][t];
+      const ArealStep& three = results[1][t];
+      const std::string where = mode + ", step " + std::to_string(t);
+      EXPECT_EQ(one.StationsUsed,
+        std::count_if(steps[t].begin(), steps[t].end(), [](double v) { return !std::isnan(v); }))
+        << where;
+      EXPECT_EQ(three.StationsUsed, one.StationsUsed) << where;
+      ASSERT_EQ(three.Gauges, one.Gauges) << where;
+      EXPECT_EQ(three.Weights, one.Weights) << where;
+      EXPECT_EQ(three.Mean, one.Mean) << where;
+    }
+    EXPECT_NE(errors[0].find("gauge 30000 has an infinite value"), std::string::npos)
+      << mode << ": " << errors[0];
+    EXPECT_EQ(errors[1], errors[0]) << mode;
+  }
+}
+
 TEST(ArealAverage, IncrementalUpdatesEqualRebuildsAndMissingGaugesHandOverTheirArea)
 {
   std::mt19937_64 random(11);

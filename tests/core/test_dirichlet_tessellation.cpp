@@ -17,6 +17,7 @@
 #include <cstring>
 #include <limits>
 #include <map>
+#include <memory>
 #include <numeric>
 #include <random>
 #include <set>
@@ -1613,6 +1614,51 @@ TEST(DirichletTessellation, OrderingTrianglesKeepsTheTessellation)
   EXPECT_GT(orderings, 100u);
 }
 
+// An ordering moves the triangles and remaps the vertex edges in chunks on the cores (one per
+// 50000 triangles): among 60000 points with 3000 removed and half of them put back (free slots,
+// scattered triangles, stale edges of removed ids), ordering on 3 threads must give the arrays
+// of 1 thread, element for element, and keep the tessellation.
+TEST(DirichletTessellation, OrderingInChunksMovesAsOneThreadDoes)
+{
+  const std::vector<Point2> points = UniformPoints(60000, 53);
+  const auto stream = [&points]()
+  {
+    auto t = std::make_unique<Tess>(UnitWindow(), points);
+    t->TrackVertexEdges();
+    for (std::int32_t id = 0; id < 60000; id += 20)
+    {
+      t->Remove(id);
+    }
+    for (std::int32_t id = 0; id < 60000; id += 40)
+    {
+      t->Reinsert(id);
+    }
+    return t;
+  };
+  const std::unique_ptr<Tess> one = stream(), three = stream();
+  ASSERT_GT(one->ScatteredTriangleCount(), 0u);
+  const Canonical before = MakeCanonical(*one);
+  {
+    const tessera_test::ThreadLimitOverride limit(1);
+    one->OrderTrianglesByVertex();
+  }
+  {
+    const tessera_test::ThreadLimitOverride limit(3);
+    three->OrderTrianglesByVertex();
+  }
+  ASSERT_GE(three->Origin().size() / 3, 100000u) << "too few triangles for chunks";
+  EXPECT_TRUE(std::equal(
+    one->Origin().begin(), one->Origin().end(), three->Origin().begin(), three->Origin().end()));
+  EXPECT_TRUE(
+    std::equal(one->Twin().begin(), one->Twin().end(), three->Twin().begin(), three->Twin().end()));
+  for (std::int32_t id = 0; id < std::int32_t(points.size()); ++id)
+  {
+    ASSERT_EQ(three->EdgeLeaving(id), one->EdgeLeaving(id)) << "point " << id;
+  }
+  CheckStructure(*three);
+  EXPECT_TRUE(MakeCanonical(*three) == before);
+}
+
 // Exact copies hand the vertex back and forth (removing the smaller id makes its copy the vertex,
 // reinserting it takes the vertex back): the id that stops being a vertex must not keep a stale
 // half-edge, which an ordering would map past the arrays' end. Ordered after every step, with
@@ -1960,6 +2006,58 @@ TEST(DirichletTessellation, EdgeLeavingNamesAnEdgeOfEveryVertexOnly)
     }
     EXPECT_EQ(t.EdgeLeaving(200), -1); // the duplicate
     EXPECT_EQ(t.EdgeLeaving(201), -1); // outside
+  }
+}
+
+// Prefetch only reads: on a batch build (no status bytes, no vertex edges), with vertex edges
+// tracked, and after removals (a removed id's edge is stale), any id (negative, past the points,
+// removed, a duplicate's) leaves the triangles, statuses and edges as they were. (Under the
+// sanitizers it also must not read out of bounds.)
+TEST(DirichletTessellation, PrefetchReadsOnlyAndTakesAnyId)
+{
+  std::vector<Point2> points = UniformPoints(300, 29);
+  points.push_back(points[9]); // 300 duplicates 9
+  for (const int mode : { 0, 1, 2 })
+  {
+    Tess t(UnitWindow(), points);
+    if (mode >= 1)
+    {
+      t.TrackVertexEdges();
+    }
+    if (mode == 2)
+    {
+      t.Remove(3);
+      t.Remove(40);
+      t.Insert({ 0.5, 0.5 });
+    }
+    std::vector<std::int32_t> ids;
+    for (std::int32_t id = -2; id <= std::int32_t(t.PointCount()) + 2; ++id)
+    {
+      ids.push_back(id);
+    }
+    ids.push_back(INT32_MAX);
+    ids.push_back(INT32_MIN);
+    const std::vector<std::int32_t> origins(t.Origin().begin(), t.Origin().end());
+    const std::vector<std::int32_t> twins(t.Twin().begin(), t.Twin().end());
+    std::vector<std::int32_t> edges;
+    std::vector<PointStatus> statuses;
+    for (std::int32_t id = 0; id < std::int32_t(t.PointCount()); ++id)
+    {
+      edges.push_back(t.EdgeLeaving(id));
+      statuses.push_back(t.Status(id));
+    }
+    t.Prefetch(ids.data(), ids.size());
+    t.Prefetch(nullptr, 0);
+    EXPECT_TRUE(std::equal(origins.begin(), origins.end(), t.Origin().begin(), t.Origin().end()))
+      << "mode " << mode;
+    EXPECT_TRUE(std::equal(twins.begin(), twins.end(), t.Twin().begin(), t.Twin().end()))
+      << "mode " << mode;
+    for (std::int32_t id = 0; id < std::int32_t(t.PointCount()); ++id)
+    {
+      EXPECT_EQ(t.EdgeLeaving(id), edges[id]) << "mode " << mode << ", id " << id;
+      EXPECT_EQ(t.Status(id), statuses[id]) << "mode " << mode << ", id " << id;
+    }
+    EXPECT_EQ(t.TracksVertexEdges(), mode >= 1) << "mode " << mode;
   }
 }
 
