@@ -65,7 +65,8 @@ enum class PointStatus : std::uint8_t
 /// Threads: separate objects may be used on separate threads at once, and one object may be read
 /// (its const members, NearestPoint(s) among them, and the results tiles.h derives from it) by
 /// several threads at once while none changes it. Insert, Reinsert and Remove need it to
-/// themselves. (The batch constructor and the derivations run on several threads of their own.)
+/// themselves. (The batch constructor, OrderTrianglesByVertex and the derivations run on several
+/// threads of their own.)
 class DirichletTessellation
 {
 public:
@@ -210,7 +211,8 @@ public:
   /// that, where ids were given in a spatial order, triangles near in space are near in memory
   /// again after many updates (triangle_order.cpp). The triangulation and every derived result
   /// stay the same (those listed in triangle order, such as a TileMesh's face-centre vertices,
-  /// in the new order); half-edge numbers held from before are void. O(triangles + ids).
+  /// in the new order); half-edge numbers held from before are void. O(triangles + ids), its
+  /// moves in chunks on the cores from 100000 triangles on.
   void OrderTrianglesByVertex();
 
 private:

@@ -325,8 +325,9 @@ TEST(ArealAverage, AGaugeOutsideTheCatchmentStillOwnsItsNearestPart)
 // Among 50000 gauges a step marks the reporting ones in three chunks of words on three threads
 // (MarksPerThread, 16384 gauges), each listing the changes of its own words: its counts, weights
 // and mean must be those of one thread, bit for bit, updating and rebuilding, with gauges
-// toggling at the chunks' ends (words 260 and 521) and everywhere; and an infinite value in the
-// last chunk and another in the middle one are named by the first, as on one thread.
+// toggling at the chunks' ends (words 260 and 521) and everywhere, no gauge sharing a place (that
+// path marks serially); an infinite value in the last chunk alone is found (its chunk's flag), and
+// with another in the middle chunk the first is named, as on one thread.
 TEST(ArealAverage, ReportsMarkedInChunksGiveTheSerialSteps)
 {
   std::mt19937_64 random(31);
@@ -349,19 +350,21 @@ TEST(ArealAverage, ReportsMarkedInChunksGiveTheSerialSteps)
     ArealAverageSettings settings;
     settings.Incremental = incremental;
     std::vector<ArealStep> results[2];
-    std::string errors[2];
+    std::string lastChunkError[2], twoChunksError[2];
     for (int run = 0; run < 2; ++run)
     {
       const tessera_test::ThreadLimitOverride limit(run == 0 ? 1 : 3);
       ThiessenArealAverage average(gauges, catchment.Offsets, catchment.Ring, settings);
+      ASSERT_TRUE(average.DuplicateGauges().empty());
       for (const auto& step : steps)
       {
         results[run].push_back(average.Step(step));
       }
       std::vector<double> infinite = steps.back();
       infinite[49990] = INFINITY;
+      lastChunkError[run] = ErrorOf([&] { average.Step(infinite); });
       infinite[30000] = -INFINITY;
-      errors[run] = ErrorOf([&] { average.Step(infinite); });
+      twoChunksError[run] = ErrorOf([&] { average.Step(infinite); });
     }
     const std::string mode = incremental ? "updating" : "rebuilding";
     for (std::size_t t = 0; t < steps.size(); ++t)
@@ -377,9 +380,12 @@ TEST(ArealAverage, ReportsMarkedInChunksGiveTheSerialSteps)
       EXPECT_EQ(three.Weights, one.Weights) << where;
       EXPECT_EQ(three.Mean, one.Mean) << where;
     }
-    EXPECT_NE(errors[0].find("gauge 30000 has an infinite value"), std::string::npos)
-      << mode << ": " << errors[0];
-    EXPECT_EQ(errors[1], errors[0]) << mode;
+    EXPECT_NE(lastChunkError[1].find("gauge 49990 has an infinite value"), std::string::npos)
+      << mode << ": " << lastChunkError[1];
+    EXPECT_EQ(lastChunkError[0], lastChunkError[1]) << mode;
+    EXPECT_NE(twoChunksError[1].find("gauge 30000 has an infinite value"), std::string::npos)
+      << mode << ": " << twoChunksError[1];
+    EXPECT_EQ(twoChunksError[0], twoChunksError[1]) << mode;
   }
 }
 

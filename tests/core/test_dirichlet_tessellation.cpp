@@ -1615,21 +1615,22 @@ TEST(DirichletTessellation, OrderingTrianglesKeepsTheTessellation)
 }
 
 // An ordering moves the triangles and remaps the vertex edges in chunks on the cores (one per
-// 50000 triangles): among 60000 points with 3000 removed and half of them put back (free slots,
-// scattered triangles, stale edges of removed ids), ordering on 3 threads must give the arrays
-// of 1 thread, element for element, and keep the tessellation.
+// 50000 triangles, and per 50000 ids): among 100000 points with 2500 removed and half of them put
+// back (free slots, scattered triangles, stale edges of removed ids), ordering on 3 threads (3
+// chunks of moves, 2 of ids) must give the arrays of 1 thread, element for element, and keep the
+// tessellation.
 TEST(DirichletTessellation, OrderingInChunksMovesAsOneThreadDoes)
 {
-  const std::vector<Point2> points = UniformPoints(60000, 53);
+  const std::vector<Point2> points = UniformPoints(100000, 53);
   const auto stream = [&points]()
   {
     auto t = std::make_unique<Tess>(UnitWindow(), points);
     t->TrackVertexEdges();
-    for (std::int32_t id = 0; id < 60000; id += 20)
+    for (std::int32_t id = 0; id < 100000; id += 40)
     {
       t->Remove(id);
     }
-    for (std::int32_t id = 0; id < 60000; id += 40)
+    for (std::int32_t id = 0; id < 100000; id += 80)
     {
       t->Reinsert(id);
     }
@@ -1646,7 +1647,8 @@ TEST(DirichletTessellation, OrderingInChunksMovesAsOneThreadDoes)
     const tessera_test::ThreadLimitOverride limit(3);
     three->OrderTrianglesByVertex();
   }
-  ASSERT_GE(three->Origin().size() / 3, 100000u) << "too few triangles for chunks";
+  ASSERT_GE(three->Origin().size() / 3, 150000u) << "too few triangles for 3 chunks";
+  ASSERT_GE(three->PointCount(), 100000u) << "too few ids for 2 chunks";
   EXPECT_TRUE(std::equal(
     one->Origin().begin(), one->Origin().end(), three->Origin().begin(), three->Origin().end()));
   EXPECT_TRUE(
