@@ -29,6 +29,76 @@
 
 namespace tessera
 {
+namespace
+{
+
+// The moves and the vertex edges' remapping run in chunks on the cores (from 50000 triangles or
+// ids per chunk): each triangle goes to its own new slot, each id's edge is its own, so the
+// chunks write apart. (They are most of an ordering, which the areal average's updates make every
+// few steps among 100k gauges: KeepTrianglesLocal.)
+constexpr std::int64_t MovesPerThread = 50000;
+
+/// Half-edge e's number once its triangle has moved to newIndex[e / 3].
+std::int32_t NewEdge(const std::vector<std::int32_t>& newIndex, std::int32_t e)
+{
+  return 3 * newIndex[std::size_t(e / 3)] + e % 3;
+}
+
+/// Each kept triangle t (newIndex[t] < kept) of org and twin copied to slot newIndex[t] of
+/// origins and twins, its twins renumbered.
+void MoveTriangles(const std::int32_t* org,
+  const std::int32_t* twin,
+  std::int32_t triangleCount,
+  const std::vector<std::int32_t>& newIndex,
+  std::int32_t kept,
+  HalfEdgeArray& origins,
+  HalfEdgeArray& twins)
+{
+  const std::vector<std::int32_t> bounds =
+    parallel::ChunkBounds(triangleCount, parallel::ThreadCount(triangleCount, MovesPerThread));
+  parallel::RunChunks(bounds.size() - 1,
+    [&](std::size_t chunk)
+    {
+      for (std::int32_t t = bounds[chunk]; t < bounds[chunk + 1]; ++t)
+      {
+        const std::int32_t u = newIndex[std::size_t(t)];
+        if (u >= kept)
+        {
+          continue; // a free slot
+        }
+        for (std::int32_t k = 0; k < 3; ++k)
+        {
+          origins[std::size_t(3 * u + k)] = org[3 * t + k];
+          twins[std::size_t(3 * u + k)] = NewEdge(newIndex, twin[3 * t + k]);
+        }
+      }
+    });
+}
+
+/// Each id's edge renumbered where it still leaves that id in org (edgeCount half-edges), else
+/// -1: an entry of an id that is no vertex any more may name a freed slot, which has no place in
+/// the new arrays.
+void RemapVertexEdges(const std::int32_t* org,
+  std::size_t edgeCount,
+  const std::vector<std::int32_t>& newIndex,
+  std::vector<std::int32_t>& vertexEdges)
+{
+  const std::int32_t ids = std::int32_t(vertexEdges.size());
+  const std::vector<std::int32_t> bounds =
+    parallel::ChunkBounds(ids, parallel::ThreadCount(ids, MovesPerThread));
+  parallel::RunChunks(bounds.size() - 1,
+    [&](std::size_t chunk)
+    {
+      for (std::int32_t id = bounds[chunk]; id < bounds[chunk + 1]; ++id)
+      {
+        std::int32_t& e = vertexEdges[std::size_t(id)];
+        const bool leaves = e >= 0 && std::size_t(e) < edgeCount && org[e] == id;
+        e = leaves ? NewEdge(newIndex, e) : -1;
+      }
+    });
+}
+
+} // namespace
 
 void DirichletTessellation::OrderTrianglesByVertex()
 {
@@ -39,58 +109,19 @@ void DirichletTessellation::OrderTrianglesByVertex()
     return;
   }
   const std::int32_t triangleCount = std::int32_t(this->Origins.size() / 3);
-  const std::int32_t* org = this->Origins.data();
   const std::int32_t kept = this->NumberTrianglesByVertex();
   const std::vector<std::int32_t>& newIndex = this->Ordering.NewIndex;
-  OrderScratch& scratch = this->Ordering;
-  const auto newEdge = [&newIndex](std::int32_t e) { return 3 * newIndex[e / 3] + e % 3; };
   // The capacity kept: insertions after the ordering append (no slot is free), and a fresh
   // array of exactly this size would be copied whole by the first of them.
-  HalfEdgeArray& origins = scratch.Origins;
-  HalfEdgeArray& twins = scratch.Twins;
+  HalfEdgeArray& origins = this->Ordering.Origins;
+  HalfEdgeArray& twins = this->Ordering.Twins;
   origins.reserve(this->Origins.capacity());
   twins.reserve(this->Twins.capacity());
   origins.resize(3 * std::size_t(kept));
   twins.resize(3 * std::size_t(kept));
-  // The moves and the vertex edges' remapping in chunks on the cores (from 50000 triangles or ids
-  // per chunk): each triangle goes to its own new slot, each id's edge is its own, so the chunks
-  // write apart. (They are most of an ordering, which the areal average's updates make every few
-  // steps among 100k gauges: KeepTrianglesLocal.)
-  const std::vector<std::int32_t> moves =
-    parallel::ChunkBounds(triangleCount, parallel::ThreadCount(triangleCount, 50000));
-  parallel::RunChunks(moves.size() - 1,
-    [&](std::size_t chunk)
-    {
-      for (std::int32_t t = moves[chunk]; t < moves[chunk + 1]; ++t)
-      {
-        const std::int32_t u = newIndex[t];
-        if (u >= kept)
-        {
-          continue; // a free slot
-        }
-        for (std::int32_t k = 0; k < 3; ++k)
-        {
-          origins[3 * u + k] = org[3 * t + k];
-          twins[3 * u + k] = newEdge(this->Twins[3 * t + k]);
-        }
-      }
-    });
-  // A vertex's edge is remapped only where it still leaves that vertex (an entry of an id that is
-  // no vertex any more may name a freed slot, which has no place in the new arrays).
-  const std::size_t edgeCount = this->Origins.size();
-  const std::int32_t ids = std::int32_t(this->VertexEdges.size());
-  const std::vector<std::int32_t> remaps =
-    parallel::ChunkBounds(ids, parallel::ThreadCount(ids, 50000));
-  parallel::RunChunks(remaps.size() - 1,
-    [&](std::size_t chunk)
-    {
-      for (std::int32_t id = remaps[chunk]; id < remaps[chunk + 1]; ++id)
-      {
-        std::int32_t& e = this->VertexEdges[std::size_t(id)];
-        const bool leaves = e >= 0 && std::size_t(e) < edgeCount && org[e] == id;
-        e = leaves ? newEdge(e) : -1;
-      }
-    });
+  MoveTriangles(
+    this->Origins.data(), this->Twins.data(), triangleCount, newIndex, kept, origins, twins);
+  RemapVertexEdges(this->Origins.data(), this->Origins.size(), newIndex, this->VertexEdges);
   const std::int32_t last = newIndex[this->Serial.LastTriangle];
   this->Serial.LastTriangle = last < kept ? last : 0;
   this->Serial.NextSlot = this->Serial.EndSlot = 0;
