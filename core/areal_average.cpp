@@ -970,6 +970,18 @@ struct ThiessenArealAverage::State
 
   static constexpr std::size_t PrefetchedOperations = 8192;
 
+  /// The per-gauge entries that a removal or an insertion of each gauge reads first.
+  void PrefetchGaugeEntries(const std::vector<std::int32_t>& gauges) const
+  {
+    for (const std::int32_t g : gauges)
+    {
+      __builtin_prefetch(&this->EngineOfGauge[g]);
+      __builtin_prefetch(&this->RemovedId[g]);
+      __builtin_prefetch(&this->CurveRank[g]);
+      __builtin_prefetch(&this->Used[g]);
+    }
+  }
+
   /// For removals: the gauges' entries, then their vertices' boxes, points and triangles.
   void PrefetchForRemovals(const std::vector<std::int32_t>& removed)
   {
@@ -977,12 +989,7 @@ struct ThiessenArealAverage::State
     {
       return;
     }
-    for (const std::int32_t g : removed)
-    {
-      __builtin_prefetch(&this->EngineOfGauge[g]);
-      __builtin_prefetch(&this->RemovedId[g]);
-      __builtin_prefetch(&this->Used[g]);
-    }
+    this->PrefetchGaugeEntries(removed);
     std::vector<std::int32_t>& ids = this->PrefetchIds;
     ids.clear();
     for (const std::int32_t g : removed)
@@ -1004,13 +1011,7 @@ struct ThiessenArealAverage::State
     const std::int64_t last = static_cast<std::int64_t>(this->CurveOrder.size()) - 1;
     const auto before = [](std::int64_t rank) { return std::max<std::int64_t>(0, rank - 1); };
     const auto after = [last](std::int64_t rank) { return std::min(last, rank + 1); };
-    for (const std::int32_t g : inserted)
-    {
-      __builtin_prefetch(&this->RemovedId[g]);
-      __builtin_prefetch(&this->CurveRank[g]);
-      __builtin_prefetch(&this->EngineOfGauge[g]);
-      __builtin_prefetch(&this->Used[g]);
-    }
+    this->PrefetchGaugeEntries(inserted);
     std::vector<std::int32_t>& ids = this->PrefetchIds;
     ids.clear();
     for (const std::int32_t g : inserted)

@@ -294,12 +294,12 @@ std::vector<std::string> DateTexts(const std::vector<double>& times)
 
 std::optional<double> IsoDateTime(std::string_view text)
 {
-  const std::optional<DateTimeRead> read = ReadDateTime(text);
-  if (!read || !read->Rest.empty())
+  const std::optional<DateTimeAndZone> read = IsoDateTimeAndZone(text);
+  if (!read || read->OffsetMinutes)
   {
-    return std::nullopt; // (not a date, or something after it: a time zone, say)
+    return std::nullopt; // (not a date, or one with a time zone)
   }
-  return TimeOfDate(read->Year, read->Month, read->Day, read->Seconds);
+  return read->Time;
 }
 
 std::optional<std::string> TimeZoneOf(std::string_view text)

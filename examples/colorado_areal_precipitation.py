@@ -2474,12 +2474,12 @@ def plot_series(rows, path, steps=None):
     plt.close(fig)
 
 
-def say_zone_not_taken(text, option):
-    """Ends the script for an option's time that ends with a time zone: the observations' times
-    are read as written (in their one zone), so the options' are too, without it."""
-    date = DATE.match(text.strip())
-    timed = TIME_OF_DAY.match(text.strip(), date.end()) if date and date.group(3) else None
-    if timed and timed.end() < len(text.strip()) and ZONE.fullmatch(text.strip(), timed.end()):
+def say_zone_not_taken(text, date, option):
+    """Ends the script for an option's time (text, stripped; date: its DATE match) that ends with
+    a time zone: the observations' times are read as written (in their one zone), so the
+    options' are too, without it."""
+    timed = TIME_OF_DAY.match(text, date.end()) if date and date.group(3) else None
+    if timed and timed.end() < len(text) and ZONE.fullmatch(text, timed.end()):
         sys.exit(f"{option} {text!r}: give the time without its time zone (the observations' times are read as "
                  "written, in their one zone)")
 
@@ -2493,7 +2493,8 @@ def chosen_time(text, option="--hour"):
     clock = TIME_OF_DAY.fullmatch(text.strip(), date.end()) if date and date.group(3) else None
     hour = option == "--hour"
     zero = clock.groups()[1 if hour else 2:] if clock else ()  # (minutes for an hour; seconds)
-    say_zone_not_taken(text, option)
+    if not clock:
+        say_zone_not_taken(text.strip(), date, option)
     if not clock or any(int(v or 0) for v in zero):
         sys.exit(f"{option} {text!r}: expected a date and " + ("hour, YYYY-MM-DD HH:00" if hour else
                                                               "time, YYYY-MM-DD HH:MM"))
