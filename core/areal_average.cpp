@@ -301,6 +301,9 @@ struct ThiessenArealAverage::State
     ClippedRings Rings;
     std::vector<Point2> Dense;
     std::vector<Point2> LonLat;
+    // PositiveArea's changes from this thread's tiles: g where the area is positive, ~g where
+    // not (ApplyPositiveAreas).
+    std::vector<std::int32_t> PositiveMarks;
   };
   std::vector<ClipScratch> Scratch{ 1 }; // [0]: the calling thread's
   LocalTilesWorkspace LocalTiles;        // DeriveChanged's, kept between steps
@@ -318,7 +321,7 @@ struct ThiessenArealAverage::State
   // Wanted and CachedArea > 0 as bitmaps (BitmapWords), so that a step finds its weighted gauges
   // by reading two bits per gauge instead of a byte and a double: at 100k gauges that pass read
   // 0.9 MB and took a twentieth of an update. The clipping threads set PositiveArea's bits as
-  // they store the areas (MarkPositiveArea).
+  // they store the areas (NotePositiveArea, ApplyPositiveAreas).
   std::vector<std::uint64_t> WantedBits;
   std::vector<std::uint64_t> PositiveArea;
   // When updating, the gauges whose Wanted differs from Used, ascending (MarkReporting): a
@@ -339,21 +342,31 @@ struct ThiessenArealAverage::State
     this->PositiveArea[g >> 6] &= ~(std::uint64_t(1) << (g & 63));
   }
 
-  /// Gauge g's bit of PositiveArea set as its new area is positive or not, by a clipping thread.
-  /// Atomically: the threads store the areas of gauges whose bits share a word. (Relaxed: the
-  /// pass's end orders the writes before any read. A serial pass after the clipping, reading each
-  /// stored area back from wherever in 0.8 MB, took some 25 us of a 100k-gauge update.)
-  void MarkPositiveArea(std::int32_t g, double area)
+  /// Gauge g's bit of PositiveArea to be set as its new area is positive or not, noted by a
+  /// clipping thread in its scratch: threads store the areas of gauges whose bits share a word, and
+  /// an atomic update of the bit there drained the thread's pending stores (the area's, at a
+  /// random place in 0.8 MB) at every tile. A serial pass after the clipping, reading each stored
+  /// area back, took some 25 us of a 100k-gauge update; the notes are read from where they were
+  /// just written.
+  static void NotePositiveArea(std::int32_t g, double area, ClipScratch& scratch)
   {
-    const std::uint64_t bit = std::uint64_t(1) << (g & 63);
-    std::uint64_t* const word = &this->PositiveArea[g >> 6];
-    if (area > 0.0)
+    scratch.PositiveMarks.push_back(area > 0.0 ? g : ~g);
+  }
+
+  /// PositiveArea's bits as the first `chunks` scratches noted them, and the notes cleared. (A
+  /// gauge is noted by one thread at most in a pass: each tile is clipped once.)
+  void ApplyPositiveAreas(std::size_t chunks)
+  {
+    for (std::size_t c = 0; c < chunks; ++c)
     {
-      __atomic_fetch_or(word, bit, __ATOMIC_RELAXED);
-    }
-    else
-    {
-      __atomic_fetch_and(word, ~bit, __ATOMIC_RELAXED);
+      for (const std::int32_t mark : this->Scratch[c].PositiveMarks)
+      {
+        const std::int32_t g = mark >= 0 ? mark : ~mark;
+        const std::uint64_t bit = std::uint64_t(1) << (g & 63);
+        std::uint64_t& word = this->PositiveArea[g >> 6];
+        word = mark >= 0 ? word | bit : word & ~bit;
+      }
+      this->Scratch[c].PositiveMarks.clear();
     }
   }
 
@@ -1156,17 +1169,20 @@ struct ThiessenArealAverage::State
     const std::vector<std::int32_t> bounds = parallel::ChunkBounds(
       static_cast<std::int32_t>(count), parallel::ThreadCount(count, this->ClipsPerThread()));
     const std::size_t chunks = bounds.size() - 1;
-    this->GrowScratch(chunks);
-    parallel::RunChunks(chunks,
-      [&](std::size_t chunk)
+    this->ClippingPass(chunks,
+      [&]
       {
-        for (std::int32_t k = bounds[chunk]; k < bounds[chunk + 1]; ++k)
-        {
-          this->Store(tiles.PointIds[k],
-            &tiles.Vertices[tiles.Offsets[k]],
-            static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]),
-            this->Scratch[chunk]);
-        }
+        parallel::RunChunks(chunks,
+          [&](std::size_t chunk)
+          {
+            for (std::int32_t k = bounds[chunk]; k < bounds[chunk + 1]; ++k)
+            {
+              this->Store(tiles.PointIds[k],
+                &tiles.Vertices[tiles.Offsets[k]],
+                static_cast<std::size_t>(tiles.Offsets[k + 1] - tiles.Offsets[k]),
+                this->Scratch[chunk]);
+            }
+          });
       });
   }
 
@@ -1184,6 +1200,25 @@ struct ThiessenArealAverage::State
     }
   }
 
+  /// Runs a clipping pass (run, in at most `chunks` chunks), then sets PositiveArea's bits as its
+  /// threads noted them: also when a tile's clipping throws, so that the bits agree with the areas
+  /// stored before it.
+  template<class Pass>
+  void ClippingPass(std::size_t chunks, const Pass& run)
+  {
+    this->GrowScratch(chunks);
+    try
+    {
+      run();
+    }
+    catch (...)
+    {
+      this->ApplyPositiveAreas(chunks);
+      throw;
+    }
+    this->ApplyPositiveAreas(chunks);
+  }
+
   /// Caches the clipped area (its bit of PositiveArea too, and, when updating, the box) of engine
   /// point id's tile.
   void Store(std::int32_t id, const Point2* tile, std::size_t size, ClipScratch& scratch)
@@ -1191,7 +1226,7 @@ struct ThiessenArealAverage::State
     const std::int32_t g = this->GaugeOfEngine[id];
     const double area = this->ClippedArea(tile, size, static_cast<std::size_t>(g), scratch);
     this->CachedArea[g] = area;
-    this->MarkPositiveArea(g, area);
+    NotePositiveArea(g, area, scratch);
     if (this->Settings.Incremental)
     {
       this->TileBounds[id] = BoundsOf(tile, size);
@@ -1296,15 +1331,19 @@ struct ThiessenArealAverage::State
     // clipped as soon as it is made, on the thread that made it (while it is in the cache).
     SortDistinctIntegers(changed, this->GaugeOfEngine.size(), this->SortBits);
     const std::size_t maxChunks = parallel::ThreadLimit();
-    this->GrowScratch(maxChunks);
-    const std::size_t derived = VisitTilesOf(
-      *this->Tessellation,
-      changed,
-      maxChunks,
-      std::min<std::int64_t>(this->ClipsPerThread(), LocalTilesPerThread),
-      [this](std::size_t chunk, std::int32_t id, const Point2* tile, std::size_t size)
-      { this->Store(id, tile, size, this->Scratch[chunk]); },
-      &this->LocalTiles);
+    std::size_t derived = 0;
+    this->ClippingPass(maxChunks,
+      [&]
+      {
+        derived = VisitTilesOf(
+          *this->Tessellation,
+          changed,
+          maxChunks,
+          std::min<std::int64_t>(this->ClipsPerThread(), LocalTilesPerThread),
+          [this](std::size_t chunk, std::int32_t id, const Point2* tile, std::size_t size)
+          { this->Store(id, tile, size, this->Scratch[chunk]); },
+          &this->LocalTiles);
+      });
     return derived;
   }
 };
