@@ -389,6 +389,54 @@ TEST(ArealAverage, ReportsMarkedInChunksGiveTheSerialSteps)
   }
 }
 
+// Weigh sums the weights of each block of 16384 gauges in gauge order and adds the blocks' sums
+// in order, on any number of threads: the mean is that sum to the bit, and near the exact one.
+TEST(ArealAverage, ManyGaugesAreWeighedInBlocksOf16384InGaugeOrder)
+{
+  std::mt19937_64 random(47);
+  const std::vector<Point2> gauges = UniformGauges(40000, random, -109.0, -102.0, 37.0, 41.0);
+  const Square catchment(-108.0, 37.5, -103.0, 40.5);
+  std::uniform_real_distribution<double> value(0.0, 10.0);
+  std::bernoulli_distribution missing(0.1);
+  std::vector<double> step(gauges.size());
+  for (double& v : step)
+  {
+    v = missing(random) ? NaN : value(random);
+  }
+  const tessera_test::ThreadLimitOverride limit(3);
+  ThiessenArealAverage average(gauges, catchment.Offsets, catchment.Ring);
+  const ArealStep result = average.Step(step);
+  ASSERT_EQ(result.Weights.size(), result.Gauges.size());
+  ASSERT_EQ(result.AreasM2.size(), result.Gauges.size());
+  std::set<std::int32_t> blocksSeen;
+  double weighted = 0.0, weights = 0.0, blockWeighted = 0.0, blockWeights = 0.0;
+  long double exactWeighted = 0.0L, exactWeights = 0.0L;
+  for (std::size_t k = 0; k < result.Gauges.size(); ++k)
+  {
+    const std::int32_t g = result.Gauges[k];
+    ASSERT_TRUE(k == 0 || g > result.Gauges[k - 1]) << "gauges not ascending at " << k;
+    ASSERT_FALSE(std::isnan(step[g])) << "gauge " << g << " did not report";
+    EXPECT_EQ(result.Weights[k], result.AreasM2[k] / average.CatchmentAreaM2()) << "gauge " << g;
+    if (blocksSeen.insert(g / 16384).second && k > 0)
+    {
+      weighted += blockWeighted; // (a block ended: its sums join the total)
+      weights += blockWeights;
+      blockWeighted = blockWeights = 0.0;
+    }
+    blockWeighted += result.Weights[k] * step[g];
+    blockWeights += result.Weights[k];
+    exactWeighted += static_cast<long double>(result.Weights[k]) * step[g];
+    exactWeights += result.Weights[k];
+  }
+  weighted += blockWeighted;
+  weights += blockWeights;
+  ASSERT_EQ(blocksSeen.size(), 3u); // (40000 gauges: blocks 0, 1 and 2 all weighted)
+  EXPECT_EQ(result.CoveredFraction, weights);
+  EXPECT_EQ(result.Mean, weighted / weights);
+  EXPECT_NEAR(result.Mean, static_cast<double>(exactWeighted / exactWeights), 1e-12 * result.Mean);
+  EXPECT_NEAR(result.CoveredFraction, 1.0, 1e-12);
+}
+
 TEST(ArealAverage, IncrementalUpdatesEqualRebuildsAndMissingGaugesHandOverTheirArea)
 {
   std::mt19937_64 random(11);
