@@ -131,7 +131,7 @@ constexpr std::int64_t LocalTilesPerThread = 250;
 constexpr std::int64_t MarksPerThread = 16384;
 /// Words of the gauge bitmaps (16384 gauges) that Weigh sums in one block: its blocks' sums are
 /// added in order, so the mean's bits depend on the number of gauges but not on the threads.
-constexpr std::size_t WeighedWordsPerBlock = 256;
+constexpr std::size_t WordsPerWeighBlock = 256;
 
 /// Sorts values, each in [0, range), by marking them in a bitmap of the range and reading it back
 /// (bits: all zero before and after): for the 2400 tiles changed at a step among 100k gauges,
@@ -246,7 +246,7 @@ struct ThiessenArealAverage::State
   Changes ApplyReportedChanges();
   void RebuildFromWanted();
   void Weigh(const std::vector<double>& values, ArealStep& step) const;
-  std::vector<std::size_t> WeighedBlockStarts() const;
+  std::vector<std::size_t> WeighBlockStarts() const;
   std::pair<double, double> WeighBlock(std::size_t block,
     std::size_t first,
     const std::vector<double>& values,
@@ -328,8 +328,9 @@ struct ThiessenArealAverage::State
   std::vector<char> Marked; // DeriveChanged's, per engine id
   // Wanted and CachedArea > 0 as bitmaps (BitmapWords), so that a step finds its weighted gauges
   // by reading two bits per gauge instead of a byte and a double: at 100k gauges that pass read
-  // 0.9 MB and took a twentieth of an update. The clipping threads set PositiveArea's bits as
-  // they store the areas (NotePositiveArea, ApplyPositiveAreas).
+  // 0.9 MB and took a twentieth of an update. The clipping threads note PositiveArea's bits as
+  // they store the areas, and the bits are set after their pass (NotePositiveArea,
+  // ApplyPositiveAreas).
   std::vector<std::uint64_t> WantedBits;
   std::vector<std::uint64_t> PositiveArea;
   // When updating, the gauges whose Wanted differs from Used, ascending (MarkReporting): a
@@ -1208,9 +1209,9 @@ struct ThiessenArealAverage::State
     }
   }
 
-  /// Runs a clipping pass (run, in at most `chunks` chunks), then sets PositiveArea's bits as its
-  /// threads noted them: also when a tile's clipping throws, so that the bits agree with the areas
-  /// stored before it.
+  /// Runs a clipping pass (run, in at most `chunks` chunks, writing only Scratch[0, chunks)), then
+  /// sets PositiveArea's bits as its threads noted them: also when a tile's clipping throws, so
+  /// that the bits agree with the areas stored before it.
   template<class Pass>
   void ClippingPass(std::size_t chunks, const Pass& run)
   {
@@ -1227,14 +1228,15 @@ struct ThiessenArealAverage::State
     this->ApplyPositiveAreas(chunks);
   }
 
-  /// Caches the clipped area (its bit of PositiveArea too, and, when updating, the box) of engine
-  /// point id's tile.
+  /// Caches the clipped area (and, when updating, the box) of engine point id's tile, and notes
+  /// its bit of PositiveArea. (The note first: should it fail to allocate, no area is stored
+  /// without its bit.)
   void Store(std::int32_t id, const Point2* tile, std::size_t size, ClipScratch& scratch)
   {
     const std::int32_t g = this->GaugeOfEngine[id];
     const double area = this->ClippedArea(tile, size, static_cast<std::size_t>(g), scratch);
-    this->CachedArea[g] = area;
     NotePositiveArea(g, area, scratch);
+    this->CachedArea[g] = area;
     if (this->Settings.Incremental)
     {
       this->TileBounds[id] = BoundsOf(tile, size);
@@ -2018,21 +2020,25 @@ void ThiessenArealAverage::State::RebuildFromWanted()
 
 // Weights of every reporting gauge from the cached areas (current for all of them), ascending:
 // the gauges both used and with a positive area, read off their bitmaps a word at a time; and the
-// step's mean. In blocks of WeighedWordsPerBlock words on the cores: the pass reads the areas and
+// step's mean. In blocks of WordsPerWeighBlock words on the cores: the pass reads the areas and
 // writes the lists (1.5 MB among 100k gauges), and one thread took 80 us of a 100k-gauge update,
 // two 45. Each block writes its part of the lists, sized first, and sums its weights in gauge
 // order; the blocks' sums are added in block order. (Up to 16384 gauges that is the one order of
 // a serial pass.) step is Step's fresh result, its lists empty.
 void ThiessenArealAverage::State::Weigh(const std::vector<double>& values, ArealStep& step) const
 {
-  const std::vector<std::size_t> starts = this->WeighedBlockStarts();
+  const std::vector<std::size_t> starts = this->WeighBlockStarts();
   const std::size_t blocks = starts.size() - 1;
   step.Gauges.resize(starts.back());
   step.Weights.resize(starts.back());
   step.AreasM2.resize(starts.back());
   std::vector<std::pair<double, double>> sums(blocks);
-  const std::vector<std::int32_t> bounds = parallel::ChunkBounds(
-    static_cast<std::int32_t>(blocks), std::min(blocks, parallel::ThreadLimit()));
+  // (A block per thread at least: a second thread for a sliver of a block would cost more than
+  // it saves, and when another object's pass holds the kept threads, one is started for it.)
+  const std::vector<std::int32_t> bounds = parallel::ChunkBounds(static_cast<std::int32_t>(blocks),
+    std::min(blocks,
+      parallel::ThreadCount(static_cast<std::int64_t>(this->WantedBits.size()),
+        static_cast<std::int64_t>(WordsPerWeighBlock))));
   parallel::RunChunks(bounds.size() - 1,
     [&](std::size_t chunk)
     {
@@ -2053,15 +2059,15 @@ void ThiessenArealAverage::State::Weigh(const std::vector<double>& values, Areal
 }
 
 /// Where each of Weigh's blocks starts in the lists of weighted gauges, and their total last.
-std::vector<std::size_t> ThiessenArealAverage::State::WeighedBlockStarts() const
+std::vector<std::size_t> ThiessenArealAverage::State::WeighBlockStarts() const
 {
   const std::size_t words = this->WantedBits.size();
   const std::size_t blocks =
-    std::max<std::size_t>(1, (words + WeighedWordsPerBlock - 1) / WeighedWordsPerBlock);
+    std::max<std::size_t>(1, (words + WordsPerWeighBlock - 1) / WordsPerWeighBlock);
   std::vector<std::size_t> starts(blocks + 1, 0);
   for (std::size_t w = 0; w < words; ++w)
   {
-    starts[w / WeighedWordsPerBlock + 1] +=
+    starts[w / WordsPerWeighBlock + 1] +=
       static_cast<std::size_t>(SetBitCount(this->WantedBits[w] & this->PositiveArea[w]));
   }
   for (std::size_t b = 0; b < blocks; ++b)
@@ -2078,10 +2084,10 @@ std::pair<double, double> ThiessenArealAverage::State::WeighBlock(std::size_t bl
   const std::vector<double>& values,
   ArealStep& step) const
 {
-  const std::size_t end = std::min(this->WantedBits.size(), (block + 1) * WeighedWordsPerBlock);
+  const std::size_t end = std::min(this->WantedBits.size(), (block + 1) * WordsPerWeighBlock);
   double weighted = 0.0, weightSum = 0.0;
   std::size_t k = first;
-  for (std::size_t w = block * WeighedWordsPerBlock; w < end; ++w)
+  for (std::size_t w = block * WordsPerWeighBlock; w < end; ++w)
   {
     for (std::uint64_t word = this->WantedBits[w] & this->PositiveArea[w]; word != 0;
          word &= word - 1)

@@ -394,7 +394,7 @@ TEST(ArealAverage, ReportsMarkedInChunksGiveTheSerialSteps)
 TEST(ArealAverage, ManyGaugesAreWeighedInBlocksOf16384InGaugeOrder)
 {
   std::mt19937_64 random(47);
-  const std::vector<Point2> gauges = UniformGauges(40000, random, -109.0, -102.0, 37.0, 41.0);
+  const std::vector<Point2> gauges = UniformGauges(40001, random, -109.0, -102.0, 37.0, 41.0);
   const Square catchment(-108.0, 37.5, -103.0, 40.5);
   std::uniform_real_distribution<double> value(0.0, 10.0);
   std::bernoulli_distribution missing(0.1);
@@ -403,20 +403,35 @@ TEST(ArealAverage, ManyGaugesAreWeighedInBlocksOf16384InGaugeOrder)
   {
     v = missing(random) ? NaN : value(random);
   }
-  const tessera_test::ThreadLimitOverride limit(3);
-  ThiessenArealAverage average(gauges, catchment.Offsets, catchment.Ring);
-  const ArealStep result = average.Step(step);
+  std::vector<ArealStep> results;
+  double catchmentArea = 0.0;
+  for (const std::size_t threads : { 1, 2, 3, 8 })
+  {
+    const tessera_test::ThreadLimitOverride limit(threads);
+    ThiessenArealAverage average(gauges, catchment.Offsets, catchment.Ring);
+    results.push_back(average.Step(step));
+    catchmentArea = average.CatchmentAreaM2();
+  }
+  for (std::size_t k = 1; k < results.size(); ++k)
+  {
+    ASSERT_EQ(results[k].Gauges, results[0].Gauges) << "run " << k;
+    EXPECT_EQ(results[k].Weights, results[0].Weights) << "run " << k;
+    EXPECT_EQ(results[k].Mean, results[0].Mean) << "run " << k;
+    EXPECT_EQ(results[k].CoveredFraction, results[0].CoveredFraction) << "run " << k;
+  }
+  const ArealStep& result = results[0];
   ASSERT_EQ(result.Weights.size(), result.Gauges.size());
   ASSERT_EQ(result.AreasM2.size(), result.Gauges.size());
   std::set<std::int32_t> blocksSeen;
   double weighted = 0.0, weights = 0.0, blockWeighted = 0.0, blockWeights = 0.0;
+  double serialWeighted = 0.0, serialWeights = 0.0;
   long double exactWeighted = 0.0L, exactWeights = 0.0L;
   for (std::size_t k = 0; k < result.Gauges.size(); ++k)
   {
     const std::int32_t g = result.Gauges[k];
     ASSERT_TRUE(k == 0 || g > result.Gauges[k - 1]) << "gauges not ascending at " << k;
     ASSERT_FALSE(std::isnan(step[g])) << "gauge " << g << " did not report";
-    EXPECT_EQ(result.Weights[k], result.AreasM2[k] / average.CatchmentAreaM2()) << "gauge " << g;
+    EXPECT_EQ(result.Weights[k], result.AreasM2[k] / catchmentArea) << "gauge " << g;
     if (blocksSeen.insert(g / 16384).second && k > 0)
     {
       weighted += blockWeighted; // (a block ended: its sums join the total)
@@ -425,12 +440,16 @@ TEST(ArealAverage, ManyGaugesAreWeighedInBlocksOf16384InGaugeOrder)
     }
     blockWeighted += result.Weights[k] * step[g];
     blockWeights += result.Weights[k];
+    serialWeighted += result.Weights[k] * step[g];
+    serialWeights += result.Weights[k];
     exactWeighted += static_cast<long double>(result.Weights[k]) * step[g];
     exactWeights += result.Weights[k];
   }
   weighted += blockWeighted;
   weights += blockWeights;
-  ASSERT_EQ(blocksSeen.size(), 3u); // (40000 gauges: blocks 0, 1 and 2 all weighted)
+  ASSERT_EQ(blocksSeen.size(), 3u); // (40001 gauges: blocks 0, 1 and 2 all weighted)
+  // (This seed's blocked and one-pass sums differ, so the test tells the two orders apart.)
+  ASSERT_NE(serialWeighted / serialWeights, weighted / weights);
   EXPECT_EQ(result.CoveredFraction, weights);
   EXPECT_EQ(result.Mean, weighted / weights);
   EXPECT_NEAR(result.Mean, static_cast<double>(exactWeighted / exactWeights), 1e-12 * result.Mean);
