@@ -348,7 +348,15 @@ struct ThiessenArealAverage::State
   void ClearArea(std::int32_t g)
   {
     this->CachedArea[g] = 0.0;
-    this->PositiveArea[g >> 6] &= ~(std::uint64_t(1) << (g & 63));
+    this->SetPositiveArea(g, false);
+  }
+
+  /// Gauge g's bit of PositiveArea.
+  void SetPositiveArea(std::int32_t g, bool positive)
+  {
+    const std::uint64_t bit = std::uint64_t(1) << (g & 63);
+    std::uint64_t& word = this->PositiveArea[g >> 6];
+    word = positive ? word | bit : word & ~bit;
   }
 
   /// Gauge g's bit of PositiveArea to be set as its new area is positive or not, noted by a
@@ -370,10 +378,7 @@ struct ThiessenArealAverage::State
     {
       for (const std::int32_t mark : this->Scratch[c].PositiveMarks)
       {
-        const std::int32_t g = mark >= 0 ? mark : ~mark;
-        const std::uint64_t bit = std::uint64_t(1) << (g & 63);
-        std::uint64_t& word = this->PositiveArea[g >> 6];
-        word = mark >= 0 ? word | bit : word & ~bit;
+        this->SetPositiveArea(mark >= 0 ? mark : ~mark, mark >= 0);
       }
       this->Scratch[c].PositiveMarks.clear();
     }
@@ -1201,21 +1206,16 @@ struct ThiessenArealAverage::State
     return this->Method == AreaMethod::EqualAreaPlane ? 1000 : 4;
   }
 
-  void GrowScratch(std::size_t chunks)
-  {
-    if (this->Scratch.size() < chunks)
-    {
-      this->Scratch.resize(chunks);
-    }
-  }
-
   /// Runs a clipping pass (run, in at most `chunks` chunks, writing only Scratch[0, chunks)), then
   /// sets PositiveArea's bits as its threads noted them: also when a tile's clipping throws, so
   /// that the bits agree with the areas stored before it.
   template<class Pass>
   void ClippingPass(std::size_t chunks, const Pass& run)
   {
-    this->GrowScratch(chunks);
+    if (this->Scratch.size() < chunks)
+    {
+      this->Scratch.resize(chunks);
+    }
     try
     {
       run();
