@@ -1875,13 +1875,25 @@ void AddDuplicatePointIds(vtkDataObject* data,
   AddIdFieldArray(data, UnusedPointIdNames()[2], originals);
 }
 
+namespace
+{
+
+/// The first 20 rejected ids, as ListNames gives them.
+std::string RejectedIdsText(const std::vector<std::int32_t>& rejected)
+{
+  return tessera::ListNames(
+    rejected.size(), [&](std::size_t k) { return std::to_string(rejected[k]); });
+}
+
+} // namespace
+
 std::string NoPointInWindowWarning(const tessera::Box2& window,
   vtkPoints* points,
-  std::size_t rejected,
+  const std::vector<std::int32_t>& rejected,
   const char* what)
 {
   if (!points || points->GetNumberOfPoints() == 0 ||
-    rejected != static_cast<std::size_t>(points->GetNumberOfPoints()))
+    rejected.size() != static_cast<std::size_t>(points->GetNumberOfPoints()))
   {
     return std::string();
   }
@@ -1891,7 +1903,9 @@ std::string NoPointInWindowWarning(const tessera::Box2& window,
     ": the points span " + BoxText(box) +
     (apart ? " (is the window in the points' units, WindowBounds in the order xmin, xmax, ymin, "
              "ymax?)"
-           : " (the boxes overlap, but each point lies outside the window or on its boundary)");
+           : " (the boxes overlap, but each point lies outside the window or on its boundary)") +
+    "; all " + std::to_string(rejected.size()) +
+    " are in the field data array RejectedPointIds: point(s) " + RejectedIdsText(rejected) + ".";
 }
 
 std::string NoPointsWarning(const std::string& what)
@@ -1935,24 +1949,42 @@ std::string UnusedPointsWarning(const std::vector<std::int32_t>& rejected,
   {
     return std::string();
   }
-  // (the first ids too: a trial's script had only the counts, and had to read the arrays)
+  // (the first ids too: a trial's script had only the counts, and had to read the arrays; a
+  // count of 0 is left out, as "and 0 exact duplicate(s)" said nothing)
   std::ostringstream text;
-  text << rejected.size() << " point(s) outside the window or on its boundary and "
-       << duplicates.size() << " exact duplicate(s) (the same x and y; z is not used) were not "
-       << verb
-       << "; their ids are in the field data arrays RejectedPointIds, DuplicatePointIds and "
-          "DuplicateOfPointIds";
   if (!rejected.empty())
   {
-    text << "; outside: point(s) "
-         << tessera::ListNames(
-              rejected.size(), [&](std::size_t k) { return std::to_string(rejected[k]); });
+    text << rejected.size() << " point(s) outside the window or on its boundary";
+  }
+  if (!duplicates.empty())
+  {
+    text << (rejected.empty() ? "" : " and ") << duplicates.size()
+         << " exact duplicate(s) (the same x and y; z is not used)";
+  }
+  text << " were not " << verb << "; their ids are in the field data arrays "
+       << (rejected.empty() ? "" : "RejectedPointIds")
+       << (rejected.empty() || duplicates.empty() ? "" : ", ")
+       << (duplicates.empty() ? "" : "DuplicatePointIds and DuplicateOfPointIds");
+  if (!rejected.empty())
+  {
+    text << "; outside: point(s) " << RejectedIdsText(rejected);
   }
   if (!duplicates.empty())
   {
     text << "; duplicates: " << tessera::DuplicatePairNames(duplicates);
   }
   return text.str() + "." + (duplicates.empty() ? std::string() : FloatStorageNote(points));
+}
+
+std::string UnusedPointsWarnings(const tessera::Box2& window,
+  const std::vector<std::int32_t>& rejected,
+  const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates,
+  const char* verb,
+  const char* what,
+  vtkPoints* points)
+{
+  const std::string none = NoPointInWindowWarning(window, points, rejected, what);
+  return none.empty() ? UnusedPointsWarning(rejected, duplicates, verb, points) : none;
 }
 
 } // namespace tessera_vtk

@@ -348,9 +348,9 @@ void AddDuplicatePointIds(vtkDataObject* data,
 
 /// The warning for points a tessellation filter did not use (`rejected` outside the window,
 /// `duplicates` exact copies with the point each copies), saying they were not `verb` ("used",
-/// "triangulated"), where their ids are, and the first 20 of each; empty when every point was used.
-/// With duplicates among input `points` stored as float, it also says the float's step at their
-/// coordinates, within which points became one when stored.
+/// "triangulated"), where their ids are, and the first 20 of each (a count of none is left out);
+/// empty when every point was used. With duplicates among input `points` stored as float, it also
+/// says the float's step at their coordinates, within which points became one when stored.
 std::string UnusedPointsWarning(const std::vector<std::int32_t>& rejected,
   const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates,
   const char* verb,
@@ -359,11 +359,22 @@ std::string UnusedPointsWarning(const std::vector<std::int32_t>& rejected,
 /// The warning for a window (its bounding box) that holds none of the points (`rejected` all of
 /// them), so that there is no `what` ("tile"), naming the window's box and the points' (a
 /// ParaView user saw only a count of rejected points and an empty output), with a hint on units
-/// and order where the boxes do not meet; empty where some point was taken, or there is none.
+/// and order where the boxes do not meet, and the first 20 ids; empty where some point was taken,
+/// or there is none.
 std::string NoPointInWindowWarning(const tessera::Box2& window,
   vtkPoints* points,
-  std::size_t rejected,
+  const std::vector<std::int32_t>& rejected,
   const char* what);
+
+/// One warning for the points a tessellation filter did not use: NoPointInWindowWarning's where no
+/// point lies in the window (a second warning, counting the same points as outside, said nothing
+/// more), else UnusedPointsWarning's; empty when every point was used.
+std::string UnusedPointsWarnings(const tessera::Box2& window,
+  const std::vector<std::int32_t>& rejected,
+  const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates,
+  const char* verb,
+  const char* what,
+  vtkPoints* points);
 
 /// The warning for an input without points, whose output is then empty: "the input has no points:
 /// no <what> (does the filter before it give none?)" (a ParaView user saw an empty output and no

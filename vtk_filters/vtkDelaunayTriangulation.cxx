@@ -107,10 +107,9 @@ void AddUnusedPoints(vtkDelaunayTriangulation* self,
     vtkWarningWithObjectMacro(
       self, << tessera_vtk::RenamedArraysWarning(renamed, "field-data", "the output", "field"));
   }
-  tesseraWarnUnlessEmptyMacro(
-    self, tessera_vtk::UnusedPointsWarning(rejected, duplicates, "triangulated", inputPoints));
-  tesseraWarnUnlessEmptyMacro(
-    self, tessera_vtk::NoPointInWindowWarning(windowBox, inputPoints, rejected.size(), "triangle"));
+  tesseraWarnUnlessEmptyMacro(self,
+    tessera_vtk::UnusedPointsWarnings(
+      windowBox, rejected, duplicates, "triangulated", "triangle", inputPoints));
 }
 
 /// The warning for triangulated points that make no triangle (fewer than three, or on one line).

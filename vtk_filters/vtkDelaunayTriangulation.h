@@ -16,8 +16,9 @@
  * WindowBounds, constraints, Padding); the rest are listed, never dropped silently. Field data:
  * `RejectedPointIds`, `DuplicatePointIds`, `DuplicateOfPointIds` (vtkIdType), as in
  * vtkDirichletTessellation (an input field array with one of these names is kept renamed
- * NAME_input, with a warning); where no point lies inside the window, a warning names both boxes.
- * Fewer than 3 points or collinear points give no face.
+ * NAME_input, with a warning); a warning counts the points not triangulated, with their first ids,
+ * and where no point lies inside the window it names both boxes. Fewer than 3 points or collinear
+ * points give no face.
  *
  * The input is a vtkPointSet, or a composite data set of them whose points are joined in block
  * order into one set (a point layer from vtkGDALVectorReader, a block per feature with its

@@ -562,9 +562,8 @@ void WarnOfUnusedPointsAndCollapsedTiles(vtkDirichletTessellation* self,
   vtkPoints* inputPoints)
 {
   tesseraWarnUnlessEmptyMacro(self,
-    tessera_vtk::UnusedPointsWarning(result.Rejected, result.Duplicates, "used", inputPoints));
-  tesseraWarnUnlessEmptyMacro(self,
-    tessera_vtk::NoPointInWindowWarning(windowBox, inputPoints, result.Rejected.size(), "tile"));
+    tessera_vtk::UnusedPointsWarnings(
+      windowBox, result.Rejected, result.Duplicates, "used", "tile", inputPoints));
   tesseraWarnUnlessEmptyMacro(self, CollapsedTilesWarning(result.Tiles));
 }
 

@@ -68,8 +68,9 @@
  * - `RejectedPointIds` (vtkIdType): points not strictly inside the window;
  * - `DuplicatePointIds` and `DuplicateOfPointIds` (vtkIdType, same length): exact copies of an
  *   earlier point, and the accepted point each one copies (the first is kept).
- * A warning counts the points not used; where no point lies inside the window, another names the
- * window's bounding box and the points' (bounds in other units, or given as xmin, ymin, ...).
+ * A warning counts the points not used, with their first ids; where no point lies inside the
+ * window, it names the window's bounding box and the points' instead (bounds in other units, or
+ * given as xmin, ymin, ...).
  * The input's field data is passed too; an input field array with one of these three names (say,
  * from an earlier tessellation) is kept renamed NAME_input, with a warning.
  *

@@ -212,8 +212,8 @@ def test_unused_points_are_reported_with_ids():
                 and len(said) == 1 and "1 exact duplicate(s) (the same x and y; z is not used)" in said[0],
                 f"a point differing in z only: {said}")
     # Every point outside the window (bounds in other units, or in the order xmin, ymin, ...): the
-    # count alone was said and the output was empty; a second warning names both boxes, with
-    # either engine and for the triangulation.
+    # count alone was said and the output was empty; then a second warning named both boxes. One
+    # warning now names both boxes and the ids, with either engine and for the triangulation.
     data = make_points([(3.0, 1.0), (12.0, 5.0), (7.5, 2.5)])
     for filter_class, algorithm in ((vtkDirichletTessellation, "GreenSibson"),
                                     (vtkDirichletTessellation, "BrasselReif"), (vtkDelaunayTriangulation, None)):
@@ -224,11 +224,12 @@ def test_unused_points_are_reported_with_ids():
         if algorithm:
             getattr(g, f"SetAlgorithmTo{algorithm}")()
         g.Update()
-        assert_that(g.GetOutput(0).GetNumberOfCells() == 0 and len(said) == 2
-                    and "3 point(s) outside the window" in said[0]
+        assert_that(g.GetOutput(0).GetNumberOfCells() == 0 and len(said) == 1
                     and f"no point lies inside the window (x 100 .. 200, y 100 .. 200), so there is no "
                         f"{'triangle' if algorithm is None else 'tile'}: the points span x 3 .. 12, y 1 .. 5 (is the "
-                        "window in the points' units" in said[1],
+                        "window in the points' units" in said[0]
+                    and said[0].strip().endswith("; all 3 are in the field data array RejectedPointIds: point(s) 0, 1, 2.")
+                    and id_values(g.GetOutput(0).GetFieldData(), "RejectedPointIds") == [0, 1, 2],
                     f"{filter_class.__name__} {algorithm}: every point outside: {said}")
     # Points in the window's box but outside its constraint, or on its boundary: no hint on units.
     g = vtkDirichletTessellation()
@@ -237,9 +238,23 @@ def test_unused_points_are_reported_with_ids():
     g.SetWindowBounds(0, 1, 0, 1)
     g.AddWindowConstraint(1, 1, -1)  # x + y < 1
     g.Update()
-    assert_that(len(said) == 2 and "(the boxes overlap, but each point lies outside the window or on its boundary)"
-                in said[1],
+    assert_that(len(said) == 1 and "(the boxes overlap, but each point lies outside the window or on its boundary)"
+                in said[0],
                 f"points outside a constraint: {said}")
+    # Points outside alone, or duplicates alone: the warning leaves out the count of none ("and 0
+    # exact duplicate(s)") and the arrays that are empty.
+    for coords, expected, absent in (
+            ([(0.2, 0.2), (0.8, 0.3), (0.5, 0.9), (5.0, 5.0)],
+             "1 point(s) outside the window or on its boundary were not used; their ids are in the field data arrays "
+             "RejectedPointIds; outside: point(s) 3.", "duplicate"),
+            ([(0.2, 0.2), (0.8, 0.3), (0.5, 0.9), (0.8, 0.3)],
+             "1 exact duplicate(s) (the same x and y; z is not used) were not used; their ids are in the field data "
+             "arrays DuplicatePointIds and DuplicateOfPointIds; duplicates: point 3 (of point 1).", "outside")):
+        g = vtkDirichletTessellation()
+        g.SetWindowBounds(0, 1, 0, 1)
+        said = warnings_of_update(g, make_points(coords))
+        assert_that(len(said) == 1 and said[0].strip().endswith(expected) and absent not in said[0],
+                    f"{coords}: {said}")
 
 
 def id_values(field_data, name):
