@@ -1719,11 +1719,14 @@ def interactive():
 class Progress:
     """Prints the filter's progress over the steps: on one line at a terminal, in steps of 5%
     (end_line() ends that line before another message is printed), or as a line of its own at 0,
-    25, 50, 75 and 100% into a log; stop() ends it for good (the filter failed)."""
+    25, 50, 75 and 100% into a log; stop() ends it for good (the filter failed). say() prints a
+    message after the progress: one that comes while it runs is held until it ends (the warning of
+    gauges never weighted, given as the run ends, came between the 75% and 100% lines)."""
 
     def __init__(self, label):
         self.label, self.last, self.open, self.stopped = label, -1, False, False
         self.step = 5 if interactive() else 25
+        self.held = []
 
     def __call__(self, caller, event):
         percent = int(caller.GetProgress() * 100)
@@ -1732,11 +1735,27 @@ class Progress:
             self.last = percent
             if self.step == 25:
                 print(f"{self.label}: {percent:3d}%", file=sys.stderr, flush=True)
-                return
-            print(f"\r{self.label}: {percent:3d}%", end="", file=sys.stderr, flush=True)
-            self.open = True
+            else:
+                print(f"\r{self.label}: {percent:3d}%", end="", file=sys.stderr, flush=True)
+                self.open = True
             if percent == 100:
                 self.end_line()
+                self.print_held()
+
+    def running(self):
+        return 0 <= self.last < 100 and not self.stopped
+
+    def say(self, line):
+        if self.running():
+            self.held.append(line)
+            return
+        self.end_line()
+        print(line, file=sys.stderr, flush=True)
+
+    def print_held(self):
+        for line in self.held:
+            print(line, file=sys.stderr, flush=True)
+        self.held = []
 
     def end_line(self):
         if self.open:
@@ -1744,8 +1763,11 @@ class Progress:
             self.open = False
 
     def stop(self):
+        """Ends the progress for good (the filter failed, or its run is over): the held messages
+        are printed."""
         self.end_line()
         self.stopped = True
+        self.print_held()
 
 
 class InputFiles:
@@ -1869,8 +1891,7 @@ class FilterMessages:
         def on_warning(text):
             line = files.warning(text)
             if line:
-                progress.end_line()
-                print(line, file=sys.stderr, flush=True)
+                progress.say(line)
 
         def on_executive_error(text):
             progress.stop()
@@ -2857,6 +2878,7 @@ def averaged_steps(args, inputs, vtkCommand):
                        record.period.given())
     messages = FilterMessages(average, files, progress)
     average.Update(1)
+    progress.stop()  # (prints what it held, had the run not reached 100%)
     summary = average.GetOutputDataObject(1)
     messages.check(summary is None or summary.GetNumberOfRows() == 0)
     count = summary.GetNumberOfRows()

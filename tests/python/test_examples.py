@@ -187,6 +187,13 @@ def test_the_colorado_main_job():
     with tempfile.TemporaryDirectory() as out:
         stdout, stderr = run_colorado(out, month="%04d-%02d" % MONTH, what="the main job")
         assert_that("without --catchment" not in stderr, f"the example's own gauges: no note ({stderr})")
+        # The warning of gauges never weighted, given as the run ends, follows the progress's 100%
+        # line (it came between the 75% and 100% lines).
+        lines = stderr.splitlines()
+        done = [k for k, line in enumerate(lines) if re.fullmatch(r"Thiessen areal means: +100%", line)]
+        never = [k for k, line in enumerate(lines) if "so they are never weighted" in line]
+        assert_that(len(done) == 1 and len(never) == 1 and never[0] == done[0] + 1,
+                    f"the warning after the progress: {lines}")
         rows = read_csv(os.path.join(out, "areal_mean.csv"))
         assert_that(list(rows[0]) == ["year", "month", "stations_used", "stations_weighted", "areal_mean"],
                     f"areal_mean.csv columns: {list(rows[0])}")
