@@ -1885,6 +1885,18 @@ std::string RejectedIdsText(const std::vector<std::int32_t>& rejected)
     rejected.size(), [&](std::size_t k) { return std::to_string(rejected[k]); });
 }
 
+/// The field data arrays that list unused points: "array RejectedPointIds", "arrays
+/// DuplicatePointIds and DuplicateOfPointIds", or all three.
+std::string UnusedIdArraysText(bool rejected, bool duplicates)
+{
+  if (!duplicates)
+  {
+    return "array RejectedPointIds";
+  }
+  return std::string("arrays ") + (rejected ? "RejectedPointIds, " : "") +
+    "DuplicatePointIds and DuplicateOfPointIds";
+}
+
 } // namespace
 
 std::string NoPointInWindowWarning(const tessera::Box2& window,
@@ -1961,10 +1973,8 @@ std::string UnusedPointsWarning(const std::vector<std::int32_t>& rejected,
     text << (rejected.empty() ? "" : " and ") << duplicates.size()
          << " exact duplicate(s) (the same x and y; z is not used)";
   }
-  text << " were not " << verb << "; their ids are in the field data arrays "
-       << (rejected.empty() ? "" : "RejectedPointIds")
-       << (rejected.empty() || duplicates.empty() ? "" : ", ")
-       << (duplicates.empty() ? "" : "DuplicatePointIds and DuplicateOfPointIds");
+  text << " were not " << verb << "; their ids are in the field data "
+       << UnusedIdArraysText(!rejected.empty(), !duplicates.empty());
   if (!rejected.empty())
   {
     text << "; outside: point(s) " << RejectedIdsText(rejected);

@@ -245,7 +245,7 @@ def test_unused_points_are_reported_with_ids():
     # exact duplicate(s)") and the arrays that are empty.
     for coords, expected, absent in (
             ([(0.2, 0.2), (0.8, 0.3), (0.5, 0.9), (5.0, 5.0)],
-             "1 point(s) outside the window or on its boundary were not used; their ids are in the field data arrays "
+             "1 point(s) outside the window or on its boundary were not used; their ids are in the field data array "
              "RejectedPointIds; outside: point(s) 3.", "duplicate"),
             ([(0.2, 0.2), (0.8, 0.3), (0.5, 0.9), (0.8, 0.3)],
              "1 exact duplicate(s) (the same x and y; z is not used) were not used; their ids are in the field data "
