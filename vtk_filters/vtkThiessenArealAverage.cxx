@@ -275,6 +275,39 @@ public:
   /// none a plain number: the tables then get a Date column.
   bool AllDates() const { return this->OnlyDates; }
 
+  /// The warning for dates read at different periods, a year or a month beside finer dates
+  /// (monthly totals among daily values, say), which the steps would mix: each date is taken as
+  /// its period's start, so 2020-03 shares the step of 2020-03-01. Empty where the dates keep to
+  /// one period; days and times of day count as one (midnight written as the date alone is
+  /// common in hourly files).
+  std::string MixedPeriodsWarning() const
+  {
+    static const char* const names[] = { "a year", "a month", "a day" };
+    std::vector<std::size_t> seen;
+    for (std::size_t p = 0; p < Periods; ++p)
+    {
+      if (this->FirstRowOfPeriod[p] >= 0)
+      {
+        seen.push_back(p);
+      }
+    }
+    if (seen.size() < 2)
+    {
+      return std::string();
+    }
+    const std::size_t coarse = seen.front(), fine = seen.back();
+    return "column '" + this->TimeColumn + "' gives dates of different periods: row " +
+      std::to_string(this->FirstRowOfPeriod[coarse]) + "'s '" + this->FirstTextOfPeriod[coarse] +
+      "' is " + names[coarse] + ", row " + std::to_string(this->FirstRowOfPeriod[fine]) + "'s '" +
+      this->FirstTextOfPeriod[fine] + "' " + names[fine] +
+      ": each date is taken as its period's start (a month as its first day at 00:00, a year as "
+      "1 January), so a value for " +
+      names[coarse] + " shares a step with the values of its first " +
+      (fine == 2 ? "day" : "month") +
+      "; give every date at one period (a total of months for "
+      "a monthly series, say)";
+  }
+
   /// The row's time; nothing when its time or month field is empty (blank text, or NaN: what a
   /// reader may make of an empty numeric field). Throws InputError naming the row for a time that
   /// is not a finite number, a date or a month 1 .. 12.
@@ -344,6 +377,7 @@ private:
     if (const std::optional<tessera::DateTimeAndZone> t = tessera::IsoDateTimeAndZone(*time.Text))
     {
       this->CheckZone(row, *time.Text, t->OffsetMinutes);
+      this->NotePeriod(row, *time.Text);
       return t->Time;
     }
     const std::optional<double> number = time.Number();
@@ -383,6 +417,26 @@ private:
         "without one");
   }
 
+  /// The first row of each period that a date was given at (MixedPeriodsWarning's).
+  void NotePeriod(vtkIdType row, const std::string& text) const
+  {
+    const std::string date = Trimmed(text);
+    const std::size_t p = PeriodOf(date);
+    if (this->FirstRowOfPeriod[p] < 0)
+    {
+      this->FirstRowOfPeriod[p] = row;
+      this->FirstTextOfPeriod[p] = date;
+    }
+  }
+
+  /// 0 for a year ("1963"), 1 for a month ("1963-08"), 2 for a day or a time of day: the hyphens
+  /// of the date, before a time of day (IsoDateTime read it: a date of years 0 .. 9999).
+  static std::size_t PeriodOf(const std::string& date)
+  {
+    const std::string day = date.substr(0, date.find_first_of("Tt "));
+    return std::min<std::size_t>(2, std::count(day.begin(), day.end(), '-'));
+  }
+
   /// "has time zone Z", or "has no time zone".
   static std::string ZoneSaid(const std::string& text)
   {
@@ -393,10 +447,13 @@ private:
   std::string TimeColumn, MonthColumn;
   NumberColumn Times;
   std::optional<NumberColumn> Months;
-  mutable bool OnlyDates = true;          // AllDates
-  mutable vtkIdType FirstDateRow = -1;    // CheckZone's: the first date's row, text and zone
-  mutable std::string FirstDateText;      //
-  mutable std::optional<int> FirstOffset; // (minutes from UTC; nothing without a zone)
+  mutable bool OnlyDates = true;            // AllDates
+  mutable vtkIdType FirstDateRow = -1;      // CheckZone's: the first date's row, text and zone
+  mutable std::string FirstDateText;        //
+  mutable std::optional<int> FirstOffset;   // (minutes from UTC; nothing without a zone)
+  static constexpr std::size_t Periods = 3; // year, month, day (NotePeriod's)
+  mutable vtkIdType FirstRowOfPeriod[Periods] = { -1, -1, -1 };
+  mutable std::string FirstTextOfPeriod[Periods];
 };
 
 /// The gauges' station ids as text (StationName), one per gauge; none without an id array.
@@ -418,7 +475,8 @@ struct ObservationRows
 {
   tessera::StationMatch Match;
   tessera::ObservationSteps Steps;
-  bool TimesAreDates = false; ///< every used row's time was a calendar date (RowTimeReader)
+  bool TimesAreDates = false;      ///< every used row's time was a calendar date (RowTimeReader)
+  std::string MixedPeriodsWarning; ///< RowTimeReader's, for dates at different periods
 };
 
 /// The rows of the observations table matched with the gauges' station ids (as GaugeNames gives
@@ -456,6 +514,7 @@ ObservationRows ReadRows(vtkTable* table,
   }
   rows.Steps = tessera::StepsOfRows(rows.Match, rowTimes);
   rows.TimesAreDates = timeOf.AllDates();
+  rows.MixedPeriodsWarning = timeOf.MixedPeriodsWarning();
   return rows;
 }
 
@@ -1739,6 +1798,7 @@ struct vtkThiessenArealAverage::BuildRun
       throw tessera::InputError(NoUsableRowMessage(
         *this->Rows, stations, this->Names, self->StationIdArrayName, self->StationColumn));
     }
+    this->Warn(this->Rows->MixedPeriodsWarning);
     this->In.Times = this->Rows->Steps.Times;
     this->ValuesOfRows =
       RowValues(observations, this->Rows->Steps, self->StationColumn, self->ValueColumn);

@@ -1039,6 +1039,48 @@ def test_dates_of_days_and_hours_are_written_as_given():
                 and "they make 1 step(s) of their own (rows from 0): row 0 (station " in said[0], f"{warnings}")
 
 
+def test_dates_of_different_periods_are_warned_of():
+    """A month (or year) among days takes its period's start, and so shares a step with the values of
+    its first day: a monthly total among daily values was averaged with them without a word. One
+    warning names the first date of the coarsest and of the finest period; days beside times of day
+    (midnight written as the date alone) give none."""
+    coords, ids = [(10.25, 50.5), (10.75, 50.5), (10.5, 50.9)], ["A", "B", "C"]
+    ring = [(10.0, 50.0), (11.0, 50.0), (11.0, 51.0), (10.0, 51.0)]
+    cases = (
+        (["2020-01-31", "2020-02-01 12:00", " 2020-03 ", "2020"], 4,
+         "column 'time' gives dates of different periods: row 3's '2020' is a year, row 0's '2020-01-31' a day: "
+         "each date is taken as its period's start (a month as its first day at 00:00, a year as 1 January), so a "
+         "value for a year shares a step with the values of its first day"),
+        (["2020-02", "2020-03", "2020-03-01T00:00"], 2,  # (2020-03 is 2020-03-01's step)
+         "row 0's '2020-02' is a month, row 2's '2020-03-01T00:00' a day: each date is taken as its period's start"),
+        (["2019", "2020-03"], 2, "row 0's '2019' is a year, row 1's '2020-03' a month: each date"),
+        (["2020-03-01", "2020-03-01 06:00", "2020-03-02"], 3, None),
+        (["2020-01", "2020-02"], 2, None))
+    for dates, steps, expected in cases:
+        table = vtkTable()
+        s, t, v = vtkStringArray(), vtkStringArray(), vtkDoubleArray()
+        for column, name in ((s, "station_id"), (t, "time"), (v, "value")):
+            column.SetName(name)
+            table.AddColumn(column)
+        for k, date in enumerate(dates):
+            s.InsertNextValue(ids[k % 3])
+            t.InsertNextValue(date)
+            v.InsertNextValue(float(k))
+        f = vtkThiessenArealAverage()
+        errors, warnings = messages_of(f), messages_of(f, vtkCommand.WarningEvent)
+        f.SetGaugesData(gauges_polydata(coords, ids))
+        f.SetCatchmentData(polygon([ring]))
+        f.SetObservationsData(table)
+        f.Update(1)
+        said = [w for w in warnings if "different periods" in w]
+        assert_that(not errors and f.GetOutputDataObject(1).GetNumberOfRows() == steps,
+                    f"{dates}: {errors}, {f.GetOutputDataObject(1).GetNumberOfRows()} steps")
+        if expected is None:
+            assert_that(not said, f"{dates}: {said}")
+        else:
+            assert_that(len(said) == 1 and expected in said[0], f"{dates}: {said}")
+
+
 def test_time_of_date_picks_that_dates_step():
     """TimeOfDate gives a date's time as the tables do (decimal years on a month grid: a day is a
     share of its month), so UpdateTimeStep of it shows that day's tiles; a day-of-year decimal, the
@@ -2119,6 +2161,7 @@ if __name__ == "__main__":
          test_dates_and_year_month_columns_give_the_same_steps,
          test_dates_of_days_and_hours_are_written_as_given,
          test_time_of_date_picks_that_dates_step,
+         test_dates_of_different_periods_are_warned_of,
          test_gauges_given_an_earlier_gauges_station_id_are_listed,
          test_the_projection_used_is_recorded_and_makes_the_same_tiles,
          test_an_enclave_given_as_a_hole_and_a_feature_of_its_own_is_in_the_catchment,
