@@ -275,7 +275,8 @@ extern const char* const ExtractSurfaceHint;
 /// line cells and open polylines form end to end (a contour, as vtkCutter or ParaView's Contour
 /// gives it: core segment_rings.h, ends matched by coordinates; where four or six lines meet, as
 /// at a saddle, they are paired by angle into rings that touch there). Other cells, and lines in no
-/// closed ring (an open branch, a spur off a ring), are counted in SkippedCells; blocks of another
+/// closed ring (an open branch, a spur off a ring; a line of no length counts only where it lies
+/// at no point of a joined ring), are counted in SkippedCells; blocks of another
 /// type with cells are listed in SkippedBlocks, and both are said in a warning. Pairs of rings that
 /// are a hole and the island that fills it exactly (an enclave given as a hole and as a polygon)
 /// are left out, as by the even-odd rule they cancel (core identical_rings.h), with a warning

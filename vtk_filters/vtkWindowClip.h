@@ -10,7 +10,9 @@
  * hole would be clipped as a tile) with the region of input 1: the
  * polygons (and closed polylines, as vtkGDALVectorReader gives rings, and lines that join end to
  * end into closed rings, as a contour from vtkCutter or ParaView's Contour is given; where four or
- * six lines meet, as at a saddle, the rings touch there) of input 1 taken as rings under the
+ * six lines meet, as at a saddle, the rings touch there; a line of no length at a point of a ring,
+ * as vtkContourFilter gives between two ids of one point, adds nothing) of input 1 taken as rings
+ * under the
  * even-odd rule, so a ring inside another is a hole and a ring inside a
  * hole an island (other cells of input 1, such as lines in no closed ring, are ignored with a
  * warning). Ring orientation

@@ -434,6 +434,20 @@ def test_a_window_of_loose_line_segments_is_joined_into_its_rings():
                 f"the square clips without its dangling segment: {errors}")
     assert_that(len(warnings) == 1 and "1 cell(s)" in warnings[0] and "the first is cell 4" in warnings[0],
                 f"the dangling segment's cell named: {warnings}")
+    # Segments of no length between two ids of one point, as vtkContourFilter gives them where a
+    # contour passes through a grid point: on a ring they add nothing and are not named (8 such
+    # cells of a plain contour were "not lines that join into closed rings"); one off every ring
+    # is named.
+    for where, at, named in (("on the ring", (0.9, 0.9), False), ("off every ring", (0.5, 0.5), True)):
+        window = line_segments([square], rng, True)
+        copies = [window.GetPoints().InsertNextPoint(at[0], at[1], 0.0) for _ in range(2)]
+        window.GetLines().InsertNextCell(2, copies)
+        output, errors, warnings = clip_by(tiles, window)
+        assert_that(not errors and cell_values(output, "ClippedArea") == cell_values(clip(tiles, [square]), "ClippedArea"),
+                    f"a zero-length segment {where}: {errors}")
+        assert_that(warnings == [] if not named else
+                    len(warnings) == 1 and "1 cell(s)" in warnings[0] and "the first is cell 4" in warnings[0],
+                    f"a zero-length segment {where}: {warnings}")
     # Lines that close no ring: nothing to clip by, their cells named.
     from vtkmodules.vtkCommonDataModel import vtkCellArray
 
