@@ -84,7 +84,7 @@ time's minute (15 for times at :00, :15, :30 and :45), each step labelled by its
 are; a minute column (year,month,day,hour,minute,...), weights_all_minutes.csv, --minute
 'YYYY-MM-DD HH:MM' (files named YYYY_MM_DD_HH_MM), every step from the first to the last.
 Only gauges' values set the step; the times that make it finer than most are apart, and gauges
-of different steps (5 minutes beside 15), are named. --sum-to MINUTES
+of different steps (5 minutes beside 15; gauges of 8 times or more), are named. --sum-to MINUTES
 sums each station's values into steps of that many minutes first (60: hours, with hour columns
 and weights_all_hours.csv), such as 5-minute records into quarter hours or hours.
 Observations may also be wide: a row per time (date, or year and month, with day, hour and minute
@@ -2425,11 +2425,14 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path, adjective="mont
     for ring in outline:
         xs, ys = zip(*ring)
         ax.plot(xs + xs[:1], ys + ys[:1], color="black", linewidth=1.2)
-    ax.scatter([lon[i] for i in range(len(lon)) if i not in reporting],
-               [lat[i] for i in range(len(lat)) if i not in reporting],
-               s=6, facecolors="none", edgecolors="grey", linewidths=0.5, label="gauge, no report")
-    ax.scatter([lon[i] for i in reporting], [lat[i] for i in reporting], s=9, color="red",
-               label="gauge, reported")
+    silent = [i for i in range(len(lon)) if i not in reporting]
+    # (a legend entry only for gauges there are: "gauge, no report" stood on maps where all reported)
+    if silent:
+        ax.scatter([lon[i] for i in silent], [lat[i] for i in silent],
+                   s=6, facecolors="none", edgecolors="grey", linewidths=0.5, label="gauge, no report")
+    if reporting:
+        ax.scatter([lon[i] for i in reporting], [lat[i] for i in reporting], s=9, color="red",
+                   label="gauge, reported")
     ax.set_xlim(lon_min, lon_max)
     ax.set_ylim(lat_min, lat_max)
     ax.set_aspect(1.0 / math.cos(math.radians((lat_min + lat_max) / 2)))  # degrees of equal length
@@ -2438,8 +2441,9 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path, adjective="mont
     ax.set_xlabel("longitude")
     ax.set_ylabel("latitude")
     ax.set_title(title)
-    ax.legend(loc="best", fontsize=8)  # (where it hides the fewest tiles and gauges)
-    fig.tight_layout()
+    # Below the map, beside no tile: "best" put it over the tiles of a catchment that fills the map.
+    fig.legend(loc="lower center", ncol=2, fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0.0, 0.04, 1.0, 1.0))
     fig.savefig(path, dpi=110)
     plt.close(fig)
 
