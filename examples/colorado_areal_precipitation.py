@@ -1719,9 +1719,10 @@ def interactive():
 class Progress:
     """Prints the filter's progress over the steps: on one line at a terminal, in steps of 5%
     (end_line() ends that line before another message is printed), or as a line of its own at 0,
-    25, 50, 75 and 100% into a log; stop() ends it for good (the filter failed). say() prints a
-    message after the progress: one that comes while it runs is held until it ends (the warning of
-    gauges never weighted, given as the run ends, came between the 75% and 100% lines)."""
+    25, 50, 75 and 100% into a log; stop() ends it for good (the filter failed, or its run is
+    over). say() prints a message after the progress: one that comes while it runs is held until
+    it ends (the warning of gauges never weighted, given as the run ends, came between the 75% and
+    100% lines)."""
 
     def __init__(self, label):
         self.label, self.last, self.open, self.stopped = label, -1, False, False
@@ -1874,8 +1875,8 @@ class InputFiles:
 
 
 class FilterMessages:
-    """Catches the filter's errors and warnings. Its warnings are printed as they come, each on a
-    line of its own (InputFiles.warning); check() ends the script with one line for its error
+    """Catches the filter's errors and warnings. Its warnings are printed each on a line of its own
+    (InputFiles.warning), after the progress where they come while it runs (Progress.say); check() ends the script with one line for its error
     (InputFiles.error). Caught by csv_input.catch_vtk_messages, none of them is printed as VTK's
     log line, and the executive's follow-up ("Algorithm ... returned failure for request: ...",
     with a dump of the request) is kept until check()."""
@@ -2425,14 +2426,16 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path, adjective="mont
     for ring in outline:
         xs, ys = zip(*ring)
         ax.plot(xs + xs[:1], ys + ys[:1], color="black", linewidth=1.2)
-    silent = [i for i in range(len(lon)) if i not in reporting]
-    # (a legend entry only for gauges there are: "gauge, no report" stood on maps where all reported)
+    # A legend entry only for the kinds of gauge on the map ("gauge, no report" stood on maps where
+    # every gauge shown reported).
+    shown = [i for i in range(len(lon)) if lon_min <= lon[i] <= lon_max and lat_min <= lat[i] <= lat_max]
+    silent = [i for i in shown if i not in reporting]
+    heard = [i for i in shown if i in reporting]
     if silent:
         ax.scatter([lon[i] for i in silent], [lat[i] for i in silent],
                    s=6, facecolors="none", edgecolors="grey", linewidths=0.5, label="gauge, no report")
-    if reporting:
-        ax.scatter([lon[i] for i in reporting], [lat[i] for i in reporting], s=9, color="red",
-                   label="gauge, reported")
+    if heard:
+        ax.scatter([lon[i] for i in heard], [lat[i] for i in heard], s=9, color="red", label="gauge, reported")
     ax.set_xlim(lon_min, lon_max)
     ax.set_ylim(lat_min, lat_max)
     ax.set_aspect(1.0 / math.cos(math.radians((lat_min + lat_max) / 2)))  # degrees of equal length
@@ -2442,7 +2445,8 @@ def plot_map(per_gauge, gauges, outline, reporting, title, path, adjective="mont
     ax.set_ylabel("latitude")
     ax.set_title(title)
     # Below the map, beside no tile: "best" put it over the tiles of a catchment that fills the map.
-    fig.legend(loc="lower center", ncol=2, fontsize=8, frameon=False)
+    if silent or heard:
+        fig.legend(loc="lower center", ncol=2, fontsize=8, frameon=False)
     fig.tight_layout(rect=(0.0, 0.04, 1.0, 1.0))
     fig.savefig(path, dpi=110)
     plt.close(fig)

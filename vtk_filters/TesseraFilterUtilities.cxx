@@ -1906,8 +1906,8 @@ std::string RejectedIdsText(const std::vector<std::int32_t>& rejected)
     rejected.size(), [&](std::size_t k) { return std::to_string(rejected[k]); });
 }
 
-/// The field data arrays that list unused points: "array RejectedPointIds", "arrays
-/// DuplicatePointIds and DuplicateOfPointIds", or all three.
+/// The field data arrays that list unused points, some of them rejected or some duplicates:
+/// "array RejectedPointIds", "arrays DuplicatePointIds and DuplicateOfPointIds", or all three.
 std::string UnusedIdArraysText(bool rejected, bool duplicates)
 {
   if (!duplicates)
@@ -1918,8 +1918,11 @@ std::string UnusedIdArraysText(bool rejected, bool duplicates)
     "DuplicatePointIds and DuplicateOfPointIds";
 }
 
-} // namespace
-
+/// The warning for a window (its bounding box) that holds none of the points (`rejected` all of
+/// them), so that there is no `what` ("tile"), naming the window's box and the points' (a
+/// ParaView user saw only a count of rejected points and an empty output), with a hint on units
+/// and order where the boxes do not meet, and the first 20 ids; empty where some point was taken,
+/// or there is none.
 std::string NoPointInWindowWarning(const tessera::Box2& window,
   vtkPoints* points,
   const std::vector<std::int32_t>& rejected,
@@ -1938,16 +1941,8 @@ std::string NoPointInWindowWarning(const tessera::Box2& window,
              "ymax?)"
            : " (the boxes overlap, but each point lies outside the window or on its boundary)") +
     "; all " + std::to_string(rejected.size()) +
-    " are in the field data array RejectedPointIds: point(s) " + RejectedIdsText(rejected) + ".";
+    " point(s) are in the field data array RejectedPointIds: " + RejectedIdsText(rejected) + ".";
 }
-
-std::string NoPointsWarning(const std::string& what)
-{
-  return "the input has no points: no " + what + " (does the filter before it give none?)";
-}
-
-namespace
-{
 
 /// For points stored as float: the float's step at their largest x or y, within which points
 /// given as doubles became one when stored (a trial's UTM points, 1 mm apart at 5e6, lost 382 as
@@ -1971,8 +1966,11 @@ std::string FloatStorageNote(vtkPoints* points)
     "option).";
 }
 
-} // namespace
-
+/// The warning for points a tessellation filter did not use (`rejected` outside the window,
+/// `duplicates` exact copies with the point each copies), saying they were not `verb` ("used",
+/// "triangulated"), where their ids are, and the first 20 of each (a count of none is left out);
+/// empty when every point was used. With duplicates among input `points` stored as float, it also
+/// says the float's step at their coordinates, within which points became one when stored.
 std::string UnusedPointsWarning(const std::vector<std::int32_t>& rejected,
   const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates,
   const char* verb,
@@ -2007,7 +2005,14 @@ std::string UnusedPointsWarning(const std::vector<std::int32_t>& rejected,
   return text.str() + "." + (duplicates.empty() ? std::string() : FloatStorageNote(points));
 }
 
-std::string UnusedPointsWarnings(const tessera::Box2& window,
+} // namespace
+
+std::string NoPointsWarning(const std::string& what)
+{
+  return "the input has no points: no " + what + " (does the filter before it give none?)";
+}
+
+std::string PointsNotUsedWarning(const tessera::Box2& window,
   const std::vector<std::int32_t>& rejected,
   const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates,
   const char* verb,

@@ -347,30 +347,16 @@ RenamedArrays AddUnusedPointIds(vtkDataObject* data,
 void AddDuplicatePointIds(vtkDataObject* data,
   const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates);
 
-/// The warning for points a tessellation filter did not use (`rejected` outside the window,
-/// `duplicates` exact copies with the point each copies), saying they were not `verb` ("used",
-/// "triangulated"), where their ids are, and the first 20 of each (a count of none is left out);
-/// empty when every point was used. With duplicates among input `points` stored as float, it also
-/// says the float's step at their coordinates, within which points became one when stored.
-std::string UnusedPointsWarning(const std::vector<std::int32_t>& rejected,
-  const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates,
-  const char* verb,
-  vtkPoints* points = nullptr);
-
-/// The warning for a window (its bounding box) that holds none of the points (`rejected` all of
-/// them), so that there is no `what` ("tile"), naming the window's box and the points' (a
-/// ParaView user saw only a count of rejected points and an empty output), with a hint on units
-/// and order where the boxes do not meet, and the first 20 ids; empty where some point was taken,
-/// or there is none.
-std::string NoPointInWindowWarning(const tessera::Box2& window,
-  vtkPoints* points,
-  const std::vector<std::int32_t>& rejected,
-  const char* what);
-
-/// One warning for the points a tessellation filter did not use: NoPointInWindowWarning's where no
-/// point lies in the window (a second warning, counting the same points as outside, said nothing
-/// more), else UnusedPointsWarning's; empty when every point was used.
-std::string UnusedPointsWarnings(const tessera::Box2& window,
+/// One warning for the points a tessellation filter did not use (`rejected` outside the window,
+/// `duplicates` exact copies with the point each copies), empty when every point was used. Where
+/// no point lies in the window (every one rejected), it names the window's bounding box and the
+/// points', with a hint on units and order where the boxes do not meet, and the first 20 ids (a
+/// ParaView user saw only a count and an empty output; a second warning, counting the same points
+/// as outside, said nothing more), saying there is no `what` ("tile"). Else it says the points were
+/// not `verb` ("used", "triangulated"), the field data arrays that list them, and the first 20 of
+/// each kind (a count of none left out); with duplicates among input `points` stored as float, also
+/// the float's step at their coordinates, within which points became one when stored.
+std::string PointsNotUsedWarning(const tessera::Box2& window,
   const std::vector<std::int32_t>& rejected,
   const std::vector<std::pair<std::int32_t, std::int32_t>>& duplicates,
   const char* verb,

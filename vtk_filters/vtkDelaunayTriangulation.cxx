@@ -108,7 +108,7 @@ void AddUnusedPoints(vtkDelaunayTriangulation* self,
       self, << tessera_vtk::RenamedArraysWarning(renamed, "field-data", "the output", "field"));
   }
   tesseraWarnUnlessEmptyMacro(self,
-    tessera_vtk::UnusedPointsWarnings(
+    tessera_vtk::PointsNotUsedWarning(
       windowBox, rejected, duplicates, "triangulated", "triangle", inputPoints));
 }
 

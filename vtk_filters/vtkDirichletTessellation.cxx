@@ -562,7 +562,7 @@ void WarnOfUnusedPointsAndCollapsedTiles(vtkDirichletTessellation* self,
   vtkPoints* inputPoints)
 {
   tesseraWarnUnlessEmptyMacro(self,
-    tessera_vtk::UnusedPointsWarnings(
+    tessera_vtk::PointsNotUsedWarning(
       windowBox, result.Rejected, result.Duplicates, "used", "tile", inputPoints));
   tesseraWarnUnlessEmptyMacro(self, CollapsedTilesWarning(result.Tiles));
 }

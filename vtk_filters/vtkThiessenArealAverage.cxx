@@ -295,17 +295,20 @@ public:
     {
       return std::string();
     }
+    std::string firsts;
+    for (const std::size_t p : seen)
+    {
+      firsts += std::string(firsts.empty() ? "" : ", ") + "row " +
+        std::to_string(this->FirstRowOfPeriod[p]) + "'s '" + this->FirstTextOfPeriod[p] + "' " +
+        names[p];
+    }
     const std::size_t coarse = seen.front(), fine = seen.back();
-    return "column '" + this->TimeColumn + "' gives dates of different periods: row " +
-      std::to_string(this->FirstRowOfPeriod[coarse]) + "'s '" + this->FirstTextOfPeriod[coarse] +
-      "' is " + names[coarse] + ", row " + std::to_string(this->FirstRowOfPeriod[fine]) + "'s '" +
-      this->FirstTextOfPeriod[fine] + "' " + names[fine] +
-      ": each date is taken as its period's start (a month as its first day at 00:00, a year as "
+    return "column '" + this->TimeColumn + "' gives dates of different periods (" + firsts +
+      "): each date is taken as its period's start (a month as its first day at 00:00, a year as "
       "1 January), so a value for " +
       names[coarse] + " shares a step with the values of its first " +
       (fine == 2 ? "day" : "month") +
-      "; give every date at one period (a total of months for "
-      "a monthly series, say)";
+      "; give every date at one period (a total of months for a monthly series, say)";
   }
 
   /// The row's time; nothing when its time or month field is empty (blank text, or NaN: what a
@@ -430,10 +433,11 @@ private:
   }
 
   /// 0 for a year ("1963"), 1 for a month ("1963-08"), 2 for a day or a time of day: the hyphens
-  /// of the date, before a time of day (IsoDateTime read it: a date of years 0 .. 9999).
+  /// of the date before its time of day (IsoDateTimeAndZone read it: a date of years 0 .. 9999,
+  /// then "T" or a space before a time, and a time zone only after a time).
   static std::size_t PeriodOf(const std::string& date)
   {
-    const std::string day = date.substr(0, date.find_first_of("Tt "));
+    const std::string day = date.substr(0, date.find_first_of("T "));
     return std::min<std::size_t>(2, std::count(day.begin(), day.end(), '-'));
   }
 

@@ -38,7 +38,11 @@
  *   +01:00 where every date has the same offset: times are read as written, in that zone) or
  *   numbers, or a whole year column with a month column (MonthColumn); dates become decimal years
  *   on a month grid: 1963-08 (or 1963-08-01, or year 1963 with month 8) is 1963 + 7/12, and a day
- *   is its share of its month (core/decimal_time.h). Values are numbers, NaN where missing; a text
+ *   is its share of its month (core/decimal_time.h). A month or a year among finer dates (a
+ *   monthly total among daily values) thus shares the step of its first day, with a warning
+ *   naming the first date of each period; a date among times of day (a daily total among hourly
+ *   values) shares the step of its 00:00 without one, as midnight is often written as the date
+ *   alone. Values are numbers, NaN where missing; a text
  *   value column (what a CSV reader gives when markers stand among the numbers) also takes an
  *   empty field, NA, N/A, NaN or null as missing. A CSV file read by ParaView or
  *   vtkDelimitedTextReader can thus be used as it is, with one caution: those readers turn an

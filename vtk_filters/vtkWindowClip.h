@@ -12,18 +12,16 @@
  * end into closed rings, as a contour from vtkCutter or ParaView's Contour is given; where four or
  * six lines meet, as at a saddle, the rings touch there; a line of no length at a point of a ring,
  * as vtkContourFilter gives between two ids of one point, adds nothing) of input 1 taken as rings
- * under the
- * even-odd rule, so a ring inside another is a hole and a ring inside a
- * hole an island (other cells of input 1, such as lines in no closed ring, are ignored with a
- * warning). Ring orientation
- * and order do not matter. A catchment boundary that touches or crosses itself, or two rings that
- * cross, is an error naming them; rings may touch at points and share stretches of boundary (a
- * hole touching the outer boundary at a vertex, as OGC's simple features allow; adjacent parts).
- * An island that fills a hole exactly (an enclave given as a hole and as a polygon) cancels it by
- * the even-odd rule: both are left out with a warning naming them. An outer ring given twice (a
- * feature repeated) is an error naming both copies: cancelled, it would take its region away;
- * so are rings that cancel out altogether (a basin given with all its sub-basins), tiles that are
- * neither a point set nor a composite data set (a table), and no window connected.
+ * under the even-odd rule, so a ring inside another is a hole and a ring inside a hole an island
+ * (other cells of input 1, such as lines in no closed ring, are ignored with a warning). Ring
+ * orientation and order do not matter. A catchment boundary that touches or crosses itself, or two
+ * rings that cross, is an error naming them; rings may touch at points and share stretches of
+ * boundary (a hole touching the outer boundary at a vertex, as OGC's simple features allow;
+ * adjacent parts). An island that fills a hole exactly (an enclave given as a hole and as a
+ * polygon) cancels it by the even-odd rule: both are left out with a warning naming them. An outer
+ * ring given twice (a feature repeated) is an error naming both copies: cancelled, it would take
+ * its region away; so are rings that cancel out altogether (a basin given with all its sub-basins),
+ * tiles that are neither a point set nor a composite data set (a table), and no window connected.
  * An error too is a tile of input 0 that is not convex (beyond the rounding of its vertices, in
  * float or double as its points are stored: its area differing from its convex hull's by more
  * than a millionth), whose clipped area would otherwise be its hull's. Tiles given as a composite

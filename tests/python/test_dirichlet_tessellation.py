@@ -228,7 +228,7 @@ def test_unused_points_are_reported_with_ids():
                     and f"no point lies inside the window (x 100 .. 200, y 100 .. 200), so there is no "
                         f"{'triangle' if algorithm is None else 'tile'}: the points span x 3 .. 12, y 1 .. 5 (is the "
                         "window in the points' units" in said[0]
-                    and said[0].strip().endswith("; all 3 are in the field data array RejectedPointIds: point(s) 0, 1, 2.")
+                    and said[0].strip().endswith("; all 3 point(s) are in the field data array RejectedPointIds: 0, 1, 2.")
                     and id_values(g.GetOutput(0).GetFieldData(), "RejectedPointIds") == [0, 1, 2],
                     f"{filter_class.__name__} {algorithm}: every point outside: {said}")
     # Points in the window's box but outside its constraint, or on its boundary: no hint on units.

@@ -1048,13 +1048,15 @@ def test_dates_of_different_periods_are_warned_of():
     ring = [(10.0, 50.0), (11.0, 50.0), (11.0, 51.0), (10.0, 51.0)]
     cases = (
         (["2020-01-31", "2020-02-01 12:00", " 2020-03 ", "2020"], 4,
-         "column 'time' gives dates of different periods: row 3's '2020' is a year, row 0's '2020-01-31' a day: "
-         "each date is taken as its period's start (a month as its first day at 00:00, a year as 1 January), so a "
-         "value for a year shares a step with the values of its first day"),
+         "column 'time' gives dates of different periods (row 3's '2020' a year, row 2's '2020-03' a month, "
+         "row 0's '2020-01-31' a day): each date is taken as its period's start (a month as its first day at "
+         "00:00, a year as 1 January), so a value for a year shares a step with the values of its first day"),
         (["2020-02", "2020-03", "2020-03-01T00:00"], 2,  # (2020-03 is 2020-03-01's step)
-         "row 0's '2020-02' is a month, row 2's '2020-03-01T00:00' a day: each date is taken as its period's start"),
-        (["2019", "2020-03"], 2, "row 0's '2019' is a year, row 1's '2020-03' a month: each date"),
+         "(row 0's '2020-02' a month, row 2's '2020-03-01T00:00' a day): each date is taken as its period's start"),
+        (["2019", "2020-03"], 2, "(row 0's '2019' a year, row 1's '2020-03' a month): each date"),
         (["2020-03-01", "2020-03-01 06:00", "2020-03-02"], 3, None),
+        # (a time zone's hyphen is no date's: it follows a time of day)
+        (["2020-03-01 10:00-05:00", "2020-03-01T11:00-05:00", "2020-03-02 00:00-0500"], 3, None),
         (["2020-01", "2020-02"], 2, None))
     for dates, steps, expected in cases:
         table = vtkTable()
