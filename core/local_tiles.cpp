@@ -8,6 +8,7 @@
 #include "tile_edges.h"
 
 #include <algorithm>
+#include <chrono>
 #include <functional>
 #include <unordered_map>
 #include <utility>
@@ -592,6 +593,50 @@ void VisitTilesOfRange(const Tess& tess,
   }
 }
 
+// VisitTilesOf's chunk bounds for n starts when the calling thread's chunk 0 takes callerWeight
+// tiles per tile of each other chunk; the others share the rest equally.
+std::vector<std::int32_t> WeightedChunkBounds(std::int32_t n,
+  std::size_t chunks,
+  double callerWeight)
+{
+  const double total = callerWeight + double(chunks - 1);
+  const auto first = std::int32_t(std::clamp(std::round(n * callerWeight / total), 0.0, double(n)));
+  std::vector<std::int32_t> bounds{ 0 };
+  for (const std::int32_t b : parallel::ChunkBounds(n - first, chunks - 1))
+  {
+    bounds.push_back(first + b);
+  }
+  return bounds;
+}
+
+// The calling thread's weight for the next call, from when the chunks of this one ended (chunk k
+// visited bounds[k] .. bounds[k + 1]). It derives the tiles near the triangles it has just
+// written, from its own cache, while another thread reads them from memory and starts later
+// (the areal average's updates: the other chunk ended 40 to 100 us after the caller's, of some
+// 600). Each chunk's time per tile gives the weight that would have ended them together (within
+// 1/2 .. 2); the weight moves a quarter of the way there, so that one chunk held up by the machine
+// (a worker that ended 1.2 ms late) does not unbalance the next calls, and stays where chunks are
+// too small to time.
+double AdaptedCallerWeight(double weight,
+  const std::vector<std::int32_t>& bounds,
+  const std::vector<double>& ends)
+{
+  constexpr std::int32_t FewestTimed = 64;
+  const std::size_t chunks = bounds.size() - 1;
+  double others = 0.0; // the other chunks' mean time per tile
+  for (std::size_t k = 0; k < chunks; ++k)
+  {
+    const std::int32_t tiles = bounds[k + 1] - bounds[k];
+    if (tiles < FewestTimed || !(ends[k] > 0.0))
+    {
+      return weight;
+    }
+    others += k == 0 ? 0.0 : ends[k] / tiles / double(chunks - 1);
+  }
+  const double caller = ends[0] / (bounds[1] - bounds[0]);
+  return 0.75 * weight + 0.25 * std::clamp(others / caller, 0.5, 2.0);
+}
+
 template<class T>
 void Append(std::vector<T>& to, const std::vector<T>& from)
 {
@@ -704,12 +749,17 @@ std::size_t VisitTilesOf(const DirichletTessellation& tessellation,
   const std::vector<std::pair<std::int32_t, std::int32_t>> starts = VertexEdges(tessellation, ids);
   const std::size_t chunks = std::max<std::size_t>(
     1, std::min(maxChunks, parallel::ThreadCount(std::int64_t(starts.size()), minimumPerThread)));
-  const std::vector<std::int32_t> bounds =
-    parallel::ChunkBounds(std::int32_t(starts.size()), chunks);
-  if (workspace && workspace->FaceTables.size() < chunks)
+  const auto n = std::int32_t(starts.size());
+  const std::vector<std::int32_t> bounds = workspace && chunks > 1
+    ? WeightedChunkBounds(n, chunks, workspace->CallerWeight)
+    : parallel::ChunkBounds(n, chunks);
+  if (workspace)
   {
-    workspace->FaceTables.resize(chunks);
+    workspace->FaceTables.resize(std::max(workspace->FaceTables.size(), chunks));
+    workspace->ChunkEnds.assign(chunks, 0.0);
   }
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
   parallel::RunChunks(chunks,
     [&](std::size_t k)
     {
@@ -720,7 +770,16 @@ std::size_t VisitTilesOf(const DirichletTessellation& tessellation,
         k,
         visit,
         workspace ? &workspace->FaceTables[k] : nullptr);
+      if (workspace)
+      {
+        workspace->ChunkEnds[k] = std::chrono::duration<double>(Clock::now() - start).count();
+      }
     });
+  if (workspace && chunks > 1)
+  {
+    workspace->CallerWeight =
+      AdaptedCallerWeight(workspace->CallerWeight, bounds, workspace->ChunkEnds);
+  }
   return starts.size();
 }
 

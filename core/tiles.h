@@ -346,20 +346,26 @@ using TileVisitor = std::function<
 /// What VisitTilesOf keeps between calls when given one: per chunk, a table of the triangles'
 /// faces, set back after each call entry by entry, so that a caller that visits a few tiles at
 /// each of many steps (the areal average's updates) does not clear a table of every triangle each
-/// time. Its contents are VisitTilesOf's business.
+/// time; and the share of the tiles that the calling thread's chunk takes, adapted to how fast
+/// the chunks went in the calls before. Its contents are VisitTilesOf's business.
 struct LocalTilesWorkspace
 {
   std::vector<std::vector<std::int32_t>> FaceTables;
+  /// Tiles of chunk 0 (the calling thread's) per tile of each other chunk.
+  double CallerWeight = 1.0;
+  /// Per chunk, when it ended, in seconds from the start of the call's chunks.
+  std::vector<double> ChunkEnds;
 };
 
 /// ComputeTilesOf's tiles (the same, in the same order) handed to visit one by one as they are
 /// made, instead of collected: a caller that clips or measures each tile does so while it is in
 /// the cache, on the thread that made it. The ids are cut into contiguous chunks, at most
-/// maxChunks, with at least minimumPerThread ids each (parallel::ThreadCount); chunk 0 runs on
+/// maxChunks, as many as have minimumPerThread ids each (parallel::ThreadCount); chunk 0 runs on
 /// the calling thread, the others beside it, so visit must only write what belongs to its chunk
-/// or to the id. A chunk stops at the first tile whose visit throws; once every chunk has
-/// stopped, the error of the first failing tile in the given order is rethrown. Returns the number
-/// of tiles visited.
+/// or to the id. The chunks are equal, but with a workspace chunk 0 takes its CallerWeight times
+/// the others' share (1/2 to 2 times: adapted from call to call, LocalTilesWorkspace). A chunk
+/// stops at the first tile whose visit throws; once every chunk has stopped, the error of the first
+/// failing tile in the given order is rethrown. Returns the number of tiles visited.
 std::size_t VisitTilesOf(const DirichletTessellation& tessellation,
   const std::vector<std::int32_t>& ids,
   std::size_t maxChunks,

@@ -350,6 +350,61 @@ TEST(LocalTiles, VisitedTilesAreComputeTilesOfsInChunks)
   }
 }
 
+// With a workspace, the calling thread's chunk takes CallerWeight tiles per tile of the other's,
+// the weight moving after each call a quarter of the way to what would have ended the chunks
+// together (within 1/2 .. 2), and staying where a chunk is too small to time (under 64 tiles). The
+// tiles are ComputeTilesOf's whatever the split.
+TEST(LocalTiles, TheCallingThreadsShareOfTheTilesAdaptsToTheChunksTimes)
+{
+  const DirichletTessellation t(Window::Rectangle(0, 1, 0, 1), UniformPoints(3000, 43));
+  const std::vector<std::int32_t> all = tessera_test::AcceptedIds(t);
+  const tessera_test::ThreadLimitOverride limit(2);
+  LocalTilesWorkspace workspace;
+  const auto visitChunks = [&](const std::vector<std::int32_t>& ask)
+  {
+    const TileSet expected = ComputeTilesOf(t, ask);
+    std::size_t firstChunk = 0, k = 0;
+    VisitTilesOf(
+      t,
+      ask,
+      2,
+      10,
+      [&](std::size_t chunk, std::int32_t id, const Point2* tile, std::size_t count)
+      {
+        // (chunk 0 runs on this thread; the other chunk's tiles are checked by their count)
+        if (chunk == 0)
+        {
+          ++firstChunk;
+          EXPECT_EQ(id, expected.PointIds[k]);
+          EXPECT_EQ(std::memcmp(
+                      tile, expected.Vertices.data() + expected.Offsets[k], count * sizeof(Point2)),
+            0);
+          ++k;
+        }
+      },
+      &workspace);
+    return firstChunk;
+  };
+  // Too few to time: 100 tiles, two chunks of 50.
+  const std::vector<std::int32_t> few(all.begin(), all.begin() + 100);
+  EXPECT_EQ(visitChunks(few), 50u);
+  EXPECT_EQ(workspace.CallerWeight, 1.0);
+  // A weight of 1.5: 1500 of 2500 tiles on the calling thread, then a weight in
+  // 0.75 * 1.5 + 0.25 * [0.5, 2].
+  const std::vector<std::int32_t> many(all.begin(), all.begin() + 2500);
+  workspace.CallerWeight = 1.5;
+  EXPECT_EQ(visitChunks(many), 1500u);
+  EXPECT_GE(workspace.CallerWeight, 1.25);
+  EXPECT_LE(workspace.CallerWeight, 1.625);
+  for (int call = 0; call < 20; ++call)
+  {
+    const double weight = workspace.CallerWeight;
+    EXPECT_EQ(visitChunks(many), std::size_t(std::round(2500 * weight / (weight + 1))));
+    EXPECT_GE(workspace.CallerWeight, 0.5);
+    EXPECT_LE(workspace.CallerWeight, 2.0);
+  }
+}
+
 // The areal average's update rule: after removals and insertions, the tiles that differ from
 // before are among the face mates (before) of the removed points, the face mates (after) of the
 // inserted points and the inserted points themselves; and the local tiles of those equal a full
