@@ -931,6 +931,21 @@ def dated_table(months, time_of):
     return table
 
 
+def timed_rows_table(rows):
+    """A long-format table from (station, time, value) rows: text columns station_id and time (dates
+    as text), a double column value."""
+    table = vtkTable()
+    s, t, v = vtkStringArray(), vtkStringArray(), vtkDoubleArray()
+    for column, name in ((s, "station_id"), (t, "time"), (v, "value")):
+        column.SetName(name)
+        table.AddColumn(column)
+    for station, time, value in rows:
+        s.InsertNextValue(station)
+        t.InsertNextValue(time)
+        v.InsertNextValue(value)
+    return table
+
+
 def summary_of(coords, ids, ring, table, **settings):
     f = vtkThiessenArealAverage()
     messages = messages_of(f)
@@ -986,16 +1001,7 @@ def test_dates_of_days_and_hours_are_written_as_given():
     texts = ["1963-08-01", "1963-08-16 06:30", "1963-08-16 24:00", "1963-12-31 24:00"]
     expected = ["1963-08-01 00:00", "1963-08-16 06:30", "1963-08-17 00:00", "1964-01-01 00:00"]
     for times, dated in ((texts, True), (texts[:3] + ["1963.99"], False)):
-        table = vtkTable()
-        s, t, v = vtkStringArray(), vtkStringArray(), vtkDoubleArray()
-        for column, name in ((s, "station_id"), (t, "time"), (v, "value")):
-            column.SetName(name)
-            table.AddColumn(column)
-        for time in times:
-            for sid, value in values.items():
-                s.InsertNextValue(str(sid))
-                t.InsertNextValue(time)
-                v.InsertNextValue(value)
+        table = timed_rows_table([(str(sid), time, value) for time in times for sid, value in values.items()])
         f, messages = summary_of(coords, ids, ring, table)
         assert_that(not messages, f"{times}: {messages}")
         column = f.GetOutputDataObject(1).GetColumnByName("Date")
@@ -1059,15 +1065,7 @@ def test_dates_of_different_periods_are_warned_of():
         (["2020-03-01 10:00-05:00", "2020-03-01T11:00-05:00", "2020-03-02 00:00-0500"], 3, None),
         (["2020-01", "2020-02"], 2, None))
     for dates, steps, expected in cases:
-        table = vtkTable()
-        s, t, v = vtkStringArray(), vtkStringArray(), vtkDoubleArray()
-        for column, name in ((s, "station_id"), (t, "time"), (v, "value")):
-            column.SetName(name)
-            table.AddColumn(column)
-        for k, date in enumerate(dates):
-            s.InsertNextValue(ids[k % 3])
-            t.InsertNextValue(date)
-            v.InsertNextValue(float(k))
+        table = timed_rows_table([(ids[k % 3], date, float(k)) for k, date in enumerate(dates)])
         f = vtkThiessenArealAverage()
         errors, warnings = messages_of(f), messages_of(f, vtkCommand.WarningEvent)
         f.SetGaugesData(gauges_polydata(coords, ids))
@@ -1098,16 +1096,7 @@ def test_time_of_date_picks_that_dates_step():
     coords = [(-0.5, -0.5), (0.5, -0.5), (0.0, 0.5)]
     ids = ["a", "b", "c"]
     days = ["2001-02-27", "2001-02-28", "2001-03-01", "2001-03-02"]
-    table = vtkTable()
-    s, t, v = vtkStringArray(), vtkStringArray(), vtkDoubleArray()
-    for column, name in ((s, "station_id"), (t, "time"), (v, "value")):
-        column.SetName(name)
-        table.AddColumn(column)
-    for d, day in enumerate(days):
-        for g, sid in enumerate(ids):
-            s.InsertNextValue(sid)
-            t.InsertNextValue(day)
-            v.InsertNextValue(10.0 * d + g)
+    table = timed_rows_table([(sid, day, 10.0 * d + g) for d, day in enumerate(days) for g, sid in enumerate(ids)])
     f, messages = summary_of(coords, ids, [(-1, -1), (1, -1), (1, 1), (-1, 1)], table)
     assert_that(not messages, f"{messages}")
     dates, times = summary_column(f, "Date"), summary_column(f, "Time")
