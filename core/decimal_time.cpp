@@ -146,6 +146,7 @@ struct DateTimeRead
   int Year = 0, Month = 1, Day = 1;
   int Seconds = 0;      ///< into the day (86400 for 24:00)
   bool HasTime = false; ///< a time of day was read
+  DateTimeAndZone::Period Given = DateTimeAndZone::Period::Day;
   std::string_view Rest;
 };
 
@@ -158,6 +159,10 @@ std::optional<DateTimeRead> ReadDateTime(std::string_view text)
   {
     return std::nullopt;
   }
+  // ("YYYY" ends at 4, "YYYY-MM" at 7, "YYYY-MM-DD" at 10)
+  read.Given = at == 4 ? DateTimeAndZone::Period::Year
+    : at == 7          ? DateTimeAndZone::Period::Month
+                       : DateTimeAndZone::Period::Day;
   if (AtTimeOfDay(text, at))
   {
     ++at;
@@ -346,6 +351,7 @@ std::optional<DateTimeAndZone> IsoDateTimeAndZone(std::string_view text)
     }
   }
   out.Time = TimeOfDate(read->Year, read->Month, read->Day, read->Seconds);
+  out.Given = read->Given;
   return out;
 }
 

@@ -62,8 +62,17 @@ std::optional<ZonedTime> IsoDateTimeInZone(std::string_view text);
 /// IsoDateTimeInZone's time and offset with one.
 struct DateTimeAndZone
 {
+  /// The period a date names: "1963" a year, "1963-08" a month, "1963-08-16" (with a time of day
+  /// or without) a day.
+  enum class Period
+  {
+    Year,
+    Month,
+    Day
+  };
   double Time = 0.0;
   std::optional<int> OffsetMinutes; ///< nothing without a zone
+  Period Given = Period::Day;       ///< the period the date was written at
 };
 
 /// IsoDateTime's reading of text, or IsoDateTimeInZone's; nothing where both give nothing.

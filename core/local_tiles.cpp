@@ -623,17 +623,20 @@ double AdaptedCallerWeight(double weight,
 {
   constexpr std::int32_t FewestTimed = 64;
   const std::size_t chunks = bounds.size() - 1;
-  double others = 0.0; // the other chunks' mean time per tile
+  const auto tilesOf = [&bounds](std::size_t k) { return double(bounds[k + 1] - bounds[k]); };
   for (std::size_t k = 0; k < chunks; ++k)
   {
-    const std::int32_t tiles = bounds[k + 1] - bounds[k];
-    if (tiles < FewestTimed || !(ends[k] > 0.0))
+    if (tilesOf(k) < FewestTimed || !(ends[k] > 0.0))
     {
       return weight;
     }
-    others += k == 0 ? 0.0 : ends[k] / tiles / double(chunks - 1);
   }
-  const double caller = ends[0] / (bounds[1] - bounds[0]);
+  double others = 0.0; // the other chunks' mean time per tile
+  for (std::size_t k = 1; k < chunks; ++k)
+  {
+    others += ends[k] / tilesOf(k) / double(chunks - 1);
+  }
+  const double caller = ends[0] / tilesOf(0);
   return 0.75 * weight + 0.25 * std::clamp(others / caller, 0.5, 2.0);
 }
 
@@ -756,8 +759,9 @@ std::size_t VisitTilesOf(const DirichletTessellation& tessellation,
   if (workspace)
   {
     workspace->FaceTables.resize(std::max(workspace->FaceTables.size(), chunks));
-    workspace->ChunkEnds.assign(chunks, 0.0);
   }
+  // Per chunk, when it ended, in seconds from the start (AdaptedCallerWeight's).
+  std::vector<double> ends(workspace ? chunks : 0, 0.0);
   using Clock = std::chrono::steady_clock;
   const Clock::time_point start = Clock::now();
   parallel::RunChunks(chunks,
@@ -772,13 +776,12 @@ std::size_t VisitTilesOf(const DirichletTessellation& tessellation,
         workspace ? &workspace->FaceTables[k] : nullptr);
       if (workspace)
       {
-        workspace->ChunkEnds[k] = std::chrono::duration<double>(Clock::now() - start).count();
+        ends[k] = std::chrono::duration<double>(Clock::now() - start).count();
       }
     });
   if (workspace && chunks > 1)
   {
-    workspace->CallerWeight =
-      AdaptedCallerWeight(workspace->CallerWeight, bounds, workspace->ChunkEnds);
+    workspace->CallerWeight = AdaptedCallerWeight(workspace->CallerWeight, bounds, ends);
   }
   return starts.size();
 }

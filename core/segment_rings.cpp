@@ -405,11 +405,23 @@ PointRings JoinSegmentsAtEqualEnds(const std::vector<Point2>& ends)
   PointRings rings;
   rings.Offsets = joined.Offsets;
   rings.Vertices.reserve(joined.Ids.size());
+  std::vector<char> onRing(places.size(), 0);
   for (const std::int64_t id : joined.Ids)
   {
     rings.Vertices.push_back(places[std::size_t(id)]);
+    onRing[std::size_t(id)] = 1;
   }
-  rings.Unjoined = joined.Unjoined;
+  // A segment of no length at a point of a ring adds nothing to it (vtkContourFilter gives one
+  // between two ids of one point): it is not listed. One elsewhere is. (An end with a NaN
+  // coordinate has a place of its own, so such a segment has two.)
+  for (const std::size_t s : joined.Unjoined)
+  {
+    const auto [from, to] = segments[s];
+    if (!(from == to && onRing[std::size_t(from)]))
+    {
+      rings.Unjoined.push_back(s);
+    }
+  }
   return rings;
 }
 

@@ -54,7 +54,9 @@ struct PointRings
   /// Ring k's vertices are Vertices[Offsets[k], Offsets[k + 1]) (the first not repeated).
   std::vector<std::size_t> Offsets{ 0 };
   std::vector<Point2> Vertices;
-  /// As SegmentRings::Unjoined.
+  /// As SegmentRings::Unjoined, but for a segment of no length at a point of a joined ring, which
+  /// adds nothing to the ring and is not listed (vtkContourFilter gives one between two ids of one
+  /// point).
   std::vector<std::size_t> Unjoined;
 };
 

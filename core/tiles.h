@@ -353,8 +353,6 @@ struct LocalTilesWorkspace
   std::vector<std::vector<std::int32_t>> FaceTables;
   /// Tiles of chunk 0 (the calling thread's) per tile of each other chunk.
   double CallerWeight = 1.0;
-  /// Per chunk, when it ended, in seconds from the start of the call's chunks.
-  std::vector<double> ChunkEnds;
 };
 
 /// ComputeTilesOf's tiles (the same, in the same order) handed to visit one by one as they are

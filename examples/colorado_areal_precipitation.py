@@ -1740,8 +1740,7 @@ class Progress:
                 print(f"\r{self.label}: {percent:3d}%", end="", file=sys.stderr, flush=True)
                 self.open = True
             if percent == 100:
-                self.end_line()
-                self.print_held()
+                self.stop()
 
     def running(self):
         return 0 <= self.last < 100 and not self.stopped
@@ -1876,10 +1875,11 @@ class InputFiles:
 
 class FilterMessages:
     """Catches the filter's errors and warnings. Its warnings are printed each on a line of its own
-    (InputFiles.warning), after the progress where they come while it runs (Progress.say); check() ends the script with one line for its error
-    (InputFiles.error). Caught by csv_input.catch_vtk_messages, none of them is printed as VTK's
-    log line, and the executive's follow-up ("Algorithm ... returned failure for request: ...",
-    with a dump of the request) is kept until check()."""
+    (InputFiles.warning), after the progress where they come while it runs (Progress.say); check()
+    ends the script with one line for its error (InputFiles.error). Caught by
+    csv_input.catch_vtk_messages, none of them is printed as VTK's log line, and the executive's
+    follow-up ("Algorithm ... returned failure for request: ...", with a dump of the request) is
+    kept until check()."""
 
     def __init__(self, average, files, progress):
         self.files, self.progress = files, progress

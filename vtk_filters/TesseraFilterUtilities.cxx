@@ -751,36 +751,15 @@ public:
       rings.Sources.push_back(
         (block.empty() ? std::string("a ring") : block + "a ring") + " of joined line cells");
     }
-    std::vector<tessera::Point2> ringPoints = joined.Vertices;
-    std::sort(ringPoints.begin(), ringPoints.end(), XThenY);
     std::vector<vtkIdType> unjoined;
     for (const std::size_t s : joined.Unjoined)
     {
-      if (!this->IsZeroLengthOnRing(s, ringPoints))
-      {
-        unjoined.push_back(this->CellOf[s]);
-      }
+      unjoined.push_back(this->CellOf[s]);
     }
     return unjoined;
   }
 
 private:
-  static bool XThenY(const tessera::Point2& a, const tessera::Point2& b)
-  {
-    return a.x < b.x || (a.x == b.x && a.y < b.y);
-  }
-
-  /// Whether segment s has no length and lies at a point of a joined ring (ringPoints, sorted
-  /// XThenY): vtkContourFilter gives such segments between two ids of one point, and they add
-  /// nothing to the ring (they were counted as cells that join into no ring). One elsewhere is.
-  bool IsZeroLengthOnRing(std::size_t s, const std::vector<tessera::Point2>& ringPoints) const
-  {
-    const tessera::Point2& a = this->Ends[2 * s];
-    const tessera::Point2& b = this->Ends[2 * s + 1];
-    return a.x == b.x && a.y == b.y &&
-      std::binary_search(ringPoints.begin(), ringPoints.end(), a, XThenY);
-  }
-
   std::vector<tessera::Point2> Ends; ///< segment s: Ends[2s] to Ends[2s + 1]
   std::vector<vtkIdType> CellOf;
 };

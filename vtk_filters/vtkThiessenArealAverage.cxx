@@ -380,7 +380,7 @@ private:
     if (const std::optional<tessera::DateTimeAndZone> t = tessera::IsoDateTimeAndZone(*time.Text))
     {
       this->CheckZone(row, *time.Text, t->OffsetMinutes);
-      this->NotePeriod(row, *time.Text);
+      this->NotePeriod(row, *time.Text, t->Given);
       return t->Time;
     }
     const std::optional<double> number = time.Number();
@@ -420,25 +420,17 @@ private:
         "without one");
   }
 
-  /// The first row of each period that a date was given at (MixedPeriodsWarning's).
-  void NotePeriod(vtkIdType row, const std::string& text) const
+  /// The first row of each period that a date was given at (MixedPeriodsWarning's), and its text.
+  void NotePeriod(vtkIdType row,
+    const std::string& text,
+    tessera::DateTimeAndZone::Period given) const
   {
-    const std::string date = Trimmed(text);
-    const std::size_t p = PeriodOf(date);
+    const auto p = static_cast<std::size_t>(given);
     if (this->FirstRowOfPeriod[p] < 0)
     {
       this->FirstRowOfPeriod[p] = row;
-      this->FirstTextOfPeriod[p] = date;
+      this->FirstTextOfPeriod[p] = Trimmed(text);
     }
-  }
-
-  /// 0 for a year ("1963"), 1 for a month ("1963-08"), 2 for a day or a time of day: the hyphens
-  /// of the date before its time of day (IsoDateTimeAndZone read it: a date of years 0 .. 9999,
-  /// then "T" or a space before a time, and a time zone only after a time).
-  static std::size_t PeriodOf(const std::string& date)
-  {
-    const std::string day = date.substr(0, date.find_first_of("T "));
-    return std::min<std::size_t>(2, std::count(day.begin(), day.end(), '-'));
   }
 
   /// "has time zone Z", or "has no time zone".
@@ -455,7 +447,7 @@ private:
   mutable vtkIdType FirstDateRow = -1;      // CheckZone's: the first date's row, text and zone
   mutable std::string FirstDateText;        //
   mutable std::optional<int> FirstOffset;   // (minutes from UTC; nothing without a zone)
-  static constexpr std::size_t Periods = 3; // year, month, day (NotePeriod's)
+  static constexpr std::size_t Periods = 3; // DateTimeAndZone::Period's (NotePeriod's)
   mutable vtkIdType FirstRowOfPeriod[Periods] = { -1, -1, -1 };
   mutable std::string FirstTextOfPeriod[Periods];
 };

@@ -207,6 +207,24 @@ TEST(DecimalTime, ADateWithOrWithoutAZoneIsReadOnceAsEachReadingReadsIt)
   }
 }
 
+// The period a date is written at: a year, a month, or a day (with a time of day or without; a
+// time zone's hyphen, after the time, is no date's).
+TEST(DecimalTime, TheDatesPeriodIsRead)
+{
+  using Period = DateTimeAndZone::Period;
+  for (const auto& [text, period] : { std::make_pair(" 1963 ", Period::Year),
+         std::make_pair("1963-08", Period::Month),
+         std::make_pair("1963-08-16", Period::Day),
+         std::make_pair("1963-08-16T06:00", Period::Day),
+         std::make_pair("1963-08-16 06:00-05:00", Period::Day),
+         std::make_pair("1963-08-31 24:00Z", Period::Day) })
+  {
+    const std::optional<DateTimeAndZone> read = IsoDateTimeAndZone(text);
+    ASSERT_TRUE(read) << text;
+    EXPECT_EQ(read->Given, period) << text;
+  }
+}
+
 TEST(DecimalTime, MalformedAndImpossibleDatesAreRefused)
 {
   for (const char* text : { "",

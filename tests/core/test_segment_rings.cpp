@@ -183,6 +183,14 @@ TEST(SegmentRings, EndsMeetWhereTheirCoordinatesAreEqual)
   const PointRings partly = JoinSegmentsAtEqualEnds(withNan);
   EXPECT_EQ(partly.Offsets, (std::vector<std::size_t>{ 0, 4 }));
   EXPECT_EQ(partly.Unjoined, (std::vector<std::size_t>{ 4, 5, 6 }));
+
+  // Segments of no length (as vtkContourFilter gives between two ids of one point): at a corner
+  // of the ring it is not listed, off the ring it is, and at a NaN end too.
+  std::vector<Point2> withPoints = ends;
+  withPoints.insert(withPoints.end(), { c, c, { 3, 3 }, { 3, 3 }, { nan, 1 }, { nan, 1 } });
+  const PointRings points = JoinSegmentsAtEqualEnds(withPoints);
+  EXPECT_EQ(points.Vertices, (std::vector<Point2>{ c, b, a, d }));
+  EXPECT_EQ(points.Unjoined, (std::vector<std::size_t>{ 5, 6 }));
 }
 
 namespace
