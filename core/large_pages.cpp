@@ -14,23 +14,24 @@ namespace tessera
 namespace
 {
 constexpr std::size_t HugePage = std::size_t(2) << 20;
+} // namespace
 
-/// Moves glibc's dynamic mmap threshold to its ceiling, once per process, so that freed large
-/// blocks go back to the heap and are reused by the next derivation instead of being unmapped.
-///
-/// Why. glibc serves a block above its mmap threshold (128 KiB at start) by a fresh mmap, and
-/// unmaps it when freed; each derivation then touches fresh pages again, a page fault per page.
-/// glibc raises the threshold to the size of each mmapped block freed (up to 32 MiB on 64-bit
-/// systems, mallopt(3)), and the trim threshold to twice that, so a program that frees one large
-/// block soon reuses its heap for everything smaller. Huge-page blocks, 2 MiB aligned, never got
-/// there: aligned_alloc asks for twice the alignment, more than the threshold their own frees
-/// set, so every one was a fresh mapping. At 10^4 points the tiles filter mapped, faulted and
-/// unmapped three 4 MiB blocks per run: 0.59-0.68 us/pt, against 0.47-0.55 with this, in
-/// alternating runs.
-///
-/// The cost: up to 62 MiB of freed memory at the top of the heap stays with the process, as it
-/// would after the process freed any 31 MiB block. A threshold fixed by mallopt (or
-/// MALLOC_MMAP_THRESHOLD_) is left alone: glibc then ignores frees, and so this one.
+// Moves glibc's dynamic mmap threshold to its ceiling, once per process, so that freed large
+// blocks go back to the heap and are reused by the next derivation instead of being unmapped.
+//
+// Why. glibc serves a block above its mmap threshold (128 KiB at start) by a fresh mmap, and
+// unmaps it when freed; each derivation then touches fresh pages again, a page fault per page.
+// glibc raises the threshold to the size of each mmapped block freed (up to 32 MiB on 64-bit
+// systems, mallopt(3)), and the trim threshold to twice that, so a program that frees one large
+// block soon reuses its heap for everything smaller. Huge-page blocks, 2 MiB aligned, never got
+// there: aligned_alloc asks for twice the alignment, more than the threshold their own frees
+// set, so every one was a fresh mapping. At 10^4 points the tiles filter mapped, faulted and
+// unmapped three 4 MiB blocks per run: 0.59-0.68 us/pt, against 0.47-0.55 with this, in
+// alternating runs.
+//
+// The cost: up to 62 MiB of freed memory at the top of the heap stays with the process, as it
+// would after the process freed any 31 MiB block. A threshold fixed by mallopt (or
+// MALLOC_MMAP_THRESHOLD_) is left alone: glibc then ignores frees, and so this one.
 void RaiseMallocThresholdOnce()
 {
 #if defined(__GLIBC__)
@@ -44,7 +45,6 @@ void RaiseMallocThresholdOnce()
   (void)raised;
 #endif
 }
-} // namespace
 
 void AdviseLargePages(const void* begin, std::size_t bytes)
 {

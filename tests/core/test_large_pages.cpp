@@ -20,6 +20,46 @@
 
 using namespace tessera;
 
+// A build of 10^4 points makes vectors of 40-240 KiB at once, below LargePageBytes and above
+// glibc's first mmap threshold (128 KiB). glibc raises that threshold to the largest such block
+// freed, and its trim threshold to twice that: the blocks then come from the heap, but once freed
+// together they are more than the trim threshold at the heap's top, which goes back to the system,
+// and every 4 KiB of them faults again at the next build (some 160 faults a round here), unless
+// ReserveOnLargePages has raised the thresholds to their ceilings. ctest also runs this test alone
+// (core.test_large_pages.fresh_process), in a process where nothing raised them before.
+TEST(LargePages, SmallVectorsReservedOnLargePagesAreReusedWithoutNewPageFaults)
+{
+#if !defined(__GLIBC__) || defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+  GTEST_SKIP() << "glibc's own malloc only (a sanitizer's allocator holds freed blocks back)";
+#else
+  const std::vector<std::size_t> kibs{ 40, 80, 160, 240, 240 }; // a build's, at 10^4 points
+  const auto writeAndFree = [&]()
+  {
+    std::vector<std::vector<std::int32_t>> arrays(kibs.size());
+    std::int64_t sum = 0;
+    for (std::size_t k = 0; k < kibs.size(); ++k)
+    {
+      ResizeOnLargePages(arrays[k], (kibs[k] << 10) / sizeof(std::int32_t));
+      std::fill(arrays[k].begin(), arrays[k].end(), 7);
+      sum += arrays[k].back();
+    }
+    return sum;
+  };
+  writeAndFree(); // the first ones may map and fault
+  constexpr int Rounds = 20;
+  rusage before{}, after{};
+  ASSERT_EQ(getrusage(RUSAGE_SELF, &before), 0);
+  std::int64_t sum = 0;
+  for (int round = 0; round < Rounds; ++round)
+  {
+    sum += writeAndFree();
+  }
+  ASSERT_EQ(getrusage(RUSAGE_SELF, &after), 0);
+  EXPECT_EQ(sum, 7 * 5 * Rounds);
+  EXPECT_LT(after.ru_minflt - before.ru_minflt, Rounds);
+#endif
+}
+
 TEST(LargePages, BlocksAreUsableAndLargeOnesAligned)
 {
   constexpr std::uintptr_t HugePage = std::uintptr_t(2) << 20;
