@@ -4,6 +4,7 @@
 // grid sized for points that fill the box, are in order within those cells too.
 
 #include "spatial_order.h"
+#include "test_support.h"
 
 #include <gtest/gtest.h>
 
@@ -78,6 +79,39 @@ TEST(SpatialOrder, BrioOrderIsAReproduciblePermutation)
     box.Extend(points[id]);
   }
   EXPECT_EQ(BrioHilbertOrder(points, ids, box), order);
+}
+
+// From 500,000 ids the radix sort runs in chunks on the cores: the order must be the serial one for
+// any number of chunks (3 makes chunks whose digits interleave unevenly), and a permutation.
+TEST(SpatialOrder, BrioOrderInChunksIsTheSerialOrder)
+{
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Point2> points(600000);
+  for (Point2& p : points)
+  {
+    p = { u(rng), u(rng) };
+  }
+  std::vector<std::int32_t> ids(points.size());
+  for (std::size_t k = 0; k < ids.size(); ++k)
+  {
+    ids[k] = std::int32_t(ids.size() - 1 - k); // (not in id order)
+  }
+  std::vector<std::int32_t> serial;
+  {
+    const tessera_test::ThreadLimitOverride oneThread(1);
+    serial = BrioHilbertOrder(points, ids);
+  }
+  std::vector<std::int32_t> sorted = serial;
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<std::int32_t> expected = ids;
+  std::sort(expected.begin(), expected.end());
+  ASSERT_EQ(sorted, expected);
+  for (const int threads : { 2, 3, 7 })
+  {
+    const tessera_test::ThreadLimitOverride limit(threads);
+    EXPECT_EQ(BrioHilbertOrder(points, ids), serial) << threads << " threads";
+  }
 }
 
 TEST(SpatialOrder, ABoxWiderThanTheLargestDoubleStillGivesAPermutation)
