@@ -43,13 +43,7 @@ TEST(SpatialOrder, HilbertIndexIsAContinuousBijection)
 
 TEST(SpatialOrder, BrioOrderIsAReproduciblePermutation)
 {
-  std::mt19937_64 rng(3);
-  std::uniform_real_distribution<double> u(-5.0, 7.0);
-  std::vector<Point2> points(5000);
-  for (Point2& p : points)
-  {
-    p = { u(rng), u(rng) };
-  }
+  const std::vector<Point2> points = tessera_test::UniformPoints(5000, 3, -5.0, 7.0);
   std::vector<std::int32_t> ids;
   for (std::int32_t k = 0; k < 5000; k += 2)
   {
@@ -85,13 +79,7 @@ TEST(SpatialOrder, BrioOrderIsAReproduciblePermutation)
 // any number of chunks (3 makes chunks whose digits interleave unevenly), and a permutation.
 TEST(SpatialOrder, BrioOrderInChunksIsTheSerialOrder)
 {
-  std::mt19937_64 rng(5);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  std::vector<Point2> points(600000);
-  for (Point2& p : points)
-  {
-    p = { u(rng), u(rng) };
-  }
+  const std::vector<Point2> points = tessera_test::UniformPoints(600000, 5, -1.0, 1.0);
   std::vector<std::int32_t> ids(points.size());
   for (std::size_t k = 0; k < ids.size(); ++k)
   {
