@@ -51,7 +51,7 @@ void ReserveOnLargePages(std::vector<T, Allocator>& v, std::size_t n)
 {
   if (n > v.capacity())
   {
-    RaiseMallocThresholdOnce(); // (before the reserve, whose block is then one from the heap)
+    RaiseMallocThresholdOnce(); // (first: a block below 31 MiB then comes from the heap)
     v.reserve(n);
     AdviseLargePages(v.data(), v.capacity() * sizeof(T));
   }

@@ -1,6 +1,7 @@
 #include "spatial_order.h"
 
 #include "parallel_chunks.h"
+#include "radix_sort.h"
 #include "uninitialized_allocator.h"
 
 #include <algorithm>
@@ -54,137 +55,6 @@ void RadixSortByKey(std::vector<KeyedId>& items, int bits)
     }
     items.swap(buffer);
   }
-}
-
-// The digits of RadixSortPacked: as wide as `passes` passes over `bits` bits allow.
-struct PackedDigits
-{
-  PackedDigits(int lowBit, int bits, int maxDigitBits)
-    : LowBit(lowBit)
-    , Passes((bits + maxDigitBits - 1) / maxDigitBits)
-    , Bits(this->Passes > 0 ? (bits + this->Passes - 1) / this->Passes : 0)
-    , Buckets(std::size_t(1) << this->Bits)
-  {
-  }
-
-  std::size_t Of(std::uint64_t item, int pass) const
-  {
-    return std::size_t((item >> (this->LowBit + pass * this->Bits)) & (this->Buckets - 1));
-  }
-
-  int LowBit, Passes, Bits;
-  std::size_t Buckets;
-};
-
-/// Turns counts into the first output slot of each digit, in place.
-void ExclusiveSums(std::size_t* counts, std::size_t size)
-{
-  std::size_t sum = 0;
-  for (std::size_t k = 0; k < size; ++k)
-  {
-    const std::size_t here = counts[k];
-    counts[k] = sum;
-    sum += here;
-  }
-}
-
-// RadixSortPacked on one thread: every pass's digits counted in one read of the items.
-void RadixSortPackedSerial(UninitializedVector<std::uint64_t>& items, const PackedDigits& digits)
-{
-  std::vector<std::size_t> count(digits.Buckets * std::size_t(digits.Passes), 0);
-  for (const std::uint64_t item : items)
-  {
-    for (int pass = 0; pass < digits.Passes; ++pass)
-    {
-      ++count[std::size_t(pass) * digits.Buckets + digits.Of(item, pass)];
-    }
-  }
-  UninitializedVector<std::uint64_t> buffer(items.size());
-  for (int pass = 0; pass < digits.Passes; ++pass)
-  {
-    std::size_t* const c = count.data() + std::size_t(pass) * digits.Buckets;
-    ExclusiveSums(c, digits.Buckets);
-    std::uint64_t* const out = buffer.data();
-    for (const std::uint64_t item : items)
-    {
-      out[c[digits.Of(item, pass)]++] = item;
-    }
-    items.swap(buffer);
-  }
-}
-
-// RadixSortPacked in contiguous chunks on the cores: each pass, each chunk counts its digits, and
-// then moves its items to the slots after those of the same digit in earlier chunks. That is where
-// the serial pass puts them, so the order is the same for any number of chunks.
-//
-//   chunk 0: a1 b1 a2 | chunk 1: b2 a3     digit a: a1 a2 (chunk 0) a3 (chunk 1)
-//                                          digit b: b1 (chunk 0) b2 (chunk 1)
-//
-// At 10^7 points BrioHilbertOrder took 0.42 s with a serial sort (the other core idle) and
-// 0.18-0.24 s so; the build took 6% less time (median of 8 alternating runs).
-void RadixSortPackedInChunks(UninitializedVector<std::uint64_t>& items,
-  const PackedDigits& digits,
-  const std::vector<std::int32_t>& bounds)
-{
-  const std::size_t chunks = bounds.size() - 1;
-  std::vector<std::size_t> slots(chunks * digits.Buckets);
-  UninitializedVector<std::uint64_t> buffer(items.size());
-  for (int pass = 0; pass < digits.Passes; ++pass)
-  {
-    parallel::RunChunks(chunks,
-      [&](std::size_t c)
-      {
-        std::size_t* const count = slots.data() + c * digits.Buckets;
-        std::fill(count, count + digits.Buckets, std::size_t(0));
-        for (std::int32_t k = bounds[c]; k < bounds[c + 1]; ++k)
-        {
-          ++count[digits.Of(items[k], pass)];
-        }
-      });
-    std::size_t sum = 0;
-    for (std::size_t digit = 0; digit < digits.Buckets; ++digit)
-    {
-      for (std::size_t c = 0; c < chunks; ++c)
-      {
-        std::size_t& slot = slots[c * digits.Buckets + digit];
-        const std::size_t here = slot;
-        slot = sum;
-        sum += here;
-      }
-    }
-    parallel::RunChunks(chunks,
-      [&](std::size_t c)
-      {
-        std::size_t* const slot = slots.data() + c * digits.Buckets;
-        std::uint64_t* const out = buffer.data();
-        for (std::int32_t k = bounds[c]; k < bounds[c + 1]; ++k)
-        {
-          const std::uint64_t item = items[k];
-          out[slot[digits.Of(item, pass)]++] = item;
-        }
-      });
-    items.swap(buffer);
-  }
-}
-
-// The same on keys packed above the ids in one 64-bit word: half the memory traffic. The digits
-// are as wide as the passes allow; stable, so the order depends on the items alone.
-void RadixSortPacked(UninitializedVector<std::uint64_t>& items, int lowBit, int bits)
-{
-  constexpr int MaxDigitBits = 11;
-  const PackedDigits digits(lowBit, bits, MaxDigitBits);
-  if (digits.Passes == 0)
-  {
-    return;
-  }
-  const std::int32_t n = std::int32_t(items.size());
-  const std::size_t threads = parallel::ThreadCount(n, 250000);
-  if (threads <= 1)
-  {
-    RadixSortPackedSerial(items, digits);
-    return;
-  }
-  RadixSortPackedInChunks(items, digits, parallel::ChunkBounds(n, threads));
 }
 
 // Number of BRIO rounds: the first round keeps at least ~64 points so that tiny

@@ -20,13 +20,13 @@
 
 using namespace tessera;
 
-// A build of 10^4 points makes vectors of 40-240 KiB at once, below LargePageBytes and above
-// glibc's first mmap threshold (128 KiB). glibc raises that threshold to the largest such block
-// freed, and its trim threshold to twice that: the blocks then come from the heap, but once freed
-// together they are more than the trim threshold at the heap's top, which goes back to the system,
-// and every 4 KiB of them faults again at the next build (some 160 faults a round here), unless
-// ReserveOnLargePages has raised the thresholds to their ceilings. ctest also runs this test alone
-// (core.test_large_pages.fresh_process), in a process where nothing raised them before.
+// A build of 10^4 points makes vectors of 40-240 KiB at once, below LargePageBytes, the larger ones
+// above glibc's first mmap threshold (128 KiB). glibc raises that threshold to the largest such
+// block freed, and its trim threshold to twice that: the blocks then come from the heap, but once
+// freed together they are more than the trim threshold at the heap's top, which goes back to the
+// system, and every 4 KiB of them faults again at the next build (some 160 faults a round here),
+// unless ReserveOnLargePages has raised the thresholds to their ceilings. ctest also runs this test
+// alone (core.test_large_pages.fresh_process), in a process where nothing raised them before.
 TEST(LargePages, SmallVectorsReservedOnLargePagesAreReusedWithoutNewPageFaults)
 {
 #if !defined(__GLIBC__) || defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)

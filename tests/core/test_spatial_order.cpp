@@ -75,8 +75,9 @@ TEST(SpatialOrder, BrioOrderIsAReproduciblePermutation)
   EXPECT_EQ(BrioHilbertOrder(points, ids, box), order);
 }
 
-// From 500,000 ids the radix sort runs in chunks on the cores: the order must be the serial one for
-// any number of chunks (3 makes chunks whose digits interleave unevenly), and a permutation.
+// From 500,000 ids the order's sort runs in chunks on the cores (2 at this size; test_radix_sort
+// tries more), and its keys are computed and its ids taken out in as many chunks as threads: the
+// order must be the serial one, and a permutation.
 TEST(SpatialOrder, BrioOrderInChunksIsTheSerialOrder)
 {
   const std::vector<Point2> points = tessera_test::UniformPoints(600000, 5, -1.0, 1.0);
