@@ -12,12 +12,12 @@ namespace
 {
 constexpr int MaxDigitBits = 11;
 
-// The digits of a sort: as wide as the fewest passes of at most maxDigitBits bits allow.
+// The digits of a sort: as wide as the fewest passes of at most MaxDigitBits bits allow.
 struct PackedDigits
 {
-  PackedDigits(int lowBit, int bits, int maxDigitBits)
+  PackedDigits(int lowBit, int bits)
     : LowBit(lowBit)
-    , Passes((bits + maxDigitBits - 1) / maxDigitBits)
+    , Passes((bits + MaxDigitBits - 1) / MaxDigitBits)
     , Bits(this->Passes > 0 ? (bits + this->Passes - 1) / this->Passes : 0)
     , Buckets(std::size_t(1) << this->Bits)
   {
@@ -124,18 +124,16 @@ void SortInChunks(UninitializedVector<std::uint64_t>& items,
 
 void RadixSortPacked(UninitializedVector<std::uint64_t>& items, int lowBit, int bits)
 {
-  const std::int32_t n = std::int32_t(items.size());
-  const std::size_t threads = parallel::ThreadCount(n, 250000);
-  if (threads <= 1)
+  const std::size_t threads = parallel::ThreadCount(std::int64_t(items.size()), 250000);
+  const PackedDigits digits(lowBit, bits);
+  if (threads > 1)
   {
-    const PackedDigits digits(lowBit, bits, MaxDigitBits);
-    if (digits.Passes > 0)
-    {
-      SortSerially(items, digits);
-    }
-    return;
+    RadixSortPackedInChunks(items, lowBit, bits, threads);
   }
-  RadixSortPackedInChunks(items, lowBit, bits, threads);
+  else if (digits.Passes > 0)
+  {
+    SortSerially(items, digits);
+  }
 }
 
 void RadixSortPackedInChunks(UninitializedVector<std::uint64_t>& items,
@@ -143,7 +141,7 @@ void RadixSortPackedInChunks(UninitializedVector<std::uint64_t>& items,
   int bits,
   std::size_t chunks)
 {
-  const PackedDigits digits(lowBit, bits, MaxDigitBits);
+  const PackedDigits digits(lowBit, bits);
   if (digits.Passes > 0 && !items.empty())
   {
     const std::size_t parts = std::max<std::size_t>(1, std::min(chunks, items.size()));
