@@ -1,8 +1,9 @@
 // Two-region batch insertion: the Delaunay triangulation of a large batch built on two cores.
 //
 // 1. A random sample, the first 1/32 of the BRIO order (its early rounds are random subsets), is
-//    inserted serially. The sample's median x is the seam; the points in a narrow strip around it
-//    follow, serially too.
+//    inserted serially, with the batch's hull vertices swapped into it first where the batch is
+//    small (MoveHullIntoSample). The seam is the median x of the first four samples' worth of the
+//    order; the points in a narrow strip around it follow, serially too.
 // 2. Two regions insert the rest at once, each the points on its side of the seam in BRIO order.
 //    A region owns the triangles whose vertices all lie on its side (a ghost vertex counts for
 //    neither side). It defers a point whose walk or split would touch another triangle and skips
@@ -28,6 +29,7 @@
 
 #include "dirichlet_tessellation.h"
 
+#include "convex_hull.h"
 #include "large_pages.h"
 #include "parallel_chunks.h"
 #include "spatial_order.h"
@@ -45,6 +47,19 @@ namespace
 // seam. Medians of 5 runs, serial against two regions: 4.1-4.8 against 3.8-4.3 ms at 10^4
 // uniform points, 41-44 against 29-32 ms at 10^5.
 constexpr std::int32_t TwoRegionMinimum = 10000;
+
+// Below this many points the batch's hull vertices go into the sample (MoveHullIntoSample). A
+// sample of m points leaves about (8/3) ln(m) / m of a square's area outside its hull (Renyi and
+// Sulanke): 5% of 10^4 uniform points, 0.7% of 10^5, each deferred to the serial end. At 10^4 the
+// deferred points went from 698 to about 150 and their serial insertion from 0.32 to 0.10 ms, for
+// 0.04-0.07 ms spent finding the hull; at 10^5 the hull took 0.45-0.70 ms and saved as much.
+constexpr std::int32_t HullIntoSampleBelow = 100000;
+
+// The seam is the median x of this many samples' worth of the order's first points (its early
+// rounds are random subsets), not of the sample alone: at 10^4 points the sample's 312 put 53-57%
+// of the points on one side for five seeds of eight, and the two regions finished up to 0.3 ms
+// apart (at most 52% with four samples' worth; sorting them costs some 10 us).
+constexpr std::int32_t SeamSamples = 4;
 
 // The share of the batch inserted serially first: larger makes the straddling band thinner (fewer
 // deferred points), smaller leaves more to the two regions.
@@ -151,11 +166,16 @@ bool GivesUp(std::size_t tried, std::size_t deferred)
 
 } // namespace
 
-// Inserts vertices [0, count) (BuildFrom's local numbering) in order, on two regions when the
-// batch is large.
-void DirichletTessellation::InsertInOrder(std::int32_t count, const Box2& box)
+// Inserts vertices [0, count) (BuildFrom's local numbering; order[k] is vertex k's input id) in
+// order, on two regions when the batch is large.
+void DirichletTessellation::InsertInOrder(std::vector<std::int32_t>& order, const Box2& box)
 {
+  const std::int32_t count = std::int32_t(order.size());
   const std::int32_t sample = count >= TwoRegionMinimum ? count / SampleDivisor : count;
+  if (sample < count && count < HullIntoSampleBelow)
+  {
+    this->MoveHullIntoSample(order, sample);
+  }
   for (std::int32_t k = 0; k < sample; ++k)
   {
     this->InsertAcceptedPoint(k);
@@ -205,6 +225,35 @@ struct DirichletTessellation::TwoRegionBuild
   static constexpr std::int32_t NoStart = -1; // a region's LastTriangle when it owns none
 };
 
+// The batch's hull vertices (ConvexHullPositions) made the sample's first vertices, in hull order,
+// each swapped with the vertex it displaces (numbers, coordinates and input ids alike), so that no
+// point of the batch lies outside the sample's hull and waits for the serial end: a region never
+// grows the hull. The rest keeps its place in the order (the few displaced sample points are
+// inserted where the hull vertices were).
+void DirichletTessellation::MoveHullIntoSample(std::vector<std::int32_t>& order,
+  std::int32_t sample)
+{
+  std::vector<std::int32_t> hull =
+    ConvexHullPositions(this->Coordinates.data(), std::int32_t(order.size()), sample / 2);
+  // hull[i] is where hull vertex i is now: swapping it to place i moves whatever was at i there,
+  // and that may be a later hull vertex.
+  for (std::int32_t i = 0; i < std::int32_t(hull.size()); ++i)
+  {
+    const std::int32_t from = hull[i];
+    if (from == i)
+    {
+      continue;
+    }
+    const auto later = std::find(hull.begin() + i + 1, hull.end(), i);
+    if (later != hull.end())
+    {
+      *later = from;
+    }
+    std::swap(order[i], order[from]);
+    std::swap(this->Coordinates[i], this->Coordinates[from]);
+  }
+}
+
 // Steps 2 to 4 for vertices [first, end). Returns false, having inserted nothing, when the
 // sample is not yet two-dimensional.
 bool DirichletTessellation::InsertInTwoRegions(std::int32_t first,
@@ -224,19 +273,20 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first,
   return true;
 }
 
-// The seam at the sample's median x; the points near it (the strip) inserted serially now, the
-// others shared out to the two sides.
+// The seam at the median x of the order's first SeamSamples samples' worth of points; the points
+// near it (the strip) inserted serially now, the others shared out to the two sides.
 void DirichletTessellation::TwoRegionBuild::SplitAtSeam()
 {
-  std::vector<double> sampleX(static_cast<std::size_t>(this->First));
-  for (std::int32_t k = 0; k < this->First; ++k)
+  const std::int32_t seamSample = std::min(this->End, SeamSamples * this->First);
+  std::vector<double> firstX(static_cast<std::size_t>(seamSample));
+  for (std::int32_t k = 0; k < seamSample; ++k)
   {
-    sampleX[k] = this->Pts[k].x;
+    firstX[k] = this->Pts[k].x;
   }
-  std::nth_element(sampleX.begin(), sampleX.begin() + this->First / 2, sampleX.end());
+  std::nth_element(firstX.begin(), firstX.begin() + seamSample / 2, firstX.end());
   for (int side = 0; side < 2; ++side)
   {
-    this->Regions[side].SeamX = sampleX[this->First / 2];
+    this->Regions[side].SeamX = firstX[seamSample / 2];
     this->Regions[side].Upper = side == 1;
     this->Regions[side].MaxWalk = std::int64_t(8 * std::sqrt(double(this->End))) + 1024;
   }
