@@ -1,5 +1,5 @@
 // ConvexHullPositions: Akl and Toussaint's octagon filter, then Andrew's monotone chain on the
-// points it keeps, with orient2d's exact signs.
+// points it keeps, with orient2d's exact signs; MoveHullToFront.
 #include "fp_contract_off.h" // (first: the filter's error bound assumes every product rounded alone)
 
 #include "convex_hull.h"
@@ -89,9 +89,10 @@ bool SurelyLeft(const Point2& a, const Point2& b, const Point2& p)
 
 // Why a point strictly left of every edge of the octagon is no hull vertex, even where the rounded
 // diagonal reaches left the octagon out of order (not convex): seen from such a point, each edge
-// turns anticlockwise by less than a half turn and the edges close, so they wind around it. Were
-// it outside the octagon's hull, every vertex would lie within less than a half turn as seen from
-// it, and no closed path there can wind. So it lies strictly inside the hull of some of the points.
+// turns anticlockwise by more than nothing and less than a half turn, and the edges close, so they
+// wind around it. Were it outside the octagon's hull or on its boundary, every vertex would lie
+// within a half turn (closed) as seen from it, and a closed path of such steps cannot wind there.
+// So it lies strictly inside the hull of some of the points.
 bool InsideOctagon(const std::vector<Point2>& octagon, const Point2& p)
 {
   const std::size_t n = octagon.size();
@@ -211,6 +212,30 @@ std::vector<std::int32_t> ConvexHullPositions(const Point2* points,
     }
   }
   return MonotoneChain(points, candidates);
+}
+
+std::int32_t MoveHullToFront(std::vector<Point2>& points,
+  std::vector<std::int32_t>& ids,
+  std::int32_t maxCandidates,
+  std::int32_t maxHull)
+{
+  std::vector<std::int32_t> hull =
+    ConvexHullPositions(points.data(), std::int32_t(points.size()), maxCandidates);
+  if (std::int32_t(hull.size()) > maxHull)
+  {
+    return 0;
+  }
+  // In their order, not round the hull: inserted round a curved hull, each vertex lies inside the
+  // circles of the triangles made before it, and an arc of H of them took some H^2 / 2 flips.
+  // Ascending, hull[i] >= i, and the places below hull[i] that the swaps touch are 0 .. i - 1 and
+  // hull[0 .. i - 1]: hull vertex i is still where it was.
+  std::sort(hull.begin(), hull.end());
+  for (std::int32_t i = 0; i < std::int32_t(hull.size()); ++i)
+  {
+    std::swap(points[i], points[hull[i]]);
+    std::swap(ids[i], ids[hull[i]]);
+  }
+  return std::int32_t(hull.size());
 }
 
 } // namespace tessera

@@ -7,8 +7,9 @@
 // Akl and Toussaint's filter first: the points strictly inside the octagon of the eight extreme
 // points (lowest, highest, leftmost, rightmost and the four diagonal ones) are not hull vertices,
 // and for points spread over an area that is nearly all of them. The others are sorted and joined
-// by Andrew's monotone chain. Points in convex position all pass the filter; a cap on how many may
-// pass bounds the cost where the hull would be most of the points.
+// by Andrew's monotone chain. For points spread over a square that is nearly all of them, for a
+// disc some 90%. Points in convex position all pass the filter; a cap on how many may pass bounds
+// the cost where the hull would be most of the points.
 
 #include "geometry.h"
 
@@ -26,5 +27,14 @@ namespace tessera
 std::vector<std::int32_t> ConvexHullPositions(const Point2* points,
   std::int32_t count,
   std::int32_t maxCandidates);
+
+/// Moves the hull's vertices (ConvexHullPositions of all the points, with maxCandidates) to the
+/// front, in the order they had, each swapped with the point it displaces, and ids with the points
+/// (ids[k] belongs to points[k]; ids.size() == points.size()). Returns how many were moved: 0 when
+/// there is no hull or it has more than maxHull vertices (then nothing moves).
+std::int32_t MoveHullToFront(std::vector<Point2>& points,
+  std::vector<std::int32_t>& ids,
+  std::int32_t maxCandidates,
+  std::int32_t maxHull);
 
 } // namespace tessera

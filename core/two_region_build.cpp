@@ -225,33 +225,17 @@ struct DirichletTessellation::TwoRegionBuild
   static constexpr std::int32_t NoStart = -1; // a region's LastTriangle when it owns none
 };
 
-// The batch's hull vertices (ConvexHullPositions) made the sample's first vertices, in hull order,
-// each swapped with the vertex it displaces (numbers, coordinates and input ids alike), so that no
-// point of the batch lies outside the sample's hull and waits for the serial end: a region never
-// grows the hull. The rest keeps its place in the order (the few displaced sample points are
-// inserted where the hull vertices were).
+// The batch's hull vertices made the sample's first vertices (MoveHullToFront: coordinates and
+// input ids alike), so that no point of the batch lies outside the sample's hull and waits for the
+// serial end: a region never grows the hull. The rest keeps its place in the order (the few
+// displaced sample points are inserted where the hull vertices were). Up to an eighth of the
+// points may be candidates, and the hull may fill half the sample. A disc has some 10% of its
+// points outside its octagon: at 10^4 points the hull took 0.16 ms there (0.05 for a square), the
+// points deferred went from about 700 to 250 (150), and the build took 1% less time (11%).
 void DirichletTessellation::MoveHullIntoSample(std::vector<std::int32_t>& order,
   std::int32_t sample)
 {
-  std::vector<std::int32_t> hull =
-    ConvexHullPositions(this->Coordinates.data(), std::int32_t(order.size()), sample / 2);
-  // hull[i] is where hull vertex i is now: swapping it to place i moves whatever was at i there,
-  // and that may be a later hull vertex.
-  for (std::int32_t i = 0; i < std::int32_t(hull.size()); ++i)
-  {
-    const std::int32_t from = hull[i];
-    if (from == i)
-    {
-      continue;
-    }
-    const auto later = std::find(hull.begin() + i + 1, hull.end(), i);
-    if (later != hull.end())
-    {
-      *later = from;
-    }
-    std::swap(order[i], order[from]);
-    std::swap(this->Coordinates[i], this->Coordinates[from]);
-  }
+  MoveHullToFront(this->Coordinates, order, std::int32_t(order.size()) / 8, sample / 2);
 }
 
 // Steps 2 to 4 for vertices [first, end). Returns false, having inserted nothing, when the
@@ -487,9 +471,10 @@ void DirichletTessellation::TwoRegionBuild::Join()
       break;
     }
   }
-  // The deferred points, along the curve: they lie near the seam and outside the sample's hull
-  // (all around the batch), or anywhere on a side given up, and walking to them in their rounds'
-  // order took 13 steps each at 1M uniform points (5 along the curve), 10.6 ms against 5.3.
+  // The deferred points, along the curve: they lie near the seam and (from 10^5 points, where the
+  // hull is not moved into the sample) outside the sample's hull, all around the batch, or anywhere
+  // on a side given up, and walking to them in their rounds' order took 13 steps each at 1M
+  // uniform points (5 along the curve), 10.6 ms against 5.3.
   std::vector<std::int32_t> deferred = std::move(this->Regions[0].Deferred);
   deferred.insert(
     deferred.end(), this->Regions[1].Deferred.begin(), this->Regions[1].Deferred.end());

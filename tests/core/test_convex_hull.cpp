@@ -2,6 +2,9 @@
 // result is a strictly convex anticlockwise polygon of input points with every input point inside
 // or on it, starting at the lowest of the leftmost. Such a polygon is the hull, with its vertices
 // and no other point; so a missed hull vertex, a point inside an edge or a copy listed twice fails.
+// MoveHullToFront: the hull's vertices in front, in their order, the ids with their points.
+#include "fp_contract_off.h" // (first: a test recomputes the filter's rounded orientation)
+
 #include "convex_hull.h"
 #include "predicates.h"
 #include "test_support.h"
@@ -214,4 +217,71 @@ TEST(ConvexHull, NoHullOfFewerThanThreePlacesOrOfALine)
     exactLine.push_back({ double(k), 2.0 * k + 1.0 });
   }
   EXPECT_TRUE(HullOf(exactLine, 100).empty());
+}
+
+// The hull's vertices first, in their order, each point with its id, the others in place but for
+// the ones they displaced: for uniform points in a square and in a disc.
+TEST(ConvexHull, MoveHullToFrontPutsTheHullFirstAndKeepsEachIdWithItsPoint)
+{
+  for (const bool disc : { false, true })
+  {
+    std::vector<Point2> original = UniformPoints(3000, 17, -1.0, 1.0);
+    if (disc)
+    {
+      original.erase(std::remove_if(original.begin(),
+                       original.end(),
+                       [](const Point2& p) { return p.x * p.x + p.y * p.y >= 1.0; }),
+        original.end());
+    }
+    SCOPED_TRACE(disc ? "disc" : "square");
+    std::vector<Point2> points = original;
+    std::vector<std::int32_t> ids(points.size());
+    for (std::size_t k = 0; k < ids.size(); ++k)
+    {
+      ids[k] = std::int32_t(k);
+    }
+    const std::int32_t n = std::int32_t(points.size());
+    const std::int32_t moved = MoveHullToFront(points, ids, n, n);
+    ASSERT_GE(moved, 3);
+    std::set<std::int32_t> displaced;
+    for (std::int32_t k = 0; k < n; ++k)
+    {
+      EXPECT_TRUE(points[k] == original[ids[k]]) << "point " << k << " lost its id";
+      if (k < moved && k > 0)
+      {
+        EXPECT_LT(ids[k - 1], ids[k]) << "hull vertices out of their order";
+      }
+      if (k >= moved && ids[k] != k)
+      {
+        EXPECT_LT(ids[k], moved) << "a point moved that was neither hull nor displaced";
+        displaced.insert(ids[k]);
+      }
+    }
+    // The front, put round the hull by angle about its centroid, is the hull of all the points.
+    std::vector<std::int32_t> front(std::size_t(moved), 0);
+    Point2 centre;
+    for (std::int32_t k = 0; k < moved; ++k)
+    {
+      front[k] = k;
+      centre = { centre.x + points[k].x / moved, centre.y + points[k].y / moved };
+    }
+    const auto angle = [&](std::int32_t k)
+    { return std::atan2(points[k].y - centre.y, points[k].x - centre.x); };
+    std::sort(front.begin(),
+      front.end(),
+      [&](std::int32_t a, std::int32_t b) { return angle(a) < angle(b); });
+    const auto first = std::min_element(front.begin(),
+      front.end(),
+      [&](std::int32_t a, std::int32_t b) {
+        return points[a].x < points[b].x ||
+          (points[a].x == points[b].x && points[a].y < points[b].y);
+      });
+    std::rotate(front.begin(), first, front.end());
+    ExpectHull(points, front);
+    // More vertices than allowed: nothing moves.
+    std::vector<Point2> again = original;
+    std::vector<std::int32_t> againIds(again.size(), 0);
+    EXPECT_EQ(MoveHullToFront(again, againIds, n, moved - 1), 0);
+    EXPECT_TRUE(std::equal(again.begin(), again.end(), original.begin()));
+  }
 }
