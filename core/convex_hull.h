@@ -5,11 +5,10 @@
 // the sample of 312 left about 5% of the points outside its hull.
 //
 // Akl and Toussaint's filter first: the points strictly inside the octagon of the eight extreme
-// points (lowest, highest, leftmost, rightmost and the four diagonal ones) are not hull vertices,
-// and for points spread over an area that is nearly all of them. The others are sorted and joined
-// by Andrew's monotone chain. For points spread over a square that is nearly all of them, for a
-// disc some 90%. Points in convex position all pass the filter; a cap on how many may pass bounds
-// the cost where the hull would be most of the points.
+// points (lowest, highest, leftmost, rightmost and the four diagonal ones) are not hull vertices.
+// For points spread over a square that is nearly all of them, for a disc some 90%. The others are
+// sorted and joined by Andrew's monotone chain. Points in convex position all pass the filter; a
+// cap on how many may pass bounds the cost where the hull would be most of the points.
 
 #include "geometry.h"
 

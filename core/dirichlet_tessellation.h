@@ -331,7 +331,7 @@ private:
     return region.NextSlot < region.EndSlot ? region.NextSlot++ : this->NewTriangle();
   }
   // Two-region batch build (two_region_build.cpp).
-  /// box: the bounding box of the vertices [0, count).
+  /// box: the bounding box of the vertices [0, order.size()).
   void InsertInOrder(std::vector<std::int32_t>& order, const Box2& box);
   void MoveHullIntoSample(std::vector<std::int32_t>& order, std::int32_t sample);
   // Batch build steps (dirichlet_tessellation.cpp).

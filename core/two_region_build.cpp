@@ -51,15 +51,19 @@ constexpr std::int32_t TwoRegionMinimum = 10000;
 // Below this many points the batch's hull vertices go into the sample (MoveHullIntoSample). A
 // sample of m points leaves about (8/3) ln(m) / m of a square's area outside its hull (Renyi and
 // Sulanke): 5% of 10^4 uniform points, 0.7% of 10^5, each deferred to the serial end. At 10^4 the
-// deferred points went from 698 to about 150 and their serial insertion from 0.32 to 0.10 ms, for
-// 0.04-0.07 ms spent finding the hull; at 10^5 the hull took 0.45-0.70 ms and saved as much.
+// deferred points went from 698 to 107 and their serial insertion from 0.32 to 0.10 ms, for
+// 0.05 ms spent finding the hull; at 10^5 the hull took 0.45-0.70 ms and saved as much.
 constexpr std::int32_t HullIntoSampleBelow = 100000;
 
 // The seam is the median x of this many samples' worth of the order's first points (its early
 // rounds are random subsets), not of the sample alone: at 10^4 points the sample's 312 put 53-57%
 // of the points on one side for five seeds of eight, and the two regions finished up to 0.3 ms
-// apart (at most 52% with four samples' worth; sorting them costs some 10 us).
+// apart (at most 52% with four samples' worth; the seam's step took no longer). At most
+// SeamMedianPoints of them, unless the sample has more: beyond, the median's error is some 0.2% of
+// the points, and a larger serial selection buys nothing (4 samples' worth at 10^7 points: 1.25
+// million).
 constexpr std::int32_t SeamSamples = 4;
+constexpr std::int32_t SeamMedianPoints = 1 << 16;
 
 // The share of the batch inserted serially first: larger makes the straddling band thinner (fewer
 // deferred points), smaller leaves more to the two regions.
@@ -231,7 +235,7 @@ struct DirichletTessellation::TwoRegionBuild
 // displaced sample points are inserted where the hull vertices were). Up to an eighth of the
 // points may be candidates, and the hull may fill half the sample. A disc has some 10% of its
 // points outside its octagon: at 10^4 points the hull took 0.16 ms there (0.05 for a square), the
-// points deferred went from about 700 to 250 (150), and the build took 1% less time (11%).
+// points deferred went from about 700 to 245 (107), and the build took 1% less time (11%).
 void DirichletTessellation::MoveHullIntoSample(std::vector<std::int32_t>& order,
   std::int32_t sample)
 {
@@ -261,7 +265,8 @@ bool DirichletTessellation::InsertInTwoRegions(std::int32_t first,
 // near it (the strip) inserted serially now, the others shared out to the two sides.
 void DirichletTessellation::TwoRegionBuild::SplitAtSeam()
 {
-  const std::int32_t seamSample = std::min(this->End, SeamSamples * this->First);
+  const std::int32_t seamSample = std::min(
+    this->End, std::max(this->First, std::min(SeamSamples * this->First, SeamMedianPoints)));
   std::vector<double> firstX(static_cast<std::size_t>(seamSample));
   for (std::int32_t k = 0; k < seamSample; ++k)
   {
