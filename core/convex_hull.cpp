@@ -1,15 +1,11 @@
 // ConvexHullPositions: Akl and Toussaint's octagon filter, then Andrew's monotone chain on the
 // points it keeps, with orient2d's exact signs; MoveHullToFront.
-#include "fp_contract_off.h" // (first: the filter's error bound assumes every product rounded alone)
-
 #include "convex_hull.h"
 
-#include "predicates.h"
 #include "predicates_inline.h"
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <limits>
 
 namespace tessera
@@ -75,18 +71,6 @@ std::vector<Point2> Octagon(const Extremes& extremes)
   return octagon;
 }
 
-// Whether p is certainly strictly left of a -> b: orient2d's floating-point filter alone, so "no"
-// may also mean "cannot tell", which keeps p as a candidate (the cost of a candidate, never a wrong
-// hull).
-bool SurelyLeft(const Point2& a, const Point2& b, const Point2& p)
-{
-  const double detleft = (a.x - p.x) * (b.y - p.y);
-  const double detright = (a.y - p.y) * (b.x - p.x);
-  const double errbound =
-    detail::kOrientBound * (std::fabs(detleft) + std::fabs(detright)) + detail::kUnderflowTerm;
-  return detleft - detright > errbound;
-}
-
 // Why a point strictly left of every edge of the octagon is no hull vertex, even where the rounded
 // diagonal reaches left the octagon out of order (not convex): seen from such a point, each edge
 // turns anticlockwise by more than nothing and less than a half turn, and the edges close, so they
@@ -98,7 +82,8 @@ bool InsideOctagon(const std::vector<Point2>& octagon, const Point2& p)
   const std::size_t n = octagon.size();
   for (std::size_t i = 0; i < n; ++i)
   {
-    if (!SurelyLeft(octagon[i], octagon[i + 1 == n ? 0 : i + 1], p))
+    // (orient2d_fast: the floating-point filter decides nearly every point, exactly)
+    if (orient2d_fast(octagon[i], octagon[i + 1 == n ? 0 : i + 1], p) <= 0)
     {
       return false;
     }
@@ -127,7 +112,7 @@ std::vector<std::int32_t> MonotoneChain(const Point2* points, std::vector<std::i
   const auto addTurningLeft = [&](std::int32_t k, std::size_t chainStart)
   {
     while (hull.size() >= chainStart + 2 &&
-      orient2d(points[hull[hull.size() - 2]], points[hull.back()], points[k]) <= 0)
+      orient2d_fast(points[hull[hull.size() - 2]], points[hull.back()], points[k]) <= 0)
     {
       hull.pop_back();
     }
@@ -150,11 +135,11 @@ std::vector<std::int32_t> MonotoneChain(const Point2* points, std::vector<std::i
   return hull;
 }
 
-// An axis-aligned box whose corners are all surely inside the octagon, so that a point strictly
+// An axis-aligned box whose corners are all strictly inside the octagon, so that a point strictly
 // inside the box lies strictly inside the points' hull too (the hull is convex): four comparisons
 // settle nearly every point, where the octagon takes eight orientations. Its sides start at the
 // innermost of the three extreme points on each side, and it shrinks about its centre, by 1/64 of
-// its sides and then by 1/8, until its corners are surely inside: a corner often is one of the
+// its sides and then by 1/8, until its corners are strictly inside: a corner often is one of the
 // extreme points there (the one nearest the box's corner on both sides), on the octagon's edge.
 // An empty box when neither does (every point then takes the octagon's test).
 Box2 InnerBox(const Extremes& e, const std::vector<Point2>& octagon)

@@ -333,7 +333,6 @@ private:
   // Two-region batch build (two_region_build.cpp).
   /// box: the bounding box of the vertices [0, order.size()).
   void InsertInOrder(std::vector<std::int32_t>& order, const Box2& box);
-  void MoveHullIntoSample(std::vector<std::int32_t>& order, std::int32_t sample);
   // Batch build steps (dirichlet_tessellation.cpp).
   void KeepInsideWindow(const std::vector<std::int32_t>& bounds, std::vector<std::int32_t>& inside);
   void RenameToInputIds(const std::vector<std::int32_t>& order);

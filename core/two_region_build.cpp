@@ -2,7 +2,7 @@
 //
 // 1. A random sample, the first 1/32 of the BRIO order (its early rounds are random subsets), is
 //    inserted serially, with the batch's hull vertices swapped into it first where the batch is
-//    small (MoveHullIntoSample). The seam is the median x of the first four samples' worth of the
+//    small (MoveHullToFront). The seam is the median x of the first four samples' worth of the
 //    order; the points in a narrow strip around it follow, serially too.
 // 2. Two regions insert the rest at once, each the points on its side of the seam in BRIO order.
 //    A region owns the triangles whose vertices all lie on its side (a ghost vertex counts for
@@ -48,7 +48,7 @@ namespace
 // uniform points, 41-44 against 29-32 ms at 10^5.
 constexpr std::int32_t TwoRegionMinimum = 10000;
 
-// Below this many points the batch's hull vertices go into the sample (MoveHullIntoSample). A
+// Below this many points the batch's hull vertices go into the sample (MoveHullToFront). A
 // sample of m points leaves about (8/3) ln(m) / m of a square's area outside its hull (Renyi and
 // Sulanke): 5% of 10^4 uniform points, 0.7% of 10^5, each deferred to the serial end. At 10^4 the
 // deferred points went from 698 to 107 and their serial insertion from 0.32 to 0.10 ms, for
@@ -178,7 +178,14 @@ void DirichletTessellation::InsertInOrder(std::vector<std::int32_t>& order, cons
   const std::int32_t sample = count >= TwoRegionMinimum ? count / SampleDivisor : count;
   if (sample < count && count < HullIntoSampleBelow)
   {
-    this->MoveHullIntoSample(order, sample);
+    // The batch's hull vertices become the sample's first vertices (coordinates and input ids
+    // alike), so that no point of the batch lies outside the sample's hull and waits for the
+    // serial end: a region never grows the hull. The rest keeps its place in the order (the few
+    // displaced sample points are inserted where the hull vertices were). Up to an eighth of the
+    // points may be candidates, and the hull may fill half the sample. A disc has some 10% of its
+    // points outside its octagon: at 10^4 points the hull took 0.16 ms there (0.05 for a square),
+    // the points deferred went from about 700 to 245 (107), and the build took 1% less time (11%).
+    MoveHullToFront(this->Coordinates, order, count / 8, sample / 2);
   }
   for (std::int32_t k = 0; k < sample; ++k)
   {
@@ -228,19 +235,6 @@ struct DirichletTessellation::TwoRegionBuild
   static constexpr std::int8_t NoOwner = -1;  // straddles the seam, or free
   static constexpr std::int32_t NoStart = -1; // a region's LastTriangle when it owns none
 };
-
-// The batch's hull vertices made the sample's first vertices (MoveHullToFront: coordinates and
-// input ids alike), so that no point of the batch lies outside the sample's hull and waits for the
-// serial end: a region never grows the hull. The rest keeps its place in the order (the few
-// displaced sample points are inserted where the hull vertices were). Up to an eighth of the
-// points may be candidates, and the hull may fill half the sample. A disc has some 10% of its
-// points outside its octagon: at 10^4 points the hull took 0.16 ms there (0.05 for a square), the
-// points deferred went from about 700 to 245 (107), and the build took 1% less time (11%).
-void DirichletTessellation::MoveHullIntoSample(std::vector<std::int32_t>& order,
-  std::int32_t sample)
-{
-  MoveHullToFront(this->Coordinates, order, std::int32_t(order.size()) / 8, sample / 2);
-}
 
 // Steps 2 to 4 for vertices [first, end). Returns false, having inserted nothing, when the
 // sample is not yet two-dimensional.

@@ -3,7 +3,7 @@
 // or on it, starting at the lowest of the leftmost. Such a polygon is the hull, with its vertices
 // and no other point; so a missed hull vertex, a point inside an edge or a copy listed twice fails.
 // MoveHullToFront: the hull's vertices in front, in their order, the ids with their points.
-#include "fp_contract_off.h" // (first: a test recomputes the filter's rounded orientation)
+#include "fp_contract_off.h" // (first: a test computes orientations rounded as a naive filter would)
 
 #include "convex_hull.h"
 #include "predicates.h"
@@ -76,7 +76,7 @@ TEST(ConvexHull, UniformPointsGiveTheirHull)
 }
 
 // Points near one line (2^30 plus offsets of a few units: rounded orientations would be wrong
-// here) and at 10^-9 and 10^9 scales: the filter's error bound keeps any point it cannot place.
+// here) and at 10^-9 and 10^9 scales: the filter decides with exact signs.
 TEST(ConvexHull, NearlyDegenerateSetsAtAnyScaleGiveTheirHull)
 {
   std::mt19937_64 random(5);
@@ -103,7 +103,7 @@ TEST(ConvexHull, NearlyDegenerateSetsAtAnyScaleGiveTheirHull)
 
 // Points just outside the octagon's edges, by less than a rounded orientation can tell: each is
 // chosen so that the orientation computed in floating point puts it inside while orient2d puts it
-// outside, so each is a hull vertex that a filter without its error bound would drop. (Where the
+// outside, so each is a hull vertex that a filter on rounded orientations would drop. (Where the
 // differences to the point are exact, rounding is monotone and cannot err that way: the points are
 // moved off the edge by a few units in the last place, and some edges give none.)
 TEST(ConvexHull, PointsJustOutsideTheOctagonWhereRoundingSaysInsideAreVertices)

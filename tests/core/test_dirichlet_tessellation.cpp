@@ -2400,7 +2400,7 @@ std::vector<Point2> ClusterWithAHalo(std::size_t n)
 } // namespace
 
 // Below 10^5 points the batch's hull vertices are swapped into the sample first
-// (MoveHullIntoSample), their places in the order taken by the sample points they displace.
+// (MoveHullToFront), their places in the order taken by the sample points they displace.
 TEST(DirichletTessellation, TwoRegionBuildThatGrowsTheHullEqualsSerialInsertion)
 {
   ExpectSameAsStreaming(ClusterWithAHalo(TwoRegionSize));
