@@ -255,6 +255,7 @@ void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids, const Box2
   const Box2 box = knownBox ? *knownBox
     : ids.empty()           ? Box2()
                             : BoundsOfIds(this->Coordinates, ids);
+  this->NoteBatchBox(box, !ids.empty());
   std::vector<std::int32_t> order = BrioHilbertOrder(this->Coordinates, ids, box);
   ids.clear();
   ids.shrink_to_fit();
@@ -430,17 +431,134 @@ void DirichletTessellation::InsertKnownPoint(std::int32_t id, std::int32_t nearI
   }
   if (!hinted && this->IsTwoDimensional())
   {
-    this->JumpTowards(p);
+    hinted = this->StartBesideExtreme(p);
+    if (!hinted)
+    {
+      this->JumpTowards(p);
+    }
   }
   this->BeginTrackedChange();
   this->InsertAcceptedPoint(id);
   this->EndTrackedChange();
+  this->NoteSidesReached(id);
   if (!hinted)
   {
     this->UnhintedWalk = this->Serial.LastWalk;
   }
   this->RecentStarts[this->NextRecentStart] = this->Serial.LastTriangle;
   this->NextRecentStart = (this->NextRecentStart + 1) % this->RecentStarts.size();
+}
+
+// Whether p lies beyond a side of the accepted points' box whose extreme point is known with a
+// triangle that still holds it; then the walk starts there. p is outside the hull, and the
+// extreme point v, on the hull, is strictly behind the side's line: p sees v, and lies strictly
+// beyond one of v's two hull edges (their wedge holds the hull and lies behind the line), so the
+// walk reaches the hull beside v rather than crossing the inside.
+//
+//        hull     | side (x max)
+//     ---------   |
+//              \  |      p: beyond the side, so beyond an edge at v
+//               v +
+//              /  |
+bool DirichletTessellation::StartBesideExtreme(const Point2& p)
+{
+  if (!this->HasAcceptedBox)
+  {
+    return false;
+  }
+  const Box2& box = this->AcceptedBox;
+  const bool beyond[4] = { p.x > box.XMax, p.x<box.XMin, p.y> box.YMax, p.y < box.YMin };
+  for (int side = 0; side < 4; ++side)
+  {
+    if (beyond[side] && this->StartBesideHullVertex(this->SideStarts[side], p))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Whether start's triangle still holds its point v, and a ghost triangle round v has a hull edge
+// that p is strictly beyond; then the walk starts at that ghost triangle.
+bool DirichletTessellation::StartBesideHullVertex(const SideStart& start, const Point2& p)
+{
+  if (start.Triangle < 0 || std::size_t(start.Triangle) >= this->Origins.size() / 3)
+  {
+    return false;
+  }
+  const std::int32_t* const org = this->Origins.data();
+  const std::int32_t* const twin = this->Twins.data();
+  std::int32_t e = 3 * start.Triangle;
+  while (org[e] != start.Id)
+  {
+    if (++e == 3 * start.Triangle + 3)
+    {
+      return false; // changed since: the point is no vertex of it
+    }
+  }
+  const Point2* const pts = this->Coordinates.data();
+  const std::int32_t first = e;
+  do
+  {
+    if (org[Next(e)] == Ghost || org[Prev(e)] == Ghost)
+    {
+      const std::int32_t f = this->HullEdgeOfGhost(e / 3);
+      if (Orient(pts[org[f]], pts[org[Next(f)]], p) > 0)
+      {
+        this->Serial.LastTriangle = e / 3;
+        return true;
+      }
+    }
+    e = twin[Prev(e)]; // the next triangle round v
+  } while (e != first);
+  return false;
+}
+
+// After a streamed point's insertion: extends the accepted points' box by it, if accepted, and
+// makes it the known extreme of each side it reached (unknown while the points are collinear).
+void DirichletTessellation::NoteSidesReached(std::int32_t id)
+{
+  if (this->StatusBytes[id] != std::uint8_t(PointStatus::Accepted))
+  {
+    return; // (rejected, or a copy: inside the box)
+  }
+  const Point2& p = this->Coordinates[id];
+  if (!this->HasAcceptedBox)
+  {
+    this->AcceptedBox = { p.x, p.x, p.y, p.y };
+    this->HasAcceptedBox = true;
+  }
+  Box2& box = this->AcceptedBox;
+  const bool reached[4] = { p.x >= box.XMax, p.x <= box.XMin, p.y >= box.YMax, p.y <= box.YMin };
+  box.Extend(p);
+  const SideStart start =
+    this->IsTwoDimensional() ? SideStart{ id, this->Serial.LastTriangle } : SideStart{};
+  for (int side = 0; side < 4; ++side)
+  {
+    if (reached[side])
+    {
+      this->SideStarts[side] = start;
+    }
+  }
+}
+
+// A batch's points (box: theirs, when any) extend the accepted points' box; which of them lie on
+// its sides is not kept, so no side's extreme is known until a streamed point reaches it.
+void DirichletTessellation::NoteBatchBox(const Box2& box, bool any)
+{
+  if (any)
+  {
+    if (this->HasAcceptedBox)
+    {
+      this->AcceptedBox.Extend(box);
+    }
+    else
+    {
+      this->AcceptedBox = box;
+      this->HasAcceptedBox = true;
+    }
+  }
+  this->SideStarts.fill(SideStart{});
 }
 
 // Jump and walk (Muecke, Saias and Zhu 1996), while walks run long: the walk to p starts at
@@ -454,9 +572,10 @@ void DirichletTessellation::InsertKnownPoint(std::int32_t id, std::int32_t nearI
 // and points along a line that doubles only approximate (y = x/3: a fan of slivers) O(n): 10000
 // of them took 2.35 s, where a batch took 0.11 s (0.13 s now). Without the recent points, 10^6
 // points sorted by x walked 228 steps each (16-24 s; CGAL, inserting one by one, 2.8 s), as the
-// index does not hold the points since its last build; now 17 (2.0-2.3 s). A stream in spatial
-// order must not pay for it (each sample is a cache miss or two at 10^6 points: sampling at every
-// point made one 5 times slower), so:
+// index does not hold the points since its last build; with them 17 (2.0-2.3 s); no step since
+// such points start beside the extreme point of the side they pass (StartBesideExtreme, 1.1 s:
+// jumps are not asked for them). A stream in spatial order must not pay for jumps (each sample is
+// a cache miss or two at 10^6 points: sampling at every point made one 5 times slower), so:
 //
 //   Off --unhinted walk of 2 cube roots of the triangles or more--> Probe (the recent starts,
 //            and the index or 16 samples)
@@ -493,8 +612,9 @@ void DirichletTessellation::JumpTowards(const Point2& p)
   {
     consider(near[k]);
   }
-  // A stream sorted along one axis (a table's rows by x) comes back beside one of the last few
-  // points, though far from the very last and beyond the index, built before them.
+  // A stream sorted along one axis whose points do not pass the side of the box of those before
+  // (ties: rows of rounded coordinates) comes back beside one of the last few points, though far
+  // from the very last and beyond the index, built before them.
   for (const std::int32_t t : this->RecentStarts)
   {
     consider(t);
@@ -766,13 +886,15 @@ DirichletTessellation::Location DirichletTessellation::InsertInRegion(Region& re
   return location;
 }
 
-// Where the triangles are renumbered or made again, the jump index and the ring of recent starts
-// name other triangles: both are dropped (the ring back to its start, all triangle 0).
+// Where the triangles are renumbered or made again, the jump index, the ring of recent starts and
+// the sides' starts name other triangles: all are dropped (the ring back to its start, all
+// triangle 0).
 void DirichletTessellation::ForgetWalkStarts()
 {
   this->Hints.Clear();
   this->RecentStarts.fill(0);
   this->NextRecentStart = 0;
+  this->SideStarts.fill(SideStart{});
 }
 
 bool DirichletTessellation::IsGhostTriangle(std::int32_t t) const
@@ -814,7 +936,27 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Region& regi
   const Point2* const pts = this->Coordinates.data();
   const std::int32_t* const org = this->Origins.data();
   const std::int32_t* const twin = this->Twins.data();
-  std::int32_t t = this->RealTriangleNear(region.LastTriangle);
+  // The walk tests real triangles only: a ghost start gives way to the real triangle across its
+  // hull edge, unless p is strictly beyond that edge (as StartBesideExtreme finds it), and so
+  // outside the hull, there.
+  std::int32_t t = region.LastTriangle;
+  if (this->IsGhostTriangle(t))
+  {
+    const std::int32_t f = this->HullEdgeOfGhost(t);
+    if (f >= 0)
+    {
+      if (region.GrowsHull() && Orient(pts[org[f]], pts[org[Next(f)]], p) > 0)
+      {
+        edge = f;
+        if (walked)
+        {
+          *walked = 0;
+        }
+        return Location::InGhost;
+      }
+      t = twin[f] / 3;
+    }
+  }
   // The edge of t the walk came through (p is strictly beyond it, seen from the triangle left),
   // as 0, 1, 2, or 3 at the start. The other two edges are tested in turn starting after it.
   static constexpr std::int32_t NextIndex[4] = { 1, 2, 0, 0 };
@@ -870,23 +1012,20 @@ DirichletTessellation::Location DirichletTessellation::Locate(const Region& regi
   return this->WhereInTriangle(region, t, p, sides, edge);
 }
 
-// t, or a real triangle next to it when t is a ghost (the walk tests real triangles only).
-[[gnu::always_inline]] inline std::int32_t DirichletTessellation::RealTriangleNear(
-  std::int32_t t) const
+// The half-edge of ghost triangle t on the hull (between its two real vertices; p is strictly
+// beyond that hull edge when Orient(its origin, its end, p) > 0); -1 for a free triangle.
+std::int32_t DirichletTessellation::HullEdgeOfGhost(std::int32_t t) const
 {
   const std::int32_t* const org = this->Origins.data();
-  if (this->IsGhostTriangle(t))
+  for (std::int32_t k = 0; k < 3; ++k)
   {
-    for (std::int32_t k = 0; k < 3; ++k)
+    const std::int32_t e = 3 * t + k;
+    if (org[e] >= 0 && org[Next(e)] >= 0)
     {
-      const std::int32_t e = 3 * t + k;
-      if (org[e] != Ghost && org[Next(e)] != Ghost)
-      {
-        return this->Twins[e] / 3;
-      }
+      return e;
     }
   }
-  return t;
+  return -1;
 }
 
 // The walk's first triangle: all three edges tested, in order, until p is strictly beyond one

@@ -289,8 +289,29 @@ private:
   /// been freed since, which a jump sees.
   std::array<std::int32_t, 64> RecentStarts{};
   std::size_t NextRecentStart = 0;
+  /// Streams sorted along an axis (a table's rows by x): the box of the points accepted so far
+  /// (never shrunk by a removal) and, per side of it (x max, x min, y max, y min), the last point
+  /// streamed in that reached that side with the triangle its insertion made last (-1, -1 when
+  /// unknown). A point beyond a side is outside the hull and sees that point: its walk starts
+  /// there (StartBesideExtreme), where from the last point's triangle it crossed the hull's
+  /// inside (10^5 points sorted by x walked 100 triangles each without the jumps, 8.6 with).
+  struct SideStart
+  {
+    std::int32_t Id = -1;
+    std::int32_t Triangle = -1;
+  };
+  Box2 AcceptedBox;
+  bool HasAcceptedBox = false;
+  std::array<SideStart, 4> SideStarts{};
+  bool StartBesideExtreme(const Point2& p);
+  bool StartBesideHullVertex(const SideStart& start, const Point2& p);
+  void NoteSidesReached(std::int32_t id);
+  void NoteBatchBox(const Box2& box, bool any);
   void JumpTowards(const Point2& p);
-  void ForgetWalkStarts(); ///< the jump index and the recent starts, where triangles renumber
+  /// The jump index, the recent starts and the sides' starts, where triangles renumber.
+  void ForgetWalkStarts();
+  /// The half-edge of ghost triangle t on the hull; -1 for a free triangle.
+  std::int32_t HullEdgeOfGhost(std::int32_t t) const;
   // JumpTowards' parts (dirichlet_tessellation.cpp).
   bool JumpWanted(std::int32_t triangles);
   double SquaredDistanceToTriangle(std::int32_t t, const Point2& p) const;
@@ -310,7 +331,6 @@ private:
     std::int64_t* walked = nullptr) const;
   // Locate's parts: defined [[gnu::always_inline]] in dirichlet_tessellation.cpp and callable
   // only there (as calls, they added 1.2% to a build's instructions).
-  inline std::int32_t RealTriangleNear(std::int32_t t) const;
   inline bool TestFirstTriangle(const Region& region,
     std::int32_t t,
     const Point2& p,

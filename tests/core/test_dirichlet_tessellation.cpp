@@ -561,16 +561,67 @@ double MeanWalkSteps(Tess& t, const std::vector<Point2>& points, std::size_t kep
 
 } // namespace
 
-// A stream sorted by x (a table's rows): each point lies beside one of the last few inserted, far
-// from the very last, and the walks start there (JumpTowards: RecentStarts). From the last
-// triangle and the index alone they walked 42 steps each here; now 7.
-TEST(DirichletTessellation, AStreamSortedByXWalksFewStepsAndEqualsBatch)
+// A stream sorted along an axis (a table's rows by x), either way: each point lies beyond a side
+// of the box of those before, outside the hull, and its walk starts at the hull edge it sees
+// beside that side's extreme point, the last point that reached the side (StartBesideExtreme):
+// no step at all. From the last triangle alone the walks crossed the hull's inside, from the
+// recent starts (JumpTowards) they took 7 steps each here.
+TEST(DirichletTessellation, AStreamSortedAlongAnAxisWalksNoStepAndEqualsBatch)
 {
-  const std::vector<Point2> points = SortedByX(UniformPoints(30000, 19));
-  Tess streaming(UnitWindow());
-  EXPECT_LT(MeanWalkSteps(streaming, points, 0), 10.0);
-  CheckStructure(streaming);
-  EXPECT_TRUE(MakeCanonical(Tess(UnitWindow(), points)) == MakeCanonical(streaming));
+  const std::vector<Point2> byX = SortedByX(UniformPoints(30000, 19));
+  for (int axis = 0; axis < 4; ++axis)
+  {
+    std::vector<Point2> points = byX;
+    if (axis >= 2)
+    {
+      for (Point2& p : points)
+      {
+        p = { p.y, p.x };
+      }
+    }
+    if (axis % 2 == 1)
+    {
+      std::reverse(points.begin(), points.end());
+    }
+    Tess streaming(UnitWindow());
+    std::size_t walked = 0; // points whose walk took a step
+    for (const Point2& p : points)
+    {
+      streaming.Insert(p);
+      walked += streaming.LastWalkSteps() > 0 ? 1 : 0;
+    }
+    EXPECT_LT(walked, 10u) << "axis " << axis;
+    CheckStructure(streaming);
+    CheckLocallyDelaunay(streaming);
+    EXPECT_TRUE(MakeCanonical(Tess(UnitWindow(), points)) == MakeCanonical(streaming)) << axis;
+  }
+}
+
+// Sorted streams whose new points lie on the line of a hull edge at the side's extreme point: a
+// fan (an apex, then points along a line, in order: each is on the line of the hull edge the
+// last one made, and beyond the other), and a lattice by columns (each column's first point is
+// beyond a column of collinear hull edges). A start at an edge that the point only touches the
+// line of would make a triangle of no area; the results stay the batch's.
+TEST(DirichletTessellation, SortedStreamsAlongTheLinesOfHullEdgesEqualBatch)
+{
+  std::vector<Point2> fan = { { 0.5, 0.9 } };
+  for (int k = 0; k < 1000; ++k)
+  {
+    fan.push_back({ 0.001 * k, 0.25 });
+  }
+  const std::vector<Point2> lattice = SortedByX(tessera_test::SquareLattice(60, 60.0));
+  for (const std::vector<Point2>* points :
+    std::initializer_list<const std::vector<Point2>*>{ &fan, &lattice })
+  {
+    Tess streaming(UnitWindow());
+    for (const Point2& p : *points)
+    {
+      streaming.Insert(p);
+    }
+    CheckStructure(streaming);
+    CheckLocallyDelaunay(streaming);
+    EXPECT_TRUE(MakeCanonical(Tess(UnitWindow(), *points)) == MakeCanonical(streaming));
+  }
 }
 
 // Points streamed with and without a hint in turn (nearId: a point beside each hinted one, found
@@ -1382,6 +1433,36 @@ std::vector<std::vector<Point2>> HullTestSets()
 }
 
 } // namespace
+
+// The extreme point that a side's start names may be removed (then its triangle no longer holds
+// it, and walks start as before), and a batch may extend the box (its extremes are not known):
+// the results stay the batch's.
+TEST(DirichletTessellation, RemovedExtremesAndBatchesLeaveASortedStreamCorrect)
+{
+  const std::vector<Point2> points = SortedByX(UniformPoints(6000, 31));
+  // The first half as a batch, then the rest streamed, every seventh point removed once the next
+  // is in (the extreme, then, is the point after it), and every eleventh at once.
+  const std::vector<Point2> first(points.begin(), points.begin() + 3000);
+  Tess t(UnitWindow(), first);
+  std::vector<std::int32_t> removed;
+  for (std::size_t k = 3000; k < points.size(); ++k)
+  {
+    t.Insert(points[k]);
+    if (k % 11 == 0)
+    {
+      t.Remove(std::int32_t(k));
+      removed.push_back(std::int32_t(k));
+    }
+    else if (k % 7 == 1 && (k - 1) % 11 != 0)
+    {
+      t.Remove(std::int32_t(k - 1));
+      removed.push_back(std::int32_t(k - 1));
+    }
+  }
+  CheckStructure(t);
+  CheckLocallyDelaunay(t);
+  EXPECT_TRUE(WithoutIds(points, removed) == MakeCanonical(t));
+}
 
 TEST(DirichletTessellation, RemovingHullVerticesEqualsNeverInserted)
 {
