@@ -270,8 +270,8 @@ void TesseraNearestPoints(benchmark::State& state)
 }
 
 // Points inserted one by one, as a stream: 10^5 uniform points sorted by x (a table's rows; each
-// point beside one of the last few, far from the very last), or in the random order they were
-// drawn in.
+// point beyond all before it, placed at the hull beside the very last, far from it in y), or in
+// the random order they were drawn in.
 constexpr std::int64_t SortedByX = 1;
 constexpr std::int64_t RandomOrder = 2;
 

@@ -449,11 +449,11 @@ void DirichletTessellation::InsertKnownPoint(std::int32_t id, std::int32_t nearI
   this->NextRecentStart = (this->NextRecentStart + 1) % this->RecentStarts.size();
 }
 
-// Whether p lies beyond a side of the accepted points' box whose extreme point is known with a
-// triangle that still holds it; then the walk starts there. p is outside the hull, and the
-// extreme point v, on the hull, is strictly behind the side's line: p sees v, and lies strictly
-// beyond one of v's two hull edges (their wedge holds the hull and lies behind the line), so the
-// walk reaches the hull beside v rather than crossing the inside.
+// Whether p lies beyond a side of the accepted points' box whose extreme point v is known with a
+// triangle that still holds it; then the walk starts there. p is strictly beyond the side's line,
+// on which v lies and beyond which no vertex lies, so p is outside the hull; v's two hull edges
+// bound a wedge that holds the hull and lies on or behind that line, so p is strictly beyond one
+// of them, and the walk reaches the hull beside v rather than crossing the inside.
 //
 //        hull     | side (x max)
 //     ---------   |
@@ -467,7 +467,7 @@ bool DirichletTessellation::StartBesideExtreme(const Point2& p)
     return false;
   }
   const Box2& box = this->AcceptedBox;
-  const bool beyond[4] = { p.x > box.XMax, p.x<box.XMin, p.y> box.YMax, p.y < box.YMin };
+  const bool beyond[4] = { (p.x > box.XMax), (p.x < box.XMin), (p.y > box.YMax), (p.y < box.YMin) };
   for (int side = 0; side < 4; ++side)
   {
     if (beyond[side] && this->StartBesideHullVertex(this->SideStarts[side], p))
@@ -922,8 +922,8 @@ struct KeepWalkLength
 
 } // namespace
 
-// Visibility walk from the region's last triangle (made last, or where a hint or a jump put it: see
-// InsertKnownPoint): cross any edge that has p strictly on
+// Visibility walk from the region's last triangle (made last, or where a hint, a jump or a side's
+// start put it: see InsertKnownPoint): cross any edge that has p strictly on
 // its far side. In a Delaunay triangulation this walk cannot cycle. Reaching a ghost triangle means
 // p is strictly outside the hull edge just crossed. The walk stays in triangles the region owns:
 // it enters a triangle across an edge it owns, so only the apex needs checking, and it reads no

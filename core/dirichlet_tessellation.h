@@ -85,8 +85,11 @@ public:
   /// point is then not appended, and the next point inserted gets that id.
   /// nearId: an accepted point near p, where the walk to p starts when vertex edges are tracked
   /// (TrackVertexEdges); otherwise, or for -1, at the triangle made last, or, while walks from
-  /// it run long (points in random order), at the nearest to p of it and the triangles an index
-  /// along a Hilbert curve holds beside p (jump and walk, walk_hints.h). The result
+  /// it run long (points in random order), at the nearest to p of it, the triangles made around
+  /// the last 64 points, and the triangles an index along a Hilbert curve holds beside p (jump
+  /// and walk, walk_hints.h). A p beyond a side of the box of the points accepted before it (a
+  /// stream sorted by x or y) is put beside the hull edge it sees at the last streamed point that
+  /// reached that side, without a walk. The result
   /// is the same either way: only the walk's length differs (so an id that is no accepted point,
   /// out of range included, is not an error: the walk starts as for -1).
   std::int32_t Insert(const Point2& p, std::int32_t nearId = -1);
