@@ -462,10 +462,6 @@ void DirichletTessellation::InsertKnownPoint(std::int32_t id, std::int32_t nearI
 //              /  |
 bool DirichletTessellation::StartBesideExtreme(const Point2& p)
 {
-  if (!this->HasAcceptedBox)
-  {
-    return false;
-  }
   const Box2& box = this->AcceptedBox;
   const bool beyond[4] = { (p.x > box.XMax), (p.x < box.XMin), (p.y > box.YMax), (p.y < box.YMin) };
   for (int side = 0; side < 4; ++side)
@@ -523,11 +519,6 @@ void DirichletTessellation::NoteSidesReached(std::int32_t id)
     return; // (rejected, or a copy: inside the box)
   }
   const Point2& p = this->Coordinates[id];
-  if (!this->HasAcceptedBox)
-  {
-    this->AcceptedBox = { p.x, p.x, p.y, p.y };
-    this->HasAcceptedBox = true;
-  }
   Box2& box = this->AcceptedBox;
   const bool reached[4] = { p.x >= box.XMax, p.x <= box.XMin, p.y >= box.YMax, p.y <= box.YMin };
   box.Extend(p);
@@ -548,15 +539,7 @@ void DirichletTessellation::NoteBatchBox(const Box2& box, bool any)
 {
   if (any)
   {
-    if (this->HasAcceptedBox)
-    {
-      this->AcceptedBox.Extend(box);
-    }
-    else
-    {
-      this->AcceptedBox = box;
-      this->HasAcceptedBox = true;
-    }
+    this->AcceptedBox.Extend(box);
   }
   this->SideStarts.fill(SideStart{});
 }

@@ -303,8 +303,11 @@ private:
     std::int32_t Id = -1;
     std::int32_t Triangle = -1;
   };
-  Box2 AcceptedBox;
-  bool HasAcceptedBox = false;
+  /// (empty at first: its bounds are inverted infinities, which every point passes and extends)
+  Box2 AcceptedBox{ std::numeric_limits<double>::infinity(),
+    -std::numeric_limits<double>::infinity(),
+    std::numeric_limits<double>::infinity(),
+    -std::numeric_limits<double>::infinity() };
   std::array<SideStart, 4> SideStarts{};
   bool StartBesideExtreme(const Point2& p);
   bool StartBesideHullVertex(const SideStart& start, const Point2& p);

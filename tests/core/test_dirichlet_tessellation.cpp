@@ -609,19 +609,8 @@ TEST(DirichletTessellation, SortedStreamsAlongTheLinesOfHullEdgesEqualBatch)
   {
     fan.push_back({ 0.001 * k, 0.25 });
   }
-  const std::vector<Point2> lattice = SortedByX(tessera_test::SquareLattice(60, 60.0));
-  for (const std::vector<Point2>* points :
-    std::initializer_list<const std::vector<Point2>*>{ &fan, &lattice })
-  {
-    Tess streaming(UnitWindow());
-    for (const Point2& p : *points)
-    {
-      streaming.Insert(p);
-    }
-    CheckStructure(streaming);
-    CheckLocallyDelaunay(streaming);
-    EXPECT_TRUE(MakeCanonical(Tess(UnitWindow(), *points)) == MakeCanonical(streaming));
-  }
+  ExpectStreamingEqualsBatch(fan);
+  ExpectStreamingEqualsBatch(SortedByX(tessera_test::SquareLattice(60, 60.0)));
 }
 
 // Points streamed with and without a hint in turn (nearId: a point beside each hinted one, found
