@@ -2336,6 +2336,8 @@ void DirichletTessellation::RebuildWithout(std::int32_t id)
   this->Collinear.clear();
   this->Serial.LastTriangle = 0;
   this->Accepted = 0;
+  // The box shrinks to the points left, so that points beyond them start beside the hull again.
+  this->AcceptedBox = EmptyBox();
   // BuildFrom numbers vertices locally: the vertex half-edges are derived afterwards.
   this->VertexEdges.clear();
   this->BuildFrom(ids);

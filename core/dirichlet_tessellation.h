@@ -293,7 +293,8 @@ private:
   std::array<std::int32_t, 64> RecentStarts{};
   std::size_t NextRecentStart = 0;
   /// Streams sorted along an axis (a table's rows by x): the box of the points accepted so far
-  /// (never shrunk by a removal) and, per side of it (x max, x min, y max, y min), the last point
+  /// (not shrunk by a removal in place, only by a rebuild's fresh start: it holds every accepted
+  /// point either way) and, per side of it (x max, x min, y max, y min), the last point
   /// streamed in that reached that side with the triangle its insertion made last (-1, -1 when
   /// unknown). A point beyond a side is outside the hull and sees that point: its walk starts
   /// there (StartBesideExtreme), where from the last point's triangle it crossed the hull's
@@ -303,11 +304,15 @@ private:
     std::int32_t Id = -1;
     std::int32_t Triangle = -1;
   };
-  /// (empty at first: its bounds are inverted infinities, which every point passes and extends)
-  Box2 AcceptedBox{ std::numeric_limits<double>::infinity(),
-    -std::numeric_limits<double>::infinity(),
-    std::numeric_limits<double>::infinity(),
-    -std::numeric_limits<double>::infinity() };
+  /// A box that no point has extended: its bounds are inverted infinities, which every point
+  /// passes and extends.
+  static Box2 EmptyBox()
+  {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    return Box2{ inf, -inf, inf, -inf };
+  }
+  /// (empty at first, and again when a rebuild starts from the points left)
+  Box2 AcceptedBox = EmptyBox();
   std::array<SideStart, 4> SideStarts{};
   bool StartBesideExtreme(const Point2& p);
   bool StartBesideHullVertex(const SideStart& start, const Point2& p);

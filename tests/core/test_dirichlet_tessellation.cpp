@@ -1476,6 +1476,49 @@ TEST(DirichletTessellation, RemovedExtremesAndBatchesLeaveASortedStreamCorrect)
   EXPECT_TRUE(WithoutIds(points, removed) == MakeCanonical(t));
 }
 
+// Removals that leave collinear points rebuild the structure (RebuildWithout), and the accepted
+// points' box is then theirs again, not the removed points' larger one: a stream sorted by x that
+// starts beyond the line's end, though inside the removed points' box, still places each point at
+// the hull without a walk, and equals the batch of the line and the stream.
+TEST(DirichletTessellation, ARebuildAfterRemovalsGivesASortedStreamItsSideStartsBack)
+{
+  std::vector<Point2> points;
+  for (int k = 0; k <= 30; ++k)
+  {
+    points.push_back({ 0.01 * k, 0.5 }); // ids 0 .. 30: the line that stays
+  }
+  const std::vector<Point2> spread = UniformPoints(2000, 37); // ids 31 ..: removed
+  points.insert(points.end(), spread.begin(), spread.end());
+  Tess t(UnitWindow(), points);
+  for (std::size_t id = 31; id < points.size(); ++id)
+  {
+    t.Remove(std::int32_t(id));
+  }
+  ASSERT_EQ(t.CollinearPoints().size(), 31u);
+  std::vector<Point2> stream = UniformPoints(5000, 41);
+  for (Point2& p : stream)
+  {
+    p.x = 0.31 + 0.6 * p.x; // beyond the line's end, inside the removed points' box
+  }
+  stream = SortedByX(stream);
+  std::size_t walked = 0; // points whose walk took a step
+  for (const Point2& p : stream)
+  {
+    t.Insert(p);
+    walked += t.LastWalkSteps() > 0 ? 1 : 0;
+  }
+  EXPECT_LT(walked, 10u);
+  CheckStructure(t);
+  CheckLocallyDelaunay(t);
+  std::vector<std::int32_t> removed;
+  for (std::size_t id = 31; id < points.size(); ++id)
+  {
+    removed.push_back(std::int32_t(id));
+  }
+  points.insert(points.end(), stream.begin(), stream.end()); // (the stream's ids follow)
+  EXPECT_TRUE(WithoutIds(points, removed) == MakeCanonical(t));
+}
+
 TEST(DirichletTessellation, RemovingHullVerticesEqualsNeverInserted)
 {
   const std::vector<std::vector<Point2>> sets = HullTestSets();
