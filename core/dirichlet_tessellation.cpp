@@ -1782,6 +1782,7 @@ void DirichletTessellation::RemoveVertex(std::int32_t id,
   if (edge < 0) // (on the line: Remove found no edge in a collinear set)
   {
     this->Collinear.erase(onLine);
+    this->AcceptedBox = this->BoxOfCollinearPoints();
     return;
   }
   ++this->Removals;
@@ -2308,6 +2309,19 @@ void DirichletTessellation::WriteHullRemoval(const HullStar& star,
   this->Serial.LastTriangle = slots[0];
 }
 
+// The box of the collinear points, from the ends of their list, which is kept sorted along their
+// line (empty when no point is left).
+Box2 DirichletTessellation::BoxOfCollinearPoints() const
+{
+  Box2 box = Box2::Empty();
+  if (!this->Collinear.empty())
+  {
+    box.Extend(this->Coordinates[this->Collinear.front()]);
+    box.Extend(this->Coordinates[this->Collinear.back()]);
+  }
+  return box;
+}
+
 // When the points left are collinear (or an ear search fails, which exact predicates exclude),
 // the structure is built again from the remaining accepted points: O(N log N), but exactly the
 // tessellation built without the point.
@@ -2337,7 +2351,7 @@ void DirichletTessellation::RebuildWithout(std::int32_t id)
   this->Serial.LastTriangle = 0;
   this->Accepted = 0;
   // The box shrinks to the points left, so that points beyond them start beside the hull again.
-  this->AcceptedBox = EmptyBox();
+  this->AcceptedBox = Box2::Empty();
   // BuildFrom numbers vertices locally: the vertex half-edges are derived afterwards.
   this->VertexEdges.clear();
   this->BuildFrom(ids);

@@ -87,11 +87,11 @@ public:
   /// (TrackVertexEdges); otherwise, or for -1, at the triangle made last, or, while walks from
   /// it run long (points in random order), at the nearest to p of it, the triangles made around
   /// the last 64 points, and the triangles an index along a Hilbert curve holds beside p (jump
-  /// and walk, walk_hints.h). A p beyond a side of the box of the points accepted before it (a
-  /// stream sorted by x or y) is put beside the hull edge it sees at the last streamed point that
-  /// reached that side, without a walk. The result
-  /// is the same either way: only the walk's length differs (so an id that is no accepted point,
-  /// out of range included, is not an error: the walk starts as for -1).
+  /// and walk, walk_hints.h). A p beyond a side of the box of the points accepted before it
+  /// (removed ones included, unless the removals left points on a line; a stream sorted by x or
+  /// y) is put beside the hull edge it sees at the last streamed point that reached that side,
+  /// without a walk. The result is the same either way: only the walk's length differs (so an id
+  /// that is no accepted point, out of range included, is not an error: the walk starts as for -1).
   std::int32_t Insert(const Point2& p, std::int32_t nearId = -1);
   /// Inserts a removed point again under its id, as Insert would insert its coordinates (nearId
   /// likewise; the window may reject it again, and it may be an exact copy of an accepted point).
@@ -293,8 +293,8 @@ private:
   std::array<std::int32_t, 64> RecentStarts{};
   std::size_t NextRecentStart = 0;
   /// Streams sorted along an axis (a table's rows by x): the box of the points accepted so far
-  /// (not shrunk by a removal in place, only by a rebuild's fresh start: it holds every accepted
-  /// point either way) and, per side of it (x max, x min, y max, y min), the last point
+  /// (not shrunk by a removal from the triangles in place: it holds every accepted point, and
+  /// perhaps removed ones) and, per side of it (x max, x min, y max, y min), the last point
   /// streamed in that reached that side with the triangle its insertion made last (-1, -1 when
   /// unknown). A point beyond a side is outside the hull and sees that point: its walk starts
   /// there (StartBesideExtreme), where from the last point's triangle it crossed the hull's
@@ -304,20 +304,15 @@ private:
     std::int32_t Id = -1;
     std::int32_t Triangle = -1;
   };
-  /// A box that no point has extended: its bounds are inverted infinities, which every point
-  /// passes and extends.
-  static Box2 EmptyBox()
-  {
-    constexpr double inf = std::numeric_limits<double>::infinity();
-    return Box2{ inf, -inf, inf, -inf };
-  }
-  /// (empty at first, and again when a rebuild starts from the points left)
-  Box2 AcceptedBox = EmptyBox();
+  /// (empty at first; a rebuild starts it afresh from the points left, and a removal from the line
+  /// while the points are collinear sets it to the line's ends)
+  Box2 AcceptedBox = Box2::Empty();
   std::array<SideStart, 4> SideStarts{};
   bool StartBesideExtreme(const Point2& p);
   bool StartBesideHullVertex(const SideStart& start, const Point2& p);
   void NoteSidesReached(std::int32_t id);
   void NoteBatchBox(const Box2& box, bool any);
+  Box2 BoxOfCollinearPoints() const;
   void JumpTowards(const Point2& p);
   /// The jump index, the recent starts and the sides' starts, where triangles renumber.
   void ForgetWalkStarts();

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -37,6 +38,13 @@ struct Box2
   double YMin = 0.0;
   double YMax = 0.0;
 
+  /// A box holding no point: its bounds are inverted infinities, so it contains no point and meets
+  /// no box, and the first point it is extended by becomes its box.
+  static Box2 Empty()
+  {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    return Box2{ inf, -inf, inf, -inf };
+  }
   /// The smallest box holding this one and p.
   void Extend(const Point2& p)
   {

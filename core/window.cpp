@@ -86,12 +86,6 @@ Point2 crossing(const HalfPlane& u, const HalfPlane& v)
     difference_of_products(u.c, v.a, v.c, u.a) / d };
 }
 
-Box2 EmptyBox()
-{
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  return { inf, -inf, inf, -inf };
-}
-
 // The box that Window::CertainlyContains tests against, for an axis-aligned rectangle: each side
 // is the constraint's line (-c / a, rounded once) moved inwards by 2^-40 of (its coordinate's
 // magnitude + the rectangle's side). The rounding of that line, and that of c.x - error (or of
@@ -101,7 +95,7 @@ Box2 EmptyBox()
 // overflowing one gets infinities or NaNs, which fail every comparison.
 Box2 CertainInterior(const std::vector<HalfPlane>& effective)
 {
-  Box2 line = EmptyBox(); // filled below: each axis has one lower and one upper constraint
+  Box2 line = Box2::Empty(); // filled below: each axis has one lower and one upper constraint
   for (const HalfPlane& h : effective)
   {
     if (h.b == 0.0)
@@ -117,7 +111,7 @@ Box2 CertainInterior(const std::vector<HalfPlane>& effective)
   constexpr double smallest = 0x1p-960; // the margins below stay normal numbers
   if (!(width > smallest) || !(height > smallest))
   {
-    return EmptyBox();
+    return Box2::Empty();
   }
   constexpr double margin = 0x1p-40;
   return { line.XMin + margin * (std::fabs(line.XMin) + width),
@@ -291,7 +285,8 @@ Window::Window(const std::vector<HalfPlane>& constraints, const ConstraintNames&
   {
     this->Corners.push_back(crossing(this->Effective[(k + m - 1) % m], this->Effective[k]));
   }
-  this->Interior = this->IsAxisAlignedRectangle() ? CertainInterior(this->Effective) : EmptyBox();
+  this->Interior =
+    this->IsAxisAlignedRectangle() ? CertainInterior(this->Effective) : Box2::Empty();
 }
 
 std::string Window::ConstraintName(std::size_t inputId) const

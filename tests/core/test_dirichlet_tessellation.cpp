@@ -1476,47 +1476,55 @@ TEST(DirichletTessellation, RemovedExtremesAndBatchesLeaveASortedStreamCorrect)
   EXPECT_TRUE(WithoutIds(points, removed) == MakeCanonical(t));
 }
 
-// Removals that leave collinear points rebuild the structure (RebuildWithout), and the accepted
-// points' box is then theirs again, not the removed points' larger one: a stream sorted by x that
-// starts beyond the line's end, though inside the removed points' box, still places each point at
-// the hull without a walk, and equals the batch of the line and the stream.
-TEST(DirichletTessellation, ARebuildAfterRemovalsGivesASortedStreamItsSideStartsBack)
+// Removals that leave only points on a line shrink the accepted points' box to them: the removal
+// that leaves the line rebuilds the structure (RebuildWithout), which starts the box afresh from
+// the points left, and a removal from the line sets the box to the line's ends. A stream sorted by
+// x beyond the points left, though inside the box of those removed, then puts almost every point
+// beside the hull without a walk, and equals the batch of the points left and the stream.
+TEST(DirichletTessellation, RemovalsThatLeaveALineGiveASortedStreamItsSideStartsBack)
 {
-  std::vector<Point2> points;
-  for (int k = 0; k <= 30; ++k)
+  for (const int last : { 30, 20 }) // the line's last point left: 20, after removing 30 .. 21
   {
-    points.push_back({ 0.01 * k, 0.5 }); // ids 0 .. 30: the line that stays
+    std::vector<Point2> points;
+    for (int k = 0; k <= 30; ++k)
+    {
+      points.push_back({ 0.01 * k, 0.5 }); // ids 0 .. 30: the line
+    }
+    const std::vector<Point2> spread = UniformPoints(2000, 37); // ids 31 ..: removed
+    points.insert(points.end(), spread.begin(), spread.end());
+    Tess t(UnitWindow(), points);
+    std::vector<std::int32_t> removed;
+    for (std::int32_t id = 31; id < std::int32_t(points.size()); ++id)
+    {
+      removed.push_back(id);
+    }
+    for (std::int32_t id = 30; id > last; --id)
+    {
+      removed.push_back(id); // (from the line, after the rebuild)
+    }
+    for (const std::int32_t id : removed)
+    {
+      t.Remove(id);
+    }
+    ASSERT_EQ(t.CollinearPoints().size(), std::size_t(last + 1));
+    std::vector<Point2> stream = UniformPoints(5000, 41);
+    for (Point2& p : stream)
+    {
+      p.x = 0.01 * (last + 1) + 0.6 * p.x; // beyond the line's end, inside the removed points' box
+    }
+    stream = SortedByX(stream);
+    std::size_t walked = 0; // points whose walk took a step
+    for (const Point2& p : stream)
+    {
+      t.Insert(p);
+      walked += t.LastWalkSteps() > 0 ? 1 : 0;
+    }
+    EXPECT_LT(walked, 10u) << last;
+    CheckStructure(t);
+    CheckLocallyDelaunay(t);
+    points.insert(points.end(), stream.begin(), stream.end()); // (the stream's ids follow)
+    EXPECT_TRUE(WithoutIds(points, removed) == MakeCanonical(t)) << last;
   }
-  const std::vector<Point2> spread = UniformPoints(2000, 37); // ids 31 ..: removed
-  points.insert(points.end(), spread.begin(), spread.end());
-  Tess t(UnitWindow(), points);
-  for (std::size_t id = 31; id < points.size(); ++id)
-  {
-    t.Remove(std::int32_t(id));
-  }
-  ASSERT_EQ(t.CollinearPoints().size(), 31u);
-  std::vector<Point2> stream = UniformPoints(5000, 41);
-  for (Point2& p : stream)
-  {
-    p.x = 0.31 + 0.6 * p.x; // beyond the line's end, inside the removed points' box
-  }
-  stream = SortedByX(stream);
-  std::size_t walked = 0; // points whose walk took a step
-  for (const Point2& p : stream)
-  {
-    t.Insert(p);
-    walked += t.LastWalkSteps() > 0 ? 1 : 0;
-  }
-  EXPECT_LT(walked, 10u);
-  CheckStructure(t);
-  CheckLocallyDelaunay(t);
-  std::vector<std::int32_t> removed;
-  for (std::size_t id = 31; id < points.size(); ++id)
-  {
-    removed.push_back(std::int32_t(id));
-  }
-  points.insert(points.end(), stream.begin(), stream.end()); // (the stream's ids follow)
-  EXPECT_TRUE(WithoutIds(points, removed) == MakeCanonical(t));
 }
 
 TEST(DirichletTessellation, RemovingHullVerticesEqualsNeverInserted)
