@@ -496,14 +496,13 @@ bool DirichletTessellation::StartBesideHullVertex(const SideStart& start, const 
   const std::int32_t first = e;
   do
   {
-    if (org[Next(e)] == Ghost || org[Prev(e)] == Ghost)
+    // In a ghost triangle round v, the hull edge is the one of its edges at v that does not end
+    // at the ghost: v's outgoing e when the ghost precedes v, else the incoming Prev(e).
+    const std::int32_t f = org[Prev(e)] == Ghost ? e : org[Next(e)] == Ghost ? Prev(e) : -1;
+    if (f >= 0 && Orient(pts[org[f]], pts[org[Next(f)]], p) > 0)
     {
-      const std::int32_t f = this->HullEdgeOfGhost(e / 3);
-      if (Orient(pts[org[f]], pts[org[Next(f)]], p) > 0)
-      {
-        this->Serial.LastTriangle = e / 3;
-        return true;
-      }
+      this->Serial.LastTriangle = e / 3;
+      return true;
     }
     e = twin[Prev(e)]; // the next triangle round v
   } while (e != first);

@@ -559,6 +559,18 @@ double MeanWalkSteps(Tess& t, const std::vector<Point2>& points, std::size_t kep
   return steps / double(points.size());
 }
 
+// The points streamed one by one into t whose walk took a step.
+std::size_t PointsThatWalk(Tess& t, const std::vector<Point2>& points)
+{
+  std::size_t walked = 0;
+  for (const Point2& p : points)
+  {
+    t.Insert(p);
+    walked += t.LastWalkSteps() > 0 ? 1 : 0;
+  }
+  return walked;
+}
+
 } // namespace
 
 // A stream sorted along an axis (a table's rows by x), either way: each point lies beyond a side
@@ -584,13 +596,7 @@ TEST(DirichletTessellation, AStreamSortedAlongAnAxisWalksNoStepAndEqualsBatch)
       std::reverse(points.begin(), points.end());
     }
     Tess streaming(UnitWindow());
-    std::size_t walked = 0; // points whose walk took a step
-    for (const Point2& p : points)
-    {
-      streaming.Insert(p);
-      walked += streaming.LastWalkSteps() > 0 ? 1 : 0;
-    }
-    EXPECT_LT(walked, 10u) << "axis " << axis;
+    EXPECT_LT(PointsThatWalk(streaming, points), 10u) << "axis " << axis;
     CheckStructure(streaming);
     CheckLocallyDelaunay(streaming);
     EXPECT_TRUE(MakeCanonical(Tess(UnitWindow(), points)) == MakeCanonical(streaming)) << axis;
@@ -1513,13 +1519,7 @@ TEST(DirichletTessellation, RemovalsThatLeaveALineGiveASortedStreamItsSideStarts
       p.x = 0.01 * (last + 1) + 0.6 * p.x; // beyond the line's end, inside the removed points' box
     }
     stream = SortedByX(stream);
-    std::size_t walked = 0; // points whose walk took a step
-    for (const Point2& p : stream)
-    {
-      t.Insert(p);
-      walked += t.LastWalkSteps() > 0 ? 1 : 0;
-    }
-    EXPECT_LT(walked, 10u) << last;
+    EXPECT_LT(PointsThatWalk(t, stream), 10u) << last;
     CheckStructure(t);
     CheckLocallyDelaunay(t);
     points.insert(points.end(), stream.begin(), stream.end()); // (the stream's ids follow)
