@@ -148,6 +148,8 @@ DirichletTessellation::DirichletTessellation(Window window, std::vector<Point2> 
   {
     throw InputError("too many points: " + std::to_string(this->Coordinates.size()));
   }
+  // The build's sorting steps free large arrays before later ones ask for arrays of their sizes.
+  const ReuseLargeBlocks reuse;
   const std::int32_t n = std::int32_t(this->Coordinates.size());
   const std::vector<std::int32_t> bounds = parallel::ChunkBounds(n, parallel::ThreadCount(n));
   std::vector<std::int32_t> inside;

@@ -1,9 +1,12 @@
-// AllocateLarge: aligned_alloc plus madvise(MADV_HUGEPAGE) (see large_pages.h for why).
+// AllocateLarge: aligned_alloc plus madvise(MADV_HUGEPAGE) (see large_pages.h for why), and the
+// blocks ReuseLargeBlocks keeps.
 #include "large_pages.h"
 
 #include <cstdint>
 #include <cstdlib>
+#include <mutex>
 #include <new>
+#include <vector>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -14,7 +17,118 @@ namespace tessera
 namespace
 {
 constexpr std::size_t HugePage = std::size_t(2) << 20;
+
+std::size_t RoundedToHugePages(std::size_t bytes)
+{
+  if (bytes > std::size_t(-1) - HugePage)
+  {
+    throw std::bad_alloc();
+  }
+  return (bytes + HugePage - 1) / HugePage * HugePage;
+}
+
+struct KeptBlock
+{
+  void* Memory;
+  std::size_t Bytes; // rounded
+};
+
+struct BlockStore
+{
+  std::mutex Lock;
+  int Scopes = 0;
+  std::vector<KeptBlock> Kept;
+};
+
+BlockStore& Store()
+{
+  static BlockStore store;
+  return store;
+}
+
+// The smallest kept block of rounded bytes or more, and at most an eighth more; null if none.
+void* TakeKeptBlock(std::size_t rounded)
+{
+  BlockStore& store = Store();
+  std::lock_guard<std::mutex> hold(store.Lock);
+  std::size_t best = store.Kept.size();
+  for (std::size_t k = 0; k < store.Kept.size(); ++k)
+  {
+    const std::size_t size = store.Kept[k].Bytes;
+    if (size >= rounded && size - rounded <= rounded / 8 &&
+      (best == store.Kept.size() || size < store.Kept[best].Bytes))
+    {
+      best = k;
+    }
+  }
+  if (best == store.Kept.size())
+  {
+    return nullptr;
+  }
+  void* memory = store.Kept[best].Memory;
+  store.Kept[best] = store.Kept.back();
+  store.Kept.pop_back();
+  return memory;
+}
 } // namespace
+
+ReuseLargeBlocks::ReuseLargeBlocks()
+{
+  BlockStore& store = Store();
+  std::lock_guard<std::mutex> hold(store.Lock);
+  ++store.Scopes;
+}
+
+ReuseLargeBlocks::~ReuseLargeBlocks()
+{
+  std::vector<KeptBlock> kept;
+  {
+    BlockStore& store = Store();
+    std::lock_guard<std::mutex> hold(store.Lock);
+    if (--store.Scopes == 0)
+    {
+      kept.swap(store.Kept);
+    }
+  }
+  for (const KeptBlock& block : kept)
+  {
+    std::free(block.Memory);
+  }
+}
+
+std::size_t KeptLargeBlockBytes()
+{
+  BlockStore& store = Store();
+  std::lock_guard<std::mutex> hold(store.Lock);
+  std::size_t bytes = 0;
+  for (const KeptBlock& block : store.Kept)
+  {
+    bytes += block.Bytes;
+  }
+  return bytes;
+}
+
+void ReleaseLarge(void* memory, std::size_t bytes) noexcept
+{
+  if (memory && bytes >= LargePageBytes)
+  {
+    BlockStore& store = Store();
+    std::lock_guard<std::mutex> hold(store.Lock);
+    if (store.Scopes > 0)
+    {
+      try
+      {
+        store.Kept.push_back({ memory, RoundedToHugePages(bytes) });
+        return;
+      }
+      catch (...)
+      {
+        // no room to keep it: freed below
+      }
+    }
+  }
+  std::free(memory);
+}
 
 // Moves glibc's dynamic mmap threshold to its ceiling, once per process, so that freed large
 // blocks go back to the heap and are reused by the next derivation instead of being unmapped.
@@ -79,18 +193,21 @@ void* AllocateLarge(std::size_t bytes)
     return memory;
   }
   // aligned_alloc wants a multiple of the alignment; the whole rounded range is advised.
-  if (bytes > std::size_t(-1) - HugePage)
+  const std::size_t rounded = RoundedToHugePages(bytes);
+  if (void* kept = TakeKeptBlock(rounded))
   {
-    throw std::bad_alloc();
+    return kept;
   }
-  const std::size_t rounded = (bytes + HugePage - 1) / HugePage * HugePage;
   RaiseMallocThresholdOnce();
   void* memory = std::aligned_alloc(HugePage, rounded);
   if (!memory)
   {
     throw std::bad_alloc();
   }
-  AdviseLargePages(memory, rounded); // the whole block: it is aligned and rounded
+  if (rounded <= HugePageAdviceLimit)
+  {
+    AdviseLargePages(memory, rounded); // the whole block: it is aligned and rounded
+  }
   return memory;
 }
 

@@ -79,34 +79,54 @@ bool CornersCollinear(const TileMesh& tiles, std::size_t k, const Point2& a, con
   return true;
 }
 
+/// Whether tile k has fewer than 3 distinct corners, or only collinear ones.
+bool TileCollapsed(const TileMesh& tiles, std::size_t k)
+{
+  std::array<Point2, 3> corners; // (no allocation per tile: a million tiles)
+  std::size_t distinct = 0;
+  for (std::int64_t v = tiles.Offsets[k]; v < tiles.Offsets[k + 1] && distinct < 3; ++v)
+  {
+    const Point2& p = tiles.Vertices[static_cast<std::size_t>(tiles.VertexIds[v])];
+    if (std::none_of(corners.begin(),
+          corners.begin() + static_cast<std::ptrdiff_t>(distinct),
+          [&](const Point2& q) { return q.x == p.x && q.y == p.y; }))
+    {
+      corners[distinct++] = p;
+    }
+  }
+  // Three or more distinct corners can still be collinear. Only a tile of area 0 is looked at
+  // (its area is exactly 0 then), but such an area is not enough: a true tile of points some
+  // 1e-165 apart has an area below the doubles, and is no sliver.
+  const bool flat = distinct >= 3 && k < tiles.Areas.size() && tiles.Areas[k] == 0.0 &&
+    CornersCollinear(tiles, k, corners[0], corners[1]);
+  return distinct < 3 || flat;
+}
+
 } // namespace
 
+// Chunks of tiles in parallel, each listing its own: at 10^7 tiles the serial pass over their
+// corners took 0.17-0.19 s.
 std::vector<std::int32_t> CollapsedTilePoints(const TileMesh& tiles)
 {
-  std::vector<std::int32_t> collapsed;
-  for (std::size_t k = 0; k < tiles.PointIds.size(); ++k)
-  {
-    std::array<Point2, 3> corners; // (no allocation per tile: a million tiles)
-    std::size_t distinct = 0;
-    for (std::int64_t v = tiles.Offsets[k]; v < tiles.Offsets[k + 1] && distinct < 3; ++v)
+  const std::int32_t count = std::int32_t(tiles.PointIds.size());
+  const std::vector<std::int32_t> bounds =
+    ChunkBounds(count, ThreadCount(count, TessellationDual::MinimumTilesPerThread));
+  std::vector<std::vector<std::int32_t>> found(bounds.size() - 1);
+  RunChunks(found.size(),
+    [&](std::size_t chunk)
     {
-      const Point2& p = tiles.Vertices[static_cast<std::size_t>(tiles.VertexIds[v])];
-      if (std::none_of(corners.begin(),
-            corners.begin() + static_cast<std::ptrdiff_t>(distinct),
-            [&](const Point2& q) { return q.x == p.x && q.y == p.y; }))
+      for (std::int32_t k = bounds[chunk]; k < bounds[chunk + 1]; ++k)
       {
-        corners[distinct++] = p;
+        if (TileCollapsed(tiles, std::size_t(k)))
+        {
+          found[chunk].push_back(tiles.PointIds[std::size_t(k)]);
+        }
       }
-    }
-    // Three or more distinct corners can still be collinear. Only a tile of area 0 is looked at
-    // (its area is exactly 0 then), but such an area is not enough: a true tile of points some
-    // 1e-165 apart has an area below the doubles, and is no sliver.
-    const bool flat = distinct >= 3 && k < tiles.Areas.size() && tiles.Areas[k] == 0.0 &&
-      CornersCollinear(tiles, k, corners[0], corners[1]);
-    if (distinct < 3 || flat)
-    {
-      collapsed.push_back(tiles.PointIds[k]);
-    }
+    });
+  std::vector<std::int32_t> collapsed;
+  for (const std::vector<std::int32_t>& part : found)
+  {
+    collapsed.insert(collapsed.end(), part.begin(), part.end());
   }
   std::sort(collapsed.begin(), collapsed.end());
   return collapsed;

@@ -39,7 +39,7 @@ struct UninitializedAllocator : std::allocator<T>
     }
     return static_cast<T*>(AllocateLarge(n * sizeof(T)));
   }
-  void deallocate(T* p, std::size_t) noexcept { std::free(p); }
+  void deallocate(T* p, std::size_t n) noexcept { ReleaseLarge(p, n * sizeof(T)); }
   template<class U>
   void construct(U* p) noexcept
   {

@@ -12,6 +12,7 @@
 
 #include "TesseraFilterUtilities.h"
 #include "dirichlet_tessellation.h"
+#include "large_pages.h"
 #include "tiles.h"
 
 #include <algorithm>
@@ -189,6 +190,9 @@ int vtkDelaunayTriangulation::RequestData(vtkInformation*,
     std::vector<std::string> notCarried;
     const vtkSmartPointer<vtkPointSet> input = tessera_vtk::InputPoints(inputData, notCarried);
     tesseraWarnEachMacro(this, notCarried);
+    // Large arrays freed by one step go to the next (tessera::ReuseLargeBlocks, as in
+    // vtkDirichletTessellation): the build's temporaries to the output's arrays.
+    const tessera::ReuseLargeBlocks reuse;
     std::vector<tessera::Point2> points = tessera_vtk::ReadPoints2D(input->GetPoints(), inputData);
     if (points.empty())
     {

@@ -236,3 +236,60 @@ TEST(LargePages, ResizeOnLargePagesAdvisesTheWholeHugePagesInside)
   const std::string plainFlags = MappingFlags(plain.data() + plain.size() / 2);
   EXPECT_EQ(plainFlags.find(" hg"), std::string::npos) << plainFlags;
 }
+
+TEST(LargePages, AllocateLargeAdvisesHugePagesUpToTheLimitOnly)
+{
+  if (!HugePagesOnRequest())
+  {
+    GTEST_SKIP() << "transparent huge pages are not offered on request here";
+  }
+  const std::size_t within = std::size_t(8) << 20;
+  const std::size_t beyond = HugePageAdviceLimit + (std::size_t(4) << 20);
+  auto* small = static_cast<char*>(AllocateLarge(within));
+  auto* large = static_cast<char*>(AllocateLarge(beyond));
+  const std::string smallFlags = MappingFlags(small + within / 2);
+  const std::string largeFlags = MappingFlags(large + beyond / 2);
+  std::free(small);
+  std::free(large);
+  ASSERT_FALSE(smallFlags.empty() || largeFlags.empty()) << "no mapping found for the blocks";
+  EXPECT_NE(smallFlags.find(" hg"), std::string::npos) << smallFlags;
+  EXPECT_EQ(largeFlags.find(" hg"), std::string::npos) << largeFlags;
+}
+
+// Inside a scope a released block goes to the next request of about its size (and not to a much
+// smaller one); an inner scope's end keeps the blocks while the outer lives; the outer's frees
+// them. Outside every scope ReleaseLarge frees at once.
+TEST(LargePages, ReuseScopeHandsReleasedBlocksOutAgainUntilItEnds)
+{
+  constexpr std::size_t MiB = std::size_t(1) << 20;
+  ASSERT_EQ(KeptLargeBlockBytes(), 0u);
+  {
+    const ReuseLargeBlocks outer;
+    void* first = AllocateLarge(5 * MiB);
+    ReleaseLarge(first, 5 * MiB);
+    EXPECT_EQ(KeptLargeBlockBytes(), 6 * MiB); // rounded to whole huge pages
+    void* smaller = AllocateLarge(MiB);        // 2 MiB rounded: 6 MiB would waste 4
+    EXPECT_NE(smaller, first);
+    ReleaseLarge(smaller, MiB);
+    {
+      const ReuseLargeBlocks inner;
+      void* again = AllocateLarge(5 * MiB + MiB / 2);
+      EXPECT_EQ(again, first);
+      EXPECT_EQ(KeptLargeBlockBytes(), 2 * MiB);
+      ReleaseLarge(again, 5 * MiB + MiB / 2);
+    }
+    EXPECT_EQ(KeptLargeBlockBytes(), 8 * MiB);
+    {
+      // A vector's block goes the same way (UninitializedAllocator::deallocate releases it).
+      UninitializedVector<std::int32_t> values(6 * MiB / sizeof(std::int32_t));
+      EXPECT_EQ(static_cast<void*>(values.data()), first);
+      values[0] = 1;
+    }
+    EXPECT_EQ(KeptLargeBlockBytes(), 8 * MiB);
+  }
+  EXPECT_EQ(KeptLargeBlockBytes(), 0u);
+  void* outside = AllocateLarge(5 * MiB);
+  ReleaseLarge(outside, 5 * MiB);
+  EXPECT_EQ(KeptLargeBlockBytes(), 0u);
+  ReleaseLarge(nullptr, 5 * MiB); // like std::free(nullptr)
+}
