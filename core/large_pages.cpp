@@ -10,6 +10,7 @@
 
 #if defined(__linux__)
 #include <sys/mman.h>
+#include <unistd.h>
 #endif
 
 namespace tessera
@@ -33,22 +34,57 @@ struct KeptBlock
   std::size_t Bytes; // rounded
 };
 
+// Kept blocks, oldest first.
 struct BlockStore
 {
   std::mutex Lock;
   int Scopes = 0;
   std::vector<KeptBlock> Kept;
+  std::size_t KeptBytes = 0;
 };
 
+// Never destroyed: a vector with static storage may give its block back while the program exits.
 BlockStore& Store()
 {
-  static BlockStore store;
+  static BlockStore& store = *new BlockStore;
   return store;
+}
+
+// At most this many bytes are kept (the oldest blocks go first): scopes that overlap on several
+// threads may keep the store open for good, and blocks of sizes no one asks for again must not
+// pile up meanwhile. An eighth of the machine's memory (2 GiB where it is unknown).
+std::size_t KeptBytesLimit()
+{
+  static const std::size_t limit = []()
+  {
+    std::size_t bytes = std::size_t(16) << 30;
+#if defined(__linux__)
+    const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGESIZE);
+    if (pages > 0 && pageSize > 0)
+    {
+      bytes = std::size_t(pages) * std::size_t(pageSize);
+    }
+#endif
+    return bytes / 8;
+  }();
+  return limit;
+}
+
+// Whether a block of bytes (or of bytes rounded to huge pages: the limit is a multiple of them) is
+// one the store keeps: one above HugePageAdviceLimit. Below, glibc's heap keeps freed blocks
+// anyway (RaiseMallocThresholdOnce), and so a kept block always has the advice its size calls for.
+bool Keepable(std::size_t bytes)
+{
+  return bytes > HugePageAdviceLimit;
 }
 
 // The smallest kept block of rounded bytes or more, and at most an eighth more; null if none.
 void* TakeKeptBlock(std::size_t rounded)
 {
+  if (!Keepable(rounded))
+  {
+    return nullptr;
+  }
   BlockStore& store = Store();
   std::lock_guard<std::mutex> hold(store.Lock);
   std::size_t best = store.Kept.size();
@@ -66,8 +102,8 @@ void* TakeKeptBlock(std::size_t rounded)
     return nullptr;
   }
   void* memory = store.Kept[best].Memory;
-  store.Kept[best] = store.Kept.back();
-  store.Kept.pop_back();
+  store.KeptBytes -= store.Kept[best].Bytes;
+  store.Kept.erase(store.Kept.begin() + std::ptrdiff_t(best));
   return memory;
 }
 } // namespace
@@ -88,6 +124,7 @@ ReuseLargeBlocks::~ReuseLargeBlocks()
     if (--store.Scopes == 0)
     {
       kept.swap(store.Kept);
+      store.KeptBytes = 0;
     }
   }
   for (const KeptBlock& block : kept)
@@ -100,17 +137,12 @@ std::size_t KeptLargeBlockBytes()
 {
   BlockStore& store = Store();
   std::lock_guard<std::mutex> hold(store.Lock);
-  std::size_t bytes = 0;
-  for (const KeptBlock& block : store.Kept)
-  {
-    bytes += block.Bytes;
-  }
-  return bytes;
+  return store.KeptBytes;
 }
 
 void ReleaseLarge(void* memory, std::size_t bytes) noexcept
 {
-  if (memory && bytes >= LargePageBytes)
+  if (memory && Keepable(bytes))
   {
     BlockStore& store = Store();
     std::lock_guard<std::mutex> hold(store.Lock);
@@ -119,12 +151,21 @@ void ReleaseLarge(void* memory, std::size_t bytes) noexcept
       try
       {
         store.Kept.push_back({ memory, RoundedToHugePages(bytes) });
-        return;
       }
       catch (...)
       {
-        // no room to keep it: freed below
+        std::free(memory); // no room to keep it
+        return;
       }
+      store.KeptBytes += store.Kept.back().Bytes;
+      std::size_t oldest = 0;
+      while (store.KeptBytes > KeptBytesLimit())
+      {
+        store.KeptBytes -= store.Kept[oldest].Bytes;
+        std::free(store.Kept[oldest++].Memory);
+      }
+      store.Kept.erase(store.Kept.begin(), store.Kept.begin() + std::ptrdiff_t(oldest));
+      return;
     }
   }
   std::free(memory);

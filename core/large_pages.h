@@ -34,24 +34,28 @@ constexpr std::size_t LargePageBytes = std::size_t(256) << 10;
 constexpr std::size_t HugePageAdviceLimit = std::size_t(32) << 20;
 
 /// bytes of memory, 2 MiB aligned and advised to be backed by huge pages when LargePageBytes <=
-/// bytes <= HugePageAdviceLimit (plain malloc below). Release it with ReleaseLarge(memory, bytes),
-/// or std::free outside a ReuseLargeBlocks scope. Throws std::bad_alloc. A large block first
-/// raises glibc's mmap threshold (RaiseMallocThresholdOnce).
+/// bytes <= HugePageAdviceLimit (plain malloc below). Release it with ReleaseLarge(memory, bytes)
+/// or std::free (which never keeps it: VTK frees the filters' output arrays so). Throws
+/// std::bad_alloc. A large block first raises glibc's mmap threshold (RaiseMallocThresholdOnce).
 void* AllocateLarge(std::size_t bytes);
 
 /// Gives back memory from AllocateLarge (bytes: what was asked for). Inside a
-/// ReuseLargeBlocks scope a large block is kept for the next AllocateLarge of about its size;
-/// otherwise it is freed.
+/// ReuseLargeBlocks scope a block above HugePageAdviceLimit is kept for the next AllocateLarge of
+/// about its size (the size asked for, rounded to huge pages: a kept block handed out for a
+/// little less is kept again at that size); any other is freed.
 void ReleaseLarge(void* memory, std::size_t bytes) noexcept;
 
-/// While one of these lives (on any thread), large blocks given back by ReleaseLarge are kept and
-/// handed out again by AllocateLarge for requests of about their size (at most 1/8 smaller, so
-/// that a block reused for less does not hold much memory that was touched and is not needed);
-/// when the last one ends, the blocks kept are freed. For a run whose steps free large arrays
-/// before the next step makes its own (a build's temporaries, then a tessellation freed before its
-/// tiles are written out): the memory is mapped and faulted once instead of twice. The peak
-/// stays about the same: at 10^7 points the tiles filter's peak resident memory was 2.6 GB with a
-/// scope, 3.5 GB without (huge pages the faster run had not filled).
+/// While one of these lives (on any thread), blocks above HugePageAdviceLimit given back by
+/// ReleaseLarge are kept and handed out again by AllocateLarge for requests of about their size
+/// (at most 1/8 smaller, so that a block reused for less does not hold much memory that was
+/// touched and is not needed); when the last one ends, the blocks kept are freed. (Smaller blocks
+/// come back from glibc's heap anyway.) At most an eighth of the machine's memory is kept, the
+/// oldest blocks freed first: scopes on several threads that overlap may keep the store open for
+/// long. For a run whose steps free large arrays before the next step makes its own (a build's
+/// temporaries, then a tessellation freed before its tiles are written out): the memory is mapped
+/// and faulted once instead of twice. A kept block that no later request fits stays resident
+/// until the scope ends: the peak can grow by the blocks of a step that frees before the next
+/// allocates, at most what that step had at its own peak.
 class ReuseLargeBlocks
 {
 public:

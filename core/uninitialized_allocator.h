@@ -1,9 +1,9 @@
 #pragma once
-// A std::allocator whose resize() leaves new elements of trivially copyable types uninitialised,
-// so that the pass that writes them first (often on the cores) is also the one that first touches
-// their pages: a serial zero fill of a large array costs a page fault per 4 KiB. Arrays from
-// LargePageBytes to HugePageAdviceLimit come on transparent huge pages (large_pages.h), a page
-// fault per 2 MiB.
+// A std::allocator whose resize() leaves new elements of trivially copyable, trivially
+// destructible types uninitialised, so that the pass that writes them first (often on the cores)
+// is also the one that first touches their pages: a serial zero fill of a large array costs a page
+// fault per 4 KiB. Arrays from LargePageBytes to HugePageAdviceLimit come on transparent huge
+// pages (large_pages.h), a page fault per 2 MiB.
 
 #include "large_pages.h"
 
@@ -42,7 +42,8 @@ struct UninitializedAllocator : std::allocator<T>
   }
   void deallocate(T* p, std::size_t n) noexcept { ReleaseLarge(p, n * sizeof(T)); }
   /// Default construction: nothing at all for a trivially copyable, trivially destructible type
-  /// (an implicit-lifetime type, whose objects the allocation itself creates), even one with
+  /// (an implicit-lifetime type: its objects exist in the storage without a constructor call, as
+  /// an int's do), even one with
   /// default member initialisers: Point2's zeros made resize() write every element, and at 10^7
   /// points NumberFaceVertices zero-filled 305 MB of fresh pages on one thread before its chunks
   /// wrote the centres. Any other type is default-initialised.
