@@ -70,25 +70,29 @@ std::size_t KeptBytesLimit()
   return limit;
 }
 
-// Whether a kept block of kept bytes may serve a request of rounded bytes: at least as large, at
-// most an eighth larger, and on the same side of HugePageAdviceLimit (so that a block handed out
-// has the huge-page advice the request's size calls for).
-bool Fits(std::size_t kept, std::size_t rounded)
+// Whether a block of bytes (or of bytes rounded to huge pages: the limit is a multiple of them) is
+// one the store keeps: one above HugePageAdviceLimit. Below, glibc's heap keeps freed blocks
+// anyway (RaiseMallocThresholdOnce), and so a kept block always has the advice its size calls for.
+bool Keepable(std::size_t bytes)
 {
-  return kept >= rounded && kept - rounded <= rounded / 8 &&
-    (kept > HugePageAdviceLimit) == (rounded > HugePageAdviceLimit);
+  return bytes > HugePageAdviceLimit;
 }
 
-// The smallest kept block that Fits a request of rounded bytes; null if none.
+// The smallest kept block of rounded bytes or more, and at most an eighth more; null if none.
 void* TakeKeptBlock(std::size_t rounded)
 {
+  if (!Keepable(rounded))
+  {
+    return nullptr;
+  }
   BlockStore& store = Store();
   std::lock_guard<std::mutex> hold(store.Lock);
   std::size_t best = store.Kept.size();
   for (std::size_t k = 0; k < store.Kept.size(); ++k)
   {
     const std::size_t size = store.Kept[k].Bytes;
-    if (Fits(size, rounded) && (best == store.Kept.size() || size < store.Kept[best].Bytes))
+    if (size >= rounded && size - rounded <= rounded / 8 &&
+      (best == store.Kept.size() || size < store.Kept[best].Bytes))
     {
       best = k;
     }
@@ -138,7 +142,7 @@ std::size_t KeptLargeBlockBytes()
 
 void ReleaseLarge(void* memory, std::size_t bytes) noexcept
 {
-  if (memory && bytes >= LargePageBytes)
+  if (memory && Keepable(bytes))
   {
     BlockStore& store = Store();
     std::lock_guard<std::mutex> hold(store.Lock);

@@ -40,23 +40,26 @@ constexpr std::size_t HugePageAdviceLimit = std::size_t(32) << 20;
 void* AllocateLarge(std::size_t bytes);
 
 /// Gives back memory from AllocateLarge (bytes: what was asked for). Inside a
-/// ReuseLargeBlocks scope a block of LargePageBytes or more is kept for the next AllocateLarge of
+/// ReuseLargeBlocks scope a block above HugePageAdviceLimit is kept for the next AllocateLarge of
 /// about its size (the size asked for, rounded to huge pages: a kept block handed out for a
 /// little less is kept again at that size); any other is freed.
 void ReleaseLarge(void* memory, std::size_t bytes) noexcept;
 
-/// While one of these lives (on any thread), blocks given back by ReleaseLarge are kept and handed
-/// out again by AllocateLarge for requests of about their size: at most 1/8 smaller, so that a
-/// block reused for less does not hold much memory that was touched and is not needed, and on the
-/// same side of HugePageAdviceLimit, so that it has the advice the request calls for. When the
-/// last one ends, the blocks kept are freed. At most an eighth of the machine's memory is kept,
-/// the oldest blocks freed first: scopes on several threads that overlap may keep the store open
-/// for long. For a run whose steps free large arrays before the next step makes its own (a build's
-/// temporaries, then a tessellation freed before its tiles are written out): the memory is mapped
-/// and faulted once instead of twice, and blocks below the limit do not go back and forth through
-/// glibc's heap. A kept block that no later request fits stays resident until the scope ends: the
-/// peak can grow by the blocks of a step that frees before the next allocates (at 10^7 points,
-/// 2.51 to 2.58 GB for the tiles filter, 1.49 to 1.56 GB for the Delaunay filter).
+/// While one of these lives (on any thread), blocks above HugePageAdviceLimit given back by
+/// ReleaseLarge are kept and handed out again by AllocateLarge for requests of about their size
+/// (at most 1/8 smaller, so that a block reused for less does not hold much memory that was
+/// touched and is not needed); when the last one ends, the blocks kept are freed. Smaller blocks
+/// go back to glibc's heap at once, which hands them out again for any size: kept here, blocks of
+/// a few MiB were held from requests they could have served, the heap grew, and its freed top
+/// was trimmed at the scope's end, to be faulted afresh (the tiles filter with its graph at 10^6
+/// points took 0.82-0.90 us per point, against 0.45-0.47 keeping only the larger ones). At most an
+/// eighth of the machine's memory is kept, the oldest blocks freed first: scopes on several threads
+/// that overlap may keep the store open for long. For a run whose steps free large arrays before
+/// the next step makes its own (a build's temporaries, then a tessellation freed before its tiles
+/// are written out): the memory is mapped and faulted once instead of twice. A kept block that no
+/// later request fits stays resident until the scope ends: the peak can grow by the blocks of a
+/// step that frees before the next allocates (at 10^7 points, 2.51 to 2.58 GB for the tiles
+/// filter, 1.49 to 1.56 GB for the Delaunay filter).
 class ReuseLargeBlocks
 {
 public:

@@ -258,10 +258,10 @@ TEST(LargePages, AllocateLargeAdvisesHugePagesUpToTheLimitOnly)
   EXPECT_EQ(largeFlags.find(" hg"), std::string::npos) << largeFlags;
 }
 
-// Inside a scope a released block goes to the next request of about its size on the same side of
-// HugePageAdviceLimit (and not to a much smaller one, nor across the limit); an inner scope's end
-// keeps the blocks while the outer lives; the outer's frees them. Outside every scope ReleaseLarge
-// frees at once. (The blocks are never written: no memory is touched.)
+// Inside a scope a released block above HugePageAdviceLimit goes to the next request of about its
+// size (and not to a much smaller one); a smaller block is freed at once (the heap keeps those);
+// an inner scope's end keeps the blocks while the outer lives; the outer's frees them. Outside
+// every scope ReleaseLarge frees at once. (The blocks are never written: no memory is touched.)
 TEST(LargePages, ReuseScopeHandsReleasedBlocksOutAgainUntilItEnds)
 {
   constexpr std::size_t MiB = std::size_t(1) << 20;
@@ -272,33 +272,28 @@ TEST(LargePages, ReuseScopeHandsReleasedBlocksOutAgainUntilItEnds)
     void* first = AllocateLarge(big - MiB);
     ReleaseLarge(first, big - MiB);
     EXPECT_EQ(KeptLargeBlockBytes(), big); // rounded to whole huge pages
+    void* within = AllocateLarge(4 * MiB);
+    ReleaseLarge(within, 4 * MiB);
+    EXPECT_EQ(KeptLargeBlockBytes(), big); // not kept
     // More than an eighth smaller: a fresh block, not the kept one.
     void* smaller = AllocateLarge(HugePageAdviceLimit + 2 * MiB);
     EXPECT_NE(smaller, first);
     ReleaseLarge(smaller, HugePageAdviceLimit + 2 * MiB);
     EXPECT_EQ(KeptLargeBlockBytes(), big + HugePageAdviceLimit + 2 * MiB);
-    // Within an eighth, but across HugePageAdviceLimit (advised, where the kept one is not).
-    void* across = AllocateLarge(HugePageAdviceLimit);
-    EXPECT_NE(across, smaller);
-    // A block below the limit is kept too, and goes to a request below it.
-    ReleaseLarge(across, HugePageAdviceLimit);
-    void* below = AllocateLarge(HugePageAdviceLimit - MiB);
-    EXPECT_EQ(below, across);
-    ReleaseLarge(below, HugePageAdviceLimit);
     {
       const ReuseLargeBlocks inner;
       void* again = AllocateLarge(big - 2 * MiB);
       EXPECT_EQ(again, first);
-      EXPECT_EQ(KeptLargeBlockBytes(), 2 * HugePageAdviceLimit + 2 * MiB);
+      EXPECT_EQ(KeptLargeBlockBytes(), HugePageAdviceLimit + 2 * MiB);
       ReleaseLarge(again, big - 2 * MiB); // kept as a block of the size last asked for
     }
-    EXPECT_EQ(KeptLargeBlockBytes(), big + 2 * HugePageAdviceLimit);
+    EXPECT_EQ(KeptLargeBlockBytes(), big + HugePageAdviceLimit);
     {
       // A vector's block goes the same way (UninitializedAllocator::deallocate releases it).
       UninitializedVector<std::int32_t> values((big - 2 * MiB) / sizeof(std::int32_t));
       EXPECT_EQ(static_cast<void*>(values.data()), first);
     }
-    EXPECT_EQ(KeptLargeBlockBytes(), big + 2 * HugePageAdviceLimit);
+    EXPECT_EQ(KeptLargeBlockBytes(), big + HugePageAdviceLimit);
   }
   EXPECT_EQ(KeptLargeBlockBytes(), 0u);
   void* outside = AllocateLarge(big);
