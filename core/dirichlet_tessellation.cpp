@@ -154,8 +154,8 @@ DirichletTessellation::DirichletTessellation(Window window, std::vector<Point2> 
   const std::vector<std::int32_t> bounds = parallel::ChunkBounds(n, parallel::ThreadCount(n));
   std::vector<std::int32_t> inside;
   ResizeOnLargePages(inside, static_cast<std::size_t>(n));
-  Box2 box;
-  bool anyTiny = true; // (unless the fast pass below finds none)
+  Box2 box = Box2::Empty(); // (stays so for no points)
+  bool anyTiny = true;      // (unless the fast pass below finds none)
   const bool allInside = AllFiniteAndInside(
     this->Coordinates, this->TheWindow, bounds, inside, box, this->TinyBelow, anyTiny);
   for (std::int32_t id = 0; anyTiny && id < n; ++id)
@@ -255,9 +255,9 @@ void DirichletTessellation::BuildFrom(std::vector<std::int32_t>& ids, const Box2
   this->Twins.reserve(this->Twins.size() + 3 * triangles);
   // The batch's box serves the order and then the two-region build (its restart grids and curve).
   const Box2 box = knownBox ? *knownBox
-    : ids.empty()           ? Box2()
+    : ids.empty()           ? Box2::Empty()
                             : BoundsOfIds(this->Coordinates, ids);
-  this->NoteBatchBox(box, !ids.empty());
+  this->NoteBatchBox(box);
   std::vector<std::int32_t> order = BrioHilbertOrder(this->Coordinates, ids, box);
   ids.clear();
   ids.shrink_to_fit();
@@ -534,14 +534,11 @@ void DirichletTessellation::NoteSidesReached(std::int32_t id)
   }
 }
 
-// A batch's points (box: theirs, when any) extend the accepted points' box; which of them lie on
-// its sides is not kept, so no side's extreme is known until a streamed point reaches it.
-void DirichletTessellation::NoteBatchBox(const Box2& box, bool any)
+// A batch's points (box: theirs, empty for none) extend the accepted points' box; which of them lie
+// on its sides is not kept, so no side's extreme is known until a streamed point reaches it.
+void DirichletTessellation::NoteBatchBox(const Box2& box)
 {
-  if (any)
-  {
-    this->AcceptedBox.Extend(box);
-  }
+  this->AcceptedBox.Extend(box); // (an empty batch's box is empty: nothing added)
   this->SideStarts.fill(SideStart{});
 }
 

@@ -311,7 +311,7 @@ private:
   bool StartBesideExtreme(const Point2& p);
   bool StartBesideHullVertex(const SideStart& start, const Point2& p);
   void NoteSidesReached(std::int32_t id);
-  void NoteBatchBox(const Box2& box, bool any);
+  void NoteBatchBox(const Box2& box);
   Box2 BoxOfCollinearPoints() const;
   void JumpTowards(const Point2& p);
   /// The jump index, the recent starts and the sides' starts, where triangles renumber.

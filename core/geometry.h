@@ -53,11 +53,14 @@ struct Box2
     this->YMin = std::min(this->YMin, p.y);
     this->YMax = std::max(this->YMax, p.y);
   }
-  /// The smallest box holding this one and another.
+  /// The smallest box holding this one and another (bound by bound, so that an empty other,
+  /// Box2::Empty(), adds nothing).
   void Extend(const Box2& other)
   {
-    this->Extend(Point2{ other.XMin, other.YMin });
-    this->Extend(Point2{ other.XMax, other.YMax });
+    this->XMin = std::min(this->XMin, other.XMin);
+    this->XMax = std::max(this->XMax, other.XMax);
+    this->YMin = std::min(this->YMin, other.YMin);
+    this->YMax = std::max(this->YMax, other.YMax);
   }
   double LargerSide() const { return std::max(this->XMax - this->XMin, this->YMax - this->YMin); }
   /// Whether the two boxes have a point in common (closed: boxes that touch meet).
