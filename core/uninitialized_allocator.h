@@ -43,20 +43,15 @@ struct UninitializedAllocator : std::allocator<T>
   void deallocate(T* p, std::size_t n) noexcept { ReleaseLarge(p, n * sizeof(T)); }
   /// Default construction: nothing at all for a trivially copyable, trivially destructible type
   /// (an implicit-lifetime type: its objects exist in the storage without a constructor call, as
-  /// an int's do), even one with
-  /// default member initialisers: Point2's zeros made resize() write every element, and at 10^7
-  /// points NumberFaceVertices zero-filled 305 MB of fresh pages on one thread before its chunks
-  /// wrote the centres. Any other type is default-initialised.
+  /// an int's do), even one with default member initialisers: Point2's zeros made resize() write
+  /// every element, and at 10^7 points NumberFaceVertices zero-filled 305 MB of fresh pages on one
+  /// thread before its chunks wrote the centres. Any other type is default-initialised.
   template<class U>
-  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>)
+  void construct([[maybe_unused]] U* p) noexcept(std::is_nothrow_default_constructible_v<U>)
   {
     if constexpr (!(std::is_trivially_copyable_v<U> && std::is_trivially_destructible_v<U>))
     {
       ::new (static_cast<void*>(p)) U;
-    }
-    else
-    {
-      (void)p;
     }
   }
   template<class U, class... Args>
