@@ -24,14 +24,19 @@ namespace tessera
 /// From this many bytes on, AllocateLarge asks for huge pages.
 constexpr std::size_t LargePageBytes = std::size_t(256) << 10;
 
-/// Up to this many bytes (glibc's mmap threshold at its ceiling, RaiseMallocThresholdOnce), and
-/// no further, AllocateLarge asks for huge pages. A block up to here comes back from the heap
-/// once freed, its huge pages already there; a larger one is a fresh mapping each time, and on a
-/// guest that reports free memory to its host (Linux page reporting: this project's VMs) a fresh
-/// huge page costs several times what its 512 small pages do (here 1.6-2.3 s per GiB against
-/// 0.4-0.7 s; 0.13 against 0.36 s for memory the guest had just freed). At 10^7 points the tiles
-/// filter took 0.54-0.58 us per point with this limit, 0.60-0.68 without (with ReuseLargeBlocks).
-constexpr std::size_t HugePageAdviceLimit = std::size_t(32) << 20;
+/// Up to this many bytes, and no further, AllocateLarge asks for huge pages: the largest block
+/// that, with the 2 MiB aligned_alloc asks for on top to align it, stays below glibc's mmap
+/// threshold at its ceiling (31 MiB, RaiseMallocThresholdOnce). A block up to here comes back from
+/// the heap once freed, its huge pages already there; a larger one is a fresh mapping each time
+/// (blocks of 30 and 32 MiB were, the limit having been 32 MiB), and on a guest that reports free
+/// memory to its host (Linux page reporting: this project's VMs) a fresh huge page costs several
+/// times what its 512 small pages do, and at times 30 times: 1.6-2.3 s per GiB on one day, 5-13 s
+/// on another, against 0.4-0.7 s (0.13 against 0.36 s for memory the guest had just freed). At
+/// 10^7 points the tiles filter took 0.54-0.58 us per point with a limit of 32 MiB, 0.60-0.68
+/// without (with ReuseLargeBlocks); at 10^6 points, right after the Delaunay filter, 0.44-0.49 us
+/// per point with 28 MiB in eight runs, 0.43-1.67 with 32 MiB (its 30.5 MiB array of tile
+/// corners was mapped and faulted afresh on huge pages in every run).
+constexpr std::size_t HugePageAdviceLimit = std::size_t(28) << 20;
 
 /// bytes of memory, 2 MiB aligned and advised to be backed by huge pages when LargePageBytes <=
 /// bytes <= HugePageAdviceLimit (plain malloc below). Release it with ReleaseLarge(memory, bytes)
