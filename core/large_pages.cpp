@@ -17,15 +17,14 @@ namespace tessera
 {
 namespace
 {
-constexpr std::size_t HugePage = std::size_t(2) << 20;
 
 std::size_t RoundedToHugePages(std::size_t bytes)
 {
-  if (bytes > std::size_t(-1) - HugePage)
+  if (bytes > std::size_t(-1) - HugePageBytes)
   {
     throw std::bad_alloc();
   }
-  return (bytes + HugePage - 1) / HugePage * HugePage;
+  return (bytes + HugePageBytes - 1) / HugePageBytes * HugePageBytes;
 }
 
 struct KeptBlock
@@ -193,7 +192,7 @@ void RaiseMallocThresholdOnce()
   static const bool raised = []()
   {
     // The compiler may drop a malloc whose block is never used: the volatile keeps this one.
-    void* volatile block = std::malloc(std::size_t(31) << 20);
+    void* volatile block = std::malloc(RaisedMallocThreshold);
     std::free(block);
     return true;
   }();
@@ -205,12 +204,12 @@ void AdviseLargePages(const void* begin, std::size_t bytes)
 {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   const std::uintptr_t at = reinterpret_cast<std::uintptr_t>(begin);
-  if (!begin || bytes < HugePage || bytes > std::uintptr_t(-1) - at)
+  if (!begin || bytes < HugePageBytes || bytes > std::uintptr_t(-1) - at)
   {
-    return; // nothing whole inside, or a range that would wrap (then at + HugePage cannot)
+    return; // nothing whole inside, or a range that would wrap (then at + HugePageBytes cannot)
   }
-  const std::uintptr_t first = (at + HugePage - 1) & ~std::uintptr_t(HugePage - 1);
-  const std::uintptr_t end = (at + bytes) & ~std::uintptr_t(HugePage - 1);
+  const std::uintptr_t first = (at + HugePageBytes - 1) & ~std::uintptr_t(HugePageBytes - 1);
+  const std::uintptr_t end = (at + bytes) & ~std::uintptr_t(HugePageBytes - 1);
   if (end > first)
   {
     // Advice only: a range the system cannot back by huge pages keeps ordinary ones.
@@ -240,7 +239,7 @@ void* AllocateLarge(std::size_t bytes)
     return kept;
   }
   RaiseMallocThresholdOnce();
-  void* memory = std::aligned_alloc(HugePage, rounded);
+  void* memory = std::aligned_alloc(HugePageBytes, rounded);
   if (!memory)
   {
     throw std::bad_alloc();

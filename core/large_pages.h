@@ -24,9 +24,16 @@ namespace tessera
 /// From this many bytes on, AllocateLarge asks for huge pages.
 constexpr std::size_t LargePageBytes = std::size_t(256) << 10;
 
+/// A transparent huge page: AllocateLarge aligns its blocks to this and rounds them up to it.
+constexpr std::size_t HugePageBytes = std::size_t(2) << 20;
+
+/// The block RaiseMallocThresholdOnce allocates and frees, which moves glibc's mmap threshold to
+/// this (just below its ceiling, 32 MiB on 64-bit systems).
+constexpr std::size_t RaisedMallocThreshold = std::size_t(31) << 20;
+
 /// Up to this many bytes, and no further, AllocateLarge asks for huge pages: the largest block
 /// that, with the 2 MiB aligned_alloc asks for on top to align it, stays below glibc's mmap
-/// threshold at its ceiling (31 MiB, RaiseMallocThresholdOnce). A block up to here comes back from
+/// threshold at its ceiling (RaisedMallocThreshold): 28 MiB. A block up to here comes back from
 /// the heap once freed, its huge pages already there; a larger one is a fresh mapping each time
 /// (blocks of 30 and 32 MiB were, the limit having been 32 MiB), and on a guest that reports free
 /// memory to its host (Linux page reporting: this project's VMs) a fresh huge page costs several
@@ -36,7 +43,8 @@ constexpr std::size_t LargePageBytes = std::size_t(256) << 10;
 /// without (with ReuseLargeBlocks); at 10^6 points, right after the Delaunay filter, 0.44-0.49 us
 /// per point with 28 MiB in eight runs, 0.43-1.67 with 32 MiB (its 30.5 MiB array of tile
 /// corners was mapped and faulted afresh on huge pages in every run).
-constexpr std::size_t HugePageAdviceLimit = std::size_t(28) << 20;
+constexpr std::size_t HugePageAdviceLimit =
+  (RaisedMallocThreshold - HugePageBytes - 1) / HugePageBytes * HugePageBytes;
 
 /// bytes of memory, 2 MiB aligned and advised to be backed by huge pages when LargePageBytes <=
 /// bytes <= HugePageAdviceLimit (plain malloc below). Release it with ReleaseLarge(memory, bytes)

@@ -150,7 +150,7 @@ TEST(LargePages, FreedLargeBlocksAreReusedWithoutNewPageFaults)
       writeAndFree();
     }
     ASSERT_EQ(getrusage(RUSAGE_SELF, &after), 0);
-    const long hugePages = long(bytes >> 21);
+    const long hugePages = long(bytes / HugePageBytes);
     EXPECT_LT(after.ru_minflt - before.ru_minflt, Rounds * std::max(1L, hugePages / 2))
       << bytes << " bytes";
   }
